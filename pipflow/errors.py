@@ -1,0 +1,108 @@
+"""The one exception hierarchy of pipflow.
+
+Every error a user can cause derives from :class:`PipflowError`; the CLI prints those as one
+clear message and exits with the class's ``exit_code`` (no traceback unless ``-v``). Anything
+else that escapes is a bug in pipflow and is shown with its traceback.
+
+    PipflowError                      exit 1
+    ├── UserError                     exit 2   bad file, bad input, missing key
+    │   ├── WorkflowError                      workflow fails validation (carries diagnostics)
+    │   ├── WorldError                         world file fails validation (carries diagnostics)
+    │   └── InputError                         a step argument or CLI input is wrong
+    ├── StepError                     exit 1   a step failed while running
+    │   ├── PlanningError                      planner could not solve (time-out, engine error)
+    │   ├── AllocationError                    no feasible coalition for a subtask
+    │   ├── LLMError                           provider call failed after retries
+    │   └── TranslationError                   the offline translator cannot resolve the command
+    └── Refusal                       exit 3   the command is infeasible; the reason is the message
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class Location:
+    """Where something is in a source file (1-based line and column)."""
+
+    file: str
+    line: int = 0
+    column: int = 0
+
+    def __str__(self) -> str:
+        if self.line:
+            return f"{self.file}:{self.line}:{self.column}"
+        return self.file
+
+
+@dataclass(frozen=True)
+class Diagnostic:
+    """One problem found in a file, with where it is and, optionally, a hint."""
+
+    location: Location | None
+    message: str
+    kind: str = "error"
+
+    def __str__(self) -> str:
+        where = f"{self.location}: " if self.location else ""
+        return f"{where}{self.message}"
+
+
+class PipflowError(Exception):
+    """Root of every error pipflow raises on purpose."""
+
+    exit_code = 1
+
+
+class UserError(PipflowError):
+    """The user's input is wrong: a file, an argument, a missing key."""
+
+    exit_code = 2
+
+
+class _DiagnosticsError(UserError):
+    """A user error that lists every problem found at once."""
+
+    def __init__(self, diagnostics: list[Diagnostic], title: str = ""):
+        self.diagnostics = list(diagnostics)
+        lines = [title] if title else []
+        lines += [str(d) for d in self.diagnostics]
+        super().__init__("\n".join(lines))
+
+
+class WorkflowError(_DiagnosticsError):
+    """A workflow file is invalid; ``diagnostics`` lists every problem with its location."""
+
+
+class WorldError(_DiagnosticsError):
+    """A world file is invalid; ``diagnostics`` lists every problem with its location."""
+
+
+class InputError(UserError):
+    """A step argument or a CLI input is wrong."""
+
+
+class StepError(PipflowError):
+    """A step failed while running."""
+
+
+class PlanningError(StepError):
+    """The planner failed: time-out, engine error, or an unusable plan."""
+
+
+class AllocationError(StepError):
+    """No coalition of robots can do a subtask under the skills and rules given."""
+
+
+class LLMError(StepError):
+    """A language-model call failed after its retries."""
+
+
+class TranslationError(StepError):
+    """The offline translator cannot resolve part of a command (it never guesses)."""
+
+
+class Refusal(PipflowError):
+    """The command cannot be satisfied in this world; the message says why."""
+
+    exit_code = 3
