@@ -1,0 +1,158 @@
+"""Read a model's answer as data: the PDDL problem and the robot-use constraints.
+
+Nothing here evaluates model output. The problem is cut out of the text by counting parentheses
+from ``(define (problem``, so code fences and prose around it do not matter; the constraints are
+JSON (``json.loads``, never ``eval``) checked against the task-file format. Every failure is a
+:class:`ParseIssue` message precise enough to send back to the model in the next round.
+"""
+from __future__ import annotations
+
+import json
+import re
+from typing import Any
+
+_PROBLEM_START = re.compile(r"\(\s*define\s*\(\s*problem\b", re.IGNORECASE)
+_FENCE = re.compile(r"```[ \t]*([A-Za-z0-9_-]*)[^\n]*\n(.*?)(?:```|\Z)", re.DOTALL)
+RULE_KEYS = ("only", "never")
+FIELD_KEYS = ("product", "from", "to")
+
+
+class ParseIssue(ValueError):
+    """The answer has no usable problem or constraints; the message says what and where."""
+
+
+def _line_of(text: str, index: int) -> int:
+    return text.count("\n", 0, index) + 1
+
+
+def _balanced_end(text: str, start: int) -> int | None:
+    """Index just past the parenthesis that closes the one at ``start`` (``;`` comments skipped),
+    or None if the text ends first."""
+    depth = 0
+    i = start
+    while i < len(text):
+        c = text[i]
+        if c == ";":
+            nl = text.find("\n", i)
+            i = len(text) if nl < 0 else nl
+            continue
+        if c == "(":
+            depth += 1
+        elif c == ")":
+            depth -= 1
+            if depth == 0:
+                return i + 1
+        elif c == "`" and text.startswith("```", i):
+            return None  # a fence closed before the problem did
+        i += 1
+    return None
+
+
+def extract_problem(text: str) -> str:
+    """The last complete ``(define (problem ...))`` in ``text``.
+
+    The last one, because a model that drafts and then corrects itself puts the answer last."""
+    starts = [m.start() for m in _PROBLEM_START.finditer(text)]
+    if not starts:
+        if re.search(r"\(\s*define\b", text, re.IGNORECASE):
+            raise ParseIssue("the answer has a `(define ...` but no `(define (problem NAME) ...)`: "
+                             "write a PDDL problem, not a domain")
+        raise ParseIssue("the answer contains no PDDL problem: expected `(define (problem NAME) "
+                         "(:domain ...) (:objects ...) (:init ...) (:goal ...))`")
+    for start in reversed(starts):
+        end = _balanced_end(text, start)
+        if end is not None:
+            return text[start:end].strip()
+    start = starts[-1]
+    depth = _depth_at_end(text, start)
+    raise ParseIssue(f"the PDDL problem starting on line {_line_of(text, start)} of the answer is "
+                     f"cut off: {depth} parenthes{'is' if depth == 1 else 'es'} never closed "
+                     "(answer too long for max_tokens, or a missing `)`)")
+
+
+def _depth_at_end(text: str, start: int) -> int:
+    depth = 0
+    for line in text[start:].split("```")[0].splitlines():
+        code = line.split(";", 1)[0]
+        depth += code.count("(") - code.count(")")
+    return max(depth, 1)
+
+
+def _json_candidates(text: str) -> list[str]:
+    """Fenced ``json`` blocks first (the format the prompts ask for), then any fenced block that
+    looks like JSON, then a bare ``{"constraints": ...}`` object in prose."""
+    fences = [(lang.lower(), body.strip()) for lang, body in _FENCE.findall(text)]
+    found = [b for lang, b in fences if lang == "json"]
+    found += [b for lang, b in fences if lang != "json" and b[:1] in "[{"]
+    m = re.search(r"\{\s*\"constraints\"\s*:", text)
+    if m:
+        found.append(text[m.start():])
+    return found
+
+
+def extract_constraints(text: str) -> list[dict[str, Any]]:
+    """The robot-use rules stated in the answer, as ``[{"only"|"never": [...], ...}]``.
+
+    No JSON at all means the model stated no rule: an empty list. JSON that is there but wrong is
+    a :class:`ParseIssue`, because silently dropping a rule would let a forbidden robot work."""
+    decoder = json.JSONDecoder()
+    errors = []
+    for candidate in _json_candidates(text):
+        try:
+            data, _ = decoder.raw_decode(candidate)
+        except json.JSONDecodeError as exc:
+            errors.append(f"the JSON block is not valid JSON ({exc.msg} at line {exc.lineno}, "
+                          f"column {exc.colno})")
+            continue
+        if isinstance(data, dict) and "constraints" in data:
+            data = data["constraints"]
+        elif isinstance(data, dict) and any(k in data for k in RULE_KEYS):
+            data = [data]
+        if isinstance(data, list):
+            return validate_constraints(data)
+        errors.append('the JSON block must be {"constraints": [...]} or a list of rules')
+    if errors:
+        raise ParseIssue(errors[0])
+    return []
+
+
+def validate_constraints(rules: list[Any], world: dict | None = None) -> list[dict[str, Any]]:
+    """Check each rule's shape (and, given a world, its names); return them normalized."""
+    out = []
+    for n, rule in enumerate(rules, 1):
+        where = f"constraint {n}"
+        if not isinstance(rule, dict):
+            raise ParseIssue(f"{where} must be an object, got {json.dumps(rule)}")
+        kinds = [k for k in RULE_KEYS if k in rule]
+        if len(kinds) != 1:
+            raise ParseIssue(f"{where} must have exactly one of \"only\" or \"never\": {json.dumps(rule)}")
+        unknown = sorted(set(rule) - set(RULE_KEYS) - set(FIELD_KEYS))
+        if unknown:
+            raise ParseIssue(f"{where} has unknown keys {unknown}; allowed: only, never, "
+                             "product, from, to")
+        robots = rule[kinds[0]]
+        robots = [robots] if isinstance(robots, str) else robots
+        if not isinstance(robots, list) or not robots or not all(isinstance(r, str) for r in robots):
+            raise ParseIssue(f"{where}: \"{kinds[0]}\" must be a non-empty list of robot names")
+        clean: dict[str, Any] = {kinds[0]: list(robots)}
+        for key in FIELD_KEYS:
+            if rule.get(key) is not None:
+                if not isinstance(rule[key], str):
+                    raise ParseIssue(f"{where}: \"{key}\" must be a name, got {json.dumps(rule[key])}")
+                clean[key] = rule[key]
+        if world is not None:
+            _check_names(where, clean, world)
+        out.append(clean)
+    return out
+
+
+def _check_names(where: str, rule: dict[str, Any], world: dict) -> None:
+    kind = "only" if "only" in rule else "never"
+    pools = {kind: world.get("robots", {}), "product": world.get("products", {}),
+             "from": world.get("shelves", {}), "to": world.get("shelves", {})}
+    for key, pool in pools.items():
+        values = rule.get(key)
+        for v in ([values] if isinstance(values, str) else values or []):
+            if v not in pool:
+                raise ParseIssue(f"{where}: {v!r} is not a {'robot' if key == kind else 'product' if key == 'product' else 'shelf'} "
+                                 f"of this world; known: {', '.join(sorted(pool))}")

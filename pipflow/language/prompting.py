@@ -1,0 +1,68 @@
+"""Prompt templates: jinja2, sandboxed, strict about undefined variables.
+
+A template file defines the chat messages as blocks named after their roles::
+
+    {% block system %}You write PDDL problems.{% endblock %}
+    {% block user %}Command: {{ command }}{% endblock %}
+
+Blocks render in the order ``system``, ``user``, ``assistant`` (those present). A file without
+blocks renders as one user message. Strict undefined turns a misspelt variable into an error that
+names it instead of an empty string in a prompt nobody reads; the sandbox keeps a template from a
+workflow folder from reaching Python internals.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+from pipflow.errors import InputError
+
+PROMPTS_DIR = Path(__file__).resolve().parent.parent / "prompts"  # installed: pipflow/prompts
+_REPO_PROMPTS = Path(__file__).resolve().parents[2] / "prompts"      # a clone: <repo>/prompts
+ROLES = ("system", "user", "assistant")
+
+
+def find_template(name: str, base_dir: Path | None = None) -> Path:
+    """A template by path (absolute, or relative to ``base_dir``) or by name in ``prompts/``
+    (``warehouse_problem`` or ``warehouse_problem.j2``)."""
+    candidates = []
+    p = Path(name).expanduser()
+    if p.is_absolute():
+        candidates.append(p)
+    else:
+        if base_dir is not None:
+            candidates.append(base_dir / p)
+        candidates.append(Path.cwd() / p)
+        for folder in (PROMPTS_DIR, _REPO_PROMPTS):
+            candidates += [folder / p, folder / f"{name}.j2"]
+    for c in candidates:
+        if c.is_file():
+            return c.resolve()
+    known = sorted({t.stem for d in (PROMPTS_DIR, _REPO_PROMPTS) if d.is_dir() for t in d.glob("*.j2")})
+    raise InputError(f"prompt template {name!r} not found; built-in templates: {', '.join(known) or 'none'}")
+
+
+def render(template: str, variables: dict[str, Any], base_dir: Path | None = None) -> list[dict[str, str]]:
+    """Render a template into chat messages ``[{"role", "content"}]``."""
+    from jinja2 import StrictUndefined, TemplateError
+    from jinja2.sandbox import SandboxedEnvironment
+
+    path = find_template(template, base_dir)
+    env = SandboxedEnvironment(undefined=StrictUndefined, trim_blocks=True, lstrip_blocks=True,
+                               keep_trailing_newline=False, autoescape=False)
+    try:
+        tmpl = env.from_string(path.read_text(encoding="utf-8"))
+        roles = [r for r in ROLES if r in tmpl.blocks]
+        if not roles:
+            return [{"role": "user", "content": tmpl.render(**variables).strip()}]
+        messages = []
+        for role in roles:
+            ctx = tmpl.new_context(dict(variables))
+            content = "".join(tmpl.blocks[role](ctx)).strip()
+            if content:
+                messages.append({"role": role, "content": content})
+        return messages
+    except TemplateError as exc:
+        line = getattr(exc, "lineno", None)
+        where = f"{path}:{line}" if line else str(path)
+        raise InputError(f"{where}: prompt template error: {exc}") from None
