@@ -1,0 +1,178 @@
+"""Matplotlib pictures shared by the simulation and the report: the floor map with the robots'
+paths, an animation of it, the Gantt chart of a schedule and the dependency graph.
+
+They live apart from the simulator because the report redraws them from a run record (JSON)
+without pybullet. matplotlib is imported inside each function with the Agg backend, so
+importing this module is cheap and never needs a display."""
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+
+def _plt():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def robot_colour(i: int) -> tuple:
+    from pipflow.simulation import ROBOT_COLOURS
+
+    return ROBOT_COLOURS[i % len(ROBOT_COLOURS)]
+
+
+def draw_floor(ax, world: dict) -> None:
+    """Floor outline, shelves (with name, capacity and access point)."""
+    from matplotlib.patches import Rectangle
+
+    fw, fh = float(world["floor"]["width"]), float(world["floor"]["height"])
+    ax.add_patch(Rectangle((0, 0), fw, fh, fill=False, lw=1.5, ec="black"))
+    for name, sh in world.get("shelves", {}).items():
+        ax.add_patch(Rectangle((sh["x"], sh["y"]), sh["width"], sh["depth"], fc="#b08a66", ec="#5a4030"))
+        ax.text(sh["x"] + sh["width"] / 2, sh["y"] + sh["depth"] / 2, name, ha="center", va="center",
+                fontsize=8, color="white")
+        ax.plot(*sh["access"], marker="x", color="#5a4030", ms=6)
+    ax.set_xlim(-0.5, fw + 0.5)
+    ax.set_ylim(-0.5, fh + 0.5)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+
+
+def path_map(world: dict, trajectories: dict[str, list], path: Path, travel: dict | None = None) -> Path:
+    """Top-down map: each robot's simulated path (``[[t, x, y], ...]``) in its colour, start dot,
+    travelled metres in the legend."""
+    plt = _plt()
+    fig, ax = plt.subplots(figsize=(9, 6.5))
+    draw_floor(ax, world)
+    names = list(world.get("robots", {}))
+    for r, pts in trajectories.items():
+        i = names.index(r) if r in names else len(names)
+        c = robot_colour(i)
+        xs, ys = [p[1] for p in pts], [p[2] for p in pts]
+        label = f"{r} ({travel[r]:.1f} m)" if travel and r in travel else r
+        if len(pts) > 1:
+            ax.plot(xs, ys, "-", color=c, lw=1.6, alpha=0.85, label=label)
+        else:
+            ax.plot([], [], "-", color=c, label=label)
+        if pts:
+            ax.plot(xs[0], ys[0], "o", color=c, ms=6)
+            ax.plot(xs[-1], ys[-1], "s", color=c, ms=5)
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    ax.set_title("Robot paths (o start, \u25a0 end)")
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+    return Path(path)
+
+
+def animation_gif(world: dict, trajectories: dict[str, list], path: Path, makespan: float,
+                  frames: int = 40) -> Path | None:
+    """Top-down animation of the robots; None when Pillow (needed by PillowWriter) is missing."""
+    try:
+        import PIL  # noqa: F401
+    except ImportError:
+        return None
+    from matplotlib.animation import FuncAnimation, PillowWriter
+
+    from pipflow.simulation import Trajectory
+
+    plt = _plt()
+    fig, ax = plt.subplots(figsize=(5, 3.5), dpi=72)
+    draw_floor(ax, world)
+    names = list(world.get("robots", {}))
+    # replay the recorded samples as a trajectory (one leg through all recorded points)
+    replay = {}
+    for r, pts in trajectories.items():
+        if len(pts) > 1:
+            legs = [{"from": p[1:], "to": q[1:], "path": [p[1:], q[1:]], "start": p[0], "end": q[0]}
+                    for p, q in zip(pts, pts[1:])]
+            replay[r] = Trajectory(pts[0][1:], legs)
+        elif pts:
+            replay[r] = Trajectory(pts[0][1:], [])
+    dots = {r: ax.plot([], [], "o", ms=7, color=robot_colour(names.index(r) if r in names else 0))[0]
+            for r in replay}
+    title = ax.set_title("")
+
+    def draw(k: int):
+        t = makespan * k / max(frames - 1, 1)
+        for r, tr in replay.items():
+            x, y = tr.position(t)
+            dots[r].set_data([x], [y])
+        title.set_text(f"t = {t:.1f} s")
+        return list(dots.values()) + [title]
+
+    anim = FuncAnimation(fig, draw, frames=frames, blit=False)
+    anim.save(path, writer=PillowWriter(fps=10))
+    plt.close(fig)
+    return Path(path)
+
+
+def gantt(schedule: dict, path: Path) -> Path:
+    """One row per robot: its travel legs (light) and the subtasks it works on (labelled)."""
+    plt = _plt()
+    robots = sorted((schedule.get("robots") or {}).keys(), key=_natural)
+    for s in schedule.get("subtasks", []):
+        for r in s.get("robots", []):
+            if r not in robots:
+                robots.append(r)
+    fig, ax = plt.subplots(figsize=(10, max(2.5, 0.45 * len(robots) + 1.2)))
+    row = {r: i for i, r in enumerate(robots)}
+    for r, info in (schedule.get("robots") or {}).items():
+        for leg in info.get("legs", []):
+            ax.barh(row[r], float(leg["end"]) - float(leg["start"]), left=float(leg["start"]),
+                    height=0.35, color="#cccccc", edgecolor="#999999")
+    for k, s in enumerate(schedule.get("subtasks", [])):
+        colour = robot_colour(k)
+        for r in s.get("robots", []):
+            ax.barh(row[r], max(float(s["end"]) - float(s["start"]), 1e-3), left=float(s["start"]),
+                    height=0.6, color=colour, alpha=0.75, edgecolor="black", lw=0.5)
+            ax.text(float(s["start"]), row[r], f" {s['id']}", va="center", fontsize=7)
+    ax.set_yticks(range(len(robots)))
+    ax.set_yticklabels(robots, fontsize=8)
+    ax.invert_yaxis()
+    ax.set_xlabel("time (s)")
+    ax.set_title(f"Schedule (makespan {float(schedule.get('makespan', 0)):.1f} s; grey = travel)")
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+    return Path(path)
+
+
+def dependency_graph(graph: dict, path: Path) -> Path:
+    """The subtask DAG, layered by longest path from the roots, labelled with the actions."""
+    import networkx as nx
+
+    plt = _plt()
+    g = nx.DiGraph()
+    labels = {}
+    for n in graph.get("nodes", []):
+        g.add_node(n["id"])
+        labels[n["id"]] = n["id"] + "\n" + " ".join(map(str, n.get("args", [])))
+    g.add_edges_from(tuple(e) for e in graph.get("edges", []))
+    layer = {}
+    for v in nx.topological_sort(g):
+        layer[v] = max([layer[u] + 1 for u in g.predecessors(v)] or [0])
+    nx.set_node_attributes(g, layer, "layer")
+    pos = nx.multipartite_layout(g, subset_key="layer", align="horizontal") if g.nodes else {}
+    pos = {v: (x, -y) for v, (x, y) in pos.items()}
+    width = max([sum(1 for v in layer if layer[v] == k) for k in set(layer.values())] or [1])
+    fig, ax = plt.subplots(figsize=(min(18, 2.2 + 2.0 * width), 1.6 + 1.3 * (max(layer.values(), default=0) + 1)))
+    nx.draw_networkx(g, pos, ax=ax, labels=labels, node_color="#cfe3f7", node_size=1800,
+                     font_size=6, arrows=True, edgecolors="#336699")
+    ax.set_title(f"Dependency graph ({graph.get('mode', '?')} mode, {g.number_of_nodes()} subtasks)")
+    ax.axis("off")
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+    return Path(path)
+
+
+def _natural(name: str) -> Any:
+    import re
+
+    return [int(t) if t.isdigit() else t for t in re.split(r"(\d+)", name)]

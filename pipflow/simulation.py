@@ -1,0 +1,598 @@
+"""Execute a schedule in a headless pybullet world and read back what really happened.
+
+Why a simulator at all, when the schedule already says where everything goes? Because the
+benchmark judges what the *world* looks like afterwards, not what the plan claims: an action
+whose preconditions do not hold when it starts (units missing on the source, no room on the
+target, a coalition too weak or not at the shelf) is refused here and counted, and the final
+stock is counted from the unit bodies lying on each shelf's footprint. Travel is measured from
+the robots' simulated motion, so a schedule whose legs do not connect shows up as extra metres.
+
+Everything is kinematic: bodies have no mass and are placed with ``resetBasePositionAndOrientation``
+at sample times (every ``step`` metres of the fastest robot, plus every path vertex so corners are
+not cut). No physics is stepped, which keeps a whole warehouse run well under a second.
+
+Event model for a subtask ``s`` with coalition ``R`` and route ``[source, target]``:
+
+* load time  = max(s.start, each robot's arrival at the source access point on its legs for s);
+  at that time the preconditions are checked in the simulated state, and on success the units
+  are lifted from the source shelf onto the robots (split by carry skill);
+* unload time = the last arrival of a coalition robot at the target access point (else s.end);
+  the carried units are put on the target shelf's free slots (stacked if the shelf is full, so an
+  over-capacity plan is visible as a peak above capacity rather than hidden).
+
+Unloads are applied before loads at the same instant, so a chain through one shelf works.
+"""
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+Point = tuple[float, float]
+
+#: Colour names pybullet does not know; used only when matplotlib is missing.
+_FALLBACK_COLOURS = {
+    "red": (1, 0, 0, 1), "green": (0, 0.5, 0, 1), "blue": (0, 0, 1, 1), "magenta": (1, 0, 1, 1),
+    "yellow": (1, 1, 0, 1), "cyan": (0, 1, 1, 1), "black": (0, 0, 0, 1), "white": (1, 1, 1, 1),
+    "orange": (1, 0.65, 0, 1), "purple": (0.5, 0, 0.5, 1), "grey": (0.5, 0.5, 0.5, 1),
+    "gray": (0.5, 0.5, 0.5, 1), "brown": (0.6, 0.3, 0.1, 1),
+}
+#: Robot colours (tab10 without the product-like reds/greens first).
+ROBOT_COLOURS = [
+    (0.12, 0.47, 0.71, 1), (1.0, 0.5, 0.05, 1), (0.58, 0.4, 0.74, 1), (0.55, 0.34, 0.29, 1),
+    (0.5, 0.5, 0.5, 1), (0.74, 0.74, 0.13, 1), (0.09, 0.75, 0.81, 1), (0.84, 0.15, 0.16, 1),
+    (0.17, 0.63, 0.17, 1), (0.89, 0.47, 0.76, 1), (0.2, 0.2, 0.2, 1), (0.6, 0.8, 1.0, 1),
+]
+SHELF_HEIGHT = 1.0
+ROBOT_RADIUS = 0.35
+ROBOT_HEIGHT = 0.4
+ARRIVAL_TOLERANCE = 0.75  # metres: a robot this close to an access point is "at the shelf"
+
+
+def colour_rgba(name: str) -> tuple[float, float, float, float]:
+    """World colour name (or hex) -> RGBA in 0..1; unknown names become grey, never an error,
+    because a colour only affects pictures."""
+    try:
+        from matplotlib.colors import to_rgba
+
+        return tuple(float(c) for c in to_rgba(name))  # type: ignore[return-value]
+    except Exception:
+        return _FALLBACK_COLOURS.get(str(name).lower(), (0.5, 0.5, 0.5, 1))
+
+
+# --------------------------------------------------------------------------------------------
+# Plan-side view of a subtask: what it moves and where the coalition goes
+# --------------------------------------------------------------------------------------------
+
+
+@dataclass
+class Move:
+    """A scheduled subtask as the simulator needs it (merged from schedule and graph)."""
+
+    id: str
+    action: str
+    args: list
+    robots: list[str]
+    start: float
+    end: float
+    product: str | None = None
+    source: str | None = None
+    target: str | None = None
+    units: int = 0
+    skills: dict[str, float] = field(default_factory=dict)
+    route: list[str] = field(default_factory=list)
+
+
+def _units_from_args(args: list) -> int:
+    """Trailing integer of the last argument (``magnitude6`` -> 6): the warehouse domain names
+    its amounts that way; used only when the graph gives no carry requirement."""
+    for a in reversed(args or []):
+        m = re.search(r"(\d+)$", str(a))
+        if m:
+            return int(m.group(1))
+    return 0
+
+
+def moves_from(schedule: dict, graph: dict | None) -> list[Move]:
+    """Merge schedule subtasks with graph nodes. Units moved = the node's ``carry`` requirement
+    (the domain's ``amount`` of the magnitude: carry is units per trip), else the magnitude's
+    trailing number. Fields come from the node, else from move-product's argument order."""
+    nodes = {n["id"]: n for n in (graph or {}).get("nodes", [])}
+    moves = []
+    for s in schedule.get("subtasks", []):
+        node = nodes.get(s["id"], {})
+        args = list(s.get("args") or node.get("args") or [])
+        fields = dict(node.get("fields") or {})
+        if not fields and s.get("action", node.get("action")) == "move-product" and len(args) >= 3:
+            fields = {"from": args[0], "to": args[1], "product": args[2]}
+        skills = {k: float(v) for k, v in (node.get("skills") or {}).items()}
+        if "units" in node:
+            units = int(node["units"])
+        elif "carry" in skills:
+            units = int(round(skills["carry"]))
+        else:
+            units = _units_from_args(args)
+        if "carry" not in skills and units:
+            skills["carry"] = float(units)
+        route = list(node.get("route") or [p for p in (fields.get("from"), fields.get("to")) if p])
+        moves.append(Move(
+            id=s["id"], action=s.get("action", node.get("action", "")), args=args,
+            robots=list(s.get("robots") or []), start=float(s.get("start", 0.0)),
+            end=float(s.get("end", s.get("start", 0.0))), product=fields.get("product"),
+            source=fields.get("from"), target=fields.get("to"), units=units, skills=skills,
+            route=route,
+        ))
+    return moves
+
+
+# --------------------------------------------------------------------------------------------
+# Robot trajectories from schedule legs
+# --------------------------------------------------------------------------------------------
+
+
+class Trajectory:
+    """A robot's planned motion: piecewise-linear in time along each leg's path, waiting in
+    place between legs. Vertex times are exposed so the sampler never cuts a corner."""
+
+    def __init__(self, start: Point, legs: list[dict]):
+        self.start = (float(start[0]), float(start[1]))
+        self.segments: list[tuple[float, float, list[Point], list[float]]] = []
+        self.legs = sorted(legs, key=lambda l: float(l.get("start", 0.0)))
+        for leg in self.legs:
+            pts = [tuple(map(float, p)) for p in (leg.get("path") or [])]
+            a = tuple(map(float, leg.get("from", pts[0] if pts else self.start)))
+            b = tuple(map(float, leg.get("to", pts[-1] if pts else a)))
+            if not pts or _dist(pts[0], a) > 1e-9:
+                pts.insert(0, a)
+            if _dist(pts[-1], b) > 1e-9:
+                pts.append(b)
+            cum = [0.0]
+            for p, q in zip(pts, pts[1:]):
+                cum.append(cum[-1] + _dist(p, q))
+            t0, t1 = float(leg.get("start", 0.0)), float(leg.get("end", leg.get("start", 0.0)))
+            self.segments.append((t0, max(t1, t0), pts, cum))
+        if self.segments:
+            self.start = self.segments[0][2][0]
+
+    def position(self, t: float) -> Point:
+        """Where the plan puts the robot at time t."""
+        here = self.start
+        for t0, t1, pts, cum in self.segments:
+            if t < t0:
+                return here
+            if t >= t1:
+                here = pts[-1]
+                continue
+            frac = (t - t0) / (t1 - t0) if t1 > t0 else 1.0
+            s = frac * cum[-1]
+            for i in range(1, len(pts)):
+                if cum[i] >= s:
+                    span = cum[i] - cum[i - 1]
+                    u = (s - cum[i - 1]) / span if span > 0 else 1.0
+                    p, q = pts[i - 1], pts[i]
+                    return (p[0] + u * (q[0] - p[0]), p[1] + u * (q[1] - p[1]))
+            return pts[-1]
+        return here
+
+    def vertex_times(self) -> list[float]:
+        times = []
+        for t0, t1, pts, cum in self.segments:
+            total = cum[-1]
+            times += [t0 + (t1 - t0) * (c / total if total > 0 else 1.0) for c in cum]
+        return times
+
+    def max_speed(self) -> float:
+        return max([(c[-1] / (t1 - t0)) for t0, t1, _, c in self.segments if t1 > t0] or [0.0])
+
+    def arrival(self, subtask: str, place: Point, last: bool = False) -> float | None:
+        """End time of the first (or last) leg of ``subtask`` that ends at ``place``."""
+        hits = [t1 for (t0, t1, pts, _), leg in zip(self.segments, self.legs)
+                if leg.get("subtask") == subtask and _dist(pts[-1], place) <= ARRIVAL_TOLERANCE]
+        if not hits:
+            return None
+        return hits[-1] if last else hits[0]
+
+
+def _dist(p: Point, q: Point) -> float:
+    return math.hypot(p[0] - q[0], p[1] - q[1])
+
+
+# --------------------------------------------------------------------------------------------
+# The pybullet scene
+# --------------------------------------------------------------------------------------------
+
+
+class Scene:
+    """Floor, shelves, unit bodies and robots in one DIRECT pybullet client.
+
+    Shelf slots are a grid on the shelf's top face sized for its capacity; the slot map mirrors
+    the bodies' positions, while counts are always read back from the bodies themselves."""
+
+    def __init__(self, world: dict):
+        import pybullet as p
+
+        self.p = p
+        self.world = world
+        self.cid = p.connect(p.DIRECT)
+        self.unit_product: dict[int, str] = {}
+        self.slots: dict[str, list[Point]] = {}
+        self.occupant: dict[str, dict[int, int]] = {}  # shelf -> slot index -> body
+        self.robot_body: dict[str, int] = {}
+        self.carried: dict[str, list[int]] = {}
+        self.unit_size = 0.3
+        self._build()
+
+    # building ------------------------------------------------------------------------------
+    def _box(self, half: tuple[float, float, float], rgba, pos) -> int:
+        p, c = self.p, self.cid
+        vis = p.createVisualShape(p.GEOM_BOX, halfExtents=half, rgbaColor=rgba, physicsClientId=c)
+        col = p.createCollisionShape(p.GEOM_BOX, halfExtents=half, physicsClientId=c)
+        return p.createMultiBody(0, col, vis, basePosition=pos, physicsClientId=c)
+
+    def _build(self) -> None:
+        p, c, w = self.p, self.cid, self.world
+        fw, fh = float(w["floor"]["width"]), float(w["floor"]["height"])
+        self._box((fw / 2, fh / 2, 0.01), (0.85, 0.85, 0.82, 1), (fw / 2, fh / 2, -0.01))
+        shelves = w.get("shelves", {})
+        for name, sh in shelves.items():
+            x, y, sw, sd = (float(sh[k]) for k in ("x", "y", "width", "depth"))
+            self._box((sw / 2, sd / 2, SHELF_HEIGHT / 2), (0.55, 0.42, 0.3, 1),
+                      (x + sw / 2, y + sd / 2, SHELF_HEIGHT / 2))
+            self.slots[name] = self._slot_grid(sh)
+            self.occupant[name] = {}
+        sizes = []
+        for name, sh in shelves.items():
+            n = len(self.slots[name])
+            cols = max(1, len({round(s[0], 6) for s in self.slots[name]}))
+            rows = max(1, n // cols)
+            sizes.append(min(float(sh["width"]) / cols, float(sh["depth"]) / rows))
+        self.unit_size = max(0.05, min([0.3] + [0.6 * s for s in sizes]))
+        half = self.unit_size / 2
+        col = p.createCollisionShape(p.GEOM_BOX, halfExtents=[half] * 3, physicsClientId=c)
+        visuals = {prod: p.createVisualShape(p.GEOM_BOX, halfExtents=[half] * 3,
+                                             rgbaColor=colour_rgba(info.get("color", "grey")),
+                                             physicsClientId=c)
+                   for prod, info in w.get("products", {}).items()}
+        for shelf, items in w.get("stock", {}).items():
+            for prod, n in items.items():
+                if prod not in visuals:
+                    visuals[prod] = p.createVisualShape(p.GEOM_BOX, halfExtents=[half] * 3,
+                                                        rgbaColor=(0.5, 0.5, 0.5, 1), physicsClientId=c)
+                for _ in range(int(n)):
+                    body = p.createMultiBody(0, col, visuals[prod], basePosition=(0, 0, -5),
+                                             physicsClientId=c)
+                    self.unit_product[body] = prod
+                    self.place_on_shelf(body, shelf)
+        rcol = p.createCollisionShape(p.GEOM_CYLINDER, radius=ROBOT_RADIUS, height=ROBOT_HEIGHT,
+                                      physicsClientId=c)
+        for i, (name, info) in enumerate(w.get("robots", {}).items()):
+            vis = p.createVisualShape(p.GEOM_CYLINDER, radius=ROBOT_RADIUS, length=ROBOT_HEIGHT,
+                                      rgbaColor=ROBOT_COLOURS[i % len(ROBOT_COLOURS)], physicsClientId=c)
+            sx, sy = info["start"]
+            self.robot_body[name] = p.createMultiBody(
+                0, rcol, vis, basePosition=(float(sx), float(sy), ROBOT_HEIGHT / 2), physicsClientId=c)
+            self.carried[name] = []
+
+    @staticmethod
+    def _slot_grid(shelf: dict) -> list[Point]:
+        """A cols x rows grid on the shelf top with at least ``capacity`` cells, cells as square
+        as the footprint allows."""
+        x, y, sw, sd = (float(shelf[k]) for k in ("x", "y", "width", "depth"))
+        cap = max(1, int(shelf.get("capacity", 1)))
+        cols = max(1, round(math.sqrt(cap * sw / sd))) if sd > 0 else cap
+        rows = max(1, math.ceil(cap / cols))
+        return [(x + sw * (i + 0.5) / cols, y + sd * (j + 0.5) / rows)
+                for j in range(rows) for i in range(cols)]
+
+    # state ----------------------------------------------------------------------------------
+    def place_on_shelf(self, body: int, shelf: str) -> None:
+        """Put a unit on the first free slot; when none is free, stack it on the top layer so the
+        overflow stays on the shelf (and is counted) instead of vanishing."""
+        occ = self.occupant[shelf]
+        slots = self.slots[shelf]
+        free = next((i for i in range(len(slots)) if i not in occ), None)
+        if free is not None:
+            occ[free] = body
+            sx, sy = slots[free]
+            z = SHELF_HEIGHT + self.unit_size / 2
+        else:
+            k = len(occ)
+            occ[k] = body
+            sx, sy = slots[k % len(slots)]
+            z = SHELF_HEIGHT + self.unit_size * (0.5 + k // len(slots))
+        self.p.resetBasePositionAndOrientation(body, (sx, sy, z), (0, 0, 0, 1), physicsClientId=self.cid)
+
+    def take_from_shelf(self, shelf: str, product: str, n: int) -> list[int]:
+        occ = self.occupant[shelf]
+        picked = [i for i in sorted(occ, reverse=True) if self.unit_product[occ[i]] == product][:n]
+        return [occ.pop(i) for i in picked]
+
+    def body_xyz(self, body: int) -> tuple[float, float, float]:
+        pos, _ = self.p.getBasePositionAndOrientation(body, physicsClientId=self.cid)
+        return pos
+
+    def count_stock(self) -> tuple[dict[str, dict[str, int]], int]:
+        """Units per shelf and product read from the bodies' positions (footprint, above the
+        floor); second value: units lying on no shelf (carried or lost)."""
+        stock: dict[str, dict[str, int]] = {s: {} for s in self.world.get("shelves", {})}
+        stray = 0
+        for body, prod in self.unit_product.items():
+            x, y, z = self.body_xyz(body)
+            for name, sh in self.world.get("shelves", {}).items():
+                if (float(sh["x"]) - 1e-6 <= x <= float(sh["x"]) + float(sh["width"]) + 1e-6
+                        and float(sh["y"]) - 1e-6 <= y <= float(sh["y"]) + float(sh["depth"]) + 1e-6
+                        and z >= SHELF_HEIGHT):
+                    stock[name][prod] = stock[name].get(prod, 0) + 1
+                    break
+            else:
+                stray += 1
+        return stock, stray
+
+    def move_robot(self, robot: str, xy: Point) -> None:
+        p, c = self.p, self.cid
+        p.resetBasePositionAndOrientation(self.robot_body[robot], (xy[0], xy[1], ROBOT_HEIGHT / 2),
+                                          (0, 0, 0, 1), physicsClientId=c)
+        for k, body in enumerate(self.carried[robot]):
+            p.resetBasePositionAndOrientation(
+                body, (xy[0], xy[1], ROBOT_HEIGHT + self.unit_size * (0.5 + k)), (0, 0, 0, 1),
+                physicsClientId=c)
+
+    def robot_xy(self, robot: str) -> Point:
+        x, y, _ = self.body_xyz(self.robot_body[robot])
+        return (x, y)
+
+    def snapshot(self, path: Path, width: int = 640, height: int = 400) -> Path:
+        """An oblique view of the whole floor with the tiny renderer (no display needed)."""
+        import numpy as np
+
+        p, c = self.p, self.cid
+        fw, fh = float(self.world["floor"]["width"]), float(self.world["floor"]["height"])
+        target = (fw / 2, fh / 2, 0)
+        eye = (fw / 2, -0.3 * fh, 0.72 * max(fw, fh))
+        view = p.computeViewMatrix(eye, target, (0, 0, 1), physicsClientId=c)
+        proj = p.computeProjectionMatrixFOV(45, width / height, 0.1, 200, physicsClientId=c)
+        _, _, rgba, _, _ = p.getCameraImage(width, height, view, proj, renderer=p.ER_TINY_RENDERER,
+                                            physicsClientId=c)
+        img = np.reshape(np.asarray(rgba, dtype=np.uint8), (height, width, 4))[:, :, :3]
+        _save_png(path, img)
+        return path
+
+    def close(self) -> None:
+        try:
+            self.p.disconnect(physicsClientId=self.cid)
+        except Exception:
+            pass
+
+
+def _save_png(path: Path, img) -> None:
+    try:
+        from PIL import Image
+
+        Image.fromarray(img).save(path)
+    except ImportError:
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.image as mpimg
+
+        mpimg.imsave(path, img)
+
+
+# --------------------------------------------------------------------------------------------
+# Running a schedule
+# --------------------------------------------------------------------------------------------
+
+
+def _access(world: dict, place: str | None) -> Point | None:
+    sh = world.get("shelves", {}).get(place or "")
+    return (float(sh["access"][0]), float(sh["access"][1])) if sh else None
+
+
+def simulate(world: dict, schedule: dict, graph: dict | None = None, goal: dict | None = None, *,
+             snapshots: bool = False, animation: bool = False, out_dir: str | Path | None = None,
+             step: float = 0.25, log=None) -> dict:
+    """Run ``schedule`` in pybullet and return what the world looks like afterwards.
+
+    Returns ``{final_stock, executed, failed, failures, exe, travel, tc_max, tc_avg, goal_met,
+    gcr, peak_load, stray_units, makespan, trajectories, events, pictures}``; pictures (file
+    names in ``out_dir``) only when ``out_dir`` is given."""
+    log = log or (lambda m: None)
+    moves = moves_from(schedule, graph)
+    robots = world.get("robots", {})
+    legs_by_robot: dict[str, list[dict]] = {r: [] for r in robots}
+    for r, info in (schedule.get("robots") or {}).items():
+        legs_by_robot.setdefault(r, []).extend(info.get("legs", []))
+    traj = {r: Trajectory(robots.get(r, {}).get("start", (0, 0)), legs) for r, legs in legs_by_robot.items()}
+
+    # event times from the legs (robots' motion is fixed by the schedule)
+    events: list[tuple[float, int, int, str]] = []  # (time, 0=unload/1=load, order, move id)
+    times_of: dict[str, tuple[float, float]] = {}
+    for order, m in enumerate(moves):
+        src, tgt = _access(world, m.route[0] if m.route else m.source), _access(world, m.route[-1] if m.route else m.target)
+        arr_src = [traj[r].arrival(m.id, src) for r in m.robots if r in traj and src] if src else []
+        t_load = max([m.start] + [a for a in arr_src if a is not None])
+        arr_tgt = [traj[r].arrival(m.id, tgt, last=True) for r in m.robots if r in traj] if tgt else []
+        arr_tgt = [a for a in arr_tgt if a is not None]
+        t_unload = max([t_load] + (arr_tgt if arr_tgt else [m.end]))
+        times_of[m.id] = (t_load, t_unload)
+        events.append((t_load, 1, order, m.id))
+        events.append((t_unload, 0, order, m.id))
+    events.sort()
+
+    makespan = max([float(schedule.get("makespan", 0.0))] + [e[0] for e in events]
+                   + [s[1] for t in traj.values() for s in t.segments])
+    vmax = max([t.max_speed() for t in traj.values()] + [1e-9])
+    dt = step / vmax if vmax > 1e-6 else max(makespan, 1.0)
+    n_grid = int(makespan / dt) + 1 if makespan > 0 else 1
+    if n_grid > 20000:  # guard against absurd schedules: never more than 20k grid samples
+        n_grid, dt = 20000, makespan / 20000
+    sample_times = {i * dt for i in range(n_grid + 1)} | {e[0] for e in events} | {makespan}
+    for t in traj.values():
+        sample_times |= set(t.vertex_times())
+    sample_times = sorted(x for x in sample_times if 0 <= x <= makespan + 1e-9)
+
+    scene = Scene(world)
+    by_id = {m.id: m for m in moves}
+    pictures: list[str] = []
+    out = Path(out_dir) if out_dir else None
+    snap_plan = _snapshot_times(events, makespan) if (snapshots and out) else {}
+    travel = {r: 0.0 for r in traj}
+    last_xy = {r: scene.robot_xy(r) for r in traj if r in scene.robot_body}
+    paths = {r: [[0.0, *last_xy[r]]] for r in last_xy}
+    peak: dict[str, int] = {}
+    stock0, _ = scene.count_stock()
+    for shelf, items in stock0.items():
+        peak[shelf] = sum(items.values())
+    executed, failures, log_events = 0, [], []
+    done_load: dict[str, bool] = {}
+    ev_i = 0
+    try:
+        for t in sample_times:
+            for r, tr in traj.items():
+                if r not in scene.robot_body:
+                    continue
+                xy = tr.position(t)
+                scene.move_robot(r, xy)
+                now = scene.robot_xy(r)  # measured from the body, not from the plan
+                d = _dist(now, last_xy[r])
+                if d > 1e-9:
+                    travel[r] += d
+                    paths[r].append([t, now[0], now[1]])
+                    last_xy[r] = now
+            while ev_i < len(events) and events[ev_i][0] <= t + 1e-9:
+                et, kind, _, mid = events[ev_i]
+                ev_i += 1
+                m = by_id[mid]
+                if kind == 1:
+                    reasons = _check(scene, world, m)
+                    if reasons:
+                        failures.append({"subtask": m.id, "action": m.action, "args": m.args,
+                                         "time": round(et, 3), "reasons": reasons})
+                        log(f"{m.id} not executed at t={et:.1f}: {'; '.join(reasons)}")
+                        done_load[m.id] = False
+                    else:
+                        _load(scene, world, m)
+                        done_load[m.id] = True
+                        log_events.append({"time": round(et, 3), "subtask": m.id, "event": "load"})
+                elif done_load.get(m.id):
+                    _unload(scene, m)
+                    executed += 1
+                    log_events.append({"time": round(et, 3), "subtask": m.id, "event": "unload"})
+                    stock, _ = scene.count_stock()
+                    for shelf, items in stock.items():
+                        peak[shelf] = max(peak.get(shelf, 0), sum(items.values()))
+            for name, ts in list(snap_plan.items()):
+                if t + 1e-9 >= ts:
+                    fname = f"snapshot_{len(pictures) + 1}_{name}.png"
+                    scene.snapshot(out / fname)
+                    pictures.append(fname)
+                    del snap_plan[name]
+        final_stock, stray = scene.count_stock()
+    finally:
+        scene.close()
+
+    final_stock = {s: {p: n for p, n in items.items() if n} for s, items in final_stock.items()}
+    planned = len(moves)
+    gm, gcr = goal_check(final_stock, goal or {})
+    tc = list(travel.values())
+    result = {
+        "final_stock": final_stock, "executed": executed, "failed": len(failures),
+        "failures": failures, "exe": executed / planned if planned else 1.0,
+        "travel": {r: round(v, 4) for r, v in travel.items()},
+        "tc_max": round(max(tc), 4) if tc else 0.0, "tc_avg": round(sum(tc) / len(tc), 4) if tc else 0.0,
+        "goal_met": gm, "gcr": gcr, "peak_load": peak, "stray_units": stray,
+        "makespan": round(makespan, 4), "events": log_events,
+        "trajectories": {r: [[round(v, 4) for v in row] for row in pts] for r, pts in paths.items()},
+        "pictures": pictures,
+    }
+    if out is not None:
+        from pipflow import pictures as pics
+
+        pictures.append(pics.path_map(world, result["trajectories"], out / "paths.png", travel=travel).name)
+        if animation:
+            gif = pics.animation_gif(world, result["trajectories"], out / "animation.gif", makespan)
+            if gif is None:
+                log("animation skipped: Pillow is not installed (pip install pillow)")
+                result["animation_skipped"] = "Pillow is not installed"
+            else:
+                pictures.append(gif.name)
+    return result
+
+
+def _snapshot_times(events: list, makespan: float) -> dict[str, float]:
+    """Key moments like the paper's Fig. 4 a-d: the start, the first pick-up, halfway, the end."""
+    first_load = next((e[0] for e in events if e[1] == 1), makespan / 3)
+    return {"start": 0.0, "first-load": first_load, "halfway": max(first_load, makespan / 2),
+            "end": makespan}
+
+
+def _check(scene: Scene, world: dict, m: Move) -> list[str]:
+    """Preconditions of a move in the simulated state at its start; every failed one is named."""
+    reasons = []
+    robots = world.get("robots", {})
+    unknown = [r for r in m.robots if r not in robots]
+    if unknown:
+        reasons.append(f"unknown robots {unknown}")
+    if not m.robots:
+        reasons.append("no robot assigned")
+    for skill, need in m.skills.items():
+        have = sum(float(robots.get(r, {}).get("skills", {}).get(skill, 0)) for r in m.robots)
+        if have + 1e-9 < need:
+            reasons.append(f"coalition {skill} {have:g} < {need:g} needed")
+    src = _access(world, m.route[0] if m.route else m.source)
+    if src:
+        away = [r for r in m.robots if r in scene.robot_body and _dist(scene.robot_xy(r), src) > ARRIVAL_TOLERANCE]
+        if away:
+            reasons.append(f"{', '.join(away)} not at {m.route[0] if m.route else m.source}")
+    if m.product and m.source:
+        if m.source not in scene.occupant:
+            reasons.append(f"unknown shelf {m.source}")
+        else:
+            have = sum(1 for b in scene.occupant[m.source].values() if scene.unit_product[b] == m.product)
+            if have < m.units:
+                reasons.append(f"{m.source} has {have} {m.product}, {m.units} needed")
+    if m.product and m.target:
+        if m.target not in scene.occupant:
+            reasons.append(f"unknown shelf {m.target}")
+        else:
+            cap = int(world["shelves"][m.target].get("capacity", 10 ** 9))
+            load = len(scene.occupant[m.target])
+            if load + m.units > cap:
+                reasons.append(f"{m.target} holds {load}/{cap}, no room for {m.units}")
+    return reasons
+
+
+def _load(scene: Scene, world: dict, m: Move) -> None:
+    """Lift the units onto the coalition, each robot up to its carry level, the strongest first."""
+    if not (m.product and m.source and m.units):
+        return
+    bodies = scene.take_from_shelf(m.source, m.product, m.units)
+    robots = world.get("robots", {})
+    order = sorted(m.robots, key=lambda r: -float(robots.get(r, {}).get("skills", {}).get("carry", 0)))
+    for r in order:
+        cap = int(math.floor(float(robots.get(r, {}).get("skills", {}).get("carry", 0))))
+        take, bodies = bodies[:cap], bodies[cap:]
+        scene.carried[r].extend(take)
+        scene.move_robot(r, scene.robot_xy(r))
+    if bodies:  # fractional skills: whoever is first carries the rest
+        scene.carried[order[0]].extend(bodies)
+        scene.move_robot(order[0], scene.robot_xy(order[0]))
+
+
+def _unload(scene: Scene, m: Move) -> None:
+    for r in m.robots:
+        for body in scene.carried.get(r, []):
+            scene.place_on_shelf(body, m.target)
+        if r in scene.carried:
+            scene.carried[r] = []
+
+
+def goal_check(stock: dict, goal: dict) -> tuple[bool, float]:
+    """Every listed count must hold exactly; GCR is the fraction that does (1.0 for no goal)."""
+    conds = [(s, p, int(n)) for s, items in (goal or {}).items() for p, n in items.items()]
+    if not conds:
+        return True, 1.0
+    ok = sum(1 for s, p, n in conds if int(stock.get(s, {}).get(p, 0)) == n)
+    return ok == len(conds), ok / len(conds)
