@@ -1,0 +1,342 @@
+"""World and task files: load, validate with located errors, and expose the facts later steps use.
+
+A world file (format: ``benchmarks/README.md``, schema: ``schemas/world.schema.json``) is checked
+in two passes and every problem is reported at once, each with its line and column, because a
+user fixing a file wants the whole list, not one error per run:
+
+1. JSON Schema (structure, types, unknown keys with the closest known key);
+2. meaning: stock names a shelf and a product that exist, counts are not negative, no shelf holds
+   more than its capacity, footprints lie on the floor, robots start and access points lie on
+   the floor and outside every footprint.
+
+:func:`load_world` returns the normalized world dict of ``docs/architecture.md``;
+:func:`load_tasks` loads a task file, resolves its ``world`` relative to the task file, and
+reports goal and constraint names that the world does not have.
+"""
+from __future__ import annotations
+
+import difflib
+import json
+from functools import lru_cache
+from pathlib import Path
+from typing import Any, Callable, Iterable
+
+import yaml
+
+from pipflow.errors import Diagnostic, Location, WorldError
+from pipflow.yamlsource import load_with_locations, yaml_error_diagnostic
+
+Locate = Callable[..., Location]
+
+
+# ---------------------------------------------------------------------------------------------
+# data files (schemas/, domains/) in a clone and in an installed copy
+# ---------------------------------------------------------------------------------------------
+def data_file(folder: str, name: str) -> Path:
+    """Path of ``folder/name`` (folder: schemas, domains, prompts, workflows): installed copies
+    keep these folders inside the ``pipflow`` package, a clone keeps them at the top."""
+    here = Path(__file__).resolve().parent
+    for base in (here / folder, here.parent / folder):
+        if (base / name).exists():
+            return base / name
+    raise FileNotFoundError(f"pipflow data file {folder}/{name} not found next to {here}")
+
+
+@lru_cache(maxsize=None)
+def load_schema(name: str) -> dict:
+    """A JSON Schema of ``schemas/`` by file name (cached: schemas do not change in a run)."""
+    return json.loads(data_file("schemas", name).read_text())
+
+
+def closest(name: str, choices: Iterable[str], n: int = 3) -> list[str]:
+    """Closest existing names to ``name`` (difflib), for "did you mean" hints."""
+    return difflib.get_close_matches(str(name), [str(c) for c in choices], n=n, cutoff=0.6)
+
+
+def _did_you_mean(name: str, choices: Iterable[str]) -> str:
+    near = closest(name, choices)
+    return f" (did you mean {', '.join(repr(c) for c in near)}?)" if near else ""
+
+
+# ---------------------------------------------------------------------------------------------
+# schema pass
+# ---------------------------------------------------------------------------------------------
+def schema_diagnostics(data: Any, schema: dict, locate: Locate) -> list[Diagnostic]:
+    """Every JSON-Schema violation of ``data``, located; unknown keys point at the key itself."""
+    import jsonschema
+
+    validator = jsonschema.Draft202012Validator(schema)
+    out: list[Diagnostic] = []
+    for err in sorted(validator.iter_errors(data), key=lambda e: list(map(str, e.absolute_path))):
+        path = tuple(err.absolute_path)
+        if err.validator == "additionalProperties" and isinstance(err.instance, dict):
+            known = list((err.schema.get("properties") or {}).keys())
+            for extra in err.instance:
+                if extra not in known:
+                    where = "/".join(map(str, path)) or "top level"
+                    out.append(Diagnostic(locate(path + (extra,), key=True),
+                                          f"unknown key {extra!r} in {where}{_did_you_mean(extra, known)}"
+                                          + (f"; allowed: {', '.join(known)}" if known else "")))
+            continue
+        if err.validator == "propertyNames":
+            bad = err.instance
+            out.append(Diagnostic(locate(path + (bad,), key=True),
+                                  f"invalid name {bad!r}: names start with a letter and use letters, "
+                                  "digits, '_' or '-' (they become PDDL object names)"))
+            continue
+        where = "/".join(map(str, path)) or "top level"
+        out.append(Diagnostic(locate(path), f"{where}: {err.message}"))
+    return out
+
+
+# ---------------------------------------------------------------------------------------------
+# geometry
+# ---------------------------------------------------------------------------------------------
+def footprint(shelf: dict) -> tuple[float, float, float, float]:
+    """(x0, y0, x1, y1) of a shelf's footprint."""
+    return shelf["x"], shelf["y"], shelf["x"] + shelf["width"], shelf["y"] + shelf["depth"]
+
+
+def inside_footprint(point: list[float], shelf: dict) -> bool:
+    """True when ``point`` lies in the shelf's footprint, border included (a robot touching a
+    shelf collides with it)."""
+    x0, y0, x1, y1 = footprint(shelf)
+    return x0 <= point[0] <= x1 and y0 <= point[1] <= y1
+
+
+def on_floor(point: list[float], floor: dict) -> bool:
+    return 0 <= point[0] <= floor["width"] and 0 <= point[1] <= floor["height"]
+
+
+def _is_point(p: Any) -> bool:
+    return isinstance(p, list) and len(p) == 2 and all(isinstance(v, (int, float)) for v in p)
+
+
+# ---------------------------------------------------------------------------------------------
+# meaning pass
+# ---------------------------------------------------------------------------------------------
+def semantic_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
+    """Checks the schema cannot express. Runs on partially valid data: every check guards the
+    types it needs, so one bad field does not hide the problems of the others."""
+    out: list[Diagnostic] = []
+    floor = data.get("floor") if isinstance(data.get("floor"), dict) else None
+    if floor and not all(isinstance(floor.get(k), (int, float)) for k in ("width", "height")):
+        floor = None
+    shelves = data.get("shelves") if isinstance(data.get("shelves"), dict) else {}
+    shelves = {k: v for k, v in shelves.items() if isinstance(v, dict)}
+    products = data.get("products") if isinstance(data.get("products"), dict) else {}
+    geo = {k: v for k, v in shelves.items()
+           if all(isinstance(v.get(f), (int, float)) for f in ("x", "y", "width", "depth"))}
+
+    for name, shelf in geo.items():
+        x0, y0, x1, y1 = footprint(shelf)
+        if floor and not (x0 >= 0 and y0 >= 0 and x1 <= floor["width"] and y1 <= floor["height"]):
+            out.append(Diagnostic(locate(("shelves", name), key=True),
+                                  f"shelf {name!r} footprint ({x0}, {y0})-({x1}, {y1}) is not on the "
+                                  f"floor (0, 0)-({floor['width']}, {floor['height']})"))
+        access = shelf.get("access")
+        if _is_point(access):
+            if floor and not on_floor(access, floor):
+                out.append(Diagnostic(locate(("shelves", name, "access")),
+                                      f"access point {access} of shelf {name!r} is off the floor"))
+            for other, o in geo.items():
+                if inside_footprint(access, o):
+                    out.append(Diagnostic(locate(("shelves", name, "access")),
+                                          f"access point {access} of shelf {name!r} lies inside the "
+                                          f"footprint of shelf {other!r}; robots must be able to stand there"))
+    names = list(geo)
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            ax0, ay0, ax1, ay1 = footprint(geo[a])
+            bx0, by0, bx1, by1 = footprint(geo[b])
+            if ax0 < bx1 and bx0 < ax1 and ay0 < by1 and by0 < ay1:
+                out.append(Diagnostic(locate(("shelves", b), key=True),
+                                      f"shelf {b!r} overlaps shelf {a!r}"))
+
+    stock = data.get("stock") if isinstance(data.get("stock"), dict) else {}
+    for sname, items in stock.items():
+        if sname not in shelves:
+            out.append(Diagnostic(locate(("stock", sname), key=True),
+                                  f"stock names unknown shelf {sname!r}{_did_you_mean(sname, shelves)}"))
+        if not isinstance(items, dict):
+            continue
+        total = 0
+        for pname, units in items.items():
+            if pname not in products:
+                out.append(Diagnostic(locate(("stock", sname, pname), key=True),
+                                      f"stock of shelf {sname!r} names unknown product {pname!r}"
+                                      f"{_did_you_mean(pname, products)}"))
+            if isinstance(units, int) and not isinstance(units, bool):
+                if units < 0:
+                    out.append(Diagnostic(locate(("stock", sname, pname)),
+                                          f"negative count {units} of {pname!r} on shelf {sname!r}"))
+                else:
+                    total += units
+        cap = shelves.get(sname, {}).get("capacity")
+        if isinstance(cap, int) and total > cap:
+            out.append(Diagnostic(locate(("stock", sname), key=True),
+                                  f"shelf {sname!r} holds {total} units but its capacity is {cap}"))
+
+    robots = data.get("robots") if isinstance(data.get("robots"), dict) else {}
+    for rname, robot in robots.items():
+        start = robot.get("start") if isinstance(robot, dict) else None
+        if not _is_point(start):
+            continue
+        if floor and not on_floor(start, floor):
+            out.append(Diagnostic(locate(("robots", rname, "start")),
+                                  f"robot {rname!r} starts at {start}, off the floor "
+                                  f"(0, 0)-({floor['width']}, {floor['height']})"))
+        for sname, shelf in geo.items():
+            if inside_footprint(start, shelf):
+                out.append(Diagnostic(locate(("robots", rname, "start")),
+                                      f"robot {rname!r} starts at {start}, inside the footprint of shelf {sname!r}"))
+    return out
+
+
+def normalize_world(data: dict, path: Path) -> dict:
+    """The world dict of docs/architecture.md: every shelf in ``stock``, zero counts omitted."""
+    shelves = {
+        name: {"x": s["x"], "y": s["y"], "width": s["width"], "depth": s["depth"],
+               "capacity": s["capacity"], "access": list(s["access"])}
+        for name, s in data["shelves"].items()
+    }
+    stock = {name: {} for name in shelves}
+    for sname, items in (data.get("stock") or {}).items():
+        for pname, units in (items or {}).items():
+            if units:
+                stock[sname][pname] = units
+    return {
+        "name": data.get("name") or path.stem,
+        "path": str(path),
+        "floor": {"width": data["floor"]["width"], "height": data["floor"]["height"]},
+        "shelves": shelves,
+        "products": {name: dict(p or {}) for name, p in data["products"].items()},
+        "stock": stock,
+        "robots": {
+            name: {"start": list(r["start"]), "skills": dict(r["skills"])}
+            for name, r in (data.get("robots") or {}).items()
+        },
+    }
+
+
+def _read(path: str | Path) -> tuple[Path, str]:
+    p = Path(path).expanduser().resolve()
+    try:
+        return p, p.read_text()
+    except OSError as exc:
+        raise WorldError([Diagnostic(Location(str(p)), f"cannot read file: {exc.strerror or exc}")]) from None
+
+
+def _parse(text: str, file: str, kind: str) -> tuple[Any, Locate]:
+    try:
+        data, locate = load_with_locations(text, file)
+    except yaml.YAMLError as exc:
+        raise WorldError([yaml_error_diagnostic(exc, file)], f"invalid {kind} file {file}") from None
+    if not isinstance(data, dict):
+        raise WorldError([Diagnostic(Location(file, 1, 1), f"a {kind} file must be a YAML mapping")],
+                         f"invalid {kind} file {file}")
+    return data, locate
+
+
+def _duplicate_diagnostics(locate: Any) -> list[Diagnostic]:
+    return [Diagnostic(loc, f"duplicate key {path[-1]!r} (YAML keeps only the last one)")
+            for path, loc in getattr(locate, "duplicates", [])]
+
+
+def world_from_text(text: str, file: str) -> dict:
+    """Validate and normalize world YAML ``text`` (``file`` names it in messages)."""
+    data, locate = _parse(text, file, "world")
+    diags = _duplicate_diagnostics(locate)
+    diags += schema_diagnostics(data, load_schema("world.schema.json"), locate)
+    diags += semantic_diagnostics(data, locate)
+    diags.sort(key=lambda d: (d.location.line, d.location.column) if d.location else (0, 0))
+    if diags:
+        raise WorldError(diags, f"invalid world file {file} ({len(diags)} problem(s))")
+    return normalize_world(data, Path(file))
+
+
+def load_world(path: str | Path) -> dict:
+    """Load a world file; raise :class:`WorldError` listing every problem with its location."""
+    p, text = _read(path)
+    return world_from_text(text, str(p))
+
+
+# ---------------------------------------------------------------------------------------------
+# task files
+# ---------------------------------------------------------------------------------------------
+def task_diagnostics(data: dict, world: dict, locate: Locate) -> list[Diagnostic]:
+    """Names in goals and constraints that the world does not have; duplicate task ids."""
+    out: list[Diagnostic] = []
+    shelves, products, robots = world["shelves"], world["products"], world["robots"]
+    seen: dict[str, int] = {}
+    for i, task in enumerate(data.get("tasks") or []):
+        if not isinstance(task, dict):
+            continue
+        tid = task.get("id")
+        if isinstance(tid, str):
+            if tid in seen:
+                out.append(Diagnostic(locate(("tasks", i, "id")), f"duplicate task id {tid!r} (first at task {seen[tid] + 1})"))
+            seen.setdefault(tid, i)
+        goal = task.get("goal") if isinstance(task.get("goal"), dict) else {}
+        for sname, items in goal.items():
+            if sname not in shelves:
+                out.append(Diagnostic(locate(("tasks", i, "goal", sname), key=True),
+                                      f"task {tid}: goal names unknown shelf {sname!r}{_did_you_mean(sname, shelves)}"))
+            for pname in (items or {}) if isinstance(items, dict) else ():
+                if pname not in products:
+                    out.append(Diagnostic(locate(("tasks", i, "goal", sname, pname), key=True),
+                                          f"task {tid}: goal names unknown product {pname!r}{_did_you_mean(pname, products)}"))
+        for j, rule in enumerate(task.get("constraints") or []):
+            if not isinstance(rule, dict):
+                continue
+            for key in ("only", "never"):
+                for k, r in enumerate(rule.get(key) or []):
+                    if r not in robots:
+                        out.append(Diagnostic(locate(("tasks", i, "constraints", j, key, k)),
+                                              f"task {tid}: constraint names unknown robot {r!r}{_did_you_mean(r, robots)}"))
+            for key, names in (("product", products), ("from", shelves), ("to", shelves)):
+                if key in rule and rule[key] not in names:
+                    kind = "product" if key == "product" else "shelf"
+                    out.append(Diagnostic(locate(("tasks", i, "constraints", j, key)),
+                                          f"task {tid}: constraint {key!r} names unknown {kind} "
+                                          f"{rule[key]!r}{_did_you_mean(rule[key], names)}"))
+    return out
+
+
+def load_tasks(path: str | Path) -> dict:
+    """Load a task file and its world.
+
+    Returns ``{"path", "world_path", "world": <world dict>, "tasks": [{"id", "command", "goal",
+    "constraints", "feasible"}]}``; raises :class:`WorldError` with every problem located (a bad
+    world file reports its own locations)."""
+    p, text = _read(path)
+    file = str(p)
+    data, locate = _parse(text, file, "task")
+    diags = _duplicate_diagnostics(locate) + schema_diagnostics(data, load_schema("tasks.schema.json"), locate)
+    if diags:
+        raise WorldError(diags, f"invalid task file {file} ({len(diags)} problem(s))")
+    world_path = (p.parent / data["world"]).resolve()
+    if not world_path.exists():
+        raise WorldError([Diagnostic(locate(("world",)), f"world file {data['world']!r} not found (looked at {world_path})")],
+                         f"invalid task file {file}")
+    world = load_world(world_path)
+    diags = task_diagnostics(data, world, locate)
+    if diags:
+        raise WorldError(diags, f"invalid task file {file} ({len(diags)} problem(s))")
+    tasks = [{"id": t["id"], "command": t["command"], "goal": {s: dict(g) for s, g in t["goal"].items()},
+              "constraints": [dict(c) for c in t.get("constraints") or []],
+              "feasible": t.get("feasible", True)} for t in data["tasks"]]
+    return {"path": file, "world_path": str(world_path), "world": world, "tasks": tasks}
+
+
+# ---------------------------------------------------------------------------------------------
+# facts
+# ---------------------------------------------------------------------------------------------
+def shelf_load(world: dict, shelf: str) -> int:
+    """Units of all products on ``shelf`` in the initial state."""
+    return sum(world["stock"].get(shelf, {}).values())
+
+
+def product_total(world: dict, product: str) -> int:
+    """Units of ``product`` that exist in the world (over all shelves)."""
+    return sum(items.get(product, 0) for items in world["stock"].values())
