@@ -1,1 +1,59 @@
-"""(to be written)"""
+"""Language steps: the PDDL problem generator (paper, Fig. 1, orange box).
+
+Thin face of :mod:`pipflow.language.generator`; litellm is imported only when a model is called.
+"""
+from __future__ import annotations
+
+from pipflow import Input, StepContext, step
+from pipflow.errors import InputError
+
+
+@step(
+    "llm.problem",
+    doc="Write the team-level PDDL problem for a command with a language model (or offline).",
+    inputs={
+        "command": Input("string", doc="the natural-language command"),
+        "world": Input("object", doc="the world (output of world.load)"),
+        "domain": Input("path", doc="team-level PDDL domain file"),
+        "prompt": Input("string", "warehouse_problem", doc="template name in prompts/ or a path"),
+        "model": Input("string", None, doc="litellm model string, local/smollm2 or offline; "
+                                           "unset: $PIPFLOW_MODEL, else offline"),
+        "temperature": Input("number", 0.0),
+        "max_tokens": Input("integer", 1024),
+        "timeout": Input("number", 60.0, doc="seconds per call"),
+        "retries": Input("integer", 2, doc="extra tries on rate limits, time-outs, lost connections"),
+        "api_base": Input("string", None, doc="base URL of an OpenAI-compatible server"),
+        "feedback": Input("array", None, doc="messages of the previous round's debugger/verifier"),
+        "grounded": Input("boolean", False, doc="constrain decoding to the world's names and counts"),
+        "cache_dir": Input("path", None, doc="response cache folder (default .pipflow-cache/llm)"),
+        "cache": Input("boolean", True, doc="replay cached responses; false always calls the model"),
+    },
+    outputs={"problem": "string", "goal": "any", "constraints": "array", "messages": "array",
+             "response": "string", "usage": "object", "errors": "array"},
+)
+def llm_problem(ctx: StepContext, command: str, world: dict, domain: str,
+                prompt: str = "warehouse_problem", model: str | None = None,
+                temperature: float = 0.0, max_tokens: int = 1024, timeout: float = 60.0,
+                retries: int = 2, api_base: str | None = None, feedback: list | None = None,
+                grounded: bool = False, cache_dir: str | None = None, cache: bool = True) -> dict:
+    """``problem`` is "" when the answer held no usable problem; ``errors`` then says why, in
+    words meant for the next round's prompt. ``goal`` is set by offline and grounded runs."""
+    from pipflow.language.generator import generate
+    from pipflow.language.llm import resolve_model
+
+    resolved = resolve_model(model)
+    domain_text = ""
+    if resolved != "offline":
+        path = ctx.resolve_path(domain)
+        try:
+            domain_text = path.read_text(encoding="utf-8")
+        except OSError as exc:
+            raise InputError(f"domain file {path}: {exc.strerror}") from None
+    out = generate(
+        command, world, domain_text, prompt=prompt, model=resolved, temperature=temperature,
+        max_tokens=max_tokens, timeout=timeout, retries=retries, api_base=api_base,
+        feedback=feedback, grounded=grounded,
+        cache_dir=ctx.resolve_path(cache_dir) if cache_dir else None, use_cache=cache,
+        base_dir=ctx.base_dir, save=ctx.write_artifact, log=ctx.log)
+    ctx.metrics["llm"] = out["usage"]
+    return out

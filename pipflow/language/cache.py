@@ -11,7 +11,6 @@ from __future__ import annotations
 import hashlib
 import json
 import os
-import tempfile
 from pathlib import Path
 from typing import Any
 
@@ -47,14 +46,8 @@ class ResponseCache:
 
     def put(self, key: str, entry: dict[str, Any]) -> Path:
         """Store an entry atomically (a crash never leaves half a file that replays wrong)."""
-        self.directory.mkdir(parents=True, exist_ok=True)
+        from pipflow.engine.store import atomic_write
+
         data = json.dumps(entry, indent=2, sort_keys=True, ensure_ascii=False) + "\n"
-        fd, tmp = tempfile.mkstemp(dir=self.directory, prefix=".tmp-", suffix=".json")
-        try:
-            with os.fdopen(fd, "w", encoding="utf-8") as f:
-                f.write(data)
-            os.replace(tmp, self.path(key))
-        except BaseException:
-            Path(tmp).unlink(missing_ok=True)
-            raise
+        atomic_write(self.path(key), data)
         return self.path(key)

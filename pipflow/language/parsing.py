@@ -79,11 +79,11 @@ def _depth_at_end(text: str, start: int) -> int:
 
 
 def _json_candidates(text: str) -> list[str]:
-    """Fenced ``json`` blocks first (the format the prompts ask for), then any fenced block that
-    looks like JSON, then a bare ``{"constraints": ...}`` object in prose."""
+    """Fenced ``json`` blocks first (the format the prompts ask for), then any untagged fenced
+    block that looks like JSON, then a bare ``{"constraints": ...}`` object in prose."""
     fences = [(lang.lower(), body.strip()) for lang, body in _FENCE.findall(text)]
     found = [b for lang, b in fences if lang == "json"]
-    found += [b for lang, b in fences if lang != "json" and b[:1] in "[{"]
+    found += [b for lang, b in fences if lang == "" and b[:1] in "[{"]
     m = re.search(r"\{\s*\"constraints\"\s*:", text)
     if m:
         found.append(text[m.start():])

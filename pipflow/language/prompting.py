@@ -38,20 +38,22 @@ def find_template(name: str, base_dir: Path | None = None) -> Path:
     for c in candidates:
         if c.is_file():
             return c.resolve()
-    known = sorted({t.stem for d in (PROMPTS_DIR, _REPO_PROMPTS) if d.is_dir() for t in d.glob("*.j2")})
+    known = sorted({t.stem for d in (PROMPTS_DIR, _REPO_PROMPTS) if d.is_dir() for t in d.glob("*.j2") if not t.name.startswith("_")})
     raise InputError(f"prompt template {name!r} not found; built-in templates: {', '.join(known) or 'none'}")
 
 
 def render(template: str, variables: dict[str, Any], base_dir: Path | None = None) -> list[dict[str, str]]:
     """Render a template into chat messages ``[{"role", "content"}]``."""
-    from jinja2 import StrictUndefined, TemplateError
+    from jinja2 import FileSystemLoader, StrictUndefined, TemplateError
     from jinja2.sandbox import SandboxedEnvironment
 
     path = find_template(template, base_dir)
-    env = SandboxedEnvironment(undefined=StrictUndefined, trim_blocks=True, lstrip_blocks=True,
-                               keep_trailing_newline=False, autoescape=False)
+    # the template's own folder first, so a user's variant may import its own partials
+    folders = [str(path.parent)] + [str(d) for d in (PROMPTS_DIR, _REPO_PROMPTS) if d.is_dir()]
+    env = SandboxedEnvironment(loader=FileSystemLoader(folders), undefined=StrictUndefined,
+                               trim_blocks=True, lstrip_blocks=True, autoescape=False)
     try:
-        tmpl = env.from_string(path.read_text(encoding="utf-8"))
+        tmpl = env.get_template(path.name)
         roles = [r for r in ROLES if r in tmpl.blocks]
         if not roles:
             return [{"role": "user", "content": tmpl.render(**variables).strip()}]

@@ -1,0 +1,264 @@
+"""Turn a command into tokens, recognising the world's shelves, products and robots in it.
+
+Every name comes from the world file, so a world with racks called ``rack_a`` or ``cold-store``
+works as well as the benchmark's ``shelf1``. People write names apart ("product 1", "shelf three")
+and misspell them ("prodcut3", "shelve4"); those are matched by edit distance, but only when one
+name is clearly closest: a near-tie, or a kind word with a number the world lacks ("product 9"),
+is a :class:`TranslationError` that quotes the words and lists the candidates, never a guess.
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from pipflow.errors import TranslationError
+from pipflow.language.numbers import NUMBER_WORDS, read_number, word_value
+
+KINDS: tuple[str, ...] = ("shelf", "product", "robot")
+WORLD_KEYS: dict[str, str] = {"shelf": "shelves", "product": "products", "robot": "robots"}
+# English words for a kind, on top of the stems the world's own names share ("bin" of bin7).
+KIND_WORDS: dict[str, set[str]] = {
+    "shelf": {"shelf", "shelves", "shelve", "rack", "racks", "bin", "bins"},
+    "product": {"product", "products", "item", "items", "good", "goods"},
+    "robot": {"robot", "robots", "bot", "bots", "agent", "agents"},
+}
+# Grammar and filler words: matched to a name only when spelled exactly like it, so that "in 3"
+# never becomes bin3 and "able" never becomes a misspelt "table".
+STOPWORDS: set[str] = {
+    "a", "an", "the", "in", "on", "at", "to", "of", "off", "out", "into", "onto", "inside", "for",
+    "from", "by", "with", "and", "or", "but", "not", "no", "nor", "be", "is", "are", "was", "were",
+    "been", "being", "am", "it", "its", "there", "their", "theyre", "they", "them", "this", "that",
+    "these", "those", "i", "we", "you", "he", "she", "me", "us", "my", "our", "your", "should",
+    "shall", "must", "may", "might", "can", "could", "would", "will", "ought", "oughta", "gotta",
+    "have", "has", "had", "having", "do", "does", "did", "dont", "doesnt", "cant", "cannot",
+    "wont", "shouldnt", "mustnt", "use", "used", "using", "move", "moves", "moved", "moving",
+    "put", "place", "add", "take", "bring", "carry", "carries", "stock", "stocks", "store",
+    "stores", "hold", "holds", "keep", "keeps", "contain", "contains", "make", "want", "need",
+    "all", "every", "each", "any", "some", "none", "only", "just", "more", "fewer", "less",
+    "extra", "many", "much", "as", "than", "then", "so", "too", "also", "please", "think",
+    "supposed", "like", "about", "please", "one", "another", "other", "others", "same", "between",
+    "among", "across", "evenly", "equally", "double", "twice", "triple", "thrice", "half",
+    "empty", "full", "fill", "clear", "nothing", "everything", "anything", "units", "unit",
+    "pieces", "piece", "boxes", "box", "what", "which", "who", "where", "here", "now", "up",
+    "down", "over", "under", "after", "before", "while", "when", "if", "else", "except",
+    "besides", "without", "never", "always", "broken", "able", "let", "get", "got", "go", "goes",
+    "new", "old", "number", "amount", "count", "total", "remove", "split", "divide", "share",
+    "spread", "distribute", "send", "deliver", "transfer", "shift", "ship", "set", "end",
+} | NUMBER_WORDS
+
+_TOKEN = re.compile(r"\d+\.\d+|[A-Za-z0-9]+(?:['’][A-Za-z]+)?(?:[-_][A-Za-z0-9]+)*|[,.;:!?()]")
+
+
+@dataclass(frozen=True)
+class Tok:
+    """One unit of a command after recognition.
+
+    ``kind`` is "word" (``value`` the lower-case word), "num" (``value`` an int), "name"
+    (``value`` a world name, ``of`` its kind), "kind" (a kind word alone such as "shelf",
+    ``of`` the kind) or "punct". ``text`` keeps the words as written, for error messages.
+    """
+
+    kind: str
+    text: str
+    value: object = None
+    of: str = ""
+
+    def is_word(self, *words: str) -> bool:
+        return self.kind == "word" and self.value in words
+
+
+@dataclass(frozen=True)
+class _Name:
+    name: str
+    kind: str
+    alpha: str
+    digits: str
+
+
+def normalize(text: str) -> str:
+    """Lower-case letters and digits only: "Cold-Store" and "cold store" compare equal."""
+    return re.sub(r"[^a-z0-9]", "", text.lower())
+
+
+def split_digits(norm: str) -> tuple[str, str]:
+    """("shelf4" -> "shelf", "4"); names without a trailing number keep it all as letters."""
+    m = re.fullmatch(r"(.*?[a-z])(\d+)", norm)
+    return (m.group(1), m.group(2)) if m else (norm, "")
+
+
+def distance(a: str, b: str) -> int:
+    """Edit distance counting a swap of neighbours as one edit ("prodcut" is 1 from "product")."""
+    prev2: list[int] = []
+    prev = list(range(len(b) + 1))
+    for i, ca in enumerate(a, 1):
+        cur = [i] + [0] * len(b)
+        for j, cb in enumerate(b, 1):
+            cur[j] = min(prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (ca != cb))
+            if i > 1 and j > 1 and ca == b[j - 2] and a[i - 2] == cb:
+                cur[j] = min(cur[j], prev2[j - 2] + 1)
+        prev2, prev = prev, cur
+    return prev[len(b)]
+
+
+def tolerance(length: int) -> int:
+    """Edits allowed against a stem of this length: none for very short words, 2 from 5 letters."""
+    return 0 if length <= 2 else 1 if length <= 4 else 2
+
+
+def _variants(alpha: str) -> list[str]:
+    """The word and its singular forms ("apples" -> "apple"), to forgive plurals."""
+    out = [alpha]
+    if len(alpha) > 3 and alpha.endswith("s"):
+        out.append(alpha[:-1])
+        if alpha.endswith("es"):
+            out.append(alpha[:-2])
+    return out
+
+
+def _quote(text: str) -> str:
+    return f"'{text}'"
+
+
+class NameIndex:
+    """The world's names by kind, and the rules for deciding which one a word means."""
+
+    def __init__(self, world: dict):
+        self.names: list[_Name] = []
+        self.by_kind: dict[str, list[str]] = {}
+        for kind in KINDS:
+            found = list((world.get(WORLD_KEYS[kind]) or {}).keys())
+            self.by_kind[kind] = [str(n) for n in found]
+            for n in found:
+                alpha, digits = split_digits(normalize(str(n)))
+                self.names.append(_Name(str(n), kind, alpha, digits))
+        self.stems: dict[str, set[str]] = {
+            kind: set(KIND_WORDS[kind]) | {n.alpha for n in self.names if n.kind == kind and n.digits}
+            for kind in KINDS
+        }
+
+    def candidates(self, kind: str) -> str:
+        """The names of a kind, for an error message."""
+        return ", ".join(self.by_kind[kind]) or f"(the world has no {kind})"
+
+    def with_digits(self, kind: str, digits: str) -> list[str]:
+        """Names of a kind whose trailing number is ``digits`` ("robot 3" -> robot3 or r3)."""
+        return [n.name for n in self.names
+                if n.kind == kind and n.digits and int(n.digits) == int(digits)]
+
+    def kind_of_word(self, alpha: str) -> str | None:
+        """The kind a bare word names ("shelves", "prodcut" -> product), if any."""
+        hits = set()
+        for kind in KINDS:
+            for stem in self.stems[kind]:
+                for v in _variants(alpha):
+                    if v == stem or (alpha not in STOPWORDS
+                                     and distance(v, stem) <= tolerance(len(stem))):
+                        hits.add(kind)
+        if len(hits) > 1:
+            raise TranslationError(f"{_quote(alpha)} could name a {' or a '.join(sorted(hits))}")
+        return hits.pop() if hits else None
+
+    def lookup(self, alpha: str, digits: str, text: str, fuzzy: bool = True) -> Tok | None:
+        """Resolve letters + number to a name or a kind word; raise when it cannot be told."""
+        for v in _variants(alpha):
+            exact = [n for n in self.names if n.alpha == v and n.digits == digits]
+            if exact:
+                return Tok("name", text, exact[0].name, exact[0].kind)
+        if fuzzy and alpha not in STOPWORDS and alpha:
+            scored = []
+            for n in self.names:
+                if n.digits != digits:
+                    continue
+                d = min(distance(v, n.alpha) for v in _variants(alpha))
+                if d <= tolerance(len(n.alpha)):
+                    scored.append((d, n))
+            if scored:
+                best = min(d for d, _ in scored)
+                top = [n for d, n in scored if d == best]
+                if len(top) > 1:
+                    raise TranslationError(
+                        f"cannot tell which name {_quote(text)} means: it is equally close to "
+                        f"{', '.join(n.name for n in top)} (candidates: {', '.join(n.name for n in top)})")
+                return Tok("name", text, top[0].name, top[0].kind)
+        kind = self.kind_of_word(alpha) if alpha else None
+        if kind is None:
+            return None
+        if not digits:
+            return Tok("kind", text, kind, kind)
+        same = self.with_digits(kind, digits)
+        if len(same) == 1:
+            return Tok("name", text, same[0], kind)
+        raise TranslationError(
+            f"{_quote(text)} names no {kind} in this world (candidates: {self.candidates(kind)})")
+
+    def at(self, raw: list[str], i: int) -> tuple[Tok, int] | None:
+        """The name or kind word starting at ``raw[i]``, longest reading first."""
+        low = raw[i].lower()
+        if i + 1 < len(raw) and _TOKEN.fullmatch(raw[i + 1]) and raw[i + 1][0].isalnum():
+            nxt = raw[i + 1].lower()
+            text = f"{raw[i]} {raw[i + 1]}"
+            alpha, digits = split_digits(normalize(low))
+            n = word_value(nxt)
+            if not digits and alpha and n is not None and (
+                    alpha not in STOPWORDS or self.kind_of_word(alpha)):
+                found = self.lookup(alpha, str(n), text)
+                if found is not None:
+                    return found, i + 2
+            if low not in STOPWORDS and nxt not in STOPWORDS:  # a name written apart: "cold store"
+                both = normalize(low + nxt)
+                hit = [x for x in self.names if x.alpha + x.digits == both]
+                if hit:
+                    return Tok("name", text, hit[0].name, hit[0].kind), i + 2
+        norm = normalize(low)
+        if not norm or norm.isdigit() or low in NUMBER_WORDS:
+            return None
+        alpha, digits = split_digits(norm)
+        found = self.lookup(alpha, digits, raw[i])
+        return (found, i + 1) if found is not None else None
+
+
+def tokenize(command: str, index: NameIndex) -> list[Tok]:
+    """Split a command into words, names, counts and punctuation.
+
+    Names are recognised before counts, so "product 1" is one product and not a count of 1.
+    Apostrophes are dropped ("don't" -> "dont"); a range written "8-11" reads as "8 to 11".
+    """
+    raw: list[str] = []
+    for m in _TOKEN.finditer(command):
+        t = m.group(0).replace("'", "").replace("’", "")
+        if re.fullmatch(r"\d+-\d+", t):
+            a, b = t.split("-")
+            raw += [a, "to", b]
+        else:
+            raw.append(t)
+    toks: list[Tok | None] = []
+    i = 0
+    while i < len(raw):
+        t = raw[i]
+        if not t[0].isalnum():
+            toks.append(Tok("punct", t, t))
+            i += 1
+            continue
+        if re.fullmatch(r"\d+\.\d+", t):
+            raise TranslationError(f"'{t}' is not a whole number of units")
+        found = index.at(raw, i)
+        if found is not None:
+            toks.append(found[0])
+            i = found[1]
+            continue
+        toks.append(Tok("word", t, t.lower()))
+        i += 1
+    # counts: read over plain words only
+    out: list[Tok] = []
+    words = [t.value if t.kind == "word" else None for t in toks]
+    i = 0
+    while i < len(toks):
+        got = read_number(words, i) if words[i] is not None else None
+        if got is not None:
+            value, end = got
+            out.append(Tok("num", " ".join(t.text for t in toks[i:end]), value))
+            i = end
+        else:
+            out.append(toks[i])
+            i += 1
+    return out
