@@ -1,0 +1,268 @@
+"""Scoring one run of a benchmark task, and aggregating runs into the table of issue 7.
+
+A run succeeds when, judged on what the *simulation* reports (never on what the plan claims):
+
+* every goal count listed by the task holds exactly in the final stock;
+* every move obeys the task's constraints (``only``/``never``, matched on the move's
+  ``product``/``from``/``to`` fields, all given fields must agree);
+* units are conserved (per product, the final shelves hold what the initial shelves held, and no
+  unit lies off the shelves);
+* no shelf ever held more than its capacity (the simulator's ``peak_load``);
+* every move's coalition had the skill levels it needs (summed per skill).
+
+A task marked ``feasible: false`` succeeds only when it was refused with a reason and nothing was
+executed.
+
+Metrics (paper, Sec. V): GCR = fraction of goal counts met; Exe = executed / planned actions;
+TC-max / TC-avg from the simulated travel; RU = ``lower_bound / plan_length`` (capped at 1).
+
+RU's lower bound: per product, the fewest units that any plan must move, from a min-cost flow
+(networkx) in which listed (shelf, product) counts are exact demands, shelves the goal does not
+list may give up to their stock or absorb any amount, and every unit moved between two shelves
+costs 1; capacities are relaxed, which keeps it a lower bound. A move carries at most
+``max_units_per_move`` units (the domain's largest magnitude, 6 in the warehouse domain), so
+``sum_p ceil(units_p / max_units_per_move)`` moves are needed at least.
+"""
+from __future__ import annotations
+
+import math
+from collections import Counter
+from typing import Any, Iterable
+
+MAX_UNITS_PER_MOVE = 6
+
+
+# ------------------------------------------------------------------------------------------
+# checks
+# ------------------------------------------------------------------------------------------
+
+
+def goal_counts(stock: dict, goal: dict) -> tuple[int, int]:
+    """(met, listed) goal counts."""
+    conds = [(s, p, int(n)) for s, items in (goal or {}).items() for p, n in items.items()]
+    met = sum(1 for s, p, n in conds if int((stock or {}).get(s, {}).get(p, 0)) == n)
+    return met, len(conds)
+
+
+def move_fields(graph: dict | None, schedule: dict | None) -> list[dict]:
+    """Every scheduled move as ``{"id", "robots", "fields", "skills"}`` (fields and skills from
+    the graph node; move-product's argument order when the graph lacks them)."""
+    nodes = {n["id"]: n for n in (graph or {}).get("nodes", [])}
+    moves = []
+    for s in (schedule or {}).get("subtasks", []):
+        node = nodes.get(s["id"], {})
+        fields = dict(node.get("fields") or {})
+        args = list(s.get("args") or node.get("args") or [])
+        if not fields and s.get("action") == "move-product" and len(args) >= 3:
+            fields = {"from": args[0], "to": args[1], "product": args[2]}
+        moves.append({"id": s["id"], "robots": list(s.get("robots") or []), "fields": fields,
+                      "skills": dict(node.get("skills") or {})})
+    return moves
+
+
+def constraint_violations(moves: Iterable[dict], constraints: list[dict] | None) -> list[str]:
+    """``never``: no listed robot in a matching move; ``only``: every robot of a matching move is
+    listed. A move matches when it agrees with every one of product/from/to the rule gives."""
+    out = []
+    for c in constraints or []:
+        keys = [k for k in ("product", "from", "to") if k in c]
+        for m in moves:
+            if any(m["fields"].get(k) != c[k] for k in keys):
+                continue
+            robots = set(m["robots"])
+            if "never" in c and robots & set(c["never"]):
+                out.append(f"{m['id']}: {sorted(robots & set(c['never']))} used although `never` "
+                           f"{_rule_text(c)}")
+            if "only" in c and robots - set(c["only"]):
+                out.append(f"{m['id']}: {sorted(robots - set(c['only']))} used although `only` "
+                           f"{_rule_text(c)}")
+    return out
+
+
+def _rule_text(c: dict) -> str:
+    who = c.get("only", c.get("never"))
+    scope = ", ".join(f"{k}={c[k]}" for k in ("product", "from", "to") if k in c) or "every move"
+    return f"{who} for {scope}"
+
+
+def skill_violations(moves: Iterable[dict], world: dict) -> list[str]:
+    robots = world.get("robots", {})
+    out = []
+    for m in moves:
+        for skill, need in m["skills"].items():
+            have = sum(float(robots.get(r, {}).get("skills", {}).get(skill, 0)) for r in m["robots"])
+            if have + 1e-9 < float(need):
+                out.append(f"{m['id']}: coalition {m['robots']} has {skill} {have:g} < {float(need):g}")
+    return out
+
+
+def conservation_violations(world: dict, final_stock: dict, stray_units: int = 0) -> list[str]:
+    before, after = Counter(), Counter()
+    for items in world.get("stock", {}).values():
+        before.update({p: int(n) for p, n in items.items()})
+    for items in (final_stock or {}).values():
+        after.update({p: int(n) for p, n in items.items()})
+    out = [f"{p}: {before[p]} units before, {after[p]} on the shelves after"
+           for p in sorted(set(before) | set(after)) if before[p] != after[p]]
+    if stray_units:
+        out.append(f"{stray_units} units lie on no shelf at the end")
+    return out
+
+
+def capacity_violations(world: dict, peak_load: dict | None, final_stock: dict | None = None) -> list[str]:
+    """Peak per shelf as the simulator measured it; the final stock as a fallback."""
+    out = []
+    peaks = dict(peak_load or {})
+    for s, items in (final_stock or {}).items():
+        peaks[s] = max(peaks.get(s, 0), sum(int(n) for n in items.values()))
+    for s, peak in peaks.items():
+        cap = world.get("shelves", {}).get(s, {}).get("capacity")
+        if cap is not None and int(peak) > int(cap):
+            out.append(f"{s} held {peak} units, capacity {cap}")
+    return out
+
+
+# ------------------------------------------------------------------------------------------
+# RU lower bound
+# ------------------------------------------------------------------------------------------
+
+
+def min_units_moved(world: dict, goal: dict) -> dict[str, int] | None:
+    """Per product, the fewest units any plan must move between shelves (min-cost flow); None
+    when the goal cannot be balanced (more units asked for than exist)."""
+    import networkx as nx
+
+    shelves = list(world.get("shelves", {}))
+    products = sorted({p for items in (goal or {}).values() for p in items})
+    result = {}
+    for prod in products:
+        g = nx.DiGraph()
+        listed = {s: int(items[prod]) for s, items in goal.items() if prod in items}
+        have = {s: int(world.get("stock", {}).get(s, {}).get(prod, 0)) for s in shelves}
+        need_total = 0
+        for s in shelves:
+            if s in listed:
+                d = listed[s] - have[s]
+                g.add_node(s, demand=d)
+                need_total += d
+            else:
+                g.add_node(s, demand=0)
+                g.add_edge("free", s, capacity=have[s], weight=0)  # may give its own units
+                g.add_edge(s, "free", weight=0)                     # may absorb any amount
+        g.add_node("free", demand=-need_total)
+        for a in shelves:
+            for b in shelves:
+                if a != b:
+                    g.add_edge(a, b, weight=1)
+        try:
+            cost, _ = nx.network_simplex(g)
+        except (nx.NetworkXUnfeasible, nx.NetworkXError):
+            return None
+        result[prod] = int(cost)
+    return result
+
+
+def plan_lower_bound(world: dict, goal: dict, max_units_per_move: int = MAX_UNITS_PER_MOVE) -> int | None:
+    units = min_units_moved(world, goal)
+    if units is None:
+        return None
+    return sum(math.ceil(u / max_units_per_move) for u in units.values())
+
+
+# ------------------------------------------------------------------------------------------
+# one run
+# ------------------------------------------------------------------------------------------
+
+
+def score_run(world: dict, goal: dict, *, constraints: list | None = None, feasible: bool = True,
+              graph: dict | None = None, schedule: dict | None = None,
+              simulation: dict | None = None, refusal: str | None = None, error: str | None = None,
+              max_units_per_move: int = MAX_UNITS_PER_MOVE) -> dict:
+    """Score one run. ``refusal`` is the message of a :class:`pipflow.Refusal`, ``error`` that
+    of any other failure; both mean the pipeline stopped before simulating (normally).
+
+    Returns ``{success, goal_met, gcr, exe, ru, tc_max, tc_avg, makespan, planned, executed,
+    lower_bound, violations, refused, error}``."""
+    sim = simulation or {}
+    planned = len((schedule or {}).get("subtasks", []))
+    executed = int(sim.get("executed", 0))
+    base = {"planned": planned, "executed": executed, "refused": bool(refusal),
+            "error": refusal or error or None, "makespan": float(sim.get("makespan", (schedule or {}).get("makespan", 0.0)) or 0.0)}
+
+    if not feasible:
+        ok = bool(refusal and str(refusal).strip()) and executed == 0 and planned == 0
+        violations = [] if ok else (
+            ["infeasible command was not refused"] if not refusal else
+            ["refusal has no reason"] if not str(refusal).strip() else ["actions were executed"])
+        return {**base, "success": ok, "goal_met": ok, "gcr": 1.0 if ok else 0.0,
+                "exe": 1.0 if ok else (sim.get("exe", 0.0) or 0.0), "ru": 1.0 if ok else 0.0,
+                "tc_max": float(sim.get("tc_max", 0.0)), "tc_avg": float(sim.get("tc_avg", 0.0)),
+                "lower_bound": None, "violations": violations}
+
+    if simulation is None:  # refused or failed before execution: judge the untouched world
+        met, listed = goal_counts(world.get("stock", {}), goal)
+        why = "refused a feasible command" if refusal else f"run failed: {error}" if error else "no simulation"
+        return {**base, "success": False, "goal_met": False, "gcr": met / listed if listed else 1.0,
+                "exe": 0.0, "ru": 0.0, "tc_max": 0.0, "tc_avg": 0.0, "lower_bound": None,
+                "violations": [why]}
+
+    final = sim.get("final_stock", {})
+    met, listed = goal_counts(final, goal)
+    moves = move_fields(graph, schedule)
+    violations = []
+    if met != listed:
+        violations.append(f"goal: {listed - met} of {listed} counts do not hold")
+    violations += constraint_violations(moves, constraints)
+    violations += conservation_violations(world, final, int(sim.get("stray_units", 0)))
+    violations += capacity_violations(world, sim.get("peak_load"), final)
+    violations += skill_violations(moves, world)
+    lb = plan_lower_bound(world, goal, max_units_per_move)
+    if planned == 0:
+        ru = 1.0 if lb == 0 else 0.0
+    else:
+        ru = min(1.0, (lb or 0) / planned)
+    return {**base, "success": not violations, "goal_met": met == listed,
+            "gcr": met / listed if listed else 1.0,
+            "exe": float(sim.get("exe", executed / planned if planned else 1.0)), "ru": ru,
+            "tc_max": float(sim.get("tc_max", 0.0)), "tc_avg": float(sim.get("tc_avg", 0.0)),
+            "lower_bound": lb, "violations": violations}
+
+
+# ------------------------------------------------------------------------------------------
+# aggregation (results.json of `pipflow bench`)
+# ------------------------------------------------------------------------------------------
+
+
+def _mean(xs: list[float]) -> float | None:
+    return sum(xs) / len(xs) if xs else None
+
+
+def aggregate_task(task_id: str, scores: list[dict]) -> dict:
+    """One row of ``results.json["tasks"]``: rates over all runs; TC over successful runs only
+    (README: "averaged over successful runs"), None when no run succeeded."""
+    ok = [s for s in scores if s.get("success")]
+    errors = [s["error"] for s in scores if s.get("error")]
+    return {
+        "id": task_id, "runs": len(scores),
+        "sr": _mean([1.0 if s.get("success") else 0.0 for s in scores]) or 0.0,
+        "gcr": _mean([float(s.get("gcr", 0.0)) for s in scores]) or 0.0,
+        "exe": _mean([float(s.get("exe", 0.0)) for s in scores]) or 0.0,
+        "ru": _mean([float(s.get("ru", 0.0)) for s in scores]) or 0.0,
+        "tc_max": _mean([float(s["tc_max"]) for s in ok]),
+        "tc_avg": _mean([float(s["tc_avg"]) for s in ok]),
+        "makespan": _mean([float(s.get("makespan", 0.0)) for s in ok]),
+        "error": errors[0] if errors else None,
+    }
+
+
+def summarize(rows: list[dict]) -> dict:
+    """``results.json["summary"]`` from task rows: run-weighted rates, TC over tasks that
+    had a successful run."""
+    runs = sum(r["runs"] for r in rows)
+
+    def wmean(key: str) -> float:
+        return sum(r[key] * r["runs"] for r in rows) / runs if runs else 0.0
+
+    return {"runs": runs, "sr": wmean("sr"), "gcr": wmean("gcr"), "exe": wmean("exe"), "ru": wmean("ru"),
+            "tc_max": _mean([r["tc_max"] for r in rows if r.get("tc_max") is not None]),
+            "tc_avg": _mean([r["tc_avg"] for r in rows if r.get("tc_avg") is not None])}
