@@ -1,0 +1,590 @@
+"""Skill-based multi-robot task allocation (paper Sec. IV-C, eq. 3) and its baselines.
+
+For one subtask with requirement vector Y, skill matrix Q (robots x skills) and costs c (the
+metres robot i drives from where it is to the route's start and along the route), the paper
+solves the lexicographic IP
+
+    min ( max_i c_i x_i ,  sum_i c_i x_i )   s.t.  Q^T x >= Y,  x binary,  custom constraints.
+
+Fast first stage. Skills are non-negative, so with only per-robot exclusions (the `only` and
+`never` rules) the robots with c_i <= t can cover Y iff *all* of them together cover Y. The
+optimal max cost is therefore the smallest sorted cost at which the cumulative skill sum covers
+Y: one sort and one cumsum, no solver. With extra linear constraints feasibility is still
+monotone in t (a larger t only adds robots), so a binary search over the sorted costs with a
+SCIP feasibility check finds the same threshold. The second stage is then SCIP on the robots
+with c_i <= t only, which is usually a handful. ``method="naive"`` solves both stages as full
+SCIP models, for comparison and tests.
+
+Rules. ``constraints`` items ``{only|never: [robots], <field>: value, ...}`` narrow by the
+subtask's ``fields`` (and ``action``); ``linear`` items add ``sum coef_i x_i (<=|>=|==) rhs``:
+
+    {robots: [robot4, robot5] | all, coef: 1 | {robot: c}, skill: carry?, sense: "<=", rhs: 1,
+     name: "...", <field>: value ...}
+
+``skill`` multiplies each coefficient by the robot's level of that skill. Nothing is evaluated.
+"""
+from __future__ import annotations
+
+import itertools
+import math
+import time
+from dataclasses import dataclass, field
+from typing import Any, Callable, Iterable
+
+import numpy as np
+
+from pipflow.errors import AllocationError, InputError
+
+EPS = 1e-7
+SENSES = ("<=", ">=", "==")
+_RULE_KEYS = {"only", "never"}
+_LINEAR_KEYS = {"robots", "coef", "skill", "sense", "rhs", "name"}
+
+
+# ====================================================================== the core IP
+@dataclass
+class Linear:
+    """One extra linear constraint over the robots of one subtask: a . x (sense) rhs."""
+
+    coef: np.ndarray
+    sense: str
+    rhs: float
+    label: str
+
+    def holds(self, x: np.ndarray) -> bool:
+        lhs = float(self.coef @ x)
+        if self.sense == "<=":
+            return lhs <= self.rhs + 1e-9
+        if self.sense == ">=":
+            return lhs >= self.rhs - 1e-9
+        return abs(lhs - self.rhs) <= 1e-9
+
+
+@dataclass
+class Solution:
+    robots: list[int]
+    max_cost: float
+    sum_cost: float
+    stats: dict = field(default_factory=dict)
+
+
+def covers(Q: np.ndarray, Y: np.ndarray, x: np.ndarray) -> bool:
+    return bool(np.all(Q.T @ x >= Y - 1e-9))
+
+
+def _scip(quiet: bool = True, time_limit: float | None = None):
+    from pyscipopt import Model
+
+    m = Model()
+    if quiet:
+        m.hideOutput()
+    m.setParam("display/verblevel", 0)
+    if time_limit is not None:
+        m.setParam("limits/time", max(0.01, float(time_limit)))
+    return m
+
+
+def _add_rows(m, x: dict[int, Any], Q: np.ndarray, Y: np.ndarray, lin: list[Linear]) -> None:
+    from pyscipopt import quicksum
+
+    for u in range(Q.shape[1]):
+        if Y[u] > 0:
+            m.addCons(quicksum(float(Q[i, u]) * x[i] for i in x if Q[i, u] > 0) >= float(Y[u]))
+    for L in lin:
+        expr = quicksum(float(L.coef[i]) * x[i] for i in x if L.coef[i] != 0)
+        if L.sense == "<=":
+            m.addCons(expr <= L.rhs)
+        elif L.sense == ">=":
+            m.addCons(expr >= L.rhs)
+        else:
+            m.addCons(expr == L.rhs)
+
+
+def _solved(m) -> bool:
+    return m.getStatus() in ("optimal", "timelimit", "gaplimit", "sollimit") and m.getNSols() > 0
+
+
+def _ip_feasible(Q, Y, idx: np.ndarray, lin: list[Linear]) -> bool:
+    """Is there a coalition among ``idx`` that covers Y and meets ``lin``? (SCIP)"""
+    if not np.all(Q[idx].sum(axis=0) >= Y - 1e-9):
+        return False
+    if not lin:
+        return True
+    m = _scip()
+    x = {int(i): m.addVar(vtype="B") for i in idx}
+    _add_rows(m, x, Q, Y, lin)
+    m.setParam("limits/solutions", 1)
+    m.optimize()
+    return m.getNSols() > 0
+
+
+def first_stage_fast(Q: np.ndarray, Y: np.ndarray, c: np.ndarray, allowed: np.ndarray,
+                     lin: list[Linear] = ()) -> float | None:
+    """Smallest t such that the allowed robots with c_i <= t admit a feasible coalition."""
+    cand = np.flatnonzero(allowed)
+    if cand.size == 0:
+        return 0.0 if np.all(Y <= 1e-9) and all(L.holds(np.zeros(len(c))) for L in lin) else None
+    order = cand[np.argsort(c[cand], kind="stable")]
+    cum = np.cumsum(Q[order], axis=0)
+    ok = np.all(cum >= Y - 1e-9, axis=1)
+    if not ok.any():
+        return None
+    k = int(np.argmax(ok))  # first prefix that covers Y
+    if np.all(Y <= 1e-9) and not lin:
+        return 0.0
+    # ties: every robot with the same cost joins the prefix
+    if not lin:
+        return float(c[order[k]])
+    sc = c[order]
+    thresholds = np.unique(sc[k:])
+
+    def feasible(t: float) -> bool:
+        return _ip_feasible(Q, Y, order[sc <= t + 1e-12], list(lin))
+
+    if not feasible(float(thresholds[-1])):
+        return None
+    lo, hi = 0, len(thresholds) - 1  # answer index in [lo, hi]
+    while lo < hi:
+        mid = (lo + hi) // 2
+        if feasible(float(thresholds[mid])):
+            hi = mid
+        else:
+            lo = mid + 1
+    return float(thresholds[lo])
+
+
+def second_stage(Q, Y, c, eligible: np.ndarray, lin: list[Linear], time_limit: float | None = None) -> list[int]:
+    """min sum c_i x_i over the eligible robots (SCIP)."""
+    from pyscipopt import quicksum
+
+    idx = np.flatnonzero(eligible)
+    m = _scip(time_limit=time_limit)
+    x = {int(i): m.addVar(vtype="B", obj=float(c[i])) for i in idx}
+    _add_rows(m, x, Q, Y, lin)
+    m.setObjective(quicksum(float(c[i]) * x[i] for i in x), "minimize")
+    m.optimize()
+    if not _solved(m):
+        return []
+    sol = m.getBestSol()
+    return sorted(i for i in x if m.getSolVal(sol, x[i]) > 0.5)
+
+
+def solve_naive(Q, Y, c, allowed, lin: list[Linear] = (), time_limit: float | None = None) -> Solution:
+    """Both stages as full SCIP models over every allowed robot (the textbook formulation)."""
+    from pyscipopt import quicksum
+
+    t0 = time.perf_counter()
+    idx = np.flatnonzero(allowed)
+    m = _scip(time_limit=time_limit)
+    x = {int(i): m.addVar(vtype="B") for i in idx}
+    z = m.addVar(lb=0.0, vtype="C")
+    _add_rows(m, x, Q, Y, list(lin))
+    for i in x:
+        m.addCons(z >= float(c[i]) * x[i])
+    m.setObjective(z, "minimize")
+    m.optimize()
+    if not _solved(m):
+        return Solution([], math.inf, math.inf, {"status": m.getStatus()})
+    zstar = m.getObjVal()
+    t1 = time.perf_counter()
+    m.freeTransform()
+    m.addCons(z <= zstar + 1e-6 * max(1.0, zstar))
+    m.setObjective(quicksum(float(c[i]) * x[i] for i in x), "minimize")
+    m.optimize()
+    sol = m.getBestSol()
+    robots = sorted(i for i in x if m.getSolVal(sol, x[i]) > 0.5)
+    return Solution(robots, max((c[i] for i in robots), default=0.0), float(sum(c[i] for i in robots)),
+                    {"stage1_s": t1 - t0, "stage2_s": time.perf_counter() - t1})
+
+
+def solve_lexicographic(Q: np.ndarray, Y: np.ndarray, c: np.ndarray, allowed: np.ndarray,
+                        lin: list[Linear] = (), method: str = "fast") -> Solution:
+    """The paper's eq. 3 for one subtask; robots as row indices of Q. Empty robots = infeasible."""
+    if method == "naive":
+        return solve_naive(Q, Y, c, allowed, lin)
+    t0 = time.perf_counter()
+    t = first_stage_fast(Q, Y, c, allowed, list(lin))
+    t1 = time.perf_counter()
+    if t is None:
+        return Solution([], math.inf, math.inf, {"stage1_s": t1 - t0})
+    eligible = allowed & (c <= t + 1e-9)
+    robots = second_stage(Q, Y, c, eligible, list(lin))
+    return Solution(robots, max((float(c[i]) for i in robots), default=0.0), float(sum(c[i] for i in robots)),
+                    {"stage1_s": t1 - t0, "stage2_s": time.perf_counter() - t1,
+                     "threshold": t, "eligible": int(eligible.sum())})
+
+
+def brute_force(Q, Y, c, allowed, lin: list[Linear] = ()) -> tuple[float, float] | None:
+    """Lexicographic optimum by enumeration (tests; tiny teams only)."""
+    idx = list(np.flatnonzero(allowed))
+    best = None
+    for k in range(len(idx) + 1):
+        for combo in itertools.combinations(idx, k):
+            x = np.zeros(len(c))
+            x[list(combo)] = 1
+            if covers(Q, Y, x) and all(L.holds(x) for L in lin):
+                key = (max((c[i] for i in combo), default=0.0), float(sum(c[i] for i in combo)))
+                if best is None or key[0] < best[0] - 1e-9 or (abs(key[0] - best[0]) <= 1e-9 and key[1] < best[1] - 1e-9):
+                    best = key
+    return best
+
+
+def greedy(Q, Y, c, allowed, lin: list[Linear] = ()) -> list[int]:
+    """Nearest capable robots first, until every skill is covered."""
+    order = [int(i) for i in np.flatnonzero(allowed)]
+    order.sort(key=lambda i: (c[i], i))
+    have = np.zeros(Q.shape[1])
+    chosen = []
+    for i in order:
+        if np.all(have >= Y - 1e-9):
+            break
+        if np.any((Q[i] > 0) & (have < Y - 1e-9)):
+            chosen.append(i)
+            have += Q[i]
+    return chosen if np.all(have >= Y - 1e-9) else []
+
+
+def blind(Q, Y, c, allowed, lin: list[Linear] = ()) -> list[int]:
+    """Cost-blind (the paper's w/o AS ablation): fewest robots, ties broken by robot order.
+
+    SCIP, so extra linear constraints are honoured; costs are never looked at."""
+    n = len(c)
+    weights = 1.0 + np.arange(n) / (10.0 * max(n, 1))
+    return second_stage(Q, Y, weights, allowed, list(lin))
+
+
+# ====================================================================== rules
+def _matches(rule: dict, node: dict, keys: Iterable[str]) -> bool:
+    have = dict(node.get("fields") or {})
+    have.setdefault("action", node.get("action"))
+    return all(have.get(k) == rule[k] for k in keys)
+
+
+class Rules:
+    """The workflow's `only`/`never` rules and extra linear constraints, validated once."""
+
+    def __init__(self, robots: list[str], skills: list[str], Q: np.ndarray,
+                 constraints: list | None, linear: list | None, nodes: list[dict]):
+        self.robots = robots
+        self.index = {r: i for i, r in enumerate(robots)}
+        self.skills = skills
+        self.Q = Q
+        known_fields = {"action"}
+        for n in nodes:
+            known_fields |= set((n.get("fields") or {}).keys())
+        self.rules: list[tuple[str, set[str], dict, list[str], str]] = []
+        for k, rule in enumerate(constraints or []):
+            where = f"constraint #{k + 1} {rule!r}"
+            if not isinstance(rule, dict) or len(_RULE_KEYS & set(rule)) != 1:
+                raise InputError(f"{where}: needs exactly one of `only` or `never`")
+            kind = "only" if "only" in rule else "never"
+            names = rule[kind]
+            if isinstance(names, str):
+                names = [names]
+            self._check_robots(names, where)
+            keys = [key for key in rule if key != kind]
+            self._check_fields(keys, known_fields, where)
+            self.rules.append((kind, set(names), rule, keys, f"rule #{k + 1} {_show(rule)}"))
+        self.linear: list[tuple[dict, list[str], np.ndarray, str, float, str]] = []
+        for k, item in enumerate(linear or []):
+            where = f"linear constraint #{k + 1} {item!r}"
+            if not isinstance(item, dict):
+                raise InputError(f"{where}: must be a mapping")
+            sense = item.get("sense", "<=")
+            if sense not in SENSES:
+                raise InputError(f"{where}: sense must be one of {', '.join(SENSES)}")
+            if "rhs" not in item or isinstance(item["rhs"], bool) or not isinstance(item["rhs"], (int, float)):
+                raise InputError(f"{where}: `rhs` must be a number")
+            coef = np.zeros(len(robots))
+            raw = item.get("coef", 1)
+            members = item.get("robots", "all")
+            if isinstance(raw, dict):
+                self._check_robots(list(raw), where)
+                for r, v in raw.items():
+                    if isinstance(v, bool) or not isinstance(v, (int, float)):
+                        raise InputError(f"{where}: coefficient of {r} must be a number")
+                    coef[self.index[r]] = float(v)
+            elif isinstance(raw, (int, float)) and not isinstance(raw, bool):
+                if members == "all":
+                    coef[:] = float(raw)
+                else:
+                    if not isinstance(members, list):
+                        raise InputError(f"{where}: `robots` must be a list of robot names or `all`")
+                    self._check_robots(members, where)
+                    for r in members:
+                        coef[self.index[r]] = float(raw)
+            else:
+                raise InputError(f"{where}: `coef` must be a number or a mapping robot -> number")
+            if "skill" in item:
+                if item["skill"] not in skills:
+                    raise InputError(f"{where}: unknown skill {item['skill']!r}; skills: {', '.join(skills)}")
+                coef = coef * Q[:, skills.index(item["skill"])]
+            keys = [key for key in item if key not in _LINEAR_KEYS]
+            self._check_fields(keys, known_fields, where)
+            label = item.get("name") or f"linear #{k + 1} {_show(item)}"
+            self.linear.append((item, keys, coef, sense, float(item["rhs"]), label))
+
+    def _check_robots(self, names, where: str) -> None:
+        if not isinstance(names, list) or not names:
+            raise InputError(f"{where}: robots must be a non-empty list")
+        unknown = [r for r in names if r not in self.index]
+        if unknown:
+            raise InputError(f"{where}: unknown robots {unknown}; robots: {', '.join(self.robots)}")
+
+    @staticmethod
+    def _check_fields(keys: list[str], known: set[str], where: str) -> None:
+        unknown = [k for k in keys if k not in known]
+        if unknown:
+            raise InputError(f"{where}: subtasks have no field {unknown}; fields: {', '.join(sorted(known))}")
+
+    def mask(self, node: dict) -> tuple[np.ndarray, dict[str, str]]:
+        """Allowed robots for ``node`` and, for the excluded ones, which rule excluded them."""
+        allowed = np.ones(len(self.robots), dtype=bool)
+        why: dict[str, str] = {}
+        for kind, names, rule, keys, label in self.rules:
+            if not _matches(rule, node, keys):
+                continue
+            for r, i in self.index.items():
+                out = (r in names) if kind == "never" else (r not in names)
+                if out and allowed[i]:
+                    allowed[i] = False
+                    why[r] = label
+        return allowed, why
+
+    def lin(self, node: dict) -> list[Linear]:
+        return [Linear(coef, sense, rhs, label) for item, keys, coef, sense, rhs, label in self.linear
+                if _matches(item, node, keys)]
+
+
+def _show(d: dict) -> str:
+    return "{" + ", ".join(f"{k}: {v}" for k, v in d.items()) + "}"
+
+
+# ====================================================================== team + walk
+def skill_matrix(world: dict, nodes: list[dict]) -> tuple[list[str], list[str], np.ndarray]:
+    """Robot names, skill names, and Q (robots x skills); a missing skill is level 0."""
+    robots = list((world.get("robots") or {}).keys())
+    if not robots:
+        raise InputError("the world has no robots")
+    skills: list[str] = []
+    for r in robots:
+        for s in (world["robots"][r].get("skills") or {}):
+            if s not in skills:
+                skills.append(s)
+    for n in nodes:
+        for s in n.get("skills") or {}:
+            if s not in skills:
+                skills.append(s)
+    Q = np.zeros((len(robots), len(skills)))
+    for i, r in enumerate(robots):
+        for s, v in (world["robots"][r].get("skills") or {}).items():
+            Q[i, skills.index(s)] = float(v)
+    return robots, skills, Q
+
+
+def need_vector(node: dict, skills: list[str]) -> np.ndarray:
+    Y = np.zeros(len(skills))
+    for s, v in (node.get("skills") or {}).items():
+        Y[skills.index(s)] = float(v)
+    return Y
+
+
+def explain_infeasible(node: dict, robots, skills, Q, Y, allowed, why, lin: list[Linear]) -> AllocationError:
+    """Name the subtask, the skill that falls short, and who was excluded by which rule."""
+    have = Q[allowed].sum(axis=0) if allowed.any() else np.zeros(len(skills))
+    total = Q.sum(axis=0)
+    desc = f"{node['id']} ({node.get('action', '')} {' '.join(node.get('args', []))})".strip()
+    short = [f"{skills[u]}: needs {Y[u]:g}, allowed robots have {have[u]:g} (short by {Y[u] - have[u]:g}; "
+             f"the whole team has {total[u]:g})" for u in range(len(skills)) if have[u] < Y[u] - 1e-9]
+    by_rule: dict[str, list[str]] = {}
+    for r, label in why.items():
+        by_rule.setdefault(label, []).append(r)
+    excluded = "; ".join(f"{', '.join(rs)} excluded by {label}" for label, rs in by_rule.items())
+    if short:
+        msg = f"no feasible coalition for subtask {desc}: " + "; ".join(short)
+    else:
+        msg = (f"no feasible coalition for subtask {desc}: the allowed robots have the skills, but the "
+               f"linear constraints leave no coalition: {'; '.join(L.label for L in lin)}")
+    if excluded:
+        msg += f". Excluded: {excluded}"
+    return AllocationError(msg)
+
+
+METHODS = ("scip", "naive", "greedy", "blind")
+
+
+def allocate(graph: dict, world: dict, method: str = "scip", constraints: list | None = None,
+             linear: list | None = None, mode: str = "subtask", travel=None, speed: float = 1.0,
+             handling: float = 2.0, time_limit: float = 10.0) -> dict:
+    """Walk the graph frontier (Alg. 1) and allocate every subtask; the allocation contract.
+
+    ``mode="subtask"``: one IP per subtask (the paper); ``mode="frontier"`` (scip only): all ready
+    subtasks in one IP minimising their latest finish, then the total distance."""
+    from pipflow.scheduling import Timeline, predecessors
+
+    if method not in METHODS:
+        raise InputError(f"unknown allocation method {method!r}; use one of {', '.join(METHODS)}")
+    if mode not in ("subtask", "frontier"):
+        raise InputError(f"unknown allocation mode {mode!r}; use subtask or frontier")
+    nodes = {n["id"]: n for n in graph["nodes"]}
+    preds = predecessors(graph)
+    robots, skills, Q = skill_matrix(world, graph["nodes"])
+    rules = Rules(robots, skills, Q, constraints, linear, graph["nodes"])
+    tl = Timeline(world, travel=travel, speed=speed, handling=handling)
+    for n in graph["nodes"]:
+        tl.check_route(n)
+
+    t_start = time.perf_counter()
+    assignments: list[dict] = []
+    stats: dict[str, Any] = {"solve_s": [], "waves": []}
+    done: set[str] = set()
+    order = sorted(nodes, key=lambda s: nodes[s]["index"])
+    ready = [s for s in order if not preds[s]]
+
+    def refresh() -> list[str]:
+        return [s for s in order if s not in done and all(p in done for p in preds[s])]
+
+    def one(sid: str) -> None:
+        node = nodes[sid]
+        Y = need_vector(node, skills)
+        allowed, why = rules.mask(node)
+        lin = rules.lin(node)
+        c = np.array([tl.cost(r, node) for r in robots])
+        t0 = time.perf_counter()
+        if method in ("scip", "naive"):
+            chosen = solve_lexicographic(Q, Y, c, allowed, lin, "naive" if method == "naive" else "fast").robots
+        elif method == "greedy":
+            chosen = greedy(Q, Y, c, allowed, lin)
+            if chosen and not all(L.holds(_x(chosen, len(robots))) for L in lin):
+                bad = [L.label for L in lin if not L.holds(_x(chosen, len(robots)))]
+                raise AllocationError(f"greedy allocation of {sid} violates {'; '.join(bad)}; use allocate.scip")
+        else:
+            chosen = blind(Q, Y, c, allowed, lin)
+        stats["solve_s"].append(time.perf_counter() - t0)
+        if not chosen:
+            raise explain_infeasible(node, robots, skills, Q, Y, allowed, why, lin)
+        names = [robots[i] for i in chosen]
+        assignments.append({"subtask": sid, "robots": names, "costs": {robots[i]: float(c[i]) for i in chosen}})
+        tl.commit(node, names, preds[sid])
+        done.add(sid)
+
+    if mode == "subtask" or method != "scip":
+        queue = list(ready)
+        while queue:
+            sid = queue.pop(0)  # the frontier's next task, breadth first
+            one(sid)
+            for s in refresh():
+                if s not in queue:
+                    queue.append(s)
+    else:
+        while len(done) < len(nodes):
+            wave = refresh()
+            _frontier_wave(wave, nodes, preds, robots, skills, Q, rules, tl, time_limit, assignments, stats, one, done)
+
+    solve = stats.pop("solve_s")
+    predicted = tl.result()
+    stats.update({
+        "subtasks": len(assignments), "mode": mode, "time_s": time.perf_counter() - t_start,
+        "solve_median_ms": 1000 * float(np.median(solve)) if solve else 0.0,
+        # what `schedule` will report with the same speed and handling
+        "predicted": {k: predicted[k] for k in ("makespan", "tc_max", "tc_avg")},
+    })
+    if not stats["waves"]:
+        stats.pop("waves")
+    return {"method": method if mode == "subtask" else f"{method}-frontier", "assignments": assignments, "stats": stats}
+
+
+def _x(chosen: list[int], n: int) -> np.ndarray:
+    x = np.zeros(n)
+    x[chosen] = 1
+    return x
+
+
+def _frontier_wave(wave, nodes, preds, robots, skills, Q, rules, tl, time_limit, assignments, stats, one, done):
+    """Allocate every ready subtask at once: each robot joins at most one of them; minimise the
+    latest finish, then total metres. Time-limited; the best solution found is kept and the gap
+    reported. If the wave cannot be covered by disjoint coalitions, the last subtask waits for
+    the next wave; if SCIP finds nothing in time, the wave falls back to per-subtask IPs."""
+    from pyscipopt import quicksum
+
+    info: dict[str, Any] = {"subtasks": list(wave)}
+    # individual feasibility first, for a clear error
+    data = {}
+    for sid in wave:
+        node = nodes[sid]
+        Y = need_vector(node, skills)
+        allowed, why = rules.mask(node)
+        lin = rules.lin(node)
+        if first_stage_fast(Q, Y, np.zeros(len(robots)), allowed, lin) is None:
+            raise explain_infeasible(node, robots, skills, Q, Y, allowed, why, lin)
+        data[sid] = (node, Y, allowed, lin)
+    sub = list(wave)
+    deadline = time.perf_counter() + time_limit
+    while sub:
+        t0 = time.perf_counter()
+        remaining = max(0.05, deadline - t0)
+        m = _scip(time_limit=remaining * 0.7)
+        x: dict[tuple[int, str], Any] = {}
+        T, dist, dur = {}, {}, {}
+        for sid in sub:
+            node, Y, allowed, lin = data[sid]
+            ready_t = tl.ready(node, preds[sid])
+            T[sid] = m.addVar(lb=ready_t, vtype="C")
+            dur[sid] = tl.duration(node)
+            for i in np.flatnonzero(allowed):
+                r = robots[i]
+                x[(int(i), sid)] = m.addVar(vtype="B")
+                dist[(int(i), sid)] = tl.cost(r, node)
+                m.addCons(T[sid] >= tl.arrival(r, node) * x[(int(i), sid)])
+            xs = {i: x[(i, s)] for (i, s) in x if s == sid}
+            _add_rows(m, xs, Q, Y, lin)
+        z = m.addVar(lb=0.0, vtype="C")
+        for sid in sub:
+            m.addCons(z >= T[sid] + dur[sid])
+        for i in range(len(robots)):
+            mine = [x[k] for k in x if k[0] == i]
+            if len(mine) > 1:
+                m.addCons(quicksum(mine) <= 1)
+        m.setObjective(z, "minimize")
+        m.optimize()
+        status = m.getStatus()
+        if status == "infeasible" and len(sub) > 1:
+            sub = sub[:-1]  # the last ready subtask waits for the next wave
+            continue
+        if m.getNSols() == 0:
+            # nothing found in time: fall back to one IP per subtask for this wave
+            info.update({"status": status, "fallback": "per-subtask"})
+            for sid in sub:
+                one(sid)
+            stats["waves"].append(info)
+            return
+        zbest, gap = m.getObjVal(), m.getGap()
+        info.update({"status": status, "gap": float(gap), "latest_finish": float(zbest)})
+        sol1 = {k: m.getSolVal(m.getBestSol(), v) for k, v in x.items()}
+        # second stage: total metres at (about) that latest finish
+        m.freeTransform()
+        m.addCons(z <= zbest + 1e-6 * max(1.0, zbest))
+        m.setObjective(quicksum(dist[k] * v for k, v in x.items()), "minimize")
+        m.setParam("limits/time", max(0.05, deadline - time.perf_counter()))
+        m.optimize()
+        if m.getNSols() > 0:
+            sol = {k: m.getSolVal(m.getBestSol(), v) for k, v in x.items()}
+            info["stage2_status"] = m.getStatus()
+        else:
+            sol = sol1
+        stats["solve_s"].append(time.perf_counter() - t0)
+        chosen = {sid: [i for (i, s), v in sol.items() if s == sid and v > 0.5] for sid in sub}
+        starts = {}
+        for sid in sub:
+            node = data[sid][0]
+            starts[sid] = max([tl.ready(node, preds[sid])] + [tl.arrival(robots[i], node) for i in chosen[sid]])
+        for sid in sorted(sub, key=lambda s: (starts[s], nodes[s]["index"])):
+            node = data[sid][0]
+            names = [robots[i] for i in sorted(chosen[sid])]
+            assignments.append({"subtask": sid, "robots": names,
+                                "costs": {robots[i]: float(dist[(i, sid)]) for i in sorted(chosen[sid])}})
+            tl.commit(node, names, preds[sid])
+            done.add(sid)
+        info["allocated"] = list(sub)
+        stats["waves"].append(info)
+        return

@@ -1,0 +1,186 @@
+"""Alg. 1 timing: when each subtask starts and ends, and where every robot drives.
+
+A subtask can start when (a) every predecessor in the dependency graph has ended and (b) every
+robot of its coalition has reached the first place of its route. The coalition then handles
+the load at each stop (``handling`` seconds per stop) and drives the route together at
+``speed``. Afterwards each robot stands at the route's last place and is free at the
+subtask's end. Allocation (which needs where robots are, and in frontier mode when they are
+free) and the ``schedule`` step share this one :class:`Timeline`, so the costs the allocator
+optimised are exactly the distances the schedule reports.
+"""
+from __future__ import annotations
+
+from typing import Any, Iterable
+
+from pipflow.errors import InputError
+
+
+class Timeline:
+    """Robots' positions and free times, and subtasks' end times, as subtasks are committed."""
+
+    def __init__(self, world: dict, travel=None, speed: float = 1.0, handling: float = 2.0):
+        from pipflow.travel import TravelMap
+
+        if speed <= 0:
+            raise InputError(f"speed must be positive (m/s), got {speed}")
+        if handling < 0:
+            raise InputError(f"handling time must be >= 0 s, got {handling}")
+        self.world = world
+        self.travel = travel if travel is not None else TravelMap(world)
+        self.speed = float(speed)
+        self.handling = float(handling)
+        self.robots = list((world.get("robots") or {}).keys())
+        self.pos: dict[str, Any] = {r: r for r in self.robots}  # a robot name means its start
+        self.free: dict[str, float] = {r: 0.0 for r in self.robots}
+        self.end: dict[str, float] = {}
+        self.legs: dict[str, list[dict]] = {r: [] for r in self.robots}
+        self.records: list[dict] = []
+
+    # -- costs ------------------------------------------------------------------------------
+    def check_route(self, node: dict) -> list[str]:
+        route = list(node.get("route") or [])
+        if not route:
+            raise InputError(f"subtask {node['id']} has an empty route; action metadata must give `route`")
+        for p in route:
+            self.travel.point(p)  # raises InputError naming unknown places
+        return route
+
+    def route_length(self, node: dict) -> float:
+        return self.travel.route_length(self.check_route(node))
+
+    def approach(self, robot: str, node: dict) -> float:
+        """Metres robot drives from where it is to the route's first place."""
+        return self.travel.distance(self.pos[robot], self.check_route(node)[0])
+
+    def cost(self, robot: str, node: dict) -> float:
+        """The paper's c_i: approach plus the route itself."""
+        return self.approach(robot, node) + self.route_length(node)
+
+    def duration(self, node: dict) -> float:
+        """Seconds from the coalition's gathering to the end: handling at each stop + driving."""
+        return self.handling * len(self.check_route(node)) + self.route_length(node) / self.speed
+
+    def ready(self, node: dict, preds: Iterable[str]) -> float:
+        """Earliest start allowed by the dependency graph."""
+        return max((self.end[p] for p in preds), default=0.0)
+
+    def arrival(self, robot: str, node: dict) -> float:
+        return self.free[robot] + self.approach(robot, node) / self.speed
+
+    # -- commit -----------------------------------------------------------------------------
+    def commit(self, node: dict, robots: list[str], preds: Iterable[str]) -> dict:
+        """Fix the subtask's timing, append the robots' legs, move the robots."""
+        preds = list(preds)
+        missing = [p for p in preds if p not in self.end]
+        if missing:
+            raise InputError(f"subtask {node['id']} is committed before its predecessors {missing}")
+        if not robots:
+            raise InputError(f"subtask {node['id']} has no robots")
+        route = self.check_route(node)
+        ready = self.ready(node, preds)
+        start = max([ready] + [self.arrival(r, node) for r in robots])
+        for r in robots:
+            d = self.approach(r, node)
+            if d > 1e-12:
+                a = self.travel.point(self.pos[r])
+                b = self.travel.point(route[0])
+                self.legs[r].append({
+                    "subtask": node["id"], "from": list(a), "to": list(b),
+                    "path": self.travel.path(self.pos[r], route[0]),
+                    "start": self.free[r], "end": self.free[r] + d / self.speed, "distance": d,
+                })
+        t = start + self.handling
+        for k in range(1, len(route)):
+            d = self.travel.distance(route[k - 1], route[k])
+            a, b = self.travel.point(route[k - 1]), self.travel.point(route[k])
+            path = self.travel.path(route[k - 1], route[k])
+            for r in robots:
+                self.legs[r].append({"subtask": node["id"], "from": list(a), "to": list(b), "path": path,
+                                     "start": t, "end": t + d / self.speed, "distance": d})
+            t += d / self.speed + self.handling
+        end = t
+        for r in robots:
+            self.pos[r] = route[-1]
+            self.free[r] = end
+        self.end[node["id"]] = end
+        rec = {"id": node["id"], "action": node.get("action"), "args": node.get("args", []),
+               "robots": list(robots), "ready": ready, "start": start, "end": end}
+        self.records.append(rec)
+        return rec
+
+    def result(self) -> dict:
+        """The schedule contract of docs/architecture.md."""
+        robots = {}
+        for r in self.robots:
+            robots[r] = {"legs": self.legs[r], "distance": sum(leg["distance"] for leg in self.legs[r])}
+        dists = [v["distance"] for v in robots.values()]
+        return {
+            "subtasks": self.records,
+            "robots": robots,
+            "makespan": max((rec["end"] for rec in self.records), default=0.0),
+            "tc_max": max(dists, default=0.0),
+            "tc_avg": sum(dists) / len(dists) if dists else 0.0,
+        }
+
+
+def predecessors(graph: dict) -> dict[str, list[str]]:
+    preds: dict[str, list[str]] = {n["id"]: [] for n in graph["nodes"]}
+    for u, v in graph["edges"]:
+        if u not in preds or v not in preds:
+            raise InputError(f"graph edge {u} -> {v} names an unknown subtask")
+        preds[v].append(u)
+    return preds
+
+
+def build_schedule(graph: dict, allocation: dict, world: dict, speed: float = 1.0,
+                   handling: float = 2.0, travel=None) -> dict:
+    """Replay an allocation in its order (Alg. 1) and time it.
+
+    Every subtask must be allocated exactly once, after its predecessors."""
+    nodes = {n["id"]: n for n in graph["nodes"]}
+    preds = predecessors(graph)
+    tl = Timeline(world, travel=travel, speed=speed, handling=handling)
+    seen = set()
+    for a in allocation.get("assignments", []):
+        sid = a.get("subtask")
+        if sid not in nodes:
+            raise InputError(f"allocation names unknown subtask {sid!r}")
+        if sid in seen:
+            raise InputError(f"allocation assigns subtask {sid} twice")
+        unknown = [r for r in a.get("robots", []) if r not in tl.free]
+        if unknown:
+            raise InputError(f"allocation of {sid} names unknown robots {unknown}")
+        seen.add(sid)
+        tl.commit(nodes[sid], list(a["robots"]), preds[sid])
+    missing = [s for s in nodes if s not in seen]
+    if missing:
+        raise InputError(f"allocation leaves subtasks unallocated: {', '.join(missing)}")
+    return tl.result()
+
+
+def draw_gantt(schedule: dict, path) -> None:
+    """A Gantt chart of robots over time (matplotlib, Agg)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    robots = list(schedule["robots"])
+    fig, ax = plt.subplots(figsize=(9, max(2.5, 0.35 * len(robots) + 1)))
+    colors = plt.get_cmap("tab20")
+    ids = [s["id"] for s in schedule["subtasks"]]
+    for y, r in enumerate(robots):
+        for leg in schedule["robots"][r]["legs"]:
+            c = colors(ids.index(leg["subtask"]) % 20) if leg["subtask"] in ids else "grey"
+            ax.barh(y, leg["end"] - leg["start"], left=leg["start"], color=c, edgecolor="black", linewidth=0.3)
+    for s in schedule["subtasks"]:
+        for r in s["robots"]:
+            y = robots.index(r)
+            ax.text((s["start"] + s["end"]) / 2, y, s["id"], ha="center", va="center", fontsize=6)
+    ax.set_yticks(range(len(robots)), robots, fontsize=7)
+    ax.set_xlabel("time [s]")
+    ax.set_title(f"schedule: makespan {schedule['makespan']:.1f} s, TC-max {schedule['tc_max']:.1f} m, "
+                 f"TC-avg {schedule['tc_avg']:.1f} m", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
