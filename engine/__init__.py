@@ -1,0 +1,22 @@
+"""The workflow engine: load and validate YAML workflows, run them as DAGs of steps, record runs.
+
+Public entry points (imported lazily, so that ``from pipflow import step`` stays cheap):
+:func:`run_workflow`, :func:`resume_run`, :func:`load_workflow`, :func:`check_workflow`,
+:func:`find_workflow`, :class:`RunOptions`, :class:`RunResult`."""
+from __future__ import annotations
+
+import importlib
+from typing import Any
+
+_EXPORTS = {
+    "run_workflow": "runner", "resume_run": "runner", "find_workflow": "runner", "RunResult": "runner",
+    "load_workflow": "validate", "check_workflow": "validate", "RunOptions": "executor",
+}
+
+__all__ = sorted(_EXPORTS)
+
+
+def __getattr__(name: str) -> Any:
+    if name in _EXPORTS:
+        return getattr(importlib.import_module(f"{__name__}.{_EXPORTS[name]}"), name)
+    raise AttributeError(name)

@@ -1,2 +1,339 @@
-def main():
-    print("hi")
+"""The ``pipflow`` command.
+
+Exit codes: 0 success; 1 a step failed; 2 a user error (invalid workflow or world file, bad
+input, unknown run); 3 the command was refused as infeasible; 130 interrupted.
+``-v`` adds tracebacks and step logs; ``-q`` prints only errors and the result.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+import traceback
+from pathlib import Path
+from typing import Any, Sequence
+
+import yaml
+
+from pipflow.errors import PipflowError, UserError
+
+EXIT_INTERRUPTED = 130
+
+
+def _key_values(pairs: Sequence[str]) -> dict[str, str]:
+    out: dict[str, str] = {}
+    for pair in pairs:
+        if "=" not in pair:
+            raise UserError(f"-i {pair!r}: expected key=value")
+        key, value = pair.split("=", 1)
+        out[key.strip()] = value
+    return out
+
+
+def _inputs(args: argparse.Namespace) -> tuple[dict, bool]:
+    """Inputs from ``--inputs FILE`` (typed YAML) and ``-i k=v`` (text, coerced later)."""
+    values: dict[str, Any] = {}
+    if getattr(args, "inputs_file", None):
+        from .source import load_yaml, plain
+
+        data = plain(load_yaml(args.inputs_file))
+        if not isinstance(data, dict):
+            raise UserError(f"{args.inputs_file}: an inputs file must be a mapping of input names to values")
+        values.update(data)
+    text_values = _key_values(args.input or [])
+    from_text = bool(text_values)
+    if from_text:
+        # typed YAML values and text values mix: render the YAML ones as text so all coerce alike
+        values = {k: (v if isinstance(v, str) else yaml.safe_dump(v, default_flow_style=True).strip()) for k, v in values.items()}
+        values.update(text_values)
+    return values, from_text
+
+
+def _options(args: argparse.Namespace, step_ids: list[str]):
+    from .executor import RunOptions
+    from .progress import LiveProgress, PlainProgress
+
+    if args.quiet:
+        display = None
+    elif sys.stderr.isatty() and not args.verbose:
+        display = LiveProgress(step_ids)
+    else:
+        display = PlainProgress(verbose=args.verbose)
+    return RunOptions(jobs=args.jobs, use_cache=not args.no_cache, on_event=display), display
+
+
+def _print_result(result, quiet: bool) -> int:
+    from pipflow.errors import Refusal
+
+    if result.status == "succeeded":
+        if not quiet:
+            print(json.dumps(result.outputs, indent=2, default=str))
+        print(f"run succeeded in {result.seconds:.2f}s: {result.run_dir}", file=sys.stderr)
+        return 0
+    where = f"step {result.error_step!r}: " if result.error_step else ""
+    print(f"run {result.status}: {where}{result.error}", file=sys.stderr)
+    print(f"run record: {result.run_dir}", file=sys.stderr)
+    if isinstance(result.exception, Refusal):
+        return 3
+    if isinstance(result.exception, UserError):
+        return 2
+    return 1
+
+
+# -- commands ------------------------------------------------------------------------------
+
+def cmd_run(args: argparse.Namespace) -> int:
+    from .registry import default_registry
+    from .runner import find_workflow, resolve_inputs, run_workflow
+    from .validate import load_workflow
+
+    values, from_text = _inputs(args)
+    path = find_workflow(args.workflow)
+    wf = load_workflow(path, default_registry())
+    if args.dry_run:
+        resolved = resolve_inputs(wf, values, from_text=from_text)
+        print(f"{path}: valid; would run {len(wf.all_steps())} step(s) with inputs:")
+        print(json.dumps(resolved, indent=2, default=str))
+        return 0
+    options, display = _options(args, [n.id for n in wf.nodes] + [s.id for s in wf.all_steps() if s.loop])
+    try:
+        result = run_workflow(path, values, runs_dir=args.runs_dir, options=options, inputs_from_text=from_text)
+    finally:
+        if display:
+            display.close()
+    if args.verbose and result.exception is not None and result.status == "failed":
+        traceback.print_exception(result.exception)
+    return _print_result(result, args.quiet)
+
+
+def cmd_validate(args: argparse.Namespace) -> int:
+    from .registry import default_registry
+    from .validate import check_workflow
+
+    failed = 0
+    registry = default_registry()
+    for ref in args.files:
+        from .runner import find_workflow
+
+        try:
+            path = find_workflow(ref)
+        except UserError as err:
+            print(err, file=sys.stderr)
+            failed += 1
+            continue
+        _, diagnostics = check_workflow(path, registry)
+        if diagnostics:
+            failed += 1
+            print(f"{path}: {len(diagnostics)} problem(s)", file=sys.stderr)
+            for d in diagnostics:
+                print(f"  {d}", file=sys.stderr)
+        else:
+            print(f"{path}: ok")
+    return 2 if failed else 0
+
+
+def cmd_steps(args: argparse.Namespace) -> int:
+    from .registry import default_registry
+
+    registry = default_registry()
+    if args.name:
+        step = registry.get(args.name)
+        if step is None:
+            close = registry.closest(args.name)
+            raise UserError(f"unknown step {args.name!r}" + (f"; did you mean {', '.join(close)}?" if close else ""))
+        print(f"{step.name}  (version {step.version}{', cacheable' if step.cacheable else ''}; from {registry.origin(step.name)})")
+        if step.doc:
+            print(f"\n  {step.doc}\n")
+        print("inputs:")
+        for name, spec in step.inputs.items():
+            default = "required" if spec.required else f"default {spec.default!r}"
+            print(f"  {name:<14} {spec.type:<8} {default:<24} {spec.doc}")
+        print("outputs:")
+        for name, type_name in step.outputs.items():
+            print(f"  {name:<14} {type_name}")
+        return 0
+    for step in registry:
+        print(f"{step.name:<22} {step.doc.splitlines()[0] if step.doc else ''}")
+    return 0
+
+
+def cmd_graph(args: argparse.Namespace) -> int:
+    from .graphview import render_graph
+    from .runner import find_workflow
+    from .validate import load_workflow
+
+    wf = load_workflow(find_workflow(args.workflow))
+    output = render_graph(wf, args.format, Path(args.output) if args.output else None)
+    if output is not None:
+        print(output)
+    return 0
+
+
+def cmd_runs(args: argparse.Namespace) -> int:
+    from .store import list_runs, read_json
+
+    runs = list_runs(Path(args.runs_dir))
+    if not runs:
+        print(f"no runs in {args.runs_dir}")
+        return 0
+    for run in runs[: args.limit]:
+        info = read_json(run / "run.json", {})
+        secs = info.get("seconds")
+        print(f"{run.name:<50} {info.get('status', '?'):<11} {f'{secs:.2f}s' if secs is not None else '':>8}  "
+              f"{info.get('error') or ''}"[:160])
+    return 0
+
+
+def cmd_show(args: argparse.Namespace) -> int:
+    from .store import RunStore, find_run, read_json
+
+    store = RunStore.open(find_run(args.run, Path(args.runs_dir)))
+    info = store.run_info()
+    print(f"run       {store.root}")
+    for key in ("name", "workflow", "status", "started", "finished", "seconds", "error_step", "error"):
+        if info.get(key) not in (None, ""):
+            print(f"{key:<9} {info[key]}")
+    print("inputs:")
+    for k, v in (info.get("inputs") or {}).items():
+        print(f"  {k} = {json.dumps(v, default=str)[:100]}")
+    print("steps:")
+    for e in store.events():
+        if e.get("event") in ("end", "skip", "error") and e.get("step"):
+            it = f" #{e['iteration']}" if "iteration" in e else ""
+            status = e.get("status", "skipped" if e["event"] == "skip" else "")
+            dur = f"{e['duration']:.3f}s" if "duration" in e else ""
+            print(f"  {e['step'] + it:<22} {status:<10} {dur:>9}" + (" cached" if e.get("cached") else ""))
+    outputs = read_json(store.root / "outputs.json")
+    if outputs is not None:
+        print("outputs:")
+        print("  " + json.dumps(outputs, indent=2, default=str).replace("\n", "\n  ")[:4000])
+    return 0
+
+
+def cmd_resume(args: argparse.Namespace) -> int:
+    from .runner import resume_run
+    from .store import find_run
+
+    run_dir = find_run(args.run, Path(args.runs_dir))
+    options, display = _options(args, [])
+    try:
+        result = resume_run(run_dir, options=options)
+    finally:
+        if display:
+            display.close()
+    return _print_result(result, args.quiet)
+
+
+def cmd_cache(args: argparse.Namespace) -> int:
+    from .cache import StepCache
+
+    cache = StepCache(Path(args.dir) if args.dir else None)
+    count = cache.clear()
+    print(f"removed {count} cache entr{'y' if count == 1 else 'ies'} from {cache.root}")
+    return 0
+
+
+def cmd_bench(args: argparse.Namespace) -> int:
+    from pipflow.bench import bench_main
+
+    return bench_main(args)
+
+
+def cmd_report(args: argparse.Namespace) -> int:
+    from pipflow.report import write_report
+
+    path = write_report(Path(args.dir), Path(args.output) if args.output else None)
+    print(path)
+    return 0
+
+
+# -- parser --------------------------------------------------------------------------------
+
+def build_parser() -> argparse.ArgumentParser:
+    common = argparse.ArgumentParser(add_help=False)
+    common.add_argument("-v", "--verbose", action="store_true", help="tracebacks and step logs")
+    common.add_argument("-q", "--quiet", action="store_true", help="only errors and the result")
+    common.add_argument("--runs-dir", default="runs", help="where run records go (default: ./runs)")
+
+    parser = argparse.ArgumentParser(prog="pipflow", description="PIP-LLM workflows: language command -> robot team plan.",
+                                     parents=[common])
+    sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+
+    run = sub.add_parser("run", parents=[common], help="validate and run a workflow")
+    run.add_argument("workflow", help="workflow file, or the name of a built-in workflow")
+    run.add_argument("-i", "--input", action="append", metavar="KEY=VALUE", help="set an input (repeatable)")
+    run.add_argument("--inputs", dest="inputs_file", metavar="FILE", help="YAML file of inputs")
+    run.add_argument("--dry-run", action="store_true", help="validate and show the inputs; run nothing")
+    run.add_argument("--jobs", type=int, default=1, help="independent steps to run at once")
+    run.add_argument("--no-cache", action="store_true", help="ignore and do not write the step cache")
+    run.set_defaults(func=cmd_run)
+
+    val = sub.add_parser("validate", parents=[common], help="check workflow files; report every problem")
+    val.add_argument("files", nargs="+")
+    val.set_defaults(func=cmd_validate)
+
+    steps = sub.add_parser("steps", parents=[common], help="list steps, or show one in full")
+    steps.add_argument("name", nargs="?")
+    steps.set_defaults(func=cmd_steps)
+
+    graph = sub.add_parser("graph", parents=[common], help="show a workflow's DAG (text, dot or png)")
+    graph.add_argument("workflow")
+    graph.add_argument("--format", choices=["text", "dot", "png"], default="text")
+    graph.add_argument("-o", "--output", help="file to write (png needs it)")
+    graph.set_defaults(func=cmd_graph)
+
+    runs = sub.add_parser("runs", parents=[common], help="list runs, newest first")
+    runs.add_argument("--limit", type=int, default=30)
+    runs.set_defaults(func=cmd_runs)
+
+    show = sub.add_parser("show", parents=[common], help="summarise a run")
+    show.add_argument("run", help="run directory, its name, or a unique part of it")
+    show.set_defaults(func=cmd_show)
+
+    resume = sub.add_parser("resume", parents=[common], help="rerun only what did not finish")
+    resume.add_argument("run")
+    resume.add_argument("--jobs", type=int, default=1)
+    resume.add_argument("--no-cache", action="store_true")
+    resume.set_defaults(func=cmd_resume)
+
+    cache = sub.add_parser("cache", parents=[common], help="manage the step cache")
+    cache_sub = cache.add_subparsers(dest="cache_command", required=True)
+    clear = cache_sub.add_parser("clear", parents=[common], help="remove every cached step result")
+    clear.add_argument("--dir", help="cache directory (default: $PIPFLOW_CACHE_DIR or ~/.cache/pipflow/steps)")
+    clear.set_defaults(func=cmd_cache)
+
+    bench = sub.add_parser("bench", parents=[common], help="run a task file's tasks x seeds and score them")
+    bench.add_argument("tasks", help="task file (benchmarks/README.md format)")
+    bench.add_argument("--workflow", default=None, help="workflow to run per task (default: built-in warehouse)")
+    bench.add_argument("--seeds", type=int, default=1, help="runs per task; seeds vary the robots' start positions")
+    bench.add_argument("--jobs", type=int, default=None, help="parallel processes (default: CPU count)")
+    bench.add_argument("--out", default=None, help="output directory (default: bench-out/<time>)")
+    bench.add_argument("--matrix", action="append", metavar="KEY=V1,V2", help="run variants side by side")
+    bench.add_argument("-i", "--input", action="append", metavar="KEY=VALUE", help="set a workflow input for every run")
+    bench.add_argument("--no-cache", action="store_true")
+    bench.set_defaults(func=cmd_bench)
+
+    report = sub.add_parser("report", parents=[common], help="write a static HTML report of a run or a bench")
+    report.add_argument("dir", help="run directory or bench output directory")
+    report.add_argument("-o", "--output", help="HTML file (default: DIR/report.html)")
+    report.set_defaults(func=cmd_report)
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    try:
+        return args.func(args)
+    except KeyboardInterrupt:
+        print("interrupted", file=sys.stderr)
+        return EXIT_INTERRUPTED
+    except PipflowError as err:
+        if args.verbose:
+            traceback.print_exc()
+        print(f"error: {err}" if not getattr(err, "diagnostics", None) else str(err), file=sys.stderr)
+        return err.exit_code
+
+
+if __name__ == "__main__":
+    sys.exit(main())

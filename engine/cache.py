@@ -1,0 +1,60 @@
+"""Content-addressed step cache: the key is the step's name, its version and its resolved
+inputs, so a changed argument, an upgraded step or an edited prompt is a miss. On by default
+for steps that declare themselves cacheable (LLM calls); ``--no-cache`` turns it off.
+An entry holds the outputs and a copy of the artifacts, so a hit leaves the same run record."""
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import shutil
+from pathlib import Path
+from typing import Any
+
+from .store import atomic_write
+
+
+def default_cache_dir() -> Path:
+    env = os.environ.get("PIPFLOW_CACHE_DIR")
+    if env:
+        return Path(env)
+    base = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
+    return Path(base) / "pipflow" / "steps"
+
+
+def cache_key(step_name: str, version: str, inputs: dict[str, Any]) -> str:
+    canonical = json.dumps({"step": step_name, "version": version, "inputs": inputs},
+                           sort_keys=True, separators=(",", ":"), default=str)
+    return hashlib.sha256(canonical.encode("utf-8")).hexdigest()
+
+
+class StepCache:
+    def __init__(self, root: Path | None = None):
+        self.root = Path(root) if root else default_cache_dir()
+
+    def _entry(self, key: str) -> Path:
+        return self.root / key[:2] / key
+
+    def get(self, key: str, artifact_dir: Path) -> dict | None:
+        entry = self._entry(key)
+        try:
+            outputs = json.loads((entry / "outputs.json").read_text(encoding="utf-8"))
+        except (FileNotFoundError, json.JSONDecodeError):
+            return None
+        if (entry / "artifacts").is_dir():
+            shutil.copytree(entry / "artifacts", artifact_dir, dirs_exist_ok=True)
+        return outputs
+
+    def put(self, key: str, outputs: dict, artifact_dir: Path) -> None:
+        entry = self._entry(key)
+        if artifact_dir.is_dir():
+            shutil.copytree(artifact_dir, entry / "artifacts", dirs_exist_ok=True)
+        atomic_write(entry / "outputs.json", json.dumps(outputs, sort_keys=True, default=str))
+
+    def clear(self) -> int:
+        """Remove every entry; returns how many there were."""
+        if not self.root.is_dir():
+            return 0
+        count = sum(1 for p in self.root.glob("*/*") if p.is_dir())
+        shutil.rmtree(self.root)
+        return count

@@ -1,0 +1,318 @@
+"""Run a validated workflow: topological order, independent steps concurrently (``jobs``),
+``when:`` conditions, bounded loops, per-step time-out and retries, the cache, and a run record
+that is complete up to the moment anything fails.
+"""
+from __future__ import annotations
+
+import concurrent.futures as cf
+import json
+import os
+import threading
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Callable
+
+import networkx as nx
+
+from pipflow.errors import InputError, PipflowError, Refusal, StepError, UserError
+
+from .cache import StepCache, cache_key
+from .expr import ExpressionError, resolve, truthy
+from .model import LoopSpec, StepSpec, Workflow
+from .registry import Registry
+from .step import Step, StepContext
+from .store import RunStore, write_json
+from .types import type_matches
+from .validate import dependency_graph
+
+
+@dataclass
+class RunOptions:
+    jobs: int = 1
+    use_cache: bool = True
+    cache_dir: Path | None = None
+    on_event: Callable[[dict], None] | None = None
+
+
+@dataclass
+class StepFailure:
+    step: str
+    error: BaseException
+
+
+@dataclass
+class ExecutionState:
+    """Outputs known so far, by step id (a loop's own outputs under the loop's id)."""
+
+    outputs: dict[str, dict] = field(default_factory=dict)
+    durations: dict[str, float] = field(default_factory=dict)
+    metrics: dict[str, dict] = field(default_factory=dict)
+
+
+def _none_outputs(step: Step | None) -> dict:
+    return {name: None for name in (step.outputs if step else {})}
+
+
+class Executor:
+    def __init__(self, workflow: Workflow, registry: Registry, store: RunStore, inputs: dict,
+                 options: RunOptions, completed: dict[str, dict] | None = None):
+        self.wf = workflow
+        self.registry = registry
+        self.store = store
+        self.inputs = inputs
+        self.options = options
+        self.cache = StepCache(options.cache_dir) if options.use_cache else None
+        self.state = ExecutionState()
+        self.state.outputs.update(completed or {})
+        self._env = dict(os.environ)
+        self._lock = threading.Lock()
+
+    # -- public --------------------------------------------------------------------------
+    def run(self) -> dict:
+        """Run every node not yet completed; return the workflow's outputs."""
+        graph = self._node_graph()
+        pending = [n for n in nx.topological_sort(graph) if n not in self.state.outputs]
+        nodes = {n.id: n for n in self.wf.nodes}
+        if self.options.jobs <= 1:
+            for node_id in pending:
+                self._run_node(nodes[node_id])
+        else:
+            self._run_parallel(graph, pending, nodes)
+        return resolve(self.wf.outputs, self._namespace())
+
+    # -- scheduling ----------------------------------------------------------------------
+    def _node_graph(self) -> nx.DiGraph:
+        owners = self.wf.node_of()
+        graph = nx.DiGraph()
+        graph.add_nodes_from(n.id for n in self.wf.nodes)
+        for a, b in dependency_graph(self.wf).edges:
+            if owners[a] != owners[b]:
+                graph.add_edge(owners[a], owners[b])
+        return graph
+
+    def _run_parallel(self, graph: nx.DiGraph, pending: list[str], nodes: dict) -> None:
+        waiting = list(pending)
+        running: dict[cf.Future, str] = {}
+        failure: BaseException | None = None
+        with cf.ThreadPoolExecutor(max_workers=self.options.jobs) as pool:
+            while waiting or running:
+                if failure is None:
+                    for node_id in list(waiting):
+                        if len(running) >= self.options.jobs:
+                            break
+                        if all(p in self.state.outputs for p in graph.predecessors(node_id)):
+                            waiting.remove(node_id)
+                            running[pool.submit(self._run_node, nodes[node_id])] = node_id
+                if not running:
+                    break
+                done, _ = cf.wait(running, return_when=cf.FIRST_COMPLETED)
+                for fut in done:
+                    running.pop(fut)
+                    if fut.exception() is not None and failure is None:
+                        failure = fut.exception()
+                if failure is not None and not running:
+                    break
+        if failure is not None:
+            raise failure
+
+    # -- namespace -----------------------------------------------------------------------
+    def _namespace(self, extra: dict | None = None) -> dict:
+        with self._lock:
+            ns = dict(self.state.outputs)
+        ns["inputs"] = self.inputs
+        ns["env"] = self._env
+        if extra:
+            ns.update(extra)
+        return ns
+
+    def _publish(self, step_id: str, outputs: dict) -> None:
+        with self._lock:
+            self.state.outputs[step_id] = outputs
+
+    # -- nodes ---------------------------------------------------------------------------
+    def _run_node(self, node: StepSpec | LoopSpec) -> None:
+        if isinstance(node, LoopSpec):
+            self._run_loop(node)
+        else:
+            outputs = self._run_step(node, self._namespace())
+            self._publish(node.id, outputs)
+
+    def _run_loop(self, loop: LoopSpec) -> None:
+        ns = self._namespace()
+        steps = {s.id: self.registry.get(s.uses) for s in loop.steps}
+        if loop.when is not None and not self._condition(loop.when, ns, loop.id):
+            for s in loop.steps:
+                self._publish(s.id, _none_outputs(steps[s.id]))
+            self._finish_loop(loop, {"iterations": 0, "done": False, "skipped": True})
+            self.store.event("skip", loop.id, reason="when")
+            return
+        try:
+            maximum = resolve(loop.max, ns)
+        except ExpressionError as err:
+            raise self._located(InputError(f"loop {loop.id!r}: max: {err}"), loop.id)
+        if not isinstance(maximum, int) or isinstance(maximum, bool) or maximum < 1:
+            raise self._located(InputError(f"loop {loop.id!r}: max must be a whole number >= 1, got {maximum!r}"), loop.id)
+        order = list(nx.topological_sort(dependency_graph(self.wf).subgraph([s.id for s in loop.steps])))
+        by_id = {s.id: s for s in loop.steps}
+        previous = {sid: _none_outputs(steps[sid]) for sid in by_id}
+        self.store.event("start", loop.id, kind="loop", max=maximum)
+        started = time.perf_counter()
+        done, iteration = False, 0
+        for iteration in range(1, maximum + 1):
+            current: dict[str, dict] = {}
+            for sid in order:
+                iter_ns = self._namespace({**current, "previous": previous, "iteration": iteration})
+                current[sid] = self._run_step(by_id[sid], iter_ns, (loop.id, iteration))
+            for sid, out in current.items():
+                self._publish(sid, out)
+            done = self._condition(loop.until, self._namespace({**current, "iteration": iteration}), loop.id)
+            self.store.event("iteration", loop.id, iteration=iteration, done=done)
+            previous = current
+            if done:
+                break
+        for sid in by_id:
+            self.store.write_step_outputs(sid, self.state.outputs[sid])
+        self._finish_loop(loop, {"iterations": iteration, "done": done}, time.perf_counter() - started)
+        if not done and loop.on_max == "fail":
+            raise self._located(StepError(
+                f"loop {loop.id!r} reached its maximum of {maximum} iteration(s) and `until: {loop.until}` "
+                f"still does not hold"), loop.id)
+
+    def _finish_loop(self, loop: LoopSpec, outputs: dict, duration: float = 0.0) -> None:
+        self.store.write_step_outputs(loop.id, outputs)
+        self._publish(loop.id, outputs)
+        self.state.durations[loop.id] = duration
+        self.store.event("end", loop.id, status="skipped" if outputs.get("skipped") else "succeeded",
+                         duration=round(duration, 6), iterations=outputs["iterations"])
+
+    def _condition(self, value: Any, ns: dict, step_id: str) -> bool:
+        try:
+            return truthy(value, ns)
+        except ExpressionError as err:
+            raise self._located(InputError(f"condition of {step_id!r}: {err}"), step_id)
+
+    # -- one step ------------------------------------------------------------------------
+    def _run_step(self, spec: StepSpec, ns: dict, iteration: tuple[str, int] | None = None) -> dict:
+        step = self.registry.get(spec.uses)
+        assert step is not None, spec.uses  # validation guarantees it
+        label = {"iteration": iteration[1]} if iteration else {}
+        if spec.when is not None and not self._condition(spec.when, ns, spec.id):
+            outputs = _none_outputs(step)
+            self.store.write_step_outputs(spec.id, outputs, iteration)
+            self.store.event("skip", spec.id, reason="when", **label)
+            return outputs
+        args = self._arguments(spec, step, ns)
+        step_dir = self.store.step_dir(spec.id, iteration)
+        artifact_dir = step_dir / "artifacts"
+        self.store.event("start", spec.id, uses=spec.uses, **label)
+        started = time.perf_counter()
+        use_cache = self.cache is not None and (spec.cache if spec.cache is not None else step.cacheable)
+        key = cache_key(step.name, step.version, args) if use_cache else None
+        outputs = self.cache.get(key, artifact_dir) if key else None
+        cached = outputs is not None
+        if not cached:
+            outputs = self._call_with_retries(spec, step, args, artifact_dir, iteration)
+            if key:
+                self.cache.put(key, outputs, artifact_dir)
+        duration = time.perf_counter() - started
+        self.store.write_step_outputs(spec.id, outputs, iteration)
+        with self._lock:
+            self.state.durations[spec.id] = self.state.durations.get(spec.id, 0.0) + duration
+        self.store.event("end", spec.id, status="succeeded", duration=round(duration, 6), cached=cached, **label)
+        return outputs
+
+    def _arguments(self, spec: StepSpec, step: Step, ns: dict) -> dict:
+        args = step.defaults()
+        for name, raw in spec.args.items():
+            try:
+                value = resolve(raw, ns)
+            except ExpressionError as err:
+                raise self._located(InputError(f"step {spec.id!r}: argument {name!r}: {err}"), spec.id)
+            declared = step.inputs.get(name)
+            if declared is not None and declared.type == "path" and isinstance(value, str) and value:
+                loc = spec.arg_loc(name)
+                base = Path(loc.file).resolve().parent if loc and loc.file else spec.base_dir
+                value = str((base / Path(value).expanduser()).resolve()) if not Path(value).is_absolute() else value
+            args[name] = value
+        for name, declared in step.inputs.items():
+            value = args.get(name)
+            if not type_matches(value, declared.type):
+                raise self._located(InputError(
+                    f"step {spec.id!r} ({spec.uses}): argument {name!r} must be {declared.type}, "
+                    f"got {type(value).__name__} {_short(value)}"), spec.id)
+            if declared.choices and value is not None and value not in declared.choices:
+                raise self._located(InputError(
+                    f"step {spec.id!r} ({spec.uses}): argument {name!r} must be one of "
+                    f"{', '.join(map(str, declared.choices))}, got {value!r}"), spec.id)
+        return args
+
+    def _call_with_retries(self, spec: StepSpec, step: Step, args: dict, artifact_dir: Path,
+                           iteration: tuple[str, int] | None) -> dict:
+        attempts = int(spec.retry.get("attempts", 1))
+        backoff = float(spec.retry.get("backoff", 1.0))
+        for attempt in range(1, attempts + 1):
+            ctx = StepContext(spec.id, artifact_dir, spec.base_dir,
+                              log=lambda m: self.store.event("log", spec.id, message=m),
+                              iteration=iteration[1] if iteration else None)
+            try:
+                outputs = self._call(spec, step, ctx, args)
+                if ctx.metrics:
+                    with self._lock:
+                        self.state.metrics[spec.id] = dict(ctx.metrics)
+                return outputs
+            except (UserError, Refusal) as err:
+                raise self._located(err, spec.id)
+            except Exception as err:
+                if attempt >= attempts:
+                    if isinstance(err, PipflowError):
+                        raise self._located(err, spec.id)
+                    wrapped = StepError(f"step {spec.id!r} ({spec.uses}) failed: {type(err).__name__}: {err}")
+                    wrapped.__cause__ = err
+                    raise self._located(wrapped, spec.id)
+                delay = backoff * 2 ** (attempt - 1)
+                self.store.event("retry", spec.id, attempt=attempt, error=f"{type(err).__name__}: {err}", delay=delay)
+                time.sleep(delay)
+        raise AssertionError("unreachable")
+
+    def _call(self, spec: StepSpec, step: Step, ctx: StepContext, args: dict) -> dict:
+        if spec.timeout:
+            pool = cf.ThreadPoolExecutor(max_workers=1)
+            future = pool.submit(step.func, ctx, **args)
+            try:
+                outputs = future.result(timeout=spec.timeout)
+            except cf.TimeoutError:
+                raise StepError(f"step {spec.id!r} ({spec.uses}) timed out after {spec.timeout:g} s") from None
+            finally:
+                pool.shutdown(wait=False)
+        else:
+            outputs = step.func(ctx, **args)
+        if not isinstance(outputs, dict):
+            raise StepError(f"step {spec.id!r} ({spec.uses}) returned {type(outputs).__name__}, not a dict of outputs")
+        try:
+            outputs = json.loads(json.dumps(outputs))
+        except (TypeError, ValueError) as err:
+            raise StepError(f"step {spec.id!r} ({spec.uses}) returned outputs that are not JSON data: {err}") from None
+        for name in step.outputs:
+            outputs.setdefault(name, None)
+        return outputs
+
+    def _located(self, err: BaseException, step_id: str) -> BaseException:
+        if getattr(err, "step_id", None) is None:
+            err.step_id = step_id  # type: ignore[attr-defined]
+        return err
+
+
+def _short(value: Any, limit: int = 60) -> str:
+    text = repr(value)
+    return text if len(text) <= limit else text[: limit - 3] + "..."
+
+
+def write_metrics(store: RunStore, state: ExecutionState, total: float) -> dict:
+    metrics = {
+        "total_seconds": round(total, 6),
+        "step_seconds": {k: round(v, 6) for k, v in state.durations.items()},
+        "steps": state.metrics,
+    }
+    write_json(store.root / "metrics.json", metrics)
+    return metrics

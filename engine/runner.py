@@ -1,0 +1,177 @@
+"""Run a workflow file end to end: validate, resolve inputs, create the run record, execute,
+and leave the record complete whatever happens (success, step failure, refusal, Ctrl-C).
+"""
+from __future__ import annotations
+
+import difflib
+import os
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from pipflow.errors import InputError, PipflowError, Refusal, UserError
+from pipflow.resources import data_dir
+
+from .executor import Executor, RunOptions, write_metrics
+from .expr import ExpressionError, has_expression, resolve
+from .model import Workflow
+from .registry import Registry, default_registry
+from .store import RunStore, read_json, utc_now, write_json
+from .types import coerce_text, type_matches
+from .validate import load_workflow
+
+
+@dataclass
+class RunResult:
+    run_dir: Path
+    status: str  # succeeded | failed | refused | interrupted
+    outputs: dict = field(default_factory=dict)
+    error: str | None = None
+    error_step: str | None = None
+    exception: BaseException | None = None
+    seconds: float = 0.0
+
+    @property
+    def ok(self) -> bool:
+        return self.status == "succeeded"
+
+
+def find_workflow(ref: str | Path) -> Path:
+    """A workflow by path, or by the name of a built-in workflow (``warehouse``)."""
+    p = Path(ref)
+    if p.exists():
+        return p
+    builtin = data_dir("workflows")
+    name = p.name if p.suffix in (".yaml", ".yml") else f"{p.name}.yaml"
+    if (builtin / name).is_file():
+        return builtin / name
+    known = sorted(x.name for x in builtin.glob("*.yaml"))
+    close = difflib.get_close_matches(name, known, n=1)
+    raise UserError(f"{ref}: no such workflow file" + (f"; did you mean the built-in {close[0]!r}?" if close else
+                                                       f"; built-in workflows: {', '.join(known)}"))
+
+
+def resolve_inputs(wf: Workflow, given: dict[str, Any], from_text: bool = False, cwd: Path | None = None) -> dict:
+    """Declared defaults, overridden by the given values (coerced from text for ``-i``)."""
+    unknown = [k for k in given if k not in wf.inputs]
+    if unknown:
+        hints = []
+        for k in unknown:
+            close = difflib.get_close_matches(k, list(wf.inputs), n=1)
+            hints.append(f"{k!r}" + (f" (did you mean {close[0]!r}?)" if close else ""))
+        raise InputError(f"{wf.file}: unknown input {', '.join(hints)}; declared: {', '.join(wf.inputs) or 'none'}")
+    env_ns = {"env": dict(os.environ), "inputs": {}}
+    values: dict[str, Any] = {}
+    for name, spec in wf.inputs.items():
+        if name in given:
+            value = given[name]
+            if from_text and isinstance(value, str):
+                try:
+                    value = coerce_text(value, spec.type)
+                except ValueError as err:
+                    raise InputError(f"input {name!r}: {err}") from None
+            base = cwd or Path.cwd()
+        elif spec.required:
+            raise InputError(f"{wf.file}: input {name!r} is required" + (f" ({spec.doc})" if spec.doc else "")
+                             + f"; set it with -i {name}=...")
+        else:
+            value = spec.default
+            if has_expression(value):
+                try:
+                    value = resolve(value, env_ns)
+                except ExpressionError as err:
+                    raise InputError(f"{spec.loc}: default of input {name!r}: {err}") from None
+            base = Path(spec.loc.file).resolve().parent if spec.loc else wf.file.parent
+        if spec.type == "path" and isinstance(value, str) and value and not Path(value).expanduser().is_absolute():
+            value = str((base / Path(value).expanduser()).resolve())
+        if not type_matches(value, spec.type):
+            raise InputError(f"input {name!r} must be {spec.type}, got {value!r}")
+        if spec.choices and value not in spec.choices:
+            raise InputError(f"input {name!r} must be one of {', '.join(map(str, spec.choices))}, got {value!r}")
+        values[name] = value
+    return values
+
+
+def run_workflow(workflow: str | Path, inputs: dict[str, Any] | None = None, *, runs_dir: str | Path = "runs",
+                 options: RunOptions | None = None, registry: Registry | None = None,
+                 inputs_from_text: bool = False) -> RunResult:
+    """Validate and run a workflow; never raises for a failed run (see ``RunResult``), only for
+    problems found before a run directory exists (invalid workflow, bad inputs)."""
+    registry = registry or default_registry()
+    wf = load_workflow(find_workflow(workflow), registry)
+    values = resolve_inputs(wf, inputs or {}, from_text=inputs_from_text)
+    store = RunStore.create(Path(runs_dir), wf.name)
+    store.write_snapshot(wf.snapshot(), values)
+    store.update_run(workflow=str(wf.file), name=wf.name, status="running", started=utc_now(),
+                     inputs=values)
+    return _execute(wf, store, values, options or RunOptions(), registry, completed=None)
+
+
+def resume_run(run_dir: str | Path, options: RunOptions | None = None, registry: Registry | None = None) -> RunResult:
+    """Rerun only what did not finish in an earlier run, in the same run directory."""
+    registry = registry or default_registry()
+    store = RunStore.open(Path(run_dir))
+    info = store.run_info()
+    if info.get("status") == "succeeded":
+        raise UserError(f"{run_dir}: this run already succeeded; nothing to resume")
+    wf = load_workflow(Path(info["workflow"]), registry)
+    values = read_json(store.root / "inputs.json", {})
+    completed = _completed_nodes(wf, store)
+    store.update_run(status="running", resumed=utc_now(), error=None, error_step=None)
+    store.event("resume", reused=sorted(completed))
+    return _execute(wf, store, values, options or RunOptions(), registry, completed)
+
+
+def _completed_nodes(wf: Workflow, store: RunStore) -> dict[str, dict]:
+    """Outputs of nodes that finished (a loop counts only if the loop itself finished)."""
+    finished = {e["step"] for e in store.events() if e.get("event") in ("end", "skip") and "iteration" not in e}
+    completed: dict[str, dict] = {}
+    for node in wf.nodes:
+        if node.id not in finished:
+            continue
+        outputs = store.read_step_outputs(node.id)
+        if outputs is None:
+            continue
+        completed[node.id] = outputs
+        for inner in getattr(node, "steps", []):
+            inner_out = store.read_step_outputs(inner.id)
+            if inner_out is not None:
+                completed[inner.id] = inner_out
+    return completed
+
+
+def _execute(wf: Workflow, store: RunStore, values: dict, options: RunOptions, registry: Registry,
+             completed: dict | None) -> RunResult:
+    executor = Executor(wf, registry, store, values, options, completed)
+    started = time.perf_counter()
+    result = RunResult(run_dir=store.root, status="running")
+    store.listener = options.on_event
+    try:
+        result.outputs = executor.run()
+        result.status = "succeeded"
+        write_json(store.root / "outputs.json", result.outputs)
+    except KeyboardInterrupt as err:
+        result.status, result.error, result.exception = "interrupted", "interrupted by the user", err
+    except ExpressionError as err:
+        result.status, result.error, result.exception = "failed", str(err), err
+    except PipflowError as err:
+        result.status = "refused" if isinstance(err, Refusal) else "failed"
+        result.error, result.exception = str(err), err
+        result.error_step = getattr(err, "step_id", None)
+    except Exception as err:  # a bug: keep the record, then let the traceback show
+        result.status, result.error, result.exception = "failed", f"internal error: {type(err).__name__}: {err}", err
+        result.error_step = getattr(err, "step_id", None)
+        raise
+    finally:
+        result.seconds = time.perf_counter() - started
+        write_metrics(store, executor.state, result.seconds)
+        if result.status != "succeeded":
+            store.event("error", result.error_step, status=result.status, error=result.error,
+                        kind=type(result.exception).__name__ if result.exception else None)
+        store.update_run(status=result.status, finished=utc_now(), error=result.error,
+                         error_step=result.error_step, seconds=round(result.seconds, 6))
+        store.close()
+    if isinstance(result.exception, KeyboardInterrupt):
+        raise result.exception
+    return result

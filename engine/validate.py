@@ -1,0 +1,302 @@
+"""Validate a workflow before anything runs, and report every problem at once.
+
+Checks, each located by file, line and column: YAML syntax, the JSON Schema
+(``schemas/workflow.schema.json``), duplicate ids, unknown step names (with the closest known
+names), unknown or missing arguments, literal arguments of the wrong type, references to unknown
+inputs, steps or outputs (and their declared types), invalid expressions, and cycles (naming the
+steps on the cycle). A loop without a maximum is a schema error.
+"""
+from __future__ import annotations
+
+import difflib
+import functools
+import json
+from pathlib import Path
+from typing import Any
+
+import jsonschema
+import networkx as nx
+
+from pipflow.errors import Diagnostic, Location, WorkflowError
+from pipflow.resources import data_file
+
+from .expr import ExpressionError, Reference, split_template, template_references
+from .model import LoopSpec, StepSpec, Workflow, build_workflow, read_workflow_data
+from .registry import Registry, default_registry
+from .source import SourceDict, SourceError, SourceList
+from .types import type_matches
+
+SPECIAL = {"inputs", "env", "previous", "iteration"}
+
+
+@functools.lru_cache(maxsize=None)
+def workflow_schema() -> dict:
+    text = data_file("schemas/workflow.schema.json").read_text(encoding="utf-8")
+    return json.loads(text)
+
+
+def load_workflow(path: str | Path, registry: Registry | None = None) -> Workflow:
+    """Load and validate; raise :class:`WorkflowError` listing every problem."""
+    workflow, diagnostics = check_workflow(path, registry)
+    if diagnostics:
+        raise WorkflowError(diagnostics, title=f"{path}: {len(diagnostics)} problem(s); nothing was run")
+    assert workflow is not None
+    return workflow
+
+
+def check_workflow(path: str | Path, registry: Registry | None = None) -> tuple[Workflow | None, list[Diagnostic]]:
+    path = Path(path)
+    diagnostics: list[Diagnostic] = []
+    try:
+        data, files = read_workflow_data(path, diagnostics)
+    except SourceError as err:
+        return None, err.diagnostics
+    if not isinstance(data, SourceDict):
+        return None, [Diagnostic(Location(str(path), 1, 1), "a workflow must be a mapping (name, inputs, steps, outputs)")]
+    diagnostics += _schema_diagnostics(data, str(path))
+    if diagnostics:
+        return None, diagnostics
+    workflow = build_workflow(path, data, files)
+    diagnostics += _semantic_diagnostics(workflow, registry or default_registry())
+    return workflow, diagnostics
+
+
+# --- schema -------------------------------------------------------------------------------
+
+def _locate(data: Any, path: list, file: str) -> Location:
+    node, loc = data, getattr(data, "loc", None)
+    for key in path:
+        if isinstance(node, (SourceDict, SourceList)):
+            loc = node.where(key) or loc
+        try:
+            node = node[key]
+        except (KeyError, IndexError, TypeError):
+            break
+        loc = getattr(node, "loc", None) or loc
+    return loc or Location(file)
+
+
+def _schema_diagnostics(data: SourceDict, file: str) -> list[Diagnostic]:
+    schema = workflow_schema()
+    validator = jsonschema.Draft202012Validator(schema)
+    out: list[Diagnostic] = []
+    for error in sorted(validator.iter_errors(data), key=lambda e: list(map(str, e.absolute_path))):
+        for leaf in _specific_errors(error, schema):
+            path = list(leaf.absolute_path)
+            where = ".".join(str(p) for p in path) or "top level"
+            out.append(Diagnostic(_locate(data, path, file), f"{where}: {_message(leaf)}"))
+    return out
+
+
+def _specific_errors(error: jsonschema.ValidationError, schema: dict) -> list[jsonschema.ValidationError]:
+    """A step node matches one of three shapes (step, loop, override); report the errors of
+    the shape it was meant to be, not "is not valid under any of the given schemas"."""
+    if error.validator != "oneOf" or not isinstance(error.instance, dict):
+        return [error]
+    node = error.instance
+    shape = "loop" if "loop" in node else "step" if "uses" in node else "override"
+    sub = jsonschema.Draft202012Validator({**schema["$defs"][shape], "$defs": schema["$defs"]})
+    errors = []
+    for e in sub.iter_errors(node):
+        e.path.extendleft(reversed(list(error.absolute_path)))
+        errors.append(e)
+    return errors or [error]
+
+
+def _message(error: jsonschema.ValidationError) -> str:
+    if error.validator == "required":
+        missing = [r for r in error.validator_value if r not in (error.instance or {})]
+        if "max" in missing and "until" in getattr(error.instance, "keys", lambda: [])():
+            return "a loop needs 'max' (the most iterations); unbounded loops are not allowed"
+        return "missing required " + ", ".join(repr(m) for m in missing)
+    if error.validator == "additionalProperties":
+        extra = sorted(set(error.instance) - set(error.schema.get("properties", {})))
+        hints = []
+        for e in extra:
+            close = difflib.get_close_matches(e, list(error.schema.get("properties", {})), n=1)
+            hints.append(f"{e!r}" + (f" (did you mean {close[0]!r}?)" if close else ""))
+        return "unknown key " + ", ".join(hints)
+    if error.validator == "not" and error.schema.get("anyOf"):
+        return "cannot mix an override with 'uses' or 'loop'"
+    return error.message
+
+
+# --- semantics ----------------------------------------------------------------------------
+
+def _semantic_diagnostics(wf: Workflow, registry: Registry) -> list[Diagnostic]:
+    out: list[Diagnostic] = []
+    steps = wf.all_steps()
+    seen: dict[str, Location | None] = {}
+    for node in [*wf.nodes, *[s for n in wf.nodes if isinstance(n, LoopSpec) for s in n.steps]]:
+        if node.id in seen:
+            out.append(Diagnostic(node.loc, f"duplicate step id {node.id!r} (first defined at {seen[node.id]})"))
+        else:
+            seen[node.id] = node.loc
+    by_id = {s.id: s for s in steps}
+    loops = {n.id: n for n in wf.nodes if isinstance(n, LoopSpec)}
+
+    for name, spec in wf.inputs.items():
+        if not spec.required and not type_matches(spec.default, spec.type, allow_expr=True):
+            out.append(Diagnostic(spec.loc, f"input {name!r}: default {spec.default!r} is not of type {spec.type}"))
+
+    for s in steps:
+        step = registry.get(s.uses)
+        if step is None:
+            close = registry.closest(s.uses)
+            hint = f"; did you mean {', '.join(repr(c) for c in close)}?" if close else ""
+            out.append(Diagnostic(s.raw.where("uses"), f"step {s.id!r}: unknown step {s.uses!r}{hint}"))
+            continue
+        for arg, value in s.args.items():
+            if arg not in step.inputs:
+                close = difflib.get_close_matches(arg, list(step.inputs), n=1)
+                hint = f"; did you mean {close[0]!r}?" if close else f"; it takes {', '.join(step.inputs) or 'none'}"
+                out.append(Diagnostic(s.arg_loc(arg), f"step {s.id!r} ({s.uses}): unknown argument {arg!r}{hint}"))
+                continue
+            declared = step.inputs[arg]
+            if not type_matches(value, declared.type, allow_expr=True):
+                out.append(Diagnostic(s.arg_loc(arg), f"step {s.id!r}: argument {arg!r} must be {declared.type}, got {value!r}"))
+            ref_type = _reference_type(value, wf, by_id, registry)
+            if ref_type and declared.type not in ("any",) and ref_type not in ("any", declared.type) \
+                    and not (declared.type == "number" and ref_type == "integer") \
+                    and not (declared.type == "string" and ref_type == "path") \
+                    and not (declared.type == "path" and ref_type == "string"):
+                out.append(Diagnostic(s.arg_loc(arg), f"step {s.id!r}: argument {arg!r} must be {declared.type}, "
+                                                      f"but {value} is {ref_type}"))
+        for name, declared in step.inputs.items():
+            if declared.required and name not in s.args:
+                out.append(Diagnostic(s.loc, f"step {s.id!r} ({s.uses}): missing required argument {name!r}"
+                                             + (f" ({declared.doc})" if declared.doc else "")))
+
+    out += _reference_diagnostics(wf, by_id, loops, registry)
+    out += _cycle_diagnostics(wf, by_id)
+    return out
+
+
+def _reference_type(value: Any, wf: Workflow, by_id: dict, registry: Registry) -> str | None:
+    """The declared type of a value that is exactly one plain reference, if known."""
+    if not isinstance(value, str):
+        return None
+    try:
+        parts = split_template(value.strip())
+    except ExpressionError:
+        return None
+    if len(parts) != 1 or not parts[0][0]:
+        return None
+    source = parts[0][1]
+    if not all(ch.isalnum() or ch in "._" for ch in source) or source.count(".") != 1:
+        return None
+    name, attr = source.split(".")
+    if name == "inputs" and attr in wf.inputs:
+        return wf.inputs[attr].type
+    if name in by_id:
+        step = registry.get(by_id[name].uses)
+        if step and attr in step.outputs:
+            return step.outputs[attr]
+    return None
+
+
+def _expressions_of(s: StepSpec | LoopSpec) -> list[tuple[Any, Location | None]]:
+    if isinstance(s, LoopSpec):
+        loop = s.raw["loop"]
+        return [(s.when, s.raw.where("when")), (s.max, loop.where("max")), (s.until, loop.where("until"))]
+    return [(v, s.arg_loc(k)) for k, v in s.args.items()] + [(s.when, s.raw.where("when"))]
+
+
+def _reference_diagnostics(wf: Workflow, by_id: dict, loops: dict, registry: Registry) -> list[Diagnostic]:
+    out: list[Diagnostic] = []
+    nodes: list[tuple[StepSpec | LoopSpec, str | None]] = []
+    for n in wf.nodes:
+        nodes.append((n, n.id if isinstance(n, LoopSpec) else None))
+        if isinstance(n, LoopSpec):
+            nodes += [(inner, n.id) for inner in n.steps]
+    owners = wf.node_of()
+    for node, loop_id in nodes:
+        for value, loc in _expressions_of(node):
+            try:
+                refs = template_references(value)
+            except ExpressionError as err:
+                out.append(Diagnostic(loc, f"step {node.id!r}: {err}"))
+                continue
+            for ref in refs:
+                problem = _check_reference(ref, node, loop_id, wf, by_id, loops, owners, registry)
+                if problem:
+                    out.append(Diagnostic(loc, f"step {node.id!r}: {problem}"))
+    output_data = wf.data.get("outputs")
+    for key, value in wf.outputs.items():
+        loc = output_data.where(key) if isinstance(output_data, SourceDict) else None
+        try:
+            refs = template_references(value)
+        except ExpressionError as err:
+            out.append(Diagnostic(loc, f"output {key!r}: {err}"))
+            continue
+        for ref in refs:
+            problem = _check_reference(ref, None, None, wf, by_id, loops, owners, registry)
+            if problem:
+                out.append(Diagnostic(loc, f"output {key!r}: {problem}"))
+    return out
+
+
+def _check_reference(ref: Reference, node, loop_id, wf: Workflow, by_id, loops, owners, registry) -> str | None:
+    if ref.name == "inputs":
+        if ref.attr is None or ref.attr in wf.inputs:
+            return None
+        close = difflib.get_close_matches(ref.attr, list(wf.inputs), n=1)
+        return f"unknown input 'inputs.{ref.attr}'" + (f"; did you mean 'inputs.{close[0]}'?" if close else
+                                                       f"; declared inputs: {', '.join(wf.inputs) or 'none'}")
+    if ref.name == "env":
+        return None
+    if ref.name in ("previous", "iteration"):
+        if loop_id is None:
+            return f"'{ref.name}' is only defined inside a loop"
+        if ref.name == "previous" and ref.attr is not None and ref.attr not in {s.id for s in loops[loop_id].steps}:
+            return f"'previous.{ref.attr}': {ref.attr!r} is not a step of loop {loop_id!r}"
+        return None
+    if ref.name in loops:
+        if ref.attr is not None and ref.attr not in ("iterations", "done"):
+            return f"'{ref.name}.{ref.attr}': a loop's outputs are 'iterations' and 'done'"
+        return None
+    if ref.name not in by_id:
+        close = difflib.get_close_matches(ref.name, list(by_id) + list(loops) + ["inputs", "env"], n=1)
+        return f"unknown reference {ref.name!r}" + (f"; did you mean {close[0]!r}?" if close else "")
+    if node is not None and ref.name == node.id:
+        return f"step {ref.name!r} refers to its own outputs"
+    target = by_id[ref.name]
+    if loop_id is not None and isinstance(node, LoopSpec) and target.loop == loop_id:
+        pass  # until/max of a loop may read its own steps
+    step = registry.get(target.uses)
+    if step is not None and step.outputs and ref.attr is not None and ref.attr not in step.outputs:
+        close = difflib.get_close_matches(ref.attr, list(step.outputs), n=1)
+        return (f"step {ref.name!r} ({target.uses}) has no output {ref.attr!r}"
+                + (f"; did you mean {close[0]!r}?" if close else f"; its outputs: {', '.join(step.outputs)}"))
+    return None
+
+
+def dependency_graph(wf: Workflow) -> nx.DiGraph:
+    """Edges between step ids (inner steps of loops included) read off their references."""
+    graph = nx.DiGraph()
+    ids = {s.id for s in wf.all_steps()} | {n.id for n in wf.nodes}
+    for node in [*wf.nodes, *[s for n in wf.nodes if isinstance(n, LoopSpec) for s in n.steps]]:
+        graph.add_node(node.id)
+        for value, _ in _expressions_of(node):
+            try:
+                refs = template_references(value)
+            except ExpressionError:
+                continue
+            for ref in refs:
+                if ref.name in ids and ref.name != node.id:
+                    if isinstance(node, LoopSpec) and ref.name in {s.id for s in node.steps}:
+                        continue  # a loop's `until` reads its own steps: not a dependency
+                    graph.add_edge(ref.name, node.id)
+    return graph
+
+
+def _cycle_diagnostics(wf: Workflow, by_id: dict) -> list[Diagnostic]:
+    graph = dependency_graph(wf)
+    out = []
+    locations = {s.id: s.loc for s in wf.all_steps()} | {n.id: n.loc for n in wf.nodes}
+    for cycle in nx.simple_cycles(graph):
+        names = " -> ".join([*cycle, cycle[0]])
+        out.append(Diagnostic(locations.get(cycle[0]), f"cycle between steps: {names}"))
+        if len(out) >= 10:
+            break
+    return out
