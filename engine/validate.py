@@ -299,4 +299,11 @@ def _cycle_diagnostics(wf: Workflow, by_id: dict) -> list[Diagnostic]:
         out.append(Diagnostic(locations.get(cycle[0]), f"cycle between steps: {names}"))
         if len(out) >= 10:
             break
+    if not out:  # steps inside a loop and outside it can still form a cycle through the loop
+        owners = wf.node_of()
+        nodes = nx.DiGraph((owners[a], owners[b]) for a, b in graph.edges if owners[a] != owners[b])
+        for cycle in nx.simple_cycles(nodes):
+            names = " -> ".join([*cycle, cycle[0]])
+            out.append(Diagnostic(locations.get(cycle[0]), f"cycle between steps (through a loop): {names}"))
+            break
     return out
