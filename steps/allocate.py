@@ -1,1 +1,62 @@
-"""(to be written)"""
+"""Steps of the ``allocate`` family: skill-based MRTA over the dependency graph (paper Alg. 1 and
+eq. 3), thin faces of :mod:`pipflow.allocation`. All of them output the allocation contract of
+docs/architecture.md, so `schedule` and the metrics do not care which one ran."""
+from __future__ import annotations
+
+from pipflow import Input, StepContext, step
+
+_COMMON = {
+    "graph": Input("object", doc="output of graph.dependencies"),
+    "world": Input("object", doc="output of world.load"),
+    "constraints": Input("array", default=[], doc="only/never rules: [{only|never: [robots], product?, from?, to?}]"),
+    "linear": Input("array", default=[],
+                    doc="extra linear constraints: [{robots: [..]|all, coef: n|{robot: n}, skill?, sense, rhs, <field>?}]"),
+    "speed": Input("number", default=1.0, doc="robot speed, m/s (times in stats and frontier mode)"),
+    "handling": Input("number", default=2.0, doc="seconds of loading/unloading per route stop"),
+}
+
+
+def _run(ctx: StepContext, method: str, graph: dict, world: dict, constraints, linear, speed, handling,
+         mode: str = "subtask", time_limit: float = 10.0) -> dict:
+
+    from pipflow.allocation import allocate
+
+    result = allocate(graph, world, method=method, constraints=constraints or [], linear=linear or [],
+                      mode=mode, speed=speed, handling=handling, time_limit=time_limit)
+    ctx.write_artifact("allocation.json", result)
+    st = result["stats"]
+    ctx.metrics.update({"alloc_median_ms": st["solve_median_ms"], **{f"predicted_{k}": v for k, v in st["predicted"].items()}})
+    ctx.log(f"allocated {st['subtasks']} subtasks ({result['method']}), median solve {st['solve_median_ms']:.1f} ms")
+    return {"allocation": result}
+
+
+@step("allocate.scip",
+      doc="Lexicographic IP per subtask (min max cost, then min total) with SCIP; or frontier mode.",
+      inputs={**_COMMON,
+              "mode": Input("string", default="subtask", choices=("subtask", "frontier"),
+                            doc="subtask: the paper's one IP per subtask; frontier: all ready subtasks in one IP"),
+              "time_limit": Input("number", default=10.0, doc="seconds per frontier wave (frontier mode)"),
+              "naive": Input("boolean", default=False, doc="solve the first stage as a full SCIP model (slow; for comparison)")},
+      outputs={"allocation": "object"}, cacheable=True)
+def scip(ctx: StepContext, graph: dict, world: dict, constraints: list = (), linear: list = (),
+         speed: float = 1.0, handling: float = 2.0, mode: str = "subtask", time_limit: float = 10.0,
+         naive: bool = False) -> dict:
+    """The paper's allocator; the fast first stage gives the same optimum as the naive model."""
+    return _run(ctx, "naive" if naive else "scip", graph, world, constraints, linear, speed, handling,
+                mode, time_limit)
+
+
+@step("allocate.greedy", doc="Baseline: nearest capable robots first until the skills are covered.",
+      inputs=dict(_COMMON), outputs={"allocation": "object"}, cacheable=True)
+def greedy(ctx: StepContext, graph: dict, world: dict, constraints: list = (), linear: list = (),
+           speed: float = 1.0, handling: float = 2.0) -> dict:
+    """Greedy baseline for comparison with the IP."""
+    return _run(ctx, "greedy", graph, world, constraints, linear, speed, handling)
+
+
+@step("allocate.blind", doc="Ablation (paper's w/o AS): fewest robots by robot order, ignoring travel cost.",
+      inputs=dict(_COMMON), outputs={"allocation": "object"}, cacheable=True)
+def blind(ctx: StepContext, graph: dict, world: dict, constraints: list = (), linear: list = (),
+          speed: float = 1.0, handling: float = 2.0) -> dict:
+    """Cost-blind allocation: shows what the allocation strategy buys."""
+    return _run(ctx, "blind", graph, world, constraints, linear, speed, handling)

@@ -46,14 +46,13 @@ def _read_metadata(ctx: StepContext, value) -> dict:
 def dependencies(ctx: StepContext, domain: str, problem: str, plan: list, actions,
                  mode: str = "exact", picture: bool = True) -> dict:
     """Ground the plan with unified-planning and link actions whose fluents interact."""
-    import json
 
     from pipflow.dependency import build_graph, draw, to_dot
 
     graph = build_graph(_read_text(ctx, domain), _read_text(ctx, problem), plan,
                         _read_metadata(ctx, actions), mode=mode)
-    ctx.artifact_path("graph.json").write_text(json.dumps(graph, indent=2))
-    ctx.artifact_path("graph.dot").write_text(to_dot(graph))
+    ctx.write_artifact("graph.json", graph)
+    ctx.write_artifact("graph.dot", to_dot(graph))
     if picture:
         draw(graph, ctx.artifact_path("graph.png"))
     ctx.metrics.update({"subtasks": len(graph["nodes"]), "edges": len(graph["edges"])})
