@@ -8,7 +8,8 @@ A run succeeds when, judged on what the *simulation* reports (never on what the 
 * units are conserved (per product, the final shelves hold what the initial shelves held, and no
   unit lies off the shelves);
 * no shelf ever held more than its capacity (the simulator's ``peak_load``);
-* every move's coalition had the skill levels it needs (summed per skill).
+* every move's coalition had the skill levels it needs (summed per skill);
+* every robot's legs connect (the simulator reports ``jumps`` otherwise).
 
 A task marked ``feasible: false`` succeeds only when it was refused with a reason and nothing was
 executed.
@@ -216,6 +217,8 @@ def score_run(world: dict, goal: dict, *, constraints: list | None = None, feasi
     violations += conservation_violations(world, final, int(sim.get("stray_units", 0)))
     violations += capacity_violations(world, sim.get("peak_load"), final)
     violations += skill_violations(moves, world)
+    for robot, jumps in (sim.get("jumps") or {}).items():
+        violations += [f"{robot} jumps {j['metres']:g} m at t={j['time']:g} (legs do not connect)" for j in jumps]
     lb = plan_lower_bound(world, goal, max_units_per_move)
     if planned == 0:
         ru = 1.0 if lb == 0 else 0.0

@@ -155,6 +155,13 @@ class Trajectory:
             self.segments.append((t0, max(t1, t0), pts, cum))
         if self.segments:
             self.start = self.segments[0][2][0]
+        # a leg that does not begin where the previous one ended would make the body jump
+        self.jumps: list[dict] = []
+        for (_, e0, p0, _), (s1, _, p1, _) in zip(self.segments, self.segments[1:]):
+            gap = _dist(p0[-1], p1[0])
+            if gap > ARRIVAL_TOLERANCE:
+                self.jumps.append({"time": round(s1, 3), "from": list(p0[-1]), "to": list(p1[0]),
+                                   "metres": round(gap, 3)})
 
     def position(self, t: float) -> Point:
         """Where the plan puts the robot at time t."""
@@ -396,7 +403,8 @@ def simulate(world: dict, schedule: dict, graph: dict | None = None, goal: dict 
     """Run ``schedule`` in pybullet and return what the world looks like afterwards.
 
     Returns ``{final_stock, executed, failed, failures, exe, travel, tc_max, tc_avg, goal_met,
-    gcr, peak_load, stray_units, makespan, trajectories, events, pictures}``; pictures (file
+    gcr, peak_load, stray_units, jumps, makespan, trajectories, events, pictures}``; ``jumps``
+    lists legs that start away from where the robot stood (a broken schedule: the body jumps); pictures (file
     names in ``out_dir``) only when ``out_dir`` is given."""
     log = log or (lambda m: None)
     moves = moves_from(schedule, graph)
@@ -503,6 +511,7 @@ def simulate(world: dict, schedule: dict, graph: dict | None = None, goal: dict 
         "travel": {r: round(v, 4) for r, v in travel.items()},
         "tc_max": round(max(tc), 4) if tc else 0.0, "tc_avg": round(sum(tc) / len(tc), 4) if tc else 0.0,
         "goal_met": gm, "gcr": gcr, "peak_load": peak, "stray_units": stray,
+        "jumps": {r: t.jumps for r, t in traj.items() if t.jumps},
         "makespan": round(makespan, 4), "events": log_events,
         "trajectories": {r: [[round(v, 4) for v in row] for row in pts] for r, pts in paths.items()},
         "pictures": pictures,

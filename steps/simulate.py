@@ -20,6 +20,7 @@ from pipflow import Input, StepContext, step
         "final_stock": "object", "executed": "integer", "failed": "integer", "failures": "array",
         "exe": "number", "travel": "object", "tc_max": "number", "tc_avg": "number",
         "goal_met": "boolean", "gcr": "number", "peak_load": "object", "stray_units": "integer",
+        "jumps": "object",
         "makespan": "number", "pictures": "array",
     },
     version="1",
