@@ -1,0 +1,403 @@
+"""The offline translator: a command and a world in, the goal and robot-use rules out.
+
+It is the default generator (model ``offline``), so ``pipflow run`` works with no key and no
+network, and it is the reference an LLM's output is compared with. It is deterministic and
+honest: every name is read from the world (:mod:`names`), counts from words and sums
+(:mod:`numbers`), relative and quantified amounts against the stock (:mod:`quantities`), robot
+rules by word classes (:mod:`rules`). What it cannot resolve is a :class:`TranslationError`
+that quotes the words; it never passes off a guess as certain.
+
+How clauses bind (one sentence at a time, split at ``. ; ! ?``):
+
+* counts before a shelf bind to it: "2 product2, 7 product3 in shelf3, 3 product2 in shelf2";
+* a shelf that opens a clause ("On shelf4, there oughta be ...", "shelf4 has/stores ...") takes
+  the counts that follow; a later "... and 5 product2 on shelf2" takes only its own count;
+* "from A to B" moves units (B gains, A loses); "from A" alone removes them;
+* "add/bring/move/deliver N X to S" adds N; "put/there should be N X on S" sets N.
+* a sentence part that names a robot is a rule (:mod:`rules`), e.g. "But robot 0 should not ...".
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from pipflow.errors import TranslationError
+from pipflow.language import quantities as q
+from pipflow.language.names import NameIndex, Tok, tokenize
+from pipflow.language.quantities import Amount
+from pipflow.language.rules import parse_rule
+
+SENTENCE_END = {".", ";", "!", "?"}
+RULE_BOUNDARY = {",", "and", "but", "while", "whereas", "however", ":"}
+GOAL_RULE_BOUNDARY = {",", "and", "but", "using", "with", "by", "while", "whereas", "though", ":"}
+FROM_PREPS = {"from", "off"}
+TO_PREPS = {"in", "on", "at", "to", "into", "onto", "inside", "within", "for"}
+ADD_VERBS = {"add", "adds", "bring", "brings", "move", "moves", "transfer", "deliver", "carry",
+             "ship", "send", "shift", "relocate", "take", "restock"}
+MORE = {"more", "extra", "additional"}
+FEWER = {"fewer", "less"}
+MULTIPLIERS = {"double": 2, "twice": 2, "triple": 3, "thrice": 3, "quadruple": 4}
+FILLER = {"of", "the", "units", "unit", "pieces", "piece", "boxes", "box", "crates", "crate",
+          "cases", "case", "pcs", "x", "as", "many", "much", "number", "amount", "count"}
+EMPTY_WORDS = {"empty", "emptied", "nothing", "clear", "cleared", "vacant"}
+FILL_WORDS = {"full", "fill", "filled", "fills"}
+EVEN_WORDS = {"evenly", "equally"}
+SPLIT_VERBS = {"split", "divide", "distribute", "share", "spread"}
+BETWEEN = {"between", "among", "amongst", "across"}
+ONLY_WORDS = {"only", "just", "exclusively", "solely"}
+
+
+def _phrase(toks: list[Tok]) -> str:
+    return " ".join(t.text for t in toks)
+
+
+@dataclass
+class _Item:
+    product: str | None  # None: the amount covers the whole shelf ("empty")
+    amount: Amount
+
+
+@dataclass
+class _Group:
+    """Items read together, and the shelves they go to (or come from)."""
+
+    items: list[_Item] = field(default_factory=list)
+    head: str | None = None
+    target: str | None = None
+    source: str | None = None
+
+
+class _Goal:
+    """The goal being built, with the rule that one command may not set one count twice."""
+
+    def __init__(self, world: dict):
+        self.world = world
+        self.counts: dict[str, dict[str, int]] = {}
+        self.fixed: dict[tuple[str, str], str] = {}  # set absolutely, by these words
+        self.fills: list[tuple[str, str, bool]] = []
+
+    def current(self, shelf: str, product: str) -> int | None:
+        return self.counts.get(shelf, {}).get(product)
+
+    def set(self, shelf: str, product: str, value: int, words: str, absolute: bool) -> None:
+        key = (shelf, product)
+        old = self.current(shelf, product)
+        if absolute and key in self.fixed and old != value:
+            raise TranslationError(f"the command sets {product} on {shelf} twice: "
+                                   f"'{self.fixed[key]}' gives {old}, '{words}' gives {value}")
+        if absolute:
+            self.fixed[key] = words
+        self.counts.setdefault(shelf, {})[product] = value
+
+    def apply(self, shelf: str, item: _Item, add: bool) -> None:
+        a = item.amount
+        if a.mode == "empty":
+            for p, v in q.empty(self.world, shelf).items():
+                self.set(shelf, p, v, a.text, absolute=True)
+        elif a.mode in ("full", "full_only"):
+            self.fills.append((shelf, str(item.product), a.mode == "full_only"))
+        else:
+            if add and a.mode == "exact":
+                a = Amount("more", a.value, a.text)
+            p = str(item.product)
+            value = q.resolve(a, shelf, p, self.world, self.current(shelf, p))
+            self.set(shelf, p, value, a.text, absolute=a.mode in ("exact", "all", "none"))
+
+    def move(self, source: str, target: str | None, item: _Item) -> None:
+        a = item.amount
+        if a.mode == "empty":  # "remove everything from shelf4"
+            for p, v in q.empty(self.world, source).items():
+                self.set(source, p, v, a.text, absolute=True)
+            return
+        p = str(item.product)
+        n = q.moved(a, source, p, self.world, self.current(source, p))
+        left = q.resolve(Amount("fewer", n, a.text), source, p, self.world, self.current(source, p))
+        self.set(source, p, left, a.text, absolute=False)
+        if target is not None:
+            self.set(target, p, q.resolve(Amount("more", n, a.text), target, p, self.world,
+                                          self.current(target, p)), a.text, absolute=False)
+
+    def finish(self) -> dict[str, dict[str, int]]:
+        for shelf, product, only in self.fills:
+            row = q.fill(self.world, shelf, product, self.counts.get(shelf, {}), only)
+            for p, v in row.items():
+                self.set(shelf, p, v, f"full of {product}", absolute=True)
+        return self.counts
+
+
+class _Reader:
+    """Reads the goal clauses of one command against one world."""
+
+    def __init__(self, world: dict, index: NameIndex, goal: _Goal):
+        self.world, self.index, self.goal = world, index, goal
+
+    # -- names -------------------------------------------------------------------------------
+    def shelf(self, t: Tok) -> str:
+        if t.kind == "name":
+            return str(t.value)
+        shelves = self.index.by_kind["shelf"]
+        if len(shelves) == 1:
+            return shelves[0]
+        raise TranslationError(f"'{t.text}' does not say which shelf "
+                               f"(candidates: {self.index.candidates('shelf')})")
+
+    def _no_product(self, t: Tok, words: str) -> TranslationError:
+        return TranslationError(f"'{words}' does not say which product "
+                                f"(candidates: {self.index.candidates('product')})")
+
+    # -- items -------------------------------------------------------------------------------
+    def _skip(self, toks: list[Tok], j: int, words: set[str]) -> int:
+        while j < len(toks) and toks[j].kind == "word" and toks[j].value in words:
+            j += 1
+        return j
+
+    def _elided(self, toks: list[Tok], j: int) -> bool:
+        """A count followed by a shelf with no product: "3 product2 in shelf4, 5 in shelf2"."""
+        k = self._skip(toks, j, MORE | FEWER)
+        if k < len(toks) and toks[k].kind == "word" and toks[k].value in TO_PREPS | FROM_PREPS:
+            k = self._skip(toks, k + 1, {"the"})
+            return k < len(toks) and toks[k].of == "shelf"
+        return False
+
+    def item(self, toks: list[Tok], i: int, last: str | None, fill: bool, only: bool
+             ) -> tuple[list[_Item], int] | None:
+        """The amount and product at ``toks[i]``, or None when no item starts there."""
+        t = toks[i]
+        w = t.value if t.kind == "word" else None
+        if t.kind == "num":
+            j, mode = i + 1, "exact"
+            if j < len(toks) and toks[j].is_word(*MORE):
+                mode, j = "more", j + 1
+            elif j < len(toks) and toks[j].is_word(*FEWER):
+                mode, j = "fewer", j + 1
+            elif j < len(toks) and toks[j].is_word("times") and j + 1 < len(toks) \
+                    and toks[j + 1].is_word("as", "more"):
+                mode, j = "times", j + 2
+            k = self._skip(toks, j, FILLER)
+            if k < len(toks) and toks[k].kind == "name" and toks[k].of == "product":
+                words = _phrase(toks[i:k + 1])
+                return [_Item(str(toks[k].value), Amount(mode, int(t.value), words))], k + 1
+            if k < len(toks) and toks[k].kind == "kind" and toks[k].of == "product":
+                raise self._no_product(toks[k], _phrase(toks[i:k + 1]))
+            if self._elided(toks, j) and last is not None:
+                return [_Item(last, Amount(mode, int(t.value), _phrase(toks[i:j])))], j
+            shown = _phrase(toks[i:min(k + 1, len(toks))])
+            raise TranslationError(f"'{shown}': cannot tell which product this count is for "
+                                   f"(candidates: {self.index.candidates('product')})")
+        if w in MULTIPLIERS or w == "half":
+            k = self._skip(toks, i + 1, FILLER)
+            if k < len(toks) and toks[k].kind == "name" and toks[k].of == "product":
+                words = _phrase(toks[i:k + 1])
+                a = Amount("half", 0, words) if w == "half" else Amount("times", MULTIPLIERS[w], words)
+                return [_Item(str(toks[k].value), a)], k + 1
+            return None
+        if w in ("all", "every", "each", "no", "none"):
+            k = self._skip(toks, i + 1, FILLER | {"more"})
+            mode = "none" if w in ("no", "none") else "all"
+            if k < len(toks) and toks[k].kind == "name" and toks[k].of == "product":
+                return [_Item(str(toks[k].value), Amount(mode, 0, _phrase(toks[i:k + 1])))], k + 1
+            if k < len(toks) and toks[k].kind == "kind" and toks[k].of == "product":
+                words = _phrase(toks[i:k + 1])
+                if mode == "none":
+                    return [_Item(None, Amount("empty", 0, words))], k + 1
+                return [_Item(p, Amount("all", 0, words)) for p in self.index.by_kind["product"]], k + 1
+            return None
+        if w in ("a", "an") and i + 1 < len(toks) and toks[i + 1].of == "product" \
+                and toks[i + 1].kind == "name":
+            return [_Item(str(toks[i + 1].value), Amount("exact", 1, _phrase(toks[i:i + 2])))], i + 2
+        if w in EMPTY_WORDS:
+            return [_Item(None, Amount("empty", 0, t.text))], i + 1
+        if t.kind == "name" and t.of == "product":
+            if fill:
+                return [_Item(str(t.value), Amount("full_only" if only else "full", 0,
+                                                   f"full of {t.text}"))], i + 1
+            raise TranslationError(f"'{t.text}': the command gives no count for it")
+        return None
+
+    # -- clauses -----------------------------------------------------------------------------
+    def _prep(self, toks: list[Tok], i: int) -> str | None:
+        j = i - 1
+        while j >= 0 and toks[j].is_word("the"):
+            j -= 1
+        if j < 0 or toks[j].kind != "word":
+            return None
+        if toks[j].value in FROM_PREPS or (toks[j].value == "of" and j > 0 and toks[j - 1].is_word("out")):
+            return "from"
+        return "to" if toks[j].value in TO_PREPS else None
+
+    def evenly(self, toks: list[Tok]) -> bool:
+        """ "split 10 product1 evenly between shelf1 and shelf2": True when handled."""
+        words = {t.value for t in toks if t.kind == "word"}
+        if not (words & EVEN_WORDS or words & SPLIT_VERBS) or not words & BETWEEN:
+            return False
+        b = next(k for k, t in enumerate(toks) if t.is_word(*BETWEEN))
+        shelves = [self.shelf(t) for t in toks[b:] if t.of == "shelf"]
+        if len(shelves) < 2:
+            raise TranslationError(f"'{_phrase(toks[b:])}' names fewer than two shelves to share between "
+                                   f"(candidates: {self.index.candidates('shelf')})")
+        items: list[tuple[str, int, str]] = []
+        i = 0
+        while i < b:
+            t = toks[i]
+            got = self.item(toks, i, None, False, False) if t.kind != "name" else None
+            if got:
+                for it in got[0]:
+                    if it.amount.mode == "exact":
+                        items.append((str(it.product), it.amount.value, it.amount.text))
+                    elif it.amount.mode == "all":
+                        items.append((str(it.product), q.total(self.world, str(it.product)), it.amount.text))
+                    else:
+                        raise TranslationError(f"'{it.amount.text}' cannot be shared evenly")
+                i = got[1]
+                continue
+            if t.kind == "name" and t.of == "product":  # no count: all of it
+                items.append((str(t.value), q.total(self.world, str(t.value)), t.text))
+            i += 1
+        if not items:
+            raise self._no_product(toks[0], _phrase(toks))
+        for product, units, words in items:
+            for s, v in q.split_evenly(units, shelves).items():
+                self.goal.set(s, product, v, words, absolute=True)
+        return True
+
+    def clause(self, toks: list[Tok]) -> None:
+        """Read one goal clause (a sentence, or its part before a rule)."""
+        if self.evenly(toks):
+            return
+        words = {t.value for t in toks if t.kind == "word"}
+        add = bool(words & ADD_VERBS)
+        fill = bool(words & FILL_WORDS)
+        only = bool(words & ONLY_WORDS) or "nothing but" in " ".join(str(t.value) for t in toks)
+        head: str | None = None
+        cur = _Group()
+        groups = [cur]
+        last: str | None = None
+        i = 0
+        while i < len(toks):
+            t = toks[i]
+            if t.of == "shelf":
+                shelf = self.shelf(t)
+                prep = self._prep(toks, i)
+                if prep == "from":
+                    if cur.source is not None or (cur.target is not None and not cur.items):
+                        cur = _Group(head=head)
+                        groups.append(cur)
+                    cur.source = shelf
+                elif prep == "to" and cur.items and cur.target is None:
+                    if head is not None and shelf != head and len(cur.items) > 1 and cur.source is None:
+                        moved = cur.items.pop()
+                        cur = _Group([moved], head=head, target=shelf)
+                        groups.append(cur)
+                    else:
+                        cur.target = shelf
+                elif prep is None and cur.items and cur.target is None and cur.source is None \
+                        and head is None:
+                    cur.target = shelf  # "empty shelf4", "clear shelf4"
+                else:
+                    head = shelf
+                    cur = _Group(head=head)
+                    groups.append(cur)
+                i += 1
+                continue
+            if fill and only and t.is_word("nothing") and i + 1 < len(toks) and toks[i + 1].is_word("but"):
+                i += 2
+                continue
+            got = self.item(toks, i, last, fill, only)
+            if got is None:
+                i += 1
+                continue
+            items, i = got
+            if cur.target is not None:
+                cur = _Group(head=head)
+                groups.append(cur)
+            cur.items.extend(items)
+            last = items[-1].product or last
+        for g in groups:
+            if not g.items:
+                continue
+            if g.source is not None:
+                for it in g.items:
+                    self.goal.move(g.source, g.target, it)
+                continue
+            target = g.target or g.head
+            if target is None:
+                raise TranslationError(
+                    f"'{', '.join(it.amount.text for it in g.items)}': the command does not say "
+                    f"which shelf (candidates: {self.index.candidates('shelf')})")
+            for it in g.items:
+                self.goal.apply(target, it, add)
+
+
+def _split(toks: list[Tok], ends: set[str]) -> list[list[Tok]]:
+    out: list[list[Tok]] = [[]]
+    for t in toks:
+        if t.kind == "punct" and t.value in ends:
+            out.append([])
+        else:
+            out[-1].append(t)
+    return [s for s in out if s]
+
+
+def _is_robot(t: Tok) -> bool:
+    return t.kind == "name" and t.of == "robot"
+
+
+def _boundary(t: Tok, words: set[str]) -> bool:
+    return (t.kind == "punct" and t.value in words) or (t.kind == "word" and t.value in words)
+
+
+def _parts(sentence: list[Tok]) -> tuple[list[Tok], list[list[Tok]]]:
+    """Split a sentence into its goal part and its rule clauses (parts that name robots)."""
+    first = next((k for k, t in enumerate(sentence) if _is_robot(t)), None)
+    if first is None:
+        return sentence, []
+    cut = 0
+    for k in range(first - 1, 0, -1):
+        if _boundary(sentence[k], GOAL_RULE_BOUNDARY) and any(
+                t.kind in ("num", "name") and t.of != "robot" for t in sentence[:k]) and any(
+                t.of == "shelf" for t in sentence[:k]):
+            cut = k
+            break
+    goal, rest = sentence[:cut], sentence[cut:]
+    chunks: list[list[Tok]] = [[]]
+    for t in rest:
+        if _boundary(t, RULE_BOUNDARY):
+            chunks.append([t])
+        else:
+            chunks[-1].append(t)
+    merged: list[list[Tok]] = []
+    for c in chunks:
+        bare = merged and all(t.kind in ("num", "punct") or _is_robot(t) or t.of == "robot"
+                              or t.is_word("the", "and", "or") for t in merged[-1])
+        if merged and (bare or not any(_is_robot(t) for t in c)):
+            merged[-1].extend(c)
+        elif c:
+            merged.append(c)
+    return goal, merged
+
+
+def translate(command: str, world: dict) -> dict:
+    """Translate a command into ``{"goal": {SHELF: {PRODUCT: units}}, "constraints": [...]}``.
+
+    ``world`` is the world file's content (shelves, products, stock, robots). Raises
+    :class:`TranslationError` for what it cannot resolve and :class:`Refusal` for counts that
+    cannot exist (below zero, over a shelf's capacity when filling it).
+    """
+    index = NameIndex(world)
+    toks = tokenize(command, index)
+    goal = _Goal(world)
+    reader = _Reader(world, index, goal)
+    constraints: list[dict] = []
+    for sentence in _split(toks, SENTENCE_END):
+        goal_part, rules = _parts(sentence)
+        if goal_part:
+            reader.clause(goal_part)
+        for r in rules:
+            for item in parse_rule(r, index):
+                if item not in constraints:
+                    constraints.append(item)
+    counts = goal.finish()
+    if not counts and not constraints:
+        raise TranslationError(f"found no goal and no robot rule in '{command}' "
+                               f"(shelves: {index.candidates('shelf')}; "
+                               f"products: {index.candidates('product')})")
+    return {"goal": counts, "constraints": constraints}
