@@ -1,0 +1,32 @@
+"""World + goal -> PDDL problem text for domains/warehouse.pddl.
+
+The back half of the offline problem generator: its objects and initial state are exactly the
+world's (every stock count written, zeros included, because ENHSP treats an unset fluent as
+undefined rather than 0), and the goal is one ``(= (stock s p) n)`` per listed count.
+"""
+from __future__ import annotations
+
+MAGNITUDES: dict[str, int] = {f"magnitude{k}": k for k in range(1, 7)}
+"""The paper's magnitude objects and the units each stands for (fluent ``amount``)."""
+
+
+def write_problem(world: dict, goal: dict[str, dict[str, int]], name: str = "task",
+                  domain: str = "warehouse") -> str:
+    """PDDL problem text for moving the world's stock to ``goal`` (``{shelf: {product: n}}``)."""
+    shelves, products = list(world["shelves"]), list(world["products"])
+    lines = [f"(define (problem {name})", f"  (:domain {domain})", "  (:objects"]
+    lines.append(f"    {' '.join(shelves)} - shelf")
+    lines.append(f"    {' '.join(products)} - product")
+    lines.append(f"    {' '.join(MAGNITUDES)} - magnitude)")
+    lines.append("  (:init")
+    for s in shelves:
+        stock = world["stock"].get(s, {})
+        counts = " ".join(f"(= (stock {s} {p}) {stock.get(p, 0)})" for p in products)
+        lines.append(f"    {counts}")
+        lines.append(f"    (= (load {s}) {sum(stock.values())}) (= (capacity {s}) {world['shelves'][s]['capacity']})")
+    lines.append("    " + " ".join(f"(= (amount {m}) {k})" for m, k in MAGNITUDES.items()) + ")")
+    conds = [f"(= (stock {s} {p}) {n})" for s, items in goal.items() for p, n in items.items()]
+    lines.append("  (:goal (and")
+    lines += [f"    {c}" for c in conds]
+    lines.append("  )))")
+    return "\n".join(lines) + "\n"
