@@ -24,8 +24,8 @@ NO_USAGE: dict[str, Any] = {"calls": 0, "cached": False, "prompt_tokens": 0, "co
 
 
 def write_problem(world: dict, goal: dict) -> str:
-    """The problem writer of :mod:`pipflow.pddl` (imported late: it loads unified-planning)."""
-    from pipflow.pddl.problem import write_problem as writer
+    """The problem writer of :mod:`pipflow.pddl.writer` (imported late, like every pddl helper)."""
+    from pipflow.pddl.writer import write_problem as writer
 
     return writer(world, goal)
 

@@ -97,7 +97,9 @@ def complete(
                 attempt += 1
                 continue
             tries = f" after {attempt + 1} attempts" if attempt else ""
-            raise LLMError(f"{model}: {kind}{tries}: {redact(str(exc))}") from None
+            hint = (f" (is the server at {api_base} running?)"
+                    if api_base and "connection error" in str(exc).lower() else "")
+            raise LLMError(f"{model}: {kind}{tries}: {redact(str(exc))}{hint}") from None
     latency = time.perf_counter() - start
     text = response.choices[0].message.content or ""
     return Completion(text=text, usage=_usage(litellm, response, latency, attempt))
