@@ -1,0 +1,72 @@
+"""Shared pytest fixtures.
+
+Engine fixtures (used by tests/test_engine_*.py): an isolated working folder and step cache, and
+the demo step plugin of tests/fixtures/plugin_pkg installed once per session into a private
+folder (never into the environment itself)."""
+from __future__ import annotations
+
+import importlib
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+TESTS = Path(__file__).resolve().parent
+PLUGIN_PKG = TESTS / "fixtures" / "plugin_pkg"
+
+
+def _can_build_without_isolation() -> bool:
+    """setuptools builds wheels itself from 70.1 on; before that it needs the `wheel` package."""
+    try:
+        import setuptools
+    except ImportError:
+        return False
+    try:
+        import wheel  # noqa: F401
+        return True
+    except ImportError:
+        pass
+    major, minor = (int(x) for x in setuptools.__version__.split(".")[:2])
+    return (major, minor) >= (70, 1)
+
+
+@pytest.fixture(scope="session")
+def demo_plugin_site(tmp_path_factory) -> Path:
+    """Copy the demo plugin package to a temp dir and pip-install it (no deps) into a private
+    site folder; returns that folder (put it on PYTHONPATH / sys.path to use the plugin)."""
+    root = tmp_path_factory.mktemp("demo_plugin")
+    pkg, site = root / "pkg", root / "site"
+    shutil.copytree(PLUGIN_PKG, pkg, ignore=shutil.ignore_patterns("__pycache__", "*.egg-info", "build"))
+    cmd = [sys.executable, "-m", "pip", "install", "--no-deps", "--disable-pip-version-check", "-q",
+           "--target", str(site), str(pkg)]
+    if _can_build_without_isolation():
+        cmd[4:4] = ["--no-build-isolation", "--no-index"]  # fast and fully offline
+    proc = subprocess.run(cmd, capture_output=True, text=True)
+    assert proc.returncode == 0, f"pip install of the demo plugin failed:\n{proc.stdout}\n{proc.stderr}"
+    assert (site / "pipflow_demo_plugin" / "__init__.py").exists()
+    assert not (site / "pipflow").exists(), "installing the plugin must not install (or fetch) pipflow"
+    return site
+
+
+@pytest.fixture
+def demo_registry(demo_plugin_site, monkeypatch):
+    """The default step registry rebuilt with the demo plugin's site folder on sys.path, so that
+    the plugin is found through its entry point like any installed plugin; restored afterwards."""
+    from pipflow.engine import registry as reg
+
+    monkeypatch.syspath_prepend(str(demo_plugin_site))
+    importlib.invalidate_caches()
+    monkeypatch.setattr(reg, "_default", None)
+    registry = reg.default_registry()
+    assert "demo.shout" in registry, "demo plugin not found through the pipflow.steps entry point"
+    yield registry
+
+
+@pytest.fixture
+def engine_env(tmp_path, monkeypatch) -> Path:
+    """Run in a temp working folder with a private step cache; returns the folder."""
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setenv("PIPFLOW_CACHE_DIR", str(tmp_path / "cache"))
+    return tmp_path
