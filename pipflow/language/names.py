@@ -131,9 +131,10 @@ class NameIndex:
             for n in found:
                 alpha, digits = split_digits(normalize(str(n)))
                 self.names.append(_Name(str(n), kind, alpha, digits))
+        # Stems the world's own names share ("bin" of bin7) forgive misspellings; the English
+        # kind words must be spelled right, or "gets" would pass for a misspelt "agents".
         self.stems: dict[str, set[str]] = {
-            kind: set(KIND_WORDS[kind]) | {n.alpha for n in self.names if n.kind == kind and n.digits}
-            for kind in KINDS
+            kind: {n.alpha for n in self.names if n.kind == kind and n.digits} for kind in KINDS
         }
 
     def candidates(self, kind: str) -> str:
@@ -149,11 +150,12 @@ class NameIndex:
         """The kind a bare word names ("shelves", "prodcut" -> product), if any."""
         hits = set()
         for kind in KINDS:
-            for stem in self.stems[kind]:
-                for v in _variants(alpha):
-                    if v == stem or (alpha not in STOPWORDS
-                                     and distance(v, stem) <= tolerance(len(stem))):
-                        hits.add(kind)
+            for v in _variants(alpha):
+                if v in KIND_WORDS[kind] or v in self.stems[kind]:
+                    hits.add(kind)
+                elif alpha not in STOPWORDS and any(
+                        distance(v, stem) <= tolerance(len(stem)) for stem in self.stems[kind]):
+                    hits.add(kind)
         if len(hits) > 1:
             raise TranslationError(f"{_quote(alpha)} could name a {' or a '.join(sorted(hits))}")
         return hits.pop() if hits else None
@@ -204,7 +206,7 @@ class NameIndex:
                 found = self.lookup(alpha, str(n), text)
                 if found is not None:
                     return found, i + 2
-            if low not in STOPWORDS and nxt not in STOPWORDS:  # a name written apart: "cold store"
+            if not n:  # a name written apart ("cold store", "rack a"): exact spelling only
                 both = normalize(low + nxt)
                 hit = [x for x in self.names if x.alpha + x.digits == both]
                 if hit:

@@ -345,6 +345,12 @@ def _boundary(t: Tok, words: set[str]) -> bool:
     return (t.kind == "punct" and t.value in words) or (t.kind == "word" and t.value in words)
 
 
+def _bare(chunk: list[Tok]) -> bool:
+    """A chunk that only lists robots ("robot 2", "and robot 3"): part of its neighbour's rule."""
+    return all(t.kind in ("num", "punct") or t.of == "robot" or t.is_word("the", "and", "or")
+               for t in chunk)
+
+
 def _parts(sentence: list[Tok]) -> tuple[list[Tok], list[list[Tok]]]:
     """Split a sentence into its goal part and its rule clauses (parts that name robots)."""
     first = next((k for k, t in enumerate(sentence) if _is_robot(t)), None)
@@ -366,9 +372,7 @@ def _parts(sentence: list[Tok]) -> tuple[list[Tok], list[list[Tok]]]:
             chunks[-1].append(t)
     merged: list[list[Tok]] = []
     for c in chunks:
-        bare = merged and all(t.kind in ("num", "punct") or _is_robot(t) or t.of == "robot"
-                              or t.is_word("the", "and", "or") for t in merged[-1])
-        if merged and (bare or not any(_is_robot(t) for t in c)):
+        if merged and (_bare(merged[-1]) or _bare(c) or not any(_is_robot(t) for t in c)):
             merged[-1].extend(c)
         elif c:
             merged.append(c)

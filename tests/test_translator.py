@@ -1,0 +1,294 @@
+"""Tests of the offline translator (pipflow.language.translator and its helper modules).
+
+The paper's ten commands must give the gold exactly; the rest runs on worlds made up here, with
+other names and more robots, so nothing can lean on the benchmark's names.
+"""
+from __future__ import annotations
+
+import ast
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+import yaml
+
+from pipflow.errors import Refusal, TranslationError
+from pipflow.language.names import distance
+from pipflow.language.numbers import read_number
+from pipflow.language.quantities import split_evenly
+from pipflow.language.translator import translate
+
+ROOT = Path(__file__).resolve().parent.parent
+TASKS = ROOT / "benchmarks" / "warehouse" / "tasks.yaml"
+
+
+def _paper() -> tuple[dict, list[dict]]:
+    spec = yaml.safe_load(TASKS.read_text())
+    return yaml.safe_load((TASKS.parent / spec["world"]).read_text()), spec["tasks"]
+
+
+PAPER_WORLD, PAPER_TASKS = _paper()
+
+# A made-up world: other shelf, product and robot names, 20 robots.
+DEPOT = {
+    "shelves": {
+        "rack_a": {"capacity": 20}, "rack_b": {"capacity": 20}, "bin7": {"capacity": 10},
+        "box7": {"capacity": 8}, "cold-store": {"capacity": 50},
+    },
+    "products": {"apple": {}, "widget2": {}, "pear": {}},
+    "stock": {
+        "rack_a": {"apple": 4, "pear": 3}, "rack_b": {"widget2": 6}, "bin7": {"widget2": 5},
+        "box7": {}, "cold-store": {"apple": 1, "pear": 8},
+    },
+    "robots": {f"r{i}": {} for i in range(1, 21)},
+}
+
+# A world in the benchmark's style but with other numbers and more robots.
+HALL = {
+    "shelves": {f"shelf{i}": {"capacity": 30} for i in range(1, 7)},
+    "products": {f"product{i}": {} for i in range(1, 6)},
+    "stock": {
+        "shelf1": {"product1": 10, "product2": 2, "product3": 3},
+        "shelf2": {"product1": 8, "product2": 5, "product5": 1},
+        "shelf3": {"product1": 5, "product2": 3, "product3": 4},
+        "shelf4": {"product1": 15, "product3": 2},
+        "shelf5": {}, "shelf6": {"product4": 7},
+    },
+    "robots": {f"robot{i}": {} for i in range(0, 24)},
+}
+
+
+def goal(command: str, world: dict = HALL) -> dict:
+    return translate(command, world)["goal"]
+
+
+def rules(command: str, world: dict = HALL) -> list[dict]:
+    return translate(command, world)["constraints"]
+
+
+# -- the paper's ten commands ------------------------------------------------------------------
+@pytest.mark.parametrize("task", PAPER_TASKS, ids=[t["id"] for t in PAPER_TASKS])
+def test_paper_command_gives_gold(task: dict) -> None:
+    got = translate(task["command"], PAPER_WORLD)
+    assert got["goal"] == task["goal"]
+    assert got["constraints"] == task.get("constraints", [])
+
+
+def test_benchmark_script_prints_share() -> None:
+    out = subprocess.run([sys.executable, str(ROOT / "benchmarks" / "translator.py")],
+                         capture_output=True, text=True, check=False)
+    assert out.returncode == 0, out.stdout + out.stderr
+    assert "10/10 = 100%" in out.stdout
+
+
+def _code_strings(src: str) -> list[str]:
+    """String literals and names of a module, docstrings and comments left out."""
+    tree = ast.parse(src)
+    docs = set()
+    for node in ast.walk(tree):
+        if isinstance(node, (ast.Module, ast.ClassDef, ast.FunctionDef)) and node.body:
+            first = node.body[0]
+            if isinstance(first, ast.Expr) and isinstance(first.value, ast.Constant):
+                docs.add(id(first.value))
+    out = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Constant) and isinstance(node.value, str) and id(node) not in docs:
+            out.append(node.value)
+        elif isinstance(node, ast.Name):
+            out.append(node.id)
+    return out
+
+
+def test_no_benchmark_names_in_code() -> None:
+    for name in ("translator", "numbers", "names", "rules", "quantities"):
+        src = (ROOT / "pipflow" / "language" / f"{name}.py").read_text()
+        bad = [s for s in _code_strings(src) if re.search(r"(shelf|product|robot)_?\d", s)]
+        assert not bad, (name, bad)
+
+
+# -- numbers -----------------------------------------------------------------------------------
+@pytest.mark.parametrize("text,value", [
+    ("7", 7), ("seven", 7), ("twenty-five", 25), ("twenty five", 25), ("a hundred and five", 105),
+    ("one hundred twenty three", 123), ("two thousand", 2000), ("ten plus seven", 17),
+    ("3 times 4", 12), ("twenty minus 2", 18), ("2 plus 3 times 4", 14),
+    ("twelve divided by 4", 3), ("a pair", 2), ("a couple", 2), ("a trio", 3), ("a quartet", 4),
+    ("a quintet", 5), ("a sextet", 6), ("a dozen", 12), ("half a dozen", 6), ("a half dozen", 6),
+    ("half-dozen", 6), ("two dozen", 24), ("three pairs", 6), ("a score", 20), ("a bakers dozen", 13),
+])
+def test_numbers(text: str, value: int) -> None:
+    words = text.split()
+    assert read_number(words, 0) == (value, len(words))
+
+
+@pytest.mark.parametrize("text", ["the", "five three", "ten divided by 3", "half"])
+def test_not_a_single_number(text: str) -> None:
+    got = read_number(text.split(), 0)
+    assert got is None or got[1] < len(text.split())
+
+
+def test_distance_counts_swaps_once() -> None:
+    assert distance("prodcut", "product") == 1
+    assert distance("shelve", "shelf") == 2
+
+
+# -- clause structure --------------------------------------------------------------------------
+@pytest.mark.parametrize("command,expected", [
+    ("There should be 2 product2, 7 product3, 8 product1 in shelf3, 3 product2, 5 product3 in shelf5.",
+     {"shelf3": {"product2": 2, "product3": 7, "product1": 8}, "shelf5": {"product2": 3, "product3": 5}}),
+    ("On shelf6, there oughta be 14 prodcut3, 2 prodcut1, and 1 prduct2.",
+     {"shelf6": {"product3": 14, "product1": 2, "product2": 1}}),
+    ("shelf5 has 4 product1", {"shelf5": {"product1": 4}}),
+    ("shelf5 stores 4 product1 and shelf6 stocks 2 product2",
+     {"shelf5": {"product1": 4}, "shelf6": {"product2": 2}}),
+    ("On shelf5, there should be 3 product1, and 5 product2 on shelf6",
+     {"shelf5": {"product1": 3}, "shelf6": {"product2": 5}}),
+    ("There should be 3 product2 in shelf4, 5 in shelf2", {"shelf4": {"product2": 3}, "shelf2": {"product2": 5}}),
+    ("put 5 product1 on shelf2", {"shelf2": {"product1": 5}}),
+    ("Theyre supposed to be 17 prodct1 on shelve5, I think.", {"shelf5": {"product1": 17}}),
+    ("There should be 7 product 1 in shelf three.", {"shelf3": {"product1": 7}}),
+    ("shelf five holds twenty-one product 5", {"shelf5": {"product5": 21}}),
+    ("shelf1 holds half a dozen product1, a pair of product2 and a couple of product3",
+     {"shelf1": {"product1": 6, "product2": 2, "product3": 2}}),
+    ("shelf2 gets a hundred and five product4", {"shelf2": {"product4": 105}}),
+    ("shelf6 has 3 times 4 product1 and twenty minus 2 product2",
+     {"shelf6": {"product1": 12, "product2": 18}}),
+    ("shelf6 should have a product5", {"shelf6": {"product5": 1}}),
+])
+def test_clause_structure(command: str, expected: dict) -> None:
+    assert goal(command) == expected
+
+
+def test_other_world_names() -> None:
+    assert goal("put 5 apples on rack a", DEPOT) == {"rack_a": {"apple": 5}}
+    assert goal("cold store gets 7 widget 2", DEPOT) == {"cold-store": {"widget2": 7}}
+    assert goal("There should be 2 widget2 in bin 7 and 3 aple in the cold-store.", DEPOT) == {
+        "bin7": {"widget2": 2}, "cold-store": {"apple": 3}}
+    assert goal("rack_b should hold a dozen pears", DEPOT) == {"rack_b": {"pear": 12}}
+
+
+# -- relative amounts and quantifiers ----------------------------------------------------------
+@pytest.mark.parametrize("command,expected", [
+    ("two more product1 in shelf3", {"shelf3": {"product1": 7}}),
+    ("3 fewer product1 on shelf4", {"shelf4": {"product1": 12}}),
+    ("double the product1 on shelf3", {"shelf3": {"product1": 10}}),
+    ("twice as many product1 on shelf2", {"shelf2": {"product1": 16}}),
+    ("half the product1 on shelf1", {"shelf1": {"product1": 5}}),
+    ("all product2 in shelf1", {"shelf1": {"product2": 10}}),
+    ("every product2 should be on shelf1", {"shelf1": {"product2": 10}}),
+    ("no product3 on shelf2", {"shelf2": {"product3": 0}}),
+    ("shelf4 should be empty", {"shelf4": {"product1": 0, "product3": 0}}),
+    ("empty shelf6", {"shelf6": {"product4": 0}}),
+    ("add 5 product1 to shelf2", {"shelf2": {"product1": 13}}),
+    ("remove 2 product1 from shelf1", {"shelf1": {"product1": 8}}),
+    ("move 3 product1 from shelf1 to shelf4", {"shelf1": {"product1": 7}, "shelf4": {"product1": 18}}),
+    ("move all product1 from shelf4 to shelf3", {"shelf4": {"product1": 0}, "shelf3": {"product1": 20}}),
+    ("shelf5 should be full of product1", {"shelf5": {"product1": 30}}),
+    ("shelf2 should be full of product1", {"shelf2": {"product1": 24}}),  # keeps 5 product2, 1 product5
+    ("fill shelf2 with only product1", {"shelf2": {"product1": 30, "product2": 0, "product5": 0}}),
+])
+def test_relative_and_quantified(command: str, expected: dict) -> None:
+    assert goal(command) == expected
+
+
+def test_relative_to_earlier_clause() -> None:
+    assert goal("There should be 4 product1 in shelf5. Then two more product1 in shelf5.") == {
+        "shelf5": {"product1": 6}}
+
+
+def test_evenly_remainder_goes_to_first_named() -> None:
+    assert split_evenly(11, ["a", "b", "c"]) == {"a": 4, "b": 4, "c": 3}
+    assert goal("distribute 11 product2 evenly among shelf3, shelf1 and shelf2") == {
+        "shelf3": {"product2": 4}, "shelf1": {"product2": 4}, "shelf2": {"product2": 3}}
+    # no count: the product's world total (38 product1) is shared
+    assert goal("split product1 evenly between shelf5 and shelf6") == {
+        "shelf5": {"product1": 19}, "shelf6": {"product1": 19}}
+    assert goal("share all product3 equally between shelf6, shelf5", HALL) == {
+        "shelf6": {"product3": 5}, "shelf5": {"product3": 4}}
+
+
+def test_full_counts_goods_the_command_keeps() -> None:
+    assert goal("shelf2 should have 2 product2 and be full of product1") == {
+        "shelf2": {"product2": 2, "product1": 27}}
+
+
+def test_quantifiers_in_other_world() -> None:
+    assert goal("all apples in rack_b", DEPOT) == {"rack_b": {"apple": 5}}
+    assert goal("the cold-store should be empty", DEPOT) == {"cold-store": {"apple": 0, "pear": 0}}
+    assert goal("move 2 apples from rack_a to cold-store", DEPOT) == {
+        "rack_a": {"apple": 2}, "cold-store": {"apple": 3}}
+    assert goal("fill bin7 with widget2", DEPOT) == {"bin7": {"widget2": 10}}
+
+
+# -- robot-use rules ---------------------------------------------------------------------------
+@pytest.mark.parametrize("command,expected", [
+    ("robot 0 should not be used to move product1", [{"never": ["robot0"], "product": "product1"}]),
+    ("only robots 8 to 11 may carry product1",
+     [{"only": ["robot8", "robot9", "robot10", "robot11"], "product": "product1"}]),
+    ("only robots 20-23 may carry product2",
+     [{"only": ["robot20", "robot21", "robot22", "robot23"], "product": "product2"}]),
+    ("robot11 is broken, do not use it", [{"never": ["robot11"]}]),
+    ("robots 2 and 3 must not take anything from shelf4", [{"never": ["robot2", "robot3"], "from": "shelf4"}]),
+    ("We can only use robot1 to move product to [location] of the shelf1", [{"only": ["robot1"], "to": "shelf1"}]),
+    ("use any robot except robot 3", [{"never": ["robot3"]}]),
+    ("do not use robots other than robot1 and robot2", [{"only": ["robot1", "robot2"]}]),
+    ("robot 5 must stay away from shelf6", [{"never": ["robot5"], "from": "shelf6"}]),
+    ("robot 0 must not move product1, and only robot 2 may deliver to shelf3",
+     [{"never": ["robot0"], "product": "product1"}, {"only": ["robot2"], "to": "shelf3"}]),
+    ("robot 7 must not work at shelf2", [{"never": ["robot7"], "from": "shelf2"}, {"never": ["robot7"], "to": "shelf2"}]),
+])
+def test_rules(command: str, expected: list[dict]) -> None:
+    assert rules(command) == expected
+
+
+def test_goal_and_rule_in_one_sentence() -> None:
+    got = translate("Move 3 product1 from shelf1 to shelf4 using only robot 5", HALL)
+    assert got == {"goal": {"shelf1": {"product1": 7}, "shelf4": {"product1": 18}},
+                   "constraints": [{"only": ["robot5"]}]}
+
+
+def test_rules_in_other_world() -> None:
+    assert rules("robots 3 to 5 must not carry apples", DEPOT) == [
+        {"never": ["r3", "r4", "r5"], "product": "apple"}]
+    assert rules("r12 is broken", DEPOT) == [{"never": ["r12"]}]
+
+
+# -- what it must not guess --------------------------------------------------------------------
+@pytest.mark.parametrize("command,world,quoted,candidates", [
+    ("There should be 5 product 9 in shelf2", HALL, "'product 9'", "product1, product2"),
+    ("There should be 5 product1 on the shelf", HALL, "'shelf'", "shelf1, shelf2"),
+    ("there should be 2 widget2 in bix7", DEPOT, "'bix7'", "bin7, box7"),
+    ("There should be 5 gizmos on shelf2", HALL, "'5 gizmos'", "product1, product2"),
+    ("There should be 5 products on shelf2", HALL, "'5 products'", "product1, product2"),
+    ("robot 40 is broken", HALL, "'robot 40'", "robot0, robot1"),
+    ("only robots 18 to 25 may carry product1", HALL, "'robot", "robot0, robot1"),
+    ("There should be 5 product1", HALL, "'5 product1'", "shelf1, shelf2"),
+    ("shelf2 should have product1", HALL, "'product1'", ""),
+    ("put 5 apples on rack", DEPOT, "'rack'", "rack_a, rack_b"),
+    ("I think so", HALL, "'I think so'", "shelf1"),
+])
+def test_errors_quote_words_and_list_candidates(command: str, world: dict, quoted: str,
+                                                candidates: str) -> None:
+    with pytest.raises(TranslationError) as info:
+        translate(command, world)
+    message = str(info.value)
+    assert quoted in message
+    assert candidates in message
+
+
+def test_no_low_confidence_guess() -> None:
+    with pytest.raises(TranslationError):  # 'prdouct' is 2 edits away from 'product', 9 is unknown
+        translate("There should be 5 prdouct9 in shelf2", HALL)
+    with pytest.raises(TranslationError):  # half of an odd count: no rounding is guessed
+        translate("half the product1 on shelf4", HALL)
+
+
+def test_conflicting_counts() -> None:
+    with pytest.raises(TranslationError, match="twice"):
+        translate("There should be 5 product1 in shelf2 and 7 product1 in shelf2", HALL)
+
+
+def test_refusal_below_zero() -> None:
+    with pytest.raises(Refusal, match="fewer than 0"):
+        translate("3 fewer product2 on shelf4", HALL)
