@@ -1,0 +1,240 @@
+"""``pipflow bench``: run every task of a task file (benchmarks/README.md format) with N seeds
+and optional variants, in parallel processes, score each run against the task's ground truth,
+and write results.json, runs.csv and a markdown table shaped like the paper's.
+
+A run is one (variant, task, seed). It runs the workflow in a worker process with the inputs
+``command``, ``world`` and ``seed`` (plus the variant's and ``-i`` inputs), then is scored from
+what the run record holds: the workflow's outputs ``graph``, ``schedule`` and ``simulation``,
+or the refusal or error that ended it. The seed varies the robots' start positions.
+"""
+from __future__ import annotations
+
+import argparse
+import concurrent.futures as cf
+import csv
+import datetime as _dt
+import itertools
+import json
+import os
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from pipflow.errors import UserError
+
+RESULT_FIELDS = ["variant", "task", "seed", "status", "success", "goal_met", "gcr", "exe", "ru", "tc_max",
+                 "tc_avg", "makespan", "planned", "executed", "seconds", "error", "run_dir"]
+
+
+@dataclass(frozen=True)
+class RunSpec:
+    variant: str
+    task: dict
+    seed: int
+    workflow: str
+    inputs: dict
+    world_path: str
+    runs_dir: str
+    use_cache: bool = True
+
+
+@dataclass
+class BenchConfig:
+    tasks_file: Path
+    workflow: str = "warehouse"
+    seeds: int = 1
+    jobs: int = 1
+    out: Path = Path("bench-out")
+    matrix: dict[str, list[str]] = field(default_factory=dict)
+    inputs: dict[str, str] = field(default_factory=dict)
+    use_cache: bool = True
+
+
+def parse_matrix(items: list[str] | None) -> dict[str, list[str]]:
+    """``--matrix key=v1,v2`` (repeatable) -> {key: [v1, v2]}; ``workflow`` is a key too."""
+    matrix: dict[str, list[str]] = {}
+    for item in items or []:
+        if "=" not in item:
+            raise UserError(f"--matrix {item!r}: expected key=v1,v2")
+        key, values = item.split("=", 1)
+        matrix[key.strip()] = [v.strip() for v in values.split(",") if v.strip()]
+        if not matrix[key.strip()]:
+            raise UserError(f"--matrix {item!r}: no values")
+    return matrix
+
+
+def variants(matrix: dict[str, list[str]]) -> list[tuple[str, dict[str, str]]]:
+    """Every combination of the matrix, named like ``allocator=greedy,graph_mode=paper``."""
+    if not matrix:
+        return [("default", {})]
+    keys = list(matrix)
+    out = []
+    for combo in itertools.product(*(matrix[k] for k in keys)):
+        values = dict(zip(keys, combo))
+        out.append((",".join(f"{k}={Path(v).stem if k == 'workflow' else v}" for k, v in values.items()), values))
+    return out
+
+
+def run_one(spec: RunSpec) -> dict:
+    """Run and score one (variant, task, seed) in this process; never raises."""
+    from pipflow.engine.executor import RunOptions
+    from pipflow.engine.runner import run_workflow
+    from pipflow.engine.store import read_json
+    from pipflow.scoring import score_run
+    from pipflow.world import load_world
+
+    task = spec.task
+    row: dict[str, Any] = {"variant": spec.variant, "task": task["id"], "seed": spec.seed}
+    started = time.perf_counter()
+    inputs = {"command": task["command"], "world": spec.world_path, "seed": spec.seed, **spec.inputs}
+    refusal = error = None
+    outputs: dict = {}
+    try:
+        result = run_workflow(spec.workflow, inputs, runs_dir=spec.runs_dir, inputs_from_text=True,
+                              options=RunOptions(use_cache=spec.use_cache))
+        row["status"], row["run_dir"] = result.status, str(result.run_dir)
+        outputs = result.outputs or {}
+        if result.status == "refused":
+            refusal = result.error
+        elif result.status != "succeeded":
+            error = result.error
+        metrics = read_json(result.run_dir / "metrics.json", {})
+        row["stage_seconds"] = metrics.get("step_seconds", {})
+    except Exception as err:  # an invalid workflow or input: the run never started
+        row["status"], error = "error", f"{type(err).__name__}: {err}"
+    world = load_world(spec.world_path)
+    score = score_run(world, task.get("goal") or {}, constraints=task.get("constraints"),
+                      feasible=task.get("feasible", True), graph=outputs.get("graph"),
+                      schedule=outputs.get("schedule"), simulation=outputs.get("simulation"),
+                      refusal=refusal, error=error)
+    row.update(score)
+    row["seconds"] = round(time.perf_counter() - started, 3)
+    return row
+
+
+def _workers(jobs: int | None) -> int:
+    return max(1, jobs or os.cpu_count() or 1)
+
+
+def run_bench(config: BenchConfig, progress: bool = True) -> dict:
+    """Run the whole bench; write results into ``config.out``; return results.json's content."""
+    from pipflow.scoring import aggregate_task, summarize
+    from pipflow.world import load_tasks
+
+    tasks_doc = load_tasks(config.tasks_file)
+    world_path = str(tasks_doc["world_path"] if "world_path" in tasks_doc else
+                     (Path(config.tasks_file).parent / tasks_doc["world"]).resolve())
+    out = Path(config.out)
+    out.mkdir(parents=True, exist_ok=True)
+    specs: list[RunSpec] = []
+    for name, values in variants(config.matrix):
+        values = dict(values)
+        workflow = values.pop("workflow", config.workflow)
+        for task in tasks_doc["tasks"]:
+            for seed in range(config.seeds):
+                specs.append(RunSpec(name, task, seed, workflow, {**config.inputs, **values}, world_path,
+                                     str(out / "runs"), config.use_cache))
+    started = time.perf_counter()
+    rows = _execute(specs, config.jobs, progress)
+    wall = time.perf_counter() - started
+    results = _results(rows, tasks_doc["tasks"], config, wall, aggregate_task, summarize)
+    _write(out, rows, results)
+    return results
+
+
+def _execute(specs: list[RunSpec], jobs: int, progress: bool) -> list[dict]:
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
+
+    rows: list[dict] = []
+    columns = [TextColumn("bench"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn()]
+    with Progress(*columns, disable=not progress, transient=False) as bar:
+        task_id = bar.add_task("runs", total=len(specs))
+        if jobs <= 1:
+            for spec in specs:
+                rows.append(run_one(spec))
+                bar.advance(task_id)
+        else:
+            with cf.ProcessPoolExecutor(max_workers=jobs) as pool:
+                for row in pool.map(run_one, specs):
+                    rows.append(row)
+                    bar.advance(task_id)
+    return rows
+
+
+def _results(rows, tasks, config: BenchConfig, wall: float, aggregate_task, summarize) -> dict:
+    by_variant: dict[str, list[dict]] = {}
+    for row in rows:
+        by_variant.setdefault(row["variant"], []).append(row)
+    variant_results = []
+    for name, vrows in by_variant.items():
+        task_rows = [aggregate_task(t["id"], [r for r in vrows if r["task"] == t["id"]]) for t in tasks]
+        stage = {}
+        for r in vrows:
+            for k, v in (r.get("stage_seconds") or {}).items():
+                stage.setdefault(k, []).append(v)
+        variant_results.append({"name": name, "summary": summarize(task_rows), "tasks": task_rows,
+                                "stage_seconds": {k: sum(v) / len(v) for k, v in stage.items()}})
+    first = variant_results[0]
+    return {"summary": first["summary"], "tasks": first["tasks"], "variants": variant_results,
+            "config": {"tasks": str(config.tasks_file), "workflow": config.workflow, "seeds": config.seeds,
+                       "jobs": config.jobs, "matrix": config.matrix, "inputs": config.inputs},
+            "wall_seconds": round(wall, 3),
+            "created": _dt.datetime.now(_dt.timezone.utc).isoformat(timespec="seconds")}
+
+
+def _fmt(value: Any, digits: int = 1) -> str:
+    if value is None:
+        return "--"
+    return f"{value:.{digits}f}"
+
+
+def markdown_table(results: dict) -> str:
+    """The paper's warehouse table shape: per task SR (%) and travel cost max/avg (m)."""
+    lines = []
+    for variant in results["variants"]:
+        if len(results["variants"]) > 1:
+            lines.append(f"### {variant['name']}\n")
+        lines += ["| Task | SR (%) | TC max/avg (m) | GCR | Exe | RU | makespan (s) | error |",
+                  "|---|---|---|---|---|---|---|---|"]
+        for t in variant["tasks"]:
+            err = (t.get("error") or "").replace("|", "/").replace("\n", " ")[:80]
+            lines.append(f"| {t['id']} | {100 * t['sr']:.0f} | {_fmt(t['tc_max'])}/{_fmt(t['tc_avg'])} | "
+                         f"{t['gcr']:.2f} | {t['exe']:.2f} | {t['ru']:.2f} | {_fmt(t.get('makespan'))} | {err} |")
+        s = variant["summary"]
+        lines.append(f"| **all** ({s['runs']} runs) | {100 * s['sr']:.0f} | {_fmt(s['tc_max'])}/{_fmt(s['tc_avg'])} | "
+                     f"{s['gcr']:.2f} | {s['exe']:.2f} | {s['ru']:.2f} | | |")
+        lines.append("")
+    lines.append(f"wall time: {results['wall_seconds']:.1f} s")
+    return "\n".join(lines)
+
+
+def _write(out: Path, rows: list[dict], results: dict) -> None:
+    from pipflow.engine.store import atomic_write, write_json
+
+    write_json(out / "results.json", results)
+    write_json(out / "runs.json", rows)
+    with open(out / "runs.csv", "w", newline="", encoding="utf-8") as fh:
+        writer = csv.DictWriter(fh, fieldnames=RESULT_FIELDS, extrasaction="ignore")
+        writer.writeheader()
+        for row in rows:
+            writer.writerow({k: (json.dumps(v) if isinstance(v, (list, dict)) else v) for k, v in row.items()})
+    atomic_write(out / "table.md", markdown_table(results) + "\n")
+
+
+def bench_main(args: argparse.Namespace) -> int:
+    """The CLI entry: build the config from arguments, run, print the table."""
+    from pipflow.engine.cli import _key_values
+
+    stamp = _dt.datetime.now(_dt.timezone.utc).strftime("%Y%m%dT%H%M%SZ")
+    tasks_file = Path(args.tasks)
+    if not tasks_file.exists():
+        raise UserError(f"{tasks_file}: no such task file")
+    config = BenchConfig(
+        tasks_file=tasks_file, workflow=args.workflow or "warehouse", seeds=max(1, args.seeds),
+        jobs=_workers(args.jobs), out=Path(args.out or f"bench-out/{stamp}"),
+        matrix=parse_matrix(args.matrix), inputs=_key_values(args.input or []), use_cache=not args.no_cache)
+    results = run_bench(config, progress=not args.quiet)
+    print(markdown_table(results))
+    print(f"results: {config.out / 'results.json'}")
+    return 0
