@@ -54,6 +54,13 @@ def check_workflow(path: str | Path, registry: Registry | None = None) -> tuple[
     if not isinstance(data, SourceDict):
         return None, [Diagnostic(Location(str(path), 1, 1), "a workflow must be a mapping (name, inputs, steps, outputs)")]
     diagnostics += _schema_diagnostics(data, str(path))
+    steps = data.get("steps")
+    for raw in steps if isinstance(steps, list) else []:
+        if isinstance(raw, SourceDict) and "id" in raw and "uses" not in raw and "loop" not in raw:
+            # an override entry (only id/with/...) is valid only in a workflow that extends another;
+            # merged ones are gone by now, so this one would be dropped without a word
+            diagnostics.append(Diagnostic(raw.loc, f"step {raw['id']!r}: needs 'uses' (a step) or 'loop'; "
+                                                   "changing only parts of a step needs 'extends'"))
     if diagnostics:
         return None, diagnostics
     workflow = build_workflow(path, data, files)
