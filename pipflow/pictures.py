@@ -152,7 +152,8 @@ def dependency_graph(graph: dict, path: Path) -> Path:
     labels = {}
     for n in graph.get("nodes", []):
         g.add_node(n["id"])
-        labels[n["id"]] = n["id"] + "\n" + " ".join(map(str, n.get("args", [])))
+        args = list(map(str, n.get("args", [])))
+        labels[n["id"]] = "\n".join([n["id"]] + [" ".join(args[i:i + 2]) for i in range(0, len(args), 2)])
     g.add_edges_from(tuple(e) for e in graph.get("edges", []))
     layer = {}
     for v in nx.topological_sort(g):
@@ -164,6 +165,7 @@ def dependency_graph(graph: dict, path: Path) -> Path:
     fig, ax = plt.subplots(figsize=(min(18, 2.2 + 2.0 * width), 1.6 + 1.3 * (max(layer.values(), default=0) + 1)))
     nx.draw_networkx(g, pos, ax=ax, labels=labels, node_color="#cfe3f7", node_size=1800,
                      font_size=6, arrows=True, edgecolors="#336699")
+    ax.margins(0.18)
     ax.set_title(f"Dependency graph ({graph.get('mode', '?')} mode, {g.number_of_nodes()} subtasks)")
     ax.axis("off")
     fig.tight_layout()

@@ -1,0 +1,315 @@
+"""Static HTML report for a run directory or a bench directory (``pipflow report DIR``).
+
+Why static files with relative ``<img>`` links: a run record must stay inspectable anywhere
+(copied, zipped, attached to an issue) without a server, and the pictures the simulation already
+wrote are linked in place rather than copied. Pictures the report draws itself (dependency
+graph, Gantt chart, bench plots) go to ``DIR/report/``; the page is ``DIR/report.html``.
+
+A small inline script marks ``<body data-images-ok="true">`` once every image has loaded with a
+non-zero size, so a headless browser can check the page really renders its pictures.
+
+Run directory (engine/store.py): ``run.json`` (or ``status.json``), ``inputs.json``,
+``outputs.json``, ``steps/<id>/outputs.json`` and ``steps/<id>/artifacts/*``. Steps are found by
+what they output (``plan``, ``graph``, ``schedule``, ``final_stock``, ``violations``), not by id,
+so any workflow's record can be reported.
+
+Bench directory: ``results.json`` with ``{"summary": {...}, "tasks": [{"id", "runs", "sr", "gcr",
+"exe", "ru", "tc_max", "tc_avg", "error", "details"?: [{"seed", "success", "tc_max", "tc_avg",
+...}], "run_dirs"?: [relative paths]}]}``.
+"""
+from __future__ import annotations
+
+import html
+import json
+from pathlib import Path
+from typing import Any
+
+from pipflow.errors import InputError
+
+_CHECK_SCRIPT = """<script>
+window.addEventListener('load', function () {
+  var imgs = Array.prototype.slice.call(document.images);
+  var bad = imgs.filter(function (i) { return !(i.complete && i.naturalWidth > 0); });
+  document.body.dataset.images = String(imgs.length);
+  document.body.dataset.imagesOk = (bad.length === 0 && imgs.length > 0) ? 'true' : 'false';
+  document.body.dataset.imagesBad = bad.map(function (i) { return i.getAttribute('src'); }).join(' ');
+});
+</script>"""
+
+_STYLE = """<style>
+body { font-family: sans-serif; margin: 2em; max-width: 1150px; color: #222; }
+h1 { font-size: 1.5em; } h2 { border-bottom: 1px solid #ccc; padding-bottom: .2em; margin-top: 1.6em; }
+table { border-collapse: collapse; margin: .5em 0; } td, th { border: 1px solid #bbb; padding: .25em .6em; }
+th { background: #eef2f7; } td.num { text-align: right; font-variant-numeric: tabular-nums; }
+.ok { color: #1a7f37; font-weight: bold; } .bad { color: #c62828; font-weight: bold; }
+img { max-width: 100%; border: 1px solid #ddd; margin: .3em 0; }
+.snaps img { width: 48%; } pre { background: #f6f8fa; padding: .6em; overflow-x: auto; }
+</style>"""
+
+
+def write_report(directory: str | Path) -> Path:
+    """Write ``report.html`` for a run or bench directory and return its path."""
+    d = Path(directory)
+    if (d / "results.json").is_file():
+        body = _bench_body(d)
+        title = f"pipflow bench: {d.name}"
+    elif (d / "steps").is_dir() or (d / "run.json").is_file() or (d / "status.json").is_file():
+        body = _run_body(d)
+        title = f"pipflow run: {d.name}"
+    else:
+        raise InputError(f"{d}: neither a run directory (steps/, run.json) nor a bench directory (results.json)")
+    page = (f"<!DOCTYPE html>\n<html lang='en'><head><meta charset='utf-8'><title>{_e(title)}</title>"
+            f"{_STYLE}</head>\n<body>\n<h1>{_e(title)}</h1>\n{body}\n{_CHECK_SCRIPT}\n</body></html>\n")
+    out = d / "report.html"
+    out.write_text(page, encoding="utf-8")
+    return out
+
+
+# ------------------------------------------------------------------------------------------
+# helpers
+# ------------------------------------------------------------------------------------------
+
+
+def _e(x: Any) -> str:
+    return html.escape(str(x), quote=True)
+
+
+def _read(path: Path, default: Any = None) -> Any:
+    try:
+        return json.loads(path.read_text(encoding="utf-8"))
+    except (FileNotFoundError, json.JSONDecodeError):
+        return default
+
+
+def _img(src: str, alt: str) -> str:
+    return f"<img src='{_e(src)}' alt='{_e(alt)}'>"
+
+
+class Raw(str):
+    """Trusted HTML for a table cell (links, coloured status), written without escaping."""
+
+
+def _num(x: Any, digits: int = 2) -> str:
+    if isinstance(x, Raw):
+        return str(x)
+    if x is None:
+        return "&ndash;"
+    if isinstance(x, bool):
+        return "<span class='ok'>yes</span>" if x else "<span class='bad'>no</span>"
+    if isinstance(x, (int, float)):
+        return f"{x:.{digits}f}" if isinstance(x, float) else str(x)
+    return _e(x)
+
+
+def _table(headers: list[str], rows: list[list[Any]]) -> str:
+    head = "".join(f"<th>{_e(h)}</th>" for h in headers)
+    body = "".join("<tr>" + "".join(
+        f"<td class='num'>{_num(c)}</td>" if isinstance(c, (int, float)) or c is None else f"<td>{_num(c)}</td>"
+        for c in row) + "</tr>" for row in rows)
+    return f"<table><tr>{head}</tr>{body}</table>"
+
+
+# ------------------------------------------------------------------------------------------
+# run directory
+# ------------------------------------------------------------------------------------------
+
+
+def _steps(d: Path) -> list[tuple[str, Path, dict]]:
+    out = []
+    for sd in sorted((d / "steps").glob("*")) if (d / "steps").is_dir() else []:
+        outputs = _read(sd / "outputs.json")
+        if isinstance(outputs, dict):
+            out.append((sd.name, sd, outputs))
+    return out
+
+
+def _find(steps, test) -> tuple[str, Path, dict] | None:
+    hits = [s for s in steps if test(s[2])]
+    return hits[-1] if hits else None
+
+
+def _run_body(d: Path) -> str:
+    from pipflow import pictures
+
+    info = _read(d / "run.json", {}) or {}
+    info.update(_read(d / "status.json", {}) or {})
+    inputs = _read(d / "inputs.json", {}) or {}
+    steps = _steps(d)
+    rep = d / "report"
+    rep.mkdir(exist_ok=True)
+    parts = []
+
+    status = info.get("status", "?")
+    cls = "ok" if status in ("ok", "success", "succeeded", "done", "completed") else "bad"
+    command = inputs.get("command") or next((o["command"] for _, _, o in steps if isinstance(o.get("command"), str)), None)
+    parts.append(_table(["", ""], [["status", Raw(f"<span class='{cls}'>{_e(status)}</span>")],
+                                   ["workflow", info.get("workflow", "")], ["error", info.get("error")]]))
+    parts.append("<h2>Command</h2>" + (f"<p><q>{_e(command)}</q></p>" if command else "<p>(no command input)</p>"))
+
+    world = (_find(steps, lambda o: isinstance(o.get("world"), dict)) or (None, None, {}))[2].get("world")
+    plan_s = _find(steps, lambda o: isinstance(o.get("plan"), list))
+    graph_s = _find(steps, lambda o: isinstance(o.get("graph"), dict) and "nodes" in o["graph"])
+    sched_s = _find(steps, lambda o: isinstance(o.get("schedule"), dict) and "subtasks" in o["schedule"])
+    sim_s = _find(steps, lambda o: "final_stock" in o and "executed" in o)
+    met_s = _find(steps, lambda o: "violations" in o and "success" in o)
+    schedule = sched_s[2]["schedule"] if sched_s else None
+
+    # team plan, with the robots the schedule gave each subtask
+    parts.append("<h2>Team plan</h2>")
+    plan = plan_s[2]["plan"] if plan_s else None
+    if plan is not None:
+        by_index = {}
+        if schedule:
+            for k, s in enumerate(schedule.get("subtasks", [])):
+                by_index[" ".join(map(str, [s.get("action")] + list(s.get("args", []))))] = s
+        rows = []
+        for i, a in enumerate(plan):
+            text = " ".join(map(str, [a.get("action")] + list(a.get("args", []))))
+            s = by_index.get(text)
+            rows.append([i, f"({text})", ", ".join(s["robots"]) if s else "",
+                         f"{s['start']:.1f}" if s else "", f"{s['end']:.1f}" if s else ""])
+        parts.append(_table(["#", "action", "robots", "start (s)", "end (s)"], rows) if rows else "<p>empty plan</p>")
+    else:
+        parts.append("<p>(no plan in this run)</p>")
+
+    if graph_s:
+        try:
+            pictures.dependency_graph(graph_s[2]["graph"], rep / "graph.png")
+            parts.append("<h2>Dependency graph</h2>" + _img("report/graph.png", "dependency graph"))
+        except Exception as exc:  # a picture must never hide the rest of the report
+            parts.append(f"<h2>Dependency graph</h2><p class='bad'>could not draw: {_e(exc)}</p>")
+    if schedule:
+        pictures.gantt(schedule, rep / "gantt.png")
+        parts.append("<h2>Schedule</h2>" + _img("report/gantt.png", "Gantt chart per robot"))
+
+    if sim_s:
+        name, sd, sim = sim_s
+        art = sd / "artifacts"
+        pics = [p for p in sim.get("pictures", []) if (art / p).is_file()]
+        src = f"steps/{name}/artifacts/paths.png" if "paths.png" in pics else None
+        if src is None and world and (art / "trajectories.json").is_file():
+            traj = _read(art / "trajectories.json", {}).get("trajectories", {})
+            pictures.path_map(world, traj, rep / "paths.png", travel=sim.get("travel"))
+            src = "report/paths.png"
+        if src:
+            parts.append("<h2>Robot paths</h2>" + _img(src, "robot paths"))
+        snaps = [p for p in pics if p.startswith("snapshot_")]
+        if snaps:
+            parts.append("<h2>Snapshots</h2><div class='snaps'>" + "".join(
+                _img(f"steps/{name}/artifacts/{p}", p) for p in snaps) + "</div>")
+        anim = [p for p in pics if p.endswith(".gif")]
+        if anim:
+            parts.append("<h2>Animation</h2>" + _img(f"steps/{name}/artifacts/{anim[0]}", "animation"))
+        parts.append("<h2>Simulation</h2>" + _table(
+            ["executed", "failed", "Exe", "TC-max (m)", "TC-avg (m)", "makespan (s)", "goal met", "GCR"],
+            [[sim.get("executed"), sim.get("failed"), sim.get("exe"), sim.get("tc_max"), sim.get("tc_avg"),
+              sim.get("makespan"), sim.get("goal_met"), sim.get("gcr")]]))
+        if sim.get("failures"):
+            parts.append("<p>Actions not executed:</p><ul>" + "".join(
+                f"<li>{_e(f['subtask'])} at t={_e(f['time'])}: {_e('; '.join(f['reasons']))}</li>"
+                for f in sim["failures"]) + "</ul>")
+        if sim.get("travel"):
+            parts.append(_table(["robot", "travel (m)"], [[r, float(v)] for r, v in sim["travel"].items()]))
+        goal = inputs.get("goal")
+        if isinstance(goal, dict):
+            rows = [[s, p, n, sim["final_stock"].get(s, {}).get(p, 0),
+                     sim["final_stock"].get(s, {}).get(p, 0) == n] for s, items in goal.items() for p, n in items.items()]
+            parts.append("<h3>Goal</h3>" + _table(["shelf", "product", "goal", "final", "holds"], rows))
+
+    if met_s:
+        m = met_s[2]
+        parts.append("<h2>Metrics</h2>" + _table(
+            ["success", "GCR", "Exe", "RU", "TC-max (m)", "TC-avg (m)", "planned", "lower bound"],
+            [[m.get("success"), m.get("gcr"), m.get("exe"), m.get("ru"), m.get("tc_max"), m.get("tc_avg"),
+              m.get("planned"), m.get("lower_bound")]]))
+        if m.get("violations"):
+            parts.append("<ul>" + "".join(f"<li class='bad'>{_e(v)}</li>" for v in m["violations"]) + "</ul>")
+
+    parts.append("<h2>Steps</h2>" + _table(["step", "outputs"], [[n, ", ".join(sorted(o))] for n, _, o in steps]))
+    return "\n".join(parts)
+
+
+# ------------------------------------------------------------------------------------------
+# bench directory
+# ------------------------------------------------------------------------------------------
+
+
+def _bench_body(d: Path) -> str:
+    results = _read(d / "results.json")
+    if not isinstance(results, dict) or "tasks" not in results:
+        raise InputError(f"{d / 'results.json'}: not a results file (needs 'summary' and 'tasks')")
+    rep = d / "report"
+    rep.mkdir(exist_ok=True)
+    tasks = results.get("tasks", [])
+    summary = results.get("summary", {})
+    parts = []
+    meta = {k: v for k, v in results.items() if k not in ("summary", "tasks") and not isinstance(v, (dict, list))}
+    if meta:
+        parts.append(_table(["", ""], [[k, v] for k, v in meta.items()]))
+    parts.append("<h2>Summary</h2>" + _table(
+        ["runs", "SR", "GCR", "Exe", "RU", "TC-max (m)", "TC-avg (m)"],
+        [[summary.get("runs"), summary.get("sr"), summary.get("gcr"), summary.get("exe"), summary.get("ru"),
+          summary.get("tc_max"), summary.get("tc_avg")]]))
+    rows = []
+    for t in tasks:
+        links = Raw(" ".join(f"<a href='{_e(r)}/report.html'>{i + 1}</a>" for i, r in enumerate(t.get("run_dirs", []))))
+        rows.append([t.get("id"), t.get("runs"), f"{100 * float(t.get('sr', 0)):.0f}%", t.get("gcr"), t.get("exe"),
+                     t.get("ru"), t.get("tc_max"), t.get("tc_avg"), t.get("error") or ""])
+        if links:
+            rows[-1].append(links)
+    headers = ["task", "runs", "SR", "GCR", "Exe", "RU", "TC-max (m)", "TC-avg (m)", "error"]
+    table = _table(headers + (["runs"] if any(t.get("run_dirs") for t in tasks) else []), rows)
+    parts.append("<h2>Tasks</h2>" + table)
+    if tasks:
+        _bench_overview(tasks, rep / "overview.png")
+        parts.append("<h2>Per task</h2>" + _img("report/overview.png", "SR and travel per task"))
+        for i, t in enumerate(tasks):
+            details = t.get("details") or t.get("seeds")
+            if isinstance(details, list) and details and isinstance(details[0], dict):
+                fname = f"task_{i + 1:02d}.png"
+                _task_plot(t, details, rep / fname)
+                parts.append(f"<h3>{_e(t.get('id'))}</h3>" + _img(f"report/{fname}", f"runs of {t.get('id')}"))
+    return "\n".join(parts)
+
+
+def _bench_overview(tasks: list[dict], path: Path) -> None:
+    from pipflow.pictures import _plt
+
+    plt = _plt()
+    ids = [str(t.get("id")) for t in tasks]
+    x = list(range(len(ids)))
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(12, 4))
+    a1.bar(x, [100 * float(t.get("sr") or 0) for t in tasks], color="#4c78a8")
+    a1.set_ylim(0, 105)
+    a1.set_ylabel("SR (%)")
+    a1.set_title("Success rate per task")
+    w = 0.4
+    a2.bar([i - w / 2 for i in x], [float(t.get("tc_max") or 0) for t in tasks], w, label="TC-max", color="#f58518")
+    a2.bar([i + w / 2 for i in x], [float(t.get("tc_avg") or 0) for t in tasks], w, label="TC-avg", color="#54a24b")
+    a2.set_ylabel("metres")
+    a2.set_title("Travel per task (successful runs)")
+    a2.legend()
+    for a in (a1, a2):
+        a.set_xticks(x)
+        a.set_xticklabels(ids, rotation=45, ha="right", fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=80)
+    plt.close(fig)
+
+
+def _task_plot(task: dict, details: list[dict], path: Path) -> None:
+    from pipflow.pictures import _plt
+
+    plt = _plt()
+    fig, ax = plt.subplots(figsize=(7, 2.8))
+    xs = [d.get("seed", i) for i, d in enumerate(details)]
+    colours = ["#1a7f37" if d.get("success") else "#c62828" for d in details]
+    ax.scatter(xs, [float(d.get("tc_max") or 0) for d in details], c=colours, marker="^", label="TC-max")
+    ax.scatter(xs, [float(d.get("tc_avg") or 0) for d in details], c=colours, marker="o", label="TC-avg")
+    ax.set_xlabel("seed")
+    ax.set_ylabel("metres")
+    ax.set_title(f"{task.get('id')}: travel per run (green = success)")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=80)
+    plt.close(fig)
