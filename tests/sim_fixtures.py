@@ -77,3 +77,30 @@ def wh01() -> tuple[dict, dict]:
     """Task wh-01: 2 product1 from shelf1 to shelf3 by robot5 (carry 2)."""
     return build([{"id": "s1", "src": "shelf1", "dst": "shelf3", "product": "product1", "units": 2,
                    "robots": {"robot5": [R5_TO_S1, S1_TO_S3]}}])
+
+
+def route(p, q) -> list:
+    """Obstacle-free in the warehouse world: along the row of p to the x = 14 corridor, along it
+    to the row of q, then to q (every start and access row is clear of the shelves)."""
+    pts = [tuple(p), (14.0, float(p[1])), (14.0, float(q[1])), tuple(q)]
+    out = [pts[0]]
+    for pt in pts[1:]:
+        if math.dist(pt, out[-1]) > 1e-9:
+            out.append(pt)
+    return out
+
+
+def chain(world: dict, spec: list[tuple]) -> tuple[dict, dict]:
+    """``spec``: [(id, src, dst, product, units, [robots], [after ids])] -> (graph, schedule),
+    robots routed with :func:`route` from wherever they last stopped."""
+    where = {r: tuple(info["start"]) for r, info in world["robots"].items()}
+    moves = []
+    for sid, src, dst, prod, units, robots, after in spec:
+        a, b = tuple(world["shelves"][src]["access"]), tuple(world["shelves"][dst]["access"])
+        paths = {}
+        for r in robots:
+            paths[r] = [route(where[r], a), route(a, b)]
+            where[r] = b
+        moves.append({"id": sid, "src": src, "dst": dst, "product": prod, "units": units,
+                      "robots": paths, "after": after})
+    return build(moves)
