@@ -292,3 +292,40 @@ def test_conflicting_counts() -> None:
 def test_refusal_below_zero() -> None:
     with pytest.raises(Refusal, match="fewer than 0"):
         translate("3 fewer product2 on shelf4", HALL)
+
+
+# A world whose names carry no numbers and mixed case: robots are called by name.
+CREW = {
+    "shelves": {"Shelf_A": {"capacity": 9}, "Shelf_B": {"capacity": 9}},
+    "products": {"Bolt": {}, "Nut": {}},
+    "stock": {"Shelf_A": {"Bolt": 2}},
+    "robots": {"alpha": {}, "bravo": {}, "charlie": {}},
+}
+
+
+def test_named_robots_and_mixed_case_world() -> None:
+    assert goal("shelf a should hold 3 bolts and 2 nuts", CREW) == {"Shelf_A": {"Bolt": 3, "Nut": 2}}
+    assert rules("bravo is broken, don't use it", CREW) == [{"never": ["bravo"]}]
+    assert rules("only alpha and charlie may carry bolts", CREW) == [
+        {"only": ["alpha", "charlie"], "product": "Bolt"}]
+    assert translate("put 2 bolt on shelf_b, but alfa must not move them", CREW) == {
+        "goal": {"Shelf_B": {"Bolt": 2}}, "constraints": [{"never": ["alpha"]}]}
+
+
+def test_rule_clause_that_also_states_a_count() -> None:
+    got = translate("Using robot 2, move 3 product1 from shelf1 to shelf4.", HALL)
+    assert got["goal"] == {"shelf1": {"product1": 7}, "shelf4": {"product1": 18}}
+    assert got["constraints"] == [{"only": ["robot2"], "product": "product1", "from": "shelf1"},
+                                  {"only": ["robot2"], "product": "product1", "to": "shelf4"}]
+
+
+def test_permission_alone_is_not_guessed() -> None:
+    with pytest.raises(TranslationError, match="requires or forbids"):
+        translate("robot 3 can move product1", HALL)
+
+
+def test_nothing_else_zeroes_other_goods() -> None:
+    assert goal("There should be 7 product1 and 1 product2 in shelf3 and nothing else") == {
+        "shelf3": {"product1": 7, "product2": 1, "product3": 0}}
+    assert goal("There should be 5 product1 in shelf2, and shelf4 should be empty.") == {
+        "shelf2": {"product1": 5}, "shelf4": {"product1": 0, "product3": 0}}

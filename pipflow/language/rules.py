@@ -6,7 +6,9 @@ format of the task files. Which way a rule goes is read from a few word classes:
 * an exception ("any robot except robot3") forbids the named robots, unless the clause is
   negative ("no robot other than robot1"), which requires them;
 * a negation or a state of being unusable ("not", "never", "broken", "do not use it") forbids;
-* "only"/"just"/"exclusively", or a plain instruction to use robots, requires.
+* "only"/"just"/"exclusively", or a plain instruction that robots do a move ("use robot1",
+  "robot1 should move product3"), requires. A clause that is neither ("robot 3 can move
+  product1": a permission that restricts nothing) is an error, not a guess.
 
 Its scope comes from the products and shelves the clause names: a shelf after "from"/"off"/"out of"
 is a ``from``, after "to"/"into"/"onto" a ``to``, and with no direction ("at", "on", no word) both,
@@ -24,6 +26,7 @@ NEGATIONS = {
 }
 EXCEPTIONS = {"except", "besides", "excluding"}
 ONLY = {"only", "just", "solely", "exclusively"}
+OBLIGATION = {"must", "should", "shall", "will"}  # "robot1 should move product3": it does it
 POSITIVE_USE = {"use", "using", "with", "by", "uses", "employ", "assign", "let"}
 FROM_WORDS = {"from", "off"}
 TO_WORDS = {"to", "into", "onto", "towards", "toward"}
@@ -81,7 +84,7 @@ def _polarity(toks: list[Tok]) -> str:
         return "only" if negative else "never"
     if negative:
         return "never"
-    if words & ONLY or words & POSITIVE_USE or "must" in words:
+    if words & ONLY or words & POSITIVE_USE or words & OBLIGATION:
         return "only"
     raise TranslationError(
         f"cannot tell whether '{' '.join(t.text for t in toks)}' requires or forbids the robots")

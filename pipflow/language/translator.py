@@ -271,6 +271,7 @@ class _Reader:
         cur = _Group()
         groups = [cur]
         last: str | None = None
+        rest_empty = False
         i = 0
         while i < len(toks):
             t = toks[i]
@@ -301,6 +302,10 @@ class _Reader:
             if fill and only and t.is_word("nothing") and i + 1 < len(toks) and toks[i + 1].is_word("but"):
                 i += 2
                 continue
+            if t.is_word("nothing") and i + 1 < len(toks) and toks[i + 1].is_word("else", "more"):
+                rest_empty = True  # "... in shelf3 and nothing else": other goods go to zero
+                i += 2
+                continue
             got = self.item(toks, i, last, fill, only)
             if got is None:
                 i += 1
@@ -325,6 +330,15 @@ class _Reader:
                     f"which shelf (candidates: {self.index.candidates('shelf')})")
             for it in g.items:
                 self.goal.apply(target, it, add)
+        if rest_empty:
+            shelves = [g.target or g.head for g in groups if g.items and (g.target or g.head)]
+            if not shelves:
+                raise TranslationError("'nothing else': the command does not say on which shelf "
+                                       f"(candidates: {self.index.candidates('shelf')})")
+            row = self.goal.counts.get(shelves[-1], {})
+            for p in q.held(self.world, shelves[-1]):
+                if p not in row:
+                    self.goal.set(shelves[-1], p, 0, "nothing else", absolute=True)
 
 
 def _split(toks: list[Tok], ends: set[str]) -> list[list[Tok]]:
@@ -351,6 +365,13 @@ def _bare(chunk: list[Tok]) -> bool:
                for t in chunk)
 
 
+def _has_predicate(chunk: list[Tok]) -> bool:
+    """Whether words follow the chunk's last robot ("robot 0 must not ..." yes, "only alpha" no)."""
+    last = max((k for k, t in enumerate(chunk) if t.of == "robot"), default=-1)
+    return any(t.kind in ("word", "name") and not t.is_word("and", "or", "the")
+               for t in chunk[last + 1:])
+
+
 def _parts(sentence: list[Tok]) -> tuple[list[Tok], list[list[Tok]]]:
     """Split a sentence into its goal part and its rule clauses (parts that name robots)."""
     first = next((k for k, t in enumerate(sentence) if _is_robot(t)), None)
@@ -372,11 +393,32 @@ def _parts(sentence: list[Tok]) -> tuple[list[Tok], list[list[Tok]]]:
             chunks[-1].append(t)
     merged: list[list[Tok]] = []
     for c in chunks:
-        if merged and (_bare(merged[-1]) or _bare(c) or not any(_is_robot(t) for t in c)):
+        if merged and (not _has_predicate(merged[-1]) or _bare(c) or not any(_is_robot(t) for t in c)):
             merged[-1].extend(c)
         elif c:
             merged.append(c)
     return goal, merged
+
+
+def _goal_in_rule(chunk: list[Tok]) -> list[Tok]:
+    """The goal a rule clause also states, from the words after its robots, else nothing.
+
+    Read only when a count of a named product appears, so "from one shelf to another" or the
+    numbers of "robots 8 to 11" are never taken for counts.
+    """
+    for i, t in enumerate(chunk):
+        if t.kind != "num":
+            continue
+        k = i + 1
+        while k < len(chunk) and chunk[k].kind == "word" and chunk[k].value in FILLER | MORE | FEWER:
+            k += 1
+        if k < len(chunk) and chunk[k].kind == "name" and chunk[k].of == "product":
+            start = max((j + 1 for j in range(i) if _is_robot(chunk[j])), default=0)
+            while start < i and (chunk[start].kind in ("num", "punct")
+                                 or chunk[start].is_word("and", "or", "to", "through")):
+                start += 1
+            return [t for t in chunk[start:] if t.of != "robot"]
+    return []
 
 
 def translate(command: str, world: dict) -> dict:
@@ -396,6 +438,9 @@ def translate(command: str, world: dict) -> dict:
         if goal_part:
             reader.clause(goal_part)
         for r in rules:
+            counted = _goal_in_rule(r)
+            if counted:  # "robot 3 should put 5 product1 on shelf2": a count and a rule
+                reader.clause(counted)
             for item in parse_rule(r, index):
                 if item not in constraints:
                     constraints.append(item)
