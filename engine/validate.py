@@ -53,7 +53,10 @@ def check_workflow(path: str | Path, registry: Registry | None = None) -> tuple[
         return None, err.diagnostics
     if not isinstance(data, SourceDict):
         return None, [Diagnostic(Location(str(path), 1, 1), "a workflow must be a mapping (name, inputs, steps, outputs)")]
-    diagnostics += _schema_diagnostics(data, str(path))
+    schema_problems = _schema_diagnostics(data, str(path))
+    diagnostics += schema_problems
+    if "extends" in data:  # the base could not be read (reported above): nothing more to check
+        return None, diagnostics
     steps = data.get("steps")
     for raw in steps if isinstance(steps, list) else []:
         if isinstance(raw, SourceDict) and "id" in raw and "uses" not in raw and "loop" not in raw:
@@ -61,7 +64,7 @@ def check_workflow(path: str | Path, registry: Registry | None = None) -> tuple[
             # merged ones are gone by now, so this one would be dropped without a word
             diagnostics.append(Diagnostic(raw.loc, f"step {raw['id']!r}: needs 'uses' (a step) or 'loop'; "
                                                    "changing only parts of a step needs 'extends'"))
-    if diagnostics:
+    if schema_problems:  # merge problems (remove/override of unknown ids) do not stop the checks below
         return None, diagnostics
     workflow = build_workflow(path, data, files)
     diagnostics += _semantic_diagnostics(workflow, registry or default_registry())
