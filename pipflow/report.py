@@ -14,8 +14,10 @@ what they output (``plan``, ``graph``, ``schedule``, ``final_stock``, ``violatio
 so any workflow's record can be reported.
 
 Bench directory: ``results.json`` with ``{"summary": {...}, "tasks": [{"id", "runs", "sr", "gcr",
-"exe", "ru", "tc_max", "tc_avg", "error", "details"?: [{"seed", "success", "tc_max", "tc_avg",
-...}], "run_dirs"?: [relative paths]}]}``.
+"exe", "ru", "tc_max", "tc_avg", "error"}], "variants"?: [{"name", "summary", "tasks"}], ...}`` and,
+when ``pipflow bench`` wrote it, ``runs.json`` (one row per run: variant, task, seed, success,
+tc_max, tc_avg, run_dir). Per-task plots come from those rows (or a task's own ``details``); run
+directories inside the bench dir are linked to their own reports.
 """
 from __future__ import annotations
 
@@ -240,36 +242,71 @@ def _bench_body(d: Path) -> str:
         raise InputError(f"{d / 'results.json'}: not a results file (needs 'summary' and 'tasks')")
     rep = d / "report"
     rep.mkdir(exist_ok=True)
-    tasks = results.get("tasks", [])
-    summary = results.get("summary", {})
+    runs = _read(d / "runs.json", []) or []  # per-run rows written by `pipflow bench`
     parts = []
-    meta = {k: v for k, v in results.items() if k not in ("summary", "tasks") and not isinstance(v, (dict, list))}
+    meta = {k: v for k, v in results.items() if not isinstance(v, (dict, list))}
+    meta.update({f"config.{k}": v for k, v in (results.get("config") or {}).items() if not isinstance(v, (dict, list))})
     if meta:
         parts.append(_table(["", ""], [[k, v] for k, v in meta.items()]))
-    parts.append("<h2>Summary</h2>" + _table(
+    variants = results.get("variants") or [{"name": "default", "summary": results.get("summary", {}),
+                                            "tasks": results.get("tasks", [])}]
+    for k, variant in enumerate(variants):
+        name = variant.get("name", "default")
+        vruns = [r for r in runs if isinstance(r, dict) and r.get("variant", "default") == name]
+        if len(variants) > 1:
+            parts.append(f"<h2>Variant {_e(name)}</h2>")
+        parts.append(_variant_body(d, rep, variant, vruns, prefix=f"v{k + 1}_"))
+    return "\n".join(parts)
+
+
+def _variant_body(d: Path, rep: Path, variant: dict, runs: list[dict], prefix: str) -> str:
+    tasks = variant.get("tasks", [])
+    summary = variant.get("summary", {})
+    parts = ["<h3>Summary</h3>" + _table(
         ["runs", "SR", "GCR", "Exe", "RU", "TC-max (m)", "TC-avg (m)"],
         [[summary.get("runs"), summary.get("sr"), summary.get("gcr"), summary.get("exe"), summary.get("ru"),
-          summary.get("tc_max"), summary.get("tc_avg")]]))
+          summary.get("tc_max"), summary.get("tc_avg")]])]
     rows = []
     for t in tasks:
-        links = Raw(" ".join(f"<a href='{_e(r)}/report.html'>{i + 1}</a>" for i, r in enumerate(t.get("run_dirs", []))))
-        rows.append([t.get("id"), t.get("runs"), f"{100 * float(t.get('sr', 0)):.0f}%", t.get("gcr"), t.get("exe"),
-                     t.get("ru"), t.get("tc_max"), t.get("tc_avg"), t.get("error") or ""])
-        if links:
-            rows[-1].append(links)
-    headers = ["task", "runs", "SR", "GCR", "Exe", "RU", "TC-max (m)", "TC-avg (m)", "error"]
-    table = _table(headers + (["runs"] if any(t.get("run_dirs") for t in tasks) else []), rows)
-    parts.append("<h2>Tasks</h2>" + table)
+        details = _details(d, t, runs)
+        links = [f"<a href='{_e(r)}'>{_e(i)}</a>" for i, r in
+                 ((x.get("seed", j), _rel(d, x.get("run_dir"))) for j, x in enumerate(details)) if r]
+        rows.append([t.get("id"), t.get("runs"), f"{100 * float(t.get('sr') or 0):.0f}%", t.get("gcr"),
+                     t.get("exe"), t.get("ru"), t.get("tc_max"), t.get("tc_avg"), t.get("error") or "",
+                     Raw(" ".join(links))])
+    parts.append("<h3>Tasks</h3>" + _table(
+        ["task", "runs", "SR", "GCR", "Exe", "RU", "TC-max (m)", "TC-avg (m)", "error", "run reports"], rows))
     if tasks:
-        _bench_overview(tasks, rep / "overview.png")
-        parts.append("<h2>Per task</h2>" + _img("report/overview.png", "SR and travel per task"))
+        _bench_overview(tasks, rep / f"{prefix}overview.png")
+        parts.append("<h3>Per task</h3>" + _img(f"report/{prefix}overview.png", "SR and travel per task"))
         for i, t in enumerate(tasks):
-            details = t.get("details") or t.get("seeds")
-            if isinstance(details, list) and details and isinstance(details[0], dict):
-                fname = f"task_{i + 1:02d}.png"
+            details = _details(d, t, runs)
+            if details:
+                fname = f"{prefix}task_{i + 1:02d}.png"
                 _task_plot(t, details, rep / fname)
-                parts.append(f"<h3>{_e(t.get('id'))}</h3>" + _img(f"report/{fname}", f"runs of {t.get('id')}"))
+                parts.append(f"<h4>{_e(t.get('id'))}</h4>" + _img(f"report/{fname}", f"runs of {t.get('id')}"))
     return "\n".join(parts)
+
+
+def _details(d: Path, task: dict, runs: list[dict]) -> list[dict]:
+    """The runs of one task: from ``runs.json`` rows, else from the task's own ``details``."""
+    rows = [r for r in runs if r.get("task") == task.get("id")]
+    return rows or [x for x in (task.get("details") or []) if isinstance(x, dict)]
+
+
+def _rel(d: Path, run_dir: str | None) -> str | None:
+    """Link to a run inside the bench dir: its report.html when written, else the directory."""
+    if not run_dir:
+        return None
+    p = Path(run_dir)
+    p = p if p.is_absolute() else (d / p)
+    try:
+        rel = p.resolve().relative_to(d.resolve())
+    except ValueError:
+        return None
+    if (p / "report.html").is_file():
+        return f"{rel.as_posix()}/report.html"
+    return rel.as_posix() if p.is_dir() else None
 
 
 def _bench_overview(tasks: list[dict], path: Path) -> None:

@@ -105,20 +105,27 @@ def test_run_report_renders_in_chromium(tmp_path):
 
 
 def test_bench_report_renders_in_chromium(tmp_path):
+    """results.json and runs.json as `pipflow bench` writes them (with two variants)."""
     bench = tmp_path / "bench"
-    make_run_dir(bench / "runs")
+    run = make_run_dir(bench / "runs")
+    write_report(run)
     tasks = [{"id": f"wh-{i:02d}", "runs": 3, "sr": 1.0 if i % 3 else 2 / 3, "gcr": 1.0, "exe": 1.0, "ru": 0.8,
-              "tc_max": 30.0 + i, "tc_avg": 8.0 + i / 2, "error": None if i % 3 else "refused: over capacity",
-              "details": [{"seed": s, "success": bool(i % 3 or s), "tc_max": 30.0 + i + s, "tc_avg": 8.0 + s}
-                          for s in range(3)]} for i in range(1, 4)]
-    tasks[0]["run_dirs"] = ["runs/run1"]
-    write_json(bench / "results.json", {"summary": {"runs": 9, "sr": 8 / 9, "gcr": 1.0, "exe": 1.0, "ru": 0.8,
-                                                    "tc_max": 32.0, "tc_avg": 9.0}, "tasks": tasks,
-                                        "wall_time": 12.5})
+              "tc_max": 30.0 + i, "tc_avg": 8.0 + i / 2, "makespan": 50.0,
+              "error": None if i % 3 else "refused: over capacity"} for i in range(1, 4)]
+    summary = {"runs": 9, "sr": 8 / 9, "gcr": 1.0, "exe": 1.0, "ru": 0.8, "tc_max": 32.0, "tc_avg": 9.0}
+    runs = [{"variant": v, "task": t["id"], "seed": s, "success": bool(i % 3 or s), "tc_max": 30.0 + i + s,
+             "tc_avg": 8.0 + s, "run_dir": str(run)} for v in ("default", "graph_mode=paper")
+            for i, t in enumerate(tasks, 1) for s in range(3)]
+    write_json(bench / "results.json", {"summary": summary, "tasks": tasks, "wall_seconds": 12.5,
+                                        "config": {"seeds": 3, "workflow": "warehouse"},
+                                        "variants": [{"name": "default", "summary": summary, "tasks": tasks},
+                                                     {"name": "graph_mode=paper", "summary": summary, "tasks": tasks}]})
+    write_json(bench / "runs.json", runs)
     page = write_report(bench)
     html = page.read_text()
     assert "wh-03" in html and "refused: over capacity" in html and "href='runs/run1/report.html'" in html
-    assert_rendered(page, tmp_path, min_images=4)
+    assert "Variant graph_mode=paper" in html and "report/v2_task_03.png" in html
+    assert_rendered(page, tmp_path, min_images=8)
 
 
 def test_broken_image_is_detected(tmp_path):
