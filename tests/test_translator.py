@@ -329,3 +329,9 @@ def test_nothing_else_zeroes_other_goods() -> None:
         "shelf3": {"product1": 7, "product2": 1, "product3": 0}}
     assert goal("There should be 5 product1 in shelf2, and shelf4 should be empty.") == {
         "shelf2": {"product1": 5}, "shelf4": {"product1": 0, "product3": 0}}
+
+
+def test_delivery_verb_makes_place_a_destination() -> None:
+    got = translate("robot 3 should put 5 product1 on shelf2", HALL)
+    assert got == {"goal": {"shelf2": {"product1": 5}},
+                   "constraints": [{"only": ["robot3"], "product": "product1", "to": "shelf2"}]}

@@ -31,6 +31,7 @@ POSITIVE_USE = {"use", "using", "with", "by", "uses", "employ", "assign", "let"}
 FROM_WORDS = {"from", "off"}
 TO_WORDS = {"to", "into", "onto", "towards", "toward"}
 PLACE_WORDS = {"at", "on", "in", "near", "around", "inside", "by"}
+DELIVERY = {"put", "place", "deliver", "bring", "add", "stock", "store", "load"}
 RANGE_WORDS = {"to", "through", "thru", "until", "till"}
 LIST_WORDS = {",", "and", "or", "&"}
 
@@ -101,6 +102,9 @@ def _role(toks: list[Tok], i: int) -> str:
         if t.value in TO_WORDS:
             return "to"
         if t.value in PLACE_WORDS:
+            # "put 5 product1 on shelf2": a delivery verb makes "on"/"in" a destination
+            if any(x.kind == "word" and x.value in DELIVERY for x in toks[:i]):
+                return "to"
             return "both"
     return "both"
 
