@@ -125,6 +125,19 @@ def instance_from_problem(problem: Any) -> Instance:
     return Instance(shelves, products, stock, capacity, load, magnitudes, goal)
 
 
+def instance_from_world(world: dict, goal: dict[str, dict[str, int]]) -> Instance:
+    """The instance a world dict and a goal describe (magnitudes 1..6, as the writer writes)."""
+    from pipflow.pddl.writer import MAGNITUDES
+
+    shelves, products = list(world["shelves"]), list(world["products"])
+    stock = {(s, p): world["stock"].get(s, {}).get(p, 0) for s in shelves for p in products}
+    return Instance(shelves, products, stock,
+                    {s: world["shelves"][s]["capacity"] for s in shelves},
+                    {s: sum(world["stock"].get(s, {}).values()) for s in shelves},
+                    dict(MAGNITUDES),
+                    {(s, p): n for s, items in goal.items() for p, n in items.items()})
+
+
 # ---------------------------------------------------------------------------------------------
 # step 1: the final state
 # ---------------------------------------------------------------------------------------------

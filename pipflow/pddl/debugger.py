@@ -1,0 +1,282 @@
+"""The paper's Debugger: parse a problem against the domain and say, in words a model can act on,
+what is wrong and where.
+
+UP's PDDLReader does all the parsing. Its errors are precise but terse (a pyparsing position, a
+``SyntaxError`` with a character span, a ``KeyError`` for an unknown type); this module turns each
+into one message with the line and column, the offending token, what was expected, and for an
+undefined name the closest names that do exist (difflib). A problem that parses is then checked
+against the world: its objects and initial state must be exactly the world's, because a generated
+problem that invents a shelf or a few units of stock would be "solved" in a world that is not
+ours. Every mismatch is reported at once.
+"""
+from __future__ import annotations
+
+import difflib
+import re
+from dataclasses import dataclass, field
+from typing import Any
+
+from pipflow.pddl.writer import MAGNITUDES
+
+_SPAN = re.compile(r"line: (\d+), col (\d+) to line: (\d+), col (\d+)")
+_TOKEN = re.compile(r"[^\s()]+|[()]")
+
+
+@dataclass
+class DebugReport:
+    """``ok`` when the problem parses and matches the world; ``messages`` otherwise."""
+
+    ok: bool
+    messages: list[str] = field(default_factory=list)
+    problem: Any = None  # the parsed UP problem when it parsed
+
+
+# ---------------------------------------------------------------------------------------------
+# text helpers (positions only: no parsing here)
+# ---------------------------------------------------------------------------------------------
+def _offset(text: str, line: int, col: int) -> int:
+    lines = text.splitlines(keepends=True)
+    return sum(len(x) for x in lines[: line - 1]) + col - 1
+
+
+def _line_col(text: str, offset: int) -> tuple[int, int]:
+    before = text[:offset]
+    return before.count("\n") + 1, offset - (before.rfind("\n") + 1) + 1
+
+
+def _token_at(text: str, offset: int) -> str:
+    m = _TOKEN.search(text, offset)
+    return m.group(0) if m else "end of text"
+
+
+def _closest(name: str, choices: list[str]) -> str:
+    near = difflib.get_close_matches(name, choices, n=3, cutoff=0.5)
+    return f"; did you mean {' or '.join(repr(n) for n in near)}?" if near else ""
+
+
+def _strip_comments(text: str) -> str:
+    """The text with ``;`` comments blanked out (same length, so offsets stay valid)."""
+    return re.sub(r";[^\n]*", lambda m: " " * len(m.group(0)), text)
+
+
+def paren_hint(text: str) -> str:
+    """Where parentheses stop balancing, if they do: the most common syntax slip."""
+    clean = _strip_comments(text)
+    stack: list[int] = []
+    for i, ch in enumerate(clean):
+        if ch == "(":
+            stack.append(i)
+        elif ch == ")":
+            if not stack:
+                line, col = _line_col(text, i)
+                return f" There is an extra ')' at line {line}, column {col}."
+            stack.pop()
+    if stack:
+        line, col = _line_col(text, stack[-1])
+        return (f" {len(stack)} '(' never closed; the innermost unclosed one is at line {line}, "
+                f"column {col}: {text.splitlines()[line - 1].strip()!r}.")
+    return ""
+
+
+def find_form(text: str, head: str, *args: str) -> str:
+    """``"line L, column C"`` of the first ``(head args...)`` in ``text``, or ``""``."""
+    pattern = r"\(\s*" + r"\s+".join(re.escape(x) for x in (head,) + args) + r"\s*\)"
+    m = re.search(pattern, _strip_comments(text), flags=re.IGNORECASE)
+    if not m:
+        return ""
+    line, col = _line_col(text, m.start())
+    return f"line {line}, column {col}: "
+
+
+def find_word(text: str, word: str, nth: int = 0) -> str:
+    """``"line L, column C: "`` of the ``nth`` occurrence of ``word`` as a whole token."""
+    hits = list(re.finditer(r"(?<![\w-])" + re.escape(word) + r"(?![\w-])", _strip_comments(text)))
+    if len(hits) <= nth:
+        return ""
+    line, col = _line_col(text, hits[nth].start())
+    return f"line {line}, column {col}: "
+
+
+# ---------------------------------------------------------------------------------------------
+# context: the domain's signatures and the problem's declared objects
+# ---------------------------------------------------------------------------------------------
+def domain_signatures(domain_text: str) -> tuple[dict[str, list[tuple[str, str]]], list[str]]:
+    """``({fluent: [(param, type), ...]}, [type names])`` of the domain, read by UP."""
+    from unified_planning.io import PDDLReader
+
+    dom = PDDLReader().parse_problem_string(domain_text, None)
+    sigs = {f.name: [(p.name, str(p.type)) for p in f.signature] for f in dom.fluents}
+    return sigs, [str(t) for t in dom.user_types]
+
+
+def declared_objects(problem_text: str) -> dict[str, str]:
+    """``{object: type}`` as the problem declares them (UP's PDDL grammar; {} if it fails)."""
+    from unified_planning.io.pddl_reader import PDDLGrammar
+
+    try:
+        res = PDDLGrammar().problem.parse_string(problem_text, parse_all=True)
+    except Exception:
+        return {}
+    out = {}
+    for group in res["objects"]:
+        names, typ = list(group[0]), (group[1] if len(group) > 1 else "object")
+        for n in names:
+            out[str(n)] = str(typ)
+    return out
+
+
+def _signature_text(name: str, sig: list[tuple[str, str]]) -> str:
+    return f"({name} {' '.join(f'?{p} - {t}' for p, t in sig)})"
+
+
+# ---------------------------------------------------------------------------------------------
+# turning UP's exceptions into messages
+# ---------------------------------------------------------------------------------------------
+def explain_parse_error(exc: Exception, text: str, domain_text: str) -> str:
+    """One actionable message for a PDDLReader failure on ``text``."""
+    sigs, types = domain_signatures(domain_text)
+    objects = declared_objects(text)
+    known = list(objects) + list(sigs)
+
+    if type(exc).__name__ in ("ParseException", "ParseSyntaxException", "ParseFatalException"):
+        line, col = getattr(exc, "lineno", 0), getattr(exc, "col", 0)
+        loc = getattr(exc, "loc", None)
+        token = _token_at(text, loc) if loc is not None else "?"
+        expected = re.sub(r"\s*\(at char \d+\).*$", "", getattr(exc, "msg", str(exc)))
+        expected = re.sub(r",?\s*found .*$", "", expected)
+        source = text.splitlines()[line - 1].strip() if 0 < line <= len(text.splitlines()) else ""
+        return (f"line {line}, column {col}: syntax error at {token!r}: {expected.strip()}."
+                + (f" Line {line} reads: {source!r}." if source else "") + paren_hint(text))
+
+    message = str(exc)
+    span = _SPAN.search(message)
+    where, snippet = "", ""
+    if span:
+        l1, c1, l2, c2 = map(int, span.groups())
+        where = f"line {l1}, column {c1}: "
+        snippet = text[_offset(text, l1, c1): _offset(text, l2, c2) + 1].strip()
+
+    if isinstance(exc, SyntaxError) or type(exc).__name__ == "SyntaxError":
+        m = re.search(r"Found invalid expression: (\S+?)\.? From", message)
+        if m:
+            name = m.group(1)
+            return (f"{where}undefined name {name!r}: it is not an object of the problem"
+                    f"{_closest(name, list(objects))} (objects: {', '.join(objects) or 'none'})")
+        m = re.search(r"fluent: (\S+) has arity (\d+) but (\d+) parameters", message)
+        if m:
+            name, want, got = m.group(1), int(m.group(2)), int(m.group(3))
+            sig = _signature_text(name, sigs.get(name, []))
+            return f"{where}wrong arity in {snippet!r}: {name} takes {want} argument(s) {sig}, not {got}"
+        if "not well-formed" in message and snippet:
+            toks = _TOKEN.findall(snippet)
+            head, args = (toks[1], [t for t in toks[2:] if t not in "()"]) if len(toks) > 2 else ("", [])
+            if head in sigs:
+                wrong = [f"argument {i + 1} of {head} must be a {t}, but {a!r} is a {objects.get(a, 'undeclared name')}"
+                         for i, ((_, t), a) in enumerate(zip(sigs[head], args)) if objects.get(a) != t]
+                if wrong:
+                    return f"{where}wrong type in {snippet!r}: " + "; ".join(wrong) + f"; signature {_signature_text(head, sigs[head])}"
+            return f"{where}wrong type in {snippet!r}: the arguments do not match the signature"
+        m = re.search(r"Not able to handle: \(\s*([^\s()]+)", message)
+        if m:
+            head = m.group(1)
+            if head not in sigs:
+                return (f"{where}unknown function or predicate {head!r} in {snippet!r}{_closest(head, list(sigs))} "
+                        f"(the domain declares {', '.join(_signature_text(n, s) for n, s in sigs.items())})")
+            return f"{where}cannot read {snippet!r}: expected a fluent, a number or a comparison"
+        return f"{where}{message.splitlines()[0]}" + (f" in {snippet!r}" if snippet else "")
+
+    if isinstance(exc, KeyError):
+        name = str(exc.args[0]) if exc.args else str(exc)
+        where = find_word(text, name)
+        return (f"{where}unknown type {name!r}{_closest(name, types)} "
+                f"(the domain's types: {', '.join(types)})")
+    m = re.search(r"Name (\S+) already defined", message)
+    if m:
+        name = m.group(1)
+        where = find_word(text, name, 1) or find_word(text, name)
+        return f"{where}name {name!r} is declared twice; declare each object once"
+    return f"the problem does not parse: {type(exc).__name__}: {message.splitlines()[0] if message else ''}"
+
+
+# ---------------------------------------------------------------------------------------------
+# the world check
+# ---------------------------------------------------------------------------------------------
+def world_mismatches(problem: Any, text: str, world: dict) -> list[str]:
+    """Every way the parsed problem's objects and initial state differ from the world's."""
+    from pipflow.pddl.common import initial_numbers
+
+    out: list[str] = []
+    shelves, products = world["shelves"], world["products"]
+    by_type: dict[str, list[str]] = {}
+    for o in problem.all_objects:
+        by_type.setdefault(str(o.type), []).append(o.name)
+    expect = {"shelf": list(shelves), "product": list(products), "magnitude": list(MAGNITUDES)}
+    for typ, names in expect.items():
+        have = by_type.get(typ, [])
+        for n in have:
+            if n not in names:
+                out.append(f"{find_word(text, n)}object {n!r} ({typ}) is not in the world{_closest(n, names)}; "
+                           f"the world's {typ} objects are {', '.join(names)}")
+        for n in names:
+            if n not in have:
+                out.append(f"the problem lacks {typ} {n!r} of the world; declare it in :objects as '{n} - {typ}'")
+    for typ in by_type:
+        if typ not in expect:
+            out.append(f"objects of type {typ!r} are not part of this domain's worlds")
+    init = initial_numbers(problem)
+    want: dict[tuple, int] = {}
+    for s in shelves:
+        for p in products:
+            want[("stock", s, p)] = world["stock"].get(s, {}).get(p, 0)
+        want[("load", s)] = sum(world["stock"].get(s, {}).values())
+        want[("capacity", s)] = world["shelves"][s]["capacity"]
+    for m, k in MAGNITUDES.items():
+        want[("amount", m)] = k
+    declared = {o.name for o in problem.all_objects}
+    for key, value in want.items():
+        if not all(a in declared for a in key[1:]):
+            continue  # already reported as a missing object
+        form = f"({' '.join(key)})"
+        if key not in init:
+            out.append(f"{form} has no initial value; the world's is {value}: add (= {form} {value}) to :init")
+        elif init[key] != value:
+            what = {"stock": "units of {2} on {1}", "load": "units in all on {1}", "capacity": "the capacity of {1}",
+                    "amount": "the units of {1}"}[key[0]].format(*key)
+            out.append(f"{find_form(text, *key)}(= {form} {init[key]}) but the world has {value} "
+                       f"({what} is {value}); the initial state must be the world's: write (= {form} {value})")
+    for key, value in init.items():
+        if key not in want and all(a in declared for a in key[1:]):
+            out.append(f"{find_form(text, *key)}unexpected initial value (= ({' '.join(key)}) {value})")
+    return out
+
+
+# ---------------------------------------------------------------------------------------------
+# entry point
+# ---------------------------------------------------------------------------------------------
+def debug_problem(problem_text: str | None, domain: str, world: dict | None = None) -> DebugReport:
+    """Parse ``problem_text`` against ``domain`` (a path or PDDL text) and check it against
+    ``world``. Never raises for a bad problem: the messages say what is wrong."""
+    from pipflow.pddl.common import environment, read_domain_text
+    from unified_planning.io import PDDLReader
+
+    if not problem_text or not problem_text.strip():
+        return DebugReport(False, ["the problem is empty: write a (define (problem ...) ...) form"])
+    environment()
+    domain_text = read_domain_text(domain)
+    try:
+        PDDLReader().parse_problem_string(domain_text, None)
+    except Exception as exc:  # the domain is ours: a failure here is a setup problem, say so
+        return DebugReport(False, [f"the domain itself does not parse ({domain}): {exc}"])
+    try:
+        problem = PDDLReader().parse_problem_string(domain_text, problem_text)
+    except Exception as exc:
+        return DebugReport(False, [explain_parse_error(exc, problem_text, domain_text)])
+    messages: list[str] = []
+    m = re.search(r"\(\s*:domain\s+([^\s()]+)", _strip_comments(problem_text), flags=re.IGNORECASE)
+    dname = re.search(r"\(\s*domain\s+([^\s()]+)", _strip_comments(domain_text), flags=re.IGNORECASE)
+    if m and dname and m.group(1).lower() != dname.group(1).lower():
+        messages.append(f"{find_word(problem_text, m.group(1))}the problem names domain {m.group(1)!r} "
+                        f"but the domain is {dname.group(1)!r}")
+    if world is not None:
+        messages += world_mismatches(problem, problem_text, world)
+    return DebugReport(not messages, messages, problem)

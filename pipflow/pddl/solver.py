@@ -1,0 +1,86 @@
+"""Solve a parsed problem with a UP OneshotPlanner named by the workflow.
+
+Engines: ``pipflow-transport`` (default for the warehouse domain, see
+:mod:`pipflow.pddl.transport`: near-fewest moves on the paper's tasks, large instances in
+seconds), ``enhsp`` (ENHSP gbfs + hadd, any numeric domain; about 1 s on the paper's tasks but it
+grows fast), ``enhsp-opt`` / ``enhsp-any``, and any other engine installed in UP (``fast-downward``
+for classical domains). Params go to the engine's constructor (``{"params": "-h hadd -s gbfs"}``
+for ENHSP). Each outcome gets its own status and message:
+
+    solved        a plan
+    unsolvable    the engine proved no plan exists (the reason, when known)
+    timeout       no answer within the time limit
+    error         the engine failed, is unknown, or does not support the problem
+"""
+from __future__ import annotations
+
+import time
+import warnings
+from dataclasses import dataclass, field
+from typing import Any
+
+DEFAULT_ENGINE = "pipflow-transport"
+JAVA_ENGINES = ("enhsp",)
+
+
+@dataclass
+class SolveResult:
+    status: str  # solved | unsolvable | timeout | error
+    plan: list[dict] | None
+    message: str
+    time: float
+    engine: str = ""
+    details: dict = field(default_factory=dict)
+
+
+def _logs(result: Any) -> str:
+    return "; ".join(m.message.strip() for m in (result.log_messages or []) if m.message and m.message.strip())
+
+
+def solve_problem(problem: Any, engine: str = DEFAULT_ENGINE, params: dict | None = None,
+                  timeout: float | None = 60.0) -> SolveResult:
+    """Solve UP ``problem`` with ``engine``; never raises for an engine-side failure."""
+    from pipflow.pddl.common import environment, plan_to_data
+    from unified_planning.engines import PlanGenerationResultStatus as S
+    from unified_planning.shortcuts import OneshotPlanner
+
+    env = environment()
+    started = time.monotonic()
+    if engine not in env.factory.engines:
+        return SolveResult("error", None, f"unknown planning engine {engine!r}; installed: "
+                           f"{', '.join(n for n in env.factory.engines if '[' not in n)}", 0.0, engine)
+    if engine.startswith(JAVA_ENGINES):
+        from pipflow.pddl.java import ensure_java
+
+        try:
+            ensure_java()
+        except Exception as exc:
+            return SolveResult("error", None, str(exc), 0.0, engine)
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # "we cannot establish whether X can solve this problem"
+            with OneshotPlanner(name=engine, params=dict(params or {})) as planner:
+                result = planner.solve(problem, timeout=timeout)
+    except Exception as exc:
+        return SolveResult("error", None, f"engine {engine} failed: {type(exc).__name__}: {exc}",
+                           time.monotonic() - started, engine)
+    elapsed = time.monotonic() - started
+    logs = _logs(result)
+    st = result.status
+    if st in (S.SOLVED_SATISFICING, S.SOLVED_OPTIMALLY) and result.plan is not None:
+        plan = plan_to_data(result.plan)
+        return SolveResult("solved", plan, f"{engine} found a plan of {len(plan)} action(s) in {elapsed:.2f} s"
+                           + (" (optimal)" if st == S.SOLVED_OPTIMALLY else ""), elapsed, engine)
+    if st == S.UNSOLVABLE_PROVEN:
+        return SolveResult("unsolvable", None, f"{engine} proved that no plan reaches the goal"
+                           + (f": {logs}" if logs else ""), elapsed, engine)
+    if st == S.TIMEOUT:
+        return SolveResult("timeout", None, f"{engine} found no plan within the time limit of {timeout} s",
+                           elapsed, engine)
+    if st == S.UNSOLVABLE_INCOMPLETELY:
+        return SolveResult("error", None, f"{engine} gave up without a plan (it is incomplete, so a plan may "
+                           f"still exist; try engine 'enhsp')" + (f": {logs}" if logs else ""), elapsed, engine)
+    if st == S.UNSUPPORTED_PROBLEM:
+        return SolveResult("error", None, f"{engine} does not support this problem" + (f": {logs}" if logs else ""),
+                           elapsed, engine)
+    return SolveResult("error", None, f"{engine} failed ({st.name})" + (f": {logs}" if logs else ""), elapsed, engine)

@@ -1,0 +1,124 @@
+"""The paper's Verifier: is the plan valid for the problem, and is the goal one the world allows?
+
+Two independent checks, both reported in full:
+
+* **Plan**: UP's ``sequential_plan_validator``, named explicitly (with some engines installed UP
+  would otherwise pick another validator). For an inapplicable action the message adds the values
+  of the fluents in its failed precondition at that point, e.g. ``stock(shelf4, product2) = 0``,
+  which is what a model needs to repair the problem.
+* **Goal** (against the world): every object the goal names exists; no goal count exceeds a
+  shelf's capacity or the units that exist; the units the goal leaves free fit somewhere. An
+  infeasible goal yields ``refusal``: the reason, in words, that the command cannot be done in
+  this world; the workflow ends there instead of looping.
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from typing import Any
+
+_FLUENT = re.compile(r"([A-Za-z][\w-]*)\(([^()]*)\)")
+
+
+@dataclass
+class VerifyReport:
+    ok: bool
+    messages: list[str] = field(default_factory=list)
+    refusal: str | None = None
+    goal: dict = field(default_factory=dict)
+
+
+def goal_problems(world: dict, goal: dict[str, dict[str, int]]) -> tuple[list[str], str | None]:
+    """``(messages, refusal)`` for a goal ``{shelf: {product: n}}`` in ``world``.
+
+    Unknown names are messages (the problem is wrong, a better problem may fix it); counts the
+    world cannot hold are a refusal (no problem can fix the command)."""
+    from pipflow.pddl.transport import Unsolvable, check_final_state, instance_from_world
+    from pipflow.world import closest
+
+    messages = []
+    for s, items in goal.items():
+        if s not in world["shelves"]:
+            near = closest(s, world["shelves"])
+            messages.append(f"the goal names shelf {s!r}, which is not in the world"
+                            + (f" (did you mean {near[0]!r}?)" if near else ""))
+        for p, n in items.items():
+            if p not in world["products"]:
+                near = closest(p, world["products"])
+                messages.append(f"the goal names product {p!r}, which is not in the world"
+                                + (f" (did you mean {near[0]!r}?)" if near else ""))
+            if not isinstance(n, int) or n < 0:
+                messages.append(f"the goal count of {p} on {s} is {n}; counts are whole numbers >= 0")
+    if messages:
+        return messages, None
+    reasons = []
+    for s, items in goal.items():
+        cap = world["shelves"][s]["capacity"]
+        for p, n in items.items():
+            if n > cap:
+                reasons.append(f"{s} cannot hold {n} units of {p}: its capacity is {cap}")
+    try:
+        check_final_state(instance_from_world(world, goal))
+    except Unsolvable as exc:
+        if str(exc) not in reasons:
+            reasons.append(str(exc))
+    if reasons:
+        return reasons, "the command cannot be done in this world: " + "; ".join(reasons)
+    return [], None
+
+
+def _explain_inapplicable(problem: Any, plan: Any, index: int, ups_message: str) -> str:
+    """UP's message plus the values, just before step ``index``, of the fluents it mentions."""
+    from unified_planning.shortcuts import SequentialSimulator
+
+    try:
+        with SequentialSimulator(problem=problem) as sim:
+            state = sim.get_initial_state()
+            for ai in plan.actions[:index]:
+                state = sim.apply(state, ai)
+            em = problem.environment.expression_manager
+            values = []
+            for name, args in dict.fromkeys(_FLUENT.findall(ups_message)):
+                if not problem.has_fluent(name):
+                    continue
+                objs = [problem.object(a.strip()) for a in args.split(",") if a.strip()]
+                values.append(f"{name}({', '.join(o.name for o in objs)}) = {state.get_value(em.FluentExp(problem.fluent(name), objs))}")
+    except Exception:
+        return ups_message
+    return ups_message + (f" At that point {', '.join(values)}." if values else "")
+
+
+def verify_plan(problem: Any, plan: list[dict] | None, world: dict | None = None) -> VerifyReport:
+    """Validate ``plan`` on UP ``problem`` and check the problem's goal against ``world``."""
+    from pipflow.pddl.common import data_to_plan, environment, format_plan, stock_goals
+    from unified_planning.engines import ValidationResultStatus
+    from unified_planning.shortcuts import PlanValidator
+
+    environment()
+    goal, _ = stock_goals(problem)  # other goal forms are the validator's to check
+    messages: list[str] = []
+    refusal = None
+    if world is not None:
+        messages, refusal = goal_problems(world, goal)
+    if plan is None:
+        messages.append("there is no plan to verify (the planner did not produce one)")
+    else:
+        try:
+            up_plan = data_to_plan(problem, plan)
+        except ValueError as exc:
+            messages.append(f"the plan does not fit the problem: {exc}")
+            up_plan = None
+        if up_plan is not None:
+            with PlanValidator(name="sequential_plan_validator") as validator:
+                check = validator.validate(problem, up_plan)
+            if check.status != ValidationResultStatus.VALID:
+                ups = " ".join(m.message for m in check.log_messages or []) or str(check.reason)
+                if check.inapplicable_action is not None:
+                    index = next((i for i, ai in enumerate(up_plan.actions) if ai is check.inapplicable_action), None)
+                    if index is None:
+                        index = next((i for i, ai in enumerate(up_plan.actions) if str(ai) == str(check.inapplicable_action)), 0)
+                    messages.append(f"plan step {index + 1} {format_plan([plan[index]]).strip()} cannot be executed: "
+                                    + _explain_inapplicable(problem, up_plan, index, ups))
+                else:
+                    messages.append(f"the plan is not valid: {ups}")
+    return VerifyReport(not messages and refusal is None, messages, refusal, goal)
