@@ -23,6 +23,8 @@ from __future__ import annotations
 
 import html
 import json
+import os
+import re
 from pathlib import Path
 from typing import Any
 
@@ -49,8 +51,9 @@ img { max-width: 100%; border: 1px solid #ddd; margin: .3em 0; }
 </style>"""
 
 
-def write_report(directory: str | Path) -> Path:
-    """Write ``report.html`` for a run or bench directory and return its path."""
+def write_report(directory: str | Path, output: str | Path | None = None) -> Path:
+    """Write ``report.html`` (or ``output``) for a run or bench directory and return its path.
+    Links stay relative: to the directory, or rebased when ``output`` lies elsewhere."""
     d = Path(directory)
     if (d / "results.json").is_file():
         body = _bench_body(d)
@@ -62,7 +65,18 @@ def write_report(directory: str | Path) -> Path:
         raise InputError(f"{d}: neither a run directory (steps/, run.json) nor a bench directory (results.json)")
     page = (f"<!DOCTYPE html>\n<html lang='en'><head><meta charset='utf-8'><title>{_e(title)}</title>"
             f"{_STYLE}</head>\n<body>\n<h1>{_e(title)}</h1>\n{body}\n{_CHECK_SCRIPT}\n</body></html>\n")
-    out = d / "report.html"
+    out = Path(output) if output else d / "report.html"
+    out.parent.mkdir(parents=True, exist_ok=True)
+    if out.parent.resolve() != d.resolve():
+        base = os.path.relpath(d.resolve(), out.parent.resolve())
+
+        def rebase(m: "re.Match") -> str:
+            url = m.group(2)
+            if re.match(r"^([a-z]+:|/|#)", url):
+                return m.group(0)
+            return f"{m.group(1)}='{_e(Path(base, html.unescape(url)).as_posix())}'"
+
+        page = re.sub(r"(src|href)='([^']*)'", rebase, page)
     out.write_text(page, encoding="utf-8")
     return out
 

@@ -138,6 +138,13 @@ def test_broken_image_is_detected(tmp_path):
     assert 'data-images-ok="false"' in dom
 
 
+def test_output_elsewhere_rebases_links(tmp_path):
+    run = make_run_dir(tmp_path)
+    page = write_report(run, tmp_path / "elsewhere" / "r.html")
+    assert "src='../run1/report/gantt.png'" in page.read_text()
+    assert_rendered(page, tmp_path, min_images=7)
+
+
 def test_not_a_report_dir(tmp_path):
     from pipflow.errors import InputError
 
