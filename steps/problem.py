@@ -1,1 +1,35 @@
-"""(to be written)"""
+"""Problem generation from a structured goal: the offline generator's back half.
+
+Until (and besides) the language step, a workflow can write the team-level problem straight from a
+goal ``{shelf: {product: n}}``. The language step fills the same interface: world + goal (or a
+command) in, PDDL problem text out.
+"""
+from __future__ import annotations
+
+import re
+
+from pipflow import Input, StepContext, step
+
+
+@step("problem.write",
+      doc="Write the team-level PDDL problem for a goal: the world's objects and initial state, one (= (stock s p) n) per goal count.",
+      inputs={"world": Input("object", doc="world dict from world.load"),
+              "goal": Input("object", doc="goal {shelf: {product: units}}"),
+              "domain": Input("path", doc="team-level PDDL domain (its name goes into the problem)"),
+              "name": Input("string", default="task", doc="problem name")},
+      outputs={"problem": "string"},
+      cacheable=True)
+def write(ctx: StepContext, world: dict | None, goal: dict | None, domain: str, name: str = "task") -> dict:
+    """Returns ``problem=None`` (and logs why) when the world or goal is missing, so a skipped
+    upstream step does not crash the run."""
+    from pipflow.pddl.writer import write_problem
+
+    if world is None or goal is None:
+        ctx.log("problem.write: no " + ("world" if world is None else "goal") + "; no problem written")
+        return {"problem": None}
+    text = ctx.resolve_path(domain).read_text()
+    m = re.search(r"\(\s*domain\s+([^\s()]+)", text, flags=re.IGNORECASE)
+    problem = write_problem(world, goal, name=re.sub(r"[^\w-]", "-", name) or "task",
+                            domain=m.group(1) if m else "warehouse")
+    ctx.write_artifact("problem.pddl", problem)
+    return {"problem": problem}

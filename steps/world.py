@@ -1,1 +1,20 @@
-"""(to be written)"""
+"""World step: load and validate a world file (heavy work in :mod:`pipflow.world`)."""
+from __future__ import annotations
+
+from pipflow import Input, StepContext, step
+
+
+@step("world.load",
+      doc="Load a world file (floor, shelves, products, stock, robots), validated with every problem located.",
+      inputs={"path": Input("path", doc="world YAML file, relative to the workflow file")},
+      outputs={"world": "object"},
+      cacheable=True)
+def load(ctx: StepContext, path: str) -> dict:
+    """Raises WorldError (exit 2) listing each problem with file:line:col; returns the normalized
+    world dict of docs/architecture.md."""
+    from pipflow.world import load_world
+
+    world = load_world(ctx.resolve_path(path))
+    ctx.log(f"world {world['name']}: {len(world['shelves'])} shelves, {len(world['products'])} products, "
+            f"{len(world['robots'])} robots")
+    return {"world": world}
