@@ -154,3 +154,23 @@ def test_step_face(world, tmp_path):
     import json
 
     json.dumps(out)  # JSON-like, as the step contract requires
+
+
+def test_schedule_from_the_real_scheduler(world):
+    """Contract check against pipflow.scheduling: legs connect, travel equals the schedule's."""
+    from pipflow.allocation import allocate
+    from pipflow.scheduling import build_schedule
+    from sim_fixtures import move_node
+
+    nodes = [move_node("s1", 0, "shelf2", "shelf4", "product3", 6), move_node("s2", 1, "shelf3", "shelf4", "product3", 4),
+             move_node("s3", 2, "shelf4", "shelf1", "product1", 6), move_node("s4", 3, "shelf4", "shelf1", "product1", 6),
+             move_node("s5", 4, "shelf2", "shelf4", "product2", 1)]
+    graph = {"mode": "exact", "nodes": nodes, "edges": [["s1", "s2"], ["s3", "s4"]]}
+    schedule = build_schedule(graph, allocate(graph, world), world)
+    goal = {"shelf4": {"product3": 12, "product1": 3, "product2": 1}}
+    r = simulate(world, schedule, graph, goal)
+    assert r["failures"] == [] and r["jumps"] == {} and r["executed"] == 5
+    assert r["goal_met"]
+    for robot, info in schedule["robots"].items():
+        assert r["travel"][robot] == pytest.approx(info["distance"], abs=1e-3)
+    assert r["tc_max"] == pytest.approx(schedule["tc_max"], abs=1e-3)
