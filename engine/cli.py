@@ -257,6 +257,12 @@ def build_parser() -> argparse.ArgumentParser:
 
     parser = argparse.ArgumentParser(prog="pipflow", description="PIP-LLM workflows: language command -> robot team plan.",
                                      parents=[common])
+    # the sub-commands take the same options, without defaults of their own: a default there
+    # would silently reset a value given before the command (`pipflow -q --runs-dir D run ...`)
+    common = argparse.ArgumentParser(add_help=False, argument_default=argparse.SUPPRESS)
+    common.add_argument("-v", "--verbose", action="store_true", help="tracebacks and step logs")
+    common.add_argument("-q", "--quiet", action="store_true", help="only errors and the result")
+    common.add_argument("--runs-dir", help="where run records go (default: ./runs)")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
 
     run = sub.add_parser("run", parents=[common], help="validate and run a workflow")
