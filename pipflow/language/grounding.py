@@ -20,6 +20,7 @@ from typing import Any
 from pipflow.language.parsing import ParseIssue
 
 ANY = "any"
+MAX_RULES = 8  # robot-use rules in one command; more is a model repeating itself
 
 
 def _capacity_groups(world: dict) -> dict[int, list[str]]:
@@ -44,7 +45,8 @@ def json_schema(world: dict) -> dict[str, Any]:
     rule = {
         "type": "object",
         "properties": {"rule": {"type": "string", "enum": ["only", "never"]},
-                       "robots": {"type": "array", "items": {"type": "string", "enum": robots}},
+                       "robots": {"type": "array", "items": {"type": "string", "enum": robots},
+                                  "maxItems": len(robots)},
                        "product": {"type": "string", "enum": products + [ANY]},
                        "from": {"type": "string", "enum": shelves + [ANY]},
                        "to": {"type": "string", "enum": shelves + [ANY]}},
@@ -52,8 +54,9 @@ def json_schema(world: dict) -> dict[str, Any]:
     }
     return {
         "type": "object",
-        "properties": {"goal": {"type": "array", "items": items[0] if len(items) == 1 else {"anyOf": items}},
-                       "constraints": {"type": "array", "items": rule}},
+        "properties": {"goal": {"type": "array", "items": items[0] if len(items) == 1 else {"anyOf": items},
+                                "maxItems": len(shelves) * len(products)},
+                       "constraints": {"type": "array", "items": rule, "maxItems": MAX_RULES}},
         "required": ["goal", "constraints"], "additionalProperties": False,
     }
 
@@ -77,16 +80,18 @@ def _alts(names: list[str]) -> str:
 def gbnf(world: dict) -> str:
     """The same language as :func:`json_schema`, as a llama.cpp GBNF grammar.
 
-    Keys come in a fixed order and whitespace is bounded, so a small model cannot wander off
-    into endless spaces: every path through the grammar is a valid answer."""
+    Keys come in a fixed order, and whitespace and list lengths are bounded, so a small model
+    cannot wander off into endless spaces or repeat a name until max_tokens: every path through
+    the grammar is a valid answer of bounded length."""
     shelves, products = sorted(world["shelves"]), sorted(world["products"])
     robots = sorted(world["robots"])
+    max_goal = len(shelves) * len(products)
     lines = [
         'root ::= "{" ws "\\"goal\\":" ws goals "," ws "\\"constraints\\":" ws rules ws "}"',
-        'goals ::= "[" ws item ("," ws item)* ws "]"',
-        'rules ::= "[" ws "]" | "[" ws rule ("," ws rule)* ws "]"',
+        f'goals ::= "[" ws item ("," ws item){{0,{max_goal - 1}}} ws "]"',
+        f'rules ::= "[" ws "]" | "[" ws rule ("," ws rule){{0,{MAX_RULES - 1}}} ws "]"',
         'rule ::= "{" ws "\\"rule\\":" ws ("\\"only\\"" | "\\"never\\"") "," ws '
-        '"\\"robots\\":" ws "[" ws robot ("," ws robot)* ws "]" "," ws '
+        f'"\\"robots\\":" ws "[" ws robot ("," ws robot){{0,{len(robots) - 1}}} ws "]" "," ws '
         '"\\"product\\":" ws (product | anyname) "," ws "\\"from\\":" ws (shelf | anyname) "," ws '
         '"\\"to\\":" ws (shelf | anyname) ws "}"',
         f"shelf ::= {_alts(shelves)}",

@@ -1,0 +1,93 @@
+"""Measure grounded decoding: free PDDL answers vs grammar-constrained answers, same model.
+
+    python benchmarks/grounding.py [--model local/smollm2] [--api-base URL] [--no-cache]
+
+For each paper task it asks the model twice (free text, then grounded) and reports per mode the
+share of answers that yield a problem, that name only the world's objects (the paper's failure:
+``prodcut3`` invented as a new product), whose counts fit the shelves, and whose goal is exactly
+the gold one; plus tokens and latency. Default model ``local/smollm2`` starts a llama.cpp server
+on loopback (extra ``pipflow[local]``). Responses are cached (``--cache-dir``), so a second run
+replays without the model.
+"""
+from __future__ import annotations
+
+import argparse
+import re
+import sys
+from pathlib import Path
+
+import yaml
+
+HERE = Path(__file__).resolve().parent
+_GOAL = re.compile(r"\(\s*=\s*\(\s*stock\s+([^\s()]+)\s+([^\s()]+)\s*\)\s*(-?\d+)\s*\)", re.I)
+
+
+def goal_of(problem: str) -> dict[str, dict[str, int]]:
+    """The ``(= (stock s p) n)`` facts of a problem's :goal section, read leniently."""
+    i = problem.lower().find("(:goal")
+    goal: dict[str, dict[str, int]] = {}
+    for s, p, n in _GOAL.findall(problem[i:] if i >= 0 else ""):
+        goal.setdefault(s, {})[p] = int(n)
+    return goal
+
+
+def score(out: dict, gold: dict, world: dict) -> dict[str, bool]:
+    goal = out["goal"] if out.get("goal") is not None else goal_of(out["problem"])
+    names = {s for s in goal} | {p for items in goal.values() for p in items}
+    known = set(world["shelves"]) | set(world["products"])
+    fits = all(s in world["shelves"] and 0 <= n <= world["shelves"][s]["capacity"]
+               for s, items in goal.items() for n in items.values())
+    return {"problem": bool(out["problem"]) and bool(goal), "invented": bool(names - known),
+            "bad_counts": bool(goal) and not fits, "exact_goal": goal == gold}
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--tasks", default=str(HERE / "warehouse/tasks.yaml"))
+    ap.add_argument("--model", default="local/smollm2")
+    ap.add_argument("--api-base", default=None)
+    ap.add_argument("--max-tokens", type=int, default=384)
+    ap.add_argument("--cache-dir", default=None)
+    ap.add_argument("--no-cache", action="store_true")
+    ap.add_argument("--prompt", default="warehouse_problem")
+    args = ap.parse_args(argv)
+
+    from pipflow.language.generator import generate
+    from pipflow.language.llm import sum_usage
+
+    tasks_file = Path(args.tasks)
+    spec = yaml.safe_load(tasks_file.read_text())
+    world_path = tasks_file.parent / spec["world"]
+    world = yaml.safe_load(world_path.read_text())
+    world["stock"] = {s: dict(world.get("stock", {}).get(s) or {}) for s in world["shelves"]}
+    domain = (HERE.parent / "domains/warehouse.pddl").read_text()
+
+    rows: dict[str, list[dict]] = {"free": [], "grounded": []}
+    usages: dict[str, list[dict]] = {"free": [], "grounded": []}
+    for task in spec["tasks"]:
+        for mode in rows:
+            out = generate(task["command"], world, domain, prompt=args.prompt, model=args.model,
+                           api_base=args.api_base, max_tokens=args.max_tokens, timeout=300,
+                           grounded=mode == "grounded", cache_dir=args.cache_dir,
+                           use_cache=not args.no_cache)
+            rows[mode].append(score(out, task["goal"], world))
+            usages[mode].append(out["usage"])
+            print(f"{task['id']} {mode:8s} {rows[mode][-1]}", file=sys.stderr)
+
+    n = len(spec["tasks"])
+    print(f"model {args.model}, prompt {args.prompt}, {n} tasks ({tasks_file})")
+    print("problem: answers that yield a goal; invented: answers naming a shelf or product the world "
+          "lacks; bad counts: a count outside 0..capacity; exact: the gold goal")
+    print(f"{'mode':9s} {'problem':>8s} {'invented':>9s} {'bad counts':>11s} {'exact':>6s} "
+          f"{'tokens':>7s} {'latency s':>10s} {'cached':>7s}")
+    for mode, r in rows.items():
+        u = sum_usage(usages[mode])
+        count = {k: sum(x[k] for x in r) for k in r[0]}
+        print(f"{mode:9s} {count['problem']:5d}/{n} {count['invented']:6d}/{n} {count['bad_counts']:8d}/{n} "
+              f"{count['exact_goal']:3d}/{n} {u['total_tokens']:7d} {u['latency_s']:10.1f} "
+              f"{u['cached']:4d}/{n}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
