@@ -62,12 +62,22 @@ def _options(args: argparse.Namespace, step_ids: list[str]):
     return RunOptions(jobs=args.jobs, use_cache=not args.no_cache, on_event=display), display
 
 
+def _summary(value: Any, limit: int = 160) -> str:
+    """One line per output; big values point to the run record instead of flooding the screen."""
+    text = json.dumps(value, default=str)
+    if len(text) <= limit:
+        return text
+    size = f"{len(value)} items" if isinstance(value, (list, dict)) else f"{len(text)} chars"
+    return f"<{type(value).__name__}, {size}: see outputs.json>"
+
+
 def _print_result(result, quiet: bool) -> int:
     from pipflow.errors import Refusal
 
     if result.status == "succeeded":
         if not quiet:
-            print(json.dumps(result.outputs, indent=2, default=str))
+            for key, value in result.outputs.items():
+                print(f"{key}: {_summary(value)}")
         print(f"run succeeded in {result.seconds:.2f}s: {result.run_dir}", file=sys.stderr)
         return 0
     where = f"step {result.error_step!r}: " if result.error_step else ""

@@ -6,15 +6,18 @@ from pipflow import Input, StepContext, step
 
 @step("world.load",
       doc="Load a world file (floor, shelves, products, stock, robots), validated with every problem located.",
-      inputs={"path": Input("path", doc="world YAML file, relative to the workflow file")},
+      inputs={"path": Input("path", doc="world YAML file, relative to the workflow file"),
+              "seed": Input("integer", default=None,
+                            doc="vary the robots' start positions reproducibly (none: as in the file)")},
       outputs={"world": "object"},
       cacheable=True)
-def load(ctx: StepContext, path: str) -> dict:
+def load(ctx: StepContext, path: str, seed: int | None = None) -> dict:
     """Raises WorldError (exit 2) listing each problem with file:line:col; returns the normalized
     world dict of docs/architecture.md."""
+    from pipflow.starts import vary_starts
     from pipflow.world import load_world
 
-    world = load_world(ctx.resolve_path(path))
+    world = vary_starts(load_world(ctx.resolve_path(path)), seed)
     ctx.log(f"world {world['name']}: {len(world['shelves'])} shelves, {len(world['products'])} products, "
             f"{len(world['robots'])} robots")
     return {"world": world}
