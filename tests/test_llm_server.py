@@ -9,6 +9,7 @@ A missing server or model FAILS these tests (no skip): they are the proof the LL
 """
 from __future__ import annotations
 
+import json
 import subprocess
 import sys
 from pathlib import Path
@@ -97,3 +98,31 @@ def test_real_server_round_is_parsed_cached_and_replayed_offline(server, tmp_pat
             assert again[key] == first[key], key
         for f in ("response.txt", "messages.json"):
             assert (again_art / f).read_bytes() == (art / f).read_bytes()
+
+
+LOOP = REPO / "tests/fixtures/workflows/llm_loop.yaml"
+
+
+def test_refinement_loop_with_a_real_model_is_bounded_and_ends_clearly(server, tmp_path):
+    """generator -> debugger -> solver -> verifier, at most 2 rounds, through the engine."""
+    from pipflow.engine.runner import run_workflow
+
+    _, api_base = server
+    common = {"model": "openai/smollm2", "api_base": api_base, "cache_dir": str(tmp_path / "cache")}
+    free = run_workflow(LOOP, common, runs_dir=tmp_path / "runs")
+    # the tiny model writes no PDDL: the loop must stop after its 2 rounds and say so
+    assert free.status == "failed" and "maximum of 2 iteration" in free.error, free.error
+    rounds = sorted((free.run_dir / "steps/refine/iterations").iterdir())
+    assert [r.name for r in rounds] == ["1", "2"]
+    second = (rounds[1] / "gen/artifacts/messages.json").read_text()
+    first_errors = json.loads((rounds[0] / "gen/outputs.json").read_text())
+    first_errors = first_errors.get("outputs", first_errors)["errors"]
+    assert first_errors and all(json.dumps(e)[1:-1] in second for e in first_errors)
+
+    # grounded: the answer always names world objects, so the debugger accepts it and the
+    # planner and verifier run; the status is a clear success or a clear failure, never a hang
+    grounded = run_workflow(LOOP, {**common, "grounded": True}, runs_dir=tmp_path / "runs")
+    assert grounded.status in ("succeeded", "failed", "refused")
+    assert grounded.ok or grounded.error
+    debug = json.loads((grounded.run_dir / "steps/refine/iterations/1/debug/outputs.json").read_text())
+    assert debug.get("outputs", debug)["ok"] is True
