@@ -85,3 +85,14 @@ def test_task_names_checked(tmp_path):
     assert "unknown shelf 'shelve4'" in by_line[5] and "shelf4" in by_line[5]
     msgs = str(info.value)
     assert "unknown robot 'robot99'" in msgs and "unknown product 'prodcut1'" in msgs and "'product1'" in msgs
+
+
+def test_seeded_starts_are_free_and_repeatable():
+    from pipflow.world import inside_footprint, with_random_starts
+
+    w = load_world(ROOT / "benchmarks/warehouse/world.yaml")
+    a, b = with_random_starts(w, 3), with_random_starts(w, 3)
+    assert a["robots"] == b["robots"] and a["robots"] != w["robots"]
+    for r in a["robots"].values():
+        assert not any(inside_footprint(r["start"], s) for s in w["shelves"].values())
+        assert 0 <= r["start"][0] <= 30 and 0 <= r["start"][1] <= 20
