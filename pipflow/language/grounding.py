@@ -17,7 +17,7 @@ from __future__ import annotations
 import json
 from typing import Any
 
-from pipflow.language.parsing import ParseIssue
+from pipflow.language.parsing import ParseIssue, validate_constraints
 
 ANY = "any"
 MAX_RULES = 8  # robot-use rules in one command; more is a model repeating itself
@@ -135,8 +135,6 @@ def parse_answer(text: str, world: dict) -> tuple[dict[str, dict[str, int]], lis
         previous = goal.setdefault(shelf, {}).setdefault(product, units)
         if previous != units:
             raise ParseIssue(f"the goal asks for both {previous} and {units} {product} on {shelf}")
-    from pipflow.language.parsing import validate_constraints
-
     rules = []
     for item in data.get("constraints") or []:
         if not isinstance(item, dict) or item.get("rule") not in ("only", "never"):
