@@ -150,8 +150,32 @@ def template_references(value: Any) -> list[Reference]:
     return out
 
 
+_PLAIN = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z_][A-Za-z0-9_]*)*$")
+_MISSING = object()
+_CONSTANTS = {"true", "false", "none", "True", "False", "None"}  # jinja2 literals, not names
+
+
+def _plain_lookup(source: str, namespace: Mapping[str, Any]) -> Any:
+    """``a.b.c`` through mappings only (the common case), without compiling the expression;
+    ``_MISSING`` when jinja2 must decide (a missing key, a non-mapping), so errors stay the same."""
+    if not _PLAIN.match(source):
+        return _MISSING
+    name, *attrs = source.split(".")
+    if name in _CONSTANTS:
+        return _MISSING
+    value = namespace.get(name, _MISSING)
+    for attr in attrs:
+        if value is _MISSING or not isinstance(value, Mapping):
+            return _MISSING
+        value = value.get(attr, _MISSING)
+    return value
+
+
 def evaluate_expression(source: str, namespace: Mapping[str, Any]) -> Any:
     """Evaluate one expression; an undefined result names what was missing."""
+    value = _plain_lookup(source, namespace)
+    if value is not _MISSING:
+        return value
     compiled = _compiled(source)
     try:
         result = compiled(**namespace)

@@ -97,9 +97,22 @@ class _Loader(yaml.reader.Reader, yaml.scanner.Scanner, yaml.parser.Parser,
         self.file = file
 
 
+if getattr(yaml, "__with_libyaml__", False):
+    class _CLoader(yaml._yaml.CParser, _Constructor, yaml.resolver.Resolver):  # type: ignore[name-defined]
+        """The same loader on libyaml's parser (same marks, several times faster)."""
+
+        def __init__(self, stream: str, file: str):
+            yaml._yaml.CParser.__init__(self, stream)
+            _Constructor.__init__(self)
+            yaml.resolver.Resolver.__init__(self)
+            self.file = file
+else:  # pragma: no cover - PyYAML built without libyaml
+    _CLoader = _Loader
+
+
 def parse_yaml(text: str, file: str = "<string>") -> Any:
     """Parse YAML text into Source containers; syntax errors become a located UserError."""
-    loader = _Loader(text, file)
+    loader = _CLoader(text, file)
     try:
         return loader.get_single_data()
     except _DuplicateKey as dup:

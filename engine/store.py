@@ -96,7 +96,8 @@ class RunStore:
         return read_json(self.step_dir(step_id) / "outputs.json")
 
     def write_snapshot(self, workflow_data: dict, inputs: dict) -> None:
-        atomic_write(self.root / "workflow.yaml", yaml.safe_dump(workflow_data, sort_keys=False))
+        dumper = getattr(yaml, "CSafeDumper", yaml.SafeDumper)  # libyaml: ~10x faster on big workflows
+        atomic_write(self.root / "workflow.yaml", yaml.dump(workflow_data, Dumper=dumper, sort_keys=False))
         write_json(self.root / "inputs.json", inputs)
 
     def update_run(self, **fields: Any) -> dict:

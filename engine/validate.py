@@ -304,7 +304,10 @@ def _cycle_diagnostics(wf: Workflow, by_id: dict) -> list[Diagnostic]:
     graph = dependency_graph(wf)
     out = []
     locations = {s.id: s.loc for s in wf.all_steps()} | {n.id: n.loc for n in wf.nodes}
+    order = {sid: i for i, sid in enumerate(locations)}
     for cycle in nx.simple_cycles(graph):
+        first = min(range(len(cycle)), key=lambda i: order.get(cycle[i], len(order)))
+        cycle = cycle[first:] + cycle[:first]  # start at the step defined first: stable messages
         names = " -> ".join([*cycle, cycle[0]])
         out.append(Diagnostic(locations.get(cycle[0]), f"cycle between steps: {names}"))
         if len(out) >= 10:
