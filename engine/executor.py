@@ -47,7 +47,7 @@ class ExecutionState:
 
     outputs: dict[str, dict] = field(default_factory=dict)
     durations: dict[str, float] = field(default_factory=dict)
-    metrics: dict[str, dict] = field(default_factory=dict)
+    metrics: dict[str, list[dict]] = field(default_factory=dict)  # per step, one dict per call
 
 
 def _none_outputs(step: Step | None) -> dict:
@@ -254,12 +254,13 @@ class Executor:
         for attempt in range(1, attempts + 1):
             ctx = StepContext(spec.id, artifact_dir, spec.base_dir,
                               log=lambda m: self.store.event("log", spec.id, message=m),
-                              iteration=iteration[1] if iteration else None)
+                              iteration=iteration[1] if iteration else None,
+                              use_cache=self.options.use_cache)
             try:
                 outputs = self._call(spec, step, ctx, args)
                 if ctx.metrics:
                     with self._lock:
-                        self.state.metrics[spec.id] = dict(ctx.metrics)
+                        self.state.metrics.setdefault(spec.id, []).append(dict(ctx.metrics))
                 return outputs
             except (UserError, Refusal) as err:
                 raise self._located(err, spec.id)
@@ -308,11 +309,29 @@ def _short(value: Any, limit: int = 60) -> str:
     return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
+def _numeric_totals(records: list[dict]) -> dict[str, float]:
+    """Sum every numeric leaf over all calls, by dotted key (e.g. ``llm.total_tokens``): a run's
+    token usage and cost over every round of a loop, without the engine knowing about LLMs."""
+    totals: dict[str, float] = {}
+
+    def walk(value: Any, key: str) -> None:
+        if isinstance(value, dict):
+            for k, v in value.items():
+                walk(v, f"{key}.{k}" if key else str(k))
+        elif isinstance(value, (int, float)) and not isinstance(value, bool):
+            totals[key] = totals.get(key, 0) + value
+
+    for record in records:
+        walk(record, "")
+    return {k: round(v, 6) for k, v in sorted(totals.items())}
+
+
 def write_metrics(store: RunStore, state: ExecutionState, total: float) -> dict:
     metrics = {
         "total_seconds": round(total, 6),
         "step_seconds": {k: round(v, 6) for k, v in state.durations.items()},
         "steps": state.metrics,
+        "totals": _numeric_totals([m for calls in state.metrics.values() for m in calls]),
     }
     write_json(store.root / "metrics.json", metrics)
     return metrics

@@ -98,11 +98,13 @@ class StepContext:
         base_dir: Path,
         log: Callable[[str], None] | None = None,
         iteration: int | None = None,
+        use_cache: bool = True,
     ):
         self.step_id = step_id
         self.artifact_dir = artifact_dir
         self.base_dir = base_dir
         self.iteration = iteration
+        self.use_cache = use_cache  # False under --no-cache: steps with caches of their own obey it too
         self._log = log or (lambda message: None)
         self.metrics: dict[str, Any] = {}
 

@@ -24,7 +24,12 @@ Unloads are applied before loads at the same instant, so a chain through one she
 """
 from __future__ import annotations
 
+import contextlib
+import ctypes
 import math
+import os
+import sys
+
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -211,6 +216,26 @@ def _dist(p: Point, q: Point) -> float:
 # --------------------------------------------------------------------------------------------
 
 
+@contextlib.contextmanager
+def _quiet_c_output():
+    """Silence file descriptors 1 and 2 while pybullet loads and connects: its C library prints
+    "pybullet build time" there, which would clutter every ``pipflow run`` and bench log."""
+    sys.stdout.flush()
+    sys.stderr.flush()
+    saved = [os.dup(1), os.dup(2)]
+    try:
+        with open(os.devnull, "w") as devnull:
+            os.dup2(devnull.fileno(), 1)
+            os.dup2(devnull.fileno(), 2)
+            yield
+            ctypes.CDLL(None).fflush(None)  # the C library buffers its line: flush it while silenced
+    finally:
+        os.dup2(saved[0], 1)
+        os.dup2(saved[1], 2)
+        for fd in saved:
+            os.close(fd)
+
+
 class Scene:
     """Floor, shelves, unit bodies and robots in one DIRECT pybullet client.
 
@@ -218,11 +243,12 @@ class Scene:
     the bodies' positions, while counts are always read back from the bodies themselves."""
 
     def __init__(self, world: dict):
-        import pybullet as p
+        with _quiet_c_output():
+            import pybullet as p
 
+            self.cid = p.connect(p.DIRECT)
         self.p = p
         self.world = world
-        self.cid = p.connect(p.DIRECT)
         self.unit_product: dict[int, str] = {}
         self.slots: dict[str, list[Point]] = {}
         self.occupant: dict[str, dict[int, int]] = {}  # shelf -> slot index -> body

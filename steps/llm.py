@@ -53,7 +53,7 @@ def llm_problem(ctx: StepContext, command: str, world: dict, domain: str,
         command, world, domain_text, prompt=prompt, model=resolved, temperature=temperature,
         max_tokens=max_tokens, timeout=timeout, retries=retries, api_base=api_base,
         feedback=feedback, grounded=grounded,
-        cache_dir=ctx.resolve_path(cache_dir) if cache_dir else None, use_cache=cache,
+        cache_dir=ctx.resolve_path(cache_dir) if cache_dir else None, use_cache=cache and ctx.use_cache,
         base_dir=ctx.base_dir, save=ctx.write_artifact, log=ctx.log)
     ctx.metrics["llm"] = out["usage"]
     return out

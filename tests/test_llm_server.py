@@ -114,8 +114,8 @@ def test_refinement_loop_with_a_real_model_is_bounded_and_ends_clearly(server, t
     assert free.status == "failed" and "maximum of 2 iteration" in free.error, free.error
     rounds = sorted((free.run_dir / "steps/refine/iterations").iterdir())
     assert [r.name for r in rounds] == ["1", "2"]
-    second = (rounds[1] / "gen/artifacts/messages.json").read_text()
-    first_errors = json.loads((rounds[0] / "gen/outputs.json").read_text())
+    second = (rounds[1] / "generate/artifacts/messages.json").read_text()
+    first_errors = json.loads((rounds[0] / "generate/outputs.json").read_text())
     first_errors = first_errors.get("outputs", first_errors)["errors"]
     assert first_errors and all(json.dumps(e)[1:-1] in second for e in first_errors)
 
