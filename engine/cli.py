@@ -322,11 +322,20 @@ def build_parser() -> argparse.ArgumentParser:
     bench.add_argument("tasks", help="task file (benchmarks/README.md format)")
     bench.add_argument("--workflow", default=None, help="workflow to run per task (default: built-in warehouse)")
     bench.add_argument("--seeds", type=int, default=1, help="runs per task; seeds vary the robots' start positions")
-    bench.add_argument("--jobs", type=int, default=None, help="parallel processes (default: CPU count)")
+    bench.add_argument("--jobs", type=int, default=None,
+                       help="parallel processes, or workers of a local dask cluster (default: CPU count)")
     bench.add_argument("--out", default=None, help="output directory (default: bench-out/<time>)")
     bench.add_argument("--matrix", action="append", metavar="KEY=V1,V2", help="run variants side by side")
     bench.add_argument("-i", "--input", action="append", metavar="KEY=VALUE", help="set a workflow input for every run")
     bench.add_argument("--no-cache", action="store_true")
+    bench.add_argument("--executor", default="local", metavar="local|dask[=ADDRESS]",
+                       help="local: a process pool (--jobs); dask: a LocalCluster of --jobs workers; "
+                            "dask=tcp://host:8786: a running dask scheduler")
+    bench.add_argument("--resume", action="store_true",
+                       help="complete the bench in --out: run only the runs without a row file")
+    bench.add_argument("--llm-concurrency", default=None, metavar="N|PROVIDER=N,...",
+                       help="most concurrent LLM calls per provider across a dask cluster "
+                            "(default: $PIPFLOW_LLM_CONCURRENCY or 4)")
     bench.set_defaults(func=cmd_bench)
 
     report = sub.add_parser("report", parents=[common], help="write a static HTML report of a run or a bench")

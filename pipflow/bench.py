@@ -10,7 +10,6 @@ or the refusal or error that ended it. The seed varies the robots' start positio
 from __future__ import annotations
 
 import argparse
-import concurrent.futures as cf
 import csv
 import datetime as _dt
 import itertools
@@ -49,6 +48,9 @@ class BenchConfig:
     matrix: dict[str, list[str]] = field(default_factory=dict)
     inputs: dict[str, str] = field(default_factory=dict)
     use_cache: bool = True
+    executor: str = "local"
+    resume: bool = False
+    llm_limits: dict[str, int] = field(default_factory=dict)
 
 
 def parse_matrix(items: list[str] | None) -> dict[str, list[str]]:
@@ -117,8 +119,55 @@ def _workers(jobs: int | None) -> int:
     return max(1, jobs or os.cpu_count() or 1)
 
 
-def run_bench(config: BenchConfig, progress: bool = True) -> dict:
-    """Run the whole bench; write results into ``config.out``; return results.json's content."""
+def _safe(name: str) -> str:
+    """A variant or task name as one path component."""
+    out = "".join(c if (c.isalnum() or c in "-_.,=+@") else "_" for c in str(name))
+    return out if out not in ("", ".", "..") else "_"
+
+
+def row_path(out: Path, key: tuple[str, str, int]) -> Path:
+    """Where a finished run's row lives: ``OUT/runs/<variant>/<task>/<seed>.json``."""
+    variant, task, seed = key
+    return Path(out) / "runs" / _safe(variant) / _safe(task) / f"{int(seed)}.json"
+
+
+def read_row(out: Path, key: tuple[str, str, int]) -> dict | None:
+    """The stored row of a run, or None (missing, torn or of another run)."""
+    from pipflow.engine.store import read_json
+    from pipflow.executors import run_key
+
+    try:
+        row = read_json(row_path(out, key))
+    except (OSError, ValueError):
+        return None
+    if not isinstance(row, dict):
+        return None
+    try:
+        return row if run_key(row) == tuple(key) else None
+    except (KeyError, TypeError, ValueError):
+        return None
+
+
+def build_specs(config: BenchConfig, tasks_doc: dict, world_path: str) -> list[RunSpec]:
+    specs: list[RunSpec] = []
+    records = str(Path(config.out) / "records")
+    for name, values in variants(config.matrix):
+        values = dict(values)
+        workflow = values.pop("workflow", config.workflow)
+        for task in tasks_doc["tasks"]:
+            for seed in range(config.seeds):
+                specs.append(RunSpec(name, task, seed, workflow, {**config.inputs, **values}, world_path,
+                                     records, config.use_cache))
+    return specs
+
+
+def run_bench(config: BenchConfig, progress: bool = True, on_row=None) -> dict:
+    """Run the whole bench; write results into ``config.out``; return results.json's content.
+
+    Each finished run's row is written at once to ``OUT/runs/<variant>/<task>/<seed>.json``; with
+    ``config.resume`` the runs whose row file exists are not run again. ``on_row(row)`` is called
+    after each row is stored (tests use it to interrupt or to kill a worker)."""
+    from pipflow.executors import make_executor, run_key
     from pipflow.scoring import aggregate_task, summarize
     from pipflow.world import load_tasks
 
@@ -127,39 +176,56 @@ def run_bench(config: BenchConfig, progress: bool = True) -> dict:
                      (Path(config.tasks_file).parent / tasks_doc["world"]).resolve())
     out = Path(config.out)
     out.mkdir(parents=True, exist_ok=True)
-    specs: list[RunSpec] = []
-    for name, values in variants(config.matrix):
-        values = dict(values)
-        workflow = values.pop("workflow", config.workflow)
-        for task in tasks_doc["tasks"]:
-            for seed in range(config.seeds):
-                specs.append(RunSpec(name, task, seed, workflow, {**config.inputs, **values}, world_path,
-                                     str(out / "runs"), config.use_cache))
+    specs = build_specs(config, tasks_doc, world_path)
+    done: dict[tuple, dict] = {}
+    if config.resume:
+        for spec in specs:
+            row = read_row(out, run_key(spec))
+            if row is not None:
+                done[run_key(spec)] = row
+    todo = [s for s in specs if run_key(s) not in done]
+    executor = make_executor(config.executor, config.jobs, llm_limits=config.llm_limits,
+                             records_dir=out / "records")
     started = time.perf_counter()
-    rows = _execute(specs, config.jobs, progress)
+    fresh = _execute(executor, todo, done, out, progress, total=len(specs), on_row=on_row)
     wall = time.perf_counter() - started
+    rows = [done[run_key(s)] for s in specs if run_key(s) in done]
     results = _results(rows, tasks_doc["tasks"], config, wall, aggregate_task, summarize)
+    results["executed_runs"], results["resumed_runs"] = fresh, len(specs) - len(todo)
     _write(out, rows, results)
     return results
 
 
-def _execute(specs: list[RunSpec], jobs: int, progress: bool) -> list[dict]:
+def _execute(executor, todo: list[RunSpec], done: dict, out: Path, progress: bool, total: int,
+             on_row=None) -> int:
+    """Run ``todo`` on the executor; store each row as it arrives (first arrival wins: a run
+    retried after a worker died counts once). Returns how many runs finished here."""
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 
-    rows: list[dict] = []
-    columns = [TextColumn("bench"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn()]
+    from pipflow.engine.store import write_json
+    from pipflow.executors import run_key
+
+    fresh = 0
+    columns = [TextColumn(f"bench ({executor.name})"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn()]
     with Progress(*columns, disable=not progress, transient=False) as bar:
-        task_id = bar.add_task("runs", total=len(specs))
-        if jobs <= 1:
-            for spec in specs:
-                rows.append(run_one(spec))
-                bar.advance(task_id)
-        else:
-            with cf.ProcessPoolExecutor(max_workers=jobs) as pool:
-                for row in pool.map(run_one, specs):
-                    rows.append(row)
-                    bar.advance(task_id)
-    return rows
+        task_id = bar.add_task("runs", total=total, completed=total - len(todo))
+
+        def receive(row: dict) -> None:
+            nonlocal fresh
+            key = run_key(row)
+            if key in done and done[key].get("status") != "lost":
+                return
+            done[key] = row
+            if row.get("status") != "lost":  # an executor failure is not stored: --resume reruns it
+                write_json(row_path(out, key), row)
+            fresh += 1
+            bar.advance(task_id)
+            if on_row is not None:
+                on_row(row)
+
+        if todo:
+            executor.run(todo, receive)
+    return fresh
 
 
 def _results(rows, tasks, config: BenchConfig, wall: float, aggregate_task, summarize) -> dict:
@@ -178,7 +244,7 @@ def _results(rows, tasks, config: BenchConfig, wall: float, aggregate_task, summ
     first = variant_results[0]
     return {"summary": first["summary"], "tasks": first["tasks"], "variants": variant_results,
             "config": {"tasks": str(config.tasks_file), "workflow": config.workflow, "seeds": config.seeds,
-                       "jobs": config.jobs, "matrix": config.matrix, "inputs": config.inputs},
+                       "jobs": config.jobs, "executor": config.executor, "matrix": config.matrix, "inputs": config.inputs},
             "wall_seconds": round(wall, 3),
             "created": _dt.datetime.now(_dt.timezone.utc).isoformat(timespec="seconds")}
 
@@ -230,10 +296,19 @@ def bench_main(args: argparse.Namespace) -> int:
     tasks_file = Path(args.tasks)
     if not tasks_file.exists():
         raise UserError(f"{tasks_file}: no such task file")
+    from pipflow.executors import parse_executor, parse_limits
+
+    executor = getattr(args, "executor", None) or "local"
+    parse_executor(executor)  # a typo fails before anything runs
+    resume = bool(getattr(args, "resume", False))
+    if resume and not args.out:
+        raise UserError("--resume needs --out DIR (the bench directory to complete)")
+    limits = getattr(args, "llm_concurrency", None) or os.environ.get("PIPFLOW_LLM_CONCURRENCY") or "4"
     config = BenchConfig(
         tasks_file=tasks_file, workflow=args.workflow or "warehouse", seeds=max(1, args.seeds),
         jobs=_workers(args.jobs), out=Path(args.out or f"bench-out/{stamp}"),
-        matrix=parse_matrix(args.matrix), inputs=_key_values(args.input or []), use_cache=not args.no_cache)
+        matrix=parse_matrix(args.matrix), inputs=_key_values(args.input or []), use_cache=not args.no_cache,
+        executor=executor, resume=resume, llm_limits=parse_limits(limits))
     results = run_bench(config, progress=not args.quiet)
     print(markdown_table(results))
     print(f"results: {config.out / 'results.json'}")

@@ -87,7 +87,11 @@ def complete(
     while True:
         start = time.perf_counter()
         try:
-            response = litellm.completion(**kwargs)
+            # one of the provider's LLM slots across a dask cluster (a no-op elsewhere)
+            from pipflow.executors import llm_slot
+
+            with llm_slot(model):
+                response = litellm.completion(**kwargs)
             break
         except Exception as exc:  # litellm maps every provider's error onto its own classes
             kind = type(exc).__name__
