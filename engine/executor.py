@@ -278,14 +278,7 @@ class Executor:
 
     def _call(self, spec: StepSpec, step: Step, ctx: StepContext, args: dict) -> dict:
         if spec.timeout:
-            pool = cf.ThreadPoolExecutor(max_workers=1)
-            future = pool.submit(step.func, ctx, **args)
-            try:
-                outputs = future.result(timeout=spec.timeout)
-            except cf.TimeoutError:
-                raise StepError(f"step {spec.id!r} ({spec.uses}) timed out after {spec.timeout:g} s") from None
-            finally:
-                pool.shutdown(wait=False)
+            outputs = _call_with_timeout(spec, step, ctx, args)
         else:
             outputs = step.func(ctx, **args)
         if not isinstance(outputs, dict):
@@ -302,6 +295,29 @@ class Executor:
         if getattr(err, "step_id", None) is None:
             err.step_id = step_id  # type: ignore[attr-defined]
         return err
+
+
+def _call_with_timeout(spec: StepSpec, step: Step, ctx: StepContext, args: dict) -> dict:
+    """Run a step in a daemon thread and stop waiting after ``spec.timeout`` seconds.
+
+    Python cannot kill a thread: a step that overruns keeps running in the background, but as a
+    daemon it no longer holds the process open once the run has ended."""
+    box: dict[str, Any] = {}
+
+    def target() -> None:
+        try:
+            box["outputs"] = step.func(ctx, **args)
+        except BaseException as err:  # handed to the caller's thread below
+            box["error"] = err
+
+    thread = threading.Thread(target=target, name=f"pipflow-step-{spec.id}", daemon=True)
+    thread.start()
+    thread.join(spec.timeout)
+    if thread.is_alive():
+        raise StepError(f"step {spec.id!r} ({spec.uses}) timed out after {spec.timeout:g} s")
+    if "error" in box:
+        raise box["error"]
+    return box["outputs"]
 
 
 def _short(value: Any, limit: int = 60) -> str:

@@ -123,7 +123,10 @@ class RunStore:
             self._events.write(line)
             self._events.flush()
         if self.listener is not None:
-            self.listener(record)
+            try:
+                self.listener(record)
+            except Exception:  # a display that cannot write (closed pipe) must not fail the run
+                self.listener = None
 
     def events(self) -> list[dict]:
         try:
