@@ -328,7 +328,7 @@ class DaskExecutor:
                 client.close(timeout=10)
             return
         cluster = LocalCluster(n_workers=self.jobs, threads_per_worker=1, processes=True,
-                               dashboard_address=None, silence_logs=40)
+                               dashboard_address=":0", silence_logs=40)
         client = Client(cluster, timeout=CONNECT_TIMEOUT)
         try:
             client.wait_for_workers(self.jobs, timeout=CONNECT_TIMEOUT)
