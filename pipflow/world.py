@@ -24,28 +24,16 @@ from typing import Any, Callable, Iterable
 import yaml
 
 from pipflow.errors import Diagnostic, Location, WorldError
+from pipflow.resources import data_file
 from pipflow.yamlsource import load_with_locations, yaml_error_diagnostic
 
 Locate = Callable[..., Location]
 
 
-# ---------------------------------------------------------------------------------------------
-# data files (schemas/, domains/) in a clone and in an installed copy
-# ---------------------------------------------------------------------------------------------
-def data_file(folder: str, name: str) -> Path:
-    """Path of ``folder/name`` (folder: schemas, domains, prompts, workflows): installed copies
-    keep these folders inside the ``pipflow`` package, a clone keeps them at the top."""
-    here = Path(__file__).resolve().parent
-    for base in (here / folder, here.parent / folder):
-        if (base / name).exists():
-            return base / name
-    raise FileNotFoundError(f"pipflow data file {folder}/{name} not found next to {here}")
-
-
 @lru_cache(maxsize=None)
 def load_schema(name: str) -> dict:
     """A JSON Schema of ``schemas/`` by file name (cached: schemas do not change in a run)."""
-    return json.loads(data_file("schemas", name).read_text())
+    return json.loads(data_file(f"schemas/{name}").read_text())
 
 
 def closest(name: str, choices: Iterable[str], n: int = 3) -> list[str]:
