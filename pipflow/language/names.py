@@ -46,6 +46,13 @@ STOPWORDS: set[str] = {
     "spread", "distribute", "send", "deliver", "transfer", "shift", "ship", "set", "end",
 } | NUMBER_WORDS
 
+NUMBER_MARKS = {"number", "no", "nr", "num", "#"}
+ORDINALS: dict[str, int] = {
+    w: k for k, w in enumerate(
+        "first second third fourth fifth sixth seventh eighth ninth tenth eleventh twelfth".split(), 1)
+} | {f"{k}{'st' if k % 10 == 1 and k != 11 else 'nd' if k % 10 == 2 and k != 12 else 'rd' if k % 10 == 3 and k != 13 else 'th'}": k
+     for k in range(1, 40)}
+
 _TOKEN = re.compile(r"\d+\.\d+|[A-Za-z0-9]+(?:['’][A-Za-z]+)?(?:[-_][A-Za-z0-9]+)*|[,.;:!?()]")
 
 
@@ -133,18 +140,34 @@ class NameIndex:
                 self.names.append(_Name(str(n), kind, alpha, digits))
         # Stems the world's own names share ("bin" of bin7) forgive misspellings; the English
         # kind words must be spelled right, or "gets" would pass for a misspelt "agents".
+        # A stem must be a real word: "a" of A1 or "r" of r7 would turn the article "a" or a
+        # stray letter into a kind word.
         self.stems: dict[str, set[str]] = {
-            kind: {n.alpha for n in self.names if n.kind == kind and n.digits} for kind in KINDS
+            kind: {n.alpha for n in self.names if n.kind == kind and n.digits
+                   and len(n.alpha) > 2 and n.alpha not in STOPWORDS} for kind in KINDS
         }
 
     def candidates(self, kind: str) -> str:
         """The names of a kind, for an error message."""
         return ", ".join(self.by_kind[kind]) or f"(the world has no {kind})"
 
-    def with_digits(self, kind: str, digits: str) -> list[str]:
-        """Names of a kind whose trailing number is ``digits`` ("robot 3" -> robot3 or r3)."""
-        return [n.name for n in self.names
-                if n.kind == kind and n.digits and int(n.digits) == int(digits)]
+    def with_digits(self, kind: str, digits: str, word: str | None = None) -> list[str]:
+        """Names of a kind whose trailing number is ``digits`` ("robot 3" -> robot3 or r3).
+
+        With ``word`` (the kind word the command used), only names whose letters could abbreviate
+        it or are the kind's own words: "robot 3" finds r3, but "rack 1" never finds A1 (a row
+        label, not a rack) and "robot 2" never finds forklift-2.
+        """
+        out = []
+        for n in self.names:
+            if n.kind != kind or not n.digits or int(n.digits) != int(digits):
+                continue
+            if word is not None and n.alpha and not any(
+                    w.startswith(n.alpha) or n.alpha in KIND_WORDS[kind] or n.alpha in self.stems[kind]
+                    for w in _variants(word)):
+                continue
+            out.append(n.name)
+        return out
 
     def kind_of_word(self, alpha: str) -> str | None:
         """The kind a bare word names ("shelves", "prodcut" -> product), if any."""
@@ -187,15 +210,37 @@ class NameIndex:
             return None
         if not digits:
             return Tok("kind", text, kind, kind)
-        same = self.with_digits(kind, digits)
+        same = self.with_digits(kind, digits, alpha)
         if len(same) == 1:
             return Tok("name", text, same[0], kind)
         raise TranslationError(
             f"{_quote(text)} names no {kind} in this world (candidates: {self.candidates(kind)})")
 
+    def ordinal(self, kind: str, n: int, text: str) -> Tok:
+        """"the third shelf": only when the world's order and its numbering agree on one name."""
+        listed = self.by_kind[kind]
+        numbered = self.with_digits(kind, str(n))
+        if 0 < n <= len(listed) and numbered == [listed[n - 1]]:
+            return Tok("name", text, listed[n - 1], kind)
+        raise TranslationError(
+            f"{_quote(text)}: cannot tell which {kind} is meant by position "
+            f"(candidates: {self.candidates(kind)})")
+
     def at(self, raw: list[str], i: int) -> tuple[Tok, int] | None:
         """The name or kind word starting at ``raw[i]``, longest reading first."""
         low = raw[i].lower()
+        if low in ORDINALS and i + 1 < len(raw) and raw[i + 1][0].isalpha():
+            kind = self.kind_of_word(normalize(raw[i + 1]))
+            if kind is not None and raw[i + 1].lower() in KIND_WORDS[kind] | self.stems[kind] | {
+                    w + "s" for w in self.stems[kind]}:
+                return self.ordinal(kind, ORDINALS[low], f"{raw[i]} {raw[i + 1]}"), i + 2
+        if i + 2 < len(raw) and raw[i + 1].lower() in NUMBER_MARKS and word_value(raw[i + 2].lower()) is not None:
+            alpha, digits = split_digits(normalize(low))
+            if not digits and self.kind_of_word(alpha):  # "shelf number 3", "robot no 4"
+                found = self.lookup(alpha, str(word_value(raw[i + 2].lower())),
+                                    " ".join(raw[i:i + 3]))
+                if found is not None:
+                    return found, i + 3
         if i + 1 < len(raw) and _TOKEN.fullmatch(raw[i + 1]) and raw[i + 1][0].isalnum():
             nxt = raw[i + 1].lower()
             text = f"{raw[i]} {raw[i + 1]}"
@@ -226,6 +271,8 @@ def tokenize(command: str, index: NameIndex) -> list[Tok]:
     Apostrophes are dropped ("don't" -> "dont"); a range written "8-11" reads as "8 to 11".
     """
     raw: list[str] = []
+    command = re.sub(r"-+>|→|=>", " to ", command)
+    command = re.sub(r"\b(\d+)\s*[x×]\b", r"\1 x", command)  # "5x product1"
     for m in _TOKEN.finditer(command):
         t = m.group(0).replace("'", "").replace("’", "")
         if re.fullmatch(r"\d+-\d+", t):

@@ -11,8 +11,10 @@ format of the task files. Which way a rule goes is read from a few word classes:
   product1": a permission that restricts nothing) is an error, not a guess.
 
 Its scope comes from the products and shelves the clause names: a shelf after "from"/"off"/"out of"
-is a ``from``, after "to"/"into"/"onto" a ``to``, and with no direction ("at", "on", no word) both,
-as two items. Kind words alone ("product", "one shelf to another") narrow nothing.
+is a ``from``, after "to"/"into"/"onto" a ``to``, and with no direction ("at", "on", no word) or
+"away from" both, as two items (the format has no "or"). "from A to B" is one move, so one item
+with both fields. Kind words alone ("product", "one shelf to another") narrow nothing. Robot
+lists and ranges: "robots 1, 2 and 3", "robots 8 to 11", "robots 8-11", "r1 to r3".
 """
 from __future__ import annotations
 
@@ -56,6 +58,11 @@ def _robots(toks: list[Tok], index: NameIndex) -> list[str]:
                     found.append(_robot_number(n, f"{t.text} {toks[j].text} {toks[j + 1].text}", index))
                 i = j + 2
                 continue
+            if (j + 1 < len(toks) and toks[j].is_word(*RANGE_WORDS) and toks[j + 1].kind == "name"
+                    and toks[j + 1].of == "robot" and digits):  # "r1 to r3"
+                found += _name_range(t, toks[j], toks[j + 1], index)
+                i = j + 2
+                continue
             while j + 1 < len(toks) and toks[j].text.lower() in LIST_WORDS and toks[j + 1].kind == "num":
                 found.append(_robot_number(int(toks[j + 1].value), toks[j + 1].text, index))
                 j += 2
@@ -67,6 +74,24 @@ def _robots(toks: list[Tok], index: NameIndex) -> list[str]:
         i += 1
     order = {name: k for k, name in enumerate(index.by_kind["robot"])}
     return sorted(dict.fromkeys(found), key=lambda r: order.get(r, len(order)))
+
+
+def _name_range(a: Tok, word: Tok, b: Tok, index: NameIndex) -> list[str]:
+    """ "r1 to r3": the robots between two names that share their letters."""
+    from pipflow.language.names import normalize, split_digits
+    (la, da), (lb, db) = split_digits(normalize(str(a.value))), split_digits(normalize(str(b.value)))
+    text = f"{a.text} {word.text} {b.text}"
+    if la != lb or not da or not db or int(db) <= int(da):
+        raise TranslationError(f"'{text}' is not an increasing range of robots "
+                               f"(candidates: {index.candidates('robot')})")
+    out = []
+    for n in range(int(da) + 1, int(db) + 1):
+        hit = [r for r in index.by_kind["robot"] if split_digits(normalize(r)) == (la, str(n))]
+        if len(hit) != 1:
+            raise TranslationError(f"'{text}': no robot {la}{n} in this world "
+                                   f"(candidates: {index.candidates('robot')})")
+        out.append(hit[0])
+    return out
 
 
 def _robot_number(n: int, text: str, index: NameIndex) -> str:
@@ -97,6 +122,8 @@ def _role(toks: list[Tok], i: int) -> str:
         t = toks[j]
         if t.kind != "word":
             break
+        if t.value in FROM_WORDS and j > 0 and toks[j - 1].is_word("away", "clear"):
+            return "both"  # "keep robot7 away from shelf3": no move from it nor to it
         if t.value in FROM_WORDS or (t.value == "of" and j > 0 and toks[j - 1].is_word("out")):
             return "from"
         if t.value in TO_WORDS:
@@ -116,13 +143,28 @@ def parse_rule(toks: list[Tok], index: NameIndex) -> list[dict]:
         return []
     side = _polarity(toks)
     products = list(dict.fromkeys(str(t.value) for t in toks if t.kind == "name" and t.of == "product"))
-    places: list[tuple[str, str]] = []
-    for i, t in enumerate(toks):
-        if t.kind == "name" and t.of == "shelf":
-            role = _role(toks, i)
-            for r in (("from", "to") if role == "both" else (role,)):
-                if (r, str(t.value)) not in places:
-                    places.append((r, str(t.value)))
+    shelves = [(i, str(t.value), _role(toks, i)) for i, t in enumerate(toks)
+               if t.kind == "name" and t.of == "shelf"]
+    places: list[dict] = []
+    k = 0
+    while k < len(shelves):
+        i, name, role = shelves[k]
+        if role == "from" and k + 1 < len(shelves) and shelves[k + 1][2] == "to" and all(
+                x.kind == "word" for x in toks[i + 1:shelves[k + 1][0]]):
+            place = {"from": name, "to": shelves[k + 1][1]}  # one move: "from A to B"
+            if place not in places:
+                places.append(place)
+            k += 2
+            continue
+        for r in (("from", "to") if role == "both" else (role,)):
+            if {r: name} not in places:
+                places.append({r: name})
+        k += 1
+    return scoped(side, robots, products, places)
+
+
+def scoped(side: str, robots: list[str], products: list[str], places: list[dict]) -> list[dict]:
+    """One item per product and place the rule names (each a move it governs)."""
     items: list[dict] = []
     for product in products or [None]:
         for place in places or [None]:
@@ -130,6 +172,6 @@ def parse_rule(toks: list[Tok], index: NameIndex) -> list[dict]:
             if product is not None:
                 item["product"] = product
             if place is not None:
-                item[place[0]] = place[1]
+                item.update(place)
             items.append(item)
     return items
