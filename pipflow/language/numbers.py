@@ -123,6 +123,13 @@ def _cardinal(p: _Parts, k: int) -> tuple[int, int] | None:
     return total + current, j
 
 
+def _and_a_half(p: _Parts, k: int, value: int, c: int) -> tuple[int, int]:
+    """ "two dozen and a half" (30): half a collective more, when that is whole."""
+    if p.get(k) == "and" and p.get(k + 1) in ("a", "an") and p.get(k + 2) == "half" and c % 2 == 0:
+        return value + c // 2, k + 3
+    return value, k
+
+
 def _term(p: _Parts, k: int) -> tuple[int, int] | None:
     """A count optionally scaled by a collective: "7", "two dozen", "a trio", "half a dozen"."""
     w = p.get(k)
@@ -139,7 +146,7 @@ def _term(p: _Parts, k: int) -> tuple[int, int] | None:
     if w in ("a", "an"):
         c = _collective(p.get(k + 1), plural_ok=False)
         if c is not None:
-            return c, k + 2
+            return _and_a_half(p, k + 2, c, c)
     c = _collective(w, plural_ok=False)
     if c is not None and w not in ("score", "gross", "couple"):  # bare "dozen product3"
         return c, k + 1
@@ -149,7 +156,7 @@ def _term(p: _Parts, k: int) -> tuple[int, int] | None:
     value, j = card
     c = _collective(p.get(j), plural_ok=True)
     if c is not None:
-        return value * c, j + 1
+        return _and_a_half(p, j + 1, value * c, c)
     return value, j
 
 

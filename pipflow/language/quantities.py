@@ -3,7 +3,7 @@
 Relative and quantified amounts only have a meaning against the world's stock, so they are kept
 symbolic while the command is read and resolved here, in one place, with one rule each:
 
-* ``more``/``fewer``/``times``/``half``: relative to the count the goal already gives that shelf
+* ``more``/``fewer``/``times``/``half``/``frac`` ("a third of", "two quarters of"): relative to the count the goal already gives that shelf
   and product (from an earlier clause of the same command), else to the current stock;
 * ``all``/``every``: the product's total over every shelf in the world;
 * ``none``/``no``: zero; ``empty``: every product the shelf holds goes to zero;
@@ -12,7 +12,7 @@ symbolic while the command is read and resolved here, in one place, with one rul
 * ``full``: the shelf's capacity minus the other goods it keeps (their goal count when the command
   sets one, else their stock); "full of only X" is the capacity and the other goods go to zero.
 
-Half of an odd count is not a whole number: that is a :class:`TranslationError` (the command
+Half of an odd count (a third of 10...) is not a whole number: that is a :class:`TranslationError` (the command
 does not say which way to round). A count that would go below zero is a :class:`Refusal`.
 """
 from __future__ import annotations
@@ -26,9 +26,10 @@ from pipflow.errors import Refusal, TranslationError
 class Amount:
     """An amount as the command states it; ``text`` is the words, for messages."""
 
-    mode: str  # exact | more | fewer | times | half | all | none | empty | full | full_only
+    mode: str  # exact | more | fewer | times | half | frac | all | none | empty | full | full_only
     value: int = 0
     text: str = ""
+    den: int = 1  # frac: value/den of the base ("a third of" is 1/3)
 
 
 def stock(world: dict, shelf: str, product: str) -> int:
@@ -61,6 +62,13 @@ def _half(base: int, amount: Amount, where: str) -> int:
     return base // 2
 
 
+def _fraction(base: int, amount: Amount, where: str) -> int:
+    if (base * amount.value) % amount.den:
+        raise TranslationError(f"'{amount.text}': {amount.value}/{amount.den} of {base} ({where}) is "
+                               f"not a whole number and the command does not say how to round")
+    return base * amount.value // amount.den
+
+
 def resolve(amount: Amount, shelf: str, product: str, world: dict, current: int | None) -> int:
     """The goal count for (shelf, product); ``current`` is the goal's count so far, if any."""
     base = stock(world, shelf, product) if current is None else current
@@ -75,6 +83,8 @@ def resolve(amount: Amount, shelf: str, product: str, world: dict, current: int 
         value = base * amount.value
     elif mode == "half":
         value = _half(base, amount, f"{product} on {shelf}")
+    elif mode == "frac":
+        value = _fraction(base, amount, f"{product} on {shelf}")
     elif mode == "all":
         value = total(world, product)
     elif mode == "none":
@@ -93,6 +103,8 @@ def moved(amount: Amount, source: str, product: str, world: dict, current: int |
         return base
     if amount.mode == "half":
         return _half(base, amount, f"{product} on {source}")
+    if amount.mode == "frac":
+        return _fraction(base, amount, f"{product} on {source}")
     raise TranslationError(f"'{amount.text}' does not say how many {product} to move from {source}")
 
 

@@ -44,6 +44,29 @@ EVEN_WORDS = {"evenly", "equally"}
 SPLIT_VERBS = {"split", "divide", "distribute", "share", "spread"}
 BETWEEN = {"between", "among", "amongst", "across"}
 ONLY_WORDS = {"only", "just", "exclusively", "solely"}
+FRACTIONS = {"half": 2, "halves": 2, "third": 3, "thirds": 3, "quarter": 4, "quarters": 4,
+             "fourth": 4, "fourths": 4, "fifth": 5, "fifths": 5, "sixth": 6, "sixths": 6,
+             "eighth": 8, "eighths": 8, "tenth": 10, "tenths": 10}
+EACH_WORDS = {"each", "both", "apiece", "respectively"}
+LIST_JOIN = {",", "and", "&", "the", "plus"}
+# Between a product named first and its count: "product1 should be 5 on shelf2".
+PRODUCT_FIRST = {"should", "must", "shall", "will", "would", "ought", "to", "be", "is", "are",
+                 "needs", "need", "has", "have", "count", "number", "amount", "total", "of",
+                 "exactly", "equal", "equals", "at", "on", "in", "inside", "the", "x", "set",
+                 "becomes", "become", "go", "goes", "up", "with", ":", "=", "now", "then"}
+# Bounds, not counts: the goal format fixes exact counts, so these cannot be written as a goal.
+INEQUALITY = [("no", "more", "than"), ("not", "more", "than"), ("no", "fewer", "than"),
+              ("no", "less", "than"), ("not", "less", "than"), ("not", "fewer", "than"),
+              ("at", "least"), ("at", "most"), ("more", "than"), ("fewer", "than"),
+              ("less", "than"), ("up", "to"), ("a", "maximum", "of"), ("a", "minimum", "of"),
+              ("maximum", "of"), ("minimum", "of"), ("max",), ("min",), ("maximum",), ("minimum",),
+              ("over",), ("under",), ("above",), ("below",), ("approximately",), ("roughly",),
+              ("about",), ("around",), ("nearly",), ("almost",), ("some",), ("several",),
+              ("a", "few"), ("few",), ("many",), ("lots", "of"), ("plenty", "of")]
+INEQUALITY_AFTER = [("or", "more"), ("or", "fewer"), ("or", "less"), ("or", "so"), ("plus",),
+                    ("at", "least"), ("at", "most"), ("max",), ("min",), ("tops",)]
+STATE_RULE = {"broken", "faulty", "unavailable", "offline", "disabled", "damaged", "down",
+              "anything", "everything", "any", "all", "anywhere", "ever", "whatsoever"}
 
 
 def _phrase(toks: list[Tok]) -> str:
@@ -129,6 +152,7 @@ class _Reader:
 
     def __init__(self, world: dict, index: NameIndex, goal: _Goal):
         self.world, self.index, self.goal = world, index, goal
+        self.consumed: set[int] = set()  # counts already read for a product named before them
 
     # -- names -------------------------------------------------------------------------------
     def shelf(self, t: Tok) -> str:
@@ -172,7 +196,16 @@ class _Reader:
             elif j < len(toks) and toks[j].is_word("times") and j + 1 < len(toks) \
                     and toks[j + 1].is_word("as", "more"):
                 mode, j = "times", j + 2
+            if mode == "exact" and j < len(toks) and toks[j].is_word(*FRACTIONS):
+                # "two thirds of the product1", "one quarter of"
+                k = self._skip(toks, j + 1, FILLER)
+                if k < len(toks) and toks[k].kind == "name" and toks[k].of == "product":
+                    a = Amount("frac", int(t.value), _phrase(toks[i:k + 1]), FRACTIONS[toks[j].value])
+                    return [_Item(str(toks[k].value), a)], k + 1
             k = self._skip(toks, j, FILLER)
+            if k + 2 < len(toks) and toks[k].kind == "kind" and toks[k].of == "product" \
+                    and toks[k + 1].is_word("of") and toks[k + 2].of == "product":
+                k = self._skip(toks, k + 1, FILLER)  # "fifteen items of product1"
             if k < len(toks) and toks[k].kind == "name" and toks[k].of == "product":
                 words = _phrase(toks[i:k + 1])
                 return [_Item(str(toks[k].value), Amount(mode, int(t.value), words))], k + 1
@@ -201,6 +234,12 @@ class _Reader:
                     return [_Item(None, Amount("empty", 0, words))], k + 1
                 return [_Item(p, Amount("all", 0, words)) for p in self.index.by_kind["product"]], k + 1
             return None
+        if w in ("a", "an", "one") and i + 1 < len(toks) and toks[i + 1].is_word(*FRACTIONS):
+            k = self._skip(toks, i + 2, FILLER)
+            if k < len(toks) and toks[k].kind == "name" and toks[k].of == "product":
+                a = Amount("frac", 1, _phrase(toks[i:k + 1]), FRACTIONS[str(toks[i + 1].value)])
+                return [_Item(str(toks[k].value), a)], k + 1
+            return None
         if w in ("a", "an") and i + 1 < len(toks) and toks[i + 1].of == "product" \
                 and toks[i + 1].kind == "name":
             return [_Item(str(toks[i + 1].value), Amount("exact", 1, _phrase(toks[i:i + 2])))], i + 2
@@ -210,7 +249,37 @@ class _Reader:
             if fill:
                 return [_Item(str(t.value), Amount("full_only" if only else "full", 0,
                                                    f"full of {t.text}"))], i + 1
+            later = self._count_after(toks, i)
+            if later is not None:
+                return later
             raise TranslationError(f"'{t.text}': the command gives no count for it")
+        return None
+
+    def _count_after(self, toks: list[Tok], i: int) -> tuple[list[_Item], int] | None:
+        """A product named before its count: "product1 should be 5 on shelf2", "product1: 5".
+
+        The count is the first number after the product, across only linking words and shelves,
+        that no product follows (so "product1 and 5 product2" is not read this way).
+        """
+        j = i + 1
+        while j < len(toks):
+            u = toks[j]
+            if u.kind == "num":
+                k = self._skip(toks, j + 1, MORE | FEWER)
+                mode = "exact"
+                if k > j + 1:
+                    mode = "more" if toks[j + 1].value in MORE else "fewer"
+                after = self._skip(toks, k, FILLER)
+                if after < len(toks) and toks[after].of == "product":
+                    return None
+                self.consumed.add(j)
+                words = _phrase(toks[i:k])
+                return [_Item(str(toks[i].value), Amount(mode, int(u.value), words))], i + 1
+            if u.of == "shelf" or (u.kind == "word" and u.value in PRODUCT_FIRST) or (
+                    u.kind == "punct" and u.value in (":", "=")):
+                j += 1
+                continue
+            return None
         return None
 
     # -- clauses -----------------------------------------------------------------------------
@@ -259,9 +328,109 @@ class _Reader:
                 self.goal.set(s, product, v, words, absolute=True)
         return True
 
+    def _shelf_runs(self, toks: list[Tok]) -> list[tuple[int, int, list[str]]]:
+        """Shelves listed together ("shelf1 and shelf2", "shelf1, shelf2 and shelf3")."""
+        runs = []
+        i = 0
+        while i < len(toks):
+            if toks[i].of != "shelf":
+                i += 1
+                continue
+            names, end, k = [self.shelf(toks[i])], i + 1, i + 1
+            while k < len(toks):
+                if toks[k].of == "shelf" and (toks[k - 1].is_word("and", "plus")
+                                              or toks[k - 1].text in (",", "&", "the")):
+                    names.append(self.shelf(toks[k]))
+                    end = k + 1
+                elif not (toks[k].is_word(*LIST_JOIN) or toks[k].text in (",", "&")):
+                    break
+                k += 1
+            itemish = lambda ts: any(t.kind == "num" or t.of == "product"  # noqa: E731
+                                     or t.is_word(*EMPTY_WORDS | FILL_WORDS) for t in ts)
+            if len(names) > 1 and itemish(toks[:i]) and itemish(toks[end:]):
+                names = names[:1]  # "5 product1 in shelf2, and shelf4 should be empty": two clauses
+                end = i + 1
+            if len(names) > 1:
+                start = i
+                while start > 0 and toks[start - 1].is_word("both", "the"):
+                    start -= 1
+                if start > 1 and toks[start - 1].is_word("of") and toks[start - 2].is_word("each", "both"):
+                    start -= 2  # "on each of shelf1 and shelf2"
+                runs.append((start, end, names))
+            i = max(end, i + 1)
+        return runs
+
+    def shelf_list(self, toks: list[Tok]) -> bool:
+        """Counts for several shelves at once; True when handled.
+
+        "shelf1 and shelf2 should each hold 4 product2" (also "both", "apiece"): every shelf gets
+        the counts. "shelf1 and shelf2 should hold 4 and 6 product1 respectively": in order.
+        "empty shelf1 and shelf2", "no product3 on shelf1 and shelf2": zero is zero on each.
+        Otherwise a count for a list of shelves could be each or a total: an error says so.
+        """
+        runs = self._shelf_runs(toks)
+        if not runs:
+            return False
+        if len(runs) > 1:
+            raise TranslationError(f"'{_phrase(toks)}' lists shelves more than once; "
+                                   f"say the counts for each shelf separately")
+        start, end, shelves = runs[0]
+        words = {t.value for t in toks if t.kind == "word"}
+        rest = toks[:start] + [Tok("kind", "SHELVES", "shelf", "shelf-list")] + toks[end:]
+        if "respectively" in words:
+            self.respectively(rest, shelves, _phrase(toks[start:end]))
+            return True
+        each = words & {"each", "both", "apiece", "every"} and not any(
+            toks[k].is_word("each", "every", "both") and k + 1 < len(toks) and toks[k + 1].of == "product"
+            for k in range(len(toks)))
+        zero = not any(t.kind == "num" for t in toks) and bool(words & (EMPTY_WORDS | {"no", "none"}))
+        if not each and not zero:
+            raise TranslationError(
+                f"'{_phrase(toks)}': the command does not say whether each of "
+                f"{', '.join(shelves)} gets these counts or they share them (say 'each', "
+                f"'respectively' or 'evenly between')")
+        for shelf in shelves:
+            one: list[Tok] = []
+            for k, t in enumerate(rest):
+                if t.of == "shelf-list":
+                    one.append(Tok("name", shelf, shelf, "shelf"))
+                elif t.is_word("each", "both", "apiece") and not (
+                        k + 1 < len(rest) and rest[k + 1].of == "product"):
+                    continue
+                else:
+                    one.append(t)
+            self.clause(one)
+        return True
+
+    def respectively(self, rest: list[Tok], shelves: list[str], listed: str) -> None:
+        """ "4 and 6 product1", "4 product1 and 6 product2" ... respectively, in the shelves' order."""
+        add = bool({t.value for t in rest if t.kind == "word"} & ADD_VERBS)
+        pairs: list[tuple[int, str | None, str]] = []
+        for j, t in enumerate(rest):
+            if t.kind != "num":
+                continue
+            k = self._skip(rest, j + 1, FILLER)
+            product = str(rest[k].value) if k < len(rest) and rest[k].kind == "name" \
+                and rest[k].of == "product" else None
+            pairs.append((int(t.value), product, _phrase(rest[j:k + 1] if product else rest[j:j + 1])))
+        named = [p for _, p, _ in pairs if p]
+        if len(named) == 1 and pairs and pairs[-1][1] is not None:
+            pairs = [(n, named[0], w) for n, _, w in pairs]  # "4 and 6 product1"
+        if len(pairs) != len(shelves) or any(p is None for _, p, _ in pairs):
+            raise TranslationError(
+                f"'respectively': {len(pairs)} count(s) with products "
+                f"({', '.join(w for _, _, w in pairs) or 'none'}) for {len(shelves)} shelves "
+                f"({listed}); give one count and product per shelf")
+        for shelf, (n, product, w) in zip(shelves, pairs):
+            self.goal.apply(shelf, _Item(product, Amount("exact", n, w)), add)
+
     def clause(self, toks: list[Tok]) -> None:
         """Read one goal clause (a sentence, or its part before a rule)."""
+        self.consumed = set()
+        _no_bounds(toks)
         if self.evenly(toks):
+            return
+        if self.shelf_list(toks):
             return
         words = {t.value for t in toks if t.kind == "word"}
         add = bool(words & ADD_VERBS)
@@ -306,6 +475,9 @@ class _Reader:
                 rest_empty = True  # "... in shelf3 and nothing else": other goods go to zero
                 i += 2
                 continue
+            if i in self.consumed:
+                i += 1
+                continue
             got = self.item(toks, i, last, fill, only)
             if got is None:
                 i += 1
@@ -339,6 +511,33 @@ class _Reader:
             for p in q.held(self.world, shelves[-1]):
                 if p not in row:
                     self.goal.set(shelves[-1], p, 0, "nothing else", absolute=True)
+
+
+def _words_at(toks: list[Tok], start: int, seq: tuple[str, ...]) -> bool:
+    return start >= 0 and start + len(seq) <= len(toks) and all(
+        toks[start + k].is_word(w) for k, w in enumerate(seq))
+
+
+def _no_bounds(toks: list[Tok]) -> None:
+    """Raise on a bound ("at least 5", "no more than 5", "5 or more", "about 5")."""
+    for j, t in enumerate(toks):
+        if t.kind != "num":
+            continue
+        for seq in INEQUALITY:
+            if _words_at(toks, j - len(seq), seq):
+                words = _phrase(toks[j - len(seq):j + 1])
+                break
+        else:
+            k = j + 1
+            while k < len(toks) and (toks[k].is_word(*FILLER) or toks[k].of == "product"):
+                k += 1
+            seq = next((q_ for q_ in INEQUALITY_AFTER if _words_at(toks, k, q_)), None)
+            if seq is None:
+                continue
+            words = _phrase(toks[j:k + len(seq)])
+        raise TranslationError(
+            f"'{words}' is a bound, not a count: a goal fixes exact counts, so a minimum, maximum "
+            f"or approximate amount cannot be written as one (give the exact number)")
 
 
 def _split(toks: list[Tok], ends: set[str]) -> list[list[Tok]]:
