@@ -245,9 +245,12 @@ def test_rules(command: str, expected: list[dict]) -> None:
 
 
 def test_goal_and_rule_in_one_sentence() -> None:
+    # the trailing rule governs the sentence's one move (was unscoped); same as the rule first
     got = translate("Move 3 product1 from shelf1 to shelf4 using only robot 5", HALL)
+    scoped = [{"only": ["robot5"], "product": "product1", "from": "shelf1", "to": "shelf4"}]
     assert got == {"goal": {"shelf1": {"product1": 7}, "shelf4": {"product1": 18}},
-                   "constraints": [{"only": ["robot5"]}]}
+                   "constraints": scoped}
+    assert rules("Using only robot 5, move 3 product1 from shelf1 to shelf4") == scoped
 
 
 def test_rules_in_other_world() -> None:
@@ -310,8 +313,10 @@ def test_named_robots_and_mixed_case_world() -> None:
     assert rules("bravo is broken, don't use it", CREW) == [{"never": ["bravo"]}]
     assert rules("only alpha and charlie may carry bolts", CREW) == [
         {"only": ["alpha", "charlie"], "product": "Bolt"}]
+    # "them" are the bolts put on Shelf_B: the rule takes the sentence's product and place
     assert translate("put 2 bolt on shelf_b, but alfa must not move them", CREW) == {
-        "goal": {"Shelf_B": {"Bolt": 2}}, "constraints": [{"never": ["alpha"]}]}
+        "goal": {"Shelf_B": {"Bolt": 2}},
+        "constraints": [{"never": ["alpha"], "product": "Bolt", "to": "Shelf_B"}]}
 
 
 def test_rule_clause_that_also_states_a_count() -> None:

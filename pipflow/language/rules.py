@@ -143,6 +143,11 @@ def parse_rule(toks: list[Tok], index: NameIndex) -> list[dict]:
         return []
     side = _polarity(toks)
     products = list(dict.fromkeys(str(t.value) for t in toks if t.kind == "name" and t.of == "product"))
+    return scoped(side, robots, products, places_of(toks))
+
+
+def places_of(toks: list[Tok]) -> list[dict]:
+    """The shelves a clause names, as ``{"from": A}``, ``{"to": B}`` or one move ``{from, to}``."""
     shelves = [(i, str(t.value), _role(toks, i)) for i, t in enumerate(toks)
                if t.kind == "name" and t.of == "shelf"]
     places: list[dict] = []
@@ -160,7 +165,7 @@ def parse_rule(toks: list[Tok], index: NameIndex) -> list[dict]:
             if {r: name} not in places:
                 places.append({r: name})
         k += 1
-    return scoped(side, robots, products, places)
+    return places
 
 
 def scoped(side: str, robots: list[str], products: list[str], places: list[dict]) -> list[dict]:

@@ -14,7 +14,13 @@ How clauses bind (one sentence at a time, split at ``. ; ! ?``):
   the counts that follow; a later "... and 5 product2 on shelf2" takes only its own count;
 * "from A to B" moves units (B gains, A loses); "from A" alone removes them;
 * "add/bring/move/deliver N X to S" adds N; "put/there should be N X on S" sets N.
-* a sentence part that names a robot is a rule (:mod:`rules`), e.g. "But robot 0 should not ...".
+* a sentence part that names a robot is a rule (:mod:`rules`), e.g. "But robot 0 should not ...";
+  a rule that follows a goal in the same sentence and names no product or shelf of its own takes
+  the goal's single product and single shelf or move (see :func:`_bind`);
+* shelves listed together take counts "each"/"both"/"apiece", or "respectively" in order; a
+  list with neither is an error (each, or a total?), except zero ("empty shelf1 and shelf2");
+* a product may come before its count ("product1 should be 5 on shelf2", "product1: 5");
+* bounds ("at least 5", "no more than 5", "5 or more", "about 5") are errors: goals are exact.
 """
 from __future__ import annotations
 
@@ -24,7 +30,7 @@ from pipflow.errors import TranslationError
 from pipflow.language import quantities as q
 from pipflow.language.names import NameIndex, Tok, tokenize
 from pipflow.language.quantities import Amount
-from pipflow.language.rules import parse_rule
+from pipflow.language.rules import parse_rule, places_of, scoped
 
 SENTENCE_END = {".", ";", "!", "?"}
 RULE_BOUNDARY = {",", "and", "but", "while", "whereas", "however", ":"}
@@ -620,6 +626,38 @@ def _goal_in_rule(chunk: list[Tok]) -> list[Tok]:
     return []
 
 
+def _bind(rule: list[Tok], items: list[dict], goal_part: list[Tok]) -> list[dict]:
+    """A rule split off a goal in the same sentence governs that goal's moves where unambiguous.
+
+    "put 5 product1 on shelf2, but do not use robot 3 for that": the rule names no product and
+    no shelf, so it takes the goal part's single product, and its place when the goal part names
+    one shelf or one move "from A to B" (read as the rules module reads places, so "Move ... using
+    only robot 5" and "Using only robot 5, move ..." give the same items). Several products or
+    places leave that field open (the rule then covers them all); a state of the robot
+    ("broken") or "anything"/"at all" is never narrowed.
+    """
+    if any(t.of in ("product", "shelf") for t in rule) or not goal_part or any(
+            t.is_word(*STATE_RULE) for t in rule):
+        return items
+    products = list(dict.fromkeys(str(t.value) for t in goal_part if t.of == "product"
+                                  and t.kind == "name"))
+    places = places_of(goal_part)
+    shelves = {v for p in places for v in p.values()}
+    route = len(places) == 1 and len(places[0]) == 2
+    use_places = places if (len(shelves) == 1 or route) else []
+    use_products = products if len(products) == 1 else []
+    out: list[dict] = []
+    for item in items:
+        side = "only" if "only" in item else "never"
+        if len(item) > 1:  # already narrowed
+            out.append(item)
+            continue
+        for new in scoped(side, item[side], use_products, use_places):
+            if new not in out:
+                out.append(new)
+    return out
+
+
 def translate(command: str, world: dict) -> dict:
     """Translate a command into ``{"goal": {SHELF: {PRODUCT: units}}, "constraints": [...]}``.
 
@@ -640,7 +678,10 @@ def translate(command: str, world: dict) -> dict:
             counted = _goal_in_rule(r)
             if counted:  # "robot 3 should put 5 product1 on shelf2": a count and a rule
                 reader.clause(counted)
-            for item in parse_rule(r, index):
+            found = parse_rule(r, index)
+            if not counted:
+                found = _bind(r, found, goal_part)
+            for item in found:
                 if item not in constraints:
                     constraints.append(item)
     counts = goal.finish()
