@@ -1,5 +1,6 @@
 """Turn a command into tokens, recognising the world's shelves, products and robots in it.
 
+A misspelling keeps its first letter ("prodcut", "shelve"), so "help" is never a shelf.
 Every name comes from the world file, so a world with racks called ``rack_a`` or ``cold-store``
 works as well as the benchmark's ``shelf1``. People write names apart ("product 1", "shelf three")
 and misspell them ("prodcut3", "shelve4"); those are matched by edit distance, but only when one
@@ -163,8 +164,7 @@ class NameIndex:
             if n.kind != kind or not n.digits or int(n.digits) != int(digits):
                 continue
             if word is not None and n.alpha and not any(
-                    w.startswith(n.alpha) or n.alpha in KIND_WORDS[kind] or n.alpha in self.stems[kind]
-                    for w in _variants(word)):
+                    w.startswith(n.alpha) or n.alpha in KIND_WORDS[kind] for w in _variants(word)):
                 continue
             out.append(n.name)
         return out
@@ -177,7 +177,8 @@ class NameIndex:
                 if v in KIND_WORDS[kind] or v in self.stems[kind]:
                     hits.add(kind)
                 elif alpha not in STOPWORDS and any(
-                        distance(v, stem) <= tolerance(len(stem)) for stem in self.stems[kind]):
+                        v[:1] == stem[:1] and distance(v, stem) <= tolerance(len(stem))
+                        for stem in self.stems[kind]):
                     hits.add(kind)
         if len(hits) > 1:
             raise TranslationError(f"{_quote(alpha)} could name a {' or a '.join(sorted(hits))}")
@@ -195,7 +196,7 @@ class NameIndex:
                 if n.digits != digits:
                     continue
                 d = min(distance(v, n.alpha) for v in _variants(alpha))
-                if d <= tolerance(len(n.alpha)):
+                if d <= tolerance(len(n.alpha)) and alpha[:1] == n.alpha[:1]:
                     scored.append((d, n))
             if scored:
                 best = min(d for d, _ in scored)
@@ -275,8 +276,10 @@ def tokenize(command: str, index: NameIndex) -> list[Tok]:
     command = re.sub(r"\b(\d+)\s*[x×]\b", r"\1 x", command)  # "5x product1"
     for m in _TOKEN.finditer(command):
         t = m.group(0).replace("'", "").replace("’", "")
-        if re.fullmatch(r"\d+-\d+", t):
-            a, b = t.split("-")
+        if re.fullmatch(r"\d+-\d+", t) or (
+                re.fullmatch(r"[A-Za-z]+\d+-[A-Za-z]+\d+", t)
+                and not any(normalize(t) == x.alpha + x.digits for x in index.names)):
+            a, b = t.split("-")  # "8-11", "r2-r4": a range
             raw += [a, "to", b]
         else:
             raw.append(t)

@@ -43,13 +43,16 @@ MORE = {"more", "extra", "additional"}
 FEWER = {"fewer", "less"}
 MULTIPLIERS = {"double": 2, "twice": 2, "triple": 3, "thrice": 3, "quadruple": 4}
 FILLER = {"of", "the", "units", "unit", "pieces", "piece", "boxes", "box", "crates", "crate",
-          "cases", "case", "pcs", "x", "as", "many", "much", "number", "amount", "count"}
+          "cases", "case", "pcs", "x", "as", "many", "much", "number", "amount", "count", "its",
+          "their", "this", "that", "these", "those"}
 EMPTY_WORDS = {"empty", "emptied", "nothing", "clear", "cleared", "vacant"}
 FILL_WORDS = {"full", "fill", "filled", "fills"}
 EVEN_WORDS = {"evenly", "equally"}
 SPLIT_VERBS = {"split", "divide", "distribute", "share", "spread"}
 BETWEEN = {"between", "among", "amongst", "across"}
 ONLY_WORDS = {"only", "just", "exclusively", "solely"}
+MOTION = {"go", "goes", "move", "moved", "moves", "transferred", "sent", "shipped", "relocated",
+          "brought", "taken", "carried", "delivered", "shifted", "transfer", "ship", "relocate"}
 FRACTIONS = {"half": 2, "halves": 2, "third": 3, "thirds": 3, "quarter": 4, "quarters": 4,
              "fourth": 4, "fourths": 4, "fifth": 5, "fifths": 5, "sixth": 6, "sixths": 6,
              "eighth": 8, "eighths": 8, "tenth": 10, "tenths": 10}
@@ -465,6 +468,9 @@ class _Reader:
                         groups.append(cur)
                     else:
                         cur.target = shelf
+                elif prep == "to" and cur.items and cur.target is not None and cur.source is None \
+                        and words & MOTION:
+                    cur.source, cur.target = cur.target, shelf  # "the product1 on shelf4 should go to shelf5"
                 elif prep is None and cur.items and cur.target is None and cur.source is None \
                         and head is None:
                     cur.target = shelf  # "empty shelf4", "clear shelf4"
@@ -589,6 +595,8 @@ def _parts(sentence: list[Tok]) -> tuple[list[Tok], list[list[Tok]]]:
                 t.of == "shelf" for t in sentence[:k]):
             cut = k
             break
+    while cut > 0 and sentence[cut - 1].is_word("without", "not", "never", "but"):
+        cut -= 1  # "... without using robot 3": the negation belongs to the rule
     goal, rest = sentence[:cut], sentence[cut:]
     chunks: list[list[Tok]] = [[]]
     for t in rest:
