@@ -10,6 +10,7 @@ Exits 0 when every command is exact, 1 otherwise, so CI can use it as a check.
 from __future__ import annotations
 
 import sys
+import time
 from pathlib import Path
 
 import yaml
@@ -32,6 +33,7 @@ def main(argv: list[str]) -> int:
     spec = yaml.safe_load(tasks_path.read_text())
     world = yaml.safe_load((tasks_path.parent / spec["world"]).read_text())
     exact = 0
+    started = time.perf_counter()
     for task in spec["tasks"]:
         try:
             got = translate(task["command"], world)
@@ -51,6 +53,8 @@ def main(argv: list[str]) -> int:
             print(f"FAIL {task['id']}: got {got}, gold goal {task['goal']}, "
                   f"gold constraints {task.get('constraints', [])}")
     n = len(spec["tasks"])
+    if n:
+        print(f"mean time per command: {(time.perf_counter() - started) / n * 1000:.2f} ms")
     print(f"exact goal and constraints: {exact}/{n} = {exact / n:.0%}" if n else "no tasks")
     return 0 if exact == n else 1
 
