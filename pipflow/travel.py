@@ -92,17 +92,19 @@ class TravelMap:
             self.height = float(floor["height"])
         except (KeyError, TypeError) as exc:
             raise InputError("world has no floor {width, height}") from exc
+        # shelves (warehouse) and places (household floor plans) are both footprint + access point
+        fixtures = {**(world.get("shelves") or {}), **(world.get("places") or {})}
         self.footprints = {
             name: (float(s["x"]), float(s["y"]), float(s["x"]) + float(s["width"]),
                    float(s["y"]) + float(s["depth"]))
-            for name, s in (world.get("shelves") or {}).items()
+            for name, s in fixtures.items()
         }
         self.obstacles = [
             (x0 - self.inflate, y0 - self.inflate, x1 + self.inflate, y1 + self.inflate)
             for (x0, y0, x1, y1) in self.footprints.values()
         ]
         self.places: dict[str, Point] = {}
-        for name, s in (world.get("shelves") or {}).items():
+        for name, s in fixtures.items():
             self.places[name] = (float(s["access"][0]), float(s["access"][1]))
         for name, r in (world.get("robots") or {}).items():
             self.places[name] = (float(r["start"][0]), float(r["start"][1]))

@@ -14,4 +14,5 @@ STEP_MODULES = [
     "pipflow.steps.llm",
     "pipflow.steps.simulate",
     "pipflow.steps.metrics",
+    "pipflow.steps.household",
 ]

@@ -97,7 +97,7 @@ def world_mismatches(problem: Any, text: str, world: dict) -> list[str]:
     out: list[str] = []
     have: dict[str, list[str]] = {}
     for o in problem.all_objects:
-        have.setdefault(str(o.type), []).append(o.name)
+        have.setdefault(o.type.name, []).append(o.name)
     expect = {"place": list(world["places"]), "item": list(world["objects"])}
     for typ, names in expect.items():
         for n in have.get(typ, []):

@@ -277,6 +277,10 @@ def debug_problem(problem_text: str | None, domain: str, world: dict | None = No
     if m and dname and m.group(1).lower() != dname.group(1).lower():
         messages.append(f"{find_word(problem_text, m.group(1))}the problem names domain {m.group(1)!r} "
                         f"but the domain is {dname.group(1)!r}")
-    if world is not None:
+    if world is not None and world.get("domain") == "household":  # a household world (pipflow.household)
+        from pipflow.household.problem import world_mismatches as household_mismatches
+
+        messages += household_mismatches(problem, problem_text, world)
+    elif world is not None:
         messages += world_mismatches(problem, problem_text, world)
     return DebugReport(not messages, messages, problem)

@@ -1,0 +1,269 @@
+"""Household scoring: final-state conditions, one run's score, and the bench hooks.
+
+A run succeeds when, judged on the executor's final state (never on what the plan claims),
+every ground-truth condition holds (objects in receptacles, object states, category counts),
+no subtask was refused, and no robot's legs jump. Metrics as in the paper's AI2-THOR table:
+
+* GCR: fraction of ground-truth conditions that hold at the end;
+* Exe: executed / planned subtasks;
+* RU: ``min(1, reference / planned)``, the reference being a relaxed count of the actions any
+  plan needs (one per condition that does not already hold, one more per count shortfall unit,
+  an open (and a close when the goal wants it closed) per closed container that must be
+  entered, a carry to a sink or heater for a wash or heat of an object that is elsewhere);
+* TC-max / TC-avg: the most and the mean metres a team robot travels, over successful runs.
+
+Bench hooks (``pipflow bench`` dispatches on the task file's ``domain: household``):
+:func:`load_bench_tasks`, :func:`score_bench_run`, :func:`bench_table`.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+from pipflow.household.problem import CONDITIONS
+from pipflow.household.world import initial_state, members
+
+CATEGORIES = ("compound", "complex", "vague")
+
+
+# ------------------------------------------------------------------------------------------
+# conditions
+# ------------------------------------------------------------------------------------------
+def holds(state: dict, name: str, cond: str) -> bool:
+    """One state condition in a state dict (``{"at": .., "open": [..], "on": [..], ...}``)."""
+    pred, positive, _ = CONDITIONS[cond]
+    key = {"is-open": "open", "is-on": "on", "dirty": "dirty", "sliced": "sliced", "hot": "hot"}[pred]
+    return (name in set(state.get(key) or [])) == positive
+
+
+def check_conditions(world: dict, state: dict, goal: dict) -> tuple[int, int, list[str]]:
+    """``(met, total, unmet descriptions)`` of the goal conditions in ``state``."""
+    met, total, unmet = 0, 0, []
+    at = state.get("at") or {}
+    for place, items in (goal.get("in") or {}).items():
+        for o in items:
+            total += 1
+            if at.get(o) == place:
+                met += 1
+            else:
+                unmet.append(f"{o} in {place} (it is in {at.get(o)})")
+    for name, conds in (goal.get("state") or {}).items():
+        for c in conds:
+            total += 1
+            if holds(state, name, c):
+                met += 1
+            else:
+                unmet.append(f"{name} {c}")
+    for c in goal.get("count") or []:
+        total += 1
+        n = sum(1 for o in members(world, c["category"]) if at.get(o) == c["in"])
+        if n >= int(c["at_least"]):
+            met += 1
+        else:
+            unmet.append(f"{c['at_least']} {c['category']} in {c['in']} (there are {n})")
+    return met, total, unmet
+
+
+def _initial(world: dict) -> dict:
+    s = initial_state(world)
+    return {"at": s["at"], **{k: sorted(v) for k, v in s.items() if k != "at"}}
+
+
+def reference_actions(world: dict, goal: dict) -> int:
+    """The relaxed count of actions any plan needs (module docstring)."""
+    s = _initial(world)
+    props = {n: e["properties"] for n, e in {**world["places"], **world["objects"]}.items()}
+    n, entered = 0, set()
+    for place, items in (goal.get("in") or {}).items():
+        for o in items:
+            if s["at"].get(o) != place:
+                n += 1
+                entered |= {place, s["at"].get(o)}
+    for c in goal.get("count") or []:
+        have = sum(1 for o in members(world, c["category"]) if s["at"].get(o) == c["in"])
+        if have < int(c["at_least"]):
+            n += int(c["at_least"]) - have
+            entered.add(c["in"])
+    for name, conds in (goal.get("state") or {}).items():
+        for c in conds:
+            if holds(s, name, c):
+                continue
+            n += 1
+            where = s["at"].get(name)
+            if c == "clean" and where is not None and "sink" not in props.get(where, []):
+                n += 1
+            if c == "hot" and where is not None and "heater" not in props.get(where, []):
+                n += 1
+    for p in entered:
+        if p in world["places"] and "openable" in props[p] and p not in s["open"]:
+            n += 1 + (1 if "closed" in (goal.get("state") or {}).get(p, []) else 0)
+    return n
+
+
+def score_run(world: dict, goal: dict, *, graph: dict | None = None, schedule: dict | None = None,
+              simulation: dict | None = None, refusal: str | None = None, error: str | None = None) -> dict:
+    """Score one household run (``world``: the team's world). Keys as :func:`pipflow.scoring.score_run`."""
+    sim = simulation or {}
+    planned = len((schedule or {}).get("subtasks", []))
+    base = {"planned": planned, "executed": int(sim.get("executed", 0)), "refused": bool(refusal),
+            "error": refusal or error or None, "makespan": float(sim.get("makespan", 0.0) or 0.0),
+            "lower_bound": reference_actions(world, goal)}
+    if simulation is None:
+        met, total, _ = check_conditions(world, _initial(world), goal)
+        why = "refused a feasible command" if refusal else f"run failed: {error}" if error else "no simulation"
+        return {**base, "success": False, "goal_met": False, "gcr": met / total if total else 1.0, "exe": 0.0,
+                "ru": 0.0, "tc_max": 0.0, "tc_avg": 0.0, "violations": [why]}
+    met, total, unmet = check_conditions(world, sim.get("final_state") or {}, goal)
+    violations = [f"goal: {u}" for u in unmet]
+    violations += [f"{f['subtask']} {f['action']} refused: {'; '.join(f['reasons'])}" for f in sim.get("failures") or []]
+    violations += [f"{r} jumps {j['metres']:g} m" for r, js in (sim.get("jumps") or {}).items() for j in js]
+    ru = min(1.0, base["lower_bound"] / planned) if planned else (1.0 if base["lower_bound"] == 0 else 0.0)
+    return {**base, "success": not violations, "goal_met": met == total, "gcr": met / total if total else 1.0,
+            "exe": float(sim.get("exe", 0.0)), "ru": ru, "tc_max": float(sim.get("tc_max", 0.0)),
+            "tc_avg": float(sim.get("tc_avg", 0.0)), "violations": violations}
+
+
+# ------------------------------------------------------------------------------------------
+# task files and bench hooks
+# ------------------------------------------------------------------------------------------
+def is_household_tasks(path: str | Path) -> bool:
+    """Whether a task file declares ``domain: household`` (cheap: no validation)."""
+    import yaml
+
+    try:
+        data = yaml.safe_load(Path(path).read_text())
+    except (OSError, yaml.YAMLError):
+        return False
+    return isinstance(data, dict) and data.get("domain") == "household"
+
+
+def load_tasks(path: str | Path) -> dict:
+    """Load a household task file and its world; :class:`WorldError` lists every problem located.
+
+    Returns ``{"path", "world_path", "world", "domain": "household", "workflow", "tasks": [{"id",
+    "command", "category", "team", "goal", "feasible", "domain", "inputs": {"team": ...}}]}``."""
+    from pipflow.errors import Diagnostic, WorldError
+    from pipflow.household.world import load_world, team_members
+    from pipflow.world import _did_you_mean, _parse, _read
+
+    p, text = _read(path)
+    data, locate = _parse(text, str(p), "household task")
+    diags: list[Diagnostic] = []
+    world_path = (p.parent / str(data.get("world", ""))).resolve()
+    if not data.get("world") or not world_path.is_file():
+        raise WorldError([Diagnostic(locate(("world",)), f"world file {data.get('world')!r} not found (looked at {world_path})")],
+                         f"invalid task file {p}")
+    world = load_world(world_path)
+    names = {**world["places"], **world["objects"]}
+    tasks, seen = [], set()
+    for i, t in enumerate(data.get("tasks") or []):
+        if not isinstance(t, dict):
+            diags.append(Diagnostic(locate(("tasks", i)), "a task must be a mapping"))
+            continue
+        tid = str(t.get("id"))
+        for key in ("id", "command", "category", "goal"):
+            if key not in t:
+                diags.append(Diagnostic(locate(("tasks", i)), f"task {tid}: missing {key!r}"))
+        if tid in seen:
+            diags.append(Diagnostic(locate(("tasks", i, "id")), f"duplicate task id {tid!r}"))
+        seen.add(tid)
+        if t.get("category") not in CATEGORIES:
+            diags.append(Diagnostic(locate(("tasks", i, "category")), f"task {tid}: category must be one of {', '.join(CATEGORIES)}"))
+        try:
+            team_members(world, t.get("team"))
+        except Exception as exc:
+            diags.append(Diagnostic(locate(("tasks", i, "team")), f"task {tid}: {exc}"))
+        goal = t.get("goal") if isinstance(t.get("goal"), dict) else {}
+        for place, items in (goal.get("in") or {}).items():
+            if place not in world["places"]:
+                diags.append(Diagnostic(locate(("tasks", i, "goal", "in", place), key=True),
+                                        f"task {tid}: unknown place {place!r}{_did_you_mean(place, world['places'])}"))
+            for k, o in enumerate(items or []):
+                if o not in world["objects"]:
+                    diags.append(Diagnostic(locate(("tasks", i, "goal", "in", place, k)),
+                                            f"task {tid}: unknown object {o!r}{_did_you_mean(o, world['objects'])}"))
+        for name, conds in (goal.get("state") or {}).items():
+            if name not in names:
+                diags.append(Diagnostic(locate(("tasks", i, "goal", "state", name), key=True),
+                                        f"task {tid}: unknown object or place {name!r}{_did_you_mean(name, names)}"))
+                continue
+            for k, c in enumerate(conds or []):
+                if c not in CONDITIONS:
+                    diags.append(Diagnostic(locate(("tasks", i, "goal", "state", name, k)),
+                                            f"task {tid}: unknown condition {c!r}; conditions: {', '.join(CONDITIONS)}"))
+                elif CONDITIONS[c][2] not in names[name]["properties"]:
+                    diags.append(Diagnostic(locate(("tasks", i, "goal", "state", name, k)),
+                                            f"task {tid}: {name} cannot be {c} (it is not {CONDITIONS[c][2]})"))
+        for k, c in enumerate(goal.get("count") or []):
+            if c.get("category") not in world["categories"] or c.get("in") not in world["places"]:
+                diags.append(Diagnostic(locate(("tasks", i, "goal", "count", k)),
+                                        f"task {tid}: count needs a known category and place, got {c}"))
+        team = t.get("team")
+        tasks.append({"id": tid, "command": t.get("command"), "category": t.get("category"), "team": team,
+                      "goal": {"in": dict(goal.get("in") or {}), "state": dict(goal.get("state") or {}),
+                               **({"count": list(goal["count"])} if goal.get("count") else {})},
+                      "feasible": t.get("feasible", True), "domain": "household",
+                      "inputs": {"team": ",".join(team) if isinstance(team, list) else team}})
+    if diags:
+        raise WorldError(diags, f"invalid household task file {p} ({len(diags)} problem(s))")
+    return {"path": str(p), "world_path": str(world_path), "world": world, "domain": "household",
+            "workflow": data.get("workflow", "household"), "tasks": tasks}
+
+
+def load_bench_tasks(path: str | Path) -> dict:
+    """The bench's task loader: household task files here, every other through pipflow.world."""
+    if is_household_tasks(path):
+        return load_tasks(path)
+    from pipflow.world import load_tasks as load_warehouse_tasks
+
+    return load_warehouse_tasks(path)
+
+
+def score_bench_run(world_path: str, task: dict, outputs: dict, refusal: str | None, error: str | None) -> dict:
+    """Score one bench run of a household task (the team's world, the task's ground truth)."""
+    from pipflow.household.world import load_world, select_team
+
+    world = select_team(load_world(world_path), task.get("team"))
+    return score_run(world, task.get("goal") or {}, graph=outputs.get("graph"), schedule=outputs.get("schedule"),
+                     simulation=outputs.get("simulation"), refusal=refusal, error=error)
+
+
+def _fmt(v: Any) -> str:
+    return "--" if v is None else f"{v:.1f}"
+
+
+def bench_table(results: dict) -> str | None:
+    """The paper-shaped table (per category SR, TC-max/TC-avg, GCR, RU, Exe) for household
+    results; None for any other task file, so the caller keeps its own table."""
+    tasks_file = (results.get("config") or {}).get("tasks")
+    if not tasks_file or not is_household_tasks(tasks_file):
+        return None
+    category = {t["id"]: t["category"] for t in load_tasks(tasks_file)["tasks"]}
+    lines = []
+    for variant in results["variants"]:
+        if len(results["variants"]) > 1:
+            lines.append(f"### {variant['name']}\n")
+        lines += ["| Category | tasks | runs | SR | TC max/avg (m) | GCR | RU | Exe |", "|---|---|---|---|---|---|---|---|"]
+        groups = [(c, [t for t in variant["tasks"] if category.get(t["id"]) == c]) for c in CATEGORIES]
+        groups.append(("**all**", list(variant["tasks"])))
+        for name, rows in groups:
+            if not rows:
+                continue
+            runs = sum(r["runs"] for r in rows)
+
+            def w(key: str) -> float:
+                return sum(r[key] * r["runs"] for r in rows) / runs if runs else 0.0
+
+            ok = [r for r in rows if r.get("tc_max") is not None]
+            tmax = sum(r["tc_max"] for r in ok) / len(ok) if ok else None
+            tavg = sum(r["tc_avg"] for r in ok) / len(ok) if ok else None
+            lines.append(f"| {name} | {len(rows)} | {runs} | {w('sr'):.2f} | {_fmt(tmax)}/{_fmt(tavg)} | "
+                         f"{w('gcr'):.2f} | {w('ru'):.2f} | {w('exe'):.2f} |")
+        lines += ["", "| Task | category | SR | TC max/avg (m) | GCR | RU | Exe | error |", "|---|---|---|---|---|---|---|---|"]
+        for t in variant["tasks"]:
+            err = (t.get("error") or "").replace("|", "/").replace("\n", " ")[:90]
+            lines.append(f"| {t['id']} | {category.get(t['id'])} | {t['sr']:.2f} | {_fmt(t['tc_max'])}/{_fmt(t['tc_avg'])} | "
+                         f"{t['gcr']:.2f} | {t['ru']:.2f} | {t['exe']:.2f} | {err} |")
+        lines.append("")
+    lines.append(f"wall time: {results['wall_seconds']:.1f} s")
+    return "\n".join(lines)
