@@ -23,3 +23,17 @@ def test_bench_on_an_unseen_world_succeeds_on_every_task(tmp_path, capsys):
     # the infeasible task is refused with its reason; the others move robots
     assert "rack_e" in by_id["g-05"]["error"] and "30" in by_id["g-05"]["error"]
     assert all(by_id[t]["tc_max"] > 0 for t in ("g-01", "g-02", "g-03", "g-04"))
+
+
+def test_translator_reads_every_name_from_the_unseen_world():
+    import yaml
+
+    from pipflow.language.translator import translate
+    from pipflow.world import load_world
+
+    tasks = yaml.safe_load(TASKS.read_text())["tasks"]
+    world = load_world(TASKS.parent / "world.yaml")
+    for task in tasks:
+        got = translate(task["command"], world)
+        assert got["goal"] == task["goal"], task["id"]
+        assert got["constraints"] == task.get("constraints", []), task["id"]
