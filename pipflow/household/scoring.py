@@ -174,6 +174,9 @@ def load_tasks(path: str | Path) -> dict:
         except Exception as exc:
             diags.append(Diagnostic(locate(("tasks", i, "team")), f"task {tid}: {exc}"))
         goal = t.get("goal") if isinstance(t.get("goal"), dict) else {}
+        for name, conds in list((goal.get("state") or {}).items()):
+            # YAML 1.1 reads the words on/off as booleans: [off] arrives as [False]
+            goal["state"][name] = [{True: "on", False: "off"}.get(c, c) if isinstance(c, bool) else c for c in conds or []]
         for place, items in (goal.get("in") or {}).items():
             if place not in world["places"]:
                 diags.append(Diagnostic(locate(("tasks", i, "goal", "in", place), key=True),

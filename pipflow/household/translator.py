@@ -339,66 +339,76 @@ class Translator:
         self.last = targets
 
     def _store(self, verb: str, clause: list[str], mentions: list[Mention], words: str, pronoun: bool) -> None:
-        target: str | None = None
-        target_m: Mention | None = None
+        """Objects go to the target place that follows them ("put the pen on the desk and the
+        pillow on the bed"); trailing objects go to the last target; "away" to each one's home."""
+        groups: list[tuple[str | None, list[Mention]]] = []
+        pending: list[Mention] = []
         if verb == "trash":
             cans = [p for p, e in self.world["places"].items() if "garbage" in e["properties"]]
             if len(cans) != 1:
                 raise TranslationError(f"'{words}': the world has {len(cans)} garbage places; say which")
-            target = cans[0]
-        elif verb == "store":
+            groups.append((cans[0], [m for m in mentions if m.kind != "place"]))
+        else:
             for m in mentions:
                 before = clause[m.start - 1] if m.start > 0 else ""
                 before2 = clause[m.start - 2] if m.start > 1 else ""
                 prep = before in TARGET_PREPS or before2 in TARGET_PREPS or clause[m.start] in TARGET_PREPS
-                if m.kind in ("place", "category") and prep:
-                    if m.kind == "category":
-                        places = [p for p in members(self.world, m.name) if p in self.world["places"]]
-                        if len(places) != 1:
-                            continue
-                        target = places[0]
-                    else:
-                        target = m.name
-                    target_m = m
-            if target is None:
-                if "away" in clause:
-                    verb = "away"
+                target = None
+                if m.kind == "place" and prep:
+                    target = m.name
+                elif m.kind == "category" and prep:
+                    places = [p for p in members(self.world, m.name) if p in self.world["places"]]
+                    target = places[0] if len(places) == 1 else None
+                if target is not None and verb == "store":
+                    groups.append((target, pending))
+                    pending = []
+                elif m.kind != "place":
+                    pending.append(m)
+            if pending:
+                if groups:
+                    groups[-1][1].extend(pending)
+                elif verb == "away" or "away" in clause:
+                    groups.append((None, pending))
+                elif {"out", "from", "off"} & set(clause):
+                    self.last = [n for m in pending for n in self._things([m], None, "pickupable", words)]
+                    return  # "take the milk out of the fridge": the next clause says where
                 else:
                     raise TranslationError(f"'{words}': where to? name a place (e.g. 'in the fridge')")
-        objs = [m for m in mentions if m is not target_m and not (m.kind == "place" and m.start > (target_m.start if target_m else 10**6))]
-        objs = [m for m in objs if m.kind != "place"]
-        if target is not None and target not in self.world["places"]:
-            raise TranslationError(f"'{words}': {target!r} is not a place")
-        if target is not None:
-            props = self.world["places"][target]["properties"]
-            if "receptacle" not in props and "garbage" not in props:
-                raise Refusal(f"nothing can be put in {target}: it is not a receptacle")
-        names: list[str] = []
-        for m in objs:
-            if m.kind == "category" and m.count is not None:
+        if pronoun and groups:
+            groups[0] = (groups[0][0], groups[0][1])
+        for target, objs in groups:
+            if target is not None:
+                props = self.world["places"][target]["properties"]
+                if "receptacle" not in props and "garbage" not in props:
+                    raise Refusal(f"nothing can be put in {target}: it is not a receptacle")
+            names: list[str] = []
+            for m in objs:
+                if m.kind == "category" and m.count is not None:
+                    if target is None:
+                        raise TranslationError(f"'{words}': gather {m.count} {m.name} where?")
+                    ok = self._applicable(members(self.world, m.name), None, "pickupable")
+                    if len(ok) < m.count:
+                        raise Refusal(f"the world has only {len(ok)} {m.name} that can be picked up, not {m.count}")
+                    self.goal.count.append({"category": m.name, "in": target, "at_least": m.count})
+                    continue
+                names += self._things([m], None, "pickupable", words)
+            if pronoun and target is not None and not names:
+                names = self._applicable(self.last, None, "pickupable")
+            if not names and not self.goal.count:
+                raise TranslationError(f"'{words}': which object?")
+            for n in names:
                 if target is None:
-                    raise TranslationError(f"'{words}': gather {m.count} {m.name} where?")
-                ok = self._applicable(members(self.world, m.name), None, "pickupable")
-                if len(ok) < m.count:
-                    raise Refusal(f"the world has only {len(ok)} {m.name} that can be picked up, not {m.count}")
-                self.goal.count.append({"category": m.name, "in": target, "at_least": m.count})
-                continue
-            names += self._things([m], None, "pickupable", words)
-        if pronoun:
-            names = self._applicable(self.last, None, "pickupable") + names
-        if not names and not self.goal.count:
-            raise TranslationError(f"'{words}': which object?")
-        for n in names:
-            if verb == "away":
-                homes = [self.world["categories"][c]["home"] for c in self.world["objects"][n]["categories"]
-                         if self.world["categories"].get(c, {}).get("home")]
-                if not homes:
-                    raise TranslationError(f"'{words}': {n} has no home in this world (no category of it names one)")
-                self.goal.put(n, homes[0])
-            else:
-                self.goal.put(n, target)
-        if names:
-            self.last = names
+                    homes = [self.world["categories"][c]["home"] for c in self.world["objects"][n]["categories"]
+                             if self.world["categories"].get(c, {}).get("home")]
+                    if not homes:
+                        raise TranslationError(f"'{words}': {n} has no home in this world (no category of it names one)")
+                    self.goal.put(n, homes[0])
+                else:
+                    self.goal.put(n, target)
+            if names:
+                self.last = names
+        if not groups:
+            raise TranslationError(f"'{words}': which object, and where to?")
 
     # whole command -------------------------------------------------------------------------
     def translate(self, command: str) -> dict:
@@ -414,8 +424,8 @@ class Translator:
     def _leave_closed(self, goal: dict) -> None:
         """Closed containers the plan must open are closed again unless the command said open."""
         touched = set(goal.get("in", {}))
-        for items in goal.get("in", {}).values():
-            touched |= {self.world["objects"][o]["in"] for o in items}
+        named = [o for items in goal.get("in", {}).values() for o in items] + list(goal.get("state", {}))
+        touched |= {self.world["objects"][o]["in"] for o in named if o in self.world["objects"]}
         touched |= {c["in"] for c in goal.get("count", [])}
         for p in touched:
             e = self.world["places"][p]
