@@ -1,5 +1,6 @@
-"""Content-addressed step cache: the key is the step's name, its version and its resolved
-inputs, so a changed argument, an upgraded step or an edited prompt is a miss. On by default
+"""Content-addressed step cache: the key is the step's name, its version, its resolved inputs
+and the content of every file they name, so a changed argument, an upgraded step or an edited
+world, domain or prompt file is a miss. On by default
 for steps that declare themselves cacheable (LLM calls); ``--no-cache`` turns it off.
 An entry holds the outputs and a copy of the artifacts, so a hit leaves the same run record."""
 from __future__ import annotations
@@ -22,8 +23,33 @@ def default_cache_dir() -> Path:
     return Path(base) / "pipflow" / "steps"
 
 
+_HASH_LIMIT = 64 * 1024 * 1024  # bytes; larger files are keyed by size and modification time
+
+
+def _file_digests(value: Any, out: dict[str, str]) -> None:
+    """Digest every existing file an input names by absolute path, so that editing a world,
+    domain or prompt file is a cache miss even though the path is the same."""
+    if isinstance(value, str):
+        if os.path.isabs(value) and os.path.isfile(value):
+            stat = os.stat(value)
+            if stat.st_size > _HASH_LIMIT:
+                out[value] = f"size={stat.st_size},mtime={stat.st_mtime_ns}"
+            else:
+                with open(value, "rb") as fh:
+                    out[value] = hashlib.sha256(fh.read()).hexdigest()
+    elif isinstance(value, dict):
+        for v in value.values():
+            _file_digests(v, out)
+    elif isinstance(value, list):
+        for v in value:
+            _file_digests(v, out)
+
+
 def cache_key(step_name: str, version: str, inputs: dict[str, Any]) -> str:
-    canonical = json.dumps({"step": step_name, "version": version, "inputs": inputs},
+    """Step name, step version, resolved inputs, and the content of the files they name."""
+    files: dict[str, str] = {}
+    _file_digests(inputs, files)
+    canonical = json.dumps({"step": step_name, "version": version, "inputs": inputs, "files": files},
                            sort_keys=True, separators=(",", ":"), default=str)
     return hashlib.sha256(canonical.encode("utf-8")).hexdigest()
 
