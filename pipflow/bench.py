@@ -89,7 +89,8 @@ def run_one(spec: RunSpec) -> dict:
     task = spec.task
     row: dict[str, Any] = {"variant": spec.variant, "task": task["id"], "seed": spec.seed}
     started = time.perf_counter()
-    inputs = {"command": task["command"], "world": spec.world_path, "seed": spec.seed, **spec.inputs}
+    inputs = {"command": task["command"], "world": spec.world_path, "seed": spec.seed,
+              **(task.get("inputs") or {}), **spec.inputs}  # per-task inputs: a household task's team
     refusal = error = None
     outputs: dict = {}
     try:
@@ -105,11 +106,16 @@ def run_one(spec: RunSpec) -> dict:
         row["stage_seconds"] = metrics.get("step_seconds", {})
     except Exception as err:  # an invalid workflow or input: the run never started
         row["status"], error = "error", f"{type(err).__name__}: {err}"
-    world = load_world(spec.world_path)
-    score = score_run(world, task.get("goal") or {}, constraints=task.get("constraints"),
-                      feasible=task.get("feasible", True), graph=outputs.get("graph"),
-                      schedule=outputs.get("schedule"), simulation=outputs.get("simulation"),
-                      refusal=refusal, error=error)
+    if task.get("domain") == "household":  # final-state conditions: pipflow/household/scoring.py
+        from pipflow.household.scoring import score_bench_run
+
+        score = score_bench_run(spec.world_path, task, outputs, refusal, error)
+    else:
+        world = load_world(spec.world_path)
+        score = score_run(world, task.get("goal") or {}, constraints=task.get("constraints"),
+                          feasible=task.get("feasible", True), graph=outputs.get("graph"),
+                          schedule=outputs.get("schedule"), simulation=outputs.get("simulation"),
+                          refusal=refusal, error=error)
     row.update(score)
     row["seconds"] = round(time.perf_counter() - started, 3)
     return row
@@ -168,8 +174,8 @@ def run_bench(config: BenchConfig, progress: bool = True, on_row=None) -> dict:
     ``config.resume`` the runs whose row file exists are not run again. ``on_row(row)`` is called
     after each row is stored (tests use it to interrupt or to kill a worker)."""
     from pipflow.executors import make_executor, run_key
+    from pipflow.household.scoring import load_bench_tasks as load_tasks  # household or pipflow.world's
     from pipflow.scoring import aggregate_task, summarize
-    from pipflow.world import load_tasks
 
     tasks_doc = load_tasks(config.tasks_file)
     world_path = str(tasks_doc["world_path"] if "world_path" in tasks_doc else
@@ -257,6 +263,11 @@ def _fmt(value: Any, digits: int = 1) -> str:
 
 def markdown_table(results: dict) -> str:
     """The paper's warehouse table shape: per task SR (%) and travel cost max/avg (m)."""
+    from pipflow.household.scoring import bench_table
+
+    household = bench_table(results)  # per category (paper's AI2-THOR table) for household task files
+    if household is not None:
+        return household
     lines = []
     for variant in results["variants"]:
         if len(results["variants"]) > 1:
@@ -297,6 +308,7 @@ def bench_main(args: argparse.Namespace) -> int:
     if not tasks_file.exists():
         raise UserError(f"{tasks_file}: no such task file")
     from pipflow.executors import parse_executor, parse_limits
+    from pipflow.household.scoring import default_workflow
 
     executor = getattr(args, "executor", None) or "local"
     parse_executor(executor)  # a typo fails before anything runs
@@ -305,7 +317,7 @@ def bench_main(args: argparse.Namespace) -> int:
         raise UserError("--resume needs --out DIR (the bench directory to complete)")
     limits = getattr(args, "llm_concurrency", None) or os.environ.get("PIPFLOW_LLM_CONCURRENCY") or "4"
     config = BenchConfig(
-        tasks_file=tasks_file, workflow=args.workflow or "warehouse", seeds=max(1, args.seeds),
+        tasks_file=tasks_file, workflow=args.workflow or default_workflow(tasks_file), seeds=max(1, args.seeds),
         jobs=_workers(args.jobs), out=Path(args.out or f"bench-out/{stamp}"),
         matrix=parse_matrix(args.matrix), inputs=_key_values(args.input or []), use_cache=not args.no_cache,
         executor=executor, resume=resume, llm_limits=parse_limits(limits))

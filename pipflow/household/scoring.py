@@ -213,6 +213,15 @@ def load_tasks(path: str | Path) -> dict:
             "workflow": data.get("workflow", "household"), "tasks": tasks}
 
 
+def default_workflow(path: str | Path) -> str:
+    """The workflow a task file runs with unless ``--workflow`` says otherwise."""
+    if is_household_tasks(path):
+        import yaml
+
+        return str(yaml.safe_load(Path(path).read_text()).get("workflow") or "household")
+    return "warehouse"
+
+
 def load_bench_tasks(path: str | Path) -> dict:
     """The bench's task loader: household task files here, every other through pipflow.world."""
     if is_household_tasks(path):
