@@ -188,9 +188,8 @@ def test_path_arguments_of_steps_are_relative_to_the_workflow_file(engine_env, d
         name: count-path
         steps:
           - id: c
-            uses: demo.count
-            cache: false
-            with: {counter: calls.txt}
+            uses: demo.flaky
+            with: {counter: calls.txt, failures: 0}
     """)
     monkeypatch.chdir(engine_env)
     assert run_workflow(wf, runs_dir=engine_env / "runs", registry=demo_registry).ok
@@ -371,7 +370,7 @@ def test_cache_hit_no_cache_and_clear(engine_env, demo_registry, capsys):
         steps:
           - id: c
             uses: demo.count
-            with: {{counter: "{calls}", value: "${{inputs.v}}"}}
+            with: {{counter: "{calls.name}", value: "${{inputs.v}}"}}
         outputs: {{v: "${{c.value}}", calls: "${{c.calls}}"}}
     """)
     runs = engine_env / "runs"
