@@ -153,6 +153,12 @@ def first_stage_fast(Q: np.ndarray, Y: np.ndarray, c: np.ndarray, allowed: np.nd
     return float(thresholds[lo])
 
 
+#: Metres added per robot in the second stage: among coalitions of equal total travel (e.g. a
+#: robot already standing at the place costs 0), prefer the one with fewer robots. Small enough
+#: (1e-4 m over 1000 robots) never to change which total is optimal by more than rounding.
+TIE_BREAK = 1e-7
+
+
 def second_stage(Q, Y, c, eligible: np.ndarray, lin: list[Linear], time_limit: float | None = None) -> list[int]:
     """min sum c_i x_i over the eligible robots (SCIP)."""
     from pyscipopt import quicksum
@@ -161,7 +167,7 @@ def second_stage(Q, Y, c, eligible: np.ndarray, lin: list[Linear], time_limit: f
     m = _scip(time_limit=time_limit)
     x = {int(i): m.addVar(vtype="B", obj=float(c[i])) for i in idx}
     _add_rows(m, x, Q, Y, lin)
-    m.setObjective(quicksum(float(c[i]) * x[i] for i in x), "minimize")
+    m.setObjective(quicksum((float(c[i]) + TIE_BREAK) * x[i] for i in x), "minimize")
     m.optimize()
     if not _solved(m):
         return []
@@ -189,7 +195,7 @@ def solve_naive(Q, Y, c, allowed, lin: list[Linear] = (), time_limit: float | No
     t1 = time.perf_counter()
     m.freeTransform()
     m.addCons(z <= zstar + 1e-6 * max(1.0, zstar))
-    m.setObjective(quicksum(float(c[i]) * x[i] for i in x), "minimize")
+    m.setObjective(quicksum((float(c[i]) + TIE_BREAK) * x[i] for i in x), "minimize")
     m.optimize()
     sol = m.getBestSol()
     robots = sorted(i for i in x if m.getSolVal(sol, x[i]) > 0.5)

@@ -192,3 +192,17 @@ def test_steps_write_the_allocation_contract(tmp_path):
         a = out["assignments"][0]
         assert a["subtask"] == "s1" and set(a["costs"]) == set(a["robots"])
         assert (tmp_path / name / "allocation.json").is_file()
+
+
+def test_a_robot_that_adds_no_skill_is_not_taken_even_when_it_costs_nothing():
+    """Two robots already stand at the place (cost 0): only the one with the needed skill goes.
+    Equal totals must not drag an idle robot into the coalition (it would be blocked for the
+    subtask's duration for nothing)."""
+    Q = np.array([[1.0, 0.0],   # robot 0: lifts, cannot open
+                  [0.0, 1.0],   # robot 1: opens
+                  [0.0, 1.0]])  # robot 2: opens, but is far away
+    Y = np.array([0.0, 1.0])   # the subtask needs `open` only
+    c = np.array([0.0, 0.0, 9.0])
+    allowed = np.ones(3, dtype=bool)
+    for method in ("fast", "naive"):
+        assert solve_lexicographic(Q, Y, c, allowed, method=method).robots == [1], method
