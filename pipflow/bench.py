@@ -15,6 +15,7 @@ import datetime as _dt
 import itertools
 import json
 import os
+import sys
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -324,4 +325,9 @@ def bench_main(args: argparse.Namespace) -> int:
     results = run_bench(config, progress=not args.quiet)
     print(markdown_table(results))
     print(f"results: {config.out / 'results.json'}")
+    lost = [r for r in json.loads((config.out / "runs.json").read_text()) if r.get("status") == "lost"]
+    if lost:  # the executor could not finish these runs: the table is incomplete
+        print(f"{len(lost)} run(s) were lost by the executor (first: {lost[0].get('error')}); "
+              f"`pipflow bench ... --out {config.out} --resume` runs them again", file=sys.stderr)
+        return 1
     return 0
