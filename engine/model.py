@@ -124,7 +124,6 @@ def read_workflow_data(path: Path, diagnostics: list[Diagnostic], _seen: tuple =
     return merge_workflows(base, data, diagnostics), [*files, path]
 
 
-_OVERRIDABLE = ("with", "when", "timeout", "retry", "cache")
 _LOOP_KEYS = ("max", "until", "on_max")
 
 
@@ -133,14 +132,16 @@ def merge_workflows(base: SourceDict, child: SourceDict, diagnostics: list[Diagn
 
     A child step with ``uses`` (or ``loop``) replaces the base step of that id or is added at
     the end; a child entry with only ``id`` and some of ``with``/``when``/``timeout``/
-    ``retry``/``cache`` (or a loop's ``max``/``until``/``on_max``) changes just those parts."""
-    merged = copy.copy(base)
-    merged.locs = dict(base.locs)
+    ``retry``/``cache`` (or a loop's ``max``/``until``/``on_max``) changes just those parts;
+    ``remove: [ids]`` drops inherited steps. The base is deep-copied first, so merging may
+    change it in place; locations travel with the copies."""
+    merged = copy.deepcopy(base)
     for key, value in child.items():
-        if key in ("inputs", "outputs") and isinstance(value, dict) and isinstance(base.get(key), dict):
-            merged[key] = _merge_mapping(base[key], value, deep=key == "inputs")
+        if key in ("inputs", "outputs") and isinstance(value, dict) and isinstance(merged.get(key), dict):
+            _merge_mapping(merged[key], value, deep=key == "inputs")
         elif key == "steps":
-            merged["steps"] = _merge_steps(base.get("steps") or SourceList(), value, child.get("remove") or [], diagnostics, child)
+            merged["steps"] = _merge_steps(merged.get("steps") or SourceList(), value,
+                                           child.get("remove") or [], diagnostics, child)
         elif key in ("extends", "remove"):
             continue
         else:
@@ -149,110 +150,92 @@ def merge_workflows(base: SourceDict, child: SourceDict, diagnostics: list[Diagn
     return merged
 
 
-def _merge_mapping(base: SourceDict, child: SourceDict, deep: bool) -> SourceDict:
-    out = copy.copy(base)
-    out.locs = dict(base.locs)
-    for k, v in child.items():
-        if deep and isinstance(v, dict) and isinstance(base.get(k), dict):
-            inner = copy.copy(base[k])
-            inner.locs = dict(base[k].locs)
-            inner.update(v)
-            inner.locs.update(v.locs)
-            out[k] = inner
+def _merge_mapping(target: SourceDict, child: SourceDict, deep: bool) -> None:
+    """Update ``target`` with ``child``; with ``deep``, mappings under a key merge too (an input
+    override may change just its default)."""
+    for key, value in child.items():
+        if deep and isinstance(value, dict) and isinstance(target.get(key), dict):
+            _merge_mapping(target[key], value, deep=False)
         else:
-            out[k] = v
-        out.locs[k] = child.where(k)
-    return out
+            target[key] = value
+        target.locs[key] = child.where(key)
 
 
-def _merge_steps(base_steps: list, child_steps: Any, remove: list, diagnostics: list[Diagnostic], child: SourceDict) -> SourceList:
-    steps = SourceList([copy.copy(s) for s in base_steps])
-    steps.loc = getattr(base_steps, "loc", None)
+def _merge_steps(steps: SourceList, child_steps: Any, remove: list, diagnostics: list[Diagnostic],
+                 child: SourceDict) -> SourceList:
     index = _index_steps(steps)
+    removed = set()
     for rid in remove:
-        if rid not in index:
+        if rid in index:
+            removed.add(rid)
+        else:
             diagnostics.append(Diagnostic(child.where("remove"), f"remove: no inherited step {rid!r}"))
-            continue
-        container, i = index[rid]
-        container[i] = None
-    if not isinstance(child_steps, list):
-        return steps
-    for entry in child_steps:
-        if not isinstance(entry, dict) or "id" not in entry:
-            steps.append(entry)
-            continue
-        sid = entry["id"]
-        found = index.get(sid)
-        if "uses" in entry or "loop" in entry:
+    for entry in child_steps if isinstance(child_steps, list) else []:
+        sid = entry.get("id") if isinstance(entry, dict) else None
+        found = index.get(sid) if sid is not None else None
+        if sid is None or "uses" in entry or "loop" in entry:
             if found:
-                found[0][found[1]] = entry
+                container, i = found
+                container[i] = entry
             else:
                 steps.append(entry)
+                steps.locs[len(steps) - 1] = getattr(entry, "loc", None)
             continue
-        if not found or found[0][found[1]] is None:
+        if not found or sid in removed:
             diagnostics.append(Diagnostic(entry.loc, f"step {sid!r} overrides nothing: no inherited step has that id"))
             continue
         container, i = found
-        target = copy.copy(container[i])
-        target.locs = dict(container[i].locs)
-        for key, value in entry.items():
-            if key == "id":
-                continue
-            if key in _LOOP_KEYS and "loop" in target:
-                loop = copy.copy(target["loop"])
-                loop.locs = dict(target["loop"].locs)
-                loop[key] = value
-                loop.locs[key] = entry.where(key)
-                target["loop"] = loop
-            elif key == "with" and isinstance(target.get("with"), dict) and isinstance(value, dict):
-                target["with"] = _merge_mapping(target["with"], value, deep=False)
-            else:
-                target[key] = value
-            target.locs[key] = entry.where(key)
-        container[i] = target
-    out = SourceList()
-    out.loc = steps.loc
-    for s in steps:
-        if s is None:
+        _override(container[i], entry)
+    return _without(steps, removed)
+
+
+def _override(target: SourceDict, entry: SourceDict) -> None:
+    """Apply an override entry (``id`` plus the parts to change) to an inherited step."""
+    for key, value in entry.items():
+        if key == "id":
             continue
-        if isinstance(s, dict) and isinstance(s.get("loop"), dict):
-            inner = s["loop"].get("steps")
-            if isinstance(inner, list) and any(x is None for x in inner):
-                s = copy.copy(s)
-                loop = copy.copy(s["loop"])
-                loop.locs = dict(s["loop"].locs)
-                kept = SourceList([x for x in inner if x is not None])
-                kept.loc = inner.loc
-                loop["steps"] = kept
-                s["loop"] = loop
-        out.locs[len(out)] = s.loc if isinstance(s, SourceDict) else None
-        out.append(s)
-    return out
+        if key in _LOOP_KEYS and isinstance(target.get("loop"), dict):
+            target["loop"][key] = value
+            target["loop"].locs[key] = entry.where(key)
+            continue
+        if key == "with" and isinstance(target.get("with"), dict) and isinstance(value, dict):
+            _merge_mapping(target["with"], value, deep=False)
+        else:
+            target[key] = value
+        target.locs[key] = entry.where(key)
 
 
 def _index_steps(steps: list) -> dict[str, tuple[list, int]]:
+    """Step id -> (the list holding it, its position), inner steps of loops included."""
     index: dict[str, tuple[list, int]] = {}
     for i, s in enumerate(steps):
         if not isinstance(s, dict):
             continue
         if "id" in s:
             index[s["id"]] = (steps, i)
-        loop = s.get("loop")
-        if isinstance(loop, dict) and isinstance(loop.get("steps"), list):
-            loop = copy.copy(loop)
-            loop.locs = dict(s["loop"].locs)
-            inner = SourceList([copy.copy(x) for x in loop["steps"]])
-            inner.loc = s["loop"]["steps"].loc
-            inner.locs = dict(s["loop"]["steps"].locs)
-            loop["steps"] = inner
-            s = copy.copy(s)
-            s.locs = dict(steps[i].locs)
-            s["loop"] = loop
-            steps[i] = s
+        inner = s.get("loop", {}).get("steps") if isinstance(s.get("loop"), dict) else None
+        if isinstance(inner, list):
             for j, x in enumerate(inner):
                 if isinstance(x, dict) and "id" in x:
                     index[x["id"]] = (inner, j)
     return index
+
+
+def _without(steps: SourceList, removed: set) -> SourceList:
+    """The steps minus the removed ids (inside loops too), locations kept."""
+    if not removed:
+        return steps
+    out = SourceList()
+    out.loc = steps.loc
+    for s in steps:
+        if isinstance(s, dict) and s.get("id") in removed:
+            continue
+        inner = s.get("loop", {}).get("steps") if isinstance(s, dict) and isinstance(s.get("loop"), dict) else None
+        if isinstance(inner, SourceList):
+            s["loop"]["steps"] = _without(inner, removed)
+        out.locs[len(out)] = getattr(s, "loc", None)
+        out.append(s)
+    return out
 
 
 def build_workflow(path: Path, data: SourceDict, files: list[Path]) -> Workflow:
