@@ -213,36 +213,30 @@ def _expressions_of(s: StepSpec | LoopSpec) -> list[tuple[Any, Location | None]]
 
 
 def _reference_diagnostics(wf: Workflow, by_id: dict, loops: dict, registry: Registry) -> list[Diagnostic]:
-    out: list[Diagnostic] = []
-    nodes: list[tuple[StepSpec | LoopSpec, str | None]] = []
-    for n in wf.nodes:
-        nodes.append((n, n.id if isinstance(n, LoopSpec) else None))
-        if isinstance(n, LoopSpec):
-            nodes += [(inner, n.id) for inner in n.steps]
+    """Every ``${...}`` of every step, loop and output: it must parse and name what exists."""
     owners = wf.node_of()
-    for node, loop_id in nodes:
-        for value, loc in _expressions_of(node):
-            try:
-                refs = template_references(value)
-            except ExpressionError as err:
-                out.append(Diagnostic(loc, f"step {node.id!r}: {err}"))
-                continue
-            for ref in refs:
-                problem = _check_reference(ref, node, loop_id, wf, by_id, loops, owners, registry)
-                if problem:
-                    out.append(Diagnostic(loc, f"step {node.id!r}: {problem}"))
+    sites: list[tuple[str, Any, Location | None, Any, str | None]] = []  # label, value, where, node, loop
+    for n in wf.nodes:
+        members = [(n, n.id if isinstance(n, LoopSpec) else None)]
+        if isinstance(n, LoopSpec):
+            members += [(inner, n.id) for inner in n.steps]
+        for node, loop_id in members:
+            sites += [(f"step {node.id!r}", value, loc, node, loop_id) for value, loc in _expressions_of(node)]
     output_data = wf.data.get("outputs")
     for key, value in wf.outputs.items():
         loc = output_data.where(key) if isinstance(output_data, SourceDict) else None
+        sites.append((f"output {key!r}", value, loc, None, None))
+    out: list[Diagnostic] = []
+    for label, value, loc, node, loop_id in sites:
         try:
             refs = template_references(value)
         except ExpressionError as err:
-            out.append(Diagnostic(loc, f"output {key!r}: {err}"))
+            out.append(Diagnostic(loc, f"{label}: {err}"))
             continue
         for ref in refs:
-            problem = _check_reference(ref, None, None, wf, by_id, loops, owners, registry)
+            problem = _check_reference(ref, node, loop_id, wf, by_id, loops, owners, registry)
             if problem:
-                out.append(Diagnostic(loc, f"output {key!r}: {problem}"))
+                out.append(Diagnostic(loc, f"{label}: {problem}"))
     return out
 
 
