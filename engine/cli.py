@@ -105,7 +105,8 @@ def cmd_run(args: argparse.Namespace) -> int:
         print(f"{path}: valid; would run {len(wf.all_steps())} step(s) with inputs:")
         print(json.dumps(resolved, indent=2, default=str))
         return 0
-    options, display = _options(args, [n.id for n in wf.nodes] + [s.id for s in wf.all_steps() if s.loop])
+    in_order = [sid for n in wf.nodes for sid in [n.id, *(s.id for s in getattr(n, "steps", []))]]
+    options, display = _options(args, in_order)
     try:
         result = run_workflow(path, values, runs_dir=args.runs_dir, options=options, inputs_from_text=from_text)
     finally:
