@@ -17,12 +17,9 @@ executed.
 Metrics (paper, Sec. V): GCR = fraction of goal counts met; Exe = executed / planned actions;
 TC-max / TC-avg from the simulated travel; RU = ``lower_bound / plan_length`` (capped at 1).
 
-RU's lower bound: per product, the fewest units that any plan must move, from a min-cost flow
-(networkx) in which listed (shelf, product) counts are exact demands, shelves the goal does not
-list may give up to their stock or absorb any amount, and every unit moved between two shelves
-costs 1; capacities are relaxed, which keeps it a lower bound. A move carries at most
-``max_units_per_move`` units (the domain's largest magnitude, 6 in the warehouse domain), so
-``sum_p ceil(units_p / max_units_per_move)`` moves are needed at least.
+RU's lower bound is :func:`pipflow.pddl.bounds.fewest_moves`: the fewest moves of any plan once
+the order of moves is dropped (an integer program, SCIP), so RU = 1 exactly when the plan has the
+fewest moves possible, and below 1 by how many moves it wastes.
 """
 from __future__ import annotations
 
@@ -30,7 +27,6 @@ import math
 from collections import Counter
 from typing import Any, Iterable
 
-MAX_UNITS_PER_MOVE = 6
 
 
 # ------------------------------------------------------------------------------------------
@@ -128,46 +124,14 @@ def capacity_violations(world: dict, peak_load: dict | None, final_stock: dict |
 # ------------------------------------------------------------------------------------------
 
 
-def min_units_moved(world: dict, goal: dict) -> dict[str, int] | None:
-    """Per product, the fewest units any plan must move between shelves (min-cost flow); None
-    when the goal cannot be balanced (more units asked for than exist)."""
-    import networkx as nx
+def plan_lower_bound(world: dict, goal: dict, time_limit: float = 10.0) -> int | None:
+    """The fewest moves any plan needs (order-free IP; its proven bound if SCIP runs out of
+    time); None when no final state meets the goal."""
+    from pipflow.pddl.bounds import fewest_moves
+    from pipflow.pddl.transport import instance_from_world
 
-    shelves = list(world.get("shelves", {}))
-    products = sorted({p for items in (goal or {}).values() for p in items})
-    result = {}
-    for prod in products:
-        g = nx.DiGraph()
-        listed = {s: int(items[prod]) for s, items in goal.items() if prod in items}
-        have = {s: int(world.get("stock", {}).get(s, {}).get(prod, 0)) for s in shelves}
-        need_total = 0
-        for s in shelves:
-            if s in listed:
-                d = listed[s] - have[s]
-                g.add_node(s, demand=d)
-                need_total += d
-            else:
-                g.add_node(s, demand=0)
-                g.add_edge("free", s, capacity=have[s], weight=0)  # may give its own units
-                g.add_edge(s, "free", weight=0)                     # may absorb any amount
-        g.add_node("free", demand=-need_total)
-        for a in shelves:
-            for b in shelves:
-                if a != b:
-                    g.add_edge(a, b, weight=1)
-        try:
-            cost, _ = nx.network_simplex(g)
-        except (nx.NetworkXUnfeasible, nx.NetworkXError):
-            return None
-        result[prod] = int(cost)
-    return result
-
-
-def plan_lower_bound(world: dict, goal: dict, max_units_per_move: int = MAX_UNITS_PER_MOVE) -> int | None:
-    units = min_units_moved(world, goal)
-    if units is None:
-        return None
-    return sum(math.ceil(u / max_units_per_move) for u in units.values())
+    moves, _ = fewest_moves(instance_from_world(world, goal), time_limit=time_limit)
+    return moves
 
 
 # ------------------------------------------------------------------------------------------
@@ -178,7 +142,7 @@ def plan_lower_bound(world: dict, goal: dict, max_units_per_move: int = MAX_UNIT
 def score_run(world: dict, goal: dict, *, constraints: list | None = None, feasible: bool = True,
               graph: dict | None = None, schedule: dict | None = None,
               simulation: dict | None = None, refusal: str | None = None, error: str | None = None,
-              max_units_per_move: int = MAX_UNITS_PER_MOVE) -> dict:
+              ) -> dict:
     """Score one run. ``refusal`` is the message of a :class:`pipflow.Refusal`, ``error`` that
     of any other failure; both mean the pipeline stopped before simulating (normally).
 
@@ -219,7 +183,7 @@ def score_run(world: dict, goal: dict, *, constraints: list | None = None, feasi
     violations += skill_violations(moves, world)
     for robot, jumps in (sim.get("jumps") or {}).items():
         violations += [f"{robot} jumps {j['metres']:g} m at t={j['time']:g} (legs do not connect)" for j in jumps]
-    lb = plan_lower_bound(world, goal, max_units_per_move)
+    lb = plan_lower_bound(world, goal)
     if planned == 0:
         ru = 1.0 if lb == 0 else 0.0
     else:

@@ -16,7 +16,6 @@ from pipflow import Input, StepContext, step
         "simulation": Input("object", default=None, doc="outputs of simulate.pybullet"),
         "feasible": Input("boolean", default=True, doc="false: only a refusal with nothing executed succeeds"),
         "refusal": Input("string", default=None, doc="refusal message, when the pipeline refused"),
-        "max_units_per_move": Input("integer", default=6, doc="largest units one move carries (RU lower bound)"),
     },
     outputs={
         "success": "boolean", "goal_met": "boolean", "gcr": "number", "exe": "number", "ru": "number",
@@ -27,12 +26,11 @@ from pipflow import Input, StepContext, step
 )
 def score(ctx: StepContext, world: dict, goal: dict, constraints: list | None = None,
           graph: dict | None = None, schedule: dict | None = None, simulation: dict | None = None,
-          feasible: bool = True, refusal: str | None = None, max_units_per_move: int = 6) -> dict:
+          feasible: bool = True, refusal: str | None = None) -> dict:
     from pipflow.scoring import score_run
 
     result = score_run(world, goal, constraints=constraints or [], feasible=feasible, graph=graph,
-                       schedule=schedule, simulation=simulation, refusal=refusal,
-                       max_units_per_move=max_units_per_move)
+                       schedule=schedule, simulation=simulation, refusal=refusal)
     for v in result["violations"]:
         ctx.log(f"violation: {v}")
     ctx.metrics.update({k: result[k] for k in ("success", "gcr", "exe", "ru", "tc_max", "tc_avg")})

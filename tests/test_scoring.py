@@ -5,7 +5,7 @@ import copy
 
 import pytest
 
-from pipflow.scoring import (aggregate_task, min_units_moved, plan_lower_bound, score_run, summarize)
+from pipflow.scoring import aggregate_task, plan_lower_bound, score_run, summarize
 from pipflow.simulation import simulate
 from sim_fixtures import R5_TO_S1, S1_TO_S3, build, chain, load_world, route, wh01
 
@@ -119,9 +119,12 @@ def test_refusing_a_feasible_task_fails(world):
 
 
 def test_lower_bound(world):
-    assert min_units_moved(world, {"shelf2": {"product1": 20}, "shelf4": {"product1": 16},
-                                   "shelf3": {"product1": 2}}) == {"product1": 13}
-    assert plan_lower_bound(world, {"shelf4": {"product3": 14, "product1": 2, "product2": 1}}) == 6
+    # wh-05: 13 units of product1 must move (units alone would say ceil(13/6) = 3 moves), but they
+    # go to two shelves from sources whose stock and room split them: 5 moves at least
+    assert plan_lower_bound(world, {"shelf2": {"product1": 20}, "shelf4": {"product1": 16},
+                                    "shelf3": {"product1": 2}}) == 5
+    # wh-06: shelf4 needs 12 more product3, sheds 13 product1 and needs 1 product2: 7 moves
+    assert plan_lower_bound(world, {"shelf4": {"product3": 14, "product1": 2, "product2": 1}}) == 7
     assert plan_lower_bound(world, {"shelf1": {"product4": 13}}) is None  # only 12 exist
     assert plan_lower_bound(world, {"shelf1": {"product1": 10}}) == 0
 
