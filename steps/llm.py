@@ -13,9 +13,10 @@ from pipflow.errors import InputError
     doc="Write the team-level PDDL problem for a command with a language model (or offline).",
     inputs={
         "command": Input("string", doc="the natural-language command"),
-        "world": Input("object", doc="the world (output of world.load)"),
+        "world": Input("object", doc="the world (output of world.load or household.load)"),
         "domain": Input("path", doc="team-level PDDL domain file"),
-        "prompt": Input("string", "warehouse_problem", doc="template name in prompts/ or a path"),
+        "prompt": Input("string", None, doc="template name in prompts/ or a path; unset: the world's "
+                                            "domain's (warehouse_problem, household_problem)"),
         "model": Input("string", None, doc="litellm model string, local/smollm2 or offline; "
                                            "unset: $PIPFLOW_MODEL, else offline"),
         "temperature": Input("number", 0.0),
@@ -32,18 +33,22 @@ from pipflow.errors import InputError
              "response": "string", "usage": "object", "errors": "array"},
 )
 def llm_problem(ctx: StepContext, command: str, world: dict, domain: str,
-                prompt: str = "warehouse_problem", model: str | None = None,
+                prompt: str | None = None, model: str | None = None,
                 temperature: float = 0.0, max_tokens: int = 1024, timeout: float = 60.0,
                 retries: int = 2, api_base: str | None = None, feedback: list | None = None,
                 grounded: bool = False, cache_dir: str | None = None, cache: bool = True) -> dict:
     """``problem`` is "" when the answer held no usable problem; ``errors`` then says why, in
-    words meant for the next round's prompt. ``goal`` is set by offline and grounded runs."""
+    words meant for the next round's prompt. ``goal`` is set by offline and grounded runs, and
+    for household worlds (``domain: household``) by every run: the goal conditions read back from
+    the problem. Household worlds go to the household translator offline; `concrete` (the goal with
+    counts resolved) is then an extra output, as in step household.problem."""
+    from pipflow.language.generator import domain_of as generate_domain_of
     from pipflow.language.generator import generate
     from pipflow.language.llm import resolve_model
 
     resolved = resolve_model(model)
     domain_text = ""
-    if resolved != "offline":
+    if resolved != "offline" or generate_domain_of(world) == "household":
         path = ctx.resolve_path(domain)
         try:
             domain_text = path.read_text(encoding="utf-8")

@@ -5,6 +5,13 @@ from the response cache or from the model, and read the answer as data. A model 
 nothing usable does not stop the run: the round returns ``problem: ""`` and ``errors`` that say
 precisely why, for the debugger/verifier loop to feed back. Model ``offline`` needs no prompt at
 all: the deterministic translator reads the command and the problem writer writes the problem.
+
+The generator serves every domain whose world it can tell apart (``world["domain"]``): the
+warehouse (the default) and ``household`` (:mod:`pipflow.household`). Per domain it knows the
+default prompt template, the offline translator and problem writer, the example problem shown in
+the prompt, the fields a robot-use rule may name, and, for household, how to read the goal
+conditions back out of the model's problem. Prompt rendering, the model call, the cache and the
+PDDL extraction are the same for all.
 """
 from __future__ import annotations
 
@@ -16,11 +23,33 @@ from pipflow.errors import InputError
 from pipflow.language import grounding
 from pipflow.language.cache import ResponseCache, cache_key
 from pipflow.language.llm import complete, resolve_model
-from pipflow.language.parsing import ParseIssue, extract_constraints, extract_problem, validate_constraints
+from pipflow.language.parsing import (HOUSEHOLD_FIELD_KEYS, ParseIssue, extract_constraints,
+                                      extract_problem, validate_constraints)
 from pipflow.language.prompting import render
 
 NO_USAGE: dict[str, Any] = {"calls": 0, "cached": False, "prompt_tokens": 0, "completion_tokens": 0,
                             "total_tokens": 0, "latency_s": 0.0, "cost_usd": 0.0}
+#: the prompt template of each domain when the caller names none
+DEFAULT_PROMPTS = {"warehouse": "warehouse_problem", "household": "household_problem"}
+#: where the example problem of a household prompt leaves room for the goal
+GOAL_PLACEHOLDER = "; the goal conditions of the command go here"
+
+
+def domain_of(world: Any) -> str:
+    """``household`` for a household world (``domain: household``), else ``warehouse``."""
+    return "household" if isinstance(world, dict) and world.get("domain") == "household" else "warehouse"
+
+
+def domain_name(domain_text: str, default: str) -> str:
+    """The name in ``(define (domain NAME)`` of a PDDL domain text, or ``default``."""
+    import re
+
+    m = re.search(r"\(\s*domain\s+([^\s()]+)", domain_text or "", flags=re.IGNORECASE)
+    return m.group(1) if m else default
+
+
+def default_prompt(world: Any) -> str:
+    return DEFAULT_PROMPTS[domain_of(world)]
 
 
 def write_problem(world: dict, goal: dict) -> str:
@@ -28,6 +57,14 @@ def write_problem(world: dict, goal: dict) -> str:
     from pipflow.pddl.writer import write_problem as writer
 
     return writer(world, goal)
+
+
+def write_household_problem(world: dict, goal: dict, domain: str = "household") -> str:
+    """The household problem writer (:mod:`pipflow.household.problem`): the world's objects and
+    initial state, the goal's ``in``/``state`` conditions."""
+    from pipflow.household.problem import write_problem as writer
+
+    return writer(world, goal, domain=domain)
 
 
 def grounding_method(model: str, api_base: str | None) -> str:
@@ -43,8 +80,12 @@ def request_extra(method: str, world: dict) -> dict[str, Any]:
     return {"response_format": grounding.response_format(world)}
 
 
-def offline(command: str, world: dict) -> dict[str, Any]:
-    """Model ``offline``: the translator's goal and constraints, written as PDDL."""
+def offline(command: str, world: dict, domain_text: str = "",
+            save: Callable[[str, Any], Any] | None = None) -> dict[str, Any]:
+    """Model ``offline``: the translator's goal and constraints, written as PDDL (the household
+    translator and writer for a household world)."""
+    if domain_of(world) == "household":
+        return household_offline(command, world, domain_text, save)
     from pipflow.language.translator import translate
 
     result = translate(command, world)
@@ -53,12 +94,29 @@ def offline(command: str, world: dict) -> dict[str, Any]:
             "usage": dict(NO_USAGE), "errors": []}
 
 
+def household_offline(command: str, world: dict, domain_text: str = "",
+                      save: Callable[[str, Any], Any] | None = None) -> dict[str, Any]:
+    """The household translator (:mod:`pipflow.household.translator`) and writer: ``goal`` keeps
+    the command's conditions (counts included) for judging, ``concrete`` resolves counts to
+    objects, which is what the problem asks for. Untranslatable commands raise TranslationError,
+    impossible ones Refusal (the same as step ``household.problem``)."""
+    from pipflow.household.translator import translate
+
+    result = translate(command, world)
+    problem = write_household_problem(world, result["concrete"], domain_name(domain_text, "household"))
+    if save is not None:
+        save("goal.json", result)
+        save("problem.pddl", problem)
+    return {"problem": problem, "goal": result["goal"], "concrete": result["concrete"], "constraints": [],
+            "messages": [], "response": "", "usage": dict(NO_USAGE), "errors": []}
+
+
 def generate(
     command: str,
     world: dict,
     domain_text: str,
     *,
-    prompt: str = "warehouse_problem",
+    prompt: str | None = None,
     model: str | None = None,
     temperature: float = 0.0,
     max_tokens: int = 1024,
@@ -73,16 +131,22 @@ def generate(
     save: Callable[[str, Any], Any] | None = None,
     log: Callable[[str], None] = lambda message: None,
 ) -> dict[str, Any]:
-    """One generator round; returns the outputs of step ``llm.problem``."""
+    """One generator round; returns the outputs of step ``llm.problem``. ``prompt`` None: the
+    world's domain's template (``warehouse_problem`` or ``household_problem``)."""
     model = resolve_model(model)
+    kind = domain_of(world)
     if model == "offline":
-        return offline(command, world)
+        return offline(command, world, domain_text, save if kind == "household" else None)
     if not isinstance(command, str) or not command.strip():
         raise InputError("command must be a non-empty string")
+    if grounded and kind == "household":
+        raise InputError("grounded decoding is not available for household worlds yet: run without "
+                         "grounded (the debugger checks every name against the world)")
     feedback = [str(m) for m in (feedback or []) if str(m).strip()]
-    messages = render(prompt, {"command": command, "world": world, "domain": domain_text,
-                               "feedback": feedback, "grounded": bool(grounded),
-                               "example": _example(world) if not grounded else None}, base_dir)
+    messages = render(prompt or DEFAULT_PROMPTS[kind],
+                      {"command": command, "world": world, "domain": domain_text,
+                       "feedback": feedback, "grounded": bool(grounded),
+                       "example": _example(world, domain_text) if not grounded else None}, base_dir)
     extra = request_extra(grounding_method(model, api_base), world) if grounded else {}
     params = {"temperature": temperature, "max_tokens": max_tokens, **extra}
     key = cache_key(model, messages, params)
@@ -109,12 +173,17 @@ def generate(
         save("messages.json", messages)
         save("response.txt", text)
     out = {"messages": messages, "response": text, "usage": {**usage, "cache_key": key}}
-    out.update(_read_answer(text, world, grounded))
+    out.update(_read_answer(text, world, grounded, domain_text))
+    if save is not None and kind == "household" and out["goal"] is not None:
+        save("goal.json", out["goal"])
     return out
 
 
-def _read_answer(text: str, world: dict, grounded: bool) -> dict[str, Any]:
-    """Problem, goal (grounded only), constraints and errors of one answer."""
+def _read_answer(text: str, world: dict, grounded: bool, domain_text: str = "") -> dict[str, Any]:
+    """Problem, goal (grounded, or read back from a household problem), constraints and errors
+    of one answer."""
+    if domain_of(world) == "household":
+        return _read_household_answer(text, world, domain_text)
     if grounded:
         try:
             goal, constraints = grounding.parse_answer(text, world)
@@ -134,9 +203,68 @@ def _read_answer(text: str, world: dict, grounded: bool) -> dict[str, Any]:
     return {"problem": problem, "goal": None, "constraints": constraints, "errors": errors}
 
 
-def _example(world: dict) -> str | None:
-    """A problem for this world (its current stock as the goal) to show the expected form, or
-    None while no problem writer is installed."""
+def _read_household_answer(text: str, world: dict, domain_text: str) -> dict[str, Any]:
+    """The problem and the robot-use rules as for the warehouse (household rule fields), and the
+    goal conditions read back from the problem (``{"in", "state"}``, None when it does not parse:
+    the debugger then says why). A problem whose goal states nothing is no answer: copying the
+    example unchanged would otherwise "succeed" without doing anything."""
+    errors, problem, constraints, goal = [], "", [], None
+    try:
+        problem = extract_problem(text)
+    except ParseIssue as issue:
+        errors.append(str(issue))
+    try:
+        constraints = validate_constraints(extract_constraints(text, HOUSEHOLD_FIELD_KEYS), world,
+                                           HOUSEHOLD_FIELD_KEYS)
+    except ParseIssue as issue:
+        errors.append(str(issue))
+    if problem:
+        parsed = _parse_quietly(domain_text, problem)
+        if parsed is not None:
+            from pipflow.household.problem import goal_from_problem
+
+            if not _goal_atoms(parsed):
+                errors.append("the problem's (:goal ...) states no condition: write in it the conditions "
+                              "the command asks for, e.g. (at apple fridge) or (not (is-on floorlamp))")
+                problem = ""
+            else:
+                goal = goal_from_problem(parsed)
+    return {"problem": problem, "goal": goal, "constraints": constraints, "errors": errors}
+
+
+def _parse_quietly(domain_text: str, problem: str) -> Any:
+    """The UP problem, or None if it does not parse (the debugger explains that)."""
+    if not domain_text:
+        return None
+    try:
+        from pipflow.pddl.common import environment
+        from unified_planning.io import PDDLReader
+
+        environment()
+        return PDDLReader().parse_problem_string(domain_text, problem)
+    except Exception:
+        return None
+
+
+def _goal_atoms(parsed: Any) -> list:
+    """The goal's conditions with every ``and`` flattened (an empty ``(and)`` has none)."""
+    out, stack = [], list(parsed.goals)
+    while stack:
+        g = stack.pop()
+        if g.is_and():
+            stack += list(g.args)
+        elif not (g.is_bool_constant() and g.bool_constant_value()):
+            out.append(g)
+    return out
+
+
+def _example(world: dict, domain_text: str = "") -> str | None:
+    """A problem for this world to show the expected form (warehouse: its current stock as the
+    goal; household: the world's objects and initial state with room for the goal), or None while
+    no problem writer is installed."""
+    if domain_of(world) == "household":
+        text = write_household_problem(world, {}, domain_name(domain_text, "household"))
+        return text.replace("  (:goal (and\n", f"  (:goal (and\n    {GOAL_PLACEHOLDER}\n", 1)
     stock = {s: dict(items) for s, items in world.get("stock", {}).items() if items}
     try:
         return write_problem(world, stock)

@@ -15,6 +15,8 @@ _PROBLEM_START = re.compile(r"\(\s*define\s*\(\s*problem\b", re.IGNORECASE)
 _FENCE = re.compile(r"```[ \t]*([A-Za-z0-9_-]*)[^\n]*\n(.*?)(?:```|\Z)", re.DOTALL)
 RULE_KEYS = ("only", "never")
 FIELD_KEYS = ("product", "from", "to")
+#: the fields a household rule may narrow by (domains/household.actions.yaml `fields`)
+HOUSEHOLD_FIELD_KEYS = ("object", "from", "to", "at")
 
 
 class ParseIssue(ValueError):
@@ -90,7 +92,7 @@ def _json_candidates(text: str) -> list[str]:
     return found
 
 
-def extract_constraints(text: str) -> list[dict[str, Any]]:
+def extract_constraints(text: str, fields: tuple[str, ...] = FIELD_KEYS) -> list[dict[str, Any]]:
     """The robot-use rules stated in the answer, as ``[{"only"|"never": [...], ...}]``.
 
     No JSON at all means the model stated no rule: an empty list. JSON that is there but wrong is
@@ -109,15 +111,18 @@ def extract_constraints(text: str) -> list[dict[str, Any]]:
         elif isinstance(data, dict) and any(k in data for k in RULE_KEYS):
             data = [data]
         if isinstance(data, list):
-            return validate_constraints(data)
+            return validate_constraints(data, fields=fields)
         errors.append('the JSON block must be {"constraints": [...]} or a list of rules')
     if errors:
         raise ParseIssue(errors[0])
     return []
 
 
-def validate_constraints(rules: list[Any], world: dict | None = None) -> list[dict[str, Any]]:
-    """Check each rule's shape (and, given a world, its names); return them normalized."""
+def validate_constraints(rules: list[Any], world: dict | None = None,
+                         fields: tuple[str, ...] = FIELD_KEYS) -> list[dict[str, Any]]:
+    """Check each rule's shape (and, given a world, its names); return them normalized.
+    ``fields``: the keys a rule may narrow by (warehouse by default; household worlds:
+    :data:`HOUSEHOLD_FIELD_KEYS`)."""
     out = []
     for n, rule in enumerate(rules, 1):
         where = f"constraint {n}"
@@ -126,16 +131,16 @@ def validate_constraints(rules: list[Any], world: dict | None = None) -> list[di
         kinds = [k for k in RULE_KEYS if k in rule]
         if len(kinds) != 1:
             raise ParseIssue(f"{where} must have exactly one of \"only\" or \"never\": {json.dumps(rule)}")
-        unknown = sorted(set(rule) - set(RULE_KEYS) - set(FIELD_KEYS))
+        unknown = sorted(set(rule) - set(RULE_KEYS) - set(fields))
         if unknown:
             raise ParseIssue(f"{where} has unknown keys {unknown}; allowed: only, never, "
-                             "product, from, to")
+                             f"{', '.join(fields)}")
         robots = rule[kinds[0]]
         robots = [robots] if isinstance(robots, str) else robots
         if not isinstance(robots, list) or not robots or not all(isinstance(r, str) for r in robots):
             raise ParseIssue(f"{where}: \"{kinds[0]}\" must be a non-empty list of robot names")
         clean: dict[str, Any] = {kinds[0]: list(robots)}
-        for key in FIELD_KEYS:
+        for key in fields:
             if rule.get(key) is not None:
                 if not isinstance(rule[key], str):
                     raise ParseIssue(f"{where}: \"{key}\" must be a name, got {json.dumps(rule[key])}")
@@ -148,11 +153,18 @@ def validate_constraints(rules: list[Any], world: dict | None = None) -> list[di
 
 def _check_names(where: str, rule: dict[str, Any], world: dict) -> None:
     kind = "only" if "only" in rule else "never"
-    pools = {kind: world.get("robots", {}), "product": world.get("products", {}),
-             "from": world.get("shelves", {}), "to": world.get("shelves", {})}
+    if world.get("domain") == "household":
+        places, objects = world.get("places", {}), world.get("objects", {})
+        pools = {kind: world.get("robots", {}), "object": {**places, **objects}, "from": places,
+                 "to": places, "at": places}
+        what = {kind: "robot", "object": "place or object", "from": "place", "to": "place", "at": "place"}
+    else:
+        pools = {kind: world.get("robots", {}), "product": world.get("products", {}),
+                 "from": world.get("shelves", {}), "to": world.get("shelves", {})}
+        what = {kind: "robot", "product": "product", "from": "shelf", "to": "shelf"}
     for key, pool in pools.items():
         values = rule.get(key)
         for v in ([values] if isinstance(values, str) else values or []):
             if v not in pool:
-                raise ParseIssue(f"{where}: {v!r} is not a {'robot' if key == kind else 'product' if key == 'product' else 'shelf'} "
+                raise ParseIssue(f"{where}: {v!r} is not a {what[key]} "
                                  f"of this world; known: {', '.join(sorted(pool))}")

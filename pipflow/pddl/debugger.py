@@ -100,13 +100,32 @@ def find_word(text: str, word: str, nth: int = 0) -> str:
 # ---------------------------------------------------------------------------------------------
 # context: the domain's signatures and the problem's declared objects
 # ---------------------------------------------------------------------------------------------
+def _type_name(t: Any) -> str:
+    """``place``, not UP's ``place - entity`` for a subtype."""
+    return getattr(t, "name", None) or str(t)
+
+
 def domain_signatures(domain_text: str) -> tuple[dict[str, list[tuple[str, str]]], list[str]]:
     """``({fluent: [(param, type), ...]}, [type names])`` of the domain, read by UP."""
     from unified_planning.io import PDDLReader
 
     dom = PDDLReader().parse_problem_string(domain_text, None)
-    sigs = {f.name: [(p.name, str(p.type)) for p in f.signature] for f in dom.fluents}
-    return sigs, [str(t) for t in dom.user_types]
+    sigs = {f.name: [(p.name, _type_name(p.type)) for p in f.signature] for f in dom.fluents}
+    return sigs, [_type_name(t) for t in dom.user_types]
+
+
+def type_lineage(domain_text: str) -> dict[str, set[str]]:
+    """``{type: {type, its parent, ...}}``: a ``place`` may stand where an ``entity`` is asked."""
+    from unified_planning.io import PDDLReader
+
+    out: dict[str, set[str]] = {}
+    for t in PDDLReader().parse_problem_string(domain_text, None).user_types:
+        names, f = {_type_name(t)}, getattr(t, "father", None)
+        while f is not None:
+            names.add(_type_name(f))
+            f = getattr(f, "father", None)
+        out[_type_name(t)] = names
+    return out
 
 
 def declared_objects(problem_text: str) -> dict[str, str]:
@@ -171,8 +190,10 @@ def explain_parse_error(exc: Exception, text: str, domain_text: str) -> str:
             toks = _TOKEN.findall(snippet)
             head, args = (toks[1], [t for t in toks[2:] if t not in "()"]) if len(toks) > 2 else ("", [])
             if head in sigs:
+                lineage = type_lineage(domain_text)
                 wrong = [f"argument {i + 1} of {head} must be a {t}, but {a!r} is a {objects.get(a, 'undeclared name')}"
-                         for i, ((_, t), a) in enumerate(zip(sigs[head], args)) if objects.get(a) != t]
+                         for i, ((_, t), a) in enumerate(zip(sigs[head], args))
+                         if t not in lineage.get(objects.get(a, ""), {objects.get(a)})]
                 if wrong:
                     return f"{where}wrong type in {snippet!r}: " + "; ".join(wrong) + f"; signature {_signature_text(head, sigs[head])}"
             return f"{where}wrong type in {snippet!r}: the arguments do not match the signature"
