@@ -236,6 +236,15 @@ def _quiet_c_output():
             os.close(fd)
 
 
+def connect_direct() -> tuple[Any, int]:
+    """A headless (DIRECT) pybullet client: ``(pybullet module, client id)``, without the banner."""
+    with _quiet_c_output():
+        import pybullet as p
+
+        cid = p.connect(p.DIRECT)
+    return p, cid
+
+
 class Scene:
     """Floor, shelves, unit bodies and robots in one DIRECT pybullet client.
 
@@ -243,11 +252,7 @@ class Scene:
     the bodies' positions, while counts are always read back from the bodies themselves."""
 
     def __init__(self, world: dict):
-        with _quiet_c_output():
-            import pybullet as p
-
-            self.cid = p.connect(p.DIRECT)
-        self.p = p
+        self.p, self.cid = connect_direct()
         self.world = world
         self.unit_product: dict[int, str] = {}
         self.slots: dict[str, list[Point]] = {}
@@ -378,25 +383,30 @@ class Scene:
 
     def snapshot(self, path: Path, width: int = 640, height: int = 400) -> Path:
         """An oblique view of the whole floor with the tiny renderer (no display needed)."""
-        import numpy as np
-
-        p, c = self.p, self.cid
-        fw, fh = float(self.world["floor"]["width"]), float(self.world["floor"]["height"])
-        target = (fw / 2, fh / 2, 0)
-        eye = (fw / 2, -0.3 * fh, 0.72 * max(fw, fh))
-        view = p.computeViewMatrix(eye, target, (0, 0, 1), physicsClientId=c)
-        proj = p.computeProjectionMatrixFOV(45, width / height, 0.1, 200, physicsClientId=c)
-        _, _, rgba, _, _ = p.getCameraImage(width, height, view, proj, renderer=p.ER_TINY_RENDERER,
-                                            physicsClientId=c)
-        img = np.reshape(np.asarray(rgba, dtype=np.uint8), (height, width, 4))[:, :, :3]
-        _save_png(path, img)
-        return path
+        return render_floor(self.p, self.cid, self.world["floor"], path, width, height)
 
     def close(self) -> None:
         try:
             self.p.disconnect(physicsClientId=self.cid)
         except Exception:
             pass
+
+
+def render_floor(p: Any, cid: int, floor: dict, path: Path, width: int, height: int) -> Path:
+    """Render a pybullet scene seen obliquely from the floor's front edge into a PNG; every
+    domain's scene uses this one camera, so pictures compare across runs."""
+    import numpy as np
+
+    fw, fh = float(floor["width"]), float(floor["height"])
+    view = p.computeViewMatrix((fw / 2, -0.3 * fh, 0.72 * max(fw, fh)), (fw / 2, fh / 2, 0), (0, 0, 1),
+                               physicsClientId=cid)
+    proj = p.computeProjectionMatrixFOV(45, width / height, 0.1, 200, physicsClientId=cid)
+    _, _, rgba, _, _ = p.getCameraImage(width, height, view, proj, renderer=p.ER_TINY_RENDERER,
+                                        physicsClientId=cid)
+    img = np.reshape(np.asarray(rgba, dtype=np.uint8), (height, width, 4))[:, :, :3]
+    path.parent.mkdir(parents=True, exist_ok=True)
+    _save_png(path, img)
+    return path
 
 
 def _save_png(path: Path, img) -> None:

@@ -231,15 +231,27 @@ def _duplicate_diagnostics(locate: Any) -> list[Diagnostic]:
             for path, loc in getattr(locate, "duplicates", [])]
 
 
-def world_from_text(text: str, file: str) -> dict:
-    """Validate and normalize world YAML ``text`` (``file`` names it in messages)."""
-    data, locate = _parse(text, file, "world")
+def checked_yaml(text: str, file: str, kind: str, schema: str,
+                 semantic: Callable[[dict, Locate], list[Diagnostic]],
+                 prepare: Callable[[dict], None] | None = None) -> dict:
+    """Parse a YAML file's ``text`` and check it against a schema of ``schemas/`` and the
+    ``semantic`` rules; raise :class:`WorldError` with every problem at once, in file order.
+    World files of every domain go through here (``prepare`` may fix the parsed data first)."""
+    data, locate = _parse(text, file, kind)
+    if prepare is not None:
+        prepare(data)
     diags = _duplicate_diagnostics(locate)
-    diags += schema_diagnostics(data, load_schema("world.schema.json"), locate)
-    diags += semantic_diagnostics(data, locate)
+    diags += schema_diagnostics(data, load_schema(schema), locate)
+    diags += semantic(data, locate)
     diags.sort(key=lambda d: (d.location.line, d.location.column) if d.location else (0, 0))
     if diags:
-        raise WorldError(diags, f"invalid world file {file} ({len(diags)} problem(s))")
+        raise WorldError(diags, f"invalid {kind} file {file} ({len(diags)} problem(s))")
+    return data
+
+
+def world_from_text(text: str, file: str) -> dict:
+    """Validate and normalize world YAML ``text`` (``file`` names it in messages)."""
+    data = checked_yaml(text, file, "world", "world.schema.json", semantic_diagnostics)
     return normalize_world(data, Path(file))
 
 

@@ -206,12 +206,10 @@ class _Scene:
     """Headless pybullet pictures: furniture boxes, objects on their places, robots at their starts."""
 
     def __init__(self, world: dict):
-        import pybullet as p
+        from pipflow.simulation import ROBOT_COLOURS, connect_direct
 
-        from pipflow.simulation import ROBOT_COLOURS
-
-        self.p, self.world = p, world
-        self.cid = p.connect(p.DIRECT)
+        self.p, self.cid = connect_direct()
+        p, self.world = self.p, world
         self.bodies: dict[str, int] = {}
         fw, fh = float(world["floor"]["width"]), float(world["floor"]["height"])
         self._box((fw / 2, fh / 2, 0.01), "beige", (fw / 2, fh / 2, -0.01))
@@ -239,9 +237,7 @@ class _Scene:
         return self.p.createMultiBody(0, -1, vis, basePosition=(0, 0, -5), physicsClientId=self.cid)
 
     def snapshot(self, path: Path, home: Home, width: int = 640, height: int = 480) -> Path:
-        import numpy as np
-
-        from pipflow.simulation import _save_png
+        from pipflow.simulation import render_floor
 
         p, c = self.p, self.cid
         slots: dict[str, int] = {}
@@ -256,14 +252,7 @@ class _Scene:
             y = pl["y"] + 0.12 + 0.22 * (k // cols) % max(pl["depth"], 0.22)
             h = 0.45 if "receptacle" in pl["properties"] else 1.0
             p.resetBasePositionAndOrientation(body, (x, y, h + 0.1), (0, 0, 0, 1), physicsClientId=c)
-        fw, fh = float(self.world["floor"]["width"]), float(self.world["floor"]["height"])
-        view = p.computeViewMatrix((fw / 2, -0.35 * fh, 0.9 * max(fw, fh)), (fw / 2, fh / 2, 0), (0, 0, 1), physicsClientId=c)
-        proj = p.computeProjectionMatrixFOV(50, width / height, 0.1, 100, physicsClientId=c)
-        _, _, rgba, _, _ = p.getCameraImage(width, height, view, proj, renderer=p.ER_TINY_RENDERER, physicsClientId=c)
-        img = np.reshape(np.asarray(rgba, dtype=np.uint8), (height, width, 4))[:, :, :3]
-        path.parent.mkdir(parents=True, exist_ok=True)
-        _save_png(path, img)
-        return path
+        return render_floor(p, c, self.world["floor"], path, width, height)
 
     def close(self) -> None:
         try:

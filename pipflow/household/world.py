@@ -24,8 +24,8 @@ from pathlib import Path
 from typing import Any
 
 from pipflow.errors import Diagnostic, InputError, Location, WorldError
-from pipflow.world import (Locate, _did_you_mean, _duplicate_diagnostics, _is_point, _parse, _read,
-                           footprint, inside_footprint, load_schema, on_floor, schema_diagnostics)
+from pipflow.world import (Locate, _did_you_mean, _is_point, _read, checked_yaml, footprint, inside_footprint,
+                           on_floor)
 
 DOMAIN = "household"
 #: words of domains/household.pddl that may not name an object (UP: "name already defined")
@@ -181,14 +181,8 @@ def _fix_on_keys(data: dict) -> None:
 
 def world_from_text(text: str, file: str) -> dict:
     """Validate and normalize household world YAML ``text`` (``file`` names it in messages)."""
-    data, locate = _parse(text, file, "household world")
-    _fix_on_keys(data)
-    diags = _duplicate_diagnostics(locate)
-    diags += schema_diagnostics(data, load_schema("household.schema.json"), locate)
-    diags += semantic_diagnostics(data, locate)
-    diags.sort(key=lambda d: (d.location.line, d.location.column) if d.location else (0, 0))
-    if diags:
-        raise WorldError(diags, f"invalid household world file {file} ({len(diags)} problem(s))")
+    data = checked_yaml(text, file, "household world", "household.schema.json", semantic_diagnostics,
+                        prepare=_fix_on_keys)
     return normalize(data, Path(file))
 
 
