@@ -41,10 +41,22 @@ def test_detour_around_a_shelf(world):
     # shelf1's access (7, 12) to shelf3's access (7, 4): shelf3 (y 5..7) is in the way
     straight = 8.0
     d = tm.distance("shelf1", "shelf3")
-    # the geodesic around shelf3's inflated corner is ~13.3 m; the grid path is within 5%
-    assert 13.0 < d < 13.3 * 1.05
+    # the exact geodesic bends at two corners of shelf3's footprint inflated by 0.3 m:
+    # (7, 12) -> (2.7, 7.3) -> (2.7, 4.7) -> (7, 4)
+    exact = math.dist((7, 12), (2.7, 7.3)) + 2.6 + math.dist((2.7, 4.7), (7, 4))
+    assert d == pytest.approx(exact)
     assert tm.distance([1, 1], [1, 3]) == pytest.approx(2.0)  # open floor: straight
     assert d > straight
+
+
+def test_a_robot_parked_within_the_safety_margin_still_goes_round_the_shelf(world):
+    """A start 0.2 m below shelf3 (inside the 0.3 m margin, outside the footprint) can leave,
+    but its path to shelf1 must not cut through shelf3."""
+    near = dict(world, robots=dict(world["robots"], robot0={"start": [7, 4.8], "skills": {"carry": 1}}))
+    tm = TravelMap(near)
+    p = tm.path("robot0", "shelf1")
+    assert not _crosses_shelf(tm, p), p
+    assert tm.distance("robot0", "shelf1") > 12.0  # straight up would be 7.2 m, through the shelf
 
 
 def test_cached_in_memory_and_on_disk(world, tmp_path):
@@ -56,7 +68,7 @@ def test_cached_in_memory_and_on_disk(world, tmp_path):
     assert len(files) == 1
     travel._MEMORY_CACHE.clear()
     b = TravelMap(world, cache_dir=tmp_path)
-    assert b._graph is None  # served from disk without building the grid
+    assert b._graph is None  # served from disk without building the visibility graph
     assert b.distance("robot3", "shelf2") == pytest.approx(a.distance("robot3", "shelf2"))
     moved = dict(world, robots=dict(world["robots"], robot0={"start": [2, 2], "skills": {"carry": 1}}))
     assert TravelMap(moved).key != a.key
