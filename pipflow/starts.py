@@ -1,8 +1,8 @@
 """Seeded robot start positions.
 
 The paper runs every warehouse task ten times "from varied initial robot locations". A seed
-gives a reproducible variation: each robot starts at a random free point of the floor (on the
-0.5 m grid the travel map uses, clear of every shelf footprint and access point, and apart from
+gives a reproducible variation: each robot starts at a random free point of the floor (on a
+0.5 m grid, clear of every shelf footprint and access point, and apart from
 the other robots). No seed keeps the world file's starts.
 """
 from __future__ import annotations
@@ -13,7 +13,7 @@ import random
 
 from pipflow.errors import InputError
 
-GRID = 0.5        # metres: start points sit on the travel grid
+GRID = 0.5        # metres between candidate start points
 CLEARANCE = 1.0   # metres kept from shelf footprints and from the floor's edge
 SPACING = 1.0     # metres between two robots' starts
 
