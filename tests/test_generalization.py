@@ -37,3 +37,23 @@ def test_translator_reads_every_name_from_the_unseen_world():
         got = translate(task["command"], world)
         assert got["goal"] == task["goal"], task["id"]
         assert got["constraints"] == task.get("constraints", []), task["id"]
+
+
+def test_a_small_team_gets_moves_it_can_carry(tmp_path):
+    """Two robots that carry one unit each: the team-level problem offers moves of at most two
+    units (the paper's 1..6 would plan moves no coalition can make), and the command succeeds."""
+    import yaml
+
+    from pipflow.engine import run_workflow
+
+    world = yaml.safe_load((TASKS.parent / "world.yaml").read_text())
+    world["robots"] = {"r1": {"start": [1, 1], "skills": {"carry": 1}},
+                       "r2": {"start": [39, 1], "skills": {"carry": 1}}}
+    path = tmp_path / "small-team.yaml"
+    path.write_text(yaml.safe_dump(world))
+    result = run_workflow("warehouse", {"world": str(path), "command": "rack e should hold 5 pear"},
+                          runs_dir=tmp_path / "runs")
+    assert result.ok, result.error
+    sizes = [int(step["args"][3].removeprefix("magnitude")) for step in result.outputs["plan"]]
+    assert max(sizes) <= 2 and sum(sizes) == 5
+    assert result.outputs["goal_met"] is True

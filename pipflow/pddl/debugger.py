@@ -16,7 +16,7 @@ import re
 from dataclasses import dataclass, field
 from typing import Any
 
-from pipflow.pddl.writer import MAGNITUDES
+from pipflow.pddl.writer import magnitudes
 
 _SPAN = re.compile(r"line: (\d+), col (\d+) to line: (\d+), col (\d+)")
 _TOKEN = re.compile(r"[^\s()]+|[()]")
@@ -155,7 +155,6 @@ def explain_parse_error(exc: Exception, text: str, domain_text: str) -> str:
     """One actionable message for a PDDLReader failure on ``text``."""
     sigs, types = domain_signatures(domain_text)
     objects = declared_objects(text)
-    known = list(objects) + list(sigs)
 
     if type(exc).__name__ in ("ParseException", "ParseSyntaxException", "ParseFatalException"):
         line, col = getattr(exc, "lineno", 0), getattr(exc, "col", 0)
@@ -231,7 +230,8 @@ def world_mismatches(problem: Any, text: str, world: dict) -> list[str]:
     by_type: dict[str, list[str]] = {}
     for o in problem.all_objects:
         by_type.setdefault(str(o.type), []).append(o.name)
-    expect = {"shelf": list(shelves), "product": list(products), "magnitude": list(MAGNITUDES)}
+    amounts = magnitudes(world)
+    expect = {"shelf": list(shelves), "product": list(products), "magnitude": list(amounts)}
     for typ, names in expect.items():
         have = by_type.get(typ, [])
         for n in have:
@@ -251,7 +251,7 @@ def world_mismatches(problem: Any, text: str, world: dict) -> list[str]:
             want[("stock", s, p)] = world["stock"].get(s, {}).get(p, 0)
         want[("load", s)] = sum(world["stock"].get(s, {}).values())
         want[("capacity", s)] = world["shelves"][s]["capacity"]
-    for m, k in MAGNITUDES.items():
+    for m, k in amounts.items():
         want[("amount", m)] = k
     declared = {o.name for o in problem.all_objects}
     for key, value in want.items():

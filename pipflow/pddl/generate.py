@@ -22,7 +22,7 @@ def scale_instance(shelves: int = 50, products: int = 10, moved: int = 2000, cap
             stock[s][rng.choice(P)] += 1
     final = {s: dict(c) for s, c in stock.items()}
     load = {s: sum(final[s].values()) for s in S}
-    left, units_moved = moved, 0
+    left = moved
     while left > 0:
         s, t, p = rng.choice(S), rng.choice(S), rng.choice(P)
         k = min(left, rng.randint(1, 15), final[s][p], capacity - load[t])

@@ -41,7 +41,7 @@ one action ``move-product(?from ?to ?product ?magnitude)``, and a goal that is a
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any, Callable, Optional
 
 ENGINE_NAME = "pipflow-transport"
@@ -130,15 +130,15 @@ def instance_from_problem(problem: Any) -> Instance:
 
 
 def instance_from_world(world: dict, goal: dict[str, dict[str, int]]) -> Instance:
-    """The instance a world dict and a goal describe (magnitudes 1..6, as the writer writes)."""
-    from pipflow.pddl.writer import MAGNITUDES
+    """The instance a world dict and a goal describe (with the magnitudes the writer writes)."""
+    from pipflow.pddl.writer import magnitudes
 
     shelves, products = list(world["shelves"]), list(world["products"])
     stock = {(s, p): world["stock"].get(s, {}).get(p, 0) for s in shelves for p in products}
     return Instance(shelves, products, stock,
                     {s: world["shelves"][s]["capacity"] for s in shelves},
                     {s: sum(world["stock"].get(s, {}).values()) for s in shelves},
-                    dict(MAGNITUDES),
+                    magnitudes(world),
                     {(s, p): n for s, items in goal.items() for p, n in items.items()})
 
 

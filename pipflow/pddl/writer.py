@@ -6,25 +6,35 @@ undefined rather than 0), and the goal is one ``(= (stock s p) n)`` per listed c
 """
 from __future__ import annotations
 
-MAGNITUDES: dict[str, int] = {f"magnitude{k}": k for k in range(1, 7)}
-"""The paper's magnitude objects and the units each stands for (fluent ``amount``)."""
+LARGEST_MOVE = 6
+"""The paper's domain moves 1..6 units at a time (objects magnitude1..magnitude6)."""
+
+
+def magnitudes(world: dict) -> dict[str, int]:
+    """The magnitude objects of a world's problems and the units each stands for (``amount``):
+    1..6 as in the paper, but never more than the whole team can carry at once, so that the
+    team-level planner cannot plan a move no coalition of robots could make."""
+    team = sum(float(r.get("skills", {}).get("carry", 0)) for r in world.get("robots", {}).values())
+    largest = max(1, min(LARGEST_MOVE, int(team)))
+    return {f"magnitude{k}": k for k in range(1, largest + 1)}
 
 
 def write_problem(world: dict, goal: dict[str, dict[str, int]], name: str = "task",
                   domain: str = "warehouse") -> str:
     """PDDL problem text for moving the world's stock to ``goal`` (``{shelf: {product: n}}``)."""
     shelves, products = list(world["shelves"]), list(world["products"])
+    amounts = magnitudes(world)
     lines = [f"(define (problem {name})", f"  (:domain {domain})", "  (:objects"]
     lines.append(f"    {' '.join(shelves)} - shelf")
     lines.append(f"    {' '.join(products)} - product")
-    lines.append(f"    {' '.join(MAGNITUDES)} - magnitude)")
+    lines.append(f"    {' '.join(amounts)} - magnitude)")
     lines.append("  (:init")
     for s in shelves:
         stock = world["stock"].get(s, {})
         counts = " ".join(f"(= (stock {s} {p}) {stock.get(p, 0)})" for p in products)
         lines.append(f"    {counts}")
         lines.append(f"    (= (load {s}) {sum(stock.values())}) (= (capacity {s}) {world['shelves'][s]['capacity']})")
-    lines.append("    " + " ".join(f"(= (amount {m}) {k})" for m, k in MAGNITUDES.items()) + ")")
+    lines.append("    " + " ".join(f"(= (amount {m}) {k})" for m, k in amounts.items()) + ")")
     conds = [f"(= (stock {s} {p}) {n})" for s, items in goal.items() for p, n in items.items()]
     lines.append("  (:goal (and")
     lines += [f"    {c}" for c in conds]
