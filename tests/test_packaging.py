@@ -44,8 +44,26 @@ def test_install_puts_everything_under_the_pipflow_package(installed_copy):
     pkg = installed_copy / "pipflow"
     for needed in ("engine/cli.py", "steps/pddl.py", "schemas/workflow.schema.json", "schemas/world.schema.json",
                    "prompts/warehouse_problem.j2", "domains/warehouse.pddl", "domains/warehouse.actions.yaml",
-                   "workflows/warehouse.yaml", "benchmarks/warehouse/world.yaml", "benchmarks/warehouse/tasks.yaml"):
+                   "workflows/warehouse.yaml", "benchmarks/warehouse/world.yaml", "benchmarks/warehouse/tasks.yaml",
+                   "household/world.py", "workflows/household.yaml", "domains/household.pddl",
+                   "domains/household.actions.yaml", "schemas/household.schema.json",
+                   "prompts/household_problem.j2", "benchmarks/household/world.yaml"):
         assert (pkg / needed).is_file(), needed
+
+
+def test_install_misses_no_module_and_no_data_file(installed_copy):
+    """Every module of the library, engine and steps, and every data file, lands in the
+    installed package (the package list in pyproject.toml is explicit: this keeps it complete)."""
+    pkg = installed_copy / "pipflow"
+    expected = [(f, pkg / f.relative_to(REPO / "pipflow")) for f in (REPO / "pipflow").rglob("*.py")]
+    for folder in ("engine", "steps"):
+        expected += [(f, pkg / folder / f.relative_to(REPO / folder)) for f in (REPO / folder).rglob("*.py")]
+    for folder, pattern in (("workflows", "*.yaml"), ("prompts", "*.j2"), ("schemas", "*.json"),
+                            ("domains", "*.*"), ("benchmarks", "*/*.yaml")):
+        expected += [(f, pkg / folder / f.relative_to(REPO / folder)) for f in (REPO / folder).glob(pattern)]
+    missing = [str(src.relative_to(REPO)) for src, dst in expected
+               if "__pycache__" not in src.parts and not dst.is_file()]
+    assert not missing, f"not installed: {missing}"
 
 
 def test_installed_copy_runs_the_builtin_workflow_from_any_folder(installed_copy, tmp_path):
@@ -56,3 +74,6 @@ def test_installed_copy_runs_the_builtin_workflow_from_any_folder(installed_copy
     assert proc.returncode == 0, proc.stderr
     outputs = next((tmp_path / "runs").iterdir()) / "outputs.json"
     assert '"product1": 17' in outputs.read_text()
+    household = _run(installed_copy, tmp_path, "-m", "pipflow.engine.cli", "run", "household", "-q",
+                     "--runs-dir", str(tmp_path / "household-runs"))
+    assert household.returncode == 0, household.stderr
