@@ -239,3 +239,19 @@ def test_workflow_runs_offline_end_to_end(tmp_path):
                       schedule=out["schedule"], simulation=out["simulation"])
     assert score["success"] and score["gcr"] == 1.0 and 0 < score["ru"] <= 1
     json.dumps(score)
+
+
+def test_verifier_refuses_a_goal_no_plan_can_reach(world):
+    """A model may write "slice the mug" as a goal: the verifier names why it is impossible (a
+    refusal, which ends the loop), instead of the planner failing round after round."""
+    from pipflow.household.problem import write_problem
+    from pipflow.pddl.common import parse
+    from pipflow.pddl.verifier import verify_plan
+
+    sliceable = [n for n, o in world["objects"].items() if "sliceable" in o["properties"]]
+    solid = next(n for n, o in world["objects"].items() if "sliceable" not in o["properties"])
+    bad = parse(DOMAIN, write_problem(world, {"in": {}, "state": {solid: ["sliced"]}}))
+    report = verify_plan(bad, None, world)
+    assert report.refusal and f"{solid} cannot be sliced" in report.refusal
+    good = parse(DOMAIN, write_problem(world, {"in": {}, "state": {sliceable[0]: ["sliced"]}}))
+    assert verify_plan(good, None, world).refusal is None

@@ -59,7 +59,7 @@ def wait_ready(api_base: str, proc: subprocess.Popen | None = None, timeout: flo
     raise LLMError(f"the local model server at {api_base} did not answer within {timeout:.0f} s")
 
 
-def start_server(model_path: Path, port: int | None = None, n_ctx: int = 4096) -> tuple[subprocess.Popen, str]:
+def start_server(model_path: Path, port: int | None = None, n_ctx: int = 8192) -> tuple[subprocess.Popen, str]:
     """Start ``python -m llama_cpp.server`` on loopback; return the process and its API base."""
     if importlib.util.find_spec("llama_cpp") is None:
         raise LLMError("local models need llama-cpp-python: pip install 'pipflow[local]'")

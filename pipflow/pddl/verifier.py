@@ -98,7 +98,13 @@ def verify_plan(problem: Any, plan: list[dict] | None, world: dict | None = None
     goal, _ = stock_goals(problem)  # other goal forms are the validator's to check
     messages: list[str] = []
     refusal = None
-    if world is not None and world.get("domain") != "household":  # household goals: pipflow.household
+    if world is not None and world.get("domain") == "household":
+        from pipflow.household.problem import goal_from_problem, goal_refusal
+
+        refusal = goal_refusal(world, goal_from_problem(problem))
+        if refusal:
+            refusal = f"the command cannot be done in this world: {refusal}"
+    elif world is not None:
         messages, refusal = goal_problems(world, goal)
     if plan is None:
         messages.append("there is no plan to verify (the planner did not produce one)")
