@@ -156,13 +156,8 @@ def condition_allowed(world: dict, name: str, cond: str) -> bool:
 
 def goal_refusal(world: dict, goal: dict) -> str | None:
     """Why no plan can ever reach ``goal`` in this world (a state the thing cannot take, e.g.
-    slicing a mug, or an object put into something that holds nothing), or None."""
-    reasons = []
-    for name, conds in (goal.get("state") or {}).items():
-        for cond in conds:
-            if cond in CONDITIONS and not condition_allowed(world, name, cond):
-                reasons.append(f"{name} cannot be {cond}: it is not {CONDITIONS[cond][2]}")
-    for place, things in (goal.get("in") or {}).items():
-        if place in world["places"] and "receptacle" not in world["places"][place]["properties"]:
-            reasons.append(f"nothing can be put in {place} ({', '.join(things)}): it is not a receptacle")
+    slicing a mug), or None."""
+    reasons = [f"{name} cannot be {cond}: it is not {CONDITIONS[cond][2]}"
+               for name, conds in (goal.get("state") or {}).items() for cond in conds
+               if cond in CONDITIONS and not condition_allowed(world, name, cond)]
     return "; ".join(reasons) or None
