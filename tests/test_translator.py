@@ -523,3 +523,15 @@ def test_short_and_common_words_are_not_names() -> None:
         "A1": {"apple": 1}, "bay-12": {"SKU-7781": 1}}
     assert rules("put 5 product1 on shelf2 and 3 on shelf3, robot 4 must not help", HALL) == [
         {"never": ["robot4"], "product": "product1"}]
+
+
+@pytest.mark.parametrize("command, rule", [
+    ("There should be 7 product1 in shelf3, but keep robot 2 and robot 3 idle.", {"never": ["robot2", "robot3"]}),
+    ("Robot 4 is charging; shelf3 should hold 3 product2.", {"never": ["robot4"]}),
+    ("Exclude robots 0 and 1. shelf3 should hold 3 product2.", {"never": ["robot0", "robot1"]}),
+])
+def test_robots_put_out_of_use_by_their_state_are_never_used(command, rule):
+    from pipflow.world import load_world
+
+    world = load_world(Path(__file__).resolve().parents[1] / "benchmarks/warehouse/world.yaml")
+    assert translate(command, world)["constraints"] == [rule]

@@ -25,6 +25,8 @@ NEGATIONS = {
     "not", "never", "no", "dont", "doesnt", "cant", "cannot", "mustnt", "shouldnt", "wont",
     "isnt", "arent", "without", "avoid", "forbidden", "prohibited", "banned", "broken", "faulty",
     "unavailable", "offline", "disabled", "damaged", "down", "away", "nobody", "neither", "nor",
+    "idle", "unused", "excluded", "exclude", "skip", "busy", "charging", "malfunctioning",
+    "out-of-service", "leave", "spare",
 }
 EXCEPTIONS = {"except", "besides", "excluding"}
 ONLY = {"only", "just", "solely", "exclusively"}

@@ -74,7 +74,8 @@ INEQUALITY = [("no", "more", "than"), ("not", "more", "than"), ("no", "fewer", "
               ("a", "few"), ("few",), ("many",), ("lots", "of"), ("plenty", "of")]
 INEQUALITY_AFTER = [("or", "more"), ("or", "fewer"), ("or", "less"), ("or", "so"), ("plus",),
                     ("at", "least"), ("at", "most"), ("max",), ("min",), ("tops",)]
-STATE_RULE = {"broken", "faulty", "unavailable", "offline", "disabled", "damaged", "down",
+STATE_RULE = {"broken", "faulty", "unavailable", "offline", "disabled", "damaged", "down", "idle",
+              "unused", "busy", "charging", "malfunctioning", "out-of-service", "spare",
               "anything", "everything", "any", "all", "anywhere", "ever", "whatsoever"}
 
 
