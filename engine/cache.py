@@ -1,10 +1,11 @@
-"""Content-addressed step cache: the key is the step's name, its version, its resolved inputs
-and the content of every file they name, so a changed argument, an upgraded step or an edited
-world, domain or prompt file is a miss. On by default
+"""Content-addressed step cache: the key is the step's name and version, a hash of its code, its
+resolved inputs and the content of every file they name, so a changed argument, changed code or an
+edited world, domain or prompt file is a miss. On by default
 for steps that declare themselves cacheable (LLM calls); ``--no-cache`` turns it off.
 An entry holds the outputs and a copy of the artifacts, so a hit leaves the same run record."""
 from __future__ import annotations
 
+import functools
 import hashlib
 import json
 import os
@@ -45,11 +46,36 @@ def _file_digests(value: Any, out: dict[str, str]) -> None:
             _file_digests(v, out)
 
 
-def cache_key(step_name: str, version: str, inputs: dict[str, Any]) -> str:
-    """Step name, step version, resolved inputs, and the content of the files they name."""
+@functools.lru_cache(maxsize=None)
+def code_fingerprint(module: str) -> str:
+    """A hash of the source code a step runs, so that changed code is a miss even where nobody
+    bumped the step's version: a step's work lives in the library it calls, so this covers the
+    whole top-level package of the step's module (for pipflow: the library, engine and steps)."""
+    import importlib
+
+    top = module.split(".")[0]
+    roots: set[Path] = set()
+    for name in ([top, f"{top}.engine", f"{top}.steps"] if top == "pipflow" else [top]):
+        try:
+            mod = importlib.import_module(name)
+        except ImportError:
+            continue
+        roots |= {Path(p) for p in getattr(mod, "__path__", [])} or {Path(mod.__file__).parent}
+    digest = hashlib.sha256()
+    for root in sorted(roots):
+        for file in sorted(root.rglob("*.py")):
+            digest.update(str(file.relative_to(root)).encode())
+            digest.update(file.read_bytes())
+    return digest.hexdigest()
+
+
+def cache_key(step_name: str, version: str, inputs: dict[str, Any], module: str = "") -> str:
+    """Step name, step version, the step's code, resolved inputs, and the content of the files
+    the inputs name."""
     files: dict[str, str] = {}
     _file_digests(inputs, files)
-    canonical = json.dumps({"step": step_name, "version": version, "inputs": inputs, "files": files},
+    code = code_fingerprint(module) if module else ""
+    canonical = json.dumps({"step": step_name, "version": version, "code": code, "inputs": inputs, "files": files},
                            sort_keys=True, separators=(",", ":"), default=str)
     return hashlib.sha256(canonical.encode("utf-8")).hexdigest()
 

@@ -208,7 +208,7 @@ class Executor:
         self.store.event("start", spec.id, uses=spec.uses, **label)
         started = time.perf_counter()
         use_cache = self.cache is not None and (spec.cache if spec.cache is not None else step.cacheable)
-        key = cache_key(step.name, step.version, args) if use_cache else None
+        key = cache_key(step.name, step.version, args, step.module) if use_cache else None
         outputs = self.cache.get(key, artifact_dir) if key else None
         cached = outputs is not None
         if not cached:

@@ -42,7 +42,7 @@ class RunSpec:
 @dataclass
 class BenchConfig:
     tasks_file: Path
-    workflow: str = "warehouse"
+    workflow: str | None = None  # None: the task file's, else its domain's built-in workflow
     seeds: int = 1
     jobs: int = 1
     out: Path = Path("bench-out")
@@ -83,9 +83,8 @@ def run_one(spec: RunSpec) -> dict:
     """Run and score one (variant, task, seed) in this process; never raises."""
     from pipflow.engine.executor import RunOptions
     from pipflow.engine.runner import run_workflow
+    from pipflow.benchdomains import domain_named
     from pipflow.engine.store import read_json
-    from pipflow.scoring import score_run
-    from pipflow.world import load_world
 
     task = spec.task
     row: dict[str, Any] = {"variant": spec.variant, "task": task["id"], "seed": spec.seed}
@@ -107,16 +106,7 @@ def run_one(spec: RunSpec) -> dict:
         row["stage_seconds"] = metrics.get("step_seconds", {})
     except Exception as err:  # an invalid workflow or input: the run never started
         row["status"], error = "error", f"{type(err).__name__}: {err}"
-    if task.get("domain") == "household":  # final-state conditions: pipflow/household/scoring.py
-        from pipflow.household.scoring import score_bench_run
-
-        score = score_bench_run(spec.world_path, task, outputs, refusal, error)
-    else:
-        world = load_world(spec.world_path)
-        score = score_run(world, task.get("goal") or {}, constraints=task.get("constraints"),
-                          feasible=task.get("feasible", True), graph=outputs.get("graph"),
-                          schedule=outputs.get("schedule"), simulation=outputs.get("simulation"),
-                          refusal=refusal, error=error)
+    score = domain_named(task.get("domain")).score(spec.world_path, task, outputs, refusal, error)
     row.update(score)
     row["seconds"] = round(time.perf_counter() - started, 3)
     return row
@@ -175,10 +165,12 @@ def run_bench(config: BenchConfig, progress: bool = True, on_row=None) -> dict:
     ``config.resume`` the runs whose row file exists are not run again. ``on_row(row)`` is called
     after each row is stored (tests use it to interrupt or to kill a worker)."""
     from pipflow.executors import make_executor, run_key
-    from pipflow.household.scoring import load_bench_tasks as load_tasks  # household or pipflow.world's
-    from pipflow.scoring import aggregate_task, summarize
+    from pipflow.benchdomains import domain_of
 
-    tasks_doc = load_tasks(config.tasks_file)
+    domain = domain_of(config.tasks_file)
+    tasks_doc = domain.load_tasks(Path(config.tasks_file))
+    if config.workflow is None:
+        config.workflow = tasks_doc.get("workflow") or domain.workflow
     world_path = str(tasks_doc["world_path"] if "world_path" in tasks_doc else
                      (Path(config.tasks_file).parent / tasks_doc["world"]).resolve())
     out = Path(config.out)
@@ -197,7 +189,7 @@ def run_bench(config: BenchConfig, progress: bool = True, on_row=None) -> dict:
     fresh = _execute(executor, todo, done, out, progress, total=len(specs), on_row=on_row)
     wall = time.perf_counter() - started
     rows = [done[run_key(s)] for s in specs if run_key(s) in done]
-    results = _results(rows, tasks_doc["tasks"], config, wall, aggregate_task, summarize)
+    results = _results(rows, tasks_doc["tasks"], config, wall, domain.name)
     results["executed_runs"], results["resumed_runs"] = fresh, len(specs) - len(todo)
     _write(out, rows, results)
     return results
@@ -235,7 +227,9 @@ def _execute(executor, todo: list[RunSpec], done: dict, out: Path, progress: boo
     return fresh
 
 
-def _results(rows, tasks, config: BenchConfig, wall: float, aggregate_task, summarize) -> dict:
+def _results(rows: list[dict], tasks: list[dict], config: BenchConfig, wall: float, domain: str) -> dict:
+    from pipflow.scoring import aggregate_task, summarize
+
     by_variant: dict[str, list[dict]] = {}
     for row in rows:
         by_variant.setdefault(row["variant"], []).append(row)
@@ -250,7 +244,7 @@ def _results(rows, tasks, config: BenchConfig, wall: float, aggregate_task, summ
                                 "stage_seconds": {k: sum(v) / len(v) for k, v in stage.items()}})
     first = variant_results[0]
     return {"summary": first["summary"], "tasks": first["tasks"], "variants": variant_results,
-            "config": {"tasks": str(config.tasks_file), "workflow": config.workflow, "seeds": config.seeds,
+            "config": {"tasks": str(config.tasks_file), "domain": domain, "workflow": config.workflow, "seeds": config.seeds,
                        "jobs": config.jobs, "executor": config.executor, "matrix": config.matrix, "inputs": config.inputs},
             "wall_seconds": round(wall, 3),
             "created": _dt.datetime.now(_dt.timezone.utc).isoformat(timespec="seconds")}
@@ -263,12 +257,14 @@ def _fmt(value: Any, digits: int = 1) -> str:
 
 
 def markdown_table(results: dict) -> str:
-    """The paper's warehouse table shape: per task SR (%) and travel cost max/avg (m)."""
-    from pipflow.household.scoring import bench_table
+    """The paper's table for the task file's domain: for the warehouse, per task SR (%) and
+    travel cost max/avg (m); a domain may group it otherwise (household: per category)."""
+    from pipflow.benchdomains import domain_named
 
-    household = bench_table(results)  # per category (paper's AI2-THOR table) for household task files
-    if household is not None:
-        return household
+    config = results.get("config") or {}
+    domain = domain_named(config.get("domain"))
+    if domain.table is not None:
+        return domain.table(results, Path(config["tasks"]))
     lines = []
     for variant in results["variants"]:
         if len(results["variants"]) > 1:
@@ -309,7 +305,6 @@ def bench_main(args: argparse.Namespace) -> int:
     if not tasks_file.exists():
         raise UserError(f"{tasks_file}: no such task file")
     from pipflow.executors import parse_executor, parse_limits
-    from pipflow.household.scoring import default_workflow
 
     executor = getattr(args, "executor", None) or "local"
     parse_executor(executor)  # a typo fails before anything runs
@@ -318,7 +313,7 @@ def bench_main(args: argparse.Namespace) -> int:
         raise UserError("--resume needs --out DIR (the bench directory to complete)")
     limits = getattr(args, "llm_concurrency", None) or os.environ.get("PIPFLOW_LLM_CONCURRENCY") or "4"
     config = BenchConfig(
-        tasks_file=tasks_file, workflow=args.workflow or default_workflow(tasks_file), seeds=max(1, args.seeds),
+        tasks_file=tasks_file, workflow=args.workflow, seeds=max(1, args.seeds),
         jobs=_workers(args.jobs), out=Path(args.out or f"bench-out/{stamp}"),
         matrix=parse_matrix(args.matrix), inputs=_key_values(args.input or []), use_cache=not args.no_cache,
         executor=executor, resume=resume, llm_limits=parse_limits(limits))

@@ -45,3 +45,23 @@ def test_editing_a_file_named_by_a_cached_steps_input_is_a_cache_miss(engine_env
     edited, ends = _run(engine_env)
     assert ends[0]["cached"] is False
     assert edited["stock"]["shelf4"]["product1"] == 14 and first["stock"]["shelf4"]["product1"] == 15
+
+
+def test_changed_step_code_is_a_cache_miss(tmp_path, monkeypatch):
+    """A step whose code (or the code of its package) changed must not be served an old result,
+    even when nobody bumped its version."""
+    from pipflow.engine.cache import cache_key, code_fingerprint
+
+    pkg = tmp_path / "fingerprint_demo"
+    pkg.mkdir()
+    (pkg / "__init__.py").write_text("")
+    (pkg / "work.py").write_text("def f():\n    return 1\n")
+    monkeypatch.syspath_prepend(str(tmp_path))
+    code_fingerprint.cache_clear()
+    before = cache_key("demo.step", "1", {"x": 1}, "fingerprint_demo.steps")
+    (pkg / "work.py").write_text("def f():\n    return 2\n")  # the library the step calls changed
+    code_fingerprint.cache_clear()
+    after = cache_key("demo.step", "1", {"x": 1}, "fingerprint_demo.steps")
+    assert before != after
+    code_fingerprint.cache_clear()
+    assert cache_key("demo.step", "1", {"x": 1}, "fingerprint_demo.steps") == after

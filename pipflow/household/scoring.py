@@ -12,8 +12,8 @@ no subtask was refused, and no robot's legs jump. Metrics as in the paper's AI2-
   entered, a carry to a sink or heater for a wash or heat of an object that is elsewhere);
 * TC-max / TC-avg: the most and the mean metres a team robot travels, over successful runs.
 
-Bench hooks (``pipflow bench`` dispatches on the task file's ``domain: household``):
-:func:`load_bench_tasks`, :func:`score_bench_run`, :func:`bench_table`.
+What ``pipflow bench`` uses for task files with ``domain: household`` (see
+:mod:`pipflow.benchdomains`): :func:`load_tasks`, :func:`score_bench_run`, :func:`bench_table`.
 """
 from __future__ import annotations
 
@@ -126,17 +126,6 @@ def score_run(world: dict, goal: dict, *, graph: dict | None = None, schedule: d
 # ------------------------------------------------------------------------------------------
 # task files and bench hooks
 # ------------------------------------------------------------------------------------------
-def is_household_tasks(path: str | Path) -> bool:
-    """Whether a task file declares ``domain: household`` (cheap: no validation)."""
-    import yaml
-
-    try:
-        data = yaml.safe_load(Path(path).read_text())
-    except (OSError, yaml.YAMLError):
-        return False
-    return isinstance(data, dict) and data.get("domain") == "household"
-
-
 def load_tasks(path: str | Path) -> dict:
     """Load a household task file and its world; :class:`WorldError` lists every problem located.
 
@@ -213,24 +202,6 @@ def load_tasks(path: str | Path) -> dict:
             "workflow": data.get("workflow", "household"), "tasks": tasks}
 
 
-def default_workflow(path: str | Path) -> str:
-    """The workflow a task file runs with unless ``--workflow`` says otherwise."""
-    if is_household_tasks(path):
-        import yaml
-
-        return str(yaml.safe_load(Path(path).read_text()).get("workflow") or "household")
-    return "warehouse"
-
-
-def load_bench_tasks(path: str | Path) -> dict:
-    """The bench's task loader: household task files here, every other through pipflow.world."""
-    if is_household_tasks(path):
-        return load_tasks(path)
-    from pipflow.world import load_tasks as load_warehouse_tasks
-
-    return load_warehouse_tasks(path)
-
-
 def score_bench_run(world_path: str, task: dict, outputs: dict, refusal: str | None, error: str | None) -> dict:
     """Score one bench run of a household task (the team's world, the task's ground truth)."""
     from pipflow.household.world import load_world, select_team
@@ -244,12 +215,9 @@ def _fmt(v: Any) -> str:
     return "--" if v is None else f"{v:.1f}"
 
 
-def bench_table(results: dict) -> str | None:
+def bench_table(results: dict, tasks_file: str | Path) -> str:
     """The paper-shaped table (per category SR, TC-max/TC-avg, GCR, RU, Exe) for household
-    results; None for any other task file, so the caller keeps its own table."""
-    tasks_file = (results.get("config") or {}).get("tasks")
-    if not tasks_file or not is_household_tasks(tasks_file):
-        return None
+    bench results."""
     category = {t["id"]: t["category"] for t in load_tasks(tasks_file)["tasks"]}
     lines = []
     for variant in results["variants"]:
