@@ -103,6 +103,36 @@ def _is_point(p: Any) -> bool:
 # ---------------------------------------------------------------------------------------------
 # meaning pass
 # ---------------------------------------------------------------------------------------------
+def layout_diagnostics(geo: dict, floor: dict | None, locate: Locate, section: str, kind: str) -> list[Diagnostic]:
+    """Footprints on the floor, access points on the floor and outside every footprint, no two
+    footprints overlapping: the geometry checks of every world file (shelves, household places)."""
+    out: list[Diagnostic] = []
+    for name, item in geo.items():
+        x0, y0, x1, y1 = footprint(item)
+        if floor and not (x0 >= 0 and y0 >= 0 and x1 <= floor["width"] and y1 <= floor["height"]):
+            out.append(Diagnostic(locate((section, name), key=True),
+                                  f"{kind} {name!r} footprint ({x0}, {y0})-({x1}, {y1}) is not on the "
+                                  f"floor (0, 0)-({floor['width']}, {floor['height']})"))
+        access = item.get("access")
+        if _is_point(access):
+            if floor and not on_floor(access, floor):
+                out.append(Diagnostic(locate((section, name, "access")),
+                                      f"access point {access} of {kind} {name!r} is off the floor"))
+            for other, o in geo.items():
+                if inside_footprint(access, o):
+                    out.append(Diagnostic(locate((section, name, "access")),
+                                          f"access point {access} of {kind} {name!r} lies inside the "
+                                          f"footprint of {kind} {other!r}; robots must be able to stand there"))
+    names = list(geo)
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            ax0, ay0, ax1, ay1 = footprint(geo[a])
+            bx0, by0, bx1, by1 = footprint(geo[b])
+            if ax0 < bx1 and bx0 < ax1 and ay0 < by1 and by0 < ay1:
+                out.append(Diagnostic(locate((section, b), key=True), f"{kind} {b!r} overlaps {kind} {a!r}"))
+    return out
+
+
 def semantic_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
     """Checks the schema cannot express. Runs on partially valid data: every check guards the
     types it needs, so one bad field does not hide the problems of the others."""
@@ -116,30 +146,7 @@ def semantic_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
     geo = {k: v for k, v in shelves.items()
            if all(isinstance(v.get(f), (int, float)) for f in ("x", "y", "width", "depth"))}
 
-    for name, shelf in geo.items():
-        x0, y0, x1, y1 = footprint(shelf)
-        if floor and not (x0 >= 0 and y0 >= 0 and x1 <= floor["width"] and y1 <= floor["height"]):
-            out.append(Diagnostic(locate(("shelves", name), key=True),
-                                  f"shelf {name!r} footprint ({x0}, {y0})-({x1}, {y1}) is not on the "
-                                  f"floor (0, 0)-({floor['width']}, {floor['height']})"))
-        access = shelf.get("access")
-        if _is_point(access):
-            if floor and not on_floor(access, floor):
-                out.append(Diagnostic(locate(("shelves", name, "access")),
-                                      f"access point {access} of shelf {name!r} is off the floor"))
-            for other, o in geo.items():
-                if inside_footprint(access, o):
-                    out.append(Diagnostic(locate(("shelves", name, "access")),
-                                          f"access point {access} of shelf {name!r} lies inside the "
-                                          f"footprint of shelf {other!r}; robots must be able to stand there"))
-    names = list(geo)
-    for i, a in enumerate(names):
-        for b in names[i + 1:]:
-            ax0, ay0, ax1, ay1 = footprint(geo[a])
-            bx0, by0, bx1, by1 = footprint(geo[b])
-            if ax0 < bx1 and bx0 < ax1 and ay0 < by1 and by0 < ay1:
-                out.append(Diagnostic(locate(("shelves", b), key=True),
-                                      f"shelf {b!r} overlaps shelf {a!r}"))
+    out += layout_diagnostics(geo, floor, locate, "shelves", "shelf")
 
     stock = data.get("stock") if isinstance(data.get("stock"), dict) else {}
     for sname, items in stock.items():

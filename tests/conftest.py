@@ -70,3 +70,19 @@ def engine_env(tmp_path, monkeypatch) -> Path:
     monkeypatch.chdir(tmp_path)
     monkeypatch.setenv("PIPFLOW_CACHE_DIR", str(tmp_path / "cache"))
     return tmp_path
+
+
+@pytest.fixture
+def no_hang():
+    """A test that could wait on other processes (a cluster, a pool) fails after 240 s instead
+    of hanging the suite (SIGALRM)."""
+    import signal
+
+    def boom(signum, frame):
+        raise TimeoutError("test took longer than 240 s")
+
+    old = signal.signal(signal.SIGALRM, boom)
+    signal.alarm(240)
+    yield
+    signal.alarm(0)
+    signal.signal(signal.SIGALRM, old)

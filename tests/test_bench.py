@@ -9,7 +9,6 @@ from __future__ import annotations
 import csv
 import json
 import os
-import signal
 import subprocess
 import sys
 from pathlib import Path
@@ -28,16 +27,7 @@ SUMMARY_KEYS = {"runs", "sr", "gcr", "exe", "ru", "tc_max", "tc_avg"}
 TASK_KEYS = {"id", "runs", "sr", "gcr", "exe", "ru", "tc_max", "tc_avg", "error"}
 
 
-@pytest.fixture(autouse=True)
-def _no_hang():
-    """No test here may hang: SIGALRM fails it after 240 s."""
-    def boom(signum, frame):
-        raise TimeoutError("test took longer than 240 s")
-    old = signal.signal(signal.SIGALRM, boom)
-    signal.alarm(240)
-    yield
-    signal.alarm(0)
-    signal.signal(signal.SIGALRM, old)
+pytestmark = pytest.mark.usefixtures("no_hang")
 
 
 def config(out: Path, **kw) -> BenchConfig:

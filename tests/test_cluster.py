@@ -9,7 +9,6 @@ from __future__ import annotations
 import json
 import os
 import shutil
-import signal
 import time
 from pathlib import Path
 
@@ -26,15 +25,7 @@ METRICS = ("sr", "gcr", "exe", "ru", "tc_max", "tc_avg")
 TIMEOUT = 60
 
 
-@pytest.fixture(autouse=True)
-def _no_hang():
-    def boom(signum, frame):
-        raise TimeoutError("test took longer than 240 s")
-    old = signal.signal(signal.SIGALRM, boom)
-    signal.alarm(240)
-    yield
-    signal.alarm(0)
-    signal.signal(signal.SIGALRM, old)
+pytestmark = pytest.mark.usefixtures("no_hang")
 
 
 @pytest.fixture(scope="module")

@@ -56,7 +56,7 @@ def test_world_errors_are_located(tmp_path):
     with pytest.raises(WorldError) as exc:
         load_world(bad)
     text = str(exc.value)
-    for line, needle in [(3, "not a receptacle"), (5, "inside the footprint of 'bed'"),
+    for line, needle in [(3, "not a receptacle"), (5, "inside the footprint of place 'bed'"),
                          (6, "not on the floor"), (6, "property 'openable'"), (8, "unknown place 'sofa'"),
                          (8, "unknown category 'fruitt'"), (9, "word of the household domain"),
                          (9, "unknown key 'colour'"), (11, "starts at [3.5, 3.5], inside")]:

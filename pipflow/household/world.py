@@ -24,7 +24,7 @@ from pathlib import Path
 from typing import Any
 
 from pipflow.errors import Diagnostic, InputError, Location, WorldError
-from pipflow.world import (Locate, _did_you_mean, _is_point, _read, checked_yaml, footprint, inside_footprint,
+from pipflow.world import (Locate, _did_you_mean, _is_point, _read, checked_yaml, inside_footprint, layout_diagnostics,
                            on_floor)
 
 DOMAIN = "household"
@@ -63,28 +63,7 @@ def semantic_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
         if n in places:
             out.append(Diagnostic(locate(("objects", n), key=True), f"object {n!r} has the name of a place"))
 
-    for name, p in geo.items():
-        x0, y0, x1, y1 = footprint(p)
-        if floor and not (x0 >= 0 and y0 >= 0 and x1 <= floor["width"] and y1 <= floor["height"]):
-            out.append(Diagnostic(locate(("places", name), key=True),
-                                  f"place {name!r} footprint ({x0}, {y0})-({x1}, {y1}) is not on the floor "
-                                  f"(0, 0)-({floor['width']}, {floor['height']})"))
-        access = p.get("access")
-        if _is_point(access):
-            if floor and not on_floor(access, floor):
-                out.append(Diagnostic(locate(("places", name, "access")), f"access point {access} of {name!r} is off the floor"))
-            for other, o in geo.items():
-                if inside_footprint(access, o):
-                    out.append(Diagnostic(locate(("places", name, "access")),
-                                          f"access point {access} of {name!r} lies inside the footprint of {other!r}; "
-                                          "robots must be able to stand there"))
-    names = list(geo)
-    for i, a in enumerate(names):
-        for b in names[i + 1:]:
-            ax0, ay0, ax1, ay1 = footprint(geo[a])
-            bx0, by0, bx1, by1 = footprint(geo[b])
-            if ax0 < bx1 and bx0 < ax1 and ay0 < by1 and by0 < ay1:
-                out.append(Diagnostic(locate(("places", b), key=True), f"place {b!r} overlaps place {a!r}"))
+    out += layout_diagnostics(geo, floor, locate, "places", "place")
 
     for kind, table in (("places", places), ("objects", objects)):
         for name, ent in table.items():
