@@ -181,6 +181,5 @@ def draw_gantt(schedule: dict, path) -> None:
     ax.set_xlabel("time [s]")
     ax.set_title(f"schedule: makespan {schedule['makespan']:.1f} s, TC-max {schedule['tc_max']:.1f} m, "
                  f"TC-avg {schedule['tc_avg']:.1f} m", fontsize=9)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    fig.savefig(path, dpi=110, bbox_inches="tight")  # tight_layout warns when many robots crowd the axis
     plt.close(fig)
