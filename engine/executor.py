@@ -36,12 +36,6 @@ class RunOptions:
 
 
 @dataclass
-class StepFailure:
-    step: str
-    error: BaseException
-
-
-@dataclass
 class ExecutionState:
     """Outputs known so far, by step id (a loop's own outputs under the loop's id)."""
 

@@ -23,9 +23,8 @@ fewest moves possible, and below 1 by how many moves it wastes.
 """
 from __future__ import annotations
 
-import math
 from collections import Counter
-from typing import Any, Iterable
+from typing import Iterable
 
 
 
