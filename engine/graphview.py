@@ -27,10 +27,12 @@ def render_graph(wf: Workflow, fmt: str, output: Path | None) -> str | None:
     graph = dependency_graph(wf)
     labels = _labels(wf)
     if fmt == "text":
+        loop_of = {s.id: n.id for n in wf.nodes if isinstance(n, LoopSpec) for s in n.steps}
         lines = []
         for node in nx.topological_sort(graph):
             preds = sorted(graph.predecessors(node))
-            lines.append(f"{labels.get(node, node)}" + (f"  <- {', '.join(preds)}" if preds else ""))
+            indent = "    " if node in loop_of else ""
+            lines.append(f"{indent}{labels.get(node, node)}" + (f"  <- {', '.join(preds)}" if preds else ""))
         return "\n".join(lines)
     if fmt == "dot":
         lines = [f'digraph "{wf.name}" {{', "  rankdir=LR;", "  node [shape=box, fontname=Helvetica];"]
