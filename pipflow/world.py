@@ -133,6 +133,22 @@ def layout_diagnostics(geo: dict, floor: dict | None, locate: Locate, section: s
     return out
 
 
+def case_clash_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
+    """PDDL reads names in lower case, so two names that differ only in case would be one
+    object in every problem: name them apart."""
+    out: list[Diagnostic] = []
+    seen: dict[str, tuple[str, str]] = {}
+    for section in ("shelves", "products", "robots"):
+        for name in data.get(section) or {} if isinstance(data.get(section), dict) else {}:
+            key = str(name).lower()
+            if key in seen and seen[key] != (section, name):
+                out.append(Diagnostic(locate((section, name), key=True),
+                                      f"{name!r} differs from {seen[key][1]!r} ({seen[key][0]}) only in case; "
+                                      "PDDL does not tell them apart: rename one"))
+            seen.setdefault(key, (section, name))
+    return out
+
+
 def semantic_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
     """Checks the schema cannot express. Runs on partially valid data: every check guards the
     types it needs, so one bad field does not hide the problems of the others."""
@@ -145,6 +161,7 @@ def semantic_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
     products = data.get("products") if isinstance(data.get("products"), dict) else {}
     geo = {k: v for k, v in shelves.items()
            if all(isinstance(v.get(f), (int, float)) for f in ("x", "y", "width", "depth"))}
+    out += case_clash_diagnostics(data, locate)
 
     out += layout_diagnostics(geo, floor, locate, "shelves", "shelf")
 

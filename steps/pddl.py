@@ -45,11 +45,17 @@ def debug(ctx: StepContext, problem: str | None, domain: str, world: dict | None
               "params": Input("object", default=None, doc="engine parameters, e.g. {params: '-h hmax -s WAStar'} for ENHSP"),
               "timeout": Input("number", default=60, doc="seconds"),
               "fallback": Input("string", default="enhsp",
-                                doc="engine to try when the first cannot handle the problem (unsupported, gave up); empty = none")},
+                                doc="engine to try when the first cannot handle the problem (unsupported, gave up); empty = none"),
+              "world": Input("object", default=None,
+                             doc="world dict: the plan's names are then spelled as the world spells them (PDDL reads them in lower case)"),
+              "constraints": Input("array", default=None,
+                                   doc="only/never robot rules: with the world, pipflow-transport keeps each move within what its allowed robots carry")},
       outputs={"status": "string", "plan": "array", "message": "string", "time": "number"})
 def solve(ctx: StepContext, problem: str | None, domain: str, engine: str = DEFAULT_ENGINE,
-          params: dict | None = None, timeout: float = 60, fallback: str = "enhsp") -> dict:
+          params: dict | None = None, timeout: float = 60, fallback: str = "enhsp", world: dict | None = None,
+          constraints: list | None = None) -> dict:
     from pipflow.pddl.common import format_plan
+    from pipflow.pddl.names import plan_in_world_names
     from pipflow.pddl.solver import solve_problem
 
     if not problem:
@@ -60,6 +66,9 @@ def solve(ctx: StepContext, problem: str | None, domain: str, engine: str = DEFA
     except Exception as exc:
         return {"status": "error", "plan": None, "message": f"the problem does not parse ({exc}); run pddl.debug first",
                 "time": 0.0}
+    if engine == DEFAULT_ENGINE and world and world.get("robots"):
+        robots = {name: r.get("skills", {}).get("carry", 0) for name, r in world["robots"].items()}
+        params = {"robots": robots, "rules": constraints or [], **(params or {})}
     result = solve_problem(parsed, engine, params, timeout)
     message = result.message
     if result.status == "error" and fallback and fallback != engine:
@@ -70,9 +79,10 @@ def solve(ctx: StepContext, problem: str | None, domain: str, engine: str = DEFA
     ctx.log(f"solve: {message}")
     ctx.metrics.update({"solve_time": result.time, "engine": result.engine,
                         "plan_length": len(result.plan) if result.plan else None})
-    if result.plan is not None:
-        ctx.write_artifact("plan.txt", format_plan(result.plan))
-    return {"status": result.status, "plan": result.plan, "message": message, "time": result.time}
+    plan = plan_in_world_names(result.plan, world)
+    if plan is not None:
+        ctx.write_artifact("plan.txt", format_plan(plan))
+    return {"status": result.status, "plan": plan, "message": message, "time": result.time}
 
 
 @step("pddl.verify",

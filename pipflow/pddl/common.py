@@ -53,6 +53,8 @@ def data_to_plan(problem: Any, plan: list[dict]) -> Any:
     first step that uses an unknown action or object, or the wrong number of arguments."""
     from unified_planning.plans import ActionInstance, SequentialPlan
 
+    from pipflow.pddl.names import pddl_name
+
     actions = []
     for i, item in enumerate(plan, 1):
         name, args = item.get("action"), list(item.get("args") or [])
@@ -63,9 +65,10 @@ def data_to_plan(problem: Any, plan: list[dict]) -> Any:
             raise ValueError(f"plan step {i}: {name} takes {len(action.parameters)} arguments, got {len(args)}")
         objs = []
         for a in args:
-            if not problem.has_object(a):
+            a_pddl = a if problem.has_object(a) else pddl_name(a)  # plans keep the world's spelling
+            if not problem.has_object(a_pddl):
                 raise ValueError(f"plan step {i}: unknown object {a!r}")
-            objs.append(problem.object(a))
+            objs.append(problem.object(a_pddl))
         actions.append(ActionInstance(action, objs))
     return SequentialPlan(actions)
 

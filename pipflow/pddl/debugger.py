@@ -16,6 +16,7 @@ import re
 from dataclasses import dataclass, field
 from typing import Any
 
+from pipflow.pddl.names import pddl_name
 from pipflow.pddl.writer import magnitudes
 
 _SPAN = re.compile(r"line: (\d+), col (\d+) to line: (\d+), col (\d+)")
@@ -231,7 +232,9 @@ def world_mismatches(problem: Any, text: str, world: dict) -> list[str]:
     for o in problem.all_objects:
         by_type.setdefault(str(o.type), []).append(o.name)
     amounts = magnitudes(world)
-    expect = {"shelf": list(shelves), "product": list(products), "magnitude": list(amounts)}
+    # UP reads names in lower case: compare the world's names as UP spells them
+    expect = {"shelf": [pddl_name(s) for s in shelves], "product": [pddl_name(p) for p in products],
+              "magnitude": list(amounts)}
     for typ, names in expect.items():
         have = by_type.get(typ, [])
         for n in have:
@@ -248,9 +251,9 @@ def world_mismatches(problem: Any, text: str, world: dict) -> list[str]:
     want: dict[tuple, int] = {}
     for s in shelves:
         for p in products:
-            want[("stock", s, p)] = world["stock"].get(s, {}).get(p, 0)
-        want[("load", s)] = sum(world["stock"].get(s, {}).values())
-        want[("capacity", s)] = world["shelves"][s]["capacity"]
+            want[("stock", pddl_name(s), pddl_name(p))] = world["stock"].get(s, {}).get(p, 0)
+        want[("load", pddl_name(s))] = sum(world["stock"].get(s, {}).values())
+        want[("capacity", pddl_name(s))] = world["shelves"][s]["capacity"]
     for m, k in amounts.items():
         want[("amount", m)] = k
     declared = {o.name for o in problem.all_objects}

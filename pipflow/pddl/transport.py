@@ -40,6 +40,7 @@ one action ``move-product(?from ?to ?product ?magnitude)``, and a goal that is a
 """
 from __future__ import annotations
 
+import functools
 import time
 from dataclasses import dataclass
 from typing import Any, Callable, Optional
@@ -206,8 +207,11 @@ def plan_targets(inst: Instance) -> tuple[dict[tuple[str, str], int], dict[tuple
 # ---------------------------------------------------------------------------------------------
 # step 2: flows per product
 # ---------------------------------------------------------------------------------------------
-def product_flows(inst: Instance, p: str, target: dict, evacuate: dict, room: dict[str, int]) -> dict[tuple[str, str], int]:
-    """Units of ``p`` to move ``{(from, to): units}``; updates ``room`` (final free room)."""
+def product_flows(inst: Instance, p: str, target: dict, evacuate: dict, room: dict[str, int],
+                  limit: "MoveLimit | None" = None) -> dict[tuple[str, str], int]:
+    """Units of ``p`` to move ``{(from, to): units}``; updates ``room`` (final free room). Routes
+    on which no move fits within ``limit`` are left out."""
+    smallest = min(inst.magnitudes.values())
     import networkx as nx
 
     supply: dict[str, int] = {}
@@ -247,7 +251,7 @@ def product_flows(inst: Instance, p: str, target: dict, evacuate: dict, room: di
     sinks = list(demand) + free_dst
     for s in sources:
         for t in sinks:
-            if s != t:
+            if s != t and (limit is None or limit(s, t, p) >= smallest):
                 g.add_edge(("out", s), ("in", t), weight=0)
     try:
         flow = nx.min_cost_flow(g)
@@ -263,6 +267,43 @@ def product_flows(inst: Instance, p: str, target: dict, evacuate: dict, room: di
                 if v[1] in free_dst:
                     room[v[1]] -= x
     return out
+
+
+# ---------------------------------------------------------------------------------------------
+# how much one move may carry
+# ---------------------------------------------------------------------------------------------
+MoveLimit = Callable[[str, str, str], float]
+
+
+def no_limit(src: str, dst: str, product: str) -> float:
+    return float("inf")
+
+
+def coalition_limit(robots: dict[str, float], rules: list[dict] | None) -> MoveLimit:
+    """The most units one move (src, dst, product) can carry: the total ``carry`` of the robots
+    that the ``only``/``never`` rules allow on it. Planning within it means the robot level always
+    finds a coalition (e.g. "only robot1 may move to shelf1", robot1 carrying one unit, gets
+    one-unit moves to shelf1 and full-size moves elsewhere). Names compare as PDDL does, ignoring case."""
+    team = {str(r).lower(): float(c) for r, c in robots.items()}
+    rules = [{k: ([str(x).lower() for x in v] if k in ("only", "never") else str(v).lower()) for k, v in r.items()}
+             for r in rules or []]
+
+    @functools.lru_cache(maxsize=None)
+    def limit(src: str, dst: str, product: str) -> float:
+        move = {"from": src.lower(), "to": dst.lower(), "product": product.lower()}
+        allowed = set(team)
+        for rule in rules:
+            if all(rule[k] == move[k] for k in move if k in rule):
+                allowed -= set(rule.get("never", ()))
+                if "only" in rule:
+                    allowed &= set(rule["only"])
+        return sum(team[r] for r in allowed)
+
+    return limit
+
+
+def sizes_within(sizes: list[int], cap: float) -> list[int]:
+    return [z for z in sizes if z <= cap]
 
 
 # ---------------------------------------------------------------------------------------------
@@ -293,10 +334,10 @@ class Move:
     units: int
 
 
-def flows_to_moves(flows: dict[tuple[str, str, str], int], sizes: list[int]) -> list[Move]:
+def flows_to_moves(flows: dict[tuple[str, str, str], int], sizes: list[int], limit: MoveLimit = no_limit) -> list[Move]:
     moves = []
     for (s, t, p), x in flows.items():
-        for u in split_amount(x, sizes):
+        for u in split_amount(x, sizes_within(sizes, limit(s, t, p))):
             moves.append(Move(s, t, p, u))
     return moves
 
@@ -304,7 +345,7 @@ def flows_to_moves(flows: dict[tuple[str, str, str], int], sizes: list[int]) -> 
 # ---------------------------------------------------------------------------------------------
 # step 4: order under capacity
 # ---------------------------------------------------------------------------------------------
-def order_moves(inst: Instance, moves: list[Move], sizes: list[int]) -> list[Move]:
+def order_moves(inst: Instance, moves: list[Move], sizes: list[int], limit: MoveLimit = no_limit) -> list[Move]:
     """A sequence of the moves (split or parked where capacity forces it) that keeps every shelf
     within capacity and every count non-negative."""
     stock = dict(inst.stock)
@@ -341,18 +382,21 @@ def order_moves(inst: Instance, moves: list[Move], sizes: list[int]) -> list[Mov
         fit = [m for m in blocked if 0 < room(m.dst) and any(z <= room(m.dst) for z in sizes)]
         if fit:
             m = fit[0]
-            part = max(z for z in sizes if z <= min(room(m.dst), m.units))
+            part = max(z for z in sizes_within(sizes, limit(m.src, m.dst, m.product)) if z <= min(room(m.dst), m.units))
             pending.remove(m)
             run(Move(m.src, m.dst, m.product, part))
             if m.units - part:
                 pending.append(Move(m.src, m.dst, m.product, m.units - part))
             continue
         m = blocked[0]
-        parks = sorted((s for s in inst.shelves if s not in (m.src, m.dst) and room(s) > 0), key=room, reverse=True)
+        parks = sorted((s for s in inst.shelves if s not in (m.src, m.dst) and room(s) > 0
+                        and min(limit(m.src, s, m.product), limit(s, m.dst, m.product)) >= min(sizes)),
+                       key=room, reverse=True)
         if not parks:
             raise Stuck("every shelf is full: no room to park units while full shelves swap")
         park = parks[0]
-        part = max(z for z in sizes if z <= min(room(park), m.units))
+        cap = min(limit(m.src, park, m.product), limit(park, m.dst, m.product))
+        part = max(z for z in sizes_within(sizes, cap) if z <= min(room(park), m.units))
         pending.remove(m)
         run(Move(m.src, park, m.product, part))
         pending.append(Move(park, m.dst, m.product, part))
@@ -364,8 +408,8 @@ def order_moves(inst: Instance, moves: list[Move], sizes: list[int]) -> list[Mov
 # ---------------------------------------------------------------------------------------------
 # the whole planner
 # ---------------------------------------------------------------------------------------------
-def plan_instance(inst: Instance) -> list[Move]:
-    """Moves (in executable order) that take ``inst`` to its goal.
+def plan_instance(inst: Instance, limit: MoveLimit = no_limit) -> list[Move]:
+    """Moves (in executable order) that take ``inst`` to its goal, none larger than ``limit``.
 
     Raises :class:`Unsolvable` (proven) or :class:`Stuck` (heuristic gave up)."""
     check_final_state(inst)
@@ -376,10 +420,10 @@ def plan_instance(inst: Instance) -> list[Move]:
     flows: dict[tuple[str, str, str], int] = {}
     # products whose surplus must find room go first while room is plentiful; others after
     for p in inst.products:
-        for (s, t), x in product_flows(inst, p, target, evacuate, room).items():
+        for (s, t), x in product_flows(inst, p, target, evacuate, room, limit).items():
             flows[s, t, p] = x
     sizes = sorted(set(inst.magnitudes.values()))
-    return order_moves(inst, flows_to_moves(flows, sizes), sizes)
+    return order_moves(inst, flows_to_moves(flows, sizes, limit), sizes, limit)
 
 
 def moves_to_plan(inst: Instance, moves: list[Move]) -> list[dict]:
@@ -403,13 +447,16 @@ except ImportError:  # pragma: no cover - UP is a hard dependency
 
 
 class TransportPlanner(Engine, OneshotPlannerMixin):
-    """UP OneshotPlanner ``pipflow-transport`` (see the module docstring). Parameter:
-    ``validate`` (default True): check each plan with UP's sequential plan validator."""
+    """UP OneshotPlanner ``pipflow-transport`` (see the module docstring). Parameters:
+    ``validate`` (default True): check each plan with UP's sequential plan validator;
+    ``robots`` ({name: carry}) and ``rules`` (only/never rules): keep every move within what the
+    robots allowed on it can carry (:func:`coalition_limit`)."""
 
-    def __init__(self, validate: bool = True, **kwargs: Any):
+    def __init__(self, validate: bool = True, robots: dict | None = None, rules: list | None = None, **kwargs: Any):
         Engine.__init__(self)
         OneshotPlannerMixin.__init__(self)
         self.validate = validate
+        self.limit = coalition_limit(robots, rules) if robots else no_limit
 
     @property
     def name(self) -> str:
@@ -458,7 +505,7 @@ class TransportPlanner(Engine, OneshotPlannerMixin):
         except NotTransport as exc:
             return self._result(S.UNSUPPORTED_PROBLEM, message=f"not a transport problem: {exc}")
         try:
-            moves = plan_instance(inst)
+            moves = plan_instance(inst, self.limit)
         except Unsolvable as exc:
             return self._result(S.UNSOLVABLE_PROVEN, message=str(exc))
         except Stuck as exc:

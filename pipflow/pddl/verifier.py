@@ -91,11 +91,12 @@ def _explain_inapplicable(problem: Any, plan: Any, index: int, ups_message: str)
 def verify_plan(problem: Any, plan: list[dict] | None, world: dict | None = None) -> VerifyReport:
     """Validate ``plan`` on UP ``problem`` and check the problem's goal against ``world``."""
     from pipflow.pddl.common import data_to_plan, environment, format_plan, stock_goals
+    from pipflow.pddl.names import goal_in_world_names
     from unified_planning.engines import ValidationResultStatus
     from unified_planning.shortcuts import PlanValidator
 
     environment()
-    goal, _ = stock_goals(problem)  # other goal forms are the validator's to check
+    goal = goal_in_world_names(stock_goals(problem)[0], world)  # other goal forms: the validator's
     messages: list[str] = []
     refusal = None
     if world is not None and world.get("domain") == "household":
