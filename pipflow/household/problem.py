@@ -130,13 +130,10 @@ def world_mismatches(problem: Any, text: str, world: dict) -> list[str]:
 def goal_from_problem(problem: Any) -> dict:
     """Concrete goal conditions read back from a parsed problem's goal (for judging LLM output)."""
     inv = {(pred, pos): word for word, (pred, pos, _) in CONDITIONS.items()}
+    from pipflow.pddl.common import goal_conditions
+
     goal: dict = {"in": {}, "state": {}}
-    stack = list(problem.goals)
-    while stack:
-        g = stack.pop(0)
-        if g.is_and():
-            stack[:0] = list(g.args)
-            continue
+    for g in goal_conditions(problem):
         positive = not g.is_not()
         atom = g if positive else g.arg(0)
         if not atom.is_fluent_exp():

@@ -89,17 +89,25 @@ def initial_numbers(problem: Any) -> dict[tuple, float]:
     return out
 
 
-def stock_goals(problem: Any) -> tuple[dict[str, dict[str, int]], list[str]]:
-    """Goal counts ``(= (stock s p) n)`` as ``{shelf: {product: n}}``, plus a list of goal
-    conditions of any other form (as text) that pipflow's goal checks do not understand."""
-    goal: dict[str, dict[str, int]] = {}
-    other: list[str] = []
+def goal_conditions(problem: Any) -> list[Any]:
+    """The problem's goal as a flat list of conditions (nested ``and`` opened, order kept)."""
+    out: list[Any] = []
     stack = list(problem.goals)
     while stack:
         g = stack.pop(0)
         if g.is_and():
             stack[:0] = list(g.args)
-            continue
+        else:
+            out.append(g)
+    return out
+
+
+def stock_goals(problem: Any) -> tuple[dict[str, dict[str, int]], list[str]]:
+    """Goal counts ``(= (stock s p) n)`` as ``{shelf: {product: n}}``, plus a list of goal
+    conditions of any other form (as text) that pipflow's goal checks do not understand."""
+    goal: dict[str, dict[str, int]] = {}
+    other: list[str] = []
+    for g in goal_conditions(problem):
         if g.is_equals():
             a, b = g.args
             if b.is_fluent_exp():
