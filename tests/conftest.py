@@ -86,3 +86,17 @@ def no_hang():
     yield
     signal.alarm(0)
     signal.signal(signal.SIGALRM, old)
+
+
+def interrupt_after(n: int):
+    """An ``on_row`` hook for ``run_bench`` that presses Ctrl-C after ``n`` stored rows; its
+    ``seen`` lists the run keys of the rows stored before that."""
+    from pipflow.executors import run_key
+
+    def hook(row: dict) -> None:
+        hook.seen.append(run_key(row))
+        if len(hook.seen) == n:
+            raise KeyboardInterrupt
+
+    hook.seen = []
+    return hook

@@ -15,6 +15,7 @@ from pathlib import Path
 
 import pytest
 
+from conftest import interrupt_after
 from pipflow.bench import BenchConfig, read_row, row_path, run_bench
 from pipflow.executors import parse_executor, parse_limits, run_key
 from pipflow.errors import UserError
@@ -121,12 +122,8 @@ def test_resume_runs_only_missing_rows(local_bench, tmp_path):
 
 def test_interrupted_bench_resumes_with_every_run_once(tmp_path):
     out = tmp_path / "b"
-    seen = []
-
-    def stop_after_two(row):
-        seen.append(run_key(row))
-        if len(seen) == 2:
-            raise KeyboardInterrupt
+    stop_after_two = interrupt_after(2)
+    seen = stop_after_two.seen
 
     with pytest.raises(KeyboardInterrupt):
         run_bench(config(out, seeds=2, jobs=1), progress=False, on_row=stop_after_two)

@@ -16,6 +16,7 @@ import pytest
 
 distributed = pytest.importorskip("distributed")
 
+from conftest import interrupt_after
 from pipflow.bench import BenchConfig, read_row, run_bench  # noqa: E402
 from pipflow.executors import build_bundle, materialize, run_key  # noqa: E402
 
@@ -93,12 +94,8 @@ def test_dask_gives_the_local_table(cluster, tmp_path):
 def test_resume_after_an_interrupted_dask_bench(cluster, tmp_path):
     lc, _ = cluster
     out = tmp_path / "r"
-    seen = []
-
-    def stop_after_two(row):
-        seen.append(run_key(row))
-        if len(seen) == 2:
-            raise KeyboardInterrupt
+    stop_after_two = interrupt_after(2)
+    seen = stop_after_two.seen
 
     with pytest.raises(KeyboardInterrupt):
         run_bench(config(out, f"dask={lc.scheduler_address}"), progress=False, on_row=stop_after_two)
