@@ -102,21 +102,59 @@ def goal_conditions(problem: Any) -> list[Any]:
     return out
 
 
-def stock_goals(problem: Any) -> tuple[dict[str, dict[str, int]], list[str]]:
+def stock_goals(problem: Any, bounds: bool = False) -> tuple[dict[str, dict[str, Any]], list[str]]:
     """Goal counts ``(= (stock s p) n)`` as ``{shelf: {product: n}}``, plus a list of goal
-    conditions of any other form (as text) that pipflow's goal checks do not understand."""
-    goal: dict[str, dict[str, int]] = {}
+    conditions of any other form (as text) that pipflow's goal checks do not understand.
+
+    With ``bounds=True`` the comparisons ``>=``, ``<=``, ``>``, ``<`` of a stock with a whole
+    number are read too, and each cell's conditions are merged into one goal value of
+    :mod:`pipflow.goalcounts` (an int when an exact count is stated and agrees with the bounds,
+    else ``{at_least, at_most}``; a contradiction is kept so that the verifier names it). The
+    default keeps the exact-count reading for readers that do not handle bounds yet."""
+    from pipflow.goalcounts import from_limits
+
+    cells: dict[tuple[str, str], list] = {}  # (shelf, product) -> [lo, hi, exact stated]
     other: list[str] = []
     for g in goal_conditions(problem):
-        if g.is_equals():
-            a, b = g.args
-            if b.is_fluent_exp():
-                a, b = b, a
-            if (a.is_fluent_exp() and a.fluent().name == "stock" and len(a.args) == 2
-                    and (b.is_int_constant() or b.is_real_constant())):
-                v = b.constant_value()
-                if float(v).is_integer():
-                    goal.setdefault(str(a.args[0]), {})[str(a.args[1])] = int(v)
-                    continue
-        other.append(str(g))
+        cell = _stock_comparison(g, bounds)
+        if cell is None:
+            other.append(str(g))
+            continue
+        (s, p), lo, hi = cell
+        if not bounds and (s, p) in cells and cells[s, p][0] != lo:
+            other.append(str(g))  # two different exact counts: only a bound-aware reader may merge them
+            continue
+        c = cells.setdefault((s, p), [None, None, False])
+        if lo is not None:
+            c[0] = lo if c[0] is None else max(c[0], lo)
+        if hi is not None:
+            c[1] = hi if c[1] is None else min(c[1], hi)
+        c[2] = c[2] or g.is_equals()
+    goal: dict[str, dict[str, Any]] = {}
+    for (s, p), (lo, hi, exact) in cells.items():
+        goal.setdefault(s, {})[p] = from_limits(lo, hi, exact)
     return goal, other
+
+
+def _stock_comparison(g: Any, bounds: bool) -> tuple[tuple[str, str], int | None, int | None] | None:
+    """``((shelf, product), lowest, highest)`` for a comparison of ``(stock s p)`` with a whole
+    number (strict ones made inclusive: counts are whole), or None for any other condition."""
+    kinds = ("is_equals", "is_le", "is_lt") if bounds else ("is_equals",)
+    if not any(getattr(g, k)() for k in kinds) or len(g.args) != 2:
+        return None
+    a, b = g.args
+    stock_left = a.is_fluent_exp()
+    fexp, num = (a, b) if stock_left else (b, a)
+    if not (fexp.is_fluent_exp() and fexp.fluent().name == "stock" and len(fexp.args) == 2
+            and (num.is_int_constant() or num.is_real_constant())):
+        return None
+    v = float(num.constant_value())
+    cell = (str(fexp.args[0]), str(fexp.args[1]))
+    if g.is_equals():
+        return (cell, int(v), int(v)) if v.is_integer() else None
+    strict = g.is_lt()
+    if stock_left:  # stock <= v  /  stock < v
+        hi = int(v) - 1 if strict and v.is_integer() else int(v // 1)
+        return cell, None, hi
+    lo = int(v) + 1 if strict and v.is_integer() else int(-(-v // 1))  # v <= stock / v < stock
+    return cell, lo, None

@@ -2,9 +2,17 @@
 
 The back half of the offline problem generator: its objects and initial state are exactly the
 world's (every stock count written, zeros included, because ENHSP treats an unset fluent as
-undefined rather than 0), and the goal is one ``(= (stock s p) n)`` per listed count.
+undefined rather than 0), and the goal is one ``(= (stock s p) n)`` per exact count and, for a
+bound (``{at_least: n, at_most: m}``, see :mod:`pipflow.goalcounts`), ``(>= (stock s p) n)`` and/or
+``(<= (stock s p) m)``: numeric goals that ENHSP, UP's validator and the goal reader
+(:func:`pipflow.pddl.common.stock_goals`) all understand.
 """
 from __future__ import annotations
+
+from typing import Any
+
+from pipflow.errors import InputError
+from pipflow.goalcounts import is_bound, value_problems
 
 LARGEST_MOVE = 6
 """The paper's domain moves 1..6 units at a time (objects magnitude1..magnitude6)."""
@@ -19,9 +27,29 @@ def magnitudes(world: dict) -> dict[str, int]:
     return {f"magnitude{k}": k for k in range(1, largest + 1)}
 
 
-def write_problem(world: dict, goal: dict[str, dict[str, int]], name: str = "task",
+def goal_conditions(shelf: str, product: str, value: Any) -> list[str]:
+    """The PDDL goal conditions of one goal value: an exact count or a bound.
+
+    Raises :class:`InputError` for a value that is neither (a negative count, ``at_least`` above
+    ``at_most``...): a problem must never say something other than the goal it was given."""
+    problems = value_problems(value)
+    if problems:
+        raise InputError(f"goal value of {product} on {shelf}: {'; '.join(problems)}")
+    fluent = f"(stock {shelf} {product})"
+    if not is_bound(value):
+        return [f"(= {fluent} {value})"]
+    out = []
+    if "at_least" in value:
+        out.append(f"(>= {fluent} {value['at_least']})")
+    if "at_most" in value:
+        out.append(f"(<= {fluent} {value['at_most']})")
+    return out
+
+
+def write_problem(world: dict, goal: dict[str, dict[str, Any]], name: str = "task",
                   domain: str = "warehouse") -> str:
-    """PDDL problem text for moving the world's stock to ``goal`` (``{shelf: {product: n}}``)."""
+    """PDDL problem text for moving the world's stock to ``goal`` (``{shelf: {product: value}}``,
+    a value being an exact count or a bound mapping)."""
     shelves, products = list(world["shelves"]), list(world["products"])
     amounts = magnitudes(world)
     lines = [f"(define (problem {name})", f"  (:domain {domain})", "  (:objects"]
@@ -35,7 +63,7 @@ def write_problem(world: dict, goal: dict[str, dict[str, int]], name: str = "tas
         lines.append(f"    {counts}")
         lines.append(f"    (= (load {s}) {sum(stock.values())}) (= (capacity {s}) {world['shelves'][s]['capacity']})")
     lines.append("    " + " ".join(f"(= (amount {m}) {k})" for m, k in amounts.items()) + ")")
-    conds = [f"(= (stock {s} {p}) {n})" for s, items in goal.items() for p, n in items.items()]
+    conds = [c for s, items in goal.items() for p, v in items.items() for c in goal_conditions(s, p, v)]
     lines.append("  (:goal (and")
     lines += [f"    {c}" for c in conds]
     lines.append("  )))")
