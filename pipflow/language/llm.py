@@ -9,19 +9,33 @@ API keys are read by litellm from the environment. Nothing here puts them in a r
 """
 from __future__ import annotations
 
+import ipaddress
+import json
 import os
 import re
 import time
 from dataclasses import dataclass, field
 from typing import Any, Callable
+from urllib.parse import urlsplit
 
 from pipflow.errors import InputError, LLMError
 
 DEFAULT_MODEL = "offline"
 #: provider errors worth another try; everything else (bad key, bad request) fails at once
 _RETRYABLE = ("RateLimitError", "Timeout", "APIConnectionError", "ServiceUnavailableError",
-              "InternalServerError")
+              "InternalServerError", "BadGatewayError")
+#: provider errors that the user causes (wrong key, unknown model): exit 2, no retry
+_USER_FAULTS = ("AuthenticationError", "PermissionDeniedError", "NotFoundError")
 _SECRET_ENV = re.compile(r"(KEY|TOKEN|SECRET|PASSWORD)", re.IGNORECASE)
+#: the longest answer accepted, in characters. A real answer is bounded by ``max_tokens`` (a few
+#: characters per token); 512 000 characters is beyond any real answer even at 100k tokens, so a
+#: longer one is a broken or hostile server, and it is refused before it reaches the cache, the
+#: record or the parsers.
+MAX_ANSWER_CHARS = 512_000
+#: environment variables in which a user names the server of a model (issue 13, defect 19)
+_BASE_ENV = re.compile(r"(_API_BASE|_BASE_URL|_API_BASES)$")
+#: where the engine's command line lists the values the user gave (-i / --inputs)
+GIVEN_INPUTS_ENV = "PIPFLOW_GIVEN_INPUTS"
 
 
 def resolve_model(model: str | None) -> str:
@@ -53,7 +67,67 @@ def _import_litellm():
     import litellm  # noqa: PLC0415 - deliberately lazy, see module docstring
 
     litellm.suppress_debug_info = True
+    litellm.num_retries = 0  # one retry layer: ours (issue 13, defect 10)
     return litellm
+
+
+def _norm_base(url: str) -> str:
+    return url.strip().rstrip("/").lower()
+
+
+def is_loopback(api_base: str) -> bool:
+    """True for a server on this machine (127.0.0.0/8, ::1, localhost)."""
+    host = (urlsplit(api_base.strip()).hostname or "").lower()
+    if host == "localhost":
+        return True
+    try:
+        return ipaddress.ip_address(host).is_loopback
+    except ValueError:
+        return False
+
+
+def user_named(api_base: str) -> bool:
+    """True when the user named this server: in an environment variable that names a server
+    (``OPENAI_API_BASE``, ``PIPFLOW_API_BASE``, ``*_BASE_URL``, ...) or among the values given on
+    the command line (``-i api_base=...``, which the CLI lists in ``PIPFLOW_GIVEN_INPUTS``)."""
+    want = _norm_base(api_base)
+    for name, value in os.environ.items():
+        if name != GIVEN_INPUTS_ENV and _BASE_ENV.search(name.upper()) and value:
+            if want in (_norm_base(v) for v in value.split(",")):
+                return True
+    try:
+        given = json.loads(os.environ.get(GIVEN_INPUTS_ENV) or "[]")
+    except ValueError:
+        given = []
+    return isinstance(given, list) and want in (_norm_base(v) for v in given if isinstance(v, str))
+
+
+def key_may_go_to(api_base: str | None) -> bool:
+    """Whether a provider key from the environment may be sent to ``api_base``: always to the
+    provider's own server (no ``api_base``), else only to a loopback server or one the user named
+    (a default in a shared workflow file must not collect keys)."""
+    return not api_base or is_loopback(api_base) or user_named(api_base)
+
+
+def check_model(litellm, model: str, api_base: str | None) -> None:
+    """Fail before the first call when litellm does not know the model's provider, or when a
+    hosted provider's key is missing from the environment (:class:`InputError`, exit 2)."""
+    try:
+        litellm.get_llm_provider(model=model, api_base=api_base)
+    except Exception:
+        raise InputError(f"model {model!r}: litellm does not know its provider; write it as "
+                         "provider/model (openai/gpt-4o, anthropic/..., ollama/...), or use "
+                         "'offline' or 'local/smollm2'") from None
+    if api_base:
+        return  # a self-hosted server: its key, if it needs one, is checked by the server
+    try:
+        missing = litellm.validate_environment(model=model).get("missing_keys") or []
+    except Exception:  # litellm cannot tell: the call itself will say
+        missing = []
+    if missing:
+        raise InputError(f"model {model!r} needs the environment variable{'s' if len(missing) > 1 else ''} "
+                         f"{', '.join(missing)}, which {'are' if len(missing) > 1 else 'is'} not set; "
+                         "set it, or use model=offline")
 
 
 def complete(
@@ -67,24 +141,38 @@ def complete(
     api_base: str | None = None,
     extra: dict[str, Any] | None = None,
     backoff: float = 1.0,
+    deadline: float | None = None,
     sleep: Callable[[float], None] = time.sleep,
 ) -> Completion:
-    """Ask ``model`` for one chat completion; retry rate limits, time-outs and dropped
-    connections ``retries`` times with exponential backoff; raise :class:`LLMError` otherwise.
+    """Ask ``model`` for one chat completion; retry rate limits, time-outs, server errors and
+    dropped connections ``retries`` times with exponential backoff; raise :class:`LLMError`
+    otherwise (:class:`InputError` for what the user must fix: a missing key, an unknown model).
 
+    This is the only retry layer: litellm's and the OpenAI client's own retries are switched off,
+    so ``retries=2`` means at most 3 requests, and the error message counts them. ``timeout``
+    bounds one request; ``deadline`` (seconds) bounds the whole call with its retries and waits.
     ``extra`` carries provider-specific request fields (``response_format``, a llama.cpp
     ``grammar`` in ``extra_body``, litellm's ``mock_response`` in tests)."""
-    if retries < 0 or max_tokens <= 0 or timeout <= 0:
-        raise InputError("retries must be >= 0, max_tokens and timeout > 0")
+    if retries < 0 or max_tokens <= 0 or timeout <= 0 or (deadline is not None and deadline <= 0):
+        raise InputError("retries must be >= 0, max_tokens, timeout and deadline > 0")
     litellm = _import_litellm()
+    if "mock_response" not in (extra or {}):  # litellm's canned answers (tests) need no key
+        check_model(litellm, model, api_base)
     kwargs: dict[str, Any] = dict(model=model, messages=messages, temperature=temperature,
-                                  max_tokens=max_tokens, timeout=timeout, **(extra or {}))
+                                  max_tokens=max_tokens, num_retries=0, max_retries=0, **(extra or {}))
+    withheld = False
     if api_base:
         kwargs["api_base"] = api_base
-        if model.startswith("openai/") and not os.environ.get("OPENAI_API_KEY"):
+        if not key_may_go_to(api_base):
+            kwargs["api_key"] = "no-key"  # never the environment's provider key (see key_may_go_to)
+            withheld = True
+        elif model.startswith("openai/") and not os.environ.get("OPENAI_API_KEY"):
             kwargs["api_key"] = "no-key"  # self-hosted OpenAI-compatible servers need none
-    attempt = 0
+    started = time.monotonic()
+    attempt = 0  # requests made so far, minus one
     while True:
+        remaining = None if deadline is None else deadline - (time.monotonic() - started)
+        kwargs["timeout"] = timeout if remaining is None else max(0.001, min(timeout, remaining))
         start = time.perf_counter()
         try:
             # one of the provider's LLM slots across a dask cluster (a no-op elsewhere)
@@ -96,17 +184,37 @@ def complete(
         except Exception as exc:  # litellm maps every provider's error onto its own classes
             kind = type(exc).__name__
             retryable = any(isinstance(exc, getattr(litellm, name, ())) for name in _RETRYABLE)
-            if retryable and attempt < retries:
-                sleep(backoff * 2 ** attempt)
+            user_fault = any(isinstance(exc, getattr(litellm, name, ())) for name in _USER_FAULTS)
+            wait = backoff * 2 ** attempt
+            spent = time.monotonic() - started
+            in_time = deadline is None or spent + wait < deadline
+            if retryable and not user_fault and attempt < retries and in_time:
+                sleep(wait)
                 attempt += 1
                 continue
-            tries = f" after {attempt + 1} attempts" if attempt else ""
+            tries = f" after {attempt + 1} attempt{'s' if attempt else ''} in {spent:.1f} s"
+            if retryable and attempt < retries and not in_time:
+                tries += f" (the call's deadline of {deadline:g} s left no time for another)"
             hint = (f" (is the server at {api_base} running?)"
                     if api_base and "connection error" in str(exc).lower() else "")
-            raise LLMError(f"{model}: {kind}{tries}: {redact(str(exc))}{hint}") from None
+            if withheld and user_fault:
+                hint += (f" (no provider key was sent: {api_base} comes from the workflow, not from "
+                         "you; name it with -i api_base=... or in an environment variable such as "
+                         "PIPFLOW_API_BASE to send the key there)")
+            message = f"{model}: {kind}{tries}: {_short(redact(str(exc)))}{hint}"
+            raise (InputError if user_fault else LLMError)(message) from None
     latency = time.perf_counter() - start
     text = response.choices[0].message.content or ""
+    if len(text) > MAX_ANSWER_CHARS:
+        raise LLMError(f"{model}: the answer is {len(text):,} characters long, more than the "
+                       f"{MAX_ANSWER_CHARS:,} that no real answer reaches; it was neither kept nor parsed")
     return Completion(text=text, usage=_usage(litellm, response, latency, attempt))
+
+
+def _short(message: str, limit: int = 600) -> str:
+    """A provider message cut to a readable length (a server may echo megabytes)."""
+    message = " ".join(message.split())
+    return message if len(message) <= limit else message[:limit] + " ..."
 
 
 def _usage(litellm, response, latency: float, retried: int) -> dict[str, Any]:
