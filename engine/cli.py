@@ -47,6 +47,9 @@ def _inputs(args: argparse.Namespace) -> tuple[dict, bool]:
         # typed YAML values and text values mix: render the YAML ones as text so all coerce alike
         values = {k: (v if isinstance(v, str) else yaml.safe_dump(v, default_flow_style=True).strip()) for k, v in values.items()}
         values.update(text_values)
+    # the values the user gave, for a step that must tell them from a workflow file's defaults
+    # (a provider key goes only to a server the user named: pipflow.language.llm.user_named)
+    os.environ["PIPFLOW_GIVEN_INPUTS"] = json.dumps([v for v in values.values() if isinstance(v, str)])
     return values, from_text
 
 

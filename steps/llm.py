@@ -22,7 +22,10 @@ from pipflow.errors import InputError
         "temperature": Input("number", 0.0),
         "max_tokens": Input("integer", 1024),
         "timeout": Input("number", 60.0, doc="seconds per call"),
-        "retries": Input("integer", 2, doc="extra tries on rate limits, time-outs, lost connections"),
+        "retries": Input("integer", 2, doc="extra tries on rate limits, time-outs, server errors, lost "
+                                          "connections (the only retry layer: 2 means at most 3 requests)"),
+        "deadline": Input("number", None, doc="seconds for the whole call, retries and waits included; "
+                                              "unset: no bound beyond timeout x tries"),
         "api_base": Input("string", None, doc="base URL of an OpenAI-compatible server"),
         "feedback": Input("array", None, doc="messages of the previous round's debugger/verifier"),
         "grounded": Input("boolean", False, doc="constrain decoding to the world's names and counts"),
@@ -36,7 +39,8 @@ def llm_problem(ctx: StepContext, command: str, world: dict, domain: str,
                 prompt: str | None = None, model: str | None = None,
                 temperature: float = 0.0, max_tokens: int = 1024, timeout: float = 60.0,
                 retries: int = 2, api_base: str | None = None, feedback: list | None = None,
-                grounded: bool = False, cache_dir: str | None = None, cache: bool = True) -> dict:
+                grounded: bool = False, cache_dir: str | None = None, cache: bool = True,
+                deadline: float | None = None) -> dict:
     """``problem`` is "" when the answer held no usable problem; ``errors`` then says why, in
     words meant for the next round's prompt. ``goal`` is set by offline and grounded runs, and
     for household worlds (``domain: household``) by every run: the goal conditions read back from
@@ -56,7 +60,7 @@ def llm_problem(ctx: StepContext, command: str, world: dict, domain: str,
             raise InputError(f"domain file {path}: {exc.strerror}") from None
     out = generate(
         command, world, domain_text, prompt=prompt, model=resolved, temperature=temperature,
-        max_tokens=max_tokens, timeout=timeout, retries=retries, api_base=api_base,
+        max_tokens=max_tokens, timeout=timeout, retries=retries, deadline=deadline, api_base=api_base,
         feedback=feedback, grounded=grounded,
         cache_dir=ctx.resolve_path(cache_dir) if cache_dir else None, use_cache=cache and ctx.use_cache,
         base_dir=ctx.base_dir, save=ctx.write_artifact, log=ctx.log)

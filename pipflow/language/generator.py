@@ -122,6 +122,7 @@ def generate(
     max_tokens: int = 1024,
     timeout: float = 60.0,
     retries: int = 2,
+    deadline: float | None = None,
     api_base: str | None = None,
     feedback: list[str] | None = None,
     grounded: bool = False,
@@ -164,14 +165,19 @@ def generate(
             call_model, call_base = ensure_server(model)
         answer = complete(messages, model=call_model, api_base=call_base, timeout=timeout,
                           retries=retries, temperature=temperature, max_tokens=max_tokens,
-                          extra=extra)
+                          extra=extra, deadline=deadline)
         text, usage = answer.text, answer.usage
-        cache.put(key, {"model": model, "params": params, "messages": messages, "text": text,
-                        "usage": usage})
         log(f"llm: {model} answered in {usage['latency_s']} s, {usage.get('total_tokens')} tokens")
-    if save is not None:
+    if save is not None:  # the record first: a paid answer is kept even if the cache is not writable
         save("messages.json", messages)
         save("response.txt", text)
+    if entry is None and use_cache:  # --no-cache writes no cache either
+        try:
+            cache.put(key, {"model": model, "params": params, "messages": messages, "text": text,
+                            "usage": usage})
+        except OSError as exc:
+            log(f"warning: llm: the response cache {cache.directory} is not writable "
+                f"({exc.strerror or exc}); the answer is kept in the run record only")
     out = {"messages": messages, "response": text, "usage": {**usage, "cache_key": key}}
     out.update(_read_answer(text, world, grounded, domain_text))
     if save is not None and kind == "household" and out["goal"] is not None:
