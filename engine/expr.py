@@ -11,41 +11,168 @@ Inside the braces is a jinja2 expression over the run's namespace::
     ${previous.verify.messages}    in a loop: the previous iteration's output (None at first)
 
 The dependencies of a step are the step ids its expressions name, read off jinja2's AST.
+
+The sandbox also bounds what an expression may build: ``${ 'a' * 10**10 }`` would allocate
+10 GB before any check could look at the result, so repetition, powers, concatenation, padding
+and format widths are checked *before* they run (:data:`MAX_BUILD` characters or items,
+:data:`MAX_INT_BITS` bits), and jinja2's compile-time constant folding, which would run them
+while compiling, is kept off for those operators.
 """
 from __future__ import annotations
 
 import functools
 import json
+import math
 import re
-from collections.abc import Mapping
+from collections.abc import Mapping, Sized
 from dataclasses import dataclass
 from typing import Any
 
 from jinja2 import StrictUndefined, Undefined, nodes
-from jinja2.exceptions import TemplateError, TemplateSyntaxError
+from jinja2.exceptions import SecurityError, TemplateError, TemplateSyntaxError
+from jinja2.parser import Parser
+from jinja2.visitor import NodeTransformer
 from jinja2.sandbox import SandboxedEnvironment
 
 _OPEN = "${"
 _WHOLE = re.compile(r"^\s*\$\{(.*)\}\s*$", re.S)
+
+MAX_BUILD = 10_000_000  # characters of a string / items of a list an expression may make
+MAX_INT_BITS = 100_000  # bits of an integer an expression may compute (10**30000)
+MAX_SOURCE = 100_000  # characters of one expression
+_WIDE_FORMAT = re.compile(r"\d{8,}")  # a width or precision of 10**7 or more in a format string
 
 
 class ExpressionError(Exception):
     """An expression cannot be parsed or evaluated; the message says why."""
 
 
+class TooLarge(SecurityError):
+    """An expression would build a value beyond the sandbox's bounds."""
+
+
+def _size(value: Any) -> int:
+    return len(value) if isinstance(value, (str, bytes, list, tuple)) else 0
+
+
+def _check_size(n: float, what: str) -> None:
+    if n > MAX_BUILD:
+        raise TooLarge(f"{what} would have {int(n)} characters or items, more than the {MAX_BUILD} "
+                       "an expression may build")
+
+
+def _check_int(value: Any, what: str) -> None:
+    if isinstance(value, int) and not isinstance(value, bool) and abs(value) > MAX_BUILD:
+        raise TooLarge(f"{what}: {value} is larger than the {MAX_BUILD} an expression may use here")
+
+
+def _check_format(template: Any) -> None:
+    if isinstance(template, str) and _WIDE_FORMAT.search(template):
+        raise TooLarge("a format width or precision of 10 million or more")
+
+
+def _check_call(func: Any, args: tuple, kwargs: dict) -> None:
+    """Bounds on the arguments of a call or filter before it runs: whole numbers (padding
+    widths, repeat counts), format widths, and what ``replace`` would make."""
+    for value in [*args, *kwargs.values()]:
+        _check_int(value, f"argument of {getattr(func, '__name__', 'a call')}")
+    name = getattr(func, "__name__", "")
+    owner = getattr(func, "__self__", None)
+    if name in ("format", "format_map", "do_format"):
+        _check_format(owner if isinstance(owner, str) else (args[0] if args else None))
+    if name in ("replace", "do_replace"):
+        text, rest = (owner, args) if isinstance(owner, str) else (args[-3] if len(args) >= 3 else None, args[-2:])
+        if isinstance(text, str) and len(rest) >= 2 and isinstance(rest[0], str) and isinstance(rest[1], str):
+            count = (len(text) + 1) if rest[0] == "" else text.count(rest[0])
+            _check_size(len(text) + count * len(rest[1]), "replace")
+    if name == "expandtabs" and isinstance(owner, str) and args and isinstance(args[0], int):
+        _check_size(len(owner) + owner.count("\t") * args[0], "expandtabs")
+
+
+def _bounded_filter(func: Any) -> Any:
+    @functools.wraps(func)  # keeps jinja2's pass_context/pass_environment marks
+    def checked(*args: Any, **kwargs: Any) -> Any:
+        _check_call(func, args, kwargs)
+        return func(*args, **kwargs)
+    return checked
+
+
+def _bounded_concat(values: Any) -> str:
+    """``a ~ b ~ c`` (jinja2's Concat node is rewritten to call this): sizes summed first."""
+    parts = [v if isinstance(v, str) else str(v) for v in values]
+    _check_size(sum(map(len, parts)), "the joined text")
+    return "".join(parts)
+
+
 class _Env(SandboxedEnvironment):
     """Sandbox in which ``a.b`` on a mapping looks up the key first, so an output named
-    ``items`` or ``keys`` is the output and not the dict method."""
+    ``items`` or ``keys`` is the output and not the dict method; and whose operators, calls and
+    filters check the size of what they would build before building it."""
+
+    intercepted_binops = frozenset({"*", "**", "+", "%", "//"})
 
     def getattr(self, obj: Any, attribute: str) -> Any:
         if isinstance(obj, Mapping):
             if attribute in obj:
                 return obj[attribute]
             return self.undefined(obj=obj, name=attribute)
+        if isinstance(obj, str) and attribute in ("format", "format_map"):
+            _check_format(obj)  # jinja2 hands back its own wrapper, which no longer names the text
         return super().getattr(obj, attribute)
+
+    def call_binop(self, context: Any, operator: str, left: Any, right: Any) -> Any:
+        if operator == "*":
+            for seq, times in ((left, right), (right, left)):
+                if isinstance(seq, (str, bytes, list, tuple)) and isinstance(times, int):
+                    _check_size(len(seq) * max(times, 0), "repeating a value")
+        elif operator == "**" and isinstance(left, int) and isinstance(right, int) and abs(left) > 1 and right > 0:
+            if right * math.log2(abs(left)) > MAX_INT_BITS:
+                raise TooLarge(f"{left} ** {right} has more than {MAX_INT_BITS} bits")
+        elif operator == "+" and isinstance(left, Sized) and isinstance(right, Sized):
+            _check_size(_size(left) + _size(right), "joining two values")
+        elif operator == "%" and isinstance(left, str):
+            _check_format(left)
+        return super().call_binop(context, operator, left, right)
+
+    def call(__self, __context: Any, __obj: Any, *args: Any, **kwargs: Any) -> Any:  # noqa: N805
+        _check_call(__obj, args, kwargs)
+        return super().call(__context, __obj, *args, **kwargs)
 
 
 _ENV = _Env(undefined=StrictUndefined)
+_ENV.filters = {name: _bounded_filter(f) for name, f in _ENV.filters.items()}
+_ENV.filters["pipflow_concat"] = _bounded_concat
+# lipsum(n=10**9) and friends build text from a number alone; expressions need none of them
+_ENV.globals = {k: v for k, v in _ENV.globals.items() if k in ("range", "dict", "namespace")}
+
+
+class _Concats(NodeTransformer):
+    """Rewrite ``a ~ b`` into a call of the size-checking ``pipflow_concat`` filter."""
+
+    def visit_Concat(self, node: nodes.Concat) -> nodes.Node:
+        self.generic_visit(node)
+        return nodes.Filter(nodes.List(node.nodes, lineno=node.lineno), "pipflow_concat", [], [], None, None,
+                            lineno=node.lineno)
+
+
+class _Expression:
+    """A compiled expression (what ``Environment.compile_expression`` returns, after the Concat
+    rewrite)."""
+
+    def __init__(self, source: str):
+        parser = Parser(_ENV, source, state="variable")
+        expr = _Concats().visit(parser.parse_expression())
+        if not parser.stream.eos:
+            token = parser.stream.current
+            raise TemplateSyntaxError(f"unexpected {token.type} {token.value!r}", token.lineno, None, None)
+        body = [nodes.Assign(nodes.Name("result", "store"), expr, lineno=1)]
+        self._template = _ENV.from_string(nodes.Template(body, lineno=1))
+
+    def __call__(self, **namespace: Any) -> Any:
+        context = self._template.new_context(namespace)
+        for _ in self._template.root_render_func(context):
+            pass
+        return context.vars["result"]
 
 
 @dataclass(frozen=True)
@@ -101,9 +228,11 @@ def has_expression(value: Any) -> bool:
 
 
 @functools.lru_cache(maxsize=4096)
-def _compiled(source: str):
+def _compiled(source: str) -> _Expression:
+    if len(source) > MAX_SOURCE:
+        raise ExpressionError(f"an expression of {len(source)} characters is longer than the {MAX_SOURCE} allowed")
     try:
-        return _ENV.compile_expression(source, undefined_to_none=False)
+        return _Expression(source)
     except TemplateSyntaxError as err:
         raise ExpressionError(f"invalid expression ${{{source}}}: {err.message}") from None
 
@@ -134,20 +263,27 @@ def references(source: str) -> tuple[Reference, ...]:
 
 
 def template_references(value: Any) -> list[Reference]:
-    """Every reference in a value: strings, and strings nested in lists and dicts."""
-    out: list[Reference] = []
-    if isinstance(value, str):
-        if _OPEN in value:
-            for is_expr, part in split_template(value):
-                if is_expr:
-                    out.extend(references(part))
-    elif isinstance(value, dict):
-        for v in value.values():
-            out.extend(template_references(v))
-    elif isinstance(value, list):
-        for v in value:
-            out.extend(template_references(v))
-    return out
+    """Every reference in a value: strings, and strings nested in lists and dicts, each distinct
+    reference once. Linear in the size of the value as written: a list or dict that YAML aliases
+    share is scanned once, strings are scanned once each, and there is no recursion."""
+    found: dict[Reference, None] = {}
+    seen_containers: set[int] = set()
+    seen_strings: set[str] = set()
+    stack = [value]
+    while stack:
+        item = stack.pop()
+        if isinstance(item, str):
+            if _OPEN in item and item not in seen_strings:
+                seen_strings.add(item)
+                for is_expr, part in split_template(item):
+                    if is_expr:
+                        found.update(dict.fromkeys(references(part)))
+        elif isinstance(item, (dict, list)):
+            if id(item) in seen_containers:
+                continue
+            seen_containers.add(id(item))
+            stack.extend(reversed(list(item.values() if isinstance(item, dict) else item)))
+    return list(found)
 
 
 _PLAIN = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z_][A-Za-z0-9_]*)*$")

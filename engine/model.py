@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Union
 
-from pipflow.errors import Diagnostic, Location
+from pipflow.errors import Diagnostic, Location, SourceFileError
 
 from .source import SourceDict, SourceList, load_yaml, plain
 
@@ -103,23 +103,48 @@ class Workflow:
         return plain(self.data)
 
 
+MAX_EXTENDS = 32  # files in one `extends` chain; real chains have two or three
+
+
 def read_workflow_data(path: Path, diagnostics: list[Diagnostic], _seen: tuple = ()) -> tuple[Any, list[Path]]:
-    """Load a workflow file and merge the chain of files it extends (base first)."""
+    """Load a workflow file and merge the chain of files it extends (base first).
+
+    A base that cannot be used (missing, unreadable, empty, not a mapping, part of a cycle, or
+    beyond :data:`MAX_EXTENDS` files) adds a diagnostic at the ``extends`` line; the child keeps
+    its ``extends`` key, which tells the caller that the merge did not happen."""
     path = path.resolve()
     if path in _seen:
         chain = " -> ".join(str(p) for p in (*_seen, path))
         diagnostics.append(Diagnostic(Location(str(path)), f"'extends' forms a cycle: {chain}"))
         return SourceDict(), [path]
-    data = load_yaml(path)
+    data = load_yaml(path, "workflow file")
     if not isinstance(data, SourceDict) or "extends" not in data:
         return data, [path]
     base_ref = data["extends"]
-    base_path = (path.parent / str(base_ref)).resolve()
-    if not base_path.exists():
-        diagnostics.append(Diagnostic(data.where("extends"), f"extends {base_ref!r}: no such file ({base_path})"))
+    where = data.where("extends")
+    if not isinstance(base_ref, str) or not base_ref.strip():
+        diagnostics.append(Diagnostic(where, f"extends: expected the path of a workflow file, got {base_ref!r}"))
         return data, [path]
-    base, files = read_workflow_data(base_path, diagnostics, (*_seen, path))
+    if len(_seen) + 1 >= MAX_EXTENDS:
+        diagnostics.append(Diagnostic(where, f"extends {base_ref!r}: a chain of more than {MAX_EXTENDS} "
+                                             "workflow files (each extending the next) is not supported"))
+        return data, [path]
+    base_path = (path.parent / base_ref).resolve()
+    if not base_path.exists():
+        diagnostics.append(Diagnostic(where, f"extends {base_ref!r}: no such file ({base_path})"))
+        return data, [path]
+    try:
+        base, files = read_workflow_data(base_path, diagnostics, (*_seen, path))
+    except SourceFileError as err:
+        diagnostics.append(Diagnostic(where, f"extends {base_ref!r}: the base workflow cannot be read"))
+        diagnostics.extend(err.diagnostics)
+        return data, [path]
     if not isinstance(base, SourceDict):
+        what = "is empty" if base is None else f"is a {type(base).__name__.replace('Source', '').lower()}, not a mapping"
+        diagnostics.append(Diagnostic(where, f"extends {base_ref!r}: the base workflow {what} "
+                                             "(a workflow is a mapping of name, inputs, steps, outputs)"))
+        return data, [path]
+    if "extends" in base:  # the base's own base could not be used (reported above)
         return data, [path]
     return merge_workflows(base, data, diagnostics), [*files, path]
 

@@ -4,6 +4,9 @@ Validation must name file, line and column for every problem, also after a workf
 merged with the one it extends. So mappings and lists are loaded as :class:`SourceDict` and
 :class:`SourceList`, plain ``dict``/``list`` subclasses that carry the location of the node
 itself and of each of their keys or items; merging copies those along with the values.
+
+Reading and composing go through :mod:`pipflow.yamlsource` (size, file kind, UTF-8, nesting
+depth and alias-expansion limits), the one safe way pipflow reads a user's YAML.
 """
 from __future__ import annotations
 
@@ -12,7 +15,8 @@ from typing import Any
 
 import yaml
 
-from pipflow.errors import Diagnostic, Location, UserError
+from pipflow.errors import Diagnostic, Location, SourceFileError
+from pipflow.yamlsource import BoundedComposer, CheckedValues, read_source
 
 
 class SourceDict(dict):
@@ -85,24 +89,25 @@ class _DuplicateKey(Exception):
         self.key, self.location = key, location
 
 
-class _Loader(yaml.reader.Reader, yaml.scanner.Scanner, yaml.parser.Parser,
-              yaml.composer.Composer, _Constructor, yaml.resolver.Resolver):
+class _Loader(CheckedValues, BoundedComposer, yaml.reader.Reader, yaml.scanner.Scanner, yaml.parser.Parser,
+              _Constructor, yaml.resolver.Resolver):
     def __init__(self, stream: str, file: str):
         yaml.reader.Reader.__init__(self, stream)
         yaml.scanner.Scanner.__init__(self)
         yaml.parser.Parser.__init__(self)
-        yaml.composer.Composer.__init__(self)
+        BoundedComposer.__init__(self)
         _Constructor.__init__(self)
         yaml.resolver.Resolver.__init__(self)
         self.file = file
 
 
 if getattr(yaml, "__with_libyaml__", False):
-    class _CLoader(yaml._yaml.CParser, _Constructor, yaml.resolver.Resolver):  # type: ignore[name-defined]
+    class _CLoader(CheckedValues, BoundedComposer, yaml._yaml.CParser, _Constructor, yaml.resolver.Resolver):  # type: ignore[name-defined]
         """The same loader on libyaml's parser (same marks, several times faster)."""
 
         def __init__(self, stream: str, file: str):
             yaml._yaml.CParser.__init__(self, stream)
+            BoundedComposer.__init__(self)
             _Constructor.__init__(self)
             yaml.resolver.Resolver.__init__(self)
             self.file = file
@@ -120,29 +125,25 @@ def parse_yaml(text: str, file: str = "<string>") -> Any:
     except yaml.MarkedYAMLError as err:
         mark = err.problem_mark or err.context_mark
         loc = Location(file, mark.line + 1, mark.column + 1) if mark else Location(file)
-        raise SourceError([Diagnostic(loc, f"YAML syntax: {err.problem or err}")]) from None
+        what = "YAML" if isinstance(err, (yaml.composer.ComposerError, yaml.constructor.ConstructorError)) else "YAML syntax"
+        raise SourceError([Diagnostic(loc, f"{what}: {err.problem or err}")]) from None
+    except yaml.YAMLError as err:  # e.g. a control character the reader refuses
+        raise SourceError([Diagnostic(Location(file), f"YAML: {err}")]) from None
     finally:
         loader.dispose()
 
 
-def load_yaml(path: str | Path) -> Any:
-    """Read and parse a YAML file with locations; a missing file is a clear UserError."""
-    p = Path(path)
-    try:
-        text = p.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise UserError(f"{path}: no such file") from None
-    except OSError as err:
-        raise UserError(f"{path}: cannot read ({err.strerror})") from None
-    return parse_yaml(text, str(path))
+def load_yaml(path: str | Path, kind: str = "file") -> Any:
+    """Read and parse a YAML file with locations; a missing, unreadable, oversized or binary
+    file is a located :class:`SourceError`."""
+    return parse_yaml(read_source(path, kind), str(path))
 
 
-class SourceError(UserError):
-    """A YAML file cannot be parsed; ``diagnostics`` says where."""
+class SourceError(SourceFileError):
+    """A YAML file cannot be read or parsed; ``diagnostics`` says where."""
 
     def __init__(self, diagnostics: list[Diagnostic]):
-        self.diagnostics = diagnostics
-        super().__init__("\n".join(str(d) for d in diagnostics))
+        super().__init__(diagnostics)
 
 
 def plain(value: Any) -> Any:

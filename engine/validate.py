@@ -17,13 +17,13 @@ from typing import Any
 import jsonschema
 import networkx as nx
 
-from pipflow.errors import Diagnostic, Location, WorkflowError
+from pipflow.errors import Diagnostic, Location, SourceFileError, WorkflowError
 from pipflow.resources import data_file
 
 from .expr import ExpressionError, Reference, split_template, template_references
 from .model import LoopSpec, StepSpec, Workflow, build_workflow, read_workflow_data
 from .registry import Registry, default_registry
-from .source import SourceDict, SourceError, SourceList
+from .source import SourceDict, SourceList
 from .types import type_matches
 
 SPECIAL = {"inputs", "env", "previous", "iteration"}
@@ -49,13 +49,15 @@ def check_workflow(path: str | Path, registry: Registry | None = None) -> tuple[
     diagnostics: list[Diagnostic] = []
     try:
         data, files = read_workflow_data(path, diagnostics)
-    except SourceError as err:
+    except SourceFileError as err:
         return None, err.diagnostics
     if not isinstance(data, SourceDict):
         return None, [Diagnostic(Location(str(path), 1, 1), "a workflow must be a mapping (name, inputs, steps, outputs)")]
     schema_problems = _schema_diagnostics(data, str(path))
     diagnostics += schema_problems
-    if "extends" in data:  # the base could not be read (reported above): nothing more to check
+    if "extends" in data:  # the base could not be used (reported above): nothing more to check
+        if not diagnostics:  # never "valid" without a merged workflow to run
+            diagnostics.append(Diagnostic(data.where("extends"), "extends: the base workflow could not be merged"))
         return None, diagnostics
     steps = data.get("steps")
     for raw in steps if isinstance(steps, list) else []:

@@ -8,6 +8,7 @@ else that escapes is a bug in pipflow and is shown with its traceback.
     ├── UserError                     exit 2   bad file, bad input, missing key
     │   ├── WorkflowError                      workflow fails validation (carries diagnostics)
     │   ├── WorldError                         world file fails validation (carries diagnostics)
+    │   ├── SourceFileError                    a file cannot be read or parsed as YAML (carries diagnostics)
     │   └── InputError                         a step argument or CLI input is wrong
     ├── StepError                     exit 1   a step failed while running
     │   ├── PlanningError                      planner could not solve (time-out, engine error)
@@ -76,6 +77,11 @@ class WorkflowError(_DiagnosticsError):
 
 class WorldError(_DiagnosticsError):
     """A world file is invalid; ``diagnostics`` lists every problem with its location."""
+
+
+class SourceFileError(_DiagnosticsError):
+    """A user's file cannot be read (missing, not a regular file, too big, not UTF-8) or parsed
+    (YAML syntax, nesting or alias limits); ``diagnostics`` says where and why."""
 
 
 class InputError(UserError):

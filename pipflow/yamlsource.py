@@ -6,16 +6,171 @@ path into the data (``("stock", "shelf9")``, ``("tasks", 3, "goal")``) to the
 :class:`~pipflow.errors.Location` of that value in the text. A path that goes deeper than the
 document (a missing key) resolves to the deepest node that exists, which is where a user would
 add the missing piece. World, task and workflow files all use this.
+
+It is also the one safe way pipflow reads YAML from a user (workflow, world, task and inputs
+files, ``-i`` values): :func:`read_source` refuses what is not a regular file, is larger than any
+real file (``/dev/zero``, a FIFO, a 20 GB log) or is not UTF-8 text, naming the file and line;
+:class:`BoundedComposer` refuses nesting deeper than :data:`MAX_DEPTH`, more than
+:data:`MAX_NODES` values once aliases are expanded (a 453-byte "billion laughs" document) and
+aliases that contain themselves. PyYAML shares the objects an alias names, so such a document
+loads quickly; it is every later walk over the data (validation, JSON records) that would expand
+it, so the bound is on the expanded size, checked while composing, before anything walks it.
 """
 from __future__ import annotations
 
+import os
+import stat
+from pathlib import Path as _FsPath
 from typing import Any, Callable, Hashable, Sequence
 
 import yaml
 
-from pipflow.errors import Diagnostic, Location
+from pipflow.errors import Diagnostic, Location, SourceFileError
 
 Path = Sequence[Hashable]
+
+MAX_SOURCE_BYTES = 16 * 1024 * 1024  # a YAML file a person writes or a tool exports is far smaller
+MAX_DEPTH = 100  # nesting levels of mappings and lists
+MAX_NODES = 1_000_000  # values after alias expansion
+
+
+def read_source(path: str | os.PathLike, kind: str = "file", limit: int = MAX_SOURCE_BYTES) -> str:
+    """The text of a user's file, or a :class:`SourceFileError` that names the file and cause:
+    missing, unreadable, not a regular file (a folder, a device such as ``/dev/zero``, a pipe),
+    larger than ``limit`` bytes, or not UTF-8 (with the line and column of the first bad byte).
+    Reads at most ``limit + 1`` bytes, so no file can make pipflow read without end."""
+    file = str(path)
+    try:
+        fd = os.open(file, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))  # a FIFO must not block the open
+    except FileNotFoundError:
+        raise _read_error(file, f"no such {kind}") from None
+    except OSError as err:
+        raise _read_error(file, f"cannot read the {kind} ({err.strerror or err})") from None
+    try:
+        info = os.fstat(fd)
+        if not stat.S_ISREG(info.st_mode):
+            what = "a folder" if stat.S_ISDIR(info.st_mode) else "a device, pipe or socket"
+            raise _read_error(file, f"the {kind} is not a regular file but {what}; pipflow reads only ordinary files")
+        if info.st_size > limit:
+            raise _read_error(file, f"the {kind} has {info.st_size} bytes, more than the {limit} pipflow reads")
+        with os.fdopen(fd, "rb", closefd=True) as fh:
+            fd = -1
+            data = fh.read(limit + 1)  # files under /proc report size 0: the cap still holds
+    except OSError as err:
+        raise _read_error(file, f"cannot read the {kind} ({err.strerror or err})") from None
+    finally:
+        if fd >= 0:
+            os.close(fd)
+    if len(data) > limit:
+        raise _read_error(file, f"the {kind} has more than the {limit} bytes pipflow reads")
+    return decode_text(data, file, kind)
+
+
+def decode_text(data: bytes, file: str, kind: str = "file") -> str:
+    """UTF-8 text (a leading BOM dropped); otherwise a :class:`SourceFileError` at the first bad byte."""
+    try:
+        return data.decode("utf-8-sig")
+    except UnicodeDecodeError as err:
+        line = data.count(b"\n", 0, err.start) + 1
+        column = err.start - (data.rfind(b"\n", 0, err.start) + 1) + 1
+        loc = Location(file, line, column)
+        raise SourceFileError([Diagnostic(loc, f"the {kind} is not UTF-8 text (byte 0x{data[err.start]:02x}); "
+                                               "is it a binary file?")]) from None
+
+
+def _read_error(file: str, message: str) -> SourceFileError:
+    return SourceFileError([Diagnostic(Location(file), message)])
+
+
+class BoundedComposer(yaml.composer.Composer):
+    """PyYAML's composer with limits: nesting depth, values after alias expansion, no alias
+    inside its own anchor. Mixed in before the parser (also libyaml's ``CParser``, whose events
+    it consumes), so every node goes through :meth:`compose_node`."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self._depth = 0
+        self._expanded = 0
+        self._sizes: dict[int, int] = {}  # id(node) -> values under it, aliases expanded
+
+    def compose_node(self, parent, index):  # type: ignore[override]
+        if self.check_event(yaml.events.AliasEvent):
+            event = self.peek_event()
+            target = self.anchors.get(event.anchor)
+            if target is not None:
+                size = self._sizes.get(id(target))
+                if size is None:
+                    raise yaml.composer.ComposerError(
+                        None, None, f"alias *{event.anchor} is used inside its own anchor (a recursive document)",
+                        event.start_mark)
+                self._grow(size, event.start_mark)
+            return super().compose_node(parent, index)
+        self._depth += 1
+        if self._depth > MAX_DEPTH:
+            raise yaml.composer.ComposerError(None, None, f"nested deeper than {MAX_DEPTH} levels",
+                                              self.peek_event().start_mark)
+        before = self._expanded
+        try:
+            node = super().compose_node(parent, index)
+        finally:
+            self._depth -= 1
+        self._grow(1, node.start_mark)
+        self._sizes[id(node)] = self._expanded - before
+        return node
+
+    def _grow(self, size: int, mark) -> None:
+        self._expanded += size
+        if self._expanded > MAX_NODES:
+            raise yaml.composer.ComposerError(
+                None, None, f"more than {MAX_NODES} values once aliases are expanded (an alias bomb?)", mark)
+
+
+class CheckedValues:
+    """Constructor mixin: a value PyYAML cannot build (``2026-13-45`` as a date, a mapping used
+    as a key) is a located YAML error instead of a bare ``ValueError``/``TypeError``."""
+
+    def construct_object(self, node, deep=False):  # type: ignore[no-untyped-def]
+        try:
+            return super().construct_object(node, deep)  # type: ignore[misc]
+        except (ValueError, TypeError, OverflowError) as err:
+            raise yaml.constructor.ConstructorError(None, None, f"cannot read this value ({err})",
+                                                    node.start_mark) from None
+
+
+class _SafeLoader(CheckedValues, BoundedComposer, yaml.SafeLoader):
+    """The pure-Python safe loader, bounded."""
+
+
+if getattr(yaml, "__with_libyaml__", False):
+    class _SafeCLoader(CheckedValues, BoundedComposer, yaml._yaml.CParser, yaml.constructor.SafeConstructor,  # type: ignore[name-defined]
+                       yaml.resolver.Resolver):
+        """libyaml's parser (several times faster), composed and constructed safely and bounded."""
+
+        def __init__(self, stream: str):
+            yaml._yaml.CParser.__init__(self, stream)
+            BoundedComposer.__init__(self)
+            yaml.constructor.SafeConstructor.__init__(self)
+            yaml.resolver.Resolver.__init__(self)
+else:  # pragma: no cover - PyYAML built without libyaml
+    _SafeCLoader = _SafeLoader
+
+
+def compose(text: str) -> yaml.Node | None:
+    """The bounded node tree of a YAML document (``None`` for an empty one)."""
+    loader = _SafeCLoader(text)
+    try:
+        return loader.get_single_node()
+    finally:
+        loader.dispose()
+
+
+def safe_load(text: str) -> Any:
+    """``yaml.safe_load`` with the limits above; errors are ``yaml.YAMLError`` as there."""
+    loader = _SafeCLoader(text)
+    try:
+        return loader.get_single_data()
+    finally:
+        loader.dispose()
 
 
 class Locator:
@@ -58,7 +213,11 @@ class Locator:
                 return None, node.value[part]
         return None
 
-    def _find_duplicates(self, node: yaml.Node, path: tuple) -> None:
+    def _find_duplicates(self, node: yaml.Node, path: tuple, seen_nodes: set[int] | None = None) -> None:
+        seen_nodes = set() if seen_nodes is None else seen_nodes
+        if id(node) in seen_nodes:  # an alias: its duplicates were reported where it is defined
+            return
+        seen_nodes.add(id(node))
         if isinstance(node, yaml.MappingNode):
             seen: set[str] = set()
             for k, v in node.value:
@@ -66,10 +225,10 @@ class Locator:
                 if name is not None and name in seen:
                     self.duplicates.append((path + (name,), self._mark(k)))
                 seen.add(name)
-                self._find_duplicates(v, path + (name,))
+                self._find_duplicates(v, path + (name,), seen_nodes)
         elif isinstance(node, yaml.SequenceNode):
             for i, v in enumerate(node.value):
-                self._find_duplicates(v, path + (i,))
+                self._find_duplicates(v, path + (i,), seen_nodes)
 
 
 def load_with_locations(text: str, file: str) -> tuple[Any, Callable[..., Location]]:
@@ -77,8 +236,12 @@ def load_with_locations(text: str, file: str) -> tuple[Any, Callable[..., Locati
 
     Raises ``yaml.YAMLError`` on a syntax error; :func:`yaml_error_diagnostic` turns that into a
     located :class:`Diagnostic`."""
-    root = yaml.compose(text, Loader=yaml.SafeLoader)
-    data = yaml.safe_load(text) if root is not None else None
+    loader = _SafeCLoader(text)
+    try:
+        root = loader.get_single_node()
+        data = loader.construct_document(root) if root is not None else None
+    finally:
+        loader.dispose()
     return data, Locator(root, file)
 
 
