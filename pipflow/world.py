@@ -23,9 +23,9 @@ from typing import Any, Callable, Iterable
 
 import yaml
 
-from pipflow.errors import Diagnostic, Location, WorldError
+from pipflow.errors import Diagnostic, Location, SourceFileError, WorldError
 from pipflow.resources import data_file
-from pipflow.yamlsource import load_with_locations, yaml_error_diagnostic
+from pipflow.yamlsource import load_with_locations, read_source, yaml_error_diagnostic
 
 Locate = Callable[..., Location]
 
@@ -233,10 +233,10 @@ def normalize_world(data: dict, path: Path) -> dict:
 
 def _read(path: str | Path) -> tuple[Path, str]:
     p = Path(path).expanduser().resolve()
-    try:
-        return p, p.read_text()
-    except OSError as exc:
-        raise WorldError([Diagnostic(Location(str(p)), f"cannot read file: {exc.strerror or exc}")]) from None
+    try:  # the shared reader: regular files only, size-capped, UTF-8 checked with a location
+        return p, read_source(p, "file")
+    except SourceFileError as exc:
+        raise WorldError(exc.diagnostics) from None
 
 
 def _parse(text: str, file: str, kind: str) -> tuple[Any, Locate]:
