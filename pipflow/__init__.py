@@ -1,7 +1,8 @@
 """pipflow: the PIP-LLM pipeline as a declarative YAML workflow engine.
 
-Public surface for step authors: :func:`step`, :class:`Input`, :class:`StepContext`, and the
-exception hierarchy in :mod:`pipflow.errors`.
+Public surface: for notebooks and scripts, :func:`run` and :func:`bench` (:mod:`pipflow.api`);
+for step authors, :func:`step`, :class:`Input`, :class:`StepContext`; and the exception hierarchy
+in :mod:`pipflow.errors`.
 """
 from pipflow.engine.step import Input, Step, StepContext, step
 from pipflow.errors import (
@@ -22,7 +23,19 @@ from pipflow.errors import (
 
 __version__ = "0.1.0"
 
+
+def __getattr__(name: str):
+    """``run``, ``bench`` and ``Run`` load the engine's executor (networkx and the rest) on first
+    use, so that a step plugin's ``from pipflow import step`` stays a light import."""
+    if name in ("run", "bench", "Run"):
+        from pipflow import api
+
+        return getattr(api, name)
+    raise AttributeError(f"module 'pipflow' has no attribute {name!r}")
+
+
 __all__ = [
+    "run", "bench", "Run",
     "step", "Input", "Step", "StepContext",
     "PipflowError", "UserError", "WorkflowError", "WorldError", "InputError", "StepError",
     "PlanningError", "AllocationError", "LLMError", "TranslationError", "Refusal",

@@ -47,7 +47,10 @@ table { border-collapse: collapse; margin: .5em 0; } td, th { border: 1px solid 
 th { background: #eef2f7; } td.num { text-align: right; font-variant-numeric: tabular-nums; }
 .ok { color: #1a7f37; font-weight: bold; } .bad { color: #c62828; font-weight: bold; }
 img { max-width: 100%; border: 1px solid #ddd; margin: .3em 0; }
-.snaps img { width: 48%; } pre { background: #f6f8fa; padding: .6em; overflow-x: auto; }
+.snaps img { width: 48%; } pre { background: #f6f8fa; padding: .6em; overflow-x: auto; white-space: pre-wrap; }
+.round { border: 1px solid #ccd; border-radius: 6px; padding: .2em 1em .6em; margin: .8em 0; }
+.cause { border: 2px solid #c62828; border-radius: 6px; padding: .2em 1em; background: #fff5f5; }
+pre.answer { max-height: 24em; overflow-y: auto; }
 </style>"""
 
 
@@ -161,6 +164,12 @@ def _run_body(d: Path) -> str:
     parts.append(_table(["", ""], [["status", Raw(f"<span class='{cls}'>{_e(status)}</span>")],
                                    ["workflow", info.get("workflow", "")], ["error", info.get("error")]]))
     parts.append("<h2>Command</h2>" + (f"<p><q>{_e(command)}</q></p>" if command else "<p>(no command input)</p>"))
+    rounds = _loop_rounds(d)
+    if status not in ("succeeded", "ok", "success", "done", "completed") and rounds:
+        parts.insert(1, _failure_cause(info, rounds[-1]))
+    parts.append(_understood(steps))
+    if rounds:
+        parts.append(_loop_section(rounds))
 
     world = (_find(steps, lambda o: isinstance(o.get("world"), dict)) or (None, None, {}))[2].get("world")
     plan_s = _find(steps, lambda o: isinstance(o.get("plan"), list))
@@ -174,17 +183,18 @@ def _run_body(d: Path) -> str:
     parts.append("<h2>Team plan</h2>")
     plan = plan_s[2]["plan"] if plan_s else None
     if plan is not None:
-        by_index = {}
-        if schedule:
-            for k, s in enumerate(schedule.get("subtasks", [])):
-                by_index[" ".join(map(str, [s.get("action")] + list(s.get("args", []))))] = s
+        # subtask ids as the graph and the Gantt chart name them (s1, s2, ...), not list positions
+        nodes = graph_s[2]["graph"].get("nodes", []) if graph_s else []
+        ids = {n.get("index"): n.get("id") for n in nodes if isinstance(n, dict)}
+        by_id = {s.get("id"): s for s in (schedule or {}).get("subtasks", []) if isinstance(s, dict)}
         rows = []
         for i, a in enumerate(plan):
             text = " ".join(map(str, [a.get("action")] + list(a.get("args", []))))
-            s = by_index.get(text)
-            rows.append([i, f"({text})", ", ".join(s["robots"]) if s else "",
+            sid = ids.get(i, f"s{i + 1}")
+            s = by_id.get(sid)
+            rows.append([sid, f"({text})", ", ".join(s["robots"]) if s else "",
                          f"{s['start']:.1f}" if s else "", f"{s['end']:.1f}" if s else ""])
-        parts.append(_table(["#", "action", "robots", "start (s)", "end (s)"], rows) if rows else "<p>empty plan</p>")
+        parts.append(_table(["subtask", "action", "robots", "start (s)", "end (s)"], rows) if rows else "<p>empty plan</p>")
     else:
         parts.append("<p>(no plan in this run)</p>")
 
@@ -243,6 +253,124 @@ def _run_body(d: Path) -> str:
 
     parts.append("<h2>Steps</h2>" + _table(["step", "outputs"], [[n, ", ".join(sorted(o))] for n, _, o in steps]))
     return "\n".join(parts)
+
+
+# ------------------------------------------------------------------------------------------
+# the refinement loop and what was understood
+# ------------------------------------------------------------------------------------------
+
+
+def _loop_rounds(d: Path) -> list[dict]:
+    """Every round of every loop in the record: ``{"loop", "n", "generate", "debug", "verify",
+    "solve"}``, each the outputs of the inner step that plays that part (found by what it
+    outputs, so any workflow's loop is shown) plus the step's artifact folder under ``dir``."""
+    rounds = []
+    for it_dir in sorted((d / "steps").glob("*/iterations/*"), key=lambda p: (p.parent.parent.name, _int(p.name))):
+        r: dict[str, Any] = {"loop": it_dir.parent.parent.name, "n": _int(it_dir.name)}
+        for sd in sorted(p for p in it_dir.iterdir() if p.is_dir()):
+            out = _read(sd / "outputs.json")
+            if not isinstance(out, dict):
+                out = {}
+            out = {**out, "_dir": sd, "_id": sd.name}
+            if "response" in out or "messages" in out and "usage" in out:
+                r["generate"] = out
+            elif "plan" in out:
+                r["solve"] = out
+            elif "refusal" in out or "goal" in out and "ok" in out:
+                r["verify"] = out
+            elif "ok" in out:
+                r["debug"] = out
+        gen = r.get("generate")
+        if gen is not None and not gen.get("messages"):  # a failed generate keeps its prompt as an artifact
+            gen["messages"] = _read(gen["_dir"] / "artifacts" / "messages.json", []) or []
+        if gen is not None and not gen.get("response") and (gen["_dir"] / "artifacts" / "response.txt").is_file():
+            gen["response"] = (gen["_dir"] / "artifacts" / "response.txt").read_text(encoding="utf-8", errors="replace")
+        rounds.append(r)
+    return rounds
+
+
+def _int(text: str) -> int:
+    return int(text) if text.isdigit() else 0
+
+
+def _messages_of(r: dict, part: str) -> list[str]:
+    out = r.get(part) or {}
+    return [str(m) for m in (out.get("messages") or [])] if part != "generate" else \
+        [str(m) for m in (out.get("errors") or [])]
+
+
+def _failure_cause(info: dict, last: dict) -> str:
+    """The top of a failed run's report: what the last round's checks said, not only that the
+    loop ran out of rounds."""
+    lines = _messages_of(last, "generate") + _messages_of(last, "debug") + _messages_of(last, "verify")
+    items = "".join(f"<li>{_e(m)}</li>" for m in lines) or "<li>(the round left no messages)</li>"
+    return (f"<div class='cause'><h2>Why it failed</h2><p>{_e(info.get('error') or '')}</p>"
+            f"<p>Round {last['n']} of loop <code>{_e(last['loop'])}</code> ended with:</p><ul>{items}</ul></div>")
+
+
+def _understood(steps) -> str:
+    """The order as the run understood it, in plain words, before anything moved."""
+    gen = _find(steps, lambda o: "constraints" in o and ("goal" in o or "explanation" in o))
+    ver = _find(steps, lambda o: "refusal" in o and "goal" in o)
+    lines = list((gen[2].get("explanation") if gen else None) or [])
+    goal = (ver[2].get("goal") if ver else None) or (gen[2].get("goal") if gen else None)
+    if not lines and isinstance(goal, dict):
+        for place, items in goal.items():
+            for item, value in (items.items() if isinstance(items, dict) else []):
+                lines.append(f"{place} {item}: {_goal_words(value)}")
+    for rule in (gen[2].get("constraints") or []) if gen else []:
+        if isinstance(rule, dict):
+            lines.append(_rule_words(rule))
+    if not lines:
+        return ""
+    return "<h2>Understood</h2><ul class='understood'>" + "".join(f"<li>{_e(x)}</li>" for x in lines) + "</ul>"
+
+
+def _goal_words(value: Any) -> str:
+    if isinstance(value, dict):
+        lo, hi = value.get("at_least"), value.get("at_most")
+        if lo is not None and hi is not None:
+            return f"between {lo} and {hi}"
+        return f"at least {lo}" if lo is not None else f"at most {hi}"
+    return f"exactly {value}"
+
+
+def _rule_words(rule: dict) -> str:
+    who = ", ".join(rule.get("only") or rule.get("never") or [])
+    scope = " ".join(f"{k} {rule[k]}" for k in ("product", "from", "to") if rule.get(k))
+    verb = "only" if "only" in rule else "never"
+    text = f"rule: {verb} {who} in moves" + (f" of {scope}" if scope else "")
+    return text + (f" (from '{rule['words']}')" if rule.get("words") else "")
+
+
+def _loop_section(rounds: list[dict]) -> str:
+    """One card per round: the prompt as sent, the raw answer, the checks' messages, the cost."""
+    cards = []
+    for r in rounds:
+        gen, dbg, ver = r.get("generate") or {}, r.get("debug") or {}, r.get("verify") or {}
+        usage = gen.get("usage") or {}
+        ok = bool(ver.get("ok")) or bool(ver.get("refusal"))
+        head = (f"<h3>{_e(r['loop'])} round {r['n']} "
+                f"<span class='{'ok' if ok else 'bad'}'>{'passed' if ok else 'rejected'}</span></h3>")
+        facts = _table(["tokens in", "tokens out", "latency (s)", "cost (USD)", "cached"],
+                       [[usage.get("prompt_tokens"), usage.get("completion_tokens"), usage.get("latency_s"),
+                         usage.get("cost_usd"), usage.get("cached")]]) if usage else ""
+        msgs = "".join(f"<details><summary>{_e(m.get('role', '?'))} message ({len(str(m.get('content', '')))} chars)"
+                       f"</summary><pre>{_e(m.get('content', ''))}</pre></details>"
+                       for m in gen.get("messages") or [] if isinstance(m, dict))
+        answer = gen.get("response")
+        answer_html = (f"<h4>Answer</h4><pre class='answer'>{_e(answer)}</pre>" if answer else
+                       "<p>(offline: no model answer; the parser wrote the problem)</p>" if gen else "")
+        checks = []
+        for label, part in (("generator", "generate"), ("debugger", "debug"), ("verifier", "verify")):
+            m = _messages_of(r, part)
+            if m:
+                checks.append(f"<h4>{label}</h4><ul>" + "".join(f"<li>{_e(x)}</li>" for x in m) + "</ul>")
+        if ver.get("refusal"):
+            checks.append(f"<h4>verifier: refusal</h4><p>{_e(ver['refusal'])}</p>")
+        cards.append(f"<div class='round'>{head}{facts}"
+                     + (f"<h4>Prompt</h4>{msgs}" if msgs else "") + answer_html + "".join(checks) + "</div>")
+    return "<h2>Refinement loop</h2>" + "".join(cards)
 
 
 # ------------------------------------------------------------------------------------------
