@@ -6,8 +6,10 @@ Two independent checks, both reported in full:
   would otherwise pick another validator). For an inapplicable action the message adds the values
   of the fluents in its failed precondition at that point, e.g. ``stock(shelf4, product2) = 0``,
   which is what a model needs to repair the problem.
-* **Goal** (against the world): every object the goal names exists; no goal count exceeds a
-  shelf's capacity or the units that exist; the units the goal leaves free fit somewhere. An
+* **Goal** (against the world): every object the goal names exists; each goal value is a count
+  or a bound ``{at_least, at_most}`` (read from ``=``, ``>=``, ``<=``, ``>``, ``<`` goals); some
+  final state meets it: no count or lower bound exceeds a shelf's capacity or the units that
+  exist, upper bounds leave room for every unit, the units the goal leaves free fit somewhere. An
   infeasible goal yields ``refusal``: the reason, in words, that the command cannot be done in
   this world; the workflow ends there instead of looping.
 """
@@ -28,12 +30,15 @@ class VerifyReport:
     goal: dict = field(default_factory=dict)
 
 
-def goal_problems(world: dict, goal: dict[str, dict[str, int]]) -> tuple[list[str], str | None]:
-    """``(messages, refusal)`` for a goal ``{shelf: {product: n}}`` in ``world``.
+def goal_problems(world: dict, goal: dict[str, dict[str, Any]]) -> tuple[list[str], str | None]:
+    """``(messages, refusal)`` for a goal ``{shelf: {product: value}}`` in ``world``, a value
+    being an exact count or a bound ``{at_least, at_most}`` (:mod:`pipflow.goalcounts`).
 
-    Unknown names are messages (the problem is wrong, a better problem may fix it); counts the
-    world cannot hold are a refusal (no problem can fix the command)."""
-    from pipflow.pddl.transport import Unsolvable, check_final_state, instance_from_world
+    Unknown names and malformed values are messages (the problem is wrong, a better problem may
+    fix it); goals no final state of the world meets are a refusal (no problem can fix the
+    command): :func:`pipflow.pddl.feasibility.infeasibility_reasons` says why."""
+    from pipflow.goalcounts import value_problems
+    from pipflow.pddl.feasibility import infeasibility_reasons
     from pipflow.world import closest
 
     messages = []
@@ -47,21 +52,10 @@ def goal_problems(world: dict, goal: dict[str, dict[str, int]]) -> tuple[list[st
                 near = closest(p, world["products"])
                 messages.append(f"the goal names product {p!r}, which is not in the world"
                                 + (f" (did you mean {near[0]!r}?)" if near else ""))
-            if not isinstance(n, int) or n < 0:
-                messages.append(f"the goal count of {p} on {s} is {n}; counts are whole numbers >= 0")
+            messages += [f"the goal for {p} on {s}: {why}" for why in value_problems(n)]
     if messages:
         return messages, None
-    reasons = []
-    for s, items in goal.items():
-        cap = world["shelves"][s]["capacity"]
-        for p, n in items.items():
-            if n > cap:
-                reasons.append(f"{s} cannot hold {n} units of {p}: its capacity is {cap}")
-    try:
-        check_final_state(instance_from_world(world, goal))
-    except Unsolvable as exc:
-        if str(exc) not in reasons:
-            reasons.append(str(exc))
+    reasons = infeasibility_reasons(world, goal)
     if reasons:
         return reasons, "the command cannot be done in this world: " + "; ".join(reasons)
     return [], None
@@ -96,7 +90,7 @@ def verify_plan(problem: Any, plan: list[dict] | None, world: dict | None = None
     from unified_planning.shortcuts import PlanValidator
 
     environment()
-    goal = goal_in_world_names(stock_goals(problem)[0], world)  # other goal forms: the validator's
+    goal = goal_in_world_names(stock_goals(problem, bounds=True)[0], world)  # other goal forms: the validator's
     messages: list[str] = []
     refusal = None
     if world is not None and world.get("domain") == "household":

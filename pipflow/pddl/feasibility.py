@@ -1,0 +1,107 @@
+"""Does any final state meet a goal in a world? The verifier's refusal reasons, in words.
+
+A final state puts every unit that exists on some shelf (units neither appear nor disappear),
+never more than a shelf's capacity, and each goal cell within its value (an exact count or a bound
+``{at_least, at_most}``, :mod:`pipflow.goalcounts`). Whether one exists is a flow problem: place
+each cell's lowest allowed count first; the units left over of each product must then fit in the
+cells that may take more (up to ``at_most``, or without limit where the goal is silent) and in the
+room the shelves have left. A maximum flow (networkx) answers that exactly and in whole units.
+
+The simple reasons (a count over a shelf's capacity, more units than exist, too few places for the
+units that exist) are checked first so that the refusal names the cause a user can act on; the
+flow catches every remaining case. The order of moves is not considered here: whether the planner
+finds a route through full shelves is the planner's question.
+"""
+from __future__ import annotations
+
+from typing import Any
+
+import networkx as nx
+
+from pipflow.goalcounts import is_bound, limits
+
+
+def _cells(world: dict, goal: dict) -> dict[tuple[str, str], tuple[int, int | None]]:
+    """(shelf, product) -> (lowest, highest) final count; unlisted cells are (0, None)."""
+    out = {(s, p): (0, None) for s in world["shelves"] for p in world["products"]}
+    for s, items in goal.items():
+        for p, value in items.items():
+            out[s, p] = limits(value)
+    return out
+
+
+def _units(value: Any, lo: int) -> str:
+    return f"at least {lo}" if is_bound(value) else str(lo)
+
+
+def infeasibility_reasons(world: dict, goal: dict[str, dict[str, Any]]) -> list[str]:
+    """Why no final state meets ``goal`` (empty when one exists). ``goal`` must name only shelves
+    and products of ``world`` and hold valid values (the verifier checks that first)."""
+    shelves, products = list(world["shelves"]), list(world["products"])
+    cap = {s: int(world["shelves"][s]["capacity"]) for s in shelves}
+    total = {p: sum(int(world["stock"].get(s, {}).get(p, 0)) for s in shelves) for p in products}
+    cells = _cells(world, goal)
+    value_of = {(s, p): v for s, items in goal.items() for p, v in items.items()}
+
+    reasons = []
+    for (s, p), v in value_of.items():
+        lo = cells[s, p][0]
+        if lo > cap[s]:
+            reasons.append(f"{s} cannot hold {_units(v, lo)} units of {p}: its capacity is {cap[s]}")
+    for p in products:
+        listed = [(s, p) for s in shelves if (s, p) in value_of]
+        want = sum(cells[c][0] for c in listed)
+        bounded = any(is_bound(value_of[c]) for c in listed)
+        if want > total[p]:
+            reasons.append(f"the goal needs {'at least ' if bounded else ''}{want} units of {p} "
+                           f"but only {total[p]} exist")
+        highs = [cells[s, p][1] for s in shelves]
+        if all(h is not None for h in highs) and sum(highs) < total[p]:
+            if bounded:
+                reasons.append(f"the goal allows at most {sum(highs)} units of {p} on the shelves but "
+                               f"{total[p]} exist; units cannot disappear")
+            else:
+                reasons.append(f"the goal places {sum(highs)} units of {p} on every shelf but "
+                               f"{total[p]} exist; units cannot disappear")
+    for s in shelves:
+        listed = [(s, p) for p in products if (s, p) in value_of]
+        fixed = sum(cells[c][0] for c in listed)
+        if fixed > cap[s] and len(listed) > 1:
+            bounded = any(is_bound(value_of[c]) for c in listed)
+            reasons.append(f"the goal puts {'at least ' if bounded else ''}{fixed} units on {s} "
+                           f"but its capacity is {cap[s]}")
+    if reasons:
+        return reasons
+    free_total, flow = _leftover_flow(shelves, products, cap, total, cells)
+    if flow < free_total:
+        return [f"{free_total} units that the goal leaves free must stay on some shelf, "
+                f"but only {flow} fit in the room the goal leaves"]
+    return []
+
+
+def _leftover_flow(shelves: list[str], products: list[str], cap: dict[str, int], total: dict[str, int],
+                   cells: dict[tuple[str, str], tuple[int, int | None]]) -> tuple[int, int]:
+    """``(units left over once every cell holds its lowest count, units of those that fit)``."""
+    g = nx.DiGraph()
+    g.add_node("src")
+    g.add_node("dst")
+    free_total = 0
+    for p in products:
+        free = total[p] - sum(cells[s, p][0] for s in shelves)
+        if free <= 0:
+            continue
+        free_total += free
+        g.add_edge("src", ("p", p), capacity=free)
+        for s in shelves:
+            lo, hi = cells[s, p]
+            if hi is None:
+                g.add_edge(("p", p), ("s", s))  # no capacity attribute: unlimited
+            elif hi > lo:
+                g.add_edge(("p", p), ("s", s), capacity=hi - lo)
+    for s in shelves:
+        room = cap[s] - sum(cells[s, p][0] for p in products)
+        g.add_edge(("s", s), "dst", capacity=max(0, room))
+    if not free_total:
+        return 0, 0
+    return free_total, int(nx.maximum_flow_value(g, "src", "dst"))
+
