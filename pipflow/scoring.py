@@ -2,7 +2,8 @@
 
 A run succeeds when, judged on what the *simulation* reports (never on what the plan claims):
 
-* every goal count listed by the task holds exactly in the final stock;
+* every goal value listed by the task holds in the final stock: an exact count exactly, a bound
+  (``{at_least, at_most}``) when the final count lies within it;
 * every move obeys the task's constraints (``only``/``never``, matched on the move's
   ``product``/``from``/``to`` fields, all given fields must agree);
 * units are conserved (per product, the final shelves hold what the initial shelves held, and no
@@ -26,6 +27,7 @@ from __future__ import annotations
 from collections import Counter
 from typing import Iterable
 
+from pipflow.goalcounts import holds
 
 
 # ------------------------------------------------------------------------------------------
@@ -34,9 +36,10 @@ from typing import Iterable
 
 
 def goal_counts(stock: dict, goal: dict) -> tuple[int, int]:
-    """(met, listed) goal counts."""
-    conds = [(s, p, int(n)) for s, items in (goal or {}).items() for p, n in items.items()]
-    met = sum(1 for s, p, n in conds if int((stock or {}).get(s, {}).get(p, 0)) == n)
+    """(met, listed) goal values: an exact count is met when the final count equals it, a bound
+    ``{at_least, at_most}`` when the final count lies within it."""
+    conds = [(s, p, v) for s, items in (goal or {}).items() for p, v in items.items()]
+    met = sum(1 for s, p, v in conds if holds(int((stock or {}).get(s, {}).get(p, 0)), v))
     return met, len(conds)
 
 

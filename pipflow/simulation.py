@@ -35,6 +35,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from pipflow.goalcounts import holds
+
 Point = tuple[float, float]
 
 #: Colour names pybullet does not know; used only when matplotlib is missing.
@@ -635,9 +637,11 @@ def _unload(scene: Scene, m: Move) -> None:
 
 
 def goal_check(stock: dict, goal: dict) -> tuple[bool, float]:
-    """Every listed count must hold exactly; GCR is the fraction that does (1.0 for no goal)."""
-    conds = [(s, p, int(n)) for s, items in (goal or {}).items() for p, n in items.items()]
+    """Every listed goal value must hold: an exact count exactly, a bound ``{at_least, at_most}``
+    when the final count lies within it (:func:`pipflow.goalcounts.holds`); GCR is the fraction
+    that does (1.0 for no goal)."""
+    conds = [(s, p, v) for s, items in (goal or {}).items() for p, v in items.items()]
     if not conds:
         return True, 1.0
-    ok = sum(1 for s, p, n in conds if int(stock.get(s, {}).get(p, 0)) == n)
+    ok = sum(1 for s, p, v in conds if holds(int(stock.get(s, {}).get(p, 0)), v))
     return ok == len(conds), ok / len(conds)
