@@ -59,7 +59,7 @@ class Executor:
         self.cache = StepCache(options.cache_dir) if options.use_cache else None
         self.state = ExecutionState()
         self.state.outputs.update(completed or {})
-        self._env = dict(os.environ)
+        self._env = {name: os.environ[name] for name in workflow.env if name in os.environ}  # declared only
         self._lock = threading.Lock()
 
     # -- public --------------------------------------------------------------------------
@@ -225,8 +225,7 @@ class Executor:
                 raise self._located(InputError(f"step {spec.id!r}: argument {name!r}: {err}"), spec.id)
             declared = step.inputs.get(name)
             if declared is not None and declared.type == "path" and isinstance(value, str) and value:
-                loc = spec.arg_loc(name)
-                base = Path(loc.file).resolve().parent if loc and loc.file else spec.base_dir
+                base = spec.arg_base(name)
                 value = str((base / Path(value).expanduser()).resolve()) if not Path(value).is_absolute() else value
             args[name] = value
         for name, declared in step.inputs.items():

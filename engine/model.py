@@ -37,6 +37,7 @@ class StepSpec:
     cache: bool | None = None
     raw: SourceDict = field(default_factory=SourceDict)
     loop: str | None = None  # id of the enclosing loop, if any
+    bases: dict[str, str] | None = None  # folders relative paths start from, when not where raw was read
 
     @property
     def loc(self) -> Location | None:
@@ -51,7 +52,28 @@ class StepSpec:
     @property
     def base_dir(self) -> Path:
         """Folder of the file that defines this step: relative paths in it start here."""
+        if self.bases and "" in self.bases:
+            return Path(self.bases[""])
         return Path(self.raw.loc.file).resolve().parent if self.raw.loc else Path.cwd()
+
+    def arg_base(self, name: str) -> Path:
+        """Folder a relative path in argument ``name`` starts from: that of the file that set
+        the argument (an override in a child workflow may set it for a step of the base)."""
+        if self.bases is not None:
+            return Path(self.bases.get(name, self.bases.get("", str(Path.cwd()))))
+        loc = self.arg_loc(name)
+        return Path(loc.file).resolve().parent if loc and loc.file else self.base_dir
+
+    def path_bases(self) -> dict[str, str]:
+        """What :attr:`bases` must say for this step to resolve paths as here when it is
+        rebuilt from a run's snapshot (``resume``)."""
+        base = str(self.base_dir)
+        out = {"": base}
+        for name in self.args:
+            arg = str(self.arg_base(name))
+            if arg != base:
+                out[name] = arg
+        return out
 
 
 @dataclass
@@ -82,6 +104,7 @@ class Workflow:
     outputs: dict
     data: SourceDict
     files: list[Path] = field(default_factory=list)  # this file and those it extends
+    env: list[str] = field(default_factory=list)  # environment variables the workflow may read
 
     def all_steps(self) -> list[StepSpec]:
         out: list[StepSpec] = []
@@ -101,6 +124,15 @@ class Workflow:
 
     def snapshot(self) -> dict:
         return plain(self.data)
+
+    def path_bases(self) -> dict[str, dict[str, str]]:
+        """Per step id, the folders its relative paths start from (saved with the snapshot)."""
+        return {s.id: s.path_bases() for s in self.all_steps()}
+
+    def apply_path_bases(self, bases: dict[str, dict[str, str]]) -> None:
+        for s in self.all_steps():
+            if isinstance(bases.get(s.id), dict):
+                s.bases = dict(bases[s.id])
 
 
 MAX_EXTENDS = 32  # files in one `extends` chain; real chains have two or three
@@ -167,6 +199,10 @@ def merge_workflows(base: SourceDict, child: SourceDict, diagnostics: list[Diagn
         elif key == "steps":
             merged["steps"] = _merge_steps(merged.get("steps") or SourceList(), value,
                                            child.get("remove") or [], diagnostics, child)
+        elif key == "env" and isinstance(value, list) and isinstance(merged.get("env"), list):
+            names = SourceList([*merged["env"], *(v for v in value if v not in merged["env"])])
+            names.loc = getattr(value, "loc", None)
+            merged["env"] = names
         elif key in ("extends", "remove"):
             continue
         else:
@@ -287,7 +323,8 @@ def build_workflow(path: Path, data: SourceDict, files: list[Path]) -> Workflow:
         elif "uses" in raw:
             nodes.append(_step_spec(raw, None))
     return Workflow(file=path.resolve(), name=data.get("name", path.stem), description=data.get("description", ""),
-                    inputs=inputs, nodes=nodes, outputs=dict(data.get("outputs") or {}), data=data, files=files)
+                    inputs=inputs, nodes=nodes, outputs=dict(data.get("outputs") or {}), data=data, files=files,
+                    env=list(data.get("env") or []))
 
 
 def _step_spec(raw: SourceDict, loop: str | None) -> StepSpec:

@@ -52,6 +52,12 @@ def find_workflow(ref: str | Path) -> Path:
                                                        f"; built-in workflows: {', '.join(known)}"))
 
 
+def declared_env(wf: Workflow) -> dict[str, str]:
+    """The environment variables the workflow declares under ``env:`` (those set): all that
+    ``${env.X}`` can see."""
+    return {name: os.environ[name] for name in wf.env if name in os.environ}
+
+
 def resolve_inputs(wf: Workflow, given: dict[str, Any], from_text: bool = False, cwd: Path | None = None) -> dict:
     """Declared defaults, overridden by the given values (coerced from text for ``-i``)."""
     unknown = [k for k in given if k not in wf.inputs]
@@ -61,7 +67,7 @@ def resolve_inputs(wf: Workflow, given: dict[str, Any], from_text: bool = False,
             close = difflib.get_close_matches(k, list(wf.inputs), n=1)
             hints.append(f"{k!r}" + (f" (did you mean {close[0]!r}?)" if close else ""))
         raise InputError(f"{wf.file}: unknown input {', '.join(hints)}; declared: {', '.join(wf.inputs) or 'none'}")
-    env_ns = {"env": dict(os.environ), "inputs": {}}
+    env_ns = {"env": declared_env(wf), "inputs": {}}
     values: dict[str, Any] = {}
     for name, spec in wf.inputs.items():
         if name in given:
@@ -102,25 +108,75 @@ def run_workflow(workflow: str | Path, inputs: dict[str, Any] | None = None, *, 
     wf = load_workflow(find_workflow(workflow), registry)
     values = resolve_inputs(wf, inputs or {}, from_text=inputs_from_text)
     store = RunStore.create(Path(runs_dir), wf.name)
-    store.write_snapshot(wf.snapshot(), values)
-    store.update_run(workflow=str(wf.file), name=wf.name, status="running", started=utc_now(),
-                     inputs=values)
+    try:
+        store.write_snapshot(wf.snapshot(), values)
+        store.update_run(workflow=str(wf.file), name=wf.name, status="running", started=utc_now(),
+                         inputs=values, pid=os.getpid(), path_bases=wf.path_bases())
+    except BaseException:
+        store.close()
+        raise
     return _execute(wf, store, values, options or RunOptions(), registry, completed=None)
 
 
+SNAPSHOT = "workflow.yaml"
+
+
 def resume_run(run_dir: str | Path, options: RunOptions | None = None, registry: Registry | None = None) -> RunResult:
-    """Rerun only what did not finish in an earlier run, in the same run directory."""
+    """Rerun only what did not finish in an earlier run, in the same run directory.
+
+    The steps come from the run's own snapshot (``workflow.yaml``), never from the workflow
+    file, which may have been edited or removed since: old outputs continue only under the step
+    definitions that made them. The run directory is locked first, so a run that is still
+    running cannot be resumed a second time."""
     registry = registry or default_registry()
     store = RunStore.open(Path(run_dir))
-    info = store.run_info()
-    if info.get("status") == "succeeded":
-        raise UserError(f"{run_dir}: this run already succeeded; nothing to resume")
-    wf = load_workflow(Path(info["workflow"]), registry)
-    values = read_json(store.root / "inputs.json", {})
-    completed = _completed_nodes(wf, store)
-    store.update_run(status="running", resumed=utc_now(), error=None, error_step=None)
-    store.event("resume", reused=sorted(completed))
+    store.lock()
+    try:
+        info = store.run_info()
+        if info.get("status") == "succeeded":
+            raise UserError(f"{run_dir}: this run already succeeded; nothing to resume")
+        wf = _snapshot_workflow(store, info, registry)
+        values = _recorded_inputs(wf, store)
+        completed = _completed_nodes(wf, store)
+        store.update_run(status="running", resumed=utc_now(), error=None, error_step=None, pid=os.getpid())
+        store.event("resume", reused=sorted(completed), damaged_events=store.damaged_events or None)
+    except BaseException:
+        store.close()
+        raise
     return _execute(wf, store, values, options or RunOptions(), registry, completed)
+
+
+def _snapshot_workflow(store: RunStore, info: dict, registry: Registry) -> Workflow:
+    """The workflow as the run recorded it, with relative paths starting where they did."""
+    snapshot = store.root / SNAPSHOT
+    if not snapshot.is_file():
+        raise UserError(f"{store.root}: the run has no {SNAPSHOT} snapshot of its workflow; it cannot be resumed")
+    wf = load_workflow(snapshot, registry)
+    bases = info.get("path_bases")
+    if isinstance(bases, dict):
+        wf.apply_path_bases(bases)
+    else:  # a record from before path_bases: paths start where the workflow file was
+        origin = str(Path(str(info.get("workflow") or snapshot)).parent)
+        wf.apply_path_bases({s.id: {"": origin} for s in wf.all_steps()})
+    return wf
+
+
+def _recorded_inputs(wf: Workflow, store: RunStore) -> dict:
+    """The run's inputs. A value the record redacted (it held a secret) is read again from the
+    environment when it came from a default; otherwise the run cannot go on with it."""
+    values = read_json(store.root / "inputs.json", {})
+    if not isinstance(values, dict):
+        raise UserError(f"{store.root / 'inputs.json'}: damaged record (not a mapping of inputs)")
+    hidden = [k for k, v in values.items() if isinstance(v, str) and "[redacted " in v]
+    if hidden:
+        fresh = resolve_inputs(wf, {k: v for k, v in values.items() if k not in hidden})
+        for name in hidden:
+            spec = wf.inputs.get(name)
+            if spec is None or not has_expression(spec.default):
+                raise UserError(f"input {name!r} of {store.root} held a secret, which run records never keep; "
+                                "start a new run")
+            values[name] = fresh[name]
+    return values
 
 
 def _completed_nodes(wf: Workflow, store: RunStore) -> dict[str, dict]:

@@ -9,12 +9,20 @@ keeps everything done before the failure.
       steps/<id>/outputs.json, steps/<id>/artifacts/...
       steps/<loop>/iterations/<n>/<id>/...   every iteration of a loop
       outputs.json, metrics.json
+
+Guarantees: every record file has one mode (what ``open`` gives under the user's umask, also for
+files written atomically); values of environment variables whose names look like keys, tokens or
+passwords never reach a record or a log line (:func:`redact`); one process at a time writes a
+run directory (an ``fcntl`` lock; a second writer is refused); a damaged ``run.json`` or a torn
+line of ``events.jsonl`` is reported and skipped by the readers, never a traceback.
 """
 from __future__ import annotations
 
 import datetime as _dt
+import fcntl
 import json
 import os
+import re
 import tempfile
 import threading
 import time
@@ -27,12 +35,72 @@ import yaml
 from pipflow.errors import UserError
 
 
-def atomic_write(path: Path, content: str | bytes) -> None:
-    """Write a file so that readers see the old or the new content, never a torn one."""
+def _umask() -> int:
+    mask = os.umask(0o022)
+    os.umask(mask)
+    return mask
+
+
+FILE_MODE = 0o666 & ~_umask()  # the mode `open()` gives a new file: every record file has it
+
+# -- secrets ---------------------------------------------------------------------------------
+SECRET_NAME = re.compile(r"KEY|TOKEN|SECRET|PASSW|PWD|CREDENTIAL|AUTH|COOKIE|SESSION|PRIVATE|SIGNATURE",
+                         re.IGNORECASE)
+_MIN_SECRET = 6  # shorter values ("1", "true") would redact ordinary text
+_secrets: dict[str, str] = {}  # value -> variable name
+_secrets_lock = threading.Lock()
+
+
+def looks_secret(name: str) -> bool:
+    """Whether an environment variable's name says that its value is a key, token or password."""
+    return bool(SECRET_NAME.search(name))
+
+
+def register_secrets(environ: Any = None) -> None:
+    """Remember the values of secret-looking environment variables, so that :func:`redact`
+    removes them from whatever pipflow writes (records, events, error messages)."""
+    environ = os.environ if environ is None else environ
+    with _secrets_lock:
+        for name, value in environ.items():
+            if looks_secret(name) and isinstance(value, str) and len(value) >= _MIN_SECRET:
+                _secrets[value] = name
+
+
+def redact(text: str) -> str:
+    """``text`` with every registered secret value (also as it appears inside JSON strings)
+    replaced by ``[redacted NAME]``."""
+    if not _secrets:
+        return text
+    for value, name in list(_secrets.items()):
+        for form in {value, json.dumps(value)[1:-1]}:
+            if form in text:
+                text = text.replace(form, f"[redacted {name}]")
+    return text
+
+
+def _redact_bytes(data: bytes) -> bytes:
+    if not _secrets:
+        return data
+    for value, name in list(_secrets.items()):
+        raw = value.encode("utf-8")
+        if raw in data:
+            data = data.replace(raw, f"[redacted {name}]".encode())
+    return data
+
+
+# -- files -----------------------------------------------------------------------------------
+def atomic_write(path: Path, content: str | bytes, redacted: bool = True) -> None:
+    """Write a file so that readers see the old or the new content, never a torn one, with
+    :data:`FILE_MODE`. Secrets are redacted unless ``redacted=False`` (caches, whose content
+    hashes must match what the step returned)."""
     path.parent.mkdir(parents=True, exist_ok=True)
-    data = content.encode("utf-8") if isinstance(content, str) else content
+    if isinstance(content, str):
+        data = (redact(content) if redacted else content).encode("utf-8")
+    else:
+        data = _redact_bytes(content) if redacted else content
     fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.")
     try:
+        os.fchmod(fd, FILE_MODE)
         with os.fdopen(fd, "wb") as fh:
             fh.write(data)
         os.replace(tmp, path)
@@ -49,10 +117,27 @@ def write_json(path: Path, value: Any) -> None:
 
 
 def read_json(path: Path, default: Any = None) -> Any:
+    """A JSON file's value; ``default`` if it does not exist. A damaged file raises
+    :class:`DamagedRecord` (a UserError naming the file and the cause)."""
     try:
         return json.loads(path.read_text(encoding="utf-8"))
     except FileNotFoundError:
         return default
+    except (UnicodeDecodeError, json.JSONDecodeError) as err:
+        where = f":{err.lineno}:{err.colno}" if isinstance(err, json.JSONDecodeError) else ""
+        raise DamagedRecord(f"{path}{where}: damaged record ({_short_cause(err)})") from None
+    except IsADirectoryError:
+        raise DamagedRecord(f"{path}: damaged record (a folder where a file should be)") from None
+
+
+def _short_cause(err: Exception) -> str:
+    if isinstance(err, json.JSONDecodeError):
+        return f"not valid JSON: {err.msg}"
+    return "not UTF-8 text"
+
+
+class DamagedRecord(UserError):
+    """A record file cannot be read (edited by hand, truncated, not JSON)."""
 
 
 def utc_now() -> str:
@@ -66,21 +151,53 @@ class RunStore:
         self.root = root
         self._lock = threading.Lock()
         self._events = None
+        self._dir_lock: int | None = None
+        self.damaged_events: list[int] = []  # line numbers of events.jsonl that could not be read
         self.listener: Callable[[dict], None] | None = None  # e.g. a progress display
+        register_secrets()
 
     @classmethod
     def create(cls, runs_dir: Path, workflow_name: str) -> "RunStore":
         stamp = _dt.datetime.now(_dt.timezone.utc).strftime("%Y%m%dT%H%M%SZ")
         root = Path(runs_dir) / f"{stamp}-{workflow_name}-{uuid.uuid4().hex[:6]}"
-        root.mkdir(parents=True, exist_ok=False)
-        return cls(root)
+        try:
+            root.mkdir(parents=True, exist_ok=False)
+            probe = root / ".pipflow-probe"  # /proc and friends accept mkdir but not files
+            probe.write_bytes(b"")
+            probe.unlink()
+        except OSError as err:
+            cause = err.strerror or type(err).__name__
+            if Path(runs_dir).exists() and not Path(runs_dir).is_dir():
+                cause = "it is a file, not a folder"
+            raise UserError(f"--runs-dir {runs_dir}: cannot write a run record there ({cause})") from None
+        store = cls(root)
+        store.lock()
+        return store
 
     @classmethod
     def open(cls, root: Path) -> "RunStore":
         root = Path(root)
-        if not (root / "run.json").exists():
+        if not (root / "run.json").is_file():
             raise UserError(f"{root}: not a pipflow run directory (no run.json)")
         return cls(root)
+
+    def lock(self) -> None:
+        """Become the one process that writes this run (released by :meth:`close`); a second
+        writer (``resume`` of a run that is still running) is refused."""
+        if self._dir_lock is not None:
+            return
+        fd = os.open(self.root, os.O_RDONLY | getattr(os, "O_DIRECTORY", 0))
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            os.close(fd)
+            try:
+                pid = (read_json(self.root / "run.json", {}) or {}).get("pid")
+            except DamagedRecord:
+                pid = None
+            raise UserError(f"{self.root}: another pipflow process{f' (pid {pid})' if pid else ''} is writing "
+                            "this run; wait until it ends (or stop it) and try again") from None
+        self._dir_lock = fd
 
     # -- files ---------------------------------------------------------------------------
     def step_dir(self, step_id: str, iteration: tuple[str, int] | None = None) -> Path:
@@ -108,7 +225,10 @@ class RunStore:
             return info
 
     def run_info(self) -> dict:
-        return read_json(self.root / "run.json", {})
+        info = read_json(self.root / "run.json", {})
+        if not isinstance(info, dict):
+            raise DamagedRecord(f"{self.root / 'run.json'}: damaged record (not a JSON object)")
+        return info
 
     # -- events --------------------------------------------------------------------------
     def event(self, event: str, step: str | None = None, /, **fields: Any) -> None:
@@ -116,11 +236,13 @@ class RunStore:
         if step is not None:
             record["step"] = step
         record.update(fields)
-        line = json.dumps(record, default=str) + "\n"
+        line = redact(json.dumps(record, default=str))
+        if _secrets:
+            record = json.loads(line)
         with self._lock:
             if self._events is None:
-                self._events = open(self.root / "events.jsonl", "a", encoding="utf-8")
-            self._events.write(line)
+                self._events = self._open_events()
+            self._events.write(line + "\n")
             self._events.flush()
         if self.listener is not None:
             try:
@@ -128,25 +250,56 @@ class RunStore:
             except Exception:  # a display that cannot write (closed pipe) must not fail the run
                 self.listener = None
 
+    def _open_events(self):
+        path = self.root / "events.jsonl"
+        fh = open(path, "a+b")
+        if fh.tell() > 0:  # a torn last line (a killed process) must not swallow the next event
+            fh.seek(-1, os.SEEK_END)
+            if fh.read(1) != b"\n":
+                fh.write(b"\n")
+        fh.close()
+        return open(path, "a", encoding="utf-8")
+
     def events(self) -> list[dict]:
+        """The readable events; the numbers of lines that are not (a torn last line, a hand
+        edit) are kept in :attr:`damaged_events`."""
         try:
-            lines = (self.root / "events.jsonl").read_text(encoding="utf-8").splitlines()
+            raw = (self.root / "events.jsonl").read_bytes()
         except FileNotFoundError:
             return []
-        return [json.loads(line) for line in lines if line.strip()]
+        out, self.damaged_events = [], []
+        for number, line in enumerate(raw.split(b"\n"), start=1):
+            if not line.strip():
+                continue
+            try:
+                event = json.loads(line.decode("utf-8"))
+            except (UnicodeDecodeError, json.JSONDecodeError):
+                self.damaged_events.append(number)
+                continue
+            if isinstance(event, dict):
+                out.append(event)
+            else:
+                self.damaged_events.append(number)
+        return out
 
     def close(self) -> None:
         with self._lock:
             if self._events is not None:
                 self._events.close()
                 self._events = None
+            if self._dir_lock is not None:
+                os.close(self._dir_lock)  # closing the descriptor releases the flock
+                self._dir_lock = None
 
 
 def list_runs(runs_dir: Path) -> list[Path]:
     """Run directories under ``runs_dir``, newest first."""
     if not Path(runs_dir).is_dir():
         return []
-    runs = [p for p in Path(runs_dir).iterdir() if (p / "run.json").exists()]
+    try:
+        runs = [p for p in Path(runs_dir).iterdir() if (p / "run.json").exists()]
+    except OSError as err:
+        raise UserError(f"{runs_dir}: cannot list runs ({err.strerror or err})") from None
     return sorted(runs, key=lambda p: p.name, reverse=True)
 
 

@@ -229,6 +229,17 @@ def _reference_diagnostics(wf: Workflow, by_id: dict, loops: dict, registry: Reg
         loc = output_data.where(key) if isinstance(output_data, SourceDict) else None
         sites.append((f"output {key!r}", value, loc, None, None))
     out: list[Diagnostic] = []
+    for name, spec in wf.inputs.items():  # a default is resolved before any step: env only
+        try:
+            refs = template_references(spec.default)
+        except ExpressionError as err:
+            out.append(Diagnostic(spec.loc, f"input {name!r}: default: {err}"))
+            continue
+        for ref in refs:
+            problem = _check_env(ref, wf) if ref.name == "env" else \
+                f"a default may read only environment variables (${{env.NAME}}), not {ref.name!r}"
+            if problem:
+                out.append(Diagnostic(spec.loc, f"input {name!r}: default: {problem}"))
     for label, value, loc, node, loop_id in sites:
         try:
             refs = template_references(value)
@@ -242,6 +253,17 @@ def _reference_diagnostics(wf: Workflow, by_id: dict, loops: dict, registry: Reg
     return out
 
 
+def _check_env(ref: Reference, wf: Workflow) -> str | None:
+    """A workflow reads only the environment variables it declares under ``env:`` (a shared
+    workflow file must not be able to read a user's keys by naming them)."""
+    if ref.attr is None:
+        return "'env' must name one variable, as ${env.NAME}, declared under 'env:'"
+    if ref.attr not in wf.env:
+        return (f"environment variable {ref.attr!r} is not declared; add it to the workflow's "
+                f"top-level 'env:' list (env: [{', '.join([*wf.env, ref.attr])}])")
+    return None
+
+
 def _check_reference(ref: Reference, node, loop_id, wf: Workflow, by_id, loops, owners, registry) -> str | None:
     if ref.name == "inputs":
         if ref.attr is None or ref.attr in wf.inputs:
@@ -250,7 +272,7 @@ def _check_reference(ref: Reference, node, loop_id, wf: Workflow, by_id, loops, 
         return f"unknown input 'inputs.{ref.attr}'" + (f"; did you mean 'inputs.{close[0]}'?" if close else
                                                        f"; declared inputs: {', '.join(wf.inputs) or 'none'}")
     if ref.name == "env":
-        return None
+        return _check_env(ref, wf)
     if ref.name in ("previous", "iteration"):
         if loop_id is None:
             return f"'{ref.name}' is only defined inside a loop"
