@@ -4,7 +4,7 @@
 Goal conditions (task ground truth and translator output share this shape)::
 
     {"in": {PLACE: [OBJECT, ...]},                 # the object lies in/on the place at the end
-     "state": {ENTITY: [CONDITION, ...]},           # open closed on off sliced clean dirty hot
+     "state": {ENTITY: [CONDITION, ...]},           # open closed on off sliced clean dirty hot cold whole
      "count": [{"category": C, "in": PLACE, "at_least": N}]}   # vague: any N members of C
 
 ``count`` conditions cannot be written as PDDL as they stand (which members?); the translator
@@ -28,6 +28,8 @@ CONDITIONS: dict[str, tuple[str, bool, str]] = {
     "on": ("is-on", True, "toggleable"), "off": ("is-on", False, "toggleable"),
     "sliced": ("sliced", True, "sliceable"), "clean": ("dirty", False, "washable"),
     "dirty": ("dirty", True, "washable"), "hot": ("hot", True, "heatable"),
+    # no action of the domain reaches these two; a goal may keep them where they hold already
+    "cold": ("hot", False, "heatable"), "whole": ("sliced", False, "sliceable"),
 }
 
 

@@ -1,0 +1,108 @@
+"""The grammar of household command English, for lark's Earley parser.
+
+Written over token classes, not words: the tagger (:mod:`pipflow.household.parser`) turns the
+command into a sequence of classes from the lexicon (:mod:`pipflow.household.lexicon`) and the
+world's names (``NOUN``), so the grammar is the same for every home. ``@CLASS`` below stands for
+a class *or* that class doubling as a world name: a word such as "trash" or "microwave" is a verb
+in "trash the mug" and a place in "put the mug in the trash"; the tagger emits ``V_TRASH__NOUN``
+and the parse decides. Earley keeps every reading of an ambiguous sentence; the translator
+resolves each, and refuses when they mean different things (never a silent pick).
+
+The sentence shapes: clauses joined by "and", "then", commas; a clause is a change of state
+("slice the bread", "heat the egg in the microwave"), a switch ("turn off the TV"), a move ("put
+the pen on the desk", with gapping: "and the pillow on the bed"), a put-away, a trash, a wanted
+state ("leave the fridge open", "the TV should be off"), an observation ("the desk lamp is on")
+or a state cue ("nobody is reading", "we do not need the TV anymore", "it is too bright").
+"""
+from __future__ import annotations
+
+from pipflow.household.lexicon import PHRASES
+
+_RULES = r"""
+start: _sep* item (_sep+ item)* _sep*
+_sep: COMMA | END | @AND | @THEN | @BUT
+
+?item: change | toggle | put | gap | away | trash | request | observe | cue
+
+change: _vstate @UP? things via?
+      | _vstate things @UP via?
+      | @V_CLEAN things via?
+_vstate: @V_STATE | @V_OPEN | @V_SHUT | @V_WARM
+via: (@IN | @ON | @WITH | @AT) place
+
+toggle: @V_TOGGLE onoff things
+      | @V_TOGGLE things onoff
+      | @V_SHUT off things
+      | @V_SHUT things off
+onoff: on | off
+on: @ON
+off: @OFF | @OUT
+
+put: _vput @UP? things source? target?
+   | _vput @UP? things target source
+   | _vput @OUT things | _vput things @OUT
+   | @V_LEAVE things target
+_vput: @V_PUT | @V_THROW
+source: @FROM place | @OUT @OF? place | @OFF @OF? place
+target: _prep place | @SOMEWHERE? bare
+_prep: @IN | @ON | @TO | @AT | @BACK @IN | @BACK @ON | @BACK @TO
+place: @THE? noun
+bare: noun
+
+gap: things target
+
+away: @V_PUT @AWAY things | @V_PUT things @AWAY | @V_PUT things @BACK | @V_PUT @BACK things
+    | @V_TIDY @UP? things | @V_TIDY things @UP? | @V_CLEAN @UP things | @V_CLEAN things @UP
+
+trash: @V_TRASH things | @V_THROW @AWAY things | @V_THROW things @AWAY | @V_THROW things @OUT
+
+request: @V_LEAVE things state
+       | @V_MAKE things state
+       | @V_MAKE @SURE @THAT? things (@IS | @SHOULD @BE) state
+       | @SUBJ? (@WANT | @NEED) things (@TO @BE)? state
+       | things @SHOULD @BE? state
+state: @ADJ | @V_OPEN | @V_SHUT | @V_CLEAN | @V_WARM | @V_STATE | on | off | @TOGGLED onoff
+
+observe: things @IS state
+
+cue: @NOBODY @IS? activity (@TO | @ON | @AT)? things?
+   | @SUBJ? @DONOT @NEED things (on | @ANYMORE)?
+   | things @IS @NOT @NEEDED @ANYMORE?
+   | @IT @IS @INTENS* lightcue @HERE?
+   | @SUBJ @CANNOT @SEE @HERE?
+activity: @ACTIVITY
+lightcue: @LIGHTCUE
+
+things: np ((COMMA | @AND | COMMA @AND) np)*
+np: sel exception?
+exception: @EXCEPT things
+sel: quant? @OF? @THE? count? adj* noun rel?
+   | @EVERYTHING where?
+   | @THE @THING where?
+   | quant? @OF? @IT
+quant: @ALL | @EVERY | @BOTH
+count: NUM @OF?
+adj: @ADJ | @V_CLEAN | @V_WARM | @V_OPEN | @V_SHUT
+rel: @THAT @IS state | @THAT @IS where | @FROM place
+where: (@IN | @ON) place
+noun: NOUN__
+"""
+
+NOUN_DUAL = "__NOUN"
+
+
+def classes() -> list[str]:
+    """Every token class of the lexicon (plus the punctuation and number classes)."""
+    return sorted({cls for cls, _ in PHRASES.values()})
+
+
+def grammar_text() -> str:
+    """The lark grammar: ``@C`` expanded to ``(C | C__NOUN)``, ``NOUN__`` to ``NOUN`` and every
+    dual class; the terminals are declared (a custom lexer supplies them)."""
+    text = _RULES
+    duals = [c + NOUN_DUAL for c in classes()]
+    for c in sorted(classes(), key=len, reverse=True):
+        text = text.replace("@" + c, f"({c} | {c}{NOUN_DUAL})")
+    text = text.replace("NOUN__", " | ".join(["NOUN"] + duals))
+    terminals = ["NOUN", "NUM", "COMMA", "END"] + classes() + duals
+    return text + "\n%declare " + " ".join(terminals) + "\n"

@@ -1,0 +1,167 @@
+"""The words of household command English: what the parser's grammar is written over.
+
+Two halves. The *world's* words (object, place and category names and their ``words``, with
+plurals) come from the world file, so a new home needs no code. The *command* words below are
+a small, closed lexicon: verbs that ask for a state, adjectives that name one, the function words
+of the grammar, and the **state cues** of vague commands ("nobody is watching the TV" means the
+TV may go off). Each word maps to a token class of the grammar (:mod:`pipflow.household.grammar`)
+and, where it carries meaning, a value (a goal condition, a polarity). docs/household.md lists
+them for users. A word in neither half is never skipped: the parser refuses and quotes it.
+"""
+from __future__ import annotations
+
+import re
+
+#: verbs asking for a state (value: the goal condition); "open", "shut", "clean", "warm" have
+#: classes of their own because they are adjectives too, or start a phrasal verb ("clean up")
+STATE_VERBS = {
+    "slice": "sliced", "cut": "sliced", "chop": "sliced", "dice": "sliced", "halve": "sliced",
+    "wash": "clean", "rinse": "clean", "scrub": "clean", "wipe": "clean", "clean": "clean",
+    "heat": "hot", "cook": "hot", "reheat": "hot", "microwave": "hot", "toast": "hot", "boil": "hot",
+    "bake": "hot", "fry": "hot", "warm": "hot",
+    "open": "open", "close": "closed", "shut": "closed",
+}
+#: adjectives and participles naming a state (value: the condition)
+ADJECTIVES = {
+    "sliced": "sliced", "chopped": "sliced", "diced": "sliced",
+    "clean": "clean", "washed": "clean", "cleaned": "clean", "rinsed": "clean", "dirty": "dirty",
+    "filthy": "dirty", "used": "dirty",
+    "hot": "hot", "warm": "hot", "heated": "hot", "warmed": "hot", "cooked": "hot", "cold": "cold",
+    "cool": "cold", "unheated": "cold", "whole": "whole", "unsliced": "whole",
+    "open": "open", "opened": "open", "closed": "closed", "shut": "closed",
+}
+#: conditions a plan can reach from the other polarity (the domain's actions); the others
+#: (``dirty``, ``cold``, ``whole``) only select, or are kept where they already hold
+REACHABLE = {"open", "closed", "on", "off", "sliced", "clean", "hot"}
+#: the place property an action needs when the command names where it happens ("heat the egg
+#: in the microwave": the microwave must be a heater)
+VIA_PROPERTY = {"hot": "heater", "clean": "sink", "sliced": "receptacle"}
+
+#: state cues: activities whose absence means "off"; ``None``: only what the sentence names,
+#: a category word: that category of the world when the sentence names nothing
+ACTIVITIES = {"watching": None, "reading": "light", "using": None, "listening": None, "playing": None,
+              "working": None, "looking": None, "studying": "light", "cooking": None}
+#: "it is (too) bright" -> off, "it is dark" -> on; both speak of the world's category "light"
+LIGHT_CUES = {"bright": "off", "sunny": "off", "dark": "on", "gloomy": "on", "dim": "on"}
+LIGHT_CATEGORY_WORD = "light"
+
+#: one-or-more-word phrases of command English -> (token class, value)
+PHRASES: dict[tuple[str, ...], tuple[str, object]] = {}
+
+
+def _add(cls: str, words: str, value: object = None) -> None:
+    for w in words.split(","):
+        PHRASES[tuple(w.split())] = (cls, value)
+
+
+for _w, _c in STATE_VERBS.items():
+    _add({"open": "V_OPEN", "shut": "V_SHUT", "clean": "V_CLEAN", "warm": "V_WARM"}.get(_w, "V_STATE"),
+         _w, _c)
+for _w, _c in ADJECTIVES.items():
+    if tuple(_w.split()) not in PHRASES:
+        _add("ADJ", _w, _c)
+_add("V_TOGGLE", "turn,switch,power,flip,flick")
+_add("TOGGLED", "turned,switched,powered")
+_add("V_PUT", "put,place,move,bring,take,carry,set,transfer,gather,collect,stash,drop,store,stick,pop,lay,"
+     "hang,deliver,fetch,get,pick,relocate,stack")
+_add("V_THROW", "throw,toss,chuck")
+_add("V_TRASH", "trash,discard,bin,dump,junk,get rid of,dispose of,throw away,throw out")
+_add("V_TIDY", "tidy,return,clear away")
+_add("V_LEAVE", "leave,keep")
+_add("V_MAKE", "make")
+_add("SURE", "sure,certain")
+_add("ACTIVITY", ",".join(ACTIVITIES))
+_add("LIGHTCUE", ",".join(LIGHT_CUES))
+for _w in LIGHT_CUES:
+    PHRASES[(_w,)] = ("LIGHTCUE", LIGHT_CUES[_w])
+_add("SEE", "see")
+_add("THE", "the,a,an,my,our,your,its,their,his,her,these,those,this")
+_add("THAT", "that,which,who")
+_add("ALL", "all")
+_add("EVERY", "every,each,any")
+_add("BOTH", "both")
+_add("EVERYTHING", "everything,all things,all the things,anything")
+_add("THING", "thing,things,stuff,items,objects")
+_add("AND", "and,as well as,plus,along with")
+_add("THEN", "then,after that,afterwards,next,finally,and then,also")
+_add("BUT", "but")
+_add("IN", "in,into,inside,inside of,within")
+_add("ON", "on,onto,on top of,upon")
+_add("TO", "to,over to,back to")
+_add("AT", "at,by,next to")
+_add("WITH", "with")
+_add("FROM", "from,out of,off of")
+_add("OUT", "out")
+_add("OFF", "off")
+_add("UP", "up")
+_add("AWAY", "away")
+_add("BACK", "back")
+_add("OF", "of")
+_add("IT", "it,them,they")
+_add("EXCEPT", "except,except for,apart from,other than,besides,excluding,but not")
+_add("NOT", "not")
+_add("IS", "is,are,is still,are still")
+_add("BE", "be,stay,remain,stays,remains")
+_add("SHOULD", "should,must,has to,have to,needs to,need to,ought to,got to")
+_add("SUBJ", "i,we,you")
+_add("WANT", "want,would like,like,wish,d like,prefer")
+_add("NEED", "need,needs")
+_add("NEEDED", "needed,necessary,required,in use")
+_add("DONOT", "do not,does not,did not,no longer,dont")
+_add("ANYMORE", "anymore,any more,any longer,for now,for the night,tonight,right now")
+_add("NOBODY", "nobody,no one,noone,none of us")
+_add("INTENS", "very,too,so,really,quite,rather,extremely,pretty,a bit,a little,way too")
+_add("CANNOT", "can not,could not,cannot")
+_add("SOMEWHERE", "somewhere,some place,someplace")
+_add("HERE", "here,in here")
+
+#: category words that name a mass, not one thing: "put away the fruit" means all of it, while
+#: "turn off the lamp" names one lamp (and is asked back when the home has several)
+MASS_NOUNS = {"fruit", "food", "bedding", "cutlery", "stationery", "light", "lighting", "tableware", "cookware",
+              "laundry", "rubbish", "equipment", "furniture", "produce", "veg", "electronics", "clothing",
+              "silverware", "crockery", "groceries", "trash", "garbage", "stuff"}
+#: determiners that ask for one thing of a kind
+INDEFINITE = {"a", "an"}
+
+#: politeness and framing words that carry no content; dropped before parsing (listed in docs)
+FILLER = {("please",), ("kindly",), ("just",), ("quickly",), ("now",), ("for", "me"), ("for", "us"), ("could", "you"),
+          ("can", "you"), ("would", "you"), ("will", "you"), ("i", "need", "you", "to"), ("i", "want", "you", "to"),
+          ("we", "need", "you", "to"), ("go", "ahead", "and"), ("go", "and"), ("hey",), ("robots",), ("team",),
+          ("thanks",), ("thank", "you"), ("as", "well"), ("right", "away"), ("let", "us"), ("lets",), ("let", "s"),
+          ("for", "me", "please"), ("me",), ("ok",), ("okay",), ("already",), ("again",)}
+
+
+def normalize(text: str) -> str:
+    """Lower case, contractions spelt out ("don't" -> "do not"), hyphens and underscores as
+    spaces, so that "desk-lamp", "desk_lamp" and "desk lamp" read alike."""
+    t = text.lower().replace("’", "'")
+    t = re.sub(r"\b(don't|dont)\b", "do not", t)
+    t = re.sub(r"\bdoesn't\b", "does not", t)
+    t = re.sub(r"\bcan't\b|\bcannot\b", "can not", t)
+    t = re.sub(r"\bwon't\b", "will not", t)
+    t = re.sub(r"\b(it|that|there|what|who)'s\b", r"\1 is", t)
+    t = re.sub(r"\b(i|we|you)'d\b", r"\1 would", t)
+    t = re.sub(r"\b(we|you|they)'re\b", r"\1 are", t)
+    t = re.sub(r"\bi'm\b", "i am", t)
+    t = re.sub(r"n't\b", " not", t)
+    t = re.sub(r"'s\b", "", t)
+    t = t.replace("-", " ").replace("_", " ")
+    return t
+
+
+def words_of(text: str) -> list[str]:
+    """Tokens: words, numbers and the punctuation that separates clauses."""
+    return re.findall(r"\d+|[a-z]+|[.,;!?:]", normalize(text))
+
+
+def plurals(phrase: str) -> list[str]:
+    """English plural forms of a phrase's last word (enough for the names of things)."""
+    if phrase.endswith("y") and not phrase.endswith(("ay", "ey", "oy", "uy")):
+        return [phrase[:-1] + "ies"]
+    if phrase.endswith(("s", "x", "ch", "sh", "z")):
+        return [phrase + "es"]
+    if phrase.endswith("o"):
+        return [phrase + "es", phrase + "s"]
+    if phrase.endswith("fe"):
+        return [phrase[:-2] + "ves", phrase + "s"]
+    return [phrase + "s"]

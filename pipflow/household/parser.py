@@ -1,0 +1,388 @@
+"""The offline parser for household commands: command + world -> household orders.
+
+Compositional, in three steps, and never by word position:
+
+1. **tag**: the command's words become token classes: the world's names (longest match, with
+   plurals, typo-tolerant: "fridgge" reads as "fridge" and a note says so), numbers, and the
+   closed lexicon of :mod:`pipflow.household.lexicon`. A word in neither is a
+   :class:`TranslationError` that quotes it: nothing is skipped silently (politeness words such
+   as "please" carry no content and are listed in the lexicon).
+2. **parse**: lark's Earley parser over the grammar of :mod:`pipflow.household.grammar` builds the
+   sentence structure (clauses, coordination, gapping, pronouns, exceptions, relative clauses,
+   state cues). Earley keeps every reading; all of them are returned.
+3. **build**: each reading becomes an *order* (``schemas/household_order.schema.json``): a list
+   of statements, each with the selectors of the things it is about and the words it came from.
+   Which objects a selector means, and whether the request is possible, is the resolver's job
+   (:mod:`pipflow.household.resolver`), not the parser's.
+"""
+from __future__ import annotations
+
+import difflib
+import functools
+import json
+from dataclasses import dataclass, field
+
+from lark import Lark, Token, Tree
+from lark.exceptions import UnexpectedInput
+from lark.lexer import Lexer
+from lark.visitors import CollapseAmbiguities
+
+from pipflow.errors import TranslationError
+from pipflow.household.grammar import NOUN_DUAL, grammar_text
+from pipflow.household.lexicon import ACTIVITIES, FILLER, LIGHT_CATEGORY_WORD, PHRASES, plurals, words_of
+from pipflow.language.numbers import read_number
+
+#: the most readings of one ambiguous command that are compared (each is resolved)
+MAX_READINGS = 16
+
+
+@dataclass
+class Tag:
+    """One token for the grammar: its class, its meaning, and the words it stands for."""
+
+    cls: str
+    value: object
+    words: str
+    nouns: list[dict] = field(default_factory=list)   # world readings: {"kind", "name", "plural"}
+
+
+# ---------------------------------------------------------------------------------------------
+# the world's words
+# ---------------------------------------------------------------------------------------------
+def world_phrases(world: dict) -> dict[tuple[str, ...], list[dict]]:
+    """Word sequences -> the world things they name: every object, place and category name and
+    ``words`` entry, with plural forms. A phrase may name several things ("lamp")."""
+    index: dict[tuple[str, ...], list[dict]] = {}
+
+    def add(phrase: str, kind: str, name: str, others: list[str]) -> None:
+        base = words_of(phrase)
+        if not base:
+            return
+        # a listed word is a plural when it is the plural of another listed word ("lamps" beside
+        # "lamp"), or, for a category, ends in s ("school supplies", "electronics")
+        listed_plural = any(" ".join(base) in plurals(" ".join(words_of(o))) for o in others) or \
+            (kind == "category" and base[-1].endswith("s") and not base[-1].endswith("ss"))
+        forms = [(tuple(base), listed_plural)] + [(tuple(words_of(p)), True) for p in plurals(" ".join(base))]
+        for words, plural in forms:
+            readings = index.setdefault(words, [])
+            reading = {"kind": kind, "name": name, "plural": plural}
+            if not any(r["kind"] == kind and r["name"] == name for r in readings):
+                readings.append(reading)
+
+    for kind, table in (("object", world.get("objects") or {}), ("place", world.get("places") or {})):
+        for name, e in table.items():
+            phrases = [name] + list(e.get("words") or [])
+            for phrase in phrases:
+                add(phrase, kind, name, phrases)
+    for name, c in (world.get("categories") or {}).items():
+        phrases = [name] + list((c or {}).get("words") or [])
+        for phrase in phrases:
+            add(phrase, "category", name, phrases)
+    return index
+
+
+# ---------------------------------------------------------------------------------------------
+# tagging
+# ---------------------------------------------------------------------------------------------
+PUNCT = {".": "END", ";": "END", "!": "END", "?": "END", ":": "END", ",": "COMMA"}
+
+
+def _vocabulary(world_index: dict) -> set[str]:
+    vocab = {w for k in PHRASES for w in k} | {w for k in world_index for w in k} | {w for k in FILLER for w in k}
+    return {w for w in vocab if len(w) >= 3}
+
+
+def _match(words: list[str], i: int, table: dict, longest: int) -> int:
+    for n in range(min(longest, len(words) - i), 0, -1):
+        if tuple(words[i:i + n]) in table:
+            return n
+    return 0
+
+
+def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
+    """The command as grammar tokens (module docstring, step 1)."""
+    notes = notes if notes is not None else []
+    index = world_phrases(world)
+    words = words_of(command)
+    vocab = _vocabulary(index)
+    # typos: a word known nowhere, close to exactly one known word, is read as that word
+    for k, w in enumerate(words):
+        known = w in vocab or w in PUNCT or w.isdigit() or any(w in key for key in PHRASES) or \
+            any(w in key for key in index) or any(w in key for key in FILLER) or read_number([w], 0)
+        if known or len(w) < 4:
+            continue
+        close = difflib.get_close_matches(w, sorted(vocab), n=2, cutoff=0.8)
+        if close and (len(close) == 1 or difflib.SequenceMatcher(None, w, close[0]).ratio()
+                      > difflib.SequenceMatcher(None, w, close[1]).ratio() + 0.05):
+            notes.append(f"read {w!r} as {close[0]!r}")
+            words[k] = close[0]
+    longest_w = max((len(k) for k in index), default=1)
+    longest_l = max(len(k) for k in PHRASES)
+    longest_f = max(len(k) for k in FILLER)
+    out: list[Tag] = []
+    unknown: list[str] = []
+    i = 0
+    while i < len(words):
+        w = words[i]
+        if w in PUNCT:
+            out.append(Tag(PUNCT[w], w, w))
+            i += 1
+            continue
+        num = read_number([x if x not in PUNCT else None for x in words], i)
+        nw, nl, nf = _match(words, i, index, longest_w), _match(words, i, PHRASES, longest_l), \
+            _match(words, i, FILLER, longest_f)
+        if num is not None and num[1] - i >= max(nw, nl, nf):
+            out.append(Tag("NUM", num[0], " ".join(words[i:num[1]])))
+            i = num[1]
+            continue
+        if nf and nf > max(nw, nl):
+            i += nf
+            continue
+        if nw == 0 and nl == 0:
+            unknown.append(w)
+            i += 1
+            continue
+        n = max(nw, nl)
+        text = " ".join(words[i:i + n])
+        if nw == n and nl == n:
+            cls, value = PHRASES[tuple(words[i:i + n])]
+            out.append(Tag(cls + NOUN_DUAL, value, text, index[tuple(words[i:i + n])]))
+        elif nw == n:
+            out.append(Tag("NOUN", None, text, index[tuple(words[i:i + n])]))
+        else:
+            cls, value = PHRASES[tuple(words[i:i + n])]
+            out.append(Tag(cls, value, text))
+        i += n
+    if unknown:
+        names = sorted(set(world.get("objects") or {}) | set(world.get("places") or {}))
+        raise TranslationError(
+            f"{', '.join(repr(u) for u in dict.fromkeys(unknown))} names nothing in this world and is no word the "
+            f"offline parser knows (in {command.strip()!r}); things of this world: {', '.join(names)}")
+    return out
+
+
+# ---------------------------------------------------------------------------------------------
+# parsing
+# ---------------------------------------------------------------------------------------------
+class _TagLexer(Lexer):
+    """Feeds the tagger's tokens to lark; a token's value is its index in the tag list."""
+
+    def __init__(self, conf: object) -> None:  # lark passes its lexer configuration
+        pass
+
+    def lex(self, data: list[Tag]):  # type: ignore[override]
+        for k, t in enumerate(data):
+            yield Token(t.cls, str(k), start_pos=k, end_pos=k + 1)
+
+
+@functools.lru_cache(maxsize=1)
+def _lark() -> Lark:
+    return Lark(grammar_text(), parser="earley", lexer=_TagLexer, ambiguity="explicit")
+
+
+def _words(tags: list[Tag], node: Tree | Token) -> str:
+    toks = [node] if isinstance(node, Token) else list(node.scan_values(lambda v: isinstance(v, Token)))
+    idx = sorted({int(t) for t in toks})
+    return " ".join(tags[k].words for k in idx)
+
+
+def parse(command: str, world: dict, notes: list[str] | None = None) -> list[dict]:
+    """Every reading of the command as an order (module docstring); TranslationError quoting the
+    words where the command stops making sense to the grammar."""
+    if not isinstance(command, str) or not command.strip():
+        raise TranslationError("the command is empty")
+    notes = notes if notes is not None else []
+    tags = tag(command, world, notes)
+    if not [t for t in tags if t.cls not in ("END", "COMMA")]:
+        raise TranslationError(f"{command.strip()!r} asks for nothing the offline parser can read")
+    try:
+        tree = _lark().parse(tags)
+    except UnexpectedInput as exc:
+        k = getattr(exc, "pos_in_stream", None)
+        k = k if isinstance(k, int) and 0 <= k < len(tags) else len(tags) - 1
+        start = k
+        while start > 0 and tags[start - 1].cls not in ("END",):
+            start -= 1
+        end = k
+        while end + 1 < len(tags) and tags[end + 1].cls not in ("END",):
+            end += 1
+        clause = " ".join(t.words for t in tags[start:end + 1])
+        here = " ".join(t.words for t in tags[k:min(end + 1, k + 4)])
+        raise TranslationError(f"could not place the words '{here}' in '{clause}': the offline parser reads "
+                               "changes of state, moves, put-aways, trashing and state cues (docs/household.md); "
+                               "a language model may read it") from None
+    readings: list[dict] = []
+    seen: set[str] = set()
+    for k, t in enumerate(CollapseAmbiguities().transform(tree)):
+        if k >= MAX_READINGS:
+            break
+        order = Builder(tags, command).order(t)
+        key = json.dumps(order, sort_keys=True)
+        if key not in seen:
+            seen.add(key)
+            readings.append(order)
+    return readings
+
+
+# ---------------------------------------------------------------------------------------------
+# parse tree -> order
+# ---------------------------------------------------------------------------------------------
+def _kids(node: Tree) -> list[Tree | Token]:
+    return list(node.children)
+
+
+class Builder:
+    """One parse tree -> one order (``schemas/household_order.schema.json``)."""
+
+    def __init__(self, tags: list[Tag], command: str):
+        self.tags = tags
+        self.command = command
+
+    # tokens ------------------------------------------------------------------------------
+    def tag_of(self, tok: Token) -> Tag:
+        return self.tags[int(tok)]
+
+    def _cls(self, tok: Token) -> str:
+        return tok.type[:-len(NOUN_DUAL)] if tok.type.endswith(NOUN_DUAL) else tok.type
+
+    def _tokens(self, node: Tree | Token) -> list[Token]:
+        if isinstance(node, Token):
+            return [node]
+        return [c for c in node.children if isinstance(c, Token)]
+
+    def _sub(self, node: Tree, name: str) -> Tree | None:
+        return next((c for c in node.children if isinstance(c, Tree) and c.data == name), None)
+
+    def _subs(self, node: Tree, name: str) -> list[Tree]:
+        return [c for c in node.children if isinstance(c, Tree) and c.data == name]
+
+    def _has(self, node: Tree, cls: str) -> bool:
+        return any(self._cls(t) == cls for t in self._tokens(node))
+
+    # pieces ------------------------------------------------------------------------------
+    def noun(self, node: Tree) -> dict:
+        tok = node.children[0]
+        t = self.tag_of(tok)
+        return {"words": t.words, "readings": [dict(r) for r in t.nouns]}
+
+    def place(self, node: Tree) -> dict:
+        return {**self.noun(self._sub(node, "noun")), "words": _words(self.tags, node)}
+
+    def state(self, node: Tree) -> str:
+        onoff = self._sub(node, "onoff")
+        if onoff is not None:
+            node = onoff
+        if self._sub(node, "on") is not None:
+            return "on"
+        if self._sub(node, "off") is not None:
+            return "off"
+        tok = self._tokens(node)[-1]
+        return str(self.tag_of(tok).value)
+
+    def sel(self, node: Tree) -> dict:
+        out: dict = {"words": _words(self.tags, node)}
+        toks = [self._cls(t) for t in self._tokens(node)]
+        quant = self._sub(node, "quant")
+        if quant is not None:
+            out["all"] = True
+            if self._has(quant, "BOTH"):
+                out["both"] = True
+        if "EVERYTHING" in toks or "THING" in toks:
+            out["everything"] = True
+        if "IT" in toks:
+            out["pronoun"] = True
+        count = self._sub(node, "count")
+        if count is not None:
+            out["count"] = int(self.tag_of(count.children[0]).value)
+        adjs = [str(self.tag_of(self._tokens(a)[0]).value) for a in self._subs(node, "adj")]
+        noun = self._sub(node, "noun")
+        if noun is not None:
+            out.update(noun=self.noun(noun))
+        det = [self.tag_of(t).words for t in self._tokens(node) if self._cls(t) == "THE"]
+        if det:
+            out["det"] = det[0]
+        rel = self._sub(node, "rel")
+        where = self._sub(node, "where") or (self._sub(rel, "where") if rel is not None else None)
+        if rel is not None and self._sub(rel, "state") is not None:
+            adjs.append(self.state(self._sub(rel, "state")))
+        if rel is not None and self._sub(rel, "place") is not None:
+            out["from"] = self.place(self._sub(rel, "place"))
+        if where is not None:
+            out["from"] = self.place(self._sub(where, "place"))
+        if adjs:
+            out["state"] = adjs
+        return out
+
+    def np(self, node: Tree) -> dict:
+        out = self.sel(self._sub(node, "sel"))
+        exc = self._sub(node, "exception")
+        if exc is not None:
+            out["except"] = self.things(self._sub(exc, "things"))
+            out["words"] = _words(self.tags, node)
+        return out
+
+    def things(self, node: Tree) -> list[dict]:
+        return [self.np(n) for n in self._subs(node, "np")]
+
+    def target(self, node: Tree) -> dict:
+        p = self._sub(node, "place") or self._sub(node, "bare")
+        return {**self.noun(self._sub(p, "noun")), "words": _words(self.tags, node)}
+
+    # statements --------------------------------------------------------------------------
+    def statement(self, node: Tree) -> dict:
+        kind = node.data
+        words = _words(self.tags, node)
+        th = self._sub(node, "things")
+        things = self.things(th) if th is not None else []
+        if kind == "change":
+            verb = next(t for t in self._tokens(node) if self._cls(t).startswith("V_"))
+            st = {"op": "change", "things": things, "to": str(self.tag_of(verb).value)}
+            via = self._sub(node, "via")
+            if via is not None:
+                st["via"] = self.place(self._sub(via, "place"))
+        elif kind == "toggle":
+            st = {"op": "change", "things": things, "to": self.state(node)}
+        elif kind == "put":
+            st = {"op": "put", "things": things}
+            src, tgt = self._sub(node, "source"), self._sub(node, "target")
+            if src is not None:
+                st["from"] = self.place(self._sub(src, "place"))
+            if tgt is not None:
+                st["to"] = self.target(tgt)
+        elif kind == "gap":
+            st = {"op": "put", "things": things, "to": self.target(self._sub(node, "target"))}
+        elif kind == "away":
+            st = {"op": "put_away", "things": things}
+        elif kind == "trash":
+            st = {"op": "trash", "things": things}
+        elif kind == "request":
+            st = {"op": "change", "things": things, "to": self.state(self._sub(node, "state"))}
+        elif kind == "observe":
+            st = {"op": "observe", "things": things, "is": self.state(self._sub(node, "state"))}
+        elif kind == "cue":
+            st = self.cue(node, things)
+        else:  # a rule of the grammar without a statement: a bug, not a user error
+            raise AssertionError(f"no statement for grammar rule {kind!r}")
+        st["words"] = words
+        return st
+
+    def cue(self, node: Tree, things: list[dict]) -> dict:
+        st: dict = {"op": "cue", "things": things}
+        act, light = self._sub(node, "activity"), self._sub(node, "lightcue")
+        if act is not None:
+            word = self.tag_of(self._tokens(act)[0]).words
+            st.update(to="off", cue=f"nobody is {word}")
+            if ACTIVITIES.get(word):
+                st["default"] = ACTIVITIES[word]
+        elif light is not None:
+            t = self.tag_of(self._tokens(light)[0])
+            st.update(to=str(t.value), cue=f"it is {t.words}", default=LIGHT_CATEGORY_WORD)
+        elif self._has(node, "SEE"):
+            st.update(to="on", cue="cannot see", default=LIGHT_CATEGORY_WORD)
+        else:
+            st.update(to="off", cue="not needed")
+        return st
+
+    def order(self, tree: Tree) -> dict:
+        items = [c for c in tree.children if isinstance(c, Tree)]
+        return {"domain": "household", "command": self.command, "statements": [self.statement(i) for i in items]}

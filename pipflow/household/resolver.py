@@ -1,0 +1,368 @@
+"""The household resolver: a pure function of (order, world) -> goal conditions, with reasons.
+
+An order (``schemas/household_order.schema.json``) says what the command means in words of the
+world: *which* things (selectors: a name, a category, "all ... except ...", "the dirty mug", "it",
+"everything on the sofa", "3 school supplies") and *what* about them (a state, a place, away,
+trashed, a cue). This module decides which objects those are in this world and whether the
+request can be met, and explains each goal condition with the words it came from, so a user can
+see a misunderstanding before robots move.
+
+Rules it applies (docs/household.md lists them for users):
+
+* a named thing that cannot take a state is a :class:`Refusal` ("the mug cannot be sliced"); a
+  category ("wash the dishes") means its members the action applies to;
+* a selector by state or place that matches nothing is a Refusal that says what holds instead
+  ("no dirty bowl: the bowl is clean"); a singular that matches several things is a
+  :class:`TranslationError` asking which;
+* "heat the egg in the microwave": the egg is hot *and* in the microwave (where it was heated),
+  so no plan heats it on the stove; the place must afford the action (a heater, a sink);
+* a state no action of the domain reaches (``dirty``, ``cold``, ``whole``) is kept where it holds
+  and refused where it does not;
+* state cues ("nobody is reading") set the state of what the sentence names, else of what the
+  command observed ("the desk lamp is on"), else of the cue's category in the world ("light");
+* a condition named for one thing overrides the same condition implied for its whole category
+  ("switch off the lights but leave the desk lamp on"); two named conditions that clash are an
+  error.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from pipflow.errors import Refusal, TranslationError
+from pipflow.household.lexicon import INDEFINITE, MASS_NOUNS, REACHABLE, VIA_PROPERTY
+from pipflow.household.problem import CONDITIONS
+from pipflow.household.world import entity, initial_state, members
+
+_FLAG = {"is-open": "open", "is-on": "on", "dirty": "dirty", "sliced": "sliced", "hot": "hot"}
+
+
+def holds_now(world: dict, name: str, cond: str) -> bool:
+    """Whether a state condition holds in the world as it is (before any plan)."""
+    pred, positive, _ = CONDITIONS[cond]
+    return (name in initial_state(world)[_FLAG[pred]]) == positive
+
+
+def applies(world: dict, name: str, cond: str) -> bool:
+    return CONDITIONS[cond][2] in entity(world, name)["properties"]
+
+
+def _describe(world: dict, name: str) -> str:
+    """The states an entity is in, in words ("dirty, off")."""
+    words = [c for c in CONDITIONS if applies(world, name, c) and holds_now(world, name, c)]
+    return ", ".join(words) or "in no particular state"
+
+
+@dataclass
+class _Condition:
+    cond: str
+    explicit: bool
+    words: str
+
+
+@dataclass
+class _Goal:
+    inside: dict[str, tuple[str, str]] = field(default_factory=dict)       # object -> (place, words)
+    state: dict[str, dict[str, _Condition]] = field(default_factory=dict)  # name -> predicate -> condition
+    count: list[dict] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
+
+
+class Resolver:
+    """One order in one world; see the module docstring."""
+
+    def __init__(self, world: dict):
+        self.world = world
+        self.goal = _Goal()
+        self.last: list[str] = []
+        self.picked: dict[str, str] = {}          # objects taken with no place yet -> words
+        self.observed: list[tuple[list[str], str, str]] = []   # (names, state, words), unused so far
+
+    # selectors -------------------------------------------------------------------------
+    def _candidates(self, sel: dict, words: str) -> tuple[list[str], bool]:
+        """Names a selector's noun may mean, and whether they come from a category (implicit)."""
+        if sel.get("pronoun"):
+            if not self.last:
+                raise TranslationError(f"'{words}': '{sel['words']}' refers to nothing said before it")
+            return list(self.last), False
+        if sel.get("everything"):
+            if "from" not in sel:
+                raise TranslationError(f"'{words}': '{sel['words']}' needs a place (e.g. 'everything on the sofa')")
+            return list(self.world["objects"]), True
+        readings = sel["noun"]["readings"]
+        named = [r for r in readings if r["kind"] in ("object", "place")]
+        if named:
+            return list(dict.fromkeys(r["name"] for r in named)), False
+        out: list[str] = []
+        for r in readings:
+            out += members(self.world, r["name"])
+        return list(dict.fromkeys(out)), True
+
+    def select(self, sel: dict, words: str, *, cond: str | None = None, prop: str | None = None) -> tuple[list[str], bool]:
+        """The world names a selector means (module docstring); ``cond``/``prop``: what the
+        statement will ask of them (a category keeps the members it applies to)."""
+        names, implicit = self._candidates(sel, words)
+        what = sel["words"]
+        if "from" in sel:
+            place = self.place_of(sel["from"], words)
+            there = [n for n in names if n in self.world["objects"] and self.world["objects"][n]["in"] == place]
+            if not there:
+                where = ", ".join(f"{n} is in {self.world['objects'][n]['in']}" for n in names if n in self.world["objects"])
+                raise Refusal(f"'{words}': nothing of '{what}' is in {place}" + (f" ({where})" if where and not implicit else ""))
+            names = there
+        for st in sel.get("state") or []:
+            ok = [n for n in names if applies(self.world, n, st) and holds_now(self.world, n, st)]
+            if not ok:
+                now = "; ".join(f"{n} is {_describe(self.world, n)}" for n in names[:4])
+                raise Refusal(f"'{words}': nothing matches '{what}' in this world" + (f" ({now})" if now else ""))
+            names = ok
+        for ex in sel.get("except") or []:
+            out, _ = self.select(ex, words)
+            missing = [n for n in out if n not in names]
+            if missing:
+                raise TranslationError(f"'{words}': '{ex['words']}' is not one of '{what}'")
+            names = [n for n in names if n not in out]
+        need = CONDITIONS[cond][2] if cond else prop
+        if implicit and need and "count" not in sel:
+            fit = [n for n in names if need in entity(self.world, n)["properties"]]
+            if not fit:
+                raise Refusal(f"'{words}': nothing of '{what}' can be {cond or 'picked up'} "
+                              f"({', '.join(names) or 'there is none'})")
+            names = fit
+        plural = sel.get("all") or sel.get("everything") or sel.get("pronoun") or \
+            any(r.get("plural") for r in (sel.get("noun") or {}).get("readings", []))
+        if implicit and not plural:
+            # a category named in the singular: a mass ("the fruit", bare "light") means all of
+            # it; otherwise it names one thing ("the lamp"), asked back when there are several
+            plural = sel.get("det") is None or sel["noun"]["words"] in MASS_NOUNS
+        if "count" in sel:
+            if implicit:
+                return names, True   # the caller turns a category count into a count condition
+            n = sel["count"]
+            if n != len(names):
+                raise TranslationError(f"'{words}': '{what}' asks for {n} of {len(names)} things named so "
+                                       f"({', '.join(names)}); say which")
+        elif not plural and len(names) > 1:
+            raise TranslationError(f"'{words}': '{what}' could be any of {', '.join(names)}; say which")
+        if sel.get("both") and len(names) != 2:
+            raise TranslationError(f"'{words}': 'both' but '{what}' are {len(names)} things")
+        if not names:
+            raise Refusal(f"'{words}': nothing in this world is '{what}'")
+        return names, implicit
+
+    def place_of(self, place: dict, words: str) -> str:
+        """The one place a place phrase names (a category of places with one member counts)."""
+        names = []
+        for r in place["readings"]:
+            if r["kind"] == "place":
+                names.append(r["name"])
+            elif r["kind"] == "category":
+                names += [m for m in members(self.world, r["name"]) if m in self.world["places"]]
+        names = list(dict.fromkeys(names))
+        if not names:
+            raise TranslationError(f"'{words}': '{place['words']}' is not a place of this world")
+        if len(names) > 1:
+            raise TranslationError(f"'{words}': '{place['words']}' could be {', '.join(names)}; say which")
+        return names[0]
+
+    # goal building -----------------------------------------------------------------------
+    def set_state(self, name: str, cond: str, explicit: bool, words: str) -> None:
+        pred = CONDITIONS[cond][0]
+        have = self.goal.state.setdefault(name, {})
+        old = have.get(pred)
+        if old is not None and old.cond != cond:
+            if old.explicit and not explicit:
+                self.goal.notes.append(f"{name} stays {old.cond} ('{old.words}' names it; '{words}' means its kind)")
+                return
+            if explicit and not old.explicit:
+                self.goal.notes.append(f"{name}: {cond} ('{words}' names it; '{old.words}' meant its kind)")
+            else:
+                raise TranslationError(f"the command asks for {name} to be both {old.cond} ('{old.words}') "
+                                       f"and {cond} ('{words}')")
+        if old is None or old.cond != cond or (explicit and not old.explicit):
+            have[pred] = _Condition(cond, explicit, words)
+
+    def put(self, obj: str, place: str, words: str) -> None:
+        old = self.goal.inside.get(obj)
+        if old is not None and old[0] != place:
+            raise TranslationError(f"the command puts {obj} both in {old[0]} ('{old[1]}') and in {place} ('{words}')")
+        props = self.world["places"][place]["properties"]
+        if "receptacle" not in props and "garbage" not in props:
+            raise Refusal(f"'{words}': nothing can be put in {place}: it is not a receptacle")
+        if "pickupable" not in self.world["objects"][obj]["properties"] and self.world["objects"][obj]["in"] != place:
+            raise Refusal(f"'{words}': {obj} cannot be picked up")
+        self.goal.inside[obj] = (place, words)
+        self.picked.pop(obj, None)
+
+    def want(self, name: str, cond: str, explicit: bool, words: str) -> None:
+        if not applies(self.world, name, cond):
+            if explicit:
+                raise Refusal(f"'{words}': {name} cannot be {cond}: it is not {CONDITIONS[cond][2]} in this world")
+            return
+        if cond not in REACHABLE and not holds_now(self.world, name, cond):
+            raise Refusal(f"'{words}': nothing in this home makes {name} {cond} (it is {_describe(self.world, name)})")
+        self.set_state(name, cond, explicit, words)
+
+    # statements --------------------------------------------------------------------------
+    @staticmethod
+    def counted(sel: dict) -> dict | None:
+        """The selector with its count: "3 school supplies", or "a fruit" (one of a category)."""
+        if "count" in sel:
+            return sel
+        readings = (sel.get("noun") or {}).get("readings", [])
+        if sel.get("det") in INDEFINITE and readings and all(r["kind"] == "category" and not r["plural"] for r in readings):
+            return {**sel, "count": 1}
+        return None
+
+    def objects(self, things: list[dict], words: str, *, cond: str | None = None, prop: str | None = None) -> list[tuple[str, bool]]:
+        out: list[tuple[str, bool]] = []
+        for sel in things:
+            names, implicit = self.select(sel, words, cond=cond, prop=prop)
+            if "count" in sel and implicit:
+                raise TranslationError(f"'{words}': a count of '{sel['noun']['words']}' only makes sense with a "
+                                       "place to gather them")
+            out += [(n, not implicit) for n in names]
+        return list(dict.fromkeys(out))
+
+    def statement(self, st: dict) -> None:
+        op, words = st["op"], st["words"]
+        if op == "change":
+            self.change(st, words)
+        elif op == "put":
+            self.move(st, words)
+        elif op == "put_away":
+            named = self.objects(st["things"], words, prop="pickupable")
+            for n, _ in named:
+                homes = [self.world["categories"][c]["home"] for c in entity(self.world, n)["categories"]
+                         if (self.world["categories"].get(c) or {}).get("home")]
+                if not homes:
+                    raise TranslationError(f"'{words}': {n} has no home in this world (no category of it names one)")
+                self.put(n, homes[0], words)
+            self.last = [n for n, _ in named]
+        elif op == "trash":
+            cans = [p for p, e in self.world["places"].items() if "garbage" in e["properties"]]
+            if len(cans) != 1:
+                raise TranslationError(f"'{words}': the world has {len(cans)} garbage places; say which")
+            named = self.objects(st["things"], words, prop="pickupable")
+            for n, _ in named:
+                self.put(n, cans[0], words)
+            self.last = [n for n, _ in named]
+        elif op == "observe":
+            names = [n for n, _ in self.objects(st["things"], words)]
+            for n in names:
+                if CONDITIONS.get(st["is"]) and applies(self.world, n, st["is"]) and not holds_now(self.world, n, st["is"]):
+                    self.goal.notes.append(f"'{words}': the world file says {n} is {_describe(self.world, n)}")
+            self.observed.append((names, st["is"], words))
+            self.last = names
+        elif op == "cue":
+            self.cue(st, words)
+        else:
+            raise TranslationError(f"'{words}': unknown statement {op!r}")
+
+    def change(self, st: dict, words: str) -> None:
+        cond = st["to"]
+        named = self.objects(st["things"], words, cond=cond)
+        via = None
+        if st.get("via"):
+            via = self.place_of(st["via"], words)
+            need = VIA_PROPERTY.get(cond)
+            if need is None:
+                raise TranslationError(f"'{words}': '{st['via']['words']}' does not say how something becomes {cond}")
+            if need not in self.world["places"][via]["properties"]:
+                raise Refusal(f"'{words}': {via} cannot make anything {cond}: it is not a {need}")
+        for n, explicit in named:
+            self.want(n, cond, explicit, words)
+            if via is not None:
+                if n not in self.world["objects"]:
+                    raise Refusal(f"'{words}': {n} cannot be moved into {via}")
+                self.put(n, via, words)
+        self.last = [n for n, _ in named if n in self.world["objects"]] or self.last
+
+    def move(self, st: dict, words: str) -> None:
+        counted = [c for c in (self.counted(s) for s in st["things"] if not s.get("pronoun")) if c is not None]
+        plain = [s for s in st["things"] if self.counted(s) is None]
+        if "from" in st:
+            plain = [{**s, "from": st["from"]} if "from" not in s and not s.get("pronoun") else s for s in plain]
+        named = self.objects(plain, words, prop="pickupable")
+        if st.get("from") and any(s.get("pronoun") for s in plain):
+            place = self.place_of(st["from"], words)
+            for n, _ in named:
+                if self.world["objects"].get(n, {}).get("in") != place:
+                    raise Refusal(f"'{words}': {n} is not in {place}")
+        if "to" not in st:
+            if counted:
+                raise TranslationError(f"'{words}': where to? name a place (e.g. 'in the fridge')")
+            for n, _ in named:
+                self.picked[n] = words
+            self.last = [n for n, _ in named]
+            return
+        place = self.place_of(st["to"], words)
+        for sel in counted:
+            names, implicit = self.select(sel, words, prop="pickupable")
+            if not implicit:
+                for n in names:
+                    self.put(n, place, words)
+                continue
+            cats = [r["name"] for r in sel["noun"]["readings"] if r["kind"] == "category"]
+            able = [n for n in names if n in self.world["objects"]
+                    and "pickupable" in self.world["objects"][n]["properties"]]
+            if len(able) < sel["count"]:
+                raise Refusal(f"'{words}': the world has only {len(able)} {sel['noun']['words']} that can be "
+                              f"picked up, not {sel['count']}")
+            if len(cats) != 1 or sel.get("state") or sel.get("except") or sel.get("from"):
+                raise TranslationError(f"'{words}': a count of '{sel['words']}' can only name a whole category")
+            self.goal.count.append({"category": cats[0], "in": place, "at_least": sel["count"]})
+        for n, _ in named:
+            if n not in self.world["objects"]:
+                raise Refusal(f"'{words}': {n} is not something that can be moved")
+            self.put(n, place, words)
+        self.last = [n for n, _ in named] or self.last
+
+    def cue(self, st: dict, words: str) -> None:
+        cond = st["to"]
+        if st["things"]:
+            named = self.objects(st["things"], words, cond=cond)
+        elif self.observed:
+            named = [(n, True) for names, _, _ in self.observed for n in names]
+            self.observed = []
+        else:
+            default = st.get("default")
+            cats = [c for c, e in (self.world.get("categories") or {}).items()
+                    if default and (c == default or default in ((e or {}).get("words") or []))]
+            if not default or not cats:
+                raise TranslationError(f"'{words}': which thing? ('{st['cue']}' names nothing to switch)")
+            named = [(n, False) for n in members(self.world, cats[0]) if applies(self.world, n, cond)]
+            if not named:
+                raise Refusal(f"'{words}': nothing of the {cats[0]} category can be switched {cond}")
+            self.goal.notes.append(f"'{words}': read as every {cats[0]} {cond} ({', '.join(n for n, _ in named)})")
+        for n, explicit in named:
+            self.want(n, cond, explicit, words)
+        self.last = [n for n, _ in named]
+
+    def resolve(self, order: dict) -> dict:
+        for st in order["statements"]:
+            self.statement(st)
+        if self.picked:
+            obj, words = next(iter(self.picked.items()))
+            raise TranslationError(f"'{words}': where to? name a place for {obj} (e.g. 'in the fridge')")
+        if self.observed:
+            words = self.observed[0][2]
+            raise TranslationError(f"'{words}' describes the home but asks for nothing (say what to do, "
+                                   "or why: 'nobody is reading')")
+        g = self.goal
+        inside: dict[str, list[str]] = {}
+        for obj, (place, _) in g.inside.items():
+            inside.setdefault(place, []).append(obj)
+        state = {n: [c.cond for c in preds.values()] for n, preds in g.state.items() if preds}
+        explain = [f"{o} in {p}, from '{w}'" for o, (p, w) in g.inside.items()]
+        explain += [f"{n} {c.cond}, from '{c.words}'" for n, preds in g.state.items() for c in preds.values()]
+        explain += [f"at least {c['at_least']} {c['category']} in {c['in']}" for c in g.count]
+        goal: dict = {"in": inside, "state": state}
+        if g.count:
+            goal["count"] = [dict(c) for c in g.count]
+        return {"goal": goal, "explain": explain, "notes": list(g.notes)}
+
+
+def resolve(order: dict, world: dict) -> dict:
+    """``{"goal": {"in", "state", "count"?}, "explain": [one line per condition with its words],
+    "notes": [...]}`` for a household order in a world; Refusal or TranslationError otherwise."""
+    return Resolver(world).resolve(order)
