@@ -1,62 +1,215 @@
 #!/usr/bin/env python3
-"""Share of a task file's commands that the offline translator turns into the exact gold.
+"""The understanding table: does the offline reading turn each command into its gold?
 
-Usage: ``python benchmarks/translator.py [TASKS.yaml]`` (default: the paper's warehouse tasks).
-The world path in the task file is relative to it. A task counts as exact when the goal equals
-the gold goal and the constraints equal the gold constraints (missing means none); commands
-marked ``feasible: false`` count when the translator refuses them or yields the gold.
-Exits 0 when every command is exact, 1 otherwise, so CI can use it as a check.
+Usage: ``python benchmarks/translator.py [-v] [TASKS.yaml ...]``; without files, every task file
+of ``benchmarks/language/`` and ``benchmarks/warehouse/tasks.yaml``. Each command goes through
+``pipflow.language.generator.offline`` (what ``pipflow run`` does with model ``offline``) with the
+world as the world loader gives it to the workflow, and is judged (benchmarks/language/README.md):
+
+* ``understood``: goal and robot rules equal the gold (bounds compared exactly: an exact count is
+  not a bound); a refusal of a ``feasible: false`` or ``expect: refuse`` task also counts;
+* ``refused``: a clear, feasible command was refused (a lost command, but nothing moves);
+* ``misread``: a goal or rules different from the gold came out: the robots would have moved
+  wrongly. This is the defect that matters most, so any misread makes the exit status 1;
+* ``crashed``: an exception that is not one of pipflow's errors (a bug; exit status 1 as well).
+
+The table is printed per construction (the task's ``construction`` label) and in total. It
+times nothing that a test relies on; the mean time per command and the load average are printed
+for the record only.
 """
 from __future__ import annotations
 
+import json
+import os
 import sys
 import time
+from collections import Counter, defaultdict
+from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 import yaml
 
 ROOT = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(ROOT))
+if str(ROOT) not in sys.path:
+    sys.path.insert(0, str(ROOT))
 
-from pipflow.errors import PipflowError, Refusal  # noqa: E402
-from pipflow.language.translator import translate  # noqa: E402
+from pipflow.errors import PipflowError, WorldError  # noqa: E402
+
+LANGUAGE = ROOT / "benchmarks" / "language"
+PAPER_TASKS = ROOT / "benchmarks" / "warehouse" / "tasks.yaml"
+VERDICTS = ("understood", "refused", "misread", "crashed")
+RULE_FIELDS = ("only", "never", "product", "from", "to")  # "words" and other annotations are ignored
 
 
-def _norm(constraints: list[dict] | None) -> list[dict]:
-    """Constraints compared as data: robots as sorted lists, item order kept."""
-    return [{k: (sorted(v) if isinstance(v, list) else v) for k, v in c.items()}
-            for c in constraints or []]
+@dataclass
+class Outcome:
+    """One task's verdict and what the reading produced (for the per-task lines)."""
+
+    task_id: str
+    construction: str
+    verdict: str
+    detail: str
+
+
+def default_task_files() -> list[Path]:
+    """Every task file of the language set (a YAML mapping with ``tasks``) and the paper's ten."""
+    files = [p for p in sorted(LANGUAGE.glob("*.yaml")) if "tasks" in (_read_yaml(p) or {})]
+    return files + ([PAPER_TASKS] if PAPER_TASKS.exists() else [])
+
+
+def _read_yaml(path: Path) -> Any:
+    return yaml.safe_load(path.read_text(encoding="utf-8"))
+
+
+def load_world_for(tasks_path: Path, spec: dict) -> dict:
+    """The task file's world through its domain's loader (validated, as a run gets it)."""
+    world_path = (tasks_path.parent / spec["world"]).resolve()
+    if spec.get("domain") == "household":
+        from pipflow.household.world import load_world as load_household
+        return load_household(world_path)
+    from pipflow.world import load_world
+    return load_world(world_path)
+
+
+def goal_value(value: Any) -> Any:
+    """A goal count in one canonical form: an int stays an int; a bound mapping becomes
+    ``("bound", at_least, at_most)`` (``None`` where open), except that equal bounds are the
+    exact count. Anything else (a bool, a float, an unknown key) is kept as it is, so it can
+    only equal itself."""
+    if isinstance(value, bool):
+        return ("bad", value)
+    if isinstance(value, int):
+        return value
+    if isinstance(value, dict) and value and set(value) <= {"at_least", "at_most"}:
+        lo, hi = value.get("at_least"), value.get("at_most")
+        if lo is not None and lo == hi:
+            return lo
+        return ("bound", lo, hi)
+    return ("bad", json.dumps(value, sort_keys=True, default=str))
+
+
+def warehouse_goal(goal: dict | None) -> dict:
+    """``{PLACE: {ITEM: canonical value}}``; empty places dropped (they fix nothing)."""
+    return {place: {item: goal_value(v) for item, v in items.items()}
+            for place, items in (goal or {}).items() if items}
+
+
+def household_goal(goal: dict | None) -> str:
+    """A household goal (``in`` / ``state`` / ``count``) as sorted JSON: lists are sets here."""
+    def canon(x: Any) -> Any:
+        if isinstance(x, dict):
+            return {k: canon(v) for k, v in x.items() if v not in (None, [], {})}
+        if isinstance(x, list):
+            return sorted((canon(v) for v in x), key=lambda v: json.dumps(v, sort_keys=True))
+        return x
+    return json.dumps(canon(goal or {}), sort_keys=True)
+
+
+def rules(constraints: list[dict] | None) -> list[str]:
+    """Robot rules as a sorted list of canonical strings: robot lists as sets, the rule's
+    source words and any other annotation left out, the order of rules irrelevant."""
+    out = []
+    for rule in constraints or []:
+        canon = {k: (sorted(rule[k]) if isinstance(rule[k], list) else rule[k])
+                 for k in RULE_FIELDS if k in rule}
+        out.append(json.dumps(canon, sort_keys=True))
+    return sorted(out)
+
+
+def judge(task: dict, got: dict | None, error: BaseException | None, domain: str = "warehouse") -> tuple[str, str]:
+    """(verdict, detail) of one reading: ``got`` is the reading's output, ``error`` what it raised."""
+    must_refuse = task.get("expect") == "refuse"
+    infeasible = task.get("feasible", True) is False
+    if error is not None:
+        if not isinstance(error, PipflowError):
+            return "crashed", f"{type(error).__name__}: {error}"
+        verdict = "understood" if (must_refuse or infeasible) else "refused"
+        return verdict, f"refused: {error}"
+    if must_refuse:
+        return "misread", f"guessed {got.get('goal')} {got.get('constraints') or ''} instead of refusing"
+    if domain == "household":
+        same = household_goal(got.get("goal")) == household_goal(task.get("goal"))
+    else:
+        same = (warehouse_goal(got.get("goal")) == warehouse_goal(task.get("goal"))
+                and rules(got.get("constraints")) == rules(task.get("constraints")))
+    if same:
+        return "understood", "gold"
+    return "misread", (f"got goal {got.get('goal')} rules {got.get('constraints') or []}; "
+                       f"gold goal {task.get('goal')} rules {task.get('constraints') or []}")
+
+
+def read(command: str, world: dict) -> dict:
+    """The offline reading of one command (the default path of ``pipflow run``)."""
+    from pipflow.language.generator import offline  # the parser and its grammar load here, once
+    return offline(command, world)
+
+
+def run_file(tasks_path: Path) -> list[Outcome]:
+    """Every task of one file, judged. A world that does not load is a user error (exit 2)."""
+    spec = _read_yaml(tasks_path)
+    world = load_world_for(tasks_path, spec)
+    domain = spec.get("domain") or "warehouse"
+    default_label = tasks_path.parent.name if tasks_path == PAPER_TASKS else "(unlabelled)"
+    out = []
+    for task in spec["tasks"]:
+        got, error = None, None
+        try:
+            got = read(task["command"], world)
+        except Exception as exc:  # judged: pipflow errors are refusals, anything else a crash
+            error = exc
+        verdict, detail = judge(task, got, error, domain)
+        out.append(Outcome(f"{tasks_path.stem}/{task['id']}", task.get("construction", default_label),
+                           verdict, detail))
+    return out
+
+
+def table(outcomes: list[Outcome]) -> str:
+    """Per construction and in total: n and the count of each verdict, understood as a share."""
+    by: dict[str, Counter] = defaultdict(Counter)
+    for o in outcomes:
+        by[o.construction][o.verdict] += 1
+    width = max([len("construction"), len("total")] + [len(c) for c in by])
+    head = f"{'construction':<{width}}  {'n':>4}  " + "  ".join(f"{v:>10}" for v in VERDICTS) + "  understood%"
+    lines = [head, "-" * len(head)]
+    for name in sorted(by):
+        lines.append(_row(name, by[name], width))
+    total = sum(by.values(), Counter())
+    lines += ["-" * len(head), _row("total", total, width)]
+    return "\n".join(lines)
+
+
+def _row(name: str, counts: Counter, width: int) -> str:
+    n = sum(counts.values())
+    share = counts["understood"] / n if n else 0.0
+    return (f"{name:<{width}}  {n:>4}  " + "  ".join(f"{counts[v]:>10}" for v in VERDICTS)
+            + f"  {share:>10.1%}")
 
 
 def main(argv: list[str]) -> int:
-    tasks_path = Path(argv[0]) if argv else ROOT / "benchmarks" / "warehouse" / "tasks.yaml"
-    spec = yaml.safe_load(tasks_path.read_text())
-    world = yaml.safe_load((tasks_path.parent / spec["world"]).read_text())
-    exact = 0
+    verbose = "-v" in argv
+    files = [Path(a) for a in argv if a != "-v"] or default_task_files()
+    outcomes: list[Outcome] = []
     started = time.perf_counter()
-    for task in spec["tasks"]:
+    for path in files:
         try:
-            got = translate(task["command"], world)
-        except Refusal as exc:
-            ok = task.get("feasible", True) is False
-            print(f"{'ok  ' if ok else 'FAIL'} {task['id']}: refused: {exc}")
-            exact += ok
-            continue
-        except PipflowError as exc:
-            print(f"FAIL {task['id']}: {type(exc).__name__}: {exc}")
-            continue
-        ok = got["goal"] == task["goal"] and _norm(got["constraints"]) == _norm(task.get("constraints"))
-        exact += ok
-        if ok:
-            print(f"ok   {task['id']}")
-        else:
-            print(f"FAIL {task['id']}: got {got}, gold goal {task['goal']}, "
-                  f"gold constraints {task.get('constraints', [])}")
-    n = len(spec["tasks"])
+            outcomes += run_file(path.resolve())
+        except WorldError as exc:
+            print(f"error: {exc}", file=sys.stderr)  # the message lists every problem, located
+            return 2
+    elapsed = time.perf_counter() - started
+    for o in outcomes:
+        if verbose or o.verdict != "understood":
+            print(f"{o.verdict:<10} {o.task_id} [{o.construction}]: {o.detail}")
+    print()
+    print(table(outcomes))
+    n = len(outcomes)
+    load1, load5, _ = os.getloadavg()
     if n:
-        print(f"mean time per command: {(time.perf_counter() - started) / n * 1000:.2f} ms")
-    print(f"exact goal and constraints: {exact}/{n} = {exact / n:.0%}" if n else "no tasks")
-    return 0 if exact == n else 1
+        print(f"\n{n} commands in {len(files)} files; mean {elapsed / n * 1000:.1f} ms per command "
+              f"(load average {load1:.2f} / {load5:.2f})")
+    bad = sum(o.verdict in ("misread", "crashed") for o in outcomes)
+    return 1 if bad else 0
 
 
 if __name__ == "__main__":
