@@ -7,11 +7,13 @@ user fixing a file wants the whole list, not one error per run:
 1. JSON Schema (structure, types, unknown keys with the closest known key);
 2. meaning: stock names a shelf and a product that exist, counts are not negative, no shelf holds
    more than its capacity, footprints lie on the floor, robots start and access points lie on
-   the floor and outside every footprint.
+   the floor and outside every footprint, a robot's ``kind`` and ``tags`` are not also the name
+   of a shelf, product or robot (commands select robots by them).
 
 :func:`load_world` returns the normalized world dict of ``docs/architecture.md``;
 :func:`load_tasks` loads a task file, resolves its ``world`` relative to the task file, and
-reports goal and constraint names that the world does not have.
+reports goal and constraint names that the world does not have, bounds that contradict
+themselves, and gold goals of feasible tasks that the world cannot meet.
 """
 from __future__ import annotations
 
@@ -24,6 +26,7 @@ from typing import Any, Callable, Iterable
 import yaml
 
 from pipflow.errors import Diagnostic, Location, SourceFileError, WorldError
+from pipflow.goalcounts import is_bound, value_problems
 from pipflow.resources import data_file
 from pipflow.yamlsource import load_with_locations, read_source, yaml_error_diagnostic
 
@@ -56,25 +59,36 @@ def schema_diagnostics(data: Any, schema: dict, locate: Locate) -> list[Diagnost
     validator = jsonschema.Draft202012Validator(schema)
     out: list[Diagnostic] = []
     for err in sorted(validator.iter_errors(data), key=lambda e: list(map(str, e.absolute_path))):
-        path = tuple(err.absolute_path)
-        if err.validator == "additionalProperties" and isinstance(err.instance, dict):
-            known = list((err.schema.get("properties") or {}).keys())
-            for extra in err.instance:
-                if extra not in known:
-                    where = "/".join(map(str, path)) or "top level"
-                    out.append(Diagnostic(locate(path + (extra,), key=True),
-                                          f"unknown key {extra!r} in {where}{_did_you_mean(extra, known)}"
-                                          + (f"; allowed: {', '.join(known)}" if known else "")))
-            continue
-        if err.validator == "propertyNames":
-            bad = err.instance
-            out.append(Diagnostic(locate(path + (bad,), key=True),
-                                  f"invalid name {bad!r}: names start with a letter and use letters, "
-                                  "digits, '_' or '-' (they become PDDL object names)"))
-            continue
-        where = "/".join(map(str, path)) or "top level"
-        out.append(Diagnostic(locate(path), f"{where}: {err.message}"))
+        out += _error_diagnostics(err, locate)
     return out
+
+
+def _error_diagnostics(err: Any, locate: Locate) -> list[Diagnostic]:
+    """One schema error as diagnostics. For a ``oneOf``/``anyOf`` (a value of several allowed
+    forms, such as a goal count or bound) the errors of the forms whose type does fit are the ones
+    a user needs ("-1 is less than the minimum of 0", "unknown key 'at_leest'"), not "is not valid
+    under any of the given schemas"."""
+    path = tuple(err.absolute_path)
+    where = "/".join(map(str, path)) or "top level"
+    if err.validator in ("oneOf", "anyOf") and err.context:
+        fitting = [c for c in err.context if c.validator != "type"]
+        if fitting:
+            return [d for c in fitting for d in _error_diagnostics(c, locate)]
+        what = err.schema.get("description")
+        return [Diagnostic(locate(path), f"{where}: {err.instance!r} is not valid"
+                           + (f": {what}" if what else f" ({'; '.join(c.message for c in err.context)})"))]
+    if err.validator == "additionalProperties" and isinstance(err.instance, dict):
+        known = list((err.schema.get("properties") or {}).keys())
+        return [Diagnostic(locate(path + (extra,), key=True),
+                           f"unknown key {extra!r} in {where}{_did_you_mean(extra, known)}"
+                           + (f"; allowed: {', '.join(known)}" if known else ""))
+                for extra in err.instance if extra not in known]
+    if err.validator == "propertyNames":
+        bad = err.instance
+        return [Diagnostic(locate(path + (bad,), key=True),
+                           f"invalid name {bad!r}: names start with a letter and use letters, "
+                           "digits, '_' or '-' (they become PDDL object names)")]
+    return [Diagnostic(locate(path), f"{where}: {err.message}")]
 
 
 # ---------------------------------------------------------------------------------------------
@@ -149,6 +163,32 @@ def case_clash_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
     return out
 
 
+def robot_label_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
+    """A robot's ``kind`` and ``tags`` select robots in commands ("only the forklifts", "a
+    day_shift robot"), so each must not also be the name of a shelf, product or robot: a command
+    naming it could not say which one it means (compared in lower case, as the names are)."""
+    out: list[Diagnostic] = []
+    names: dict[str, tuple[str, str]] = {}
+    for section, kind in (("shelves", "shelf"), ("products", "product"), ("robots", "robot")):
+        block = data.get(section)
+        for name in block if isinstance(block, dict) else {}:
+            names.setdefault(str(name).lower(), (kind, str(name)))
+    robots = data.get("robots") if isinstance(data.get("robots"), dict) else {}
+    for rname, robot in robots.items():
+        if not isinstance(robot, dict):
+            continue
+        labels = [(("kind",), robot.get("kind"), "kind")]
+        tags = robot.get("tags") if isinstance(robot.get("tags"), list) else []
+        labels += [(("tags", i), t, "tag") for i, t in enumerate(tags)]
+        for where, label, what in labels:
+            if isinstance(label, str) and label.lower() in names:
+                kind, name = names[label.lower()]
+                out.append(Diagnostic(locate(("robots", rname) + where),
+                                      f"{what} {label!r} of robot {rname!r} is also the name of {kind} {name!r}; "
+                                      f"a command naming it could not tell them apart: rename one"))
+    return out
+
+
 def semantic_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
     """Checks the schema cannot express. Runs on partially valid data: every check guards the
     types it needs, so one bad field does not hide the problems of the others."""
@@ -190,6 +230,7 @@ def semantic_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
                                   f"shelf {sname!r} holds {total} units but its capacity is {cap}"))
 
     robots = data.get("robots") if isinstance(data.get("robots"), dict) else {}
+    out += robot_label_diagnostics(data, locate)
     for rname, robot in robots.items():
         start = robot.get("start") if isinstance(robot, dict) else None
         if not _is_point(start):
@@ -203,6 +244,13 @@ def semantic_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
                 out.append(Diagnostic(locate(("robots", rname, "start")),
                                       f"robot {rname!r} starts at {start}, inside the footprint of shelf {sname!r}"))
     return out
+
+
+def normalize_robot(robot: dict) -> dict:
+    """A robot as later steps see it: ``{start, skills, kind, tags}``; ``kind`` None and ``tags``
+    [] when the file gives none, so that consumers never test for the keys."""
+    return {"start": list(robot["start"]), "skills": dict(robot["skills"]),
+            "kind": robot.get("kind"), "tags": list(robot.get("tags") or [])}
 
 
 def normalize_world(data: dict, path: Path) -> dict:
@@ -224,10 +272,7 @@ def normalize_world(data: dict, path: Path) -> dict:
         "shelves": shelves,
         "products": {name: dict(p or {}) for name, p in data["products"].items()},
         "stock": stock,
-        "robots": {
-            name: {"start": list(r["start"]), "skills": dict(r["skills"])}
-            for name, r in (data.get("robots") or {}).items()
-        },
+        "robots": {name: normalize_robot(r) for name, r in (data.get("robots") or {}).items()},
     }
 
 
@@ -289,7 +334,9 @@ def load_world(path: str | Path) -> dict:
 # task files
 # ---------------------------------------------------------------------------------------------
 def task_diagnostics(data: dict, world: dict, locate: Locate) -> list[Diagnostic]:
-    """Names in goals and constraints that the world does not have; duplicate task ids."""
+    """Names in goals and constraints that the world does not have; duplicate task ids; goal
+    bounds whose at_least exceeds their at_most; gold goals of feasible tasks that no final state
+    of the world meets."""
     out: list[Diagnostic] = []
     shelves, products, robots = world["shelves"], world["products"], world["robots"]
     seen: dict[str, int] = {}
@@ -310,6 +357,10 @@ def task_diagnostics(data: dict, world: dict, locate: Locate) -> list[Diagnostic
                 if pname not in products:
                     out.append(Diagnostic(locate(("tasks", i, "goal", sname, pname), key=True),
                                           f"task {tid}: goal names unknown product {pname!r}{_did_you_mean(pname, products)}"))
+                for why in value_problems(items[pname]):
+                    out.append(Diagnostic(locate(("tasks", i, "goal", sname, pname)),
+                                          f"task {tid}: goal for {pname!r} on {sname!r}: {why}"))
+        out += _gold_feasibility(task, tid, goal, world, locate(("tasks", i, "goal")))
         for j, rule in enumerate(task.get("constraints") or []):
             if not isinstance(rule, dict):
                 continue
@@ -327,12 +378,39 @@ def task_diagnostics(data: dict, world: dict, locate: Locate) -> list[Diagnostic
     return out
 
 
+def _gold_feasibility(task: dict, tid: Any, goal: dict, world: dict, where: Location) -> list[Diagnostic]:
+    """A task marked feasible must have a gold goal that some final state of the world meets
+    (counts and lower bounds within capacity and within the units that exist, upper bounds leaving
+    room for every unit): otherwise a correct refusal would be scored as a failure. Checked only
+    once the goal's names and values are valid (their own diagnostics say what is wrong)."""
+    from pipflow.pddl.feasibility import infeasibility_reasons
+
+    if task.get("feasible", True) is False or task.get("expect") == "refuse":
+        return []
+    valid = all(isinstance(items, dict) and s in world["shelves"]
+                and all(p in world["products"] and not value_problems(v) for p, v in items.items())
+                for s, items in goal.items())
+    if not valid:
+        return []
+    reasons = infeasibility_reasons(world, goal)
+    if not reasons:
+        return []
+    return [Diagnostic(where, f"task {tid}: no final state of the world meets the gold goal "
+                              f"({'; '.join(reasons)}); fix the goal or mark the task `feasible: false`")]
+
+
+def _goal_copy(goal: dict) -> dict:
+    """A task's goal with every value copied (bound mappings are mutable)."""
+    return {s: {p: dict(v) if is_bound(v) else v for p, v in (items or {}).items()} for s, items in goal.items()}
+
+
 def load_tasks(path: str | Path) -> dict:
     """Load a task file and its world.
 
     Returns ``{"path", "world_path", "world": <world dict>, "tasks": [{"id", "command", "goal",
-    "constraints", "feasible"}]}``; raises :class:`WorldError` with every problem located (a bad
-    world file reports its own locations)."""
+    "constraints", "feasible", "expect", "construction"}]}`` (goal values: counts or bounds,
+    :mod:`pipflow.goalcounts`; ``expect`` and ``construction`` None when absent); raises
+    :class:`WorldError` with every problem located (a bad world file reports its own locations)."""
     p, text = _read(path)
     file = str(p)
     data, locate = _parse(text, file, "task")
@@ -347,9 +425,10 @@ def load_tasks(path: str | Path) -> dict:
     diags = task_diagnostics(data, world, locate)
     if diags:
         raise WorldError(diags, f"invalid task file {file} ({len(diags)} problem(s))")
-    tasks = [{"id": t["id"], "command": t["command"], "goal": {s: dict(g) for s, g in t["goal"].items()},
+    tasks = [{"id": t["id"], "command": t["command"], "goal": _goal_copy(t["goal"]),
               "constraints": [dict(c) for c in t.get("constraints") or []],
-              "feasible": t.get("feasible", True)} for t in data["tasks"]]
+              "feasible": t.get("feasible", True), "expect": t.get("expect"),
+              "construction": t.get("construction")} for t in data["tasks"]]
     return {"path": file, "world_path": str(world_path), "world": world, "tasks": tasks}
 
 
@@ -373,7 +452,7 @@ def with_random_starts(world: dict, seed: int, clearance: float = 0.5) -> dict:
         else:
             raise WorldError([Diagnostic(Location(world["path"]), f"no free start point for robot {name!r}")])
         taken.append(p)
-        out["robots"][name] = {"start": p, "skills": dict(robot["skills"])}
+        out["robots"][name] = normalize_robot({**robot, "start": p})
     return out
 
 

@@ -19,7 +19,7 @@ def test_paper_world_normalized():
     assert set(w["stock"]) == {"shelf1", "shelf2", "shelf3", "shelf4"}
     assert w["stock"]["shelf4"] == {"product1": 15, "product3": 2, "product4": 6}
     assert w["shelves"]["shelf1"]["access"] == [7, 12]
-    assert w["robots"]["robot11"] == {"start": [28, 18], "skills": {"carry": 3}}
+    assert w["robots"]["robot11"] == {"start": [28, 18], "skills": {"carry": 3}, "kind": None, "tags": []}
 
 
 def test_paper_tasks_load():
@@ -96,3 +96,54 @@ def test_seeded_starts_are_free_and_repeatable():
     for r in a["robots"].values():
         assert not any(inside_footprint(r["start"], s) for s in w["shelves"].values())
         assert 0 <= r["start"][0] <= 30 and 0 <= r["start"][1] <= 20
+
+
+# ---------------------------------------------------------------- robots with kinds and tags
+TEAM = """\
+name: kinds
+floor: {width: 20, height: 10}
+shelves:
+  bay1: {x: 2, y: 2, width: 4, depth: 2, capacity: 10, access: [4, 1]}
+products:
+  crate: {color: red}
+stock:
+  bay1: {crate: 4}
+robots:
+  lifter: {kind: forklift, tags: [day_shift, cold_store], start: [1, 7], skills: {carry: 4}}
+  scout: {start: [12, 7], skills: {carry: 1}}
+"""
+
+
+def test_kind_and_tags_normalized():
+    w = world_from_text(TEAM, "kinds.yaml")
+    assert w["robots"]["lifter"] == {"start": [1, 7], "skills": {"carry": 4}, "kind": "forklift",
+                                     "tags": ["day_shift", "cold_store"]}
+    assert w["robots"]["scout"]["kind"] is None and w["robots"]["scout"]["tags"] == []
+
+
+def test_seeded_starts_keep_kind_and_tags():
+    from pipflow.world import with_random_starts
+
+    w = with_random_starts(world_from_text(TEAM, "kinds.yaml"), 1)
+    assert w["robots"]["lifter"]["kind"] == "forklift" and w["robots"]["lifter"]["tags"] == ["day_shift", "cold_store"]
+    assert w["robots"]["scout"]["tags"] == []
+
+
+@pytest.mark.parametrize("robot, line_has", [
+    ("{kind: 7, start: [1, 7], skills: {}}", "robots/lifter/kind: 7 is not of type 'string'"),
+    ("{kind: fork lift, start: [1, 7], skills: {}}", "robots/lifter/kind: 'fork lift' does not match"),
+    ("{tags: day_shift, start: [1, 7], skills: {}}", "robots/lifter/tags: 'day_shift' is not of type 'array'"),
+    ("{tags: [a, a], start: [1, 7], skills: {}}", "has non-unique elements"),
+    ("{tags: [ok, 3], start: [1, 7], skills: {}}", "robots/lifter/tags/1: 3 is not of type 'string'"),
+    ("{kinds: forklift, start: [1, 7], skills: {}}", "unknown key 'kinds' in robots/lifter (did you mean 'kind'?)"),
+    ("{kind: Bay1, start: [1, 7], skills: {}}", "kind 'Bay1' of robot 'lifter' is also the name of shelf 'bay1'"),
+    ("{tags: [night, crate], start: [1, 7], skills: {}}", "tag 'crate' of robot 'lifter' is also the name of product 'crate'"),
+    ("{kind: scout, start: [1, 7], skills: {}}", "kind 'scout' of robot 'lifter' is also the name of robot 'scout'"),
+])
+def test_bad_kind_or_tags_located(robot, line_has):
+    text = TEAM.replace("{kind: forklift, tags: [day_shift, cold_store], start: [1, 7], skills: {carry: 4}}", robot)
+    with pytest.raises(WorldError) as info:
+        world_from_text(text, "kinds.yaml")
+    (d,) = info.value.diagnostics
+    assert line_has in d.message, d.message
+    assert d.location.file == "kinds.yaml" and d.location.line == 10
