@@ -2,16 +2,27 @@
 resolved inputs and the content of every file they name, so a changed argument, changed code or an
 edited world, domain or prompt file is a miss. On by default
 for steps that declare themselves cacheable (LLM calls); ``--no-cache`` turns it off.
-An entry holds the outputs and a copy of the artifacts, so a hit leaves the same run record."""
+An entry holds the outputs and a copy of the artifacts, so a hit leaves the same run record.
+
+Nothing in the cache is trusted: each entry carries a manifest with the SHA-256 of its outputs
+and of every artifact, written last; an entry that does not verify (damaged, truncated, edited,
+``[]``/``{}`` in place of the step's outputs, half written) is a miss and is removed, never a
+failure. The cache folder is marked with a ``CACHEDIR.TAG`` naming pipflow; pipflow writes into
+no folder that holds anything else, and ``pipflow cache clear`` removes only the entries it
+wrote, refusing a folder without the mark. A cache that cannot be written is a warning."""
 from __future__ import annotations
 
 import functools
 import hashlib
 import json
 import os
+import re
 import shutil
+import uuid
 from pathlib import Path
-from typing import Any
+from typing import Any, Iterable
+
+from pipflow.errors import UserError
 
 from .store import atomic_write
 
@@ -80,6 +91,42 @@ def cache_key(step_name: str, version: str, inputs: dict[str, Any], module: str 
     return hashlib.sha256(canonical.encode("utf-8")).hexdigest()
 
 
+MARKER = "CACHEDIR.TAG"
+_MARKER_TEXT = ("Signature: 8a477f597d28d172789f06886806bc55\n"
+                "# This folder is a pipflow step cache (pipflow cache clear removes its entries).\n"
+                "# For information about cache directory tags, see https://bford.info/cachedir/\n")
+_SHARD = re.compile(r"^[0-9a-f]{2}$")
+_KEY = re.compile(r"^[0-9a-f]{64}$")
+_TEMP = re.compile(r"^\.tmp-[0-9a-f]{64}-[0-9a-f]{8}$")
+_MAX_OUTPUTS = 256 * 1024 * 1024  # bytes of one entry's outputs.json
+
+
+class CacheRefused(UserError):
+    """The cache folder holds things pipflow did not write; nothing is written or removed there."""
+
+
+def _sha256(path: Path) -> str:
+    digest = hashlib.sha256()
+    with open(path, "rb") as fh:
+        for block in iter(lambda: fh.read(1 << 20), b""):
+            digest.update(block)
+    return digest.hexdigest()
+
+
+def _artifact_files(folder: Path) -> dict[str, Path]:
+    """Relative name -> path of every file under ``folder``; a link or a special file makes the
+    whole entry untrustworthy (ValueError)."""
+    files: dict[str, Path] = {}
+    if not folder.is_dir():
+        return files
+    for path in sorted(folder.rglob("*")):
+        if path.is_symlink() or not (path.is_file() or path.is_dir()):
+            raise ValueError(f"{path.name}: not a plain file")
+        if path.is_file():
+            files[path.relative_to(folder).as_posix()] = path
+    return files
+
+
 class StepCache:
     def __init__(self, root: Path | None = None):
         self.root = Path(root) if root else default_cache_dir()
@@ -87,26 +134,122 @@ class StepCache:
     def _entry(self, key: str) -> Path:
         return self.root / key[:2] / key
 
-    def get(self, key: str, artifact_dir: Path) -> dict | None:
+    # -- read ----------------------------------------------------------------------------
+    def get(self, key: str, artifact_dir: Path, expected: Iterable[str] = (),
+            problems: list[str] | None = None) -> dict | None:
+        """The outputs stored under ``key`` (and its artifacts copied into ``artifact_dir``), or
+        ``None``. An entry that does not verify is removed, and why is added to ``problems``."""
         entry = self._entry(key)
+        if not entry.is_dir():
+            return None
         try:
-            outputs = json.loads((entry / "outputs.json").read_text(encoding="utf-8"))
-        except (FileNotFoundError, json.JSONDecodeError):
+            outputs = self._verified(entry, key, set(expected))
+        except (OSError, ValueError, KeyError, TypeError) as err:
+            if problems is not None:
+                problems.append(f"cache entry {entry} did not verify and was removed ({err})")
+            shutil.rmtree(entry, ignore_errors=True)
             return None
         if (entry / "artifacts").is_dir():
             shutil.copytree(entry / "artifacts", artifact_dir, dirs_exist_ok=True)
         return outputs
 
-    def put(self, key: str, outputs: dict, artifact_dir: Path) -> None:
-        entry = self._entry(key)
-        if artifact_dir.is_dir():
-            shutil.copytree(artifact_dir, entry / "artifacts", dirs_exist_ok=True)
-        atomic_write(entry / "outputs.json", json.dumps(outputs, sort_keys=True, default=str))
+    def _verified(self, entry: Path, key: str, expected: set[str]) -> dict:
+        manifest = json.loads((entry / "manifest.json").read_text(encoding="utf-8"))
+        if not isinstance(manifest, dict) or manifest.get("key") != key:
+            raise ValueError("manifest does not name this entry")
+        raw = (entry / "outputs.json").read_bytes()
+        if len(raw) > _MAX_OUTPUTS or hashlib.sha256(raw).hexdigest() != manifest["outputs"]:
+            raise ValueError("outputs do not match their hash")
+        outputs = json.loads(raw.decode("utf-8"))
+        if not isinstance(outputs, dict):
+            raise ValueError(f"outputs are a {type(outputs).__name__}, not a mapping")
+        missing = expected - set(outputs)
+        if missing:
+            raise ValueError(f"outputs lack {', '.join(sorted(missing))}")
+        files = _artifact_files(entry / "artifacts")
+        recorded = manifest["artifacts"]
+        if not isinstance(recorded, dict) or set(files) != set(recorded):
+            raise ValueError("artifacts differ from the manifest")
+        for name, path in files.items():
+            if _sha256(path) != recorded[name]:
+                raise ValueError(f"artifact {name} does not match its hash")
+        return outputs
 
+    # -- write ---------------------------------------------------------------------------
+    def put(self, key: str, outputs: dict, artifact_dir: Path) -> None:
+        """Store an entry: written in a temporary folder, manifest last, then moved into place.
+        Raises OSError (cannot write) or :class:`CacheRefused`; callers turn both into a warning."""
+        self._claim_root()
+        entry = self._entry(key)
+        tmp = self.root / key[:2] / f".tmp-{key}-{uuid.uuid4().hex[:8]}"
+        try:
+            tmp.mkdir(parents=True)
+            if artifact_dir.is_dir():
+                shutil.copytree(artifact_dir, tmp / "artifacts", symlinks=True)
+            raw = json.dumps(outputs, sort_keys=True, default=str).encode("utf-8")
+            atomic_write(tmp / "outputs.json", raw, redacted=False)
+            manifest = {"pipflow_cache": 1, "key": key, "outputs": hashlib.sha256(raw).hexdigest(),
+                        "artifacts": {name: _sha256(path) for name, path in _artifact_files(tmp / "artifacts").items()}}
+            atomic_write(tmp / "manifest.json", json.dumps(manifest, sort_keys=True), redacted=False)
+            if entry.exists():
+                shutil.rmtree(entry)
+            os.replace(tmp, entry)
+        except (OSError, ValueError):
+            shutil.rmtree(tmp, ignore_errors=True)
+            raise
+
+    def _claim_root(self) -> None:
+        """Make sure the cache folder is pipflow's: new or empty (then marked), or marked."""
+        if self._is_marked():
+            return
+        if self.root.exists():
+            if not self.root.is_dir():
+                raise CacheRefused(f"{self.root}: the cache folder is a file; no step results are cached")
+            if any(self.root.iterdir()):
+                raise CacheRefused(f"{self.root}: this folder holds files pipflow did not write; no step results "
+                                   f"are cached there (point PIPFLOW_CACHE_DIR at a new or empty folder)")
+        self.root.mkdir(parents=True, exist_ok=True)
+        atomic_write(self.root / MARKER, _MARKER_TEXT, redacted=False)
+
+    def _is_marked(self) -> bool:
+        try:
+            text = (self.root / MARKER).read_text(encoding="utf-8", errors="replace")
+        except OSError:
+            return False
+        return text.startswith("Signature: 8a477f597d28d172789f06886806bc55") and "pipflow" in text
+
+    # -- clear ---------------------------------------------------------------------------
     def clear(self) -> int:
-        """Remove every entry; returns how many there were."""
-        if not self.root.is_dir():
+        """Remove every entry pipflow wrote; returns how many there were. A folder without
+        pipflow's mark is refused (nothing removed); files that are not entries stay."""
+        if not self.root.exists():
             return 0
-        count = sum(1 for p in self.root.glob("*/*") if p.is_dir())
-        shutil.rmtree(self.root)
+        if not self.root.is_dir() or not self._is_marked():
+            raise CacheRefused(f"{self.root}: not a pipflow step cache (no {MARKER} written by pipflow); "
+                               "nothing was removed")
+        count = 0
+        for shard in list(self.root.iterdir()):
+            if not (_SHARD.match(shard.name) and shard.is_dir() and not shard.is_symlink()):
+                continue
+            for entry in list(shard.iterdir()):
+                ours = (_KEY.match(entry.name) and entry.name.startswith(shard.name)) or _TEMP.match(entry.name)
+                if ours and entry.is_dir() and not entry.is_symlink():
+                    shutil.rmtree(entry)
+                    count += 0 if _TEMP.match(entry.name) else 1
+            try:
+                shard.rmdir()  # only if nothing else is in it
+            except OSError:
+                pass
+        if not self.leftovers():  # nothing but the mark: the folder was pipflow's alone
+            (self.root / MARKER).unlink(missing_ok=True)
+            try:
+                self.root.rmdir()
+            except OSError:
+                pass
         return count
+
+    def leftovers(self) -> list[Path]:
+        """What is in the cache folder besides pipflow's mark and entries (after :meth:`clear`)."""
+        if not self.root.is_dir():
+            return []
+        return sorted(p for p in self.root.iterdir() if p.name != MARKER)

@@ -66,13 +66,28 @@ def _options(args: argparse.Namespace, step_ids: list[str]):
     return RunOptions(jobs=args.jobs, use_cache=not args.no_cache, on_event=display), display
 
 
-def _summary(value: Any, limit: int = 160) -> str:
-    """One line per output; big values point to the run record instead of flooding the screen."""
+# Units of the figures a run summary prints (outputs of the built-in workflows).
+UNITS = {"makespan": "s", "tc_max": "m", "tc_avg": "m", "tc_avg_moved": "m", "seconds": "s"}
+
+
+def _summary(value: Any, limit: int = 160, key: str = "") -> str:
+    """One line per output: numbers rounded with their unit, a plan's first actions, lists of
+    lines joined; other big values point to the run record instead of flooding the screen."""
+    if isinstance(value, float):
+        return f"{value:.2f}" + (f" {UNITS[key]}" if key in UNITS else "")
+    if isinstance(value, list) and value and all(isinstance(a, dict) and "action" in a for a in value):
+        acts = ["(" + " ".join([str(a["action"]), *map(str, a.get("args", []))]) + ")" for a in value]
+        more = f" ... ({len(acts)} actions)" if len(acts) > 3 else ""
+        return " ".join(acts[:3]) + more
+    if isinstance(value, list) and value and all(isinstance(x, str) for x in value):
+        text = "; ".join(value)
+        if len(text) <= 4 * limit:
+            return text
     text = json.dumps(value, default=str)
     if len(text) <= limit:
         return text
     size = f"{len(value)} items" if isinstance(value, (list, dict)) else f"{len(text)} chars"
-    return f"<{type(value).__name__}, {size}: see outputs.json>"
+    return f"<{type(value).__name__}, {size}: `pipflow show` prints it whole>"
 
 
 def _print_result(result, quiet: bool) -> int:
@@ -81,7 +96,7 @@ def _print_result(result, quiet: bool) -> int:
     if result.status == "succeeded":
         if not quiet:
             for key, value in result.outputs.items():
-                print(f"{key}: {_summary(value)}")
+                print(f"{key}: {_summary(value, key=key)}")
         print(f"run succeeded in {result.seconds:.2f}s: {result.run_dir}", file=sys.stderr)
         return 0
     where = f"step {result.error_step!r}: " if result.error_step else ""
@@ -184,15 +199,47 @@ def cmd_graph(args: argparse.Namespace) -> int:
     return 0
 
 
-def cmd_runs(args: argparse.Namespace) -> int:
+def _run_infos(runs_dir: Path) -> list[tuple[Path, dict]]:
     from .store import list_runs, read_json
 
-    runs = list_runs(Path(args.runs_dir))
-    if not runs:
-        print(f"no runs in {args.runs_dir}")
+    out = []
+    for run in list_runs(runs_dir):
+        info = read_json(run / "run.json", None)
+        out.append((run, info if isinstance(info, dict) else {"status": "damaged", "error": "run.json unreadable"}))
+    return out
+
+
+def _find_run(ref: str, runs_dir: Path) -> Path:
+    """A run by path or name (as :func:`store.find_run`), or ``latest`` / ``-N`` (the N-th newest),
+    or a workflow's name (its newest run)."""
+    from .store import find_run
+
+    if ref == "latest" or (ref.startswith("-") and ref[1:].isdigit()):
+        n = 1 if ref == "latest" else int(ref[1:])
+        infos = _run_infos(runs_dir)
+        if not 1 <= n <= len(infos):
+            raise UserError(f"{ref}: there are {len(infos)} run(s) in {runs_dir}")
+        return infos[n - 1][0]
+    p = Path(ref)
+    if not (p / "run.json").exists():
+        of_workflow = [run for run, info in _run_infos(runs_dir) if info.get("name") == ref]
+        if of_workflow:
+            return of_workflow[0]
+    return find_run(ref, runs_dir)
+
+
+def cmd_runs(args: argparse.Namespace) -> int:
+    infos = _run_infos(Path(args.runs_dir))
+    if args.workflow:
+        infos = [(r, i) for r, i in infos if args.workflow in (i.get("name"), Path(str(i.get("workflow", ""))).stem)]
+    if args.status:
+        infos = [(r, i) for r, i in infos if i.get("status") == args.status]
+    if args.since:
+        infos = [(r, i) for r, i in infos if str(i.get("started") or r.name) >= args.since]
+    if not infos:
+        print(f"no runs in {args.runs_dir}" + (" that match" if args.workflow or args.status or args.since else ""))
         return 0
-    for run in runs[: args.limit]:
-        info = read_json(run / "run.json", {})
+    for run, info in infos[: args.limit]:
         secs = info.get("seconds")
         print(f"{run.name:<50} {info.get('status', '?'):<11} {f'{secs:.2f}s' if secs is not None else '':>8}  "
               f"{info.get('error') or ''}"[:160])
@@ -200,9 +247,9 @@ def cmd_runs(args: argparse.Namespace) -> int:
 
 
 def cmd_show(args: argparse.Namespace) -> int:
-    from .store import RunStore, find_run, read_json
+    from .store import RunStore, read_json
 
-    store = RunStore.open(find_run(args.run, Path(args.runs_dir)))
+    store = RunStore.open(_find_run(args.run, Path(args.runs_dir)))
     info = store.run_info()
     print(f"run       {store.root}")
     for key in ("name", "workflow", "status", "started", "finished", "seconds", "error_step", "error"):
@@ -221,15 +268,14 @@ def cmd_show(args: argparse.Namespace) -> int:
     outputs = read_json(store.root / "outputs.json")
     if outputs is not None:
         print("outputs:")
-        print("  " + json.dumps(outputs, indent=2, default=str).replace("\n", "\n  ")[:4000])
+        print("  " + json.dumps(outputs, indent=2, default=str).replace("\n", "\n  "))
     return 0
 
 
 def cmd_resume(args: argparse.Namespace) -> int:
     from .runner import resume_run
-    from .store import find_run
 
-    run_dir = find_run(args.run, Path(args.runs_dir))
+    run_dir = _find_run(args.run, Path(args.runs_dir))
     options, display = _options(args, [])
     try:
         result = resume_run(run_dir, options=options)
@@ -243,8 +289,12 @@ def cmd_cache(args: argparse.Namespace) -> int:
     from .cache import StepCache
 
     cache = StepCache(Path(args.dir) if args.dir else None)
-    count = cache.clear()
+    count = cache.clear()  # refuses (exit 2) a folder pipflow did not mark as its cache
     print(f"removed {count} cache entr{'y' if count == 1 else 'ies'} from {cache.root}")
+    others = cache.leftovers()
+    if others:
+        print(f"kept {len(others)} item(s) pipflow did not write: " + ", ".join(p.name for p in others[:5]),
+              file=sys.stderr)
     return 0
 
 
@@ -252,14 +302,6 @@ def cmd_bench(args: argparse.Namespace) -> int:
     from pipflow.bench import bench_main
 
     return bench_main(args)
-
-
-def cmd_report(args: argparse.Namespace) -> int:
-    from pipflow.report import write_report
-
-    path = write_report(Path(args.dir), Path(args.output) if args.output else None)
-    print(path)
-    return 0
 
 
 # -- parser --------------------------------------------------------------------------------
@@ -305,10 +347,14 @@ def build_parser() -> argparse.ArgumentParser:
 
     runs = sub.add_parser("runs", parents=[common], help="list runs, newest first")
     runs.add_argument("--limit", type=int, default=30)
+    runs.add_argument("--workflow", help="only runs of this workflow (its name or file stem)")
+    runs.add_argument("--status", help="only runs with this status (succeeded, failed, refused, ...)")
+    runs.add_argument("--since", help="only runs started at or after this UTC date/time (2026-11-30, 2026-11-30T05)")
     runs.set_defaults(func=cmd_runs)
 
     show = sub.add_parser("show", parents=[common], help="summarise a run")
-    show.add_argument("run", help="run directory, its name, or a unique part of it")
+    show.add_argument("run", help="run directory, its name or a unique part of it, a workflow's name "
+                                  "(its newest run), latest, or -N (the N-th newest)")
     show.set_defaults(func=cmd_show)
 
     resume = sub.add_parser("resume", parents=[common], help="rerun only what did not finish")
@@ -343,11 +389,22 @@ def build_parser() -> argparse.ArgumentParser:
                             "(default: $PIPFLOW_LLM_CONCURRENCY or 4)")
     bench.set_defaults(func=cmd_bench)
 
-    report = sub.add_parser("report", parents=[common], help="write a static HTML report of a run or a bench")
-    report.add_argument("dir", help="run directory or bench output directory")
-    report.add_argument("-o", "--output", help="HTML file (default: DIR/report.html)")
-    report.set_defaults(func=cmd_report)
+    _plugin_commands(sub, common)
     return parser
+
+
+def _plugin_commands(sub, common: argparse.ArgumentParser) -> None:
+    """Sub-commands registered by installed packages (entry-point group ``pipflow.commands``:
+    a function ``register(subparsers, common)``); pipflow's own report/view/compare come this
+    way too, so the engine's CLI imports nothing of the library above it. A package whose
+    commands fail to load is reported and skipped: the other commands still work."""
+    from importlib.metadata import entry_points
+
+    for ep in sorted(entry_points(group="pipflow.commands"), key=lambda e: e.name):
+        try:
+            ep.load()(sub, common)
+        except Exception as err:  # a broken plugin must not take the whole CLI down
+            print(f"warning: commands of {ep.value!r} not loaded: {type(err).__name__}: {err}", file=sys.stderr)
 
 
 def main(argv: Sequence[str] | None = None) -> int:

@@ -17,7 +17,7 @@ import networkx as nx
 
 from pipflow.errors import InputError, PipflowError, Refusal, StepError, UserError
 
-from .cache import StepCache, cache_key
+from .cache import CacheRefused, StepCache, cache_key
 from .expr import ExpressionError, resolve, truthy
 from .model import LoopSpec, StepSpec, Workflow
 from .registry import Registry
@@ -56,7 +56,8 @@ class Executor:
         self.store = store
         self.inputs = inputs
         self.options = options
-        self.cache = StepCache(options.cache_dir) if options.use_cache else None
+        self.cache = StepCache(options.cache_dir) if options.use_cache else None  # --no-cache: no reads, no writes
+        self._cache_writable = True
         self.state = ExecutionState()
         self.state.outputs.update(completed or {})
         self._env = {name: os.environ[name] for name in workflow.env if name in os.environ}  # declared only
@@ -203,18 +204,34 @@ class Executor:
         started = time.perf_counter()
         use_cache = self.cache is not None and (spec.cache if spec.cache is not None else step.cacheable)
         key = cache_key(step.name, step.version, args, step.module) if use_cache else None
-        outputs = self.cache.get(key, artifact_dir) if key else None
+        problems: list[str] = []
+        outputs = self.cache.get(key, artifact_dir, step.outputs, problems) if key else None
+        for problem in problems:
+            self.store.event("warning", spec.id, message=problem)
         cached = outputs is not None
         if not cached:
             outputs = self._call_with_retries(spec, step, args, artifact_dir, iteration)
             if key:
-                self.cache.put(key, outputs, artifact_dir)
+                self._cache_put(spec.id, key, outputs, artifact_dir)
         duration = time.perf_counter() - started
         self.store.write_step_outputs(spec.id, outputs, iteration)
         with self._lock:
             self.state.durations[spec.id] = self.state.durations.get(spec.id, 0.0) + duration
         self.store.event("end", spec.id, status="succeeded", duration=round(duration, 6), cached=cached, **label)
         return outputs
+
+    def _cache_put(self, step_id: str, key: str, outputs: dict, artifact_dir: Path) -> None:
+        """Store a result; a cache that cannot be written is a warning (once), never a failure:
+        the result is in the run record either way."""
+        if not self._cache_writable:
+            return
+        try:
+            self.cache.put(key, outputs, artifact_dir)
+        except (OSError, CacheRefused) as err:
+            message = str(err) if isinstance(err, CacheRefused) else \
+                f"cannot write the step cache in {self.cache.root} ({err.strerror or err}); results are not cached"
+            self.store.event("warning", step_id, message=message)
+            self._cache_writable = False  # no more attempts in this run
 
     def _arguments(self, spec: StepSpec, step: Step, ns: dict) -> dict:
         args = step.defaults()

@@ -31,6 +31,8 @@ class PlainProgress:
             self._print(f"{stamp} retry {step}{it}: {event.get('error')}")
         elif kind == "iteration" and not event.get("done"):
             self._print(f"{stamp} loop  {step}: iteration {event['iteration']} did not meet its condition")
+        elif kind == "warning":
+            self._print(f"{stamp} warn  {step}: {event.get('message')}")
         elif kind == "log" and self.verbose:
             self._print(f"{stamp} log   {step}: {event.get('message')}")
         elif kind == "start" and self.verbose:
@@ -69,6 +71,9 @@ class LiveProgress:
 
     def __call__(self, event: dict) -> None:
         kind, step = event.get("event"), event.get("step")
+        if kind == "warning":
+            self.live.console.print(f"[yellow]warning[/] {step}: {event.get('message')}", markup=True,
+                                    highlight=False)
         if step not in self.rows:
             return
         with self._lock:
