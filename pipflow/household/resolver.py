@@ -30,6 +30,7 @@ from dataclasses import dataclass, field
 
 from pipflow.errors import Refusal, TranslationError
 from pipflow.household.lexicon import INDEFINITE, MASS_NOUNS, REACHABLE, VIA_PROPERTY
+from pipflow.household.order import check_order
 from pipflow.household.problem import CONDITIONS
 from pipflow.household.world import entity, initial_state, members
 
@@ -364,5 +365,6 @@ class Resolver:
 
 def resolve(order: dict, world: dict) -> dict:
     """``{"goal": {"in", "state", "count"?}, "explain": [one line per condition with its words],
-    "notes": [...]}`` for a household order in a world; Refusal or TranslationError otherwise."""
-    return Resolver(world).resolve(order)
+    "notes": [...]}`` for a household order in a world (checked against its schema first);
+    Refusal or TranslationError otherwise."""
+    return Resolver(world).resolve(check_order(order))

@@ -100,12 +100,26 @@ def reference_actions(world: dict, goal: dict) -> int:
     return n
 
 
-def score_run(world: dict, goal: dict, *, graph: dict | None = None, schedule: dict | None = None,
-              simulation: dict | None = None, refusal: str | None = None, error: str | None = None) -> dict:
-    """Score one household run (``world``: the team's world). Keys as :func:`pipflow.scoring.score_run`."""
+def score_run(world: dict, goal: dict, *, feasible: bool = True, graph: dict | None = None,
+              schedule: dict | None = None, simulation: dict | None = None, refusal: str | None = None,
+              error: str | None = None) -> dict:
+    """Score one household run (``world``: the team's world). Keys as :func:`pipflow.scoring.score_run`.
+
+    A task marked ``feasible: false`` succeeds exactly when the run was refused with a reason and
+    nothing was planned or executed (a refusal is the right answer: robots must not move)."""
     sim = simulation or {}
     planned = len((schedule or {}).get("subtasks", []))
-    base = {"planned": planned, "executed": int(sim.get("executed", 0)), "refused": bool(refusal),
+    executed = int(sim.get("executed", 0))
+    if not feasible:
+        ok = bool(refusal and str(refusal).strip()) and executed == 0 and planned == 0
+        violations = [] if ok else (["infeasible command was not refused"] if not refusal else
+                                    ["refusal has no reason"] if not str(refusal).strip() else ["actions were executed"])
+        return {"planned": planned, "executed": executed, "refused": bool(refusal), "error": refusal or error or None,
+                "makespan": float(sim.get("makespan", 0.0) or 0.0), "lower_bound": None, "success": ok,
+                "goal_met": ok, "gcr": 1.0 if ok else 0.0, "exe": 1.0 if ok else float(sim.get("exe", 0.0) or 0.0),
+                "ru": 1.0 if ok else 0.0, "tc_max": float(sim.get("tc_max", 0.0)), "tc_avg": float(sim.get("tc_avg", 0.0)),
+                "violations": violations}
+    base = {"planned": planned, "executed": executed, "refused": bool(refusal),
             "error": refusal or error or None, "makespan": float(sim.get("makespan", 0.0) or 0.0),
             "lower_bound": reference_actions(world, goal)}
     if simulation is None:
@@ -130,7 +144,8 @@ def load_tasks(path: str | Path) -> dict:
     """Load a household task file and its world; :class:`WorldError` lists every problem located.
 
     Returns ``{"path", "world_path", "world", "domain": "household", "workflow", "tasks": [{"id",
-    "command", "category", "team", "goal", "feasible", "domain", "inputs": {"team": ...}}]}``."""
+    "command", "category", "team", "goal", "feasible", "construction"?, "domain", "inputs": {"team": ...}}]}``;
+    a task marked ``feasible: false`` (its right answer is a refusal) needs no goal."""
     from pipflow.errors import Diagnostic, WorldError
     from pipflow.household.world import load_world, team_members
     from pipflow.world import _did_you_mean, _parse, _read
@@ -150,7 +165,7 @@ def load_tasks(path: str | Path) -> dict:
             diags.append(Diagnostic(locate(("tasks", i)), "a task must be a mapping"))
             continue
         tid = str(t.get("id"))
-        for key in ("id", "command", "category", "goal"):
+        for key in ("id", "command", "category") + (("goal",) if t.get("feasible", True) is not False else ()):
             if key not in t:
                 diags.append(Diagnostic(locate(("tasks", i)), f"task {tid}: missing {key!r}"))
         if tid in seen:
@@ -195,6 +210,7 @@ def load_tasks(path: str | Path) -> dict:
                       "goal": {"in": dict(goal.get("in") or {}), "state": dict(goal.get("state") or {}),
                                **({"count": list(goal["count"])} if goal.get("count") else {})},
                       "feasible": t.get("feasible", True), "domain": "household",
+                      **({"construction": str(t["construction"])} if t.get("construction") else {}),
                       "inputs": {"team": ",".join(team) if isinstance(team, list) else team}})
     if diags:
         raise WorldError(diags, f"invalid household task file {p} ({len(diags)} problem(s))")
@@ -207,7 +223,8 @@ def score_bench_run(world_path: str, task: dict, outputs: dict, refusal: str | N
     from pipflow.household.world import load_world, select_team
 
     world = select_team(load_world(world_path), task.get("team"))
-    return score_run(world, task.get("goal") or {}, graph=outputs.get("graph"), schedule=outputs.get("schedule"),
+    return score_run(world, task.get("goal") or {}, feasible=task.get("feasible", True) is not False,
+                     graph=outputs.get("graph"), schedule=outputs.get("schedule"),
                      simulation=outputs.get("simulation"), refusal=refusal, error=error)
 
 
