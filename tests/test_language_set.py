@@ -1,0 +1,247 @@
+"""The language generalization set (benchmarks/language/, warehouse part).
+
+Two kinds of checks. The data: every world loads through the project's world loader with its
+robots' kinds and tags; every task file validates against schemas/tasks.schema.json and loads
+through pipflow.world.load_tasks; each gold is consistent with its world's stock and capacities
+and follows the conventions of benchmarks/language/README.md where they can be computed (a wrong
+gold would reward a misreading). The reading: the offline path misreads none of the commands
+(the understood share is printed; the target is >= 95%, the 0-misread part is asserted).
+The judge of benchmarks/translator.py is tested on its own too, since the table is only as
+honest as its comparison.
+"""
+from __future__ import annotations
+
+import importlib.util
+import re
+import sys
+from collections import Counter
+from functools import lru_cache
+from pathlib import Path
+
+import jsonschema
+import pytest
+import yaml
+
+from pipflow.errors import Refusal, TranslationError
+from pipflow.world import load_schema, load_tasks, load_world
+
+ROOT = Path(__file__).resolve().parent.parent
+LANGUAGE = ROOT / "benchmarks" / "language"
+README = LANGUAGE / "README.md"
+
+
+def _yaml(path: Path) -> dict:
+    return yaml.safe_load(path.read_text(encoding="utf-8")) or {}
+
+
+def _warehouse_files() -> tuple[list[Path], list[Path]]:
+    """(world files, task files) of the warehouse part; household files have their own tests."""
+    worlds, tasks = [], []
+    for path in sorted(LANGUAGE.glob("*.yaml")):
+        data = _yaml(path)
+        if "tasks" in data:
+            world = _yaml(path.parent / data["world"])
+            if data.get("domain") != "household" and world.get("domain") != "household":
+                tasks.append(path)
+        elif data.get("domain") != "household":
+            worlds.append(path)
+    return worlds, tasks
+
+
+WORLDS, TASK_FILES = _warehouse_files()
+
+
+@lru_cache(maxsize=None)
+def _translator():
+    """benchmarks/translator.py as a module (benchmarks/ is not a package; registered in
+    sys.modules first because its dataclass looks its module up there)."""
+    spec = importlib.util.spec_from_file_location("benchmarks_translator", ROOT / "benchmarks" / "translator.py")
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[spec.name] = module
+    spec.loader.exec_module(module)
+    return module
+
+
+def readme_labels() -> set[str]:
+    """The construction labels of the README's table (so README and data cannot drift apart)."""
+    text = README.read_text(encoding="utf-8").split("## Constructions", 1)[1]
+    labels: set[str] = set()
+    for line in text.splitlines():
+        if line.startswith("| `"):
+            labels |= set(re.findall(r"`([a-z-]+)`", line.split("|")[1]))
+    return labels
+
+
+def _tasks(path: Path) -> list[dict]:
+    return _yaml(path)["tasks"]
+
+
+def _world_of(path: Path) -> dict:
+    return load_world(path.parent / _yaml(path)["world"])
+
+
+def _low(v) -> int:
+    return v if isinstance(v, int) else v.get("at_least", 0)
+
+
+def _high(v) -> float:
+    return v if isinstance(v, int) else v.get("at_most", float("inf"))
+
+
+def _stock(world: dict, place: str, item: str) -> int:
+    return int(world["stock"].get(place, {}).get(item, 0))
+
+
+def _total(world: dict, item: str) -> int:
+    return sum(int(items.get(item, 0)) for items in world["stock"].values())
+
+
+# ---------------------------------------------------------------------------------------------
+# the data
+# ---------------------------------------------------------------------------------------------
+def test_the_set_has_the_size_and_variety_the_issue_asks_for():
+    commands = sum(len(_tasks(p)) for p in TASK_FILES)
+    assert commands >= 150, commands
+    assert len(WORLDS) >= 4
+    worlds = [load_world(p) for p in WORLDS]
+    kinds = [w for w in worlds if any(r.get("kind") for r in w["robots"].values())]
+    assert len(kinds) >= 3, "at least the new worlds have robots of several kinds"
+    assert all(len({r["kind"] for r in w["robots"].values()}) >= 3 for w in kinds)
+    assert any(len(w["robots"]) == 3 for w in worlds), "a 3-robot team"
+    ids = [t["id"] for p in TASK_FILES for t in _tasks(p)]
+    assert len(ids) == len(set(ids)), [i for i, n in Counter(ids).items() if n > 1]
+
+
+def test_every_readme_construction_is_used_and_every_used_label_is_documented():
+    labels = readme_labels()
+    used = Counter(t.get("construction") for p in TASK_FILES for t in _tasks(p))
+    assert None not in used, "every task names its construction"
+    assert set(used) <= labels, set(used) - labels
+    assert labels <= set(used), labels - set(used)
+
+
+@pytest.mark.parametrize("path", WORLDS, ids=lambda p: p.name)
+def test_world_loads_with_its_robots_kinds_and_tags(path):
+    world = load_world(path)
+    raw = _yaml(path)["robots"]
+    for name, robot in raw.items():
+        assert world["robots"][name].get("kind") == robot.get("kind"), name
+        assert list(world["robots"][name].get("tags") or []) == list(robot.get("tags") or []), name
+
+
+@pytest.mark.parametrize("path", TASK_FILES, ids=lambda p: p.name)
+def test_task_file_validates_against_the_task_schema_and_loads(path):
+    jsonschema.Draft202012Validator(load_schema("tasks.schema.json")).validate(_yaml(path))
+    loaded = load_tasks(path)  # names in goals and rules exist in the world
+    assert len(loaded["tasks"]) == len(_tasks(path))
+
+
+@pytest.mark.parametrize("path", TASK_FILES, ids=lambda p: p.name)
+def test_gold_is_consistent_with_the_world(path):
+    world = _world_of(path)
+    products, shelves, robots = world["products"], world["shelves"], world["robots"]
+    problems: list[str] = []
+    for task in _tasks(path):
+        tid, goal, label = task["id"], task["goal"], task["construction"]
+        for rule in task.get("constraints") or []:
+            for r in rule.get("only", []) + rule.get("never", []):
+                if r not in robots:
+                    problems.append(f"{tid}: unknown robot {r}")
+        for place, items in goal.items():
+            for item, v in items.items():
+                if isinstance(v, dict) and _low(v) > _high(v):
+                    problems.append(f"{tid}: bound {v} is empty")
+        refuse = task.get("expect") == "refuse"
+        infeasible = task.get("feasible", True) is False
+        if refuse != (label == "ambiguous") or infeasible != label.startswith("infeasible-"):
+            problems.append(f"{tid}: label {label} does not match feasible/expect")
+        if refuse and (goal or task.get("constraints") or infeasible):
+            problems.append(f"{tid}: an ambiguous command has no gold to execute")
+        over_capacity = [p for p, items in goal.items()
+                         if sum(_low(v) for v in items.values()) > shelves[p]["capacity"]]
+        over_stock = [i for i in products
+                      if sum(_low(items[i]) for items in goal.values() if i in items) > _total(world, i)]
+        if label == "infeasible-capacity" and not over_capacity:
+            problems.append(f"{tid}: gold is not over any capacity")
+        if label == "infeasible-exceeds" and goal and not over_stock:
+            problems.append(f"{tid}: gold does not ask for more than exists")
+        if label == "infeasible-negative" and goal:
+            problems.append(f"{tid}: a negative count has no goal to write")
+        if infeasible or refuse:
+            continue
+        if over_capacity or over_stock:
+            problems.append(f"{tid}: feasible gold over capacity {over_capacity} or stock {over_stock}")
+        for item in products:  # a product that every place lists must account for all its units
+            if all(item in goal.get(p, {}) for p in shelves):
+                if sum(_high(goal[p][item]) for p in shelves) < _total(world, item):
+                    problems.append(f"{tid}: every place lists {item} but the units do not fit")
+        if label in {"transfer", "swap-all", "swap-some", "distribute", "selector-rest"}:
+            for item in {i for items in goal.values() for i in items}:
+                places = [p for p in goal if item in goal[p]]
+                before = sum(_stock(world, p, item) for p in places)
+                after = sum(goal[p][item] for p in places)
+                if before != after:
+                    problems.append(f"{tid}: {item} not conserved over {places} ({before} -> {after})")
+        if label in {"swap-all", "swap-some"}:
+            a, b = list(goal)
+            for item in set(goal[a]) | set(goal[b]):
+                if (goal[a].get(item), goal[b].get(item)) != (_stock(world, b, item), _stock(world, a, item)):
+                    problems.append(f"{tid}: {item} is not swapped between {a} and {b}")
+            if label == "swap-all":
+                held = {i for i in products if _stock(world, a, i) or _stock(world, b, i)}
+                if set(goal[a]) != held or set(goal[b]) != held:
+                    problems.append(f"{tid}: a full swap lists every product either place holds")
+        if label == "empty":
+            (place, items), = goal.items()
+            if items != {i: 0 for i in products}:
+                problems.append(f"{tid}: emptying sets every product of the world to 0")
+    assert not problems, "\n".join(problems)
+
+
+# ---------------------------------------------------------------------------------------------
+# the judge of the table
+# ---------------------------------------------------------------------------------------------
+def test_judge_compares_bounds_exactly_and_rules_as_sets():
+    judge = _translator().judge
+    task = {"goal": {"a": {"x": {"at_least": 3}}, "b": {"y": 2}},
+            "constraints": [{"only": ["r1", "r2"], "product": "x"}, {"never": ["r3"]}]}
+    same = {"goal": {"b": {"y": 2}, "a": {"x": {"at_least": 3}}},
+            "constraints": [{"never": ["r3"], "words": "not r3"}, {"only": ["r2", "r1"], "product": "x"}]}
+    assert judge(task, same, None)[0] == "understood"
+    exact_for_bound = {"goal": {"a": {"x": 3}, "b": {"y": 2}}, "constraints": same["constraints"]}
+    assert judge(task, exact_for_bound, None)[0] == "misread"
+    unscoped = {"goal": same["goal"], "constraints": [{"never": ["r3"]}, {"only": ["r1", "r2"]}]}
+    assert judge(task, unscoped, None)[0] == "misread"
+    dropped = {"goal": same["goal"], "constraints": [{"never": ["r3"]}]}
+    assert judge(task, dropped, None)[0] == "misread"
+    point = {"goal": {"a": {"x": 4}}}
+    assert judge(point, {"goal": {"a": {"x": {"at_least": 4, "at_most": 4}}}}, None)[0] == "understood"
+    assert judge(point, {"goal": {"a": {"x": True}}}, None)[0] == "misread"
+
+
+def test_judge_verdicts_for_refusals_and_crashes():
+    judge = _translator().judge
+    clear = {"goal": {"a": {"x": 1}}}
+    assert judge(clear, None, TranslationError("'zorp' is not understood"))[0] == "refused"
+    assert judge(clear, None, KeyError("x"))[0] == "crashed"
+    infeasible = {"goal": {"a": {"x": 99}}, "feasible": False}
+    assert judge(infeasible, None, Refusal("over capacity"))[0] == "understood"
+    assert judge(infeasible, {"goal": {"a": {"x": 99}}}, None)[0] == "understood"  # the verifier refuses it
+    assert judge(infeasible, {"goal": {"a": {"x": 9}}}, None)[0] == "misread"
+    ambiguous = {"goal": {}, "expect": "refuse"}
+    assert judge(ambiguous, None, TranslationError("'a few' is not a number"))[0] == "understood"
+    assert judge(ambiguous, {"goal": {"a": {"x": 3}}}, None)[0] == "misread"
+
+
+# ---------------------------------------------------------------------------------------------
+# the reading
+# ---------------------------------------------------------------------------------------------
+def test_offline_reading_misreads_no_command_of_the_set():
+    table = _translator()
+    outcomes = [o for path in TASK_FILES for o in table.run_file(path)]
+    print("\n" + table.table(outcomes))
+    counts = Counter(o.verdict for o in outcomes)
+    print(f"understood {counts['understood']}/{len(outcomes)} = {counts['understood'] / len(outcomes):.1%}")
+    wrong = [f"{o.verdict} {o.task_id} [{o.construction}]: {o.detail}"
+             for o in outcomes if o.verdict in ("misread", "crashed")]
+    assert not wrong, f"{len(wrong)} misread or crashed:\n" + "\n".join(wrong)
