@@ -37,52 +37,92 @@ def debug(ctx: StepContext, problem: str | None, domain: str, world: dict | None
 
 
 @step("pddl.solve",
-      doc="Solve a problem with a UP engine; status is solved, unsolvable, timeout or error, each with its message.",
+      doc="Solve a problem with a UP engine; status is solved, unsolvable or error, each with its message; a time-out fails the step.",
       inputs={"problem": Input("string", doc="PDDL problem text"),
               "domain": Input("path", doc="PDDL domain file"),
               "engine": Input("string", default=DEFAULT_ENGINE,
                               doc="UP engine: pipflow-transport (fast, near-fewest moves), enhsp, enhsp-opt, fast-downward, ..."),
               "params": Input("object", default=None, doc="engine parameters, e.g. {params: '-h hmax -s WAStar'} for ENHSP"),
               "timeout": Input("number", default=60, doc="seconds"),
-              "fallback": Input("string", default="enhsp",
-                                doc="engine to try when the first cannot handle the problem (unsupported, gave up); empty = none"),
+              "fallback": Input("string", default=None,
+                                doc="engine to try when the first cannot handle the problem (unsupported, gave up, "
+                                    "timed out); unset: none. The outputs name the engine that answered"),
               "world": Input("object", default=None,
                              doc="world dict: the plan's names are then spelled as the world spells them (PDDL reads them in lower case)"),
               "constraints": Input("array", default=None,
                                    doc="only/never robot rules: with the world, pipflow-transport keeps each move within what its allowed robots carry")},
-      outputs={"status": "string", "plan": "array", "message": "string", "time": "number"})
+      outputs={"status": "string", "plan": "array", "message": "string", "time": "number", "engine": "string"})
 def solve(ctx: StepContext, problem: str | None, domain: str, engine: str = DEFAULT_ENGINE,
-          params: dict | None = None, timeout: float = 60, fallback: str = "enhsp", world: dict | None = None,
+          params: dict | None = None, timeout: float = 60, fallback: str | None = None, world: dict | None = None,
           constraints: list | None = None) -> dict:
+    """An unknown engine (or fallback) is the user's error: exit 2, naming the installed planners,
+    never a silent substitute. A problem that found no plan is remembered in this process by
+    content (domain, problem, engine, params, timeout): an unchanged problem in the next round of
+    a refinement loop is not solved again. A time-out (of the fallback too, if the workflow names
+    one) fails the step with "the planner ... timed out after N s": another round would time out
+    again."""
+    from pipflow.errors import PlanningError
     from pipflow.pddl.common import format_plan
     from pipflow.pddl.names import plan_in_world_names
-    from pipflow.pddl.solver import solve_problem
+    from pipflow.pddl.solver import check_engine
 
+    check_engine(engine)
+    if fallback:
+        check_engine(fallback)
     if not problem:
         return {"status": "error", "plan": None, "message": "no problem to solve (the debugger rejected it or it was not written)",
-                "time": 0.0}
+                "time": 0.0, "engine": engine}
     try:
         parsed = _parse(ctx, problem, domain)
     except Exception as exc:
         return {"status": "error", "plan": None, "message": f"the problem does not parse ({exc}); run pddl.debug first",
-                "time": 0.0}
+                "time": 0.0, "engine": engine}
+    domain_text = _read_text(ctx.resolve_path(domain))
+    first_params = params
     if engine == DEFAULT_ENGINE and world and world.get("robots"):
         robots = {name: r.get("skills", {}).get("carry", 0) for name, r in world["robots"].items()}
-        params = {"robots": robots, "rules": constraints or [], **(params or {})}
-    result = solve_problem(parsed, engine, params, timeout)
+        first_params = {"robots": robots, "rules": constraints or [], **(params or {})}
+    result = _solve_once(ctx, parsed, problem, domain_text, engine, first_params, timeout)
     message = result.message
-    if result.status == "error" and fallback and fallback != engine:
-        ctx.log(f"solve: {message}; trying {fallback}")
-        second = solve_problem(parsed, fallback, None, timeout)
+    if result.status in ("error", "timeout") and fallback and fallback != engine:
+        ctx.log(f"solve: {message}; trying the fallback {fallback}")
+        second = _solve_once(ctx, parsed, problem, domain_text, fallback, None, timeout)
         message = f"{message}; fell back to {fallback}: {second.message}"
+        ctx.metrics["fallback"] = fallback
         result = second
     ctx.log(f"solve: {message}")
     ctx.metrics.update({"solve_time": result.time, "engine": result.engine,
                         "plan_length": len(result.plan) if result.plan else None})
+    if result.status == "timeout":
+        raise PlanningError(message)
     plan = plan_in_world_names(result.plan, world)
     if plan is not None:
         ctx.write_artifact("plan.txt", format_plan(plan))
-    return {"status": result.status, "plan": plan, "message": message, "time": result.time}
+    return {"status": result.status, "plan": plan, "message": message, "time": result.time,
+            "engine": result.engine}
+
+
+def _read_text(path) -> str:
+    try:
+        return path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError):
+        return str(path)  # it parsed a moment ago; the path still tells the problems apart
+
+
+def _solve_once(ctx: StepContext, parsed, problem: str, domain_text: str, engine: str, params, timeout):
+    """One solver call, or the remembered outcome of an identical earlier one."""
+    from dataclasses import replace
+
+    from pipflow.pddl.solver import problem_digest, remember, remembered, solve_problem
+
+    digest = problem_digest(domain_text, problem, engine, params, timeout)
+    earlier = remembered(digest)
+    if earlier is not None:
+        ctx.log(f"solve: {engine} already answered this exact problem in this process; not solved again")
+        return replace(earlier, time=0.0, message=f"{earlier.message} (the same problem as before: not solved again)")
+    result = solve_problem(parsed, engine, params, timeout)
+    remember(digest, result)
+    return result
 
 
 @step("pddl.verify",

@@ -14,13 +14,21 @@ for ENHSP). Each outcome gets its own status and message:
 """
 from __future__ import annotations
 
+import hashlib
+import json
 import time
 import warnings
+from collections import OrderedDict
 from dataclasses import dataclass, field
 from typing import Any
 
+from pipflow.errors import InputError
+
 DEFAULT_ENGINE = "pipflow-transport"
 JAVA_ENGINES = ("enhsp",)
+#: how many unsolved outcomes a process remembers (see :func:`remembered`)
+MEMORY = 64
+_unsolved: "OrderedDict[str, SolveResult]" = OrderedDict()
 
 
 @dataclass
@@ -33,13 +41,67 @@ class SolveResult:
     details: dict = field(default_factory=dict)
 
 
+def planner_names() -> list[str]:
+    """The one-shot planners installed in UP (``enhsp``, ``pipflow-transport``, ...), without
+    UP's meta-engines (``oversubscription[...]``) and non-planners (validators, compilers)."""
+    from pipflow.pddl.common import environment
+
+    factory = environment().factory
+    names = []
+    for name in factory.engines:
+        if "[" in name:
+            continue
+        try:
+            if factory.engine(name).is_oneshot_planner():
+                names.append(name)
+        except Exception:  # an engine that cannot even be described is not offered
+            continue
+    return names
+
+
+def check_engine(engine: str) -> None:
+    """Raise :class:`InputError` (exit 2) for a planner that is not installed, naming those that
+    are: a misspelt planner must never be replaced silently by another one."""
+    known = planner_names()
+    if engine not in known:
+        import difflib
+
+        close = difflib.get_close_matches(str(engine), known, n=1)
+        raise InputError(f"unknown planner {engine!r}" + (f" (did you mean {close[0]!r}?)" if close else "")
+                         + f"; installed planners: {', '.join(known)}")
+
+
+def problem_digest(domain_text: str, problem_text: str, engine: str, params: Any, timeout: Any) -> str:
+    """The identity of one solver call: what it solves, with what, for how long."""
+    material = json.dumps([domain_text, problem_text, engine, params, timeout], sort_keys=True, default=str)
+    return hashlib.sha256(material.encode("utf-8")).hexdigest()
+
+
+def remembered(digest: str) -> "SolveResult | None":
+    """The outcome of an identical call that found no plan earlier in this process (time-out,
+    error, unsolvable), or None. A refinement loop whose problem did not change does not pay the
+    planner's time limit again: the answer would be the same."""
+    return _unsolved.get(digest)
+
+
+def remember(digest: str, result: "SolveResult") -> None:
+    """Keep an unsolved outcome (solved ones are not kept: their time is measured every run)."""
+    if result.status == "solved":
+        return
+    _unsolved[digest] = result
+    _unsolved.move_to_end(digest)
+    while len(_unsolved) > MEMORY:
+        _unsolved.popitem(last=False)
+
+
 def _logs(result: Any) -> str:
     return "; ".join(m.message.strip() for m in (result.log_messages or []) if m.message and m.message.strip())
 
 
 def solve_problem(problem: Any, engine: str = DEFAULT_ENGINE, params: dict | None = None,
                   timeout: float | None = 60.0) -> SolveResult:
-    """Solve UP ``problem`` with ``engine``; never raises for an engine-side failure."""
+    """Solve UP ``problem`` with ``engine``; never raises for an engine-side failure (an engine
+    that is not installed is the user's: :class:`InputError`)."""
     from pipflow.pddl.common import environment, plan_to_data
     from unified_planning.engines import PlanGenerationResultStatus as S
     from unified_planning.shortcuts import OneshotPlanner
@@ -47,8 +109,7 @@ def solve_problem(problem: Any, engine: str = DEFAULT_ENGINE, params: dict | Non
     env = environment()
     started = time.monotonic()
     if engine not in env.factory.engines:
-        return SolveResult("error", None, f"unknown planning engine {engine!r}; installed: "
-                           f"{', '.join(n for n in env.factory.engines if '[' not in n)}", 0.0, engine)
+        check_engine(engine)
     if engine.startswith(JAVA_ENGINES):
         from pipflow.pddl.java import ensure_java
 
@@ -75,7 +136,7 @@ def solve_problem(problem: Any, engine: str = DEFAULT_ENGINE, params: dict | Non
         return SolveResult("unsolvable", None, f"{engine} proved that no plan reaches the goal"
                            + (f": {logs}" if logs else ""), elapsed, engine)
     if st == S.TIMEOUT:
-        return SolveResult("timeout", None, f"{engine} found no plan within the time limit of {timeout} s",
+        return SolveResult("timeout", None, f"the planner {engine} timed out after {timeout:g} s without a plan",
                            elapsed, engine)
     if st == S.UNSOLVABLE_INCOMPLETELY:
         return SolveResult("error", None, f"{engine} gave up without a plan (it is incomplete, so a plan may "
