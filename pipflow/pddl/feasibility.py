@@ -72,16 +72,25 @@ def infeasibility_reasons(world: dict, goal: dict[str, dict[str, Any]]) -> list[
                            f"but its capacity is {cap[s]}")
     if reasons:
         return reasons
-    free_total, flow = _leftover_flow(shelves, products, cap, total, cells)
+    room = {s: cap[s] - sum(cells[s, p][0] for p in products) for s in shelves}
+    for p in products:  # one product alone without room names the product to blame
+        free, flow = _leftover_flow(shelves, [p], room, total, cells)
+        if flow < free:
+            reasons.append(f"{free} units of {p} must stay on some shelf, but the goal leaves room "
+                           f"for only {flow} of them")
+    if reasons:
+        return reasons
+    free_total, flow = _leftover_flow(shelves, products, room, total, cells)
     if flow < free_total:
         return [f"{free_total} units that the goal leaves free must stay on some shelf, "
                 f"but only {flow} fit in the room the goal leaves"]
     return []
 
 
-def _leftover_flow(shelves: list[str], products: list[str], cap: dict[str, int], total: dict[str, int],
+def _leftover_flow(shelves: list[str], products: list[str], room: dict[str, int], total: dict[str, int],
                    cells: dict[tuple[str, str], tuple[int, int | None]]) -> tuple[int, int]:
-    """``(units left over once every cell holds its lowest count, units of those that fit)``."""
+    """``(units of ``products`` left over once every cell holds its lowest count, units of those
+    that fit)``; ``room``: what each shelf has left once every cell holds its lowest count."""
     g = nx.DiGraph()
     g.add_node("src")
     g.add_node("dst")
@@ -99,8 +108,7 @@ def _leftover_flow(shelves: list[str], products: list[str], cap: dict[str, int],
             elif hi > lo:
                 g.add_edge(("p", p), ("s", s), capacity=hi - lo)
     for s in shelves:
-        room = cap[s] - sum(cells[s, p][0] for p in products)
-        g.add_edge(("s", s), "dst", capacity=max(0, room))
+        g.add_edge(("s", s), "dst", capacity=max(0, room[s]))
     if not free_total:
         return 0, 0
     return free_total, int(nx.maximum_flow_value(g, "src", "dst"))
