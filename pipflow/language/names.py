@@ -266,6 +266,11 @@ class NameIndex:
 
 
 def tokenize(command: str, index: NameIndex) -> list[Tok]:
+    """:func:`recognize`, then :func:`read_counts`."""
+    return read_counts(recognize(command, index))
+
+
+def recognize(command: str, index: NameIndex) -> list[Tok]:
     """Split a command into words, names, counts and punctuation.
 
     Names are recognised before counts, so "product 1" is one product and not a count of 1.
@@ -300,7 +305,14 @@ def tokenize(command: str, index: NameIndex) -> list[Tok]:
             continue
         toks.append(Tok("word", t, t.lower()))
         i += 1
-    # counts: read over plain words only
+    return [t for t in toks if t is not None]
+
+
+def read_counts(toks: list[Tok]) -> list[Tok]:
+    """Merge runs of plain words that spell a count ("ten plus seven") into one "num" token.
+
+    Counts are read over plain words only, so a name never becomes part of a count.
+    """
     out: list[Tok] = []
     words = [t.value if t.kind == "word" else None for t in toks]
     i = 0

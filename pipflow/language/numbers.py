@@ -27,6 +27,8 @@ COLLECTIVES: dict[str, int] = {
 }
 # Written between two counts, these combine them; multiplication binds tighter, as in school.
 ADDITIVE = {"plus": 1, "minus": -1}
+#: the most words one count may span ("two thousand three hundred and forty five plus ...")
+WINDOW = 24
 MULTIPLICATIVE = {"times", "multiplied", "divided"}
 
 NUMBER_WORDS = set(UNITS) | set(TENS) | set(SCALES) | set(COLLECTIVES) | set(ADDITIVE) | {
@@ -71,7 +73,9 @@ class _Parts:
         self.parts: list[str] = []
         self.token_end: list[int] = []  # index of the token after this part, or -1 mid-token
         j = start
-        while j < len(words) and words[j] is not None:
+        # A count is a few words long; looking further would make reading a command quadratic.
+        end = min(len(words), start + WINDOW)
+        while j < end and words[j] is not None:
             pieces = [p for p in words[j].split("-") if p] or [words[j]]
             for k, piece in enumerate(pieces):
                 self.parts.append(piece)

@@ -1,0 +1,342 @@
+"""The grammar of warehouse command English, for lark's Earley parser.
+
+Why a grammar and not word lists: what a clause means comes from its structure (who holds what,
+which way things move, what a negation or an "except" scopes over), and only a parse can tell
+"Restock shelf3 so that it holds ten product1" (a count) from "restock shelf3 with ten product1"
+(ten more). A sentence that the grammar cannot derive is refused at the first word that fits
+nowhere, so a phrasing nobody wrote a rule for is never half-read.
+
+The terminals are categories that :mod:`pipflow.language.lexicon` assigns from the world: PLACE,
+ITEM and ROBOT (a world name), PLACEWORD/ITEMWORD/ROBOTWORD (a kind word alone: "shelf",
+"products", "robots"), RKIND and RTAG (a robot kind or tag of this world: "forklifts"), NUM (a
+count already read from digits, words, collectives or arithmetic), FRAC ("third", "quarters").
+Every other terminal is an English keyword written in quotes below. Filler words ("the",
+"please", "units") are dropped by the lexicon before parsing; nothing else is.
+"""
+from __future__ import annotations
+
+import re
+
+GRAMMAR = r"""
+start: sentence
+sentence: lead? part (sep part)* sep?
+lead: ("but" | "and" | "then" | "also" | "so" | "however" | "now" | "oh" | "well" | "next"
+      | "finally" | "first" | "afterwards" | "after" "that" | "additionally" | "plus") ","?
+
+sep: "," | "and" | "," "and" | "but" | "," "but" | "while" | "," "while" | "whereas"
+   | "," "whereas" | "then" | "," "then" | "and" "then" | "," "and" "then" | "also" | "," "also"
+   | "and" "also" | "," "and" "also" | ":" | "so" | "," "so" | "though" | "," "though"
+   | "," "plus" | "plus" | "," "however" ","?
+
+?part: goal | rule | aside | tail | addressed | scoped_goal
+
+aside: "i" ("think" | "guess" | "suppose" | "believe") | "i" "have" "a" "plan" | "ok" | "okay"
+     | "thanks" | "thank" "you" | "if" "possible" | "as" "well"
+
+// ---------------------------------------------------------------- amounts and items
+lsep: "," | "and" | "," "and" | "plus" | "&" | "as" "well" "as"
+items: np (lsep np)*
+
+np: NUM of? ihead                          -> np_count
+  | NUM ITEMWORD "of" ITEM                 -> np_count
+  | NUM more of? ihead                     -> np_more
+  | NUM of? ihead more                     -> np_more
+  | NUM fewer of? ihead                    -> np_fewer
+  | NUM of? ihead fewer                    -> np_fewer
+  | ("a" | "an") ihead                     -> np_one
+  | ("a" | "an" | "one") more ihead        -> np_one_more
+  | ("all" | "every") of? ihead            -> np_all
+  | "all" of? its ihead                    -> np_all
+  | ("no" | "none" "of" | "zero") ihead    -> np_none
+  | frac of? its? ihead                    -> np_frac
+  | lower NUM of? ihead                    -> np_atleast
+  | NUM of? ihead "or" "more"              -> np_atleast
+  | NUM "or" "more" of? ihead              -> np_atleast
+  | upper NUM of? ihead                    -> np_atmost
+  | NUM of? ihead "or" ("fewer" | "less")  -> np_atmost
+  | NUM "or" ("fewer" | "less") of? ihead  -> np_atmost
+  | "more" "than" NUM of? ihead            -> np_above
+  | ("fewer" | "less") "than" NUM of? ihead -> np_below
+  | "between" NUM "and" NUM of? ihead      -> np_between
+  | NUM "to" NUM of? ihead                 -> np_between
+  | vague NUM of? ihead                    -> np_vague
+  | vagueq of? ihead                       -> np_vague
+  | "one" "of" "each" ITEMWORD?            -> np_each
+  | NUM "of" "each" ITEMWORD?              -> np_each
+  | "everything"                           -> np_everything
+  | ("everything" | "all" ITEMWORD | "every" ITEMWORD | "all" "goods") except_items -> np_everything
+  | "as" "many" ihead "as" PLACE ("has" | "holds" | "have" | "contains") now? -> np_as_many
+  | "as" "many" "as" PLACE ("has" | "holds" | "have" | "contains") now? -> np_as_many_elided
+  | "rest" rest_of?                        -> np_rest
+  | "twice" "as" "many" ihead              -> np_twice
+  | ("double" | "triple" | "quadruple") ihead -> np_times
+  | "half" of? its? ihead                  -> np_half
+
+rest_of: "of" ihead
+except_items: ("except" | "but" | "besides" | "other" "than" | "apart" "from" | "excluding") ihead (lsep ihead)*
+
+ihead: ITEM | ITEMWORD
+of: "of"
+its: "its" | "their" | "it" POSS
+now: "now" | "right" "now" | "today" | "at" "moment" | "currently"
+more: "more" | "extra" | "additional"
+fewer: "fewer" | "less"
+frac: NUM FRAC | ("a" | "an" | "one") FRAC
+lower: "at" "least" | "no" ("fewer" | "less") "than" | "not" ("fewer" | "less") "than" | "a" "minimum" "of"
+     | "minimum" "of"? | "min"
+upper: "at" "most" | "no" "more" "than" | "not" "more" "than" | "up" "to" | "a" "maximum" "of"
+     | "maximum" "of"? | "max"
+vague: "about" | "around" | "roughly" | "approximately" | "nearly" | "almost" | "some" | "like"
+vagueq: "some" | "several" | "a" "few" | "few" | "many" | "lots" "of" | "plenty" "of" | "a" "lot" "of"
+
+// ---------------------------------------------------------------- places
+places: place (lsep place)*
+place: PLACE                                -> place_name
+     | PLACEWORD                            -> place_word
+     | ("it" | "there")                     -> place_it
+     | ("every" | "each" | "all") PLACEWORD  -> place_all
+     | "all" "of" "them"                    -> place_all
+posplace: PLACE POSS
+prep: "in" | "on" | "at" | "into" | "onto" | "inside" | "within" | "to" | "in" "to" | "on" "to"
+each: "each" | "apiece" | "both" | "every" "one"
+loc: prep places                            -> loc
+   | prep ("each" "of" | "both" | "both" "of" | "all" "of" | "every" "one" "of") places -> loc_each
+   | prep places each                       -> loc_each
+   | prep places "respectively"             -> loc_resp
+
+// ---------------------------------------------------------------- verbs
+modal: "should" | "must" | "shall" | "will" | "would" | "ought" "to" | "oughta" | "gotta"
+     | ("needs" | "need" | "has" | "have" | "got") "to" | ("is" | "are" | "be") "supposed" "to"
+     | "supposed" "to" | ("is" | "are") "to" | "to" | "can" | "could" | "may" | "might"
+be: "be" | "is" | "are" | "become" | "becomes" | "end" "up" "with" | "get"
+setv: "has" | "have" | "hold" | "holds" | "store" | "stores" | "stock" | "stocks" | "contain"
+    | "contains" | "get" | "gets" | "keep" | "keeps" | "carry" | "carries" | "house" | "houses"
+    | "need" | "needs" | "receive" | "receives" | "end" "up" "with" | "be" "stocked" "with"
+    | "be" "filled" "with" | "be" "loaded" "with" | "hold" "onto" | "be" "holding" | "is" "holding"
+putv: "put" | "place" | "store" | "stock" | "set" | "leave" | "stack" | "load" | "get"
+    | "make" "sure" "there" ("is" | "are") | "ensure" "there" ("is" | "are")
+addv: "add" | "bring" | "deliver" | "send" | "ship" | "move" | "transfer" | "carry" | "shift"
+    | "relocate" | "take" | "haul" | "bring" "over" | "move" "over" | "send" "over"
+    | "supply" | "drop" "off"
+removev: "remove" | "take" | "unload" | "pull" | "withdraw" | "clear" | "get" | "move"
+splitv: "split" | "divide" | "distribute" | "share" | "spread" | "spread" "out"
+among: "between" | "among" | "amongst" | "across" | "over"
+even: "evenly" | "equally" | "fairly" | "in" "equal" ("parts" | "shares")
+want: ("i" | "we") ("want" | "would" "like" | "like" | "need" | "wish") | "id" "like" | "wed" "like"
+    | "make" "it" "so" that? | "make" "sure" that? | "ensure" that? | "let" | "have" | "get"
+    | "i" "want" "it" "so" that?
+that: "that"
+there_be: ("there" | "theyre" | "their" | "theres") (modal? "be" | "is" | "are")
+        | "theres" | ("we" | "i") modal? ("need" | "want" | "require" | "needs")
+go: "go" | "goes" | "move" | "moves" | "be" "moved" | "be" "sent" | "be" "taken" | "be" "brought"
+  | "be" "transferred" | "be" "shipped" | "be" "relocated" | "be" "carried" | "be" "delivered"
+  | "end" "up" | "travel" | "be" "put"
+from: "from" | "out" "of" | "off" | "off" "of"
+to: "to" | "into" | "onto" | "over" "to"
+
+// ---------------------------------------------------------------- goal statements
+goal: there_be items loc                                  -> g_set
+    | there_be items loc "and"? "nothing" "else"          -> g_set_only
+    | items modal? stay? loc                              -> g_set
+    | loc ","? there_be? items                            -> g_loc_set
+    | both? places modal? each? setv each? items           -> g_place_set
+    | both? places modal? "each" be? items                  -> g_place_set
+    | places ":" items                                     -> g_place_set
+    | places "to" setv items                                -> g_place_set
+    | putv items loc                                       -> g_set
+    | want places "to"? setv items                          -> g_place_set
+    | "set" places "to" items                               -> g_place_set
+    | "set" ihead loc "to" NUM                              -> g_item_first
+    | ihead loc? ":" NUM loc?                               -> g_item_first
+    | ihead loc? modal? be equal? NUM loc?                  -> g_item_first
+    | ("make" | "have") ihead loc? ("equal" "to" | "be" | "equal" | "total") NUM loc? -> g_item_first
+    | refill places ("so" that? | "until") ("it" | "they") setv items -> g_place_set
+    | refill places "to" items                                -> g_place_set
+    | ("bring" | "take" | "top" "up" | "raise" | "fill") places "up"? "to" items -> g_place_set
+    | addv items to places each?                             -> g_add
+    | addv items loc                                      -> g_add
+    | refill places "with" items                           -> g_add_place
+    | addv items from places to places                     -> g_transfer
+    | addv items to places from places                     -> g_transfer
+    | addv items to places except_places                   -> g_transfer_except
+    | addv items except_places to places                   -> g_transfer_except
+    | items ("on" | "in" | "at" | "from") places modal? go to places -> g_transfer
+    | items from places modal? go? to places                -> g_transfer
+    | removev items from places                            -> g_remove
+    | removev "everything" from places                      -> g_empty
+    | mult ihead loc                                       -> g_mult
+    | places modal? "keep" items                            -> g_keep_part
+    | emptyv places                                        -> g_empty
+    | places modal? be? emptied                            -> g_empty
+    | places modal? "hold" "nothing"                        -> g_empty
+    | emptyv ihead from places                              -> g_empty_item
+    | places modal? be "full" "of" only? ihead only?         -> g_fill
+    | places modal? "be" "filled" "up"? "with" only? ihead only? -> g_fill
+    | "fill" places "up"? "with" only? ihead only?           -> g_fill
+    | "fill" places "up"? "with" "nothing" "but" ihead       -> g_fill
+    | modal? be "full" "of" only? ihead                      -> g_fill_elided
+    | "nothing" "else"                                     -> g_nothing_else
+    | "nothing" "else" loc                                  -> g_nothing_else
+    | "nothing" modal? go loc                               -> g_no_inflow
+    | "nothing" ("goes" | "comes" | "is" "added" | "gets" "added" | "should" "be" "added" | "may" "go" | "can" "go") loc -> g_no_inflow
+    | ("add" | "put" | "bring" | "move") "nothing" loc      -> g_no_inflow
+    | "leave" posplace ihead as_is                          -> g_keep
+    | "leave" ihead loc as_is                               -> g_keep
+    | ("leave" | "keep") places as_is                       -> g_keep
+    | ("dont" | "do" "not") "touch" places                  -> g_keep
+    | places modal? ("stay" | "remain" | "be" "left") as_is  -> g_keep
+    | "swap" ("what" | "contents" "of")? places ("hold" | "have" | "contain" | "holds" | "has")? -> g_swap
+    | "swap" ihead (lsep ihead)* ("between" | "of" | "on") places -> g_swap_items
+    | "swap" posplace ihead "with" (posplace | places)       -> g_swap_poss
+    | splitv items? even? among places even?                -> g_split
+    | "put" items even? among places even?                  -> g_split
+    | "put" "one" "of" "each" ITEMWORD? loc                 -> g_each
+
+stay: be | "sit" | "stay" | "lie" | "go" | "be" "placed" | "be" "stored" | "belong" | "end" "up"
+both: "both"
+only: "only"
+equal: "exactly" | "equal" "to" | "at"
+refill: "restock" | "refill" | "replenish" | "top" "up" | "supply"
+mult: "double" | "triple" | "quadruple" | "halve"
+emptyv: "empty" | "clear" | "clean" "out" | "clear" "out" | "empty" "out"
+emptied: "empty" | "emptied" | "cleared" | "vacant" | "cleaned" "out"
+as_is: "where" ("it" | "they") ("is" | "are") | "as" ("it" | "they") ("is" | "are") | "alone"
+     | "untouched" | "unchanged" | "as" "is"
+
+except_places: ("except" | "but" "not" | "apart" "from" | "other" "than" | "excluding" | "not") except_what? ("on" | "in" | "at" | "from") places
+             | ("except" | "but" "not" | "excluding" | "not") from places
+except_what: "ones" | "those" | "them" | "what" "is" | "any" | "what" "sits" | "what" "lies" | "ones" "that" ("are" | "sit" | "lie")
+
+// ---------------------------------------------------------------- ellipsis tails
+tail: places ("too" | "as" "well" | "also")                 -> t_too
+    | ("also" | "same" "for" | "same" "thing" "for") places   -> t_too
+    | NUM more? loc                                      -> t_elided
+    | NUM fewer loc                                      -> t_elided_fewer
+    | ("taking" | "take") ("them" | "it" | "those" | "these" | "all" | "everything")? from places -> t_source
+    | ("all" | "both" | "each")? from places               -> t_source
+
+// ---------------------------------------------------------------- robots and rules
+robots: robot (lsep robot)*
+      | rgroup
+robot: ROBOT                                              -> r_name
+     | ROBOT ("to" | "through" | "thru" | "till") NUM       -> r_range
+     | ROBOT ("to" | "through" | "thru" | "till") ROBOT     -> r_name_range
+     | NUM                                                -> r_number
+     | ROBOTWORD NUM                                      -> r_number
+rgroup: all? (RKIND | RTAG)                                -> r_kind
+      | all? ROBOTWORD ("tagged" | "labelled" | "labeled" | "marked") (RTAG | RKIND) -> r_kind
+      | all? (RTAG | RKIND) ROBOTWORD                      -> r_kind
+      | all? ROBOTWORD "that" able? skillv NUM ("or" "more" | "or" "above" | "plus") -> r_skill_min
+      | all? ROBOTWORD "that" able? skillv ("at" "least" | "no" "less" "than" | "no" "fewer" "than") NUM -> r_skill_min
+      | all? ROBOTWORD "that" able? skillv NUM "or" ("less" | "fewer" | "below") -> r_skill_max
+      | all? ROBOTWORD "that" able? skillv ("at" "most" | "no" "more" "than") NUM -> r_skill_max
+      | all? ROBOTWORD ("with" | "whose") skillv ("is" | "of")? ("at" "least" NUM | NUM ("or" "more" | "or" "above" | "plus")) -> r_skill_min
+      | all? ROBOTWORD ("with" | "whose") skillv ("is" | "of")? ("at" "most" NUM | NUM "or" ("less" | "fewer" | "below")) -> r_skill_max
+      | SUPER ROBOTWORD?                                  -> r_super
+      | "one" "of" SUPER ROBOTWORD                         -> r_super
+all: "all"
+able: "can" | "may"
+skillv: SKILL | "carry" | "carries" | "lift" | "lifts" | "move" | "moves" | "handle" | "handles"
+
+rneg: "not" | "never" | "dont" | "doesnt" | "shouldnt" | "mustnt" | "cant" | "cannot" | "wont"
+    | "isnt" | "arent" | "no" "longer"
+rmodal: "should" | "must" | "shall" | "will" | "may" | "can" | "is" "to" | "are" "to" | "would"
+      | "do" | "does" | "is" "allowed" "to" | "are" "allowed" "to" | "ought" "to"
+oblig: "should" | "must" | "shall" | "will" | "is" "to" | "are" "to" | "has" "to" | "have" "to"
+state: "broken" | "faulty" | "unavailable" | "offline" | "disabled" | "damaged" | "down"
+     | "idle" | "unused" | "busy" | "charging" | "malfunctioning" | "out" "of" ("order" | "service")
+     | "out-of-service" | "under" "maintenance" | "in" "maintenance" | "off" "limits" | "spare"
+     | "not" "working" | "not" "available" | "excluded" | "off"
+use: "use" | "used" | "using" | "employ" | "employed" | "assign" | "assigned" | "involve" | "involved"
+   | "work" | "help" | "be" "used" | "be" "involved" | "be" "employed" | "be" "assigned" | "participate"
+act: "move" | "moves" | "carry" | "carries" | "touch" | "touches" | "take" | "takes" | "deliver"
+   | "delivers" | "handle" | "handles" | "bring" | "brings" | "transport" | "transports" | "ship"
+   | "put" | "place" | "load" | "unload" | "work" "on" | "pick" "up" | "fetch" | "help" "with"
+   | "be" "used" "to" act | "be" "used" "for" | use "to" act | "go" | "drive" | "serve" | "supply"
+   | "stock" | "restock" | "remove"
+useact: use | act
+
+robj: ITEM (lsep ITEM)*                                   -> ro_items
+    | ("anything" | "everything" | "any" ITEMWORD | ITEMWORD | "goods" | "stuff" | "things" | "all" ITEMWORD) -> ro_any
+    | ("it" | "them" | "that" | "those" | "these" | "this")  -> ro_pronoun
+rwhere: from places                                    -> rw_from
+      | from places to places                          -> rw_route
+      | ("to" | "into" | "onto" | "towards" | "toward") places -> rw_to
+      | "to" "location" "of" places                      -> rw_to
+      | ("at" | "on" | "in" | "near" | "around" | "by") places -> rw_at
+      | "away" "from" places                               -> rw_at
+      | from "one" PLACEWORD "to" "another"                -> rw_none
+      | ("between" | "among") PLACEWORD                      -> rw_none
+      | "for" ("that" | "this" | "it" | "them" | "those" | "job" | "task")  -> rw_pronoun
+      | "at" "all"                                         -> rw_all
+      | "whatsoever"                                       -> rw_all
+      | "ever"                                             -> rw_all
+rscope: robj? rwhere*
+
+rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
+    | robots rmodal? rneg "be" use ("to" act?)? rscope       -> rule_never
+    | robots ("is" | "are") rneg? state                      -> rule_state
+    | robots ("is" | "are") state ","? ("so" | "and")? ("dont" | "do" "not") "use" ("it" | "them") -> rule_state
+    | robots ("is" | "are") "not" "to" "be" "used" rscope     -> rule_never
+    | robots modal? ("stay" | "keep") ("away" | "clear") from places -> rule_away
+    | ("keep" | "leave") robots ("away" | "clear") from places -> rule_away
+    | ("keep" | "leave") robots state                        -> rule_state
+    | ("keep" | "leave") robots "out" "of" "this" "task"?     -> rule_state
+    | ("dont" | "do" "not" | "never" | "avoid") ("use" | "using" | "involve" | "employ" | "assign") robots rscope -> rule_never
+    | ("dont" | "do" "not" | "never") "let" robots act rscope -> rule_never
+    | ("exclude" | "skip" | "leave" "out" | "disable" | "ignore" | "bench" | "rest") robots rscope -> rule_never
+    | "without" ("using" | "help" "of" | "help" "from")? robots rscope -> rule_never
+    | "not" ("with" | "by" | "using") robots rscope          -> rule_never
+    | "only" robots rmodal? useact? rscope                   -> rule_only
+    | "only" robots rmodal? "be" use ("to" act?)? rscope      -> rule_only
+    | robots "only" rmodal? useact? rscope                   -> rule_only
+    | robots rmodal? "only" useact rscope                    -> rule_only
+    | ("we" | "you")? rmodal? "only" ("use" | "employ") robots ("to" act? | "for")? rscope -> rule_only
+    | ("we" | "you")? rmodal? ("use" | "employ") "only" robots ("to" act? | "for")? rscope -> rule_only
+    | ("using" | "with" | "by") ("only" | "just" | "exclusively") robots rscope -> rule_only
+    | ("only" | "just") ("using" | "with" | "by") robots rscope -> rule_only
+    | "use" ("any" | "every" | "all")? ROBOTWORD? ("except" | "but" | "other" "than" | "besides" | "apart" "from") robots rscope -> rule_never
+    | ("any" | "all" | "every") ROBOTWORD? ("except" | "but" | "other" "than" | "besides" | "apart" "from") robots rmodal? useact? rscope -> rule_never
+    | ("dont" | "do" "not") "use" ("any" | "a")? ROBOTWORD ("other" "than" | "except" | "besides" | "apart" "from" | "but") robots rscope -> rule_only
+    | ("no" | "none" "of") ROBOTWORD ("except" | "but" | "other" "than" | "besides" | "apart" "from") robots rmodal? useact? rscope -> rule_only
+    | ("nobody" | "no" "one" | "none") ("except" | "but" | "other" "than" | "besides") robots rmodal? useact? rscope -> rule_only
+    | ("use" | "using" | "with" | "by" | "employ") robots ("to" act? | "for")? rscope -> rule_use
+    | robots oblig act rscope                               -> rule_use
+    | robots ("can" | "may" | "could" | "might") act rscope  -> rule_permission
+
+// "robot 3 should put 5 product1 on shelf2", "Robot 5, bring two product1 to shelf2"
+addressed: robots ","? oblig? goal
+         | ("let" | "have" | "get" | "ask") robots "to"? goal
+scoped_goal: ("using" | "with" | "by") ("only" | "just")? robots ","? goal    -> scoped_only
+           | goal ("using" | "with" | "by") ("only" | "just")? robots           -> scoped_only_after
+           | goal ("without" ("using" | "help" "of")? | "but" "not" "with" | "not" "using") robots -> scoped_never_after
+
+%declare NUM ITEM ITEMWORD PLACE PLACEWORD ROBOT ROBOTWORD RKIND RTAG SKILL SUPER FRAC POSS UNKNOWN
+"""
+
+
+def nullable_optionals(grammar: str) -> str:
+    """The grammar with each optional symbol ``x?`` replaced by a nullable rule ``_opt_x``.
+
+    Lark expands every ``x?`` into two alternatives, so a production with five optional words
+    becomes 32, and Earley then carries all of them at every word: the parse got slower by two
+    orders of magnitude. A nullable rule is one symbol whatever follows it. Rules whose name
+    starts with ``_`` are inlined by lark, so the tree keeps its shape.
+    """
+    made: dict[str, str] = {}
+
+    def opt(m: re.Match) -> str:
+        sym = m.group(1)
+        prefix = "kw_" if sym.startswith('"') else ""
+        key = re.sub(r"[^a-z0-9_]", "_", sym.strip('"').lower())
+        name = f"_opt_{prefix}{key}"
+        made[name] = sym
+        return name
+
+    lines = []
+    for line in grammar.splitlines():
+        code, sep, comment = line.partition("//")
+        code = re.sub(r'("[^"]+"|\b[A-Za-z_][A-Za-z0-9_]*)\?', opt, code)
+        lines.append(code + sep + comment)
+    extra = [f"{name}: {sym} | " for name, sym in made.items()]
+    return "\n".join(lines + extra) + "\n"

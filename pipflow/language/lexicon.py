@@ -1,0 +1,187 @@
+"""The command's words as the grammar's terminals, with the world as the lexicon.
+
+Names come from :mod:`pipflow.language.names` (typo-tolerant, refusing near-ties), counts from
+:mod:`pipflow.language.numbers`; this module adds what the grammar needs on top: robot kinds,
+tags and skills of the world, superlatives, fractions, the possessive "'s", misspelt number
+words ("thre", "sixe"), and the checks on the raw text that must happen before any of that (a
+size cap, negative counts, symbols that are not English). A word that is neither a keyword of
+the grammar nor a filler stays an unknown terminal, so the parser refuses it by name.
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from lark import Token
+
+from pipflow.errors import InputError, Refusal, TranslationError
+from pipflow.language.names import STOPWORDS, NameIndex, Tok, distance, normalize, read_counts, recognize
+from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS
+
+#: no user writes a longer command; past this the parser would only be asked to burn time
+MAX_COMMAND_CHARS = 4000
+#: digits in one count; a shelf never holds a trillion units, and huge numbers are a typo or an attack
+MAX_DIGITS = 9
+#: words that carry no meaning of their own in a command
+FILLERS = {"the", "please", "kindly", "units", "unit", "pieces", "piece", "boxes", "box", "crates",
+           "crate", "cases", "case", "pcs", "pallets", "pallet", "x", "exactly", "precisely",
+           "actually", "really", "hey", "um", "uh", "ok,", "just", "right", "away", "quickly",
+           "now", "today", "currently", "sku", "skus", "of", "moment"}
+#: fillers the grammar still reads when it has a place for them (it tries the keyword first)
+SOFT_FILLERS = {"of", "just", "right", "away", "now", "today", "currently", "moment", "exactly"}
+FRACTIONS = {"third": 3, "thirds": 3, "quarter": 4, "quarters": 4, "fourth": 4, "fourths": 4,
+             "fifth": 5, "fifths": 5, "sixth": 6, "sixths": 6, "eighth": 8, "eighths": 8,
+             "tenth": 10, "tenths": 10}
+SUPERLATIVES = {"strongest": "max", "biggest": "max", "largest": "max", "heaviest": "max",
+                "weakest": "min", "smallest": "min", "lightest": "min"}
+#: contractions whose "'s" is "is" ("it's"), not a possessive
+IS_CONTRACTIONS = {"it", "that", "there", "what", "here", "who", "he", "she"}
+POSS_MARK = "zzposs"
+_BAD_SYMBOLS = re.compile(r"[\^*=+%$<>~|\\{}@]")
+
+
+@dataclass(frozen=True)
+class Lexed:
+    """A sentence's terminals and, for each, the index of the recognised token it came from."""
+
+    tokens: list[Token]
+    source: list[Tok]
+
+
+def check_text(command: str) -> str:
+    """Refuse what cannot be a command before reading it; returns the text to read."""
+    if not isinstance(command, str) or not command.strip():
+        raise InputError("command must be a non-empty string")
+    if len(command) > MAX_COMMAND_CHARS:
+        raise InputError(f"the command is {len(command)} characters long; commands are limited to "
+                         f"{MAX_COMMAND_CHARS} characters (split it into several runs)")
+    m = re.search(r"(?:^|(?<=[\s(:,;]))[-\u2212\u2013\u2012\u2010]\s*(\d[\d,.]*)", command)
+    if m:
+        raise Refusal(f"'{m.group(0).strip()}': a count cannot be negative (a shelf holds 0 units "
+                      f"or more); say what should happen instead, e.g. remove {m.group(1)} units")
+    m = re.search(r"\S*\^\S*|\d+(?:\.\d+)?e[+-]?\d+\b", command, flags=re.IGNORECASE)
+    if m:
+        raise Refusal(f"'{m.group(0)}': powers are not read as counts; write the number of units")
+    m = re.search(r"\d{%d,}" % (MAX_DIGITS + 1), command)
+    if m:
+        raise Refusal(f"'{m.group(0)}' units: no shelf holds that many; write the count the "
+                      f"shelves can hold")
+    text = re.sub(r"-+>|\u2192|=>", " to ", command)
+    m = _BAD_SYMBOLS.search(text)
+    if m:
+        word = re.search(r"\S*" + re.escape(m.group(0)) + r"\S*", text)
+        raise TranslationError(f"'{word.group(0) if word else m.group(0)}': the symbol "
+                               f"'{m.group(0)}' is not read in commands; write it in words")
+    return re.sub(r"\b([A-Za-z0-9_-]+)['\u2019]s\b", _possessive, text)
+
+
+def _possessive(m: re.Match) -> str:
+    word = m.group(1)
+    if word.lower() in IS_CONTRACTIONS:
+        return f"{word} is"
+    if word.lower() == "let":
+        return "let us"
+    return f"{word} {POSS_MARK}"
+
+
+def _number_typo(word: str) -> str | None:
+    """The number word a misspelt word means ("thre" -> three), when exactly one is 1 edit away."""
+    if len(word) < 3 or not word.isalpha():
+        return None
+    cands = [w for w in list(UNITS) + list(TENS) + ["dozen", "hundred", "thousand"]
+             if len(w) >= 3 and w[0] == word[0] and distance(word, w) <= 1]
+    return cands[0] if len(cands) == 1 else None
+
+
+class Lexicon:
+    """The world's vocabulary for the grammar: names, robot kinds, tags and skills."""
+
+    def __init__(self, world: dict, keywords: dict[str, str]):
+        self.world = world
+        self.index = NameIndex(world)
+        self.keywords = keywords  # keyword text -> terminal name
+        robots = world.get("robots") or {}
+        self.kinds = {str(r.get("kind")).lower() for r in robots.values()
+                      if isinstance(r, dict) and r.get("kind")}
+        self.tags = {str(t).lower() for r in robots.values() if isinstance(r, dict)
+                     for t in (r.get("tags") or [])}
+        self.skills = {str(s).lower() for r in robots.values() if isinstance(r, dict)
+                       for s in (r.get("skills") or {})}
+
+    def _known(self, word: str) -> bool:
+        return (word in self.keywords or word in FILLERS or word in STOPWORDS
+                or word in NUMBER_WORDS or word in FRACTIONS or word in SUPERLATIVES)
+
+    def _group(self, text: str) -> tuple[str, str] | None:
+        """("RKIND", kind) or ("RTAG", tag) when the word names robots by kind or tag."""
+        low = normalize(text)
+        for form in (low, low[:-1] if low.endswith("s") else low, low[:-2] if low.endswith("es") else low):
+            for kind in self.kinds:
+                if normalize(kind) == form:
+                    return "RKIND", kind
+            for tag in self.tags:
+                if normalize(tag) == form:
+                    return "RTAG", tag
+        return None
+
+    def sentences(self, command: str) -> list[Lexed]:
+        """The command's sentences as terminals (split at . ; ! ?)."""
+        text = check_text(command)
+        toks = recognize(text, self.index)
+        fixed = []
+        for t in toks:
+            if t.kind == "word" and not self._known(str(t.value)) and self._group(t.text) is None:
+                typo = _number_typo(str(t.value))
+                if typo is not None:
+                    t = Tok("word", t.text, typo)
+            fixed.append(t)
+        toks = read_counts(fixed)
+        out: list[Lexed] = []
+        cur: list[Tok] = []
+        for t in toks + [Tok("punct", ".", ".")]:
+            if t.kind == "punct" and t.value in (".", ";", "!", "?"):
+                if cur:
+                    out.append(self._terminals(cur))
+                cur = []
+            else:
+                cur.append(t)
+        return out
+
+    def _terminals(self, toks: list[Tok]) -> Lexed:
+        tokens: list[Token] = []
+        source: list[Tok] = []
+        for t in toks:
+            term = self._terminal(t)
+            if term is None:
+                continue
+            tokens.append(Token(term[0], term[1], start_pos=len(tokens)))
+            source.append(t)
+        return Lexed(tokens, source)
+
+    def _terminal(self, t: Tok) -> tuple[str, object] | None:
+        if t.kind == "num":
+            return "NUM", t.value
+        if t.kind == "name":
+            return {"shelf": "PLACE", "product": "ITEM", "robot": "ROBOT"}[t.of], t.value
+        if t.kind == "punct":
+            name = self.keywords.get(str(t.value))
+            return (name, t.value) if name else None  # brackets and quotes carry nothing
+        group = self._group(t.text)
+        if group is not None and (t.kind == "kind" or str(t.value) not in self.keywords):
+            return group
+        if t.kind == "kind":
+            return {"shelf": "PLACEWORD", "product": "ITEMWORD", "robot": "ROBOTWORD"}[t.of], t.value
+        word = str(t.value)
+        if word == POSS_MARK:
+            return "POSS", "'s"
+        if word in self.keywords:
+            return self.keywords[word], word
+        if word in FRACTIONS:
+            return "FRAC", FRACTIONS[word]
+        if word in SUPERLATIVES:
+            return "SUPER", SUPERLATIVES[word]
+        if word in self.skills:
+            return "SKILL", word
+        if word in FILLERS:
+            return None
+        return "UNKNOWN", word

@@ -1,0 +1,725 @@
+"""The offline parser: a command and a world in, an order (:mod:`pipflow.language.order`) out.
+
+It parses each sentence with lark's Earley parser over the grammar of
+:mod:`pipflow.language.grammar`, whose lexicon is the world's names (:mod:`lexicon`), and reads
+the tree into statements and robot rules. It does no arithmetic against the stock: relative
+amounts, "except", "the rest", swaps and ellipsis stay symbolic for the resolver
+(:mod:`pipflow.language.resolver`). What it does resolve is the sentence's own structure:
+
+* coordination with ellipsis: "four product1 to shelf2 and three to shelf3, taking them from
+  shelf1" (the item and the source are shared), "shelf2 to hold 6 product3, and shelf4 too";
+* a robot addressed by name ("Robot 5, bring two product1 to shelf2") or a rule that follows a
+  goal in its sentence with no scope of its own: the rule governs that goal's one product and
+  its one place or one move (several products or places leave the field open);
+* several places: "each"/"both"/"apiece" repeat a count, "respectively" pairs counts and
+  places in order; a count for a list of places with neither is refused (each, or a total?).
+
+A word the grammar cannot place is a :class:`TranslationError` that quotes it.
+"""
+from __future__ import annotations
+
+import functools
+from typing import Any
+
+from lark import Lark, Token, Tree
+from lark.exceptions import UnexpectedEOF, UnexpectedInput, UnexpectedToken
+from lark.lexer import Lexer
+
+from pipflow.errors import TranslationError
+from pipflow.language.grammar import GRAMMAR, nullable_optionals
+from pipflow.language.lexicon import Lexed, Lexicon
+from pipflow.language.robots import RobotSelector
+
+SET_AMOUNTS = {"count", "all", "none", "as_many_as", "rest", "each"}
+CHANGE_AMOUNTS = {"more", "fewer", "times", "fraction"}
+BOUND_AMOUNTS = {"at_least", "at_most", "between"}
+
+
+class _ListLexer(Lexer):
+    """Hands lark the terminals the lexicon made (the parser never sees raw text)."""
+
+    def __init__(self, lexer_conf: Any):
+        pass
+
+    def lex(self, data: Any):  # type: ignore[override]
+        yield from data
+
+
+@functools.lru_cache(maxsize=1)
+def _parser() -> Lark:
+    """Built once per process (about a second): Earley over the command grammar."""
+    return Lark(nullable_optionals(GRAMMAR), parser="earley", lexer=_ListLexer, keep_all_tokens=True)
+
+
+@functools.lru_cache(maxsize=1)
+def keywords() -> dict[str, str]:
+    """Keyword text -> terminal name, from the grammar's anonymous terminals."""
+    out = {}
+    for t in _parser().terminals:
+        if t.pattern.type == "str":
+            out[t.pattern.value] = t.name
+    return out
+
+
+def _quote(words: str) -> str:
+    return f"'{words}'"
+
+
+class _Sentence:
+    """Reads one parsed sentence into statements and rules."""
+
+    def __init__(self, lexed: Lexed, lex: Lexicon, robots: RobotSelector):
+        self.lexed, self.lex, self.robots = lexed, lex, robots
+        self.index = lex.index
+        self.statements: list[dict] = []
+        self.rules: list[dict] = []
+        self.bind: list[dict] = []  # rules that take the sentence's goal as their scope
+        self.last_item: list[str] | None = None
+        self.last_places: list[str] | None = None
+
+    # -- words ------------------------------------------------------------------------------
+    def words(self, node: Tree | Token | list) -> str:
+        toks = [node] if isinstance(node, Token) else (
+            [t for n in node for t in (n.scan_values(lambda v: isinstance(v, Token)) if isinstance(n, Tree) else [n])]
+            if isinstance(node, list) else list(node.scan_values(lambda v: isinstance(v, Token))))
+        pos = [t.start_pos for t in toks if isinstance(t, Token) and t.start_pos is not None]
+        if not pos:
+            return ""
+        return " ".join(s.text for s in self.lexed.source[min(pos):max(pos) + 1]).replace(" zzposs", "'s")
+
+    # -- items ------------------------------------------------------------------------------
+    def ihead(self, node: Tree, words: str) -> str | None:
+        tok = node.children[0]
+        if tok.type == "ITEM":
+            return str(tok.value)
+        products = self.index.by_kind["product"]
+        if len(products) == 1:
+            return products[0]
+        raise TranslationError(f"{_quote(words)} does not say which product "
+                               f"(candidates: {self.index.candidates('product')})")
+
+    def nps(self, items: Tree) -> list[dict]:
+        return [self.np(c) for c in items.children if isinstance(c, Tree) and c.data.startswith("np_")]
+
+    def np(self, node: Tree) -> dict:
+        """One noun phrase: ``{"items": selector|None, "amount": {...}, "words": str}``."""
+        kind = node.data
+        words = self.words(node)
+        nums = [int(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "NUM")]
+        heads = [c for c in node.children if isinstance(c, Tree) and c.data == "ihead"]
+        item = {"names": [self.ihead(heads[0], words)]} if heads else None
+
+        def out(amount: dict, sel: dict | None = item) -> dict:
+            if sel is not None and sel.get("names"):
+                self.last_item = sel["names"]
+            return {"items": sel, "amount": amount, "words": words}
+
+        if kind == "np_count":
+            return out({"count": nums[0]})
+        if kind == "np_more":
+            return out({"more": nums[0]})
+        if kind == "np_fewer":
+            return out({"fewer": nums[0]})
+        if kind == "np_one":
+            return out({"count": 1})
+        if kind == "np_one_more":
+            return out({"more": 1})
+        if kind == "np_all":
+            return out({"all": True})
+        if kind == "np_none":
+            return out({"none": True})
+        if kind == "np_frac":
+            frac = next(c for c in node.children if isinstance(c, Tree) and c.data == "frac")
+            den = next(int(t.value) for t in frac.scan_values(lambda v: isinstance(v, Token) and v.type == "FRAC"))
+            num = next((int(t.value) for t in frac.scan_values(lambda v: isinstance(v, Token) and v.type == "NUM")), 1)
+            return out({"fraction": [num, den]})
+        if kind == "np_half":
+            return out({"fraction": [1, 2]})
+        if kind == "np_twice":
+            return out({"times": 2})
+        if kind == "np_times":
+            first = str(node.children[0].value) if isinstance(node.children[0], Token) else words.split()[0]
+            return out({"times": {"double": 2, "triple": 3, "quadruple": 4}.get(first.lower(), 2)})
+        if kind == "np_atleast":
+            return out({"at_least": nums[0]})
+        if kind == "np_atmost":
+            return out({"at_most": nums[0]})
+        if kind == "np_above":
+            return out({"at_least": nums[0] + 1})
+        if kind == "np_below":
+            if nums[0] == 0:
+                raise TranslationError(f"{_quote(words)}: fewer than 0 units is impossible")
+            return out({"at_most": nums[0] - 1})
+        if kind == "np_between":
+            lo, hi = nums[0], nums[1]
+            if lo > hi:
+                raise TranslationError(f"{_quote(words)}: the lower bound {lo} is above the upper bound {hi}")
+            return out({"at_least": lo, "at_most": hi})
+        if kind == "np_vague":
+            raise TranslationError(f"{_quote(words)} is a bound, not a count: it is approximate, and "
+                                   f"the goal needs an exact count or a firm bound ('at least 5', "
+                                   f"'at most 5', 'between 3 and 5')")
+        if kind == "np_each":
+            n = nums[0] if nums else 1
+            return out({"count": n}, {"all": True})
+        if kind == "np_everything":
+            excl = []
+            for c in node.children:
+                if isinstance(c, Tree) and c.data == "except_items":
+                    excl = [self.ihead(h, words) for h in c.children if isinstance(h, Tree) and h.data == "ihead"]
+            return out({"all_held": True}, {"all": True, "except": excl})
+        if kind == "np_as_many":
+            place = next(str(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "PLACE"))
+            return out({"as_many_as": place})
+        if kind == "np_as_many_elided":
+            place = next(str(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "PLACE"))
+            return out({"as_many_as": place}, None)
+        if kind == "np_rest":
+            return out({"rest": True})
+        raise TranslationError(f"{_quote(words)}: cannot read this amount")
+
+    # -- places -----------------------------------------------------------------------------
+    def place_list(self, node: Tree) -> list[str]:
+        out: list[str] = []
+        for c in node.children:
+            if not isinstance(c, Tree):
+                continue
+            if c.data == "place_name":
+                out.append(str(c.children[0].value))
+            elif c.data == "place_word":
+                shelves = self.index.by_kind["shelf"]
+                if len(shelves) != 1:
+                    raise TranslationError(f"{_quote(self.words(c))} does not say which shelf "
+                                           f"(candidates: {self.index.candidates('shelf')})")
+                out.append(shelves[0])
+            elif c.data == "place_it":
+                if not self.last_places:
+                    raise TranslationError(f"{_quote(self.words(c))}: no place named before it "
+                                           f"(candidates: {self.index.candidates('shelf')})")
+                out.extend(self.last_places)
+            elif c.data == "place_all":
+                out.extend(self.index.by_kind["shelf"])
+        out = list(dict.fromkeys(out))
+        self.last_places = out
+        return out
+
+    def loc(self, node: Tree) -> tuple[list[str], str]:
+        """Places of a location phrase and how a count applies: "one", "each" or "respectively"."""
+        places = self.place_list(next(c for c in node.children if isinstance(c, Tree) and c.data == "places"))
+        mode = {"loc": "one", "loc_each": "each", "loc_resp": "respectively"}[node.data]
+        return places, mode
+
+    def sub(self, node: Tree, name: str) -> list[Tree]:
+        return [c for c in node.children if isinstance(c, Tree) and c.data == name]
+
+    # -- statements -------------------------------------------------------------------------
+    def statement(self, op: str, places: list[str], np: dict, **extra: Any) -> dict:
+        st = {"op": op, "places": {"names": places}, "items": np["items"], "amount": np["amount"],
+              "words": np["words"], **extra}
+        return st
+
+    def put(self, places: list[str], mode: str, nps: list[dict], words: str, add: bool = False) -> None:
+        """Counts for places: one place, each of several, or respectively."""
+        if mode == "respectively" or (len(places) > 1 and mode == "resp"):
+            self.respectively(places, nps, words, add)
+            return
+        if len(places) > 1 and mode != "each" and not all(
+                "none" in np["amount"] for np in nps):
+            raise TranslationError(
+                f"{_quote(words)}: the command does not say whether each of {', '.join(places)} "
+                f"gets these counts or they share them (say 'each', 'respectively' or 'evenly between')")
+        for np in nps:
+            self.statements.append(self._goal_statement(places, np, add))
+
+    def _goal_statement(self, places: list[str], np: dict, add: bool) -> dict:
+        a = np["amount"]
+        key = next(iter(a))
+        if np["items"] is None:
+            if not self.last_item:
+                raise TranslationError(f"{_quote(np['words'])}: cannot tell which product this count "
+                                       f"is for (candidates: {self.index.candidates('product')})")
+            np = {**np, "items": {"names": list(self.last_item)}}
+        if add and key == "count":
+            a, key = {"more": a["count"]}, "more"
+        if key in CHANGE_AMOUNTS:
+            op = "change"
+        elif key in BOUND_AMOUNTS:
+            op = "bound"
+        elif key == "all_held":
+            op = "set_all_held"
+        else:
+            op = "set"
+        return {"op": op, "places": {"names": places}, "items": np["items"], "amount": a,
+                "words": np["words"]}
+
+    def respectively(self, places: list[str], nps: list[dict], words: str, add: bool) -> None:
+        if len(nps) != len(places):
+            shown = ", ".join(n["words"] for n in nps)
+            raise TranslationError(f"'respectively': {len(nps)} count(s) with products ({shown}) for "
+                                   f"{len(places)} shelves ({', '.join(places)}); give one count and "
+                                   f"product per shelf")
+        named = [n for n in nps if n["items"] is not None]
+        if len(named) == 1 and nps[-1]["items"] is not None:
+            nps = [{**n, "items": nps[-1]["items"]} for n in nps]
+        for place, np in zip(places, nps):
+            self.statements.append(self._goal_statement([place], np, add))
+
+    def goal(self, node: Tree) -> None:
+        kind = node.data
+        words = self.words(node)
+        items = self.sub(node, "items")
+        nps = self.nps(items[0]) if items else []
+        locs = [c for c in node.children if isinstance(c, Tree) and c.data in ("loc", "loc_each", "loc_resp")]
+        plist = self.sub(node, "places")
+        each = bool(self.sub(node, "each")) or any(
+            isinstance(c, Token) and c.value in ("each", "both") for c in node.children)
+        if kind in ("g_set", "g_loc_set", "g_set_only"):
+            if not locs:
+                shown = ", ".join(n["words"] for n in nps)
+                raise TranslationError(f"{_quote(shown)}: the command does not say which shelf "
+                                       f"(candidates: {self.index.candidates('shelf')})")
+            places, mode = self.loc(locs[0])
+            self.put(places, mode, nps, words)
+            if kind == "g_set_only":
+                self.statements.append({"op": "nothing_else", "places": {"names": places},
+                                        "words": "nothing else"})
+            return
+        if kind == "g_place_set":
+            places = self.place_list(plist[0])
+            self.put(places, "each" if each else "one", nps, words)
+            return
+        if kind == "g_place_set_one":
+            places = self.place_list(plist[0])
+            num = next(int(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "NUM"))
+            head = self.sub(node, "ihead")[0]
+            self.put(places, "one", [{"items": {"names": [self.ihead(head, words)]}, "amount": {"count": num},
+                                      "words": words}], words)
+            return
+        if kind == "g_item_first":
+            head = self.ihead(self.sub(node, "ihead")[0], words)
+            self.last_item = [head]
+            num = next(int(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "NUM"))
+            if not locs:
+                raise TranslationError(f"{_quote(words)}: the command does not say which shelf "
+                                       f"(candidates: {self.index.candidates('shelf')})")
+            places, mode = self.loc(locs[0])
+            self.put(places, mode, [{"items": {"names": [head]}, "amount": {"count": num}, "words": words}], words)
+            return
+        if kind == "g_add":
+            if locs:
+                places, mode = self.loc(locs[0])
+            else:
+                places, mode = self.place_list(plist[0]), "each" if each else "one"
+            self.put(places, mode, nps, words, add=True)
+            return
+        if kind == "g_add_place":
+            places = self.place_list(plist[0])
+            self.put(places, "one", nps, words, add=True)
+            return
+        if kind in ("g_transfer", "g_transfer_except"):
+            self.transfer(node, nps, words)
+            return
+        if kind == "g_remove":
+            source = self.place_list(plist[0])
+            for np in nps:
+                self.statements.append(self._transfer_statement(np, source, None, words))
+            return
+        if kind == "g_mult":
+            verb = str(node.children[0].value).lower()
+            head = self.ihead(self.sub(node, "ihead")[0], words)
+            places, _ = self.loc(locs[0])
+            amount = {"fraction": [1, 2]} if verb == "halve" else {"times": {"double": 2, "triple": 3, "quadruple": 4}[verb]}
+            self.put(places, "each", [{"items": {"names": [head]}, "amount": amount, "words": words}], words)
+            return
+        if kind == "g_keep_part":
+            places = self.place_list(plist[0])
+            for np in nps:
+                if "fraction" in np["amount"]:
+                    self.statements.append(self._goal_statement(places, np, False))
+                else:
+                    self.statements.append(self._goal_statement(places, np, False))
+            return
+        if kind == "g_empty":
+            places = self.place_list(plist[0])
+            self.statements.append({"op": "empty", "places": {"names": places}, "items": {"all": True},
+                                    "words": words})
+            return
+        if kind == "g_empty_item":
+            places = self.place_list(plist[0])
+            head = self.ihead(self.sub(node, "ihead")[0], words)
+            self.statements.append({"op": "empty", "places": {"names": places}, "items": {"names": [head]},
+                                    "words": words})
+            return
+        if kind in ("g_fill", "g_fill_elided"):
+            if kind == "g_fill":
+                places = self.place_list(plist[0])
+            else:
+                places = self._last_places(words)
+            head = self.ihead(self.sub(node, "ihead")[0], words)
+            only = "only" in words.lower().split() or "nothing but" in words.lower()
+            for p in places:
+                self.statements.append({"op": "fill", "places": {"names": [p]}, "items": {"names": [head]},
+                                        "only": only, "words": words})
+            return
+        if kind == "g_nothing_else":
+            places = self.loc(locs[0])[0] if locs else self._last_places(words)
+            self.statements.append({"op": "nothing_else", "places": {"names": places}, "words": words})
+            return
+        if kind == "g_no_inflow":
+            places, _ = self.loc(locs[0])
+            self.statements.append({"op": "keep", "places": {"names": places}, "items": {"all": True},
+                                    "inflow_only": True, "words": words})
+            return
+        if kind == "g_keep":
+            poss = self.sub(node, "posplace")
+            heads = self.sub(node, "ihead")
+            if poss:
+                places = [str(poss[0].children[0].value)]
+            elif locs:
+                places = self.loc(locs[0])[0]
+            else:
+                places = self.place_list(plist[0])
+            sel = {"names": [self.ihead(heads[0], words)]} if heads else {"all": True}
+            self.statements.append({"op": "keep", "places": {"names": places}, "items": sel,
+                                    "inflow_only": False, "words": words})
+            return
+        if kind in ("g_swap", "g_swap_items", "g_swap_poss"):
+            self.swap(node, words)
+            return
+        if kind == "g_split":
+            places = self.place_list(plist[0])
+            if not nps:
+                raise TranslationError(f"{_quote(words)}: the command does not say what to share")
+            for np in nps:
+                a = np["amount"]
+                if not ({"count", "all"} & set(a)):
+                    raise TranslationError(f"{_quote(np['words'])}: cannot share this amount")
+                items = np["items"] if np["items"] is not None else {"names": list(self.last_item or [])}
+                self.statements.append({"op": "distribute", "places": {"names": places}, "items": items,
+                                        "amount": a, "words": words})
+            return
+        if kind == "g_each":
+            places, mode = self.loc(locs[0])
+            self.put(places, "each", [{"items": {"all": True}, "amount": {"count": 1}, "words": words}], words)
+            return
+        raise TranslationError(f"{_quote(words)}: cannot read this statement")
+
+    def _last_places(self, words: str) -> list[str]:
+        if not self.last_places:
+            raise TranslationError(f"{_quote(words)}: the command does not say which shelf "
+                                   f"(candidates: {self.index.candidates('shelf')})")
+        return list(self.last_places)
+
+    def _transfer_statement(self, np: dict, source: list[str] | None, target: list[str] | None,
+                            words: str, exclude: list[str] | None = None) -> dict:
+        a = np["amount"]
+        if np["items"] is None:
+            if not self.last_item:
+                raise TranslationError(f"{_quote(np['words'])}: cannot tell which product "
+                                       f"(candidates: {self.index.candidates('product')})")
+            np = {**np, "items": {"names": list(self.last_item)}}
+        if set(a) & BOUND_AMOUNTS or set(a) & {"more", "fewer", "times", "as_many_as"}:
+            raise TranslationError(f"{_quote(np['words'])}: cannot tell how many units this moves")
+        src: dict = {"names": source} if source else {"all": True, "except": list(exclude or [])}
+        st = {"op": "transfer", "items": np["items"], "amount": a, "from": src,
+              "to": {"names": target} if target else None, "words": words}
+        return st
+
+    def transfer(self, node: Tree, nps: list[dict], words: str) -> None:
+        plists = self.sub(node, "places")
+        exc = self.sub(node, "except_places")
+        # the order of "from" and "to" in the words: find which places list follows "from"
+        kids = node.children
+        src: list[str] | None = None
+        dst: list[str] | None = None
+        exclude: list[str] = []
+        prev = None
+        for c in kids:
+            if isinstance(c, Tree) and c.data == "places":
+                names = self.place_list(c)
+                if prev == "to":
+                    dst = names
+                else:
+                    src = names
+            elif isinstance(c, Tree) and c.data == "from":
+                prev = "from"
+            elif isinstance(c, Token) and c.type in ("TO", "INTO", "ONTO", "OVER"):
+                prev = "to"
+            elif isinstance(c, Tree) and c.data == "except_places":
+                exclude = self.place_list(self.sub(c, "places")[0])
+        if exc:
+            src = None
+        if dst is None or (src is None and not exc):
+            raise TranslationError(f"{_quote(words)}: cannot tell where from and where to")
+        for np in nps:
+            if exc and not ({"all", "all_held", "fraction"} & set(np["amount"])):
+                raise TranslationError(f"{_quote(words)}: 'except' needs all of a product "
+                                       f"('every product2 ... except the ones on shelf1')")
+            self.statements.append(self._transfer_statement(np, src, dst, words, exclude))
+
+    def swap(self, node: Tree, words: str) -> None:
+        kind = node.data
+        places: list[str] = []
+        for c in node.children:
+            if isinstance(c, Tree) and c.data == "posplace":
+                places.append(str(c.children[0].value))
+            elif isinstance(c, Tree) and c.data == "places":
+                places.extend(self.place_list(c))
+        heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
+        places = list(dict.fromkeys(places))
+        if len(places) != 2:
+            raise TranslationError(f"{_quote(words)}: a swap needs exactly two places "
+                                   f"({len(places)} named)")
+        sel = {"names": list(dict.fromkeys(heads))} if heads else {"all": True}
+        self.statements.append({"op": "swap", "places": {"names": places}, "items": sel, "words": words})
+
+    # -- ellipsis ---------------------------------------------------------------------------
+    def tail(self, node: Tree) -> None:
+        kind = node.data
+        words = self.words(node)
+        if kind == "t_too":
+            places = self.place_list(self.sub(node, "places")[0])
+            last = [s for s in self.statements if "places" in s]
+            if not last:
+                raise TranslationError(f"{_quote(words)}: nothing said before it to repeat")
+            prev = last[-1]
+            group = [s for s in self.statements if s.get("words") == prev.get("words")]
+            for s in group:
+                self.statements.append({**s, "places": {"names": places}, "words": f"{s['words']} ({words})"})
+            return
+        if kind in ("t_elided", "t_elided_fewer"):
+            num = int(node.children[0].value)
+            more = bool(self.sub(node, "more"))
+            amount = {"fewer": num} if kind == "t_elided_fewer" else {"more": num} if more else {"count": num}
+            places, mode = self.loc(self.sub(node, "loc")[0] if self.sub(node, "loc") else
+                                    next(c for c in node.children if isinstance(c, Tree) and c.data.startswith("loc")))
+            prev = [s for s in self.statements if s["op"] in ("set", "change", "transfer")]
+            add = bool(prev) and prev[-1]["op"] == "change" and "more" in prev[-1]["amount"] and "more" not in amount \
+                and "count" in amount
+            if prev and prev[-1]["op"] == "transfer" and "count" in amount:
+                last = prev[-1]
+                self.statements.append({**last, "amount": amount, "to": {"names": places}, "words": words})
+                return
+            self.put(places, mode, [{"items": None, "amount": amount, "words": words}], words, add=add)
+            return
+        if kind == "t_source":
+            source = self.place_list(self.sub(node, "places")[0])
+            changed = False
+            for k, s in enumerate(self.statements):
+                if s["op"] == "change" and "more" in s["amount"]:
+                    self.statements[k] = {"op": "transfer", "items": s["items"],
+                                          "amount": {"count": s["amount"]["more"]}, "from": {"names": source},
+                                          "to": s["places"], "words": f"{s['words']}, {words}"}
+                    changed = True
+                elif s["op"] == "set" and "count" in s["amount"]:
+                    # "four product1 to shelf2, taking them from shelf1": the four come from there
+                    self.statements[k] = {"op": "transfer", "items": s["items"], "amount": s["amount"],
+                                          "from": {"names": source}, "to": s["places"],
+                                          "words": f"{s['words']}, {words}"}
+                    changed = True
+            if not changed:
+                raise TranslationError(f"{_quote(words)}: nothing before it to take from there")
+            return
+        if kind == "t_resp":
+            raise TranslationError(f"{_quote(words)}: 'respectively' must follow the places it pairs")
+        raise TranslationError(f"{_quote(words)}: cannot read this")
+
+    # -- rules ------------------------------------------------------------------------------
+    def rule(self, node: Tree) -> None:
+        kind = node.data
+        words = self.words(node)
+        robots_node = self.sub(node, "robots")
+        if not robots_node:
+            raise TranslationError(f"{_quote(words)}: names no robot")
+        sel = self.robots.read(robots_node[0], self.words(robots_node[0]))
+        if kind == "rule_permission":
+            raise TranslationError(f"cannot tell whether {_quote(words)} requires or forbids the robots "
+                                   f"(a permission restricts nothing: say 'only ...' or '... must not ...')")
+        mode = {"rule_never": "never", "rule_state": "never", "rule_away": "never", "rule_only": "only",
+                "rule_use": "only"}[kind]
+        base = {"mode": mode, "robots": sel, "words": words}
+        if kind == "rule_state":
+            self.rules.append(base)
+            return
+        if kind == "rule_away":
+            for p in self.place_list(self.sub(node, "places")[0]):
+                self.rules.append({**base, "from": p})
+                self.rules.append({**base, "to": p})
+            return
+        scope = self.sub(node, "rscope")
+        self.scoped(base, scope[0] if scope else None)
+
+    def scoped(self, base: dict, scope: Tree | None) -> None:
+        """One rule per product and place the scope names; none named: bound to the sentence."""
+        products: list[str] = []
+        places: list[dict] = []
+        pronoun = False
+        unscoped_all = False
+        if scope is not None:
+            for c in scope.children:
+                if not isinstance(c, Tree):
+                    continue
+                if c.data == "ro_items":
+                    products += [str(t.value) for t in c.children if isinstance(t, Token) and t.type == "ITEM"]
+                elif c.data == "ro_pronoun":
+                    pronoun = True
+                elif c.data == "ro_any":
+                    unscoped_all = True
+                elif c.data == "rw_from":
+                    places += [{"from": p} for p in self.place_list(self.sub(c, "places")[0])]
+                elif c.data == "rw_to":
+                    places += [{"to": p} for p in self.place_list(self.sub(c, "places")[0])]
+                elif c.data == "rw_at":
+                    for p in self.place_list(self.sub(c, "places")[0]):
+                        places += [{"from": p}, {"to": p}]
+                elif c.data == "rw_route":
+                    a, b = self.sub(c, "places")
+                    for x in self.place_list(a):
+                        for y in self.place_list(b):
+                            places.append({"from": x, "to": y})
+                elif c.data == "rw_pronoun":
+                    pronoun = True
+                elif c.data in ("rw_all",):
+                    unscoped_all = True
+        if not products and not places:
+            if unscoped_all:
+                base = {**base, "open": True}
+            self.bind.append(base)
+            self.rules.append(base)
+            return
+        for product in products or [None]:
+            for place in places or [None]:
+                r = dict(base)
+                if product:
+                    r["product"] = product
+                if place:
+                    r.update(place)
+                self.rules.append(r)
+
+    # -- parts ------------------------------------------------------------------------------
+    def part(self, node: Tree) -> None:
+        d = node.data
+        if d == "goal" or d.startswith("g_"):
+            self.goal(node if d != "goal" else node.children[0])
+        elif d.startswith("t_"):
+            self.tail(node)
+        elif d.startswith("rule_"):
+            self.rule(node)
+        elif d == "aside":
+            return
+        elif d == "addressed":
+            robots_node = self.sub(node, "robots")[0]
+            sel = self.robots.read(robots_node, self.words(robots_node))
+            before = len(self.statements)
+            goal = next(c for c in node.children if isinstance(c, Tree) and c.data.startswith("g_"))
+            self.goal(goal)
+            self._rule_for(sel, "only", self.statements[before:], self.words(node))
+        elif d in ("scoped_only", "scoped_only_after", "scoped_never_after"):
+            robots_node = self.sub(node, "robots")[0]
+            sel = self.robots.read(robots_node, self.words(robots_node))
+            goal = next(c for c in node.children if isinstance(c, Tree) and c.data.startswith("g_"))
+            self.goal(goal)
+            mode = "never" if d == "scoped_never_after" else "only"
+            base = {"mode": mode, "robots": sel, "words": self.words(node)}
+            self.bind.append(base)
+            self.rules.append(base)
+        else:
+            raise TranslationError(f"{_quote(self.words(node))}: cannot read this")
+
+    def _rule_for(self, sel: dict, mode: str, statements: list[dict], words: str) -> None:
+        base = {"mode": mode, "robots": sel, "words": words}
+        self.bind.append(base)
+        self.rules.append(base)
+
+    def finish(self) -> None:
+        """Rules with no scope of their own take the sentence's goal (see the module doc)."""
+        if not self.bind or not self.statements:
+            for r in self.rules:
+                r.pop("open", None)
+            return
+        products: list[str] = []
+        moves: list[dict] = []
+        for s in self.statements:
+            items = s.get("items") or {}
+            products += items.get("names", []) if "names" in items else ["*"]
+            if s["op"] == "transfer":
+                src = (s.get("from") or {}).get("names") or ["*"]
+                dst = (s.get("to") or {}).get("names") or [None]
+                for a in src:
+                    for b in dst:
+                        moves.append({"from": a, **({"to": b} if b else {})})
+            else:
+                for p in (s.get("places") or {}).get("names", ["*"]):
+                    moves.append({"to": p})
+        products = list(dict.fromkeys(products))
+        uniq_moves = [dict(t) for t in dict.fromkeys(tuple(sorted(m.items())) for m in moves)]
+        places = {v for m in uniq_moves for v in m.values()}
+        use_product = products[0] if len(products) == 1 and products[0] != "*" else None
+        use_place = uniq_moves[0] if (len(uniq_moves) == 1 and "*" not in places) else None
+        out: list[dict] = []
+        for r in self.rules:
+            if r in self.bind and not r.get("open"):
+                new = dict(r)
+                if use_product:
+                    new["product"] = use_product
+                if use_place:
+                    new.update(use_place)
+                out.append(new)
+            else:
+                r = dict(r)
+                r.pop("open", None)
+                out.append(r)
+        self.rules = out
+
+
+def _fail(exc: UnexpectedInput, lexed: Lexed, lex: Lexicon) -> TranslationError:
+    sentence = " ".join(t.text for t in lexed.source).replace(" zzposs", "'s")
+    where = ""
+    if isinstance(exc, UnexpectedToken) and exc.token.type != "$END":
+        k = exc.token.start_pos
+        word = lexed.source[k].text
+        prev = lexed.source[k - 1] if k > 0 else None
+        if prev is not None and prev.kind == "num" and lexed.tokens[k].type == "UNKNOWN":
+            return TranslationError(f"'{prev.text} {word}': cannot tell which product this count is for "
+                                    f"(candidates: {lex.index.candidates('product')})")
+        where = f"cannot place '{word}' in '{sentence}'"
+    else:
+        where = f"'{sentence}' ends before it says what to do"
+    return TranslationError(f"{where}: the command is not understood, so nothing is guessed "
+                            f"(shelves: {lex.index.candidates('shelf')}; products: "
+                            f"{lex.index.candidates('product')}; robots: {lex.index.candidates('robot')})")
+
+
+def parse(command: str, world: dict) -> dict:
+    """The order of a command: ``{"statements": [...], "rules": [...], "command": command}``.
+
+    Raises :class:`TranslationError` quoting the words it cannot place, :class:`InputError` for
+    a command too long to be one, and :class:`Refusal` for counts that cannot exist (negative).
+    """
+    lex = Lexicon(world, keywords())
+    selector = RobotSelector(world, lex.index)
+    statements: list[dict] = []
+    rules: list[dict] = []
+    for lexed in lex.sentences(command):
+        if not lexed.tokens:
+            continue
+        try:
+            tree = _parser().parse(lexed.tokens)
+        except UnexpectedInput as exc:
+            raise _fail(exc, lexed, lex) from None
+        except UnexpectedEOF as exc:  # pragma: no cover - subclass of UnexpectedInput
+            raise _fail(exc, lexed, lex) from None
+        reader = _Sentence(lexed, lex, selector)
+        sentence = tree.children[0]
+        for part in sentence.children:
+            if isinstance(part, Tree) and part.data not in ("sep", "lead"):
+                reader.part(part)
+        reader.finish()
+        statements += reader.statements
+        rules += reader.rules
+    if not statements and not rules:
+        raise TranslationError(f"found no goal and no robot rule in '{command}' "
+                               f"(shelves: {lex.index.candidates('shelf')}; "
+                               f"products: {lex.index.candidates('product')})")
+    return {"command": command, "statements": statements, "rules": rules}
+

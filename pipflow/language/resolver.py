@@ -1,0 +1,383 @@
+"""The resolver: an order and a world in, the exact goal, bounds, robot rules and their arithmetic out.
+
+Parser and LLM produce orders that say what the user meant ("5 more", "everything except",
+"swap", "the rest"); only here are those turned into counts against the world's stock, in one
+place, each step written down in plain words ("shelf3 product4: 4 now, +5 -> 9, from '5 product4
+more'") so that a user sees a misunderstanding before robots move. It is a pure function.
+
+Rules, one each:
+
+* statements apply in order; a relative amount ("more", "fewer", "times", a fraction) counts
+  from the goal so far, else from the stock; "as many as <place> has now" reads the stock;
+* "all <item>" on one place is the item's world total; a move of "all" or "the rest" takes what
+  the source holds at that point; "except" removes places or items from an "all";
+* a count set twice to different values is an error; a bound and a count must agree;
+* "full" is the capacity minus what the goal keeps there (deferred to the end); "nothing else"
+  zeroes the other goods a place holds; "keep" pins the counts, "nothing goes to" bounds them
+  from above;
+* impossible results are a :class:`Refusal` that says why: a count below zero, a move of more
+  than the source holds, more of an item than the world has, more than a place's capacity.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+from pipflow.errors import Refusal, TranslationError
+from pipflow.language.robots import select
+
+
+@dataclass
+class Resolved:
+    """What an order means in one world."""
+
+    goal: dict[str, dict[str, Any]]  # PLACE -> ITEM -> int | {"at_least"?, "at_most"?}
+    constraints: list[dict]
+    explanation: list[str] = field(default_factory=list)
+
+
+def stock(world: dict, place: str, item: str) -> int:
+    """Units of an item on a place in the initial state (missing means zero)."""
+    return int(((world.get("stock") or {}).get(place) or {}).get(item, 0) or 0)
+
+
+def world_total(world: dict, item: str) -> int:
+    return sum(int((row or {}).get(item, 0) or 0) for row in (world.get("stock") or {}).values())
+
+
+def split_evenly(units: int, places: list[str]) -> dict[str, int]:
+    """Share ``units`` between places; the first-named places take one extra unit each."""
+    base, extra = divmod(units, len(places))
+    return {p: base + (1 if k < extra else 0) for k, p in enumerate(places)}
+
+
+class _State:
+    def __init__(self, world: dict):
+        self.world = world
+        self.products = [str(p) for p in world.get("products") or {}]
+        self.places = [str(s) for s in world.get("shelves") or {}]
+        self.counts: dict[tuple[str, str], int] = {}
+        self.fixed: dict[tuple[str, str], str] = {}
+        self.bounds: dict[tuple[str, str], dict] = {}
+        self.lines: list[str] = []
+        self.fills: list[dict] = []
+
+    def cur(self, place: str, item: str) -> int:
+        return self.counts.get((place, item), stock(self.world, place, item))
+
+    def held(self, place: str) -> list[str]:
+        return [p for p in self.products if self.cur(place, p) > 0]
+
+    def check_names(self, places: list[str], items: list[str], words: str) -> None:
+        for p in places:
+            if p not in self.places:
+                raise TranslationError(f"'{words}': no place {p} in this world "
+                                       f"(candidates: {', '.join(self.places)})")
+        for i in items:
+            if i not in self.products:
+                raise TranslationError(f"'{words}': no product {i} in this world "
+                                       f"(candidates: {', '.join(self.products)})")
+
+    def put(self, place: str, item: str, value: int, step: str, words: str, absolute: bool) -> None:
+        before = self.cur(place, item)
+        if value < 0:
+            raise Refusal(f"'{words}' would leave {value} {item} on {place} ({before} now, {step}): "
+                          f"a shelf cannot hold fewer than 0 units")
+        key = (place, item)
+        if absolute and key in self.fixed and self.counts.get(key) != value:
+            raise TranslationError(f"the command sets {item} on {place} twice: '{self.fixed[key]}' gives "
+                                   f"{self.counts[key]}, '{words}' gives {value}")
+        if absolute:
+            self.fixed[key] = words
+        self.counts[key] = value
+        self.lines.append(f"{place} {item}: {before} now, {step} -> {value}, from '{words}'")
+
+    def bound(self, place: str, item: str, lo: int | None, hi: int | None, words: str) -> None:
+        b = self.bounds.setdefault((place, item), {})
+        if lo is not None:
+            b["at_least"] = max(lo, b.get("at_least", lo))
+        if hi is not None:
+            b["at_most"] = min(hi, b.get("at_most", hi))
+        if b.get("at_least", 0) > b.get("at_most", b.get("at_least", 0)):
+            raise Refusal(f"'{words}': {item} on {place} would need at least {b['at_least']} and at "
+                          f"most {b['at_most']}")
+        shown = " and ".join(x for x in (f">= {lo}" if lo is not None else "",
+                                         f"<= {hi}" if hi is not None else "") if x)
+        self.lines.append(f"{place} {item}: {self.cur(place, item)} now, {shown}, from '{words}'")
+
+
+def _names(sel: dict | None, universe: list[str]) -> list[str]:
+    if not sel:
+        return []
+    if "names" in sel:
+        return [str(n) for n in sel["names"]]
+    if sel.get("all"):
+        excl = set(sel.get("except") or [])
+        return [u for u in universe if u not in excl]
+    return []
+
+
+def _fraction(base: int, num: int, den: int, words: str, where: str) -> int:
+    if den <= 0 or (base * num) % den:
+        raise TranslationError(f"'{words}': {num}/{den} of {base} ({where}) is not a whole number and "
+                               f"the command does not say how to round")
+    return base * num // den
+
+
+def _set(st: _State, s: dict) -> None:
+    words = s.get("words", "")
+    places = _names(s.get("places"), st.places)
+    items = _names(s.get("items"), st.products)
+    st.check_names(places, items, words)
+    a = s["amount"]
+    for p in places:
+        for i in items:
+            if "count" in a:
+                st.put(p, i, int(a["count"]), f"set {a['count']}", words, True)
+            elif a.get("none"):
+                st.put(p, i, 0, "set 0", words, True)
+            elif a.get("all"):
+                total = world_total(st.world, i)
+                st.put(p, i, total, f"all {total} the world has", words, True)
+            elif "as_many_as" in a:
+                other = a["as_many_as"]
+                st.check_names([other], [], words)
+                n = stock(st.world, other, i)
+                st.put(p, i, n, f"as many as {other} has now ({n})", words, True)
+            elif a.get("rest"):
+                raise TranslationError(f"'{words}': 'the rest' of what? say where it comes from")
+            else:
+                raise TranslationError(f"'{words}': cannot tell the count")
+
+
+def _change(st: _State, s: dict) -> None:
+    words = s.get("words", "")
+    places = _names(s.get("places"), st.places)
+    items = _names(s.get("items"), st.products)
+    st.check_names(places, items, words)
+    a = s["amount"]
+    for p in places:
+        for i in items:
+            base = st.cur(p, i)
+            if "more" in a:
+                st.put(p, i, base + int(a["more"]), f"+{a['more']}", words, False)
+            elif "fewer" in a:
+                st.put(p, i, base - int(a["fewer"]), f"-{a['fewer']}", words, False)
+            elif "times" in a:
+                st.put(p, i, base * int(a["times"]), f"x{a['times']}", words, False)
+            elif "fraction" in a:
+                num, den = a["fraction"]
+                st.put(p, i, _fraction(base, num, den, words, f"{i} on {p}"), f"x {num}/{den}", words, False)
+
+
+def _bound(st: _State, s: dict) -> None:
+    words = s.get("words", "")
+    places = _names(s.get("places"), st.places)
+    items = _names(s.get("items"), st.products)
+    st.check_names(places, items, words)
+    a = s["amount"]
+    for p in places:
+        for i in items:
+            st.bound(p, i, a.get("at_least"), a.get("at_most"), words)
+
+
+def _transfer(st: _State, s: dict) -> None:
+    words = s.get("words", "")
+    a = s["amount"]
+    target = _names(s.get("to"), st.places) if s.get("to") else []
+    if len(target) > 1:
+        raise TranslationError(f"'{words}': the command does not say how to share this between "
+                               f"{', '.join(target)} (say 'each' or 'evenly between')")
+    src_sel = s.get("from") or {}
+    sources = _names(src_sel, st.places)
+    if "names" not in src_sel:
+        sources = [p for p in sources if p not in target]
+    st.check_names(sources + target, [], words)
+    item_sel = s.get("items") or {}
+    for src in sources:
+        items = _names(item_sel, st.products) if "names" in item_sel else [
+            i for i in _names(item_sel, st.products) if st.cur(src, i) > 0]
+        st.check_names([], items, words)
+        for i in items:
+            have = st.cur(src, i)
+            if "count" in a:
+                if "names" not in src_sel and len(sources) > 1:
+                    raise TranslationError(f"'{words}': the command does not say which place the "
+                                           f"{a['count']} {i} come from")
+                n = int(a["count"])
+            elif a.get("all") or a.get("all_held") or a.get("rest"):
+                n = have
+            elif "fraction" in a:
+                num, den = a["fraction"]
+                n = _fraction(have, num, den, words, f"{i} on {src}")
+            else:
+                raise TranslationError(f"'{words}': cannot tell how many {i} to move")
+            if n > have:
+                raise Refusal(f"'{words}' moves {n} {i} from {src}, which holds {have} at that point")
+            st.put(src, i, have - n, f"-{n} moved out", words, False)
+            for dst in target:
+                st.put(dst, i, st.cur(dst, i) + n, f"+{n} from {src}", words, False)
+
+
+def _swap(st: _State, s: dict) -> None:
+    words = s.get("words", "")
+    a, b = _names(s.get("places"), st.places)
+    st.check_names([a, b], [], words)
+    sel = s.get("items") or {"all": True}
+    items = _names(sel, st.products) if "names" in sel else [
+        i for i in _names(sel, st.products) if st.cur(a, i) or st.cur(b, i)]
+    before = {(p, i): st.cur(p, i) for p in (a, b) for i in items}
+    for i in items:
+        st.put(a, i, before[(b, i)], f"swapped with {b}", words, False)
+        st.put(b, i, before[(a, i)], f"swapped with {a}", words, False)
+
+
+def _empty(st: _State, s: dict) -> None:
+    words = s.get("words", "")
+    places = _names(s.get("places"), st.places)
+    st.check_names(places, [], words)
+    for p in places:
+        sel = s.get("items") or {"all": True}
+        items = _names(sel, st.products) if "names" in sel else (
+            [i for i in _names(sel, st.products) if st.cur(p, i) > 0] or _names(sel, st.products))
+        for i in items:
+            st.put(p, i, 0, "emptied", words, True)
+
+
+def _keep(st: _State, s: dict) -> None:
+    words = s.get("words", "")
+    places = _names(s.get("places"), st.places)
+    st.check_names(places, [], words)
+    sel = s.get("items") or {"all": True}
+    for p in places:
+        items = _names(sel, st.products)
+        for i in items:
+            if s.get("inflow_only"):
+                st.bound(p, i, None, st.cur(p, i), words)
+            else:
+                st.put(p, i, st.cur(p, i), "kept", words, True)
+
+
+def _distribute(st: _State, s: dict) -> None:
+    words = s.get("words", "")
+    places = _names(s.get("places"), st.places)
+    items = _names(s.get("items"), st.products)
+    st.check_names(places, items, words)
+    a = s["amount"]
+    for i in items:
+        units = int(a["count"]) if "count" in a else world_total(st.world, i)
+        for p, n in split_evenly(units, places).items():
+            st.put(p, i, n, f"share {n} of {units}", words, True)
+
+
+def _nothing_else(st: _State, s: dict, statements: list[dict]) -> None:
+    words = s.get("words", "")
+    for p in _names(s.get("places"), st.places):
+        named = {i for (q, i) in list(st.counts) + list(st.bounds) if q == p}
+        named |= {i for f in st.fills if p in f["places"] for i in f["items"]}
+        for i in [x for x in st.products if stock(st.world, p, x) > 0 and x not in named]:
+            st.put(p, i, 0, "nothing else", words, True)
+
+
+def _fill(st: _State, f: dict) -> None:
+    words = f["words"]
+    for p in f["places"]:
+        capacity = ((st.world.get("shelves") or {}).get(p) or {}).get("capacity")
+        if capacity is None:
+            raise TranslationError(f"'{p}' has no capacity in the world, so 'full' has no count")
+        for item in f["items"]:
+            if f["only"]:
+                for other in st.held(p):
+                    if other != item:
+                        st.put(p, other, 0, "only " + item, words, True)
+                st.put(p, item, int(capacity), f"full: capacity {capacity}", words, True)
+                continue
+            others = sum(st.cur(p, o) for o in st.products if o != item)
+            if others > capacity:
+                raise Refusal(f"{p} keeps {others} other units, more than its capacity {capacity}")
+            st.put(p, item, int(capacity) - others, f"full: capacity {capacity} - {others} other units",
+                   words, True)
+
+
+def _check_feasible(st: _State) -> None:
+    """Refuse what no plan can reach: more than a place holds, more than the world has."""
+    need: dict[tuple[str, str], int] = {}
+    for key in set(st.counts) | set(st.bounds):
+        lo = st.counts.get(key, st.bounds.get(key, {}).get("at_least", 0))
+        b = st.bounds.get(key, {})
+        if key in st.counts:
+            v = st.counts[key]
+            if "at_least" in b and v < b["at_least"] or "at_most" in b and v > b["at_most"]:
+                raise Refusal(f"{key[1]} on {key[0]}: the command asks for {v} and also for "
+                              f"{'at least ' + str(b['at_least']) if 'at_least' in b else ''}"
+                              f"{' and ' if 'at_least' in b and 'at_most' in b else ''}"
+                              f"{'at most ' + str(b['at_most']) if 'at_most' in b else ''}")
+        need[key] = lo
+    for p in st.places:
+        cap = ((st.world.get("shelves") or {}).get(p) or {}).get("capacity")
+        total = sum(v for (q, _), v in need.items() if q == p)
+        if cap is not None and total > int(cap):
+            raise Refusal(f"{p} would have to hold {total} units, more than its capacity {cap}")
+    for i in st.products:
+        total = sum(v for (_, j), v in need.items() if j == i)
+        have = world_total(st.world, i)
+        if total > have:
+            raise Refusal(f"the goal needs {total} {i} in all, but the world has only {have}")
+
+
+def _rules(order: dict, world: dict, lines: list[str]) -> list[dict]:
+    out: list[dict] = []
+    for r in order.get("rules") or []:
+        words = r.get("words", "")
+        names = select(r["robots"], world, words)
+        item: dict = {r["mode"]: names}
+        for k in ("product", "from", "to"):
+            if r.get(k):
+                item[k] = r[k]
+        if item not in out:
+            out.append(item)
+            scope = " ".join(f"{k} {item[k]}" for k in ("product", "from", "to") if k in item) or "any move"
+            verb = "only" if r["mode"] == "only" else "never"
+            lines.append(f"robots {', '.join(names)}: {verb} for {scope}, from '{words}'")
+    return out
+
+
+HANDLERS = {"set": _set, "change": _change, "bound": _bound, "transfer": _transfer, "swap": _swap,
+            "empty": _empty, "keep": _keep, "distribute": _distribute}
+
+
+def resolve(order: dict, world: dict) -> Resolved:
+    """The goal (exact counts and bounds), robot rules and explanation of an order in a world."""
+    st = _State(world)
+    statements = order.get("statements") or []
+    for s in statements:
+        op = s.get("op")
+        if op == "fill":
+            places = _names(s.get("places"), st.places)
+            items = _names(s.get("items"), st.products)
+            st.check_names(places, items, s.get("words", ""))
+            st.fills.append({"places": places, "items": items, "only": bool(s.get("only")),
+                             "words": s.get("words", "")})
+        elif op == "nothing_else":
+            _nothing_else(st, s, statements)
+        elif op == "set_all_held":
+            raise TranslationError(f"'{s.get('words', '')}': cannot tell how many of each to put there")
+        elif op in HANDLERS:
+            HANDLERS[op](st, s)
+        else:
+            raise TranslationError(f"unknown statement '{op}' in the order")
+    for f in st.fills:
+        _fill(st, f)
+    _check_feasible(st)
+    goal: dict[str, dict[str, Any]] = {}
+    for (p, i), v in st.counts.items():
+        goal.setdefault(p, {})[i] = v
+    for (p, i), b in st.bounds.items():
+        if (p, i) in st.counts:
+            continue
+        goal.setdefault(p, {})[i] = {k: b[k] for k in ("at_least", "at_most") if k in b}
+    lines = list(st.lines)
+    constraints = _rules(order, world, lines)
+    if not goal and not constraints:
+        raise TranslationError("the command asks for no goal and no robot rule")
+    return Resolved(goal=goal, constraints=constraints, explanation=lines)

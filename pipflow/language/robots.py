@@ -1,0 +1,149 @@
+"""Robot selectors: which robots a rule means, by name, range, kind, tag or skill.
+
+The parser keeps the selector as the words said it (``{"kind": "forklift"}``, ``{"skill":
+"carry", "at_least": 3}``, ``{"extreme": "max", "skill": "carry"}``) so the order shows what the
+user asked for; :func:`select` turns a selector into the world's robot names, for the resolver.
+"""
+from __future__ import annotations
+
+from lark import Token, Tree
+
+from pipflow.errors import Refusal, TranslationError
+from pipflow.language.names import NameIndex, normalize, split_digits
+
+
+def _robot_of(robots: dict, name: str) -> dict:
+    r = robots.get(name)
+    return r if isinstance(r, dict) else {}
+
+
+class RobotSelector:
+    """Reads the ``robots`` subtree of a parse into a selector."""
+
+    def __init__(self, world: dict, index: NameIndex):
+        self.world, self.index = world, index
+
+    def read(self, node: Tree, words: str) -> dict:
+        if any(isinstance(c, Tree) and c.data.startswith("r_") and c.data in (
+                "r_kind", "r_skill_min", "r_skill_max", "r_super") for c in node.children):
+            return self._group(next(c for c in node.children if isinstance(c, Tree)), words)
+        names: list[str] = []
+        for c in node.children:
+            if not isinstance(c, Tree):
+                continue
+            vals = [t for t in c.scan_values(lambda v: isinstance(v, Token))]
+            if c.data == "r_name":
+                names.append(str(vals[0].value))
+            elif c.data == "r_range":
+                first = str(vals[0].value)
+                hi = int(next(t.value for t in vals if t.type == "NUM"))
+                names += self._range(first, hi, words)
+            elif c.data == "r_name_range":
+                robots = [str(t.value) for t in vals if t.type == "ROBOT"]
+                names += self._name_range(robots[0], robots[1], words)
+            elif c.data == "r_number":
+                n = int(next(t.value for t in vals if t.type == "NUM"))
+                names.append(self._number(n, words))
+        order = {name: k for k, name in enumerate(self.index.by_kind["robot"])}
+        return {"names": sorted(dict.fromkeys(names), key=lambda r: order.get(r, len(order)))}
+
+    def _group(self, node: Tree, words: str) -> dict:
+        vals = list(node.scan_values(lambda v: isinstance(v, Token)))
+        if node.data == "r_kind":
+            t = next(v for v in vals if v.type in ("RKIND", "RTAG"))
+            return {"kind": str(t.value)} if t.type == "RKIND" else {"tag": str(t.value)}
+        if node.data in ("r_skill_min", "r_skill_max"):
+            n = int(next(t.value for t in vals if t.type == "NUM"))
+            skill = self._skill(vals, words)
+            return {"skill": skill, "at_least" if node.data == "r_skill_min" else "at_most": n}
+        if node.data == "r_super":
+            t = next(v for v in vals if v.type == "SUPER")
+            return {"extreme": str(t.value), "skill": self._skill([], words)}
+        raise TranslationError(f"'{words}': cannot tell which robots")
+
+    def _skill(self, vals: list[Token], words: str) -> str:
+        """The skill named (a SKILL word) or, for a verb such as "carry", the world's skill of that
+        name; a world with one skill needs no name ("the strongest robot")."""
+        skills = list(dict.fromkeys(s for r in (self.world.get("robots") or {}).values()
+                                    if isinstance(r, dict) for s in (r.get("skills") or {})))
+        for t in vals:
+            word = str(t.value).lower()
+            for s in skills:
+                if word in (s.lower(), s.lower() + "s", s.lower() + "es"):
+                    return s
+        if len(skills) == 1:
+            return skills[0]
+        raise TranslationError(f"'{words}': cannot tell which skill is meant "
+                               f"(skills: {', '.join(skills) or 'none'})")
+
+    def _number(self, n: int, words: str) -> str:
+        same = self.index.with_digits("robot", str(n))
+        if len(same) != 1:
+            raise TranslationError(f"'{words}': no single robot numbered {n} in this world "
+                                   f"(candidates: {self.index.candidates('robot')})")
+        return same[0]
+
+    def _range(self, first: str, hi: int, words: str) -> list[str]:
+        alpha, digits = split_digits(normalize(first))
+        if not digits or hi <= int(digits):
+            raise TranslationError(f"'{words}' is not an increasing range of robots "
+                                   f"(candidates: {self.index.candidates('robot')})")
+        out = [first]
+        for n in range(int(digits) + 1, hi + 1):
+            hit = [r for r in self.index.by_kind["robot"] if split_digits(normalize(r)) == (alpha, str(n))]
+            if len(hit) != 1:
+                hit = self.index.with_digits("robot", str(n))
+            if len(hit) != 1:
+                raise TranslationError(f"'{words}': no robot numbered {n} in this world "
+                                       f"(candidates: {self.index.candidates('robot')})")
+            out.append(hit[0])
+        return out
+
+    def _name_range(self, a: str, b: str, words: str) -> list[str]:
+        (la, da), (lb, db) = split_digits(normalize(a)), split_digits(normalize(b))
+        if la != lb or not da or not db or int(db) <= int(da):
+            raise TranslationError(f"'{words}' is not an increasing range of robots "
+                                   f"(candidates: {self.index.candidates('robot')})")
+        return self._range(a, int(db), words)
+
+
+def select(selector: dict, world: dict, words: str = "") -> list[str]:
+    """The world's robot names a selector means, in the world's order; none is a refusal."""
+    robots = world.get("robots") or {}
+    names = list(robots)
+    if "names" in selector:
+        unknown = [r for r in selector["names"] if r not in robots]
+        if unknown:
+            raise TranslationError(f"'{words}': no robot {', '.join(unknown)} in this world "
+                                   f"(candidates: {', '.join(names)})")
+        return [r for r in names if r in selector["names"]]
+    if "kind" in selector:
+        out = [r for r in names if str(_robot_of(robots, r).get("kind", "")).lower() == selector["kind"].lower()]
+        what = f"of kind {selector['kind']}"
+    elif "tag" in selector:
+        out = [r for r in names if selector["tag"].lower() in
+               [str(t).lower() for t in _robot_of(robots, r).get("tags") or []]]
+        what = f"tagged {selector['tag']}"
+    elif "extreme" in selector:
+        skill = selector["skill"]
+        levels = {r: float((_robot_of(robots, r).get("skills") or {}).get(skill, 0) or 0) for r in names}
+        if not levels:
+            out = []
+        else:
+            best = max(levels.values()) if selector["extreme"] == "max" else min(levels.values())
+            out = [r for r in names if levels[r] == best]
+        what = f"with the {'highest' if selector['extreme'] == 'max' else 'lowest'} {skill}"
+    elif "skill" in selector:
+        skill = selector["skill"]
+        lo, hi = selector.get("at_least"), selector.get("at_most")
+        out = []
+        for r in names:
+            level = float((_robot_of(robots, r).get("skills") or {}).get(skill, 0) or 0)
+            if (lo is None or level >= lo) and (hi is None or level <= hi):
+                out.append(r)
+        what = f"with {skill} {'>= ' + str(lo) if lo is not None else '<= ' + str(hi)}"
+    else:
+        raise TranslationError(f"'{words}': cannot tell which robots")
+    if not out:
+        raise Refusal(f"'{words}': this world has no robot {what}")
+    return out
