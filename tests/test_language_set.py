@@ -195,6 +195,14 @@ def test_gold_is_consistent_with_the_world(path):
             (place, items), = goal.items()
             if items != {i: 0 for i in products}:
                 problems.append(f"{tid}: emptying sets every product of the world to 0")
+        if label == "fill":
+            (place, items), = goal.items()
+            (item, units), = items.items()
+            others = sum(_stock(world, place, i) for i in products if i != item)
+            if units != shelves[place]["capacity"] - others:
+                problems.append(f"{tid}: filling {place} with {item} is capacity minus the others")
+        if label == "selector-one-of-each" and not any(set(items) == set(products) for items in goal.values()):
+            problems.append(f"{tid}: one of each lists every product of the world")
     assert not problems, "\n".join(problems)
 
 
