@@ -21,6 +21,35 @@ from pipflow.errors import PipflowError, UserError
 EXIT_INTERRUPTED = 130
 
 
+def _positive_int(text: str) -> int:
+    """argparse type: a whole number >= 1 (``--jobs 0`` or ``-5`` is a user error, exit 2)."""
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"{value} is not allowed; give a whole number of 1 or more")
+    return value
+
+
+_warned_plugins = False
+
+
+def _registry():
+    """The installed steps; a plugin that failed to load is a warning here (once), and an error
+    only for a workflow that uses a step pipflow cannot find."""
+    global _warned_plugins
+    from .registry import default_registry
+
+    registry = default_registry()
+    if registry.broken and not _warned_plugins:
+        _warned_plugins = True
+        for origin, why in registry.broken.items():
+            print(f"warning: step plugin {origin} could not be loaded ({why}); its steps are unavailable",
+                  file=sys.stderr)
+    return registry
+
+
 def _key_values(pairs: Sequence[str]) -> dict[str, str]:
     out: dict[str, str] = {}
     for pair in pairs:
@@ -37,7 +66,7 @@ def _inputs(args: argparse.Namespace) -> tuple[dict, bool]:
     if getattr(args, "inputs_file", None):
         from .source import load_yaml, plain
 
-        data = plain(load_yaml(args.inputs_file))
+        data = plain(load_yaml(args.inputs_file, "inputs file"))
         if not isinstance(data, dict):
             raise UserError(f"{args.inputs_file}: an inputs file must be a mapping of input names to values")
         values.update(data)
@@ -99,8 +128,10 @@ def _print_result(result, quiet: bool) -> int:
                 print(f"{key}: {_summary(value, key=key)}")
         print(f"run succeeded in {result.seconds:.2f}s: {result.run_dir}", file=sys.stderr)
         return 0
+    from .store import redact
+
     where = f"step {result.error_step!r}: " if result.error_step else ""
-    print(f"run {result.status}: {where}{result.error}", file=sys.stderr)
+    print(redact(f"run {result.status}: {where}{result.error}"), file=sys.stderr)
     print(f"run record: {result.run_dir}", file=sys.stderr)
     if isinstance(result.exception, Refusal):
         return 3
@@ -112,13 +143,12 @@ def _print_result(result, quiet: bool) -> int:
 # -- commands ------------------------------------------------------------------------------
 
 def cmd_run(args: argparse.Namespace) -> int:
-    from .registry import default_registry
     from .runner import find_workflow, resolve_inputs, run_workflow
     from .validate import load_workflow
 
     values, from_text = _inputs(args)
     path = find_workflow(args.workflow)
-    wf = load_workflow(path, default_registry())
+    wf = load_workflow(path, _registry())
     if args.dry_run:
         resolved = resolve_inputs(wf, values, from_text=from_text)
         print(f"{path}: valid; would run {len(wf.all_steps())} step(s) with inputs:")
@@ -137,11 +167,10 @@ def cmd_run(args: argparse.Namespace) -> int:
 
 
 def cmd_validate(args: argparse.Namespace) -> int:
-    from .registry import default_registry
     from .validate import check_workflow
 
     failed = 0
-    registry = default_registry()
+    registry = _registry()
     for ref in args.files:
         from .runner import find_workflow
 
@@ -163,14 +192,13 @@ def cmd_validate(args: argparse.Namespace) -> int:
 
 
 def cmd_steps(args: argparse.Namespace) -> int:
-    from .registry import default_registry
-
-    registry = default_registry()
+    registry = _registry()
     if args.name:
         step = registry.get(args.name)
         if step is None:
             close = registry.closest(args.name)
-            raise UserError(f"unknown step {args.name!r}" + (f"; did you mean {', '.join(close)}?" if close else ""))
+            raise UserError(f"unknown step {args.name!r}" + (f"; did you mean {', '.join(close)}?" if close else "")
+                            + registry.broken_hint())
         print(f"{step.name}  (version {step.version}{', cacheable' if step.cacheable else ''}; from {registry.origin(step.name)})")
         if step.doc:
             print(f"\n  {step.doc}\n")
@@ -184,6 +212,10 @@ def cmd_steps(args: argparse.Namespace) -> int:
         return 0
     for step in registry:
         print(f"{step.name:<22} {step.doc.splitlines()[0] if step.doc else ''}")
+    if registry.broken:
+        print("broken plugins (their steps are unavailable):")
+        for origin, why in registry.broken.items():
+            print(f"  {origin}: {why}")
     return 0
 
 
@@ -192,7 +224,7 @@ def cmd_graph(args: argparse.Namespace) -> int:
     from .runner import find_workflow
     from .validate import load_workflow
 
-    wf = load_workflow(find_workflow(args.workflow))
+    wf = load_workflow(find_workflow(args.workflow), _registry())
     output = render_graph(wf, args.format, Path(args.output) if args.output else None)
     if output is not None:
         print(output)
@@ -200,11 +232,14 @@ def cmd_graph(args: argparse.Namespace) -> int:
 
 
 def _run_infos(runs_dir: Path) -> list[tuple[Path, dict]]:
-    from .store import list_runs, read_json
+    from .store import DamagedRecord, list_runs, read_json
 
     out = []
     for run in list_runs(runs_dir):
-        info = read_json(run / "run.json", None)
+        try:  # one damaged record must not hide the others: it is listed as damaged
+            info = read_json(run / "run.json", None)
+        except DamagedRecord as err:
+            info = {"status": "damaged", "error": str(err)}
         out.append((run, info if isinstance(info, dict) else {"status": "damaged", "error": "run.json unreadable"}))
     return out
 
@@ -240,35 +275,50 @@ def cmd_runs(args: argparse.Namespace) -> int:
         print(f"no runs in {args.runs_dir}" + (" that match" if args.workflow or args.status or args.since else ""))
         return 0
     for run, info in infos[: args.limit]:
-        secs = info.get("seconds")
+        secs = info.get("seconds") if isinstance(info.get("seconds"), (int, float)) else None
         print(f"{run.name:<50} {info.get('status', '?'):<11} {f'{secs:.2f}s' if secs is not None else '':>8}  "
               f"{info.get('error') or ''}"[:160])
     return 0
 
 
 def cmd_show(args: argparse.Namespace) -> int:
-    from .store import RunStore, read_json
+    from .store import DamagedRecord, RunStore, read_json
 
     store = RunStore.open(_find_run(args.run, Path(args.runs_dir)))
-    info = store.run_info()
+    problems: list[str] = []  # damaged parts of the record: reported, the rest still shown
+    try:
+        info = store.run_info()
+    except DamagedRecord as err:
+        info = {}
+        problems.append(str(err))
     print(f"run       {store.root}")
     for key in ("name", "workflow", "status", "started", "finished", "seconds", "error_step", "error"):
         if info.get(key) not in (None, ""):
             print(f"{key:<9} {info[key]}")
     print("inputs:")
-    for k, v in (info.get("inputs") or {}).items():
+    inputs = info.get("inputs")
+    for k, v in (inputs if isinstance(inputs, dict) else {}).items():
         print(f"  {k} = {json.dumps(v, default=str)[:100]}")
     print("steps:")
     for e in store.events():
         if e.get("event") in ("end", "skip", "error") and e.get("step"):
             it = f" #{e['iteration']}" if "iteration" in e else ""
             status = e.get("status", "skipped" if e["event"] == "skip" else "")
-            dur = f"{e['duration']:.3f}s" if "duration" in e else ""
-            print(f"  {e['step'] + it:<22} {status:<10} {dur:>9}" + (" cached" if e.get("cached") else ""))
-    outputs = read_json(store.root / "outputs.json")
+            dur = f"{e['duration']:.3f}s" if isinstance(e.get("duration"), (int, float)) else ""
+            print(f"  {str(e['step']) + it:<22} {str(status):<10} {dur:>9}" + (" cached" if e.get("cached") else ""))
+    if store.damaged_events:
+        problems.append(f"{store.root / 'events.jsonl'}: damaged line(s) "
+                        f"{', '.join(map(str, store.damaged_events[:10]))} skipped (a run killed while writing?)")
+    try:
+        outputs = read_json(store.root / "outputs.json")
+    except DamagedRecord as err:
+        outputs = None
+        problems.append(str(err))
     if outputs is not None:
         print("outputs:")
         print("  " + json.dumps(outputs, indent=2, default=str).replace("\n", "\n  "))
+    for problem in problems:
+        print(f"warning: {problem}", file=sys.stderr)
     return 0
 
 
@@ -278,7 +328,7 @@ def cmd_resume(args: argparse.Namespace) -> int:
     run_dir = _find_run(args.run, Path(args.runs_dir))
     options, display = _options(args, [])
     try:
-        result = resume_run(run_dir, options=options)
+        result = resume_run(run_dir, options=options, registry=_registry())
     finally:
         if display:
             display.close()
@@ -327,7 +377,7 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("-i", "--input", action="append", metavar="KEY=VALUE", help="set an input (repeatable)")
     run.add_argument("--inputs", dest="inputs_file", metavar="FILE", help="YAML file of inputs")
     run.add_argument("--dry-run", action="store_true", help="validate and show the inputs; run nothing")
-    run.add_argument("--jobs", type=int, default=1, help="independent steps to run at once")
+    run.add_argument("--jobs", type=_positive_int, default=1, help="independent steps to run at once")
     run.add_argument("--no-cache", action="store_true", help="ignore and do not write the step cache")
     run.set_defaults(func=cmd_run)
 
@@ -346,7 +396,7 @@ def build_parser() -> argparse.ArgumentParser:
     graph.set_defaults(func=cmd_graph)
 
     runs = sub.add_parser("runs", parents=[common], help="list runs, newest first")
-    runs.add_argument("--limit", type=int, default=30)
+    runs.add_argument("--limit", type=_positive_int, default=30)
     runs.add_argument("--workflow", help="only runs of this workflow (its name or file stem)")
     runs.add_argument("--status", help="only runs with this status (succeeded, failed, refused, ...)")
     runs.add_argument("--since", help="only runs started at or after this UTC date/time (2026-11-30, 2026-11-30T05)")
@@ -359,7 +409,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     resume = sub.add_parser("resume", parents=[common], help="rerun only what did not finish")
     resume.add_argument("run")
-    resume.add_argument("--jobs", type=int, default=1)
+    resume.add_argument("--jobs", type=_positive_int, default=1)
     resume.add_argument("--no-cache", action="store_true")
     resume.set_defaults(func=cmd_resume)
 
@@ -373,7 +423,7 @@ def build_parser() -> argparse.ArgumentParser:
     bench.add_argument("tasks", help="task file (benchmarks/README.md format)")
     bench.add_argument("--workflow", default=None, help="workflow to run per task (default: built-in warehouse)")
     bench.add_argument("--seeds", type=int, default=1, help="runs per task; seeds vary the robots' start positions")
-    bench.add_argument("--jobs", type=int, default=None,
+    bench.add_argument("--jobs", type=_positive_int, default=None,
                        help="parallel processes, or workers of a local dask cluster (default: CPU count)")
     bench.add_argument("--out", default=None, help="output directory (default: bench-out/<time>)")
     bench.add_argument("--matrix", action="append", metavar="KEY=V1,V2", help="run variants side by side")
@@ -421,7 +471,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     except PipflowError as err:
         if args.verbose:
             traceback.print_exc()
-        print(f"error: {err}" if not getattr(err, "diagnostics", None) else str(err), file=sys.stderr)
+        from .store import redact
+
+        print(redact(f"error: {err}" if not getattr(err, "diagnostics", None) else str(err)), file=sys.stderr)
         return err.exit_code
 
 

@@ -1,0 +1,111 @@
+"""Two runs or two benches side by side (``pipflow compare A B`` and the view's compare page).
+
+Why one module for both faces: the text table and the HTML table must show the same figures and
+the same differences, so both are drawn from :func:`comparison` (rows of label, A, B, B - A).
+"""
+from __future__ import annotations
+
+import html
+import json
+from pathlib import Path
+from typing import Any
+
+from pipflow.errors import InputError
+
+RUN_FIELDS = [("status", None), ("goal", None), ("constraints", None), ("rounds", None),
+              ("makespan", "s"), ("tc_max", "m"), ("tc_avg", "m"), ("tc_avg_moved", "m"), ("goal_met", None),
+              ("exe", None), ("seconds", "s"), ("tokens", None), ("cost_usd", "USD")]
+TASK_FIELDS = [("sr", "%"), ("understood", "%"), ("misread", None), ("gcr", None), ("tc_max", "m"),
+               ("tc_avg", "m"), ("makespan", "s"), ("seconds", "s"), ("tokens", None)]
+
+
+def _read(path: Path) -> Any:
+    try:
+        return json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+
+
+def kind_of(d: Path) -> str:
+    if (d / "results.json").is_file():
+        return "bench"
+    if (d / "run.json").is_file():
+        return "run"
+    raise InputError(f"{d}: neither a run directory (run.json) nor a bench directory (results.json)")
+
+
+def _run_facts(d: Path) -> dict[str, Any]:
+    info = _read(d / "run.json") or {}
+    outputs = _read(d / "outputs.json") or {}
+    metrics = _read(d / "metrics.json") or {}
+    llm = metrics.get("llm") or {}
+    facts = {"status": info.get("status"), "seconds": info.get("seconds"),
+             "tokens": llm.get("total_tokens"), "cost_usd": llm.get("cost_usd")}
+    for key, _ in RUN_FIELDS:
+        if key in outputs:
+            facts[key] = outputs[key]
+    return facts
+
+
+def comparison(a: Path, b: Path) -> tuple[str, list[list[Any]]]:
+    """``(kind, rows)``; each row is ``[label, value in A, value in B, B - A or "" ]``."""
+    ka, kb = kind_of(a), kind_of(b)
+    if ka != kb:
+        raise InputError(f"cannot compare a {ka} ({a}) with a {kb} ({b})")
+    rows: list[list[Any]] = []
+    if ka == "run":
+        fa, fb = _run_facts(a), _run_facts(b)
+        for key, unit in RUN_FIELDS:
+            if fa.get(key) is not None or fb.get(key) is not None:
+                rows.append([key + (f" ({unit})" if unit else ""), fa.get(key), fb.get(key), _diff(fa.get(key), fb.get(key))])
+        return ka, rows
+    ra, rb = _read(a / "results.json") or {}, _read(b / "results.json") or {}
+    ta = {t.get("id"): t for t in ra.get("tasks", []) if isinstance(t, dict)}
+    tb = {t.get("id"): t for t in rb.get("tasks", []) if isinstance(t, dict)}
+    for tid in list(ta) + [t for t in tb if t not in ta]:
+        for key, unit in TASK_FIELDS:
+            va, vb = (ta.get(tid) or {}).get(key), (tb.get(tid) or {}).get(key)
+            if va is not None or vb is not None:
+                rows.append([f"{tid} {key}" + (f" ({unit})" if unit else ""), va, vb, _diff(va, vb)])
+    for key, unit in TASK_FIELDS:
+        va, vb = (ra.get("summary") or {}).get(key), (rb.get("summary") or {}).get(key)
+        if va is not None or vb is not None:
+            rows.append([f"all tasks {key}" + (f" ({unit})" if unit else ""), va, vb, _diff(va, vb)])
+    return ka, rows
+
+
+def _diff(a: Any, b: Any) -> Any:
+    if isinstance(a, (int, float)) and isinstance(b, (int, float)) and not isinstance(a, bool) and not isinstance(b, bool):
+        return b - a
+    return "" if a == b else "differs"
+
+
+def fmt(value: Any) -> str:
+    if isinstance(value, float):
+        return f"{value:+.2f}".lstrip("+") if abs(value) < 1e6 else f"{value:.3g}"
+    if isinstance(value, (dict, list)):
+        return json.dumps(value, separators=(", ", ": "))
+    return "" if value is None else str(value)
+
+
+def compare_text(a: Path, b: Path) -> str:
+    kind, rows = comparison(a, b)
+    width = max([len(r[0]) for r in rows] + [5])
+    lines = [f"{kind}s: A = {a}", f"       B = {b}", f"{'':<{width}}  {'A':>14}  {'B':>14}  {'B - A':>10}"]
+    for label, va, vb, d in rows:
+        lines.append(f"{label:<{width}}  {fmt(va):>14}  {fmt(vb):>14}  {fmt(d) if not isinstance(d, str) else d:>10}")
+    return "\n".join(lines)
+
+
+def compare_html(a: Path, b: Path) -> str:
+    kind, rows = comparison(a, b)
+    body = "".join(
+        f"<tr{' class=diff' if d not in ('', 0, 0.0) else ''}><td>{html.escape(label)}</td><td>{html.escape(fmt(va))}</td>"
+        f"<td>{html.escape(fmt(vb))}</td><td>{html.escape(fmt(d) if not isinstance(d, str) else d)}</td></tr>"
+        for label, va, vb, d in rows)
+    return ("<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'><title>pipflow compare</title><style>"
+            "body{font-family:sans-serif;margin:1.5em 2em} table{border-collapse:collapse}"
+            "td,th{border:1px solid #ccc;padding:.3em .6em} th{background:#eef2f7} tr.diff td{background:#fff8e1}"
+            "</style></head><body>"
+            f"<h1>Compare two {kind}s</h1><p>A: <code>{html.escape(str(a))}</code><br>B: <code>{html.escape(str(b))}</code></p>"
+            f"<table id='comparison'><tr><th></th><th>A</th><th>B</th><th>B - A</th></tr>{body}</table></body></html>")

@@ -1,0 +1,227 @@
+"""``pipflow view [DIR]``: a local, read-only web page over a folder of runs and benches.
+
+Why a server at all when reports are static files: the index has to reflect what is in the folder
+now (runs keep arriving), and reports are written on demand the first time they are opened. The
+server is the standard library's ``ThreadingHTTPServer`` bound to loopback only; it serves GET
+requests for files inside DIR and a few generated pages, refuses any path that leaves DIR, and
+never writes anything but the ``report.html`` (and its pictures) of a record that is opened.
+
+Pages:
+- ``/``: every run and bench under DIR (newest first), with filters by workflow, status and date
+  (query parameters ``workflow``, ``status``, ``since``; the form on the page sets them), each row
+  linking to its report; tick two rows and "compare" opens ``/compare?a=..&b=..``.
+- ``/report/<relative dir>``: that record's report (written if missing or older than the record).
+- ``/compare?a=<rel>&b=<rel>``: two runs or two benches side by side (:mod:`pipflow.compare`).
+- anything else: the file under DIR, read-only.
+"""
+from __future__ import annotations
+
+import html
+import json
+import threading
+import urllib.parse
+import webbrowser
+from dataclasses import dataclass
+from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
+from pathlib import Path
+from typing import Any
+
+from pipflow.compare import compare_html
+from pipflow.errors import InputError
+from pipflow.report import write_report
+
+_STYLE = """<style>
+body { font-family: sans-serif; margin: 1.5em 2em; color: #222; }
+table { border-collapse: collapse; width: 100%; } td, th { border: 1px solid #ccc; padding: .3em .6em; text-align: left; }
+th { background: #eef2f7; } tr:hover { background: #f7f9fc; }
+.succeeded { color: #1a7f37; font-weight: bold; } .failed, .refused, .interrupted { color: #c62828; font-weight: bold; }
+.running { color: #b26a00; } form { margin: .8em 0; } input, select, button { margin-right: .6em; padding: .2em .4em; }
+.small { color: #666; font-size: .9em; }
+</style>"""
+
+
+@dataclass
+class Record:
+    """One run or bench found under the viewed folder."""
+
+    kind: str  # run | bench
+    rel: str  # path relative to the folder, with /
+    name: str
+    workflow: str
+    status: str
+    started: str
+    seconds: float | None
+    detail: str
+
+
+def scan(root: Path) -> list[Record]:
+    """Runs (folders with run.json) and benches (folders with results.json) under ``root``, newest
+    first. A damaged record is listed with status ``damaged`` rather than hiding the rest."""
+    found: list[Record] = []
+    for marker in sorted(root.rglob("run.json")) + sorted(root.rglob("results.json")):
+        d = marker.parent
+        rel = d.relative_to(root).as_posix() or "."
+        try:
+            info = json.loads(marker.read_text(encoding="utf-8"))
+            if not isinstance(info, dict):
+                raise ValueError("not a mapping")
+        except (OSError, ValueError) as err:
+            found.append(Record("run" if marker.name == "run.json" else "bench", rel, d.name, "?", "damaged",
+                                "", None, f"{marker.name}: {err}"))
+            continue
+        if marker.name == "run.json":
+            found.append(Record("run", rel, d.name, str(info.get("name") or Path(str(info.get("workflow", "?"))).stem),
+                                str(info.get("status", "?")), str(info.get("started") or ""), info.get("seconds"),
+                                str(info.get("error") or "")))
+        else:
+            summary = info.get("summary") or {}
+            config = info.get("config") or {}
+            sr = summary.get("sr")
+            found.append(Record("bench", rel, d.name, Path(str(config.get("workflow") or "?")).stem,
+                                "bench", str(info.get("started") or d.name), info.get("wall_seconds"),
+                                f"{summary.get('runs', '?')} runs, SR {100 * float(sr):.0f}%" if sr is not None else ""))
+    return sorted(found, key=lambda r: (r.started or r.name, r.name), reverse=True)
+
+
+def index_html(root: Path, query: dict[str, str]) -> str:
+    records = scan(root)
+    wf, status, since = query.get("workflow", ""), query.get("status", ""), query.get("since", "")
+    shown = [r for r in records if (not wf or r.workflow == wf) and (not status or r.status == status)
+             and (not since or (r.started or r.name) >= since)]
+    workflows = sorted({r.workflow for r in records})
+    statuses = sorted({r.status for r in records})
+
+    def options(values: list[str], chosen: str) -> str:
+        return "<option value=''>all</option>" + "".join(
+            f"<option{' selected' if v == chosen else ''}>{html.escape(v)}</option>" for v in values)
+
+    rows = []
+    for r in shown:
+        q = urllib.parse.quote(r.rel)
+        secs = f"{r.seconds:.1f} s" if isinstance(r.seconds, (int, float)) else ""
+        rows.append(f"<tr><td><input type='checkbox' name='pick' value='{html.escape(r.rel)}'></td>"
+                    f"<td>{r.kind}</td><td><a href='/report/{q}'>{html.escape(r.name)}</a></td>"
+                    f"<td>{html.escape(r.workflow)}</td><td class='{html.escape(r.status)}'>{html.escape(r.status)}</td>"
+                    f"<td>{html.escape(r.started)}</td><td>{secs}</td><td>{html.escape(r.detail[:160])}</td></tr>")
+    table = ("<table id='records'><tr><th></th><th>kind</th><th>record</th><th>workflow</th><th>status</th>"
+             "<th>started (UTC)</th><th>time</th><th>detail</th></tr>" + "".join(rows) + "</table>")
+    script = """<script>
+document.getElementById('cmp').addEventListener('click', function () {
+  var picked = Array.prototype.slice.call(document.querySelectorAll("input[name=pick]:checked")).map(function (x) { return x.value; });
+  if (picked.length !== 2) { alert('Tick exactly two records to compare.'); return; }
+  location.href = '/compare?a=' + encodeURIComponent(picked[0]) + '&b=' + encodeURIComponent(picked[1]);
+});
+</script>"""
+    return (f"<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'><title>pipflow: {html.escape(str(root))}</title>"
+            f"{_STYLE}</head><body><h1>pipflow records</h1><p class='small'>{html.escape(str(root.resolve()))}: "
+            f"{len(shown)} of {len(records)} shown</p>"
+            f"<form method='get'>workflow <select name='workflow'>{options(workflows, wf)}</select>"
+            f"status <select name='status'>{options(statuses, status)}</select>"
+            f"since <input name='since' type='date' value='{html.escape(since)}'>"
+            f"<button type='submit'>filter</button><button type='button' id='cmp'>compare the two ticked</button></form>"
+            f"{table}{script}</body></html>")
+
+
+class ViewServer:
+    """The read-only server over one folder; ``url`` once started."""
+
+    def __init__(self, root: str | Path, port: int = 0):
+        self.root = Path(root).resolve()
+        if not self.root.is_dir():
+            raise InputError(f"{root}: no such folder to view")
+        self._server = ThreadingHTTPServer(("127.0.0.1", port), self._handler())
+        self._server.daemon_threads = True
+        self._thread: threading.Thread | None = None
+
+    @property
+    def url(self) -> str:
+        return f"http://127.0.0.1:{self._server.server_address[1]}/"
+
+    def start(self) -> "ViewServer":
+        self._thread = threading.Thread(target=self._server.serve_forever, daemon=True)
+        self._thread.start()
+        return self
+
+    def serve_forever(self) -> None:
+        self._server.serve_forever()
+
+    def stop(self) -> None:
+        self._server.shutdown()
+        self._server.server_close()
+
+    def _inside(self, rel: str) -> Path | None:
+        p = (self.root / urllib.parse.unquote(rel).lstrip("/")).resolve()
+        return p if p == self.root or self.root in p.parents else None
+
+    def _handler(self) -> type[BaseHTTPRequestHandler]:
+        view = self
+
+        class Handler(BaseHTTPRequestHandler):
+            def log_message(self, *args: Any) -> None:
+                pass
+
+            def do_GET(self) -> None:
+                url = urllib.parse.urlsplit(self.path)
+                query = {k: v[-1] for k, v in urllib.parse.parse_qs(url.query).items()}
+                try:
+                    if url.path in ("/", "/index.html"):
+                        return self._page(index_html(view.root, query))
+                    if url.path.startswith("/report/"):
+                        d = view._inside(url.path[len("/report/"):])
+                        if d is None or not d.is_dir():
+                            return self._error(404, "no such record")
+                        page = d / "report.html"
+                        marker = d / ("results.json" if (d / "results.json").is_file() else "run.json")
+                        if not page.is_file() or (marker.is_file() and marker.stat().st_mtime > page.stat().st_mtime):
+                            write_report(d)
+                        rel = page.relative_to(view.root).as_posix()
+                        return self._redirect("/" + urllib.parse.quote(rel))
+                    if url.path == "/compare":
+                        a, b = view._inside(query.get("a", "")), view._inside(query.get("b", ""))
+                        if a is None or b is None:
+                            return self._error(404, "compare needs two records inside the viewed folder")
+                        return self._page(compare_html(a, b))
+                    f = view._inside(url.path)
+                    if f is None or not f.is_file():
+                        return self._error(404, "not found")
+                    kind = {".html": "text/html; charset=utf-8", ".png": "image/png", ".json": "application/json",
+                            ".gif": "image/gif", ".svg": "image/svg+xml"}.get(f.suffix, "text/plain; charset=utf-8")
+                    return self._send(200, f.read_bytes(), kind)
+                except InputError as err:
+                    return self._error(400, str(err))
+
+            def _page(self, text: str) -> None:
+                self._send(200, text.encode("utf-8"), "text/html; charset=utf-8")
+
+            def _redirect(self, to: str) -> None:
+                self.send_response(302)
+                self.send_header("Location", to)
+                self.send_header("Content-Length", "0")
+                self.end_headers()
+
+            def _error(self, code: int, message: str) -> None:
+                self._send(code, f"<!DOCTYPE html><p>{html.escape(message)}</p>".encode(), "text/html; charset=utf-8")
+
+            def _send(self, code: int, data: bytes, kind: str) -> None:
+                try:
+                    self.send_response(code)
+                    self.send_header("Content-Type", kind)
+                    self.send_header("Content-Length", str(len(data)))
+                    self.end_headers()
+                    self.wfile.write(data)
+                except (BrokenPipeError, ConnectionResetError):
+                    pass
+
+        return Handler
+
+
+def serve(root: str | Path, port: int = 0, open_browser: bool = True) -> None:
+    """Serve until Ctrl-C, printing the address (and opening it in the user's browser)."""
+    server = ViewServer(root, port)
+    print(f"pipflow view: {server.url} (read-only, loopback; Ctrl-C stops)", flush=True)
+    if open_browser:
+        webbrowser.open(server.url)
+    try:
+        server.serve_forever()
+    finally:
+        server.stop()
