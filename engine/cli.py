@@ -122,14 +122,14 @@ def _summary(value: Any, limit: int = 160, key: str = "") -> str:
 def _print_result(result, quiet: bool) -> int:
     from pipflow.errors import Refusal
 
+    from .store import redact
+
     if result.status == "succeeded":
         if not quiet:
             for key, value in result.outputs.items():
-                print(f"{key}: {_summary(value, key=key)}")
+                print(redact(f"{key}: {_summary(value, key=key)}"))
         print(f"run succeeded in {result.seconds:.2f}s: {result.run_dir}", file=sys.stderr)
         return 0
-    from .store import redact
-
     where = f"step {result.error_step!r}: " if result.error_step else ""
     print(redact(f"run {result.status}: {where}{result.error}"), file=sys.stderr)
     print(f"run record: {result.run_dir}", file=sys.stderr)

@@ -3,6 +3,11 @@ group ``pipflow.steps``.
 
 An entry point may name a :class:`Step` object, a module (every Step in it is registered), or a
 package with a ``STEP_MODULES`` list of module names (how pipflow registers its own steps).
+
+A plugin that fails to load (an import error, a step name registered twice) does not take the
+others down: it is listed in :attr:`Registry.broken`, the CLI warns about it and lists it in
+``pipflow steps``, and only a workflow that uses a step pipflow cannot find fails, with a
+message that names the broken plugin.
 """
 from __future__ import annotations
 
@@ -25,6 +30,7 @@ class Registry:
     def __init__(self) -> None:
         self._steps: dict[str, Step] = {}
         self._origin: dict[str, str] = {}
+        self.broken: dict[str, str] = {}  # plugin (origin) -> why it could not be loaded
 
     def add(self, step: Step, origin: str) -> None:
         known = self._origin.get(step.name)
@@ -56,13 +62,22 @@ class Registry:
     def __iter__(self) -> Iterable[Step]:
         return iter(self._steps[n] for n in self.names())
 
+    def broken_hint(self) -> str:
+        """For an unknown step: the plugins that failed to load, one of which may provide it."""
+        if not self.broken:
+            return ""
+        return "; step plugin(s) that failed to load: " + "; ".join(f"{o} ({why})" for o, why in self.broken.items())
+
 
 def _register_target(registry: Registry, target: object, origin: str) -> None:
     if isinstance(target, Step):
         registry.add(target, origin)
     elif isinstance(target, ModuleType):
         for name in getattr(target, "STEP_MODULES", ()):
-            registry.add_module(importlib.import_module(name), origin)
+            try:  # one broken module of a package leaves its siblings' steps usable
+                registry.add_module(importlib.import_module(name), origin)
+            except Exception as err:
+                registry.broken[f"{origin} ({name})"] = f"{type(err).__name__}: {err}"
         registry.add_module(target, origin)
     else:
         raise UserError(f"entry point {origin} of group {GROUP} names neither a step nor a module")
@@ -78,11 +93,9 @@ def default_registry() -> Registry:
         registry = Registry()
         for ep in entry_points(group=GROUP):
             origin = f"{ep.dist.name if ep.dist else '?'}:{ep.name}"
-            try:
-                target = ep.load()
-            except Exception as err:  # a broken plugin must not hide the others' steps
-                raise UserError(f"cannot load step plugin {origin} ({ep.value}): "
-                                f"{type(err).__name__}: {err}") from err
-            _register_target(registry, target, origin)
+            try:  # a broken plugin must not hide the others' steps, nor stop workflows without it
+                _register_target(registry, ep.load(), origin)
+            except Exception as err:
+                registry.broken[f"{origin} ({ep.value})"] = f"{type(err).__name__}: {err}"
         _default = registry
     return _default

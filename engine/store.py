@@ -44,8 +44,9 @@ def _umask() -> int:
 FILE_MODE = 0o666 & ~_umask()  # the mode `open()` gives a new file: every record file has it
 
 # -- secrets ---------------------------------------------------------------------------------
-SECRET_NAME = re.compile(r"KEY|TOKEN|SECRET|PASSW|PWD|CREDENTIAL|AUTH|COOKIE|SESSION|PRIVATE|SIGNATURE",
-                         re.IGNORECASE)
+# KEY, TOKEN, SECRET, PASSWORD/PASSWD, CREDENTIAL(S), PRIVATE: OPENAI_API_KEY, HF_TOKEN, DB_PASSWORD...
+# (not PWD: that is the working folder, and redacting it would hide every path)
+SECRET_NAME = re.compile(r"KEY|TOKEN|SECRET|PASSW|CREDENTIAL|PRIVATE", re.IGNORECASE)
 _MIN_SECRET = 6  # shorter values ("1", "true") would redact ordinary text
 _secrets: dict[str, str] = {}  # value -> variable name
 _secrets_lock = threading.Lock()

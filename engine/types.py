@@ -5,6 +5,8 @@ from typing import Any
 
 import yaml
 
+from pipflow.yamlsource import safe_load
+
 from .expr import has_expression
 
 _CHECKS = {
@@ -35,7 +37,10 @@ def coerce_text(text: str, type_name: str) -> Any:
     ``[a, b]``, ``{x: 1}``) and then checked."""
     if type_name in ("string", "path"):
         return text
-    value = yaml.safe_load(text) if text.strip() else None
+    try:
+        value = safe_load(text) if text.strip() else None
+    except yaml.YAMLError as err:
+        raise ValueError(f"{text[:80]!r} is not a YAML value ({getattr(err, 'problem', None) or err})") from None
     if type_name == "number" and isinstance(value, int) and not isinstance(value, bool):
         return float(value)
     if not type_matches(value, type_name):

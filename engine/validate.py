@@ -156,7 +156,8 @@ def _semantic_diagnostics(wf: Workflow, registry: Registry) -> list[Diagnostic]:
         if step is None:
             close = registry.closest(s.uses)
             hint = f"; did you mean {', '.join(repr(c) for c in close)}?" if close else ""
-            out.append(Diagnostic(s.raw.where("uses"), f"step {s.id!r}: unknown step {s.uses!r}{hint}"))
+            out.append(Diagnostic(s.raw.where("uses"), f"step {s.id!r}: unknown step {s.uses!r}{hint}"
+                                                       f"{registry.broken_hint()}"))
             continue
         for arg, value in s.args.items():
             if arg not in step.inputs:
