@@ -41,7 +41,7 @@ window.addEventListener('load', function () {
 </script>"""
 
 _STYLE = """<style>
-body { font-family: sans-serif; margin: 2em; max-width: 1150px; color: #222; }
+body { font-family: sans-serif; margin: 2em; max-width: 1350px; color: #222; }
 h1 { font-size: 1.5em; } h2 { border-bottom: 1px solid #ccc; padding-bottom: .2em; margin-top: 1.6em; }
 table { border-collapse: collapse; margin: .5em 0; } td, th { border: 1px solid #bbb; padding: .25em .6em; }
 th { background: #eef2f7; } td.num { text-align: right; font-variant-numeric: tabular-nums; }
@@ -50,7 +50,7 @@ img { max-width: 100%; border: 1px solid #ddd; margin: .3em 0; }
 .snaps img { width: 48%; } pre { background: #f6f8fa; padding: .6em; overflow-x: auto; white-space: pre-wrap; }
 .round { border: 1px solid #ccd; border-radius: 6px; padding: .2em 1em .6em; margin: .8em 0; }
 .cause { border: 2px solid #c62828; border-radius: 6px; padding: .2em 1em; background: #fff5f5; }
-pre.answer { max-height: 24em; overflow-y: auto; }
+pre.answer { max-height: 24em; overflow-y: auto; } .small { font-size: .85em; color: #555; }
 </style>"""
 
 
@@ -198,13 +198,20 @@ def _run_body(d: Path) -> str:
     else:
         parts.append("<p>(no plan in this run)</p>")
 
-    if graph_s:
+    mode = inputs.get("pictures") if inputs.get("pictures") in pictures.MODES else "auto"
+    if graph_s and not pictures.wanted(mode, "graph", pictures.size_of("graph", graph_s[2]["graph"])):
+        parts.append(f"<h2>Dependency graph</h2><p>not drawn (pictures: {_e(mode)}; "
+                     f"{len(graph_s[2]['graph'].get('nodes', []))} subtasks)</p>")
+    elif graph_s:
         try:
             pictures.dependency_graph(graph_s[2]["graph"], rep / "graph.png")
             parts.append("<h2>Dependency graph</h2>" + _img("report/graph.png", "dependency graph"))
         except Exception as exc:  # a picture must never hide the rest of the report
             parts.append(f"<h2>Dependency graph</h2><p class='bad'>could not draw: {_e(exc)}</p>")
-    if schedule:
+    if schedule and not pictures.wanted(mode, "gantt", pictures.size_of("gantt", schedule)):
+        parts.append(f"<h2>Schedule</h2><p>Gantt chart not drawn (pictures: {_e(mode)}; "
+                     f"{pictures.size_of('gantt', schedule)} working robots)</p>")
+    elif schedule:
         pictures.gantt(schedule, rep / "gantt.png")
         parts.append("<h2>Schedule</h2>" + _img("report/gantt.png", "Gantt chart per robot"))
 
@@ -213,8 +220,8 @@ def _run_body(d: Path) -> str:
         art = sd / "artifacts"
         pics = [p for p in sim.get("pictures", []) if (art / p).is_file()]
         src = f"steps/{name}/artifacts/paths.png" if "paths.png" in pics else None
-        if src is None and world and (art / "trajectories.json").is_file():
-            traj = _read(art / "trajectories.json", {}).get("trajectories", {})
+        traj = _read(art / "trajectories.json", {}).get("trajectories", {}) if src is None and world else {}
+        if traj and pictures.wanted(mode, "paths", pictures.size_of("paths", traj)):
             pictures.path_map(world, traj, rep / "paths.png", travel=sim.get("travel"))
             src = "report/paths.png"
         if src:
@@ -347,7 +354,7 @@ def _loop_section(rounds: list[dict]) -> str:
     """One card per round: the prompt as sent, the raw answer, the checks' messages, the cost."""
     cards = []
     for r in rounds:
-        gen, dbg, ver = r.get("generate") or {}, r.get("debug") or {}, r.get("verify") or {}
+        gen, ver = r.get("generate") or {}, r.get("verify") or {}
         usage = gen.get("usage") or {}
         ok = bool(ver.get("ok")) or bool(ver.get("refusal"))
         head = (f"<h3>{_e(r['loop'])} round {r['n']} "
@@ -379,61 +386,109 @@ def _loop_section(rounds: list[dict]) -> str:
 
 
 def _bench_body(d: Path) -> str:
+    """Variants side by side: a summary row per variant, then per task each variant's SR,
+    understanding, travel and makespan (mean and spread over seeds), with the difference to the
+    first variant; the configuration shows the matrix that made the variants."""
     results = _read(d / "results.json")
     if not isinstance(results, dict) or "tasks" not in results:
         raise InputError(f"{d / 'results.json'}: not a results file (needs 'summary' and 'tasks')")
     rep = d / "report"
     rep.mkdir(exist_ok=True)
-    runs = _read(d / "runs.json", []) or []  # per-run rows written by `pipflow bench`
-    parts = []
-    meta = {k: v for k, v in results.items() if not isinstance(v, (dict, list))}
-    meta.update({f"config.{k}": v for k, v in (results.get("config") or {}).items() if not isinstance(v, (dict, list))})
-    if meta:
-        parts.append(_table(["", ""], [[k, v] for k, v in meta.items()]))
+    runs = [r for r in (_read(d / "runs.json", []) or []) if isinstance(r, dict)]
+    config = results.get("config") or {}
     variants = results.get("variants") or [{"name": "default", "summary": results.get("summary", {}),
                                             "tasks": results.get("tasks", [])}]
-    for k, variant in enumerate(variants):
-        name = variant.get("name", "default")
-        vruns = [r for r in runs if isinstance(r, dict) and r.get("variant", "default") == name]
-        if len(variants) > 1:
-            parts.append(f"<h2>Variant {_e(name)}</h2>")
-        parts.append(_variant_body(d, rep, variant, vruns, prefix=f"v{k + 1}_"))
-    return "\n".join(parts)
+    names = [v.get("name", "default") for v in variants]
+    parts = [_bench_config(results, config)]
 
+    parts.append("<h2>Summary</h2>" + _table(
+        ["variant", "runs", "SR", "understood", "misread", "GCR", "TC-max (m)", "TC-avg (m)", "makespan (s)",
+         "time per run (s)", "tokens"],
+        [[v.get("name", "default"), (v.get("summary") or {}).get("runs"), _pct((v.get("summary") or {}).get("sr")),
+          _pct((v.get("summary") or {}).get("understood")), (v.get("summary") or {}).get("misread"),
+          (v.get("summary") or {}).get("gcr"), (v.get("summary") or {}).get("tc_max"),
+          (v.get("summary") or {}).get("tc_avg"), _mean_of(runs, v.get("name", "default"), "makespan"),
+          _mean_of(runs, v.get("name", "default"), "seconds"), _mean_of(runs, v.get("name", "default"), "tokens")]
+         for v in variants]))
 
-def _variant_body(d: Path, rep: Path, variant: dict, runs: list[dict], prefix: str) -> str:
-    tasks = variant.get("tasks", [])
-    summary = variant.get("summary", {})
-    parts = ["<h3>Summary</h3>" + _table(
-        ["runs", "SR", "GCR", "Exe", "RU", "TC-max (m)", "TC-avg (m)"],
-        [[summary.get("runs"), summary.get("sr"), summary.get("gcr"), summary.get("exe"), summary.get("ru"),
-          summary.get("tc_max"), summary.get("tc_avg")]])]
+    commands = _task_commands(config)
+    by_task = {name: {t.get("id"): t for t in v.get("tasks", []) if isinstance(t, dict)}
+               for name, v in zip(names, variants)}
+    task_ids = [t.get("id") for t in variants[0].get("tasks", []) if isinstance(t, dict)]
+    headers = ["task", "command"] + [f"{h} [{n}]" if len(names) > 1 else h for n in names
+                                     for h in ("SR", "TC-max (m)", "makespan (s)")]
+    if len(names) > 1:
+        headers += [f"\u0394 TC-max [{n}]" for n in names[1:]]
     rows = []
-    for t in tasks:
-        details = _details(d, t, runs)
-        links = [f"<a href='{_e(r)}'>{_e(i)}</a>" for i, r in
-                 ((x.get("seed", j), _rel(d, x.get("run_dir"))) for j, x in enumerate(details)) if r]
-        rows.append([t.get("id"), t.get("runs"), f"{100 * float(t.get('sr') or 0):.0f}%", t.get("gcr"),
-                     t.get("exe"), t.get("ru"), t.get("tc_max"), t.get("tc_avg"), t.get("error") or "",
-                     Raw(" ".join(links))])
-    parts.append("<h3>Tasks</h3>" + _table(
-        ["task", "runs", "SR", "GCR", "Exe", "RU", "TC-max (m)", "TC-avg (m)", "error", "run reports"], rows))
-    if tasks:
-        _bench_overview(tasks, rep / f"{prefix}overview.png")
-        parts.append("<h3>Per task</h3>" + _img(f"report/{prefix}overview.png", "SR and travel per task"))
-        for i, t in enumerate(tasks):
-            details = _details(d, t, runs)
-            if details:
-                fname = f"{prefix}task_{i + 1:02d}.png"
-                _task_plot(t, details, rep / fname)
-                parts.append(f"<h4>{_e(t.get('id'))}</h4>" + _img(f"report/{fname}", f"runs of {t.get('id')}"))
+    for tid in task_ids:
+        row: list[Any] = [tid, commands.get(tid, "")]
+        base_tc = None
+        for k, n in enumerate(names):
+            t = by_task[n].get(tid) or {}
+            vr = [r for r in runs if r.get("variant", "default") == n and r.get("task") == tid]
+            tc = [float(r["tc_max"]) for r in vr if r.get("success") and isinstance(r.get("tc_max"), (int, float))]
+            links = " ".join(f"<a href='{_e(link)}'>seed {_e(r.get('seed'))}</a>" for r in vr
+                             for link in [_rel(d, r.get("run_dir"))] if link)
+            row += [Raw(f"{_pct(t.get('sr'))}<br><span class='small'>{links}</span>"), _spread(tc),
+                    _num(t.get("makespan"))]
+            if k == 0:
+                base_tc = t.get("tc_max")
+        for n in names[1:]:
+            t = by_task[n].get(tid) or {}
+            row.append(t.get("tc_max") - base_tc if isinstance(t.get("tc_max"), (int, float))
+                       and isinstance(base_tc, (int, float)) else None)
+        rows.append(row)
+    parts.append("<h2>Tasks</h2>" + _table(headers, rows))
+    errors = [(n, t.get("id"), t.get("error")) for n, v in zip(names, variants) for t in v.get("tasks", [])
+              if isinstance(t, dict) and t.get("error")]
+    if errors:
+        parts.append("<h3>Errors</h3><ul>" + "".join(
+            f"<li><b>{_e(tid)}</b>" + (f" [{_e(n)}]" if len(names) > 1 else "") + f": {_e(err)}</li>"
+            for n, tid, err in errors) + "</ul>")
+    if task_ids:
+        _bench_overview(variants, runs, rep / "overview.png")
+        parts.append("<h2>Per task</h2>" + _img("report/overview.png", "SR and TC-max per task and variant"))
     return "\n".join(parts)
 
 
-def _details(d: Path, task: dict, runs: list[dict]) -> list[dict]:
-    """The runs of one task: from ``runs.json`` rows, else from the task's own ``details``."""
-    rows = [r for r in runs if r.get("task") == task.get("id")]
-    return rows or [x for x in (task.get("details") or []) if isinstance(x, dict)]
+def _bench_config(results: dict, config: dict) -> str:
+    rows = [[k, v] for k, v in config.items() if not isinstance(v, (dict, list))]
+    for key in ("matrix", "inputs"):
+        for k, v in (config.get(key) or {}).items():
+            rows.append([f"{key}: {k}", ", ".join(map(str, v)) if isinstance(v, list) else v])
+    rows += [[k, v] for k, v in results.items() if not isinstance(v, (dict, list))]
+    return "<h2>Configuration</h2>" + _table(["", ""], rows)
+
+
+def _task_commands(config: dict) -> dict[str, str]:
+    """Each task's command, read back from the bench's task file (empty when it is gone)."""
+    from pipflow.yamlsource import read_source, safe_load
+
+    try:
+        doc = safe_load(read_source(config.get("tasks") or "", "task file"))
+    except Exception:  # a moved or damaged task file only loses the command column
+        return {}
+    return {str(t.get("id")): str(t.get("command", "")) for t in (doc or {}).get("tasks", []) if isinstance(t, dict)}
+
+
+def _pct(x: Any) -> Any:
+    return None if x is None else f"{100 * float(x):.0f}%"
+
+
+def _spread(values: list[float]) -> Any:
+    """Mean over seeds, with the spread (min-max) when there is more than one."""
+    if not values:
+        return None
+    mean = sum(values) / len(values)
+    if len(values) == 1:
+        return round(mean, 2)
+    return f"{mean:.2f} ({min(values):.2f}\u2013{max(values):.2f})"
+
+
+def _mean_of(runs: list[dict], variant: str, key: str) -> Any:
+    vals = [float(r[key]) for r in runs if r.get("variant", "default") == variant
+            and isinstance(r.get(key), (int, float)) and not isinstance(r.get(key), bool)]
+    return round(sum(vals) / len(vals), 2) if vals else None
 
 
 def _rel(d: Path, run_dir: str | None) -> str | None:
@@ -451,44 +506,39 @@ def _rel(d: Path, run_dir: str | None) -> str | None:
     return rel.as_posix() if p.is_dir() else None
 
 
-def _bench_overview(tasks: list[dict], path: Path) -> None:
+def _bench_overview(variants: list[dict], runs: list[dict], path: Path) -> None:
+    """SR and TC-max per task, one bar per variant; TC-max bars carry the spread over seeds."""
     from pipflow.pictures import _plt
 
     plt = _plt()
-    ids = [str(t.get("id")) for t in tasks]
+    ids = [str(t.get("id")) for t in variants[0].get("tasks", [])]
     x = list(range(len(ids)))
-    fig, (a1, a2) = plt.subplots(1, 2, figsize=(12, 4))
-    a1.bar(x, [100 * float(t.get("sr") or 0) for t in tasks], color="#4c78a8")
+    width = 0.8 / max(1, len(variants))
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(max(12, 0.6 * len(ids) * len(variants) + 4), 4.5))
+    for k, v in enumerate(variants):
+        name = v.get("name", "default")
+        tasks = {str(t.get("id")): t for t in v.get("tasks", [])}
+        xs = [i - 0.4 + width * (k + 0.5) for i in x]
+        a1.bar(xs, [100 * float((tasks.get(i) or {}).get("sr") or 0) for i in ids], width, label=name)
+        lo, mid, hi = [], [], []
+        for i in ids:
+            tc = [float(r["tc_max"]) for r in runs if r.get("variant", "default") == name and str(r.get("task")) == i
+                  and r.get("success") and isinstance(r.get("tc_max"), (int, float))]
+            m = sum(tc) / len(tc) if tc else 0.0
+            mid.append(m)
+            lo.append(m - min(tc) if tc else 0.0)
+            hi.append(max(tc) - m if tc else 0.0)
+        a2.bar(xs, mid, width, yerr=[lo, hi], capsize=2, label=name)
     a1.set_ylim(0, 105)
     a1.set_ylabel("SR (%)")
     a1.set_title("Success rate per task")
-    w = 0.4
-    a2.bar([i - w / 2 for i in x], [float(t.get("tc_max") or 0) for t in tasks], w, label="TC-max", color="#f58518")
-    a2.bar([i + w / 2 for i in x], [float(t.get("tc_avg") or 0) for t in tasks], w, label="TC-avg", color="#54a24b")
-    a2.set_ylabel("metres")
-    a2.set_title("Travel per task (successful runs)")
-    a2.legend()
+    a2.set_ylabel("TC-max (m), successful runs")
+    a2.set_title("Longest robot travel per task (bars: spread over seeds)")
     for a in (a1, a2):
         a.set_xticks(x)
-        a.set_xticklabels(ids, rotation=45, ha="right", fontsize=8)
+        a.set_xticklabels(ids, rotation=45, ha="right", fontsize=9)
+        if len(variants) > 1:
+            a.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(path, dpi=80)
-    plt.close(fig)
-
-
-def _task_plot(task: dict, details: list[dict], path: Path) -> None:
-    from pipflow.pictures import _plt
-
-    plt = _plt()
-    fig, ax = plt.subplots(figsize=(7, 2.8))
-    xs = [d.get("seed", i) for i, d in enumerate(details)]
-    colours = ["#1a7f37" if d.get("success") else "#c62828" for d in details]
-    ax.scatter(xs, [float(d.get("tc_max") or 0) for d in details], c=colours, marker="^", label="TC-max")
-    ax.scatter(xs, [float(d.get("tc_avg") or 0) for d in details], c=colours, marker="o", label="TC-avg")
-    ax.set_xlabel("seed")
-    ax.set_ylabel("metres")
-    ax.set_title(f"{task.get('id')}: travel per run (green = success)")
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(path, dpi=80)
+    fig.savefig(path, dpi=90)
     plt.close(fig)

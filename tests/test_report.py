@@ -116,16 +116,26 @@ def test_bench_report_renders_in_chromium(tmp_path):
     runs = [{"variant": v, "task": t["id"], "seed": s, "success": bool(i % 3 or s), "tc_max": 30.0 + i + s,
              "tc_avg": 8.0 + s, "run_dir": str(run)} for v in ("default", "graph_mode=paper")
             for i, t in enumerate(tasks, 1) for s in range(3)]
+    task_file = tmp_path / "tasks.yaml"
+    task_file.write_text("world: w.yaml\ntasks:\n" + "".join(
+        f"  - {{id: {t['id']}, command: 'put {i} product1 on shelf2', goal: {{shelf2: {{product1: {i}}}}}}}\n"
+        for i, t in enumerate(tasks, 1)))
     write_json(bench / "results.json", {"summary": summary, "tasks": tasks, "wall_seconds": 12.5,
-                                        "config": {"seeds": 3, "workflow": "warehouse"},
+                                        "config": {"seeds": 3, "workflow": "warehouse", "tasks": str(task_file),
+                                                   "matrix": {"graph_mode": ["exact", "paper"]}},
                                         "variants": [{"name": "default", "summary": summary, "tasks": tasks},
                                                      {"name": "graph_mode=paper", "summary": summary, "tasks": tasks}]})
     write_json(bench / "runs.json", runs)
     page = write_report(bench)
     html = page.read_text()
     assert "wh-03" in html and "refused: over capacity" in html and "href='runs/run1/report.html'" in html
-    assert "Variant graph_mode=paper" in html and "report/v2_task_03.png" in html
-    assert_rendered(page, tmp_path, min_images=8)
+    # variants side by side in one table, each task with its command, seeds labelled, SR as a percentage
+    assert html.count("<h2>Tasks</h2>") == 1
+    assert "SR [default]" in html and "SR [graph_mode=paper]" in html and "\u0394 TC-max [graph_mode=paper]" in html
+    assert "put 3 product1 on shelf2" in html and ">seed 2</a>" in html and "67%" in html and "0.67" not in html
+    assert "matrix: graph_mode" in html and "exact, paper" in html
+    assert "32.00 (31.00\u201333.00)" in html  # wh-01's TC-max over its three seeds: mean (min-max)
+    assert_rendered(page, tmp_path, min_images=1)
 
 
 def test_broken_image_is_detected(tmp_path):
