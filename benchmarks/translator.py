@@ -62,14 +62,20 @@ def _read_yaml(path: Path) -> Any:
     return yaml.safe_load(path.read_text(encoding="utf-8"))
 
 
-def load_world_for(tasks_path: Path, spec: dict) -> dict:
-    """The task file's world through its domain's loader (validated, as a run gets it)."""
-    world_path = (tasks_path.parent / spec["world"]).resolve()
-    if spec.get("domain") == "household":
-        from pipflow.household.world import load_world as load_household
-        return load_household(world_path)
-    from pipflow.world import load_world
-    return load_world(world_path)
+def load_file(tasks_path: Path) -> tuple[dict, list[dict], str]:
+    """(world, tasks, domain) of a task file, through its domain's loader, as ``pipflow bench``
+    gets them: the world validated, the gold normalized (household ``on``/``off`` are words, not
+    YAML booleans). Fields that loader does not keep (``construction``, ``expect``) come from the
+    file itself. A bad file is a :class:`WorldError` that names where."""
+    raw = _read_yaml(tasks_path)
+    domain = raw.get("domain") or "warehouse"
+    if domain == "household":
+        from pipflow.household.scoring import load_tasks
+    else:
+        from pipflow.world import load_tasks
+    loaded = load_tasks(tasks_path)
+    written = {str(t.get("id")): t for t in raw["tasks"]}
+    return loaded["world"], [{**written[str(t["id"])], **t} for t in loaded["tasks"]], domain
 
 
 def goal_value(value: Any) -> Any:
@@ -147,20 +153,18 @@ def read(command: str, world: dict) -> dict:
 
 def run_file(tasks_path: Path) -> list[Outcome]:
     """Every task of one file, judged. A world that does not load is a user error (exit 2)."""
-    spec = _read_yaml(tasks_path)
-    world = load_world_for(tasks_path, spec)
-    domain = spec.get("domain") or "warehouse"
+    world, tasks, domain = load_file(tasks_path)
     default_label = tasks_path.parent.name if tasks_path == PAPER_TASKS else "(unlabelled)"
     out = []
-    for task in spec["tasks"]:
+    for task in tasks:
         got, error = None, None
         try:
             got = read(task["command"], world)
         except Exception as exc:  # judged: pipflow errors are refusals, anything else a crash
             error = exc
         verdict, detail = judge(task, got, error, domain)
-        out.append(Outcome(f"{tasks_path.stem}/{task['id']}", task.get("construction", default_label),
-                           verdict, detail))
+        label = task.get("construction") or task.get("category") or default_label  # household: category
+        out.append(Outcome(f"{tasks_path.stem}/{task['id']}", label, verdict, detail))
     return out
 
 

@@ -241,6 +241,27 @@ def test_judge_verdicts_for_refusals_and_crashes():
     assert judge(ambiguous, {"goal": {"a": {"x": 3}}}, None)[0] == "misread"
 
 
+def _one_task_file(tmp_path: Path, task: dict, world: str = "racks.yaml") -> Path:
+    (tmp_path / world).write_text((LANGUAGE / world).read_text(encoding="utf-8"), encoding="utf-8")
+    path = tmp_path / "tasks.yaml"
+    path.write_text(yaml.safe_dump({"world": world, "tasks": [{"id": "t1", "construction": "set", **task}]}),
+                    encoding="utf-8")
+    return path
+
+
+def test_table_exits_1_on_a_misread_0_when_all_is_understood_and_2_on_a_bad_file(tmp_path, capsys):
+    main = _translator().main
+    command = "Rack A should have 10 widgets."
+    right = _one_task_file(tmp_path, {"command": command, "goal": {"rack_a": {"widget": 10}}})
+    assert main([str(right)]) == 0
+    wrong = _one_task_file(tmp_path, {"command": command, "goal": {"rack_a": {"widget": 11}}})
+    assert main([str(wrong)]) == 1
+    assert "misread" in capsys.readouterr().out
+    unknown = _one_task_file(tmp_path, {"command": command, "goal": {"rack_z": {"widget": 10}}})
+    assert main([str(unknown)]) == 2
+    assert "rack_z" in capsys.readouterr().err
+
+
 # ---------------------------------------------------------------------------------------------
 # the reading
 # ---------------------------------------------------------------------------------------------
