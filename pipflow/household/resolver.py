@@ -322,6 +322,8 @@ class Resolver:
         cond = st["to"]
         if st["things"]:
             named = self.objects(st["things"], words, cond=cond)
+            said = {n for n, _ in named}   # "the TV is on but nobody is watching it": the cue answers it
+            self.observed = [o for o in self.observed if not set(o[0]) <= said]
         elif self.observed:
             named = [(n, True) for names, _, _ in self.observed for n in names]
             self.observed = []
