@@ -153,10 +153,10 @@ def test_gold_is_consistent_with_the_world(path):
                     problems.append(f"{tid}: bound {v} is empty")
         refuse = task.get("expect") == "refuse"
         infeasible = task.get("feasible", True) is False
-        if refuse != (label == "ambiguous") or infeasible != label.startswith("infeasible-"):
+        if refuse != (label in ("ambiguous", "unknown-name")) or infeasible != label.startswith("infeasible-"):
             problems.append(f"{tid}: label {label} does not match feasible/expect")
         if refuse and (goal or task.get("constraints") or infeasible):
-            problems.append(f"{tid}: an ambiguous command has no gold to execute")
+            problems.append(f"{tid}: a command to refuse has no gold to execute")
         over_capacity = [p for p, items in goal.items()
                          if sum(_low(v) for v in items.values()) > shelves[p]["capacity"]]
         over_stock = [i for i in products
