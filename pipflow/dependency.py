@@ -30,12 +30,10 @@ Key = tuple  # (fluent name, arg, arg, ...); "*" for a quantified variable
 
 def _parse(domain_text: str, problem_text: str):
     """Parse with UP's PDDL reader; a parse failure is the user's input, so InputError."""
-    from unified_planning.io import PDDLReader
-    from unified_planning.shortcuts import get_environment
+    from pipflow.pddl.common import parse  # the shared, memoised parse: the problem is read-only here
 
-    get_environment().credits_stream = None
     try:
-        return PDDLReader().parse_problem_string(domain_text, problem_text)
+        return parse(domain_text, problem_text)
     except Exception as exc:  # UP raises many kinds; all mean "this PDDL does not parse"
         raise InputError(f"cannot parse domain/problem for the dependency graph: {exc}") from exc
 

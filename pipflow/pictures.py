@@ -9,6 +9,41 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
+#: ``pictures`` workflow input: ``always`` draws them during the run; ``never`` draws none (the
+#: report neither); ``auto`` leaves them to ``pipflow report``, which draws those below
+#: :data:`AUTO_LIMITS`. Why not in the run by default: matplotlib's import and drawing were 0.65 s
+#: of a 1.4 s main job, and a Gantt chart of 1000 robots took 32 s that nobody looked at.
+MODES = ("auto", "always", "never")
+#: the largest picture ``auto`` draws: rows of the Gantt chart (robots that work), subtasks of the
+#: graph, robots that moved on the path map; beyond that a picture is unreadable and slow.
+AUTO_LIMITS = {"gantt": 60, "graph": 80, "paths": 60}
+
+
+def wanted(mode: str | None, kind: str, size: int) -> bool:
+    """Whether to draw picture ``kind`` (a key of :data:`AUTO_LIMITS`) of ``size`` under ``mode``
+    (``None`` means ``auto``)."""
+    mode = mode or "auto"
+    if mode not in MODES:
+        raise ValueError(f"pictures must be one of {', '.join(MODES)}, not {mode!r}")
+    return mode == "always" or (mode == "auto" and size <= AUTO_LIMITS[kind])
+
+
+def size_of(kind: str, data: dict) -> int:
+    """The size :func:`wanted` judges: Gantt rows (robots with work), graph nodes, moving robots."""
+    if kind == "gantt":
+        return len(_working_robots(data))
+    if kind == "graph":
+        return len(data.get("nodes", []))
+    return sum(1 for pts in data.values() if len(pts) > 1)  # paths: {robot: [[t, x, y], ...]}
+
+
+def _working_robots(schedule: dict) -> list[str]:
+    """Robots with a leg or a subtask: the rows of a Gantt chart (idle robots have none)."""
+    robots = [r for r, info in (schedule.get("robots") or {}).items() if info.get("legs")]
+    for s in schedule.get("subtasks", []):
+        robots += [r for r in s.get("robots", []) if r not in robots]
+    return sorted(set(robots), key=_natural)
+
 
 def _plt():
     import matplotlib
@@ -49,19 +84,20 @@ def path_map(world: dict, trajectories: dict[str, list], path: Path, travel: dic
     plt = _plt()
     fig, ax = plt.subplots(figsize=(9, 6.5))
     draw_floor(ax, world)
-    names = list(world.get("robots", {}))
+    index = {r: i for i, r in enumerate(world.get("robots", {}))}
+    idle = [pts[0] for pts in trajectories.values() if len(pts) == 1]
     for r, pts in trajectories.items():
-        i = names.index(r) if r in names else len(names)
-        c = robot_colour(i)
+        if len(pts) < 2:
+            continue  # idle robots: one grey dot each below, no legend row (a thousand would hide the map)
+        c = robot_colour(index.get(r, len(index)))
         xs, ys = [p[1] for p in pts], [p[2] for p in pts]
         label = f"{r} ({travel[r]:.1f} m)" if travel and r in travel else r
-        if len(pts) > 1:
-            ax.plot(xs, ys, "-", color=c, lw=1.6, alpha=0.85, label=label)
-        else:
-            ax.plot([], [], "-", color=c, label=label)
-        if pts:
-            ax.plot(xs[0], ys[0], "o", color=c, ms=6)
-            ax.plot(xs[-1], ys[-1], "s", color=c, ms=5)
+        ax.plot(xs, ys, "-", color=c, lw=1.6, alpha=0.85, label=label)
+        ax.plot(xs[0], ys[0], "o", color=c, ms=6)
+        ax.plot(xs[-1], ys[-1], "s", color=c, ms=5)
+    if idle:
+        ax.plot([p[1] for p in idle], [p[2] for p in idle], "o", color="#999999", ms=3,
+                label=f"{len(idle)} idle robot{'s' if len(idle) != 1 else ''}")
     ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     ax.set_title("Robot paths (o start, \u25a0 end)")
     fig.tight_layout()
@@ -113,17 +149,16 @@ def animation_gif(world: dict, trajectories: dict[str, list], path: Path, makesp
 
 
 def gantt(schedule: dict, path: Path) -> Path:
-    """One row per robot: its travel legs (light) and the subtasks it works on (labelled)."""
+    """One row per robot that works: its travel legs (light) and the subtasks it works on
+    (labelled). Idle robots get no row (the title counts them): with a thousand robots the chart
+    stays readable and cheap."""
     plt = _plt()
-    robots = sorted((schedule.get("robots") or {}).keys(), key=_natural)
-    for s in schedule.get("subtasks", []):
-        for r in s.get("robots", []):
-            if r not in robots:
-                robots.append(r)
+    robots = _working_robots(schedule)
+    idle = len(set(schedule.get("robots") or {}) - set(robots))
     fig, ax = plt.subplots(figsize=(10, max(2.5, 0.45 * len(robots) + 1.2)))
     row = {r: i for i, r in enumerate(robots)}
     for r, info in (schedule.get("robots") or {}).items():
-        for leg in info.get("legs", []):
+        for leg in info.get("legs", []) if r in row else []:
             ax.barh(row[r], float(leg["end"]) - float(leg["start"]), left=float(leg["start"]),
                     height=0.35, color="#cccccc", edgecolor="#999999")
     for k, s in enumerate(schedule.get("subtasks", [])):
@@ -136,7 +171,8 @@ def gantt(schedule: dict, path: Path) -> Path:
     ax.set_yticklabels(robots, fontsize=8)
     ax.invert_yaxis()
     ax.set_xlabel("time (s)")
-    ax.set_title(f"Schedule (makespan {float(schedule.get('makespan', 0)):.1f} s; grey = travel)")
+    ax.set_title(f"Schedule (makespan {float(schedule.get('makespan', 0)):.1f} s; grey = travel"
+                 + (f"; {idle} idle robot{'s' if idle != 1 else ''} not shown)" if idle else ")"))
     fig.tight_layout()
     fig.savefig(path, dpi=90)
     plt.close(fig)

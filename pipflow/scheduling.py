@@ -156,30 +156,3 @@ def build_schedule(graph: dict, allocation: dict, world: dict, speed: float = 1.
     if missing:
         raise InputError(f"allocation leaves subtasks unallocated: {', '.join(missing)}")
     return tl.result()
-
-
-def draw_gantt(schedule: dict, path) -> None:
-    """A Gantt chart of robots over time (matplotlib, Agg)."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    robots = list(schedule["robots"])
-    fig, ax = plt.subplots(figsize=(9, max(2.5, 0.35 * len(robots) + 1)))
-    colors = plt.get_cmap("tab20")
-    ids = [s["id"] for s in schedule["subtasks"]]
-    for y, r in enumerate(robots):
-        for leg in schedule["robots"][r]["legs"]:
-            c = colors(ids.index(leg["subtask"]) % 20) if leg["subtask"] in ids else "grey"
-            ax.barh(y, leg["end"] - leg["start"], left=leg["start"], color=c, edgecolor="black", linewidth=0.3)
-    for s in schedule["subtasks"]:
-        for r in s["robots"]:
-            y = robots.index(r)
-            ax.text((s["start"] + s["end"]) / 2, y, s["id"], ha="center", va="center", fontsize=6)
-    ax.set_yticks(range(len(robots)), robots, fontsize=7)
-    ax.set_xlabel("time [s]")
-    ax.set_title(f"schedule: makespan {schedule['makespan']:.1f} s, TC-max {schedule['tc_max']:.1f} m, "
-                 f"TC-avg {schedule['tc_avg']:.1f} m", fontsize=9)
-    fig.savefig(path, dpi=110, bbox_inches="tight")  # tight_layout warns when many robots crowd the axis
-    plt.close(fig)

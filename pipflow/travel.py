@@ -6,31 +6,51 @@ as one in front of it, so allocation and TC-max/TC-avg would be wrong.
 
 Shelf footprints, inflated by a small margin (robot radius), are rectangular obstacles. Among
 convex polygonal obstacles a shortest path bends only at obstacle corners, so the **visibility
-graph** (nodes: the free corners of the inflated rectangles plus the places; edges: pairs that
-see each other) holds every shortest path, and Dijkstra on it (networkx) gives exact any-angle
-geodesics. It is far smaller than a floor grid (a few hundred nodes for fifty shelves), and
-visibility is tested for many segments at once with numpy. ``distance`` is always the length of
-the path ``path`` returns, so allocation costs and schedule legs agree.
+graph** (nodes: the free corners of the inflated rectangles plus the fixtures' access points;
+edges: pairs that see each other) holds every shortest path between them, and Dijkstra on it
+gives exact any-angle geodesics. ``distance`` is always the length of the path ``path`` returns,
+so allocation costs and schedule legs agree.
 
-Everything a run needs (distances and paths between every shelf access point and every place) is
-computed once per world and cached in memory, and optionally on disk keyed by a hash of the
-world's geometry, so the many allocation calls of a run, and repeated runs, are cheap.
+Why it is built this way (scale): a run asks for the distances from a few hundred or thousand
+robot starts to the access points of the shelves its subtasks visit, and between those access
+points. So nothing is computed for all pairs up front:
+
+* the graph has only corners and access points (a robot start is never a bend of a shortest path,
+  so robots are not nodes: adding a thousand of them made a dense graph of a million edges);
+  visibility is tested for all candidate segments at once with numpy, after a bounding-box
+  filter, and the graph is a ``scipy.sparse`` matrix;
+* one ``scipy.sparse.csgraph.dijkstra(indices=[target])`` per access point a run actually goes
+  to, computed when first asked and kept (distances and predecessors: 2 x nodes numbers);
+* a robot start (or any point) is joined to the graph by the nodes it sees, once per point:
+  ``d(p, t) = min over nodes v seen from p of |p - v| + d(v, t)``, with ``t`` itself among them
+  when ``p`` sees it directly.
+
+Memory is linear in what is asked: the graph (corners x their visible neighbours), one tree per
+target asked, one visibility row per start asked. The geometry (graph and trees) is shared by all
+``TravelMap`` objects of the same floor in a process (allocation, schedule and simulation each
+make one), keyed by a hash of the floor, the footprints, the access points and the margin.
 """
 from __future__ import annotations
 
 import hashlib
 import json
 import math
+import threading
+from collections import OrderedDict
 from pathlib import Path
 from typing import Any, Sequence, Union
+
+import numpy as np
 
 from pipflow.errors import InputError
 
 Point = tuple[float, float]
 Place = Union[str, Sequence[float]]
 
-_MEMORY_CACHE: dict[str, dict[str, Any]] = {}
-_FORMAT = 2  # 2: exact visibility-graph paths
+_EPS = 1e-9
+_GEOMETRIES: OrderedDict[str, "_Geometry"] = OrderedDict()  # floor key -> shared geometry
+_GEOMETRIES_MAX = 8
+_GEOMETRIES_LOCK = threading.Lock()
 
 
 def _rect_hits_segment(rect: tuple[float, float, float, float], a: Point, b: Point) -> bool:
@@ -43,7 +63,7 @@ def _rect_hits_segment(rect: tuple[float, float, float, float], a: Point, b: Poi
     t0, t1 = 0.0, 1.0
     for p, q in ((-dx, a[0] - x0), (dx, x1 - a[0]), (-dy, a[1] - y0), (dy, y1 - a[1])):
         if abs(p) < 1e-12:
-            if q <= 1e-9:
+            if q <= _EPS:
                 return False
         else:
             t = q / p
@@ -51,16 +71,179 @@ def _rect_hits_segment(rect: tuple[float, float, float, float], a: Point, b: Poi
                 t0 = max(t0, t)
             else:
                 t1 = min(t1, t)
-            if t0 >= t1 - 1e-9:
+            if t0 >= t1 - _EPS:
                 return False
     # the clipped piece must have positive length strictly inside
     mx, my = a[0] + dx * (t0 + t1) / 2, a[1] + dy * (t0 + t1) / 2
-    eps = 1e-9
-    return x0 + eps < mx < x1 - eps and y0 + eps < my < y1 - eps
+    return x0 + _EPS < mx < x1 - _EPS and y0 + _EPS < my < y1 - _EPS
 
 
-def _length(path: Sequence[Sequence[float]]) -> float:
-    return sum(math.dist(path[k], path[k + 1]) for k in range(len(path) - 1))
+def _blocked(ax: np.ndarray, ay: np.ndarray, bx: np.ndarray, by: np.ndarray, x0: np.ndarray,
+             y0: np.ndarray, x1: np.ndarray, y1: np.ndarray) -> np.ndarray:
+    """Element-wise: does segment (ax, ay)-(bx, by) pass through the open rectangle (x0, y0, x1, y1)?
+    (:func:`_rect_hits_segment` for arrays of pairs.)
+
+    Liang-Barsky clipping of the segment to the rectangle; the clipped piece must have positive
+    length and its midpoint must lie strictly inside (so a segment along an edge or through a
+    corner is not blocked)."""
+    dx, dy = bx - ax, by - ay
+    t0 = np.zeros_like(dx)
+    t1 = np.ones_like(dx)
+    miss = np.zeros(dx.shape, dtype=bool)
+    for p, q in ((-dx, ax - x0), (dx, x1 - ax), (-dy, ay - y0), (dy, y1 - ay)):
+        parallel = np.abs(p) < 1e-12
+        miss |= parallel & (q <= _EPS)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            t = np.where(parallel, 0.0, q / np.where(parallel, 1.0, p))
+        t0 = np.where(~parallel & (p < 0), np.maximum(t0, t), t0)
+        t1 = np.where(~parallel & (p > 0), np.minimum(t1, t), t1)
+    tm = (t0 + t1) / 2
+    mx, my = ax + dx * tm, ay + dy * tm
+    inside = (x0 + _EPS < mx) & (mx < x1 - _EPS) & (y0 + _EPS < my) & (my < y1 - _EPS)
+    return ~miss & (t0 < t1 - _EPS) & inside
+
+
+def _visible_from(a: Point, targets: np.ndarray, rects: np.ndarray, cores: np.ndarray) -> np.ndarray:
+    """For each target (rows of an (n, 2) array), whether the segment from ``a`` keeps out of every
+    inflated footprint (``rects``, (m, 4) arrays of x0, y0, x1, y1). An end point within a
+    footprint's safety margin (a robot parked close to a shelf) may leave or reach it: for that
+    footprint only the real one (``cores``) blocks.
+
+    Only (target, rectangle) pairs whose bounding boxes overlap are clipped exactly, so the cost
+    follows the rectangles near each segment rather than all of them."""
+    n = len(targets)
+    if not len(rects) or not n:
+        return np.ones(n, dtype=bool)
+    bx, by = targets[:, 0], targets[:, 1]
+    lo_x, hi_x = np.minimum(a[0], bx)[:, None], np.maximum(a[0], bx)[:, None]
+    lo_y, hi_y = np.minimum(a[1], by)[:, None], np.maximum(a[1], by)[:, None]
+    near = (rects[:, 0] < hi_x) & (lo_x < rects[:, 2]) & (rects[:, 1] < hi_y) & (lo_y < rects[:, 3])
+    ti, ri = np.nonzero(near)
+    if not len(ti):
+        return np.ones(n, dtype=bool)
+    r = rects[ri]
+    in_a = (r[:, 0] < a[0]) & (a[0] < r[:, 2]) & (r[:, 1] < a[1]) & (a[1] < r[:, 3])
+    px, py = bx[ti], by[ti]
+    in_b = (r[:, 0] < px) & (px < r[:, 2]) & (r[:, 1] < py) & (py < r[:, 3])
+    box = np.where((in_a | in_b)[:, None], cores[ri], r)
+    hit = _blocked(np.full(len(ti), a[0]), np.full(len(ti), a[1]), px, py,
+                   box[:, 0], box[:, 1], box[:, 2], box[:, 3])
+    seen = np.ones(n, dtype=bool)
+    seen[ti[hit]] = False
+    return seen
+
+
+class _Geometry:
+    """The visibility graph of one floor and the shortest-path trees asked of it so far.
+
+    Shared between TravelMap objects of the same floor (see the module docstring); its lazily
+    filled tables are guarded by a lock because steps may run in threads (``--jobs``)."""
+
+    def __init__(self, width: float, height: float, rects: np.ndarray, cores: np.ndarray,
+                 anchors: list[Point]):
+        self.width, self.height = width, height
+        self.rects, self.cores = rects, cores
+        nodes = list(dict.fromkeys(self._corners() + list(anchors)))
+        self.nodes = np.asarray(nodes, dtype=float).reshape(-1, 2)
+        self.index = {p: i for i, p in enumerate(nodes)}
+        self._graph = None
+        self._trees: dict[int, tuple[np.ndarray, np.ndarray]] = {}  # target node -> (dist, pred)
+        self._seen: dict[Point, tuple[np.ndarray, np.ndarray]] = {}  # point -> (nodes seen, lengths)
+        self.lock = threading.RLock()
+
+    def _corners(self) -> list[Point]:
+        """Corners of the inflated footprints that a robot can stand on: on the floor and not
+        strictly inside another inflated footprint."""
+        if not len(self.rects):
+            return []
+        r = self.rects
+        c = np.concatenate([r[:, [0, 1]], r[:, [0, 3]], r[:, [2, 1]], r[:, [2, 3]]])
+        on_floor = (c[:, 0] >= 0) & (c[:, 0] <= self.width) & (c[:, 1] >= 0) & (c[:, 1] <= self.height)
+        inside = ((r[:, 0] < c[:, [0]]) & (c[:, [0]] < r[:, 2]) & (r[:, 1] < c[:, [1]])
+                  & (c[:, [1]] < r[:, 3])).any(axis=1)
+        keep = c[on_floor & ~inside]
+        return sorted({(float(x), float(y)) for x, y in keep})
+
+    def graph(self) -> Any:
+        """The visibility graph as a symmetric sparse matrix of segment lengths (built once)."""
+        from scipy.sparse import csr_matrix  # heavy: only runs that plan a route pay for it
+
+        if self._graph is None:
+            rows, cols = [], []
+            for i in range(len(self.nodes) - 1):
+                a = (self.nodes[i, 0], self.nodes[i, 1])
+                seen = np.nonzero(_visible_from(a, self.nodes[i + 1:], self.rects, self.cores))[0] + i + 1
+                rows.append(np.full(len(seen), i))
+                cols.append(seen)
+            r = np.concatenate(rows) if rows else np.zeros(0, dtype=int)
+            c = np.concatenate(cols) if cols else np.zeros(0, dtype=int)
+            w = np.hypot(*(self.nodes[r] - self.nodes[c]).T)
+            k = len(self.nodes)
+            self._graph = csr_matrix((np.concatenate([w, w]), (np.concatenate([r, c]), np.concatenate([c, r]))),
+                                     shape=(k, k))
+        return self._graph
+
+    def tree(self, target: int) -> tuple[np.ndarray, np.ndarray]:
+        """Distances to node ``target`` from every node, and each node's next node towards it."""
+        from scipy.sparse.csgraph import dijkstra  # heavy: deferred with the graph
+
+        with self.lock:
+            hit = self._trees.get(target)
+            if hit is None:
+                dist, pred = dijkstra(self.graph(), directed=False, indices=[target], return_predecessors=True)
+                hit = self._trees[target] = (dist[0], pred[0])
+            return hit
+
+    def seen(self, p: Point) -> tuple[np.ndarray, np.ndarray]:
+        """The nodes point ``p`` sees and the straight lengths to them (a node sees itself at 0)."""
+        with self.lock:
+            hit = self._seen.get(p)
+            if hit is None:
+                ok = np.nonzero(_visible_from(p, self.nodes, self.rects, self.cores))[0]
+                hit = self._seen[p] = (ok, np.hypot(self.nodes[ok, 0] - p[0], self.nodes[ok, 1] - p[1]))
+            return hit
+
+    def route_to_node(self, p: Point, target: int) -> tuple[float, list[Point]]:
+        """Shortest path from point ``p`` to node ``target``: the best first node ``p`` sees, then
+        the tree's predecessors."""
+        dist, pred = self.tree(target)
+        ok, lengths = self.seen(p)
+        total = lengths + dist[ok]
+        if not len(ok) or not np.isfinite(total).any():
+            raise InputError(f"no obstacle-free path from {list(p)} to {list(self.nodes[target])}")
+        best = int(np.argmin(total))
+        v = int(ok[best])
+        path = [p] if lengths[best] > 0 else []
+        while v != target:
+            path.append((float(self.nodes[v, 0]), float(self.nodes[v, 1])))
+            v = int(pred[v])
+        path.append((float(self.nodes[target, 0]), float(self.nodes[target, 1])))
+        return float(total[best]), path
+
+    def route_between_points(self, a: Point, b: Point) -> tuple[float, list[Point]]:
+        """Shortest path between two points neither of which is a node: Dijkstra from ``a`` on
+        the graph with ``a`` and ``b`` joined to the nodes they see (rare: tests, odd callers)."""
+        from scipy.sparse import bmat, csr_matrix
+        from scipy.sparse.csgraph import dijkstra
+
+        k = len(self.nodes)
+        extra = np.zeros((2, k))
+        for row, p in enumerate((a, b)):
+            ok, lengths = self.seen(p)
+            extra[row, ok] = lengths
+        ab = np.zeros((2, 2))
+        if _visible_from(a, np.asarray([b]), self.rects, self.cores)[0]:
+            ab[0, 1] = ab[1, 0] = math.dist(a, b)
+        g = bmat([[self.graph(), csr_matrix(extra.T)], [csr_matrix(extra), csr_matrix(ab)]], format="csr")
+        dist, pred = dijkstra(g, directed=False, indices=[k], return_predecessors=True)
+        if not np.isfinite(dist[0, k + 1]):
+            raise InputError(f"no obstacle-free path from {list(a)} to {list(b)}")
+        path, v = [], k + 1
+        while v != k:
+            path.append(b if v == k + 1 else (float(self.nodes[v, 0]), float(self.nodes[v, 1])))
+            v = int(pred[0, v])
+        path.append(a)
+        return float(dist[0, k + 1]), path[::-1]
 
 
 class TravelMap:
@@ -74,6 +257,8 @@ class TravelMap:
     """
 
     def __init__(self, world: dict, inflate: float = 0.3, cache_dir: str | Path | None = None):
+        """``cache_dir`` is accepted for older callers and ignored: computing what a run asks is
+        faster than reading the old all-pairs table from disk."""
         self.world = world
         self.inflate = float(inflate)
         floor = world.get("floor") or {}
@@ -93,18 +278,19 @@ class TravelMap:
             (x0 - self.inflate, y0 - self.inflate, x1 + self.inflate, y1 + self.inflate)
             for (x0, y0, x1, y1) in self.footprints.values()
         ]
-        self._cores = list(self.footprints.values())  # same order as self.obstacles
+        self._rects = np.asarray(self.obstacles, dtype=float).reshape(-1, 4)
+        self._cores = np.asarray(list(self.footprints.values()), dtype=float).reshape(-1, 4)
         self.places: dict[str, Point] = {}
         for name, s in fixtures.items():
             self.places[name] = (float(s["access"][0]), float(s["access"][1]))
         for name, r in (world.get("robots") or {}).items():
             self.places[name] = (float(r["start"][0]), float(r["start"][1]))
-        for name, p in self.places.items():
-            self._check_point(p, name)
-        self.key = self._key()
-        self._graph = None
-        self._pairs: dict[tuple[Point, Point], tuple[float, list[list[float]]]] = {}
-        self._load(cache_dir)
+        self._check_points(self.places)
+        self.key = self._key(self.places)
+        self._anchors = [self.places[n] for n in fixtures]
+        self._floor_key = self._key({n: self.places[n] for n in fixtures})
+        self._geo: _Geometry | None = None
+        self._pairs: dict[tuple[Point, Point], tuple[float, list[Point]]] = {}
 
     # ------------------------------------------------------------------ public API
     def point(self, a: Place) -> Point:
@@ -132,182 +318,67 @@ class TravelMap:
         """Length of visiting ``places`` in order."""
         return sum(self.distance(places[k], places[k + 1]) for k in range(len(places) - 1))
 
-    # ------------------------------------------------------------------ cache
-    def _key(self) -> str:
+    # ------------------------------------------------------------------ geometry
+    def _key(self, places: dict[str, Point]) -> str:
         content = {
-            "format": _FORMAT,
             "floor": [self.width, self.height],
             "shelves": sorted((n, list(r)) for n, r in self.footprints.items()),
-            "places": sorted((n, list(p)) for n, p in self.places.items()),
+            "places": sorted((n, list(p)) for n, p in places.items()),
             "inflate": self.inflate,
         }
         return hashlib.sha256(json.dumps(content, sort_keys=True).encode()).hexdigest()[:24]
 
-    def _load(self, cache_dir: str | Path | None) -> None:
-        """Fill the table of named-place pairs from memory, disk, or by computing it."""
-        table = _MEMORY_CACHE.get(self.key)
-        file = Path(cache_dir) / f"travel-{self.key}.json" if cache_dir else None
-        if table is None and file is not None and file.is_file():
-            try:
-                table = json.loads(file.read_text())
-            except (OSError, ValueError):
-                table = None
-        if table is None:
-            table = self._compute_table()
-            if file is not None:
-                file.parent.mkdir(parents=True, exist_ok=True)
-                tmp = file.with_suffix(".tmp")
-                tmp.write_text(json.dumps(table))
-                tmp.replace(file)
-        _MEMORY_CACHE[self.key] = table
-        for a, b, dist, path in table["pairs"]:
-            pa, pb = tuple(a), tuple(b)
-            pts = [tuple(p) for p in path]
-            self._pairs[(pa, pb)] = (dist, pts)
-            self._pairs[(pb, pa)] = (dist, pts[::-1])
+    def geometry(self) -> _Geometry:
+        """The floor's shared visibility graph (built on first use)."""
+        if self._geo is None:
+            with _GEOMETRIES_LOCK:
+                geo = _GEOMETRIES.get(self._floor_key)
+                if geo is None:
+                    geo = _Geometry(self.width, self.height, self._rects, self._cores, self._anchors)
+                    _GEOMETRIES[self._floor_key] = geo
+                    while len(_GEOMETRIES) > _GEOMETRIES_MAX:
+                        _GEOMETRIES.popitem(last=False)
+                else:
+                    _GEOMETRIES.move_to_end(self._floor_key)
+            self._geo = geo
+        return self._geo
 
-    def _compute_table(self) -> dict:
-        """Distances and paths from every shelf access point to every place.
-
-        Robots only ever travel start -> access point and access point -> access point, so one
-        Dijkstra per shelf over the visibility graph covers every leg a schedule can contain."""
-        import networkx as nx
-
-        g = self._graph_with(list(self.places.values()))
-        shelves = [n for n in self.places if n in self.footprints]
-        points = sorted(set(self.places.values()))
-        pairs = []
-        done: set[tuple[Point, Point]] = set()
-        for s in shelves:
-            src = self.places[s]
-            dist, paths = nx.single_source_dijkstra(g, src, weight="weight")
-            for p in points:
-                if (src, p) in done or (p, src) in done:
-                    continue
-                done.add((src, p))
-                if p not in paths:
-                    raise InputError(f"no obstacle-free path from {s} to {list(p)}")
-                pairs.append([list(src), list(p), dist[p], [list(q) for q in paths[p]]])
-        return {"key": self.key, "pairs": pairs}
-
-    # ------------------------------------------------------------------ geometry
-    def _check_point(self, p: Point, name: str) -> None:
-        if not (0 <= p[0] <= self.width and 0 <= p[1] <= self.height):
+    def _check_points(self, named: dict[str, Point]) -> None:
+        """Every point on the floor and outside every footprint (all at once: a thousand robots)."""
+        if not named:
+            return
+        pts = np.asarray(list(named.values()), dtype=float)
+        off = (pts[:, 0] < 0) | (pts[:, 0] > self.width) | (pts[:, 1] < 0) | (pts[:, 1] > self.height)
+        if off.any():
+            name, p = list(named.items())[int(np.argmax(off))]
             raise InputError(f"{name} at {list(p)} is off the floor ({self.width} x {self.height} m)")
-        for shelf, (x0, y0, x1, y1) in self.footprints.items():
-            if x0 < p[0] < x1 and y0 < p[1] < y1:
-                raise InputError(f"{name} at {list(p)} is inside the footprint of {shelf}")
-
-    def _visible(self, a: Point, b: Point) -> bool:
-        return bool(_visible_from(a, [b], self.obstacles, self._cores)[0])
-
-    def _corners(self) -> list[Point]:
-        """Corners of the inflated footprints that a robot can stand on: on the floor and not
-        strictly inside another inflated footprint."""
-        out = []
-        for (x0, y0, x1, y1) in self.obstacles:
-            for c in ((x0, y0), (x0, y1), (x1, y0), (x1, y1)):
-                if not (0 <= c[0] <= self.width and 0 <= c[1] <= self.height):
-                    continue
-                if any(a < c[0] < b and d < c[1] < e for (a, d, b, e) in self.obstacles):
-                    continue
-                out.append(c)
-        return sorted(set(out))
-
-    def _visibility(self):
-        """The visibility graph among the free corners (built lazily: a warm cache never needs it)."""
-        if self._graph is None:
-            import networkx as nx
-
-            g = nx.Graph()
-            corners = self._corners()
-            g.add_nodes_from(corners)
-            _connect(g, corners, corners, self.obstacles, self._cores)
-            self._graph = g
-        return self._graph
-
-    def _graph_with(self, points: list[Point]):
-        """A copy of the visibility graph with ``points`` added and joined to what they see."""
-        g = self._visibility().copy()
-        extra = [p for p in dict.fromkeys(points) if p not in g]
-        g.add_nodes_from(extra)
-        _connect(g, extra, list(g.nodes), self.obstacles, self._cores)
-        return g
+        c = self._cores
+        inside = ((c[:, 0] < pts[:, [0]]) & (pts[:, [0]] < c[:, 2]) & (c[:, 1] < pts[:, [1]])
+                  & (pts[:, [1]] < c[:, 3]))
+        if inside.any():
+            i, j = np.argwhere(inside)[0]
+            name, p = list(named.items())[int(i)]
+            raise InputError(f"{name} at {list(p)} is inside the footprint of {list(self.footprints)[int(j)]}")
 
     def _pair(self, a: Point, b: Point) -> tuple[float, list[Point]]:
         hit = self._pairs.get((a, b))
         if hit is not None:
             return hit
-        import networkx as nx
-
-        self._check_point(a, "point")
-        self._check_point(b, "point")
+        self._check_points({"point": a})
+        self._check_points({"point": b})
         if a == b:
             res = (0.0, [a, b])
-        elif self._visible(a, b):
-            res = (math.dist(a, b), [a, b])
         else:
-            try:
-                d, nodes = nx.single_source_dijkstra(self._graph_with([a, b]), a, b, weight="weight")
-            except nx.NetworkXNoPath:
-                raise InputError(f"no obstacle-free path from {list(a)} to {list(b)}") from None
-            res = (d, [tuple(q) for q in nodes])
+            geo = self.geometry()
+            if b in geo.index:
+                res = geo.route_to_node(a, geo.index[b])
+            elif a in geo.index:
+                d, path = geo.route_to_node(b, geo.index[a])
+                res = (d, path[::-1])
+            else:
+                res = geo.route_between_points(a, b)
+            if len(res[1]) == 1:  # a is the node itself: a path has both ends
+                res = (res[0], [a, b])
         self._pairs[(a, b)] = res
         self._pairs[(b, a)] = (res[0], res[1][::-1])
         return res
-
-
-def _hits(a: Point, b: Any, r: Any) -> Any:
-    """(targets x rects) matrix: whether the segment from ``a`` to each target passes through
-    the open interior of each rectangle (Liang-Barsky clipping, as :func:`_rect_hits_segment`,
-    for all pairs at once)."""
-    import numpy as np
-
-    dx = (b[:, 0] - a[0])[:, None]
-    dy = (b[:, 1] - a[1])[:, None]
-    t0 = np.zeros((len(b), len(r)))
-    t1 = np.ones((len(b), len(r)))
-    miss = np.zeros((len(b), len(r)), dtype=bool)
-    for p, q in ((-dx, a[0] - r[:, 0]), (dx, r[:, 2] - a[0]), (-dy, a[1] - r[:, 1]), (dy, r[:, 3] - a[1])):
-        q = np.broadcast_to(q, t0.shape)
-        p = np.broadcast_to(p, t0.shape)
-        parallel = np.abs(p) < 1e-12
-        miss |= parallel & (q <= 1e-9)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            t = np.where(parallel, 0.0, q / np.where(parallel, 1.0, p))
-        t0 = np.where(~parallel & (p < 0), np.maximum(t0, t), t0)
-        t1 = np.where(~parallel & (p > 0), np.minimum(t1, t), t1)
-    tm = (t0 + t1) / 2
-    mx, my = a[0] + dx * tm, a[1] + dy * tm
-    eps = 1e-9
-    inside = (r[:, 0] + eps < mx) & (mx < r[:, 2] - eps) & (r[:, 1] + eps < my) & (my < r[:, 3] - eps)
-    return ~miss & (t0 < t1 - 1e-9) & inside
-
-
-def _visible_from(a: Point, targets: Sequence[Point], rects: Sequence[tuple], cores: Sequence[tuple]) -> Any:
-    """For each target, whether the segment from ``a`` keeps out of every inflated footprint
-    (``rects``). An end point within a footprint's safety margin (a robot parked close to a
-    shelf) may leave or reach it: for that footprint only the real one (``cores``) blocks."""
-    import numpy as np
-
-    b = np.asarray(targets, dtype=float).reshape(-1, 2)
-    if not len(rects):
-        return np.ones(len(b), dtype=bool)
-    r, c = np.asarray(rects, dtype=float), np.asarray(cores, dtype=float)
-    in_a = (r[:, 0] < a[0]) & (a[0] < r[:, 2]) & (r[:, 1] < a[1]) & (a[1] < r[:, 3])
-    bx, by = b[:, 0][:, None], b[:, 1][:, None]
-    in_b = (r[:, 0] < bx) & (bx < r[:, 2]) & (r[:, 1] < by) & (by < r[:, 3])
-    hits = np.where(in_a | in_b, _hits(a, b, c), _hits(a, b, r))
-    return ~hits.any(axis=1)
-
-
-def _connect(g: Any, sources: list[Point], targets: list[Point], rects: Sequence[tuple],
-             cores: Sequence[tuple]) -> None:
-    """Add an edge, weighted by length, between every source and every target it can see."""
-    if not targets:
-        return
-    for a in sources:
-        seen = _visible_from(a, targets, rects, cores)
-        for b, ok in zip(targets, seen):
-            if ok and b != a:
-                g.add_edge(a, b, weight=math.dist(a, b))

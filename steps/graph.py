@@ -38,7 +38,8 @@ def _read_metadata(ctx: StepContext, value) -> dict:
         "actions": Input("any", doc="action metadata: path of domains/*.actions.yaml, or its content"),
         "mode": Input("string", default="exact", choices=("exact", "paper"),
                       doc="exact: all needed predecessors, transitively reduced; paper: Alg. 2's single nearest parent"),
-        "picture": Input("boolean", default=True, doc="also draw graph.png"),
+        "picture": Input("boolean", default=True,
+                         doc="also draw graph.png (workflows pass pictures == 'always'; see pipflow.pictures)"),
     },
     outputs={"graph": "object"},
     cacheable=True,
@@ -47,14 +48,15 @@ def dependencies(ctx: StepContext, domain: str, problem: str, plan: list, action
                  mode: str = "exact", picture: bool = True) -> dict:
     """Ground the plan with unified-planning and link actions whose fluents interact."""
 
-    from pipflow.dependency import build_graph, draw, to_dot
+    from pipflow.dependency import build_graph, to_dot
+    from pipflow.pictures import dependency_graph
 
     graph = build_graph(_read_text(ctx, domain), _read_text(ctx, problem), plan,
                         _read_metadata(ctx, actions), mode=mode)
     ctx.write_artifact("graph.json", graph)
     ctx.write_artifact("graph.dot", to_dot(graph))
     if picture:
-        draw(graph, ctx.artifact_path("graph.png"))
+        dependency_graph(graph, ctx.artifact_path("graph.png"))
     ctx.metrics.update({"subtasks": len(graph["nodes"]), "edges": len(graph["edges"])})
     ctx.log(f"dependency graph ({mode}): {len(graph['nodes'])} subtasks, {len(graph['edges'])} edges")
     return {"graph": graph}

@@ -12,7 +12,8 @@ from pipflow import Input, StepContext, step
           "world": Input("object", doc="output of world.load"),
           "speed": Input("number", default=1.0, doc="robot speed, m/s"),
           "handling": Input("number", default=2.0, doc="seconds of loading/unloading per route stop"),
-          "picture": Input("boolean", default=True, doc="also draw a Gantt chart"),
+          "picture": Input("boolean", default=True,
+                           doc="also draw a Gantt chart (workflows pass pictures == 'always'; see pipflow.pictures)"),
       },
       outputs={"schedule": "object", "makespan": "number", "tc_max": "number", "tc_avg": "number"},
       cacheable=True)
@@ -20,12 +21,13 @@ def schedule(ctx: StepContext, graph: dict, allocation: dict, world: dict, speed
              handling: float = 2.0, picture: bool = True) -> dict:
     """Replay the allocation in its order; legs follow obstacle-free paths."""
 
-    from pipflow.scheduling import build_schedule, draw_gantt
+    from pipflow.pictures import gantt
+    from pipflow.scheduling import build_schedule
 
     result = build_schedule(graph, allocation, world, speed=speed, handling=handling)
     ctx.write_artifact("schedule.json", result)
     if picture:
-        draw_gantt(result, ctx.artifact_path("gantt.png"))
+        gantt(result, ctx.artifact_path("gantt.png"))
     ctx.metrics.update({k: result[k] for k in ("makespan", "tc_max", "tc_avg")})
     ctx.log(f"makespan {result['makespan']:.1f} s, TC-max {result['tc_max']:.1f} m, TC-avg {result['tc_avg']:.1f} m")
     return {"schedule": result, "makespan": result["makespan"], "tc_max": result["tc_max"], "tc_avg": result["tc_avg"]}

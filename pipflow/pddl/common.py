@@ -6,15 +6,28 @@ A plan, between steps, is ``[{"action": "move-product", "args": ["shelf1", "shel
 """
 from __future__ import annotations
 
+import hashlib
+import threading
+from collections import OrderedDict
 from functools import lru_cache
 from pathlib import Path
 from typing import Any
 
+from pipflow.pddl.deferred_configspace import defer as _defer_configspace
+
+_PARSED: OrderedDict[str, Any] = OrderedDict()  # content hash -> parsed UP problem (read-only)
+_PARSED_MAX = 4  # a run needs one problem (plus the domain alone); a refinement loop a few
+_PARSED_LOCK = threading.Lock()
+
 
 @lru_cache(maxsize=1)
 def environment() -> Any:
-    """UP's global environment with the credits banner silenced and pipflow's engines added."""
-    from unified_planning.shortcuts import get_environment
+    """UP's global environment with the credits banner silenced and pipflow's engines added.
+
+    UP is imported here, not at module top, on purpose: it is heavy and many pipflow commands
+    never plan. ConfigSpace (scipy.stats) is deferred first: see :mod:`.deferred_configspace`."""
+    _defer_configspace()
+    from unified_planning.environment import get_environment
 
     env = get_environment()
     env.credits_stream = None
@@ -33,13 +46,31 @@ def read_domain_text(domain: str | Path) -> str:
     return Path(s).read_text()
 
 
-def parse(domain: str | Path, problem_text: str) -> Any:
-    """Parse ``problem_text`` against ``domain`` with UP's PDDLReader; exceptions propagate
-    (the debugger turns them into messages)."""
-    from unified_planning.io import PDDLReader
+def parse(domain: str | Path, problem_text: str | None) -> Any:
+    """Parse ``problem_text`` against ``domain`` with UP's PDDLReader (``None``: the domain
+    alone); exceptions propagate (the debugger turns them into messages).
+
+    Why memoised: UP's reader is slow (pyparsing; 15 s for a 200-shelf x 20-product problem) and
+    a run reads the same text in debug, solve, verify and graph. The memo is keyed by a hash of
+    the domain's and the problem's text, holds the last few parses, and keeps no failures. The
+    problem returned is SHARED: callers must treat it as read-only (``problem.clone()`` before
+    changing anything); planners, validators and the graph builder only read it."""
+    domain_text = read_domain_text(domain)
+    key = hashlib.sha256(f"{len(domain_text)}:{domain_text}\0{problem_text}".encode()).hexdigest()
+    with _PARSED_LOCK:
+        hit = _PARSED.get(key)
+        if hit is not None:
+            _PARSED.move_to_end(key)
+            return hit
+    from unified_planning.io import PDDLReader  # heavy: deferred on purpose (see environment)
 
     environment()
-    return PDDLReader().parse_problem_string(read_domain_text(domain), problem_text)
+    problem = PDDLReader().parse_problem_string(domain_text, problem_text)
+    with _PARSED_LOCK:
+        _PARSED[key] = problem
+        while len(_PARSED) > _PARSED_MAX:
+            _PARSED.popitem(last=False)
+    return problem
 
 
 def plan_to_data(plan: Any) -> list[dict]:

@@ -16,6 +16,7 @@ import re
 from dataclasses import dataclass, field
 from typing import Any
 
+from pipflow.pddl.common import initial_numbers, parse, read_domain_text
 from pipflow.pddl.names import pddl_name
 from pipflow.pddl.writer import magnitudes
 
@@ -108,19 +109,15 @@ def _type_name(t: Any) -> str:
 
 def domain_signatures(domain_text: str) -> tuple[dict[str, list[tuple[str, str]]], list[str]]:
     """``({fluent: [(param, type), ...]}, [type names])`` of the domain, read by UP."""
-    from unified_planning.io import PDDLReader
-
-    dom = PDDLReader().parse_problem_string(domain_text, None)
+    dom = parse(domain_text, None)
     sigs = {f.name: [(p.name, _type_name(p.type)) for p in f.signature] for f in dom.fluents}
     return sigs, [_type_name(t) for t in dom.user_types]
 
 
 def type_lineage(domain_text: str) -> dict[str, set[str]]:
     """``{type: {type, its parent, ...}}``: a ``place`` may stand where an ``entity`` is asked."""
-    from unified_planning.io import PDDLReader
-
     out: dict[str, set[str]] = {}
-    for t in PDDLReader().parse_problem_string(domain_text, None).user_types:
+    for t in parse(domain_text, None).user_types:
         names, f = {_type_name(t)}, getattr(t, "father", None)
         while f is not None:
             names.add(_type_name(f))
@@ -224,8 +221,6 @@ def explain_parse_error(exc: Exception, text: str, domain_text: str) -> str:
 # ---------------------------------------------------------------------------------------------
 def world_mismatches(problem: Any, text: str, world: dict) -> list[str]:
     """Every way the parsed problem's objects and initial state differ from the world's."""
-    from pipflow.pddl.common import initial_numbers
-
     out: list[str] = []
     shelves, products = world["shelves"], world["products"]
     by_type: dict[str, list[str]] = {}
@@ -280,19 +275,15 @@ def world_mismatches(problem: Any, text: str, world: dict) -> list[str]:
 def debug_problem(problem_text: str | None, domain: str, world: dict | None = None) -> DebugReport:
     """Parse ``problem_text`` against ``domain`` (a path or PDDL text) and check it against
     ``world``. Never raises for a bad problem: the messages say what is wrong."""
-    from pipflow.pddl.common import environment, read_domain_text
-    from unified_planning.io import PDDLReader
-
     if not problem_text or not problem_text.strip():
         return DebugReport(False, ["the problem is empty: write a (define (problem ...) ...) form"])
-    environment()
     domain_text = read_domain_text(domain)
     try:
-        PDDLReader().parse_problem_string(domain_text, None)
+        parse(domain_text, None)
     except Exception as exc:  # the domain is ours: a failure here is a setup problem, say so
         return DebugReport(False, [f"the domain itself does not parse ({domain}): {exc}"])
     try:
-        problem = PDDLReader().parse_problem_string(domain_text, problem_text)
+        problem = parse(domain_text, problem_text)  # memoised: solve, verify and graph reuse it
     except Exception as exc:
         return DebugReport(False, [explain_parse_error(exc, problem_text, domain_text)])
     messages: list[str] = []

@@ -1,0 +1,227 @@
+"""Per-stage times of the whole `pipflow run` at the paper's size and at generated scales.
+
+    python benchmarks/pipeline.py [--sizes paper,12x4x4,200x20x10,1000x100x20,1000x200x20]
+                                  [--baseline REV] [--timeout 900] [--keep DIR]
+
+Each size is one `pipflow run workflows/warehouse.yaml` in a fresh child process (the way a user
+runs it: imports included), with the step cache off. The per-stage times are read back from the
+run record's ``events.jsonl`` (``end`` events of top-level steps and of the refinement loop's inner
+steps); the wall time is the child's, measured here. Every size's wall time is printed as a ratio
+to the paper-sized run *of the same invocation*, so a ratio is comparable across machines and loads
+while an absolute figure is not. The load average (``os.getloadavg``) is printed before and after
+each run, and the peak memory is the child's maximum resident set (``resource.getrusage`` of the
+children, read after each run; it is a running maximum over the children so far, so sizes are run
+in increasing order).
+
+Sizes are ``ROBOTSxSHELVESxPRODUCTS``; ``paper`` is the main job (benchmarks/warehouse/world.yaml and
+the workflow's default command). Generated worlds put 8 x 2 m shelves on a grid with 6 m aisles,
+an access point 1 m in front of each shelf, robots on free aisle cells (carry 1-3), and stock at
+about half of each shelf's capacity. Small worlds get the paper's default command form (a dozen and
+a quintet of two products on the last shelf); worlds with more than six shelves get "empty" six of
+them, so the planner, the graph and the allocation have real work.
+
+``--baseline REV`` also runs every size with the code of git revision REV (exported with
+``git archive`` into the work folder and put first on ``PYTHONPATH``), right after the current
+code's run of the same size, and prints the current / baseline ratio per size: a before/after
+comparison measured in one invocation, under the same load.
+
+Targets (issue 15): the main job at most 1.5 s wall on an idle 2-core machine; 1000 x 100 x 20
+within 8x the main job; peak memory under 1 GB everywhere.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+import random
+import resource
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import yaml
+
+REPO = Path(__file__).resolve().parent.parent
+WORKFLOW = REPO / "workflows" / "warehouse.yaml"
+DEFAULT_SIZES = "paper,12x4x4,200x20x10,1000x100x20,1000x200x20"
+
+SHELF_W, SHELF_D, AISLE_X, AISLE_Y = 8.0, 2.0, 6.0, 6.0
+CAPACITY = 30
+
+
+def generate_world(robots: int, shelves: int, products: int, seed: int = 0) -> dict:
+    """A warehouse world of the given size (deterministic for a seed)."""
+    rng = random.Random(seed)
+    cols = max(1, math.ceil(math.sqrt(shelves * (SHELF_D + AISLE_Y) / (SHELF_W + AISLE_X))))
+    rows = math.ceil(shelves / cols)
+    pitch_x, pitch_y = SHELF_W + AISLE_X, SHELF_D + AISLE_Y
+    width, height = cols * pitch_x + AISLE_X, rows * pitch_y + AISLE_Y
+    shelf_names = [f"shelf{i + 1}" for i in range(shelves)]
+    product_names = [f"product{i + 1}" for i in range(products)]
+    out_shelves = {}
+    for i, name in enumerate(shelf_names):
+        r, c = divmod(i, cols)
+        x, y = AISLE_X + c * pitch_x, AISLE_Y + r * pitch_y
+        out_shelves[name] = {"x": x, "y": y, "width": SHELF_W, "depth": SHELF_D, "capacity": CAPACITY,
+                             "access": [x + SHELF_W / 2, y - 1.0]}
+    # free cells: 1 m lattice, off every shelf inflated by 1 m, not on an access point
+    cells = []
+    for gx in range(1, int(width)):
+        for gy in range(1, int(height)):
+            if any(s["x"] - 1 <= gx <= s["x"] + SHELF_W + 1 and s["y"] - 1 <= gy <= s["y"] + SHELF_D + 1
+                   for s in out_shelves.values()):
+                continue
+            cells.append([float(gx), float(gy)])
+    if len(cells) < robots:
+        raise SystemExit(f"{robots} robots do not fit on {len(cells)} free cells")
+    starts = rng.sample(cells, robots)
+    out_robots = {f"robot{i}": {"start": starts[i], "skills": {"carry": 1 + i % 3}} for i in range(robots)}
+    stock: dict[str, dict[str, int]] = {}
+    for name in shelf_names:
+        held = rng.sample(product_names, min(products, rng.randint(1, 4)))
+        left = CAPACITY // 2
+        stock[name] = {}
+        for p in held:
+            n = rng.randint(1, max(1, left // len(held)))
+            stock[name][p] = n
+            left -= n
+    return {"name": f"generated-{robots}x{shelves}x{products}", "floor": {"width": width, "height": height},
+            "shelves": out_shelves, "products": {p: {"color": "grey"} for p in product_names},
+            "stock": stock, "robots": out_robots}
+
+
+def command_for(world: dict) -> str:
+    """Small worlds: the paper's default form on the last shelf, with counts that fit what exists;
+    larger worlds: empty six shelves (every unit they hold moves elsewhere)."""
+    shelves = list(world["shelves"])
+    if len(shelves) > 6:
+        six = shelves[:6]
+        return "Empty " + ", ".join(six[:-1]) + f" and {six[-1]}."
+    totals: dict[str, int] = {}
+    for items in world["stock"].values():
+        for p, n in items.items():
+            totals[p] = totals.get(p, 0) + n
+    top = sorted(totals, key=lambda p: -totals[p])[:2]
+    a, b = min(12, totals[top[0]]), min(5, totals[top[-1]])
+    return f"{shelves[-1]} stores {a} {top[0]} and {b} {top[-1]}."
+
+
+def stage_times(run_dir: Path) -> dict[str, float]:
+    """Seconds per step, summed over loop iterations, from the run record's event log."""
+    out: dict[str, float] = {}
+    for line in (run_dir / "events.jsonl").read_text().splitlines():
+        ev = json.loads(line)
+        if ev.get("event") == "end" and ev.get("duration") is not None and ev.get("step") != "refine":
+            out[ev["step"]] = out.get(ev["step"], 0.0) + float(ev["duration"])
+    return out
+
+
+def baseline_site(rev: str, work: Path) -> Path:
+    """An importable copy of revision ``rev``: ``site/pipflow`` laid out as the installed package
+    (engine, steps and the data folders linked in), to put first on PYTHONPATH."""
+    src = work / f"baseline-{rev}" / "src"
+    site = src.parent / "site"
+    if not site.is_dir():
+        src.mkdir(parents=True, exist_ok=True)
+        archive = subprocess.run(["git", "-C", str(REPO), "archive", rev], check=True, capture_output=True).stdout
+        subprocess.run(["tar", "-x", "-C", str(src)], input=archive, check=True)
+        (site / "pipflow").mkdir(parents=True)
+        for item in (src / "pipflow").iterdir():
+            (site / "pipflow" / item.name).symlink_to(item)
+        for name in ("engine", "steps", "domains", "prompts", "schemas", "workflows", "benchmarks"):
+            (site / "pipflow" / name).symlink_to(src / name)
+    return site
+
+
+def run_size(label: str, work: Path, timeout: float, site: Path | None = None) -> dict:
+    """One `pipflow run` in a child process; wall time, stages, status and peak memory so far.
+    ``site``: run that copy of the code (see :func:`baseline_site`) instead of the current one."""
+    workflow = site / "pipflow" / "workflows" / WORKFLOW.name if site else WORKFLOW
+    record = work / "runs" / (f"{label}-baseline" if site else label)
+    args = [sys.executable, "-m", "pipflow.engine.cli", "run", str(workflow), "--no-cache", "-q",
+            "--runs-dir", str(record)]
+    if label != "paper":
+        r, s, p = (int(x) for x in label.split("x"))
+        world = generate_world(r, s, p)
+        path = work / f"world-{label}.yaml"
+        path.write_text(yaml.safe_dump(world, sort_keys=False))
+        args += ["-i", f"world={path}", "-i", f"command={command_for(world)}"]
+    env = dict(os.environ, PYTHONPATH=str(site)) if site else None
+    load_before = os.getloadavg()[0]
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    started = time.perf_counter()
+    try:
+        proc = subprocess.run(args, capture_output=True, text=True, timeout=timeout, cwd=work, env=env)
+        code, err = proc.returncode, proc.stderr.strip().splitlines()[-1:] or [""]
+    except subprocess.TimeoutExpired:
+        code, err = None, [f"timed out after {timeout:.0f} s"]
+    wall = time.perf_counter() - started
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = after.ru_utime + after.ru_stime - usage.ru_utime - usage.ru_stime
+    peak_mb = after.ru_maxrss / 1024
+    runs = sorted(record.glob("*/events.jsonl"))
+    stages = stage_times(runs[-1].parent) if runs else {}
+    return {"label": label, "wall": wall, "cpu": cpu, "code": code, "error": err[0] if code else "", "stages": stages,
+            "peak_mb": peak_mb, "load": (load_before, os.getloadavg()[0])}
+
+
+def _row(r: dict, base: float, stages: list[str]) -> str:
+    status = "ok" if r["code"] == 0 else f"exit {r['code']}"
+    return (f"{r['label']:>12} {r['wall']:7.2f} {r['wall'] / base:7.2f} {r['cpu']:6.2f} {r['peak_mb']:8.0f} "
+            f"{r['load'][0]:5.2f}>{r['load'][1]:<5.2f}  {status:7}  "
+            + " ".join(f"{r['stages'][s]:9.2f}" if s in r["stages"] else f"{'-':>9}" for s in stages))
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--sizes", default=DEFAULT_SIZES, help=f"comma-separated (default {DEFAULT_SIZES})")
+    parser.add_argument("--baseline", default=None, metavar="REV", help="also run the code of git revision REV")
+    parser.add_argument("--timeout", type=float, default=900.0, help="seconds per run")
+    parser.add_argument("--keep", type=Path, default=None, help="keep worlds and run records here")
+    args = parser.parse_args()
+    sizes = [s.strip() for s in args.sizes.split(",") if s.strip()]
+    if "paper" not in sizes:
+        sizes.insert(0, "paper")
+    work = (args.keep or Path(tempfile.mkdtemp(prefix="pipflow-pipeline-"))).resolve()
+    work.mkdir(parents=True, exist_ok=True)
+    site = baseline_site(args.baseline, work) if args.baseline else None
+    print(f"machine: {os.cpu_count()} CPUs; load average {' '.join(f'{x:.2f}' for x in os.getloadavg())}; "
+          f"one `pipflow run` per size, step cache off; records in {work}")
+    results, baselines = [], []
+    for label in sizes:
+        results.append(run_size(label, work, args.timeout))
+        if site:
+            baselines.append(run_size(label, work, args.timeout, site))
+    stages = list(dict.fromkeys(k for r in results + baselines for k in r["stages"]))
+    header = (f"{'size':>12} {'wall s':>7} {'x paper':>7} {'cpu s':>6} {'peak MB':>8} {'load':>11}  status   "
+              + " ".join(f"{s[:9]:>9}" for s in stages))
+    ok = True
+    for title, rows in (("current code", results), (f"baseline {args.baseline}", baselines)):
+        if not rows:
+            continue
+        base = next(r for r in rows if r["label"] == "paper")["wall"]
+        print(f"-- {title} (x paper: wall / this code's paper-sized run; cpu: the child's user+system "
+              "seconds, less sensitive to other load; stages in seconds)")
+        print(header)
+        for r in rows:
+            print(_row(r, base, stages))
+            if r["code"] != 0:
+                print(f"{'':>12} {r['error']}")
+                ok = ok and rows is not results
+    if baselines:
+        print("-- current / baseline wall time per size (same invocation): "
+              + ", ".join(f"{r['label']} {r['wall'] / b['wall']:.2f} (cpu {r['cpu'] / b['cpu']:.2f})"
+                          for r, b in zip(results, baselines)))
+    base = results[0]["wall"]
+    big = next((r for r in results if r["label"] == "1000x100x20"), None)
+    print(f"targets: paper <= 1.5 s wall on an idle machine: {base:.2f} s; "
+          + (f"1000x100x20 <= 8x paper: {big['wall'] / base:.1f}x; " if big else "")
+          + f"peak memory < 1024 MB: {max(r['peak_mb'] for r in results):.0f} MB (running max over children)")
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
