@@ -2,52 +2,68 @@
 
 Why: the warehouse domain is a transport problem (move k <= 6 units of one product between
 shelves, never over a shelf's capacity). ENHSP's default search (gbfs + hadd) solves the paper's
-small tasks in about a second with near-fewest moves, but it grows quickly (about 30 s already at
-8 shelves x 6 products x 120 units) and ``enhsp-opt`` times out even on some paper tasks. The
-structure is better served by network flow:
+small tasks in about a second with near-fewest moves, but it grows quickly and ``enhsp-opt``
+times out even on some paper tasks. The structure is better served by network flow, then an
+exact search where capacity makes the flow's answer too long:
 
-1. **Final state.** Listed goal counts are fixed. Units a goal does not place must end somewhere:
-   existence of such a final state is a bipartite flow (free units of each product -> free room
-   of the shelves where that product is not listed); no final state means *proven unsolvable*.
-   Shelves that would end over capacity evacuate products the goal leaves free (largest first).
-2. **Flows.** Per product, a networkx min-cost flow from surplus to deficit cells; when units
-   must come from (or go to) cells that the goal leaves free, the fullest such cells are
-   preferred, which keeps the number of distinct (from, to) pairs, hence moves, low.
-3. **Moves.** Each arc's flow is cut into moves of at most the largest magnitude (6), the rest
-   as few magnitudes as sum to it.
+1. **Final state.** Goal cells are ranges ``lo <= stock <= hi`` (``=`` is ``lo == hi``; bounds
+   goals give one side). A final state exists iff a bipartite flow (free units of each product
+   -> the room each shelf has left) carries every free unit; otherwise *proven unsolvable*.
+2. **Flows.** Per product, a networkx min-cost flow from cells that must give to cells that must
+   receive; units that must come from (or go to) cells with slack come from the fullest ones.
+3. **Moves.** Each arc's flow is cut into moves of at most the largest magnitude.
 4. **Order.** Moves are sequenced so that stock never goes negative and no shelf ever exceeds its
-   capacity. Moves out of a shelf that others wait on go first; when every waiting move targets a
-   full shelf (a swap between full shelves), a move is split to fit the room there is or parked
-   on a shelf with room (one extra move each): that is where capacity forces extra moves, which
-   the flow lower bound cannot see.
+   capacity; when every waiting move targets a full shelf (a swap or cycle of full shelves), a
+   move is split to the room there is or parked on a shelf with room.
+5. **Exact search.** When the plan is longer than an admissible lower bound (per product, the
+   moves that the cells below and above their range need, :func:`lower_bound`, and the order-free
+   IP of :mod:`pipflow.pddl.bounds`), an A* search over stock states with that bound looks for a
+   shorter plan, pruned at the flow plan's length and limited to ``search_budget`` (generated
+   states times their size). If it ends within the budget, the plan is *proven*
+   to have the fewest moves (UP status SOLVED_OPTIMALLY); otherwise the flow plan (or the best
+   found) is returned with the gap in the engine's log. Capacity-tight instances (swaps through
+   one free slot, cycles of full shelves) are where step 4 loses moves and step 5 wins them back.
 
-Trade-off (measured by ``benchmarks/team_plans.py``): the flow step minimises units moved, not
-moves. On the ten paper tasks every plan equals the fewest moves proven by an integer program
-(ENHSP's default search also finds them, in 1-4 s instead of ~0.03 s); on a random 8 shelves x
-6 products x 120 units instance it makes 24 moves where ENHSP makes 21 (in 43 s), and on
-50 x 10 x 2000 it makes 381 moves against a cheap bound of 315 in about 1.5 s (validation
-included) where ENHSP does not finish. So: optimal where the paper measures, fast everywhere,
-not proven optimal in general, and the planner is incomplete when every shelf is full (no room to park):
-it then answers UNSOLVABLE_INCOMPLETELY and the caller may fall back to ENHSP. In exchange it
-plans 50 shelves x 10 products x 2000 units in well under a second. Each plan is checked by UP's
-``sequential_plan_validator`` before it is returned (``validate=False`` skips that), so a bug
-here shows as an engine error, never as a wrong plan.
+Measured by ``benchmarks/team_plans.py``: the fewest moves on the paper's ten tasks and on the
+generated capacity-tight suite (within the budget); at 50 x 10 x 2000 the flow plan alone is used
+(the search space is far too large) and stays within about 1.2x of a cheap bound.
 
-Which problems: those written against the transport schema of ``domains/warehouse.pddl``:
-fluents ``stock(shelf, product)``, ``load(shelf)``, ``capacity(shelf)``, ``amount(magnitude)``,
-one action ``move-product(?from ?to ?product ?magnitude)``, and a goal that is a conjunction of
-``(= (stock s p) n)``. Anything else is answered UNSUPPORTED_PROBLEM.
+Which problems: any domain whose single action has the *shape* of a transport move, whatever its
+names: parameters (from, to: one type; item; magnitude), effects ``decrease S(from, item)``,
+``increase S(to, item)`` by ``A(magnitude)`` (and optionally ``decrease L(from)``,
+``increase L(to)`` by the same amount), preconditions ``S(from, item) >= A(magnitude)`` and
+``L(to) + A(magnitude) <= C(to)`` (and optionally ``from != to``), with ``A`` and ``C`` static.
+The goal is a conjunction of comparisons of single ``S`` cells with numbers. Anything else is
+answered UNSUPPORTED_PROBLEM. Each plan is checked by UP's ``sequential_plan_validator`` before
+it is returned (``validate=False`` skips that), so a bug here shows as an engine error, never
+as a wrong plan.
 """
 from __future__ import annotations
 
 import functools
+import heapq
+import itertools
+import math
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from fractions import Fraction
 from typing import Any, Callable, Optional
+
+from pipflow.pddl.linear import NotLinear, comparison, conjuncts, key_of, linear
 
 ENGINE_NAME = "pipflow-transport"
 ACTION = "move-product"
-FLUENTS = {"stock": 2, "load": 1, "capacity": 1, "amount": 1}
+ROLES = ("from", "to", "product", "magnitude")
+DEFAULT_BUDGET = 6_000_000
+"""What the A* search may generate per solve, in cells (a state of S shelves x P products costs
+S * P): 400,000 states of 15 cells, about 3 s of CPU and 0.3 GB at most, spent only when the
+flow plan is longer than the order-free IP bound; large instances get proportionally fewer states."""
+SEARCH_CELLS = 200
+"""Above this many (shelf, product) cells the exact search is not tried: its first expansion alone
+would use most of the budget, and plans there are too long for it to reach the goal."""
+IP_CELLS = 4000
+"""The order-free IP has two variables per (from, to, product): above this many it is skipped
+(building it would cost more than it saves)."""
 
 
 class NotTransport(Exception):
@@ -62,9 +78,15 @@ class Stuck(Exception):
     """The heuristic found no move order (every shelf full); the problem may still be solvable."""
 
 
+Range = tuple  # (lo, hi); hi None = no upper bound
+
+
 @dataclass
 class Instance:
-    """A transport problem in plain numbers, read from a UP problem (or built directly)."""
+    """A transport problem in plain numbers, read from a UP problem (or built directly).
+
+    ``goal`` maps a cell ``(shelf, product)`` to a range ``(lo, hi)`` (``hi`` None: unbounded);
+    a bare int ``n`` is accepted and means ``(n, n)``."""
 
     shelves: list[str]
     products: list[str]
@@ -72,16 +94,45 @@ class Instance:
     capacity: dict[str, int]
     load: dict[str, int]
     magnitudes: dict[str, int]
-    goal: dict[tuple[str, str], int]
+    goal: dict[tuple[str, str], Any]
     action: str = ACTION
+    arg_roles: tuple = ROLES
+
+    def __post_init__(self) -> None:
+        self.goal = {c: (r, r) if isinstance(r, int) else (int(r[0]), None if r[1] is None else int(r[1]))
+                     for c, r in self.goal.items()}
 
     def total(self, product: str) -> int:
         return sum(self.stock.get((s, product), 0) for s in self.shelves)
 
+    def lo(self, s: str, p: str) -> int:
+        return self.goal.get((s, p), (0, None))[0]
+
+    def hi(self, s: str, p: str) -> Optional[int]:
+        return self.goal.get((s, p), (0, None))[1]
+
+    def satisfied(self, stock: dict[tuple[str, str], int]) -> bool:
+        """Whether ``stock`` meets every goal range."""
+        return all(lo <= stock.get(c, 0) and (hi is None or stock.get(c, 0) <= hi)
+                   for c, (lo, hi) in self.goal.items())
+
 
 # ---------------------------------------------------------------------------------------------
-# reading a UP problem
+# reading a UP problem: the schema by shape, not by name
 # ---------------------------------------------------------------------------------------------
+@dataclass
+class Schema:
+    """Which of the domain's fluents and parameters play which transport role."""
+
+    action: str
+    params: dict = field(default_factory=dict)  # role -> parameter name ("?from")
+    stock: str = ""
+    load: Optional[str] = None
+    capacity: str = ""
+    amount: str = ""
+    arg_roles: tuple = ROLES
+
+
 def _int(value: Any, what: str) -> int:
     v = float(value)
     if not v.is_integer():
@@ -89,48 +140,146 @@ def _int(value: Any, what: str) -> int:
     return int(v)
 
 
-def instance_from_problem(problem: Any) -> Instance:
-    """Read the transport schema out of a UP problem; :class:`NotTransport` if it does not fit."""
-    from pipflow.pddl.common import initial_numbers, stock_goals
+def read_schema(problem: Any) -> Schema:
+    """The transport roles of ``problem``'s single action; :class:`NotTransport` if it has another shape."""
+    if len(problem.actions) != 1:
+        raise NotTransport("the domain must have a single action (a transport move)")
+    action = problem.actions[0]
+    if len(action.parameters) != 4:
+        raise NotTransport(f"{action.name} must take four parameters (from, to, item, magnitude)")
+    dec: dict[int, tuple] = {}
+    inc: dict[int, tuple] = {}
+    amounts = set()
+    for eff in action.effects:
+        if not (eff.is_increase() or eff.is_decrease()) or not eff.condition.is_true():
+            raise NotTransport(f"effect {eff} is not an unconditional increase or decrease")
+        if not eff.value.is_fluent_exp() or len(eff.value.args) != 1 or not eff.value.args[0].is_parameter_exp():
+            raise NotTransport(f"effect {eff} does not change by an amount of a parameter")
+        amounts.add(key_of(eff.value))
+        k = key_of(eff.fluent)
+        (dec if eff.is_decrease() else inc).setdefault(len(k) - 1, k)
+        if sum(1 for e in action.effects if key_of(e.fluent)[0] == k[0]) != 2:
+            raise NotTransport(f"fluent {k[0]} must be decreased at the source and increased at the target")
+    if len(amounts) != 1 or 2 not in dec or 2 not in inc or len(action.effects) not in (2, 4):
+        raise NotTransport("effects must move an amount of one item between two places")
+    amount_key = next(iter(amounts))
+    s_dec, s_inc = dec[2], inc[2]
+    if s_dec[0] != s_inc[0] or s_dec[2] != s_inc[2] or s_dec[1] == s_inc[1]:
+        raise NotTransport("the two-argument fluent must move one item from one place to another")
+    params = {"from": s_dec[1], "to": s_inc[1], "product": s_dec[2], "magnitude": amount_key[1]}
+    if len(set(params.values())) != 4:
+        raise NotTransport("from, to, item and magnitude must be four different parameters")
+    load = None
+    if 1 in dec or 1 in inc:
+        if dec.get(1, ("",))[1:] != (params["from"],) or inc.get(1, ("",))[1:] != (params["to"],) \
+                or dec[1][0] != inc[1][0]:
+            raise NotTransport("the one-argument fluent must be decreased at the source and increased at the target")
+        load = dec[1][0]
+    # preconditions: stock at the source covers the amount; the target has room; from != to
+    capacity = None
+    has_stock_pre = False
+    for pre in conjuncts(action.preconditions[0]) if len(action.preconditions) == 1 else \
+            [c for p in action.preconditions for c in conjuncts(p)]:
+        if pre.is_not() and pre.args[0].is_equals() and {str(a) for a in pre.args[0].args} == \
+                {params["from"][1:], params["to"][1:]}:
+            continue
+        try:
+            cmp = comparison(pre)
+        except NotLinear as exc:
+            raise NotTransport(f"precondition {pre} is not understood: {exc}") from None
+        one = Fraction(1)
+        if cmp.op == ">=" and cmp.form.const == 0 and cmp.form.coefs == {s_dec: one, amount_key: -one}:
+            has_stock_pre = True
+            continue
+        if cmp.op == ">=" and cmp.form.const == 0 and load and len(cmp.form.coefs) == 3 \
+                and cmp.form.coefs.get((load, params["to"])) == -one and cmp.form.coefs.get(amount_key) == -one:
+            (cap_key, c), = [(k, v) for k, v in cmp.form.coefs.items() if k not in ((load, params["to"]), amount_key)]
+            if c == one and cap_key[1:] == (params["to"],):
+                capacity = cap_key[0]
+                continue
+        raise NotTransport(f"precondition {pre} is not a transport precondition")
+    if not has_stock_pre:
+        raise NotTransport("no precondition that the source holds the amount moved")
+    if load and capacity is None:
+        raise NotTransport("no capacity precondition on the target")
+    names = ["?" + p.name for p in action.parameters]
+    by_param = {v: k for k, v in params.items()}
+    return Schema(action.name, params, s_dec[0], load, capacity or "", amount_key[0],
+                  tuple(by_param[n] for n in names))
 
-    fluents = {f.name: f for f in problem.fluents}
-    for name, arity in FLUENTS.items():
-        if name not in fluents or len(fluents[name].signature) != arity:
-            raise NotTransport(f"no numeric fluent {name} with {arity} argument(s)")
-    if not problem.has_action(ACTION) or len(problem.actions) != 1:
-        raise NotTransport(f"the domain must have the single action {ACTION}")
-    params = problem.action(ACTION).parameters
-    if len(params) != 4:
-        raise NotTransport(f"{ACTION} must take (?from ?to ?product ?magnitude)")
-    shelf_t = fluents["stock"].signature[0].type
-    product_t = fluents["stock"].signature[1].type
-    mag_t = fluents["amount"].signature[0].type
-    shelves = [o.name for o in problem.objects(shelf_t)]
-    products = [o.name for o in problem.objects(product_t)]
-    mags = [o.name for o in problem.objects(mag_t)]
+
+def read_goal(problem: Any, stock: str) -> dict[tuple[str, str], Range]:
+    """Goal ranges per stock cell from ``=``, ``<=``, ``>=``, ``<``, ``>`` conditions."""
+    goal: dict[tuple[str, str], list] = {}
+    for g in [c for top in problem.goals for c in conjuncts(top)]:
+        try:
+            cmp = comparison(g)
+        except NotLinear:
+            raise NotTransport(f"goal condition {g} is not a comparison of a count with a number") from None
+        if len(cmp.form.coefs) != 1:
+            raise NotTransport(f"goal condition {g} compares more than one count")
+        (key, coef), = cmp.form.coefs.items()
+        if key[0] != stock or len(key) != 3 or "*" in key:
+            raise NotTransport(f"goal condition {g} is not about one {stock} cell")
+        bound = -cmp.form.const / coef  # coef * x + const op 0
+        lo, hi = goal.setdefault((key[1], key[2]), [0, None])
+        if cmp.op == "==":
+            if bound.denominator != 1:
+                raise Unsolvable(f"goal {g} asks for a fraction of a unit")
+            lo, hi = max(lo, int(bound)), int(bound) if hi is None else min(hi, int(bound))
+        elif coef > 0:  # x >= bound (or x > bound when strict)
+            b = math.floor(bound) + 1 if cmp.op == ">" else math.ceil(bound)
+            lo = max(lo, b)
+        else:  # coef < 0: x <= bound (or x < bound when strict)
+            b = math.ceil(bound) - 1 if cmp.op == ">" else math.floor(bound)
+            hi = b if hi is None else min(hi, b)
+        goal[key[1], key[2]] = [lo, hi]
+    for (s, p), (lo, hi) in goal.items():
+        if hi is not None and hi < max(lo, 0):
+            raise Unsolvable(f"the goal asks {s} to hold at least {lo} and at most {hi} units of {p}")
+    return {c: (lo, hi) for c, (lo, hi) in goal.items()}
+
+
+def instance_from_problem(problem: Any) -> Instance:
+    """Read a transport problem out of a UP problem; :class:`NotTransport` if it does not fit."""
+    from pipflow.pddl.common import initial_numbers
+
+    schema = read_schema(problem)
+    action = problem.action(schema.action)
+    ptype = {"?" + p.name: p.type for p in action.parameters}
+    shelves = [o.name for o in problem.objects(ptype[schema.params["from"]])]
+    products = [o.name for o in problem.objects(ptype[schema.params["product"]])]
+    mags = [o.name for o in problem.objects(ptype[schema.params["magnitude"]])]
     init = initial_numbers(problem)
-    stock = {(s, p): _int(init.get(("stock", s, p), 0), f"(stock {s} {p})") for s in shelves for p in products}
-    capacity = {}
-    load = {}
+    stock = {(s, p): _int(init.get((schema.stock, s, p), 0), f"({schema.stock} {s} {p})")
+             for s in shelves for p in products}
+    capacity, load = {}, {}
     for s in shelves:
-        if ("capacity", s) not in init:
-            raise NotTransport(f"(capacity {s}) has no initial value")
-        capacity[s] = _int(init[("capacity", s)], f"(capacity {s})")
-        load[s] = _int(init.get(("load", s), sum(stock[s, p] for p in products)), f"(load {s})")
-    magnitudes = {}
-    for m in mags:
-        if ("amount", m) in init and init[("amount", m)] > 0:
-            magnitudes[m] = _int(init[("amount", m)], f"(amount {m})")
+        total = sum(stock[s, p] for p in products)
+        if schema.load:
+            if (schema.capacity, s) not in init:
+                raise NotTransport(f"({schema.capacity} {s}) has no initial value")
+            capacity[s] = _int(init[(schema.capacity, s)], f"({schema.capacity} {s})")
+            load[s] = _int(init.get((schema.load, s), total), f"({schema.load} {s})")
+        else:  # no capacity in the domain: room for everything
+            capacity[s] = sum(sum(stock[x, p] for x in shelves) for p in products)
+            load[s] = total
+    magnitudes = {m: _int(init[(schema.amount, m)], f"({schema.amount} {m})")
+                  for m in mags if (schema.amount, m) in init and init[(schema.amount, m)] > 0}
     if not magnitudes:
         raise NotTransport("no magnitude has a positive amount")
-    goal_map, other = stock_goals(problem)
-    if other:
-        raise NotTransport(f"goal conditions other than (= (stock s p) n): {', '.join(other[:3])}")
-    goal = {(s, p): n for s, items in goal_map.items() for p, n in items.items()}
-    return Instance(shelves, products, stock, capacity, load, magnitudes, goal)
+    goal = read_goal(problem, schema.stock)
+    return Instance(shelves, products, stock, capacity, load, magnitudes, goal, schema.action, schema.arg_roles)
 
 
-def instance_from_world(world: dict, goal: dict[str, dict[str, int]]) -> Instance:
+def goal_range(value: Any) -> Range:
+    """A world-level goal value (int, or ``{at_least, at_most}``) as a range."""
+    if isinstance(value, dict):
+        return (int(value.get("at_least", 0)), None if value.get("at_most") is None else int(value["at_most"]))
+    return (int(value), int(value))
+
+
+def instance_from_world(world: dict, goal: dict[str, dict[str, Any]]) -> Instance:
     """The instance a world dict and a goal describe (with the magnitudes the writer writes)."""
     from pipflow.pddl.writer import magnitudes
 
@@ -140,7 +289,7 @@ def instance_from_world(world: dict, goal: dict[str, dict[str, int]]) -> Instanc
                     {s: world["shelves"][s]["capacity"] for s in shelves},
                     {s: sum(world["stock"].get(s, {}).values()) for s in shelves},
                     magnitudes(world),
-                    {(s, p): n for s, items in goal.items() for p, n in items.items()})
+                    {(s, p): goal_range(n) for s, items in goal.items() for p, n in items.items()})
 
 
 # ---------------------------------------------------------------------------------------------
@@ -151,80 +300,73 @@ def check_final_state(inst: Instance) -> None:
     import networkx as nx
 
     for p in inst.products:
-        listed = [s for s in inst.shelves if (s, p) in inst.goal]
-        want = sum(inst.goal[s, p] for s in listed)
         have = inst.total(p)
+        want = sum(inst.lo(s, p) for s in inst.shelves)
         if want > have:
-            raise Unsolvable(f"the goal needs {want} units of {p} but only {have} exist")
-        if len(listed) == len(inst.shelves) and want != have:
-            raise Unsolvable(f"the goal places {want} units of {p} on every shelf but {have} exist; "
-                             "units cannot disappear")
+            raise Unsolvable(f"the goal needs at least {want} units of {p} but only {have} exist")
+        his = [inst.hi(s, p) for s in inst.shelves]
+        if all(h is not None for h in his) and sum(his) < have:
+            raise Unsolvable(f"the goal leaves room for at most {sum(his)} units of {p} on the shelves but "
+                             f"{have} exist; units cannot disappear")
     for s in inst.shelves:
-        fixed = sum(n for (gs, _), n in inst.goal.items() if gs == s)
+        fixed = sum(inst.lo(s, p) for p in inst.products)
         if fixed > inst.capacity[s]:
-            raise Unsolvable(f"the goal puts {fixed} units on {s} but its capacity is {inst.capacity[s]}")
+            raise Unsolvable(f"the goal puts at least {fixed} units on {s} but its capacity is {inst.capacity[s]}")
     g = nx.DiGraph()
     free_total = 0
     for p in inst.products:
-        free = inst.total(p) - sum(inst.goal.get((s, p), 0) for s in inst.shelves)
+        free = inst.total(p) - sum(inst.lo(s, p) for s in inst.shelves)
         if free <= 0:
             continue
         free_total += free
         g.add_edge("src", ("p", p), capacity=free)
         for s in inst.shelves:
-            if (s, p) not in inst.goal:
+            hi = inst.hi(s, p)
+            if hi is None:
                 g.add_edge(("p", p), ("s", s))
+            elif hi > inst.lo(s, p):
+                g.add_edge(("p", p), ("s", s), capacity=hi - inst.lo(s, p))
     for s in inst.shelves:
-        room = inst.capacity[s] - sum(n for (gs, _), n in inst.goal.items() if gs == s)
-        g.add_edge(("s", s), "dst", capacity=room)
+        g.add_edge(("s", s), "dst", capacity=inst.capacity[s] - sum(inst.lo(s, p) for p in inst.products))
     if free_total:
-        flow = nx.maximum_flow_value(g, "src", "dst") if "dst" in g and "src" in g else 0
+        flow = nx.maximum_flow_value(g, "src", "dst")
         if flow < free_total:
-            raise Unsolvable(f"{free_total} units that the goal leaves free must stay on some shelf, "
+            raise Unsolvable(f"{free_total} units beyond what the goal places must stay on some shelf, "
                              f"but only {flow} fit in the room the goal leaves")
 
 
 def plan_targets(inst: Instance) -> tuple[dict[tuple[str, str], int], dict[tuple[str, str], int]]:
-    """Mandatory changes: ``(target, evacuate)``: target final counts of listed cells, and units
-    of free cells that must leave their shelf so that it ends within capacity."""
-    target = dict(inst.goal)
-    evacuate: dict[tuple[str, str], int] = {}
+    """``(final, slack)``: a first final count per cell (its stock clamped into its range, then
+    shelves over capacity evacuated, largest free cell first), and how many units each cell
+    could still give without leaving its range."""
+    final = {}
     for s in inst.shelves:
-        final = sum(target.get((s, p), inst.stock[s, p]) for p in inst.products)
-        over = final - inst.capacity[s]
-        # free products on s, largest first: the fewest moves carry the overflow away
-        free = sorted((p for p in inst.products if (s, p) not in inst.goal and inst.stock[s, p] > 0),
-                      key=lambda p: -inst.stock[s, p])
-        for p in free:
+        for p in inst.products:
+            x, lo, hi = inst.stock[s, p], inst.lo(s, p), inst.hi(s, p)
+            final[s, p] = max(lo, x if hi is None else min(x, hi))
+        over = sum(final[s, p] for p in inst.products) - inst.capacity[s]
+        for p in sorted(inst.products, key=lambda p: -(final[s, p] - inst.lo(s, p))):
             if over <= 0:
                 break
-            take = min(over, inst.stock[s, p])
-            evacuate[s, p] = take
+            take = min(over, final[s, p] - inst.lo(s, p))
+            final[s, p] -= take
             over -= take
-    return target, evacuate
+    slack = {c: final[c] - inst.lo(*c) for c in final}
+    return final, slack
 
 
 # ---------------------------------------------------------------------------------------------
 # step 2: flows per product
 # ---------------------------------------------------------------------------------------------
-def product_flows(inst: Instance, p: str, target: dict, evacuate: dict, room: dict[str, int],
+def product_flows(inst: Instance, p: str, final: dict, slack: dict, room: dict[str, int],
                   limit: "MoveLimit | None" = None) -> dict[tuple[str, str], int]:
     """Units of ``p`` to move ``{(from, to): units}``; updates ``room`` (final free room). Routes
     on which no move fits within ``limit`` are left out."""
-    smallest = min(inst.magnitudes.values())
     import networkx as nx
 
-    supply: dict[str, int] = {}
-    demand: dict[str, int] = {}
-    for s in inst.shelves:
-        if (s, p) in target:
-            d = target[s, p] - inst.stock[s, p]
-            if d > 0:
-                demand[s] = d
-            elif d < 0:
-                supply[s] = -d
-        elif evacuate.get((s, p)):
-            supply[s] = evacuate[s, p]
+    smallest = min(inst.magnitudes.values())
+    supply = {s: inst.stock[s, p] - final[s, p] for s in inst.shelves if inst.stock[s, p] > final[s, p]}
+    demand = {s: final[s, p] - inst.stock[s, p] for s in inst.shelves if inst.stock[s, p] < final[s, p]}
     need = sum(demand.values()) - sum(supply.values())
     if not supply and not demand:
         return {}
@@ -235,20 +377,23 @@ def product_flows(inst: Instance, p: str, target: dict, evacuate: dict, room: di
         g.add_node(("in", t), demand=d)
     free_src: list[str] = []
     free_dst: list[str] = []
-    if need > 0:  # units must come from cells the goal leaves free: fullest first
-        free_src = sorted((s for s in inst.shelves if (s, p) not in target and s not in supply
-                           and inst.stock[s, p] > 0), key=lambda s: -inst.stock[s, p])
+    if need > 0:  # units must come from cells with slack: those already giving, then the fullest
+        free_src = sorted((s for s in inst.shelves if slack[s, p] > 0 and s not in demand),
+                          key=lambda s: (s not in supply, -final[s, p]))
         g.add_node("X", demand=-need)
         for rank, s in enumerate(free_src):
-            g.add_edge("X", ("out", s), capacity=inst.stock[s, p], weight=rank)
-    elif need < 0:  # surplus must go to shelves where p is free: most room first
-        free_dst = sorted((s for s in inst.shelves if (s, p) not in target and room[s] > 0
-                           and s not in supply), key=lambda s: -room[s])
+            g.add_edge("X", ("out", s), capacity=slack[s, p], weight=rank)
+    elif need < 0:  # surplus goes where the range and the shelf have room: receivers first, most room first
+        def take(s: str) -> int:
+            hi = inst.hi(s, p)
+            return min(room[s], hi - final[s, p] if hi is not None else room[s])
+        free_dst = sorted((s for s in inst.shelves if s not in supply and take(s) > 0),
+                          key=lambda s: (s not in demand, -room[s]))
         g.add_node("Y", demand=-need)
         for rank, s in enumerate(free_dst):
-            g.add_edge(("in", s), "Y", capacity=room[s], weight=rank)
-    sources = list(supply) + free_src
-    sinks = list(demand) + free_dst
+            g.add_edge(("in", s), "Y", capacity=take(s), weight=rank)
+    sources = list(dict.fromkeys(list(supply) + free_src))
+    sinks = list(dict.fromkeys(list(demand) + free_dst))
     for s in sources:
         for t in sinks:
             if s != t and (limit is None or limit(s, t, p) >= smallest):
@@ -264,8 +409,11 @@ def product_flows(inst: Instance, p: str, target: dict, evacuate: dict, room: di
         for v, x in targets.items():
             if x > 0 and isinstance(v, tuple) and v[0] == "in":
                 out[u[1], v[1]] = x
-                if v[1] in free_dst:
-                    room[v[1]] -= x
+    for (s, t), x in out.items():  # the final state moves with the flow
+        room[t] -= x - min(x, demand.get(t, 0))
+        demand[t] = max(0, demand.get(t, 0) - x)
+        room[s] += max(0, x - supply.get(s, 0))
+        supply[s] = max(0, supply.get(s, 0) - x)
     return out
 
 
@@ -406,32 +554,240 @@ def order_moves(inst: Instance, moves: list[Move], sizes: list[int], limit: Move
 
 
 # ---------------------------------------------------------------------------------------------
+# step 5: exact search where capacity costs moves
+# ---------------------------------------------------------------------------------------------
+class _Cells:
+    """The instance as flat arrays for the search: cell index ``i * P + j`` for shelf i, product j."""
+
+    def __init__(self, inst: Instance, limit: "MoveLimit"):
+        self.S, self.P = len(inst.shelves), len(inst.products)
+        self.inst = inst
+        self.lo = [inst.lo(s, p) for s in inst.shelves for p in inst.products]
+        self.hi = [inst.hi(s, p) for s in inst.shelves for p in inst.products]
+        self.cap = [inst.capacity[s] for s in inst.shelves]
+        self.big = max(inst.magnitudes.values())
+        self.sizes = sorted(set(inst.magnitudes.values()))
+        self.limit = [[[limit(a, b, p) for p in inst.products] for b in inst.shelves] for a in inst.shelves]
+
+    def start(self) -> tuple[tuple, tuple]:
+        inst = self.inst
+        return (tuple(inst.stock[s, p] for s in inst.shelves for p in inst.products),
+                tuple(inst.load[s] for s in inst.shelves))
+
+    def h_product(self, stock: tuple, j: int) -> int:
+        """Admissible moves still needed for product ``j`` (see :func:`lower_bound`)."""
+        big, P = self.big, self.P
+        need_in = need_out = deficit = surplus = spare_in = spare_out = 0
+        for c in range(j, self.S * P, P):
+            x, lo, hi = stock[c], self.lo[c], self.hi[c]
+            if x < lo:
+                d = lo - x
+                k = -(-d // big)
+                need_in += k
+                deficit += d
+                spare_in += min(k * big - d, big if hi is None else hi - lo)
+            elif hi is not None and x > hi:
+                e = x - hi
+                k = -(-e // big)
+                need_out += k
+                surplus += e
+                spare_out += min(k * big - e, hi - lo)
+        if deficit > surplus + spare_out:
+            need_out += -(-(deficit - surplus - spare_out) // big)
+        if surplus > deficit + spare_in:
+            need_in += -(-(surplus - deficit - spare_in) // big)
+        return max(need_in, need_out)
+
+    def successors(self, stock: tuple, load: tuple):
+        """``(i, k, j, units)`` for every applicable move: shelf i -> shelf k, product j."""
+        S, P, sizes, limits = self.S, self.P, self.sizes, self.limit
+        targets = [(k, self.cap[k] - load[k]) for k in range(S) if self.cap[k] > load[k]]
+        if not targets:
+            return
+        for i in range(S):
+            base = i * P
+            for j in range(P):
+                x = stock[base + j]
+                if x <= 0:
+                    continue
+                for k, room in targets:
+                    if k == i:
+                        continue
+                    most = x if x < room else room
+                    cap = limits[i][k][j]
+                    if cap < most:
+                        most = cap
+                    for u in sizes:
+                        if u > most:
+                            break
+                        yield i, k, j, u
+
+
+@dataclass
+class SearchResult:
+    moves: Optional[list]  # None: nothing shorter than the bound given was found
+    complete: bool  # the search space (below the bound) was exhausted: the answer is proven
+    lower_bound: int  # no plan has fewer moves
+    expanded: int
+
+
+def search_moves(inst: Instance, limit: "MoveLimit" = None, shorter_than: Optional[int] = None,
+                 budget: int = DEFAULT_BUDGET, deadline: Optional[float] = None) -> SearchResult:
+    """A* over stock states with the admissible :func:`lower_bound`, for a plan of fewer than
+    ``shorter_than`` moves. ``complete`` says the search ended within ``budget`` (generated states times cells per state; and
+    before ``deadline``, a ``time.monotonic()`` value): then ``moves`` is a plan with the fewest
+    moves, or None if none is shorter than ``shorter_than``."""
+    cells = _Cells(inst, limit or no_limit)
+    P = cells.P
+    stock0, load0 = cells.start()
+    hs0 = [cells.h_product(stock0, j) for j in range(P)]
+    h0 = sum(hs0)
+    cap = shorter_than if shorter_than is not None else math.inf
+    if h0 >= cap:
+        return SearchResult(None, True, h0, 0)
+    tie = itertools.count()
+    best_g = {stock0: 0}
+    parent: dict[tuple, tuple] = {stock0: None}
+    frontier = [(h0, 0, next(tie), stock0, load0, tuple(hs0))]
+    expanded = generated = 0
+    size = len(stock0)
+    floor = h0
+    while frontier:
+        f, neg_g, _, stock, load, hs = heapq.heappop(frontier)
+        g = -neg_g
+        if g > best_g.get(stock, math.inf):
+            continue
+        floor = max(floor, f)
+        if f >= cap:
+            break
+        if sum(hs) == 0:
+            path = []
+            node = stock
+            while parent[node] is not None:
+                prev, move = parent[node]
+                path.append(move)
+                node = prev
+            path.reverse()
+            s, p = inst.shelves, inst.products
+            return SearchResult([Move(s[i], s[k], p[j], u) for i, k, j, u in path], True, g, expanded)
+        expanded += 1
+        if deadline is not None and expanded % 64 == 0 and time.monotonic() > deadline:
+            return SearchResult(None, False, floor, expanded)
+        for i, k, j, u in cells.successors(stock, load):
+            generated += size
+            if generated > budget:
+                return SearchResult(None, False, floor, expanded)
+            nxt = list(stock)
+            nxt[i * P + j] -= u
+            nxt[k * P + j] += u
+            nxt = tuple(nxt)
+            ng = g + 1
+            if ng >= best_g.get(nxt, math.inf):
+                continue
+            hj = cells.h_product(nxt, j)
+            nf = ng + sum(hs) - hs[j] + hj
+            if nf >= cap:
+                continue
+            best_g[nxt] = ng
+            parent[nxt] = (stock, (i, k, j, u))
+            nl = list(load)
+            nl[i] -= u
+            nl[k] += u
+            nhs = hs[:j] + (hj,) + hs[j + 1:]
+            heapq.heappush(frontier, (nf, -ng, next(tie), nxt, tuple(nl), nhs))
+    return SearchResult(None, True, cap if cap != math.inf else floor, expanded)
+
+
+def lower_bound(inst: Instance) -> int:
+    """An admissible lower bound on the number of moves: per product, every cell below its range
+    needs ceil(deficit / largest move) moves in and every cell above it as many out; units the
+    deficits need beyond what the surpluses (and their moves' spare room) give need further moves
+    out of other cells, and symmetrically. Blind to capacity."""
+    cells = _Cells(inst, no_limit)
+    stock, _ = cells.start()
+    return sum(cells.h_product(stock, j) for j in range(cells.P))
+
+
+# ---------------------------------------------------------------------------------------------
 # the whole planner
 # ---------------------------------------------------------------------------------------------
-def plan_instance(inst: Instance, limit: MoveLimit = no_limit) -> list[Move]:
-    """Moves (in executable order) that take ``inst`` to its goal, none larger than ``limit``.
+@dataclass
+class Outcome:
+    moves: list
+    optimal: bool  # proven to have the fewest moves
+    lower_bound: int
+    note: str = ""
 
-    Raises :class:`Unsolvable` (proven) or :class:`Stuck` (heuristic gave up)."""
+
+def flow_plan(inst: Instance, limit: "MoveLimit" = None) -> list["Move"]:
+    """Steps 1-4: the flow plan (no search). Raises :class:`Unsolvable` or :class:`Stuck`."""
+    limit = limit or no_limit
     check_final_state(inst)
-    target, evacuate = plan_targets(inst)
-    final_load = {s: sum(target.get((s, p), inst.stock[s, p] - evacuate.get((s, p), 0)) for p in inst.products)
-                  for s in inst.shelves}
-    room = {s: inst.capacity[s] - final_load[s] for s in inst.shelves}
+    final, slack = plan_targets(inst)
+    room = {s: inst.capacity[s] - sum(final[s, p] for p in inst.products) for s in inst.shelves}
     flows: dict[tuple[str, str, str], int] = {}
-    # products whose surplus must find room go first while room is plentiful; others after
     for p in inst.products:
-        for (s, t), x in product_flows(inst, p, target, evacuate, room, limit).items():
+        for (s, t), x in product_flows(inst, p, final, slack, room, limit).items():
             flows[s, t, p] = x
     sizes = sorted(set(inst.magnitudes.values()))
     return order_moves(inst, flows_to_moves(flows, sizes, limit), sizes, limit)
 
 
-def moves_to_plan(inst: Instance, moves: list[Move]) -> list[dict]:
-    """pipflow plan list; each move names the magnitude object of its amount."""
+def solve_instance(inst: Instance, limit: "MoveLimit" = None, budget: int = DEFAULT_BUDGET,
+                   deadline: Optional[float] = None) -> Outcome:
+    """The flow plan, improved by the bounded exact search when it may not be the shortest."""
+    limit = limit or no_limit
+    check_final_state(inst)
+    try:
+        moves: Optional[list] = flow_plan(inst, limit)
+    except Stuck as exc:
+        moves, stuck = None, exc
+    bound = lower_bound(inst)
+    if moves is not None and len(moves) > bound and len(inst.shelves) ** 2 * len(inst.products) <= IP_CELLS:
+        # the order-free IP (SCIP) is a tighter bound and proves most flow plans optimal at once;
+        # deferred import: bounds imports this module, and pyscipopt costs 0.3 s to load
+        from pipflow.pddl.bounds import fewest_moves
+
+        ip, _ = fewest_moves(inst, time_limit=2.0)
+        bound = max(bound, ip or 0)
+    if moves is not None and len(moves) <= bound:
+        return Outcome(moves, True, bound)
+    if budget <= 0 or len(inst.shelves) * len(inst.products) > SEARCH_CELLS:
+        if moves is None:
+            raise stuck
+        return Outcome(moves, False, bound, f"{len(moves)} moves; at least {bound} are needed")
+    found = search_moves(inst, limit, len(moves) if moves is not None else None, budget, deadline)
+    if found.moves is not None:
+        return Outcome(found.moves, True, len(found.moves))
+    if moves is None:
+        if found.complete:
+            raise Unsolvable("no sequence of moves reaches the goal within every shelf's capacity")
+        raise stuck
+    if found.complete:
+        return Outcome(moves, True, len(moves))
+    lb = max(bound, found.lower_bound)
+    return Outcome(moves, False, lb, f"{len(moves)} moves; at least {lb} are needed "
+                   f"(search stopped after {found.expanded} states)")
+
+
+def plan_instance(inst: Instance, limit: "MoveLimit" = None, budget: int = DEFAULT_BUDGET) -> list["Move"]:
+    """Moves (in executable order) that take ``inst`` to its goal, none larger than ``limit``.
+
+    Raises :class:`Unsolvable` (proven) or :class:`Stuck` (heuristic gave up)."""
+    return solve_instance(inst, limit, budget).moves
+
+
+def moves_to_plan(inst: Instance, moves: list["Move"]) -> list[dict]:
+    """pipflow plan list; each move names the magnitude object of its amount, arguments in the
+    order the action declares them."""
     by_amount = {}
     for name, k in sorted(inst.magnitudes.items()):
         by_amount.setdefault(k, name)
-    return [{"action": inst.action, "args": [m.src, m.dst, m.product, by_amount[m.units]]} for m in moves]
+    out = []
+    for m in moves:
+        role = {"from": m.src, "to": m.dst, "product": m.product, "magnitude": by_amount[m.units]}
+        out.append({"action": inst.action, "args": [role[r] for r in inst.arg_roles]})
+    return out
 
 
 # ---------------------------------------------------------------------------------------------
@@ -450,12 +806,15 @@ class TransportPlanner(Engine, OneshotPlannerMixin):
     """UP OneshotPlanner ``pipflow-transport`` (see the module docstring). Parameters:
     ``validate`` (default True): check each plan with UP's sequential plan validator;
     ``robots`` ({name: carry}) and ``rules`` (only/never rules): keep every move within what the
-    robots allowed on it can carry (:func:`coalition_limit`)."""
+    robots allowed on it can carry (:func:`coalition_limit`); ``search_budget``: what the A* search
+    may generate, in cells (:data:`DEFAULT_BUDGET`; 0: the flow plan only)."""
 
-    def __init__(self, validate: bool = True, robots: dict | None = None, rules: list | None = None, **kwargs: Any):
+    def __init__(self, validate: bool = True, robots: dict | None = None, rules: list | None = None,
+                 search_budget: int = DEFAULT_BUDGET, **kwargs: Any):
         Engine.__init__(self)
         OneshotPlannerMixin.__init__(self)
         self.validate = validate
+        self.budget = int(search_budget)
         self.limit = coalition_limit(robots, rules) if robots else no_limit
 
     @property
@@ -504,15 +863,16 @@ class TransportPlanner(Engine, OneshotPlannerMixin):
             inst = instance_from_problem(problem)
         except NotTransport as exc:
             return self._result(S.UNSUPPORTED_PROBLEM, message=f"not a transport problem: {exc}")
+        except Unsolvable as exc:  # the goal itself is contradictory (e.g. at least 5 and at most 3)
+            return self._result(S.UNSOLVABLE_PROVEN, message=str(exc))
+        deadline = started + 0.5 * timeout if timeout is not None else None  # the rest: validation
         try:
-            moves = plan_instance(inst, self.limit)
+            outcome = solve_instance(inst, self.limit, self.budget, deadline)
         except Unsolvable as exc:
             return self._result(S.UNSOLVABLE_PROVEN, message=str(exc))
         except Stuck as exc:
             return self._result(S.UNSOLVABLE_INCOMPLETELY, message=str(exc))
-        if timeout is not None and time.monotonic() - started > timeout:
-            return self._result(S.TIMEOUT, message=f"no plan within {timeout} s")
-        plan = data_to_plan(problem, moves_to_plan(inst, moves))
+        plan = data_to_plan(problem, moves_to_plan(inst, outcome.moves))
         if self.validate:
             from unified_planning.shortcuts import PlanValidator
 
@@ -521,7 +881,9 @@ class TransportPlanner(Engine, OneshotPlannerMixin):
             if not check.status == up.engines.ValidationResultStatus.VALID:
                 reason = "; ".join(m.message for m in check.log_messages or []) or str(check.reason)
                 return self._result(S.INTERNAL_ERROR, message=f"{ENGINE_NAME} produced an invalid plan: {reason}")
-        return self._result(S.SOLVED_SATISFICING, plan)
+        if outcome.optimal:
+            return self._result(S.SOLVED_OPTIMALLY, plan, f"{len(outcome.moves)} moves, proven fewest")
+        return self._result(S.SOLVED_SATISFICING, plan, outcome.note)
 
 
 def register(env: Any) -> None:
