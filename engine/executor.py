@@ -168,11 +168,16 @@ class Executor:
                 break
         for sid in by_id:
             self.store.write_step_outputs(sid, self.state.outputs[sid])
-        self._finish_loop(loop, {"iterations": iteration, "done": done}, time.perf_counter() - started)
         if not done and loop.on_max == "fail":
+            # the loop's record says failed (not succeeded, then failed), and the message quotes
+            # what the last round's steps said, so the cause is not left in the files
+            self.store.write_step_outputs(loop.id, {"iterations": iteration, "done": False})
+            said = _last_round_messages(previous, [sid for sid in order])
             raise self._located(StepError(
                 f"loop {loop.id!r} reached its maximum of {maximum} iteration(s) and `until: {loop.until}` "
-                f"still does not hold"), loop.id)
+                f"still does not hold" + (f"; round {iteration} ended with: " + " | ".join(said) if said else "")),
+                loop.id)
+        self._finish_loop(loop, {"iterations": iteration, "done": done}, time.perf_counter() - started)
 
     def _finish_loop(self, loop: LoopSpec, outputs: dict, duration: float = 0.0) -> None:
         self.store.write_step_outputs(loop.id, outputs)
@@ -217,7 +222,9 @@ class Executor:
         self.store.write_step_outputs(spec.id, outputs, iteration)
         with self._lock:
             self.state.durations[spec.id] = self.state.durations.get(spec.id, 0.0) + duration
-        self.store.event("end", spec.id, status="succeeded", duration=round(duration, 6), cached=cached, **label)
+        verdict = {"verdict": "rejected"} if outputs.get("ok") is False else {}
+        self.store.event("end", spec.id, status="succeeded", duration=round(duration, 6), cached=cached,
+                         **verdict, **label)
         return outputs
 
     def _cache_put(self, step_id: str, key: str, outputs: dict, artifact_dir: Path) -> None:
@@ -361,3 +368,16 @@ def write_metrics(store: RunStore, state: ExecutionState, total: float) -> dict:
     }
     write_json(store.root / "metrics.json", metrics)
     return metrics
+
+
+def _last_round_messages(outputs: dict[str, dict], order: list[str], limit: int = 6) -> list[str]:
+    """What the steps of a loop's last round said: their ``errors`` and ``messages`` outputs
+    (lists of text, by the convention of checking steps), at most ``limit``, each cut short."""
+    said: list[str] = []
+    for sid in order:
+        out = outputs.get(sid) or {}
+        for key in ("errors", "messages"):
+            value = out.get(key)
+            if isinstance(value, list) and all(isinstance(m, str) for m in value):
+                said += [f"{sid}: {m[:300]}" for m in value]
+    return said[:limit]

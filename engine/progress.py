@@ -24,7 +24,10 @@ class PlainProgress:
             extra = " (cached)" if event.get("cached") else ""
             if "iterations" in event:
                 extra = f" ({event['iterations']} iteration(s))"
-            self._print(f"{stamp} ok    {step}{it} {event.get('duration', 0):.2f}s{extra}")
+            word = "no   " if event.get("verdict") == "rejected" else "ok   "
+            self._print(f"{stamp} {word} {step}{it} {event.get('duration', 0):.2f}s{extra}")
+        elif kind == "error":
+            self._print(f"{stamp} {event.get('status') or 'failed'} {step or ''}".rstrip())
         elif kind == "skip":
             self._print(f"{stamp} skip  {step}{it}")
         elif kind == "retry":
@@ -64,7 +67,8 @@ class LiveProgress:
         table.add_column("step")
         table.add_column("status")
         table.add_column("time", justify="right")
-        styles = {"running": "yellow", "ok": "green", "skipped": "dim", "failed": "red", "cached": "cyan"}
+        styles = {"running": "yellow", "ok": "green", "skipped": "dim", "failed": "red", "cached": "cyan",
+                  "rejected": "magenta", "not": "dim"}
         for sid, (status, secs) in self.rows.items():
             table.add_row(sid, f"[{styles.get(status.split()[0], 'white')}]{status}[/]", secs)
         return table
@@ -81,12 +85,20 @@ class LiveProgress:
                 it = f" (round {event['iteration']})" if "iteration" in event else ""
                 self.rows[step] = ["running" + it, ""]
             elif kind == "end":
-                self.rows[step] = ["cached" if event.get("cached") else "ok", f"{event.get('duration', 0):.2f}s"]
+                status = "rejected" if event.get("verdict") == "rejected" else "cached" if event.get("cached") else "ok"
+                self.rows[step] = [status, f"{event.get('duration', 0):.2f}s"]
             elif kind == "skip":
                 self.rows[step] = ["skipped", ""]
             elif kind == "error":
                 self.rows[step] = ["failed", ""]
+                self._not_run()
             self.live.update(self._table())
+
+    def _not_run(self) -> None:
+        """After a failure nothing else starts: say so instead of leaving rows `waiting`."""
+        for sid, (status, _) in self.rows.items():
+            if status == "waiting":
+                self.rows[sid] = ["not run", ""]
 
     def close(self) -> None:
         self.live.stop()

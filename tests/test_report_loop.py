@@ -94,8 +94,32 @@ def test_a_failed_loop_puts_its_cause_at_the_top(tmp_path):
         run = pipflow.run(WAREHOUSE, runs_dir=tmp_path, model="openai/fake", api_base=server.api_base,
                           command=COMMAND, rounds=2, cache=False)
         assert len(server.requests) == 2
-    assert run.status == "failed"
+    assert run.status == "failed" and run.error_step == "refine"
+    # the message itself quotes the last round's checks, not only "reached its maximum"
+    assert "round 2 ended with: generate: the PDDL problem" in run.error and "never closed" in run.error
+    events = (run.record / "events.jsonl").read_text()
+    assert '"step": "refine", "status": "succeeded"' not in events.replace("'", '"')
     page = run.report().read_text(encoding="utf-8")
     cause = page.index("Why it failed")
     assert cause < page.index("<h2>Command</h2>")
     assert re.search(r"Round 2 of loop <code>refine</code> ended with:</p><ul><li>[^<]*never closed", page)
+
+
+def test_progress_tells_ok_from_rejected_from_not_run():
+    import io
+
+    from pipflow.engine.progress import LiveProgress, PlainProgress
+
+    out = io.StringIO()
+    plain = PlainProgress(stream=out)
+    plain({"event": "end", "step": "debug", "iteration": 1, "duration": 0.1, "verdict": "rejected"})
+    plain({"event": "end", "step": "solve", "iteration": 1, "duration": 0.1})
+    lines = out.getvalue().splitlines()
+    assert " no    debug #1" in lines[0] and " ok    solve #1" in lines[1]
+    live = LiveProgress(["debug", "refine", "graph"], stream=io.StringIO())
+    try:
+        live({"event": "end", "step": "debug", "duration": 0.1, "verdict": "rejected"})
+        live({"event": "error", "step": "refine", "status": "failed"})
+        assert [r[0] for r in live.rows.values()] == ["rejected", "failed", "not run"]
+    finally:
+        live.close()
