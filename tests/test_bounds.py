@@ -264,3 +264,16 @@ def test_a_bound_goal_runs_end_to_end_with_enhsp(tmp_path):
     assert out["engine"] == "enhsp" and out["verified"] and out["goal"] == goal
     assert out["goal_met"] is True and out["gcr"] == 1.0
     assert out["final_stock"]["shelf4"]["product1"] <= 9 and out["final_stock"]["shelf2"]["product3"] >= 8
+
+
+def test_a_bound_goal_no_final_state_meets_is_refused_before_robots_move(tmp_path):
+    from pipflow.engine import run_workflow
+
+    goal = {"shelf3": {"product1": {"at_least": 12}, "product2": {"at_least": 20}}}
+    result = run_workflow(ROOT / "tests/fixtures/workflows/warehouse_goal.yaml",
+                          {"goal": goal, "planner": "pipflow-transport"}, runs_dir=tmp_path / "runs")
+    assert result.status == "refused" and result.error_step == "refuse"
+    assert "the goal needs at least 20 units of product2 but only 10 exist" in result.error
+    assert "the goal puts at least 32 units on shelf3 but its capacity is 30" in result.error
+    ran = {d.name for d in (result.run_dir / "steps").iterdir()}
+    assert {"verify", "refuse"} <= ran and not ran & {"graph", "allocate", "schedule", "simulate"}
