@@ -19,7 +19,7 @@ from .model import Workflow
 from .registry import Registry, default_registry
 from .store import RunStore, read_json, utc_now, write_json
 from .types import coerce_text, type_matches
-from .validate import load_workflow
+from .validate import check_given_values, load_workflow
 
 
 @dataclass
@@ -107,6 +107,7 @@ def run_workflow(workflow: str | Path, inputs: dict[str, Any] | None = None, *, 
     registry = registry or default_registry()
     wf = load_workflow(find_workflow(workflow), registry)
     values = resolve_inputs(wf, inputs or {}, from_text=inputs_from_text)
+    check_given_values(wf, registry, {k: values[k] for k in (inputs or {}) if k in values})
     store = RunStore.create(Path(runs_dir), wf.name)
     try:
         store.write_snapshot(wf.snapshot(), values)

@@ -34,6 +34,10 @@ class Input:
     default: Any = _REQUIRED
     doc: str = ""
     choices: tuple | None = None
+    # check(value, base_dir) -> a problem in words, or None: run by `validate` on literal values
+    # and on the workflow inputs that flow into this argument, before any step runs (a misspelt
+    # prompt name must fail at once, not only when a real model is called)
+    check: Callable[[Any, Path | None], str | None] | None = field(default=None, compare=False)
 
     def __post_init__(self) -> None:
         if self.type not in TYPES:

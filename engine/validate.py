@@ -17,10 +17,10 @@ from typing import Any
 import jsonschema
 import networkx as nx
 
-from pipflow.errors import Diagnostic, Location, SourceFileError, WorkflowError
+from pipflow.errors import Diagnostic, InputError, Location, SourceFileError, WorkflowError
 from pipflow.resources import data_file
 
-from .expr import ExpressionError, Reference, split_template, template_references
+from .expr import ExpressionError, Reference, has_expression, split_template, template_references
 from .model import LoopSpec, StepSpec, Workflow, build_workflow, read_workflow_data
 from .registry import Registry, default_registry
 from .source import SourceDict, SourceList
@@ -168,6 +168,9 @@ def _semantic_diagnostics(wf: Workflow, registry: Registry) -> list[Diagnostic]:
             declared = step.inputs[arg]
             if not type_matches(value, declared.type, allow_expr=True):
                 out.append(Diagnostic(s.arg_loc(arg), f"step {s.id!r}: argument {arg!r} must be {declared.type}, got {value!r}"))
+            problem = _value_problem(declared, value, wf)
+            if problem:
+                out.append(Diagnostic(s.arg_loc(arg), f"step {s.id!r}: argument {arg!r}: {problem}"))
             ref_type = _reference_type(value, wf, by_id, registry)
             if ref_type and declared.type not in ("any",) and ref_type not in ("any", declared.type) \
                     and not (declared.type == "number" and ref_type == "integer") \
@@ -183,6 +186,56 @@ def _semantic_diagnostics(wf: Workflow, registry: Registry) -> list[Diagnostic]:
     out += _reference_diagnostics(wf, by_id, loops, registry)
     out += _cycle_diagnostics(wf, by_id)
     return out
+
+
+def _value_problem(declared: Any, value: Any, wf: Workflow, given: dict | None = None) -> str | None:
+    """What the input's own ``check`` says of a literal value, or of the workflow input that the
+    value is exactly a reference to (its given value, else its literal default)."""
+    if declared.check is None:
+        return None
+    if isinstance(value, str) and has_expression(value):
+        name = _input_reference(value)
+        if name is None or name not in wf.inputs:
+            return None
+        if given is not None and name in given:
+            value = given[name]
+        else:
+            value = wf.inputs[name].default
+            if value is None or has_expression(value):
+                return None
+    if value is None:
+        return None
+    return declared.check(value, wf.file.parent)
+
+
+def _input_reference(value: str) -> str | None:
+    """``X`` when ``value`` is exactly ``${inputs.X}``."""
+    try:
+        parts = split_template(value.strip())
+    except ExpressionError:
+        return None
+    if len(parts) != 1 or not parts[0][0]:
+        return None
+    source = parts[0][1].strip()
+    return source[len("inputs."):] if source.startswith("inputs.") and source.count(".") == 1 else None
+
+
+def check_given_values(wf: Workflow, registry: Registry, given: dict) -> None:
+    """Run the argument checks on input values set for this run (``-i``, ``--inputs``, the API);
+    raise :class:`InputError` naming the input, the step and the problem."""
+    problems = []
+    for s in wf.all_steps():
+        step = registry.get(s.uses)
+        for arg, value in (s.args.items() if step else ()):
+            declared = step.inputs.get(arg)
+            name = _input_reference(value) if isinstance(value, str) else None
+            if declared is None or name is None or name not in given:
+                continue
+            problem = _value_problem(declared, value, wf, given)
+            if problem:
+                problems.append(f"input {name!r} (used by step {s.id!r}): {problem}")
+    if problems:
+        raise InputError("; ".join(problems))
 
 
 def _reference_type(value: Any, wf: Workflow, by_id: dict, registry: Registry) -> str | None:

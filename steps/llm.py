@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from pipflow import Input, StepContext, step
 from pipflow.errors import InputError
+from pipflow.language.prompting import prompt_problem
 
 
 @step(
@@ -16,7 +17,8 @@ from pipflow.errors import InputError
         "world": Input("object", doc="the world (output of world.load or household.load)"),
         "domain": Input("path", doc="team-level PDDL domain file"),
         "prompt": Input("string", None, doc="template name in prompts/ or a path; unset: the world's "
-                                            "domain's (warehouse_problem, household_problem)"),
+                                            "domain's (warehouse_problem, household_problem)",
+                         check=prompt_problem),
         "model": Input("string", None, doc="litellm model string, local/smollm2 or offline; "
                                            "unset: $PIPFLOW_MODEL, else offline"),
         "temperature": Input("number", 0.0),
@@ -33,7 +35,8 @@ from pipflow.errors import InputError
         "cache": Input("boolean", True, doc="replay cached responses; false always calls the model"),
     },
     outputs={"problem": "string", "goal": "any", "constraints": "array", "messages": "array",
-             "response": "string", "usage": "object", "errors": "array"},
+             "response": "string", "usage": "object", "errors": "array",
+             "order": "any", "explanation": "any"},  # offline: the order and the resolver's arithmetic
 )
 def llm_problem(ctx: StepContext, command: str, world: dict, domain: str,
                 prompt: str | None = None, model: str | None = None,

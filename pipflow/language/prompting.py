@@ -42,6 +42,18 @@ def find_template(name: str, base_dir: Path | None = None) -> Path:
     raise InputError(f"prompt template {name!r} not found; built-in templates: {', '.join(known) or 'none'}")
 
 
+def prompt_problem(name: object, base_dir: Path | None = None) -> str | None:
+    """The validation check of a ``prompt`` argument: None when the template exists, else why
+    (whatever the model, so a misspelt variant fails before anything runs)."""
+    if not isinstance(name, str):
+        return f"a prompt template name must be text, got {name!r}"
+    try:
+        find_template(name, base_dir)
+    except InputError as err:
+        return str(err)
+    return None
+
+
 def render(template: str, variables: dict[str, Any], base_dir: Path | None = None) -> list[dict[str, str]]:
     """Render a template into chat messages ``[{"role", "content"}]``."""
     from jinja2 import FileSystemLoader, StrictUndefined, TemplateError
