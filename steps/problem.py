@@ -12,9 +12,9 @@ from pipflow import Input, StepContext, step
 
 
 @step("problem.write",
-      doc="Write the team-level PDDL problem for a goal: the world's objects and initial state, one (= (stock s p) n) per goal count.",
+      doc="Write the team-level PDDL problem for a goal: the world's objects and initial state, one (= (stock s p) n) per goal count, (>= ...)/(<= ...) per bound.",
       inputs={"world": Input("object", doc="world dict from world.load"),
-              "goal": Input("object", doc="goal {shelf: {product: units}}"),
+              "goal": Input("object", doc="goal {shelf: {product: units or {at_least, at_most}}}"),
               "domain": Input("path", doc="team-level PDDL domain (its name goes into the problem)"),
               "name": Input("string", default="task", doc="problem name")},
       outputs={"problem": "string"},
