@@ -24,9 +24,9 @@ _sep: COMMA | END | @AND | @THEN | @BUT
 
 ?item: change | toggle | put | gap | away | trash | request | observe | cue
 
-change: _vstate @UP? things via?
-      | _vstate things @UP via?
-      | @V_CLEAN things via?
+change: _vstate @UP? things via? exception?
+      | _vstate things @UP via? exception?
+      | @V_CLEAN things via? exception?
 _vstate: @V_STATE | @V_OPEN | @V_SHUT | @V_WARM
 via: (@IN | @ON | @WITH | @AT) place
 
@@ -38,7 +38,7 @@ onoff: on | off
 on: @ON
 off: @OFF | @OUT
 
-put: _vput @UP? things source? target?
+put: _vput @UP? things source? target? exception?
    | _vput @UP? things target source
    | _vput @OUT things | _vput things @OUT
    | @V_LEAVE things target
@@ -50,6 +50,7 @@ place: @THE? noun
 bare: noun
 
 gap: things target
+   | things onoff
 
 away: @V_PUT @AWAY things | @V_PUT things @AWAY | @V_PUT things @BACK | @V_PUT @BACK things
     | @V_TIDY @UP? things | @V_TIDY things @UP? | @V_CLEAN @UP things | @V_CLEAN things @UP
@@ -65,7 +66,7 @@ state: @ADJ | @V_OPEN | @V_SHUT | @V_CLEAN | @V_WARM | @V_STATE | on | off | @TO
 
 observe: things @IS state
 
-cue: @NOBODY @IS? activity (@TO | @ON | @AT)? things?
+cue: @NOBODY @IS? activity (@TO | @ON | @AT)? things? @ANYMORE?
    | @SUBJ? @DONOT @NEED things (on | @ANYMORE)?
    | things @IS @NOT @NEEDED @ANYMORE?
    | @IT @IS @INTENS* lightcue @HERE?

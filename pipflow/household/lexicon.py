@@ -63,7 +63,7 @@ for _w, _c in ADJECTIVES.items():
 _add("V_TOGGLE", "turn,switch,power,flip,flick")
 _add("TOGGLED", "turned,switched,powered")
 _add("V_PUT", "put,place,move,bring,take,carry,set,transfer,gather,collect,stash,drop,store,stick,pop,lay,"
-     "hang,deliver,fetch,get,pick,relocate,stack")
+     "hang,deliver,fetch,get,pick,relocate,stack,grab,shift")
 _add("V_THROW", "throw,toss,chuck")
 _add("V_TRASH", "trash,discard,bin,dump,junk,get rid of,dispose of,throw away,throw out")
 _add("V_TIDY", "tidy,return,clear away")

@@ -92,6 +92,13 @@ def _vocabulary(world_index: dict) -> set[str]:
     return {w for w in vocab if len(w) >= 3}
 
 
+def _meaning(word: str, world_index: dict) -> str:
+    """What one known word stands for, so that two spellings of one thing ("tomato",
+    "tomatoes") do not make a typo ambiguous."""
+    names = sorted(r["name"] for r in world_index.get((word,), []))
+    return f"{names}|{PHRASES.get((word,))}"
+
+
 def _match(words: list[str], i: int, table: dict, longest: int) -> int:
     for n in range(min(longest, len(words) - i), 0, -1):
         if tuple(words[i:i + n]) in table:
@@ -111,8 +118,9 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
             any(w in key for key in index) or any(w in key for key in FILLER) or read_number([w], 0)
         if known or len(w) < 4:
             continue
-        close = difflib.get_close_matches(w, sorted(vocab), n=2, cutoff=0.8)
-        if close and (len(close) == 1 or difflib.SequenceMatcher(None, w, close[0]).ratio()
+        close = difflib.get_close_matches(w, sorted(vocab), n=3, cutoff=0.8)
+        meanings = {_meaning(c, index) for c in close}
+        if close and (len(meanings) == 1 or difflib.SequenceMatcher(None, w, close[0]).ratio()
                       > difflib.SequenceMatcher(None, w, close[1]).ratio() + 0.05):
             notes.append(f"read {w!r} as {close[0]!r}")
             words[k] = close[0]
@@ -334,6 +342,7 @@ class Builder:
         words = _words(self.tags, node)
         th = self._sub(node, "things")
         things = self.things(th) if th is not None else []
+        exc = self._sub(node, "exception")
         if kind == "change":
             verb = next(t for t in self._tokens(node) if self._cls(t).startswith("V_"))
             st = {"op": "change", "things": things, "to": str(self.tag_of(verb).value)}
@@ -349,8 +358,10 @@ class Builder:
                 st["from"] = self.place(self._sub(src, "place"))
             if tgt is not None:
                 st["to"] = self.target(tgt)
-        elif kind == "gap":
+        elif kind == "gap" and self._sub(node, "target") is not None:   # "... and the pillow on the bed"
             st = {"op": "put", "things": things, "to": self.target(self._sub(node, "target"))}
+        elif kind == "gap":                                              # "... and the stove on"
+            st = {"op": "change", "things": things, "to": self.state(node)}
         elif kind == "away":
             st = {"op": "put_away", "things": things}
         elif kind == "trash":
@@ -363,6 +374,8 @@ class Builder:
             st = self.cue(node, things)
         else:  # a rule of the grammar without a statement: a bug, not a user error
             raise AssertionError(f"no statement for grammar rule {kind!r}")
+        if exc is not None:   # "put all the fruit in the fridge but not the watermelon"
+            st["except"] = self.things(self._sub(exc, "things"))
         st["words"] = words
         return st
 

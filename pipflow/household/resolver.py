@@ -214,7 +214,10 @@ class Resolver:
             return {**sel, "count": 1}
         return None
 
-    def objects(self, things: list[dict], words: str, *, cond: str | None = None, prop: str | None = None) -> list[tuple[str, bool]]:
+    def objects(self, things: list[dict], words: str, *, cond: str | None = None, prop: str | None = None,
+                exceptions: list[dict] | None = None) -> list[tuple[str, bool]]:
+        """(name, named explicitly?) of every thing the selectors mean, less the exceptions said
+        after the whole clause ("... but not the watermelon")."""
         out: list[tuple[str, bool]] = []
         for sel in things:
             names, implicit = self.select(sel, words, cond=cond, prop=prop)
@@ -222,6 +225,11 @@ class Resolver:
                 raise TranslationError(f"'{words}': a count of '{sel['noun']['words']}' only makes sense with a "
                                        "place to gather them")
             out += [(n, not implicit) for n in names]
+        for ex in exceptions or []:
+            gone, _ = self.select(ex, words)
+            if not set(gone) <= {n for n, _ in out}:
+                raise TranslationError(f"'{words}': '{ex['words']}' is not among the things the clause names")
+            out = [(n, e) for n, e in out if n not in gone]
         return list(dict.fromkeys(out))
 
     def statement(self, st: dict) -> None:
@@ -261,7 +269,10 @@ class Resolver:
 
     def change(self, st: dict, words: str) -> None:
         cond = st["to"]
-        named = self.objects(st["things"], words, cond=cond)
+        named = self.objects(st["things"], words, cond=cond, exceptions=st.get("except"))
+        for n, _ in named:
+            if n in self.picked:   # "pick up the phone and switch it on": the taking was the means
+                self.goal.notes.append(f"'{self.picked.pop(n)}' says no place for {n}: it ends where the plan leaves it")
         via = None
         if st.get("via"):
             via = self.place_of(st["via"], words)
@@ -283,7 +294,7 @@ class Resolver:
         plain = [s for s in st["things"] if self.counted(s) is None]
         if "from" in st:
             plain = [{**s, "from": st["from"]} if "from" not in s and not s.get("pronoun") else s for s in plain]
-        named = self.objects(plain, words, prop="pickupable")
+        named = self.objects(plain, words, prop="pickupable", exceptions=st.get("except"))
         if st.get("from") and any(s.get("pronoun") for s in plain):
             place = self.place_of(st["from"], words)
             for n, _ in named:
