@@ -73,18 +73,16 @@ def infeasibility_reasons(world: dict, goal: dict[str, dict[str, Any]]) -> list[
     if reasons:
         return reasons
     room = {s: cap[s] - sum(cells[s, p][0] for p in products) for s in shelves}
-    for p in products:  # one product alone without room names the product to blame
-        free, flow = _leftover_flow(shelves, [p], room, total, cells)
-        if flow < free:
-            reasons.append(f"{free} units of {p} must stay on some shelf, but the goal leaves room "
-                           f"for only {flow} of them")
-    if reasons:
-        return reasons
     free_total, flow = _leftover_flow(shelves, products, room, total, cells)
-    if flow < free_total:
-        return [f"{free_total} units that the goal leaves free must stay on some shelf, "
-                f"but only {flow} fit in the room the goal leaves"]
-    return []
+    if flow >= free_total:
+        return []
+    for p in products:  # one product alone without room names the product to blame
+        free, alone = _leftover_flow(shelves, [p], room, total, cells)
+        if alone < free:
+            reasons.append(f"{free} units of {p} must stay on some shelf, but the goal leaves room "
+                           f"for only {alone} of them")
+    return reasons or [f"{free_total} units that the goal leaves free must stay on some shelf, "
+                       f"but only {flow} fit in the room the goal leaves"]
 
 
 def _leftover_flow(shelves: list[str], products: list[str], room: dict[str, int], total: dict[str, int],
