@@ -232,9 +232,10 @@ def test_offline_model_uses_translator_and_writer(tmp_path, monkeypatch):
     import sys
     import types
 
-    fake = types.ModuleType("pipflow.language.translator")
-    fake.translate = lambda command, world: {"goal": {"shelf3": {"product1": 7}}, "constraints": []}
-    monkeypatch.setitem(sys.modules, "pipflow.language.translator", fake)
+    fake = types.ModuleType("pipflow.language.understand")
+    fake.understand = lambda command, world: {"goal": {"shelf3": {"product1": 7}}, "constraints": [],
+                                              "order": {"statements": [], "rules": []}, "explanation": []}
+    monkeypatch.setitem(sys.modules, "pipflow.language.understand", fake)
     monkeypatch.setattr(generator, "write_problem", fake_writer)
     out, art = run_step(tmp_path, model="offline")
     assert out["goal"] == {"shelf3": {"product1": 7}} and out["usage"]["calls"] == 0

@@ -82,15 +82,20 @@ def request_extra(method: str, world: dict) -> dict[str, Any]:
 
 def offline(command: str, world: dict, domain_text: str = "",
             save: Callable[[str, Any], Any] | None = None) -> dict[str, Any]:
-    """Model ``offline``: the translator's goal and constraints, written as PDDL (the household
-    translator and writer for a household world)."""
+    """Model ``offline``: the command parsed into an order and resolved against the world
+    (:mod:`pipflow.language.understand`), its goal written as PDDL (the household translator and
+    writer for a household world). ``order`` is the typed meaning, ``explanation`` the resolver's
+    arithmetic in plain words, for the run summary to echo before robots move."""
     if domain_of(world) == "household":
         return household_offline(command, world, domain_text, save)
-    from pipflow.language.translator import translate
+    from pipflow.language.understand import understand
 
-    result = translate(command, world)
+    result = understand(command, world)
+    if save is not None:
+        save("order.json", result["order"])
     return {"problem": write_problem(world, result["goal"]), "goal": result["goal"],
-            "constraints": list(result.get("constraints") or []), "messages": [], "response": "",
+            "constraints": list(result["constraints"]), "order": result["order"],
+            "explanation": list(result["explanation"]), "messages": [], "response": "",
             "usage": dict(NO_USAGE), "errors": []}
 
 
@@ -137,7 +142,7 @@ def generate(
     model = resolve_model(model)
     kind = domain_of(world)
     if model == "offline":
-        return offline(command, world, domain_text, save if kind == "household" else None)
+        return offline(command, world, domain_text, save)
     if not isinstance(command, str) or not command.strip():
         raise InputError("command must be a non-empty string")
     if grounded and kind == "household":

@@ -23,7 +23,9 @@ sentence: lead? part (sep part)* sep?
 lead: ("but" | "and" | "then" | "also" | "so" | "however" | "now" | "oh" | "well" | "next"
       | "finally" | "first" | "afterwards" | "after" "that" | "additionally" | "plus") ","?
 
-sep: "," | "and" | "," "and" | "but" | "," "but" | "while" | "," "while" | "whereas"
+// a separator costs: of two readings, the one with fewer, longer parts wins
+// ("only alpha and charlie may carry bolts" is one rule, not "only alpha" and a second clause)
+sep.-1: "," | "and" | "," "and" | "but" | "," "but" | "while" | "," "while" | "whereas"
    | "," "whereas" | "then" | "," "then" | "and" "then" | "," "and" "then" | "also" | "," "also"
    | "and" "also" | "," "and" "also" | ":" | "so" | "," "so" | "though" | "," "though"
    | "," "plus" | "plus" | "," "however" ","?
@@ -44,7 +46,7 @@ np: NUM of? ihead                          -> np_count
   | NUM fewer of? ihead                    -> np_fewer
   | NUM of? ihead fewer                    -> np_fewer
   | ("a" | "an") ihead                     -> np_one
-  | ("a" | "an" | "one") more ihead        -> np_one_more
+  | ("a" | "an") more ihead               -> np_one_more
   | ("all" | "every") of? ihead            -> np_all
   | "all" of? its ihead                    -> np_all
   | ("no" | "none" "of" | "zero") ihead    -> np_none
@@ -61,7 +63,6 @@ np: NUM of? ihead                          -> np_count
   | NUM "to" NUM of? ihead                 -> np_between
   | vague NUM of? ihead                    -> np_vague
   | vagueq of? ihead                       -> np_vague
-  | "one" "of" "each" ITEMWORD?            -> np_each
   | NUM "of" "each" ITEMWORD?              -> np_each
   | "everything"                           -> np_everything
   | ("everything" | "all" ITEMWORD | "every" ITEMWORD | "all" "goods") except_items -> np_everything
@@ -71,8 +72,10 @@ np: NUM of? ihead                          -> np_count
   | "twice" "as" "many" ihead              -> np_twice
   | ("double" | "triple" | "quadruple") ihead -> np_times
   | "half" of? its? ihead                  -> np_half
+  | NUM                                    -> np_bare
 
 rest_of: "of" ihead
+bare: ihead (lsep ihead)*
 except_items: ("except" | "but" | "besides" | "other" "than" | "apart" "from" | "excluding") ihead (lsep ihead)*
 
 ihead: ITEM | ITEMWORD
@@ -81,7 +84,7 @@ its: "its" | "their" | "it" POSS
 now: "now" | "right" "now" | "today" | "at" "moment" | "currently"
 more: "more" | "extra" | "additional"
 fewer: "fewer" | "less"
-frac: NUM FRAC | ("a" | "an" | "one") FRAC
+frac: NUM FRAC | ("a" | "an") FRAC
 lower: "at" "least" | "no" ("fewer" | "less") "than" | "not" ("fewer" | "less") "than" | "a" "minimum" "of"
      | "minimum" "of"? | "min"
 upper: "at" "most" | "no" "more" "than" | "not" "more" "than" | "up" "to" | "a" "maximum" "of"
@@ -98,9 +101,9 @@ place: PLACE                                -> place_name
      | "all" "of" "them"                    -> place_all
 posplace: PLACE POSS
 prep: "in" | "on" | "at" | "into" | "onto" | "inside" | "within" | "to" | "in" "to" | "on" "to"
-each: "each" | "apiece" | "both" | "every" "one"
+each: "each" | "apiece" | "both" | "every" NUM
 loc: prep places                            -> loc
-   | prep ("each" "of" | "both" | "both" "of" | "all" "of" | "every" "one" "of") places -> loc_each
+   | prep ("each" "of" | "both" | "both" "of" | "all" "of" | "every" NUM "of") places -> loc_each
    | prep places each                       -> loc_each
    | prep places "respectively"             -> loc_resp
 
@@ -142,6 +145,7 @@ goal: there_be items loc                                  -> g_set
     | both? places modal? each? setv each? items           -> g_place_set
     | both? places modal? "each" be? items                  -> g_place_set
     | places ":" items                                     -> g_place_set
+    | places modal? setv items "respectively"               -> g_place_set_resp
     | places "to" setv items                                -> g_place_set
     | putv items loc                                       -> g_set
     | want places "to"? setv items                          -> g_place_set
@@ -189,8 +193,8 @@ goal: there_be items loc                                  -> g_set
     | "swap" ihead (lsep ihead)* ("between" | "of" | "on") places -> g_swap_items
     | "swap" posplace ihead "with" (posplace | places)       -> g_swap_poss
     | splitv items? even? among places even?                -> g_split
+    | splitv bare even? among places even?                  -> g_split
     | "put" items even? among places even?                  -> g_split
-    | "put" "one" "of" "each" ITEMWORD? loc                 -> g_each
 
 stay: be | "sit" | "stay" | "lie" | "go" | "be" "placed" | "be" "stored" | "belong" | "end" "up"
 both: "both"
@@ -218,9 +222,9 @@ tail: places ("too" | "as" "well" | "also")                 -> t_too
 // ---------------------------------------------------------------- robots and rules
 robots: robot (lsep robot)*
       | rgroup
-robot: ROBOT                                              -> r_name
-     | ROBOT ("to" | "through" | "thru" | "till") NUM       -> r_range
-     | ROBOT ("to" | "through" | "thru" | "till") ROBOT     -> r_name_range
+robot: ROBOTWORD? ROBOT                                   -> r_name
+     | ROBOTWORD? ROBOT ("to" | "through" | "thru" | "till") NUM -> r_range
+     | ROBOTWORD? ROBOT ("to" | "through" | "thru" | "till") ROBOTWORD? ROBOT -> r_name_range
      | NUM                                                -> r_number
      | ROBOTWORD NUM                                      -> r_number
 rgroup: all? (RKIND | RTAG)                                -> r_kind
@@ -233,7 +237,7 @@ rgroup: all? (RKIND | RTAG)                                -> r_kind
       | all? ROBOTWORD ("with" | "whose") skillv ("is" | "of")? ("at" "least" NUM | NUM ("or" "more" | "or" "above" | "plus")) -> r_skill_min
       | all? ROBOTWORD ("with" | "whose") skillv ("is" | "of")? ("at" "most" NUM | NUM "or" ("less" | "fewer" | "below")) -> r_skill_max
       | SUPER ROBOTWORD?                                  -> r_super
-      | "one" "of" SUPER ROBOTWORD                         -> r_super
+      | NUM "of" SUPER ROBOTWORD                           -> r_super
 all: "all"
 able: "can" | "may"
 skillv: SKILL | "carry" | "carries" | "lift" | "lifts" | "move" | "moves" | "handle" | "handles"
@@ -265,7 +269,7 @@ rwhere: from places                                    -> rw_from
       | "to" "location" "of" places                      -> rw_to
       | ("at" | "on" | "in" | "near" | "around" | "by") places -> rw_at
       | "away" "from" places                               -> rw_at
-      | from "one" PLACEWORD "to" "another"                -> rw_none
+      | from NUM PLACEWORD "to" "another"                  -> rw_none
       | ("between" | "among") PLACEWORD                      -> rw_none
       | "for" ("that" | "this" | "it" | "them" | "those" | "job" | "task")  -> rw_pronoun
       | "at" "all"                                         -> rw_all
@@ -299,7 +303,7 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | ("any" | "all" | "every") ROBOTWORD? ("except" | "but" | "other" "than" | "besides" | "apart" "from") robots rmodal? useact? rscope -> rule_never
     | ("dont" | "do" "not") "use" ("any" | "a")? ROBOTWORD ("other" "than" | "except" | "besides" | "apart" "from" | "but") robots rscope -> rule_only
     | ("no" | "none" "of") ROBOTWORD ("except" | "but" | "other" "than" | "besides" | "apart" "from") robots rmodal? useact? rscope -> rule_only
-    | ("nobody" | "no" "one" | "none") ("except" | "but" | "other" "than" | "besides") robots rmodal? useact? rscope -> rule_only
+    | ("nobody" | "no" NUM | "none") ("except" | "but" | "other" "than" | "besides") robots rmodal? useact? rscope -> rule_only
     | ("use" | "using" | "with" | "by" | "employ") robots ("to" act? | "for")? rscope -> rule_use
     | robots oblig act rscope                               -> rule_use
     | robots ("can" | "may" | "could" | "might") act rscope  -> rule_permission
@@ -335,8 +339,7 @@ def nullable_optionals(grammar: str) -> str:
 
     lines = []
     for line in grammar.splitlines():
-        code, sep, comment = line.partition("//")
-        code = re.sub(r'("[^"]+"|\b[A-Za-z_][A-Za-z0-9_]*)\?', opt, code)
-        lines.append(code + sep + comment)
+        code = line.partition("//")[0]
+        lines.append(re.sub(r'("[^"]+"|\b[A-Za-z_][A-Za-z0-9_]*)\?', opt, code))
     extra = [f"{name}: {sym} | " for name, sym in made.items()]
     return "\n".join(lines + extra) + "\n"

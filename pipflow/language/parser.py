@@ -107,13 +107,16 @@ class _Sentence:
         words = self.words(node)
         nums = [int(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "NUM")]
         heads = [c for c in node.children if isinstance(c, Tree) and c.data == "ihead"]
-        item = {"names": [self.ihead(heads[0], words)]} if heads else None
+        named = [str(c.value) for c in node.children if isinstance(c, Token) and c.type == "ITEM"]
+        item = {"names": [self.ihead(heads[0], words)]} if heads else {"names": named[:1]} if named else None
 
         def out(amount: dict, sel: dict | None = item) -> dict:
             if sel is not None and sel.get("names"):
                 self.last_item = sel["names"]
             return {"items": sel, "amount": amount, "words": words}
 
+        if kind == "np_bare":
+            return {"items": None, "amount": {"count": nums[0]}, "words": words}
         if kind == "np_count":
             return out({"count": nums[0]})
         if kind == "np_more":
@@ -271,7 +274,7 @@ class _Sentence:
         nps = self.nps(items[0]) if items else []
         locs = [c for c in node.children if isinstance(c, Tree) and c.data in ("loc", "loc_each", "loc_resp")]
         plist = self.sub(node, "places")
-        each = bool(self.sub(node, "each")) or any(
+        each = bool(self.sub(node, "each") or self.sub(node, "both")) or any(
             isinstance(c, Token) and c.value in ("each", "both") for c in node.children)
         if kind in ("g_set", "g_loc_set", "g_set_only"):
             if not locs:
@@ -287,6 +290,9 @@ class _Sentence:
         if kind == "g_place_set":
             places = self.place_list(plist[0])
             self.put(places, "each" if each else "one", nps, words)
+            return
+        if kind == "g_place_set_resp":
+            self.respectively(self.place_list(plist[0]), nps, words, False)
             return
         if kind == "g_place_set_one":
             places = self.place_list(plist[0])
@@ -388,6 +394,9 @@ class _Sentence:
             return
         if kind == "g_split":
             places = self.place_list(plist[0])
+            for b in self.sub(node, "bare"):
+                nps = [{"items": {"names": [self.ihead(h, words)]}, "amount": {"all": True}, "words": words}
+                       for h in self.sub(b, "ihead")]
             if not nps:
                 raise TranslationError(f"{_quote(words)}: the command does not say what to share")
             for np in nps:
@@ -443,7 +452,7 @@ class _Sentence:
                     src = names
             elif isinstance(c, Tree) and c.data == "from":
                 prev = "from"
-            elif isinstance(c, Token) and c.type in ("TO", "INTO", "ONTO", "OVER"):
+            elif isinstance(c, Tree) and c.data == "to":
                 prev = "to"
             elif isinstance(c, Tree) and c.data == "except_places":
                 exclude = self.place_list(self.sub(c, "places")[0])
@@ -684,6 +693,13 @@ def _fail(exc: UnexpectedInput, lexed: Lexed, lex: Lexicon) -> TranslationError:
                                     f"(candidates: {lex.index.candidates('product')})")
         where = f"cannot place '{word}' in '{sentence}'"
     else:
+        kinds = [t.type for t in lexed.tokens]
+        if "PLACE" not in kinds and "ITEM" in kinds and "ROBOT" not in kinds:
+            first = kinds.index("ITEM")
+            start = first - 1 if first > 0 and kinds[first - 1] == "NUM" else first
+            shown = " ".join(t.text for t in lexed.source[start:first + 1])
+            return TranslationError(f"'{shown}': the command does not say which shelf "
+                                    f"(candidates: {lex.index.candidates('shelf')})")
         where = f"'{sentence}' ends before it says what to do"
     return TranslationError(f"{where}: the command is not understood, so nothing is guessed "
                             f"(shelves: {lex.index.candidates('shelf')}; products: "

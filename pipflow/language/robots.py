@@ -33,9 +33,9 @@ class RobotSelector:
                 continue
             vals = [t for t in c.scan_values(lambda v: isinstance(v, Token))]
             if c.data == "r_name":
-                names.append(str(vals[0].value))
+                names.append(next(str(t.value) for t in vals if t.type == "ROBOT"))
             elif c.data == "r_range":
-                first = str(vals[0].value)
+                first = next(str(t.value) for t in vals if t.type == "ROBOT")
                 hi = int(next(t.value for t in vals if t.type == "NUM"))
                 names += self._range(first, hi, words)
             elif c.data == "r_name_range":

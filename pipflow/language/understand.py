@@ -12,7 +12,7 @@ from pipflow.language.parser import parse
 from pipflow.language.resolver import resolve
 
 
-def understand(command: str, world: dict) -> dict[str, Any]:
+def understand(command: str, world: dict, check: bool = True) -> dict[str, Any]:
     """``{"order", "goal", "constraints", "explanation"}`` of a command in a world.
 
     Raises TranslationError (words it cannot place), Refusal (impossible requests, with why) and
@@ -20,12 +20,12 @@ def understand(command: str, world: dict) -> dict[str, Any]:
     """
     order = parse(command, world)
     validate_order(order)
-    resolved = resolve(order, world)
+    resolved = resolve(order, world, check)
     return {"order": order, "goal": resolved.goal, "constraints": resolved.constraints,
             "explanation": resolved.explanation}
 
 
-def translate(command: str, world: dict) -> dict[str, Any]:
+def translate(command: str, world: dict, check: bool = True) -> dict[str, Any]:
     """The goal and robot rules of a command (the shape task files use for their gold)."""
-    got = understand(command, world)
+    got = understand(command, world, check)
     return {"goal": got["goal"], "constraints": got["constraints"]}
