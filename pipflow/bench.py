@@ -24,7 +24,7 @@ from typing import Any
 from pipflow.errors import UserError
 
 RESULT_FIELDS = ["variant", "task", "seed", "status", "success", "goal_met", "gcr", "exe", "ru", "tc_max",
-                 "tc_avg", "makespan", "planned", "executed", "seconds", "error", "run_dir"]
+                 "tc_avg", "tc_avg_moved", "makespan", "planned", "executed", "seconds", "error", "run_dir"]
 
 
 @dataclass(frozen=True)
@@ -269,14 +269,14 @@ def markdown_table(results: dict) -> str:
     for variant in results["variants"]:
         if len(results["variants"]) > 1:
             lines.append(f"### {variant['name']}\n")
-        lines += ["| Task | SR (%) | TC max/avg (m) | GCR | Exe | RU | makespan (s) | error |",
+        lines += ["| Task | SR (%) | TC max/avg all robots/avg robots that moved (m) | GCR | Exe | RU | makespan (s) | error |",
                   "|---|---|---|---|---|---|---|---|"]
         for t in variant["tasks"]:
             err = (t.get("error") or "").replace("|", "/").replace("\n", " ")[:80]
-            lines.append(f"| {t['id']} | {100 * t['sr']:.0f} | {_fmt(t['tc_max'])}/{_fmt(t['tc_avg'])} | "
+            lines.append(f"| {t['id']} | {100 * t['sr']:.0f} | {_fmt(t['tc_max'])}/{_fmt(t['tc_avg'])}/{_fmt(t.get('tc_avg_moved'))} | "
                          f"{t['gcr']:.2f} | {t['exe']:.2f} | {t['ru']:.2f} | {_fmt(t.get('makespan'))} | {err} |")
         s = variant["summary"]
-        lines.append(f"| **all** ({s['runs']} runs) | {100 * s['sr']:.0f} | {_fmt(s['tc_max'])}/{_fmt(s['tc_avg'])} | "
+        lines.append(f"| **all** ({s['runs']} runs) | {100 * s['sr']:.0f} | {_fmt(s['tc_max'])}/{_fmt(s['tc_avg'])}/{_fmt(s.get('tc_avg_moved'))} | "
                      f"{s['gcr']:.2f} | {s['exe']:.2f} | {s['ru']:.2f} | | |")
         lines.append("")
     lines.append(f"wall time: {results['wall_seconds']:.1f} s")

@@ -16,7 +16,9 @@ A task marked ``feasible: false`` succeeds only when it was refused with a reaso
 executed.
 
 Metrics (paper, Sec. V): GCR = fraction of goal counts met; Exe = executed / planned actions;
-TC-max / TC-avg from the simulated travel; RU = ``lower_bound / plan_length`` (capped at 1).
+TC-max / TC-avg from the simulated travel (TC-avg twice: ``tc_avg`` over every robot of the
+world, which falls as idle robots are added, and ``tc_avg_moved`` over the robots that moved, the
+paper's meaning); RU = ``lower_bound / plan_length`` (capped at 1).
 
 RU's lower bound is :func:`pipflow.pddl.bounds.fewest_moves`: the fewest moves of any plan once
 the order of moves is dropped (an integer program, SCIP), so RU = 1 exactly when the plan has the
@@ -148,7 +150,7 @@ def score_run(world: dict, goal: dict, *, constraints: list | None = None, feasi
     """Score one run. ``refusal`` is the message of a :class:`pipflow.Refusal`, ``error`` that
     of any other failure; both mean the pipeline stopped before simulating (normally).
 
-    Returns ``{success, goal_met, gcr, exe, ru, tc_max, tc_avg, makespan, planned, executed,
+    Returns ``{success, goal_met, gcr, exe, ru, tc_max, tc_avg, tc_avg_moved, makespan, planned, executed,
     lower_bound, violations, refused, error}``."""
     sim = simulation or {}
     planned = len((schedule or {}).get("subtasks", []))
@@ -164,13 +166,14 @@ def score_run(world: dict, goal: dict, *, constraints: list | None = None, feasi
         return {**base, "success": ok, "goal_met": ok, "gcr": 1.0 if ok else 0.0,
                 "exe": 1.0 if ok else (sim.get("exe", 0.0) or 0.0), "ru": 1.0 if ok else 0.0,
                 "tc_max": float(sim.get("tc_max", 0.0)), "tc_avg": float(sim.get("tc_avg", 0.0)),
+                "tc_avg_moved": float(sim.get("tc_avg_moved", 0.0)),
                 "lower_bound": None, "violations": violations}
 
     if simulation is None:  # refused or failed before execution: judge the untouched world
         met, listed = goal_counts(world.get("stock", {}), goal)
         why = "refused a feasible command" if refusal else f"run failed: {error}" if error else "no simulation"
         return {**base, "success": False, "goal_met": False, "gcr": met / listed if listed else 1.0,
-                "exe": 0.0, "ru": 0.0, "tc_max": 0.0, "tc_avg": 0.0, "lower_bound": None,
+                "exe": 0.0, "ru": 0.0, "tc_max": 0.0, "tc_avg": 0.0, "tc_avg_moved": 0.0, "lower_bound": None,
                 "violations": [why]}
 
     final = sim.get("final_stock", {})
@@ -194,6 +197,7 @@ def score_run(world: dict, goal: dict, *, constraints: list | None = None, feasi
             "gcr": met / listed if listed else 1.0,
             "exe": float(sim.get("exe", executed / planned if planned else 1.0)), "ru": ru,
             "tc_max": float(sim.get("tc_max", 0.0)), "tc_avg": float(sim.get("tc_avg", 0.0)),
+            "tc_avg_moved": float(sim.get("tc_avg_moved", 0.0)),
             "lower_bound": lb, "violations": violations}
 
 
@@ -219,6 +223,7 @@ def aggregate_task(task_id: str, scores: list[dict]) -> dict:
         "ru": _mean([float(s.get("ru", 0.0)) for s in scores]) or 0.0,
         "tc_max": _mean([float(s["tc_max"]) for s in ok]),
         "tc_avg": _mean([float(s["tc_avg"]) for s in ok]),
+        "tc_avg_moved": _mean([float(s.get("tc_avg_moved", 0.0)) for s in ok]),
         "makespan": _mean([float(s.get("makespan", 0.0)) for s in ok]),
         "error": errors[0] if errors else None,
     }
@@ -234,4 +239,5 @@ def summarize(rows: list[dict]) -> dict:
 
     return {"runs": runs, "sr": wmean("sr"), "gcr": wmean("gcr"), "exe": wmean("exe"), "ru": wmean("ru"),
             "tc_max": _mean([r["tc_max"] for r in rows if r.get("tc_max") is not None]),
-            "tc_avg": _mean([r["tc_avg"] for r in rows if r.get("tc_avg") is not None])}
+            "tc_avg": _mean([r["tc_avg"] for r in rows if r.get("tc_avg") is not None]),
+            "tc_avg_moved": _mean([r["tc_avg_moved"] for r in rows if r.get("tc_avg_moved") is not None])}

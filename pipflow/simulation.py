@@ -440,7 +440,7 @@ def simulate(world: dict, schedule: dict, graph: dict | None = None, goal: dict 
              step: float = 0.25, log=None) -> dict:
     """Run ``schedule`` in pybullet and return what the world looks like afterwards.
 
-    Returns ``{final_stock, executed, failed, failures, exe, travel, tc_max, tc_avg, goal_met,
+    Returns ``{final_stock, executed, failed, failures, exe, travel, tc_max, tc_avg, tc_avg_moved, goal_met,
     gcr, peak_load, stray_units, jumps, makespan, trajectories, events, pictures}``; ``jumps``
     lists legs that start away from where the robot stood (a broken schedule: the body jumps); pictures (file
     names in ``out_dir``) only when ``out_dir`` is given."""
@@ -543,11 +543,13 @@ def simulate(world: dict, schedule: dict, graph: dict | None = None, goal: dict 
     planned = len(moves)
     gm, gcr = goal_check(final_stock, goal or {})
     tc = list(travel.values())
+    moved = [v for v in tc if v > 1e-9]
     result = {
         "final_stock": final_stock, "executed": executed, "failed": len(failures),
         "failures": failures, "exe": executed / planned if planned else 1.0,
         "travel": {r: round(v, 4) for r, v in travel.items()},
         "tc_max": round(max(tc), 4) if tc else 0.0, "tc_avg": round(sum(tc) / len(tc), 4) if tc else 0.0,
+        "tc_avg_moved": round(sum(moved) / len(moved), 4) if moved else 0.0,  # over robots that moved
         "goal_met": gm, "gcr": gcr, "peak_load": peak, "stray_units": stray,
         "jumps": {r: t.jumps for r, t in traj.items() if t.jumps},
         "makespan": round(makespan, 4), "events": log_events,

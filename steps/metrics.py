@@ -6,7 +6,8 @@ from pipflow import Input, StepContext, step
 
 @step(
     "metrics.score",
-    doc="Score a run: success (goal, constraints, conservation, capacity, skills), GCR, Exe, RU, TC-max, TC-avg.",
+    doc="Score a run: success (goal, constraints, conservation, capacity, skills), GCR, Exe, RU, TC-max, "
+        "TC-avg over all robots (tc_avg) and over the robots that moved (tc_avg_moved).",
     inputs={
         "world": Input("object", doc="the world (output of world.load)"),
         "goal": Input("object", doc="ground-truth goal {SHELF: {PRODUCT: units}}"),
@@ -19,7 +20,7 @@ from pipflow import Input, StepContext, step
     },
     outputs={
         "success": "boolean", "goal_met": "boolean", "gcr": "number", "exe": "number", "ru": "number",
-        "tc_max": "number", "tc_avg": "number", "makespan": "number", "planned": "integer",
+        "tc_max": "number", "tc_avg": "number", "tc_avg_moved": "number", "makespan": "number", "planned": "integer",
         "executed": "integer", "lower_bound": "any", "violations": "array", "refused": "boolean",
         "error": "any",
     },
@@ -33,5 +34,5 @@ def score(ctx: StepContext, world: dict, goal: dict, constraints: list | None = 
                        schedule=schedule, simulation=simulation, refusal=refusal)
     for v in result["violations"]:
         ctx.log(f"violation: {v}")
-    ctx.metrics.update({k: result[k] for k in ("success", "gcr", "exe", "ru", "tc_max", "tc_avg")})
+    ctx.metrics.update({k: result[k] for k in ("success", "gcr", "exe", "ru", "tc_max", "tc_avg", "tc_avg_moved")})
     return result

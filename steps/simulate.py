@@ -20,7 +20,7 @@ from pipflow import Input, StepContext, step
     },
     outputs={
         "final_stock": "object", "executed": "integer", "failed": "integer", "failures": "array",
-        "exe": "number", "travel": "object", "tc_max": "number", "tc_avg": "number",
+        "exe": "number", "travel": "object", "tc_max": "number", "tc_avg": "number", "tc_avg_moved": "number",
         "goal_met": "boolean", "gcr": "number", "peak_load": "object", "stray_units": "integer",
         "jumps": "object",
         "makespan": "number", "pictures": "array",
@@ -40,5 +40,5 @@ def simulate_pybullet(ctx: StepContext, world: dict, schedule: dict, graph: dict
     ctx.write_artifact("trajectories.json", {"trajectories": result.pop("trajectories"),
                                              "events": result.pop("events")})
     result.pop("animation_skipped", None)
-    ctx.metrics.update({k: result[k] for k in ("exe", "tc_max", "tc_avg", "gcr")})
+    ctx.metrics.update({k: result[k] for k in ("exe", "tc_max", "tc_avg", "tc_avg_moved", "gcr")})
     return result
