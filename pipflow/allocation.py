@@ -288,7 +288,7 @@ class Rules:
             if isinstance(names, str):
                 names = [names]
             self._check_robots(names, where)
-            keys = [key for key in rule if key != kind]
+            keys = [key for key in rule if key not in (kind, "words")]  # words: where the rule came from
             self._check_fields(keys, known_fields, where)
             self.rules.append((kind, set(names), rule, keys, f"rule #{k + 1} {_show(rule)}"))
         self.linear: list[tuple[dict, list[str], np.ndarray, str, float, str]] = []

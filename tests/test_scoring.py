@@ -159,3 +159,17 @@ def test_metrics_step(world, tmp_path):
     out = score.func(ctx, world=world, goal=GOAL_01, constraints=[], graph=graph, schedule=schedule,
                      simulation=sim)
     assert set(out) == set(score.outputs) and out["success"]
+
+
+def test_rule_words_are_ignored_when_rules_are_matched(world):
+    """A rule may carry the command's words it came from (shared convention): scoring and the
+    allocation match rules on product/from/to only."""
+    from pipflow.allocation import allocate
+
+    graph, schedule = wh01()  # robot5 moves product1 shelf1 -> shelf3
+    sim = run(world, graph, schedule, GOAL_01)
+    worded = [{"never": ["robot5"], "product": "product1", "words": "robot 5 must not touch product1"}]
+    s = score_run(world, GOAL_01, constraints=worded, graph=graph, schedule=schedule, simulation=sim)
+    assert not s["success"] and "['robot5'] used although `never`" in s["violations"][0]
+    ruled = allocate(graph, world, constraints=worded)
+    assert all("robot5" not in a["robots"] for a in ruled["assignments"])
