@@ -30,14 +30,16 @@ def _read_metadata(ctx: StepContext, value) -> dict:
 
 @step(
     "graph.dependencies",
-    doc="Build the subtask dependency DAG of a team plan (paper Alg. 2, or exact).",
+    doc="Build the subtask dependency DAG of a team plan (minimal deordering, exact read/write, or paper Alg. 2).",
     inputs={
         "domain": Input("string", doc="team domain: PDDL text or a path"),
         "problem": Input("string", doc="team problem: PDDL text or a path"),
         "plan": Input("array", doc="ordered plan: [{action, args}]"),
         "actions": Input("any", doc="action metadata: path of domains/*.actions.yaml, or its content"),
-        "mode": Input("string", default="exact", choices=("exact", "paper"),
-                      doc="exact: all needed predecessors, transitively reduced; paper: Alg. 2's single nearest parent"),
+        "mode": Input("string", default="deorder", choices=("deorder", "exact", "paper"),
+                      doc="deorder: only the orders a precondition needs (increments commute; stock and room "
+                          "checked for every allowed order); exact: every read/write interaction, transitively "
+                          "reduced; paper: Alg. 2's single nearest parent"),
         "picture": Input("boolean", default=True,
                          doc="also draw graph.png (workflows pass pictures == 'always'; see pipflow.pictures)"),
     },
@@ -45,7 +47,7 @@ def _read_metadata(ctx: StepContext, value) -> dict:
     cacheable=True,
 )
 def dependencies(ctx: StepContext, domain: str, problem: str, plan: list, actions,
-                 mode: str = "exact", picture: bool = True) -> dict:
+                 mode: str = "deorder", picture: bool = True) -> dict:
     """Ground the plan with unified-planning and link actions whose fluents interact."""
 
     from pipflow.dependency import build_graph, to_dot

@@ -1,0 +1,264 @@
+"""Minimal deordering of a totally ordered plan: keep an ordering only where a precondition needs it.
+
+Why: in the read/write ("exact") graph every two moves through one shelf are ordered, because
+both write the shelf's ``load``. But two increments of one fluent commute, so what must stay
+ordered is only what some precondition needs: the move that brings units before the move that
+takes them, the move that frees room before the move that fills it. This is plan deordering
+(Backstrom 1998) with numeric resources; Muise, Beck and McIlraith (2016) compute the optimum
+with MaxSAT, here a greedy pass in plan order that keeps every order the graph allows valid.
+
+How every allowed order is kept valid (the envelope test): each ground precondition that is
+linear in the fluents, ``sum(c_k * f_k) + c0  op  0``, is bounded over all orders at once. Actions
+that are *ancestors* of the action always precede it (their whole effect counts); actions that
+are *incomparable* may or may not (only their harmful effects count, each fluent separately, so
+even a robot-level execution that lifts units at the start and sets them down at the end, with
+several moves in flight, stays within the bound); *descendants* never precede it. Hence
+
+    worst(a, c) = base + sum_{ancestors b} w_b(c) + sum_{incomparable b} neg_b(c)
+
+where ``w_b(c)`` is b's change of the condition's value and ``neg_b(c)`` the sum of its negative
+parts. ``worst >= 0`` (``> 0``; for ``==`` also the best case ``== 0``) for every precondition
+means every linearization, and every interleaving of effects, meets it. Effects that are not
+additive constants (assignments, increases by a changing fluent) and conditions that are not
+linear are ordered as in the read/write graph.
+
+The pass, for action j in plan order: (1) edges from earlier actions that conflict through
+non-additive fluents; (2) while one of j's preconditions fails the envelope, an edge from the
+earlier helper (an action that raises the condition) that finishes earliest in the graph so far,
+then drop helpers that turned out redundant; if helpers cannot do it, edges from every earlier
+action touching the condition (then the bound is the plan's own prefix, which holds); (3) for
+every earlier, incomparable action whose precondition j could now break, an edge to j. Edges only
+point forward, so the plan's own order stays allowed. Adding edges never lowers an envelope,
+which is why one pass suffices.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from fractions import Fraction
+from typing import Any, Iterable
+
+from pipflow.pddl.linear import Comparison, NotLinear, comparison, conjuncts, linear
+
+Key = tuple
+
+
+@dataclass
+class Numeric:
+    """What one ground action reads and changes, split into the additive and the rest."""
+
+    index: int
+    conds: list[Comparison] = field(default_factory=list)  # linear preconditions over changing fluents
+    deltas: dict[Key, Fraction] = field(default_factory=dict)  # additive constant effects
+    opaque_reads: set = field(default_factory=set)  # fluents read any other way
+    opaque_writes: set = field(default_factory=set)  # fluents written any other way
+
+
+def _match(a: Key, b: Key) -> bool:
+    return len(a) == len(b) and a[0] == b[0] and all(x == y or "*" in (x, y) for x, y in zip(a[1:], b[1:]))
+
+
+def _meets(xs: Iterable[Key], ys: Iterable[Key]) -> bool:
+    ys = list(ys)
+    return any(_match(x, y) for x in xs for y in ys)
+
+
+def _fluents(expr: Any) -> set:
+    from pipflow.pddl.linear import key_of
+
+    out, stack = set(), [expr]
+    while stack:
+        e = stack.pop()
+        if e.is_fluent_exp():
+            out.add(key_of(e))
+        stack.extend(e.args)
+    return out
+
+
+def numeric_view(problem: Any, grounded: list) -> list[Numeric]:
+    """Split every ground action (``dependency.GroundAction`` with its ``mapping``) into linear
+    conditions, additive deltas and opaque reads/writes. Fluents no action of the domain writes
+    are static: replaced by their initial values."""
+    from pipflow.pddl.common import initial_numbers
+
+    subst = problem.environment.substituter
+    written = {eff.fluent.fluent().name for a in problem.actions for eff in getattr(a, "effects", [])}
+    init = initial_numbers(problem)
+
+    def static(key: Key):
+        if key[0] in written:
+            return None
+        v = init.get(key)
+        return None if v is None else Fraction(v)
+
+    out = []
+    for g in grounded:
+        view = Numeric(g.index)
+        for pre in getattr(g.action, "preconditions", []):
+            for cond in conjuncts(subst.substitute(pre, g.mapping)):
+                keys = _fluents(cond)
+                if not keys:
+                    continue  # e.g. (not (= shelf1 shelf3)): independent of the state
+                try:
+                    cmp = comparison(cond, static)
+                except NotLinear:
+                    view.opaque_reads |= keys
+                    continue
+                if cmp.form.coefs:
+                    view.conds.append(cmp)
+        for eff in getattr(g.action, "effects", []):
+            key = _fluents_key(subst.substitute(eff.fluent, g.mapping))
+            value = subst.substitute(eff.value, g.mapping)
+            cond = subst.substitute(eff.condition, g.mapping)
+            additive = (eff.is_increase() or eff.is_decrease()) and cond.is_true() and "*" not in key
+            if additive:
+                try:
+                    form = linear(value, static)
+                except NotLinear:
+                    form = None
+                if form is not None and not form.coefs:
+                    sign = 1 if eff.is_increase() else -1
+                    view.deltas[key] = view.deltas.get(key, Fraction(0)) + sign * form.const
+                    continue
+            view.opaque_writes.add(key)
+            view.opaque_reads |= _fluents(value) | _fluents(cond)
+        out.append(view)
+    # a fluent that some action writes opaquely is opaque everywhere: its value is not a sum
+    opaque = set().union(*(v.opaque_writes for v in out)) if out else set()
+    for v in out:
+        for cmp in list(v.conds):
+            if any(_match(k, o) for k in cmp.form.coefs for o in opaque) or \
+                    any(static(k) is None and k not in init for k in cmp.form.coefs):
+                v.conds.remove(cmp)
+                v.opaque_reads |= set(cmp.form.coefs)
+        for k in [k for k in v.deltas if any(_match(k, o) for o in opaque)]:
+            v.opaque_writes.add(k)
+            del v.deltas[k]
+    return out
+
+
+def _fluents_key(fexp: Any) -> Key:
+    from pipflow.pddl.linear import key_of
+
+    return key_of(fexp)
+
+
+def conflicts(a: Numeric, b: Numeric) -> bool:
+    """Must stay in plan order regardless of numbers: one writes opaquely what the other touches,
+    or one reads opaquely what the other changes."""
+    touched_a = a.opaque_reads | set(a.deltas) | {k for c in a.conds for k in c.form.coefs}
+    touched_b = b.opaque_reads | set(b.deltas) | {k for c in b.conds for k in c.form.coefs}
+    return (_meets(a.opaque_writes, touched_b | b.opaque_writes) or _meets(b.opaque_writes, touched_a)
+            or _meets(set(a.deltas), b.opaque_reads) or _meets(set(b.deltas), a.opaque_reads))
+
+
+class _Envelope:
+    """Per (action, condition): base value, and each other action's whole and harmful change."""
+
+    def __init__(self, problem: Any, views: list[Numeric]):
+        from pipflow.pddl.common import initial_numbers
+
+        init = initial_numbers(problem)
+        self.views = views
+        by_key: dict[Key, list[int]] = {}
+        for v in views:
+            for k in v.deltas:
+                by_key.setdefault(k, []).append(v.index)
+        self.base: dict[tuple[int, int], Fraction] = {}
+        self.touch: dict[tuple[int, int], dict[int, tuple[Fraction, Fraction, Fraction]]] = {}
+        for v in views:
+            for ci, cmp in enumerate(v.conds):
+                base = cmp.form.const + sum(c * Fraction(init.get(k, 0)) for k, c in cmp.form.coefs.items())
+                effects: dict[int, tuple[Fraction, Fraction, Fraction]] = {}
+                for k, c in cmp.form.coefs.items():
+                    for b in by_key.get(k, ()):
+                        if b == v.index:
+                            continue
+                        d = c * views[b].deltas[k]
+                        w, neg, pos = effects.get(b, (Fraction(0),) * 3)
+                        effects[b] = (w + d, neg + min(d, 0), pos + max(d, 0))
+                self.base[v.index, ci] = base
+                self.touch[v.index, ci] = {b: e for b, e in effects.items() if e != (0, 0, 0)}
+
+    def bounds(self, a: int, ci: int, upto: int, anc: list[int], j: int, j_mask: int) -> tuple[Fraction, Fraction]:
+        """(worst, best) value of condition ci of action a over every order of the actions before
+        ``upto`` that the graph allows; ``anc`` holds ancestor bitmasks, action j's is ``j_mask``."""
+        mine = j_mask if a == j else anc[a]
+        lo = hi = self.base[a, ci]
+        for b, (w, neg, pos) in self.touch[a, ci].items():
+            if b >= upto:
+                continue
+            if mine >> b & 1:
+                lo += w
+                hi += w
+                continue
+            if b > a and ((j_mask if b == j else anc[b]) >> a) & 1:
+                continue  # a descendant of a: never before it
+            lo += neg
+            hi += pos
+        return lo, hi
+
+    def holds(self, a: int, ci: int, lo: Fraction, hi: Fraction) -> bool:
+        cmp = self.views[a].conds[ci]
+        if cmp.op == "==":
+            return lo == 0 and hi == 0
+        return cmp.holds(lo)
+
+
+def deorder(problem: Any, grounded: list) -> list[tuple[int, int]]:
+    """Edges ``(i, j)`` (plan indices, i < j) of a deordering of the plan in which every
+    linearization, and every interleaving of effects, keeps every precondition (module docstring)."""
+    views = numeric_view(problem, grounded)
+    env = _Envelope(problem, views)
+    n = len(views)
+    anc = [0] * n  # bitmask of ancestors
+    level = [0] * n  # longest chain of actions ending at each (unit durations)
+    parents: list[set[int]] = [set() for _ in range(n)]
+    # later actions' conditions that an action touches: (action, condition) pairs per action
+    watched: dict[int, list[tuple[int, int]]] = {}
+    for a in range(n):
+        for ci in range(len(views[a].conds)):
+            for b in env.touch[a, ci]:
+                watched.setdefault(b, []).append((a, ci))
+
+    def closure(ps: Iterable[int]) -> int:
+        mask = 0
+        for p in ps:
+            mask |= anc[p] | (1 << p)
+        return mask
+
+    for j in range(n):
+        ps = {i for i in range(j) if conflicts(views[i], views[j])}
+        # (2) j's own conditions
+        for ci in range(len(views[j].conds)):
+            mask = closure(ps)
+            if env.holds(j, ci, *env.bounds(j, ci, j, anc, j, mask)):
+                continue
+            helpers = sorted((b for b, (w, _, _) in env.touch[j, ci].items() if b < j and w > 0 and not mask >> b & 1),
+                             key=lambda b: (level[b], -env.touch[j, ci][b][0], -b))
+            added = []
+            for b in helpers:
+                ps.add(b)
+                added.append(b)
+                mask = closure(ps)
+                if env.holds(j, ci, *env.bounds(j, ci, j, anc, j, mask)):
+                    break
+            else:
+                ps |= {b for b in env.touch[j, ci] if b < j}
+                continue
+            for b in reversed(added[:-1]):  # a later, larger helper may make an earlier one redundant
+                trial = ps - {b}
+                if env.holds(j, ci, *env.bounds(j, ci, j, anc, j, closure(trial))):
+                    ps = trial
+        # (3) earlier actions' conditions that j could break while incomparable
+        for a, ci in sorted(watched.get(j, ()), key=lambda x: -x[0]):
+            if a >= j:
+                continue
+            mask = closure(ps)
+            if mask >> a & 1:
+                continue  # j already follows a
+            if not env.holds(a, ci, *env.bounds(a, ci, j + 1, anc, j, mask)):
+                ps.add(a)
+        parents[j] = ps
+        anc[j] = closure(ps)
+        level[j] = 1 + max((level[p] for p in ps), default=0)
+    return [(i, j) for j in range(n) for i in sorted(parents[j])]
