@@ -138,11 +138,12 @@ def test_ru_is_lower_bound_over_plan_length(world):
 
 
 def test_aggregate_and_summary():
-    runs = [{"success": True, "gcr": 1, "exe": 1, "ru": 1, "tc_max": 10, "tc_avg": 4, "makespan": 30},
-            {"success": False, "gcr": 0.5, "exe": 0.5, "ru": 0.5, "tc_max": 99, "tc_avg": 99, "error": "x"}]
+    runs = [{"success": True, "gcr": 1, "exe": 1, "ru": 1, "tc_max": 10, "tc_avg": 4, "tc_avg_moved": 8, "makespan": 30},
+            {"success": False, "gcr": 0.5, "exe": 0.5, "ru": 0.5, "tc_max": 99, "tc_avg": 99, "tc_avg_moved": 99,
+             "error": "x"}]
     row = aggregate_task("t1", runs)
     assert row == {"id": "t1", "runs": 2, "sr": 0.5, "gcr": 0.75, "exe": 0.75, "ru": 0.75, "tc_max": 10.0,
-                   "tc_avg": 4.0, "makespan": 30.0, "error": "x"}
+                   "tc_avg": 4.0, "tc_avg_moved": 8.0, "makespan": 30.0, "error": "x"}
     none_ok = aggregate_task("t2", [runs[1]])
     assert none_ok["sr"] == 0.0 and none_ok["tc_max"] is None
     summary = summarize([row, none_ok])
