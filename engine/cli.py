@@ -50,6 +50,13 @@ def _registry():
     return registry
 
 
+def _print_traceback(exc: BaseException) -> None:
+    """``-v``: the traceback, with secrets redacted like every other line pipflow writes."""
+    from .store import redact
+
+    print(redact("".join(traceback.format_exception(exc))), file=sys.stderr, end="")
+
+
 def _key_values(pairs: Sequence[str]) -> dict[str, str]:
     out: dict[str, str] = {}
     for pair in pairs:
@@ -162,7 +169,7 @@ def cmd_run(args: argparse.Namespace) -> int:
         if display:
             display.close()
     if args.verbose and result.exception is not None and result.status == "failed":
-        traceback.print_exception(result.exception)
+        _print_traceback(result.exception)
     return _print_result(result, args.quiet)
 
 
@@ -470,7 +477,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 0
     except PipflowError as err:
         if args.verbose:
-            traceback.print_exc()
+            _print_traceback(err)
         from .store import redact
 
         print(redact(f"error: {err}" if not getattr(err, "diagnostics", None) else str(err)), file=sys.stderr)

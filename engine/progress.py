@@ -11,8 +11,8 @@ from typing import TextIO
 class PlainProgress:
     """One line per finished step, for logs."""
 
-    def __init__(self, stream: TextIO = sys.stderr, verbose: bool = False):
-        self.stream = stream
+    def __init__(self, stream: TextIO | None = None, verbose: bool = False):
+        self.stream = stream if stream is not None else sys.stderr  # the stderr of now, not of import time
         self.verbose = verbose
         self.started = time.perf_counter()
 

@@ -16,7 +16,7 @@ from typing import Any
 import yaml
 
 from pipflow.errors import Diagnostic, Location, SourceFileError
-from pipflow.yamlsource import BoundedComposer, CheckedValues, read_source
+from pipflow.yamlsource import BoundedComposer, CheckedValues, located_reader_error, read_source
 
 
 class SourceDict(dict):
@@ -119,7 +119,10 @@ def parse_yaml(text: str, file: str = "<string>") -> Any:
     """Parse YAML text into Source containers; syntax errors become a located UserError."""
     loader = _CLoader(text, file)
     try:
-        return loader.get_single_data()
+        try:
+            return loader.get_single_data()
+        except yaml.reader.ReaderError as err:
+            raise located_reader_error(err, text) from None
     except _DuplicateKey as dup:
         raise SourceError([Diagnostic(dup.location, f"duplicate key {dup.key!r}")]) from None
     except yaml.MarkedYAMLError as err:

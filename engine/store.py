@@ -178,7 +178,7 @@ class RunStore:
     @classmethod
     def open(cls, root: Path) -> "RunStore":
         root = Path(root)
-        if not (root / "run.json").is_file():
+        if not (root / "run.json").exists():  # a damaged run.json is reported by the readers
             raise UserError(f"{root}: not a pipflow run directory (no run.json)")
         return cls(root)
 

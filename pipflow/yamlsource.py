@@ -155,22 +155,35 @@ else:  # pragma: no cover - PyYAML built without libyaml
     _SafeCLoader = _SafeLoader
 
 
-def compose(text: str) -> yaml.Node | None:
-    """The bounded node tree of a YAML document (``None`` for an empty one)."""
+def located_reader_error(err: yaml.reader.ReaderError, text: str) -> yaml.MarkedYAMLError:
+    """A character the YAML reader refuses (a NUL, a control character) as an error with a line
+    and column, like every other YAML error (the reader reports only an offset)."""
+    pos = max(0, min(int(getattr(err, "position", 0) or 0), len(text)))
+    line = text.count("\n", 0, pos)
+    column = pos - (text.rfind("\n", 0, pos) + 1)
+    mark = yaml.Mark("<unicode string>", pos, line, column, None, None)
+    code = err.character if isinstance(err.character, int) else ord(err.character or "\0")
+    return yaml.scanner.ScannerError(None, None, f"character #x{code:04x} is not allowed in YAML text ({err.reason})", mark)
+
+
+def _load(text: str, data: bool) -> Any:
     loader = _SafeCLoader(text)
     try:
-        return loader.get_single_node()
+        return loader.get_single_data() if data else loader.get_single_node()
+    except yaml.reader.ReaderError as err:
+        raise located_reader_error(err, text) from None
     finally:
         loader.dispose()
+
+
+def compose(text: str) -> yaml.Node | None:
+    """The bounded node tree of a YAML document (``None`` for an empty one)."""
+    return _load(text, data=False)
 
 
 def safe_load(text: str) -> Any:
     """``yaml.safe_load`` with the limits above; errors are ``yaml.YAMLError`` as there."""
-    loader = _SafeCLoader(text)
-    try:
-        return loader.get_single_data()
-    finally:
-        loader.dispose()
+    return _load(text, data=True)
 
 
 class Locator:
@@ -240,6 +253,8 @@ def load_with_locations(text: str, file: str) -> tuple[Any, Callable[..., Locati
     try:
         root = loader.get_single_node()
         data = loader.construct_document(root) if root is not None else None
+    except yaml.reader.ReaderError as err:
+        raise located_reader_error(err, text) from None
     finally:
         loader.dispose()
     return data, Locator(root, file)
