@@ -6,18 +6,32 @@ A run is one (variant, task, seed). It runs the workflow in a worker process wit
 ``command``, ``world`` and ``seed`` (plus the variant's and ``-i`` inputs), then is scored from
 what the run record holds: the workflow's outputs ``graph``, ``schedule`` and ``simulation``,
 or the refusal or error that ended it. The seed varies the robots' start positions.
+
+Before the first run every variant is validated (its workflow, and the matrix and ``-i`` values
+against the workflow's input types): a bench that cannot run is a user error (exit 2), never a
+table of zero scores. A run that ends in a user error (an unknown planner, a missing provider key)
+stops the bench the same way. Each row carries a fingerprint of everything that defines its run
+(the content of the workflow and of every file it extends or names, the inputs, the task, the seed,
+pipflow's version); ``--resume`` reuses a row only when its fingerprint is the run's, and refuses,
+saying what differs, when the bench folder holds rows of another configuration.
+
+Besides the outcome (SR, as in the paper), each run is scored on understanding: whether the goal
+and robot rules it resolved (outputs ``goal`` and ``constraints``) equal the task's gold
+(``understood``), and whether a run that went on to execute did so with a goal or rules other than
+the gold (``misread``, the worst failure: robots would move).
 """
 from __future__ import annotations
 
 import argparse
 import csv
 import datetime as _dt
+import hashlib
 import itertools
 import json
 import os
 import sys
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -37,6 +51,7 @@ class RunSpec:
     world_path: str
     runs_dir: str
     use_cache: bool = True
+    fingerprint: dict | None = None  # what defines the run (see fingerprint()); None: not computed
 
 
 @dataclass
@@ -80,7 +95,8 @@ def variants(matrix: dict[str, list[str]]) -> list[tuple[str, dict[str, str]]]:
 
 
 def run_one(spec: RunSpec) -> dict:
-    """Run and score one (variant, task, seed) in this process; never raises."""
+    """Run and score one (variant, task, seed) in this process; never raises. A run that ends in
+    a user error is marked ``user_error`` (the bench stops on it: see :func:`_execute`)."""
     from pipflow.engine.executor import RunOptions
     from pipflow.engine.runner import run_workflow
     from pipflow.benchdomains import domain_named
@@ -97,6 +113,8 @@ def run_one(spec: RunSpec) -> dict:
         result = run_workflow(spec.workflow, inputs, runs_dir=spec.runs_dir, inputs_from_text=True,
                               options=RunOptions(use_cache=spec.use_cache))
         row["status"], row["run_dir"] = result.status, str(result.run_dir)
+        row["error_kind"] = type(result.exception).__name__ if result.exception is not None else None
+        row["user_error"] = isinstance(result.exception, UserError)
         outputs = result.outputs or {}
         if result.status == "refused":
             refusal = result.error
@@ -106,8 +124,13 @@ def run_one(spec: RunSpec) -> dict:
         row["stage_seconds"] = metrics.get("step_seconds", {})
     except Exception as err:  # an invalid workflow or input: the run never started
         row["status"], error = "error", f"{type(err).__name__}: {err}"
-    score = domain_named(task.get("domain")).score(spec.world_path, task, outputs, refusal, error)
-    row.update(score)
+        row["error_kind"], row["user_error"] = type(err).__name__, isinstance(err, UserError)
+    domain = domain_named(task.get("domain"))
+    row.update(domain.score(spec.world_path, task, outputs, refusal, error))
+    if domain.understand is not None:
+        row.update(domain.understand(task, outputs, row["status"], row.get("error_kind")))
+    else:
+        row.update({"understood": None, "misread": None, "understanding": "not measured for this domain"})
     row["seconds"] = round(time.perf_counter() - started, 3)
     return row
 
@@ -158,12 +181,110 @@ def build_specs(config: BenchConfig, tasks_doc: dict, world_path: str) -> list[R
     return specs
 
 
+def _sha(data: Any) -> str:
+    text = data if isinstance(data, str) else json.dumps(data, sort_keys=True, default=str, ensure_ascii=False)
+    return hashlib.sha256(text.encode("utf-8")).hexdigest()
+
+
+def check_variants(specs: list[RunSpec]) -> dict[tuple, dict[str, str]]:
+    """Validate every variant before the first run: its workflow file (and every file it extends),
+    and its inputs (matrix, ``-i`` and per-task values) against the workflow's declared types, with
+    each task's command and seed as a run will get them. Returns, per (workflow, inputs), the
+    content hash of every file the run reads (see :func:`pipflow.executors.build_bundle`: the
+    workflow and its extends, the files its path inputs name, its prompt templates).
+
+    Raises :class:`UserError` naming the variant (and the task, when only one task's inputs are
+    wrong): a bench that cannot run is an error of the bench, not a table of zero scores."""
+    from pipflow.engine.registry import default_registry
+    from pipflow.engine.runner import find_workflow, resolve_inputs
+    from pipflow.engine.validate import load_workflow
+    from pipflow.executors import build_bundle
+
+    registry = default_registry()
+    files: dict[tuple, dict[str, str]] = {}
+    loaded: dict[str, Any] = {}
+    checked: set[tuple] = set()
+    for spec in specs:
+        given = _given(spec)
+        where = f"bench variant {spec.variant!r}"
+        try:
+            if spec.workflow not in loaded:
+                loaded[spec.workflow] = load_workflow(find_workflow(spec.workflow), registry)
+            wf = loaded[spec.workflow]
+            key = (spec.workflow, tuple(sorted(given.items())))
+            if key not in files:
+                bundle = build_bundle(spec.workflow, {**given, "world": spec.world_path})
+                files[key] = {rel: _sha(text) for rel, text in bundle.files.items()}
+            task_inputs = tuple(sorted((spec.task.get("inputs") or {}).items()))
+            if (key, task_inputs, spec.task["id"]) not in checked:
+                checked.add((key, task_inputs, spec.task["id"]))
+                resolve_inputs(wf, _run_inputs(spec), from_text=True)
+        except UserError as err:
+            raise UserError(f"{where} (task {spec.task['id']!r}): {err}; nothing was run") from None
+        except (OSError, UnicodeDecodeError) as err:  # a file the workflow names cannot be read
+            raise UserError(f"{where}: {err}; nothing was run") from None
+    return files
+
+
+def _given(spec: RunSpec) -> dict[str, str]:
+    """The inputs a variant sets (matrix and ``-i``), as text."""
+    return {k: (str(v) if v is not None else "") for k, v in spec.inputs.items()}
+
+
+def _run_inputs(spec: RunSpec) -> dict[str, Any]:
+    """The inputs one run gets (as :func:`run_one` passes them)."""
+    return {"command": spec.task["command"], "world": spec.world_path, "seed": spec.seed,
+            **(spec.task.get("inputs") or {}), **spec.inputs}
+
+
+def fingerprint(spec: RunSpec, files: dict[str, str]) -> dict:
+    """What defines one run: the hashes of the files it reads, its inputs, its task, its seed and
+    pipflow's version. Two runs with equal fingerprints are the same experiment."""
+    from pipflow import __version__
+
+    return {"files": dict(sorted(files.items())), "inputs": {k: str(v) for k, v in sorted(_given(spec).items())},
+            "task": spec.task, "seed": int(spec.seed), "pipflow": __version__}
+
+
+def fingerprint_hash(fp: dict) -> str:
+    return _sha(fp)
+
+
+def differences(old: dict | None, new: dict) -> list[str]:
+    """What differs between a stored row's fingerprint and this run's, in words."""
+    if not isinstance(old, dict):
+        return ["the stored row has no fingerprint (written by an older pipflow)"]
+    out = []
+    if old.get("pipflow") != new["pipflow"]:
+        out.append(f"pipflow {old.get('pipflow')} -> {new['pipflow']}")
+    of, nf = old.get("files") or {}, new["files"]
+    changed = sorted(k for k in set(of) & set(nf) if of[k] != nf[k])
+    if changed:
+        out.append(f"changed file(s): {', '.join(changed)}")
+    if set(of) != set(nf):
+        out.append(f"other files: {', '.join(sorted(set(of) ^ set(nf)))}")
+    oi, ni = old.get("inputs") or {}, new["inputs"]
+    for k in sorted(set(oi) | set(ni)):
+        if oi.get(k) != ni.get(k):
+            out.append(f"input {k}: {oi.get(k, '(unset)')!r} -> {ni.get(k, '(unset)')!r}")
+    ot, nt = old.get("task") or {}, new["task"]
+    keys = sorted(k for k in set(ot) | set(nt) if ot.get(k) != nt.get(k))
+    if keys:
+        out.append(f"task {nt.get('id')!r}: {', '.join(keys)} changed")
+    if old.get("seed") != new["seed"]:
+        out.append(f"seed {old.get('seed')} -> {new['seed']}")
+    return out or ["the fingerprints differ"]
+
+
 def run_bench(config: BenchConfig, progress: bool = True, on_row=None) -> dict:
     """Run the whole bench; write results into ``config.out``; return results.json's content.
 
-    Each finished run's row is written at once to ``OUT/runs/<variant>/<task>/<seed>.json``; with
-    ``config.resume`` the runs whose row file exists are not run again. ``on_row(row)`` is called
-    after each row is stored (tests use it to interrupt or to kill a worker)."""
+    Every variant is validated first (:func:`check_variants`). Each finished run's row is written
+    at once to ``OUT/runs/<variant>/<task>/<seed>.json`` with its fingerprint; with
+    ``config.resume`` the runs whose row file exists with the same fingerprint are not run again,
+    and a row with another fingerprint is refused (:class:`UserError` saying what differs).
+    ``on_row(row)`` is called after each row is stored (tests use it to interrupt or to kill a
+    worker)."""
     from pipflow.executors import make_executor, run_key
     from pipflow.benchdomains import domain_of
 
@@ -173,15 +294,15 @@ def run_bench(config: BenchConfig, progress: bool = True, on_row=None) -> dict:
         config.workflow = tasks_doc.get("workflow") or domain.workflow
     world_path = str(tasks_doc["world_path"] if "world_path" in tasks_doc else
                      (Path(config.tasks_file).parent / tasks_doc["world"]).resolve())
+    specs = build_specs(config, tasks_doc, world_path)
+    files = check_variants(specs)
+    specs = [replace(s, fingerprint=fingerprint(s, files[(s.workflow, tuple(sorted(_given(s).items())))]))
+             for s in specs]
     out = Path(config.out)
     out.mkdir(parents=True, exist_ok=True)
-    specs = build_specs(config, tasks_doc, world_path)
     done: dict[tuple, dict] = {}
     if config.resume:
-        for spec in specs:
-            row = read_row(out, run_key(spec))
-            if row is not None:
-                done[run_key(spec)] = row
+        done = _resumable(out, specs)
     todo = [s for s in specs if run_key(s) not in done]
     executor = make_executor(config.executor, config.jobs, llm_limits=config.llm_limits,
                              records_dir=out / "records")
@@ -195,16 +316,42 @@ def run_bench(config: BenchConfig, progress: bool = True, on_row=None) -> dict:
     return results
 
 
+def _resumable(out: Path, specs: list[RunSpec]) -> dict[tuple, dict]:
+    """The stored rows of runs with this configuration; refuses rows of another one."""
+    from pipflow.executors import run_key
+
+    done: dict[tuple, dict] = {}
+    clashes: list[str] = []
+    for spec in specs:
+        row = read_row(out, run_key(spec))
+        if row is None:
+            continue
+        if row.get("config_hash") == fingerprint_hash(spec.fingerprint):
+            done[run_key(spec)] = row
+        else:
+            v, t, s = run_key(spec)
+            clashes.append(f"{v}/{t}/seed {s}: " + "; ".join(differences(row.get("fingerprint"), spec.fingerprint)))
+    if clashes:
+        more = f" (and {len(clashes) - 3} more)" if len(clashes) > 3 else ""
+        raise UserError(f"{out}: --resume refused: {len(clashes)} stored row(s) were made with another "
+                        f"configuration than this bench's: " + " | ".join(clashes[:3]) + more
+                        + "; resume with the same configuration, or use another --out")
+    return done
+
+
 def _execute(executor, todo: list[RunSpec], done: dict, out: Path, progress: bool, total: int,
              on_row=None) -> int:
     """Run ``todo`` on the executor; store each row as it arrives (first arrival wins: a run
-    retried after a worker died counts once). Returns how many runs finished here."""
+    retried after a worker died counts once), stamped with its run's fingerprint. A run that
+    ended in a user error stops the bench (:class:`UserError`; its row is not stored, so a
+    ``--resume`` after the fix runs it). Returns how many runs finished here."""
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 
     from pipflow.engine.store import write_json
     from pipflow.executors import run_key
 
     fresh = 0
+    by_key = {run_key(s): s for s in todo}
     columns = [TextColumn(f"bench ({executor.name})"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn()]
     with Progress(*columns, disable=not progress, transient=False) as bar:
         task_id = bar.add_task("runs", total=total, completed=total - len(todo))
@@ -214,6 +361,14 @@ def _execute(executor, todo: list[RunSpec], done: dict, out: Path, progress: boo
             key = run_key(row)
             if key in done and done[key].get("status") != "lost":
                 return
+            if row.get("user_error"):
+                v, t, s = key
+                raise UserError(f"bench stopped: run {v}/{t}/seed {s} could not be done as configured: "
+                                f"{row.get('error')} (the rows finished before are kept)")
+            spec = by_key.get(key)
+            if spec is not None and spec.fingerprint is not None:
+                row["fingerprint"] = spec.fingerprint
+                row["config_hash"] = fingerprint_hash(spec.fingerprint)
             done[key] = row
             if row.get("status") != "lost":  # an executor failure is not stored: --resume reruns it
                 write_json(row_path(out, key), row)
@@ -235,19 +390,43 @@ def _results(rows: list[dict], tasks: list[dict], config: BenchConfig, wall: flo
         by_variant.setdefault(row["variant"], []).append(row)
     variant_results = []
     for name, vrows in by_variant.items():
-        task_rows = [aggregate_task(t["id"], [r for r in vrows if r["task"] == t["id"]]) for t in tasks]
+        task_rows = []
+        for t in tasks:
+            trows = [r for r in vrows if r["task"] == t["id"]]
+            task_rows.append({**aggregate_task(t["id"], trows), **understanding(trows),
+                              **({"construction": t["construction"]} if t.get("construction") else {})})
         stage = {}
         for r in vrows:
             for k, v in (r.get("stage_seconds") or {}).items():
                 stage.setdefault(k, []).append(v)
-        variant_results.append({"name": name, "summary": summarize(task_rows), "tasks": task_rows,
+        variant_results.append({"name": name, "summary": {**summarize(task_rows), **understanding(vrows)},
+                                "tasks": task_rows, "constructions": _by_construction(vrows, tasks),
                                 "stage_seconds": {k: sum(v) / len(v) for k, v in stage.items()}})
     first = variant_results[0]
-    return {"summary": first["summary"], "tasks": first["tasks"], "variants": variant_results,
+    return {"summary": first["summary"], "tasks": first["tasks"], "constructions": first["constructions"],
+            "variants": variant_results,
             "config": {"tasks": str(config.tasks_file), "domain": domain, "workflow": config.workflow, "seeds": config.seeds,
                        "jobs": config.jobs, "executor": config.executor, "matrix": config.matrix, "inputs": config.inputs},
             "wall_seconds": round(wall, 3),
             "created": _dt.datetime.now(_dt.timezone.utc).isoformat(timespec="seconds")}
+
+
+def understanding(rows: list[dict]) -> dict:
+    """``understood``: the share of runs whose resolved goal and rules equal the gold (None when
+    no run of these was measured); ``misread``: how many runs executed another goal or rules."""
+    measured = [r for r in rows if r.get("understood") is not None]
+    return {"understood": (sum(1 for r in measured if r["understood"]) / len(measured)) if measured else None,
+            "misread": sum(1 for r in rows if r.get("misread"))}
+
+
+def _by_construction(rows: list[dict], tasks: list[dict]) -> dict[str, dict]:
+    """Understanding per ``construction`` label of the task file (tasks without one are left out)."""
+    label = {t["id"]: t.get("construction") for t in tasks}
+    groups: dict[str, list[dict]] = {}
+    for r in rows:
+        if label.get(r["task"]):
+            groups.setdefault(label[r["task"]], []).append(r)
+    return {k: {"runs": len(v), **understanding(v)} for k, v in sorted(groups.items())}
 
 
 def _fmt(value: Any, digits: int = 1) -> str:
@@ -256,29 +435,46 @@ def _fmt(value: Any, digits: int = 1) -> str:
     return f"{value:.{digits}f}"
 
 
+def _pct(value: float | None) -> str:
+    return "--" if value is None else f"{100 * value:.0f}"
+
+
 def markdown_table(results: dict) -> str:
-    """The paper's table for the task file's domain: for the warehouse, per task SR (%) and
-    travel cost max/avg (m); a domain may group it otherwise (household: per category)."""
+    """The paper's table for the task file's domain: for the warehouse, per task SR (%),
+    understood (%), misread runs and travel cost max/avg (m); a domain may group it otherwise
+    (household: per category), and the understanding summary follows its table."""
     from pipflow.benchdomains import domain_named
 
     config = results.get("config") or {}
     domain = domain_named(config.get("domain"))
     if domain.table is not None:
-        return domain.table(results, Path(config["tasks"]))
+        lines = [domain.table(results, Path(config["tasks"]))]
+        for variant in results["variants"]:
+            s = variant["summary"]
+            lines.append(f"understood: {_pct(s.get('understood'))}%  misread: {s.get('misread', 0)} run(s)"
+                         + (f"  ({variant['name']})" if len(results["variants"]) > 1 else ""))
+        return "\n".join(lines)
     lines = []
     for variant in results["variants"]:
         if len(results["variants"]) > 1:
             lines.append(f"### {variant['name']}\n")
-        lines += ["| Task | SR (%) | TC max/avg all robots/avg robots that moved (m) | GCR | Exe | RU | makespan (s) | error |",
-                  "|---|---|---|---|---|---|---|---|"]
+        lines += ["| Task | SR (%) | understood (%) | misread | TC max/avg (m) | GCR | Exe | RU | makespan (s) | error |",
+                  "|---|---|---|---|---|---|---|---|---|---|"]
         for t in variant["tasks"]:
             err = (t.get("error") or "").replace("|", "/").replace("\n", " ")[:80]
-            lines.append(f"| {t['id']} | {100 * t['sr']:.0f} | {_fmt(t['tc_max'])}/{_fmt(t['tc_avg'])}/{_fmt(t.get('tc_avg_moved'))} | "
+            lines.append(f"| {t['id']} | {100 * t['sr']:.0f} | {_pct(t.get('understood'))} | {t.get('misread', 0)} | "
+                         f"{_fmt(t['tc_max'])}/{_fmt(t['tc_avg'])} | "
                          f"{t['gcr']:.2f} | {t['exe']:.2f} | {t['ru']:.2f} | {_fmt(t.get('makespan'))} | {err} |")
         s = variant["summary"]
-        lines.append(f"| **all** ({s['runs']} runs) | {100 * s['sr']:.0f} | {_fmt(s['tc_max'])}/{_fmt(s['tc_avg'])}/{_fmt(s.get('tc_avg_moved'))} | "
+        lines.append(f"| **all** ({s['runs']} runs) | {100 * s['sr']:.0f} | {_pct(s.get('understood'))} | "
+                     f"{s.get('misread', 0)} | {_fmt(s['tc_max'])}/{_fmt(s['tc_avg'])} | "
                      f"{s['gcr']:.2f} | {s['exe']:.2f} | {s['ru']:.2f} | | |")
         lines.append("")
+        if variant.get("constructions"):
+            lines += ["| Construction | runs | understood (%) | misread |", "|---|---|---|---|"]
+            for name, c in variant["constructions"].items():
+                lines.append(f"| {name} | {c['runs']} | {_pct(c['understood'])} | {c['misread']} |")
+            lines.append("")
     lines.append(f"wall time: {results['wall_seconds']:.1f} s")
     return "\n".join(lines)
 
@@ -312,10 +508,18 @@ def bench_main(args: argparse.Namespace) -> int:
     if resume and not args.out:
         raise UserError("--resume needs --out DIR (the bench directory to complete)")
     limits = getattr(args, "llm_concurrency", None) or os.environ.get("PIPFLOW_LLM_CONCURRENCY") or "4"
+    if args.seeds < 1:
+        raise UserError(f"--seeds {args.seeds}: a bench runs each task at least once (--seeds 1 or more)")
+    if args.jobs is not None and args.jobs < 1:
+        raise UserError(f"--jobs {args.jobs}: expected 1 or more parallel runs (unset: one per CPU)")
+    inputs = _key_values(args.input or [])
+    matrix = parse_matrix(args.matrix)
+    # the servers the user names here may receive provider keys (pipflow.language.llm.user_named)
+    os.environ["PIPFLOW_GIVEN_INPUTS"] = json.dumps([*inputs.values(), *(v for vs in matrix.values() for v in vs)])
     config = BenchConfig(
-        tasks_file=tasks_file, workflow=args.workflow, seeds=max(1, args.seeds),
+        tasks_file=tasks_file, workflow=args.workflow, seeds=args.seeds,
         jobs=_workers(args.jobs), out=Path(args.out or f"bench-out/{stamp}"),
-        matrix=parse_matrix(args.matrix), inputs=_key_values(args.input or []), use_cache=not args.no_cache,
+        matrix=matrix, inputs=inputs, use_cache=not args.no_cache,
         executor=executor, resume=resume, llm_limits=parse_limits(limits))
     results = run_bench(config, progress=not args.quiet)
     print(markdown_table(results))
