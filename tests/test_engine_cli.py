@@ -172,3 +172,39 @@ def test_options_before_the_command_are_honoured(engine_env, capsys):
     assert capsys.readouterr().out == ""  # -q: no outputs printed
     assert main(["--runs-dir", str(runs), "runs"]) == 0
     assert "loop-demo" in capsys.readouterr().out
+
+
+def test_graph_png_layout_frames_each_loop_around_its_own_steps_only(tmp_path):
+    """A loop of two steps next to a branch that runs beside it: the frame holds the loop's steps
+    and nothing else, no two boxes overlap, and arrows implied by others are left out."""
+    from pipflow.engine.graphview import _labels, layout
+    from pipflow.engine.validate import dependency_graph, load_workflow
+
+    wf_file = tmp_path / "branch.yaml"
+    wf_file.write_text("""pipflow: 1
+name: branch
+steps:
+  - {id: start, uses: core.value, with: {value: 1}}
+  - {id: side, uses: core.value, with: {value: "${start.value}"}}
+  - id: refine
+    loop:
+      max: 2
+      until: ${second.value > 0}
+      steps:
+        - {id: first, uses: core.value, with: {value: "${start.value}"}}
+        - {id: second, uses: core.value, with: {value: "${first.value}"}}
+  - {id: after, uses: core.value, with: {value: "${second.value + side.value + start.value}"}}
+""")
+    wf = load_workflow(wf_file)
+    graph = dependency_graph(wf)
+    pos, width, frames = layout(wf, graph, _labels(wf))
+    x0, y0, x1, y1 = frames["refine"]
+    inside = {n for n, (x, y) in pos.items() if x0 <= x <= x1 and y0 <= y <= y1}
+    assert inside == {"first", "second"}
+    boxes = [(x - width[n] / 2, x + width[n] / 2, y) for n, (x, y) in pos.items()]
+    for i, (a0, a1, ay) in enumerate(boxes):
+        for b0, b1, by in boxes[i + 1:]:
+            assert ay != by or a1 <= b0 or b1 <= a0  # same row: side by side, never overlapping
+    out = tmp_path / "g.png"
+    assert main(["graph", str(wf_file), "--format", "png", "-o", str(out)]) == 0
+    assert out.stat().st_size > 5000
