@@ -9,9 +9,11 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 from pipflow.errors import InputError, WorldError
-from pipflow.goalcounts import describe, holds, value_problems
+from pipflow.goalcounts import describe, holds, limits, value_problems
 from pipflow.pddl.common import parse, stock_goals
 from pipflow.pddl.feasibility import infeasibility_reasons
 from pipflow.pddl.verifier import goal_problems, verify_plan
@@ -277,3 +279,78 @@ def test_a_bound_goal_no_final_state_meets_is_refused_before_robots_move(tmp_pat
     assert "the goal puts at least 32 units on shelf3 but its capacity is 30" in result.error
     ran = {d.name for d in (result.run_dir / "steps").iterdir()}
     assert {"verify", "refuse"} <= ran and not ran & {"graph", "allocate", "schedule", "simulate"}
+
+
+# ---------------------------------------------------------------- properties
+@st.composite
+def small_world_and_goal(draw):
+    """2-3 shelves x 1-3 products with random stock within capacity, and a goal of random counts
+    and bounds (often impossible ones)."""
+    shelves = [f"s{i}" for i in range(draw(st.integers(2, 3)))]
+    products = [f"p{j}" for j in range(draw(st.integers(1, 3)))]
+    cap = {s: draw(st.integers(0, 8)) for s in shelves}
+    stock = {}
+    for s in shelves:
+        left, stock[s] = cap[s], {}
+        for p in products:
+            n = draw(st.integers(0, left))
+            left -= n
+            if n:
+                stock[s][p] = n
+    world = {"shelves": {s: {"capacity": cap[s]} for s in shelves}, "products": {p: {} for p in products},
+             "stock": stock}
+    goal: dict = {}
+    for s in shelves:
+        for p in products:
+            kind = draw(st.sampled_from(["none", "none", "exact", "least", "most", "both"]))
+            a, b = sorted(draw(st.lists(st.integers(0, 9), min_size=2, max_size=2)))
+            value = {"exact": a, "least": {"at_least": a}, "most": {"at_most": b},
+                     "both": {"at_least": a, "at_most": b}}.get(kind)
+            if value is not None:
+                goal.setdefault(s, {})[p] = value
+    return world, goal
+
+
+def _exists_final_state(world: dict, goal: dict) -> bool:
+    """Ground truth by an integer program (scipy's HiGHS MILP): final counts x[s, p] >= 0 within
+    each goal value, every unit of each product on some shelf, each shelf within capacity."""
+    import numpy as np
+    from scipy.optimize import Bounds, LinearConstraint, milp
+
+    shelves, products = list(world["shelves"]), list(world["products"])
+    cells = [(s, p) for s in shelves for p in products]
+    lo, hi = [], []
+    for s, p in cells:
+        low, high = limits(goal[s][p]) if p in goal.get(s, {}) else (0, None)
+        lo.append(low)
+        hi.append(np.inf if high is None else high)
+    rows, lb, ub = [], [], []
+    for p in products:  # conservation
+        rows.append([1.0 if c[1] == p else 0.0 for c in cells])
+        units = sum(world["stock"].get(s, {}).get(p, 0) for s in shelves)
+        lb.append(units)
+        ub.append(units)
+    for s in shelves:  # capacity
+        rows.append([1.0 if c[0] == s else 0.0 for c in cells])
+        lb.append(0)
+        ub.append(world["shelves"][s]["capacity"])
+    res = milp(np.zeros(len(cells)), constraints=LinearConstraint(np.array(rows), lb, ub),
+               integrality=np.ones(len(cells)), bounds=Bounds(lo, hi))
+    return res.status == 0
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(small_world_and_goal())
+def test_refusal_exactly_when_no_final_state_exists(case):
+    world, goal = case
+    reasons = infeasibility_reasons(world, goal)
+    assert (not reasons) == _exists_final_state(world, goal), reasons
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(small_world_and_goal())
+def test_written_goals_read_back_unchanged(case):
+    _, goal = case
+    goal = {f"shelf{int(s[1:]) + 1}": {f"product{int(p[1:]) + 1}": v for p, v in items.items()}
+            for s, items in goal.items()}
+    assert stock_goals(parse(DOMAIN, write_problem(WORLD, goal)), bounds=True) == (goal, [])
