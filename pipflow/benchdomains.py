@@ -16,6 +16,7 @@ from typing import Any, Callable
 import yaml
 
 from pipflow.errors import UserError
+from pipflow.yamlsource import read_source, safe_load
 
 
 @dataclass(frozen=True)
@@ -151,8 +152,8 @@ def domain_named(name: str | None) -> BenchDomain:
 
 def domain_of(tasks_file: str | Path) -> BenchDomain:
     """The domain a task file declares (read cheaply; validation comes with loading)."""
-    try:
-        data = yaml.safe_load(Path(tasks_file).read_text(encoding="utf-8"))
-    except (OSError, yaml.YAMLError):
+    try:  # the shared bounded reader: no /dev/zero, no alias bomb, no deep nesting
+        data = safe_load(read_source(tasks_file, "task file"))
+    except (UserError, yaml.YAMLError):
         data = None  # the loader reports the problem with its location
     return domain_named(data.get("domain") if isinstance(data, dict) else None)
