@@ -22,7 +22,7 @@ _RULES = r"""
 start: _sep* item (_sep+ item)* _sep*
 _sep: COMMA | END | @AND | @THEN | @BUT
 
-?item: change | toggle | put | gap | away | trash | request | observe | cue
+?item: change | toggle | put | gap | away | trash | request | ensure | observe | cue
 
 change: _vstate @UP? things via? exception?
       | _vstate things @UP via? exception?
@@ -51,6 +51,7 @@ bare: noun
 
 gap: things target
    | things onoff
+   | things @TOO
 
 away: @V_PUT @AWAY things | @V_PUT things @AWAY | @V_PUT things @BACK | @V_PUT @BACK things
     | @V_TIDY @UP? things | @V_TIDY things @UP? | @V_CLEAN @UP things | @V_CLEAN things @UP
@@ -59,9 +60,10 @@ trash: @V_TRASH things | @V_THROW @AWAY things | @V_THROW things @AWAY | @V_THRO
 
 request: @V_LEAVE things state
        | @V_MAKE things state
-       | @V_MAKE @SURE @THAT? things (@IS | @SHOULD @BE) state
        | @SUBJ? (@WANT | @NEED) things (@TO @BE)? state
        | things @SHOULD @BE? state
+ensure: @V_MAKE @SURE @THAT? wish ((COMMA | @AND | COMMA @AND) wish)*
+wish: things (@IS | @SHOULD @BE) state
 state: @ADJ | @V_OPEN | @V_SHUT | @V_CLEAN | @V_WARM | @V_STATE | on | off | @TOGGLED onoff
 
 observe: things @IS state
@@ -69,7 +71,7 @@ observe: things @IS state
 cue: @NOBODY @IS? activity (@TO | @ON | @AT)? things? @ANYMORE?
    | @SUBJ? @DONOT @NEED things (on | @ANYMORE)?
    | things @IS @NOT @NEEDED @ANYMORE?
-   | @IT @IS @INTENS* lightcue @HERE?
+   | @IT @IS (@INTENS | @TOO)* lightcue @HERE?
    | @SUBJ @CANNOT @SEE @HERE?
 activity: @ACTIVITY
 lightcue: @LIGHTCUE

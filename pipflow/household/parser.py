@@ -334,7 +334,10 @@ class Builder:
 
     def target(self, node: Tree) -> dict:
         p = self._sub(node, "place") or self._sub(node, "bare")
-        return {**self.noun(self._sub(p, "noun")), "words": _words(self.tags, node)}
+        out = {**self.noun(self._sub(p, "noun")), "words": _words(self.tags, node)}
+        if any(self._cls(t) == "ON" for t in self._tokens(node)):
+            out["prep"] = "on"   # a surface: "on the fridge" is not "in the fridge"
+        return out
 
     # statements --------------------------------------------------------------------------
     def statement(self, node: Tree) -> dict:
@@ -358,10 +361,12 @@ class Builder:
                 st["from"] = self.place(self._sub(src, "place"))
             if tgt is not None:
                 st["to"] = self.target(tgt)
-        elif kind == "gap" and self._sub(node, "target") is not None:   # "... and the pillow on the bed"
-            st = {"op": "put", "things": things, "to": self.target(self._sub(node, "target"))}
-        elif kind == "gap":                                              # "... and the stove on"
-            st = {"op": "change", "things": things, "to": self.state(node)}
+        elif kind == "gap":   # the verb is elided: "... and the pillow on the bed", "... and the stove on", "... and the cup too"
+            st = {"op": "repeat", "things": things}
+            if self._sub(node, "target") is not None:
+                st["to"] = self.target(self._sub(node, "target"))
+            elif self._sub(node, "onoff") is not None:
+                st["state"] = self.state(node)
         elif kind == "away":
             st = {"op": "put_away", "things": things}
         elif kind == "trash":
@@ -396,6 +401,17 @@ class Builder:
             st.update(to="off", cue="not needed")
         return st
 
+    def ensure(self, node: Tree) -> list[dict]:
+        """"make sure the oven is closed and the big light is off": one change per wish."""
+        out = []
+        for wish in self._subs(node, "wish"):
+            out.append({"op": "change", "things": self.things(self._sub(wish, "things")),
+                        "to": self.state(self._sub(wish, "state")), "words": _words(self.tags, wish)})
+        return out
+
     def order(self, tree: Tree) -> dict:
         items = [c for c in tree.children if isinstance(c, Tree)]
-        return {"domain": "household", "command": self.command, "statements": [self.statement(i) for i in items]}
+        statements: list[dict] = []
+        for item in items:
+            statements += self.ensure(item) if item.data == "ensure" else [self.statement(item)]
+        return {"domain": "household", "command": self.command, "statements": statements}

@@ -77,6 +77,7 @@ class Resolver:
         self.last: list[str] = []
         self.picked: dict[str, str] = {}          # objects taken with no place yet -> words
         self.observed: list[tuple[list[str], str, str]] = []   # (names, state, words), unused so far
+        self.previous: dict | None = None                      # the statement an elided verb repeats
 
     # selectors -------------------------------------------------------------------------
     def _candidates(self, sel: dict, words: str) -> tuple[list[str], bool]:
@@ -134,7 +135,7 @@ class Resolver:
         if implicit and not plural:
             # a category named in the singular: a mass ("the fruit", bare "light") means all of
             # it; otherwise it names one thing ("the lamp"), asked back when there are several
-            plural = sel.get("det") is None or sel["noun"]["words"] in MASS_NOUNS
+            plural = sel.get("det") is None or sel["noun"]["words"].split()[-1] in MASS_NOUNS
         if "count" in sel:
             if implicit:
                 return names, True   # the caller turns a category count into a count condition
@@ -232,7 +233,34 @@ class Resolver:
             out = [(n, e) for n, e in out if n not in gone]
         return list(dict.fromkeys(out))
 
+    def repeat(self, st: dict) -> dict:
+        """The statement an elided verb stands for: the one before, with these things (and the
+        place or state the gap names): "put the pen on the desk and the pillow on the bed",
+        "turn the lamp off and the stove on", "heat the egg and the bread too"."""
+        prev, words = self.previous, st["words"]
+        out = {"things": st["things"], "words": words}
+        if "state" in st:
+            return {**out, "op": "change", "to": st["state"]}
+        if prev is None or prev["op"] in ("observe", "cue"):
+            if "to" in st:
+                return {**out, "op": "put", "to": st["to"]}
+            raise TranslationError(f"'{words}': which action? (nothing before it to repeat)")
+        if prev["op"] == "change":
+            via = st.get("to") or prev.get("via")
+            return {**out, "op": "change", "to": prev["to"], **({"via": via} if via else {})}
+        if prev["op"] == "put":
+            to = st.get("to") or prev.get("to")
+            if to is None:
+                raise TranslationError(f"'{words}': where to? name a place (e.g. 'in the fridge')")
+            return {**out, "op": "put", "to": to}
+        if "to" in st:
+            return {**out, "op": "put", "to": st["to"]}
+        return {**out, "op": prev["op"]}
+
     def statement(self, st: dict) -> None:
+        if st["op"] == "repeat":
+            st = self.repeat(st)
+        self.previous = st
         op, words = st["op"], st["words"]
         if op == "change":
             self.change(st, words)
@@ -308,6 +336,9 @@ class Resolver:
             self.last = [n for n, _ in named]
             return
         place = self.place_of(st["to"], words)
+        if st["to"].get("prep") == "on" and "openable" in self.world["places"][place]["properties"]:
+            raise TranslationError(f"'{words}': things go in {place}, not on it; the top of {place} is no place "
+                                   "of this world")
         for sel in counted:
             names, implicit = self.select(sel, words, prop="pickupable")
             if not implicit:

@@ -57,6 +57,14 @@ def understand(command: str, world: dict) -> dict:
         assert first_error is not None
         raise first_error
     if len(meant) > 1:
+        # coordination before gapping: "chop the carrot and the onion on the worktop" is one
+        # clause about both, not "chop the carrot" and "(chop) the onion on the worktop"
+        fewest = min(len(order["statements"]) for order, _ in meant.values())
+        simplest = {k: v for k, v in meant.items() if len(v[0]["statements"]) == fewest}
+        if len(simplest) == 1:
+            notes.append("read as one clause with its things coordinated; also readable with an elided verb")
+            meant = simplest
+    if len(meant) > 1:
         goals = [out["goal"] for _, out in meant.values()]
         raise TranslationError(f"{command.strip()!r} can be read in {len(goals)} ways: "
                                + " or ".join(json.dumps(g, sort_keys=True) for g in goals[:2]) + "; say it in other words")
