@@ -206,7 +206,7 @@ def check_variants(specs: list[RunSpec]) -> dict[tuple, dict[str, str]]:
     checked: set[tuple] = set()
     for spec in specs:
         given = _given(spec)
-        where = f"bench variant {spec.variant!r}"
+        where = f"bench variant {spec.variant!r}, nothing was run"
         try:
             if spec.workflow not in loaded:
                 loaded[spec.workflow] = load_workflow(find_workflow(spec.workflow), registry)
@@ -215,14 +215,17 @@ def check_variants(specs: list[RunSpec]) -> dict[tuple, dict[str, str]]:
             if key not in files:
                 bundle = build_bundle(spec.workflow, {**given, "world": spec.world_path})
                 files[key] = {rel: _sha(text) for rel, text in bundle.files.items()}
-            task_inputs = tuple(sorted((spec.task.get("inputs") or {}).items()))
-            if (key, task_inputs, spec.task["id"]) not in checked:
-                checked.add((key, task_inputs, spec.task["id"]))
-                resolve_inputs(wf, _run_inputs(spec), from_text=True)
         except UserError as err:
-            raise UserError(f"{where} (task {spec.task['id']!r}): {err}; nothing was run") from None
+            raise UserError(f"{where}: {err}") from None
         except (OSError, UnicodeDecodeError) as err:  # a file the workflow names cannot be read
-            raise UserError(f"{where}: {err}; nothing was run") from None
+            raise UserError(f"{where}: {err}") from None
+        task_inputs = tuple(sorted((spec.task.get("inputs") or {}).items()))
+        if (key, task_inputs) not in checked:
+            checked.add((key, task_inputs))
+            try:
+                resolve_inputs(wf, _run_inputs(spec), from_text=True)
+            except UserError as err:
+                raise UserError(f"{where} (task {spec.task['id']!r}): {err}") from None
     return files
 
 

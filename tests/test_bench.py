@@ -177,3 +177,128 @@ def test_cli_rejects_bad_executor_and_resume_without_out(tmp_path):
     proc = subprocess.run([sys.executable, "-m", "pipflow.engine.cli", "bench", str(TASKS), "--resume"],
                           capture_output=True, text=True, timeout=120, cwd=tmp_path)
     assert proc.returncode == 2 and "--resume needs --out" in proc.stderr
+
+
+# --- a bench that cannot run is an error of the bench (issue 13, defects 2, 3, 5) ------------
+
+def cli_bench(tmp_path: Path, *args: str) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "pipflow.engine.cli", "bench", str(TASKS), "--seeds", "1",
+                           "--jobs", "1", "--no-cache", "-q", *args], capture_output=True, text=True,
+                          timeout=240, cwd=tmp_path, env={**os.environ, "PIPFLOW_MODEL": "offline"})
+
+
+def test_a_matrix_value_of_the_wrong_type_stops_the_bench_before_any_run(tmp_path):
+    out = tmp_path / "abc"
+    proc = cli_bench(tmp_path, "--out", str(out), "--matrix", "rounds=2,abc")
+    assert proc.returncode == 2, proc.stderr
+    assert "rounds=abc" in proc.stderr and "'rounds'" in proc.stderr and "nothing was run" in proc.stderr
+    assert "Traceback" not in proc.stderr
+    assert not (out / "runs").exists() and not (out / "results.json").exists()
+
+
+def test_an_invalid_workflow_variant_stops_the_bench_before_any_run(tmp_path):
+    bad = tmp_path / "broken.yaml"
+    bad.write_text("pipflow: 1\nname: broken\nsteps:\n  - id: a\n    uses: no.such.step\n")
+    out = tmp_path / "wf"
+    with pytest.raises(UserError, match=r"(?s)variant 'workflow=broken', nothing was run: .*no\.such\.step"):
+        run_bench(config(out, seeds=1, matrix={"workflow": ["warehouse", str(bad)]}), progress=False)
+    assert not (out / "runs").exists()
+    proc = cli_bench(tmp_path, "--out", str(out), "--workflow", str(bad))
+    assert proc.returncode == 2 and "no.such.step" in proc.stderr and "Traceback" not in proc.stderr
+
+
+def test_an_unknown_planner_is_a_user_error_naming_the_planners_never_a_substitute(tmp_path):
+    out = tmp_path / "planner"
+    proc = cli_bench(tmp_path, "--out", str(out), "-i", "planner=nosuch")
+    assert proc.returncode == 2, proc.stderr
+    assert "unknown planner 'nosuch'" in proc.stderr and "enhsp" in proc.stderr and "pipflow-transport" in proc.stderr
+    assert "Traceback" not in proc.stderr
+    assert not list((out / "runs").rglob("*.json")) if (out / "runs").exists() else True
+    assert not (out / "results.json").exists()
+
+
+def test_resume_with_another_configuration_is_refused_saying_what_differs(local_bench, tmp_path):
+    import shutil
+
+    src, _ = local_bench
+    out = tmp_path / "b"
+    shutil.copytree(src, out)
+    with pytest.raises(UserError, match=r"input planner: '\(unset\)' -> 'enhsp'"):
+        run_bench(config(out, resume=True, inputs={"planner": "enhsp"}), progress=False)
+    # another world file under the same task file: the file's content differs
+    tasks = tmp_path / "tasks" / "tasks.yaml"
+    shutil.copytree(FIXTURE, tasks.parent)
+    moved = tmp_path / "m"
+    run_bench(BenchConfig(tasks_file=tasks, seeds=1, jobs=1, out=moved, use_cache=False), progress=False)
+    world = tasks.parent / "world.yaml"
+    world.write_text(world.read_text() + "\n# edited\n")
+    with pytest.raises(UserError, match=r"changed file\(s\): .*world\.yaml"):
+        run_bench(BenchConfig(tasks_file=tasks, seeds=1, jobs=1, out=moved, use_cache=False, resume=True),
+                  progress=False)
+    # a row of an older pipflow (no fingerprint) is not silently reused either
+    row = json.loads(row_path(out, ("default", "t-move", 0)).read_text())
+    row.pop("fingerprint"), row.pop("config_hash")
+    row_path(out, ("default", "t-move", 0)).write_text(json.dumps(row))
+    with pytest.raises(UserError, match="no fingerprint"):
+        run_bench(config(out, resume=True), progress=False)
+
+
+def test_bench_refuses_zero_seeds_and_jobs(tmp_path):
+    for args in (["--seeds", "0"], ["--jobs", "0"], ["--jobs", "-5"]):
+        proc = cli_bench(tmp_path, "--out", str(tmp_path / "z"), *args)
+        assert proc.returncode == 2 and args[0] in proc.stderr and "Traceback" not in proc.stderr
+
+
+# --- understanding (issue 12, item 9) ---------------------------------------------------------
+
+def test_results_report_understanding_per_task_and_in_the_summary(local_bench):
+    out, results = local_bench
+    assert results["summary"]["understood"] == 1.0 and results["summary"]["misread"] == 0
+    for t in results["tasks"]:
+        assert t["understood"] == 1.0 and t["misread"] == 0
+    table = (out / "table.md").read_text()
+    assert "| Task | SR (%) | understood (%) | misread |" in table and "| t-too-many | 100 | 100 | 0 |" in table
+
+
+def test_a_run_that_executes_another_goal_than_the_gold_is_misread(tmp_path):
+    import shutil
+
+    folder = tmp_path / "gold"
+    shutil.copytree(FIXTURE, folder)
+    (folder / "tasks.yaml").write_text(
+        "world: world.yaml\ntasks:\n"
+        "  - {id: right, construction: set, command: 'There should be 4 product1 in shelf2.', goal: {shelf2: {product1: 4}}}\n"
+        "  - {id: wrong-gold, construction: set, command: 'There should be 4 product1 in shelf2.', goal: {shelf2: {product1: 3}}}\n")
+    results = run_bench(BenchConfig(tasks_file=folder / "tasks.yaml", seeds=1, jobs=1, out=tmp_path / "o",
+                                    use_cache=False), progress=False)
+    tasks = {t["id"]: t for t in results["tasks"]}
+    assert tasks["right"]["understood"] == 1.0 and tasks["right"]["misread"] == 0
+    assert tasks["wrong-gold"]["understood"] == 0.0 and tasks["wrong-gold"]["misread"] == 1
+    assert results["summary"]["understood"] == 0.5 and results["summary"]["misread"] == 1
+    assert results["constructions"] == {"set": {"runs": 2, "understood": 0.5, "misread": 1}}
+    row = read_row(tmp_path / "o", ("default", "wrong-gold", 0))
+    assert "shelf2 product1: gold 3, run 4" in row["understanding"]
+
+
+def test_understanding_compares_bounds_as_ranges_and_rules_as_sets():
+    from pipflow.benchdomains import warehouse_understanding as understand
+
+    task = {"goal": {"s1": {"p1": 3, "p2": {"at_least": 2}}},
+            "constraints": [{"never": ["r1", "r0"], "product": "p1"}, {"only": ["r2"]}]}
+    outputs = {"goal": {"s1": {"p1": {"at_least": 3, "at_most": 3}, "p2": {"at_least": 2}}, "s9": {}},
+               "constraints": [{"only": ["r2"], "words": "only r2"}, {"never": ["r0", "r1"], "product": "p1"}]}
+    assert understand(task, outputs, "succeeded", None) == {
+        "understood": True, "misread": False, "understanding": "goal and rules as the gold"}
+    looser = {**outputs, "goal": {"s1": {"p1": 3, "p2": {"at_least": 1}}}}
+    verdict = understand(task, looser, "succeeded", None)
+    assert verdict["understood"] is False and verdict["misread"] is True
+    assert "s1 p2: gold at least 2, run at least 1" in verdict["understanding"]
+    dropped = {**outputs, "constraints": [{"only": ["r2"]}]}
+    verdict = understand(task, dropped, "failed", "AllocationError")
+    assert verdict["understood"] is False and verdict["misread"] is False and "missing" in verdict["understanding"]
+    assert understand(task, {}, "refused", "Refusal")["understood"] is False  # a feasible task refused
+    for spec in ({"feasible": False, "goal": {"s1": {"p1": 99}}}, {"expect": "refuse", "goal": {}}):
+        assert understand(spec, {}, "refused", "Refusal")["understood"] is True
+        assert understand(spec, {}, "failed", "TranslationError")["understood"] is True
+        executed = understand(spec, {"goal": {"s1": {"p1": 1}}}, "succeeded", None)
+        assert executed["understood"] is False and executed["misread"] is True
