@@ -206,6 +206,46 @@ def test_gold_is_consistent_with_the_world(path):
     assert not problems, "\n".join(problems)
 
 
+def _replay(world: dict, moves: list) -> dict:
+    """Final stock after ``moves``; raises AssertionError on a move the world does not allow."""
+    stock = {s: dict(items) for s, items in world["stock"].items()}
+    for m in moves:
+        assert stock[m.src].get(m.product, 0) >= m.units, f"{m} takes more than {m.src} holds"
+        stock[m.src][m.product] = stock[m.src].get(m.product, 0) - m.units
+        stock[m.dst][m.product] = stock[m.dst].get(m.product, 0) + m.units
+        assert sum(stock[m.dst].values()) <= world["shelves"][m.dst]["capacity"], f"{m} overfills {m.dst}"
+    return stock
+
+
+@pytest.mark.parametrize("path", TASK_FILES, ids=lambda p: p.name)
+def test_the_team_planner_reaches_every_feasible_gold_and_no_infeasible_one(path):
+    """The gold itself must be right about feasibility: for each feasible goal (bounds included)
+    the transport planner's flow plan, replayed move by move within stock and capacities, ends
+    in a state that meets the goal; each written infeasible goal is proven unsolvable. A gold
+    that no plan reaches would score a correct reading as a failure."""
+    from pipflow.pddl.transport import Unsolvable, flow_plan, instance_from_world
+
+    world = _world_of(path)
+    wrong = []
+    for task in _tasks(path):
+        if task.get("expect") == "refuse" or not task["goal"]:
+            continue
+        try:
+            final = _replay(world, flow_plan(instance_from_world(world, task["goal"])))
+        except Unsolvable as exc:
+            if task.get("feasible", True):
+                wrong.append(f"{task['id']}: feasible gold, but the planner proves it unsolvable: {exc}")
+            continue
+        if not task.get("feasible", True):
+            wrong.append(f"{task['id']}: marked infeasible, but the planner reaches it")
+            continue
+        for place, items in task["goal"].items():
+            for item, v in items.items():
+                if not _low(v) <= final[place].get(item, 0) <= _high(v):
+                    wrong.append(f"{task['id']}: the plan leaves {final[place].get(item, 0)} {item} on {place}, gold {v}")
+    assert not wrong, "\n".join(wrong)
+
+
 # ---------------------------------------------------------------------------------------------
 # the judge of the table
 # ---------------------------------------------------------------------------------------------
