@@ -39,7 +39,6 @@ from pipflow.errors import PipflowError, WorldError  # noqa: E402
 LANGUAGE = ROOT / "benchmarks" / "language"
 PAPER_TASKS = ROOT / "benchmarks" / "warehouse" / "tasks.yaml"
 VERDICTS = ("understood", "refused", "misread", "crashed")
-RULE_FIELDS = ("only", "never", "product", "from", "to")  # "words" and other annotations are ignored
 
 
 @dataclass
@@ -113,13 +112,18 @@ def household_goal(goal: dict | None) -> str:
 
 
 def rules(constraints: list[dict] | None) -> list[str]:
-    """Robot rules as a sorted list of canonical strings: robot lists as sets, the rule's
-    source words and any other annotation left out, the order of rules irrelevant."""
-    out = []
+    """Robot rules as a sorted set of canonical strings, compared by what they allow: robot
+    lists as sets; the rule's source words and any other annotation left out; the order and
+    repetition of rules irrelevant (rules are a conjunction); a ``never`` rule split into one
+    rule per robot (never [a, b] forbids exactly what never [a] and never [b] forbid)."""
+    out: set[str] = set()
     for rule in constraints or []:
-        canon = {k: (sorted(rule[k]) if isinstance(rule[k], list) else rule[k])
-                 for k in RULE_FIELDS if k in rule}
-        out.append(json.dumps(canon, sort_keys=True))
+        scope = {k: rule[k] for k in ("product", "from", "to") if k in rule}
+        if "never" in rule:
+            out |= {json.dumps({**scope, "never": [r]}, sort_keys=True) for r in rule["never"]}
+        else:
+            out.add(json.dumps({**scope, **{k: sorted(rule[k]) for k in ("only",) if k in rule}},
+                               sort_keys=True))
     return sorted(out)
 
 
@@ -147,7 +151,8 @@ def judge(task: dict, got: dict | None, error: BaseException | None, domain: str
 
 def read(command: str, world: dict) -> dict:
     """The offline reading of one command (the default path of ``pipflow run``)."""
-    from pipflow.language.generator import offline  # the parser and its grammar load here, once
+    # deferred: the generator loads the whole language stack; the judge and the table need none of it
+    from pipflow.language.generator import offline
     return offline(command, world)
 
 

@@ -262,6 +262,15 @@ def test_judge_compares_bounds_exactly_and_rules_as_sets():
     assert judge(task, unscoped, None)[0] == "misread"
     dropped = {"goal": same["goal"], "constraints": [{"never": ["r3"]}]}
     assert judge(task, dropped, None)[0] == "misread"
+    split = {"goal": same["goal"], "constraints": [{"only": ["r1", "r2"], "product": "x"}, {"never": ["r3"]},
+                                                   {"never": ["r3"]}]}
+    assert judge(task, split, None)[0] == "understood"
+    never_two = {"goal": {}, "constraints": [{"never": ["r1", "r2"], "to": "a"}]}
+    assert judge(never_two, {"goal": {}, "constraints": [{"never": ["r2"], "to": "a"}, {"never": ["r1"], "to": "a"}]},
+                 None)[0] == "understood"
+    assert judge(never_two, {"goal": {}, "constraints": [{"never": ["r1"], "to": "a"}]}, None)[0] == "misread"
+    only_two = {"goal": {}, "constraints": [{"only": ["r1", "r2"]}]}
+    assert judge(only_two, {"goal": {}, "constraints": [{"only": ["r1"]}, {"only": ["r2"]}]}, None)[0] == "misread"
     point = {"goal": {"a": {"x": 4}}}
     assert judge(point, {"goal": {"a": {"x": {"at_least": 4, "at_most": 4}}}}, None)[0] == "understood"
     assert judge(point, {"goal": {"a": {"x": True}}}, None)[0] == "misread"
