@@ -29,6 +29,7 @@ from pathlib import Path
 from typing import Any
 
 from pipflow.errors import InputError
+from pipflow.goalcounts import describe, holds, is_bound, value_problems
 
 _CHECK_SCRIPT = """<script>
 window.addEventListener('load', function () {
@@ -247,8 +248,9 @@ def _run_body(d: Path) -> str:
             parts.append(_table(["robot", "travel (m)"], [[r, float(v)] for r, v in sim["travel"].items()]))
         goal = inputs.get("goal")
         if isinstance(goal, dict):
-            rows = [[s, p, n, sim["final_stock"].get(s, {}).get(p, 0),
-                     sim["final_stock"].get(s, {}).get(p, 0) == n] for s, items in goal.items() for p, n in items.items()]
+            rows = [[s, p, describe(n) if is_bound(n) else n, sim["final_stock"].get(s, {}).get(p, 0),
+                     None if value_problems(n) else holds(int(sim["final_stock"].get(s, {}).get(p, 0)), n)]
+                    for s, items in goal.items() for p, n in items.items()]  # n: a count or a bound
             parts.append("<h3>Goal</h3>" + _table(["shelf", "product", "goal", "final", "holds"], rows))
 
     if met_s:
