@@ -266,6 +266,13 @@ def test_a_bound_goal_runs_end_to_end_with_enhsp(tmp_path):
     assert out["engine"] == "enhsp" and out["verified"] and out["goal"] == goal
     assert out["goal_met"] is True and out["gcr"] == 1.0
     assert out["final_stock"]["shelf4"]["product1"] <= 9 and out["final_stock"]["shelf2"]["product3"] >= 8
+    # the report's goal table states each bound and that it holds
+    from pipflow.report import write_report
+
+    page = write_report(result.run_dir).read_text()
+    table = page[page.index("<h3>Goal</h3>"):page.index("</table>", page.index("<h3>Goal</h3>"))]
+    assert "<td>at most 9</td>" in table and "<td>at least 8</td>" in table
+    assert table.count("<span class='ok'>yes</span>") == 2
 
 
 def test_a_bound_goal_no_final_state_meets_is_refused_before_robots_move(tmp_path):
