@@ -94,8 +94,12 @@ def remember(digest: str, result: "SolveResult") -> None:
         _unsolved.popitem(last=False)
 
 
-def _logs(result: Any) -> str:
-    return "; ".join(m.message.strip() for m in (result.log_messages or []) if m.message and m.message.strip())
+def _logs(result: Any, limit: int = 600) -> str:
+    """The engine's log messages on one line, cut to ``limit`` characters (a planner may print
+    pages; the message must stay readable)."""
+    text = " ".join("; ".join(m.message.strip() for m in (result.log_messages or [])
+                              if m.message and m.message.strip()).split())
+    return text if len(text) <= limit else text[:limit] + " ..."
 
 
 def solve_problem(problem: Any, engine: str = DEFAULT_ENGINE, params: dict | None = None,
