@@ -21,7 +21,7 @@ from __future__ import annotations
 import time
 from math import ceil
 
-from pipflow.pddl.transport import Instance, MoveLimit, lower_bound, search_moves
+from pipflow.pddl.transport import Instance, MoveLimit, largest_move, lower_bound, search_moves
 
 
 def ceil_bound(inst: Instance) -> int:
@@ -35,7 +35,7 @@ def fewest_moves(inst: Instance, time_limit: float = 60.0) -> tuple[int | None, 
     ``(None, True)`` when no final state exists."""
     from pyscipopt import Model, quicksum
 
-    big = max(inst.magnitudes.values())
+    big = largest_move(inst)  # no move carries more than the warehouse's free room
     small = min(inst.magnitudes.values())
     m = Model("fewest-moves")
     m.hideOutput()

@@ -556,6 +556,15 @@ def order_moves(inst: Instance, moves: list[Move], sizes: list[int], limit: Move
 # ---------------------------------------------------------------------------------------------
 # step 5: exact search where capacity costs moves
 # ---------------------------------------------------------------------------------------------
+def largest_move(inst: Instance) -> int:
+    """The most units any move can ever carry: the largest magnitude, but never more than the
+    free room of the whole warehouse, which no move changes (units only change shelves), and a
+    move needs that much room on its target. With one free slot every move carries one unit.
+    (A shelf that starts over capacity only sheds units, so its excess is the most room it adds.)"""
+    room = sum(inst.capacity[s] - inst.load[s] + max(0, inst.load[s] - inst.capacity[s]) for s in inst.shelves)
+    return max(1, min(max(inst.magnitudes.values()), room))
+
+
 class _Cells:
     """The instance as flat arrays for the search: cell index ``i * P + j`` for shelf i, product j."""
 
@@ -565,7 +574,7 @@ class _Cells:
         self.lo = [inst.lo(s, p) for s in inst.shelves for p in inst.products]
         self.hi = [inst.hi(s, p) for s in inst.shelves for p in inst.products]
         self.cap = [inst.capacity[s] for s in inst.shelves]
-        self.big = max(inst.magnitudes.values())
+        self.big = largest_move(inst)
         self.sizes = sorted(set(inst.magnitudes.values()))
         self.limit = [[[limit(a, b, p) for p in inst.products] for b in inst.shelves] for a in inst.shelves]
 
