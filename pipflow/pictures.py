@@ -42,7 +42,7 @@ def _working_robots(schedule: dict) -> list[str]:
     robots = [r for r, info in (schedule.get("robots") or {}).items() if info.get("legs")]
     for s in schedule.get("subtasks", []):
         robots += [r for r in s.get("robots", []) if r not in robots]
-    return sorted(set(robots), key=_natural)
+    return sorted(set(robots), key=natural_key)
 
 
 def _plt():
@@ -86,7 +86,7 @@ def path_map(world: dict, trajectories: dict[str, list], path: Path, travel: dic
     draw_floor(ax, world)
     index = {r: i for i, r in enumerate(world.get("robots", {}))}
     idle = [pts[0] for pts in trajectories.values() if len(pts) == 1]
-    for r, pts in trajectories.items():
+    for r, pts in sorted(trajectories.items(), key=lambda kv: natural_key(kv[0])):  # robot2 before robot10
         if len(pts) < 2:
             continue  # idle robots: one grey dot each below, no legend row (a thousand would hide the map)
         c = robot_colour(index.get(r, len(index)))
@@ -98,7 +98,7 @@ def path_map(world: dict, trajectories: dict[str, list], path: Path, travel: dic
     if idle:
         ax.plot([p[1] for p in idle], [p[2] for p in idle], "o", color="#999999", ms=3,
                 label=f"{len(idle)} idle robot{'s' if len(idle) != 1 else ''}")
-    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    ax.legend(fontsize=9, loc="upper left", bbox_to_anchor=(1.01, 1.0), title="robot (travel)", title_fontsize=9)
     ax.set_title("Robot paths (o start, \u25a0 end)")
     fig.tight_layout()
     fig.savefig(path, dpi=90)
@@ -180,8 +180,11 @@ def gantt(schedule: dict, path: Path) -> Path:
 
 
 def dependency_graph(graph: dict, path: Path) -> Path:
-    """The subtask DAG, layered by longest path from the roots, labelled with the actions."""
+    """The subtask DAG top to bottom by longest path from the roots: each subtask a box sized to
+    its label (its id, action and arguments, the same ids as the plan table and the Gantt chart),
+    each layer centred, arrows from a subtask to those that wait for it."""
     import networkx as nx
+    from matplotlib.patches import FancyBboxPatch
 
     plt = _plt()
     g = nx.DiGraph()
@@ -189,28 +192,42 @@ def dependency_graph(graph: dict, path: Path) -> Path:
     for n in graph.get("nodes", []):
         g.add_node(n["id"])
         args = list(map(str, n.get("args", [])))
-        labels[n["id"]] = "\n".join([n["id"]] + [" ".join(args[i:i + 2]) for i in range(0, len(args), 2)])
+        labels[n["id"]] = f"{n['id']}: {n.get('action', '')}\n" + " ".join(args)
     g.add_edges_from(tuple(e) for e in graph.get("edges", []))
-    layer = {}
-    for v in nx.topological_sort(g):
-        layer[v] = max([layer[u] + 1 for u in g.predecessors(v)] or [0])
-    nx.set_node_attributes(g, layer, "layer")
-    pos = nx.multipartite_layout(g, subset_key="layer", align="horizontal") if g.nodes else {}
-    pos = {v: (x, -y) for v, (x, y) in pos.items()}
-    width = max([sum(1 for v in layer if layer[v] == k) for k in set(layer.values())] or [1])
-    fig, ax = plt.subplots(figsize=(min(18, 2.2 + 2.0 * width), 1.6 + 1.3 * (max(layer.values(), default=0) + 1)))
-    nx.draw_networkx(g, pos, ax=ax, labels=labels, node_color="#cfe3f7", node_size=1800,
-                     font_size=6, arrows=True, edgecolors="#336699")
-    ax.margins(0.18)
-    ax.set_title(f"Dependency graph ({graph.get('mode', '?')} mode, {g.number_of_nodes()} subtasks)")
+    layers = [sorted(layer, key=natural_key) for layer in nx.topological_generations(g)]
+    char_w, box_h, gap_x, gap_y = 0.075, 0.55, 0.35, 0.55
+    width = {v: max(1.2, char_w * max(len(line) for line in labels.get(v, v).split("\n")) + 0.3) for v in g}
+    pos = {}
+    for depth, layer in enumerate(layers):
+        x = -(sum(width[v] for v in layer) + gap_x * (len(layer) - 1)) / 2
+        for v in layer:
+            pos[v] = (x + width[v] / 2, -depth * (box_h + gap_y))
+            x += width[v] + gap_x
+    xs = [pos[v][0] + s * width[v] / 2 for v in g for s in (-1, 1)] or [0.0, 1.0]
+    ys = [y for _, y in pos.values()] or [0.0]
+    fig, ax = plt.subplots(figsize=(min(30.0, max(5.0, max(xs) - min(xs) + 1.0)),
+                                    min(40.0, max(2.5, max(ys) - min(ys) + 1.6))))
+    for u, v in g.edges:
+        (xu, yu), (xv, yv) = pos[u], pos[v]
+        ax.annotate("", xy=(xv, yv + box_h / 2), xytext=(xu, yu - box_h / 2),
+                    arrowprops={"arrowstyle": "-|>", "color": "#555", "lw": 0.9, "shrinkA": 0, "shrinkB": 0})
+    for v, (x, y) in pos.items():
+        ax.add_patch(FancyBboxPatch((x - width[v] / 2, y - box_h / 2), width[v], box_h, boxstyle="round,pad=0.02",
+                                    facecolor="#cfe3f7", edgecolor="#336699"))
+        ax.text(x, y, labels[v], ha="center", va="center", fontsize=8)
+    ax.set_xlim(min(xs) - 0.3, max(xs) + 0.3)
+    ax.set_ylim(min(ys) - box_h - 0.3, max(ys) + box_h + 0.3)
+    ax.set_aspect("equal")
     ax.axis("off")
-    fig.tight_layout()
-    fig.savefig(path, dpi=90)
+    ax.set_title(f"Dependency graph ({graph.get('mode', '?')} mode, {g.number_of_nodes()} subtasks, "
+                 f"{len(layers)} levels)", fontsize=9)
+    fig.savefig(path, dpi=100, bbox_inches="tight")
     plt.close(fig)
     return Path(path)
 
 
-def _natural(name: str) -> Any:
+def natural_key(name: str) -> Any:
+    """Sort key that puts robot2 before robot10."""
     import re
 
     return [int(t) if t.isdigit() else t for t in re.split(r"(\d+)", name)]

@@ -48,7 +48,7 @@ table { border-collapse: collapse; margin: .5em 0; } td, th { border: 1px solid 
 th { background: #eef2f7; } td.num { text-align: right; font-variant-numeric: tabular-nums; }
 .ok { color: #1a7f37; font-weight: bold; } .bad { color: #c62828; font-weight: bold; }
 img { max-width: 100%; border: 1px solid #ddd; margin: .3em 0; }
-.snaps img { width: 48%; } pre { background: #f6f8fa; padding: .6em; overflow-x: auto; white-space: pre-wrap; }
+.snaps figure { display: inline-block; width: 48%; margin: .3em .5%; } .snaps img { width: 100%; } figcaption { text-align: center; color: #444; } pre { background: #f6f8fa; padding: .6em; overflow-x: auto; white-space: pre-wrap; }
 .round { border: 1px solid #ccd; border-radius: 6px; padding: .2em 1em .6em; margin: .8em 0; }
 .cause { border: 2px solid #c62828; border-radius: 6px; padding: .2em 1em; background: #fff5f5; }
 pre.answer { max-height: 24em; overflow-y: auto; } .small { font-size: .85em; color: #555; }
@@ -230,7 +230,8 @@ def _run_body(d: Path) -> str:
         snaps = [p for p in pics if p.startswith("snapshot_")]
         if snaps:
             parts.append("<h2>Snapshots</h2><div class='snaps'>" + "".join(
-                _img(f"steps/{name}/artifacts/{p}", p) for p in snaps) + "</div>")
+                f"<figure>{_img(f'steps/{name}/artifacts/{p}', p)}<figcaption>{_e(_snapshot_caption(p))}"
+                f"</figcaption></figure>" for p in snaps) + "</div>")
         anim = [p for p in pics if p.endswith(".gif")]
         if anim:
             parts.append("<h2>Animation</h2>" + _img(f"steps/{name}/artifacts/{anim[0]}", "animation"))
@@ -245,7 +246,8 @@ def _run_body(d: Path) -> str:
                 f"<li>{_e(f['subtask'])} at t={_e(f['time'])}: {_e('; '.join(f['reasons']))}</li>"
                 for f in sim["failures"]) + "</ul>")
         if sim.get("travel"):
-            parts.append(_table(["robot", "travel (m)"], [[r, float(v)] for r, v in sim["travel"].items()]))
+            parts.append(_table(["robot", "travel (m)"], [[r, float(v)] for r, v in sorted(
+                sim["travel"].items(), key=lambda kv: pictures.natural_key(kv[0]))]))
         goal = inputs.get("goal")
         if isinstance(goal, dict):
             rows = [[s, p, describe(n) if is_bound(n) else n, sim["final_stock"].get(s, {}).get(p, 0),
@@ -271,6 +273,13 @@ def _run_body(d: Path) -> str:
 # ------------------------------------------------------------------------------------------
 # the refinement loop and what was understood
 # ------------------------------------------------------------------------------------------
+
+
+def _snapshot_caption(file_name: str) -> str:
+    """``snapshot_2_first-load.png`` -> ``2. first load``."""
+    stem = Path(file_name).stem.removeprefix("snapshot_")
+    number, _, moment = stem.partition("_")
+    return f"{number}. {moment.replace('-', ' ')}" if moment else stem
 
 
 def _loop_rounds(d: Path) -> list[dict]:
@@ -367,7 +376,7 @@ def _loop_section(rounds: list[dict]) -> str:
                 f"<span class='{'ok' if ok else 'bad'}'>{'passed' if ok else 'rejected'}</span></h3>")
         facts = _table(["tokens in", "tokens out", "latency (s)", "cost (USD)", "cached"],
                        [[usage.get("prompt_tokens"), usage.get("completion_tokens"), usage.get("latency_s"),
-                         usage.get("cost_usd"), usage.get("cached")]]) if usage else ""
+                         usage.get("cost_usd"), usage.get("cached")]]) if usage.get("calls") or gen.get("response") else ""
         msgs = "".join(f"<details><summary>{_e(m.get('role', '?'))} message ({len(str(m.get('content', '')))} chars)"
                        f"</summary><pre>{_e(m.get('content', ''))}</pre></details>"
                        for m in gen.get("messages") or [] if isinstance(m, dict))

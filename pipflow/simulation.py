@@ -307,9 +307,13 @@ class Scene:
                     self.place_on_shelf(body, shelf)
         rcol = p.createCollisionShape(p.GEOM_CYLINDER, radius=ROBOT_RADIUS, height=ROBOT_HEIGHT,
                                       physicsClientId=c)
+        robot_visuals: dict[int, int] = {}  # one visual shape per colour, not per robot
         for i, (name, info) in enumerate(w.get("robots", {}).items()):
-            vis = p.createVisualShape(p.GEOM_CYLINDER, radius=ROBOT_RADIUS, length=ROBOT_HEIGHT,
-                                      rgbaColor=ROBOT_COLOURS[i % len(ROBOT_COLOURS)], physicsClientId=c)
+            k = i % len(ROBOT_COLOURS)
+            if k not in robot_visuals:
+                robot_visuals[k] = p.createVisualShape(p.GEOM_CYLINDER, radius=ROBOT_RADIUS, length=ROBOT_HEIGHT,
+                                                       rgbaColor=ROBOT_COLOURS[k], physicsClientId=c)
+            vis = robot_visuals[k]
             sx, sy = info["start"]
             self.robot_body[name] = p.createMultiBody(
                 0, rcol, vis, basePosition=(float(sx), float(sy), ROBOT_HEIGHT / 2), physicsClientId=c)
@@ -353,22 +357,31 @@ class Scene:
         pos, _ = self.p.getBasePositionAndOrientation(body, physicsClientId=self.cid)
         return pos
 
-    def count_stock(self) -> tuple[dict[str, dict[str, int]], int]:
+    def count_stock(self, only: str | None = None) -> tuple[dict[str, dict[str, int]], int]:
         """Units per shelf and product read from the bodies' positions (footprint, above the
-        floor); second value: units lying on no shelf (carried or lost)."""
-        stock: dict[str, dict[str, int]] = {s: {} for s in self.world.get("shelves", {})}
-        stray = 0
-        for body, prod in self.unit_product.items():
-            x, y, z = self.body_xyz(body)
-            for name, sh in self.world.get("shelves", {}).items():
-                if (float(sh["x"]) - 1e-6 <= x <= float(sh["x"]) + float(sh["width"]) + 1e-6
-                        and float(sh["y"]) - 1e-6 <= y <= float(sh["y"]) + float(sh["depth"]) + 1e-6
-                        and z >= SHELF_HEIGHT):
-                    stock[name][prod] = stock[name].get(prod, 0) + 1
-                    break
-            else:
-                stray += 1
-        return stock, stray
+        floor); second value: units lying on no shelf (carried or lost). ``only``: count that
+        shelf alone (what an unload can change), without the stray count (returned as 0)."""
+        import numpy as np
+
+        shelves = self.world.get("shelves", {})
+        names = [only] if only else list(shelves)
+        stock: dict[str, dict[str, int]] = {s: {} for s in names}
+        bodies = list(self.unit_product)
+        if not bodies:
+            return stock, 0
+        xyz = np.asarray([self.body_xyz(b) for b in bodies], dtype=float)
+        box = np.asarray([[float(shelves[n]["x"]), float(shelves[n]["y"]),
+                           float(shelves[n]["x"]) + float(shelves[n]["width"]),
+                           float(shelves[n]["y"]) + float(shelves[n]["depth"])] for n in names]).reshape(-1, 4)
+        on = ((box[:, 0] - 1e-6 <= xyz[:, [0]]) & (xyz[:, [0]] <= box[:, 2] + 1e-6)
+              & (box[:, 1] - 1e-6 <= xyz[:, [1]]) & (xyz[:, [1]] <= box[:, 3] + 1e-6)
+              & (xyz[:, [2]] >= SHELF_HEIGHT))
+        first = np.where(on.any(axis=1), on.argmax(axis=1), -1)  # the first shelf listed, as before
+        for body, k in zip(bodies, first.tolist()):
+            if k >= 0:
+                prod = self.unit_product[body]
+                stock[names[k]][prod] = stock[names[k]].get(prod, 0) + 1
+        return stock, 0 if only else int((first < 0).sum())
 
     def move_robot(self, robot: str, xy: Point) -> None:
         p, c = self.p, self.cid
@@ -400,9 +413,11 @@ def render_floor(p: Any, cid: int, floor: dict, path: Path, width: int, height: 
     import numpy as np
 
     fw, fh = float(floor["width"]), float(floor["height"])
-    view = p.computeViewMatrix((fw / 2, -0.3 * fh, 0.72 * max(fw, fh)), (fw / 2, fh / 2, 0), (0, 0, 1),
+    # far and high enough that the whole floor, its front edge included (where robots often
+    # start), stays in the frame
+    view = p.computeViewMatrix((fw / 2, -0.55 * fh, 0.95 * max(fw, fh)), (fw / 2, 0.45 * fh, 0), (0, 0, 1),
                                physicsClientId=cid)
-    proj = p.computeProjectionMatrixFOV(45, width / height, 0.1, 200, physicsClientId=cid)
+    proj = p.computeProjectionMatrixFOV(50, width / height, 0.1, 400, physicsClientId=cid)
     _, _, rgba, _, _ = p.getCameraImage(width, height, view, proj, renderer=p.ER_TINY_RENDERER,
                                         physicsClientId=cid)
     img = np.reshape(np.asarray(rgba, dtype=np.uint8), (height, width, 4))[:, :, :3]
@@ -494,11 +509,23 @@ def simulate(world: dict, schedule: dict, graph: dict | None = None, goal: dict 
     executed, failures, log_events = 0, [], []
     done_load: dict[str, bool] = {}
     ev_i = 0
+    # only robots with legs move, and each only from its first leg's start to its last leg's
+    # end: pybullet work follows the robots a run uses, not the size of the fleet
+    window = {r: (tr.segments[0][0], tr.segments[-1][1]) for r, tr in traj.items()
+              if tr.segments and r in scene.robot_body}
+    movers = sorted(window, key=lambda r: window[r][0])
+    settled: set[str] = set()
     try:
         for t in sample_times:
-            for r, tr in traj.items():
-                if r not in scene.robot_body:
+            for r in movers:
+                first, last = window[r]
+                if t < first - 1e-9:
+                    break  # sorted by start: nobody further on has started either
+                if r in settled:
                     continue
+                if t >= last:
+                    settled.add(r)  # this sample puts it at its final place
+                tr = traj[r]
                 xy = tr.position(t)
                 scene.move_robot(r, xy)
                 now = scene.robot_xy(r)  # measured from the body, not from the plan
@@ -526,9 +553,9 @@ def simulate(world: dict, schedule: dict, graph: dict | None = None, goal: dict 
                     _unload(scene, m)
                     executed += 1
                     log_events.append({"time": round(et, 3), "subtask": m.id, "event": "unload"})
-                    stock, _ = scene.count_stock()
-                    for shelf, items in stock.items():
-                        peak[shelf] = max(peak.get(shelf, 0), sum(items.values()))
+                    if m.target in scene.occupant:  # an unload changes its target's load only
+                        stock, _ = scene.count_stock(only=m.target)
+                        peak[m.target] = max(peak.get(m.target, 0), sum(stock[m.target].values()))
             for name, ts in list(snap_plan.items()):
                 if t + 1e-9 >= ts:
                     fname = f"snapshot_{len(pictures) + 1}_{name}.png"
