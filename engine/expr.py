@@ -71,13 +71,22 @@ def _check_format(template: Any) -> None:
         raise TooLarge("a format width or precision of 10 million or more")
 
 
-def _check_call(func: Any, args: tuple, kwargs: dict) -> None:
-    """Bounds on the arguments of a call or filter before it runs: whole numbers (padding
-    widths, repeat counts), format widths, and what ``replace`` would make."""
-    for value in [*args, *kwargs.values()]:
-        _check_int(value, f"argument of {getattr(func, '__name__', 'a call')}")
+# calls whose whole-number arguments say how much they build (padding widths, counts of pieces)
+_SIZED_CALLS = {"center", "ljust", "rjust", "zfill", "expandtabs", "do_center", "do_indent", "do_wordwrap",
+                "do_batch", "do_slice", "do_format", "format", "format_map", "lipsum", "generate_lorem_ipsum"}
+
+
+def _check_call(func: Any, args: tuple, kwargs: dict, value_first: bool = False) -> None:
+    """Bounds on the arguments of a call or filter before it runs: the widths and counts of
+    calls that build that much, format widths, and what ``replace``/``indent`` would make.
+    ``value_first``: a filter, whose first argument is the value filtered (any size it has
+    already exists)."""
     name = getattr(func, "__name__", "")
     owner = getattr(func, "__self__", None)
+    given = args[1:] if value_first else args
+    if name in _SIZED_CALLS:
+        for value in [*given, *kwargs.values()]:
+            _check_int(value, f"argument of {name.removeprefix('do_')}")
     if name in ("format", "format_map", "do_format"):
         _check_format(owner if isinstance(owner, str) else (args[0] if args else None))
     if name in ("replace", "do_replace"):
@@ -87,14 +96,21 @@ def _check_call(func: Any, args: tuple, kwargs: dict) -> None:
             _check_size(len(text) + count * len(rest[1]), "replace")
     if name == "expandtabs" and isinstance(owner, str) and args and isinstance(args[0], int):
         _check_size(len(owner) + owner.count("\t") * args[0], "expandtabs")
+    if name == "do_indent" and len(args) >= 2 and isinstance(args[0], str) and isinstance(args[1], int):
+        _check_size(len(args[0]) + (args[0].count("\n") + 1) * args[1], "indent")
 
 
 def _bounded_filter(func: Any) -> Any:
     @functools.wraps(func)  # keeps jinja2's pass_context/pass_environment marks
     def checked(*args: Any, **kwargs: Any) -> Any:
-        _check_call(func, args, kwargs)
+        _check_call(func, _after_context(func, args), kwargs, value_first=True)
         return func(*args, **kwargs)
     return checked
+
+
+def _after_context(func: Any, args: tuple) -> tuple:
+    """A filter's arguments without the context/environment jinja2 passes first to some."""
+    return args[1:] if getattr(func, "jinja_pass_arg", None) is not None else args
 
 
 def _bounded_concat(values: Any) -> str:
@@ -132,6 +148,9 @@ class _Env(SandboxedEnvironment):
             _check_size(_size(left) + _size(right), "joining two values")
         elif operator == "%" and isinstance(left, str):
             _check_format(left)
+            if "*" in left:  # '%*d' takes its width from the values
+                for value in (right if isinstance(right, tuple) else (right,)):
+                    _check_int(value, "a width given to %*")
         return super().call_binop(context, operator, left, right)
 
     def call(__self, __context: Any, __obj: Any, *args: Any, **kwargs: Any) -> Any:  # noqa: N805

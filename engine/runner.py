@@ -17,7 +17,7 @@ from .executor import Executor, RunOptions, write_metrics
 from .expr import ExpressionError, has_expression, resolve
 from .model import Workflow
 from .registry import Registry, default_registry
-from .store import RunStore, read_json, utc_now, write_json
+from .store import DamagedRecord, RunStore, read_json, utc_now, write_json
 from .types import coerce_text, type_matches
 from .validate import check_given_values, load_workflow
 
@@ -187,14 +187,16 @@ def _completed_nodes(wf: Workflow, store: RunStore) -> dict[str, dict]:
     for node in wf.nodes:
         if node.id not in finished:
             continue
-        outputs = store.read_step_outputs(node.id)
-        if outputs is None:
+        try:
+            outputs = store.read_step_outputs(node.id)
+            inner = {s.id: store.read_step_outputs(s.id) for s in getattr(node, "steps", [])}
+        except DamagedRecord as err:  # run the node again rather than trust a damaged record
+            store.event("warning", node.id, message=f"{err}; the step runs again")
+            continue
+        if not isinstance(outputs, dict):
             continue
         completed[node.id] = outputs
-        for inner in getattr(node, "steps", []):
-            inner_out = store.read_step_outputs(inner.id)
-            if inner_out is not None:
-                completed[inner.id] = inner_out
+        completed.update({sid: out for sid, out in inner.items() if isinstance(out, dict)})
     return completed
 
 

@@ -268,6 +268,9 @@ class RunStore:
             raw = (self.root / "events.jsonl").read_bytes()
         except FileNotFoundError:
             return []
+        except OSError:  # a folder or an unreadable file where the log should be
+            self.damaged_events = [0]
+            return []
         out, self.damaged_events = [], []
         for number, line in enumerate(raw.split(b"\n"), start=1):
             if not line.strip():

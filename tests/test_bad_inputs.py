@@ -343,7 +343,21 @@ EXPRESSIONS = {
     "join big pieces": "${ ('a' * 6000000) ~ ('b' * 6000000) }",
     "add big strings": "${ ('a' * 6000000) + ('b' * 6000000) }",
     "repeat a repetition": "${ 'ab' * 100000 * 100000 }",
+    "star width": "${ '%*d' % (10**9, 1) }",
+    "indent every line": "${ ('a\\n' * 5000000) | indent(1000) }",
+    "slice into pieces": "${ [1, 2] | slice(10**9) | list }",
+    "wordwrap width": "${ 'a b' | wordwrap(10**9) }",
 }
+
+
+def test_ordinary_expressions_with_big_numbers_still_work(ws, capsys):
+    wf = ws / "expr.yaml"
+    wf.write_text("pipflow: 1\nname: expr\nsteps:\n  - id: ok\n    uses: core.value\n"
+                  "    with: {value: \"${ [4294967295 | string, '%d' % 123456789012, 2 ** 64, '-' * 80, 'a\\nb' | indent(2)] }\"}\n"
+                  "outputs:\n  v: ${ok.value}\n")
+    code, out, err = cli(capsys, "run", wf)
+    assert code == 0, err
+    assert '"4294967295", "123456789012", 18446744073709551616' in out
 
 
 @pytest.mark.parametrize("case", sorted(EXPRESSIONS))
@@ -624,6 +638,16 @@ def test_torn_last_event_line_does_not_break_show_or_resume(ws, capsys, torn):
         except ValueError:
             continue
     assert any(isinstance(e, dict) and e.get("event") == "resume" for e in readable)
+
+
+@pytest.mark.parametrize("damage", [b"{", b"\xff", b"[1]"])
+def test_damaged_step_outputs_are_run_again_on_resume(ws, capsys, damage):
+    run = _interrupted_run(ws)
+    (run / "steps" / "a" / "outputs.json").write_bytes(damage)
+    code, _, err = cli(capsys, "resume", run)
+    assert code == 0, err
+    assert json.loads((run / "outputs.json").read_text()) == {"b": 2}
+    assert json.loads((run / "steps" / "a" / "outputs.json").read_text()) == {"value": 1}
 
 
 def test_resume_uses_the_saved_workflow_not_the_edited_file(ws, capsys):
