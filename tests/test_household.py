@@ -66,9 +66,9 @@ def test_world_errors_are_located(tmp_path):
 
 
 def test_benchmark_files_load(world, tasks):
-    assert world["domain"] == "household" and len(tasks["tasks"]) >= 30
-    cats = {t["category"] for t in tasks["tasks"]}
-    assert cats == {"compound", "complex", "vague"}
+    assert world["domain"] == "household"
+    cats = [t["category"] for t in tasks["tasks"]]
+    assert (cats.count("compound"), cats.count("complex"), cats.count("vague")) == (41, 23, 25)  # the paper's split
     for t in tasks["tasks"]:
         assert t["team"] in world["teams"]
 
@@ -98,7 +98,7 @@ def test_every_gold_goal_plans_and_validates(world, tasks):
     from pipflow.pddl.solver import solve_problem
     from pipflow.pddl.verifier import verify_plan
 
-    goals = [(t["id"], resolve_counts(world, t["goal"])) for t in tasks["tasks"]]
+    goals = [(t["id"], resolve_counts(world, t["goal"])) for t in tasks["tasks"] if t["feasible"] is not False]
     # tasks that name disjoint things are planned together (one JVM start per group keeps the
     # test fast); a plan that reaches a group's conditions reaches each task's subset of them
     groups: list[tuple[list[str], dict, set]] = []
@@ -149,6 +149,10 @@ def test_translator_matches_ground_truth(world, tasks):
 
     refused = []
     for t in tasks["tasks"]:
+        if t["feasible"] is False:   # the right answer is a refusal that says why
+            with pytest.raises(Refusal, match="cannot be"):
+                translate(t["command"], world)
+            continue
         try:
             goal = translate(t["command"], world)["goal"]
         except TranslationError as exc:
@@ -157,7 +161,7 @@ def test_translator_matches_ground_truth(world, tasks):
             refused.append(t["id"])
             continue
         assert _norm(goal) == _norm(t["goal"]), (t["id"], goal)
-    assert len(refused) <= 3
+    assert sorted(refused) == ["hv-09", "hv-10"]   # recipes ("make me a salad"): docs/household.md
 
 
 def test_translator_refusals(world):
@@ -167,7 +171,7 @@ def test_translator_refusals(world):
         translate("Slice the mug.", world)
     with pytest.raises(TranslationError, match="'banana' names nothing"):
         translate("Put the banana in the fridge.", world)
-    with pytest.raises(TranslationError, match="no action"):
+    with pytest.raises(TranslationError, match="'hurry' names nothing"):
         translate("Hurry up, please.", world)
     with pytest.raises(TranslationError, match="where to"):
         translate("Put the apple.", world)
