@@ -7,6 +7,7 @@ from __future__ import annotations
 import concurrent.futures as cf
 import json
 import os
+import stat
 import threading
 import time
 from dataclasses import dataclass, field
@@ -251,6 +252,11 @@ class Executor:
             if declared is not None and declared.type == "path" and isinstance(value, str) and value:
                 base = spec.arg_base(name)
                 value = str((base / Path(value).expanduser()).resolve()) if not Path(value).is_absolute() else value
+                special = _special_file(value)
+                if special:
+                    raise self._located(InputError(
+                        f"step {spec.id!r} ({spec.uses}): argument {name!r}: {value} is {special}, not an "
+                        "ordinary file (a step would read it without end or block on it)"), spec.id)
             args[name] = value
         for name, declared in step.inputs.items():
             value = args.get(name)
@@ -335,6 +341,22 @@ def _call_with_timeout(spec: StepSpec, step: Step, ctx: StepContext, args: dict)
     if "error" in box:
         raise box["error"]
     return box["outputs"]
+
+
+def _special_file(path: str) -> str | None:
+    """What a path-typed argument names when it is neither an ordinary file nor a folder nor
+    missing (``/dev/zero``, a FIFO, a socket): steps read such paths as files."""
+    try:
+        mode = os.stat(path).st_mode
+    except (OSError, ValueError):
+        return None  # missing or unreadable: the step says so itself
+    if stat.S_ISREG(mode) or stat.S_ISDIR(mode):
+        return None
+    if stat.S_ISFIFO(mode):
+        return "a pipe"
+    if stat.S_ISSOCK(mode):
+        return "a socket"
+    return "a device"
 
 
 def _short(value: Any, limit: int = 60) -> str:

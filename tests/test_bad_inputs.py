@@ -411,7 +411,7 @@ def test_world_path_that_is_not_an_ordinary_file(ws, capsys, kind):
     path = _special(ws, kind)
     code, _, err = cli(capsys, "run", ws / "wf.yaml", "-i", f"world={path}", "--no-cache")
     assert code == 2 and "step 'world'" in err and str(path) in err, err
-    assert any(c in err for c in ("not a regular file", "more than", "no such file")), err
+    assert any(c in err for c in ("not a regular file", "not an ordinary file", "more than", "no such file")), err
     run = next((ws / "runs").iterdir())
     assert json.loads((run / "run.json").read_text())["status"] == "failed"
 
@@ -842,3 +842,12 @@ def test_a_broken_plugin_breaks_only_workflows_that_need_it(ws, capsys, broken_p
     (ws / "uses.yaml").write_text("pipflow: 1\nname: uses\nsteps:\n  - {id: a, uses: broken.step, with: {x: 1}}\n")
     code, _, err = cli(capsys, "validate", ws / "uses.yaml")
     assert code == 2 and "uses.yaml:4" in err and "unknown step 'broken.step'" in err and "needs libfoo 2.0" in err
+
+
+@pytest.mark.parametrize("kind", ["dev-zero", "fifo"])
+def test_path_argument_naming_a_device_or_pipe_is_refused_before_the_step_reads_it(ws, capsys, kind):
+    """Any path-typed step argument (here the built-in warehouse workflow's PDDL domain)."""
+    path = _special(ws, kind)
+    code, _, err = cli(capsys, "run", "warehouse", "-i", f"domain={path}", "--no-cache", "-q")
+    assert code == 2, err
+    assert "argument 'domain'" in err and str(path) in err and "not an ordinary file" in err
