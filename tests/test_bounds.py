@@ -59,10 +59,7 @@ def test_writer_goals_parse_and_read_back():
     assert "(>= (stock shelf3 product2) 2)" in text and "(<= (stock shelf4 product3) 0)" in text
     assert "(= (stock shelf3 product1) 7)" in text
     problem = parse(DOMAIN, text)
-    assert stock_goals(problem, bounds=True) == (goal, [])
-    # readers that do not know bounds keep the exact counts and see the rest as other forms
-    exact, other = stock_goals(problem)
-    assert exact == {"shelf3": {"product1": 7}} and len(other) == 6
+    assert stock_goals(problem) == (goal, [])
 
 
 def test_reader_makes_strict_and_fractional_comparisons_whole():
@@ -70,7 +67,7 @@ def test_reader_makes_strict_and_fractional_comparisons_whole():
         "(= (stock shelf3 product1) 7)",
         "(> (stock shelf1 product1) 2) (< (stock shelf2 product1) 5) (<= (stock shelf3 product1) 7.5)"
         " (>= (stock shelf3 product1) 6.2) (< 1 (stock shelf4 product1))")
-    goal, other = stock_goals(parse(DOMAIN, text), bounds=True)
+    goal, other = stock_goals(parse(DOMAIN, text))
     assert other == []
     assert goal == {"shelf1": {"product1": {"at_least": 3}}, "shelf2": {"product1": {"at_most": 4}},
                     "shelf3": {"product1": {"at_least": 7, "at_most": 7}}, "shelf4": {"product1": {"at_least": 2}}}
@@ -79,10 +76,10 @@ def test_reader_makes_strict_and_fractional_comparisons_whole():
 def test_reader_merges_an_exact_count_with_bounds_and_keeps_contradictions():
     base = write_problem(WORLD, {"shelf3": {"product1": 7}})
     agree = base.replace("(= (stock shelf3 product1) 7)", "(= (stock shelf3 product1) 7) (>= (stock shelf3 product1) 2)")
-    assert stock_goals(parse(DOMAIN, agree), bounds=True)[0] == {"shelf3": {"product1": 7}}
+    assert stock_goals(parse(DOMAIN, agree))[0] == {"shelf3": {"product1": 7}}
     clash = base.replace("(= (stock shelf3 product1) 7)", "(>= (stock shelf3 product1) 5) (<= (stock shelf3 product1) 3)")
     problem = parse(DOMAIN, clash)
-    goal = stock_goals(problem, bounds=True)[0]
+    goal = stock_goals(problem)[0]
     assert goal == {"shelf3": {"product1": {"at_least": 5, "at_most": 3}}}
     report = verify_plan(problem, [], WORLD)
     assert not report.ok and report.refusal is None  # a malformed problem: a message, the loop may fix it
@@ -360,4 +357,4 @@ def test_written_goals_read_back_unchanged(case):
     _, goal = case
     goal = {f"shelf{int(s[1:]) + 1}": {f"product{int(p[1:]) + 1}": v for p, v in items.items()}
             for s, items in goal.items()}
-    assert stock_goals(parse(DOMAIN, write_problem(WORLD, goal)), bounds=True) == (goal, [])
+    assert stock_goals(parse(DOMAIN, write_problem(WORLD, goal))) == (goal, [])

@@ -7,6 +7,7 @@ A plan, between steps, is ``[{"action": "move-product", "args": ["shelf1", "shel
 from __future__ import annotations
 
 import hashlib
+import math
 import threading
 from collections import OrderedDict
 from functools import lru_cache
@@ -133,28 +134,24 @@ def goal_conditions(problem: Any) -> list[Any]:
     return out
 
 
-def stock_goals(problem: Any, bounds: bool = False) -> tuple[dict[str, dict[str, Any]], list[str]]:
-    """Goal counts ``(= (stock s p) n)`` as ``{shelf: {product: n}}``, plus a list of goal
+def stock_goals(problem: Any) -> tuple[dict[str, dict[str, Any]], list[str]]:
+    """The goal's stock conditions as ``{shelf: {product: value}}``, plus a list of goal
     conditions of any other form (as text) that pipflow's goal checks do not understand.
 
-    With ``bounds=True`` the comparisons ``>=``, ``<=``, ``>``, ``<`` of a stock with a whole
-    number are read too, and each cell's conditions are merged into one goal value of
-    :mod:`pipflow.goalcounts` (an int when an exact count is stated and agrees with the bounds,
-    else ``{at_least, at_most}``; a contradiction is kept so that the verifier names it). The
-    default keeps the exact-count reading for readers that do not handle bounds yet."""
+    ``=``, ``>=``, ``<=``, ``>``, ``<`` of ``(stock s p)`` with a number are read, and each
+    cell's conditions merged into one goal value of :mod:`pipflow.goalcounts`: an int when an
+    exact count is stated and agrees with the bounds, else ``{at_least, at_most}`` (a
+    contradiction is kept so that the verifier names it)."""
     from pipflow.goalcounts import from_limits
 
     cells: dict[tuple[str, str], list] = {}  # (shelf, product) -> [lo, hi, exact stated]
     other: list[str] = []
     for g in goal_conditions(problem):
-        cell = _stock_comparison(g, bounds)
+        cell = _stock_comparison(g)
         if cell is None:
             other.append(str(g))
             continue
         (s, p), lo, hi = cell
-        if not bounds and (s, p) in cells and cells[s, p][0] != lo:
-            other.append(str(g))  # two different exact counts: only a bound-aware reader may merge them
-            continue
         c = cells.setdefault((s, p), [None, None, False])
         if lo is not None:
             c[0] = lo if c[0] is None else max(c[0], lo)
@@ -167,11 +164,11 @@ def stock_goals(problem: Any, bounds: bool = False) -> tuple[dict[str, dict[str,
     return goal, other
 
 
-def _stock_comparison(g: Any, bounds: bool) -> tuple[tuple[str, str], int | None, int | None] | None:
-    """``((shelf, product), lowest, highest)`` for a comparison of ``(stock s p)`` with a whole
-    number (strict ones made inclusive: counts are whole), or None for any other condition."""
-    kinds = ("is_equals", "is_le", "is_lt") if bounds else ("is_equals",)
-    if not any(getattr(g, k)() for k in kinds) or len(g.args) != 2:
+def _stock_comparison(g: Any) -> tuple[tuple[str, str], int | None, int | None] | None:
+    """``((shelf, product), lowest, highest)`` for a comparison of ``(stock s p)`` with a number
+    (whole limits: strict comparisons and fractions rounded inward, counts being whole), or None
+    for any other condition (an exact count that is a fraction included)."""
+    if not (g.is_equals() or g.is_le() or g.is_lt()) or len(g.args) != 2:
         return None
     a, b = g.args
     stock_left = a.is_fluent_exp()
@@ -185,7 +182,7 @@ def _stock_comparison(g: Any, bounds: bool) -> tuple[tuple[str, str], int | None
         return (cell, int(v), int(v)) if v.is_integer() else None
     strict = g.is_lt()
     if stock_left:  # stock <= v  /  stock < v
-        hi = int(v) - 1 if strict and v.is_integer() else int(v // 1)
+        hi = int(v) - 1 if strict and v.is_integer() else math.floor(v)
         return cell, None, hi
-    lo = int(v) + 1 if strict and v.is_integer() else int(-(-v // 1))  # v <= stock / v < stock
+    lo = int(v) + 1 if strict and v.is_integer() else math.ceil(v)  # v <= stock  /  v < stock
     return cell, lo, None

@@ -90,7 +90,7 @@ def verify_plan(problem: Any, plan: list[dict] | None, world: dict | None = None
     from unified_planning.shortcuts import PlanValidator
 
     environment()
-    goal = goal_in_world_names(stock_goals(problem, bounds=True)[0], world)  # other goal forms: the validator's
+    goal = goal_in_world_names(stock_goals(problem)[0], world)  # other goal forms: the validator's
     messages: list[str] = []
     refusal = None
     if world is not None and world.get("domain") == "household":
