@@ -6,6 +6,11 @@ from __future__ import annotations
 
 from pipflow import Input, StepContext, step
 from pipflow.errors import InputError
+
+#: the longest answer kept in the step's ``response`` output. The run record copies outputs (each
+#: loop iteration, the loop's result), so a long answer is stored once in full, as the artifact
+#: response.txt, and only its head in the outputs.
+RESPONSE_OUTPUT_CHARS = 32_000
 from pipflow.language.prompting import prompt_problem
 
 
@@ -68,4 +73,8 @@ def llm_problem(ctx: StepContext, command: str, world: dict, domain: str,
         cache_dir=ctx.resolve_path(cache_dir) if cache_dir else None, use_cache=cache and ctx.use_cache,
         base_dir=ctx.base_dir, save=ctx.write_artifact, log=ctx.log)
     ctx.metrics["llm"] = out["usage"]
+    text = out.get("response") or ""
+    if len(text) > RESPONSE_OUTPUT_CHARS:  # the whole answer is kept once, as artifact response.txt
+        out["response"] = (text[:RESPONSE_OUTPUT_CHARS] + f"\n... [{len(text):,} characters in all: the whole "
+                           "answer is the artifact response.txt of this step]")
     return out

@@ -320,3 +320,19 @@ def test_an_unwritable_cache_is_a_warning_and_the_answer_stays_in_the_record(tmp
     assert (art / "response.txt").read_text() == good_answer()
     assert any(line.startswith("warning: llm: the response cache") for line in logs), logs
     assert blocker.read_text() == "not a folder"
+
+
+def test_a_long_answer_is_stored_once_in_the_run_record(tmp_path, serve, monkeypatch):
+    from pipflow.engine.executor import RunOptions
+    from pipflow.engine.runner import run_workflow
+
+    answer = good_answer() + "\n" + "y" * 300_000  # long, yet under the cap: it is used
+    server = serve([answer])
+    monkeypatch.setenv("PIPFLOW_CACHE_DIR", str(tmp_path / "stepcache"))
+    result = run_workflow(WORKFLOW, {"api_base": server.api_base, "command": COMMAND, "cache_dir": str(tmp_path / "c")},
+                          runs_dir=tmp_path / "runs", options=RunOptions(use_cache=False))
+    assert result.ok, result.error
+    files = [p for p in result.run_dir.rglob("*") if p.is_file()]
+    (whole,) = [p for p in files if p.name == "response.txt"]
+    assert whole.read_text() == answer
+    assert sum(p.stat().st_size for p in files) < 1.5 * len(answer), "the answer is stored once, not per copy of the outputs"
