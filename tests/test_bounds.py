@@ -358,3 +358,25 @@ def test_written_goals_read_back_unchanged(case):
     goal = {f"shelf{int(s[1:]) + 1}": {f"product{int(p[1:]) + 1}": v for p, v in items.items()}
             for s, items in goal.items()}
     assert stock_goals(parse(DOMAIN, write_problem(WORLD, goal))) == (goal, [])
+
+
+def test_a_bench_of_bound_tasks_scores_them_by_their_bounds(tmp_path):
+    """A task file with bounds, through `pipflow bench`: the command is read, planned, executed and
+    scored against the bound gold; an infeasible bound is a correct refusal."""
+    import json
+
+    from pipflow.engine.cli import main
+
+    (tmp_path / "tasks.yaml").write_text(
+        f"world: {ROOT / 'benchmarks/warehouse/world.yaml'}\n"
+        "tasks:\n"
+        "  - id: b1\n    command: Shelf 3 should hold at least 8 product1 and at most 2 product2.\n"
+        "    goal: {shelf3: {product1: {at_least: 8}, product2: {at_most: 2}}}\n"
+        "  - id: b2\n    command: Shelf 3 should hold at least 31 product1.\n"
+        "    goal: {shelf3: {product1: {at_least: 31}}}\n    feasible: false\n")
+    out = tmp_path / "bench"
+    assert main(["bench", str(tmp_path / "tasks.yaml"), "--seeds", "1", "--out", str(out), "-q",
+                 "--runs-dir", str(tmp_path / "runs")]) == 0
+    rows = {t["id"]: t for t in json.loads((out / "results.json").read_text())["tasks"]}
+    assert rows["b1"]["sr"] == 1.0 and rows["b1"]["gcr"] == 1.0 and rows["b1"]["tc_max"] > 0
+    assert rows["b2"]["sr"] == 1.0 and "capacity" in rows["b2"]["error"]
