@@ -8,7 +8,7 @@ user fixing a file wants the whole list, not one error per run:
 2. meaning: stock names a shelf and a product that exist, counts are not negative, no shelf holds
    more than its capacity, footprints lie on the floor, robots start and access points lie on
    the floor and outside every footprint, a robot's ``kind`` and ``tags`` are not also the name
-   of a shelf, product or robot (commands select robots by them).
+   of a shelf, product, robot or skill (commands select robots by them).
 
 :func:`load_world` returns the normalized world dict of ``docs/architecture.md``;
 :func:`load_tasks` loads a task file, resolves its ``world`` relative to the task file, and
@@ -165,8 +165,8 @@ def case_clash_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
 
 def robot_label_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
     """A robot's ``kind`` and ``tags`` select robots in commands ("only the forklifts", "a
-    day_shift robot"), so each must not also be the name of a shelf, product or robot: a command
-    naming it could not say which one it means (compared in lower case, as the names are)."""
+    day_shift robot"), so each must not also be the name of a shelf, product, robot or skill: a
+    command naming it could not say which one it means (compared in lower case, as the names are)."""
     out: list[Diagnostic] = []
     names: dict[str, tuple[str, str]] = {}
     for section, kind in (("shelves", "shelf"), ("products", "product"), ("robots", "robot")):
@@ -174,6 +174,10 @@ def robot_label_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
         for name in block if isinstance(block, dict) else {}:
             names.setdefault(str(name).lower(), (kind, str(name)))
     robots = data.get("robots") if isinstance(data.get("robots"), dict) else {}
+    for robot in robots.values():
+        skills = robot.get("skills") if isinstance(robot, dict) else None
+        for skill in skills if isinstance(skills, dict) else {}:
+            names.setdefault(str(skill).lower(), ("skill", str(skill)))
     for rname, robot in robots.items():
         if not isinstance(robot, dict):
             continue

@@ -139,6 +139,7 @@ def test_seeded_starts_keep_kind_and_tags():
     ("{kind: Bay1, start: [1, 7], skills: {}}", "kind 'Bay1' of robot 'lifter' is also the name of shelf 'bay1'"),
     ("{tags: [night, crate], start: [1, 7], skills: {}}", "tag 'crate' of robot 'lifter' is also the name of product 'crate'"),
     ("{kind: scout, start: [1, 7], skills: {}}", "kind 'scout' of robot 'lifter' is also the name of robot 'scout'"),
+    ("{tags: [Carry], start: [1, 7], skills: {}}", "tag 'Carry' of robot 'lifter' is also the name of skill 'carry'"),
 ])
 def test_bad_kind_or_tags_located(robot, line_has):
     text = TEAM.replace("{kind: forklift, tags: [day_shift, cold_store], start: [1, 7], skills: {carry: 4}}", robot)
