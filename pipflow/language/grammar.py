@@ -21,7 +21,8 @@ GRAMMAR = r"""
 start: sentence
 sentence: lead? part (sep part)* sep?
 lead: ("but" | "and" | "then" | "also" | "so" | "however" | "now" | "oh" | "well" | "next"
-      | "finally" | "first" | "afterwards" | "after" "that" | "additionally" | "plus") ","?
+      | "finally" | "first" | "afterwards" | "after" "that" | "additionally" | "plus"
+      | ("can" | "could" | "would") "you" | "you" ("should" | "must" | "can")) ","?
 
 // a separator costs: of two readings, the one with fewer, longer parts wins
 // ("only alpha and charlie may carry bolts" is one rule, not "only alpha" and a second clause)
@@ -36,6 +37,7 @@ aside: "i" ("think" | "guess" | "suppose" | "believe") | "i" "have" "a" "plan" |
      | "thanks" | "thank" "you" | "if" "possible" | "as" "well"
 
 // ---------------------------------------------------------------- amounts and items
+rlsep: "," | "and" | "," "and" | "or" | "nor" | "," "or"
 lsep: "," | "and" | "," "and" | "plus" | "&" | "as" "well" "as"
 items: np (lsep np)*
 
@@ -70,18 +72,22 @@ np: NUM of? ihead                          -> np_count
   | "as" "many" "as" PLACE ("has" | "holds" | "have" | "contains") now? -> np_as_many_elided
   | "rest" rest_of?                        -> np_rest
   | "twice" "as" "many" ihead              -> np_twice
+  | "twice" "as" "many" ihead "as" ("it" | "they") ("has" | "have" | "holds" | "hold") now? -> np_twice
+  | NUM "times" "as" "many" ihead ("as" ("it" | "they") ("has" | "have" | "holds" | "hold") now?)? -> np_ntimes
+  | lower NUM more of? ihead               -> np_atleast_more
+  | "all" NUM of? ihead                    -> np_all_n
   | ("double" | "triple" | "quadruple") ihead -> np_times
   | "half" of? its? ihead                  -> np_half
   | NUM                                    -> np_bare
 
-rest_of: "of" ihead
+rest_of: "of" (ihead | "them" | "it" | its ihead)
 bare: ihead (lsep ihead)*
 except_items: ("except" | "but" | "besides" | "other" "than" | "apart" "from" | "excluding") ihead (lsep ihead)*
 
 ihead: ITEM | ITEMWORD
 of: "of"
 its: "its" | "their" | "it" POSS
-now: "now" | "right" "now" | "today" | "at" "moment" | "currently"
+now: "now" | "right" "now" | "at" "moment" | "currently"
 more: "more" | "extra" | "additional"
 fewer: "fewer" | "less"
 frac: NUM FRAC | ("a" | "an") FRAC
@@ -97,8 +103,12 @@ places: place (lsep place)*
 place: PLACE                                -> place_name
      | PLACEWORD                            -> place_word
      | ("it" | "there")                     -> place_it
+     | PLACE PLACEWORD                      -> place_name
      | ("every" | "each" | "all") PLACEWORD  -> place_all
+     | ("every" | "each" | "all") PLACEWORD except_pl -> place_all
      | "all" "of" "them"                    -> place_all
+     | "each" "of" place (lsep place)*       -> place_each
+except_pl: ("except" | "but" | "besides" | "other" "than" | "apart" "from" | "excluding") place (lsep place)*
 posplace: PLACE POSS
 prep: "in" | "on" | "at" | "into" | "onto" | "inside" | "within" | "to" | "in" "to" | "on" "to"
 each: "each" | "apiece" | "both" | "every" NUM
@@ -116,16 +126,18 @@ setv: "has" | "have" | "hold" | "holds" | "store" | "stores" | "stock" | "stocks
     | "contains" | "get" | "gets" | "keep" | "keeps" | "carry" | "carries" | "house" | "houses"
     | "need" | "needs" | "receive" | "receives" | "end" "up" "with" | "be" "stocked" "with"
     | "be" "filled" "with" | "be" "loaded" "with" | "hold" "onto" | "be" "holding" | "is" "holding"
-putv: "put" | "place" | "store" | "stock" | "set" | "leave" | "stack" | "load" | "get"
+    | "end" "with" | "want" | "wants" | "be" "left" "with" | "be" "at" | "is" "at" | "are" "at"
+putv: "put" | "place" | "store" | "stock" | "set" | "leave" | "stack" | "load" | "get" | "keep"
     | "make" "sure" "there" ("is" | "are") | "ensure" "there" ("is" | "are")
 addv: "add" | "bring" | "deliver" | "send" | "ship" | "move" | "transfer" | "carry" | "shift"
     | "relocate" | "take" | "haul" | "bring" "over" | "move" "over" | "send" "over"
-    | "supply" | "drop" "off"
+    | "supply" | "drop" "off" | "get" | "push"
 removev: "remove" | "take" | "unload" | "pull" | "withdraw" | "clear" | "get" | "move"
 splitv: "split" | "divide" | "distribute" | "share" | "spread" | "spread" "out"
 among: "between" | "among" | "amongst" | "across" | "over"
 even: "evenly" | "equally" | "fairly" | "in" "equal" ("parts" | "shares")
 want: ("i" | "we") ("want" | "would" "like" | "like" | "need" | "wish") | "id" "like" | "wed" "like"
+    | "give"
     | "make" "it" "so" that? | "make" "sure" that? | "ensure" that? | "let" | "have" | "get"
     | "i" "want" "it" "so" that?
 that: "that"
@@ -160,7 +172,31 @@ goal: there_be items loc                                  -> g_set
     | addv items to places each?                             -> g_add
     | addv items loc                                      -> g_add
     | refill places "with" items                           -> g_add_place
-    | addv items from places to places                     -> g_transfer
+    | addv items adv? from places adv? to places           -> g_transfer
+    | addv items src adv? to places                       -> g_transfer_src
+    | addv pitems adv? to places                          -> g_transfer_src
+    | items src modal? go to places                       -> g_transfer_src
+    | places ("gets" | "receives" | "takes" | "should" "get" | "should" "receive") items from places -> g_receive
+    | removev items src                                   -> g_remove_src
+    | removev pitems                                      -> g_remove_src
+    | places modal? setv items "too" "many"                  -> g_too_many
+    | places modal? "lose" items                             -> g_lose
+    | ("cut" | "reduce") (ihead loc | pitem_plain) "by" (frac | "half" | NUM)  -> g_cut
+    | refill places "with" ihead ("until" ("it" | "they") ("is" | "are") "full" | "to" ("capacity" | "top")) -> g_fill
+    | ("keep" | "hold") places "to"? items                    -> g_place_set
+    | places modal? ("not" | "never") ("drop" | "fall" | "go") "below" NUM of? ihead -> g_floor
+    | places ("shouldnt" | "mustnt" | "cant" | "cannot") ("drop" | "fall" | "go") "below" NUM of? ihead -> g_floor
+    | places modal? setv items on_top                       -> g_add_place
+    | ("dont" | "do" "not" | "never") ("touch" | "move" | "take") ("any" | "anything")? ihead loc? -> g_keep_item
+    | ("dont" | "do" "not") emptyv places                    -> g_noop
+    | ("dont" | "do" "not" | "never") (putv | addv | "send" | "bring") ("any" | "anything" | "them" | "it" | ihead)? loc -> g_no_inflow
+    | ("none" "of" ("them" | "it") | "none") modal? go loc  -> g_no_inflow
+    | "swap" ("what" | "contents" "of" | "loads" "of" | "stock" "of" | "everything" "on" | "everything" "in")? places ("hold" | "have" | "contain" | "holds" | "has")? -> g_swap
+    | "swap" ihead (lsep ihead)* ("between" | "of" | "on" | "in" | "at") places -> g_swap_items
+    | "swap" ihead loc "with" ihead? loc                     -> g_swap_two
+    | places modal? ("swap" | "trade" | "exchange") (("their" | "its") | "what" "they" ("hold" | "have"))? swapwhat -> g_swap_subj
+    | splitv items src even? among places even?              -> g_split_src
+    | splitv pitems even? among places even?                 -> g_split_src
     | addv items to places from places                     -> g_transfer
     | addv items to places except_places                   -> g_transfer_except
     | addv items except_places to places                   -> g_transfer_except
@@ -196,10 +232,19 @@ goal: there_be items loc                                  -> g_set
     | splitv bare even? among places even?                  -> g_split
     | "put" items even? among places even?                  -> g_split
 
+on_top: ("on" "top" "of" | "in" "addition" "to" | "besides" | "over" "and" "above") "what" ("it" | "they") ("has" | "have" | "holds" | "hold") now?
+adv: "over" | "back" | "across" | "along"
+src: ("in" | "on" | "at" | "from" | "off" | "out" "of" | "of") places
+pitems: frac of? posplace ihead appos?                     -> pi_frac
+      | NUM of? posplace ihead appos?                      -> pi_count
+      | ("all" of?)? posplace ihead appos?                 -> pi_all
+pitem_plain: posplace ihead
+appos: ","? ("all" | "both") (NUM "of" "them" | "of" "them") ","?
+swapwhat: ihead (lsep ihead)* | "everything" ("they" ("hold" | "have"))? | "contents" | "loads" | "stock" | "places" | "goods" | "items"
 stay: be | "sit" | "stay" | "lie" | "go" | "be" "placed" | "be" "stored" | "belong" | "end" "up"
 both: "both"
 only: "only"
-equal: "exactly" | "equal" "to" | "at"
+equal: "equal" "to" | "at"
 refill: "restock" | "refill" | "replenish" | "top" "up" | "supply"
 mult: "double" | "triple" | "quadruple" | "halve"
 emptyv: "empty" | "clear" | "clean" "out" | "clear" "out" | "empty" "out"
@@ -213,14 +258,17 @@ except_what: "ones" | "those" | "them" | "what" "is" | "any" | "what" "sits" | "
 
 // ---------------------------------------------------------------- ellipsis tails
 tail: places ("too" | "as" "well" | "also")                 -> t_too
+    | "so" ("does" | "do" | "should" | "must" | "will") places -> t_too
+    | places items                                       -> t_gap
+    | "rest" rest_of? to places                           -> t_rest
+    | "not" ihead (lsep ihead)*                           -> t_not_items
     | ("also" | "same" "for" | "same" "thing" "for") places   -> t_too
-    | NUM more? loc                                      -> t_elided
     | NUM fewer loc                                      -> t_elided_fewer
     | ("taking" | "take") ("them" | "it" | "those" | "these" | "all" | "everything")? from places -> t_source
     | ("all" | "both" | "each")? from places               -> t_source
 
 // ---------------------------------------------------------------- robots and rules
-robots: robot (lsep robot)*
+robots: robot (rlsep robot)*
       | rgroup
 robot: ROBOTWORD? ROBOT                                   -> r_name
      | ROBOTWORD? ROBOT ("to" | "through" | "thru" | "till") NUM -> r_range
@@ -236,9 +284,16 @@ rgroup: all? (RKIND | RTAG)                                -> r_kind
       | all? ROBOTWORD "that" able? skillv ("at" "most" | "no" "more" "than") NUM -> r_skill_max
       | all? ROBOTWORD ("with" | "whose") skillv ("is" | "of")? ("at" "least" NUM | NUM ("or" "more" | "or" "above" | "plus")) -> r_skill_min
       | all? ROBOTWORD ("with" | "whose") skillv ("is" | "of")? ("at" "most" NUM | NUM "or" ("less" | "fewer" | "below")) -> r_skill_max
+      | all? ROBOTWORD ("carrying" | "lifting" | "with" skillv | "that" able? skillv | "whose" skillv "is") cmp -> r_skill_cmp
       | SUPER ROBOTWORD?                                  -> r_super
       | NUM "of" SUPER ROBOTWORD                           -> r_super
 all: "all"
+cmp: ("at" "least" | "no" "less" "than" | "no" "fewer" "than" | "not" "less" "than") NUM -> cmp_min
+   | NUM ("or" "more" | "or" "above" | "plus" | "or" "higher")  -> cmp_min
+   | ("more" | "greater" | "higher") "than" NUM                  -> cmp_above
+   | ("less" | "fewer" | "lower") "than" NUM                      -> cmp_below
+   | ("at" "most" | "no" "more" "than" | "not" "more" "than") NUM -> cmp_max
+   | NUM "or" ("less" | "fewer" | "below" | "lower")             -> cmp_max
 able: "can" | "may"
 skillv: SKILL | "carry" | "carries" | "lift" | "lifts" | "move" | "moves" | "handle" | "handles"
 
@@ -250,7 +305,9 @@ oblig: "should" | "must" | "shall" | "will" | "is" "to" | "are" "to" | "has" "to
 state: "broken" | "faulty" | "unavailable" | "offline" | "disabled" | "damaged" | "down"
      | "idle" | "unused" | "busy" | "charging" | "malfunctioning" | "out" "of" ("order" | "service")
      | "out-of-service" | "under" "maintenance" | "in" "maintenance" | "off" "limits" | "spare"
-     | "not" "working" | "not" "available" | "excluded" | "off"
+     | "not" "working" | "not" "available" | "excluded" | "off" | "parked" | "benched" | "resting"
+     | "off" "duty" | "on" "break" | "not" "allowed" | "banned" | "forbidden" | "off" "this"? ("job" | "task" | "one")
+     | "out" "of" "this"? ("job" | "task" | "one" | "work")
 use: "use" | "used" | "using" | "employ" | "employed" | "assign" | "assigned" | "involve" | "involved"
    | "work" | "help" | "be" "used" | "be" "involved" | "be" "employed" | "be" "assigned" | "participate"
 act: "move" | "moves" | "carry" | "carries" | "touch" | "touches" | "take" | "takes" | "deliver"
@@ -280,6 +337,11 @@ rscope: robj? rwhere*
 rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | robots rmodal? rneg "be" use ("to" act?)? rscope       -> rule_never
     | robots ("is" | "are") rneg? state                      -> rule_state
+    | robots modal? ("stay" | "stays" | "remain" | "remains") state -> rule_state
+    | ("dont" | "do" "not" | "never") act robots rscope       -> rule_never
+    | ("use" | "employ") robots "only" rscope                 -> rule_only
+    | "no" robots ("on" "this" ("one" | "job" | "task"))? rscope -> rule_never
+    | ("keep" | "leave") robots ("away" | "clear") from ITEM (lsep ITEM)* -> rule_away_items
     | robots ("is" | "are") state ","? ("so" | "and")? ("dont" | "do" "not") "use" ("it" | "them") -> rule_state
     | robots ("is" | "are") "not" "to" "be" "used" rscope     -> rule_never
     | robots modal? ("stay" | "keep") ("away" | "clear") from places -> rule_away
@@ -308,8 +370,9 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | robots oblig act rscope                               -> rule_use
     | robots ("can" | "may" | "could" | "might") act rscope  -> rule_permission
 
-// "robot 3 should put 5 product1 on shelf2", "Robot 5, bring two product1 to shelf2"
-addressed: robots ","? oblig? goal
+// "Titan should put 5 kegs on outbound", "Titan, bring two kegs to outbound"
+addressed: robots ("," | ":")? oblig? goal
+         | robots "," ("our" | "a" | "an" | "my")? (RKIND | RTAG) "," oblig? goal  -> addressed_appos
          | ("let" | "have" | "get" | "ask") robots "to"? goal
 scoped_goal: ("using" | "with" | "by") ("only" | "just")? robots ","? goal    -> scoped_only
            | goal ("using" | "with" | "by") ("only" | "just")? robots           -> scoped_only_after
@@ -337,9 +400,23 @@ def nullable_optionals(grammar: str) -> str:
         made[name] = sym
         return name
 
-    lines = []
-    for line in grammar.splitlines():
-        code = line.partition("//")[0]
-        lines.append(re.sub(r'("[^"]+"|\b[A-Za-z_][A-Za-z0-9_]*)\?', opt, code))
+    groups: dict[str, str] = {}
+
+    def group(m: re.Match) -> str:
+        body = m.group(1)
+        name = groups.get(body)
+        if name is None:
+            name = groups[body] = f"_grp{len(groups)}"
+        return name
+
+    text = "\n".join(line.partition("//")[0] for line in grammar.splitlines())
+    # a group "(a | b)" is a rule of its own too, for the same reason (innermost first)
+    while True:
+        new = re.sub(r"\(([^()]*)\)", group, text)
+        if new == text:
+            break
+        text = new
+    text += "\n" + "\n".join(f"{name}: {body}" for body, name in groups.items())
+    lines = [re.sub(r'("[^"]+"|\b[A-Za-z_][A-Za-z0-9_]*)\?', opt, line) for line in text.splitlines()]
     extra = [f"{name}: {sym} | " for name, sym in made.items()]
     return "\n".join(lines + extra) + "\n"

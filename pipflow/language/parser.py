@@ -32,7 +32,7 @@ from pipflow.language.robots import RobotSelector
 
 SET_AMOUNTS = {"count", "all", "none", "as_many_as", "rest", "each"}
 CHANGE_AMOUNTS = {"more", "fewer", "times", "fraction"}
-BOUND_AMOUNTS = {"at_least", "at_most", "between"}
+BOUND_AMOUNTS = {"at_least", "at_most", "between", "at_least_more"}
 
 
 class _ListLexer(Lexer):
@@ -76,6 +76,8 @@ class _Sentence:
         self.bind: list[dict] = []  # rules that take the sentence's goal as their scope
         self.last_item: list[str] | None = None
         self.last_places: list[str] | None = None
+        self.last_source: list[str] | None = None
+        self.distributive = False  # "every bay", "each of A and B": a count applies to each
 
     # -- words ------------------------------------------------------------------------------
     def words(self, node: Tree | Token | list) -> str:
@@ -86,6 +88,16 @@ class _Sentence:
         if not pos:
             return ""
         return " ".join(s.text for s in self.lexed.source[min(pos):max(pos) + 1]).replace(" zzposs", "'s")
+
+    def toks(self, node: Tree, kind: str) -> list[Token]:
+        return [t for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == kind)]
+
+    def first_word(self, node: Tree) -> str:
+        got = self.toks_any(node)
+        return str(got[0].value).lower() if got else ""
+
+    def toks_any(self, node: Tree) -> list[Token]:
+        return sorted(node.scan_values(lambda v: isinstance(v, Token)), key=lambda t: t.start_pos or 0)
 
     # -- items ------------------------------------------------------------------------------
     def ihead(self, node: Tree, words: str) -> str | None:
@@ -140,6 +152,12 @@ class _Sentence:
             return out({"fraction": [1, 2]})
         if kind == "np_twice":
             return out({"times": 2})
+        if kind == "np_ntimes":
+            return out({"times": nums[0]})
+        if kind == "np_atleast_more":
+            return out({"at_least_more": nums[0]})
+        if kind == "np_all_n":
+            return out({"all": True, "expect": nums[0]})
         if kind == "np_times":
             first = str(node.children[0].value) if isinstance(node.children[0], Token) else words.split()[0]
             return out({"times": {"double": 2, "triple": 3, "quadruple": 4}.get(first.lower(), 2)})
@@ -201,7 +219,14 @@ class _Sentence:
                                            f"(candidates: {self.index.candidates('shelf')})")
                 out.extend(self.last_places)
             elif c.data == "place_all":
-                out.extend(self.index.by_kind["shelf"])
+                excl: list[str] = []
+                for e in self.sub(c, "except_pl"):
+                    excl += [str(t.value) for t in self.toks(e, "PLACE")]
+                out.extend(p for p in self.index.by_kind["shelf"] if p not in excl)
+                self.distributive = True
+            elif c.data == "place_each":
+                out.extend(str(t.value) for t in self.toks(c, "PLACE"))
+                self.distributive = True
         out = list(dict.fromkeys(out))
         self.last_places = out
         return out
@@ -226,6 +251,8 @@ class _Sentence:
         if mode == "respectively" or (len(places) > 1 and mode == "resp"):
             self.respectively(places, nps, words, add)
             return
+        if self.distributive:
+            mode, self.distributive = "each", False
         if len(places) > 1 and mode != "each" and not all(
                 "none" in np["amount"] for np in nps):
             raise TranslationError(
@@ -237,6 +264,12 @@ class _Sentence:
     def _goal_statement(self, places: list[str], np: dict, add: bool) -> dict:
         a = np["amount"]
         key = next(iter(a))
+        prev = self.statements[-1] if self.statements else None
+        if np["items"] is None and prev is not None and prev["op"] == "transfer" and key == "count":
+            # "Move 2 totes from inbound to outbound and 1 to quarantine": same item, same source
+            return {**prev, "amount": a, "to": {"names": places}, "words": np["words"]}
+        if key == "rest":
+            return self._rest(places, np)
         if np["items"] is None:
             if not self.last_item:
                 raise TranslationError(f"{_quote(np['words'])}: cannot tell which product this count "
@@ -331,7 +364,7 @@ class _Sentence:
                 self.statements.append(self._transfer_statement(np, source, None, words))
             return
         if kind == "g_mult":
-            verb = str(node.children[0].value).lower()
+            verb = self.first_word(node)
             head = self.ihead(self.sub(node, "ihead")[0], words)
             places, _ = self.loc(locs[0])
             amount = {"fraction": [1, 2]} if verb == "halve" else {"times": {"double": 2, "triple": 3, "quadruple": 4}[verb]}
@@ -372,9 +405,25 @@ class _Sentence:
             self.statements.append({"op": "nothing_else", "places": {"names": places}, "words": words})
             return
         if kind == "g_no_inflow":
+            # "Clear shelf2, but nothing goes to shelf4": shelf4 keeps what it has of what moves
             places, _ = self.loc(locs[0])
-            self.statements.append({"op": "keep", "places": {"names": places}, "items": {"all": True},
-                                    "inflow_only": True, "words": words})
+            heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
+            moved: list[str] = []
+            everything = False
+            for st in self.statements:
+                sel = st.get("items") or {}
+                if "names" in sel:
+                    moved += sel["names"]
+                else:
+                    everything = True
+            if heads:
+                sel = {"names": heads}
+            elif moved and not everything:
+                sel = {"names": list(dict.fromkeys(moved))}
+            else:
+                sel = {"all": True}
+            self.statements.append({"op": "keep", "places": {"names": places}, "items": sel,
+                                    "inflow_only": False, "words": words})
             return
         if kind == "g_keep":
             poss = self.sub(node, "posplace")
@@ -411,7 +460,137 @@ class _Sentence:
             places, mode = self.loc(locs[0])
             self.put(places, "each", [{"items": {"all": True}, "amount": {"count": 1}, "words": words}], words)
             return
+        if kind == "g_transfer_src":
+            srcs = self.sub(node, "src")
+            pit = [c for c in node.children if isinstance(c, Tree) and c.data.startswith("pi_")]
+            if pit:
+                np, source = self.pitem(pit[0], words)
+                nps = [np]
+            else:
+                source = self.place_list(self.sub(srcs[0], "places")[0])
+            dst = self.place_list(plist[-1]) if plist else []
+            for np in nps:
+                self.statements.append(self._transfer_statement(np, source, dst, words))
+            self.last_source = source
+            return
+        if kind == "g_receive":
+            dst, source = self.place_list(plist[0]), self.place_list(plist[1])
+            for np in nps:
+                self.statements.append(self._transfer_statement(np, source, dst, words))
+            return
+        if kind == "g_remove_src":
+            pit = [c for c in node.children if isinstance(c, Tree) and c.data.startswith("pi_")]
+            if pit:
+                np, source = self.pitem(pit[0], words)
+                nps = [np]
+            else:
+                source = self.place_list(self.sub(self.sub(node, "src")[0], "places")[0])
+            for np in nps:
+                if np["amount"] == {"count": 0}:
+                    continue
+                st = self._transfer_statement(np, source, None, words)
+                self.statements.append(st)
+            self.last_source = source
+            return
+        if kind in ("g_too_many", "g_lose"):
+            places = self.place_list(plist[0])
+            for np in nps:
+                a = np["amount"]
+                if "count" in a:
+                    np = {**np, "amount": {"fewer": a["count"]}}
+                elif "fraction" in a:
+                    num, den = a["fraction"]
+                    np = {**np, "amount": {"fraction": [den - num, den]}}
+                else:
+                    raise TranslationError(f"{_quote(words)}: cannot tell how many to take away")
+                self.statements.append(self._goal_statement(places, np, False))
+            return
+        if kind == "g_cut":
+            pp = self.sub(node, "pitem_plain")
+            if pp:
+                places = [str(self.toks(pp[0], "PLACE")[0].value)]
+                head = self.ihead(self.sub(pp[0], "ihead")[0], words)
+            else:
+                places = self.loc(locs[0])[0]
+                head = self.ihead(self.sub(node, "ihead")[0], words)
+            fr = self.sub(node, "frac")
+            if fr:
+                den = int(self.toks(fr[0], "FRAC")[0].value)
+                num = int(self.toks(fr[0], "NUM")[0].value) if self.toks(fr[0], "NUM") else 1
+                amount = {"fraction": [den - num, den]}
+            elif any(isinstance(c, Token) and c.value == "half" for c in node.children):
+                amount = {"fraction": [1, 2]}
+            else:
+                amount = {"fewer": int(self.toks(node, "NUM")[-1].value)}
+            self.statements.append(self._goal_statement(places, {"items": {"names": [head]}, "amount": amount,
+                                                                  "words": words}, False))
+            return
+        if kind == "g_floor":
+            places = self.place_list(plist[0])
+            head = self.ihead(self.sub(node, "ihead")[0], words)
+            n = int(self.toks(node, "NUM")[0].value)
+            self.put(places, "each", [{"items": {"names": [head]}, "amount": {"at_least": n}, "words": words}], words)
+            return
+        if kind == "g_keep_item":
+            head = self.ihead(self.sub(node, "ihead")[0], words)
+            places = self.loc(locs[0])[0] if locs else list(self.index.by_kind["shelf"])
+            self.statements.append({"op": "keep", "places": {"names": places}, "items": {"names": [head]},
+                                    "inflow_only": False, "words": words})
+            return
+        if kind == "g_noop":
+            return  # "Don't empty rack B, (just take 2 gears off it)": says what not to do
+        if kind in ("g_swap_two", "g_swap_subj"):
+            self.swap(node, words)
+            return
+        if kind == "g_split_src":
+            pit = [c for c in node.children if isinstance(c, Tree) and c.data.startswith("pi_")]
+            if pit:
+                np, source = self.pitem(pit[0], words)
+                nps = [np]
+            else:
+                source = self.place_list(self.sub(self.sub(node, "src")[0], "places")[0])
+            places = self.place_list(plist[-1])
+            for np in nps:
+                items = np["items"] if np["items"] is not None else {"names": list(self.last_item or [])}
+                self.statements.append({"op": "distribute", "places": {"names": places}, "items": items,
+                                        "amount": np["amount"], "from": {"names": source}, "words": words})
+            return
         raise TranslationError(f"{_quote(words)}: cannot read this statement")
+
+    def pitem(self, node: Tree, words: str) -> tuple[dict, list[str]]:
+        """A possessive item phrase ("half of bay 1's crates"): its amount and its place."""
+        source = [str(self.toks(self.sub(node, "posplace")[0], "PLACE")[0].value)]
+        head = self.ihead(self.sub(node, "ihead")[0], words)
+        self.last_item = [head]
+        appos = self.sub(node, "appos")
+        expect = None
+        if appos and self.toks(appos[0], "NUM"):
+            expect = int(self.toks(appos[0], "NUM")[0].value)
+        if node.data == "pi_frac":
+            fr = self.sub(node, "frac")[0]
+            den = int(self.toks(fr, "FRAC")[0].value)
+            num = int(self.toks(fr, "NUM")[0].value) if self.toks(fr, "NUM") else 1
+            amount: dict = {"fraction": [num, den]}
+        elif node.data == "pi_count":
+            amount = {"count": int(self.toks(node, "NUM")[0].value)}
+        else:
+            amount = {"all": True}
+        if expect is not None:
+            amount["expect"] = expect
+        return {"items": {"names": [head]}, "amount": amount, "words": words}, source
+
+    def _rest(self, places: list[str], np: dict) -> dict:
+        """ "and the rest to P": what is left at the source of the statement before."""
+        prev = self.statements[-1] if self.statements else None
+        if prev is None:
+            raise TranslationError(f"'{np['words']}': the rest of what? (say where it comes from)")
+        source = (prev.get("from") or {}).get("names") if prev["op"] == "transfer" else (
+            prev.get("places") or {}).get("names")
+        items = np["items"] or prev.get("items")
+        if not source or not items or "names" not in items:
+            raise TranslationError(f"'{np['words']}': the rest of what? (say where it comes from)")
+        return {"op": "transfer", "items": items, "amount": {"rest": True}, "from": {"names": source},
+                "to": {"names": places}, "words": np["words"]}
 
     def _last_places(self, words: str) -> list[str]:
         if not self.last_places:
@@ -463,18 +642,24 @@ class _Sentence:
         for np in nps:
             if exc and not ({"all", "all_held", "fraction"} & set(np["amount"])):
                 raise TranslationError(f"{_quote(words)}: 'except' needs all of a product "
-                                       f"('every product2 ... except the ones on shelf1')")
+                                       f"('every keg ... except the ones on staging')")
             self.statements.append(self._transfer_statement(np, src, dst, words, exclude))
 
     def swap(self, node: Tree, words: str) -> None:
         kind = node.data
         places: list[str] = []
+        heads: list[str] = []
         for c in node.children:
             if isinstance(c, Tree) and c.data == "posplace":
                 places.append(str(c.children[0].value))
             elif isinstance(c, Tree) and c.data == "places":
                 places.extend(self.place_list(c))
-        heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
+            elif isinstance(c, Tree) and c.data.startswith("loc"):
+                places.extend(self.loc(c)[0])
+            elif isinstance(c, Tree) and c.data == "ihead":
+                heads.append(self.ihead(c, words))
+            elif isinstance(c, Tree) and c.data == "swapwhat":
+                heads += [self.ihead(h, words) for h in self.sub(c, "ihead")]
         places = list(dict.fromkeys(places))
         if len(places) != 2:
             raise TranslationError(f"{_quote(words)}: a swap needs exactly two places "
@@ -529,6 +714,37 @@ class _Sentence:
             if not changed:
                 raise TranslationError(f"{_quote(words)}: nothing before it to take from there")
             return
+        if kind == "t_gap":
+            # "Rack A should have 9 widgets and rack B 6 gears", "..., staging 8": the verb is shared
+            places = self.place_list(self.sub(node, "places")[0])
+            prev = [st for st in self.statements if st["op"] in ("set", "change", "bound")]
+            if not prev:
+                raise TranslationError(f"{_quote(words)}: nothing said before it that it continues")
+            for np in self.nps(self.sub(node, "items")[0]):
+                st = self._goal_statement(places, np, False)
+                if prev[-1]["op"] == "change" and st["op"] == "set":
+                    raise TranslationError(f"{_quote(words)}: cannot tell whether this count is added or set")
+                self.statements.append(st)
+            return
+        if kind == "t_rest":
+            places = self.place_list(self.sub(node, "places")[0])
+            rest_of = self.sub(node, "rest_of")
+            heads = [self.ihead(h, words) for r in rest_of for h in self.sub(r, "ihead")]
+            np = {"items": {"names": heads} if heads else None, "amount": {"rest": True}, "words": words}
+            self.statements.append(self._rest(places, np))
+            return
+        if kind == "t_not_items":
+            # "Take the widgets off rack C, but not the springs": they stay where they are
+            heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
+            prev = self.statements[-1] if self.statements else None
+            if prev is None:
+                raise TranslationError(f"{_quote(words)}: nothing said before it that it excepts")
+            places = (prev.get("from") or prev.get("places") or {}).get("names")
+            if not places:
+                raise TranslationError(f"{_quote(words)}: cannot tell where they stay")
+            self.statements.append({"op": "keep", "places": {"names": places}, "items": {"names": heads},
+                                    "inflow_only": False, "words": words})
+            return
         if kind == "t_resp":
             raise TranslationError(f"{_quote(words)}: 'respectively' must follow the places it pairs")
         raise TranslationError(f"{_quote(words)}: cannot read this")
@@ -545,10 +761,15 @@ class _Sentence:
             raise TranslationError(f"cannot tell whether {_quote(words)} requires or forbids the robots "
                                    f"(a permission restricts nothing: say 'only ...' or '... must not ...')")
         mode = {"rule_never": "never", "rule_state": "never", "rule_away": "never", "rule_only": "only",
+                "rule_away_items": "never",
                 "rule_use": "only"}[kind]
         base = {"mode": mode, "robots": sel, "words": words}
         if kind == "rule_state":
             self.rules.append(base)
+            return
+        if kind == "rule_away_items":
+            for t in self.toks(node, "ITEM"):
+                self.rules.append({**base, "product": str(t.value)})
             return
         if kind == "rule_away":
             for p in self.place_list(self.sub(node, "places")[0]):
@@ -591,9 +812,10 @@ class _Sentence:
                 elif c.data in ("rw_all",):
                     unscoped_all = True
         if not products and not places:
-            if unscoped_all:
-                base = {**base, "open": True}
-            self.bind.append(base)
+            # no scope words: the rule holds for the whole command, unless a pronoun ("for
+            # that", "move them") points at what the sentence asks for
+            if pronoun and not unscoped_all:
+                self.bind.append(base)
             self.rules.append(base)
             return
         for product in products or [None]:
@@ -616,6 +838,14 @@ class _Sentence:
             self.rule(node)
         elif d == "aside":
             return
+        elif d == "addressed_appos":
+            robots_node = self.sub(node, "robots")[0]
+            sel = self.robots.read(robots_node, self.words(robots_node))
+            said = [t for t in self.toks_any(node) if t.type in ("RKIND", "RTAG")][0]
+            self.robots.check_apposition(sel, said.type, str(said.value), self.words(node))
+            goal = next(c for c in node.children if isinstance(c, Tree) and c.data.startswith("g_"))
+            self.goal(goal)
+            self._rule_for(sel, "only", [], self.words(node))
         elif d == "addressed":
             robots_node = self.sub(node, "robots")[0]
             sel = self.robots.read(robots_node, self.words(robots_node))

@@ -61,6 +61,7 @@ class _State:
         self.bounds: dict[tuple[str, str], dict] = {}
         self.lines: list[str] = []
         self.fills: list[dict] = []
+        self.before_set: dict[tuple[str, str], int] = {}  # the count before a command fixed it
 
     def cur(self, place: str, item: str) -> int:
         return self.counts.get((place, item), stock(self.world, place, item))
@@ -89,6 +90,7 @@ class _State:
                                    f"{self.counts[key]}, '{words}' gives {value}")
         if absolute:
             self.fixed[key] = words
+            self.before_set.setdefault(key, before)
         self.counts[key] = value
         self.lines.append(f"{place} {item}: {before} now, {step} -> {value}, from '{words}'")
 
@@ -178,7 +180,10 @@ def _bound(st: _State, s: dict) -> None:
     a = s["amount"]
     for p in places:
         for i in items:
-            st.bound(p, i, a.get("at_least"), a.get("at_most"), words)
+            if "at_least_more" in a:
+                st.bound(p, i, st.cur(p, i) + int(a["at_least_more"]), None, words)
+            else:
+                st.bound(p, i, a.get("at_least"), a.get("at_most"), words)
 
 
 def _transfer(st: _State, s: dict) -> None:
@@ -205,8 +210,19 @@ def _transfer(st: _State, s: dict) -> None:
                     raise TranslationError(f"'{words}': the command does not say which place the "
                                            f"{a['count']} {i} come from")
                 n = int(a["count"])
+            elif a.get("rest") and (src, i) in st.fixed:
+                # "keep 3 gears on rack B and send the rest to rack E": B is already at 3
+                n = st.before_set[(src, i)] - have
+                if n < 0:
+                    raise Refusal(f"'{words}': {src} had only {st.before_set[(src, i)]} {i}")
+                for dst in target:
+                    st.put(dst, i, st.cur(dst, i) + n, f"+{n} (the rest) from {src}", words, False)
+                continue
             elif a.get("all") or a.get("all_held") or a.get("rest"):
                 n = have
+                if "expect" in a and int(a["expect"]) != have:
+                    raise TranslationError(f"'{words}': the command says {a['expect']} {i} but {src} "
+                                           f"holds {have}; cannot tell which is meant")
             elif "fraction" in a:
                 num, den = a["fraction"]
                 n = _fraction(have, num, den, words, f"{i} on {src}")
@@ -217,6 +233,15 @@ def _transfer(st: _State, s: dict) -> None:
             st.put(src, i, have - n, f"-{n} moved out", words, False)
             for dst in target:
                 st.put(dst, i, st.cur(dst, i) + n, f"+{n} from {src}", words, False)
+    # what an "except" leaves behind is listed where it is, at its count now
+    if "names" not in src_sel:
+        for p in src_sel.get("except") or []:
+            for i in _names(item_sel, st.products):
+                st.put(p, i, st.cur(p, i), "left where it is (except)", words, False)
+    for i in item_sel.get("except") or []:
+        for src in sources:
+            if st.cur(src, i) > 0:
+                st.put(src, i, st.cur(src, i), "left where it is (except)", words, False)
 
 
 def _swap(st: _State, s: dict) -> None:
@@ -264,7 +289,26 @@ def _distribute(st: _State, s: dict) -> None:
     items = _names(s.get("items"), st.products)
     st.check_names(places, items, words)
     a = s["amount"]
+    sources = _names(s.get("from"), st.places) if s.get("from") else []
+    st.check_names(sources, [], words)
+    if len(sources) > 1:
+        raise TranslationError(f"'{words}': cannot tell which of {', '.join(sources)} the shares come from")
     for i in items:
+        if sources:
+            src = sources[0]
+            have = st.cur(src, i)
+            units = int(a["count"]) if "count" in a else have
+            if units > have:
+                raise Refusal(f"'{words}' shares {units} {i} from {src}, which holds {have}")
+            if "expect" in a and int(a["expect"]) != have:
+                raise TranslationError(f"'{words}': the command says {a['expect']} {i} but {src} holds {have}")
+            st.put(src, i, have - units, f"-{units} shared out", words, False)
+            for p, n in split_evenly(units, places).items():
+                if units % len(places):
+                    raise TranslationError(f"'{words}': {units} {i} do not split evenly between "
+                                           f"{', '.join(places)}; say how many each gets")
+                st.put(p, i, st.cur(p, i) + n, f"+{n} (a share of {units} from {src})", words, False)
+            continue
         units = int(a["count"]) if "count" in a else world_total(st.world, i)
         for p, n in split_evenly(units, places).items():
             st.put(p, i, n, f"share {n} of {units}", words, True)

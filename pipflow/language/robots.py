@@ -25,7 +25,7 @@ class RobotSelector:
 
     def read(self, node: Tree, words: str) -> dict:
         if any(isinstance(c, Tree) and c.data.startswith("r_") and c.data in (
-                "r_kind", "r_skill_min", "r_skill_max", "r_super") for c in node.children):
+                "r_kind", "r_skill_min", "r_skill_max", "r_super", "r_skill_cmp") for c in node.children):
             return self._group(next(c for c in node.children if isinstance(c, Tree)), words)
         names: list[str] = []
         for c in node.children:
@@ -56,10 +56,31 @@ class RobotSelector:
             n = int(next(t.value for t in vals if t.type == "NUM"))
             skill = self._skill(vals, words)
             return {"skill": skill, "at_least" if node.data == "r_skill_min" else "at_most": n}
+        if node.data == "r_skill_cmp":
+            skill = self._skill(vals, words)
+            cmp = next(c for c in node.children if isinstance(c, Tree) and c.data.startswith("cmp_"))
+            n = int(next(t.value for t in cmp.scan_values(lambda v: isinstance(v, Token) and v.type == "NUM")))
+            if cmp.data == "cmp_min":
+                return {"skill": skill, "at_least": n}
+            if cmp.data == "cmp_above":
+                return {"skill": skill, "at_least": n + 1}
+            if cmp.data == "cmp_max":
+                return {"skill": skill, "at_most": n}
+            return {"skill": skill, "at_most": n - 1}
         if node.data == "r_super":
             t = next(v for v in vals if v.type == "SUPER")
             return {"extreme": str(t.value), "skill": self._skill([], words)}
         raise TranslationError(f"'{words}': cannot tell which robots")
+
+    def check_apposition(self, sel: dict, kind: str, value: str, words: str) -> None:
+        """ "Titan, our forklift, ...": the world must agree, or the command is not understood."""
+        robots = self.world.get("robots") or {}
+        key = "kind" if kind == "RKIND" else "tags"
+        for name in sel.get("names", []):
+            r = robots.get(name) or {}
+            have = [str(r.get("kind", "")).lower()] if key == "kind" else [str(t).lower() for t in r.get("tags") or []]
+            if value.lower() not in have:
+                raise TranslationError(f"'{words}': {name} is not a {value} in this world")
 
     def _skill(self, vals: list[Token], words: str) -> str:
         """The skill named (a SKILL word) or, for a verb such as "carry", the world's skill of that
