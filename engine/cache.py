@@ -44,7 +44,7 @@ def _file_digests(value: Any, out: dict[str, str]) -> None:
     if isinstance(value, str):
         if os.path.isabs(value) and os.path.isfile(value):
             stat = os.stat(value)
-            if stat.st_size > _HASH_LIMIT:
+            if stat.st_size > _HASH_LIMIT or stat.st_size == 0:  # size 0: also /proc files that never end
                 out[value] = f"size={stat.st_size},mtime={stat.st_mtime_ns}"
             else:
                 with open(value, "rb") as fh:
