@@ -20,7 +20,6 @@ from __future__ import annotations
 
 import os
 import stat
-from pathlib import Path as _FsPath
 from typing import Any, Callable, Hashable, Sequence
 
 import yaml
