@@ -63,8 +63,9 @@ def register_secrets(environ: Any = None) -> None:
     environ = os.environ if environ is None else environ
     with _secrets_lock:
         for name, value in environ.items():
-            if looks_secret(name) and isinstance(value, str) and len(value) >= _MIN_SECRET:
-                _secrets[value] = name
+            if looks_secret(name) and isinstance(value, str) and len(value) >= _MIN_SECRET \
+                    and not (value.startswith(("/", "~")) and os.path.exists(os.path.expanduser(value))):
+                _secrets[value] = name  # (the path of a key file is not the key: paths stay readable)
 
 
 def redact(text: str) -> str:
