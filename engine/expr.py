@@ -180,7 +180,9 @@ class _Expression:
 
     def __init__(self, source: str):
         parser = Parser(_ENV, source, state="variable")
-        expr = _Concats().visit(parser.parse_expression())
+        expr = parser.parse_expression()
+        if "~" in source:  # only `~` makes a Concat node; the rewrite walks the whole tree
+            expr = _Concats().visit(expr)
         if not parser.stream.eos:
             token = parser.stream.current
             raise TemplateSyntaxError(f"unexpected {token.type} {token.value!r}", token.lineno, None, None)
