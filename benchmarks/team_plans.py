@@ -172,7 +172,7 @@ def run_tight(enhsp: bool, enhsp_timeout: float) -> bool:
                 n = len(e.plan) if e.plan is not None else None
                 if n is not None and plan:
                     (vs_enhsp if engine == "enhsp" else vs_opt).append(n / plan)
-                line += f"{(n if n is not None else e.status[:7])!s:>7}" + \
+                line += f" {(n if n is not None else e.status[:7])!s:>6}" + \
                         f"{(f'{n / plan:.3f}' if n is not None and plan else '-'):>{11 if engine == 'enhsp' else 9}}"
         print(line + ("" if valid else "  INVALID"), flush=True)
     good = [r for r in ratios if r is not None]

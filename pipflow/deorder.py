@@ -37,7 +37,7 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any, Iterable
 
-from pipflow.pddl.linear import Comparison, NotLinear, comparison, conjuncts, linear
+from pipflow.pddl.linear import Comparison, Linear, NotLinear, comparison, conjuncts, key_of, linear
 
 Key = tuple
 
@@ -63,8 +63,6 @@ def _meets(xs: Iterable[Key], ys: Iterable[Key]) -> bool:
 
 
 def _fluents(expr: Any) -> set:
-    from pipflow.pddl.linear import key_of
-
     out, stack = set(), [expr]
     while stack:
         e = stack.pop()
@@ -74,72 +72,98 @@ def _fluents(expr: Any) -> set:
     return out
 
 
+@dataclass
+class _Lifted:
+    """One action's conditions and effects with parameters as ``?name``, read once per action."""
+
+    conds: list  # Comparison (lifted keys) or a set of keys read non-linearly
+    effects: list  # (key, Linear value or None, increase/decrease sign or 0, extra read keys)
+
+
+def _lift(action: Any) -> _Lifted:
+    conds: list = []
+    for pre in getattr(action, "preconditions", []):
+        for cond in conjuncts(pre):
+            keys = _fluents(cond)
+            if not keys:
+                continue  # e.g. (not (= ?from ?to)): independent of the state
+            try:
+                conds.append(comparison(cond))
+            except NotLinear:
+                conds.append(keys)
+    effects = []
+    for eff in getattr(action, "effects", []):
+        sign = (1 if eff.is_increase() else -1) if (eff.is_increase() or eff.is_decrease()) else 0
+        if not eff.condition.is_true():
+            sign = 0
+        try:
+            value = linear(eff.value) if sign else None
+        except NotLinear:
+            value = None
+        effects.append((key_of(eff.fluent), value, sign, _fluents(eff.value) | _fluents(eff.condition)))
+    return _Lifted(conds, effects)
+
+
+def _bind(key: Key, objects: dict[str, str]) -> Key:
+    return (key[0], *(objects.get(x, x) for x in key[1:]))
+
+
 def numeric_view(problem: Any, grounded: list) -> list[Numeric]:
-    """Split every ground action (``dependency.GroundAction`` with its ``mapping``) into linear
-    conditions, additive deltas and opaque reads/writes. Fluents no action of the domain writes
-    are static: replaced by their initial values."""
+    """Split every ground action (``dependency.GroundAction``, with ``objects``: parameter ->
+    object name) into linear conditions, additive deltas and opaque reads/writes. Fluents that no
+    action of the domain writes are static: replaced by their initial values."""
     from pipflow.pddl.common import initial_numbers
 
-    subst = problem.environment.substituter
     written = {eff.fluent.fluent().name for a in problem.actions for eff in getattr(a, "effects", [])}
     init = initial_numbers(problem)
+    lifted: dict[str, _Lifted] = {}
 
-    def static(key: Key):
-        if key[0] in written:
-            return None
-        v = init.get(key)
-        return None if v is None else Fraction(v)
+    def ground(form: Linear, objects: dict[str, str]) -> Linear:
+        coefs: dict[Key, Fraction] = {}
+        const = form.const
+        for k, c in form.coefs.items():
+            gk = _bind(k, objects)
+            if gk[0] not in written and gk in init:
+                const += c * Fraction(init[gk])
+            else:
+                coefs[gk] = coefs.get(gk, Fraction(0)) + c
+        return Linear({k: c for k, c in coefs.items() if c}, const)
 
     out = []
     for g in grounded:
+        if g.action.name not in lifted:
+            lifted[g.action.name] = _lift(g.action)
+        spec, objects = lifted[g.action.name], g.objects
         view = Numeric(g.index)
-        for pre in getattr(g.action, "preconditions", []):
-            for cond in conjuncts(subst.substitute(pre, g.mapping)):
-                keys = _fluents(cond)
-                if not keys:
-                    continue  # e.g. (not (= shelf1 shelf3)): independent of the state
-                try:
-                    cmp = comparison(cond, static)
-                except NotLinear:
-                    view.opaque_reads |= keys
-                    continue
-                if cmp.form.coefs:
-                    view.conds.append(cmp)
-        for eff in getattr(g.action, "effects", []):
-            key = _fluents_key(subst.substitute(eff.fluent, g.mapping))
-            value = subst.substitute(eff.value, g.mapping)
-            cond = subst.substitute(eff.condition, g.mapping)
-            additive = (eff.is_increase() or eff.is_decrease()) and cond.is_true() and "*" not in key
-            if additive:
-                try:
-                    form = linear(value, static)
-                except NotLinear:
-                    form = None
-                if form is not None and not form.coefs:
-                    sign = 1 if eff.is_increase() else -1
-                    view.deltas[key] = view.deltas.get(key, Fraction(0)) + sign * form.const
-                    continue
-            view.opaque_writes.add(key)
-            view.opaque_reads |= _fluents(value) | _fluents(cond)
+        for cond in spec.conds:
+            if isinstance(cond, Comparison):
+                form = ground(cond.form, objects)
+                if form.coefs:
+                    view.conds.append(Comparison(form, cond.op))
+            else:
+                view.opaque_reads |= {_bind(k, objects) for k in cond}
+        for key, value, sign, extra in spec.effects:
+            gk = _bind(key, objects)
+            amount = ground(value, objects) if value is not None else None
+            if sign and amount is not None and not amount.coefs and "*" not in gk:
+                view.deltas[gk] = view.deltas.get(gk, Fraction(0)) + sign * amount.const
+                continue
+            view.opaque_writes.add(gk)
+            view.opaque_reads |= {_bind(k, objects) for k in extra}
         out.append(view)
     # a fluent that some action writes opaquely is opaque everywhere: its value is not a sum
     opaque = set().union(*(v.opaque_writes for v in out)) if out else set()
     for v in out:
         for cmp in list(v.conds):
             if any(_match(k, o) for k in cmp.form.coefs for o in opaque) or \
-                    any(static(k) is None and k not in init for k in cmp.form.coefs):
-                v.conds.remove(cmp)
+                    any(k not in init and k[0] in written for k in cmp.form.coefs) or \
+                    any(k[0] not in written for k in cmp.form.coefs):
+                v.conds.remove(cmp)  # also: a static fluent without a value (unknown, not zero)
                 v.opaque_reads |= set(cmp.form.coefs)
         for k in [k for k in v.deltas if any(_match(k, o) for o in opaque)]:
             v.opaque_writes.add(k)
             del v.deltas[k]
     return out
-
-
-def _fluents_key(fexp: Any) -> Key:
-    from pipflow.pddl.linear import key_of
-
-    return key_of(fexp)
 
 
 def conflicts(a: Numeric, b: Numeric) -> bool:
@@ -226,8 +250,12 @@ def deorder(problem: Any, grounded: list) -> list[tuple[int, int]]:
             mask |= anc[p] | (1 << p)
         return mask
 
+    with_opaque: list[int] = []  # only pairs with a non-additive side can conflict
     for j in range(n):
-        ps = {i for i in range(j) if conflicts(views[i], views[j])}
+        opaque_j = bool(views[j].opaque_reads or views[j].opaque_writes)
+        ps = {i for i in (range(j) if opaque_j else with_opaque) if conflicts(views[i], views[j])}
+        if opaque_j:
+            with_opaque.append(j)
         # (2) j's own conditions
         for ci in range(len(views[j].conds)):
             mask = closure(ps)

@@ -42,28 +42,6 @@ def _parse(domain_text: str, problem_text: str):
         raise InputError(f"cannot parse domain/problem for the dependency graph: {exc}") from exc
 
 
-def _key(fexp) -> Key:
-    args = []
-    for a in fexp.args:
-        if a.is_object_exp():
-            args.append(a.object().name)
-        elif a.is_constant():
-            args.append(str(a.constant_value()))
-        else:  # variable of a forall/exists, or anything not ground: matches every object
-            args.append("*")
-    return (fexp.fluent().name, *args)
-
-
-def _fluents_in(expr, out: set) -> None:
-    """Collect every fluent application in an expression tree (fluent args included)."""
-    stack = [expr]
-    while stack:
-        e = stack.pop()
-        if e.is_fluent_exp():
-            out.add(_key(e))
-        stack.extend(e.args)
-
-
 class GroundAction:
     """One plan action with its parameters bound, and what it reads and writes."""
 
@@ -77,6 +55,7 @@ class GroundAction:
         self.writes = writes
         self.binding = binding  # "?param" -> object name
         self.mapping = mapping or {}  # UP parameter expression -> object expression (for grounding)
+        self.objects: dict[str, str] = {}  # "?param" -> UP object name (the names in fluent keys)
 
 
 def _object(problem, name: str):
@@ -87,10 +66,43 @@ def _object(problem, name: str):
     return None
 
 
+def _lifted_reads_writes(action) -> tuple[list[Key], list[Key]]:
+    """What an action reads and writes, with parameters as ``?name`` (grounded by :func:`_bind`).
+    Computed once per action: substituting every plan step's expressions costs far more."""
+    from pipflow.pddl.linear import key_of
+
+    reads: set = set()
+    writes: set = set()
+
+    def fluents(expr) -> None:
+        stack = [expr]
+        while stack:
+            e = stack.pop()
+            if e.is_fluent_exp():
+                reads.add(key_of(e))
+            stack.extend(e.args)
+
+    for pre in getattr(action, "preconditions", []):
+        fluents(pre)
+    for eff in getattr(action, "effects", []):
+        fluents(eff.value)
+        fluents(eff.condition)
+        for a in eff.fluent.args:  # fluent arguments are never fluents in PDDL, but be generic
+            fluents(a)
+        writes.add(key_of(eff.fluent))
+        if eff.is_increase() or eff.is_decrease():
+            reads.add(key_of(eff.fluent))
+    return sorted(reads), sorted(writes)
+
+
+def _bind(key: Key, objects: dict[str, str]) -> Key:
+    return (key[0], *(objects.get(x, x) for x in key[1:]))
+
+
 def ground_plan(problem, plan: list[dict]) -> list[GroundAction]:
     """Ground every plan action of a parsed UP problem and compute its read/write sets."""
     em = problem.environment.expression_manager
-    subst = problem.environment.substituter
+    lifted: dict[str, tuple[list[Key], list[Key]]] = {}
     out = []
     for idx, step_ in enumerate(plan):
         if not isinstance(step_, dict) or "action" not in step_:
@@ -103,27 +115,22 @@ def ground_plan(problem, plan: list[dict]) -> list[GroundAction]:
         if len(action.parameters) != len(args):
             raise PlanningError(
                 f"plan step {idx + 1}: {name} takes {len(action.parameters)} arguments, got {len(args)}")
-        mapping, binding = {}, {}
+        mapping, binding, objects = {}, {}, {}
         for p, a in zip(action.parameters, args):
             obj = _object(problem, a)
             if obj is None:
                 raise PlanningError(f"plan step {idx + 1}: unknown object {a!r} in {name}")
             mapping[em.ParameterExp(p)] = em.ObjectExp(obj)
             binding["?" + p.name] = a
-        reads: set = set()
-        writes: set = set()
-        for pre in getattr(action, "preconditions", []):
-            _fluents_in(subst.substitute(pre, mapping), reads)
-        for eff in getattr(action, "effects", []):
-            fl = subst.substitute(eff.fluent, mapping)
-            _fluents_in(subst.substitute(eff.value, mapping), reads)
-            _fluents_in(subst.substitute(eff.condition, mapping), reads)
-            for a in fl.args:  # fluent arguments are never fluents in PDDL, but be generic
-                _fluents_in(a, reads)
-            writes.add(_key(fl))
-            if eff.is_increase() or eff.is_decrease():
-                reads.add(_key(fl))
-        out.append(GroundAction(idx, name, args, action, reads, writes, binding, mapping))
+            objects["?" + p.name] = obj.name
+        if uname not in lifted:
+            lifted[uname] = _lifted_reads_writes(action)
+        reads_l, writes_l = lifted[uname]
+        reads = {_bind(k, objects) for k in reads_l}
+        writes = {_bind(k, objects) for k in writes_l}
+        g = GroundAction(idx, name, args, action, reads, writes, binding, mapping)
+        g.objects = objects
+        out.append(g)
     return out
 
 
@@ -218,8 +225,20 @@ def build_graph(
         from pipflow.deorder import deorder
 
         dag.add_edges_from((nodes[i]["id"], nodes[j]["id"]) for i, j in deorder(problem, grounded))
+    touching: dict[Key, list[int]] = {}  # ground fluent -> earlier actions reading or writing it
+    wild: list[int] = []  # actions with a quantified ("*") fluent: checked against every later one
     for j in range(len(grounded) if mode != "deorder" else 0):
-        parents = [i for i in range(j - 1, -1, -1) if interacts(grounded[i], grounded[j])]
+        mine = grounded[j].reads | grounded[j].writes
+        if any("*" in k for k in mine):
+            candidates = set(range(j))
+        else:
+            candidates = {i for k in mine for i in touching.get(k, ())} | set(wild)
+        parents = [i for i in sorted(candidates, reverse=True) if interacts(grounded[i], grounded[j])]
+        if any("*" in k for k in mine):
+            wild.append(j)
+        else:
+            for k in mine:
+                touching.setdefault(k, []).append(j)
         if mode == "paper":
             parents = parents[:1]  # Alg. 2: the nearest earlier interacting action only
         for i in parents:
