@@ -248,7 +248,8 @@ def _run_infos(runs_dir: Path) -> list[tuple[Path, dict]]:
         except DamagedRecord as err:
             info = {"status": "damaged", "error": str(err)}
         out.append((run, info if isinstance(info, dict) else {"status": "damaged", "error": "run.json unreadable"}))
-    return out
+    # newest first by start time (names have one-second resolution: two runs of one second tie)
+    return sorted(out, key=lambda ri: (str(ri[1].get("started") or ""), ri[0].name), reverse=True)
 
 
 def _find_run(ref: str, runs_dir: Path) -> Path:

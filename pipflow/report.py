@@ -51,7 +51,7 @@ img { max-width: 100%; border: 1px solid #ddd; margin: .3em 0; }
 .snaps figure { display: inline-block; width: 48%; margin: .3em .5%; } .snaps img { width: 100%; } figcaption { text-align: center; color: #444; } pre { background: #f6f8fa; padding: .6em; overflow-x: auto; white-space: pre-wrap; }
 .round { border: 1px solid #ccd; border-radius: 6px; padding: .2em 1em .6em; margin: .8em 0; }
 .cause { border: 2px solid #c62828; border-radius: 6px; padding: .2em 1em; background: #fff5f5; }
-pre.answer { max-height: 24em; overflow-y: auto; } .small { font-size: .85em; color: #555; }
+pre.answer { max-height: 24em; overflow-y: auto; } .small { font-size: .85em; color: #555; } td.cmd, th.cmd { min-width: 18em; max-width: 28em; }
 </style>"""
 
 
@@ -430,10 +430,6 @@ def _bench_body(d: Path) -> str:
     by_task = {name: {t.get("id"): t for t in v.get("tasks", []) if isinstance(t, dict)}
                for name, v in zip(names, variants)}
     task_ids = [t.get("id") for t in variants[0].get("tasks", []) if isinstance(t, dict)]
-    headers = ["task", "command"] + [f"{h} [{n}]" if len(names) > 1 else h for n in names
-                                     for h in ("SR", "TC-max (m)", "makespan (s)")]
-    if len(names) > 1:
-        headers += [f"\u0394 TC-max [{n}]" for n in names[1:]]
     rows = []
     for tid in task_ids:
         row: list[Any] = [tid, commands.get(tid, "")]
@@ -453,7 +449,7 @@ def _bench_body(d: Path) -> str:
             row.append(t.get("tc_max") - base_tc if isinstance(t.get("tc_max"), (int, float))
                        and isinstance(base_tc, (int, float)) else None)
         rows.append(row)
-    parts.append("<h2>Tasks</h2>" + _table(headers, rows))
+    parts.append("<h2>Tasks</h2>" + _grouped_table(names, rows))
     errors = [(n, t.get("id"), t.get("error")) for n, v in zip(names, variants) for t in v.get("tasks", [])
               if isinstance(t, dict) and t.get("error")]
     if errors:
@@ -464,6 +460,22 @@ def _bench_body(d: Path) -> str:
         _bench_overview(variants, runs, rep / "overview.png")
         parts.append("<h2>Per task</h2>" + _img("report/overview.png", "SR and TC-max per task and variant"))
     return "\n".join(parts)
+
+
+def _grouped_table(names: list[str], rows: list[list[Any]]) -> str:
+    """Per-task rows under a two-level header: one column group per variant (SR, TC-max,
+    makespan), then the difference in TC-max of each further variant to the first."""
+    per = ("SR", "TC-max (m)", "makespan (s)")
+    top = "<th rowspan='2'>task</th><th rowspan='2' class='cmd'>command</th>" + "".join(
+        f"<th colspan='{len(per)}'>{_e(n)}</th>" for n in names)
+    if len(names) > 1:
+        top += f"<th colspan='{len(names) - 1}'>\u0394 TC-max (m) vs {_e(names[0])}</th>"
+    sub = "".join(f"<th>{h}</th>" for _ in names for h in per) + "".join(f"<th>{_e(n)}</th>" for n in names[1:])
+    body = "".join("<tr>" + "".join(
+        f"<td class='num'>{_num(c)}</td>" if isinstance(c, (int, float)) or c is None else
+        f"<td class='cmd'>{_num(c)}</td>" if i == 1 else f"<td>{_num(c)}</td>"
+        for i, c in enumerate(row)) + "</tr>" for row in rows)
+    return f"<table class='tasks'><tr>{top}</tr><tr>{sub}</tr>{body}</table>"
 
 
 def _bench_config(results: dict, config: dict) -> str:

@@ -131,7 +131,8 @@ def test_bench_report_renders_in_chromium(tmp_path):
     assert "wh-03" in html and "refused: over capacity" in html and "href='runs/run1/report.html'" in html
     # variants side by side in one table, each task with its command, seeds labelled, SR as a percentage
     assert html.count("<h2>Tasks</h2>") == 1
-    assert "SR [default]" in html and "SR [graph_mode=paper]" in html and "\u0394 TC-max [graph_mode=paper]" in html
+    assert "<th colspan='3'>default</th><th colspan='3'>graph_mode=paper</th>" in html
+    assert "\u0394 TC-max (m) vs default" in html
     assert "put 3 product1 on shelf2" in html and ">seed 2</a>" in html and "67%" in html and "0.67" not in html
     assert "matrix: graph_mode" in html and "exact, paper" in html
     assert "32.00 (31.00\u201333.00)" in html  # wh-01's TC-max over its three seeds: mean (min-max)

@@ -35,7 +35,7 @@ def records(tmp_path_factory) -> Path:
     doc["world"] = str(REPO / "benchmarks/warehouse/world.yaml")
     tasks = root / "tasks.yaml"
     tasks.write_text(yaml.safe_dump(doc))
-    pipflow.bench(tasks, out=root / "benches" / "b1")
+    pipflow.bench(tasks, out=root / "benches" / "b1", matrix={"graph_mode": ["exact", "paper"]})
     return root
 
 
@@ -72,13 +72,13 @@ def test_index_lists_every_record_and_filters(records, tmp_path):
         _looks_rendered(tmp_path / "index.png")
         _keep(tmp_path / "index.png", "view_index.png")
         assert "Uncaught" not in console
-        # the three runs, the bench, and the bench's own two run records
+        # the three runs, the bench, and the bench's own four run records (2 tasks x 2 variants)
         assert dom.count("href=\"/report/runs/") == 3 and dom.count("<td>bench</td>") == 1
-        assert dom.count("<td>run</td>") == 5
+        assert dom.count("<td>run</td>") == 7
         assert "refused" in dom and "succeeded" in dom
         refused, _ = _chromium(server.url + "?status=refused", tmp_path / "refused.png")
         assert refused.count("<td>run</td>") == 1 and "succeeded</td>" not in refused
-        assert "1 of 6 shown" in refused
+        assert "1 of 8 shown" in refused
     finally:
         server.stop()
 
@@ -100,7 +100,10 @@ def test_report_is_one_click_away_and_written_on_demand(records, tmp_path):
 
 
 def test_compare_two_runs_in_the_page_and_on_the_command_line(records, tmp_path):
-    a, b = sorted(p for p in (records / "runs").iterdir())[:2]
+    import json
+
+    a, b = [p for p in sorted((records / "runs").iterdir())
+            if json.loads((p / "run.json").read_text())["status"] == "succeeded"]
     text = compare_text(a, b)
     assert "goal" in text and "makespan (s)" in text and "B - A" in text
     server = ViewServer(records).start()
@@ -124,7 +127,21 @@ def test_show_latest_and_runs_filters(records):
     latest = subprocess.run(["pipflow", "show", "latest", "--runs-dir", runs], capture_output=True, text=True)
     assert latest.returncode == 0 and "refused" in latest.stdout
     second = subprocess.run(["pipflow", "show", "-2", "--runs-dir", runs], capture_output=True, text=True)
-    assert second.returncode == 0 and '"shelf2"' in second.stdout
+    assert second.returncode == 0 and "status    succeeded" in second.stdout
     assert '"tc_avg"' in second.stdout and '"simulation"' in second.stdout  # whole outputs, not cut
     listed = subprocess.run(["pipflow", "runs", "--status", "refused", "--runs-dir", runs], capture_output=True, text=True)
     assert listed.stdout.count("\n") == 1 and "refused" in listed.stdout
+
+
+def test_bench_matrix_report_shows_variants_side_by_side(records, tmp_path):
+    server = ViewServer(records).start()
+    try:
+        dom, console = _chromium(server.url + "report/benches/b1", tmp_path / "bench.png")
+        _looks_rendered(tmp_path / "bench.png")
+        _keep(tmp_path / "bench.png", "bench_matrix_report.png")
+    finally:
+        server.stop()
+    assert "Uncaught" not in console
+    assert ">graph_mode=exact</th>" in dom and ">graph_mode=paper</th>" in dom
+    assert "There should be 7 product 1 in shelf 3." in dom  # each task's command
+    assert "matrix: graph_mode" in dom and dom.count("seed 0</a>") == 4
