@@ -159,7 +159,9 @@ def cmd_run(args: argparse.Namespace) -> int:
     if args.dry_run:
         resolved = resolve_inputs(wf, values, from_text=from_text)
         print(f"{path}: valid; would run {len(wf.all_steps())} step(s) with inputs:")
-        print(json.dumps(resolved, indent=2, default=str))
+        from .store import redact
+
+        print(redact(json.dumps(resolved, indent=2, default=str)))
         return 0
     in_order = [sid for n in wf.nodes for sid in [n.id, *(s.id for s in getattr(n, "steps", []))]]
     options, display = _options(args, in_order)

@@ -788,6 +788,14 @@ def test_secrets_never_reach_a_record_or_the_terminal(ws, capsys, monkeypatch):
     assert _recorded_inputs(wf, store)["key"] == SECRET
 
 
+def test_dry_run_shows_no_secret(ws, capsys, monkeypatch):
+    monkeypatch.setenv("HF_TOKEN", SECRET)
+    (ws / "env.yaml").write_text("pipflow: 1\nname: env\nenv: [HF_TOKEN]\n"
+                                 "inputs:\n  token: {type: string, default: '${env.HF_TOKEN}'}\nsteps: []\n")
+    code, out, err = cli(capsys, "run", ws / "env.yaml", "--dry-run")
+    assert code == 0 and SECRET not in out + err and "[redacted HF_TOKEN]" in out
+
+
 def test_undeclared_environment_is_invisible_at_run_time(ws, capsys, monkeypatch):
     monkeypatch.setenv("PIPFLOW_TEST_VISIBLE", "yes")
     monkeypatch.setenv("PIPFLOW_TEST_HIDDEN", "no")
