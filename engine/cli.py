@@ -468,6 +468,9 @@ def _plugin_commands(sub, common: argparse.ArgumentParser) -> None:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
+    from .store import register_secrets
+
+    register_secrets()  # whatever this command prints or writes, secrets from the environment are redacted
     parser = build_parser()
     args = parser.parse_args(argv)
     try:
