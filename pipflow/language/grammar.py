@@ -22,7 +22,7 @@ start: sentence
 sentence: lead? part (sep part)* sep?
 lead: ("but" | "and" | "then" | "also" | "so" | "however" | "now" | "oh" | "well" | "next"
       | "finally" | "first" | "afterwards" | "after" "that" | "additionally" | "plus"
-      | ("can" | "could" | "would") "you" | "you" ("should" | "must" | "can")) ","?
+      | ("can" | "could" | "would") "you" | "you" ("should" | "must" | "can") | "just" | "only") ","?
 
 // a separator costs: of two readings, the one with fewer, longer parts wins
 // ("only alpha and charlie may carry bolts" is one rule, not "only alpha" and a second clause)
@@ -61,7 +61,8 @@ np: NUM of? ihead                          -> np_count
   | NUM "or" ("fewer" | "less") of? ihead  -> np_atmost
   | "more" "than" NUM of? ihead            -> np_above
   | ("fewer" | "less") "than" NUM of? ihead -> np_below
-  | "between" NUM "and" NUM of? ihead      -> np_between
+  | "somewhere"? "between" NUM "and" NUM of? ihead -> np_between
+  | NUM more "of" "each" ITEMWORD?         -> np_each_more
   | NUM "to" NUM of? ihead                 -> np_between
   | vague NUM of? ihead                    -> np_vague
   | vagueq of? ihead                       -> np_vague
@@ -133,9 +134,10 @@ addv: "add" | "bring" | "deliver" | "send" | "ship" | "move" | "transfer" | "car
     | "relocate" | "take" | "haul" | "bring" "over" | "move" "over" | "send" "over"
     | "supply" | "drop" "off" | "get" | "push"
 removev: "remove" | "take" | "unload" | "pull" | "withdraw" | "clear" | "get" | "move"
-splitv: "split" | "divide" | "distribute" | "share" | "spread" | "spread" "out"
+splitv: "split" | "divide" | "distribute" | "share" | "spread" | "spread" "out" | "share" "out"
 among: "between" | "among" | "amongst" | "across" | "over"
-even: "evenly" | "equally" | "fairly" | "in" "equal" ("parts" | "shares")
+even: "evenly" | "equally" | "fairly" | "in" "equal" ("parts" | "shares") | ","? "same" "amount" "each"
+    | ","? "same" "number" "each" | ","? "equal" ("amounts" | "shares" | "parts")
 want: ("i" | "we") ("want" | "would" "like" | "like" | "need" | "wish") | "id" "like" | "wed" "like"
     | "give"
     | "make" "it" "so" that? | "make" "sure" that? | "ensure" that? | "let" | "have" | "get"
@@ -168,7 +170,13 @@ goal: there_be items loc                                  -> g_set
     | ("make" | "have") ihead loc? ("equal" "to" | "be" | "equal" | "total") NUM loc? -> g_item_first
     | refill places ("so" that? | "until") ("it" | "they") setv items -> g_place_set
     | refill places "to" items                                -> g_place_set
-    | ("bring" | "take" | "top" "up" | "raise" | "fill") places "up"? "to" items -> g_place_set
+    | ("bring" | "take" | "top" "up" | "raise" | "fill" | "get") places "up"? "to" items -> g_place_set
+    | want places ("to" "be")? "at" items                     -> g_place_set
+    | "give" places items                                     -> g_place_set
+    | places place_appos modal? setv items                    -> g_place_set
+    | addv bare src appos? adv? to places                   -> g_transfer_src
+    | removev bare src                                     -> g_remove_src
+    | splitv bare src even? among places even?              -> g_split_src
     | addv items to places each?                             -> g_add
     | addv items loc                                      -> g_add
     | refill places "with" items                           -> g_add_place
@@ -205,7 +213,7 @@ goal: there_be items loc                                  -> g_set
     | removev items from places                            -> g_remove
     | removev "everything" from places                      -> g_empty
     | mult ihead loc                                       -> g_mult
-    | places modal? "keep" items                            -> g_keep_part
+    | places modal? "keep" "only"? items                     -> g_keep_part
     | emptyv places                                        -> g_empty
     | places modal? be? emptied                            -> g_empty
     | places modal? "hold" "nothing"                        -> g_empty
@@ -236,9 +244,11 @@ on_top: ("on" "top" "of" | "in" "addition" "to" | "besides" | "over" "and" "abov
 adv: "over" | "back" | "across" | "along"
 src: ("in" | "on" | "at" | "from" | "off" | "out" "of" | "of") places
 pitems: frac of? posplace ihead appos?                     -> pi_frac
+      | "half" of? posplace ihead appos?                   -> pi_frac
       | NUM of? posplace ihead appos?                      -> pi_count
       | ("all" of?)? posplace ihead appos?                 -> pi_all
 pitem_plain: posplace ihead
+place_appos: "," ("which" | "that") ("has" | "holds" | "already" "has") items now? ","
 appos: ","? ("all" | "both") (NUM "of" "them" | "of" "them") ","?
 swapwhat: ihead (lsep ihead)* | "everything" ("they" ("hold" | "have"))? | "contents" | "loads" | "stock" | "places" | "goods" | "items"
 stay: be | "sit" | "stay" | "lie" | "go" | "be" "placed" | "be" "stored" | "belong" | "end" "up"
@@ -275,7 +285,7 @@ robot: ROBOTWORD? ROBOT                                   -> r_name
      | ROBOTWORD? ROBOT ("to" | "through" | "thru" | "till") ROBOTWORD? ROBOT -> r_name_range
      | NUM                                                -> r_number
      | ROBOTWORD NUM                                      -> r_number
-rgroup: all? (RKIND | RTAG)                                -> r_kind
+rgroup: (all | "a" | "an" | "any")? (RKIND | RTAG)        -> r_kind
       | all? ROBOTWORD ("tagged" | "labelled" | "labeled" | "marked") (RTAG | RKIND) -> r_kind
       | all? (RTAG | RKIND) ROBOTWORD                      -> r_kind
       | all? ROBOTWORD "that" able? skillv NUM ("or" "more" | "or" "above" | "plus") -> r_skill_min
@@ -310,7 +320,7 @@ state: "broken" | "faulty" | "unavailable" | "offline" | "disabled" | "damaged" 
      | "out" "of" "this"? ("job" | "task" | "one" | "work")
 use: "use" | "used" | "using" | "employ" | "employed" | "assign" | "assigned" | "involve" | "involved"
    | "work" | "help" | "be" "used" | "be" "involved" | "be" "employed" | "be" "assigned" | "participate"
-act: "move" | "moves" | "carry" | "carries" | "touch" | "touches" | "take" | "takes" | "deliver"
+act: "move" | "moves" | "carry" | "carries" | "touch" | "touches" | "take" | "takes" | "deliver" | "send" | "sends"
    | "delivers" | "handle" | "handles" | "bring" | "brings" | "transport" | "transports" | "ship"
    | "put" | "place" | "load" | "unload" | "work" "on" | "pick" "up" | "fetch" | "help" "with"
    | "be" "used" "to" act | "be" "used" "for" | use "to" act | "go" | "drive" | "serve" | "supply"
@@ -340,7 +350,9 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | robots modal? ("stay" | "stays" | "remain" | "remains") state -> rule_state
     | ("dont" | "do" "not" | "never") act robots rscope       -> rule_never
     | ("use" | "employ") robots "only" rscope                 -> rule_only
-    | "no" robots ("on" "this" ("one" | "job" | "task"))? rscope -> rule_never
+    | "no" robots ("on" "this" (NUM | "job" | "task"))? rscope -> rule_never
+    | "nothing" ("leaves" | "goes" "out" "of" | "comes" "off" | "comes" "out" "of" | "may" "leave" | "should" "leave") places ("on" | "by" | "with" | "using") robots -> rule_never_from
+    | ("let" | "have") robots act rscope                     -> rule_only
     | ("keep" | "leave") robots ("away" | "clear") from ITEM (lsep ITEM)* -> rule_away_items
     | robots ("is" | "are") state ","? ("so" | "and")? ("dont" | "do" "not") "use" ("it" | "them") -> rule_state
     | robots ("is" | "are") "not" "to" "be" "used" rscope     -> rule_never

@@ -26,7 +26,11 @@ MAX_DIGITS = 9
 FILLERS = {"the", "please", "kindly", "units", "unit", "pieces", "piece", "boxes", "box", "crates",
            "crate", "cases", "case", "pcs", "pallets", "pallet", "x", "exactly", "precisely",
            "actually", "really", "hey", "um", "uh", "ok,", "just", "right", "away", "quickly",
-           "now", "today", "currently", "sku", "skus", "of", "moment"}
+           "now", "today", "currently", "sku", "skus", "of", "moment", "pls", "plz", "asap", "thx",
+           "completely", "entirely", "immediately", "soon", "tonight", "thanks"}
+#: chat spellings of keywords
+SPELLINGS = {"shud": "should", "shld": "should", "u": "you", "r": "are", "wont": "wont", "gonna": "will",
+             "wanna": "want", "lemme": "let", "cuz": "because", "thru": "through"}
 #: fillers the grammar still reads when it has a place for them (it tries the keyword first)
 SOFT_FILLERS = {"of", "just", "right", "away", "now", "today", "currently", "moment", "exactly"}
 FRACTIONS = {"third": 3, "thirds": 3, "quarter": 4, "quarters": 4, "fourth": 4, "fourths": 4,
@@ -112,6 +116,24 @@ class Lexicon:
         return (word in self.keywords or word in FILLERS or word in STOPWORDS
                 or word in NUMBER_WORDS or word in FRACTIONS or word in SUPERLATIVES)
 
+    def _keyword_typo(self, word: str) -> str | None:
+        """The keyword a misspelt word means ("shuld" -> should): one edit, one candidate, five
+        letters or more, same first letter; anything less sure stays unknown and is refused."""
+        if len(word) < 5 or not word.isalpha():
+            return None
+        cands = [k for k in self.keywords if k[:1] == word[:1] and k.isalpha() and len(k) >= 4
+                 and abs(len(k) - len(word)) <= 1 and distance(word, k) <= 1]
+        return cands[0] if len(cands) == 1 else None
+
+    def _joined(self, text: str) -> str:
+        """Multi-word robot kinds and tags ("night shift") as one word, so they read as one."""
+        for label in sorted(self.kinds | self.tags, key=len, reverse=True):
+            parts = [p for p in re.split(r"[\s_-]+", label) if p]
+            if len(parts) > 1:
+                text = re.sub(r"\b" + r"[\s_-]+".join(map(re.escape, parts)) + r"\b", label.replace(" ", "_"),
+                              text, flags=re.IGNORECASE)
+        return text
+
     def _group(self, text: str) -> tuple[str, str] | None:
         """("RKIND", kind) or ("RTAG", tag) when the word names robots by kind or tag."""
         low = normalize(text)
@@ -126,12 +148,13 @@ class Lexicon:
 
     def sentences(self, command: str) -> list[Lexed]:
         """The command's sentences as terminals (split at . ; ! ?)."""
-        text = check_text(command)
+        text = self._joined(check_text(command))
         toks = recognize(text, self.index)
         fixed = []
         for t in toks:
             if t.kind == "word" and not self._known(str(t.value)) and self._group(t.text) is None:
-                typo = _number_typo(str(t.value))
+                word = str(t.value)
+                typo = SPELLINGS.get(word) or _number_typo(word) or self._keyword_typo(word)
                 if typo is not None:
                     t = Tok("word", t.text, typo)
             fixed.append(t)

@@ -19,7 +19,8 @@ KINDS: tuple[str, ...] = ("shelf", "product", "robot")
 WORLD_KEYS: dict[str, str] = {"shelf": "shelves", "product": "products", "robot": "robots"}
 # English words for a kind, on top of the stems the world's own names share ("bin" of bin7).
 KIND_WORDS: dict[str, set[str]] = {
-    "shelf": {"shelf", "shelves", "shelve", "rack", "racks", "bin", "bins"},
+    "shelf": {"shelf", "shelves", "shelve", "rack", "racks", "bin", "bins", "location", "locations",
+              "spot", "spots", "area", "areas", "zone", "zones", "bay", "bays", "dock", "docks"},
     "product": {"product", "products", "item", "items", "good", "goods"},
     "robot": {"robot", "robots", "bot", "bots", "agent", "agents"},
 }
@@ -190,6 +191,8 @@ class NameIndex:
             exact = [n for n in self.names if n.alpha == v and n.digits == digits]
             if exact:
                 return Tok("name", text, exact[0].name, exact[0].kind)
+        if not digits and any(v in KIND_WORDS[k] for k in KINDS for v in _variants(alpha)):
+            fuzzy = False  # "racks" is the kind word, not a misspelt rack_a (nor a tie of all racks)
         if fuzzy and alpha not in STOPWORDS and alpha:
             scored = []
             for n in self.names:

@@ -180,6 +180,8 @@ class _Sentence:
             raise TranslationError(f"{_quote(words)} is a bound, not a count: it is approximate, and "
                                    f"the goal needs an exact count or a firm bound ('at least 5', "
                                    f"'at most 5', 'between 3 and 5')")
+        if kind == "np_each_more":
+            return out({"more": nums[0]}, {"all": True})
         if kind == "np_each":
             n = nums[0] if nums else 1
             return out({"count": n}, {"all": True})
@@ -322,6 +324,8 @@ class _Sentence:
             return
         if kind == "g_place_set":
             places = self.place_list(plist[0])
+            for ap in self.sub(node, "place_appos"):
+                self.apposition(places, self.nps(self.sub(ap, "items")[0]), self.words(ap))
             self.put(places, "each" if each else "one", nps, words)
             return
         if kind == "g_place_set_resp":
@@ -460,6 +464,8 @@ class _Sentence:
             places, mode = self.loc(locs[0])
             self.put(places, "each", [{"items": {"all": True}, "amount": {"count": 1}, "words": words}], words)
             return
+        if self.sub(node, "bare") and kind != "g_split":
+            nps = self.bare_nps(node, words)
         if kind == "g_transfer_src":
             srcs = self.sub(node, "src")
             pit = [c for c in node.children if isinstance(c, Tree) and c.data.startswith("pi_")]
@@ -538,7 +544,8 @@ class _Sentence:
                                     "inflow_only": False, "words": words})
             return
         if kind == "g_noop":
-            return  # "Don't empty rack B, (just take 2 gears off it)": says what not to do
+            self.place_list(plist[0])  # "Don't empty rack B, just take 2 gears off it": "it"
+            return
         if kind in ("g_swap_two", "g_swap_subj"):
             self.swap(node, words)
             return
@@ -557,6 +564,20 @@ class _Sentence:
             return
         raise TranslationError(f"{_quote(words)}: cannot read this statement")
 
+    def bare_nps(self, node: Tree, words: str) -> list[dict]:
+        """ "Take the drums out of bay 2": an item without a count is all of it (there)."""
+        out = []
+        for b in self.sub(node, "bare"):
+            for h in self.sub(b, "ihead"):
+                head = self.ihead(h, words)
+                self.last_item = [head]
+                amount: dict = {"all": True}
+                appos = self.sub(node, "appos")
+                if appos and self.toks(appos[0], "NUM"):
+                    amount["expect"] = int(self.toks(appos[0], "NUM")[0].value)
+                out.append({"items": {"names": [head]}, "amount": amount, "words": words})
+        return out
+
     def pitem(self, node: Tree, words: str) -> tuple[dict, list[str]]:
         """A possessive item phrase ("half of bay 1's crates"): its amount and its place."""
         source = [str(self.toks(self.sub(node, "posplace")[0], "PLACE")[0].value)]
@@ -567,10 +588,13 @@ class _Sentence:
         if appos and self.toks(appos[0], "NUM"):
             expect = int(self.toks(appos[0], "NUM")[0].value)
         if node.data == "pi_frac":
-            fr = self.sub(node, "frac")[0]
-            den = int(self.toks(fr, "FRAC")[0].value)
-            num = int(self.toks(fr, "NUM")[0].value) if self.toks(fr, "NUM") else 1
-            amount: dict = {"fraction": [num, den]}
+            fr = self.sub(node, "frac")
+            if not fr:
+                amount: dict = {"fraction": [1, 2]}  # "half of bay 1's crates"
+            else:
+                den = int(self.toks(fr[0], "FRAC")[0].value)
+                num = int(self.toks(fr[0], "NUM")[0].value) if self.toks(fr[0], "NUM") else 1
+                amount = {"fraction": [num, den]}
         elif node.data == "pi_count":
             amount = {"count": int(self.toks(node, "NUM")[0].value)}
         else:
@@ -591,6 +615,19 @@ class _Sentence:
             raise TranslationError(f"'{np['words']}': the rest of what? (say where it comes from)")
         return {"op": "transfer", "items": items, "amount": {"rest": True}, "from": {"names": source},
                 "to": {"names": places}, "words": np["words"]}
+
+    def apposition(self, places: list[str], nps: list[dict], words: str) -> None:
+        """ "Shelf 2, which has 8 product1 now, ...": must agree with the world, else refused."""
+        stock = self.lex.world.get("stock") or {}
+        for np in nps:
+            if "count" not in np["amount"] or not np["items"] or "names" not in np["items"]:
+                raise TranslationError(f"{_quote(words)}: cannot check this against the world")
+            for p in places:
+                for i in np["items"]["names"]:
+                    have = int((stock.get(p) or {}).get(i, 0) or 0)
+                    if have != np["amount"]["count"]:
+                        raise TranslationError(f"{_quote(words)}: {p} holds {have} {i}, not "
+                                               f"{np['amount']['count']}; cannot tell which is meant")
 
     def _last_places(self, words: str) -> list[str]:
         if not self.last_places:
@@ -761,11 +798,15 @@ class _Sentence:
             raise TranslationError(f"cannot tell whether {_quote(words)} requires or forbids the robots "
                                    f"(a permission restricts nothing: say 'only ...' or '... must not ...')")
         mode = {"rule_never": "never", "rule_state": "never", "rule_away": "never", "rule_only": "only",
-                "rule_away_items": "never",
+                "rule_away_items": "never", "rule_never_from": "never",
                 "rule_use": "only"}[kind]
         base = {"mode": mode, "robots": sel, "words": words}
         if kind == "rule_state":
             self.rules.append(base)
+            return
+        if kind == "rule_never_from":
+            for p in self.place_list(self.sub(node, "places")[0]):
+                self.rules.append({**base, "from": p})
             return
         if kind == "rule_away_items":
             for t in self.toks(node, "ITEM"):
