@@ -35,7 +35,8 @@ pytestmark = pytest.mark.usefixtures("no_hang")
 class Server:
     """A scripted chat-completions server: request i gets ``script[min(i, len-1)]``, which is a
     string (the answer), or a dict with ``status`` (an error code), ``body`` (raw bytes),
-    ``delay`` (seconds before answering) or ``size`` (an answer of that many characters)."""
+    ``delay`` (seconds before answering), ``size`` (an answer of that many characters) or
+    ``trickle`` (seconds of sending a byte every 0.2 s without ever finishing)."""
 
     def __init__(self, script: list[Any], host: str = "127.0.0.1"):
         self.script = script
@@ -57,6 +58,20 @@ class Server:
                 entry = server.script[min(len(server.requests), len(server.script)) - 1]
                 entry = {"text": entry} if isinstance(entry, str) else entry
                 time.sleep(entry.get("delay", 0))
+                if "trickle" in entry:  # headers, then a byte now and then, never the whole answer
+                    self.send_response(200)
+                    self.send_header("Content-Type", "application/json")
+                    self.send_header("Content-Length", "100000")
+                    self.end_headers()
+                    ends = time.monotonic() + entry["trickle"]
+                    try:
+                        while time.monotonic() < ends:
+                            self.wfile.write(b" ")
+                            self.wfile.flush()
+                            time.sleep(0.2)
+                    except (BrokenPipeError, ConnectionResetError):
+                        pass
+                    return None
                 if "body" in entry:
                     return self.send(entry.get("status", 200), entry["body"])
                 if entry.get("status", 200) != 200:
@@ -176,6 +191,20 @@ def test_a_slow_server_fails_within_the_calls_deadline(tmp_path, serve):
     assert len(server.requests) == 2, "1 s + 1 s wait + 1 s: no time for a third request within 2.5 s"
     assert elapsed < 2.5 + 30  # the deadline, plus starting python and importing litellm
     no_traceback(proc)
+
+
+def test_a_server_that_trickles_bytes_is_abandoned_at_the_time_out(serve):
+    from pipflow.errors import LLMError
+    from pipflow.language import llm
+
+    server = serve([{"trickle": 20}])
+    llm._import_litellm()  # its import takes seconds: not part of the call
+    started = time.monotonic()
+    with pytest.raises(LLMError, match=r"Timeout after 2 attempts.*kept the connection open"):
+        llm.complete([{"role": "user", "content": "hi"}], model="openai/fake", api_base=server.api_base,
+                     timeout=1, retries=1, backoff=0.1)
+    assert time.monotonic() - started < 6, "two requests of 1 s (+1 s grace each), not 20 s of trickle"
+    assert len(server.requests) == 2
 
 
 # --- sizes ---------------------------------------------------------------------------------

@@ -13,6 +13,7 @@ import ipaddress
 import json
 import os
 import re
+import threading
 import time
 from dataclasses import dataclass, field
 from typing import Any, Callable
@@ -179,11 +180,12 @@ def complete(
             from pipflow.executors import llm_slot
 
             with llm_slot(model):
-                response = litellm.completion(**kwargs)
+                response = _within(litellm.completion, kwargs, kwargs["timeout"] + GRACE)
             break
         except Exception as exc:  # litellm maps every provider's error onto its own classes
-            kind = type(exc).__name__
-            retryable = any(isinstance(exc, getattr(litellm, name, ())) for name in _RETRYABLE)
+            kind = "Timeout" if isinstance(exc, RequestOverrun) else type(exc).__name__
+            retryable = isinstance(exc, RequestOverrun) or any(
+                isinstance(exc, getattr(litellm, name, ())) for name in _RETRYABLE)
             user_fault = any(isinstance(exc, getattr(litellm, name, ())) for name in _USER_FAULTS)
             wait = backoff * 2 ** attempt
             spent = time.monotonic() - started
@@ -209,6 +211,38 @@ def complete(
         raise LLMError(f"{model}: the answer is {len(text):,} characters long, more than the "
                        f"{MAX_ANSWER_CHARS:,} that no real answer reaches; it was neither kept nor parsed")
     return Completion(text=text, usage=_usage(litellm, response, latency, attempt))
+
+
+#: seconds a request may run past its time-out before it is abandoned (see :func:`_within`)
+GRACE = 1.0
+
+
+class RequestOverrun(Exception):
+    """A request still running when its time was up."""
+
+
+def _within(call: Callable[..., Any], kwargs: dict[str, Any], limit: float) -> Any:
+    """``call(**kwargs)``, abandoned after ``limit`` seconds. The HTTP client's time-out bounds
+    each network operation, not the request: a server that trickles a byte at a time would hold
+    a call for ever. The call runs in a daemon thread, which is left to finish on its own (its
+    answer is dropped) when the time is up."""
+    box: dict[str, Any] = {}
+
+    def target() -> None:
+        try:
+            box["value"] = call(**kwargs)
+        except BaseException as exc:  # handed to the caller's thread below
+            box["error"] = exc
+
+    worker = threading.Thread(target=target, name="pipflow-llm-call", daemon=True)
+    worker.start()
+    worker.join(limit)
+    if worker.is_alive():
+        raise RequestOverrun(f"no complete answer within {limit - GRACE:g} s (the server kept the "
+                             "connection open without finishing its answer)")
+    if "error" in box:
+        raise box["error"]
+    return box["value"]
 
 
 def _short(message: str, limit: int = 600) -> str:
