@@ -526,6 +526,10 @@ def bench_main(args: argparse.Namespace) -> int:
         executor=executor, resume=resume, llm_limits=parse_limits(limits))
     results = run_bench(config, progress=not args.quiet)
     print(markdown_table(results))
+    if len(results.get("variants", [])) > 1:
+        from pipflow.compare import variants_side_by_side
+
+        print(variants_side_by_side(results, json.loads((config.out / "runs.json").read_text())))
     print(f"results: {config.out / 'results.json'}")
     lost = [r for r in json.loads((config.out / "runs.json").read_text()) if r.get("status") == "lost"]
     if lost:  # the executor could not finish these runs: the table is incomplete

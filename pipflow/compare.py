@@ -109,3 +109,41 @@ def compare_html(a: Path, b: Path) -> str:
             "</style></head><body>"
             f"<h1>Compare two {kind}s</h1><p>A: <code>{html.escape(str(a))}</code><br>B: <code>{html.escape(str(b))}</code></p>"
             f"<table id='comparison'><tr><th></th><th>A</th><th>B</th><th>B - A</th></tr>{body}</table></body></html>")
+
+
+def variants_side_by_side(results: dict[str, Any], rows: list[dict[str, Any]]) -> str:
+    """The variants of one bench next to each other, per task: SR, TC-max (mean and, over
+    several seeds, min-max), makespan, time per run; then each further variant's TC-max and
+    makespan difference to the first; a summary row last. Text for the terminal."""
+    names = [v["name"] for v in results.get("variants", [])]
+    if len(names) < 2:
+        return ""
+    task_ids = [t["id"] for t in results["variants"][0]["tasks"]]
+
+    def cell(name: str, tid: str | None) -> tuple[str, float | None, float | None]:
+        runs = [r for r in rows if r.get("variant") == name and (tid is None or r.get("task") == tid)]
+        ok = [r for r in runs if r.get("success")]
+        sr = 100 * len(ok) / len(runs) if runs else 0.0
+        tc = [float(r["tc_max"]) for r in ok if isinstance(r.get("tc_max"), (int, float))]
+        ms = [float(r["makespan"]) for r in ok if isinstance(r.get("makespan"), (int, float))]
+        tc_mean = sum(tc) / len(tc) if tc else None
+        ms_mean = sum(ms) / len(ms) if ms else None
+        spread = f" ({min(tc):.1f}-{max(tc):.1f})" if len(tc) > 1 and max(tc) > min(tc) else ""
+        text = f"{sr:3.0f}% {'-' if tc_mean is None else f'{tc_mean:.1f}'}{spread} m {'-' if ms_mean is None else f'{ms_mean:.1f}'} s"
+        return text, tc_mean, ms_mean
+
+    head = ["task"] + names + [f"d TC-max/makespan {n}" for n in names[1:]]
+    table = []
+    for tid in task_ids + [None]:
+        cells = [cell(n, tid) for n in names]
+        diffs = []
+        for c in cells[1:]:
+            dtc = "-" if c[1] is None or cells[0][1] is None else f"{c[1] - cells[0][1]:+.1f} m"
+            dms = "-" if c[2] is None or cells[0][2] is None else f"{c[2] - cells[0][2]:+.1f} s"
+            diffs.append(f"{dtc} / {dms}")
+        table.append(["all" if tid is None else tid] + [c[0] for c in cells] + diffs)
+    widths = [max(len(str(r[i])) for r in [head] + table) for i in range(len(head))]
+    lines = ["variants side by side (SR, TC-max mean (min-max over seeds), makespan):",
+             "  ".join(h.ljust(w) for h, w in zip(head, widths))]
+    lines += ["  ".join(str(c).ljust(w) for c, w in zip(r, widths)) for r in table]
+    return "\n".join(lines)

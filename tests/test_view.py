@@ -145,3 +145,17 @@ def test_bench_matrix_report_shows_variants_side_by_side(records, tmp_path):
     assert ">graph_mode=exact</th>" in dom and ">graph_mode=paper</th>" in dom
     assert "There should be 7 product 1 in shelf 3." in dom  # each task's command
     assert "matrix: graph_mode" in dom and dom.count("seed 0</a>") == 4
+
+
+def test_matrix_side_by_side_table_in_the_terminal(records):
+    import json
+
+    from pipflow.compare import variants_side_by_side
+
+    bench = records / "benches" / "b1"
+    text = variants_side_by_side(json.loads((bench / "results.json").read_text()),
+                                 json.loads((bench / "runs.json").read_text()))
+    lines = text.splitlines()
+    assert "graph_mode=exact" in lines[1] and "graph_mode=paper" in lines[1]
+    assert [ln.split()[0] for ln in lines[2:]] == ["wh-01", "wh-02", "all"]
+    assert all("100%" in ln for ln in lines[2:])  # both tasks succeed under both variants
