@@ -286,6 +286,7 @@ class TravelMap:
         for name, r in (world.get("robots") or {}).items():
             self.places[name] = (float(r["start"][0]), float(r["start"][1]))
         self._check_points(self.places)
+        self._valid: set[Point] = set(self.places.values())  # points already checked
         self.key = self._key(self.places)
         self._anchors = [self.places[n] for n in fixtures]
         self._floor_key = self._key({n: self.places[n] for n in fixtures})
@@ -364,8 +365,10 @@ class TravelMap:
         hit = self._pairs.get((a, b))
         if hit is not None:
             return hit
-        self._check_points({"point": a})
-        self._check_points({"point": b})
+        for p in (a, b):
+            if p not in self._valid:
+                self._check_points({"point": p})
+                self._valid.add(p)
         if a == b:
             res = (0.0, [a, b])
         else:
