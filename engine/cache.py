@@ -145,9 +145,10 @@ class StepCache:
         try:
             outputs = self._verified(entry, key, set(expected))
         except (OSError, ValueError, KeyError, TypeError) as err:
+            if self._is_marked():  # remove only from a folder that is pipflow's
+                shutil.rmtree(entry, ignore_errors=True)
             if problems is not None:
                 problems.append(f"cache entry {entry} did not verify and was removed ({err})")
-            shutil.rmtree(entry, ignore_errors=True)
             return None
         if (entry / "artifacts").is_dir():
             shutil.copytree(entry / "artifacts", artifact_dir, dirs_exist_ok=True)
@@ -205,11 +206,23 @@ class StepCache:
         if self.root.exists():
             if not self.root.is_dir():
                 raise CacheRefused(f"{self.root}: the cache folder is a file; no step results are cached")
-            if any(self.root.iterdir()):
+            if any(self.root.iterdir()) and not self._only_entries():
                 raise CacheRefused(f"{self.root}: this folder holds files pipflow did not write; no step results "
                                    f"are cached there (point PIPFLOW_CACHE_DIR at a new or empty folder)")
         self.root.mkdir(parents=True, exist_ok=True)
         atomic_write(self.root / MARKER, _MARKER_TEXT, redacted=False)
+
+    def _only_entries(self) -> bool:
+        """Whether the folder holds nothing but entries in pipflow's layout (a cache written
+        before caches were marked): such a folder is pipflow's and gets the mark."""
+        for shard in self.root.iterdir():
+            if not (_SHARD.match(shard.name) and shard.is_dir() and not shard.is_symlink()):
+                return False
+            for entry in shard.iterdir():
+                if not ((_KEY.match(entry.name) and entry.name.startswith(shard.name)) or _TEMP.match(entry.name)) \
+                        or not entry.is_dir() or entry.is_symlink():
+                    return False
+        return True
 
     def _is_marked(self) -> bool:
         try:
@@ -224,7 +237,7 @@ class StepCache:
         pipflow's mark is refused (nothing removed); files that are not entries stay."""
         if not self.root.exists():
             return 0
-        if not self.root.is_dir() or not self._is_marked():
+        if not self.root.is_dir() or not (self._is_marked() or self._only_entries()):
             raise CacheRefused(f"{self.root}: not a pipflow step cache (no {MARKER} written by pipflow); "
                                "nothing was removed")
         count = 0

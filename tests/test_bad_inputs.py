@@ -549,6 +549,16 @@ def test_cache_clear_removes_only_pipflows_entries(ws, capsys):
     assert not [p for p in cache.rglob("*") if len(p.name) == 64]
 
 
+def test_a_cache_written_before_caches_were_marked_is_still_pipflows(ws, capsys):
+    assert cli(capsys, "run", ws / "wf.yaml")[0] == 0
+    (ws / "cache" / "CACHEDIR.TAG").unlink()  # as an older pipflow left it
+    code, _, events, _ = _cached_run(capsys, ws)
+    assert code == 0 and next(e for e in events if e["event"] == "end")["cached"] is True
+    assert not (ws / "cache" / "CACHEDIR.TAG").exists()  # a hit writes nothing
+    code, out, _ = cli(capsys, "cache", "clear")
+    assert code == 0 and "removed 1 cache entry" in out and not (ws / "cache").exists()
+
+
 def test_cache_that_cannot_be_written_is_a_warning(ws, capsys, monkeypatch):
     for bad in (ws / "afile", Path("/proc/pipflow-cache")):
         (ws / "afile").write_text("x")
