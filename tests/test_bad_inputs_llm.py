@@ -248,6 +248,10 @@ def test_a_model_string_without_a_known_provider_is_a_user_error(tmp_path):
     proc = pipflow(tmp_path, "-i", "model=nosuchprovider/big-model", "--no-cache")
     assert proc.returncode == 2 and "does not know its provider" in proc.stderr
     no_traceback(proc)
+    proc = pipflow(tmp_path, "-i", "model=local/nosuch", "--no-cache")
+    assert proc.returncode == 2 and "unknown local model 'local/nosuch'" in proc.stderr
+    assert "local/smollm2" in proc.stderr
+    no_traceback(proc)
 
 
 # --- the provider key goes only where the user sends it ------------------------------------

