@@ -101,12 +101,15 @@ def warehouse_understanding(task: dict, outputs: dict, status: str, error_kind: 
         return {"understood": refused, "misread": executed,
                 "understanding": "refused, as it should be" if refused else
                 ("executed a command whose right answer is a refusal" if executed else "not refused")}
+    if executed and "goal" not in outputs:
+        return {"understood": None, "misread": None,
+                "understanding": "not measured: the workflow has no output `goal`"}
     gold_goal, run_goal = _goal_limits(task.get("goal") or {}), _goal_limits(outputs.get("goal"))
     gold_rules = {_rule_key(r) for r in task.get("constraints") or []}
     run_rules = {_rule_key(r) for r in outputs.get("constraints") or []}
     if run_goal is None:
         return {"understood": False, "misread": False,
-                "understanding": "refused" if refused else "no resolved goal (the run ended before it)"}
+                "understanding": "refused" if refused else "no goal among the run's outputs (it did not finish)"}
     problems = []
     if run_goal != gold_goal:
         problems.append("goal: " + _goal_difference(gold_goal or {}, run_goal))

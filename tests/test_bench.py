@@ -297,6 +297,7 @@ def test_understanding_compares_bounds_as_ranges_and_rules_as_sets():
     verdict = understand(task, dropped, "failed", "AllocationError")
     assert verdict["understood"] is False and verdict["misread"] is False and "missing" in verdict["understanding"]
     assert understand(task, {}, "refused", "Refusal")["understood"] is False  # a feasible task refused
+    assert understand(task, {"plan": []}, "succeeded", None)["understood"] is None  # a workflow without `goal`
     for spec in ({"feasible": False, "goal": {"s1": {"p1": 99}}}, {"expect": "refuse", "goal": {}}):
         assert understand(spec, {}, "refused", "Refusal")["understood"] is True
         assert understand(spec, {}, "failed", "TranslationError")["understood"] is True
