@@ -256,15 +256,21 @@ def _compiled(source: str) -> _Expression:
         return _Expression(source)
     except TemplateSyntaxError as err:
         raise ExpressionError(f"invalid expression ${{{source}}}: {err.message}") from None
+    except RecursionError:  # jinja2's parser recurses per bracket
+        raise ExpressionError(f"invalid expression ${{{source[:60]}...}}: nested too deeply") from None
 
 
 @functools.lru_cache(maxsize=4096)
 def references(source: str) -> tuple[Reference, ...]:
     """The names an expression reads (with their first attribute), from jinja2's AST."""
+    if len(source) > MAX_SOURCE:
+        raise ExpressionError(f"an expression of {len(source)} characters is longer than the {MAX_SOURCE} allowed")
     try:
         tree = _ENV.parse("{{ (" + source + ") }}")
     except TemplateSyntaxError as err:
         raise ExpressionError(f"invalid expression ${{{source}}}: {err.message}") from None
+    except RecursionError:  # jinja2's parser recurses per bracket
+        raise ExpressionError(f"invalid expression ${{{source[:60]}...}}: nested too deeply") from None
     found: list[Reference] = []
     seen_names: set[int] = set()
     for node in tree.find_all((nodes.Getattr, nodes.Getitem)):

@@ -152,6 +152,8 @@ WORKFLOWS: dict[str, tuple[str | bytes, list[str]]] = {
                        ["bad.yaml:4", "refers to its own outputs"]),
     "invalid expression": ("pipflow: 1\nname: x\nsteps:\n  - {id: a, uses: core.value, with: {value: '${a.}'}}\n",
                            ["bad.yaml:4", "invalid expression"]),
+    "deeply nested expression": ("pipflow: 1\nname: x\nsteps:\n  - {id: a, uses: core.value, with: {value: '${" + "[" * 400
+                                 + "]" * 400 + "}'}}\n", ["bad.yaml:4", "nested too deeply"]),
     "unclosed expression": ("pipflow: 1\nname: x\nsteps:\n  - {id: a, uses: core.value, with: {value: '${inputs'}}\n",
                             ["bad.yaml:4", "unclosed"]),
     "loop without max": ("pipflow: 1\nname: x\nsteps:\n  - id: l\n    loop:\n      until: true\n      steps:\n"
