@@ -256,7 +256,7 @@ def _compiled(source: str) -> _Expression:
         return _Expression(source)
     except TemplateSyntaxError as err:
         raise ExpressionError(f"invalid expression ${{{source}}}: {err.message}") from None
-    except RecursionError:  # jinja2's parser recurses per bracket
+    except (RecursionError, SyntaxError):  # jinja2's parser and Python's compiler recurse per bracket
         raise ExpressionError(f"invalid expression ${{{source[:60]}...}}: nested too deeply") from None
 
 
@@ -269,7 +269,7 @@ def references(source: str) -> tuple[Reference, ...]:
         tree = _ENV.parse("{{ (" + source + ") }}")
     except TemplateSyntaxError as err:
         raise ExpressionError(f"invalid expression ${{{source}}}: {err.message}") from None
-    except RecursionError:  # jinja2's parser recurses per bracket
+    except (RecursionError, SyntaxError):  # jinja2's parser and Python's compiler recurse per bracket
         raise ExpressionError(f"invalid expression ${{{source[:60]}...}}: nested too deeply") from None
     found: list[Reference] = []
     seen_names: set[int] = set()
