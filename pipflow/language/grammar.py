@@ -29,7 +29,7 @@ lead: ("but" | "and" | "then" | "also" | "so" | "however" | "now" | "oh" | "well
 sep.-1: "," | "and" | "," "and" | "but" | "," "but" | "while" | "," "while" | "whereas"
    | "," "whereas" | "then" | "," "then" | "and" "then" | "," "and" "then" | "also" | "," "also"
    | "and" "also" | "," "and" "also" | ":" | "so" | "," "so" | "though" | "," "though"
-   | "," "plus" | "plus" | "," "however" ","?
+   | "," "plus" | "plus" | "," "however" ","? | "," "just" | "but" "just" | "," "but" "just" | "and" "just"
 
 ?part: goal | rule | aside | tail | addressed | scoped_goal
 
@@ -333,7 +333,7 @@ robj: ITEM (lsep ITEM)*                                   -> ro_items
 rwhere: from places                                    -> rw_from
       | from places to places                          -> rw_route
       | ("to" | "into" | "onto" | "towards" | "toward") places -> rw_to
-      | "to" "location" "of" places                      -> rw_to
+      | "to" (PLACEWORD | "location") "of" places        -> rw_to
       | ("at" | "on" | "in" | "near" | "around" | "by") places -> rw_at
       | "away" "from" places                               -> rw_at
       | from NUM PLACEWORD "to" "another"                  -> rw_none

@@ -230,6 +230,46 @@ class NameIndex:
             f"{_quote(text)}: cannot tell which {kind} is meant by position "
             f"(candidates: {self.candidates(kind)})")
 
+    def listed(self, raw: list[str], i: int) -> tuple[list[Tok], int] | None:
+        """ "racks A, B and E", "bays 2 and 4": a plural kind word and the labels it shares out.
+
+        Only shelves (robots have ranges of their own); every label must name exactly one
+        place, or nothing is read here and the words go their usual way.
+        """
+        low = raw[i].lower()
+        if not low.endswith("s") or low[:-1] not in KIND_WORDS["shelf"] | self.stems["shelf"]:
+            return None
+        stem = low[:-1]
+        out: list[Tok] = []
+        j = i + 1
+        while j < len(raw):
+            label = raw[j].lower()
+            n = word_value(label)
+            key = stem + (str(n) if n is not None else label)
+            hit = [x.name for x in self.names if x.kind == "shelf" and x.alpha + x.digits == normalize(key)]
+            if n is not None and not hit:
+                hit = self.with_digits("shelf", str(n), stem)
+            if len(hit) != 1 or (n is None and len(label) > 2):
+                break
+            out.append(Tok("name", raw[j] if out else f"{raw[i]} {raw[j]}", hit[0], "shelf"))
+            j += 1
+            if j + 1 < len(raw) and raw[j].lower() in (",", "and", "or", "&"):
+                nxt = raw[j + 1].lower()
+                if nxt in ("and", "or") and j + 2 < len(raw):
+                    out.append(Tok("punct", raw[j], raw[j]) if raw[j] == "," else Tok("word", raw[j], raw[j].lower()))
+                    j += 1
+                out.append(Tok("punct", raw[j], raw[j]) if raw[j] == "," else Tok("word", raw[j], raw[j].lower()))
+                j += 1
+                continue
+            break
+        names = [t for t in out if t.kind == "name"]
+        if len(names) < 2:
+            return None
+        while out and out[-1].kind != "name":  # a separator read past the last label goes back
+            out.pop()
+            j -= 1
+        return out, j
+
     def at(self, raw: list[str], i: int) -> tuple[Tok, int] | None:
         """The name or kind word starting at ``raw[i]``, longest reading first."""
         low = raw[i].lower()
@@ -301,6 +341,11 @@ def recognize(command: str, index: NameIndex) -> list[Tok]:
             continue
         if re.fullmatch(r"\d+\.\d+", t):
             raise TranslationError(f"'{t}' is not a whole number of units")
+        listed = index.listed(raw, i)
+        if listed is not None:
+            toks += listed[0]
+            i = listed[1]
+            continue
         found = index.at(raw, i)
         if found is not None:
             toks.append(found[0])
