@@ -122,10 +122,10 @@ def _message(error: jsonschema.ValidationError) -> str:
             return "a loop needs 'max' (the most iterations); unbounded loops are not allowed"
         return "missing required " + ", ".join(repr(m) for m in missing)
     if error.validator == "additionalProperties":
-        extra = sorted(set(error.instance) - set(error.schema.get("properties", {})))
+        extra = sorted(set(error.instance) - set(error.schema.get("properties", {})), key=str)  # keys may be null, numbers
         hints = []
         for e in extra:
-            close = difflib.get_close_matches(e, list(error.schema.get("properties", {})), n=1)
+            close = difflib.get_close_matches(str(e), list(error.schema.get("properties", {})), n=1)
             hints.append(f"{e!r}" + (f" (did you mean {close[0]!r}?)" if close else ""))
         return "unknown key " + ", ".join(hints)
     if error.validator == "not" and error.schema.get("anyOf"):

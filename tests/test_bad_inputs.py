@@ -121,6 +121,8 @@ WORKFLOWS: dict[str, tuple[str | bytes, list[str]]] = {
                    ["bad.yaml:2", "constructor"]),
     "impossible date": ("pipflow: 1\nname: x\ndescription: 2026-13-45\nsteps: []\n", ["bad.yaml:3", "cannot read this value"]),
     "mapping as key": ("pipflow: 1\nname: x\n? {a: 1}\n: 2\nsteps: []\n", ["bad.yaml", "cannot read this value"]),
+    "null and number keys": ("pipflow: 1\nname: x\n~: 1\n5: 2\nsteps:\n  - {id: a, uses: core.value, with: {value: 1}, 7: 4}\n",
+                             ["bad.yaml:1:1", "unknown key 5, None", "bad.yaml:6:5", "unknown key 7"]),
     "missing pipflow": ("name: x\nsteps: []\n", ["bad.yaml:1:1", "missing required 'pipflow'"]),
     "wrong format version": ("pipflow: 2\nname: x\nsteps: []\n", ["bad.yaml:1:10", "pipflow"]),
     "bad name": ("pipflow: 1\nname: 'a b'\nsteps: []\n", ["bad.yaml:2:7", "does not match"]),
