@@ -27,7 +27,8 @@ from pipflow.language.prompting import prompt_problem
         "model": Input("string", None, doc="litellm model string, local/smollm2 or offline; "
                                            "unset: $PIPFLOW_MODEL, else offline"),
         "temperature": Input("number", 0.0),
-        "max_tokens": Input("integer", 1024),
+        "max_tokens": Input("integer", None, doc="most tokens of the answer; unset: from the expected "
+                                                  "answer's size (pipflow.language.budget)"),
         "timeout": Input("number", 60.0, doc="seconds per call"),
         "retries": Input("integer", 2, doc="extra tries on rate limits, time-outs, server errors, lost "
                                           "connections (the only retry layer: 2 means at most 3 requests)"),
@@ -35,20 +36,23 @@ from pipflow.language.prompting import prompt_problem
                                               "unset: no bound beyond timeout x tries"),
         "api_base": Input("string", None, doc="base URL of an OpenAI-compatible server"),
         "feedback": Input("array", None, doc="messages of the previous round's debugger/verifier"),
+        "previous": Input("object", None, doc="the previous round's `round` output: a prompt that would "
+                                              "repeat it is varied (output `varied` says how)"),
         "grounded": Input("boolean", False, doc="constrain decoding to the world's names and counts"),
         "cache_dir": Input("path", None, doc="response cache folder (default .pipflow-cache/llm)"),
         "cache": Input("boolean", True, doc="replay cached responses; false always calls the model"),
     },
     outputs={"problem": "string", "goal": "any", "constraints": "array", "messages": "array",
              "response": "string", "usage": "object", "errors": "array",
-             "order": "any", "explanation": "any"},  # offline: the order and the resolver's arithmetic
+             "order": "any", "explanation": "any",  # offline: the order and the resolver's arithmetic
+             "varied": "string", "round": "object"},  # what changed in a prompt that would repeat; this round
 )
 def llm_problem(ctx: StepContext, command: str, world: dict, domain: str,
                 prompt: str | None = None, model: str | None = None,
-                temperature: float = 0.0, max_tokens: int = 1024, timeout: float = 60.0,
+                temperature: float = 0.0, max_tokens: int | None = None, timeout: float = 60.0,
                 retries: int = 2, api_base: str | None = None, feedback: list | None = None,
                 grounded: bool = False, cache_dir: str | None = None, cache: bool = True,
-                deadline: float | None = None) -> dict:
+                deadline: float | None = None, previous: dict | None = None) -> dict:
     """``problem`` is "" when the answer held no usable problem; ``errors`` then says why, in
     words meant for the next round's prompt. ``goal`` is set by offline and grounded runs, and
     for household worlds (``domain: household``) by every run: the goal conditions read back from
@@ -71,10 +75,56 @@ def llm_problem(ctx: StepContext, command: str, world: dict, domain: str,
         max_tokens=max_tokens, timeout=timeout, retries=retries, deadline=deadline, api_base=api_base,
         feedback=feedback, grounded=grounded,
         cache_dir=ctx.resolve_path(cache_dir) if cache_dir else None, use_cache=cache and ctx.use_cache,
-        base_dir=ctx.base_dir, save=ctx.write_artifact, log=ctx.log)
+        base_dir=ctx.base_dir, save=ctx.write_artifact, log=ctx.log, previous=previous)
     ctx.metrics["llm"] = out["usage"]
     text = out.get("response") or ""
     if len(text) > RESPONSE_OUTPUT_CHARS:  # the whole answer is kept once, as artifact response.txt
         out["response"] = (text[:RESPONSE_OUTPUT_CHARS] + f"\n... [{len(text):,} characters in all: the whole "
                            "answer is the artifact response.txt of this step]")
     return out
+
+
+@step(
+    "llm.check",
+    doc="A second opinion on the model's reading: its goal and robot rules against the offline parser's "
+        "reading of the command (or the command's names and numbers); decides whether a refusal is final.",
+    inputs={
+        "command": Input("string", doc="the natural-language command"),
+        "world": Input("object", doc="the world (output of world.load)"),
+        "goal": Input("object", None, doc="the goal the round's problem states (pddl.verify's goal)"),
+        "constraints": Input("array", None, doc="the round's robot-use rules (llm.problem's constraints)"),
+        "refusal": Input("string", None, doc="the verifier's refusal of this round's goal, if any"),
+        "model": Input("string", None, doc="the generator's model; offline: its reading is the parser's"),
+        "grounded": Input("boolean", False, doc="the model answered in JSON: feedback says so in JSON"),
+        "last": Input("boolean", False, doc="this is the loop's last round: a disagreement with the "
+                                            "command's words alone is then accepted, with a warning"),
+    },
+    outputs={"ok": "boolean", "messages": "array", "refusal": "string", "disagreement": "array",
+             "basis": "string"},
+)
+def llm_check(ctx: StepContext, command: str, world: dict, goal: dict | None = None,
+              constraints: list | None = None, refusal: str | None = None, model: str | None = None,
+              grounded: bool = False, last: bool = False) -> dict:
+    """``ok``: the reading agrees (or, in the last round, differs only from the command's words);
+    ``messages``: the disagreement as feedback for the next round, in the mode's answer form;
+    ``refusal``: final only when the command makes the goal impossible, else None (the verifier's
+    refusal of a goal the model invented is in ``messages`` instead); ``disagreement``: what an
+    accepted reading still gets wrong (a warning for the run summary), else empty."""
+    from pipflow.language.agreement import second_opinion
+    from pipflow.language.generator import domain_of
+    from pipflow.language.llm import resolve_model
+
+    if resolve_model(model) == "offline" or domain_of(world) != "warehouse":
+        # offline, the reading is the parser's; household goals are not compared yet
+        return {"ok": True, "messages": [], "refusal": refusal, "disagreement": [], "basis": "none"}
+    opinion = second_opinion(command, world, goal, constraints, refusal, grounded)
+    ok = not opinion.disagreement or (last and not opinion.firm and opinion.refusal is None)
+    for line in opinion.disagreement:
+        ctx.log(f"check ({opinion.basis}): {line}")
+    ctx.write_artifact("check.json", {"basis": opinion.basis, "disagreement": opinion.disagreement,
+                                      "messages": opinion.messages, "refusal": opinion.refusal,
+                                      "reading": opinion.reading, "ok": ok})
+    accepted = [f"warning: accepted after the last round although the model's reading differs from the "
+                f"{opinion.basis}: {line}" for line in opinion.disagreement] if ok else []
+    return {"ok": ok, "messages": [] if ok else opinion.messages, "refusal": opinion.refusal,
+            "disagreement": accepted, "basis": opinion.basis}

@@ -25,14 +25,27 @@ from pipflow.language.cache import ResponseCache, cache_key
 from pipflow.language.llm import complete, resolve_model
 from pipflow.language.parsing import (HOUSEHOLD_FIELD_KEYS, ParseIssue, extract_constraints,
                                       extract_problem, validate_constraints)
+from pipflow.language.budget import FREE_STOPS, answer_budget
+from pipflow.language.feedback import vary
 from pipflow.language.prompting import render
 
 NO_USAGE: dict[str, Any] = {"calls": 0, "cached": False, "prompt_tokens": 0, "completion_tokens": 0,
                             "total_tokens": 0, "latency_s": 0.0, "cost_usd": 0.0}
 #: the prompt template of each domain when the caller names none
 DEFAULT_PROMPTS = {"warehouse": "warehouse_problem", "household": "household_problem"}
+#: the head of an answer kept in the round record, for quoting it back when the next prompt
+#: would repeat (the whole answer is the artifact response.txt)
+ROUND_ANSWER_CHARS = 6000
 #: where the example problem of a household prompt leaves room for the goal
 GOAL_PLACEHOLDER = "; the goal conditions of the command go here"
+
+
+def _digest(messages: list[dict[str, str]], temperature: float | None = None) -> str:
+    """A short fingerprint of a prompt (and its temperature): rounds compare prompts by it."""
+    import hashlib
+    import json
+
+    return hashlib.sha256(json.dumps([messages, temperature], sort_keys=True).encode()).hexdigest()[:16]
 
 
 def domain_of(world: Any) -> str:
@@ -124,7 +137,7 @@ def generate(
     prompt: str | None = None,
     model: str | None = None,
     temperature: float = 0.0,
-    max_tokens: int = 1024,
+    max_tokens: int | None = None,
     timeout: float = 60.0,
     retries: int = 2,
     deadline: float | None = None,
@@ -136,9 +149,15 @@ def generate(
     base_dir: Path | None = None,
     save: Callable[[str, Any], Any] | None = None,
     log: Callable[[str], None] = lambda message: None,
+    previous: dict[str, Any] | None = None,
 ) -> dict[str, Any]:
     """One generator round; returns the outputs of step ``llm.problem``. ``prompt`` None: the
-    world's domain's template (``warehouse_problem`` or ``household_problem``)."""
+    world's domain's template (``warehouse_problem`` or ``household_problem``).
+
+    ``max_tokens`` None: a budget from the expected answer's size (:mod:`pipflow.language.budget`).
+    ``previous``: the previous round's ``round`` output; when this round's prompt would be the
+    same as that round's, the prompt is varied (:func:`pipflow.language.feedback.vary`) and the
+    ``varied`` output says how."""
     model = resolve_model(model)
     kind = domain_of(world)
     if model == "offline":
@@ -149,12 +168,40 @@ def generate(
         raise InputError("grounded decoding is not available for household worlds yet: run without "
                          "grounded (the debugger checks every name against the world)")
     feedback = [str(m) for m in (feedback or []) if str(m).strip()]
-    messages = render(prompt or DEFAULT_PROMPTS[kind],
-                      {"command": command, "world": world, "domain": domain_text,
-                       "feedback": feedback, "grounded": bool(grounded),
-                       "example": _example(world, domain_text) if not grounded else None}, base_dir)
+    example = _example(world, domain_text)
+    variables = {"command": command, "world": world, "domain": domain_text, "feedback": feedback,
+                 "grounded": bool(grounded), "example": example if not grounded else None}
+    base = render(prompt or DEFAULT_PROMPTS[kind], variables, base_dir)
+    base_digest = _digest(base)
+    previous = previous if isinstance(previous, dict) else {}
+    level = int(previous.get("level") or 0) + 1 if feedback and previous.get("base") == base_digest else 0
+    messages, varied = base, []
+    while True:  # vary until the prompt differs from the one sent last round (each level adds a line)
+        if level:
+            extra, temperature_now, varied = vary(level, str(previous.get("answer") or ""), feedback, world,
+                                                  bool(grounded), temperature)
+            messages = render(prompt or DEFAULT_PROMPTS[kind], {**variables, "feedback": feedback + extra}, base_dir)
+        else:
+            temperature_now = temperature
+        if _digest(messages, temperature_now) != previous.get("sent") or level >= 8:
+            break
+        level += 1
+    if varied:
+        log(f"llm: the prompt would repeat the previous round's: {'; '.join(varied)}")
+    if max_tokens is None:
+        reading = None
+        if grounded:
+            from pipflow.language.agreement import offline_reading
+
+            state, got = offline_reading(command, world)
+            reading = got if state == "read" else None
+        max_tokens = answer_budget(world, bool(grounded), example, reading)
     extra = request_extra(grounding_method(model, api_base), world) if grounded else {}
-    params = {"temperature": temperature, "max_tokens": max_tokens, **extra}
+    if not grounded:
+        extra = {**extra, "stop": list(FREE_STOPS)}
+    params = {"temperature": temperature_now, "max_tokens": max_tokens, **extra}
+    if save is not None:  # the prompt is kept even when the call fails (provider error, time-out)
+        save("messages.json", messages)
     key = cache_key(model, messages, params)
     cache = ResponseCache(cache_dir)
     use_cache = use_cache and os.environ.get("PIPFLOW_NO_CACHE", "") in ("", "0")
@@ -169,12 +216,11 @@ def generate(
 
             call_model, call_base = ensure_server(model)
         answer = complete(messages, model=call_model, api_base=call_base, timeout=timeout,
-                          retries=retries, temperature=temperature, max_tokens=max_tokens,
+                          retries=retries, temperature=temperature_now, max_tokens=max_tokens,
                           extra=extra, deadline=deadline)
         text, usage = answer.text, answer.usage
         log(f"llm: {model} answered in {usage['latency_s']} s, {usage.get('total_tokens')} tokens")
     if save is not None:  # the record first: a paid answer is kept even if the cache is not writable
-        save("messages.json", messages)
         save("response.txt", text)
     if entry is None and use_cache:  # --no-cache writes no cache either
         try:
@@ -183,7 +229,10 @@ def generate(
         except OSError as exc:
             log(f"warning: llm: the response cache {cache.directory} is not writable "
                 f"({exc.strerror or exc}); the answer is kept in the run record only")
-    out = {"messages": messages, "response": text, "usage": {**usage, "cache_key": key}}
+    out = {"messages": messages, "response": text, "usage": {**usage, "cache_key": key},
+           "varied": "; ".join(varied),
+           "round": {"base": base_digest, "sent": _digest(messages, temperature_now), "level": level,
+                     "answer": text[:ROUND_ANSWER_CHARS], "max_tokens": max_tokens}}
     out.update(_read_answer(text, world, grounded, domain_text))
     if save is not None and kind == "household" and out["goal"] is not None:
         save("goal.json", out["goal"])

@@ -80,6 +80,54 @@ def paren_hint(text: str) -> str:
     return ""
 
 
+#: what a problem's sections are called in messages ("the (:objects list ... is never closed")
+_SECTION_WORD = {":objects": "list", ":init": "list"}
+
+
+def unclosed_section(text: str) -> str:
+    """A message for a problem section that is never closed, or ``""``.
+
+    Sections (``(:objects``, ``(:init``, ``(:goal``, ...) are siblings inside ``(define``: one
+    that opens while another is still open means the other was never closed. Naming it and where
+    it opened is the useful message; the parser only notices later ("Expected ':init'") and points
+    at the wrong place. A section still open at the end of the text is reported the same way,
+    with its innermost unclosed '(' when that is not the section itself."""
+    clean = _strip_comments(text)
+    stack: list[tuple[int, str]] = []  # (offset of '(', its head token)
+    for i, ch in enumerate(clean):
+        if ch == "(":
+            head = _token_at(clean, i + 1).lower()
+            if head.startswith(":"):
+                open_section = next(((o, h) for o, h in reversed(stack) if h.startswith(":")), None)
+                if open_section is not None:
+                    return _never_closed(text, open_section, stack, f"the ({head} on line {{l}}, column {{c}} starts "
+                                         f"inside it; close it with ')' before ({head}", i)
+            stack.append((i, head))
+        elif ch == ")" and stack:
+            stack.pop()
+    open_section = next(((o, h) for o, h in stack if h.startswith(":")), None)
+    if open_section is not None:
+        return _never_closed(text, open_section, stack, "the text ends first", None)
+    return ""
+
+
+def _never_closed(text: str, section: tuple[int, str], stack: list[tuple[int, str]], why: str,
+                  at: int | None) -> str:
+    offset, head = section
+    line, col = _line_col(text, offset)
+    if at is not None:
+        l2, c2 = _line_col(text, at)
+        why = why.format(l=l2, c=c2)
+    inner = stack[-1][0]
+    extra = ""
+    if inner != offset:
+        il, ic = _line_col(text, inner)
+        extra = (f" The innermost '(' left open in it is at line {il}, column {ic}: "
+                 f"{text.splitlines()[il - 1].strip()!r}.")
+    return (f"line {line}, column {col}: the ({head} {_SECTION_WORD.get(head, 'section')} opened on line {line}, "
+            f"column {col} is never closed: {why}.{extra}")
+
+
 def find_form(text: str, head: str, *args: str) -> str:
     """``"line L, column C"`` of the first ``(head args...)`` in ``text``, or ``""``."""
     pattern = r"\(\s*" + r"\s+".join(re.escape(x) for x in (head,) + args) + r"\s*\)"
@@ -155,6 +203,9 @@ def explain_parse_error(exc: Exception, text: str, domain_text: str) -> str:
     objects = declared_objects(text)
 
     if type(exc).__name__ in ("ParseException", "ParseSyntaxException", "ParseFatalException"):
+        unclosed = unclosed_section(text)
+        if unclosed:
+            return unclosed
         line, col = getattr(exc, "lineno", 0), getattr(exc, "col", 0)
         loc = getattr(exc, "loc", None)
         token = _token_at(text, loc) if loc is not None else "?"

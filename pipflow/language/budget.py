@@ -1,0 +1,56 @@
+"""How long a model may talk: a token budget from the expected answer's size, and stop sequences.
+
+A small model on a CPU rarely stops by itself: it runs to ``max_tokens`` and a call of 1024
+tokens takes about a minute (issue 17). The answer's size is known before the call, though: a
+free answer is one problem for this world (about the size of the example problem the prompt
+shows) and a JSON block of rules; a grounded answer is one JSON item per goal count. The budget
+is that size in tokens with a margin, so a runaway answer is cut where no real answer could
+still be going; the answer readers then say it was cut off, which is feedback like any other.
+"""
+from __future__ import annotations
+
+import json
+import math
+from typing import Any
+
+#: characters per token of PDDL and JSON for small models' tokenizers (names split into word and
+#: digits, every parenthesis a token): measured about 2.6 on SmolLM2; 2.3 leaves room
+CHARS_PER_TOKEN = 2.3
+#: tokens for what surrounds the problem: code fences, the rules' JSON block, a sentence of prose
+FREE_MARGIN = 192
+GROUNDED_MARGIN = 48
+#: the fewest tokens ever asked for (a command may ask for many counts the estimate missed)
+FLOOR = 128
+#: where a free answer has certainly ended: the model starts writing the prompt's parts again
+FREE_STOPS = ["\nCommand:", "Your previous answer", "\n\n\n\n"]
+
+
+def tokens_for(text: str) -> int:
+    return math.ceil(len(text) / CHARS_PER_TOKEN)
+
+
+def free_budget(expected_problem: str) -> int:
+    """Tokens for a free answer whose problem is about ``expected_problem``'s size (plus a
+    quarter for a longer goal)."""
+    return max(FLOOR, math.ceil(tokens_for(expected_problem) * 1.25) + FREE_MARGIN)
+
+
+def grounded_budget(goal_items: int, rules: int) -> int:
+    """Tokens for a grounded answer of ``goal_items`` counts and ``rules`` rules, twice over
+    (a model may restate counts that stay)."""
+    item = tokens_for(json.dumps({"shelf": "shelf10", "product": "product10", "units": 100}) + ", ")
+    rule = tokens_for(json.dumps({"rule": "never", "robots": ["robot10", "robot11"], "product": "product10",
+                                  "from": "shelf10", "to": "shelf10"}) + ", ")
+    return max(FLOOR, 2 * (goal_items * item + rules * rule) + GROUNDED_MARGIN)
+
+
+def answer_budget(world: dict, grounded: bool, example: str | None, reading: Any = None) -> int:
+    """The ``max_tokens`` of one call: from the offline reading's goal when the parser read the
+    command (grounded), else from the world's size (every shelf x product, for grounded) or the
+    example problem (free)."""
+    if grounded:
+        if isinstance(reading, dict):
+            items = sum(len(v) for v in reading.get("goal", {}).values())
+            return grounded_budget(items, len(reading.get("constraints") or []))
+        return grounded_budget(len(world.get("shelves") or {}) * len(world.get("products") or {}) // 2, 2)
+    return free_budget(example or "")
