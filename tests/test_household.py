@@ -150,7 +150,7 @@ def test_translator_matches_ground_truth(world, tasks):
     refused = []
     for t in tasks["tasks"]:
         if t["feasible"] is False:   # the right answer is a refusal that says why
-            with pytest.raises(Refusal, match="cannot be"):
+            with pytest.raises(Refusal, match="can(not)? be hot"):
                 translate(t["command"], world)
             continue
         try:

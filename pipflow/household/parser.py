@@ -235,10 +235,6 @@ def parse(command: str, world: dict, notes: list[str] | None = None) -> list[dic
 # ---------------------------------------------------------------------------------------------
 # parse tree -> order
 # ---------------------------------------------------------------------------------------------
-def _kids(node: Tree) -> list[Tree | Token]:
-    return list(node.children)
-
-
 class Builder:
     """One parse tree -> one order (``schemas/household_order.schema.json``)."""
 
