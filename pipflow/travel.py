@@ -143,26 +143,61 @@ class _Geometry:
                  anchors: list[Point]):
         self.width, self.height = width, height
         self.rects, self.cores = rects, cores
-        nodes = list(dict.fromkeys(self._corners() + list(anchors)))
+        corners = self._corners()
+        nodes = list(dict.fromkeys(list(corners) + list(anchors)))
         self.nodes = np.asarray(nodes, dtype=float).reshape(-1, 2)
         self.index = {p: i for i, p in enumerate(nodes)}
+        # per node: its rectangle and the quadrant that rectangle occupies, for the tangency test
+        # (-1: an access point, or a corner shared with or touching another footprint: never pruned)
+        self._rect = np.full(len(nodes), -1)
+        self._quad = np.zeros((len(nodes), 2))
+        anchor_set = set(anchors)
+        for p, (k, sx, sy) in corners.items():
+            if k >= 0 and p not in anchor_set:
+                i = self.index[p]
+                self._rect[i], self._quad[i] = k, (sx, sy)
         self._graph = None
         self._trees: dict[int, tuple[np.ndarray, np.ndarray]] = {}  # target node -> (dist, pred)
         self._seen: dict[Point, tuple[np.ndarray, np.ndarray]] = {}  # point -> (nodes seen, lengths)
         self.lock = threading.RLock()
 
-    def _corners(self) -> list[Point]:
-        """Corners of the inflated footprints that a robot can stand on: on the floor and not
-        strictly inside another inflated footprint."""
+    def _corners(self) -> dict[Point, tuple[int, float, float]]:
+        """Corners of the inflated footprints that a robot can stand on (on the floor and not
+        strictly inside another inflated footprint), in sorted order, each with ``(rectangle,
+        sx, sy)``: the rectangle lies towards ``(sx, sy)`` from the corner. A corner that touches
+        another footprint (or is two rectangles' corner) gets rectangle -1."""
         if not len(self.rects):
-            return []
+            return {}
         r = self.rects
+        n = len(r)
         c = np.concatenate([r[:, [0, 1]], r[:, [0, 3]], r[:, [2, 1]], r[:, [2, 3]]])
+        own = np.tile(np.arange(n), 4)
+        sign = np.repeat(np.array([[1, 1], [1, -1], [-1, 1], [-1, -1]], dtype=float), n, axis=0)
         on_floor = (c[:, 0] >= 0) & (c[:, 0] <= self.width) & (c[:, 1] >= 0) & (c[:, 1] <= self.height)
         inside = ((r[:, 0] < c[:, [0]]) & (c[:, [0]] < r[:, 2]) & (r[:, 1] < c[:, [1]])
                   & (c[:, [1]] < r[:, 3])).any(axis=1)
-        keep = c[on_floor & ~inside]
-        return sorted({(float(x), float(y)) for x, y in keep})
+        touches = ((r[:, 0] <= c[:, [0]]) & (c[:, [0]] <= r[:, 2]) & (r[:, 1] <= c[:, [1]])
+                   & (c[:, [1]] <= r[:, 3])).sum(axis=1) > 1  # on the closed boundary of another one too
+        out: dict[Point, tuple[int, float, float]] = {}
+        for i in np.nonzero(on_floor & ~inside)[0]:
+            p = (float(c[i, 0]), float(c[i, 1]))
+            k = -1 if touches[i] or p in out else int(own[i])
+            out[p] = (k, float(sign[i, 0]), float(sign[i, 1]))
+        return dict(sorted(out.items()))
+
+    def _tangent(self, p: np.ndarray, v: np.ndarray) -> np.ndarray:
+        """Element-wise over node indices ``v`` and points ``p`` ((n, 2) or one (2,)): can a
+        shortest path from ``p`` bend at corner v? Why it holds: a geodesic bends only around the
+        obstacle at v; when p lies in the quadrant of v's rectangle (beyond it: the segment is
+        blocked) or in the opposite quadrant (the path p-v-w can be shortened near v), v is never
+        the next bend. Access points and corners touching other footprints are always kept, and
+        so is a corner whose rectangle holds p in its safety margin."""
+        k = self._rect[v]
+        d = (p - self.nodes[v]) * self._quad[v]
+        r = self.rects[np.maximum(k, 0)]
+        p = np.broadcast_to(p, d.shape)
+        in_rect = (r[:, 0] < p[:, 0]) & (p[:, 0] < r[:, 2]) & (r[:, 1] < p[:, 1]) & (p[:, 1] < r[:, 3])
+        return (k < 0) | in_rect | (d[:, 0] * d[:, 1] <= 0)
 
     def graph(self) -> Any:
         """The visibility graph as a symmetric sparse matrix of segment lengths (built once)."""
@@ -170,9 +205,14 @@ class _Geometry:
 
         if self._graph is None:
             rows, cols = [], []
-            for i in range(len(self.nodes) - 1):
+            k = len(self.nodes)
+            for i in range(k - 1):
                 a = (self.nodes[i, 0], self.nodes[i, 1])
-                seen = np.nonzero(_visible_from(a, self.nodes[i + 1:], self.rects, self.cores))[0] + i + 1
+                later = np.arange(i + 1, k)
+                # an edge can be on a shortest path only if it is tangent at both of its ends
+                later = later[self._tangent(self.nodes[i], later)
+                              & self._tangent(self.nodes[later], np.full(len(later), i))]
+                seen = later[_visible_from(a, self.nodes[later], self.rects, self.cores)]
                 rows.append(np.full(len(seen), i))
                 cols.append(seen)
             r = np.concatenate(rows) if rows else np.zeros(0, dtype=int)
@@ -199,7 +239,8 @@ class _Geometry:
         with self.lock:
             hit = self._seen.get(p)
             if hit is None:
-                ok = np.nonzero(_visible_from(p, self.nodes, self.rects, self.cores))[0]
+                cand = np.nonzero(self._tangent(np.asarray(p, dtype=float), np.arange(len(self.nodes))))[0]
+                ok = cand[_visible_from(p, self.nodes[cand], self.rects, self.cores)]
                 hit = self._seen[p] = (ok, np.hypot(self.nodes[ok, 0] - p[0], self.nodes[ok, 1] - p[1]))
             return hit
 

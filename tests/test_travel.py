@@ -109,13 +109,19 @@ def _reference_distances(tm: TravelMap, pairs: list) -> list[float]:
 
 
 def test_distances_equal_an_independent_visibility_graph_search():
-    """Robots are not graph nodes any more and visibility is vectorized: the distances must
-    still be the exact geodesics (a generated floor of 9 shelves in a 3 x 3 grid, 30 robots)."""
+    """Robots are not graph nodes, visibility is vectorized and corners that cannot be a bend
+    (tangency) are skipped: the distances must still be the exact geodesics (a floor of 9
+    shelves in a 3 x 3 grid plus three touching or overlapping others, 30 robots)."""
     import random
 
     rng = random.Random(7)
     shelves = {f"s{i}": {"x": 3 + 12 * (i % 3), "y": 4 + 7 * (i // 3), "width": 8, "depth": 2,
                          "capacity": 10, "access": [7 + 12 * (i % 3), 3 + 7 * (i // 3)]} for i in range(9)}
+    # two more shelves whose safety margins overlap s0's and s4's (0.4 m gap, 0.3 m margins), and
+    # one whose margin exactly meets s8's: corners that touch another footprint
+    shelves["t0"] = {"x": 3, "y": 6.4, "width": 8, "depth": 1, "capacity": 5, "access": [7, 7.9]}
+    shelves["t4"] = {"x": 23.4, "y": 11, "width": 2, "depth": 2, "capacity": 5, "access": [26, 12]}
+    shelves["t8"] = {"x": 27, "y": 22.6, "width": 8, "depth": 1.4, "capacity": 5, "access": [31, 24.5]}
     tm0 = TravelMap({"floor": {"width": 40, "height": 26}, "shelves": shelves})
     robots = {}
     while len(robots) < 30:
@@ -123,7 +129,7 @@ def test_distances_equal_an_independent_visibility_graph_search():
         if not any(r[0] <= p[0] <= r[2] and r[1] <= p[1] <= r[3] for r in tm0.obstacles):
             robots[f"r{len(robots)}"] = {"start": p, "skills": {"carry": 1}}
     tm = TravelMap({"floor": {"width": 40, "height": 26}, "shelves": shelves, "robots": robots})
-    asked = [(r, s) for r in list(robots)[:12] for s in ("s0", "s4", "s8")] + [("s0", "s8")]
+    asked = [(r, s) for r in list(robots)[:12] for s in ("s0", "s4", "s8", "t0", "t4")] + [("s0", "s8"), ("t0", "t8")]
     pairs = [(tm.point(a), tm.point(b)) for a, b in asked] + [((0.5, 0.5), (39.5, 25.5))]  # neither a node
     got = [tm.distance(a, b) for a, b in asked] + [tm.distance([0.5, 0.5], [39.5, 25.5])]
     assert got == pytest.approx(_reference_distances(tm, pairs), abs=1e-9)
