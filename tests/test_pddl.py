@@ -159,7 +159,7 @@ def test_full_shelves_swap_through_a_third():
     assert result.status == "solved", result.message
     assert verify_plan(problem, result.plan, world).ok
     # capacity forces parking: 3 red to s3, then blue and red alternate 3 at a time through the
-    # room that opens, and the parked red goes last: 5 moves, proven fewest (the flow alone: 2)
+    # room that opens, and the parked red goes last: 5 moves, proven fewest (2 without capacity)
     assert len(result.plan) == 5 and "optimal" in result.message
     assert exact_moves(instance_from_problem(problem)) == (5, True)
 
