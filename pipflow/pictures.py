@@ -9,6 +9,8 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
+from pipflow.trajectory import ROBOT_COLOURS, Trajectory
+
 #: ``pictures`` workflow input: ``always`` draws them during the run; ``never`` draws none (the
 #: report neither); ``auto`` leaves them to ``pipflow report``, which draws those below
 #: :data:`AUTO_LIMITS`. Why not in the run by default: matplotlib's import and drawing were 0.65 s
@@ -55,7 +57,6 @@ def _plt():
 
 
 def robot_colour(i: int) -> tuple:
-    from pipflow.simulation import ROBOT_COLOURS
 
     return ROBOT_COLOURS[i % len(ROBOT_COLOURS)]
 
@@ -115,7 +116,6 @@ def animation_gif(world: dict, trajectories: dict[str, list], path: Path, makesp
         return None
     from matplotlib.animation import FuncAnimation, PillowWriter
 
-    from pipflow.simulation import Trajectory
 
     plt = _plt()
     fig, ax = plt.subplots(figsize=(5, 3.5), dpi=72)
