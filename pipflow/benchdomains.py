@@ -133,6 +133,12 @@ def _household_score(world_path: str, task: dict, outputs: dict, refusal: str | 
     return score_bench_run(world_path, task, outputs, refusal, error)
 
 
+def _household_understanding(task: dict, outputs: dict, status: str, error_kind: str | None) -> dict:
+    from pipflow.household.scoring import understanding
+
+    return understanding(task, outputs, status, error_kind)
+
+
 def _household_table(results: dict, tasks_file: Path) -> str:
     from pipflow.household.scoring import bench_table
 
@@ -142,7 +148,8 @@ def _household_table(results: dict, tasks_file: Path) -> str:
 DOMAINS = {
     "warehouse": BenchDomain("warehouse", "warehouse", _warehouse_tasks, _warehouse_score,
                              understand=warehouse_understanding),
-    "household": BenchDomain("household", "household", _household_tasks, _household_score, _household_table),
+    "household": BenchDomain("household", "household", _household_tasks, _household_score, _household_table,
+                             understand=_household_understanding),
 }
 
 

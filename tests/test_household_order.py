@@ -314,3 +314,21 @@ def test_heating_in_the_microwave_runs_end_to_end(tmp_path):
     by = {a["subtask"]: a["robots"] for a in out["allocation"]["assignments"]}
     heat = [n["id"] for n in out["graph"]["nodes"] if n["action"] == "heat"]
     assert heat and by[heat[0]] == ["robot7"]
+
+
+def test_bench_understanding_of_household_runs():
+    """What `pipflow bench` reports per run: understood when the run's goal is the gold (lists as
+    sets) or a refusal was right; misread when a run executed another goal."""
+    from pipflow.household.scoring import understanding
+
+    task = {"goal": {"in": {"fridge": ["apple", "tomato"]}, "state": {"fridge": ["closed"]}}}
+    same = {"goal": {"in": {"fridge": ["tomato", "apple"]}, "state": {"fridge": ["closed"]}, "count": []}}
+    assert understanding(task, same, "succeeded", None)["understood"] is True
+    other = {"goal": {"in": {"fridge": ["apple"]}, "state": {"fridge": ["closed"]}}}
+    wrong = understanding(task, other, "succeeded", None)
+    assert wrong["understood"] is False and wrong["misread"] is True
+    refused = understanding(task, {}, "failed", "TranslationError")
+    assert refused["understood"] is False and refused["misread"] is False
+    infeasible = {"feasible": False}
+    assert understanding(infeasible, {}, "refused", "Refusal")["understood"] is True
+    assert understanding(infeasible, other, "succeeded", None)["misread"] is True

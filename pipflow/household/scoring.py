@@ -228,6 +228,38 @@ def score_bench_run(world_path: str, task: dict, outputs: dict, refusal: str | N
                      simulation=outputs.get("simulation"), refusal=refusal, error=error)
 
 
+def _canonical_goal(goal: Any) -> str | None:
+    """A household goal as sorted JSON (lists are sets; empty entries dropped), None if malformed."""
+    import json
+
+    if not isinstance(goal, dict):
+        return None
+    out = {"in": {p: sorted(v) for p, v in (goal.get("in") or {}).items() if v},
+           "state": {n: sorted(v) for n, v in (goal.get("state") or {}).items() if v},
+           "count": sorted(json.dumps(c, sort_keys=True) for c in goal.get("count") or [])}
+    return json.dumps(out, sort_keys=True)
+
+
+def understanding(task: dict, outputs: dict, status: str, error_kind: str | None) -> dict:
+    """Whether a bench run read the household command as its gold (issue 12, item 9): a task whose
+    right answer is a refusal is understood when the run was refused; any other when the run's
+    goal (as the command states it, counts kept) equals the gold. ``misread``: the run executed
+    with another goal (robots moved wrongly)."""
+    refused = status == "refused" or error_kind in ("Refusal", "TranslationError")
+    executed = status == "succeeded"
+    if task.get("feasible") is False or task.get("expect") == "refuse":
+        return {"understood": refused, "misread": executed,
+                "understanding": "refused, as it should be" if refused else
+                ("executed a command whose right answer is a refusal" if executed else "not refused")}
+    run = _canonical_goal(outputs.get("goal"))
+    if run is None:
+        return {"understood": False, "misread": False,
+                "understanding": "refused" if refused else "no goal among the run's outputs (it did not finish)"}
+    same = run == _canonical_goal(task.get("goal") or {})
+    return {"understood": same, "misread": not same and executed,
+            "understanding": "goal as the gold" if same else f"goal {run}, gold {_canonical_goal(task.get('goal'))}"}
+
+
 def _fmt(v: Any) -> str:
     return "--" if v is None else f"{v:.1f}"
 
@@ -240,7 +272,8 @@ def bench_table(results: dict, tasks_file: str | Path) -> str:
     for variant in results["variants"]:
         if len(results["variants"]) > 1:
             lines.append(f"### {variant['name']}\n")
-        lines += ["| Category | tasks | runs | SR | TC max/avg (m) | GCR | RU | Exe |", "|---|---|---|---|---|---|---|---|"]
+        lines += ["| Category | tasks | runs | SR | understood | misread | TC max/avg (m) | GCR | RU | Exe |",
+                  "|---|---|---|---|---|---|---|---|---|---|"]
         groups = [(c, [t for t in variant["tasks"] if category.get(t["id"]) == c]) for c in CATEGORIES]
         groups.append(("**all**", list(variant["tasks"])))
         for name, rows in groups:
@@ -254,8 +287,18 @@ def bench_table(results: dict, tasks_file: str | Path) -> str:
             ok = [r for r in rows if r.get("tc_max") is not None]
             tmax = sum(r["tc_max"] for r in ok) / len(ok) if ok else None
             tavg = sum(r["tc_avg"] for r in ok) / len(ok) if ok else None
-            lines.append(f"| {name} | {len(rows)} | {runs} | {w('sr'):.2f} | {_fmt(tmax)}/{_fmt(tavg)} | "
+            measured = [r for r in rows if r.get("understood") is not None]
+            understood = (sum(r["understood"] * r["runs"] for r in measured) / sum(r["runs"] for r in measured)
+                          if measured else None)
+            misread = sum(int(r.get("misread") or 0) for r in rows)
+            lines.append(f"| {name} | {len(rows)} | {runs} | {w('sr'):.2f} | "
+                         f"{'--' if understood is None else f'{understood:.2f}'} | {misread} | {_fmt(tmax)}/{_fmt(tavg)} | "
                          f"{w('gcr'):.2f} | {w('ru'):.2f} | {w('exe'):.2f} |")
+        if variant.get("constructions"):
+            lines += ["", "| Construction | runs | understood | misread |", "|---|---|---|---|"]
+            for name, c in sorted(variant["constructions"].items()):
+                und = "--" if c.get("understood") is None else f"{c['understood']:.2f}"
+                lines.append(f"| {name} | {c['runs']} | {und} | {c['misread']} |")
         lines += ["", "| Task | category | SR | TC max/avg (m) | GCR | RU | Exe | error |", "|---|---|---|---|---|---|---|---|"]
         for t in variant["tasks"]:
             err = (t.get("error") or "").replace("|", "/").replace("\n", " ")[:90]
