@@ -163,7 +163,15 @@ def numeric_view(problem: Any, grounded: list) -> list[Numeric]:
         for k in [k for k in v.deltas if any(_match(k, o) for o in opaque)]:
             v.opaque_writes.add(k)
             del v.deltas[k]
+        # whole numbers as ints: the envelope sums thousands of them, and Fraction is slow
+        v.deltas = {k: _num(d) for k, d in v.deltas.items()}
+        v.conds = [Comparison(Linear({k: _num(c) for k, c in cmp.form.coefs.items()}, _num(cmp.form.const)), cmp.op)
+                   for cmp in v.conds]
     return out
+
+
+def _num(x: Fraction) -> Any:
+    return int(x) if x.denominator == 1 else x
 
 
 def conflicts(a: Numeric, b: Numeric) -> bool:
@@ -191,14 +199,14 @@ class _Envelope:
         self.touch: dict[tuple[int, int], dict[int, tuple[Fraction, Fraction, Fraction]]] = {}
         for v in views:
             for ci, cmp in enumerate(v.conds):
-                base = cmp.form.const + sum(c * Fraction(init.get(k, 0)) for k, c in cmp.form.coefs.items())
+                base = cmp.form.const + sum(c * init.get(k, 0) for k, c in cmp.form.coefs.items())
                 effects: dict[int, tuple[Fraction, Fraction, Fraction]] = {}
                 for k, c in cmp.form.coefs.items():
                     for b in by_key.get(k, ()):
                         if b == v.index:
                             continue
                         d = c * views[b].deltas[k]
-                        w, neg, pos = effects.get(b, (Fraction(0),) * 3)
+                        w, neg, pos = effects.get(b, (0, 0, 0))
                         effects[b] = (w + d, neg + min(d, 0), pos + max(d, 0))
                 self.base[v.index, ci] = base
                 self.touch[v.index, ci] = {b: e for b, e in effects.items() if e != (0, 0, 0)}
