@@ -6,6 +6,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
 import yaml
 
 from pipflow.dependency import build_graph
@@ -78,6 +79,33 @@ print("ok")
 """
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
     assert out.returncode == 0 and out.stdout.strip().endswith("ok"), out.stderr[-2000:]
+
+
+def test_main_job_imports_neither_matplotlib_nor_scipy_stats(tmp_path):
+    """The main job with the default pictures=auto draws nothing, so it must not pay for
+    matplotlib (unit colours come from a table) nor for scipy.stats (ConfigSpace deferred)."""
+    code = f"""
+import sys
+from pipflow.engine.cli import main
+code = main(["run", {str(ROOT / 'workflows' / 'warehouse.yaml')!r}, "--runs-dir", {str(tmp_path)!r}, "--no-cache", "-q"])
+assert code == 0, code
+heavy = [m for m in ("matplotlib", "scipy.stats", "ConfigSpace.hyperparameters") if m in sys.modules]
+assert not heavy, heavy
+print("ok")
+"""
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0 and out.stdout.strip().endswith("ok"), out.stdout[-1000:] + out.stderr[-2000:]
+
+
+def test_common_colours_match_matplotlib():
+    from matplotlib.colors import to_rgba
+
+    from pipflow.simulation import colour_rgba
+
+    for name in ("red", "Green", "blue", "magenta", "yellow", "cyan", "black", "white", "orange",
+                 "purple", "grey", "gray", "brown", "teal", "#ff8800"):
+        assert colour_rgba(name) == pytest.approx(to_rgba(name)), name
+    assert colour_rgba("no-such-colour") == (0.5, 0.5, 0.5, 1.0)
 
 
 def test_workflow_pictures_input(tmp_path):
