@@ -258,6 +258,7 @@ def deorder(problem: Any, grounded: list) -> list[tuple[int, int]]:
             mask |= anc[p] | (1 << p)
         return mask
 
+    current: dict[tuple[int, int], tuple] = {}  # (action, condition) -> envelope over actions so far
     with_opaque: list[int] = []  # only pairs with a non-additive side can conflict
     for j in range(n):
         opaque_j = bool(views[j].opaque_reads or views[j].opaque_writes)
@@ -286,15 +287,24 @@ def deorder(problem: Any, grounded: list) -> list[tuple[int, int]]:
                 if env.holds(j, ci, *env.bounds(j, ci, j, anc, j, closure(trial))):
                     ps = trial
         # (3) earlier actions' conditions that j could break while incomparable
+        mask = closure(ps)
         for a, ci in sorted(watched.get(j, ()), key=lambda x: -x[0]):
-            if a >= j:
-                continue
-            mask = closure(ps)
-            if mask >> a & 1:
+            if a >= j or mask >> a & 1:
                 continue  # j already follows a
-            if not env.holds(a, ci, *env.bounds(a, ci, j + 1, anc, j, mask)):
+            _, neg, pos = env.touch[a, ci][j]
+            lo, hi = current[a, ci]
+            if not env.holds(a, ci, lo + neg, hi + pos):
                 ps.add(a)
+                mask |= anc[a] | (1 << a)
         parents[j] = ps
-        anc[j] = closure(ps)
+        anc[j] = mask
         level[j] = 1 + max((level[p] for p in ps), default=0)
+        # envelopes so far: j joins those of the earlier actions it stays incomparable to
+        for a, ci in watched.get(j, ()):
+            if a < j and not mask >> a & 1:
+                _, neg, pos = env.touch[a, ci][j]
+                lo, hi = current[a, ci]
+                current[a, ci] = (lo + neg, hi + pos)
+        for ci in range(len(views[j].conds)):
+            current[j, ci] = env.bounds(j, ci, j, anc, j, mask)
     return [(i, j) for j in range(n) for i in sorted(parents[j])]
