@@ -258,3 +258,45 @@ def test_other_shapes_are_unsupported():
     with pytest.raises(NotTransport, match="precondition"):
         instance_from_problem(problem)
     assert solve_problem(problem, "pipflow-transport").status == "error"
+
+
+# ---------------------------------------------------------------- property: planner == breadth-first search
+from hypothesis import HealthCheck, given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+
+@st.composite
+def tiny_instances(draw):
+    """2-3 shelves, 1-2 products, capacities 1-4, any stock that fits, goals exact or bounds."""
+    n_s, n_p = draw(st.integers(2, 3)), draw(st.integers(1, 2))
+    shelves, products = [f"s{i}" for i in range(n_s)], [f"p{j}" for j in range(n_p)]
+    cap = {s: draw(st.integers(1, 4)) for s in shelves}
+    stock = {}
+    for s in shelves:
+        left = cap[s]
+        for p in products:
+            k = draw(st.integers(0, left))
+            stock.setdefault(s, {})[p] = k
+            left -= k
+    goal = {}
+    for s in shelves:
+        for p in products:
+            kind = draw(st.sampled_from(["none", "none", "exact", "least", "most"]))
+            n = draw(st.integers(0, 4))
+            if kind != "none":
+                goal[s, p] = (n, n) if kind == "exact" else (n, None) if kind == "least" else (0, n)
+    mags = draw(st.sampled_from([{"m1": 1}, {"m1": 1, "m2": 2}, {"m1": 1, "m2": 2, "m3": 3}]))
+    return make(cap, stock, goal, mags)
+
+
+@settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(tiny_instances())
+def test_planner_agrees_with_breadth_first_search(inst):
+    best = bfs_fewest(inst)
+    try:
+        out = solve_instance(inst)
+    except Unsolvable:
+        assert best is None  # "proven unsolvable" must be true
+        return
+    assert best is not None and out.optimal and len(out.moves) == best
+    assert inst.satisfied(replay(inst, out.moves))
