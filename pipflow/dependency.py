@@ -10,13 +10,13 @@ shelf's capacity. No fluent name of any particular domain is assumed.
 
 Modes:
 
-* ``exact`` (default): every interacting earlier action is a predecessor, then the DAG is
+* ``exact`` (:func:`build_graph`'s default): every interacting earlier action is a predecessor, then the DAG is
   transitively reduced. Any schedule that respects the edges runs conflicting actions in plan
   order, so it reaches the plan's final state and every precondition holds when it is needed.
 * ``paper``: Alg. 2 as written - each action gets only its nearest interacting predecessor.
   When an action depends on two earlier, mutually independent actions, one of those edges is
   lost and a schedule may run the action too early; kept for the ablation.
-* ``deorder`` (the warehouse workflow's default): keep an ordering only where a precondition
+* ``deorder`` (the ``graph.dependencies`` step's and the warehouse workflow's default): keep an ordering only where a precondition
   needs it; increments of one fluent commute, and stock and capacity bounds are checked for
   every order the graph allows (:mod:`pipflow.deorder`). Far fewer edges than ``exact`` when
   many moves share a shelf, so the schedule runs them in parallel.
