@@ -492,8 +492,6 @@ class _Sentence:
             else:
                 source = self.place_list(self.sub(self.sub(node, "src")[0], "places")[0])
             for np in nps:
-                if np["amount"] == {"count": 0}:
-                    continue
                 st = self._transfer_statement(np, source, None, words)
                 self.statements.append(st)
             self.last_source = source
