@@ -193,11 +193,17 @@ def merge_workflows(base: SourceDict, child: SourceDict, diagnostics: list[Diagn
     ``remove: [ids]`` drops inherited steps. The base is deep-copied first, so merging may
     change it in place; locations travel with the copies."""
     merged = copy.deepcopy(base)
+    remove = child.get("remove")
+    if remove is not None and not (isinstance(remove, list) and all(isinstance(r, str) for r in remove)):
+        diagnostics.append(Diagnostic(child.where("remove"), f"remove: expected a list of step ids, got {remove!r}"))
     for key, value in child.items():
         if key in ("inputs", "outputs") and isinstance(value, dict) and isinstance(merged.get(key), dict):
             _merge_mapping(merged[key], value, deep=key == "inputs")
         elif key == "steps":
-            merged["steps"] = _merge_steps(merged.get("steps") or SourceList(), value,
+            if not isinstance(value, list):
+                diagnostics.append(Diagnostic(child.where("steps"), f"steps: expected a list of steps, got {value!r}"))
+            base_steps = merged.get("steps")
+            merged["steps"] = _merge_steps(base_steps if isinstance(base_steps, SourceList) else SourceList(), value,
                                            child.get("remove") or [], diagnostics, child)
         elif key == "env" and isinstance(value, list) and isinstance(merged.get("env"), list):
             names = SourceList([*merged["env"], *(v for v in value if v not in merged["env"])])
@@ -226,15 +232,17 @@ def _merge_steps(steps: SourceList, child_steps: Any, remove: list, diagnostics:
                  child: SourceDict) -> SourceList:
     index = _index_steps(steps)
     removed = set()
-    for rid in remove:
+    # ids of the wrong type (a list, a number) are left to the schema check, which names them
+    for rid in (r for r in (remove if isinstance(remove, list) else []) if isinstance(r, str)):
         if rid in index:
             removed.add(rid)
         else:
             diagnostics.append(Diagnostic(child.where("remove"), f"remove: no inherited step {rid!r}"))
     for entry in child_steps if isinstance(child_steps, list) else []:
         sid = entry.get("id") if isinstance(entry, dict) else None
+        sid = sid if isinstance(sid, str) else None
         found = index.get(sid) if sid is not None else None
-        if sid is None or "uses" in entry or "loop" in entry:
+        if sid is None or not isinstance(entry, dict) or "uses" in entry or "loop" in entry:
             if found:
                 container, i = found
                 container[i] = entry
@@ -272,12 +280,12 @@ def _index_steps(steps: list) -> dict[str, tuple[list, int]]:
     for i, s in enumerate(steps):
         if not isinstance(s, dict):
             continue
-        if "id" in s:
+        if isinstance(s.get("id"), str):
             index[s["id"]] = (steps, i)
         inner = s.get("loop", {}).get("steps") if isinstance(s.get("loop"), dict) else None
         if isinstance(inner, list):
             for j, x in enumerate(inner):
-                if isinstance(x, dict) and "id" in x:
+                if isinstance(x, dict) and isinstance(x.get("id"), str):
                     index[x["id"]] = (inner, j)
     return index
 
@@ -289,7 +297,7 @@ def _without(steps: SourceList, removed: set) -> SourceList:
     out = SourceList()
     out.loc = steps.loc
     for s in steps:
-        if isinstance(s, dict) and s.get("id") in removed:
+        if isinstance(s, dict) and isinstance(s.get("id"), str) and s["id"] in removed:
             continue
         inner = s.get("loop", {}).get("steps") if isinstance(s, dict) and isinstance(s.get("loop"), dict) else None
         if isinstance(inner, SourceList):

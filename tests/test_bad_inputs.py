@@ -225,6 +225,25 @@ def test_unusable_extends_base_is_located_and_validate_agrees_with_run(ws, capsy
         assert "child.yaml:3:10" in err and cause in err, err
 
 
+CHILDREN = {  # a child of a good base, with parts of the wrong type (found by fuzzing the merge)
+    "remove is a number": ("remove: -1\nsteps: []\n", "child.yaml:4:9", "remove: expected a list of step ids"),
+    "remove holds a list": ("remove: [[a]]\nsteps: []\n", "child.yaml:4:9", "remove: expected a list of step ids"),
+    "step id is a list": ("steps:\n  - {id: [q], with: {value: 2}}\n", "child.yaml:5", "is not of type 'string'"),
+    "step id is a mapping": ("steps:\n  - {id: {a: 1}, uses: core.value, with: {value: 2}}\n", "child.yaml:5", "is not of type 'string'"),
+    "steps is a mapping": ("steps: {a: 1}\n", "child.yaml:4:8", "steps: expected a list of steps"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(CHILDREN))
+def test_extends_child_with_parts_of_the_wrong_type(ws, capsys, case):
+    body, where, cause = CHILDREN[case]
+    (ws / "base.yaml").write_text("pipflow: 1\nname: base\nsteps:\n  - {id: a, uses: core.value, with: {value: 1}}\n")
+    (ws / "child.yaml").write_text("pipflow: 1\nname: child\nextends: base.yaml\n" + body)
+    for command in ("validate", "run"):
+        code, _, err = cli(capsys, command, ws / "child.yaml")
+        assert code == 2 and where in err and cause in err, (command, err)
+
+
 def test_extends_chain_of_1500_files_is_a_depth_limit_not_a_recursion_error(ws, capsys):
     for i in range(1500):
         parent = f"extends: c{i + 1}.yaml\n" if i < 1499 else ""
