@@ -116,3 +116,46 @@ def test_task_file_loads_or_is_a_user_error(tmp_path_factory, data):
         load_tasks(folder / "tasks.yaml")
     except UserError as err:
         assert str(err)
+
+
+# --- structure: values of every wrong type at every place of real workflows ---------------------
+WORKFLOW_SEEDS = [REPO / "workflows" / "warehouse.yaml", REPO / "tests" / "fixtures" / "workflows" / "loop_demo.yaml",
+                  REPO / "tests" / "fixtures" / "workflows" / "extends_child.yaml"]
+ODD_VALUES = [None, 0, -1, 1.5, True, "", "${", "${a.}", "${env}", "${nosuch.x}", "${previous.x}", "${iteration}",
+              [], [1, "a"], {}, {"uses": 5}, {"id": None}, [{"id": "q"}], {"loop": {}}, {"max": "x"}, ["x"],
+              {"id": "z", "loop": {"max": 2, "until": True, "steps": [{"id": "w", "uses": "core.value"}]}}]
+
+
+def _places(value, prefix=()):
+    yield prefix
+    if isinstance(value, dict):
+        for k, v in value.items():
+            yield from _places(v, prefix + (k,))
+    elif isinstance(value, list):
+        for i, v in enumerate(value):
+            yield from _places(v, prefix + (i,))
+
+
+@FUZZ
+@given(st.sampled_from(WORKFLOW_SEEDS), st.lists(st.tuples(st.integers(0, 10**6), st.sampled_from(ODD_VALUES)),
+                                                 min_size=1, max_size=3))
+def test_workflow_with_values_of_the_wrong_type_validates_or_lists_problems(tmp_path_factory, seed, edits):
+    import copy
+
+    import yaml
+
+    data = yaml.safe_load(seed.read_text())
+    for where, value in edits:
+        places = list(_places(data))[1:]
+        place = places[where % len(places)]
+        node = data
+        for key in place[:-1]:
+            node = node[key]
+        node[place[-1]] = copy.deepcopy(value)
+    folder = tmp_path_factory.mktemp("structure")
+    for base in seed.parent.glob("*.yaml"):  # bases an `extends` names
+        (folder / base.name).write_bytes(base.read_bytes())
+    path = folder / "mutated.yaml"
+    path.write_text(yaml.safe_dump(data))
+    workflow, diagnostics = check_workflow(path)  # never raises
+    assert workflow is not None or diagnostics
