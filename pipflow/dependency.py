@@ -150,6 +150,28 @@ def interacts(earlier: GroundAction, later: GroundAction) -> bool:
             or _meets(earlier.reads, later.writes))
 
 
+def _last_writer_edges(grounded: list[GroundAction]) -> list[tuple[int, int]]:
+    """The exact mode's order with the same transitive closure as "every interacting pair", from
+    far fewer pairs: per fluent, the last writer before an action and the readers since it.
+    (A writer after i on the same fluent follows i through the chain of writers, a reader
+    precedes the next writer.) Ground fluents only; quantified ones take the pairwise path."""
+    last_writer: dict[Key, int] = {}
+    readers: dict[Key, list[int]] = {}
+    edges = set()
+    for j, g in enumerate(grounded):
+        for k in g.reads | g.writes:
+            if k in last_writer:
+                edges.add((last_writer[k], j))
+        for k in g.writes:
+            edges.update((r, j) for r in readers.get(k, ()) if r != j)
+        for k in g.writes:
+            last_writer[k] = j
+            readers[k] = []
+        for k in g.reads - g.writes:
+            readers.setdefault(k, []).append(j)
+    return sorted(edges)
+
+
 def _resolve(value: Any, binding: dict[str, str], where: str) -> Any:
     if isinstance(value, str) and value.startswith("?"):
         if value not in binding:
@@ -225,24 +247,27 @@ def build_graph(
         from pipflow.deorder import deorder
 
         dag.add_edges_from((nodes[i]["id"], nodes[j]["id"]) for i, j in deorder(problem, grounded))
-    touching: dict[Key, list[int]] = {}  # ground fluent -> earlier actions reading or writing it
-    wild: list[int] = []  # actions with a quantified ("*") fluent: checked against every later one
-    for j in range(len(grounded) if mode != "deorder" else 0):
-        mine = grounded[j].reads | grounded[j].writes
-        if any("*" in k for k in mine):
-            candidates = set(range(j))
-        else:
-            candidates = {i for k in mine for i in touching.get(k, ())} | set(wild)
-        parents = [i for i in sorted(candidates, reverse=True) if interacts(grounded[i], grounded[j])]
-        if any("*" in k for k in mine):
-            wild.append(j)
-        else:
-            for k in mine:
-                touching.setdefault(k, []).append(j)
-        if mode == "paper":
-            parents = parents[:1]  # Alg. 2: the nearest earlier interacting action only
-        for i in parents:
-            dag.add_edge(nodes[i]["id"], nodes[j]["id"])
+    elif mode == "exact" and not any("*" in k for g in grounded for k in g.reads | g.writes):
+        dag.add_edges_from((nodes[i]["id"], nodes[j]["id"]) for i, j in _last_writer_edges(grounded))
+    else:
+        touching: dict[Key, list[int]] = {}  # ground fluent -> earlier actions reading or writing it
+        wild: list[int] = []  # actions with a quantified ("*") fluent: checked against every later one
+        for j in range(len(grounded)):
+            mine = grounded[j].reads | grounded[j].writes
+            if any("*" in k for k in mine):
+                candidates = set(range(j))
+            else:
+                candidates = {i for k in mine for i in touching.get(k, ())} | set(wild)
+            parents = [i for i in sorted(candidates, reverse=True) if interacts(grounded[i], grounded[j])]
+            if any("*" in k for k in mine):
+                wild.append(j)
+            else:
+                for k in mine:
+                    touching.setdefault(k, []).append(j)
+            if mode == "paper":
+                parents = parents[:1]  # Alg. 2: the nearest earlier interacting action only
+            for i in parents:
+                dag.add_edge(nodes[i]["id"], nodes[j]["id"])
     if mode in ("exact", "deorder"):
         dag = nx.transitive_reduction(dag)
     order = {n["id"]: n["index"] for n in nodes}
