@@ -144,8 +144,8 @@ def tight_suite(per_family: int = 6, seed: int = 15) -> list[tuple[str, dict, di
 
 
 def run_tight(enhsp: bool, enhsp_timeout: float) -> bool:
-    print(f"\ncapacity-tight suite: plan = pipflow-transport (UP engine, validated); flow = its flow plan "
-          f"without search; ip = order-free bound; opt = fewest moves under capacity (exact A*, proven)")
+    print("\ncapacity-tight suite: plan = pipflow-transport (UP engine, validated); flow = its flow plan "
+          "without search; ip = order-free bound; opt = fewest moves under capacity (exact A*, proven)")
     head = f"{'instance':13}{'plan':>5}{'flow':>5}{'ip':>4}{'opt':>5}{'plan/opt':>9}{'time s':>8}"
     if enhsp:
         head += f"{'enhsp':>7}{'enhsp/plan':>11}{'opt-pl':>7}{'opt/plan':>9}"

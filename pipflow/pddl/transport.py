@@ -56,7 +56,7 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any, Callable, Optional
 
-from pipflow.pddl.linear import NotLinear, comparison, conjuncts, key_of, linear
+from pipflow.pddl.linear import NotLinear, comparison, conjuncts, key_of
 
 ENGINE_NAME = "pipflow-transport"
 ACTION = "move-product"
