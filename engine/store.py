@@ -188,15 +188,22 @@ class RunStore:
         writer (``resume`` of a run that is still running) is refused."""
         if self._dir_lock is not None:
             return
-        fd = os.open(self.root, os.O_RDONLY | getattr(os, "O_DIRECTORY", 0))
+        try:
+            fd = os.open(self.root, os.O_RDONLY | getattr(os, "O_DIRECTORY", 0))
+        except OSError:
+            return  # a folder that cannot be opened for reading: its writes will say what is wrong
         try:
             fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
-        except BlockingIOError:
+        except OSError as err:
+            if not isinstance(err, BlockingIOError):  # a file system without locks (some network mounts)
+                os.close(fd)
+                return
             os.close(fd)
             try:
-                pid = (read_json(self.root / "run.json", {}) or {}).get("pid")
+                info = read_json(self.root / "run.json", {})
             except DamagedRecord:
-                pid = None
+                info = {}
+            pid = info.get("pid") if isinstance(info, dict) else None
             raise UserError(f"{self.root}: another pipflow process{f' (pid {pid})' if pid else ''} is writing "
                             "this run; wait until it ends (or stop it) and try again") from None
         self._dir_lock = fd
