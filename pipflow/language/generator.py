@@ -255,12 +255,27 @@ def _read_answer(text: str, world: dict, grounded: bool, domain_text: str = "") 
     try:
         problem = extract_problem(text)
     except ParseIssue as issue:
-        errors.append(str(issue))
+        errors.append(str(issue) + _unclosed_hint(text))
     try:
         constraints = validate_constraints(extract_constraints(text), world)
     except ParseIssue as issue:
         errors.append(str(issue))
     return {"problem": problem, "goal": None, "constraints": constraints, "errors": errors}
+
+
+def _unclosed_hint(text: str) -> str:
+    """For a problem whose parentheses never balance: which section is left open and where it
+    opened (the debugger's reading, lines counted from ``(define``), or ``""``."""
+    import re
+
+    from pipflow.pddl.debugger import unclosed_section
+
+    starts = [m.start() for m in re.finditer(r"\(\s*define\s*\(\s*problem\b", text, re.IGNORECASE)]
+    if not starts:
+        return ""
+    body = text[starts[-1]:].split("```", 1)[0]
+    hint = unclosed_section(body)
+    return f" Counting lines from `(define`: {hint}" if hint else ""
 
 
 def _read_household_answer(text: str, world: dict, domain_text: str) -> dict[str, Any]:
