@@ -176,6 +176,8 @@ def test_misreadings_of_the_issue_are_gone() -> None:
 def test_command_size_is_capped_and_the_parse_is_per_sentence() -> None:
     with pytest.raises(InputError, match="limited to 4000"):
         understand("put 1 product1 on shelf1. " * 200, PAPER)
+    with pytest.raises(TranslationError, match="read up to 120 words"):
+        understand("1, " * 70 + "product1 on shelf1", PAPER)
     # many short sentences are fine: the parse works one sentence at a time
     order = parse("put 1 product1 on shelf1. " * 40, PAPER)
     assert len(order["statements"]) == 40

@@ -278,13 +278,13 @@ tail: places ("too" | "as" "well" | "also")                 -> t_too
     | ("all" | "both" | "each")? from places               -> t_source
 
 // ---------------------------------------------------------------- robots and rules
-robots: robot (rlsep robot)*
+robots: robot (rlsep (robot | rnum))*
       | rgroup
 robot: ROBOTWORD? ROBOT                                   -> r_name
      | ROBOTWORD? ROBOT ("to" | "through" | "thru" | "till") NUM -> r_range
      | ROBOTWORD? ROBOT ("to" | "through" | "thru" | "till") ROBOTWORD? ROBOT -> r_name_range
-     | NUM                                                -> r_number
      | ROBOTWORD NUM                                      -> r_number
+rnum: NUM                                                 -> r_number
 rgroup: (all | "a" | "an" | "any")? (RKIND | RTAG)        -> r_kind
       | all? ROBOTWORD ("tagged" | "labelled" | "labeled" | "marked") (RTAG | RKIND) -> r_kind
       | all? (RTAG | RKIND) ROBOTWORD                      -> r_kind

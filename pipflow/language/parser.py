@@ -30,6 +30,9 @@ from pipflow.language.grammar import GRAMMAR, nullable_optionals
 from pipflow.language.lexicon import Lexed, Lexicon
 from pipflow.language.robots import RobotSelector
 
+#: the most terminals one sentence may have: Earley's time grows faster than the length on
+#: ambiguous lists, so a bound per sentence keeps a whole command's parse linear in its length
+MAX_SENTENCE_WORDS = 120
 SET_AMOUNTS = {"count", "all", "none", "as_many_as", "rest", "each"}
 CHANGE_AMOUNTS = {"more", "fewer", "times", "fraction"}
 BOUND_AMOUNTS = {"at_least", "at_most", "between", "at_least_more"}
@@ -988,6 +991,11 @@ def parse(command: str, world: dict) -> dict:
     for lexed in lex.sentences(command):
         if not lexed.tokens:
             continue
+        if len(lexed.tokens) > MAX_SENTENCE_WORDS:
+            shown = " ".join(t.text for t in lexed.source[:12])
+            raise TranslationError(f"the sentence '{shown} ...' has {len(lexed.tokens)} words; sentences "
+                                   f"are read up to {MAX_SENTENCE_WORDS} words (end it with a full stop "
+                                   f"and go on in a new one)")
         try:
             tree = _parser().parse(lexed.tokens)
         except UnexpectedInput as exc:
