@@ -16,14 +16,13 @@ def _read_metadata(ctx: StepContext, value) -> dict:
     import yaml
 
     from pipflow.errors import InputError
+    from pipflow.yamlsource import read_source, safe_load
 
     if isinstance(value, dict):
         return value
     path = ctx.resolve_path(value)
-    try:
-        return yaml.safe_load(path.read_text()) or {}
-    except OSError as exc:
-        raise InputError(f"cannot read action metadata {path}: {exc}") from exc
+    try:  # the shared bounded reader and loader (regular files, size cap, no alias bombs)
+        return safe_load(read_source(path, "action metadata file")) or {}
     except yaml.YAMLError as exc:
         raise InputError(f"action metadata {path} is not valid YAML: {exc}") from exc
 
