@@ -19,21 +19,23 @@ from __future__ import annotations
 from pipflow.household.lexicon import PHRASES
 
 _RULES = r"""
-start: _sep* item (_sep+ item)* _sep*
+start: _sep* item (_sep+ item | _sep* thengap)* _sep*
 _sep: COMMA | END | @AND | @THEN | @BUT
 
 ?item: change | toggle | put | gap | away | trash | request | ensure | observe | cue
 
-change: _vstate @UP? things via? exception?
+change: _vstate @UP? things @PIECES? via? exception? @HERE?
       | _vstate things @UP via? exception?
       | @V_CLEAN things via? exception?
 _vstate: @V_STATE | @V_OPEN | @V_SHUT | @V_WARM
 via: (@IN | @ON | @WITH | @AT) place
 
-toggle: @V_TOGGLE onoff things
-      | @V_TOGGLE things onoff
-      | @V_SHUT off things
-      | @V_SHUT things off
+toggle: @V_TOGGLE onoff tthings @HERE?
+      | @V_TOGGLE tthings onoff @HERE?
+      | @V_SHUT off tthings
+      | @V_SHUT tthings off
+tthings: tnp ((COMMA | @AND | COMMA @AND) tnp)*
+tnp: sel where? exception?
 onoff: on | off
 on: @ON
 off: @OFF | @OUT
@@ -44,7 +46,8 @@ put: _vput @UP? things source? target? exception?
    | @V_LEAVE things target
 _vput: @V_PUT | @V_THROW
 source: @FROM place | @OUT @OF? place | @OFF @OF? place
-target: _prep place | @SOMEWHERE? bare
+target: _prep place | @SOMEWHERE? bare | _prep placeref
+placeref: @IT
 _prep: @IN | @ON | @TO | @AT | @BACK @IN | @BACK @ON | @BACK @TO
 place: @THE? noun
 bare: noun
@@ -52,6 +55,7 @@ bare: noun
 gap: things target
    | things onoff
    | things @TOO
+thengap: @THEN things -> gap
 
 away: @V_PUT @AWAY things | @V_PUT things @AWAY | @V_PUT things @BACK | @V_PUT @BACK things
     | @V_TIDY @UP? things | @V_TIDY things @UP? | @V_CLEAN @UP things | @V_CLEAN things @UP
@@ -79,7 +83,7 @@ lightcue: @LIGHTCUE
 things: np ((COMMA | @AND | COMMA @AND) np)*
 np: sel exception?
 exception: @EXCEPT things
-sel: quant? @OF? @THE? count? adj* noun rel?
+sel: quant? @OF? @THE? count? adj* noun @DOOR? rel?
    | @EVERYTHING where?
    | @THE @THING where?
    | quant? @OF? @IT

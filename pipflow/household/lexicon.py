@@ -113,11 +113,13 @@ _add("NEEDED", "needed,necessary,required,in use")
 _add("DONOT", "do not,does not,did not,no longer,dont")
 _add("ANYMORE", "anymore,any more,any longer,for now,for the night,tonight,right now")
 _add("NOBODY", "nobody,no one,noone,none of us")
-_add("INTENS", "very,so,really,quite,rather,extremely,pretty,a bit,a little,way too,much too,far too")
+_add("INTENS", "very,so,really,quite,rather,extremely,pretty,a bit,a little,way too,much too,far too,getting")
 _add("TOO", "too,as well")
 _add("CANNOT", "can not,could not,cannot")
 _add("SOMEWHERE", "somewhere,some place,someplace")
-_add("HERE", "here,in here")
+_add("HERE", "here,in here,in the house,in the home,in the flat,in the apartment,around the house,everywhere")
+_add("PIECES", "in half,in two,into pieces,into slices,into cubes,in pieces,in slices,into halves")
+_add("DOOR", "door,doors")
 
 #: category words that name a mass, not one thing: "put away the fruit" means all of it, while
 #: "turn off the lamp" names one lamp (and is asked back when the home has several)
@@ -134,7 +136,8 @@ FILLER = {("please",), ("kindly",), ("just",), ("quickly",), ("now",), ("for", "
           ("can", "you"), ("would", "you"), ("will", "you"), ("i", "need", "you", "to"), ("i", "want", "you", "to"),
           ("we", "need", "you", "to"), ("go", "ahead", "and"), ("go", "and"), ("hey",), ("robots",), ("team",),
           ("thanks",), ("thank", "you"), ("right", "away"), ("let", "us"), ("lets",), ("let", "s"),
-          ("for", "me", "please"), ("me",), ("ok",), ("okay",), ("already",), ("again",)}
+          ("for", "me", "please"), ("me",), ("ok",), ("okay",), ("already",), ("again",),
+          ("can", "someone"), ("could", "someone"), ("someone",), ("somebody",), ("can", "somebody")}
 
 
 def normalize(text: str) -> str:

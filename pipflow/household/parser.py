@@ -87,9 +87,17 @@ def world_phrases(world: dict) -> dict[tuple[str, ...], list[dict]]:
 PUNCT = {".": "END", ";": "END", "!": "END", "?": "END", ":": "END", ",": "COMMA"}
 
 
+#: token classes whose words a typo may be read as: content words only. A function word is short
+#: and close to many words ("fork" is not "for", "house" is not "those"), so it is never guessed.
+CONTENT_CLASSES = {"V_STATE", "V_OPEN", "V_SHUT", "V_CLEAN", "V_WARM", "V_TOGGLE", "V_PUT", "V_THROW", "V_TRASH",
+                   "V_TIDY", "V_LEAVE", "V_MAKE", "ADJ", "ACTIVITY", "LIGHTCUE", "TOGGLED"}
+
+
 def _vocabulary(world_index: dict) -> set[str]:
-    vocab = {w for k in PHRASES for w in k} | {w for k in world_index for w in k} | {w for k in FILLER for w in k}
-    return {w for w in vocab if len(w) >= 3}
+    """Words a misspelt word may be read as: the world's words and the lexicon's content words."""
+    vocab = {w for k, (cls, _) in PHRASES.items() if cls in CONTENT_CLASSES and len(k) == 1 for w in k}
+    vocab |= {w for k in world_index for w in k}
+    return {w for w in vocab if len(w) >= 4}
 
 
 def _meaning(word: str, world_index: dict) -> str:
@@ -291,6 +299,8 @@ class Builder:
             out["all"] = True
             if self._has(quant, "BOTH"):
                 out["both"] = True
+        if "DOOR" in toks:
+            out["door"] = True
         if "EVERYTHING" in toks or "THING" in toks:
             out["everything"] = True
         if "IT" in toks:
@@ -319,6 +329,10 @@ class Builder:
 
     def np(self, node: Tree) -> dict:
         out = self.sel(self._sub(node, "sel"))
+        where = self._sub(node, "where")   # a switch's thing by where it is: "the lamp on the desk"
+        if where is not None:
+            out["from"] = self.place(self._sub(where, "place"))
+            out["words"] = _words(self.tags, node)
         exc = self._sub(node, "exception")
         if exc is not None:
             out["except"] = self.things(self._sub(exc, "things"))
@@ -326,10 +340,12 @@ class Builder:
         return out
 
     def things(self, node: Tree) -> list[dict]:
-        return [self.np(n) for n in self._subs(node, "np")]
+        return [self.np(n) for n in self._subs(node, "np") + self._subs(node, "tnp")]
 
     def target(self, node: Tree) -> dict:
         p = self._sub(node, "place") or self._sub(node, "bare")
+        if p is None:   # "put the apple in it": the place said before
+            return {"words": _words(self.tags, node), "pronoun": True}
         out = {**self.noun(self._sub(p, "noun")), "words": _words(self.tags, node)}
         if any(self._cls(t) == "ON" for t in self._tokens(node)):
             out["prep"] = "on"   # a surface: "on the fridge" is not "in the fridge"
@@ -339,7 +355,7 @@ class Builder:
     def statement(self, node: Tree) -> dict:
         kind = node.data
         words = _words(self.tags, node)
-        th = self._sub(node, "things")
+        th = self._sub(node, "things") or self._sub(node, "tthings")
         things = self.things(th) if th is not None else []
         exc = self._sub(node, "exception")
         if kind == "change":

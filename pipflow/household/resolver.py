@@ -78,14 +78,17 @@ class Resolver:
         self.picked: dict[str, str] = {}          # objects taken with no place yet -> words
         self.observed: list[tuple[list[str], str, str]] = []   # (names, state, words), unused so far
         self.previous: dict | None = None                      # the statement an elided verb repeats
+        self.last_places: list[str] = []                       # the places of the statement before
+        self.last_any: list[str] = []                          # everything the statement before named
+        self.before: list[str] = []
 
     # selectors -------------------------------------------------------------------------
     def _candidates(self, sel: dict, words: str) -> tuple[list[str], bool]:
         """Names a selector's noun may mean, and whether they come from a category (implicit)."""
         if sel.get("pronoun"):
-            if not self.last:
+            if not self.last and not self.last_places:
                 raise TranslationError(f"'{words}': '{sel['words']}' refers to nothing said before it")
-            return list(self.last), False
+            return list(self.last or self.last_places), False
         if sel.get("everything"):
             if "from" not in sel:
                 raise TranslationError(f"'{words}': '{sel['words']}' needs a place (e.g. 'everything on the sofa')")
@@ -104,6 +107,17 @@ class Resolver:
         statement will ask of them (a category keeps the members it applies to)."""
         names, implicit = self._candidates(sel, words)
         what = sel["words"]
+        need = CONDITIONS[cond][2] if cond else prop
+        if sel.get("pronoun") and need and self.last_places and \
+                not any(need in entity(self.world, n)["properties"] for n in names):
+            # "put the apple in the fridge, then close it": the apple cannot be closed, the
+            # place of the sentence before can; the pronoun means what the action applies to
+            places = [p for p in self.last_places if need in entity(self.world, p)["properties"]]
+            if places:
+                self.goal.notes.append(f"'{words}': '{sel['words']}' read as {', '.join(places)}")
+                names = places
+        if sel.get("door") and not all("openable" in entity(self.world, n)["properties"] for n in names):
+            raise TranslationError(f"'{words}': '{what}' has no door in this world")
         if "from" in sel:
             place = self.place_of(sel["from"], words)
             there = [n for n in names if n in self.world["objects"] and self.world["objects"][n]["in"] == place]
@@ -123,7 +137,6 @@ class Resolver:
             if missing:
                 raise TranslationError(f"'{words}': '{ex['words']}' is not one of '{what}'")
             names = [n for n in names if n not in out]
-        need = CONDITIONS[cond][2] if cond else prop
         if implicit and need and "count" not in sel:
             fit = [n for n in names if need in entity(self.world, n)["properties"]]
             if not fit:
@@ -153,6 +166,11 @@ class Resolver:
 
     def place_of(self, place: dict, words: str) -> str:
         """The one place a place phrase names (a category of places with one member counts)."""
+        if place.get("pronoun"):
+            said = [n for n in dict.fromkeys(self.before) if n in self.world["places"]]
+            if len(said) != 1:
+                raise TranslationError(f"'{words}': which place does '{place['words']}' mean?")
+            return said[0]
         names = []
         for r in place["readings"]:
             if r["kind"] == "place":
@@ -177,6 +195,9 @@ class Resolver:
                 return
             if explicit and not old.explicit:
                 self.goal.notes.append(f"{name}: {cond} ('{words}' names it; '{old.words}' meant its kind)")
+            elif explicit and old.explicit and old.words != words:
+                # a sequence: "open the fridge, take out the milk ... and close the fridge"
+                self.goal.notes.append(f"{name} ends {cond}: '{words}' comes after '{old.words}'")
             else:
                 raise TranslationError(f"the command asks for {name} to be both {old.cond} ('{old.words}') "
                                        f"and {cond} ('{words}')")
@@ -262,6 +283,14 @@ class Resolver:
             st = self.repeat(st)
         self.previous = st
         op, words = st["op"], st["words"]
+        self.before = self.last_any + self.last_places   # what "in it" may mean in this statement
+        self.last_any = []
+        self._statement(st, op, words)
+        # a pronoun after this statement may mean its place ("... in the fridge, then close it")
+        self.last_places = [self.place_of(st[k], words) for k in ("to", "via", "from") if isinstance(st.get(k), dict)]
+
+    def _statement(self, st: dict, op: str, words: str) -> None:
+        """One statement's goal conditions (the op's rules in the module docstring)."""
         if op == "change":
             self.change(st, words)
         elif op == "put":
@@ -298,6 +327,7 @@ class Resolver:
     def change(self, st: dict, words: str) -> None:
         cond = st["to"]
         named = self.objects(st["things"], words, cond=cond, exceptions=st.get("except"))
+        self.last_any = [n for n, _ in named]
         for n, _ in named:
             if n in self.picked:   # "pick up the phone and switch it on": the taking was the means
                 self.goal.notes.append(f"'{self.picked.pop(n)}' says no place for {n}: it ends where the plan leaves it")
