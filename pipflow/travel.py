@@ -78,7 +78,7 @@ def _rect_hits_segment(rect: tuple[float, float, float, float], a: Point, b: Poi
     return x0 + _EPS < mx < x1 - _EPS and y0 + _EPS < my < y1 - _EPS
 
 
-def _blocked(ax: np.ndarray, ay: np.ndarray, bx: np.ndarray, by: np.ndarray, x0: np.ndarray,
+def _blocked(ax: Any, ay: Any, bx: np.ndarray, by: np.ndarray, x0: np.ndarray,
              y0: np.ndarray, x1: np.ndarray, y1: np.ndarray) -> np.ndarray:
     """Element-wise: does segment (ax, ay)-(bx, by) pass through the open rectangle (x0, y0, x1, y1)?
     (:func:`_rect_hits_segment` for arrays of pairs.)
@@ -87,16 +87,17 @@ def _blocked(ax: np.ndarray, ay: np.ndarray, bx: np.ndarray, by: np.ndarray, x0:
     length and its midpoint must lie strictly inside (so a segment along an edge or through a
     corner is not blocked)."""
     dx, dy = bx - ax, by - ay
+    ax, ay = np.broadcast_to(ax, dx.shape), np.broadcast_to(ay, dx.shape)
     t0 = np.zeros_like(dx)
     t1 = np.ones_like(dx)
     miss = np.zeros(dx.shape, dtype=bool)
-    for p, q in ((-dx, ax - x0), (dx, x1 - ax), (-dy, ay - y0), (dy, y1 - ay)):
-        parallel = np.abs(p) < 1e-12
-        miss |= parallel & (q <= _EPS)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            t = np.where(parallel, 0.0, q / np.where(parallel, 1.0, p))
-        t0 = np.where(~parallel & (p < 0), np.maximum(t0, t), t0)
-        t1 = np.where(~parallel & (p > 0), np.minimum(t1, t), t1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for p, q in ((-dx, ax - x0), (dx, x1 - ax), (-dy, ay - y0), (dy, y1 - ay)):
+            parallel = np.abs(p) < 1e-12
+            miss |= parallel & (q <= _EPS)
+            t = q / p  # inf or nan where parallel: masked out below
+            np.maximum(t0, t, out=t0, where=~parallel & (p < 0))
+            np.minimum(t1, t, out=t1, where=~parallel & (p > 0))
     tm = (t0 + t1) / 2
     mx, my = ax + dx * tm, ay + dy * tm
     inside = (x0 + _EPS < mx) & (mx < x1 - _EPS) & (y0 + _EPS < my) & (my < y1 - _EPS)
@@ -114,20 +115,26 @@ def _visible_from(a: Point, targets: np.ndarray, rects: np.ndarray, cores: np.nd
     n = len(targets)
     if not len(rects) or not n:
         return np.ones(n, dtype=bool)
+    rx0, ry0, rx1, ry1 = np.ascontiguousarray(rects.T)
+    ax, ay = float(a[0]), float(a[1])
     bx, by = targets[:, 0], targets[:, 1]
-    lo_x, hi_x = np.minimum(a[0], bx)[:, None], np.maximum(a[0], bx)[:, None]
-    lo_y, hi_y = np.minimum(a[1], by)[:, None], np.maximum(a[1], by)[:, None]
-    near = (rects[:, 0] < hi_x) & (lo_x < rects[:, 2]) & (rects[:, 1] < hi_y) & (lo_y < rects[:, 3])
+    lo_x, hi_x = np.minimum(ax, bx)[:, None], np.maximum(ax, bx)[:, None]
+    lo_y, hi_y = np.minimum(ay, by)[:, None], np.maximum(ay, by)[:, None]
+    near = rx0 < hi_x
+    near &= lo_x < rx1
+    near &= ry0 < hi_y
+    near &= lo_y < ry1
     ti, ri = np.nonzero(near)
     if not len(ti):
         return np.ones(n, dtype=bool)
-    r = rects[ri]
-    in_a = (r[:, 0] < a[0]) & (a[0] < r[:, 2]) & (r[:, 1] < a[1]) & (a[1] < r[:, 3])
+    x0, y0, x1, y1 = rx0[ri], ry0[ri], rx1[ri], ry1[ri]
     px, py = bx[ti], by[ti]
-    in_b = (r[:, 0] < px) & (px < r[:, 2]) & (r[:, 1] < py) & (py < r[:, 3])
-    box = np.where((in_a | in_b)[:, None], cores[ri], r)
-    hit = _blocked(np.full(len(ti), a[0]), np.full(len(ti), a[1]), px, py,
-                   box[:, 0], box[:, 1], box[:, 2], box[:, 3])
+    in_a = ((rx0 < ax) & (ax < rx1) & (ry0 < ay) & (ay < ry1))[ri]
+    special = in_a | ((x0 < px) & (px < x1) & (y0 < py) & (py < y1))
+    if special.any():  # an end in a footprint's margin: only that footprint's core blocks
+        k = ri[special]
+        x0[special], y0[special], x1[special], y1[special] = cores[k, 0], cores[k, 1], cores[k, 2], cores[k, 3]
+    hit = _blocked(ax, ay, px, py, x0, y0, x1, y1)
     seen = np.ones(n, dtype=bool)
     seen[ti[hit]] = False
     return seen
