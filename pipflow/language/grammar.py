@@ -170,7 +170,8 @@ goal: there_be items loc                                  -> g_set
     | ("make" | "have") ihead loc? ("equal" "to" | "be" | "equal" | "total") NUM loc? -> g_item_first
     | refill places ("so" that? | "until") ("it" | "they") setv items -> g_place_set
     | refill places "to" items                                -> g_place_set
-    | ("bring" | "take" | "top" "up" | "raise" | "fill" | "get") places "up"? "to" items -> g_place_set
+    | ("bring" | "take" | "top" "up" | "raise" | "fill" | "get" | "lower" | "cut") places ("up" | "down")? "to" items -> g_place_set
+    | places modal? each? ("get" | "come" | "go") ("up" | "down")? "to" items -> g_place_set
     | want places ("to" "be")? "at" items                     -> g_place_set
     | "give" places items                                     -> g_place_set
     | places place_appos modal? setv items                    -> g_place_set
@@ -183,6 +184,7 @@ goal: there_be items loc                                  -> g_set
     | addv items adv? from places adv? to places           -> g_transfer
     | addv items src adv? to places                       -> g_transfer_src
     | addv pitems adv? to places                          -> g_transfer_src
+    | putv pitems loc                                     -> g_transfer_src
     | items src modal? go to places                       -> g_transfer_src
     | places ("gets" | "receives" | "takes" | "should" "get" | "should" "receive") items from places -> g_receive
     | removev items src                                   -> g_remove_src
@@ -247,6 +249,7 @@ pitems: frac of? posplace ihead appos?                     -> pi_frac
       | "half" of? posplace ihead appos?                   -> pi_frac
       | NUM of? posplace ihead appos?                      -> pi_count
       | ("all" of?)? posplace ihead appos?                 -> pi_all
+      | ("all" of?)? "its" ihead                           -> pi_all
 pitem_plain: posplace ihead
 place_appos: "," ("which" | "that") ("has" | "holds" | "already" "has") items now? ","
 appos: ","? ("all" | "both") (NUM "of" "them" | "of" "them") ","?
@@ -317,7 +320,7 @@ state: "broken" | "faulty" | "unavailable" | "offline" | "disabled" | "damaged" 
      | "out-of-service" | "under" "maintenance" | "in" "maintenance" | "off" "limits" | "spare"
      | "not" "working" | "not" "available" | "excluded" | "off" | "parked" | "benched" | "resting"
      | "off" "duty" | "on" "break" | "not" "allowed" | "banned" | "forbidden" | "off" "this"? ("job" | "task" | "one")
-     | "out" "of" "this"? ("job" | "task" | "one" | "work")
+     | "out" "of" "this"? ("job" | "task" | "one" | "work") | "out" "of" "it"
 use: "use" | "used" | "using" | "employ" | "employed" | "assign" | "assigned" | "involve" | "involved"
    | "work" | "help" | "be" "used" | "be" "involved" | "be" "employed" | "be" "assigned" | "participate"
 act: "move" | "moves" | "carry" | "carries" | "touch" | "touches" | "take" | "takes" | "deliver" | "send" | "sends"

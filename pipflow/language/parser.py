@@ -81,6 +81,7 @@ class _Sentence:
         self.last_places: list[str] | None = None
         self.last_source: list[str] | None = None
         self.distributive = False  # "every bay", "each of A and B": a count applies to each
+        self.before_places: list[str] = []  # the places named before the current part
 
     # -- words ------------------------------------------------------------------------------
     def words(self, node: Tree | Token | list) -> str:
@@ -275,6 +276,10 @@ class _Sentence:
             return {**prev, "amount": a, "to": {"names": places}, "words": np["words"]}
         if key == "rest":
             return self._rest(places, np)
+        if key == "all_held" and add and self.before_places and self.before_places != places:
+            # "clear out staging and take everything to outbound": from the place just named
+            return {"op": "transfer", "items": np["items"], "amount": a, "from": {"names": list(self.before_places)},
+                    "to": {"names": places}, "words": np["words"]}
         if np["items"] is None:
             if not self.last_item:
                 raise TranslationError(f"{_quote(np['words'])}: cannot tell which product this count "
@@ -477,7 +482,7 @@ class _Sentence:
                 nps = [np]
             else:
                 source = self.place_list(self.sub(srcs[0], "places")[0])
-            dst = self.place_list(plist[-1]) if plist else []
+            dst = self.loc(locs[0])[0] if locs else self.place_list(plist[-1]) if plist else []
             for np in nps:
                 self.statements.append(self._transfer_statement(np, source, dst, words))
             self.last_source = source
@@ -581,7 +586,13 @@ class _Sentence:
 
     def pitem(self, node: Tree, words: str) -> tuple[dict, list[str]]:
         """A possessive item phrase ("half of bay 1's crates"): its amount and its place."""
-        source = [str(self.toks(self.sub(node, "posplace")[0], "PLACE")[0].value)]
+        pos = self.sub(node, "posplace")
+        if pos:
+            source = [str(self.toks(pos[0], "PLACE")[0].value)]
+        elif self.last_places:
+            source = list(self.last_places)  # "its valves": of the place just named
+        else:
+            raise TranslationError(f"{_quote(words)}: 'its' of which place?")
         head = self.ihead(self.sub(node, "ihead")[0], words)
         self.last_item = [head]
         appos = self.sub(node, "appos")
@@ -872,6 +883,7 @@ class _Sentence:
     # -- parts ------------------------------------------------------------------------------
     def part(self, node: Tree) -> None:
         d = node.data
+        self.before_places = list(self.last_places or [])
         if d == "goal" or d.startswith("g_"):
             self.goal(node if d != "goal" else node.children[0])
         elif d.startswith("t_"):
@@ -914,6 +926,17 @@ class _Sentence:
 
     def finish(self) -> None:
         """Rules with no scope of their own take the sentence's goal (see the module doc)."""
+        # "Empty rack D and put its valves on rack B": what leaves the place goes first, then
+        # the rest of it is emptied (else the move would find the place already empty)
+        for k, st in enumerate(list(self.statements)):
+            if st["op"] != "empty":
+                continue
+            later = [t for t in self.statements[k + 1:] if t["op"] == "transfer"
+                     and set((t.get("from") or {}).get("names") or []) & set(st["places"]["names"])]
+            if later:
+                self.statements.remove(st)
+                at = self.statements.index(later[-1]) + 1
+                self.statements.insert(at, st)
         if not self.bind or not self.statements:
             for r in self.rules:
                 r.pop("open", None)
@@ -929,11 +952,16 @@ class _Sentence:
                 for a in src:
                     for b in dst:
                         moves.append({"from": a, **({"to": b} if b else {})})
-            else:
+            elif s["op"] == "empty":
+                for p in (s.get("places") or {}).get("names", ["*"]):
+                    moves.append({"from": p})
+            elif s["op"] != "keep":
                 for p in (s.get("places") or {}).get("names", ["*"]):
                     moves.append({"to": p})
         products = list(dict.fromkeys(products))
         uniq_moves = [dict(t) for t in dict.fromkeys(tuple(sorted(m.items())) for m in moves)]
+        # "clear out staging and take everything to outbound": one move, staging -> outbound
+        uniq_moves = [m for m in uniq_moves if not any(m != o and m.items() <= o.items() for o in uniq_moves)]
         places = {v for m in uniq_moves for v in m.values()}
         use_product = products[0] if len(products) == 1 and products[0] != "*" else None
         use_place = uniq_moves[0] if (len(uniq_moves) == 1 and "*" not in places) else None
