@@ -120,3 +120,16 @@ def test_workflow_pictures_input(tmp_path):
         run = next(runs.iterdir())
         pngs = sorted(p.name for p in run.rglob("*.png"))
         assert pngs == (["gantt.png", "graph.png", "paths.png"] if drawn else []), pngs
+
+
+def test_picture_policy_by_mode_and_size():
+    from pipflow import pictures
+
+    schedule = {"robots": {f"r{i}": {"legs": [{"subtask": "s1"}] if i < 3 else []} for i in range(500)},
+                "subtasks": [{"id": "s1", "robots": ["r0", "r1", "r2"]}]}
+    assert pictures.size_of("gantt", schedule) == 3  # rows are the robots that work, not the fleet
+    assert pictures.wanted("auto", "gantt", 3) and pictures.wanted(None, "graph", 80)
+    assert not pictures.wanted("auto", "graph", 81) and pictures.wanted("always", "graph", 10_000)
+    assert not pictures.wanted("never", "paths", 1)
+    with pytest.raises(ValueError, match="pictures must be one of"):
+        pictures.wanted("sometimes", "gantt", 1)
