@@ -31,9 +31,10 @@ A bound that makes both the search and the IP sharp: the warehouse's free room n
 more than it (:func:`largest_move`); with one free slot every move carries one unit.
 
 Measured by ``benchmarks/team_plans.py``: the fewest moves (proven) on the paper's ten tasks and
-on all 36 instances of the generated capacity-tight suite, in well under a second each; 20 moves
-on an 8 x 6 x 120 instance where ENHSP finds 21; at 50 x 10 x 2000 no search (the state space is
-far too large): about 370 moves against a cheap bound of 315, in about 2 s.
+on all 36 instances of the generated capacity-tight suite, in well under a second each; on an
+8 x 6 x 120 instance 20 moves, equal to the lower bound, in 0.9 s (ENHSP's gbfs: 21 moves in 43 s
+in an earlier run; no plan within 120 s at load 9-11); at 50 x 10 x 2000 no search (the state
+space is far too large): about 370 moves against a cheap bound of 315, in about 2-6 s.
 
 Which problems: any domain whose single action has the *shape* of a transport move, whatever its
 names: parameters (from, to: one type; item; magnitude), effects ``decrease S(from, item)``,
