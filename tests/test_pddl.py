@@ -63,8 +63,9 @@ def test_syntax_error_located():
     report = debug_problem(text, DOMAIN, world)
     assert not report.ok
     (msg,) = report.messages
-    assert msg.startswith("line ") and "syntax error at" in msg and "Expected" in msg
-    assert "never closed" in msg
+    # the form left open is named where it opened, and the ')' it lacks (issue 17)
+    assert msg.startswith("line 3, column 3: the (:init list opened on line 3, column 3 is never closed")
+    assert "'(= (stock b box) 1' (line 3, column 30)" in msg
 
 
 def test_misspelled_keyword():

@@ -94,25 +94,32 @@ def unclosed_section(text: str) -> str:
     with its innermost unclosed '(' when that is not the section itself."""
     clean = _strip_comments(text)
     stack: list[tuple[int, str]] = []  # (offset of '(', its head token)
+    last_child: dict[int, tuple[int, int]] = {}  # section offset -> (start, end) of its last child form
     for i, ch in enumerate(clean):
         if ch == "(":
             head = _token_at(clean, i + 1).lower()
             if head.startswith(":"):
                 open_section = next(((o, h) for o, h in reversed(stack) if h.startswith(":")), None)
                 if open_section is not None:
-                    return _never_closed(text, open_section, stack, f"the ({head} on line {{l}}, column {{c}} starts "
-                                         f"inside it; close it with ')' before ({head}", i)
+                    return _never_closed(text, open_section, stack, last_child.get(open_section[0]),
+                                         f"the ({head} on line {{l}}, column {{c}} starts inside it; close it "
+                                         f"with ')' before ({head}", i)
             stack.append((i, head))
         elif ch == ")" and stack:
-            stack.pop()
+            start, _ = stack.pop()
+            if stack and stack[-1][1].startswith(":"):
+                last_child[stack[-1][0]] = (start, i)
     open_section = next(((o, h) for o, h in stack if h.startswith(":")), None)
     if open_section is not None:
-        return _never_closed(text, open_section, stack, "the text ends first", None)
+        return _never_closed(text, open_section, stack, last_child.get(open_section[0]), "the text ends first", None)
     return ""
 
 
-def _never_closed(text: str, section: tuple[int, str], stack: list[tuple[int, str]], why: str,
-                  at: int | None) -> str:
+def _never_closed(text: str, section: tuple[int, str], stack: list[tuple[int, str]],
+                  child: tuple[int, int] | None, why: str, at: int | None) -> str:
+    """The message of :func:`unclosed_section`: the section and where it opened, why it is
+    known to be open, and the likely missing ')': the innermost '(' still open in it, or its last
+    form when that form runs over several lines (it took the section's ')' for its own)."""
     offset, head = section
     line, col = _line_col(text, offset)
     if at is not None:
@@ -124,6 +131,12 @@ def _never_closed(text: str, section: tuple[int, str], stack: list[tuple[int, st
         il, ic = _line_col(text, inner)
         extra = (f" The innermost '(' left open in it is at line {il}, column {ic}: "
                  f"{text.splitlines()[il - 1].strip()!r}.")
+    elif child is not None:
+        (cl, cc), (el, _) = _line_col(text, child[0]), _line_col(text, child[1])
+        if el > cl:
+            first = text[child[0]:].splitlines()[0].strip()
+            extra = (f" Its last form, {first!r} (line {cl}, column {cc}), runs on to line {el}: "
+                     "a ')' is probably missing in it.")
     return (f"line {line}, column {col}: the ({head} {_SECTION_WORD.get(head, 'section')} opened on line {line}, "
             f"column {col} is never closed: {why}.{extra}")
 
