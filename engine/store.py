@@ -138,8 +138,9 @@ def _short_cause(err: Exception) -> str:
     return "not UTF-8 text"
 
 
-class DamagedRecord(UserError):
-    """A record file cannot be read (edited by hand, truncated, not JSON)."""
+class DamagedRecord(UserError, ValueError):
+    """A record file cannot be read (edited by hand, truncated, not JSON). Also a ValueError, as
+    ``json.loads`` raised before: callers that treat a damaged file as missing keep doing so."""
 
 
 def utc_now() -> str:
