@@ -182,7 +182,7 @@ def _recorded_inputs(wf: Workflow, store: RunStore) -> dict:
 
 def _completed_nodes(wf: Workflow, store: RunStore) -> dict[str, dict]:
     """Outputs of nodes that finished (a loop counts only if the loop itself finished)."""
-    finished = {e["step"] for e in store.events() if e.get("event") in ("end", "skip") and "iteration" not in e}
+    finished = {e.get("step") for e in store.events() if e.get("event") in ("end", "skip") and "iteration" not in e}
     completed: dict[str, dict] = {}
     for node in wf.nodes:
         if node.id not in finished:
