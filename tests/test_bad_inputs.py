@@ -307,6 +307,7 @@ INPUTS: dict[str, tuple[list[str], list[str]]] = {
     "jobs not a number": (["--jobs", "many"], ["--jobs", "not a whole number"]),
     "runs-dir is a file": (["--runs-dir", "afile"], ["--runs-dir afile", "a file, not a folder"]),
     "runs-dir under /proc": (["--runs-dir", "/proc/pipflow-runs"], ["--runs-dir /proc/pipflow-runs", "cannot write a run record"]),
+    "runs-dir not writable": (["--runs-dir", "/sys/pipflow-runs"], ["--runs-dir /sys/pipflow-runs", "cannot write a run record"]),
     "runs-dir below a file": (["--runs-dir", "/dev/null/runs"], ["--runs-dir /dev/null/runs", "cannot write a run record"]),
 }
 
@@ -589,6 +590,20 @@ def test_cache_that_cannot_be_written_is_a_warning(ws, capsys, monkeypatch):
         code, out, err = cli(capsys, "run", ws / "wf.yaml")
         assert code == 0, err
         assert "warn" in err and "cache" in err and "warehouse-4" in out
+
+
+def test_runs_dir_that_refuses_writes(ws, capsys, monkeypatch):
+    """An unwritable folder (as a user without the rights sees it; the tests may run as root)."""
+    real_mkdir = Path.mkdir
+
+    def refuse(self, *args, **kwargs):
+        if "refused-runs" in str(self):
+            raise PermissionError(13, "Permission denied")
+        return real_mkdir(self, *args, **kwargs)
+
+    monkeypatch.setattr(Path, "mkdir", refuse)
+    code, _, err = cli(capsys, "run", ws / "good.yaml", "--runs-dir", ws / "refused-runs")
+    assert code == 2 and "refused-runs" in err and "Permission denied" in err
 
 
 def test_cache_folder_with_user_files_gets_no_entries(ws, capsys, monkeypatch):
