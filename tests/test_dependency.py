@@ -261,3 +261,22 @@ def test_deordered_schedule_runs_in_pybullet_and_is_shorter(task_id):
         assert sim["goal_met"] and sim["exe"] == 1.0 and not sim["failures"], sim["failures"]
         makespan[mode] = schedule["makespan"]
     assert makespan["deorder"] < 0.8 * makespan["exact"]
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_deorder_is_locally_minimal(seed):
+    """No single edge of the deordered graph can go: without it, the stock/room envelope of some
+    precondition fails (the greedy pass plus the relaxation pass leave no removable edge)."""
+    from pipflow.deorder import _Envelope, envelopes_hold, numeric_view
+    from pipflow.dependency import _parse, ground_plan
+
+    plan = _random_plan(random.Random(100 + seed), 8)
+    graph = build_graph(DOMAIN, PROBLEM, plan, META, "deorder")
+    problem = _parse(DOMAIN, PROBLEM)
+    views = numeric_view(problem, ground_plan(problem, plan))
+    env = _Envelope(problem, views)
+    index = {n["id"]: n["index"] for n in graph["nodes"]}
+    edges = [(index[u], index[v]) for u, v in graph["edges"]]
+    assert envelopes_hold(env, len(plan), edges)
+    for e in edges:
+        assert not envelopes_hold(env, len(plan), [x for x in edges if x != e]), f"edge {e} is not needed"
