@@ -1,4 +1,4 @@
-"""Tests of the offline translator (pipflow.language.translator and its helper modules).
+"""Tests of the offline reading of commands (pipflow.language.understand: parser, resolver, names, numbers).
 
 The paper's ten commands must give the gold exactly; the rest runs on worlds made up here, with
 other names and more robots, so nothing can lean on the benchmark's names.
