@@ -105,16 +105,19 @@ class BoundedComposer(yaml.composer.Composer):
                 self._grow(size, event.start_mark)
             return super().compose_node(parent, index)
         self._depth += 1
+        event = self.peek_event()
         if self._depth > MAX_DEPTH:
-            raise yaml.composer.ComposerError(None, None, f"nested deeper than {MAX_DEPTH} levels",
-                                              self.peek_event().start_mark)
+            raise yaml.composer.ComposerError(None, None, f"nested deeper than {MAX_DEPTH} levels", event.start_mark)
         before = self._expanded
         try:
             node = super().compose_node(parent, index)
         finally:
             self._depth -= 1
-        self._grow(1, node.start_mark)
-        self._sizes[id(node)] = self._expanded - before
+        self._expanded += 1
+        if event.anchor is not None:  # only what an alias can name needs its size kept
+            self._sizes[id(node)] = self._expanded - before
+        if self._expanded > MAX_NODES:
+            self._grow(0, node.start_mark)
         return node
 
     def _grow(self, size: int, mark) -> None:
