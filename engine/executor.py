@@ -278,7 +278,8 @@ class Executor:
             ctx = StepContext(spec.id, artifact_dir, spec.base_dir,
                               log=lambda m: self.store.event("log", spec.id, message=m),
                               iteration=iteration[1] if iteration else None,
-                              use_cache=self.options.use_cache)
+                              use_cache=self.options.use_cache,
+                              warn=lambda m: self.store.event("warning", spec.id, message=m))
             try:
                 outputs = self._call(spec, step, ctx, args)
                 if ctx.metrics:

@@ -103,6 +103,7 @@ class StepContext:
         log: Callable[[str], None] | None = None,
         iteration: int | None = None,
         use_cache: bool = True,
+        warn: Callable[[str], None] | None = None,
     ):
         self.step_id = step_id
         self.artifact_dir = artifact_dir
@@ -110,7 +111,13 @@ class StepContext:
         self.iteration = iteration
         self.use_cache = use_cache  # False under --no-cache: steps with caches of their own obey it too
         self._log = log or (lambda message: None)
+        self._warn = warn or self._log
         self.metrics: dict[str, Any] = {}
+
+    def warn(self, message: str) -> None:
+        """Record a warning: something the user should know although the step goes on (shown
+        without ``-v``), e.g. a cache of the step's own that cannot be written."""
+        self._warn(message)
 
     def log(self, message: str) -> None:
         """Record a line in the run's event log (and show it with ``-v``)."""

@@ -75,7 +75,7 @@ def llm_problem(ctx: StepContext, command: str, world: dict, domain: str,
         max_tokens=max_tokens, timeout=timeout, retries=retries, deadline=deadline, api_base=api_base,
         feedback=feedback, grounded=grounded,
         cache_dir=ctx.resolve_path(cache_dir) if cache_dir else None, use_cache=cache and ctx.use_cache,
-        base_dir=ctx.base_dir, save=ctx.write_artifact, log=ctx.log, previous=previous)
+        base_dir=ctx.base_dir, save=ctx.write_artifact, log=lambda m: _log(ctx, m), previous=previous)
     ctx.metrics["llm"] = out["usage"]
     text = out.get("response") or ""
     if len(text) > RESPONSE_OUTPUT_CHARS:  # the whole answer is kept once, as artifact response.txt
@@ -128,3 +128,12 @@ def llm_check(ctx: StepContext, command: str, world: dict, goal: dict | None = N
                 f"{opinion.basis}: {line}" for line in opinion.disagreement] if ok else []
     return {"ok": ok, "messages": [] if ok else opinion.messages, "refusal": opinion.refusal,
             "disagreement": accepted, "basis": opinion.basis}
+
+
+def _log(ctx: StepContext, message: str) -> None:
+    """The generator's log lines; those it marks ``warning:`` (an unwritable response cache)
+    become warnings of the run, which the user sees without ``-v``."""
+    if message.startswith("warning: "):
+        ctx.warn(message[len("warning: "):])
+    else:
+        ctx.log(message)

@@ -351,8 +351,13 @@ def test_an_unwritable_cache_is_a_warning_and_the_answer_stays_in_the_record(tmp
     out, art, logs = run_step(tmp_path, "ro", server.api_base, cache_dir=str(blocker / "cache"))
     assert out["problem"] and len(server.requests) == 1
     assert (art / "response.txt").read_text() == good_answer()
-    assert any(line.startswith("warning: llm: the response cache") for line in logs), logs
+    assert any(line.startswith("llm: the response cache") and "not writable" in line for line in logs), logs
     assert blocker.read_text() == "not a folder"
+    proc = pipflow(tmp_path, "-i", f"api_base={server.api_base}", "-i", f"cache_dir={blocker / 'cache'}")
+    assert proc.returncode == 0, proc.stderr
+    assert "warn" in proc.stderr and "not writable" in proc.stderr  # shown without -v
+    events = (record(tmp_path) / "events.jsonl").read_text()
+    assert '"warning"' in events and "not writable" in events
 
 
 def test_a_long_answer_is_stored_once_in_the_run_record(tmp_path, serve, monkeypatch):
