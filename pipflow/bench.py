@@ -91,6 +91,11 @@ def variants(matrix: dict[str, list[str]]) -> list[tuple[str, dict[str, str]]]:
     for combo in itertools.product(*(matrix[k] for k in keys)):
         values = dict(zip(keys, combo))
         out.append((",".join(f"{k}={Path(v).stem if k == 'workflow' else v}" for k, v in values.items()), values))
+    names = [name for name, _ in out]
+    clash = sorted({n for n in names if names.count(n) > 1})
+    if clash:  # their rows would share one file and one column of the table
+        raise UserError(f"--matrix: two variants would both be named {clash[0]!r} (workflow files with the "
+                        "same name, or a value given twice); rename one file or drop the repeated value")
     return out
 
 

@@ -303,3 +303,13 @@ def test_understanding_compares_bounds_as_ranges_and_rules_as_sets():
         assert understand(spec, {}, "failed", "TranslationError")["understood"] is True
         executed = understand(spec, {"goal": {"s1": {"p1": 1}}}, "succeeded", None)
         assert executed["understood"] is False and executed["misread"] is True
+
+
+def test_matrix_variants_with_one_name_are_refused():
+    from pipflow.bench import variants
+
+    with pytest.raises(UserError, match="both be named 'workflow=warehouse'"):
+        variants({"workflow": ["a/warehouse.yaml", "b/warehouse.yaml"]})
+    with pytest.raises(UserError, match="both be named 'rounds=2'"):
+        variants({"rounds": ["2", "2"]})
+    assert [n for n, _ in variants({"rounds": ["1", "2"]})] == ["rounds=1", "rounds=2"]
