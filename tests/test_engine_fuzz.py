@@ -159,3 +159,21 @@ def test_workflow_with_values_of_the_wrong_type_validates_or_lists_problems(tmp_
     path.write_text(yaml.safe_dump(data))
     workflow, diagnostics = check_workflow(path)  # never raises
     assert workflow is not None or diagnostics
+
+
+# --- inputs files, through the CLI ----------------------------------------------------------------
+INPUTS_SEED = b"command: shelf4 stores a dozen product3\nrounds: 4\nseed: 7\ngrounded: false\nspeed: 1.5\n"
+
+
+@FUZZ
+@given(st.one_of(mutated(INPUTS_SEED), st.binary(max_size=200)))
+def test_inputs_file_is_used_or_refused_with_exit_2(tmp_path_factory, capsys, data):
+    from pipflow.engine.cli import main
+
+    folder = tmp_path_factory.mktemp("inputs")
+    (folder / "inputs.yaml").write_bytes(data)
+    code = main(["run", "warehouse", "--inputs", str(folder / "inputs.yaml"), "--dry-run"])
+    out, err = capsys.readouterr()
+    assert code in (0, 2) and "Traceback" not in out + err
+    if code == 2:
+        assert err.strip()
