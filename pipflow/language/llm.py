@@ -180,7 +180,7 @@ def complete(
             from pipflow.executors import llm_slot
 
             with llm_slot(model):
-                response = _within(litellm.completion, kwargs, kwargs["timeout"] + GRACE)
+                response = _within(litellm.completion, dict(kwargs), kwargs["timeout"] + GRACE)
             break
         except Exception as exc:  # litellm maps every provider's error onto its own classes
             kind = "Timeout" if isinstance(exc, RequestOverrun) else type(exc).__name__
