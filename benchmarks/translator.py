@@ -173,13 +173,15 @@ def run_file(tasks_path: Path) -> list[Outcome]:
     return out
 
 
-def table(outcomes: list[Outcome]) -> str:
-    """Per construction and in total: n and the count of each verdict, understood as a share."""
+def table(outcomes: list[Outcome], by_file: bool = False) -> str:
+    """Per construction (or per task file) and in total: n and the count of each verdict,
+    understood as a share."""
     by: dict[str, Counter] = defaultdict(Counter)
     for o in outcomes:
-        by[o.construction][o.verdict] += 1
-    width = max([len("construction"), len("total")] + [len(c) for c in by])
-    head = f"{'construction':<{width}}  {'n':>4}  " + "  ".join(f"{v:>10}" for v in VERDICTS) + "  understood%"
+        by[o.task_id.split("/")[0] if by_file else o.construction][o.verdict] += 1
+    title = "task file" if by_file else "construction"
+    width = max([len(title), len("total")] + [len(c) for c in by])
+    head = f"{title:<{width}}  {'n':>4}  " + "  ".join(f"{v:>10}" for v in VERDICTS) + "  understood%"
     lines = [head, "-" * len(head)]
     for name in sorted(by):
         lines.append(_row(name, by[name], width))
@@ -212,6 +214,8 @@ def main(argv: list[str]) -> int:
             print(f"{o.verdict:<10} {o.task_id} [{o.construction}]: {o.detail}")
     print()
     print(table(outcomes))
+    print()
+    print(table(outcomes, by_file=True))
     n = len(outcomes)
     load1, load5, _ = os.getloadavg()
     if n:
