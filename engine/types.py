@@ -1,6 +1,7 @@
 """Declared value types of inputs and outputs, and how values are checked and coerced."""
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import yaml
@@ -42,7 +43,12 @@ def coerce_text(text: str, type_name: str) -> Any:
     except yaml.YAMLError as err:
         raise ValueError(f"{text[:80]!r} is not a YAML value ({getattr(err, 'problem', None) or err})") from None
     if type_name == "number" and isinstance(value, int) and not isinstance(value, bool):
-        return float(value)
+        try:
+            return float(value)
+        except OverflowError:
+            raise ValueError(f"{text[:80]!r} is too large a number") from None
+    if type_name == "number" and isinstance(value, float) and not math.isfinite(value):
+        raise ValueError(f"{text!r} is not a finite number")
     if not type_matches(value, type_name):
         raise ValueError(f"{text!r} is not {'an' if type_name[0] in 'aeiou' else 'a'} {type_name}")
     return value

@@ -32,6 +32,7 @@ inputs:
   text: {type: string, default: hello}
   n: {type: integer, default: 2}
   mode: {type: string, default: a, choices: [a, b]}
+  speed: {type: number, default: 1.0}
 steps:
   - id: a
     uses: core.value
@@ -301,6 +302,9 @@ INPUTS: dict[str, tuple[list[str], list[str]]] = {
     "integer from a float": (["-i", "n=2.5"], ["input 'n'", "not an integer"]),
     "integer from broken YAML": (["-i", "n=[1,"], ["input 'n'", "not a YAML value"]),
     "integer from an alias bomb": (["-i", "n=" + _bomb(4).replace("\n", " ")], ["input 'n'"]),
+    "number that is not a number": (["-i", "speed=.nan"], ["input 'speed'", "not a finite number"]),
+    "infinite number": (["-i", "speed=-.inf"], ["input 'speed'", "not a finite number"]),
+    "number beyond floats": (["-i", "speed=1" + "0" * 400], ["input 'speed'", "too large a number"]),
     "not one of the choices": (["-i", "mode=c"], ["input 'mode'", "one of a, b"]),
     "jobs zero": (["--jobs", "0"], ["--jobs", "1 or more"]),
     "jobs negative": (["--jobs", "-5"], ["--jobs", "1 or more"]),
