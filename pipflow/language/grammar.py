@@ -45,6 +45,8 @@ np: NUM of? ihead                          -> np_count
   | NUM ITEMWORD "of" ITEM                 -> np_count
   | NUM more of? ihead                     -> np_more
   | NUM of? ihead more                     -> np_more
+  | NUM more of? ihead "than" ("it" | "they") ("does" | "do" | "has" | "have" | "holds" | "hold") now? -> np_more
+  | NUM more                               -> np_more_bare
   | NUM fewer of? ihead                    -> np_fewer
   | NUM of? ihead fewer                    -> np_fewer
   | ("a" | "an") ihead                     -> np_one
@@ -75,6 +77,7 @@ np: NUM of? ihead                          -> np_count
   | "twice" "as" "many" ihead              -> np_twice
   | "twice" "as" "many" ihead "as" ("it" | "they") ("has" | "have" | "holds" | "hold") now? -> np_twice
   | NUM "times" "as" "many" ihead ("as" ("it" | "they") ("has" | "have" | "holds" | "hold") now?)? -> np_ntimes
+  | ("twice" | NUM "times") "as" "many" ihead "as" PLACE ("has" | "holds" | "have" | "contains") now? -> np_times_as_many
   | lower NUM more of? ihead               -> np_atleast_more
   | "all" NUM of? ihead                    -> np_all_n
   | ("double" | "triple" | "quadruple") ihead -> np_times
@@ -126,6 +129,7 @@ be: "be" | "is" | "are" | "become" | "becomes" | "end" "up" "with" | "get"
 setv: "has" | "have" | "hold" | "holds" | "store" | "stores" | "stock" | "stocks" | "contain"
     | "contains" | "get" | "gets" | "keep" | "keeps" | "carry" | "carries" | "house" | "houses"
     | "need" | "needs" | "receive" | "receives" | "end" "up" "with" | "be" "stocked" "with"
+    | "ends" "up" "with" | "ends" "with" | "end" "up" "holding" | "ends" "up" "holding"
     | "be" "filled" "with" | "be" "loaded" "with" | "hold" "onto" | "be" "holding" | "is" "holding"
     | "end" "with" | "want" | "wants" | "be" "left" "with" | "be" "at" | "is" "at" | "are" "at"
 putv: "put" | "place" | "store" | "stock" | "set" | "leave" | "stack" | "load" | "get" | "keep"
@@ -134,12 +138,13 @@ addv: "add" | "bring" | "deliver" | "send" | "ship" | "move" | "transfer" | "car
     | "relocate" | "take" | "haul" | "bring" "over" | "move" "over" | "send" "over"
     | "supply" | "drop" "off" | "get" | "push"
 removev: "remove" | "take" | "unload" | "pull" | "withdraw" | "clear" | "get" | "move"
+       | "get" "rid" "of" | "dispose" "of" | "throw" "out" | "take" "away"
 splitv: "split" | "divide" | "distribute" | "share" | "spread" | "spread" "out" | "share" "out"
 among: "between" | "among" | "amongst" | "across" | "over"
 even: "evenly" | "equally" | "fairly" | "in" "equal" ("parts" | "shares") | ","? "same" "amount" "each"
     | ","? "same" "number" "each" | ","? "equal" ("amounts" | "shares" | "parts")
 want: ("i" | "we") ("want" | "would" "like" | "like" | "need" | "wish") | "id" "like" | "wed" "like"
-    | "give"
+    | "give" | "make"
     | "make" "it" "so" that? | "make" "sure" that? | "ensure" that? | "let" | "have" | "get"
     | "i" "want" "it" "so" that?
 that: "that"
@@ -156,7 +161,7 @@ goal: there_be items loc                                  -> g_set
     | there_be items loc "and"? "nothing" "else"          -> g_set_only
     | items modal? stay? loc                              -> g_set
     | loc ","? there_be? items                            -> g_loc_set
-    | both? places modal? each? setv each? items           -> g_place_set
+    | both? places modal? each? setv each? items left?     -> g_place_set
     | both? places modal? "each" be? items                  -> g_place_set
     | places ":" items                                     -> g_place_set
     | places modal? setv items "respectively"               -> g_place_set_resp
@@ -185,6 +190,11 @@ goal: there_be items loc                                  -> g_set
     | addv items src adv? to places                       -> g_transfer_src
     | addv pitems adv? to places                          -> g_transfer_src
     | putv pitems loc                                     -> g_transfer_src
+    | putv items from places loc                           -> g_transfer_src
+    | items ("to" | "into" | "onto") places from places     -> g_transfer
+    | emptyv places ("into" | "onto" | "to") places         -> g_empty_into
+    | places modal? ("not" | "never") ("exceed" | "go" "above" | "go" "over" | "rise" "above") NUM of? ihead -> g_ceiling
+    | places ("shouldnt" | "mustnt" | "cant" | "cannot") ("exceed" | "go" "above" | "go" "over") NUM of? ihead -> g_ceiling
     | items src modal? go to places                       -> g_transfer_src
     | places ("gets" | "receives" | "takes" | "should" "get" | "should" "receive") items from places -> g_receive
     | removev items src                                   -> g_remove_src
@@ -256,6 +266,7 @@ appos: ","? ("all" | "both") (NUM "of" "them" | "of" "them") ","?
 swapwhat: ihead (lsep ihead)* | "everything" ("they" ("hold" | "have"))? | "contents" | "loads" | "stock" | "places" | "goods" | "items"
 stay: be | "sit" | "stay" | "lie" | "go" | "be" "placed" | "be" "stored" | "belong" | "end" "up"
 both: "both"
+left: "left" | "remaining" | "left" "over" | "in" "total" | "total" | "in" "all"
 only: "only"
 equal: "equal" "to" | "at"
 refill: "restock" | "refill" | "replenish" | "top" "up" | "supply"
@@ -272,7 +283,7 @@ except_what: "ones" | "those" | "them" | "what" "is" | "any" | "what" "sits" | "
 // ---------------------------------------------------------------- ellipsis tails
 tail: places ("too" | "as" "well" | "also")                 -> t_too
     | "so" ("does" | "do" | "should" | "must" | "will") places -> t_too
-    | places items                                       -> t_gap
+    | places "with"? items                               -> t_gap
     | "rest" rest_of? to places                           -> t_rest
     | "not" ihead (lsep ihead)*                           -> t_not_items
     | ("also" | "same" "for" | "same" "thing" "for") places   -> t_too
@@ -345,6 +356,7 @@ rwhere: from places                                    -> rw_from
       | "at" "all"                                         -> rw_all
       | "whatsoever"                                       -> rw_all
       | "ever"                                             -> rw_all
+      | "for" ("anything" | "everything" | "any" ("job" | "task" | "work") | "this" ("job" | "task")) -> rw_all
 rscope: robj? rwhere*
 
 rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
@@ -364,7 +376,7 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | ("keep" | "leave") robots state                        -> rule_state
     | ("keep" | "leave") robots "out" "of" "this" "task"?     -> rule_state
     | ("dont" | "do" "not" | "never" | "avoid") ("use" | "using" | "involve" | "employ" | "assign") robots rscope -> rule_never
-    | ("dont" | "do" "not" | "never") "let" robots act rscope -> rule_never
+    | ("dont" | "do" "not" | "never") "let" robots act? rscope -> rule_never
     | ("exclude" | "skip" | "leave" "out" | "disable" | "ignore" | "bench" | "rest") robots rscope -> rule_never
     | "without" ("using" | "help" "of" | "help" "from")? robots rscope -> rule_never
     | "not" ("with" | "by" | "using") robots rscope          -> rule_never

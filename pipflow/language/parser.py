@@ -131,6 +131,11 @@ class _Sentence:
                 self.last_item = sel["names"]
             return {"items": sel, "amount": amount, "words": words}
 
+        if kind == "np_more_bare":
+            return {"items": None, "amount": {"more": nums[0]}, "words": words}
+        if kind == "np_times_as_many":
+            place = next(str(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "PLACE"))
+            return out({"as_many_as": place, "times": nums[0] if nums else 2})
         if kind == "np_bare":
             return {"items": None, "amount": {"count": nums[0]}, "words": words}
         if kind == "np_count":
@@ -271,9 +276,10 @@ class _Sentence:
         a = np["amount"]
         key = next(iter(a))
         prev = self.statements[-1] if self.statements else None
-        if np["items"] is None and prev is not None and prev["op"] == "transfer" and key == "count":
-            # "Move 2 totes from inbound to outbound and 1 to quarantine": same item, same source
-            return {**prev, "amount": a, "to": {"names": places}, "words": np["words"]}
+        if np["items"] is None and prev is not None and prev["op"] == "transfer" and key in ("count", "more") \
+                and prev.get("to"):
+            # "Move 2 totes from inbound to outbound and 1 (more) to quarantine": same item, same source
+            return {**prev, "amount": {"count": a[key]}, "to": {"names": places}, "words": np["words"]}
         if key == "rest":
             return self._rest(places, np)
         if key == "all_held" and add and self.before_places and self.before_places != places:
@@ -480,8 +486,10 @@ class _Sentence:
             if pit:
                 np, source = self.pitem(pit[0], words)
                 nps = [np]
-            else:
+            elif srcs:
                 source = self.place_list(self.sub(srcs[0], "places")[0])
+            else:  # "put the 6 springs from rack C on rack E"
+                source = self.place_list(plist[0])
             dst = self.loc(locs[0])[0] if locs else self.place_list(plist[-1]) if plist else []
             for np in nps:
                 self.statements.append(self._transfer_statement(np, source, dst, words))
@@ -536,6 +544,17 @@ class _Sentence:
                 amount = {"fewer": int(self.toks(node, "NUM")[-1].value)}
             self.statements.append(self._goal_statement(places, {"items": {"names": [head]}, "amount": amount,
                                                                   "words": words}, False))
+            return
+        if kind == "g_ceiling":
+            places = self.place_list(plist[0])
+            head = self.ihead(self.sub(node, "ihead")[0], words)
+            n = int(self.toks(node, "NUM")[0].value)
+            self.put(places, "each", [{"items": {"names": [head]}, "amount": {"at_most": n}, "words": words}], words)
+            return
+        if kind == "g_empty_into":
+            source, dst = self.place_list(plist[0]), self.place_list(plist[1])
+            self.statements.append(self._transfer_statement(
+                {"items": {"all": True, "except": []}, "amount": {"all_held": True}, "words": words}, source, dst, words))
             return
         if kind == "g_floor":
             places = self.place_list(plist[0])
@@ -680,7 +699,8 @@ class _Sentence:
                     src = names
             elif isinstance(c, Tree) and c.data == "from":
                 prev = "from"
-            elif isinstance(c, Tree) and c.data == "to":
+            elif (isinstance(c, Tree) and c.data == "to") or (
+                    isinstance(c, Token) and str(c.value).lower() in ("to", "into", "onto")):
                 prev = "to"
             elif isinstance(c, Tree) and c.data == "except_places":
                 exclude = self.place_list(self.sub(c, "places")[0])

@@ -144,8 +144,10 @@ def _set(st: _State, s: dict) -> None:
             elif "as_many_as" in a:
                 other = a["as_many_as"]
                 st.check_names([other], [], words)
-                n = stock(st.world, other, i)
-                st.put(p, i, n, f"as many as {other} has now ({n})", words, True)
+                k = int(a.get("times", 1))
+                n = stock(st.world, other, i) * k
+                shown = f"{k} times " if k != 1 else ""
+                st.put(p, i, n, f"{shown}as many as {other} has now ({n})", words, True)
             elif a.get("rest"):
                 raise TranslationError(f"'{words}': 'the rest' of what? say where it comes from")
             else:
