@@ -4,6 +4,7 @@ and leave the record complete whatever happens (success, step failure, refusal, 
 from __future__ import annotations
 
 import difflib
+import math
 import os
 import time
 from dataclasses import dataclass, field
@@ -93,6 +94,8 @@ def resolve_inputs(wf: Workflow, given: dict[str, Any], from_text: bool = False,
             value = str((base / Path(value).expanduser()).resolve())
         if not type_matches(value, spec.type):
             raise InputError(f"input {name!r} must be {spec.type}, got {value!r}")
+        if isinstance(value, float) and not math.isfinite(value):  # .nan / .inf in an inputs file
+            raise InputError(f"input {name!r} must be a finite number, got {value!r}")
         if spec.choices and value not in spec.choices:
             raise InputError(f"input {name!r} must be one of {', '.join(map(str, spec.choices))}, got {value!r}")
         values[name] = value

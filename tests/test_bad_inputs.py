@@ -337,6 +337,7 @@ INPUT_FILES: dict[str, tuple[bytes, list[str]]] = {
     "unknown key": (b"txt: hi\n", ["unknown input 'txt'"]),
     "wrong type": (b"n: [1, 2]\n", ["input 'n' must be integer"]),
     "duplicate key": (b"text: a\ntext: b\n", ["inputs.yaml:2:1", "duplicate key 'text'"]),
+    "not a number": (b"speed: .nan\n", ["input 'speed'", "finite number"]),
 }
 
 
