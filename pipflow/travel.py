@@ -37,7 +37,6 @@ import json
 import math
 import threading
 from collections import OrderedDict
-from pathlib import Path
 from typing import Any, Sequence, Union
 
 import numpy as np
@@ -304,9 +303,7 @@ class TravelMap:
     >>> tm.distance("robot0", "shelf3"), tm.path("shelf1", [20, 2])   # doctest: +SKIP
     """
 
-    def __init__(self, world: dict, inflate: float = 0.3, cache_dir: str | Path | None = None):
-        """``cache_dir`` is accepted for older callers and ignored: computing what a run asks is
-        faster than reading the old all-pairs table from disk."""
+    def __init__(self, world: dict, inflate: float = 0.3):
         self.world = world
         self.inflate = float(inflate)
         floor = world.get("floor") or {}
