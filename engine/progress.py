@@ -76,8 +76,10 @@ class LiveProgress:
     def __call__(self, event: dict) -> None:
         kind, step = event.get("event"), event.get("step")
         if kind == "warning":
-            self.live.console.print(f"[yellow]warning[/] {step}: {event.get('message')}", markup=True,
-                                    highlight=False)
+            from rich.markup import escape
+
+            self.live.console.print(f"[yellow]warning[/] {escape(str(step))}: {escape(str(event.get('message')))}",
+                                    markup=True, highlight=False)
         if step not in self.rows:
             return
         with self._lock:
