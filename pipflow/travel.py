@@ -207,27 +207,29 @@ class _Geometry:
 
     def graph(self) -> Any:
         """The visibility graph as a symmetric sparse matrix of segment lengths (built once)."""
+        with self.lock:
+            if self._graph is None:
+                self._graph = self._build_graph()
+            return self._graph
+
+    def _build_graph(self) -> Any:
         from scipy.sparse import csr_matrix  # heavy: only runs that plan a route pay for it
 
-        if self._graph is None:
-            rows, cols = [], []
-            k = len(self.nodes)
-            for i in range(k - 1):
-                a = (self.nodes[i, 0], self.nodes[i, 1])
-                later = np.arange(i + 1, k)
-                # an edge can be on a shortest path only if it is tangent at both of its ends
-                later = later[self._tangent(self.nodes[i], later)
-                              & self._tangent(self.nodes[later], np.full(len(later), i))]
-                seen = later[_visible_from(a, self.nodes[later], self.rects, self.cores)]
-                rows.append(np.full(len(seen), i))
-                cols.append(seen)
-            r = np.concatenate(rows) if rows else np.zeros(0, dtype=int)
-            c = np.concatenate(cols) if cols else np.zeros(0, dtype=int)
-            w = np.hypot(*(self.nodes[r] - self.nodes[c]).T)
-            k = len(self.nodes)
-            self._graph = csr_matrix((np.concatenate([w, w]), (np.concatenate([r, c]), np.concatenate([c, r]))),
-                                     shape=(k, k))
-        return self._graph
+        rows, cols = [], []
+        k = len(self.nodes)
+        for i in range(k - 1):
+            a = (self.nodes[i, 0], self.nodes[i, 1])
+            later = np.arange(i + 1, k)
+            # an edge can be on a shortest path only if it is tangent at both of its ends
+            later = later[self._tangent(self.nodes[i], later)
+                          & self._tangent(self.nodes[later], np.full(len(later), i))]
+            seen = later[_visible_from(a, self.nodes[later], self.rects, self.cores)]
+            rows.append(np.full(len(seen), i))
+            cols.append(seen)
+        r = np.concatenate(rows) if rows else np.zeros(0, dtype=int)
+        c = np.concatenate(cols) if cols else np.zeros(0, dtype=int)
+        w = np.hypot(*(self.nodes[r] - self.nodes[c]).T)
+        return csr_matrix((np.concatenate([w, w]), (np.concatenate([r, c]), np.concatenate([c, r]))), shape=(k, k))
 
     def tree(self, target: int) -> tuple[np.ndarray, np.ndarray]:
         """Distances to node ``target`` from every node, and each node's next node towards it."""
