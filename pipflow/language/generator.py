@@ -234,6 +234,11 @@ def generate(
            "round": {"base": base_digest, "sent": _digest(messages, temperature_now), "level": level,
                      "answer": text[:ROUND_ANSWER_CHARS], "max_tokens": max_tokens}}
     out.update(_read_answer(text, world, grounded, domain_text))
+    if usage.get("finish_reason") == "length" and out.get("errors"):  # the model must shorten, not we raise
+        out["errors"] = out["errors"] + [
+            f"the answer was cut off at the {max_tokens} tokens it may take: write only what the command asks "
+            + ("for: one goal item per count the command states, rules only if it states them"
+               if grounded else "for, and no text after the ```json block")]
     if save is not None and kind == "household" and out["goal"] is not None:
         save("goal.json", out["goal"])
     return out
