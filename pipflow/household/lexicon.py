@@ -124,10 +124,10 @@ _add("DOOR", "door,doors")
 #: category words that name a mass, not one thing: "put away the fruit" means all of it, while
 #: "turn off the lamp" names one lamp (and is asked back when the home has several)
 #: (the last word of the phrase decides: "reading material")
-MASS_NOUNS = {"fruit", "food", "bedding", "cutlery", "stationery", "light", "lighting", "tableware", "cookware",
+MASS_NOUNS = {"fruit", "food", "bedding", "cutlery", "stationery", "lighting", "tableware", "cookware",
               "laundry", "rubbish", "equipment", "furniture", "produce", "veg", "electronics", "clothing",
               "silverware", "crockery", "groceries", "trash", "garbage", "stuff", "material", "gear", "kit",
-              "junk", "mail", "post", "paperwork", "luggage", "baggage", "washing", "shopping", "bread"}
+              "junk", "mail", "post", "paperwork", "luggage", "baggage", "washing", "shopping"}
 #: determiners that ask for one thing of a kind
 INDEFINITE = {"a", "an"}
 

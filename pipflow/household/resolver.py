@@ -81,6 +81,7 @@ class Resolver:
         self.last_places: list[str] = []                       # the places of the statement before
         self.last_any: list[str] = []                          # everything the statement before named
         self.before: list[str] = []
+        self.cue_defaults: list[tuple[str, str, str, list[str]]] = []   # (category, state, words, members)
 
     # selectors -------------------------------------------------------------------------
     def _candidates(self, sel: dict, words: str) -> tuple[list[str], bool]:
@@ -392,30 +393,53 @@ class Resolver:
 
     def cue(self, st: dict, words: str) -> None:
         cond = st["to"]
+        default = st.get("default")
+        cats = [c for c, e in (self.world.get("categories") or {}).items()
+                if default and (c == default or default in ((e or {}).get("words") or []))]
+        # an observation answers the cue when it is about what the cue speaks of ("the desk lamp
+        # is on and nobody is reading": a light); "the TV is on and nobody is reading" is not
+        fits = [o for o in self.observed
+                if not cats or all(cats[0] in entity(self.world, n)["categories"] for n in o[0])]
         if st["things"]:
             named = self.objects(st["things"], words, cond=cond)
             said = {n for n, _ in named}   # "the TV is on but nobody is watching it": the cue answers it
             self.observed = [o for o in self.observed if not set(o[0]) <= said]
-        elif self.observed:
-            named = [(n, True) for names, _, _ in self.observed for n in names]
-            self.observed = []
+        elif fits:
+            named = [(n, True) for names, _, _ in fits for n in names]
+            self.observed = [o for o in self.observed if o not in fits]
         else:
-            default = st.get("default")
-            cats = [c for c, e in (self.world.get("categories") or {}).items()
-                    if default and (c == default or default in ((e or {}).get("words") or []))]
-            if not default or not cats:
+            if not cats:
                 raise TranslationError(f"'{words}': which thing? ('{st['cue']}' names nothing to switch)")
             named = [(n, False) for n in members(self.world, cats[0]) if applies(self.world, n, cond)]
             if not named:
                 raise Refusal(f"'{words}': nothing of the {cats[0]} category can be switched {cond}")
-            self.goal.notes.append(f"'{words}': read as every {cats[0]} {cond} ({', '.join(n for n, _ in named)})")
+            # decided at the end: "it is getting dark, turn on the floor lamp" gives the reason
+            # for a request, it does not ask for every light
+            self.cue_defaults.append((cats[0], cond, words, [n for n, _ in named]))
+            self.last = [n for n, _ in named]
+            return
         for n, explicit in named:
             self.want(n, cond, explicit, words)
         self.last = [n for n, _ in named]
 
+    def _apply_cue_defaults(self) -> None:
+        """A cue that names nothing means its whole category, unless the command itself asks the
+        same state of one of its members (then the cue is only the reason)."""
+        for cat, cond, words, names in self.cue_defaults:
+            asked = [n for n in names if any(c.cond == cond and c.explicit and c.words != words
+                                             for c in self.goal.state.get(n, {}).values())]
+            if asked:
+                self.goal.notes.append(f"'{words}' is the reason for {', '.join(asked)} {cond}, not a request for "
+                                       f"every {cat}")
+                continue
+            self.goal.notes.append(f"'{words}': read as every {cat} {cond} ({', '.join(names)})")
+            for n in names:
+                self.want(n, cond, False, words)
+
     def resolve(self, order: dict) -> dict:
         for st in order["statements"]:
             self.statement(st)
+        self._apply_cue_defaults()
         if self.picked:
             obj, words = next(iter(self.picked.items()))
             raise TranslationError(f"'{words}': where to? name a place for {obj} (e.g. 'in the fridge')")
