@@ -11,7 +11,8 @@ exact search where capacity makes the flow's answer too long:
    -> the room each shelf has left) carries every free unit; otherwise *proven unsolvable*.
 2. **Flows.** Per product, the transfers from cells that must give to cells that must receive in
    the fewest moves (a small SCIP integer program; moves are ceil(units / 6) per route, so 6 + 6
-   beats 7 + 5), kept when it beats a networkx min-cost flow (SCIP may stop at its time limit); units that must come from (or go
+   beats 7 + 5; on many routes, whole moves are paired off first and the program gets only the
+   remainders), kept when it beats a networkx min-cost flow (SCIP may stop at its time limit); units that must come from (or go
    to) cells with slack come from those already giving, then the fullest.
 3. **Moves.** Each arc's flow is cut into moves of at most the largest magnitude.
 4. **Order.** Moves are sequenced so that stock never goes negative and no shelf ever exceeds its
@@ -34,7 +35,8 @@ Measured by ``benchmarks/team_plans.py``: the fewest moves (proven) on the paper
 on all 36 instances of the generated capacity-tight suite, in well under a second each; on an
 8 x 6 x 120 instance 20 moves, equal to the lower bound, in 0.9 s (ENHSP's gbfs: 21 moves in 43 s
 in an earlier run; no plan within 120 s at load 9-11); at 50 x 10 x 2000 no search (the state
-space is far too large): about 370 moves against a cheap bound of 315, in about 2-6 s.
+space is far too large): about 350-360 moves against a cheap bound of 315 (the flow alone: 381),
+in about 3-6 s.
 
 Which problems: any domain whose single action has the *shape* of a transport move, whatever its
 names: parameters (from, to: one type; item; magnitude), effects ``decrease S(from, item)``,
@@ -69,12 +71,13 @@ flow plan is longer than the order-free IP bound; large instances get proportion
 SEARCH_CELLS = 200
 """Above this many (shelf, product) cells the exact search is not tried: its first expansion alone
 would use most of the budget, and plans there are too long for it to reach the goal."""
-IP_SECONDS = 2.0
+IP_SECONDS = 3.0
 """Total SCIP time for the per-product fewest-moves IPs of one plan. The paper's tasks and the
 tight suite need milliseconds and are solved to optimality (so plans are reproducible); at 50
 shelves x 10 products they stop at their time limit and the best of SCIP's answer and the
-min-cost flow is kept (381 -> about 370 moves, machine-dependent)."""
+min-cost flow is kept (381 -> about 350-360 moves, machine-dependent)."""
 IP_ARCS = 600
+IP_DIRECT_ARCS = 120
 """Per product, the fewest-moves flow (:func:`_fewest_moves_flow`) is solved as an integer program
 up to this many (source, sink) arcs; above it, networkx's min-cost flow (fewest units)."""
 IP_CELLS = 4000
@@ -432,8 +435,11 @@ def product_flows(inst: Instance, p: str, final: dict, slack: dict, room: dict[s
         for v, x in targets.items():
             if x > 0 and isinstance(v, tuple) and v[0] == "in":
                 out[u[1], v[1]] = x
-    if len(arcs) <= IP_ARCS and ip_time > 0:
-        fewer = _fewest_moves_flow(supply, demand, extra_src, extra_dst, need, arcs, ip_time)
+    if ip_time > 0 and arcs:
+        if len(arcs) <= IP_DIRECT_ARCS:  # small: the whole program, usually solved to optimality
+            fewer = _fewest_moves_flow(supply, demand, extra_src, extra_dst, need, arcs, ip_time)
+        else:
+            fewer = _chunked_fewest_moves(supply, demand, extra_src, extra_dst, need, arcs, ip_time)
 
         def moves(f: dict) -> int:
             return sum(-(-x // arcs[a]) for a, x in f.items())
@@ -445,6 +451,41 @@ def product_flows(inst: Instance, p: str, final: dict, slack: dict, room: dict[s
         room[s] += max(0, x - supply.get(s, 0))
         supply[s] = max(0, supply.get(s, 0) - x)
     return out
+
+
+def _chunked_fewest_moves(supply: dict, demand: dict, extra_src: dict, extra_dst: dict, need: int,
+                          arcs: dict[tuple[str, str], int], time_limit: float) -> Optional[dict]:
+    """Full moves first, then the fewest moves for the rest: when every route carries the same
+    most per move (no rule narrows one), each cell's whole multiples of it are paired off as full
+    moves, and only the remainders (under one move per cell) and the cells with slack go to
+    :func:`_fewest_moves_flow`, a far smaller program. At 50 shelves x 10 products this reaches
+    within a few percent of the per-cell bound where the whole program, stopped at its time
+    limit, stays about 15% above it. None when the remainder program finds nothing."""
+    sizes = set(arcs.values())
+    flows: dict[tuple[str, str], int] = {}
+    supply, demand = dict(supply), dict(demand)
+    if len(sizes) == 1 and all((s, t) in arcs for s in supply for t in demand if s != t):
+        big = sizes.pop()
+        src = [s for s in supply for _ in range(supply[s] // big)]
+        dst = [t for t in demand for _ in range(demand[t] // big)]
+        for s, t in zip(src, dst):  # supply and demand cells differ, so s != t
+            flows[s, t] = flows.get((s, t), 0) + big
+            supply[s] -= big
+            demand[t] -= big
+    supply = {s: v for s, v in supply.items() if v}
+    demand = {t: v for t, v in demand.items() if v}
+    if not supply and not demand and not need:
+        return flows
+    rest = {(s, t): b for (s, t), b in arcs.items()
+            if (s in supply or s in extra_src) and (t in demand or t in extra_dst)}
+    if len(rest) > IP_ARCS:
+        return None
+    more = _fewest_moves_flow(supply, demand, extra_src, extra_dst, need, rest, time_limit)
+    if more is None:
+        return None
+    for a, x in more.items():
+        flows[a] = flows.get(a, 0) + x
+    return flows
 
 
 def _fewest_moves_flow(supply: dict, demand: dict, extra_src: dict, extra_dst: dict, need: int,
