@@ -207,6 +207,20 @@ def test_a_server_that_trickles_bytes_is_abandoned_at_the_time_out(serve):
     assert len(server.requests) == 2
 
 
+@pytest.mark.parametrize("body", [b"{}", b"null", b'{"choices": []}', b'{"choices": [{"message": 5}]}',
+                                  b'{"choices": [{"index": 0, "message": {"role": "assistant", "content"',
+                                  b"[1, 2]", b'"text"'])
+def test_malformed_answers_are_clear_errors(serve, body):
+    from pipflow.errors import LLMError
+    from pipflow.language import llm
+
+    server = serve([{"body": body}])
+    with pytest.raises(LLMError, match=r"^openai/fake: "):
+        llm.complete([{"role": "user", "content": "hi"}], model="openai/fake", api_base=server.api_base,
+                     retries=0, timeout=5)
+    assert len(server.requests) == 1
+
+
 # --- sizes ---------------------------------------------------------------------------------
 
 def test_a_huge_answer_is_refused_and_stored_nowhere(tmp_path, serve):

@@ -206,7 +206,13 @@ def complete(
             message = f"{model}: {kind}{tries}: {_short(redact(str(exc)))}{hint}"
             raise (InputError if user_fault else LLMError)(message) from None
     latency = time.perf_counter() - start
-    text = response.choices[0].message.content or ""
+    try:
+        text = response.choices[0].message.content or ""
+    except (AttributeError, IndexError, TypeError, KeyError):
+        raise LLMError(f"{model}: the server answered without a message (no choices in its "
+                       "response); is it an OpenAI-compatible chat server?") from None
+    if not isinstance(text, str):
+        raise LLMError(f"{model}: the server's message is {type(text).__name__}, not text")
     if len(text) > MAX_ANSWER_CHARS:
         raise LLMError(f"{model}: the answer is {len(text):,} characters long, more than the "
                        f"{MAX_ANSWER_CHARS:,} that no real answer reaches; it was neither kept nor parsed")
