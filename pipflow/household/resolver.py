@@ -143,6 +143,10 @@ class Resolver:
             if not fit:
                 raise Refusal(f"'{words}': nothing of '{what}' can be {cond or 'picked up'} "
                               f"({', '.join(names) or 'there is none'})")
+            left = [n for n in names if n not in fit]
+            if left:   # said, so that a user sees what "all the devices" came to
+                self.goal.notes.append(f"'{words}': {', '.join(left)} of '{what}' cannot be "
+                                       f"{cond or 'picked up'}; left as {'it is' if len(left) == 1 else 'they are'}")
             names = fit
         plural = sel.get("all") or sel.get("everything") or sel.get("pronoun") or \
             any(r.get("plural") for r in (sel.get("noun") or {}).get("readings", []))
