@@ -14,7 +14,7 @@ import pytest
 
 import pipflow
 from fake_openai import FakeOpenAI
-from pipflow.language import agreement
+from pipflow.language import agreement, feedback
 from pipflow.pddl.writer import write_problem
 from pipflow.world import load_world
 
@@ -203,3 +203,57 @@ def test_calls_carry_a_budget_and_stops_and_a_failed_round_keeps_its_prompt(tmp_
     kept = result.record / "steps" / "refine" / "iterations" / "1" / "generate" / "artifacts" / "messages.json"
     messages = json.loads(kept.read_text())
     assert messages[-1]["role"] == "user" and "7 product 1 in shelf 3" in messages[-1]["content"]
+
+
+# ---------------------------------------------------------------------------------------------
+# the second opinion and the feedback forms on their own (no server, no planner)
+# ---------------------------------------------------------------------------------------------
+def test_the_second_opinion_compares_meaning_not_spelling():
+    """Counts that stay as they are, robots in another order, a rule's source words, and an
+    exact count inside the command's bound are agreements; a changed count elsewhere, a missing
+    rule and a count outside the bound are not, each phrased in the mode's form."""
+    command = "Robot 5 must not carry product1. shelf2 should hold 9 product1"
+    state, reading = agreement.offline_reading(command, WORLD)
+    assert state == "read"
+    rule = {"never": ["robot5"], "product": "product1", "words": "Robot 5 must not carry product1"}
+    same = agreement.second_opinion(command, WORLD, {"shelf2": {"product1": 9}, "shelf3": {"product4": 4}},
+                                    [rule], None, grounded=False)
+    assert same.disagreement == [] and same.refusal is None
+    other = agreement.second_opinion(command, WORLD, {"shelf2": {"product1": 9}, "shelf3": {"product4": 7}},
+                                     [], None, grounded=True)
+    assert other.firm and len(other.disagreement) == 2
+    assert any("shelf3" in m and "leave product4 on shelf3 out" in m for m in other.messages)
+    assert any('"rule": "never", "robots": ["robot5"], "product": "product1"' in m for m in other.messages)
+    bound = "shelf3 should hold at least 7 product1"
+    assert agreement.second_opinion(bound, WORLD, {"shelf3": {"product1": 8}}, [], None, True).disagreement == []
+    low = agreement.second_opinion(bound, WORLD, {"shelf3": {"product1": 6}}, [], None, False)
+    assert low.messages == ["your goal asks for 6 product1 on shelf3, but the command asks for at least 7: "
+                            "write (>= (stock shelf3 product1) 7)"]
+
+
+def test_a_refusal_is_final_only_when_the_command_makes_the_goal_impossible():
+    impossible_goal = {"shelf3": {"product2": 30}}
+    invented = agreement.second_opinion("There should be 2 product2 in shelf3.", WORLD, impossible_goal, [],
+                                        "the command cannot be done in this world: only 10 product2 exist", True)
+    assert invented.refusal is None and invented.disagreement
+    agreed = agreement.second_opinion("There should be 2 product2 in shelf3.", WORLD, {"shelf3": {"product2": 2}}, [],
+                                      "the command cannot be done in this world: a reason", True)
+    assert agreed.refusal == "the command cannot be done in this world: a reason"
+    command = agreement.second_opinion("shelf1 should hold 40 product1.", WORLD, {"shelf1": {"product1": 30}}, [],
+                                       None, True)
+    assert command.refusal and "capacity" in command.refusal
+
+
+def test_a_varied_prompt_adds_something_new_at_every_level():
+    messages = ["your goal asks for 20 product2 on shelf2, but the command asks for 0"]
+    answer = grounded_answer({"shelf2": {"product2": 20}, "shelf4": {"product3": 16}})
+    texts = []
+    for level in (1, 2, 3, 4):
+        extra, temperature, done = feedback.vary(level, answer, messages, WORLD, True, 0.0)
+        texts.append("\n".join(extra))
+        assert (temperature > 0) == (level >= 3)
+    assert len(set(texts)) == 4
+    assert '>> {"shelf": "shelf2", "product": "product2", "units": 20}' in texts[0]
+    assert '   {"shelf": "shelf4", "product": "product3", "units": 16}' in texts[0]  # not marked
+    assert "- shelf2 holds 8 product1, 5 product2, 6 product3, 2 product4 now (21 units; capacity 30)" in texts[1]
+    assert "- there are 10 product2 in all (shelf1 2, shelf2 5, shelf3 3)" in texts[1]

@@ -31,9 +31,10 @@ MARK = ">> "
 def goal_entry(shelf: str, product: str, value: Any, grounded: bool) -> str:
     """One goal count in the answer form of the mode: a JSON goal item (grounded) or a PDDL goal
     condition (free). A grounded answer states exact counts only, so a bound becomes its lowest
-    count that meets it."""
+    count that meets it: its lower end, or for "at most m" alone, m (what such a command means is
+    to take the count down to m, not to empty the shelf)."""
     if grounded:
-        units = value if not is_bound(value) else int(value.get("at_least", 0))
+        units = value if not is_bound(value) else int(value.get("at_least", value.get("at_most", 0)))
         return json.dumps({"shelf": shelf, "product": product, "units": units})
     fluent = f"(stock {shelf} {product})"
     if not is_bound(value):
