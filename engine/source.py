@@ -60,13 +60,18 @@ class _Constructor(yaml.constructor.SafeConstructor):
         if not isinstance(node, yaml.MappingNode):
             raise yaml.constructor.ConstructorError(
                 None, None, f"expected a mapping, found {node.id}", node.start_mark)
-        self.flatten_mapping(node)
+        written = sum(1 for k, _ in node.value if k.tag != "tag:yaml.org,2002:merge")
+        self.flatten_mapping(node)  # pairs from `<<: *x` come first; keys written after them override
+        merged = len(node.value) - written
         result = SourceDict()
         result.loc = _location(node, self.file)
-        for key_node, value_node in node.value:
+        explicit: set = set()
+        for i, (key_node, value_node) in enumerate(node.value):
             key = self.construct_object(key_node, deep=True)
-            if key in result:
-                raise _DuplicateKey(key, _location(key_node, self.file))
+            if i >= merged:
+                if key in explicit:
+                    raise _DuplicateKey(key, _location(key_node, self.file))
+                explicit.add(key)
             result[key] = self.construct_object(value_node, deep=True)
             result.locs[key] = _location(value_node, self.file)
         return result
