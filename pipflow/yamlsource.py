@@ -254,12 +254,13 @@ def load_with_locations(text: str, file: str) -> tuple[Any, Callable[..., Locati
     loader = _SafeCLoader(text)
     try:
         root = loader.get_single_node()
+        locate = Locator(root, file)  # before constructing: that flattens `<<: *x` merges in place
         data = loader.construct_document(root) if root is not None else None
     except yaml.reader.ReaderError as err:
         raise located_reader_error(err, text) from None
     finally:
         loader.dispose()
-    return data, Locator(root, file)
+    return data, locate
 
 
 def yaml_error_diagnostic(exc: yaml.YAMLError, file: str) -> Diagnostic:
