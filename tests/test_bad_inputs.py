@@ -912,3 +912,24 @@ def test_path_argument_naming_a_device_or_pipe_is_refused_before_the_step_reads_
     code, _, err = cli(capsys, "run", "warehouse", "-i", f"domain={path}", "--no-cache", "-q")
     assert code == 2, err
     assert "argument 'domain'" in err and str(path) in err and "not an ordinary file" in err
+
+
+# --- the real command, in its own process: no hang, no traceback, exit 2 ---------------------------
+@pytest.mark.parametrize("case", ["alias bomb", "dev-zero world", "binary workflow"])
+def test_the_pipflow_command_itself(ws, case):
+    import subprocess
+    import sys
+
+    if case == "alias bomb":
+        (ws / "bomb.yaml").write_text(WORKFLOWS["alias bomb"][0])
+        argv = ["validate", "bomb.yaml"]
+    elif case == "dev-zero world":
+        argv = ["run", "wf.yaml", "-i", "world=/dev/zero", "--no-cache"]
+    else:
+        (ws / "bin.yaml").write_bytes(bytes(range(256)))
+        argv = ["run", "bin.yaml"]
+    proc = subprocess.run([sys.executable, "-m", "pipflow.engine.cli", *argv], cwd=ws, capture_output=True,
+                          text=True, timeout=120)
+    assert proc.returncode == 2, proc.stderr
+    assert "Traceback" not in proc.stdout + proc.stderr
+    assert proc.stderr.strip()
