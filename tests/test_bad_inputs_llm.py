@@ -268,6 +268,30 @@ def test_a_model_string_without_a_known_provider_is_a_user_error(tmp_path):
     no_traceback(proc)
 
 
+@pytest.mark.parametrize("args, words", [
+    ({"api_base": "not-a-url"}, "is not a server address"),
+    ({"api_base": "ftp://127.0.0.1:1/v1"}, "is not a server address"),
+    ({"api_base": "http://127.0.0.1:99999/v1"}, "is not a server address"),
+    ({"timeout": 1e12}, "timeout must be"), ({"timeout": float("nan")}, "timeout must be"),
+    ({"timeout": 0}, "timeout must be"), ({"deadline": float("inf")}, "deadline must be"),
+    ({"retries": -1}, "retries must be"), ({"max_tokens": 0}, "max_tokens must be")])
+def test_impossible_call_settings_are_user_errors_before_any_request(serve, args, words):
+    from pipflow.errors import InputError
+    from pipflow.language import llm
+
+    server = serve(["never asked"])
+    call = {"model": "openai/fake", "api_base": server.api_base, **args}
+    with pytest.raises(InputError, match=words):
+        llm.complete([{"role": "user", "content": "hi"}], **call)
+    assert server.requests == []
+
+
+def test_a_bad_api_base_on_the_command_line_is_exit_2(tmp_path):
+    proc = pipflow(tmp_path, "-i", "api_base=localhost:8080", "--no-cache")
+    assert proc.returncode == 2 and "is not a server address" in proc.stderr
+    no_traceback(proc)
+
+
 # --- the provider key goes only where the user sends it ------------------------------------
 
 def own_address() -> str | None:

@@ -110,6 +110,40 @@ def key_may_go_to(api_base: str | None) -> bool:
     return not api_base or is_loopback(api_base) or user_named(api_base)
 
 
+#: the longest time-out or deadline accepted, in seconds (a day; more is a typo, and the
+#: platform's timers overflow on numbers like 1e12)
+MAX_SECONDS = 86_400.0
+
+
+def check_limits(*, retries: int, max_tokens: int, timeout: float, deadline: float | None) -> None:
+    """Raise :class:`InputError` for limits no call can honour (negative, zero, NaN, endless)."""
+    problems = []
+    if not isinstance(retries, int) or isinstance(retries, bool) or not 0 <= retries <= 100:
+        problems.append(f"retries must be a whole number from 0 to 100, got {retries!r}")
+    if not isinstance(max_tokens, int) or isinstance(max_tokens, bool) or max_tokens <= 0:
+        problems.append(f"max_tokens must be a whole number > 0, got {max_tokens!r}")
+    for name, value in (("timeout", timeout), ("deadline", deadline)):
+        if value is None and name == "deadline":
+            continue
+        if not isinstance(value, (int, float)) or isinstance(value, bool) or not 0 < value <= MAX_SECONDS:
+            problems.append(f"{name} must be a number of seconds above 0 and at most {MAX_SECONDS:g}, got {value!r}")
+    if problems:
+        raise InputError("; ".join(problems))
+
+
+def check_api_base(api_base: str) -> None:
+    """Raise :class:`InputError` unless ``api_base`` is an http(s) URL with a host."""
+    try:
+        parts = urlsplit(str(api_base).strip())
+        ok = parts.scheme in ("http", "https") and bool(parts.hostname)
+        parts.port  # noqa: B018 - raises ValueError for a port out of range
+    except ValueError:
+        ok = False
+    if not ok:
+        raise InputError(f"api_base {api_base!r} is not a server address; expected http://HOST[:PORT]/... "
+                         "(e.g. http://127.0.0.1:8080/v1)")
+
+
 def check_model(litellm, model: str, api_base: str | None) -> None:
     """Fail before the first call when litellm does not know the model's provider, or when a
     hosted provider's key is missing from the environment (:class:`InputError`, exit 2)."""
@@ -154,8 +188,9 @@ def complete(
     bounds one request; ``deadline`` (seconds) bounds the whole call with its retries and waits.
     ``extra`` carries provider-specific request fields (``response_format``, a llama.cpp
     ``grammar`` in ``extra_body``, litellm's ``mock_response`` in tests)."""
-    if retries < 0 or max_tokens <= 0 or timeout <= 0 or (deadline is not None and deadline <= 0):
-        raise InputError("retries must be >= 0, max_tokens, timeout and deadline > 0")
+    check_limits(retries=retries, max_tokens=max_tokens, timeout=timeout, deadline=deadline)
+    if api_base:
+        check_api_base(api_base)
     litellm = _import_litellm()
     if "mock_response" not in (extra or {}):  # litellm's canned answers (tests) need no key
         check_model(litellm, model, api_base)
