@@ -63,12 +63,13 @@ np: NUM of? ihead                          -> np_count
   | NUM "or" ("fewer" | "less") of? ihead  -> np_atmost
   | "more" "than" NUM of? ihead            -> np_above
   | ("fewer" | "less") "than" NUM of? ihead -> np_below
-  | "somewhere"? "between" NUM "and" NUM of? ihead -> np_between
-  | NUM more "of" "each" ITEMWORD?         -> np_each_more
+  | ("somewhere" | "anywhere")? "between" NUM "and" NUM of? ihead -> np_between
+  | ("somewhere" | "anywhere")? "from" NUM "to" NUM of? ihead -> np_between
+  | NUM more "of" ("each" | "every") ITEMWORD? -> np_each_more
   | NUM "to" NUM of? ihead                 -> np_between
   | vague NUM of? ihead                    -> np_vague
   | vagueq of? ihead                       -> np_vague
-  | NUM "of" "each" ITEMWORD?              -> np_each
+  | NUM "of" ("each" | "every") ITEMWORD?  -> np_each
   | "everything"                           -> np_everything
   | ("everything" | "all" ITEMWORD | "every" ITEMWORD | "all" "goods") except_items -> np_everything
   | "as" "many" ihead "as" PLACE ("has" | "holds" | "have" | "contains") now? -> np_as_many
@@ -108,8 +109,8 @@ place: PLACE                                -> place_name
      | PLACEWORD                            -> place_word
      | ("it" | "there")                     -> place_it
      | PLACE PLACEWORD                      -> place_name
-     | ("every" | "each" | "all") PLACEWORD  -> place_all
-     | ("every" | "each" | "all") PLACEWORD except_pl -> place_all
+     | ("every" | "each" | "all") (PLACEWORD | "place" | "places")  -> place_all
+     | ("every" | "each" | "all") (PLACEWORD | "place" | "places") except_pl -> place_all
      | "all" "of" "them"                    -> place_all
      | "each" "of" place (lsep place)*       -> place_each
 except_pl: ("except" | "but" | "besides" | "other" "than" | "apart" "from" | "excluding") place (lsep place)*
@@ -132,9 +133,10 @@ setv: "has" | "have" | "hold" | "holds" | "store" | "stores" | "stock" | "stocks
     | "ends" "up" "with" | "ends" "with" | "end" "up" "holding" | "ends" "up" "holding"
     | "be" "filled" "with" | "be" "loaded" "with" | "hold" "onto" | "be" "holding" | "is" "holding"
     | "end" "with" | "want" | "wants" | "be" "left" "with" | "be" "at" | "is" "at" | "are" "at"
-putv: "put" | "place" | "store" | "stock" | "set" | "leave" | "stack" | "load" | "get" | "keep"
+putv: "put" | "place" | "store" | "stock" | "set" | "leave" | "stack" | "load" | "get" | "keep" | "drop"
+    | "park" | "stick" | "pop"
     | "make" "sure" "there" ("is" | "are") | "ensure" "there" ("is" | "are")
-addv: "add" | "bring" | "deliver" | "send" | "ship" | "move" | "transfer" | "carry" | "shift"
+addv: "add" | "bring" | "deliver" | "send" | "ship" | "move" | "transfer" | "carry" | "shift" | "throw" | "toss"
     | "relocate" | "take" | "haul" | "bring" "over" | "move" "over" | "send" "over"
     | "supply" | "drop" "off" | "get" | "push"
 removev: "remove" | "take" | "unload" | "pull" | "withdraw" | "clear" | "get" | "move"
@@ -148,7 +150,7 @@ want: ("i" | "we") ("want" | "would" "like" | "like" | "need" | "wish") | "id" "
     | "make" "it" "so" that? | "make" "sure" that? | "ensure" that? | "let" | "have" | "get"
     | "i" "want" "it" "so" that?
 that: "that"
-there_be: ("there" | "theyre" | "their" | "theres") (modal? "be" | "is" | "are")
+there_be: ("there" | "theyre" | "their" | "theres") (modal? "be" | "is" | "are") | "make" "it"
         | "theres" | ("we" | "i") modal? ("need" | "want" | "require" | "needs")
 go: "go" | "goes" | "move" | "moves" | "be" "moved" | "be" "sent" | "be" "taken" | "be" "brought"
   | "be" "transferred" | "be" "shipped" | "be" "relocated" | "be" "carried" | "be" "delivered"
@@ -176,7 +178,12 @@ goal: there_be items loc                                  -> g_set
     | refill places ("so" that? | "until") ("it" | "they") setv items -> g_place_set
     | refill places "to" items                                -> g_place_set
     | ("bring" | "take" | "top" "up" | "raise" | "fill" | "get" | "lower" | "cut") places ("up" | "down")? "to" items -> g_place_set
-    | places modal? each? ("get" | "come" | "go") ("up" | "down")? "to" items -> g_place_set
+    | places modal? each? ("get" | "come" | "go" | "drop" | "fall" | "rise" | "climb") ("up" | "down")? "to" items -> g_place_set
+    | places modal? "only" setv items                      -> g_place_set
+    | pitems modal? go to places appos?                    -> g_transfer_src
+    | want items loc                                       -> g_set
+    | (places ":")? ("increase" | "raise" | "up" | "bump" "up" | "boost") ihead loc? "by" NUM -> g_raise
+    | (places ":")? ("decrease" | "lower" | "reduce" | "cut" | "drop") ihead loc? "by" NUM -> g_lower
     | want places ("to" "be")? "at" items                     -> g_place_set
     | "give" places items                                     -> g_place_set
     | places place_appos modal? setv items                    -> g_place_set
@@ -211,9 +218,9 @@ goal: there_be items loc                                  -> g_set
     | ("dont" | "do" "not") emptyv places                    -> g_noop
     | ("dont" | "do" "not" | "never") (putv | addv | "send" | "bring") ("any" | "anything" | "them" | "it" | ihead)? loc -> g_no_inflow
     | ("none" "of" ("them" | "it") | "none") modal? go loc  -> g_no_inflow
-    | "swap" ("what" | "contents" "of" | "loads" "of" | "stock" "of" | "everything" "on" | "everything" "in")? places ("hold" | "have" | "contain" | "holds" | "has")? -> g_swap
-    | "swap" ihead (lsep ihead)* ("between" | "of" | "on" | "in" | "at") places -> g_swap_items
-    | "swap" ihead loc "with" ihead? loc                     -> g_swap_two
+    | swapv ("what" | "contents" "of" | "loads" "of" | "stock" "of" | "everything" ("on" | "in" | "between" | "of") | "between")? places ("hold" | "have" | "contain" | "holds" | "has")? -> g_swap
+    | swapv ihead (lsep ihead)* ("between" | "of" | "on" | "in" | "at") places -> g_swap_items
+    | swapv ihead loc "with" ihead? loc                     -> g_swap_two
     | places modal? ("swap" | "trade" | "exchange") (("their" | "its") | "what" "they" ("hold" | "have"))? swapwhat -> g_swap_subj
     | splitv items src even? among places even?              -> g_split_src
     | splitv pitems even? among places even?                 -> g_split_src
@@ -224,7 +231,11 @@ goal: there_be items loc                                  -> g_set
     | items from places modal? go? to places                -> g_transfer
     | removev items from places                            -> g_remove
     | removev "everything" from places                      -> g_empty
-    | mult ihead loc                                       -> g_mult
+    | mult "up"? ihead loc                                 -> g_mult
+    | (putv | addv) ("them" | "it" | "those" | "these" | "all" "of" "them") adv? loc -> g_pronoun_dest
+    | ("clear" | "empty" | "clean") places ("out" | "off")  -> g_empty
+    | places ("shouldnt" | "mustnt" | "cant" | "cannot" | "wont" | modal ("not" | "never")) setv ("more" "than" | "over" | "above") NUM of? ihead -> g_ceiling
+    | places ("shouldnt" | "mustnt" | "cant" | "cannot" | "wont" | modal ("not" | "never")) setv ("fewer" "than" | "less" "than" | "under" | "below") NUM of? ihead -> g_floor
     | places modal? "keep" "only"? items                     -> g_keep_part
     | emptyv places                                        -> g_empty
     | places modal? be? emptied                            -> g_empty
@@ -245,9 +256,9 @@ goal: there_be items loc                                  -> g_set
     | ("leave" | "keep") places as_is                       -> g_keep
     | ("dont" | "do" "not") "touch" places                  -> g_keep
     | places modal? ("stay" | "remain" | "be" "left") as_is  -> g_keep
-    | "swap" ("what" | "contents" "of")? places ("hold" | "have" | "contain" | "holds" | "has")? -> g_swap
-    | "swap" ihead (lsep ihead)* ("between" | "of" | "on") places -> g_swap_items
-    | "swap" posplace ihead "with" (posplace | places)       -> g_swap_poss
+    | swapv ("what" | "contents" "of")? places ("hold" | "have" | "contain" | "holds" | "has")? -> g_swap
+    | swapv ihead (lsep ihead)* ("between" | "of" | "on") places -> g_swap_items
+    | swapv posplace ihead "with" (posplace | places)       -> g_swap_poss
     | splitv items? even? among places even?                -> g_split
     | splitv bare even? among places even?                  -> g_split
     | "put" items even? among places even?                  -> g_split
@@ -264,13 +275,14 @@ pitem_plain: posplace ihead
 place_appos: "," ("which" | "that") ("has" | "holds" | "already" "has") items now? ","
 appos: ","? ("all" | "both") (NUM "of" "them" | "of" "them") ","?
 swapwhat: ihead (lsep ihead)* | "everything" ("they" ("hold" | "have"))? | "contents" | "loads" | "stock" | "places" | "goods" | "items"
-stay: be | "sit" | "stay" | "lie" | "go" | "be" "placed" | "be" "stored" | "belong" | "end" "up"
+stay: be | "be" "left" | "remain" | "be" "kept" | "sit" | "stay" | "lie" | "go" | "be" "placed" | "be" "stored" | "belong" | "end" "up"
 both: "both"
 left: "left" | "remaining" | "left" "over" | "in" "total" | "total" | "in" "all"
 only: "only"
 equal: "equal" "to" | "at"
 refill: "restock" | "refill" | "replenish" | "top" "up" | "supply"
 mult: "double" | "triple" | "quadruple" | "halve"
+swapv: "swap" | "trade" | "exchange" | "switch" | "interchange"
 emptyv: "empty" | "clear" | "clean" "out" | "clear" "out" | "empty" "out"
 emptied: "empty" | "emptied" | "cleared" | "vacant" | "cleaned" "out"
 as_is: "where" ("it" | "they") ("is" | "are") | "as" ("it" | "they") ("is" | "are") | "alone"
@@ -344,12 +356,15 @@ useact: use | act
 robj: ITEM (lsep ITEM)*                                   -> ro_items
     | ("anything" | "everything" | "any" ITEMWORD | ITEMWORD | "goods" | "stuff" | "things" | "all" ITEMWORD) -> ro_any
     | ("it" | "them" | "that" | "those" | "these" | "this")  -> ro_pronoun
+    | "for" ITEM (lsep ITEM)*                               -> ro_items
 rwhere: from places                                    -> rw_from
       | from places to places                          -> rw_route
       | ("to" | "into" | "onto" | "towards" | "toward") places -> rw_to
       | "to" (PLACEWORD | "location") "of" places        -> rw_to
       | ("at" | "on" | "in" | "near" | "around" | "by") places -> rw_at
       | "away" "from" places                               -> rw_at
+      | ("going" | "headed" | "heading" | "moving" | "bound") ("to" | "into" | "for") places -> rw_to
+      | ("coming" | "leaving") from places                 -> rw_from
       | from NUM PLACEWORD "to" "another"                  -> rw_none
       | ("between" | "among") PLACEWORD                      -> rw_none
       | "for" ("that" | "this" | "it" | "them" | "those" | "job" | "task")  -> rw_pronoun
@@ -369,6 +384,7 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | "nothing" ("leaves" | "goes" "out" "of" | "comes" "off" | "comes" "out" "of" | "may" "leave" | "should" "leave") places ("on" | "by" | "with" | "using") robots -> rule_never_from
     | ("let" | "have") robots act rscope                     -> rule_only
     | ("keep" | "leave") robots ("away" | "clear") from ITEM (lsep ITEM)* -> rule_away_items
+    | ("keep" | "leave") robots "off" ITEM (lsep ITEM)*       -> rule_away_items
     | robots ("is" | "are") state ","? ("so" | "and")? ("dont" | "do" "not") "use" ("it" | "them") -> rule_state
     | robots ("is" | "are") "not" "to" "be" "used" rscope     -> rule_never
     | robots modal? ("stay" | "keep") ("away" | "clear") from places -> rule_away

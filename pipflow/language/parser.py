@@ -82,6 +82,7 @@ class _Sentence:
         self.last_source: list[str] | None = None
         self.distributive = False  # "every bay", "each of A and B": a count applies to each
         self.before_places: list[str] = []  # the places named before the current part
+        self.last_add = False  # whether the last counts came with an add verb (for gapping)
 
     # -- words ------------------------------------------------------------------------------
     def words(self, node: Tree | Token | list) -> str:
@@ -259,6 +260,7 @@ class _Sentence:
 
     def put(self, places: list[str], mode: str, nps: list[dict], words: str, add: bool = False) -> None:
         """Counts for places: one place, each of several, or respectively."""
+        self.last_add = add
         if mode == "respectively" or (len(places) > 1 and mode == "resp"):
             self.respectively(places, nps, words, add)
             return
@@ -545,6 +547,29 @@ class _Sentence:
             self.statements.append(self._goal_statement(places, {"items": {"names": [head]}, "amount": amount,
                                                                   "words": words}, False))
             return
+        if kind in ("g_raise", "g_lower"):
+            head = self.ihead(self.sub(node, "ihead")[0], words)
+            if locs:
+                places = self.loc(locs[0])[0]
+            elif plist:
+                places = self.place_list(plist[0])
+            else:
+                places = self._last_places(words)
+            n = int(self.toks(node, "NUM")[-1].value)
+            amount = {"more": n} if kind == "g_raise" else {"fewer": n}
+            self.statements.append(self._goal_statement(places, {"items": {"names": [head]}, "amount": amount,
+                                                                  "words": words}, False))
+            return
+        if kind == "g_pronoun_dest":
+            # "Take 2 bags out of overflow and drop them at dock 1": the move gets its destination
+            places = self.loc(locs[0])[0]
+            open_moves = [st for st in self.statements if st["op"] == "transfer" and not st.get("to")]
+            if not open_moves:
+                raise TranslationError(f"{_quote(words)}: 'them' of what? nothing was taken before it")
+            for st in open_moves:
+                st["to"] = {"names": places}
+                st["words"] = f"{st['words']}, {words}"
+            return
         if kind == "g_ceiling":
             places = self.place_list(plist[0])
             head = self.ihead(self.sub(node, "ihead")[0], words)
@@ -789,11 +814,9 @@ class _Sentence:
             prev = [st for st in self.statements if st["op"] in ("set", "change", "bound")]
             if not prev:
                 raise TranslationError(f"{_quote(words)}: nothing said before it that it continues")
+            # the verb is what is shared: "add 3 to A, B 2" adds, "A should have ..., B 2" sets
             for np in self.nps(self.sub(node, "items")[0]):
-                st = self._goal_statement(places, np, False)
-                if prev[-1]["op"] == "change" and st["op"] == "set":
-                    raise TranslationError(f"{_quote(words)}: cannot tell whether this count is added or set")
-                self.statements.append(st)
+                self.statements.append(self._goal_statement(places, np, self.last_add))
             return
         if kind == "t_rest":
             places = self.place_list(self.sub(node, "places")[0])
@@ -1006,7 +1029,7 @@ def _fail(exc: UnexpectedInput, lexed: Lexed, lex: Lexicon) -> TranslationError:
     where = ""
     if isinstance(exc, UnexpectedToken) and exc.token.type != "$END":
         k = exc.token.start_pos
-        word = lexed.source[k].text
+        word = lexed.source[k].text.replace("zzposs", "'s")
         prev = lexed.source[k - 1] if k > 0 else None
         if prev is not None and prev.kind == "num" and lexed.tokens[k].type == "UNKNOWN":
             return TranslationError(f"'{prev.text} {word}': cannot tell which product this count is for "
