@@ -76,6 +76,8 @@ def parse_matrix(items: list[str] | None) -> dict[str, list[str]]:
         if "=" not in item:
             raise UserError(f"--matrix {item!r}: expected key=v1,v2")
         key, values = item.split("=", 1)
+        if not key.strip():
+            raise UserError(f"--matrix {item!r}: no input name before '='")
         matrix[key.strip()] = [v.strip() for v in values.split(",") if v.strip()]
         if not matrix[key.strip()]:
             raise UserError(f"--matrix {item!r}: no values")
@@ -307,7 +309,14 @@ def run_bench(config: BenchConfig, progress: bool = True, on_row=None) -> dict:
     specs = [replace(s, fingerprint=fingerprint(s, files[(s.workflow, tuple(sorted(_given(s).items())))]))
              for s in specs]
     out = Path(config.out)
-    out.mkdir(parents=True, exist_ok=True)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+        probe = out / f".pipflow-write-test-{os.getpid()}"
+        probe.write_text("")
+        probe.unlink()
+    except OSError as err:
+        raise UserError(f"--out {out}: cannot write the bench folder there ({err.strerror or err}); "
+                        "nothing was run") from None
     done: dict[tuple, dict] = {}
     if config.resume:
         done = _resumable(out, specs)

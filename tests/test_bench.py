@@ -313,3 +313,15 @@ def test_matrix_variants_with_one_name_are_refused():
     with pytest.raises(UserError, match="both be named 'rounds=2'"):
         variants({"rounds": ["2", "2"]})
     assert [n for n, _ in variants({"rounds": ["1", "2"]})] == ["rounds=1", "rounds=2"]
+
+
+def test_an_out_folder_that_cannot_be_written_is_exit_2(tmp_path):
+    blocker = tmp_path / "a-file"
+    blocker.write_text("mine")
+    for out in (blocker, blocker / "sub"):
+        proc = cli_bench(tmp_path, "--out", str(out))
+        assert proc.returncode == 2 and "cannot write the bench folder" in proc.stderr, proc.stderr
+        assert "Traceback" not in proc.stderr
+    assert blocker.read_text() == "mine"
+    proc = cli_bench(tmp_path, "--out", str(tmp_path / "x"), "--matrix", "=1,2")
+    assert proc.returncode == 2 and "no input name" in proc.stderr
