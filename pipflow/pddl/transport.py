@@ -35,8 +35,8 @@ Measured by ``benchmarks/team_plans.py``: the fewest moves (proven) on the paper
 on all 36 instances of the generated capacity-tight suite, in well under a second each; on an
 8 x 6 x 120 instance 20 moves, equal to the lower bound, in 0.9 s (ENHSP's gbfs: 21 moves in 43 s
 in an earlier run; no plan within 120 s at load 9-11); at 50 x 10 x 2000 no search (the state
-space is far too large): about 350-360 moves against a cheap bound of 315 (the flow alone: 381),
-in about 3-6 s.
+space is far too large): 327 moves against a cheap bound of 315 (the flow alone: 381), in
+about 4-8 s at load 10.
 
 Which problems: any domain whose single action has the *shape* of a transport move, whatever its
 names: parameters (from, to: one type; item; magnitude), effects ``decrease S(from, item)``,
@@ -71,11 +71,12 @@ flow plan is longer than the order-free IP bound; large instances get proportion
 SEARCH_CELLS = 200
 """Above this many (shelf, product) cells the exact search is not tried: its first expansion alone
 would use most of the budget, and plans there are too long for it to reach the goal."""
-IP_SECONDS = 3.0
-"""Total SCIP time for the per-product fewest-moves IPs of one plan. The paper's tasks and the
-tight suite need milliseconds and are solved to optimality (so plans are reproducible); at 50
-shelves x 10 products they stop at their time limit and the best of SCIP's answer and the
-min-cost flow is kept (381 -> about 350-360 moves, machine-dependent)."""
+IP_SECONDS = 8.0
+"""At most this much SCIP time for the per-product fewest-moves IPs of one plan (and 2 s per
+product): a safety net, not the expected cost. The paper's tasks and the tight suite need
+milliseconds and are solved to optimality; on many routes the remainder programs stop at their
+root (:func:`_chunked_fewest_moves`): about 0.4 s per product at 50 shelves x 10 products, 381
+-> 327 moves. Plans are the same on every machine unless a time limit is reached."""
 IP_ARCS = 600
 IP_DIRECT_ARCS = 120
 """Per product, the fewest-moves flow (:func:`_fewest_moves_flow`) is solved as an integer program
@@ -458,9 +459,11 @@ def _chunked_fewest_moves(supply: dict, demand: dict, extra_src: dict, extra_dst
     """Full moves first, then the fewest moves for the rest: when every route carries the same
     most per move (no rule narrows one), each cell's whole multiples of it are paired off as full
     moves, and only the remainders (under one move per cell) and the cells with slack go to
-    :func:`_fewest_moves_flow`, a far smaller program. At 50 shelves x 10 products this reaches
-    within a few percent of the per-cell bound where the whole program, stopped at its time
-    limit, stays about 15% above it. None when the remainder program finds nothing."""
+    :func:`_fewest_moves_flow`, a far smaller program, solved at its root only (SCIP's
+    heuristics; the same answer on every machine while within the time limit). At 50 shelves x 10
+    products this reaches 327 moves against a per-cell bound of 315, where the whole program,
+    stopped at its time limit, stays about 15% above it. None when the remainder program finds
+    nothing."""
     sizes = set(arcs.values())
     flows: dict[tuple[str, str], int] = {}
     supply, demand = dict(supply), dict(demand)
@@ -480,7 +483,7 @@ def _chunked_fewest_moves(supply: dict, demand: dict, extra_src: dict, extra_dst
             if (s in supply or s in extra_src) and (t in demand or t in extra_dst)}
     if len(rest) > IP_ARCS:
         return None
-    more = _fewest_moves_flow(supply, demand, extra_src, extra_dst, need, rest, time_limit)
+    more = _fewest_moves_flow(supply, demand, extra_src, extra_dst, need, rest, time_limit, nodes=1)
     if more is None:
         return None
     for a, x in more.items():
@@ -489,11 +492,14 @@ def _chunked_fewest_moves(supply: dict, demand: dict, extra_src: dict, extra_dst
 
 
 def _fewest_moves_flow(supply: dict, demand: dict, extra_src: dict, extra_dst: dict, need: int,
-                       arcs: dict[tuple[str, str], int], time_limit: float = 2.0) -> Optional[dict]:
+                       arcs: dict[tuple[str, str], int], time_limit: float = 2.0,
+                       nodes: int = 0) -> Optional[dict]:
     """One product's transfers ``{(from, to): units}`` in the fewest moves (each arc carries at
     most ``arcs[from, to]`` units per move), by a small SCIP integer program; then the fewest
-    units, then cells earlier in ``extra_src``/``extra_dst`` (the preferred ones). None when SCIP
-    finds no solution in time (the caller falls back to the min-cost flow).
+    units, then cells earlier in ``extra_src``/``extra_dst`` (the preferred ones). ``nodes``: stop
+    after that many branch-and-bound nodes (1: the root and SCIP's heuristics; a limit on work,
+    unlike time, gives the same answer on every machine). None when SCIP finds no solution (the
+    caller falls back to the min-cost flow).
 
     Why not the flow alone: it minimises units, and moves are ceil(units / 6) per arc, so a flow
     that splits 12 units as 7 + 5 costs 4 moves where 6 + 6 costs 2."""
@@ -505,6 +511,8 @@ def _fewest_moves_flow(supply: dict, demand: dict, extra_src: dict, extra_dst: d
     m = Model("product-moves")
     m.hideOutput()
     m.setParam("limits/time", time_limit)
+    if nodes:
+        m.setParam("limits/totalnodes", nodes)
     total = sum(supply.values()) + sum(extra_src.values()) + 1
     y = {a: m.addVar(vtype="I", lb=0, ub=total) for a in arcs}
     n = {a: m.addVar(vtype="I", lb=0, ub=total) for a in arcs}
@@ -513,9 +521,9 @@ def _fewest_moves_flow(supply: dict, demand: dict, extra_src: dict, extra_dst: d
         m.addCons(y[a] >= n[a])
     e_src = {s: m.addVar(vtype="I", lb=0, ub=c) for s, c in extra_src.items()}
     e_dst = {t: m.addVar(vtype="I", lb=0, ub=c) for t, c in extra_dst.items()}
-    for s in set(supply) | set(extra_src):
+    for s in dict.fromkeys([*supply, *extra_src]):  # a fixed order: SCIP's answer depends on it
         m.addCons(quicksum(y[a] for a in arcs if a[0] == s) == supply.get(s, 0) + (e_src[s] if s in e_src else 0))
-    for t in set(demand) | set(extra_dst):
+    for t in dict.fromkeys([*demand, *extra_dst]):
         m.addCons(quicksum(y[a] for a in arcs if a[1] == t) == demand.get(t, 0) + (e_dst[t] if t in e_dst else 0))
     if e_src:
         m.addCons(quicksum(e_src.values()) == max(need, 0))
@@ -852,8 +860,8 @@ def flow_plan(inst: Instance, limit: "MoveLimit" = None) -> list["Move"]:
     room = {s: inst.capacity[s] - sum(final[s, p] for p in inst.products) for s in inst.shelves}
     flows: dict[tuple[str, str, str], int] = {}
     deadline = time.monotonic() + IP_SECONDS
-    for k, p in enumerate(inst.products):
-        share = min(2.0, (deadline - time.monotonic()) / (len(inst.products) - k))
+    for p in inst.products:
+        share = min(2.0, deadline - time.monotonic())
         for (s, t), x in product_flows(inst, p, final, slack, room, limit, max(share, 0.0)).items():
             flows[s, t, p] = x
     sizes = sorted(set(inst.magnitudes.values()))
