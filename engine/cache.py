@@ -95,6 +95,7 @@ MARKER = "CACHEDIR.TAG"
 _MARKER_TEXT = ("Signature: 8a477f597d28d172789f06886806bc55\n"
                 "# This folder is a pipflow step cache (pipflow cache clear removes its entries).\n"
                 "# For information about cache directory tags, see https://bford.info/cachedir/\n")
+_CREATED = "# pipflow created this folder\n"
 _SHARD = re.compile(r"^[0-9a-f]{2}$")
 _KEY = re.compile(r"^[0-9a-f]{64}$")
 _TEMP = re.compile(r"^\.tmp-[0-9a-f]{64}-[0-9a-f]{8}$")
@@ -209,8 +210,10 @@ class StepCache:
             if any(self.root.iterdir()) and not self._only_entries():
                 raise CacheRefused(f"{self.root}: this folder holds files pipflow did not write; no step results "
                                    f"are cached there (point PIPFLOW_CACHE_DIR at a new or empty folder)")
+        created = not self.root.exists()
         self.root.mkdir(parents=True, exist_ok=True)
-        atomic_write(self.root / MARKER, _MARKER_TEXT, redacted=False)
+        # whether pipflow made the folder: `cache clear` removes only a folder it made
+        atomic_write(self.root / MARKER, _MARKER_TEXT + (_CREATED if created else ""), redacted=False)
 
     def _only_entries(self) -> bool:
         """Whether the folder holds nothing but entries in pipflow's layout (a cache written
@@ -237,6 +240,8 @@ class StepCache:
         pipflow's mark is refused (nothing removed); files that are not entries stay."""
         if not self.root.exists():
             return 0
+        marker = self.root / MARKER
+        created = self._is_marked() and _CREATED in marker.read_text(encoding="utf-8", errors="replace")
         if not self.root.is_dir() or not (self._is_marked() or self._only_entries()):
             raise CacheRefused(f"{self.root}: not a pipflow step cache (no {MARKER} written by pipflow); "
                                "nothing was removed")
@@ -253,8 +258,8 @@ class StepCache:
                 shard.rmdir()  # only if nothing else is in it
             except OSError:
                 pass
-        if not self.leftovers():  # nothing but the mark: the folder was pipflow's alone
-            (self.root / MARKER).unlink(missing_ok=True)
+        if created and not self.leftovers():  # a folder pipflow made, now holding nothing but the mark
+            marker.unlink(missing_ok=True)
             try:
                 self.root.rmdir()
             except OSError:

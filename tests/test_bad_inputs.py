@@ -585,7 +585,19 @@ def test_a_cache_written_before_caches_were_marked_is_still_pipflows(ws, capsys)
     assert code == 0 and next(e for e in events if e["event"] == "end")["cached"] is True
     assert not (ws / "cache" / "CACHEDIR.TAG").exists()  # a hit writes nothing
     code, out, _ = cli(capsys, "cache", "clear")
-    assert code == 0 and "removed 1 cache entry" in out and not (ws / "cache").exists()
+    assert code == 0 and "removed 1 cache entry" in out and not any((ws / "cache").rglob("*"))
+
+
+def test_cache_clear_keeps_a_folder_pipflow_did_not_make(ws, capsys, monkeypatch):
+    """An empty folder of the user's, named as the cache: used, cleared, but never removed."""
+    mine = ws / "my-cache"
+    mine.mkdir()
+    monkeypatch.setenv("PIPFLOW_CACHE_DIR", str(mine))
+    assert cli(capsys, "run", ws / "wf.yaml")[0] == 0
+    assert (mine / "CACHEDIR.TAG").exists()
+    code, out, _ = cli(capsys, "cache", "clear")
+    assert code == 0 and "removed 1 cache entry" in out
+    assert mine.is_dir()
 
 
 def test_cache_that_cannot_be_written_is_a_warning(ws, capsys, monkeypatch):
