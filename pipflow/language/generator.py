@@ -317,11 +317,9 @@ def _parse_quietly(domain_text: str, problem: str) -> Any:
     if not domain_text:
         return None
     try:
-        from pipflow.pddl.common import environment
-        from unified_planning.io import PDDLReader
+        from pipflow.pddl.common import parse  # the shared memo: the debugger reuses this parse
 
-        environment()
-        return PDDLReader().parse_problem_string(domain_text, problem)
+        return parse(domain_text, problem)
     except Exception:
         return None
 
