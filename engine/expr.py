@@ -51,8 +51,29 @@ class TooLarge(SecurityError):
     """An expression would build a value beyond the sandbox's bounds."""
 
 
-def _size(value: Any) -> int:
-    return len(value) if isinstance(value, (str, bytes, list, tuple)) else 0
+def _weight(value: Any, limit: int = MAX_BUILD) -> int:
+    """Characters and items a value spells out when written (as JSON, or joined), counting a
+    list or string that appears many times (``[big] * n``) each time; stops counting past
+    ``limit``. Linear in the distinct containers: each one's weight is computed once."""
+    known: dict[int, int] = {}
+
+    def weigh(v: Any) -> int:
+        if isinstance(v, (str, bytes)):
+            return len(v)
+        if not isinstance(v, (list, tuple, dict)):
+            return 1
+        if id(v) in known:
+            return known[id(v)]
+        known[id(v)] = limit + 1  # a container inside itself weighs "too much"
+        total = len(v)
+        for item in (v.items() if isinstance(v, dict) else v):
+            total += weigh(item)
+            if total > limit:
+                break
+        known[id(v)] = total
+        return total
+
+    return weigh(value)
 
 
 def _check_size(n: float, what: str) -> None:
@@ -96,6 +117,13 @@ def _check_call(func: Any, args: tuple, kwargs: dict, value_first: bool = False)
             _check_size(len(text) + count * len(rest[1]), "replace")
     if name == "expandtabs" and isinstance(owner, str) and args and isinstance(args[0], int):
         _check_size(len(owner) + owner.count("\t") * args[0], "expandtabs")
+    if name in ("do_join", "sync_do_join", "do_sum", "sync_do_sum", "do_tojson") and args:
+        items = args[0] if isinstance(args[0], (list, tuple, dict, str)) else []
+        glue = next((a for a in [*args[1:], *kwargs.values()] if isinstance(a, str)), "")
+        _check_size(_weight(items) + len(glue) * len(items), name.removeprefix("sync_").removeprefix("do_"))
+        if "sum" in name and isinstance(items, (list, tuple)) and any(isinstance(i, (list, tuple, str)) for i in items[:1]):
+            if len(items) * _weight(items) > MAX_BUILD * 100:  # each + copies all so far: quadratic
+                raise TooLarge(f"summing {len(items)} lists or texts would copy them {len(items)} times over")
     if name == "do_indent" and len(args) >= 2 and isinstance(args[0], str) and isinstance(args[1], int):
         _check_size(len(args[0]) + (args[0].count("\n") + 1) * args[1], "indent")
 
@@ -115,9 +143,8 @@ def _after_context(func: Any, args: tuple) -> tuple:
 
 def _bounded_concat(values: Any) -> str:
     """``a ~ b ~ c`` (jinja2's Concat node is rewritten to call this): sizes summed first."""
-    parts = [v if isinstance(v, str) else str(v) for v in values]
-    _check_size(sum(map(len, parts)), "the joined text")
-    return "".join(parts)
+    _check_size(sum(_weight(v) for v in values), "the joined text")
+    return "".join(v if isinstance(v, str) else str(v) for v in values)
 
 
 class _Env(SandboxedEnvironment):
@@ -139,13 +166,13 @@ class _Env(SandboxedEnvironment):
     def call_binop(self, context: Any, operator: str, left: Any, right: Any) -> Any:
         if operator == "*":
             for seq, times in ((left, right), (right, left)):
-                if isinstance(seq, (str, bytes, list, tuple)) and isinstance(times, int):
-                    _check_size(len(seq) * max(times, 0), "repeating a value")
+                if isinstance(seq, (str, bytes, list, tuple)) and isinstance(times, int) and times > 0:
+                    _check_size(_weight(seq, MAX_BUILD // times + 1) * times, "repeating a value")
         elif operator == "**" and isinstance(left, int) and isinstance(right, int) and abs(left) > 1 and right > 0:
             if right * math.log2(abs(left)) > MAX_INT_BITS:
                 raise TooLarge(f"{left} ** {right} has more than {MAX_INT_BITS} bits")
         elif operator == "+" and isinstance(left, Sized) and isinstance(right, Sized):
-            _check_size(_size(left) + _size(right), "joining two values")
+            _check_size(_weight(left) + _weight(right), "joining two values")
         elif operator == "%" and isinstance(left, str):
             _check_format(left)
             if "*" in left:  # '%*d' takes its width from the values
