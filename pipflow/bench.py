@@ -475,16 +475,16 @@ def markdown_table(results: dict) -> str:
     for variant in results["variants"]:
         if len(results["variants"]) > 1:
             lines.append(f"### {variant['name']}\n")
-        lines += ["| Task | SR (%) | understood (%) | misread | TC max/avg (m) | GCR | Exe | RU | makespan (s) | error |",
+        lines += ["| Task | SR (%) | understood (%) | misread | TC max/avg all robots/avg robots that moved (m) | GCR | Exe | RU | makespan (s) | error |",
                   "|---|---|---|---|---|---|---|---|---|---|"]
         for t in variant["tasks"]:
             err = (t.get("error") or "").replace("|", "/").replace("\n", " ")[:80]
             lines.append(f"| {t['id']} | {100 * t['sr']:.0f} | {_pct(t.get('understood'))} | {t.get('misread', 0)} | "
-                         f"{_fmt(t['tc_max'])}/{_fmt(t['tc_avg'])} | "
+                         f"{_fmt(t['tc_max'])}/{_fmt(t['tc_avg'])}/{_fmt(t.get('tc_avg_moved'))} | "
                          f"{t['gcr']:.2f} | {t['exe']:.2f} | {t['ru']:.2f} | {_fmt(t.get('makespan'))} | {err} |")
         s = variant["summary"]
         lines.append(f"| **all** ({s['runs']} runs) | {100 * s['sr']:.0f} | {_pct(s.get('understood'))} | "
-                     f"{s.get('misread', 0)} | {_fmt(s['tc_max'])}/{_fmt(s['tc_avg'])} | "
+                     f"{s.get('misread', 0)} | {_fmt(s['tc_max'])}/{_fmt(s['tc_avg'])}/{_fmt(s.get('tc_avg_moved'))} | "
                      f"{s['gcr']:.2f} | {s['exe']:.2f} | {s['ru']:.2f} | | |")
         lines.append("")
         if variant.get("constructions"):
