@@ -32,8 +32,9 @@ from pipflow.household.grammar import NOUN_DUAL, grammar_text
 from pipflow.household.lexicon import ACTIVITIES, FILLER, LIGHT_CATEGORY_WORD, PHRASES, plurals, words_of
 from pipflow.language.numbers import read_number
 
-#: the most readings of one ambiguous command that are compared (each is resolved)
-MAX_READINGS = 16
+#: the most readings of one ambiguous command that are compared (each is resolved); more is
+#: refused, never cut short
+MAX_READINGS = 64
 
 
 @dataclass
@@ -229,9 +230,10 @@ def parse(command: str, world: dict, notes: list[str] | None = None) -> list[dic
                                "a language model may read it") from None
     readings: list[dict] = []
     seen: set[str] = set()
-    for k, t in enumerate(CollapseAmbiguities().transform(tree)):
-        if k >= MAX_READINGS:
-            break
+    trees = CollapseAmbiguities().transform(tree)
+    if len(trees) > MAX_READINGS:   # comparing only some readings could miss one that differs
+        raise TranslationError(f"{command.strip()!r} can be read in {len(trees)} ways; say it in shorter sentences")
+    for t in trees:
         order = Builder(tags, command).order(t)
         key = json.dumps(order, sort_keys=True)
         if key not in seen:
