@@ -32,7 +32,7 @@ from jinja2 import StrictUndefined, Undefined, nodes
 from jinja2.exceptions import SecurityError, TemplateError, TemplateSyntaxError
 from jinja2.parser import Parser
 from jinja2.visitor import NodeTransformer
-from jinja2.sandbox import SandboxedEnvironment
+from jinja2.sandbox import ImmutableSandboxedEnvironment
 
 _OPEN = "${"
 _WHOLE = re.compile(r"^\s*\$\{(.*)\}\s*$", re.S)
@@ -110,6 +110,8 @@ def _check_call(func: Any, args: tuple, kwargs: dict, value_first: bool = False)
             _check_int(value, f"argument of {name.removeprefix('do_')}")
     if name in ("format", "format_map", "do_format"):
         _check_format(owner if isinstance(owner, str) else (args[0] if args else None))
+    if name == "join" and isinstance(owner, str) and args and isinstance(args[0], (list, tuple, str)):
+        _check_size(_weight(args[0]) + len(owner) * len(args[0]), "join")
     if name in ("replace", "do_replace"):
         text, rest = (owner, args) if isinstance(owner, str) else (args[-3] if len(args) >= 3 else None, args[-2:])
         if isinstance(text, str) and len(rest) >= 2 and isinstance(rest[0], str) and isinstance(rest[1], str):
@@ -147,10 +149,11 @@ def _bounded_concat(values: Any) -> str:
     return "".join(v if isinstance(v, str) else str(v) for v in values)
 
 
-class _Env(SandboxedEnvironment):
+class _Env(ImmutableSandboxedEnvironment):
     """Sandbox in which ``a.b`` on a mapping looks up the key first, so an output named
-    ``items`` or ``keys`` is the output and not the dict method; and whose operators, calls and
-    filters check the size of what they would build before building it."""
+    ``items`` or ``keys`` is the output and not the dict method; whose operators, calls and
+    filters check the size of what they would build before building it; and in which values
+    cannot be changed in place (``l.extend(l)`` doubles a list per call: no bound would hold)."""
 
     intercepted_binops = frozenset({"*", "**", "+", "%", "//"})
 
