@@ -459,18 +459,13 @@ def _pct(value: float | None) -> str:
 def markdown_table(results: dict) -> str:
     """The paper's table for the task file's domain: for the warehouse, per task SR (%),
     understood (%), misread runs and travel cost max/avg (m); a domain may group it otherwise
-    (household: per category), and the understanding summary follows its table."""
+    (household: per category)."""
     from pipflow.benchdomains import domain_named
 
     config = results.get("config") or {}
     domain = domain_named(config.get("domain"))
-    if domain.table is not None:
-        lines = [domain.table(results, Path(config["tasks"]))]
-        for variant in results["variants"]:
-            s = variant["summary"]
-            lines.append(f"understood: {_pct(s.get('understood'))}%  misread: {s.get('misread', 0)} run(s)"
-                         + (f"  ({variant['name']})" if len(results["variants"]) > 1 else ""))
-        return "\n".join(lines)
+    if domain.table is not None:  # its layout is the domain's, understanding columns included
+        return domain.table(results, Path(config["tasks"]))
     lines = []
     for variant in results["variants"]:
         if len(results["variants"]) > 1:
