@@ -98,7 +98,7 @@ def solve(ctx: StepContext, problem: str | None, domain: str, engine: str = DEFA
     plan = plan_in_world_names(result.plan, world)
     if plan is not None:
         ctx.write_artifact("plan.txt", format_plan(plan))
-    return {"status": result.status, "plan": plan, "message": message, "time": result.time,
+    return {"status": result.status.value, "plan": plan, "message": message, "time": result.time,
             "engine": result.engine}
 
 

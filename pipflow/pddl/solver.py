@@ -20,6 +20,7 @@ import time
 import warnings
 from collections import OrderedDict
 from dataclasses import dataclass, field
+from enum import Enum
 from typing import Any
 
 from pipflow.errors import InputError
@@ -31,14 +32,36 @@ MEMORY = 64
 _unsolved: "OrderedDict[str, SolveResult]" = OrderedDict()
 
 
+class Status(str, Enum):
+    """The outcome of one planner call. A ``str`` so that run records, JSON outputs and
+    comparisons with the plain words (``status == "solved"``) keep working."""
+
+    SOLVED = "solved"
+    UNSOLVABLE = "unsolvable"
+    TIMEOUT = "timeout"
+    ERROR = "error"
+
+    def __str__(self) -> str:  # the word itself in messages and f-strings, not "Status.SOLVED"
+        return self.value
+
+
+#: outcomes that carry a plan
+POSITIVE_OUTCOMES = frozenset({Status.SOLVED})
+
+
 @dataclass
 class SolveResult:
-    status: str  # solved | unsolvable | timeout | error
+    status: Status
     plan: list[dict] | None
     message: str
     time: float
     engine: str = ""
     details: dict = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        self.status = Status(self.status)  # a plain word is accepted and checked
+        if (self.status in POSITIVE_OUTCOMES) != (self.plan is not None):
+            raise ValueError(f"a {self.status} result must {'' if self.status in POSITIVE_OUTCOMES else 'not '}carry a plan")
 
 
 def planner_names() -> list[str]:
@@ -86,7 +109,7 @@ def remembered(digest: str) -> "SolveResult | None":
 
 def remember(digest: str, result: "SolveResult") -> None:
     """Keep an unsolved outcome (solved ones are not kept: their time is measured every run)."""
-    if result.status == "solved":
+    if result.status in POSITIVE_OUTCOMES:
         return
     _unsolved[digest] = result
     _unsolved.move_to_end(digest)
@@ -120,32 +143,32 @@ def solve_problem(problem: Any, engine: str = DEFAULT_ENGINE, params: dict | Non
         try:
             ensure_java()
         except Exception as exc:
-            return SolveResult("error", None, str(exc), 0.0, engine)
+            return SolveResult(Status.ERROR, None, str(exc), 0.0, engine)
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")  # "we cannot establish whether X can solve this problem"
             with OneshotPlanner(name=engine, params=dict(params or {})) as planner:
                 result = planner.solve(problem, timeout=timeout)
     except Exception as exc:
-        return SolveResult("error", None, f"engine {engine} failed: {type(exc).__name__}: {exc}",
+        return SolveResult(Status.ERROR, None, f"engine {engine} failed: {type(exc).__name__}: {exc}",
                            time.monotonic() - started, engine)
     elapsed = time.monotonic() - started
     logs = _logs(result)
     st = result.status
     if st in (S.SOLVED_SATISFICING, S.SOLVED_OPTIMALLY) and result.plan is not None:
         plan = plan_to_data(result.plan)
-        return SolveResult("solved", plan, f"{engine} found a plan of {len(plan)} action(s) in {elapsed:.2f} s"
+        return SolveResult(Status.SOLVED, plan, f"{engine} found a plan of {len(plan)} action(s) in {elapsed:.2f} s"
                            + (" (optimal)" if st == S.SOLVED_OPTIMALLY else ""), elapsed, engine)
     if st == S.UNSOLVABLE_PROVEN:
-        return SolveResult("unsolvable", None, f"{engine} proved that no plan reaches the goal"
+        return SolveResult(Status.UNSOLVABLE, None, f"{engine} proved that no plan reaches the goal"
                            + (f": {logs}" if logs else ""), elapsed, engine)
     if st == S.TIMEOUT:
-        return SolveResult("timeout", None, f"the planner {engine} timed out after {timeout:g} s without a plan",
+        return SolveResult(Status.TIMEOUT, None, f"the planner {engine} timed out after {timeout:g} s without a plan",
                            elapsed, engine)
     if st == S.UNSOLVABLE_INCOMPLETELY:
-        return SolveResult("error", None, f"{engine} gave up without a plan (it is incomplete, so a plan may "
+        return SolveResult(Status.ERROR, None, f"{engine} gave up without a plan (it is incomplete, so a plan may "
                            f"still exist; try engine 'enhsp')" + (f": {logs}" if logs else ""), elapsed, engine)
     if st == S.UNSUPPORTED_PROBLEM:
-        return SolveResult("error", None, f"{engine} does not support this problem" + (f": {logs}" if logs else ""),
+        return SolveResult(Status.ERROR, None, f"{engine} does not support this problem" + (f": {logs}" if logs else ""),
                            elapsed, engine)
-    return SolveResult("error", None, f"{engine} failed ({st.name})" + (f": {logs}" if logs else ""), elapsed, engine)
+    return SolveResult(Status.ERROR, None, f"{engine} failed ({st.name})" + (f": {logs}" if logs else ""), elapsed, engine)
