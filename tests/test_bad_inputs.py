@@ -378,10 +378,20 @@ EXPRESSIONS = {
     "join many copies": "${ (['a' * 10**6] * 11) | join }",
     "json of many copies": "${ (['a' * 10**6] * 11) | tojson }",
     "sum of many lists": "${ ([[1] * 1000] * 5000) | sum(start=[]) }",
+    "str.join of many copies": "${ ('x' * 10**6).join(['a'] * 10**6) }",
     "indent every line": "${ ('a\\n' * 5000000) | indent(1000) }",
     "slice into pieces": "${ [1, 2] | slice(10**9) | list }",
     "wordwrap width": "${ 'a b' | wordwrap(10**9) }",
 }
+
+
+def test_expressions_cannot_change_values_in_place(ws, capsys):
+    """`[l.extend(l), l.extend(l), ...]` doubles a list per call: no size bound could hold."""
+    wf = ws / "expr.yaml"
+    wf.write_text("pipflow: 1\nname: expr\nsteps:\n  - {id: a, uses: core.value, with: {value: [1, 2]}}\n"
+                  "  - id: grow\n    uses: core.value\n    with: {value: \"${ [a.value.extend(a.value)] * 40 }\"}\n")
+    code, _, err = cli(capsys, "run", wf)
+    assert code == 2 and "step 'grow'" in err and "extend" in err and "unsafe" in err
 
 
 def test_ordinary_expressions_with_big_numbers_still_work(ws, capsys):
