@@ -22,7 +22,7 @@ start: sentence
 sentence: lead? part (sep part)* sep?
 lead: ("but" | "and" | "then" | "also" | "so" | "however" | "now" | "oh" | "well" | "next"
       | "finally" | "first" | "afterwards" | "after" "that" | "additionally" | "plus"
-      | ("can" | "could" | "would") "you" | "you" ("should" | "must" | "can") | "just" | "only") ","?
+      | ("can" | "could" | "would") "you" | "you" ("should" | "must" | "can") | "just") ","?
 
 // a separator costs: of two readings, the one with fewer, longer parts wins
 // ("only alpha and charlie may carry bolts" is one rule, not "only alpha" and a second clause)

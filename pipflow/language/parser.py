@@ -22,10 +22,11 @@ import functools
 from typing import Any
 
 from lark import Lark, Token, Tree
+from lark.visitors import CollapseAmbiguities
 from lark.exceptions import UnexpectedEOF, UnexpectedInput, UnexpectedToken
 from lark.lexer import Lexer
 
-from pipflow.errors import TranslationError
+from pipflow.errors import PipflowError, TranslationError
 from pipflow.language.grammar import GRAMMAR, nullable_optionals
 from pipflow.language.lexicon import Lexed, Lexicon
 from pipflow.language.robots import RobotSelector
@@ -52,6 +53,13 @@ class _ListLexer(Lexer):
 def _parser() -> Lark:
     """Built once per process (about a second): Earley over the command grammar."""
     return Lark(nullable_optionals(GRAMMAR), parser="earley", lexer=_ListLexer, keep_all_tokens=True)
+
+
+@functools.lru_cache(maxsize=1)
+def _all_readings_parser() -> Lark:
+    """The same grammar keeping every reading (``_ambig`` nodes), to check that they agree."""
+    return Lark(nullable_optionals(GRAMMAR), parser="earley", lexer=_ListLexer, keep_all_tokens=True,
+                ambiguity="explicit")
 
 
 @functools.lru_cache(maxsize=1)
@@ -771,6 +779,8 @@ class _Sentence:
             if not last:
                 raise TranslationError(f"{_quote(words)}: nothing said before it to repeat")
             prev = last[-1]
+            if prev["op"] not in ("set", "change", "bound", "empty", "fill", "keep", "distribute"):
+                raise TranslationError(f"{_quote(words)}: cannot tell what to repeat there")
             group = [s for s in self.statements if s.get("words") == prev.get("words")]
             for s in group:
                 self.statements.append({**s, "places": {"names": places}, "words": f"{s['words']} ({words})"})
@@ -873,13 +883,15 @@ class _Sentence:
                 self.rules.append({**base, "to": p})
             return
         scope = self.sub(node, "rscope")
-        self.scoped(base, scope[0] if scope else None)
+        # "Using only robot 5, move ...", "... without robot 3": an instrument of the sentence's
+        # goal, as a pronoun would be
+        instrument = self.first_word(node) in ("using", "with", "by", "without")
+        self.scoped(base, scope[0] if scope else None, instrument)
 
-    def scoped(self, base: dict, scope: Tree | None) -> None:
+    def scoped(self, base: dict, scope: Tree | None, pronoun: bool = False) -> None:
         """One rule per product and place the scope names; none named: bound to the sentence."""
         products: list[str] = []
         places: list[dict] = []
-        pronoun = False
         unscoped_all = False
         if scope is not None:
             for c in scope.children:
@@ -897,7 +909,7 @@ class _Sentence:
                     places += [{"to": p} for p in self.place_list(self.sub(c, "places")[0])]
                 elif c.data == "rw_at":
                     for p in self.place_list(self.sub(c, "places")[0]):
-                        places += [{"from": p}, {"to": p}]
+                        places += [{"from": p, "at": True}, {"to": p, "at": True}]
                 elif c.data == "rw_route":
                     a, b = self.sub(c, "places")
                     for x in self.place_list(a):
@@ -907,6 +919,14 @@ class _Sentence:
                     pronoun = True
                 elif c.data in ("rw_all",):
                     unscoped_all = True
+        # "from shelf1 to shelf2" is one move, whether read as a route or as "from" then "to"
+        merged: list[dict] = []
+        for p in places:
+            if merged and set(p) == {"to"} and set(merged[-1]) == {"from"}:
+                merged[-1] = {**merged[-1], **p}
+            else:
+                merged.append(p)
+        places = [{k: v for k, v in p.items() if k != "at"} for p in merged]  # "at P": to and from P
         if not products and not places:
             # no scope words: the rule holds for the whole command, unless a pronoun ("for
             # that", "move them") points at what the sentence asks for
@@ -1049,6 +1069,71 @@ def _fail(exc: UnexpectedInput, lexed: Lexed, lex: Lexicon) -> TranslationError:
                             f"{lex.index.candidates('product')}; robots: {lex.index.candidates('robot')})")
 
 
+def _read(tree: Tree, lexed: Lexed, lex: Lexicon, selector: RobotSelector) -> _Sentence:
+    reader = _Sentence(lexed, lex, selector)
+    for part in tree.children[0].children:
+        if isinstance(part, Tree) and part.data not in ("sep", "lead"):
+            reader.part(part)
+    reader.finish()
+    return reader
+
+
+#: readings of one sentence compared at most; beyond, the sentence is refused as too ambiguous
+MAX_READINGS = 64
+
+
+def _meaning(reader: _Sentence, world: dict) -> str | None:
+    """What a reading asks for, for comparison: its resolved goal and rules (None when the reading
+    does not resolve on its own: it is then no meaning to compare)."""
+    from pipflow.language.resolver import resolve  # the resolver imports nothing of the parser
+
+    try:
+        r = resolve({"statements": reader.statements, "rules": reader.rules}, world, check=False)
+    except PipflowError:
+        return None
+    return repr((r.goal, r.constraints))
+
+
+def _parts(tree: Tree) -> int:
+    return sum(1 for p in tree.children[0].children if isinstance(p, Tree) and p.data not in ("sep", "lead"))
+
+
+def _one_meaning(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict) -> _Sentence:
+    """Read a sentence in every way the grammar allows, and keep its meaning only if there is one.
+
+    Readings that make no sense (an error, or nothing that resolves) are not meanings. Of the
+    rest, all must ask for the same goal and rules, or the sentence is refused with two of
+    them: the grammar's preferences never choose between meanings silently. The reading kept
+    is the one with the fewest, longest parts.
+    """
+    tree = _all_readings_parser().parse(lexed.tokens)
+    if not any(t.data == "_ambig" for t in tree.iter_subtrees()):
+        return _read(tree, lexed, lex, selector)
+    sentence = " ".join(t.text for t in lexed.source).replace(" zzposs", "'s")
+    readings: list[tuple[int, _Sentence, str | None]] = []
+    errors: list[tuple[int, PipflowError]] = []
+    for k, alt in enumerate(CollapseAmbiguities().transform(tree)):
+        if k >= MAX_READINGS:
+            raise TranslationError(f"'{sentence}' can be read in too many ways to be sure of one; "
+                                   f"say it in shorter sentences")
+        try:
+            reader = _read(alt, lexed, lex, selector)
+        except PipflowError as exc:
+            errors.append((_parts(alt), exc))
+            continue
+        readings.append((_parts(alt), reader, _meaning(reader, world)))
+    if not readings:
+        raise min(errors, key=lambda e: e[0])[1]
+    meant = [(n, r, m) for n, r, m in readings if m is not None]
+    if len({m for _, _, m in meant}) > 1:
+        (_, a, ma), (_, b, _) = meant[0], next(x for x in meant if x[2] != meant[0][2])
+        wa = "; ".join(s["words"] for s in a.statements + a.rules)
+        wb = "; ".join(s["words"] for s in b.statements + b.rules)
+        raise TranslationError(f"'{sentence}' can be read in two ways that ask for different things "
+                               f"('{wa}' or '{wb}'); nothing is guessed: say it another way")
+    return min(meant or readings, key=lambda x: x[0])[1]
+
+
 def parse(command: str, world: dict) -> dict:
     """The order of a command: ``{"statements": [...], "rules": [...], "command": command}``.
 
@@ -1068,17 +1153,9 @@ def parse(command: str, world: dict) -> dict:
                                    f"are read up to {MAX_SENTENCE_WORDS} words (end it with a full stop "
                                    f"and go on in a new one)")
         try:
-            tree = _parser().parse(lexed.tokens)
+            reader = _one_meaning(lexed, lex, selector, world)
         except UnexpectedInput as exc:
             raise _fail(exc, lexed, lex) from None
-        except UnexpectedEOF as exc:  # pragma: no cover - subclass of UnexpectedInput
-            raise _fail(exc, lexed, lex) from None
-        reader = _Sentence(lexed, lex, selector)
-        sentence = tree.children[0]
-        for part in sentence.children:
-            if isinstance(part, Tree) and part.data not in ("sep", "lead"):
-                reader.part(part)
-        reader.finish()
         statements += reader.statements
         rules += reader.rules
     if not statements and not rules:

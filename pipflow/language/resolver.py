@@ -248,7 +248,10 @@ def _transfer(st: _State, s: dict) -> None:
 
 def _swap(st: _State, s: dict) -> None:
     words = s.get("words", "")
-    a, b = _names(s.get("places"), st.places)
+    places = _names(s.get("places"), st.places)
+    if len(places) != 2:
+        raise TranslationError(f"'{words}': a swap needs exactly two places ({len(places)} given)")
+    a, b = places
     st.check_names([a, b], [], words)
     sel = s.get("items") or {"all": True}
     items = _names(sel, st.products) if "names" in sel else [
