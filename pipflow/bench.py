@@ -35,6 +35,8 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
+import yaml
+
 from pipflow.errors import UserError
 
 RESULT_FIELDS = ["variant", "task", "seed", "status", "success", "goal_met", "gcr", "exe", "ru", "tc_max",
@@ -135,11 +137,41 @@ def run_one(spec: RunSpec) -> dict:
     domain = domain_named(task.get("domain"))
     row.update(domain.score(spec.world_path, task, outputs, refusal, error))
     if domain.understand is not None:
-        row.update(domain.understand(task, outputs, row["status"], row.get("error_kind")))
+        read = outputs if row["status"] == "succeeded" or not row.get("run_dir") else \
+            recorded_outputs(Path(row["run_dir"]), ("goal", "constraints"))
+        row.update(domain.understand(task, read, row["status"], row.get("error_kind")))
     else:
         row.update({"understood": None, "misread": None, "understanding": "not measured for this domain"})
     row["seconds"] = round(time.perf_counter() - started, 3)
     return row
+
+
+def recorded_outputs(run_dir: Path, names: tuple[str, ...]) -> dict:
+    """The workflow outputs ``names`` of a run that did not finish, evaluated over the step outputs
+    its record holds: a run that failed after resolving its goal (in allocation, say) still shows
+    what it understood. An output whose steps did not finish is left out."""
+    from pipflow.engine.expr import resolve
+    from pipflow.engine.store import read_json
+
+    try:
+        snapshot = yaml.safe_load((run_dir / "workflow.yaml").read_text(encoding="utf-8")) or {}
+        steps = [d for d in (run_dir / "steps").iterdir() if d.is_dir()]
+    except (OSError, ValueError, yaml.YAMLError):
+        return {}
+    namespace: dict[str, Any] = {}
+    for folder in steps:
+        data = read_json(folder / "outputs.json", None)
+        if isinstance(data, dict):
+            namespace[folder.name] = data["outputs"] if isinstance(data.get("outputs"), dict) else data
+    out: dict[str, Any] = {}
+    expressions = snapshot.get("outputs") if isinstance(snapshot, dict) else None
+    for name in names:
+        if isinstance(expressions, dict) and name in expressions:
+            try:
+                out[name] = resolve(expressions[name], namespace)
+            except Exception:  # a step it needs did not finish: nothing to read
+                continue
+    return out
 
 
 def _workers(jobs: int | None) -> int:

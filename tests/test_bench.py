@@ -325,3 +325,24 @@ def test_an_out_folder_that_cannot_be_written_is_exit_2(tmp_path):
     assert blocker.read_text() == "mine"
     proc = cli_bench(tmp_path, "--out", str(tmp_path / "x"), "--matrix", "=1,2")
     assert proc.returncode == 2 and "no input name" in proc.stderr
+
+
+def test_the_goal_of_a_run_that_did_not_finish_is_read_from_its_record(local_bench, tmp_path):
+    import shutil
+
+    from pipflow.bench import recorded_outputs
+
+    out, _ = local_bench
+    row = read_row(out, ("default", "t-two", 0))
+    record = tmp_path / "record"
+    shutil.copytree(row["run_dir"], record)
+    finished = json.loads((record / "outputs.json").read_text())
+    assert recorded_outputs(record, ("goal", "constraints")) == {"goal": finished["goal"],
+                                                                 "constraints": finished["constraints"]}
+    for later in ("graph", "allocate", "schedule", "simulate"):  # as if it failed after the loop
+        shutil.rmtree(record / "steps" / later, ignore_errors=True)
+    (record / "outputs.json").unlink()
+    assert recorded_outputs(record, ("goal",)) == {"goal": {"shelf1": {"product2": 5}, "shelf2": {"product2": 0}}}
+    shutil.rmtree(record / "steps" / "verify")
+    assert recorded_outputs(record, ("goal",)) == {}
+    assert recorded_outputs(tmp_path / "nowhere", ("goal",)) == {}
