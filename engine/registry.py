@@ -66,7 +66,10 @@ class Registry:
         """For an unknown step: the plugins that failed to load, one of which may provide it."""
         if not self.broken:
             return ""
-        return "; step plugin(s) that failed to load: " + "; ".join(f"{o} ({why})" for o, why in self.broken.items())
+        shown = [f"{o} ({why})" for o, why in list(self.broken.items())[:2]]
+        more = len(self.broken) - len(shown)
+        return ("; step plugin(s) that failed to load: " + "; ".join(shown)
+                + (f"; and {more} more (see `pipflow steps`)" if more > 0 else ""))
 
 
 def _register_target(registry: Registry, target: object, origin: str) -> None:
