@@ -34,6 +34,7 @@ from typing import Any, Iterable
 import numpy as np
 
 from pipflow.errors import AllocationError, InputError
+from pipflow.scheduling import Timeline, predecessors
 
 EPS = 1e-7
 SENSES = ("<=", ">=", "==")
@@ -260,10 +261,45 @@ def blind(Q, Y, c, allowed, lin: list[Linear] = ()) -> list[int]:
 
 
 # ====================================================================== rules
-def _matches(rule: dict, node: dict, keys: Iterable[str]) -> bool:
+@dataclass(frozen=True)
+class RobotRule:
+    """One `only`/`never` rule: on the subtasks whose fields equal ``match``, keep only (or
+    exclude) ``robots``. ``label`` names the rule in an infeasibility message."""
+
+    kind: str  # "only" | "never"
+    robots: frozenset[str]
+    match: dict[str, Any]
+    label: str
+
+    def applies(self, node: dict) -> bool:
+        return _matches(self.match, node)
+
+    def excludes(self, robot: str) -> bool:
+        return (robot in self.robots) if self.kind == "never" else (robot not in self.robots)
+
+
+@dataclass(frozen=True)
+class LinearRule:
+    """One extra linear constraint as written, with its coefficients over the whole team; it
+    becomes a :class:`Linear` for each subtask whose fields equal ``match``."""
+
+    coef: np.ndarray = field(compare=False)
+    sense: str
+    rhs: float
+    label: str
+    match: dict[str, Any]
+
+    def applies(self, node: dict) -> bool:
+        return _matches(self.match, node)
+
+    def linear(self) -> Linear:
+        return Linear(self.coef, self.sense, self.rhs, self.label)
+
+
+def _matches(match: dict[str, Any], node: dict) -> bool:
     have = dict(node.get("fields") or {})
     have.setdefault("action", node.get("action"))
-    return all(have.get(k) == rule[k] for k in keys)
+    return all(have.get(k) == v for k, v in match.items())
 
 
 class Rules:
@@ -278,7 +314,7 @@ class Rules:
         known_fields = {"action"}
         for n in nodes:
             known_fields |= set((n.get("fields") or {}).keys())
-        self.rules: list[tuple[str, set[str], dict, list[str], str]] = []
+        self.rules: list[RobotRule] = []
         for k, rule in enumerate(constraints or []):
             where = f"constraint #{k + 1} {rule!r}"
             if not isinstance(rule, dict) or len(_RULE_KEYS & set(rule)) != 1:
@@ -290,8 +326,9 @@ class Rules:
             self._check_robots(names, where)
             keys = [key for key in rule if key not in (kind, "words")]  # words: where the rule came from
             self._check_fields(keys, known_fields, where)
-            self.rules.append((kind, set(names), rule, keys, f"rule #{k + 1} {_show(rule)}"))
-        self.linear: list[tuple[dict, list[str], np.ndarray, str, float, str]] = []
+            self.rules.append(RobotRule(kind, frozenset(names), {key: rule[key] for key in keys},
+                                        f"rule #{k + 1} {_show(rule)}"))
+        self.linear: list[LinearRule] = []
         for k, item in enumerate(linear or []):
             where = f"linear constraint #{k + 1} {item!r}"
             if not isinstance(item, dict):
@@ -328,7 +365,7 @@ class Rules:
             keys = [key for key in item if key not in _LINEAR_KEYS]
             self._check_fields(keys, known_fields, where)
             label = item.get("name") or f"linear #{k + 1} {_show(item)}"
-            self.linear.append((item, keys, coef, sense, float(item["rhs"]), label))
+            self.linear.append(LinearRule(coef, sense, float(item["rhs"]), label, {key: item[key] for key in keys}))
 
     def _check_robots(self, names, where: str) -> None:
         if not isinstance(names, list) or not names:
@@ -347,19 +384,17 @@ class Rules:
         """Allowed robots for ``node`` and, for the excluded ones, which rule excluded them."""
         allowed = np.ones(len(self.robots), dtype=bool)
         why: dict[str, str] = {}
-        for kind, names, rule, keys, label in self.rules:
-            if not _matches(rule, node, keys):
+        for rule in self.rules:
+            if not rule.applies(node):
                 continue
             for r, i in self.index.items():
-                out = (r in names) if kind == "never" else (r not in names)
-                if out and allowed[i]:
+                if rule.excludes(r) and allowed[i]:
                     allowed[i] = False
-                    why[r] = label
+                    why[r] = rule.label
         return allowed, why
 
     def lin(self, node: dict) -> list[Linear]:
-        return [Linear(coef, sense, rhs, label) for item, keys, coef, sense, rhs, label in self.linear
-                if _matches(item, node, keys)]
+        return [rule.linear() for rule in self.linear if rule.applies(node)]
 
 
 def _show(d: dict) -> str:
@@ -426,171 +461,195 @@ def allocate(graph: dict, world: dict, method: str = "scip", constraints: list |
 
     ``mode="subtask"``: one IP per subtask (the paper); ``mode="frontier"`` (scip only): all ready
     subtasks in one IP minimising their latest finish, then the total distance."""
-    from pipflow.scheduling import Timeline, predecessors
-
     if method not in METHODS:
         raise InputError(f"unknown allocation method {method!r}; use one of {', '.join(METHODS)}")
     if mode not in ("subtask", "frontier"):
         raise InputError(f"unknown allocation mode {mode!r}; use subtask or frontier")
-    nodes = {n["id"]: n for n in graph["nodes"]}
-    preds = predecessors(graph)
-    robots, skills, Q = skill_matrix(world, graph["nodes"])
-    rules = Rules(robots, skills, Q, constraints, linear, graph["nodes"])
-    tl = Timeline(world, travel=travel, speed=speed, handling=handling)
-    for n in graph["nodes"]:
-        tl.check_route(n)
-
+    walk = AllocationWalk(graph, world, method, constraints, linear, travel=travel, speed=speed,
+                          handling=handling, time_limit=time_limit)
     t_start = time.perf_counter()
-    assignments: list[dict] = []
-    stats: dict[str, Any] = {"solve_s": [], "waves": []}
-    done: set[str] = set()
-    order = sorted(nodes, key=lambda s: nodes[s]["index"])
-    ready = [s for s in order if not preds[s]]
+    if mode == "subtask" or method != "scip":
+        walk.run_per_subtask()
+    else:
+        walk.run_by_waves()
+    return walk.result(mode, time.perf_counter() - t_start)
 
-    def refresh() -> list[str]:
-        return [s for s in order if s not in done and all(p in done for p in preds[s])]
 
-    def one(sid: str) -> None:
-        node = nodes[sid]
-        Y = need_vector(node, skills)
-        allowed, why = rules.mask(node)
-        lin = rules.lin(node)
-        c = np.array([tl.cost(r, node) for r in robots])
+class AllocationWalk:
+    """One allocation of a graph: the robots, their skill matrix, the rules, the timeline of
+    where each robot is and when it is free, and what has been allocated so far.
+
+    An object rather than a function with closures so that the per-subtask and per-wave walks
+    share their state openly (``assignments``, ``done``, ``stats``) instead of through a nested
+    function and a dozen parameters."""
+
+    def __init__(self, graph: dict, world: dict, method: str, constraints: list | None, linear: list | None,
+                 *, travel=None, speed: float = 1.0, handling: float = 2.0, time_limit: float = 10.0):
+        self.method = method
+        self.time_limit = time_limit
+        self.nodes = {n["id"]: n for n in graph["nodes"]}
+        self.preds = predecessors(graph)
+        self.robots, self.skills, self.Q = skill_matrix(world, graph["nodes"])
+        self.rules = Rules(self.robots, self.skills, self.Q, constraints, linear, graph["nodes"])
+        self.timeline = Timeline(world, travel=travel, speed=speed, handling=handling)
+        for n in graph["nodes"]:
+            self.timeline.check_route(n)
+        self.order = sorted(self.nodes, key=lambda s: self.nodes[s]["index"])
+        self.assignments: list[dict] = []
+        self.done: set[str] = set()
+        self.solve_s: list[float] = []
+        self.waves: list[dict] = []
+
+    # ------------------------------------------------------------------ the frontier
+    def ready(self) -> list[str]:
+        """Subtasks not yet allocated whose predecessors all are, in graph order."""
+        return [s for s in self.order if s not in self.done and all(p in self.done for p in self.preds[s])]
+
+    def run_per_subtask(self) -> None:
+        queue = [s for s in self.order if not self.preds[s]]
+        while queue:
+            sid = queue.pop(0)  # the frontier's next task, breadth first
+            self.allocate_one(sid)
+            for s in self.ready():
+                if s not in queue:
+                    queue.append(s)
+
+    def run_by_waves(self) -> None:
+        while len(self.done) < len(self.nodes):
+            self.allocate_wave(self.ready())
+
+    def _commit(self, sid: str, names: list[str], costs: dict[str, float]) -> None:
+        self.assignments.append({"subtask": sid, "robots": names, "costs": costs})
+        self.timeline.commit(self.nodes[sid], names, self.preds[sid])
+        self.done.add(sid)
+
+    # ------------------------------------------------------------------ one subtask
+    def allocate_one(self, sid: str) -> None:
+        node = self.nodes[sid]
+        robots, Q = self.robots, self.Q
+        Y = need_vector(node, self.skills)
+        allowed, why = self.rules.mask(node)
+        lin = self.rules.lin(node)
+        c = np.array([self.timeline.cost(r, node) for r in robots])
         t0 = time.perf_counter()
-        if method in ("scip", "naive"):
-            chosen = solve_lexicographic(Q, Y, c, allowed, lin, "naive" if method == "naive" else "fast").robots
-        elif method == "greedy":
+        if self.method in ("scip", "naive"):
+            chosen = solve_lexicographic(Q, Y, c, allowed, lin, "naive" if self.method == "naive" else "fast").robots
+        elif self.method == "greedy":
             chosen = greedy(Q, Y, c, allowed, lin)
             if chosen and not all(L.holds(_x(chosen, len(robots))) for L in lin):
                 bad = [L.label for L in lin if not L.holds(_x(chosen, len(robots)))]
                 raise AllocationError(f"greedy allocation of {sid} violates {'; '.join(bad)}; use allocate.scip")
         else:
             chosen = blind(Q, Y, c, allowed, lin)
-        stats["solve_s"].append(time.perf_counter() - t0)
+        self.solve_s.append(time.perf_counter() - t0)
         if not chosen:
-            raise explain_infeasible(node, robots, skills, Q, Y, allowed, why, lin)
-        names = [robots[i] for i in chosen]
-        assignments.append({"subtask": sid, "robots": names, "costs": {robots[i]: float(c[i]) for i in chosen}})
-        tl.commit(node, names, preds[sid])
-        done.add(sid)
+            raise explain_infeasible(node, robots, self.skills, Q, Y, allowed, why, lin)
+        self._commit(sid, [robots[i] for i in chosen], {robots[i]: float(c[i]) for i in chosen})
 
-    if mode == "subtask" or method != "scip":
-        queue = list(ready)
-        while queue:
-            sid = queue.pop(0)  # the frontier's next task, breadth first
-            one(sid)
-            for s in refresh():
-                if s not in queue:
-                    queue.append(s)
-    else:
-        while len(done) < len(nodes):
-            wave = refresh()
-            _frontier_wave(wave, nodes, preds, robots, skills, Q, rules, tl, time_limit, assignments, stats, one, done)
+    # ------------------------------------------------------------------ one wave
+    def allocate_wave(self, wave: list[str]) -> None:
+        """Allocate every ready subtask at once: each robot joins at most one of them; minimise the
+        latest finish, then total metres. Time-limited; the best solution found is kept and the gap
+        reported. If the wave cannot be covered by disjoint coalitions, the last subtask waits for
+        the next wave; if SCIP finds nothing in time, the wave falls back to per-subtask IPs."""
+        from pyscipopt import quicksum  # deferred: SCIP loads only when a model is built
 
-    solve = stats.pop("solve_s")
-    predicted = tl.result()
-    stats.update({
-        "subtasks": len(assignments), "mode": mode, "time_s": time.perf_counter() - t_start,
-        "solve_median_ms": 1000 * float(np.median(solve)) if solve else 0.0,
-        # what `schedule` will report with the same speed and handling
-        "predicted": {k: predicted[k] for k in ("makespan", "tc_max", "tc_avg")},
-    })
-    if not stats["waves"]:
-        stats.pop("waves")
-    return {"method": method if mode == "subtask" else f"{method}-frontier", "assignments": assignments, "stats": stats}
+        nodes, preds, robots, Q, tl = self.nodes, self.preds, self.robots, self.Q, self.timeline
+        info: dict[str, Any] = {"subtasks": list(wave)}
+        # individual feasibility first, for a clear error
+        data = {}
+        for sid in wave:
+            node = nodes[sid]
+            Y = need_vector(node, self.skills)
+            allowed, why = self.rules.mask(node)
+            lin = self.rules.lin(node)
+            if first_stage_fast(Q, Y, np.zeros(len(robots)), allowed, lin) is None:
+                raise explain_infeasible(node, robots, self.skills, Q, Y, allowed, why, lin)
+            data[sid] = (node, Y, allowed, lin)
+        sub = list(wave)
+        deadline = time.perf_counter() + self.time_limit
+        while sub:
+            t0 = time.perf_counter()
+            remaining = max(0.05, deadline - t0)
+            m = _scip(time_limit=remaining * 0.7)
+            x: dict[tuple[int, str], Any] = {}
+            T, dist, dur = {}, {}, {}
+            for sid in sub:
+                node, Y, allowed, lin = data[sid]
+                ready_t = tl.ready(node, preds[sid])
+                T[sid] = m.addVar(lb=ready_t, vtype="C")
+                dur[sid] = tl.duration(node)
+                for i in np.flatnonzero(allowed):
+                    r = robots[i]
+                    x[(int(i), sid)] = m.addVar(vtype="B")
+                    dist[(int(i), sid)] = tl.cost(r, node)
+                    m.addCons(T[sid] >= tl.arrival(r, node) * x[(int(i), sid)])
+                xs = {i: x[(i, s)] for (i, s) in x if s == sid}
+                _add_rows(m, xs, Q, Y, lin)
+            z = m.addVar(lb=0.0, vtype="C")
+            for sid in sub:
+                m.addCons(z >= T[sid] + dur[sid])
+            for i in range(len(robots)):
+                mine = [x[k] for k in x if k[0] == i]
+                if len(mine) > 1:
+                    m.addCons(quicksum(mine) <= 1)
+            m.setObjective(z, "minimize")
+            m.optimize()
+            status = m.getStatus()
+            if status == "infeasible" and len(sub) > 1:
+                sub = sub[:-1]  # the last ready subtask waits for the next wave
+                continue
+            if m.getNSols() == 0:
+                # nothing found in time: fall back to one IP per subtask for this wave
+                info.update({"status": status, "fallback": "per-subtask"})
+                for sid in sub:
+                    self.allocate_one(sid)
+                self.waves.append(info)
+                return
+            zbest, gap = m.getObjVal(), m.getGap()
+            info.update({"status": status, "gap": float(gap), "latest_finish": float(zbest)})
+            sol1 = {k: m.getSolVal(m.getBestSol(), v) for k, v in x.items()}
+            # second stage: total metres at (about) that latest finish
+            m.freeTransform()
+            m.addCons(z <= zbest + 1e-6 * max(1.0, zbest))
+            m.setObjective(quicksum(dist[k] * v for k, v in x.items()), "minimize")
+            m.setParam("limits/time", max(0.05, deadline - time.perf_counter()))
+            m.optimize()
+            if m.getNSols() > 0:
+                sol = {k: m.getSolVal(m.getBestSol(), v) for k, v in x.items()}
+                info["stage2_status"] = m.getStatus()
+            else:
+                sol = sol1
+            self.solve_s.append(time.perf_counter() - t0)
+            chosen = {sid: [i for (i, s), v in sol.items() if s == sid and v > 0.5] for sid in sub}
+            starts = {}
+            for sid in sub:
+                node = data[sid][0]
+                starts[sid] = max([tl.ready(node, preds[sid])] + [tl.arrival(robots[i], node) for i in chosen[sid]])
+            for sid in sorted(sub, key=lambda s: (starts[s], nodes[s]["index"])):
+                picked = sorted(chosen[sid])
+                self._commit(sid, [robots[i] for i in picked], {robots[i]: float(dist[(i, sid)]) for i in picked})
+            info["allocated"] = list(sub)
+            self.waves.append(info)
+            return
+
+    # ------------------------------------------------------------------ the contract
+    def result(self, mode: str, time_s: float) -> dict:
+        predicted = self.timeline.result()
+        stats: dict[str, Any] = {}
+        if self.waves:
+            stats["waves"] = self.waves
+        stats.update({
+            "subtasks": len(self.assignments), "mode": mode, "time_s": time_s,
+            "solve_median_ms": 1000 * float(np.median(self.solve_s)) if self.solve_s else 0.0,
+            # what `schedule` will report with the same speed and handling
+            "predicted": {k: predicted[k] for k in ("makespan", "tc_max", "tc_avg")},
+        })
+        method = self.method if mode == "subtask" else f"{self.method}-frontier"
+        return {"method": method, "assignments": self.assignments, "stats": stats}
 
 
 def _x(chosen: list[int], n: int) -> np.ndarray:
     x = np.zeros(n)
     x[chosen] = 1
     return x
-
-
-def _frontier_wave(wave, nodes, preds, robots, skills, Q, rules, tl, time_limit, assignments, stats, one, done):
-    """Allocate every ready subtask at once: each robot joins at most one of them; minimise the
-    latest finish, then total metres. Time-limited; the best solution found is kept and the gap
-    reported. If the wave cannot be covered by disjoint coalitions, the last subtask waits for
-    the next wave; if SCIP finds nothing in time, the wave falls back to per-subtask IPs."""
-    from pyscipopt import quicksum
-
-    info: dict[str, Any] = {"subtasks": list(wave)}
-    # individual feasibility first, for a clear error
-    data = {}
-    for sid in wave:
-        node = nodes[sid]
-        Y = need_vector(node, skills)
-        allowed, why = rules.mask(node)
-        lin = rules.lin(node)
-        if first_stage_fast(Q, Y, np.zeros(len(robots)), allowed, lin) is None:
-            raise explain_infeasible(node, robots, skills, Q, Y, allowed, why, lin)
-        data[sid] = (node, Y, allowed, lin)
-    sub = list(wave)
-    deadline = time.perf_counter() + time_limit
-    while sub:
-        t0 = time.perf_counter()
-        remaining = max(0.05, deadline - t0)
-        m = _scip(time_limit=remaining * 0.7)
-        x: dict[tuple[int, str], Any] = {}
-        T, dist, dur = {}, {}, {}
-        for sid in sub:
-            node, Y, allowed, lin = data[sid]
-            ready_t = tl.ready(node, preds[sid])
-            T[sid] = m.addVar(lb=ready_t, vtype="C")
-            dur[sid] = tl.duration(node)
-            for i in np.flatnonzero(allowed):
-                r = robots[i]
-                x[(int(i), sid)] = m.addVar(vtype="B")
-                dist[(int(i), sid)] = tl.cost(r, node)
-                m.addCons(T[sid] >= tl.arrival(r, node) * x[(int(i), sid)])
-            xs = {i: x[(i, s)] for (i, s) in x if s == sid}
-            _add_rows(m, xs, Q, Y, lin)
-        z = m.addVar(lb=0.0, vtype="C")
-        for sid in sub:
-            m.addCons(z >= T[sid] + dur[sid])
-        for i in range(len(robots)):
-            mine = [x[k] for k in x if k[0] == i]
-            if len(mine) > 1:
-                m.addCons(quicksum(mine) <= 1)
-        m.setObjective(z, "minimize")
-        m.optimize()
-        status = m.getStatus()
-        if status == "infeasible" and len(sub) > 1:
-            sub = sub[:-1]  # the last ready subtask waits for the next wave
-            continue
-        if m.getNSols() == 0:
-            # nothing found in time: fall back to one IP per subtask for this wave
-            info.update({"status": status, "fallback": "per-subtask"})
-            for sid in sub:
-                one(sid)
-            stats["waves"].append(info)
-            return
-        zbest, gap = m.getObjVal(), m.getGap()
-        info.update({"status": status, "gap": float(gap), "latest_finish": float(zbest)})
-        sol1 = {k: m.getSolVal(m.getBestSol(), v) for k, v in x.items()}
-        # second stage: total metres at (about) that latest finish
-        m.freeTransform()
-        m.addCons(z <= zbest + 1e-6 * max(1.0, zbest))
-        m.setObjective(quicksum(dist[k] * v for k, v in x.items()), "minimize")
-        m.setParam("limits/time", max(0.05, deadline - time.perf_counter()))
-        m.optimize()
-        if m.getNSols() > 0:
-            sol = {k: m.getSolVal(m.getBestSol(), v) for k, v in x.items()}
-            info["stage2_status"] = m.getStatus()
-        else:
-            sol = sol1
-        stats["solve_s"].append(time.perf_counter() - t0)
-        chosen = {sid: [i for (i, s), v in sol.items() if s == sid and v > 0.5] for sid in sub}
-        starts = {}
-        for sid in sub:
-            node = data[sid][0]
-            starts[sid] = max([tl.ready(node, preds[sid])] + [tl.arrival(robots[i], node) for i in chosen[sid]])
-        for sid in sorted(sub, key=lambda s: (starts[s], nodes[s]["index"])):
-            node = data[sid][0]
-            names = [robots[i] for i in sorted(chosen[sid])]
-            assignments.append({"subtask": sid, "robots": names,
-                                "costs": {robots[i]: float(dist[(i, sid)]) for i in sorted(chosen[sid])}})
-            tl.commit(node, names, preds[sid])
-            done.add(sid)
-        info["allocated"] = list(sub)
-        stats["waves"].append(info)
-        return
