@@ -173,6 +173,19 @@ def test_misreadings_of_the_issue_are_gone() -> None:
         {"outbound": {"keg": 4}}, [{"only": ["titan", "atlas"]}])
 
 
+def test_a_sentence_read_two_ways_that_mean_different_things_is_refused(monkeypatch) -> None:
+    """ "from shelf1 to shelf2" parses as one route or as "from" then "to"; both mean one move,
+    so the rule is understood. Were the meanings different, nothing would be guessed."""
+    from pipflow.language import parser as parser_module
+
+    command = "robot 3 must not move product1 from shelf1 to shelf2"
+    assert got(command)[1] == [{"never": ["robot3"], "product": "product1", "from": "shelf1", "to": "shelf2"}]
+    seen = iter(range(1000))
+    monkeypatch.setattr(parser_module, "_meaning", lambda reader, world: str(next(seen)))
+    with pytest.raises(TranslationError, match="can be read in two ways"):
+        understand(command, PAPER)
+
+
 def test_command_size_is_capped_and_the_parse_is_per_sentence() -> None:
     with pytest.raises(InputError, match="limited to 4000"):
         understand("put 1 product1 on shelf1. " * 200, PAPER)

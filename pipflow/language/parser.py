@@ -777,7 +777,7 @@ class _Sentence:
             places = self.place_list(self.sub(node, "places")[0])
             last = [s for s in self.statements if "places" in s]
             if not last:
-                raise TranslationError(f"{_quote(words)}: nothing said before it to repeat")
+                raise TranslationError(f"{_quote(words)}: cannot tell what to repeat there")
             prev = last[-1]
             if prev["op"] not in ("set", "change", "bound", "empty", "fill", "keep", "distribute"):
                 raise TranslationError(f"{_quote(words)}: cannot tell what to repeat there")
