@@ -258,6 +258,20 @@ def test_a_missing_provider_key_fails_before_any_call_naming_the_variable(tmp_pa
     assert proc.returncode == 2 and "ANTHROPIC_API_KEY" in proc.stderr
 
 
+def test_only_missing_keys_block_a_call(monkeypatch):
+    from pipflow.errors import InputError
+    from pipflow.language import llm
+
+    lit = llm._import_litellm()
+    for name in ("OPENAI_API_KEY", "OLLAMA_API_BASE", "AWS_ACCESS_KEY_ID", "VERTEXAI_PROJECT"):
+        monkeypatch.delenv(name, raising=False)
+    for model in ("ollama/llama3", "bedrock/anthropic.claude-3", "vertex_ai/gemini-pro"):
+        llm.check_model(lit, model, None)  # a default server address, or a cloud credential chain
+    llm.check_model(lit, "openai/anything", "http://127.0.0.1:1/v1")  # self-hosted: no key needed
+    with pytest.raises(InputError, match="looks for OPENAI_API_KEY, which is not set"):
+        llm.check_model(lit, "openai/gpt-4o", None)
+
+
 def test_a_model_string_without_a_known_provider_is_a_user_error(tmp_path):
     proc = pipflow(tmp_path, "-i", "model=nosuchprovider/big-model", "--no-cache")
     assert proc.returncode == 2 and "does not know its provider" in proc.stderr

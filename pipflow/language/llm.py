@@ -144,24 +144,31 @@ def check_api_base(api_base: str) -> None:
                          "(e.g. http://127.0.0.1:8080/v1)")
 
 
+#: providers whose credentials come from a cloud SDK's chain (profiles, instance roles, gcloud),
+#: not necessarily from environment variables: their keys are not checked before the call
+CREDENTIAL_CHAINS = ("bedrock", "bedrock_converse", "sagemaker", "sagemaker_chat", "vertex_ai", "vertex_ai_beta")
+
+
 def check_model(litellm, model: str, api_base: str | None) -> None:
     """Fail before the first call when litellm does not know the model's provider, or when a
     hosted provider's key is missing from the environment (:class:`InputError`, exit 2)."""
     try:
-        litellm.get_llm_provider(model=model, api_base=api_base)
+        provider = litellm.get_llm_provider(model=model, api_base=api_base)[1]
     except Exception:
         raise InputError(f"model {model!r}: litellm does not know its provider; write it as "
                          "provider/model (openai/gpt-4o, anthropic/..., ollama/...), or use "
                          "'offline' or 'local/smollm2'") from None
-    if api_base:
-        return  # a self-hosted server: its key, if it needs one, is checked by the server
+    if api_base or provider in CREDENTIAL_CHAINS:
+        return  # a self-hosted server, or credentials that need not be in the environment
     try:
         missing = litellm.validate_environment(model=model).get("missing_keys") or []
     except Exception:  # litellm cannot tell: the call itself will say
         missing = []
+    # only keys: a server address (OLLAMA_API_BASE), a project or a version has a default
+    missing = [name for name in missing if _SECRET_ENV.search(name)]
     if missing:
-        raise InputError(f"model {model!r} needs the environment variable{'s' if len(missing) > 1 else ''} "
-                         f"{', '.join(missing)}, which {'are' if len(missing) > 1 else 'is'} not set; "
+        raise InputError(f"model {model!r}: no provider key in the environment; litellm looks for "
+                         f"{' or '.join(missing)}, which {'is' if len(missing) == 1 else 'are'} not set; "
                          "set it, or use model=offline")
 
 
@@ -192,7 +199,7 @@ def complete(
     if api_base:
         check_api_base(api_base)
     litellm = _import_litellm()
-    if "mock_response" not in (extra or {}):  # litellm's canned answers (tests) need no key
+    if not {"mock_response", "api_key"} & set(extra or {}):  # canned answers (tests), a key given
         check_model(litellm, model, api_base)
     kwargs: dict[str, Any] = dict(model=model, messages=messages, temperature=temperature,
                                   max_tokens=max_tokens, num_retries=0, max_retries=0, **(extra or {}))
