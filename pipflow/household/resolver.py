@@ -80,7 +80,7 @@ class Resolver:
         self.previous: dict | None = None                      # the statement an elided verb repeats
         self.last_places: list[str] = []                       # the places of the statement before
         self.last_any: list[str] = []                          # everything the statement before named
-        self.before: list[str] = []
+        self.before: list[str] = []                            # what "in it" may mean in this statement
         self.cue_defaults: list[tuple[str, str, str, list[str]]] = []   # (category, state, words, members)
 
     # selectors -------------------------------------------------------------------------
