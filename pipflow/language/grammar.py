@@ -19,10 +19,10 @@ import re
 
 GRAMMAR = r"""
 start: sentence
-sentence: lead? part (sep part)* sep?
+sentence: lead? part (sep part)* sep? aside?
 lead: ("but" | "and" | "then" | "also" | "so" | "however" | "now" | "oh" | "well" | "next"
       | "finally" | "first" | "afterwards" | "after" "that" | "additionally" | "plus"
-      | ("can" | "could" | "would") "you" | "you" ("should" | "must" | "can") | "just") ","?
+      | ("can" | "could" | "would") ("you" | "we") | "you" ("should" | "must" | "can") | "just" | "let" "us") ","?
 
 // a separator costs: of two readings, the one with fewer, longer parts wins
 // ("only alpha and charlie may carry bolts" is one rule, not "only alpha" and a second clause)
@@ -33,7 +33,9 @@ sep.-1: "," | "and" | "," "and" | "but" | "," "but" | "while" | "," "while" | "w
 
 ?part: goal | rule | aside | tail | addressed | scoped_goal
 
-aside: "i" ("think" | "guess" | "suppose" | "believe") | "i" "have" "a" "plan" | "ok" | "okay"
+aside: "by" ("end" | "tonight" | "tomorrow" | "noon" | "morning" | "evening" | "shift" "end")
+     | ("at" | "in") "end" | "eventually" | "afterwards" | "later" | "when" "you" "can" | "when" "possible"
+     | "i" ("think" | "guess" | "suppose" | "believe") | "i" "have" "a" "plan" | "ok" | "okay"
      | "thanks" | "thank" "you" | "if" "possible" | "as" "well"
 
 // ---------------------------------------------------------------- amounts and items
@@ -73,6 +75,9 @@ np: NUM of? ihead                          -> np_count
   | "everything"                           -> np_everything
   | ("everything" | "all" ITEMWORD | "every" ITEMWORD | "all" "goods") except_items -> np_everything
   | "as" "many" ihead "as" PLACE ("has" | "holds" | "have" | "contains") now? -> np_as_many
+  | "as" "many" ihead "as" PLACE                    -> np_as_many
+  | "same" ("number" | "amount" | "count" | "quantity") "of" ihead "as" PLACE (("has" | "holds" | "have" | "contains" | "does") now?)? -> np_as_many
+  | ("another" | "one" "more")                      -> np_another
   | "as" "many" "as" PLACE ("has" | "holds" | "have" | "contains") now? -> np_as_many_elided
   | "rest" rest_of?                        -> np_rest
   | "twice" "as" "many" ihead              -> np_twice
@@ -133,10 +138,10 @@ setv: "has" | "have" | "hold" | "holds" | "store" | "stores" | "stock" | "stocks
     | "ends" "up" "with" | "ends" "with" | "end" "up" "holding" | "ends" "up" "holding"
     | "be" "filled" "with" | "be" "loaded" "with" | "hold" "onto" | "be" "holding" | "is" "holding"
     | "end" "with" | "want" | "wants" | "be" "left" "with" | "be" "at" | "is" "at" | "are" "at"
-putv: "put" | "place" | "store" | "stock" | "set" | "leave" | "stack" | "load" | "get" | "keep" | "drop"
-    | "park" | "stick" | "pop"
+putv: "put" | "place" | "store" | "stock" | "set" | "leave" | "get" | "keep" | "park"
     | "make" "sure" "there" ("is" | "are") | "ensure" "there" ("is" | "are")
 addv: "add" | "bring" | "deliver" | "send" | "ship" | "move" | "transfer" | "carry" | "shift" | "throw" | "toss"
+    | "load" | "drop" | "stick" | "pop" | "stack"
     | "relocate" | "take" | "haul" | "bring" "over" | "move" "over" | "send" "over"
     | "supply" | "drop" "off" | "get" | "push"
 removev: "remove" | "take" | "unload" | "pull" | "withdraw" | "clear" | "get" | "move"
@@ -154,7 +159,7 @@ there_be: ("there" | "theyre" | "their" | "theres") (modal? "be" | "is" | "are")
         | "theres" | ("we" | "i") modal? ("need" | "want" | "require" | "needs")
 go: "go" | "goes" | "move" | "moves" | "be" "moved" | "be" "sent" | "be" "taken" | "be" "brought"
   | "be" "transferred" | "be" "shipped" | "be" "relocated" | "be" "carried" | "be" "delivered"
-  | "end" "up" | "travel" | "be" "put"
+  | "end" "up" | "travel" | "be" "put" | "moved" | "sent" | "taken" | "brought" | "delivered" | "shifted"
 from: "from" | "out" "of" | "off" | "off" "of"
 to: "to" | "into" | "onto" | "over" "to"
 
@@ -205,6 +210,12 @@ goal: there_be items loc                                  -> g_set
     | items src modal? go to places                       -> g_transfer_src
     | places ("gets" | "receives" | "takes" | "should" "get" | "should" "receive") items from places -> g_receive
     | removev items src                                   -> g_remove_src
+    | removev items ("away" | "out" | "off") src           -> g_remove_src
+    | ("get" | "have") items go from places to places       -> g_transfer
+    | want places "to"? "be"? emptied                      -> g_empty
+    | "nothing" modal? ("leaves" | "leave" | go "out" "of" | "be" "taken" "from" | "be" "removed" "from" | "comes" "off" | "come" "off") places -> g_keep
+    | ("reduce" | "lower" | "cut" | "drop" | "increase" | "raise" | "bring" | "take" | "get") ihead loc ("down" | "up")? "to" NUM -> g_item_first
+    | ("bring" | "take" | "get" | "knock") ihead loc ("down" | "up") "by" NUM -> g_updown
     | removev pitems                                      -> g_remove_src
     | places modal? setv items "too" "many"                  -> g_too_many
     | places modal? "lose" items                             -> g_lose
@@ -389,6 +400,7 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | robots ("is" | "are") "not" "to" "be" "used" rscope     -> rule_never
     | robots modal? ("stay" | "keep") ("away" | "clear") from places -> rule_away
     | ("keep" | "leave") robots ("away" | "clear") from places -> rule_away
+    | ("keep" | "leave") robots ("out" "of" | "off") places  -> rule_away
     | ("keep" | "leave") robots state                        -> rule_state
     | ("keep" | "leave") robots "out" "of" "this" "task"?     -> rule_state
     | ("dont" | "do" "not" | "never" | "avoid") ("use" | "using" | "involve" | "employ" | "assign") robots rscope -> rule_never

@@ -140,6 +140,8 @@ class _Sentence:
                 self.last_item = sel["names"]
             return {"items": sel, "amount": amount, "words": words}
 
+        if kind == "np_another":
+            return {"items": None, "amount": {"count": 1}, "words": words}
         if kind == "np_more_bare":
             return {"items": None, "amount": {"more": nums[0]}, "words": words}
         if kind == "np_times_as_many":
@@ -554,6 +556,15 @@ class _Sentence:
                 amount = {"fewer": int(self.toks(node, "NUM")[-1].value)}
             self.statements.append(self._goal_statement(places, {"items": {"names": [head]}, "amount": amount,
                                                                   "words": words}, False))
+            return
+        if kind == "g_updown":
+            head = self.ihead(self.sub(node, "ihead")[0], words)
+            places = self.loc(locs[0])[0]
+            n = int(self.toks(node, "NUM")[-1].value)
+            down = any(isinstance(t, Token) and str(t.value).lower() == "down" for t in self.toks_any(node))
+            self.statements.append(self._goal_statement(
+                places, {"items": {"names": [head]}, "amount": {"fewer": n} if down else {"more": n}, "words": words},
+                False))
             return
         if kind in ("g_raise", "g_lower"):
             head = self.ihead(self.sub(node, "ihead")[0], words)
