@@ -65,7 +65,7 @@ def resolve_inputs(wf: Workflow, given: dict[str, Any], from_text: bool = False,
     if unknown:
         hints = []
         for k in unknown:
-            close = difflib.get_close_matches(k, list(wf.inputs), n=1)
+            close = difflib.get_close_matches(str(k), list(wf.inputs), n=1)  # an inputs file may have number keys
             hints.append(f"{k!r}" + (f" (did you mean {close[0]!r}?)" if close else ""))
         raise InputError(f"{wf.file}: unknown input {', '.join(hints)}; declared: {', '.join(wf.inputs) or 'none'}")
     env_ns = {"env": declared_env(wf), "inputs": {}}

@@ -338,6 +338,7 @@ INPUT_FILES: dict[str, tuple[bytes, list[str]]] = {
     "wrong type": (b"n: [1, 2]\n", ["input 'n' must be integer"]),
     "duplicate key": (b"text: a\ntext: b\n", ["inputs.yaml:2:1", "duplicate key 'text'"]),
     "not a number": (b"speed: .nan\n", ["input 'speed'", "finite number"]),
+    "number and null keys": (b"1: 2\n~: 3\n", ["unknown input 1, None"]),
 }
 
 
