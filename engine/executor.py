@@ -22,7 +22,7 @@ from .cache import CacheRefused, StepCache, cache_key
 from .expr import ExpressionError, resolve, truthy
 from .model import LoopSpec, StepSpec, Workflow
 from .registry import Registry
-from .step import Step, StepContext
+from .step import Step, StepContext, check_outputs
 from .store import RunStore, write_json
 from .types import type_matches
 from .validate import dependency_graph
@@ -311,6 +311,7 @@ class Executor:
             outputs = json.loads(json.dumps(outputs))
         except (TypeError, ValueError) as err:
             raise StepError(f"step {spec.id!r} ({spec.uses}) returned outputs that are not JSON data: {err}") from None
+        check_outputs(step, outputs, spec.id)
         for name in step.outputs:
             outputs.setdefault(name, None)
         return outputs

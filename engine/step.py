@@ -1,29 +1,78 @@
 """The contract of a step: a declared name, typed inputs and outputs, and a function.
 
-Built-in and third-party steps are written the same way::
+The function's signature is the one source of its inputs: type hints give the types, defaults
+the defaults, and ``Annotated`` markers the docs, choices and value checks::
 
-    from pipflow import step, Input, StepContext
+    from typing import Annotated
+    from pipflow import Doc, StepContext, step
 
-    @step("text.upper", doc="Upper-case a text.",
-          inputs={"text": Input("string", doc="the text")},
-          outputs={"text": "string"})
-    def upper(ctx: StepContext, text: str) -> dict:
+    @step("text.upper", doc="Upper-case a text.", outputs={"text": "string"})
+    def upper(ctx: StepContext, text: Annotated[str, Doc("the text")]) -> dict:
         return {"text": text.upper()}
 
-and are registered through the entry-point group ``pipflow.steps``. Step functions receive
+Hints map to declared types: ``str`` string, ``int`` integer, ``float`` number, ``bool``
+boolean, ``dict`` object, ``list`` array, ``pathlib.Path`` or :data:`PathStr` path (the step
+receives the resolved path as a string), ``Any`` any. ``X | None`` says the value may be null (a
+skipped step's output is); a parameter is required exactly when it has no default. Everything is
+checked when the step is declared: a parameter without a hint, a hint that maps to no type, or a
+default of another type is a :class:`~pipflow.errors.StepDefinitionError` naming the function.
+
+``inputs={name: Input(...)}`` (the first style) is still accepted for one release, for
+third-party plugins: it is checked against the signature, and a difference (a name, a type, a
+default) is an error naming the parameter and both values. Outputs are declared with
+``outputs={...}``; a step that returns a key it does not declare fails when it runs.
+
+Steps are registered through the entry-point group ``pipflow.steps``. Step functions receive
 resolved, JSON-like arguments and return a dict of JSON-like outputs: that is what makes run
 records, the cache, ``resume`` and remote execution possible without pickling anything.
 """
 from __future__ import annotations
 
+import collections.abc as abc
+import inspect
 import json
 import os
+import pathlib
+import types
+import typing
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Callable
+from typing import Annotated, Any, Callable, NewType, Union
+
+from pipflow.errors import StepDefinitionError
+
+from .types import type_matches
 
 TYPES = ("string", "integer", "number", "boolean", "object", "array", "path", "any")
 _REQUIRED = object()
+
+#: A path argument: the step receives the path, resolved against the workflow's folder, as a str.
+PathStr = NewType("PathStr", str)
+
+
+@dataclass(frozen=True)
+class Doc:
+    """``Annotated[str, Doc("the text")]``: what an input means, shown by ``pipflow steps``."""
+
+    text: str
+
+
+@dataclass(frozen=True)
+class Choices:
+    """``Annotated[str, Choices("a", "b")]``: the only values an input accepts."""
+
+    values: tuple
+
+    def __init__(self, *values: Any) -> None:
+        object.__setattr__(self, "values", tuple(values))
+
+
+@dataclass(frozen=True)
+class Check:
+    """``Annotated[str, Check(fn)]``: ``fn(value, base_dir)`` returns a problem in words or None;
+    ``validate`` runs it on literal values before any step runs."""
+
+    fn: Callable[[Any, Path | None], str | None]
 
 
 @dataclass(frozen=True)
@@ -74,14 +123,19 @@ def step(
     version: str = "1",
     cacheable: bool = False,
 ) -> Callable[[Callable[..., dict]], Step]:
-    """Declare a step. The decorated function becomes a :class:`Step` object."""
+    """Declare a step. The decorated function becomes a :class:`Step` object whose inputs are
+    read from its signature (``inputs=`` is the deprecated first style, checked against it)."""
 
     def wrap(func: Callable[..., dict]) -> Step:
+        for key, type_name in (outputs or {}).items():
+            if type_name not in TYPES:
+                raise StepDefinitionError(f"step {name!r} ({_where(func)}): output {key!r} has unknown type "
+                                          f"{type_name!r}; use one of {', '.join(TYPES)}")
         return Step(
             name=name,
             func=func,
             doc=doc or (func.__doc__ or "").strip().split("\n\n")[0],
-            inputs=dict(inputs or {}),
+            inputs=signature_inputs(func, name, inputs),
             outputs=dict(outputs or {}),
             version=version,
             cacheable=cacheable,
@@ -89,6 +143,125 @@ def step(
         )
 
     return wrap
+
+
+# ---------------------------------------------------------------------- signature -> inputs
+_SIMPLE = {str: "string", int: "integer", float: "number", bool: "boolean", dict: "object", list: "array",
+           pathlib.Path: "path", PathStr: "path", Any: "any"}
+_ORIGINS = {dict: "object", list: "array", abc.Mapping: "object", abc.Sequence: "array"}
+
+
+def _where(func: Callable) -> str:
+    return f"{func.__module__}.{func.__qualname__}"
+
+
+def _type_of(hint: Any) -> tuple[str | None, bool]:
+    """The declared type a hint maps to (None: no type) and whether it admits None."""
+    origin = typing.get_origin(hint)
+    if origin in (Union, types.UnionType):
+        members = [a for a in typing.get_args(hint) if a is not type(None)]
+        nullable = len(members) < len(typing.get_args(hint))
+        found = {_type_of(m)[0] for m in members}
+        if found == {"integer", "number"}:
+            return "number", nullable
+        return (found.pop() if len(found) == 1 else None), nullable
+    if hint in _SIMPLE:
+        return _SIMPLE[hint], False
+    if origin is not None:
+        return _ORIGINS.get(origin), False
+    return None, False
+
+
+def signature_inputs(func: Callable, name: str, declared: dict[str, Input] | None = None) -> dict[str, Input]:
+    """The inputs of step ``name`` read from ``func``'s signature; ``declared`` (the first style)
+    must agree with it. Raises :class:`StepDefinitionError` naming the function and parameter."""
+    where = f"step {name!r} ({_where(func)})"
+    try:
+        hints = typing.get_type_hints(func, include_extras=True)
+    except Exception as err:  # a hint naming something the module does not import
+        raise StepDefinitionError(f"{where}: its type hints cannot be read: {type(err).__name__}: {err}") from None
+    params = list(inspect.signature(func).parameters.values())
+    if not params or params[0].kind not in (params[0].POSITIONAL_ONLY, params[0].POSITIONAL_OR_KEYWORD):
+        raise StepDefinitionError(f"{where}: the first parameter must take the StepContext")
+    declared = dict(declared or {})
+    found: dict[str, Input] = {}
+    for p in params[1:]:
+        if p.kind in (p.VAR_POSITIONAL, p.VAR_KEYWORD):
+            raise StepDefinitionError(f"{where}: parameter {p.name!r}: *args and **kwargs cannot be declared inputs")
+        legacy = declared.pop(p.name, None)
+        found[p.name] = _one_input(where, p, hints.get(p.name, inspect.Parameter.empty), legacy)
+    if declared:
+        raise StepDefinitionError(f"{where}: inputs= declares {', '.join(map(repr, declared))}, "
+                                  f"which the function does not take")
+    return found
+
+
+def _one_input(where: str, p: inspect.Parameter, hint: Any, legacy: Input | None) -> Input:
+    doc, choices, check = "", None, None
+    if typing.get_origin(hint) is Annotated:
+        base, *extras = typing.get_args(hint)
+        for extra in extras:
+            if isinstance(extra, Doc):
+                doc = extra.text
+            elif isinstance(extra, Choices):
+                choices = extra.values
+            elif isinstance(extra, Check):
+                check = extra.fn
+        hint = base
+    default = _REQUIRED if p.default is inspect.Parameter.empty else p.default
+    if hint is inspect.Parameter.empty:
+        if legacy is None:
+            raise StepDefinitionError(f"{where}: parameter {p.name!r} has no type hint; write one "
+                                      f"(str, int, float, bool, dict, list, PathStr, Any; X | None if it may be null)")
+        type_name, nullable = legacy.type, True  # the first style's declaration is all there is
+    else:
+        type_name, nullable = _type_of(hint)
+        if type_name is None:
+            raise StepDefinitionError(f"{where}: parameter {p.name!r}: the hint {_show_hint(hint)} maps to no "
+                                      f"input type; use str, int, float, bool, dict, list, PathStr or Any")
+    if default is not _REQUIRED:
+        if default is None and not nullable and type_name != "any":
+            raise StepDefinitionError(f"{where}: parameter {p.name!r}: default None, but the hint "
+                                      f"{_show_hint(hint)} does not admit None (write {_show_hint(hint)} | None)")
+        if default is not None and not type_matches(default, type_name):
+            raise StepDefinitionError(f"{where}: parameter {p.name!r}: default {default!r} is not "
+                                      f"{type_name} (the hint is {_show_hint(hint)})")
+        if choices and default is not None and default not in choices:
+            raise StepDefinitionError(f"{where}: parameter {p.name!r}: default {default!r} is not one of its choices")
+    if legacy is not None:
+        # a hint may be wider than the declaration it predates (str for a path, Any): the declared
+        # type is then the narrower one; any other difference is drift
+        if legacy.type != type_name and not (type_name == "any" or (type_name, legacy.type) == ("string", "path")):
+            raise StepDefinitionError(f"{where}: parameter {p.name!r}: inputs= says type {legacy.type}, "
+                                      f"the signature says {type_name} (hint {_show_hint(hint)})")
+        if _shown_default(legacy.default) != _shown_default(default):
+            raise StepDefinitionError(f"{where}: parameter {p.name!r}: inputs= says default "
+                                      f"{_shown_default(legacy.default)}, the signature says {_shown_default(default)}")
+        type_name = legacy.type
+        for what, theirs, ours in (("doc", legacy.doc, doc), ("choices", legacy.choices, choices)):
+            if theirs and ours and theirs != ours:
+                raise StepDefinitionError(f"{where}: parameter {p.name!r}: inputs= says {what} {theirs!r}, "
+                                          f"the signature says {ours!r}")
+        doc, choices, check = doc or legacy.doc, choices or legacy.choices, check or legacy.check
+    return Input(type_name, default, doc, choices, check)
+
+
+def _shown_default(default: Any) -> str:
+    return "(required)" if default is _REQUIRED else repr(default)
+
+
+def _show_hint(hint: Any) -> str:
+    return getattr(hint, "__name__", None) or str(hint).replace("typing.", "")
+
+
+def check_outputs(step: Step, outputs: dict, step_id: str) -> None:
+    """A step may return only what it declares: an undeclared key would reach no consumer that
+    ``validate`` checked, and usually means the declaration is out of date."""
+    extra = [key for key in outputs if key not in step.outputs]
+    if extra:
+        raise StepDefinitionError(
+            f"step {step_id!r} ({step.name}) returned {', '.join(map(repr, extra))}, which it does not declare "
+            f"(declared outputs: {', '.join(step.outputs) or 'none'}); declare it in outputs= or stop returning it")
 
 
 class StepContext:

@@ -1,10 +1,11 @@
 """pipflow: the PIP-LLM pipeline as a declarative YAML workflow engine.
 
 Public surface: for notebooks and scripts, :func:`run` and :func:`bench` (:mod:`pipflow.api`);
-for step authors, :func:`step`, :class:`Input`, :class:`StepContext`; and the exception hierarchy
+for step authors, :func:`step`, :class:`StepContext` and the signature markers :class:`Doc`,
+:class:`Choices`, :class:`Check`, :data:`PathStr` (:class:`Input` for the first style); and the exception hierarchy
 in :mod:`pipflow.errors`.
 """
-from pipflow.engine.step import Input, Step, StepContext, step
+from pipflow.engine.step import Check, Choices, Doc, Input, PathStr, Step, StepContext, step
 from pipflow.errors import (
     AllocationError,
     Diagnostic,
@@ -36,7 +37,7 @@ def __getattr__(name: str):
 
 __all__ = [
     "run", "bench", "Run",
-    "step", "Input", "Step", "StepContext",
+    "step", "Input", "Step", "StepContext", "Doc", "Choices", "Check", "PathStr",
     "PipflowError", "UserError", "WorkflowError", "WorldError", "InputError", "StepError",
     "PlanningError", "AllocationError", "LLMError", "TranslationError", "Refusal",
     "Diagnostic", "Location",

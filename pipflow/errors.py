@@ -92,6 +92,12 @@ class StepError(PipflowError):
     """A step failed while running."""
 
 
+class StepDefinitionError(PipflowError):
+    """A step's code contradicts its contract (a parameter without a type, a default of another
+    type, ``inputs=`` that drifted from the signature, an undeclared output): the step author's
+    error, raised when the step is registered or returns."""
+
+
 class PlanningError(StepError):
     """The planner failed: time-out, engine error, or an unusable plan."""
 

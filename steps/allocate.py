@@ -3,22 +3,22 @@ eq. 3), thin faces of :mod:`pipflow.allocation`. All of them output the allocati
 docs/architecture.md, so `schedule` and the metrics do not care which one ran."""
 from __future__ import annotations
 
-from pipflow import Input, StepContext, step
+from typing import Annotated
 
-_COMMON = {
-    "graph": Input("object", doc="output of graph.dependencies"),
-    "world": Input("object", doc="output of world.load"),
-    "constraints": Input("array", default=[], doc="only/never rules: [{only|never: [robots], product?, from?, to?}]"),
-    "linear": Input("array", default=[],
-                    doc="extra linear constraints: [{robots: [..]|all, coef: n|{robot: n}, skill?, sense, rhs, <field>?}]"),
-    "speed": Input("number", default=1.0, doc="robot speed, m/s (times in stats and frontier mode)"),
-    "handling": Input("number", default=2.0, doc="seconds of loading/unloading per route stop"),
-}
+from pipflow import Choices, Doc, StepContext, step
+
+# the inputs every allocator takes, named once (each step's signature is its contract)
+Graph = Annotated[dict, Doc("output of graph.dependencies")]
+World = Annotated[dict, Doc("output of world.load")]
+RobotRules = Annotated[list | None, Doc("only/never rules: [{only|never: [robots], product?, from?, to?}]")]
+LinearRules = Annotated[list | None, Doc("extra linear constraints: [{robots: [..]|all, coef: n|{robot: n}, "
+                                         "skill?, sense, rhs, <field>?}]")]
+Speed = Annotated[float, Doc("robot speed, m/s (times in stats and frontier mode)")]
+Handling = Annotated[float, Doc("seconds of loading/unloading per route stop")]
 
 
-def _run(ctx: StepContext, method: str, graph: dict, world: dict, constraints, linear, speed, handling,
-         mode: str = "subtask", time_limit: float = 10.0) -> dict:
-
+def _run(ctx: StepContext, method: str, graph: dict, world: dict, constraints: list | None,
+         linear: list | None, speed: float, handling: float, mode: str = "subtask", time_limit: float = 10.0) -> dict:
     from pipflow.allocation import allocate
 
     result = allocate(graph, world, method=method, constraints=constraints or [], linear=linear or [],
@@ -32,31 +32,36 @@ def _run(ctx: StepContext, method: str, graph: dict, world: dict, constraints, l
 
 @step("allocate.scip",
       doc="Lexicographic IP per subtask (min max cost, then min total) with SCIP; or frontier mode.",
-      inputs={**_COMMON,
-              "mode": Input("string", default="subtask", choices=("subtask", "frontier"),
-                            doc="subtask: the paper's one IP per subtask; frontier: all ready subtasks in one IP"),
-              "time_limit": Input("number", default=10.0, doc="seconds per frontier wave (frontier mode)"),
-              "naive": Input("boolean", default=False, doc="solve the first stage as a full SCIP model (slow; for comparison)")},
       outputs={"allocation": "object"}, cacheable=True)
-def scip(ctx: StepContext, graph: dict, world: dict, constraints: list = (), linear: list = (),
-         speed: float = 1.0, handling: float = 2.0, mode: str = "subtask", time_limit: float = 10.0,
-         naive: bool = False) -> dict:
+def scip(
+    ctx: StepContext,
+    graph: Graph,
+    world: World,
+    constraints: RobotRules = None,
+    linear: LinearRules = None,
+    speed: Speed = 1.0,
+    handling: Handling = 2.0,
+    mode: Annotated[str, Choices("subtask", "frontier"),
+                    Doc("subtask: the paper's one IP per subtask; frontier: all ready subtasks in one IP")] = "subtask",
+    time_limit: Annotated[float, Doc("seconds per frontier wave (frontier mode)")] = 10.0,
+    naive: Annotated[bool, Doc("solve the first stage as a full SCIP model (slow; for comparison)")] = False,
+) -> dict:
     """The paper's allocator; the fast first stage gives the same optimum as the naive model."""
     return _run(ctx, "naive" if naive else "scip", graph, world, constraints, linear, speed, handling,
                 mode, time_limit)
 
 
 @step("allocate.greedy", doc="Baseline: nearest capable robots first until the skills are covered.",
-      inputs=dict(_COMMON), outputs={"allocation": "object"}, cacheable=True)
-def greedy(ctx: StepContext, graph: dict, world: dict, constraints: list = (), linear: list = (),
-           speed: float = 1.0, handling: float = 2.0) -> dict:
+      outputs={"allocation": "object"}, cacheable=True)
+def greedy(ctx: StepContext, graph: Graph, world: World, constraints: RobotRules = None, linear: LinearRules = None,
+           speed: Speed = 1.0, handling: Handling = 2.0) -> dict:
     """Greedy baseline for comparison with the IP."""
     return _run(ctx, "greedy", graph, world, constraints, linear, speed, handling)
 
 
 @step("allocate.blind", doc="Ablation (paper's w/o AS): fewest robots by robot order, ignoring travel cost.",
-      inputs=dict(_COMMON), outputs={"allocation": "object"}, cacheable=True)
-def blind(ctx: StepContext, graph: dict, world: dict, constraints: list = (), linear: list = (),
-          speed: float = 1.0, handling: float = 2.0) -> dict:
+      outputs={"allocation": "object"}, cacheable=True)
+def blind(ctx: StepContext, graph: Graph, world: World, constraints: RobotRules = None, linear: LinearRules = None,
+          speed: Speed = 1.0, handling: Handling = 2.0) -> dict:
     """Cost-blind allocation: shows what the allocation strategy buys."""
     return _run(ctx, "blind", graph, world, constraints, linear, speed, handling)

@@ -2,7 +2,9 @@
 :mod:`pipflow.dependency`."""
 from __future__ import annotations
 
-from pipflow import Input, StepContext, step
+from typing import Annotated, Any
+
+from pipflow import Choices, Doc, StepContext, step
 
 
 def _read_text(ctx: StepContext, value: str) -> str:
@@ -30,23 +32,22 @@ def _read_metadata(ctx: StepContext, value) -> dict:
 @step(
     "graph.dependencies",
     doc="Build the subtask dependency DAG of a team plan (minimal deordering, exact read/write, or paper Alg. 2).",
-    inputs={
-        "domain": Input("string", doc="team domain: PDDL text or a path"),
-        "problem": Input("string", doc="team problem: PDDL text or a path"),
-        "plan": Input("array", doc="ordered plan: [{action, args}]"),
-        "actions": Input("any", doc="action metadata: path of domains/*.actions.yaml, or its content"),
-        "mode": Input("string", default="deorder", choices=("deorder", "exact", "paper"),
-                      doc="deorder: only the orders a precondition needs (increments commute; stock and room "
-                          "checked for every allowed order); exact: every read/write interaction, transitively "
-                          "reduced; paper: Alg. 2's single nearest parent"),
-        "picture": Input("boolean", default=True,
-                         doc="also draw graph.png (workflows pass pictures == 'always'; see pipflow.pictures)"),
-    },
     outputs={"graph": "object"},
     cacheable=True,
 )
-def dependencies(ctx: StepContext, domain: str, problem: str, plan: list, actions,
-                 mode: str = "deorder", picture: bool = True) -> dict:
+def dependencies(
+    ctx: StepContext,
+    domain: Annotated[str, Doc("team domain: PDDL text or a path")],
+    problem: Annotated[str, Doc("team problem: PDDL text or a path")],
+    plan: Annotated[list, Doc("ordered plan: [{action, args}]")],
+    actions: Annotated[Any, Doc("action metadata: path of domains/*.actions.yaml, or its content")],
+    mode: Annotated[str, Choices("deorder", "exact", "paper"),
+                    Doc("deorder: only the orders a precondition needs (increments commute; stock and room "
+                        "checked for every allowed order); exact: every read/write interaction, transitively "
+                        "reduced; paper: Alg. 2's single nearest parent")] = "deorder",
+    picture: Annotated[bool, Doc("also draw graph.png (workflows pass pictures == 'always'; see "
+                                 "pipflow.pictures)")] = True,
+) -> dict:
     """Ground the plan with unified-planning and link actions whose fluents interact."""
 
     from pipflow.dependency import build_graph, to_dot

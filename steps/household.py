@@ -5,17 +5,20 @@ steps (pddl.*, graph.dependencies, allocate.*, schedule) do the rest unchanged."
 from __future__ import annotations
 
 import re
+from typing import Annotated
 
-from pipflow import Input, StepContext, step
+from pipflow import Doc, PathStr, StepContext, step
 
 
 @step("household.load",
       doc="Load a household world (places, objects, categories, robots), validated with every problem located; keep the task's team.",
-      inputs={"path": Input("path", doc="household world YAML file, relative to the workflow file"),
-              "team": Input("string", default=None, doc="a team of the world, or robot names 'a,b,c' (none: every robot)"),
-              "seed": Input("integer", default=None, doc="vary the robots' start positions reproducibly (none: as in the file)")},
       outputs={"world": "object"}, cacheable=True)
-def load(ctx: StepContext, path: str, team: str | None = None, seed: int | None = None) -> dict:
+def load(
+    ctx: StepContext,
+    path: Annotated[PathStr, Doc("household world YAML file, relative to the workflow file")],
+    team: Annotated[str | None, Doc("a team of the world, or robot names 'a,b,c' (none: every robot)")] = None,
+    seed: Annotated[int | None, Doc("vary the robots' start positions reproducibly (none: as in the file)")] = None,
+) -> dict:
     """Raises WorldError (exit 2) listing each problem with file:line:col."""
     from pipflow.household.world import load_world, select_team, vary_starts
 
@@ -27,13 +30,16 @@ def load(ctx: StepContext, path: str, team: str | None = None, seed: int | None 
 
 @step("household.problem",
       doc="Translate a household command (offline, deterministic) into goal conditions and the team-level PDDL problem.",
-      inputs={"command": Input("string", doc="the natural-language command"),
-              "world": Input("object", doc="output of household.load"),
-              "domain": Input("path", doc="team-level PDDL domain (its name goes into the problem)"),
-              "feedback": Input("array", default=None, doc="previous round's messages (the offline translator is deterministic and ignores them)")},
       outputs={"problem": "string", "goal": "object", "concrete": "object", "constraints": "array", "errors": "array"},
       cacheable=True)
-def problem(ctx: StepContext, command: str, world: dict, domain: str, feedback: list | None = None) -> dict:
+def problem(
+    ctx: StepContext,
+    command: Annotated[str, Doc("the natural-language command")],
+    world: Annotated[dict, Doc("output of household.load")],
+    domain: Annotated[PathStr, Doc("team-level PDDL domain (its name goes into the problem)")],
+    feedback: Annotated[list | None, Doc("previous round's messages (the offline translator is deterministic "
+                                         "and ignores them)")] = None,
+) -> dict:
     """``goal`` keeps the command's conditions (counts included) for judging; ``concrete`` has the
     counts resolved to objects, which is what the problem asks for. Untranslatable commands raise
     TranslationError; impossible ones (slice a mug) raise Refusal with the reason."""
@@ -52,17 +58,18 @@ def problem(ctx: StepContext, command: str, world: dict, domain: str, feedback: 
 
 @step("household.simulate",
       doc="Execute a schedule in the home: preconditions and coalition skills checked, state updated, travel measured, pybullet pictures.",
-      inputs={"world": Input("object", doc="output of household.load"),
-              "schedule": Input("object", doc="output of schedule"),
-              "graph": Input("object", default=None, doc="output of graph.dependencies (skills and route per subtask)"),
-              "goal": Input("object", default=None, doc="goal conditions to judge the final state against"),
-              "snapshots": Input("boolean", default=False, doc="save pybullet pictures of the start and the end")},
       outputs={"final_state": "object", "executed": "integer", "failed": "integer", "failures": "array",
                "exe": "number", "travel": "object", "tc_max": "number", "tc_avg": "number", "goal_met": "boolean",
                "gcr": "number", "conditions": "object", "jumps": "object", "makespan": "number", "pictures": "array"},
       version="1")
-def simulate(ctx: StepContext, world: dict, schedule: dict, graph: dict | None = None, goal: dict | None = None,
-             snapshots: bool = False) -> dict:
+def simulate(
+    ctx: StepContext,
+    world: Annotated[dict, Doc("output of household.load")],
+    schedule: Annotated[dict, Doc("output of schedule")],
+    graph: Annotated[dict | None, Doc("output of graph.dependencies (skills and route per subtask)")] = None,
+    goal: Annotated[dict | None, Doc("goal conditions to judge the final state against")] = None,
+    snapshots: Annotated[bool, Doc("save pybullet pictures of the start and the end")] = False,
+) -> dict:
     from pipflow.household.executor import simulate as run
 
     out_dir = ctx.artifact_path("home-start.png").parent if snapshots else None
@@ -74,14 +81,22 @@ def simulate(ctx: StepContext, world: dict, schedule: dict, graph: dict | None =
 
 
 @step("household.score",
-      doc="Score a household run's final state against ground-truth conditions (SR, GCR, Exe, RU, TC).",
-      inputs={"world": Input("object", doc="output of household.load"),
-              "goal": Input("object", doc="ground-truth goal conditions"),
-              "schedule": Input("object", default=None), "graph": Input("object", default=None),
-              "simulation": Input("object", default=None, doc="output of household.simulate")},
-      outputs={"score": "object"})
-def score(ctx: StepContext, world: dict, goal: dict, schedule: dict | None = None, graph: dict | None = None,
-          simulation: dict | None = None) -> dict:
+      doc="Score a household run's final state against ground-truth conditions (SR, GCR, Exe, RU, TC); "
+          "the outputs of metrics.score, flat.",
+      outputs={"success": "boolean", "goal_met": "boolean", "gcr": "number", "exe": "number", "ru": "number",
+               "tc_max": "number", "tc_avg": "number", "makespan": "number", "planned": "integer",
+               "executed": "integer", "lower_bound": "any", "violations": "array", "refused": "boolean",
+               "error": "any"})
+def score(
+    ctx: StepContext,
+    world: Annotated[dict, Doc("output of household.load")],
+    goal: Annotated[dict, Doc("ground-truth goal conditions")],
+    schedule: Annotated[dict | None, Doc("output of schedule")] = None,
+    graph: Annotated[dict | None, Doc("output of graph.dependencies")] = None,
+    simulation: Annotated[dict | None, Doc("output of household.simulate")] = None,
+) -> dict:
+    """The same flat outputs as ``metrics.score`` (one shape per family), so a workflow or the
+    bench reads ``success``/``gcr`` the same way in either domain."""
     from pipflow.household.scoring import score_run
 
-    return {"score": score_run(world, goal, graph=graph, schedule=schedule, simulation=simulation)}
+    return score_run(world, goal, graph=graph, schedule=schedule, simulation=simulation)

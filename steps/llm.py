@@ -4,7 +4,9 @@ Thin face of :mod:`pipflow.language.generator`; litellm is imported only when a 
 """
 from __future__ import annotations
 
-from pipflow import Input, StepContext, step
+from typing import Annotated
+
+from pipflow import Check, Doc, PathStr, StepContext, step
 from pipflow.errors import InputError
 
 #: the longest answer kept in the step's ``response`` output. The run record copies outputs (each
@@ -17,47 +19,43 @@ from pipflow.language.prompting import prompt_problem
 @step(
     "llm.problem",
     doc="Write the team-level PDDL problem for a command with a language model (or offline).",
-    inputs={
-        "command": Input("string", doc="the natural-language command"),
-        "world": Input("object", doc="the world (output of world.load or household.load)"),
-        "domain": Input("path", doc="team-level PDDL domain file"),
-        "prompt": Input("string", None, doc="template name in prompts/ or a path; unset: the world's "
-                                            "domain's (warehouse_problem, household_problem)",
-                         check=prompt_problem),
-        "model": Input("string", None, doc="litellm model string, local/smollm2 or offline; "
-                                           "unset: $PIPFLOW_MODEL, else offline"),
-        "temperature": Input("number", 0.0),
-        "max_tokens": Input("integer", None, doc="most tokens of the answer; unset: from the expected "
-                                                  "answer's size (pipflow.language.budget)"),
-        "timeout": Input("number", 60.0, doc="seconds per call"),
-        "retries": Input("integer", 2, doc="extra tries on rate limits, time-outs, server errors, lost "
-                                          "connections (the only retry layer: 2 means at most 3 requests)"),
-        "deadline": Input("number", None, doc="seconds for the whole call, retries and waits included; "
-                                              "unset: no bound beyond timeout x tries"),
-        "api_base": Input("string", None, doc="base URL of an OpenAI-compatible server"),
-        "feedback": Input("array", None, doc="messages of the previous round's debugger/verifier"),
-        "previous": Input("object", None, doc="the previous round's `round` output: a prompt that would "
-                                              "repeat it is varied (output `varied` says how)"),
-        "grounded": Input("boolean", False, doc="constrain decoding to the world's names and counts"),
-        "cache_dir": Input("path", None, doc="response cache folder (default .pipflow-cache/llm)"),
-        "cache": Input("boolean", True, doc="replay cached responses; false always calls the model"),
-    },
     outputs={"problem": "string", "goal": "any", "constraints": "array", "messages": "array",
              "response": "string", "usage": "object", "errors": "array",
              "order": "any", "explanation": "any",  # offline: the order and the resolver's arithmetic
-             "varied": "string", "round": "object"},  # what changed in a prompt that would repeat; this round
+             "varied": "string", "round": "object",  # what changed in a prompt that would repeat; this round
+             "concrete": "object"},  # household offline: the goal with counts resolved (as household.problem)
 )
-def llm_problem(ctx: StepContext, command: str, world: dict, domain: str,
-                prompt: str | None = None, model: str | None = None,
-                temperature: float = 0.0, max_tokens: int | None = None, timeout: float = 60.0,
-                retries: int = 2, api_base: str | None = None, feedback: list | None = None,
-                grounded: bool = False, cache_dir: str | None = None, cache: bool = True,
-                deadline: float | None = None, previous: dict | None = None) -> dict:
+def llm_problem(
+    ctx: StepContext,
+    command: Annotated[str, Doc("the natural-language command")],
+    world: Annotated[dict, Doc("the world (output of world.load or household.load)")],
+    domain: Annotated[PathStr, Doc("team-level PDDL domain file")],
+    prompt: Annotated[str | None, Check(prompt_problem),
+                      Doc("template name in prompts/ or a path; unset: the world's domain's "
+                          "(warehouse_problem, household_problem)")] = None,
+    model: Annotated[str | None, Doc("litellm model string, local/smollm2 or offline; unset: $PIPFLOW_MODEL, "
+                                     "else offline")] = None,
+    temperature: Annotated[float, Doc("sampling temperature (0: the most likely answer)")] = 0.0,
+    max_tokens: Annotated[int | None, Doc("most tokens of the answer; unset: from the expected answer's size "
+                                          "(pipflow.language.budget)")] = None,
+    timeout: Annotated[float, Doc("seconds per call")] = 60.0,
+    retries: Annotated[int, Doc("extra tries on rate limits, time-outs, server errors, lost connections (the "
+                                "only retry layer: 2 means at most 3 requests)")] = 2,
+    api_base: Annotated[str | None, Doc("base URL of an OpenAI-compatible server")] = None,
+    feedback: Annotated[list | None, Doc("messages of the previous round's debugger/verifier")] = None,
+    grounded: Annotated[bool, Doc("constrain decoding to the world's names and counts")] = False,
+    cache_dir: Annotated[PathStr | None, Doc("response cache folder (default .pipflow-cache/llm)")] = None,
+    cache: Annotated[bool, Doc("replay cached responses; false always calls the model")] = True,
+    deadline: Annotated[float | None, Doc("seconds for the whole call, retries and waits included; unset: no "
+                                          "bound beyond timeout x tries")] = None,
+    previous: Annotated[dict | None, Doc("the previous round's `round` output: a prompt that would repeat it "
+                                         "is varied (output `varied` says how)")] = None,
+) -> dict:
     """``problem`` is "" when the answer held no usable problem; ``errors`` then says why, in
     words meant for the next round's prompt. ``goal`` is set by offline and grounded runs, and
     for household worlds (``domain: household``) by every run: the goal conditions read back from
     the problem. Household worlds go to the household translator offline; `concrete` (the goal with
-    counts resolved) is then an extra output, as in step household.problem."""
+    counts resolved) is then set, as in step household.problem (None otherwise)."""
     from pipflow.language.generator import domain_of as generate_domain_of
     from pipflow.language.generator import generate
     from pipflow.language.llm import resolve_model
@@ -88,23 +86,21 @@ def llm_problem(ctx: StepContext, command: str, world: dict, domain: str,
     "llm.check",
     doc="A second opinion on the model's reading: its goal and robot rules against the offline parser's "
         "reading of the command (or the command's names and numbers); decides whether a refusal is final.",
-    inputs={
-        "command": Input("string", doc="the natural-language command"),
-        "world": Input("object", doc="the world (output of world.load)"),
-        "goal": Input("object", None, doc="the goal the round's problem states (pddl.verify's goal)"),
-        "constraints": Input("array", None, doc="the round's robot-use rules (llm.problem's constraints)"),
-        "refusal": Input("string", None, doc="the verifier's refusal of this round's goal, if any"),
-        "model": Input("string", None, doc="the generator's model; offline: its reading is the parser's"),
-        "grounded": Input("boolean", False, doc="the model answered in JSON: feedback says so in JSON"),
-        "last": Input("boolean", False, doc="this is the loop's last round: a disagreement with the "
-                                            "command's words alone is then accepted, with a warning"),
-    },
     outputs={"ok": "boolean", "messages": "array", "refusal": "string", "disagreement": "array",
              "basis": "string"},
 )
-def llm_check(ctx: StepContext, command: str, world: dict, goal: dict | None = None,
-              constraints: list | None = None, refusal: str | None = None, model: str | None = None,
-              grounded: bool = False, last: bool = False) -> dict:
+def llm_check(
+    ctx: StepContext,
+    command: Annotated[str, Doc("the natural-language command")],
+    world: Annotated[dict, Doc("the world (output of world.load)")],
+    goal: Annotated[dict | None, Doc("the goal the round's problem states (pddl.verify's goal)")] = None,
+    constraints: Annotated[list | None, Doc("the round's robot-use rules (llm.problem's constraints)")] = None,
+    refusal: Annotated[str | None, Doc("the verifier's refusal of this round's goal, if any")] = None,
+    model: Annotated[str | None, Doc("the generator's model; offline: its reading is the parser's")] = None,
+    grounded: Annotated[bool, Doc("the model answered in JSON: feedback says so in JSON")] = False,
+    last: Annotated[bool, Doc("this is the loop's last round: a disagreement with the command's words alone "
+                              "is then accepted, with a warning")] = False,
+) -> dict:
     """``ok``: the reading agrees (or, in the last round, differs only from the command's words);
     ``messages``: the disagreement as feedback for the next round, in the mode's answer form;
     ``refusal``: final only when the command makes the goal impossible, else None (the verifier's

@@ -1,23 +1,15 @@
 """Step ``metrics.score``: judge one run against its task (see :mod:`pipflow.scoring`)."""
 from __future__ import annotations
 
-from pipflow import Input, StepContext, step
+from typing import Annotated
+
+from pipflow import Doc, StepContext, step
 
 
 @step(
     "metrics.score",
     doc="Score a run: success (goal, constraints, conservation, capacity, skills), GCR, Exe, RU, TC-max, "
         "TC-avg over all robots (tc_avg) and over the robots that moved (tc_avg_moved).",
-    inputs={
-        "world": Input("object", doc="the world (output of world.load)"),
-        "goal": Input("object", doc="ground-truth goal {SHELF: {PRODUCT: units}}"),
-        "constraints": Input("array", default=[], doc="ground-truth only/never rules"),
-        "graph": Input("object", default=None, doc="dependency graph (fields and skills per subtask)"),
-        "schedule": Input("object", default=None, doc="the schedule that was simulated"),
-        "simulation": Input("object", default=None, doc="outputs of simulate.pybullet"),
-        "feasible": Input("boolean", default=True, doc="false: only a refusal with nothing executed succeeds"),
-        "refusal": Input("string", default=None, doc="refusal message, when the pipeline refused"),
-    },
     outputs={
         "success": "boolean", "goal_met": "boolean", "gcr": "number", "exe": "number", "ru": "number",
         "tc_max": "number", "tc_avg": "number", "tc_avg_moved": "number", "makespan": "number", "planned": "integer",
@@ -25,9 +17,17 @@ from pipflow import Input, StepContext, step
         "error": "any",
     },
 )
-def score(ctx: StepContext, world: dict, goal: dict, constraints: list | None = None,
-          graph: dict | None = None, schedule: dict | None = None, simulation: dict | None = None,
-          feasible: bool = True, refusal: str | None = None) -> dict:
+def score(
+    ctx: StepContext,
+    world: Annotated[dict, Doc("the world (output of world.load)")],
+    goal: Annotated[dict, Doc("ground-truth goal {SHELF: {PRODUCT: units}}")],
+    constraints: Annotated[list | None, Doc("ground-truth only/never rules")] = None,
+    graph: Annotated[dict | None, Doc("dependency graph (fields and skills per subtask)")] = None,
+    schedule: Annotated[dict | None, Doc("the schedule that was simulated")] = None,
+    simulation: Annotated[dict | None, Doc("outputs of simulate.pybullet")] = None,
+    feasible: Annotated[bool, Doc("false: only a refusal with nothing executed succeeds")] = True,
+    refusal: Annotated[str | None, Doc("refusal message, when the pipeline refused")] = None,
+) -> dict:
     from pipflow.scoring import score_run
 
     result = score_run(world, goal, constraints=constraints or [], feasible=feasible, graph=graph,

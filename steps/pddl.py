@@ -6,7 +6,9 @@ Thin faces of :mod:`pipflow.pddl`; UP is imported inside the functions. Each ste
 """
 from __future__ import annotations
 
-from pipflow import Input, StepContext, step
+from typing import Annotated
+
+from pipflow import Doc, PathStr, StepContext, step
 
 DEFAULT_ENGINE = "pipflow-transport"  # see pipflow/pddl/transport.py for why
 
@@ -19,11 +21,13 @@ def _parse(ctx: StepContext, problem: str, domain: str):
 
 @step("pddl.debug",
       doc="Parse a problem against the domain and check it against the world; explain every failure (line, column, token, closest names).",
-      inputs={"problem": Input("string", doc="PDDL problem text"),
-              "domain": Input("path", doc="PDDL domain file"),
-              "world": Input("object", default=None, doc="world dict; when given, objects and initial state must be the world's")},
       outputs={"ok": "boolean", "messages": "array", "problem": "string"})
-def debug(ctx: StepContext, problem: str | None, domain: str, world: dict | None = None) -> dict:
+def debug(
+    ctx: StepContext,
+    problem: Annotated[str | None, Doc("PDDL problem text")],
+    domain: Annotated[PathStr, Doc("PDDL domain file")],
+    world: Annotated[dict | None, Doc("world dict; when given, objects and initial state must be the world's")] = None,
+) -> dict:
     """``problem`` out is the text when it is clean, ``None`` otherwise (so the planner is skipped
     and the messages go back to the generator)."""
     from pipflow.pddl.debugger import debug_problem
@@ -38,23 +42,23 @@ def debug(ctx: StepContext, problem: str | None, domain: str, world: dict | None
 
 @step("pddl.solve",
       doc="Solve a problem with a UP engine; status is solved, unsolvable or error, each with its message; a time-out fails the step.",
-      inputs={"problem": Input("string", doc="PDDL problem text"),
-              "domain": Input("path", doc="PDDL domain file"),
-              "engine": Input("string", default=DEFAULT_ENGINE,
-                              doc="UP engine: pipflow-transport (fast, near-fewest moves), enhsp, enhsp-opt, fast-downward, ..."),
-              "params": Input("object", default=None, doc="engine parameters, e.g. {params: '-h hmax -s WAStar'} for ENHSP"),
-              "timeout": Input("number", default=60, doc="seconds"),
-              "fallback": Input("string", default=None,
-                                doc="engine to try when the first cannot handle the problem (unsupported, gave up, "
-                                    "timed out); unset: none. The outputs name the engine that answered"),
-              "world": Input("object", default=None,
-                             doc="world dict: the plan's names are then spelled as the world spells them (PDDL reads them in lower case)"),
-              "constraints": Input("array", default=None,
-                                   doc="only/never robot rules: with the world, pipflow-transport keeps each move within what its allowed robots carry")},
       outputs={"status": "string", "plan": "array", "message": "string", "time": "number", "engine": "string"})
-def solve(ctx: StepContext, problem: str | None, domain: str, engine: str = DEFAULT_ENGINE,
-          params: dict | None = None, timeout: float = 60, fallback: str | None = None, world: dict | None = None,
-          constraints: list | None = None) -> dict:
+def solve(
+    ctx: StepContext,
+    problem: Annotated[str | None, Doc("PDDL problem text")],
+    domain: Annotated[PathStr, Doc("PDDL domain file")],
+    engine: Annotated[str, Doc("UP engine: pipflow-transport (fast, near-fewest moves), enhsp, enhsp-opt, "
+                               "fast-downward, ...")] = DEFAULT_ENGINE,
+    params: Annotated[dict | None, Doc("engine parameters, e.g. {params: '-h hmax -s WAStar'} for ENHSP")] = None,
+    timeout: Annotated[float, Doc("seconds")] = 60,
+    fallback: Annotated[str | None, Doc("engine to try when the first cannot handle the problem (unsupported, "
+                                        "gave up, timed out); unset: none. The outputs name the engine that "
+                                        "answered")] = None,
+    world: Annotated[dict | None, Doc("world dict: the plan's names are then spelled as the world spells them "
+                                      "(PDDL reads them in lower case)")] = None,
+    constraints: Annotated[list | None, Doc("only/never robot rules: with the world, pipflow-transport keeps "
+                                            "each move within what its allowed robots carry")] = None,
+) -> dict:
     """An unknown engine (or fallback) is the user's error: exit 2, naming the installed planners,
     never a silent substitute. A problem that found no plan is remembered in this process by
     content (domain, problem, engine, params, timeout): an unchanged problem in the next round of
@@ -127,13 +131,14 @@ def _solve_once(ctx: StepContext, parsed, problem: str, domain_text: str, engine
 
 @step("pddl.verify",
       doc="Validate the plan with UP's sequential plan validator and check the goal against the world; an infeasible goal yields a refusal reason.",
-      inputs={"problem": Input("string", doc="PDDL problem text"),
-              "domain": Input("path", doc="PDDL domain file"),
-              "plan": Input("array", default=None, doc="plan from pddl.solve"),
-              "world": Input("object", default=None, doc="world dict for the goal checks")},
       outputs={"ok": "boolean", "messages": "array", "refusal": "string", "goal": "object"})
-def verify(ctx: StepContext, problem: str | None, domain: str, plan: list | None = None,
-           world: dict | None = None) -> dict:
+def verify(
+    ctx: StepContext,
+    problem: Annotated[str | None, Doc("PDDL problem text")],
+    domain: Annotated[PathStr, Doc("PDDL domain file")],
+    plan: Annotated[list | None, Doc("plan from pddl.solve")] = None,
+    world: Annotated[dict | None, Doc("world dict for the goal checks")] = None,
+) -> dict:
     """``refusal`` is a reason string when no plan can satisfy the goal in this world (more units
     than exist, over capacity), else None; ``goal`` is the problem's goal as {shelf: {product: n}}."""
     from pipflow.pddl.verifier import verify_plan

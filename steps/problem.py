@@ -7,19 +7,22 @@ command) in, PDDL problem text out.
 from __future__ import annotations
 
 import re
+from typing import Annotated
 
-from pipflow import Input, StepContext, step
+from pipflow import Doc, PathStr, StepContext, step
 
 
 @step("problem.write",
       doc="Write the team-level PDDL problem for a goal: the world's objects and initial state, one (= (stock s p) n) per goal count, (>= ...)/(<= ...) per bound.",
-      inputs={"world": Input("object", doc="world dict from world.load"),
-              "goal": Input("object", doc="goal {shelf: {product: units or {at_least, at_most}}}"),
-              "domain": Input("path", doc="team-level PDDL domain (its name goes into the problem)"),
-              "name": Input("string", default="task", doc="problem name")},
       outputs={"problem": "string"},
       cacheable=True)
-def write(ctx: StepContext, world: dict | None, goal: dict | None, domain: str, name: str = "task") -> dict:
+def write(
+    ctx: StepContext,
+    world: Annotated[dict | None, Doc("world dict from world.load")],
+    goal: Annotated[dict | None, Doc("goal {shelf: {product: units or {at_least, at_most}}}")],
+    domain: Annotated[PathStr, Doc("team-level PDDL domain (its name goes into the problem)")],
+    name: Annotated[str, Doc("problem name")] = "task",
+) -> dict:
     """Returns ``problem=None`` (and logs why) when the world or goal is missing, so a skipped
     upstream step does not crash the run."""
     from pipflow.pddl.writer import write_problem

@@ -1,25 +1,26 @@
 """The ``schedule`` step: Alg. 1 timing of an allocation (thin face of :mod:`pipflow.scheduling`)."""
 from __future__ import annotations
 
-from pipflow import Input, StepContext, step
+from typing import Annotated
+
+from pipflow import Doc, StepContext, step
 
 
 @step("schedule",
       doc="Time an allocation: start when predecessors are done and the coalition has gathered.",
-      inputs={
-          "graph": Input("object", doc="output of graph.dependencies"),
-          "allocation": Input("object", doc="output of an allocate.* step"),
-          "world": Input("object", doc="output of world.load"),
-          "speed": Input("number", default=1.0, doc="robot speed, m/s"),
-          "handling": Input("number", default=2.0, doc="seconds of loading/unloading per route stop"),
-          "picture": Input("boolean", default=True,
-                           doc="also draw a Gantt chart (workflows pass pictures == 'always'; see pipflow.pictures)"),
-      },
       outputs={"schedule": "object", "makespan": "number", "tc_max": "number", "tc_avg": "number",
                "tc_avg_moved": "number"},
       cacheable=True)
-def schedule(ctx: StepContext, graph: dict, allocation: dict, world: dict, speed: float = 1.0,
-             handling: float = 2.0, picture: bool = True) -> dict:
+def schedule(
+    ctx: StepContext,
+    graph: Annotated[dict, Doc("output of graph.dependencies")],
+    allocation: Annotated[dict, Doc("output of an allocate.* step")],
+    world: Annotated[dict, Doc("output of world.load")],
+    speed: Annotated[float, Doc("robot speed, m/s")] = 1.0,
+    handling: Annotated[float, Doc("seconds of loading/unloading per route stop")] = 2.0,
+    picture: Annotated[bool, Doc("also draw a Gantt chart (workflows pass pictures == 'always'; see "
+                                 "pipflow.pictures)")] = True,
+) -> dict:
     """Replay the allocation in its order; legs follow obstacle-free paths."""
 
     from pipflow.pictures import gantt

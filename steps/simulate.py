@@ -2,22 +2,14 @@
 :mod:`pipflow.simulation`). Thin on purpose: the library does the work, this declares the face."""
 from __future__ import annotations
 
-from pipflow import Input, StepContext, step
+from typing import Annotated
+
+from pipflow import Doc, StepContext, step
 
 
 @step(
     "simulate.pybullet",
     doc="Execute the schedule in a headless pybullet warehouse; read stock and travel back from the bodies.",
-    inputs={
-        "world": Input("object", doc="the world (output of world.load)"),
-        "schedule": Input("object", doc="the schedule (output of schedule)"),
-        "graph": Input("object", default=None, doc="the dependency graph: units, fields and route per subtask"),
-        "goal": Input("object", default=None, doc="{SHELF: {PRODUCT: units}} to judge the final stock against"),
-        "snapshots": Input("boolean", default=False, doc="save key-moment snapshots and the path map (PNG)"),
-        "animation": Input("boolean", default=False, doc="save a top-down animation GIF (needs Pillow)"),
-        "picture": Input("boolean", default=False,
-                         doc="save the path map (PNG) without snapshots (workflows pass pictures == 'always')"),
-    },
     outputs={
         "final_stock": "object", "executed": "integer", "failed": "integer", "failures": "array",
         "exe": "number", "travel": "object", "tc_max": "number", "tc_avg": "number", "tc_avg_moved": "number",
@@ -27,9 +19,17 @@ from pipflow import Input, StepContext, step
     },
     version="1",
 )
-def simulate_pybullet(ctx: StepContext, world: dict, schedule: dict, graph: dict | None = None,
-                      goal: dict | None = None, snapshots: bool = False, animation: bool = False,
-                      picture: bool = False) -> dict:
+def simulate_pybullet(
+    ctx: StepContext,
+    world: Annotated[dict, Doc("the world (output of world.load)")],
+    schedule: Annotated[dict, Doc("the schedule (output of schedule)")],
+    graph: Annotated[dict | None, Doc("the dependency graph: units, fields and route per subtask")] = None,
+    goal: Annotated[dict | None, Doc("{SHELF: {PRODUCT: units}} to judge the final stock against")] = None,
+    snapshots: Annotated[bool, Doc("save key-moment snapshots and the path map (PNG)")] = False,
+    animation: Annotated[bool, Doc("save a top-down animation GIF (needs Pillow)")] = False,
+    picture: Annotated[bool, Doc("save the path map (PNG) without snapshots (workflows pass pictures == "
+                                 "'always')")] = False,
+) -> dict:
     from pipflow.simulation import simulate
 
     want_files = bool(snapshots or animation or picture)

@@ -1,17 +1,20 @@
 """World step: load and validate a world file (heavy work in :mod:`pipflow.world`)."""
 from __future__ import annotations
 
-from pipflow import Input, StepContext, step
+from typing import Annotated
+
+from pipflow import Doc, PathStr, StepContext, step
 
 
 @step("world.load",
       doc="Load a world file (floor, shelves, products, stock, robots), validated with every problem located.",
-      inputs={"path": Input("path", doc="world YAML file, relative to the workflow file"),
-              "seed": Input("integer", default=None,
-                            doc="vary the robots' start positions reproducibly (none: as in the file)")},
       outputs={"world": "object"},
       cacheable=True)
-def load(ctx: StepContext, path: str, seed: int | None = None) -> dict:
+def load(
+    ctx: StepContext,
+    path: Annotated[PathStr, Doc("world YAML file, relative to the workflow file")],
+    seed: Annotated[int | None, Doc("vary the robots' start positions reproducibly (none: as in the file)")] = None,
+) -> dict:
     """Raises WorldError (exit 2) listing each problem with file:line:col; returns the normalized
     world dict of docs/architecture.md."""
     from pipflow.starts import vary_starts

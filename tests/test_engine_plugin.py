@@ -79,3 +79,118 @@ def test_condition_flips_with_an_input(demo_plugin_site, tmp_path):
     (run,) = (tmp_path / "runs").iterdir()
     outputs = json.loads((run / "outputs.json").read_text())
     assert outputs == {"text": "HELLO!!", "rounds": 1, "quiet": "HELLO!!", "announced": None}
+
+
+# ---------------------------------------------------------------- the step contract: one source
+from typing import Annotated, Any  # noqa: E402
+
+import pytest  # noqa: E402
+
+from pipflow import Check, Choices, Doc, Input, PathStr, StepContext, step  # noqa: E402
+from pipflow.engine import run_workflow  # noqa: E402
+from pipflow.engine.registry import Registry, default_registry  # noqa: E402
+from pipflow.errors import StepDefinitionError  # noqa: E402
+
+
+def _no_shouting(value, base_dir):
+    return "no capitals, please" if isinstance(value, str) and value.isupper() else None
+
+
+def test_inputs_are_read_from_the_signature():
+    @step("t.sig", outputs={"n": "integer"})
+    def sig(ctx: StepContext, text: Annotated[str, Doc("the text")], n: int, ratio: float = 0.5,
+            flag: bool = False, table: dict | None = None, items: list[str] | None = None,
+            where: Annotated[PathStr, Doc("a file")] = "a.txt", anything: Any = None,
+            mode: Annotated[str, Choices("a", "b"), Check(_no_shouting)] = "a") -> dict:
+        return {"n": n}
+
+    got = {k: (v.type, v.required, None if v.required else v.default) for k, v in sig.inputs.items()}
+    assert got == {"text": ("string", True, None), "n": ("integer", True, None), "ratio": ("number", False, 0.5),
+                   "flag": ("boolean", False, False), "table": ("object", False, None),
+                   "items": ("array", False, None), "where": ("path", False, "a.txt"),
+                   "anything": ("any", False, None), "mode": ("string", False, "a")}
+    assert sig.inputs["text"].doc == "the text" and sig.inputs["where"].doc == "a file"
+    assert sig.inputs["mode"].choices == ("a", "b")
+    assert sig.inputs["mode"].check("LOUD", None) == "no capitals, please"
+    assert sig.defaults() == {"ratio": 0.5, "flag": False, "table": None, "items": None, "where": "a.txt",
+                              "anything": None, "mode": "a"}
+
+
+@pytest.mark.parametrize("define, words", [
+    (lambda: step("t.bad")(lambda ctx, text: {}), "parameter 'text' has no type hint"),
+    (lambda: step("t.bad")(_with_hint(set)), "maps to no input type"),
+    (lambda: step("t.bad")(_with_hint(int, "three")), "default 'three' is not integer"),
+    (lambda: step("t.bad")(_with_hint(list, ())), "default () is not array"),
+    (lambda: step("t.bad")(_with_hint(str, None)), "does not admit None"),
+    (lambda: step("t.bad")(_with_hint(str | int)), "maps to no input type"),
+    (lambda: step("t.bad", outputs={"x": "text"})(_with_hint(str)), "output 'x' has unknown type 'text'"),
+])
+def test_a_step_that_contradicts_its_contract_is_refused_at_registration(define, words):
+    with pytest.raises(StepDefinitionError) as err:
+        define()
+    assert words in str(err.value) and "step 't.bad'" in str(err.value)
+
+
+_MISSING = object()
+
+
+def _with_hint(hint, default=_MISSING):
+    """A step function whose one parameter has ``hint`` (and ``default``), named in messages."""
+    if default is _MISSING:
+        def func(ctx: StepContext, value: hint) -> dict:
+            return {}
+    else:
+        def func(ctx: StepContext, value: hint = default) -> dict:
+            return {}
+    func.__annotations__["value"] = hint  # a real object, not a string: the hint is built here
+    return func
+
+
+def test_the_first_style_is_checked_against_the_signature():
+    def legacy(ctx: StepContext, text: str, times: int = 1) -> dict:
+        return {}
+
+    same = step("t.old", inputs={"text": Input("string", doc="the text"), "times": Input("integer", default=1)})(legacy)
+    assert same.inputs["text"].doc == "the text" and same.inputs["times"].default == 1
+    drifts = [
+        ({"text": Input("string"), "times": Input("integer", default=2)}, "'times': inputs= says default 2, the signature says 1"),
+        ({"text": Input("integer"), "times": Input("integer", default=1)}, "'text': inputs= says type integer, the signature says string"),
+        ({"text": Input("string")}, None),  # a parameter inputs= leaves out is read from the signature
+        ({"text": Input("string"), "times": Input("integer", default=1), "extra": Input("any")}, "declares 'extra'"),
+        ({"text": Input("string", default="x"), "times": Input("integer", default=1)},
+         "'text': inputs= says default 'x', the signature says (required)"),
+    ]
+    for declared, words in drifts:
+        if words is None:
+            assert step("t.old", inputs=declared)(legacy).inputs["times"].default == 1
+            continue
+        with pytest.raises(StepDefinitionError) as err:
+            step("t.old", inputs=declared)(legacy)
+        assert words in str(err.value) and ".legacy)" in str(err.value), str(err.value)
+
+
+def test_every_builtin_step_is_declared_by_its_signature():
+    """No drift: each built-in step's inputs are exactly its function's parameters."""
+    import inspect
+
+    steps = [s for s in default_registry() if s.module.startswith("pipflow.steps.")]
+    assert len(steps) >= 20 and not default_registry().broken
+    for s in steps:
+        params = list(inspect.signature(s.func).parameters)[1:]
+        assert list(s.inputs) == params, s.name
+
+
+@step("t.chatty", outputs={"text": "string"})
+def _chatty(ctx: StepContext, text: str) -> dict:
+    return {"text": text, "secret": 1}
+
+
+def test_a_step_returning_an_undeclared_output_fails_naming_it(tmp_path):
+    registry = Registry()
+    registry.add(_chatty, "test")
+    wf = tmp_path / "wf.yaml"
+    wf.write_text("pipflow: 1\nname: chatty\nsteps:\n  - id: talk\n    uses: t.chatty\n    with: {text: hi}\n")
+    result = run_workflow(wf, runs_dir=tmp_path / "runs", registry=registry)
+    assert result.status == "failed" and result.error_step == "talk"
+    assert "returned 'secret', which it does not declare" in result.error
+    assert "step 'talk' (t.chatty)" in result.error
