@@ -99,6 +99,16 @@ def test_goal_constructions(command: str, goal: dict) -> None:
     assert rules == []
 
 
+@pytest.mark.parametrize("command,goal,rules", [
+    ("Take 3 product1 from shelf1. Put them on shelf2.", {"shelf1": {"product1": 7}, "shelf2": {"product1": 11}}, []),
+    ("Shelf 2 needs 4 product3. Shelf 4 too.", {"shelf2": {"product3": 4}, "shelf4": {"product3": 4}}, []),
+    ("Empty shelf3. Robot 4 should do it.", {"shelf3": {"product1": 0, "product2": 0, "product3": 0, "product4": 0}},
+     [{"only": ["robot4"], "from": "shelf3"}]),
+])
+def test_references_across_sentences(command: str, goal: dict, rules: list[dict]) -> None:
+    assert got(command) == (goal, rules)
+
+
 def test_negation_scopes_over_its_own_place_only() -> None:
     """ "Clear shelf2, but nothing goes to shelf4": shelf4 keeps what it has (it was emptied)."""
     g, _ = got("Clear shelf2, but nothing goes to shelf4")

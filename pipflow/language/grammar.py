@@ -423,10 +423,13 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | ("nobody" | "no" NUM | "none") ("except" | "but" | "other" "than" | "besides") robots rmodal? useact? rscope -> rule_only
     | ("use" | "using" | "with" | "by" | "employ") robots ("to" act? | "for")? rscope -> rule_use
     | robots oblig act rscope                               -> rule_use
+    | robots oblig? "do" ("it" | "that" | "this" | "job" | "task" | "work") -> rule_do_it
+    | robots ("is" | "are") "only" ("ones" | NUM | ROBOTWORD) ("allowed" "to" | "permitted" "to" | "that" ("may" | "can") | "who" ("may" | "can")) useact? rscope -> rule_only
     | robots ("can" | "may" | "could" | "might") act rscope  -> rule_permission
 
 // "Titan should put 5 kegs on outbound", "Titan, bring two kegs to outbound"
 addressed: robots ("," | ":")? oblig? goal
+         | ("can" | "could" | "would" | "will") robots goal
          | robots "," ("our" | "a" | "an" | "my")? (RKIND | RTAG) "," oblig? goal  -> addressed_appos
          | ("let" | "have" | "get" | "ask") robots "to"? goal
 scoped_goal: ("using" | "with" | "by") ("only" | "just")? robots ","? goal    -> scoped_only

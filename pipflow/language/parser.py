@@ -79,14 +79,19 @@ def _quote(words: str) -> str:
 class _Sentence:
     """Reads one parsed sentence into statements and rules."""
 
-    def __init__(self, lexed: Lexed, lex: Lexicon, robots: RobotSelector):
+    def __init__(self, lexed: Lexed, lex: Lexicon, robots: RobotSelector, memory: dict | None = None):
         self.lexed, self.lex, self.robots = lexed, lex, robots
+        memory = memory or {}
+        # what earlier sentences said, for "them", "too", "do it" and an elided item or place
+        self.prior: list[dict] = list(memory.get("statements") or [])
+        self.prior_last: list[dict] = list(memory.get("last") or [])
+        self.updates: dict[int, dict] = {}
         self.index = lex.index
         self.statements: list[dict] = []
         self.rules: list[dict] = []
         self.bind: list[dict] = []  # rules that take the sentence's goal as their scope
-        self.last_item: list[str] | None = None
-        self.last_places: list[str] | None = None
+        self.last_item: list[str] | None = memory.get("item")
+        self.last_places: list[str] | None = memory.get("places")
         self.last_source: list[str] | None = None
         self.distributive = False  # "every bay", "each of A and B": a count applies to each
         self.before_places: list[str] = []  # the places named before the current part
@@ -583,11 +588,15 @@ class _Sentence:
             # "Take 2 bags out of overflow and drop them at dock 1": the move gets its destination
             places = self.loc(locs[0])[0]
             open_moves = [st for st in self.statements if st["op"] == "transfer" and not st.get("to")]
-            if not open_moves:
-                raise TranslationError(f"{_quote(words)}: 'them' of what? nothing was taken before it")
             for st in open_moves:
                 st["to"] = {"names": places}
                 st["words"] = f"{st['words']}, {words}"
+            if not open_moves:  # "Take 3 product1 from shelf1. Put them on shelf2."
+                for k, st in enumerate(self.prior):
+                    if st["op"] == "transfer" and not st.get("to"):
+                        self.updates[k] = {**st, "to": {"names": places}, "words": f"{st['words']}, {words}"}
+            if not open_moves and not self.updates:
+                raise TranslationError(f"{_quote(words)}: 'them' of what? nothing was taken before it")
             return
         if kind == "g_ceiling":
             places = self.place_list(plist[0])
@@ -786,13 +795,13 @@ class _Sentence:
         words = self.words(node)
         if kind == "t_too":
             places = self.place_list(self.sub(node, "places")[0])
-            last = [s for s in self.statements if "places" in s]
+            last = [s for s in self.statements if "places" in s] or [s for s in self.prior_last if "places" in s]
             if not last:
                 raise TranslationError(f"{_quote(words)}: cannot tell what to repeat there")
             prev = last[-1]
             if prev["op"] not in ("set", "change", "bound", "empty", "fill", "keep", "distribute"):
                 raise TranslationError(f"{_quote(words)}: cannot tell what to repeat there")
-            group = [s for s in self.statements if s.get("words") == prev.get("words")]
+            group = [s for s in self.statements or self.prior_last if s.get("words") == prev.get("words")]
             for s in group:
                 self.statements.append({**s, "places": {"names": places}, "words": f"{s['words']} ({words})"})
             return
@@ -874,10 +883,14 @@ class _Sentence:
             raise TranslationError(f"cannot tell whether {_quote(words)} requires or forbids the robots "
                                    f"(a permission restricts nothing: say 'only ...' or '... must not ...')")
         mode = {"rule_never": "never", "rule_state": "never", "rule_away": "never", "rule_only": "only",
-                "rule_away_items": "never", "rule_never_from": "never",
+                "rule_away_items": "never", "rule_never_from": "never", "rule_do_it": "only",
                 "rule_use": "only"}[kind]
         base = {"mode": mode, "robots": sel, "words": words}
         if kind == "rule_state":
+            self.rules.append(base)
+            return
+        if kind == "rule_do_it":
+            self.bind.append(base)
             self.rules.append(base)
             return
         if kind == "rule_never_from":
@@ -1011,13 +1024,16 @@ class _Sentence:
                 self.statements.remove(st)
                 at = self.statements.index(later[-1]) + 1
                 self.statements.insert(at, st)
-        if not self.bind or not self.statements:
+        statements = self.statements
+        if self.bind and not statements and all(r in self.bind for r in self.rules):
+            statements = self.prior_last  # "Empty shelf3. Robot 4 should do it."
+        if not self.bind or not statements:
             for r in self.rules:
                 r.pop("open", None)
             return
         products: list[str] = []
         moves: list[dict] = []
-        for s in self.statements:
+        for s in statements:
             items = s.get("items") or {}
             products += items.get("names", []) if "names" in items else ["*"]
             if s["op"] == "transfer":
@@ -1080,8 +1096,8 @@ def _fail(exc: UnexpectedInput, lexed: Lexed, lex: Lexicon) -> TranslationError:
                             f"{lex.index.candidates('product')}; robots: {lex.index.candidates('robot')})")
 
 
-def _read(tree: Tree, lexed: Lexed, lex: Lexicon, selector: RobotSelector) -> _Sentence:
-    reader = _Sentence(lexed, lex, selector)
+def _read(tree: Tree, lexed: Lexed, lex: Lexicon, selector: RobotSelector, memory: dict) -> _Sentence:
+    reader = _Sentence(lexed, lex, selector, memory)
     for part in tree.children[0].children:
         if isinstance(part, Tree) and part.data not in ("sep", "lead"):
             reader.part(part)
@@ -1109,7 +1125,7 @@ def _parts(tree: Tree) -> int:
     return sum(1 for p in tree.children[0].children if isinstance(p, Tree) and p.data not in ("sep", "lead"))
 
 
-def _one_meaning(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict) -> _Sentence:
+def _one_meaning(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict, memory: dict) -> _Sentence:
     """Read a sentence in every way the grammar allows, and keep its meaning only if there is one.
 
     Readings that make no sense (an error, or nothing that resolves) are not meanings. Of the
@@ -1119,7 +1135,7 @@ def _one_meaning(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dic
     """
     tree = _all_readings_parser().parse(lexed.tokens)
     if not any(t.data == "_ambig" for t in tree.iter_subtrees()):
-        return _read(tree, lexed, lex, selector)
+        return _read(tree, lexed, lex, selector, memory)
     sentence = " ".join(t.text for t in lexed.source).replace(" zzposs", "'s")
     readings: list[tuple[int, _Sentence, str | None]] = []
     errors: list[tuple[int, PipflowError]] = []
@@ -1128,7 +1144,7 @@ def _one_meaning(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dic
             raise TranslationError(f"'{sentence}' can be read in too many ways to be sure of one; "
                                    f"say it in shorter sentences")
         try:
-            reader = _read(alt, lexed, lex, selector)
+            reader = _read(alt, lexed, lex, selector, memory)
         except PipflowError as exc:
             errors.append((_parts(alt), exc))
             continue
@@ -1155,6 +1171,7 @@ def parse(command: str, world: dict) -> dict:
     selector = RobotSelector(world, lex.index)
     statements: list[dict] = []
     rules: list[dict] = []
+    memory: dict = {}
     for lexed in lex.sentences(command):
         if not lexed.tokens:
             continue
@@ -1164,11 +1181,15 @@ def parse(command: str, world: dict) -> dict:
                                    f"are read up to {MAX_SENTENCE_WORDS} words (end it with a full stop "
                                    f"and go on in a new one)")
         try:
-            reader = _one_meaning(lexed, lex, selector, world)
+            reader = _one_meaning(lexed, lex, selector, world, memory)
         except UnexpectedInput as exc:
             raise _fail(exc, lexed, lex) from None
+        for k, new in reader.updates.items():
+            statements[k] = new
         statements += reader.statements
         rules += reader.rules
+        memory = {"statements": list(statements), "last": list(reader.statements) or memory.get("last", []),
+                  "item": reader.last_item, "places": reader.last_places}
     if not statements and not rules:
         raise TranslationError(f"found no goal and no robot rule in '{command}' "
                                f"(shelves: {lex.index.candidates('shelf')}; "
