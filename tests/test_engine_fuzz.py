@@ -7,6 +7,7 @@ import resource
 from pathlib import Path
 
 import pytest
+import yaml
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -165,8 +166,16 @@ def test_workflow_with_values_of_the_wrong_type_validates_or_lists_problems(tmp_
 INPUTS_SEED = b"command: shelf4 stores a dozen product3\nrounds: 4\nseed: 7\ngrounded: false\nspeed: 1.5\n"
 
 
+JSONISH = st.recursive(st.none() | st.booleans() | st.integers() | st.floats() | st.text(max_size=20),
+                       lambda inner: st.lists(inner, max_size=4) | st.dictionaries(st.text(max_size=8), inner, max_size=4),
+                       max_leaves=12)
+INPUT_KEYS = st.sampled_from(["command", "rounds", "seed", "grounded", "speed", "world", "planner"]) | st.text(max_size=8) \
+    | st.integers() | st.none()
+INPUT_DOCS = st.dictionaries(INPUT_KEYS, JSONISH, max_size=4).map(lambda d: yaml.safe_dump(d).encode())
+
+
 @FUZZ
-@given(st.one_of(mutated(INPUTS_SEED), st.binary(max_size=200)))
+@given(st.one_of(mutated(INPUTS_SEED), st.binary(max_size=200), INPUT_DOCS))
 def test_inputs_file_is_used_or_refused_with_exit_2(tmp_path_factory, capsys, data):
     from pipflow.engine.cli import main
 
