@@ -17,36 +17,22 @@ themselves, and gold goals of feasible tasks that the world cannot meet.
 """
 from __future__ import annotations
 
-import difflib
 import json
 from functools import lru_cache
 from pathlib import Path
-from typing import Any, Callable, Iterable
+from typing import Any, Callable
 
-import yaml
-
-from pipflow.errors import Diagnostic, Location, SourceFileError, WorldError
+from pipflow.errors import Diagnostic, Location, WorldError
 from pipflow.goalcounts import is_bound, value_problems
 from pipflow.resources import data_file
-from pipflow.yamlsource import load_with_locations, read_source, yaml_error_diagnostic
-
-Locate = Callable[..., Location]
+from pipflow.suggest import did_you_mean
+from pipflow.worldfile import Locate, is_point, parse_mapping, read_world_file
 
 
 @lru_cache(maxsize=None)
 def load_schema(name: str) -> dict:
     """A JSON Schema of ``schemas/`` by file name (cached: schemas do not change in a run)."""
     return json.loads(data_file(f"schemas/{name}").read_text())
-
-
-def closest(name: str, choices: Iterable[str], n: int = 3) -> list[str]:
-    """Closest existing names to ``name`` (difflib), for "did you mean" hints."""
-    return difflib.get_close_matches(str(name), [str(c) for c in choices], n=n, cutoff=0.6)
-
-
-def _did_you_mean(name: str, choices: Iterable[str]) -> str:
-    near = closest(name, choices)
-    return f" (did you mean {', '.join(repr(c) for c in near)}?)" if near else ""
 
 
 # ---------------------------------------------------------------------------------------------
@@ -80,7 +66,7 @@ def _error_diagnostics(err: Any, locate: Locate) -> list[Diagnostic]:
     if err.validator == "additionalProperties" and isinstance(err.instance, dict):
         known = list((err.schema.get("properties") or {}).keys())
         return [Diagnostic(locate(path + (extra,), key=True),
-                           f"unknown key {extra!r} in {where}{_did_you_mean(extra, known)}"
+                           f"unknown key {extra!r} in {where}{did_you_mean(extra, known)}"
                            + (f"; allowed: {', '.join(known)}" if known else ""))
                 for extra in err.instance if extra not in known]
     if err.validator == "propertyNames":
@@ -110,10 +96,6 @@ def on_floor(point: list[float], floor: dict) -> bool:
     return 0 <= point[0] <= floor["width"] and 0 <= point[1] <= floor["height"]
 
 
-def _is_point(p: Any) -> bool:
-    return isinstance(p, list) and len(p) == 2 and all(isinstance(v, (int, float)) for v in p)
-
-
 # ---------------------------------------------------------------------------------------------
 # meaning pass
 # ---------------------------------------------------------------------------------------------
@@ -128,7 +110,7 @@ def layout_diagnostics(geo: dict, floor: dict | None, locate: Locate, section: s
                                   f"{kind} {name!r} footprint ({x0}, {y0})-({x1}, {y1}) is not on the "
                                   f"floor (0, 0)-({floor['width']}, {floor['height']})"))
         access = item.get("access")
-        if _is_point(access):
+        if is_point(access):
             if floor and not on_floor(access, floor):
                 out.append(Diagnostic(locate((section, name, "access")),
                                       f"access point {access} of {kind} {name!r} is off the floor"))
@@ -213,7 +195,7 @@ def semantic_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
     for sname, items in stock.items():
         if sname not in shelves:
             out.append(Diagnostic(locate(("stock", sname), key=True),
-                                  f"stock names unknown shelf {sname!r}{_did_you_mean(sname, shelves)}"))
+                                  f"stock names unknown shelf {sname!r}{did_you_mean(sname, shelves)}"))
         if not isinstance(items, dict):
             continue
         total = 0
@@ -221,7 +203,7 @@ def semantic_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
             if pname not in products:
                 out.append(Diagnostic(locate(("stock", sname, pname), key=True),
                                       f"stock of shelf {sname!r} names unknown product {pname!r}"
-                                      f"{_did_you_mean(pname, products)}"))
+                                      f"{did_you_mean(pname, products)}"))
             if isinstance(units, int) and not isinstance(units, bool):
                 if units < 0:
                     out.append(Diagnostic(locate(("stock", sname, pname)),
@@ -237,7 +219,7 @@ def semantic_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
     out += robot_label_diagnostics(data, locate)
     for rname, robot in robots.items():
         start = robot.get("start") if isinstance(robot, dict) else None
-        if not _is_point(start):
+        if not is_point(start):
             continue
         if floor and not on_floor(start, floor):
             out.append(Diagnostic(locate(("robots", rname, "start")),
@@ -280,25 +262,6 @@ def normalize_world(data: dict, path: Path) -> dict:
     }
 
 
-def _read(path: str | Path) -> tuple[Path, str]:
-    p = Path(path).expanduser().resolve()
-    try:  # the shared reader: regular files only, size-capped, UTF-8 checked with a location
-        return p, read_source(p, "file")
-    except SourceFileError as exc:
-        raise WorldError(exc.diagnostics) from None
-
-
-def _parse(text: str, file: str, kind: str) -> tuple[Any, Locate]:
-    try:
-        data, locate = load_with_locations(text, file)
-    except yaml.YAMLError as exc:
-        raise WorldError([yaml_error_diagnostic(exc, file)], f"invalid {kind} file {file}") from None
-    if not isinstance(data, dict):
-        raise WorldError([Diagnostic(Location(file, 1, 1), f"a {kind} file must be a YAML mapping")],
-                         f"invalid {kind} file {file}")
-    return data, locate
-
-
 def _duplicate_diagnostics(locate: Any) -> list[Diagnostic]:
     return [Diagnostic(loc, f"duplicate key {path[-1]!r} (YAML keeps only the last one)")
             for path, loc in getattr(locate, "duplicates", [])]
@@ -310,7 +273,7 @@ def checked_yaml(text: str, file: str, kind: str, schema: str,
     """Parse a YAML file's ``text`` and check it against a schema of ``schemas/`` and the
     ``semantic`` rules; raise :class:`WorldError` with every problem at once, in file order.
     World files of every domain go through here (``prepare`` may fix the parsed data first)."""
-    data, locate = _parse(text, file, kind)
+    data, locate = parse_mapping(text, file, kind)
     if prepare is not None:
         prepare(data)
     diags = _duplicate_diagnostics(locate)
@@ -330,7 +293,7 @@ def world_from_text(text: str, file: str) -> dict:
 
 def load_world(path: str | Path) -> dict:
     """Load a world file; raise :class:`WorldError` listing every problem with its location."""
-    p, text = _read(path)
+    p, text = read_world_file(path)
     return world_from_text(text, str(p))
 
 
@@ -356,11 +319,11 @@ def task_diagnostics(data: dict, world: dict, locate: Locate) -> list[Diagnostic
         for sname, items in goal.items():
             if sname not in shelves:
                 out.append(Diagnostic(locate(("tasks", i, "goal", sname), key=True),
-                                      f"task {tid}: goal names unknown shelf {sname!r}{_did_you_mean(sname, shelves)}"))
+                                      f"task {tid}: goal names unknown shelf {sname!r}{did_you_mean(sname, shelves)}"))
             for pname in (items or {}) if isinstance(items, dict) else ():
                 if pname not in products:
                     out.append(Diagnostic(locate(("tasks", i, "goal", sname, pname), key=True),
-                                          f"task {tid}: goal names unknown product {pname!r}{_did_you_mean(pname, products)}"))
+                                          f"task {tid}: goal names unknown product {pname!r}{did_you_mean(pname, products)}"))
                 for why in value_problems(items[pname]):
                     out.append(Diagnostic(locate(("tasks", i, "goal", sname, pname)),
                                           f"task {tid}: goal for {pname!r} on {sname!r}: {why}"))
@@ -372,13 +335,13 @@ def task_diagnostics(data: dict, world: dict, locate: Locate) -> list[Diagnostic
                 for k, r in enumerate(rule.get(key) or []):
                     if r not in robots:
                         out.append(Diagnostic(locate(("tasks", i, "constraints", j, key, k)),
-                                              f"task {tid}: constraint names unknown robot {r!r}{_did_you_mean(r, robots)}"))
+                                              f"task {tid}: constraint names unknown robot {r!r}{did_you_mean(r, robots)}"))
             for key, names in (("product", products), ("from", shelves), ("to", shelves)):
                 if key in rule and rule[key] not in names:
                     kind = "product" if key == "product" else "shelf"
                     out.append(Diagnostic(locate(("tasks", i, "constraints", j, key)),
                                           f"task {tid}: constraint {key!r} names unknown {kind} "
-                                          f"{rule[key]!r}{_did_you_mean(rule[key], names)}"))
+                                          f"{rule[key]!r}{did_you_mean(rule[key], names)}"))
     return out
 
 
@@ -415,9 +378,9 @@ def load_tasks(path: str | Path) -> dict:
     "constraints", "feasible", "expect", "construction"}]}`` (goal values: counts or bounds,
     :mod:`pipflow.goalcounts`; ``expect`` and ``construction`` None when absent); raises
     :class:`WorldError` with every problem located (a bad world file reports its own locations)."""
-    p, text = _read(path)
+    p, text = read_world_file(path)
     file = str(p)
-    data, locate = _parse(text, file, "task")
+    data, locate = parse_mapping(text, file, "task")
     diags = _duplicate_diagnostics(locate) + schema_diagnostics(data, load_schema("tasks.schema.json"), locate)
     if diags:
         raise WorldError(diags, f"invalid task file {file} ({len(diags)} problem(s))")

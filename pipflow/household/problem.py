@@ -94,7 +94,8 @@ def world_mismatches(problem: Any, text: str, world: dict) -> list[str]:
     """Every way a parsed household problem's objects and initial state differ from the world's:
     a problem that invents an object or a state would be solved in a world that is not ours."""
     from pipflow.pddl.common import initial_numbers
-    from pipflow.pddl.debugger import _closest, find_word
+    from pipflow.pddl.textpos import find_word
+    from pipflow.suggest import did_you_mean_clause
 
     out: list[str] = []
     have: dict[str, list[str]] = {}
@@ -104,7 +105,7 @@ def world_mismatches(problem: Any, text: str, world: dict) -> list[str]:
     for typ, names in expect.items():
         for n in have.get(typ, []):
             if n not in names:
-                out.append(f"{find_word(text, n)}object {n!r} ({typ}) is not in the world{_closest(n, names)}")
+                out.append(f"{find_word(text, n)}object {n!r} ({typ}) is not in the world{did_you_mean_clause(n, names)}")
         for n in names:
             if n not in have.get(typ, []):
                 out.append(f"the problem lacks {typ} {n!r} of the world; declare it in :objects as '{n} - {typ}'")

@@ -148,10 +148,11 @@ def load_tasks(path: str | Path) -> dict:
     a task marked ``feasible: false`` (its right answer is a refusal) needs no goal."""
     from pipflow.errors import Diagnostic, WorldError
     from pipflow.household.world import load_world, team_members
-    from pipflow.world import _did_you_mean, _parse, _read
+    from pipflow.suggest import did_you_mean
+    from pipflow.worldfile import parse_mapping, read_world_file
 
-    p, text = _read(path)
-    data, locate = _parse(text, str(p), "household task")
+    p, text = read_world_file(path)
+    data, locate = parse_mapping(text, str(p), "household task")
     diags: list[Diagnostic] = []
     world_path = (p.parent / str(data.get("world", ""))).resolve()
     if not data.get("world") or not world_path.is_file():
@@ -184,15 +185,15 @@ def load_tasks(path: str | Path) -> dict:
         for place, items in (goal.get("in") or {}).items():
             if place not in world["places"]:
                 diags.append(Diagnostic(locate(("tasks", i, "goal", "in", place), key=True),
-                                        f"task {tid}: unknown place {place!r}{_did_you_mean(place, world['places'])}"))
+                                        f"task {tid}: unknown place {place!r}{did_you_mean(place, world['places'])}"))
             for k, o in enumerate(items or []):
                 if o not in world["objects"]:
                     diags.append(Diagnostic(locate(("tasks", i, "goal", "in", place, k)),
-                                            f"task {tid}: unknown object {o!r}{_did_you_mean(o, world['objects'])}"))
+                                            f"task {tid}: unknown object {o!r}{did_you_mean(o, world['objects'])}"))
         for name, conds in (goal.get("state") or {}).items():
             if name not in names:
                 diags.append(Diagnostic(locate(("tasks", i, "goal", "state", name), key=True),
-                                        f"task {tid}: unknown object or place {name!r}{_did_you_mean(name, names)}"))
+                                        f"task {tid}: unknown object or place {name!r}{did_you_mean(name, names)}"))
                 continue
             for k, c in enumerate(conds or []):
                 if c not in CONDITIONS:

@@ -24,8 +24,9 @@ from pathlib import Path
 from typing import Any
 
 from pipflow.errors import Diagnostic, InputError, Location, WorldError
-from pipflow.world import (Locate, _did_you_mean, _is_point, _read, checked_yaml, inside_footprint, layout_diagnostics,
-                           on_floor)
+from pipflow.suggest import did_you_mean
+from pipflow.world import checked_yaml, inside_footprint, layout_diagnostics, on_floor
+from pipflow.worldfile import Locate, is_point, read_world_file
 
 DOMAIN = "household"
 #: words of domains/household.pddl that may not name an object (UP: "name already defined")
@@ -76,7 +77,7 @@ def semantic_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
             for k, cat in enumerate(ent.get("categories") or []):
                 if cat not in categories:
                     out.append(Diagnostic(locate((kind, name, "categories", k)),
-                                          f"{name!r} names unknown category {cat!r}{_did_you_mean(cat, categories)}; "
+                                          f"{name!r} names unknown category {cat!r}{did_you_mean(cat, categories)}; "
                                           "declare it under `categories`"))
     for name, obj in objects.items():
         where = obj.get("in")
@@ -84,7 +85,7 @@ def semantic_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
             continue
         if where not in places:
             out.append(Diagnostic(locate(("objects", name, "in")),
-                                  f"object {name!r} lies in unknown place {where!r}{_did_you_mean(where, places)}"))
+                                  f"object {name!r} lies in unknown place {where!r}{did_you_mean(where, places)}"))
             continue
         props = places[where].get("properties") or []
         if "receptacle" not in props and "garbage" not in props:
@@ -95,14 +96,14 @@ def semantic_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
         if isinstance(home, str):
             if home not in places:
                 out.append(Diagnostic(locate(("categories", cname, "home")),
-                                      f"category {cname!r} has unknown home {home!r}{_did_you_mean(home, places)}"))
+                                      f"category {cname!r} has unknown home {home!r}{did_you_mean(home, places)}"))
             elif "receptacle" not in (places[home].get("properties") or []):
                 out.append(Diagnostic(locate(("categories", cname, "home")),
                                       f"category {cname!r} has home {home!r}, which is not a receptacle"))
 
     for rname, robot in robots.items():
         start = robot.get("start")
-        if not _is_point(start):
+        if not is_point(start):
             continue
         if floor and not on_floor(start, floor):
             out.append(Diagnostic(locate(("robots", rname, "start")), f"robot {rname!r} starts at {start}, off the floor"))
@@ -114,7 +115,7 @@ def semantic_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
         for k, r in enumerate(members or []):
             if r not in robots:
                 out.append(Diagnostic(locate(("teams", tname, k)),
-                                      f"team {tname!r} names unknown robot {r!r}{_did_you_mean(r, robots)}"))
+                                      f"team {tname!r} names unknown robot {r!r}{did_you_mean(r, robots)}"))
     return out
 
 
@@ -167,7 +168,7 @@ def world_from_text(text: str, file: str) -> dict:
 
 def load_world(path: str | Path) -> dict:
     """Load a household world file; :class:`WorldError` lists every problem with its location."""
-    p, text = _read(path)
+    p, text = read_world_file(path)
     return world_from_text(text, str(p))
 
 

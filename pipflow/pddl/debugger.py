@@ -11,14 +11,15 @@ ours. Every mismatch is reported at once.
 """
 from __future__ import annotations
 
-import difflib
 import re
 from dataclasses import dataclass, field
 from typing import Any
 
 from pipflow.pddl.common import initial_numbers, parse, read_domain_text
 from pipflow.pddl.names import pddl_name
+from pipflow.pddl.textpos import find_word, line_col, strip_comments
 from pipflow.pddl.writer import magnitudes
+from pipflow.suggest import did_you_mean_clause
 
 _SPAN = re.compile(r"line: (\d+), col (\d+) to line: (\d+), col (\d+)")
 _TOKEN = re.compile(r"[^\s()]+|[()]")
@@ -41,40 +42,25 @@ def _offset(text: str, line: int, col: int) -> int:
     return sum(len(x) for x in lines[: line - 1]) + col - 1
 
 
-def _line_col(text: str, offset: int) -> tuple[int, int]:
-    before = text[:offset]
-    return before.count("\n") + 1, offset - (before.rfind("\n") + 1) + 1
-
-
 def _token_at(text: str, offset: int) -> str:
     m = _TOKEN.search(text, offset)
     return m.group(0) if m else "end of text"
 
 
-def _closest(name: str, choices: list[str]) -> str:
-    near = difflib.get_close_matches(name, choices, n=3, cutoff=0.5)
-    return f"; did you mean {' or '.join(repr(n) for n in near)}?" if near else ""
-
-
-def _strip_comments(text: str) -> str:
-    """The text with ``;`` comments blanked out (same length, so offsets stay valid)."""
-    return re.sub(r";[^\n]*", lambda m: " " * len(m.group(0)), text)
-
-
 def paren_hint(text: str) -> str:
     """Where parentheses stop balancing, if they do: the most common syntax slip."""
-    clean = _strip_comments(text)
+    clean = strip_comments(text)
     stack: list[int] = []
     for i, ch in enumerate(clean):
         if ch == "(":
             stack.append(i)
         elif ch == ")":
             if not stack:
-                line, col = _line_col(text, i)
+                line, col = line_col(text, i)
                 return f" There is an extra ')' at line {line}, column {col}."
             stack.pop()
     if stack:
-        line, col = _line_col(text, stack[-1])
+        line, col = line_col(text, stack[-1])
         return (f" {len(stack)} '(' never closed; the innermost unclosed one is at line {line}, "
                 f"column {col}: {text.splitlines()[line - 1].strip()!r}.")
     return ""
@@ -92,7 +78,7 @@ def unclosed_section(text: str) -> str:
     it opened is the useful message; the parser only notices later ("Expected ':init'") and points
     at the wrong place. A section still open at the end of the text is reported the same way,
     with its innermost unclosed '(' when that is not the section itself."""
-    clean = _strip_comments(text)
+    clean = strip_comments(text)
     stack: list[tuple[int, str]] = []  # (offset of '(', its head token)
     last_child: dict[int, tuple[int, int]] = {}  # section offset -> (start, end) of its last child form
     for i, ch in enumerate(clean):
@@ -121,18 +107,18 @@ def _never_closed(text: str, section: tuple[int, str], stack: list[tuple[int, st
     known to be open, and the likely missing ')': the innermost '(' still open in it, or its last
     form when that form runs over several lines (it took the section's ')' for its own)."""
     offset, head = section
-    line, col = _line_col(text, offset)
+    line, col = line_col(text, offset)
     if at is not None:
-        l2, c2 = _line_col(text, at)
+        l2, c2 = line_col(text, at)
         why = why.format(l=l2, c=c2)
     inner = stack[-1][0]
     extra = ""
     if inner != offset:
-        il, ic = _line_col(text, inner)
+        il, ic = line_col(text, inner)
         extra = (f" The innermost '(' left open in it is at line {il}, column {ic}: "
                  f"{text.splitlines()[il - 1].strip()!r}.")
     elif child is not None:
-        (cl, cc), (el, _) = _line_col(text, child[0]), _line_col(text, child[1])
+        (cl, cc), (el, _) = line_col(text, child[0]), line_col(text, child[1])
         if el > cl:
             first = text[child[0]:].splitlines()[0].strip()
             extra = (f" Its last form, {first!r} (line {cl}, column {cc}), runs on to line {el}: "
@@ -144,19 +130,10 @@ def _never_closed(text: str, section: tuple[int, str], stack: list[tuple[int, st
 def find_form(text: str, head: str, *args: str) -> str:
     """``"line L, column C"`` of the first ``(head args...)`` in ``text``, or ``""``."""
     pattern = r"\(\s*" + r"\s+".join(re.escape(x) for x in (head,) + args) + r"\s*\)"
-    m = re.search(pattern, _strip_comments(text), flags=re.IGNORECASE)
+    m = re.search(pattern, strip_comments(text), flags=re.IGNORECASE)
     if not m:
         return ""
-    line, col = _line_col(text, m.start())
-    return f"line {line}, column {col}: "
-
-
-def find_word(text: str, word: str, nth: int = 0) -> str:
-    """``"line L, column C: "`` of the ``nth`` occurrence of ``word`` as a whole token."""
-    hits = list(re.finditer(r"(?<![\w-])" + re.escape(word) + r"(?![\w-])", _strip_comments(text)))
-    if len(hits) <= nth:
-        return ""
-    line, col = _line_col(text, hits[nth].start())
+    line, col = line_col(text, m.start())
     return f"line {line}, column {col}: "
 
 
@@ -241,7 +218,7 @@ def explain_parse_error(exc: Exception, text: str, domain_text: str) -> str:
         if m:
             name = m.group(1)
             return (f"{where}undefined name {name!r}: it is not an object of the problem"
-                    f"{_closest(name, list(objects))} (objects: {', '.join(objects) or 'none'})")
+                    f"{did_you_mean_clause(name, list(objects))} (objects: {', '.join(objects) or 'none'})")
         m = re.search(r"fluent: (\S+) has arity (\d+) but (\d+) parameters", message)
         if m:
             name, want, got = m.group(1), int(m.group(2)), int(m.group(3))
@@ -262,7 +239,7 @@ def explain_parse_error(exc: Exception, text: str, domain_text: str) -> str:
         if m:
             head = m.group(1)
             if head not in sigs:
-                return (f"{where}unknown function or predicate {head!r} in {snippet!r}{_closest(head, list(sigs))} "
+                return (f"{where}unknown function or predicate {head!r} in {snippet!r}{did_you_mean_clause(head, list(sigs))} "
                         f"(the domain declares {', '.join(_signature_text(n, s) for n, s in sigs.items())})")
             return f"{where}cannot read {snippet!r}: expected a fluent, a number or a comparison"
         return f"{where}{message.splitlines()[0]}" + (f" in {snippet!r}" if snippet else "")
@@ -270,7 +247,7 @@ def explain_parse_error(exc: Exception, text: str, domain_text: str) -> str:
     if isinstance(exc, KeyError):
         name = str(exc.args[0]) if exc.args else str(exc)
         where = find_word(text, name)
-        return (f"{where}unknown type {name!r}{_closest(name, types)} "
+        return (f"{where}unknown type {name!r}{did_you_mean_clause(name, types)} "
                 f"(the domain's types: {', '.join(types)})")
     m = re.search(r"Name (\S+) already defined", message)
     if m:
@@ -298,7 +275,7 @@ def world_mismatches(problem: Any, text: str, world: dict) -> list[str]:
         have = by_type.get(typ, [])
         for n in have:
             if n not in names:
-                out.append(f"{find_word(text, n)}object {n!r} ({typ}) is not in the world{_closest(n, names)}; "
+                out.append(f"{find_word(text, n)}object {n!r} ({typ}) is not in the world{did_you_mean_clause(n, names)}; "
                            f"the world's {typ} objects are {', '.join(names)}")
         for n in names:
             if n not in have:
@@ -351,8 +328,8 @@ def debug_problem(problem_text: str | None, domain: str, world: dict | None = No
     except Exception as exc:
         return DebugReport(False, [explain_parse_error(exc, problem_text, domain_text)])
     messages: list[str] = []
-    m = re.search(r"\(\s*:domain\s+([^\s()]+)", _strip_comments(problem_text), flags=re.IGNORECASE)
-    dname = re.search(r"\(\s*domain\s+([^\s()]+)", _strip_comments(domain_text), flags=re.IGNORECASE)
+    m = re.search(r"\(\s*:domain\s+([^\s()]+)", strip_comments(problem_text), flags=re.IGNORECASE)
+    dname = re.search(r"\(\s*domain\s+([^\s()]+)", strip_comments(domain_text), flags=re.IGNORECASE)
     if m and dname and m.group(1).lower() != dname.group(1).lower():
         messages.append(f"{find_word(problem_text, m.group(1))}the problem names domain {m.group(1)!r} "
                         f"but the domain is {dname.group(1)!r}")

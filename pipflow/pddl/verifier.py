@@ -39,7 +39,7 @@ def goal_problems(world: dict, goal: dict[str, dict[str, Any]]) -> tuple[list[st
     command): :func:`pipflow.pddl.feasibility.infeasibility_reasons` says why."""
     from pipflow.goalcounts import value_problems
     from pipflow.pddl.feasibility import infeasibility_reasons
-    from pipflow.world import closest
+    from pipflow.suggest import closest
 
     messages = []
     for s, items in goal.items():
