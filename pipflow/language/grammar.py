@@ -251,6 +251,7 @@ goal: there_be items loc                                  -> g_set
     | emptyv places                                        -> g_empty
     | places modal? be? emptied                            -> g_empty
     | places modal? "hold" "nothing"                        -> g_empty
+    | places (modal ("not" | "never") | "shouldnt" | "mustnt" | "cant" | "cannot") ("have" | "hold" | "contain" | "keep") ("any" | "anything")? ihead (lsep ihead)* left? -> g_none_of
     | emptyv ihead from places                              -> g_empty_item
     | places modal? be "full" "of" only? ihead only?         -> g_fill
     | places modal? "be" "filled" "up"? "with" only? ihead only? -> g_fill
@@ -423,6 +424,10 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | ("nobody" | "no" NUM | "none") ("except" | "but" | "other" "than" | "besides") robots rmodal? useact? rscope -> rule_only
     | ("use" | "using" | "with" | "by" | "employ") robots ("to" act? | "for")? rscope -> rule_use
     | robots oblig act rscope                               -> rule_use
+    | ("all" | "every" | "any")? ROBOTWORD ("other" "than" | "except" | "besides" | "but" | "apart" "from") robots rmodal? rneg useact? rscope -> rule_only
+    | ("all" | "every" | "any")? ROBOTWORD ("other" "than" | "except" | "besides" | "but" | "apart" "from") robots ("is" | "are" | modal? ("stay" | "be" | "remain")) state -> rule_only
+    | ("except" | "apart" "from" | "other" "than" | "besides") robots ","? ("all" | "every")? ROBOTWORD? ("is" | "are" | modal? ("stay" | "be" | "remain")) state -> rule_only
+    | ("except" | "apart" "from" | "other" "than" | "besides") robots ","? ("all" | "every" | "no")? ROBOTWORD? rmodal? rneg useact? rscope -> rule_only
     | robots oblig? "do" ("it" | "that" | "this" | "job" | "task" | "work") -> rule_do_it
     | robots ("is" | "are") "only" ("ones" | NUM | ROBOTWORD) ("allowed" "to" | "permitted" "to" | "that" ("may" | "can") | "who" ("may" | "can")) useact? rscope -> rule_only
     | robots ("can" | "may" | "could" | "might") act rscope  -> rule_permission

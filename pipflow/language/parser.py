@@ -562,6 +562,12 @@ class _Sentence:
             self.statements.append(self._goal_statement(places, {"items": {"names": [head]}, "amount": amount,
                                                                   "words": words}, False))
             return
+        if kind == "g_none_of":
+            places = self.place_list(plist[0])
+            heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
+            self.put(places, "each", [{"items": {"names": [h]}, "amount": {"none": True}, "words": words} for h in heads],
+                     words)
+            return
         if kind == "g_updown":
             head = self.ihead(self.sub(node, "ihead")[0], words)
             places = self.loc(locs[0])[0]
