@@ -18,18 +18,9 @@ import yaml
 
 from pipflow.errors import PipflowError, UserError
 
+from .cliargs import key_values, positive_int
+
 EXIT_INTERRUPTED = 130
-
-
-def _positive_int(text: str) -> int:
-    """argparse type: a whole number >= 1 (``--jobs 0`` or ``-5`` is a user error, exit 2)."""
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
-    if value < 1:
-        raise argparse.ArgumentTypeError(f"{value} is not allowed; give a whole number of 1 or more")
-    return value
 
 
 _warned_plugins = False
@@ -57,16 +48,6 @@ def _print_traceback(exc: BaseException) -> None:
     print(redact("".join(traceback.format_exception(exc))), file=sys.stderr, end="")
 
 
-def _key_values(pairs: Sequence[str]) -> dict[str, str]:
-    out: dict[str, str] = {}
-    for pair in pairs:
-        if "=" not in pair:
-            raise UserError(f"-i {pair!r}: expected key=value")
-        key, value = pair.split("=", 1)
-        out[key.strip()] = value
-    return out
-
-
 def _inputs(args: argparse.Namespace) -> tuple[dict, bool]:
     """Inputs from ``--inputs FILE`` (typed YAML) and ``-i k=v`` (text, coerced later)."""
     values: dict[str, Any] = {}
@@ -77,7 +58,7 @@ def _inputs(args: argparse.Namespace) -> tuple[dict, bool]:
         if not isinstance(data, dict):
             raise UserError(f"{args.inputs_file}: an inputs file must be a mapping of input names to values")
         values.update(data)
-    text_values = _key_values(args.input or [])
+    text_values = key_values(args.input or [])
     from_text = bool(text_values)
     if from_text:
         # typed YAML values and text values mix: render the YAML ones as text so all coerce alike
@@ -358,12 +339,6 @@ def cmd_cache(args: argparse.Namespace) -> int:
     return 0
 
 
-def cmd_bench(args: argparse.Namespace) -> int:
-    from pipflow.bench import bench_main
-
-    return bench_main(args)
-
-
 # -- parser --------------------------------------------------------------------------------
 
 def build_parser() -> argparse.ArgumentParser:
@@ -387,7 +362,7 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("-i", "--input", action="append", metavar="KEY=VALUE", help="set an input (repeatable)")
     run.add_argument("--inputs", dest="inputs_file", metavar="FILE", help="YAML file of inputs")
     run.add_argument("--dry-run", action="store_true", help="validate and show the inputs; run nothing")
-    run.add_argument("--jobs", type=_positive_int, default=1, help="independent steps to run at once")
+    run.add_argument("--jobs", type=positive_int, default=1, help="independent steps to run at once")
     run.add_argument("--no-cache", action="store_true", help="ignore and do not write the step cache")
     run.set_defaults(func=cmd_run)
 
@@ -406,7 +381,7 @@ def build_parser() -> argparse.ArgumentParser:
     graph.set_defaults(func=cmd_graph)
 
     runs = sub.add_parser("runs", parents=[common], help="list runs, newest first")
-    runs.add_argument("--limit", type=_positive_int, default=30)
+    runs.add_argument("--limit", type=positive_int, default=30)
     runs.add_argument("--workflow", help="only runs of this workflow (its name or file stem)")
     runs.add_argument("--status", help="only runs with this status (succeeded, failed, refused, ...)")
     runs.add_argument("--since", help="only runs started at or after this UTC date/time (2026-11-30, 2026-11-30T05)")
@@ -419,7 +394,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     resume = sub.add_parser("resume", parents=[common], help="rerun only what did not finish")
     resume.add_argument("run")
-    resume.add_argument("--jobs", type=_positive_int, default=1)
+    resume.add_argument("--jobs", type=positive_int, default=1)
     resume.add_argument("--no-cache", action="store_true")
     resume.set_defaults(func=cmd_resume)
 
@@ -429,33 +404,13 @@ def build_parser() -> argparse.ArgumentParser:
     clear.add_argument("--dir", help="cache directory (default: $PIPFLOW_CACHE_DIR or ~/.cache/pipflow/steps)")
     clear.set_defaults(func=cmd_cache)
 
-    bench = sub.add_parser("bench", parents=[common], help="run a task file's tasks x seeds and score them")
-    bench.add_argument("tasks", help="task file (benchmarks/README.md format)")
-    bench.add_argument("--workflow", default=None, help="workflow to run per task (default: built-in warehouse)")
-    bench.add_argument("--seeds", type=int, default=1, help="runs per task; seeds vary the robots' start positions")
-    bench.add_argument("--jobs", type=_positive_int, default=None,
-                       help="parallel processes, or workers of a local dask cluster (default: CPU count)")
-    bench.add_argument("--out", default=None, help="output directory (default: bench-out/<time>)")
-    bench.add_argument("--matrix", action="append", metavar="KEY=V1,V2", help="run variants side by side")
-    bench.add_argument("-i", "--input", action="append", metavar="KEY=VALUE", help="set a workflow input for every run")
-    bench.add_argument("--no-cache", action="store_true")
-    bench.add_argument("--executor", default="local", metavar="local|dask[=ADDRESS]",
-                       help="local: a process pool (--jobs); dask: a LocalCluster of --jobs workers; "
-                            "dask=tcp://host:8786: a running dask scheduler")
-    bench.add_argument("--resume", action="store_true",
-                       help="complete the bench in --out: run only the runs without a row file")
-    bench.add_argument("--llm-concurrency", default=None, metavar="N|PROVIDER=N,...",
-                       help="most concurrent LLM calls per provider across a dask cluster "
-                            "(default: $PIPFLOW_LLM_CONCURRENCY or 4)")
-    bench.set_defaults(func=cmd_bench)
-
     _plugin_commands(sub, common)
     return parser
 
 
 def _plugin_commands(sub, common: argparse.ArgumentParser) -> None:
     """Sub-commands registered by installed packages (entry-point group ``pipflow.commands``:
-    a function ``register(subparsers, common)``); pipflow's own report/view/compare come this
+    a function ``register(subparsers, common)``); pipflow's own bench/report/view/compare come this
     way too, so the engine's CLI imports nothing of the library above it. A package whose
     commands fail to load is reported and skipped: the other commands still work."""
     from importlib.metadata import entry_points

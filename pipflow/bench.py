@@ -538,7 +538,7 @@ def _write(out: Path, rows: list[dict], results: dict) -> None:
 
 def bench_main(args: argparse.Namespace) -> int:
     """The CLI entry: build the config from arguments, run, print the table."""
-    from pipflow.engine.cli import _key_values
+    from pipflow.engine.cliargs import key_values
 
     stamp = _dt.datetime.now(_dt.timezone.utc).strftime("%Y%m%dT%H%M%SZ")
     tasks_file = Path(args.tasks)
@@ -556,7 +556,7 @@ def bench_main(args: argparse.Namespace) -> int:
         raise UserError(f"--seeds {args.seeds}: a bench runs each task at least once (--seeds 1 or more)")
     if args.jobs is not None and args.jobs < 1:
         raise UserError(f"--jobs {args.jobs}: expected 1 or more parallel runs (unset: one per CPU)")
-    inputs = _key_values(args.input or [])
+    inputs = key_values(args.input or [])
     matrix = parse_matrix(args.matrix)
     # the servers the user names here may receive provider keys (pipflow.language.llm.user_named)
     os.environ["PIPFLOW_GIVEN_INPUTS"] = json.dumps([*inputs.values(), *(v for vs in matrix.values() for v in vs)])

@@ -1,4 +1,4 @@
-"""Commands that the library adds to the ``pipflow`` command line: report, view, compare.
+"""Commands that the library adds to the ``pipflow`` command line: bench, report, view, compare.
 
 Why here and not in ``engine/cli.py``: the engine knows no particular step and no part of the
 library; these commands are registered through the ``pipflow.commands`` entry-point group (as
@@ -10,8 +10,30 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from pipflow.engine.cliargs import positive_int
+
 
 def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
+    bench = sub.add_parser("bench", parents=[common], help="run a task file's tasks x seeds and score them")
+    bench.add_argument("tasks", help="task file (benchmarks/README.md format)")
+    bench.add_argument("--workflow", default=None, help="workflow to run per task (default: built-in warehouse)")
+    bench.add_argument("--seeds", type=int, default=1, help="runs per task; seeds vary the robots' start positions")
+    bench.add_argument("--jobs", type=positive_int, default=None,
+                       help="parallel processes, or workers of a local dask cluster (default: CPU count)")
+    bench.add_argument("--out", default=None, help="output directory (default: bench-out/<time>)")
+    bench.add_argument("--matrix", action="append", metavar="KEY=V1,V2", help="run variants side by side")
+    bench.add_argument("-i", "--input", action="append", metavar="KEY=VALUE", help="set a workflow input for every run")
+    bench.add_argument("--no-cache", action="store_true")
+    bench.add_argument("--executor", default="local", metavar="local|dask[=ADDRESS]",
+                       help="local: a process pool (--jobs); dask: a LocalCluster of --jobs workers; "
+                            "dask=tcp://host:8786: a running dask scheduler")
+    bench.add_argument("--resume", action="store_true",
+                       help="complete the bench in --out: run only the runs without a row file")
+    bench.add_argument("--llm-concurrency", default=None, metavar="N|PROVIDER=N,...",
+                       help="most concurrent LLM calls per provider across a dask cluster "
+                            "(default: $PIPFLOW_LLM_CONCURRENCY or 4)")
+    bench.set_defaults(func=cmd_bench)
+
     report = sub.add_parser("report", parents=[common], help="write a static HTML report of a run or a bench")
     report.add_argument("dir", help="run directory or bench output directory")
     report.add_argument("-o", "--output", help="HTML file (default: DIR/report.html)")
@@ -28,6 +50,12 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
     compare.add_argument("a", help="run or bench directory")
     compare.add_argument("b", help="run or bench directory")
     compare.set_defaults(func=cmd_compare)
+
+
+def cmd_bench(args: argparse.Namespace) -> int:
+    from pipflow.bench import bench_main
+
+    return bench_main(args)
 
 
 def cmd_report(args: argparse.Namespace) -> int:

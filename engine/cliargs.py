@@ -1,0 +1,31 @@
+"""Command-line argument readers shared by the engine's commands and the commands the library
+registers (``pipflow.commands``): one reading of ``-i key=value`` and of a positive count
+everywhere, without the library importing the engine's CLI module."""
+from __future__ import annotations
+
+import argparse
+from typing import Sequence
+
+from pipflow.errors import UserError
+
+
+def positive_int(text: str) -> int:
+    """argparse type: a whole number >= 1 (``--jobs 0`` or ``-5`` is a user error, exit 2)."""
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"{value} is not allowed; give a whole number of 1 or more")
+    return value
+
+
+def key_values(pairs: Sequence[str]) -> dict[str, str]:
+    """``["a=1", "b=x=y"]`` -> ``{"a": "1", "b": "x=y"}``; a pair without ``=`` is a UserError."""
+    out: dict[str, str] = {}
+    for pair in pairs:
+        if "=" not in pair:
+            raise UserError(f"-i {pair!r}: expected key=value")
+        key, value = pair.split("=", 1)
+        out[key.strip()] = value
+    return out
