@@ -168,6 +168,22 @@ def test_typos_are_read_and_said(world):
     assert any("'fridgge' as 'fridge'" in n for n in out["notes"])
 
 
+def test_typos_are_only_read_as_a_near_word_of_one_meaning(world):
+    """One edit (two for long words) from one known thing, first letter kept: 'toaster' is not
+    'toast' (a verb), 'ones' is not 'phones'."""
+    with pytest.raises(TranslationError, match="'toaster' names nothing"):
+        goal_of("Put the bread in the toaster.", world)
+    assert goal_of("Slise the bred.", world) == ({}, {"bread": ["sliced"]}, [])
+
+
+def test_exception_by_state_both_and_a_heater_named_by_pronoun(world):
+    assert goal_of("Put all the dishes in the sink, but not the clean ones.", world) == \
+        ({"sink": ["mug", "plate"]}, {}, [])
+    assert goal_of("Slice both the apple and the tomato.", world) == ({}, {"apple": ["sliced"], "tomato": ["sliced"]}, [])
+    assert goal_of("Turn on the stove and heat the potato on it.", world) == \
+        ({"stove": ["potato"]}, {"potato": ["hot"], "stove": ["on"]}, [])
+
+
 def test_explain_names_the_words_of_each_condition(world):
     from pipflow.household.translator import translate
 

@@ -28,7 +28,7 @@ change: _vstate @UP? things @PIECES? via? exception? @HERE?
       | _vstate things @UP via? exception?
       | @V_CLEAN things via? exception?
 _vstate: @V_STATE | @V_OPEN | @V_SHUT | @V_WARM
-via: (@IN | @ON | @WITH | @AT) place
+via: (@IN | @ON | @WITH | @AT) (place | placeref)
 
 toggle: @V_TOGGLE onoff tthings @HERE?
       | @V_TOGGLE tthings onoff @HERE?
@@ -81,12 +81,14 @@ activity: @ACTIVITY
 lightcue: @LIGHTCUE
 
 things: np ((COMMA | @AND | COMMA @AND) np)*
+      | @BOTH np @AND np
 np: sel exception?
-exception: @EXCEPT things
+exception: COMMA? @EXCEPT things
 sel: quant? @OF? @THE? count? adj* noun @DOOR? rel?
    | @EVERYTHING where?
    | @THE @THING where?
    | quant? @OF? @IT
+   | @THE adj+ @ONES
 quant: @ALL | @EVERY | @BOTH
 count: NUM @OF?
 adj: @ADJ | @V_CLEAN | @V_WARM | @V_OPEN | @V_SHUT

@@ -121,6 +121,7 @@ _add("SOMEWHERE", "somewhere,some place,someplace")
 _add("HERE", "here,in here,in the house,in the home,in the flat,in the apartment,around the house,everywhere")
 _add("PIECES", "in half,in two,into pieces,into slices,into cubes,in pieces,in slices,into halves")
 _add("DOOR", "door,doors")
+_add("ONES", "ones")
 
 #: category words that name a mass, not one thing: "put away the fruit" means all of it, while
 #: "turn off the lamp" names one lamp (and is asked back when the home has several)

@@ -17,7 +17,6 @@ Compositional, in three steps, and never by word position:
 """
 from __future__ import annotations
 
-import difflib
 import functools
 import json
 from dataclasses import dataclass, field
@@ -30,6 +29,7 @@ from lark.visitors import CollapseAmbiguities
 from pipflow.errors import TranslationError
 from pipflow.household.grammar import NOUN_DUAL, grammar_text
 from pipflow.household.lexicon import ACTIVITIES, FILLER, LIGHT_CATEGORY_WORD, PHRASES, plurals, words_of
+from pipflow.language.names import distance
 from pipflow.language.numbers import read_number
 
 #: the most readings of one ambiguous command that are compared (each is resolved); more is
@@ -98,7 +98,17 @@ def _vocabulary(world_index: dict) -> set[str]:
     """Words a misspelt word may be read as: the world's words and the lexicon's content words."""
     vocab = {w for k, (cls, _) in PHRASES.items() if cls in CONTENT_CLASSES and len(k) == 1 for w in k}
     vocab |= {w for k in world_index for w in k}
-    return {w for w in vocab if len(w) >= 4}
+    return {w for w in vocab if len(w) >= 3}
+
+
+def _typo_of(word: str, vocab: set[str]) -> list[str]:
+    """Known words ``word`` may be a misspelling of, closest first: the same first letter and one
+    edit (two for words of 7 letters or more; a swap of neighbours is one). "toaster" is not
+    "toast", "ones" is not "phones": a guess that names another thing would be a misreading."""
+    near = [(distance(word, v), v) for v in vocab if v[0] == word[0] and abs(len(v) - len(word)) <= 2]
+    near = [(d, v) for d, v in near if d <= (1 if len(v) <= 6 else 2)]
+    best = min((d for d, _ in near), default=None)
+    return [v for d, v in sorted(near) if d == best]
 
 
 def _meaning(word: str, world_index: dict) -> str:
@@ -127,10 +137,8 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
             any(w in key for key in index) or any(w in key for key in FILLER) or read_number([w], 0)
         if known or len(w) < 4:
             continue
-        close = difflib.get_close_matches(w, sorted(vocab), n=3, cutoff=0.8)
-        meanings = {_meaning(c, index) for c in close}
-        if close and (len(meanings) == 1 or difflib.SequenceMatcher(None, w, close[0]).ratio()
-                      > difflib.SequenceMatcher(None, w, close[1]).ratio() + 0.05):
+        close = _typo_of(w, vocab)
+        if close and len({_meaning(c, index) for c in close}) == 1:
             notes.append(f"read {w!r} as {close[0]!r}")
             words[k] = close[0]
     longest_w = max((len(k) for k in index), default=1)
@@ -303,6 +311,8 @@ class Builder:
                 out["both"] = True
         if "DOOR" in toks:
             out["door"] = True
+        if "ONES" in toks:
+            out["ones"] = True   # "except the clean ones": of the things just named
         if "EVERYTHING" in toks or "THING" in toks:
             out["everything"] = True
         if "IT" in toks:
@@ -364,8 +374,10 @@ class Builder:
             verb = next(t for t in self._tokens(node) if self._cls(t).startswith("V_"))
             st = {"op": "change", "things": things, "to": str(self.tag_of(verb).value)}
             via = self._sub(node, "via")
-            if via is not None:
+            if via is not None and self._sub(via, "place") is not None:
                 st["via"] = self.place(self._sub(via, "place"))
+            elif via is not None:   # "heat the pan on it"
+                st["via"] = {"words": _words(self.tags, via), "pronoun": True}
         elif kind == "toggle":
             st = {"op": "change", "things": things, "to": self.state(node)}
         elif kind == "put":

@@ -86,6 +86,8 @@ class Resolver:
     # selectors -------------------------------------------------------------------------
     def _candidates(self, sel: dict, words: str) -> tuple[list[str], bool]:
         """Names a selector's noun may mean, and whether they come from a category (implicit)."""
+        if sel.get("ones"):
+            raise TranslationError(f"'{words}': '{sel['words']}' of what? (name the things)")
         if sel.get("pronoun"):
             if not self.last and not self.last_places:
                 raise TranslationError(f"'{words}': '{sel['words']}' refers to nothing said before it")
@@ -133,7 +135,11 @@ class Resolver:
                 raise Refusal(f"'{words}': nothing matches '{what}' in this world" + (f" ({now})" if now else ""))
             names = ok
         for ex in sel.get("except") or []:
-            out, _ = self.select(ex, words)
+            if ex.get("ones"):   # "all the dishes except the clean ones"
+                out = [n for n in names if all(applies(self.world, n, c) and holds_now(self.world, n, c)
+                                               for c in ex.get("state") or [])]
+            else:
+                out, _ = self.select(ex, words)
             missing = [n for n in out if n not in names]
             if missing:
                 raise TranslationError(f"'{words}': '{ex['words']}' is not one of '{what}'")
@@ -253,7 +259,11 @@ class Resolver:
                                        "place to gather them")
             out += [(n, not implicit) for n in names]
         for ex in exceptions or []:
-            gone, _ = self.select(ex, words)
+            if ex.get("ones"):
+                gone = [n for n, _ in out if all(applies(self.world, n, c) and holds_now(self.world, n, c)
+                                                 for c in ex.get("state") or [])]
+            else:
+                gone, _ = self.select(ex, words)
             if not set(gone) <= {n for n, _ in out}:
                 raise TranslationError(f"'{words}': '{ex['words']}' is not among the things the clause names")
             out = [(n, e) for n, e in out if n not in gone]
