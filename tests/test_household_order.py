@@ -170,10 +170,12 @@ def test_typos_are_read_and_said(world):
 
 def test_typos_are_only_read_as_a_near_word_of_one_meaning(world):
     """One edit (two for long words) from one known thing, first letter kept: 'toaster' is not
-    'toast' (a verb), 'ones' is not 'phones'."""
+    'toast' (a verb); 'bred' is as near to 'bed' as to 'bread', so it is not read at all."""
     with pytest.raises(TranslationError, match="'toaster' names nothing"):
         goal_of("Put the bread in the toaster.", world)
-    assert goal_of("Slise the bred.", world) == ({}, {"bread": ["sliced"]}, [])
+    assert goal_of("Slise the bread.", world) == ({}, {"bread": ["sliced"]}, [])
+    with pytest.raises(TranslationError, match="'bred' names nothing"):   # bed or bread? not guessed
+        goal_of("Slice the bred.", world)
 
 
 def test_exception_by_state_both_and_a_heater_named_by_pronoun(world):
