@@ -21,8 +21,7 @@ from pipflow.errors import (
     WorkflowError,
     WorldError,
 )
-
-__version__ = "0.1.0"
+from pipflow.version import __version__
 
 
 def __getattr__(name: str):

@@ -1,0 +1,101 @@
+"""One bench run: what defines it (:class:`RunSpec`) and how it is run and scored in the calling
+process (:func:`run_one`).
+
+Below both the bench (which builds the specs and tables) and the executors (which ship specs to
+processes or dask workers and call :func:`run_one` there), so neither imports the other for it.
+"""
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import yaml
+
+from pipflow.errors import UserError
+
+
+@dataclass(frozen=True)
+class RunSpec:
+    variant: str
+    task: dict
+    seed: int
+    workflow: str
+    inputs: dict
+    world_path: str
+    runs_dir: str
+    use_cache: bool = True
+    fingerprint: dict | None = None  # what defines the run (see fingerprint()); None: not computed
+
+
+
+def run_one(spec: RunSpec) -> dict:
+    """Run and score one (variant, task, seed) in this process; never raises. A run that ends in
+    a user error is marked ``user_error`` (the bench stops on it: see :func:`_execute`)."""
+    from pipflow.engine.executor import RunOptions
+    from pipflow.engine.runner import run_workflow
+    from pipflow.benchdomains import domain_named
+    from pipflow.engine.store import read_json
+
+    task = spec.task
+    row: dict[str, Any] = {"variant": spec.variant, "task": task["id"], "seed": spec.seed}
+    started = time.perf_counter()
+    inputs = {"command": task["command"], "world": spec.world_path, "seed": spec.seed,
+              **(task.get("inputs") or {}), **spec.inputs}  # per-task inputs: a household task's team
+    refusal = error = None
+    outputs: dict = {}
+    try:
+        result = run_workflow(spec.workflow, inputs, runs_dir=spec.runs_dir, inputs_from_text=True,
+                              options=RunOptions(use_cache=spec.use_cache))
+        row["status"], row["run_dir"] = result.status, str(result.run_dir)
+        row["error_kind"] = type(result.exception).__name__ if result.exception is not None else None
+        row["user_error"] = isinstance(result.exception, UserError)
+        outputs = result.outputs or {}
+        if result.status == "refused":
+            refusal = result.error
+        elif result.status != "succeeded":
+            error = result.error
+        metrics = read_json(result.run_dir / "metrics.json", {})
+        row["stage_seconds"] = metrics.get("step_seconds", {})
+    except Exception as err:  # an invalid workflow or input: the run never started
+        row["status"], error = "error", f"{type(err).__name__}: {err}"
+        row["error_kind"], row["user_error"] = type(err).__name__, isinstance(err, UserError)
+    domain = domain_named(task.get("domain"))
+    row.update(domain.score(spec.world_path, task, outputs, refusal, error))
+    if domain.understand is not None:
+        read = outputs if row["status"] == "succeeded" or not row.get("run_dir") else \
+            recorded_outputs(Path(row["run_dir"]), ("goal", "constraints"))
+        row.update(domain.understand(task, read, row["status"], row.get("error_kind")))
+    else:
+        row.update({"understood": None, "misread": None, "understanding": "not measured for this domain"})
+    row["seconds"] = round(time.perf_counter() - started, 3)
+    return row
+
+
+def recorded_outputs(run_dir: Path, names: tuple[str, ...]) -> dict:
+    """The workflow outputs ``names`` of a run that did not finish, evaluated over the step outputs
+    its record holds: a run that failed after resolving its goal (in allocation, say) still shows
+    what it understood. An output whose steps did not finish is left out."""
+    from pipflow.engine.expr import resolve
+    from pipflow.engine.store import read_json
+
+    try:
+        snapshot = yaml.safe_load((run_dir / "workflow.yaml").read_text(encoding="utf-8")) or {}
+        steps = [d for d in (run_dir / "steps").iterdir() if d.is_dir()]
+    except (OSError, ValueError, yaml.YAMLError):
+        return {}
+    namespace: dict[str, Any] = {}
+    for folder in steps:
+        data = read_json(folder / "outputs.json", None)
+        if isinstance(data, dict):
+            namespace[folder.name] = data["outputs"] if isinstance(data.get("outputs"), dict) else data
+    out: dict[str, Any] = {}
+    expressions = snapshot.get("outputs") if isinstance(snapshot, dict) else None
+    for name in names:
+        if isinstance(expressions, dict) and name in expressions:
+            try:
+                out[name] = resolve(expressions[name], namespace)
+            except Exception:  # a step it needs did not finish: nothing to read
+                continue
+    return out
