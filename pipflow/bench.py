@@ -38,8 +38,9 @@ from typing import Any
 from pipflow.errors import UserError
 from pipflow.runspec import RunSpec, recorded_outputs, run_one  # noqa: F401  (the bench's face: tests, scripts)
 
-RESULT_FIELDS = ["variant", "task", "seed", "status", "success", "goal_met", "gcr", "exe", "ru", "tc_max",
-                 "tc_avg", "tc_avg_moved", "makespan", "planned", "executed", "seconds", "error", "run_dir"]
+RESULT_FIELDS = ["variant", "task", "seed", "status", "success", "understood", "misread", "goal_met", "gcr", "exe",
+                 "ru", "tc_max", "tc_avg", "tc_avg_moved", "makespan", "planned", "executed", "seconds", "error",
+                 "run_dir", "config_hash"]
 
 
 @dataclass
