@@ -296,6 +296,8 @@ def _loop_rounds(d: Path) -> list[dict]:
             out = {**out, "_dir": sd, "_id": sd.name}
             if "response" in out or "messages" in out and "usage" in out:
                 r["generate"] = out
+            elif "basis" in out and "disagreement" in out:  # llm.check: the second opinion
+                r["check"] = out
             elif "plan" in out:
                 r["solve"] = out
             elif "refusal" in out or "goal" in out and "ok" in out:
@@ -324,7 +326,8 @@ def _messages_of(r: dict, part: str) -> list[str]:
 def _failure_cause(info: dict, last: dict) -> str:
     """The top of a failed run's report: what the last round's checks said, not only that the
     loop ran out of rounds."""
-    lines = _messages_of(last, "generate") + _messages_of(last, "debug") + _messages_of(last, "verify")
+    lines = (_messages_of(last, "generate") + _messages_of(last, "debug") + _messages_of(last, "verify")
+             + _messages_of(last, "check"))
     items = "".join(f"<li>{_e(m)}</li>" for m in lines) or "<li>(the round left no messages)</li>"
     return (f"<div class='cause'><h2>Why it failed</h2><p>{_e(info.get('error') or '')}</p>"
             f"<p>Round {last['n']} of loop <code>{_e(last['loop'])}</code> ended with:</p><ul>{items}</ul></div>")
@@ -372,6 +375,8 @@ def _loop_section(rounds: list[dict]) -> str:
         gen, ver = r.get("generate") or {}, r.get("verify") or {}
         usage = gen.get("usage") or {}
         ok = bool(ver.get("ok")) or bool(ver.get("refusal"))
+        if r.get("check"):  # the second opinion decides whether a goal or a refusal stands
+            ok = bool(ver.get("ok")) and bool(r["check"].get("ok")) or bool(r["check"].get("refusal"))
         head = (f"<h3>{_e(r['loop'])} round {r['n']} "
                 f"<span class='{'ok' if ok else 'bad'}'>{'passed' if ok else 'rejected'}</span></h3>")
         facts = _table(["tokens in", "tokens out", "latency (s)", "cost (USD)", "cached"],
@@ -384,7 +389,8 @@ def _loop_section(rounds: list[dict]) -> str:
         answer_html = (f"<h4>Answer</h4><pre class='answer'>{_e(answer)}</pre>" if answer else
                        "<p>(offline: no model answer; the parser wrote the problem)</p>" if gen else "")
         checks = []
-        for label, part in (("generator", "generate"), ("debugger", "debug"), ("verifier", "verify")):
+        for label, part in (("generator", "generate"), ("debugger", "debug"), ("verifier", "verify"),
+                            ("second opinion", "check")):
             m = _messages_of(r, part)
             if m:
                 checks.append(f"<h4>{label}</h4><ul>" + "".join(f"<li>{_e(x)}</li>" for x in m) + "</ul>")
