@@ -15,6 +15,7 @@ Rows are keyed by (variant, task, seed) and deduplicated, so a run that Dask ret
 died counts once.
 
 LLM concurrency across a cluster is bounded per provider by :func:`llm_slot`, which
+:func:`configure_llm_limits` installs as the hook of :mod:`pipflow.llmslot` that
 :func:`pipflow.language.llm.complete` enters around each provider call: on a Dask worker it holds
 a lease of a ``distributed.Semaphore`` named ``pipflow-llm-<provider>``; elsewhere it is a no-op.
 """
@@ -33,6 +34,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Callable
 
+from pipflow import llmslot
 from pipflow.errors import UserError
 
 #: how long the client waits for a scheduler / workers before giving up (seconds)
@@ -74,6 +76,7 @@ def configure_llm_limits(limits: dict[str, int] | None, backend: str | None) -> 
         if dict(limits or {}) != _LIMITS or backend != _BACKEND:
             _SEMAPHORES.clear()
         _LIMITS, _BACKEND = dict(limits or {}), backend
+    llmslot.install(llm_slot if backend == "dask" else None)  # the hook language.llm.complete enters
 
 
 def provider_of(model: str) -> str:

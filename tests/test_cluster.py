@@ -147,6 +147,7 @@ def test_llm_complete_holds_a_slot(monkeypatch):
     import contextlib
 
     import pipflow.executors as ex
+    from pipflow import llmslot
     from pipflow.language.llm import complete
 
     entered = []
@@ -156,10 +157,15 @@ def test_llm_complete_holds_a_slot(monkeypatch):
         entered.append(model)
         yield
 
-    monkeypatch.setattr(ex, "llm_slot", slot)
+    monkeypatch.setattr(llmslot, "_hook", slot)  # the hook an executor installs
     out = complete([{"role": "user", "content": "hi"}], model="openai/gpt-4o",
                    extra={"mock_response": "hello"})
     assert out.text == "hello" and entered == ["openai/gpt-4o"]
+    # the dask executor installs its limiter as that hook; any other backend removes it
+    ex.configure_llm_limits({"default": 2}, "dask")
+    assert llmslot._hook is ex.llm_slot
+    ex.configure_llm_limits(None, None)
+    assert llmslot._hook is None
 
 
 def test_a_worker_killed_mid_bench_still_counts_every_run_once(cluster, tmp_path):

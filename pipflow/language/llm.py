@@ -20,6 +20,7 @@ from typing import Any, Callable
 from urllib.parse import urlsplit
 
 from pipflow.errors import InputError, LLMError
+from pipflow.llmslot import llm_slot
 
 DEFAULT_MODEL = "offline"
 #: provider errors worth another try; everything else (bad key, bad request) fails at once
@@ -218,9 +219,8 @@ def complete(
         kwargs["timeout"] = timeout if remaining is None else max(0.001, min(timeout, remaining))
         start = time.perf_counter()
         try:
-            # one of the provider's LLM slots across a dask cluster (a no-op elsewhere)
-            from pipflow.executors import llm_slot
-
+            # one of the provider's LLM slots across a dask cluster (a no-op unless an executor
+            # installed its limiter: pipflow.llmslot)
             with llm_slot(model):
                 response = _within(litellm.completion, dict(kwargs), kwargs["timeout"] + GRACE)
             break
