@@ -1,0 +1,121 @@
+"""The layer rule of docs/architecture.md, read from the code: the imports of pipflow/, engine/
+and steps/ (ast; imports inside functions count too, since a deferred import is still an arrow)
+form no circle, every arrow points to the module's own layer or one below, and the engine imports
+nothing of pipflow's library but the few neutral modules below it."""
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+import networkx as nx
+
+ROOT = Path(__file__).resolve().parent.parent
+#: source folder -> the package it is installed as (pyproject's package-dir)
+PACKAGES = {"pipflow": "pipflow", "engine": "pipflow.engine", "steps": "pipflow.steps"}
+#: what the engine may import of pipflow's library (everything else sits above it)
+ENGINE_MAY_IMPORT = {"pipflow.errors", "pipflow.resources", "pipflow.yamlsource"}
+#: circles that work under way is removing (issue 14); each must still exist (else delete it here,
+#: so that it cannot come back) and no other circle may appear
+KNOWN_CIRCLES: list[set[str]] = [
+    {"pipflow.pddl.bounds", "pipflow.pddl.common", "pipflow.pddl.transport"},  # the transport engine registers itself
+    {"pipflow.language.agreement", "pipflow.language.generator"},  # the offline reading, shared
+]
+#: the layers, top down (docs/architecture.md); a module not listed is library (2)
+FACES = {"pipflow", "pipflow.api", "pipflow.commands"}
+BENCH = {"pipflow.bench", "pipflow.executors", "pipflow.runspec", "pipflow.benchdomains", "pipflow.report",
+         "pipflow.view", "pipflow.compare"}
+
+
+def layer(module: str) -> int:
+    """5 faces, 4 bench and records, 3 steps, 2 library, 1 engine (the neutral base is 0)."""
+    if module in FACES:
+        return 5
+    if module in BENCH:
+        return 4
+    if module.startswith("pipflow.steps"):
+        return 3
+    if module.startswith("pipflow.engine"):
+        return 1
+    if module in ENGINE_MAY_IMPORT:
+        return 0
+    return 2
+
+
+def modules() -> dict[str, Path]:
+    found = {}
+    for folder, package in PACKAGES.items():
+        for path in (ROOT / folder).rglob("*.py"):
+            parts = list(path.relative_to(ROOT / folder).with_suffix("").parts)
+            if parts[-1] == "__init__":
+                parts = parts[:-1]
+            found[".".join([package, *parts])] = path
+    return found
+
+
+def imports(name: str, path: Path, known: dict[str, Path]) -> set[str]:
+    """The pipflow modules ``name`` imports, anywhere in the file."""
+    is_package = path.name == "__init__.py"
+    out: set[str] = set()
+    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"), str(path))):
+        if isinstance(node, ast.Import):
+            targets = [a.name for a in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            base = node.module or ""
+            if node.level:
+                anchor = name.split(".") if is_package else name.split(".")[:-1]
+                anchor = anchor[: len(anchor) - (node.level - 1)]
+                base = ".".join(anchor + ([base] if base else []))
+            # `from pipflow.pddl import debugger` imports a module; `from pipflow import step` a name
+            targets = [f"{base}.{a.name}" if f"{base}.{a.name}" in known else base for a in node.names]
+        else:
+            continue
+        for target in targets:
+            while target and target not in known:  # a name inside a module: the module
+                target = target.rpartition(".")[0]
+            if target and target != name:
+                out.add(target)
+    return out
+
+
+def import_graph() -> nx.DiGraph:
+    known = modules()
+    graph = nx.DiGraph()
+    graph.add_nodes_from(known)
+    for name, path in known.items():
+        graph.add_edges_from((name, target) for target in imports(name, path, known))
+    return graph
+
+
+def test_the_graph_is_read():
+    """The reader sees the arrows it must see (a reader that saw none would pass every rule)."""
+    graph = import_graph()
+    assert len(graph) > 60
+    assert graph.has_edge("pipflow.steps.allocate", "pipflow.allocation")  # inside a function
+    assert graph.has_edge("pipflow.engine.executor", "pipflow.engine.step")  # relative
+    assert graph.has_edge("pipflow.allocation", "pipflow.scheduling")
+
+
+def test_every_arrow_points_down_or_across():
+    graph = import_graph()
+    # `from pipflow import step, Doc` is the step author's API: the package face eagerly imports
+    # only the engine's step contract and the errors (its `run`/`bench` load lazily), so an arrow
+    # into it is allowed from any layer
+    up = sorted((a, b) for a, b in graph.edges if layer(b) > layer(a) and b != "pipflow")
+    assert not up, f"imports that reach up a layer: {up}"
+
+
+def test_no_import_circles():
+    graph = import_graph()
+    circles = [set(c) for c in nx.strongly_connected_components(graph) if len(c) > 1]
+    unknown = [sorted(c) for c in circles if c not in KNOWN_CIRCLES]
+    assert not unknown, f"import circles: {unknown}"
+    gone = [sorted(c) for c in KNOWN_CIRCLES if c not in circles]
+    assert not gone, f"these circles are gone: remove them from KNOWN_CIRCLES: {gone}"
+
+
+def test_the_engine_imports_only_the_neutral_modules_of_the_library():
+    graph = import_graph()
+    engine = [n for n in graph if n == "pipflow.engine" or n.startswith("pipflow.engine.")]
+    wrong = sorted((n, t) for n in engine for t in graph.successors(n)
+                   if not t.startswith("pipflow.engine") and t not in ENGINE_MAY_IMPORT)
+    assert not wrong, f"the engine reaches up into the library: {wrong}"
