@@ -237,7 +237,8 @@ def _num(draw, n: int) -> str:
 @st.composite
 def statements(draw) -> tuple[str, dict]:
     """One statement as English and as the order the words mean."""
-    kind = draw(st.sampled_from(["set", "add", "remove", "move", "empty", "swap", "bound", "keep"]))
+    kind = draw(st.sampled_from(["set", "add", "remove", "move", "empty", "swap", "bound", "keep", "between",
+                                 "swap_some", "move_all", "split", "fill"]))
     p, q = draw(st.lists(st.sampled_from(PLACES), min_size=2, max_size=2, unique=True))
     i = draw(st.sampled_from(ITEMS))
     n = draw(st.integers(0, 12))
@@ -268,6 +269,26 @@ def statements(draw) -> tuple[str, dict]:
         side = draw(st.sampled_from(["at_least", "at_most"]))
         text = f"{'at least' if side == 'at_least' else 'at most'} {num} {i} on {p}"
         return text, {"op": "bound", "places": one, "items": {"names": [i]}, "amount": {side: n}, "words": text}
+    if kind == "between":
+        hi = n + draw(st.integers(0, 5))
+        text = f"between {num} and {_num(draw, hi)} {i} on {p}"
+        return text, {"op": "bound", "places": one, "items": {"names": [i]}, "amount": {"at_least": n, "at_most": hi},
+                      "words": text}
+    if kind == "swap_some":
+        text = f"swap the {i} on {p} and {q}"
+        return text, {"op": "swap", "places": {"names": [p, q]}, "items": {"names": [i]}, "words": text}
+    if kind == "move_all":
+        text = f"move all {i} from {p} to {q}"
+        return text, {"op": "transfer", "items": {"names": [i]}, "amount": {"all": True}, "from": one,
+                      "to": {"names": [q]}, "words": text}
+    if kind == "split":
+        r = next(x for x in PLACES if x not in (p, q))
+        text = f"split {num} {i} from {p} evenly between {q} and {r}"
+        return text, {"op": "distribute", "places": {"names": [q, r]}, "items": {"names": [i]}, "amount": {"count": n},
+                      "from": one, "words": text}
+    if kind == "fill":
+        text = f"fill {p} with {i}"
+        return text, {"op": "fill", "places": one, "items": {"names": [i]}, "only": False, "words": text}
     text = f"leave {p} as it is"
     return text, {"op": "keep", "places": one, "items": {"all": True}, "inflow_only": False, "words": text}
 
@@ -275,7 +296,12 @@ def statements(draw) -> tuple[str, dict]:
 @st.composite
 def rules(draw) -> tuple[str, dict]:
     i = draw(st.sampled_from(ITEMS))
-    if draw(st.booleans()):
+    how = draw(st.sampled_from(["name", "kind", "skill"]))
+    if how == "skill":
+        k = draw(st.integers(1, 4))
+        text = f"robots that carry {k} or more must not move {i}"
+        return text, {"mode": "never", "robots": {"skill": "carry", "at_least": k}, "product": i, "words": text}
+    if how == "name":
         r = draw(st.sampled_from(sorted(ROBOTS)))
         text = f"{r} must not move {i}"
         return text, {"mode": "never", "robots": {"names": [r]}, "product": i, "words": text}
