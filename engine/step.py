@@ -158,6 +158,8 @@ def _where(func: Callable) -> str:
 def _type_of(hint: Any) -> tuple[str | None, bool]:
     """The declared type a hint maps to (None: no type) and whether it admits None."""
     origin = typing.get_origin(hint)
+    if origin is Annotated:  # Annotated[...] | None: the type of what is annotated
+        return _type_of(typing.get_args(hint)[0])
     if origin in (Union, types.UnionType):
         members = [a for a in typing.get_args(hint) if a is not type(None)]
         nullable = len(members) < len(typing.get_args(hint))
