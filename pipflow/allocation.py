@@ -506,7 +506,7 @@ class AllocationWalk:
         return [s for s in self.order if s not in self.done and all(p in self.done for p in self.preds[s])]
 
     def run_per_subtask(self) -> None:
-        queue = [s for s in self.order if not self.preds[s]]
+        queue = self.ready()  # on a fresh walk: the subtasks without predecessors
         while queue:
             sid = queue.pop(0)  # the frontier's next task, breadth first
             self.allocate_one(sid)

@@ -94,6 +94,38 @@ def test_world_allocation_obeys_only_and_never_rules():
     assert free_by["s1"] & {"r2", "r4"} or not free_by["s2"] <= {"r0", "r1", "r3"}
 
 
+def test_rules_are_typed_and_match_on_their_fields_only():
+    from pipflow.allocation import LinearRule, RobotRule, Rules, skill_matrix
+
+    g = graph(node("s1", "shelfA", "shelfC", "red", 2), node("s2", "shelfB", "shelfA", "blue", 3, 1))
+    robots, skills, Q = skill_matrix(WORLD, g["nodes"])
+    rules = Rules(robots, skills, Q, [{"never": ["r2"], "product": "red", "words": "not r2 for red"}],
+                  [{"robots": ["r1"], "sense": "<=", "rhs": 0, "to": "shelfA", "name": "r1 not to A"}], g["nodes"])
+    (rule,) = rules.rules
+    assert rule == RobotRule("never", frozenset({"r2"}), {"product": "red"}, rule.label)  # words: not a field
+    assert rule.applies(g["nodes"][0]) and not rule.applies(g["nodes"][1])
+    assert rule.excludes("r2") and not rule.excludes("r1")
+    (lin,) = rules.linear
+    assert isinstance(lin, LinearRule) and lin.match == {"to": "shelfA"} and lin.label == "r1 not to A"
+    assert rules.lin(g["nodes"][0]) == [] and [L.label for L in rules.lin(g["nodes"][1])] == ["r1 not to A"]
+    allowed, why = rules.mask(g["nodes"][0])
+    assert not allowed[robots.index("r2")] and why == {"r2": rule.label}
+
+
+def test_the_walk_holds_its_state():
+    from pipflow.allocation import AllocationWalk
+
+    g = graph(node("s1", "shelfA", "shelfC", "red", 2), node("s2", "shelfC", "shelfA", "red", 1, 1),
+              edges=[("s1", "s2")])
+    walk = AllocationWalk(g, WORLD, "scip", None, None)
+    assert walk.ready() == ["s1"]
+    walk.allocate_one("s1")
+    assert walk.done == {"s1"} and walk.ready() == ["s2"] and len(walk.solve_s) == 1
+    walk.run_per_subtask()  # s1 is done: only s2 is left
+    assert [a["subtask"] for a in walk.assignments] == ["s1", "s2"]
+    assert walk.result("subtask", 0.0)["assignments"] == allocate(g, WORLD)["assignments"]
+
+
 def test_linear_constraints_from_yaml_data():
     g = graph(node("s1", "shelfB", "shelfD", "blue", 3))
     base = allocate(g, WORLD)["assignments"][0]["robots"]
