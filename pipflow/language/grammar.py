@@ -19,7 +19,7 @@ import re
 
 GRAMMAR = r"""
 start: sentence
-sentence: lead? part (sep part)* sep? aside?
+sentence: lead? part aside? (sep part aside?)* sep? aside?
 lead: ("but" | "and" | "then" | "also" | "so" | "however" | "now" | "oh" | "well" | "next"
       | "finally" | "first" | "afterwards" | "after" "that" | "additionally" | "plus"
       | ("can" | "could" | "would") ("you" | "we") | "you" ("should" | "must" | "can") | "just" | "let" "us") ","?
@@ -33,7 +33,9 @@ sep.-1: "," | "and" | "," "and" | "but" | "," "but" | "while" | "," "while" | "w
 
 ?part: goal | rule | aside | tail | addressed | scoped_goal
 
-aside: "by" ("end" | "tonight" | "tomorrow" | "noon" | "morning" | "evening" | "shift" "end")
+aside: "now" | "right" "now" | "right" "away" | "tonight" | "at" "once" | "for" "now"
+     | "no" "more" | "no" "less" | "no" "more" ","? "no" "less" | "not" "more" | "not" "one" "more"
+     | "by" ("end" | "tonight" | "tomorrow" | "noon" | "morning" | "evening" | "shift" "end")
      | ("at" | "in") "end" | "eventually" | "afterwards" | "later" | "when" "you" "can" | "when" "possible"
      | "i" ("think" | "guess" | "suppose" | "believe") | "i" "have" "a" "plan" | "ok" | "okay"
      | "thanks" | "thank" "you" | "if" "possible" | "as" "well"
@@ -209,6 +211,9 @@ goal: there_be items loc                                  -> g_set
     | places ("shouldnt" | "mustnt" | "cant" | "cannot") ("exceed" | "go" "above" | "go" "over") NUM of? ihead -> g_ceiling
     | items src modal? go to places                       -> g_transfer_src
     | places ("gets" | "receives" | "takes" | "should" "get" | "should" "receive") items from places -> g_receive
+    | places modal? setv items from places                  -> g_receive
+    | emptyv places except_items                            -> g_empty_except
+    | addv "everything" from places to places except_items  -> g_transfer_except_items
     | removev items src                                   -> g_remove_src
     | removev items ("away" | "out" | "off") src           -> g_remove_src
     | ("get" | "have") items go from places to places       -> g_transfer
@@ -356,6 +361,7 @@ state: "broken" | "faulty" | "unavailable" | "offline" | "disabled" | "damaged" 
      | "not" "working" | "not" "available" | "excluded" | "off" | "parked" | "benched" | "resting"
      | "off" "duty" | "on" "break" | "not" "allowed" | "banned" | "forbidden" | "off" "this"? ("job" | "task" | "one")
      | "out" "of" "this"? ("job" | "task" | "one" | "work") | "out" "of" "it"
+     | ("down" | "out" | "off" | "in") "for" ("maintenance" | "repairs" | "repair" | "service" | "charging" | "inspection")
 use: "use" | "used" | "using" | "employ" | "employed" | "assign" | "assigned" | "involve" | "involved"
    | "work" | "help" | "be" "used" | "be" "involved" | "be" "employed" | "be" "assigned" | "participate"
 act: "move" | "moves" | "carry" | "carries" | "touch" | "touches" | "take" | "takes" | "deliver" | "send" | "sends"
@@ -369,6 +375,7 @@ robj: ITEM (lsep ITEM)*                                   -> ro_items
     | ("anything" | "everything" | "any" ITEMWORD | ITEMWORD | "goods" | "stuff" | "things" | "all" ITEMWORD) -> ro_any
     | ("it" | "them" | "that" | "those" | "these" | "this")  -> ro_pronoun
     | "for" ITEM (lsep ITEM)*                               -> ro_items
+    | "all" ITEM (lsep ITEM)*                               -> ro_items
 rwhere: from places                                    -> rw_from
       | from places to places                          -> rw_route
       | ("to" | "into" | "onto" | "towards" | "toward") places -> rw_to
@@ -389,6 +396,8 @@ rscope: robj? rwhere*
 rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | robots rmodal? rneg "be" use ("to" act?)? rscope       -> rule_never
     | robots ("is" | "are") rneg? state                      -> rule_state
+    | robots rmodal? rneg ("enter" | "visit" | "approach" | "access" | "go" "near" | "go" "into" | "go" "to" | "come" "near") places -> rule_away
+    | robots ("is" | "are") "only" ("ones" | NUM | ROBOTWORD | RKIND | RTAG) ("allowed" | "permitted") rwhere+ -> rule_only
     | robots modal? ("stay" | "stays" | "remain" | "remains") state -> rule_state
     | ("dont" | "do" "not" | "never") act robots rscope       -> rule_never
     | ("use" | "employ") robots "only" rscope                 -> rule_only
@@ -439,6 +448,7 @@ addressed: robots ("," | ":")? oblig? goal
          | ("let" | "have" | "get" | "ask") robots "to"? goal
 scoped_goal: ("using" | "with" | "by") ("only" | "just")? robots ","? goal    -> scoped_only
            | goal ("using" | "with" | "by") ("only" | "just")? robots           -> scoped_only_after
+           | goal ("using" | "with" | "by") robots ("only" | "alone")             -> scoped_only_after
            | goal ("without" ("using" | "help" "of")? | "but" "not" "with" | "not" "using") robots -> scoped_never_after
 
 %declare NUM ITEM ITEMWORD PLACE PLACEWORD ROBOT ROBOTWORD RKIND RTAG SKILL SUPER FRAC POSS UNKNOWN

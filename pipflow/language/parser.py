@@ -515,6 +515,8 @@ class _Sentence:
         if kind == "g_receive":
             dst, source = self.place_list(plist[0]), self.place_list(plist[1])
             for np in nps:
+                if "more" in np["amount"]:  # "Overflow needs 4 more boxes from dock 1"
+                    np = {**np, "amount": {"count": np["amount"]["more"]}}
                 self.statements.append(self._transfer_statement(np, source, dst, words))
             return
         if kind == "g_remove_src":
@@ -561,6 +563,21 @@ class _Sentence:
                 amount = {"fewer": int(self.toks(node, "NUM")[-1].value)}
             self.statements.append(self._goal_statement(places, {"items": {"names": [head]}, "amount": amount,
                                                                   "words": words}, False))
+            return
+        if kind == "g_empty_except":
+            # "Clear out dock 1 except the pallets": the rest goes, the pallets stay as they are
+            places = self.place_list(plist[0])
+            excl = [self.ihead(h, words) for e in self.sub(node, "except_items") for h in self.sub(e, "ihead")]
+            self.statements.append({"op": "empty", "places": {"names": places}, "items": {"all": True, "except": excl},
+                                    "words": words})
+            self.statements.append({"op": "keep", "places": {"names": places}, "items": {"names": excl},
+                                    "inflow_only": False, "words": words})
+            return
+        if kind == "g_transfer_except_items":
+            source, dst = self.place_list(plist[0]), self.place_list(plist[1])
+            excl = [self.ihead(h, words) for e in self.sub(node, "except_items") for h in self.sub(e, "ihead")]
+            self.statements.append(self._transfer_statement(
+                {"items": {"all": True, "except": excl}, "amount": {"all_held": True}, "words": words}, source, dst, words))
             return
         if kind == "g_none_of":
             places = self.place_list(plist[0])
@@ -916,7 +933,7 @@ class _Sentence:
         # "Using only robot 5, move ...", "... without robot 3": an instrument of the sentence's
         # goal, as a pronoun would be
         instrument = self.first_word(node) in ("using", "with", "by", "without")
-        self.scoped(base, scope[0] if scope else None, instrument)
+        self.scoped(base, scope[0] if scope else node, instrument)  # scope words may sit on the rule itself
 
     def scoped(self, base: dict, scope: Tree | None, pronoun: bool = False) -> None:
         """One rule per product and place the scope names; none named: bound to the sentence."""
