@@ -169,15 +169,13 @@ def test_the_first_style_is_checked_against_the_signature():
         assert words in str(err.value) and ".legacy)" in str(err.value), str(err.value)
 
 
-def test_every_builtin_step_is_declared_by_its_signature():
-    """No drift: each built-in step's inputs are exactly its function's parameters."""
-    import inspect
-
+def test_every_builtin_step_registers_and_documents_its_inputs():
+    """Each built-in step passes the registration checks (none is broken) and says what each of
+    its inputs means (``pipflow steps NAME`` shows it)."""
     steps = [s for s in default_registry() if s.module.startswith("pipflow.steps.")]
     assert len(steps) >= 20 and not default_registry().broken
-    for s in steps:
-        params = list(inspect.signature(s.func).parameters)[1:]
-        assert list(s.inputs) == params, s.name
+    undocumented = [f"{s.name}.{name}" for s in steps for name, spec in s.inputs.items() if not spec.doc]
+    assert not undocumented
 
 
 @step("t.chatty", outputs={"text": "string"})
