@@ -46,6 +46,7 @@ class Outcome:
     """One task's verdict and what the reading produced (for the per-task lines)."""
 
     task_id: str
+    file: str
     construction: str
     verdict: str
     detail: str
@@ -169,7 +170,8 @@ def run_file(tasks_path: Path) -> list[Outcome]:
             error = exc
         verdict, detail = judge(task, got, error, domain)
         label = task.get("construction") or task.get("category") or default_label  # household: category
-        out.append(Outcome(f"{tasks_path.stem}/{task['id']}", label, verdict, detail))
+        file = f"{tasks_path.parent.name}/{tasks_path.stem}"
+        out.append(Outcome(f"{file}/{task['id']}", file, label, verdict, detail))
     return out
 
 
@@ -178,7 +180,7 @@ def table(outcomes: list[Outcome], by_file: bool = False) -> str:
     understood as a share."""
     by: dict[str, Counter] = defaultdict(Counter)
     for o in outcomes:
-        by[o.task_id.split("/")[0] if by_file else o.construction][o.verdict] += 1
+        by[o.file if by_file else o.construction][o.verdict] += 1
     title = "task file" if by_file else "construction"
     width = max([len(title), len("total")] + [len(c) for c in by])
     head = f"{title:<{width}}  {'n':>4}  " + "  ".join(f"{v:>10}" for v in VERDICTS) + "  understood%"
