@@ -106,14 +106,16 @@ def llm_check(
     ``refusal``: final only when the command makes the goal impossible, else None (the verifier's
     refusal of a goal the model invented is in ``messages`` instead); ``disagreement``: what an
     accepted reading still gets wrong (a warning for the run summary), else empty."""
-    from pipflow.language.agreement import second_opinion
+    from pipflow.language.agreement import refusal_opinion, second_opinion
     from pipflow.language.generator import domain_of
     from pipflow.language.llm import resolve_model
 
-    if resolve_model(model) == "offline" or domain_of(world) != "warehouse":
-        # offline, the reading is the parser's; household goals are not compared yet
+    if resolve_model(model) == "offline":  # the reading is the parser's own
         return {"ok": True, "messages": [], "refusal": refusal, "disagreement": [], "basis": "none"}
-    opinion = second_opinion(command, world, goal, constraints, refusal, grounded)
+    if domain_of(world) != "warehouse":  # goals of other domains are not compared (yet): refusals only
+        opinion = refusal_opinion(command, world, refusal)
+    else:
+        opinion = second_opinion(command, world, goal, constraints, refusal, grounded)
     ok = not opinion.disagreement or (last and not opinion.firm and opinion.refusal is None)
     for line in opinion.disagreement:
         ctx.log(f"check ({opinion.basis}): {line}")
@@ -122,7 +124,7 @@ def llm_check(
                                       "reading": opinion.reading, "ok": ok})
     accepted = [f"warning: accepted after the last round although the model's reading differs from the "
                 f"{opinion.basis}: {line}" for line in opinion.disagreement] if ok else []
-    return {"ok": ok, "messages": [] if ok else opinion.messages, "refusal": opinion.refusal,
+    return {"ok": ok, "messages": [] if ok and opinion.disagreement else opinion.messages, "refusal": opinion.refusal,
             "disagreement": accepted, "basis": opinion.basis}
 
 

@@ -257,3 +257,24 @@ def test_a_varied_prompt_adds_something_new_at_every_level():
     assert '   {"shelf": "shelf4", "product": "product3", "units": 16}' in texts[0]  # not marked
     assert "- shelf2 holds 8 product1, 5 product2, 6 product3, 2 product4 now (21 units; capacity 30)" in texts[1]
     assert "- there are 10 product2 in all (shelf1 2, shelf2 5, shelf3 3)" in texts[1]
+
+
+def test_household_an_impossible_goal_the_model_invented_is_feedback(tmp_path):
+    """Household (goals not compared, refusals judged): the model adds "mug hot" (the mug is not
+    heatable) to a command that can be done. Not a refusal: feedback, and the next answer runs."""
+    from pipflow.household.problem import write_problem as household_problem
+    from pipflow.household.world import load_world as load_home, select_team
+
+    home = select_team(load_home(REPO / "benchmarks" / "household" / "world.yaml"), "lifters-handler-cook")
+    good = {"in": {"sink": ["mug", "plate"]}, "state": {"mug": ["clean"], "plate": ["clean"]}}
+    hot = {"in": {"sink": ["mug", "plate"]}, "state": {"mug": ["clean", "hot"], "plate": ["clean"]}}
+    answers = [f"```pddl\n{household_problem(home, g)}\n```\n```json\n{{\"constraints\": []}}\n```" for g in (hot, good)]
+    with FakeOpenAI(answers) as server:
+        result = pipflow.run(REPO / "workflows" / "household.yaml", command="Put the dirty dishes in the sink and wash them.",
+                             team="lifters-handler-cook", model="openai/fake", api_base=server.api_base, cache=False,
+                             runs_dir=tmp_path / "runs")
+        prompts = server.prompts()
+    assert result.status == "succeeded", result.error
+    assert len(prompts) == 2
+    lines = feedback_of(prompts[1])
+    assert any("not heatable" in m for m in lines) and any("your answer's, not the command's" in m for m in lines)

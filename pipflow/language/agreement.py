@@ -207,3 +207,19 @@ def second_opinion(command: str, world: dict, goal: dict | None, constraints: li
         return Opinion(basis, said, messages, None, firm, reading if state == "read" else None)
     return Opinion(basis, said, messages, verifier_refusal, firm and bool(said),
                    reading if state == "read" else None)
+
+
+def refusal_opinion(command: str, world: dict, verifier_refusal: str | None) -> Opinion:
+    """For a domain whose goals are not compared (household): only whether a verifier's refusal
+    is final. The offline reading refuses the command: final, with its reason. It reads the
+    command (so the command can be done): the refusal is of a goal the model invented, and it is
+    feedback. It does not read it: the verifier's refusal stands, as nothing says otherwise."""
+    state, reading = offline_reading(command, world)
+    if state == "refused":
+        return Opinion(OFFLINE, refusal=f"the command cannot be done in this world: {reading}", firm=True)
+    if state == "read" and verifier_refusal:
+        why = verifier_refusal.split(": ", 1)[-1] if ": " in verifier_refusal else verifier_refusal
+        return Opinion(OFFLINE, messages=[f"your goal cannot be done ({why}); the goal that cannot be done is "
+                                          "your answer's, not the command's: the command can be done, write "
+                                          "the goal it states"])
+    return Opinion(NONE if state != "read" else OFFLINE, refusal=verifier_refusal)
