@@ -41,7 +41,8 @@ def _warehouse_score(world_path: str, task: dict, outputs: dict, refusal: str | 
     from pipflow.world import load_world
 
     return score_run(load_world(world_path), task.get("goal") or {}, constraints=task.get("constraints"),
-                     feasible=task.get("feasible", True), graph=outputs.get("graph"),
+                     feasible=task.get("feasible", True) and task.get("expect") != "refuse",
+                     graph=outputs.get("graph"),
                      schedule=outputs.get("schedule"), simulation=outputs.get("simulation"),
                      refusal=refusal, error=error)
 

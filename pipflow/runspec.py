@@ -61,6 +61,8 @@ def run_one(spec: RunSpec) -> dict:
     except Exception as err:  # an invalid workflow or input: the run never started
         row["status"], error = "error", f"{type(err).__name__}: {err}"
         row["error_kind"], row["user_error"] = type(err).__name__, isinstance(err, UserError)
+    if task.get("expect") == "refuse" and error is not None and row.get("error_kind") == "TranslationError":
+        refusal, error = error, None  # the right answer to an ambiguous command: refuse, quoting the words
     domain = domain_named(task.get("domain"))
     row.update(domain.score(spec.world_path, task, outputs, refusal, error))
     if domain.understand is not None:

@@ -346,3 +346,20 @@ def test_the_goal_of_a_run_that_did_not_finish_is_read_from_its_record(local_ben
     shutil.rmtree(record / "steps" / "verify")
     assert recorded_outputs(record, ("goal",)) == {}
     assert recorded_outputs(tmp_path / "nowhere", ("goal",)) == {}
+
+
+def test_a_refusal_to_guess_is_a_success_where_the_task_expects_one(tmp_path):
+    """``expect: refuse`` marks a command a correct system refuses to guess at: its refusal
+    (a TranslationError quoting the words) scores SR 1 and understood 1; executing a guess
+    would score 0."""
+    world = Path(__file__).resolve().parents[1] / "benchmarks" / "warehouse" / "world.yaml"
+    tasks = tmp_path / "tasks.yaml"
+    tasks.write_text(f"world: {world}\ntasks:\n"
+                     "  - {id: vague, command: 'put some product1 on shelf2', goal: {}, expect: refuse}\n"
+                     "  - {id: clear, command: 'put 3 product1 on shelf2', goal: {shelf2: {product1: 3}},"
+                     " expect: refuse}\n")
+    results = run_bench(BenchConfig(tasks_file=tasks, seeds=1, jobs=1, out=tmp_path / "out", use_cache=False),
+                        progress=False)
+    by_id = {t["id"]: t for t in results["tasks"]}
+    assert by_id["vague"]["sr"] == 1.0 and by_id["vague"]["understood"] == 1.0
+    assert by_id["clear"]["sr"] == 0.0  # it ran: not the refusal the task asks for
