@@ -156,6 +156,11 @@ def test_never_a_silent_misreading(world):
             goal_of(command, world)
     with pytest.raises(TranslationError, match="not on it"):
         goal_of("Put the book on the fridge.", world)
+    # signs and fractions are never dropped: "-2" is not 2, "3.5" is no count, 0 asks nothing
+    for command, words in [("Put -2 school supplies on the bed.", "'-2'"), ("Put 3.5 dishes in the sink.", "'3.5'"),
+                           ("Put 0 school supplies on the bed.", "count of 0")]:
+        with pytest.raises(TranslationError, match=words):
+            goal_of(command, world)
     with pytest.raises(Refusal, match="mug cannot be sliced"):
         goal_of("Slice the mug.", world)
 

@@ -156,13 +156,15 @@ def normalize(text: str) -> str:
     t = re.sub(r"\bi'm\b", "i am", t)
     t = re.sub(r"n't\b", " not", t)
     t = re.sub(r"'s\b", "", t)
+    t = re.sub(r"(?<![\w-])-(?=\d)", "\0", t)   # a minus sign before a number is kept, not a hyphen
     t = t.replace("-", " ").replace("_", " ")
-    return t
+    return t.replace("\0", "-")
 
 
 def words_of(text: str) -> list[str]:
-    """Tokens: words, numbers and the punctuation that separates clauses."""
-    return re.findall(r"\d+|[a-z]+|[.,;!?:]", normalize(text))
+    """Tokens: words, numbers and the punctuation that separates clauses. A signed or decimal
+    number ("-2", "3.5") stays one token, which no count reads: it is refused, never read as 2."""
+    return re.findall(r"-?\d+(?:[.,]\d+)?|[a-z]+|[.,;!?:]", normalize(text))
 
 
 def plurals(phrase: str) -> list[str]:

@@ -153,7 +153,11 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
             out.append(Tag(PUNCT[w], w, w))
             i += 1
             continue
-        num = read_number([x if x not in PUNCT else None for x in words], i)
+        if w[0] == "-" or not w.isalnum():   # "-2", "3.5": no count of things; refused, never read as 2
+            unknown.append(w)
+            i += 1
+            continue
+        num = read_number([x if x not in PUNCT and x.isalnum() else None for x in words], i)
         nw, nl, nf = _match(words, i, index, longest_w), _match(words, i, PHRASES, longest_l), \
             _match(words, i, FILLER, longest_f)
         if num is not None and num[1] - i >= max(nw, nl, nf):

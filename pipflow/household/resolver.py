@@ -160,6 +160,8 @@ class Resolver:
             # a category named in the singular: a mass ("the fruit", bare "light") means all of
             # it; otherwise it names one thing ("the lamp"), asked back when there are several
             plural = sel.get("det") is None or sel["noun"]["words"].split()[-1] in MASS_NOUNS
+        if sel.get("count") == 0:
+            raise TranslationError(f"'{words}': '{what}' is a count of 0, which asks for nothing; say what to do")
         if "count" in sel:
             if implicit:
                 return names, True   # the caller turns a category count into a count condition
