@@ -33,7 +33,8 @@ sep.-1: "," | "and" | "," "and" | "but" | "," "but" | "while" | "," "while" | "w
 
 ?part: goal | rule | aside | tail | addressed | scoped_goal
 
-aside: "now" | "right" "now" | "right" "away" | "tonight" | "at" "once" | "for" "now"
+aside: "instead" "of" NUM | "rather" "than" NUM
+     | "now" | "right" "now" | "right" "away" | "tonight" | "at" "once" | "for" "now"
      | "no" "more" | "no" "less" | "no" "more" ","? "no" "less" | "not" "more" | "not" "one" "more"
      | "by" ("end" | "tonight" | "tomorrow" | "noon" | "morning" | "evening" | "shift" "end")
      | ("at" | "in") "end" | "eventually" | "afterwards" | "later" | "when" "you" "can" | "when" "possible"
@@ -50,6 +51,8 @@ np: NUM of? ihead                          -> np_count
   | NUM more of? ihead                     -> np_more
   | NUM of? ihead more                     -> np_more
   | NUM more of? ihead "than" ("it" | "they") ("does" | "do" | "has" | "have" | "holds" | "hold") now? -> np_more
+  | NUM fewer of? ihead "than" ("it" | "they") ("does" | "do" | "has" | "have" | "holds" | "hold") now? -> np_fewer
+  | NUM (more | fewer) of? ihead "than" PLACE (("has" | "holds" | "have" | "does" | "contains") now?)? -> np_more_than_place
   | NUM more                               -> np_more_bare
   | NUM fewer of? ihead                    -> np_fewer
   | NUM of? ihead fewer                    -> np_fewer
@@ -68,6 +71,7 @@ np: NUM of? ihead                          -> np_count
   | "more" "than" NUM of? ihead            -> np_above
   | ("fewer" | "less") "than" NUM of? ihead -> np_below
   | ("somewhere" | "anywhere")? "between" NUM "and" NUM of? ihead -> np_between
+  | lower NUM ","? ("but" | "and") upper NUM of? ihead    -> np_between
   | ("somewhere" | "anywhere")? "from" NUM "to" NUM of? ihead -> np_between
   | NUM more "of" ("each" | "every") ITEMWORD? -> np_each_more
   | NUM "to" NUM of? ihead                 -> np_between
@@ -94,6 +98,7 @@ np: NUM of? ihead                          -> np_count
 
 rest_of: "of" (ihead | "them" | "it" | its ihead)
 bare: ihead (lsep ihead)*
+inum: ihead ":"? NUM
 except_items: ("except" | "but" | "besides" | "other" "than" | "apart" "from" | "excluding") ihead (lsep ihead)*
 
 ihead: ITEM | ITEMWORD
@@ -173,9 +178,11 @@ goal: there_be items loc                                  -> g_set
     | both? places modal? each? setv each? items left?     -> g_place_set
     | both? places modal? "each" be? items                  -> g_place_set
     | places ":" items                                     -> g_place_set
+    | places ":" inum (lsep inum)*                         -> g_place_inum
     | places modal? setv items "respectively"               -> g_place_set_resp
     | places "to" setv items                                -> g_place_set
     | putv items loc                                       -> g_set
+    | putv items "each" loc                                -> g_set
     | want places "to"? setv items                          -> g_place_set
     | "set" places "to" items                               -> g_place_set
     | "set" ihead loc "to" NUM                              -> g_item_first
@@ -253,6 +260,7 @@ goal: there_be items loc                                  -> g_set
     | places ("shouldnt" | "mustnt" | "cant" | "cannot" | "wont" | modal ("not" | "never")) setv ("more" "than" | "over" | "above") NUM of? ihead -> g_ceiling
     | places ("shouldnt" | "mustnt" | "cant" | "cannot" | "wont" | modal ("not" | "never")) setv ("fewer" "than" | "less" "than" | "under" | "below") NUM of? ihead -> g_floor
     | places modal? "keep" "only"? items                     -> g_keep_part
+    | places modal? ("keep" | "retain") its NUM? ihead (lsep its? NUM? ihead)* -> g_keep_its
     | emptyv places                                        -> g_empty
     | places modal? be? emptied                            -> g_empty
     | places modal? "hold" "nothing"                        -> g_empty
@@ -276,6 +284,7 @@ goal: there_be items loc                                  -> g_set
     | swapv ("what" | "contents" "of")? places ("hold" | "have" | "contain" | "holds" | "has")? -> g_swap
     | swapv ihead (lsep ihead)* ("between" | "of" | "on") places -> g_swap_items
     | swapv posplace ihead "with" (posplace | places)       -> g_swap_poss
+    | swapv posplace "and" posplace ihead                  -> g_swap_poss
     | splitv items? even? among places even?                -> g_split
     | splitv bare even? among places even?                  -> g_split
     | "put" items even? among places even?                  -> g_split
@@ -311,6 +320,8 @@ except_what: "ones" | "those" | "them" | "what" "is" | "any" | "what" "sits" | "
 
 // ---------------------------------------------------------------- ellipsis tails
 tail: places ("too" | "as" "well" | "also")                 -> t_too
+    | ("not" | "instead" "of" | "rather" "than") NUM       -> t_noop
+    | items from places                                  -> t_from
     | "so" ("does" | "do" | "should" | "must" | "will") places -> t_too
     | places "with"? items                               -> t_gap
     | "rest" rest_of? to places                           -> t_rest
@@ -379,6 +390,9 @@ robj: ITEM (lsep ITEM)*                                   -> ro_items
 rwhere: from places                                    -> rw_from
       | from places to places                          -> rw_route
       | ("to" | "into" | "onto" | "towards" | "toward") places -> rw_to
+      | ("to" | "into" | "onto") place ("or" place)+          -> rw_to
+      | from place ("or" place)+                           -> rw_from
+      | ("at" | "on" | "in" | "near") place ("or" place)+     -> rw_at
       | "to" (PLACEWORD | "location") "of" places        -> rw_to
       | ("at" | "on" | "in" | "near" | "around" | "by") places -> rw_at
       | "away" "from" places                               -> rw_at
@@ -430,6 +444,7 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | ("any" | "all" | "every") ROBOTWORD? ("except" | "but" | "other" "than" | "besides" | "apart" "from") robots rmodal? useact? rscope -> rule_never
     | ("dont" | "do" "not") "use" ("any" | "a")? ROBOTWORD ("other" "than" | "except" | "besides" | "apart" "from" | "but") robots rscope -> rule_only
     | ("no" | "none" "of") ROBOTWORD ("except" | "but" | "other" "than" | "besides" | "apart" "from") robots rmodal? useact? rscope -> rule_only
+    | "no" (RKIND | RTAG | ROBOTWORD) rmodal? useact? rscope   -> rule_never_group
     | ("nobody" | "no" NUM | "none") ("except" | "but" | "other" "than" | "besides") robots rmodal? useact? rscope -> rule_only
     | ("use" | "using" | "with" | "by" | "employ") robots ("to" act? | "for")? rscope -> rule_use
     | robots oblig act rscope                               -> rule_use
@@ -447,6 +462,7 @@ addressed: robots ("," | ":")? oblig? goal
          | robots "," ("our" | "a" | "an" | "my")? (RKIND | RTAG) "," oblig? goal  -> addressed_appos
          | ("let" | "have" | "get" | "ask") robots "to"? goal
 scoped_goal: ("using" | "with" | "by") ("only" | "just")? robots ","? goal    -> scoped_only
+           | "use" ("any" | "all" | "every")? ROBOTWORD? ("except" | "but" | "other" "than" | "besides") robots "to" goal -> scoped_never_before
            | goal ("using" | "with" | "by") ("only" | "just")? robots           -> scoped_only_after
            | goal ("using" | "with" | "by") robots ("only" | "alone")             -> scoped_only_after
            | goal ("without" ("using" | "help" "of")? | "but" "not" "with" | "not" "using") robots -> scoped_never_after

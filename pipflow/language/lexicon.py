@@ -71,6 +71,7 @@ def check_text(command: str) -> str:
         raise Refusal(f"'{m.group(0)}' units: no shelf holds that many; write the count the "
                       f"shelves can hold")
     text = re.sub(r"-+>|\u2192|=>", " to ", command)
+    text = re.sub(r"(?<=\w)\s*\+\s*(?=\w)", " plus ", text)  # "3 + 4"
     m = _BAD_SYMBOLS.search(text)
     if m:
         word = re.search(r"\S*" + re.escape(m.group(0)) + r"\S*", text)

@@ -145,6 +145,10 @@ class _Sentence:
                 self.last_item = sel["names"]
             return {"items": sel, "amount": amount, "words": words}
 
+        if kind == "np_more_than_place":
+            place = next(str(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "PLACE"))
+            key = "more" if self.sub(node, "more") else "fewer"
+            return out({"as_many_as": place, key: nums[0]})
         if kind == "np_another":
             return {"items": None, "amount": {"count": 1}, "words": words}
         if kind == "np_more_bare":
@@ -348,6 +352,8 @@ class _Sentence:
                 raise TranslationError(f"{_quote(shown)}: the command does not say which shelf "
                                        f"(candidates: {self.index.candidates('shelf')})")
             places, mode = self.loc(locs[0])
+            if any(isinstance(c, Token) and str(c.value).lower() == "each" for c in node.children):
+                mode = "each"  # "Put 2 springs each on rack B and rack E"
             self.put(places, mode, nps, words)
             if kind == "g_set_only":
                 self.statements.append({"op": "nothing_else", "places": {"names": places},
@@ -564,6 +570,31 @@ class _Sentence:
             self.statements.append(self._goal_statement(places, {"items": {"names": [head]}, "amount": amount,
                                                                   "words": words}, False))
             return
+        if kind == "g_keep_its":
+            places = self.place_list(plist[0])
+            stock = self.lex.world.get("stock") or {}
+            heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
+            nums = [int(t.value) for t in self.toks(node, "NUM")]
+            if nums and len(nums) != len(heads):
+                raise TranslationError(f"{_quote(words)}: cannot tell which count goes with which item")
+            for k, h in enumerate(heads):
+                for p in places:
+                    have = int((stock.get(p) or {}).get(h, 0) or 0)
+                    if nums and nums[k] != have:
+                        raise TranslationError(f"{_quote(words)}: {p} holds {have} {h}, not {nums[k]}; "
+                                               f"cannot tell which is meant")
+            self.statements.append({"op": "keep", "places": {"names": places}, "items": {"names": heads},
+                                    "inflow_only": False, "words": words})
+            return
+        if kind == "g_place_inum":
+            places = self.place_list(plist[0])
+            nps = []
+            for inum in self.sub(node, "inum"):
+                head = self.ihead(self.sub(inum, "ihead")[0], words)
+                nps.append({"items": {"names": [head]}, "amount": {"count": int(self.toks(inum, "NUM")[0].value)},
+                            "words": self.words(inum)})
+            self.put(places, "one", nps, words)
+            return
         if kind == "g_empty_except":
             # "Clear out dock 1 except the pallets": the rest goes, the pallets stay as they are
             places = self.place_list(plist[0])
@@ -779,7 +810,7 @@ class _Sentence:
                     isinstance(c, Token) and str(c.value).lower() in ("to", "into", "onto")):
                 prev = "to"
             elif isinstance(c, Tree) and c.data == "except_places":
-                exclude = self.place_list(self.sub(c, "places")[0])
+                exclude = self.place_list((self.sub(c, "places") or [c])[0])
         if exc:
             src = None
         if dst is None or (src is None and not exc):
@@ -871,6 +902,17 @@ class _Sentence:
             for np in self.nps(self.sub(node, "items")[0]):
                 self.statements.append(self._goal_statement(places, np, self.last_add))
             return
+        if kind == "t_noop":
+            return  # "4 valves, not 5": a correction that restates what was said
+        if kind == "t_from":
+            # "Rack B gets 3 widgets from rack C and 2 gears from rack A": the same destination
+            prev = self.statements[-1] if self.statements else None
+            if prev is None or prev["op"] != "transfer" or not prev.get("to"):
+                raise TranslationError(f"{_quote(words)}: cannot tell where these go")
+            source = self.place_list(self.sub(node, "places")[0])
+            for np in self.nps(self.sub(node, "items")[0]):
+                self.statements.append(self._transfer_statement(np, source, prev["to"]["names"], words))
+            return
         if kind == "t_rest":
             places = self.place_list(self.sub(node, "places")[0])
             rest_of = self.sub(node, "rest_of")
@@ -898,6 +940,13 @@ class _Sentence:
     def rule(self, node: Tree) -> None:
         kind = node.data
         words = self.words(node)
+        if kind == "rule_never_group":  # "no forklift may carry widgets"
+            said = [t for t in self.toks_any(node) if t.type in ("RKIND", "RTAG", "ROBOTWORD")][0]
+            group = ({"kind": str(said.value)} if said.type == "RKIND" else {"tag": str(said.value)}
+                     if said.type == "RTAG" else {"names": list(self.index.by_kind["robot"])})
+            scope = self.sub(node, "rscope")
+            self.scoped({"mode": "never", "robots": group, "words": words}, scope[0] if scope else node)
+            return
         robots_node = self.sub(node, "robots")
         if not robots_node:
             raise TranslationError(f"{_quote(words)}: names no robot")
@@ -951,11 +1000,11 @@ class _Sentence:
                 elif c.data == "ro_any":
                     unscoped_all = True
                 elif c.data == "rw_from":
-                    places += [{"from": p} for p in self.place_list(self.sub(c, "places")[0])]
+                    places += [{"from": p} for p in self.place_list((self.sub(c, "places") or [c])[0])]
                 elif c.data == "rw_to":
-                    places += [{"to": p} for p in self.place_list(self.sub(c, "places")[0])]
+                    places += [{"to": p} for p in self.place_list((self.sub(c, "places") or [c])[0])]
                 elif c.data == "rw_at":
-                    for p in self.place_list(self.sub(c, "places")[0]):
+                    for p in self.place_list((self.sub(c, "places") or [c])[0]):
                         places += [{"from": p, "at": True}, {"to": p, "at": True}]
                 elif c.data == "rw_route":
                     a, b = self.sub(c, "places")
@@ -1017,12 +1066,12 @@ class _Sentence:
             goal = next(c for c in node.children if isinstance(c, Tree) and c.data.startswith("g_"))
             self.goal(goal)
             self._rule_for(sel, "only", self.statements[before:], self.words(node))
-        elif d in ("scoped_only", "scoped_only_after", "scoped_never_after"):
+        elif d in ("scoped_only", "scoped_only_after", "scoped_never_after", "scoped_never_before"):
             robots_node = self.sub(node, "robots")[0]
             sel = self.robots.read(robots_node, self.words(robots_node))
             goal = next(c for c in node.children if isinstance(c, Tree) and c.data.startswith("g_"))
             self.goal(goal)
-            mode = "never" if d == "scoped_never_after" else "only"
+            mode = "never" if d in ("scoped_never_after", "scoped_never_before") else "only"
             base = {"mode": mode, "robots": sel, "words": self.words(node)}
             self.bind.append(base)
             self.rules.append(base)

@@ -145,8 +145,9 @@ def _set(st: _State, s: dict) -> None:
                 other = a["as_many_as"]
                 st.check_names([other], [], words)
                 k = int(a.get("times", 1))
-                n = stock(st.world, other, i) * k
+                n = stock(st.world, other, i) * k + int(a.get("more", 0)) - int(a.get("fewer", 0))
                 shown = f"{k} times " if k != 1 else ""
+                shown += f"{a['more']} more than " if a.get("more") else f"{a['fewer']} fewer than " if a.get("fewer") else ""
                 st.put(p, i, n, f"{shown}as many as {other} has now ({n})", words, True)
             elif a.get("rest"):
                 raise TranslationError(f"'{words}': 'the rest' of what? say where it comes from")
