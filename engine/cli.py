@@ -195,7 +195,8 @@ def cmd_steps(args: argparse.Namespace) -> int:
         print("inputs:")
         for name, spec in step.inputs.items():
             default = "required" if spec.required else f"default {spec.default!r}"
-            print(f"  {name:<14} {spec.type:<8} {default:<24} {spec.doc}")
+            choices = f" (one of: {', '.join(map(str, spec.choices))})" if spec.choices else ""
+            print(f"  {name:<14} {spec.type:<8} {default:<24} {spec.doc}{choices}")
         print("outputs:")
         for name, type_name in step.outputs.items():
             print(f"  {name:<14} {type_name}")

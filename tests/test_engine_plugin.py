@@ -192,3 +192,12 @@ def test_a_step_returning_an_undeclared_output_fails_naming_it(tmp_path):
     assert result.status == "failed" and result.error_step == "talk"
     assert "returned 'secret', which it does not declare" in result.error
     assert "step 'talk' (t.chatty)" in result.error
+
+
+def test_pipflow_steps_shows_the_signature_contract(capsys):
+    from pipflow.engine.cli import main
+
+    assert main(["steps", "graph.dependencies"]) == 0
+    out = capsys.readouterr().out
+    assert "(one of: deorder, exact, paper)" in out
+    assert "picture        boolean  default True" in out and "also draw graph.png" in out
