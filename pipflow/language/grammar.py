@@ -124,6 +124,7 @@ place: PLACE                                -> place_name
      | ("every" | "each" | "all") (PLACEWORD | "place" | "places")  -> place_all
      | ("every" | "each" | "all") (PLACEWORD | "place" | "places") except_pl -> place_all
      | "all" "of" "them"                    -> place_all
+     | "all" NUM (PLACEWORD | "places")     -> place_all_n
      | "each" "of" place (lsep place)*       -> place_each
 except_pl: ("except" | "but" | "besides" | "other" "than" | "apart" "from" | "excluding") place (lsep place)*
 posplace: PLACE POSS
@@ -208,6 +209,7 @@ goal: there_be items loc                                  -> g_set
     | addv items loc                                      -> g_add
     | refill places "with" items                           -> g_add_place
     | addv items adv? from places adv? to places           -> g_transfer
+    | addv items ("with" | "using") robots adv? from places adv? to places -> g_transfer_with
     | addv items src adv? to places                       -> g_transfer_src
     | addv pitems adv? to places                          -> g_transfer_src
     | putv pitems loc                                     -> g_transfer_src
@@ -321,6 +323,7 @@ except_what: "ones" | "those" | "them" | "what" "is" | "any" | "what" "sits" | "
 // ---------------------------------------------------------------- ellipsis tails
 tail: places ("too" | "as" "well" | "also")                 -> t_too
     | ("not" | "instead" "of" | "rather" "than") NUM       -> t_noop
+    | "not" ("to" | "into" | "onto") places                 -> t_not_to
     | items from places                                  -> t_from
     | "so" ("does" | "do" | "should" | "must" | "will") places -> t_too
     | places "with"? items                               -> t_gap
@@ -448,6 +451,7 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | ("nobody" | "no" NUM | "none") ("except" | "but" | "other" "than" | "besides") robots rmodal? useact? rscope -> rule_only
     | ("use" | "using" | "with" | "by" | "employ") robots ("to" act? | "for")? rscope -> rule_use
     | robots oblig act rscope                               -> rule_use
+    | robots ("moves" | "carries" | "handles" | "takes" | "delivers" | "brings" | "does") rscope -> rule_use
     | ("all" | "every" | "any")? ROBOTWORD ("other" "than" | "except" | "besides" | "but" | "apart" "from") robots rmodal? rneg useact? rscope -> rule_only
     | ("all" | "every" | "any")? ROBOTWORD ("other" "than" | "except" | "besides" | "but" | "apart" "from") robots ("is" | "are" | modal? ("stay" | "be" | "remain")) state -> rule_only
     | ("except" | "apart" "from" | "other" "than" | "besides") robots ","? ("all" | "every")? ROBOTWORD? ("is" | "are" | modal? ("stay" | "be" | "remain")) state -> rule_only

@@ -131,8 +131,8 @@ class Lexicon:
         for label in sorted(self.kinds | self.tags, key=len, reverse=True):
             parts = [p for p in re.split(r"[\s_-]+", label) if p]
             if len(parts) > 1:
-                text = re.sub(r"\b" + r"[\s_-]+".join(map(re.escape, parts)) + r"\b", label.replace(" ", "_"),
-                              text, flags=re.IGNORECASE)
+                text = re.sub(r"\b" + r"[\s_-]+".join(map(re.escape, parts)) + r"(e?s)?\b",
+                              lambda m: label.replace(" ", "_") + (m.group(1) or ""), text, flags=re.IGNORECASE)
         return text
 
     def _group(self, text: str) -> tuple[str, str] | None:

@@ -96,6 +96,7 @@ class _Sentence:
         self.distributive = False  # "every bay", "each of A and B": a count applies to each
         self.before_places: list[str] = []  # the places named before the current part
         self.last_add = False  # whether the last counts came with an add verb (for gapping)
+        self.pending_source: list[str] | None = None  # a source said before its moves
 
     # -- words ------------------------------------------------------------------------------
     def words(self, node: Tree | Token | list) -> str:
@@ -255,6 +256,13 @@ class _Sentence:
                     excl += [str(t.value) for t in self.toks(e, "PLACE")]
                 out.extend(p for p in self.index.by_kind["shelf"] if p not in excl)
                 self.distributive = True
+            elif c.data == "place_all_n":  # "all four areas": the count must be the world's
+                n = int(self.toks(c, "NUM")[0].value)
+                every = self.index.by_kind["shelf"]
+                if n != len(every):
+                    raise TranslationError(f"{_quote(self.words(c))}: this world has {len(every)} places, not {n}")
+                out.extend(every)
+                self.distributive = True
             elif c.data == "place_each":
                 out.extend(str(t.value) for t in self.toks(c, "PLACE"))
                 self.distributive = True
@@ -303,6 +311,13 @@ class _Sentence:
             return {**prev, "amount": {"count": a[key]}, "to": {"names": places}, "words": np["words"]}
         if key == "rest":
             return self._rest(places, np)
+        if self.pending_source and add and key in ("count", "more", "all", "all_held"):
+            if np["items"] is None and not self.last_item:
+                raise TranslationError(f"{_quote(np['words'])}: cannot tell which product")
+            items = np["items"] or {"names": list(self.last_item or [])}
+            n = {"count": a[key]} if key in ("count", "more") else a
+            return {"op": "transfer", "items": items, "amount": n, "from": {"names": self.pending_source},
+                    "to": {"names": places}, "words": np["words"]}
         if key == "all_held" and add and self.before_places and self.before_places != places:
             # "clear out staging and take everything to outbound": from the place just named
             return {"op": "transfer", "items": np["items"], "amount": a, "from": {"names": list(self.before_places)},
@@ -395,6 +410,14 @@ class _Sentence:
         if kind == "g_add_place":
             places = self.place_list(plist[0])
             self.put(places, "one", nps, words, add=True)
+            return
+        if kind == "g_transfer_with":
+            robots_node = self.sub(node, "robots")[0]
+            sel = self.robots.read(robots_node, self.words(robots_node))
+            self.transfer(node, nps, words)
+            base = {"mode": "only", "robots": sel, "words": words}
+            self.bind.append(base)
+            self.rules.append(base)
             return
         if kind in ("g_transfer", "g_transfer_except"):
             self.transfer(node, nps, words)
@@ -889,6 +912,9 @@ class _Sentence:
                                           "from": {"names": source}, "to": s["places"],
                                           "words": f"{s['words']}, {words}"}
                     changed = True
+            if not changed and not self.statements:
+                self.pending_source = source  # "From shelf 4, move 5 product4 to shelf 1"
+                return
             if not changed:
                 raise TranslationError(f"{_quote(words)}: nothing before it to take from there")
             return
@@ -901,6 +927,15 @@ class _Sentence:
             # the verb is what is shared: "add 3 to A, B 2" adds, "A should have ..., B 2" sets
             for np in self.nps(self.sub(node, "items")[0]):
                 self.statements.append(self._goal_statement(places, np, self.last_add))
+            return
+        if kind == "t_not_to":
+            # "Move trays out of freezer A, but not to pick face": pick face keeps what it has of them
+            places = self.place_list(self.sub(node, "places")[0])
+            moved = [n for st in self.statements for n in (st.get("items") or {}).get("names", [])]
+            if not moved:
+                raise TranslationError(f"{_quote(words)}: not what? nothing is moved before it")
+            self.statements.append({"op": "keep", "places": {"names": places}, "items": {"names": list(dict.fromkeys(moved))},
+                                    "inflow_only": False, "words": words})
             return
         if kind == "t_noop":
             return  # "4 valves, not 5": a correction that restates what was said
@@ -1085,6 +1120,8 @@ class _Sentence:
 
     def finish(self) -> None:
         """Rules with no scope of their own take the sentence's goal (see the module doc)."""
+        if self.pending_source and not any(st["op"] == "transfer" for st in self.statements):
+            raise TranslationError(f"'from {', '.join(self.pending_source)}': nothing in the sentence is taken from there")
         # "Empty rack D and put its valves on rack B": what leaves the place goes first, then
         # the rest of it is emptied (else the move would find the place already empty)
         for k, st in enumerate(list(self.statements)):
