@@ -109,6 +109,36 @@ def test_references_across_sentences(command: str, goal: dict, rules: list[dict]
     assert got(command) == (goal, rules)
 
 
+@pytest.mark.parametrize("command,goal,rules", [
+    ("From staging, move 2 sacks to outbound.", {"staging": {"sack": 3}, "outbound": {"sack": 2}}, []),
+    ("Move 2 totes with titan from inbound to outbound.", {"inbound": {"tote": 4}, "outbound": {"tote": 2}},
+     [{"only": ["titan"], "product": "tote", "from": "inbound", "to": "outbound"}]),
+    ("Move the totes out of inbound, but not to staging.", {"inbound": {"tote": 0}, "staging": {"tote": 2}}, []),
+    ("Outbound needs 2 more kegs from inbound.", {"inbound": {"keg": 2}, "outbound": {"keg": 2}}, []),
+    ("Clear out inbound except the kegs.", {"inbound": {"tote": 0, "keg": 4}}, []),
+    ("No forklift may carry sacks.", {}, [{"never": ["titan", "atlas"], "product": "sack"}]),
+    ("Staging: sacks 3, totes 1.", {"staging": {"sack": 3, "tote": 1}}, []),
+    ("Inbound should have 2 fewer totes than it does now.", {"inbound": {"tote": 4}}, []),
+    ("Outbound should have 1 more keg than inbound has now.", {"outbound": {"keg": 5}}, []),
+    ("At least 2 but no more than 5 totes on outbound.", {"outbound": {"tote": {"at_least": 2, "at_most": 5}}}, []),
+    ("Inbound should keep its 4 kegs.", {"inbound": {"keg": 4}}, []),
+    ("Staging should have 4 totes, not 5.", {"staging": {"tote": 4}}, []),
+    ("The night shift robots are down for maintenance.", {}, [{"never": ["atlas", "mule1"]}]),
+])
+def test_more_constructions(command: str, goal: dict, rules: list[dict]) -> None:
+    assert got(command, YARD) == (goal, rules)
+
+
+@pytest.mark.parametrize("command,match", [
+    ("Inbound should keep its 5 kegs.", "holds 4 keg, not 5"),  # an apposition the world contradicts
+    ("All three places should have 1 keg.", "has 4 places, not 3"),
+    ("From staging, put 2 sacks on outbound.", "nothing in the sentence is taken from there"),
+])
+def test_statements_the_world_contradicts_are_not_guessed(command: str, match: str) -> None:
+    with pytest.raises(TranslationError, match=match):
+        understand(command, YARD)
+
+
 def test_negation_scopes_over_its_own_place_only() -> None:
     """ "Clear shelf2, but nothing goes to shelf4": shelf4 keeps what it has (it was emptied)."""
     g, _ = got("Clear shelf2, but nothing goes to shelf4")
