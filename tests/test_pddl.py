@@ -5,6 +5,8 @@ from pathlib import Path
 
 import pytest
 
+from pipflow.errors import InputError
+
 from pipflow import StepContext
 from pipflow.pddl.common import parse
 from pipflow.pddl.debugger import debug_problem
@@ -179,8 +181,9 @@ def test_scale_instance_under_30s():
 
 def test_unknown_engine_and_timeout_messages():
     problem = parse(DOMAIN, _problem({"shelf3": {"product1": 7}}))
-    r = solve_problem(problem, engine="no-such-planner")
-    assert r.status == "error" and "unknown planning engine 'no-such-planner'" in r.message
+    with pytest.raises(InputError) as err:  # a user error naming the engines that exist, never a silent fallback
+        solve_problem(problem, engine="no-such-planner")
+    assert "no-such-planner" in str(err.value) and "enhsp" in str(err.value)
 
 
 # ---------------------------------------------------------------- steps
