@@ -278,3 +278,18 @@ def test_household_an_impossible_goal_the_model_invented_is_feedback(tmp_path):
     assert len(prompts) == 2
     lines = feedback_of(prompts[1])
     assert any("not heatable" in m for m in lines) and any("your answer's, not the command's" in m for m in lines)
+
+
+def test_feedback_that_cycles_back_is_varied_too(tmp_path):
+    """Answers that alternate (prose, a broken problem, prose again) make the feedback cycle: the
+    prompt of round 4 would be round 2's. It is varied, so no prompt of the run repeats."""
+    prose = "I would move seven of product1 to shelf3."
+    broken = free_answer({"shelf3": {"product1": 7}}).replace("magnitude6 - magnitude)", "magnitude6 - magnitude", 1)
+    with FakeOpenAI([prose, broken, prose, prose]) as server:
+        result = run(tmp_path, server, "There should be 7 product 1 in shelf 3.")
+        prompts = server.prompts()
+    assert result.status == "failed" and len(prompts) == 4
+    assert feedback_of(prompts[3])[0] == feedback_of(prompts[1])[0]  # the same feedback again ...
+    assert len(set(prompts)) == 4  # ... but not the same prompt
+    assert round_outputs(result.record, 4, "generate")["varied"] == "quoted previous answer"
+    assert "I would move seven of product1 to shelf3." in prompts[3]

@@ -155,9 +155,10 @@ def generate(
     world's domain's template (``warehouse_problem`` or ``household_problem``).
 
     ``max_tokens`` None: a budget from the expected answer's size (:mod:`pipflow.language.budget`).
-    ``previous``: the previous round's ``round`` output; when this round's prompt would be the
-    same as that round's, the prompt is varied (:func:`pipflow.language.feedback.vary`) and the
-    ``varied`` output says how."""
+    ``previous``: the previous round's ``round`` output (it carries the fingerprints of every
+    earlier prompt of the loop); when this round's prompt would be the same as an earlier one's,
+    the prompt is varied (:func:`pipflow.language.feedback.vary`) and the ``varied`` output says
+    how."""
     model = resolve_model(model)
     kind = domain_of(world)
     if model == "offline":
@@ -174,20 +175,24 @@ def generate(
     base = render(prompt or DEFAULT_PROMPTS[kind], variables, base_dir)
     base_digest = _digest(base)
     previous = previous if isinstance(previous, dict) else {}
-    level = int(previous.get("level") or 0) + 1 if feedback and previous.get("base") == base_digest else 0
+    # every earlier round of this loop: feedback may also cycle (A, B, A), not only repeat
+    history = [h for h in previous.get("history") or [] if isinstance(h, list) and len(h) == 2]
+    if previous.get("base"):
+        history.append([previous["base"], previous.get("sent")])
+    level = int(previous.get("level") or 0) + 1 if feedback and base_digest in {b for b, _ in history} else 0
     messages, varied = base, []
-    while True:  # vary until the prompt differs from the one sent last round (each level adds a line)
+    while True:  # vary until the prompt differs from every one sent before (each level adds a line)
         if level:
             extra, temperature_now, varied = vary(level, str(previous.get("answer") or ""), feedback, world,
                                                   bool(grounded), temperature)
             messages = render(prompt or DEFAULT_PROMPTS[kind], {**variables, "feedback": feedback + extra}, base_dir)
         else:
             temperature_now = temperature
-        if _digest(messages, temperature_now) != previous.get("sent") or level >= 8:
+        if _digest(messages, temperature_now) not in {sent for _, sent in history} or level >= 8:
             break
         level += 1
     if varied:
-        log(f"llm: the prompt would repeat the previous round's: {'; '.join(varied)}")
+        log(f"llm: the prompt would repeat an earlier round's: {'; '.join(varied)}")
     if max_tokens is None:
         reading = None
         if grounded:
@@ -232,7 +237,7 @@ def generate(
     out = {"messages": messages, "response": text, "usage": {**usage, "cache_key": key},
            "varied": "; ".join(varied),
            "round": {"base": base_digest, "sent": _digest(messages, temperature_now), "level": level,
-                     "answer": text[:ROUND_ANSWER_CHARS], "max_tokens": max_tokens}}
+                     "answer": text[:ROUND_ANSWER_CHARS], "max_tokens": max_tokens, "history": history}}
     out.update(_read_answer(text, world, grounded, domain_text))
     if usage.get("finish_reason") == "length" and out.get("errors"):  # the model must shorten, not we raise
         out["errors"] = out["errors"] + [
