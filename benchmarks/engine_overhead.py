@@ -5,13 +5,23 @@ wide fan (1000 independent steps, then one step reading them all). The baseline 
 1000 step functions called directly in the same process; the engine's overhead is the run's
 wall time minus that baseline. Target: under 1 ms per step.
 
-    python benchmarks/engine_overhead.py [--steps 1000] [--repeat 3] [--profile]
+    python benchmarks/engine_overhead.py [--steps 1000] [--repeat 3] [--profile] [--baseline REV]
+
+``--baseline REV`` runs the same measurement with the code of git revision REV (exported with
+``git archive``, put first on PYTHONPATH; see benchmarks/baseline_code.py) in the same invocation,
+and prints the current / baseline ratio of the overhead per step beside the load average: on a
+shared machine an absolute figure moves with the load, a ratio measured under the same load does
+not (much). With a baseline, both codes are measured in child processes, alternating, ``--rounds``
+times each, and the fastest of each is kept.
 """
 from __future__ import annotations
 
 import argparse
 import cProfile
+import json
+import os
 import pstats
+import subprocess
 import sys
 import tempfile
 import time
@@ -22,6 +32,9 @@ import yaml
 from pipflow.engine import RunOptions, run_workflow
 from pipflow.engine.registry import default_registry
 from pipflow.engine.step import StepContext
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from baseline_code import baseline_env, baseline_site, load_text  # noqa: E402  (a sibling script module)
 
 
 def chain(n: int) -> dict:
@@ -65,17 +78,12 @@ def measure(shape: str, n: int, repeat: int, tmp: Path, jobs: int = 1) -> dict:
     return best
 
 
-def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--steps", type=int, default=1000)
-    parser.add_argument("--repeat", type=int, default=3, help="runs per shape; the fastest is reported")
-    parser.add_argument("--profile", action="store_true", help="cProfile the chain run, print the hot spots")
-    args = parser.parse_args(argv)
-    n = args.steps
+def measure_all(n: int, repeat: int, profile: bool = False) -> list[dict]:
+    """The three shapes, in this process, with the code ``pipflow`` imports here."""
     default_registry()  # load steps once, outside the timings
     with tempfile.TemporaryDirectory(prefix="pipflow-bench-") as d:
         tmp = Path(d)
-        if args.profile:
+        if profile:
             wf_file = tmp / "p.yaml"
             wf_file.write_text(yaml.safe_dump(chain(n), sort_keys=False))
             prof = cProfile.Profile()
@@ -83,16 +91,67 @@ def main(argv: list[str] | None = None) -> int:
             run_workflow(wf_file, runs_dir=tmp / "runs-prof", options=RunOptions(use_cache=False))
             prof.disable()
             pstats.Stats(prof).sort_stats("tottime").print_stats(15)
-        rows = [measure("chain", n, args.repeat, tmp), measure("fan", n, args.repeat, tmp),
-                measure("fan", n, args.repeat, tmp, jobs=4)]
-    print(f"engine overhead, {n} trivial core.value steps (validate + run + run record; best of {args.repeat})")
-    print(f"{'shape':<6} {'jobs':>4} {'total s':>8} {'steps s':>8} {'overhead ms/step':>17} {'overhead share':>15}")
+        return [measure("chain", n, repeat, tmp), measure("fan", n, repeat, tmp),
+                measure("fan", n, repeat, tmp, jobs=4)]
+
+
+def measure_child(n: int, repeat: int, site: Path | None) -> list[dict]:
+    """:func:`measure_all` in a child process, with the current code or the copy at ``site``."""
+    env = baseline_env(site) if site else None
+    proc = subprocess.run([sys.executable, __file__, "--child", "--steps", str(n), "--repeat", str(repeat)],
+                          capture_output=True, text=True, env=env, cwd=tempfile.gettempdir())
+    if proc.returncode != 0:
+        raise SystemExit(f"{'baseline' if site else 'current'} run failed:\n{proc.stderr[-2000:]}")
+    return json.loads(proc.stdout.strip().splitlines()[-1])
+
+
+def _best(runs: list[list[dict]]) -> list[dict]:
+    return [min(rows, key=lambda r: r["overhead"]) for rows in zip(*runs)]
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--steps", type=int, default=1000)
+    parser.add_argument("--repeat", type=int, default=3, help="runs per shape; the fastest is reported")
+    parser.add_argument("--profile", action="store_true", help="cProfile the chain run, print the hot spots")
+    parser.add_argument("--baseline", metavar="REV", help="also measure the code of git revision REV")
+    parser.add_argument("--rounds", type=int, default=2, help="with --baseline: child runs of each code")
+    parser.add_argument("--work", type=Path, help="with --baseline: where to export REV (default: a temp folder)")
+    parser.add_argument("--child", action="store_true", help=argparse.SUPPRESS)  # print rows as JSON
+    args = parser.parse_args(argv)
+    n = args.steps
+    if args.child:
+        print(json.dumps(measure_all(n, args.repeat)))
+        return 0
+    load_before = load_text()
+    base_rows: list[dict] = []
+    if args.baseline:
+        with tempfile.TemporaryDirectory(prefix="pipflow-bench-base-") as d:
+            site = baseline_site(args.baseline, args.work or Path(d))
+            current_runs, base_runs = [], []
+            for _ in range(max(1, args.rounds)):
+                current_runs.append(measure_child(n, args.repeat, None))
+                base_runs.append(measure_child(n, args.repeat, site))
+        rows, base_rows = _best(current_runs), _best(base_runs)
+    else:
+        rows = measure_all(n, args.repeat, args.profile)
+    print(f"engine overhead, {n} trivial core.value steps (validate + run + run record; best of {args.repeat}"
+          + (f" x {args.rounds} child runs per code" if args.baseline else "") + ")")
+    print(f"load average before: {load_before}; after: {load_text()} ({os.cpu_count()} CPUs)")
+    print(f"{'shape':<6} {'jobs':>4} {'total s':>8} {'steps s':>8} {'overhead ms/step':>17} {'overhead share':>15}"
+          + (f" {'baseline ms/step':>17} {'current/baseline':>17}" if base_rows else ""))
     worst = 0.0
-    for row in rows:
+    for i, row in enumerate(rows):
         per_step = row["overhead"] / n * 1000
         worst = max(worst, per_step)
-        print(f"{row['shape']:<6} {row['jobs']:>4} {row['total']:>8.3f} {row['base']:>8.4f} "
-              f"{per_step:>17.3f} {row['overhead'] / row['total']:>14.1%}")
+        line = (f"{row['shape']:<6} {row['jobs']:>4} {row['total']:>8.3f} {row['base']:>8.4f} "
+                f"{per_step:>17.3f} {row['overhead'] / row['total']:>14.1%}")
+        if base_rows:
+            base_step = base_rows[i]["overhead"] / n * 1000
+            line += f" {base_step:>17.3f} {per_step / base_step:>17.2f}"
+        print(line)
+    if base_rows:
+        print(f"baseline: git revision {args.baseline}, measured in the same invocation")
     verdict = "OK" if worst < 1.0 else "OVER TARGET"
     print(f"worst overhead per step: {worst:.3f} ms (target < 1 ms): {verdict}")
     return 0 if worst < 1.0 else 1
