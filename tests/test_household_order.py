@@ -142,6 +142,12 @@ def test_pronouns_mean_what_the_action_applies_to(world):
     assert goal_of("Put the book on the bed and turn off the lamp on the desk.", world) == \
         ({"bed": ["book"]}, {"desklamp": ["off"]}, [])
     assert goal_of("Clean the mug, then the plate.", world) == ({}, {"mug": ["clean"], "plate": ["clean"]}, [])
+    # "the door": of the place that opens named last; asked when none or two were named
+    assert goal_of("Take the egg out of the fridge, put it on the counter and close the door.", world) == \
+        ({"countertop": ["egg"]}, {"fridge": ["closed"]}, [])
+    for command in ("Close the door.", "Open the fridge and the cabinet, then close the door."):
+        with pytest.raises(TranslationError, match="which door"):
+            goal_of(command, world)
 
 
 def test_never_a_silent_misreading(world):

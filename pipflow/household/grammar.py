@@ -89,6 +89,7 @@ sel: quant? @OF? @THE? count? adj* noun @DOOR? rel?
    | @THE @THING where?
    | quant? @OF? @IT
    | @THE adj+ @ONES
+   | @THE @DOOR
 quant: @ALL | @EVERY | @BOTH
 count: NUM @OF?
 adj: @ADJ | @V_CLEAN | @V_WARM | @V_OPEN | @V_SHUT

@@ -81,6 +81,7 @@ class Resolver:
         self.last_places: list[str] = []                       # the places of the statement before
         self.last_any: list[str] = []                          # everything the statement before named
         self.before: list[str] = []                            # what "in it" may mean in this statement
+        self.history: list[list[str]] = []                     # what each statement before named, in order
         self.cue_defaults: list[tuple[str, str, str, list[str]]] = []   # (category, state, words, members)
 
     # selectors -------------------------------------------------------------------------
@@ -88,6 +89,18 @@ class Resolver:
         """Names a selector's noun may mean, and whether they come from a category (implicit)."""
         if sel.get("ones"):
             raise TranslationError(f"'{words}': '{sel['words']}' of what? (name the things)")
+        if sel.get("door") and "noun" not in sel:
+            # "put the milk in the fridge and close the door": the door of the place that opens
+            # named last ("take the egg out of the fridge, put it on the counter and close the door")
+            for said in reversed(self.history):
+                doors = [n for n in dict.fromkeys(said) if "openable" in self.world["places"].get(n, {}).get("properties", [])]
+                if doors:
+                    break
+            else:
+                doors = []
+            if len(doors) != 1:
+                raise TranslationError(f"'{words}': which door? (say 'the fridge door')")
+            return doors, False
         if sel.get("pronoun"):
             if not self.last and not self.last_places:
                 raise TranslationError(f"'{words}': '{sel['words']}' refers to nothing said before it")
@@ -301,6 +314,8 @@ class Resolver:
         self.previous = st
         op, words = st["op"], st["words"]
         self.before = self.last_any + self.last_places   # what "in it" may mean in this statement
+        if self.before:
+            self.history.append(self.before)
         self.last_any = []
         self._statement(st, op, words)
         # a pronoun after this statement may mean its place ("... in the fridge, then close it")
