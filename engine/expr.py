@@ -216,11 +216,19 @@ class _Expression:
         if not parser.stream.eos:
             token = parser.stream.current
             raise TemplateSyntaxError(f"unexpected {token.type} {token.value!r}", token.lineno, None, None)
+        # the free names it reads: only those are handed to jinja2, which copies what it is given
+        # (a run's namespace holds every step's outputs: copying it per expression is quadratic)
+        names = [expr, *expr.find_all(nodes.Name)]  # (find_all yields descendants only)
+        self.names = tuple(dict.fromkeys(n.name for n in names if isinstance(n, nodes.Name) and n.ctx == "load"))
         body = [nodes.Assign(nodes.Name("result", "store"), expr, lineno=1)]
         self._template = _ENV.from_string(nodes.Template(body, lineno=1))
 
     def __call__(self, **namespace: Any) -> Any:
-        context = self._template.new_context(namespace)
+        return self.evaluate(namespace)
+
+    def evaluate(self, namespace: Mapping[str, Any]) -> Any:
+        """The value over ``namespace`` (only the names the expression reads are looked at)."""
+        context = self._template.new_context({k: namespace[k] for k in self.names if k in namespace})
         for _ in self._template.root_render_func(context):
             pass
         return context.vars["result"]
@@ -371,7 +379,7 @@ def evaluate_expression(source: str, namespace: Mapping[str, Any]) -> Any:
         return value
     compiled = _compiled(source)
     try:
-        result = compiled(**namespace)
+        result = compiled.evaluate(namespace)
     except TemplateError as err:
         raise ExpressionError(f"${{{source}}}: {err.message or err}") from None
     except Exception as err:  # a filter or operator failed on the values given

@@ -6,6 +6,8 @@ Loading never raises on content problems: it records them as diagnostics so that
 from __future__ import annotations
 
 import copy
+import functools
+import os
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Union
@@ -24,6 +26,18 @@ class InputSpec:
     doc: str = ""
     choices: list | None = None
     loc: Location | None = None
+
+
+def folder_of(file: str) -> Path:
+    """The resolved folder of a workflow file. Every step and argument of a file asks for the
+    same folder, and ``Path.resolve`` stats each component: it is computed once per file (and
+    per working folder, for a relative name)."""
+    return _folder_of(str(file), "" if os.path.isabs(file) else os.getcwd())
+
+
+@functools.lru_cache(maxsize=256)
+def _folder_of(file: str, cwd: str) -> Path:
+    return (Path(cwd) / file).resolve().parent
 
 
 @dataclass
@@ -54,7 +68,7 @@ class StepSpec:
         """Folder of the file that defines this step: relative paths in it start here."""
         if self.bases and "" in self.bases:
             return Path(self.bases[""])
-        return Path(self.raw.loc.file).resolve().parent if self.raw.loc else Path.cwd()
+        return folder_of(self.raw.loc.file) if self.raw.loc else Path.cwd()
 
     def arg_base(self, name: str) -> Path:
         """Folder a relative path in argument ``name`` starts from: that of the file that set
@@ -62,7 +76,7 @@ class StepSpec:
         if self.bases is not None:
             return Path(self.bases.get(name, self.bases.get("", str(Path.cwd()))))
         loc = self.arg_loc(name)
-        return Path(loc.file).resolve().parent if loc and loc.file else self.base_dir
+        return folder_of(loc.file) if loc and loc.file else self.base_dir
 
     def path_bases(self) -> dict[str, str]:
         """What :attr:`bases` must say for this step to resolve paths as here when it is
