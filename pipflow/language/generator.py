@@ -242,7 +242,7 @@ def generate(
     if usage.get("finish_reason") == "length" and out.get("errors"):  # the model must shorten, not we raise
         out["errors"] = out["errors"] + [
             f"the answer was cut off at the {max_tokens} tokens it may take: write only what the command asks "
-            + ("for: one goal item per count the command states, rules only if it states them"
+            + ("for: one statement per clause of the command, rules only if it states them, short \"words\""
                if grounded else "for, and no text after the ```json block")]
     if save is not None and kind == "household" and out["goal"] is not None:
         save("goal.json", out["goal"])
@@ -254,13 +254,17 @@ def _read_answer(text: str, world: dict, grounded: bool, domain_text: str = "") 
     of one answer."""
     if domain_of(world) == "household":
         return _read_household_answer(text, world, domain_text)
-    if grounded:
+    # the resolver (lark, via the robot selectors) is loaded on first use, like the parser
+    from pipflow.language.llm_orders import explain_goal, read_grounded
+
+    if grounded:  # the answer is an order: checked, resolved, then written by the problem writer
         try:
-            goal, constraints = grounding.parse_answer(text, world)
+            got = read_grounded(text, world)
         except ParseIssue as issue:
             return {"problem": "", "goal": None, "constraints": [], "errors": [str(issue)]}
-        return {"problem": write_problem(world, goal), "goal": goal, "constraints": constraints,
-                "errors": []}
+        return {"problem": write_problem(world, got["goal"]), "goal": got["goal"],
+                "constraints": got["constraints"], "order": got["order"],
+                "explanation": got["explanation"], "errors": []}
     errors, problem, constraints = [], "", []
     try:
         problem = extract_problem(text)
@@ -270,7 +274,14 @@ def _read_answer(text: str, world: dict, grounded: bool, domain_text: str = "") 
         constraints = validate_constraints(extract_constraints(text), world)
     except ParseIssue as issue:
         errors.append(str(issue))
-    return {"problem": problem, "goal": None, "constraints": constraints, "errors": errors}
+    out = {"problem": problem, "goal": None, "constraints": constraints, "errors": errors}
+    parsed = _parse_quietly(domain_text, problem) if problem else None
+    if parsed is not None:  # the paper's mode: its goal read back into an order, for the summary
+        from pipflow.pddl.common import stock_goals
+        from pipflow.pddl.names import goal_in_world_names
+
+        out.update(explain_goal(goal_in_world_names(stock_goals(parsed)[0], world), constraints, world))
+    return out
 
 
 def _unclosed_hint(text: str) -> str:

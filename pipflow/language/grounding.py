@@ -1,70 +1,121 @@
-"""Grounded decoding: the model may only answer with the world's names and valid counts.
+"""Grounded decoding: the model answers with an ORDER whose every name is one of the world's.
 
-Instead of free PDDL, a grounded call asks for a small JSON answer::
+Instead of free PDDL, a grounded call asks for an order (``schemas/order.schema.json``), the same
+typed meaning the offline parser produces::
 
-    {"goal": [{"shelf": "shelf4", "product": "product3", "units": 14}],
-     "constraints": [{"rule": "never", "robots": ["robot0"], "product": "product1",
-                      "from": "any", "to": "any"}]}
+    {"statements": [{"op": "set", "places": {"names": ["shelf4"]}, "items": {"names": ["product3"]},
+                     "amount": {"count": 14}, "words": "14 product3 on shelf4"}],
+     "rules": [{"mode": "never", "robots": {"kind": "forklift"}, "product": "any", "from": "any",
+                "to": "any", "words": "no forklift"}]}
 
-and constrains decoding to it, with every name an enum of the world's shelves, products and
-robots and every count in 0..capacity of its shelf. Providers with JSON-schema structured output
-get ``response_format`` (:func:`response_format`); llama.cpp servers get the same language as a
-GBNF grammar (:func:`gbnf`). The PDDL problem is then written by the problem writer from the
-answer, so a name such as ``prodcut3`` cannot reach the planner: the decoder never emits it.
+and constrains decoding to a subset of that language in which places, items, robots, kinds,
+tags and skills are enums of the world. Providers with JSON-schema structured output get
+``response_format`` (:func:`response_format`, strict-mode compatible: every key required, so a
+rule's scope the command does not state is ``"any"``); llama.cpp servers get the same language
+as a GBNF grammar (:func:`gbnf`) whose lists, numbers, whitespace and ``words`` are bounded, so a
+small model cannot run on until max_tokens. The resolver then computes goal, bounds, rules and
+the explanation, and the problem writer writes the PDDL (:mod:`pipflow.language.llm_orders`), so
+a name such as ``prodcut3`` cannot reach the planner: the decoder never emits it.
 """
 from __future__ import annotations
 
 import json
 from typing import Any
 
-from pipflow.language.parsing import ParseIssue, validate_constraints
-
 ANY = "any"
 MAX_RULES = 8  # robot-use rules in one command; more is a model repeating itself
+MAX_STATEMENTS = 16  # statements in one command; the grammar's lists must be bounded
+WORDS_CHARS = 80  # the longest "words" the grammar lets a model write (a clause of the command)
+QUANTITY_OPS = ["set", "change", "bound"]
+PLACE_OPS = ["swap", "empty", "fill", "keep"]
+#: amount forms offered to the model, each a set of keys (the order schema knows more; these are
+#: the ones a command's clause maps to directly)
+AMOUNT_FORMS: list[tuple[str, ...]] = [("count",), ("more",), ("fewer",), ("at_least",), ("at_most",),
+                                       ("at_least", "at_most"), ("all",), ("rest",)]
+FLAGS = {"all", "rest"}  # amount keys whose value is ``true``, not a number
 
 
-def _capacity_groups(world: dict) -> dict[int, list[str]]:
-    """Shelves by capacity: each group shares one count range in the schema and the grammar."""
-    groups: dict[int, list[str]] = {}
-    for name, shelf in sorted(world["shelves"].items()):
-        groups.setdefault(int(shelf["capacity"]), []).append(name)
-    return dict(sorted(groups.items()))
+def vocabulary(world: dict) -> dict[str, list[str]]:
+    """The world's names a grounded order may use, by role (empty roles are left out of the
+    schema and grammar: an enum must not be empty)."""
+    robots = world.get("robots") or {}
+    kinds, tags, skills = set(), set(), set()
+    for r in robots.values():
+        r = r if isinstance(r, dict) else {}
+        if r.get("kind"):
+            kinds.add(str(r["kind"]))
+        tags.update(str(t) for t in r.get("tags") or [])
+        skills.update(str(s) for s in (r.get("skills") or {}))
+    return {"places": sorted(str(s) for s in world.get("shelves") or {}),
+            "items": sorted(str(p) for p in world.get("products") or {}),
+            "robots": sorted(str(r) for r in robots), "kinds": sorted(kinds), "tags": sorted(tags),
+            "skills": sorted(skills)}
+
+
+def largest_count(world: dict) -> int:
+    """The largest number an amount may state: a shelf's capacity or the world's stock of all items."""
+    caps = [int((s or {}).get("capacity", 0) or 0) for s in (world.get("shelves") or {}).values()]
+    total = sum(int(n or 0) for row in (world.get("stock") or {}).values() for n in (row or {}).values())
+    return max(caps + [total, 1])
+
+
+# ---------------------------------------------------------------- JSON schema
+
+
+def _obj(props: dict[str, Any]) -> dict[str, Any]:
+    return {"type": "object", "properties": props, "required": list(props), "additionalProperties": False}
+
+
+def _enum(names: list[str]) -> dict[str, Any]:
+    return {"type": "string", "enum": names}
+
+
+def _selector(names: list[str]) -> dict[str, Any]:
+    return {"anyOf": [
+        _obj({"names": {"type": "array", "items": _enum(names), "minItems": 1, "maxItems": len(names)}}),
+        _obj({"all": {"type": "boolean", "enum": [True]},
+              "except": {"type": "array", "items": _enum(names), "maxItems": max(len(names) - 1, 0)}}),
+    ]}
 
 
 def json_schema(world: dict) -> dict[str, Any]:
-    """The JSON Schema of a grounded answer for ``world`` (strict-mode compatible)."""
-    shelves, products = sorted(world["shelves"]), sorted(world["products"])
-    robots = sorted(world["robots"])
-    items = [{
-        "type": "object",
-        "properties": {"shelf": {"type": "string", "enum": names},
-                       "product": {"type": "string", "enum": products},
-                       "units": {"type": "integer", "enum": list(range(cap + 1))}},
-        "required": ["shelf", "product", "units"], "additionalProperties": False,
-    } for cap, names in _capacity_groups(world).items()]
-    rule = {
-        "type": "object",
-        "properties": {"rule": {"type": "string", "enum": ["only", "never"]},
-                       "robots": {"type": "array", "items": {"type": "string", "enum": robots},
-                                  "maxItems": len(robots)},
-                       "product": {"type": "string", "enum": products + [ANY]},
-                       "from": {"type": "string", "enum": shelves + [ANY]},
-                       "to": {"type": "string", "enum": shelves + [ANY]}},
-        "required": ["rule", "robots", "product", "from", "to"], "additionalProperties": False,
-    }
-    return {
-        "type": "object",
-        "properties": {"goal": {"type": "array", "items": items[0] if len(items) == 1 else {"anyOf": items},
-                                "maxItems": len(shelves) * len(products)},
-                       "constraints": {"type": "array", "items": rule, "maxItems": MAX_RULES}},
-        "required": ["goal", "constraints"], "additionalProperties": False,
-    }
+    """The JSON Schema of a grounded order for ``world`` (strict-mode compatible): a subset of
+    ``schemas/order.schema.json`` with the world's names as enums."""
+    v = vocabulary(world)
+    count = {"type": "integer", "minimum": 0, "maximum": largest_count(world)}
+    amount = {"anyOf": [_obj({k: ({"type": "boolean", "enum": [True]} if k in FLAGS else count) for k in form})
+                        for form in AMOUNT_FORMS]}
+    places, items, words = _selector(v["places"]), _selector(v["items"]), {"type": "string"}
+    statement = {"anyOf": [
+        _obj({"op": _enum(QUANTITY_OPS), "places": places, "items": items, "amount": amount, "words": words}),
+        _obj({"op": _enum(["transfer"]), "items": items, "amount": amount, "from": places, "to": places,
+              "words": words}),
+        _obj({"op": _enum(PLACE_OPS), "places": places, "words": words}),
+    ]}
+    robots = [_obj({"names": {"type": "array", "items": _enum(v["robots"]), "minItems": 1,
+                              "maxItems": len(v["robots"])}})]
+    if v["kinds"]:
+        robots.append(_obj({"kind": _enum(v["kinds"])}))
+    if v["tags"]:
+        robots.append(_obj({"tag": _enum(v["tags"])}))
+    if v["skills"]:
+        robots += [_obj({"skill": _enum(v["skills"]), "at_least": {"type": "number"}}),
+                   _obj({"skill": _enum(v["skills"]), "at_most": {"type": "number"}}),
+                   _obj({"extreme": _enum(["max", "min"]), "skill": _enum(v["skills"])})]
+    rule = _obj({"mode": _enum(["only", "never"]), "robots": {"anyOf": robots},
+                 "product": _enum(v["items"] + [ANY]), "from": _enum(v["places"] + [ANY]),
+                 "to": _enum(v["places"] + [ANY]), "words": words})
+    return _obj({"statements": {"type": "array", "items": statement, "maxItems": MAX_STATEMENTS},
+                 "rules": {"type": "array", "items": rule, "maxItems": MAX_RULES}})
 
 
 def response_format(world: dict) -> dict[str, Any]:
     """OpenAI-style ``response_format`` for providers with JSON-schema structured output."""
     return {"type": "json_schema",
-            "json_schema": {"name": "warehouse_goal", "strict": True, "schema": json_schema(world)}}
+            "json_schema": {"name": "warehouse_order", "strict": True, "schema": json_schema(world)}}
+
+
+# ---------------------------------------------------------------- GBNF
 
 
 def _lit(text: str) -> str:
@@ -73,73 +124,75 @@ def _lit(text: str) -> str:
     return f'"\\"{body}\\""'
 
 
+def _key(name: str) -> str:
+    """A GBNF sequence for ``"name":`` followed by optional whitespace."""
+    return f'"\\"{name}\\":" ws'
+
+
 def _alts(names: list[str]) -> str:
-    return " | ".join(_lit(n) for n in names)
+    return "(" + " | ".join(_lit(n) for n in names) + ")"
+
+
+def _list(elem: str, most: int, least: int = 0) -> str:
+    """A JSON array of ``least``..``most`` ``elem`` (most >= 1)."""
+    one = f'"[" ws {elem}' + (f' ("," ws {elem}){{0,{most - 1}}}' if most > 1 else "") + ' ws "]"'
+    return one if least >= 1 else f'("[" ws "]" | {one})'
+
+
+def _object(*fields: str) -> str:
+    """A JSON object of the given ``key-sequence value`` fields in this order."""
+    return '"{" ws ' + ' "," ws '.join(fields) + ' ws "}"'
 
 
 def gbnf(world: dict) -> str:
     """The same language as :func:`json_schema`, as a llama.cpp GBNF grammar.
 
-    Keys come in a fixed order, and whitespace and list lengths are bounded, so a small model
-    cannot wander off into endless spaces or repeat a name until max_tokens: every path through
-    the grammar is a valid answer of bounded length."""
-    shelves, products = sorted(world["shelves"]), sorted(world["products"])
-    robots = sorted(world["robots"])
-    max_goal = len(shelves) * len(products)
+    Keys come in a fixed order, and whitespace, list lengths, numbers and ``words`` are bounded,
+    so every path through the grammar is a valid order of bounded length."""
+    v = vocabulary(world)
+    digits = len(str(largest_count(world)))
+    amount_alts = []
+    for form in AMOUNT_FORMS:
+        amount_alts.append(_object(*(_key(k) + (' "true"' if k in FLAGS else " num") for k in form)))
+    robot_alts = [_object(f"{_key('names')} {_list('robot', len(v['robots']), 1)}")]
     lines = [
-        'root ::= "{" ws "\\"goal\\":" ws goals "," ws "\\"constraints\\":" ws rules ws "}"',
-        f'goals ::= "[" ws item ("," ws item){{0,{max_goal - 1}}} ws "]"',
-        f'rules ::= "[" ws "]" | "[" ws rule ("," ws rule){{0,{MAX_RULES - 1}}} ws "]"',
-        'rule ::= "{" ws "\\"rule\\":" ws ("\\"only\\"" | "\\"never\\"") "," ws '
-        f'"\\"robots\\":" ws "[" ws robot ("," ws robot){{0,{len(robots) - 1}}} ws "]" "," ws '
-        '"\\"product\\":" ws (product | anyname) "," ws "\\"from\\":" ws (shelf | anyname) "," ws '
-        '"\\"to\\":" ws (shelf | anyname) ws "}"',
-        f"shelf ::= {_alts(shelves)}",
-        f"product ::= {_alts(products)}",
-        f"robot ::= {_alts(robots)}",
-        f"anyname ::= {_lit(ANY)}",
-        'ws ::= [ \\t\\n]{0,8}',
+        "root ::= " + _object(f"{_key('statements')} {_list('stmt', MAX_STATEMENTS)}",
+                              f"{_key('rules')} {_list('rule', MAX_RULES)}"),
+        "stmt ::= quantity | transfer | placeop",
+        "quantity ::= " + _object(f"{_key('op')} {_alts(QUANTITY_OPS)}", f"{_key('places')} places",
+                                  f"{_key('items')} items", f"{_key('amount')} amount", f"{_key('words')} words"),
+        "transfer ::= " + _object(f"{_key('op')} {_lit('transfer')}", f"{_key('items')} items",
+                                  f"{_key('amount')} amount", f"{_key('from')} places", f"{_key('to')} places",
+                                  f"{_key('words')} words"),
+        "placeop ::= " + _object(f"{_key('op')} {_alts(PLACE_OPS)}", f"{_key('places')} places",
+                                 f"{_key('words')} words"),
+        "amount ::= " + " | ".join(amount_alts),
+        "rule ::= " + _object(f"{_key('mode')} {_alts(['only', 'never'])}", f"{_key('robots')} robots",
+                              f"{_key('product')} (item | {_lit(ANY)})", f"{_key('from')} (place | {_lit(ANY)})",
+                              f"{_key('to')} (place | {_lit(ANY)})", f"{_key('words')} words"),
     ]
-    group_items = []
-    for i, (cap, names) in enumerate(_capacity_groups(world).items()):
-        group_items.append(f"item{i}")
-        counts = " | ".join(f'"{n}"' for n in range(cap, -1, -1))  # longest first
-        lines += [f"shelf{i} ::= {_alts(names)}", f"count{i} ::= {counts}",
-                  f'item{i} ::= "{{" ws "\\"shelf\\":" ws shelf{i} "," ws "\\"product\\":" ws product '
-                  f'"," ws "\\"units\\":" ws count{i} ws "}}"']
-    lines.insert(1, "item ::= " + " | ".join(group_items))
+    for role, one in (("places", "place"), ("items", "item")):
+        names = v[role]
+        lines.append(f"{role} ::= " + _object(f"{_key('names')} {_list(one, len(names), 1)}") + " | "
+                     + _object(f"{_key('all')} \"true\"", f"{_key('except')} "
+                               + (_list(one, len(names) - 1) if len(names) > 1 else '"[" ws "]"')))
+        lines.append(f"{one} ::= {_alts(names)}")
+    if v["kinds"]:
+        robot_alts.append(_object(f"{_key('kind')} kind"))
+        lines.append(f"kind ::= {_alts(v['kinds'])}")
+    if v["tags"]:
+        robot_alts.append(_object(f"{_key('tag')} tag"))
+        lines.append(f"tag ::= {_alts(v['tags'])}")
+    if v["skills"]:
+        robot_alts += [_object(f"{_key('skill')} skill", f"{_key('at_least')} num"),
+                       _object(f"{_key('skill')} skill", f"{_key('at_most')} num"),
+                       _object(f"{_key('extreme')} ({_lit('max')} | {_lit('min')})", f"{_key('skill')} skill")]
+        lines.append(f"skill ::= {_alts(v['skills'])}")
+    lines += [
+        "robots ::= " + " | ".join(robot_alts),
+        f"robot ::= {_alts(v['robots'])}",
+        'num ::= "0" | [1-9]' + (f" [0-9]{{0,{digits - 1}}}" if digits > 1 else ""),
+        f'words ::= "\\"" [^"\\\\\\x7F\\x00-\\x1F]{{0,{WORDS_CHARS}}} "\\""',
+        "ws ::= [ \\t\\n]{0,8}",
+    ]
     return "\n".join(lines) + "\n"
-
-
-def parse_answer(text: str, world: dict) -> tuple[dict[str, dict[str, int]], list[dict[str, Any]]]:
-    """The goal ``{shelf: {product: units}}`` and the constraints of a grounded answer.
-
-    The decoder already limits names and counts; this re-checks them because a provider may
-    ignore the schema, and reports a cut-off or contradictory answer precisely."""
-    try:
-        data = json.loads(text)
-    except json.JSONDecodeError as exc:
-        raise ParseIssue(f"the structured answer is not complete JSON ({exc.msg} at character "
-                         f"{exc.pos}); raise max_tokens or shorten the answer") from None
-    if not isinstance(data, dict) or not isinstance(data.get("goal"), list):
-        raise ParseIssue('the structured answer must be {"goal": [...], "constraints": [...]}')
-    goal: dict[str, dict[str, int]] = {}
-    for n, item in enumerate(data["goal"], 1):
-        shelf, product, units = (item.get(k) if isinstance(item, dict) else None
-                                 for k in ("shelf", "product", "units"))
-        if shelf not in world["shelves"] or product not in world["products"]:
-            raise ParseIssue(f"goal item {n} names an unknown shelf or product: {json.dumps(item)}")
-        cap = int(world["shelves"][shelf]["capacity"])
-        if not isinstance(units, int) or isinstance(units, bool) or not 0 <= units <= cap:
-            raise ParseIssue(f"goal item {n}: units must be a whole number 0..{cap} for {shelf}")
-        previous = goal.setdefault(shelf, {}).setdefault(product, units)
-        if previous != units:
-            raise ParseIssue(f"the goal asks for both {previous} and {units} {product} on {shelf}")
-    rules = []
-    for item in data.get("constraints") or []:
-        if not isinstance(item, dict) or item.get("rule") not in ("only", "never"):
-            raise ParseIssue(f"constraint {json.dumps(item)} needs \"rule\": \"only\" or \"never\"")
-        rule = {item["rule"]: item.get("robots")}
-        rule.update({k: item[k] for k in ("product", "from", "to") if item.get(k) not in (None, ANY)})
-        rules.append(rule)
-    return goal, validate_constraints(rules, world)
