@@ -89,6 +89,12 @@ def test_categories_counts_homes(world):
         goal_of("Put five drinks in the fridge.", world)
 
 
+def test_chilling_means_the_homes_cold_place(world):
+    assert goal_of("Chill the milk and the bottle.", world) == \
+        ({"fridge": ["bottle", "milk"]}, {"fridge": ["closed"]}, [])
+    assert goal_of("Open the fridge and leave it open.", world) == ({}, {"fridge": ["open"]}, [])
+
+
 def test_exceptions_and_overrides(world):
     assert goal_of("Switch off all the lights except the desk lamp.", world) == \
         ({}, {"floorlamp": ["off"], "lightswitch": ["off"]}, [])

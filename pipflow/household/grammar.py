@@ -22,7 +22,7 @@ _RULES = r"""
 start: _sep* item (_sep+ item | _sep* thengap)* _sep*
 _sep: COMMA | END | @AND | @THEN | @BUT
 
-?item: change | toggle | put | gap | away | trash | request | ensure | observe | cue
+?item: change | toggle | put | gap | away | trash | chill | request | ensure | observe | cue
 
 change: _vstate @UP? things @PIECES? via? exception? @HERE?
       | _vstate things @UP via? exception?
@@ -60,6 +60,7 @@ thengap: @THEN things -> gap
 away: @V_PUT @AWAY things | @V_PUT things @AWAY | @V_PUT things @BACK | @V_PUT @BACK things
     | @V_TIDY @UP? things | @V_TIDY things @UP? | @V_CLEAN @UP things | @V_CLEAN things @UP
 
+chill: @V_CHILL things
 trash: @V_TRASH things | @V_THROW @AWAY things | @V_THROW things @AWAY | @V_THROW things @OUT
 
 request: @V_LEAVE things state

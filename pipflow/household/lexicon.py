@@ -61,6 +61,9 @@ for _w, _c in ADJECTIVES.items():
     if tuple(_w.split()) not in PHRASES:
         _add("ADJ", _w, _c)
 _add("V_TOGGLE", "turn,switch,power,flip,flick")
+#: "chill the juice": into the home's cold place (the category named, or with a word, "cold")
+COLD = "cold"
+_add("V_CHILL", "chill,cool,refrigerate,cool down,chill down")
 _add("TOGGLED", "turned,switched,powered")
 _add("V_PUT", "put,place,move,bring,take,carry,set,transfer,gather,collect,stash,drop,store,stick,pop,lay,"
      "hang,deliver,fetch,get,pick,relocate,stack,grab,shift")

@@ -28,7 +28,7 @@ from lark.visitors import CollapseAmbiguities
 
 from pipflow.errors import TranslationError
 from pipflow.household.grammar import NOUN_DUAL, grammar_text
-from pipflow.household.lexicon import ACTIVITIES, FILLER, LIGHT_CATEGORY_WORD, PHRASES, plurals, words_of
+from pipflow.household.lexicon import ACTIVITIES, COLD, FILLER, LIGHT_CATEGORY_WORD, PHRASES, plurals, words_of
 from pipflow.language.names import distance
 from pipflow.language.numbers import read_number
 
@@ -90,7 +90,7 @@ PUNCT = {".": "END", ";": "END", "!": "END", "?": "END", ":": "END", ",": "COMMA
 
 #: token classes whose words a typo may be read as: content words only. A function word is short
 #: and close to many words ("fork" is not "for", "house" is not "those"), so it is never guessed.
-CONTENT_CLASSES = {"V_STATE", "V_OPEN", "V_SHUT", "V_CLEAN", "V_WARM", "V_TOGGLE", "V_PUT", "V_THROW", "V_TRASH",
+CONTENT_CLASSES = {"V_STATE", "V_OPEN", "V_SHUT", "V_CLEAN", "V_WARM", "V_TOGGLE", "V_PUT", "V_THROW", "V_TRASH", "V_CHILL",
                    "V_TIDY", "V_LEAVE", "V_MAKE", "ADJ", "ACTIVITY", "LIGHTCUE", "TOGGLED"}
 
 
@@ -401,6 +401,9 @@ class Builder:
             st = {"op": "put_away", "things": things}
         elif kind == "trash":
             st = {"op": "trash", "things": things}
+        elif kind == "chill":
+            verb = next(t for t in self._tokens(node) if self._cls(t) == "V_CHILL")
+            st = {"op": "put", "things": things, "to": {"words": self.tag_of(verb).words, "quality": COLD}}
         elif kind == "request":
             st = {"op": "change", "things": things, "to": self.state(self._sub(node, "state"))}
         elif kind == "observe":

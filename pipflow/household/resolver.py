@@ -29,7 +29,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from pipflow.errors import Refusal, TranslationError
-from pipflow.household.lexicon import INDEFINITE, MASS_NOUNS, REACHABLE, VIA_PROPERTY
+from pipflow.household.lexicon import COLD, INDEFINITE, MASS_NOUNS, REACHABLE, VIA_PROPERTY, words_of
 from pipflow.household.order import check_order
 from pipflow.household.problem import CONDITIONS
 from pipflow.household.world import entity, initial_state, members
@@ -192,6 +192,13 @@ class Resolver:
 
     def place_of(self, place: dict, words: str) -> str:
         """The one place a place phrase names (a category of places with one member counts)."""
+        if place.get("quality") == COLD:   # "chill the juice": the home's one cold place
+            cats = [c for c, e in (self.world.get("categories") or {}).items()
+                    if c == COLD or any(COLD in words_of(w) for w in ((e or {}).get("words") or []))]
+            cold = [m for c in cats for m in members(self.world, c) if m in self.world["places"]]
+            if len(set(cold)) != 1:
+                raise TranslationError(f"'{words}': this home has {len(set(cold))} cold places; say where")
+            return cold[0]
         if place.get("pronoun"):
             said = [n for n in dict.fromkeys(self.before) if n in self.world["places"]]
             if len(said) != 1:
@@ -377,7 +384,7 @@ class Resolver:
                 if n not in self.world["objects"]:
                     raise Refusal(f"'{words}': {n} cannot be moved into {via}")
                 self.put(n, via, words)
-        self.last = [n for n, _ in named if n in self.world["objects"]] or self.last
+        self.last = [n for n, _ in named] or self.last
 
     def move(self, st: dict, words: str) -> None:
         counted = [c for c in (self.counted(s) for s in st["things"] if not s.get("pronoun")) if c is not None]
