@@ -11,6 +11,7 @@ import yaml
 from pipflow import StepContext
 from pipflow.errors import InputError, LLMError
 from pipflow.language import generator, grounding, llm
+from pipflow.language.llm_orders import read_grounded
 from pipflow.language.parsing import ParseIssue, extract_constraints, extract_problem, validate_constraints
 from pipflow.language.prompting import render
 
@@ -106,11 +107,12 @@ def test_templates_are_sandboxed(tmp_path):
 
 def test_schema_and_grammar_hold_only_world_names_and_counts():
     schema = grounding.json_schema(WORLD)
-    item = schema["properties"]["goal"]["items"]["properties"]
-    assert item["product"]["enum"] == ["product1", "product2", "product3", "product4"]
-    assert item["units"]["enum"] == list(range(31))
+    statement = schema["properties"]["statements"]["items"]["anyOf"][0]["properties"]
+    names = statement["items"]["anyOf"][0]["properties"]["names"]["items"]
+    assert names["enum"] == ["product1", "product2", "product3", "product4"]
+    assert statement["amount"]["anyOf"][0]["properties"]["count"]["maximum"] >= 30
     g = grounding.gbnf(WORLD)
-    assert '"\\"product3\\""' in g and "prodcut3" not in g and '"30"' in g and '"31"' not in g
+    assert '"\\"product3\\""' in g and "prodcut3" not in g
 
 
 def test_grammar_compiles_in_llama_cpp():
@@ -120,18 +122,22 @@ def test_grammar_compiles_in_llama_cpp():
 
 
 def test_grounded_answer_becomes_goal_and_constraints():
-    text = json.dumps({"goal": [{"shelf": "shelf4", "product": "product3", "units": 14}],
-                       "constraints": [{"rule": "never", "robots": ["robot0"], "product": "product1",
-                                        "from": "any", "to": "any"}]})
-    goal, rules = grounding.parse_answer(text, WORLD)
-    assert goal == {"shelf4": {"product3": 14}}
-    assert rules == [{"never": ["robot0"], "product": "product1"}]
-    with pytest.raises(ParseIssue, match="unknown shelf or product"):
-        grounding.parse_answer('{"goal": [{"shelf": "shelf4", "product": "prodcut3", "units": 1}]}', WORLD)
-    with pytest.raises(ParseIssue, match="0..30"):
-        grounding.parse_answer('{"goal": [{"shelf": "shelf4", "product": "product3", "units": 31}]}', WORLD)
+    """The order form (tests/test_grounded_orders.py has more), and the earlier goal-triple form."""
+    order = {"statements": [{"op": "set", "places": {"names": ["shelf4"]}, "items": {"names": ["product3"]},
+                             "amount": {"count": 14}, "words": "14 product3 on shelf4"}],
+             "rules": [{"mode": "never", "robots": {"names": ["robot0"]}, "product": "product1",
+                        "from": "any", "to": "any", "words": "not robot0"}]}
+    got = read_grounded(json.dumps(order), WORLD)
+    assert got["goal"] == {"shelf4": {"product3": 14}}
+    assert got["constraints"] == [{"never": ["robot0"], "product": "product1"}]
+    legacy = json.dumps({"goal": [{"shelf": "shelf4", "product": "product3", "units": 14}],
+                         "constraints": [{"rule": "never", "robots": ["robot0"], "product": "product1",
+                                          "from": "any", "to": "any"}]})
+    assert read_grounded(legacy, WORLD)["goal"] == got["goal"]
+    with pytest.raises(ParseIssue, match='"prodcut3" is not a product of this world'):
+        read_grounded('{"goal": [{"shelf": "shelf4", "product": "prodcut3", "units": 1}]}', WORLD)
     with pytest.raises(ParseIssue, match="not complete JSON"):
-        grounding.parse_answer('{"goal": [{"shelf": "sh', WORLD)
+        read_grounded('{"statements": [{"op": "se', WORLD)
 
 
 # --- calls, retries, secrets ---------------------------------------------------------------

@@ -86,6 +86,8 @@ def read_grounded(text: str, world: dict, command: str | None = None) -> dict[st
                          f"{exc.pos}); raise max_tokens or shorten the answer") from None
     if not isinstance(data, dict):
         raise ParseIssue('the structured answer must be one JSON object {"statements": [...], "rules": [...]}')
+    if "goal" in data and "statements" not in data:
+        data = legacy_order(data)
     order = _normalize(data)
     if command and "command" not in order:
         order["command"] = command
@@ -98,8 +100,8 @@ def read_grounded(text: str, world: dict, command: str | None = None) -> dict[st
     unknown = check_names(order, world)
     if unknown:
         raise ParseIssue("; ".join(unknown))
-    try:
-        resolved = resolve(order, world)
+    try:  # no supply check: an impossible goal goes to the verifier, whose verdict llm.check weighs
+        resolved = resolve(order, world, check=False)
     except Refusal as exc:
         raise ParseIssue(f"the order cannot be carried out in this world: {exc}. Check each statement's "
                          "op and amount against the command (\"set\" a count, \"change\" by more/fewer, "
@@ -108,6 +110,47 @@ def read_grounded(text: str, world: dict, command: str | None = None) -> dict[st
         raise ParseIssue(f"the order does not say enough: {exc}") from None
     return {"order": order, "goal": resolved.goal, "constraints": resolved.constraints,
             "explanation": resolved.explanation}
+
+
+def legacy_order(data: dict) -> dict[str, Any]:
+    """An order from the earlier grounded form ``{"goal": [{"shelf", "product", "units"}],
+    "constraints": [{"rule", "robots", "product", "from", "to"}]}``, still read because scripted
+    answers and earlier feedback use it (the schema and grammar ask for orders only). Malformed
+    items are passed through so that the order's validation names them."""
+    statements: list[Any] = []
+    for item in data.get("goal") if isinstance(data.get("goal"), list) else []:
+        if not isinstance(item, dict):
+            statements.append(item)
+            continue
+        shelf, product, units = (item.get(k) for k in ("shelf", "product", "units"))
+        statements.append({"op": "set", "places": {"names": [shelf]}, "items": {"names": [product]},
+                           "amount": {"count": units}, "words": f"{units} {product} on {shelf}"})
+    rules: list[Any] = []
+    for c in data.get("constraints") if isinstance(data.get("constraints"), list) else []:
+        if not isinstance(c, dict):
+            rules.append(c)
+            continue
+        rule = {"mode": c.get("rule"), "robots": {"names": c.get("robots")}, "words": json.dumps(c)}
+        rule.update({k: c[k] for k in SCOPE_ROLES if c.get(k) not in (None, ANY)})
+        rules.append(rule)
+    return {"statements": statements, "rules": rules}
+
+
+def goal_statement(shelf: str, product: str, value: Any) -> str:
+    """One goal count as the statement of a grounded order (for feedback in the answer's form)."""
+    base = {"places": {"names": [shelf]}, "items": {"names": [product]}}
+    if isinstance(value, dict):
+        amount = {k: int(value[k]) for k in ("at_least", "at_most") if k in value}
+        return json.dumps({"op": "bound", **base, "amount": amount, "words": "..."})
+    return json.dumps({"op": "set", **base, "amount": {"count": int(value)}, "words": "..."})
+
+
+def rule_statement(rule: dict) -> str:
+    """A resolved robot rule (``{"only"|"never": [names], ...}``) as a rule of a grounded order."""
+    mode = "only" if "only" in rule else "never"
+    out = {"mode": mode, "robots": {"names": list(rule.get(mode) or [])}}
+    out.update({k: rule.get(k, ANY) for k in SCOPE_ROLES})
+    return json.dumps({**out, "words": "..."})
 
 
 def _value_words(shelf: str, product: str, value: Any) -> str:
