@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import datetime as _dt
 import fcntl
+import itertools
 import json
 import os
 import re
@@ -73,21 +74,38 @@ def redact(text: str) -> str:
     replaced by ``[redacted NAME]``."""
     if not _secrets:
         return text
-    for value, name in list(_secrets.items()):
-        for form in {value, json.dumps(value)[1:-1]}:
-            if form in text:
-                text = text.replace(form, f"[redacted {name}]")
-    return text
+    pattern, names = _redaction()
+    return pattern.sub(lambda m: f"[redacted {names[m.group(0)]}]", text)
 
 
 def _redact_bytes(data: bytes) -> bytes:
     if not _secrets:
         return data
-    for value, name in list(_secrets.items()):
-        raw = value.encode("utf-8")
-        if raw in data:
-            data = data.replace(raw, f"[redacted {name}]".encode())
-    return data
+    pattern, names = _redaction(raw=True)
+    return pattern.sub(lambda m: f"[redacted {names[m.group(0)]}]".encode(), data)
+
+
+_compiled_redaction: dict[tuple, tuple[re.Pattern, dict]] = {}
+
+
+def _redaction(raw: bool = False) -> tuple[re.Pattern, dict]:
+    """One pattern for all registered secrets (each value, and for text also its JSON-escaped
+    form), compiled once per set of secrets: a record write is one scan, not one per secret and
+    form. Longer forms are tried first, so a secret that contains another is removed whole."""
+    with _secrets_lock:
+        key = (raw, tuple(_secrets.items()))
+        found = _compiled_redaction.get(key)
+        if found is None:
+            names: dict = {}
+            for value, name in _secrets.items():
+                forms = [value.encode("utf-8")] if raw else [value, json.dumps(value)[1:-1]]
+                for form in forms:
+                    names.setdefault(form, name)
+            escaped = [re.escape(f) for f in sorted(names, key=len, reverse=True)]
+            found = (re.compile(b"|".join(escaped) if raw else "|".join(escaped)), names)
+            _compiled_redaction.clear()  # only the current set of secrets is ever asked for
+            _compiled_redaction[key] = found
+        return found
 
 
 # -- files -----------------------------------------------------------------------------------
@@ -100,11 +118,14 @@ def atomic_write(path: Path, content: str | bytes, redacted: bool = True) -> Non
         data = (redact(content) if redacted else content).encode("utf-8")
     else:
         data = _redact_bytes(content) if redacted else content
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.")
+    fd, tmp = _create_temporary(path)
     try:
-        os.fchmod(fd, FILE_MODE)
-        with os.fdopen(fd, "wb") as fh:
-            fh.write(data)
+        try:
+            view = memoryview(data)
+            while view:
+                view = view[os.write(fd, view):]
+        finally:
+            os.close(fd)
         os.replace(tmp, path)
     except BaseException:
         try:
@@ -112,6 +133,26 @@ def atomic_write(path: Path, content: str | bytes, redacted: bool = True) -> Non
         except OSError:
             pass
         raise
+
+
+_temporaries = itertools.count()
+_PID = os.getpid()
+
+
+def _create_temporary(path: Path) -> tuple[int, str]:
+    """A new file beside ``path`` (``.NAME.PID.N``), created exclusively with :data:`FILE_MODE`
+    by ``open`` itself: one system call, where ``mkstemp`` + ``fchmod`` + ``fdopen`` take five
+    (a record is written per step, and on a busy disk each call counts)."""
+    flags = os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_CLOEXEC", 0)
+    for _ in range(100):
+        tmp = f"{path.parent}/.{path.name}.{_PID}.{next(_temporaries)}"
+        try:
+            return os.open(tmp, flags, FILE_MODE), tmp
+        except FileExistsError:  # left by a killed process, or a forked child with the same counter
+            continue
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.")
+    os.fchmod(fd, FILE_MODE)
+    return fd, tmp
 
 
 def write_json(path: Path, value: Any) -> None:
@@ -246,8 +287,9 @@ class RunStore:
         if step is not None:
             record["step"] = step
         record.update(fields)
-        line = redact(json.dumps(record, default=str))
-        if _secrets:
+        text = json.dumps(record, default=str)
+        line = redact(text)
+        if line is not text and line != text:  # the listener sees what the record keeps
             record = json.loads(line)
         with self._lock:
             if self._events is None:
