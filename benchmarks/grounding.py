@@ -1,17 +1,21 @@
 """Measure grounded decoding: free PDDL answers vs grammar-constrained answers, same model.
 
     python benchmarks/grounding.py [--model local/smollm2] [--api-base URL] [--no-cache]
+                                   [--modes free,grounded] [--limit N]
 
-For each paper task it asks the model twice (free text, then grounded) and reports per mode the
-share of answers that yield a problem, that name only the world's objects (the paper's failure:
-``prodcut3`` invented as a new product), whose counts fit the shelves, and whose goal is exactly
-the gold one; plus tokens and latency. Default model ``local/smollm2`` starts a llama.cpp server
+For each paper task it asks the model twice (free text, then grounded: an order, see
+pipflow/language/grounding.py) and reports per mode the share of answers that yield a problem,
+that name only the world's objects (the paper's failure: ``prodcut3`` invented as a new
+product), whose counts fit the shelves, and whose goal is exactly the gold one; for grounded
+answers also the share that are complete JSON of the order schema; plus tokens and latency. Default model ``local/smollm2`` starts a llama.cpp server
 on loopback (extra ``pipflow[local]``). Responses are cached (``--cache-dir``), so a second run
 replays without the model.
 """
 from __future__ import annotations
 
 import argparse
+import json
+import os
 import re
 import sys
 from pathlib import Path
@@ -35,10 +39,27 @@ def score(out: dict, gold: dict, world: dict) -> dict[str, bool]:
     goal = out["goal"] if out.get("goal") is not None else goal_of(out["problem"])
     names = {s for s in goal} | {p for items in goal.values() for p in items}
     known = set(world["shelves"]) | set(world["products"])
-    fits = all(s in world["shelves"] and 0 <= n <= world["shelves"][s]["capacity"]
+    fits = all(s in world["shelves"] and all(0 <= v <= world["shelves"][s]["capacity"] for v in
+                                             ([n] if isinstance(n, int) else n.values()))
                for s, items in goal.items() for n in items.values())
     return {"problem": bool(out["problem"]) and bool(goal), "invented": bool(names - known),
-            "bad_counts": bool(goal) and not fits, "exact_goal": goal == gold}
+            "bad_counts": bool(goal) and not fits, "exact_goal": goal == gold,
+            "order": is_order(out["response"]) if out.get("order") is not None or out.get("goal") is not None
+            or out["response"].lstrip().startswith("{") else False}
+
+
+def is_order(text: str) -> bool:
+    """Whether an answer is complete JSON of the order schema (rule scopes "any" dropped)."""
+    from pipflow.errors import TranslationError
+    from pipflow.language.order import validate_order
+
+    try:
+        data = json.loads(text)
+        data["rules"] = [{k: v for k, v in r.items() if v != "any"} for r in data.get("rules") or []]
+        validate_order(data)
+    except (ValueError, TypeError, AttributeError, TranslationError):
+        return False
+    return True
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -50,6 +71,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--cache-dir", default=None)
     ap.add_argument("--no-cache", action="store_true")
     ap.add_argument("--prompt", default="warehouse_problem")
+    ap.add_argument("--modes", default="free,grounded", help="comma-separated: free, grounded")
+    ap.add_argument("--limit", type=int, default=None, help="only the first N tasks")
     args = ap.parse_args(argv)
 
     from pipflow.language.generator import generate
@@ -62,9 +85,11 @@ def main(argv: list[str] | None = None) -> int:
     world["stock"] = {s: dict(world.get("stock", {}).get(s) or {}) for s in world["shelves"]}
     domain = (HERE.parent / "domains/warehouse.pddl").read_text()
 
-    rows: dict[str, list[dict]] = {"free": [], "grounded": []}
-    usages: dict[str, list[dict]] = {"free": [], "grounded": []}
-    for task in spec["tasks"]:
+    modes = [m for m in args.modes.split(",") if m]
+    rows: dict[str, list[dict]] = {m: [] for m in modes}
+    usages: dict[str, list[dict]] = {m: [] for m in modes}
+    tasks = [t for t in spec["tasks"] if t.get("feasible", True)][:args.limit]
+    for task in tasks:
         for mode in rows:
             out = generate(task["command"], world, domain, prompt=args.prompt, model=args.model,
                            api_base=args.api_base, max_tokens=args.max_tokens, timeout=300,
@@ -74,17 +99,19 @@ def main(argv: list[str] | None = None) -> int:
             usages[mode].append(out["usage"])
             print(f"{task['id']} {mode:8s} {rows[mode][-1]}", file=sys.stderr)
 
-    n = len(spec["tasks"])
-    print(f"model {args.model}, prompt {args.prompt}, {n} tasks ({tasks_file})")
+    n = len(tasks)
+    print(f"model {args.model}, prompt {args.prompt}, {n} tasks ({tasks_file}), "
+          f"load average {os.getloadavg()[0]:.2f}")
     print("problem: answers that yield a goal; invented: answers naming a shelf or product the world "
-          "lacks; bad counts: a count outside 0..capacity; exact: the gold goal")
-    print(f"{'mode':9s} {'problem':>8s} {'invented':>9s} {'bad counts':>11s} {'exact':>6s} "
+          "lacks; bad counts: a count outside 0..capacity; exact: the gold goal; order: complete JSON "
+          "of the order schema")
+    print(f"{'mode':9s} {'problem':>8s} {'invented':>9s} {'bad counts':>11s} {'exact':>6s} {'order':>6s} "
           f"{'tokens':>7s} {'latency s':>10s} {'cached':>7s}")
     for mode, r in rows.items():
         u = sum_usage(usages[mode])
         count = {k: sum(x[k] for x in r) for k in r[0]}
         print(f"{mode:9s} {count['problem']:5d}/{n} {count['invented']:6d}/{n} {count['bad_counts']:8d}/{n} "
-              f"{count['exact_goal']:3d}/{n} {u['total_tokens']:7d} {u['latency_s']:10.1f} "
+              f"{count['exact_goal']:3d}/{n} {count['order']:3d}/{n} {u['total_tokens']:7d} {u['latency_s']:10.1f} "
               f"{u['cached']:4d}/{n}")
     return 0
 

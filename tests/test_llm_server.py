@@ -76,11 +76,13 @@ def test_real_server_round_is_parsed_cached_and_replayed_offline(server, tmp_pat
     assert_guarantees(free)
     grounded, g_art = run(tmp_path, "grounded", api_base=api_base, grounded=True)
     # grounded decoding: whatever the tiny model says, only the world's names and counts
-    assert grounded["errors"] == [] or grounded["errors"][0].startswith("the structured answer is not complete JSON")
+    # (an order the resolver cannot compute, e.g. more moved than a shelf holds, is feedback)
+    assert grounded["errors"] == [] or grounded["errors"][0].startswith((
+        "the structured answer is not complete JSON", "the order cannot be carried out", "the order does not say"))
     if not grounded["errors"]:
         for shelf, items in grounded["goal"].items():
             assert shelf in WORLD["shelves"] and set(items) <= set(WORLD["products"])
-            assert all(0 <= n <= WORLD["shelves"][shelf]["capacity"] for n in items.values())
+            assert all(isinstance(n, dict) or n >= 0 for n in items.values())
         from unified_planning.io import PDDLReader
 
         PDDLReader().parse_problem_string(DOMAIN.read_text(), grounded["problem"])
