@@ -78,15 +78,15 @@ def _pairs(messages: list[str], world: dict) -> set[tuple[str, str]]:
 def quote(answer: str, messages: list[str], world: dict, grounded: bool) -> str:
     """The previous answer, lines the messages point at marked with ``>>``: lines they cite by
     number (the debugger's positions) and lines that name a shelf and a product that one message
-    names together. A grounded answer is laid out one goal item per line first."""
+    names together. A grounded answer is laid out one statement (or goal item) and rule per line first."""
     text = answer.strip()
     if grounded:
         try:
             data = json.loads(text)
-            items = [json.dumps(x) for x in data.get("goal", [])] + \
-                    [json.dumps(x) for x in data.get("constraints", [])]
+            items = [json.dumps(x) for x in data.get("statements", []) + data.get("goal", [])] + \
+                    [json.dumps(x) for x in data.get("rules", []) + data.get("constraints", [])]
             text = "\n".join(items) or text
-        except (ValueError, AttributeError):
+        except (ValueError, AttributeError, TypeError):
             pass
     else:
         m = re.search(r"\(\s*define\s*\(\s*problem\b", text, re.IGNORECASE)
