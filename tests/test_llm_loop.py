@@ -29,7 +29,7 @@ WH04_GOAL = {"shelf3": {"product2": 2, "product3": 7, "product1": 8},
 WH05 = ("There should be 20 product1 in shelf2, 16 product1 in shelf4, 2 product1 in shelf3. But robot 0 "
         "should not be used to move product1 from one shelf to another.")
 PDDL_FORMS = ("(define", "(= (stock", ":objects", "(:goal")
-JSON_FORMS = ('"units"', '"shelf":', '{"goal"')
+JSON_FORMS = ('"units"', '"shelf":', '{"goal"', '"op":', '"statements"')
 
 
 @pytest.fixture(autouse=True)
@@ -39,9 +39,11 @@ def _env(engine_env, monkeypatch):
 
 
 def grounded_answer(goal: dict, rules: list | None = None) -> str:
-    return json.dumps({"goal": [{"shelf": s, "product": p, "units": n}
-                                for s, items in goal.items() for p, n in items.items()],
-                       "constraints": rules or []})
+    """A grounded answer in the order form the prompt asks for: one ``set`` statement per count."""
+    return json.dumps({"statements": [{"op": "set", "places": {"names": [s]}, "items": {"names": [p]},
+                                       "amount": {"count": n}, "words": f"{n} {p} on {s}"}
+                                      for s, items in goal.items() for p, n in items.items()],
+                       "rules": rules or []})
 
 
 def free_answer(goal: dict, rules: list | None = None) -> str:
@@ -75,7 +77,8 @@ def test_an_impossible_count_the_model_invented_is_feedback_not_a_refusal(tmp_pa
     assert result.outputs["disagreement"] == []
     second = feedback_of(server.prompts()[1])
     assert any("only 10 exist" in m for m in second)
-    assert any('{"shelf": "shelf3", "product": "product2", "units": 2}' in m for m in second)
+    assert any('{"op": "set", "places": {"names": ["shelf3"]}, "items": {"names": ["product2"]}, '
+               '"amount": {"count": 2}}' in m for m in second)
     assert not any(form in m for m in second for form in PDDL_FORMS)  # grounded: no PDDL-form feedback
     assert round_outputs(result.record, 1, "check")["refusal"] is None
 
@@ -97,8 +100,8 @@ def test_wrong_products_are_never_accepted_and_repeated_prompts_are_varied(tmp_p
     from round 3 on, where the feedback repeats, the prompt is varied one step further each
     round and the round records how."""
     wrong = {"shelf2": {"product2": 20}, "shelf4": {"product3": 16}, "shelf3": {"product4": 2}}
-    with FakeOpenAI([grounded_answer(wrong, [{"rule": "never", "robots": ["robot0"], "product": "product1",
-                                              "from": "any", "to": "any"}])]) as server:
+    with FakeOpenAI([grounded_answer(wrong, [{"mode": "never", "robots": {"names": ["robot0"]}, "product": "product1",
+                                              "from": "any", "to": "any", "words": "robot 0 should not"}])]) as server:
         result = run(tmp_path, server, WH05, grounded=True, rounds=5)
         prompts, bodies = server.prompts(), server.requests
     assert result.status == "failed"
@@ -112,11 +115,12 @@ def test_wrong_products_are_never_accepted_and_repeated_prompts_are_varied(tmp_p
     assert varied[4].startswith("quoted previous answer; added world facts; raised temperature to ")
     assert bodies[4]["temperature"] > 0 == bodies[3]["temperature"]
     quoted = prompts[2]
-    assert '>> {"shelf": "shelf2", "product": "product2", "units": 20}' in quoted  # the offending line marked
+    assert '>> {"op": "set", "places": {"names": ["shelf2"]}, "items": {"names": ["product2"]}' in quoted  # marked
     assert "there are 38 product1 in all" in prompts[3]  # the world facts the answer got wrong
     for prompt in prompts[1:]:
         lines = feedback_of(prompt)
-        assert any('{"shelf": "shelf2", "product": "product1", "units": 20}' in m for m in lines)
+        assert any('"places": {"names": ["shelf2"]}, "items": {"names": ["product1"]}, "amount": {"count": 20}'
+                   in m for m in lines)
         assert not any(form in m for m in lines for form in PDDL_FORMS)
 
 
@@ -223,7 +227,7 @@ def test_the_second_opinion_compares_meaning_not_spelling():
                                      [], None, grounded=True)
     assert other.firm and len(other.disagreement) == 2
     assert any("shelf3" in m and "leave product4 on shelf3 out" in m for m in other.messages)
-    assert any('"rule": "never", "robots": ["robot5"], "product": "product1"' in m for m in other.messages)
+    assert any('"mode": "never", "robots": {"names": ["robot5"]}, "product": "product1"' in m for m in other.messages)
     bound = "shelf3 should hold at least 7 product1"
     assert agreement.second_opinion(bound, WORLD, {"shelf3": {"product1": 8}}, [], None, True).disagreement == []
     low = agreement.second_opinion(bound, WORLD, {"shelf3": {"product1": 6}}, [], None, False)
@@ -253,8 +257,8 @@ def test_a_varied_prompt_adds_something_new_at_every_level():
         texts.append("\n".join(extra))
         assert (temperature > 0) == (level >= 3)
     assert len(set(texts)) == 4
-    assert '>> {"shelf": "shelf2", "product": "product2", "units": 20}' in texts[0]
-    assert '   {"shelf": "shelf4", "product": "product3", "units": 16}' in texts[0]  # not marked
+    assert '>> {"op": "set", "places": {"names": ["shelf2"]}, "items": {"names": ["product2"]}' in texts[0]
+    assert '   {"op": "set", "places": {"names": ["shelf4"]}, "items": {"names": ["product3"]}' in texts[0]  # not marked
     assert "- shelf2 holds 8 product1, 5 product2, 6 product3, 2 product4 now (21 units; capacity 30)" in texts[1]
     assert "- there are 10 product2 in all (shelf1 2, shelf2 5, shelf3 3)" in texts[1]
 

@@ -22,8 +22,9 @@ GROUNDED_MARGIN = 48
 #: the fewest tokens ever asked for (a command may ask for many counts the estimate missed)
 FLOOR = 128
 GROUNDED_FLOOR = 256
-#: tokens of one grounded goal item and one rule as small models lay them out (newlines, indents)
-ITEM_TOKENS, RULE_TOKENS = 30, 45
+#: tokens of one grounded statement (an order's ``set`` with its source words) and one rule as
+#: small models lay them out (newlines, indents)
+ITEM_TOKENS, RULE_TOKENS = 55, 60
 #: where a free answer has certainly ended: the model starts writing the prompt's parts again
 FREE_STOPS = ["\nCommand:", "Your previous answer", "\n\n\n\n"]
 
@@ -41,7 +42,7 @@ def free_budget(expected_problem: str) -> int:
 def grounded_budget(goal_items: int, rules: int) -> int:
     """Tokens for a grounded answer of ``goal_items`` counts and ``rules`` rules, twice over and
     at least two of each (a model may restate counts that stay, and the grammar lets it lay an
-    item out over several lines: about 30 tokens an item, 45 a rule, measured on SmolLM2)."""
+    item out over several lines: about 55 tokens a statement, 60 a rule, for SmolLM2)."""
     return max(GROUNDED_FLOOR, 2 * (max(goal_items, 2) * ITEM_TOKENS + max(rules, 2) * RULE_TOKENS) + GROUNDED_MARGIN)
 
 

@@ -29,13 +29,11 @@ MARK = ">> "
 
 
 def goal_entry(shelf: str, product: str, value: Any, grounded: bool) -> str:
-    """One goal count in the answer form of the mode: a JSON goal item (grounded) or a PDDL goal
-    condition (free). A grounded answer states exact counts only, so a bound becomes its lowest
-    count that meets it: its lower end, or for "at most m" alone, m (what such a command means is
-    to take the count down to m, not to empty the shelf)."""
+    """One goal count in the answer form of the mode: a statement of the grounded order
+    (``set`` for an exact count, ``bound`` for a bound) or a PDDL goal condition (free)."""
     if grounded:
-        units = value if not is_bound(value) else int(value.get("at_least", value.get("at_most", 0)))
-        return json.dumps({"shelf": shelf, "product": product, "units": units})
+        op, amount = ("bound", dict(value)) if is_bound(value) else ("set", {"count": value})
+        return json.dumps({"op": op, "places": {"names": [shelf]}, "items": {"names": [product]}, "amount": amount})
     fluent = f"(stock {shelf} {product})"
     if not is_bound(value):
         return f"(= {fluent} {value})"
@@ -45,11 +43,11 @@ def goal_entry(shelf: str, product: str, value: Any, grounded: bool) -> str:
 
 
 def rule(rule_: dict, grounded: bool) -> str:
-    """A robot-use rule in the answer form of the mode: an item of the grounded answer's
-    "constraints" list, or an item of the free answer's ```json {"constraints": [...]} block."""
+    """A robot-use rule in the answer form of the mode: a rule of the grounded order's "rules",
+    or an item of the free answer's ```json {"constraints": [...]} block."""
     kind = "only" if "only" in rule_ else "never"
     if grounded:
-        return json.dumps({"rule": kind, "robots": list(rule_[kind]),
+        return json.dumps({"mode": kind, "robots": {"names": list(rule_[kind])},
                            **{k: rule_.get(k) or "any" for k in ("product", "from", "to")}})
     return json.dumps({kind: list(rule_[kind]), **{k: rule_[k] for k in ("product", "from", "to") if rule_.get(k)}})
 
