@@ -139,6 +139,56 @@ def test_statements_the_world_contradicts_are_not_guessed(command: str, match: s
         understand(command, YARD)
 
 
+# Places that share a head noun with only some of the others: a class word selects those.
+PENS = {
+    "shelves": {"pen1": {"capacity": 10}, "pen2": {"capacity": 10}, "east_cage": {"capacity": 12},
+                "west_cage": {"capacity": 12}, "loft": {"capacity": 30}},
+    "products": {"twine": {}, "valve": {}},
+    "stock": {"pen1": {"twine": 2, "valve": 1}, "pen2": {"twine": 1}, "east_cage": {"twine": 3, "valve": 2},
+              "west_cage": {"valve": 4}, "loft": {"twine": 5, "valve": 5}},
+    "robots": {"hob": {"kind": "tugger", "tags": ["late"], "skills": {"carry": 2}},
+               "nib": {"kind": "amr", "skills": {"carry": 1}}},
+}
+
+
+@pytest.mark.parametrize("command,goal,rules", [
+    # a class word is the places named with it, not every place ("every cage" leaves the loft alone)
+    ("All the pens should have 2 valves.", {"pen1": {"valve": 2}, "pen2": {"valve": 2}}, []),
+    ("Empty every cage except the west cage.", {"east_cage": {"twine": 0, "valve": 0}}, []),
+    ("Give each cage 1 more twine.", {"east_cage": {"twine": 4}, "west_cage": {"twine": 1}}, []),
+    ("Every place should have at least 1 twine.",
+     {p: {"twine": {"at_least": 1}} for p in ("pen1", "pen2", "east_cage", "west_cage", "loft")}, []),
+    # packaging nouns count the item after "of"
+    ("Move 2 rolls of twine from the loft to pen 2.", {"loft": {"twine": 3}, "pen2": {"twine": 3}}, []),
+    ("Pen 1 should end up with 4 cartons of valve.", {"pen1": {"valve": 4}}, []),
+    # a bound said after the item; "keep P at N"
+    ("Keep the loft at 3 valves max.", {"loft": {"valve": {"at_most": 3}}}, []),
+    ("Pen 2 should have 2 twine minimum.", {"pen2": {"twine": {"at_least": 2}}}, []),
+    # the count after a possessive place; a bracketed apposition; "we don't want any X in P"
+    ("Spread the loft's 4 twine evenly over pen 1 and pen 2.",
+     {"loft": {"twine": 1}, "pen1": {"twine": 4}, "pen2": {"twine": 3}}, []),
+    ("Pen 1 (it has 2 twine now) should get 3 more twine.", {"pen1": {"twine": 5}}, []),
+    ("We don't want any valves in the east cage.", {"east_cage": {"valve": 0}}, []),
+    # a tag followed by "shift" / "crew"
+    ("Keep the late shift robots off valves. Pen 2 should have 2 valves.", {"pen2": {"valve": 2}},
+     [{"never": ["hob"], "product": "valve"}]),
+])
+def test_place_classes_units_and_trailing_bounds(command: str, goal: dict, rules: list[dict]) -> None:
+    g, r = got(command, PENS)
+    assert g == goal
+    assert [{k: v for k, v in x.items() if k != "words"} for x in r] == rules
+
+
+@pytest.mark.parametrize("command,match", [
+    ("Put 2 valves in the cage.", "does not say which shelf"),     # two cages: not guessed
+    ("All three cages should have 1 valve.", "not 3"),           # the world has two
+    ("Pen 1 (it has 5 twine) should get 1 more twine.", "holds 2 twine, not 5"),
+])
+def test_place_classes_that_do_not_fit_are_refused(command: str, match: str) -> None:
+    with pytest.raises(TranslationError, match=match):
+        understand(command, PENS)
+
+
 def test_negation_scopes_over_its_own_place_only() -> None:
     """ "Clear shelf2, but nothing goes to shelf4": shelf4 keeps what it has (it was emptied)."""
     g, _ = got("Clear shelf2, but nothing goes to shelf4")

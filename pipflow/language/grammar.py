@@ -66,6 +66,8 @@ np: NUM of? ihead                          -> np_count
   | NUM of? ihead "or" "more"              -> np_atleast
   | NUM "or" "more" of? ihead              -> np_atleast
   | upper NUM of? ihead                    -> np_atmost
+  | NUM of? ihead ("max" | "maximum" | "tops" | "at" "most" | "or" "under") -> np_atmost
+  | NUM of? ihead ("min" | "minimum" | "at" "least" | "or" "over") -> np_atleast
   | NUM of? ihead "or" ("fewer" | "less")  -> np_atmost
   | NUM "or" ("fewer" | "less") of? ihead  -> np_atmost
   | "more" "than" NUM of? ihead            -> np_above
@@ -235,7 +237,7 @@ goal: there_be items loc                                  -> g_set
     | places modal? "lose" items                             -> g_lose
     | ("cut" | "reduce") (ihead loc | pitem_plain) "by" (frac | "half" | NUM)  -> g_cut
     | refill places "with" ihead ("until" ("it" | "they") ("is" | "are") "full" | "to" ("capacity" | "top")) -> g_fill
-    | ("keep" | "hold") places "to"? items                    -> g_place_set
+    | ("keep" | "hold") places ("to" | "at")? items           -> g_place_set
     | places modal? ("not" | "never") ("drop" | "fall" | "go") "below" NUM of? ihead -> g_floor
     | places ("shouldnt" | "mustnt" | "cant" | "cannot") ("drop" | "fall" | "go") "below" NUM of? ihead -> g_floor
     | places modal? setv items on_top                       -> g_add_place
@@ -268,6 +270,7 @@ goal: there_be items loc                                  -> g_set
     | places modal? "hold" "nothing"                        -> g_empty
     | places (modal ("not" | "never") | "shouldnt" | "mustnt" | "cant" | "cannot") ("have" | "hold" | "contain" | "keep") ("any" | "anything")? ihead (lsep ihead)* left? -> g_none_of
     | emptyv ihead from places                              -> g_empty_item
+    | ("i" | "we") ("dont" | "do" "not") ("want" | "need") ("any" | "anything")? ihead (lsep ihead)* left? loc -> g_none_in
     | places modal? be "full" "of" only? ihead only?         -> g_fill
     | places modal? "be" "filled" "up"? "with" only? ihead only? -> g_fill
     | "fill" places "up"? "with" only? ihead only?           -> g_fill
@@ -297,10 +300,11 @@ src: ("in" | "on" | "at" | "from" | "off" | "out" "of" | "of") places
 pitems: frac of? posplace ihead appos?                     -> pi_frac
       | "half" of? posplace ihead appos?                   -> pi_frac
       | NUM of? posplace ihead appos?                      -> pi_count
+      | posplace NUM ihead appos?                          -> pi_count
       | ("all" of?)? posplace ihead appos?                 -> pi_all
       | ("all" of?)? "its" ihead                           -> pi_all
 pitem_plain: posplace ihead
-place_appos: "," ("which" | "that") ("has" | "holds" | "already" "has") items now? ","
+place_appos: "," ("which" | "that" | "it" | "they") ("has" | "have" | "holds" | "hold" | "already" "has") items now? ","
 appos: ","? ("all" | "both") (NUM "of" "them" | "of" "them") ","?
 swapwhat: ihead (lsep ihead)* | "everything" ("they" ("hold" | "have"))? | "contents" | "loads" | "stock" | "places" | "goods" | "items"
 stay: be | "be" "left" | "remain" | "be" "kept" | "sit" | "stay" | "lie" | "go" | "be" "placed" | "be" "stored" | "belong" | "end" "up"
@@ -345,6 +349,7 @@ rnum: NUM                                                 -> r_number
 rgroup: (all | "a" | "an" | "any")? (RKIND | RTAG)        -> r_kind
       | all? ROBOTWORD ("tagged" | "labelled" | "labeled" | "marked") (RTAG | RKIND) -> r_kind
       | all? (RTAG | RKIND) ROBOTWORD                      -> r_kind
+      | all? (RTAG | RKIND) ("shift" | "crew" | "team" | "squad") ROBOTWORD? -> r_kind
       | all? ROBOTWORD "that" able? skillv NUM ("or" "more" | "or" "above" | "plus") -> r_skill_min
       | all? ROBOTWORD "that" able? skillv ("at" "least" | "no" "less" "than" | "no" "fewer" "than") NUM -> r_skill_min
       | all? ROBOTWORD "that" able? skillv NUM "or" ("less" | "fewer" | "below") -> r_skill_max

@@ -28,6 +28,11 @@ FILLERS = {"the", "please", "kindly", "units", "unit", "pieces", "piece", "boxes
            "actually", "really", "hey", "um", "uh", "ok,", "just", "right", "away", "quickly",
            "now", "today", "currently", "sku", "skus", "of", "moment", "pls", "plz", "asap", "thx",
            "completely", "entirely", "immediately", "soon", "tonight", "thanks"}
+#: packaging and measure nouns: "5 cartons of tape", "2 rolls of shrink wrap" count the item after
+#: "of". A world that names a product so ("carton") recognises it as that product first.
+FILLERS |= {"carton", "cartons", "roll", "rolls", "pack", "packs", "packet", "packets", "bundle",
+            "bundles", "bag", "bags", "tub", "tubs", "bottle", "bottles", "reel", "reels", "tote",
+            "totes", "drum", "drums", "tin", "tins", "jar", "jars", "sack", "sacks", "crates"}
 #: chat spellings of keywords
 SPELLINGS = {"shud": "should", "shld": "should", "u": "you", "r": "are", "wont": "wont", "gonna": "will",
              "wanna": "want", "lemme": "let", "cuz": "because", "thru": "through"}
@@ -188,7 +193,8 @@ class Lexicon:
         if t.kind == "name":
             return {"shelf": "PLACE", "product": "ITEM", "robot": "ROBOT"}[t.of], t.value
         if t.kind == "punct":
-            name = self.keywords.get(str(t.value))
+            # a bracketed aside reads like one set off by commas ("lane 7 (it has 3 now) should...")
+            name = self.keywords.get("," if str(t.value) in "()" else str(t.value))
             return (name, t.value) if name else None  # brackets and quotes carry nothing
         group = self._group(t.text)
         if group is not None and (t.kind == "kind" or str(t.value) not in self.keywords):

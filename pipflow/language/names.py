@@ -124,6 +124,27 @@ def _variants(alpha: str) -> list[str]:
     return out
 
 
+def found_shelves(world: dict) -> list[str]:
+    return [str(n) for n in (world.get("shelves") or {})]
+
+
+def _heads(name: str) -> set[str]:
+    """The class nouns a place name carries: "bay" of bay3, "cage" of north_cage, "freezer" of
+    freezer-a (a short label after the noun), none of a one-word name without a number."""
+    out: set[str] = set()
+    alpha, digits = split_digits(normalize(name))
+    if digits and alpha:
+        out.add(alpha)
+    parts = [p for p in re.split(r"[-_\s]+", name.lower()) if p]
+    if len(parts) >= 2:
+        last = parts[-1]
+        if len(last) <= 2 or last.isdigit():
+            out.add(normalize("".join(parts[:-1])))
+        elif last.isalpha():
+            out.add(last)
+    return out
+
+
 def _quote(text: str) -> str:
     return f"'{text}'"
 
@@ -148,6 +169,38 @@ class NameIndex:
             kind: {n.alpha for n in self.names if n.kind == kind and n.digits
                    and len(n.alpha) > 2 and n.alpha not in STOPWORDS} for kind in KINDS
         }
+
+        # Head nouns that several places share ("cage" of north_cage and south_cage, "freezer" of
+        # freezer-a and freezer-b): "every cage" means those places, not every place of the world.
+        self.groups: dict[str, list[str]] = {}
+        for n in found_shelves(world):
+            for head in _heads(n):
+                self.groups.setdefault(head, []).append(n)
+        for head, members in list(self.groups.items()):
+            alpha_stem = any(x.alpha == head and x.digits for x in self.names if x.kind == "shelf")
+            if (len(members) < 2 and not alpha_stem) or head in STOPWORDS or len(head) <= 2 or any(
+                    x.kind != "shelf" and x.alpha == head for x in self.names):
+                del self.groups[head]
+        self.stems["shelf"] |= set(self.groups)
+
+    def group(self, word: str) -> list[str] | None:
+        """The places a plural or class word selects ("cages" -> the places whose head is cage).
+
+        None when the word is no head of the world's place names ("places", "areas"): then it
+        stands for every place.
+        """
+        for v in _variants(normalize(word)):
+            if v in self.groups:
+                return list(self.groups[v])
+        return None
+
+    def _unnumbered_class(self, alpha: str) -> bool:
+        """True for a class word of places that carry no numbers ("cage" of north_cage): a number
+        after it is a count ("each cage 1 more"), never a label."""
+        if any(v in KIND_WORDS["shelf"] for v in _variants(alpha)):
+            return False
+        members = self.group(alpha)
+        return members is not None and not any(split_digits(normalize(m))[1] for m in members)
 
     def candidates(self, kind: str) -> str:
         """The names of a kind, for an error message."""
@@ -290,7 +343,7 @@ class NameIndex:
             text = f"{raw[i]} {raw[i + 1]}"
             alpha, digits = split_digits(normalize(low))
             n = word_value(nxt)
-            if not digits and alpha and n is not None and (
+            if not digits and alpha and n is not None and not self._unnumbered_class(alpha) and (
                     alpha not in STOPWORDS or self.kind_of_word(alpha)):
                 found = self.lookup(alpha, str(n), text)
                 if found is not None:

@@ -240,7 +240,7 @@ class _Sentence:
             if c.data == "place_name":
                 out.append(str(c.children[0].value))
             elif c.data == "place_word":
-                shelves = self.index.by_kind["shelf"]
+                shelves = self.class_places(c)
                 if len(shelves) != 1:
                     raise TranslationError(f"{_quote(self.words(c))} does not say which shelf "
                                            f"(candidates: {self.index.candidates('shelf')})")
@@ -254,11 +254,11 @@ class _Sentence:
                 excl: list[str] = []
                 for e in self.sub(c, "except_pl"):
                     excl += [str(t.value) for t in self.toks(e, "PLACE")]
-                out.extend(p for p in self.index.by_kind["shelf"] if p not in excl)
+                out.extend(p for p in self.class_places(c) if p not in excl)
                 self.distributive = True
             elif c.data == "place_all_n":  # "all four areas": the count must be the world's
                 n = int(self.toks(c, "NUM")[0].value)
-                every = self.index.by_kind["shelf"]
+                every = self.class_places(c)
                 if n != len(every):
                     raise TranslationError(f"{_quote(self.words(c))}: this world has {len(every)} places, not {n}")
                 out.extend(every)
@@ -269,6 +269,16 @@ class _Sentence:
         out = list(dict.fromkeys(out))
         self.last_places = out
         return out
+
+    def class_places(self, node: Tree) -> list[str]:
+        """The places a class word selects: "cages" only the world's cages (a head noun their
+        names share), "places" / "areas" / "shelves" of a world with no such name every place."""
+        words = [t for t in node.children if isinstance(t, Token) and t.type == "PLACEWORD"]
+        if words and words[0].start_pos is not None:
+            group = self.index.group(self.lexed.source[words[0].start_pos].text)
+            if group is not None:
+                return group
+        return list(self.index.by_kind["shelf"])
 
     def loc(self, node: Tree) -> tuple[list[str], str]:
         """Places of a location phrase and how a count applies: "one", "each" or "respectively"."""
@@ -633,8 +643,8 @@ class _Sentence:
             self.statements.append(self._transfer_statement(
                 {"items": {"all": True, "except": excl}, "amount": {"all_held": True}, "words": words}, source, dst, words))
             return
-        if kind == "g_none_of":
-            places = self.place_list(plist[0])
+        if kind in ("g_none_of", "g_none_in"):  # "P mustn't have any X", "we don't want any X in P"
+            places = self.place_list(plist[0]) if kind == "g_none_of" else self.loc(locs[0])[0]
             heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
             self.put(places, "each", [{"items": {"names": [h]}, "amount": {"none": True}, "words": words} for h in heads],
                      words)
