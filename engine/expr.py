@@ -326,10 +326,16 @@ class Reference:
     attr: str | None
 
 
-def split_template(text: str) -> list[tuple[bool, str]]:
+@functools.lru_cache(maxsize=4096)
+def split_template(text: str) -> tuple[tuple[bool, str], ...]:
     """Split a string into literal parts (False, text) and expressions (True, source).
 
-    Braces inside an expression may nest (dict literals) and may appear in quotes."""
+    Braces inside an expression may nest (dict literals) and may appear in quotes. Remembered
+    per text: validation and the run split each argument several times."""
+    return tuple(_split_template(text))
+
+
+def _split_template(text: str) -> list[tuple[bool, str]]:
     parts: list[tuple[bool, str]] = []
     pos = 0
     while True:
