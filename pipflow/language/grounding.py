@@ -26,12 +26,17 @@ ANY = "any"
 MAX_RULES = 8  # robot-use rules in one command; more is a model repeating itself
 MAX_STATEMENTS = 16  # statements in one command; the grammar's lists must be bounded
 WORDS_CHARS = 80  # the longest "words" the grammar lets a model write (a clause of the command)
-QUANTITY_OPS = ["set", "change", "bound"]
 PLACE_OPS = ["swap", "empty", "fill", "keep"]
-#: amount forms offered to the model, each a set of keys (the order schema knows more; these are
-#: the ones a command's clause maps to directly)
-AMOUNT_FORMS: list[tuple[str, ...]] = [("count",), ("more",), ("fewer",), ("at_least",), ("at_most",),
-                                       ("at_least", "at_most"), ("all",), ("rest",)]
+#: the amount forms each op may take, each a tuple of keys (the order schema knows more; these
+#: are the ones a clause maps to directly, and only those the resolver computes for that op, so
+#: that a small model cannot write "set" with "more")
+AMOUNT_FORMS: dict[str, list[tuple[str, ...]]] = {
+    "set": [("count",)],
+    "change": [("more",), ("fewer",)],
+    "bound": [("at_least",), ("at_most",), ("at_least", "at_most")],
+    "transfer": [("count",), ("all",), ("rest",)],
+}
+QUANTITY_OPS = ["set", "change", "bound"]
 FLAGS = {"all", "rest"}  # amount keys whose value is ``true``, not a number
 
 
@@ -83,13 +88,17 @@ def json_schema(world: dict) -> dict[str, Any]:
     ``schemas/order.schema.json`` with the world's names as enums."""
     v = vocabulary(world)
     count = {"type": "integer", "minimum": 0, "maximum": largest_count(world)}
-    amount = {"anyOf": [_obj({k: ({"type": "boolean", "enum": [True]} if k in FLAGS else count) for k in form})
-                        for form in AMOUNT_FORMS]}
+
+    def amount(op: str) -> dict[str, Any]:
+        return {"anyOf": [_obj({k: ({"type": "boolean", "enum": [True]} if k in FLAGS else count) for k in form})
+                          for form in AMOUNT_FORMS[op]]}
+
     places, items, words = _selector(v["places"]), _selector(v["items"]), {"type": "string"}
     statement = {"anyOf": [
-        _obj({"op": _enum(QUANTITY_OPS), "places": places, "items": items, "amount": amount, "words": words}),
-        _obj({"op": _enum(["transfer"]), "items": items, "amount": amount, "from": places, "to": places,
-              "words": words}),
+        *(_obj({"op": _enum([op]), "places": places, "items": items, "amount": amount(op), "words": words})
+          for op in QUANTITY_OPS),
+        _obj({"op": _enum(["transfer"]), "items": items, "amount": amount("transfer"), "from": places,
+              "to": places, "words": words}),
         _obj({"op": _enum(PLACE_OPS), "places": places, "words": words}),
     ]}
     robots = [_obj({"names": {"type": "array", "items": _enum(v["robots"]), "minItems": 1,
@@ -151,22 +160,20 @@ def gbnf(world: dict) -> str:
     so every path through the grammar is a valid order of bounded length."""
     v = vocabulary(world)
     digits = len(str(largest_count(world)))
-    amount_alts = []
-    for form in AMOUNT_FORMS:
-        amount_alts.append(_object(*(_key(k) + (' "true"' if k in FLAGS else " num") for k in form)))
     robot_alts = [_object(f"{_key('names')} {_list('robot', len(v['robots']), 1)}")]
     lines = [
         "root ::= " + _object(f"{_key('statements')} {_list('stmt', MAX_STATEMENTS)}",
                               f"{_key('rules')} {_list('rule', MAX_RULES)}"),
-        "stmt ::= quantity | transfer | placeop",
-        "quantity ::= " + _object(f"{_key('op')} {_alts(QUANTITY_OPS)}", f"{_key('places')} places",
-                                  f"{_key('items')} items", f"{_key('amount')} amount", f"{_key('words')} words"),
+        "stmt ::= " + " | ".join(QUANTITY_OPS) + " | transfer | placeop",
+        *(f"{op} ::= " + _object(f"{_key('op')} {_lit(op)}", f"{_key('places')} places", f"{_key('items')} items",
+                                 f"{_key('amount')} amount-{op}", f"{_key('words')} words") for op in QUANTITY_OPS),
         "transfer ::= " + _object(f"{_key('op')} {_lit('transfer')}", f"{_key('items')} items",
-                                  f"{_key('amount')} amount", f"{_key('from')} places", f"{_key('to')} places",
-                                  f"{_key('words')} words"),
+                                  f"{_key('amount')} amount-transfer", f"{_key('from')} places",
+                                  f"{_key('to')} places", f"{_key('words')} words"),
         "placeop ::= " + _object(f"{_key('op')} {_alts(PLACE_OPS)}", f"{_key('places')} places",
                                  f"{_key('words')} words"),
-        "amount ::= " + " | ".join(amount_alts),
+        *(f"amount-{op} ::= " + " | ".join(_object(*(_key(k) + (' "true"' if k in FLAGS else " num") for k in form))
+                                           for form in forms) for op, forms in AMOUNT_FORMS.items()),
         "rule ::= " + _object(f"{_key('mode')} {_alts(['only', 'never'])}", f"{_key('robots')} robots",
                               f"{_key('product')} (item | {_lit(ANY)})", f"{_key('from')} (place | {_lit(ANY)})",
                               f"{_key('to')} (place | {_lit(ANY)})", f"{_key('words')} words"),
