@@ -46,7 +46,8 @@ from pathlib import Path
 
 import yaml
 
-REPO = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from baseline_code import REPO, baseline_site  # noqa: E402,F401  (a sibling script module; shared with engine_overhead.py)
 WORKFLOW = REPO / "workflows" / "warehouse.yaml"
 DEFAULT_SIZES = "paper,12x4x4,200x20x10,1000x100x20,1000x200x20"
 
@@ -119,23 +120,6 @@ def stage_times(run_dir: Path) -> dict[str, float]:
         if ev.get("event") == "end" and ev.get("duration") is not None and ev.get("step") != "refine":
             out[ev["step"]] = out.get(ev["step"], 0.0) + float(ev["duration"])
     return out
-
-
-def baseline_site(rev: str, work: Path) -> Path:
-    """An importable copy of revision ``rev``: ``site/pipflow`` laid out as the installed package
-    (engine, steps and the data folders linked in), to put first on PYTHONPATH."""
-    src = work / f"baseline-{rev}" / "src"
-    site = src.parent / "site"
-    if not site.is_dir():
-        src.mkdir(parents=True, exist_ok=True)
-        archive = subprocess.run(["git", "-C", str(REPO), "archive", rev], check=True, capture_output=True).stdout
-        subprocess.run(["tar", "-x", "-C", str(src)], input=archive, check=True)
-        (site / "pipflow").mkdir(parents=True)
-        for item in (src / "pipflow").iterdir():
-            (site / "pipflow" / item.name).symlink_to(item)
-        for name in ("engine", "steps", "domains", "prompts", "schemas", "workflows", "benchmarks"):
-            (site / "pipflow" / name).symlink_to(src / name)
-    return site
 
 
 def run_size(label: str, work: Path, timeout: float, site: Path | None = None) -> dict:
