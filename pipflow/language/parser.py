@@ -50,14 +50,10 @@ class _ListLexer(Lexer):
 
 
 @functools.lru_cache(maxsize=1)
-def _parser() -> Lark:
-    """Built once per process (about a second): Earley over the command grammar."""
-    return Lark(nullable_optionals(GRAMMAR), parser="earley", lexer=_ListLexer, keep_all_tokens=True)
-
-
-@functools.lru_cache(maxsize=1)
 def _all_readings_parser() -> Lark:
-    """The same grammar keeping every reading (``_ambig`` nodes), to check that they agree."""
+    """Earley over the command grammar, keeping every reading (``_ambig`` nodes) so that they
+    can be checked to agree. Built once per process (about a second: the one parser a run
+    builds)."""
     return Lark(nullable_optionals(GRAMMAR), parser="earley", lexer=_ListLexer, keep_all_tokens=True,
                 ambiguity="explicit")
 
@@ -66,7 +62,7 @@ def _all_readings_parser() -> Lark:
 def keywords() -> dict[str, str]:
     """Keyword text -> terminal name, from the grammar's anonymous terminals."""
     out = {}
-    for t in _parser().terminals:
+    for t in _all_readings_parser().terminals:
         if t.pattern.type == "str":
             out[t.pattern.value] = t.name
     return out
