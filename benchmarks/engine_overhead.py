@@ -1,6 +1,6 @@
 """Engine overhead per step: a workflow of 1000 trivial `core.value` steps, run in-process.
 
-Two shapes: a chain (each step reads the previous one: the worst case for references) and a
+Two shapes, each with 1 and 4 jobs: a chain (each step reads the previous one: the worst case for references) and a
 wide fan (1000 independent steps, then one step reading them all). The baseline is the same
 1000 step functions called directly in the same process; the engine's overhead is the run's
 wall time minus that baseline. Target: under 1 ms per step.
@@ -97,7 +97,7 @@ def measure_all(n: int, repeat: int, profile: bool = False) -> list[dict]:
             prof.disable()
             pstats.Stats(prof).sort_stats("tottime").print_stats(15)
         return [measure("chain", n, repeat, tmp), measure("fan", n, repeat, tmp),
-                measure("fan", n, repeat, tmp, jobs=4)]
+                measure("chain", n, repeat, tmp, jobs=4), measure("fan", n, repeat, tmp, jobs=4)]
 
 
 def measure_child(n: int, repeat: int, site: Path | None) -> list[dict]:

@@ -5,6 +5,7 @@ that is complete up to the moment anything fails.
 from __future__ import annotations
 
 import concurrent.futures as cf
+import heapq
 import json
 import os
 import stat
@@ -88,25 +89,36 @@ class Executor:
         return graph
 
     def _run_parallel(self, graph: nx.DiGraph, pending: list[str], nodes: dict) -> None:
-        waiting = list(pending)
+        """Run nodes on ``jobs`` threads, each as soon as its predecessors have finished, in the
+        order of ``pending`` among those ready. Each node's count of unfinished predecessors is
+        kept, so a finished node costs its out-degree, not a scan of everything still waiting
+        (a scan per finished node is quadratic on a long chain)."""
+        position = {node_id: i for i, node_id in enumerate(pending)}
+        unfinished = {node_id: sum(1 for p in graph.predecessors(node_id) if p not in self.state.outputs)
+                      for node_id in pending}
+        ready = [position[node_id] for node_id in pending if unfinished[node_id] == 0]
+        heapq.heapify(ready)
         running: dict[cf.Future, str] = {}
         failure: BaseException | None = None
         with cf.ThreadPoolExecutor(max_workers=self.options.jobs) as pool:
-            while waiting or running:
+            while ready or running:
                 if failure is None:
-                    for node_id in list(waiting):
-                        if len(running) >= self.options.jobs:
-                            break
-                        if all(p in self.state.outputs for p in graph.predecessors(node_id)):
-                            waiting.remove(node_id)
-                            running[pool.submit(self._run_node, nodes[node_id])] = node_id
+                    while ready and len(running) < self.options.jobs:
+                        node_id = pending[heapq.heappop(ready)]
+                        running[pool.submit(self._run_node, nodes[node_id])] = node_id
                 if not running:
                     break
                 done, _ = cf.wait(running, return_when=cf.FIRST_COMPLETED)
                 for fut in done:
-                    running.pop(fut)
-                    if fut.exception() is not None and failure is None:
-                        failure = fut.exception()
+                    node_id = running.pop(fut)
+                    if fut.exception() is not None:
+                        failure = failure or fut.exception()
+                        continue
+                    for successor in graph.successors(node_id):
+                        if successor in unfinished:
+                            unfinished[successor] -= 1
+                            if unfinished[successor] == 0:
+                                heapq.heappush(ready, position[successor])
                 if failure is not None and not running:
                     break
         if failure is not None:
