@@ -82,7 +82,8 @@ def test_report_shows_every_round_of_a_model_loop(tmp_path):
     # round 2's prompt carried that feedback: the report shows what the model was told
     assert "never closed" in prompts[1]
     assert "(= (stock shelf4 product3) 12)" in page
-    assert "<h2>Understood</h2>" in page and "shelf4 product3: exactly 12" in page
+    # the model's goal read back into an order, explained with the words it came from
+    assert "<h2>Understood</h2>" in page and "shelf4 product3: 2 now, set 12 -&gt; 12" in page
     shot = tmp_path / "report.png"
     dom = render(run.record / "report.html", shot)
     assert "Refinement loop" in dom
