@@ -259,8 +259,10 @@ def _value_problem(declared: Any, value: Any, wf: Workflow, given: dict | None =
     return declared.check(value, wf.file.parent)
 
 
-def _input_reference(value: str) -> str | None:
-    """``X`` when ``value`` is exactly ``${inputs.X}``."""
+def _plain_reference(value: Any) -> tuple[str, str] | None:
+    """``(name, attr)`` when ``value`` is exactly one plain reference ``${name.attr}``."""
+    if not isinstance(value, str):
+        return None
     try:
         parts = split_template(value.strip())
     except ExpressionError:
@@ -268,7 +270,16 @@ def _input_reference(value: str) -> str | None:
     if len(parts) != 1 or not parts[0][0]:
         return None
     source = parts[0][1].strip()
-    return source[len("inputs."):] if source.startswith("inputs.") and source.count(".") == 1 else None
+    if not all(ch.isalnum() or ch in "._" for ch in source) or source.count(".") != 1:
+        return None
+    name, attr = source.split(".")
+    return name, attr
+
+
+def _input_reference(value: Any) -> str | None:
+    """``X`` when ``value`` is exactly ``${inputs.X}``."""
+    ref = _plain_reference(value)
+    return ref[1] if ref and ref[0] == "inputs" else None
 
 
 def check_given_values(wf: Workflow, registry: Registry, given: dict) -> None:
@@ -279,7 +290,7 @@ def check_given_values(wf: Workflow, registry: Registry, given: dict) -> None:
         step = registry.get(s.uses)
         for arg, value in (s.args.items() if step else ()):
             declared = step.inputs.get(arg)
-            name = _input_reference(value) if isinstance(value, str) else None
+            name = _input_reference(value)
             if declared is None or name is None or name not in given:
                 continue
             problem = _value_problem(declared, value, wf, given)
@@ -291,18 +302,10 @@ def check_given_values(wf: Workflow, registry: Registry, given: dict) -> None:
 
 def _reference_type(value: Any, wf: Workflow, by_id: dict, registry: Registry) -> str | None:
     """The declared type of a value that is exactly one plain reference, if known."""
-    if not isinstance(value, str):
+    ref = _plain_reference(value)
+    if ref is None:
         return None
-    try:
-        parts = split_template(value.strip())
-    except ExpressionError:
-        return None
-    if len(parts) != 1 or not parts[0][0]:
-        return None
-    source = parts[0][1]
-    if not all(ch.isalnum() or ch in "._" for ch in source) or source.count(".") != 1:
-        return None
-    name, attr = source.split(".")
+    name, attr = ref
     if name == "inputs" and attr in wf.inputs:
         return wf.inputs[attr].type
     if name in by_id:
