@@ -126,11 +126,17 @@ def _fraction(base: int, num: int, den: int, words: str, where: str) -> int:
     return base * num // den
 
 
-def _set(st: _State, s: dict) -> None:
+def _selection(st: "_State", s: dict) -> tuple[str, list[str], list[str]]:
+    """A statement's source words and the places and items it selects, checked against the world."""
     words = s.get("words", "")
     places = _names(s.get("places"), st.places)
     items = _names(s.get("items"), st.products)
     st.check_names(places, items, words)
+    return words, places, items
+
+
+def _set(st: _State, s: dict) -> None:
+    words, places, items = _selection(st, s)
     a = s["amount"]
     for p in places:
         for i in items:
@@ -156,10 +162,7 @@ def _set(st: _State, s: dict) -> None:
 
 
 def _change(st: _State, s: dict) -> None:
-    words = s.get("words", "")
-    places = _names(s.get("places"), st.places)
-    items = _names(s.get("items"), st.products)
-    st.check_names(places, items, words)
+    words, places, items = _selection(st, s)
     a = s["amount"]
     for p in places:
         for i in items:
@@ -176,10 +179,7 @@ def _change(st: _State, s: dict) -> None:
 
 
 def _bound(st: _State, s: dict) -> None:
-    words = s.get("words", "")
-    places = _names(s.get("places"), st.places)
-    items = _names(s.get("items"), st.products)
-    st.check_names(places, items, words)
+    words, places, items = _selection(st, s)
     a = s["amount"]
     for p in places:
         for i in items:
@@ -290,10 +290,7 @@ def _keep(st: _State, s: dict) -> None:
 
 
 def _distribute(st: _State, s: dict) -> None:
-    words = s.get("words", "")
-    places = _names(s.get("places"), st.places)
-    items = _names(s.get("items"), st.products)
-    st.check_names(places, items, words)
+    words, places, items = _selection(st, s)
     a = s["amount"]
     sources = _names(s.get("from"), st.places) if s.get("from") else []
     st.check_names(sources, [], words)
