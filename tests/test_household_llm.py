@@ -9,11 +9,11 @@ SmolLM2-135M on loopback), which FAILS (never skips) when the server cannot star
 from __future__ import annotations
 
 import json
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
+
+from conftest import local_model_server
 
 from pipflow import StepContext
 from pipflow.errors import InputError
@@ -188,20 +188,9 @@ def test_no_problem_skips_the_debugger_and_the_loop_is_bounded(engine_env, tmp_p
 # ------------------------------------------------------------------------------ a real server
 @pytest.fixture
 def server():
-    """`python -m llama_cpp.server` with SmolLM2-135M on a free loopback port (8k context: the
-    household prompt is ~3.6k tokens); yields the API base. No server: the test fails."""
-    from pipflow.language.local import free_port, gguf_path, stop_server, wait_ready
-
-    port = free_port()
-    proc = subprocess.Popen(
-        [sys.executable, "-m", "llama_cpp.server", "--model", str(gguf_path()), "--host", "127.0.0.1",
-         "--port", str(port), "--n_ctx", "8192"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    api_base = f"http://127.0.0.1:{port}/v1"
-    try:
-        wait_ready(api_base, proc)
+    """The real model server with an 8k context (the household prompt is ~3.6k tokens)."""
+    with local_model_server(n_ctx=8192) as (_, api_base):
         yield api_base
-    finally:
-        stop_server(proc)
 
 
 def test_household_workflow_with_a_real_model_is_bounded_and_ends_clearly(server, engine_env, tmp_path):

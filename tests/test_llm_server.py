@@ -10,8 +10,6 @@ A missing server or model FAILS these tests (no skip): they are the proof the LL
 from __future__ import annotations
 
 import json
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
@@ -19,7 +17,8 @@ import yaml
 
 from pipflow import StepContext
 from pipflow.errors import LLMError
-from pipflow.language.local import free_port, gguf_path, stop_server, wait_ready
+from conftest import local_model_server
+from pipflow.language.local import stop_server
 
 REPO = Path(__file__).resolve().parents[1]
 WORLD = yaml.safe_load((REPO / "benchmarks/warehouse/world.yaml").read_text())
@@ -31,18 +30,9 @@ KNOWN_FEEDBACK = ("the answer contains no PDDL problem", "the answer has a `(def
 
 @pytest.fixture
 def server():
-    """Start `python -m llama_cpp.server` on a free loopback port; yield (process, api_base)."""
-    port = free_port()
-    proc = subprocess.Popen(
-        [sys.executable, "-m", "llama_cpp.server", "--model", str(gguf_path()), "--host",
-         "127.0.0.1", "--port", str(port), "--n_ctx", "4096"],
-        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    api_base = f"http://127.0.0.1:{port}/v1"
-    try:
-        wait_ready(api_base, proc)
-        yield proc, api_base
-    finally:
-        stop_server(proc)
+    """The real model server; yields (process, api_base)."""
+    with local_model_server() as running:
+        yield running
 
 
 def run(tmp_path: Path, name: str, **args) -> tuple[dict, Path]:
