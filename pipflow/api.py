@@ -61,7 +61,7 @@ def bench(tasks: str | Path, *, workflow: str | None = None, seeds: int = 1, job
           cache: bool = True, **inputs: Any) -> dict[str, Any]:
     """Run a task file's tasks x seeds (optionally x a matrix of input variants) and return the
     content of the bench's ``results.json`` (its ``summary`` and per-task rows)."""
-    from pipflow.bench import BenchConfig, run_bench
+    from pipflow.benchmarking import BenchConfig, run_bench
 
     config = BenchConfig(tasks_file=Path(tasks), workflow=workflow, seeds=max(1, seeds), jobs=max(1, jobs),
                          out=Path(out), matrix={k: [str(v) for v in vs] for k, vs in (matrix or {}).items()},

@@ -53,7 +53,7 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
 
 
 def cmd_bench(args: argparse.Namespace) -> int:
-    from pipflow.bench import bench_main
+    from pipflow.benchmarking import bench_main
 
     return bench_main(args)
 

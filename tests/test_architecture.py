@@ -22,7 +22,7 @@ KNOWN_CIRCLES: list[set[str]] = [
 ]
 #: the layers, top down (docs/architecture.md); a module not listed is library (2)
 FACES = {"pipflow", "pipflow.api", "pipflow.commands"}
-BENCH = {"pipflow.bench", "pipflow.executors", "pipflow.runspec", "pipflow.benchdomains", "pipflow.report",
+BENCH = {"pipflow.benchmarking", "pipflow.executors", "pipflow.runspec", "pipflow.benchdomains", "pipflow.report",
          "pipflow.view", "pipflow.compare"}
 
 

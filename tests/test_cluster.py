@@ -17,7 +17,7 @@ import pytest
 distributed = pytest.importorskip("distributed")
 
 from conftest import interrupt_after
-from pipflow.bench import BenchConfig, read_row, run_bench  # noqa: E402
+from pipflow.benchmarking import BenchConfig, read_row, run_bench  # noqa: E402
 from pipflow.executors import build_bundle, materialize, run_key  # noqa: E402
 
 FIXTURE = Path(__file__).resolve().parent / "fixtures" / "bench"

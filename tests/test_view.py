@@ -159,3 +159,14 @@ def test_matrix_side_by_side_table_in_the_terminal(records):
     assert "graph_mode=exact" in lines[1] and "graph_mode=paper" in lines[1]
     assert [ln.split()[0] for ln in lines[2:]] == ["wh-01", "wh-02", "all"]
     assert all("100%" in ln for ln in lines[2:])  # both tasks succeed under both variants
+
+
+def test_the_api_names_stay_functions_after_the_bench_module_is_imported():
+    """`pipflow.bench` is the API function even once the bench runner module is loaded (a
+    submodule of the same name would replace it on the package)."""
+    import importlib
+
+    importlib.import_module("pipflow.benchmarking")
+    importlib.import_module("pipflow.runspec")
+    assert callable(pipflow.bench) and callable(pipflow.run)
+    assert pipflow.bench.__module__ == "pipflow.api"
