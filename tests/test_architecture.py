@@ -18,7 +18,6 @@ ENGINE_MAY_IMPORT = {"pipflow.errors", "pipflow.resources", "pipflow.yamlsource"
 #: so that it cannot come back) and no other circle may appear
 KNOWN_CIRCLES: list[set[str]] = [
     {"pipflow.pddl.bounds", "pipflow.pddl.common", "pipflow.pddl.transport"},  # the transport engine registers itself
-    {"pipflow.language.agreement", "pipflow.language.generator"},  # the offline reading, shared
 ]
 #: the layers, top down (docs/architecture.md); a module not listed is library (2)
 FACES = {"pipflow", "pipflow.api", "pipflow.commands"}

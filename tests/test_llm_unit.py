@@ -10,7 +10,8 @@ import yaml
 
 from pipflow import StepContext
 from pipflow.errors import InputError, LLMError
-from pipflow.language import generator, grounding, llm
+from pipflow.language import generator
+from pipflow.language import offline as offline_module, grounding, llm
 from pipflow.language.llm_orders import read_grounded
 from pipflow.language.parsing import ParseIssue, extract_constraints, extract_problem, validate_constraints
 from pipflow.language.prompting import render
@@ -242,7 +243,7 @@ def test_offline_model_uses_translator_and_writer(tmp_path, monkeypatch):
     fake.understand = lambda command, world: {"goal": {"shelf3": {"product1": 7}}, "constraints": [],
                                               "order": {"statements": [], "rules": []}, "explanation": []}
     monkeypatch.setitem(sys.modules, "pipflow.language.understand", fake)
-    monkeypatch.setattr(generator, "write_problem", fake_writer)
+    monkeypatch.setattr(offline_module, "write_problem", fake_writer)
     out, art = run_step(tmp_path, model="offline")
     assert out["goal"] == {"shelf3": {"product1": 7}} and out["usage"]["calls"] == 0
     assert out["problem"] == fake_writer(WORLD, out["goal"])

@@ -6,7 +6,7 @@ the command asked for product1 passes every check and robots move the wrong good
 wh-05). So the model's goal and robot rules are compared with a reading of the command that does
 not come from the model:
 
-* **the offline reading** (:func:`pipflow.language.generator.offline`: parser + resolver) when the
+* **the offline reading** (:func:`pipflow.language.offline.offline`: parser + resolver) when the
   parser understands the command. It never guesses, so a goal that differs from it is wrong: a
   *firm* disagreement, feedback for the next round, and never accepted.
 * **the command's words** (its world names and numbers) when the parser does not understand it:
@@ -60,7 +60,7 @@ def offline_reading(command: str, world: dict) -> tuple[str, Any]:
     (the loop asks once per round)."""
     key = hashlib.sha256(json.dumps([command, world], sort_keys=True, default=str).encode()).hexdigest()
     if key not in _READINGS:
-        from pipflow.language.generator import offline  # the parser is heavy; loaded on first use
+        from pipflow.language.offline import offline  # the parser is heavy; loaded on first use
 
         try:
             got = offline(command, world)
