@@ -14,11 +14,6 @@ ROOT = Path(__file__).resolve().parent.parent
 PACKAGES = {"pipflow": "pipflow", "engine": "pipflow.engine", "steps": "pipflow.steps"}
 #: what the engine may import of pipflow's library (everything else sits above it)
 ENGINE_MAY_IMPORT = {"pipflow.errors", "pipflow.resources", "pipflow.yamlsource"}
-#: circles that work under way is removing (issue 14); each must still exist (else delete it here,
-#: so that it cannot come back) and no other circle may appear
-KNOWN_CIRCLES: list[set[str]] = [
-    {"pipflow.pddl.bounds", "pipflow.pddl.common", "pipflow.pddl.transport"},  # the transport engine registers itself
-]
 #: the layers, top down (docs/architecture.md); a module not listed is library (2)
 FACES = {"pipflow", "pipflow.api", "pipflow.commands"}
 BENCH = {"pipflow.benchmarking", "pipflow.executors", "pipflow.runspec", "pipflow.benchdomains", "pipflow.report",
@@ -106,10 +101,7 @@ def test_every_arrow_points_down_or_across():
 def test_no_import_circles():
     graph = import_graph()
     circles = [set(c) for c in nx.strongly_connected_components(graph) if len(c) > 1]
-    unknown = [sorted(c) for c in circles if c not in KNOWN_CIRCLES]
-    assert not unknown, f"import circles: {unknown}"
-    gone = [sorted(c) for c in KNOWN_CIRCLES if c not in circles]
-    assert not gone, f"these circles are gone: remove them from KNOWN_CIRCLES: {gone}"
+    assert not circles, f"import circles: {[sorted(c) for c in circles]}"
 
 
 def test_the_engine_imports_only_the_neutral_modules_of_the_library():

@@ -93,7 +93,7 @@ def write_problem(world: dict, goal: dict, name: str = "task", domain: str = "ho
 def world_mismatches(problem: Any, text: str, world: dict) -> list[str]:
     """Every way a parsed household problem's objects and initial state differ from the world's:
     a problem that invents an object or a state would be solved in a world that is not ours."""
-    from pipflow.pddl.common import initial_numbers
+    from pipflow.pddl.convert import initial_numbers
     from pipflow.pddl.textpos import find_word
     from pipflow.suggest import did_you_mean_clause
 

@@ -15,7 +15,8 @@ import re
 from dataclasses import dataclass, field
 from typing import Any
 
-from pipflow.pddl.common import initial_numbers, parse, read_domain_text
+from pipflow.pddl.common import parse, read_domain_text
+from pipflow.pddl.convert import initial_numbers
 from pipflow.pddl.names import pddl_name
 from pipflow.pddl.textpos import find_word, line_col, strip_comments
 from pipflow.pddl.writer import magnitudes

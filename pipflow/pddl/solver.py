@@ -129,7 +129,8 @@ def solve_problem(problem: Any, engine: str = DEFAULT_ENGINE, params: dict | Non
                   timeout: float | None = 60.0) -> SolveResult:
     """Solve UP ``problem`` with ``engine``; never raises for an engine-side failure (an engine
     that is not installed is the user's: :class:`InputError`)."""
-    from pipflow.pddl.common import environment, plan_to_data
+    from pipflow.pddl.common import environment
+    from pipflow.pddl.convert import plan_to_data
     from unified_planning.engines import PlanGenerationResultStatus as S
     from unified_planning.shortcuts import OneshotPlanner
 

@@ -54,6 +54,7 @@ import functools
 import heapq
 import itertools
 import math
+from math import ceil
 import time
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -262,7 +263,7 @@ def read_goal(problem: Any, stock: str) -> dict[tuple[str, str], Range]:
 
 def instance_from_problem(problem: Any) -> Instance:
     """Read a transport problem out of a UP problem; :class:`NotTransport` if it does not fit."""
-    from pipflow.pddl.common import initial_numbers
+    from pipflow.pddl.convert import initial_numbers
 
     schema = read_schema(problem)
     action = problem.action(schema.action)
@@ -879,10 +880,7 @@ def solve_instance(inst: Instance, limit: "MoveLimit" = None, budget: int = DEFA
         moves, stuck = None, exc
     bound = lower_bound(inst)
     if moves is not None and len(moves) > bound and len(inst.shelves) ** 2 * len(inst.products) <= IP_CELLS:
-        # the order-free IP (SCIP) is a tighter bound and proves most flow plans optimal at once;
-        # deferred import: bounds imports this module, and pyscipopt costs 0.3 s to load
-        from pipflow.pddl.bounds import fewest_moves
-
+        # the order-free IP (SCIP) is a tighter bound and proves most flow plans optimal at once
         ip, _ = fewest_moves(inst, time_limit=2.0)
         bound = max(bound, ip or 0)
     if moves is not None and len(moves) <= bound:
@@ -990,7 +988,7 @@ class TransportPlanner(Engine, OneshotPlannerMixin):
 
     def _solve(self, problem: Any, heuristic: Optional[Callable] = None, timeout: Optional[float] = None,
                output_stream: Any = None) -> PlanGenerationResult:
-        from pipflow.pddl.common import data_to_plan
+        from pipflow.pddl.convert import data_to_plan
 
         S = PlanGenerationResultStatus
         started = time.monotonic()
@@ -1025,3 +1023,52 @@ def register(env: Any) -> None:
     """Add ``pipflow-transport`` to a UP environment's engine factory (idempotent)."""
     if ENGINE_NAME not in env.factory.engines:
         env.factory.add_engine(ENGINE_NAME, __name__, "TransportPlanner")
+
+
+def fewest_moves(inst: Instance, time_limit: float = 60.0) -> tuple[int | None, bool]:
+    """``(moves, proven)``: the order-free minimum number of moves from SCIP, and whether SCIP
+    proved it optimal within ``time_limit`` (otherwise its best bound, rounded up, and False).
+    ``(None, True)`` when no final state exists."""
+    from pyscipopt import Model, quicksum  # deferred: pyscipopt costs 0.3 s to load
+
+    big = largest_move(inst)  # no move carries more than the warehouse's free room
+    small = min(inst.magnitudes.values())
+    m = Model("fewest-moves")
+    m.hideOutput()
+    m.setParam("limits/time", time_limit)
+    S, P = inst.shelves, inst.products
+    y, n = {}, {}
+    for s in S:
+        for t in S:
+            if s == t:
+                continue
+            for p in P:
+                hi = inst.total(p)
+                if hi == 0:
+                    continue
+                y[s, t, p] = m.addVar(vtype="I", lb=0, ub=hi)
+                n[s, t, p] = m.addVar(vtype="I", lb=0, ub=hi)
+                m.addCons(y[s, t, p] <= big * n[s, t, p])
+                m.addCons(y[s, t, p] >= small * n[s, t, p])
+    for s in S:
+        final = {}
+        for p in P:
+            inflow = quicksum(y[t, s, p] for t in S if (t, s, p) in y)
+            outflow = quicksum(y[s, t, p] for t in S if (s, t, p) in y)
+            final[p] = inst.stock[s, p] + inflow - outflow
+            m.addCons(final[p] >= 0)
+            m.addCons(outflow <= inst.stock[s, p] + inflow)
+            lo, hi = inst.goal.get((s, p), (0, None))
+            if lo:
+                m.addCons(final[p] >= lo)
+            if hi is not None:
+                m.addCons(final[p] <= hi)
+        m.addCons(quicksum(final.values()) <= inst.capacity[s])
+    m.setObjective(quicksum(n.values()), "minimize")
+    m.optimize()
+    status = m.getStatus()
+    if status == "infeasible":
+        return None, True
+    if status == "optimal":
+        return int(round(m.getObjVal())), True
+    return int(ceil(m.getDualbound() - 1e-6)), False

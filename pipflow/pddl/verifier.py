@@ -84,7 +84,8 @@ def _explain_inapplicable(problem: Any, plan: Any, index: int, ups_message: str)
 
 def verify_plan(problem: Any, plan: list[dict] | None, world: dict | None = None) -> VerifyReport:
     """Validate ``plan`` on UP ``problem`` and check the problem's goal against ``world``."""
-    from pipflow.pddl.common import data_to_plan, environment, format_plan, stock_goals
+    from pipflow.pddl.common import environment, format_plan, stock_goals
+    from pipflow.pddl.convert import data_to_plan
     from pipflow.pddl.names import goal_in_world_names
     from unified_planning.engines import ValidationResultStatus
     from unified_planning.shortcuts import PlanValidator
