@@ -23,7 +23,7 @@ from typing import Any
 
 from lark import Lark, Token, Tree
 from lark.visitors import CollapseAmbiguities
-from lark.exceptions import UnexpectedEOF, UnexpectedInput, UnexpectedToken
+from lark.exceptions import UnexpectedInput, UnexpectedToken
 from lark.lexer import Lexer
 
 from pipflow.errors import PipflowError, TranslationError
@@ -358,6 +358,15 @@ class _Sentence:
         for place, np in zip(places, nps):
             self.statements.append(self._goal_statement([place], np, add))
 
+
+    def _items_and_source(self, node: Tree, nps: list, words: str) -> tuple[list, list]:
+        """An item phrase that names its own place ("2 gears from rack B") gives the items and the
+        source; otherwise the clause's items and its ``src`` places."""
+        pit = [c for c in node.children if isinstance(c, Tree) and c.data.startswith("pi_")]
+        if pit:
+            np, source = self.pitem(pit[0], words)
+            return [np], source
+        return nps, self.place_list(self.sub(self.sub(node, "src")[0], "places")[0])
     def goal(self, node: Tree) -> None:
         kind = node.data
         words = self.words(node)
@@ -555,12 +564,7 @@ class _Sentence:
                 self.statements.append(self._transfer_statement(np, source, dst, words))
             return
         if kind == "g_remove_src":
-            pit = [c for c in node.children if isinstance(c, Tree) and c.data.startswith("pi_")]
-            if pit:
-                np, source = self.pitem(pit[0], words)
-                nps = [np]
-            else:
-                source = self.place_list(self.sub(self.sub(node, "src")[0], "places")[0])
+            nps, source = self._items_and_source(node, nps, words)
             for np in nps:
                 st = self._transfer_statement(np, source, None, words)
                 self.statements.append(st)
@@ -711,12 +715,7 @@ class _Sentence:
             self.swap(node, words)
             return
         if kind == "g_split_src":
-            pit = [c for c in node.children if isinstance(c, Tree) and c.data.startswith("pi_")]
-            if pit:
-                np, source = self.pitem(pit[0], words)
-                nps = [np]
-            else:
-                source = self.place_list(self.sub(self.sub(node, "src")[0], "places")[0])
+            nps, source = self._items_and_source(node, nps, words)
             places = self.place_list(plist[-1])
             for np in nps:
                 items = np["items"] if np["items"] is not None else {"names": list(self.last_item or [])}
@@ -818,7 +817,6 @@ class _Sentence:
         return st
 
     def transfer(self, node: Tree, nps: list[dict], words: str) -> None:
-        plists = self.sub(node, "places")
         exc = self.sub(node, "except_places")
         # the order of "from" and "to" in the words: find which places list follows "from"
         kids = node.children
@@ -851,7 +849,6 @@ class _Sentence:
             self.statements.append(self._transfer_statement(np, src, dst, words, exclude))
 
     def swap(self, node: Tree, words: str) -> None:
-        kind = node.data
         places: list[str] = []
         heads: list[str] = []
         for c in node.children:
@@ -1268,7 +1265,7 @@ def _one_meaning(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dic
         raise min(errors, key=lambda e: e[0])[1]
     meant = [(n, r, m) for n, r, m in readings if m is not None]
     if len({m for _, _, m in meant}) > 1:
-        (_, a, ma), (_, b, _) = meant[0], next(x for x in meant if x[2] != meant[0][2])
+        (_, a, _), (_, b, _) = meant[0], next(x for x in meant if x[2] != meant[0][2])
         wa = "; ".join(s["words"] for s in a.statements + a.rules)
         wb = "; ".join(s["words"] for s in b.statements + b.rules)
         raise TranslationError(f"'{sentence}' can be read in two ways that ask for different things "
