@@ -268,6 +268,8 @@ def yaml_error_diagnostic(exc: yaml.YAMLError, file: str) -> Diagnostic:
     mark = getattr(exc, "problem_mark", None) or getattr(exc, "context_mark", None)
     problem = getattr(exc, "problem", None) or str(exc)
     context = getattr(exc, "context", None)
+    if "maximum nesting depth" in problem:  # libyaml's own limit, met while scanning ahead of ours
+        problem = f"nested deeper than the YAML reader allows ({problem})"
     message = f"YAML syntax error: {problem}" + (f" ({context})" if context else "")
     loc = Location(file, mark.line + 1, mark.column + 1) if mark else Location(file)
     return Diagnostic(loc, message)

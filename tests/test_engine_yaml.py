@@ -10,7 +10,8 @@ import yaml
 
 from pipflow.engine.source import SourceDict, parse_yaml
 from pipflow.errors import SourceFileError
-from pipflow.yamlsource import MAX_DEPTH, MAX_NODES, load_with_locations, read_source, safe_load
+from pipflow.yamlsource import (MAX_DEPTH, MAX_NODES, load_with_locations, read_source, safe_load,
+                                yaml_error_diagnostic)
 
 
 def _fan(levels: int, width: int = 9) -> tuple[str, int]:
@@ -60,6 +61,16 @@ def test_nesting_limit_is_exact():
     assert safe_load("[" * MAX_DEPTH + "]" * MAX_DEPTH) is not None
     with pytest.raises(yaml.YAMLError, match=f"nested deeper than {MAX_DEPTH}"):
         safe_load("[" * (MAX_DEPTH + 1) + "]" * (MAX_DEPTH + 1))
+
+
+def test_libyaml_nesting_limit_reads_like_ours():
+    """Newer libyaml builds refuse deep flow nesting while scanning ahead, before our composer
+    sees the events; the message must still say what is wrong in the user's words."""
+    mark = yaml.Mark("w.yaml", 0, 1, 1006, None, None)
+    err = yaml.scanner.ScannerError(None, None, "exceeded maximum nesting depth", mark)
+    diag = yaml_error_diagnostic(err, "w.yaml")
+    assert "nested deeper than the YAML reader allows" in diag.message
+    assert (diag.location.line, diag.location.column) == (2, 1007)
 
 
 def test_recursive_alias_is_refused_everywhere():
