@@ -45,7 +45,7 @@ if str(ROOT) not in sys.path:
 
 import pipflow  # noqa: E402
 from pipflow.language.agreement import compare_with_reading, offline_reading  # noqa: E402
-from pipflow.world import load_world  # noqa: E402
+from pipflow.warehouse.world import load_world  # noqa: E402
 
 TASKS = ROOT / "benchmarks" / "warehouse" / "tasks.yaml"
 WORKFLOW = ROOT / "workflows" / "warehouse.yaml"

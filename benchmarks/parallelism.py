@@ -43,7 +43,7 @@ from pipflow.pddl.generate import scale_instance  # noqa: E402
 from pipflow.pddl.solver import solve_problem  # noqa: E402
 from pipflow.pddl.writer import write_problem  # noqa: E402
 from pipflow.scheduling import build_schedule  # noqa: E402
-from pipflow.world import load_tasks  # noqa: E402
+from pipflow.warehouse.world import load_tasks  # noqa: E402
 
 DOMAIN_PATH = ROOT / "domains" / "warehouse.pddl"
 META = yaml.safe_load((ROOT / "domains" / "warehouse.actions.yaml").read_text())

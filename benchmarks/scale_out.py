@@ -31,7 +31,7 @@ def _noop(x):
 
 def _warm(_=None):
     import pipflow.benchmarking  # noqa: F401
-    import pipflow.simulation  # noqa: F401
+    import pipflow.warehouse.simulation  # noqa: F401
     return os.getpid()
 
 

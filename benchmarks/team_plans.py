@@ -43,7 +43,7 @@ from pipflow.pddl.bounds import exact_moves  # noqa: E402
 from pipflow.pddl.transport import flow_plan, instance_from_problem  # noqa: E402
 from pipflow.pddl.verifier import verify_plan  # noqa: E402
 from pipflow.pddl.writer import write_problem  # noqa: E402
-from pipflow.world import load_tasks  # noqa: E402
+from pipflow.warehouse.world import load_tasks  # noqa: E402
 
 DOMAIN = str(ROOT / "domains/warehouse.pddl")
 

@@ -72,7 +72,7 @@ def load_file(tasks_path: Path) -> tuple[dict, list[dict], str]:
     if domain == "household":
         from pipflow.household.scoring import load_tasks
     else:
-        from pipflow.world import load_tasks
+        from pipflow.warehouse.world import load_tasks
     loaded = load_tasks(tasks_path)
     written = {str(t.get("id")): t for t in raw["tasks"]}
     return loaded["world"], [{**written[str(t["id"])], **t} for t in loaded["tasks"]], domain

@@ -31,14 +31,14 @@ class BenchDomain:
 
 
 def _warehouse_tasks(path: Path) -> dict:
-    from pipflow.world import load_tasks
+    from pipflow.warehouse.world import load_tasks
 
     return load_tasks(path)
 
 
 def _warehouse_score(world_path: str, task: dict, outputs: dict, refusal: str | None, error: str | None) -> dict:
-    from pipflow.scoring import score_run
-    from pipflow.world import load_world
+    from pipflow.warehouse.scoring import score_run
+    from pipflow.warehouse.world import load_world
 
     return score_run(load_world(world_path), task.get("goal") or {}, constraints=task.get("constraints"),
                      feasible=task.get("feasible", True) and task.get("expect") != "refuse",

@@ -348,7 +348,7 @@ def _execute(executor, todo: list[RunSpec], done: dict, out: Path, progress: boo
 
 
 def _results(rows: list[dict], tasks: list[dict], config: BenchConfig, wall: float, domain: str) -> dict:
-    from pipflow.scoring import aggregate_task, summarize
+    from pipflow.warehouse.scoring import aggregate_task, summarize
 
     by_variant: dict[str, list[dict]] = {}
     for row in rows:

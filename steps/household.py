@@ -70,7 +70,7 @@ def simulate(
     goal: Annotated[dict | None, Doc("goal conditions to judge the final state against")] = None,
     snapshots: Annotated[bool, Doc("save pybullet pictures of the start and the end")] = False,
 ) -> dict:
-    from pipflow.household.executor import simulate as run
+    from pipflow.household.simulation import simulate as run
 
     out_dir = ctx.artifact_path("home-start.png").parent if snapshots else None
     result = run(world, schedule, graph, goal, snapshots=snapshots, out_dir=out_dir, log=ctx.log)

@@ -1,4 +1,4 @@
-"""Step ``metrics.score``: judge one run against its task (see :mod:`pipflow.scoring`)."""
+"""Step ``metrics.score``: judge one run against its task (see :mod:`pipflow.warehouse.scoring`)."""
 from __future__ import annotations
 
 from typing import Annotated
@@ -28,7 +28,7 @@ def score(
     feasible: Annotated[bool, Doc("false: only a refusal with nothing executed succeeds")] = True,
     refusal: Annotated[str | None, Doc("refusal message, when the pipeline refused")] = None,
 ) -> dict:
-    from pipflow.scoring import score_run
+    from pipflow.warehouse.scoring import score_run
 
     result = score_run(world, goal, constraints=constraints or [], feasible=feasible, graph=graph,
                        schedule=schedule, simulation=simulation, refusal=refusal)

@@ -1,5 +1,5 @@
 """Step ``simulate.pybullet``: execute a schedule in headless pybullet (see
-:mod:`pipflow.simulation`). Thin on purpose: the library does the work, this declares the face."""
+:mod:`pipflow.warehouse.simulation`). Thin on purpose: the library does the work, this declares the face."""
 from __future__ import annotations
 
 from typing import Annotated
@@ -30,7 +30,7 @@ def simulate_pybullet(
     picture: Annotated[bool, Doc("save the path map (PNG) without snapshots (workflows pass pictures == "
                                  "'always')")] = False,
 ) -> dict:
-    from pipflow.simulation import simulate
+    from pipflow.warehouse.simulation import simulate
 
     want_files = bool(snapshots or animation or picture)
     out_dir = ctx.artifact_path("paths.png").parent if want_files else None

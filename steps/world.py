@@ -1,4 +1,4 @@
-"""World step: load and validate a world file (heavy work in :mod:`pipflow.world`)."""
+"""World step: load and validate a world file (heavy work in :mod:`pipflow.warehouse.world`)."""
 from __future__ import annotations
 
 from typing import Annotated
@@ -18,7 +18,7 @@ def load(
     """Raises WorldError (exit 2) listing each problem with file:line:col; returns the normalized
     world dict of docs/architecture.md."""
     from pipflow.starts import vary_starts
-    from pipflow.world import load_world
+    from pipflow.warehouse.world import load_world
 
     world = vary_starts(load_world(ctx.resolve_path(path)), seed)
     ctx.log(f"world {world['name']}: {len(world['shelves'])} shelves, {len(world['products'])} products, "

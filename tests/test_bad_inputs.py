@@ -461,7 +461,7 @@ def test_world_path_that_is_not_an_ordinary_file(ws, capsys, kind):
     assert json.loads((run / "run.json").read_text())["status"] == "failed"
 
 
-# --- task files (read by the bench and by pipflow.world.load_tasks) ---------------------------------
+# --- task files (read by the bench and by pipflow.warehouse.world.load_tasks) ---------------------------------
 TASK_FILES: dict[str, tuple[bytes, list[str]]] = {
     "not utf-8": (b"world: world.yaml\ntasks:\n  - id: \xff\n", ["tasks.yaml:3", "not UTF-8"]),
     "alias bomb": (b"world: world.yaml\n" + _bomb().encode(), ["tasks.yaml", "alias"]),
@@ -476,7 +476,7 @@ TASK_FILES: dict[str, tuple[bytes, list[str]]] = {
 @pytest.mark.parametrize("case", sorted(TASK_FILES))
 def test_bad_task_file_is_a_located_error(ws, case):
     from pipflow.errors import UserError
-    from pipflow.world import load_tasks
+    from pipflow.warehouse.world import load_tasks
 
     content, fragments = TASK_FILES[case]
     (ws / "tasks.yaml").write_bytes(content)
@@ -489,7 +489,7 @@ def test_bad_task_file_is_a_located_error(ws, case):
 @pytest.mark.parametrize("kind", ["folder", "dev-zero", "fifo", "sparse-20MB"])
 def test_task_path_that_is_not_an_ordinary_file(ws, kind):
     from pipflow.errors import UserError
-    from pipflow.world import load_tasks
+    from pipflow.warehouse.world import load_tasks
 
     path = _special(ws, kind)
     with pytest.raises(UserError, match="not a regular file|more than"):

@@ -29,7 +29,7 @@ pytestmark = pytest.mark.usefixtures("no_hang")
 @pytest.fixture(scope="module")
 def problem():
     from pipflow.pddl.writer import write_problem
-    from pipflow.world import load_world
+    from pipflow.warehouse.world import load_world
 
     world = load_world(REPO / "benchmarks/warehouse/world.yaml")
     return world, write_problem(world, {"shelf4": {"product3": 12, "product1": 5}})

@@ -19,7 +19,7 @@ from conftest import interrupt_after
 from pipflow.benchmarking import BenchConfig, read_row, row_path, run_bench
 from pipflow.executors import parse_executor, parse_limits, run_key
 from pipflow.errors import UserError
-from pipflow.scoring import score_run
+from pipflow.warehouse.scoring import score_run
 
 FIXTURE = Path(__file__).resolve().parent / "fixtures" / "bench"
 TASKS = FIXTURE / "tasks.yaml"

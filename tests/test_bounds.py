@@ -18,7 +18,7 @@ from pipflow.pddl.common import parse, stock_goals
 from pipflow.pddl.feasibility import infeasibility_reasons
 from pipflow.pddl.verifier import goal_problems, verify_plan
 from pipflow.pddl.writer import write_problem
-from pipflow.world import load_tasks, load_world
+from pipflow.warehouse.world import load_tasks, load_world
 
 ROOT = Path(__file__).resolve().parents[1]
 DOMAIN = ROOT / "domains" / "warehouse.pddl"
@@ -180,8 +180,8 @@ def test_a_malformed_value_from_a_problem_is_a_message_not_a_refusal():
 def test_simulation_and_scoring_count_bounds():
     from sim_fixtures import wh01
 
-    from pipflow.scoring import goal_counts, score_run
-    from pipflow.simulation import goal_check, simulate
+    from pipflow.warehouse.scoring import goal_counts, score_run
+    from pipflow.warehouse.simulation import goal_check, simulate
 
     final = {"shelf3": {"product1": 7}, "shelf4": {"product1": 15}}
     goal = {"shelf3": {"product1": {"at_least": 6}}, "shelf4": {"product1": {"at_most": 10}}}

@@ -243,8 +243,8 @@ def test_deordered_schedule_runs_in_pybullet_and_is_shorter(task_id):
     from pipflow.pddl.solver import solve_problem
     from pipflow.pddl.writer import write_problem
     from pipflow.scheduling import build_schedule
-    from pipflow.simulation import simulate
-    from pipflow.world import load_tasks
+    from pipflow.warehouse.simulation import simulate
+    from pipflow.warehouse.world import load_tasks
 
     root = Path(__file__).resolve().parents[1]
     tasks = load_tasks(root / "benchmarks/warehouse/tasks.yaml")

@@ -14,7 +14,7 @@ from hypothesis import strategies as st
 from pipflow.engine.source import parse_yaml
 from pipflow.engine.validate import check_workflow
 from pipflow.errors import SourceFileError, UserError, WorldError
-from pipflow.world import load_tasks, world_from_text
+from pipflow.warehouse.world import load_tasks, world_from_text
 from pipflow.yamlsource import decode_text
 
 REPO = Path(__file__).resolve().parents[1]

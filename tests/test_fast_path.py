@@ -100,7 +100,7 @@ print("ok")
 def test_common_colours_match_matplotlib():
     from matplotlib.colors import to_rgba
 
-    from pipflow.simulation import colour_rgba
+    from pipflow.warehouse.simulation import colour_rgba
 
     for name in ("red", "Green", "blue", "magenta", "yellow", "cyan", "black", "white", "orange",
                  "purple", "grey", "gray", "brown", "teal", "#ff8800"):

@@ -32,7 +32,7 @@ def test_translator_reads_every_name_from_the_unseen_world():
 
     from pipflow.errors import Refusal
     from pipflow.language.understand import translate
-    from pipflow.world import load_world
+    from pipflow.warehouse.world import load_world
 
     tasks = yaml.safe_load(TASKS.read_text())["tasks"]
     world = load_world(TASKS.parent / "world.yaml")
@@ -113,7 +113,7 @@ def test_a_rule_that_leaves_one_weak_robot_gets_moves_it_can_carry(tmp_path):
 
 def test_names_that_differ_only_in_case_are_rejected_with_their_location(tmp_path):
     from pipflow.errors import WorldError
-    from pipflow.world import load_world
+    from pipflow.warehouse.world import load_world
 
     path = tmp_path / "clash.yaml"
     path.write_text(MIXED_CASE_WORLD.replace("  alpha:", "  ALPHA: {start: [7, 10], skills: {carry: 1}}\n  alpha:"))

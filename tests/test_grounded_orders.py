@@ -26,7 +26,7 @@ from pipflow.language.llm_orders import explain_goal, read_grounded
 from pipflow.language.order import order_schema, validate_order
 from pipflow.language.parsing import ParseIssue
 from pipflow.pddl.writer import write_problem
-from pipflow.world import load_world
+from pipflow.warehouse.world import load_world
 
 REPO = Path(__file__).resolve().parents[1]
 WAREHOUSE = REPO / "workflows" / "warehouse.yaml"

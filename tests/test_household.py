@@ -192,7 +192,7 @@ def test_heavy_object_needs_a_coalition(world):
     and the executor accepts it; one lifter alone is refused by the executor."""
     from pipflow.allocation import allocate
     from pipflow.dependency import build_graph
-    from pipflow.household.executor import simulate
+    from pipflow.household.simulation import simulate
     from pipflow.household.problem import write_problem
     from pipflow.household.world import select_team
     from pipflow.pddl.common import parse

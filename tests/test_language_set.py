@@ -2,7 +2,7 @@
 
 Two kinds of checks. The data: every world loads through the project's world loader with its
 robots' kinds and tags; every task file validates against schemas/tasks.schema.json and loads
-through pipflow.world.load_tasks; each gold is consistent with its world's stock and capacities
+through pipflow.warehouse.world.load_tasks; each gold is consistent with its world's stock and capacities
 and follows the conventions of benchmarks/language/README.md where they can be computed (a wrong
 gold would reward a misreading). The reading: the offline path misreads none of the commands
 (the understood share is printed; the target is >= 95%, the 0-misread part is asserted).
@@ -23,7 +23,7 @@ import pytest
 import yaml
 
 from pipflow.errors import Refusal, TranslationError
-from pipflow.world import load_schema, load_tasks, load_world
+from pipflow.warehouse.world import load_schema, load_tasks, load_world
 
 ROOT = Path(__file__).resolve().parent.parent
 LANGUAGE = ROOT / "benchmarks" / "language"

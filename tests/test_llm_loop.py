@@ -16,7 +16,7 @@ import pipflow
 from fake_openai import FakeOpenAI
 from pipflow.language import agreement, feedback
 from pipflow.pddl.writer import write_problem
-from pipflow.world import load_world
+from pipflow.warehouse.world import load_world
 
 REPO = Path(__file__).resolve().parents[1]
 WAREHOUSE = REPO / "workflows" / "warehouse.yaml"

@@ -9,7 +9,7 @@ from pathlib import Path
 from pipflow.engine import RunOptions, run_workflow
 from pipflow.language import generator, llm
 from pipflow.pddl.writer import write_problem
-from pipflow.world import load_world
+from pipflow.warehouse.world import load_world
 
 REPO = Path(__file__).resolve().parents[1]
 GOAL = {"shelf2": {"product1": 20}, "shelf4": {"product1": 16}, "shelf3": {"product1": 2}}

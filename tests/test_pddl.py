@@ -15,7 +15,7 @@ from pipflow.pddl.transport import instance_from_problem
 from pipflow.pddl.bounds import exact_moves, fewest_moves
 from pipflow.pddl.verifier import verify_plan
 from pipflow.pddl.writer import write_problem
-from pipflow.world import load_tasks, load_world
+from pipflow.warehouse.world import load_tasks, load_world
 
 ROOT = Path(__file__).resolve().parents[1]
 DOMAIN = str(ROOT / "domains/warehouse.pddl")

@@ -7,7 +7,7 @@ import time
 import numpy as np
 import pytest
 
-from pipflow.simulation import simulate
+from pipflow.warehouse.simulation import simulate
 from sim_fixtures import S1_TO_S3, R5_TO_S1, build, chain, load_world, route, wh01
 
 

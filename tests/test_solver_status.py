@@ -33,7 +33,7 @@ def test_a_result_must_agree_with_its_plan():
 
 
 def test_the_planner_answers_with_a_status():
-    from pipflow.world import load_world
+    from pipflow.warehouse.world import load_world
 
     world = load_world(ROOT / "benchmarks" / "warehouse" / "world.yaml")
     shelf = next(iter(world["shelves"]))

@@ -542,7 +542,7 @@ def test_short_and_common_words_are_not_names() -> None:
     ("Exclude robots 0 and 1. shelf3 should hold 3 product2.", {"never": ["robot0", "robot1"]}),
 ])
 def test_robots_put_out_of_use_by_their_state_are_never_used(command, rule):
-    from pipflow.world import load_world
+    from pipflow.warehouse.world import load_world
 
     world = load_world(Path(__file__).resolve().parents[1] / "benchmarks/warehouse/world.yaml")
     assert translate(command, world)["constraints"] == [rule]

@@ -6,7 +6,7 @@ from pathlib import Path
 import pytest
 
 from pipflow.errors import WorldError
-from pipflow.world import load_tasks, load_world, world_from_text
+from pipflow.warehouse.world import load_tasks, load_world, world_from_text
 from pipflow.yamlsource import load_with_locations
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -88,7 +88,7 @@ def test_task_names_checked(tmp_path):
 
 
 def test_seeded_starts_are_free_and_repeatable():
-    from pipflow.world import inside_footprint, with_random_starts
+    from pipflow.warehouse.world import inside_footprint, with_random_starts
 
     w = load_world(ROOT / "benchmarks/warehouse/world.yaml")
     a, b = with_random_starts(w, 3), with_random_starts(w, 3)
@@ -122,7 +122,7 @@ def test_kind_and_tags_normalized():
 
 
 def test_seeded_starts_keep_kind_and_tags():
-    from pipflow.world import with_random_starts
+    from pipflow.warehouse.world import with_random_starts
 
     w = with_random_starts(world_from_text(TEAM, "kinds.yaml"), 1)
     assert w["robots"]["lifter"]["kind"] == "forklift" and w["robots"]["lifter"]["tags"] == ["day_shift", "cold_store"]

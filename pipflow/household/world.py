@@ -1,6 +1,6 @@
 """Household world files: load, validate with located errors, normalize, pick a robot team.
 
-Same two passes as :mod:`pipflow.world` (and its helpers: YAML with locations, JSON-Schema
+Same two passes as :mod:`pipflow.warehouse.world` (and its helpers: YAML with locations, JSON-Schema
 diagnostics, "did you mean"), because a user fixing a file wants every problem at once with its
 line and column:
 
@@ -25,7 +25,7 @@ from typing import Any
 
 from pipflow.errors import Diagnostic, InputError, Location, WorldError
 from pipflow.suggest import did_you_mean
-from pipflow.world import checked_yaml, inside_footprint, layout_diagnostics, on_floor
+from pipflow.warehouse.world import checked_yaml, inside_footprint, layout_diagnostics, on_floor
 from pipflow.worldfile import Locate, is_point, read_world_file
 
 DOMAIN = "household"
