@@ -1,0 +1,191 @@
+"""The task-domain protocol: everything pipflow's generic code needs to know about a domain.
+
+Why one interface: the generator, the debugger, the verifier, the planner step, the LLM check and
+the bench are the same for every kind of task (moving pallets in a warehouse, tidying a home,
+...); what differs is how a world file is read, how a goal is written as PDDL, how a command is
+read offline, how a run is simulated and scored. The generic modules ask
+:func:`pipflow.taskdomains.task_domain` for the world's domain and call the methods below; they
+never name a domain. A third-party package adds a domain by subclassing :class:`TaskDomain` and
+registering it in the entry-point group ``pipflow.task_domains`` (see the README, "Writing a
+domain plugin"), exactly as steps are registered in ``pipflow.steps``.
+
+Style: a base class with the few methods a domain must write (``abstractmethod``) and defaults for
+what a domain may leave out (no grounded decoding, goals not compared, no world checks beyond the
+PDDL parse). Methods never raise for a world they cannot judge; user errors are
+:class:`pipflow.errors.InputError` subclasses with the file, line and cause (WorldError,
+TranslationError, Refusal).
+
+A world dict says its domain with ``world["domain"]``; a world without one is of the default
+domain (:data:`DEFAULT_DOMAIN`), as every world file was before domains were named.
+
+Contract of the dicts that cross the interface (unchanged from the steps' outputs):
+
+* offline reading: ``{"problem", "goal", "constraints", "messages", "response", "usage",
+  "errors"}`` plus optional ``"order"``, ``"explanation"``, ``"concrete"``;
+* robot rules: ``{"only"|"never": [robot names], <rule field>: name, "words"?: ...}``;
+* scores: the flat outputs of step ``metrics.score`` (``success``, ``gcr``, ``exe``, ``ru``,
+  ``tc_max``, ``tc_avg``, ``makespan``, ``violations``, ...).
+"""
+from __future__ import annotations
+
+from abc import ABC, abstractmethod
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Callable, ClassVar, Mapping
+
+#: the domain of a world (or task file) that does not name one
+DEFAULT_DOMAIN = "warehouse"
+
+#: ``save(name, data)``: keep an artifact of the step (the engine's ``ctx.write_artifact``)
+Save = Callable[[str, Any], Any]
+
+
+@dataclass(frozen=True)
+class GoalCheck:
+    """What the verifier learns from a problem's goal in a world: the goal as data (shown in the
+    step's ``goal`` output), problems with it worth feeding back, and a refusal reason when no
+    plan can ever reach it in this world (more units than exist, slicing a mug)."""
+
+    goal: Any = field(default_factory=dict)
+    messages: list[str] = field(default_factory=list)
+    refusal: str | None = None
+
+
+@dataclass(frozen=True)
+class Grounding:
+    """Grounded decoding for a domain: the model answers in a constrained form instead of PDDL.
+    ``gbnf(world)``: a llama.cpp grammar; ``response_format(world)``: an OpenAI JSON schema;
+    ``read(text, world)``: the answer checked and resolved into ``{"goal", "constraints", "order",
+    "explanation"}`` (raises :class:`pipflow.language.parsing.ParseIssue` with words for the
+    model)."""
+
+    gbnf: Callable[[dict], str]
+    response_format: Callable[[dict], dict]
+    read: Callable[[str, dict], dict]
+
+
+class TaskDomain(ABC):
+    """One kind of task. Subclass it, set the class attributes, write the abstract methods."""
+
+    #: the name worlds and task files use in ``domain:`` (and the entry point's name)
+    name: ClassVar[str]
+    #: the built-in workflow (name or path) ``pipflow bench`` runs for this domain's task files
+    workflow: ClassVar[str]
+    #: the prompt template the generator renders when the workflow names none
+    default_prompt: ClassVar[str]
+    #: the fields a robot rule may narrow by, besides ``only``/``never``
+    rule_fields: ClassVar[tuple[str, ...]] = ()
+    #: grounded decoding, when the domain offers it (None: the generator refuses ``grounded``)
+    grounding: ClassVar[Grounding | None] = None
+
+    # -- files it ships ------------------------------------------------------------------------
+
+    @abstractmethod
+    def pddl_domain(self) -> Path:
+        """The team-level PDDL domain file."""
+
+    @abstractmethod
+    def action_metadata(self) -> Path:
+        """The action metadata file (which action argument is the item, the source, ... and the
+        skills each action needs), read by the dependency graph and the allocation."""
+
+    # -- worlds --------------------------------------------------------------------------------
+
+    @abstractmethod
+    def load_world(self, path: str | Path, *, seed: int | None = None, **options: Any) -> dict:
+        """The world file read and checked (WorldError listing every problem with file:line:col),
+        its robots' starts varied reproducibly by ``seed`` (None: as in the file). ``options``:
+        domain-specific load options (household: ``team``). The dict carries ``domain``."""
+
+    def describe(self, world: dict) -> str:
+        """One line for the run log: what the world holds."""
+        return f"{len(world.get('robots', {}))} robots"
+
+    def rule_names(self, world: dict) -> Mapping[str, tuple[Any, str]]:
+        """For each rule field: the names it may take in this world and what they are called
+        (``{"from": (world["shelves"], "shelf")}``); the robot lists are checked by the caller."""
+        return {}
+
+    # -- language: reading a command, writing a problem ----------------------------------------
+
+    @abstractmethod
+    def read_offline(self, command: str, world: dict, domain_text: str = "",
+                     save: Save | None = None) -> dict:
+        """Model ``offline``: the command read deterministically and its problem written. Raises
+        TranslationError (quoting the words it could not place) or Refusal (impossible in this
+        world)."""
+
+    @abstractmethod
+    def write_problem(self, world: dict, goal: Any, domain_name: str) -> str:
+        """The PDDL problem for ``goal`` in ``world``, naming PDDL domain ``domain_name``."""
+
+    def example_problem(self, world: dict, domain_text: str = "") -> str | None:
+        """A problem for this world that shows a model the expected form (None: no example)."""
+        return None
+
+    def read_problem(self, parsed: Any, world: dict, constraints: list[dict]) -> dict:
+        """What the generator learns from a model's problem that parsed (UP problem ``parsed``):
+        keys to add to the round's outputs (``goal``, ``order``, ``explanation``), and
+        ``errors``: a list of feedback lines (the problem is then not used)."""
+        return {}
+
+    # -- the debugger, the verifier and the planner --------------------------------------------
+
+    def world_mismatches(self, parsed: Any, problem_text: str, world: dict) -> list[str]:
+        """The debugger's check of a parsed problem against the world: objects and initial state
+        that are not the world's, each message located in ``problem_text``."""
+        return []
+
+    def check_goal(self, parsed: Any, world: dict | None) -> GoalCheck:
+        """The verifier's reading of a problem's goal (``world`` None: no world checks)."""
+        return GoalCheck()
+
+    def planner_params(self, world: dict, constraints: list[dict]) -> dict | None:
+        """Parameters for pipflow's own transport planner (robots' capacities, rules), or None
+        when the domain's problems are not transport problems."""
+        return None
+
+    # -- the LLM check -------------------------------------------------------------------------
+
+    def second_opinion(self, command: str, world: dict, goal: Any, constraints: list[dict],
+                       refusal: str | None, grounded: bool) -> Any | None:
+        """The check of a model's goal and rules against the offline reading of the command
+        (a :class:`pipflow.language.agreement.Opinion`), or None when this domain's goals are not
+        compared: then only whether the verifier's refusal is final is decided."""
+        return None
+
+    # -- simulation and scoring ----------------------------------------------------------------
+
+    @abstractmethod
+    def simulate(self, world: dict, schedule: dict, graph: dict | None, goal: Any, *,
+                 snapshots: bool = False, out_dir: Path | None = None,
+                 log: Callable[[str], None] = print, **options: Any) -> dict:
+        """Execute a schedule; the outputs of the domain's simulate step."""
+
+    @abstractmethod
+    def score(self, world: dict, goal: Any, *, constraints: list[dict] | None = None,
+              feasible: bool = True, graph: dict | None = None, schedule: dict | None = None,
+              simulation: dict | None = None, refusal: str | None = None,
+              error: str | None = None) -> dict:
+        """Judge one run against its task: the flat outputs of step ``metrics.score``."""
+
+    # -- the bench -----------------------------------------------------------------------------
+
+    @abstractmethod
+    def load_tasks(self, path: Path) -> dict:
+        """A task file read and checked: ``{"world_path", "tasks": [...], "workflow"?}``."""
+
+    @abstractmethod
+    def score_bench_run(self, world_path: str, task: dict, outputs: dict, refusal: str | None,
+                        error: str | None) -> dict:
+        """Score one bench run of ``task`` from the workflow's outputs."""
+
+    def understand(self, task: dict, outputs: dict, status: str, error_kind: str | None) -> dict | None:
+        """``{"understood", "misread", "understanding"}``: whether the run resolved the task's
+        gold goal and rules; None when understanding is not measured for this domain."""
+        return None
+
+    def bench_table(self, results: dict, tasks_file: Path) -> str | None:
+        """The markdown table of a bench, when the domain groups it its own way (None: the
+        generic table, one row per task)."""
+        return None
