@@ -24,9 +24,9 @@ from typing import Any
 from lark import Lark, Token, Tree
 from lark.visitors import CollapseAmbiguities
 from lark.exceptions import UnexpectedInput, UnexpectedToken
-from lark.lexer import Lexer
 
 from pipflow.errors import PipflowError, TranslationError
+from pipflow.language.earley import ListLexer, earley_parser
 from pipflow.language.grammar import GRAMMAR, nullable_optionals
 from pipflow.language.lexicon import Lexed, Lexicon
 from pipflow.language.robots import RobotSelector
@@ -39,23 +39,12 @@ CHANGE_AMOUNTS = {"more", "fewer", "times", "fraction"}
 BOUND_AMOUNTS = {"at_least", "at_most", "between", "at_least_more"}
 
 
-class _ListLexer(Lexer):
-    """Hands lark the terminals the lexicon made (the parser never sees raw text)."""
-
-    def __init__(self, lexer_conf: Any):
-        pass
-
-    def lex(self, data: Any):  # type: ignore[override]
-        yield from data
-
-
 @functools.lru_cache(maxsize=1)
 def _all_readings_parser() -> Lark:
     """Earley over the command grammar, keeping every reading (``_ambig`` nodes) so that they
     can be checked to agree. Built once per process (about a second: the one parser a run
-    builds)."""
-    return Lark(nullable_optionals(GRAMMAR), parser="earley", lexer=_ListLexer, keep_all_tokens=True,
-                ambiguity="explicit")
+    builds; cached on disk by :mod:`pipflow.language.earley`)."""
+    return earley_parser(nullable_optionals(GRAMMAR), lexer=ListLexer, keep_all_tokens=True, ambiguity="explicit")
 
 
 @functools.lru_cache(maxsize=1)
