@@ -100,7 +100,7 @@ print("ok")
 def test_common_colours_match_matplotlib():
     from matplotlib.colors import to_rgba
 
-    from pipflow.warehouse.simulation import colour_rgba
+    from pipflow.bullet import colour_rgba
 
     for name in ("red", "Green", "blue", "magenta", "yellow", "cyan", "black", "white", "orange",
                  "purple", "grey", "gray", "brown", "teal", "#ff8800"):
@@ -133,3 +133,166 @@ def test_picture_policy_by_mode_and_size():
     assert not pictures.wanted("never", "paths", 1)
     with pytest.raises(ValueError, match="pictures must be one of"):
         pictures.wanted("sometimes", "gantt", 1)
+
+
+# --- the built command parser, cached (pipflow/language/earley.py) ------------------------------------
+COMMANDS = ["shelf4 stores a dozen product3 and a quintet of product1.",
+            "Move 3 product1 from shelf1 to shelf2 and shelf3.",  # ambiguous: readings kept as _ambig
+            "shelf2 to hold 6 product3, and shelf4 too",  # ambiguous
+            "Robot 0 must not move product1. Move 2 product2 to shelf1.",
+            "four product1 to shelf2 and three to shelf3, taking them from shelf1"]
+
+
+@pytest.fixture
+def grammar_cache(tmp_path, monkeypatch):
+    """A private parser cache folder and an empty in-memory cache (restored afterwards)."""
+    from pipflow.language import earley
+
+    folder = tmp_path / "grammar"
+    monkeypatch.setenv(earley.ENV_DIR, str(folder))
+    monkeypatch.setattr(earley, "_MEMORY", {})
+    return folder
+
+
+def _command_parser():
+    from pipflow.language import earley
+    from pipflow.language.grammar import GRAMMAR, nullable_optionals
+
+    return earley.earley_parser(nullable_optionals(GRAMMAR), lexer=earley.ListLexer, keep_all_tokens=True,
+                                ambiguity="explicit")
+
+
+def _sentences():
+    from pipflow.language.lexicon import Lexicon
+    from pipflow.language.parser import keywords
+
+    for command in COMMANDS:
+        yield from Lexicon(WORLD, keywords()).sentences(command)
+
+
+def _no_build(monkeypatch):
+    """Make building a parser fail, so that a test sees whether one came from the cache."""
+    from pipflow.language import earley
+
+    def refuse(*args, **kwargs):
+        raise AssertionError("the parser was built, not loaded")
+
+    monkeypatch.setattr(earley, "_build", refuse)
+
+
+def test_parser_from_disk_reads_like_a_fresh_one(grammar_cache, monkeypatch):
+    from lark import Lark
+
+    from pipflow.language import earley
+
+    fresh = _command_parser()  # built, and stored
+    stored = list(grammar_cache.glob("*.earley"))
+    assert len(stored) == 1 and (grammar_cache / "CACHEDIR.TAG").read_text().startswith("Signature: 8a477f")
+    monkeypatch.setattr(earley, "_MEMORY", {})
+    _no_build(monkeypatch)
+    loaded = _command_parser()
+    assert isinstance(loaded, Lark) and loaded is not fresh
+    assert _command_parser() is loaded  # the second call in a process is the memory
+    ambiguous = 0
+    for lexed in _sentences():
+        a, b = fresh.parse(lexed.tokens), loaded.parse(lexed.tokens)
+        assert a == b, " ".join(t.text for t in lexed.source)
+        ambiguous += any(t.data == "_ambig" for t in b.iter_subtrees())
+    assert ambiguous >= 2  # the ambiguous sentences kept all their readings
+    assert {t.name for t in loaded.terminals} == {t.name for t in fresh.terminals}
+
+
+def test_parsed_command_is_the_same_with_a_loaded_parser(grammar_cache, monkeypatch):
+    """The whole reading (order statements and rules), not only the tree."""
+    from pipflow.language import parser
+
+    parser._all_readings_parser.cache_clear()
+    try:
+        first = [parser.parse(c, WORLD) for c in COMMANDS[:1] + COMMANDS[3:]]
+        parser._all_readings_parser.cache_clear()
+        from pipflow.language import earley
+
+        monkeypatch.setattr(earley, "_MEMORY", {})
+        _no_build(monkeypatch)
+        assert [parser.parse(c, WORLD) for c in COMMANDS[:1] + COMMANDS[3:]] == first
+    finally:
+        parser._all_readings_parser.cache_clear()  # later tests get the process's own parser back
+
+
+@pytest.mark.parametrize("damage", ["garbage", "flipped byte", "truncated", "empty", "other key"])
+def test_a_damaged_cache_file_is_rebuilt(grammar_cache, monkeypatch, damage):
+    from pipflow.language import earley
+
+    _command_parser()
+    entry = next(grammar_cache.glob("*.earley"))
+    raw = entry.read_bytes()
+    head, _, body = raw.partition(b"\n")
+    broken = {"garbage": b"not a parser at all",
+              "flipped byte": head + b"\n" + body[:500] + bytes([body[500] ^ 0xFF]) + body[501:],
+              "truncated": raw[: len(raw) // 2],
+              "empty": b"",
+              "other key": head.replace(entry.stem.encode(), b"0" * 64) + b"\n" + body}[damage]
+    entry.write_bytes(broken)
+    monkeypatch.setattr(earley, "_MEMORY", {})
+    parser = _command_parser()  # rebuilt silently
+    lexed = next(_sentences())
+    assert parser.parse(lexed.tokens).data == "start"
+    assert entry.read_bytes() != broken  # rewritten whole (it loads below)
+    monkeypatch.setattr(earley, "_MEMORY", {})
+    _no_build(monkeypatch)
+    assert _command_parser().parse(lexed.tokens) == parser.parse(lexed.tokens)  # and loads again
+    assert not list(grammar_cache.glob(".tmp-*"))
+
+
+def test_another_grammar_or_option_is_another_entry(grammar_cache):
+    from lark import Token
+
+    from pipflow.language import earley
+
+    one = earley.earley_parser('start: "a" B\nB: "b"\n', lexer="dynamic")
+    two = earley.earley_parser('start: "a" C\nC: "c"\n', lexer="dynamic")
+    assert one is not two and len(list(grammar_cache.glob("*.earley"))) == 2
+    assert one.parse("ab").children == [Token("B", "b")]
+    assert two.parse("ac").children == [Token("C", "c")]
+    with pytest.raises(Exception):
+        two.parse("ab")
+    kept = earley.earley_parser('start: "a" B\nB: "b"\n', lexer="dynamic", keep_all_tokens=True)
+    assert kept is not one and len(kept.parse("ab").children) == 2
+    assert len(list(grammar_cache.glob("*.earley"))) == 3
+    assert earley.parser_key("x", {"a": 1}) != earley.parser_key("y", {"a": 1}) != earley.parser_key("x", {"a": 2})
+
+
+def test_parser_cache_writes_only_into_its_own_folder(tmp_path, monkeypatch):
+    """A folder holding the user's files is left alone (the parser is still built), and an
+    empty string turns the disk cache off."""
+    from pipflow.language import earley
+
+    user = tmp_path / "mine"
+    user.mkdir()
+    (user / "thesis.tex").write_text("\\chapter{x}\n")
+    for setting in (str(user), "", str(user / "thesis.tex")):
+        monkeypatch.setenv(earley.ENV_DIR, setting)
+        monkeypatch.setattr(earley, "_MEMORY", {})
+        assert earley.earley_parser('start: "a"\n', lexer="dynamic").parse("a").data == "start"
+    assert [p.name for p in user.iterdir()] == ["thesis.tex"]
+    monkeypatch.delenv(earley.ENV_DIR)
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "xdg"))
+    assert earley.cache_dir() == tmp_path / "xdg" / "pipflow" / "grammar"
+
+
+def test_concurrent_processes_share_one_cache(tmp_path):
+    """Two processes building at once both get a working parser and leave one whole entry."""
+    folder = tmp_path / "grammar"
+    code = """
+from pipflow.language import earley
+p = earley.earley_parser('start: "a" B\\nB: "b"\\n', lexer="dynamic")
+assert p.parse("ab").data == "start"
+print("ok")
+"""
+    env = {**__import__("os").environ, "PIPFLOW_GRAMMAR_CACHE_DIR": str(folder)}
+    procs = [subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                              text=True, env=env) for _ in range(3)]
+    for proc in procs:
+        out, err = proc.communicate(timeout=120)
+        assert proc.returncode == 0 and out.strip() == "ok", err[-2000:]
+    assert len(list(folder.glob("*.earley"))) == 1 and not list(folder.glob(".tmp-*"))

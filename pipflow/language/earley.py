@@ -98,11 +98,15 @@ def earley_parser(grammar: str, **options: Any) -> Lark:
             folder = cache_dir()
             parser = _load(folder, key) if folder else None
             if parser is None:
-                parser = Lark(grammar, **options)
+                parser = _build(grammar, options)
                 if folder:
                     _store(folder, key, parser)
             _MEMORY[key] = parser
         return parser
+
+
+def _build(grammar: str, options: dict[str, Any]) -> Lark:
+    return Lark(grammar, **options)
 
 
 def _entry(folder: Path, key: str) -> Path:
