@@ -37,6 +37,8 @@ from pipflow.errors import AllocationError, InputError
 from pipflow.scheduling import Timeline, predecessors
 
 EPS = 1e-7
+#: SCIP reads any number this large as infinite (its default ``numerics/infinity``)
+SCIP_INFINITY = 1e20
 SENSES = ("<=", ">=", "==")
 _RULE_KEYS = {"only", "never"}
 _LINEAR_KEYS = {"robots", "coef", "skill", "sense", "rhs", "name"}
@@ -338,6 +340,9 @@ class Rules:
                 raise InputError(f"{where}: sense must be one of {', '.join(SENSES)}")
             if "rhs" not in item or isinstance(item["rhs"], bool) or not isinstance(item["rhs"], (int, float)):
                 raise InputError(f"{where}: `rhs` must be a number")
+            if not abs(item["rhs"]) < SCIP_INFINITY:  # NaN too: SCIP would drop or misread the row
+                raise InputError(f"{where}: `rhs` must be a finite number smaller than {SCIP_INFINITY:g} in size, "
+                                 f"got {item['rhs']}")
             coef = np.zeros(len(robots))
             raw = item.get("coef", 1)
             members = item.get("robots", "all")
@@ -362,6 +367,8 @@ class Rules:
                 if item["skill"] not in skills:
                     raise InputError(f"{where}: unknown skill {item['skill']!r}; skills: {', '.join(skills)}")
                 coef = coef * Q[:, skills.index(item["skill"])]
+            if not np.all(np.abs(coef) < SCIP_INFINITY):
+                raise InputError(f"{where}: coefficients must be finite numbers smaller than {SCIP_INFINITY:g} in size")
             keys = [key for key in item if key not in _LINEAR_KEYS]
             self._check_fields(keys, known_fields, where)
             label = item.get("name") or f"linear #{k + 1} {_show(item)}"
@@ -465,6 +472,8 @@ def allocate(graph: dict, world: dict, method: str = "scip", constraints: list |
         raise InputError(f"unknown allocation method {method!r}; use one of {', '.join(METHODS)}")
     if mode not in ("subtask", "frontier"):
         raise InputError(f"unknown allocation mode {mode!r}; use subtask or frontier")
+    if not 0 < time_limit < SCIP_INFINITY:  # NaN too
+        raise InputError(f"time_limit must be a positive number of seconds, got {time_limit}")
     walk = AllocationWalk(graph, world, method, constraints, linear, travel=travel, speed=speed,
                           handling=handling, time_limit=time_limit)
     t_start = time.perf_counter()

@@ -10,12 +10,16 @@ else that escapes is a bug in pipflow and is shown with its traceback.
     │   ├── WorldError                         world file fails validation (carries diagnostics)
     │   ├── SourceFileError                    a file cannot be read or parsed as YAML (carries diagnostics)
     │   └── InputError                         a step argument or CLI input is wrong
+    │       └── PDDLError                      a PDDL text does not parse against its domain
     ├── StepError                     exit 1   a step failed while running
     │   ├── PlanningError                      planner could not solve (time-out, engine error)
     │   ├── AllocationError                    no feasible coalition for a subtask
     │   ├── LLMError                           provider call failed after retries
     │   └── TranslationError                   the offline translator cannot resolve the command
     └── Refusal                       exit 3   the command is infeasible; the reason is the message
+
+Errors of the libraries pipflow drives (unified-planning, SCIP, litellm) are translated into these
+at the boundary by :func:`pipflow.liberrors.library_errors`, never caught with a bare ``except``.
 """
 from __future__ import annotations
 
@@ -86,6 +90,11 @@ class SourceFileError(_DiagnosticsError):
 
 class InputError(UserError):
     """A step argument or a CLI input is wrong."""
+
+
+class PDDLError(InputError):
+    """A PDDL problem (or domain) text does not parse against its domain: UP's reader rejected
+    it. Raised by :func:`pipflow.liberrors.library_errors` with the reader's own words."""
 
 
 class StepError(PipflowError):

@@ -6,6 +6,8 @@ from __future__ import annotations
 from typing import Annotated
 
 from pipflow import Choices, Doc, StepContext, step
+from pipflow.errors import AllocationError
+from pipflow.liberrors import SCIP, library_errors
 
 # the inputs every allocator takes, named once (each step's signature is its contract)
 Graph = Annotated[dict, Doc("output of graph.dependencies")]
@@ -21,8 +23,9 @@ def _run(ctx: StepContext, method: str, graph: dict, world: dict, constraints: l
          linear: list | None, speed: float, handling: float, mode: str = "subtask", time_limit: float = 10.0) -> dict:
     from pipflow.allocation import allocate
 
-    result = allocate(graph, world, method=method, constraints=constraints or [], linear=linear or [],
-                      mode=mode, speed=speed, handling=handling, time_limit=time_limit)
+    with library_errors(SCIP, AllocationError, f"allocating with {method}"):
+        result = allocate(graph, world, method=method, constraints=constraints or [], linear=linear or [],
+                          mode=mode, speed=speed, handling=handling, time_limit=time_limit)
     ctx.write_artifact("allocation.json", result)
     st = result["stats"]
     ctx.metrics.update({"alloc_median_ms": st["solve_median_ms"], **{f"predicted_{k}": v for k, v in st["predicted"].items()}})

@@ -9,14 +9,19 @@ from __future__ import annotations
 from typing import Annotated
 
 from pipflow import Doc, PathStr, StepContext, step
+from pipflow.errors import PDDLError
+from pipflow.liberrors import UNIFIED_PLANNING, library_errors
 
 DEFAULT_ENGINE = "pipflow-transport"  # see pipflow/pddl/transport.py for why
 
 
 def _parse(ctx: StepContext, problem: str, domain: str):
+    """The parsed problem; UP's complaint about the text arrives as :class:`PDDLError` (any other
+    exception is a bug and is not dressed up as bad input)."""
     from pipflow.pddl.common import parse
 
-    return parse(ctx.resolve_path(domain), problem)
+    with library_errors(UNIFIED_PLANNING, PDDLError, "reading the problem"):
+        return parse(ctx.resolve_path(domain), problem)
 
 
 @step("pddl.debug",
@@ -78,7 +83,7 @@ def solve(
                 "time": 0.0, "engine": engine}
     try:
         parsed = _parse(ctx, problem, domain)
-    except Exception as exc:
+    except PDDLError as exc:
         return {"status": "error", "plan": None, "message": f"the problem does not parse ({exc}); run pddl.debug first",
                 "time": 0.0, "engine": engine}
     domain_text = _read_text(ctx.resolve_path(domain))
@@ -147,7 +152,7 @@ def verify(
         return {"ok": False, "messages": ["no problem to verify"], "refusal": None, "goal": {}}
     try:
         parsed = _parse(ctx, problem, domain)
-    except Exception as exc:
+    except PDDLError as exc:
         return {"ok": False, "messages": [f"the problem does not parse ({exc}); run pddl.debug first"],
                 "refusal": None, "goal": {}}
     report = verify_plan(parsed, plan, world)

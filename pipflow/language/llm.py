@@ -20,6 +20,7 @@ from typing import Any, Callable
 from urllib.parse import urlsplit
 
 from pipflow.errors import InputError, LLMError
+from pipflow.liberrors import LITELLM
 from pipflow.llmslot import llm_slot
 
 DEFAULT_MODEL = "offline"
@@ -225,6 +226,8 @@ def complete(
                 response = _within(litellm.completion, dict(kwargs), kwargs["timeout"] + GRACE)
             break
         except Exception as exc:  # litellm maps every provider's error onto its own classes
+            if not (isinstance(exc, RequestOverrun) or LITELLM.owns(exc)):
+                raise  # not the provider's answer but a bug: it keeps its traceback
             kind = "Timeout" if isinstance(exc, RequestOverrun) else type(exc).__name__
             retryable = isinstance(exc, RequestOverrun) or any(
                 isinstance(exc, getattr(litellm, name, ())) for name in _RETRYABLE)

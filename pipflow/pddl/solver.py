@@ -23,7 +23,8 @@ from dataclasses import dataclass, field
 from enum import Enum
 from typing import Any
 
-from pipflow.errors import InputError
+from pipflow.errors import InputError, PlanningError
+from pipflow.liberrors import UNIFIED_PLANNING, library_errors
 
 DEFAULT_ENGINE = "pipflow-transport"
 JAVA_ENGINES = ("enhsp",)
@@ -127,8 +128,9 @@ def _logs(result: Any, limit: int = 600) -> str:
 
 def solve_problem(problem: Any, engine: str = DEFAULT_ENGINE, params: dict | None = None,
                   timeout: float | None = 60.0) -> SolveResult:
-    """Solve UP ``problem`` with ``engine``; never raises for an engine-side failure (an engine
-    that is not installed is the user's: :class:`InputError`)."""
+    """Solve UP ``problem`` with ``engine``; never raises for an engine-side failure, i.e. an
+    error of UP or of the engine it runs (an engine that is not installed is the user's:
+    :class:`InputError`)."""
     from pipflow.pddl.common import environment
     from pipflow.pddl.convert import plan_to_data
     from unified_planning.engines import PlanGenerationResultStatus as S
@@ -143,16 +145,18 @@ def solve_problem(problem: Any, engine: str = DEFAULT_ENGINE, params: dict | Non
 
         try:
             ensure_java()
-        except Exception as exc:
+        except PlanningError as exc:
             return SolveResult(Status.ERROR, None, str(exc), 0.0, engine)
     try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")  # "we cannot establish whether X can solve this problem"
-            with OneshotPlanner(name=engine, params=dict(params or {})) as planner:
-                result = planner.solve(problem, timeout=timeout)
-    except Exception as exc:
-        return SolveResult(Status.ERROR, None, f"engine {engine} failed: {type(exc).__name__}: {exc}",
-                           time.monotonic() - started, engine)
+        # an error of UP or of the engine it runs becomes an "error" outcome; an error in
+        # pipflow's own engine (pipflow-transport) is a bug and keeps its traceback
+        with library_errors(UNIFIED_PLANNING, PlanningError, f"running the planner {engine}"):
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")  # "we cannot establish whether X can solve this problem"
+                with OneshotPlanner(name=engine, params=dict(params or {})) as planner:
+                    result = planner.solve(problem, timeout=timeout)
+    except PlanningError as exc:
+        return SolveResult(Status.ERROR, None, str(exc), time.monotonic() - started, engine)
     elapsed = time.monotonic() - started
     logs = _logs(result)
     st = result.status
