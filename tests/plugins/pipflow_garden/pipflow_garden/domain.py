@@ -1,0 +1,88 @@
+"""The garden as a pipflow task domain: the one object pipflow's generic code (and the bench)
+talks to, registered in ``pipflow.task_domains`` by this package's pyproject.toml.
+
+Each method is a thin face of a module of this package (world, language, problem, simulation,
+scoring); nothing here is garden knowledge pipflow has to have.
+"""
+from __future__ import annotations
+
+import re
+from pathlib import Path
+from typing import Any, Callable, Mapping
+
+from pipflow.taskdomain import TaskDomain
+
+from pipflow_garden import language, problem, scoring, simulation, world as worlds
+
+HERE = Path(__file__).resolve().parent
+DATA = HERE / "data"
+
+
+def pddl_domain_name(domain_text: str, default: str = "garden") -> str:
+    """The name after ``(domain`` in a PDDL domain's text (the problem must name it)."""
+    m = re.search(r"\(\s*domain\s+([^\s()]+)", domain_text or "", flags=re.IGNORECASE)
+    return m.group(1) if m else default
+
+
+class GardenDomain(TaskDomain):
+    """Robots water beds, prune overgrown ones and harvest ripe crops into stores."""
+
+    name = "garden"
+    workflow = str(HERE / "workflows" / "garden.yaml")
+    default_prompt = str(HERE / "prompts" / "garden_problem.j2")
+    rule_fields = ("bed", "crop", "to")
+
+    def pddl_domain(self) -> Path:
+        return DATA / "garden.pddl"
+
+    def action_metadata(self) -> Path:
+        return DATA / "garden.actions.yaml"
+
+    def load_world(self, path: str | Path, *, seed: int | None = None, **options: Any) -> dict:
+        return worlds.vary_starts(worlds.load_world(path), seed)
+
+    def describe(self, world: dict) -> str:
+        return (f"garden {world['name']}: {len(world['beds'])} beds, {len(world['taps'])} taps, "
+                f"{len(world['stores'])} stores, {len(world['robots'])} robots")
+
+    def rule_names(self, world: dict) -> Mapping[str, tuple[Any, str]]:
+        return {"bed": (world["beds"], "bed"), "crop": (world["crops"], "crop"), "to": (world["stores"], "store")}
+
+    def read_offline(self, command: str, world: dict, domain_text: str = "",
+                     save: Callable[[str, Any], Any] | None = None) -> dict:
+        read = language.read_command(command, world)
+        text = problem.write_problem(world, read["goal"], pddl_domain_name(domain_text))
+        if save is not None:
+            save("order.json", {"order": read["order"], "explanation": read["explanation"]})
+            save("problem.pddl", text)
+        return {"problem": text, "goal": read["goal"], "constraints": read["constraints"], "messages": [],
+                "response": None, "usage": {}, "errors": [], "order": read["order"],
+                "explanation": read["explanation"]}
+
+    def write_problem(self, world: dict, goal: Any, domain_name: str) -> str:
+        return problem.write_problem(world, goal, domain_name)
+
+    def simulate(self, world: dict, schedule: dict, graph: dict | None, goal: Any, *,
+                 snapshots: bool = False, out_dir: Path | None = None,
+                 log: Callable[[str], None] = print, **options: Any) -> dict:
+        return simulation.simulate(world, schedule, graph, goal, log=log)
+
+    def score(self, world: dict, goal: Any, *, constraints: list[dict] | None = None,
+              feasible: bool = True, graph: dict | None = None, schedule: dict | None = None,
+              simulation: dict | None = None, refusal: str | None = None,
+              error: str | None = None) -> dict:
+        return scoring.score_run(world, goal, constraints=constraints, feasible=feasible, graph=graph,
+                                 schedule=schedule, simulation=simulation, refusal=refusal, error=error)
+
+    def load_tasks(self, path: Path) -> dict:
+        return scoring.load_tasks(path, self.workflow)
+
+    def score_bench_run(self, world_path: str, task: dict, outputs: dict, refusal: str | None,
+                        error: str | None) -> dict:
+        return self.score(worlds.load_world(world_path), task.get("goal") or {},
+                          constraints=task.get("constraints"), feasible=task.get("feasible", True) is not False,
+                          graph=outputs.get("graph"), schedule=outputs.get("schedule"),
+                          simulation=outputs.get("simulation"), refusal=refusal, error=error)
+
+    def understand(self, task: dict, outputs: dict, status: str, error_kind: str | None) -> dict | None:
+        return scoring.understanding(task, outputs, status, error_kind)
