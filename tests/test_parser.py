@@ -408,3 +408,43 @@ def test_random_orders_rendered_to_english_parse_back(world: dict, parts: list, 
     parsed = parse(command, world)
     validate_order(parsed)
     assert _outcome(parsed, world) == _outcome(expected, world), command
+
+
+# -- issue 12, held-out causes: a world of multi-word, coded and hyphenated names -----------------
+# Robot names that start like English verbs (stacker1 / "stack", loader / "load").
+GARAGE = {
+    "shelves": {"tool_crib": {"capacity": 12}, "wash-bay": {"capacity": 10}, "north yard": {"capacity": 30},
+                "pit2": {"capacity": 8}},
+    "products": {"brake_pad": {}, "oil-filter": {}, "battery": {}, "kc-90": {}},
+    "stock": {"tool_crib": {"brake_pad": 4, "oil-filter": 2, "battery": 1, "kc-90": 1},
+              "wash-bay": {"brake_pad": 1, "battery": 3},
+              "north yard": {"brake_pad": 6, "oil-filter": 5, "battery": 4, "kc-90": 2},
+              "pit2": {"oil-filter": 1}},
+    "robots": {"stacker1": {"kind": "forklift", "tags": ["day"], "skills": {"carry": 3}},
+               "stacker2": {"kind": "forklift", "tags": ["night"], "skills": {"carry": 3}},
+               "loader": {"kind": "tugger", "tags": ["night"], "skills": {"carry": 2}},
+               "pip": {"kind": "amr", "tags": ["day"], "skills": {"carry": 1}}},
+}
+
+
+@pytest.mark.parametrize("command,goal", [
+    # the last word of a multi-word name inflected, the name written apart, joined or hyphenated
+    ("Move 2 brake pads from the north yard to the tool crib.",
+     {"north yard": {"brake_pad": 4}, "tool_crib": {"brake_pad": 6}}),
+    ("The wash bay should hold 2 oil filters.", {"wash-bay": {"oil-filter": 2}}),
+    ("Put 3 kc-90s on the wash-bay.", {"wash-bay": {"kc-90": 3}}),
+    ("Pit 2 should end up with 2 batteries.", {"pit2": {"battery": 2}}),
+    ("The tool_crib needs 1 more brake-pad.", {"tool_crib": {"brake_pad": 5}}),
+    ("Take one oil_filters off north-yard.", {"north yard": {"oil-filter": 4}}),
+])
+def test_names_are_read_in_their_inflections_and_spellings(command: str, goal: dict) -> None:
+    assert got(command, GARAGE) == (goal, [])
+
+
+def test_an_english_verb_is_never_taken_for_a_misspelt_robot_name() -> None:
+    # "Stack two" is 2 edits from a robot stem (stacker) and "Load" from loader: both are verbs
+    assert got("Stack two batteries on pit 2.", GARAGE) == ({"pit2": {"battery": 2}}, [])
+    assert got("Load 1 brake pad onto the wash bay.", GARAGE) == ({"wash-bay": {"brake_pad": 2}}, [])
+    # a real misspelling of a name is still forgiven, and a name is still read exactly
+    assert got("Stacker 2 must not carry batteries.", GARAGE)[1] == [
+        {"never": ["stacker2"], "product": "battery"}]

@@ -108,8 +108,9 @@ class Lexicon:
 
     def __init__(self, world: dict, keywords: dict[str, str]):
         self.world = world
-        self.index = NameIndex(world)
         self.keywords = keywords  # keyword text -> terminal name
+        # the grammar's own words are English, never a misspelt name ("haul" is no hauler1)
+        self.index = NameIndex(world, reserved={k for k in keywords if k.isalpha()} | FILLERS)
         robots = world.get("robots") or {}
         self.kinds = {str(r.get("kind")).lower() for r in robots.values()
                       if isinstance(r, dict) and r.get("kind")}

@@ -149,18 +149,41 @@ def _quote(text: str) -> str:
     return f"'{text}'"
 
 
+def plural_forms(norm: str) -> list[str]:
+    """The plural spellings of a normalised name: its last word inflected ("labelroll" ->
+    "labelrolls", "sku220" -> "sku220s", "battery" -> "batteries", "box" -> "boxes"). People
+    pluralise multi-word and coded names as they do any noun, and write them apart, joined,
+    hyphenated or underscored; :func:`normalize` already makes those four spellings one."""
+    out = [norm + "s", norm + "es"]
+    if len(norm) > 2 and norm.endswith("y") and norm[-2] not in "aeiou":
+        out.append(norm[:-1] + "ies")
+    return out
+
+
 class NameIndex:
     """The world's names by kind, and the rules for deciding which one a word means."""
 
-    def __init__(self, world: dict):
+    def __init__(self, world: dict, reserved: set[str] | frozenset[str] = frozenset()):
         self.names: list[_Name] = []
         self.by_kind: dict[str, list[str]] = {}
+        # words the command grammar reads as English ("haul", "stick", "knock"): a misspelling is
+        # never guessed from one of them, or "Haul three" would become a robot hauler3
+        self.reserved = set(reserved)
         for kind in KINDS:
             found = list((world.get(WORLD_KEYS[kind]) or {}).keys())
             self.by_kind[kind] = [str(n) for n in found]
             for n in found:
                 alpha, digits = split_digits(normalize(str(n)))
                 self.names.append(_Name(str(n), kind, alpha, digits))
+        # every exact spelling of a name, and its plurals where no other name claims them
+        self.forms: dict[str, _Name | None] = {n.alpha + n.digits: n for n in self.names}
+        for n in self.names:
+            for form in plural_forms(n.alpha + n.digits):
+                if form in self.forms and self.forms[form] is not n:
+                    if form not in {x.alpha + x.digits for x in self.names}:
+                        self.forms[form] = None  # two names share this plural: neither gets it
+                    continue
+                self.forms[form] = n
         # Stems the world's own names share ("bin" of bin7) forgive misspellings; the English
         # kind words must be spelled right, or "gets" would pass for a misspelt "agents".
         # A stem must be a real word: "a" of A1 or "r" of r7 would turn the article "a" or a
@@ -230,7 +253,7 @@ class NameIndex:
             for v in _variants(alpha):
                 if v in KIND_WORDS[kind] or v in self.stems[kind]:
                     hits.add(kind)
-                elif alpha not in STOPWORDS and any(
+                elif alpha not in STOPWORDS and alpha not in self.reserved and any(
                         v[:1] == stem[:1] and distance(v, stem) <= tolerance(len(stem))
                         for stem in self.stems[kind]):
                     hits.add(kind)
@@ -246,7 +269,7 @@ class NameIndex:
                 return Tok("name", text, exact[0].name, exact[0].kind)
         if not digits and any(v in KIND_WORDS[k] for k in KINDS for v in _variants(alpha)):
             fuzzy = False  # "racks" is the kind word, not a misspelt rack_a (nor a tie of all racks)
-        if fuzzy and alpha not in STOPWORDS and alpha:
+        if fuzzy and alpha not in STOPWORDS and alpha not in self.reserved and alpha:
             scored = []
             for n in self.names:
                 if n.digits != digits:
@@ -323,6 +346,21 @@ class NameIndex:
             j -= 1
         return out, j
 
+    def written_apart(self, raw: list[str], i: int) -> tuple[Tok, int] | None:
+        """A name of two or three words starting at ``raw[i]``, in any of its spellings and
+        plurals ("cable spools" for cable_spool, "paint shop" for paint-shop); the longest wins.
+        Words that are numbers after the first are left to the count reader."""
+        for size in (3, 2):
+            part = raw[i:i + size]
+            if len(part) < size or not all(_TOKEN.fullmatch(w) and w[0].isalnum() for w in part):
+                continue
+            if any(word_value(w.lower()) is not None for w in part[1:]):
+                continue
+            hit = self.forms.get(normalize("".join(part)))
+            if hit is not None:
+                return Tok("name", " ".join(part), hit.name, hit.kind), i + size
+        return None
+
     def at(self, raw: list[str], i: int) -> tuple[Tok, int] | None:
         """The name or kind word starting at ``raw[i]``, longest reading first."""
         low = raw[i].lower()
@@ -348,14 +386,16 @@ class NameIndex:
                 found = self.lookup(alpha, str(n), text)
                 if found is not None:
                     return found, i + 2
-            if not n:  # a name written apart ("cold store", "rack a"): exact spelling only
-                both = normalize(low + nxt)
-                hit = [x for x in self.names if x.alpha + x.digits == both]
-                if hit:
-                    return Tok("name", text, hit[0].name, hit[0].kind), i + 2
+            if not n:  # a name written apart ("cold store", "rack a", "label rolls"): no typos
+                found = self.written_apart(raw, i)
+                if found is not None:
+                    return found
         norm = normalize(low)
         if not norm or norm.isdigit() or low in NUMBER_WORDS:
             return None
+        whole = self.forms.get(norm)
+        if whole is not None and not (norm != whole.alpha + whole.digits and low in STOPWORDS):
+            return Tok("name", raw[i], whole.name, whole.kind), i + 1  # "sku-220s", "label_rolls"
         alpha, digits = split_digits(norm)
         found = self.lookup(alpha, digits, raw[i])
         return (found, i + 1) if found is not None else None
