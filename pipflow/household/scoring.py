@@ -103,7 +103,7 @@ def reference_actions(world: dict, goal: dict) -> int:
 def score_run(world: dict, goal: dict, *, feasible: bool = True, graph: dict | None = None,
               schedule: dict | None = None, simulation: dict | None = None, refusal: str | None = None,
               error: str | None = None) -> dict:
-    """Score one household run (``world``: the team's world). Keys as :func:`pipflow.warehouse.scoring.score_run`.
+    """Score one household run (``world``: the team's world). Keys as the outputs of step ``metrics.score``.
 
     A task marked ``feasible: false`` succeeds exactly when the run was refused with a reason and
     nothing was planned or executed (a refusal is the right answer: robots must not move)."""

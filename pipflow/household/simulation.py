@@ -13,7 +13,7 @@ that moment:
 
 Effects land when the subtask ends (a carried object is in nobody's place in between), ends
 before starts at equal times. A refused subtask changes nothing and counts against Exe. Travel
-is measured along the robots' legs (:class:`pipflow.warehouse.simulation.Trajectory`, which also reports
+is measured along the robots' legs (:class:`pipflow.trajectory.Trajectory`, which also reports
 legs that do not connect). Pictures of the scene at the start and the end come from a headless
 pybullet client (furniture boxes, objects on their places, robots), only when asked.
 """
@@ -137,7 +137,7 @@ def simulate(world: dict, schedule: dict, graph: dict | None, goal: dict | None 
     Returns ``{final_state, executed, failed, failures, exe, travel, tc_max, tc_avg, goal_met,
     gcr, conditions, jumps, makespan, pictures}``."""
     from pipflow.household.scoring import check_conditions
-    from pipflow.warehouse.simulation import Trajectory
+    from pipflow.trajectory import Trajectory
 
     log = log or (lambda m: None)
     nodes = {n["id"]: n for n in (graph or {}).get("nodes", [])}
@@ -206,7 +206,8 @@ class _Scene:
     """Headless pybullet pictures: furniture boxes, objects on their places, robots at their starts."""
 
     def __init__(self, world: dict):
-        from pipflow.warehouse.simulation import ROBOT_COLOURS, connect_direct
+        from pipflow.bullet import connect_direct
+        from pipflow.trajectory import ROBOT_COLOURS
 
         self.p, self.cid = connect_direct()
         p, self.world = self.p, world
@@ -225,19 +226,19 @@ class _Scene:
             p.createMultiBody(0, -1, vis, basePosition=(r["start"][0], r["start"][1], 0.25), physicsClientId=self.cid)
 
     def _box(self, half, colour: str, pos) -> int:
-        from pipflow.warehouse.simulation import colour_rgba
+        from pipflow.bullet import colour_rgba
 
         vis = self.p.createVisualShape(self.p.GEOM_BOX, halfExtents=half, rgbaColor=colour_rgba(colour), physicsClientId=self.cid)
         return self.p.createMultiBody(0, -1, vis, basePosition=pos, physicsClientId=self.cid)
 
     def _sphere(self, radius: float, colour: str) -> int:
-        from pipflow.warehouse.simulation import colour_rgba
+        from pipflow.bullet import colour_rgba
 
         vis = self.p.createVisualShape(self.p.GEOM_SPHERE, radius=radius, rgbaColor=colour_rgba(colour), physicsClientId=self.cid)
         return self.p.createMultiBody(0, -1, vis, basePosition=(0, 0, -5), physicsClientId=self.cid)
 
     def snapshot(self, path: Path, home: Home, width: int = 640, height: int = 480) -> Path:
-        from pipflow.warehouse.simulation import render_floor
+        from pipflow.bullet import render_floor
 
         p, c = self.p, self.cid
         slots: dict[str, int] = {}

@@ -1,6 +1,6 @@
 """Household world files: load, validate with located errors, normalize, pick a robot team.
 
-Same two passes as :mod:`pipflow.warehouse.world` (and its helpers: YAML with locations, JSON-Schema
+Same two passes as the warehouse world (and the neutral helpers of :mod:`pipflow.worldfile`, :mod:`pipflow.floorplan`: YAML with locations, JSON-Schema
 diagnostics, "did you mean"), because a user fixing a file wants every problem at once with its
 line and column:
 
@@ -24,9 +24,9 @@ from pathlib import Path
 from typing import Any
 
 from pipflow.errors import Diagnostic, InputError, Location, WorldError
+from pipflow.floorplan import inside_footprint, layout_diagnostics, on_floor
 from pipflow.suggest import did_you_mean
-from pipflow.warehouse.world import checked_yaml, inside_footprint, layout_diagnostics, on_floor
-from pipflow.worldfile import Locate, is_point, read_world_file
+from pipflow.worldfile import Locate, checked_yaml, is_point, read_world_file
 
 DOMAIN = "household"
 #: words of domains/household.pddl that may not name an object (UP: "name already defined")

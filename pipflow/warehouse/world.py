@@ -17,118 +17,20 @@ themselves, and gold goals of feasible tasks that the world cannot meet.
 """
 from __future__ import annotations
 
-import json
-from functools import lru_cache
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any
 
 from pipflow.errors import Diagnostic, Location, WorldError
+from pipflow.floorplan import inside_footprint, layout_diagnostics, on_floor
 from pipflow.goalcounts import is_bound, value_problems
-from pipflow.resources import data_file
 from pipflow.suggest import did_you_mean
-from pipflow.worldfile import Locate, is_point, parse_mapping, read_world_file
-
-
-@lru_cache(maxsize=None)
-def load_schema(name: str) -> dict:
-    """A JSON Schema of ``schemas/`` by file name (cached: schemas do not change in a run)."""
-    return json.loads(data_file(f"schemas/{name}").read_text())
-
-
-# ---------------------------------------------------------------------------------------------
-# schema pass
-# ---------------------------------------------------------------------------------------------
-def schema_diagnostics(data: Any, schema: dict, locate: Locate) -> list[Diagnostic]:
-    """Every JSON-Schema violation of ``data``, located; unknown keys point at the key itself."""
-    import jsonschema
-
-    validator = jsonschema.Draft202012Validator(schema)
-    out: list[Diagnostic] = []
-    for err in sorted(validator.iter_errors(data), key=lambda e: list(map(str, e.absolute_path))):
-        out += _error_diagnostics(err, locate)
-    return out
-
-
-def _error_diagnostics(err: Any, locate: Locate) -> list[Diagnostic]:
-    """One schema error as diagnostics. For a ``oneOf``/``anyOf`` (a value of several allowed
-    forms, such as a goal count or bound) the errors of the forms whose type does fit are the ones
-    a user needs ("-1 is less than the minimum of 0", "unknown key 'at_leest'"), not "is not valid
-    under any of the given schemas"."""
-    path = tuple(err.absolute_path)
-    where = "/".join(map(str, path)) or "top level"
-    if err.validator in ("oneOf", "anyOf") and err.context:
-        fitting = [c for c in err.context if c.validator != "type"]
-        if fitting:
-            return [d for c in fitting for d in _error_diagnostics(c, locate)]
-        what = err.schema.get("description")
-        return [Diagnostic(locate(path), f"{where}: {err.instance!r} is not valid"
-                           + (f": {what}" if what else f" ({'; '.join(c.message for c in err.context)})"))]
-    if err.validator == "additionalProperties" and isinstance(err.instance, dict):
-        known = list((err.schema.get("properties") or {}).keys())
-        return [Diagnostic(locate(path + (extra,), key=True),
-                           f"unknown key {extra!r} in {where}{did_you_mean(extra, known)}"
-                           + (f"; allowed: {', '.join(known)}" if known else ""))
-                for extra in err.instance if extra not in known]
-    if err.validator == "propertyNames":
-        bad = err.instance
-        return [Diagnostic(locate(path + (bad,), key=True),
-                           f"invalid name {bad!r}: names start with a letter and use letters, "
-                           "digits, '_' or '-' (they become PDDL object names)")]
-    return [Diagnostic(locate(path), f"{where}: {err.message}")]
-
-
-# ---------------------------------------------------------------------------------------------
-# geometry
-# ---------------------------------------------------------------------------------------------
-def footprint(shelf: dict) -> tuple[float, float, float, float]:
-    """(x0, y0, x1, y1) of a shelf's footprint."""
-    return shelf["x"], shelf["y"], shelf["x"] + shelf["width"], shelf["y"] + shelf["depth"]
-
-
-def inside_footprint(point: list[float], shelf: dict) -> bool:
-    """True when ``point`` lies in the shelf's footprint, border included (a robot touching a
-    shelf collides with it)."""
-    x0, y0, x1, y1 = footprint(shelf)
-    return x0 <= point[0] <= x1 and y0 <= point[1] <= y1
-
-
-def on_floor(point: list[float], floor: dict) -> bool:
-    return 0 <= point[0] <= floor["width"] and 0 <= point[1] <= floor["height"]
+from pipflow.worldfile import (Locate, checked_yaml, duplicate_diagnostics, is_point, load_schema, parse_mapping,
+                               read_world_file, schema_diagnostics)
 
 
 # ---------------------------------------------------------------------------------------------
 # meaning pass
 # ---------------------------------------------------------------------------------------------
-def layout_diagnostics(geo: dict, floor: dict | None, locate: Locate, section: str, kind: str) -> list[Diagnostic]:
-    """Footprints on the floor, access points on the floor and outside every footprint, no two
-    footprints overlapping: the geometry checks of every world file (shelves, household places)."""
-    out: list[Diagnostic] = []
-    for name, item in geo.items():
-        x0, y0, x1, y1 = footprint(item)
-        if floor and not (x0 >= 0 and y0 >= 0 and x1 <= floor["width"] and y1 <= floor["height"]):
-            out.append(Diagnostic(locate((section, name), key=True),
-                                  f"{kind} {name!r} footprint ({x0}, {y0})-({x1}, {y1}) is not on the "
-                                  f"floor (0, 0)-({floor['width']}, {floor['height']})"))
-        access = item.get("access")
-        if is_point(access):
-            if floor and not on_floor(access, floor):
-                out.append(Diagnostic(locate((section, name, "access")),
-                                      f"access point {access} of {kind} {name!r} is off the floor"))
-            for other, o in geo.items():
-                if inside_footprint(access, o):
-                    out.append(Diagnostic(locate((section, name, "access")),
-                                          f"access point {access} of {kind} {name!r} lies inside the "
-                                          f"footprint of {kind} {other!r}; robots must be able to stand there"))
-    names = list(geo)
-    for i, a in enumerate(names):
-        for b in names[i + 1:]:
-            ax0, ay0, ax1, ay1 = footprint(geo[a])
-            bx0, by0, bx1, by1 = footprint(geo[b])
-            if ax0 < bx1 and bx0 < ax1 and ay0 < by1 and by0 < ay1:
-                out.append(Diagnostic(locate((section, b), key=True), f"{kind} {b!r} overlaps {kind} {a!r}"))
-    return out
-
-
 def case_clash_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
     """PDDL reads names in lower case, so two names that differ only in case would be one
     object in every problem: name them apart."""
@@ -262,29 +164,6 @@ def normalize_world(data: dict, path: Path) -> dict:
     }
 
 
-def _duplicate_diagnostics(locate: Any) -> list[Diagnostic]:
-    return [Diagnostic(loc, f"duplicate key {path[-1]!r} (YAML keeps only the last one)")
-            for path, loc in getattr(locate, "duplicates", [])]
-
-
-def checked_yaml(text: str, file: str, kind: str, schema: str,
-                 semantic: Callable[[dict, Locate], list[Diagnostic]],
-                 prepare: Callable[[dict], None] | None = None) -> dict:
-    """Parse a YAML file's ``text`` and check it against a schema of ``schemas/`` and the
-    ``semantic`` rules; raise :class:`WorldError` with every problem at once, in file order.
-    World files of every domain go through here (``prepare`` may fix the parsed data first)."""
-    data, locate = parse_mapping(text, file, kind)
-    if prepare is not None:
-        prepare(data)
-    diags = _duplicate_diagnostics(locate)
-    diags += schema_diagnostics(data, load_schema(schema), locate)
-    diags += semantic(data, locate)
-    diags.sort(key=lambda d: (d.location.line, d.location.column) if d.location else (0, 0))
-    if diags:
-        raise WorldError(diags, f"invalid {kind} file {file} ({len(diags)} problem(s))")
-    return data
-
-
 def world_from_text(text: str, file: str) -> dict:
     """Validate and normalize world YAML ``text`` (``file`` names it in messages)."""
     data = checked_yaml(text, file, "world", "world.schema.json", semantic_diagnostics)
@@ -381,7 +260,7 @@ def load_tasks(path: str | Path) -> dict:
     p, text = read_world_file(path)
     file = str(p)
     data, locate = parse_mapping(text, file, "task")
-    diags = _duplicate_diagnostics(locate) + schema_diagnostics(data, load_schema("tasks.schema.json"), locate)
+    diags = duplicate_diagnostics(locate) + schema_diagnostics(data, load_schema("tasks.schema.json"), locate)
     if diags:
         raise WorldError(diags, f"invalid task file {file} ({len(diags)} problem(s))")
     world_path = (p.parent / data["world"]).resolve()

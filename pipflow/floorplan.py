@@ -1,0 +1,55 @@
+"""Floor plans: footprints on a floor and the access points robots stand at.
+
+A neutral module below every domain: warehouse shelves and household places are both a footprint
+(``x``, ``y``, ``width``, ``depth``) with an ``access`` point, and both world checkers use these
+geometry checks rather than one borrowing them from the other."""
+from __future__ import annotations
+
+from pipflow.errors import Diagnostic
+from pipflow.worldfile import Locate, is_point
+
+
+def footprint(shelf: dict) -> tuple[float, float, float, float]:
+    """(x0, y0, x1, y1) of a shelf's footprint."""
+    return shelf["x"], shelf["y"], shelf["x"] + shelf["width"], shelf["y"] + shelf["depth"]
+
+
+def inside_footprint(point: list[float], shelf: dict) -> bool:
+    """True when ``point`` lies in the shelf's footprint, border included (a robot touching a
+    shelf collides with it)."""
+    x0, y0, x1, y1 = footprint(shelf)
+    return x0 <= point[0] <= x1 and y0 <= point[1] <= y1
+
+
+def on_floor(point: list[float], floor: dict) -> bool:
+    return 0 <= point[0] <= floor["width"] and 0 <= point[1] <= floor["height"]
+
+
+def layout_diagnostics(geo: dict, floor: dict | None, locate: Locate, section: str, kind: str) -> list[Diagnostic]:
+    """Footprints on the floor, access points on the floor and outside every footprint, no two
+    footprints overlapping: the geometry checks of every world file (shelves, household places)."""
+    out: list[Diagnostic] = []
+    for name, item in geo.items():
+        x0, y0, x1, y1 = footprint(item)
+        if floor and not (x0 >= 0 and y0 >= 0 and x1 <= floor["width"] and y1 <= floor["height"]):
+            out.append(Diagnostic(locate((section, name), key=True),
+                                  f"{kind} {name!r} footprint ({x0}, {y0})-({x1}, {y1}) is not on the "
+                                  f"floor (0, 0)-({floor['width']}, {floor['height']})"))
+        access = item.get("access")
+        if is_point(access):
+            if floor and not on_floor(access, floor):
+                out.append(Diagnostic(locate((section, name, "access")),
+                                      f"access point {access} of {kind} {name!r} is off the floor"))
+            for other, o in geo.items():
+                if inside_footprint(access, o):
+                    out.append(Diagnostic(locate((section, name, "access")),
+                                          f"access point {access} of {kind} {name!r} lies inside the "
+                                          f"footprint of {kind} {other!r}; robots must be able to stand there"))
+    names = list(geo)
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            ax0, ay0, ax1, ay1 = footprint(geo[a])
+            bx0, by0, bx1, by1 = footprint(geo[b])
+            if ax0 < bx1 and bx0 < ax1 and ay0 < by1 and by0 < ay1:
+                out.append(Diagnostic(locate((section, b), key=True), f"{kind} {b!r} overlaps {kind} {a!r}"))
+    return out
