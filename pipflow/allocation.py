@@ -29,6 +29,7 @@ import itertools
 import math
 import time
 from dataclasses import dataclass, field
+from enum import Enum
 from typing import Any, Iterable
 
 import numpy as np
@@ -103,8 +104,46 @@ def _add_rows(m, x: dict[int, Any], Q: np.ndarray, Y: np.ndarray, lin: list[Line
             m.addCons(expr == L.rhs)
 
 
+class IPStatus(str, Enum):
+    """How SCIP ended one model: its own words (pyscipopt's ``Model.getStatus()``). A ``str`` so
+    that the allocation's JSON stats and comparisons with the plain words keep working."""
+
+    OPTIMAL = "optimal"
+    INFEASIBLE = "infeasible"
+    UNBOUNDED = "unbounded"
+    INFEASIBLE_OR_UNBOUNDED = "inforunbd"
+    TIME_LIMIT = "timelimit"
+    GAP_LIMIT = "gaplimit"
+    SOLUTION_LIMIT = "sollimit"
+    BEST_SOLUTION_LIMIT = "bestsollimit"
+    NODE_LIMIT = "nodelimit"
+    TOTAL_NODE_LIMIT = "totalnodelimit"
+    STALL_NODE_LIMIT = "stallnodelimit"
+    MEMORY_LIMIT = "memlimit"
+    RESTART_LIMIT = "restartlimit"
+    PRIMAL_LIMIT = "primallimit"
+    DUAL_LIMIT = "duallimit"
+    USER_INTERRUPT = "userinterrupt"
+    UNKNOWN = "unknown"
+
+    def __str__(self) -> str:  # the word itself in messages and f-strings
+        return self.value
+
+    @classmethod
+    def _missing_(cls, value: object) -> "IPStatus":
+        return cls.UNKNOWN  # a word of a newer SCIP: reported as unknown, never a crash
+
+    @classmethod
+    def of(cls, model: Any) -> "IPStatus":
+        return cls(model.getStatus())
+
+
+#: outcomes whose best solution is used: the optimum, or the best found when a limit stopped SCIP
+USABLE_OUTCOMES = frozenset({IPStatus.OPTIMAL, IPStatus.TIME_LIMIT, IPStatus.GAP_LIMIT, IPStatus.SOLUTION_LIMIT})
+
+
 def _solved(m) -> bool:
-    return m.getStatus() in ("optimal", "timelimit", "gaplimit", "sollimit") and m.getNSols() > 0
+    return IPStatus.of(m) in USABLE_OUTCOMES and m.getNSols() > 0
 
 
 def _ip_feasible(Q, Y, idx: np.ndarray, lin: list[Linear]) -> bool:
@@ -193,7 +232,7 @@ def solve_naive(Q, Y, c, allowed, lin: list[Linear] = (), time_limit: float | No
     m.setObjective(z, "minimize")
     m.optimize()
     if not _solved(m):
-        return Solution([], math.inf, math.inf, {"status": m.getStatus()})
+        return Solution([], math.inf, math.inf, {"status": IPStatus.of(m)})
     zstar = m.getObjVal()
     t1 = time.perf_counter()
     m.freeTransform()
@@ -604,8 +643,8 @@ class AllocationWalk:
                     m.addCons(quicksum(mine) <= 1)
             m.setObjective(z, "minimize")
             m.optimize()
-            status = m.getStatus()
-            if status == "infeasible" and len(sub) > 1:
+            status = IPStatus.of(m)
+            if status is IPStatus.INFEASIBLE and len(sub) > 1:
                 sub = sub[:-1]  # the last ready subtask waits for the next wave
                 continue
             if m.getNSols() == 0:
@@ -626,7 +665,7 @@ class AllocationWalk:
             m.optimize()
             if m.getNSols() > 0:
                 sol = {k: m.getSolVal(m.getBestSol(), v) for k, v in x.items()}
-                info["stage2_status"] = m.getStatus()
+                info["stage2_status"] = IPStatus.of(m)
             else:
                 sol = sol1
             self.solve_s.append(time.perf_counter() - t0)

@@ -238,3 +238,27 @@ def test_a_robot_that_adds_no_skill_is_not_taken_even_when_it_costs_nothing():
     allowed = np.ones(3, dtype=bool)
     for method in ("fast", "naive"):
         assert solve_lexicographic(Q, Y, c, allowed, method=method).robots == [1], method
+
+
+def test_scip_outcomes_are_an_enum_that_reads_as_scips_word():
+    import json
+
+    from pipflow.allocation import USABLE_OUTCOMES, IPStatus
+
+    assert IPStatus("timelimit") is IPStatus.TIME_LIMIT and f"{IPStatus.INFEASIBLE}" == "infeasible"
+    assert IPStatus("a word of a newer SCIP") is IPStatus.UNKNOWN
+    assert IPStatus.OPTIMAL in USABLE_OUTCOMES and IPStatus.INFEASIBLE not in USABLE_OUTCOMES
+    # an infeasible model answers with the enum, and it is the word in JSON
+    Q, Y, c = np.array([[1.0]]), np.array([2.0]), np.array([1.0])
+    sol = solve_naive(Q, Y, c, np.array([True]))
+    assert sol.robots == [] and sol.stats["status"] is IPStatus.INFEASIBLE
+    assert json.loads(json.dumps(sol.stats)) == {"status": "infeasible"}
+
+
+def test_frontier_waves_record_scips_outcome():
+    from pipflow.allocation import IPStatus
+
+    g = graph(node("s1", "shelfA", "shelfC", "red", 2), node("s2", "shelfB", "shelfD", "blue", 1, index=1))
+    waves = allocate(g, WORLD, mode="frontier", time_limit=5.0)["stats"]["waves"]
+    assert waves and all(isinstance(w["status"], IPStatus) for w in waves)
+    assert waves[0]["status"] is IPStatus.OPTIMAL and waves[0]["allocated"] == ["s1", "s2"]
