@@ -294,18 +294,46 @@ def simulate(world: dict, schedule: dict, graph: dict | None = None, goal: dict 
     Returns ``{final_stock, executed, failed, failures, exe, travel, tc_max, tc_avg, tc_avg_moved, goal_met,
     gcr, peak_load, stray_units, jumps, makespan, trajectories, events, pictures}``; ``jumps``
     lists legs that start away from where the robot stood (a broken schedule: the body jumps); pictures (file
-    names in ``out_dir``) only when ``out_dir`` is given."""
+    names in ``out_dir``) only when ``out_dir`` is given.
+
+    Three phases: set up (the moves, each robot's trajectory, the load/unload instants and the
+    sample times), run the schedule in a scene (:class:`Playback`), measure (the result) and,
+    with ``out_dir``, draw."""
     log = log or (lambda m: None)
     moves = moves_from(schedule, graph)
+    traj = _trajectories(world, schedule)
+    events = _event_times(world, moves, traj)
+    makespan, sample_times = _sample_times(schedule, traj, events, step)
+    out = Path(out_dir) if out_dir else None
+    snap_plan = _snapshot_times(events, makespan) if (snapshots and out) else {}
+    scene = Scene(world)
+    try:
+        run = Playback(scene, world, moves, traj, events, log)
+        run.play(sample_times, snap_plan, out)
+        final_stock, stray = scene.count_stock()
+    finally:
+        scene.close()
+    result = _measure(run, traj, final_stock, stray, goal, makespan, planned=len(moves))
+    if out is not None:
+        _draw(world, result, run.travel, out, makespan, animation, log)
+    return result
+
+
+# ---------------------------------------------------------------------------- set up
+def _trajectories(world: dict, schedule: dict) -> dict[str, Trajectory]:
+    """Each robot's motion as the schedule's legs fix it (a robot without legs stands still)."""
     robots = world.get("robots", {})
     legs_by_robot: dict[str, list[dict]] = {r: [] for r in robots}
     for r, info in (schedule.get("robots") or {}).items():
         legs_by_robot.setdefault(r, []).extend(info.get("legs", []))
-    traj = {r: Trajectory(robots.get(r, {}).get("start", (0, 0)), legs) for r, legs in legs_by_robot.items()}
+    return {r: Trajectory(robots.get(r, {}).get("start", (0, 0)), legs) for r, legs in legs_by_robot.items()}
 
-    # event times from the legs (robots' motion is fixed by the schedule)
-    events: list[tuple[float, int, int, str]] = []  # (time, 0=unload/1=load, order, move id)
-    times_of: dict[str, tuple[float, float]] = {}
+
+def _event_times(world: dict, moves: list[Move], traj: dict[str, Trajectory]) -> list[tuple[float, int, int, str]]:
+    """``(time, 0=unload/1=load, order, move id)`` for every move, sorted: a load when the
+    coalition is at the source (not before the subtask's start), an unload at the last arrival at
+    the target (else the subtask's end). Unloads sort before loads at the same instant."""
+    events: list[tuple[float, int, int, str]] = []
     for order, m in enumerate(moves):
         src, tgt = _access(world, m.route[0] if m.route else m.source), _access(world, m.route[-1] if m.route else m.target)
         arr_src = [traj[r].arrival(m.id, src) for r in m.robots if r in traj and src] if src else []
@@ -313,11 +341,16 @@ def simulate(world: dict, schedule: dict, graph: dict | None = None, goal: dict 
         arr_tgt = [traj[r].arrival(m.id, tgt, last=True) for r in m.robots if r in traj] if tgt else []
         arr_tgt = [a for a in arr_tgt if a is not None]
         t_unload = max([t_load] + (arr_tgt if arr_tgt else [m.end]))
-        times_of[m.id] = (t_load, t_unload)
         events.append((t_load, 1, order, m.id))
         events.append((t_unload, 0, order, m.id))
     events.sort()
+    return events
 
+
+def _sample_times(schedule: dict, traj: dict[str, Trajectory], events: list, step: float) -> tuple[float, list[float]]:
+    """The makespan, and the instants at which the scene is updated: every ``step`` metres of
+    the fastest robot (at most 20 000 of them), every event and every path vertex (so corners
+    are not cut and travel is measured exactly)."""
     makespan = max([float(schedule.get("makespan", 0.0))] + [e[0] for e in events]
                    + [s[1] for t in traj.values() for s in t.segments])
     vmax = max([t.max_speed() for t in traj.values()] + [1e-9])
@@ -328,107 +361,133 @@ def simulate(world: dict, schedule: dict, graph: dict | None = None, goal: dict 
     sample_times = {i * dt for i in range(n_grid + 1)} | {e[0] for e in events} | {makespan}
     for t in traj.values():
         sample_times |= set(t.vertex_times())
-    sample_times = sorted(x for x in sample_times if 0 <= x <= makespan + 1e-9)
+    return makespan, sorted(x for x in sample_times if 0 <= x <= makespan + 1e-9)
 
-    scene = Scene(world)
-    by_id = {m.id: m for m in moves}
-    pictures: list[str] = []
-    out = Path(out_dir) if out_dir else None
-    snap_plan = _snapshot_times(events, makespan) if (snapshots and out) else {}
-    travel = {r: 0.0 for r in traj}
-    last_xy = {r: scene.robot_xy(r) for r in traj if r in scene.robot_body}
-    paths = {r: [[0.0, *last_xy[r]]] for r in last_xy}
-    peak: dict[str, int] = {}
-    stock0, _ = scene.count_stock()
-    for shelf, items in stock0.items():
-        peak[shelf] = sum(items.values())
-    executed, failures, log_events = 0, [], []
-    done_load: dict[str, bool] = {}
-    ev_i = 0
-    # only robots with legs move, and each only from its first leg's start to its last leg's
-    # end: pybullet work follows the robots a run uses, not the size of the fleet
-    window = {r: (tr.segments[0][0], tr.segments[-1][1]) for r, tr in traj.items()
-              if tr.segments and r in scene.robot_body}
-    movers = sorted(window, key=lambda r: window[r][0])
-    settled: set[str] = set()
-    try:
+
+# ---------------------------------------------------------------------------- run the schedule
+class Playback:
+    """The schedule being played in a scene: where each robot is and how far it has driven (from
+    the bodies, not the plan), which loads happened, what failed, the peak load of each shelf,
+    the snapshots taken. One object so that the phases of a sample (move the robots, apply the
+    events that are due, take the snapshots that are due) share this state openly."""
+
+    def __init__(self, scene: Scene, world: dict, moves: list[Move], traj: dict[str, Trajectory],
+                 events: list[tuple[float, int, int, str]], log) -> None:
+        self.scene, self.world, self.traj, self.events, self.log = scene, world, traj, events, log
+        self.by_id = {m.id: m for m in moves}
+        self.travel = {r: 0.0 for r in traj}
+        self.last_xy = {r: scene.robot_xy(r) for r in traj if r in scene.robot_body}
+        self.paths = {r: [[0.0, *self.last_xy[r]]] for r in self.last_xy}
+        stock0, _ = scene.count_stock()
+        self.peak: dict[str, int] = {shelf: sum(items.values()) for shelf, items in stock0.items()}
+        self.executed = 0
+        self.failures: list[dict] = []
+        self.log_events: list[dict] = []
+        self.pictures: list[str] = []
+        self._loaded: dict[str, bool] = {}
+        self._next_event = 0
+        # only robots with legs move, and each only from its first leg's start to its last leg's
+        # end: pybullet work follows the robots a run uses, not the size of the fleet
+        self._window = {r: (tr.segments[0][0], tr.segments[-1][1]) for r, tr in traj.items()
+                        if tr.segments and r in scene.robot_body}
+        self._movers = sorted(self._window, key=lambda r: self._window[r][0])
+        self._settled: set[str] = set()
+
+    def play(self, sample_times: list[float], snap_plan: dict[str, float], out: Path | None) -> None:
         for t in sample_times:
-            for r in movers:
-                first, last = window[r]
-                if t < first - 1e-9:
-                    break  # sorted by start: nobody further on has started either
-                if r in settled:
-                    continue
-                if t >= last:
-                    settled.add(r)  # this sample puts it at its final place
-                tr = traj[r]
-                xy = tr.position(t)
-                scene.move_robot(r, xy)
-                now = scene.robot_xy(r)  # measured from the body, not from the plan
-                d = _dist(now, last_xy[r])
-                if d > 1e-9:
-                    travel[r] += d
-                    paths[r].append([t, now[0], now[1]])
-                    last_xy[r] = now
-            while ev_i < len(events) and events[ev_i][0] <= t + 1e-9:
-                et, kind, _, mid = events[ev_i]
-                ev_i += 1
-                m = by_id[mid]
-                if kind == 1:
-                    reasons = _check(scene, world, m)
-                    if reasons:
-                        failures.append({"subtask": m.id, "action": m.action, "args": m.args,
-                                         "time": round(et, 3), "reasons": reasons})
-                        log(f"{m.id} not executed at t={et:.1f}: {'; '.join(reasons)}")
-                        done_load[m.id] = False
-                    else:
-                        _load(scene, world, m)
-                        done_load[m.id] = True
-                        log_events.append({"time": round(et, 3), "subtask": m.id, "event": "load"})
-                elif done_load.get(m.id):
-                    _unload(scene, m)
-                    executed += 1
-                    log_events.append({"time": round(et, 3), "subtask": m.id, "event": "unload"})
-                    if m.target in scene.occupant:  # an unload changes its target's load only
-                        stock, _ = scene.count_stock(only=m.target)
-                        peak[m.target] = max(peak.get(m.target, 0), sum(stock[m.target].values()))
-            for name, ts in list(snap_plan.items()):
-                if t + 1e-9 >= ts:
-                    fname = f"snapshot_{len(pictures) + 1}_{name}.png"
-                    scene.snapshot(out / fname)
-                    pictures.append(fname)
-                    del snap_plan[name]
-        final_stock, stray = scene.count_stock()
-    finally:
-        scene.close()
+            self.move_robots(t)
+            self.apply_events(t)
+            self.take_snapshots(t, snap_plan, out)
 
+    def move_robots(self, t: float) -> None:
+        """Put every moving robot where its trajectory says at ``t``; add the metres its body went."""
+        for r in self._movers:
+            first, last = self._window[r]
+            if t < first - 1e-9:
+                break  # sorted by start: nobody further on has started either
+            if r in self._settled:
+                continue
+            if t >= last:
+                self._settled.add(r)  # this sample puts it at its final place
+            self.scene.move_robot(r, self.traj[r].position(t))
+            now = self.scene.robot_xy(r)  # measured from the body, not from the plan
+            d = _dist(now, self.last_xy[r])
+            if d > 1e-9:
+                self.travel[r] += d
+                self.paths[r].append([t, now[0], now[1]])
+                self.last_xy[r] = now
+
+    def apply_events(self, t: float) -> None:
+        """Every load and unload due by ``t``: a load's preconditions are checked in the scene
+        (a failed one is recorded with its reasons); an unload follows only a load that happened."""
+        scene, events = self.scene, self.events
+        while self._next_event < len(events) and events[self._next_event][0] <= t + 1e-9:
+            et, kind, _, mid = events[self._next_event]
+            self._next_event += 1
+            m = self.by_id[mid]
+            if kind == 1:
+                reasons = _check(scene, self.world, m)
+                if reasons:
+                    self.failures.append({"subtask": m.id, "action": m.action, "args": m.args,
+                                          "time": round(et, 3), "reasons": reasons})
+                    self.log(f"{m.id} not executed at t={et:.1f}: {'; '.join(reasons)}")
+                    self._loaded[m.id] = False
+                else:
+                    _load(scene, self.world, m)
+                    self._loaded[m.id] = True
+                    self.log_events.append({"time": round(et, 3), "subtask": m.id, "event": "load"})
+            elif self._loaded.get(m.id):
+                _unload(scene, m)
+                self.executed += 1
+                self.log_events.append({"time": round(et, 3), "subtask": m.id, "event": "unload"})
+                if m.target in scene.occupant:  # an unload changes its target's load only
+                    stock, _ = scene.count_stock(only=m.target)
+                    self.peak[m.target] = max(self.peak.get(m.target, 0), sum(stock[m.target].values()))
+
+    def take_snapshots(self, t: float, snap_plan: dict[str, float], out: Path | None) -> None:
+        """The snapshots due by ``t`` (each taken once; ``snap_plan`` loses it)."""
+        for name, ts in list(snap_plan.items()):
+            if t + 1e-9 >= ts:
+                fname = f"snapshot_{len(self.pictures) + 1}_{name}.png"
+                self.scene.snapshot(out / fname)
+                self.pictures.append(fname)
+                del snap_plan[name]
+
+
+# ---------------------------------------------------------------------------- measure
+def _measure(run: Playback, traj: dict[str, Trajectory], final_stock: dict, stray: int, goal: dict | None,
+             makespan: float, planned: int) -> dict:
+    """The simulation's outputs from what the playback saw and the final count of the shelves."""
     final_stock = {s: {p: n for p, n in items.items() if n} for s, items in final_stock.items()}
-    planned = len(moves)
     gm, gcr = goal_check(final_stock, goal or {})
-    tc = list(travel.values())
+    tc = list(run.travel.values())
     moved = [v for v in tc if v > 1e-9]
-    result = {
-        "final_stock": final_stock, "executed": executed, "failed": len(failures),
-        "failures": failures, "exe": executed / planned if planned else 1.0,
-        "travel": {r: round(v, 4) for r, v in travel.items()},
+    return {
+        "final_stock": final_stock, "executed": run.executed, "failed": len(run.failures),
+        "failures": run.failures, "exe": run.executed / planned if planned else 1.0,
+        "travel": {r: round(v, 4) for r, v in run.travel.items()},
         "tc_max": round(max(tc), 4) if tc else 0.0, "tc_avg": round(sum(tc) / len(tc), 4) if tc else 0.0,
         "tc_avg_moved": round(sum(moved) / len(moved), 4) if moved else 0.0,  # over robots that moved
-        "goal_met": gm, "gcr": gcr, "peak_load": peak, "stray_units": stray,
+        "goal_met": gm, "gcr": gcr, "peak_load": run.peak, "stray_units": stray,
         "jumps": {r: t.jumps for r, t in traj.items() if t.jumps},
-        "makespan": round(makespan, 4), "events": log_events,
-        "trajectories": {r: [[round(v, 4) for v in row] for row in pts] for r, pts in paths.items()},
-        "pictures": pictures,
+        "makespan": round(makespan, 4), "events": run.log_events,
+        "trajectories": {r: [[round(v, 4) for v in row] for row in pts] for r, pts in run.paths.items()},
+        "pictures": run.pictures,
     }
-    if out is not None:
-        pictures.append(pics.path_map(world, result["trajectories"], out / "paths.png", travel=travel).name)
-        if animation:
-            gif = pics.animation_gif(world, result["trajectories"], out / "animation.gif", makespan)
-            if gif is None:
-                log("animation skipped: Pillow is not installed (pip install pillow)")
-                result["animation_skipped"] = "Pillow is not installed"
-            else:
-                pictures.append(gif.name)
-    return result
+
+
+def _draw(world: dict, result: dict, travel: dict[str, float], out: Path, makespan: float, animation: bool,
+          log) -> None:
+    """The path map and, if asked, the animation; their names join ``result["pictures"]``."""
+    pictures = result["pictures"]
+    pictures.append(pics.path_map(world, result["trajectories"], out / "paths.png", travel=travel).name)
+    if animation:
+        gif = pics.animation_gif(world, result["trajectories"], out / "animation.gif", makespan)
+        if gif is None:
+            log("animation skipped: Pillow is not installed (pip install pillow)")
+            result["animation_skipped"] = "Pillow is not installed"
+        else:
+            pictures.append(gif.name)
 
 
 def _snapshot_times(events: list, makespan: float) -> dict[str, float]:
