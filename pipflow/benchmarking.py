@@ -348,7 +348,7 @@ def _execute(executor, todo: list[RunSpec], done: dict, out: Path, progress: boo
 
 
 def _results(rows: list[dict], tasks: list[dict], config: BenchConfig, wall: float, domain: str) -> dict:
-    from pipflow.warehouse.scoring import aggregate_task, summarize
+    from pipflow.benchstats import aggregate_task, summarize
 
     by_variant: dict[str, list[dict]] = {}
     for row in rows:
@@ -405,15 +405,16 @@ def _pct(value: float | None) -> str:
 
 
 def markdown_table(results: dict) -> str:
-    """The paper's table for the task file's domain: for the warehouse, per task SR (%),
-    understood (%), misread runs and travel cost max/avg (m); a domain may group it otherwise
-    (household: per category)."""
+    """The paper's table for the task file's domain: by default per task SR (%), understood
+    (%), misread runs and travel cost max/avg (m); a domain may group it otherwise (its
+    ``bench_table``, e.g. per category)."""
     from pipflow.benchdomains import domain_named
 
     config = results.get("config") or {}
     domain = domain_named(config.get("domain"))
-    if domain.table is not None:  # its layout is the domain's, understanding columns included
-        return domain.table(results, Path(config["tasks"]))
+    table = domain.bench_table(results, Path(config["tasks"]))
+    if table is not None:  # its layout is the domain's, understanding columns included
+        return table
     lines = []
     for variant in results["variants"]:
         if len(results["variants"]) > 1:

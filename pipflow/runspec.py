@@ -42,7 +42,7 @@ def run_one(spec: RunSpec) -> dict:
     row: dict[str, Any] = {"variant": spec.variant, "task": task["id"], "seed": spec.seed}
     started = time.perf_counter()
     inputs = {"command": task["command"], "world": spec.world_path, "seed": spec.seed,
-              **(task.get("inputs") or {}), **spec.inputs}  # per-task inputs: a household task's team
+              **(task.get("inputs") or {}), **spec.inputs}  # per-task inputs (a robot team, say)
     refusal = error = None
     outputs: dict = {}
     try:
@@ -64,13 +64,12 @@ def run_one(spec: RunSpec) -> dict:
     if task.get("expect") == "refuse" and error is not None and row.get("error_kind") == "TranslationError":
         refusal, error = error, None  # the right answer to an ambiguous command: refuse, quoting the words
     domain = domain_named(task.get("domain"))
-    row.update(domain.score(spec.world_path, task, outputs, refusal, error))
-    if domain.understand is not None:
-        read = outputs if row["status"] == "succeeded" or not row.get("run_dir") else \
-            recorded_outputs(Path(row["run_dir"]), ("goal", "constraints"))
-        row.update(domain.understand(task, read, row["status"], row.get("error_kind")))
-    else:
-        row.update({"understood": None, "misread": None, "understanding": "not measured for this domain"})
+    row.update(domain.score_bench_run(spec.world_path, task, outputs, refusal, error))
+    read = outputs if row["status"] == "succeeded" or not row.get("run_dir") else \
+        recorded_outputs(Path(row["run_dir"]), ("goal", "constraints"))
+    judged = domain.understand(task, read, row["status"], row.get("error_kind"))
+    row.update(judged if judged is not None else
+               {"understood": None, "misread": None, "understanding": "not measured for this domain"})
     row["seconds"] = round(time.perf_counter() - started, 3)
     return row
 

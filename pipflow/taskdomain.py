@@ -28,6 +28,7 @@ Contract of the dicts that cross the interface (unchanged from the steps' output
 """
 from __future__ import annotations
 
+import re
 from abc import ABC, abstractmethod
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -38,6 +39,13 @@ DEFAULT_DOMAIN = "warehouse"
 
 #: ``save(name, data)``: keep an artifact of the step (the engine's ``ctx.write_artifact``)
 Save = Callable[[str, Any], Any]
+
+
+def pddl_domain_name(domain_text: str, default: str) -> str:
+    """The name in ``(define (domain NAME)`` of a PDDL domain text, or ``default``: a problem must
+    name the domain it is read with."""
+    m = re.search(r"\(\s*domain\s+([^\s()]+)", domain_text or "", flags=re.IGNORECASE)
+    return m.group(1) if m else default
 
 
 @dataclass(frozen=True)
@@ -116,8 +124,9 @@ class TaskDomain(ABC):
         world)."""
 
     @abstractmethod
-    def write_problem(self, world: dict, goal: Any, domain_name: str) -> str:
-        """The PDDL problem for ``goal`` in ``world``, naming PDDL domain ``domain_name``."""
+    def write_problem(self, world: dict, goal: Any, domain_name: str, name: str = "task") -> str:
+        """The PDDL problem ``name`` for ``goal`` in ``world``, naming PDDL domain ``domain_name``
+        (take it from the domain file with :func:`pddl_domain_name`)."""
 
     def example_problem(self, world: dict, domain_text: str = "") -> str | None:
         """A problem for this world that shows a model the expected form (None: no example)."""

@@ -1,0 +1,157 @@
+"""The household as a pipflow task domain (the paper's AI2-THOR experiment on pipflow's own home
+simulator): the one object the generic code talks to, registered as ``household`` in the
+entry-point group ``pipflow.task_domains``.
+
+Each method is a thin face of a module of this package: the world loader (:mod:`.world`), the
+translator (:mod:`.translator`) and problem writer and checks (:mod:`.problem`), the simulation
+(:mod:`.simulation`) and the scoring (:mod:`.scoring`). Household goals are conditions
+(``{"in": {place: [objects]}, "state": {thing: [conditions]}}``), read back from a model's
+problem; they are not compared with the offline reading (only whether a refusal is final).
+
+The translator's parser (lark), UP and pybullet are imported inside the methods on purpose: the
+registry imports this module for every household run, and a run pays only for what it uses.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any, Callable, Mapping
+
+from pipflow.household import world as worlds
+from pipflow.language.offline import NO_USAGE
+from pipflow.resources import data_file
+from pipflow.taskdomain import GoalCheck, Save, TaskDomain, pddl_domain_name
+
+#: the fields a household rule may narrow by (domains/household.actions.yaml ``fields``)
+RULE_FIELDS = ("object", "from", "to", "at")
+#: where the example problem of a household prompt leaves room for the goal
+GOAL_PLACEHOLDER = "; the goal conditions of the command go here"
+
+
+def goal_atoms(parsed: Any) -> list:
+    """A UP problem's goal conditions with every ``and`` flattened (an empty ``(and)`` has none)."""
+    out, stack = [], list(parsed.goals)
+    while stack:
+        g = stack.pop()
+        if g.is_and():
+            stack += list(g.args)
+        elif not (g.is_bool_constant() and g.bool_constant_value()):
+            out.append(g)
+    return out
+
+
+class HouseholdDomain(TaskDomain):
+    """A home: objects in places, states to change (open, on, dirty, sliced), a robot team."""
+
+    name = "household"
+    workflow = "household"
+    default_prompt = "household_problem"
+    rule_fields = RULE_FIELDS
+
+    def pddl_domain(self) -> Path:
+        return data_file("domains/household.pddl")
+
+    def action_metadata(self) -> Path:
+        return data_file("domains/household.actions.yaml")
+
+    def load_world(self, path: str | Path, *, seed: int | None = None, **options: Any) -> dict:
+        """``team``: a team of the world, or robot names ``"a,b,c"`` (None: every robot)."""
+        return worlds.vary_starts(worlds.select_team(worlds.load_world(path), options.get("team")), seed)
+
+    def describe(self, world: dict) -> str:
+        return (f"{len(world['places'])} places, {len(world['objects'])} objects, "
+                f"team {', '.join(world['robots'])}")
+
+    def rule_names(self, world: dict) -> Mapping[str, tuple[Any, str]]:
+        places, objects = world.get("places", {}), world.get("objects", {})
+        return {"object": ({**places, **objects}, "place or object"), "from": (places, "place"),
+                "to": (places, "place"), "at": (places, "place")}
+
+    def read_offline(self, command: str, world: dict, domain_text: str = "",
+                     save: Save | None = None) -> dict:
+        """The translator and writer: ``goal`` keeps the command's conditions (counts included)
+        for judging, ``concrete`` resolves counts to objects, which is what the problem asks for.
+        Untranslatable commands raise TranslationError, impossible ones Refusal (the same as step
+        ``household.problem``)."""
+        from pipflow.household.translator import translate  # the parser (lark): loaded on first use
+
+        result = translate(command, world)
+        problem = self.write_problem(world, result["concrete"], pddl_domain_name(domain_text, self.name))
+        if save is not None:
+            save("goal.json", result)
+            save("problem.pddl", problem)
+        return {"problem": problem, "goal": result["goal"], "concrete": result["concrete"], "constraints": [],
+                "messages": [], "response": "", "usage": dict(NO_USAGE), "errors": []}
+
+    def write_problem(self, world: dict, goal: Any, domain_name: str, name: str = "task") -> str:
+        from pipflow.household.problem import write_problem
+
+        return write_problem(world, goal, name=name, domain=domain_name)
+
+    def example_problem(self, world: dict, domain_text: str = "") -> str | None:
+        """The world's objects and initial state, with room left for the goal."""
+        text = self.write_problem(world, {}, pddl_domain_name(domain_text, self.name))
+        return text.replace("  (:goal (and\n", f"  (:goal (and\n    {GOAL_PLACEHOLDER}\n", 1)
+
+    def read_problem(self, parsed: Any, world: dict, constraints: list[dict]) -> dict:
+        """The goal conditions read back from the problem. A problem whose goal states nothing
+        is no answer: copying the example unchanged would otherwise "succeed" doing nothing."""
+        from pipflow.household.problem import goal_from_problem
+
+        if not goal_atoms(parsed):
+            return {"errors": ["the problem's (:goal ...) states no condition: write in it the conditions "
+                               "the command asks for, e.g. (at apple fridge) or (not (is-on floorlamp))"]}
+        return {"goal": goal_from_problem(parsed)}
+
+    def world_mismatches(self, parsed: Any, problem_text: str, world: dict) -> list[str]:
+        from pipflow.household.problem import world_mismatches
+
+        return world_mismatches(parsed, problem_text, world)
+
+    def check_goal(self, parsed: Any, world: dict | None) -> GoalCheck:
+        """A goal no plan can reach (slicing a mug) is refused; the step's ``goal`` output stays
+        the stock-goal form every domain shares (empty for household problems)."""
+        from pipflow.household.problem import goal_from_problem, goal_refusal
+        from pipflow.pddl.common import stock_goals  # UP: deferred
+
+        goal = stock_goals(parsed)[0]
+        if world is None:
+            return GoalCheck(goal)
+        refusal = goal_refusal(world, goal_from_problem(parsed))
+        return GoalCheck(goal, [], f"the command cannot be done in this world: {refusal}" if refusal else None)
+
+    def simulate(self, world: dict, schedule: dict, graph: dict | None, goal: Any, *,
+                 snapshots: bool = False, out_dir: Path | None = None,
+                 log: Callable[[str], None] = print, **options: Any) -> dict:
+        from pipflow.household.simulation import simulate  # pybullet: deferred
+
+        return simulate(world, schedule, graph, goal, snapshots=snapshots, out_dir=out_dir, log=log)
+
+    def score(self, world: dict, goal: Any, *, constraints: list[dict] | None = None,
+              feasible: bool = True, graph: dict | None = None, schedule: dict | None = None,
+              simulation: dict | None = None, refusal: str | None = None,
+              error: str | None = None) -> dict:
+        from pipflow.household.scoring import score_run
+
+        return score_run(world, goal, feasible=feasible, graph=graph, schedule=schedule,
+                         simulation=simulation, refusal=refusal, error=error)
+
+    def load_tasks(self, path: Path) -> dict:
+        from pipflow.household.scoring import load_tasks
+
+        return load_tasks(path)
+
+    def score_bench_run(self, world_path: str, task: dict, outputs: dict, refusal: str | None,
+                        error: str | None) -> dict:
+        from pipflow.household.scoring import score_bench_run
+
+        return score_bench_run(world_path, task, outputs, refusal, error)
+
+    def understand(self, task: dict, outputs: dict, status: str, error_kind: str | None) -> dict | None:
+        from pipflow.household.scoring import understanding
+
+        return understanding(task, outputs, status, error_kind)
+
+    def bench_table(self, results: dict, tasks_file: Path) -> str | None:
+        from pipflow.household.scoring import bench_table
+
+        return bench_table(results, tasks_file)

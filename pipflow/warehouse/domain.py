@@ -1,0 +1,156 @@
+"""The warehouse as a pipflow task domain: the one object the generic code talks to (registered
+as ``warehouse`` in the entry-point group ``pipflow.task_domains``).
+
+Each method is a thin face of a module that does the work: the world loader
+(:mod:`pipflow.warehouse.world`), the command reader (:mod:`pipflow.language.understand`, the
+parser and resolver of the warehouse's order language), the stock-problem writer and checks
+(:mod:`pipflow.pddl.writer`, the debugger's and verifier's stock checks), the pybullet simulation
+(:mod:`pipflow.warehouse.simulation`) and the scoring (:mod:`pipflow.warehouse.scoring`).
+
+Imports of the parser (lark), UP and pybullet are deferred into the methods on purpose: the
+registry imports this module for every warehouse run, and a run pays only for what it uses.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any, Callable, Mapping
+
+from pipflow.language import grounding
+from pipflow.language.offline import NO_USAGE
+from pipflow.language.parsing import FIELD_KEYS
+from pipflow.resources import data_file
+from pipflow.starts import vary_starts
+from pipflow.taskdomain import GoalCheck, Grounding, Save, TaskDomain
+from pipflow.warehouse import world as worlds
+
+
+def _read_grounded(text: str, world: dict) -> dict:
+    """A grounded answer (an order in JSON) checked and resolved, its problem written."""
+    from pipflow.language.llm_orders import read_grounded  # the resolver (lark): loaded on first use
+
+    got = read_grounded(text, world)
+    return {"problem": WarehouseDomain().write_problem(world, got["goal"], "warehouse"), "goal": got["goal"],
+            "constraints": got["constraints"], "order": got["order"], "explanation": got["explanation"],
+            "errors": []}
+
+
+def _stock_goal(parsed: Any, world: dict | None) -> dict:
+    """A problem's ``(stock s p)`` goals as ``{shelf: {product: value}}`` in the world's spelling."""
+    from pipflow.pddl.common import stock_goals  # UP: deferred
+    from pipflow.pddl.names import goal_in_world_names
+
+    return goal_in_world_names(stock_goals(parsed)[0], world)
+
+
+class WarehouseDomain(TaskDomain):
+    """Pallets of products moved between shelves by robots that carry a few units each."""
+
+    name = "warehouse"
+    workflow = "warehouse"
+    default_prompt = "warehouse_problem"
+    rule_fields = FIELD_KEYS
+    grounding = Grounding(gbnf=grounding.gbnf, response_format=grounding.response_format, read=_read_grounded)
+
+    def pddl_domain(self) -> Path:
+        return data_file("domains/warehouse.pddl")
+
+    def action_metadata(self) -> Path:
+        return data_file("domains/warehouse.actions.yaml")
+
+    def load_world(self, path: str | Path, *, seed: int | None = None, **options: Any) -> dict:
+        return vary_starts(worlds.load_world(path), seed)
+
+    def describe(self, world: dict) -> str:
+        return (f"{len(world['shelves'])} shelves, {len(world['products'])} products, "
+                f"{len(world['robots'])} robots")
+
+    def rule_names(self, world: dict) -> Mapping[str, tuple[Any, str]]:
+        shelves = world.get("shelves", {})
+        return {"product": (world.get("products", {}), "product"), "from": (shelves, "shelf"),
+                "to": (shelves, "shelf")}
+
+    def read_offline(self, command: str, world: dict, domain_text: str = "",
+                     save: Save | None = None) -> dict:
+        from pipflow.language.understand import understand  # the parser (lark): loaded on first use
+
+        result = understand(command, world)
+        if save is not None:
+            save("order.json", result["order"])
+        return {"problem": self.write_problem(world, result["goal"], "warehouse"), "goal": result["goal"],
+                "constraints": list(result["constraints"]), "order": result["order"],
+                "explanation": list(result["explanation"]), "messages": [], "response": "",
+                "usage": dict(NO_USAGE), "errors": []}
+
+    def write_problem(self, world: dict, goal: Any, domain_name: str, name: str = "task") -> str:
+        from pipflow.pddl.writer import write_problem
+
+        return write_problem(world, goal, name=name, domain=domain_name)
+
+    def example_problem(self, world: dict, domain_text: str = "") -> str | None:
+        """The world's current stock as the goal: every name and number in the expected form."""
+        stock = {s: dict(items) for s, items in world.get("stock", {}).items() if items}
+        return self.write_problem(world, stock, "warehouse")
+
+    def read_problem(self, parsed: Any, world: dict, constraints: list[dict]) -> dict:
+        """The model's goal read back into an order, for the run summary (the paper's mode sets
+        no ``goal``: the verifier reads it)."""
+        from pipflow.language.llm_orders import explain_goal  # the resolver (lark): loaded on first use
+
+        return explain_goal(_stock_goal(parsed, world), constraints, world)
+
+    def world_mismatches(self, parsed: Any, problem_text: str, world: dict) -> list[str]:
+        from pipflow.pddl.debugger import world_mismatches
+
+        return world_mismatches(parsed, problem_text, world)
+
+    def check_goal(self, parsed: Any, world: dict | None) -> GoalCheck:
+        from pipflow.pddl.verifier import goal_problems
+
+        goal = _stock_goal(parsed, world)
+        if world is None:
+            return GoalCheck(goal)
+        messages, refusal = goal_problems(world, goal)
+        return GoalCheck(goal, messages, refusal)
+
+    def planner_params(self, world: dict, constraints: list[dict]) -> dict | None:
+        """Each robot's ``carry`` skill (units per move) and the only/never rules."""
+        robots = {name: r.get("skills", {}).get("carry", 0) for name, r in world.get("robots", {}).items()}
+        return {"robots": robots, "rules": constraints or []}
+
+    def second_opinion(self, command: str, world: dict, goal: Any, constraints: list[dict],
+                       refusal: str | None, grounded: bool) -> Any | None:
+        from pipflow.language.agreement import second_opinion
+
+        return second_opinion(command, world, goal, constraints, refusal, grounded)
+
+    def simulate(self, world: dict, schedule: dict, graph: dict | None, goal: Any, *,
+                 snapshots: bool = False, out_dir: Path | None = None,
+                 log: Callable[[str], None] = print, **options: Any) -> dict:
+        from pipflow.warehouse.simulation import simulate  # pictures and pybullet: deferred
+
+        return simulate(world, schedule, graph, goal, snapshots=snapshots, out_dir=out_dir, log=log, **options)
+
+    def score(self, world: dict, goal: Any, *, constraints: list[dict] | None = None,
+              feasible: bool = True, graph: dict | None = None, schedule: dict | None = None,
+              simulation: dict | None = None, refusal: str | None = None,
+              error: str | None = None) -> dict:
+        from pipflow.warehouse.scoring import score_run
+
+        return score_run(world, goal, constraints=constraints or [], feasible=feasible, graph=graph,
+                         schedule=schedule, simulation=simulation, refusal=refusal, error=error)
+
+    def load_tasks(self, path: Path) -> dict:
+        return worlds.load_tasks(path)
+
+    def score_bench_run(self, world_path: str, task: dict, outputs: dict, refusal: str | None,
+                        error: str | None) -> dict:
+        return self.score(worlds.load_world(world_path), task.get("goal") or {},
+                          constraints=task.get("constraints"),
+                          feasible=task.get("feasible", True) and task.get("expect") != "refuse",
+                          graph=outputs.get("graph"), schedule=outputs.get("schedule"),
+                          simulation=outputs.get("simulation"), refusal=refusal, error=error)
+
+    def understand(self, task: dict, outputs: dict, status: str, error_kind: str | None) -> dict | None:
+        from pipflow.warehouse.understanding import understanding
+
+        return understanding(task, outputs, status, error_kind)
