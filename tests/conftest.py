@@ -51,6 +51,28 @@ def demo_plugin_site(tmp_path_factory) -> Path:
     return site
 
 
+GARDEN_PKG = TESTS / "plugins" / "pipflow_garden"
+
+
+@pytest.fixture(scope="session")
+def garden_plugin_site(tmp_path_factory) -> Path:
+    """The third task domain (tests/plugins/pipflow_garden) pip-installed (no deps) into a private
+    site folder, as a user would install a domain plugin; returns that folder (put it on
+    PYTHONPATH / sys.path to use the plugin)."""
+    root = tmp_path_factory.mktemp("garden_plugin")
+    pkg, site = root / "pkg", root / "site"
+    shutil.copytree(GARDEN_PKG, pkg, ignore=shutil.ignore_patterns("__pycache__", "*.egg-info", "build"))
+    cmd = [sys.executable, "-m", "pip", "install", "--no-deps", "--disable-pip-version-check", "-q",
+           "--target", str(site), str(pkg)]
+    if _can_build_without_isolation():
+        cmd[4:4] = ["--no-build-isolation", "--no-index"]  # fast and fully offline
+    proc = subprocess.run(cmd, capture_output=True, text=True)
+    assert proc.returncode == 0, f"pip install of the garden plugin failed:\n{proc.stdout}\n{proc.stderr}"
+    assert (site / "pipflow_garden" / "workflows" / "garden.yaml").is_file(), "package data not installed"
+    assert not (site / "pipflow").exists(), "installing the plugin must not install (or fetch) pipflow"
+    return site
+
+
 @pytest.fixture
 def demo_registry(demo_plugin_site, monkeypatch):
     """The default step registry rebuilt with the demo plugin's site folder on sys.path, so that

@@ -80,7 +80,8 @@ class GardenDomain(TaskDomain):
     def score_bench_run(self, world_path: str, task: dict, outputs: dict, refusal: str | None,
                         error: str | None) -> dict:
         return self.score(worlds.load_world(world_path), task.get("goal") or {},
-                          constraints=task.get("constraints"), feasible=task.get("feasible", True) is not False,
+                          constraints=task.get("constraints"),
+                          feasible=task.get("feasible", True) is not False and task.get("expect") != "refuse",
                           graph=outputs.get("graph"), schedule=outputs.get("schedule"),
                           simulation=outputs.get("simulation"), refusal=refusal, error=error)
 

@@ -284,11 +284,11 @@ class _Reader:
         available = _ripe(self.world, crop, bed) - self._taken.get((crop, bed), 0)
         n = available if kind == "every_unit" else _count(_sub(amount[0]["children"], "count")[0])
         where = f"in bed {bed}" if bed else "in the garden"
-        if n == 0:
-            raise Refusal(f"{words!r}: no {crop} is ripe {where}")
+        if available == 0:
+            raise Refusal(f"{words!r}: no {crop} is ripe {where} (nothing to harvest)")
         if n > available:
-            raise Refusal(f"{words!r}: only {available} {crop} {'is' if available == 1 else 'are'} ripe {where} "
-                          f"(asked for {n})")
+            raise Refusal(f"{words!r}: only {available} unit{'' if available == 1 else 's'} of {crop} "
+                          f"{'is' if available == 1 else 'are'} ripe {where} (asked for {n})")
         free = self.world["stores"][store]["room"] - sum(self.world["stores"][store]["holds"].values()) - \
             sum(v for (s, _), v in self._added.items() if s == store)
         if n > free:

@@ -19,7 +19,7 @@ from pipflow_garden.simulation import check_goal, initial_state
 from pipflow_garden.world import load_world
 
 GOAL_KEYS = ("watered", "clear", "stored", "ripe")
-TASK_KEYS = ("id", "command", "goal", "constraints", "feasible", "construction", "category", "inputs")
+TASK_KEYS = ("id", "command", "goal", "constraints", "feasible", "expect", "construction", "category", "inputs")
 #: how a run ends when the command was refused: infeasible (Refusal) or not understood
 REFUSED_KINDS = ("Refusal", "TranslationError")
 
@@ -93,7 +93,10 @@ def load_tasks(path: str | Path, default_workflow: str) -> dict:
         for k in t:
             if k not in TASK_KEYS:
                 diags.append(Diagnostic(locate(where + (k,), key=True), f"task {tid}: unknown key {k!r}{did_you_mean(k, TASK_KEYS)}"))
-        for key in ("id", "command") + (("goal",) if t.get("feasible", True) is not False else ()):
+        refuse = t.get("feasible", True) is False or t.get("expect") == "refuse"
+        if t.get("expect") not in (None, "refuse"):
+            diags.append(Diagnostic(locate(where + ("expect",)), f"task {tid}: expect must be 'refuse', got {t.get('expect')!r}"))
+        for key in ("id", "command") + (() if refuse else ("goal",)):
             if key not in t:
                 diags.append(Diagnostic(locate(where), f"task {tid}: missing {key!r}"))
         if tid in seen:
@@ -157,7 +160,7 @@ def understanding(task: dict, outputs: dict, status: str, error_kind: str | None
     """Whether a run read the command as its gold: the goal and the rules (``words`` ignored)."""
     refused = status == "refused" or error_kind in REFUSED_KINDS
     executed = status == "succeeded"
-    if task.get("feasible") is False:
+    if task.get("feasible") is False or task.get("expect") == "refuse":
         return {"understood": refused, "misread": executed,
                 "understanding": "refused, as it should be" if refused else "not refused"}
     run = canonical_goal(outputs.get("goal"))

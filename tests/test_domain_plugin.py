@@ -1,0 +1,238 @@
+"""A third task domain as an installed plugin (issue 14): the garden package of tests/plugins is
+pip-installed into a private folder and found by pipflow only through its entry points
+(``pipflow.task_domains`` and ``pipflow.steps``). ``pipflow run`` of the workflow it ships and
+``pipflow bench`` of its task file run end to end in a fresh process; without the plugin the
+domain is unknown. The in-process tests check the package's parts (world checks, the command
+reader's refusals, the simulator) through the installed copy."""
+from __future__ import annotations
+
+import json
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from pipflow.errors import Refusal, TranslationError, WorldError
+
+PACKAGE = Path(__file__).resolve().parent / "plugins" / "pipflow_garden"
+
+
+def pipflow(site: Path, cwd: Path, *args: str, timeout: float = 300) -> subprocess.CompletedProcess:
+    exe = shutil.which("pipflow")
+    cmd = [exe] if exe else [sys.executable, "-m", "pipflow.engine.cli"]
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(site), os.environ.get("PYTHONPATH", "")]).rstrip(os.pathsep),
+           "PIPFLOW_CACHE_DIR": str(cwd / "cache")}
+    return subprocess.run([*cmd, *args], cwd=cwd, env=env, capture_output=True, text=True, timeout=timeout)
+
+
+def only_run(runs: Path) -> Path:
+    (run,) = runs.iterdir()
+    return run
+
+
+@pytest.fixture
+def garden(garden_plugin_site, monkeypatch):
+    """The installed plugin's modules, imported from the private site folder."""
+    monkeypatch.syspath_prepend(str(garden_plugin_site))
+    import importlib
+
+    importlib.invalidate_caches()
+    from pipflow_garden import language, simulation, world
+
+    data = garden_plugin_site / "pipflow_garden" / "data"
+    return {"language": language, "simulation": simulation, "world": world, "data": data,
+            "allotment": world.load_world(data / "world.yaml")}
+
+
+def test_plugin_package_declares_no_pipflow_dependency():
+    text = (PACKAGE / "pyproject.toml").read_text()
+    deps = text.split("dependencies =", 1)[1].split("]", 1)[0]
+    assert "pipflow" not in deps, "pip must never fetch the unrelated `pipflow` from PyPI"
+    assert '[project.entry-points."pipflow.task_domains"]' in text
+
+
+# ---------------------------------------------------------------------------------- end to end
+def test_workflow_runs_end_to_end_and_meets_the_goal(garden_plugin_site, tmp_path):
+    workflow = garden_plugin_site / "pipflow_garden" / "workflows" / "garden.yaml"
+    command = "Prune the south bed, then bring two pumpkins from south into the shed; the mule must not harvest."
+    proc = pipflow(garden_plugin_site, tmp_path, "run", str(workflow), "-i", f"command={command}", "--runs-dir", "runs")
+    assert proc.returncode == 0, proc.stderr
+    run = only_run(tmp_path / "runs")
+    assert json.loads((run / "run.json").read_text())["status"] == "succeeded"
+    out = json.loads((run / "outputs.json").read_text())
+    assert out["goal"] == {"clear": ["south"], "stored": {"shed": {"pumpkin": 2}}, "ripe": {"south": {"pumpkin": 0}}}
+    assert out["constraints"] == [{"never": ["mule"], "action": "harvest",
+                                   "words": "the mule must not harvest"}]
+    # the plan: one prune, then two harvests that depend on it
+    actions = [(p["action"], p["args"]) for p in out["plan"]]
+    assert sorted(actions) == [("harvest", ["pumpkin", "south", "shed"])] * 2 + [("prune", ["south"])]
+    ids = {n["id"]: n["action"] for n in out["graph"]["nodes"]}
+    prune = next(i for i, a in ids.items() if a == "prune")
+    assert {(u, v) for u, v in out["graph"]["edges"]} == {(prune, i) for i, a in ids.items() if a == "harvest"}
+    # a pumpkin weighs 2 carry units: a coalition of two 1-unit pickers (the 2-unit mule is ruled out)
+    by_action = {a["subtask"]: a["robots"] for a in out["allocation"]["assignments"]}
+    for sid, action in ids.items():
+        if action == "harvest":
+            assert sorted(by_action[sid]) == ["picker1", "picker2"]
+    # the garden's simulator executed everything, met the goal and measured travel from the paths
+    sim = out["simulation"]
+    assert sim["executed"] == 3 and sim["failures"] == [] and sim["goal_met"] is True
+    assert sim["final_state"]["stored"]["shed"]["pumpkin"] == 2 and sim["final_state"]["ripe"]["south"]["pumpkin"] == 0
+    assert "south" not in sim["final_state"]["overgrown"]
+    assert sim["travel"]["mule"] == 0 and sim["travel"]["picker1"] > 5
+    assert out["tc_max"] == pytest.approx(max(sim["travel"].values()))
+
+
+def test_a_command_it_cannot_place_is_refused_quoting_the_words(garden_plugin_site, tmp_path):
+    workflow = garden_plugin_site / "pipflow_garden" / "workflows" / "garden.yaml"
+    proc = pipflow(garden_plugin_site, tmp_path, "run", str(workflow), "-i",
+                   "command=Water north and fertilise the south bed.", "--runs-dir", "runs")
+    assert proc.returncode == 1
+    assert "could not place the words 'fertilise the south bed'" in proc.stderr
+    assert "Traceback" not in proc.stderr
+    run = only_run(tmp_path / "runs")
+    assert json.loads((run / "run.json").read_text())["status"] == "failed"
+    assert not (run / "steps" / "allocate").exists()  # no robot was given anything to do
+
+
+def test_an_impossible_command_is_refused_with_the_reason(garden_plugin_site, tmp_path):
+    workflow = garden_plugin_site / "pipflow_garden" / "workflows" / "garden.yaml"
+    proc = pipflow(garden_plugin_site, tmp_path, "run", str(workflow), "-i",
+                   "command=Harvest 6 pumpkins into the crate.", "--runs-dir", "runs")
+    assert proc.returncode == 3, proc.stderr
+    assert "only 2 units of pumpkin are ripe in the garden (asked for 6)" in proc.stderr
+    assert json.loads((only_run(tmp_path / "runs") / "run.json").read_text())["status"] == "refused"
+
+
+def test_bench_scores_every_task_with_sr(garden_plugin_site, tmp_path):
+    tasks = garden_plugin_site / "pipflow_garden" / "data" / "tasks.yaml"
+    proc = pipflow(garden_plugin_site, tmp_path, "bench", str(tasks), "--seeds", "1", "--jobs", "1",
+                   "--out", "out", "--runs-dir", "runs", "-q", timeout=600)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    results = json.loads((tmp_path / "out" / "results.json").read_text())
+    assert results["config"]["domain"] == "garden"
+    rows = {t["id"]: t for t in results["tasks"]}
+    assert sorted(rows) == [f"g-0{i}" for i in range(1, 8)]
+    assert all(rows[t]["runs"] == 1 and rows[t]["sr"] == 1.0 for t in rows), \
+        {t: (r["sr"], r.get("error")) for t, r in rows.items()}
+    assert all(rows[t]["understood"] == 1.0 and rows[t]["misread"] == 0 for t in rows)
+    assert results["summary"]["sr"] == 1.0
+    assert rows["g-03"]["tc_max"] > 0 and rows["g-06"]["tc_max"] is not None  # refusals succeed, nothing moved
+
+
+def test_without_the_plugin_the_domain_is_unknown(tmp_path):
+    tasks = PACKAGE / "pipflow_garden" / "data" / "tasks.yaml"
+    proc = pipflow(tmp_path / "empty", tmp_path, "bench", str(tasks), "--seeds", "1", "--out", "out")
+    assert proc.returncode == 2
+    assert "unknown task domain 'garden'" in proc.stderr
+    assert "household" in proc.stderr and "warehouse" in proc.stderr  # the known domains are named
+    assert "Traceback" not in proc.stderr
+    proc = pipflow(tmp_path / "empty", tmp_path, "run", str(PACKAGE / "pipflow_garden" / "workflows" / "garden.yaml"),
+                   "--runs-dir", "runs")
+    assert proc.returncode == 2 and "unknown step 'garden.load'" in proc.stderr
+
+
+def test_the_registry_finds_the_domain_through_its_entry_point(garden_plugin_site, tmp_path):
+    code = ("from pipflow.taskdomains import domain_named, known_domains, task_domain\n"
+            "d = domain_named('garden')\n"
+            "w = d.load_world(d.pddl_domain().parent / 'world.yaml')\n"
+            "print(known_domains(), type(task_domain(w)).__name__, d.pddl_domain().name, d.action_metadata().name)\n")
+    env = {**os.environ, "PYTHONPATH": str(garden_plugin_site)}
+    proc = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, env=env, capture_output=True, text=True, timeout=60)
+    assert proc.returncode == 0, proc.stderr
+    assert "'garden'" in proc.stdout and "GardenDomain garden.pddl garden.actions.yaml" in proc.stdout
+
+
+# ---------------------------------------------------------------------------------- the parts
+@pytest.mark.parametrize("command, goal, rules", [
+    ("Water the north bed and east, then prune south.", {"watered": ["north", "east"], "clear": ["south"]}, []),
+    ("water every bed", {"watered": ["north", "south", "east", "herbs"]}, []),
+    ("Harvest 3 tomatoes into the shed", {"stored": {"shed": {"tomato": 4}}}, []),  # the shed holds 1 already
+    ("pick at least two beans from east into the crate",
+     {"stored": {"crate": {"bean": {"at_least": 2}}}, "ripe": {"east": {"bean": {"at_most": 0}}}}, []),
+    ("harvest all the basil from herbs into the crate and weed herbs",
+     {"stored": {"crate": {"basil": 4}}, "ripe": {"herbs": {"basil": 0}}, "clear": ["herbs"]}, []),
+    ("keep the rovers away from the herbs bed. water north",
+     {"watered": ["north"]}, [{"never": ["sprinkler", "shears"], "bed": "herbs"}]),
+    ("only pickers may harvest; bring a pumpkin to the shed",
+     {"stored": {"shed": {"pumpkin": 1}}}, [{"only": ["picker1", "picker2"], "action": "harvest"}]),
+    ("the wet robots must not harvest pumpkins, water east",
+     {"watered": ["east"]}, [{"never": ["sprinkler", "mule"], "action": "harvest", "crop": "pumpkin"}]),
+])
+def test_the_reader_resolves_commands(garden, command, goal, rules):
+    read = garden["language"].read_command(command, garden["allotment"])
+    assert read["goal"] == goal
+    assert [{k: v for k, v in r.items() if k != "words"} for r in read["constraints"]] == rules
+
+
+@pytest.mark.parametrize("command, kind, words", [
+    ("water north and fertilise south", TranslationError, "'fertilise south'"),
+    ("prune north twice", TranslationError, "'prune north twice'"),
+    ("water the roses", TranslationError, "'the roses': this garden has no bed 'roses'"),
+    ("bring 2 pumkins to the shed", TranslationError, "no crop 'pumkins'; did you mean 'pumpkin'"),
+    ("harvest 3 carrots into the shed", TranslationError, "no crop 'carrots'; crops: tomato, basil, bean, pumpkin"),
+    ("harvest 3 tomatoes", TranslationError, "say which store it goes to (shed or crate)"),
+    ("harvest the basil into the shed", TranslationError, "'harvest the basil into the shed'"),
+    ("the mule must not water", TranslationError, "asks for nothing to be done"),
+    ("the goats must not water. water north", TranslationError, "no robot or kind of robot 'goats'"),
+    ("harvest 5 tomatoes into the shed", Refusal, "only 4 units of tomato are ripe"),
+    ("harvest 2 tomatoes from east into the shed", Refusal, "no tomato is ripe in bed east"),
+    ("harvest all the beans into the crate", Refusal, "store crate has room for 4 more units (asked for 7)"),
+])
+def test_the_reader_refuses_rather_than_guesses(garden, command, kind, words):
+    with pytest.raises(kind) as err:
+        garden["language"].read_command(command, garden["allotment"])
+    assert words in str(err.value)
+
+
+def test_a_bad_world_file_lists_every_problem_located(garden, tmp_path):
+    bad = tmp_path / "bad.yaml"
+    bad.write_text(
+        "domain: garden\n"
+        "floor: {width: 10, height: 8}\n"
+        "crops: {tomato: {weight: 1}}\n"
+        "beds:\n"
+        "  north: {x: 1, y: 1, width: 3, depth: 2, access: [2, 2], ripe: {tomatoe: 2}}\n"
+        "  Big: {x: 5, y: 1, width: 3, depth: 2, access: [6, 0.5]}\n"
+        "taps: {tap: {x: 0, y: 6, width: 0.5, depth: 0.5, access: [1, 6]}}\n"
+        "stores: {shed: {x: 8, y: 6, width: 3, depth: 1, access: [8, 5], room: 1, holds: {tomato: 2}}}\n"
+        "robots:\n"
+        "  r1: {start: [1, 7], skills: {water: 1, fly: 2}, kind: rover}\n")
+    with pytest.raises(WorldError) as err:
+        garden["world"].load_world(bad)
+    text = str(err.value)
+    for words in (f"{bad}:5:51: bed north: access point [2, 2] lies inside its own footprint",
+                  f"{bad}:5:66: bed north: ripe: unknown crop 'tomatoe' (did you mean 'tomato'?)",
+                  f"{bad}:6:3: bed name 'Big' must be lower case",
+                  f"{bad}:7:8: tap name 'tap' is a word of the garden's PDDL domain",
+                  f"{bad}:8:16: store shed lies outside the floor (10 x 8 m)",
+                  f"{bad}:8:81: store shed holds 2 units, more than its room of 1",
+                  f"{bad}:10:42: robot r1: unknown skill 'fly'; skills: water, cut, carry"):
+        assert words in text, text
+
+
+def test_the_simulator_refuses_what_the_garden_cannot_do(garden):
+    sim, world = garden["simulation"], garden["allotment"]
+    p = world["places"]
+    schedule = {"subtasks": [
+        {"id": "s1", "action": "harvest", "args": ["pumpkin", "south", "shed"], "robots": ["picker1"], "start": 0, "end": 5},
+        {"id": "s2", "action": "prune", "args": ["north"], "robots": ["shears"], "start": 1, "end": 6}],
+        "robots": {"picker1": {"legs": [{"subtask": "s1", "from": world["robots"]["picker1"]["start"],
+                                         "to": p["south"]["access"], "path": [world["robots"]["picker1"]["start"],
+                                                                               p["south"]["access"]]}]},
+                   "shears": {"legs": [{"subtask": "s2", "from": [0.5, 0.5], "to": p["north"]["access"],
+                                        "path": [[0.5, 0.5], [0.5, 8.4], p["north"]["access"]]}]}},
+        "makespan": 6}
+    graph = {"nodes": [{"id": "s1", "skills": {"carry": 2.0}, "route": ["south", "shed"]},
+                       {"id": "s2", "skills": {"cut": 1.0}, "route": ["north"]}]}
+    out = sim.simulate(world, schedule, graph, {"stored": {"shed": {"pumpkin": 1}}}, log=lambda m: None)
+    reasons = {f["subtask"]: " | ".join(f["reasons"]) for f in out["failures"]}
+    assert "carry 1 < 2" in reasons["s1"] and "picker1 is not at shed" in reasons["s1"]
+    assert "picker1 drives through south" in reasons["s1"]  # the straight line crosses the bed
+    assert "bed north is not overgrown" in reasons["s2"]
+    assert out["jumps"]["shears"][0]["subtask"] == "s2"  # it started at [11, 6], not [0.5, 0.5]
+    assert out["executed"] == 0 and out["goal_met"] is False and out["conditions"]["unmet"]
+    assert out["final_state"]["ripe"]["south"]["pumpkin"] == 2  # nothing changed
