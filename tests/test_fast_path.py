@@ -186,7 +186,7 @@ def test_parser_from_disk_reads_like_a_fresh_one(grammar_cache, monkeypatch):
     from pipflow.language import earley
 
     fresh = _command_parser()  # built, and stored
-    stored = list(grammar_cache.glob("*.earley"))
+    stored = list(grammar_cache.glob("[0-9a-f]*.earley"))
     assert len(stored) == 1 and (grammar_cache / "CACHEDIR.TAG").read_text().startswith("Signature: 8a477f")
     monkeypatch.setattr(earley, "_MEMORY", {})
     _no_build(monkeypatch)
@@ -296,3 +296,28 @@ print("ok")
         out, err = proc.communicate(timeout=120)
         assert proc.returncode == 0 and out.strip() == "ok", err[-2000:]
     assert len(list(folder.glob("*.earley"))) == 1 and not list(folder.glob(".tmp-*"))
+
+
+def test_old_parsers_are_pruned_and_other_files_kept(grammar_cache, monkeypatch):
+    """Each grammar edit is a new key: only the newest KEEP parsers stay; a crashed writer's old
+    temporary file goes; files of other names (and fresh temporary files) stay."""
+    import os
+
+    from pipflow.language import earley
+
+    monkeypatch.setattr(earley, "KEEP", 2)
+    grammars = [f'start: "a{i}"\n' for i in range(4)]
+    for i, text in enumerate(grammars):
+        earley.earley_parser(text, lexer="dynamic")
+        for entry in grammar_cache.glob("[0-9a-f]*.earley"):  # distinct modification times, oldest first
+            os.utime(entry, (entry.stat().st_mtime - 10, entry.stat().st_mtime - 10))
+        if i == 1:
+            old_tmp, new_tmp = grammar_cache / ".tmp-crashed.earley", grammar_cache / ".tmp-writing.earley"
+            old_tmp.write_bytes(b"half")
+            new_tmp.write_bytes(b"half")
+            os.utime(old_tmp, (1, 1))
+            (grammar_cache / "notes.txt").write_text("kept")
+    kept = sorted(p.name for p in grammar_cache.glob("*.earley") if not p.name.startswith("."))
+    newest = sorted(f"{earley.parser_key(t, {'parser': 'earley', 'lexer': 'dynamic'})}.earley" for t in grammars[2:])
+    assert kept == newest
+    assert not old_tmp.exists() and new_tmp.exists() and (grammar_cache / "notes.txt").exists()
