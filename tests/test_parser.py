@@ -448,3 +448,56 @@ def test_an_english_verb_is_never_taken_for_a_misspelt_robot_name() -> None:
     # a real misspelling of a name is still forgiven, and a name is still read exactly
     assert got("Stacker 2 must not carry batteries.", GARAGE)[1] == [
         {"never": ["stacker2"], "product": "battery"}]
+
+
+@pytest.mark.parametrize("command,goal,rules", [
+    # phrasal verbs and idioms of quantity change map onto the statements they mean
+    ("Stick another 2 batteries on the wash bay.", {"wash-bay": {"battery": 5}}, []),
+    ("The tool crib could do with 3 more oil filters.", {"tool_crib": {"oil-filter": 5}}, []),
+    ("Pit 2 could use another oil filter.", {"pit2": {"oil-filter": 2}}, []),
+    ("Knock 3 brake pads off the north yard.", {"north yard": {"brake_pad": 3}}, []),
+    ("Top off pit 2 with batteries.", {"pit2": {"battery": 7}}, []),
+    ("The batteries in the wash bay stay put, and pit 2 gets 1 kc-90.",
+     {"wash-bay": {"battery": 3}, "pit2": {"kc-90": 1}}, []),
+    ("Have the tool crib and pit 2 trade places.",
+     {"tool_crib": {"brake_pad": 0, "oil-filter": 1, "battery": 0, "kc-90": 0},
+      "pit2": {"brake_pad": 4, "oil-filter": 2, "battery": 1, "kc-90": 1}}, []),
+    ("Halve the north yard's brake pads.", {"north yard": {"brake_pad": 3}}, []),
+    ("Put one of each product on pit 2 on top of what is there.",
+     {"pit2": {"brake_pad": 1, "oil-filter": 2, "battery": 1, "kc-90": 1}}, []),
+    ("Cart 2 batteries across from the north yard to pit 2.", {"north yard": {"battery": 2}, "pit2": {"battery": 2}}, []),
+    # bounds said as a verb phrase
+    ("Don't let pit 2 go above 3 oil filters.", {"pit2": {"oil-filter": {"at_most": 3}}}, []),
+    ("The north yard must not dip under 2 batteries.", {"north yard": {"battery": {"at_least": 2}}}, []),
+    ("Make sure the tool crib never falls below 1 kc-90.", {"tool_crib": {"kc-90": {"at_least": 1}}}, []),
+    # a dash set apart is punctuation, not a minus sign
+    ("Tool crib - 3 batteries, please.", {"tool_crib": {"battery": 3}}, []),
+    # a count taken back: the second one holds
+    ("Put 2, sorry, 3 brake pads on pit 2.", {"pit2": {"brake_pad": 3}}, []),
+    ("The wash bay should hold 4, no, 5 batteries.", {"wash-bay": {"battery": 5}}, []),
+    # a hyphenated tag; the removal repeated with an elided verb and "another" (one more)
+    ("No night-shift robots; move 1 battery from the wash bay to pit 2.",
+     {"wash-bay": {"battery": 2}, "pit2": {"battery": 1}}, [{"never": ["stacker2", "loader"]}]),
+    ("Take 1 battery off the wash bay and another off the north yard.",
+     {"wash-bay": {"battery": 2}, "north yard": {"battery": 3}}, []),
+    ("Take 1 battery off the wash bay and 2 off the north yard.",
+     {"wash-bay": {"battery": 2}, "north yard": {"battery": 2}}, []),
+])
+def test_idioms_bounds_and_corrections_of_staff_english(command: str, goal: dict, rules: list[dict]) -> None:
+    g, r = got(command, GARAGE)
+    assert g == goal
+    assert [{k: v for k, v in x.items() if k != "words"} for x in r] == rules
+
+
+@pytest.mark.parametrize("command,error,match", [
+    # "could use N" without "more": the count to end with, or to bring? not guessed
+    ("The wash bay could use 2 batteries.", TranslationError, "could use"),
+    # "another" after a count other than one: one more, or as many again? not guessed
+    ("Take 2 batteries off the wash bay and another off the north yard.", TranslationError, "another"),
+    # a minus sign attached to its number is still a negative count
+    ("Put -3 batteries on pit 2.", Refusal, "cannot be negative"),
+    ("Put \u2212 3 batteries on pit 2.", Refusal, "cannot be negative"),
+])
+def test_new_constructions_refuse_what_could_mean_two_things(command: str, error: type, match: str) -> None:
+    with pytest.raises(error, match=match):
+        understand(command, GARAGE)

@@ -49,6 +49,8 @@ items: np (lsep np)*
 np: NUM of? ihead                          -> np_count
   | NUM ITEMWORD "of" ITEM                 -> np_count
   | NUM more of? ihead                     -> np_more
+  | ("another" | "an" "extra") NUM of? ihead -> np_more
+  | "another" ihead                        -> np_one_more
   | NUM of? ihead more                     -> np_more
   | NUM more of? ihead "than" ("it" | "they") ("does" | "do" | "has" | "have" | "holds" | "hold") now? -> np_more
   | NUM fewer of? ihead "than" ("it" | "they") ("does" | "do" | "has" | "have" | "holds" | "hold") now? -> np_fewer
@@ -153,9 +155,9 @@ putv: "put" | "place" | "store" | "stock" | "set" | "leave" | "get" | "keep" | "
 addv: "add" | "bring" | "deliver" | "send" | "ship" | "move" | "transfer" | "carry" | "shift" | "throw" | "toss"
     | "load" | "drop" | "stick" | "pop" | "stack"
     | "relocate" | "take" | "haul" | "bring" "over" | "move" "over" | "send" "over"
-    | "supply" | "drop" "off" | "get" | "push"
+    | "supply" | "drop" "off" | "get" | "push" | "cart" | "ferry" | "tow" | "lug" | "shuttle" | "wheel"
 removev: "remove" | "take" | "unload" | "pull" | "withdraw" | "clear" | "get" | "move"
-       | "get" "rid" "of" | "dispose" "of" | "throw" "out" | "take" "away"
+       | "get" "rid" "of" | "dispose" "of" | "throw" "out" | "take" "away" | "knock"
 splitv: "split" | "divide" | "distribute" | "share" | "spread" | "spread" "out" | "share" "out"
 among: "between" | "among" | "amongst" | "across" | "over"
 even: "evenly" | "equally" | "fairly" | "in" "equal" ("parts" | "shares") | ","? "same" "amount" "each"
@@ -218,8 +220,9 @@ goal: there_be items loc                                  -> g_set
     | putv items from places loc                           -> g_transfer_src
     | items ("to" | "into" | "onto") places from places     -> g_transfer
     | emptyv places ("into" | "onto" | "to") places         -> g_empty_into
-    | places modal? ("not" | "never") ("exceed" | "go" "above" | "go" "over" | "rise" "above") NUM of? ihead -> g_ceiling
-    | places ("shouldnt" | "mustnt" | "cant" | "cannot") ("exceed" | "go" "above" | "go" "over") NUM of? ihead -> g_ceiling
+    | places bneg above NUM of? ihead                        -> g_ceiling
+    | ("make" "sure" | "ensure") that? places bneg above NUM of? ihead -> g_ceiling
+    | ("dont" | "do" "not" | "never") "let" places above NUM of? ihead -> g_ceiling
     | items src modal? go to places                       -> g_transfer_src
     | places ("gets" | "receives" | "takes" | "should" "get" | "should" "receive") items from places -> g_receive
     | places modal? setv items from places                  -> g_receive
@@ -238,8 +241,9 @@ goal: there_be items loc                                  -> g_set
     | ("cut" | "reduce") (ihead loc | pitem_plain) "by" (frac | "half" | NUM)  -> g_cut
     | refill places "with" ihead ("until" ("it" | "they") ("is" | "are") "full" | "to" ("capacity" | "top")) -> g_fill
     | ("keep" | "hold") places ("to" | "at")? items           -> g_place_set
-    | places modal? ("not" | "never") ("drop" | "fall" | "go") "below" NUM of? ihead -> g_floor
-    | places ("shouldnt" | "mustnt" | "cant" | "cannot") ("drop" | "fall" | "go") "below" NUM of? ihead -> g_floor
+    | places bneg below NUM of? ihead                        -> g_floor
+    | ("make" "sure" | "ensure") that? places bneg below NUM of? ihead -> g_floor
+    | ("dont" | "do" "not" | "never") "let" places below NUM of? ihead -> g_floor
     | places modal? setv items on_top                       -> g_add_place
     | ("dont" | "do" "not" | "never") ("touch" | "move" | "take") ("any" | "anything")? ihead loc? -> g_keep_item
     | ("dont" | "do" "not") emptyv places                    -> g_noop
@@ -286,6 +290,13 @@ goal: there_be items loc                                  -> g_set
     | ("leave" | "keep") places as_is                       -> g_keep
     | ("dont" | "do" "not") "touch" places                  -> g_keep
     | places modal? ("stay" | "remain" | "be" "left") as_is  -> g_keep
+    | places modal? ("stay" | "stays" | "remain" | "remains") "put" -> g_keep
+    | ihead loc modal? ("stay" | "stays" | "remain" | "remains") ("put" | as_is) -> g_keep
+    | places modal? ("use" | "do" "with") items              -> g_could_use
+    | ("top" ("up" | "off") | "fill" "up") places "with" only? ihead only? -> g_fill
+    | (putv | addv) items loc on_top                         -> g_add
+    | mult "up"? posplace ihead                              -> g_mult
+    | ("have" | "let" | "make") places ("swap" | "trade" | "exchange") (("their" | "its") | "what" "they" ("hold" | "have"))? swapwhat -> g_swap_subj
     | swapv ("what" | "contents" "of")? places ("hold" | "have" | "contain" | "holds" | "has")? -> g_swap
     | swapv ihead (lsep ihead)* ("between" | "of" | "on") places -> g_swap_items
     | swapv posplace ihead "with" (posplace | places)       -> g_swap_poss
@@ -294,7 +305,13 @@ goal: there_be items loc                                  -> g_set
     | splitv bare even? among places even?                  -> g_split
     | "put" items even? among places even?                  -> g_split
 
-on_top: ("on" "top" "of" | "in" "addition" "to" | "besides" | "over" "and" "above") "what" ("it" | "they") ("has" | "have" | "holds" | "hold") now?
+// "must not go above 3", "never drops under 2", "doesn't exceed 5": a ceiling or a floor
+bneg: modal? ("not" | "never") | "shouldnt" | "mustnt" | "cant" | "cannot" | "doesnt" | "does" "not"
+    | "wont" | "will" "not" | "never"
+above: ("go" | "goes" | "get" | "gets" | "rise" | "rises" | "climb" | "climbs") ("above" | "over" | "past" | "beyond")
+     | "exceed" | "exceeds"
+below: ("go" | "goes" | "get" | "gets" | "drop" | "drops" | "fall" | "falls" | "dip" | "dips" | "sink" | "sinks") ("below" | "under" | "beneath")
+on_top: ("on" "top" "of" | "in" "addition" "to" | "besides" | "over" "and" "above") "what" (("it" | "they") ("has" | "have" | "holds" | "hold") now? | "is" "already"? "there")
 adv: "over" | "back" | "across" | "along"
 src: ("in" | "on" | "at" | "from" | "off" | "out" "of" | "of") places
 pitems: frac of? posplace ihead appos?                     -> pi_frac
@@ -312,11 +329,11 @@ both: "both"
 left: "left" | "remaining" | "left" "over" | "in" "total" | "total" | "in" "all"
 only: "only"
 equal: "equal" "to" | "at"
-refill: "restock" | "refill" | "replenish" | "top" "up" | "supply"
+refill: "restock" | "refill" | "replenish" | "top" "up" | "top" "off" | "supply"
 mult: "double" | "triple" | "quadruple" | "halve"
 swapv: "swap" | "trade" | "exchange" | "switch" | "interchange"
 emptyv: "empty" | "clear" | "clean" "out" | "clear" "out" | "empty" "out"
-emptied: "empty" | "emptied" | "cleared" | "vacant" | "cleaned" "out"
+emptied: "empty" | "emptied" | "cleared" | "vacant" | "cleaned" "out" | "emptied" "out" | "cleared" "out"
 as_is: "where" ("it" | "they") ("is" | "are") | "as" ("it" | "they") ("is" | "are") | "alone"
      | "untouched" | "unchanged" | "as" "is"
 

@@ -64,6 +64,10 @@ def check_text(command: str) -> str:
     if len(command) > MAX_COMMAND_CHARS:
         raise InputError(f"the command is {len(command)} characters long; commands are limited to "
                          f"{MAX_COMMAND_CHARS} characters (split it into several runs)")
+    # a minus sign binds only when attached to its number ("-5"); a dash set apart by spaces is
+    # punctuation ("Cross dock - 2 sku-220", "bin 4 \u2013 3 bolts"), read like a colon
+    # (the minus sign U+2212 is never punctuation)
+    command = re.sub(r"(?<=\S)\s+[-\u2013\u2012\u2010\u2014]+\s+(?=\S)", " : ", command)
     m = re.search(r"(?:^|(?<=[\s(:,;]))[-\u2212\u2013\u2012\u2010]\s*(\d[\d,.]*)", command)
     if m:
         raise Refusal(f"'{m.group(0).strip()}': a count cannot be negative (a shelf holds 0 units "
@@ -101,6 +105,51 @@ def _number_typo(word: str) -> str | None:
     cands = [w for w in list(UNITS) + list(TENS) + ["dozen", "hundred", "thousand"]
              if len(w) >= 3 and w[0] == word[0] and distance(word, w) <= 1]
     return cands[0] if len(cands) == 1 else None
+
+
+#: words that take back the count before them: "5, no, 6", "3, sorry, 4", "2, I mean 3"
+CORRECTIONS = (("no",), ("sorry",), ("wait",), ("i", "mean"), ("make", "that"), ("or", "rather"), ("rather",))
+
+
+def _split_hyphens(toks: list[Tok], keywords: dict[str, str]) -> list[Tok]:
+    """A hyphenated word that is no name, keyword or count reads as its words ("night-shift"
+    robots are the night shift robots, "re-stock" is restock's words)."""
+    out: list[Tok] = []
+    for t in toks:
+        word = str(t.value)
+        parts = [p for p in word.split("-") if p]
+        if (t.kind != "word" or len(parts) < 2 or word in keywords
+                or any(p in NUMBER_WORDS or p.isdigit() for p in parts)):
+            out.append(t)
+            continue
+        out += [Tok("word", p, p) for p in parts]
+    return out
+
+
+def corrected(toks: list[Tok]) -> list[Tok]:
+    """A count taken back and replaced ("5, no, 6 bolts") is the second count, its source words
+    all of the span; the first is never read. Only a count right after a correction word set off
+    by a comma counts: "2, no bolts" is left to the grammar."""
+    out: list[Tok] = []
+    i = 0
+    while i < len(toks):
+        t = toks[i]
+        if t.kind == "num" and i + 1 < len(toks) and toks[i + 1].kind == "punct" and toks[i + 1].value == ",":
+            for words in CORRECTIONS:
+                j = i + 2
+                if [str(x.value) for x in toks[j:j + len(words)] if x.kind == "word"] != list(words):
+                    continue
+                j += len(words)
+                if j < len(toks) and toks[j].kind == "punct" and toks[j].value == ",":
+                    j += 1
+                if j < len(toks) and toks[j].kind == "num":
+                    text = " ".join(x.text for x in toks[i:j + 1])
+                    t = Tok("num", text, toks[j].value)
+                    i = j
+                    break
+        out.append(t)
+        i += 1
+    return out
 
 
 class Lexicon:
@@ -165,7 +214,7 @@ class Lexicon:
                 if typo is not None:
                     t = Tok("word", t.text, typo)
             fixed.append(t)
-        toks = read_counts(fixed)
+        toks = corrected(read_counts(_split_hyphens(fixed, self.keywords)))
         out: list[Lexed] = []
         cur: list[Tok] = []
         for t in toks + [Tok("punct", ".", ".")]:

@@ -411,6 +411,16 @@ class _Sentence:
                 places, mode = self.place_list(plist[0]), "each" if each else "one"
             self.put(places, mode, nps, words, add=True)
             return
+        if kind == "g_could_use":
+            # "P could use / could do with N more X" is a change; without "more" it could be the
+            # count P should end with or the count to bring: refused, not guessed
+            for np in nps:
+                if set(np["amount"]) != {"more"}:
+                    raise TranslationError(f"{_quote(words)}: 'could use' does not say whether "
+                                           f"{np['words']} is the count to end with or to add "
+                                           f"(say 'N more' or 'should have N')")
+            self.put(self.place_list(plist[0]), "each" if each else "one", nps, words)
+            return
         if kind == "g_add_place":
             places = self.place_list(plist[0])
             self.put(places, "one", nps, words, add=True)
@@ -434,7 +444,8 @@ class _Sentence:
         if kind == "g_mult":
             verb = self.first_word(node)
             head = self.ihead(self.sub(node, "ihead")[0], words)
-            places, _ = self.loc(locs[0])
+            poss = self.sub(node, "posplace")  # "halve the loading bay's bearings"
+            places = [str(poss[0].children[0].value)] if poss else self.loc(locs[0])[0]
             amount = {"fraction": [1, 2]} if verb == "halve" else {"times": {"double": 2, "triple": 3, "quadruple": 4}[verb]}
             self.put(places, "each", [{"items": {"names": [head]}, "amount": amount, "words": words}], words)
             return
@@ -934,11 +945,18 @@ class _Sentence:
         if kind == "t_from":
             # "Rack B gets 3 widgets from rack C and 2 gears from rack A": the same destination
             prev = self.statements[-1] if self.statements else None
-            if prev is None or prev["op"] != "transfer" or not prev.get("to"):
+            if prev is None or prev["op"] != "transfer":
                 raise TranslationError(f"{_quote(words)}: cannot tell where these go")
             source = self.place_list(self.sub(node, "places")[0])
             for np in self.nps(self.sub(node, "items")[0]):
-                self.statements.append(self._transfer_statement(np, source, prev["to"]["names"], words))
+                if prev.get("to") is None and np["amount"] == {"count": 1} and np["words"].lower() == "another" \
+                        and prev["amount"] != {"count": 1}:
+                    # "take 3 off A and another off B": one more, or another 3? not guessed
+                    raise TranslationError(f"{_quote(words)}: 'another' after {prev['words']!r} does not "
+                                           f"say how many (one, or as many again?)")
+                # "Take 1 bolt off A and 2 off B" repeats the removal; after a move, its destination
+                target = prev["to"]["names"] if prev.get("to") else None
+                self.statements.append(self._transfer_statement(np, source, target, words))
             return
         if kind == "t_rest":
             places = self.place_list(self.sub(node, "places")[0])
