@@ -12,13 +12,11 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from pipflow.taskdomain import TaskDomain
+from pipflow.taskdomain import REFUSED_KINDS, TaskDomain
 from pipflow.taskdomains import declared_domain
 from pipflow.taskdomains import domain_named as _domain_named
 
-#: how a run ends when the command was refused: infeasible (Refusal), or not understood
-#: (TranslationError: the translator refuses what it cannot place rather than guess)
-REFUSED_KINDS = ("Refusal", "TranslationError")
+__all__ = ["REFUSED_KINDS", "domain_named", "domain_of"]
 
 
 def domain_named(name: str | None) -> TaskDomain:

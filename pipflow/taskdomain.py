@@ -37,6 +37,10 @@ from typing import Any, Callable, ClassVar, Mapping
 #: the domain of a world (or task file) that does not name one
 DEFAULT_DOMAIN = "warehouse"
 
+#: how a run ends when the command was refused: infeasible (Refusal), or not understood
+#: (TranslationError: a reader refuses what it cannot place rather than guess)
+REFUSED_KINDS = ("Refusal", "TranslationError")
+
 #: ``save(name, data)``: keep an artifact of the step (the engine's ``ctx.write_artifact``)
 Save = Callable[[str, Any], Any]
 

@@ -7,6 +7,7 @@ first asked for, so a run in one domain does not load the others' code.
 """
 from __future__ import annotations
 
+import re
 from functools import lru_cache
 from importlib.metadata import entry_points
 from pathlib import Path
@@ -58,9 +59,17 @@ def task_domain(world: Any) -> TaskDomain:
 def declared_domain(path: str | Path, what: str = "world file") -> TaskDomain:
     """The domain a YAML file (world or task file) declares with a top-level ``domain:`` key,
     read cheaply; the domain's own loader validates the file and locates its problems."""
+    text = ""
     try:  # the shared bounded reader: no /dev/zero, no alias bomb, no deep nesting
-        data = safe_load(read_source(path, what))
+        text = read_source(path, what)
+        data = safe_load(text)
     except (UserError, yaml.YAMLError):
         data = None  # the loader reports the problem with its location
     name = data.get("domain") if isinstance(data, dict) else None
-    return domain_named(name if isinstance(name, str) else None)
+    if name is not None and not isinstance(name, str):
+        name = str(name)
+    try:
+        return domain_named(name)
+    except InputError as exc:  # say where the file names it
+        line = next((n for n, row in enumerate(text.splitlines(), 1) if re.match(r"domain\s*:", row)), 1)
+        raise InputError(f"{path}:{line}: {exc}") from None

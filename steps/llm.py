@@ -23,16 +23,16 @@ from pipflow.language.prompting import prompt_problem
              "response": "string", "usage": "object", "errors": "array",
              "order": "any", "explanation": "any",  # offline: the order and the resolver's arithmetic
              "varied": "string", "round": "object",  # what changed in a prompt that would repeat; this round
-             "concrete": "object"},  # household offline: the goal with counts resolved (as household.problem)
+             "concrete": "object"},  # offline, where the domain has it: the goal with counts resolved
 )
 def llm_problem(
     ctx: StepContext,
     command: Annotated[str, Doc("the natural-language command")],
-    world: Annotated[dict, Doc("the world (output of world.load or household.load)")],
+    world: Annotated[dict, Doc("the world (output of world.load or a domain's own load step)")],
     domain: Annotated[PathStr, Doc("team-level PDDL domain file")],
     prompt: Annotated[str | None, Check(prompt_problem),
-                      Doc("template name in prompts/ or a path; unset: the world's domain's "
-                          "(warehouse_problem, household_problem)")] = None,
+                      Doc("template name in prompts/ or a path; unset: the world's task domain's "
+                          "default prompt")] = None,
     model: Annotated[str | None, Doc("litellm model string, local/smollm2 or offline; unset: $PIPFLOW_MODEL, "
                                      "else offline")] = None,
     temperature: Annotated[float, Doc("sampling temperature (0: the most likely answer)")] = 0.0,
@@ -52,22 +52,19 @@ def llm_problem(
                                          "is varied (output `varied` says how)")] = None,
 ) -> dict:
     """``problem`` is "" when the answer held no usable problem; ``errors`` then says why, in
-    words meant for the next round's prompt. ``goal`` is set by offline and grounded runs, and
-    for household worlds (``domain: household``) by every run: the goal conditions read back from
-    the problem. Household worlds go to the household translator offline; `concrete` (the goal with
-    counts resolved) is then set, as in step household.problem (None otherwise)."""
-    from pipflow.language.generator import domain_of as generate_domain_of
+    words meant for the next round's prompt. ``goal`` is set by offline and grounded runs, and by
+    every run of a domain that reads its goal back from the problem (household: its goal
+    conditions). Offline, the world's task domain reads the command; `concrete` (the goal with
+    counts resolved) is set where the domain has it (household), else None."""
     from pipflow.language.generator import generate
     from pipflow.language.llm import resolve_model
 
     resolved = resolve_model(model)
-    domain_text = ""
-    if resolved != "offline" or generate_domain_of(world) == "household":
-        path = ctx.resolve_path(domain)
-        try:
-            domain_text = path.read_text(encoding="utf-8")
-        except OSError as exc:
-            raise InputError(f"domain file {path}: {exc.strerror}") from None
+    path = ctx.resolve_path(domain)
+    try:  # offline too: the problem names the domain file's PDDL domain
+        domain_text = path.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise InputError(f"domain file {path}: {exc.strerror}") from None
     out = generate(
         command, world, domain_text, prompt=prompt, model=resolved, temperature=temperature,
         max_tokens=max_tokens, timeout=timeout, retries=retries, deadline=deadline, api_base=api_base,
@@ -106,16 +103,15 @@ def llm_check(
     ``refusal``: final only when the command makes the goal impossible, else None (the verifier's
     refusal of a goal the model invented is in ``messages`` instead); ``disagreement``: what an
     accepted reading still gets wrong (a warning for the run summary), else empty."""
-    from pipflow.language.agreement import refusal_opinion, second_opinion
-    from pipflow.language.generator import domain_of
+    from pipflow.language.agreement import refusal_opinion
     from pipflow.language.llm import resolve_model
+    from pipflow.taskdomains import task_domain
 
     if resolve_model(model) == "offline":  # the reading is the parser's own
         return {"ok": True, "messages": [], "refusal": refusal, "disagreement": [], "basis": "none"}
-    if domain_of(world) != "warehouse":  # goals of other domains are not compared (yet): refusals only
+    opinion = task_domain(world).second_opinion(command, world, goal, constraints, refusal, grounded)
+    if opinion is None:  # a domain whose goals are not compared: only whether a refusal is final
         opinion = refusal_opinion(command, world, refusal)
-    else:
-        opinion = second_opinion(command, world, goal, constraints, refusal, grounded)
     ok = not opinion.disagreement or (last and not opinion.firm and opinion.refusal is None)
     for line in opinion.disagreement:
         ctx.log(f"check ({opinion.basis}): {line}")

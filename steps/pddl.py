@@ -88,9 +88,12 @@ def solve(
                 "time": 0.0, "engine": engine}
     domain_text = _read_text(ctx.resolve_path(domain))
     first_params = params
-    if engine == DEFAULT_ENGINE and world and world.get("robots"):
-        robots = {name: r.get("skills", {}).get("carry", 0) for name, r in world["robots"].items()}
-        first_params = {"robots": robots, "rules": constraints or [], **(params or {})}
+    if engine == DEFAULT_ENGINE and world and world.get("robots"):  # the robots' capacities: the domain knows them
+        from pipflow.taskdomains import task_domain
+
+        known = task_domain(world).planner_params(world, constraints or [])
+        if known is not None:
+            first_params = {**known, **(params or {})}
     result = _solve_once(ctx, parsed, problem, domain_text, engine, first_params, timeout)
     message = result.message
     if result.status in ("error", "timeout") and fallback and fallback != engine:

@@ -10,10 +10,11 @@ import re
 from typing import Annotated
 
 from pipflow import Doc, PathStr, StepContext, step
+from pipflow.taskdomain import pddl_domain_name
 
 
 @step("problem.write",
-      doc="Write the team-level PDDL problem for a goal: the world's objects and initial state, one (= (stock s p) n) per goal count, (>= ...)/(<= ...) per bound.",
+      doc="Write the team-level PDDL problem for a goal with the world's task domain's writer: the world's objects and initial state, and the goal (stock goals: one (= (stock s p) n) per count, (>= ...)/(<= ...) per bound).",
       outputs={"problem": "string"},
       cacheable=True)
 def write(
@@ -25,14 +26,14 @@ def write(
 ) -> dict:
     """Returns ``problem=None`` (and logs why) when the world or goal is missing, so a skipped
     upstream step does not crash the run."""
-    from pipflow.pddl.writer import write_problem
+    from pipflow.taskdomains import task_domain
 
     if world is None or goal is None:
         ctx.log("problem.write: no " + ("world" if world is None else "goal") + "; no problem written")
         return {"problem": None}
+    task = task_domain(world)
     text = ctx.resolve_path(domain).read_text()
-    m = re.search(r"\(\s*domain\s+([^\s()]+)", text, flags=re.IGNORECASE)
-    problem = write_problem(world, goal, name=re.sub(r"[^\w-]", "-", name) or "task",
-                            domain=m.group(1) if m else "warehouse")
+    problem = task.write_problem(world, goal, pddl_domain_name(text, task.name),
+                                 name=re.sub(r"[^\w-]", "-", name) or "task")
     ctx.write_artifact("problem.pddl", problem)
     return {"problem": problem}

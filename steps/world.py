@@ -1,4 +1,5 @@
-"""World step: load and validate a world file (heavy work in :mod:`pipflow.warehouse.world`)."""
+"""World step: load and validate a world file with its task domain's loader (the file's top-level
+``domain:`` key; none: the default domain), see :meth:`pipflow.taskdomain.TaskDomain.load_world`."""
 from __future__ import annotations
 
 from typing import Annotated
@@ -7,20 +8,22 @@ from pipflow import Doc, PathStr, StepContext, step
 
 
 @step("world.load",
-      doc="Load a world file (floor, shelves, products, stock, robots), validated with every problem located.",
+      doc="Load a world file (its task domain's format: floor, shelves, products, stock, robots by default), "
+          "validated with every problem located.",
       outputs={"world": "object"},
       cacheable=True)
 def load(
     ctx: StepContext,
-    path: Annotated[PathStr, Doc("world YAML file, relative to the workflow file")],
+    path: Annotated[PathStr, Doc("world YAML file, relative to the workflow file; its `domain:` key names "
+                                 "its task domain")],
     seed: Annotated[int | None, Doc("vary the robots' start positions reproducibly (none: as in the file)")] = None,
 ) -> dict:
-    """Raises WorldError (exit 2) listing each problem with file:line:col; returns the normalized
-    world dict of docs/architecture.md."""
-    from pipflow.starts import vary_starts
-    from pipflow.warehouse.world import load_world
+    """Raises WorldError (exit 2) listing each problem with file:line:col, InputError for an
+    unknown ``domain:``; returns the normalized world dict of docs/architecture.md."""
+    from pipflow.taskdomains import declared_domain
 
-    world = vary_starts(load_world(ctx.resolve_path(path)), seed)
-    ctx.log(f"world {world['name']}: {len(world['shelves'])} shelves, {len(world['products'])} products, "
-            f"{len(world['robots'])} robots")
+    file = ctx.resolve_path(path)
+    domain = declared_domain(file)
+    world = domain.load_world(file, seed=seed)
+    ctx.log(f"world {world['name']}: {domain.describe(world)}")
     return {"world": world}

@@ -17,6 +17,7 @@ from conftest import local_model_server
 
 from pipflow import StepContext
 from pipflow.errors import InputError
+from pipflow.household.domain import GOAL_PLACEHOLDER, HouseholdDomain
 from pipflow.language import generator, llm
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -105,7 +106,7 @@ def test_prompt_holds_command_world_facts_domain_and_example(tmp_path, monkeypat
     assert "- mug in diningtable: mass 1; pickupable, washable; dirty; category dish" in user
     assert "- fruit (home fridge): apple, watermelon" in user              # categories, homes
     assert "Robots: robot1, robot2, robot3." in user
-    assert generator.GOAL_PLACEHOLDER in user and "(at apple countertop)" in user  # the example's init
+    assert GOAL_PLACEHOLDER in user and "(at apple countertop)" in user  # the example's init
     assert "Your previous answer" not in user
     assert json.loads((art / "messages.json").read_text()) == out["messages"]
 
@@ -121,7 +122,7 @@ def test_good_answer_is_read_with_its_goal_and_rules(tmp_path, monkeypatch, worl
 
 
 def test_bad_rules_and_a_copied_example_are_precise_errors(tmp_path, monkeypatch, world):
-    example = generator._example(world, DOMAIN.read_text())
+    example = HouseholdDomain().example_problem(world, DOMAIN.read_text())
     mock_answers(monkeypatch, [answer(example, '{"constraints": [{"only": ["robot7"], "object": "banana"}]}')])
     out, _ = run_step(tmp_path, world)
     assert out["problem"] == "" and out["goal"] is None

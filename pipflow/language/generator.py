@@ -6,12 +6,11 @@ nothing usable does not stop the run: the round returns ``problem: ""`` and ``er
 precisely why, for the debugger/verifier loop to feed back. Model ``offline`` needs no prompt at
 all: the deterministic translator reads the command and the problem writer writes the problem.
 
-The generator serves every domain whose world it can tell apart (``world["domain"]``): the
-warehouse (the default) and ``household`` (:mod:`pipflow.household`). Per domain it knows the
-default prompt template, the offline translator and problem writer, the example problem shown in
-the prompt, the fields a robot-use rule may name, and, for household, how to read the goal
-conditions back out of the model's problem. Prompt rendering, the model call, the cache and the
-PDDL extraction are the same for all.
+The generator serves every task domain (``world["domain"]``, :mod:`pipflow.taskdomains`): the
+domain gives the default prompt template, the offline reader and problem writer, the example
+problem shown in the prompt, the fields a robot-use rule may name, grounded decoding (if it has
+it) and what to learn from a model's problem (its goal, an explanation). Prompt rendering, the
+model call, the cache and the PDDL extraction are the same for all.
 """
 from __future__ import annotations
 
@@ -20,24 +19,19 @@ from pathlib import Path
 from typing import Any, Callable
 
 from pipflow.errors import InputError
-from pipflow.language import grounding
 from pipflow.language.cache import ResponseCache, cache_key
 from pipflow.language.llm import complete, resolve_model
-from pipflow.language.parsing import (HOUSEHOLD_FIELD_KEYS, ParseIssue, extract_constraints,
-                                      extract_problem, validate_constraints)
+from pipflow.language.parsing import ParseIssue, extract_constraints, extract_problem, validate_constraints
 from pipflow.language.budget import FREE_STOPS, answer_budget
 from pipflow.language.feedback import vary
-from pipflow.language.offline import (domain_name, domain_of, offline, write_household_problem,
-                                      write_problem)
+from pipflow.language.offline import offline
 from pipflow.language.prompting import render
+from pipflow.taskdomain import TaskDomain
+from pipflow.taskdomains import task_domain
 
-#: the prompt template of each domain when the caller names none
-DEFAULT_PROMPTS = {"warehouse": "warehouse_problem", "household": "household_problem"}
 #: the head of an answer kept in the round record, for quoting it back when the next prompt
 #: would repeat (the whole answer is the artifact response.txt)
 ROUND_ANSWER_CHARS = 6000
-#: where the example problem of a household prompt leaves room for the goal
-GOAL_PLACEHOLDER = "; the goal conditions of the command go here"
 
 
 def _digest(messages: list[dict[str, str]], temperature: float | None = None) -> str:
@@ -49,7 +43,8 @@ def _digest(messages: list[dict[str, str]], temperature: float | None = None) ->
 
 
 def default_prompt(world: Any) -> str:
-    return DEFAULT_PROMPTS[domain_of(world)]
+    """The prompt template of the world's task domain."""
+    return task_domain(world).default_prompt
 
 
 def grounding_method(model: str, api_base: str | None) -> str:
@@ -59,10 +54,15 @@ def grounding_method(model: str, api_base: str | None) -> str:
 
 
 def request_extra(method: str, world: dict) -> dict[str, Any]:
-    """The request fields that constrain decoding; part of the cache key."""
+    """The request fields that constrain decoding (the world's domain's grounding); part of the
+    cache key."""
+    domain = task_domain(world)
+    ground = domain.grounding
+    if ground is None:
+        raise InputError(f"grounded decoding is not available for {domain.name} worlds")
     if method == "gbnf":
-        return {"extra_body": {"grammar": grounding.gbnf(world)}}
-    return {"response_format": grounding.response_format(world)}
+        return {"extra_body": {"grammar": ground.gbnf(world)}}
+    return {"response_format": ground.response_format(world)}
 
 
 def generate(
@@ -88,7 +88,7 @@ def generate(
     previous: dict[str, Any] | None = None,
 ) -> dict[str, Any]:
     """One generator round; returns the outputs of step ``llm.problem``. ``prompt`` None: the
-    world's domain's template (``warehouse_problem`` or ``household_problem``).
+    world's domain's template (:attr:`pipflow.taskdomain.TaskDomain.default_prompt`).
 
     ``max_tokens`` None: a budget from the expected answer's size (:mod:`pipflow.language.budget`).
     ``previous``: the previous round's ``round`` output (it carries the fingerprints of every
@@ -96,19 +96,19 @@ def generate(
     the prompt is varied (:func:`pipflow.language.feedback.vary`) and the ``varied`` output says
     how."""
     model = resolve_model(model)
-    kind = domain_of(world)
+    domain = task_domain(world)
     if model == "offline":
         return offline(command, world, domain_text, save)
     if not isinstance(command, str) or not command.strip():
         raise InputError("command must be a non-empty string")
-    if grounded and kind == "household":
-        raise InputError("grounded decoding is not available for household worlds yet: run without "
+    if grounded and domain.grounding is None:
+        raise InputError(f"grounded decoding is not available for {domain.name} worlds yet: run without "
                          "grounded (the debugger checks every name against the world)")
     feedback = [str(m) for m in (feedback or []) if str(m).strip()]
-    example = _example(world, domain_text)
+    example = domain.example_problem(world, domain_text)
     variables = {"command": command, "world": world, "domain": domain_text, "feedback": feedback,
                  "grounded": bool(grounded), "example": example if not grounded else None}
-    base = render(prompt or DEFAULT_PROMPTS[kind], variables, base_dir)
+    base = render(prompt or domain.default_prompt, variables, base_dir)
     base_digest = _digest(base)
     previous = previous if isinstance(previous, dict) else {}
     # every earlier round of this loop: feedback may also cycle (A, B, A), not only repeat
@@ -121,7 +121,7 @@ def generate(
         if level:
             extra, temperature_now, varied = vary(level, str(previous.get("answer") or ""), feedback, world,
                                                   bool(grounded), temperature)
-            messages = render(prompt or DEFAULT_PROMPTS[kind], {**variables, "feedback": feedback + extra}, base_dir)
+            messages = render(prompt or domain.default_prompt, {**variables, "feedback": feedback + extra}, base_dir)
         else:
             temperature_now = temperature
         if _digest(messages, temperature_now) not in {sent for _, sent in history} or level >= 8:
@@ -174,49 +174,43 @@ def generate(
            "varied": "; ".join(varied),
            "round": {"base": base_digest, "sent": _digest(messages, temperature_now), "level": level,
                      "answer": text[:ROUND_ANSWER_CHARS], "max_tokens": max_tokens, "history": history}}
-    out.update(_read_answer(text, world, grounded, domain_text))
+    out.update(_read_answer(text, world, grounded, domain_text, domain))
     if usage.get("finish_reason") == "length" and out.get("errors"):  # the model must shorten, not we raise
         out["errors"] = out["errors"] + [
             f"the answer was cut off at the {max_tokens} tokens it may take: write only what the command asks "
             + ("for: one statement per clause of the command, rules only if it states them, short \"words\""
                if grounded else "for, and no text after the ```json block")]
-    if save is not None and kind == "household" and out["goal"] is not None:
+    if save is not None and not grounded and out["goal"] is not None:  # a goal read back from the problem
         save("goal.json", out["goal"])
     return out
 
 
-def _read_answer(text: str, world: dict, grounded: bool, domain_text: str = "") -> dict[str, Any]:
-    """Problem, goal (grounded, or read back from a household problem), constraints and errors
-    of one answer."""
-    if domain_of(world) == "household":
-        return _read_household_answer(text, world, domain_text)
-    # the resolver (lark, via the robot selectors) is loaded on first use, like the parser
-    from pipflow.language.llm_orders import explain_goal, read_grounded
-
-    if grounded:  # the answer is an order: checked, resolved, then written by the problem writer
+def _read_answer(text: str, world: dict, grounded: bool, domain_text: str, domain: TaskDomain) -> dict[str, Any]:
+    """Problem, goal (grounded, or read back from the problem by the domain), constraints and
+    errors of one answer."""
+    if grounded and domain.grounding is not None:  # the answer is an order: checked, resolved, written
         try:
-            got = read_grounded(text, world)
+            return domain.grounding.read(text, world)
         except ParseIssue as issue:
             return {"problem": "", "goal": None, "constraints": [], "errors": [str(issue)]}
-        return {"problem": write_problem(world, got["goal"]), "goal": got["goal"],
-                "constraints": got["constraints"], "order": got["order"],
-                "explanation": got["explanation"], "errors": []}
     errors, problem, constraints = [], "", []
     try:
         problem = extract_problem(text)
     except ParseIssue as issue:
         errors.append(str(issue) + _unclosed_hint(text))
     try:
-        constraints = validate_constraints(extract_constraints(text), world)
+        constraints = validate_constraints(extract_constraints(text, domain.rule_fields), world, domain.rule_fields)
     except ParseIssue as issue:
         errors.append(str(issue))
     out = {"problem": problem, "goal": None, "constraints": constraints, "errors": errors}
     parsed = _parse_quietly(domain_text, problem) if problem else None
-    if parsed is not None:  # the paper's mode: its goal read back into an order, for the summary
-        from pipflow.pddl.common import stock_goals
-        from pipflow.pddl.names import goal_in_world_names
-
-        out.update(explain_goal(goal_in_world_names(stock_goals(parsed)[0], world), constraints, world))
+    if parsed is not None:  # what the domain learns from the model's problem (its goal, an explanation)
+        learned = dict(domain.read_problem(parsed, world, constraints))
+        if learned.get("errors"):
+            out["errors"] = errors + list(learned.pop("errors"))
+            out["problem"] = ""
+        learned.pop("errors", None)
+        out.update(learned)
     return out
 
 
@@ -235,35 +229,6 @@ def _unclosed_hint(text: str) -> str:
     return f" Counting lines from `(define`: {hint}" if hint else ""
 
 
-def _read_household_answer(text: str, world: dict, domain_text: str) -> dict[str, Any]:
-    """The problem and the robot-use rules as for the warehouse (household rule fields), and the
-    goal conditions read back from the problem (``{"in", "state"}``, None when it does not parse:
-    the debugger then says why). A problem whose goal states nothing is no answer: copying the
-    example unchanged would otherwise "succeed" without doing anything."""
-    errors, problem, constraints, goal = [], "", [], None
-    try:
-        problem = extract_problem(text)
-    except ParseIssue as issue:
-        errors.append(str(issue))
-    try:
-        constraints = validate_constraints(extract_constraints(text, HOUSEHOLD_FIELD_KEYS), world,
-                                           HOUSEHOLD_FIELD_KEYS)
-    except ParseIssue as issue:
-        errors.append(str(issue))
-    if problem:
-        parsed = _parse_quietly(domain_text, problem)
-        if parsed is not None:
-            from pipflow.household.problem import goal_from_problem
-
-            if not _goal_atoms(parsed):
-                errors.append("the problem's (:goal ...) states no condition: write in it the conditions "
-                              "the command asks for, e.g. (at apple fridge) or (not (is-on floorlamp))")
-                problem = ""
-            else:
-                goal = goal_from_problem(parsed)
-    return {"problem": problem, "goal": goal, "constraints": constraints, "errors": errors}
-
-
 def _parse_quietly(domain_text: str, problem: str) -> Any:
     """The UP problem, or None if it does not parse (the debugger explains that)."""
     if not domain_text:
@@ -273,30 +238,4 @@ def _parse_quietly(domain_text: str, problem: str) -> Any:
 
         return parse(domain_text, problem)
     except Exception:
-        return None
-
-
-def _goal_atoms(parsed: Any) -> list:
-    """The goal's conditions with every ``and`` flattened (an empty ``(and)`` has none)."""
-    out, stack = [], list(parsed.goals)
-    while stack:
-        g = stack.pop()
-        if g.is_and():
-            stack += list(g.args)
-        elif not (g.is_bool_constant() and g.bool_constant_value()):
-            out.append(g)
-    return out
-
-
-def _example(world: dict, domain_text: str = "") -> str | None:
-    """A problem for this world to show the expected form (warehouse: its current stock as the
-    goal; household: the world's objects and initial state with room for the goal), or None while
-    no problem writer is installed."""
-    if domain_of(world) == "household":
-        text = write_household_problem(world, {}, domain_name(domain_text, "household"))
-        return text.replace("  (:goal (and\n", f"  (:goal (and\n    {GOAL_PLACEHOLDER}\n", 1)
-    stock = {s: dict(items) for s, items in world.get("stock", {}).items() if items}
-    try:
-        return write_problem(world, stock)
-    except ImportError:
         return None

@@ -11,12 +11,14 @@ import json
 import re
 from typing import Any
 
+from pipflow.taskdomains import task_domain
+
 _PROBLEM_START = re.compile(r"\(\s*define\s*\(\s*problem\b", re.IGNORECASE)
 _FENCE = re.compile(r"```[ \t]*([A-Za-z0-9_-]*)[^\n]*\n(.*?)(?:```|\Z)", re.DOTALL)
 RULE_KEYS = ("only", "never")
+#: the fields a rule may narrow by when no world says otherwise (the default domain's; a world's
+#: task domain has its own: :attr:`pipflow.taskdomain.TaskDomain.rule_fields`)
 FIELD_KEYS = ("product", "from", "to")
-#: the fields a household rule may narrow by (domains/household.actions.yaml `fields`)
-HOUSEHOLD_FIELD_KEYS = ("object", "from", "to", "at")
 
 
 class ParseIssue(ValueError):
@@ -119,10 +121,12 @@ def extract_constraints(text: str, fields: tuple[str, ...] = FIELD_KEYS) -> list
 
 
 def validate_constraints(rules: list[Any], world: dict | None = None,
-                         fields: tuple[str, ...] = FIELD_KEYS) -> list[dict[str, Any]]:
+                         fields: tuple[str, ...] | None = None) -> list[dict[str, Any]]:
     """Check each rule's shape (and, given a world, its names); return them normalized.
-    ``fields``: the keys a rule may narrow by (warehouse by default; household worlds:
-    :data:`HOUSEHOLD_FIELD_KEYS`)."""
+    ``fields``: the keys a rule may narrow by (None: the world's task domain's rule fields, or
+    :data:`FIELD_KEYS` without a world)."""
+    if fields is None:
+        fields = task_domain(world).rule_fields if world is not None else FIELD_KEYS
     out = []
     for n, rule in enumerate(rules, 1):
         where = f"constraint {n}"
@@ -153,15 +157,9 @@ def validate_constraints(rules: list[Any], world: dict | None = None,
 
 def _check_names(where: str, rule: dict[str, Any], world: dict) -> None:
     kind = "only" if "only" in rule else "never"
-    if world.get("domain") == "household":
-        places, objects = world.get("places", {}), world.get("objects", {})
-        pools = {kind: world.get("robots", {}), "object": {**places, **objects}, "from": places,
-                 "to": places, "at": places}
-        what = {kind: "robot", "object": "place or object", "from": "place", "to": "place", "at": "place"}
-    else:
-        pools = {kind: world.get("robots", {}), "product": world.get("products", {}),
-                 "from": world.get("shelves", {}), "to": world.get("shelves", {})}
-        what = {kind: "robot", "product": "product", "from": "shelf", "to": "shelf"}
+    names = task_domain(world).rule_names(world)  # field -> (its names in this world, what they are)
+    pools = {kind: world.get("robots", {}), **{key: pool for key, (pool, _) in names.items()}}
+    what = {kind: "robot", **{key: label for key, (_, label) in names.items()}}
     for key, pool in pools.items():
         values = rule.get(key)
         for v in ([values] if isinstance(values, str) else values or []):

@@ -5,9 +5,11 @@ UP's PDDLReader does all the parsing. Its errors are precise but terse (a pypars
 ``SyntaxError`` with a character span, a ``KeyError`` for an unknown type); this module turns each
 into one message with the line and column, the offending token, what was expected, and for an
 undefined name the closest names that do exist (difflib). A problem that parses is then checked
-against the world: its objects and initial state must be exactly the world's, because a generated
-problem that invents a shelf or a few units of stock would be "solved" in a world that is not
-ours. Every mismatch is reported at once.
+against the world by the world's task domain (:meth:`pipflow.taskdomain.TaskDomain.world_mismatches`):
+its objects and initial state must be exactly the world's, because a generated problem that
+invents a shelf or a few units of stock would be "solved" in a world that is not ours. Every
+mismatch is reported at once. :func:`world_mismatches` here is that check for stock problems
+(shelves, products, magnitudes), the default domain's.
 """
 from __future__ import annotations
 
@@ -21,6 +23,7 @@ from pipflow.pddl.names import pddl_name
 from pipflow.pddl.textpos import find_word, line_col, strip_comments
 from pipflow.pddl.writer import magnitudes
 from pipflow.suggest import did_you_mean_clause
+from pipflow.taskdomains import task_domain
 
 _SPAN = re.compile(r"line: (\d+), col (\d+) to line: (\d+), col (\d+)")
 _TOKEN = re.compile(r"[^\s()]+|[()]")
@@ -262,7 +265,8 @@ def explain_parse_error(exc: Exception, text: str, domain_text: str) -> str:
 # the world check
 # ---------------------------------------------------------------------------------------------
 def world_mismatches(problem: Any, text: str, world: dict) -> list[str]:
-    """Every way the parsed problem's objects and initial state differ from the world's."""
+    """Every way the parsed stock problem's objects and initial state differ from the world's
+    (shelves, products, stock, loads, capacities, magnitudes)."""
     out: list[str] = []
     shelves, products = world["shelves"], world["products"]
     by_type: dict[str, list[str]] = {}
@@ -334,10 +338,6 @@ def debug_problem(problem_text: str | None, domain: str, world: dict | None = No
     if m and dname and m.group(1).lower() != dname.group(1).lower():
         messages.append(f"{find_word(problem_text, m.group(1))}the problem names domain {m.group(1)!r} "
                         f"but the domain is {dname.group(1)!r}")
-    if world is not None and world.get("domain") == "household":  # a household world (pipflow.household)
-        from pipflow.household.problem import world_mismatches as household_mismatches
-
-        messages += household_mismatches(problem, problem_text, world)
-    elif world is not None:
-        messages += world_mismatches(problem, problem_text, world)
+    if world is not None:  # objects and initial state against the world: its task domain's check
+        messages += task_domain(world).world_mismatches(problem, problem_text, world)
     return DebugReport(not messages, messages, problem)

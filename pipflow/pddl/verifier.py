@@ -6,7 +6,9 @@ Two independent checks, both reported in full:
   would otherwise pick another validator). For an inapplicable action the message adds the values
   of the fluents in its failed precondition at that point, e.g. ``stock(shelf4, product2) = 0``,
   which is what a model needs to repair the problem.
-* **Goal** (against the world): every object the goal names exists; each goal value is a count
+* **Goal** (against the world): the world's task domain judges it
+  (:meth:`pipflow.taskdomain.TaskDomain.check_goal`); for stock goals (:func:`goal_problems`,
+  the default domain's check): every object the goal names exists; each goal value is a count
   or a bound ``{at_least, at_most}`` (read from ``=``, ``>=``, ``<=``, ``>``, ``<`` goals); some
   final state meets it: no count or lower bound exceeds a shelf's capacity or the units that
   exist, upper bounds leave room for every unit, the units the goal leaves free fit somewhere. An
@@ -18,6 +20,8 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 from typing import Any
+
+from pipflow.taskdomains import task_domain
 
 _FLUENT = re.compile(r"([A-Za-z][\w-]*)\(([^()]*)\)")
 
@@ -84,24 +88,14 @@ def _explain_inapplicable(problem: Any, plan: Any, index: int, ups_message: str)
 
 def verify_plan(problem: Any, plan: list[dict] | None, world: dict | None = None) -> VerifyReport:
     """Validate ``plan`` on UP ``problem`` and check the problem's goal against ``world``."""
-    from pipflow.pddl.common import environment, format_plan, stock_goals
+    from pipflow.pddl.common import environment, format_plan
     from pipflow.pddl.convert import data_to_plan
-    from pipflow.pddl.names import goal_in_world_names
     from unified_planning.engines import ValidationResultStatus
     from unified_planning.shortcuts import PlanValidator
 
     environment()
-    goal = goal_in_world_names(stock_goals(problem)[0], world)  # other goal forms: the validator's
-    messages: list[str] = []
-    refusal = None
-    if world is not None and world.get("domain") == "household":
-        from pipflow.household.problem import goal_from_problem, goal_refusal
-
-        refusal = goal_refusal(world, goal_from_problem(problem))
-        if refusal:
-            refusal = f"the command cannot be done in this world: {refusal}"
-    elif world is not None:
-        messages, refusal = goal_problems(world, goal)
+    judged = task_domain(world).check_goal(problem, world)  # the goal against the world: the domain's
+    goal, messages, refusal = judged.goal, list(judged.messages), judged.refusal
     if plan is None:
         messages.append("there is no plan to verify (the planner did not produce one)")
     else:

@@ -1,4 +1,5 @@
-"""World + goal -> PDDL problem text for domains/warehouse.pddl.
+"""World + goal -> PDDL problem text for stock problems (shelves, products, magnitudes), the
+default task domain's (``domains/warehouse.pddl``).
 
 The back half of the offline problem generator: its objects and initial state are exactly the
 world's (every stock count written, zeros included, because ENHSP treats an unset fluent as
@@ -13,6 +14,7 @@ from typing import Any
 
 from pipflow.errors import InputError
 from pipflow.goalcounts import is_bound, value_problems
+from pipflow.taskdomain import DEFAULT_DOMAIN
 
 LARGEST_MOVE = 6
 """The paper's domain moves 1..6 units at a time (objects magnitude1..magnitude6)."""
@@ -47,7 +49,7 @@ def goal_conditions(shelf: str, product: str, value: Any) -> list[str]:
 
 
 def write_problem(world: dict, goal: dict[str, dict[str, Any]], name: str = "task",
-                  domain: str = "warehouse") -> str:
+                  domain: str = DEFAULT_DOMAIN) -> str:
     """PDDL problem text for moving the world's stock to ``goal`` (``{shelf: {product: value}}``,
     a value being an exact count or a bound mapping)."""
     shelves, products = list(world["shelves"]), list(world["products"])

@@ -7,7 +7,7 @@ from __future__ import annotations
 import json
 from typing import Any
 
-from pipflow.benchdomains import REFUSED_KINDS
+from pipflow.taskdomain import REFUSED_KINDS
 from pipflow.goalcounts import limits
 
 
