@@ -236,3 +236,29 @@ def test_the_simulator_refuses_what_the_garden_cannot_do(garden):
     assert out["jumps"]["shears"][0]["subtask"] == "s2"  # it started at [11, 6], not [0.5, 0.5]
     assert out["executed"] == 0 and out["goal_met"] is False and out["conditions"]["unmet"]
     assert out["final_state"]["ripe"]["south"]["pumpkin"] == 2  # nothing changed
+
+
+def test_a_problem_is_read_back_and_checked_against_the_garden(garden, garden_plugin_site):
+    """The debugger's and verifier's hooks: a problem's goal read back in the garden's form (as
+    the reader wrote it), an invented initial state named, an unreachable goal refused."""
+    from pipflow.pddl.common import parse
+
+    from pipflow_garden.domain import GardenDomain
+
+    domain, world = GardenDomain(), garden["allotment"]
+    read = garden["language"].read_command("prune south, then pick at least two beans from east into the crate",
+                                           world)
+    text = domain.write_problem(world, read["goal"], "garden")
+    parsed = parse(domain.pddl_domain(), text)
+    assert domain.read_problem(parsed, world, []) == {"goal": read["goal"]}
+    assert domain.world_mismatches(parsed, text, world) == []
+    assert domain.check_goal(parsed, world).refusal is None
+
+    forged = domain.write_problem(world, {"stored": {"shed": {"pumpkin": 9}}}, "garden").replace(
+        "(= (ripe north tomato) 4)", "(= (ripe north tomato) 9)")
+    parsed = parse(domain.pddl_domain(), forged)
+    assert domain.world_mismatches(parsed, forged, world) == [
+        "initial state: (ripe north tomato) is 9 in the problem, 4 in the garden"]
+    assert "shed cannot hold 9 pumpkin: at most 2 can be there" in domain.check_goal(parsed, world).refusal
+    empty = parse(domain.pddl_domain(), domain.example_problem(world, "(define (domain garden))"))
+    assert "states no condition" in domain.read_problem(empty, world, [])["errors"][0]

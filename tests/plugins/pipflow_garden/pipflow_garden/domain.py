@@ -6,22 +6,18 @@ scoring); nothing here is garden knowledge pipflow has to have.
 """
 from __future__ import annotations
 
-import re
 from pathlib import Path
 from typing import Any, Callable, Mapping
 
-from pipflow.taskdomain import TaskDomain
+from pipflow.language.offline import NO_USAGE  # the usage record of a reading that called no model
+from pipflow.taskdomain import GoalCheck, TaskDomain, pddl_domain_name
 
-from pipflow_garden import language, problem, scoring, simulation, world as worlds
+from pipflow_garden import checks, language, problem, scoring, simulation, world as worlds
 
 HERE = Path(__file__).resolve().parent
 DATA = HERE / "data"
-
-
-def pddl_domain_name(domain_text: str, default: str = "garden") -> str:
-    """The name after ``(domain`` in a PDDL domain's text (the problem must name it)."""
-    m = re.search(r"\(\s*domain\s+([^\s()]+)", domain_text or "", flags=re.IGNORECASE)
-    return m.group(1) if m else default
+#: where the example problem of the prompt leaves room for the goal
+GOAL_PLACEHOLDER = "; the goal conditions of the command go here"
 
 
 class GardenDomain(TaskDomain):
@@ -42,7 +38,7 @@ class GardenDomain(TaskDomain):
         return worlds.vary_starts(worlds.load_world(path), seed)
 
     def describe(self, world: dict) -> str:
-        return (f"garden {world['name']}: {len(world['beds'])} beds, {len(world['taps'])} taps, "
+        return (f"{len(world['beds'])} beds, {len(world['taps'])} taps, "
                 f"{len(world['stores'])} stores, {len(world['robots'])} robots")
 
     def rule_names(self, world: dict) -> Mapping[str, tuple[Any, str]]:
@@ -51,16 +47,40 @@ class GardenDomain(TaskDomain):
     def read_offline(self, command: str, world: dict, domain_text: str = "",
                      save: Callable[[str, Any], Any] | None = None) -> dict:
         read = language.read_command(command, world)
-        text = problem.write_problem(world, read["goal"], pddl_domain_name(domain_text))
+        text = problem.write_problem(world, read["goal"], pddl_domain_name(domain_text, self.name))
         if save is not None:
             save("order.json", {"order": read["order"], "explanation": read["explanation"]})
             save("problem.pddl", text)
         return {"problem": text, "goal": read["goal"], "constraints": read["constraints"], "messages": [],
-                "response": None, "usage": {}, "errors": [], "order": read["order"],
+                "response": "", "usage": dict(NO_USAGE), "errors": [], "order": read["order"],
                 "explanation": read["explanation"]}
 
     def write_problem(self, world: dict, goal: Any, domain_name: str) -> str:
         return problem.write_problem(world, goal, domain_name)
+
+    def example_problem(self, world: dict, domain_text: str = "") -> str | None:
+        """The garden's objects and initial state, with room left for the goal."""
+        text = problem.write_problem(world, {}, pddl_domain_name(domain_text, self.name))
+        return text.replace("  (:goal (and\n", f"  (:goal (and\n    {GOAL_PLACEHOLDER}\n", 1)
+
+    def read_problem(self, parsed: Any, world: dict, constraints: list[dict]) -> dict:
+        """A model's goal read back; a goal that states nothing, or a condition the garden's goal
+        form cannot hold, is feedback (never dropped)."""
+        if not checks.goal_atoms(parsed):
+            return {"errors": ["the problem's (:goal ...) states no condition: write the conditions the command "
+                               "asks for, e.g. (watered north) or (>= (stored shed tomato) 3)"]}
+        goal, unread = checks.goal_from_problem(parsed)
+        return {"goal": goal, "errors": unread} if unread else {"goal": goal}
+
+    def world_mismatches(self, parsed: Any, problem_text: str, world: dict) -> list[str]:
+        return checks.world_mismatches(parsed, world)
+
+    def check_goal(self, parsed: Any, world: dict | None) -> GoalCheck:
+        goal, unread = checks.goal_from_problem(parsed)
+        if world is None:
+            return GoalCheck(goal, unread)
+        refusal = checks.goal_refusal(world, goal)
+        return GoalCheck(goal, unread, f"the command cannot be done in this garden: {refusal}" if refusal else None)
 
     def simulate(self, world: dict, schedule: dict, graph: dict | None, goal: Any, *,
                  snapshots: bool = False, out_dir: Path | None = None,

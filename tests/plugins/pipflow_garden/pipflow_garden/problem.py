@@ -9,16 +9,8 @@ from typing import Any
 def write_problem(world: dict, goal: dict, domain_name: str = "garden", name: str = "garden-task") -> str:
     """PDDL problem text for ``goal`` (the reader's goal form) in ``world``."""
     beds, taps, stores, crops = list(world["beds"]), list(world["taps"]), list(world["stores"]), list(world["crops"])
-    init = []
-    for b, spec in world["beds"].items():
-        init.append(f"(overgrown {b})" if spec["overgrown"] else f"(clear {b})")
-        if spec["watered"]:
-            init.append(f"(watered {b})")
-        init += [f"(= (ripe {b} {c}) {spec['ripe'].get(c, 0)})" for c in crops]
-    for s, spec in world["stores"].items():
-        init += [f"(= (stored {s} {c}) {spec['holds'].get(c, 0)})" for c in crops]
-        init.append(f"(= (room {s}) {spec['room'] - sum(spec['holds'].values())})")
-    init += [f"(= (weight {c}) {spec['weight']})" for c, spec in world["crops"].items()]
+    init = [f"({fluent} {' '.join(args)})" if value is True else f"(= ({fluent} {' '.join(args)}) {value})"
+            for (fluent, args), value in initial_facts(world).items()]
     conds = [f"(watered {b})" for b in goal.get("watered", [])]
     conds += [f"(clear {b})" for b in goal.get("clear", [])]
     for s, items in (goal.get("stored") or {}).items():
@@ -32,6 +24,22 @@ def write_problem(world: dict, goal: dict, domain_name: str = "garden", name: st
              "  (:init", *(f"    {f}" for f in init), "  )",
              "  (:goal (and", *(f"    {c}" for c in conds), "  ))", ")"]
     return "\n".join(lines) + "\n"
+
+
+def initial_facts(world: dict) -> dict[tuple[str, tuple[str, ...]], bool | int]:
+    """The initial state of ``world``: true predicates and every fluent's value (zeros included)."""
+    crops = list(world["crops"])
+    facts: dict[tuple[str, tuple[str, ...]], bool | int] = {}
+    for b, spec in world["beds"].items():
+        facts[("overgrown" if spec["overgrown"] else "clear", (b,))] = True
+        if spec["watered"]:
+            facts[("watered", (b,))] = True
+        facts.update({("ripe", (b, c)): spec["ripe"].get(c, 0) for c in crops})
+    for s, spec in world["stores"].items():
+        facts.update({("stored", (s, c)): spec["holds"].get(c, 0) for c in crops})
+        facts[("room", (s,))] = spec["room"] - sum(spec["holds"].values())
+    facts.update({("weight", (c,)): spec["weight"] for c, spec in world["crops"].items()})
+    return facts
 
 
 def _compare(fluent: str, value: Any) -> list[str]:
