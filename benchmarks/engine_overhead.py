@@ -15,6 +15,12 @@ not (much). With a baseline, both codes are measured in child processes, alterna
 times each, and the fastest of each is kept. Run records go to the temporary folder: with
 ``TMPDIR=/dev/shm`` the figures are the engine's own cost, without the disk's (on a busy disk
 each file a step's record creates costs 0.3-1 ms, whatever the engine does).
+
+It also measures the engine's fixed cost per run, which the per-step figure leaves out: one
+``pipflow run`` of a one-step workflow in a fresh process (interpreter start, the engine's and the
+steps' imports, validation, the run record), best of ``--rounds`` x ``--repeat`` runs, for each
+code in turn. No step parses a command, so neither code touches the command parser or its cache
+(benchmarks/pipeline.py measures that warm and cold); the step cache is off in every run.
 """
 from __future__ import annotations
 
@@ -112,6 +118,24 @@ def measure_child(n: int, repeat: int, site: Path | None) -> list[dict]:
     return json.loads(proc.stdout.strip().splitlines()[-1])
 
 
+def startup(tmp: Path, site: Path | None) -> dict:
+    """One `pipflow run` of a one-step workflow in a fresh process: wall and CPU seconds (the
+    child's own, from ``os.wait4``)."""
+    wf_file = tmp / "one.yaml"
+    if not wf_file.exists():
+        wf_file.write_text(yaml.safe_dump(chain(1), sort_keys=False))
+    args = [sys.executable, "-m", "pipflow.engine.cli", "run", str(wf_file), "--no-cache", "-q",
+            "--runs-dir", str(tmp / "runs-startup")]
+    env = baseline_env(site) if site else None
+    started = time.perf_counter()
+    proc = subprocess.Popen(args, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, cwd=tmp, env=env)
+    _, status, usage = os.wait4(proc.pid, 0)
+    wall = time.perf_counter() - started
+    if os.waitstatus_to_exitcode(status) != 0:
+        raise SystemExit(f"{'baseline' if site else 'current'} one-step run failed (exit {status})")
+    return {"wall": wall, "cpu": usage.ru_utime + usage.ru_stime}
+
+
 def _best(runs: list[list[dict]]) -> list[dict]:
     return [dict(min(rows, key=lambda r: r["overhead"]), cpu_overhead=min(r["cpu_overhead"] for r in rows))
             for rows in zip(*runs)]
@@ -133,16 +157,23 @@ def main(argv: list[str] | None = None) -> int:
         return 0
     load_before = load_text()
     base_rows: list[dict] = []
-    if args.baseline:
-        with tempfile.TemporaryDirectory(prefix="pipflow-bench-base-") as d:
-            site = baseline_site(args.baseline, args.work or Path(d))
+    starts: dict[str, list[dict]] = {"current": [], "baseline": []}
+    with tempfile.TemporaryDirectory(prefix="pipflow-bench-start-") as d:
+        site = baseline_site(args.baseline, args.work or Path(d)) if args.baseline else None
+        codes = [("current", None)] + ([("baseline", site)] if site else [])
+        for name, where in codes:  # unmeasured: bytecode compiled for each code
+            startup(Path(d), where)
+        for _ in range(max(1, args.rounds) * max(1, args.repeat)):
+            for name, where in codes:  # the codes take turns, so they share the load
+                starts[name].append(startup(Path(d), where))
+        if site:
             current_runs, base_runs = [], []
             for _ in range(max(1, args.rounds)):
                 current_runs.append(measure_child(n, args.repeat, None))
                 base_runs.append(measure_child(n, args.repeat, site))
-        rows, base_rows = _best(current_runs), _best(base_runs)
-    else:
-        rows = measure_all(n, args.repeat, args.profile)
+            rows, base_rows = _best(current_runs), _best(base_runs)
+        else:
+            rows = measure_all(n, args.repeat, args.profile)
     print(f"engine overhead, {n} trivial core.value steps (validate + run + run record; best of {args.repeat}"
           + (f" x {args.rounds} child runs per code" if args.baseline else "") + ")")
     print(f"load average before: {load_before}; after: {load_text()} ({os.cpu_count()} CPUs)")
@@ -164,6 +195,13 @@ def main(argv: list[str] | None = None) -> int:
           "(less moved by other processes than wall time; the disk's waits are not in it)")
     if base_rows:
         print(f"baseline: git revision {args.baseline}, measured in the same invocation; ratio = current / baseline")
+    best = {name: (min(r["wall"] for r in rows_), min(r["cpu"] for r in rows_)) for name, rows_ in starts.items() if rows_}
+    line = (f"fixed cost per run (a one-step workflow in a fresh process, best of {len(starts['current'])}): "
+            f"current {best['current'][0]:.3f} s wall, {best['current'][1]:.3f} s cpu")
+    if "baseline" in best:
+        line += (f"; baseline {best['baseline'][0]:.3f} s wall, {best['baseline'][1]:.3f} s cpu; ratio "
+                 f"{best['current'][0] / best['baseline'][0]:.2f} wall, {best['current'][1] / best['baseline'][1]:.2f} cpu")
+    print(line)
     verdict = "OK" if worst < 1.0 else "OVER TARGET"
     print(f"worst overhead per step: {worst:.3f} ms (target < 1 ms): {verdict}")
     return 0 if worst < 1.0 else 1
