@@ -321,3 +321,19 @@ def test_old_parsers_are_pruned_and_other_files_kept(grammar_cache, monkeypatch)
     newest = sorted(f"{earley.parser_key(t, {'parser': 'earley', 'lexer': 'dynamic'})}.earley" for t in grammars[2:])
     assert kept == newest
     assert not old_tmp.exists() and new_tmp.exists() and (grammar_cache / "notes.txt").exists()
+
+
+def test_a_parser_file_others_may_write_is_not_loaded(grammar_cache, monkeypatch):
+    """Unpickling runs code: a file writable by the group or others is rebuilt, not loaded."""
+    from pipflow.language import earley
+
+    earley.earley_parser('start: "a"\n', lexer="dynamic")
+    entry = next(grammar_cache.glob("[0-9a-f]*.earley"))
+    assert entry.stat().st_mode & 0o077 == 0  # written private
+    entry.chmod(0o666)
+    monkeypatch.setattr(earley, "_MEMORY", {})
+    built = []
+    monkeypatch.setattr(earley, "_build", lambda g, o: built.append(g) or earley.Lark(g, **o))
+    assert earley.earley_parser('start: "a"\n', lexer="dynamic").parse("a").data == "start"
+    assert built == ['start: "a"\n']  # rebuilt, and stored again private
+    assert entry.stat().st_mode & 0o077 == 0

@@ -9,9 +9,9 @@ a tenth of the build (0.04-0.07 s against 0.4-0.8 s).
 The key is a hash of everything that shapes the parser: the grammar text, the options (the lexer
 class by its qualified name), lark's version, Python's version and this module's format. An
 entry that is missing, stale, damaged or written by anything else is rebuilt, never an error: a
-file is trusted only when its header names this format and key and the SHA-256 of its body
-matches (that catches damage, not a forger who can write the user's cache folder, who could
-just as well edit pipflow itself).
+file is trusted only when it belongs to the user, nobody else may write it, its header names this
+format and key, and the SHA-256 of its body matches (that catches damage and other accounts, not a
+forger with the user's own rights, who could just as well edit pipflow itself).
 
 Where: ``$PIPFLOW_GRAMMAR_CACHE_DIR`` if set (set to the empty string to keep parsers in memory
 only), else ``$XDG_CACHE_HOME/pipflow/grammar`` (``~/.cache/pipflow/grammar``), beside the step
@@ -125,7 +125,10 @@ def _header(key: str, digest: str) -> bytes:
 def _load(folder: Path, key: str) -> Lark | None:
     """The parser stored under ``key``, or ``None`` for anything that does not verify."""
     try:
-        raw = _entry(folder, key).read_bytes()
+        with open(_entry(folder, key), "rb") as fh:
+            if not _own(os.fstat(fh.fileno())):
+                return None
+            raw = fh.read()
     except OSError:
         return None
     head, sep, body = raw.partition(b"\n")
@@ -141,6 +144,14 @@ def _load(folder: Path, key: str) -> Lark | None:
         if paused:
             gc.enable()
     return parser if isinstance(parser, Lark) else None
+
+
+def _own(stat: os.stat_result) -> bool:
+    """Whether a file is this user's and writable by nobody else: unpickling runs code, so a file
+    another account could have written (a shared or mistyped cache folder) is never loaded."""
+    if not hasattr(os, "getuid"):
+        return True
+    return stat.st_uid == os.getuid() and not stat.st_mode & 0o022
 
 
 class _Pickler(pickle.Pickler):
