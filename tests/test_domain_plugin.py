@@ -132,7 +132,12 @@ def test_without_the_plugin_the_domain_is_unknown(tmp_path):
     assert "Traceback" not in proc.stderr
     proc = pipflow(tmp_path / "empty", tmp_path, "run", str(PACKAGE / "pipflow_garden" / "workflows" / "garden.yaml"),
                    "--runs-dir", "runs")
-    assert proc.returncode == 2 and "unknown step 'garden.load'" in proc.stderr
+    assert proc.returncode == 2 and "unknown step 'garden.simulate'" in proc.stderr
+    world = tmp_path / "world.yaml"
+    shutil.copy(PACKAGE / "pipflow_garden" / "data" / "world.yaml", world)
+    proc = pipflow(tmp_path / "empty", tmp_path, "run", "warehouse", "-i", f"world={world}", "--runs-dir", "runs")
+    assert proc.returncode == 2, proc.stderr
+    assert "unknown task domain 'garden'" in proc.stderr and "Traceback" not in proc.stderr
 
 
 def test_the_registry_finds_the_domain_through_its_entry_point(garden_plugin_site, tmp_path):
