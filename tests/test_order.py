@@ -72,7 +72,8 @@ def test_invalid_orders_are_refused_with_where(bad: dict, where: str) -> None:
      {"b": {"x": 0, "z": 2}, "a": {"x": 10}}),
     ({"op": "swap", "places": {"names": ["a", "b"]}, "items": {"all": True}},
      {"a": {"x": 6, "y": 0, "z": 2}, "b": {"x": 4, "y": 3, "z": 0}}),
-    ({"op": "empty", "places": A, "items": {"all": True}}, {"a": {"x": 0, "y": 0}}),
+    # empty: every product of the world at 0, z too though a holds none (nothing may be parked there)
+    ({"op": "empty", "places": A, "items": {"all": True}}, {"a": {"x": 0, "y": 0, "z": 0}}),
     ({"op": "fill", "places": A, "items": Z, "only": False}, {"a": {"z": 13}}),  # capacity 20 - 7 others
     ({"op": "keep", "places": A, "items": {"all": True}, "inflow_only": False}, {"a": {"x": 4, "y": 3, "z": 0}}),
     ({"op": "distribute", "places": {"names": ["a", "c"]}, "items": Y, "amount": {"count": 3}},

@@ -180,8 +180,8 @@ def test_other_world_names() -> None:
     ("all product2 in shelf1", {"shelf1": {"product2": 10}}),
     ("every product2 should be on shelf1", {"shelf1": {"product2": 10}}),
     ("no product3 on shelf2", {"shelf2": {"product3": 0}}),
-    ("shelf4 should be empty", {"shelf4": {"product1": 0, "product3": 0}}),
-    ("empty shelf6", {"shelf6": {"product4": 0}}),
+    ("shelf4 should be empty", {"shelf4": {"product1": 0, "product2": 0, "product3": 0, "product4": 0, "product5": 0}}),  # every product of the world, held or not
+    ("empty shelf6", {"shelf6": {"product1": 0, "product2": 0, "product3": 0, "product4": 0, "product5": 0}}),
     ("add 5 product1 to shelf2", {"shelf2": {"product1": 13}}),
     ("remove 2 product1 from shelf1", {"shelf1": {"product1": 8}}),
     ("move 3 product1 from shelf1 to shelf4", {"shelf1": {"product1": 7}, "shelf4": {"product1": 18}}),
@@ -217,7 +217,7 @@ def test_full_counts_goods_the_command_keeps() -> None:
 
 def test_quantifiers_in_other_world() -> None:
     assert goal("all apples in rack_b", DEPOT) == {"rack_b": {"apple": 5}}
-    assert goal("the cold-store should be empty", DEPOT) == {"cold-store": {"apple": 0, "pear": 0}}
+    assert goal("the cold-store should be empty", DEPOT) == {"cold-store": {"apple": 0, "widget2": 0, "pear": 0}}
     assert goal("move 2 apples from rack_a to cold-store", DEPOT) == {
         "rack_a": {"apple": 2}, "cold-store": {"apple": 3}}
     assert goal("fill bin7 with widget2", DEPOT) == {"bin7": {"widget2": 10}}
@@ -338,7 +338,7 @@ def test_nothing_else_zeroes_other_goods() -> None:
     assert goal("There should be 7 product1 and 1 product2 in shelf3 and nothing else") == {
         "shelf3": {"product1": 7, "product2": 1, "product3": 0}}
     assert goal("There should be 5 product1 in shelf2, and shelf4 should be empty.") == {
-        "shelf2": {"product1": 5}, "shelf4": {"product1": 0, "product3": 0}}
+        "shelf2": {"product1": 5}, "shelf4": {"product1": 0, "product2": 0, "product3": 0, "product4": 0, "product5": 0}}
 
 
 def test_delivery_verb_makes_place_a_destination() -> None:
@@ -399,8 +399,7 @@ def test_product_first_and_other_phrasings(command: str, world: dict, expected: 
      {"shelf1": {"product1": 4}, "shelf2": {"product1": 6}}),
     ("put 4 product1 and 6 product2 on shelf1 and shelf2 respectively", HALL,
      {"shelf1": {"product1": 4}, "shelf2": {"product2": 6}}),
-    ("empty shelf1 and shelf4", HALL, {"shelf1": {"product1": 0, "product2": 0, "product3": 0},
-                                       "shelf4": {"product1": 0, "product3": 0}}),
+    ("empty shelf1 and shelf4", HALL, {**{"shelf1": {"product1": 0, "product2": 0, "product3": 0, "product4": 0, "product5": 0}}, **{"shelf4": {"product1": 0, "product2": 0, "product3": 0, "product4": 0, "product5": 0}}}),
     ("none of product3 on shelf2", HALL, {"shelf2": {"product3": 0}}),
     ("no product3 on shelf1 and shelf3", HALL, {"shelf1": {"product3": 0}, "shelf3": {"product3": 0}}),
     ("put 3 apples on A1 and bay 12 each", YARD, {"A1": {"apple": 3}, "bay-12": {"apple": 3}}),

@@ -267,11 +267,12 @@ def _empty(st: _State, s: dict) -> None:
     words = s.get("words", "")
     places = _names(s.get("places"), st.places)
     st.check_names(places, [], words)
+    # "empty P" leaves P holding nothing: every product of the world at 0, including those it does
+    # not hold now, so no other statement or the planner may park units there (one rule with the
+    # benchmark's gold, docs/language.md and benchmarks/language/README.md, convention 3)
+    sel = s.get("items") or {"all": True}
     for p in places:
-        sel = s.get("items") or {"all": True}
-        items = _names(sel, st.products) if "names" in sel else (
-            [i for i in _names(sel, st.products) if st.cur(p, i) > 0] or _names(sel, st.products))
-        for i in items:
+        for i in _names(sel, st.products):
             st.put(p, i, 0, "emptied", words, True)
 
 
