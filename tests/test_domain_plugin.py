@@ -15,16 +15,19 @@ from pathlib import Path
 
 import pytest
 
+from fake_openai import FakeOpenAI
 from pipflow.errors import Refusal, TranslationError, WorldError
 
 PACKAGE = Path(__file__).resolve().parent / "plugins" / "pipflow_garden"
 
 
-def pipflow(site: Path, cwd: Path, *args: str, timeout: float = 300) -> subprocess.CompletedProcess:
+def pipflow(site: Path, cwd: Path, *args: str, timeout: float = 300, extra_env: dict | None = None
+            ) -> subprocess.CompletedProcess:
     exe = shutil.which("pipflow")
     cmd = [exe] if exe else [sys.executable, "-m", "pipflow.engine.cli"]
-    env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(site), os.environ.get("PYTHONPATH", "")]).rstrip(os.pathsep),
-           "PIPFLOW_CACHE_DIR": str(cwd / "cache")}
+    env = {**{k: v for k, v in os.environ.items() if k != "PIPFLOW_MODEL"},  # offline unless a test says
+           "PYTHONPATH": os.pathsep.join([str(site), os.environ.get("PYTHONPATH", "")]).rstrip(os.pathsep),
+           "PIPFLOW_CACHE_DIR": str(cwd / "cache"), **(extra_env or {})}
     return subprocess.run([*cmd, *args], cwd=cwd, env=env, capture_output=True, text=True, timeout=timeout)
 
 
@@ -145,7 +148,8 @@ def test_the_registry_finds_the_domain_through_its_entry_point(garden_plugin_sit
             "d = domain_named('garden')\n"
             "w = d.load_world(d.pddl_domain().parent / 'world.yaml')\n"
             "print(known_domains(), type(task_domain(w)).__name__, d.pddl_domain().name, d.action_metadata().name)\n")
-    env = {**os.environ, "PYTHONPATH": str(garden_plugin_site)}
+    env = {**{k: v for k, v in os.environ.items() if k != "PIPFLOW_MODEL"},  # offline unless a test says
+           "PYTHONPATH": str(garden_plugin_site)}
     proc = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, env=env, capture_output=True, text=True, timeout=60)
     assert proc.returncode == 0, proc.stderr
     assert "'garden'" in proc.stdout and "GardenDomain garden.pddl garden.actions.yaml" in proc.stdout
@@ -267,3 +271,31 @@ def test_a_problem_is_read_back_and_checked_against_the_garden(garden, garden_pl
     assert "shed cannot hold 9 pumpkin: at most 2 can be there" in domain.check_goal(parsed, world).refusal
     empty = parse(domain.pddl_domain(), domain.example_problem(world, "(define (domain garden))"))
     assert "states no condition" in domain.read_problem(empty, world, [])["errors"][0]
+
+
+def test_a_models_problem_goes_through_the_refinement_loop(garden_plugin_site, tmp_path):
+    """The LLM path of pipflow's generic generator, debugger and verifier serves the garden: a
+    model (a scripted OpenAI-compatible server on loopback) first invents an initial state, the
+    garden's world check says so, the next answer is accepted and its goal read back."""
+    site_world = garden_plugin_site / "pipflow_garden" / "data" / "world.yaml"
+    code = ("import sys; sys.path.insert(0, sys.argv[1])\n"
+            "from pipflow_garden.domain import GardenDomain\n"
+            "d = GardenDomain(); w = d.load_world(sys.argv[2])\n"
+            "print(d.write_problem(w, {'stored': {'shed': {'tomato': 4}}}, 'garden'))\n")
+    good = subprocess.run([sys.executable, "-c", code, str(garden_plugin_site), str(site_world)],
+                          capture_output=True, text=True, check=True).stdout
+    forged = good.replace("(= (ripe north tomato) 4)", "(= (ripe north tomato) 9)")
+    answer = "```pddl\n{}\n```\n```json\n{{\"constraints\": []}}\n```"
+    workflow = garden_plugin_site / "pipflow_garden" / "workflows" / "garden.yaml"
+    with FakeOpenAI([answer.format(forged), answer.format(good)]) as server:
+        proc = pipflow(garden_plugin_site, tmp_path, "run", str(workflow), "-i", "command=Bring 3 tomatoes to the shed.",
+                       "-i", "model=openai/fake", "-i", f"api_base={server.api_base}", "--runs-dir", "runs",
+                       extra_env={"OPENAI_API_KEY": "sk-test-not-a-real-key-000"})
+        assert proc.returncode == 0, proc.stderr
+        assert len(server.requests) == 2
+        second_prompt = json.dumps(server.requests[1]["messages"])
+    assert "(ripe north tomato) is 9 in the problem, 4 in the garden" in second_prompt
+    assert "bed north: clear, 4 ripe tomato, 3 ripe basil" in json.dumps(server.requests[0]["messages"])
+    out = json.loads((only_run(tmp_path / "runs") / "outputs.json").read_text())
+    assert out["rounds"] == 2 and out["goal"] == {"stored": {"shed": {"tomato": 4}}}
+    assert out["goal_met"] is True and out["simulation"]["final_state"]["stored"]["shed"]["tomato"] == 4
