@@ -164,6 +164,8 @@ def test_the_registry_finds_the_domain_through_its_entry_point(garden_plugin_sit
      {"stored": {"crate": {"bean": {"at_least": 2}}}, "ripe": {"east": {"bean": {"at_most": 0}}}}, []),
     ("harvest all the basil from herbs into the crate and weed herbs",
      {"stored": {"crate": {"basil": 4}}, "ripe": {"herbs": {"basil": 0}}, "clear": ["herbs"]}, []),
+    ("harvest all the basil from herbs into the crate, then harvest all the basil into the shed",  # the rest
+     {"stored": {"crate": {"basil": 4}, "shed": {"basil": 3}}, "ripe": {"herbs": {"basil": 0}}}, []),
     ("keep the rovers away from the herbs bed. water north",
      {"watered": ["north"]}, [{"never": ["sprinkler", "shears"], "bed": "herbs"}]),
     ("only pickers may harvest; bring a pumpkin to the shed",
@@ -189,6 +191,8 @@ def test_the_reader_resolves_commands(garden, command, goal, rules):
     ("the goats must not water. water north", TranslationError, "no robot or kind of robot 'goats'"),
     ("harvest 5 tomatoes into the shed", Refusal, "only 4 units of tomato are ripe"),
     ("harvest 2 tomatoes from east into the shed", Refusal, "no tomato is ripe in bed east"),
+    ("harvest 6 basil into the shed and harvest 2 basil from north into the crate", Refusal,
+     "only 1 unit of basil is ripe in bed north after the 6 the command's earlier harvests take"),
     ("harvest all the beans into the crate", Refusal, "store crate has room for 4 more units (asked for 7)"),
 ])
 def test_the_reader_refuses_rather_than_guesses(garden, command, kind, words):

@@ -281,14 +281,19 @@ class _Reader:
         amount = _sub(node["children"], "amount") + _sub(node["children"], "every_unit") + \
             _sub(node["children"], "at_least")
         kind = amount[0]["kind"]
-        available = _ripe(self.world, crop, bed) - self._taken.get((crop, bed), 0)
+        # units earlier clauses asked for count against this one: from this bed, and from anywhere
+        taken_all = sum(v for (c, _), v in self._taken.items() if c == crop)
+        available = _ripe(self.world, crop, None) - taken_all
+        if bed:
+            available = min(available, _ripe(self.world, crop, bed) - self._taken.get((crop, bed), 0))
         n = available if kind == "every_unit" else _count(_sub(amount[0]["children"], "count")[0])
         where = f"in bed {bed}" if bed else "in the garden"
         if available == 0:
             raise Refusal(f"{words!r}: no {crop} is ripe {where} (nothing to harvest)")
         if n > available:
+            earlier = f" after the {taken_all} the command's earlier harvests take" if taken_all else ""
             raise Refusal(f"{words!r}: only {available} unit{'' if available == 1 else 's'} of {crop} "
-                          f"{'is' if available == 1 else 'are'} ripe {where} (asked for {n})")
+                          f"{'is' if available == 1 else 'are'} ripe {where}{earlier} (asked for {n})")
         free = self.world["stores"][store]["room"] - sum(self.world["stores"][store]["holds"].values()) - \
             sum(v for (s, _), v in self._added.items() if s == store)
         if n > free:
