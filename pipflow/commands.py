@@ -16,7 +16,7 @@ from pipflow.engine.cliargs import positive_int
 def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
     bench = sub.add_parser("bench", parents=[common], help="run a task file's tasks x seeds and score them")
     bench.add_argument("tasks", help="task file (benchmarks/README.md format)")
-    bench.add_argument("--workflow", default=None, help="workflow to run per task (default: built-in warehouse)")
+    bench.add_argument("--workflow", default=None, help="workflow to run per task (default: the task file's, else its task domain's built-in workflow)")
     bench.add_argument("--seeds", type=int, default=1, help="runs per task; seeds vary the robots' start positions")
     bench.add_argument("--jobs", type=positive_int, default=None,
                        help="parallel processes, or workers of a local dask cluster (default: CPU count)")

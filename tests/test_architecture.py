@@ -1,10 +1,14 @@
 """The layer rule of docs/architecture.md, read from the code: the imports of pipflow/, engine/
 and steps/ (ast; imports inside functions count too, since a deferred import is still an arrow)
 form no circle, every arrow points to the module's own layer or one below, and the engine imports
-nothing of pipflow's library but the few neutral modules below it."""
+nothing of pipflow's library but the few neutral modules below it. Task domains: no generic module
+imports a domain package or spells a domain's name (outside comments and docstrings), and the
+domain packages do not borrow from each other."""
 from __future__ import annotations
 
 import ast
+import io
+import tokenize
 from pathlib import Path
 
 import networkx as nx
@@ -110,3 +114,72 @@ def test_the_engine_imports_only_the_neutral_modules_of_the_library():
     wrong = sorted((n, t) for n in engine for t in graph.successors(n)
                    if not t.startswith("pipflow.engine") and t not in ENGINE_MAY_IMPORT)
     assert not wrong, f"the engine reaches up into the library: {wrong}"
+
+
+# ---------------------------------------------------------------------------------------------
+# task domains (docs/architecture.md, "Task domains"): generic code names no domain
+# ---------------------------------------------------------------------------------------------
+#: the task-domain packages: only they (and their own steps) may know a domain
+DOMAIN_PACKAGES = ("pipflow.warehouse", "pipflow.household")
+#: steps of one domain, kept in steps/ beside the generic ones (their step names are the
+#: workflows' public interface: simulate.pybullet, metrics.score, household.*)
+DOMAIN_STEPS = {"pipflow.steps.household": "household", "pipflow.steps.simulate": "warehouse",
+                "pipflow.steps.metrics": "warehouse"}
+#: generic modules allowed to spell a domain's name, and why (keep this list short)
+NAMES_A_DOMAIN = {
+    "pipflow.taskdomain": "DEFAULT_DOMAIN: the one place that says which domain a world without `domain:` is",
+    "pipflow.steps": "STEP_MODULES lists the domain step modules kept in steps/ (DOMAIN_STEPS)",
+    "pipflow.language.grounding": "the JSON schema's name 'warehouse_order' is part of recorded requests' cache "
+                                  "keys: renaming it would orphan every recorded model answer",
+}
+
+
+def _is_generic(module: str) -> bool:
+    return not module.startswith(DOMAIN_PACKAGES) and module not in DOMAIN_STEPS
+
+
+def domain_words(path: Path) -> list[tuple[int, str]]:
+    """Names and string literals of a module that spell a domain (comments and docstrings,
+    which explain, are left out)."""
+    source = path.read_text(encoding="utf-8")
+    docstrings = {(node.lineno, node.col_offset) for node in ast.walk(ast.parse(source))
+                  if isinstance(node, ast.Expr) and isinstance(node.value, ast.Constant)
+                  and isinstance(node.value.value, str)}
+    return [(tok.start[0], tok.string) for tok in tokenize.generate_tokens(io.StringIO(source).readline)
+            if tok.type in (tokenize.NAME, tokenize.STRING) and tok.start not in docstrings
+            and any(word in tok.string.lower() for word in ("household", "warehouse"))]
+
+
+def test_no_generic_module_imports_a_domain_package():
+    graph = import_graph()
+    wrong = sorted((a, b) for a, b in graph.edges if _is_generic(a) and b.startswith(DOMAIN_PACKAGES))
+    assert not wrong, f"generic modules that import a task domain (ask pipflow.taskdomains instead): {wrong}"
+
+
+def test_the_domain_packages_do_not_import_each_other():
+    graph = import_graph()
+    wrong = sorted((a, b) for a, b in graph.edges for mine in DOMAIN_PACKAGES
+                   if a.startswith(mine) and b.startswith(DOMAIN_PACKAGES) and not b.startswith(mine))
+    assert not wrong, f"a domain borrows from a peer (move the helper to a neutral module): {wrong}"
+
+
+def test_generic_modules_name_no_domain():
+    found = {name: words for name, path in modules().items()
+             if _is_generic(name) and name not in NAMES_A_DOMAIN and (words := domain_words(path))}
+    assert not found, f"generic modules that spell a domain's name outside comments and docstrings: {found}"
+
+
+def test_the_domain_name_check_sees_what_it_must(tmp_path):
+    """The scan finds a domain in code and strings, and not in comments or docstrings (a scan
+    that found nothing would pass every module)."""
+    probe = tmp_path / "probe.py"
+    probe.write_text('"""For the warehouse."""\n# household\nx = "household"\nif kind == warehouse:\n    pass\n'
+                     'def f():\n    """warehouse"""\n')
+    assert [line for line, _ in domain_words(probe)] == [3, 4]
+    assert graph_has_domain_edges()
+
+
+def graph_has_domain_edges() -> bool:
+    """The import graph does see the domain packages (their own steps import them)."""
+    graph = import_graph()
+    return graph.has_edge("pipflow.steps.household", "pipflow.household.world")

@@ -11,7 +11,8 @@ import yaml
 from pipflow import StepContext
 from pipflow.errors import InputError, LLMError
 from pipflow.language import generator
-from pipflow.language import offline as offline_module, grounding, llm
+from pipflow.language import grounding, llm
+from pipflow.pddl import writer as pddl_writer
 from pipflow.language.llm_orders import read_grounded
 from pipflow.language.parsing import ParseIssue, extract_constraints, extract_problem, validate_constraints
 from pipflow.language.prompting import render
@@ -25,8 +26,8 @@ PROBLEM = """(define (problem p) (:domain warehouse)
   (:goal (= (stock shelf3 product1) 7)))"""
 
 
-def fake_writer(world: dict, goal: dict) -> str:
-    """Stands in for pipflow.pddl.problem.write_problem: the goal, visibly."""
+def fake_writer(world: dict, goal: dict, **_names) -> str:
+    """Stands in for pipflow.pddl.writer.write_problem (the warehouse domain's writer): the goal, visibly."""
     return "(define (problem written) " + json.dumps(goal, sort_keys=True) + ")"
 
 
@@ -185,7 +186,7 @@ def mock_provider(monkeypatch, answer: str) -> list[dict]:
                                                          "mock_response": answer}})
 
     monkeypatch.setattr(generator, "complete", fake)
-    monkeypatch.setattr(generator, "write_problem", fake_writer)
+    monkeypatch.setattr(pddl_writer, "write_problem", fake_writer)
     return calls
 
 
@@ -243,7 +244,7 @@ def test_offline_model_uses_translator_and_writer(tmp_path, monkeypatch):
     fake.understand = lambda command, world: {"goal": {"shelf3": {"product1": 7}}, "constraints": [],
                                               "order": {"statements": [], "rules": []}, "explanation": []}
     monkeypatch.setitem(sys.modules, "pipflow.language.understand", fake)
-    monkeypatch.setattr(offline_module, "write_problem", fake_writer)
+    monkeypatch.setattr(pddl_writer, "write_problem", fake_writer)
     out, art = run_step(tmp_path, model="offline")
     assert out["goal"] == {"shelf3": {"product1": 7}} and out["usage"]["calls"] == 0
     assert out["problem"] == fake_writer(WORLD, out["goal"])
