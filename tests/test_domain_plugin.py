@@ -304,3 +304,22 @@ def test_a_models_problem_goes_through_the_refinement_loop(garden_plugin_site, t
     out = json.loads((only_run(tmp_path / "runs") / "outputs.json").read_text())
     assert out["rounds"] == 2 and out["goal"] == {"stored": {"shed": {"tomato": 4}}}
     assert out["goal_met"] is True and out["simulation"]["final_state"]["stored"]["shed"]["tomato"] == 4
+
+
+def test_resource_use_is_measured_against_the_fewest_actions(garden):
+    from pipflow_garden import scoring
+
+    world = garden["allotment"]
+    goal = {"clear": ["herbs"], "stored": {"crate": {"basil": 4}}, "ripe": {"herbs": {"basil": 0}}}
+    assert scoring.reference_actions(world, goal) == 5  # one prune, four harvests
+    # a pumpkin from the overgrown south bed needs its prune too; a bed watered twice is one water
+    assert scoring.reference_actions(world, {"ripe": {"south": {"pumpkin": 1}}, "watered": ["north", "north"]}) == 3
+    # a bound asks only for what is missing: the shed holds one tomato already
+    assert scoring.reference_actions(world, {"stored": {"shed": {"tomato": {"at_least": 3}}}}) == 2
+    done = {"final_state": {**garden["simulation"].initial_state(world)}, "executed": 7, "exe": 1.0}
+    done["final_state"]["overgrown"] = ["south"]
+    done["final_state"]["ripe"]["herbs"]["basil"] = 0
+    done["final_state"]["stored"]["crate"] = {"basil": 4}
+    subtasks = [{"id": f"s{i}", "action": "harvest", "robots": []} for i in range(7)]
+    score = scoring.score_run(world, goal, schedule={"subtasks": subtasks}, simulation=done)
+    assert score["success"] is True and score["lower_bound"] == 5 and score["ru"] == pytest.approx(5 / 7)

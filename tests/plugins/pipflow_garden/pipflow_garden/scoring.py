@@ -41,6 +41,38 @@ def broken_rules(constraints: list[dict] | None, graph: dict | None, schedule: d
     return out
 
 
+def _least(value: Any) -> int:
+    return int(value.get("at_least") or 0) if isinstance(value, dict) else int(value)
+
+
+def _most(value: Any) -> int | None:
+    return value.get("at_most") if isinstance(value, dict) else int(value)
+
+
+def reference_actions(world: dict, goal: dict) -> int:
+    """A lower bound on the team actions any plan for ``goal`` needs (the RU reference): one water
+    per bed to be watered, one prune per overgrown bed to be cleared or harvested from, one harvest
+    per unit that must reach a store or leave a bed (per crop, the larger of the two)."""
+    beds = world["beds"]
+    water = sum(1 for b in set(goal.get("watered") or []) if b in beds and not beds[b]["watered"])
+    into: dict[str, int] = {}
+    for store, items in (goal.get("stored") or {}).items():
+        for crop, value in items.items():
+            held = world["stores"].get(store, {}).get("holds", {}).get(crop, 0)
+            into[crop] = into.get(crop, 0) + max(0, _least(value) - held)
+    out_of: dict[str, int] = {}
+    picked = set()
+    for bed, items in (goal.get("ripe") or {}).items():
+        for crop, value in items.items():
+            most, have = _most(value), beds.get(bed, {}).get("ripe", {}).get(crop, 0)
+            if most is not None and have > most:
+                out_of[crop] = out_of.get(crop, 0) + have - most
+                picked.add(bed)
+    prune = sum(1 for b in set(goal.get("clear") or []) | picked if b in beds and beds[b]["overgrown"])
+    harvest = sum(max(into.get(c, 0), out_of.get(c, 0)) for c in set(into) | set(out_of))
+    return water + prune + harvest
+
+
 def score_run(world: dict, goal: dict, *, constraints: list[dict] | None = None, feasible: bool = True,
               graph: dict | None = None, schedule: dict | None = None, simulation: dict | None = None,
               refusal: str | None = None, error: str | None = None) -> dict:
@@ -49,7 +81,8 @@ def score_run(world: dict, goal: dict, *, constraints: list[dict] | None = None,
     planned = len((schedule or {}).get("subtasks", []))
     executed = int(sim.get("executed", 0))
     base = {"planned": planned, "executed": executed, "refused": bool(refusal), "error": refusal or error or None,
-            "makespan": float(sim.get("makespan", 0.0) or 0.0), "lower_bound": None,
+            "makespan": float(sim.get("makespan", 0.0) or 0.0),
+            "lower_bound": reference_actions(world, goal or {}) if feasible else None,
             "tc_max": float(sim.get("tc_max", 0.0)), "tc_avg": float(sim.get("tc_avg", 0.0)),
             "tc_avg_moved": float(sim.get("tc_avg_moved", 0.0))}
     if not feasible:
@@ -68,7 +101,8 @@ def score_run(world: dict, goal: dict, *, constraints: list[dict] | None = None,
     violations += [f"{r} jumps {j['metres']:g} m" for r, js in (sim.get("jumps") or {}).items() for j in js]
     violations += broken_rules(constraints, graph, schedule)
     return {**base, "success": not violations, "goal_met": met == total, "gcr": met / total if total else 1.0,
-            "exe": float(sim.get("exe", 0.0)), "ru": 1.0 if planned else 0.0, "violations": violations}
+            "exe": float(sim.get("exe", 0.0)), "violations": violations,
+            "ru": min(1.0, base["lower_bound"] / planned) if planned else float(base["lower_bound"] == 0)}
 
 
 def load_tasks(path: str | Path, default_workflow: str) -> dict:
