@@ -81,7 +81,9 @@ class TaskDomain(ABC):
 
     #: the name worlds and task files use in ``domain:`` (and the entry point's name)
     name: ClassVar[str]
-    #: the built-in workflow (name or path) ``pipflow bench`` runs for this domain's task files
+    #: the workflow ``pipflow bench`` runs for this domain's task files (unless the task file or
+    #: ``--workflow`` names another): a built-in workflow's name, or the path of a workflow file
+    #: (a plugin gives the absolute path of the one its package ships)
     workflow: ClassVar[str]
     #: the prompt template the generator renders when the workflow names none
     default_prompt: ClassVar[str]
