@@ -80,7 +80,12 @@ def cache_dir() -> Path | None:
     env = os.environ.get(ENV_DIR)
     if env is not None:
         return Path(env) if env.strip() else None
-    base = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
+    base = os.environ.get("XDG_CACHE_HOME")
+    if not base:
+        try:
+            base = str(Path.home() / ".cache")
+        except (RuntimeError, KeyError):  # no home folder (a service account): memory only
+            return None
     return Path(base) / "pipflow" / "grammar"
 
 
