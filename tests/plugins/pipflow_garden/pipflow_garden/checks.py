@@ -13,6 +13,7 @@ from fractions import Fraction
 from typing import Any
 
 from pipflow_garden.problem import initial_facts
+from pipflow_garden.world import ripe_total
 
 
 def _number(node: Any) -> int | None:
@@ -116,8 +117,7 @@ def goal_refusal(world: dict, goal: dict) -> str | None:
         need_total = 0
         for crop, value in items.items():
             least = value.get("at_least", 0) if isinstance(value, dict) else value
-            most_there = world["stores"].get(store, {}).get("holds", {}).get(crop, 0) + \
-                sum(b["ripe"].get(crop, 0) for b in world["beds"].values())
+            most_there = world["stores"].get(store, {}).get("holds", {}).get(crop, 0) + ripe_total(world, crop)
             if least > most_there:
                 reasons.append(f"{store} cannot hold {least} {crop}: at most {most_there} can be there")
             need_total += least

@@ -31,6 +31,8 @@ from lark import Lark, Token, Transformer, UnexpectedInput
 from pipflow.errors import Refusal, TranslationError
 from pipflow.suggest import closest
 
+from pipflow_garden.world import ripe_total
+
 GRAMMAR = r"""
 start: clause (sep clause)* sep?
 sep: (COMMA | SEPCHAR | AND | THEN)+
@@ -174,29 +176,23 @@ def read_command(command: str, world: dict) -> dict:
 
 
 def _piece(text: str, err: UnexpectedInput) -> str:
-    """The words around a parse failure, between the separators on either side of it."""
-    pos = getattr(err, "pos_in_stream", None)
+    """The words around a parse failure: from the separator before it (``and``, ``then``, a word
+    ending in ``,;.``) to the one after it, so the quote is the clause the reader could not place."""
     token = getattr(err, "token", None)
-    if isinstance(token, Token) and token.start_pos is not None:
-        pos = token.start_pos
-    if pos is None or pos >= len(text):
-        pos = len(text) - 1
-    words, spans, start = [], [], 0
-    for w in text.split(" "):
-        spans.append((start, start + len(w)))
-        words.append(w)
-        start += len(w) + 1
-    at = next((i for i, (a, b) in enumerate(spans) if a <= pos < b + 1), len(words) - 1)
-    hard = {"and", "then"}
+    pos = token.start_pos if isinstance(token, Token) and token.start_pos is not None else \
+        getattr(err, "pos_in_stream", None)
+    words = text.split(" ")
+    ends = [len(" ".join(words[:i + 1])) for i in range(len(words))]  # where each word ends
+    at = next((i for i, end in enumerate(ends) if pos is not None and pos <= end), len(words) - 1)
 
-    def is_sep(i: int) -> bool:
-        return words[i] in hard
+    def ends_clause(i: int) -> bool:  # word i closes a clause (or is a separator word)
+        return words[i] in ("and", "then") or words[i].endswith((",", ";", "."))
 
     lo = at
-    while lo > 0 and not is_sep(lo - 1) and not words[lo - 1].endswith((",", ";", ".")):
+    while lo > 0 and not ends_clause(lo - 1):
         lo -= 1
     hi = at
-    while hi < len(words) - 1 and not is_sep(hi + 1) and not words[hi].endswith((",", ";", ".")):
+    while hi < len(words) - 1 and (not ends_clause(hi) or (hi == at and words[hi] in ("and", "then"))) and words[hi + 1] not in ("and", "then"):
         hi += 1
     return " ".join(words[lo:hi + 1]).strip(",;.")
 
@@ -283,9 +279,9 @@ class _Reader:
         kind = amount[0]["kind"]
         # units earlier clauses asked for count against this one: from this bed, and from anywhere
         taken_all = sum(v for (c, _), v in self._taken.items() if c == crop)
-        available = _ripe(self.world, crop, None) - taken_all
+        available = ripe_total(self.world, crop, None) - taken_all
         if bed:
-            available = min(available, _ripe(self.world, crop, bed) - self._taken.get((crop, bed), 0))
+            available = min(available, ripe_total(self.world, crop, bed) - self._taken.get((crop, bed), 0))
         n = available if kind == "every_unit" else _count(_sub(amount[0]["children"], "count")[0])
         where = f"in bed {bed}" if bed else "in the garden"
         if available == 0:
@@ -303,7 +299,7 @@ class _Reader:
         total = self.world["stores"][store]["holds"].get(crop, 0) + self._added[(store, crop)]
         self.stored.setdefault(store, {})[crop] = {"at_least": total} if kind == "at_least" else total
         if bed:
-            left = _ripe(self.world, crop, bed) - self._taken[(crop, bed)]
+            left = ripe_total(self.world, crop, bed) - self._taken[(crop, bed)]
             self.ripe.setdefault(bed, {})[crop] = {"at_most": left} if kind == "at_least" else left
         self.order.append({"do": "harvest", "crop": crop, "count": "all" if kind == "every_unit" else n,
                            "at_least": kind == "at_least", "from": bed, "to": store, "words": words})
@@ -360,11 +356,6 @@ class _Reader:
 
 def _count(node: dict) -> int:
     return NUMBERS.get(str(node["children"][0])) or int(str(node["children"][0]))
-
-
-def _ripe(world: dict, crop: str, bed: str | None) -> int:
-    beds = [bed] if bed else list(world["beds"])
-    return sum(world["beds"][b]["ripe"].get(crop, 0) for b in beds)
 
 
 def _explain(item: dict, world: dict) -> str:
