@@ -2,6 +2,7 @@
 problem text, and pictures only when asked (real UP, real planner, real validator)."""
 from __future__ import annotations
 
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -337,3 +338,46 @@ def test_a_parser_file_others_may_write_is_not_loaded(grammar_cache, monkeypatch
     assert earley.earley_parser('start: "a"\n', lexer="dynamic").parse("a").data == "start"
     assert built == ['start: "a"\n']  # rebuilt, and stored again private
     assert entry.stat().st_mode & 0o077 == 0
+
+
+# --- unified-planning's configuration file, found without inspect.stack() (pipflow/pddl/upconfig.py) ---
+def test_up_config_locations_are_ups_own():
+    """The same candidate files as UP's function, from the main thread and from a step's thread."""
+    import threading
+
+    import unified_planning.engines.factory as factory
+
+    from pipflow.pddl import upconfig
+    from pipflow.pddl.common import environment
+
+    environment()
+    assert factory.get_possible_config_locations is upconfig.config_locations  # in place before the factory
+    import inspect
+    from pathlib import PurePath
+
+    def ups() -> list[str]:  # UP's own code (unified_planning/engines/factory.py), kept here to compare
+        files = []
+        for p in PurePath(os.path.abspath(inspect.stack()[-1].filename)).parents:
+            files += [os.path.join(p, "up.ini"), os.path.join(p, ".up.ini")]
+        home = os.path.expanduser("~")
+        return files + [os.path.join(home, n) for n in ("up.ini", ".up.ini", ".uprc")]
+
+    seen = []
+    assert upconfig.config_locations() == ups()
+    worker = threading.Thread(target=lambda: seen.append(upconfig.config_locations() == ups()))
+    worker.start()
+    worker.join()
+    assert seen == [True]
+
+
+def test_an_up_ini_above_the_script_still_configures_the_planners(tmp_path):
+    folder = tmp_path / "project" / "scripts"
+    folder.mkdir(parents=True)
+    (tmp_path / "project" / "up.ini").write_text("[global]\nengine_preference_list: enhsp\n")
+    script = folder / "show.py"
+    script.write_text("from pipflow.pddl.common import environment\n"
+                      "print(environment().factory.preference_list)\n")
+    out = subprocess.run([sys.executable, str(script)], capture_output=True, text=True, timeout=300, cwd=tmp_path)
+    assert out.returncode == 0, out.stderr[-2000:]
+    preferred = out.stdout.strip().strip("[]").replace("'", "").split(", ")
+    assert preferred[0] == "enhsp" and "fast-downward" not in preferred  # the file's list, not UP's default

@@ -16,6 +16,7 @@ from pathlib import Path
 from typing import Any, Iterator
 
 from pipflow.pddl.deferred_configspace import defer as _defer_configspace
+from pipflow.pddl.upconfig import install as _cheap_config_lookup
 
 _PARSED: OrderedDict[str, Any] = OrderedDict()  # content hash -> parsed UP problem (read-only)
 _PARSED_MAX = 4  # a run needs one problem (plus the domain alone); a refinement loop a few
@@ -28,6 +29,7 @@ def environment() -> Any:
     UP is imported here, not at module top, on purpose: it is heavy and many pipflow commands
     never plan. ConfigSpace (scipy.stats) is deferred first: see :mod:`.deferred_configspace`."""
     _defer_configspace()
+    _cheap_config_lookup()  # before the factory exists: see pipflow.pddl.upconfig
     from unified_planning.environment import get_environment
 
     env = get_environment()
