@@ -321,3 +321,57 @@ def test_resource_use_is_measured_against_the_fewest_actions(garden):
     subtasks = [{"id": f"s{i}", "action": "harvest", "robots": []} for i in range(7)]
     score = scoring.score_run(world, goal, schedule={"subtasks": subtasks}, simulation=done)
     assert score["success"] is True and score["lower_bound"] == 5 and score["ru"] == pytest.approx(5 / 7)
+
+
+def test_any_command_is_refused_or_read_into_a_goal_the_garden_can_meet(garden):
+    """Commands built from the language's clauses with names right and wrong, counts large and
+    small, and stray words: the reader either refuses (TranslationError, Refusal, with words) or
+    returns a goal naming only the garden's beds, stores and crops, that no count of the garden
+    forbids (checks.goal_refusal), whose stored counts add up to what the clauses ask for, and
+    rules naming only its robots."""
+    from hypothesis import HealthCheck, given, settings, strategies as st
+
+    from pipflow_garden.checks import goal_refusal
+
+    world, read = garden["allotment"], garden["language"].read_command
+    beds = st.sampled_from(["north", "south", "east", "herbs", "the north bed", "the herbs bed", "roses", "shed"])
+    crops = st.sampled_from(["tomatoes", "tomato", "basil", "pumpkins", "a pumpkin", "beans", "carrots"])
+    amounts = st.one_of(st.integers(0, 14).map(str), st.sampled_from(["two", "all the", "at least 2", "a"]))
+    stores = st.sampled_from(["", " into the shed", " to the crate", " into the barn"])
+    sources = st.one_of(st.just(""), beds.map(lambda b: f" from {b}"))
+    robots = st.sampled_from(["mule", "the pickers", "rovers", "wet robots", "goats"])
+    verbs = st.sampled_from(["water", "prune", "harvest"])
+    clause = st.one_of(
+        st.builds(lambda v, bs: f"{v} {' and '.join(bs)}", st.sampled_from(["water", "prune", "weed"]),
+                  st.lists(beds, min_size=1, max_size=3)),
+        st.builds(lambda a, c, f, t: f"harvest {a} {c}{f}{t}", amounts, crops, sources, stores),
+        st.builds(lambda r, v: f"{r} must not {v}", robots, verbs),
+        st.builds(lambda r, b: f"keep {r} out of {b}", robots, beds),
+        st.sampled_from(["please", "twice", "water north twice"]))
+
+    @settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+    @given(st.lists(clause, min_size=1, max_size=4), st.sampled_from([", ", " and ", "; ", ", then "]))
+    def check(clauses, sep):
+        try:
+            got = read(sep.join(clauses), world)
+        except (TranslationError, Refusal) as err:
+            assert str(err)
+            return
+        goal = got["goal"]
+        assert set(goal.get("watered", [])) | set(goal.get("clear", [])) | set(goal.get("ripe", {})) <= set(world["beds"])
+        assert set(goal.get("stored", {})) <= set(world["stores"])
+        assert goal_refusal(world, goal) is None
+        asked: dict = {}
+        for item in got["order"]:
+            if item.get("do") == "harvest":
+                n = item["count"] if item["count"] != "all" else None
+                asked.setdefault((item["to"], item["crop"]), []).append(n)
+        for (store, crop), counts in asked.items():
+            value = goal["stored"][store][crop]
+            total = value["at_least"] if isinstance(value, dict) else value
+            if None not in counts:
+                assert total == world["stores"][store]["holds"].get(crop, 0) + sum(counts)
+        for rule in got["constraints"]:
+            assert set(rule.get("only", rule.get("never", []))) <= set(world["robots"]) and rule["words"]
+
+    check()
