@@ -180,6 +180,14 @@ def test_the_reader_resolves_commands(garden, command, goal, rules):
     assert [{k: v for k, v in r.items() if k != "words"} for r in read["constraints"]] == rules
 
 
+def test_the_reading_is_explained_before_robots_move(garden):
+    read = garden["language"].read_command("prune every bed, then harvest two tomatoes from north into the shed",
+                                           garden["allotment"])
+    assert read["explanation"].splitlines() == [
+        "'prune every bed' -> prune north, south, east, herbs (north, east: clear already)",
+        "'harvest two tomatoes from north into the shed' -> harvest 2 tomato from north into shed (it holds 1 now)"]
+
+
 @pytest.mark.parametrize("command, kind, words", [
     ("water north and fertilise south", TranslationError, "'fertilise south'"),
     ("prune north twice", TranslationError, "'prune north twice'"),

@@ -363,7 +363,9 @@ def _explain(item: dict, world: dict) -> str:
     if "rule" in item:
         return f"rule {item['rule']}"
     if item["do"] in ("water", "prune"):
-        return f"{item['do']} {', '.join(item['beds'])}"
+        flag, state = ("watered", "watered already") if item["do"] == "water" else ("overgrown", "clear already")
+        done = [b for b in item["beds"] if world["beds"][b][flag] == (item["do"] == "water")]
+        return f"{item['do']} {', '.join(item['beds'])}" + (f" ({', '.join(done)}: {state})" if done else "")
     held = world["stores"][item["to"]]["holds"].get(item["crop"], 0)
     n = item["count"] if item["count"] != "all" else "every ripe"
     return (f"harvest {'at least ' if item['at_least'] else ''}{n} {item['crop']} "
