@@ -483,6 +483,29 @@ def test_an_english_verb_is_never_taken_for_a_misspelt_robot_name() -> None:
      {"wash-bay": {"battery": 2}, "north yard": {"battery": 3}}, []),
     ("Take 1 battery off the wash bay and 2 off the north yard.",
      {"wash-bay": {"battery": 2}, "north yard": {"battery": 2}}, []),
+    # comparatives: another item on the same place, another place's count, places together
+    ("The wash bay should have as many brake pads as batteries.", {"wash-bay": {"brake_pad": 3}}, []),
+    ("Make pit 2's battery count equal to the wash bay's.", {"pit2": {"battery": 3}}, []),
+    ("Put as many oil filters on pit 2 as there are on the tool crib and the north yard together.",
+     {"pit2": {"oil-filter": 7}}, []),
+    ("Pit 2 should hold as many kc-90s as the tool crib and the north yard combined.", {"pit2": {"kc-90": 3}}, []),
+    # probe D's causes: a count phrase on a possessive, grab / run as move verbs, "in half",
+    # "load up ... until full", the reverse move, "N of them" after an apposition, "leave its X"
+    ("The north yard has to finish the shift with 3 kc-90s.", {"north yard": {"kc-90": 3}}, []),
+    ("Take the tool crib's brake pads down to 1.", {"tool_crib": {"brake_pad": 1}}, []),
+    ("Grab 2 oil filters from the north yard and drop them at pit 2.",
+     {"north yard": {"oil-filter": 3}, "pit2": {"oil-filter": 3}}, []),
+    ("Run 1 battery over to pit 2.", {"pit2": {"battery": 1}}, []),
+    ("Cut the tool crib's oil filters in half.", {"tool_crib": {"oil-filter": 1}}, []),
+    ("Load up pit 2 with batteries until it is full.", {"pit2": {"battery": 7}}, []),
+    ("Move 2 brake pads from the north yard to the tool crib, and 1 oil filter the other way.",
+     {"north yard": {"brake_pad": 4, "oil-filter": 6}, "tool_crib": {"brake_pad": 6, "oil-filter": 1}}, []),
+    ("The wash bay, which holds 3 batteries, should lose 1 of them.", {"wash-bay": {"battery": 2}}, []),
+    ("The wash bay is 2 brake pads short.", {"wash-bay": {"brake_pad": 3}}, []),
+    ("The north yard is over by 2 batteries.", {"north yard": {"battery": 2}}, []),
+    ("Pull 1 kc-90 from the north yard over to pit 2.", {"north yard": {"kc-90": 1}, "pit2": {"kc-90": 1}}, []),
+    ("Empty the tool crib but leave its kc-90s.",
+     {"tool_crib": {"brake_pad": 0, "oil-filter": 0, "battery": 0, "kc-90": 1}}, []),
 ])
 def test_idioms_bounds_and_corrections_of_staff_english(command: str, goal: dict, rules: list[dict]) -> None:
     g, r = got(command, GARAGE)
@@ -495,6 +518,13 @@ def test_idioms_bounds_and_corrections_of_staff_english(command: str, goal: dict
     ("The wash bay could use 2 batteries.", TranslationError, "could use"),
     # "another" after a count other than one: one more, or as many again? not guessed
     ("Take 2 batteries off the wash bay and another off the north yard.", TranslationError, "another"),
+    # a half that is not whole; "the other way" with no move before it; an apposition the world denies
+    ("Cut the wash bay's batteries in half.", TranslationError, "whole"),
+    ("Pit 2 should have 2 batteries, and 1 oil filter the other way.", TranslationError, "other way"),
+    ("The wash bay, which holds 5 batteries, should lose 1 of them.", TranslationError, "holds 3"),
+    # as many as two places: each, or together? not guessed
+    ("Put as many oil filters on pit 2 as there are on the tool crib and the north yard.",
+     TranslationError, "together"),
     # a minus sign attached to its number is still a negative count
     ("Put -3 batteries on pit 2.", Refusal, "cannot be negative"),
     ("Put \u2212 3 batteries on pit 2.", Refusal, "cannot be negative"),

@@ -86,6 +86,9 @@ np: NUM of? ihead                          -> np_count
   | ("everything" | "all" ITEMWORD | "every" ITEMWORD | "all" "goods") except_items -> np_everything
   | "as" "many" ihead "as" PLACE ("has" | "holds" | "have" | "contains") now? -> np_as_many
   | "as" "many" ihead "as" PLACE                    -> np_as_many
+  | "as" "many" ihead "as" ihead (("it" | "they") ("has" | "have" | "holds" | "hold" | "does" | "do"))? now? -> np_as_many_item
+  | "same" ("number" | "amount" | "count" | "quantity") "of" ihead "as" ihead -> np_as_many_item
+  | "as" "many" ihead? "as" PLACE (lsep PLACE)+ ("has" | "have" | "hold" | "holds" | "contain")? now? together -> np_as_many_total
   | "same" ("number" | "amount" | "count" | "quantity") "of" ihead "as" PLACE (("has" | "holds" | "have" | "contains" | "does") now?)? -> np_as_many
   | ("another" | "one" "more")                      -> np_another
   | "as" "many" "as" PLACE ("has" | "holds" | "have" | "contains") now? -> np_as_many_elided
@@ -99,6 +102,7 @@ np: NUM of? ihead                          -> np_count
   | ("double" | "triple" | "quadruple") ihead -> np_times
   | "half" of? its? ihead                  -> np_half
   | NUM                                    -> np_bare
+  | NUM "of" ("them" | "those" | "these")  -> np_bare
 
 rest_of: "of" (ihead | "them" | "it" | its ihead)
 bare: ihead (lsep ihead)*
@@ -148,6 +152,7 @@ setv: "has" | "have" | "hold" | "holds" | "store" | "stores" | "stock" | "stocks
     | "contains" | "get" | "gets" | "keep" | "keeps" | "carry" | "carries" | "house" | "houses"
     | "need" | "needs" | "receive" | "receives" | "end" "up" "with" | "be" "stocked" "with"
     | "ends" "up" "with" | "ends" "with" | "end" "up" "holding" | "ends" "up" "holding"
+    | ("end" | "ends" | "finish" | "finishes") "shift" "with"
     | "be" "filled" "with" | "be" "loaded" "with" | "hold" "onto" | "be" "holding" | "is" "holding"
     | "end" "with" | "want" | "wants" | "be" "left" "with" | "be" "at" | "is" "at" | "are" "at"
 putv: "put" | "place" | "store" | "stock" | "set" | "leave" | "get" | "keep" | "park"
@@ -156,8 +161,9 @@ addv: "add" | "bring" | "deliver" | "send" | "ship" | "move" | "transfer" | "car
     | "load" | "drop" | "stick" | "pop" | "stack"
     | "relocate" | "take" | "haul" | "bring" "over" | "move" "over" | "send" "over"
     | "supply" | "drop" "off" | "get" | "push" | "cart" | "ferry" | "tow" | "lug" | "shuttle" | "wheel"
+    | "grab" | "run" | "pull" | "return" | "dump" | "fetch" | "dispatch"
 removev: "remove" | "take" | "unload" | "pull" | "withdraw" | "clear" | "get" | "move"
-       | "get" "rid" "of" | "dispose" "of" | "throw" "out" | "take" "away" | "knock"
+       | "get" "rid" "of" | "dispose" "of" | "throw" "out" | "take" "away" | "knock" | "grab"
 splitv: "split" | "divide" | "distribute" | "share" | "spread" | "spread" "out" | "share" "out"
 among: "between" | "among" | "amongst" | "across" | "over"
 even: "evenly" | "equally" | "fairly" | "in" "equal" ("parts" | "shares") | ","? "same" "amount" "each"
@@ -237,8 +243,10 @@ goal: there_be items loc                                  -> g_set
     | ("bring" | "take" | "get" | "knock") ihead loc ("down" | "up") "by" NUM -> g_updown
     | removev pitems                                      -> g_remove_src
     | places modal? setv items "too" "many"                  -> g_too_many
-    | places modal? "lose" items                             -> g_lose
-    | ("cut" | "reduce") (ihead loc | pitem_plain) "by" (frac | "half" | NUM)  -> g_cut
+    | places place_appos? modal? "lose" items                -> g_lose
+    | places ("is" | "are") ("short" ("by" | "of")? items | items "short")  -> g_short
+    | places ("is" | "are") ("over" "by" items | items "over")            -> g_too_many
+    | ("cut" | "reduce") (ihead loc | pitem_plain) ("by" (frac | "half" | NUM) | "in" "half")  -> g_cut
     | refill places "with" ihead ("until" ("it" | "they") ("is" | "are") "full" | "to" ("capacity" | "top")) -> g_fill
     | ("keep" | "hold") places ("to" | "at")? items           -> g_place_set
     | places bneg below NUM of? ihead                        -> g_floor
@@ -296,6 +304,10 @@ goal: there_be items loc                                  -> g_set
     | ("top" ("up" | "off") | "fill" "up") places "with" only? ihead only? -> g_fill
     | (putv | addv) items loc on_top                         -> g_add
     | mult "up"? posplace ihead                              -> g_mult
+    | ("bring" | "take" | "get" | "cut" | "reduce" | "lower" | "raise" | "increase") pitem_plain ("down" | "up")? "to" NUM -> g_item_first
+    | "leave" its ihead (lsep ihead)* as_is?                   -> g_keep_its_elided
+    | ("make" | "set" | "bring" | "get" | "have") posplace ihead ("count" | "number" | "level" | "stock" | "total")? ("equal" "to" | "to" | "same" "as" | "match" | "equal") posplace ihead? -> g_equal_poss
+    | putv "as" "many" ihead loc "as" ("there" ("are" | "is") | "sit" | "are") ("on" | "in" | "at") PLACE ((lsep) PLACE)* together? -> g_as_many_there
     | ("have" | "let" | "make") places ("swap" | "trade" | "exchange") (("their" | "its") | "what" "they" ("hold" | "have"))? swapwhat -> g_swap_subj
     | swapv ("what" | "contents" "of")? places ("hold" | "have" | "contain" | "holds" | "has")? -> g_swap
     | swapv ihead (lsep ihead)* ("between" | "of" | "on") places -> g_swap_items
@@ -326,10 +338,11 @@ appos: ","? ("all" | "both") (NUM "of" "them" | "of" "them") ","?
 swapwhat: ihead (lsep ihead)* | "everything" ("they" ("hold" | "have"))? | "contents" | "loads" | "stock" | "places" | "goods" | "items"
 stay: be | "be" "left" | "remain" | "be" "kept" | "sit" | "stay" | "lie" | "go" | "be" "placed" | "be" "stored" | "belong" | "end" "up"
 both: "both"
+together: "together" | "combined" | "put" "together" | "between" "them" | "in" "total" | "altogether"
 left: "left" | "remaining" | "left" "over" | "in" "total" | "total" | "in" "all"
 only: "only"
 equal: "equal" "to" | "at"
-refill: "restock" | "refill" | "replenish" | "top" "up" | "top" "off" | "supply"
+refill: "restock" | "refill" | "replenish" | "top" "up" | "top" "off" | "supply" | "load" "up" | "stock" "up"
 mult: "double" | "triple" | "quadruple" | "halve"
 swapv: "swap" | "trade" | "exchange" | "switch" | "interchange"
 emptyv: "empty" | "clear" | "clean" "out" | "clear" "out" | "empty" "out"
@@ -352,6 +365,7 @@ tail: places ("too" | "as" "well" | "also")                 -> t_too
     | "not" ihead (lsep ihead)*                           -> t_not_items
     | ("also" | "same" "for" | "same" "thing" "for") places   -> t_too
     | NUM fewer loc                                      -> t_elided_fewer
+    | items ("other" "way" ("round" | "around")? | "in" "other" "direction" | "in" "reverse" | "back") -> t_reverse
     | ("taking" | "take") ("them" | "it" | "those" | "these" | "all" | "everything")? from places -> t_source
     | ("all" | "both" | "each")? from places               -> t_source
 

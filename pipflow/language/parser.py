@@ -209,6 +209,14 @@ class _Sentence:
         if kind == "np_as_many":
             place = next(str(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "PLACE"))
             return out({"as_many_as": place})
+        if kind == "np_as_many_item":
+            # "as many gears as widgets": the other item's count on the statement's own place
+            other = self.ihead(heads[1], words)
+            return out({"as_many_here": True, "of": other})
+        if kind == "np_as_many_total":
+            places = [str(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "PLACE")]
+            amount = {"as_many_as": places[0], "together_with": places[1:]}
+            return out(amount) if heads else out(amount, None)
         if kind == "np_as_many_elided":
             place = next(str(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "PLACE"))
             return out({"as_many_as": place}, None)
@@ -294,6 +302,11 @@ class _Sentence:
                 f"{_quote(words)}: the command does not say whether each of {', '.join(places)} "
                 f"gets these counts or they share them (say 'each', 'respectively' or 'evenly between')")
         for np in nps:
+            if np["amount"].get("as_many_here"):  # each place against its own count of the other item
+                for p in places:
+                    here = {**np, "amount": {"as_many_as": p, "of": np["amount"]["of"]}}
+                    self.statements.append(self._goal_statement([p], here, add))
+                continue
             self.statements.append(self._goal_statement(places, np, add))
 
     def _goal_statement(self, places: list[str], np: dict, add: bool) -> dict:
@@ -395,9 +408,14 @@ class _Sentence:
                                       "words": words}], words)
             return
         if kind == "g_item_first":
-            head = self.ihead(self.sub(node, "ihead")[0], words)
+            pp = self.sub(node, "pitem_plain")  # "bring the apron's seat belts down to 3"
+            head = self.ihead(self.sub(pp[0] if pp else node, "ihead")[0], words)
             self.last_item = [head]
             num = next(int(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "NUM"))
+            if pp:
+                place = [str(self.toks(pp[0], "PLACE")[0].value)]
+                self.put(place, "one", [{"items": {"names": [head]}, "amount": {"count": num}, "words": words}], words)
+                return
             if not locs:
                 raise TranslationError(f"{_quote(words)}: the command does not say which shelf "
                                        f"(candidates: {self.index.candidates('shelf')})")
@@ -410,6 +428,38 @@ class _Sentence:
             else:
                 places, mode = self.place_list(plist[0]), "each" if each else "one"
             self.put(places, mode, nps, words, add=True)
+            return
+        if kind == "g_equal_poss":
+            # "Make rack E's gear count equal to rack D's (valves)": D's count now, of its item
+            poss = self.sub(node, "posplace")
+            heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
+            place, other = str(poss[0].children[0].value), str(poss[1].children[0].value)
+            amount = {"as_many_as": other} if len(heads) == 1 or heads[1] == heads[0] else \
+                {"as_many_as": other, "of": heads[1]}
+            self.last_item = heads[:1]
+            self.statements.append({"op": "set", "places": {"names": [place]}, "items": {"names": heads[:1]},
+                                    "amount": amount, "words": words})
+            return
+        if kind == "g_as_many_there":
+            # "Put as many valves on rack E as there are on rack A (and rack B together)"
+            head = self.ihead(self.sub(node, "ihead")[0], words)
+            places = self.loc(locs[0])[0]
+            others = [str(t.value) for t in node.children if isinstance(t, Token) and t.type == "PLACE"]
+            if len(others) > 1 and not self.sub(node, "together"):
+                raise TranslationError(f"{_quote(words)}: as many as each of {', '.join(others)} has, or as "
+                                       f"all of them together? (say 'together')")
+            amount = {"as_many_as": others[0], **({"together_with": others[1:]} if others[1:] else {})}
+            self.put(places, "one", [{"items": {"names": [head]}, "amount": amount, "words": words}], words)
+            return
+        if kind == "g_keep_its_elided":
+            # "Empty hangar B but leave its seat belts": the emptying of that place spares them
+            places = self._last_places(words)
+            heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
+            for st in self.statements:
+                if st["op"] == "empty" and st["places"]["names"] == places and st["items"].get("all"):
+                    st["items"] = {"all": True, "except": list(dict.fromkeys((st["items"].get("except") or []) + heads))}
+            self.statements.append({"op": "keep", "places": {"names": places}, "items": {"names": heads},
+                                    "inflow_only": False, "words": words})
             return
         if kind == "g_could_use":
             # "P could use / could do with N more X" is a change; without "more" it could be the
@@ -570,8 +620,19 @@ class _Sentence:
                 self.statements.append(st)
             self.last_source = source
             return
+        if kind == "g_short":
+            # "Bay 2 is 3 crates short": it needs 3 more; any other amount is not read
+            for np in nps:
+                if set(np["amount"]) != {"count"}:
+                    raise TranslationError(f"{_quote(words)}: cannot tell how many are missing")
+                np = {**np, "amount": {"more": np["amount"]["count"]}}
+                self.statements.append(self._goal_statement(self.place_list(plist[0]), np, False))
+            return
         if kind in ("g_too_many", "g_lose"):
             places = self.place_list(plist[0])
+            for ap in self.sub(node, "place_appos"):  # "P, which holds 7 X, should lose 2 of them"
+                self.apposition(places, self.nps(self.sub(ap, "items")[0]), self.words(ap))
+            nps = self.nps(items[0])  # read after the apposition: "them" is what it named
             for np in nps:
                 a = np["amount"]
                 if "count" in a:
@@ -809,7 +870,7 @@ class _Sentence:
                 raise TranslationError(f"{_quote(np['words'])}: cannot tell which product "
                                        f"(candidates: {self.index.candidates('product')})")
             np = {**np, "items": {"names": list(self.last_item)}}
-        if set(a) & BOUND_AMOUNTS or set(a) & {"more", "fewer", "times", "as_many_as"}:
+        if set(a) & BOUND_AMOUNTS or set(a) & {"more", "fewer", "times", "as_many_as", "as_many_here"}:
             raise TranslationError(f"{_quote(np['words'])}: cannot tell how many units this moves")
         src: dict = {"names": source} if source else {"all": True, "except": list(exclude or [])}
         st = {"op": "transfer", "items": np["items"], "amount": a, "from": src,
@@ -942,6 +1003,16 @@ class _Sentence:
             return
         if kind == "t_noop":
             return  # "4 valves, not 5": a correction that restates what was said
+        if kind == "t_reverse":
+            # "Move 2 X from A to B, and 1 Y the other way": the move before, from B to A
+            prev = self.statements[-1] if self.statements else None
+            if prev is None or prev["op"] != "transfer" or not prev.get("to") or "names" not in prev["from"]:
+                raise TranslationError(f"{_quote(words)}: 'the other way' of what? no move from one place "
+                                       f"to another comes before it")
+            back_from, back_to = list(prev["to"]["names"]), list(prev["from"]["names"])
+            for np in self.nps(self.sub(node, "items")[0]):
+                self.statements.append(self._transfer_statement(np, back_from, back_to, words))
+            return
         if kind == "t_from":
             # "Rack B gets 3 widgets from rack C and 2 gears from rack A": the same destination
             prev = self.statements[-1] if self.statements else None

@@ -148,13 +148,17 @@ def _set(st: _State, s: dict) -> None:
                 total = world_total(st.world, i)
                 st.put(p, i, total, f"all {total} the world has", words, True)
             elif "as_many_as" in a:
-                other = a["as_many_as"]
-                st.check_names([other], [], words)
+                # the count now of this item (or of the item ``of``) at a place, or at several together
+                others = [a["as_many_as"], *a.get("together_with", [])]
+                of = a.get("of", i)
+                st.check_names(others, [of], words)
                 k = int(a.get("times", 1))
-                n = stock(st.world, other, i) * k + int(a.get("more", 0)) - int(a.get("fewer", 0))
+                n = sum(stock(st.world, q, of) for q in others) * k + int(a.get("more", 0)) - int(a.get("fewer", 0))
                 shown = f"{k} times " if k != 1 else ""
                 shown += f"{a['more']} more than " if a.get("more") else f"{a['fewer']} fewer than " if a.get("fewer") else ""
-                st.put(p, i, n, f"{shown}as many as {other} has now ({n})", words, True)
+                what = f" {of}" if of != i else ""
+                st.put(p, i, n, f"{shown}as many as {' and '.join(others)} {'have' if len(others) > 1 else 'has'}"
+                                f"{what} now ({n})", words, True)
             elif a.get("rest"):
                 raise TranslationError(f"'{words}': 'the rest' of what? say where it comes from")
             else:
