@@ -383,3 +383,22 @@ def test_any_command_is_refused_or_read_into_a_goal_the_garden_can_meet(garden):
             assert set(rule.get("only", rule.get("never", []))) <= set(world["robots"]) and rule["words"]
 
     check()
+
+
+def test_a_command_read_two_ways_is_refused(garden, monkeypatch):
+    """The parser keeps every reading: were the grammar ever to allow two (here: a variant that
+    reads "water north" as a bed list and as a single bed), the command is refused, not resolved
+    by a silent preference."""
+    language = garden["language"]
+    ambiguous = language.GRAMMAR.replace("water: WATER beds", "water: WATER beds | WATER bed")
+    assert ambiguous != language.GRAMMAR
+    monkeypatch.setattr(language, "GRAMMAR", ambiguous)
+    language.parser.cache_clear()
+    try:
+        with pytest.raises(TranslationError) as err:
+            language.read_command("prune south and water north", garden["allotment"])
+        assert "'water north': they can be read in more than one way" in str(err.value)
+    finally:
+        monkeypatch.undo()
+        language.parser.cache_clear()
+    assert language.read_command("water north", garden["allotment"])["goal"] == {"watered": ["north"]}

@@ -129,8 +129,10 @@ ACTIONS = {"water": "water", "prune": "prune", "trim": "prune", "weed": "prune",
 
 @lru_cache(maxsize=1)
 def parser() -> Lark:
-    """One Earley parser per process (a basic lexer: a keyword is never read as a name)."""
-    return Lark(GRAMMAR, parser="earley", lexer="basic", propagate_positions=True)
+    """One Earley parser per process (a basic lexer: a keyword is never read as a name). Every
+    reading is kept (``ambiguity="explicit"``): a command the grammar reads two ways is refused,
+    never resolved by a silent preference."""
+    return Lark(GRAMMAR, parser="earley", lexer="basic", propagate_positions=True, ambiguity="explicit")
 
 
 class _Spans(Transformer):
@@ -167,6 +169,10 @@ def read_command(command: str, world: dict) -> dict:
     except UnexpectedInput as err:
         raise TranslationError(f"could not place the words {_piece(text, err)!r} in the command "
                                f"(the garden language: water, prune, harvest, and robot rules)") from None
+    for node in tree.find_data("_ambig"):  # lark gives the node no position: its readings have one
+        spans = [(c.meta.start_pos, c.meta.end_pos) for c in node.children if not c.meta.empty]
+        words = text[min(a for a, _ in spans):max(b for _, b in spans)] if spans else text
+        raise TranslationError(f"could not place the words {words!r}: they can be read in more than one way")
     clauses = _Spans(text).transform(tree)["children"]
     reader = _Reader(world)
     for clause in clauses:
