@@ -154,6 +154,11 @@ def test_the_registry_finds_the_domain_through_its_entry_point(garden_plugin_sit
     proc = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, env=env, capture_output=True, text=True, timeout=60)
     assert proc.returncode == 0, proc.stderr
     assert "'garden'" in proc.stdout and "GardenDomain garden.pddl garden.actions.yaml" in proc.stdout
+    workflow = garden_plugin_site / "pipflow_garden" / "workflows" / "garden.yaml"
+    proc = pipflow(garden_plugin_site, tmp_path, "validate", str(workflow))
+    assert proc.returncode == 0 and "garden.yaml: ok" in proc.stdout, proc.stderr
+    proc = pipflow(garden_plugin_site, tmp_path, "steps", "garden.simulate")
+    assert proc.returncode == 0 and "from pipflow-garden:garden" in proc.stdout, proc.stderr
 
 
 # ---------------------------------------------------------------------------------- the parts
