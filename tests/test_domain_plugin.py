@@ -407,3 +407,12 @@ def test_a_command_read_two_ways_is_refused(garden, monkeypatch):
         monkeypatch.undo()
         language.parser.cache_clear()
     assert language.read_command("water north", garden["allotment"])["goal"] == {"watered": ["north"]}
+
+
+def test_the_package_readme_example_world_loads(garden):
+    text = (PACKAGE / "README.md").read_text()
+    example = text.split("```yaml\n", 1)[1].split("```", 1)[0]
+    world = garden["world"].world_from_text(example, "README.md")
+    assert set(world["places"]) == {"north", "faucet", "shed"} and world["robots"]["mule"]["tags"] == ["wet"]
+    read = garden["language"].read_command("harvest 3 tomatoes from north, then water north", world)
+    assert read["goal"] == {"stored": {"shed": {"tomato": 4}}, "ripe": {"north": {"tomato": 1}}, "watered": ["north"]}
