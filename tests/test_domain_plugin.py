@@ -277,7 +277,8 @@ def test_a_problem_is_read_back_and_checked_against_the_garden(garden, garden_pl
     domain, world = GardenDomain(), garden["allotment"]
     read = garden["language"].read_command("prune south, then pick at least two beans from east into the crate",
                                            world)
-    text = domain.write_problem(world, read["goal"], "garden")
+    text = domain.write_problem(world, read["goal"], "garden", name="beans-1")
+    assert text.startswith("(define (problem beans-1)\n  (:domain garden)")
     parsed = parse(domain.pddl_domain(), text)
     assert domain.read_problem(parsed, world, []) == {"goal": read["goal"]}
     assert domain.world_mismatches(parsed, text, world) == []

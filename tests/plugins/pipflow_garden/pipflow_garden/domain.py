@@ -55,8 +55,8 @@ class GardenDomain(TaskDomain):
                 "response": "", "usage": dict(NO_USAGE), "errors": [], "order": read["order"],
                 "explanation": read["explanation"]}
 
-    def write_problem(self, world: dict, goal: Any, domain_name: str) -> str:
-        return problem.write_problem(world, goal, domain_name)
+    def write_problem(self, world: dict, goal: Any, domain_name: str, name: str = "task") -> str:
+        return problem.write_problem(world, goal, domain_name, name=name)
 
     def example_problem(self, world: dict, domain_text: str = "") -> str | None:
         """The garden's objects and initial state, with room left for the goal."""

@@ -6,7 +6,7 @@ from __future__ import annotations
 from typing import Any
 
 
-def write_problem(world: dict, goal: dict, domain_name: str = "garden", name: str = "garden-task") -> str:
+def write_problem(world: dict, goal: dict, domain_name: str = "garden", name: str = "task") -> str:
     """PDDL problem text for ``goal`` (the reader's goal form) in ``world``."""
     beds, taps, stores, crops = list(world["beds"]), list(world["taps"]), list(world["stores"]), list(world["crops"])
     init = [f"({fluent} {' '.join(args)})" if value is True else f"(= ({fluent} {' '.join(args)}) {value})"
