@@ -226,10 +226,12 @@ def test_a_bad_world_file_lists_every_problem_located(garden, tmp_path):
         "beds:\n"
         "  north: {x: 1, y: 1, width: 3, depth: 2, access: [2, 2], ripe: {tomatoe: 2}}\n"
         "  Big: {x: 5, y: 1, width: 3, depth: 2, access: [6, 0.5]}\n"
-        "taps: {tap: {x: 0, y: 6, width: 0.5, depth: 0.5, access: [1, 6]}}\n"
+        "taps: {tap: {x: 0, y: 6, width: 0.5, depth: 0.5, access: [1, 6]}, "
+        "spout: {x: 2, y: 2, width: 0.5, depth: 0.5, access: [2.2, 0.5]}}\n"
         "stores: {shed: {x: 8, y: 6, width: 3, depth: 1, access: [8, 5], room: 1, holds: {tomato: 2}}}\n"
         "robots:\n"
-        "  r1: {start: [1, 7], skills: {water: 1, fly: 2}, kind: rover}\n")
+        "  r1: {start: [1, 7], skills: {water: 1, fly: 2}, kind: rover}\n"
+        "  r2: {start: [2, 1.5], skills: {cut: 1}}\n")
     with pytest.raises(WorldError) as err:
         garden["world"].load_world(bad)
     text = str(err.value)
@@ -239,7 +241,10 @@ def test_a_bad_world_file_lists_every_problem_located(garden, tmp_path):
                   f"{bad}:7:8: tap name 'tap' is a word of the garden's PDDL domain",
                   f"{bad}:8:16: store shed lies outside the floor (10 x 8 m)",
                   f"{bad}:8:81: store shed holds 2 units, more than its room of 1",
-                  f"{bad}:10:42: robot r1: unknown skill 'fly'; skills: water, cut, carry"):
+                  f"{bad}:10:42: robot r1: unknown skill 'fly'; skills: water, cut, carry",
+                  f"{bad}:11:15: robot r2 starts inside bed north",
+                  f"{bad}:7:67: tap spout overlaps bed north",
+                  f"{bad}:5:51: bed north: access point [2.0, 2.0] lies in tap spout"):
         assert words in text, text
 
 

@@ -21,6 +21,7 @@ from pathlib import Path
 from typing import Any
 
 from pipflow.errors import Diagnostic, Location, WorldError
+from pipflow.floorplan import footprint, inside_footprint
 from pipflow.suggest import did_you_mean
 from pipflow.worldfile import is_point, parse_mapping, read_world_file
 
@@ -116,6 +117,7 @@ class _Checker:
         taps = self.taps(seen, places, floor)
         stores = self.stores(seen, crops, places, floor)
         robots = self.robots(seen, floor)
+        self.layout(places, robots)
         for section, items in (("beds", beds), ("taps", taps), ("stores", stores), ("robots", robots)):
             if not items and section not in data:
                 self.problem((), f"a garden world needs `{section}`")
@@ -161,6 +163,26 @@ class _Checker:
         elif vals["x"] < ax < vals["x"] + vals["width"] and vals["y"] < ay < vals["y"] + vals["depth"]:
             self.problem(path + ("access",), f"{what}: access point {access} lies inside its own footprint")
         return {**{k: float(v) for k, v in vals.items()}, "access": [float(ax), float(ay)]}
+
+    def layout(self, places: dict, robots: dict) -> None:
+        """Across beds, taps and stores: no two footprints overlap, no access point and no robot
+        start lies in a footprint (robots could not stand there)."""
+        path = {name: (p["role"] + "s", name) for name, p in places.items()}
+        names = list(places)
+        for i, a in enumerate(names):
+            ax0, ay0, ax1, ay1 = footprint(places[a])
+            for b in names[i + 1:]:
+                bx0, by0, bx1, by1 = footprint(places[b])
+                if ax0 < bx1 and bx0 < ax1 and ay0 < by1 and by0 < ay1:
+                    self.problem(path[b], f"{places[b]['role']} {b} overlaps {places[a]['role']} {a}", key=True)
+            for b in names:
+                if b != a and inside_footprint(places[a]["access"], places[b]):
+                    self.problem(path[a] + ("access",), f"{places[a]['role']} {a}: access point "
+                                                        f"{places[a]['access']} lies in {places[b]['role']} {b}")
+        for r, spec in robots.items():
+            for b, place in places.items():
+                if inside_footprint(spec["start"], place):
+                    self.problem(("robots", r, "start"), f"robot {r} starts inside {place['role']} {b}")
 
     def counts(self, path: tuple, value: Any, crops: dict, what: str) -> dict:
         out = {}
