@@ -156,7 +156,9 @@ def check_model(litellm, model: str, api_base: str | None) -> None:
     hosted provider's key is missing from the environment (:class:`InputError`, exit 2)."""
     try:
         provider = litellm.get_llm_provider(model=model, api_base=api_base)[1]
-    except Exception:
+    except Exception as exc:
+        if not LITELLM.owns(exc):
+            raise
         raise InputError(f"model {model!r}: litellm does not know its provider; write it as "
                          "provider/model (openai/gpt-4o, anthropic/..., ollama/...), or use "
                          "'offline' or 'local/smollm2'") from None

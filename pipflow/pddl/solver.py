@@ -78,8 +78,10 @@ def planner_names() -> list[str]:
         try:
             if factory.engine(name).is_oneshot_planner():
                 names.append(name)
-        except Exception:  # an engine that cannot even be described is not offered
-            continue
+        except Exception as exc:
+            if not UNIFIED_PLANNING.owns(exc):
+                raise  # a bug in an engine of pipflow's own is shown, not hidden
+            continue  # an installed engine that UP cannot even load or describe is not offered
     return names
 
 
