@@ -10,6 +10,7 @@ optimised are exactly the distances the schedule reports.
 """
 from __future__ import annotations
 
+import math
 from typing import Any, Iterable
 
 from pipflow.errors import InputError
@@ -21,10 +22,10 @@ class Timeline:
     def __init__(self, world: dict, travel=None, speed: float = 1.0, handling: float = 2.0):
         from pipflow.travel import TravelMap
 
-        if speed <= 0:
-            raise InputError(f"speed must be positive (m/s), got {speed}")
-        if handling < 0:
-            raise InputError(f"handling time must be >= 0 s, got {handling}")
+        if not 0 < speed < math.inf:  # NaN fails too: it would make every time NaN
+            raise InputError(f"speed must be a positive finite number (m/s), got {speed}")
+        if not 0 <= handling < math.inf:
+            raise InputError(f"handling time must be a finite number >= 0 s, got {handling}")
         self.world = world
         self.travel = travel if travel is not None else TravelMap(world)
         self.speed = float(speed)

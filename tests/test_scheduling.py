@@ -129,6 +129,19 @@ def test_bad_allocations_are_rejected():
         build_schedule(g, dict(alloc, assignments=bad), WORLD)
 
 
+@pytest.mark.parametrize("speed, handling", [(float("nan"), 2.0), (float("inf"), 2.0), (0.0, 2.0), (-1.0, 2.0),
+                                             (1.0, float("nan")), (1.0, float("inf")), (1.0, -0.5)])
+def test_speed_and_handling_must_be_finite_and_in_range(speed, handling):
+    """NaN compares false with everything: it must not slip past the range checks and make
+    every time of the schedule (and the allocator's frontier costs) NaN."""
+    g = build_graph(DOMAIN, PROBLEM, PLAN[:1], META)
+    with pytest.raises(InputError, match="speed|handling"):
+        allocate(g, WORLD, speed=speed, handling=handling)
+    alloc = allocate(g, WORLD)
+    with pytest.raises(InputError, match="speed|handling"):
+        build_schedule(g, alloc, WORLD, speed=speed, handling=handling)
+
+
 def test_schedule_step(tmp_path):
     from pipflow.steps.schedule import schedule
 
