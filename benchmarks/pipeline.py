@@ -19,7 +19,8 @@ about half of each shelf's capacity. Small worlds get the paper's default comman
 a quintet of two products on the last shelf); worlds with more than six shelves get "empty" six of
 them, so the planner, the graph and the allocation have real work.
 
-``--repeat N`` runs every size N times and keeps the fastest run (on a shared machine the
+``--current REV`` measures a commit instead of the working tree (which, in a shared checkout, holds
+other people's unfinished edits). ``--repeat N`` runs every size N times and keeps the fastest run (on a shared machine the
 fastest is the one least slowed by others). ``--baseline REV`` (repeatable) also runs every size
 with the code of git revision REV (exported with ``git archive`` into the work folder, compiled to
 bytecode, and put first on ``PYTHONPATH``); the codes take turns within each repetition, so they
@@ -199,6 +200,9 @@ class Code:
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--sizes", default=DEFAULT_SIZES, help=f"comma-separated (default {DEFAULT_SIZES})")
+    parser.add_argument("--current", default=None, metavar="REV",
+                        help="measure git revision REV as the current code (default: the working tree, "
+                             "with whatever uncommitted edits it holds)")
     parser.add_argument("--baseline", action="append", default=[], metavar="REV",
                         help="also run the code of git revision REV (repeatable)")
     parser.add_argument("--baseline-sizes", default=None,
@@ -213,14 +217,20 @@ def main() -> int:
     work = (args.keep or Path(tempfile.mkdtemp(prefix="pipflow-pipeline-"))).resolve()
     work.mkdir(parents=True, exist_ok=True)
     warm = work / "grammar-warm"
-    now = [Code("now warm", None, warm), Code("now cold", None, "cold"), Code("now off", None, "")]
-    bases = []
-    for rev in args.baseline:
+
+    def exported(rev: str) -> Path:
+        rev = subprocess.run(["git", "-C", str(REPO), "rev-parse", "--short", rev], check=True, capture_output=True,
+                             text=True).stdout.strip()  # HEAD today is not HEAD tomorrow: folders by commit
         site = baseline_site(rev, work)
-        compileall.compile_dir(str(site.parent / "src"), quiet=1)  # bytecode, as the current code has it
-        bases.append(Code(rev, site, None))
+        compileall.compile_dir(str(site.parent / "src"), quiet=1)  # bytecode, as the working tree has it
+        return site
+
+    here = exported(args.current) if args.current else None
+    now = [Code("now warm", here, warm), Code("now cold", here, "cold"), Code("now off", here, "")]
+    bases = [Code(rev, exported(rev), None) for rev in args.baseline]
     print(f"machine: {os.cpu_count()} CPUs; load average {' '.join(f'{x:.2f}' for x in os.getloadavg())}; "
-          f"one `pipflow run` per size, step cache off; records in {work}")
+          f"one `pipflow run` per size, step cache off; current code: "
+          f"{'revision ' + args.current if args.current else 'the working tree'}; records in {work}")
     for code in [now[0], *bases]:  # unmeasured: bytecode for every code, the parser in the warm cache
         r = code.run("paper", work, args.timeout, 0)
         print(f"warm-up run of {code.name} (not measured): {r['wall']:.2f} s, exit {r['code']}")
