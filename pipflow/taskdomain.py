@@ -67,9 +67,9 @@ class GoalCheck:
 class Grounding:
     """Grounded decoding for a domain: the model answers in a constrained form instead of PDDL.
     ``gbnf(world)``: a llama.cpp grammar; ``response_format(world)``: an OpenAI JSON schema;
-    ``read(text, world)``: the answer checked and resolved into ``{"goal", "constraints", "order",
-    "explanation"}`` (raises :class:`pipflow.language.parsing.ParseIssue` with words for the
-    model)."""
+    ``read(text, world)``: the answer checked, resolved and its problem written: ``{"problem",
+    "goal", "constraints", "order", "explanation", "errors"}`` (raises
+    :class:`pipflow.language.parsing.ParseIssue` with words for the model)."""
 
     gbnf: Callable[[dict], str]
     response_format: Callable[[dict], dict]
@@ -109,7 +109,8 @@ class TaskDomain(ABC):
     def load_world(self, path: str | Path, *, seed: int | None = None, **options: Any) -> dict:
         """The world file read and checked (WorldError listing every problem with file:line:col),
         its robots' starts varied reproducibly by ``seed`` (None: as in the file). ``options``:
-        domain-specific load options (household: ``team``). The dict carries ``domain``."""
+        domain-specific load options (household: ``team``). The dict carries ``domain`` (the
+        default domain's worlds may leave it out)."""
 
     def describe(self, world: dict) -> str:
         """One line for the run log: what the world holds."""
