@@ -47,7 +47,8 @@ def debug(
 
 @step("pddl.solve",
       doc="Solve a problem with a UP engine; status is solved, unsolvable or error, each with its message; a time-out fails the step.",
-      outputs={"status": "string", "plan": "array", "message": "string", "time": "number", "engine": "string"})
+      outputs={"status": "string", "plan": "array", "message": "string", "messages": "array", "time": "number",
+               "engine": "string"})
 def solve(
     ctx: StepContext,
     problem: Annotated[str | None, Doc("PDDL problem text")],
@@ -79,13 +80,12 @@ def solve(
     if fallback:
         check_engine(fallback)
     if not problem:
-        return {"status": "error", "plan": None, "message": "no problem to solve (the debugger rejected it or it was not written)",
-                "time": 0.0, "engine": engine}
+        return _outcome("error", None, "no problem to solve (the debugger rejected it or it was not written)",
+                        0.0, engine)
     try:
         parsed = _parse(ctx, problem, domain)
     except PDDLError as exc:
-        return {"status": "error", "plan": None, "message": f"the problem does not parse ({exc}); run pddl.debug first",
-                "time": 0.0, "engine": engine}
+        return _outcome("error", None, f"the problem does not parse ({exc}); run pddl.debug first", 0.0, engine)
     domain_text = _read_text(ctx.resolve_path(domain))
     first_params = params
     if engine == DEFAULT_ENGINE and world and world.get("robots"):  # the robots' capacities: the domain knows them
@@ -110,8 +110,14 @@ def solve(
     plan = plan_in_world_names(result.plan, world)
     if plan is not None:
         ctx.write_artifact("plan.txt", format_plan(plan))
-    return {"status": result.status.value, "plan": plan, "message": message, "time": result.time,
-            "engine": result.engine}
+    return _outcome(result.status.value, plan, message, result.time, result.engine)
+
+
+def _outcome(status: str, plan: list | None, message: str, time: float, engine: str) -> dict:
+    """The step's outputs; ``messages`` (the checking steps' convention) holds the message when
+    there is no plan, so a loop that runs out of rounds quotes the planner's reason too."""
+    return {"status": status, "plan": plan, "message": message, "messages": [] if plan else [message],
+            "time": time, "engine": engine}
 
 
 def _read_text(path) -> str:

@@ -21,3 +21,23 @@ def test_fast_downward_solves_a_classical_problem_and_the_plan_validates(tmp_pat
     assert {step["action"] for step in plan} == {"carry"}
     checked = verify.func(ctx, problem=problem, domain="domain.pddl", plan=plan, world=None)
     assert checked["ok"], checked["messages"]
+
+
+def test_a_loop_that_finds_no_plan_quotes_the_planners_reason(tmp_path):
+    """A refinement loop that runs out of rounds because the planner found no plan names the
+    planner's own reason in its error, not only what the steps after it said."""
+    from pipflow.engine import run_workflow
+
+    unreachable = (FIXTURES / "problem.pddl").read_text().replace("(connected store kitchen)", "")
+    unreachable = unreachable.replace("(connected kitchen store)", "")
+    (tmp_path / "problem.pddl").write_text(unreachable)
+    (tmp_path / "domain.pddl").write_text((FIXTURES / "domain.pddl").read_text())
+    (tmp_path / "wf.yaml").write_text(
+        "pipflow: 1\nname: noplan\nsteps:\n  - id: refine\n    loop:\n      max: 2\n      until: ${solve.plan}\n"
+        "      on_max: fail\n      steps:\n        - id: solve\n          uses: pddl.solve\n"
+        "          with: {problem: \"${'" + unreachable.replace("\n", " ").replace("'", "") + "'}\", "
+        "domain: domain.pddl, engine: fast-downward, timeout: 60}\n")
+    result = run_workflow(tmp_path / "wf.yaml", runs_dir=tmp_path / "runs")
+    assert result.status == "failed"
+    assert "round 2 ended with: solve: " in str(result.error)
+    assert "fast-downward" in str(result.error) or "no plan" in str(result.error).lower()
