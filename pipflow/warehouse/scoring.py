@@ -1,4 +1,4 @@
-"""Scoring one run of a benchmark task, and aggregating runs into the table of issue 7.
+"""Scoring one run of a warehouse task (the aggregation into the bench table is :mod:`pipflow.benchstats`).
 
 A run succeeds when, judged on what the *simulation* reports (never on what the plan claims):
 
