@@ -161,7 +161,7 @@ def test_translator_matches_ground_truth(world, tasks):
             refused.append(t["id"])
             continue
         assert _norm(goal) == _norm(t["goal"]), (t["id"], goal)
-    assert sorted(refused) == ["hv-09", "hv-10"]   # recipes ("make me a salad"): docs/household.md
+    assert refused == []   # hv-09/hv-10 ("make me a salad", "prepare breakfast"): meals, docs/household.md
 
 
 def test_translator_refusals(world):

@@ -12,7 +12,9 @@ The sentence shapes: clauses joined by "and", "then", commas; a clause is a chan
 ("slice the bread", "heat the egg in the microwave"), a switch ("turn off the TV"), a move ("put
 the pen on the desk", with gapping: "and the pillow on the bed"), a put-away, a trash, a wanted
 state ("leave the fridge open", "the TV should be off"), an observation ("the desk lamp is on")
-or a state cue ("nobody is reading", "we do not need the TV anymore", "it is too bright").
+or a state cue ("nobody is reading", "we do not need the TV anymore", "it is too bright"), a
+negated wish ("don't leave the fridge open": the other polarity) or a meal ("make me a salad",
+whose foods the resolver finds through the lexicon's ``MEALS`` and the world's affordances).
 """
 from __future__ import annotations
 
@@ -22,7 +24,7 @@ _RULES = r"""
 start: _sep* item (_sep+ item | _sep* thengap)* _sep*
 _sep: COMMA | END | @AND | @THEN | @BUT
 
-?item: change | toggle | put | gap | away | trash | chill | request | ensure | observe | cue
+?item: change | toggle | put | gap | away | trash | chill | request | unwant | ensure | observe | cue | meal
 
 change: _vstate @UP? things @PIECES? via? exception? @HERE?
       | _vstate things @UP via? exception?
@@ -34,6 +36,8 @@ toggle: @V_TOGGLE onoff tthings @HERE?
       | @V_TOGGLE tthings onoff @HERE?
       | @V_SHUT off tthings
       | @V_SHUT tthings off
+      | @V_TOGGLE typo_off tthings
+typo_off: @OF
 tthings: tnp ((COMMA | @AND | COMMA @AND) tnp)*
 tnp: sel where? exception?
 onoff: on | off
@@ -67,14 +71,23 @@ request: @V_LEAVE things state
        | @V_MAKE things state
        | @SUBJ? (@WANT | @NEED) things (@TO @BE)? state
        | things @SHOULD @BE? state
+       | things @NEED state
+unwant: @DONOT @V_LEAVE things state
+      | things @SHOULD @NOT @BE? state
 ensure: @V_MAKE @SURE @THAT? wish ((COMMA | @AND | COMMA @AND) wish)*
-wish: things (@IS | @SHOULD @BE) state
-state: @ADJ | @V_OPEN | @V_SHUT | @V_CLEAN | @V_WARM | @V_STATE | on | off | @TOGGLED onoff
+wish: things (@IS | @SHOULD @BE) not? state
+not: @NOT
+state: @ADJ | @V_OPEN | @V_SHUT | @V_CLEAN | @V_WARM | @V_STATE | on | off | @TOGGLED onoff | @V_TOGGLE onoff
+
+meal: (@V_MAKE | @V_PREPARE | _vstate) @THE? @MEAL @HERE?
+    | @SUBJ? (@WANT | @NEED) @THE? @MEAL
 
 observe: things @IS state
 
 cue: @NOBODY @IS? activity (@TO | @ON | @AT)? things? @ANYMORE?
    | @SUBJ? @DONOT @NEED things (on | @ANYMORE)?
+   | @NOBODY @NEED things @ANYMORE?
+   | @SUBJ? @IS? @DONE things @ANYMORE?
    | things @IS @NOT @NEEDED @ANYMORE?
    | @IT @IS (@INTENS | @TOO)* lightcue @HERE?
    | @SUBJ @CANNOT @SEE @HERE?
@@ -87,7 +100,9 @@ np: sel exception?
 exception: COMMA? @EXCEPT things
 sel: quant? @OF? @THE? count? adj* noun @DOOR? rel?
    | @EVERYTHING where?
+   | @EVERYTHING rel
    | @THE @THING where?
+   | @THE @THING rel
    | quant? @OF? @IT
    | @THE adj+ @ONES
    | @THE @DOOR

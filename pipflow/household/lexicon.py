@@ -72,13 +72,15 @@ _add("V_TRASH", "trash,discard,bin,dump,junk,get rid of,dispose of,throw away,th
 _add("V_TIDY", "tidy,return,clear away")
 _add("V_LEAVE", "leave,keep")
 _add("V_MAKE", "make")
+#: verbs that prepare a meal ("fix us some breakfast"); "make" is V_MAKE (also "make sure")
+_add("V_PREPARE", "prepare,fix,fix up,whip up,rustle up")
 _add("SURE", "sure,certain")
 _add("ACTIVITY", ",".join(ACTIVITIES))
 _add("LIGHTCUE", ",".join(LIGHT_CUES))
 for _w in LIGHT_CUES:
     PHRASES[(_w,)] = ("LIGHTCUE", LIGHT_CUES[_w])
 _add("SEE", "see")
-_add("THE", "the,a,an,my,our,your,its,their,his,her,these,those,this")
+_add("THE", "the,a,an,my,our,your,its,their,his,her,these,those,this,some")
 _add("THAT", "that,which,who")
 _add("ALL", "all")
 _add("EVERY", "every,each,any")
@@ -107,13 +109,15 @@ _add("OF", "of")
 _add("IT", "it,them,they")
 _add("EXCEPT", "except,except for,apart from,other than,besides,excluding,but not")
 _add("NOT", "not")
-_add("IS", "is,are,is still,are still")
+_add("IS", "is,are,am,is still,are still")
 _add("BE", "be,stay,remain,stays,remains")
 _add("SHOULD", "should,must,has to,have to,needs to,need to,ought to,got to")
 _add("SUBJ", "i,we,you")
 _add("WANT", "want,would like,like,wish,d like,prefer")
 _add("NEED", "need,needs")
 _add("NEEDED", "needed,necessary,required,in use")
+#: "we are done with the laptop": the thing is not needed (a state cue, like "we do not need")
+_add("DONE", "done with,finished with,through with")
 _add("DONOT", "do not,does not,did not,no longer,dont")
 _add("ANYMORE", "anymore,any more,any longer,for now,for the night,tonight,right now")
 _add("NOBODY", "nobody,no one,noone,none of us")
@@ -125,6 +129,33 @@ _add("HERE", "here,in here,in the house,in the home,in the flat,in the apartment
 _add("PIECES", "in half,in two,into pieces,into slices,into cubes,in pieces,in slices,into halves")
 _add("DOOR", "door,doors")
 _add("ONES", "ones")
+
+#: the negation of a wanted state is the other polarity of the same predicate ("don't leave the
+#: fridge open": closed); every condition has exactly one opposite, so nothing is guessed
+OPPOSITE = {"open": "closed", "closed": "open", "on": "off", "off": "on", "clean": "dirty", "dirty": "clean",
+            "hot": "cold", "cold": "hot", "sliced": "whole", "whole": "sliced"}
+
+#: meals: an activity cue names a state of the foods of a meal ("make a salad": the salad
+#: vegetables sliced; "prepare breakfast": the breakfast foods hot). Which foods make a meal is
+#: kitchen knowledge that no world file holds, so it is written here, small and closed; a world
+#: may override it with a category of its own named (or worded) like the meal. ``foods``: the
+#: last word of an object's name or words, singular; ``base``: at least one of these must be in
+#: the home, else the meal is refused (a salad of tomatoes alone is not what was asked).
+MEALS: dict[str, dict] = {
+    "salad": {"state": "sliced",
+              "foods": ["lettuce", "tomato", "cucumber", "cabbage", "spinach", "rocket", "arugula", "kale",
+                        "radish", "celery", "pepper", "avocado", "carrot", "onion", "olive", "leaf", "leaves"],
+              "base": ["lettuce", "cabbage", "spinach", "rocket", "arugula", "kale", "leaf", "leaves"]},
+    "fruit salad": {"state": "sliced",
+                    "foods": ["apple", "banana", "orange", "pear", "melon", "watermelon", "grape", "strawberry",
+                              "kiwi", "mango", "pineapple", "peach", "plum", "apricot", "berry", "cherry"]},
+    "breakfast": {"state": "hot",
+                  "foods": ["egg", "bread", "toast", "bacon", "sausage", "pancake", "waffle", "porridge", "oatmeal",
+                            "bagel", "croissant", "muffin", "bun", "roll"]},
+}
+_add("MEAL", ",".join(MEALS))
+for _m in MEALS:
+    PHRASES[tuple(_m.split())] = ("MEAL", _m)
 
 #: category words that name a mass, not one thing: "put away the fruit" means all of it, while
 #: "turn off the lamp" names one lamp (and is asked back when the home has several)
@@ -142,7 +173,37 @@ FILLER = {("please",), ("kindly",), ("just",), ("quickly",), ("now",), ("for", "
           ("we", "need", "you", "to"), ("go", "ahead", "and"), ("go", "and"), ("hey",), ("robots",), ("team",),
           ("thanks",), ("thank", "you"), ("right", "away"), ("let", "us"), ("lets",), ("let", "s"),
           ("for", "me", "please"), ("me",), ("ok",), ("okay",), ("already",), ("again",),
-          ("can", "someone"), ("could", "someone"), ("someone",), ("somebody",), ("can", "somebody")}
+          ("can", "someone"), ("could", "someone"), ("someone",), ("somebody",), ("can", "somebody"),
+          ("us",), ("would", "you", "mind"), ("do", "you", "mind"), ("would", "you", "please"),
+          ("could", "you", "please"), ("if", "you", "would"), ("if", "you", "could")}
+#: filler words a misspelling may be read as ("plese"): only these, long and close to no
+#: content word, so that a misspelt content word is never dropped as politeness
+FILLER_TYPO_TARGETS = {"please", "thanks"}
+
+
+def gerund(verb: str) -> str:
+    """The -ing form of a one-word verb: slice -> slicing, put -> putting, open -> opening, fry ->
+    frying ("would you mind putting", "the plate needs washing")."""
+    if verb.endswith("ie"):
+        return verb[:-2] + "ying"
+    if verb.endswith("e") and not verb.endswith(("ee", "ye", "oe")):
+        return verb[:-1] + "ing"
+    vowels = "aeiou"
+    groups = len(re.findall(r"[aeiou]+", verb))
+    if groups == 1 and len(verb) >= 3 and verb[-1] not in vowels + "wxy" and verb[-2] in vowels \
+            and verb[-3] not in vowels:
+        return verb + verb[-1] + "ing"
+    return verb + "ing"
+
+
+#: verb classes whose -ing forms are the same word of the grammar
+_VERB_CLASSES = {"V_STATE", "V_OPEN", "V_SHUT", "V_CLEAN", "V_WARM", "V_TOGGLE", "V_PUT", "V_THROW", "V_TRASH",
+                 "V_CHILL", "V_TIDY", "V_PREPARE"}
+for (_k, (_c, _v)) in list(PHRASES.items()):
+    if _c in _VERB_CLASSES:
+        _g = (gerund(_k[0]),) + _k[1:]
+        if _g not in PHRASES:
+            PHRASES[_g] = (_c, _v)
 
 
 def normalize(text: str) -> str:

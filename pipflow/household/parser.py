@@ -28,7 +28,8 @@ from lark.visitors import CollapseAmbiguities
 
 from pipflow.errors import TranslationError
 from pipflow.household.grammar import NOUN_DUAL, grammar_text
-from pipflow.household.lexicon import ACTIVITIES, COLD, FILLER, LIGHT_CATEGORY_WORD, PHRASES, plurals, words_of
+from pipflow.household.lexicon import (ACTIVITIES, COLD, FILLER, FILLER_TYPO_TARGETS, LIGHT_CATEGORY_WORD, MEALS,
+                                       OPPOSITE, PHRASES, plurals, words_of)
 from pipflow.language.names import distance
 from pipflow.language.numbers import read_number
 
@@ -91,12 +92,14 @@ PUNCT = {".": "END", ";": "END", "!": "END", "?": "END", ":": "END", ",": "COMMA
 #: token classes whose words a typo may be read as: content words only. A function word is short
 #: and close to many words ("fork" is not "for", "house" is not "those"), so it is never guessed.
 CONTENT_CLASSES = {"V_STATE", "V_OPEN", "V_SHUT", "V_CLEAN", "V_WARM", "V_TOGGLE", "V_PUT", "V_THROW", "V_TRASH", "V_CHILL",
-                   "V_TIDY", "V_LEAVE", "V_MAKE", "ADJ", "ACTIVITY", "LIGHTCUE", "TOGGLED"}
+                   "V_TIDY", "V_LEAVE", "V_MAKE", "V_PREPARE", "ADJ", "ACTIVITY", "LIGHTCUE", "TOGGLED", "MEAL"}
 
 
 def _vocabulary(world_index: dict) -> set[str]:
-    """Words a misspelt word may be read as: the world's words and the lexicon's content words."""
+    """Words a misspelt word may be read as: the world's words, the lexicon's content words and
+    the few politeness words of ``FILLER_TYPO_TARGETS`` ("plese")."""
     vocab = {w for k, (cls, _) in PHRASES.items() if cls in CONTENT_CLASSES and len(k) == 1 for w in k}
+    vocab |= FILLER_TYPO_TARGETS
     vocab |= {w for k in world_index for w in k}
     return {w for w in vocab if len(w) >= 3}
 
@@ -300,7 +303,7 @@ class Builder:
             node = onoff
         if self._sub(node, "on") is not None:
             return "on"
-        if self._sub(node, "off") is not None:
+        if self._sub(node, "off") is not None or self._sub(node, "typo_off") is not None:   # "turn of the TV"
             return "off"
         tok = self._tokens(node)[-1]
         return str(self.tag_of(tok).value)
@@ -406,6 +409,15 @@ class Builder:
             st = {"op": "put", "things": things, "to": {"words": self.tag_of(verb).words, "quality": COLD}}
         elif kind == "request":
             st = {"op": "change", "things": things, "to": self.state(self._sub(node, "state"))}
+        elif kind == "unwant":   # "don't leave the fridge open", "the TV shouldn't be on": the other polarity
+            st = {"op": "change", "things": things, "to": OPPOSITE[self.state(self._sub(node, "state"))]}
+        elif kind == "meal":
+            meal = str(self.tag_of(next(t for t in self._tokens(node) if self._cls(t) == "MEAL")).value)
+            verb = self.tag_of(self._tokens(node)[0])
+            if verb.value is not None and verb.value != MEALS[meal]["state"]:   # "cook breakfast", never "heat a salad"
+                raise TranslationError(f"'{words}': a {meal} is not made by '{verb.words}' "
+                                       f"(its foods end {MEALS[meal]['state']}); say what to do with which things")
+            st = {"op": "meal", "meal": meal}
         elif kind == "observe":
             st = {"op": "observe", "things": things, "is": self.state(self._sub(node, "state"))}
         elif kind == "cue":
@@ -438,8 +450,11 @@ class Builder:
         """"make sure the oven is closed and the big light is off": one change per wish."""
         out = []
         for wish in self._subs(node, "wish"):
+            to = self.state(self._sub(wish, "state"))
+            if self._sub(wish, "not") is not None:   # "make sure the oven is not on"
+                to = OPPOSITE[to]
             out.append({"op": "change", "things": self.things(self._sub(wish, "things")),
-                        "to": self.state(self._sub(wish, "state")), "words": _words(self.tags, wish)})
+                        "to": to, "words": _words(self.tags, wish)})
         return out
 
     def order(self, tree: Tree) -> dict:

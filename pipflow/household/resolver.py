@@ -29,7 +29,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from pipflow.errors import Refusal, TranslationError
-from pipflow.household.lexicon import COLD, INDEFINITE, MASS_NOUNS, REACHABLE, VIA_PROPERTY, words_of
+from pipflow.household.lexicon import COLD, INDEFINITE, MASS_NOUNS, MEALS, REACHABLE, VIA_PROPERTY, plurals, words_of
 from pipflow.household.order import check_order
 from pipflow.household.problem import CONDITIONS
 from pipflow.household.world import entity, initial_state, members
@@ -83,6 +83,7 @@ class Resolver:
         self.before: list[str] = []                            # what "in it" may mean in this statement
         self.history: list[list[str]] = []                     # what each statement before named, in order
         self.cue_defaults: list[tuple[str, str, str, list[str]]] = []   # (category, state, words, members)
+        self.via_placed: dict[str, str] = {}                   # objects put where an action happens -> place
 
     # selectors -------------------------------------------------------------------------
     def _candidates(self, sel: dict, words: str) -> tuple[list[str], bool]:
@@ -106,9 +107,12 @@ class Resolver:
                 raise TranslationError(f"'{words}': '{sel['words']}' refers to nothing said before it")
             return list(self.last or self.last_places), False
         if sel.get("everything"):
-            if "from" not in sel:
-                raise TranslationError(f"'{words}': '{sel['words']}' needs a place (e.g. 'everything on the sofa')")
-            return list(self.world["objects"]), True
+            if "from" in sel:
+                return list(self.world["objects"]), True
+            if sel.get("state"):   # "everything that is on": every thing of the home in that state
+                return list(self.world["objects"]) + list(self.world["places"]), True
+            raise TranslationError(f"'{words}': '{sel['words']}' needs a place or a state "
+                                   "(e.g. 'everything on the sofa', 'everything that is on')")
         readings = sel["noun"]["readings"]
         named = [r for r in readings if r["kind"] in ("object", "place")]
         if named:
@@ -123,6 +127,9 @@ class Resolver:
         statement will ask of them (a category keeps the members it applies to)."""
         names, implicit = self._candidates(sel, words)
         what = sel["words"]
+        if implicit and sel.get("det") == "some" and "count" not in sel:
+            raise TranslationError(f"'{words}': how many of '{sel['noun']['words'] if 'noun' in sel else what}'? "
+                                   "('some' does not say; give a number, or 'all')")
         need = CONDITIONS[cond][2] if cond else prop
         if sel.get("pronoun") and need and self.last_places and \
                 not any(need in entity(self.world, n)["properties"] for n in names):
@@ -239,6 +246,16 @@ class Resolver:
 
     def put(self, obj: str, place: str, words: str) -> None:
         old = self.goal.inside.get(obj)
+        if old is not None and old[0] != place and self.via_placed.get(obj) == old[0]:
+            # "heat the egg in the microwave, then bring it to the table": the microwave is where
+            # it was heated, the table where it ends; the microwave is left as found
+            via = self.via_placed.pop(obj)
+            self.goal.notes.append(f"{obj} ends in {place} ('{words}'), after '{old[1]}' (the goal is the end "
+                                   f"state: that it is heated in {via} is not part of it)")
+            del self.goal.inside[obj]
+            if "openable" in self.world["places"][via]["properties"] and not holds_now(self.world, via, "open"):
+                self.set_state(via, "closed", False, old[1])
+            old = None
         if old is not None and old[0] != place:
             raise TranslationError(f"the command puts {obj} both in {old[0]} ('{old[1]}') and in {place} ('{words}')")
         props = self.world["places"][place]["properties"]
@@ -360,6 +377,8 @@ class Resolver:
             self.last = names
         elif op == "cue":
             self.cue(st, words)
+        elif op == "meal":
+            self.meal(st, words)
         else:
             raise TranslationError(f"'{words}': unknown statement {op!r}")
 
@@ -384,6 +403,7 @@ class Resolver:
                 if n not in self.world["objects"]:
                     raise Refusal(f"'{words}': {n} cannot be moved into {via}")
                 self.put(n, via, words)
+                self.via_placed[n] = via
         self.last = [n for n, _ in named] or self.last
 
     def move(self, st: dict, words: str) -> None:
@@ -459,6 +479,45 @@ class Resolver:
         for n, explicit in named:
             self.want(n, cond, explicit, words)
         self.last = [n for n, _ in named]
+
+    def meal(self, st: dict, words: str) -> None:
+        """A meal (lexicon ``MEALS``): its foods in this home end in the meal's state. A category
+        of the world named like the meal lists them; else the lexicon's foods, matched on the last
+        word of an object's name or words. No food, or no base food, is a refusal: the offline
+        reading does not invent a recipe from what happens to be in the home."""
+        meal = st["meal"]
+        spec = MEALS[meal]
+        cond = spec["state"]
+        need = CONDITIONS[cond][2]
+        own = [c for c, e in (self.world.get("categories") or {}).items()
+               if meal in [" ".join(words_of(w)) for w in [c] + list((e or {}).get("words") or [])]]
+        if own:
+            foods = [n for c in own for n in members(self.world, c) if n in self.world["objects"]]
+            source = f"the home's category {own[0]}"
+        else:
+            def food_word(name: str) -> str | None:
+                e = self.world["objects"][name]
+                for phrase in [name] + list(e.get("words") or []):
+                    last = (words_of(phrase) or [""])[-1]
+                    for f in spec["foods"]:
+                        if last == f or last in plurals(f):
+                            return f
+                return None
+            matched = {n: food_word(n) for n in self.world["objects"]}
+            foods = [n for n, f in matched.items() if f]
+            base = spec.get("base")
+            if base and not any(matched[n] in base for n in foods):
+                raise Refusal(f"'{words}': this home has no {' or '.join(base[:3])} (or other base for a {meal}), "
+                              f"so the offline reading will not guess one; say which things should be {cond}")
+            source = f"the {meal} foods of the lexicon"
+        able = [n for n in foods if need in self.world["objects"][n]["properties"]]
+        if not able:
+            raise Refusal(f"'{words}': this home has nothing for a {meal} that can be {cond}"
+                          + (f" ({', '.join(foods)} cannot)" if foods else ""))
+        self.goal.notes.append(f"'{words}': read as {', '.join(able)} {cond} ({source}; docs/household.md, meals)")
+        for n in able:
+            self.want(n, cond, False, words)
+        self.last = able
 
     def _apply_cue_defaults(self) -> None:
         """A cue that names nothing means its whole category, unless the command itself asks the
