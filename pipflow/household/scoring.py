@@ -1,6 +1,6 @@
 """Household scoring: final-state conditions, one run's score, and the bench hooks.
 
-A run succeeds when, judged on the executor's final state (never on what the plan claims),
+A run succeeds when, judged on the simulation's final state (never on what the plan claims),
 every ground-truth condition holds (objects in receptacles, object states, category counts),
 no subtask was refused, and no robot's legs jump. Metrics as in the paper's AI2-THOR table:
 
@@ -12,8 +12,9 @@ no subtask was refused, and no robot's legs jump. Metrics as in the paper's AI2-
   entered, a carry to a sink or heater for a wash or heat of an object that is elsewhere);
 * TC-max / TC-avg: the most and the mean metres a team robot travels, over successful runs.
 
-What ``pipflow bench`` uses for task files with ``domain: household`` (see
-:mod:`pipflow.benchdomains`): :func:`load_tasks`, :func:`score_bench_run`, :func:`bench_table`.
+What ``pipflow bench`` uses for task files with ``domain: household``, through the domain object
+(:class:`pipflow.household.domain.HouseholdDomain`): :func:`load_tasks`, :func:`score_bench_run`,
+:func:`understanding`, :func:`bench_table`.
 """
 from __future__ import annotations
 

@@ -1,6 +1,6 @@
 """Execute a household schedule and read back what the home looks like afterwards.
 
-Why an executor of its own, when the plan was validated? Because the benchmark judges the
+Why a simulation of its own, when the plan was validated? Because the benchmark judges the
 *world*, not the plan's claims, and the robot level can break what the team level got right: a
 coalition without the skill (no pickup for a 2-unit melon, nobody able to open the fridge), a
 robot that is not at the place when the subtask starts, or a schedule that starts a subtask

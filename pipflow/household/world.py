@@ -252,7 +252,7 @@ def members(world: dict, category: str) -> list[str]:
 
 
 def initial_state(world: dict) -> dict:
-    """The world's state in the executor's terms: where objects are and which flags hold."""
+    """The world's state in the simulation's terms: where objects are and which flags hold."""
     flags: dict[str, set[str]] = {k: set() for k in STATE_NEEDS}
     for name, e in {**world["places"], **world["objects"]}.items():
         for k, v in e["state"].items():
