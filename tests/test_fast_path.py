@@ -381,3 +381,27 @@ def test_an_up_ini_above_the_script_still_configures_the_planners(tmp_path):
     assert out.returncode == 0, out.stderr[-2000:]
     preferred = out.stdout.strip().strip("[]").replace("'", "").split(", ")
     assert preferred[0] == "enhsp" and "fast-downward" not in preferred  # the file's list, not UP's default
+
+
+def test_a_new_process_loads_the_parser_another_one_stored(tmp_path):
+    """Across processes (another hash seed, nothing in memory): the second process parses with the
+    stored parser, builds nothing, and reads the commands exactly as the first one did."""
+    code = f"""
+import json, sys
+import yaml
+from pipflow.language import earley, parser
+if sys.argv[1] == "load":
+    def refuse(*args, **kwargs):
+        raise SystemExit("built, not loaded")
+    earley._build = refuse
+world = yaml.safe_load(open({str(ROOT / 'benchmarks' / 'warehouse' / 'world.yaml')!r}))
+print(json.dumps([parser.parse(c, world) for c in {COMMANDS!r}], sort_keys=True))
+"""
+    env = {**os.environ, "PIPFLOW_GRAMMAR_CACHE_DIR": str(tmp_path / "grammar")}
+    runs = []
+    for mode, seed in (("build", "1"), ("load", "2")):
+        out = subprocess.run([sys.executable, "-c", code, mode], capture_output=True, text=True, timeout=300,
+                             env={**env, "PYTHONHASHSEED": seed})
+        assert out.returncode == 0, out.stderr[-2000:]
+        runs.append(out.stdout)
+    assert runs[0] == runs[1] and '"statements"' in runs[0]
