@@ -465,14 +465,29 @@ def skill_matrix(world: dict, nodes: list[dict]) -> tuple[list[str], list[str], 
     Q = np.zeros((len(robots), len(skills)))
     for i, r in enumerate(robots):
         for s, v in (world["robots"][r].get("skills") or {}).items():
-            Q[i, skills.index(s)] = float(v)
+            Q[i, skills.index(s)] = skill_level(v, f"robot {r}: skill {s!r}")
+    for n in nodes:
+        need_vector(n, skills)  # every subtask's needs checked once, before any walk
     return robots, skills, Q
+
+
+def skill_level(value: Any, where: str) -> float:
+    """A skill level or need as a number; refused unless finite and >= 0. Why: the fast first
+    stage relies on skills being non-negative (more robots never cover less), and a NaN need
+    would compare false with every level and silently drop its row from the model."""
+    try:
+        level = float(value)
+    except (TypeError, ValueError):
+        raise InputError(f"{where}: level {value!r} is not a number") from None
+    if not 0 <= level < math.inf:
+        raise InputError(f"{where}: level must be a finite number >= 0, got {value!r}")
+    return level
 
 
 def need_vector(node: dict, skills: list[str]) -> np.ndarray:
     Y = np.zeros(len(skills))
     for s, v in (node.get("skills") or {}).items():
-        Y[skills.index(s)] = float(v)
+        Y[skills.index(s)] = skill_level(v, f"subtask {node.get('id')}: needed skill {s!r}")
     return Y
 
 

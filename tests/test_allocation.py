@@ -262,3 +262,18 @@ def test_frontier_waves_record_scips_outcome():
     waves = allocate(g, WORLD, mode="frontier", time_limit=5.0)["stats"]["waves"]
     assert waves and all(isinstance(w["status"], IPStatus) for w in waves)
     assert waves[0]["status"] is IPStatus.OPTIMAL and waves[0]["allocated"] == ["s1", "s2"]
+
+
+@pytest.mark.parametrize("level", [float("nan"), float("inf"), -1, "lots"])
+def test_skill_levels_and_needs_must_be_finite_and_non_negative(level):
+    """A NaN need compares false with every level and would silently drop its row; a negative
+    level breaks the fast first stage (more robots must never cover less)."""
+    bad_world = yaml.safe_load(yaml.safe_dump(WORLD))
+    bad_world["robots"]["r1"]["skills"]["carry"] = level
+    g = graph(node("s1", "shelfA", "shelfC", "red", 2))
+    with pytest.raises(InputError, match="robot r1: skill 'carry'"):
+        allocate(g, bad_world)
+    bad_node = node("s1", "shelfA", "shelfC", "red", 2)
+    bad_node["skills"]["carry"] = level
+    with pytest.raises(InputError, match="subtask s1: needed skill 'carry'"):
+        allocate(graph(bad_node), WORLD)
