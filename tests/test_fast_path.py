@@ -84,13 +84,14 @@ print("ok")
 
 def test_main_job_imports_neither_matplotlib_nor_scipy_stats(tmp_path):
     """The main job with the default pictures=auto draws nothing, so it must not pay for
-    matplotlib (unit colours come from a table) nor for scipy.stats (ConfigSpace deferred)."""
+    matplotlib (unit colours come from a table) nor for scipy.stats (ConfigSpace deferred); its
+    travel graph is small, so it does not pay for scipy.sparse either (pipflow.travel.SMALL_GRAPH)."""
     code = f"""
 import sys
 from pipflow.engine.cli import main
 code = main(["run", {str(ROOT / 'workflows' / 'warehouse.yaml')!r}, "--runs-dir", {str(tmp_path)!r}, "--no-cache", "-q"])
 assert code == 0, code
-heavy = [m for m in ("matplotlib", "scipy.stats", "ConfigSpace.hyperparameters") if m in sys.modules]
+heavy = [m for m in ("matplotlib", "scipy.stats", "ConfigSpace.hyperparameters", "scipy.sparse") if m in sys.modules]
 assert not heavy, heavy
 print("ok")
 """
@@ -405,3 +406,49 @@ print(json.dumps([parser.parse(c, world) for c in {COMMANDS!r}], sort_keys=True)
         assert out.returncode == 0, out.stderr[-2000:]
         runs.append(out.stdout)
     assert runs[0] == runs[1] and '"statements"' in runs[0]
+
+
+# --- travel: small graphs searched with networkx, large ones with scipy (pipflow/travel.py) ------------
+def _grid_world(shelves: int, robots: int, seed: int) -> dict:
+    import random
+
+    rng = random.Random(seed)
+    cols = 4
+    out = {f"s{i}": {"x": 3 + 12 * (i % cols), "y": 4 + 7 * (i // cols), "width": 8, "depth": 2, "capacity": 10,
+                     "access": [7 + 12 * (i % cols), 3 + 7 * (i // cols)]} for i in range(shelves)}
+    width, height = 12 * cols + 4, 7 * ((shelves + cols - 1) // cols) + 6
+    starts = {}
+    while len(starts) < robots:
+        p = [round(rng.uniform(0, width), 2), round(rng.uniform(0, height), 2)]
+        if not any(s["x"] - 1 <= p[0] <= s["x"] + s["width"] + 1 and s["y"] - 1 <= p[1] <= s["y"] + s["depth"] + 1
+                   for s in out.values()):
+            starts[f"r{len(starts)}"] = {"start": p, "skills": {"carry": 1}}
+    return {"floor": {"width": width, "height": height}, "shelves": out, "robots": starts}
+
+
+@pytest.mark.parametrize("world", [WORLD, _grid_world(6, 15, 1), _grid_world(12, 20, 2)],
+                         ids=["warehouse", "6 shelves", "12 shelves"])
+def test_small_graph_search_gives_scipys_distances_and_paths(world, monkeypatch):
+    """Both searches on the same visibility graph: the same distances (to 1e-9), and paths of
+    those lengths that cross no shelf; and the small world really takes the networkx search."""
+    import math
+
+    from pipflow import travel
+
+    results = {}
+    for name, limit in (("networkx", 10**9), ("scipy", 0)):
+        monkeypatch.setattr(travel, "_GEOMETRIES", type(travel._GEOMETRIES)())
+        monkeypatch.setattr(travel, "SMALL_GRAPH", limit)
+        tm = travel.TravelMap(world)
+        places = list(world["shelves"])
+        pairs = [(r, s) for r in world["robots"] for s in places] + [(a, b) for a in places for b in places if a < b]
+        dist = [tm.distance(a, b) for a, b in pairs]
+        paths = [tm.path(a, b) for a, b in pairs]
+        for d, path in zip(dist, paths):
+            assert sum(math.dist(path[k], path[k + 1]) for k in range(len(path) - 1)) == pytest.approx(d, abs=1e-9)
+            assert not any(travel._rect_hits_segment(r, tuple(path[k]), tuple(path[k + 1]))
+                           for r in tm.footprints.values() for k in range(len(path) - 1))
+        results[name] = dist
+        geo = tm.geometry()
+        assert (geo._small is not None) == (name == "networkx")
+    assert results["networkx"] == pytest.approx(results["scipy"], abs=1e-9)
