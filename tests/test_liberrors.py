@@ -92,6 +92,22 @@ def test_a_bug_in_pipflows_own_engine_is_not_an_error_outcome(monkeypatch):
         solve_problem(problem, "pipflow-transport", timeout=30)
 
 
+def test_a_scip_error_inside_pipflows_own_engine_is_an_error_outcome(monkeypatch):
+    """pipflow-transport solves integer programs with SCIP: SCIP failing there is the engine's
+    failure (an error outcome naming SCIP), not a bug of pipflow's."""
+    import pipflow.pddl.transport as transport
+    from pyscipopt import Model
+
+    def scip_fails(problem):
+        Model().getObjVal()  # no solution: pyscipopt raises a bare Warning
+
+    monkeypatch.setattr(transport, "instance_from_problem", scip_fails)
+    problem = parse(DOMAIN, HEAD + "(:objects s1 - shelf) (:init) (:goal (and)))")
+    result = solve_problem(problem, "pipflow-transport", timeout=30)
+    assert result.status is Status.ERROR
+    assert result.message.startswith("SCIP (pyscipopt) failed while running the planner pipflow-transport: Warning: ")
+
+
 def test_the_solve_and_verify_steps_answer_a_malformed_problem_softly(tmp_path):
     import pipflow.steps.pddl as steps
 

@@ -24,7 +24,7 @@ from enum import Enum
 from typing import Any
 
 from pipflow.errors import InputError, PlanningError
-from pipflow.liberrors import UNIFIED_PLANNING, library_errors
+from pipflow.liberrors import SCIP, UNIFIED_PLANNING, library_errors
 
 DEFAULT_ENGINE = "pipflow-transport"
 JAVA_ENGINES = ("enhsp",)
@@ -150,9 +150,10 @@ def solve_problem(problem: Any, engine: str = DEFAULT_ENGINE, params: dict | Non
         except PlanningError as exc:
             return SolveResult(Status.ERROR, None, str(exc), 0.0, engine)
     try:
-        # an error of UP or of the engine it runs becomes an "error" outcome; an error in
-        # pipflow's own engine (pipflow-transport) is a bug and keeps its traceback
-        with library_errors(UNIFIED_PLANNING, PlanningError, f"running the planner {engine}"):
+        # an error of UP, of the engine it runs or of SCIP (which pipflow-transport uses) becomes
+        # an "error" outcome; any other error in pipflow's own engine is a bug and keeps its traceback
+        doing = f"running the planner {engine}"
+        with library_errors(UNIFIED_PLANNING, PlanningError, doing), library_errors(SCIP, PlanningError, doing):
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")  # "we cannot establish whether X can solve this problem"
                 with OneshotPlanner(name=engine, params=dict(params or {})) as planner:
