@@ -26,20 +26,20 @@ from __future__ import annotations
 import json
 from typing import Any, Iterable
 
-from pipflow.errors import InputError, PlanningError
+from pipflow.errors import InputError, PDDLError, PlanningError
+from pipflow.liberrors import UNIFIED_PLANNING, library_errors
 
 MODES = ("exact", "paper", "deorder")
 Key = tuple  # (fluent name, arg, arg, ...); "*" for a quantified variable
 
 
 def _parse(domain_text: str, problem_text: str):
-    """Parse with UP's PDDL reader; a parse failure is the user's input, so InputError."""
+    """Parse with UP's PDDL reader; a parse failure is the user's input: :class:`PDDLError` (an
+    InputError) naming UP and its complaint."""
     from pipflow.pddl.common import parse  # the shared, memoised parse: the problem is read-only here
 
-    try:
+    with library_errors(UNIFIED_PLANNING, PDDLError, "parsing the domain and problem for the dependency graph"):
         return parse(domain_text, problem_text)
-    except Exception as exc:  # UP raises many kinds; all mean "this PDDL does not parse"
-        raise InputError(f"cannot parse domain/problem for the dependency graph: {exc}") from exc
 
 
 class GroundAction:

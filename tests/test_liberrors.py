@@ -171,3 +171,12 @@ def test_nonfinite_numbers_in_linear_rules_are_refused():
             allocate(graph, world, linear=[{"robots": "all", "sense": "<=", **bad}])
     with pytest.raises(InputError, match="time_limit"):
         allocate(graph, world, mode="frontier", time_limit=float("nan"))
+
+
+def test_the_dependency_graph_refuses_a_malformed_problem_naming_unified_planning():
+    from pipflow.dependency import build_graph
+
+    text, kind = BAD_PROBLEMS["unknown predicate"]
+    with pytest.raises(PDDLError, match=f"^unified-planning failed while parsing the domain and problem for the "
+                                        f"dependency graph: {kind}: Not able to handle: \\(foo s1\\)"):
+        build_graph(DOMAIN, text, [], {})
