@@ -38,8 +38,8 @@ _STDLIB = frozenset(sys.stdlib_module_names) | {"builtins"}
 class Library:
     """A library whose errors pipflow translates: the name shown to the user, the top-level
     packages whose frames mark an error as the library's (``up_*``: every package so named), and
-    its exception classes as
-    ``(module, class name)`` pairs (looked up only if that module is already imported)."""
+    its exception classes as ``(module, class name)`` pairs (looked up only if that module is
+    already imported)."""
 
     name: str
     packages: tuple[str, ...]
