@@ -33,21 +33,26 @@ def _can_build_without_isolation() -> bool:
     return (major, minor) >= (70, 1)
 
 
-@pytest.fixture(scope="session")
-def demo_plugin_site(tmp_path_factory) -> Path:
-    """Copy the demo plugin package to a temp dir and pip-install it (no deps) into a private
-    site folder; returns that folder (put it on PYTHONPATH / sys.path to use the plugin)."""
-    root = tmp_path_factory.mktemp("demo_plugin")
+def _pip_install_plugin(source: Path, root: Path) -> Path:
+    """Copy a plugin package to ``root``/pkg and pip-install it (no deps) into ``root``/site, as
+    a user installs a plugin; returns the site folder (put it on PYTHONPATH / sys.path)."""
     pkg, site = root / "pkg", root / "site"
-    shutil.copytree(PLUGIN_PKG, pkg, ignore=shutil.ignore_patterns("__pycache__", "*.egg-info", "build"))
+    shutil.copytree(source, pkg, ignore=shutil.ignore_patterns("__pycache__", "*.egg-info", "build"))
     cmd = [sys.executable, "-m", "pip", "install", "--no-deps", "--disable-pip-version-check", "-q",
            "--target", str(site), str(pkg)]
     if _can_build_without_isolation():
         cmd[4:4] = ["--no-build-isolation", "--no-index"]  # fast and fully offline
     proc = subprocess.run(cmd, capture_output=True, text=True)
-    assert proc.returncode == 0, f"pip install of the demo plugin failed:\n{proc.stdout}\n{proc.stderr}"
+    assert proc.returncode == 0, f"pip install of {source.name} failed:\n{proc.stdout}\n{proc.stderr}"
+    assert not (site / "pipflow").exists(), "installing a plugin must not install (or fetch) pipflow"
+    return site
+
+
+@pytest.fixture(scope="session")
+def demo_plugin_site(tmp_path_factory) -> Path:
+    """The demo step plugin installed into a private site folder."""
+    site = _pip_install_plugin(PLUGIN_PKG, tmp_path_factory.mktemp("demo_plugin"))
     assert (site / "pipflow_demo_plugin" / "__init__.py").exists()
-    assert not (site / "pipflow").exists(), "installing the plugin must not install (or fetch) pipflow"
     return site
 
 
@@ -56,20 +61,10 @@ GARDEN_PKG = TESTS / "plugins" / "pipflow_garden"
 
 @pytest.fixture(scope="session")
 def garden_plugin_site(tmp_path_factory) -> Path:
-    """The third task domain (tests/plugins/pipflow_garden) pip-installed (no deps) into a private
-    site folder, as a user would install a domain plugin; returns that folder (put it on
-    PYTHONPATH / sys.path to use the plugin)."""
-    root = tmp_path_factory.mktemp("garden_plugin")
-    pkg, site = root / "pkg", root / "site"
-    shutil.copytree(GARDEN_PKG, pkg, ignore=shutil.ignore_patterns("__pycache__", "*.egg-info", "build"))
-    cmd = [sys.executable, "-m", "pip", "install", "--no-deps", "--disable-pip-version-check", "-q",
-           "--target", str(site), str(pkg)]
-    if _can_build_without_isolation():
-        cmd[4:4] = ["--no-build-isolation", "--no-index"]  # fast and fully offline
-    proc = subprocess.run(cmd, capture_output=True, text=True)
-    assert proc.returncode == 0, f"pip install of the garden plugin failed:\n{proc.stdout}\n{proc.stderr}"
+    """The third task domain (tests/plugins/pipflow_garden) installed into a private site folder,
+    as a user would install a domain plugin."""
+    site = _pip_install_plugin(GARDEN_PKG, tmp_path_factory.mktemp("garden_plugin"))
     assert (site / "pipflow_garden" / "workflows" / "garden.yaml").is_file(), "package data not installed"
-    assert not (site / "pipflow").exists(), "installing the plugin must not install (or fetch) pipflow"
     return site
 
 
