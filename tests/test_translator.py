@@ -387,8 +387,9 @@ def test_product_first_and_other_phrasings(command: str, world: dict, expected: 
 
 
 @pytest.mark.parametrize("command,world,expected", [
-    ("shelf1 should have 3 product1 and shelf2 should have 4 product2, while shelf 3 gets 2 product3",
-     HALL, {"shelf1": {"product1": 3}, "shelf2": {"product2": 4}, "shelf3": {"product3": 2}}),
+    # "gets" only where a final count and a delivery agree (shelf3 holds no product4)
+    ("shelf1 should have 3 product1 and shelf2 should have 4 product2, while shelf 3 gets 2 product4",
+     HALL, {"shelf1": {"product1": 3}, "shelf2": {"product2": 4}, "shelf3": {"product4": 2}}),
     ("shelf1 and shelf2 should each hold 4 product2", HALL,
      {"shelf1": {"product2": 4}, "shelf2": {"product2": 4}}),
     ("both shelf1 and shelf2 should hold 4 product2", HALL,

@@ -107,7 +107,7 @@ np: NUM of? ihead                          -> np_count
 rest_of: "of" (ihead | "them" | "it" | its ihead)
 bare: ihead (lsep ihead)*
 inum: ihead ":"? NUM
-except_items: ("except" | "but" | "besides" | "other" "than" | "apart" "from" | "excluding") ihead (lsep ihead)*
+except_items: ("except" "for"? | "but" | "besides" | "other" "than" | "apart" "from" | "excluding") ihead (lsep ihead)*
 
 ihead: ITEM | ITEMWORD
 of: "of"
@@ -184,6 +184,7 @@ to: "to" | "into" | "onto" | "over" "to"
 // ---------------------------------------------------------------- goal statements
 goal: there_be items loc                                  -> g_set
     | there_be items loc "and"? "nothing" "else"          -> g_set_only
+    | there_be items left loc                             -> g_set
     | items modal? stay? loc                              -> g_set
     | loc ","? there_be? items                            -> g_loc_set
     | both? places modal? each? setv each? items left?     -> g_place_set
@@ -202,7 +203,11 @@ goal: there_be items loc                                  -> g_set
     | ("make" | "have") ihead loc? ("equal" "to" | "be" | "equal" | "total") NUM loc? -> g_item_first
     | refill places ("so" that? | "until") ("it" | "they") setv items -> g_place_set
     | refill places "to" items                                -> g_place_set
-    | ("bring" | "take" | "top" "up" | "raise" | "fill" | "get" | "lower" | "cut") places ("up" | "down")? "to" items -> g_place_set
+    | ("bring" | "take" | "top" "up" | "top" | "raise" | "fill" | "get" | "lower" | "cut") places ("up" | "down")? "to" items -> g_place_set
+    | ("can" | "could") places setv items                   -> g_place_set
+    | emptyv pitems ("into" | "onto" | "to") places          -> g_transfer_src
+    | want items go from places to places                   -> g_transfer
+    | want items go to places from places                   -> g_transfer
     | places modal? each? ("get" | "come" | "go" | "drop" | "fall" | "rise" | "climb") ("up" | "down")? "to" items -> g_place_set
     | places modal? "only" setv items                      -> g_place_set
     | pitems modal? go to places appos?                    -> g_transfer_src
@@ -219,6 +224,8 @@ goal: there_be items loc                                  -> g_set
     | addv items loc                                      -> g_add
     | refill places "with" items                           -> g_add_place
     | addv items adv? from places adv? to places           -> g_transfer
+    | addv items places adv? to places                     -> g_transfer
+    | addv items "each" to places                          -> g_add
     | addv items ("with" | "using") robots adv? from places adv? to places -> g_transfer_with
     | addv items src adv? to places                       -> g_transfer_src
     | addv pitems adv? to places                          -> g_transfer_src
@@ -244,7 +251,7 @@ goal: there_be items loc                                  -> g_set
     | removev pitems                                      -> g_remove_src
     | places modal? setv items "too" "many"                  -> g_too_many
     | places place_appos? modal? "lose" items                -> g_lose
-    | places ("is" | "are") ("short" ("by" | "of")? items | items "short")  -> g_short
+    | places ("is" | "are") ("short" ("by" | "of")? items | items "short" | "missing" items)  -> g_short
     | places ("is" | "are") ("over" "by" items | items "over")            -> g_too_many
     | ("cut" | "reduce") (ihead loc | pitem_plain) ("by" (frac | "half" | NUM) | "in" "half")  -> g_cut
     | refill places "with" ihead ("until" ("it" | "they") ("is" | "are") "full" | "to" ("capacity" | "top")) -> g_fill
@@ -263,7 +270,7 @@ goal: there_be items loc                                  -> g_set
     | places modal? ("swap" | "trade" | "exchange") (("their" | "its") | "what" "they" ("hold" | "have"))? swapwhat -> g_swap_subj
     | splitv items src even? among places even?              -> g_split_src
     | splitv pitems even? among places even?                 -> g_split_src
-    | addv items to places from places                     -> g_transfer
+    | addv items adv? to places from places                -> g_transfer
     | addv items to places except_places                   -> g_transfer_except
     | addv items except_places to places                   -> g_transfer_except
     | items ("on" | "in" | "at" | "from") places modal? go to places -> g_transfer
@@ -282,10 +289,12 @@ goal: there_be items loc                                  -> g_set
     | places modal? "hold" "nothing"                        -> g_empty
     | places (modal ("not" | "never") | "shouldnt" | "mustnt" | "cant" | "cannot") ("have" | "hold" | "contain" | "keep") ("any" | "anything")? ihead (lsep ihead)* left? -> g_none_of
     | emptyv ihead from places                              -> g_empty_item
+    | emptyv pitem_plain                                     -> g_empty_item
     | ("i" | "we") ("dont" | "do" "not") ("want" | "need") ("any" | "anything")? ihead (lsep ihead)* left? loc -> g_none_in
     | places modal? be "full" "of" only? ihead only?         -> g_fill
     | places modal? "be" "filled" "up"? "with" only? ihead only? -> g_fill
     | "fill" places "up"? "with" only? ihead only?           -> g_fill
+    | "fill" places ("up" | "to" ("top" | "capacity" | "brim")) "with" only? ihead only? -> g_fill
     | "fill" places "up"? "with" "nothing" "but" ihead       -> g_fill
     | modal? be "full" "of" only? ihead                      -> g_fill_elided
     | "nothing" "else"                                     -> g_nothing_else
@@ -293,7 +302,7 @@ goal: there_be items loc                                  -> g_set
     | "nothing" modal? go loc                               -> g_no_inflow
     | "nothing" ("goes" | "comes" | "is" "added" | "gets" "added" | "should" "be" "added" | "may" "go" | "can" "go") loc -> g_no_inflow
     | ("add" | "put" | "bring" | "move") "nothing" loc      -> g_no_inflow
-    | "leave" posplace ihead as_is                          -> g_keep
+    | ("leave" | "keep") posplace ihead as_is               -> g_keep
     | "leave" ihead loc as_is                               -> g_keep
     | ("leave" | "keep") places as_is                       -> g_keep
     | ("dont" | "do" "not") "touch" places                  -> g_keep
@@ -304,7 +313,7 @@ goal: there_be items loc                                  -> g_set
     | ("top" ("up" | "off") | "fill" "up") places "with" only? ihead only? -> g_fill
     | (putv | addv) items loc on_top                         -> g_add
     | mult "up"? posplace ihead                              -> g_mult
-    | ("bring" | "take" | "get" | "cut" | "reduce" | "lower" | "raise" | "increase") pitem_plain ("down" | "up")? "to" NUM -> g_item_first
+    | ("bring" | "take" | "get" | "cut" | "reduce" | "lower" | "raise" | "increase" | "drop") pitem_plain ("down" | "up")? "to" NUM -> g_item_first
     | "leave" its ihead (lsep ihead)* as_is?                   -> g_keep_its_elided
     | ("make" | "set" | "bring" | "get" | "have") posplace ihead ("count" | "number" | "level" | "stock" | "total")? ("equal" "to" | "to" | "same" "as" | "match" | "equal") posplace ihead? -> g_equal_poss
     | putv "as" "many" ihead loc "as" ("there" ("are" | "is") | "sit" | "are") ("on" | "in" | "at") PLACE ((lsep) PLACE)* together? -> g_as_many_there
@@ -324,7 +333,7 @@ above: ("go" | "goes" | "get" | "gets" | "rise" | "rises" | "climb" | "climbs") 
      | "exceed" | "exceeds"
 below: ("go" | "goes" | "get" | "gets" | "drop" | "drops" | "fall" | "falls" | "dip" | "dips" | "sink" | "sinks") ("below" | "under" | "beneath")
 on_top: ("on" "top" "of" | "in" "addition" "to" | "besides" | "over" "and" "above") "what" (("it" | "they") ("has" | "have" | "holds" | "hold") now? | "is" "already"? "there")
-adv: "over" | "back" | "across" | "along"
+adv: "over" | "back" | "across" | "along" | "out"
 src: ("in" | "on" | "at" | "from" | "off" | "out" "of" | "of") places
 pitems: frac of? posplace ihead appos?                     -> pi_frac
       | "half" of? posplace ihead appos?                   -> pi_frac
@@ -480,7 +489,7 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | ("using" | "with" | "by") ("only" | "just" | "exclusively") robots rscope -> rule_only
     | ("only" | "just") ("using" | "with" | "by") robots rscope -> rule_only
     | "use" ("any" | "every" | "all")? ROBOTWORD? ("except" | "but" | "other" "than" | "besides" | "apart" "from") robots rscope -> rule_never
-    | ("any" | "all" | "every") ROBOTWORD? ("except" | "but" | "other" "than" | "besides" | "apart" "from") robots rmodal? useact? rscope -> rule_never
+    | (("any" | "all" | "every") ROBOTWORD? | "everyone" | "everybody" | "anyone" | "anybody") ("except" | "but" | "other" "than" | "besides" | "apart" "from") robots rmodal? useact? rscope -> rule_never
     | ("dont" | "do" "not") "use" ("any" | "a")? ROBOTWORD ("other" "than" | "except" | "besides" | "apart" "from" | "but") robots rscope -> rule_only
     | ("no" | "none" "of") ROBOTWORD ("except" | "but" | "other" "than" | "besides" | "apart" "from") robots rmodal? useact? rscope -> rule_only
     | "no" (RKIND | RTAG | ROBOTWORD) rmodal? useact? rscope   -> rule_never_group
@@ -502,6 +511,7 @@ addressed: robots ("," | ":")? oblig? goal
          | robots "," ("our" | "a" | "an" | "my")? (RKIND | RTAG) "," oblig? goal  -> addressed_appos
          | ("let" | "have" | "get" | "ask") robots "to"? goal
 scoped_goal: ("using" | "with" | "by") ("only" | "just")? robots ","? goal    -> scoped_only
+           | ("use" | "employ") ("only" | "just")? robots ("to" | "for") goal    -> scoped_only
            | "use" ("any" | "all" | "every")? ROBOTWORD? ("except" | "but" | "other" "than" | "besides") robots "to" goal -> scoped_never_before
            | goal ("using" | "with" | "by") ("only" | "just")? robots           -> scoped_only_after
            | goal ("using" | "with" | "by") robots ("only" | "alone")             -> scoped_only_after

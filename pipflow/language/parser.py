@@ -37,6 +37,8 @@ MAX_SENTENCE_WORDS = 120
 SET_AMOUNTS = {"count", "all", "none", "as_many_as", "rest", "each"}
 CHANGE_AMOUNTS = {"more", "fewer", "times", "fraction"}
 BOUND_AMOUNTS = {"at_least", "at_most", "between", "at_least_more"}
+#: "P gets N X": a final count or a delivery; read only where both mean the same
+RECEIVE_VERBS = {"get", "gets", "receive", "receives"}
 
 
 @functools.lru_cache(maxsize=1)
@@ -82,6 +84,9 @@ class _Sentence:
         self.before_places: list[str] = []  # the places named before the current part
         self.last_add = False  # whether the last counts came with an add verb (for gapping)
         self.pending_source: list[str] | None = None  # a source said before its moves
+        # words of counts said with "gets / receives": repeated elsewhere ("and so does Q"), they
+        # must again mean one thing there
+        self.received: set[str] = set(memory.get("received") or ())
 
     # -- words ------------------------------------------------------------------------------
     def words(self, node: Tree | Token | list) -> str:
@@ -395,6 +400,7 @@ class _Sentence:
             places = self.place_list(plist[0])
             for ap in self.sub(node, "place_appos"):
                 self.apposition(places, self.nps(self.sub(ap, "items")[0]), self.words(ap))
+            self._receive_is_clear(node, places, nps, words)
             self.put(places, "each" if each else "one", nps, words)
             return
         if kind == "g_place_set_resp":
@@ -513,8 +519,9 @@ class _Sentence:
                                     "words": words})
             return
         if kind == "g_empty_item":
-            places = self.place_list(plist[0])
-            head = self.ihead(self.sub(node, "ihead")[0], words)
+            pp = self.sub(node, "pitem_plain")  # "empty out the parts cage's fuses"
+            places = [str(self.toks(pp[0], "PLACE")[0].value)] if pp else self.place_list(plist[0])
+            head = self.ihead(self.sub(pp[0] if pp else node, "ihead")[0], words)
             self.statements.append({"op": "empty", "places": {"names": places}, "items": {"names": [head]},
                                     "words": words})
             return
@@ -785,6 +792,28 @@ class _Sentence:
             return
         raise TranslationError(f"{_quote(words)}: cannot read this statement")
 
+    def _receive_is_clear(self, node: Tree, places: list[str], nps: list[dict], words: str) -> None:
+        """ "P gets / receives N X" is the count P ends with or the count delivered to it: the same
+        when P holds no X now, else two goals; then nothing is guessed."""
+        verbs = [self.first_word(v) for v in self.sub(node, "setv")]
+        if not verbs or verbs[0] not in RECEIVE_VERBS:
+            return
+        for np in nps:
+            if set(np["amount"]) == {"count"}:
+                items = (np["items"] or {}).get("names") or list(self.last_item or [])
+                self._received_check(places, items, np["words"], words)
+                self.received.add(np["words"])
+
+    def _received_check(self, places: list[str], items: list[str], count_words: str, words: str) -> None:
+        stock = self.lex.world.get("stock") or {}
+        for item in items:
+            for p in places:
+                have = int((stock.get(p) or {}).get(item, 0) or 0)
+                if have:
+                    raise TranslationError(
+                        f"{_quote(words)}: 'gets {count_words}' could be the count {p} ends with or "
+                        f"the count it receives ({p} holds {have} {item} now); say 'should have' or 'more'")
+
     def bare_nps(self, node: Tree, words: str) -> list[dict]:
         """ "Take the drums out of bay 2": an item without a count is all of it (there)."""
         out = []
@@ -944,6 +973,8 @@ class _Sentence:
                 raise TranslationError(f"{_quote(words)}: cannot tell what to repeat there")
             group = [s for s in self.statements or self.prior_last if s.get("words") == prev.get("words")]
             for s in group:
+                if s["words"] in self.received and set(s.get("amount") or {}) == {"count"}:
+                    self._received_check(places, (s.get("items") or {}).get("names") or [], s["words"], words)
                 self.statements.append({**s, "places": {"names": places}, "words": f"{s['words']} ({words})"})
             return
         if kind in ("t_elided", "t_elided_fewer"):
@@ -1111,6 +1142,9 @@ class _Sentence:
                     continue
                 if c.data == "ro_items":
                     products += [str(t.value) for t in c.children if isinstance(t, Token) and t.type == "ITEM"]
+                    # "... may touch the steel sheets; move 3 of them": the item named last
+                    # (one item only: after two, "move 2" would not say which)
+                    self.last_item = products[:1] if len(set(products)) == 1 else None
                 elif c.data == "ro_pronoun":
                     pronoun = True
                 elif c.data == "ro_any":
@@ -1379,7 +1413,8 @@ def parse(command: str, world: dict) -> dict:
         statements += reader.statements
         rules += reader.rules
         memory = {"statements": list(statements), "last": list(reader.statements) or memory.get("last", []),
-                  "item": reader.last_item, "places": reader.last_places}
+                  "item": reader.last_item, "places": reader.last_places,
+                  "received": reader.received | set(memory.get("received") or ())}
     if not statements and not rules:
         raise TranslationError(f"found no goal and no robot rule in '{command}' "
                                f"(shelves: {lex.index.candidates('shelf')}; "

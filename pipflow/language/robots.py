@@ -9,7 +9,10 @@ from __future__ import annotations
 from lark import Token, Tree
 
 from pipflow.errors import Refusal, TranslationError
+from pipflow.language.lexicon import SUPERLATIVES
 from pipflow.language.names import NameIndex, normalize, split_digits
+
+SUPER_WORDS = set(SUPERLATIVES)
 
 
 def _robot_of(robots: dict, name: str) -> dict:
@@ -69,8 +72,24 @@ class RobotSelector:
             return {"skill": skill, "at_most": n - 1}
         if node.data == "r_super":
             t = next(v for v in vals if v.type == "SUPER")
-            return {"extreme": str(t.value), "skill": self._skill([], words)}
+            sel = {"extreme": str(t.value), "skill": self._skill([], words)}
+            self._check_tie(sel, vals, words)
+            return sel
         raise TranslationError(f"'{words}': cannot tell which robots")
+
+    def _check_tie(self, sel: dict, vals: list[Token], words: str) -> None:
+        """ "the strongest robot" names one robot: where several tie it is not guessed which (nor
+        that all of them are meant); "the two strongest robots" must be as many as tie."""
+        tied = select(sel, self.world, words)
+        nums = [int(v.value) for v in vals if v.type == "NUM"]
+        after = words.lower().split()
+        k = next((i for i, w in enumerate(after) if w in SUPER_WORDS), len(after))
+        noun = after[k + 1] if k + 1 < len(after) else ""
+        plural = noun.endswith("s") and noun not in ("bus",)
+        want = nums[0] if nums else (None if plural else 1)
+        if want is not None and want != len(tied):
+            raise TranslationError(f"'{words}': {len(tied)} robots tie for it ({', '.join(tied)}); "
+                                   f"cannot tell which {'one' if want == 1 else str(want)} is meant")
 
     def check_apposition(self, sel: dict, kind: str, value: str, words: str) -> None:
         """ "Titan, our forklift, ...": the world must agree, or the command is not understood."""
