@@ -145,7 +145,7 @@ def load_tasks(path: str | Path) -> dict:
     """Load a household task file and its world; :class:`WorldError` lists every problem located.
 
     Returns ``{"path", "world_path", "world", "domain": "household", "workflow", "tasks": [{"id",
-    "command", "category", "team", "goal", "feasible", "construction"?, "domain", "inputs": {"team": ...}}]}``;
+    "command", "category", "team", "goal", "feasible", "construction"?, "expect"?, "domain", "inputs": {"team": ...}}]}``;
     a task marked ``feasible: false`` (its right answer is a refusal) needs no goal."""
     from pipflow.errors import Diagnostic, WorldError
     from pipflow.household.world import load_world, team_members
@@ -213,6 +213,7 @@ def load_tasks(path: str | Path) -> dict:
                                **({"count": list(goal["count"])} if goal.get("count") else {})},
                       "feasible": t.get("feasible", True), "domain": "household",
                       **({"construction": str(t["construction"])} if t.get("construction") else {}),
+                      **({"expect": str(t["expect"])} if t.get("expect") else {}),
                       "inputs": {"team": ",".join(team) if isinstance(team, list) else team}})
     if diags:
         raise WorldError(diags, f"invalid household task file {p} ({len(diags)} problem(s))")
@@ -225,7 +226,8 @@ def score_bench_run(world_path: str, task: dict, outputs: dict, refusal: str | N
     from pipflow.household.world import load_world, select_team
 
     world = select_team(load_world(world_path), task.get("team"))
-    return score_run(world, task.get("goal") or {}, feasible=task.get("feasible", True) is not False,
+    feasible = task.get("feasible", True) is not False and task.get("expect") != "refuse"  # refusing is right
+    return score_run(world, task.get("goal") or {}, feasible=feasible,
                      graph=outputs.get("graph"), schedule=outputs.get("schedule"),
                      simulation=outputs.get("simulation"), refusal=refusal, error=error)
 
