@@ -57,9 +57,9 @@ def lp_fewest_robots(Q: np.ndarray, Y: np.ndarray, allowed: np.ndarray) -> float
 
 
 def bounds(graph: dict, world: dict, constraints: list, speed: float, handling: float) -> dict:
-    from pipflow.allocation import Rules, need_vector, skill_matrix
-    from pipflow.dependency import critical_path
-    from pipflow.scheduling import Timeline
+    from pipflow.team.allocation import Rules, need_vector, skill_matrix
+    from pipflow.team.dependency import critical_path
+    from pipflow.team.scheduling import Timeline
 
     robots, skills, Q = skill_matrix(world, graph["nodes"])
     rules = Rules(robots, skills, Q, constraints, [], graph["nodes"])
@@ -92,10 +92,10 @@ def plan_task(world: dict, goal: dict, domain_text: str) -> tuple[str, list[dict
 
 
 def tasks_part(tasks_file: Path, speed: float, handling: float, time_limit: float) -> None:
-    from pipflow.allocation import allocate
-    from pipflow.dependency import build_graph
+    from pipflow.team.allocation import allocate
+    from pipflow.team.dependency import build_graph
     from pipflow.errors import PipflowError
-    from pipflow.scheduling import build_schedule
+    from pipflow.team.scheduling import build_schedule
 
     try:
         import pipflow.pddl.transport  # noqa: F401  (the team planner)
@@ -162,7 +162,7 @@ def tasks_part(tasks_file: Path, speed: float, handling: float, time_limit: floa
 
 # ------------------------------------------------------------------------------- part 2
 def speed_part(runs: int, seed: int) -> None:
-    from pipflow.allocation import first_stage_fast, solve_lexicographic, solve_naive
+    from pipflow.team.allocation import first_stage_fast, solve_lexicographic, solve_naive
 
     print(f"Part 2: first-stage solve time, fast (threshold) vs naive (SCIP min-max), {runs} random instances each")
     print(f"{'robots':>6} {'fast stage1 ms':>15} {'naive stage1 ms':>16} {'ratio':>8} "

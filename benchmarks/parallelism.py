@@ -36,13 +36,13 @@ ROOT = Path(__file__).resolve().parents[1]
 if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
-from pipflow.allocation import allocate  # noqa: E402
-from pipflow.dependency import build_graph, to_networkx  # noqa: E402
+from pipflow.team.allocation import allocate  # noqa: E402
+from pipflow.team.dependency import build_graph, to_networkx  # noqa: E402
 from pipflow.pddl.common import parse  # noqa: E402
 from pipflow.pddl.generate import scale_instance  # noqa: E402
 from pipflow.pddl.solver import solve_problem  # noqa: E402
 from pipflow.pddl.writer import write_problem  # noqa: E402
-from pipflow.scheduling import build_schedule  # noqa: E402
+from pipflow.team.scheduling import build_schedule  # noqa: E402
 from pipflow.warehouse.world import load_tasks  # noqa: E402
 
 DOMAIN_PATH = ROOT / "domains" / "warehouse.pddl"

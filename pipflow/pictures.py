@@ -9,7 +9,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-from pipflow.trajectory import ROBOT_COLOURS, Trajectory
+from pipflow.team.trajectory import ROBOT_COLOURS, Trajectory
 
 #: ``pictures`` workflow input: ``always`` draws them during the run; ``never`` draws none (the
 #: report neither); ``auto`` leaves them to ``pipflow report``, which draws those below

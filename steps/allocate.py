@@ -1,5 +1,5 @@
 """Steps of the ``allocate`` family: skill-based MRTA over the dependency graph (paper Alg. 1 and
-eq. 3), thin faces of :mod:`pipflow.allocation`. All of them output the allocation contract of
+eq. 3), thin faces of :mod:`pipflow.team.allocation`. All of them output the allocation contract of
 docs/architecture.md, so `schedule` and the metrics do not care which one ran."""
 from __future__ import annotations
 
@@ -21,7 +21,7 @@ Handling = Annotated[float, Doc("seconds of loading/unloading per route stop")]
 
 def _run(ctx: StepContext, method: str, graph: dict, world: dict, constraints: list | None,
          linear: list | None, speed: float, handling: float, mode: str = "subtask", time_limit: float = 10.0) -> dict:
-    from pipflow.allocation import allocate
+    from pipflow.team.allocation import allocate
 
     with library_errors(SCIP, AllocationError, f"allocating with {method}"):
         result = allocate(graph, world, method=method, constraints=constraints or [], linear=linear or [],

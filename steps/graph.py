@@ -1,5 +1,5 @@
 """Steps of the ``graph`` family: the subtask dependency DAG (paper Alg. 2), thin faces of
-:mod:`pipflow.dependency`."""
+:mod:`pipflow.team.dependency`."""
 from __future__ import annotations
 
 from typing import Annotated, Any
@@ -50,7 +50,7 @@ def dependencies(
 ) -> dict:
     """Ground the plan with unified-planning and link actions whose fluents interact."""
 
-    from pipflow.dependency import build_graph, to_dot
+    from pipflow.team.dependency import build_graph, to_dot
     from pipflow.pictures import dependency_graph
 
     graph = build_graph(_read_text(ctx, domain), _read_text(ctx, problem), plan,

@@ -1,4 +1,4 @@
-"""The ``schedule`` step: Alg. 1 timing of an allocation (thin face of :mod:`pipflow.scheduling`)."""
+"""The ``schedule`` step: Alg. 1 timing of an allocation (thin face of :mod:`pipflow.team.scheduling`)."""
 from __future__ import annotations
 
 from typing import Annotated
@@ -24,7 +24,7 @@ def schedule(
     """Replay the allocation in its order; legs follow obstacle-free paths."""
 
     from pipflow.pictures import gantt
-    from pipflow.scheduling import build_schedule
+    from pipflow.team.scheduling import build_schedule
 
     result = build_schedule(graph, allocation, world, speed=speed, handling=handling)
     ctx.write_artifact("schedule.json", result)

@@ -6,7 +6,7 @@ import pytest
 import yaml
 
 from pipflow import StepContext
-from pipflow.allocation import (Linear, allocate, brute_force, first_stage_fast, solve_lexicographic,
+from pipflow.team.allocation import (Linear, allocate, brute_force, first_stage_fast, solve_lexicographic,
                                 solve_naive)
 from pipflow.errors import AllocationError, InputError
 
@@ -95,7 +95,7 @@ def test_world_allocation_obeys_only_and_never_rules():
 
 
 def test_rules_are_typed_and_match_on_their_fields_only():
-    from pipflow.allocation import LinearRule, RobotRule, Rules, skill_matrix
+    from pipflow.team.allocation import LinearRule, RobotRule, Rules, skill_matrix
 
     g = graph(node("s1", "shelfA", "shelfC", "red", 2), node("s2", "shelfB", "shelfA", "blue", 3, 1))
     robots, skills, Q = skill_matrix(WORLD, g["nodes"])
@@ -113,7 +113,7 @@ def test_rules_are_typed_and_match_on_their_fields_only():
 
 
 def test_the_walk_holds_its_state():
-    from pipflow.allocation import AllocationWalk
+    from pipflow.team.allocation import AllocationWalk
 
     g = graph(node("s1", "shelfA", "shelfC", "red", 2), node("s2", "shelfC", "shelfA", "red", 1, 1),
               edges=[("s1", "s2")])
@@ -243,7 +243,7 @@ def test_a_robot_that_adds_no_skill_is_not_taken_even_when_it_costs_nothing():
 def test_scip_outcomes_are_an_enum_that_reads_as_scips_word():
     import json
 
-    from pipflow.allocation import USABLE_OUTCOMES, IPStatus
+    from pipflow.team.allocation import USABLE_OUTCOMES, IPStatus
 
     assert IPStatus("timelimit") is IPStatus.TIME_LIMIT and f"{IPStatus.INFEASIBLE}" == "infeasible"
     assert IPStatus("a word of a newer SCIP") is IPStatus.UNKNOWN
@@ -256,7 +256,7 @@ def test_scip_outcomes_are_an_enum_that_reads_as_scips_word():
 
 
 def test_frontier_waves_record_scips_outcome():
-    from pipflow.allocation import IPStatus
+    from pipflow.team.allocation import IPStatus
 
     g = graph(node("s1", "shelfA", "shelfC", "red", 2), node("s2", "shelfB", "shelfD", "blue", 1, index=1))
     waves = allocate(g, WORLD, mode="frontier", time_limit=5.0)["stats"]["waves"]

@@ -88,9 +88,9 @@ def test_the_graph_is_read():
     """The reader sees the arrows it must see (a reader that saw none would pass every rule)."""
     graph = import_graph()
     assert len(graph) > 60
-    assert graph.has_edge("pipflow.steps.allocate", "pipflow.allocation")  # inside a function
+    assert graph.has_edge("pipflow.steps.allocate", "pipflow.team.allocation")  # inside a function
     assert graph.has_edge("pipflow.engine.executor", "pipflow.engine.step")  # relative
-    assert graph.has_edge("pipflow.allocation", "pipflow.scheduling")
+    assert graph.has_edge("pipflow.team.allocation", "pipflow.team.scheduling")
 
 
 def test_every_arrow_points_down_or_across():

@@ -10,7 +10,7 @@ import pytest
 import yaml
 
 from pipflow import StepContext
-from pipflow.dependency import build_graph, to_networkx
+from pipflow.team.dependency import build_graph, to_networkx
 from pipflow.errors import InputError, PlanningError
 
 FIX = Path(__file__).parent / "fixtures" / "robot"
@@ -238,11 +238,11 @@ def test_step_default_mode_is_deorder(tmp_path):
 def test_deordered_schedule_runs_in_pybullet_and_is_shorter(task_id):
     """The whole robot level on a paper task: transport plan, deordered graph, SCIP allocation,
     schedule, pybullet execution (preconditions checked at every load, several moves in flight)."""
-    from pipflow.allocation import allocate
+    from pipflow.team.allocation import allocate
     from pipflow.pddl.common import parse
     from pipflow.pddl.solver import solve_problem
     from pipflow.pddl.writer import write_problem
-    from pipflow.scheduling import build_schedule
+    from pipflow.team.scheduling import build_schedule
     from pipflow.warehouse.simulation import simulate
     from pipflow.warehouse.world import load_tasks
 
@@ -267,8 +267,8 @@ def test_deordered_schedule_runs_in_pybullet_and_is_shorter(task_id):
 def test_deorder_is_locally_minimal(seed):
     """No single edge of the deordered graph can go: without it, the stock/room envelope of some
     precondition fails (the greedy pass plus the relaxation pass leave no removable edge)."""
-    from pipflow.deorder import _Envelope, envelopes_hold, numeric_view
-    from pipflow.dependency import _parse, ground_plan
+    from pipflow.team.deorder import _Envelope, envelopes_hold, numeric_view
+    from pipflow.team.dependency import _parse, ground_plan
 
     plan = _random_plan(random.Random(100 + seed), 8)
     graph = build_graph(DOMAIN, PROBLEM, plan, META, "deorder")

@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 import yaml
 
-from pipflow.dependency import build_graph
+from pipflow.team.dependency import build_graph
 from pipflow.pddl.common import parse
 from pipflow.pddl.debugger import debug_problem
 from pipflow.pddl.solver import solve_problem
@@ -85,7 +85,7 @@ print("ok")
 def test_main_job_imports_neither_matplotlib_nor_scipy_stats(tmp_path):
     """The main job with the default pictures=auto draws nothing, so it must not pay for
     matplotlib (unit colours come from a table) nor for scipy.stats (ConfigSpace deferred); its
-    travel graph is small, so it does not pay for scipy.sparse either (pipflow.travel.SMALL_GRAPH)."""
+    travel graph is small, so it does not pay for scipy.sparse either (pipflow.team.travel.SMALL_GRAPH)."""
     code = f"""
 import sys
 from pipflow.engine.cli import main
@@ -408,7 +408,7 @@ print(json.dumps([parser.parse(c, world) for c in {COMMANDS!r}], sort_keys=True)
     assert runs[0] == runs[1] and '"statements"' in runs[0]
 
 
-# --- travel: small graphs searched with networkx, large ones with scipy (pipflow/travel.py) ------------
+# --- travel: small graphs searched with networkx, large ones with scipy (pipflow/team/travel.py) ------------
 def _grid_world(shelves: int, robots: int, seed: int) -> dict:
     import random
 
@@ -433,7 +433,7 @@ def test_small_graph_search_gives_scipys_distances_and_paths(world, monkeypatch)
     those lengths that cross no shelf; and the small world really takes the networkx search."""
     import math
 
-    from pipflow import travel
+    from pipflow.team import travel
 
     results = {}
     for name, limit in (("networkx", 10**9), ("scipy", 0)):

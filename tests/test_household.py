@@ -190,14 +190,14 @@ def test_counts_resolve_to_nearest_members(world):
 def test_heavy_object_needs_a_coalition(world):
     """A 2-unit watermelon with 1-unit lifters: the allocation gives its store to two robots,
     and the executor accepts it; one lifter alone is refused by the executor."""
-    from pipflow.allocation import allocate
-    from pipflow.dependency import build_graph
+    from pipflow.team.allocation import allocate
+    from pipflow.team.dependency import build_graph
     from pipflow.household.simulation import simulate
     from pipflow.household.problem import write_problem
     from pipflow.household.world import select_team
     from pipflow.pddl.common import parse
     from pipflow.pddl.solver import solve_problem
-    from pipflow.scheduling import build_schedule
+    from pipflow.team.scheduling import build_schedule
     import yaml
 
     team = select_team(world, "lifters-handler")

@@ -137,7 +137,7 @@ def test_a_litellm_error_belongs_to_litellm_and_ours_does_not():
 def test_step_allocate_reports_scip_errors_as_allocation_errors(tmp_path, monkeypatch):
     """The allocate steps translate a SCIP failure at their boundary (a real pyscipopt error,
     provoked by a time limit SCIP refuses, reached past the allocator's own check)."""
-    import pipflow.allocation as allocation
+    import pipflow.team.allocation as allocation
     from pipflow.steps.allocate import scip
 
     real = allocation._scip
@@ -162,7 +162,7 @@ def _refused(model):
 
 
 def test_nonfinite_numbers_in_linear_rules_are_refused():
-    from pipflow.allocation import allocate
+    from pipflow.team.allocation import allocate
 
     world, graph = _one_subtask()
     for bad in ({"rhs": float("nan")}, {"rhs": float("inf")}, {"rhs": 1, "coef": float("nan")},
@@ -174,7 +174,7 @@ def test_nonfinite_numbers_in_linear_rules_are_refused():
 
 
 def test_the_dependency_graph_refuses_a_malformed_problem_naming_unified_planning():
-    from pipflow.dependency import build_graph
+    from pipflow.team.dependency import build_graph
 
     text, kind = BAD_PROBLEMS["unknown predicate"]
     with pytest.raises(PDDLError, match=f"^unified-planning failed while parsing the domain and problem for the "

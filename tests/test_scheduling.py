@@ -5,11 +5,11 @@ import pytest
 import yaml
 
 from pipflow import StepContext
-from pipflow.allocation import allocate
-from pipflow.dependency import build_graph
+from pipflow.team.allocation import allocate
+from pipflow.team.dependency import build_graph
 from pipflow.errors import InputError
-from pipflow.scheduling import build_schedule
-from pipflow.travel import TravelMap
+from pipflow.team.scheduling import build_schedule
+from pipflow.team.travel import TravelMap
 
 FIX = Path(__file__).parent / "fixtures" / "robot"
 WORLD = yaml.safe_load((FIX / "world.yaml").read_text())

@@ -166,7 +166,7 @@ def test_metrics_step(world, tmp_path):
 def test_rule_words_are_ignored_when_rules_are_matched(world):
     """A rule may carry the command's words it came from (shared convention): scoring and the
     allocation match rules on product/from/to only."""
-    from pipflow.allocation import allocate
+    from pipflow.team.allocation import allocate
 
     graph, schedule = wh01()  # robot5 moves product1 shelf1 -> shelf3
     sim = run(world, graph, schedule, GOAL_01)

@@ -158,9 +158,9 @@ def test_step_face(world, tmp_path):
 
 
 def test_schedule_from_the_real_scheduler(world):
-    """Contract check against pipflow.scheduling: legs connect, travel equals the schedule's."""
-    from pipflow.allocation import allocate
-    from pipflow.scheduling import build_schedule
+    """Contract check against pipflow.team.scheduling: legs connect, travel equals the schedule's."""
+    from pipflow.team.allocation import allocate
+    from pipflow.team.scheduling import build_schedule
     from sim_fixtures import move_node
 
     nodes = [move_node("s1", 0, "shelf2", "shelf4", "product3", 6), move_node("s2", 1, "shelf3", "shelf4", "product3", 4),

@@ -6,7 +6,7 @@ import pytest
 import yaml
 
 from pipflow.errors import InputError
-from pipflow.travel import TravelMap, _rect_hits_segment
+from pipflow.team.travel import TravelMap, _rect_hits_segment
 
 FIX = Path(__file__).parent / "fixtures" / "robot"
 WAREHOUSE = Path(__file__).parents[1] / "benchmarks" / "warehouse" / "world.yaml"
@@ -61,7 +61,7 @@ def test_a_robot_parked_within_the_safety_margin_still_goes_round_the_shelf(worl
 
 def test_geometry_is_shared_and_only_asked_targets_are_computed(world):
     """One visibility graph per floor in a process; one shortest-path tree per target asked."""
-    from pipflow import travel
+    from pipflow.team import travel
 
     travel._GEOMETRIES.clear()
     a = TravelMap(world)

@@ -13,7 +13,7 @@ that moment:
 
 Effects land when the subtask ends (a carried object is in nobody's place in between), ends
 before starts at equal times. A refused subtask changes nothing and counts against Exe. Travel
-is measured along the robots' legs (:class:`pipflow.trajectory.Trajectory`, which also reports
+is measured along the robots' legs (:class:`pipflow.team.trajectory.Trajectory`, which also reports
 legs that do not connect). Pictures of the scene at the start and the end come from a headless
 pybullet client (furniture boxes, objects on their places, robots), only when asked.
 """
@@ -137,7 +137,7 @@ def simulate(world: dict, schedule: dict, graph: dict | None, goal: dict | None 
     Returns ``{final_state, executed, failed, failures, exe, travel, tc_max, tc_avg, goal_met,
     gcr, conditions, jumps, makespan, pictures}``."""
     from pipflow.household.scoring import check_conditions
-    from pipflow.trajectory import Trajectory
+    from pipflow.team.trajectory import Trajectory
 
     log = log or (lambda m: None)
     nodes = {n["id"]: n for n in (graph or {}).get("nodes", [])}
@@ -207,7 +207,7 @@ class _Scene:
 
     def __init__(self, world: dict):
         from pipflow.bullet import connect_direct
-        from pipflow.trajectory import ROBOT_COLOURS
+        from pipflow.team.trajectory import ROBOT_COLOURS
 
         self.p, self.cid = connect_direct()
         p, self.world = self.p, world

@@ -12,7 +12,7 @@ line and column:
    the domain's own words (UP refuses a problem whose object is called like a predicate).
 
 The normalized world (``domain: household``) keeps the places under ``places`` with footprints
-and access points, which :class:`pipflow.travel.TravelMap` reads like shelves, so allocation,
+and access points, which :class:`pipflow.team.travel.TravelMap` reads like shelves, so allocation,
 scheduling and travel work unchanged on the floor plan.
 """
 from __future__ import annotations

@@ -19,7 +19,7 @@ from pipflow.language import grounding
 from pipflow.language.offline import NO_USAGE
 from pipflow.language.parsing import FIELD_KEYS
 from pipflow.resources import data_file
-from pipflow.starts import vary_starts
+from pipflow.warehouse.starts import vary_starts
 from pipflow.taskdomain import GoalCheck, Grounding, Save, TaskDomain
 from pipflow.warehouse import world as worlds
 

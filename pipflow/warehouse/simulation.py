@@ -32,8 +32,8 @@ from pathlib import Path
 from pipflow import pictures as pics
 from pipflow.bullet import colour_rgba, connect_direct, render_floor
 from pipflow.goalcounts import holds
-from pipflow.trajectory import ARRIVAL_TOLERANCE, ROBOT_COLOURS, Point, Trajectory
-from pipflow.trajectory import distance as _dist
+from pipflow.team.trajectory import ARRIVAL_TOLERANCE, ROBOT_COLOURS, Point, Trajectory
+from pipflow.team.trajectory import distance as _dist
 
 
 SHELF_HEIGHT = 1.0

@@ -35,7 +35,7 @@ from typing import Any, Iterable
 import numpy as np
 
 from pipflow.errors import AllocationError, InputError
-from pipflow.scheduling import Timeline, predecessors
+from pipflow.team.scheduling import Timeline, predecessors
 
 EPS = 1e-7
 #: SCIP reads any number this large as infinite (its default ``numerics/infinity``)

@@ -18,7 +18,7 @@ Modes:
   lost and a schedule may run the action too early; kept for the ablation.
 * ``deorder`` (the ``graph.dependencies`` step's and the warehouse workflow's default): keep an ordering only where a precondition
   needs it; increments of one fluent commute, and stock and capacity bounds are checked for
-  every order the graph allows (:mod:`pipflow.deorder`). Far fewer edges than ``exact`` when
+  every order the graph allows (:mod:`pipflow.team.deorder`). Far fewer edges than ``exact`` when
   many moves share a shelf, so the schedule runs them in parallel.
 """
 from __future__ import annotations
@@ -244,7 +244,7 @@ def build_graph(
     dag = nx.DiGraph()
     dag.add_nodes_from(n["id"] for n in nodes)
     if mode == "deorder":
-        from pipflow.deorder import deorder
+        from pipflow.team.deorder import deorder
 
         dag.add_edges_from((nodes[i]["id"], nodes[j]["id"]) for i, j in deorder(problem, grounded))
     elif mode == "exact" and not any("*" in k for g in grounded for k in g.reads | g.writes):
