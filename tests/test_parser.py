@@ -519,6 +519,13 @@ def test_an_english_verb_is_never_taken_for_a_misspelt_robot_name() -> None:
     ("Keep the tool crib's batteries where they are, and clear out pit 2.",
      {"tool_crib": {"battery": 1}, "pit2": {"brake_pad": 0, "oil-filter": 0, "battery": 0, "kc-90": 0}}, []),
     ("Pls move 1 battery frm the wash bay to pit 2.", {"wash-bay": {"battery": 2}, "pit2": {"battery": 1}}, []),
+    ("Loader's the only one allowed to move batteries.", {}, [{"only": ["loader"], "product": "battery"}]),
+    ("Don't take any batteries off the wash bay; pit 2 should have 1 kc-90.",
+     {"wash-bay": {"battery": 3}, "pit2": {"kc-90": 1}}, []),
+    # a crew addressed, and when: neither changes the goal
+    ("Folks, pit 2 needs 1 more oil filter as soon as possible, thanks.", {"pit2": {"oil-filter": 2}}, []),
+    ("This afternoon, move 1 battery from the wash bay to pit 2 when you get a chance.",
+     {"wash-bay": {"battery": 2}, "pit2": {"battery": 1}}, []),
     ("Pull 1 kc-90 from the north yard over to pit 2.", {"north yard": {"kc-90": 1}, "pit2": {"kc-90": 1}}, []),
     ("Move 2 batteries north yard to pit 2.", {"north yard": {"battery": 2}, "pit2": {"battery": 2}}, []),
     ("Add 1 brake pad each to the wash bay and pit 2.", {"wash-bay": {"brake_pad": 2}, "pit2": {"brake_pad": 1}}, []),

@@ -22,7 +22,8 @@ start: sentence
 sentence: lead? part aside? (sep part aside?)* sep? aside?
 lead: ("but" | "and" | "then" | "also" | "so" | "however" | "now" | "oh" | "well" | "next"
       | "finally" | "first" | "afterwards" | "after" "that" | "additionally" | "plus"
-      | ("can" | "could" | "would") ("you" | "we") | "you" ("should" | "must" | "can") | "just" | "let" "us") ","?
+      | ("can" | "could" | "would") ("you" | "we") | "you" ("should" | "must" | "can") | "just" | "let" "us"
+      | ("team" | "guys" | "folks" | "people" | "crew") ",") ","?
 
 // a separator costs: of two readings, the one with fewer, longer parts wins
 // ("only alpha and charlie may carry bolts" is one rule, not "only alpha" and a second clause)
@@ -40,6 +41,10 @@ aside: "instead" "of" NUM | "rather" "than" NUM
      | ("at" | "in") "end" | "eventually" | "afterwards" | "later" | "when" "you" "can" | "when" "possible"
      | "i" ("think" | "guess" | "suppose" | "believe") | "i" "have" "a" "plan" | "ok" | "okay"
      | "thanks" | "thank" "you" | "if" "possible" | "as" "well"
+     | "as" "soon" "as" ("possible" | "you" "can") | "urgently" | "if" "you" "can"
+     | "when" "you" ("get" "a" "chance" | "have" "time" | "get" "time")
+     | ("this" | "before") ("morning" | "afternoon" | "evening" | "shift" "ends"?) | "before" ("lunch" | "noon")
+     | "tomorrow" | "first" "thing" | "before" "end" "of" "shift"
 
 // ---------------------------------------------------------------- amounts and items
 rlsep: "," | "and" | "," "and" | "or" | "nor" | "," "or"
@@ -306,6 +311,7 @@ goal: there_be items loc                                  -> g_set
     | "leave" ihead loc as_is                               -> g_keep
     | ("leave" | "keep") places as_is                       -> g_keep
     | ("dont" | "do" "not") "touch" places                  -> g_keep
+    | ("dont" | "do" "not" | "never") ("take" | "remove" | "move" | "pull") ("anything" | "any" ihead) ("off" | "from" | "out" "of") places -> g_keep
     | places modal? ("stay" | "remain" | "be" "left") as_is  -> g_keep
     | places modal? ("stay" | "stays" | "remain" | "remains") "put" -> g_keep
     | ihead loc modal? ("stay" | "stays" | "remain" | "remains") ("put" | as_is) -> g_keep

@@ -233,6 +233,8 @@ class Lexicon:
             term = self._terminal(t)
             if term is None:
                 continue
+            if term[0] == "POSS" and tokens and tokens[-1].type == "ROBOT" and "is" in self.keywords:
+                term = (self.keywords["is"], "is")  # "Jumbo's the only one ...": a robot's "'s" is "is"
             tokens.append(Token(term[0], term[1], start_pos=len(tokens)))
             source.append(t)
         return Lexed(tokens, source)
