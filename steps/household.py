@@ -84,7 +84,7 @@ def simulate(
       doc="Score a household run's final state against ground-truth conditions (SR, GCR, Exe, RU, TC); "
           "the outputs of metrics.score, flat.",
       outputs={"success": "boolean", "goal_met": "boolean", "gcr": "number", "exe": "number", "ru": "number",
-               "tc_max": "number", "tc_avg": "number", "makespan": "number", "planned": "integer",
+               "tc_max": "number", "tc_avg": "number", "tc_avg_moved": "number", "makespan": "number", "planned": "integer",
                "executed": "integer", "lower_bound": "any", "violations": "array", "refused": "boolean",
                "error": "any"})
 def score(

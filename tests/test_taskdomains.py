@@ -94,3 +94,24 @@ def test_the_offline_reading_is_the_worlds_domains(tmp_path):
     shelf, product = next(iter(shop["shelves"])), next(iter(shop["products"]))
     out = offline(f"{shelf} holds 0 {product}", shop)
     assert out["goal"] == {shelf: {product: 0}} and "(:domain warehouse)" in out["problem"]
+
+
+def test_the_score_steps_of_both_domains_return_one_shape():
+    """A workflow or the bench reads ``success``, ``gcr``, ``tc_avg_moved``... the same way in
+    either domain."""
+    from pipflow.engine.registry import default_registry
+
+    registry = default_registry()
+    shapes = {name: dict(registry.get(name).outputs) for name in ("metrics.score", "household.score")}
+    assert shapes["metrics.score"] == shapes["household.score"]
+
+
+def test_household_scores_travel_over_the_robots_that_moved():
+    from pipflow.household.scoring import score_run
+
+    home = domain_named("household").load_world(HOUSEHOLD_WORLD)
+    robots = list(home["robots"])
+    sim = {"executed": 1, "exe": 1.0, "final_state": {}, "tc_max": 6.0, "tc_avg": 2.0,
+           "travel": {robots[0]: 6.0, robots[1]: 0.0, robots[2]: 0.0}}
+    score = score_run(home, {"in": {}, "state": {}}, schedule={"subtasks": [{"id": "s1"}]}, simulation=sim)
+    assert score["tc_avg"] == 2.0 and score["tc_avg_moved"] == 6.0
