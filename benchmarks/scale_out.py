@@ -30,7 +30,7 @@ def _noop(x):
 
 
 def _warm(_=None):
-    import pipflow.benchmarking  # noqa: F401
+    import pipflow.experiments.benchmarking  # noqa: F401
     import pipflow.warehouse.simulation  # noqa: F401
     return os.getpid()
 
@@ -46,7 +46,7 @@ def cluster(n: int):
 
 
 def bench_on(n: int, seeds: int) -> tuple[float, dict, list[dict]]:
-    from pipflow.benchmarking import BenchConfig, run_bench
+    from pipflow.experiments.benchmarking import BenchConfig, run_bench
 
     lc, client = cluster(n)
     try:

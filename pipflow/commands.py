@@ -53,27 +53,27 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
 
 
 def cmd_bench(args: argparse.Namespace) -> int:
-    from pipflow.benchmarking import bench_main
+    from pipflow.experiments.benchmarking import bench_main
 
     return bench_main(args)
 
 
 def cmd_report(args: argparse.Namespace) -> int:
-    from pipflow.report import write_report
+    from pipflow.records.report import write_report
 
     print(write_report(Path(args.dir), Path(args.output) if args.output else None))
     return 0
 
 
 def cmd_view(args: argparse.Namespace) -> int:
-    from pipflow.view import serve
+    from pipflow.records.view import serve
 
     serve(args.dir or getattr(args, "runs_dir", None) or "runs", port=args.port, open_browser=not args.no_browser)
     return 0
 
 
 def cmd_compare(args: argparse.Namespace) -> int:
-    from pipflow.compare import compare_text
+    from pipflow.records.compare import compare_text
 
     print(compare_text(Path(args.a), Path(args.b)))
     return 0

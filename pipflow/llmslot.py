@@ -2,7 +2,7 @@
 
 :func:`pipflow.language.llm.complete` enters :func:`llm_slot` around each provider call. By
 itself that is a no-op; an executor that shares providers between many runs (the Dask executor of
-:mod:`pipflow.executors`) installs its limiter with :func:`install`. The language layer thus
+:mod:`pipflow.experiments.backends`) installs its limiter with :func:`install`. The language layer thus
 never imports the executor above it.
 
 The hook is process-wide rather than a ``contextvars.ContextVar``: the engine runs steps in worker

@@ -109,7 +109,7 @@ def no_hang():
 def interrupt_after(n: int):
     """An ``on_row`` hook for ``run_bench`` that presses Ctrl-C after ``n`` stored rows; its
     ``seen`` lists the run keys of the rows stored before that."""
-    from pipflow.executors import run_key
+    from pipflow.experiments.backends import run_key
 
     def hook(row: dict) -> None:
         hook.seen.append(run_key(row))

@@ -16,8 +16,8 @@ from pathlib import Path
 import pytest
 
 from conftest import interrupt_after
-from pipflow.benchmarking import BenchConfig, read_row, row_path, run_bench
-from pipflow.executors import parse_executor, parse_limits, run_key
+from pipflow.experiments.benchmarking import BenchConfig, read_row, row_path, run_bench
+from pipflow.experiments.backends import parse_executor, parse_limits, run_key
 from pipflow.errors import UserError
 from pipflow.warehouse.scoring import score_run
 
@@ -306,7 +306,7 @@ def test_understanding_compares_bounds_as_ranges_and_rules_as_sets():
 
 
 def test_matrix_variants_with_one_name_are_refused():
-    from pipflow.benchmarking import variants
+    from pipflow.experiments.benchmarking import variants
 
     with pytest.raises(UserError, match="both be named 'workflow=warehouse'"):
         variants({"workflow": ["a/warehouse.yaml", "b/warehouse.yaml"]})
@@ -330,7 +330,7 @@ def test_an_out_folder_that_cannot_be_written_is_exit_2(tmp_path):
 def test_the_goal_of_a_run_that_did_not_finish_is_read_from_its_record(local_bench, tmp_path):
     import shutil
 
-    from pipflow.benchmarking import recorded_outputs
+    from pipflow.experiments.benchmarking import recorded_outputs
 
     out, _ = local_bench
     row = read_row(out, ("default", "t-two", 0))

@@ -264,7 +264,7 @@ def test_a_bound_goal_runs_end_to_end_with_enhsp(tmp_path):
     assert out["goal_met"] is True and out["gcr"] == 1.0
     assert out["final_stock"]["shelf4"]["product1"] <= 9 and out["final_stock"]["shelf2"]["product3"] >= 8
     # the report's goal table states each bound and that it holds
-    from pipflow.report import write_report
+    from pipflow.records.report import write_report
 
     page = write_report(result.run_dir).read_text()
     table = page[page.index("<h3>Goal</h3>"):page.index("</table>", page.index("<h3>Goal</h3>"))]

@@ -17,8 +17,8 @@ import pytest
 distributed = pytest.importorskip("distributed")
 
 from conftest import interrupt_after
-from pipflow.benchmarking import BenchConfig, read_row, run_bench  # noqa: E402
-from pipflow.executors import build_bundle, materialize, run_key  # noqa: E402
+from pipflow.experiments.benchmarking import BenchConfig, read_row, run_bench  # noqa: E402
+from pipflow.experiments.backends import build_bundle, materialize, run_key  # noqa: E402
 
 FIXTURE = Path(__file__).resolve().parent / "fixtures" / "bench"
 TASKS = FIXTURE / "tasks.yaml"
@@ -125,7 +125,7 @@ def test_llm_slots_are_bounded_per_provider_across_the_cluster(cluster):
     def hold(limit: int, model: str):
         import time as _t
 
-        from pipflow.executors import configure_llm_limits, llm_slot
+        from pipflow.experiments.backends import configure_llm_limits, llm_slot
 
         configure_llm_limits({"mockprov": limit, "default": 8}, "dask")
         with llm_slot(model, timeout=30):
@@ -146,7 +146,7 @@ def test_llm_slots_are_bounded_per_provider_across_the_cluster(cluster):
 def test_llm_complete_holds_a_slot(monkeypatch):
     import contextlib
 
-    import pipflow.executors as ex
+    import pipflow.experiments.backends as ex
     from pipflow import llmslot
     from pipflow.language.llm import complete
 

@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pipflow.report import write_report
+from pipflow.records.report import write_report
 from sim_fixtures import chain, load_world, wh01
 
 CHROMIUM_FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
@@ -142,7 +142,7 @@ def test_bench_report_renders_in_chromium(tmp_path):
 def test_broken_image_is_detected(tmp_path):
     """The check itself must be able to fail: a page with a missing picture is not ok."""
     page = tmp_path / "p.html"
-    from pipflow import report
+    from pipflow.records import report
 
     page.write_text(f"<html><body><img src='missing.png'>{report._CHECK_SCRIPT}</body></html>")
     dom = render(page, tmp_path / "s.png")

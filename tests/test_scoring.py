@@ -5,7 +5,7 @@ import copy
 
 import pytest
 
-from pipflow.benchstats import aggregate_task, summarize
+from pipflow.experiments.benchstats import aggregate_task, summarize
 from pipflow.warehouse.scoring import plan_lower_bound, score_run
 from pipflow.warehouse.simulation import simulate
 from sim_fixtures import R5_TO_S1, S1_TO_S3, build, chain, load_world, route, wh01

@@ -15,8 +15,8 @@ import pytest
 import yaml
 
 import pipflow
-from pipflow.compare import compare_text
-from pipflow.view import ViewServer
+from pipflow.records.compare import compare_text
+from pipflow.records.view import ViewServer
 from test_report import CHROMIUM_FLAGS, chromium
 
 REPO = Path(__file__).resolve().parents[1]
@@ -150,7 +150,7 @@ def test_bench_matrix_report_shows_variants_side_by_side(records, tmp_path):
 def test_matrix_side_by_side_table_in_the_terminal(records):
     import json
 
-    from pipflow.compare import variants_side_by_side
+    from pipflow.records.compare import variants_side_by_side
 
     bench = records / "benches" / "b1"
     text = variants_side_by_side(json.loads((bench / "results.json").read_text()),
@@ -166,7 +166,7 @@ def test_the_api_names_stay_functions_after_the_bench_module_is_imported():
     submodule of the same name would replace it on the package)."""
     import importlib
 
-    importlib.import_module("pipflow.benchmarking")
-    importlib.import_module("pipflow.runspec")
+    importlib.import_module("pipflow.experiments.benchmarking")
+    importlib.import_module("pipflow.experiments.runspec")
     assert callable(pipflow.bench) and callable(pipflow.run)
     assert pipflow.bench.__module__ == "pipflow.api"

@@ -1,4 +1,4 @@
-"""Scoring one run of a warehouse task (the aggregation into the bench table is :mod:`pipflow.benchstats`).
+"""Scoring one run of a warehouse task (the aggregation into the bench table is :mod:`pipflow.experiments.benchstats`).
 
 A run succeeds when, judged on what the *simulation* reports (never on what the plan claims):
 

@@ -35,7 +35,7 @@ def run_one(spec: RunSpec) -> dict:
     a user error is marked ``user_error`` (the bench stops on it: see :func:`_execute`)."""
     from pipflow.engine.executor import RunOptions
     from pipflow.engine.runner import run_workflow
-    from pipflow.benchdomains import domain_named
+    from pipflow.experiments.benchdomains import domain_named
     from pipflow.engine.store import read_json
 
     task = spec.task

@@ -210,7 +210,7 @@ def unpack_record(data: bytes, target: Path) -> Path:
 def run_remote(payload: dict) -> dict:
     """Run one (variant, task, seed) on a worker from its payload (bundle + run fields); never
     raises for a failed run. Returns the scored row plus ``record_zip`` (the run record)."""
-    from pipflow.runspec import RunSpec, run_one
+    from pipflow.experiments.runspec import RunSpec, run_one
 
     configure_llm_limits(payload.get("llm_limits"), "dask" if payload.get("llm_limits") else None)
     root = materialize(payload["bundle"], payload["digest"])
@@ -286,7 +286,7 @@ class LocalExecutor:
     def run(self, specs: list, on_row: Callable[[dict], None]) -> None:
         import concurrent.futures as cf
 
-        from pipflow.runspec import run_one
+        from pipflow.experiments.runspec import run_one
 
         if self.jobs <= 1:
             for spec in specs:

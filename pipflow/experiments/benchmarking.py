@@ -36,7 +36,7 @@ from pathlib import Path
 from typing import Any
 
 from pipflow.errors import UserError
-from pipflow.runspec import RunSpec, recorded_outputs, run_one  # noqa: F401  (the bench's face: tests, scripts)
+from pipflow.experiments.runspec import RunSpec, recorded_outputs, run_one  # noqa: F401  (the bench's face: tests, scripts)
 
 RESULT_FIELDS = ["variant", "task", "seed", "status", "success", "understood", "misread", "goal_met", "gcr", "exe",
                  "ru", "tc_max", "tc_avg", "tc_avg_moved", "makespan", "planned", "executed", "seconds", "error",
@@ -109,7 +109,7 @@ def row_path(out: Path, key: tuple[str, str, int]) -> Path:
 def read_row(out: Path, key: tuple[str, str, int]) -> dict | None:
     """The stored row of a run, or None (missing, torn or of another run)."""
     from pipflow.engine.store import read_json
-    from pipflow.executors import run_key
+    from pipflow.experiments.backends import run_key
 
     try:
         row = read_json(row_path(out, key))
@@ -145,7 +145,7 @@ def check_variants(specs: list[RunSpec]) -> dict[tuple, dict[str, str]]:
     """Validate every variant before the first run: its workflow file (and every file it extends),
     and its inputs (matrix, ``-i`` and per-task values) against the workflow's declared types, with
     each task's command and seed as a run will get them. Returns, per (workflow, inputs), the
-    content hash of every file the run reads (see :func:`pipflow.executors.build_bundle`: the
+    content hash of every file the run reads (see :func:`pipflow.experiments.backends.build_bundle`: the
     workflow and its extends, the files its path inputs name, its prompt templates).
 
     Raises :class:`UserError` naming the variant (and the task, when only one task's inputs are
@@ -153,7 +153,7 @@ def check_variants(specs: list[RunSpec]) -> dict[tuple, dict[str, str]]:
     from pipflow.engine.registry import default_registry
     from pipflow.engine.runner import find_workflow, resolve_inputs
     from pipflow.engine.validate import load_workflow
-    from pipflow.executors import build_bundle
+    from pipflow.experiments.backends import build_bundle
 
     registry = default_registry()
     files: dict[tuple, dict[str, str]] = {}
@@ -243,8 +243,8 @@ def run_bench(config: BenchConfig, progress: bool = True, on_row=None) -> dict:
     and a row with another fingerprint is refused (:class:`UserError` saying what differs).
     ``on_row(row)`` is called after each row is stored (tests use it to interrupt or to kill a
     worker)."""
-    from pipflow.executors import make_executor, run_key
-    from pipflow.benchdomains import domain_of
+    from pipflow.experiments.backends import make_executor, run_key
+    from pipflow.experiments.benchdomains import domain_of
 
     domain = domain_of(config.tasks_file)
     tasks_doc = domain.load_tasks(Path(config.tasks_file))
@@ -283,7 +283,7 @@ def run_bench(config: BenchConfig, progress: bool = True, on_row=None) -> dict:
 
 def _resumable(out: Path, specs: list[RunSpec]) -> dict[tuple, dict]:
     """The stored rows of runs with this configuration; refuses rows of another one."""
-    from pipflow.executors import run_key
+    from pipflow.experiments.backends import run_key
 
     done: dict[tuple, dict] = {}
     clashes: list[str] = []
@@ -313,7 +313,7 @@ def _execute(executor, todo: list[RunSpec], done: dict, out: Path, progress: boo
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 
     from pipflow.engine.store import write_json
-    from pipflow.executors import run_key
+    from pipflow.experiments.backends import run_key
 
     fresh = 0
     by_key = {run_key(s): s for s in todo}
@@ -348,7 +348,7 @@ def _execute(executor, todo: list[RunSpec], done: dict, out: Path, progress: boo
 
 
 def _results(rows: list[dict], tasks: list[dict], config: BenchConfig, wall: float, domain: str) -> dict:
-    from pipflow.benchstats import aggregate_task, summarize
+    from pipflow.experiments.benchstats import aggregate_task, summarize
 
     by_variant: dict[str, list[dict]] = {}
     for row in rows:
@@ -408,7 +408,7 @@ def markdown_table(results: dict) -> str:
     """The paper's table for the task file's domain: by default per task SR (%), understood
     (%), misread runs and travel cost max/avg (m); a domain may group it otherwise (its
     ``bench_table``, e.g. per category)."""
-    from pipflow.benchdomains import domain_named
+    from pipflow.experiments.benchdomains import domain_named
 
     config = results.get("config") or {}
     domain = domain_named(config.get("domain"))
@@ -461,7 +461,7 @@ def bench_main(args: argparse.Namespace) -> int:
     tasks_file = Path(args.tasks)
     if not tasks_file.exists():
         raise UserError(f"{tasks_file}: no such task file")
-    from pipflow.executors import parse_executor, parse_limits
+    from pipflow.experiments.backends import parse_executor, parse_limits
 
     executor = getattr(args, "executor", None) or "local"
     parse_executor(executor)  # a typo fails before anything runs
@@ -485,7 +485,7 @@ def bench_main(args: argparse.Namespace) -> int:
     results = run_bench(config, progress=not args.quiet)
     print(markdown_table(results))
     if len(results.get("variants", [])) > 1:
-        from pipflow.compare import variants_side_by_side
+        from pipflow.records.compare import variants_side_by_side
 
         print(variants_side_by_side(results, json.loads((config.out / "runs.json").read_text())))
     print(f"results: {config.out / 'results.json'}")

@@ -11,7 +11,7 @@ Pages:
   (query parameters ``workflow``, ``status``, ``since``; the form on the page sets them), each row
   linking to its report; tick two rows and "compare" opens ``/compare?a=..&b=..``.
 - ``/report/<relative dir>``: that record's report (written if missing or older than the record).
-- ``/compare?a=<rel>&b=<rel>``: two runs or two benches side by side (:mod:`pipflow.compare`).
+- ``/compare?a=<rel>&b=<rel>``: two runs or two benches side by side (:mod:`pipflow.records.compare`).
 - anything else: the file under DIR, read-only.
 """
 from __future__ import annotations
@@ -26,9 +26,9 @@ from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 from pathlib import Path
 from typing import Any
 
-from pipflow.compare import compare_html
+from pipflow.records.compare import compare_html
 from pipflow.errors import InputError
-from pipflow.report import write_report
+from pipflow.records.report import write_report
 
 _STYLE = """<style>
 body { font-family: sans-serif; margin: 1.5em 2em; color: #222; }
