@@ -526,6 +526,45 @@ def test_an_english_verb_is_never_taken_for_a_misspelt_robot_name() -> None:
     ("Folks, pit 2 needs 1 more oil filter as soon as possible, thanks.", {"pit2": {"oil-filter": 2}}, []),
     ("This afternoon, move 1 battery from the wash bay to pit 2 when you get a chance.",
      {"wash-bay": {"battery": 2}, "pit2": {"battery": 1}}, []),
+    # probe E's causes
+    ("Pit 2 is low on oil filters, add two.", {"pit2": {"oil-filter": 3}}, []),
+    ("Swap the batteries on the wash bay with the ones on pit 2.", {"wash-bay": {"battery": 0}, "pit2": {"battery": 3}}, []),
+    ("Switch the contents of pit 2 and the wash bay around.",
+     {"pit2": {"brake_pad": 1, "oil-filter": 0, "battery": 3},
+      "wash-bay": {"brake_pad": 0, "oil-filter": 1, "battery": 0}}, []),  # what either holds
+    ("Pack pit 2 full of brake pads.", {"pit2": {"brake_pad": 7}}, []),
+    ("The wash bay stays the way it is.", {"wash-bay": {"brake_pad": 1, "oil-filter": 0, "battery": 3, "kc-90": 0}}, []),
+    ("Cap the north yard at 3 batteries.", {"north yard": {"battery": {"at_most": 3}}}, []),
+    ("Keep the tool crib's brake pads somewhere between 1 and 3.", {"tool_crib": {"brake_pad": {"at_least": 1, "at_most": 3}}}, []),
+    ("Hold the north yard's batteries at least 2.", {"north yard": {"battery": {"at_least": 2}}}, []),
+    ("Pit 2 should match the tool crib's oil filter count.", {"pit2": {"oil-filter": 2}}, []),
+    ("The north yard, with its 5 oil filters, should give 2 of them to pit 2.",
+     {"north yard": {"oil-filter": 3}, "pit2": {"oil-filter": 3}}, []),
+    ("Clear out the wash bay, but don't put any of it on pit 2.",
+     {"wash-bay": {"brake_pad": 0, "oil-filter": 0, "battery": 0, "kc-90": 0},
+      "pit2": {"brake_pad": 0, "oil-filter": 1, "battery": 0, "kc-90": 0}}, []),
+    ("Don't let pip anywhere near pit 2.", {}, [{"never": ["pip"], "from": "pit2"}, {"never": ["pip"], "to": "pit2"}]),
+    ("Robots carrying less than 2 must stay off the batteries.", {}, [{"never": ["pip"], "product": "battery"}]),
+    # emptied into another place: nothing of any product is left there either
+    ("Empty the wash bay into the north yard. Only loader may do that.",
+     {"wash-bay": {"brake_pad": 0, "oil-filter": 0, "battery": 0, "kc-90": 0},
+      "north yard": {"brake_pad": 7, "battery": 7}}, [{"only": ["loader"], "from": "wash-bay", "to": "north yard"}]),
+    ("Fill pit 2 with batteries but keep its oil filters.", {"pit2": {"oil-filter": 1, "battery": 7}}, []),
+    ("Give pit 2 and the wash bay 1 more kc-90 each.", {"pit2": {"kc-90": 1}, "wash-bay": {"kc-90": 1}}, []),
+    ("Pit 2 needs 2 brake pads, taken from the north yard.", {"north yard": {"brake_pad": 4}, "pit2": {"brake_pad": 2}}, []),
+    # units taken off a place, then shared out: moves from that place (a bare count was read as the
+    # place's final count: pit 2 = 2, a misreading)
+    ("Move 3 oil filters from the north yard: 2 to pit 2 and 1 to the tool crib.",
+     {"north yard": {"oil-filter": 2}, "pit2": {"oil-filter": 3}, "tool_crib": {"oil-filter": 3}}, []),
+    ("Take 3 oil filters off the north yard and put 2 on pit 2.",
+     {"north yard": {"oil-filter": 2}, "pit2": {"oil-filter": 3}}, []),
+    ("Send 4 oil filters out of the north yard: 1 to pit 2 and the rest to the tool crib.",
+     {"north yard": {"oil-filter": 1}, "pit2": {"oil-filter": 2}, "tool_crib": {"oil-filter": 5}}, []),
+    # "bring no X to P": nothing goes there (it was read as emptying P of X)
+    ("Bring no batteries to the wash bay.", {"wash-bay": {"battery": 3}}, []),
+    # a destination said once at the end belongs to both moves (it was a removal to anywhere)
+    ("Move 2 batteries from the north yard and 1 from the wash bay to pit 2.",
+     {"north yard": {"battery": 2}, "pit2": {"battery": 3}, "wash-bay": {"battery": 2}}, []),
     ("Pull 1 kc-90 from the north yard over to pit 2.", {"north yard": {"kc-90": 1}, "pit2": {"kc-90": 1}}, []),
     ("Move 2 batteries north yard to pit 2.", {"north yard": {"battery": 2}, "pit2": {"battery": 2}}, []),
     ("Add 1 brake pad each to the wash bay and pit 2.", {"wash-bay": {"brake_pad": 2}, "pit2": {"brake_pad": 1}}, []),
@@ -567,6 +606,12 @@ def test_idioms_bounds_and_corrections_of_staff_english(command: str, goal: dict
     # a rule naming two items leaves "move 2" without its item
     ("Pip must not carry batteries and brake pads; move 2 from the north yard to pit 2.",
      TranslationError, "which product"),
+    ("Keep the tool crib's brake pads between 3 and 1.", TranslationError, "above the upper bound"),
+    # after a removal verb the destination may or may not be shared: not guessed
+    ("Take 2 batteries off the north yard and 1 from the wash bay to pit 2.", TranslationError, "too"),
+    # more shared out than was taken
+    ("Move 3 oil filters from the north yard: 2 to pit 2 and 2 to the tool crib.", TranslationError,
+     "only 1 of"),
     # as many as two places: each, or together? not guessed
     ("Put as many oil filters on pit 2 as there are on the tool crib and the north yard.",
      TranslationError, "together"),

@@ -168,7 +168,7 @@ addv: "add" | "bring" | "deliver" | "send" | "ship" | "move" | "transfer" | "car
     | "supply" | "drop" "off" | "get" | "push" | "cart" | "ferry" | "tow" | "lug" | "shuttle" | "wheel"
     | "grab" | "run" | "pull" | "return" | "dump" | "fetch" | "dispatch"
 removev: "remove" | "take" | "unload" | "pull" | "withdraw" | "clear" | "get" | "move"
-       | "get" "rid" "of" | "dispose" "of" | "throw" "out" | "take" "away" | "knock" | "grab"
+       | "get" "rid" "of" | "dispose" "of" | "throw" "out" | "take" "away" | "knock" | "grab" | "send" | "ship"
 splitv: "split" | "divide" | "distribute" | "share" | "spread" | "spread" "out" | "share" "out"
 among: "between" | "among" | "amongst" | "across" | "over"
 even: "evenly" | "equally" | "fairly" | "in" "equal" ("parts" | "shares") | ","? "same" "amount" "each"
@@ -221,6 +221,7 @@ goal: there_be items loc                                  -> g_set
     | (places ":")? ("decrease" | "lower" | "reduce" | "cut" | "drop") ihead loc? "by" NUM -> g_lower
     | want places ("to" "be")? "at" items                     -> g_place_set
     | "give" places items                                     -> g_place_set
+    | "give" places items "each"                              -> g_place_set
     | places place_appos modal? setv items                    -> g_place_set
     | addv bare src appos? adv? to places                   -> g_transfer_src
     | removev bare src                                     -> g_remove_src
@@ -267,12 +268,13 @@ goal: there_be items loc                                  -> g_set
     | places modal? setv items on_top                       -> g_add_place
     | ("dont" | "do" "not" | "never") ("touch" | "move" | "take") ("any" | "anything")? ihead loc? -> g_keep_item
     | ("dont" | "do" "not") emptyv places                    -> g_noop
-    | ("dont" | "do" "not" | "never") (putv | addv | "send" | "bring") ("any" | "anything" | "them" | "it" | ihead)? loc -> g_no_inflow
+    | ("dont" | "do" "not" | "never") (putv | addv | "send" | "bring") ("any" | "anything" | "them" | "it" | ihead | "any" "of" ("it" | "them" | "that" | "those"))? loc -> g_no_inflow
     | ("none" "of" ("them" | "it") | "none") modal? go loc  -> g_no_inflow
     | swapv ("what" | "contents" "of" | "loads" "of" | "stock" "of" | "everything" ("on" | "in" | "between" | "of") | "between")? places ("hold" | "have" | "contain" | "holds" | "has")? -> g_swap
     | swapv ihead (lsep ihead)* ("between" | "of" | "on" | "in" | "at") places -> g_swap_items
-    | swapv ihead loc "with" ihead? loc                     -> g_swap_two
+    | swapv ihead loc "with" (ihead | "ones" | "those")? loc -> g_swap_two
     | places modal? ("swap" | "trade" | "exchange") (("their" | "its") | "what" "they" ("hold" | "have"))? swapwhat -> g_swap_subj
+    | swapv ("what" | "contents" "of" | "loads" "of" | "stock" "of")? places ("around" | "round" | "over") -> g_swap
     | splitv items src even? among places even?              -> g_split_src
     | splitv pitems even? among places even?                 -> g_split_src
     | addv items adv? to places from places                -> g_transfer
@@ -312,15 +314,22 @@ goal: there_be items loc                                  -> g_set
     | ("leave" | "keep") places as_is                       -> g_keep
     | ("dont" | "do" "not") "touch" places                  -> g_keep
     | ("dont" | "do" "not" | "never") ("take" | "remove" | "move" | "pull") ("anything" | "any" ihead) ("off" | "from" | "out" "of") places -> g_keep
-    | places modal? ("stay" | "remain" | "be" "left") as_is  -> g_keep
+    | places modal? ("stay" | "stays" | "remain" | "remains" | "be" "left") as_is  -> g_keep
     | places modal? ("stay" | "stays" | "remain" | "remains") "put" -> g_keep
     | ihead loc modal? ("stay" | "stays" | "remain" | "remains") ("put" | as_is) -> g_keep
     | places modal? ("use" | "do" "with") items              -> g_could_use
     | ("top" ("up" | "off") | "fill" "up") places "with" only? ihead only? -> g_fill
     | (putv | addv) items loc on_top                         -> g_add
     | mult "up"? posplace ihead                              -> g_mult
+    | places ("is" | "are") ("light" | "low" | "short" | "running" "low") "on" ihead ","? ("add" | "bring" | "send") NUM more? -> g_light_add
+    | ("pack" | "load" | "stock" | "fill") places "up"? "full" "of" only? ihead only? -> g_fill
+    | ("cap" | "limit") places ("at" | "to") NUM of? ihead    -> g_ceiling
+    | ("keep" | "hold") pitem_plain ("somewhere" | "anywhere")? "between" NUM ("and" | "to") NUM -> g_poss_bound
+    | ("keep" | "hold") pitem_plain (lower | upper) NUM       -> g_poss_bound
+    | places modal? "match" posplace ihead ("count" | "number" | "level" | "total")? -> g_match
+    | places place_appos? modal? ("give" | "pass" | "hand" "over" | "hand") items ("to" | "over" "to") places -> g_give
     | ("bring" | "take" | "get" | "cut" | "reduce" | "lower" | "raise" | "increase" | "drop") pitem_plain ("down" | "up")? "to" NUM -> g_item_first
-    | "leave" its ihead (lsep ihead)* as_is?                   -> g_keep_its_elided
+    | ("leave" | "keep") its ihead (lsep ihead)* as_is?        -> g_keep_its_elided
     | ("make" | "set" | "bring" | "get" | "have") posplace ihead ("count" | "number" | "level" | "stock" | "total")? ("equal" "to" | "to" | "same" "as" | "match" | "equal") posplace ihead? -> g_equal_poss
     | putv "as" "many" ihead loc "as" ("there" ("are" | "is") | "sit" | "are") ("on" | "in" | "at") PLACE ((lsep) PLACE)* together? -> g_as_many_there
     | ("have" | "let" | "make") places ("swap" | "trade" | "exchange") (("their" | "its") | "what" "they" ("hold" | "have"))? swapwhat -> g_swap_subj
@@ -349,6 +358,7 @@ pitems: frac of? posplace ihead appos?                     -> pi_frac
       | ("all" of?)? "its" ihead                           -> pi_all
 pitem_plain: posplace ihead
 place_appos: "," ("which" | "that" | "it" | "they") ("has" | "have" | "holds" | "hold" | "already" "has") items now? ","
+           | "," ("with" | "holding" | "having") its? items now? ","
 appos: ","? ("all" | "both") (NUM "of" "them" | "of" "them") ","?
 swapwhat: ihead (lsep ihead)* | "everything" ("they" ("hold" | "have"))? | "contents" | "loads" | "stock" | "places" | "goods" | "items"
 stay: be | "be" "left" | "remain" | "be" "kept" | "sit" | "stay" | "lie" | "go" | "be" "placed" | "be" "stored" | "belong" | "end" "up"
@@ -363,7 +373,7 @@ swapv: "swap" | "trade" | "exchange" | "switch" | "interchange"
 emptyv: "empty" | "clear" | "clean" "out" | "clear" "out" | "empty" "out"
 emptied: "empty" | "emptied" | "cleared" | "vacant" | "cleaned" "out" | "emptied" "out" | "cleared" "out"
 as_is: "where" ("it" | "they") ("is" | "are") | "as" ("it" | "they") ("is" | "are") | "alone"
-     | "untouched" | "unchanged" | "as" "is"
+     | "untouched" | "unchanged" | "as" "is" | "way" ("it" | "they") ("is" | "are" | "was" | "were") | "as" ("it" | "they") ("was" | "were")
 
 except_places: ("except" | "but" "not" | "apart" "from" | "other" "than" | "excluding" | "not") except_what? ("on" | "in" | "at" | "from") places
              | ("except" | "but" "not" | "excluding" | "not") from places
@@ -381,7 +391,7 @@ tail: places ("too" | "as" "well" | "also")                 -> t_too
     | ("also" | "same" "for" | "same" "thing" "for") places   -> t_too
     | NUM fewer loc                                      -> t_elided_fewer
     | items ("other" "way" ("round" | "around")? | "in" "other" "direction" | "in" "reverse" | "back") -> t_reverse
-    | ("taking" | "take") ("them" | "it" | "those" | "these" | "all" | "everything")? from places -> t_source
+    | ("taking" | "take" | "taken" | "brought" | "coming") ("them" | "it" | "those" | "these" | "all" | "everything")? from places -> t_source
     | ("all" | "both" | "each")? from places               -> t_source
 
 // ---------------------------------------------------------------- robots and rules
@@ -450,6 +460,8 @@ rwhere: from places                                    -> rw_from
       | "to" (PLACEWORD | "location") "of" places        -> rw_to
       | ("at" | "on" | "in" | "near" | "around" | "by") places -> rw_at
       | "away" "from" places                               -> rw_at
+      | ("anywhere" | "somewhere")? ("close" "to" | "next" "to") places -> rw_at
+      | ("anywhere" | "somewhere") ("near" | "around" | "by") places -> rw_at
       | ("going" | "headed" | "heading" | "moving" | "bound") ("to" | "into" | "for") places -> rw_to
       | ("coming" | "leaving") from places                 -> rw_from
       | from NUM PLACEWORD "to" "another"                  -> rw_none
@@ -474,6 +486,7 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | ("let" | "have") robots act rscope                     -> rule_only
     | ("keep" | "leave") robots ("away" | "clear") from ITEM (lsep ITEM)* -> rule_away_items
     | ("keep" | "leave") robots "off" ITEM (lsep ITEM)*       -> rule_away_items
+    | robots modal? ("stay" | "keep") ("off" | "away" "from" | "clear" "of") ITEM (lsep ITEM)* -> rule_away_items
     | robots ("is" | "are") state ","? ("so" | "and")? ("dont" | "do" "not") "use" ("it" | "them") -> rule_state
     | robots ("is" | "are") "not" "to" "be" "used" rscope     -> rule_never
     | robots modal? ("stay" | "keep") ("away" | "clear") from places -> rule_away
@@ -508,6 +521,7 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | ("except" | "apart" "from" | "other" "than" | "besides") robots ","? ("all" | "every")? ROBOTWORD? ("is" | "are" | modal? ("stay" | "be" | "remain")) state -> rule_only
     | ("except" | "apart" "from" | "other" "than" | "besides") robots ","? ("all" | "every" | "no")? ROBOTWORD? rmodal? rneg useact? rscope -> rule_only
     | robots oblig? "do" ("it" | "that" | "this" | "job" | "task" | "work") -> rule_do_it
+    | "only" robots (rmodal | oblig)? "do" ("it" | "that" | "this" | "job" | "task" | "work") -> rule_do_it
     | robots ("is" | "are") "only" ("ones" | NUM | ROBOTWORD) ("allowed" "to" | "permitted" "to" | "that" ("may" | "can") | "who" ("may" | "can")) useact? rscope -> rule_only
     | robots ("can" | "may" | "could" | "might") act rscope  -> rule_permission
 

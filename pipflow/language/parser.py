@@ -29,6 +29,7 @@ from pipflow.errors import PipflowError, TranslationError
 from pipflow.language.earley import ListLexer, earley_parser
 from pipflow.language.grammar import GRAMMAR, nullable_optionals
 from pipflow.language.lexicon import Lexed, Lexicon
+from pipflow.language.numbers import NUMBER_WORDS
 from pipflow.language.robots import RobotSelector
 
 #: the most terminals one sentence may have: Earley's time grows faster than the length on
@@ -37,6 +38,9 @@ MAX_SENTENCE_WORDS = 120
 SET_AMOUNTS = {"count", "all", "none", "as_many_as", "rest", "each"}
 CHANGE_AMOUNTS = {"more", "fewer", "times", "fraction"}
 BOUND_AMOUNTS = {"at_least", "at_most", "between", "at_least_more"}
+#: verbs whose object goes somewhere: a destination said later in the sentence is theirs too
+MOVE_VERBS = {"move", "bring", "send", "ship", "transfer", "carry", "haul", "shift", "cart", "ferry", "tow",
+              "lug", "shuttle", "wheel", "run", "relocate", "deliver", "pull", "grab"}
 #: "P gets N X": a final count or a delivery; read only where both mean the same
 RECEIVE_VERBS = {"get", "gets", "receive", "receives"}
 
@@ -87,6 +91,9 @@ class _Sentence:
         # words of counts said with "gets / receives": repeated elsewhere ("and so does Q"), they
         # must again mean one thing there
         self.received: set[str] = set(memory.get("received") or ())
+        # units taken off a place and then shared out ("Move 3 lids from dispatch: 2 to silo 2 and
+        # 1 to rack east"): the removal and how many of it are not yet given a destination
+        self.budget: dict | None = None
 
     # -- words ------------------------------------------------------------------------------
     def words(self, node: Tree | Token | list) -> str:
@@ -307,6 +314,15 @@ class _Sentence:
                 f"{_quote(words)}: the command does not say whether each of {', '.join(places)} "
                 f"gets these counts or they share them (say 'each', 'respectively' or 'evenly between')")
         for np in nps:
+            if add and np["amount"].get("none"):
+                # "bring / move / add no lids to P": nothing goes there, P keeps its lids (it was
+                # read as "P holds no lids", emptying P: a misreading)
+                items = np["items"] or ({"names": list(self.last_item)} if self.last_item else None)
+                if items is None:
+                    raise TranslationError(f"{_quote(np['words'])}: cannot tell which product")
+                self.statements.append({"op": "keep", "places": {"names": places}, "items": items,
+                                        "inflow_only": False, "words": np["words"]})
+                continue
             if np["amount"].get("as_many_here"):  # each place against its own count of the other item
                 for p in places:
                     here = {**np, "amount": {"as_many_as": p, "of": np["amount"]["of"]}}
@@ -318,6 +334,12 @@ class _Sentence:
         a = np["amount"]
         key = next(iter(a))
         prev = self.statements[-1] if self.statements else None
+        if np["items"] is None and key in ("count", "more", "rest"):
+            taken = self.budget["st"] if self.budget else (
+                prev if prev is not None and prev["op"] == "transfer" and prev.get("to") is None
+                and "names" in (prev.get("from") or {}) else None)
+            if taken is not None:
+                return self._share(taken, places, np, key)
         if np["items"] is None and prev is not None and prev["op"] == "transfer" and key in ("count", "more") \
                 and prev.get("to"):
             # "Move 2 totes from inbound to outbound and 1 (more) to quarantine": same item, same source
@@ -466,6 +488,45 @@ class _Sentence:
                     st["items"] = {"all": True, "except": list(dict.fromkeys((st["items"].get("except") or []) + heads))}
             self.statements.append({"op": "keep", "places": {"names": places}, "items": {"names": heads},
                                     "inflow_only": False, "words": words})
+            return
+        if kind == "g_light_add":
+            # "Rack east is light on flour bags, add three": the count is more of that item there
+            head = self.ihead(self.sub(node, "ihead")[0], words)
+            n = int(self.toks(node, "NUM")[0].value)
+            self.last_item = [head]
+            self.put(self.place_list(plist[0]), "one", [{"items": {"names": [head]}, "amount": {"more": n},
+                                                          "words": words}], words)
+            return
+        if kind == "g_poss_bound":
+            # "Keep rack east's lids between 2 and 6", "hold P's X at least 3"
+            pp = self.sub(node, "pitem_plain")[0]
+            place = [str(self.toks(pp, "PLACE")[0].value)]
+            head = self.ihead(self.sub(pp, "ihead")[0], words)
+            nums = [int(t.value) for t in node.children if isinstance(t, Token) and t.type == "NUM"]
+            if len(nums) == 2:
+                if nums[0] > nums[1]:
+                    raise TranslationError(f"{_quote(words)}: the lower bound {nums[0]} is above the upper bound {nums[1]}")
+                amount = {"at_least": nums[0], "at_most": nums[1]}
+            else:
+                amount = {"at_least": nums[0]} if self.sub(node, "lower") else {"at_most": nums[0]}
+            self.put(place, "one", [{"items": {"names": [head]}, "amount": amount, "words": words}], words)
+            return
+        if kind == "g_match":
+            # "Rack east should match silo 2's flour bag count": that place's count now
+            head = self.ihead(self.sub(node, "ihead")[0], words)
+            other = str(self.sub(node, "posplace")[0].children[0].value)
+            self.last_item = [head]
+            self.put(self.place_list(plist[0]), "one", [{"items": {"names": [head]}, "amount": {"as_many_as": other},
+                                                          "words": words}], words)
+            return
+        if kind == "g_give":
+            # "Dispatch, with its 8 lids, should give 3 of them to rack east": a move from the subject
+            source = self.place_list(plist[0])
+            for ap in self.sub(node, "place_appos"):
+                self.apposition(source, self.nps(self.sub(ap, "items")[0]), self.words(ap))
+            nps = self.nps(items[0])
+            for np in nps:
+                self.statements.append(self._transfer_statement(np, source, self.place_list(plist[1]), words))
             return
         if kind == "g_could_use":
             # "P could use / could do with N more X" is a change; without "more" it could be the
@@ -763,6 +824,8 @@ class _Sentence:
             source, dst = self.place_list(plist[0]), self.place_list(plist[1])
             self.statements.append(self._transfer_statement(
                 {"items": {"all": True, "except": []}, "amount": {"all_held": True}, "words": words}, source, dst, words))
+            # the source is emptied, like "empty P": none of any product is left or parked there
+            self.statements.append({"op": "empty", "places": {"names": source}, "items": {"all": True}, "words": words})
             return
         if kind == "g_floor":
             places = self.place_list(plist[0])
@@ -858,6 +921,44 @@ class _Sentence:
         if expect is not None:
             amount["expect"] = expect
         return {"items": {"names": [head]}, "amount": amount, "words": words}, source
+
+    def _shared_destination(self) -> None:
+        """ "Move 2 lids from dispatch and 1 from rack east to silo 2": the destination said once at
+        the end is that of both moves (it was read as a removal of 2 to anywhere: a misreading).
+        After a removal verb ("take 2 off A and 1 from B to C") it could be either: refused."""
+        for k in range(len(self.statements) - 1):
+            st, nxt = self.statements[k], self.statements[k + 1]
+            if not (st["op"] == "transfer" and st.get("to") is None and nxt["op"] == "transfer" and nxt.get("to")
+                    and "names" in (st.get("from") or {}) and nxt.get("items") == st.get("items")):
+                continue
+            first = (nxt.get("words") or "").split()[:1]
+            if not first or not (first[0].isdigit() or first[0].lower() in NUMBER_WORDS | {"another", "all"}):
+                continue  # the second move has its own verb: two statements
+            if (st.get("words") or "").split()[0].lower() not in MOVE_VERBS:
+                raise TranslationError(f"{_quote(st['words'])} and {_quote(nxt['words'])}: cannot tell whether "
+                                       f"the first goes to {', '.join(nxt['to']['names'])} too")
+            st["to"] = {"names": list(nxt["to"]["names"])}
+
+    def _share(self, taken: dict, places: list[str], np: dict, key: str) -> dict:
+        """A share of units just taken off a place ("take 3 off A and put 2 on B", "Move 3 lids from
+        dispatch: 2 to silo 2 and the rest to rack east"): a move from that place, counted against
+        what was taken; what is never given a place stays a removal (see :meth:`finish`). It was
+        read as a final count for B before: a misreading."""
+        amount = taken["amount"]
+        if set(amount) != {"count"}:
+            raise TranslationError(f"{_quote(np['words'])} after {taken['words']!r}: cannot tell how the units "
+                                   f"taken are shared")
+        if self.budget is None or self.budget["st"] is not taken:
+            at = next(k for k, st in enumerate(self.statements) if st is taken)
+            del self.statements[at]
+            self.budget = {"st": taken, "left": int(amount["count"])}
+        left = self.budget["left"]
+        n = left if key == "rest" else int(np["amount"][key])
+        if n > left or (key == "rest" and n == 0):
+            raise TranslationError(f"{_quote(np['words'])}: only {left} of {taken['words']!r} are left to share")
+        self.budget["left"] = left - n
+        return {"op": "transfer", "items": taken["items"], "amount": {"count": n}, "from": taken["from"],
+                "to": {"names": places}, "words": np["words"]}
 
     def _rest(self, places: list[str], np: dict) -> dict:
         """ "and the rest to P": what is left at the source of the statement before."""
@@ -1235,6 +1336,9 @@ class _Sentence:
 
     def finish(self) -> None:
         """Rules with no scope of their own take the sentence's goal (see the module doc)."""
+        if self.budget and self.budget["left"]:  # units taken and not all shared out: still taken off
+            self.statements.append({**self.budget["st"], "amount": {"count": self.budget["left"]}})
+        self._shared_destination()
         if self.pending_source and not any(st["op"] == "transfer" for st in self.statements):
             raise TranslationError(f"'from {', '.join(self.pending_source)}': nothing in the sentence is taken from there")
         # "Empty rack D and put its valves on rack B": what leaves the place goes first, then
