@@ -188,7 +188,9 @@ class StepCache:
             tmp.mkdir(parents=True)
             if artifact_dir.is_dir():
                 shutil.copytree(artifact_dir, tmp / "artifacts", symlinks=True)
-            raw = json.dumps(outputs, sort_keys=True, default=str).encode("utf-8")
+            # mappings keep their order: a world's robots in file order is data (ties are broken by
+            # it), and a cached run must equal a fresh one
+            raw = json.dumps(outputs, default=str).encode("utf-8")
             atomic_write(tmp / "outputs.json", raw, redacted=False)
             manifest = {"pipflow_cache": 1, "key": key, "outputs": hashlib.sha256(raw).hexdigest(),
                         "artifacts": {name: _sha256(path) for name, path in _artifact_files(tmp / "artifacts").items()}}

@@ -156,7 +156,8 @@ def _create_temporary(path: Path) -> tuple[int, str]:
 
 
 def write_json(path: Path, value: Any) -> None:
-    atomic_write(path, json.dumps(value, indent=2, sort_keys=True, default=str) + "\n")
+    """Mappings keep their order (outputs read back by ``resume`` must equal the originals)."""
+    atomic_write(path, json.dumps(value, indent=2, default=str) + "\n")
 
 
 def read_json(path: Path, default: Any = None) -> Any:

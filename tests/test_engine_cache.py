@@ -47,6 +47,19 @@ def test_editing_a_file_named_by_a_cached_steps_input_is_a_cache_miss(engine_env
     assert edited["stock"]["shelf4"]["product1"] == 14 and first["stock"]["shelf4"]["product1"] == 15
 
 
+def test_a_cached_output_keeps_the_order_of_its_mappings(engine_env):
+    """Robots in file order are data (the allocation breaks ties by it): a cache hit and a
+    resumed run read back the same order as a fresh run, not keys sorted (robot10 before robot2)."""
+    (engine_env / "wf.yaml").write_text(WORKFLOW.replace("stock: ${world.world.stock}",
+                                                         "robots: ${world.world.robots}"))
+    shutil.copy(REPO / "benchmarks/warehouse/world.yaml", engine_env / "world.yaml")
+    fresh, _ = _run(engine_env)
+    cached, ends = _run(engine_env)
+    assert ends[0]["cached"] is True
+    assert list(fresh["robots"]) == [f"robot{i}" for i in range(12)]
+    assert list(cached["robots"]) == list(fresh["robots"])
+
+
 def test_changed_step_code_is_a_cache_miss(tmp_path, monkeypatch):
     """A step whose code (or the code of its package) changed must not be served an old result,
     even when nobody bumped its version."""
