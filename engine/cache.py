@@ -80,13 +80,17 @@ def code_fingerprint(module: str) -> str:
     return digest.hexdigest()
 
 
+#: the layout of stored outputs; entries of another format are never hit (2: mappings keep their order)
+FORMAT = 2
+
+
 def cache_key(step_name: str, version: str, inputs: dict[str, Any], module: str = "") -> str:
     """Step name, step version, the step's code, resolved inputs, and the content of the files
     the inputs name."""
     files: dict[str, str] = {}
     _file_digests(inputs, files)
     code = code_fingerprint(module) if module else ""
-    canonical = json.dumps({"step": step_name, "version": version, "code": code, "inputs": inputs, "files": files},
+    canonical = json.dumps({"format": FORMAT, "step": step_name, "version": version, "code": code, "inputs": inputs, "files": files},
                            sort_keys=True, separators=(",", ":"), default=str)
     return hashlib.sha256(canonical.encode("utf-8")).hexdigest()
 
