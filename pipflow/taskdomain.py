@@ -23,8 +23,13 @@ Contract of the dicts that cross the interface (unchanged from the steps' output
 * offline reading: ``{"problem", "goal", "constraints", "messages", "response", "usage",
   "errors"}`` plus optional ``"order"``, ``"explanation"``, ``"concrete"``;
 * robot rules: ``{"only"|"never": [robot names], <rule field>: name, "words"?: ...}``;
-* scores: the flat outputs of step ``metrics.score`` (``success``, ``gcr``, ``exe``, ``ru``,
-  ``tc_max``, ``tc_avg``, ``makespan``, ``violations``, ...).
+* simulations: :data:`SIMULATION_CORE` (every domain's ``simulate`` returns these keys, its
+  final state under ``final_state``) plus keys of the domain's own; the generic step
+  ``simulate`` passes the core and ``pictures`` through and keeps the rest under ``details``
+  (:func:`simulation_outputs`), and a domain's ``score`` reads either form
+  (:func:`flat_simulation`);
+* scores: :data:`SCORE_CORE`, flat (``success``, ``gcr``, ``exe``, ``ru``, ``tc_max``, ``tc_avg``,
+  ``makespan``, ``violations``, ...): the outputs of the generic step ``score``.
 """
 from __future__ import annotations
 
@@ -43,6 +48,48 @@ REFUSED_KINDS = ("Refusal", "TranslationError")
 
 #: ``save(name, data)``: keep an artifact of the step (the engine's ``ctx.write_artifact``)
 Save = Callable[[str, Any], Any]
+
+#: What every domain's ``simulate`` returns, with the output types the generic step ``simulate``
+#: declares: one shape, so a workflow, the bench and the report read a run the same way in any
+#: domain. ``final_state`` is the domain's own picture of the world afterwards (stock per shelf,
+#: where each object is, ...); travel is metres per robot, ``tc_avg_moved`` the mean over the
+#: robots that moved (the paper's TC-avg), ``jumps`` the legs that start away from where a robot
+#: stood (a broken schedule).
+SIMULATION_CORE: dict[str, str] = {
+    "final_state": "object", "executed": "integer", "failed": "integer", "failures": "array",
+    "exe": "number", "travel": "object", "tc_max": "number", "tc_avg": "number", "tc_avg_moved": "number",
+    "goal_met": "boolean", "gcr": "number", "jumps": "object", "makespan": "number",
+}
+#: what every domain's ``score`` returns (the generic step ``score`` declares these, flat)
+SCORE_CORE: dict[str, str] = {
+    "success": "boolean", "goal_met": "boolean", "gcr": "number", "exe": "number", "ru": "number",
+    "tc_max": "number", "tc_avg": "number", "tc_avg_moved": "number", "makespan": "number",
+    "planned": "integer", "executed": "integer", "lower_bound": "any", "violations": "array",
+    "refused": "boolean", "error": "any",
+}
+
+
+def simulation_outputs(result: Mapping[str, Any]) -> dict:
+    """A domain's simulation result in the generic step's shape: the core keys, ``pictures``
+    (file names of the step's artifacts; none: ``[]``) and every other key under ``details``.
+    A result that lacks a core key is the domain's bug, said with the keys it lacks."""
+    missing = [key for key in SIMULATION_CORE if key not in result]
+    if missing:
+        raise TypeError(f"a simulation result lacks {', '.join(missing)} (every domain returns SIMULATION_CORE)")
+    outputs = {key: result[key] for key in SIMULATION_CORE}
+    outputs["pictures"] = list(result.get("pictures") or [])
+    outputs["details"] = {k: v for k, v in result.items() if k not in outputs}
+    return outputs
+
+
+def flat_simulation(simulation: Mapping[str, Any] | None) -> dict | None:
+    """A simulation as one flat mapping, from the generic step's shape (``details`` nested) or a
+    domain step's (flat): what a domain's scoring reads. None stays None (no simulation ran)."""
+    if simulation is None:
+        return None
+    details = simulation.get("details")
+    rest = {k: v for k, v in simulation.items() if k != "details"}
+    return {**details, **rest} if isinstance(details, Mapping) else rest
 
 
 def pddl_domain_name(domain_text: str, default: str) -> str:
@@ -175,15 +222,19 @@ class TaskDomain(ABC):
     @abstractmethod
     def simulate(self, world: dict, schedule: dict, graph: dict | None, goal: Any, *,
                  snapshots: bool = False, out_dir: Path | None = None,
-                 log: Callable[[str], None] = print, **options: Any) -> dict:
-        """Execute a schedule; the outputs of the domain's simulate step."""
+                 log: Callable[[str], None] = print, save: Save | None = None, **options: Any) -> dict:
+        """Execute a schedule: :data:`SIMULATION_CORE` plus keys of the domain's own (small: the
+        step's outputs). ``snapshots``: pictures into ``out_dir`` (their names under
+        ``pictures``); ``save``: where to keep bulky records (trajectories, event logs) as the
+        step's artifacts; ``options``: the domain's own switches (the workflow's ``options:``)."""
 
     @abstractmethod
     def score(self, world: dict, goal: Any, *, constraints: list[dict] | None = None,
               feasible: bool = True, graph: dict | None = None, schedule: dict | None = None,
               simulation: dict | None = None, refusal: str | None = None,
               error: str | None = None) -> dict:
-        """Judge one run against its task: the flat outputs of step ``metrics.score``."""
+        """Judge one run against its task: :data:`SCORE_CORE`, flat. ``simulation`` is either shape
+        of a simulation (read it through :func:`flat_simulation`)."""
 
     # -- the bench -----------------------------------------------------------------------------
 

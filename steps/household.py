@@ -59,7 +59,8 @@ def problem(
 @step("household.simulate",
       doc="Execute a schedule in the home: preconditions and coalition skills checked, state updated, travel measured, pybullet pictures.",
       outputs={"final_state": "object", "executed": "integer", "failed": "integer", "failures": "array",
-               "exe": "number", "travel": "object", "tc_max": "number", "tc_avg": "number", "goal_met": "boolean",
+               "exe": "number", "travel": "object", "tc_max": "number", "tc_avg": "number", "tc_avg_moved": "number",
+               "goal_met": "boolean",
                "gcr": "number", "conditions": "object", "jumps": "object", "makespan": "number", "pictures": "array"},
       version="1")
 def simulate(

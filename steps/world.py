@@ -1,10 +1,14 @@
-"""World step: load and validate a world file with its task domain's loader (the file's top-level
-``domain:`` key; none: the default domain), see :meth:`pipflow.taskdomain.TaskDomain.load_world`."""
+"""Steps that reach a world's task domain through the protocol (:mod:`pipflow.taskdomain`):
+load a world file, simulate a schedule in it, score a run against its task. One step each for
+every domain, so a domain plugin needs no step of its own; the domain is the world's
+(``domain:`` in the file, ``world["domain"]`` in the dict; none: the default domain)."""
 from __future__ import annotations
 
 from typing import Annotated
 
 from pipflow import Doc, PathStr, StepContext, step
+from pipflow.taskdomain import SCORE_CORE, SIMULATION_CORE, simulation_outputs
+from pipflow.taskdomains import declared_domain, task_domain
 
 
 @step("world.load",
@@ -20,10 +24,58 @@ def load(
 ) -> dict:
     """Raises WorldError (exit 2) listing each problem with file:line:col, InputError for an
     unknown ``domain:``; returns the normalized world dict of docs/architecture.md."""
-    from pipflow.taskdomains import declared_domain
-
     file = ctx.resolve_path(path)
     domain = declared_domain(file)
     world = domain.load_world(file, seed=seed)
     ctx.log(f"world {world['name']}: {domain.describe(world)}")
     return {"world": world}
+
+
+@step("simulate",
+      doc="Execute a schedule in the world's task domain's simulator; the same core outputs in every domain "
+          "(final state, executed, failures, travel, TC, goal met, GCR), the domain's own under `details`.",
+      outputs={**SIMULATION_CORE, "pictures": "array", "details": "object"},
+      version="1")
+def simulate(
+    ctx: StepContext,
+    world: Annotated[dict, Doc("the world (output of world.load)")],
+    schedule: Annotated[dict, Doc("the schedule (output of schedule)")],
+    graph: Annotated[dict | None, Doc("the dependency graph: skills, fields and route per subtask")] = None,
+    goal: Annotated[dict | None, Doc("the goal to judge the final state against")] = None,
+    snapshots: Annotated[bool, Doc("save pictures of key moments (PNG), where the domain draws them")] = False,
+    options: Annotated[dict | None, Doc("the domain's own switches (its simulate's options), e.g. "
+                                        "{picture: true, animation: true}: a path map, a GIF")] = None,
+) -> dict:
+    """The step's artifact folder is where a domain draws, when ``snapshots`` or its own options
+    ask; the trajectories and event logs it keeps are artifacts too, not outputs."""
+    out_dir = ctx.artifact_path("pictures").parent
+    result = task_domain(world).simulate(world, schedule, graph, goal, snapshots=snapshots, out_dir=out_dir,
+                                         log=ctx.log, save=ctx.write_artifact, **(options or {}))
+    outputs = simulation_outputs(result)
+    ctx.metrics.update({k: outputs[k] for k in ("exe", "tc_max", "tc_avg", "tc_avg_moved", "gcr")})
+    ctx.log(f"executed {outputs['executed']}/{len(schedule.get('subtasks', []))}, goal met: {outputs['goal_met']}"
+            f" (GCR {outputs['gcr']:.2f})")
+    return outputs
+
+
+@step("score",
+      doc="Score a run against its task in the world's task domain: success, GCR, Exe, RU, TC-max, TC-avg "
+          "(all robots and the robots that moved), violations; flat, the same keys in every domain.",
+      outputs=dict(SCORE_CORE))
+def score(
+    ctx: StepContext,
+    world: Annotated[dict, Doc("the world (output of world.load)")],
+    goal: Annotated[dict, Doc("the task's ground-truth goal")],
+    constraints: Annotated[list | None, Doc("the task's ground-truth robot rules")] = None,
+    graph: Annotated[dict | None, Doc("dependency graph (fields and skills per subtask)")] = None,
+    schedule: Annotated[dict | None, Doc("the schedule that was simulated")] = None,
+    simulation: Annotated[dict | None, Doc("outputs of simulate")] = None,
+    feasible: Annotated[bool, Doc("false: only a refusal with nothing executed succeeds")] = True,
+    refusal: Annotated[str | None, Doc("refusal message, when the pipeline refused")] = None,
+) -> dict:
+    result = task_domain(world).score(world, goal, constraints=constraints or [], feasible=feasible, graph=graph,
+                                      schedule=schedule, simulation=simulation, refusal=refusal)
+    for v in result["violations"]:
+        ctx.log(f"violation: {v}")
+    ctx.metrics.update({k: result[k] for k in ("success", "gcr", "exe", "ru", "tc_max", "tc_avg", "tc_avg_moved")})
+    return result

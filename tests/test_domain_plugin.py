@@ -1,6 +1,7 @@
 """A third task domain as an installed plugin (issue 14): the garden package of tests/plugins is
 pip-installed into a private folder and found by pipflow only through its entry points
-(``pipflow.task_domains`` and ``pipflow.steps``). ``pipflow run`` of the workflow it ships and
+(``pipflow.task_domains``; it has no step of its own: pipflow's generic steps, ``simulate``
+included, reach it through the protocol). ``pipflow run`` of the workflow it ships and
 ``pipflow bench`` of its task file run end to end in a fresh process; without the plugin the
 domain is unknown. The in-process tests check the package's parts (world checks, the command
 reader's refusals, the simulator) through the installed copy."""
@@ -81,8 +82,9 @@ def test_workflow_runs_end_to_end_and_meets_the_goal(garden_plugin_site, tmp_pat
         if action == "harvest":
             assert sorted(by_action[sid]) == ["picker1", "picker2"]
     # the garden's simulator executed everything, met the goal and measured travel from the paths
-    sim = out["simulation"]
+    sim = out["simulation"]  # pipflow's generic step: the simulation core, the garden's own under details
     assert sim["executed"] == 3 and sim["failures"] == [] and sim["goal_met"] is True
+    assert sim["details"]["conditions"] == {"met": 3, "total": 3, "unmet": []}
     assert sim["final_state"]["stored"]["shed"]["pumpkin"] == 2 and sim["final_state"]["ripe"]["south"]["pumpkin"] == 0
     assert "south" not in sim["final_state"]["overgrown"]
     assert sim["travel"]["mule"] == 0 and sim["travel"]["picker1"] > 5
@@ -135,7 +137,8 @@ def test_without_the_plugin_the_domain_is_unknown(tmp_path):
     assert "Traceback" not in proc.stderr
     proc = pipflow(tmp_path / "empty", tmp_path, "run", str(PACKAGE / "pipflow_garden" / "workflows" / "garden.yaml"),
                    "--runs-dir", "runs")
-    assert proc.returncode == 2 and "unknown step 'garden.simulate'" in proc.stderr
+    assert proc.returncode == 2 and "unknown task domain 'garden'" in proc.stderr, proc.stderr
+    assert "Traceback" not in proc.stderr
     world = tmp_path / "world.yaml"
     shutil.copy(PACKAGE / "pipflow_garden" / "data" / "world.yaml", world)
     proc = pipflow(tmp_path / "empty", tmp_path, "run", "warehouse", "-i", f"world={world}", "--runs-dir", "runs")
@@ -157,8 +160,8 @@ def test_the_registry_finds_the_domain_through_its_entry_point(garden_plugin_sit
     workflow = garden_plugin_site / "pipflow_garden" / "workflows" / "garden.yaml"
     proc = pipflow(garden_plugin_site, tmp_path, "validate", str(workflow))
     assert proc.returncode == 0 and "garden.yaml: ok" in proc.stdout, proc.stderr
-    proc = pipflow(garden_plugin_site, tmp_path, "steps", "garden.simulate")
-    assert proc.returncode == 0 and "from pipflow-garden:garden" in proc.stdout, proc.stderr
+    proc = pipflow(garden_plugin_site, tmp_path, "steps")
+    assert proc.returncode == 0 and "pipflow-garden" not in proc.stdout + proc.stderr, proc.stdout  # no step of its own
 
 
 # ---------------------------------------------------------------------------------- the parts
@@ -270,6 +273,18 @@ def test_the_simulator_refuses_what_the_garden_cannot_do(garden):
     assert out["jumps"]["shears"][0]["subtask"] == "s2"  # it started at [11, 6], not [0.5, 0.5]
     assert out["executed"] == 0 and out["goal_met"] is False and out["conditions"]["unmet"]
     assert out["final_state"]["ripe"]["south"]["pumpkin"] == 2  # nothing changed
+    # the protocol's one shape: pipflow's generic steps simulate and score take the garden's result
+    from pipflow.taskdomain import SCORE_CORE, SIMULATION_CORE, simulation_outputs
+
+    from pipflow_garden.domain import GardenDomain
+
+    generic = simulation_outputs(out)
+    assert set(SIMULATION_CORE) <= set(generic) and set(generic["details"]) == {"conditions"}
+    scored = GardenDomain().score(world, {"stored": {"shed": {"pumpkin": 1}}}, graph=graph, schedule=schedule,
+                                  simulation=generic)
+    assert set(scored) == set(SCORE_CORE) and not scored["success"]
+    assert scored == GardenDomain().score(world, {"stored": {"shed": {"pumpkin": 1}}}, graph=graph,
+                                          schedule=schedule, simulation=out)  # the flat form scores the same
 
 
 def test_a_problem_is_read_back_and_checked_against_the_garden(garden, garden_plugin_site):

@@ -115,3 +115,86 @@ def test_household_scores_travel_over_the_robots_that_moved():
            "travel": {robots[0]: 6.0, robots[1]: 0.0, robots[2]: 0.0}}
     score = score_run(home, {"in": {}, "state": {}}, schedule={"subtasks": [{"id": "s1"}]}, simulation=sim)
     assert score["tc_avg"] == 2.0 and score["tc_avg_moved"] == 6.0
+
+
+# ------------------------------------------------------------------ simulate and score: one shape
+def _run_generic_steps(tmp_path: Path, world: dict, schedule: dict, graph: dict | None, goal: dict) -> tuple[dict, dict]:
+    """The generic steps ``simulate`` and ``score`` called as the engine calls them (their
+    declared outputs checked like the engine does)."""
+    from pipflow.engine.step import check_outputs
+    from pipflow.steps.world import score, simulate
+
+    ctx = StepContext("simulate", tmp_path / "simulate", base_dir=REPO)
+    sim = simulate.func(ctx, world=world, schedule=schedule, graph=graph, goal=goal)
+    check_outputs(simulate, sim, "simulate")
+    scored = score.func(StepContext("score", tmp_path / "score", base_dir=REPO), world=world, goal=goal,
+                        graph=graph, schedule=schedule, simulation=sim)
+    check_outputs(score, scored, "score")
+    return sim, scored
+
+
+def test_the_generic_steps_declare_the_protocols_core():
+    from pipflow.steps.world import score, simulate
+    from pipflow.taskdomain import SCORE_CORE, SIMULATION_CORE
+
+    assert set(SIMULATION_CORE) <= set(simulate.outputs) and set(simulate.outputs) - set(SIMULATION_CORE) == {
+        "pictures", "details"}
+    assert simulate.outputs["final_state"] == "object" and simulate.outputs["tc_avg_moved"] == "number"
+    assert score.outputs == SCORE_CORE
+
+
+def test_warehouse_simulation_through_the_generic_steps(tmp_path):
+    """A real pybullet run of task wh-01 (2 product1 shelf1 -> shelf3 by robot5): the core keys,
+    the final stock as ``final_state``, the warehouse's own measures under ``details``, the
+    trajectories as an artifact; the score reads the generic shape as it reads simulate.pybullet's."""
+    import json
+
+    from pipflow.taskdomain import SCORE_CORE, SIMULATION_CORE
+    from pipflow.warehouse.scoring import score_run
+    from pipflow.warehouse.simulation import simulate as pybullet_run
+    from sim_fixtures import load_world, wh01
+
+    world = load_world()
+    graph, schedule = wh01()
+    goal = {"shelf3": {"product1": 7}}
+    sim, scored = _run_generic_steps(tmp_path, world, schedule, graph, goal)
+    assert set(SIMULATION_CORE) <= set(sim)
+    assert sim["final_state"]["shelf3"]["product1"] == 7 and sim["goal_met"] and sim["executed"] == 1
+    assert sim["tc_max"] == pytest.approx(28.0) and sim["tc_avg_moved"] == pytest.approx(28.0, abs=1e-3)
+    assert set(sim["details"]) == {"peak_load", "stray_units"} and sim["details"]["peak_load"]["shelf3"] == 18
+    assert sim["pictures"] == []  # nothing drawn unless asked
+    saved = json.loads((tmp_path / "simulate" / "trajectories.json").read_text())
+    assert set(saved) == {"trajectories", "events"} and saved["trajectories"]["robot5"]
+    assert set(scored) == set(SCORE_CORE) and scored["success"] and scored["violations"] == []
+    # the domain step's flat shape (final_stock) scores the same
+    flat = pybullet_run(world, schedule, graph, goal)
+    assert score_run(world, goal, graph=graph, schedule=schedule, simulation=flat) == scored
+
+
+def test_household_simulation_through_the_generic_steps(tmp_path):
+    """A household world with nothing to do: the core keys, the home's state as ``final_state``,
+    the goal conditions under ``details``; scored like household.score."""
+    from pipflow.household.scoring import score_run
+    from pipflow.taskdomain import SCORE_CORE, SIMULATION_CORE
+
+    world = domain_named("household").load_world(HOUSEHOLD_WORLD)
+    assert world["objects"]["apple"]["in"] == "countertop"
+    goal = {"in": {"countertop": ["apple"], "fridge": ["tomato"]}}  # one condition holds already
+    schedule = {"subtasks": [], "robots": {}, "makespan": 0.0}
+    sim, scored = _run_generic_steps(tmp_path, world, schedule, None, goal)
+    assert set(SIMULATION_CORE) <= set(sim) and sim["executed"] == 0 and sim["tc_avg_moved"] == 0.0
+    assert sim["details"]["conditions"]["met"] == 1 and sim["details"]["conditions"]["total"] == 2
+    assert sim["gcr"] == 0.5 and not sim["goal_met"] and sim["final_state"]
+    assert not scored["success"] and scored["gcr"] == 0.5
+    assert set(scored) == set(SCORE_CORE)
+    assert scored == score_run(world, goal, schedule=schedule, simulation=domain_named("household").simulate(
+        world, schedule, None, goal, log=lambda m: None))
+
+
+def test_a_domain_result_without_the_core_is_named():
+    from pipflow.taskdomain import simulation_outputs
+
+    with pytest.raises(TypeError, match="lacks final_state, tc_avg_moved"):
+        simulation_outputs({"executed": 1, "failed": 0, "failures": [], "exe": 1.0, "travel": {}, "tc_max": 0.0,
+                            "tc_avg": 0.0, "goal_met": True, "gcr": 1.0, "jumps": {}, "makespan": 0.0,
+                            "final_stock": {}})

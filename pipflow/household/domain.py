@@ -19,7 +19,7 @@ from typing import Any, Callable, Mapping
 from pipflow.household import world as worlds
 from pipflow.language.offline import NO_USAGE
 from pipflow.resources import data_file
-from pipflow.taskdomain import GoalCheck, Save, TaskDomain, pddl_domain_name
+from pipflow.taskdomain import GoalCheck, Save, TaskDomain, flat_simulation, pddl_domain_name
 
 #: the fields a household rule may narrow by (domains/household.actions.yaml ``fields``)
 RULE_FIELDS = ("object", "from", "to", "at")
@@ -121,7 +121,9 @@ class HouseholdDomain(TaskDomain):
 
     def simulate(self, world: dict, schedule: dict, graph: dict | None, goal: Any, *,
                  snapshots: bool = False, out_dir: Path | None = None,
-                 log: Callable[[str], None] = print, **options: Any) -> dict:
+                 log: Callable[[str], None] = print, save: Save | None = None, **options: Any) -> dict:
+        """The home simulator's result (``final_state``: where each object is and its states),
+        plus ``conditions`` (goal conditions met / total / unmet)."""
         from pipflow.household.simulation import simulate  # pybullet: deferred
 
         return simulate(world, schedule, graph, goal, snapshots=snapshots, out_dir=out_dir, log=log)
@@ -133,7 +135,7 @@ class HouseholdDomain(TaskDomain):
         from pipflow.household.scoring import score_run
 
         return score_run(world, goal, feasible=feasible, graph=graph, schedule=schedule,
-                         simulation=simulation, refusal=refusal, error=error)
+                         simulation=flat_simulation(simulation), refusal=refusal, error=error)
 
     def load_tasks(self, path: Path) -> dict:
         from pipflow.household.scoring import load_tasks
@@ -144,7 +146,8 @@ class HouseholdDomain(TaskDomain):
                         error: str | None) -> dict:
         from pipflow.household.scoring import score_bench_run
 
-        return score_bench_run(world_path, task, outputs, refusal, error)
+        return score_bench_run(world_path, task, {**outputs, "simulation": flat_simulation(outputs.get("simulation"))},
+                               refusal, error)
 
     def understand(self, task: dict, outputs: dict, status: str, error_kind: str | None) -> dict | None:
         from pipflow.household.scoring import understanding

@@ -190,11 +190,13 @@ def simulate(world: dict, schedule: dict, graph: dict | None, goal: dict | None 
     travel = {r: round(sum(seg[3][-1] for seg in tr.segments) + sum(j["metres"] for j in tr.jumps), 6)
               for r, tr in traj.items() if r in world["robots"]}
     dists = list(travel.values())
+    moved = [d for d in dists if d > 1e-9]
     met, total, unmet = check_conditions(world, final, goal or {})
     return {
         "final_state": final, "executed": executed, "failed": len(failures), "failures": failures,
         "exe": executed / planned if planned else 1.0, "travel": travel,
         "tc_max": max(dists, default=0.0), "tc_avg": sum(dists) / len(dists) if dists else 0.0,
+        "tc_avg_moved": round(sum(moved) / len(moved), 4) if moved else 0.0,  # over the robots that moved
         "goal_met": met == total, "gcr": met / total if total else 1.0,
         "conditions": {"met": met, "total": total, "unmet": unmet},
         "jumps": {r: tr.jumps for r, tr in traj.items() if tr.jumps},

@@ -20,7 +20,7 @@ from pipflow.language.offline import NO_USAGE
 from pipflow.language.parsing import FIELD_KEYS
 from pipflow.resources import data_file
 from pipflow.warehouse.starts import vary_starts
-from pipflow.taskdomain import GoalCheck, Grounding, Save, TaskDomain
+from pipflow.taskdomain import GoalCheck, Grounding, Save, TaskDomain, flat_simulation
 from pipflow.warehouse import world as worlds
 
 
@@ -125,19 +125,36 @@ class WarehouseDomain(TaskDomain):
 
     def simulate(self, world: dict, schedule: dict, graph: dict | None, goal: Any, *,
                  snapshots: bool = False, out_dir: Path | None = None,
-                 log: Callable[[str], None] = print, **options: Any) -> dict:
+                 log: Callable[[str], None] = print, save: Save | None = None, **options: Any) -> dict:
+        """The pybullet run in the protocol's shape: the final stock is ``final_state``; the
+        trajectories and event log (bulky) go to ``save("trajectories.json")`` when given (the
+        report draws from it). Pictures go into ``out_dir`` only when asked: ``snapshots`` (key
+        moments and the path map), ``options``: ``picture`` (the path map alone), ``animation``
+        (a GIF, needs Pillow)."""
         from pipflow.warehouse.simulation import simulate  # pictures and pybullet: deferred
 
-        return simulate(world, schedule, graph, goal, snapshots=snapshots, out_dir=out_dir, log=log, **options)
+        animation = bool(options.get("animation"))
+        drawn = snapshots or animation or bool(options.get("picture"))
+        result = simulate(world, schedule, graph, goal, snapshots=snapshots, out_dir=out_dir if drawn else None,
+                          log=log, animation=animation)
+        result.pop("animation_skipped", None)
+        result["final_state"] = result.pop("final_stock")
+        if save is not None:
+            save("trajectories.json", {"trajectories": result.pop("trajectories"), "events": result.pop("events")})
+        return result
 
     def score(self, world: dict, goal: Any, *, constraints: list[dict] | None = None,
               feasible: bool = True, graph: dict | None = None, schedule: dict | None = None,
               simulation: dict | None = None, refusal: str | None = None,
               error: str | None = None) -> dict:
+        """``simulation``: the generic step's outputs or ``simulate.pybullet``'s (``final_stock``)."""
         from pipflow.warehouse.scoring import score_run
 
+        sim = flat_simulation(simulation)
+        if sim is not None and "final_stock" not in sim and "final_state" in sim:
+            sim["final_stock"] = sim["final_state"]
         return score_run(world, goal, constraints=constraints or [], feasible=feasible, graph=graph,
-                         schedule=schedule, simulation=simulation, refusal=refusal, error=error)
+                         schedule=schedule, simulation=sim, refusal=refusal, error=error)
 
     def load_tasks(self, path: Path) -> dict:
         return worlds.load_tasks(path)

@@ -10,7 +10,7 @@ from pathlib import Path
 from typing import Any, Callable, Mapping
 
 from pipflow.language.offline import NO_USAGE  # the usage record of a reading that called no model
-from pipflow.taskdomain import GoalCheck, TaskDomain, pddl_domain_name
+from pipflow.taskdomain import GoalCheck, Save, TaskDomain, flat_simulation, pddl_domain_name
 
 from pipflow_garden import checks, language, problem, scoring, simulation, world as worlds
 
@@ -84,7 +84,9 @@ class GardenDomain(TaskDomain):
 
     def simulate(self, world: dict, schedule: dict, graph: dict | None, goal: Any, *,
                  snapshots: bool = False, out_dir: Path | None = None,
-                 log: Callable[[str], None] = print, **options: Any) -> dict:
+                 log: Callable[[str], None] = print, save: Save | None = None, **options: Any) -> dict:
+        """The kinematic replay (it draws no pictures and keeps no records): pipflow's generic
+        step ``simulate`` runs it, so the garden needs no step of its own."""
         return simulation.simulate(world, schedule, graph, goal, log=log)
 
     def score(self, world: dict, goal: Any, *, constraints: list[dict] | None = None,
@@ -92,7 +94,8 @@ class GardenDomain(TaskDomain):
               simulation: dict | None = None, refusal: str | None = None,
               error: str | None = None) -> dict:
         return scoring.score_run(world, goal, constraints=constraints, feasible=feasible, graph=graph,
-                                 schedule=schedule, simulation=simulation, refusal=refusal, error=error)
+                                 schedule=schedule, simulation=flat_simulation(simulation), refusal=refusal,
+                                 error=error)
 
     def load_tasks(self, path: Path) -> dict:
         return scoring.load_tasks(path, self.workflow)
