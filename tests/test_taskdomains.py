@@ -198,3 +198,17 @@ def test_a_domain_result_without_the_core_is_named():
         simulation_outputs({"executed": 1, "failed": 0, "failures": [], "exe": 1.0, "travel": {}, "tc_max": 0.0,
                             "tc_avg": 0.0, "goal_met": True, "gcr": 1.0, "jumps": {}, "makespan": 0.0,
                             "final_stock": {}})
+
+
+def test_goal_atoms_tells_an_empty_goal_from_a_nested_one():
+    """The shared UP helper the household domain and the garden plugin both use: an empty
+    ``(and)`` states nothing; nested ``and``s are opened, in the order written."""
+    from pipflow.pddl.common import goal_atoms, parse
+
+    domain = domain_named("household")
+    world = domain.load_world(HOUSEHOLD_WORLD)
+    empty = domain.write_problem(world, {}, "household")
+    assert goal_atoms(parse(domain.pddl_domain(), empty)) == []
+    nested = empty.replace("(:goal (and", "(:goal (and (and (is-open fridge)) (and (and (is-on floorlamp)))", 1)
+    assert [str(g) for g in goal_atoms(parse(domain.pddl_domain(), nested))] == [
+        "is-open(fridge)", "is-on(floorlamp)"]

@@ -18,6 +18,7 @@ from typing import Any, Callable, Mapping
 
 from pipflow.household import world as worlds
 from pipflow.language.offline import NO_USAGE
+from pipflow.pddl.common import goal_atoms
 from pipflow.resources import data_file
 from pipflow.taskdomain import GoalCheck, Save, TaskDomain, flat_simulation, pddl_domain_name
 
@@ -25,18 +26,6 @@ from pipflow.taskdomain import GoalCheck, Save, TaskDomain, flat_simulation, pdd
 RULE_FIELDS = ("object", "from", "to", "at")
 #: where the example problem of a household prompt leaves room for the goal
 GOAL_PLACEHOLDER = "; the goal conditions of the command go here"
-
-
-def goal_atoms(parsed: Any) -> list:
-    """A UP problem's goal conditions with every ``and`` flattened (an empty ``(and)`` has none)."""
-    out, stack = [], list(parsed.goals)
-    while stack:
-        g = stack.pop()
-        if g.is_and():
-            stack += list(g.args)
-        elif not (g.is_bool_constant() and g.bool_constant_value()):
-            out.append(g)
-    return out
 
 
 class HouseholdDomain(TaskDomain):

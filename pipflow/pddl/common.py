@@ -118,6 +118,13 @@ def goal_conditions(problem: Any) -> list[Any]:
     return out
 
 
+def goal_atoms(problem: Any) -> list[Any]:
+    """The conditions a problem's goal states: :func:`goal_conditions` without the constant
+    ``true`` an empty ``(and)`` parses to. A domain's reader uses it to tell a goal that asks for
+    nothing (a model that copied its example unchanged) from one that asks for something."""
+    return [g for g in goal_conditions(problem) if not (g.is_bool_constant() and g.bool_constant_value())]
+
+
 def stock_goals(problem: Any) -> tuple[dict[str, dict[str, Any]], list[str]]:
     """The goal's stock conditions as ``{shelf: {product: value}}``, plus a list of goal
     conditions of any other form (as text) that pipflow's goal checks do not understand.

@@ -12,6 +12,8 @@ from __future__ import annotations
 from fractions import Fraction
 from typing import Any
 
+from pipflow.pddl.common import goal_atoms
+
 from pipflow_garden.problem import initial_facts
 from pipflow_garden.world import ripe_total
 
@@ -27,18 +29,6 @@ def _fluent(node: Any) -> tuple[str, tuple[str, ...]] | None:
     if node.is_fluent_exp():
         return node.fluent().name, tuple(a.object().name for a in node.args)
     return None
-
-
-def goal_atoms(parsed: Any) -> list:
-    """The goal's conditions with every ``and`` flattened (an empty ``(and)`` has none)."""
-    out, stack = [], list(parsed.goals)
-    while stack:
-        g = stack.pop()
-        if g.is_and():
-            stack += list(g.args)
-        elif not (g.is_bool_constant() and g.bool_constant_value()):
-            out.append(g)
-    return out
 
 
 def goal_from_problem(parsed: Any) -> tuple[dict, list[str]]:

@@ -10,6 +10,7 @@ from pathlib import Path
 from typing import Any, Callable, Mapping
 
 from pipflow.language.offline import NO_USAGE  # the usage record of a reading that called no model
+from pipflow.pddl.common import goal_atoms
 from pipflow.taskdomain import GoalCheck, Save, TaskDomain, flat_simulation, pddl_domain_name
 
 from pipflow_garden import checks, language, problem, scoring, simulation, world as worlds
@@ -66,7 +67,7 @@ class GardenDomain(TaskDomain):
     def read_problem(self, parsed: Any, world: dict, constraints: list[dict]) -> dict:
         """A model's goal read back; a goal that states nothing, or a condition the garden's goal
         form cannot hold, is feedback (never dropped)."""
-        if not checks.goal_atoms(parsed):
+        if not goal_atoms(parsed):
             return {"errors": ["the problem's (:goal ...) states no condition: write the conditions the command "
                                "asks for, e.g. (watered north) or (>= (stored shed tomato) 3)"]}
         goal, unread = checks.goal_from_problem(parsed)
