@@ -16,7 +16,8 @@ from pipflow.errors import Refusal, TranslationError
 ROOT = Path(__file__).resolve().parent.parent
 WORLD = ROOT / "benchmarks" / "household" / "world.yaml"
 LANGUAGE = ROOT / "benchmarks" / "language"
-SETS = [LANGUAGE / "household.yaml", LANGUAGE / "household-studio.yaml", LANGUAGE / "household-fresh.yaml"]
+SETS = [LANGUAGE / "household.yaml", LANGUAGE / "household-studio.yaml", LANGUAGE / "household-fresh.yaml",
+        LANGUAGE / "household-fresh2.yaml"]
 
 
 @pytest.fixture(scope="module")
@@ -303,6 +304,7 @@ categories:
   crocks: {words: [crocks, crockery], home: dresser}
   lamps: {words: [lamp, lamps, light, lights]}
   snacks: {words: [snack, snacks]}
+  orchard: {words: [fruit]}
 places:
   coolbox:   {x: 0.2, y: 4.0, width: 0.8, depth: 0.8, access: [0.6, 3.5], properties: [receptacle, openable], state: {open: false}}
   bench:     {x: 1.4, y: 4.2, width: 1.5, depth: 0.6, access: [2.1, 3.6], properties: [receptacle], words: [worktop]}
@@ -319,7 +321,7 @@ objects:
   beetroot: {in: bench, mass: 1, properties: [pickupable, sliceable, heatable]}
   sausage:  {in: coolbox, mass: 1, properties: [pickupable, heatable], categories: [snacks]}
   bagel:    {in: sideboard, mass: 1, properties: [pickupable, sliceable, heatable], categories: [snacks]}
-  kiwi:     {in: sideboard, mass: 1, properties: [pickupable, sliceable], categories: [snacks]}
+  kiwi:     {in: sideboard, mass: 1, properties: [pickupable, sliceable], categories: [snacks, orchard]}
   saucepan: {in: hob, mass: 1, properties: [pickupable, washable], state: {dirty: true}}
   tumbler:  {in: sideboard, mass: 1, properties: [pickupable, washable], state: {dirty: true}, categories: [crocks]}
   beaker:   {in: sideboard, mass: 1, properties: [pickupable, washable], categories: [crocks]}
@@ -420,6 +422,31 @@ def test_a_thing_heated_somewhere_then_moved_ends_where_it_is_moved(cottage):
         ({"sideboard": ["sausage"]}, {"sausage": ["hot"], "coolbox": ["closed"]}, [])
     with pytest.raises(TranslationError, match="both in"):
         goal_of("Put the bagel on the bench and put it on the sideboard.", cottage)
+
+
+def test_probe_b_causes(cottage):
+    """The second probe's causes, in general: an action noun ("give it a scrub"), "shut down", an
+    observation answered by the action on its thing, "'s" before a state word, "away in P", a
+    shared move ("out of P and onto Q"), "can go off", "let's", and pieces of a kind."""
+    assert goal_of("Give the tumbler a good scrub.", cottage) == ({}, {"tumbler": ["clean"]}, [])
+    with pytest.raises(Refusal, match="not washable"):
+        goal_of("Give the wireless a wash.", cottage)
+    assert goal_of("Shut down the tablet.", cottage) == ({}, {"tablet": ["off"]}, [])
+    assert goal_of("The saucepan's dirty, wash it.", cottage) == ({}, {"saucepan": ["clean"]}, [])
+    with pytest.raises(TranslationError, match="asks for nothing"):   # an observation nothing answers
+        goal_of("The wireless is on, put the almanac on the bench.", cottage)
+    assert goal_of("Put the almanac away in the dresser.", cottage) == ({"dresser": ["almanac"]}, {"dresser": ["closed"]}, [])
+    assert goal_of("Get the sausage out of the coolbox and onto the bench.", cottage) == \
+        ({"bench": ["sausage"]}, {"coolbox": ["closed"]}, [])
+    with pytest.raises(TranslationError, match="asks for nothing"):   # the tablet's state is not answered
+        goal_of("The tablet is on and the lantern can go off too.", cottage)
+    assert goal_of("The lantern can go off.", cottage) == ({}, {"lantern": ["off"]}, [])
+    assert goal_of("Let's turn off the tablet.", cottage) == ({}, {"tablet": ["off"]}, [])
+    assert goal_of("Put a piece of fruit in the basin.", cottage) == ({}, {}, [("orchard", "basin", 1)])
+    with pytest.raises(TranslationError, match="pieces of one thing"):
+        goal_of("Put a piece of bagel on the bench.", cottage)
+    with pytest.raises(TranslationError):   # a volume is no state of the home model
+        goal_of("Turn the wireless down.", cottage)
 
 
 # ------------------------------------------------------------------------------ property test

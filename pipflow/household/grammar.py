@@ -29,6 +29,7 @@ _sep: COMMA | END | @AND | @THEN | @BUT
 change: _vstate @UP? things @PIECES? via? exception? @HERE?
       | _vstate things @UP via? exception?
       | @V_CLEAN things via? exception?
+      | @V_GIVE things @ACT
 _vstate: @V_STATE | @V_OPEN | @V_SHUT | @V_WARM
 via: (@IN | @ON | @WITH | @AT) (place | placeref)
 
@@ -37,6 +38,7 @@ toggle: @V_TOGGLE onoff tthings @HERE?
       | @V_SHUT off tthings
       | @V_SHUT tthings off
       | @V_TOGGLE typo_off tthings
+      | @V_SHUTDOWN tthings
 typo_off: @OF
 tthings: tnp ((COMMA | @AND | COMMA @AND) tnp)*
 tnp: sel where? exception?
@@ -47,6 +49,9 @@ off: @OFF | @OUT
 put: _vput @UP? things source? target? exception?
    | _vput @UP? things target source
    | _vput @OUT things | _vput things @OUT
+   | _vput @UP? things source @AND target
+   | _vput things @AWAY target
+   | _vput @AWAY things target
    | @V_LEAVE things target
 _vput: @V_PUT | @V_THROW
 source: @FROM place | @OUT @OF? place | @OFF @OF? place
@@ -70,7 +75,7 @@ trash: @V_TRASH things | @V_THROW @AWAY things | @V_THROW things @AWAY | @V_THRO
 request: @V_LEAVE things state
        | @V_MAKE things state
        | @SUBJ? (@WANT | @NEED) things (@TO @BE)? state
-       | things @SHOULD @BE? state
+       | things @SHOULD @BE? state @TOO?
        | things @NEED state
 unwant: @DONOT @V_LEAVE things state
       | things @SHOULD @NOT @BE? state
@@ -107,7 +112,7 @@ sel: quant? @OF? @THE? count? adj* noun @DOOR? rel?
    | @THE adj+ @ONES
    | @THE @DOOR
 quant: @ALL | @EVERY | @BOTH
-count: NUM @OF?
+count: NUM @OF? | NUM @UNIT
 adj: @ADJ | @V_CLEAN | @V_WARM | @V_OPEN | @V_SHUT
 rel: @THAT @IS state | @THAT @IS where | @FROM place
 where: (@IN | @ON) place

@@ -65,6 +65,17 @@ _add("V_TOGGLE", "turn,switch,power,flip,flick")
 COLD = "cold"
 _add("V_CHILL", "chill,cool,refrigerate,cool down,chill down")
 _add("TOGGLED", "turned,switched,powered")
+#: verbs that mean "off" by themselves ("shut down the tablet"); "turn down" is a volume, not here
+_add("V_SHUTDOWN", "shut down,power down", "off")
+#: "give the pot a scrub": the noun of an action that cleans (value: the condition)
+_add("V_GIVE", "give")
+_add("ACT", "a scrub,a wash,a rinse,a wipe,a clean,a good scrub,a good wash,a good clean,a quick rinse,"
+     "a quick wash,a quick wipe,a wipe down,a proper clean", "clean")
+#: "a piece of fruit": a kind counted in pieces (only a category may be; "a piece of bread" is no
+#: thing of the home model and is refused)
+_add("UNIT", "pieces of,bits of,items of")
+#: "a piece of fruit" is a determiner of one (a unit word in the determiner keeps the grammar small)
+UNIT_DETERMINERS = {"a piece of", "a bit of", "an item of"}
 _add("V_PUT", "put,place,move,bring,take,carry,set,transfer,gather,collect,stash,drop,store,stick,pop,lay,"
      "hang,deliver,fetch,get,pick,relocate,stack,grab,shift")
 _add("V_THROW", "throw,toss,chuck")
@@ -81,6 +92,7 @@ for _w in LIGHT_CUES:
     PHRASES[(_w,)] = ("LIGHTCUE", LIGHT_CUES[_w])
 _add("SEE", "see")
 _add("THE", "the,a,an,my,our,your,its,their,his,her,these,those,this,some")
+_add("THE", "a piece of,a bit of,an item of")
 _add("THAT", "that,which,who")
 _add("ALL", "all")
 _add("EVERY", "every,each,any")
@@ -110,8 +122,8 @@ _add("IT", "it,them,they")
 _add("EXCEPT", "except,except for,apart from,other than,besides,excluding,but not")
 _add("NOT", "not")
 _add("IS", "is,are,am,is still,are still")
-_add("BE", "be,stay,remain,stays,remains")
-_add("SHOULD", "should,must,has to,have to,needs to,need to,ought to,got to")
+_add("BE", "be,stay,remain,stays,remains,go")
+_add("SHOULD", "should,must,has to,have to,needs to,need to,ought to,got to,can")
 _add("SUBJ", "i,we,you")
 _add("WANT", "want,would like,like,wish,d like,prefer")
 _add("NEED", "need,needs")
@@ -165,7 +177,7 @@ MASS_NOUNS = {"fruit", "food", "bedding", "cutlery", "stationery", "lighting", "
               "silverware", "crockery", "groceries", "trash", "garbage", "stuff", "material", "gear", "kit",
               "junk", "mail", "post", "paperwork", "luggage", "baggage", "washing", "shopping"}
 #: determiners that ask for one thing of a kind
-INDEFINITE = {"a", "an"}
+INDEFINITE = {"a", "an", "a piece of", "a bit of", "an item of"}
 
 #: politeness and framing words that carry no content; dropped before parsing (listed in docs)
 FILLER = {("please",), ("kindly",), ("just",), ("quickly",), ("now",), ("for", "me"), ("for", "us"), ("could", "you"),
@@ -206,6 +218,10 @@ for (_k, (_c, _v)) in list(PHRASES.items()):
             PHRASES[_g] = (_c, _v)
 
 
+#: the words that name a state, after which "'s" is "is" (normalize)
+_STATE_WORDS = sorted({w for w in ADJECTIVES} | {"on", "off"}, key=len, reverse=True)
+
+
 def normalize(text: str) -> str:
     """Lower case, contractions spelt out ("don't" -> "do not"), hyphens and underscores as
     spaces, so that "desk-lamp", "desk_lamp" and "desk lamp" read alike."""
@@ -215,6 +231,9 @@ def normalize(text: str) -> str:
     t = re.sub(r"\bcan't\b|\bcannot\b", "can not", t)
     t = re.sub(r"\bwon't\b", "will not", t)
     t = re.sub(r"\b(it|that|there|what|who)'s\b", r"\1 is", t)
+    t = re.sub(r"\blet's\b", "let us", t)
+    # "the oven's open", "the TV's still on": 's before a state word is "is", not a possessive
+    t = re.sub(r"'s(?=\s+(?:still\s+|not\s+|too\s+|very\s+|so\s+)?(?:" + "|".join(_STATE_WORDS) + r")\b)", " is", t)
     t = re.sub(r"\b(i|we|you)'d\b", r"\1 would", t)
     t = re.sub(r"\b(we|you|they)'re\b", r"\1 are", t)
     t = re.sub(r"\bi'm\b", "i am", t)

@@ -29,7 +29,7 @@ from lark.visitors import CollapseAmbiguities
 from pipflow.errors import TranslationError
 from pipflow.household.grammar import NOUN_DUAL, grammar_text
 from pipflow.household.lexicon import (ACTIVITIES, COLD, FILLER, FILLER_TYPO_TARGETS, LIGHT_CATEGORY_WORD, MEALS,
-                                       OPPOSITE, PHRASES, plurals, words_of)
+                                       OPPOSITE, PHRASES, UNIT_DETERMINERS, plurals, words_of)
 from pipflow.language.names import distance
 from pipflow.language.numbers import read_number
 
@@ -318,6 +318,11 @@ class Builder:
                 out["both"] = True
         if "DOOR" in toks:
             out["door"] = True
+        count_node = self._sub(node, "count")
+        det_words = [self.tag_of(t).words for t in self._tokens(node) if self._cls(t) == "THE"]
+        if (count_node is not None and self._has(count_node, "UNIT")) or \
+                any(d in UNIT_DETERMINERS for d in det_words):
+            out["unit"] = True   # "a piece of fruit", "two pieces of fruit": only a kind may be counted in pieces
         if "ONES" in toks:
             out["ones"] = True   # "except the clean ones": of the things just named
         if "EVERYTHING" in toks or "THING" in toks:
@@ -378,7 +383,10 @@ class Builder:
         things = self.things(th) if th is not None else []
         exc = self._sub(node, "exception")
         if kind == "change":
-            verb = next(t for t in self._tokens(node) if self._cls(t).startswith("V_"))
+            toks = self._tokens(node)
+            # the state comes from the verb, or from the action noun of "give the pot a scrub"
+            act = next((t for t in toks if self._cls(t) == "ACT"), None)
+            verb = act if act is not None else next(t for t in toks if self._cls(t).startswith("V_"))
             st = {"op": "change", "things": things, "to": str(self.tag_of(verb).value)}
             via = self._sub(node, "via")
             if via is not None and self._sub(via, "place") is not None:

@@ -127,6 +127,9 @@ class Resolver:
         statement will ask of them (a category keeps the members it applies to)."""
         names, implicit = self._candidates(sel, words)
         what = sel["words"]
+        if sel.get("unit") and not implicit:   # "a piece of bread": no piece is a thing of the home model
+            raise TranslationError(f"'{words}': '{what}': pieces of one thing are not things of this home; "
+                                   "name the thing")
         if implicit and sel.get("det") == "some" and "count" not in sel:
             raise TranslationError(f"'{words}': how many of '{sel['noun']['words'] if 'noun' in sel else what}'? "
                                    "('some' does not say; give a number, or 'all')")
@@ -342,6 +345,9 @@ class Resolver:
             self.history.append(self.before)
         self.last_any = []
         self._statement(st, op, words)
+        if op != "observe":   # "the oven is open, close it": the observation was the reason
+            acted = set(self.last) | set(self.last_any)
+            self.observed = [o for o in self.observed if not set(o[0]) <= acted]
         # a pronoun after this statement may mean its place ("... in the fridge, then close it")
         self.last_places = [self.place_of(st[k], words) for k in ("to", "via", "from") if isinstance(st.get(k), dict)]
 
