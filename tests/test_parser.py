@@ -565,6 +565,12 @@ def test_an_english_verb_is_never_taken_for_a_misspelt_robot_name() -> None:
     # a destination said once at the end belongs to both moves (it was a removal to anywhere)
     ("Move 2 batteries from the north yard and 1 from the wash bay to pit 2.",
      {"north yard": {"battery": 2}, "pit2": {"battery": 3}, "wash-bay": {"battery": 2}}, []),
+    # a part with no verb of its own shares the add verb before it (it was read as a final count)
+    ("Add 1 battery to pit 2, 2 to the wash bay and 1 to the tool crib.",
+     {"pit2": {"battery": 1}, "wash-bay": {"battery": 5}, "tool_crib": {"battery": 2}}, []),
+    # "give P N X" is read where a final count and a delivery agree, or with "exactly"
+    ("Give pit 2 two batteries.", {"pit2": {"battery": 2}}, []),
+    ("Give the wash bay exactly 2 batteries.", {"wash-bay": {"battery": 2}}, []),
     ("Pull 1 kc-90 from the north yard over to pit 2.", {"north yard": {"kc-90": 1}, "pit2": {"kc-90": 1}}, []),
     ("Move 2 batteries north yard to pit 2.", {"north yard": {"battery": 2}, "pit2": {"battery": 2}}, []),
     ("Add 1 brake pad each to the wash bay and pit 2.", {"wash-bay": {"brake_pad": 2}, "pit2": {"brake_pad": 1}}, []),
@@ -599,6 +605,7 @@ def test_idioms_bounds_and_corrections_of_staff_english(command: str, goal: dict
     ("The wash bay gets 2 batteries.", TranslationError, "ends with or the count it receives"),
     ("Pit 2 should get 2 batteries, and so should the wash bay.", TranslationError, "the count it receives"),
     ("Could the tool crib get 2 batteries?", TranslationError, "the count it receives"),
+    ("Give the wash bay 2 batteries.", TranslationError, "the count it receives"),
     ("Pit 2 gets 2 batteries. The north yard too.", TranslationError, "the count it receives"),
     # "the strongest robot" where two tie (stacker1, stacker2 carry 3): which one? not guessed
     ("The strongest robot must not carry batteries.", TranslationError, "2 robots tie"),

@@ -33,6 +33,8 @@ FILLERS = {"the", "please", "kindly", "units", "unit", "pieces", "piece", "boxes
 FILLERS |= {"carton", "cartons", "roll", "rolls", "pack", "packs", "packet", "packets", "bundle",
             "bundles", "bag", "bags", "tub", "tubs", "bottle", "bottles", "reel", "reels", "tote",
             "totes", "drum", "drums", "tin", "tins", "jar", "jars", "sack", "sacks", "crates"}
+#: fillers that make the count after them a final count
+EXACT_WORDS = {"exactly", "precisely"}
 #: chat spellings of keywords
 SPELLINGS = {"shud": "should", "shld": "should", "u": "you", "r": "are", "wont": "wont", "gonna": "will",
              "wanna": "want", "lemme": "let", "cuz": "because", "thru": "through", "frm": "from"}
@@ -55,6 +57,9 @@ class Lexed:
 
     tokens: list[Token]
     source: list[Tok]
+    #: positions of counts said with "exactly" / "precisely" (the word itself is a filler): a
+    #: final count, never a delivery ("Give each shelf exactly 3")
+    exact: frozenset[int] = frozenset()
 
 
 def check_text(command: str) -> str:
@@ -229,15 +234,21 @@ class Lexicon:
     def _terminals(self, toks: list[Tok]) -> Lexed:
         tokens: list[Token] = []
         source: list[Tok] = []
+        exact: set[int] = set()
+        said_exactly = False
         for t in toks:
             term = self._terminal(t)
             if term is None:
+                said_exactly = t.kind == "word" and str(t.value) in EXACT_WORDS
                 continue
+            if said_exactly and term[0] == "NUM":
+                exact.add(len(tokens))
+            said_exactly = False
             if term[0] == "POSS" and tokens and tokens[-1].type == "ROBOT" and "is" in self.keywords:
                 term = (self.keywords["is"], "is")  # "Jumbo's the only one ...": a robot's "'s" is "is"
             tokens.append(Token(term[0], term[1], start_pos=len(tokens)))
             source.append(t)
-        return Lexed(tokens, source)
+        return Lexed(tokens, source, frozenset(exact))
 
     def _terminal(self, t: Tok) -> tuple[str, object] | None:
         if t.kind == "num":

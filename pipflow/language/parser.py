@@ -42,7 +42,7 @@ BOUND_AMOUNTS = {"at_least", "at_most", "between", "at_least_more"}
 MOVE_VERBS = {"move", "bring", "send", "ship", "transfer", "carry", "haul", "shift", "cart", "ferry", "tow",
               "lug", "shuttle", "wheel", "run", "relocate", "deliver", "pull", "grab"}
 #: "P gets N X": a final count or a delivery; read only where both mean the same
-RECEIVE_VERBS = {"get", "gets", "receive", "receives"}
+RECEIVE_VERBS = {"get", "gets", "receive", "receives", "give"}
 
 
 @functools.lru_cache(maxsize=1)
@@ -413,7 +413,10 @@ class _Sentence:
             places, mode = self.loc(locs[0])
             if any(isinstance(c, Token) and str(c.value).lower() == "each" for c in node.children):
                 mode = "each"  # "Put 2 springs each on rack B and rack E"
-            self.put(places, mode, nps, words)
+            # "Add 2 lids to A, 1 to B": a part with no verb of its own shares the add verb before it
+            # (it was read as B's final count: a misreading)
+            bare = len(node.children) == 2 and kind == "g_set"
+            self.put(places, mode, nps, words, add=bare and self.last_add)
             if kind == "g_set_only":
                 self.statements.append({"op": "nothing_else", "places": {"names": places},
                                         "words": "nothing else"})
@@ -858,9 +861,12 @@ class _Sentence:
     def _receive_is_clear(self, node: Tree, places: list[str], nps: list[dict], words: str) -> None:
         """ "P gets / receives N X" is the count P ends with or the count delivered to it: the same
         when P holds no X now, else two goals; then nothing is guessed."""
-        verbs = [self.first_word(v) for v in self.sub(node, "setv")]
-        if not verbs or verbs[0] not in RECEIVE_VERBS:
+        verbs = [self.first_word(v) for v in self.sub(node, "setv")] or (
+            ["give"] if self.first_word(node) == "give" else [""])  # "give P N X"; "get P to N" is a count
+        if verbs[0] not in RECEIVE_VERBS:
             return
+        if any(t.start_pos in self.lexed.exact for t in self.toks(node, "NUM")):
+            return  # "exactly 3": a final count
         for np in nps:
             if set(np["amount"]) == {"count"}:
                 items = (np["items"] or {}).get("names") or list(self.last_item or [])
