@@ -212,3 +212,31 @@ def test_goal_atoms_tells_an_empty_goal_from_a_nested_one():
     nested = empty.replace("(:goal (and", "(:goal (and (and (is-open fridge)) (and (and (is-on floorlamp)))", 1)
     assert [str(g) for g in goal_atoms(parse(domain.pddl_domain(), nested))] == [
         "is-open(fridge)", "is-on(floorlamp)"]
+
+
+def test_seeded_starts_are_one_rule_for_every_domain():
+    """pipflow.floorplan.seeded_starts, which each domain's vary_starts calls with its footprints:
+    reproducible by seed and label, every start on the lattice, inside the margin, clear of the
+    grown footprints and access points and apart; a floor with no room left is a located error."""
+    import math
+
+    from pipflow.errors import WorldError
+    from pipflow.floorplan import seeded_starts
+
+    box = {"x": 4.0, "y": 4.0, "width": 2.0, "depth": 2.0, "access": [5.0, 3.5]}
+    world = {"path": "tiny.yaml", "floor": {"width": 10, "height": 8},
+             "robots": {f"r{i}": {"start": [0.0, 0.0]} for i in range(6)}}
+    kw = dict(label="t", clearance=0.5, spacing=1.0, margin=1.0)
+    a = seeded_starts(world, 3, [box], **kw)
+    assert a == seeded_starts(world, 3, [box], **kw) and world["robots"]["r0"]["start"] == [0.0, 0.0]
+    assert a != seeded_starts(world, 4, [box], **kw) and a != seeded_starts(world, 3, [box], **{**kw, "label": "u"})
+    assert seeded_starts(world, None, [box], **kw) is world
+    starts = [tuple(r["start"]) for r in a["robots"].values()]
+    for x, y in starts:
+        assert x * 2 == int(x * 2) and y * 2 == int(y * 2) and 1.0 <= x <= 9.0 and 1.0 <= y <= 7.0
+        assert not (3.5 <= x <= 6.5 and 3.5 <= y <= 6.5) and math.dist((x, y), box["access"]) >= 1.0
+    assert all(math.dist(p, q) >= 1.0 for i, p in enumerate(starts) for q in starts[i + 1:])
+    crowded = {**world, "floor": {"width": 3, "height": 3}}
+    with pytest.raises(WorldError) as err:
+        seeded_starts(crowded, 1, [], **kw)
+    assert "tiny.yaml" in str(err.value) and "no free start left on the floor for robot" in str(err.value)

@@ -18,13 +18,11 @@ scheduling and travel work unchanged on the floor plan.
 from __future__ import annotations
 
 import copy
-import math
-import random
 from pathlib import Path
 from typing import Any
 
-from pipflow.errors import Diagnostic, InputError, Location, WorldError
-from pipflow.floorplan import inside_footprint, layout_diagnostics, on_floor
+from pipflow.errors import Diagnostic, InputError
+from pipflow.floorplan import inside_footprint, layout_diagnostics, on_floor, seeded_starts
 from pipflow.suggest import did_you_mean
 from pipflow.worldfile import Locate, checked_yaml, is_point, read_world_file
 
@@ -206,32 +204,11 @@ def select_team(world: dict, team: str | list | None) -> dict:
 
 
 def vary_starts(world: dict, seed: int | None, clearance: float = 0.4, spacing: float = 0.8) -> dict:
-    """Seeded random free start points (clear of footprints and access points); None = unchanged."""
-    if seed is None:
-        return world
-    rng = random.Random(f"pipflow-household-starts-{seed}")
-    w, h = world["floor"]["width"], world["floor"]["height"]
-    grid = [(i * 0.5, j * 0.5) for i in range(1, int(w / 0.5)) for j in range(1, int(h / 0.5))]
-
-    def free(x: float, y: float) -> bool:
-        for p in world["places"].values():
-            if p["x"] - clearance <= x <= p["x"] + p["width"] + clearance and p["y"] - clearance <= y <= p["y"] + p["depth"] + clearance:
-                return False
-            if math.dist(p["access"], (x, y)) < spacing:
-                return False
-        return True
-
-    cands = [q for q in grid if free(*q)]
-    rng.shuffle(cands)
-    out = copy.deepcopy(world)
-    taken: list[tuple[float, float]] = []
-    for name in sorted(out["robots"]):
-        point = next((q for q in cands if all(math.dist(q, t) >= spacing for t in taken)), None)
-        if point is None:
-            raise WorldError([Diagnostic(Location(world["path"]), f"seed {seed}: no free start for robot {name!r}")])
-        taken.append(point)
-        out["robots"][name]["start"] = [point[0], point[1]]
-    return out
+    """Seeded random free start points, 0.5 m inside the walls, ``clearance`` from every place's
+    footprint, ``spacing`` from access points and from each other (:func:`seeded_starts`, shared
+    by every domain); None = unchanged."""
+    return seeded_starts(world, seed, world["places"].values(), label="pipflow-household-starts",
+                         clearance=clearance, spacing=spacing, margin=0.5)
 
 
 # ---------------------------------------------------------------------------------------------

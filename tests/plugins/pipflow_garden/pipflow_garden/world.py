@@ -13,15 +13,12 @@ garden's own facts sit beside them: ``beds``, ``taps``, ``stores``, ``crops``.
 """
 from __future__ import annotations
 
-import copy
-import math
-import random
 import re
 from pathlib import Path
 from typing import Any
 
-from pipflow.errors import Diagnostic, Location, WorldError
-from pipflow.floorplan import footprint, inside_footprint
+from pipflow.errors import Diagnostic, WorldError
+from pipflow.floorplan import footprint, inside_footprint, seeded_starts
 from pipflow.suggest import did_you_mean
 from pipflow.worldfile import is_point, parse_mapping, read_world_file
 
@@ -288,25 +285,7 @@ def ripe_total(world: dict, crop: str, bed: str | None = None) -> int:
 
 def vary_starts(world: dict, seed: int | None, clearance: float = 0.6, spacing: float = 1.0) -> dict:
     """A copy of the world whose robots start at seeded random free points of a 0.5 m grid (clear
-    of every footprint and access point, apart from each other); ``seed=None``: unchanged."""
-    if seed is None:
-        return world
-    rng = random.Random(f"pipflow-garden-starts-{seed}")
-    w, h = world["floor"]["width"], world["floor"]["height"]
-
-    def free(x: float, y: float) -> bool:
-        return all(not (p["x"] - clearance <= x <= p["x"] + p["width"] + clearance
-                        and p["y"] - clearance <= y <= p["y"] + p["depth"] + clearance)
-                   and math.dist(p["access"], (x, y)) >= spacing for p in world["places"].values())
-
-    cands = [(i * 0.5, j * 0.5) for i in range(1, int(w / 0.5)) for j in range(1, int(h / 0.5)) if free(i * 0.5, j * 0.5)]
-    rng.shuffle(cands)
-    out = copy.deepcopy(world)
-    taken: list[tuple[float, float]] = []
-    for name in sorted(out["robots"]):
-        point = next((q for q in cands if all(math.dist(q, t) >= spacing for t in taken)), None)
-        if point is None:
-            raise WorldError([Diagnostic(Location(world["path"]), f"seed {seed}: no free start for robot {name!r}")])
-        taken.append(point)
-        out["robots"][name]["start"] = [point[0], point[1]]
-    return out
+    of every footprint and access point, apart from each other); ``seed=None``: unchanged. The
+    rule is pipflow's, shared by every domain (:func:`pipflow.floorplan.seeded_starts`)."""
+    return seeded_starts(world, seed, world["places"].values(), label="pipflow-garden-starts",
+                         clearance=clearance, spacing=spacing, margin=0.5)
