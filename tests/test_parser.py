@@ -606,6 +606,9 @@ def test_idioms_bounds_and_corrections_of_staff_english(command: str, goal: dict
     ("Pit 2 should get 2 batteries, and so should the wash bay.", TranslationError, "the count it receives"),
     ("Could the tool crib get 2 batteries?", TranslationError, "the count it receives"),
     ("Give the wash bay 2 batteries.", TranslationError, "the count it receives"),
+    # a plain count after "N more": one more, or one in all? (it was read as a final count)
+    ("Put 2 more batteries on pit 2 and 1 on the wash bay.", TranslationError, "1 more or 1 in all"),
+    ("Pit 2 should have 2 more batteries and the wash bay 1.", TranslationError, "in all"),
     ("Pit 2 gets 2 batteries. The north yard too.", TranslationError, "the count it receives"),
     # "the strongest robot" where two tie (stacker1, stacker2 carry 3): which one? not guessed
     ("The strongest robot must not carry batteries.", TranslationError, "2 robots tie"),

@@ -416,6 +416,8 @@ class _Sentence:
             # "Add 2 lids to A, 1 to B": a part with no verb of its own shares the add verb before it
             # (it was read as B's final count: a misreading)
             bare = len(node.children) == 2 and kind == "g_set"
+            if bare and not self.last_add:
+                self._gap_after_more(nps)
             self.put(places, mode, nps, words, add=bare and self.last_add)
             if kind == "g_set_only":
                 self.statements.append({"op": "nothing_else", "places": {"names": places},
@@ -928,6 +930,17 @@ class _Sentence:
             amount["expect"] = expect
         return {"items": {"names": [head]}, "amount": amount, "words": words}, source
 
+    def _gap_after_more(self, nps: list[dict]) -> None:
+        """ "Put 2 more lids on A and 1 on B", "A gets 2 more lids, B 3": is B's count one more or
+        one in all? The words do not say; nothing is guessed (B's final count was read)."""
+        prev = self.statements[-1] if self.statements else None
+        if prev is None or prev["op"] != "change" or "more" not in (prev.get("amount") or {}):
+            return
+        for np in nps:
+            if set(np["amount"]) == {"count"}:
+                raise TranslationError(f"{_quote(np['words'])} after {prev['words']!r}: cannot tell whether it is "
+                                       f"{np['words']} more or {np['words']} in all (say 'more' or 'in all')")
+
     def _shared_destination(self) -> None:
         """ "Move 2 lids from dispatch and 1 from rack east to silo 2": the destination said once at
         the end is that of both moves (it was read as a removal of 2 to anywhere: a misreading).
@@ -1127,6 +1140,8 @@ class _Sentence:
             if not prev:
                 raise TranslationError(f"{_quote(words)}: nothing said before it that it continues")
             # the verb is what is shared: "add 3 to A, B 2" adds, "A should have ..., B 2" sets
+            if not self.last_add:
+                self._gap_after_more(self.nps(self.sub(node, "items")[0]))
             for np in self.nps(self.sub(node, "items")[0]):
                 self.statements.append(self._goal_statement(places, np, self.last_add))
             return
