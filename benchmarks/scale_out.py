@@ -1,11 +1,11 @@
-"""Scale-out of `pipflow bench --executor dask`: the speedup of 2 workers over 1 on the paper's
+"""Scale-out of `pipflow bench --backend dask`: the speedup of 2 workers over 1 on the paper's
 ten warehouse tasks x 4 seeds, and the scheduler's overhead per run.
 
     python benchmarks/scale_out.py [--seeds 4] [--trivial 400]
 
 Each measurement starts a LocalCluster of N single-threaded worker processes, warms every worker
 (imports pipflow and runs one bench run, outside the timing), then times the whole bench through
-the same code path as `pipflow bench --executor dask=ADDRESS` (bundles by content, streamed row
+the same code path as `pipflow bench --backend dask=ADDRESS` (bundles by content, streamed row
 files, zipped run records). The step cache is off, so neither measurement reuses the other's
 results. The overhead is measured with trivial tasks: ``--trivial`` no-op runs submitted and
 collected with as_completed on a 1-worker cluster, against the same number of direct calls, and
@@ -57,9 +57,9 @@ def bench_on(n: int, seeds: int) -> tuple[float, dict, list[dict]]:
                                  "tasks:\n  - id: warm\n    command: \"There should be 7 product 1 in shelf 3.\"\n"
                                  "    goal: {shelf3: {product1: 7}}\n")
             run_bench(BenchConfig(tasks_file=tasks_one, seeds=2 * n, jobs=n, out=Path(tmp) / "warm", use_cache=False,
-                                  executor=f"dask={lc.scheduler_address}"), progress=False)
+                                  backend=f"dask={lc.scheduler_address}"), progress=False)
             config = BenchConfig(tasks_file=TASKS, seeds=seeds, jobs=n, out=Path(tmp) / "b", use_cache=False,
-                                 executor=f"dask={lc.scheduler_address}")
+                                 backend=f"dask={lc.scheduler_address}")
             started = time.perf_counter()
             results = run_bench(config, progress=False)
             wall = time.perf_counter() - started

@@ -24,9 +24,12 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
     bench.add_argument("--matrix", action="append", metavar="KEY=V1,V2", help="run variants side by side")
     bench.add_argument("-i", "--input", action="append", metavar="KEY=VALUE", help="set a workflow input for every run")
     bench.add_argument("--no-cache", action="store_true")
-    bench.add_argument("--executor", default="local", metavar="local|dask[=ADDRESS]",
-                       help="local: a process pool (--jobs); dask: a LocalCluster of --jobs workers; "
-                            "dask=tcp://host:8786: a running dask scheduler")
+    bench.add_argument("--backend", default=None, metavar="local|dask[=ADDRESS]",
+                       help="where the runs execute: local (default): a process pool of --jobs; dask: a "
+                            "LocalCluster of --jobs workers; dask=tcp://host:8786: a running dask scheduler")
+    # the name before the rename ("executor" now names only the engine's), kept so that scripts keep
+    # working: hidden from --help; bench_main prints a one-line notice when it is used
+    bench.add_argument("--executor", default=None, help=argparse.SUPPRESS)
     bench.add_argument("--resume", action="store_true",
                        help="complete the bench in --out: run only the runs without a row file")
     bench.add_argument("--llm-concurrency", default=None, metavar="N|PROVIDER=N,...",

@@ -1,9 +1,9 @@
 """The hook through which whoever runs a step bounds concurrent language-model calls.
 
 :func:`pipflow.language.llm.complete` enters :func:`llm_slot` around each provider call. By
-itself that is a no-op; an executor that shares providers between many runs (the Dask executor of
-:mod:`pipflow.experiments.backends`) installs its limiter with :func:`install`. The language layer thus
-never imports the executor above it.
+itself that is a no-op; a bench backend that shares providers between many runs (the Dask backend
+of :mod:`pipflow.experiments.backends`) installs its limiter with :func:`install`. The language layer
+thus never imports the backend above it.
 
 The hook is process-wide rather than a ``contextvars.ContextVar``: the engine runs steps in worker
 threads (``--jobs``, step time-outs), which would not see a context variable set by the thread

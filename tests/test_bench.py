@@ -1,4 +1,4 @@
-"""`pipflow bench` with the local executor: results.json schema, a `feasible: false` task,
+"""`pipflow bench` with the local backend: results.json schema, a `feasible: false` task,
 `--matrix` variants side by side, runs.csv / table.md, one row file per run, `--resume`.
 
 The fixture (tests/fixtures/bench/) is a tiny world with three tasks, one infeasible; a run takes
@@ -17,7 +17,7 @@ import pytest
 
 from conftest import interrupt_after
 from pipflow.experiments.benchmarking import BenchConfig, read_row, row_path, run_bench
-from pipflow.experiments.backends import parse_executor, parse_limits, run_key
+from pipflow.experiments.backends import parse_backend, parse_limits, run_key
 from pipflow.errors import UserError
 from pipflow.warehouse.scoring import score_run
 
@@ -54,7 +54,7 @@ def test_results_schema(local_bench):
         assert t["runs"] == 2
         for k in ("sr", "gcr", "exe", "ru"):
             assert 0.0 <= t[k] <= 1.0
-    assert on_disk["config"]["executor"] == "local"
+    assert on_disk["config"]["backend"] == "local" and "executor" not in on_disk["config"]
     assert on_disk["executed_runs"] == 6 and on_disk["resumed_runs"] == 0
 
 
@@ -164,19 +164,82 @@ def test_cli_bench_prints_the_table(tmp_path):
     assert json.loads((out / "results.json").read_text())["summary"]["runs"] == 3
 
 
-def test_cli_rejects_bad_executor_and_resume_without_out(tmp_path):
+def test_cli_rejects_bad_backend_and_resume_without_out(tmp_path):
     with pytest.raises(UserError):
-        parse_executor("spark")
+        parse_backend("spark")
     with pytest.raises(UserError):
-        parse_executor("local=tcp://x:1")
-    assert parse_executor("dask=tcp://10.0.0.1:8786") == ("dask", "tcp://10.0.0.1:8786")
-    assert parse_executor("dask") == ("dask", None)
+        parse_backend("local=tcp://x:1")
+    assert parse_backend("dask=tcp://10.0.0.1:8786") == ("dask", "tcp://10.0.0.1:8786")
+    assert parse_backend("dask") == ("dask", None)
     assert parse_limits("openai=4,2") == {"openai": 4, "default": 2}
     with pytest.raises(UserError):
         parse_limits("openai=0")
     proc = subprocess.run([sys.executable, "-m", "pipflow.engine.cli", "bench", str(TASKS), "--resume"],
                           capture_output=True, text=True, timeout=120, cwd=tmp_path)
     assert proc.returncode == 2 and "--resume needs --out" in proc.stderr
+
+
+# --- `--backend` (issue 14: "executor" names only the engine's), `--executor` its deprecated alias ----
+
+DEPRECATED = "--executor is deprecated, use --backend"
+
+
+def test_backend_flag_and_its_deprecated_executor_alias(tmp_path):
+    import argparse
+
+    from pipflow.experiments.benchmarking import chosen_backend
+
+    proc = subprocess.run([sys.executable, "-m", "pipflow.engine.cli", "bench", "--help"],
+                          capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 0 and "--backend local|dask[=ADDRESS]" in proc.stdout
+    assert "--executor" not in proc.stdout  # the alias is hidden from help
+    proc = cli_bench(tmp_path, "--out", str(tmp_path / "new"), "--backend", "local")
+    assert proc.returncode == 0, proc.stderr
+    assert DEPRECATED not in proc.stderr
+    assert json.loads((tmp_path / "new" / "results.json").read_text())["config"]["backend"] == "local"
+    proc = cli_bench(tmp_path, "--out", str(tmp_path / "old"), "--executor", "local")  # a script of before
+    assert proc.returncode == 0, proc.stderr
+    assert [line for line in proc.stderr.splitlines() if DEPRECATED in line] == [
+        "pipflow bench: --executor is deprecated, use --backend (same values: local|dask[=ADDRESS])"]
+    config = json.loads((tmp_path / "old" / "results.json").read_text())["config"]
+    assert config["backend"] == "local" and "executor" not in config
+    # a typo names the flag; the alias and the flag naming two backends is refused, not last-wins
+    for args, said in ((["--backend", "spark"], "--backend 'spark': expected local, dask or dask=ADDRESS"),
+                       (["--executor", "spark"], "--backend 'spark'"),
+                       (["--backend", "local", "--executor", "dask"], "name two backends; give --backend only")):
+        proc = cli_bench(tmp_path, "--out", str(tmp_path / "bad"), *args)
+        assert proc.returncode == 2 and said in proc.stderr and "Traceback" not in proc.stderr, (args, proc.stderr)
+    assert not (tmp_path / "bad").exists()
+    ns = argparse.Namespace
+    assert chosen_backend(ns(backend=None, executor=None)) == "local"
+    assert chosen_backend(ns(backend="dask=tcp://h:1", executor=None)) == "dask=tcp://h:1"
+    assert chosen_backend(ns(backend=None, executor="dask")) == "dask"
+    assert chosen_backend(ns(backend="DASK", executor="dask")) == "DASK"  # the same backend twice
+
+
+def test_resume_of_a_bench_made_before_the_rename(local_bench, tmp_path):
+    """A bench folder written when the flag was ``--executor``: results.json says
+    ``config.executor``. Its rows are resumed (they are keyed and fingerprinted by what defines a
+    run, never by the backend), by a script that still says ``--executor`` as by one that says
+    ``--backend``, and the rewritten results.json says ``backend``."""
+    import shutil
+
+    src, _ = local_bench
+    out = tmp_path / "before"
+    shutil.copytree(src, out)
+    results = json.loads((out / "results.json").read_text())
+    results["config"] = {("executor" if k == "backend" else k): v for k, v in results["config"].items()}
+    (out / "results.json").write_text(json.dumps(results))
+    for flag in ("--executor", "--backend"):
+        proc = subprocess.run([sys.executable, "-m", "pipflow.engine.cli", "bench", str(TASKS), "--seeds", "2",
+                               "--jobs", "1", "--no-cache", "-q", "--out", str(out), "--resume", flag, "local"],
+                              capture_output=True, text=True, timeout=240, cwd=tmp_path,
+                              env={**os.environ, "PIPFLOW_MODEL": "offline"})
+        assert proc.returncode == 0, proc.stderr
+        again = json.loads((out / "results.json").read_text())
+        assert again["resumed_runs"] == 6 and again["executed_runs"] == 0, flag
+        assert again["config"]["backend"] == "local" and "executor" not in again["config"]
+        assert again["summary"] == pytest.approx(results["summary"])
 
 
 # --- a bench that cannot run is an error of the bench (issue 13, defects 2, 3, 5) ------------

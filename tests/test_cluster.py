@@ -1,5 +1,5 @@
-"""`pipflow bench --executor dask` against a real LocalCluster of two single-threaded worker
-processes: the same table as the local executor, a worker killed mid-bench, `--resume` after an
+"""`pipflow bench --backend dask` against a real LocalCluster of two single-threaded worker
+processes: the same table as the local backend, a worker killed mid-bench, `--resume` after an
 interrupted bench, runs shipped by content, and the cluster-wide LLM slots per provider.
 
 Every cluster operation has a timeout and SIGALRM fails a test after 240 s, so nothing hangs.
@@ -42,9 +42,9 @@ def cluster():
     lc.close(timeout=30)
 
 
-def config(out: Path, executor: str, **kw) -> BenchConfig:
+def config(out: Path, backend: str, **kw) -> BenchConfig:
     return BenchConfig(tasks_file=TASKS, seeds=kw.pop("seeds", 2), jobs=2, out=out, use_cache=False,
-                       executor=executor, **kw)
+                       backend=backend, **kw)
 
 
 def table(results: dict) -> dict:
@@ -80,7 +80,7 @@ def test_dask_gives_the_local_table(cluster, tmp_path):
     dask = run_bench(config(tmp_path / "dask", f"dask={lc.scheduler_address}"), progress=False)
     assert table(dask) == table(local)
     assert dask["summary"] == pytest.approx(local["summary"])
-    assert dask["config"]["executor"].startswith("dask=")
+    assert dask["config"]["backend"].startswith("dask=")
     rows = rows_once(tmp_path / "dask", 6)
     workers = {r.get("worker") for r in rows}
     assert workers <= set(lc.scheduler_info["workers"]) | {None}
@@ -157,11 +157,11 @@ def test_llm_complete_holds_a_slot(monkeypatch):
         entered.append(model)
         yield
 
-    monkeypatch.setattr(llmslot, "_hook", slot)  # the hook an executor installs
+    monkeypatch.setattr(llmslot, "_hook", slot)  # the hook a bench backend installs
     out = complete([{"role": "user", "content": "hi"}], model="openai/gpt-4o",
                    extra={"mock_response": "hello"})
     assert out.text == "hello" and entered == ["openai/gpt-4o"]
-    # the dask executor installs its limiter as that hook; any other backend removes it
+    # the dask backend installs its limiter as that hook; any other backend removes it
     ex.configure_llm_limits({"default": 2}, "dask")
     assert llmslot._hook is ex.llm_slot
     ex.configure_llm_limits(None, None)
@@ -202,7 +202,7 @@ def test_a_worker_killed_mid_bench_still_counts_every_run_once(cluster, tmp_path
     client.wait_for_workers(2, timeout=TIMEOUT)  # the nanny restarted it
 
 
-def test_dask_executor_starts_its_own_local_cluster(tmp_path):
+def test_dask_backend_starts_its_own_local_cluster(tmp_path):
     results = run_bench(config(tmp_path / "own", "dask", seeds=1), progress=False)
     assert results["summary"]["runs"] == 3 and results["summary"]["sr"] == 1.0
     rows_once(tmp_path / "own", 3)

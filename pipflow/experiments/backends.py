@@ -7,7 +7,11 @@ workflow file and every file it extends, the files its ``path`` inputs name (wor
 action metadata) and the folder of its prompt template. The worker writes the bundle once into a
 temporary folder keyed by its hash, points the run's inputs there, runs and scores the run, and
 sends back the result row with the run record zipped; the client unpacks the record into
-``OUT/records/`` so a bench directory looks the same whichever executor made it.
+``OUT/records/`` so a bench directory looks the same whichever backend made it.
+
+These are the bench's *backends* (``pipflow bench --backend local|dask[=ADDRESS]``); the word
+"executor" names only the engine's :mod:`pipflow.engine.executor`, which runs the steps of one
+workflow inside each run.
 
 Results stream back as runs finish (``as_completed``): each row is handed to ``on_row`` at once
 (the bench writes it to ``OUT/runs/<variant>/<task>/<seed>.json`` and moves the progress bar).
@@ -70,7 +74,7 @@ def parse_limits(text: str | None) -> dict[str, int]:
 
 
 def configure_llm_limits(limits: dict[str, int] | None, backend: str | None) -> None:
-    """Set this process's limiter (the dask executor calls it on the worker before each run)."""
+    """Set this process's limiter (the dask backend calls it on the worker before each run)."""
     global _LIMITS, _BACKEND
     with _LOCK:
         if dict(limits or {}) != _LIMITS or backend != _BACKEND:
@@ -244,7 +248,7 @@ def _worker_address() -> str | None:
 
 
 # ------------------------------------------------------------------------------------------
-# executors
+# backends: where the runs execute
 # ------------------------------------------------------------------------------------------
 
 
@@ -256,26 +260,26 @@ def run_key(row_or_spec: Any) -> tuple[str, str, int]:
 
 
 def lost_row(spec, error: str) -> dict:
-    """A row for a run the executor could not finish (not written to disk: ``--resume`` reruns it)."""
+    """A row for a run the backend could not finish (not written to disk: ``--resume`` reruns it)."""
     return {"variant": spec.variant, "task": spec.task["id"], "seed": spec.seed, "status": "lost",
             "success": False, "goal_met": False, "gcr": 0.0, "exe": 0.0, "ru": 0.0, "tc_max": 0.0,
             "tc_avg": 0.0, "tc_avg_moved": 0.0, "makespan": 0.0, "planned": 0, "executed": 0, "refused": False,
             "error": error, "violations": [error], "seconds": 0.0}
 
 
-def parse_executor(text: str | None) -> tuple[str, str | None]:
+def parse_backend(text: str | None) -> tuple[str, str | None]:
     """``local`` | ``dask`` | ``dask=tcp://host:port`` -> (kind, address)."""
     text = (text or "local").strip()
     kind, _, address = text.partition("=")
     kind = kind.strip().lower()
     if kind not in ("local", "dask"):
-        raise UserError(f"--executor {text!r}: expected local, dask or dask=ADDRESS")
+        raise UserError(f"--backend {text!r}: expected local, dask or dask=ADDRESS")
     if kind == "local" and address:
-        raise UserError(f"--executor {text!r}: the local executor takes no address")
+        raise UserError(f"--backend {text!r}: the local backend takes no address")
     return kind, (address.strip() or None)
 
 
-class LocalExecutor:
+class LocalBackend:
     """Today's process pool (``jobs`` processes; 1 runs in this process)."""
 
     name = "local"
@@ -305,7 +309,7 @@ class LocalExecutor:
             pool.shutdown(wait=True, cancel_futures=True)
 
 
-class DaskExecutor:
+class DaskBackend:
     """Runs on a Dask cluster: a LocalCluster of ``jobs`` single-threaded worker processes, or the
     scheduler at ``address``. Each run is submitted with ``retries`` (a worker that dies mid-run
     has its run rerun elsewhere)."""
@@ -391,14 +395,15 @@ class DaskExecutor:
         return row
 
 
-def make_executor(executor: str, jobs: int, llm_limits: dict[str, int] | None = None,
-                  records_dir: Path | None = None, retries: int = 2):
-    kind, address = parse_executor(executor)
+def make_backend(backend: str, jobs: int, llm_limits: dict[str, int] | None = None,
+                 records_dir: Path | None = None, retries: int = 2) -> LocalBackend | DaskBackend:
+    """The backend that ``--backend`` names (see :func:`parse_backend`), ready to ``run`` specs."""
+    kind, address = parse_backend(backend)
     if kind == "local":
-        return LocalExecutor(jobs)
+        return LocalBackend(jobs)
     try:
         import distributed  # noqa: F401
     except ImportError:
-        raise UserError("--executor dask needs the `distributed` package (pip install distributed)") from None
-    return DaskExecutor(jobs, address, retries=retries, llm_limits=llm_limits, records_dir=records_dir)
+        raise UserError("--backend dask needs the `distributed` package (pip install distributed)") from None
+    return DaskBackend(jobs, address, retries=retries, llm_limits=llm_limits, records_dir=records_dir)
 

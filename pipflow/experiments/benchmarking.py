@@ -53,7 +53,7 @@ class BenchConfig:
     matrix: dict[str, list[str]] = field(default_factory=dict)
     inputs: dict[str, str] = field(default_factory=dict)
     use_cache: bool = True
-    executor: str = "local"
+    backend: str = "local"  # where the runs execute: local | dask | dask=ADDRESS (experiments.backends)
     resume: bool = False
     llm_limits: dict[str, int] = field(default_factory=dict)
 
@@ -243,7 +243,7 @@ def run_bench(config: BenchConfig, progress: bool = True, on_row=None) -> dict:
     and a row with another fingerprint is refused (:class:`UserError` saying what differs).
     ``on_row(row)`` is called after each row is stored (tests use it to interrupt or to kill a
     worker)."""
-    from pipflow.experiments.backends import make_executor, run_key
+    from pipflow.experiments.backends import make_backend, run_key
     from pipflow.experiments.benchdomains import domain_of
 
     domain = domain_of(config.tasks_file)
@@ -269,10 +269,10 @@ def run_bench(config: BenchConfig, progress: bool = True, on_row=None) -> dict:
     if config.resume:
         done = _resumable(out, specs)
     todo = [s for s in specs if run_key(s) not in done]
-    executor = make_executor(config.executor, config.jobs, llm_limits=config.llm_limits,
-                             records_dir=out / "records")
+    backend = make_backend(config.backend, config.jobs, llm_limits=config.llm_limits,
+                           records_dir=out / "records")
     started = time.perf_counter()
-    fresh = _execute(executor, todo, done, out, progress, total=len(specs), on_row=on_row)
+    fresh = _execute(backend, todo, done, out, progress, total=len(specs), on_row=on_row)
     wall = time.perf_counter() - started
     rows = [done[run_key(s)] for s in specs if run_key(s) in done]
     results = _results(rows, tasks_doc["tasks"], config, wall, domain.name)
@@ -304,9 +304,9 @@ def _resumable(out: Path, specs: list[RunSpec]) -> dict[tuple, dict]:
     return done
 
 
-def _execute(executor, todo: list[RunSpec], done: dict, out: Path, progress: bool, total: int,
+def _execute(backend, todo: list[RunSpec], done: dict, out: Path, progress: bool, total: int,
              on_row=None) -> int:
-    """Run ``todo`` on the executor; store each row as it arrives (first arrival wins: a run
+    """Run ``todo`` on the backend; store each row as it arrives (first arrival wins: a run
     retried after a worker died counts once), stamped with its run's fingerprint. A run that
     ended in a user error stops the bench (:class:`UserError`; its row is not stored, so a
     ``--resume`` after the fix runs it). Returns how many runs finished here."""
@@ -317,7 +317,7 @@ def _execute(executor, todo: list[RunSpec], done: dict, out: Path, progress: boo
 
     fresh = 0
     by_key = {run_key(s): s for s in todo}
-    columns = [TextColumn(f"bench ({executor.name})"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn()]
+    columns = [TextColumn(f"bench ({backend.name})"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn()]
     with Progress(*columns, disable=not progress, transient=False) as bar:
         task_id = bar.add_task("runs", total=total, completed=total - len(todo))
 
@@ -335,7 +335,7 @@ def _execute(executor, todo: list[RunSpec], done: dict, out: Path, progress: boo
                 row["fingerprint"] = spec.fingerprint
                 row["config_hash"] = fingerprint_hash(spec.fingerprint)
             done[key] = row
-            if row.get("status") != "lost":  # an executor failure is not stored: --resume reruns it
+            if row.get("status") != "lost":  # a backend failure is not stored: --resume reruns it
                 write_json(row_path(out, key), row)
             fresh += 1
             bar.advance(task_id)
@@ -343,7 +343,7 @@ def _execute(executor, todo: list[RunSpec], done: dict, out: Path, progress: boo
                 on_row(row)
 
         if todo:
-            executor.run(todo, receive)
+            backend.run(todo, receive)
     return fresh
 
 
@@ -371,7 +371,7 @@ def _results(rows: list[dict], tasks: list[dict], config: BenchConfig, wall: flo
     return {"summary": first["summary"], "tasks": first["tasks"], "constructions": first["constructions"],
             "variants": variant_results,
             "config": {"tasks": str(config.tasks_file), "domain": domain, "workflow": config.workflow, "seeds": config.seeds,
-                       "jobs": config.jobs, "executor": config.executor, "matrix": config.matrix, "inputs": config.inputs},
+                       "jobs": config.jobs, "backend": config.backend, "matrix": config.matrix, "inputs": config.inputs},
             "wall_seconds": round(wall, 3),
             "created": _dt.datetime.now(_dt.timezone.utc).isoformat(timespec="seconds")}
 
@@ -453,6 +453,27 @@ def _write(out: Path, rows: list[dict], results: dict) -> None:
     atomic_write(out / "table.md", markdown_table(results) + "\n")
 
 
+def chosen_backend(args: argparse.Namespace) -> str:
+    """The backend the command line names: ``--backend``, or its deprecated alias ``--executor``
+    (kept so that scripts written before the rename keep working; it prints a one-line notice).
+
+    Why the alias is read here and not by argparse into one destination: given both with different
+    values, the bench would run on whichever came last; it refuses instead (exit 2)."""
+    from pipflow.experiments.backends import parse_backend
+
+    backend, old = getattr(args, "backend", None), getattr(args, "executor", None)
+    if old is not None:
+        print("pipflow bench: --executor is deprecated, use --backend (same values: local|dask[=ADDRESS])",
+              file=sys.stderr)
+        if backend is not None and parse_backend(backend) != parse_backend(old):
+            raise UserError(f"--backend {backend!r} and --executor {old!r} (its deprecated alias) name two "
+                            "backends; give --backend only")
+        backend = backend if backend is not None else old
+    backend = backend or "local"
+    parse_backend(backend)
+    return backend
+
+
 def bench_main(args: argparse.Namespace) -> int:
     """The CLI entry: build the config from arguments, run, print the table."""
     from pipflow.engine.cliargs import key_values
@@ -461,10 +482,9 @@ def bench_main(args: argparse.Namespace) -> int:
     tasks_file = Path(args.tasks)
     if not tasks_file.exists():
         raise UserError(f"{tasks_file}: no such task file")
-    from pipflow.experiments.backends import parse_executor, parse_limits
+    from pipflow.experiments.backends import parse_limits
 
-    executor = getattr(args, "executor", None) or "local"
-    parse_executor(executor)  # a typo fails before anything runs
+    backend = chosen_backend(args)  # a typo fails before anything runs
     resume = bool(getattr(args, "resume", False))
     if resume and not args.out:
         raise UserError("--resume needs --out DIR (the bench directory to complete)")
@@ -481,7 +501,7 @@ def bench_main(args: argparse.Namespace) -> int:
         tasks_file=tasks_file, workflow=args.workflow, seeds=args.seeds,
         jobs=_workers(args.jobs), out=Path(args.out or f"bench-out/{stamp}"),
         matrix=matrix, inputs=inputs, use_cache=not args.no_cache,
-        executor=executor, resume=resume, llm_limits=parse_limits(limits))
+        backend=backend, resume=resume, llm_limits=parse_limits(limits))
     results = run_bench(config, progress=not args.quiet)
     print(markdown_table(results))
     if len(results.get("variants", [])) > 1:
@@ -490,8 +510,8 @@ def bench_main(args: argparse.Namespace) -> int:
         print(variants_side_by_side(results, json.loads((config.out / "runs.json").read_text())))
     print(f"results: {config.out / 'results.json'}")
     lost = [r for r in json.loads((config.out / "runs.json").read_text()) if r.get("status") == "lost"]
-    if lost:  # the executor could not finish these runs: the table is incomplete
-        print(f"{len(lost)} run(s) were lost by the executor (first: {lost[0].get('error')}); "
+    if lost:  # the backend could not finish these runs: the table is incomplete
+        print(f"{len(lost)} run(s) were lost by the backend (first: {lost[0].get('error')}); "
               f"`pipflow bench ... --out {config.out} --resume` runs them again", file=sys.stderr)
         return 1
     return 0

@@ -1,7 +1,7 @@
 """One bench run: what defines it (:class:`RunSpec`) and how it is run and scored in the calling
 process (:func:`run_one`).
 
-Below both the bench (which builds the specs and tables) and the executors (which ship specs to
+Below both the bench (which builds the specs and tables) and the backends (which ship specs to
 processes or dask workers and call :func:`run_one` there), so neither imports the other for it.
 """
 from __future__ import annotations

@@ -222,7 +222,7 @@ def complete(
         kwargs["timeout"] = timeout if remaining is None else max(0.001, min(timeout, remaining))
         start = time.perf_counter()
         try:
-            # one of the provider's LLM slots across a dask cluster (a no-op unless an executor
+            # one of the provider's LLM slots across a dask cluster (a no-op unless a bench backend
             # installed its limiter: pipflow.llmslot)
             with llm_slot(model):
                 response = _within(litellm.completion, dict(kwargs), kwargs["timeout"] + GRACE)
