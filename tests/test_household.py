@@ -189,7 +189,7 @@ def test_counts_resolve_to_nearest_members(world):
 # ------------------------------------------------------------------------------ coalitions
 def test_heavy_object_needs_a_coalition(world):
     """A 2-unit watermelon with 1-unit lifters: the allocation gives its store to two robots,
-    and the executor accepts it; one lifter alone is refused by the executor."""
+    and the household simulation accepts it; one lifter alone is refused by the simulation."""
     from pipflow.team.allocation import allocate
     from pipflow.team.dependency import build_graph
     from pipflow.household.simulation import simulate
