@@ -571,6 +571,10 @@ def test_an_english_verb_is_never_taken_for_a_misspelt_robot_name() -> None:
     # "give P N X" is read where a final count and a delivery agree, or with "exactly"
     ("Give pit 2 two batteries.", {"pit2": {"battery": 2}}, []),
     ("Give the wash bay exactly 2 batteries.", {"wash-bay": {"battery": 2}}, []),
+    # after "N more", a plain count where the place holds none: both readings agree
+    ("Pit 2 should have 2 more batteries, and the wash bay 1 kc-90.", {"pit2": {"battery": 2}, "wash-bay": {"kc-90": 1}}, []),
+    ("Stacker 1 and loader shouldn't carry batteries or brake pads.", {},
+     [{"never": ["stacker1", "loader"], "product": "battery"}, {"never": ["stacker1", "loader"], "product": "brake_pad"}]),
     ("Pull 1 kc-90 from the north yard over to pit 2.", {"north yard": {"kc-90": 1}, "pit2": {"kc-90": 1}}, []),
     ("Move 2 batteries north yard to pit 2.", {"north yard": {"battery": 2}, "pit2": {"battery": 2}}, []),
     ("Add 1 brake pad each to the wash bay and pit 2.", {"wash-bay": {"brake_pad": 2}, "pit2": {"brake_pad": 1}}, []),

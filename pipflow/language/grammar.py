@@ -446,7 +446,7 @@ act: "move" | "moves" | "carry" | "carries" | "touch" | "touches" | "take" | "ta
    | "stock" | "restock" | "remove"
 useact: use | act
 
-robj: ITEM (lsep ITEM)*                                   -> ro_items
+robj: ITEM ((lsep | "or" | "nor" | "," "or") ITEM)*       -> ro_items
     | ("anything" | "everything" | "any" ITEMWORD | ITEMWORD | "goods" | "stuff" | "things" | "all" ITEMWORD) -> ro_any
     | ("it" | "them" | "that" | "those" | "these" | "this")  -> ro_pronoun
     | "for" ITEM (lsep ITEM)*                               -> ro_items

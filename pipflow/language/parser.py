@@ -417,7 +417,7 @@ class _Sentence:
             # (it was read as B's final count: a misreading)
             bare = len(node.children) == 2 and kind == "g_set"
             if bare and not self.last_add:
-                self._gap_after_more(nps)
+                self._gap_after_more(nps, places)
             self.put(places, mode, nps, words, add=bare and self.last_add)
             if kind == "g_set_only":
                 self.statements.append({"op": "nothing_else", "places": {"names": places},
@@ -930,14 +930,18 @@ class _Sentence:
             amount["expect"] = expect
         return {"items": {"names": [head]}, "amount": amount, "words": words}, source
 
-    def _gap_after_more(self, nps: list[dict]) -> None:
+    def _gap_after_more(self, nps: list[dict], places: list[str]) -> None:
         """ "Put 2 more lids on A and 1 on B", "A gets 2 more lids, B 3": is B's count one more or
-        one in all? The words do not say; nothing is guessed (B's final count was read)."""
+        one in all? The words do not say; where B holds some now the two differ and nothing is
+        guessed (B's final count was read)."""
         prev = self.statements[-1] if self.statements else None
         if prev is None or prev["op"] != "change" or "more" not in (prev.get("amount") or {}):
             return
+        stock = self.lex.world.get("stock") or {}
         for np in nps:
-            if set(np["amount"]) == {"count"}:
+            items = (np["items"] or prev.get("items") or {}).get("names") or []
+            if set(np["amount"]) == {"count"} and any(
+                    int((stock.get(p) or {}).get(i, 0) or 0) for p in places for i in items):
                 raise TranslationError(f"{_quote(np['words'])} after {prev['words']!r}: cannot tell whether it is "
                                        f"{np['words']} more or {np['words']} in all (say 'more' or 'in all')")
 
@@ -1141,7 +1145,7 @@ class _Sentence:
                 raise TranslationError(f"{_quote(words)}: nothing said before it that it continues")
             # the verb is what is shared: "add 3 to A, B 2" adds, "A should have ..., B 2" sets
             if not self.last_add:
-                self._gap_after_more(self.nps(self.sub(node, "items")[0]))
+                self._gap_after_more(self.nps(self.sub(node, "items")[0]), places)
             for np in self.nps(self.sub(node, "items")[0]):
                 self.statements.append(self._goal_statement(places, np, self.last_add))
             return
