@@ -218,19 +218,21 @@ def main() -> int:
     work.mkdir(parents=True, exist_ok=True)
     warm = work / "grammar-warm"
 
+    def commit(rev: str) -> str:  # HEAD today is not HEAD tomorrow: folders and labels by commit
+        return subprocess.run(["git", "-C", str(REPO), "rev-parse", "--short", rev], check=True, capture_output=True,
+                              text=True).stdout.strip()
+
     def exported(rev: str) -> Path:
-        rev = subprocess.run(["git", "-C", str(REPO), "rev-parse", "--short", rev], check=True, capture_output=True,
-                             text=True).stdout.strip()  # HEAD today is not HEAD tomorrow: folders by commit
-        site = baseline_site(rev, work)
+        site = baseline_site(commit(rev), work)
         compileall.compile_dir(str(site.parent / "src"), quiet=1)  # bytecode, as the working tree has it
         return site
 
     here = exported(args.current) if args.current else None
     now = [Code("now warm", here, warm), Code("now cold", here, "cold"), Code("now off", here, "")]
-    bases = [Code(rev, exported(rev), None) for rev in args.baseline]
+    bases = [Code(commit(rev), exported(rev), None) for rev in args.baseline]
     print(f"machine: {os.cpu_count()} CPUs; load average {' '.join(f'{x:.2f}' for x in os.getloadavg())}; "
           f"one `pipflow run` per size, step cache off; current code: "
-          f"{'revision ' + args.current if args.current else 'the working tree'}; records in {work}")
+          f"{'revision ' + commit(args.current) if args.current else 'the working tree'}; records in {work}")
     for code in [now[0], *bases]:  # unmeasured: bytecode for every code, the parser in the warm cache
         r = code.run("paper", work, args.timeout, 0)
         print(f"warm-up run of {code.name} (not measured): {r['wall']:.2f} s, exit {r['code']}")
