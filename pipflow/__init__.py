@@ -16,6 +16,7 @@ from pipflow.errors import (
     PlanningError,
     Refusal,
     StepError,
+    TaskFileError,
     TranslationError,
     UserError,
     WorkflowError,
@@ -37,7 +38,7 @@ def __getattr__(name: str):
 __all__ = [
     "run", "bench", "Run",
     "step", "Input", "Step", "StepContext", "Doc", "Choices", "Check", "PathStr",
-    "PipflowError", "UserError", "WorkflowError", "WorldError", "InputError", "StepError",
+    "PipflowError", "UserError", "WorkflowError", "WorldError", "TaskFileError", "InputError", "StepError",
     "PlanningError", "AllocationError", "LLMError", "TranslationError", "Refusal",
     "Diagnostic", "Location",
 ]

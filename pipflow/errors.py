@@ -8,6 +8,7 @@ else that escapes is a bug in pipflow and is shown with its traceback.
     ├── UserError                     exit 2   bad file, bad input, missing key
     │   ├── WorkflowError                      workflow fails validation (carries diagnostics)
     │   ├── WorldError                         world file fails validation (carries diagnostics)
+│   │   └── TaskFileError                  task file fails validation (itself or its world)
     │   ├── SourceFileError                    a file cannot be read or parsed as YAML (carries diagnostics)
     │   └── InputError                         a step argument or CLI input is wrong
     │       └── PDDLError                      a PDDL text does not parse against its domain
@@ -81,6 +82,11 @@ class WorkflowError(_DiagnosticsError):
 
 class WorldError(_DiagnosticsError):
     """A world file is invalid; ``diagnostics`` lists every problem with its location."""
+
+
+class TaskFileError(WorldError):
+    """A task file (benchmarks/README.md) is invalid, or the world it names is; a WorldError
+    because a task file is checked against its world and callers catch both alike."""
 
 
 class SourceFileError(_DiagnosticsError):

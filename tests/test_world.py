@@ -5,7 +5,7 @@ from pathlib import Path
 
 import pytest
 
-from pipflow.errors import WorldError
+from pipflow.errors import TaskFileError, WorldError
 from pipflow.warehouse.world import load_tasks, load_world, world_from_text
 from pipflow.yamlsource import load_with_locations
 
@@ -79,8 +79,9 @@ def test_task_names_checked(tmp_path):
         "    goal: {shelve4: {product1: 3}}\n"
         "    constraints:\n"
         "      - {never: [robot99], product: prodcut1}\n")
-    with pytest.raises(WorldError) as info:
+    with pytest.raises(TaskFileError) as info:  # a WorldError too: callers catch both alike
         load_tasks(tmp_path / "tasks.yaml")
+    assert isinstance(info.value, WorldError) and "invalid task file" in str(info.value)
     by_line = _lines(info.value)
     assert "unknown shelf 'shelve4'" in by_line[5] and "shelf4" in by_line[5]
     msgs = str(info.value)

@@ -149,12 +149,12 @@ def score_run(world: dict, goal: dict, *, feasible: bool = True, graph: dict | N
 # task files and bench hooks
 # ------------------------------------------------------------------------------------------
 def load_tasks(path: str | Path) -> dict:
-    """Load a household task file and its world; :class:`WorldError` lists every problem located.
+    """Load a household task file and its world; :class:`TaskFileError` lists every problem located.
 
     Returns ``{"path", "world_path", "world", "domain": "household", "workflow", "tasks": [{"id",
     "command", "category", "team", "goal", "feasible", "construction"?, "expect"?, "domain", "inputs": {"team": ...}}]}``;
     a task marked ``feasible: false`` (its right answer is a refusal) needs no goal."""
-    from pipflow.errors import Diagnostic, WorldError
+    from pipflow.errors import Diagnostic, TaskFileError
     from pipflow.household.world import load_world, team_members
     from pipflow.suggest import did_you_mean
     from pipflow.worldfile import parse_mapping, read_world_file
@@ -164,7 +164,7 @@ def load_tasks(path: str | Path) -> dict:
     diags: list[Diagnostic] = []
     world_path = (p.parent / str(data.get("world", ""))).resolve()
     if not data.get("world") or not world_path.is_file():
-        raise WorldError([Diagnostic(locate(("world",)), f"world file {data.get('world')!r} not found (looked at {world_path})")],
+        raise TaskFileError([Diagnostic(locate(("world",)), f"world file {data.get('world')!r} not found (looked at {world_path})")],
                          f"invalid task file {p}")
     world = load_world(world_path)
     names = {**world["places"], **world["objects"]}
@@ -223,7 +223,7 @@ def load_tasks(path: str | Path) -> dict:
                       **({"expect": str(t["expect"])} if t.get("expect") else {}),
                       "inputs": {"team": ",".join(team) if isinstance(team, list) else team}})
     if diags:
-        raise WorldError(diags, f"invalid household task file {p} ({len(diags)} problem(s))")
+        raise TaskFileError(diags, f"invalid household task file {p} ({len(diags)} problem(s))")
     return {"path": str(p), "world_path": str(world_path), "world": world, "domain": "household",
             "workflow": data.get("workflow", "household"), "tasks": tasks}
 

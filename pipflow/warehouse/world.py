@@ -20,7 +20,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-from pipflow.errors import Diagnostic, Location, WorldError
+from pipflow.errors import Diagnostic, Location, TaskFileError, WorldError
 from pipflow.floorplan import inside_footprint, layout_diagnostics, on_floor
 from pipflow.goalcounts import is_bound, value_problems
 from pipflow.suggest import did_you_mean
@@ -256,21 +256,21 @@ def load_tasks(path: str | Path) -> dict:
     Returns ``{"path", "world_path", "world": <world dict>, "tasks": [{"id", "command", "goal",
     "constraints", "feasible", "expect", "construction"}]}`` (goal values: counts or bounds,
     :mod:`pipflow.goalcounts`; ``expect`` and ``construction`` None when absent); raises
-    :class:`WorldError` with every problem located (a bad world file reports its own locations)."""
+    :class:`TaskFileError` with every problem located (a bad world file reports its own locations)."""
     p, text = read_world_file(path)
     file = str(p)
     data, locate = parse_mapping(text, file, "task")
     diags = duplicate_diagnostics(locate) + schema_diagnostics(data, load_schema("tasks.schema.json"), locate)
     if diags:
-        raise WorldError(diags, f"invalid task file {file} ({len(diags)} problem(s))")
+        raise TaskFileError(diags, f"invalid task file {file} ({len(diags)} problem(s))")
     world_path = (p.parent / data["world"]).resolve()
     if not world_path.exists():
-        raise WorldError([Diagnostic(locate(("world",)), f"world file {data['world']!r} not found (looked at {world_path})")],
+        raise TaskFileError([Diagnostic(locate(("world",)), f"world file {data['world']!r} not found (looked at {world_path})")],
                          f"invalid task file {file}")
     world = load_world(world_path)
     diags = task_diagnostics(data, world, locate)
     if diags:
-        raise WorldError(diags, f"invalid task file {file} ({len(diags)} problem(s))")
+        raise TaskFileError(diags, f"invalid task file {file} ({len(diags)} problem(s))")
     tasks = [{"id": t["id"], "command": t["command"], "goal": _goal_copy(t["goal"]),
               "constraints": [dict(c) for c in t.get("constraints") or []],
               "feasible": t.get("feasible", True), "expect": t.get("expect"),
