@@ -575,6 +575,8 @@ def test_an_english_verb_is_never_taken_for_a_misspelt_robot_name() -> None:
     ("Pit 2 should have 2 more batteries, and the wash bay 1 kc-90.", {"pit2": {"battery": 2}, "wash-bay": {"kc-90": 1}}, []),
     ("Stacker 1 and loader shouldn't carry batteries or brake pads.", {},
      [{"never": ["stacker1", "loader"], "product": "battery"}, {"never": ["stacker1", "loader"], "product": "brake_pad"}]),
+    # a bound with an add verb counts from now (it was "holds at least 2": met already by 3)
+    ("Bring at least 2 batteries to the wash bay.", {"wash-bay": {"battery": {"at_least": 5}}}, []),
     ("Pull 1 kc-90 from the north yard over to pit 2.", {"north yard": {"kc-90": 1}, "pit2": {"kc-90": 1}}, []),
     ("Move 2 batteries north yard to pit 2.", {"north yard": {"battery": 2}, "pit2": {"battery": 2}}, []),
     ("Add 1 brake pad each to the wash bay and pit 2.", {"wash-bay": {"brake_pad": 2}, "pit2": {"brake_pad": 1}}, []),
@@ -610,6 +612,9 @@ def test_idioms_bounds_and_corrections_of_staff_english(command: str, goal: dict
     ("Pit 2 should get 2 batteries, and so should the wash bay.", TranslationError, "the count it receives"),
     ("Could the tool crib get 2 batteries?", TranslationError, "the count it receives"),
     ("Give the wash bay 2 batteries.", TranslationError, "the count it receives"),
+    # a ceiling or a range on how many to bring: not a count the place ends with (it was read so)
+    ("Move 2-3 batteries to the wash bay.", TranslationError, "how many to bring"),
+    ("Bring at most 2 batteries to the wash bay.", TranslationError, "how many to bring"),
     # a plain count after "N more": one more, or one in all? (it was read as a final count)
     ("Put 2 more batteries on pit 2 and 1 on the wash bay.", TranslationError, "1 more or 1 in all"),
     ("Pit 2 should have 2 more batteries and the wash bay 1.", TranslationError, "in all"),

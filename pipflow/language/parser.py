@@ -364,6 +364,13 @@ class _Sentence:
             np = {**np, "items": {"names": list(self.last_item)}}
         if add and key == "count":
             a, key = {"more": a["count"]}, "more"
+        if add and set(a) == {"at_least"}:
+            # "add / bring at least 2 X to P": at least 2 more than now (it was read as "P holds at
+            # least 2", already met where P holds 3: a misreading)
+            a, key = {"at_least_more": a["at_least"]}, "at_least_more"
+        elif add and set(a) & {"at_most", "between"}:
+            raise TranslationError(f"{_quote(np['words'])}: a bound on how many to bring is not a count the "
+                                   f"place ends with; say it so ('P should have at most N')")
         if key in CHANGE_AMOUNTS:
             op = "change"
         elif key in BOUND_AMOUNTS:
