@@ -10,6 +10,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 from importlib.metadata import entry_points
+from importlib.util import find_spec
 from pathlib import Path
 from typing import Any
 
@@ -30,6 +31,20 @@ def _entry_points() -> dict[str, Any]:
 def known_domains() -> list[str]:
     """The names of the installed task domains."""
     return sorted(_entry_points())
+
+
+def own_domain_step_modules() -> list[str]:
+    """The ``steps`` modules of the task domains pipflow itself ships (its own entry points in
+    :data:`GROUP`, e.g. ``pipflow.<domain>.domain`` -> ``pipflow.<domain>.steps``), for those
+    that have one: the steps a built-in domain keeps for older workflows count as pipflow's own
+    (entry point ``builtin``) while steps/ names no domain. Found without importing the domains."""
+    modules = []
+    for ep in _entry_points().values():
+        if ep.dist is not None and ep.dist.name == "pipflow":
+            candidate = ep.module.rsplit(".", 1)[0] + ".steps"
+            if find_spec(candidate) is not None:
+                modules.append(candidate)
+    return sorted(modules)
 
 
 @lru_cache(maxsize=None)

@@ -164,23 +164,18 @@ def test_the_engine_imports_only_the_neutral_modules_of_the_library():
 # ---------------------------------------------------------------------------------------------
 # task domains (docs/architecture.md, "Task domains"): generic code names no domain
 # ---------------------------------------------------------------------------------------------
-#: the task-domain packages: only they (and their own steps) may know a domain
+#: the task-domain packages: only they (with their own steps, in their ``steps`` module) may know a domain
 DOMAIN_PACKAGES = ("pipflow.warehouse", "pipflow.household")
-#: steps of one domain, kept in steps/ beside the generic ones (their step names are the
-#: workflows' public interface: simulate.pybullet, metrics.score, household.*)
-DOMAIN_STEPS = {"pipflow.steps.household": "household", "pipflow.steps.simulate": "warehouse",
-                "pipflow.steps.metrics": "warehouse"}
-#: generic modules allowed to spell a domain's name, and why (keep this list short)
+#: generic modules allowed to spell a domain's name, and why (keep this list short; steps/ has none)
 NAMES_A_DOMAIN = {
     "pipflow.taskdomain": "DEFAULT_DOMAIN: the one place that says which domain a world without `domain:` is",
-    "pipflow.steps": "STEP_MODULES lists the domain step modules kept in steps/ (DOMAIN_STEPS)",
     "pipflow.language.grounding": "the JSON schema's name 'warehouse_order' is part of recorded requests' cache "
                                   "keys: renaming it would orphan every recorded model answer",
 }
 
 
 def _is_generic(module: str) -> bool:
-    return not module.startswith(DOMAIN_PACKAGES) and module not in DOMAIN_STEPS
+    return not module.startswith(DOMAIN_PACKAGES)
 
 
 def domain_words(path: Path) -> list[tuple[int, str]]:
@@ -227,4 +222,4 @@ def test_the_domain_name_check_sees_what_it_must(tmp_path):
 def graph_has_domain_edges() -> bool:
     """The import graph does see the domain packages (their own steps import them)."""
     graph = import_graph()
-    return graph.has_edge("pipflow.steps.household", "pipflow.household.world")
+    return graph.has_edge("pipflow.household.steps", "pipflow.household.domain")

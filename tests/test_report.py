@@ -66,8 +66,8 @@ def write_json(path: Path, value) -> None:
 def make_run_dir(root: Path) -> Path:
     """A run record as the engine writes it, with real simulate/metrics step outputs."""
     from pipflow.engine.step import StepContext
-    from pipflow.steps.metrics import score
-    from pipflow.steps.simulate import simulate_pybullet
+    from pipflow.warehouse.steps import score
+    from pipflow.warehouse.steps import simulate_pybullet
 
     world = load_world()
     spec = [("s1", "shelf4", "shelf1", "product4", 6, ["robot9", "robot10"], []),

@@ -153,7 +153,7 @@ def test_aggregate_and_summary():
 
 def test_metrics_step(world, tmp_path):
     from pipflow.engine.step import StepContext
-    from pipflow.steps.metrics import score
+    from pipflow.warehouse.steps import score
 
     graph, schedule = wh01()
     sim = run(world, graph, schedule, GOAL_01)

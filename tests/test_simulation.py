@@ -141,7 +141,7 @@ def test_many_moves_simulate_fast(world):
 
 def test_step_face(world, tmp_path):
     from pipflow.engine.step import StepContext
-    from pipflow.steps.simulate import simulate_pybullet
+    from pipflow.warehouse.steps import simulate_pybullet
 
     graph, schedule = wh01()
     ctx = StepContext("sim", tmp_path / "artifacts", tmp_path)

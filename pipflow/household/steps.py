@@ -1,13 +1,24 @@
-"""Household steps (the paper's AI2-THOR experiment on pipflow's own home simulator): load a
-household world with its robot team, write the team-level problem for a command, execute the
-schedule, score the final state. Thin faces of :mod:`pipflow.household`; the domain-general
-steps (pddl.*, graph.dependencies, allocate.*, schedule) do the rest unchanged."""
+"""The household's own steps (the paper's AI2-THOR experiment on pipflow's own home simulator):
+load a household world with its robot team, write the team-level problem for a command, execute
+the schedule, score the final state. Thin faces of
+:class:`pipflow.household.domain.HouseholdDomain`, kept for the workflows that name them (the
+generic steps world.load, llm.problem, simulate and score reach the same methods); the
+domain-general steps (pddl.*, graph.dependencies, allocate.*, schedule) do the rest unchanged.
+Registered by pipflow's own entry point (``STEP_MODULES`` of :mod:`pipflow.steps`).
+
+The domain (its parser, UP, pybullet) is imported inside the step functions on purpose: listing
+steps or running a workflow that does not use them stays fast."""
 from __future__ import annotations
 
-import re
 from typing import Annotated
 
 from pipflow import Doc, PathStr, StepContext, step
+
+
+def _domain():
+    from pipflow.household.domain import HouseholdDomain  # deferred: see the module docstring
+
+    return HouseholdDomain()
 
 
 @step("household.load",
@@ -20,9 +31,7 @@ def load(
     seed: Annotated[int | None, Doc("vary the robots' start positions reproducibly (none: as in the file)")] = None,
 ) -> dict:
     """Raises WorldError (exit 2) listing each problem with file:line:col."""
-    from pipflow.household.world import load_world, select_team, vary_starts
-
-    world = vary_starts(select_team(load_world(ctx.resolve_path(path)), team), seed)
+    world = _domain().load_world(ctx.resolve_path(path), seed=seed, team=team)
     ctx.log(f"household world {world['name']}: {len(world['places'])} places, {len(world['objects'])} objects, "
             f"team {', '.join(world['robots'])}")
     return {"world": world}
@@ -43,17 +52,9 @@ def problem(
     """``goal`` keeps the command's conditions (counts included) for judging; ``concrete`` has the
     counts resolved to objects, which is what the problem asks for. Untranslatable commands raise
     TranslationError; impossible ones (slice a mug) raise Refusal with the reason."""
-    from pipflow.household.problem import write_problem
-    from pipflow.household.translator import translate
-
-    result = translate(command, world)
-    text = ctx.resolve_path(domain).read_text()
-    m = re.search(r"\(\s*domain\s+([^\s()]+)", text, flags=re.IGNORECASE)
-    pddl = write_problem(world, result["concrete"], domain=m.group(1) if m else "household")
-    ctx.write_artifact("goal.json", result)
-    ctx.write_artifact("problem.pddl", pddl)
+    result = _domain().read_offline(command, world, ctx.resolve_path(domain).read_text(), save=ctx.write_artifact)
     ctx.log(f"goal: {result['goal']}")
-    return {"problem": pddl, "goal": result["goal"], "concrete": result["concrete"], "constraints": [], "errors": []}
+    return {key: result[key] for key in ("problem", "goal", "concrete", "constraints", "errors")}
 
 
 @step("household.simulate",
@@ -71,10 +72,8 @@ def simulate(
     goal: Annotated[dict | None, Doc("goal conditions to judge the final state against")] = None,
     snapshots: Annotated[bool, Doc("save pybullet pictures of the start and the end")] = False,
 ) -> dict:
-    from pipflow.household.simulation import simulate as run
-
     out_dir = ctx.artifact_path("home-start.png").parent if snapshots else None
-    result = run(world, schedule, graph, goal, snapshots=snapshots, out_dir=out_dir, log=ctx.log)
+    result = _domain().simulate(world, schedule, graph, goal, snapshots=snapshots, out_dir=out_dir, log=ctx.log)
     ctx.metrics.update({k: result[k] for k in ("exe", "tc_max", "tc_avg", "gcr")})
     ctx.log(f"executed {result['executed']}/{len(schedule.get('subtasks', []))}, goal conditions "
             f"{result['conditions']['met']}/{result['conditions']['total']}")
@@ -98,6 +97,4 @@ def score(
 ) -> dict:
     """The same flat outputs as ``metrics.score`` (one shape per family), so a workflow or the
     bench reads ``success``/``gcr`` the same way in either domain."""
-    from pipflow.household.scoring import score_run
-
-    return score_run(world, goal, graph=graph, schedule=schedule, simulation=simulation)
+    return _domain().score(world, goal, graph=graph, schedule=schedule, simulation=simulation)
