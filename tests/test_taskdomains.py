@@ -240,3 +240,23 @@ def test_seeded_starts_are_one_rule_for_every_domain():
     with pytest.raises(WorldError) as err:
         seeded_starts(crowded, 1, [], **kw)
     assert "tiny.yaml" in str(err.value) and "no free start left on the floor for robot" in str(err.value)
+
+
+def test_every_simulate_and_score_step_declares_the_core():
+    """One shape per family, for every registered step of the two families (the generic ones and
+    the domains' own): the simulation core (the warehouse's older step names the final state
+    ``final_stock``) and the score core."""
+    from pipflow.engine.registry import default_registry
+    from pipflow.taskdomain import SCORE_CORE, SIMULATION_CORE
+
+    steps = list(default_registry())
+    simulates = [s for s in steps if "simulate" in s.name.split(".")]
+    scores = [s for s in steps if "score" in s.name.split(".")]
+    assert {"simulate", "simulate.pybullet", "household.simulate"} <= {s.name for s in simulates}
+    assert {"score", "metrics.score", "household.score"} <= {s.name for s in scores}
+    for s in simulates:
+        missing = set(SIMULATION_CORE) - {"final_state"} - set(s.outputs)
+        assert not missing and ({"final_state", "final_stock"} & set(s.outputs)), (s.name, missing)
+        assert all(s.outputs.get(k) == t for k, t in SIMULATION_CORE.items() if k in s.outputs), s.name
+    for s in scores:
+        assert {k: s.outputs.get(k) for k in SCORE_CORE} == SCORE_CORE, s.name
