@@ -138,6 +138,8 @@ class TaskDomain(ABC):
     rule_fields: ClassVar[tuple[str, ...]] = ()
     #: grounded decoding, when the domain offers it (None: the generator refuses ``grounded``)
     grounding: ClassVar[Grounding | None] = None
+    #: the switches its ``simulate`` reads from ``options`` (the generic step refuses others)
+    simulate_options: ClassVar[tuple[str, ...]] = ()
 
     # -- files it ships ------------------------------------------------------------------------
 

@@ -7,6 +7,7 @@ from __future__ import annotations
 from typing import Annotated
 
 from pipflow import Doc, PathStr, StepContext, step
+from pipflow.errors import InputError
 from pipflow.taskdomain import SCORE_CORE, SIMULATION_CORE, simulation_outputs
 from pipflow.taskdomains import declared_domain, task_domain
 
@@ -48,9 +49,14 @@ def simulate(
 ) -> dict:
     """The step's artifact folder is where a domain draws, when ``snapshots`` or its own options
     ask; the trajectories and event logs it keeps are artifacts too, not outputs."""
+    domain = task_domain(world)
+    unknown = sorted(set(options or {}) - set(domain.simulate_options))
+    if unknown:
+        raise InputError(f"simulate: options {', '.join(map(repr, unknown))} are not switches of the "
+                         f"{domain.name!r} simulation (known: {', '.join(domain.simulate_options) or 'none'})")
     out_dir = ctx.artifact_path("pictures").parent
-    result = task_domain(world).simulate(world, schedule, graph, goal, snapshots=snapshots, out_dir=out_dir,
-                                         log=ctx.log, save=ctx.write_artifact, **(options or {}))
+    result = domain.simulate(world, schedule, graph, goal, snapshots=snapshots, out_dir=out_dir,
+                             log=ctx.log, save=ctx.write_artifact, **(options or {}))
     outputs = simulation_outputs(result)
     ctx.metrics.update({k: outputs[k] for k in ("exe", "tc_max", "tc_avg", "tc_avg_moved", "gcr")})
     ctx.log(f"executed {outputs['executed']}/{len(schedule.get('subtasks', []))}, goal met: {outputs['goal_met']}"

@@ -149,6 +149,7 @@ def test_warehouse_simulation_through_the_generic_steps(tmp_path):
     trajectories as an artifact; the score reads the generic shape as it reads simulate.pybullet's."""
     import json
 
+    from pipflow.steps.world import simulate as simulate_step
     from pipflow.taskdomain import SCORE_CORE, SIMULATION_CORE
     from pipflow.warehouse.scoring import score_run
     from pipflow.warehouse.simulation import simulate as pybullet_run
@@ -163,6 +164,16 @@ def test_warehouse_simulation_through_the_generic_steps(tmp_path):
     assert sim["tc_max"] == pytest.approx(28.0) and sim["tc_avg_moved"] == pytest.approx(28.0, abs=1e-3)
     assert set(sim["details"]) == {"peak_load", "stray_units"} and sim["details"]["peak_load"]["shelf3"] == 18
     assert sim["pictures"] == []  # nothing drawn unless asked
+    drawn = simulate_step.func(StepContext("s", tmp_path / "drawn", base_dir=REPO), world=world, schedule=schedule,
+                               graph=graph, goal=goal, options={"picture": True})
+    assert drawn["pictures"] and all((tmp_path / "drawn" / name).is_file() for name in drawn["pictures"])
+    assert {k: v for k, v in drawn.items() if k != "pictures"} == {k: v for k, v in sim.items() if k != "pictures"}
+    with pytest.raises(InputError, match=r"options 'animaton' are not switches of the 'warehouse' simulation "
+                                         r"\(known: picture, animation\)"):
+        from pipflow.steps.world import simulate
+
+        simulate.func(StepContext("s", tmp_path / "s2", base_dir=REPO), world=world, schedule=schedule,
+                      options={"animaton": True})
     saved = json.loads((tmp_path / "simulate" / "trajectories.json").read_text())
     assert set(saved) == {"trajectories", "events"} and saved["trajectories"]["robot5"]
     assert set(scored) == set(SCORE_CORE) and scored["success"] and scored["violations"] == []

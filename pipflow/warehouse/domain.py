@@ -50,6 +50,7 @@ class WarehouseDomain(TaskDomain):
     default_prompt = "warehouse_problem"
     rule_fields = FIELD_KEYS
     grounding = Grounding(gbnf=grounding.gbnf, response_format=grounding.response_format, read=_read_grounded)
+    simulate_options = ("picture", "animation")
 
     def pddl_domain(self) -> Path:
         return data_file("domains/warehouse.pddl")
