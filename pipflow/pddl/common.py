@@ -15,6 +15,7 @@ from functools import lru_cache
 from pathlib import Path
 from typing import Any, Iterator
 
+from pipflow.goalcounts import from_limits
 from pipflow.pddl.deferred_configspace import defer as _defer_configspace
 from pipflow.pddl.upconfig import install as _cheap_config_lookup
 
@@ -35,6 +36,7 @@ def environment() -> Any:
     env = get_environment()
     env.credits_stream = None
     env.error_used_name = True
+    # deferred: pulls unified_planning.shortcuts and networkx (~600 ms; parse-only users need neither)
     from pipflow.pddl.transport import register
 
     register(env)
@@ -133,7 +135,6 @@ def stock_goals(problem: Any) -> tuple[dict[str, dict[str, Any]], list[str]]:
     cell's conditions merged into one goal value of :mod:`pipflow.goalcounts`: an int when an
     exact count is stated and agrees with the bounds, else ``{at_least, at_most}`` (a
     contradiction is kept so that the verifier names it)."""
-    from pipflow.goalcounts import from_limits
 
     cells: dict[tuple[str, str], list] = {}  # (shelf, product) -> [lo, hi, exact stated]
     other: list[str] = []

@@ -8,6 +8,8 @@ from __future__ import annotations
 
 from typing import Any
 
+from pipflow.pddl.names import pddl_name
+
 
 def plan_to_data(plan: Any) -> list[dict]:
     """UP SequentialPlan -> pipflow plan list."""
@@ -20,7 +22,6 @@ def data_to_plan(problem: Any, plan: list[dict]) -> Any:
     first step that uses an unknown action or object, or the wrong number of arguments."""
     from unified_planning.plans import ActionInstance, SequentialPlan
 
-    from pipflow.pddl.names import pddl_name
 
     actions = []
     for i, item in enumerate(plan, 1):

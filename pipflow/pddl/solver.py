@@ -25,6 +25,9 @@ from typing import Any
 
 from pipflow.errors import InputError, PlanningError
 from pipflow.liberrors import SCIP, UNIFIED_PLANNING, library_errors
+from pipflow.pddl.common import environment
+from pipflow.pddl.convert import plan_to_data
+from pipflow.pddl.java import ensure_java
 
 DEFAULT_ENGINE = "pipflow-transport"
 JAVA_ENGINES = ("enhsp",)
@@ -68,7 +71,6 @@ class SolveResult:
 def planner_names() -> list[str]:
     """The one-shot planners installed in UP (``enhsp``, ``pipflow-transport``, ...), without
     UP's meta-engines (``oversubscription[...]``) and non-planners (validators, compilers)."""
-    from pipflow.pddl.common import environment
 
     factory = environment().factory
     names = []
@@ -133,8 +135,6 @@ def solve_problem(problem: Any, engine: str = DEFAULT_ENGINE, params: dict | Non
     """Solve UP ``problem`` with ``engine``; never raises for an engine-side failure, i.e. an
     error of UP or of the engine it runs (an engine that is not installed is the user's:
     :class:`InputError`)."""
-    from pipflow.pddl.common import environment
-    from pipflow.pddl.convert import plan_to_data
     from unified_planning.engines import PlanGenerationResultStatus as S
     from unified_planning.shortcuts import OneshotPlanner
 
@@ -143,7 +143,6 @@ def solve_problem(problem: Any, engine: str = DEFAULT_ENGINE, params: dict | Non
     if engine not in env.factory.engines:
         check_engine(engine)
     if engine.startswith(JAVA_ENGINES):
-        from pipflow.pddl.java import ensure_java
 
         try:
             ensure_java()

@@ -60,7 +60,9 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any, Callable, Optional
 
+from pipflow.pddl.convert import data_to_plan, initial_numbers
 from pipflow.pddl.linear import NotLinear, comparison, conjuncts, key_of
+from pipflow.pddl.writer import magnitudes
 
 ENGINE_NAME = "pipflow-transport"
 ACTION = "move-product"
@@ -263,7 +265,6 @@ def read_goal(problem: Any, stock: str) -> dict[tuple[str, str], Range]:
 
 def instance_from_problem(problem: Any) -> Instance:
     """Read a transport problem out of a UP problem; :class:`NotTransport` if it does not fit."""
-    from pipflow.pddl.convert import initial_numbers
 
     schema = read_schema(problem)
     action = problem.action(schema.action)
@@ -302,7 +303,6 @@ def goal_range(value: Any) -> Range:
 
 def instance_from_world(world: dict, goal: dict[str, dict[str, Any]]) -> Instance:
     """The instance a world dict and a goal describe (with the magnitudes the writer writes)."""
-    from pipflow.pddl.writer import magnitudes
 
     shelves, products = list(world["shelves"]), list(world["products"])
     stock = {(s, p): world["stock"].get(s, {}).get(p, 0) for s in shelves for p in products}
@@ -988,7 +988,6 @@ class TransportPlanner(Engine, OneshotPlannerMixin):
 
     def _solve(self, problem: Any, heuristic: Optional[Callable] = None, timeout: Optional[float] = None,
                output_stream: Any = None) -> PlanGenerationResult:
-        from pipflow.pddl.convert import data_to_plan
 
         S = PlanGenerationResultStatus
         started = time.monotonic()

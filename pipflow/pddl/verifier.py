@@ -21,6 +21,10 @@ import re
 from dataclasses import dataclass, field
 from typing import Any
 
+from pipflow.goalcounts import value_problems
+from pipflow.pddl.common import environment, format_plan
+from pipflow.pddl.convert import data_to_plan
+from pipflow.suggest import closest
 from pipflow.taskdomains import task_domain
 
 _FLUENT = re.compile(r"([A-Za-z][\w-]*)\(([^()]*)\)")
@@ -41,9 +45,8 @@ def goal_problems(world: dict, goal: dict[str, dict[str, Any]]) -> tuple[list[st
     Unknown names and malformed values are messages (the problem is wrong, a better problem may
     fix it); goals no final state of the world meets are a refusal (no problem can fix the
     command): :func:`pipflow.pddl.feasibility.infeasibility_reasons` says why."""
-    from pipflow.goalcounts import value_problems
+    # deferred: pulls networkx (~200 ms; paid when a goal is checked, not by importers of the verifier)
     from pipflow.pddl.feasibility import infeasibility_reasons
-    from pipflow.suggest import closest
 
     messages = []
     for s, items in goal.items():
@@ -88,8 +91,6 @@ def _explain_inapplicable(problem: Any, plan: Any, index: int, ups_message: str)
 
 def verify_plan(problem: Any, plan: list[dict] | None, world: dict | None = None) -> VerifyReport:
     """Validate ``plan`` on UP ``problem`` and check the problem's goal against ``world``."""
-    from pipflow.pddl.common import environment, format_plan
-    from pipflow.pddl.convert import data_to_plan
     from unified_planning.engines import ValidationResultStatus
     from unified_planning.shortcuts import PlanValidator
 
