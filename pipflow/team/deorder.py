@@ -40,6 +40,7 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any, Iterable
 
+from pipflow.pddl.convert import initial_numbers
 from pipflow.pddl.linear import Comparison, Linear, NotLinear, comparison, conjuncts, key_of, linear
 
 Key = tuple
@@ -115,7 +116,6 @@ def numeric_view(problem: Any, grounded: list) -> list[Numeric]:
     """Split every ground action (``dependency.GroundAction``, with ``objects``: parameter ->
     object name) into linear conditions, additive deltas and opaque reads/writes. Fluents that no
     action of the domain writes are static: replaced by their initial values."""
-    from pipflow.pddl.convert import initial_numbers
 
     written = {eff.fluent.fluent().name for a in problem.actions for eff in getattr(a, "effects", [])}
     init = initial_numbers(problem)
@@ -190,7 +190,6 @@ class _Envelope:
     """Per (action, condition): base value, and each other action's whole and harmful change."""
 
     def __init__(self, problem: Any, views: list[Numeric]):
-        from pipflow.pddl.convert import initial_numbers
 
         init = initial_numbers(problem)
         self.views = views

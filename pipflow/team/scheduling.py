@@ -20,6 +20,7 @@ class Timeline:
     """Robots' positions and free times, and subtasks' end times, as subtasks are committed."""
 
     def __init__(self, world: dict, travel=None, speed: float = 1.0, handling: float = 2.0):
+        # deferred: pulls networkx and numpy (~350 ms; a schedule without travel times needs neither)
         from pipflow.team.travel import TravelMap
 
         if not 0 < speed < math.inf:  # NaN fails too: it would make every time NaN
