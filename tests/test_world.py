@@ -89,10 +89,11 @@ def test_task_names_checked(tmp_path):
 
 
 def test_seeded_starts_are_free_and_repeatable():
-    from pipflow.warehouse.world import inside_footprint, with_random_starts
+    from pipflow.warehouse.starts import vary_starts
+    from pipflow.warehouse.world import inside_footprint
 
     w = load_world(ROOT / "benchmarks/warehouse/world.yaml")
-    a, b = with_random_starts(w, 3), with_random_starts(w, 3)
+    a, b = vary_starts(w, 3), vary_starts(w, 3)
     assert a["robots"] == b["robots"] and a["robots"] != w["robots"]
     for r in a["robots"].values():
         assert not any(inside_footprint(r["start"], s) for s in w["shelves"].values())
@@ -123,9 +124,9 @@ def test_kind_and_tags_normalized():
 
 
 def test_seeded_starts_keep_kind_and_tags():
-    from pipflow.warehouse.world import with_random_starts
+    from pipflow.warehouse.starts import vary_starts
 
-    w = with_random_starts(world_from_text(TEAM, "kinds.yaml"), 1)
+    w = vary_starts(world_from_text(TEAM, "kinds.yaml"), 1)
     assert w["robots"]["lifter"]["kind"] == "forklift" and w["robots"]["lifter"]["tags"] == ["day_shift", "cold_store"]
     assert w["robots"]["scout"]["tags"] == []
 

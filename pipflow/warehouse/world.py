@@ -20,7 +20,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-from pipflow.errors import Diagnostic, Location, TaskFileError, WorldError
+from pipflow.errors import Diagnostic, Location, TaskFileError
 from pipflow.floorplan import inside_footprint, layout_diagnostics, on_floor
 from pipflow.goalcounts import is_bound, value_problems
 from pipflow.suggest import did_you_mean
@@ -276,30 +276,6 @@ def load_tasks(path: str | Path) -> dict:
               "feasible": t.get("feasible", True), "expect": t.get("expect"),
               "construction": t.get("construction")} for t in data["tasks"]]
     return {"path": file, "world_path": str(world_path), "world": world, "tasks": tasks}
-
-
-def with_random_starts(world: dict, seed: int, clearance: float = 0.5) -> dict:
-    """A copy of ``world`` whose robots start at seeded random floor points, each at least
-    ``clearance`` from every shelf footprint and from the other starts (benchmarks vary the
-    starts by seed). Points are on a 0.5 m lattice so that runs are easy to read."""
-    import random
-
-    rng = random.Random(seed)
-    out = {**world, "robots": {}}
-    floor, taken = world["floor"], []
-    for name, robot in world["robots"].items():
-        for _ in range(10000):
-            p = [rng.randint(0, int(floor["width"] * 2)) / 2, rng.randint(0, int(floor["height"] * 2)) / 2]
-            blocked = any(s["x"] - clearance <= p[0] <= s["x"] + s["width"] + clearance
-                          and s["y"] - clearance <= p[1] <= s["y"] + s["depth"] + clearance
-                          for s in world["shelves"].values())
-            if not blocked and all(abs(p[0] - q[0]) + abs(p[1] - q[1]) >= 1 for q in taken):
-                break
-        else:
-            raise WorldError([Diagnostic(Location(world["path"]), f"no free start point for robot {name!r}")])
-        taken.append(p)
-        out["robots"][name] = normalize_robot({**robot, "start": p})
-    return out
 
 
 # ---------------------------------------------------------------------------------------------
