@@ -577,6 +577,7 @@ def test_an_english_verb_is_never_taken_for_a_misspelt_robot_name() -> None:
      [{"never": ["stacker1", "loader"], "product": "battery"}, {"never": ["stacker1", "loader"], "product": "brake_pad"}]),
     # a bound with an add verb counts from now (it was "holds at least 2": met already by 3)
     ("Bring at least 2 batteries to the wash bay.", {"wash-bay": {"battery": {"at_least": 5}}}, []),
+    ("Clear the north yard of its batteries.", {"north yard": {"battery": 0}}, []),
     ("Pull 1 kc-90 from the north yard over to pit 2.", {"north yard": {"kc-90": 1}, "pit2": {"kc-90": 1}}, []),
     ("Move 2 batteries north yard to pit 2.", {"north yard": {"battery": 2}, "pit2": {"battery": 2}}, []),
     ("Add 1 brake pad each to the wash bay and pit 2.", {"wash-bay": {"brake_pad": 2}, "pit2": {"brake_pad": 1}}, []),

@@ -297,6 +297,7 @@ goal: there_be items loc                                  -> g_set
     | places (modal ("not" | "never") | "shouldnt" | "mustnt" | "cant" | "cannot") ("have" | "hold" | "contain" | "keep") ("any" | "anything")? ihead (lsep ihead)* left? -> g_none_of
     | emptyv ihead from places                              -> g_empty_item
     | emptyv pitem_plain                                     -> g_empty_item
+    | emptyv places "of" its? ihead                          -> g_empty_item
     | ("i" | "we") ("dont" | "do" "not") ("want" | "need") ("any" | "anything")? ihead (lsep ihead)* left? loc -> g_none_in
     | places modal? be "full" "of" only? ihead only?         -> g_fill
     | places modal? "be" "filled" "up"? "with" only? ihead only? -> g_fill
