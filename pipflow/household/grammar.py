@@ -24,7 +24,7 @@ _RULES = r"""
 start: _sep* item (_sep+ item | _sep* thengap)* _sep*
 _sep: COMMA | END | @AND | @THEN | @BUT
 
-?item: change | toggle | put | gap | away | trash | chill | request | unwant | ensure | observe | cue | meal
+?item: change | toggle | put | gap | away | trash | chill | request | unwant | ensure | observe | cue | meal | after | reason
 
 change: _vstate @UP? things @PIECES? via? exception? @HERE?
       | _vstate things @UP via? exception?
@@ -51,6 +51,7 @@ put: _vput @UP? things source? target? exception?
    | _vput @OUT things | _vput things @OUT
    | _vput @UP? things source @AND target
    | _vput things @AWAY target
+   | things @SHOULD? (@GOES | @BE) target
    | _vput @AWAY things target
    | @V_LEAVE things target
 _vput: @V_PUT | @V_THROW
@@ -84,6 +85,8 @@ wish: things (@IS | @SHOULD @BE) not? state
 not: @NOT
 state: @ADJ | @V_OPEN | @V_SHUT | @V_CLEAN | @V_WARM | @V_STATE | on | off | @TOGGLED onoff | @V_TOGGLE onoff
 
+after: @ONCE @SUBJ @HAVE? state things
+reason: @IT @IS (@INTENS | @TOO)* @REASON
 meal: (@V_MAKE | @V_PREPARE | _vstate) @THE? @MEAL @HERE?
     | @SUBJ? (@WANT | @NEED) @THE? @MEAL
 
@@ -93,6 +96,7 @@ cue: @NOBODY @IS? activity (@TO | @ON | @AT)? things? @ANYMORE?
    | @SUBJ? @DONOT @NEED things (on | @ANYMORE)?
    | @NOBODY @NEED things @ANYMORE?
    | @SUBJ? @IS? @DONE things @ANYMORE?
+   | @SUBJ @HAVE? @FINISHED activity things?
    | things @IS @NOT @NEEDED @ANYMORE?
    | @IT @IS (@INTENS | @TOO)* lightcue @HERE?
    | @SUBJ @CANNOT @SEE @HERE?
@@ -110,6 +114,7 @@ sel: quant? @OF? @THE? count? adj* noun @DOOR? rel?
    | @THE @THING rel
    | quant? @OF? @IT
    | @THE adj+ @ONES
+   | @BOTH
    | @THE @DOOR
 quant: @ALL | @EVERY | @BOTH
 count: NUM @OF? | NUM @UNIT

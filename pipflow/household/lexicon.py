@@ -130,6 +130,16 @@ _add("NEED", "need,needs")
 _add("NEEDED", "needed,necessary,required,in use")
 #: "we are done with the laptop": the thing is not needed (a state cue, like "we do not need")
 _add("DONE", "done with,finished with,through with")
+#: "we have finished reading": an activity that ended (a state cue, like "nobody is reading")
+_add("FINISHED", "finished,stopped,done")
+_add("HAVE", "have,has")
+#: "once you have washed the pan, put it ...": a clause done first
+_add("ONCE", "once,after,when")
+#: "X goes in P", "X belongs on P": where X should end
+_add("GOES", "goes,belongs,belong")
+#: reasons that ask for nothing by themselves ("it is late, turn off the TV"): dropped before a
+#: request, refused alone
+_add("REASON", "late,bedtime,time for bed,night time")
 _add("DONOT", "do not,does not,did not,no longer,dont")
 _add("ANYMORE", "anymore,any more,any longer,for now,for the night,tonight,right now")
 _add("NOBODY", "nobody,no one,noone,none of us")
@@ -187,7 +197,8 @@ FILLER = {("please",), ("kindly",), ("just",), ("quickly",), ("now",), ("for", "
           ("for", "me", "please"), ("me",), ("ok",), ("okay",), ("already",), ("again",),
           ("can", "someone"), ("could", "someone"), ("someone",), ("somebody",), ("can", "somebody"),
           ("us",), ("would", "you", "mind"), ("do", "you", "mind"), ("would", "you", "please"),
-          ("could", "you", "please"), ("if", "you", "would"), ("if", "you", "could")}
+          ("could", "you", "please"), ("if", "you", "would"), ("if", "you", "could"),
+          ("do", "not", "forget", "to"), ("remember", "to"), ("make", "sure", "to"), ("you", "can")}
 #: filler words a misspelling may be read as ("plese"): only these, long and close to no
 #: content word, so that a misspelt content word is never dropped as politeness
 FILLER_TYPO_TARGETS = {"please", "thanks"}
@@ -232,6 +243,8 @@ def normalize(text: str) -> str:
     t = re.sub(r"\bwon't\b", "will not", t)
     t = re.sub(r"\b(it|that|there|what|who)'s\b", r"\1 is", t)
     t = re.sub(r"\blet's\b", "let us", t)
+    t = re.sub(r"'ve\b", " have", t)
+    t = re.sub(r"'ll\b", " will", t)
     # "the oven's open", "the TV's still on": 's before a state word is "is", not a possessive
     t = re.sub(r"'s(?=\s+(?:still\s+|not\s+|too\s+|very\s+|so\s+)?(?:" + "|".join(_STATE_WORDS) + r")\b)", " is", t)
     t = re.sub(r"\b(i|we|you)'d\b", r"\1 would", t)

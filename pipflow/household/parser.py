@@ -65,6 +65,10 @@ def world_phrases(world: dict) -> dict[tuple[str, ...], list[dict]]:
         listed_plural = any(" ".join(base) in plurals(" ".join(words_of(o))) for o in others) or \
             (kind == "category" and base[-1].endswith("s") and not base[-1].endswith("ss"))
         forms = [(tuple(base), listed_plural)] + [(tuple(words_of(p)), True) for p in plurals(" ".join(base))]
+        if kind == "object" and len(base) == 2 and "of" not in base:
+            # "water bottle" is also "a bottle of water", "bottles of water"
+            forms += [((base[1], "of", base[0]), listed_plural)] + \
+                [((p, "of", base[0]), True) for p in plurals(base[1])]
         for words, plural in forms:
             readings = index.setdefault(words, [])
             reading = {"kind": kind, "name": name, "plural": plural}
@@ -327,8 +331,10 @@ class Builder:
             out["ones"] = True   # "except the clean ones": of the things just named
         if "EVERYTHING" in toks or "THING" in toks:
             out["everything"] = True
-        if "IT" in toks:
+        if "IT" in toks or toks == ["BOTH"]:   # "them", "put both on the table"
             out["pronoun"] = True
+        if toks == ["BOTH"]:
+            out.update(all=True, both=True)
         count = self._sub(node, "count")
         if count is not None:
             out["count"] = int(self.tag_of(count.children[0]).value)
@@ -415,7 +421,7 @@ class Builder:
         elif kind == "chill":
             verb = next(t for t in self._tokens(node) if self._cls(t) == "V_CHILL")
             st = {"op": "put", "things": things, "to": {"words": self.tag_of(verb).words, "quality": COLD}}
-        elif kind == "request":
+        elif kind in ("request", "after"):   # "after": "once you have washed the pan, ..." (done first)
             st = {"op": "change", "things": things, "to": self.state(self._sub(node, "state"))}
         elif kind == "unwant":   # "don't leave the fridge open", "the TV shouldn't be on": the other polarity
             st = {"op": "change", "things": things, "to": OPPOSITE[self.state(self._sub(node, "state"))]}
@@ -469,5 +475,9 @@ class Builder:
         items = [c for c in tree.children if isinstance(c, Tree)]
         statements: list[dict] = []
         for item in items:
+            if item.data == "reason":   # "it is late, ...": why, not what
+                continue
             statements += self.ensure(item) if item.data == "ensure" else [self.statement(item)]
+        if not statements:
+            raise TranslationError(f"{self.command.strip()!r} gives a reason but asks for nothing; say what to do")
         return {"domain": "household", "command": self.command, "statements": statements}

@@ -84,6 +84,7 @@ class Resolver:
         self.history: list[list[str]] = []                     # what each statement before named, in order
         self.cue_defaults: list[tuple[str, str, str, list[str]]] = []   # (category, state, words, members)
         self.via_placed: dict[str, str] = {}                   # objects put where an action happens -> place
+        self.said: list[list[str]] = []                        # the things each statement before was about
 
     # selectors -------------------------------------------------------------------------
     def _candidates(self, sel: dict, words: str) -> tuple[list[str], bool]:
@@ -102,6 +103,17 @@ class Resolver:
             if len(doors) != 1:
                 raise TranslationError(f"'{words}': which door? (say 'the fridge door')")
             return doors, False
+        if sel.get("pronoun") and sel.get("both") and len(self.last) != 2:
+            # "heat the tomato and slice the lettuce, then put both on the table": the two things of
+            # the statements before, when they add up to exactly two
+            two: list[str] = []
+            for things in reversed(self.said):
+                two = list(dict.fromkeys(things + two))
+                if len(two) >= 2:
+                    break
+            if len(two) != 2:
+                raise TranslationError(f"'{words}': which two things does '{sel['words']}' mean?")
+            return two, False
         if sel.get("pronoun"):
             if not self.last and not self.last_places:
                 raise TranslationError(f"'{words}': '{sel['words']}' refers to nothing said before it")
@@ -345,6 +357,7 @@ class Resolver:
             self.history.append(self.before)
         self.last_any = []
         self._statement(st, op, words)
+        self.said.append(list(self.last))
         if op != "observe":   # "the oven is open, close it": the observation was the reason
             acted = set(self.last) | set(self.last_any)
             self.observed = [o for o in self.observed if not set(o[0]) <= acted]
@@ -472,8 +485,9 @@ class Resolver:
             named = [(n, True) for names, _, _ in fits for n in names]
             self.observed = [o for o in self.observed if o not in fits]
         else:
-            if not cats:
-                raise TranslationError(f"'{words}': which thing? ('{st['cue']}' names nothing to switch)")
+            if not cats:   # decided at the end: the reason for a request the command makes, or asked
+                self.cue_defaults.append(("", cond, words, []))
+                return
             named = [(n, False) for n in members(self.world, cats[0]) if applies(self.world, n, cond)]
             if not named:
                 raise Refusal(f"'{words}': nothing of the {cats[0]} category can be switched {cond}")
@@ -529,6 +543,13 @@ class Resolver:
         """A cue that names nothing means its whole category, unless the command itself asks the
         same state of one of its members (then the cue is only the reason)."""
         for cat, cond, words, names in self.cue_defaults:
+            if not cat:   # "we have finished listening, switch off the radio": the reason for a request
+                asked = [n for n, preds in self.goal.state.items()
+                         if any(c.cond == cond and c.explicit and c.words != words for c in preds.values())]
+                if not asked:
+                    raise TranslationError(f"'{words}': which thing? (it names nothing to switch)")
+                self.goal.notes.append(f"'{words}' is the reason for {', '.join(asked)} {cond}")
+                continue
             asked = [n for n in names if any(c.cond == cond and c.explicit and c.words != words
                                              for c in self.goal.state.get(n, {}).values())]
             if asked:
