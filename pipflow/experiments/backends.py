@@ -39,7 +39,12 @@ from pathlib import Path
 from typing import Any, Callable
 
 from pipflow import llmslot
+from pipflow.engine.registry import default_registry
+from pipflow.engine.runner import find_workflow, resolve_inputs
+from pipflow.engine.validate import load_workflow
 from pipflow.errors import UserError
+from pipflow.experiments.runspec import RunSpec, run_one
+from pipflow.language.prompting import find_template
 
 #: how long the client waits for a scheduler / workers before giving up (seconds)
 CONNECT_TIMEOUT = 60
@@ -139,10 +144,6 @@ def _text_files(folder: Path, pattern: str) -> list[Path]:
 def build_bundle(workflow_ref: str, inputs: dict[str, Any]) -> Bundle:
     """The bundle of one variant: ``inputs`` are the bench's given inputs (text, like ``-i``)
     plus the task file's ``world``. Raises :class:`UserError` for an invalid workflow or input."""
-    from pipflow.engine.registry import default_registry
-    from pipflow.engine.runner import find_workflow, resolve_inputs
-    from pipflow.engine.validate import load_workflow
-    from pipflow.language.prompting import find_template
 
     registry = default_registry()
     wf = load_workflow(find_workflow(workflow_ref), registry)
@@ -214,7 +215,6 @@ def unpack_record(data: bytes, target: Path) -> Path:
 def run_remote(payload: dict) -> dict:
     """Run one (variant, task, seed) on a worker from its payload (bundle + run fields); never
     raises for a failed run. Returns the scored row plus ``record_zip`` (the run record)."""
-    from pipflow.experiments.runspec import RunSpec, run_one
 
     configure_llm_limits(payload.get("llm_limits"), "dask" if payload.get("llm_limits") else None)
     root = materialize(payload["bundle"], payload["digest"])
@@ -290,7 +290,6 @@ class LocalBackend:
     def run(self, specs: list, on_row: Callable[[dict], None]) -> None:
         import concurrent.futures as cf
 
-        from pipflow.experiments.runspec import run_one
 
         if self.jobs <= 1:
             for spec in specs:

@@ -35,8 +35,18 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
+from pipflow.engine.cliargs import key_values
+from pipflow.engine.registry import default_registry
+from pipflow.engine.runner import find_workflow, resolve_inputs
+from pipflow.engine.store import atomic_write, read_json, write_json
+from pipflow.engine.validate import load_workflow
 from pipflow.errors import UserError
+from pipflow.experiments.backends import build_bundle, make_backend, parse_backend, parse_limits, run_key
+from pipflow.experiments.benchdomains import domain_named, domain_of
+from pipflow.experiments.benchstats import aggregate_task, summarize
 from pipflow.experiments.runspec import RunSpec, recorded_outputs, run_one  # noqa: F401  (the bench's face: tests, scripts)
+from pipflow.records.compare import variants_side_by_side
+from pipflow.version import __version__
 
 RESULT_FIELDS = ["variant", "task", "seed", "status", "success", "understood", "misread", "goal_met", "gcr", "exe",
                  "ru", "tc_max", "tc_avg", "tc_avg_moved", "makespan", "planned", "executed", "seconds", "error",
@@ -108,8 +118,6 @@ def row_path(out: Path, key: tuple[str, str, int]) -> Path:
 
 def read_row(out: Path, key: tuple[str, str, int]) -> dict | None:
     """The stored row of a run, or None (missing, torn or of another run)."""
-    from pipflow.engine.store import read_json
-    from pipflow.experiments.backends import run_key
 
     try:
         row = read_json(row_path(out, key))
@@ -150,10 +158,6 @@ def check_variants(specs: list[RunSpec]) -> dict[tuple, dict[str, str]]:
 
     Raises :class:`UserError` naming the variant (and the task, when only one task's inputs are
     wrong): a bench that cannot run is an error of the bench, not a table of zero scores."""
-    from pipflow.engine.registry import default_registry
-    from pipflow.engine.runner import find_workflow, resolve_inputs
-    from pipflow.engine.validate import load_workflow
-    from pipflow.experiments.backends import build_bundle
 
     registry = default_registry()
     files: dict[tuple, dict[str, str]] = {}
@@ -198,7 +202,6 @@ def _run_inputs(spec: RunSpec) -> dict[str, Any]:
 def fingerprint(spec: RunSpec, files: dict[str, str]) -> dict:
     """What defines one run: the hashes of the files it reads, its inputs, its task, its seed and
     pipflow's version. Two runs with equal fingerprints are the same experiment."""
-    from pipflow.version import __version__
 
     return {"files": dict(sorted(files.items())), "inputs": {k: str(v) for k, v in sorted(_given(spec).items())},
             "task": spec.task, "seed": int(spec.seed), "pipflow": __version__}
@@ -243,8 +246,6 @@ def run_bench(config: BenchConfig, progress: bool = True, on_row=None) -> dict:
     and a row with another fingerprint is refused (:class:`UserError` saying what differs).
     ``on_row(row)`` is called after each row is stored (tests use it to interrupt or to kill a
     worker)."""
-    from pipflow.experiments.backends import make_backend, run_key
-    from pipflow.experiments.benchdomains import domain_of
 
     domain = domain_of(config.tasks_file)
     tasks_doc = domain.load_tasks(Path(config.tasks_file))
@@ -283,7 +284,6 @@ def run_bench(config: BenchConfig, progress: bool = True, on_row=None) -> dict:
 
 def _resumable(out: Path, specs: list[RunSpec]) -> dict[tuple, dict]:
     """The stored rows of runs with this configuration; refuses rows of another one."""
-    from pipflow.experiments.backends import run_key
 
     done: dict[tuple, dict] = {}
     clashes: list[str] = []
@@ -312,8 +312,6 @@ def _execute(backend, todo: list[RunSpec], done: dict, out: Path, progress: bool
     ``--resume`` after the fix runs it). Returns how many runs finished here."""
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 
-    from pipflow.engine.store import write_json
-    from pipflow.experiments.backends import run_key
 
     fresh = 0
     by_key = {run_key(s): s for s in todo}
@@ -348,7 +346,6 @@ def _execute(backend, todo: list[RunSpec], done: dict, out: Path, progress: bool
 
 
 def _results(rows: list[dict], tasks: list[dict], config: BenchConfig, wall: float, domain: str) -> dict:
-    from pipflow.experiments.benchstats import aggregate_task, summarize
 
     by_variant: dict[str, list[dict]] = {}
     for row in rows:
@@ -408,7 +405,6 @@ def markdown_table(results: dict) -> str:
     """The paper's table for the task file's domain: by default per task SR (%), understood
     (%), misread runs and travel cost max/avg (m); a domain may group it otherwise (its
     ``bench_table``, e.g. per category)."""
-    from pipflow.experiments.benchdomains import domain_named
 
     config = results.get("config") or {}
     domain = domain_named(config.get("domain"))
@@ -441,7 +437,6 @@ def markdown_table(results: dict) -> str:
 
 
 def _write(out: Path, rows: list[dict], results: dict) -> None:
-    from pipflow.engine.store import atomic_write, write_json
 
     write_json(out / "results.json", results)
     write_json(out / "runs.json", rows)
@@ -459,7 +454,6 @@ def chosen_backend(args: argparse.Namespace) -> str:
 
     Why the alias is read here and not by argparse into one destination: given both with different
     values, the bench would run on whichever came last; it refuses instead (exit 2)."""
-    from pipflow.experiments.backends import parse_backend
 
     backend, old = getattr(args, "backend", None), getattr(args, "executor", None)
     if old is not None:
@@ -476,13 +470,11 @@ def chosen_backend(args: argparse.Namespace) -> str:
 
 def bench_main(args: argparse.Namespace) -> int:
     """The CLI entry: build the config from arguments, run, print the table."""
-    from pipflow.engine.cliargs import key_values
 
     stamp = _dt.datetime.now(_dt.timezone.utc).strftime("%Y%m%dT%H%M%SZ")
     tasks_file = Path(args.tasks)
     if not tasks_file.exists():
         raise UserError(f"{tasks_file}: no such task file")
-    from pipflow.experiments.backends import parse_limits
 
     backend = chosen_backend(args)  # a typo fails before anything runs
     resume = bool(getattr(args, "resume", False))
@@ -505,7 +497,6 @@ def bench_main(args: argparse.Namespace) -> int:
     results = run_bench(config, progress=not args.quiet)
     print(markdown_table(results))
     if len(results.get("variants", [])) > 1:
-        from pipflow.records.compare import variants_side_by_side
 
         print(variants_side_by_side(results, json.loads((config.out / "runs.json").read_text())))
     print(f"results: {config.out / 'results.json'}")

@@ -13,7 +13,12 @@ from typing import Any
 
 import yaml
 
+from pipflow.engine.executor import RunOptions
+from pipflow.engine.expr import resolve
+from pipflow.engine.runner import run_workflow
+from pipflow.engine.store import read_json
 from pipflow.errors import UserError
+from pipflow.experiments.benchdomains import domain_named
 
 
 @dataclass(frozen=True)
@@ -33,10 +38,6 @@ class RunSpec:
 def run_one(spec: RunSpec) -> dict:
     """Run and score one (variant, task, seed) in this process; never raises. A run that ends in
     a user error is marked ``user_error`` (the bench stops on it: see :func:`_execute`)."""
-    from pipflow.engine.executor import RunOptions
-    from pipflow.engine.runner import run_workflow
-    from pipflow.experiments.benchdomains import domain_named
-    from pipflow.engine.store import read_json
 
     task = spec.task
     row: dict[str, Any] = {"variant": spec.variant, "task": task["id"], "seed": spec.seed}
@@ -78,8 +79,6 @@ def recorded_outputs(run_dir: Path, names: tuple[str, ...]) -> dict:
     """The workflow outputs ``names`` of a run that did not finish, evaluated over the step outputs
     its record holds: a run that failed after resolving its goal (in allocation, say) still shows
     what it understood. An output whose steps did not finish is left out."""
-    from pipflow.engine.expr import resolve
-    from pipflow.engine.store import read_json
 
     try:
         snapshot = yaml.safe_load((run_dir / "workflow.yaml").read_text(encoding="utf-8")) or {}
