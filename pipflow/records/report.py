@@ -28,8 +28,10 @@ import re
 from pathlib import Path
 from typing import Any
 
+from pipflow import pictures
 from pipflow.errors import InputError
 from pipflow.goalcounts import describe, holds, is_bound, value_problems
+from pipflow.yamlsource import read_source, safe_load
 
 _CHECK_SCRIPT = """<script>
 window.addEventListener('load', function () {
@@ -149,7 +151,6 @@ def _find(steps, test) -> tuple[str, Path, dict] | None:
 
 
 def _run_body(d: Path) -> str:
-    from pipflow import pictures
 
     info = _read(d / "run.json", {}) or {}
     info.update(_read(d / "status.json", {}) or {})
@@ -495,7 +496,6 @@ def _bench_config(results: dict, config: dict) -> str:
 
 def _task_commands(config: dict) -> dict[str, str]:
     """Each task's command, read back from the bench's task file (empty when it is gone)."""
-    from pipflow.yamlsource import read_source, safe_load
 
     try:
         doc = safe_load(read_source(config.get("tasks") or "", "task file"))
@@ -541,9 +541,7 @@ def _rel(d: Path, run_dir: str | None) -> str | None:
 
 def _bench_overview(variants: list[dict], runs: list[dict], path: Path) -> None:
     """SR and TC-max per task, one bar per variant; TC-max bars carry the spread over seeds."""
-    from pipflow.pictures import _plt
-
-    plt = _plt()
+    plt = pictures._plt()  # matplotlib loads here, on first drawing
     ids = [str(t.get("id")) for t in variants[0].get("tasks", [])]
     x = list(range(len(ids)))
     width = 0.8 / max(1, len(variants))
