@@ -29,6 +29,7 @@ def __getattr__(name: str):
     """``run``, ``bench`` and ``Run`` load the engine's executor (networkx and the rest) on first
     use, so that a step plugin's ``from pipflow import step`` stays a light import."""
     if name in ("run", "bench", "Run"):
+        # deferred: pulls networkx and jsonschema (the executor); `from pipflow import step` stays light
         from pipflow import api
 
         return getattr(api, name)

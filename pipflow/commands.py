@@ -11,6 +11,7 @@ import argparse
 from pathlib import Path
 
 from pipflow.engine.cliargs import positive_int
+from pipflow.records.compare import compare_text
 
 
 def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -> None:
@@ -56,12 +57,14 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
 
 
 def cmd_bench(args: argparse.Namespace) -> int:
+    # deferred: pulls networkx and jsonschema (the engine's runner; every CLI command loads this module)
     from pipflow.experiments.benchmarking import bench_main
 
     return bench_main(args)
 
 
 def cmd_report(args: argparse.Namespace) -> int:
+    # deferred: ~30 ms of import (report, pictures); every CLI command loads this module
     from pipflow.records.report import write_report
 
     print(write_report(Path(args.dir), Path(args.output) if args.output else None))
@@ -69,14 +72,13 @@ def cmd_report(args: argparse.Namespace) -> int:
 
 
 def cmd_view(args: argparse.Namespace) -> int:
-    from pipflow.records.view import serve
+    from pipflow.records.view import serve  # deferred: pulls http.server (~30 ms; every CLI command loads this module)
 
     serve(args.dir or getattr(args, "runs_dir", None) or "runs", port=args.port, open_browser=not args.no_browser)
     return 0
 
 
 def cmd_compare(args: argparse.Namespace) -> int:
-    from pipflow.records.compare import compare_text
 
     print(compare_text(Path(args.a), Path(args.b)))
     return 0
