@@ -16,9 +16,14 @@ from typing import Any, Sequence
 
 import yaml
 
-from pipflow.errors import PipflowError, UserError
+from pipflow.errors import PipflowError, Refusal, UserError
 
+from .cache import StepCache
 from .cliargs import key_values, positive_int
+from .progress import LiveProgress, PlainProgress
+from .registry import default_registry
+from .source import load_yaml, plain
+from .store import DamagedRecord, RunStore, find_run, list_runs, read_json, redact, register_secrets
 
 EXIT_INTERRUPTED = 130
 
@@ -30,7 +35,6 @@ def _registry():
     """The installed steps; a plugin that failed to load is a warning here (once), and an error
     only for a workflow that uses a step pipflow cannot find."""
     global _warned_plugins
-    from .registry import default_registry
 
     registry = default_registry()
     if registry.broken and not _warned_plugins:
@@ -43,8 +47,6 @@ def _registry():
 
 def _print_traceback(exc: BaseException) -> None:
     """``-v``: the traceback, with secrets redacted like every other line pipflow writes."""
-    from .store import redact
-
     print(redact("".join(traceback.format_exception(exc))), file=sys.stderr, end="")
 
 
@@ -52,8 +54,6 @@ def _inputs(args: argparse.Namespace) -> tuple[dict, bool]:
     """Inputs from ``--inputs FILE`` (typed YAML) and ``-i k=v`` (text, coerced later)."""
     values: dict[str, Any] = {}
     if getattr(args, "inputs_file", None):
-        from .source import load_yaml, plain
-
         data = plain(load_yaml(args.inputs_file, "inputs file"))
         if not isinstance(data, dict):
             raise UserError(f"{args.inputs_file}: an inputs file must be a mapping of input names to values")
@@ -71,8 +71,8 @@ def _inputs(args: argparse.Namespace) -> tuple[dict, bool]:
 
 
 def _options(args: argparse.Namespace, step_ids: list[str]):
+    # deferred: pulls networkx and jsonschema (~350 ms; show, runs, cache and --help need neither)
     from .executor import RunOptions
-    from .progress import LiveProgress, PlainProgress
 
     if args.quiet:
         display = None
@@ -108,10 +108,6 @@ def _summary(value: Any, limit: int = 160, key: str = "") -> str:
 
 
 def _print_result(result, quiet: bool) -> int:
-    from pipflow.errors import Refusal
-
-    from .store import redact
-
     if result.status == "succeeded":
         if not quiet:
             for key, value in result.outputs.items():
@@ -131,7 +127,9 @@ def _print_result(result, quiet: bool) -> int:
 # -- commands ------------------------------------------------------------------------------
 
 def cmd_run(args: argparse.Namespace) -> int:
+    # deferred: pulls networkx and jsonschema (~350 ms; show, runs, cache and --help need neither)
     from .runner import find_workflow, resolve_inputs, run_workflow
+    # deferred: pulls networkx and jsonschema (~350 ms; show, runs, cache and --help need neither)
     from .validate import load_workflow
 
     values, from_text = _inputs(args)
@@ -140,7 +138,6 @@ def cmd_run(args: argparse.Namespace) -> int:
     if args.dry_run:
         resolved = resolve_inputs(wf, values, from_text=from_text)
         print(f"{path}: valid; would run {len(wf.all_steps())} step(s) with inputs:")
-        from .store import redact
 
         print(redact(json.dumps(resolved, indent=2, default=str)))
         return 0
@@ -157,11 +154,13 @@ def cmd_run(args: argparse.Namespace) -> int:
 
 
 def cmd_validate(args: argparse.Namespace) -> int:
+    # deferred: pulls networkx and jsonschema (~350 ms; show, runs, cache and --help need neither)
     from .validate import check_workflow
 
     failed = 0
     registry = _registry()
     for ref in args.files:
+        # deferred: pulls networkx and jsonschema (~350 ms; show, runs, cache and --help need neither)
         from .runner import find_workflow
 
         try:
@@ -211,8 +210,11 @@ def cmd_steps(args: argparse.Namespace) -> int:
 
 
 def cmd_graph(args: argparse.Namespace) -> int:
+    # deferred: pulls networkx and jsonschema (~350 ms; show, runs, cache and --help need neither)
     from .graphview import render_graph
+    # deferred: pulls networkx and jsonschema (~350 ms; show, runs, cache and --help need neither)
     from .runner import find_workflow
+    # deferred: pulls networkx and jsonschema (~350 ms; show, runs, cache and --help need neither)
     from .validate import load_workflow
 
     wf = load_workflow(find_workflow(args.workflow), _registry())
@@ -223,8 +225,6 @@ def cmd_graph(args: argparse.Namespace) -> int:
 
 
 def _run_infos(runs_dir: Path) -> list[tuple[Path, dict]]:
-    from .store import DamagedRecord, list_runs, read_json
-
     out = []
     for run in list_runs(runs_dir):
         try:  # one damaged record must not hide the others: it is listed as damaged
@@ -239,8 +239,6 @@ def _run_infos(runs_dir: Path) -> list[tuple[Path, dict]]:
 def _find_run(ref: str, runs_dir: Path) -> Path:
     """A run by path or name (as :func:`store.find_run`), or ``latest`` / ``-N`` (the N-th newest),
     or a workflow's name (its newest run)."""
-    from .store import find_run
-
     if ref == "latest" or (ref.startswith("-") and ref[1:].isdigit()):
         n = 1 if ref == "latest" else int(ref[1:])
         infos = _run_infos(runs_dir)
@@ -274,8 +272,6 @@ def cmd_runs(args: argparse.Namespace) -> int:
 
 
 def cmd_show(args: argparse.Namespace) -> int:
-    from .store import DamagedRecord, RunStore, read_json
-
     store = RunStore.open(_find_run(args.run, Path(args.runs_dir)))
     problems: list[str] = []  # damaged parts of the record: reported, the rest still shown
     try:
@@ -315,6 +311,7 @@ def cmd_show(args: argparse.Namespace) -> int:
 
 
 def cmd_resume(args: argparse.Namespace) -> int:
+    # deferred: pulls networkx and jsonschema (~350 ms; show, runs, cache and --help need neither)
     from .runner import resume_run
 
     run_dir = _find_run(args.run, Path(args.runs_dir))
@@ -328,8 +325,6 @@ def cmd_resume(args: argparse.Namespace) -> int:
 
 
 def cmd_cache(args: argparse.Namespace) -> int:
-    from .cache import StepCache
-
     cache = StepCache(Path(args.dir) if args.dir else None)
     count = cache.clear()  # refuses (exit 2) a folder pipflow did not mark as its cache
     print(f"removed {count} cache entr{'y' if count == 1 else 'ies'} from {cache.root}")
@@ -424,8 +419,6 @@ def _plugin_commands(sub, common: argparse.ArgumentParser) -> None:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    from .store import register_secrets
-
     register_secrets()  # whatever this command prints or writes, secrets from the environment are redacted
     parser = build_parser()
     args = parser.parse_args(argv)
@@ -440,7 +433,6 @@ def main(argv: Sequence[str] | None = None) -> int:
     except PipflowError as err:
         if args.verbose:
             _print_traceback(err)
-        from .store import redact
 
         print(redact(f"error: {err}" if not getattr(err, "diagnostics", None) else str(err)), file=sys.stderr)
         return err.exit_code

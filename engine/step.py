@@ -41,6 +41,7 @@ from typing import Annotated, Any, Callable, NewType, Union
 
 from pipflow.errors import StepDefinitionError
 
+from .store import atomic_write
 from .types import type_matches
 
 TYPES = ("string", "integer", "number", "boolean", "object", "array", "path", "any")
@@ -307,8 +308,6 @@ class StepContext:
         """Write an artifact atomically into this step's folder of the run record.
 
         Text and bytes are written as they are; anything else is written as JSON."""
-        from .store import atomic_write
-
         path = self.artifact_dir / name
         if isinstance(content, (str, bytes)):
             atomic_write(path, content)
