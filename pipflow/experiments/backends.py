@@ -144,7 +144,6 @@ def _text_files(folder: Path, pattern: str) -> list[Path]:
 def build_bundle(workflow_ref: str, inputs: dict[str, Any]) -> Bundle:
     """The bundle of one variant: ``inputs`` are the bench's given inputs (text, like ``-i``)
     plus the task file's ``world``. Raises :class:`UserError` for an invalid workflow or input."""
-
     registry = default_registry()
     wf = load_workflow(find_workflow(workflow_ref), registry)
     values = resolve_inputs(wf, dict(inputs), from_text=True)
@@ -215,7 +214,6 @@ def unpack_record(data: bytes, target: Path) -> Path:
 def run_remote(payload: dict) -> dict:
     """Run one (variant, task, seed) on a worker from its payload (bundle + run fields); never
     raises for a failed run. Returns the scored row plus ``record_zip`` (the run record)."""
-
     configure_llm_limits(payload.get("llm_limits"), "dask" if payload.get("llm_limits") else None)
     root = materialize(payload["bundle"], payload["digest"])
     inputs = dict(payload["inputs"])

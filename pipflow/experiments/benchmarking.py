@@ -118,7 +118,6 @@ def row_path(out: Path, key: tuple[str, str, int]) -> Path:
 
 def read_row(out: Path, key: tuple[str, str, int]) -> dict | None:
     """The stored row of a run, or None (missing, torn or of another run)."""
-
     try:
         row = read_json(row_path(out, key))
     except (OSError, ValueError):
@@ -158,7 +157,6 @@ def check_variants(specs: list[RunSpec]) -> dict[tuple, dict[str, str]]:
 
     Raises :class:`UserError` naming the variant (and the task, when only one task's inputs are
     wrong): a bench that cannot run is an error of the bench, not a table of zero scores."""
-
     registry = default_registry()
     files: dict[tuple, dict[str, str]] = {}
     loaded: dict[str, Any] = {}
@@ -202,7 +200,6 @@ def _run_inputs(spec: RunSpec) -> dict[str, Any]:
 def fingerprint(spec: RunSpec, files: dict[str, str]) -> dict:
     """What defines one run: the hashes of the files it reads, its inputs, its task, its seed and
     pipflow's version. Two runs with equal fingerprints are the same experiment."""
-
     return {"files": dict(sorted(files.items())), "inputs": {k: str(v) for k, v in sorted(_given(spec).items())},
             "task": spec.task, "seed": int(spec.seed), "pipflow": __version__}
 
@@ -246,7 +243,6 @@ def run_bench(config: BenchConfig, progress: bool = True, on_row=None) -> dict:
     and a row with another fingerprint is refused (:class:`UserError` saying what differs).
     ``on_row(row)`` is called after each row is stored (tests use it to interrupt or to kill a
     worker)."""
-
     domain = domain_of(config.tasks_file)
     tasks_doc = domain.load_tasks(Path(config.tasks_file))
     if config.workflow is None:
@@ -284,7 +280,6 @@ def run_bench(config: BenchConfig, progress: bool = True, on_row=None) -> dict:
 
 def _resumable(out: Path, specs: list[RunSpec]) -> dict[tuple, dict]:
     """The stored rows of runs with this configuration; refuses rows of another one."""
-
     done: dict[tuple, dict] = {}
     clashes: list[str] = []
     for spec in specs:
@@ -346,7 +341,6 @@ def _execute(backend, todo: list[RunSpec], done: dict, out: Path, progress: bool
 
 
 def _results(rows: list[dict], tasks: list[dict], config: BenchConfig, wall: float, domain: str) -> dict:
-
     by_variant: dict[str, list[dict]] = {}
     for row in rows:
         by_variant.setdefault(row["variant"], []).append(row)
@@ -405,7 +399,6 @@ def markdown_table(results: dict) -> str:
     """The paper's table for the task file's domain: by default per task SR (%), understood
     (%), misread runs and travel cost max/avg (m); a domain may group it otherwise (its
     ``bench_table``, e.g. per category)."""
-
     config = results.get("config") or {}
     domain = domain_named(config.get("domain"))
     table = domain.bench_table(results, Path(config["tasks"]))
@@ -437,7 +430,6 @@ def markdown_table(results: dict) -> str:
 
 
 def _write(out: Path, rows: list[dict], results: dict) -> None:
-
     write_json(out / "results.json", results)
     write_json(out / "runs.json", rows)
     with open(out / "runs.csv", "w", newline="", encoding="utf-8") as fh:
@@ -454,7 +446,6 @@ def chosen_backend(args: argparse.Namespace) -> str:
 
     Why the alias is read here and not by argparse into one destination: given both with different
     values, the bench would run on whichever came last; it refuses instead (exit 2)."""
-
     backend, old = getattr(args, "backend", None), getattr(args, "executor", None)
     if old is not None:
         print("pipflow bench: --executor is deprecated, use --backend (same values: local|dask[=ADDRESS])",
@@ -470,7 +461,6 @@ def chosen_backend(args: argparse.Namespace) -> str:
 
 def bench_main(args: argparse.Namespace) -> int:
     """The CLI entry: build the config from arguments, run, print the table."""
-
     stamp = _dt.datetime.now(_dt.timezone.utc).strftime("%Y%m%dT%H%M%SZ")
     tasks_file = Path(args.tasks)
     if not tasks_file.exists():
@@ -497,7 +487,6 @@ def bench_main(args: argparse.Namespace) -> int:
     results = run_bench(config, progress=not args.quiet)
     print(markdown_table(results))
     if len(results.get("variants", [])) > 1:
-
         print(variants_side_by_side(results, json.loads((config.out / "runs.json").read_text())))
     print(f"results: {config.out / 'results.json'}")
     lost = [r for r in json.loads((config.out / "runs.json").read_text()) if r.get("status") == "lost"]

@@ -38,7 +38,6 @@ class RunSpec:
 def run_one(spec: RunSpec) -> dict:
     """Run and score one (variant, task, seed) in this process; never raises. A run that ends in
     a user error is marked ``user_error`` (the bench stops on it: see :func:`_execute`)."""
-
     task = spec.task
     row: dict[str, Any] = {"variant": spec.variant, "task": task["id"], "seed": spec.seed}
     started = time.perf_counter()
@@ -79,7 +78,6 @@ def recorded_outputs(run_dir: Path, names: tuple[str, ...]) -> dict:
     """The workflow outputs ``names`` of a run that did not finish, evaluated over the step outputs
     its record holds: a run that failed after resolving its goal (in allocation, say) still shows
     what it understood. An output whose steps did not finish is left out."""
-
     try:
         snapshot = yaml.safe_load((run_dir / "workflow.yaml").read_text(encoding="utf-8")) or {}
         steps = [d for d in (run_dir / "steps").iterdir() if d.is_dir()]

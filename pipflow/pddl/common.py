@@ -135,7 +135,6 @@ def stock_goals(problem: Any) -> tuple[dict[str, dict[str, Any]], list[str]]:
     cell's conditions merged into one goal value of :mod:`pipflow.goalcounts`: an int when an
     exact count is stated and agrees with the bounds, else ``{at_least, at_most}`` (a
     contradiction is kept so that the verifier names it)."""
-
     cells: dict[tuple[str, str], list] = {}  # (shelf, product) -> [lo, hi, exact stated]
     other: list[str] = []
     for g in goal_conditions(problem):

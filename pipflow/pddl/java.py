@@ -35,7 +35,6 @@ def ensure_java() -> str:
     """Make a Java >= 17 the first ``java`` on PATH; return its path.
 
     Raises :class:`~pipflow.errors.PlanningError` naming both options when neither exists."""
-
     found = shutil.which("java")
     if found and (java_major(found) or 0) >= MIN_JAVA:
         return found

@@ -71,7 +71,6 @@ class SolveResult:
 def planner_names() -> list[str]:
     """The one-shot planners installed in UP (``enhsp``, ``pipflow-transport``, ...), without
     UP's meta-engines (``oversubscription[...]``) and non-planners (validators, compilers)."""
-
     factory = environment().factory
     names = []
     for name in factory.engines:
@@ -143,7 +142,6 @@ def solve_problem(problem: Any, engine: str = DEFAULT_ENGINE, params: dict | Non
     if engine not in env.factory.engines:
         check_engine(engine)
     if engine.startswith(JAVA_ENGINES):
-
         try:
             ensure_java()
         except PlanningError as exc:

@@ -265,7 +265,6 @@ def read_goal(problem: Any, stock: str) -> dict[tuple[str, str], Range]:
 
 def instance_from_problem(problem: Any) -> Instance:
     """Read a transport problem out of a UP problem; :class:`NotTransport` if it does not fit."""
-
     schema = read_schema(problem)
     action = problem.action(schema.action)
     ptype = {"?" + p.name: p.type for p in action.parameters}
@@ -303,7 +302,6 @@ def goal_range(value: Any) -> Range:
 
 def instance_from_world(world: dict, goal: dict[str, dict[str, Any]]) -> Instance:
     """The instance a world dict and a goal describe (with the magnitudes the writer writes)."""
-
     shelves, products = list(world["shelves"]), list(world["products"])
     stock = {(s, p): world["stock"].get(s, {}).get(p, 0) for s in shelves for p in products}
     return Instance(shelves, products, stock,
@@ -988,7 +986,6 @@ class TransportPlanner(Engine, OneshotPlannerMixin):
 
     def _solve(self, problem: Any, heuristic: Optional[Callable] = None, timeout: Optional[float] = None,
                output_stream: Any = None) -> PlanGenerationResult:
-
         S = PlanGenerationResultStatus
         started = time.monotonic()
         try:

@@ -151,7 +151,6 @@ def _find(steps, test) -> tuple[str, Path, dict] | None:
 
 
 def _run_body(d: Path) -> str:
-
     info = _read(d / "run.json", {}) or {}
     info.update(_read(d / "status.json", {}) or {})
     inputs = _read(d / "inputs.json", {}) or {}
@@ -496,7 +495,6 @@ def _bench_config(results: dict, config: dict) -> str:
 
 def _task_commands(config: dict) -> dict[str, str]:
     """Each task's command, read back from the bench's task file (empty when it is gone)."""
-
     try:
         doc = safe_load(read_source(config.get("tasks") or "", "task file"))
     except Exception:  # a moved or damaged task file only loses the command column

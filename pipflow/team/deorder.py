@@ -116,7 +116,6 @@ def numeric_view(problem: Any, grounded: list) -> list[Numeric]:
     """Split every ground action (``dependency.GroundAction``, with ``objects``: parameter ->
     object name) into linear conditions, additive deltas and opaque reads/writes. Fluents that no
     action of the domain writes are static: replaced by their initial values."""
-
     written = {eff.fluent.fluent().name for a in problem.actions for eff in getattr(a, "effects", [])}
     init = initial_numbers(problem)
     lifted: dict[str, _Lifted] = {}
@@ -190,7 +189,6 @@ class _Envelope:
     """Per (action, condition): base value, and each other action's whole and harmful change."""
 
     def __init__(self, problem: Any, views: list[Numeric]):
-
         init = initial_numbers(problem)
         self.views = views
         by_key: dict[Key, list[int]] = {}

@@ -39,7 +39,6 @@ Key = tuple  # (fluent name, arg, arg, ...); "*" for a quantified variable
 def _parse(domain_text: str, problem_text: str):
     """Parse with UP's PDDL reader; a parse failure is the user's input: :class:`PDDLError` (an
     InputError) naming UP and its complaint."""
-
     with library_errors(UNIFIED_PLANNING, PDDLError, "parsing the domain and problem for the dependency graph"):
         return parse(domain_text, problem_text)
 
@@ -71,7 +70,6 @@ def _object(problem, name: str):
 def _lifted_reads_writes(action) -> tuple[list[Key], list[Key]]:
     """What an action reads and writes, with parameters as ``?name`` (grounded by :func:`_bind`).
     Computed once per action: substituting every plan step's expressions costs far more."""
-
     reads: set = set()
     writes: set = set()
 
@@ -245,7 +243,6 @@ def build_graph(
     dag = nx.DiGraph()
     dag.add_nodes_from(n["id"] for n in nodes)
     if mode == "deorder":
-
         dag.add_edges_from((nodes[i]["id"], nodes[j]["id"]) for i, j in deorder(problem, grounded))
     elif mode == "exact" and not any("*" in k for g in grounded for k in g.reads | g.writes):
         dag.add_edges_from((nodes[i]["id"], nodes[j]["id"]) for i, j in _last_writer_edges(grounded))
