@@ -578,6 +578,8 @@ def test_an_english_verb_is_never_taken_for_a_misspelt_robot_name() -> None:
     # a bound with an add verb counts from now (it was "holds at least 2": met already by 3)
     ("Bring at least 2 batteries to the wash bay.", {"wash-bay": {"battery": {"at_least": 5}}}, []),
     ("Clear the north yard of its batteries.", {"north yard": {"battery": 0}}, []),
+    ("2 batteries need to go from the north yard to pit 2.", {"north yard": {"battery": 2}, "pit2": {"battery": 2}}, []),
+    ("The batteries in the wash bay should move to pit 2.", {"wash-bay": {"battery": 0}, "pit2": {"battery": 3}}, []),
     ("Pull 1 kc-90 from the north yard over to pit 2.", {"north yard": {"kc-90": 1}, "pit2": {"kc-90": 1}}, []),
     ("Move 2 batteries north yard to pit 2.", {"north yard": {"battery": 2}, "pit2": {"battery": 2}}, []),
     ("Add 1 brake pad each to the wash bay and pit 2.", {"wash-bay": {"brake_pad": 2}, "pit2": {"brake_pad": 1}}, []),

@@ -282,6 +282,8 @@ goal: there_be items loc                                  -> g_set
     | addv items except_places to places                   -> g_transfer_except
     | items ("on" | "in" | "at" | "from") places modal? go to places -> g_transfer
     | items from places modal? go? to places                -> g_transfer
+    | items modal? go from places to places                 -> g_transfer
+    | bare src modal? go to places                          -> g_transfer_src
     | removev items from places                            -> g_remove
     | removev "everything" from places                      -> g_empty
     | mult "up"? ihead loc                                 -> g_mult
