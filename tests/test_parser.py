@@ -615,6 +615,8 @@ def test_idioms_bounds_and_corrections_of_staff_english(command: str, goal: dict
     ("Pit 2 should get 2 batteries, and so should the wash bay.", TranslationError, "the count it receives"),
     ("Could the tool crib get 2 batteries?", TranslationError, "the count it receives"),
     ("Give the wash bay 2 batteries.", TranslationError, "the count it receives"),
+    # a split with no source where the places hold some: each ends with its share, or gets it?
+    ("Split 4 batteries between the wash bay and the north yard.", TranslationError, "ends with its share"),
     # a ceiling or a range on how many to bring: not a count the place ends with (it was read so)
     ("Move 2-3 batteries to the wash bay.", TranslationError, "how many to bring"),
     ("Bring at most 2 batteries to the wash bay.", TranslationError, "how many to bring"),

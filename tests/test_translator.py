@@ -201,8 +201,10 @@ def test_relative_to_earlier_clause() -> None:
 
 def test_evenly_remainder_goes_to_first_named() -> None:
     assert split_evenly(11, ["a", "b", "c"]) == {"a": 4, "b": 4, "c": 3}
-    assert goal("distribute 11 product2 evenly among shelf3, shelf1 and shelf2") == {
-        "shelf3": {"product2": 4}, "shelf1": {"product2": 4}, "shelf2": {"product2": 3}}
+    # (places that hold no product2: their share is their final count either way; where they hold
+    # some, a split with no source is refused, see test_parser)
+    assert goal("distribute 11 product2 evenly among shelf6, shelf4 and shelf5") == {
+        "shelf6": {"product2": 4}, "shelf4": {"product2": 4}, "shelf5": {"product2": 3}}
     # no count: the product's world total (38 product1) is shared
     assert goal("split product1 evenly between shelf5 and shelf6") == {
         "shelf5": {"product1": 19}, "shelf6": {"product1": 19}}

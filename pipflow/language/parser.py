@@ -662,6 +662,14 @@ class _Sentence:
                 if not ({"count", "all"} & set(a)):
                     raise TranslationError(f"{_quote(np['words'])}: cannot share this amount")
                 items = np["items"] if np["items"] is not None else {"names": list(self.last_item or [])}
+                stock = self.lex.world.get("stock") or {}
+                held = [p for p in places for i in items.get("names") or [] if int((stock.get(p) or {}).get(i, 0) or 0)]
+                if "count" in a and held:
+                    # "Split 4 X between A and B" with no source: does each end with 2, or get 2 more?
+                    # The same only where none holds X now (each was set to 2: a misreading)
+                    raise TranslationError(f"{_quote(words)}: cannot tell whether each place ends with its share "
+                                           f"or gets it on top of what it holds ({', '.join(dict.fromkeys(held))} "
+                                           f"hold some now); say where the units come from")
                 self.statements.append({"op": "distribute", "places": {"names": places}, "items": items,
                                         "amount": a, "words": words})
             return
