@@ -132,13 +132,17 @@ def classes() -> list[str]:
     return sorted({cls for cls, _ in PHRASES.values()})
 
 
-def grammar_text() -> str:
+def grammar_text(dual: frozenset[str] | None = None) -> str:
     """The lark grammar: ``@C`` expanded to ``(C | C__NOUN)``, ``NOUN__`` to ``NOUN`` and every
-    dual class; the terminals are declared (a custom lexer supplies them)."""
+    dual class; the terminals are declared (a custom lexer supplies them). ``dual``: only these
+    classes get a ``__NOUN`` twin (the classes whose words are also names of the world at hand):
+    each twin is one more alternative wherever a noun may stand, which Earley pays for at every
+    noun position of every command, so a grammar for one world carries only the twins it needs."""
     text = _RULES
-    duals = [c + NOUN_DUAL for c in classes()]
+    twins = classes() if dual is None else sorted(dual)
+    duals = [c + NOUN_DUAL for c in twins]
     for c in sorted(classes(), key=len, reverse=True):
-        text = text.replace("@" + c, f"({c} | {c}{NOUN_DUAL})")
+        text = text.replace("@" + c, f"({c} | {c}{NOUN_DUAL})" if c in twins else c)
     text = text.replace("NOUN__", " | ".join(["NOUN"] + duals))
     terminals = ["NOUN", "NUM", "COMMA", "END"] + classes() + duals
     return text + "\n%declare " + " ".join(terminals) + "\n"

@@ -211,9 +211,17 @@ class _TagLexer(Lexer):
             yield Token(t.cls, str(k), start_pos=k, end_pos=k + 1)
 
 
-@functools.lru_cache(maxsize=1)
-def _lark() -> Lark:
-    return Lark(grammar_text(), parser="earley", lexer=_TagLexer, ambiguity="explicit")
+@functools.lru_cache(maxsize=8)
+def _lark(dual: frozenset[str]) -> Lark:
+    """The Earley parser for commands whose dual tokens (a lexicon word that is also a name of the
+    world) are of the classes ``dual``: one per world in practice (grammar_text says why)."""
+    return Lark(grammar_text(dual), parser="earley", lexer=_TagLexer, ambiguity="explicit")
+
+
+def _dual_classes(world: dict) -> frozenset[str]:
+    """The lexicon classes whose phrases are also names of this world ("trash", "microwave")."""
+    index = world_phrases(world)
+    return frozenset(PHRASES[k][0] for k in index if k in PHRASES)
 
 
 def _words(tags: list[Tag], node: Tree | Token) -> str:
@@ -232,7 +240,7 @@ def parse(command: str, world: dict, notes: list[str] | None = None) -> list[dic
     if not [t for t in tags if t.cls not in ("END", "COMMA")]:
         raise TranslationError(f"{command.strip()!r} asks for nothing the offline parser can read")
     try:
-        tree = _lark().parse(tags)
+        tree = _lark(_dual_classes(world)).parse(tags)
     except UnexpectedInput as exc:
         k = getattr(exc, "pos_in_stream", None)
         k = k if isinstance(k, int) and 0 <= k < len(tags) else len(tags) - 1
