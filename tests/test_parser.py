@@ -580,6 +580,8 @@ def test_an_english_verb_is_never_taken_for_a_misspelt_robot_name() -> None:
     ("Clear the north yard of its batteries.", {"north yard": {"battery": 0}}, []),
     ("2 batteries need to go from the north yard to pit 2.", {"north yard": {"battery": 2}, "pit2": {"battery": 2}}, []),
     ("The batteries in the wash bay should move to pit 2.", {"wash-bay": {"battery": 0}, "pit2": {"battery": 3}}, []),
+    ("Send the north yard's 5 oil filters out: 2 to pit 2, the rest to the tool crib.",
+     {"north yard": {"oil-filter": 0}, "pit2": {"oil-filter": 3}, "tool_crib": {"oil-filter": 5}}, []),
     ("Pull 1 kc-90 from the north yard over to pit 2.", {"north yard": {"kc-90": 1}, "pit2": {"kc-90": 1}}, []),
     ("Move 2 batteries north yard to pit 2.", {"north yard": {"battery": 2}, "pit2": {"battery": 2}}, []),
     ("Add 1 brake pad each to the wash bay and pit 2.", {"wash-bay": {"brake_pad": 2}, "pit2": {"brake_pad": 1}}, []),

@@ -254,7 +254,7 @@ goal: there_be items loc                                  -> g_set
     | "nothing" modal? ("leaves" | "leave" | go "out" "of" | "be" "taken" "from" | "be" "removed" "from" | "comes" "off" | "come" "off") places -> g_keep
     | ("reduce" | "lower" | "cut" | "drop" | "increase" | "raise" | "bring" | "take" | "get") ihead loc ("down" | "up")? "to" NUM -> g_item_first
     | ("bring" | "take" | "get" | "knock") ihead loc ("down" | "up") "by" NUM -> g_updown
-    | removev pitems                                      -> g_remove_src
+    | removev pitems ("out" | "away" | "off")?             -> g_remove_src
     | places modal? setv items "too" "many"                  -> g_too_many
     | places place_appos? modal? "lose" items                -> g_lose
     | places ("is" | "are") ("short" ("by" | "of")? items | items "short" | "missing" items)  -> g_short
