@@ -69,6 +69,7 @@ thengap: @THEN things -> gap
 
 away: @V_PUT @AWAY things | @V_PUT things @AWAY | @V_PUT things @BACK | @V_PUT @BACK things
     | @V_TIDY @UP? things | @V_TIDY things @UP? | @V_CLEAN @UP things | @V_CLEAN things @UP
+    | @V_TIDY things @AWAY | @V_TIDY @AWAY things
 
 chill: @V_CHILL things
 trash: @V_TRASH things | @V_THROW @AWAY things | @V_THROW things @AWAY | @V_THROW things @OUT

@@ -137,7 +137,12 @@ class Resolver:
     def select(self, sel: dict, words: str, *, cond: str | None = None, prop: str | None = None) -> tuple[list[str], bool]:
         """The world names a selector means (module docstring); ``cond``/``prop``: what the
         statement will ask of them (a category keeps the members it applies to)."""
-        names, implicit = self._candidates(sel, words)
+        if sel.get("everything") and "from" not in sel and not sel.get("state") and cond in ("on", "off"):
+            # "turn everything off": every thing of the home that switches (only for on/off: "clean
+            # everything" or "put everything in the fridge" without a place or state is asked)
+            names, implicit = list(self.world["objects"]) + list(self.world["places"]), True
+        else:
+            names, implicit = self._candidates(sel, words)
         what = sel["words"]
         if sel.get("unit") and not implicit:   # "a piece of bread": no piece is a thing of the home model
             raise TranslationError(f"'{words}': '{what}': pieces of one thing are not things of this home; "
@@ -318,7 +323,10 @@ class Resolver:
                                                  for c in ex.get("state") or [])]
             else:
                 gone, _ = self.select(ex, words)
-            if not set(gone) <= {n for n, _ in out}:
+            if gone and not set(gone) & {n for n, _ in out}:
+                # "wash the teacup and the glass, but not the saucer": a reminder of what not to do
+                self.goal.notes.append(f"'{words}': '{ex['words']}' was not asked for; nothing is done to it")
+            elif not set(gone) <= {n for n, _ in out}:
                 raise TranslationError(f"'{words}': '{ex['words']}' is not among the things the clause names")
             out = [(n, e) for n, e in out if n not in gone]
         return list(dict.fromkeys(out))
