@@ -648,3 +648,32 @@ def test_idioms_bounds_and_corrections_of_staff_english(command: str, goal: dict
 def test_new_constructions_refuse_what_could_mean_two_things(command: str, error: type, match: str) -> None:
     with pytest.raises(error, match=match):
         understand(command, GARAGE)
+
+
+@pytest.mark.parametrize("command,rules", [
+    # a kind said in the plural, or with "any"/"all"/"a", is the group; one robot of a kind is itself
+    ("Only the forklifts may move batteries to pit 2. Pit 2 needs 1 more battery.",
+     [{"only": ["stacker1", "stacker2"], "product": "battery", "to": "pit2"}]),
+    ("Use any forklift to move 1 battery from the north yard to pit 2.",
+     [{"only": ["stacker1", "stacker2"], "product": "battery", "from": "north yard", "to": "pit2"}]),
+    ("Only a forklift may carry batteries. Pit 2 needs 1 more battery.",
+     [{"only": ["stacker1", "stacker2"], "product": "battery"}]),
+    ("Only night robots may carry batteries. Pit 2 needs 1 more battery.",
+     [{"only": ["stacker2", "loader"], "product": "battery"}]),
+    ("Only the tugger may carry batteries. Pit 2 needs 1 more battery.",
+     [{"only": ["loader"], "product": "battery"}]),
+])
+def test_a_kind_in_the_plural_or_with_any_is_the_group(command: str, rules: list[dict]) -> None:
+    _, got_rules = got(command, GARAGE)
+    assert [{k: v for k, v in r.items() if k != "words"} for r in got_rules] == rules
+
+
+@pytest.mark.parametrize("command", [
+    # "the forklift" names one robot; the garage has two (stacker1, stacker2): which? not guessed
+    "Get the forklift to bring a battery to pit 2.",
+    "Only the forklift may carry batteries. Pit 2 needs 1 more battery.",
+    "The night robot must not carry brake pads. Pit 2 needs 1 more battery.",
+])
+def test_a_kind_or_tag_in_the_singular_with_several_robots_is_not_guessed(command: str) -> None:
+    with pytest.raises(TranslationError, match="cannot tell which one is meant"):
+        got(command, GARAGE)

@@ -13,6 +13,13 @@ from pipflow.language.lexicon import SUPERLATIVES
 from pipflow.language.names import NameIndex, normalize, split_digits
 
 SUPER_WORDS = set(SUPERLATIVES)
+#: words that make a kind or tag said in the singular mean any or all robots of it
+GROUP_WORDS = {"all", "every", "each", "any", "a", "an", "both", "either", "whichever", "crew", "team", "shift",
+               "squad", "fleet", "lot"}
+
+
+def _what(sel: dict) -> str:
+    return f"of kind {sel['kind']}" if "kind" in sel else f"tagged {sel['tag']}"
 
 
 def _robot_of(robots: dict, name: str) -> dict:
@@ -54,7 +61,9 @@ class RobotSelector:
         vals = list(node.scan_values(lambda v: isinstance(v, Token)))
         if node.data == "r_kind":
             t = next(v for v in vals if v.type in ("RKIND", "RTAG"))
-            return {"kind": str(t.value)} if t.type == "RKIND" else {"tag": str(t.value)}
+            sel = {"kind": str(t.value)} if t.type == "RKIND" else {"tag": str(t.value)}
+            self._check_one(sel, words)
+            return sel
         if node.data in ("r_skill_min", "r_skill_max"):
             n = int(next(t.value for t in vals if t.type == "NUM"))
             skill = self._skill(vals, words)
@@ -76,6 +85,21 @@ class RobotSelector:
             self._check_tie(sel, vals, words)
             return sel
         raise TranslationError(f"'{words}': cannot tell which robots")
+
+    def _check_one(self, sel: dict, words: str) -> None:
+        """ "the AGV" (a kind or tag said in the singular, with no "all" / "any" / "a") names one
+        robot: where the world has several of it, which one is not guessed (nor that all are
+        meant); "the AGVs", "any AGV", "AGV crew" are the group."""
+        said = [w for w in words.lower().replace("-", " ").split() if w.isalpha()]
+        if not said or set(said) & GROUP_WORDS:
+            return
+        noun = said[-1]
+        if noun.endswith("s") and noun != normalize(next(iter(sel.values()))).replace(" ", ""):
+            return  # plural: "forklifts", "night robots"
+        matched = select(sel, self.world, words)
+        if len(matched) > 1:
+            raise TranslationError(f"'{words}': {len(matched)} robots are {_what(sel)} ({', '.join(matched)}); "
+                                   f"cannot tell which one is meant (name it, or say all of them)")
 
     def _check_tie(self, sel: dict, vals: list[Token], words: str) -> None:
         """ "the strongest robot" names one robot: where several tie it is not guessed which (nor
