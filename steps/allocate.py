@@ -21,6 +21,7 @@ Handling = Annotated[float, Doc("seconds of loading/unloading per route stop")]
 
 def _run(ctx: StepContext, method: str, graph: dict, world: dict, constraints: list | None,
          linear: list | None, speed: float, handling: float, mode: str = "subtask", time_limit: float = 10.0) -> dict:
+    # deferred: pulls numpy (~150 ms; the registry loads every step module, e.g. for `pipflow validate`)
     from pipflow.team.allocation import allocate
 
     with library_errors(SCIP, AllocationError, f"allocating with {method}"):

@@ -4,7 +4,7 @@ from __future__ import annotations
 from typing import Annotated, Any
 
 from pipflow import Doc, StepContext, step
-from pipflow.errors import Refusal
+from pipflow.errors import Refusal, StepError
 
 
 @step("core.value", doc="Pass a value through unchanged (constants, demos, renaming).",
@@ -47,8 +47,6 @@ def fail(
     message: Annotated[str, Doc("the error message")],
     condition: Annotated[Any, Doc("fail only when this is true")] = True,
 ) -> dict:
-    from pipflow.errors import StepError
-
     if condition:
         raise StepError(message)
     return {"failed": False}

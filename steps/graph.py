@@ -5,6 +5,10 @@ from __future__ import annotations
 from typing import Annotated, Any
 
 from pipflow import Choices, Doc, StepContext, step
+from pipflow.errors import InputError
+from pipflow.pictures import dependency_graph
+from pipflow.team.dependency import build_graph, to_dot
+from pipflow.yamlsource import read_source, safe_load
 
 
 def _read_text(ctx: StepContext, value: str) -> str:
@@ -17,8 +21,6 @@ def _read_text(ctx: StepContext, value: str) -> str:
 def _read_metadata(ctx: StepContext, value) -> dict:
     import yaml
 
-    from pipflow.errors import InputError
-    from pipflow.yamlsource import read_source, safe_load
 
     if isinstance(value, dict):
         return value
@@ -50,8 +52,6 @@ def dependencies(
 ) -> dict:
     """Ground the plan with unified-planning and link actions whose fluents interact."""
 
-    from pipflow.team.dependency import build_graph, to_dot
-    from pipflow.pictures import dependency_graph
 
     graph = build_graph(_read_text(ctx, domain), _read_text(ctx, problem), plan,
                         _read_metadata(ctx, actions), mode=mode)

@@ -13,7 +13,11 @@ from pipflow.errors import InputError
 #: loop iteration, the loop's result), so a long answer is stored once in full, as the artifact
 #: response.txt, and only its head in the outputs.
 RESPONSE_OUTPUT_CHARS = 32_000
+from pipflow.language.agreement import refusal_opinion
+from pipflow.language.generator import generate
+from pipflow.language.llm import resolve_model
 from pipflow.language.prompting import prompt_problem
+from pipflow.taskdomains import task_domain
 
 
 @step(
@@ -56,9 +60,6 @@ def llm_problem(
     every run of a domain that reads its goal back from the problem (household: its goal
     conditions). Offline, the world's task domain reads the command; `concrete` (the goal with
     counts resolved) is set where the domain has it (household), else None."""
-    from pipflow.language.generator import generate
-    from pipflow.language.llm import resolve_model
-
     resolved = resolve_model(model)
     path = ctx.resolve_path(domain)
     try:  # offline too: the problem names the domain file's PDDL domain
@@ -103,10 +104,6 @@ def llm_check(
     ``refusal``: final only when the command makes the goal impossible, else None (the verifier's
     refusal of a goal the model invented is in ``messages`` instead); ``disagreement``: what an
     accepted reading still gets wrong (a warning for the run summary), else empty."""
-    from pipflow.language.agreement import refusal_opinion
-    from pipflow.language.llm import resolve_model
-    from pipflow.taskdomains import task_domain
-
     if resolve_model(model) == "offline":  # the reading is the parser's own
         return {"ok": True, "messages": [], "refusal": refusal, "disagreement": [], "basis": "none"}
     opinion = task_domain(world).second_opinion(command, world, goal, constraints, refusal, grounded)

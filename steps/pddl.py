@@ -9,8 +9,14 @@ from __future__ import annotations
 from typing import Annotated
 
 from pipflow import Doc, PathStr, StepContext, step
-from pipflow.errors import PDDLError
+from pipflow.errors import PDDLError, PlanningError
 from pipflow.liberrors import UNIFIED_PLANNING, library_errors
+from pipflow.pddl.common import format_plan, parse
+from pipflow.pddl.debugger import debug_problem
+from pipflow.pddl.names import plan_in_world_names
+from pipflow.pddl.solver import check_engine, problem_digest, remember, remembered, solve_problem
+from pipflow.pddl.verifier import verify_plan
+from pipflow.taskdomains import task_domain
 
 DEFAULT_ENGINE = "pipflow-transport"  # see pipflow/pddl/transport.py for why
 
@@ -18,8 +24,6 @@ DEFAULT_ENGINE = "pipflow-transport"  # see pipflow/pddl/transport.py for why
 def _parse(ctx: StepContext, problem: str, domain: str):
     """The parsed problem; UP's complaint about the text arrives as :class:`PDDLError` (any other
     exception is a bug and is not dressed up as bad input)."""
-    from pipflow.pddl.common import parse
-
     with library_errors(UNIFIED_PLANNING, PDDLError, "reading the problem"):
         return parse(ctx.resolve_path(domain), problem)
 
@@ -35,8 +39,6 @@ def debug(
 ) -> dict:
     """``problem`` out is the text when it is clean, ``None`` otherwise (so the planner is skipped
     and the messages go back to the generator)."""
-    from pipflow.pddl.debugger import debug_problem
-
     if problem is not None:
         ctx.write_artifact("problem.pddl", problem)
     report = debug_problem(problem, str(ctx.resolve_path(domain)), world)
@@ -71,11 +73,6 @@ def solve(
     a refinement loop is not solved again. A time-out (of the fallback too, if the workflow names
     one) fails the step with "the planner ... timed out after N s": another round would time out
     again."""
-    from pipflow.errors import PlanningError
-    from pipflow.pddl.common import format_plan
-    from pipflow.pddl.names import plan_in_world_names
-    from pipflow.pddl.solver import check_engine
-
     check_engine(engine)
     if fallback:
         check_engine(fallback)
@@ -89,7 +86,6 @@ def solve(
     domain_text = _read_text(ctx.resolve_path(domain))
     first_params = params
     if engine == DEFAULT_ENGINE and world and world.get("robots"):  # the robots' capacities: the domain knows them
-        from pipflow.taskdomains import task_domain
 
         known = task_domain(world).planner_params(world, constraints or [])
         if known is not None:
@@ -131,7 +127,6 @@ def _solve_once(ctx: StepContext, parsed, problem: str, domain_text: str, engine
     """One solver call, or the remembered outcome of an identical earlier one."""
     from dataclasses import replace
 
-    from pipflow.pddl.solver import problem_digest, remember, remembered, solve_problem
 
     digest = problem_digest(domain_text, problem, engine, params, timeout)
     earlier = remembered(digest)
@@ -155,8 +150,6 @@ def verify(
 ) -> dict:
     """``refusal`` is a reason string when no plan can satisfy the goal in this world (more units
     than exist, over capacity), else None; ``goal`` is the problem's goal as {shelf: {product: n}}."""
-    from pipflow.pddl.verifier import verify_plan
-
     if not problem:
         return {"ok": False, "messages": ["no problem to verify"], "refusal": None, "goal": {}}
     try:

@@ -11,6 +11,7 @@ from typing import Annotated
 
 from pipflow import Doc, PathStr, StepContext, step
 from pipflow.taskdomain import pddl_domain_name
+from pipflow.taskdomains import task_domain
 
 
 @step("problem.write",
@@ -26,8 +27,6 @@ def write(
 ) -> dict:
     """Returns ``problem=None`` (and logs why) when the world or goal is missing, so a skipped
     upstream step does not crash the run."""
-    from pipflow.taskdomains import task_domain
-
     if world is None or goal is None:
         ctx.log("problem.write: no " + ("world" if world is None else "goal") + "; no problem written")
         return {"problem": None}

@@ -4,6 +4,8 @@ from __future__ import annotations
 from typing import Annotated
 
 from pipflow import Doc, StepContext, step
+from pipflow.pictures import gantt
+from pipflow.team.scheduling import build_schedule
 
 
 @step("schedule",
@@ -23,8 +25,6 @@ def schedule(
 ) -> dict:
     """Replay the allocation in its order; legs follow obstacle-free paths."""
 
-    from pipflow.pictures import gantt
-    from pipflow.team.scheduling import build_schedule
 
     result = build_schedule(graph, allocation, world, speed=speed, handling=handling)
     ctx.write_artifact("schedule.json", result)
