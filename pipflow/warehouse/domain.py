@@ -16,17 +16,27 @@ from pathlib import Path
 from typing import Any, Callable, Mapping
 
 from pipflow.language import grounding
+from pipflow.language.agreement import second_opinion
 from pipflow.language.offline import NO_USAGE
 from pipflow.language.parsing import FIELD_KEYS
+from pipflow.pddl.common import stock_goals
+from pipflow.pddl.debugger import world_mismatches
+from pipflow.pddl.names import goal_in_world_names
+from pipflow.pddl.verifier import goal_problems
+from pipflow.pddl.writer import write_problem
 from pipflow.resources import data_file
-from pipflow.warehouse.starts import vary_starts
 from pipflow.taskdomain import GoalCheck, Grounding, Save, TaskDomain, flat_simulation
 from pipflow.warehouse import world as worlds
+from pipflow.warehouse.scoring import score_run
+from pipflow.warehouse.simulation import simulate
+from pipflow.warehouse.starts import vary_starts
+from pipflow.warehouse.understanding import understanding
 
 
 def _read_grounded(text: str, world: dict) -> dict:
     """A grounded answer (an order in JSON) checked and resolved, its problem written."""
-    from pipflow.language.llm_orders import read_grounded  # the resolver (lark): loaded on first use
+    # deferred: pulls lark and jsonschema (the resolver; only LLM-written orders need it)
+    from pipflow.language.llm_orders import read_grounded
 
     got = read_grounded(text, world)
     return {"problem": WarehouseDomain().write_problem(world, got["goal"], "warehouse"), "goal": got["goal"],
@@ -36,9 +46,6 @@ def _read_grounded(text: str, world: dict) -> dict:
 
 def _stock_goal(parsed: Any, world: dict | None) -> dict:
     """A problem's ``(stock s p)`` goals as ``{shelf: {product: value}}`` in the world's spelling."""
-    from pipflow.pddl.common import stock_goals  # UP: deferred
-    from pipflow.pddl.names import goal_in_world_names
-
     return goal_in_world_names(stock_goals(parsed)[0], world)
 
 
@@ -72,7 +79,8 @@ class WarehouseDomain(TaskDomain):
 
     def read_offline(self, command: str, world: dict, domain_text: str = "",
                      save: Save | None = None) -> dict:
-        from pipflow.language.understand import understand  # the parser (lark): loaded on first use
+        # deferred: builds the lark parser (~300 ms; only offline reading needs it)
+        from pipflow.language.understand import understand
 
         result = understand(command, world)
         if save is not None:
@@ -83,8 +91,6 @@ class WarehouseDomain(TaskDomain):
                 "usage": dict(NO_USAGE), "errors": []}
 
     def write_problem(self, world: dict, goal: Any, domain_name: str, name: str = "task") -> str:
-        from pipflow.pddl.writer import write_problem
-
         return write_problem(world, goal, name=name, domain=domain_name)
 
     def example_problem(self, world: dict, domain_text: str = "") -> str | None:
@@ -95,18 +101,15 @@ class WarehouseDomain(TaskDomain):
     def read_problem(self, parsed: Any, world: dict, constraints: list[dict]) -> dict:
         """The model's goal read back into an order, for the run summary (the paper's mode sets
         no ``goal``: the verifier reads it)."""
-        from pipflow.language.llm_orders import explain_goal  # the resolver (lark): loaded on first use
+        # deferred: pulls lark and jsonschema (the resolver; only a problem's read-back needs it)
+        from pipflow.language.llm_orders import explain_goal
 
         return explain_goal(_stock_goal(parsed, world), constraints, world)
 
     def world_mismatches(self, parsed: Any, problem_text: str, world: dict) -> list[str]:
-        from pipflow.pddl.debugger import world_mismatches
-
         return world_mismatches(parsed, problem_text, world)
 
     def check_goal(self, parsed: Any, world: dict | None) -> GoalCheck:
-        from pipflow.pddl.verifier import goal_problems
-
         goal = _stock_goal(parsed, world)
         if world is None:
             return GoalCheck(goal)
@@ -120,8 +123,6 @@ class WarehouseDomain(TaskDomain):
 
     def second_opinion(self, command: str, world: dict, goal: Any, constraints: list[dict],
                        refusal: str | None, grounded: bool) -> Any | None:
-        from pipflow.language.agreement import second_opinion
-
         return second_opinion(command, world, goal, constraints, refusal, grounded)
 
     def simulate(self, world: dict, schedule: dict, graph: dict | None, goal: Any, *,
@@ -132,8 +133,6 @@ class WarehouseDomain(TaskDomain):
         report draws from it). Pictures go into ``out_dir`` only when asked: ``snapshots`` (key
         moments and the path map), ``options``: ``picture`` (the path map alone), ``animation``
         (a GIF, needs Pillow)."""
-        from pipflow.warehouse.simulation import simulate  # pictures and pybullet: deferred
-
         animation = bool(options.get("animation"))
         drawn = snapshots or animation or bool(options.get("picture"))
         result = simulate(world, schedule, graph, goal, snapshots=snapshots, out_dir=out_dir if drawn else None,
@@ -149,8 +148,6 @@ class WarehouseDomain(TaskDomain):
               simulation: dict | None = None, refusal: str | None = None,
               error: str | None = None) -> dict:
         """``simulation``: the generic step's outputs or ``simulate.pybullet``'s (``final_stock``)."""
-        from pipflow.warehouse.scoring import score_run
-
         sim = flat_simulation(simulation)
         if sim is not None and "final_stock" not in sim and "final_state" in sim:
             sim["final_stock"] = sim["final_state"]
@@ -169,6 +166,4 @@ class WarehouseDomain(TaskDomain):
                           simulation=outputs.get("simulation"), refusal=refusal, error=error)
 
     def understand(self, task: dict, outputs: dict, status: str, error_kind: str | None) -> dict | None:
-        from pipflow.warehouse.understanding import understanding
-
         return understanding(task, outputs, status, error_kind)

@@ -131,8 +131,9 @@ def capacity_violations(world: dict, peak_load: dict | None, final_stock: dict |
 def plan_lower_bound(world: dict, goal: dict, time_limit: float = 10.0) -> int | None:
     """The fewest moves any plan needs (order-free IP; its proven bound if SCIP runs out of
     time); None when no final state meets the goal."""
+    # deferred: pulls unified_planning and networkx (~500 ms; only the plan's lower bound needs them)
     from pipflow.pddl.bounds import fewest_moves
-    from pipflow.pddl.transport import instance_from_world
+    from pipflow.pddl.transport import instance_from_world  # deferred: pulls unified_planning (as above)
 
     moves, _ = fewest_moves(instance_from_world(world, goal), time_limit=time_limit)
     return moves
