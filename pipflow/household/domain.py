@@ -17,8 +17,11 @@ from pathlib import Path
 from typing import Any, Callable, Mapping
 
 from pipflow.household import world as worlds
+from pipflow.household.problem import goal_from_problem, goal_refusal, world_mismatches, write_problem
+from pipflow.household.scoring import bench_table, load_tasks, score_bench_run, score_run, understanding
+from pipflow.household.simulation import simulate
 from pipflow.language.offline import NO_USAGE
-from pipflow.pddl.common import goal_atoms
+from pipflow.pddl.common import goal_atoms, stock_goals
 from pipflow.resources import data_file
 from pipflow.taskdomain import GoalCheck, Save, TaskDomain, flat_simulation, pddl_domain_name
 
@@ -61,7 +64,8 @@ class HouseholdDomain(TaskDomain):
         for judging, ``concrete`` resolves counts to objects, which is what the problem asks for.
         Untranslatable commands raise TranslationError, impossible ones Refusal (the same as step
         ``household.problem``)."""
-        from pipflow.household.translator import translate  # the parser (lark): loaded on first use
+        # deferred: builds the lark parser (~150 ms; only offline reading needs it)
+        from pipflow.household.translator import translate
 
         result = translate(command, world)
         problem = self.write_problem(world, result["concrete"], pddl_domain_name(domain_text, self.name))
@@ -72,8 +76,6 @@ class HouseholdDomain(TaskDomain):
                 "messages": [], "response": "", "usage": dict(NO_USAGE), "errors": []}
 
     def write_problem(self, world: dict, goal: Any, domain_name: str, name: str = "task") -> str:
-        from pipflow.household.problem import write_problem
-
         return write_problem(world, goal, name=name, domain=domain_name)
 
     def example_problem(self, world: dict, domain_text: str = "") -> str | None:
@@ -84,24 +86,17 @@ class HouseholdDomain(TaskDomain):
     def read_problem(self, parsed: Any, world: dict, constraints: list[dict]) -> dict:
         """The goal conditions read back from the problem. A problem whose goal states nothing
         is no answer: copying the example unchanged would otherwise "succeed" doing nothing."""
-        from pipflow.household.problem import goal_from_problem
-
         if not goal_atoms(parsed):
             return {"errors": ["the problem's (:goal ...) states no condition: write in it the conditions "
                                "the command asks for, e.g. (at apple fridge) or (not (is-on floorlamp))"]}
         return {"goal": goal_from_problem(parsed)}
 
     def world_mismatches(self, parsed: Any, problem_text: str, world: dict) -> list[str]:
-        from pipflow.household.problem import world_mismatches
-
         return world_mismatches(parsed, problem_text, world)
 
     def check_goal(self, parsed: Any, world: dict | None) -> GoalCheck:
         """A goal no plan can reach (slicing a mug) is refused; the step's ``goal`` output stays
         the stock-goal form every domain shares (empty for household problems)."""
-        from pipflow.household.problem import goal_from_problem, goal_refusal
-        from pipflow.pddl.common import stock_goals  # UP: deferred
-
         goal = stock_goals(parsed)[0]
         if world is None:
             return GoalCheck(goal)
@@ -113,37 +108,25 @@ class HouseholdDomain(TaskDomain):
                  log: Callable[[str], None] = print, save: Save | None = None, **options: Any) -> dict:
         """The home simulator's result (``final_state``: where each object is and its states),
         plus ``conditions`` (goal conditions met / total / unmet)."""
-        from pipflow.household.simulation import simulate  # pybullet: deferred
-
         return simulate(world, schedule, graph, goal, snapshots=snapshots, out_dir=out_dir, log=log)
 
     def score(self, world: dict, goal: Any, *, constraints: list[dict] | None = None,
               feasible: bool = True, graph: dict | None = None, schedule: dict | None = None,
               simulation: dict | None = None, refusal: str | None = None,
               error: str | None = None) -> dict:
-        from pipflow.household.scoring import score_run
-
         return score_run(world, goal, feasible=feasible, graph=graph, schedule=schedule,
                          simulation=flat_simulation(simulation), refusal=refusal, error=error)
 
     def load_tasks(self, path: Path) -> dict:
-        from pipflow.household.scoring import load_tasks
-
         return load_tasks(path)
 
     def score_bench_run(self, world_path: str, task: dict, outputs: dict, refusal: str | None,
                         error: str | None) -> dict:
-        from pipflow.household.scoring import score_bench_run
-
         return score_bench_run(world_path, task, {**outputs, "simulation": flat_simulation(outputs.get("simulation"))},
                                refusal, error)
 
     def understand(self, task: dict, outputs: dict, status: str, error_kind: str | None) -> dict | None:
-        from pipflow.household.scoring import understanding
-
         return understanding(task, outputs, status, error_kind)
 
     def bench_table(self, results: dict, tasks_file: Path) -> str | None:
-        from pipflow.household.scoring import bench_table
-
         return bench_table(results, tasks_file)

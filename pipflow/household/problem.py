@@ -16,6 +16,10 @@ from __future__ import annotations
 from typing import Any
 
 from pipflow.household.world import entity
+from pipflow.pddl.common import goal_conditions
+from pipflow.pddl.convert import initial_numbers
+from pipflow.pddl.textpos import find_word
+from pipflow.suggest import did_you_mean_clause
 
 PLACE_FLAGS = {"receptacle": "is-receptacle", "garbage": "is-garbage", "sink": "is-sink", "heater": "is-heater",
                "openable": "openable", "toggleable": "toggleable"}
@@ -93,10 +97,6 @@ def write_problem(world: dict, goal: dict, name: str = "task", domain: str = "ho
 def world_mismatches(problem: Any, text: str, world: dict) -> list[str]:
     """Every way a parsed household problem's objects and initial state differ from the world's:
     a problem that invents an object or a state would be solved in a world that is not ours."""
-    from pipflow.pddl.convert import initial_numbers
-    from pipflow.pddl.textpos import find_word
-    from pipflow.suggest import did_you_mean_clause
-
     out: list[str] = []
     have: dict[str, list[str]] = {}
     for o in problem.all_objects:
@@ -133,7 +133,6 @@ def world_mismatches(problem: Any, text: str, world: dict) -> list[str]:
 def goal_from_problem(problem: Any) -> dict:
     """Concrete goal conditions read back from a parsed problem's goal (for judging LLM output)."""
     inv = {(pred, pos): word for word, (pred, pos, _) in CONDITIONS.items()}
-    from pipflow.pddl.common import goal_conditions
 
     goal: dict = {"in": {}, "state": {}}
     for g in goal_conditions(problem):

@@ -21,8 +21,11 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
+from pipflow.errors import Diagnostic, TaskFileError
 from pipflow.household.problem import CONDITIONS
-from pipflow.household.world import initial_state, members
+from pipflow.household.world import initial_state, load_world, members, select_team, team_members
+from pipflow.suggest import did_you_mean
+from pipflow.worldfile import parse_mapping, read_world_file
 
 CATEGORIES = ("compound", "complex", "vague")
 
@@ -154,11 +157,6 @@ def load_tasks(path: str | Path) -> dict:
     Returns ``{"path", "world_path", "world", "domain": "household", "workflow", "tasks": [{"id",
     "command", "category", "team", "goal", "feasible", "construction"?, "expect"?, "domain", "inputs": {"team": ...}}]}``;
     a task marked ``feasible: false`` (its right answer is a refusal) needs no goal."""
-    from pipflow.errors import Diagnostic, TaskFileError
-    from pipflow.household.world import load_world, team_members
-    from pipflow.suggest import did_you_mean
-    from pipflow.worldfile import parse_mapping, read_world_file
-
     p, text = read_world_file(path)
     data, locate = parse_mapping(text, str(p), "household task")
     diags: list[Diagnostic] = []
@@ -230,8 +228,6 @@ def load_tasks(path: str | Path) -> dict:
 
 def score_bench_run(world_path: str, task: dict, outputs: dict, refusal: str | None, error: str | None) -> dict:
     """Score one bench run of a household task (the team's world, the task's ground truth)."""
-    from pipflow.household.world import load_world, select_team
-
     world = select_team(load_world(world_path), task.get("team"))
     feasible = task.get("feasible", True) is not False and task.get("expect") != "refuse"  # refusing is right
     return score_run(world, task.get("goal") or {}, feasible=feasible,

@@ -23,7 +23,10 @@ import math
 from pathlib import Path
 from typing import Any, Callable
 
+from pipflow.bullet import colour_rgba, connect_direct, render_floor
+from pipflow.household.scoring import check_conditions
 from pipflow.household.world import initial_state
+from pipflow.team.trajectory import ROBOT_COLOURS, Trajectory
 
 TOLERANCE = 0.75  # metres: a robot this close to an access point is "there"
 STATE_KEYS = ("open", "on", "dirty", "sliced", "hot")
@@ -136,9 +139,6 @@ def simulate(world: dict, schedule: dict, graph: dict | None, goal: dict | None 
 
     Returns ``{final_state, executed, failed, failures, exe, travel, tc_max, tc_avg, goal_met,
     gcr, conditions, jumps, makespan, pictures}``."""
-    from pipflow.household.scoring import check_conditions
-    from pipflow.team.trajectory import Trajectory
-
     log = log or (lambda m: None)
     nodes = {n["id"]: n for n in (graph or {}).get("nodes", [])}
     places = {n: tuple(p["access"]) for n, p in world["places"].items()}
@@ -208,9 +208,6 @@ class _Scene:
     """Headless pybullet pictures: furniture boxes, objects on their places, robots at their starts."""
 
     def __init__(self, world: dict):
-        from pipflow.bullet import connect_direct
-        from pipflow.team.trajectory import ROBOT_COLOURS
-
         self.p, self.cid = connect_direct()
         p, self.world = self.p, world
         self.bodies: dict[str, int] = {}
@@ -228,20 +225,14 @@ class _Scene:
             p.createMultiBody(0, -1, vis, basePosition=(r["start"][0], r["start"][1], 0.25), physicsClientId=self.cid)
 
     def _box(self, half, colour: str, pos) -> int:
-        from pipflow.bullet import colour_rgba
-
         vis = self.p.createVisualShape(self.p.GEOM_BOX, halfExtents=half, rgbaColor=colour_rgba(colour), physicsClientId=self.cid)
         return self.p.createMultiBody(0, -1, vis, basePosition=pos, physicsClientId=self.cid)
 
     def _sphere(self, radius: float, colour: str) -> int:
-        from pipflow.bullet import colour_rgba
-
         vis = self.p.createVisualShape(self.p.GEOM_SPHERE, radius=radius, rgbaColor=colour_rgba(colour), physicsClientId=self.cid)
         return self.p.createMultiBody(0, -1, vis, basePosition=(0, 0, -5), physicsClientId=self.cid)
 
     def snapshot(self, path: Path, home: Home, width: int = 640, height: int = 480) -> Path:
-        from pipflow.bullet import render_floor
-
         p, c = self.p, self.cid
         slots: dict[str, int] = {}
         for name, body in self.bodies.items():

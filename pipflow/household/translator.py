@@ -75,6 +75,7 @@ def understand(command: str, world: dict) -> dict:
 def resolve_counts(world: dict, goal: dict) -> dict:
     """Goal with every count condition replaced by concrete objects: members already there count;
     the rest are the pickupable members nearest to the place (travel distance), then by name."""
+    # deferred: pulls networkx and numpy (~350 ms; only a count goal is resolved by travel)
     from pipflow.team.travel import TravelMap
 
     out = {"in": {p: list(v) for p, v in (goal.get("in") or {}).items()},
