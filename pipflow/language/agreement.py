@@ -30,6 +30,8 @@ from typing import Any
 from pipflow.errors import InputError, Refusal, TranslationError
 from pipflow.goalcounts import describe, holds, is_bound
 from pipflow.language import feedback as phrase
+from pipflow.language.names import NameIndex, tokenize
+from pipflow.language.offline import offline
 
 OFFLINE = "offline reading"
 WORDS = "command's words"
@@ -60,8 +62,6 @@ def offline_reading(command: str, world: dict) -> tuple[str, Any]:
     (the loop asks once per round)."""
     key = hashlib.sha256(json.dumps([command, world], sort_keys=True, default=str).encode()).hexdigest()
     if key not in _READINGS:
-        from pipflow.language.offline import offline  # the parser is heavy; loaded on first use
-
         try:
             got = offline(command, world)
             _READINGS[key] = ("read", {"goal": got["goal"], "constraints": got["constraints"],
@@ -139,8 +139,6 @@ def compare_with_reading(goal: dict, constraints: list, reading: dict, world: di
 def command_words(command: str, world: dict) -> tuple[set[str], set[str], set[int]]:
     """The shelves, products and numbers a command names (typo-tolerant, as the parser reads
     names: "prodct1" is product1, "robot 0" is a robot and not the number 0)."""
-    from pipflow.language.names import NameIndex, tokenize
-
     shelves, products, numbers = set(), set(), set()
     for tok in tokenize(command, NameIndex(world)):
         if tok.kind == "name" and tok.value in world.get("shelves", {}):

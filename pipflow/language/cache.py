@@ -18,6 +18,7 @@ import json
 import os
 from pathlib import Path
 from typing import Any
+from pipflow.engine.store import atomic_write
 
 DEFAULT_DIR = Path(".pipflow-cache") / "llm"
 
@@ -78,8 +79,6 @@ class ResponseCache:
     def put(self, key: str, entry: dict[str, Any]) -> Path:
         """Store an entry atomically (a crash never leaves half a file that replays wrong), with
         the hash of its text. Raises OSError when the folder cannot be written."""
-        from pipflow.engine.store import atomic_write
-
         entry = {**entry, "text_sha256": text_digest(entry["text"])}
         data = json.dumps(entry, indent=2, sort_keys=True, ensure_ascii=False) + "\n"
         atomic_write(self.path(key), data)

@@ -19,13 +19,17 @@ from pathlib import Path
 from typing import Any, Callable
 
 from pipflow.errors import InputError
-from pipflow.language.cache import ResponseCache, cache_key
-from pipflow.language.llm import complete, resolve_model
-from pipflow.language.parsing import ParseIssue, extract_constraints, extract_problem, validate_constraints
+from pipflow.language.agreement import offline_reading
 from pipflow.language.budget import FREE_STOPS, answer_budget
+from pipflow.language.cache import ResponseCache, cache_key
 from pipflow.language.feedback import vary
+from pipflow.language.llm import complete, resolve_model
+from pipflow.language.local import ensure_server
 from pipflow.language.offline import offline
+from pipflow.language.parsing import ParseIssue, extract_constraints, extract_problem, validate_constraints
 from pipflow.language.prompting import render
+from pipflow.pddl.common import parse
+from pipflow.pddl.debugger import unclosed_section
 from pipflow.taskdomain import TaskDomain
 from pipflow.taskdomains import task_domain
 
@@ -132,8 +136,6 @@ def generate(
     if max_tokens is None:
         reading = None
         if grounded:
-            from pipflow.language.agreement import offline_reading
-
             state, got = offline_reading(command, world)
             reading = got if state == "read" else None
         max_tokens = answer_budget(world, bool(grounded), example, reading)
@@ -153,8 +155,6 @@ def generate(
     else:
         call_model, call_base = model, api_base
         if model.startswith("local/"):
-            from pipflow.language.local import ensure_server
-
             call_model, call_base = ensure_server(model)
         answer = complete(messages, model=call_model, api_base=call_base, timeout=timeout,
                           retries=retries, temperature=temperature_now, max_tokens=max_tokens,
@@ -219,7 +219,6 @@ def _unclosed_hint(text: str) -> str:
     opened (the debugger's reading, lines counted from ``(define``), or ``""``."""
     import re
 
-    from pipflow.pddl.debugger import unclosed_section
 
     starts = [m.start() for m in re.finditer(r"\(\s*define\s*\(\s*problem\b", text, re.IGNORECASE)]
     if not starts:
@@ -234,8 +233,6 @@ def _parse_quietly(domain_text: str, problem: str) -> Any:
     if not domain_text:
         return None
     try:
-        from pipflow.pddl.common import parse  # the shared memo: the debugger reuses this parse
-
         return parse(domain_text, problem)
     except Exception:
         return None

@@ -30,6 +30,7 @@ from pipflow.language.earley import ListLexer, earley_parser
 from pipflow.language.grammar import GRAMMAR, nullable_optionals
 from pipflow.language.lexicon import Lexed, Lexicon
 from pipflow.language.numbers import NUMBER_WORDS
+from pipflow.language.resolver import resolve
 from pipflow.language.robots import RobotSelector
 
 #: the most terminals one sentence may have: Earley's time grows faster than the length on
@@ -1480,8 +1481,6 @@ MAX_READINGS = 64
 def _meaning(reader: _Sentence, world: dict) -> str | None:
     """What a reading asks for, for comparison: its resolved goal and rules (None when the reading
     does not resolve on its own: it is then no meaning to compare)."""
-    from pipflow.language.resolver import resolve  # the resolver imports nothing of the parser
-
     try:
         r = resolve({"statements": reader.statements, "rules": reader.rules}, world, check=False)
     except PipflowError:
