@@ -19,11 +19,11 @@ from pipflow.language import grounding
 from pipflow.language.agreement import second_opinion
 from pipflow.language.offline import NO_USAGE
 from pipflow.language.parsing import FIELD_KEYS
+from pipflow.pddl import writer
 from pipflow.pddl.common import stock_goals
 from pipflow.pddl.debugger import world_mismatches
 from pipflow.pddl.names import goal_in_world_names
 from pipflow.pddl.verifier import goal_problems
-from pipflow.pddl.writer import write_problem
 from pipflow.resources import data_file
 from pipflow.taskdomain import GoalCheck, Grounding, Save, TaskDomain, flat_simulation
 from pipflow.warehouse import world as worlds
@@ -91,7 +91,7 @@ class WarehouseDomain(TaskDomain):
                 "usage": dict(NO_USAGE), "errors": []}
 
     def write_problem(self, world: dict, goal: Any, domain_name: str, name: str = "task") -> str:
-        return write_problem(world, goal, name=name, domain=domain_name)
+        return writer.write_problem(world, goal, name=name, domain=domain_name)  # looked up per call: replaceable
 
     def example_problem(self, world: dict, domain_text: str = "") -> str | None:
         """The world's current stock as the goal: every name and number in the expected form."""
