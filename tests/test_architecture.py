@@ -223,3 +223,49 @@ def graph_has_domain_edges() -> bool:
     """The import graph does see the domain packages (their own steps import them)."""
     graph = import_graph()
     return graph.has_edge("pipflow.household.steps", "pipflow.household.domain")
+
+
+# ---------------------------------------------------------------------------------------------
+# imports at the module top (issue 14): an import of pipflow inside a function says why
+# ---------------------------------------------------------------------------------------------
+def _imports_pipflow(node: ast.stmt) -> bool:
+    if isinstance(node, ast.ImportFrom):
+        return node.level > 0 or (node.module or "").split(".")[0] == "pipflow"
+    return isinstance(node, ast.Import) and any(a.name.split(".")[0] == "pipflow" for a in node.names)
+
+
+def undeclared_function_imports(path: Path) -> list[int]:
+    """Lines of the imports of pipflow inside a function that carry no ``deferred:`` comment on
+    their line or the line above. Such an import hides an arrow from a reader of the module's top
+    (and, once, hid circles): it is allowed only to defer a heavy import on purpose, and says so."""
+    source = path.read_text(encoding="utf-8")
+    lines = source.splitlines()
+    found = set()
+    for function in ast.walk(ast.parse(source, str(path))):
+        if isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            for node in ast.walk(function):
+                if _imports_pipflow(node) and not any(
+                        "# deferred:" in lines[n - 1] for n in (node.lineno, node.lineno - 1) if n >= 1):
+                    found.add(node.lineno)
+    return sorted(found)
+
+
+def test_imports_inside_functions_say_why_they_are_deferred():
+    found = {f"{path.relative_to(ROOT)}:{line}": path.read_text(encoding="utf-8").splitlines()[line - 1].strip()
+             for path in modules().values() for line in undeclared_function_imports(path)}
+    assert not found, ("imports of pipflow inside functions: move them to the module top, or keep one that "
+                       f"pulls a heavy package with '# deferred: pulls <package> (<why>)' on it: {found}")
+
+
+def test_the_deferral_check_sees_what_it_must(tmp_path):
+    """The check flags a bare import in a function (a check that flagged nothing would pass every
+    module) and accepts a top-level one or one that says why it is deferred."""
+    probe = tmp_path / "probe.py"
+    probe.write_text("from pipflow import errors\n"
+                     "def f():\n    from pipflow.pddl import common\n"
+                     "    from .store import redact\n"
+                     "    import json\n"
+                     "def g():\n    # deferred: pulls networkx (the probe)\n    from pipflow.team import travel\n"
+                     "    import pipflow.pictures  # deferred: pulls matplotlib (the probe)\n"
+                     "class C:\n    def h(self):\n        import pipflow.language.llm\n")
+    assert undeclared_function_imports(probe) == [3, 4, 12]
