@@ -79,6 +79,5 @@ def cmd_view(args: argparse.Namespace) -> int:
 
 
 def cmd_compare(args: argparse.Namespace) -> int:
-
     print(compare_text(Path(args.a), Path(args.b)))
     return 0
