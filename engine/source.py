@@ -16,7 +16,7 @@ from typing import Any
 import yaml
 
 from pipflow.errors import Diagnostic, Location, SourceFileError
-from pipflow.yamlsource import BoundedComposer, CheckedValues, located_reader_error, read_source
+from pipflow.yamlsource import BoundedComposer, CheckedValues, located_reader_error, read_source, yaml_problem
 
 
 class SourceDict(dict):
@@ -134,7 +134,7 @@ def parse_yaml(text: str, file: str = "<string>") -> Any:
         mark = err.problem_mark or err.context_mark
         loc = Location(file, mark.line + 1, mark.column + 1) if mark else Location(file)
         what = "YAML" if isinstance(err, (yaml.composer.ComposerError, yaml.constructor.ConstructorError)) else "YAML syntax"
-        raise SourceError([Diagnostic(loc, f"{what}: {err.problem or err}")]) from None
+        raise SourceError([Diagnostic(loc, f"{what}: {yaml_problem(err)}")]) from None
     except yaml.YAMLError as err:  # e.g. a control character the reader refuses
         raise SourceError([Diagnostic(Location(file), f"YAML: {err}")]) from None
     finally:

@@ -263,13 +263,21 @@ def load_with_locations(text: str, file: str) -> tuple[Any, Callable[..., Locati
     return data, locate
 
 
+def yaml_problem(exc: yaml.YAMLError) -> str:
+    """What a YAML error says is wrong, in our words where libyaml's differ: newer libyaml builds
+    (PyPI's PyYAML wheels) refuse deep flow nesting while scanning ahead, before our composer's
+    limit sees the events."""
+    problem = getattr(exc, "problem", None) or str(exc)
+    if "maximum nesting depth" in problem:
+        problem = f"nested deeper than the YAML reader allows ({problem})"
+    return problem
+
+
 def yaml_error_diagnostic(exc: yaml.YAMLError, file: str) -> Diagnostic:
     """A YAML syntax error as a diagnostic at the position PyYAML reports."""
     mark = getattr(exc, "problem_mark", None) or getattr(exc, "context_mark", None)
-    problem = getattr(exc, "problem", None) or str(exc)
+    problem = yaml_problem(exc)
     context = getattr(exc, "context", None)
-    if "maximum nesting depth" in problem:  # libyaml's own limit, met while scanning ahead of ours
-        problem = f"nested deeper than the YAML reader allows ({problem})"
     message = f"YAML syntax error: {problem}" + (f" ({context})" if context else "")
     loc = Location(file, mark.line + 1, mark.column + 1) if mark else Location(file)
     return Diagnostic(loc, message)

@@ -73,6 +73,20 @@ def test_libyaml_nesting_limit_reads_like_ours():
     assert (diag.location.line, diag.location.column) == (2, 1007)
 
 
+def test_workflow_files_word_libyamls_nesting_limit_alike(monkeypatch):
+    """The engine's located loader (workflow files) words libyaml's limit as the library's does."""
+    import pipflow.engine.source as source
+
+    mark = yaml.Mark("wf.yaml", 0, 3, 1011, None, None)
+
+    def refuse(self):
+        raise yaml.scanner.ScannerError(None, None, "exceeded maximum nesting depth", mark)
+
+    monkeypatch.setattr(source._CLoader, "get_single_data", refuse)
+    with pytest.raises(SourceFileError, match="wf.yaml:4:1012: YAML syntax: nested deeper than the YAML reader"):
+        parse_yaml("a: 1\n", "wf.yaml")
+
+
 def test_recursive_alias_is_refused_everywhere():
     for text in ("a: &a [*a]", "a: &a {b: *a}", "a: &a [1, [2, *a]]"):
         with pytest.raises(yaml.YAMLError, match="its own anchor"):
