@@ -69,6 +69,19 @@ SCORE_CORE: dict[str, str] = {
 }
 
 
+#: the headline figures every score step records as the step's metrics
+SCORE_METRICS = ("success", "gcr", "exe", "ru", "tc_max", "tc_avg", "tc_avg_moved")
+
+
+def report_score(ctx: Any, result: dict) -> dict:
+    """Log each violation and record the headline metrics of a score: the generic ``score`` step
+    and the domains' own score steps do this alike. Returns ``result``."""
+    for violation in result["violations"]:
+        ctx.log(f"violation: {violation}")
+    ctx.metrics.update({k: result[k] for k in SCORE_METRICS})
+    return result
+
+
 def simulation_outputs(result: Mapping[str, Any]) -> dict:
     """A domain's simulation result in the generic step's shape: the core keys, ``pictures``
     (file names of the step's artifacts; none: ``[]``) and every other key under ``details``.

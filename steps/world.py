@@ -8,7 +8,7 @@ from typing import Annotated
 
 from pipflow import Doc, PathStr, StepContext, step
 from pipflow.errors import InputError
-from pipflow.taskdomain import SCORE_CORE, SIMULATION_CORE, simulation_outputs
+from pipflow.taskdomain import SCORE_CORE, SIMULATION_CORE, report_score, simulation_outputs
 from pipflow.taskdomains import declared_domain, task_domain
 
 
@@ -81,7 +81,4 @@ def score(
 ) -> dict:
     result = task_domain(world).score(world, goal, constraints=constraints or [], feasible=feasible, graph=graph,
                                       schedule=schedule, simulation=simulation, refusal=refusal)
-    for v in result["violations"]:
-        ctx.log(f"violation: {v}")
-    ctx.metrics.update({k: result[k] for k in ("success", "gcr", "exe", "ru", "tc_max", "tc_avg", "tc_avg_moved")})
-    return result
+    return report_score(ctx, result)

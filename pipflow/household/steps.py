@@ -13,6 +13,7 @@ from __future__ import annotations
 from typing import Annotated
 
 from pipflow import Doc, PathStr, StepContext, step
+from pipflow.taskdomain import SCORE_CORE, report_score
 
 
 def _domain():
@@ -83,10 +84,7 @@ def simulate(
 @step("household.score",
       doc="Score a household run's final state against ground-truth conditions (SR, GCR, Exe, RU, TC); "
           "the outputs of metrics.score, flat.",
-      outputs={"success": "boolean", "goal_met": "boolean", "gcr": "number", "exe": "number", "ru": "number",
-               "tc_max": "number", "tc_avg": "number", "tc_avg_moved": "number", "makespan": "number", "planned": "integer",
-               "executed": "integer", "lower_bound": "any", "violations": "array", "refused": "boolean",
-               "error": "any"})
+      outputs=dict(SCORE_CORE))
 def score(
     ctx: StepContext,
     world: Annotated[dict, Doc("output of household.load")],
@@ -97,4 +95,4 @@ def score(
 ) -> dict:
     """The same flat outputs as ``metrics.score`` (one shape per family), so a workflow or the
     bench reads ``success``/``gcr`` the same way in either domain."""
-    return _domain().score(world, goal, graph=graph, schedule=schedule, simulation=simulation)
+    return report_score(ctx, _domain().score(world, goal, graph=graph, schedule=schedule, simulation=simulation))

@@ -11,6 +11,7 @@ from __future__ import annotations
 from typing import Annotated
 
 from pipflow import Doc, StepContext, step
+from pipflow.taskdomain import SCORE_CORE, report_score
 
 
 def _domain():
@@ -55,12 +56,7 @@ def simulate_pybullet(
     "metrics.score",
     doc="Score a run: success (goal, constraints, conservation, capacity, skills), GCR, Exe, RU, TC-max, "
         "TC-avg over all robots (tc_avg) and over the robots that moved (tc_avg_moved).",
-    outputs={
-        "success": "boolean", "goal_met": "boolean", "gcr": "number", "exe": "number", "ru": "number",
-        "tc_max": "number", "tc_avg": "number", "tc_avg_moved": "number", "makespan": "number", "planned": "integer",
-        "executed": "integer", "lower_bound": "any", "violations": "array", "refused": "boolean",
-        "error": "any",
-    },
+    outputs=dict(SCORE_CORE),
 )
 def score(
     ctx: StepContext,
@@ -75,7 +71,4 @@ def score(
 ) -> dict:
     result = _domain().score(world, goal, constraints=constraints or [], feasible=feasible, graph=graph,
                              schedule=schedule, simulation=simulation, refusal=refusal)
-    for v in result["violations"]:
-        ctx.log(f"violation: {v}")
-    ctx.metrics.update({k: result[k] for k in ("success", "gcr", "exe", "ru", "tc_max", "tc_avg", "tc_avg_moved")})
-    return result
+    return report_score(ctx, result)
