@@ -1,7 +1,7 @@
-"""The allocation cost c_i (paper, Sec. III-C): by default each robot's total travel (what it has
-driven so far plus this subtask), so the IP's max objective balances the team's work; the
-per-subtask cost (approach and route of this subtask only) stays available as ``cost: subtask``.
-Through SCIP, both walks, the steps and the built-in workflows, and the run record."""
+"""The allocation cost c_i (paper, Sec. IV-C as typeset; issue 20 calls it III-C): by default each
+robot's total travel (what it has driven so far plus this subtask), so the IP's max objective
+balances the team's work; the per-subtask cost (approach and route of this subtask only) stays
+available as ``cost: subtask``. Through SCIP, both walks, the steps and the built-in workflows, and the run record."""
 from __future__ import annotations
 
 import collections

@@ -1,4 +1,4 @@
-"""Skill-based multi-robot task allocation (paper Sec. III-C, eq. 3) and its baselines.
+"""Skill-based multi-robot task allocation (paper Sec. IV-C, eq. 3) and its baselines.
 
 For one subtask with requirement vector Y, skill matrix Q (robots x skills) and costs c, the
 paper solves the lexicographic IP

@@ -10,7 +10,7 @@ optimised are exactly the distances the schedule reports.
 
 The allocation cost c_i of a robot for a subtask has two definitions (:data:`COSTS`):
 
-* ``total`` (the paper, Sec. III-C: "the total travel distance of robot i"): the metres the robot
+* ``total`` (the paper, Sec. IV-C: "the total travel distance of robot i"): the metres the robot
   has driven so far in this schedule, plus its approach to the subtask and the subtask's route.
   Minimising the largest c_i then balances the team's work: a robot that has driven far is
   expensive, one that idled is cheap. The costs of a robot's last subtask are its distance in
