@@ -201,9 +201,10 @@ def first_stage_fast(Q: np.ndarray, Y: np.ndarray, c: np.ndarray, allowed: np.nd
     return float(thresholds[lo])
 
 
-#: Metres added per robot in the second stage: among coalitions of equal total cost (e.g. two
-#: robots whose costs tie), prefer the one with fewer robots. Small enough
-#: (1e-4 m over 1000 robots) never to change which total is optimal by more than rounding.
+#: Metres added per robot in the second stage: among coalitions of equal summed cost (e.g. robots
+#: that cost 0: at a one-place subtask's place, not yet moved), prefer the one with fewer robots.
+#: Small enough (1e-4 m over 1000 robots) never to change which total is optimal by more than
+#: rounding.
 TIE_BREAK = 1e-7
 
 
@@ -625,8 +626,9 @@ class AllocationWalk:
         """Allocate every ready subtask at once: each robot joins at most one of them; minimise the
         latest finish, then the costs (total cost: the largest, then their sum, the paper's
         objective over the wave; subtask cost: their sum, the metres driven). Time-limited; the
-        best solution found is kept and the gap reported. If the wave cannot be covered by disjoint coalitions, the last subtask waits for
-        the next wave; if SCIP finds nothing in time, the wave falls back to per-subtask IPs."""
+        best solution found is kept and the gap reported. If the wave cannot be covered by
+        disjoint coalitions, the last subtask waits for the next wave; if SCIP finds nothing in
+        time, the wave falls back to per-subtask IPs."""
         from pyscipopt import quicksum  # deferred: SCIP loads only when a model is built
 
         nodes, preds, robots, Q, tl = self.nodes, self.preds, self.robots, self.Q, self.timeline
@@ -731,7 +733,8 @@ class AllocationWalk:
         if self.waves:
             stats["waves"] = self.waves
         stats.update({
-            "subtasks": len(self.assignments), "mode": mode, "cost": self.timeline.cost_kind, "time_s": time_s,
+            "subtasks": len(self.assignments), "mode": mode, "cost": self.timeline.cost_kind,
+            "time_s": time_s,
             "solve_median_ms": 1000 * float(np.median(self.solve_s)) if self.solve_s else 0.0,
             # what `schedule` will report with the same speed and handling
             "predicted": {k: predicted[k] for k in ("makespan", "tc_max", "tc_avg")},
