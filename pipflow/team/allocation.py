@@ -1,10 +1,16 @@
 """Skill-based multi-robot task allocation (paper Sec. IV-C, eq. 3) and its baselines.
 
-For one subtask with requirement vector Y, skill matrix Q (robots x skills) and costs c (the
-metres robot i drives from where it is to the route's start and along the route), the paper
-solves the lexicographic IP
+For one subtask with requirement vector Y, skill matrix Q (robots x skills) and costs c, the
+paper solves the lexicographic IP
 
     min ( max_i c_i x_i ,  sum_i c_i x_i )   s.t.  Q^T x >= Y,  x binary,  custom constraints.
+
+The cost c_i comes from the walk's :class:`~pipflow.team.scheduling.Timeline` (``cost``, one of
+``scheduling.COSTS``): by default the paper's, robot i's total travel once it has done the
+subtask (its metres so far, the approach and the route), so the max objective balances the
+team's work; with ``cost="subtask"``, the approach and route of this subtask only (nearest
+robots, less driving in total, but one robot may do most subtasks). Every solver below takes c
+as given and is the same for both.
 
 Fast first stage. Skills are non-negative, so with only per-robot exclusions (the `only` and
 `never` rules) the robots with c_i <= t can cover Y iff *all* of them together cover Y. The
@@ -35,7 +41,7 @@ from typing import Any, Iterable
 import numpy as np
 
 from pipflow.errors import AllocationError, InputError
-from pipflow.team.scheduling import Timeline, predecessors
+from pipflow.team.scheduling import DEFAULT_COST, Timeline, check_cost, predecessors
 
 EPS = 1e-7
 #: SCIP reads any number this large as infinite (its default ``numerics/infinity``)
@@ -195,9 +201,10 @@ def first_stage_fast(Q: np.ndarray, Y: np.ndarray, c: np.ndarray, allowed: np.nd
     return float(thresholds[lo])
 
 
-#: Metres added per robot in the second stage: among coalitions of equal total travel (e.g. a
-#: robot already standing at the place costs 0), prefer the one with fewer robots. Small enough
-#: (1e-4 m over 1000 robots) never to change which total is optimal by more than rounding.
+#: Metres added per robot in the second stage: among coalitions of equal summed cost (e.g. robots
+#: that cost 0: at a one-place subtask's place, not yet moved), prefer the one with fewer robots.
+#: Small enough (1e-4 m over 1000 robots) never to change which total is optimal by more than
+#: rounding.
 TIE_BREAK = 1e-7
 
 
@@ -278,7 +285,8 @@ def brute_force(Q, Y, c, allowed, lin: list[Linear] = ()) -> tuple[float, float]
 
 
 def greedy(Q, Y, c, allowed, lin: list[Linear] = ()) -> list[int]:
-    """Nearest capable robots first, until every skill is covered."""
+    """Cheapest capable robots first, until every skill is covered: the nearest ones with the
+    subtask cost, the ones with the least travel once they have done it with the total cost."""
     order = [int(i) for i in np.flatnonzero(allowed)]
     order.sort(key=lambda i: (c[i], i))
     have = np.zeros(Q.shape[1])
@@ -517,11 +525,13 @@ METHODS = ("scip", "naive", "greedy", "blind")
 
 def allocate(graph: dict, world: dict, method: str = "scip", constraints: list | None = None,
              linear: list | None = None, mode: str = "subtask", travel=None, speed: float = 1.0,
-             handling: float = 2.0, time_limit: float = 10.0) -> dict:
+             handling: float = 2.0, time_limit: float = 10.0, cost: str = DEFAULT_COST) -> dict:
     """Walk the graph frontier (Alg. 1) and allocate every subtask; the allocation contract.
 
     ``mode="subtask"``: one IP per subtask (the paper); ``mode="frontier"`` (scip only): all ready
-    subtasks in one IP minimising their latest finish, then the total distance."""
+    subtasks in one IP minimising their latest finish, then (with ``cost="total"``) the largest
+    cost and then the sum of costs, as the paper's objective does; (with ``cost="subtask"``) the
+    sum of costs, the total distance. ``cost``: what c_i is (:data:`scheduling.COSTS`)."""
     if method not in METHODS:
         raise InputError(f"unknown allocation method {method!r}; use one of {', '.join(METHODS)}")
     if mode not in ("subtask", "frontier"):
@@ -529,7 +539,7 @@ def allocate(graph: dict, world: dict, method: str = "scip", constraints: list |
     if not 0 < time_limit < SCIP_INFINITY:  # NaN too
         raise InputError(f"time_limit must be a positive number of seconds, got {time_limit}")
     walk = AllocationWalk(graph, world, method, constraints, linear, travel=travel, speed=speed,
-                          handling=handling, time_limit=time_limit)
+                          handling=handling, time_limit=time_limit, cost=check_cost(cost))
     t_start = time.perf_counter()
     if mode == "subtask" or method != "scip":
         walk.run_per_subtask()
@@ -547,14 +557,16 @@ class AllocationWalk:
     function and a dozen parameters."""
 
     def __init__(self, graph: dict, world: dict, method: str, constraints: list | None, linear: list | None,
-                 *, travel=None, speed: float = 1.0, handling: float = 2.0, time_limit: float = 10.0):
+                 *, travel=None, speed: float = 1.0, handling: float = 2.0, time_limit: float = 10.0,
+                 cost: str = DEFAULT_COST):
         self.method = method
         self.time_limit = time_limit
         self.nodes = {n["id"]: n for n in graph["nodes"]}
         self.preds = predecessors(graph)
         self.robots, self.skills, self.Q = skill_matrix(world, graph["nodes"])
         self.rules = Rules(self.robots, self.skills, self.Q, constraints, linear, graph["nodes"])
-        self.timeline = Timeline(world, travel=travel, speed=speed, handling=handling)
+        # the one source of the costs: the IPs optimise what the schedule will report
+        self.timeline = Timeline(world, travel=travel, speed=speed, handling=handling, cost=cost)
         for n in graph["nodes"]:
             self.timeline.check_route(n)
         self.order = sorted(self.nodes, key=lambda s: self.nodes[s]["index"])
@@ -612,9 +624,11 @@ class AllocationWalk:
     # ------------------------------------------------------------------ one wave
     def allocate_wave(self, wave: list[str]) -> None:
         """Allocate every ready subtask at once: each robot joins at most one of them; minimise the
-        latest finish, then total metres. Time-limited; the best solution found is kept and the gap
-        reported. If the wave cannot be covered by disjoint coalitions, the last subtask waits for
-        the next wave; if SCIP finds nothing in time, the wave falls back to per-subtask IPs."""
+        latest finish, then the costs (total cost: the largest, then their sum, the paper's
+        objective over the wave; subtask cost: their sum, the metres driven). Time-limited; the
+        best solution found is kept and the gap reported. If the wave cannot be covered by
+        disjoint coalitions, the last subtask waits for the next wave; if SCIP finds nothing in
+        time, the wave falls back to per-subtask IPs."""
         from pyscipopt import quicksum  # deferred: SCIP loads only when a model is built
 
         nodes, preds, robots, Q, tl = self.nodes, self.preds, self.robots, self.Q, self.timeline
@@ -672,17 +686,33 @@ class AllocationWalk:
             zbest, gap = m.getObjVal(), m.getGap()
             info.update({"status": status, "gap": float(gap), "latest_finish": float(zbest)})
             sol1 = {k: m.getSolVal(m.getBestSol(), v) for k, v in x.items()}
-            # second stage: total metres at (about) that latest finish
             m.freeTransform()
             m.addCons(z <= zbest + 1e-6 * max(1.0, zbest))
+            sol = sol1
+            if tl.cost_kind == "total":
+                # the paper's first objective at (about) that latest finish: the largest total travel
+                w = m.addVar(lb=0.0, vtype="C")
+                for k, v in x.items():
+                    m.addCons(w >= dist[k] * v)
+                m.setObjective(w, "minimize")
+                m.setParam("limits/time", max(0.05, (deadline - time.perf_counter()) * 0.5))
+                m.optimize()
+                info["max_cost_status"] = IPStatus.of(m)
+                found = m.getNSols() > 0
+                if found:
+                    sol = {k: m.getSolVal(m.getBestSol(), v) for k, v in x.items()}
+                    wbest = m.getObjVal()
+                    info["max_cost"] = float(wbest)
+                m.freeTransform()
+                if found:
+                    m.addCons(w <= wbest + 1e-6 * max(1.0, wbest))
+            # then the sum of costs (with the subtask cost: the metres driven)
             m.setObjective(quicksum(dist[k] * v for k, v in x.items()), "minimize")
             m.setParam("limits/time", max(0.05, deadline - time.perf_counter()))
             m.optimize()
             if m.getNSols() > 0:
                 sol = {k: m.getSolVal(m.getBestSol(), v) for k, v in x.items()}
                 info["stage2_status"] = IPStatus.of(m)
-            else:
-                sol = sol1
             self.solve_s.append(time.perf_counter() - t0)
             chosen = {sid: [i for (i, s), v in sol.items() if s == sid and v > 0.5] for sid in sub}
             starts = {}
@@ -703,13 +733,14 @@ class AllocationWalk:
         if self.waves:
             stats["waves"] = self.waves
         stats.update({
-            "subtasks": len(self.assignments), "mode": mode, "time_s": time_s,
+            "subtasks": len(self.assignments), "mode": mode, "cost": self.timeline.cost_kind,
+            "time_s": time_s,
             "solve_median_ms": 1000 * float(np.median(self.solve_s)) if self.solve_s else 0.0,
             # what `schedule` will report with the same speed and handling
             "predicted": {k: predicted[k] for k in ("makespan", "tc_max", "tc_avg")},
         })
         method = self.method if mode == "subtask" else f"{self.method}-frontier"
-        return {"method": method, "assignments": self.assignments, "stats": stats}
+        return {"method": method, "cost": self.timeline.cost_kind, "assignments": self.assignments, "stats": stats}
 
 
 def _x(chosen: list[int], n: int) -> np.ndarray:

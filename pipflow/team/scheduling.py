@@ -7,6 +7,17 @@ the load at each stop (``handling`` seconds per stop) and drives the route toget
 subtask's end. Allocation (which needs where robots are, and in frontier mode when they are
 free) and the ``schedule`` step share this one :class:`Timeline`, so the costs the allocator
 optimised are exactly the distances the schedule reports.
+
+The allocation cost c_i of a robot for a subtask has two definitions (:data:`COSTS`):
+
+* ``total`` (the paper, Sec. IV-C: "the total travel distance of robot i"): the metres the robot
+  has driven so far in this schedule, plus its approach to the subtask and the subtask's route.
+  Minimising the largest c_i then balances the team's work: a robot that has driven far is
+  expensive, one that idled is cheap. The costs of a robot's last subtask are its distance in
+  the schedule, so the allocator's max is the schedule's TC-max.
+* ``subtask``: the approach plus the route of this subtask only. It picks the nearest robots
+  for each subtask whatever they did before: less driving in total (TC-sum), but one robot may
+  do most of the work (a larger TC-max and makespan).
 """
 from __future__ import annotations
 
@@ -15,11 +26,24 @@ from typing import Any, Iterable
 
 from pipflow.errors import InputError
 
+#: the allocation costs c_i a :class:`Timeline` can give (the first is the paper's and the default)
+COSTS = ("total", "subtask")
+DEFAULT_COST = COSTS[0]
+
+
+def check_cost(cost: str) -> str:
+    """``cost`` if it names a definition of :data:`COSTS`, else an InputError listing them."""
+    if cost not in COSTS:
+        raise InputError(f"unknown allocation cost {cost!r}; use total (each robot's travel so far plus "
+                         f"this subtask, the paper's) or subtask (this subtask's approach and route only)")
+    return cost
+
 
 class Timeline:
     """Robots' positions and free times, and subtasks' end times, as subtasks are committed."""
 
-    def __init__(self, world: dict, travel=None, speed: float = 1.0, handling: float = 2.0):
+    def __init__(self, world: dict, travel=None, speed: float = 1.0, handling: float = 2.0,
+                 cost: str = DEFAULT_COST):
         # deferred: pulls networkx and numpy (~350 ms; a schedule without travel times needs neither)
         from pipflow.team.travel import TravelMap
 
@@ -31,11 +55,13 @@ class Timeline:
         self.travel = travel if travel is not None else TravelMap(world)
         self.speed = float(speed)
         self.handling = float(handling)
+        self.cost_kind = check_cost(cost)
         self.robots = list((world.get("robots") or {}).keys())
         self.pos: dict[str, Any] = {r: r for r in self.robots}  # a robot name means its start
         self.free: dict[str, float] = {r: 0.0 for r in self.robots}
         self.end: dict[str, float] = {}
         self.legs: dict[str, list[dict]] = {r: [] for r in self.robots}
+        self.driven: dict[str, float] = {r: 0.0 for r in self.robots}  # metres of the legs so far
         self.records: list[dict] = []
 
     # -- costs ------------------------------------------------------------------------------
@@ -54,9 +80,17 @@ class Timeline:
         """Metres robot drives from where it is to the route's first place."""
         return self.travel.distance(self.pos[robot], self.check_route(node)[0])
 
-    def cost(self, robot: str, node: dict) -> float:
-        """The paper's c_i: approach plus the route itself."""
+    def subtask_cost(self, robot: str, node: dict) -> float:
+        """Metres this subtask alone makes the robot drive: approach plus the route itself."""
         return self.approach(robot, node) + self.route_length(node)
+
+    def cost(self, robot: str, node: dict) -> float:
+        """c_i of the allocation IP, as this timeline's ``cost_kind`` defines it (module doc):
+        ``total``, the robot's distance in the schedule once it has done ``node``; ``subtask``,
+        what ``node`` alone adds to it."""
+        if self.cost_kind == "subtask":
+            return self.subtask_cost(robot, node)
+        return self.driven[robot] + self.subtask_cost(robot, node)
 
     def duration(self, node: dict) -> float:
         """Seconds from the coalition's gathering to the end: handling at each stop + driving."""
@@ -91,6 +125,7 @@ class Timeline:
                     "path": self.travel.path(self.pos[r], route[0]),
                     "start": self.free[r], "end": self.free[r] + d / self.speed, "distance": d,
                 })
+                self.driven[r] += d
         t = start + self.handling
         for k in range(1, len(route)):
             d = self.travel.distance(route[k - 1], route[k])
@@ -99,6 +134,7 @@ class Timeline:
             for r in robots:
                 self.legs[r].append({"subtask": node["id"], "from": list(a), "to": list(b), "path": path,
                                      "start": t, "end": t + d / self.speed, "distance": d})
+                self.driven[r] += d
             t += d / self.speed + self.handling
         end = t
         for r in robots:
@@ -114,7 +150,7 @@ class Timeline:
         """The schedule contract of docs/architecture.md."""
         robots = {}
         for r in self.robots:
-            robots[r] = {"legs": self.legs[r], "distance": sum(leg["distance"] for leg in self.legs[r])}
+            robots[r] = {"legs": self.legs[r], "distance": self.driven[r]}
         dists = [v["distance"] for v in robots.values()]
         moved = [d for d in dists if d > 1e-9]
         return {
