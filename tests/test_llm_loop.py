@@ -488,6 +488,40 @@ def test_household_the_check_catches_the_missing_tomato(tmp_path):
     assert "(at tomato fridge)" not in prompts[1]
 
 
+def test_household_second_opinion_names_what_differs_and_doubts_only_from_words():
+    """The household check on its own: an object left out, another place, a state and a rule the
+    command does not ask for are firm findings named without the reading's place or state; a
+    condition that already holds is no difference; a command the translator does not read only
+    raises doubts (never feedback), and restating a named thing settles them."""
+    from pipflow.household import agreement as household_agreement
+
+    home = _home("homogeneous")
+    command = "Put the apple and the tomato in the fridge."
+    state = agreement.remembered_reading(command, home, household_agreement._read, "household")[0]
+    assert state == "read"
+    fine = household_agreement.second_opinion(command, home, {"in": {"fridge": ["apple", "tomato"]},
+                                                              "state": {"fridge": ["closed"], "apple": ["whole"]}},
+                                              [], None)
+    assert (fine.firm, fine.messages) == (False, [])  # "whole" holds already: a restatement
+    off = household_agreement.second_opinion(command, home, {"in": {"fridge": ["apple"], "sink": ["tomato", "mug"]},
+                                                             "state": {"fridge": ["open"]}},
+                                             [{"never": ["robot1"]}], None)
+    assert off.firm and off.messages == [
+        "your goal does not put the tomato where the command asks (the command's words: "
+        "'put the apple and the tomato in the fridge')",
+        "your goal leaves out a condition the command asks of the fridge (the command's words: "
+        "'Put the apple and the tomato in the fridge.')",
+        "your goal moves the mug, which the command does not ask for",
+        "your goal makes the fridge open, which the command does not ask for",
+        "your rule 'never robot1' is not one the command states"]
+    assert any("puts it in sink" in line for line in off.disagreement)  # the record keeps where
+    unread = "Zorble the apple into the fridge pronto."
+    doubt = household_agreement.second_opinion(unread, home, {"in": {"sink": ["mug"]}}, [], None)
+    assert (doubt.basis, doubt.firm, doubt.messages) == (agreement.WORDS, False, [])
+    assert doubt.disagreement == ["the command names the fridge; the goal says nothing of it",
+                                  "the command names the apple; the goal says nothing of it"]
+
+
 def test_feedback_that_cycles_back_is_varied_too(tmp_path):
     """Answers that alternate (prose, a broken problem, prose again) make the feedback cycle: the
     prompt of round 4 would be round 2's. It is varied, so no prompt of the run repeats."""

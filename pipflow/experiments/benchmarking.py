@@ -279,6 +279,7 @@ def run_bench(config: BenchConfig, progress: bool = True, on_row=None) -> dict:
     wall = time.perf_counter() - started
     rows = [done[run_key(s)] for s in specs if run_key(s) in done]
     results = _results(rows, tasks_doc["tasks"], config, wall, domain.name)
+    results["config"]["workflows"] = {s.variant: s.workflow for s in specs}  # what each variant ran
     results["executed_runs"], results["resumed_runs"] = fresh, len(specs) - len(todo)
     _write(out, rows, results)
     return results

@@ -40,11 +40,21 @@ def _required_in(reading: dict, world: dict, obj: str, place: str) -> bool:
     return any(c.get("in") == place and obj in members(world, c.get("category")) for c in goal.get("count") or [])
 
 
-def compare_with_reading(command: str, goal: dict, reading: dict, world: dict) -> list[Finding]:
-    """Where the model's goal conditions differ from the reading. A condition the reading does
-    not have is no disagreement when it already holds (a model may restate what stays). The
-    messages name the object or thing and quote the command's words; the place or state the
-    reading asks for stays in ``said``."""
+def _rule_in_words(rule: dict) -> str:
+    """A rule of the model's own, in words (it is the model's value, not the reading's)."""
+    kind = "only" if "only" in rule else "never"
+    robots = rule.get(kind)
+    robots = [robots] if isinstance(robots, str) else list(robots or [])
+    scope = ", ".join(f"{k} {v}" for k, v in rule.items() if k not in (kind, "words") and v not in (None, "any"))
+    return f"{kind} {', '.join(map(str, robots))}" + (f" ({scope})" if scope else "")
+
+
+def compare_with_reading(command: str, goal: dict, constraints: list, reading: dict, world: dict) -> list[Finding]:
+    """Where the model's goal conditions and rules differ from the reading. A condition the
+    reading does not have is no disagreement when it already holds (a model may restate what
+    stays). The messages name the object or thing and quote the command's words; the place or
+    state the reading asks for stays in ``said``. The translator reads no robot rules, so a
+    command it reads states none: every rule of the model's is one the command does not state."""
     want, words = reading["goal"], reading.get("words") or {}
     start = initial_state(world)
     placed = _where(goal)
@@ -74,8 +84,9 @@ def compare_with_reading(command: str, goal: dict, reading: dict, world: dict) -
                                  f"ends with {len(there)}",
                                  f"your goal puts fewer {cat} in the {place} than the command asks "
                                  f"{words_note(command)}"))
+    asked = _where(want)
     for o, place in sorted(placed.items()):
-        if start["at"].get(o) != place and not _required_in(reading, world, o, place):
+        if o not in asked and start["at"].get(o) != place and not _required_in(reading, world, o, place):
             found.append(Finding(f"the model's goal moves {o} to {place}; the command does not ask for that",
                                  f"your goal moves the {o}, which the command does not ask for"))
     for name, conds in sorted(stated.items()):
@@ -83,6 +94,9 @@ def compare_with_reading(command: str, goal: dict, reading: dict, world: dict) -
             if not holds(start, name, c):
                 found.append(Finding(f"the model's goal makes {name} {c}; the command does not ask for that",
                                      f"your goal makes the {name} {c}, which the command does not ask for"))
+    for rule in constraints or []:
+        found.append(Finding(f"the model's rule {rule} is not in the command",
+                             f"your rule '{_rule_in_words(rule)}' is not one the command states"))
     return found
 
 
@@ -102,11 +116,11 @@ def doubts_from_words(command: str, goal: dict, world: dict) -> list[str]:
             if n not in mentioned]
 
 
-def second_opinion(command: str, world: dict, goal: Any, verifier_refusal: str | None,
+def second_opinion(command: str, world: dict, goal: Any, constraints: list | None, verifier_refusal: str | None,
                    last: bool = False) -> Opinion:
     """The model's goal conditions against the command's (see
     :func:`pipflow.language.agreement.judge`)."""
     goal = goal if isinstance(goal, dict) else {}
     reading = remembered_reading(command, world, _read, "household")
-    return judge(reading, lambda data: compare_with_reading(command, goal, data, world),
+    return judge(reading, lambda data: compare_with_reading(command, goal, constraints or [], data, world),
                  lambda: doubts_from_words(command, goal, world), verifier_refusal, last)

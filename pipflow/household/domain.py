@@ -112,9 +112,8 @@ class HouseholdDomain(TaskDomain):
 
     def second_opinion(self, command: str, world: dict, goal: Any, constraints: list[dict],
                        refusal: str | None, last: bool = False) -> Any | None:
-        """The goal conditions against the translator's reading (robot rules are not compared:
-        the household reader states none)."""
-        return agreement.second_opinion(command, world, goal, refusal, last)
+        """The goal conditions and robot rules against the translator's reading."""
+        return agreement.second_opinion(command, world, goal, constraints, refusal, last)
 
     def simulate(self, world: dict, schedule: dict, graph: dict | None, goal: Any, *,
                  snapshots: bool = False, out_dir: Path | None = None,
