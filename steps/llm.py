@@ -118,8 +118,13 @@ def llm_check(
     ``messages`` instead); ``disagreement``: the doubts an accepted reading carries, else empty."""
     if resolve_model(model) == "offline" or reader == "offline":  # the reading is the parser's own
         return {"ok": True, "messages": [], "refusal": refusal, "disagreement": [], "basis": "none"}
-    opinion = task_domain(world).second_opinion(command, world, goal, constraints, refusal, last)
+    domain = task_domain(world)
+    opinion = domain.second_opinion(command, world, goal, constraints, refusal, last)
     if opinion is None:  # a domain whose goals are not compared: only whether a refusal is final
+        if strict:  # nothing can check the model's reading: offline-first executes only the parser's
+            raise TranslationError(f"the offline parser does not read the command, and the {domain.name} domain "
+                                   "cannot check a model's reading of it, so it is not executed; say the command "
+                                   "in words the parser reads, or run without reader=offline-first")
         opinion = refusal_opinion(command, world, refusal, last)
     for line in opinion.disagreement:
         ctx.log(f"check ({opinion.basis}): {line}")

@@ -522,6 +522,24 @@ def test_household_second_opinion_names_what_differs_and_doubts_only_from_words(
                                   "the command names the apple; the goal says nothing of it"]
 
 
+def test_offline_first_executes_no_model_reading_a_domain_cannot_check(tmp_path, monkeypatch):
+    """A domain without a second opinion (a plugin may have none): in strict mode (offline-first)
+    a model's reading of a command the parser does not read is not executed, since nothing can
+    check it; without strict, only whether a refusal is final is decided, as before."""
+    from pipflow import StepContext
+    from pipflow.errors import TranslationError
+    from pipflow.steps.llm import llm_check
+    from pipflow.warehouse.domain import WarehouseDomain
+
+    monkeypatch.setattr(WarehouseDomain, "second_opinion", lambda self, *args: None)
+    ctx = StepContext("check", tmp_path / "artifacts", base_dir=REPO)
+    args = dict(command=REPRO, world=WORLD, goal=REPRO_WRONG, constraints=[], refusal=None, model="openai/fake",
+                reader="model")
+    assert llm_check.func(ctx, **args)["ok"] is True
+    with pytest.raises(TranslationError, match="cannot check a model's reading"):
+        llm_check.func(ctx, **args, strict=True)
+
+
 def test_feedback_that_cycles_back_is_varied_too(tmp_path):
     """Answers that alternate (prose, a broken problem, prose again) make the feedback cycle: the
     prompt of round 4 would be round 2's. It is varied, so no prompt of the run repeats."""
