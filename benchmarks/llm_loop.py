@@ -4,10 +4,12 @@
 Usage::
 
     python benchmarks/llm_loop.py [--model local/smollm2] [--modes free,grounded]
-                                  [--tasks wh-01,wh-05] [--rounds 4] [--out DIR] [--json FILE]
+                                  [--workflow pip-llm-checked] [--tasks wh-01,wh-05] [--rounds 4]
+                                  [--out DIR] [--json FILE]
 
-Each task of ``benchmarks/warehouse/tasks.yaml`` (the paper's ten) runs through the real
-warehouse workflow (``pipflow.run``, no cache, so every round calls the model) once per mode,
+Each task of ``benchmarks/warehouse/tasks.yaml`` (the paper's ten) runs through a real warehouse
+workflow (``pipflow.run``, no cache, so every round calls the model): the checked loop
+(``pip-llm-checked``, the default here) or the paper's (``--workflow pip-llm``), once per mode,
 free (the model writes PDDL) and grounded (the model answers JSON under a grammar). From each
 run's record it reads, per round, the prompt as sent (``messages.json``), the request's
 temperature and what the generator varied, and prints per mode:
@@ -44,11 +46,11 @@ if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
 import pipflow  # noqa: E402
-from pipflow.language.agreement import compare_with_reading, offline_reading  # noqa: E402
+from pipflow.language.agreement import offline_reading  # noqa: E402
+from pipflow.warehouse.agreement import compare_with_reading  # noqa: E402
 from pipflow.warehouse.world import load_world  # noqa: E402
 
 TASKS = ROOT / "benchmarks" / "warehouse" / "tasks.yaml"
-WORKFLOW = ROOT / "workflows" / "warehouse.yaml"
 
 
 def _read(path: Path, default: Any = None) -> Any:
@@ -88,11 +90,9 @@ def judge(task: dict, world: dict, result: Any) -> dict:
     if result.status == "succeeded":
         goal, rules = result.outputs.get("goal") or {}, result.outputs.get("constraints") or []
         state, reading = offline_reading(task["command"], world)
-        if state == "read":
-            disagree, _ = compare_with_reading(goal, rules, reading, world, False)
-        else:  # the parser does not read it: the task's gold is the reference
-            gold = {"goal": task.get("goal") or {}, "constraints": task.get("constraints") or []}
-            disagree, _ = compare_with_reading(goal, rules, gold, world, False)
+        if state != "read":  # the parser does not read it: the task's gold is the reference
+            reading = {"goal": task.get("goal") or {}, "constraints": task.get("constraints") or []}
+        disagree = [f.said for f in compare_with_reading(task["command"], goal, rules, reading, world)]
     return {"task": task["id"], "status": result.status, "rounds": len(rounds), "repeats": repeats,
             "refused_feasible": result.status == "refused" and feasible,
             "accepted_disagreeing": bool(disagree), "disagreement": disagree,
@@ -126,6 +126,7 @@ def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--model", default="local/smollm2")
     ap.add_argument("--modes", default="free,grounded")
+    ap.add_argument("--workflow", default="pip-llm-checked", help="pip-llm (the paper's loop) or pip-llm-checked")
     ap.add_argument("--tasks", default="", help="comma-separated task ids (default: all ten)")
     ap.add_argument("--rounds", type=int, default=4)
     ap.add_argument("--out", default="", help="runs folder (default: a temporary one)")
@@ -140,13 +141,13 @@ def main(argv: list[str] | None = None) -> int:
     tasks = [t for t in spec["tasks"] if not wanted or t["id"] in wanted]
     runs_dir = Path(args.out or tempfile.mkdtemp(prefix="llm-loop-"))
     load_before = os.getloadavg()
-    report: dict[str, Any] = {"model": args.model, "rounds": args.rounds, "load_before": load_before, "modes": {}}
+    report: dict[str, Any] = {"model": args.model, "workflow": args.workflow, "rounds": args.rounds, "load_before": load_before, "modes": {}}
     started = time.perf_counter()
     for mode in [m for m in args.modes.split(",") if m]:
         rows = []
         for task in tasks:
             t0 = time.perf_counter()
-            result = pipflow.run(WORKFLOW, command=task["command"], model=args.model, grounded=(mode == "grounded"),
+            result = pipflow.run(args.workflow, command=task["command"], model=args.model, grounded=(mode == "grounded"),
                                  rounds=args.rounds, cache=False, runs_dir=runs_dir / mode,
                                  llm_timeout=args.llm_timeout, llm_deadline=args.llm_deadline)
             row = judge(task, world, result)
@@ -159,7 +160,7 @@ def main(argv: list[str] | None = None) -> int:
         report["modes"][mode] = {"summary": summary(rows), "rows": rows}
     report["load_after"] = os.getloadavg()
     report["seconds"] = round(time.perf_counter() - started, 1)
-    print(f"\nmodel {args.model}, {len(tasks)} task(s), at most {args.rounds} rounds; load average "
+    print(f"\nmodel {args.model}, workflow {args.workflow}, {len(tasks)} task(s), at most {args.rounds} rounds; load average "
           f"{load_before[0]:.1f} before, {report['load_after'][0]:.1f} after; {report['seconds']} s in all")
     keys = ["runs", "rounds", "rounds_per_run", "repeats", "repeat_share", "refused_feasible",
             "accepted_disagreeing", "succeeded", "refused", "failed", "varied_rounds", "calls_at_budget",

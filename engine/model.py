@@ -202,7 +202,7 @@ def merge_workflows(base: SourceDict, child: SourceDict, diagnostics: list[Diagn
     """Child overrides base: inputs and outputs key by key, steps by id.
 
     A child step with ``uses`` (or ``loop``) replaces the base step of that id or is added at
-    the end; a child entry with only ``id`` and some of ``with``/``when``/``timeout``/
+    the end (with ``inside: LOOP``, at the end of that inherited loop's steps); a child entry with only ``id`` and some of ``with``/``when``/``timeout``/
     ``retry``/``cache`` (or a loop's ``max``/``until``/``on_max``) changes just those parts;
     ``remove: [ids]`` drops inherited steps. The base is deep-copied first, so merging may
     change it in place; locations travel with the copies."""
@@ -256,6 +256,9 @@ def _merge_steps(steps: SourceList, child_steps: Any, remove: list, diagnostics:
         sid = entry.get("id") if isinstance(entry, dict) else None
         sid = sid if isinstance(sid, str) else None
         found = index.get(sid) if sid is not None else None
+        if isinstance(entry, dict) and "inside" in entry:
+            _place_inside(steps, entry, found, diagnostics)
+            continue
         if sid is None or not isinstance(entry, dict) or "uses" in entry or "loop" in entry:
             if found:
                 container, i = found
@@ -270,6 +273,39 @@ def _merge_steps(steps: SourceList, child_steps: Any, remove: list, diagnostics:
         container, i = found
         _override(container[i], entry)
     return _without(steps, removed)
+
+
+def _place_inside(steps: SourceList, entry: SourceDict, found: tuple[list, int] | None,
+                  diagnostics: list[Diagnostic]) -> None:
+    """A child step with ``inside: LOOP``: added to the steps of the inherited loop ``LOOP`` (or,
+    when the loop already has a step of that id, replacing it), so that a variant can add a step
+    to a loop without copying the loop. ``inside`` itself is not kept."""
+    loop_id = entry["inside"]
+    where = entry.where("inside")
+    step = SourceDict((k, v) for k, v in entry.items() if k != "inside")
+    step.loc, step.locs = entry.loc, {k: v for k, v in entry.locs.items() if k != "inside"}
+    if "uses" not in step:
+        diagnostics.append(Diagnostic(where, f"step {entry.get('id')!r}: 'inside' adds a step to a loop; it needs "
+                                             "'uses' (to change part of an inherited step, leave 'inside' out)"))
+        return
+    loop = next((s for s in steps if isinstance(s, dict) and s.get("id") == loop_id), None)
+    inner = loop.get("loop", {}).get("steps") if isinstance(loop, dict) and isinstance(loop.get("loop"), dict) else None
+    if not isinstance(inner, list):
+        loops = [s["id"] for s in steps if isinstance(s, dict) and isinstance(s.get("loop"), dict)]
+        diagnostics.append(Diagnostic(where, f"step {entry.get('id')!r}: inside {loop_id!r}: no inherited loop has "
+                                             f"that id (loops: {', '.join(map(str, loops)) or 'none'})"))
+        return
+    if found is not None:
+        container, i = found
+        if container is not inner:
+            diagnostics.append(Diagnostic(where, f"step {entry.get('id')!r}: inside {loop_id!r}, but the inherited "
+                                                 f"step of that id is not in loop {loop_id!r}"))
+            return
+        container[i] = step
+        return
+    inner.append(step)
+    if isinstance(inner, SourceList):
+        inner.locs[len(inner) - 1] = step.loc
 
 
 def _override(target: SourceDict, entry: SourceDict) -> None:

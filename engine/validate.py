@@ -59,13 +59,20 @@ def check_workflow(path: str | Path, registry: Registry | None = None) -> tuple[
         if not diagnostics:  # never "valid" without a merged workflow to run
             diagnostics.append(Diagnostic(data.where("extends"), "extends: the base workflow could not be merged"))
         return None, diagnostics
-    steps = data.get("steps")
-    for raw in steps if isinstance(steps, list) else []:
+    steps = data.get("steps") if isinstance(data.get("steps"), list) else []
+    for raw in steps:
         if isinstance(raw, SourceDict) and "id" in raw and "uses" not in raw and "loop" not in raw:
             # an override entry (only id/with/...) is valid only in a workflow that extends another;
             # merged ones are gone by now, so this one would be dropped without a word
             diagnostics.append(Diagnostic(raw.loc, f"step {raw['id']!r}: needs 'uses' (a step) or 'loop'; "
                                                    "changing only parts of a step needs 'extends'"))
+    inner = [x for raw in steps if isinstance(raw, SourceDict) and isinstance(raw.get("loop"), dict)
+             and isinstance(raw["loop"].get("steps"), list) for x in raw["loop"]["steps"]]
+    for raw in [*steps, *inner]:
+        if isinstance(raw, SourceDict) and "inside" in raw:  # merged ones are gone by now
+            diagnostics.append(Diagnostic(raw.where("inside"), f"step {raw.get('id')!r}: 'inside' adds a step to an "
+                                                               "inherited loop, which needs 'extends' (in a loop "
+                                                               "of this file, list the step under its 'steps')"))
     if schema_problems:  # merge problems (remove/override of unknown ids) do not stop the checks below
         return None, diagnostics
     workflow = build_workflow(path, data, files)

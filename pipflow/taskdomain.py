@@ -145,6 +145,13 @@ class TaskDomain(ABC):
     #: ``--workflow`` names another): a built-in workflow's name, or the path of a workflow file
     #: (a plugin gives the absolute path of the one its package ships)
     workflow: ClassVar[str]
+    #: the workflows that carry out a method by its name on this domain's worlds: what a bench
+    #: of its task files runs for ``--workflow NAME`` or ``--matrix workflow=NAME,...`` (e.g.
+    #: ``{"pip-llm": "household", "pip-llm-checked": "household-checked"}``); each a built-in
+    #: workflow's name or a workflow file's path. ``pip-llm`` (the paper's pipeline) is
+    #: :attr:`workflow` unless mapped; names not mapped are left as they are (a built-in name or a
+    #: path): see :meth:`workflow_for`
+    workflows: ClassVar[Mapping[str, str]] = {}
     #: the prompt template the generator renders when the workflow names none
     default_prompt: ClassVar[str]
     #: the fields a robot rule may narrow by, besides ``only``/``never``
@@ -153,6 +160,11 @@ class TaskDomain(ABC):
     grounding: ClassVar[Grounding | None] = None
     #: the switches its ``simulate`` reads from ``options`` (the generic step refuses others)
     simulate_options: ClassVar[tuple[str, ...]] = ()
+
+    def workflow_for(self, name: str) -> str:
+        """The workflow that carries out method ``name`` on this domain's worlds
+        (:attr:`workflows`), or ``name`` itself (a built-in workflow's name or a path)."""
+        return self.workflows.get(name) or (self.workflow if name == "pip-llm" else name)
 
     # -- files it ships ------------------------------------------------------------------------
 
@@ -226,10 +238,14 @@ class TaskDomain(ABC):
     # -- the LLM check -------------------------------------------------------------------------
 
     def second_opinion(self, command: str, world: dict, goal: Any, constraints: list[dict],
-                       refusal: str | None, grounded: bool) -> Any | None:
-        """The check of a model's goal and rules against the offline reading of the command
-        (a :class:`pipflow.language.agreement.Opinion`), or None when this domain's goals are not
-        compared: then only whether the verifier's refusal is final is decided."""
+                       refusal: str | None, last: bool = False) -> Any | None:
+        """The checked loop's test of a model's goal and rules against the offline reading of the
+        command, or the doubts the command's words raise when the parser does not read it (a
+        :class:`pipflow.language.agreement.Opinion`, usually from
+        :func:`pipflow.language.agreement.judge`); feedback names what disagrees and the
+        command's words, never the reading's value. ``last``: the loop's last round (an
+        unconfirmed refusal is then final). None when this domain's goals are not compared: then
+        only whether the verifier's refusal is final is decided."""
         return None
 
     # -- simulation and scoring ----------------------------------------------------------------

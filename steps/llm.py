@@ -6,18 +6,18 @@ from __future__ import annotations
 
 from typing import Annotated
 
-from pipflow import Check, Doc, PathStr, StepContext, step
-from pipflow.errors import InputError
+from pipflow import Check, Choices, Doc, PathStr, StepContext, step
+from pipflow.errors import InputError, TranslationError
+from pipflow.language.agreement import refusal_opinion
+from pipflow.language.generator import READERS, generate
+from pipflow.language.llm import resolve_model
+from pipflow.language.prompting import prompt_problem
+from pipflow.taskdomains import task_domain
 
 #: the longest answer kept in the step's ``response`` output. The run record copies outputs (each
 #: loop iteration, the loop's result), so a long answer is stored once in full, as the artifact
 #: response.txt, and only its head in the outputs.
 RESPONSE_OUTPUT_CHARS = 32_000
-from pipflow.language.agreement import refusal_opinion
-from pipflow.language.generator import generate
-from pipflow.language.llm import resolve_model
-from pipflow.language.prompting import prompt_problem
-from pipflow.taskdomains import task_domain
 
 
 @step(
@@ -27,7 +27,8 @@ from pipflow.taskdomains import task_domain
              "response": "string", "usage": "object", "errors": "array",
              "order": "any", "explanation": "any",  # offline: the order and the resolver's arithmetic
              "varied": "string", "round": "object",  # what changed in a prompt that would repeat; this round
-             "concrete": "object"},  # offline, where the domain has it: the goal with counts resolved
+             "concrete": "object",  # offline, where the domain has it: the goal with counts resolved
+             "reader": "string"},  # who wrote this round's goal: offline (the parser) or model
 )
 def llm_problem(
     ctx: StepContext,
@@ -54,12 +55,17 @@ def llm_problem(
                                           "bound beyond timeout x tries")] = None,
     previous: Annotated[dict | None, Doc("the previous round's `round` output: a prompt that would repeat it "
                                          "is varied (output `varied` says how)")] = None,
+    reader: Annotated[str, Choices(*READERS),
+                      Doc("model: the model reads every command; offline-first: the offline parser reads it "
+                          "when it understands it (no model call), the model only what the parser refuses as "
+                          "not understood (a command the parser finds impossible is refused)")] = "model",
 ) -> dict:
     """``problem`` is "" when the answer held no usable problem; ``errors`` then says why, in
     words meant for the next round's prompt. ``goal`` is set by offline and grounded runs, and by
     every run of a domain that reads its goal back from the problem (household: its goal
     conditions). Offline, the world's task domain reads the command; `concrete` (the goal with
-    counts resolved) is set where the domain has it (household), else None."""
+    counts resolved) is set where the domain has it (household), else None. ``reader`` says
+    whose reading this round's goal is: ``offline`` (the parser's) or ``model``."""
     resolved = resolve_model(model)
     path = ctx.resolve_path(domain)
     try:  # offline too: the problem names the domain file's PDDL domain
@@ -71,7 +77,8 @@ def llm_problem(
         max_tokens=max_tokens, timeout=timeout, retries=retries, deadline=deadline, api_base=api_base,
         feedback=feedback, grounded=grounded,
         cache_dir=ctx.resolve_path(cache_dir) if cache_dir else None, use_cache=cache and ctx.use_cache,
-        base_dir=ctx.base_dir, save=ctx.write_artifact, log=lambda m: _log(ctx, m), previous=previous)
+        base_dir=ctx.base_dir, save=ctx.write_artifact, log=lambda m: _log(ctx, m), previous=previous,
+        reader=reader)
     ctx.metrics["llm"] = out["usage"]
     text = out.get("response") or ""
     if len(text) > RESPONSE_OUTPUT_CHARS:  # the whole answer is kept once, as artifact response.txt
@@ -82,8 +89,9 @@ def llm_problem(
 
 @step(
     "llm.check",
-    doc="A second opinion on the model's reading: its goal and robot rules against the offline parser's "
-        "reading of the command (or the command's names and numbers); decides whether a refusal is final.",
+    doc="The checked loop's second opinion on the model's reading: its goal and robot rules against the offline "
+        "parser's reading of the command (or the doubts the command's names and numbers raise); decides whether a "
+        "refusal is final. Feedback names what disagrees and the command's words, never the parser's value.",
     outputs={"ok": "boolean", "messages": "array", "refusal": "string", "disagreement": "array",
              "basis": "string"},
 )
@@ -91,33 +99,48 @@ def llm_check(
     ctx: StepContext,
     command: Annotated[str, Doc("the natural-language command")],
     world: Annotated[dict, Doc("the world (output of world.load)")],
-    goal: Annotated[dict | None, Doc("the goal the round's problem states (pddl.verify's goal)")] = None,
+    goal: Annotated[dict | None, Doc("the goal the round's problem states (pddl.verify's goal, or the "
+                                     "generator's where the domain reads its goal back)")] = None,
     constraints: Annotated[list | None, Doc("the round's robot-use rules (llm.problem's constraints)")] = None,
     refusal: Annotated[str | None, Doc("the verifier's refusal of this round's goal, if any")] = None,
     model: Annotated[str | None, Doc("the generator's model; offline: its reading is the parser's")] = None,
-    grounded: Annotated[bool, Doc("the model answered in JSON: feedback says so in JSON")] = False,
-    last: Annotated[bool, Doc("this is the loop's last round: a disagreement with the command's words alone "
-                              "is then accepted, with a warning")] = False,
+    reader: Annotated[str | None, Doc("who wrote the round's goal (llm.problem's reader); offline: the "
+                                      "parser, nothing to compare")] = None,
+    strict: Annotated[bool, Doc("a goal the command's words raise doubts about (the parser did not read the "
+                                "command) ends the run, not executed, instead of being accepted with a warning")] = False,
+    last: Annotated[bool, Doc("this is the loop's last round: a refusal nothing confirms or denies is then final")] = False,
 ) -> dict:
-    """``ok``: the reading agrees (or, in the last round, differs only from the command's words);
-    ``messages``: the disagreement as feedback for the next round, in the mode's answer form;
-    ``refusal``: final only when the command makes the goal impossible, else None (the verifier's
-    refusal of a goal the model invented is in ``messages`` instead); ``disagreement``: what an
-    accepted reading still gets wrong (a warning for the run summary), else empty."""
-    if resolve_model(model) == "offline":  # the reading is the parser's own
+    """``ok``: the reading agrees with the offline reading, or the parser does not read the
+    command (its words raise doubts at most: accepted, the doubts in ``disagreement`` as
+    warnings; with ``strict`` the run ends instead, TranslationError); ``messages``: a firm
+    disagreement as feedback for the next round; ``refusal``: final only when the command makes
+    the goal impossible, else None (the verifier's refusal of a goal the model invented is in
+    ``messages`` instead); ``disagreement``: the doubts an accepted reading carries, else empty."""
+    if resolve_model(model) == "offline" or reader == "offline":  # the reading is the parser's own
         return {"ok": True, "messages": [], "refusal": refusal, "disagreement": [], "basis": "none"}
-    opinion = task_domain(world).second_opinion(command, world, goal, constraints, refusal, grounded)
+    domain = task_domain(world)
+    opinion = domain.second_opinion(command, world, goal, constraints, refusal, last)
     if opinion is None:  # a domain whose goals are not compared: only whether a refusal is final
-        opinion = refusal_opinion(command, world, refusal)
-    ok = not opinion.disagreement or (last and not opinion.firm and opinion.refusal is None)
+        if strict:  # nothing can check the model's reading: offline-first executes only the parser's
+            raise TranslationError(f"the offline parser does not read the command, and the {domain.name} domain "
+                                   "cannot check a model's reading of it, so it is not executed; say the command "
+                                   "in words the parser reads, or run without reader=offline-first")
+        opinion = refusal_opinion(command, world, refusal, last)
     for line in opinion.disagreement:
         ctx.log(f"check ({opinion.basis}): {line}")
+    doubts = [] if opinion.firm else list(opinion.disagreement)
+    ok = not opinion.firm and not opinion.messages
     ctx.write_artifact("check.json", {"basis": opinion.basis, "disagreement": opinion.disagreement,
                                       "messages": opinion.messages, "refusal": opinion.refusal,
-                                      "reading": opinion.reading, "ok": ok})
-    accepted = [f"warning: accepted after the last round although the model's reading differs from the "
-                f"{opinion.basis}: {line}" for line in opinion.disagreement] if ok else []
-    return {"ok": ok, "messages": [] if ok and opinion.disagreement else opinion.messages, "refusal": opinion.refusal,
+                                      "reading": opinion.reading, "ok": ok, "strict": strict})
+    if strict and doubts and opinion.refusal is None:
+        raise TranslationError(
+            "the offline parser does not read the command, and the model's reading of it is not executed: the "
+            "command's words raise doubts about it (" + "; ".join(doubts) + "); say the command in words the "
+            "parser reads, or run without reader=offline-first")
+    accepted = [f"warning: accepted although the parser does not read the command and its words raise a doubt: "
+                f"{line}" for line in doubts] if ok and opinion.refusal is None else []
+    return {"ok": ok, "messages": [] if ok else opinion.messages, "refusal": opinion.refusal,
             "disagreement": accepted, "basis": opinion.basis}
 
 

@@ -22,11 +22,18 @@ def load(
     path: Annotated[PathStr, Doc("world YAML file, relative to the workflow file; its `domain:` key names "
                                  "its task domain")],
     seed: Annotated[int | None, Doc("vary the robots' start positions reproducibly (none: as in the file)")] = None,
+    task_domain: Annotated[str | None, Doc("the task domain the workflow is written for: a world of another "
+                                           "is refused, naming that domain's workflows (none: any)")] = None,
 ) -> dict:
     """Raises WorldError (exit 2) listing each problem with file:line:col, InputError for an
-    unknown ``domain:``; returns the normalized world dict of docs/architecture.md."""
+    unknown ``domain:`` or a world of another domain than ``task_domain``; returns the
+    normalized world dict of docs/architecture.md."""
     file = ctx.resolve_path(path)
     domain = declared_domain(file)
+    if task_domain is not None and domain.name != task_domain:
+        own = sorted({domain.workflow, *domain.workflows.values()})
+        raise InputError(f"{file} is a {domain.name} world, but this workflow is written for {task_domain} "
+                         f"worlds; run one of the {domain.name} domain's workflows ({', '.join(own)})")
     world = domain.load_world(file, seed=seed)
     ctx.log(f"world {world['name']}: {domain.describe(world)}")
     return {"world": world}

@@ -154,6 +154,41 @@ def test_matrix_runs_variants_side_by_side(tmp_path):
     assert {r["variant"] for r in rows} == {"graph_mode=exact", "graph_mode=paper"}
 
 
+def test_a_method_name_runs_the_task_files_domains_workflow_and_rows_say_which_loop_ran(tmp_path):
+    """``--matrix workflow=pip-llm,pip-llm-checked`` runs, for a warehouse task file, the paper's
+    loop and the checked one; for a household task file the household's files of those names.
+    Each row (runs.json, runs.csv) says which loop ran and whose reading the goal was; with the
+    offline parser the two loops give the same results task by task."""
+    out = tmp_path / "loops"
+    results = run_bench(config(out, seeds=1, matrix={"workflow": ["pip-llm", "pip-llm-checked"]}), progress=False)
+    assert [v["name"] for v in results["variants"]] == ["workflow=pip-llm", "workflow=pip-llm-checked"]
+    assert results["config"]["workflows"] == {"workflow=pip-llm": "pip-llm",
+                                              "workflow=pip-llm-checked": "pip-llm-checked"}
+    rows = json.loads((out / "runs.json").read_text())
+    # the infeasible task is refused by the parser before any goal is written: no reader
+    assert {(r["variant"], r["loop"], r["reader"]) for r in rows} == {
+        (v, loop, reader) for v, loop in (("workflow=pip-llm", "pip-llm"), ("workflow=pip-llm-checked", "checked"))
+        for reader in ("offline", None)}
+    assert all((r["reader"] is None) == (r["task"] == "t-too-many") for r in rows)
+    csv_rows = list(csv.DictReader(open(out / "runs.csv", newline="")))
+    assert {r["loop"] for r in csv_rows} == {"pip-llm", "checked"}
+    paper, checked = ([(t["id"], t["sr"], t["tc_max"]) for t in v["tasks"]] for v in results["variants"])
+    assert paper == checked
+
+    home = Path(__file__).resolve().parents[1] / "benchmarks" / "household" / "world.yaml"
+    tasks = tmp_path / "home" / "tasks.yaml"
+    tasks.parent.mkdir()
+    tasks.write_text(f"domain: household\nworld: {home}\ntasks:\n  - id: h-1\n    category: compound\n"
+                     "    team: homogeneous\n    command: \"Put the apple and the tomato in the fridge.\"\n"
+                     "    goal: {in: {fridge: [apple, tomato]}, state: {fridge: [closed]}}\n")
+    results = run_bench(BenchConfig(tasks_file=tasks, seeds=1, jobs=1, out=tmp_path / "h", use_cache=False,
+                                    matrix={"workflow": ["pip-llm", "pip-llm-checked"]}), progress=False)
+    assert results["config"]["workflows"] == {"workflow=pip-llm": "household",
+                                              "workflow=pip-llm-checked": "household-checked"}
+    rows = json.loads((tmp_path / "h" / "runs.json").read_text())
+    assert sorted((r["loop"], r["success"]) for r in rows) == [("checked", True), ("pip-llm", True)]
+
+
 def test_cli_bench_prints_the_table(tmp_path):
     out = tmp_path / "cli"
     proc = subprocess.run([sys.executable, "-m", "pipflow.engine.cli", "bench", str(TASKS), "--seeds", "1",

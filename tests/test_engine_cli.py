@@ -49,6 +49,49 @@ def test_errors_in_a_child_are_located_in_the_child_file():
     assert len(diags) == 4
 
 
+def test_extends_adds_a_step_inside_an_inherited_loop(engine_env):
+    """``inside: LOOP`` adds a step to the steps of an inherited loop (the loop's condition may
+    then read it), without copying the loop; the snapshot keeps the merged loop and no
+    ``inside``."""
+    child = engine_env / "child.yaml"
+    child.write_text(f"""pipflow: 1
+name: loop-child
+extends: {LOOP_DEMO}
+steps:
+  - id: double
+    inside: count
+    uses: core.value
+    with: {{value: "${{bump.value * 2}}"}}
+  - id: count
+    until: ${{double.value >= 6}}
+outputs:
+  doubled: ${{double.value}}
+""")
+    result = run_workflow(child, runs_dir=engine_env / "runs")
+    assert result.ok, result.error
+    assert result.outputs["doubled"] == 6 and result.outputs["rounds"] == 3 and result.outputs["final"] == 3
+    assert sorted(p.name for p in (result.run_dir / "steps" / "count" / "iterations" / "3").iterdir()) == \
+        ["bump", "double"]
+    snapshot = (result.run_dir / "workflow.yaml").read_text()
+    assert "inside" not in snapshot and "double" in snapshot
+
+
+def test_inside_names_a_loop_of_the_base_and_needs_extends(tmp_path):
+    """A step placed inside a loop the base does not have, or inside a loop of a workflow that
+    extends nothing, is a located problem, not a step silently added elsewhere."""
+    child = tmp_path / "child.yaml"
+    child.write_text(f"pipflow: 1\nname: c\nextends: {LOOP_DEMO}\nsteps:\n  - id: extra\n    inside: counting\n"
+                     "    uses: core.value\n    with: {value: 1}\n")
+    _, diags = check_workflow(child)
+    assert [(d.location.line, d.message) for d in diags] == [
+        (6, "step 'extra': inside 'counting': no inherited loop has that id (loops: count)")]
+    alone = tmp_path / "alone.yaml"
+    alone.write_text("pipflow: 1\nname: a\nsteps:\n  - id: extra\n    inside: count\n    uses: core.value\n"
+                     "    with: {value: 1}\n")
+    _, diags = check_workflow(alone)
+    assert len(diags) == 1 and diags[0].location.line == 5 and "needs 'extends'" in diags[0].message
+
+
 def test_extends_missing_base_is_located(tmp_path):
     child = tmp_path / "child.yaml"
     child.write_text("pipflow: 1\nname: c\nextends: nothere.yaml\nsteps:\n  - id: a\n    with: {value: 1}\n")

@@ -69,6 +69,21 @@ def test_world_load_dispatches_on_the_files_domain(tmp_path):
     assert shop["robots"] != load.func(ctx, path=str(WAREHOUSE_WORLD))["world"]["robots"]  # the seed moved them
 
 
+def test_a_workflow_written_for_one_domain_refuses_a_world_of_another_naming_its_workflows(tmp_path):
+    """The built-in pip-llm is the warehouse's: given a household world it stops at once, saying
+    which workflows the household has, and each domain names its own workflow for a method."""
+    import pipflow
+
+    result = pipflow.run("pip-llm", world=str(HOUSEHOLD_WORLD), runs_dir=tmp_path / "runs")
+    assert result.status == "failed" and result.error_step == "world"
+    assert "is a household world, but this workflow is written for warehouse worlds" in result.error
+    assert "household, household-checked" in result.error
+    home, shop = domain_named("household"), domain_named("warehouse")
+    assert [home.workflow_for(n) for n in ("pip-llm", "pip-llm-checked", "warehouse-greedy")] == \
+        ["household", "household-checked", "warehouse-greedy"]
+    assert [shop.workflow_for(n) for n in ("pip-llm", "pip-llm-checked")] == ["pip-llm", "pip-llm-checked"]
+
+
 def test_rule_names_are_checked_against_the_worlds_domain():
     from pipflow.language.parsing import ParseIssue, validate_constraints
 

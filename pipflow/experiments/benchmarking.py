@@ -46,11 +46,12 @@ from pipflow.experiments.benchdomains import domain_named, domain_of
 from pipflow.experiments.benchstats import aggregate_task, summarize
 from pipflow.experiments.runspec import RunSpec, recorded_outputs, run_one  # noqa: F401  (the bench's face: tests, scripts)
 from pipflow.records.compare import variants_side_by_side
+from pipflow.taskdomain import TaskDomain
 from pipflow.version import __version__
 
-RESULT_FIELDS = ["variant", "task", "seed", "status", "success", "understood", "misread", "goal_met", "gcr", "exe",
-                 "ru", "tc_max", "tc_avg", "tc_avg_moved", "makespan", "planned", "executed", "seconds", "error",
-                 "run_dir", "config_hash"]
+RESULT_FIELDS = ["variant", "task", "seed", "status", "loop", "reader", "success", "understood", "misread", "goal_met",
+                 "gcr", "exe", "ru", "tc_max", "tc_avg", "tc_avg_moved", "makespan", "planned", "executed", "seconds",
+                 "error", "run_dir", "config_hash"]
 
 
 @dataclass
@@ -130,12 +131,17 @@ def read_row(out: Path, key: tuple[str, str, int]) -> dict | None:
         return None
 
 
-def build_specs(config: BenchConfig, tasks_doc: dict, world_path: str) -> list[RunSpec]:
+def build_specs(config: BenchConfig, tasks_doc: dict, world_path: str,
+                domain: TaskDomain | None = None) -> list[RunSpec]:
+    """One spec per (variant, task, seed). A workflow named by a method (``pip-llm``,
+    ``pip-llm-checked``) runs the task file's domain's workflow for it
+    (:meth:`pipflow.taskdomain.TaskDomain.workflow_for`); the variant keeps the name given."""
     specs: list[RunSpec] = []
     records = str(Path(config.out) / "records")
     for name, values in variants(config.matrix):
         values = dict(values)
         workflow = values.pop("workflow", config.workflow)
+        workflow = domain.workflow_for(workflow) if domain is not None and workflow else workflow
         for task in tasks_doc["tasks"]:
             for seed in range(config.seeds):
                 specs.append(RunSpec(name, task, seed, workflow, {**config.inputs, **values}, world_path,
@@ -249,7 +255,7 @@ def run_bench(config: BenchConfig, progress: bool = True, on_row=None) -> dict:
         config.workflow = tasks_doc.get("workflow") or domain.workflow
     world_path = str(tasks_doc["world_path"] if "world_path" in tasks_doc else
                      (Path(config.tasks_file).parent / tasks_doc["world"]).resolve())
-    specs = build_specs(config, tasks_doc, world_path)
+    specs = build_specs(config, tasks_doc, world_path, domain)
     files = check_variants(specs)
     specs = [replace(s, fingerprint=fingerprint(s, files[(s.workflow, tuple(sorted(_given(s).items())))]))
              for s in specs]
@@ -273,6 +279,7 @@ def run_bench(config: BenchConfig, progress: bool = True, on_row=None) -> dict:
     wall = time.perf_counter() - started
     rows = [done[run_key(s)] for s in specs if run_key(s) in done]
     results = _results(rows, tasks_doc["tasks"], config, wall, domain.name)
+    results["config"]["workflows"] = {s.variant: s.workflow for s in specs}  # what each variant ran
     results["executed_runs"], results["resumed_runs"] = fresh, len(specs) - len(todo)
     _write(out, rows, results)
     return results

@@ -66,7 +66,9 @@ def run_one(spec: RunSpec) -> dict:
     domain = domain_named(task.get("domain"))
     row.update(domain.score_bench_run(spec.world_path, task, outputs, refusal, error))
     read = outputs if row["status"] == "succeeded" or not row.get("run_dir") else \
-        recorded_outputs(Path(row["run_dir"]), ("goal", "constraints"))
+        recorded_outputs(Path(row["run_dir"]), ("goal", "constraints", "loop", "reader"))
+    # which refinement loop ran (pip-llm, checked) and whose reading the goal was (offline, model)
+    row["loop"], row["reader"] = read.get("loop"), read.get("reader")
     judged = domain.understand(task, read, row["status"], row.get("error_kind"))
     row.update(judged if judged is not None else
                {"understood": None, "misread": None, "understanding": "not measured for this domain"})

@@ -6,7 +6,7 @@ Each method is a thin face of a module of this package: the world loader (:mod:`
 translator (:mod:`.translator`) and problem writer and checks (:mod:`.problem`), the simulation
 (:mod:`.simulation`) and the scoring (:mod:`.scoring`). Household goals are conditions
 (``{"in": {place: [objects]}, "state": {thing: [conditions]}}``), read back from a model's
-problem; they are not compared with the offline reading (only whether a refusal is final).
+problem; the checked loop compares them with the translator's reading (:mod:`.agreement`).
 
 The translator's parser (lark), UP and pybullet are imported inside the methods on purpose: the
 registry imports this module for every household run, and a run pays only for what it uses.
@@ -16,6 +16,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any, Callable, Mapping
 
+from pipflow.household import agreement
 from pipflow.household import world as worlds
 from pipflow.household.problem import goal_from_problem, goal_refusal, world_mismatches, write_problem
 from pipflow.household.scoring import bench_table, load_tasks, score_bench_run, score_run, understanding
@@ -36,6 +37,7 @@ class HouseholdDomain(TaskDomain):
 
     name = "household"
     workflow = "household"
+    workflows = {"pip-llm": "household", "pip-llm-checked": "household-checked"}
     default_prompt = "household_problem"
     rule_fields = RULE_FIELDS
 
@@ -95,13 +97,23 @@ class HouseholdDomain(TaskDomain):
         return world_mismatches(parsed, problem_text, world)
 
     def check_goal(self, parsed: Any, world: dict | None) -> GoalCheck:
-        """A goal no plan can reach (slicing a mug) is refused; the step's ``goal`` output stays
-        the stock-goal form every domain shares (empty for household problems)."""
+        """A goal no plan can reach (slicing a mug) is refused, the reason also a message (the
+        paper's loop feeds it back); the step's ``goal`` output stays the stock-goal form every
+        domain shares (empty for household problems)."""
         goal = stock_goals(parsed)[0]
         if world is None:
             return GoalCheck(goal)
         refusal = goal_refusal(world, goal_from_problem(parsed))
-        return GoalCheck(goal, [], f"the command cannot be done in this world: {refusal}" if refusal else None)
+        if not refusal:
+            return GoalCheck(goal)
+        # the reason is a message too: the paper's loop feeds back all the verifier finds
+        return GoalCheck(goal, [f"the goal cannot be reached in this world: {refusal}"],
+                         f"the command cannot be done in this world: {refusal}")
+
+    def second_opinion(self, command: str, world: dict, goal: Any, constraints: list[dict],
+                       refusal: str | None, last: bool = False) -> Any | None:
+        """The goal conditions and robot rules against the translator's reading."""
+        return agreement.second_opinion(command, world, goal, constraints, refusal, last)
 
     def simulate(self, world: dict, schedule: dict, graph: dict | None, goal: Any, *,
                  snapshots: bool = False, out_dir: Path | None = None,

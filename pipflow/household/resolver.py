@@ -590,11 +590,14 @@ class Resolver:
         goal: dict = {"in": inside, "state": state}
         if g.count:
             goal["count"] = [dict(c) for c in g.count]
-        return {"goal": goal, "explain": explain, "notes": list(g.notes)}
+        words = {"in": {o: w for o, (_, w) in g.inside.items()},
+                 "state": {n: {c.cond: c.words for c in preds.values()} for n, preds in g.state.items() if preds}}
+        return {"goal": goal, "explain": explain, "notes": list(g.notes), "words": words}
 
 
 def resolve(order: dict, world: dict) -> dict:
     """``{"goal": {"in", "state", "count"?}, "explain": [one line per condition with its words],
-    "notes": [...]}`` for a household order in a world (checked against its schema first);
+    "notes": [...], "words": {"in": {object: words}, "state": {name: {condition: words}}}}`` for a
+    household order in a world (checked against its schema first);
     Refusal or TranslationError otherwise."""
     return Resolver(world).resolve(check_order(order))

@@ -40,7 +40,7 @@ def _key(goal: dict) -> str:
 
 
 def understand(command: str, world: dict) -> dict:
-    """``{"order", "goal", "explain", "notes"}``: the one meaning of the command in this world
+    """``{"order", "goal", "explain", "notes", "words"}``: the one meaning of the command in this world
     (module docstring); TranslationError (not understood, ambiguous) or Refusal (impossible)."""
     notes: list[str] = []
     readings = parse(command, world, notes)
@@ -69,7 +69,8 @@ def understand(command: str, world: dict) -> dict:
         raise TranslationError(f"{command.strip()!r} can be read in {len(goals)} ways: "
                                + " or ".join(json.dumps(g, sort_keys=True) for g in goals[:2]) + "; say it in other words")
     order, out = next(iter(meant.values()))
-    return {"order": order, "goal": out["goal"], "explain": out["explain"], "notes": notes + out["notes"]}
+    return {"order": order, "goal": out["goal"], "explain": out["explain"], "notes": notes + out["notes"],
+            "words": out["words"]}
 
 
 def resolve_counts(world: dict, goal: dict) -> dict:
@@ -104,9 +105,10 @@ def resolve_counts(world: dict, goal: dict) -> dict:
 def translate(command: str, world: dict) -> dict:
     """``{"goal": conditions as the command states them (counts kept), "concrete": the goal with
     counts resolved to objects, for the PDDL problem, "order": the parsed order, "explain": one
-    line per condition with the words it came from, "notes": [...]}``."""
+    line per condition with the words it came from, "notes": [...], "words": the words each
+    condition came from (:func:`pipflow.household.resolver.resolve`)}``."""
     meaning = understand(command, world)
     goal = meaning["goal"]
     _leave_closed(world, goal)
     return {"goal": goal, "concrete": resolve_counts(world, goal), "order": meaning["order"],
-            "explain": meaning["explain"], "notes": meaning["notes"]}
+            "explain": meaning["explain"], "notes": meaning["notes"], "words": meaning["words"]}

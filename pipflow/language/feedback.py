@@ -4,8 +4,10 @@ same prompt twice.
 Two things go wrong in a refinement loop driven by a real model (issue 17):
 
 * **Messages in the wrong form.** A grounded model answers with JSON; telling it to "write a
-  (define (problem ...) ...) form" asks for something its decoder cannot even produce. Every
-  message that names a form says it in the mode's own form: :func:`goal_entry` and :func:`rule`.
+  (define (problem ...) ...) form" asks for something its decoder cannot even produce. The
+  messages of the checked loop's second opinion name what disagrees in plain words, in no form
+  at all (and never as an entry to paste: :mod:`pipflow.language.agreement`); the answer
+  reader's own messages are phrased for the mode it read.
 * **Wasted rounds.** When the checks say the same thing twice, the next prompt is byte-identical
   to the last one and, at temperature 0, so is the answer. :func:`vary` then changes the prompt,
   one step further each time the base prompt repeats: quote the previous answer with the lines
@@ -16,9 +18,6 @@ from __future__ import annotations
 
 import json
 import re
-from typing import Any
-
-from pipflow.goalcounts import is_bound
 
 #: the variations, in the order they are tried (each level adds one to the ones before)
 QUOTE, FACTS, TEMPERATURE = "quoted previous answer", "added world facts", "raised temperature"
@@ -26,30 +25,6 @@ LEVELS = (QUOTE, FACTS, TEMPERATURE)
 #: the most lines of a previous answer quoted back (a runaway answer is cut, the marks kept)
 QUOTE_LINES = 60
 MARK = ">> "
-
-
-def goal_entry(shelf: str, product: str, value: Any, grounded: bool) -> str:
-    """One goal count in the answer form of the mode: a statement of the grounded order
-    (``set`` for an exact count, ``bound`` for a bound) or a PDDL goal condition (free)."""
-    if grounded:
-        op, amount = ("bound", dict(value)) if is_bound(value) else ("set", {"count": value})
-        return json.dumps({"op": op, "places": {"names": [shelf]}, "items": {"names": [product]}, "amount": amount})
-    fluent = f"(stock {shelf} {product})"
-    if not is_bound(value):
-        return f"(= {fluent} {value})"
-    parts = ([f"(>= {fluent} {value['at_least']})"] if "at_least" in value else []) + \
-            ([f"(<= {fluent} {value['at_most']})"] if "at_most" in value else [])
-    return " ".join(parts)
-
-
-def rule(rule_: dict, grounded: bool) -> str:
-    """A robot-use rule in the answer form of the mode: a rule of the grounded order's "rules",
-    or an item of the free answer's ```json {"constraints": [...]} block."""
-    kind = "only" if "only" in rule_ else "never"
-    if grounded:
-        return json.dumps({"mode": kind, "robots": {"names": list(rule_[kind])},
-                           **{k: rule_.get(k) or "any" for k in ("product", "from", "to")}})
-    return json.dumps({kind: list(rule_[kind]), **{k: rule_[k] for k in ("product", "from", "to") if rule_.get(k)}})
 
 
 # ---------------------------------------------------------------------------------------------

@@ -33,6 +33,11 @@ from pipflow.pddl.debugger import unclosed_section
 from pipflow.taskdomain import TaskDomain
 from pipflow.taskdomains import task_domain
 
+#: who reads the command: ``model`` (every command, the paper's way), or ``offline-first`` (the
+#: offline parser when it understands the command, the model only for what it refuses as not
+#: understood)
+READERS = ("model", "offline-first")
+
 #: the head of an answer kept in the round record, for quoting it back when the next prompt
 #: would repeat (the whole answer is the artifact response.txt)
 ROUND_ANSWER_CHARS = 6000
@@ -90,6 +95,7 @@ def generate(
     save: Callable[[str, Any], Any] | None = None,
     log: Callable[[str], None] = lambda message: None,
     previous: dict[str, Any] | None = None,
+    reader: str = "model",
 ) -> dict[str, Any]:
     """One generator round; returns the outputs of step ``llm.problem``. ``prompt`` None: the
     world's domain's template (:attr:`pipflow.taskdomain.TaskDomain.default_prompt`).
@@ -98,11 +104,20 @@ def generate(
     ``previous``: the previous round's ``round`` output (it carries the fingerprints of every
     earlier prompt of the loop); when this round's prompt would be the same as an earlier one's,
     the prompt is varied (:func:`pipflow.language.feedback.vary`) and the ``varied`` output says
-    how."""
+    how. ``reader`` ``offline-first``: the offline reading when the parser understands the command
+    (and its Refusal when it finds it impossible), the model only when it does not understand it.
+    The output ``reader`` says whose reading the round's goal is (``offline`` or ``model``)."""
     model = resolve_model(model)
     domain = task_domain(world)
+    if reader not in READERS:
+        raise InputError(f"reader {reader!r}: expected one of {', '.join(READERS)}")
     if model == "offline":
-        return offline(command, world, domain_text, save)
+        return {**offline(command, world, domain_text, save), "reader": "offline"}
+    if reader == "offline-first":
+        state, why = offline_reading(command, world)
+        if state != "unread":  # read, or refused as impossible: the parser's word stands
+            return {**offline(command, world, domain_text, save), "reader": "offline"}
+        log(f"offline-first: the parser does not read the command ({why}); asking {model}")
     if not isinstance(command, str) or not command.strip():
         raise InputError("command must be a non-empty string")
     if grounded and domain.grounding is None:
@@ -171,7 +186,7 @@ def generate(
             log(f"warning: llm: the response cache {cache.directory} is not writable "
                 f"({exc.strerror or exc}); the answer is kept in the run record only")
     out = {"messages": messages, "response": text, "usage": {**usage, "cache_key": key},
-           "varied": "; ".join(varied),
+           "varied": "; ".join(varied), "reader": "model",
            "round": {"base": base_digest, "sent": _digest(messages, temperature_now), "level": level,
                      "answer": text[:ROUND_ANSWER_CHARS], "max_tokens": max_tokens, "history": history}}
     out.update(_read_answer(text, world, grounded, domain_text, domain))

@@ -16,7 +16,6 @@ from pathlib import Path
 from typing import Any, Callable, Mapping
 
 from pipflow.language import grounding
-from pipflow.language.agreement import second_opinion
 from pipflow.language.offline import NO_USAGE
 from pipflow.language.parsing import FIELD_KEYS
 from pipflow.pddl import writer
@@ -26,6 +25,7 @@ from pipflow.pddl.names import goal_in_world_names
 from pipflow.pddl.verifier import goal_problems
 from pipflow.resources import data_file
 from pipflow.taskdomain import GoalCheck, Grounding, Save, TaskDomain, flat_simulation
+from pipflow.warehouse import agreement
 from pipflow.warehouse import world as worlds
 from pipflow.warehouse.scoring import score_run
 from pipflow.warehouse.simulation import simulate
@@ -54,6 +54,7 @@ class WarehouseDomain(TaskDomain):
 
     name = "warehouse"
     workflow = "warehouse"
+    workflows = {"pip-llm": "pip-llm", "pip-llm-checked": "pip-llm-checked"}
     default_prompt = "warehouse_problem"
     rule_fields = FIELD_KEYS
     grounding = Grounding(gbnf=grounding.gbnf, response_format=grounding.response_format, read=_read_grounded)
@@ -122,8 +123,8 @@ class WarehouseDomain(TaskDomain):
         return {"robots": robots, "rules": constraints or []}
 
     def second_opinion(self, command: str, world: dict, goal: Any, constraints: list[dict],
-                       refusal: str | None, grounded: bool) -> Any | None:
-        return second_opinion(command, world, goal, constraints, refusal, grounded)
+                       refusal: str | None, last: bool = False) -> Any | None:
+        return agreement.second_opinion(command, world, goal, constraints, refusal, last)
 
     def simulate(self, world: dict, schedule: dict, graph: dict | None, goal: Any, *,
                  snapshots: bool = False, out_dir: Path | None = None,
