@@ -192,6 +192,24 @@ def test_household_ru_is_1_for_an_optimal_plan_and_counts_what_a_plan_must_do_ar
     assert score["success"] and score["ru"] == 1.0
 
 
+def test_the_optimal_search_leaves_the_working_directory_alone(tmp_path, monkeypatch):
+    """Fast Downward's driver keeps an intermediate ``output.sas`` in its working directory and
+    deletes it: run where the user stands, it would delete theirs (and two runs at once would
+    read each other's). The reference's search runs in a folder of its own."""
+    from pipflow.household.problem import write_problem
+    from pipflow.household.world import load_world
+    from pipflow.pddl.common import parse
+    from pipflow.pddl.optimal import fewest_actions
+
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "output.sas").write_text("the user's file")
+    home = load_world(HOME)
+    problem = parse(DOMAIN, write_problem(home, {"in": {"garbagecan": ["egg", "milk"]}, "state": {"fridge": ["closed"]}}))
+    assert fewest_actions(problem) == (4, "")  # open the fridge, trash both, close it
+    assert (tmp_path / "output.sas").read_text() == "the user's file"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["output.sas"]
+
+
 # ------------------------------------------------------------------ household table, TC and GCR
 def test_household_travel_leaves_right_refusals_out(household_bench):
     """A refused infeasible task succeeds without moving: the category's TC is that of the tasks

@@ -4,8 +4,8 @@ Why a planner: RU (paper, Sec. IV-B) compares a plan's actions with what the tas
 of the conditions to change misses what a plan must do around them (open the fridge an egg is
 taken from and close it again, carry a washed mug back to the table), so an optimal plan scored
 below 1 (hc-12's five actions against a count of three). The reference is instead the length of
-a plan that Fast Downward proves optimal (``fast-downward-opt``: A* with an admissible heuristic,
-unit costs, so the fewest actions) on the team-level problem of the goal. The team-level domain
+a plan that Fast Downward proves optimal (A* with the admissible LM-cut heuristic, unit costs, so
+the fewest actions: :mod:`pipflow.pddl.optimal`) on the team-level problem of the goal. The team-level domain
 names no robot, so the reference is the same for every team and every seed; it is computed once
 per process and goal.
 
@@ -21,10 +21,12 @@ from __future__ import annotations
 import hashlib
 import itertools
 from pipflow.household.problem import write_problem
+from pipflow.pddl.common import parse
+from pipflow.pddl.optimal import ALIAS, fewest_actions
 from pipflow.resources import data_file
 
 #: the planner whose plans are proved optimal (fewest actions)
-PLANNER = "fast-downward-opt"
+PLANNER = f"Fast Downward, {ALIAS}"
 #: the most ways of meeting a goal's counts that are planned for (more: no optimal reference)
 MOST_CHOICES = 256
 #: seconds the planner may take for one problem
@@ -126,16 +128,6 @@ def _plan_length(world: dict, goal: dict) -> tuple[int | None, str]:
     text = write_problem(world, goal)
     key = hashlib.sha256(text.encode("utf-8")).hexdigest()
     if key not in _LENGTHS:
-        from pipflow.pddl.common import parse  # deferred: pulls unified_planning (~1 s; only RU's reference needs it)
-        from pipflow.pddl.solver import Status, solve_problem  # deferred: pulls unified_planning (as above)
-
-        result = solve_problem(parse(data_file("domains/household.pddl"), text), PLANNER, timeout=TIMEOUT)
-        if result.status == Status.SOLVED and result.details.get("optimal"):
-            _LENGTHS[key] = (len(result.plan or []), "")
-        elif result.status == Status.UNSOLVABLE:
-            _LENGTHS[key] = (None, "unsolvable")
-        else:
-            _LENGTHS[key] = (None, f"{PLANNER}: {result.message}" if result.status != Status.SOLVED
-                             else f"{PLANNER} did not prove its plan optimal")
+        _LENGTHS[key] = fewest_actions(parse(data_file("domains/household.pddl"), text), timeout=TIMEOUT)
     return _LENGTHS[key]
 

@@ -134,7 +134,6 @@ def solve_problem(problem: Any, engine: str = DEFAULT_ENGINE, params: dict | Non
     """Solve UP ``problem`` with ``engine``; never raises for an engine-side failure, i.e. an
     error of UP or of the engine it runs (an engine that is not installed is the user's:
     :class:`InputError`)."""
-    from unified_planning.engines import OptimalityGuarantee
     from unified_planning.engines import PlanGenerationResultStatus as S
     from unified_planning.shortcuts import OneshotPlanner
 
@@ -156,9 +155,6 @@ def solve_problem(problem: Any, engine: str = DEFAULT_ENGINE, params: dict | Non
                 warnings.simplefilter("ignore")  # "we cannot establish whether X can solve this problem"
                 with OneshotPlanner(name=engine, params=dict(params or {})) as planner:
                     result = planner.solve(problem, timeout=timeout)
-                    # UP reports SOLVED_SATISFICING for Fast Downward's A* too: the engine's own
-                    # guarantee says whether any plan it returns is optimal
-                    optimal_engine = planner.satisfies(OptimalityGuarantee.SOLVED_OPTIMALLY)
     except PlanningError as exc:
         return SolveResult(Status.ERROR, None, str(exc), time.monotonic() - started, engine)
     elapsed = time.monotonic() - started
@@ -167,8 +163,7 @@ def solve_problem(problem: Any, engine: str = DEFAULT_ENGINE, params: dict | Non
     if st in (S.SOLVED_SATISFICING, S.SOLVED_OPTIMALLY) and result.plan is not None:
         plan = plan_to_data(result.plan)
         return SolveResult(Status.SOLVED, plan, f"{engine} found a plan of {len(plan)} action(s) in {elapsed:.2f} s"
-                           + (" (optimal)" if st == S.SOLVED_OPTIMALLY else ""), elapsed, engine,
-                           details={"optimal": st == S.SOLVED_OPTIMALLY or optimal_engine})
+                           + (" (optimal)" if st == S.SOLVED_OPTIMALLY else ""), elapsed, engine)
     if st == S.UNSOLVABLE_PROVEN:
         return SolveResult(Status.UNSOLVABLE, None, f"{engine} proved that no plan reaches the goal"
                            + (f": {logs}" if logs else ""), elapsed, engine)
