@@ -17,6 +17,9 @@ true or not at the start and at the end) and asks this module for the figures.
   failed before executing, or busy elsewhere) recalls nothing, and gets 0, however many
   conditions were true all along. A goal with nothing to change (every condition holds at the
   start) is recalled by keeping it: the share that holds at the end.
+* **Which runs the travel figures average over** (:func:`counts_for_travel`): the paper's
+  "successful runs", read as the successful runs that executed their task; a right refusal
+  moved nobody and is not a 0 m run.
 """
 from __future__ import annotations
 
