@@ -251,3 +251,37 @@ def test_tc_avg_is_the_mean_over_the_robots_that_moved_in_both_domains(tmp_path)
                             [step("switch-off", "floorlamp", "floorlamp")])
     assert lamp["success"] and lamp["tc_avg"] == pytest.approx(lamp["tc_max"])  # one robot moved
     assert lamp["tc_avg_team"] == pytest.approx(lamp["tc_max"] / 3)  # of the three of the team
+
+
+# ----------------------------------------------------------------------------- older records
+def test_older_records_are_read_in_todays_names_and_never_resumed_into_a_new_table(tmp_path):
+    """A bench written before TC-avg had one definition kept the team's mean as ``tc_avg`` and
+    today's TC-avg as ``tc_avg_moved``: ``pipflow compare`` shows them in today's names, so two
+    benches are never compared on two meanings; ``--resume`` refuses a row scored by the old
+    definitions rather than mixing it into a table of the new ones."""
+    import json
+
+    from pipflow.errors import UserError
+    from pipflow.experiments.benchmarking import fingerprint_hash, row_path
+    from pipflow.records.compare import comparison
+
+    old, new = tmp_path / "old", tmp_path / "new"
+    for folder, row in ((old, {"id": "t", "runs": 1, "sr": 1.0, "tc_max": 20.0, "tc_avg": 2.0, "tc_avg_moved": 19.0}),
+                        (new, {"id": "t", "runs": 1, "sr": 1.0, "tc_max": 20.0, "tc_avg": 19.0, "tc_avg_team": 2.0})):
+        folder.mkdir()
+        (folder / "results.json").write_text(json.dumps({"summary": dict(row), "tasks": [row]}))
+    _, rows = comparison(old, new)
+    assert ["t tc_avg (m)", 19.0, 19.0, 0.0] in rows
+
+    (tmp_path / "b").mkdir()
+    results, out = bench(tmp_path / "b", [{"id": "move", "command": "There should be 4 product1 in shelf2.",
+                                          "goal": {"shelf2": {"product1": 4}}}])
+    stored = row_path(out, ("default", "move", 0))
+    row = json.loads(stored.read_text())
+    del row["fingerprint"]["metrics"]  # as a row of before the definitions were versioned
+    row["config_hash"] = fingerprint_hash(row["fingerprint"])
+    stored.write_text(json.dumps(row))
+    folder = tmp_path / "b" / "tasks"
+    with pytest.raises(UserError, match="the metrics' definitions before they were versioned -> 2"):
+        run_bench(BenchConfig(tasks_file=folder / "tasks.yaml", seeds=1, jobs=1, out=out, use_cache=False,
+                              resume=True), progress=False)
