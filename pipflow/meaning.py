@@ -14,9 +14,10 @@ accept (:mod:`pipflow.pddl.feasibility`), the household by the final states they
 Rules: a rule ``{only|never: [robots], <field>: name, ...}`` governs the moves that agree with
 every field it gives; ``never`` keeps its robots out of them, ``only`` keeps every other robot
 out. A rule set means the set of (robot, move) pairs it forbids. Two rule sets are compared on
-every robot of the world (and any robot a rule names) and every combination of the field values
-either set mentions, plus one stand-in for the values neither mentions: that is every case the
-rules can tell apart, so equal verdicts there are equal meanings everywhere.
+every robot a rule names, one stand-in for the world's other robots, and every combination of
+the field values either set mentions plus one stand-in for the values neither mentions: robots
+and values no rule names are treated alike by every rule, so these are all the cases the rules
+can tell apart, and equal verdicts there are equal meanings everywhere.
 """
 from __future__ import annotations
 
@@ -111,11 +112,6 @@ def rules_as_written(gold: list | None, run: list | None) -> str | None:
 # ------------------------------------------------------------------------------------------
 # one run's verdict
 # ------------------------------------------------------------------------------------------
-def refusal_is_right(task: Mapping[str, Any]) -> bool:
-    """Whether a task's right answer is a refusal (impossible, or ambiguous)."""
-    return task.get("feasible") is False or task.get("expect") == "refuse"
-
-
 def judge(task: Mapping[str, Any], outputs: Mapping[str, Any], status: str, error_kind: str | None, *,
           goal_difference: GoalDifference, rule_difference: Callable[[list, list], str | None]) -> dict:
     """``{"understood", "misread", "understanding"}`` of one bench run.
