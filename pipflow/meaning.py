@@ -14,10 +14,10 @@ accept (:mod:`pipflow.pddl.feasibility`), the household by the final states they
 Rules: a rule ``{only|never: [robots], <field>: name, ...}`` governs the moves that agree with
 every field it gives; ``never`` keeps its robots out of them, ``only`` keeps every other robot
 out. A rule set means the set of (robot, move) pairs it forbids. Two rule sets are compared on
-every robot a rule names, one stand-in for the world's other robots, and every combination of
-the field values either set mentions plus one stand-in for the values neither mentions: robots
-and values no rule names are treated alike by every rule, so these are all the cases the rules
-can tell apart, and equal verdicts there are equal meanings everywhere.
+every robot of the world (and any a rule names) and every combination of the field values either
+set mentions, plus one stand-in for the values neither mentions: values no rule names are
+treated alike by every rule, so these are all the cases the rules can tell apart, and equal
+verdicts there are equal meanings everywhere.
 """
 from __future__ import annotations
 
@@ -29,7 +29,7 @@ from typing import Any, Callable, Iterable, Mapping
 REFUSED_AS_IMPOSSIBLE = "Refusal"
 #: how a run ends when its reader refused to guess (a word it could not place, an ambiguity)
 NOT_UNDERSTOOD = "TranslationError"
-#: the stand-in for every robot, or every value of a field, that no rule names
+#: the stand-in for every value of a field that no rule names
 OTHER = "(any other)"
 
 GoalDifference = Callable[[Any, Any], "str | None"]
@@ -78,8 +78,7 @@ def rules_difference(gold: list | None, run: list | None, robots: Iterable[str],
         return rules_as_written(gold, run)
     rules = gold + run
     named = {r for rule in rules for k in ("only", "never") for r in rule.get(k, ())}
-    world_robots = set(robots)
-    who = sorted(world_robots | named) + ([OTHER] if world_robots - named else [])
+    who = sorted(set(robots) | named)
     axes = []
     for field in sorted({k for rule in rules for k in rule if k in fields}):
         mentioned = {rule[field] for rule in rules if field in rule}
