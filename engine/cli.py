@@ -84,7 +84,7 @@ def _options(args: argparse.Namespace, step_ids: list[str]):
 
 
 # Units of the figures a run summary prints (outputs of the built-in workflows).
-UNITS = {"makespan": "s", "tc_max": "m", "tc_avg": "m", "tc_avg_moved": "m", "seconds": "s"}
+UNITS = {"makespan": "s", "tc_max": "m", "tc_avg": "m", "tc_avg_team": "m", "seconds": "s"}
 
 
 def _summary(value: Any, limit: int = 160, key: str = "") -> str:

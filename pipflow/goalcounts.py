@@ -64,6 +64,13 @@ def holds(count: int, value: Any) -> bool:
     return lo <= count and (hi is None or count <= hi)
 
 
+def values_met(counts: dict | None, goal: dict | None) -> list[bool]:
+    """Whether each value of ``goal`` holds in ``counts`` (``{place: {item: count}}``, a missing
+    count is 0), in the goal's order: what goal checks and GCR are computed from."""
+    return [holds(int((counts or {}).get(place, {}).get(item, 0)), v)
+            for place, items in (goal or {}).items() for item, v in items.items()]
+
+
 def describe(value: Any) -> str:
     """The value in words: ``7``, ``at least 3``, ``at most 9``, ``between 3 and 9``."""
     if not is_bound(value):

@@ -52,25 +52,28 @@ Save = Callable[[str, Any], Any]
 #: What every domain's ``simulate`` returns, with the output types the generic step ``simulate``
 #: declares: one shape, so a workflow, the bench and the report read a run the same way in any
 #: domain. ``final_state`` is the domain's own picture of the world afterwards (stock per shelf,
-#: where each object is, ...); travel is metres per robot, ``tc_avg_moved`` the mean over the
-#: robots that moved (the paper's TC-avg), ``jumps`` the legs that start away from where a robot
-#: stood (a broken schedule).
+#: where each object is, ...); travel is metres per robot, and ``tc_max``, ``tc_avg`` (the mean
+#: over the robots that moved: the paper's TC-avg) and ``tc_avg_team`` (the mean over every robot
+#: of the team) come from it through :func:`pipflow.metrics.travel_costs`; ``gcr`` is
+#: :func:`pipflow.metrics.goal_condition_recall`; ``jumps`` the legs that start away from where a
+#: robot stood (a broken schedule).
 SIMULATION_CORE: dict[str, str] = {
     "final_state": "object", "executed": "integer", "failed": "integer", "failures": "array",
-    "exe": "number", "travel": "object", "tc_max": "number", "tc_avg": "number", "tc_avg_moved": "number",
+    "exe": "number", "travel": "object", "tc_max": "number", "tc_avg": "number", "tc_avg_team": "number",
     "goal_met": "boolean", "gcr": "number", "jumps": "object", "makespan": "number",
 }
-#: what every domain's ``score`` returns (the generic step ``score`` declares these, flat)
+#: what every domain's ``score`` returns (the generic step ``score`` declares these, flat); the
+#: metrics mean what :mod:`pipflow.metrics` says, in every domain
 SCORE_CORE: dict[str, str] = {
     "success": "boolean", "goal_met": "boolean", "gcr": "number", "exe": "number", "ru": "number",
-    "tc_max": "number", "tc_avg": "number", "tc_avg_moved": "number", "makespan": "number",
+    "tc_max": "number", "tc_avg": "number", "tc_avg_team": "number", "makespan": "number",
     "planned": "integer", "executed": "integer", "lower_bound": "any", "violations": "array",
     "refused": "boolean", "error": "any",
 }
 
 
 #: the headline figures every score step records as the step's metrics
-SCORE_METRICS = ("success", "gcr", "exe", "ru", "tc_max", "tc_avg", "tc_avg_moved")
+SCORE_METRICS = ("success", "gcr", "exe", "ru", "tc_max", "tc_avg", "tc_avg_team")
 
 
 def report_score(ctx: Any, result: dict) -> dict:
@@ -278,9 +281,13 @@ class TaskDomain(ABC):
                         error: str | None) -> dict:
         """Score one bench run of ``task`` from the workflow's outputs."""
 
-    def understand(self, task: dict, outputs: dict, status: str, error_kind: str | None) -> dict | None:
-        """``{"understood", "misread", "understanding"}``: whether the run resolved the task's
-        gold goal and rules; None when understanding is not measured for this domain."""
+    def understand(self, task: dict, outputs: dict, status: str, error_kind: str | None,
+                   world_path: str | None = None) -> dict | None:
+        """``{"understood", "misread", "understanding"}``: whether the run resolved a meaning
+        equal to the task's gold goal and rules (``misread``: another meaning, whatever happened
+        next); None when understanding is not measured for this domain. ``world_path``: the task
+        file's world, in which meanings are compared. :func:`pipflow.meaning.judge` gives the
+        verdict from a comparison of the domain's goals."""
         return None
 
     def bench_table(self, results: dict, tasks_file: Path) -> str | None:

@@ -43,7 +43,7 @@ def load(
       doc="Execute a schedule in the world's task domain's simulator; the same core outputs in every domain "
           "(final state, executed, failures, travel, TC, goal met, GCR), the domain's own under `details`.",
       outputs={**SIMULATION_CORE, "pictures": "array", "details": "object"},
-      version="1")
+      version="2")  # 2: tc_avg over the robots that moved, tc_avg_team; GCR of pipflow.metrics
 def simulate(
     ctx: StepContext,
     world: Annotated[dict, Doc("the world (output of world.load)")],
@@ -65,7 +65,7 @@ def simulate(
     result = domain.simulate(world, schedule, graph, goal, snapshots=snapshots, out_dir=out_dir,
                              log=ctx.log, save=ctx.write_artifact, **(options or {}))
     outputs = simulation_outputs(result)
-    ctx.metrics.update({k: outputs[k] for k in ("exe", "tc_max", "tc_avg", "tc_avg_moved", "gcr")})
+    ctx.metrics.update({k: outputs[k] for k in ("exe", "tc_max", "tc_avg", "tc_avg_team", "gcr")})
     ctx.log(f"executed {outputs['executed']}/{len(schedule.get('subtasks', []))}, goal met: {outputs['goal_met']}"
             f" (GCR {outputs['gcr']:.2f})")
     return outputs
@@ -73,7 +73,7 @@ def simulate(
 
 @step("score",
       doc="Score a run against its task in the world's task domain: success, GCR, Exe, RU, TC-max, TC-avg "
-          "(all robots and the robots that moved), violations; flat, the same keys in every domain.",
+          "(over the robots that moved; tc_avg_team over every robot), violations; flat, the same keys in every domain.",
       outputs=dict(SCORE_CORE))
 def score(
     ctx: StepContext,

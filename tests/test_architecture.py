@@ -37,7 +37,7 @@ LAYERS: list[tuple[str, tuple[tuple[str, ...], ...]]] = [
     ("PDDL tools", (("pipflow.pddl",),)),
     ("neutral helpers", (("pipflow.taskdomain", "pipflow.taskdomains", "pipflow.goalcounts", "pipflow.suggest",
                           "pipflow.worldfile", "pipflow.floorplan", "pipflow.bullet", "pipflow.llmslot",
-                          "pipflow.liberrors"),)),
+                          "pipflow.liberrors", "pipflow.metrics", "pipflow.meaning"),)),
     ("engine", (("pipflow.engine",),)),
     ("base", (("pipflow.errors", "pipflow.resources", "pipflow.yamlsource", "pipflow.version"),)),
 ]

@@ -355,7 +355,7 @@ def test_results_report_understanding_per_task_and_in_the_summary(local_bench):
     for t in results["tasks"]:
         assert t["understood"] == 1.0 and t["misread"] == 0
     table = (out / "table.md").read_text()
-    assert "| Task | SR (%) | understood (%) | misread |" in table and "| t-too-many | 100 | 100 | 0 |" in table
+    assert "| Task | SR (%) | understood (%) | misread (executed) |" in table and "| t-too-many | 100 | 100 | 0 (0) |" in table
 
 
 def test_a_run_that_executes_another_goal_than_the_gold_is_misread(tmp_path):
@@ -372,10 +372,11 @@ def test_a_run_that_executes_another_goal_than_the_gold_is_misread(tmp_path):
     tasks = {t["id"]: t for t in results["tasks"]}
     assert tasks["right"]["understood"] == 1.0 and tasks["right"]["misread"] == 0
     assert tasks["wrong-gold"]["understood"] == 0.0 and tasks["wrong-gold"]["misread"] == 1
+    assert tasks["wrong-gold"]["misread_executed"] == 1  # robots moved with the other meaning
     assert results["summary"]["understood"] == 0.5 and results["summary"]["misread"] == 1
-    assert results["constructions"] == {"set": {"runs": 2, "understood": 0.5, "misread": 1}}
+    assert results["constructions"] == {"set": {"runs": 2, "understood": 0.5, "misread": 1, "misread_executed": 1}}
     row = read_row(tmp_path / "o", ("default", "wrong-gold", 0))
-    assert "shelf2 product1: gold 3, run 4" in row["understanding"]
+    assert "shelf2 product1: the gold allows 3, the run's goal 4" in row["understanding"]
 
 
 def test_understanding_compares_bounds_as_ranges_and_rules_as_sets():
@@ -385,21 +386,22 @@ def test_understanding_compares_bounds_as_ranges_and_rules_as_sets():
             "constraints": [{"never": ["r1", "r0"], "product": "p1"}, {"only": ["r2"]}]}
     outputs = {"goal": {"s1": {"p1": {"at_least": 3, "at_most": 3}, "p2": {"at_least": 2}}, "s9": {}},
                "constraints": [{"only": ["r2"], "words": "only r2"}, {"never": ["r0", "r1"], "product": "p1"}]}
-    assert understand(task, outputs, "succeeded", None) == {
-        "understood": True, "misread": False, "understanding": "goal and rules as the gold"}
+    assert understand(task, outputs, "succeeded", None, None) == {
+        "understood": True, "misread": False, "understanding": "goal and rules mean what the gold means"}
     looser = {**outputs, "goal": {"s1": {"p1": 3, "p2": {"at_least": 1}}}}
-    verdict = understand(task, looser, "succeeded", None)
+    verdict = understand(task, looser, "succeeded", None, None)
     assert verdict["understood"] is False and verdict["misread"] is True
     assert "s1 p2: gold at least 2, run at least 1" in verdict["understanding"]
     dropped = {**outputs, "constraints": [{"only": ["r2"]}]}
-    verdict = understand(task, dropped, "failed", "AllocationError")
-    assert verdict["understood"] is False and verdict["misread"] is False and "missing" in verdict["understanding"]
-    assert understand(task, {}, "refused", "Refusal")["understood"] is False  # a feasible task refused
-    assert understand(task, {"plan": []}, "succeeded", None)["understood"] is None  # a workflow without `goal`
-    for spec in ({"feasible": False, "goal": {"s1": {"p1": 99}}}, {"expect": "refuse", "goal": {}}):
-        assert understand(spec, {}, "refused", "Refusal")["understood"] is True
-        assert understand(spec, {}, "failed", "TranslationError")["understood"] is True
-        executed = understand(spec, {"goal": {"s1": {"p1": 1}}}, "succeeded", None)
+    verdict = understand(task, dropped, "failed", "AllocationError")  # another meaning, failed later: misread
+    assert verdict["understood"] is False and verdict["misread"] is True and "missing" in verdict["understanding"]
+    assert understand(task, {}, "refused", "Refusal", None)["understood"] is False  # a feasible task refused
+    assert understand(task, {"plan": []}, "succeeded", None, None)["understood"] is None  # a workflow without `goal`
+    infeasible, ambiguous = {"feasible": False, "goal": {"s1": {"p1": 99}}}, {"expect": "refuse", "goal": {}}
+    assert understand(infeasible, {}, "refused", "Refusal", None)["understood"] is True
+    assert understand(ambiguous, {}, "failed", "TranslationError", None)["understood"] is True
+    for spec in (infeasible, ambiguous):
+        executed = understand(spec, {"goal": {"s1": {"p1": 1}}}, "succeeded", None, None)
         assert executed["understood"] is False and executed["misread"] is True
 
 

@@ -185,7 +185,7 @@ def test_simulation_and_scoring_count_bounds():
 
     final = {"shelf3": {"product1": 7}, "shelf4": {"product1": 15}}
     goal = {"shelf3": {"product1": {"at_least": 6}}, "shelf4": {"product1": {"at_most": 10}}}
-    assert goal_counts(final, goal) == (1, 2) and goal_check(final, goal) == (False, 0.5)
+    assert goal_counts(final, goal) == (1, 2) and goal_check(final, goal, WORLD["stock"]) == (False, 0.5)
     assert goal_counts(final, {"shelf3": {"product1": {"at_least": 7, "at_most": 7}}}) == (1, 1)
     assert goal_counts(final, {"shelf1": {"product4": {"at_most": 0}}}) == (1, 1)  # an absent product counts 0
 

@@ -125,7 +125,8 @@ def test_bench_scores_every_task_with_sr(garden_plugin_site, tmp_path):
         {t: (r["sr"], r.get("error")) for t, r in rows.items()}
     assert all(rows[t]["understood"] == 1.0 and rows[t]["misread"] == 0 for t in rows)
     assert results["summary"]["sr"] == 1.0
-    assert rows["g-03"]["tc_max"] > 0 and rows["g-06"]["tc_max"] is not None  # refusals succeed, nothing moved
+    # a right refusal succeeds without moving: it is no 0 m run in the travel figures
+    assert rows["g-03"]["tc_max"] > 0 and rows["g-06"]["sr"] == 1.0 and rows["g-06"]["tc_max"] is None
 
 
 def test_without_the_plugin_the_domain_is_unknown(tmp_path):

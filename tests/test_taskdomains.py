@@ -112,7 +112,7 @@ def test_the_offline_reading_is_the_worlds_domains(tmp_path):
 
 
 def test_the_score_steps_of_both_domains_return_one_shape():
-    """A workflow or the bench reads ``success``, ``gcr``, ``tc_avg_moved``... the same way in
+    """A workflow or the bench reads ``success``, ``gcr``, ``tc_avg``... the same way in
     either domain."""
     from pipflow.engine.registry import default_registry
 
@@ -126,10 +126,10 @@ def test_household_scores_travel_over_the_robots_that_moved():
 
     home = domain_named("household").load_world(HOUSEHOLD_WORLD)
     robots = list(home["robots"])
-    sim = {"executed": 1, "exe": 1.0, "final_state": {}, "tc_max": 6.0, "tc_avg": 2.0,
+    sim = {"executed": 1, "exe": 1.0, "final_state": {}, "tc_max": 6.0, "tc_avg": 6.0,
            "travel": {robots[0]: 6.0, robots[1]: 0.0, robots[2]: 0.0}}
     score = score_run(home, {"in": {}, "state": {}}, schedule={"subtasks": [{"id": "s1"}]}, simulation=sim)
-    assert score["tc_avg"] == 2.0 and score["tc_avg_moved"] == 6.0
+    assert score["tc_avg"] == 6.0 and score["tc_avg_team"] == 2.0  # TC-avg: over the robots that moved
 
 
 # ------------------------------------------------------------------ simulate and score: one shape
@@ -154,7 +154,7 @@ def test_the_generic_steps_declare_the_protocols_core():
 
     assert set(SIMULATION_CORE) <= set(simulate.outputs) and set(simulate.outputs) - set(SIMULATION_CORE) == {
         "pictures", "details"}
-    assert simulate.outputs["final_state"] == "object" and simulate.outputs["tc_avg_moved"] == "number"
+    assert simulate.outputs["final_state"] == "object" and simulate.outputs["tc_avg_team"] == "number"
     assert score.outputs == SCORE_CORE
 
 
@@ -176,7 +176,7 @@ def test_warehouse_simulation_through_the_generic_steps(tmp_path):
     sim, scored = _run_generic_steps(tmp_path, world, schedule, graph, goal)
     assert set(SIMULATION_CORE) <= set(sim)
     assert sim["final_state"]["shelf3"]["product1"] == 7 and sim["goal_met"] and sim["executed"] == 1
-    assert sim["tc_max"] == pytest.approx(28.0) and sim["tc_avg_moved"] == pytest.approx(28.0, abs=1e-3)
+    assert sim["tc_max"] == pytest.approx(28.0) and sim["tc_avg"] == pytest.approx(28.0, abs=1e-3)
     assert set(sim["details"]) == {"peak_load", "stray_units"} and sim["details"]["peak_load"]["shelf3"] == 18
     assert sim["pictures"] == []  # nothing drawn unless asked
     drawn = simulate_step.func(StepContext("s", tmp_path / "drawn", base_dir=REPO), world=world, schedule=schedule,
@@ -208,10 +208,11 @@ def test_household_simulation_through_the_generic_steps(tmp_path):
     goal = {"in": {"countertop": ["apple"], "fridge": ["tomato"]}}  # one condition holds already
     schedule = {"subtasks": [], "robots": {}, "makespan": 0.0}
     sim, scored = _run_generic_steps(tmp_path, world, schedule, None, goal)
-    assert set(SIMULATION_CORE) <= set(sim) and sim["executed"] == 0 and sim["tc_avg_moved"] == 0.0
+    assert set(SIMULATION_CORE) <= set(sim) and sim["executed"] == 0 and sim["tc_avg"] == 0.0
     assert sim["details"]["conditions"]["met"] == 1 and sim["details"]["conditions"]["total"] == 2
-    assert sim["gcr"] == 0.5 and not sim["goal_met"] and sim["final_state"]
-    assert not scored["success"] and scored["gcr"] == 0.5
+    # nothing executed: the condition that held from the start recalls nothing (README, "GCR")
+    assert sim["gcr"] == 0.0 and not sim["goal_met"] and sim["final_state"]
+    assert not scored["success"] and scored["gcr"] == 0.0
     assert set(scored) == set(SCORE_CORE)
     assert scored == score_run(world, goal, schedule=schedule, simulation=domain_named("household").simulate(
         world, schedule, None, goal, log=lambda m: None))
@@ -220,7 +221,7 @@ def test_household_simulation_through_the_generic_steps(tmp_path):
 def test_a_domain_result_without_the_core_is_named():
     from pipflow.taskdomain import simulation_outputs
 
-    with pytest.raises(TypeError, match="lacks final_state, tc_avg_moved"):
+    with pytest.raises(TypeError, match="lacks final_state, tc_avg_team"):
         simulation_outputs({"executed": 1, "failed": 0, "failures": [], "exe": 1.0, "travel": {}, "tc_max": 0.0,
                             "tc_avg": 0.0, "goal_met": True, "gcr": 1.0, "jumps": {}, "makespan": 0.0,
                             "final_stock": {}})

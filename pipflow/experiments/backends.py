@@ -261,7 +261,7 @@ def lost_row(spec, error: str) -> dict:
     """A row for a run the backend could not finish (not written to disk: ``--resume`` reruns it)."""
     return {"variant": spec.variant, "task": spec.task["id"], "seed": spec.seed, "status": "lost",
             "success": False, "goal_met": False, "gcr": 0.0, "exe": 0.0, "ru": 0.0, "tc_max": 0.0,
-            "tc_avg": 0.0, "tc_avg_moved": 0.0, "makespan": 0.0, "planned": 0, "executed": 0, "refused": False,
+            "tc_avg": 0.0, "tc_avg_team": 0.0, "makespan": 0.0, "planned": 0, "executed": 0, "refused": False,
             "error": error, "violations": [error], "seconds": 0.0}
 
 

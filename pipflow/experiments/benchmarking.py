@@ -15,10 +15,12 @@ stops the bench the same way. Each row carries a fingerprint of everything that 
 pipflow's version); ``--resume`` reuses a row only when its fingerprint is the run's, and refuses,
 saying what differs, when the bench folder holds rows of another configuration.
 
-Besides the outcome (SR, as in the paper), each run is scored on understanding: whether the goal
-and robot rules it resolved (outputs ``goal`` and ``constraints``) equal the task's gold
-(``understood``), and whether a run that went on to execute did so with a goal or rules other than
-the gold (``misread``, the worst failure: robots would move).
+Besides the outcome (SR, as in the paper), each run is scored on understanding
+(:mod:`pipflow.meaning`): whether the goal and robot rules it resolved (outputs ``goal`` and
+``constraints``) mean what the task's gold means (``understood``), whether they mean something
+else (``misread``, whatever happened next: executed, failed later in planning, refused for
+another reason), and whether robots executed that other meaning (``misread_executed``, the worst
+failure: robots moved wrongly).
 """
 from __future__ import annotations
 
@@ -45,13 +47,15 @@ from pipflow.experiments.backends import build_bundle, make_backend, parse_backe
 from pipflow.experiments.benchdomains import domain_named, domain_of
 from pipflow.experiments.benchstats import aggregate_task, summarize
 from pipflow.experiments.runspec import RunSpec, recorded_outputs, run_one  # noqa: F401  (the bench's face: tests, scripts)
+from pipflow.meaning import misread_cell
+from pipflow.metrics import DEFINITIONS
 from pipflow.records.compare import variants_side_by_side
 from pipflow.taskdomain import TaskDomain
 from pipflow.version import __version__
 
-RESULT_FIELDS = ["variant", "task", "seed", "status", "loop", "reader", "success", "understood", "misread", "goal_met",
-                 "gcr", "exe", "ru", "tc_max", "tc_avg", "tc_avg_moved", "makespan", "planned", "executed", "seconds",
-                 "error", "run_dir", "config_hash"]
+RESULT_FIELDS = ["variant", "task", "seed", "status", "loop", "reader", "success", "understood", "misread",
+                 "misread_executed", "goal_met", "gcr", "exe", "ru", "tc_max", "tc_avg", "tc_avg_team", "makespan",
+                 "planned", "executed", "seconds", "error", "run_dir", "config_hash"]
 
 
 @dataclass
@@ -207,7 +211,7 @@ def fingerprint(spec: RunSpec, files: dict[str, str]) -> dict:
     """What defines one run: the hashes of the files it reads, its inputs, its task, its seed and
     pipflow's version. Two runs with equal fingerprints are the same experiment."""
     return {"files": dict(sorted(files.items())), "inputs": {k: str(v) for k, v in sorted(_given(spec).items())},
-            "task": spec.task, "seed": int(spec.seed), "pipflow": __version__}
+            "task": spec.task, "seed": int(spec.seed), "pipflow": __version__, "metrics": DEFINITIONS}
 
 
 def fingerprint_hash(fp: dict) -> str:
@@ -221,6 +225,9 @@ def differences(old: dict | None, new: dict) -> list[str]:
     out = []
     if old.get("pipflow") != new["pipflow"]:
         out.append(f"pipflow {old.get('pipflow')} -> {new['pipflow']}")
+    if old.get("metrics") != new["metrics"]:
+        out.append(f"the metrics' definitions {old.get('metrics') or 'before they were versioned'} -> "
+                   f"{new['metrics']} (the row was scored by other definitions)")
     of, nf = old.get("files") or {}, new["files"]
     changed = sorted(k for k in set(of) & set(nf) if of[k] != nf[k])
     if changed:
@@ -375,11 +382,13 @@ def _results(rows: list[dict], tasks: list[dict], config: BenchConfig, wall: flo
 
 
 def understanding(rows: list[dict]) -> dict:
-    """``understood``: the share of runs whose resolved goal and rules equal the gold (None when
-    no run of these was measured); ``misread``: how many runs executed another goal or rules."""
+    """``understood``: the share of runs whose resolved goal and rules mean what the gold means
+    (None when no run of these was measured); ``misread``: how many runs resolved another meaning
+    (whatever happened next); ``misread_executed``: how many of those robots executed."""
     measured = [r for r in rows if r.get("understood") is not None]
     return {"understood": (sum(1 for r in measured if r["understood"]) / len(measured)) if measured else None,
-            "misread": sum(1 for r in rows if r.get("misread"))}
+            "misread": sum(1 for r in rows if r.get("misread")),
+            "misread_executed": sum(1 for r in rows if r.get("misread_executed"))}
 
 
 def _by_construction(rows: list[dict], tasks: list[dict]) -> dict[str, dict]:
@@ -402,10 +411,13 @@ def _pct(value: float | None) -> str:
     return "--" if value is None else f"{100 * value:.0f}"
 
 
+
+
 def markdown_table(results: dict) -> str:
     """The paper's table for the task file's domain: by default per task SR (%), understood
-    (%), misread runs and travel cost max/avg (m); a domain may group it otherwise (its
-    ``bench_table``, e.g. per category)."""
+    (%), misread runs (of them executed) and travel cost max/avg (m; TC-avg over the robots that
+    moved) and the mean over the team; a domain may group it otherwise (its ``bench_table``, e.g.
+    per category)."""
     config = results.get("config") or {}
     domain = domain_named(config.get("domain"))
     table = domain.bench_table(results, Path(config["tasks"]))
@@ -415,22 +427,23 @@ def markdown_table(results: dict) -> str:
     for variant in results["variants"]:
         if len(results["variants"]) > 1:
             lines.append(f"### {variant['name']}\n")
-        lines += ["| Task | SR (%) | understood (%) | misread | TC max/avg all robots/avg robots that moved (m) | GCR | Exe | RU | makespan (s) | error |",
-                  "|---|---|---|---|---|---|---|---|---|---|"]
+        lines += ["| Task | SR (%) | understood (%) | misread (executed) | TC max/avg (m) | TC avg over the team (m) "
+                  "| GCR | Exe | RU | makespan (s) | error |",
+                  "|---|---|---|---|---|---|---|---|---|---|---|"]
         for t in variant["tasks"]:
             err = (t.get("error") or "").replace("|", "/").replace("\n", " ")[:80]
-            lines.append(f"| {t['id']} | {100 * t['sr']:.0f} | {_pct(t.get('understood'))} | {t.get('misread', 0)} | "
-                         f"{_fmt(t['tc_max'])}/{_fmt(t['tc_avg'])}/{_fmt(t.get('tc_avg_moved'))} | "
+            lines.append(f"| {t['id']} | {100 * t['sr']:.0f} | {_pct(t.get('understood'))} | {misread_cell(t)} | "
+                         f"{_fmt(t['tc_max'])}/{_fmt(t['tc_avg'])} | {_fmt(t.get('tc_avg_team'))} | "
                          f"{t['gcr']:.2f} | {t['exe']:.2f} | {t['ru']:.2f} | {_fmt(t.get('makespan'))} | {err} |")
         s = variant["summary"]
         lines.append(f"| **all** ({s['runs']} runs) | {100 * s['sr']:.0f} | {_pct(s.get('understood'))} | "
-                     f"{s.get('misread', 0)} | {_fmt(s['tc_max'])}/{_fmt(s['tc_avg'])}/{_fmt(s.get('tc_avg_moved'))} | "
+                     f"{misread_cell(s)} | {_fmt(s['tc_max'])}/{_fmt(s['tc_avg'])} | {_fmt(s.get('tc_avg_team'))} | "
                      f"{s['gcr']:.2f} | {s['exe']:.2f} | {s['ru']:.2f} | | |")
         lines.append("")
         if variant.get("constructions"):
-            lines += ["| Construction | runs | understood (%) | misread |", "|---|---|---|---|"]
+            lines += ["| Construction | runs | understood (%) | misread (executed) |", "|---|---|---|---|"]
             for name, c in variant["constructions"].items():
-                lines.append(f"| {name} | {c['runs']} | {_pct(c['understood'])} | {c['misread']} |")
+                lines.append(f"| {name} | {c['runs']} | {_pct(c['understood'])} | {misread_cell(c)} |")
             lines.append("")
     lines.append(f"wall time: {results['wall_seconds']:.1f} s")
     return "\n".join(lines)

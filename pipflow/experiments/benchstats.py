@@ -1,7 +1,10 @@
 """The bench's arithmetic over scored runs: one row per task, one summary per variant
 (``results.json``). The same for every domain: it reads only the flat score keys every domain's
-scoring returns (``success``, ``gcr``, ``exe``, ``ru``, ``tc_max``, ``tc_avg``, ...)."""
+scoring returns (``success``, ``gcr``, ``exe``, ``ru``, ``tc_max``, ``tc_avg``, ...), whose
+meaning :mod:`pipflow.metrics` defines."""
 from __future__ import annotations
+
+from pipflow.metrics import counts_for_travel
 
 
 def _mean(xs: list[float]) -> float | None:
@@ -9,9 +12,10 @@ def _mean(xs: list[float]) -> float | None:
 
 
 def aggregate_task(task_id: str, scores: list[dict]) -> dict:
-    """One row of ``results.json["tasks"]``: rates over all runs; TC over successful runs only
-    (README: "averaged over successful runs"), None when no run succeeded."""
-    ok = [s for s in scores if s.get("success")]
+    """One row of ``results.json["tasks"]``: rates over all runs; TC and makespan over the
+    successful runs that executed their task (:func:`pipflow.metrics.counts_for_travel`: a right
+    refusal travelled nowhere and is not a 0 m run), None when there is none."""
+    ok = [s for s in scores if counts_for_travel(s)]
     errors = [s["error"] for s in scores if s.get("error")]
     return {
         "id": task_id, "runs": len(scores),
@@ -21,15 +25,15 @@ def aggregate_task(task_id: str, scores: list[dict]) -> dict:
         "ru": _mean([float(s.get("ru", 0.0)) for s in scores]) or 0.0,
         "tc_max": _mean([float(s["tc_max"]) for s in ok]),
         "tc_avg": _mean([float(s["tc_avg"]) for s in ok]),
-        "tc_avg_moved": _mean([float(s.get("tc_avg_moved", 0.0)) for s in ok]),
+        "tc_avg_team": _mean([float(s.get("tc_avg_team", 0.0)) for s in ok]),
         "makespan": _mean([float(s.get("makespan", 0.0)) for s in ok]),
         "error": errors[0] if errors else None,
     }
 
 
 def summarize(rows: list[dict]) -> dict:
-    """``results.json["summary"]`` from task rows: run-weighted rates, TC over tasks that
-    had a successful run."""
+    """``results.json["summary"]`` from task rows: run-weighted rates, TC the mean over tasks that
+    had a successful run that executed."""
     runs = sum(r["runs"] for r in rows)
 
     def wmean(key: str) -> float:
@@ -38,4 +42,4 @@ def summarize(rows: list[dict]) -> dict:
     return {"runs": runs, "sr": wmean("sr"), "gcr": wmean("gcr"), "exe": wmean("exe"), "ru": wmean("ru"),
             "tc_max": _mean([r["tc_max"] for r in rows if r.get("tc_max") is not None]),
             "tc_avg": _mean([r["tc_avg"] for r in rows if r.get("tc_avg") is not None]),
-            "tc_avg_moved": _mean([r["tc_avg_moved"] for r in rows if r.get("tc_avg_moved") is not None])}
+            "tc_avg_team": _mean([r["tc_avg_team"] for r in rows if r.get("tc_avg_team") is not None])}

@@ -19,6 +19,7 @@ from pipflow.engine.runner import run_workflow
 from pipflow.engine.store import read_json
 from pipflow.errors import UserError
 from pipflow.experiments.benchdomains import domain_named
+from pipflow.meaning import misread_executed
 
 
 @dataclass(frozen=True)
@@ -69,9 +70,10 @@ def run_one(spec: RunSpec) -> dict:
         recorded_outputs(Path(row["run_dir"]), ("goal", "constraints", "loop", "reader"))
     # which refinement loop ran (pip-llm, checked) and whose reading the goal was (offline, model)
     row["loop"], row["reader"] = read.get("loop"), read.get("reader")
-    judged = domain.understand(task, read, row["status"], row.get("error_kind"))
+    judged = domain.understand(task, read, row["status"], row.get("error_kind"), world_path=spec.world_path)
     row.update(judged if judged is not None else
                {"understood": None, "misread": None, "understanding": "not measured for this domain"})
+    row["misread_executed"] = misread_executed(row.get("misread"), row.get("executed"))
     row["seconds"] = round(time.perf_counter() - started, 3)
     return row
 

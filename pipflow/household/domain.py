@@ -137,8 +137,13 @@ class HouseholdDomain(TaskDomain):
         return score_bench_run(world_path, task, {**outputs, "simulation": flat_simulation(outputs.get("simulation"))},
                                refusal, error)
 
-    def understand(self, task: dict, outputs: dict, status: str, error_kind: str | None) -> dict | None:
-        return understanding(task, outputs, status, error_kind)
+    def understand(self, task: dict, outputs: dict, status: str, error_kind: str | None,
+                   world_path: str | None = None) -> dict | None:
+        """Meanings compared in the task's team's world (where objects can end, which flags can
+        change; the team's robots for the rules)."""
+        world = worlds.select_team(worlds.load_world(world_path), task.get("team")) if world_path else None
+        fields = {f: list(names) for f, (names, _) in self.rule_names(world).items()} if world else None
+        return understanding(task, outputs, status, error_kind, world, fields)
 
     def bench_table(self, results: dict, tasks_file: Path) -> str | None:
         return bench_table(results, tasks_file)

@@ -4,13 +4,14 @@ A run succeeds when, judged on the simulation's final state (never on what the p
 every ground-truth condition holds (objects in receptacles, object states, category counts),
 no subtask was refused, and no robot's legs jump. Metrics as in the paper's AI2-THOR table:
 
-* GCR: fraction of ground-truth conditions that hold at the end;
+* GCR: fraction of ground-truth conditions that hold at the end, conditions true from the start
+  counting only once the run achieved one it had to change (:func:`pipflow.metrics.goal_condition_recall`);
 * Exe: executed / planned subtasks;
-* RU: ``min(1, reference / planned)``, the reference being a relaxed count of the actions any
-  plan needs (one per condition that does not already hold, one more per count shortfall unit,
-  an open (and a close when the goal wants it closed) per closed container that must be
-  entered, a carry to a sink or heater for a wash or heat of an object that is elsewhere);
-* TC-max / TC-avg: the most and the mean metres a team robot travels, over successful runs.
+* RU: ``min(1, reference / planned)``, the reference being the length of an optimal team-level
+  plan of the task's goal (:mod:`pipflow.household.reference`; a relaxed count where no plan was
+  proved optimal, :func:`relaxed_actions`), so an optimal plan scores 1;
+* TC-max / TC-avg / TC-avg over the team: :func:`pipflow.metrics.travel_costs` of the simulated
+  travel (the bench averages them over successful runs that executed, not over right refusals).
 
 What ``pipflow bench`` uses for task files with ``domain: household``, through the domain object
 (:class:`pipflow.household.domain.HouseholdDomain`): :func:`load_tasks`, :func:`score_bench_run`,
@@ -23,7 +24,11 @@ from typing import Any
 
 from pipflow.errors import Diagnostic, TaskFileError
 from pipflow.household.problem import CONDITIONS
+from pipflow.household.meaning import canonical, goal_difference
+from pipflow.household.reference import optimal_length
 from pipflow.household.world import initial_state, load_world, members, select_team, team_members
+from pipflow.meaning import judge, misread_cell, rules_as_written, rules_difference
+from pipflow.metrics import goal_condition_recall, travel_costs
 from pipflow.suggest import did_you_mean
 from pipflow.worldfile import parse_mapping, read_world_file
 
@@ -40,32 +45,36 @@ def holds(state: dict, name: str, cond: str) -> bool:
     return (name in set(state.get(key) or [])) == positive
 
 
-def check_conditions(world: dict, state: dict, goal: dict) -> tuple[int, int, list[str]]:
-    """``(met, total, unmet descriptions)`` of the goal conditions in ``state``."""
-    met, total, unmet = 0, 0, []
+def condition_values(world: dict, state: dict, goal: dict) -> list[tuple[bool, str]]:
+    """Each goal condition in ``state``, in the goal's order: ``(holds, description)``, the
+    description saying what is there instead when it does not hold."""
+    out = []
     at = state.get("at") or {}
     for place, items in (goal.get("in") or {}).items():
         for o in items:
-            total += 1
-            if at.get(o) == place:
-                met += 1
-            else:
-                unmet.append(f"{o} in {place} (it is in {at.get(o)})")
+            out.append((at.get(o) == place, f"{o} in {place} (it is in {at.get(o)})"))
     for name, conds in (goal.get("state") or {}).items():
         for c in conds:
-            total += 1
-            if holds(state, name, c):
-                met += 1
-            else:
-                unmet.append(f"{name} {c}")
+            out.append((holds(state, name, c), f"{name} {c}"))
     for c in goal.get("count") or []:
-        total += 1
         n = sum(1 for o in members(world, c["category"]) if at.get(o) == c["in"])
-        if n >= int(c["at_least"]):
-            met += 1
-        else:
-            unmet.append(f"{c['at_least']} {c['category']} in {c['in']} (there are {n})")
-    return met, total, unmet
+        out.append((n >= int(c["at_least"]), f"{c['at_least']} {c['category']} in {c['in']} (there are {n})"))
+    return out
+
+
+def check_conditions(world: dict, state: dict, goal: dict) -> tuple[int, int, list[str]]:
+    """``(met, total, unmet descriptions)`` of the goal conditions in ``state``."""
+    values = condition_values(world, state, goal)
+    return sum(ok for ok, _ in values), len(values), [why for ok, why in values if not ok]
+
+
+def recall(world: dict, state: dict, goal: dict) -> float:
+    """GCR of the final ``state`` (:func:`pipflow.metrics.goal_condition_recall`): the share of
+    the goal's conditions that hold, where those that held in the world's initial state count
+    only once the run achieved one it had to change."""
+    start = [ok for ok, _ in condition_values(world, _initial(world), goal)]
+    end = [ok for ok, _ in condition_values(world, state, goal)]
+    return goal_condition_recall(start, end)
 
 
 def _initial(world: dict) -> dict:
@@ -73,8 +82,22 @@ def _initial(world: dict) -> dict:
     return {"at": s["at"], **{k: sorted(v) for k, v in s.items() if k != "at"}}
 
 
-def reference_actions(world: dict, goal: dict) -> int:
-    """The relaxed count of actions any plan needs (module docstring)."""
+def reference_actions(world: dict, goal: dict) -> tuple[int, str]:
+    """``(actions, how)``: RU's reference for ``goal``, the length of an optimal team-level plan
+    (:mod:`pipflow.household.reference`), or, when none was proved optimal, the relaxed count of
+    :func:`relaxed_actions` (which no plan beats; ``how`` says which and why)."""
+    n, how = optimal_length(world, goal)
+    if n is not None:
+        return n, how
+    return relaxed_actions(world, goal), f"a relaxed count of the actions any plan needs ({how})"
+
+
+def relaxed_actions(world: dict, goal: dict) -> int:
+    """A count of actions that no plan beats: one per condition that does not already hold, one
+    more per count shortfall unit, an open (and a close when the goal wants it closed) per
+    closed container that must be entered, a carry to a sink or heater for a wash or heat of an
+    object that is elsewhere. It leaves out what a plan does around these (opening the container
+    an object is taken from, carrying it back), so it is only RU's fallback reference."""
     s = _initial(world)
     props = {n: e["properties"] for n, e in {**world["places"], **world["objects"]}.items()}
     n, entered = 0, set()
@@ -104,13 +127,6 @@ def reference_actions(world: dict, goal: dict) -> int:
     return n
 
 
-def _mean_moved(sim: dict) -> float:
-    """TC-avg over the robots that moved (the paper's meaning), from the simulation's travel: the
-    same key as the warehouse's score, so the bench reads one shape in every domain."""
-    moved = [float(v) for v in (sim.get("travel") or {}).values() if float(v) > 1e-9]
-    return round(sum(moved) / len(moved), 4) if moved else 0.0
-
-
 def score_run(world: dict, goal: dict, *, feasible: bool = True, graph: dict | None = None,
               schedule: dict | None = None, simulation: dict | None = None, refusal: str | None = None,
               error: str | None = None) -> dict:
@@ -121,6 +137,7 @@ def score_run(world: dict, goal: dict, *, feasible: bool = True, graph: dict | N
     sim = simulation or {}
     planned = len((schedule or {}).get("subtasks", []))
     executed = int(sim.get("executed", 0))
+    travel = travel_costs(sim.get("travel") or {})
     if not feasible:
         ok = bool(refusal and str(refusal).strip()) and executed == 0 and planned == 0
         violations = [] if ok else (["infeasible command was not refused"] if not refusal else
@@ -128,24 +145,24 @@ def score_run(world: dict, goal: dict, *, feasible: bool = True, graph: dict | N
         return {"planned": planned, "executed": executed, "refused": bool(refusal), "error": refusal or error or None,
                 "makespan": float(sim.get("makespan", 0.0) or 0.0), "lower_bound": None, "success": ok,
                 "goal_met": ok, "gcr": 1.0 if ok else 0.0, "exe": 1.0 if ok else float(sim.get("exe", 0.0) or 0.0),
-                "ru": 1.0 if ok else 0.0, "tc_max": float(sim.get("tc_max", 0.0)), "tc_avg": float(sim.get("tc_avg", 0.0)),
-                "tc_avg_moved": _mean_moved(sim), "violations": violations}
+                "ru": 1.0 if ok else 0.0, **travel, "violations": violations}
     base = {"planned": planned, "executed": executed, "refused": bool(refusal),
-            "error": refusal or error or None, "makespan": float(sim.get("makespan", 0.0) or 0.0),
-            "lower_bound": reference_actions(world, goal)}
-    if simulation is None:
-        met, total, _ = check_conditions(world, _initial(world), goal)
+            "error": refusal or error or None, "makespan": float(sim.get("makespan", 0.0) or 0.0)}
+    if simulation is None:  # refused or failed before execution: nothing changed, nothing recalled
         why = "refused a feasible command" if refusal else f"run failed: {error}" if error else "no simulation"
-        return {**base, "success": False, "goal_met": False, "gcr": met / total if total else 1.0, "exe": 0.0,
-                "ru": 0.0, "tc_max": 0.0, "tc_avg": 0.0, "tc_avg_moved": 0.0, "violations": [why]}
-    met, total, unmet = check_conditions(world, sim.get("final_state") or {}, goal)
+        return {**base, "lower_bound": None, "success": False, "goal_met": False,
+                "gcr": recall(world, _initial(world), goal), "exe": 0.0, "ru": 0.0, **travel_costs({}),
+                "violations": [why]}
+    final = sim.get("final_state") or {}
+    met, total, unmet = check_conditions(world, final, goal)
     violations = [f"goal: {u}" for u in unmet]
     violations += [f"{f['subtask']} {f['action']} refused: {'; '.join(f['reasons'])}" for f in sim.get("failures") or []]
     violations += [f"{r} jumps {j['metres']:g} m" for r, js in (sim.get("jumps") or {}).items() for j in js]
-    ru = min(1.0, base["lower_bound"] / planned) if planned else (1.0 if base["lower_bound"] == 0 else 0.0)
-    return {**base, "success": not violations, "goal_met": met == total, "gcr": met / total if total else 1.0,
-            "exe": float(sim.get("exe", 0.0)), "ru": ru, "tc_max": float(sim.get("tc_max", 0.0)),
-            "tc_avg": float(sim.get("tc_avg", 0.0)), "tc_avg_moved": _mean_moved(sim), "violations": violations}
+    reference, _ = reference_actions(world, goal)
+    ru = min(1.0, reference / planned) if planned else (1.0 if reference == 0 else 0.0)
+    return {**base, "lower_bound": reference, "success": not violations, "goal_met": met == total,
+            "gcr": recall(world, final, goal), "exe": float(sim.get("exe", 0.0)), "ru": ru, **travel,
+            "violations": violations}
 
 
 # ------------------------------------------------------------------------------------------
@@ -227,44 +244,31 @@ def load_tasks(path: str | Path) -> dict:
 
 
 def score_bench_run(world_path: str, task: dict, outputs: dict, refusal: str | None, error: str | None) -> dict:
-    """Score one bench run of a household task (the team's world, the task's ground truth)."""
+    """Score one bench run of a household task (the team's world, the task's ground truth); the
+    row also says how RU's reference was found (``reference``)."""
     world = select_team(load_world(world_path), task.get("team"))
     feasible = task.get("feasible", True) is not False and task.get("expect") != "refuse"  # refusing is right
-    return score_run(world, task.get("goal") or {}, feasible=feasible,
-                     graph=outputs.get("graph"), schedule=outputs.get("schedule"),
-                     simulation=outputs.get("simulation"), refusal=refusal, error=error)
+    goal = task.get("goal") or {}
+    row = score_run(world, goal, feasible=feasible, graph=outputs.get("graph"), schedule=outputs.get("schedule"),
+                    simulation=outputs.get("simulation"), refusal=refusal, error=error)
+    if row.get("lower_bound") is not None:
+        row["reference"] = reference_actions(world, goal)[1]  # computed once per goal: remembered
+    return row
 
 
-def _canonical_goal(goal: Any) -> str | None:
-    """A household goal as sorted JSON (lists are sets; empty entries dropped), None if malformed."""
-    import json
-
-    if not isinstance(goal, dict):
-        return None
-    out = {"in": {p: sorted(v) for p, v in (goal.get("in") or {}).items() if v},
-           "state": {n: sorted(v) for n, v in (goal.get("state") or {}).items() if v},
-           "count": sorted(json.dumps(c, sort_keys=True) for c in goal.get("count") or [])}
-    return json.dumps(out, sort_keys=True)
-
-
-def understanding(task: dict, outputs: dict, status: str, error_kind: str | None) -> dict:
-    """Whether a bench run read the household command as its gold (issue 12, item 9): a task whose
-    right answer is a refusal is understood when the run was refused; any other when the run's
-    goal (as the command states it, counts kept) equals the gold. ``misread``: the run executed
-    with another goal (robots moved wrongly)."""
-    refused = status == "refused" or error_kind in ("Refusal", "TranslationError")
-    executed = status == "succeeded"
-    if task.get("feasible") is False or task.get("expect") == "refuse":
-        return {"understood": refused, "misread": executed,
-                "understanding": "refused, as it should be" if refused else
-                ("executed a command whose right answer is a refusal" if executed else "not refused")}
-    run = _canonical_goal(outputs.get("goal"))
-    if run is None:
-        return {"understood": False, "misread": False,
-                "understanding": "refused" if refused else "no goal among the run's outputs (it did not finish)"}
-    same = run == _canonical_goal(task.get("goal") or {})
-    return {"understood": same, "misread": not same and executed,
-            "understanding": "goal as the gold" if same else f"goal {run}, gold {_canonical_goal(task.get('goal'))}"}
+def understanding(task: dict, outputs: dict, status: str, error_kind: str | None,
+                  world: dict | None = None, rule_fields: dict[str, list[str]] | None = None) -> dict:
+    """Whether a bench run read the household command as its gold (:func:`pipflow.meaning.judge`):
+    the goals compared by the final states of ``world`` they accept
+    (:func:`pipflow.household.meaning.goal_difference`; without a world, as written), the robot
+    rules by what they forbid (``rule_fields``: the names each rule field takes)."""
+    if world is None:
+        return judge(task, outputs, status, error_kind, rule_difference=rules_as_written,
+                     goal_difference=lambda gold, run: None if canonical(gold or {}) == canonical(run)
+                     else f"goal {canonical(run)}, gold {canonical(gold or {})}")
+    return judge(task, outputs, status, error_kind,
+                 goal_difference=lambda gold, run: goal_difference(world, gold or {}, run),
+                 rule_difference=lambda gold, run: rules_difference(gold, run, world["robots"], rule_fields or {}))
 
 
 def _fmt(v: Any) -> str:
@@ -273,13 +277,14 @@ def _fmt(v: Any) -> str:
 
 def bench_table(results: dict, tasks_file: str | Path) -> str:
     """The paper-shaped table (per category SR, TC-max/TC-avg, GCR, RU, Exe) for household
-    bench results."""
+    bench results; a category's TC is the mean over its tasks that had a successful run that
+    executed (a right refusal is no 0 m run)."""
     category = {t["id"]: t["category"] for t in load_tasks(tasks_file)["tasks"]}
     lines = []
     for variant in results["variants"]:
         if len(results["variants"]) > 1:
             lines.append(f"### {variant['name']}\n")
-        lines += ["| Category | tasks | runs | SR | understood | misread | TC max/avg (m) | GCR | RU | Exe |",
+        lines += ["| Category | tasks | runs | SR | understood | misread (executed) | TC max/avg (m) | GCR | RU | Exe |",
                   "|---|---|---|---|---|---|---|---|---|---|"]
         groups = [(c, [t for t in variant["tasks"] if category.get(t["id"]) == c]) for c in CATEGORIES]
         groups.append(("**all**", list(variant["tasks"])))
@@ -297,15 +302,15 @@ def bench_table(results: dict, tasks_file: str | Path) -> str:
             measured = [r for r in rows if r.get("understood") is not None]
             understood = (sum(r["understood"] * r["runs"] for r in measured) / sum(r["runs"] for r in measured)
                           if measured else None)
-            misread = sum(int(r.get("misread") or 0) for r in rows)
+            misread = {k: sum(int(r.get(k) or 0) for r in rows) for k in ("misread", "misread_executed")}
             lines.append(f"| {name} | {len(rows)} | {runs} | {w('sr'):.2f} | "
-                         f"{'--' if understood is None else f'{understood:.2f}'} | {misread} | {_fmt(tmax)}/{_fmt(tavg)} | "
-                         f"{w('gcr'):.2f} | {w('ru'):.2f} | {w('exe'):.2f} |")
+                         f"{'--' if understood is None else f'{understood:.2f}'} | {misread_cell(misread)} | "
+                         f"{_fmt(tmax)}/{_fmt(tavg)} | {w('gcr'):.2f} | {w('ru'):.2f} | {w('exe'):.2f} |")
         if variant.get("constructions"):
-            lines += ["", "| Construction | runs | understood | misread |", "|---|---|---|---|"]
+            lines += ["", "| Construction | runs | understood | misread (executed) |", "|---|---|---|---|"]
             for name, c in sorted(variant["constructions"].items()):
                 und = "--" if c.get("understood") is None else f"{c['understood']:.2f}"
-                lines.append(f"| {name} | {c['runs']} | {und} | {c['misread']} |")
+                lines.append(f"| {name} | {c['runs']} | {und} | {misread_cell(c)} |")
         lines += ["", "| Task | category | SR | TC max/avg (m) | GCR | RU | Exe | error |", "|---|---|---|---|---|---|---|---|"]
         for t in variant["tasks"]:
             err = (t.get("error") or "").replace("|", "/").replace("\n", " ")[:90]

@@ -24,7 +24,8 @@ from pathlib import Path
 from typing import Any, Callable
 
 from pipflow.bullet import colour_rgba, connect_direct, render_floor
-from pipflow.household.scoring import check_conditions
+from pipflow.household.scoring import check_conditions, recall
+from pipflow.metrics import travel_costs
 from pipflow.household.world import initial_state
 from pipflow.team.trajectory import ROBOT_COLOURS, Trajectory
 
@@ -137,7 +138,7 @@ def simulate(world: dict, schedule: dict, graph: dict | None, goal: dict | None 
              log: Callable[[str], None] | None = None) -> dict:
     """Run ``schedule`` on the household ``world``; see the module docstring.
 
-    Returns ``{final_state, executed, failed, failures, exe, travel, tc_max, tc_avg, goal_met,
+    Returns ``{final_state, executed, failed, failures, exe, travel, tc_max, tc_avg, tc_avg_team, goal_met,
     gcr, conditions, jumps, makespan, pictures}``."""
     log = log or (lambda m: None)
     nodes = {n["id"]: n for n in (graph or {}).get("nodes", [])}
@@ -189,15 +190,12 @@ def simulate(world: dict, schedule: dict, graph: dict | None, goal: dict | None 
     planned = len(schedule.get("subtasks", []))
     travel = {r: round(sum(seg[3][-1] for seg in tr.segments) + sum(j["metres"] for j in tr.jumps), 6)
               for r, tr in traj.items() if r in world["robots"]}
-    dists = list(travel.values())
-    moved = [d for d in dists if d > 1e-9]
     met, total, unmet = check_conditions(world, final, goal or {})
     return {
         "final_state": final, "executed": executed, "failed": len(failures), "failures": failures,
         "exe": executed / planned if planned else 1.0, "travel": travel,
-        "tc_max": max(dists, default=0.0), "tc_avg": sum(dists) / len(dists) if dists else 0.0,
-        "tc_avg_moved": round(sum(moved) / len(moved), 4) if moved else 0.0,  # over the robots that moved
-        "goal_met": met == total, "gcr": met / total if total else 1.0,
+        **travel_costs(travel),  # tc_max, tc_avg (robots that moved), tc_avg_team
+        "goal_met": met == total, "gcr": recall(world, final, goal or {}),
         "conditions": {"met": met, "total": total, "unmet": unmet},
         "jumps": {r: tr.jumps for r, tr in traj.items() if tr.jumps},
         "makespan": float(schedule.get("makespan", 0.0)), "pictures": pictures,

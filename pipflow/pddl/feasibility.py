@@ -111,3 +111,59 @@ def _leftover_flow(shelves: list[str], products: list[str], room: dict[str, int]
         return 0, 0
     return free_total, int(nx.maximum_flow_value(g, "src", "dst"))
 
+
+
+def final_ranges(world: dict, goal: dict[str, dict[str, Any]],
+                 cells: list[tuple[str, str]]) -> dict[tuple[str, str], tuple[int, int]] | None:
+    """For each (shelf, product) cell of ``cells``: the fewest and the most units it holds in the
+    final states that meet ``goal`` (every unit on some shelf, capacities kept, each goal cell
+    within its value); None when no final state meets the goal. Why: two goals accept the same
+    final states exactly when these ranges agree on every cell either goal states (the states a
+    goal accepts are those of a box cut by conservation and capacity, and such a set is contained
+    in a box exactly when its range on each of the box's cells is), which is how the bench tells a
+    goal that lists 0 for the shelves a gathering empties from one that leaves them to
+    conservation (:mod:`pipflow.warehouse.understanding`).
+
+    Each end is a minimum-cost flow (networkx's network simplex: exact, whole units): the units
+    left once every cell holds its lowest count flow to the cells that may take more, costed
+    only on the cell asked about. ``goal`` and ``cells`` must name shelves and products of the
+    world."""
+    if infeasibility_reasons(world, goal):
+        return None
+    shelves, products = list(world["shelves"]), list(world["products"])
+    cap = {s: int(world["shelves"][s]["capacity"]) for s in shelves}
+    total = {p: sum(int(world["stock"].get(s, {}).get(p, 0)) for s in shelves) for p in products}
+    limits_of = _cells(world, goal)
+    room = {s: cap[s] - sum(limits_of[s, p][0] for p in products) for s in shelves}
+    free = {p: total[p] - sum(limits_of[s, p][0] for s in shelves) for p in products}
+    out = {}
+    for cell in cells:
+        lo, hi = limits_of[cell]
+        if free[cell[1]] <= 0 or hi == lo or room[cell[0]] <= 0:
+            out[cell] = (lo, lo)
+            continue
+        out[cell] = (lo + _extra_units(cell, +1, shelves, products, room, free, limits_of),
+                     lo + _extra_units(cell, -1, shelves, products, room, free, limits_of))
+    return out
+
+
+def _extra_units(cell: tuple[str, str], sign: int, shelves: list[str], products: list[str], room: dict[str, int],
+                 free: dict[str, int], limits_of: dict[tuple[str, str], tuple[int, int | None]]) -> int:
+    """Units above its lowest count that ``cell`` holds when every left-over unit is placed and
+    the cell's share is as small (``sign`` +1) or as large (-1) as it can be."""
+    g = nx.DiGraph()
+    g.add_node("dst", demand=sum(max(0, free[p]) for p in products))
+    for p in products:
+        if free[p] <= 0:
+            continue
+        g.add_node(("p", p), demand=-free[p])
+        for s in shelves:
+            lo, hi = limits_of[s, p]
+            width = free[p] if hi is None else min(free[p], hi - lo)
+            if width > 0:
+                g.add_edge(("p", p), ("s", s), capacity=width, weight=sign if (s, p) == cell else 0)
+    for s in shelves:
+        if room[s] > 0:
+            g.add_edge(("s", s), "dst", capacity=room[s], weight=0)
+    flow = nx.min_cost_flow(g)
+    return int(flow[("p", cell[1])].get(("s", cell[0]), 0)) if ("p", cell[1]) in flow else 0

@@ -11,12 +11,13 @@ from pathlib import Path
 from typing import Any
 
 from pipflow.errors import InputError
+from pipflow.metrics import counts_for_travel, upgrade_results, upgrade_travel_keys
 
 RUN_FIELDS = [("status", None), ("goal", None), ("constraints", None), ("rounds", None),
-              ("makespan", "s"), ("tc_max", "m"), ("tc_avg", "m"), ("tc_avg_moved", "m"), ("goal_met", None),
+              ("makespan", "s"), ("tc_max", "m"), ("tc_avg", "m"), ("tc_avg_team", "m"), ("goal_met", None),
               ("exe", None), ("seconds", "s"), ("tokens", None), ("cost_usd", "USD")]
-TASK_FIELDS = [("sr", "%"), ("understood", "%"), ("misread", None), ("gcr", None), ("tc_max", "m"),
-               ("tc_avg", "m"), ("makespan", "s"), ("seconds", "s"), ("tokens", None)]
+TASK_FIELDS = [("sr", "%"), ("understood", "%"), ("misread", None), ("misread_executed", None), ("gcr", None),
+               ("tc_max", "m"), ("tc_avg", "m"), ("makespan", "s"), ("seconds", "s"), ("tokens", None)]
 
 
 def _read(path: Path) -> Any:
@@ -36,7 +37,7 @@ def kind_of(d: Path) -> str:
 
 def _run_facts(d: Path) -> dict[str, Any]:
     info = _read(d / "run.json") or {}
-    outputs = _read(d / "outputs.json") or {}
+    outputs = upgrade_travel_keys(_read(d / "outputs.json") or {})  # records of before TC-avg had one definition
     metrics = _read(d / "metrics.json") or {}
     llm = metrics.get("llm") or {}
     facts = {"status": info.get("status"), "seconds": info.get("seconds"),
@@ -59,7 +60,7 @@ def comparison(a: Path, b: Path) -> tuple[str, list[list[Any]]]:
             if fa.get(key) is not None or fb.get(key) is not None:
                 rows.append([key + (f" ({unit})" if unit else ""), fa.get(key), fb.get(key), _diff(fa.get(key), fb.get(key))])
         return ka, rows
-    ra, rb = _read(a / "results.json") or {}, _read(b / "results.json") or {}
+    ra, rb = upgrade_results(_read(a / "results.json") or {}), upgrade_results(_read(b / "results.json") or {})
     ta = {t.get("id"): t for t in ra.get("tasks", []) if isinstance(t, dict)}
     tb = {t.get("id"): t for t in rb.get("tasks", []) if isinstance(t, dict)}
     for tid in list(ta) + [t for t in tb if t not in ta]:
@@ -122,8 +123,8 @@ def variants_side_by_side(results: dict[str, Any], rows: list[dict[str, Any]]) -
 
     def cell(name: str, tid: str | None) -> tuple[str, float | None, float | None]:
         runs = [r for r in rows if r.get("variant") == name and (tid is None or r.get("task") == tid)]
-        ok = [r for r in runs if r.get("success")]
-        sr = 100 * len(ok) / len(runs) if runs else 0.0
+        sr = 100 * sum(1 for r in runs if r.get("success")) / len(runs) if runs else 0.0
+        ok = [r for r in runs if counts_for_travel(r)]  # travel: over successful runs that executed
         tc = [float(r["tc_max"]) for r in ok if isinstance(r.get("tc_max"), (int, float))]
         ms = [float(r["makespan"]) for r in ok if isinstance(r.get("makespan"), (int, float))]
         tc_mean = sum(tc) / len(tc) if tc else None

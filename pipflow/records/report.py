@@ -31,6 +31,8 @@ from typing import Any
 from pipflow import pictures
 from pipflow.errors import InputError
 from pipflow.goalcounts import describe, holds, is_bound, value_problems
+from pipflow.meaning import misread_cell
+from pipflow.metrics import counts_for_travel, upgrade_results, upgrade_travel_keys
 from pipflow.yamlsource import read_source, safe_load
 
 _CHECK_SCRIPT = """<script>
@@ -218,6 +220,7 @@ def _run_body(d: Path) -> str:
 
     if sim_s:
         name, sd, sim = sim_s
+        sim = upgrade_travel_keys(sim)  # a record of before TC-avg had one definition
         art = sd / "artifacts"
         pics = [p for p in sim.get("pictures", []) if (art / p).is_file()]
         src = f"steps/{name}/artifacts/paths.png" if "paths.png" in pics else None
@@ -236,10 +239,10 @@ def _run_body(d: Path) -> str:
         if anim:
             parts.append("<h2>Animation</h2>" + _img(f"steps/{name}/artifacts/{anim[0]}", "animation"))
         parts.append("<h2>Simulation</h2>" + _table(
-            ["executed", "failed", "Exe", "TC-max (m)", "TC-avg, all robots (m)", "TC-avg, robots that moved (m)",
+            ["executed", "failed", "Exe", "TC-max (m)", "TC-avg, robots that moved (m)", "TC-avg over the team (m)",
              "makespan (s)", "goal met", "GCR"],
             [[sim.get("executed"), sim.get("failed"), sim.get("exe"), sim.get("tc_max"), sim.get("tc_avg"),
-              sim.get("tc_avg_moved"),
+              sim.get("tc_avg_team"),
               sim.get("makespan"), sim.get("goal_met"), sim.get("gcr")]]))
         if sim.get("failures"):
             parts.append("<p>Actions not executed:</p><ul>" + "".join(
@@ -256,12 +259,12 @@ def _run_body(d: Path) -> str:
             parts.append("<h3>Goal</h3>" + _table(["shelf", "product", "goal", "final", "holds"], rows))
 
     if met_s:
-        m = met_s[2]
+        m = upgrade_travel_keys(met_s[2])
         parts.append("<h2>Metrics</h2>" + _table(
-            ["success", "GCR", "Exe", "RU", "TC-max (m)", "TC-avg, all robots (m)", "TC-avg, robots that moved (m)",
+            ["success", "GCR", "Exe", "RU", "TC-max (m)", "TC-avg, robots that moved (m)", "TC-avg over the team (m)",
              "planned", "lower bound"],
             [[m.get("success"), m.get("gcr"), m.get("exe"), m.get("ru"), m.get("tc_max"), m.get("tc_avg"),
-              m.get("tc_avg_moved"),
+              m.get("tc_avg_team"),
               m.get("planned"), m.get("lower_bound")]]))
         if m.get("violations"):
             parts.append("<ul>" + "".join(f"<li class='bad'>{_e(v)}</li>" for v in m["violations"]) + "</ul>")
@@ -415,7 +418,8 @@ def _bench_body(d: Path) -> str:
         raise InputError(f"{d / 'results.json'}: not a results file (needs 'summary' and 'tasks')")
     rep = d / "report"
     rep.mkdir(exist_ok=True)
-    runs = [r for r in (_read(d / "runs.json", []) or []) if isinstance(r, dict)]
+    runs = [upgrade_travel_keys(r) for r in (_read(d / "runs.json", []) or []) if isinstance(r, dict)]
+    results = upgrade_results(results)
     config = results.get("config") or {}
     variants = results.get("variants") or [{"name": "default", "summary": results.get("summary", {}),
                                             "tasks": results.get("tasks", [])}]
@@ -423,10 +427,10 @@ def _bench_body(d: Path) -> str:
     parts = [_bench_config(results, config)]
 
     parts.append("<h2>Summary</h2>" + _table(
-        ["variant", "runs", "SR", "understood", "misread", "GCR", "TC-max (m)", "TC-avg (m)", "makespan (s)",
+        ["variant", "runs", "SR", "understood", "misread (executed)", "GCR", "TC-max (m)", "TC-avg (m)", "makespan (s)",
          "time per run (s)", "tokens"],
         [[v.get("name", "default"), (v.get("summary") or {}).get("runs"), _pct((v.get("summary") or {}).get("sr")),
-          _pct((v.get("summary") or {}).get("understood")), (v.get("summary") or {}).get("misread"),
+          _pct((v.get("summary") or {}).get("understood")), misread_cell(v.get("summary") or {}),
           (v.get("summary") or {}).get("gcr"), (v.get("summary") or {}).get("tc_max"),
           (v.get("summary") or {}).get("tc_avg"), _mean_of(runs, v.get("name", "default"), "makespan"),
           _mean_of(runs, v.get("name", "default"), "seconds"), _mean_of(runs, v.get("name", "default"), "tokens")]
@@ -443,7 +447,7 @@ def _bench_body(d: Path) -> str:
         for k, n in enumerate(names):
             t = by_task[n].get(tid) or {}
             vr = [r for r in runs if r.get("variant", "default") == n and r.get("task") == tid]
-            tc = [float(r["tc_max"]) for r in vr if r.get("success") and isinstance(r.get("tc_max"), (int, float))]
+            tc = [float(r["tc_max"]) for r in vr if counts_for_travel(r) and isinstance(r.get("tc_max"), (int, float))]
             links = " ".join(f"<a href='{_e(link)}'>seed {_e(r.get('seed'))}</a>" for r in vr
                              for link in [_rel(d, r.get("run_dir"))] if link)
             row += [Raw(f"{_pct(t.get('sr'))}<br><span class='small'>{links}</span>"), _spread(tc),
@@ -552,7 +556,7 @@ def _bench_overview(variants: list[dict], runs: list[dict], path: Path) -> None:
         lo, mid, hi = [], [], []
         for i in ids:
             tc = [float(r["tc_max"]) for r in runs if r.get("variant", "default") == name and str(r.get("task")) == i
-                  and r.get("success") and isinstance(r.get("tc_max"), (int, float))]
+                  and counts_for_travel(r) and isinstance(r.get("tc_max"), (int, float))]
             m = sum(tc) / len(tc) if tc else 0.0
             mid.append(m)
             lo.append(m - min(tc) if tc else 0.0)

@@ -25,6 +25,7 @@ import math
 from typing import Any, Iterable
 
 from pipflow.errors import InputError
+from pipflow.metrics import travel_costs
 
 #: the allocation costs c_i a :class:`Timeline` can give (the first is the paper's and the default)
 COSTS = ("total", "subtask")
@@ -151,17 +152,12 @@ class Timeline:
         robots = {}
         for r in self.robots:
             robots[r] = {"legs": self.legs[r], "distance": self.driven[r]}
-        dists = [v["distance"] for v in robots.values()]
-        moved = [d for d in dists if d > 1e-9]
         return {
             "subtasks": self.records,
             "robots": robots,
             "makespan": max((rec["end"] for rec in self.records), default=0.0),
-            "tc_max": max(dists, default=0.0),
-            # two averages: over every robot of the world (falls as idle robots are added), and
-            # over the robots that moved (the paper's meaning: the mean travel of a robot used)
-            "tc_avg": sum(dists) / len(dists) if dists else 0.0,
-            "tc_avg_moved": sum(moved) / len(moved) if moved else 0.0,
+            # tc_max, tc_avg (over the robots that moved: the paper's TC-avg), tc_avg_team (every robot)
+            **travel_costs({r: v["distance"] for r, v in robots.items()}),
         }
 
 

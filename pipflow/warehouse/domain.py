@@ -166,5 +166,9 @@ class WarehouseDomain(TaskDomain):
                           graph=outputs.get("graph"), schedule=outputs.get("schedule"),
                           simulation=outputs.get("simulation"), refusal=refusal, error=error)
 
-    def understand(self, task: dict, outputs: dict, status: str, error_kind: str | None) -> dict | None:
-        return understanding(task, outputs, status, error_kind)
+    def understand(self, task: dict, outputs: dict, status: str, error_kind: str | None,
+                   world_path: str | None = None) -> dict | None:
+        """Meanings compared in the task file's world (its stock and robots; starts do not matter)."""
+        world = worlds.load_world(world_path) if world_path else None
+        fields = {f: list(names) for f, (names, _) in self.rule_names(world).items()} if world else None
+        return understanding(task, outputs, status, error_kind, world, fields)

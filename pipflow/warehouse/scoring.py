@@ -15,10 +15,12 @@ A run succeeds when, judged on what the *simulation* reports (never on what the 
 A task marked ``feasible: false`` succeeds only when it was refused with a reason and nothing was
 executed.
 
-Metrics (paper, Sec. V): GCR = fraction of goal counts met; Exe = executed / planned actions;
-TC-max / TC-avg from the simulated travel (TC-avg twice: ``tc_avg`` over every robot of the
-world, which falls as idle robots are added, and ``tc_avg_moved`` over the robots that moved, the
-paper's meaning); RU = ``lower_bound / plan_length`` (capped at 1).
+Metrics (paper, Sec. IV-B; their definitions, shared by every domain, are :mod:`pipflow.metrics`):
+GCR = fraction of goal counts met at the end, counts that already held at the start counting
+only once the run achieved a count it had to change; Exe = executed / planned actions; TC-max,
+TC-avg (over the robots that moved: the paper's meaning) and ``tc_avg_team`` (over every robot
+of the world, which falls as idle robots are added) from the simulated travel; RU =
+``lower_bound / plan_length`` (capped at 1).
 
 RU's lower bound is :func:`pipflow.pddl.bounds.fewest_moves`: the fewest moves of any plan once
 the order of moves is dropped (an integer program, SCIP), so RU = 1 exactly when the plan has the
@@ -29,7 +31,8 @@ from __future__ import annotations
 from collections import Counter
 from typing import Iterable
 
-from pipflow.goalcounts import holds
+from pipflow.goalcounts import values_met
+from pipflow.metrics import goal_condition_recall, travel_costs
 
 
 # ------------------------------------------------------------------------------------------
@@ -40,9 +43,15 @@ from pipflow.goalcounts import holds
 def goal_counts(stock: dict, goal: dict) -> tuple[int, int]:
     """(met, listed) goal values: an exact count is met when the final count equals it, a bound
     ``{at_least, at_most}`` when the final count lies within it."""
-    conds = [(s, p, v) for s, items in (goal or {}).items() for p, v in items.items()]
-    met = sum(1 for s, p, v in conds if holds(int((stock or {}).get(s, {}).get(p, 0)), v))
-    return met, len(conds)
+    met = values_met(stock, goal)
+    return sum(met), len(met)
+
+
+def recall(world: dict, stock: dict, goal: dict) -> float:
+    """GCR of the final ``stock`` (:func:`pipflow.metrics.goal_condition_recall`): the share of
+    goal counts that hold, counts that held in the world's initial stock counting only once the
+    run achieved a count it had to change."""
+    return goal_condition_recall(values_met(world.get("stock", {}), goal), values_met(stock, goal))
 
 
 def move_fields(graph: dict | None, schedule: dict | None) -> list[dict]:
@@ -151,9 +160,10 @@ def score_run(world: dict, goal: dict, *, constraints: list | None = None, feasi
     """Score one run. ``refusal`` is the message of a :class:`pipflow.Refusal`, ``error`` that
     of any other failure; both mean the pipeline stopped before simulating (normally).
 
-    Returns ``{success, goal_met, gcr, exe, ru, tc_max, tc_avg, tc_avg_moved, makespan, planned, executed,
+    Returns ``{success, goal_met, gcr, exe, ru, tc_max, tc_avg, tc_avg_team, makespan, planned, executed,
     lower_bound, violations, refused, error}``."""
     sim = simulation or {}
+    travel = travel_costs(sim.get("travel") or {})
     planned = len((schedule or {}).get("subtasks", []))
     executed = int(sim.get("executed", 0))
     base = {"planned": planned, "executed": executed, "refused": bool(refusal),
@@ -166,16 +176,12 @@ def score_run(world: dict, goal: dict, *, constraints: list | None = None, feasi
             ["refusal has no reason"] if not str(refusal).strip() else ["actions were executed"])
         return {**base, "success": ok, "goal_met": ok, "gcr": 1.0 if ok else 0.0,
                 "exe": 1.0 if ok else (sim.get("exe", 0.0) or 0.0), "ru": 1.0 if ok else 0.0,
-                "tc_max": float(sim.get("tc_max", 0.0)), "tc_avg": float(sim.get("tc_avg", 0.0)),
-                "tc_avg_moved": float(sim.get("tc_avg_moved", 0.0)),
-                "lower_bound": None, "violations": violations}
+                **travel, "lower_bound": None, "violations": violations}
 
-    if simulation is None:  # refused or failed before execution: judge the untouched world
-        met, listed = goal_counts(world.get("stock", {}), goal)
+    if simulation is None:  # refused or failed before execution: nothing changed, nothing recalled
         why = "refused a feasible command" if refusal else f"run failed: {error}" if error else "no simulation"
-        return {**base, "success": False, "goal_met": False, "gcr": met / listed if listed else 1.0,
-                "exe": 0.0, "ru": 0.0, "tc_max": 0.0, "tc_avg": 0.0, "tc_avg_moved": 0.0, "lower_bound": None,
-                "violations": [why]}
+        return {**base, "success": False, "goal_met": False, "gcr": recall(world, world.get("stock", {}), goal),
+                "exe": 0.0, "ru": 0.0, **travel_costs({}), "lower_bound": None, "violations": [why]}
 
     final = sim.get("final_stock", {})
     met, listed = goal_counts(final, goal)
@@ -195,8 +201,6 @@ def score_run(world: dict, goal: dict, *, constraints: list | None = None, feasi
     else:
         ru = min(1.0, (lb or 0) / planned)
     return {**base, "success": not violations, "goal_met": met == listed,
-            "gcr": met / listed if listed else 1.0,
+            "gcr": recall(world, final, goal),
             "exe": float(sim.get("exe", executed / planned if planned else 1.0)), "ru": ru,
-            "tc_max": float(sim.get("tc_max", 0.0)), "tc_avg": float(sim.get("tc_avg", 0.0)),
-            "tc_avg_moved": float(sim.get("tc_avg_moved", 0.0)),
-            "lower_bound": lb, "violations": violations}
+            **travel, "lower_bound": lb, "violations": violations}

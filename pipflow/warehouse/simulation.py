@@ -31,7 +31,8 @@ from pathlib import Path
 
 from pipflow import pictures as pics
 from pipflow.bullet import colour_rgba, connect_direct, render_floor
-from pipflow.goalcounts import holds
+from pipflow.goalcounts import values_met
+from pipflow.metrics import goal_condition_recall, travel_costs
 from pipflow.team.trajectory import ARRIVAL_TOLERANCE, ROBOT_COLOURS, Point, Trajectory
 from pipflow.team.trajectory import distance as _dist
 
@@ -291,7 +292,7 @@ def simulate(world: dict, schedule: dict, graph: dict | None = None, goal: dict 
              step: float = 0.25, log=None) -> dict:
     """Run ``schedule`` in pybullet and return what the world looks like afterwards.
 
-    Returns ``{final_stock, executed, failed, failures, exe, travel, tc_max, tc_avg, tc_avg_moved, goal_met,
+    Returns ``{final_stock, executed, failed, failures, exe, travel, tc_max, tc_avg, tc_avg_team, goal_met,
     gcr, peak_load, stray_units, jumps, makespan, trajectories, events, pictures}``; ``jumps``
     lists legs that start away from where the robot stood (a broken schedule: the body jumps); pictures (file
     names in ``out_dir``) only when ``out_dir`` is given.
@@ -459,15 +460,13 @@ def _measure(run: Playback, traj: dict[str, Trajectory], final_stock: dict, stra
              makespan: float, planned: int) -> dict:
     """The simulation's outputs from what the playback saw and the final count of the shelves."""
     final_stock = {s: {p: n for p, n in items.items() if n} for s, items in final_stock.items()}
-    gm, gcr = goal_check(final_stock, goal or {})
-    tc = list(run.travel.values())
-    moved = [v for v in tc if v > 1e-9]
+    gm, gcr = goal_check(final_stock, goal or {}, run.world.get("stock") or {})
+    travel = {r: round(v, 4) for r, v in run.travel.items()}
     return {
         "final_stock": final_stock, "executed": run.executed, "failed": len(run.failures),
         "failures": run.failures, "exe": run.executed / planned if planned else 1.0,
-        "travel": {r: round(v, 4) for r, v in run.travel.items()},
-        "tc_max": round(max(tc), 4) if tc else 0.0, "tc_avg": round(sum(tc) / len(tc), 4) if tc else 0.0,
-        "tc_avg_moved": round(sum(moved) / len(moved), 4) if moved else 0.0,  # over robots that moved
+        "travel": travel,
+        **travel_costs(travel),  # tc_max, tc_avg (robots that moved), tc_avg_team
         "goal_met": gm, "gcr": gcr, "peak_load": run.peak, "stray_units": stray,
         "jumps": {r: t.jumps for r, t in traj.items() if t.jumps},
         "makespan": round(makespan, 4), "events": run.log_events,
@@ -558,12 +557,11 @@ def _unload(scene: Scene, m: Move) -> None:
             scene.carried[r] = []
 
 
-def goal_check(stock: dict, goal: dict) -> tuple[bool, float]:
-    """Every listed goal value must hold: an exact count exactly, a bound ``{at_least, at_most}``
-    when the final count lies within it (:func:`pipflow.goalcounts.holds`); GCR is the fraction
-    that does (1.0 for no goal)."""
-    conds = [(s, p, v) for s, items in (goal or {}).items() for p, v in items.items()]
-    if not conds:
-        return True, 1.0
-    ok = sum(1 for s, p, v in conds if holds(int(stock.get(s, {}).get(p, 0)), v))
-    return ok == len(conds), ok / len(conds)
+def goal_check(stock: dict, goal: dict, initial_stock: dict) -> tuple[bool, float]:
+    """(goal met, GCR) of the final ``stock``: every listed goal value must hold, an exact count
+    exactly, a bound ``{at_least, at_most}`` when the final count lies within it
+    (:func:`pipflow.goalcounts.holds`). GCR is :func:`pipflow.metrics.goal_condition_recall`:
+    the share that holds, where counts that already held in ``initial_stock`` count only once
+    the run achieved a count it had to change (1.0 for no goal)."""
+    end = values_met(stock, goal)
+    return all(end), goal_condition_recall(values_met(initial_stock, goal), end)

@@ -1,14 +1,24 @@
-"""Whether a warehouse bench run understood its command: the goal and robot rules it resolved,
-compared with the task's gold (issue 12). A goal is compared as ranges per shelf and product (an
-exact count n is the range n..n, so ``{at_least: n, at_most: n}`` equals n); rules as a set,
-their source ``words`` ignored."""
+"""Whether a warehouse bench run understood its command: the meaning of the goal and robot rules
+it resolved, compared with the task's gold (:mod:`pipflow.meaning` gives the verdict).
+
+Two goals mean the same when they accept exactly the same final stocks the world can reach
+(every unit on some shelf, capacities kept): a goal that lists 0 for the shelves a gathering
+empties equals one that leaves those zeros to conservation, while a count the run states that the
+gold leaves open (0 of a product a shelf never had, when the product could end up there) is a
+different meaning, since it turns away final stocks the gold accepts. The test is exact
+(:func:`pipflow.pddl.feasibility.final_ranges`): the two accept the same stocks exactly when, on
+every cell either goal states, the fewest and the most units a cell can hold under the one equal
+those under the other. Goals that no final stock meets (an infeasible task's gold and a reading
+of it) are compared as written: every impossible goal accepts the same nothing, yet "50" read as
+"500" is still a misreading. Rules are compared by what they forbid (:func:`pipflow.meaning.rules_difference`).
+"""
 from __future__ import annotations
 
-import json
 from typing import Any
 
-from pipflow.taskdomain import REFUSED_KINDS
-from pipflow.goalcounts import limits
+from pipflow.goalcounts import limits, value_problems
+from pipflow.meaning import judge, rules_as_written, rules_difference
+from pipflow.pddl.feasibility import final_ranges
 
 
 def _goal_limits(goal: Any) -> dict | None:
@@ -17,63 +27,75 @@ def _goal_limits(goal: Any) -> dict | None:
     if not isinstance(goal, dict):
         return None
     try:
-        return {place: {item: limits(v) for item, v in items.items()}
-                for place, items in goal.items() if isinstance(items, dict) and items}
-    except (TypeError, ValueError, KeyError):
+        out = {}
+        for place, items in goal.items():
+            if not isinstance(items, dict):
+                return None
+            if items:
+                if any(value_problems(v) for v in items.values()):
+                    return None
+                out[place] = {item: limits(v) for item, v in items.items()}
+        return out
+    except (TypeError, ValueError, KeyError, AttributeError):
         return None
 
 
-def _rule_key(rule: Any) -> str:
-    """A robot rule as a comparable string: its ``words`` ignored, robot lists as sets."""
-    if not isinstance(rule, dict):
-        return json.dumps(rule, sort_keys=True, default=str)
-    r = {k: (sorted(map(str, v)) if k in ("only", "never") and isinstance(v, list) else v)
-         for k, v in rule.items() if k != "words" and v is not None}
-    return json.dumps(r, sort_keys=True, default=str)
+def _show(lim: tuple[int, int | None]) -> str:
+    lo, hi = lim
+    return str(lo) if lo == hi else (f"at least {lo}" if hi is None else f"{lo}..{hi}")
 
 
-def _goal_difference(gold: dict, run: dict) -> str:
-    def show(lim):
-        lo, hi = lim
-        return str(lo) if lo == hi else (f"at least {lo}" if hi is None else f"{lo}..{hi}")
-
+def _as_written(gold: dict, run: dict) -> str:
     out = []
     for place in sorted(set(gold) | set(run)):
         g, r = gold.get(place, {}), run.get(place, {})
         for item in sorted(set(g) | set(r)):
             if g.get(item) != r.get(item):
-                out.append(f"{place} {item}: gold {show(g[item]) if item in g else '(none)'}, "
-                           f"run {show(r[item]) if item in r else '(none)'}")
+                out.append(f"{place} {item}: gold {_show(g[item]) if item in g else '(none)'}, "
+                           f"run {_show(r[item]) if item in r else '(none)'}")
     return "; ".join(out[:4]) + (" ..." if len(out) > 4 else "")
 
 
-def understanding(task: dict, outputs: dict, status: str, error_kind: str | None) -> dict:
-    """Whether a run resolved the task's gold goal and rules. A task whose right answer is a
-    refusal (``feasible: false``, ``expect: refuse``) is understood when the run was refused;
-    any other task when the run's goal equals the gold (values compared as ranges: an exact count
-    or a bound) and its rules equal the gold as a set (``words`` ignored). ``misread``: the run
-    went on to the end (robots moved) with a goal or rules other than the gold."""
-    refused = status == "refused" or error_kind in REFUSED_KINDS
-    executed = status == "succeeded"
-    if task.get("feasible") is False or task.get("expect") == "refuse":
-        return {"understood": refused, "misread": executed,
-                "understanding": "refused, as it should be" if refused else
-                ("executed a command whose right answer is a refusal" if executed else "not refused")}
-    if executed and "goal" not in outputs:
-        return {"understood": None, "misread": None,
-                "understanding": "not measured: the workflow has no output `goal`"}
-    gold_goal, run_goal = _goal_limits(task.get("goal") or {}), _goal_limits(outputs.get("goal"))
-    gold_rules = {_rule_key(r) for r in task.get("constraints") or []}
-    run_rules = {_rule_key(r) for r in outputs.get("constraints") or []}
-    if run_goal is None:
-        return {"understood": False, "misread": False,
-                "understanding": "refused" if refused else "no goal among the run's outputs (it did not finish)"}
-    problems = []
-    if run_goal != gold_goal:
-        problems.append("goal: " + _goal_difference(gold_goal or {}, run_goal))
-    if run_rules != gold_rules:
-        missing, extra = sorted(gold_rules - run_rules), sorted(run_rules - gold_rules)
-        problems.append("rules:" + (f" missing {', '.join(missing)}" if missing else "")
-                        + (f" unexpected {', '.join(extra)}" if extra else ""))
-    return {"understood": not problems, "misread": bool(problems) and executed,
-            "understanding": "; ".join(problems) or "goal and rules as the gold"}
+def _in_world(world: dict, goal: dict) -> bool:
+    return all(place in world["shelves"] and all(item in world["products"] for item in items)
+               for place, items in goal.items())
+
+
+def goal_difference(world: dict | None, gold: Any, run: Any) -> str | None:
+    """None when ``gold`` and ``run`` accept the same final stocks of ``world`` (module
+    docstring); otherwise what differs, in words. Without a world they are compared as written."""
+    g, r = _goal_limits(gold or {}), _goal_limits(run)
+    if g is None or r is None:
+        return f"goal: the run's goal {run!r} is not a goal of counts" if r is None else "goal: the gold is malformed"
+    if g == r:
+        return None
+    if world is None:
+        return "goal: " + _as_written(g, r)
+    if not (_in_world(world, g) and _in_world(world, r)):
+        return "goal: " + _as_written(g, r) + " (a name that is not the world's)"
+    cells = sorted({(s, p) for goal in (g, r) for s, items in goal.items() for p in items})
+    in_gold, in_run = final_ranges(world, gold, cells), final_ranges(world, run, cells)
+    if in_gold is None or in_run is None:
+        if in_gold is None and in_run is None:
+            return "goal: " + _as_written(g, r) + " (no final stock meets either)"
+        return "goal: " + _as_written(g, r) + (" (no final stock meets the run's goal)" if in_run is None
+                                               else " (no final stock meets the gold)")
+    differ = [c for c in cells if in_gold[c] != in_run[c]]
+    if not differ:
+        return None
+    text = [f"{s} {p}: the gold allows {_show(in_gold[s, p])}, the run's goal {_show(in_run[s, p])}"
+            for s, p in differ]
+    return "goal: " + "; ".join(text[:4]) + (" ..." if len(text) > 4 else "")
+
+
+def understanding(task: dict, outputs: dict, status: str, error_kind: str | None, world: dict | None = None,
+                  rule_fields: dict[str, Any] | None = None) -> dict:
+    """The verdict of :func:`pipflow.meaning.judge` for one run of a warehouse task in ``world``
+    (None: goals and rules compared as written); ``rule_fields``: the names each rule field
+    takes (the domain's ``rule_names``)."""
+    if world is None:
+        return judge(task, outputs, status, error_kind, goal_difference=lambda gold, run: goal_difference(None, gold, run),
+                     rule_difference=rules_as_written)
+    return judge(task, outputs, status, error_kind,
+                 goal_difference=lambda gold, run: goal_difference(world, gold, run),
+                 rule_difference=lambda gold, run: rules_difference(gold, run, world["robots"], rule_fields or {}))

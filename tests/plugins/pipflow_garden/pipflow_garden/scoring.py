@@ -12,16 +12,16 @@ from pathlib import Path
 from typing import Any
 
 from pipflow.errors import Diagnostic, WorldError
+from pipflow.meaning import judge, rules_difference
+from pipflow.metrics import travel_costs
 from pipflow.suggest import did_you_mean
 from pipflow.worldfile import parse_mapping, read_world_file
 
-from pipflow_garden.simulation import check_goal, initial_state
+from pipflow_garden.simulation import check_goal, initial_state, recall
 from pipflow_garden.world import load_world
 
 GOAL_KEYS = ("watered", "clear", "stored", "ripe")
 TASK_KEYS = ("id", "command", "goal", "constraints", "feasible", "expect", "construction", "category", "inputs")
-#: how a run ends when the command was refused: infeasible (Refusal) or not understood
-REFUSED_KINDS = ("Refusal", "TranslationError")
 
 
 def broken_rules(constraints: list[dict] | None, graph: dict | None, schedule: dict | None) -> list[str]:
@@ -83,8 +83,7 @@ def score_run(world: dict, goal: dict, *, constraints: list[dict] | None = None,
     base = {"planned": planned, "executed": executed, "refused": bool(refusal), "error": refusal or error or None,
             "makespan": float(sim.get("makespan", 0.0) or 0.0),
             "lower_bound": reference_actions(world, goal or {}) if feasible else None,
-            "tc_max": float(sim.get("tc_max", 0.0)), "tc_avg": float(sim.get("tc_avg", 0.0)),
-            "tc_avg_moved": float(sim.get("tc_avg_moved", 0.0))}
+            **travel_costs(sim.get("travel") or {})}
     if not feasible:
         ok = bool(refusal and str(refusal).strip()) and planned == 0 and executed == 0
         why = [] if ok else ["infeasible command was not refused" if not refusal else "actions were planned"]
@@ -94,13 +93,13 @@ def score_run(world: dict, goal: dict, *, constraints: list[dict] | None = None,
     met, total, unmet = check_goal(state, goal or {})
     if simulation is None:
         why = "refused a feasible command" if refusal else f"run failed: {error}" if error else "no simulation"
-        return {**base, "success": False, "goal_met": False, "gcr": met / total if total else 1.0, "exe": 0.0,
+        return {**base, "success": False, "goal_met": False, "gcr": recall(world, state, goal or {}), "exe": 0.0,
                 "ru": 0.0, "violations": [why]}
     violations = [f"goal: {u}" for u in unmet]
     violations += [f"{f['subtask']} {f['action']} refused: {'; '.join(f['reasons'])}" for f in sim.get("failures") or []]
     violations += [f"{r} jumps {j['metres']:g} m" for r, js in (sim.get("jumps") or {}).items() for j in js]
     violations += broken_rules(constraints, graph, schedule)
-    return {**base, "success": not violations, "goal_met": met == total, "gcr": met / total if total else 1.0,
+    return {**base, "success": not violations, "goal_met": met == total, "gcr": recall(world, state, goal or {}),
             "exe": float(sim.get("exe", 0.0)), "violations": violations,
             "ru": min(1.0, base["lower_bound"] / planned) if planned else float(base["lower_bound"] == 0)}
 
@@ -182,30 +181,14 @@ def canonical_goal(goal: Any) -> str | None:
     return json.dumps(out, sort_keys=True)
 
 
-def rule_key(rule: Any) -> str:
-    """A robot rule as a comparable string: ``words`` ignored, robot lists as sets."""
-    if not isinstance(rule, dict):
-        return json.dumps(rule, sort_keys=True, default=str)
-    return json.dumps({k: sorted(v) if k in ("only", "never") else v for k, v in rule.items() if k != "words"},
-                      sort_keys=True, default=str)
+def understanding(task: dict, outputs: dict, status: str, error_kind: str | None, world: dict | None = None,
+                  rule_fields: dict | None = None) -> dict:
+    """Whether a run read the command as its gold (pipflow's verdict, :func:`pipflow.meaning.judge`):
+    the goal compared as written (bed lists as sets), the rules by what they forbid in ``world``."""
+    def goals(gold: Any, run: Any) -> str | None:
+        a, b = canonical_goal(gold or {}), canonical_goal(run)
+        return None if a == b else f"goal {b}; gold {a}"
 
-
-def understanding(task: dict, outputs: dict, status: str, error_kind: str | None) -> dict:
-    """Whether a run read the command as its gold: the goal and the rules (``words`` ignored)."""
-    refused = status == "refused" or error_kind in REFUSED_KINDS
-    executed = status == "succeeded"
-    if task.get("feasible") is False or task.get("expect") == "refuse":
-        return {"understood": refused, "misread": executed,
-                "understanding": "refused, as it should be" if refused else "not refused"}
-    run = canonical_goal(outputs.get("goal"))
-    if run is None:
-        return {"understood": False, "misread": False,
-                "understanding": "refused" if refused else "no goal among the run's outputs"}
-    same_goal = run == canonical_goal(task.get("goal") or {})
-    same_rules = {rule_key(r) for r in outputs.get("constraints") or []} == \
-        {rule_key(r) for r in task.get("constraints") or []}
-    ok = same_goal and same_rules
-    return {"understood": ok, "misread": not ok and executed,
-            "understanding": "goal and rules as the gold" if ok else
-            f"goal {run}, rules {outputs.get('constraints')}; gold {canonical_goal(task.get('goal'))}, "
-            f"{task.get('constraints')}"}
+    robots = list((world or {}).get("robots") or [])
+    return judge(task, outputs, status, error_kind, goal_difference=goals,
+                 rule_difference=lambda gold, run: rules_difference(gold, run, robots, rule_fields or {}))

@@ -12,7 +12,15 @@ from __future__ import annotations
 import math
 from typing import Any, Callable
 
+from pipflow.metrics import goal_condition_recall, travel_costs
+
 STEP = 0.05  # metres between the points of a path that are checked against footprints
+
+
+def recall(world: dict, state: dict, goal: dict) -> float:
+    """GCR in pipflow's one definition (:func:`pipflow.metrics.goal_condition_recall`)."""
+    return goal_condition_recall([ok for _, ok in condition_values(initial_state(world), goal)],
+                                 [ok for _, ok in condition_values(state, goal)])
 
 
 def initial_state(world: dict) -> dict:
@@ -34,7 +42,12 @@ def holds(value: Any, have: int) -> bool:
 
 def check_goal(state: dict, goal: dict) -> tuple[int, int, list[str]]:
     """(met, total, unmet descriptions) of the goal's conditions in ``state``."""
-    met, unmet = 0, []
+    conditions = condition_values(state, goal)
+    return sum(ok for _, ok in conditions), len(conditions), [words for words, ok in conditions if not ok]
+
+
+def condition_values(state: dict, goal: dict) -> list[tuple[str, bool]]:
+    """Each condition of the goal in ``state``, in the goal's order: (description, holds)."""
     conditions = [(f"{b} watered", b in state["watered"]) for b in goal.get("watered", [])]
     conditions += [(f"{b} clear", b not in state["overgrown"]) for b in goal.get("clear", [])]
     for s, items in (goal.get("stored") or {}).items():
@@ -45,11 +58,7 @@ def check_goal(state: dict, goal: dict) -> tuple[int, int, list[str]]:
         for crop, value in items.items():
             have = state["ripe"].get(b, {}).get(crop, 0)
             conditions.append((f"{b} keeps {value} ripe {crop} (has {have})", holds(value, have)))
-    for words, ok in conditions:
-        met += ok
-        if not ok:
-            unmet.append(words)
-    return met, len(conditions), unmet
+    return conditions
 
 
 def _apply(state: dict, action: str, args: list[str]) -> list[str]:
@@ -137,11 +146,9 @@ def simulate(world: dict, schedule: dict, graph: dict | None, goal: dict | None,
             executed += 1
     planned = len(schedule.get("subtasks", []))
     met, total, unmet = check_goal(state, goal or {})
-    moved = [d for d in travel.values() if d > 0]
     return {"final_state": state, "executed": executed, "failed": len(failures), "failures": failures,
             "exe": executed / planned if planned else 1.0, "travel": {r: round(d, 3) for r, d in travel.items()},
-            "tc_max": max(travel.values(), default=0.0), "tc_avg": sum(travel.values()) / len(travel) if travel else 0.0,
-            "tc_avg_moved": sum(moved) / len(moved) if moved else 0.0,
-            "goal_met": met == total and not failures, "gcr": met / total if total else 1.0,
+            **travel_costs(travel),  # pipflow's one definition of TC-max, TC-avg, the team's mean
+            "goal_met": met == total and not failures, "gcr": recall(world, state, goal or {}),
             "conditions": {"met": met, "total": total, "unmet": unmet}, "jumps": jumps,
             "makespan": float(schedule.get("makespan", 0.0) or 0.0)}
