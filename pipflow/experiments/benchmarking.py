@@ -477,8 +477,6 @@ def bench_main(args: argparse.Namespace) -> int:
         raise UserError(f"--jobs {args.jobs}: expected 1 or more parallel runs (unset: one per CPU)")
     inputs = key_values(args.input or [])
     matrix = parse_matrix(args.matrix)
-    # the servers the user names here may receive provider keys (pipflow.language.llm.user_named)
-    os.environ["PIPFLOW_GIVEN_INPUTS"] = json.dumps([*inputs.values(), *(v for vs in matrix.values() for v in vs)])
     config = BenchConfig(
         tasks_file=tasks_file, workflow=args.workflow, seeds=args.seeds,
         jobs=_workers(args.jobs), out=Path(args.out or f"bench-out/{stamp}"),

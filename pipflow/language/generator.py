@@ -90,6 +90,7 @@ def generate(
     save: Callable[[str, Any], Any] | None = None,
     log: Callable[[str], None] = lambda message: None,
     previous: dict[str, Any] | None = None,
+    named: Callable[[str], bool] | None = None,
 ) -> dict[str, Any]:
     """One generator round; returns the outputs of step ``llm.problem``. ``prompt`` None: the
     world's domain's template (:attr:`pipflow.taskdomain.TaskDomain.default_prompt`).
@@ -98,7 +99,8 @@ def generate(
     ``previous``: the previous round's ``round`` output (it carries the fingerprints of every
     earlier prompt of the loop); when this round's prompt would be the same as an earlier one's,
     the prompt is varied (:func:`pipflow.language.feedback.vary`) and the ``varied`` output says
-    how."""
+    how. ``named(value)``: whether the user gave a value (a server that may receive the provider
+    key: :func:`pipflow.language.llm.key_may_go_to`)."""
     model = resolve_model(model)
     domain = task_domain(world)
     if model == "offline":
@@ -158,7 +160,7 @@ def generate(
             call_model, call_base = ensure_server(model)
         answer = complete(messages, model=call_model, api_base=call_base, timeout=timeout,
                           retries=retries, temperature=temperature_now, max_tokens=max_tokens,
-                          extra=extra, deadline=deadline)
+                          extra=extra, deadline=deadline, named=named)
         text, usage = answer.text, answer.usage
         log(f"llm: {model} answered in {usage['latency_s']} s, {usage.get('total_tokens')} tokens")
     if save is not None:  # the record first: a paid answer is kept even if the cache is not writable
