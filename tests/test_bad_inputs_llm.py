@@ -344,13 +344,11 @@ def test_key_trust_rules():
     assert llm.is_loopback("http://127.0.0.1:8080/v1") and llm.is_loopback("http://localhost/v1")
     assert llm.is_loopback("http://[::1]:9/v1") and not llm.is_loopback("http://10.0.0.5/v1")
     assert llm.key_may_go_to(None)
-    os.environ.pop("PIPFLOW_GIVEN_INPUTS", None)
     assert not llm.key_may_go_to("https://collector.example.com/v1")
-    try:
-        os.environ["PIPFLOW_GIVEN_INPUTS"] = json.dumps(["https://collector.example.com/v1/"])
-        assert llm.key_may_go_to("https://Collector.example.com/v1")
-    finally:
-        os.environ.pop("PIPFLOW_GIVEN_INPUTS")
+    # the engine says which values the user gave (StepContext.named_by_user)
+    given = {"https://collector.example.com/v1/"}
+    assert llm.key_may_go_to("https://collector.example.com/v1/", named=given.__contains__)
+    assert not llm.key_may_go_to("https://other.example.com/v1", named=given.__contains__)
 
 
 # --- the response cache: verified or a miss; --no-cache writes none; unwritable is a warning --

@@ -26,12 +26,16 @@ a lease of a ``distributed.Semaphore`` named ``pipflow-llm-<provider>``; elsewhe
 from __future__ import annotations
 
 import contextlib
+import ctypes
 import hashlib
 import io
 import os
 import shutil
+import signal
+import sys
 import tempfile
 import threading
+import time
 import uuid
 import zipfile
 from dataclasses import dataclass
@@ -39,6 +43,7 @@ from pathlib import Path
 from typing import Any, Callable
 
 from pipflow import llmslot
+from pipflow.engine.interrupts import SIGNALS
 from pipflow.engine.registry import default_registry
 from pipflow.engine.runner import find_workflow, resolve_inputs
 from pipflow.engine.validate import load_workflow
@@ -277,6 +282,30 @@ def parse_backend(text: str | None) -> tuple[str, str | None]:
     return kind, (address.strip() or None)
 
 
+def die_with_parent(parent: int) -> None:
+    """Start-up of a pool worker: end when the bench process ends, however it ends. A worker
+    left behind (parent 1) blocks on its pipe for ever and keeps the caller's stdout open, so a
+    script waiting for the bench's output hangs. On Linux the kernel sends the worker SIGKILL
+    when its parent dies (``PR_SET_PDEATHSIG``); everywhere a watcher thread checks the parent
+    every second. SIGTERM and SIGHUP get their default action back (the bench's own handler was
+    inherited with the fork): an idle worker ends quietly, a running one records its run as
+    interrupted (the engine turns them into an interrupt while a run runs)."""
+    for signum in SIGNALS:
+        signal.signal(signum, signal.SIG_DFL)
+    if sys.platform.startswith("linux"):
+        with contextlib.suppress(OSError, AttributeError):
+            ctypes.CDLL(None, use_errno=True).prctl(1, int(signal.SIGKILL))  # 1: PR_SET_PDEATHSIG
+    if os.getppid() != parent:  # the parent died before the line above took effect
+        os._exit(1)
+    threading.Thread(target=_watch_parent, args=(parent,), name="pipflow-parent-watch", daemon=True).start()
+
+
+def _watch_parent(parent: int) -> None:
+    while os.getppid() == parent:
+        time.sleep(1.0)
+    os._exit(1)
+
+
 class LocalBackend:
     """Today's process pool (``jobs`` processes; 1 runs in this process)."""
 
@@ -293,7 +322,7 @@ class LocalBackend:
             for spec in specs:
                 on_row(run_one(spec))
             return
-        pool = cf.ProcessPoolExecutor(max_workers=self.jobs)
+        pool = cf.ProcessPoolExecutor(max_workers=self.jobs, initializer=die_with_parent, initargs=(os.getpid(),))
         try:
             futures = {pool.submit(run_one, spec): spec for spec in specs}
             for fut in cf.as_completed(futures):
@@ -302,6 +331,13 @@ class LocalBackend:
                 except Exception as err:  # a worker process died (BrokenProcessPool) or similar
                     row = lost_row(futures[fut], f"{type(err).__name__}: {err}")
                 on_row(row)
+        except BaseException:
+            # stopped (Ctrl-C, SIGTERM, a user error in a row): the runs still going are told to
+            # stop (their records say interrupted) instead of being waited for to the end
+            for worker in list((getattr(pool, "_processes", None) or {}).values()):
+                with contextlib.suppress(OSError, ValueError):
+                    worker.terminate()
+            raise
         finally:
             pool.shutdown(wait=True, cancel_futures=True)
 
