@@ -68,6 +68,8 @@ class Executor:
         # through a workflow's values (validation refuses ${env.SOME_KEY}; this is the second line)
         self._env = {name: os.environ[name] for name in workflow.env if name in os.environ and not looks_secret(name)}
         self.provenance = provenance if provenance is not None else Provenance(open=True)
+        # the folders of the workflow file and of those it extends: files there are the workflow's own
+        self._folders = tuple(dict.fromkeys(Path(f).resolve().parent for f in (workflow.files or [workflow.file])))
         self._lock = threading.Lock()
 
     # -- public --------------------------------------------------------------------------
@@ -275,7 +277,8 @@ class Executor:
                         f"step {spec.id!r} ({spec.uses}): argument {name!r}: {value} is {special}, not an "
                         "ordinary file (a step would read it without end or block on it)"), spec.id)
                 try:  # a path the workflow names lies where the workflow lives, or the user named it
-                    self.provenance.check(value, [base, spec.base_dir], f"step {spec.id!r} ({spec.uses}): argument {name!r}")
+                    self.provenance.check(value, [base, spec.base_dir, *self._folders],
+                                          f"step {spec.id!r} ({spec.uses}): argument {name!r}")
                 except InputError as err:
                     raise self._located(err, spec.id)
             args[name] = value
@@ -302,7 +305,7 @@ class Executor:
                               use_cache=self.options.use_cache,
                               warn=lambda m: self.store.event("warning", spec.id, message=m),
                               record_root=self.store.root, provenance=self.provenance,
-                              own_folders=(spec.base_dir, *(spec.arg_base(a) for a in spec.args)))
+                              own_folders=(spec.base_dir, *(spec.arg_base(a) for a in spec.args), *self._folders))
             try:
                 outputs = self._call(spec, step, ctx, args)
                 if ctx.metrics:

@@ -5,8 +5,8 @@ gives (``-i``, ``--inputs``, keyword arguments of ``pipflow.run``, a bench's ``-
 task file) are the user's own choices. So a file that only the workflow file names (an input's
 default, a step argument) is read only from where that workflow lives:
 
-- inside the folder of the workflow file that names it (not in a hidden sub-folder: a workflow
-  saved into a home folder must not read ``~/.ssh``),
+- inside the folder of the workflow file that names it, or of a file of its ``extends`` chain
+  (not in a hidden sub-folder: a workflow saved into a home folder must not read ``~/.ssh``),
 - inside pipflow's built-in data (workflows, prompts, domains, benchmarks, schemas), or
 - inside the package folder of an installed pipflow plugin (its workflows name its own data);
 

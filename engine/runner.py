@@ -164,7 +164,6 @@ def resume_run(run_dir: str | Path, options: RunOptions | None = None, registry:
         completed = _completed_nodes(wf, store)
         store.reserve()
         store.update_run(status="running", resumed=utc_now(), error=None, error_step=None, pid=os.getpid())
-        store.event("resume", reused=sorted(completed), damaged_events=store.damaged_events or None)
     except DiskError as err:
         store.close()
         raise DiskError(f"{err}; the run was not resumed (free some space and resume it again)",
@@ -172,6 +171,16 @@ def resume_run(run_dir: str | Path, options: RunOptions | None = None, registry:
     except BaseException:
         store.close()
         raise
+    try:
+        store.event("resume", reused=sorted(completed), damaged_events=store.damaged_events or None)
+    except UserError as err:  # the event log cannot be written (a link, a full disk): the record says so
+        result = RunResult(run_dir=store.root, status="failed", error=str(err), exception=err)
+        store.release_reserve()
+        try:
+            store.update_run(status="failed", finished=utc_now(), error=str(err))
+        finally:
+            store.close()
+        return result
     return _execute(wf, store, values, options or RunOptions(), registry, completed, provenance=provenance)
 
 

@@ -42,6 +42,7 @@ class Server:
         self.script = script
         self.requests: list[dict] = []
         self.auth: list[str | None] = []
+        self.paths: list[str] = []
         server = self
 
         class Handler(BaseHTTPRequestHandler):
@@ -55,6 +56,7 @@ class Server:
                 body = self.rfile.read(int(self.headers.get("Content-Length") or 0))
                 server.requests.append(json.loads(body or b"{}"))
                 server.auth.append(self.headers.get("Authorization"))
+                server.paths.append(self.path)
                 entry = server.script[min(len(server.requests), len(server.script)) - 1]
                 entry = {"text": entry} if isinstance(entry, str) else entry
                 time.sleep(entry.get("delay", 0))

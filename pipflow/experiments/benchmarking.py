@@ -23,6 +23,7 @@ the gold (``misread``, the worst failure: robots would move).
 from __future__ import annotations
 
 import argparse
+import contextlib
 import csv
 import datetime as _dt
 import hashlib
@@ -292,6 +293,8 @@ def run_bench(config: BenchConfig, progress: bool = True, on_row=None) -> dict:
         _write(out, rows, results)
         return results
     finally:
+        with contextlib.suppress(OSError):
+            (out / RUNNING).rmdir()  # only when empty: every run's record moved to records/
         lock.release()
 
 

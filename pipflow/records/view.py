@@ -218,7 +218,8 @@ class ViewServer:
                             return self._error(404, "no such record")
                         page = d / "report.html"
                         marker = d / ("results.json" if (d / "results.json").is_file() else "run.json")
-                        if not page.is_file() or (marker.is_file() and marker.stat().st_mtime > page.stat().st_mtime):
+                        if page.is_symlink() or not page.is_file() or \
+                                (marker.is_file() and marker.stat().st_mtime > page.stat().st_mtime):
                             try:
                                 write_report(d)
                             except UserError as err:  # a link in the record, a read-only or full disk
