@@ -214,6 +214,12 @@ class Executor:
 
     # -- one step ------------------------------------------------------------------------
     def _run_step(self, spec: StepSpec, ns: dict, iteration: tuple[str, int] | None = None) -> dict:
+        try:
+            return self._step_and_record(spec, ns, iteration)
+        except UserError as err:  # a record write of this step (a full disk, a link) names the step too
+            raise self._located(err, spec.id)
+
+    def _step_and_record(self, spec: StepSpec, ns: dict, iteration: tuple[str, int] | None) -> dict:
         step = self.registry.get(spec.uses)
         assert step is not None, spec.uses  # validation guarantees it
         label = {"iteration": iteration[1]} if iteration else {}
