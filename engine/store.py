@@ -349,8 +349,8 @@ def shown_status(run_dir: Path, info: dict) -> str:
 def stale_note(run_dir: Path, info: dict) -> str:
     """Why a stale record is stale, in words, for ``show`` and the listings."""
     pid = info.get("pid")
-    return (f"the process that ran it{f' (pid {pid})' if pid else ''} ended without recording how the run ended "
-            f"(killed?); `pipflow resume {run_dir.name}` continues it")
+    return (f"its process{f' (pid {pid})' if pid else ''} is gone, the end unrecorded (killed?); "
+            f"`pipflow resume` continues it")
 
 
 def list_runs(runs_dir: Path) -> list[Path]:
