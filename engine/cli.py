@@ -1,7 +1,8 @@
 """The ``pipflow`` command.
 
 Exit codes: 0 success; 1 a step failed; 2 a user error (invalid workflow or world file, bad
-input, unknown run); 3 the command was refused as infeasible; 130 interrupted.
+input, unknown run, a full or read-only disk); 3 the command was refused as infeasible; 130
+interrupted (128 + N for signal N: SIGTERM 143, SIGHUP 129).
 ``-v`` adds tracebacks and step logs; ``-q`` prints only errors and the result.
 """
 from __future__ import annotations
@@ -27,7 +28,7 @@ from .interrupts import Interrupted, exit_code
 from .store import (STALE, DamagedRecord, RunStore, find_run, list_runs, read_json, redact, register_secrets,
                     shown_status, stale_note)
 
-EXIT_INTERRUPTED = 130
+EXIT_INTERRUPTED = 130  # Ctrl-C; other signals: interrupts.exit_code
 
 
 _warned_plugins = False

@@ -13,8 +13,12 @@ keeps everything done before the failure.
 Guarantees: every record file has one mode (what ``open`` gives under the user's umask, also for
 files written atomically); values of environment variables whose names look like keys, tokens or
 passwords never reach a record or a log line (:func:`redact`); one process at a time writes a
-run directory (an ``fcntl`` lock; a second writer is refused); a damaged ``run.json`` or a torn
-line of ``events.jsonl`` is reported and skipped by the readers, never a traceback.
+run directory (an ``fcntl`` lock: :mod:`.locks`; a second writer is refused, and a record that
+says "running" while nobody holds its lock is shown as stale); no write follows a link inside the
+run's folder and a full or read-only disk is a user error (:mod:`.writes`); ``run.json`` is
+written first and space is kept in reserve, so a run that fills the disk still records how it
+ended; a damaged ``run.json`` or a torn line of ``events.jsonl`` is reported and skipped by the
+readers, never a traceback.
 """
 from __future__ import annotations
 
