@@ -54,7 +54,7 @@ def _none_outputs(step: Step | None) -> dict:
 class Executor:
     def __init__(self, workflow: Workflow, registry: Registry, store: RunStore, inputs: dict,
                  options: RunOptions, completed: dict[str, dict] | None = None,
-                 provenance: Provenance | None = None):
+                 provenance: Provenance | None = None, files: list | None = None):
         self.wf = workflow
         self.registry = registry
         self.store = store
@@ -68,8 +68,9 @@ class Executor:
         # through a workflow's values (validation refuses ${env.SOME_KEY}; this is the second line)
         self._env = {name: os.environ[name] for name in workflow.env if name in os.environ and not looks_secret(name)}
         self.provenance = provenance if provenance is not None else Provenance(open=True)
-        # the folders of the workflow file and of those it extends: files there are the workflow's own
-        self._folders = tuple(dict.fromkeys(Path(f).resolve().parent for f in (workflow.files or [workflow.file])))
+        # the folders of the workflow file and of those it extends (``files``: as the run recorded
+        # them, for a resume from the snapshot): files there are the workflow's own
+        self._folders = tuple(dict.fromkeys(Path(f).resolve().parent for f in (files or workflow.files or [workflow.file])))
         self._lock = threading.Lock()
 
     # -- public --------------------------------------------------------------------------

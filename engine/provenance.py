@@ -6,7 +6,10 @@ task file) are the user's own choices. So a file that only the workflow file nam
 default, a step argument) is read only from where that workflow lives:
 
 - inside the folder of the workflow file that names it, or of a file of its ``extends`` chain
-  (not in a hidden sub-folder: a workflow saved into a home folder must not read ``~/.ssh``),
+  (not in a hidden sub-folder: a workflow saved into a home folder must not read ``~/.ssh``);
+  a workflow inside a Python package (``pkg/workflows/x.yaml`` with ``pkg/__init__.py``) owns the
+  whole package, as its ``../data/world.yaml`` shows (a download cannot make the folder it is
+  unpacked into a package: that takes an ``__init__.py`` above it),
 - inside pipflow's built-in data (workflows, prompts, domains, benchmarks, schemas), or
 - inside the package folder of an installed pipflow plugin (its workflows name its own data);
 
@@ -35,16 +38,24 @@ PLUGIN_GROUPS = ("pipflow.steps", "pipflow.task_domains", "pipflow.commands")
 
 
 @functools.lru_cache(maxsize=1)
-def builtin_roots() -> tuple[str, ...]:
-    """pipflow's data folders and the package folders of installed plugins (real paths)."""
+def data_roots() -> tuple[str, ...]:
+    """pipflow's data folders (real paths)."""
     roots: set[str] = set()
     for name in DATA_FOLDERS:
         try:
             roots.add(os.path.realpath(data_dir(name)))
         except FileNotFoundError:
             continue
-    from importlib.metadata import entry_points
+    return tuple(sorted(roots))
 
+
+@functools.lru_cache(maxsize=1)
+def plugin_roots() -> tuple[str, ...]:
+    """The package folders of installed pipflow plugins (real paths; asked only when a path is
+    not inside anything cheaper to check: reading the entry points costs a few ms)."""
+    from importlib.metadata import entry_points  # deferred: scans every installed distribution
+
+    roots: set[str] = set()
     for group in PLUGIN_GROUPS:
         for ep in entry_points(group=group):
             top = ep.value.split(":")[0].split(".")[0].strip()
@@ -55,6 +66,15 @@ def builtin_roots() -> tuple[str, ...]:
             for folder in (spec.submodule_search_locations or []) if spec else []:
                 roots.add(os.path.realpath(folder))
     return tuple(sorted(roots))
+
+
+def package_root(folder: str) -> str:
+    """``folder``, or the outermost Python package above it when its parent is one (a folder
+    with ``__init__.py``): the folder a workflow shipped in a package owns."""
+    root = folder
+    while os.path.isfile(os.path.join(os.path.dirname(root), "__init__.py")) and os.path.dirname(root) != root:
+        root = os.path.dirname(root)
+    return root
 
 
 def _inside(path: str, root: str) -> bool:
@@ -130,15 +150,17 @@ def _texts(value: Any) -> list[str]:
 def outside(path: str | os.PathLike, own: Iterable[str | os.PathLike], roots: Iterable[str] = ()) -> str | None:
     """Why a workflow may not read ``path`` on its own (None when it may)."""
     real = os.path.realpath(os.path.expanduser(str(path)))
-    if any(_inside(real, r) for r in (*builtin_roots(), *roots)):
+    if any(_inside(real, r) for r in (*data_roots(), *roots)):
         return None
-    folders = [os.path.realpath(f) for f in own]
+    folders = list(dict.fromkeys(package_root(os.path.realpath(f)) for f in own))
     for folder in folders:
         if _inside(real, folder):
             if _hidden_below(real, folder):
                 return (f"{real} is in a hidden folder or file inside the workflow's folder {folder}; a workflow reads "
                         "hidden files only when you name them (give the path yourself, e.g. with -i)")
             return None
+    if any(_inside(real, r) for r in plugin_roots()):
+        return None
     shown = folders[0] if folders else "?"
     via = f" ({path} leads there through a link)" if os.path.abspath(os.path.expanduser(str(path))) != real else ""
     return (f"{real}{via} is outside the workflow's folder {shown} and pipflow's built-in data; a workflow file reads "

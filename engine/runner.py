@@ -21,9 +21,9 @@ from .model import Workflow
 from .provenance import Provenance, outside
 from .registry import Registry, default_registry
 from .store import DamagedRecord, RunStore, looks_secret, read_json, utc_now
-from .writes import DiskError
 from .types import coerce_text, type_matches
 from .validate import check_given_values, load_workflow
+from .writes import DiskError
 
 
 @dataclass
@@ -123,7 +123,8 @@ def run_workflow(workflow: str | Path, inputs: dict[str, Any] | None = None, *, 
     store = RunStore.create(Path(runs_dir), wf.name)
     try:  # run.json first: a record is never without it (runs, show and resume look for it)
         store.update_run(workflow=str(wf.file), name=wf.name, status="running", started=utc_now(),
-                         inputs=values, pid=os.getpid(), path_bases=wf.path_bases(), given=provenance.to_json())
+                         inputs=values, pid=os.getpid(), path_bases=wf.path_bases(), given=provenance.to_json(),
+                         workflow_files=[str(f) for f in (wf.files or [wf.file])])
         store.reserve()
         store.write_snapshot(wf.snapshot(), values)
     except DiskError as err:  # full from the start: no record that could be resumed is left behind
@@ -181,7 +182,10 @@ def resume_run(run_dir: str | Path, options: RunOptions | None = None, registry:
         finally:
             store.close()
         return result
-    return _execute(wf, store, values, options or RunOptions(), registry, completed, provenance=provenance)
+    files = info.get("workflow_files")
+    files = [f for f in files if isinstance(f, str)] if isinstance(files, list) else None
+    return _execute(wf, store, values, options or RunOptions(), registry, completed, provenance=provenance,
+                    files=files)
 
 
 def _snapshot_workflow(store: RunStore, info: dict, registry: Registry) -> Workflow:
@@ -238,8 +242,8 @@ def _completed_nodes(wf: Workflow, store: RunStore) -> dict[str, dict]:
 
 
 def _execute(wf: Workflow, store: RunStore, values: dict, options: RunOptions, registry: Registry,
-             completed: dict | None, provenance: Provenance) -> RunResult:
-    executor = Executor(wf, registry, store, values, options, completed, provenance=provenance)
+             completed: dict | None, provenance: Provenance, files: list | None = None) -> RunResult:
+    executor = Executor(wf, registry, store, values, options, completed, provenance=provenance, files=files)
     started = time.perf_counter()
     result = RunResult(run_dir=store.root, status="running")
     store.listener = options.on_event

@@ -38,7 +38,7 @@ import yaml
 from pipflow.errors import UserError
 
 from .locks import FolderLock, writer_alive
-from .writes import FILE_MODE, AppendLog, DiskError, disk_error, make_dirs, write_file  # noqa: F401  (FILE_MODE: the records' one mode)
+from .writes import FILE_MODE, AppendLog, DiskError, disk_error, write_file  # noqa: F401  (FILE_MODE, DiskError: re-exported)
 
 
 # -- secrets ---------------------------------------------------------------------------------

@@ -32,6 +32,7 @@ import io
 import os
 import shutil
 import signal
+import stat
 import sys
 import tempfile
 import threading
@@ -174,13 +175,35 @@ def build_bundle(workflow_ref: str, inputs: dict[str, Any]) -> Bundle:
                   path_inputs={k: v.relative_to(root).as_posix() for k, v in targets.items()}, digest=digest)
 
 
+def _bundles_folder() -> Path:
+    """This user's folder of bundles in the temp folder, private (0700): a bundle found there is
+    run as it is, so a folder another account could write into (``/tmp`` is shared) is never
+    used; without a private one, a fresh folder of this process's serves."""
+    uid = os.getuid() if hasattr(os, "getuid") else 0
+    base = Path(tempfile.gettempdir()) / f"pipflow-bundles-{uid}"
+    try:
+        base.mkdir(mode=0o700, exist_ok=True)
+        info = os.lstat(base)
+        if stat.S_ISDIR(info.st_mode) and info.st_uid == uid and not info.st_mode & 0o077:
+            return base
+    except OSError:
+        pass
+    global _PRIVATE_BUNDLES
+    if _PRIVATE_BUNDLES is None:
+        _PRIVATE_BUNDLES = Path(tempfile.mkdtemp(prefix="pipflow-bundles-"))
+    return _PRIVATE_BUNDLES
+
+
+_PRIVATE_BUNDLES: Path | None = None
+
+
 def materialize(bundle_files: dict[str, str], digest: str) -> Path:
-    """Write a bundle under this machine's temp folder once (keyed by its hash); return the root."""
-    base = Path(tempfile.gettempdir()) / "pipflow-bundles"
+    """Write a bundle under this user's private bundle folder once (keyed by its hash); return
+    the root."""
+    base = _bundles_folder()
     root = base / digest
     if (root / ".complete").exists():
         return root
-    base.mkdir(parents=True, exist_ok=True)
     staging = Path(tempfile.mkdtemp(dir=base, prefix=f".{digest}."))
     for rel, text in bundle_files.items():
         target = staging / rel

@@ -219,9 +219,13 @@ class _LarkUnpickler(pickle.Unpickler):
             return _import_regex_module
         if (module, name) in _ALLOWED_FUNCTIONS:
             return super().find_class(module, name)
-        if _LARK_MODULE.match(module) or module == __name__:
+        if _LARK_MODULE.match(module):
             found = super().find_class(module, name)
-            if isinstance(found, type) and (module != __name__ or issubclass(found, Lexer)):
+            if isinstance(found, type):
+                return found
+        elif module in sys.modules:  # a lexer class of the caller's (already imported: nothing is imported here)
+            found = getattr(sys.modules[module], name, None)
+            if isinstance(found, type) and issubclass(found, Lexer):
                 return found
         raise pickle.UnpicklingError(f"a stored parser may not name {module}.{name}")
 
