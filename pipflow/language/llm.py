@@ -115,8 +115,9 @@ def check_no_secrets(model: str, messages: list[dict[str, str]], api_base: str |
     (a workflow that wrote ``${env.OPENAI_API_KEY}`` into a command, a prompt file holding a
     token). The record would show ``[redacted NAME]``, so the user could not even see it leave."""
     register_secrets()
+    sent = {k: v for k, v in (extra or {}).items() if k != "mock_response"}  # litellm's canned answer stays here
     where = [("the prompt", json.dumps(messages, ensure_ascii=False)), ("the server address", api_base or ""),
-             ("the request's fields", json.dumps(extra or {}, default=str, ensure_ascii=False))]
+             ("the request's fields", json.dumps(sent, default=str, ensure_ascii=False))]
     for part, text in where:
         names = secrets_in(text)
         if names:
