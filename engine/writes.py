@@ -239,9 +239,8 @@ def write_file(path: str | os.PathLike, data: bytes, root: str | os.PathLike | N
     root = Path(root) if root is not None else None
     with writing(path), _parent(path, root) as dir_fd:
         _refuse_link_or_folder(path, dir_fd, path.name, root)
-        tmp = _create_temporary(dir_fd, path.name, mode)
+        tmp, fd = _create_temporary(dir_fd, path.name, mode)
         try:
-            fd = os.open(tmp, os.O_WRONLY | _NOFOLLOW | _CLOEXEC, dir_fd=dir_fd)
             try:
                 view = memoryview(data)
                 while view:
@@ -259,21 +258,19 @@ def write_file(path: str | os.PathLike, data: bytes, root: str | os.PathLike | N
 _PID = os.getpid()
 
 
-def _create_temporary(dir_fd: int, name: str, mode: int) -> str:
-    """A new, empty file ``.NAME.PID.N`` in the folder, created exclusively (``O_EXCL`` never
-    follows a link) with ``mode`` by ``open`` itself: one system call, where ``mkstemp`` +
-    ``fchmod`` take more (a record is written per step, and on a busy disk each call counts)."""
+def _create_temporary(dir_fd: int, name: str, mode: int) -> tuple[str, int]:
+    """A new, empty file ``.NAME.PID.N`` in the folder, open for writing, created exclusively
+    (``O_EXCL`` never follows a link) with ``mode`` by ``open`` itself: one system call, where
+    ``mkstemp`` + ``fchmod`` take more (a record is written per step, and each call counts)."""
     flags = os.O_WRONLY | os.O_CREAT | os.O_EXCL | _NOFOLLOW | _CLOEXEC
     for _ in range(100):
         tmp = f".{name}.{_PID}.{next(_temporaries)}"
         try:
-            os.close(os.open(tmp, flags, mode, dir_fd=dir_fd))
-            return tmp
+            return tmp, os.open(tmp, flags, mode, dir_fd=dir_fd)
         except FileExistsError:  # left by a killed process, or a forked child with the same counter
             continue
     tmp = f".{name}.{uuid.uuid4().hex}"
-    os.close(os.open(tmp, flags, mode, dir_fd=dir_fd))
-    return tmp
+    return tmp, os.open(tmp, flags, mode, dir_fd=dir_fd)
 
 
 class AppendLog:
