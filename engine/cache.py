@@ -25,6 +25,7 @@ from typing import Any, Iterable
 from pipflow.errors import UserError
 
 from .store import atomic_write
+from .writes import write_file
 
 
 def default_cache_dir() -> Path:
@@ -141,23 +142,46 @@ class StepCache:
 
     # -- read ----------------------------------------------------------------------------
     def get(self, key: str, artifact_dir: Path, expected: Iterable[str] = (),
-            problems: list[str] | None = None) -> dict | None:
-        """The outputs stored under ``key`` (and its artifacts copied into ``artifact_dir``), or
-        ``None``. An entry that does not verify is removed, and why is added to ``problems``."""
+            problems: list[str] | None = None, root: Path | None = None) -> dict | None:
+        """The outputs stored under ``key`` (and its artifacts copied into ``artifact_dir``, below
+        the record ``root`` without following a link), or ``None``. An entry that does not verify
+        is removed, and why is added to ``problems``; a link at an entry's place (or its shard's)
+        is no entry: the link itself is removed, never what it points to."""
         entry = self._entry(key)
+        link = next((p for p in (entry.parent, entry) if p.is_symlink()), None)
+        if link is not None:
+            self._drop_link(link, problems)
+            return None
         if not entry.is_dir():
             return None
         try:
             outputs = self._verified(entry, key, set(expected))
         except (OSError, ValueError, KeyError, TypeError) as err:
-            if self._is_marked():  # remove only from a folder that is pipflow's
+            removed = self._is_marked()  # remove only from a folder that is pipflow's
+            if removed:
                 shutil.rmtree(entry, ignore_errors=True)
+                removed = not entry.exists()
             if problems is not None:
-                problems.append(f"cache entry {entry} did not verify and was removed ({err})")
+                problems.append(f"cache entry {entry} did not verify and was {'removed' if removed else 'left in place'} ({err})")
             return None
-        if (entry / "artifacts").is_dir():
-            shutil.copytree(entry / "artifacts", artifact_dir, dirs_exist_ok=True)
+        for name, path in _artifact_files(entry / "artifacts").items():
+            write_file(artifact_dir / name, path.read_bytes(), root=root)
         return outputs
+
+    def _drop_link(self, link: Path, problems: list[str] | None) -> None:
+        """A symbolic link where pipflow keeps an entry (or a shard of entries): not pipflow's
+        entry, and never followed. In pipflow's marked folder the link itself is removed (what it
+        points to stays); elsewhere it is left, and said so once per run by the caller."""
+        removed = False
+        if self._is_marked():
+            try:
+                os.unlink(link)
+                removed = True
+            except OSError:
+                removed = False
+        if problems is not None:
+            problems.append(f"cache entry {link} is a symbolic link, not an entry pipflow wrote; it was "
+                            + ("removed (what it points to is untouched)" if removed else "not used, and left in place"))
 
     def _verified(self, entry: Path, key: str, expected: set[str]) -> dict:
         manifest = json.loads((entry / "manifest.json").read_text(encoding="utf-8"))
@@ -187,6 +211,9 @@ class StepCache:
         Raises OSError (cannot write) or :class:`CacheRefused`; callers turn both into a warning."""
         self._claim_root()
         entry = self._entry(key)
+        if entry.parent.is_symlink() or entry.is_symlink():
+            raise CacheRefused(f"{entry if entry.is_symlink() else entry.parent} is a symbolic link in the cache "
+                               "folder; pipflow writes no cache entry through it")
         tmp = self.root / key[:2] / f".tmp-{key}-{uuid.uuid4().hex[:8]}"
         try:
             tmp.mkdir(parents=True)

@@ -1,7 +1,8 @@
 """The ``pipflow`` command.
 
 Exit codes: 0 success; 1 a step failed; 2 a user error (invalid workflow or world file, bad
-input, unknown run); 3 the command was refused as infeasible; 130 interrupted.
+input, unknown run, a full or read-only disk); 3 the command was refused as infeasible; 130
+interrupted (128 + N for signal N: SIGTERM 143, SIGHUP 129).
 ``-v`` adds tracebacks and step logs; ``-q`` prints only errors and the result.
 """
 from __future__ import annotations
@@ -23,9 +24,11 @@ from .cliargs import key_values, positive_int
 from .progress import LiveProgress, PlainProgress
 from .registry import default_registry
 from .source import load_yaml, plain
-from .store import DamagedRecord, RunStore, find_run, list_runs, read_json, redact, register_secrets
+from .interrupts import Interrupted, exit_code
+from .store import (STALE, DamagedRecord, RunStore, find_run, list_runs, read_json, redact, register_secrets,
+                    shown_status, stale_note)
 
-EXIT_INTERRUPTED = 130
+EXIT_INTERRUPTED = 130  # Ctrl-C; other signals: interrupts.exit_code
 
 
 _warned_plugins = False
@@ -64,9 +67,6 @@ def _inputs(args: argparse.Namespace) -> tuple[dict, bool]:
         # typed YAML values and text values mix: render the YAML ones as text so all coerce alike
         values = {k: (v if isinstance(v, str) else yaml.safe_dump(v, default_flow_style=True).strip()) for k, v in values.items()}
         values.update(text_values)
-    # the values the user gave, for a step that must tell them from a workflow file's defaults
-    # (a provider key goes only to a server the user named: pipflow.language.llm.user_named)
-    os.environ["PIPFLOW_GIVEN_INPUTS"] = json.dumps([v for v in values.values() if isinstance(v, str)])
     return values, from_text
 
 
@@ -231,7 +231,10 @@ def _run_infos(runs_dir: Path) -> list[tuple[Path, dict]]:
             info = read_json(run / "run.json", None)
         except DamagedRecord as err:
             info = {"status": "damaged", "error": str(err)}
-        out.append((run, info if isinstance(info, dict) else {"status": "damaged", "error": "run.json unreadable"}))
+        info = info if isinstance(info, dict) else {"status": "damaged", "error": "run.json unreadable"}
+        if shown_status(run, info) == STALE:  # its process died without saying how the run ended
+            info = {**info, "status": STALE, "error": info.get("error") or stale_note(run, info)}
+        out.append((run, info))
     # newest first by start time (names have one-second resolution: two runs of one second tie)
     return sorted(out, key=lambda ri: (str(ri[1].get("started") or ""), ri[0].name), reverse=True)
 
@@ -254,6 +257,8 @@ def _find_run(ref: str, runs_dir: Path) -> Path:
 
 
 def cmd_runs(args: argparse.Namespace) -> int:
+    if Path(args.runs_dir).exists() and not Path(args.runs_dir).is_dir():
+        raise UserError(f"--runs-dir {args.runs_dir}: a file, not a folder of runs")
     infos = _run_infos(Path(args.runs_dir))
     if args.workflow:
         infos = [(r, i) for r, i in infos if args.workflow in (i.get("name"), Path(str(i.get("workflow", ""))).stem)]
@@ -262,7 +267,8 @@ def cmd_runs(args: argparse.Namespace) -> int:
     if args.since:
         infos = [(r, i) for r, i in infos if str(i.get("started") or r.name) >= args.since]
     if not infos:
-        print(f"no runs in {args.runs_dir}" + (" that match" if args.workflow or args.status or args.since else ""))
+        missing = "" if Path(args.runs_dir).is_dir() else " (no such folder)"
+        print(f"no runs in {args.runs_dir}{missing}" + (" that match" if args.workflow or args.status or args.since else ""))
         return 0
     for run, info in infos[: args.limit]:
         secs = info.get("seconds") if isinstance(info.get("seconds"), (int, float)) else None
@@ -280,6 +286,8 @@ def cmd_show(args: argparse.Namespace) -> int:
         info = {}
         problems.append(str(err))
     print(f"run       {store.root}")
+    if shown_status(store.root, info) == STALE:
+        info = {**info, "status": STALE, "error": info.get("error") or stale_note(store.root, info)}
     for key in ("name", "workflow", "status", "started", "finished", "seconds", "error_step", "error"):
         if info.get(key) not in (None, ""):
             print(f"{key:<9} {info[key]}")
@@ -424,9 +432,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = parser.parse_args(argv)
     try:
         return args.func(args)
-    except KeyboardInterrupt:
-        print("interrupted", file=sys.stderr)
-        return EXIT_INTERRUPTED
+    except KeyboardInterrupt as err:
+        print(f"interrupted by {err.name}" if isinstance(err, Interrupted) else "interrupted", file=sys.stderr)
+        return exit_code(err)
     except BrokenPipeError:  # `pipflow show RUN | head`: the reader left, nothing is wrong
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0

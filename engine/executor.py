@@ -24,7 +24,8 @@ from .expr import ExpressionError, resolve, truthy
 from .model import LoopSpec, StepSpec, Workflow
 from .registry import Registry
 from .step import Step, StepContext, check_outputs
-from .store import RunStore, write_json
+from .provenance import Provenance
+from .store import RunStore, looks_secret
 from .types import type_matches
 from .validate import dependency_graph
 
@@ -52,7 +53,8 @@ def _none_outputs(step: Step | None) -> dict:
 
 class Executor:
     def __init__(self, workflow: Workflow, registry: Registry, store: RunStore, inputs: dict,
-                 options: RunOptions, completed: dict[str, dict] | None = None):
+                 options: RunOptions, completed: dict[str, dict] | None = None,
+                 provenance: Provenance | None = None, files: list | None = None):
         self.wf = workflow
         self.registry = registry
         self.store = store
@@ -62,7 +64,13 @@ class Executor:
         self._cache_writable = True
         self.state = ExecutionState()
         self.state.outputs.update(completed or {})
-        self._env = {name: os.environ[name] for name in workflow.env if name in os.environ}  # declared only
+        # declared only, and never a key: keys go to their providers from the environment, not
+        # through a workflow's values (validation refuses ${env.SOME_KEY}; this is the second line)
+        self._env = {name: os.environ[name] for name in workflow.env if name in os.environ and not looks_secret(name)}
+        self.provenance = provenance if provenance is not None else Provenance(open=True)
+        # the folders of the workflow file and of those it extends (``files``: as the run recorded
+        # them, for a resume from the snapshot): files there are the workflow's own
+        self._folders = tuple(dict.fromkeys(Path(f).resolve().parent for f in (files or workflow.files or [workflow.file])))
         self._lock = threading.Lock()
 
     # -- public --------------------------------------------------------------------------
@@ -207,6 +215,12 @@ class Executor:
 
     # -- one step ------------------------------------------------------------------------
     def _run_step(self, spec: StepSpec, ns: dict, iteration: tuple[str, int] | None = None) -> dict:
+        try:
+            return self._step_and_record(spec, ns, iteration)
+        except UserError as err:  # a record write of this step (a full disk, a link) names the step too
+            raise self._located(err, spec.id)
+
+    def _step_and_record(self, spec: StepSpec, ns: dict, iteration: tuple[str, int] | None) -> dict:
         step = self.registry.get(spec.uses)
         assert step is not None, spec.uses  # validation guarantees it
         label = {"iteration": iteration[1]} if iteration else {}
@@ -223,7 +237,7 @@ class Executor:
         use_cache = self.cache is not None and (spec.cache if spec.cache is not None else step.cacheable)
         key = cache_key(step.name, step.version, args, step.module) if use_cache else None
         problems: list[str] = []
-        outputs = self.cache.get(key, artifact_dir, step.outputs, problems) if key else None
+        outputs = self.cache.get(key, artifact_dir, step.outputs, problems, root=self.store.root) if key else None
         for problem in problems:
             self.store.event("warning", spec.id, message=problem)
         cached = outputs is not None
@@ -269,6 +283,11 @@ class Executor:
                     raise self._located(InputError(
                         f"step {spec.id!r} ({spec.uses}): argument {name!r}: {value} is {special}, not an "
                         "ordinary file (a step would read it without end or block on it)"), spec.id)
+                try:  # a path the workflow names lies where the workflow lives, or the user named it
+                    self.provenance.check(value, [base, spec.base_dir, *self._folders],
+                                          f"step {spec.id!r} ({spec.uses}): argument {name!r}")
+                except InputError as err:
+                    raise self._located(err, spec.id)
             args[name] = value
         for name, declared in step.inputs.items():
             value = args.get(name)
@@ -291,7 +310,9 @@ class Executor:
                               log=lambda m: self.store.event("log", spec.id, message=m),
                               iteration=iteration[1] if iteration else None,
                               use_cache=self.options.use_cache,
-                              warn=lambda m: self.store.event("warning", spec.id, message=m))
+                              warn=lambda m: self.store.event("warning", spec.id, message=m),
+                              record_root=self.store.root, provenance=self.provenance,
+                              own_folders=(spec.base_dir, *(spec.arg_base(a) for a in spec.args), *self._folders))
             try:
                 outputs = self._call(spec, step, ctx, args)
                 if ctx.metrics:
@@ -402,7 +423,7 @@ def write_metrics(store: RunStore, state: ExecutionState, total: float) -> dict:
         "steps": state.metrics,
         "totals": _numeric_totals([m for calls in state.metrics.values() for m in calls]),
     }
-    write_json(store.root / "metrics.json", metrics)
+    store.write_json(store.root / "metrics.json", metrics)
     return metrics
 
 

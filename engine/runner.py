@@ -16,11 +16,14 @@ from pipflow.resources import data_dir
 
 from .executor import Executor, RunOptions, write_metrics
 from .expr import ExpressionError, has_expression, resolve
+from .interrupts import Interrupted, interrupt_signals
 from .model import Workflow
+from .provenance import Provenance, outside
 from .registry import Registry, default_registry
-from .store import DamagedRecord, RunStore, read_json, utc_now, write_json
+from .store import DamagedRecord, RunStore, looks_secret, read_json, utc_now
 from .types import coerce_text, type_matches
 from .validate import check_given_values, load_workflow
+from .writes import DiskError
 
 
 @dataclass
@@ -54,9 +57,10 @@ def find_workflow(ref: str | Path) -> Path:
 
 
 def declared_env(wf: Workflow) -> dict[str, str]:
-    """The environment variables the workflow declares under ``env:`` (those set): all that
-    ``${env.X}`` can see."""
-    return {name: os.environ[name] for name in wf.env if name in os.environ}
+    """The environment variables the workflow declares under ``env:`` (those set), less those
+    whose names say they hold a key: all that ``${env.X}`` can see. A key is never a value in a
+    workflow (validation refuses ``${env.OPENAI_API_KEY}``; this is the second line)."""
+    return {name: os.environ[name] for name in wf.env if name in os.environ and not looks_secret(name)}
 
 
 def resolve_inputs(wf: Workflow, given: dict[str, Any], from_text: bool = False, cwd: Path | None = None) -> dict:
@@ -92,6 +96,10 @@ def resolve_inputs(wf: Workflow, given: dict[str, Any], from_text: bool = False,
             base = Path(spec.loc.file).resolve().parent if spec.loc else wf.file.parent
         if spec.type == "path" and isinstance(value, str) and value and not Path(value).expanduser().is_absolute():
             value = str((base / Path(value).expanduser()).resolve())
+        if spec.type == "path" and name not in given and isinstance(value, str) and value:
+            problem = outside(value, [base])  # a default reads only where its workflow lives
+            if problem:
+                raise InputError(f"{spec.loc or wf.file}: default of input {name!r}: {problem}")
         if not type_matches(value, spec.type):
             raise InputError(f"input {name!r} must be {spec.type}, got {value!r}")
         if isinstance(value, float) and not math.isfinite(value):  # .nan / .inf in an inputs file
@@ -111,15 +119,26 @@ def run_workflow(workflow: str | Path, inputs: dict[str, Any] | None = None, *, 
     wf = load_workflow(find_workflow(workflow), registry)
     values = resolve_inputs(wf, inputs or {}, from_text=inputs_from_text)
     check_given_values(wf, registry, {k: values[k] for k in (inputs or {}) if k in values})
+    provenance = _provenance(wf, values, inputs or {})
     store = RunStore.create(Path(runs_dir), wf.name)
-    try:
-        store.write_snapshot(wf.snapshot(), values)
+    try:  # run.json first: a record is never without it (runs, show and resume look for it)
         store.update_run(workflow=str(wf.file), name=wf.name, status="running", started=utc_now(),
-                         inputs=values, pid=os.getpid(), path_bases=wf.path_bases())
+                         inputs=values, pid=os.getpid(), path_bases=wf.path_bases(), given=provenance.to_json(),
+                         workflow_files=[str(f) for f in (wf.files or [wf.file])])
+        store.reserve()
+        store.write_snapshot(wf.snapshot(), values)
+    except DiskError as err:  # full from the start: no record that could be resumed is left behind
+        store.abandon()
+        raise DiskError(f"{err}; nothing was run and no run record was kept", err.path, err.errno) from None
     except BaseException:
         store.close()
         raise
-    return _execute(wf, store, values, options or RunOptions(), registry, completed=None)
+    return _execute(wf, store, values, options or RunOptions(), registry, completed=None, provenance=provenance)
+
+
+def _provenance(wf: Workflow, values: dict, given: Any) -> Provenance:
+    """Which values the user gave (names of ``given``), for the rules of :mod:`.provenance`."""
+    return Provenance.of_run(values, list(given), [n for n, s in wf.inputs.items() if s.type == "path"])
 
 
 SNAPSHOT = "workflow.yaml"
@@ -141,13 +160,32 @@ def resume_run(run_dir: str | Path, options: RunOptions | None = None, registry:
             raise UserError(f"{run_dir}: this run already succeeded; nothing to resume")
         wf = _snapshot_workflow(store, info, registry)
         values = _recorded_inputs(wf, store)
+        given = info.get("given") if isinstance(info.get("given"), list) else []
+        provenance = _provenance(wf, values, [g for g in given if isinstance(g, str)])
         completed = _completed_nodes(wf, store)
+        store.reserve()
         store.update_run(status="running", resumed=utc_now(), error=None, error_step=None, pid=os.getpid())
-        store.event("resume", reused=sorted(completed), damaged_events=store.damaged_events or None)
+    except DiskError as err:
+        store.close()
+        raise DiskError(f"{err}; the run was not resumed (free some space and resume it again)",
+                        err.path, err.errno) from None
     except BaseException:
         store.close()
         raise
-    return _execute(wf, store, values, options or RunOptions(), registry, completed)
+    try:
+        store.event("resume", reused=sorted(completed), damaged_events=store.damaged_events or None)
+    except UserError as err:  # the event log cannot be written (a link, a full disk): the record says so
+        result = RunResult(run_dir=store.root, status="failed", error=str(err), exception=err)
+        store.release_reserve()
+        try:
+            store.update_run(status="failed", finished=utc_now(), error=str(err))
+        finally:
+            store.close()
+        return result
+    files = info.get("workflow_files")
+    files = [f for f in files if isinstance(f, str)] if isinstance(files, list) else None
+    return _execute(wf, store, values, options or RunOptions(), registry, completed, provenance=provenance,
+                    files=files)
 
 
 def _snapshot_workflow(store: RunStore, info: dict, registry: Registry) -> Workflow:
@@ -204,17 +242,19 @@ def _completed_nodes(wf: Workflow, store: RunStore) -> dict[str, dict]:
 
 
 def _execute(wf: Workflow, store: RunStore, values: dict, options: RunOptions, registry: Registry,
-             completed: dict | None) -> RunResult:
-    executor = Executor(wf, registry, store, values, options, completed)
+             completed: dict | None, provenance: Provenance, files: list | None = None) -> RunResult:
+    executor = Executor(wf, registry, store, values, options, completed, provenance=provenance, files=files)
     started = time.perf_counter()
     result = RunResult(run_dir=store.root, status="running")
     store.listener = options.on_event
     try:
-        result.outputs = executor.run()
+        with interrupt_signals():  # SIGTERM and SIGHUP end the run as interrupted, as Ctrl-C does
+            result.outputs = executor.run()
+            store.write_json(store.root / "outputs.json", result.outputs)
         result.status = "succeeded"
-        write_json(store.root / "outputs.json", result.outputs)
     except KeyboardInterrupt as err:
-        result.status, result.error, result.exception = "interrupted", "interrupted by the user", err
+        why = f"interrupted by {err.name}" if isinstance(err, Interrupted) else "interrupted by the user"
+        result.status, result.error, result.exception = "interrupted", why, err
     except ExpressionError as err:
         result.status, result.error, result.exception = "failed", str(err), err
     except PipflowError as err:
@@ -227,13 +267,39 @@ def _execute(wf: Workflow, store: RunStore, values: dict, options: RunOptions, r
         raise
     finally:
         result.seconds = time.perf_counter() - started
-        write_metrics(store, executor.state, result.seconds)
-        if result.status != "succeeded":
-            store.event("error", result.error_step, status=result.status, error=result.error,
-                        kind=type(result.exception).__name__ if result.exception else None)
-        store.update_run(status=result.status, finished=utc_now(), error=result.error,
-                         error_step=result.error_step, seconds=round(result.seconds, 6))
-        store.close()
+        _finish(store, executor, result)
     if isinstance(result.exception, KeyboardInterrupt):
         raise result.exception
     return result
+
+
+def _finish(store: RunStore, executor: Executor, result: RunResult) -> None:
+    """The record's last words: metrics, the error event, run.json's final status. The space
+    reserved for them is given back first, so a run that filled the disk still says so; a write
+    that fails even then turns a success into a failure naming the disk, and the rest are still
+    tried (run.json last: a record whose run.json could not be written is shown as stale)."""
+    store.release_reserve()
+    try:
+        for write in (lambda: write_metrics(store, executor.state, result.seconds), lambda: _error_event(store, result)):
+            try:
+                write()
+            except DiskError as err:
+                _fail(result, err)
+        try:
+            store.update_run(status=result.status, finished=utc_now(), error=result.error,
+                             error_step=result.error_step, seconds=round(result.seconds, 6))
+        except DiskError as err:
+            _fail(result, err)
+    finally:
+        store.close()
+
+
+def _error_event(store: RunStore, result: RunResult) -> None:
+    if result.status != "succeeded":
+        store.event("error", result.error_step, status=result.status, error=result.error,
+                    kind=type(result.exception).__name__ if result.exception else None)
+
+
+def _fail(result: RunResult, err: DiskError) -> None:
+    if result.status == "succeeded":
+        result.status, result.error, result.exception = "failed", str(err), err

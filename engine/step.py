@@ -41,7 +41,9 @@ from typing import Annotated, Any, Callable, NewType, Union
 
 from pipflow.errors import StepDefinitionError
 
+from .provenance import Provenance
 from .store import atomic_write
+from .writes import make_dirs
 from .types import type_matches
 
 TYPES = ("string", "integer", "number", "boolean", "object", "array", "path", "any")
@@ -280,10 +282,19 @@ class StepContext:
         iteration: int | None = None,
         use_cache: bool = True,
         warn: Callable[[str], None] | None = None,
+        record_root: Path | None = None,
+        provenance: Provenance | None = None,
+        own_folders: tuple = (),
     ):
         self.step_id = step_id
         self.artifact_dir = artifact_dir
         self.base_dir = base_dir
+        self.record_root = record_root  # the run's folder: below it no write follows a link
+        # what the user named, and the folders of the workflow files that set this step's arguments:
+        # a path the workflow alone names is read only there (engine/provenance.py); a context made
+        # by hand (a test, a notebook calling a step) reads anything
+        self.provenance = provenance if provenance is not None else Provenance(open=True)
+        self.own_folders = tuple(own_folders) or (base_dir,)
         self.iteration = iteration
         self.use_cache = use_cache  # False under --no-cache: steps with caches of their own obey it too
         self._log = log or (lambda message: None)
@@ -300,23 +311,39 @@ class StepContext:
         self._log(message)
 
     def resolve_path(self, path: str | os.PathLike) -> Path:
-        """A path relative to the workflow file's folder (absolute paths stay as they are)."""
+        """A path relative to the workflow file's folder (absolute paths stay as they are), which
+        the step may read: one the user named, or one inside the workflow's folder or pipflow's
+        data (:mod:`pipflow.engine.provenance`; an :class:`~pipflow.errors.InputError` otherwise)."""
         p = Path(path).expanduser()
-        return p if p.is_absolute() else (self.base_dir / p).resolve()
+        resolved = p if p.is_absolute() else (self.base_dir / p).resolve()
+        self.check_readable(resolved, f"step {self.step_id!r}: {path}", named_as=str(path))
+        return resolved
+
+    def check_readable(self, path: str | os.PathLike, what: str, named_as: Any = None) -> None:
+        """Raise :class:`~pipflow.errors.InputError` unless the step may read ``path`` (named by
+        the user as ``named_as``, or where the workflow lives: see :meth:`resolve_path`)."""
+        self.provenance.check(path, self.own_folders, what, named_as=named_as)
+
+    def named_by_user(self, value: Any) -> bool:
+        """Whether the user gave this exact value (a server address, a template name), rather
+        than the workflow file: such values may go where the workflow's own may not."""
+        return self.provenance.named(value)
 
     def write_artifact(self, name: str, content: str | bytes | Any) -> Path:
-        """Write an artifact atomically into this step's folder of the run record.
+        """Write an artifact atomically into this step's folder of the run record (no link in
+        the record is followed; a full disk is a :class:`~pipflow.engine.writes.DiskError`).
 
         Text and bytes are written as they are; anything else is written as JSON."""
         path = self.artifact_dir / name
         if isinstance(content, (str, bytes)):
-            atomic_write(path, content)
+            atomic_write(path, content, root=self.record_root)
         else:
-            atomic_write(path, json.dumps(content, indent=2, sort_keys=True, default=str))
+            atomic_write(path, json.dumps(content, indent=2, sort_keys=True, default=str), root=self.record_root)
         return path
 
     def artifact_path(self, name: str) -> Path:
         """A path inside this step's artifact folder, for libraries that write files themselves
-        (matplotlib, pybullet). The folder exists when this returns."""
-        self.artifact_dir.mkdir(parents=True, exist_ok=True)
+        (matplotlib, pybullet; they should write through :func:`pipflow.engine.writes.write_file`
+        so that a link is never followed). The folder exists when this returns."""
+        make_dirs(self.artifact_dir, root=self.record_root)
         return self.artifact_dir / name

@@ -13,18 +13,20 @@ keeps everything done before the failure.
 Guarantees: every record file has one mode (what ``open`` gives under the user's umask, also for
 files written atomically); values of environment variables whose names look like keys, tokens or
 passwords never reach a record or a log line (:func:`redact`); one process at a time writes a
-run directory (an ``fcntl`` lock; a second writer is refused); a damaged ``run.json`` or a torn
-line of ``events.jsonl`` is reported and skipped by the readers, never a traceback.
+run directory (an ``fcntl`` lock: :mod:`.locks`; a second writer is refused, and a record that
+says "running" while nobody holds its lock is shown as stale); no write follows a link inside the
+run's folder and a full or read-only disk is a user error (:mod:`.writes`); ``run.json`` is
+written first and space is kept in reserve, so a run that fills the disk still records how it
+ended; a damaged ``run.json`` or a torn line of ``events.jsonl`` is reported and skipped by the
+readers, never a traceback.
 """
 from __future__ import annotations
 
 import datetime as _dt
-import fcntl
-import itertools
 import json
 import os
 import re
-import tempfile
+import shutil
 import threading
 import time
 import uuid
@@ -35,14 +37,9 @@ import yaml
 
 from pipflow.errors import UserError
 
+from .locks import FolderLock, writer_alive
+from .writes import FILE_MODE, AppendLog, DiskError, disk_error, write_file  # noqa: F401  (FILE_MODE, DiskError: re-exported)
 
-def _umask() -> int:
-    mask = os.umask(0o022)
-    os.umask(mask)
-    return mask
-
-
-FILE_MODE = 0o666 & ~_umask()  # the mode `open()` gives a new file: every record file has it
 
 # -- secrets ---------------------------------------------------------------------------------
 # KEY, TOKEN, SECRET, PASSWORD/PASSWD, CREDENTIAL(S), PRIVATE: OPENAI_API_KEY, HF_TOKEN, DB_PASSWORD...
@@ -78,6 +75,15 @@ def redact(text: str) -> str:
     return pattern.sub(lambda m: f"[redacted {names[m.group(0)]}]", text)
 
 
+def secrets_in(text: str, min_length: int = 12) -> list[str]:
+    """The names of the variables whose secret values occur in ``text`` (values of at least
+    ``min_length`` characters: a refusal must not fire on ordinary words that happen to be short
+    values). For checks of what leaves the machine (pipflow.language.llm)."""
+    with _secrets_lock:
+        found = {name for value, name in _secrets.items() if len(value) >= min_length and value in text}
+    return sorted(found)
+
+
 def _redact_bytes(data: bytes) -> bytes:
     if not _secrets:
         return data
@@ -109,55 +115,22 @@ def _redaction(raw: bool = False) -> tuple[re.Pattern, dict]:
 
 
 # -- files -----------------------------------------------------------------------------------
-def atomic_write(path: Path, content: str | bytes, redacted: bool = True) -> None:
+def atomic_write(path: Path, content: str | bytes, redacted: bool = True, root: Path | None = None) -> None:
     """Write a file so that readers see the old or the new content, never a torn one, with
     :data:`FILE_MODE`. Secrets are redacted unless ``redacted=False`` (caches, whose content
-    hashes must match what the step returned)."""
-    path.parent.mkdir(parents=True, exist_ok=True)
+    hashes must match what the step returned). Below ``root`` (a record's folder) no link is
+    followed (:mod:`pipflow.engine.writes`); a full or read-only disk raises
+    :class:`~pipflow.engine.writes.DiskError`."""
     if isinstance(content, str):
         data = (redact(content) if redacted else content).encode("utf-8")
     else:
         data = _redact_bytes(content) if redacted else content
-    fd, tmp = _create_temporary(path)
-    try:
-        try:
-            view = memoryview(data)
-            while view:
-                view = view[os.write(fd, view):]
-        finally:
-            os.close(fd)
-        os.replace(tmp, path)
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except OSError:
-            pass
-        raise
+    write_file(path, data, root=root)
 
 
-_temporaries = itertools.count()
-_PID = os.getpid()
-
-
-def _create_temporary(path: Path) -> tuple[int, str]:
-    """A new file beside ``path`` (``.NAME.PID.N``), created exclusively with :data:`FILE_MODE`
-    by ``open`` itself: one system call, where ``mkstemp`` + ``fchmod`` + ``fdopen`` take five
-    (a record is written per step, and on a busy disk each call counts)."""
-    flags = os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_CLOEXEC", 0)
-    for _ in range(100):
-        tmp = f"{path.parent}/.{path.name}.{_PID}.{next(_temporaries)}"
-        try:
-            return os.open(tmp, flags, FILE_MODE), tmp
-        except FileExistsError:  # left by a killed process, or a forked child with the same counter
-            continue
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.")
-    os.fchmod(fd, FILE_MODE)
-    return fd, tmp
-
-
-def write_json(path: Path, value: Any) -> None:
+def write_json(path: Path, value: Any, root: Path | None = None) -> None:
     """Mappings keep their order (outputs read back by ``resume`` must equal the originals)."""
-    atomic_write(path, json.dumps(value, indent=2, default=str) + "\n")
+    atomic_write(path, json.dumps(value, indent=2, default=str) + "\n", root=root)
 
 
 def read_json(path: Path, default: Any = None) -> Any:
@@ -189,20 +162,29 @@ def utc_now() -> str:
     return _dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%dT%H:%M:%S.%fZ")
 
 
+#: bytes a running record keeps in reserve (at least; more for a big run.json): when a write fails
+#: for want of space, the reserve is given back so that the record can still say how the run ended
+RESERVE_MIN = 64 * 1024
+RESERVE_FILE = ".pipflow-reserve"
+
+
 class RunStore:
-    """The directory of one run and the writes into it."""
+    """The directory of one run and the writes into it (all through :mod:`pipflow.engine.writes`:
+    below the run's folder no link is followed, and a full disk is a :class:`DiskError`)."""
 
     def __init__(self, root: Path):
-        self.root = root
+        self.root = Path(root)
         self._lock = threading.Lock()
-        self._events = None
-        self._dir_lock: int | None = None
+        self._events: AppendLog | None = None
+        self._folder_lock = FolderLock(self.root, "run")
+        self._reserved = False
         self.damaged_events: list[int] = []  # line numbers of events.jsonl that could not be read
         self.listener: Callable[[dict], None] | None = None  # e.g. a progress display
         register_secrets()
 
     @classmethod
     def create(cls, runs_dir: Path, workflow_name: str) -> "RunStore":
+        """A new, locked run folder under ``runs_dir`` (nothing written in it yet)."""
         stamp = _dt.datetime.now(_dt.timezone.utc).strftime("%Y%m%dT%H%M%SZ")
         root = Path(runs_dir) / f"{stamp}-{workflow_name}-{uuid.uuid4().hex[:6]}"
         try:
@@ -211,6 +193,9 @@ class RunStore:
             probe.write_bytes(b"")
             probe.unlink()
         except OSError as err:
+            full = disk_error(err, root)
+            if full is not None and full.full:
+                raise full from None
             cause = err.strerror or type(err).__name__
             if Path(runs_dir).exists() and not Path(runs_dir).is_dir():
                 cause = "it is a file, not a folder"
@@ -227,29 +212,38 @@ class RunStore:
         return cls(root)
 
     def lock(self) -> None:
-        """Become the one process that writes this run (released by :meth:`close`); a second
-        writer (``resume`` of a run that is still running) is refused."""
-        if self._dir_lock is not None:
-            return
+        """Become the one process that writes this run (released by :meth:`close`, or when the
+        process ends, however it ends); a second writer (``resume`` of a run that is still
+        running) is refused."""
+        self._folder_lock.acquire()
+
+    # -- space -------------------------------------------------------------------------
+    def reserve(self) -> None:
+        """Set space aside for the record's last words (see :data:`RESERVE_MIN`); raises
+        :class:`DiskError` when even that does not fit."""
         try:
-            fd = os.open(self.root, os.O_RDONLY | getattr(os, "O_DIRECTORY", 0))
+            size = (self.root / "run.json").stat().st_size
         except OSError:
-            return  # a folder that cannot be opened for reading: its writes will say what is wrong
-        try:
-            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
-        except OSError as err:
-            if not isinstance(err, BlockingIOError):  # a file system without locks (some network mounts)
-                os.close(fd)
-                return
-            os.close(fd)
+            size = 0
+        write_file(self.root / RESERVE_FILE, bytes(RESERVE_MIN + 2 * size), root=self.root)
+        self._reserved = True
+
+    def release_reserve(self) -> None:
+        """Give the reserved space back (before the last writes of a run, and at once when a
+        write failed for want of space)."""
+        if self._reserved:
             try:
-                info = read_json(self.root / "run.json", {})
-            except DamagedRecord:
-                info = {}
-            pid = info.get("pid") if isinstance(info, dict) else None
-            raise UserError(f"{self.root}: another pipflow process{f' (pid {pid})' if pid else ''} is writing "
-                            "this run; wait until it ends (or stop it) and try again") from None
-        self._dir_lock = fd
+                os.unlink(self.root / RESERVE_FILE)
+            except OSError:
+                pass
+            self._reserved = False
+
+    def abandon(self) -> None:
+        """Remove a record that never got as far as its snapshot (the disk was full from the
+        start): it holds only what this process just wrote, and a record without a workflow
+        snapshot could be neither listed usefully nor resumed."""
+        self.close()
+        shutil.rmtree(self.root, ignore_errors=True)
 
     # -- files ---------------------------------------------------------------------------
     def step_dir(self, step_id: str, iteration: tuple[str, int] | None = None) -> Path:
@@ -258,22 +252,29 @@ class RunStore:
             return self.root / "steps" / loop / "iterations" / str(n) / step_id
         return self.root / "steps" / step_id
 
+    def write(self, path: Path, content: str | bytes) -> None:
+        """Write a file of this record (atomically, no link followed, secrets redacted)."""
+        atomic_write(path, content, root=self.root)
+
+    def write_json(self, path: Path, value: Any) -> None:
+        write_json(path, value, root=self.root)
+
     def write_step_outputs(self, step_id: str, outputs: dict, iteration: tuple[str, int] | None = None) -> None:
-        write_json(self.step_dir(step_id, iteration) / "outputs.json", outputs)
+        self.write_json(self.step_dir(step_id, iteration) / "outputs.json", outputs)
 
     def read_step_outputs(self, step_id: str) -> dict | None:
         return read_json(self.step_dir(step_id) / "outputs.json")
 
     def write_snapshot(self, workflow_data: dict, inputs: dict) -> None:
         dumper = getattr(yaml, "CSafeDumper", yaml.SafeDumper)  # libyaml: ~10x faster on big workflows
-        atomic_write(self.root / "workflow.yaml", yaml.dump(workflow_data, Dumper=dumper, sort_keys=False))
-        write_json(self.root / "inputs.json", inputs)
+        self.write(self.root / "workflow.yaml", yaml.dump(workflow_data, Dumper=dumper, sort_keys=False))
+        self.write_json(self.root / "inputs.json", inputs)
 
     def update_run(self, **fields: Any) -> dict:
         with self._lock:
             info = read_json(self.root / "run.json", {})
             info.update(fields)
-            write_json(self.root / "run.json", info)
+            self.write_json(self.root / "run.json", info)
             return info
 
     def run_info(self) -> dict:
@@ -294,24 +295,13 @@ class RunStore:
             record = json.loads(line)
         with self._lock:
             if self._events is None:
-                self._events = self._open_events()
-            self._events.write(line + "\n")
-            self._events.flush()
+                self._events = AppendLog(self.root / "events.jsonl", root=self.root)
+            self._events.write((line + "\n").encode("utf-8"))
         if self.listener is not None:
             try:
                 self.listener(record)
             except Exception:  # a display that cannot write (closed pipe) must not fail the run
                 self.listener = None
-
-    def _open_events(self):
-        path = self.root / "events.jsonl"
-        fh = open(path, "a+b")
-        if fh.tell() > 0:  # a torn last line (a killed process) must not swallow the next event
-            fh.seek(-1, os.SEEK_END)
-            if fh.read(1) != b"\n":
-                fh.write(b"\n")
-        fh.close()
-        return open(path, "a", encoding="utf-8")
 
     def events(self) -> list[dict]:
         """The readable events; the numbers of lines that are not (a torn last line, a hand
@@ -343,9 +333,28 @@ class RunStore:
             if self._events is not None:
                 self._events.close()
                 self._events = None
-            if self._dir_lock is not None:
-                os.close(self._dir_lock)  # closing the descriptor releases the flock
-                self._dir_lock = None
+            self.release_reserve()
+            self._folder_lock.release()
+
+
+STALE = "stale"
+
+
+def shown_status(run_dir: Path, info: dict) -> str:
+    """The status readers show: a record that says "running" while no process holds its lock
+    was left by a process that died without saying how the run ended (kill -9, a power cut):
+    it is shown as ``stale`` (``pipflow resume`` continues it)."""
+    status = str(info.get("status", "?"))
+    if status == "running" and writer_alive(run_dir) is False:
+        return STALE
+    return status
+
+
+def stale_note(run_dir: Path, info: dict) -> str:
+    """Why a stale record is stale, in words, for ``show`` and the listings."""
+    pid = info.get("pid")
+    return (f"its process{f' (pid {pid})' if pid else ''} is gone, the end unrecorded (killed?); "
+            f"`pipflow resume` continues it")
 
 
 def list_runs(runs_dir: Path) -> list[Path]:

@@ -24,6 +24,7 @@ from .expr import ExpressionError, Reference, has_expression, split_template, te
 from .model import LoopSpec, StepSpec, Workflow, build_workflow, read_workflow_data
 from .registry import Registry, default_registry
 from .source import SourceDict, SourceList
+from .store import looks_secret
 from .types import type_matches
 
 SPECIAL = {"inputs", "env", "previous", "iteration"}
@@ -373,6 +374,12 @@ def _check_env(ref: Reference, wf: Workflow) -> str | None:
     workflow file must not be able to read a user's keys by naming them)."""
     if ref.attr is None:
         return "'env' must name one variable, as ${env.NAME}, declared under 'env:'"
+    if looks_secret(ref.attr):  # declared or not: declaring it would not help
+        declared = "declared" if ref.attr in wf.env else "not declared"
+        return (f"environment variable {ref.attr!r} is {declared}, and it holds a key (its name says so): a "
+                "workflow never reads a key as a value, which could reach a prompt or a server the workflow "
+                "names. Providers read their keys from the environment themselves; remove ${env." + ref.attr
+                + "} (listing it under 'env:' does not allow it)")
     if ref.attr not in wf.env:
         return (f"environment variable {ref.attr!r} is not declared; add it to the workflow's "
                 f"top-level 'env:' list (env: [{', '.join([*wf.env, ref.attr])}])")

@@ -8,10 +8,13 @@ from __future__ import annotations
 
 import contextlib
 import ctypes
+import io
 import os
 import sys
 from pathlib import Path
 from typing import Any
+
+from pipflow.engine.writes import write_file
 
 
 #: The common colour names with matplotlib's (CSS) values: looked up without importing
@@ -88,14 +91,18 @@ def render_floor(p: Any, cid: int, floor: dict, path: Path, width: int, height: 
 
 
 def _save_png(path: Path, img) -> None:
+    """Encode in memory, then write through pipflow's one writer (a link at ``path`` is replaced,
+    never written through; a full disk is a DiskError)."""
+    buffer = io.BytesIO()
     try:
         from PIL import Image
 
-        Image.fromarray(img).save(path)
+        Image.fromarray(img).save(buffer, format="PNG")
     except ImportError:
         import matplotlib
 
         matplotlib.use("Agg")
         import matplotlib.image as mpimg
 
-        mpimg.imsave(path, img)
+        mpimg.imsave(buffer, img, format="png")
+    write_file(path, buffer.getvalue())

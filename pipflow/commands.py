@@ -10,7 +10,8 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from pipflow.engine.cliargs import positive_int
+from pipflow.engine.cliargs import port_number, positive_int
+from pipflow.engine.writes import DiskError
 from pipflow.records.compare import compare_text
 
 
@@ -46,7 +47,7 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
     view = sub.add_parser("view", parents=[common],
                           help="browse runs and benches in a local read-only web page (loopback)")
     view.add_argument("dir", nargs="?", default=None, help="folder of runs/benches (default: --runs-dir, ./runs)")
-    view.add_argument("--port", type=int, default=0, help="port on 127.0.0.1 (default: any free port)")
+    view.add_argument("--port", type=port_number, default=0, help="port on 127.0.0.1 (default: any free port)")
     view.add_argument("--no-browser", action="store_true", help="print the address only")
     view.set_defaults(func=cmd_view)
 
@@ -67,7 +68,13 @@ def cmd_report(args: argparse.Namespace) -> int:
     # deferred: ~30 ms of import (report, pictures); every CLI command loads this module
     from pipflow.records.report import write_report
 
-    print(write_report(Path(args.dir), Path(args.output) if args.output else None))
+    try:
+        print(write_report(Path(args.dir), args.output or None))  # the text: a trailing / names a folder
+    except DiskError as err:
+        if args.output:
+            raise
+        raise DiskError(f"{err}; write the report elsewhere with -o FILE (nothing is then written into the record)",
+                        err.path, err.errno) from None
     return 0
 
 

@@ -6,9 +6,12 @@ without pybullet. matplotlib is imported inside each function with the Agg backe
 importing this module is cheap and never needs a display."""
 from __future__ import annotations
 
+import io
+import tempfile
 from pathlib import Path
 from typing import Any
 
+from pipflow.engine.writes import write_file
 from pipflow.team.trajectory import ROBOT_COLOURS, Trajectory
 
 #: ``pictures`` workflow input: ``always`` draws them during the run; ``never`` draws none (the
@@ -45,6 +48,15 @@ def _working_robots(schedule: dict) -> list[str]:
     for s in schedule.get("subtasks", []):
         robots += [r for r in s.get("robots", []) if r not in robots]
     return sorted(set(robots), key=natural_key)
+
+
+def save_figure(fig: Any, path: Path, **options: Any) -> Path:
+    """Write a matplotlib figure to ``path`` through pipflow's one writer: drawn into memory, then
+    written atomically, so a link at ``path`` (in a record someone else could write) is replaced,
+    never written through, and a full disk is a :class:`~pipflow.engine.writes.DiskError`."""
+    buffer = io.BytesIO()
+    fig.savefig(buffer, format=Path(path).suffix.lstrip(".") or "png", **options)
+    return write_file(path, buffer.getvalue())
 
 
 def _plt():
@@ -102,7 +114,7 @@ def path_map(world: dict, trajectories: dict[str, list], path: Path, travel: dic
     ax.legend(fontsize=9, loc="upper left", bbox_to_anchor=(1.01, 1.0), title="robot (travel)", title_fontsize=9)
     ax.set_title("Robot paths (o start, \u25a0 end)")
     fig.tight_layout()
-    fig.savefig(path, dpi=90)
+    save_figure(fig, path, dpi=90)
     plt.close(fig)
     return Path(path)
 
@@ -143,7 +155,10 @@ def animation_gif(world: dict, trajectories: dict[str, list], path: Path, makesp
         return list(dots.values()) + [title]
 
     anim = FuncAnimation(fig, draw, frames=frames, blit=False)
-    anim.save(path, writer=PillowWriter(fps=10))
+    with tempfile.TemporaryDirectory(prefix="pipflow-gif-") as scratch:  # Pillow writes a named file only
+        drawn = Path(scratch) / "animation.gif"
+        anim.save(drawn, writer=PillowWriter(fps=10))
+        write_file(path, drawn.read_bytes())
     plt.close(fig)
     return Path(path)
 
@@ -174,7 +189,7 @@ def gantt(schedule: dict, path: Path) -> Path:
     ax.set_title(f"Schedule (makespan {float(schedule.get('makespan', 0)):.1f} s; grey = travel"
                  + (f"; {idle} idle robot{'s' if idle != 1 else ''} not shown)" if idle else ")"))
     fig.tight_layout()
-    fig.savefig(path, dpi=90)
+    save_figure(fig, path, dpi=90)
     plt.close(fig)
     return Path(path)
 
@@ -221,7 +236,7 @@ def dependency_graph(graph: dict, path: Path) -> Path:
     ax.axis("off")
     ax.set_title(f"Dependency graph ({graph.get('mode', '?')} mode, {g.number_of_nodes()} subtasks, "
                  f"{len(layers)} levels)", fontsize=9)
-    fig.savefig(path, dpi=100, bbox_inches="tight")
+    save_figure(fig, path, dpi=100, bbox_inches="tight")
     plt.close(fig)
     return Path(path)
 

@@ -11,7 +11,7 @@ from pipflow.errors import InputError, TranslationError
 from pipflow.language.agreement import refusal_opinion
 from pipflow.language.generator import READERS, generate
 from pipflow.language.llm import resolve_model
-from pipflow.language.prompting import prompt_problem
+from pipflow.language.prompting import find_template, prompt_problem
 from pipflow.taskdomains import task_domain
 
 #: the longest answer kept in the step's ``response`` output. The run record copies outputs (each
@@ -72,13 +72,17 @@ def llm_problem(
         domain_text = path.read_text(encoding="utf-8")
     except OSError as exc:
         raise InputError(f"domain file {path}: {exc.strerror}") from None
+    if prompt is not None and resolved != "offline":  # a file the workflow names is read where it lives
+        template = find_template(prompt, ctx.base_dir)
+        ctx.check_readable(template, f"step {ctx.step_id!r}: prompt template {prompt!r}", named_as=prompt)
+        prompt = str(template)
     out = generate(
         command, world, domain_text, prompt=prompt, model=resolved, temperature=temperature,
         max_tokens=max_tokens, timeout=timeout, retries=retries, deadline=deadline, api_base=api_base,
         feedback=feedback, grounded=grounded,
         cache_dir=ctx.resolve_path(cache_dir) if cache_dir else None, use_cache=cache and ctx.use_cache,
         base_dir=ctx.base_dir, save=ctx.write_artifact, log=lambda m: _log(ctx, m), previous=previous,
-        reader=reader)
+        reader=reader, named=ctx.named_by_user)
     ctx.metrics["llm"] = out["usage"]
     text = out.get("response") or ""
     if len(text) > RESPONSE_OUTPUT_CHARS:  # the whole answer is kept once, as artifact response.txt

@@ -174,7 +174,7 @@ WORKFLOWS: dict[str, tuple[str | bytes, list[str]]] = {
     "the whole environment": ("pipflow: 1\nname: x\nenv: [HOME]\nsteps: []\noutputs:\n  e: ${env}\n",
                               ["bad.yaml:6", "must name one variable"]),
     "env item by subscript": ("pipflow: 1\nname: x\nsteps: []\noutputs:\n  e: \"${env['SECRET_TOKEN']}\"\n",
-                              ["bad.yaml:5", "'SECRET_TOKEN' is not declared"]),
+                              ["bad.yaml:5", "'SECRET_TOKEN' is not declared", "it holds a key"]),
     "env name not a name": ("pipflow: 1\nname: x\nenv: ['1 X']\nsteps: []\n", ["bad.yaml:3", "does not match"]),
     "undeclared env in an input default": ("pipflow: 1\nname: x\ninputs:\n  k: {type: string, default: '${env.HF_TOKEN}'}\nsteps: []\n",
                                            ["bad.yaml:4", "'HF_TOKEN' is not declared"]),
@@ -750,9 +750,10 @@ def test_resume_keeps_relative_paths_of_the_original_folder(ws, capsys):
     """The snapshot lives in the run folder; `world.yaml` must still mean the workflow's world."""
     from pipflow.engine import run_workflow
 
-    (ws / "sub").mkdir()
+    (ws / "sub" / "worlds").mkdir(parents=True)
+    shutil.copy(ws / "world.yaml", ws / "sub" / "worlds" / "world.yaml")
     (ws / "sub" / "wf.yaml").write_text(WORLD_FLOW.replace("default: world.yaml", "default: ''")
-                                        .replace('"${inputs.world}"', "../world.yaml"))
+                                        .replace('"${inputs.world}"', "worlds/world.yaml"))
     result = run_workflow(ws / "sub" / "wf.yaml", runs_dir=ws / "runs")
     assert result.ok, result.error
     run = result.run_dir
@@ -844,15 +845,24 @@ SECRET = "sk-test-9f8e7d6c5b4a39281706"
 
 
 def test_secrets_never_reach_a_record_or_the_terminal(ws, capsys, monkeypatch):
+    """A key pasted into an input by mistake is redacted everywhere pipflow writes; a workflow
+    cannot read one at all (issue 21: ``${env.OPENAI_API_KEY}`` went into a request body)."""
     monkeypatch.setenv("OPENAI_API_KEY", SECRET)
     (ws / "env.yaml").write_text(
         "pipflow: 1\nname: env\nenv: [OPENAI_API_KEY, HOME]\n"
         "inputs:\n  key: {type: string, default: '${env.OPENAI_API_KEY}'}\n"
         "steps:\n  - {id: a, uses: core.value, with: {value: 'key=${env.OPENAI_API_KEY}'}}\n"
+        "outputs:\n  k: ${a.value}\n")
+    code, out, err = cli(capsys, "run", ws / "env.yaml")
+    assert code == 2 and "env.yaml:5" in err and "env.yaml:7" in err and "holds a key" in err
+    assert SECRET not in out + err and not (ws / "runs").exists()
+    (ws / "paste.yaml").write_text(
+        "pipflow: 1\nname: paste\ninputs:\n  key: {type: string, default: none}\n"
+        "steps:\n  - {id: a, uses: core.value, with: {value: 'key=${inputs.key}'}}\n"
         "  - {id: b, uses: core.log, with: {message: '${inputs.key}'}}\n"
         "  - {id: c, uses: core.fail, with: {message: 'bad key ${inputs.key}', condition: true}}\n"
         "outputs:\n  k: ${a.value}\n")
-    code, out, err = cli(capsys, "run", ws / "env.yaml", "-v", traceback_ok=True)
+    code, out, err = cli(capsys, "run", ws / "paste.yaml", "-i", f"key={SECRET}", "-v", traceback_ok=True)
     assert code == 1
     assert SECRET not in out + err and "[redacted OPENAI_API_KEY]" in err
     run = _runs(ws)[0]
@@ -860,20 +870,15 @@ def test_secrets_never_reach_a_record_or_the_terminal(ws, capsys, monkeypatch):
         if path.is_file():
             assert SECRET.encode() not in path.read_bytes(), path
     assert "[redacted OPENAI_API_KEY]" in (run / "inputs.json").read_text()
-    # resume reads the redacted input again from the environment (it came from a default)
-    from pipflow.engine.runner import _recorded_inputs, _snapshot_workflow
-    from pipflow.engine.store import RunStore
-
-    store = RunStore.open(run)
-    wf = _snapshot_workflow(store, store.run_info(), registry_module.default_registry())
-    assert _recorded_inputs(wf, store)["key"] == SECRET
+    code, _, err = cli(capsys, "resume", run)  # the record never kept the key: a new run is needed
+    assert code == 2 and "held a secret" in err and SECRET not in err
 
 
 def test_dry_run_shows_no_secret(ws, capsys, monkeypatch):
     monkeypatch.setenv("HF_TOKEN", SECRET)
-    (ws / "env.yaml").write_text("pipflow: 1\nname: env\nenv: [HF_TOKEN]\n"
-                                 "inputs:\n  token: {type: string, default: '${env.HF_TOKEN}'}\nsteps: []\n")
-    code, out, err = cli(capsys, "run", ws / "env.yaml", "--dry-run")
+    (ws / "env.yaml").write_text("pipflow: 1\nname: env\n"
+                                 "inputs:\n  token: {type: string, default: none}\nsteps: []\n")
+    code, out, err = cli(capsys, "run", ws / "env.yaml", "--dry-run", "-i", f"token={SECRET}")
     assert code == 0 and SECRET not in out + err and "[redacted HF_TOKEN]" in out
 
 

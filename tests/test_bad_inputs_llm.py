@@ -42,6 +42,7 @@ class Server:
         self.script = script
         self.requests: list[dict] = []
         self.auth: list[str | None] = []
+        self.paths: list[str] = []
         server = self
 
         class Handler(BaseHTTPRequestHandler):
@@ -55,6 +56,7 @@ class Server:
                 body = self.rfile.read(int(self.headers.get("Content-Length") or 0))
                 server.requests.append(json.loads(body or b"{}"))
                 server.auth.append(self.headers.get("Authorization"))
+                server.paths.append(self.path)
                 entry = server.script[min(len(server.requests), len(server.script)) - 1]
                 entry = {"text": entry} if isinstance(entry, str) else entry
                 time.sleep(entry.get("delay", 0))
@@ -344,13 +346,11 @@ def test_key_trust_rules():
     assert llm.is_loopback("http://127.0.0.1:8080/v1") and llm.is_loopback("http://localhost/v1")
     assert llm.is_loopback("http://[::1]:9/v1") and not llm.is_loopback("http://10.0.0.5/v1")
     assert llm.key_may_go_to(None)
-    os.environ.pop("PIPFLOW_GIVEN_INPUTS", None)
     assert not llm.key_may_go_to("https://collector.example.com/v1")
-    try:
-        os.environ["PIPFLOW_GIVEN_INPUTS"] = json.dumps(["https://collector.example.com/v1/"])
-        assert llm.key_may_go_to("https://Collector.example.com/v1")
-    finally:
-        os.environ.pop("PIPFLOW_GIVEN_INPUTS")
+    # the engine says which values the user gave (StepContext.named_by_user)
+    given = {"https://collector.example.com/v1/"}
+    assert llm.key_may_go_to("https://collector.example.com/v1/", named=given.__contains__)
+    assert not llm.key_may_go_to("https://other.example.com/v1", named=given.__contains__)
 
 
 # --- the response cache: verified or a miss; --no-cache writes none; unwritable is a warning --

@@ -150,9 +150,14 @@ def test_broken_image_is_detected(tmp_path):
 
 
 def test_output_elsewhere_rebases_links(tmp_path):
+    """Links into the record are rebased; the pictures the report draws go beside the page, and
+    nothing is written into the record (it may be read-only: issue 21)."""
     run = make_run_dir(tmp_path)
+    before = sorted(p.relative_to(run) for p in run.rglob("*"))
     page = write_report(run, tmp_path / "elsewhere" / "r.html")
-    assert "src='../run1/report/gantt.png'" in page.read_text()
+    text = page.read_text()
+    assert "src='r_files/gantt.png'" in text and "src='../run1/steps/" in text
+    assert sorted(p.relative_to(run) for p in run.rglob("*")) == before
     assert_rendered(page, tmp_path, min_images=7)
 
 

@@ -26,12 +26,17 @@ a lease of a ``distributed.Semaphore`` named ``pipflow-llm-<provider>``; elsewhe
 from __future__ import annotations
 
 import contextlib
+import ctypes
 import hashlib
 import io
 import os
 import shutil
+import signal
+import stat
+import sys
 import tempfile
 import threading
+import time
 import uuid
 import zipfile
 from dataclasses import dataclass
@@ -39,6 +44,7 @@ from pathlib import Path
 from typing import Any, Callable
 
 from pipflow import llmslot
+from pipflow.engine.interrupts import SIGNALS
 from pipflow.engine.registry import default_registry
 from pipflow.engine.runner import find_workflow, resolve_inputs
 from pipflow.engine.validate import load_workflow
@@ -169,13 +175,35 @@ def build_bundle(workflow_ref: str, inputs: dict[str, Any]) -> Bundle:
                   path_inputs={k: v.relative_to(root).as_posix() for k, v in targets.items()}, digest=digest)
 
 
+def _bundles_folder() -> Path:
+    """This user's folder of bundles in the temp folder, private (0700): a bundle found there is
+    run as it is, so a folder another account could write into (``/tmp`` is shared) is never
+    used; without a private one, a fresh folder of this process's serves."""
+    uid = os.getuid() if hasattr(os, "getuid") else 0
+    base = Path(tempfile.gettempdir()) / f"pipflow-bundles-{uid}"
+    try:
+        base.mkdir(mode=0o700, exist_ok=True)
+        info = os.lstat(base)
+        if stat.S_ISDIR(info.st_mode) and info.st_uid == uid and not info.st_mode & 0o077:
+            return base
+    except OSError:
+        pass
+    global _PRIVATE_BUNDLES
+    if _PRIVATE_BUNDLES is None:
+        _PRIVATE_BUNDLES = Path(tempfile.mkdtemp(prefix="pipflow-bundles-"))
+    return _PRIVATE_BUNDLES
+
+
+_PRIVATE_BUNDLES: Path | None = None
+
+
 def materialize(bundle_files: dict[str, str], digest: str) -> Path:
-    """Write a bundle under this machine's temp folder once (keyed by its hash); return the root."""
-    base = Path(tempfile.gettempdir()) / "pipflow-bundles"
+    """Write a bundle under this user's private bundle folder once (keyed by its hash); return
+    the root."""
+    base = _bundles_folder()
     root = base / digest
     if (root / ".complete").exists():
         return root
-    base.mkdir(parents=True, exist_ok=True)
     staging = Path(tempfile.mkdtemp(dir=base, prefix=f".{digest}."))
     for rel, text in bundle_files.items():
         target = staging / rel
@@ -277,6 +305,30 @@ def parse_backend(text: str | None) -> tuple[str, str | None]:
     return kind, (address.strip() or None)
 
 
+def die_with_parent(parent: int) -> None:
+    """Start-up of a pool worker: end when the bench process ends, however it ends. A worker
+    left behind (parent 1) blocks on its pipe for ever and keeps the caller's stdout open, so a
+    script waiting for the bench's output hangs. On Linux the kernel sends the worker SIGKILL
+    when its parent dies (``PR_SET_PDEATHSIG``); everywhere a watcher thread checks the parent
+    every second. SIGTERM and SIGHUP get their default action back (the bench's own handler was
+    inherited with the fork): an idle worker ends quietly, a running one records its run as
+    interrupted (the engine turns them into an interrupt while a run runs)."""
+    for signum in SIGNALS:
+        signal.signal(signum, signal.SIG_DFL)
+    if sys.platform.startswith("linux"):
+        with contextlib.suppress(OSError, AttributeError):
+            ctypes.CDLL(None, use_errno=True).prctl(1, int(signal.SIGKILL))  # 1: PR_SET_PDEATHSIG
+    if os.getppid() != parent:  # the parent died before the line above took effect
+        os._exit(1)
+    threading.Thread(target=_watch_parent, args=(parent,), name="pipflow-parent-watch", daemon=True).start()
+
+
+def _watch_parent(parent: int) -> None:
+    while os.getppid() == parent:
+        time.sleep(1.0)
+    os._exit(1)
+
+
 class LocalBackend:
     """Today's process pool (``jobs`` processes; 1 runs in this process)."""
 
@@ -293,7 +345,7 @@ class LocalBackend:
             for spec in specs:
                 on_row(run_one(spec))
             return
-        pool = cf.ProcessPoolExecutor(max_workers=self.jobs)
+        pool = cf.ProcessPoolExecutor(max_workers=self.jobs, initializer=die_with_parent, initargs=(os.getpid(),))
         try:
             futures = {pool.submit(run_one, spec): spec for spec in specs}
             for fut in cf.as_completed(futures):
@@ -302,6 +354,13 @@ class LocalBackend:
                 except Exception as err:  # a worker process died (BrokenProcessPool) or similar
                     row = lost_row(futures[fut], f"{type(err).__name__}: {err}")
                 on_row(row)
+        except BaseException:
+            # stopped (Ctrl-C, SIGTERM, a user error in a row): the runs still going are told to
+            # stop (their records say interrupted) instead of being waited for to the end
+            for worker in list((getattr(pool, "_processes", None) or {}).values()):
+                with contextlib.suppress(OSError, ValueError):
+                    worker.terminate()
+            raise
         finally:
             pool.shutdown(wait=True, cancel_futures=True)
 

@@ -25,12 +25,15 @@ failure: robots moved wrongly).
 from __future__ import annotations
 
 import argparse
+import contextlib
 import csv
 import datetime as _dt
 import hashlib
+import io
 import itertools
 import json
 import os
+import shutil
 import sys
 import time
 from dataclasses import dataclass, field, replace
@@ -38,9 +41,12 @@ from pathlib import Path
 from typing import Any
 
 from pipflow.engine.cliargs import key_values
+from pipflow.engine.interrupts import interrupt_signals
+from pipflow.engine.locks import FolderLock, writer_alive
 from pipflow.engine.registry import default_registry
 from pipflow.engine.runner import find_workflow, resolve_inputs
 from pipflow.engine.store import atomic_write, read_json, write_json
+from pipflow.engine.writes import DiskError, disk_error, make_dirs, writing
 from pipflow.engine.validate import load_workflow
 from pipflow.errors import UserError
 from pipflow.experiments.backends import build_bundle, make_backend, parse_backend, parse_limits, run_key
@@ -110,9 +116,15 @@ def _workers(jobs: int | None) -> int:
 
 
 def _safe(name: str) -> str:
-    """A variant or task name as one path component."""
-    out = "".join(c if (c.isalnum() or c in "-_.,=+@") else "_" for c in str(name))
-    return out if out not in ("", ".", "..") else "_"
+    """A variant or task name as one path component, one-to-one: letters, digits and ``-_.,=+@``
+    stay, every other character (``/``, ``%``, spaces) becomes its UTF-8 bytes as ``%XX``. Two
+    names never share a row file (``a/b`` and ``a_b`` did, so one row was lost and every
+    ``--resume`` ran a task again)."""
+    out = "".join(c if (c.isalnum() or c in "-_.,=+@") else "".join(f"%{b:02X}" for b in c.encode("utf-8"))
+                  for c in str(name))
+    if out in (".", ".."):
+        return out.replace(".", "%2E")
+    return out or "%"
 
 
 def row_path(out: Path, key: tuple[str, str, int]) -> Path:
@@ -135,13 +147,19 @@ def read_row(out: Path, key: tuple[str, str, int]) -> dict | None:
         return None
 
 
+#: where runs write their records while they run; a record moves to ``OUT/records/`` when its row
+#: is stored, so a killed bench leaves no record that no row refers to (what it left here is
+#: removed when the next bench into the same folder starts)
+RUNNING = ".running"
+
+
 def build_specs(config: BenchConfig, tasks_doc: dict, world_path: str,
                 domain: TaskDomain | None = None) -> list[RunSpec]:
     """One spec per (variant, task, seed). A workflow named by a method (``pip-llm``,
     ``pip-llm-checked``) runs the task file's domain's workflow for it
     (:meth:`pipflow.taskdomain.TaskDomain.workflow_for`); the variant keeps the name given."""
     specs: list[RunSpec] = []
-    records = str(Path(config.out) / "records")
+    records = str(Path(config.out) / RUNNING)
     for name, values in variants(config.matrix):
         values = dict(values)
         workflow = values.pop("workflow", config.workflow)
@@ -267,29 +285,85 @@ def run_bench(config: BenchConfig, progress: bool = True, on_row=None) -> dict:
     specs = [replace(s, fingerprint=fingerprint(s, files[(s.workflow, tuple(sorted(_given(s).items())))]))
              for s in specs]
     out = Path(config.out)
+    _prepare_out(out, specs)
+    lock = FolderLock(out, "bench folder")  # one bench at a time writes a folder (a second is refused)
+    lock.acquire()
+    try:
+        _clear_unfinished(out)
+        done: dict[tuple, dict] = {}
+        if config.resume:
+            done = _resumable(out, specs)
+        todo = [s for s in specs if run_key(s) not in done]
+        backend = make_backend(config.backend, config.jobs, llm_limits=config.llm_limits,
+                               records_dir=out / RUNNING)
+        started = time.perf_counter()
+        with interrupt_signals():  # SIGTERM and SIGHUP stop the bench as Ctrl-C does (rows kept)
+            fresh = _execute(backend, todo, done, out, progress, total=len(specs), on_row=on_row)
+        wall = time.perf_counter() - started
+        rows = [done[run_key(s)] for s in specs if run_key(s) in done]
+        results = _results(rows, tasks_doc["tasks"], config, wall, domain.name)
+        results["config"]["workflows"] = {s.variant: s.workflow for s in specs}  # what each variant ran
+        results["executed_runs"], results["resumed_runs"] = fresh, len(specs) - len(todo)
+        _write(out, rows, results)
+        return results
+    finally:
+        with contextlib.suppress(OSError):
+            (out / RUNNING).rmdir()  # only when empty: every run's record moved to records/
+        lock.release()
+
+
+def _prepare_out(out: Path, specs: list[RunSpec]) -> None:
+    """Make the bench folder (a user error, naming it, when that cannot be done) and refuse a
+    bench whose rows would share a file on this folder's file system (names that differ only in
+    case, where the file system ignores case)."""
     try:
         out.mkdir(parents=True, exist_ok=True)
-        probe = out / f".pipflow-write-test-{os.getpid()}"
+        probe = out / f".pipflow-Write-Test-{os.getpid()}"
         probe.write_text("")
+        blind = (out / probe.name.lower()).exists()
         probe.unlink()
     except OSError as err:
+        full = disk_error(err, out)
+        if full is not None and full.full:
+            raise DiskError(f"{full}; nothing was run", full.path, full.errno) from None
         raise UserError(f"--out {out}: cannot write the bench folder there ({err.strerror or err}); "
                         "nothing was run") from None
-    done: dict[tuple, dict] = {}
-    if config.resume:
-        done = _resumable(out, specs)
-    todo = [s for s in specs if run_key(s) not in done]
-    backend = make_backend(config.backend, config.jobs, llm_limits=config.llm_limits,
-                           records_dir=out / "records")
-    started = time.perf_counter()
-    fresh = _execute(backend, todo, done, out, progress, total=len(specs), on_row=on_row)
-    wall = time.perf_counter() - started
-    rows = [done[run_key(s)] for s in specs if run_key(s) in done]
-    results = _results(rows, tasks_doc["tasks"], config, wall, domain.name)
-    results["config"]["workflows"] = {s.variant: s.workflow for s in specs}  # what each variant ran
-    results["executed_runs"], results["resumed_runs"] = fresh, len(specs) - len(todo)
-    _write(out, rows, results)
-    return results
+    if blind:
+        seen: dict[str, tuple] = {}
+        for spec in specs:
+            key = run_key(spec)
+            name = str(row_path(out, key)).casefold()
+            if seen.setdefault(name, key) != key:
+                raise UserError(f"--out {out}: runs {seen[name]} and {key} would share one row file on this file "
+                                "system, which ignores upper and lower case; rename one task or variant")
+
+
+def _clear_unfinished(out: Path) -> None:
+    """Remove the records of runs a killed bench left unfinished (they have no row; those runs
+    run again). Only records no live process holds: this bench holds the folder's lock, so any
+    other writer is a worker its killed bench left behind."""
+    running = out / RUNNING
+    if not running.is_dir() or running.is_symlink():
+        return
+    for record in running.iterdir():
+        if record.is_dir() and not record.is_symlink() and writer_alive(record) is not True:
+            shutil.rmtree(record, ignore_errors=True)
+
+
+def _finished_record(out: Path, row: dict) -> None:
+    """Move a finished run's record from ``OUT/.running`` into ``OUT/records`` (just before its
+    row is stored, which then refers to it)."""
+    run_dir = row.get("run_dir")
+    if not run_dir:
+        return
+    source = Path(str(run_dir))
+    if source.parent != out / RUNNING or not source.is_dir():
+        return
+    target = out / "records" / source.name
+    make_dirs(target.parent, root=out)
+    with writing(target, "moving a run record to"):
+        os.replace(source, target)
+    row["run_dir"] = str(target)
 
 
 def _resumable(out: Path, specs: list[RunSpec]) -> dict[tuple, dict]:
@@ -343,7 +417,12 @@ def _execute(backend, todo: list[RunSpec], done: dict, out: Path, progress: bool
                 row["config_hash"] = fingerprint_hash(spec.fingerprint)
             done[key] = row
             if row.get("status") != "lost":  # a backend failure is not stored: --resume reruns it
-                write_json(row_path(out, key), row)
+                try:
+                    _finished_record(out, row)
+                    write_json(row_path(out, key), row, root=out)
+                except DiskError as err:
+                    raise DiskError(f"{err}; the bench stopped (the rows stored before are kept: `pipflow bench ... "
+                                    f"--out {out} --resume` continues once there is space)", err.path, err.errno) from None
             fresh += 1
             bar.advance(task_id)
             if on_row is not None:
@@ -450,14 +529,15 @@ def markdown_table(results: dict) -> str:
 
 
 def _write(out: Path, rows: list[dict], results: dict) -> None:
-    write_json(out / "results.json", results)
-    write_json(out / "runs.json", rows)
-    with open(out / "runs.csv", "w", newline="", encoding="utf-8") as fh:
-        writer = csv.DictWriter(fh, fieldnames=RESULT_FIELDS, extrasaction="ignore")
-        writer.writeheader()
-        for row in rows:
-            writer.writerow({k: (json.dumps(v) if isinstance(v, (list, dict)) else v) for k, v in row.items()})
-    atomic_write(out / "table.md", markdown_table(results) + "\n")
+    write_json(out / "results.json", results, root=out)
+    write_json(out / "runs.json", rows, root=out)
+    text = io.StringIO(newline="")
+    writer = csv.DictWriter(text, fieldnames=RESULT_FIELDS, extrasaction="ignore")
+    writer.writeheader()
+    for row in rows:
+        writer.writerow({k: (json.dumps(v) if isinstance(v, (list, dict)) else v) for k, v in row.items()})
+    atomic_write(out / "runs.csv", text.getvalue(), root=out)
+    atomic_write(out / "table.md", markdown_table(results) + "\n", root=out)
 
 
 def chosen_backend(args: argparse.Namespace) -> str:
@@ -497,8 +577,6 @@ def bench_main(args: argparse.Namespace) -> int:
         raise UserError(f"--jobs {args.jobs}: expected 1 or more parallel runs (unset: one per CPU)")
     inputs = key_values(args.input or [])
     matrix = parse_matrix(args.matrix)
-    # the servers the user names here may receive provider keys (pipflow.language.llm.user_named)
-    os.environ["PIPFLOW_GIVEN_INPUTS"] = json.dumps([*inputs.values(), *(v for vs in matrix.values() for v in vs)])
     config = BenchConfig(
         tasks_file=tasks_file, workflow=args.workflow, seeds=args.seeds,
         jobs=_workers(args.jobs), out=Path(args.out or f"bench-out/{stamp}"),

@@ -8,16 +8,23 @@ a tenth of the build (0.04-0.07 s against 0.4-0.8 s).
 
 The key is a hash of everything that shapes the parser: the grammar text, the options (the lexer
 class by its qualified name), lark's version, Python's version and this module's format. An
-entry that is missing, stale, damaged or written by anything else is rebuilt, never an error: a
-file is trusted only when it belongs to the user, nobody else may write it, its header names this
-format and key, and the SHA-256 of its body matches (that catches damage and other accounts, not a
-forger with the user's own rights, who could just as well edit pipflow itself).
+entry that is missing, stale, damaged or written by anything else is rebuilt, never an error.
+
+A pickle is code, and lark offers no other form for an Earley parser (``Lark.save`` is LALR-only:
+lark issues #788 and #1348), so an entry is loaded only when all of this holds (issue 21: another
+user's link in a shared cache folder, pointing at a root-owned file of pickle bytes, ran code as
+root): the folder is this user's and writable by nobody else (opened once and checked on its
+descriptor; a new one is made with mode 0700); the entry is opened through that descriptor with
+``O_NOFOLLOW`` (a link is never followed, whoever placed it) and is a regular file of this user
+that nobody else may write (checked on the open file); its header names this format and key and
+the SHA-256 of its body; and the body is decoded by an unpickler that builds only lark's own
+classes (a forged entry cannot name ``os.system`` or import a module of its choosing).
 
 Where: ``$PIPFLOW_GRAMMAR_CACHE_DIR`` if set (set to the empty string to keep parsers in memory
 only), else ``$XDG_CACHE_HOME/pipflow/grammar`` (``~/.cache/pipflow/grammar``), beside the step
 cache of :mod:`pipflow.engine.cache`. Like that cache, the folder is marked with a
 ``CACHEDIR.TAG`` naming pipflow, and nothing is written into an existing folder that holds other
-files without the mark. Writers write a temporary file in the folder and rename it into place,
+files without the mark, nor into a folder others may write. Writers write a temporary file in the folder and rename it into place,
 so concurrent runs never see half a file. A folder that cannot be written costs only the cache.
 """
 from __future__ import annotations
@@ -30,11 +37,12 @@ import io
 import os
 import pickle
 import re
+import stat
 import sys
-import tempfile
 import threading
 import time
 import types
+import uuid
 from pathlib import Path
 from typing import Any
 
@@ -53,6 +61,10 @@ _MAGIC = b"pipflow-earley"
 _SUFFIX = ".earley"
 _NAME = re.compile(r"^[0-9a-f]{64}\.earley$")
 _TEMP = re.compile(r"^\.tmp-\w+\.earley$")
+_DIRECTORY = getattr(os, "O_DIRECTORY", 0)
+_NOFOLLOW = getattr(os, "O_NOFOLLOW", 0)
+_CLOEXEC = getattr(os, "O_CLOEXEC", 0)
+_NONBLOCK = getattr(os, "O_NONBLOCK", 0)
 KEEP = 8  # parsers kept on disk (grammars in use, and a few recent edits of them)
 
 _MEMORY: dict[str, Lark] = {}  # key -> parser built or loaded by this process
@@ -128,22 +140,39 @@ def _header(key: str, digest: str) -> bytes:
 
 
 def _load(folder: Path, key: str) -> Lark | None:
-    """The parser stored under ``key``, or ``None`` for anything that does not verify."""
+    """The parser stored under ``key``, or ``None`` for anything that does not verify.
+
+    A pickle is code, so the file must be one this user wrote into a folder nobody else can
+    write: the folder is opened once and checked on its descriptor (:func:`_private`), the entry
+    is opened through that descriptor with ``O_NOFOLLOW`` (a link, whoever placed it, is never
+    followed) and checked on the open file (a regular file of this user, writable by nobody
+    else); its header must name this format and key and its body's SHA-256; and the body is
+    decoded by :class:`_LarkUnpickler`, which builds only lark's own classes."""
     try:
-        with open(_entry(folder, key), "rb") as fh:
-            if not _own(os.fstat(fh.fileno())):
+        dir_fd = os.open(folder, os.O_RDONLY | _DIRECTORY | _CLOEXEC)
+    except OSError:
+        return None
+    try:
+        if not _private(os.fstat(dir_fd)):
+            return None
+        fd = os.open(_entry(folder, key).name, os.O_RDONLY | _NOFOLLOW | _CLOEXEC | _NONBLOCK, dir_fd=dir_fd)
+        with os.fdopen(fd, "rb") as fh:
+            info = os.fstat(fh.fileno())
+            if not (stat.S_ISREG(info.st_mode) and _own(info)):
                 return None
             raw = fh.read()
     except OSError:
         return None
+    finally:
+        os.close(dir_fd)
     head, sep, body = raw.partition(b"\n")
     if not sep or head + b"\n" != _header(key, hashlib.sha256(body).hexdigest()):
         return None
     paused = gc.isenabled()
     gc.disable()  # the body is ~10^5 small objects: collections while loading cost 4x the load
     try:
-        parser = pickle.loads(body)
-    except Exception:  # noqa: BLE001 - any failure to load (a renamed class, another lark) is a miss
+        parser = _LarkUnpickler(io.BytesIO(body)).load()
+    except Exception:  # noqa: BLE001 - any failure to load (a renamed class, another lark, a refused name) is a miss
         return None
     finally:
         if paused:
@@ -151,12 +180,54 @@ def _load(folder: Path, key: str) -> Lark | None:
     return parser if isinstance(parser, Lark) else None
 
 
-def _own(stat: os.stat_result) -> bool:
-    """Whether a file is this user's and writable by nobody else: unpickling runs code, so a file
-    another account could have written (a shared or mistyped cache folder) is never loaded."""
+def _own(info: os.stat_result) -> bool:
+    """Whether a file (or folder) is this user's and writable by nobody else."""
     if not hasattr(os, "getuid"):
         return True
-    return stat.st_uid == os.getuid() and not stat.st_mode & 0o022
+    return info.st_uid == os.getuid() and not info.st_mode & 0o022
+
+
+def _private(info: os.stat_result) -> bool:
+    """Whether a folder may hold parsers this process loads: a folder (not a link: it was opened
+    as one), this user's, and writable by nobody else. A shared folder (``/tmp``-like, mode 1777,
+    or group-writable) is never used: someone else could place an entry there."""
+    return stat.S_ISDIR(info.st_mode) and _own(info)
+
+
+#: what a stored parser may be built from: lark's own classes (and the two helpers it pickles)
+_LARK_MODULE = re.compile(r"^lark(\.[A-Za-z_][A-Za-z0-9_]*)*$")
+_ALLOWED_FUNCTIONS = {("functools", "partial"), ("lark.parser_frontends", "_match_earley_basic"),
+                      ("lark.parser_frontends", "_match_earley_dynamic")}
+_MODULES_BY_NAME = {"re", "regex"}  # what the ``import_module`` entries may name (lark's regex module)
+
+
+def _import_regex_module(name: str) -> types.ModuleType:
+    if name not in _MODULES_BY_NAME:
+        raise pickle.UnpicklingError(f"a stored parser may not import {name!r}")
+    return importlib.import_module(name)
+
+
+class _LarkUnpickler(pickle.Unpickler):
+    """Decodes a stored parser from lark's own classes only. A forged entry (one that passed
+    every file check: written by this very user) still cannot name ``os.system`` or import a
+    module of its choosing: a name outside lark is refused before any import happens."""
+
+    def find_class(self, module: str, name: str) -> Any:
+        if "." in name:  # no attribute paths (protocol 4 allows "A.b"): only top-level names
+            raise pickle.UnpicklingError(f"a stored parser may not name {module}.{name}")
+        if (module, name) == ("importlib", "import_module"):
+            return _import_regex_module
+        if (module, name) in _ALLOWED_FUNCTIONS:
+            return super().find_class(module, name)
+        if _LARK_MODULE.match(module):
+            found = super().find_class(module, name)
+            if isinstance(found, type):
+                return found
+        elif module in sys.modules:  # a lexer class of the caller's (already imported: nothing is imported here)
+            found = getattr(sys.modules[module], name, None)
+            if isinstance(found, type) and issubclass(found, Lexer):
+                return found
+        raise pickle.UnpicklingError(f"a stored parser may not name {module}.{name}")
 
 
 class _Pickler(pickle.Pickler):
@@ -170,8 +241,9 @@ class _Pickler(pickle.Pickler):
 
 
 def _store(folder: Path, key: str, parser: Lark) -> None:
-    """Write the parser under ``key`` (temporary file, then rename); any failure leaves the
-    cache as it was."""
+    """Write the parser under ``key`` (temporary file, then rename, through the folder's
+    descriptor); any failure leaves the cache as it was. Only a private folder is written
+    (:func:`_private`); a new one is made with mode 0700."""
     buffer = io.BytesIO()
     stored = copy.copy(parser)
     stored.grammar = None  # the unanalysed grammar: lark reads it only while building (a third of the bytes)
@@ -181,54 +253,85 @@ def _store(folder: Path, key: str, parser: Lark) -> None:
         return
     body = buffer.getvalue()
     try:
-        if not _claim(folder):
-            return
-        _write_atomically(folder, _entry(folder, key), _header(key, hashlib.sha256(body).hexdigest()), body)
-        _prune(folder)
+        dir_fd = _claim(folder)
     except OSError:
         return
-
-
-def _prune(folder: Path) -> None:
-    """Keep the :data:`KEEP` newest parsers (each grammar edit makes a new key, ~0.8 MB) and
-    remove temporary files a crashed writer left more than an hour ago; only this cache's names."""
-    entries = sorted((p for p in folder.iterdir() if _NAME.match(p.name)), key=_mtime, reverse=True)
-    stale = [p for p in folder.iterdir() if _TEMP.match(p.name) and time.time() - _mtime(p) > 3600]
-    for path in entries[KEEP:] + stale:
-        path.unlink(missing_ok=True)
-
-
-def _mtime(path: Path) -> float:
+    if dir_fd is None:
+        return
     try:
-        return path.stat().st_mtime
+        _write_atomically(dir_fd, _entry(folder, key).name, _header(key, hashlib.sha256(body).hexdigest()), body)
+        _prune(dir_fd)
+    except OSError:
+        return
+    finally:
+        os.close(dir_fd)
+
+
+def _prune(dir_fd: int) -> None:
+    """Keep the :data:`KEEP` newest parsers (each grammar edit makes a new key, ~0.8 MB) and
+    remove temporary files a crashed writer left more than an hour ago; only this cache's names
+    (links among them are removed as links)."""
+    names = os.listdir(dir_fd)
+    entries = sorted((n for n in names if _NAME.match(n)), key=lambda n: _mtime(dir_fd, n), reverse=True)
+    stale = [n for n in names if _TEMP.match(n) and time.time() - _mtime(dir_fd, n) > 3600]
+    for name in entries[KEEP:] + stale:
+        try:
+            os.unlink(name, dir_fd=dir_fd)
+        except OSError:
+            pass
+
+
+def _mtime(dir_fd: int, name: str) -> float:
+    try:
+        return os.stat(name, dir_fd=dir_fd, follow_symlinks=False).st_mtime
     except OSError:
         return 0.0
 
 
-def _claim(folder: Path) -> bool:
-    """Whether pipflow may write in ``folder``: it is marked as this cache, or new or empty
-    (then marked now). A folder holding anything else is left alone."""
-    marker = folder / MARKER
+def _claim(folder: Path) -> int | None:
+    """A descriptor of ``folder`` when pipflow may write there: a private folder
+    (:func:`_private`) that is marked as this cache, or new (made with mode 0700) or empty (then
+    marked now). ``None`` for anything else, which is left alone."""
+    if not folder.exists():
+        folder.mkdir(mode=0o700, parents=True, exist_ok=True)
+    dir_fd = os.open(folder, os.O_RDONLY | _DIRECTORY | _CLOEXEC)
     try:
-        if marker.read_text(encoding="utf-8", errors="replace") == _MARKER_TEXT:
-            return True
-    except OSError:
-        pass
-    if folder.exists() and (not folder.is_dir() or any(folder.iterdir())):
-        return False
-    folder.mkdir(parents=True, exist_ok=True)
-    _write_atomically(folder, marker, _MARKER_TEXT.encode("utf-8"))
-    return True
+        if not _private(os.fstat(dir_fd)):
+            os.close(dir_fd)
+            return None
+        try:
+            fd = os.open(MARKER, os.O_RDONLY | _NOFOLLOW | _CLOEXEC | _NONBLOCK, dir_fd=dir_fd)
+            with os.fdopen(fd, "rb") as fh:
+                if fh.read(len(_MARKER_TEXT) + 1).decode("utf-8", "replace") == _MARKER_TEXT:
+                    return dir_fd
+        except OSError:
+            pass
+        if os.listdir(dir_fd):
+            os.close(dir_fd)
+            return None
+        _write_atomically(dir_fd, MARKER, _MARKER_TEXT.encode("utf-8"))
+        return dir_fd
+    except BaseException:
+        try:
+            os.close(dir_fd)
+        except OSError:
+            pass
+        raise
 
 
-def _write_atomically(folder: Path, target: Path, *parts: bytes) -> None:
-    """A temporary file in ``folder``, renamed onto ``target``: readers see all of it or none."""
-    fd, tmp = tempfile.mkstemp(dir=folder, prefix=".tmp-", suffix=_SUFFIX)
+def _write_atomically(dir_fd: int, name: str, *parts: bytes) -> None:
+    """A temporary file in the folder (created exclusively, mode 0600), renamed onto ``name``:
+    readers see all of it or none, and a link at ``name`` is replaced, never written through."""
+    tmp = f".tmp-{uuid.uuid4().hex}{_SUFFIX}"
+    fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | _NOFOLLOW | _CLOEXEC, 0o600, dir_fd=dir_fd)
     try:
         with os.fdopen(fd, "wb") as fh:
             for part in parts:
                 fh.write(part)
-        os.replace(tmp, target)
+        os.replace(tmp, name, src_dir_fd=dir_fd, dst_dir_fd=dir_fd)
     except BaseException:
-        Path(tmp).unlink(missing_ok=True)
+        try:
+            os.unlink(tmp, dir_fd=dir_fd)
+        except OSError:
+            pass
         raise

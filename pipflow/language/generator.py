@@ -96,6 +96,7 @@ def generate(
     log: Callable[[str], None] = lambda message: None,
     previous: dict[str, Any] | None = None,
     reader: str = "model",
+    named: Callable[[str], bool] | None = None,
 ) -> dict[str, Any]:
     """One generator round; returns the outputs of step ``llm.problem``. ``prompt`` None: the
     world's domain's template (:attr:`pipflow.taskdomain.TaskDomain.default_prompt`).
@@ -106,7 +107,9 @@ def generate(
     the prompt is varied (:func:`pipflow.language.feedback.vary`) and the ``varied`` output says
     how. ``reader`` ``offline-first``: the offline reading when the parser understands the command
     (and its Refusal when it finds it impossible), the model only when it does not understand it.
-    The output ``reader`` says whose reading the round's goal is (``offline`` or ``model``)."""
+    The output ``reader`` says whose reading the round's goal is (``offline`` or ``model``).
+    ``named(value)``: whether the user gave a value (a server that may receive the provider
+    key: :func:`pipflow.language.llm.key_may_go_to`)."""
     model = resolve_model(model)
     domain = task_domain(world)
     if reader not in READERS:
@@ -173,7 +176,7 @@ def generate(
             call_model, call_base = ensure_server(model)
         answer = complete(messages, model=call_model, api_base=call_base, timeout=timeout,
                           retries=retries, temperature=temperature_now, max_tokens=max_tokens,
-                          extra=extra, deadline=deadline)
+                          extra=extra, deadline=deadline, named=named)
         text, usage = answer.text, answer.usage
         log(f"llm: {model} answered in {usage['latency_s']} s, {usage.get('total_tokens')} tokens")
     if save is not None:  # the record first: a paid answer is kept even if the cache is not writable

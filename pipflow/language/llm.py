@@ -19,6 +19,7 @@ from dataclasses import dataclass, field
 from typing import Any, Callable
 from urllib.parse import urlsplit
 
+from pipflow.engine.store import register_secrets, secrets_in
 from pipflow.errors import InputError, LLMError
 from pipflow.liberrors import LITELLM
 from pipflow.llmslot import llm_slot
@@ -37,8 +38,6 @@ _SECRET_ENV = re.compile(r"(KEY|TOKEN|SECRET|PASSWORD)", re.IGNORECASE)
 MAX_ANSWER_CHARS = 512_000
 #: environment variables in which a user names the server of a model (issue 13, defect 19)
 _BASE_ENV = re.compile(r"(_API_BASE|_BASE_URL|_API_BASES)$")
-#: where the engine's command line lists the values the user gave (-i / --inputs)
-GIVEN_INPUTS_ENV = "PIPFLOW_GIVEN_INPUTS"
 
 
 def resolve_model(model: str | None) -> str:
@@ -89,27 +88,43 @@ def is_loopback(api_base: str) -> bool:
         return False
 
 
-def user_named(api_base: str) -> bool:
+def user_named(api_base: str, named: Callable[[str], bool] | None = None) -> bool:
     """True when the user named this server: in an environment variable that names a server
-    (``OPENAI_API_BASE``, ``PIPFLOW_API_BASE``, ``*_BASE_URL``, ...) or among the values given on
-    the command line (``-i api_base=...``, which the CLI lists in ``PIPFLOW_GIVEN_INPUTS``)."""
+    (``OPENAI_API_BASE``, ``PIPFLOW_API_BASE``, ``*_BASE_URL``, ...) or as a value they gave the
+    run (``-i api_base=...``, ``--inputs``, ``pipflow.run(api_base=...)``, a bench's ``-i`` or
+    ``--matrix``), which the engine answers through ``named``
+    (:meth:`pipflow.engine.step.StepContext.named_by_user`)."""
     want = _norm_base(api_base)
     for name, value in os.environ.items():
-        if name != GIVEN_INPUTS_ENV and _BASE_ENV.search(name.upper()) and value:
+        if _BASE_ENV.search(name.upper()) and value:
             if want in (_norm_base(v) for v in value.split(",")):
                 return True
-    try:
-        given = json.loads(os.environ.get(GIVEN_INPUTS_ENV) or "[]")
-    except ValueError:
-        given = []
-    return isinstance(given, list) and want in (_norm_base(v) for v in given if isinstance(v, str))
+    return named is not None and any(named(v) for v in {api_base, api_base.strip(), api_base.rstrip("/")})
 
 
-def key_may_go_to(api_base: str | None) -> bool:
+def key_may_go_to(api_base: str | None, named: Callable[[str], bool] | None = None) -> bool:
     """Whether a provider key from the environment may be sent to ``api_base``: always to the
     provider's own server (no ``api_base``), else only to a loopback server or one the user named
     (a default in a shared workflow file must not collect keys)."""
-    return not api_base or is_loopback(api_base) or user_named(api_base)
+    return not api_base or is_loopback(api_base) or user_named(api_base, named)
+
+
+def check_no_secrets(model: str, messages: list[dict[str, str]], api_base: str | None, extra: dict | None) -> None:
+    """Refuse a request that would carry the value of a key from the environment anywhere but
+    the provider's own key header: in a message, the server address or another request field
+    (a workflow that wrote ``${env.OPENAI_API_KEY}`` into a command, a prompt file holding a
+    token). The record would show ``[redacted NAME]``, so the user could not even see it leave."""
+    register_secrets()
+    sent = {k: v for k, v in (extra or {}).items() if k != "mock_response"}  # litellm's canned answer stays here
+    where = [("the prompt", json.dumps(messages, ensure_ascii=False)), ("the server address", api_base or ""),
+             ("the request's fields", json.dumps(sent, default=str, ensure_ascii=False))]
+    for part, text in where:
+        names = secrets_in(text)
+        if names:
+            raise InputError(f"{model}: {part} would carry the value of {', '.join(names)} (a key from the "
+                             "environment); pipflow sends a key only in the provider's key header, never inside "
+                             "a prompt or a request's values. Remove it from the command, the prompt template and "
+                             "the workflow")
 
 
 #: the longest time-out or deadline accepted, in seconds (a day; more is a typo, and the
@@ -189,6 +204,7 @@ def complete(
     backoff: float = 1.0,
     deadline: float | None = None,
     sleep: Callable[[float], None] = time.sleep,
+    named: Callable[[str], bool] | None = None,
 ) -> Completion:
     """Ask ``model`` for one chat completion; retry rate limits, time-outs, server errors and
     dropped connections ``retries`` times with exponential backoff; raise :class:`LLMError`
@@ -198,10 +214,14 @@ def complete(
     so ``retries=2`` means at most 3 requests, and the error message counts them. ``timeout``
     bounds one request; ``deadline`` (seconds) bounds the whole call with its retries and waits.
     ``extra`` carries provider-specific request fields (``response_format``, a llama.cpp
-    ``grammar`` in ``extra_body``, litellm's ``mock_response`` in tests)."""
+    ``grammar`` in ``extra_body``, litellm's ``mock_response`` in tests). ``named(value)`` says
+    whether the user gave a value (the provider key goes to ``api_base`` only if they named it
+    or it is on loopback); no value of a key from the environment is ever sent in the request's
+    content (:func:`check_no_secrets`)."""
     check_limits(retries=retries, max_tokens=max_tokens, timeout=timeout, deadline=deadline)
     if api_base:
         check_api_base(api_base)
+    check_no_secrets(model, messages, api_base, extra)
     litellm = _import_litellm()
     if not {"mock_response", "api_key"} & set(extra or {}):  # canned answers (tests), a key given
         check_model(litellm, model, api_base)
@@ -210,7 +230,7 @@ def complete(
     withheld = False
     if api_base:
         kwargs["api_base"] = api_base
-        if not key_may_go_to(api_base):
+        if not key_may_go_to(api_base, named):
             kwargs["api_key"] = "no-key"  # never the environment's provider key (see key_may_go_to)
             withheld = True
         elif model.startswith("openai/") and not os.environ.get("OPENAI_API_KEY"):

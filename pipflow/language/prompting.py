@@ -12,6 +12,7 @@ workflow folder from reaching Python internals.
 """
 from __future__ import annotations
 
+import os
 from pathlib import Path
 from typing import Any
 
@@ -54,15 +55,32 @@ def prompt_problem(name: object, base_dir: Path | None = None) -> str | None:
     return None
 
 
+def _contained_loader(base: type, not_found: type, folders: list[str]):
+    """A jinja2 ``FileSystemLoader`` that reads a template or partial (``{% include %}``,
+    ``{% extends %}``) only when it really lies in one of its folders: a link among a shared
+    template's partials (``header.j2 -> ~/.ssh/id_rsa``) would otherwise put that file into the
+    prompt. jinja2 itself refuses ``..`` in names."""
+
+    class Contained(base):  # type: ignore[misc, valid-type]
+        def get_source(self, environment, name):  # noqa: ANN001 - jinja2's signature
+            source, filename, uptodate = super().get_source(environment, name)
+            real = os.path.realpath(filename)
+            if not any(real.startswith(os.path.realpath(f).rstrip(os.sep) + os.sep) for f in self.searchpath):
+                raise not_found(f"{name} (it leads through a link to {real}, outside the template folders)")
+            return source, filename, uptodate
+
+    return Contained(folders)
+
+
 def render(template: str, variables: dict[str, Any], base_dir: Path | None = None) -> list[dict[str, str]]:
     """Render a template into chat messages ``[{"role", "content"}]``."""
-    from jinja2 import FileSystemLoader, StrictUndefined, TemplateError
+    from jinja2 import FileSystemLoader, StrictUndefined, TemplateError, TemplateNotFound
     from jinja2.sandbox import SandboxedEnvironment
 
     path = find_template(template, base_dir)
     # the template's own folder first, so a user's variant may import its own partials
     folders = [str(path.parent)] + [str(d) for d in (PROMPTS_DIR, _REPO_PROMPTS) if d.is_dir()]
-    env = SandboxedEnvironment(loader=FileSystemLoader(folders), undefined=StrictUndefined,
+    env = SandboxedEnvironment(loader=_contained_loader(FileSystemLoader, TemplateNotFound, folders), undefined=StrictUndefined,
                                trim_blocks=True, lstrip_blocks=True, autoescape=False)
     try:
         tmpl = env.get_template(path.name)

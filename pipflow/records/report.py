@@ -3,7 +3,11 @@
 Why static files with relative ``<img>`` links: a run record must stay inspectable anywhere
 (copied, zipped, attached to an issue) without a server, and the pictures the simulation already
 wrote are linked in place rather than copied. Pictures the report draws itself (dependency
-graph, Gantt chart, bench plots) go to ``DIR/report/``; the page is ``DIR/report.html``.
+graph, Gantt chart, bench plots) go to ``DIR/report/``; the page is ``DIR/report.html``. With
+``-o PAGE`` elsewhere, nothing is written into the record (it may be read-only): the pictures go
+to ``PAGE_files/`` beside the page. Every write goes through :mod:`pipflow.engine.writes`: inside
+the record no link is followed (a ``report.html`` or ``report/`` that is a link is refused), and a
+full or read-only disk is a user error naming it.
 
 A small inline script marks ``<body data-images-ok="true">`` once every image has loaded with a
 non-zero size, so a headless browser can check the page really renders its pictures.
@@ -29,6 +33,8 @@ from pathlib import Path
 from typing import Any
 
 from pipflow import pictures
+from pipflow.engine.store import shown_status
+from pipflow.engine.writes import make_dirs, write_file
 from pipflow.errors import InputError
 from pipflow.goalcounts import describe, holds, is_bound, value_problems
 from pipflow.meaning import misread_cell
@@ -59,24 +65,51 @@ pre.answer { max-height: 24em; overflow-y: auto; } .small { font-size: .85em; co
 </style>"""
 
 
+#: how a picture the report draws is linked until the page's place is known (a scheme, so the
+#: rebasing of record links leaves it alone)
+_PIC = "pipflowpic:"
+
+
+class _Pictures:
+    """The folder where the report draws its own pictures (created on first use; below the record
+    ``root`` without following a link) and how the page links them."""
+
+    def __init__(self, folder: Path, root: Path | None):
+        self.folder, self.root, self._made = folder, root, False
+
+    def path(self, name: str) -> Path:
+        if not self._made:
+            make_dirs(self.folder, root=self.root)
+            self._made = True
+        return self.folder / name
+
+    @staticmethod
+    def src(name: str) -> str:
+        return _PIC + name
+
+
 def write_report(directory: str | Path, output: str | Path | None = None) -> Path:
-    """Write ``report.html`` (or ``output``) for a run or bench directory and return its path.
-    Links stay relative: to the directory, or rebased when ``output`` lies elsewhere."""
+    """Write ``report.html`` (or ``output``: a file, or a folder to write ``report.html`` in) for a
+    run or bench directory and return its path. Links stay relative: to the directory, or rebased
+    when the page lies elsewhere; a page written elsewhere writes nothing into the record."""
     d = Path(directory)
-    if (d / "results.json").is_file():
-        body = _bench_body(d)
-        title = f"pipflow bench: {d.name}"
-    elif (d / "steps").is_dir() or (d / "run.json").is_file() or (d / "status.json").is_file():
-        body = _run_body(d)
-        title = f"pipflow run: {d.name}"
-    else:
+    is_bench = (d / "results.json").is_file()
+    if not is_bench and not ((d / "steps").is_dir() or (d / "run.json").is_file() or (d / "status.json").is_file()):
         raise InputError(f"{d}: neither a run directory (steps/, run.json) nor a bench directory (results.json)")
+    out, root = _page_path(d, output)
+    pics = _Pictures(root / "report" if root is not None and out.parent == root else out.parent / f"{out.stem}_files",
+                     root)
+    if is_bench:
+        body = _bench_body(d, pics)
+        title = f"pipflow bench: {d.name}"
+    else:
+        body = _run_body(d, pics)
+        title = f"pipflow run: {d.name}"
     page = (f"<!DOCTYPE html>\n<html lang='en'><head><meta charset='utf-8'><title>{_e(title)}</title>"
             f"{_STYLE}</head>\n<body>\n<h1>{_e(title)}</h1>\n{body}\n{_CHECK_SCRIPT}\n</body></html>\n")
-    out = Path(output) if output else d / "report.html"
-    out.parent.mkdir(parents=True, exist_ok=True)
-    if out.parent.resolve() != d.resolve():
-        base = os.path.relpath(d.resolve(), out.parent.resolve())
+    record = root if root is not None else d.resolve()
+    if out.parent != record:
+        base = os.path.relpath(record, out.parent)
 
         def rebase(m: "re.Match") -> str:
             url = m.group(2)
@@ -85,8 +118,26 @@ def write_report(directory: str | Path, output: str | Path | None = None) -> Pat
             return f"{m.group(1)}='{_e(Path(base, html.unescape(url)).as_posix())}'"
 
         page = re.sub(r"(src|href)='([^']*)'", rebase, page)
-    out.write_text(page, encoding="utf-8")
+    page = page.replace(_PIC, _e(Path(os.path.relpath(pics.folder, out.parent)).as_posix() + "/"))
+    write_file(out, page.encode("utf-8"), root=root)
     return out
+
+
+def _page_path(d: Path, output: str | Path | None) -> tuple[Path, Path | None]:
+    """Where the page goes, and the record's folder when the page goes inside the record (then no
+    link is followed on the way: the record's own links are not the user's). A page elsewhere
+    is where the user named it (their links are theirs to follow)."""
+    record = Path(os.path.abspath(d))
+    if output is None:
+        return record / "report.html", record
+    out = Path(os.path.abspath(Path(output).expanduser()))
+    if str(output).endswith(("/", os.sep)) or (out.is_dir() and not out.is_symlink()):
+        out = out / "report.html"  # a folder: the page goes in it, under the usual name
+    if out.parent == record or record in out.parent.parents:
+        make_dirs(out.parent, root=record)
+        return out, record
+    make_dirs(out.parent)
+    return Path(os.path.realpath(out.parent)) / out.name, None
 
 
 # ------------------------------------------------------------------------------------------
@@ -152,16 +203,15 @@ def _find(steps, test) -> tuple[str, Path, dict] | None:
     return hits[-1] if hits else None
 
 
-def _run_body(d: Path) -> str:
+def _run_body(d: Path, drawn: _Pictures) -> str:
     info = _read(d / "run.json", {}) or {}
+    info = info if isinstance(info, dict) else {}
     info.update(_read(d / "status.json", {}) or {})
     inputs = _read(d / "inputs.json", {}) or {}
     steps = _steps(d)
-    rep = d / "report"
-    rep.mkdir(exist_ok=True)
     parts = []
 
-    status = info.get("status", "?")
+    status = shown_status(d, info) if (d / "run.json").is_file() else info.get("status", "?")
     cls = "ok" if status in ("ok", "success", "succeeded", "done", "completed") else "bad"
     command = inputs.get("command") or next((o["command"] for _, _, o in steps if isinstance(o.get("command"), str)), None)
     parts.append(_table(["", ""], [["status", Raw(f"<span class='{cls}'>{_e(status)}</span>")],
@@ -207,16 +257,16 @@ def _run_body(d: Path) -> str:
                      f"{len(graph_s[2]['graph'].get('nodes', []))} subtasks)</p>")
     elif graph_s:
         try:
-            pictures.dependency_graph(graph_s[2]["graph"], rep / "graph.png")
-            parts.append("<h2>Dependency graph</h2>" + _img("report/graph.png", "dependency graph"))
+            pictures.dependency_graph(graph_s[2]["graph"], drawn.path("graph.png"))
+            parts.append("<h2>Dependency graph</h2>" + _img(drawn.src("graph.png"), "dependency graph"))
         except Exception as exc:  # a picture must never hide the rest of the report
             parts.append(f"<h2>Dependency graph</h2><p class='bad'>could not draw: {_e(exc)}</p>")
     if schedule and not pictures.wanted(mode, "gantt", pictures.size_of("gantt", schedule)):
         parts.append(f"<h2>Schedule</h2><p>Gantt chart not drawn (pictures: {_e(mode)}; "
                      f"{pictures.size_of('gantt', schedule)} working robots)</p>")
     elif schedule:
-        pictures.gantt(schedule, rep / "gantt.png")
-        parts.append("<h2>Schedule</h2>" + _img("report/gantt.png", "Gantt chart per robot"))
+        pictures.gantt(schedule, drawn.path("gantt.png"))
+        parts.append("<h2>Schedule</h2>" + _img(drawn.src("gantt.png"), "Gantt chart per robot"))
 
     if sim_s:
         name, sd, sim = sim_s
@@ -226,8 +276,8 @@ def _run_body(d: Path) -> str:
         src = f"steps/{name}/artifacts/paths.png" if "paths.png" in pics else None
         traj = _read(art / "trajectories.json", {}).get("trajectories", {}) if src is None and world else {}
         if traj and pictures.wanted(mode, "paths", pictures.size_of("paths", traj)):
-            pictures.path_map(world, traj, rep / "paths.png", travel=sim.get("travel"))
-            src = "report/paths.png"
+            pictures.path_map(world, traj, drawn.path("paths.png"), travel=sim.get("travel"))
+            src = drawn.src("paths.png")
         if src:
             parts.append("<h2>Robot paths</h2>" + _img(src, "robot paths"))
         snaps = [p for p in pics if p.startswith("snapshot_")]
@@ -409,15 +459,13 @@ def _loop_section(rounds: list[dict]) -> str:
 # ------------------------------------------------------------------------------------------
 
 
-def _bench_body(d: Path) -> str:
+def _bench_body(d: Path, drawn: _Pictures) -> str:
     """Variants side by side: a summary row per variant, then per task each variant's SR,
     understanding, travel and makespan (mean and spread over seeds), with the difference to the
     first variant; the configuration shows the matrix that made the variants."""
     results = _read(d / "results.json")
     if not isinstance(results, dict) or "tasks" not in results:
         raise InputError(f"{d / 'results.json'}: not a results file (needs 'summary' and 'tasks')")
-    rep = d / "report"
-    rep.mkdir(exist_ok=True)
     runs = [upgrade_travel_keys(r) for r in (_read(d / "runs.json", []) or []) if isinstance(r, dict)]
     results = upgrade_results(results)
     config = results.get("config") or {}
@@ -467,8 +515,8 @@ def _bench_body(d: Path) -> str:
             f"<li><b>{_e(tid)}</b>" + (f" [{_e(n)}]" if len(names) > 1 else "") + f": {_e(err)}</li>"
             for n, tid, err in errors) + "</ul>")
     if task_ids:
-        _bench_overview(variants, runs, rep / "overview.png")
-        parts.append("<h2>Per task</h2>" + _img("report/overview.png", "SR and TC-max per task and variant"))
+        _bench_overview(variants, runs, drawn.path("overview.png"))
+        parts.append("<h2>Per task</h2>" + _img(drawn.src("overview.png"), "SR and TC-max per task and variant"))
     return "\n".join(parts)
 
 
@@ -573,5 +621,5 @@ def _bench_overview(variants: list[dict], runs: list[dict], path: Path) -> None:
         if len(variants) > 1:
             a.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(path, dpi=90)
+    pictures.save_figure(fig, path, dpi=90)
     plt.close(fig)

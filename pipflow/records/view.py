@@ -16,9 +16,13 @@ Pages:
 """
 from __future__ import annotations
 
+import errno
 import html
+import ipaddress
 import json
+import sys
 import threading
+import traceback
 import urllib.parse
 import webbrowser
 from dataclasses import dataclass
@@ -26,9 +30,14 @@ from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 from pathlib import Path
 from typing import Any
 
+from pipflow.engine.store import STALE, shown_status, stale_note
+from pipflow.errors import InputError, UserError
 from pipflow.records.compare import compare_html
-from pipflow.errors import InputError
 from pipflow.records.report import write_report
+
+#: the names under which a browser on this machine reaches the server; any other ``Host`` is a
+#: page elsewhere that pointed its own domain at 127.0.0.1 (DNS rebinding)
+LOOPBACK_HOSTS = ("127.0.0.1", "localhost", "::1")
 
 _STYLE = """<style>
 body { font-family: sans-serif; margin: 1.5em 2em; color: #222; }
@@ -56,31 +65,43 @@ class Record:
 
 def scan(root: Path) -> list[Record]:
     """Runs (folders with run.json) and benches (folders with results.json) under ``root``, newest
-    first. A damaged record is listed with status ``damaged`` rather than hiding the rest."""
+    first. A damaged record (not JSON, not a mapping, a text where a number belongs) is listed
+    with status ``damaged`` rather than hiding the rest."""
     found: list[Record] = []
     for marker in sorted(root.rglob("run.json")) + sorted(root.rglob("results.json")):
         d = marker.parent
         rel = d.relative_to(root).as_posix() or "."
+        kind = "run" if marker.name == "run.json" else "bench"
         try:
             info = json.loads(marker.read_text(encoding="utf-8"))
             if not isinstance(info, dict):
                 raise ValueError("not a mapping")
-        except (OSError, ValueError) as err:
-            found.append(Record("run" if marker.name == "run.json" else "bench", rel, d.name, "?", "damaged",
-                                "", None, f"{marker.name}: {err}"))
-            continue
-        if marker.name == "run.json":
-            found.append(Record("run", rel, d.name, str(info.get("name") or Path(str(info.get("workflow", "?"))).stem),
-                                str(info.get("status", "?")), str(info.get("started") or ""), info.get("seconds"),
-                                str(info.get("error") or "")))
-        else:
-            summary = info.get("summary") or {}
-            config = info.get("config") or {}
-            sr = summary.get("sr")
-            found.append(Record("bench", rel, d.name, Path(str(config.get("workflow") or "?")).stem,
-                                "bench", str(info.get("started") or d.name), info.get("wall_seconds"),
-                                f"{summary.get('runs', '?')} runs, SR {100 * float(sr):.0f}%" if sr is not None else ""))
+            found.append(_run_record(d, rel, info) if kind == "run" else _bench_record(d, rel, info))
+        except (OSError, ValueError, TypeError, AttributeError) as err:
+            found.append(Record(kind, rel, d.name, "?", "damaged", "", None, f"{marker.name}: {err}"))
     return sorted(found, key=lambda r: (r.started or r.name, r.name), reverse=True)
+
+
+def _number(value: Any) -> float | None:
+    return float(value) if isinstance(value, (int, float)) and not isinstance(value, bool) else None
+
+
+def _run_record(d: Path, rel: str, info: dict) -> Record:
+    status = shown_status(d, info)
+    detail = str(info.get("error") or (stale_note(d, info) if status == STALE else ""))
+    return Record("run", rel, d.name, str(info.get("name") or Path(str(info.get("workflow", "?"))).stem),
+                  status, str(info.get("started") or ""), _number(info.get("seconds")), detail)
+
+
+def _bench_record(d: Path, rel: str, info: dict) -> Record:
+    summary = info.get("summary") if isinstance(info.get("summary"), dict) else {}
+    config = info.get("config") if isinstance(info.get("config"), dict) else {}
+    sr = summary.get("sr")
+    if sr is not None and _number(sr) is None:
+        raise ValueError(f"summary.sr is {sr!r}, not a number")
+    return Record("bench", rel, d.name, Path(str(config.get("workflow") or "?")).stem, "bench",
+                  str(info.get("started") or d.name), _number(info.get("wall_seconds")),
+                  f"{summary.get('runs', '?')} runs, SR {100 * float(sr):.0f}%" if sr is not None else "")
 
 
 def index_html(root: Path, query: dict[str, str]) -> str:
@@ -129,7 +150,15 @@ class ViewServer:
         self.root = Path(root).resolve()
         if not self.root.is_dir():
             raise InputError(f"{root}: no such folder to view")
-        self._server = ThreadingHTTPServer(("127.0.0.1", port), self._handler())
+        if not isinstance(port, int) or not 0 <= port <= 65535:
+            raise InputError(f"--port {port}: not a port; give 1 to 65535 (or 0: any free port)")
+        try:
+            self._server = ThreadingHTTPServer(("127.0.0.1", port), self._handler())
+        except OSError as err:
+            cause = "it is in use (another server listens there)" if err.errno == errno.EADDRINUSE else \
+                "this user may not listen there" if err.errno == errno.EACCES else (err.strerror or str(err))
+            raise InputError(f"--port {port}: cannot listen on 127.0.0.1:{port}: {cause}; choose another "
+                             "port, or leave --port out for any free one") from None
         self._server.daemon_threads = True
         self._thread: threading.Thread | None = None
 
@@ -150,7 +179,15 @@ class ViewServer:
         self._server.server_close()
 
     def _inside(self, rel: str) -> Path | None:
-        p = (self.root / urllib.parse.unquote(rel).lstrip("/")).resolve()
+        """The path ``rel`` names inside the viewed folder, or None (outside it, or no path a
+        file system accepts: a NUL byte, a name too long, too many levels)."""
+        text = urllib.parse.unquote(rel).lstrip("/")
+        if "\x00" in text or len(text) > 4096:
+            return None
+        try:
+            p = (self.root / text).resolve()
+        except (OSError, ValueError, RuntimeError):
+            return None
         return p if p == self.root or self.root in p.parents else None
 
     def _handler(self) -> type[BaseHTTPRequestHandler]:
@@ -161,6 +198,15 @@ class ViewServer:
                 pass
 
             def do_GET(self) -> None:
+                if not _loopback_host(self.headers.get("Host")):
+                    return self._error(403, "this server answers only requests to 127.0.0.1, localhost or [::1]")
+                try:
+                    self._get()
+                except Exception as err:  # a fault of the server: an answer saying so, never a dropped connection
+                    traceback.print_exc(file=sys.stderr)
+                    return self._error(500, f"pipflow view failed on this request: {type(err).__name__}: {err}")
+
+            def _get(self) -> None:
                 url = urllib.parse.urlsplit(self.path)
                 query = {k: v[-1] for k, v in urllib.parse.parse_qs(url.query).items()}
                 try:
@@ -172,8 +218,13 @@ class ViewServer:
                             return self._error(404, "no such record")
                         page = d / "report.html"
                         marker = d / ("results.json" if (d / "results.json").is_file() else "run.json")
-                        if not page.is_file() or (marker.is_file() and marker.stat().st_mtime > page.stat().st_mtime):
-                            write_report(d)
+                        if page.is_symlink() or not page.is_file() or \
+                                (marker.is_file() and marker.stat().st_mtime > page.stat().st_mtime):
+                            try:
+                                write_report(d)
+                            except UserError as err:  # a link in the record, a read-only or full disk
+                                return self._error(409, f"the report of {d.name} cannot be written: {err}; "
+                                                        f"`pipflow report {d} -o FILE` writes it elsewhere")
                         rel = page.relative_to(view.root).as_posix()
                         return self._redirect("/" + urllib.parse.quote(rel))
                     if url.path == "/compare":
@@ -187,7 +238,7 @@ class ViewServer:
                     kind = {".html": "text/html; charset=utf-8", ".png": "image/png", ".json": "application/json",
                             ".gif": "image/gif", ".svg": "image/svg+xml"}.get(f.suffix, "text/plain; charset=utf-8")
                     return self._send(200, f.read_bytes(), kind)
-                except InputError as err:
+                except UserError as err:
                     return self._error(400, str(err))
 
             def _page(self, text: str) -> None:
@@ -213,6 +264,24 @@ class ViewServer:
                     pass
 
         return Handler
+
+
+def _loopback_host(host: str | None) -> bool:
+    """Whether a ``Host`` header names this machine's loopback (any port); no header (HTTP/1.0, a
+    client on this machine) is let through, since browsers always send one."""
+    if host is None:
+        return True
+    name = host.strip().lower()
+    if name.startswith("["):  # [::1]:port
+        name = name[1:].split("]", 1)[0]
+    elif name.count(":") == 1:
+        name = name.split(":", 1)[0]
+    if name in LOOPBACK_HOSTS or name.endswith(".localhost"):
+        return True
+    try:  # 127.0.0.2 is loopback too; "127.0.0.1.example.com" is not an address
+        return ipaddress.ip_address(name).is_loopback
+    except ValueError:
+        return False
 
 
 def serve(root: str | Path, port: int = 0, open_browser: bool = True) -> None:

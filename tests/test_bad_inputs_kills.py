@@ -1,0 +1,261 @@
+"""Kills and concurrency (issue 21): records tell the truth however a process ends, a bench's
+workers end with it, and two writers never share a folder.
+
+- SIGTERM and SIGHUP end a run as Ctrl-C does: its record says "interrupted" (exit 128 + N);
+  after kill -9 the record cannot say anything, so ``runs`` and ``show`` see that no process holds
+  the run's lock and show it as ``stale`` (never "running" for ever).
+- After kill -9 or SIGTERM of ``pipflow bench`` no pool worker is left (a worker left behind holds
+  the caller's stdout: a script that waits for the bench's output hangs), and ``--resume`` leaves
+  exactly one record per row (no orphan records of killed runs).
+- A second bench into the same ``--out`` is refused while the first runs.
+- Task ids ``a/b`` and ``a_b`` get a row file each (one was overwritten, and every ``--resume``
+  ran a task again).
+
+Everything runs the real ``pipflow`` command in its own process, with real signals."""
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+import yaml
+
+from test_bad_inputs_llm import clean_env
+
+REPO = Path(__file__).resolve().parents[1]
+TASKS = REPO / "benchmarks/warehouse/tasks.yaml"
+
+pytestmark = pytest.mark.usefixtures("no_hang")
+
+SLOW = """\
+pipflow: 1
+name: slow
+steps:
+  - id: spin
+    loop:
+      max: 1000000
+      until: ${iteration < 0}
+      on_max: continue
+      steps:
+        - {id: tick, uses: core.value, with: {value: "${iteration}"}}
+outputs:
+  n: ${spin.iterations}
+"""
+
+
+def command(*args) -> list[str]:
+    return [sys.executable, "-m", "pipflow.engine.cli", *map(str, args)]
+
+
+def pipflow(cwd: Path, *args, timeout: float = 300) -> subprocess.CompletedProcess:
+    return subprocess.run(command(*args), cwd=cwd, capture_output=True, text=True, timeout=timeout,
+                          env=clean_env(PIPFLOW_CACHE_DIR=str(cwd / "stepcache")))
+
+
+def start(cwd: Path, *args) -> subprocess.Popen:
+    return subprocess.Popen(command(*args), cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            env=clean_env(PIPFLOW_CACHE_DIR=str(cwd / "stepcache")))
+
+
+def wait_for(condition, timeout: float = 120, what: str = "") -> None:
+    ends = time.monotonic() + timeout
+    while not condition():
+        if time.monotonic() > ends:
+            raise AssertionError(f"waited {timeout} s for {what}")
+        time.sleep(0.1)
+
+
+def the_run(runs: Path) -> Path:
+    found = [p for p in runs.iterdir() if (p / "run.json").is_file()] if runs.is_dir() else []
+    assert len(found) == 1, found
+    return found[0]
+
+
+def spinning(tmp_path: Path) -> tuple[subprocess.Popen, Path]:
+    """A run of a long loop, started and seen running (some iterations in its event log)."""
+    (tmp_path / "slow.yaml").write_text(SLOW)
+    proc = start(tmp_path, "run", "slow.yaml", "--runs-dir", "runs")
+    wait_for(lambda: (tmp_path / "runs").is_dir() and any((tmp_path / "runs").glob("*/steps/spin/iterations/3")),
+             what="the loop to be running")
+    return proc, the_run(tmp_path / "runs")
+
+
+@pytest.mark.parametrize("sig", ["SIGTERM", "SIGHUP"])
+def test_sigterm_and_sighup_end_a_run_as_interrupted(tmp_path, sig):
+    proc, run = spinning(tmp_path)
+    listed = pipflow(tmp_path, "runs", "--runs-dir", "runs")
+    assert " running " in listed.stdout, listed.stdout  # alive: not stale
+    proc.send_signal(getattr(signal, sig))
+    out, err = proc.communicate(timeout=60)
+    assert proc.returncode == 128 + getattr(signal, sig), err
+    assert f"interrupted by {sig}" in err and "Traceback" not in err
+    info = json.loads((run / "run.json").read_text())
+    assert info["status"] == "interrupted" and sig in info["error"], info
+    events = [json.loads(line) for line in (run / "events.jsonl").read_text().splitlines()]
+    assert events[-1]["event"] == "error" and events[-1]["status"] == "interrupted"
+
+
+def test_a_run_killed_with_sigkill_is_shown_stale(tmp_path):
+    proc, run = spinning(tmp_path)
+    proc.kill()
+    proc.communicate(timeout=60)
+    assert json.loads((run / "run.json").read_text())["status"] == "running"  # it could not say more
+    listed = pipflow(tmp_path, "runs", "--runs-dir", "runs")
+    line = next(line for line in listed.stdout.splitlines() if run.name in line)
+    assert line.split()[1] == "stale" and "pipflow resume" in line, listed.stdout
+    assert run.name in pipflow(tmp_path, "runs", "--runs-dir", "runs", "--status", "stale").stdout
+    shown = pipflow(tmp_path, "show", run.name, "--runs-dir", "runs")
+    assert "status    stale" in shown.stdout and "killed" in shown.stdout, shown.stdout
+
+
+def test_sigterm_of_a_run_through_the_api(tmp_path):
+    """A script calling ``pipflow.run`` that is sent SIGTERM: the record says interrupted."""
+    (tmp_path / "slow.yaml").write_text(SLOW)
+    script = "import pipflow\npipflow.run('slow.yaml', runs_dir='runs')\n"
+    proc = subprocess.Popen([sys.executable, "-c", script], cwd=tmp_path, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True, env=clean_env(PIPFLOW_CACHE_DIR=str(tmp_path / "c")))
+    wait_for(lambda: any((tmp_path / "runs").glob("*/steps/spin/iterations/3")), what="the loop to be running")
+    proc.send_signal(signal.SIGTERM)
+    proc.communicate(timeout=60)
+    info = json.loads((the_run(tmp_path / "runs") / "run.json").read_text())
+    assert info["status"] == "interrupted" and "SIGTERM" in info["error"]
+
+
+# --- benches ----------------------------------------------------------------------------------------
+
+def descendants(pid: int) -> set[int]:
+    """Every process below ``pid`` (from /proc)."""
+    children: dict[int, list[int]] = {}
+    for entry in Path("/proc").iterdir():
+        if entry.name.isdigit():
+            try:
+                fields = (entry / "stat").read_text().rsplit(")", 1)[1].split()
+            except OSError:
+                continue
+            children.setdefault(int(fields[1]), []).append(int(entry.name))
+    found, todo = set(), [pid]
+    while todo:
+        for child in children.get(todo.pop(), []):
+            if child not in found:
+                found.add(child)
+                todo.append(child)
+    return found
+
+
+def alive(pid: int) -> bool:
+    try:
+        state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
+    except OSError:
+        return False
+    return state != "Z"
+
+
+def rows_of(out: Path) -> list[Path]:
+    return list((out / "runs").rglob("*.json")) if (out / "runs").is_dir() else []
+
+
+@pytest.mark.parametrize("sig", ["SIGKILL", "SIGTERM"])
+def test_a_killed_bench_leaves_no_worker_and_no_orphan_record(tmp_path, sig):
+    out = tmp_path / "out"
+    proc = start(tmp_path, "bench", TASKS, "--jobs", "2", "--out", out, "-q")
+    workers: set[int] = set()
+    try:
+        wait_for(lambda: len(rows_of(out)) >= 1, what="a first row")
+        workers = descendants(proc.pid)
+        assert len(workers) >= 2, workers
+        proc.send_signal(getattr(signal, sig))
+        try:
+            _, err = proc.communicate(timeout=60)  # returns only once nothing holds its stdout
+        except subprocess.TimeoutExpired:
+            raise AssertionError(f"after {sig} the bench's output never ended: its workers {sorted(workers)} "
+                                 "hold the pipe") from None
+        if sig == "SIGTERM":
+            assert proc.returncode == 128 + signal.SIGTERM and "interrupted by SIGTERM" in err, err
+        wait_for(lambda: not any(alive(p) for p in workers), timeout=20, what="the workers to end")
+    finally:
+        for pid in workers | descendants(proc.pid):
+            try:
+                os.kill(pid, signal.SIGKILL)
+            except OSError:
+                pass
+        if proc.poll() is None:
+            proc.kill()
+            proc.communicate()
+    done = pipflow(tmp_path, "bench", TASKS, "--jobs", "2", "--out", out, "-q", "--resume")
+    assert done.returncode == 0, done.stderr
+    rows = json.loads((out / "runs.json").read_text())
+    assert len(rows) == 10
+    assert sorted(Path(r["run_dir"]).name for r in rows) == sorted(p.name for p in (out / "records").iterdir()), \
+        "a record without a row (a killed run's) or a row without its record"
+    assert not (out / ".running").exists()
+
+
+def test_a_second_bench_into_the_same_folder_is_refused(tmp_path):
+    out = tmp_path / "out"
+    first = start(tmp_path, "bench", TASKS, "--jobs", "1", "--out", out, "-q")
+    try:
+        wait_for(lambda: any((out / ".running").glob("*/run.json")) or any((out / "records").glob("*/run.json")),
+                 what="the first bench to be running")
+        before = {p: p.stat().st_mtime_ns for p in rows_of(out)}
+        second = pipflow(tmp_path, "bench", TASKS, "--jobs", "1", "--out", out, "-q")
+        assert second.returncode == 2, second.stderr
+        assert f"(pid {first.pid})" in second.stderr and "is writing this bench folder" in second.stderr
+        assert "Traceback" not in second.stderr
+        again = pipflow(tmp_path, "bench", TASKS, "--out", out, "-q", "--resume")
+        assert again.returncode == 2 and "is writing this bench folder" in again.stderr
+        assert all(p.stat().st_mtime_ns == m for p, m in before.items())
+    finally:
+        first.send_signal(signal.SIGTERM)
+        first.communicate(timeout=120)
+
+
+def test_a_second_bench_through_the_api_is_refused(tmp_path, monkeypatch):
+    import pipflow
+    from pipflow.errors import UserError
+
+    out = tmp_path / "out"
+    first = start(tmp_path, "bench", TASKS, "--jobs", "1", "--out", out, "-q")
+    try:
+        wait_for(lambda: any((out / ".running").glob("*/run.json")) or any((out / "records").glob("*/run.json")),
+                 what="the first bench to be running")
+        monkeypatch.setenv("PIPFLOW_CACHE_DIR", str(tmp_path / "c"))
+        with pytest.raises(UserError, match="is writing this bench folder"):
+            pipflow.bench(TASKS, out=out)
+    finally:
+        first.send_signal(signal.SIGTERM)
+        first.communicate(timeout=120)
+
+
+def tasks_with_ids(tmp_path: Path, ids: list[str]) -> Path:
+    doc = yaml.safe_load(TASKS.read_text())
+    tasks = []
+    for new, task in zip(ids, doc["tasks"]):
+        tasks.append({**task, "id": new})
+    path = tmp_path / "tasks.yaml"
+    path.write_text(yaml.safe_dump({"world": str(TASKS.parent / doc["world"]), "tasks": tasks}))
+    return path
+
+
+def test_task_ids_that_differ_only_in_unsafe_characters_get_a_row_each(tmp_path):
+    tasks = tasks_with_ids(tmp_path, ["a/b", "a_b", "a b", "a%2Fb"])
+    proc = pipflow(tmp_path, "bench", tasks, "--jobs", "2", "--out", "out", "-q")
+    assert proc.returncode == 0, proc.stderr
+    assert len(rows_of(tmp_path / "out")) == 4
+    proc = pipflow(tmp_path, "bench", tasks, "--jobs", "2", "--out", "out", "-q", "--resume")
+    assert proc.returncode == 0, proc.stderr
+    results = json.loads((tmp_path / "out" / "results.json").read_text())
+    assert results["executed_runs"] == 0 and results["resumed_runs"] == 4
+
+
+def test_task_ids_through_the_api(tmp_path, monkeypatch):
+    import pipflow
+
+    monkeypatch.setenv("PIPFLOW_CACHE_DIR", str(tmp_path / "c"))
+    tasks = tasks_with_ids(tmp_path, ["x/y", "x_y"])
+    results = pipflow.bench(tasks, out=tmp_path / "out", jobs=2)
+    assert results["summary"]["runs"] == 2 and len(rows_of(tmp_path / "out")) == 2
