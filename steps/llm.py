@@ -64,6 +64,8 @@ def llm_problem(
                       Doc("model: the model reads every command; offline-first: the offline parser reads it "
                           "when it understands it (no model call), the model only what the parser refuses as "
                           "not understood (a command the parser finds impossible is refused)")] = "model",
+    locate: Annotated[bool, Doc("say which section of a problem that never closes is left open (the debugger's "
+                                "reading); false in a workflow without the debugger (the 'w/o B' ablation)")] = True,
 ) -> dict:
     """``problem`` is "" when the answer held no usable problem; ``errors`` then says why, in
     words meant for the next round's prompt. ``goal`` is set by offline and grounded runs, and by
@@ -83,7 +85,7 @@ def llm_problem(
         feedback=feedback, grounded=grounded,
         cache_dir=ctx.resolve_path(cache_dir) if cache_dir else None, use_cache=cache and ctx.use_cache,
         base_dir=ctx.base_dir, save=ctx.write_artifact, log=lambda m: _log(ctx, m), previous=previous,
-        reader=reader)
+        reader=reader, locate=locate)
     ctx.metrics["llm"] = out["usage"]
     text = out.get("response") or ""
     if len(text) > RESPONSE_OUTPUT_CHARS:  # the whole answer is kept once, as artifact response.txt

@@ -18,8 +18,10 @@ that use the domain's action *schemas* (never the model's intent as we guess it)
    *static* preconditions (facts no action changes, such as "is a garbage can", and inequalities
    such as "from is not to") hold for those arguments in the world;
 3. the step maps to the one action that fits; when several fit, to the one whose name's words
-   all appear in the step's action name (``switch_off_lamp`` is ``switch-off``); otherwise the
-   step is not executable, and says why (no action fits, or which ones it cannot tell apart).
+   all appear in the step's action name (``switch_off_lamp`` is ``switch-off``), else to the one
+   whose name shares a word with it (``turn_off`` is ``switch-off``, not ``switch-on``);
+   otherwise the step is not executable, and says why (no action fits, or which ones the name
+   cannot tell apart).
 
 A plan with a step that is not executable is not executed at all (robots do not start a plan
 that has a step nobody can carry out); every such step is reported, located by its number.
@@ -197,9 +199,9 @@ class Catalog:
                               "can be chosen for it")
             return None, self._why_none(values)
         chosen = list(fits)
-        if len(chosen) > 1:
-            said = set(words(name))
-            chosen = [a for a in chosen if set(words(a)) <= said]
+        said = set(words(name))
+        if len(chosen) > 1:  # the step's name decides: all of an action's words in it, else one of them
+            chosen = [a for a in fits if set(words(a)) <= said] or [a for a in fits if set(words(a)) & said]
         if len(chosen) != 1:
             return None, (f"it fits the robots' actions {', '.join(sorted(fits))}, and its name `{name}` does not "
                           "say which")
