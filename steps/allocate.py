@@ -74,7 +74,8 @@ def greedy(ctx: StepContext, graph: Graph, world: World, constraints: RobotRules
     return _run(ctx, "greedy", graph, world, constraints, linear, speed, handling, cost)
 
 
-@step("allocate.blind", doc="Ablation (paper's w/o AS): fewest robots by robot order, ignoring travel cost.",
+@step("allocate.blind", doc="pipflow's cost-blind allocation: fewest robots by robot order, ignoring travel cost "
+                            "(not the paper's w/o AS, which is allocate.llm).",
       outputs={"allocation": "object", "cost": "string"}, cacheable=True)
 def blind(ctx: StepContext, graph: Graph, world: World, constraints: RobotRules = None, linear: LinearRules = None,
           speed: Speed = 1.0, handling: Handling = 2.0, cost: Cost = DEFAULT_COST) -> dict:

@@ -173,6 +173,9 @@ def test_every_ablation_succeeds_on_the_ten_paper_tasks_with_a_right_model(tmp_p
             plan = json.loads((record / "outputs.json").read_text())["plan"]
             assert plan and all(s["action"] == "move-product" for s in plan)
             assert not (record / "steps" / "refine").exists()  # no PDDL problem, no loop
+    # a right model's reading is the gold's; w/o D states no goal, so its understanding is not measured
+    assert all(r["understood"] is (None if r["variant"] == "workflow=pip-llm-no-domain" else True) for r in rows), \
+        [(r["variant"], r["task"], r["understanding"]) for r in rows if not r["understood"]]
     # wh-05's rule reached the model's allocation and the IP alike: robot0 moved nothing
     for r in rows:
         if r["task"] == "wh-05":

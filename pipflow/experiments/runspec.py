@@ -70,7 +70,12 @@ def run_one(spec: RunSpec) -> dict:
     # which refinement loop ran (pip-llm, checked) and whose reading the goal was (offline, model)
     row["loop"], row["reader"] = read.get("loop"), read.get("reader")
     row["model"] = _recorded_model(row.get("run_dir"))  # what the paper's tables label a variant with
-    judged = domain.understand(task, read, row["status"], row.get("error_kind"))
+    if row["status"] == "succeeded" and "goal" in read and read["goal"] is None:
+        # a workflow whose model states no goal but writes the plan itself (the w/o D ablation):
+        # there is no reading to compare with the gold, only the outcome (SR)
+        judged = {"understood": None, "misread": None, "understanding": "not measured: the run states no goal"}
+    else:
+        judged = domain.understand(task, read, row["status"], row.get("error_kind"))
     row.update(judged if judged is not None else
                {"understood": None, "misread": None, "understanding": "not measured for this domain"})
     row["seconds"] = round(time.perf_counter() - started, 3)
