@@ -37,7 +37,7 @@ WH05 = ("There should be 20 product1 in shelf2, 16 product1 in shelf4, 2 product
 #: the ablations of both domains, by the method names a bench resolves per task file
 ABLATIONS = ["pip-llm-no-domain", "pip-llm-no-debugger", "pip-llm-no-bv", "pip-llm-no-as", "pip-llm-n1"]
 #: the names a right model gives the actions it designs (w/o D), for each of the domains' actions
-DESIGNED = {"move-product": "move", "store": "put", "trash": "throw_away", "open": "open_door",
+DESIGNED = {"move-product": "move", "store": "store", "trash": "trash_it", "open": "open_door",
             "close": "close_door", "switch-on": "turn_on", "switch-off": "turn_off", "slice": "slice",
             "wash": "wash", "heat": "heat_up"}
 
@@ -240,21 +240,59 @@ def test_no_domain_a_step_that_fits_no_action_is_located_and_nothing_executes(tm
     assert mapping["steps"][0]["args"] == ["shelf1", "shelf3", "product1", "magnitude2"]
 
 
-def test_no_domain_household_names_and_static_facts_pick_the_action(tmp_path):
-    """w/o D on a home: `put` fits store only (trash needs a garbage can), `throw_away` trash
-    only, `turn_off` is switch-off and not switch-on (the word they share), and a step whose
-    name says neither of two fitting actions is refused, naming them."""
+def test_no_domain_household_the_steps_name_picks_the_action_never_the_facts_alone(tmp_path):
+    """w/o D on a home, where several actions take an item and a place: `turn_off` is
+    switch-off, not switch-on (the word they share); `trash_it` is trash; `put(mug, diningtable,
+    garbagecan)` fits only trash (a garbage can is no receptacle), and `put(watermelon, fridge)`
+    only slice (it is the only sliceable thing's action), yet neither is executed: the name says
+    neither, and the static facts alone never choose. `store` into the garbage can is refused,
+    not turned into trash; `toggle` names neither switch action."""
     world = select_team(load_home(HOME), "homogeneous")
     plan = [{"action": "turn_off", "args": ["floorlamp", "floorlamp"]},
-            {"action": "throw_away", "args": ["mug", "diningtable", "garbagecan"]},
+            {"action": "trash_it", "args": ["mug", "diningtable", "garbagecan"]},
+            {"action": "put", "args": ["mug", "diningtable", "garbagecan"]},
+            {"action": "put", "args": ["watermelon", "fridge"]},
+            {"action": "store", "args": ["mug", "diningtable", "garbagecan"]},
             {"action": "toggle", "args": ["tv", "tv"]}]
     from pipflow.language.teamplan import read_team_plan
 
     domain = HouseholdDomain()
-    read = read_team_plan(team_plan_answer(plan), domain.pddl_domain().read_text(),
+    answer = "```json\n" + json.dumps({"plan": plan}) + "\n```"  # no "actions" list: steps name actions freely
+    read = read_team_plan(answer, domain.pddl_domain().read_text(),
                           domain.example_problem(world, domain.pddl_domain().read_text()), world, domain.rule_fields)
-    assert [s.get("action") for s in read.steps] == ["switch-off", "trash", None]
-    assert "switch-off, switch-on" in read.steps[2]["problem"] and "`toggle`" in read.steps[2]["problem"]
+    assert [s.get("action") for s in read.steps] == ["switch-off", "trash", None, None, None, None]
+    problems = [s["problem"] for s in read.steps[2:]]
+    assert "store, trash take arguments of these kinds, and its name `put` names none of them" in problems[0]
+    assert "`put` names none of them" in problems[1] and "slice" in problems[1]
+    assert "its name says store" in problems[2] and "rules these arguments out" in problems[2]
+    assert "switch-off, switch-on" in problems[3] and "`toggle` names none" in problems[3]
+    assert len(read.problems) == 4 and read.problems[0].startswith("plan step 3 (`put(mug, diningtable, garbagecan)`)")
+
+
+def test_no_domain_household_end_to_end_a_step_nobody_can_do_stops_the_plan(tmp_path):
+    """hx-01 (a 2-unit watermelon for a team of two lifters and a handler) through
+    household-no-domain: a plan that puts the watermelon away without saying from where is not
+    executed, located by its step; the right plan (open, store, close) is executed by a coalition
+    of both lifters and ends with the watermelon in the closed fridge."""
+    wrong = [{"action": "open_door", "args": ["fridge"]}, {"action": "store", "args": ["watermelon", "fridge"]}]
+    right = [{"action": "open_door", "args": ["fridge"]},
+             {"action": "store", "args": ["watermelon", "diningtable", "fridge"]},
+             {"action": "close_door", "args": ["fridge"]}]
+    results = []
+    for plan in (wrong, right):
+        with FakeOpenAI([team_plan_answer(plan)]) as server:
+            results.append(pipflow.run("household-no-domain", command="Put the watermelon in the fridge.",
+                                       team="lifters-handler", model="openai/fake", api_base=server.api_base,
+                                       cache=False, runs_dir=tmp_path / "runs"))
+    failed, done = results
+    assert failed.status == "failed" and failed.error_step == "plan"
+    assert "plan step 2 (`store(watermelon, fridge)`)" in failed.error and "plan step 1" not in failed.error
+    assert not (failed.record / "steps" / "simulate").exists()
+    assert done.status == "succeeded", done.error
+    store = next(s for s in done.outputs["schedule"]["subtasks"] if s["action"] == "store")
+    assert sorted(store["robots"]) == ["robot4", "robot5"]  # 2 units: both lifters
+    final = done.outputs["simulation"]["final_state"]
+    assert done.outputs["exe"] == 1.0 and final["at"]["watermelon"] == "fridge" and "fridge" not in final["open"]
 
 
 def test_no_domain_an_answer_that_is_code_is_never_run(tmp_path):
@@ -429,3 +467,32 @@ def test_ablations_that_are_meaningful_offline_run_the_parsers_problem(tmp_path,
     result = pipflow.run(workflow, model="offline", runs_dir=tmp_path / "runs")
     assert result.status == "succeeded", result.error
     assert result.outputs["rounds"] == 1
+
+
+def test_no_as_household_a_coalition_short_of_a_skill_is_refused_then_done(tmp_path):
+    """hx-01 through household-no-as: the model first gives the 2-unit watermelon to one lifter
+    and the fridge door to a lifter that cannot open doors; both are refused, naming the skill
+    and how far it falls short; the right answer is executed by that coalition."""
+    world = select_team(load_home(HOME), "lifters-handler")
+    domain = HouseholdDomain()
+    command = "Put the watermelon in the fridge."
+    problem = domain.read_offline(command, world, domain.pddl_domain().read_text())["problem"]
+
+    def answer(body: dict) -> str:
+        if "allocate the subtasks" not in body["messages"][0]["content"]:
+            return f"```pddl\n{problem}\n```\n```json\n{{\"constraints\": []}}\n```"
+        prompt = body["messages"][-1]["content"]
+        if "rejected" in prompt:
+            return allocation_for(prompt)
+        ids = re.findall(r"^- (s\d+): ", prompt, re.MULTILINE)
+        return "```json\n" + json.dumps({"assignments": [{"subtask": s, "robots": ["robot4"]} for s in ids]}) + "\n```"
+
+    with FakeOpenAI(answer=answer) as server:
+        result = pipflow.run("household-no-as", command=command, team="lifters-handler", model="openai/fake",
+                             api_base=server.api_base, cache=False, runs_dir=tmp_path / "runs")
+        feedback = server.prompts()[-1]
+    assert result.status == "succeeded", result.error
+    assert re.search(r"\(subtask s\d\): robot4 has pickup 1 < 2 needed", feedback)
+    assert re.search(r"\(subtask s\d\): robot4 has open 0 < 1 needed", feedback)
+    store = next(s for s in result.outputs["schedule"]["subtasks"] if s["action"] == "store")
+    assert sorted(store["robots"]) == ["robot4", "robot5"]

@@ -12,16 +12,19 @@ that use the domain's action *schemas* (never the model's intent as we guess it)
    stands for the object of a type whose objects are no things of the world and each carry a
    distinct number in a one-argument numeric fluent that no action changes (the warehouse's
    ``(amount magnitude3) = 3``);
-2. an action fits when it takes exactly that many arguments and they bind to its parameters by
-   type (subtypes allowed), keeping the step's order among arguments of one type (the first of
-   two places is the first place parameter: "from" before "to"), in exactly one way, and its
-   *static* preconditions (facts no action changes, such as "is a garbage can", and inequalities
-   such as "from is not to") hold for those arguments in the world;
-3. the step maps to the one action that fits; when several fit, to the one whose name's words
-   all appear in the step's action name (``switch_off_lamp`` is ``switch-off``), else to the one
-   whose name shares a word with it (``turn_off`` is ``switch-off``, not ``switch-on``);
-   otherwise the step is not executable, and says why (no action fits, or which ones the name
-   cannot tell apart).
+2. an action *takes* the arguments when it has exactly that many parameters and they bind to
+   them by type (subtypes allowed), keeping the step's order among arguments of one type (the
+   first of two places is the first place parameter: "from" before "to"), in exactly one way;
+   it *fits* when, besides, its static preconditions (facts no action changes, such as "is a
+   garbage can", and inequalities such as "from is not to") hold for them in the world;
+3. when one action of the domain takes arguments of these kinds at all, a step that fits it is
+   that action, whatever its name (the warehouse's one four-argument action); when several take
+   them, the step's action name must say which: the one that fits whose name's words all appear
+   in it (``switch_off_lamp`` is ``switch-off``), else the one that shares a word with it
+   (``turn_off`` is ``switch-off``, not ``switch-on``). Static facts never choose between
+   actions on their own: ``put(watermelon, fridge)`` fits only ``slice`` of the home's
+   two-argument actions, and is still not executed, because nothing says the model meant that.
+   Otherwise the step is not executable, and says why.
 
 A plan with a step that is not executable is not executed at all (robots do not start a plan
 that has a step nobody can carry out); every such step is reported, located by its number.
@@ -185,6 +188,7 @@ class Catalog:
         values, problem = self._values(args)
         if problem:
             return None, problem
+        typed = [a.name for a in self.problem.actions if self._bindings(a, values, statics=False)]
         fits: dict[str, list] = {}
         unclear: list[str] = []
         for action in self.problem.actions:
@@ -197,14 +201,24 @@ class Catalog:
             if unclear:
                 return None, (f"its arguments fit {', '.join(unclear)} in more than one order; no order "
                               "can be chosen for it")
+            if typed:
+                return None, (f"no team action of the robots takes these arguments ({', '.join(sorted(typed))} take "
+                              "things of these kinds, but what never changes in this world rules these out)")
             return None, self._why_none(values)
-        chosen = list(fits)
-        said = set(words(name))
-        if len(chosen) > 1:  # the step's name decides: all of an action's words in it, else one of them
-            chosen = [a for a in fits if set(words(a)) <= said] or [a for a in fits if set(words(a)) & said]
-        if len(chosen) != 1:
-            return None, (f"it fits the robots' actions {', '.join(sorted(fits))}, and its name `{name}` does not "
-                          "say which")
+        if len(typed) == 1:  # one action takes arguments of these kinds at all: the step is that action
+            chosen = list(fits)
+        else:  # several could: the step's name decides (all of an action's words in it, else one of them)
+            said = set(words(name))
+            named = [a for a in typed if set(words(a)) <= said] or [a for a in typed if set(words(a)) & said]
+            chosen = [a for a in named if a in fits]
+            kinds = f"the robots' actions {', '.join(sorted(typed))} take arguments of these kinds"
+            if not named:
+                return None, f"{kinds}, and its name `{name}` names none of them"
+            if not chosen:
+                return None, (f"its name says {' or '.join(named)}, and what never changes in this world rules "
+                              "these arguments out for it")
+            if len(chosen) > 1:
+                return None, f"{kinds}, and its name `{name}` does not say which"
         action = chosen[0]
         return {"action": action, "args": [self.spelling.get(o.name, o.name) for o in fits[action]]}, None
 
@@ -233,8 +247,9 @@ class Catalog:
             return v if _is_a(v.type, param_type) else None
         return self.numbers.get(param_type.name, {}).get(v)
 
-    def _bindings(self, action: Any, values: list) -> list[list]:
-        """Every way the values bind to the action's parameters (module docstring, rule 2)."""
+    def _bindings(self, action: Any, values: list, statics: bool = True) -> list[list]:
+        """Every way the values bind to the action's parameters (module docstring, rule 2);
+        ``statics`` False: by types and order only."""
         params = action.parameters
         if len(params) != len(values):
             return []
@@ -247,7 +262,7 @@ class Catalog:
             if not self._keeps_order(values, order):
                 continue
             binding = dict(zip((p.name for p in params), objs))
-            if not self._static_holds(action, binding):
+            if statics and not self._static_holds(action, binding):
                 continue
             if objs not in found:
                 found.append(objs)
