@@ -93,14 +93,14 @@ def read_team_plan(text: str, domain_text: str, problem_text: str, world: dict |
     out = TeamPlan(designed=designed, constraints=constraints)
     declared = {d["name"].lower(): d for d in designed}
     for k, step in enumerate(steps, 1):
-        shown, name, args, problem = _step(step, k)
-        if problem is None and declared and name.lower() not in declared:
+        shown, name, args, problem = _step(step)
+        design = declared.get(name.lower())
+        if problem is None and declared and design is None:
             problem = (f"`{name}` is not one of the actions the answer designed "
                        f"({', '.join(d['name'] for d in designed)})")
-        if problem is None and name.lower() in declared and declared[name.lower()]["parameters"] is not None \
-                and len(declared[name.lower()]["parameters"]) != len(args):
-            problem = (f"`{name}` was designed with {len(declared[name.lower()]['parameters'])} parameter(s), "
-                       f"the step gives {len(args)} argument(s)")
+        elif problem is None and design and design["parameters"] is not None and len(design["parameters"]) != len(args):
+            problem = (f"`{name}` was designed with {len(design['parameters'])} parameter(s), the step gives "
+                       f"{len(args)} argument(s)")
         mapped = None
         if problem is None:
             mapped, problem = catalog.map_step(name, args)
@@ -132,7 +132,7 @@ def _designed(data: dict) -> list[dict]:
     return out
 
 
-def _step(step: Any, k: int) -> tuple[str, str, list, str | None]:
+def _step(step: Any) -> tuple[str, str, list, str | None]:
     """(how the step reads, its action name, its arguments, a problem with its shape or None)."""
     if not isinstance(step, dict) or not isinstance(step.get("action"), str) or not step["action"].strip():
         return (repr(step)[:60], "", [], 'a step must be {"action": NAME, "args": [...]}')
@@ -202,7 +202,8 @@ class Catalog:
                 return None, (f"its arguments fit {', '.join(unclear)} in more than one order; no order "
                               "can be chosen for it")
             if typed:
-                return None, (f"no team action of the robots takes these arguments ({', '.join(sorted(typed))} take "
+                verb = "takes" if len(typed) == 1 else "take"
+                return None, (f"no team action of the robots takes these arguments ({', '.join(sorted(typed))} {verb} "
                               "things of these kinds, but what never changes in this world rules these out)")
             return None, self._why_none(values)
         if len(typed) == 1:  # one action takes arguments of these kinds at all: the step is that action
