@@ -37,7 +37,21 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
     bench.add_argument("--llm-concurrency", default=None, metavar="N|PROVIDER=N,...",
                        help="most concurrent LLM calls per provider across a dask cluster "
                             "(default: $PIPFLOW_LLM_CONCURRENCY or 4)")
+    bench.add_argument("--table", choices=["paper"], default=None,
+                       help="also lay the results out as the paper's tables (I-III: text, CSV, LaTeX) in OUT/paper/")
+    bench.add_argument("--min-runs", type=positive_int, default=None, metavar="N",
+                       help="with --table: mark a cell over fewer than N runs (default: 3)")
     bench.set_defaults(func=cmd_bench)
+
+    table = sub.add_parser("bench-table", parents=[common],
+                           help="a bench's results as the paper's tables (I-III), as text, CSV or LaTeX")
+    table.add_argument("dir", help="bench output directory (results.json, runs.json)")
+    table.add_argument("--format", choices=["text", "csv", "latex"], default="text", help="what to print (default: text)")
+    table.add_argument("--min-runs", type=positive_int, default=None, metavar="N",
+                       help="mark a cell over fewer than N runs (default: 3)")
+    table.add_argument("-o", "--out", default=None, metavar="DIR",
+                       help="also write every table in every format into DIR (table1.md, table1.csv, table1.tex, ...)")
+    table.set_defaults(func=cmd_bench_table)
 
     report = sub.add_parser("report", parents=[common], help="write a static HTML report of a run or a bench")
     report.add_argument("dir", help="run directory or bench output directory")
@@ -62,6 +76,18 @@ def cmd_bench(args: argparse.Namespace) -> int:
     from pipflow.experiments.benchmarking import bench_main
 
     return bench_main(args)
+
+
+def cmd_bench_table(args: argparse.Namespace) -> int:
+    # deferred: the bench package pulls the engine's runner (networkx, jsonschema); every CLI command loads this module
+    from pipflow.experiments.papertables import MIN_RUNS, bench_tables, render, write_tables
+
+    tables = bench_tables(Path(args.dir), args.min_runs or MIN_RUNS)
+    if args.out:
+        for path in write_tables(tables, Path(args.out)):
+            print(f"wrote {path}")
+    print(render(tables, args.format))
+    return 0
 
 
 def cmd_report(args: argparse.Namespace) -> int:

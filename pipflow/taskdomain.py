@@ -294,3 +294,10 @@ class TaskDomain(ABC):
         """The markdown table of a bench, when the domain groups it its own way (None: the
         generic table, one row per task)."""
         return None
+
+    def table_groups(self, tasks: list[dict]) -> list[tuple[str, list[str]]] | None:
+        """The groups of tasks the paper's tables report (its table of the household experiment
+        has one column group per task category), as ``(name, [task ids])`` in the paper's order;
+        None: the paper reports this domain per task (its warehouse table). ``tasks``: the task
+        file's tasks as :meth:`load_tasks` returns them."""
+        return None

@@ -6,8 +6,10 @@ from __future__ import annotations
 
 from typing import Annotated
 
-from pipflow import Choices, Doc, StepContext, step
+from pipflow import Check, Choices, Doc, PathStr, StepContext, step
 from pipflow.errors import AllocationError
+from pipflow.language.asking import require_model
+from pipflow.language.prompting import find_template, prompt_problem
 from pipflow.liberrors import SCIP, library_errors
 from pipflow.team.scheduling import COSTS, DEFAULT_COST
 
@@ -72,10 +74,59 @@ def greedy(ctx: StepContext, graph: Graph, world: World, constraints: RobotRules
     return _run(ctx, "greedy", graph, world, constraints, linear, speed, handling, cost)
 
 
-@step("allocate.blind", doc="Ablation (paper's w/o AS): fewest robots by robot order, ignoring travel cost.",
+@step("allocate.blind", doc="pipflow's cost-blind allocation: fewest robots by robot order, ignoring travel cost "
+                            "(not the paper's w/o AS, which is allocate.llm).",
       outputs={"allocation": "object", "cost": "string"}, cacheable=True)
 def blind(ctx: StepContext, graph: Graph, world: World, constraints: RobotRules = None, linear: LinearRules = None,
           speed: Speed = 1.0, handling: Handling = 2.0, cost: Cost = DEFAULT_COST) -> dict:
     """Cost-blind allocation: shows what the allocation strategy buys. It never looks at costs;
     ``cost`` only says what the recorded ``costs`` of each assignment mean."""
     return _run(ctx, "blind", graph, world, constraints, linear, speed, handling, cost)
+
+
+@step("allocate.llm",
+      doc="The paper's 'w/o AS' ablation: a language model allocates the subtasks to robots and orders them "
+          "(instead of the IP); its JSON answer is checked (skills, rules, order) and refused with feedback.",
+      outputs={"allocation": "object", "cost": "string"}, cacheable=True)
+def llm(
+    ctx: StepContext,
+    graph: Graph,
+    world: World,
+    constraints: RobotRules = None,
+    model: Annotated[str | None, Doc("litellm model string or local/smollm2 (offline has no model: a user "
+                                     "error)")] = None,
+    api_base: Annotated[str | None, Doc("base URL of an OpenAI-compatible server")] = None,
+    prompt: Annotated[str, Check(prompt_problem), Doc("template name in prompts/ or a path")] = "allocate_llm",
+    attempts: Annotated[int, Doc("answers the model may give in all: a refused answer (a coalition short of "
+                                 "a skill, a robot a rule excludes, an order the graph forbids) is sent back "
+                                 "with its problems")] = 3,
+    speed: Speed = 1.0,
+    handling: Handling = 2.0,
+    cost: Cost = DEFAULT_COST,
+    temperature: Annotated[float, Doc("sampling temperature")] = 0.0,
+    max_tokens: Annotated[int, Doc("most tokens of an answer")] = 1024,
+    timeout: Annotated[float, Doc("seconds per call")] = 60.0,
+    deadline: Annotated[float | None, Doc("seconds per call, retries and waits included")] = None,
+    cache_dir: Annotated[PathStr | None, Doc("response cache folder (default .pipflow-cache/llm)")] = None,
+    cache: Annotated[bool, Doc("replay cached responses; false always calls the model")] = True,
+) -> dict:
+    """The model's coalitions in the model's order, timed as every allocation is (the recorded
+    ``costs`` are what c_i would have been, for comparison with the IP); each question and answer
+    is an artifact (``attemptN-messages.json``, ``attemptN-response.txt``)."""
+    resolved = require_model(model, "the allocation of the w/o AS ablation (allocate.llm)")
+    ctx.check_readable(find_template(prompt, ctx.base_dir), f"step {ctx.step_id!r}: prompt template {prompt!r}",
+                       named_as=prompt)
+    # deferred: pulls numpy through pipflow.team.allocation (~150 ms; the registry loads every step module)
+    from pipflow.language.allocator import allocate_by_model
+
+    result = allocate_by_model(
+        graph, world, constraints=constraints, model=resolved, api_base=api_base, prompt=prompt,
+        attempts=attempts, speed=speed, handling=handling, cost=cost, temperature=temperature,
+        max_tokens=max_tokens, timeout=timeout, deadline=deadline,
+        cache_dir=ctx.resolve_path(cache_dir) if cache_dir else None, use_cache=cache and ctx.use_cache,
+        base_dir=ctx.base_dir, save=ctx.write_artifact, log=ctx.log, named=ctx.named_by_user)
+    ctx.write_artifact("allocation.json", result)
+    st = result["stats"]
+    ctx.metrics.update({"attempts": st["attempts"], **{f"predicted_{k}": v for k, v in st["predicted"].items()}})
+    ctx.log(f"allocated {st['subtasks']} subtasks (llm, {st['attempts']} answer(s)), cost {result['cost']}")
+    return {"allocation": result, "cost": result["cost"]}

@@ -4,7 +4,7 @@ from __future__ import annotations
 from typing import Annotated, Any
 
 from pipflow import Doc, StepContext, step
-from pipflow.errors import Refusal, StepError
+from pipflow.errors import InputError, Refusal, StepError
 
 
 @step("core.value", doc="Pass a value through unchanged (constants, demos, renaming).",
@@ -50,3 +50,16 @@ def fail(
     if condition:
         raise StepError(message)
     return {"failed": False}
+
+
+@step("core.require", doc="Stop the run as the user's error (exit 2) unless a condition holds: a workflow's "
+                          "requirement on its inputs (a model where only a model can do the work).",
+      outputs={"ok": "boolean"})
+def require(
+    ctx: StepContext,
+    condition: Annotated[Any, Doc("what must hold")],
+    message: Annotated[str, Doc("what the user must change, when it does not")],
+) -> dict:
+    if not condition:
+        raise InputError(message)
+    return {"ok": True}

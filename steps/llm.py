@@ -7,11 +7,16 @@ from __future__ import annotations
 from typing import Annotated
 
 from pipflow import Check, Choices, Doc, PathStr, StepContext, step
-from pipflow.errors import InputError, TranslationError
+from pipflow.errors import InputError, Refusal, StepError, TranslationError
 from pipflow.language.agreement import refusal_opinion
+from pipflow.language.asking import ask, require_model
 from pipflow.language.generator import READERS, generate
 from pipflow.language.llm import resolve_model
-from pipflow.language.prompting import find_template, prompt_problem
+from pipflow.language.parsing import ParseIssue
+from pipflow.language.prompting import find_template, prompt_problem, render
+from pipflow.language.teamplan import read_team_plan
+from pipflow.pddl.common import format_plan
+from pipflow.taskdomain import pddl_domain_name
 from pipflow.taskdomains import task_domain
 
 #: the longest answer kept in the step's ``response`` output. The run record copies outputs (each
@@ -59,6 +64,8 @@ def llm_problem(
                       Doc("model: the model reads every command; offline-first: the offline parser reads it "
                           "when it understands it (no model call), the model only what the parser refuses as "
                           "not understood (a command the parser finds impossible is refused)")] = "model",
+    locate: Annotated[bool, Doc("say which section of a problem that never closes is left open (the debugger's "
+                                "reading); false in a workflow without the debugger (the 'w/o B' ablation)")] = True,
 ) -> dict:
     """``problem`` is "" when the answer held no usable problem; ``errors`` then says why, in
     words meant for the next round's prompt. ``goal`` is set by offline and grounded runs, and by
@@ -82,7 +89,7 @@ def llm_problem(
         feedback=feedback, grounded=grounded,
         cache_dir=ctx.resolve_path(cache_dir) if cache_dir else None, use_cache=cache and ctx.use_cache,
         base_dir=ctx.base_dir, save=ctx.write_artifact, log=lambda m: _log(ctx, m), previous=previous,
-        reader=reader, named=ctx.named_by_user)
+        reader=reader, named=ctx.named_by_user, locate=locate)
     ctx.metrics["llm"] = out["usage"]
     text = out.get("response") or ""
     if len(text) > RESPONSE_OUTPUT_CHARS:  # the whole answer is kept once, as artifact response.txt
@@ -155,3 +162,71 @@ def _log(ctx: StepContext, message: str) -> None:
         ctx.warn(message[len("warning: "):])
     else:
         ctx.log(message)
+
+
+@step(
+    "llm.team_plan",
+    doc="The paper's 'w/o D' ablation: a model designs its own team-level actions (no PDDL domain shown) and "
+        "writes the team plan with them; the answer (JSON) is read as data and each step mapped onto the task "
+        "domain's executable team actions where it fits one (pipflow.language.teamplan).",
+    outputs={"plan": "array", "problem": "string", "designed": "array", "steps": "array", "constraints": "array",
+             "messages": "array", "response": "string", "usage": "object", "reader": "string"},
+)
+def llm_team_plan(
+    ctx: StepContext,
+    command: Annotated[str, Doc("the natural-language command")],
+    world: Annotated[dict, Doc("the world (output of world.load or a domain's own load step)")],
+    domain: Annotated[PathStr, Doc("the task domain's team-level PDDL domain: NOT shown to the model; its action "
+                                   "schemas decide which of the model's steps the robots can execute")],
+    prompt: Annotated[str, Check(prompt_problem), Doc("template name in prompts/ or a path (the world, the "
+                                                      "command and the answer's JSON form; no PDDL domain)")],
+    model: Annotated[str | None, Doc("litellm model string or local/smollm2 (offline has no model: a user error)")] = None,
+    temperature: Annotated[float, Doc("sampling temperature (0: the most likely answer)")] = 0.0,
+    max_tokens: Annotated[int | None, Doc("most tokens of the answer; unset: 1536")] = None,
+    timeout: Annotated[float, Doc("seconds per call")] = 60.0,
+    retries: Annotated[int, Doc("extra tries on rate limits, time-outs, server errors (2: at most 3 requests)")] = 2,
+    api_base: Annotated[str | None, Doc("base URL of an OpenAI-compatible server")] = None,
+    cache_dir: Annotated[PathStr | None, Doc("response cache folder (default .pipflow-cache/llm)")] = None,
+    cache: Annotated[bool, Doc("replay cached responses; false always calls the model")] = True,
+    deadline: Annotated[float | None, Doc("seconds for the whole call, retries and waits included")] = None,
+) -> dict:
+    """One answer, no refinement rounds: without a PDDL domain there is no problem for the
+    debugger, planner and verifier to check (docs/paper.md, "Ablations"). A plan with a step the
+    robots cannot execute is not executed: the step fails naming every such step (the mapping of
+    each step is the artifact ``team_plan.json``); ``{"refuse": "why"}`` is a refusal (exit 3).
+    ``problem`` is the world's own problem (its initial state), which the dependency graph reads."""
+    resolved = require_model(model, "the team plan of the w/o D ablation (llm.team_plan)")
+    path = ctx.resolve_path(domain)
+    try:
+        domain_text = path.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise InputError(f"domain file {path}: {exc.strerror}") from None
+    tdomain = task_domain(world)
+    problem = tdomain.example_problem(world, domain_text) or tdomain.write_problem(
+        world, {}, pddl_domain_name(domain_text, tdomain.name))
+    ctx.check_readable(find_template(prompt, ctx.base_dir), f"step {ctx.step_id!r}: prompt template {prompt!r}",
+                       named_as=prompt)
+    messages = render(prompt, {"command": command, "world": world, "fields": list(tdomain.rule_fields)},
+                      ctx.base_dir)
+    answer = ask(messages, model=resolved, api_base=api_base, temperature=temperature,
+                 max_tokens=max_tokens or 1536, timeout=timeout, retries=retries, deadline=deadline,
+                 stop=["\nCommand:"], cache_dir=ctx.resolve_path(cache_dir) if cache_dir else None,
+                 use_cache=cache and ctx.use_cache, save=ctx.write_artifact, log=lambda m: _log(ctx, m),
+                 named=ctx.named_by_user)
+    ctx.metrics["llm"] = answer["usage"]
+    try:
+        read = read_team_plan(answer["text"], domain_text, problem, world, tdomain.rule_fields)
+    except ParseIssue as issue:
+        raise StepError(f"the model's team plan cannot be read: {issue}") from None
+    ctx.write_artifact("team_plan.json", {"designed": read.designed, "steps": read.steps,
+                                          "problems": read.problems, "refusal": read.refusal})
+    if read.refusal is not None:
+        raise Refusal(f"the model refused the command: {read.refusal}")
+    if read.problems:
+        raise StepError(f"the model's team plan has {len(read.problems)} step(s) the robots cannot execute, so "
+                        "none is executed: " + "; ".join(read.problems))
+    ctx.write_artifact("plan.txt", format_plan(read.plan))
+    ctx.log(f"team plan: {len(read.plan)} step(s) with {len(read.designed)} designed action(s)")
+    return {"plan": read.plan, "problem": problem, "designed": read.designed, "steps": read.steps,
+            "constraints": read.constraints, "messages": messages, "response": answer["text"][:RESPONSE_OUTPUT_CHARS],
+            "usage": answer["usage"], "reader": "model"}

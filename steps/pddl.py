@@ -147,6 +147,9 @@ def verify(
     domain: Annotated[PathStr, Doc("PDDL domain file")],
     plan: Annotated[list | None, Doc("plan from pddl.solve")] = None,
     world: Annotated[dict | None, Doc("world dict for the goal checks")] = None,
+    parse_details: Annotated[bool, Doc("say where a problem that does not parse goes wrong (the parser's "
+                                       "message); false in a workflow without the debugger, whose job that "
+                                       "is (the 'w/o B' ablation)")] = True,
 ) -> dict:
     """``refusal`` is a reason string when no plan can satisfy the goal in this world (more units
     than exist, over capacity), else None; ``goal`` is the problem's goal as {shelf: {product: n}}."""
@@ -155,11 +158,36 @@ def verify(
     try:
         parsed = _parse(ctx, problem, domain)
     except PDDLError as exc:
-        return {"ok": False, "messages": [f"the problem does not parse ({exc}); run pddl.debug first"],
-                "refusal": None, "goal": {}}
+        why = (f"the problem does not parse ({exc}); run pddl.debug first" if parse_details else
+               "the problem does not parse, so it has no plan to verify")
+        return {"ok": False, "messages": [why], "refusal": None, "goal": {}}
     report = verify_plan(parsed, plan, world)
     for m in report.messages:
         ctx.log(f"verify: {m}")
     ctx.write_artifact("verify.json", {"ok": report.ok, "messages": report.messages,
                                        "refusal": report.refusal, "goal": report.goal})
     return {"ok": report.ok, "messages": report.messages, "refusal": report.refusal, "goal": report.goal}
+
+
+@step("pddl.goal",
+      doc="Read a problem's goal as data, without judging it (the verifier's reading minus its checks): for "
+          "workflows without the verifier (the 'w/o B&V' ablation).",
+      outputs={"goal": "object"})
+def goal(
+    ctx: StepContext,
+    problem: Annotated[str | None, Doc("PDDL problem text")],
+    domain: Annotated[PathStr, Doc("PDDL domain file")],
+    world: Annotated[dict | None, Doc("world dict: its task domain reads the goal, in the world's spelling")] = None,
+) -> dict:
+    """``goal`` as the verifier's output ``goal`` (empty when there is no problem or it does not
+    parse): what the run's summary and the bench's understanding read."""
+    if not problem:
+        return {"goal": {}}
+    try:
+        parsed = _parse(ctx, problem, domain)
+    except PDDLError:
+        return {"goal": {}}
+    if world is None:
+        return {"goal": {}}
+    # the domain's reading of the goal; what its checks find is left out on purpose (no verifier)
+    return {"goal": task_domain(world).check_goal(parsed, world).goal}

@@ -2,7 +2,8 @@
 (litellm's HTTP client, pipflow's retries, caches and records) without a model.
 
 Each request to ``/v1/chat/completions`` takes the next entry of the script (the last one
-repeats): a string is answered as the assistant's message; a dict may instead set ``status``
+repeats), or, with ``answer=``, what ``answer(body)`` returns for the request's JSON body (for
+benches whose runs ask in any order): a string is answered as the assistant's message; a dict may instead set ``status``
 (an HTTP error code), ``body`` (raw bytes or text sent as is), ``delay`` (seconds before the
 answer). Every request's JSON body is kept in ``server.requests`` (headers in
 ``server.headers``), so tests can count attempts and read the prompts that were sent.
@@ -21,8 +22,9 @@ from typing import Any
 
 
 class FakeOpenAI:
-    def __init__(self, script: list[Any]):
-        self.script = list(script) or [""]
+    def __init__(self, script: list[Any] | None = None, answer: Any = None):
+        self.script = list(script or []) or [""]
+        self.answer = answer
         self.requests: list[dict] = []
         self.headers: list[dict] = []
         self._lock = threading.Lock()
@@ -46,7 +48,8 @@ class FakeOpenAI:
                     index = len(fake.requests)
                     fake.requests.append(body)
                     fake.headers.append(dict(self.headers))
-                    entry = fake.script[min(index, len(fake.script) - 1)]
+                    entry = (fake.answer(body) if fake.answer is not None
+                             else fake.script[min(index, len(fake.script) - 1)])
                 if isinstance(entry, str):
                     entry = {"text": entry}
                 if entry.get("delay"):

@@ -52,6 +52,7 @@ from pipflow.errors import UserError
 from pipflow.experiments.backends import build_bundle, make_backend, parse_backend, parse_limits, run_key
 from pipflow.experiments.benchdomains import domain_named, domain_of
 from pipflow.experiments.benchstats import aggregate_task, summarize
+from pipflow.experiments.papertables import MIN_RUNS, bench_tables, render, write_tables
 from pipflow.experiments.runspec import RunSpec, recorded_outputs, run_one  # noqa: F401  (the bench's face: tests, scripts)
 from pipflow.meaning import misread_cell
 from pipflow.metrics import DEFINITIONS
@@ -59,7 +60,7 @@ from pipflow.records.compare import variants_side_by_side
 from pipflow.taskdomain import TaskDomain
 from pipflow.version import __version__
 
-RESULT_FIELDS = ["variant", "task", "seed", "status", "loop", "reader", "success", "understood", "misread",
+RESULT_FIELDS = ["variant", "task", "seed", "status", "loop", "reader", "model", "success", "understood", "misread",
                  "misread_executed", "goal_met", "gcr", "exe", "ru", "tc_max", "tc_avg", "tc_avg_team", "makespan",
                  "planned", "executed", "seconds", "error", "run_dir", "config_hash"]
 
@@ -303,6 +304,8 @@ def run_bench(config: BenchConfig, progress: bool = True, on_row=None) -> dict:
         rows = [done[run_key(s)] for s in specs if run_key(s) in done]
         results = _results(rows, tasks_doc["tasks"], config, wall, domain.name)
         results["config"]["workflows"] = {s.variant: s.workflow for s in specs}  # what each variant ran
+        results["config"]["variant_values"] = dict(variants(config.matrix))  # each variant's matrix values
+        results["config"]["groups"] = domain.table_groups(tasks_doc["tasks"])  # the paper's tables (papertables)
         results["executed_runs"], results["resumed_runs"] = fresh, len(specs) - len(todo)
         _write(out, rows, results)
         return results
@@ -575,6 +578,8 @@ def bench_main(args: argparse.Namespace) -> int:
         raise UserError(f"--seeds {args.seeds}: a bench runs each task at least once (--seeds 1 or more)")
     if args.jobs is not None and args.jobs < 1:
         raise UserError(f"--jobs {args.jobs}: expected 1 or more parallel runs (unset: one per CPU)")
+    if getattr(args, "min_runs", None) is not None and getattr(args, "table", None) is None:
+        raise UserError("--min-runs marks the cells of the paper's tables: give it with --table paper")
     inputs = key_values(args.input or [])
     matrix = parse_matrix(args.matrix)
     config = BenchConfig(
@@ -586,6 +591,11 @@ def bench_main(args: argparse.Namespace) -> int:
     print(markdown_table(results))
     if len(results.get("variants", [])) > 1:
         print(variants_side_by_side(results, json.loads((config.out / "runs.json").read_text())))
+    if getattr(args, "table", None) == "paper":  # the paper's tables (I-III), also in OUT/paper/
+        tables = bench_tables(config.out, getattr(args, "min_runs", None) or MIN_RUNS)
+        write_tables(tables, config.out / "paper")
+        print(render(tables, "text"))
+        print(f"the paper's tables (text, CSV, LaTeX): {config.out / 'paper'}")
     print(f"results: {config.out / 'results.json'}")
     lost = [r for r in json.loads((config.out / "runs.json").read_text()) if r.get("status") == "lost"]
     if lost:  # the backend could not finish these runs: the table is incomplete

@@ -70,12 +70,31 @@ def run_one(spec: RunSpec) -> dict:
         recorded_outputs(Path(row["run_dir"]), ("goal", "constraints", "loop", "reader"))
     # which refinement loop ran (pip-llm, checked) and whose reading the goal was (offline, model)
     row["loop"], row["reader"] = read.get("loop"), read.get("reader")
-    judged = domain.understand(task, read, row["status"], row.get("error_kind"), world_path=spec.world_path)
+    row["model"] = _recorded_model(row.get("run_dir"))  # what the paper's tables label a variant with
+    if row["status"] == "succeeded" and "goal" in read and read["goal"] is None:
+        # a workflow whose model states no goal but writes the plan itself (the w/o D ablation):
+        # there is no reading to compare with the gold, only the outcome (SR)
+        judged = {"understood": None, "misread": None, "understanding": "not measured: the run states no goal"}
+    else:
+        judged = domain.understand(task, read, row["status"], row.get("error_kind"), world_path=spec.world_path)
     row.update(judged if judged is not None else
                {"understood": None, "misread": None, "understanding": "not measured for this domain"})
     row["misread_executed"] = misread_executed(row.get("misread"), row.get("executed"))
     row["seconds"] = round(time.perf_counter() - started, 3)
     return row
+
+
+def _recorded_model(run_dir: str | None) -> str | None:
+    """The model a run was given (its input ``model`` as resolved), or None (no such input, no
+    record)."""
+    if not run_dir:
+        return None
+    try:
+        inputs = read_json(Path(run_dir) / "inputs.json", None)
+    except (UserError, OSError):  # a damaged record: the row stays, without the model
+        return None
+    model = inputs.get("model") if isinstance(inputs, dict) else None
+    return str(model) if model is not None else None
 
 
 def recorded_outputs(run_dir: Path, names: tuple[str, ...]) -> dict:

@@ -19,7 +19,7 @@ from typing import Any, Callable, Mapping
 from pipflow.household import agreement
 from pipflow.household import world as worlds
 from pipflow.household.problem import goal_from_problem, goal_refusal, world_mismatches, write_problem
-from pipflow.household.scoring import bench_table, load_tasks, score_bench_run, score_run, understanding
+from pipflow.household.scoring import CATEGORIES, bench_table, load_tasks, score_bench_run, score_run, understanding
 from pipflow.household.simulation import simulate
 from pipflow.language.offline import NO_USAGE
 from pipflow.pddl.common import goal_atoms, stock_goals
@@ -37,7 +37,10 @@ class HouseholdDomain(TaskDomain):
 
     name = "household"
     workflow = "household"
-    workflows = {"pip-llm": "household", "pip-llm-checked": "household-checked"}
+    workflows = {"pip-llm": "household", "pip-llm-checked": "household-checked",
+                 # the paper's ablations (Table III) and the issue's w/o B (docs/paper.md, "Ablations")
+                 **{f"pip-llm-{name}": f"household-{name}" for name in ("no-domain", "no-debugger", "no-bv", "no-as",
+                                                                        "n1", "n2", "n3", "n4")}}
     default_prompt = "household_problem"
     rule_fields = RULE_FIELDS
 
@@ -147,3 +150,7 @@ class HouseholdDomain(TaskDomain):
 
     def bench_table(self, results: dict, tasks_file: Path) -> str | None:
         return bench_table(results, tasks_file)
+
+    def table_groups(self, tasks: list[dict]) -> list[tuple[str, list[str]]] | None:
+        """The paper's categories, in its order (compound, complex, vague)."""
+        return [(c, [t["id"] for t in tasks if t.get("category") == c]) for c in CATEGORIES]

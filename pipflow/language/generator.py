@@ -97,6 +97,7 @@ def generate(
     previous: dict[str, Any] | None = None,
     reader: str = "model",
     named: Callable[[str], bool] | None = None,
+    locate: bool = True,
 ) -> dict[str, Any]:
     """One generator round; returns the outputs of step ``llm.problem``. ``prompt`` None: the
     world's domain's template (:attr:`pipflow.taskdomain.TaskDomain.default_prompt`).
@@ -109,7 +110,9 @@ def generate(
     (and its Refusal when it finds it impossible), the model only when it does not understand it.
     The output ``reader`` says whose reading the round's goal is (``offline`` or ``model``).
     ``named(value)``: whether the user gave a value (a server that may receive the provider
-    key: :func:`pipflow.language.llm.key_may_go_to`)."""
+    key: :func:`pipflow.language.llm.key_may_go_to`).
+    ``locate`` False: an answer whose problem never closes is said to be cut off, without the
+    debugger's reading of which section is left open (the 'w/o B' ablation has no debugger)."""
     model = resolve_model(model)
     domain = task_domain(world)
     if reader not in READERS:
@@ -192,7 +195,7 @@ def generate(
            "varied": "; ".join(varied), "reader": "model",
            "round": {"base": base_digest, "sent": _digest(messages, temperature_now), "level": level,
                      "answer": text[:ROUND_ANSWER_CHARS], "max_tokens": max_tokens, "history": history}}
-    out.update(_read_answer(text, world, grounded, domain_text, domain))
+    out.update(_read_answer(text, world, grounded, domain_text, domain, locate))
     if usage.get("finish_reason") == "length" and out.get("errors"):  # the model must shorten, not we raise
         out["errors"] = out["errors"] + [
             f"the answer was cut off at the {max_tokens} tokens it may take: write only what the command asks "
@@ -203,7 +206,8 @@ def generate(
     return out
 
 
-def _read_answer(text: str, world: dict, grounded: bool, domain_text: str, domain: TaskDomain) -> dict[str, Any]:
+def _read_answer(text: str, world: dict, grounded: bool, domain_text: str, domain: TaskDomain,
+                 locate: bool = True) -> dict[str, Any]:
     """Problem, goal (grounded, or read back from the problem by the domain), constraints and
     errors of one answer."""
     if grounded and domain.grounding is not None:  # the answer is an order: checked, resolved, written
@@ -215,7 +219,7 @@ def _read_answer(text: str, world: dict, grounded: bool, domain_text: str, domai
     try:
         problem = extract_problem(text)
     except ParseIssue as issue:
-        errors.append(str(issue) + _unclosed_hint(text))
+        errors.append(str(issue) + (_unclosed_hint(text) if locate else ""))
     try:
         constraints = validate_constraints(extract_constraints(text, domain.rule_fields), world, domain.rule_fields)
     except ParseIssue as issue:

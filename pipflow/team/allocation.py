@@ -301,7 +301,8 @@ def greedy(Q, Y, c, allowed, lin: list[Linear] = ()) -> list[int]:
 
 
 def blind(Q, Y, c, allowed, lin: list[Linear] = ()) -> list[int]:
-    """Cost-blind (the paper's w/o AS ablation): fewest robots, ties broken by robot order.
+    """Cost-blind (pipflow's ablation of the cost; the paper's w/o AS, an allocation by a language
+    model, is :mod:`pipflow.language.allocator`): fewest robots, ties broken by robot order.
 
     SCIP, so extra linear constraints are honoured; costs are never looked at."""
     n = len(c)

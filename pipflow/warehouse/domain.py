@@ -54,7 +54,11 @@ class WarehouseDomain(TaskDomain):
 
     name = "warehouse"
     workflow = "warehouse"
-    workflows = {"pip-llm": "pip-llm", "pip-llm-checked": "pip-llm-checked"}
+    workflows = {"pip-llm": "pip-llm", "pip-llm-checked": "pip-llm-checked",
+                 # the paper's ablations (Table III) and the w/o B (docs/paper.md, "Ablations")
+                 **{name: name for name in ("pip-llm-no-domain", "pip-llm-no-debugger", "pip-llm-no-bv",
+                                            "pip-llm-no-as", "pip-llm-n1", "pip-llm-n2", "pip-llm-n3",
+                                            "pip-llm-n4")}}
     default_prompt = "warehouse_problem"
     rule_fields = FIELD_KEYS
     grounding = Grounding(gbnf=grounding.gbnf, response_format=grounding.response_format, read=_read_grounded)
