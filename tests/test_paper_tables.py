@@ -40,7 +40,7 @@ def write_bench(folder: Path, domain: str, variants: dict[str, dict], rows: list
 def row(variant: str, task: str, seed: int, success: bool, tc_max: float, tc_moved: float, gcr: float, ru: float,
         exe: float, refused: bool = False, model: str = "openai/gpt-4o") -> dict:
     return {"variant": variant, "task": task, "seed": seed, "success": success, "refused": refused,
-            "tc_max": tc_max, "tc_avg": tc_moved / 2, "tc_avg_moved": tc_moved, "gcr": gcr, "ru": ru, "exe": exe,
+            "tc_max": tc_max, "tc_avg": tc_moved, "tc_avg_team": tc_moved / 2, "gcr": gcr, "ru": ru, "exe": exe,
             "model": model, "status": "refused" if refused else ("succeeded" if success else "failed")}
 
 
@@ -77,7 +77,7 @@ def expected_cell(rows: list[dict]) -> dict:
     out = {"runs": n, "sr": sum(r["success"] for r in rows) / n, "gcr": sum(r["gcr"] for r in rows) / n,
            "ru": sum(r["ru"] for r in rows) / n, "exe": sum(r["exe"] for r in rows) / n, "tc_runs": len(done)}
     out["tc_max"] = sum(r["tc_max"] for r in done) / len(done) if done else None
-    out["tc_avg"] = sum(r["tc_avg_moved"] for r in done) / len(done) if done else None
+    out["tc_avg"] = sum(r["tc_avg"] for r in done) / len(done) if done else None
     return out
 
 

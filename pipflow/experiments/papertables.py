@@ -17,8 +17,8 @@ Every cell is computed from the runs it covers (``runs.json``), never from other
 RU and Exe are means over all runs of the variant in the group; TC-max and TC-avg are means over
 the runs that succeeded by executing their task (a right refusal moved nobody and is left out),
 "--" when there is none, like the paper's "--/--". TC-avg is the paper's, over the robots that
-moved (``tc_avg_moved`` where a row has it, the name of that figure before the metrics were
-renamed, else ``tc_avg``). A cell over fewer than ``min_runs`` runs (:data:`MIN_RUNS` unless
+moved (``tc_avg``; rows written before the metrics were renamed are read through
+:func:`pipflow.metrics.upgrade_travel_keys`). A cell over fewer than ``min_runs`` runs (:data:`MIN_RUNS` unless
 told) is marked: "(n=2)" in text, a dagger in LaTeX with a note under the table, and every CSV
 cell group carries its run counts.
 """
@@ -33,6 +33,7 @@ from typing import Iterable
 from pipflow.engine.store import atomic_write, read_json
 from pipflow.errors import InputError
 from pipflow.experiments.benchdomains import domain_named
+from pipflow.metrics import upgrade_travel_keys
 
 #: a cell averaged over fewer runs than this is marked as too few (the paper runs each warehouse
 #: task 10 times; 3 is the fewest that can tell 0, 1/3, 2/3 and 1 apart)
@@ -81,7 +82,7 @@ def _mean(values: list[float]) -> float | None:
 
 def paper_tc_avg(row: dict) -> float:
     """The paper's TC-avg of one run (over the robots that moved), in either era of row names."""
-    return float(row["tc_avg_moved"] if row.get("tc_avg_moved") is not None else row.get("tc_avg") or 0.0)
+    return float(upgrade_travel_keys(row).get("tc_avg") or 0.0)
 
 
 def cell(rows: list[dict]) -> Cell:
