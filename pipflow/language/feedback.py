@@ -19,6 +19,7 @@ import re
 from typing import Any
 
 from pipflow.goalcounts import is_bound
+from pipflow.language.parsing import decode_answer_json
 
 #: the variations, in the order they are tried (each level adds one to the ones before)
 QUOTE, FACTS, TEMPERATURE = "quoted previous answer", "added world facts", "raised temperature"
@@ -80,7 +81,7 @@ def quote(answer: str, messages: list[str], world: dict, grounded: bool) -> str:
     text = answer.strip()
     if grounded:
         try:
-            data = json.loads(text)
+            data, _ = decode_answer_json(text)
             items = [json.dumps(x) for x in data.get("statements", []) + data.get("goal", [])] + \
                     [json.dumps(x) for x in data.get("rules", []) + data.get("constraints", [])]
             text = "\n".join(items) or text
