@@ -115,6 +115,15 @@ def _check_format(template: Any) -> None:
         raise TooLarge("a format width or precision of 10 million or more")
 
 
+def _check_fields(template: Any, values: list, mark: str) -> None:
+    """A format template fills each of its fields (``mark``: ``%`` or ``{``) with one of the
+    values, and a field may name the same value again and again (``'{0}{0}{0}'``): what it can
+    build is at most its length plus its fields times its largest value."""
+    if isinstance(template, str) and values:
+        largest = max(_weight(v, MAX_BUILD + 1) for v in values)
+        _check_size(len(template) + template.count(mark) * largest, "formatting")
+
+
 # calls whose whole-number arguments say how much they build (padding widths, counts of pieces)
 _SIZED_CALLS = {"center", "ljust", "rjust", "zfill", "expandtabs", "do_center", "do_indent", "do_wordwrap",
                 "do_batch", "do_slice", "do_format", "format", "format_map", "lipsum", "generate_lorem_ipsum",
@@ -135,7 +144,11 @@ def _check_call(func: Any, args: tuple, kwargs: dict, value_first: bool = False)
         for value in [*given, *kwargs.values()]:
             _check_int(value, f"argument of {name.removeprefix('do_')}")
     if name in ("format", "format_map", "do_format"):
-        _check_format(owner if isinstance(owner, str) else (args[0] if args else None))
+        template = owner if isinstance(owner, str) else (args[0] if args else None)
+        _check_format(template)
+        values = list(given if isinstance(owner, str) else args[1:]) + list(kwargs.values())
+        values = [x for v in values for x in (v.values() if isinstance(v, Mapping) and name == "format_map" else [v])]
+        _check_fields(template, values, "%" if name == "do_format" else "{")
     if name == "join" and isinstance(owner, (str, bytes)) and args and isinstance(args[0], (list, tuple, str)):
         _check_size(_weight(args[0]) + len(owner) * len(args[0]), "join")
     if name in ("escape", "do_forceescape") and args and isinstance(args[0], str):
@@ -181,6 +194,19 @@ def _bounded_concat(values: Any) -> str:
     return "".join(v if isinstance(v, str) else str(v) for v in values)
 
 
+def _bounded_format(template: str, attribute: str, method: Any) -> Any:
+    """``template.format``/``format_map`` as jinja2's sandbox gives it, with its fields checked
+    against its values first (the wrapper jinja2 returns no longer names the template)."""
+    @functools.wraps(method)
+    def bounded(*args: Any, **kwargs: Any) -> Any:
+        values = list(args) + list(kwargs.values())
+        if attribute == "format_map":
+            values = [x for v in values for x in (v.values() if isinstance(v, Mapping) else [v])]
+        _check_fields(template, values, "{")
+        return method(*args, **kwargs)
+    return bounded
+
+
 def _whole(value: Any) -> bool:
     return isinstance(value, int) and not isinstance(value, bool)
 
@@ -200,6 +226,7 @@ class _Env(ImmutableSandboxedEnvironment):
             return self.undefined(obj=obj, name=attribute)
         if isinstance(obj, str) and attribute in ("format", "format_map"):
             _check_format(obj)  # jinja2 hands back its own wrapper, which no longer names the text
+            return _bounded_format(obj, attribute, super().getattr(obj, attribute))
         return super().getattr(obj, attribute)
 
     def call_binop(self, context: Any, operator: str, left: Any, right: Any) -> Any:
@@ -217,6 +244,8 @@ class _Env(ImmutableSandboxedEnvironment):
             _check_size(_weight(left) + _weight(right), "joining two values")
         elif operator == "%" and isinstance(left, str):
             _check_format(left)
+            _check_fields(left, list(right.values()) if isinstance(right, Mapping)
+                          else list(right) if isinstance(right, tuple) else [right], "%")
             if "*" in left:  # '%*d' takes its width from the values
                 for value in (right if isinstance(right, tuple) else (right,)):
                     _check_int(value, "a width given to %*")

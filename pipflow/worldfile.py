@@ -45,18 +45,21 @@ def read_world_file(path: str | Path) -> tuple[Path, str]:
 
 
 def size_limits(defaults: Mapping[str, int] | None = None) -> dict[str, int]:
-    """The size limit of each section: :data:`SECTION_LIMIT` for any section, a domain's own
-    ``defaults`` where it gives them, and what :data:`LIMITS_VARIABLE` sets over both (``"*"``
-    sets every section). A malformed variable is an InputError naming it."""
+    """The size limit of each section (``"*"``: any other): :data:`SECTION_LIMIT`, a domain's
+    own ``defaults`` where it gives them, and what :data:`LIMITS_VARIABLE` sets over both
+    (``*=N`` sets every section it does not name). A malformed variable is an InputError naming it."""
     limits = {"*": SECTION_LIMIT, **(defaults or {})}
     raw = os.environ.get(LIMITS_VARIABLE, "").strip()
+    given: dict[str, int] = {}
     for item in filter(None, (part.strip() for part in raw.replace(";", ",").split(","))):
         name, sep, value = item.partition("=")
         if not sep or not name.strip() or not value.strip().isdigit() or int(value) < 1:
             raise InputError(f"{LIMITS_VARIABLE}={raw!r}: {item!r} is not SECTION=N with N a whole number of "
-                             f"1 or more (for example {LIMITS_VARIABLE}=robots=50000,shelves=30000)")
-        limits[name.strip()] = int(value)
-    return limits
+                             f"1 or more (for example {LIMITS_VARIABLE}=robots=50000,units=500000)")
+        given[name.strip()] = int(value)
+    if "*" in given:
+        limits = dict.fromkeys(limits, given["*"])
+    return {**limits, **given}
 
 
 def size_diagnostics(text: str, file: str, kind: str, limits: Mapping[str, int] | None = None) -> list[Diagnostic]:
