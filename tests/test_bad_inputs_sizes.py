@@ -398,3 +398,18 @@ def test_a_bad_grounded_answer_is_feedback_for_the_next_round(llm_env, case):
     assert run.status == "succeeded", run.error
     assert run.outputs["rounds"] == 2
     assert said in _feedback(prompts[1]), _feedback(prompts[1])[:600]
+
+
+def test_a_world_whose_domain_has_no_example_problem_still_bounds_the_objects_by_its_names():
+    """Without an example problem (a plugin domain may have none), a problem of a world is
+    measured against the world's own names: 500 declared objects for a world of three names is
+    too large, 30 is not; without a world only the absolute bounds hold."""
+    from pipflow.pddl.size import expected_size, size_issues
+    world = {"robots": {"r1": {}, "r2": {}}, "places": {"dock": {}}, "speed": 1.0}
+    expected = expected_size(world, None)
+    assert expected.objects == 3
+    many = "(define (problem p) (:domain d) (:objects " + " ".join(f"o{i}" for i in range(500)) + " - thing) (:init) (:goal (and)))"
+    few = "(define (problem p) (:domain d) (:objects " + " ".join(f"o{i}" for i in range(30)) + " - thing) (:init) (:goal (and)))"
+    assert any("500 objects" in m for m in size_issues(many, expected))
+    assert size_issues(few, expected) == []
+    assert expected_size(None, None) is None and size_issues(many, None) == []

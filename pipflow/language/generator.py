@@ -31,7 +31,7 @@ from pipflow.language.parsing import (ParseIssue, extract_constraints, extract_p
 from pipflow.language.prompting import render
 from pipflow.pddl.common import parse
 from pipflow.pddl.debugger import unclosed_section
-from pipflow.pddl.size import measure, size_issues
+from pipflow.pddl.size import expected_size, size_issues
 from pipflow.taskdomain import TaskDomain
 from pipflow.taskdomains import task_domain
 
@@ -209,7 +209,7 @@ def _read_answer(text: str, world: dict, grounded: bool, domain_text: str, domai
         problem = extract_problem(text)
     except ParseIssue as issue:
         errors.append(str(issue) + _unclosed_hint(text))
-    too_large = size_issues(problem, measure(example) if example else None) if problem else []
+    too_large = size_issues(problem, expected_size(world, example)) if problem else []
     if too_large:  # parsing it would cost minutes: the model is told what to leave out instead
         errors += too_large
         problem = ""

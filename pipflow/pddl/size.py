@@ -89,6 +89,18 @@ def measure(text: str) -> ProblemSize:
     return ProblemSize(counts["objects"], counts["init"], counts["goal"], nesting)
 
 
+def expected_size(world: dict | None, example: str | None) -> ProblemSize | None:
+    """What a problem of ``world`` holds: its domain's ``example`` problem measured; without one,
+    the world's names (the entries of its sections) as objects, the facts and goal unbounded
+    but by :data:`ABSOLUTE`; None without a world."""
+    if example:
+        return measure(example)
+    if not isinstance(world, dict):
+        return None
+    names = sum(len(v) for v in world.values() if isinstance(v, dict))
+    return ProblemSize(objects=names, facts=ABSOLUTE, goal=ABSOLUTE)
+
+
 def number_issues(text: str, what: str = "your problem") -> list[str]:
     """Numbers of ``text`` larger than :data:`MAX_NUMBER` (``1e400``, a 30-digit count), as
     messages for the model; read as decimals, so no number overflows while it is checked."""
