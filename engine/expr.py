@@ -12,11 +12,19 @@ Inside the braces is a jinja2 expression over the run's namespace::
 
 The dependencies of a step are the step ids its expressions name, read off jinja2's AST.
 
-The sandbox also bounds what an expression may build: ``${ 'a' * 10**10 }`` would allocate
-10 GB before any check could look at the result, so repetition, powers, concatenation, padding
-and format widths are checked *before* they run (:data:`MAX_BUILD` characters or items,
-:data:`MAX_INT_BITS` bits), and jinja2's compile-time constant folding, which would run them
-while compiling, is kept off for those operators.
+The sandbox also bounds what an expression may build, in two layers:
+
+* **before**: ``${ 'a' * 10**10 }`` would allocate 10 GB before any check could look at the
+  result, so what can grow without bound from a small input is checked *before* it runs:
+  repetition, powers and products of integers, concatenation, padding, format widths, joins,
+  replacements, escapes, translation tables (:data:`MAX_BUILD` characters or items,
+  :data:`MAX_INT_BITS` bits); jinja2's compile-time constant folding, which would run them while
+  compiling, is kept off for those operators.
+* **after**: the result of *every* filter, method call and operator is checked against the same
+  bounds, whatever the filter (``forceescape`` makes 4-5 characters of one, ``urlencode`` up to
+  12, ``tojson`` up to 12): so no chain of filters can multiply a value past the bounds, and the
+  most one step can build before it is refused is its own growth factor times
+  :data:`MAX_BUILD`. A text made of several ``${...}`` is bounded the same way.
 """
 from __future__ import annotations
 
@@ -83,6 +91,20 @@ def _check_size(n: float, what: str) -> None:
                        "an expression may build")
 
 
+def _check_result(value: Any, what: str) -> Any:
+    """The value itself, if it is within the bounds; :class:`TooLarge` otherwise (the "after"
+    layer of the module docstring: every filter, method and operator result passes here)."""
+    if isinstance(value, int) and not isinstance(value, bool):
+        if value.bit_length() > MAX_INT_BITS:
+            raise TooLarge(f"{what} made an integer of {value.bit_length()} bits, more than the {MAX_INT_BITS} "
+                           "an expression may build")
+    elif isinstance(value, (str, bytes, list, tuple, dict)):
+        if _weight(value) > MAX_BUILD:
+            raise TooLarge(f"{what} made a value of more than {MAX_BUILD} characters or items, more than "
+                           "an expression may build")
+    return value
+
+
 def _check_int(value: Any, what: str) -> None:
     if isinstance(value, int) and not isinstance(value, bool) and abs(value) > MAX_BUILD:
         raise TooLarge(f"{what}: {value} is larger than the {MAX_BUILD} an expression may use here")
@@ -93,9 +115,21 @@ def _check_format(template: Any) -> None:
         raise TooLarge("a format width or precision of 10 million or more")
 
 
+def _check_fields(template: Any, values: list, mark: str) -> None:
+    """A format template fills each of its fields (``mark``: ``%`` or ``{``) with one of the
+    values, and a field may name the same value again and again (``'{0}{0}{0}'``): what it can
+    build is at most its length plus its fields times its largest value."""
+    if isinstance(template, str) and values:
+        largest = max(_weight(v, MAX_BUILD + 1) for v in values)
+        _check_size(len(template) + template.count(mark) * largest, "formatting")
+
+
 # calls whose whole-number arguments say how much they build (padding widths, counts of pieces)
 _SIZED_CALLS = {"center", "ljust", "rjust", "zfill", "expandtabs", "do_center", "do_indent", "do_wordwrap",
-                "do_batch", "do_slice", "do_format", "format", "format_map", "lipsum", "generate_lorem_ipsum"}
+                "do_batch", "do_slice", "do_format", "format", "format_map", "lipsum", "generate_lorem_ipsum",
+                "to_bytes"}
+#: characters an HTML escape adds to each character it replaces (markupsafe: & -> &amp;, " -> &#34;)
+_ESCAPE_GROWTH = {"&": 4, "<": 3, ">": 3, '"': 4, "'": 4}
 
 
 def _check_call(func: Any, args: tuple, kwargs: dict, value_first: bool = False) -> None:
@@ -110,9 +144,18 @@ def _check_call(func: Any, args: tuple, kwargs: dict, value_first: bool = False)
         for value in [*given, *kwargs.values()]:
             _check_int(value, f"argument of {name.removeprefix('do_')}")
     if name in ("format", "format_map", "do_format"):
-        _check_format(owner if isinstance(owner, str) else (args[0] if args else None))
-    if name == "join" and isinstance(owner, str) and args and isinstance(args[0], (list, tuple, str)):
+        template = owner if isinstance(owner, str) else (args[0] if args else None)
+        _check_format(template)
+        values = list(given if isinstance(owner, str) else args[1:]) + list(kwargs.values())
+        values = [x for v in values for x in (v.values() if isinstance(v, Mapping) and name == "format_map" else [v])]
+        _check_fields(template, values, "%" if name == "do_format" else "{")
+    if name == "join" and isinstance(owner, (str, bytes)) and args and isinstance(args[0], (list, tuple, str)):
         _check_size(_weight(args[0]) + len(owner) * len(args[0]), "join")
+    if name in ("escape", "do_forceescape") and args and isinstance(args[0], str):
+        _check_size(len(args[0]) + sum(args[0].count(c) * k for c, k in _ESCAPE_GROWTH.items()), "escaping")
+    if name == "translate" and isinstance(owner, str) and args and isinstance(args[0], Mapping):
+        longest = max((len(v) for v in args[0].values() if isinstance(v, str)), default=1)
+        _check_size(len(owner) * longest, "translate")
     if name in ("replace", "do_replace"):
         text, rest = (owner, args) if isinstance(owner, str) else (args[-3] if len(args) >= 3 else None, args[-2:])
         if isinstance(text, str) and len(rest) >= 2 and isinstance(rest[0], str) and isinstance(rest[1], str):
@@ -135,7 +178,8 @@ def _bounded_filter(func: Any) -> Any:
     @functools.wraps(func)  # keeps jinja2's pass_context/pass_environment marks
     def checked(*args: Any, **kwargs: Any) -> Any:
         _check_call(func, _after_context(func, args), kwargs, value_first=True)
-        return func(*args, **kwargs)
+        return _check_result(func(*args, **kwargs), f"the filter {name}")
+    name = getattr(func, "__name__", "?").removeprefix("sync_").removeprefix("do_")
     return checked
 
 
@@ -148,6 +192,23 @@ def _bounded_concat(values: Any) -> str:
     """``a ~ b ~ c`` (jinja2's Concat node is rewritten to call this): sizes summed first."""
     _check_size(sum(_weight(v) for v in values), "the joined text")
     return "".join(v if isinstance(v, str) else str(v) for v in values)
+
+
+def _bounded_format(template: str, attribute: str, method: Any) -> Any:
+    """``template.format``/``format_map`` as jinja2's sandbox gives it, with its fields checked
+    against its values first (the wrapper jinja2 returns no longer names the template)."""
+    @functools.wraps(method)
+    def bounded(*args: Any, **kwargs: Any) -> Any:
+        values = list(args) + list(kwargs.values())
+        if attribute == "format_map":
+            values = [x for v in values for x in (v.values() if isinstance(v, Mapping) else [v])]
+        _check_fields(template, values, "{")
+        return method(*args, **kwargs)
+    return bounded
+
+
+def _whole(value: Any) -> bool:
+    return isinstance(value, int) and not isinstance(value, bool)
 
 
 class _Env(ImmutableSandboxedEnvironment):
@@ -165,6 +226,7 @@ class _Env(ImmutableSandboxedEnvironment):
             return self.undefined(obj=obj, name=attribute)
         if isinstance(obj, str) and attribute in ("format", "format_map"):
             _check_format(obj)  # jinja2 hands back its own wrapper, which no longer names the text
+            return _bounded_format(obj, attribute, super().getattr(obj, attribute))
         return super().getattr(obj, attribute)
 
     def call_binop(self, context: Any, operator: str, left: Any, right: Any) -> Any:
@@ -172,6 +234,9 @@ class _Env(ImmutableSandboxedEnvironment):
             for seq, times in ((left, right), (right, left)):
                 if isinstance(seq, (str, bytes, list, tuple)) and isinstance(times, int) and times > 0:
                     _check_size(_weight(seq, MAX_BUILD // times + 1) * times, "repeating a value")
+            if _whole(left) and _whole(right) and left.bit_length() + right.bit_length() > MAX_INT_BITS + 1:
+                raise TooLarge(f"a product of integers of {left.bit_length()} and {right.bit_length()} bits has "
+                               f"more than the {MAX_INT_BITS} bits an expression may build")
         elif operator == "**" and isinstance(left, int) and isinstance(right, int) and abs(left) > 1 and right > 0:
             if right * math.log2(abs(left)) > MAX_INT_BITS:
                 raise TooLarge(f"{left} ** {right} has more than {MAX_INT_BITS} bits")
@@ -179,14 +244,17 @@ class _Env(ImmutableSandboxedEnvironment):
             _check_size(_weight(left) + _weight(right), "joining two values")
         elif operator == "%" and isinstance(left, str):
             _check_format(left)
+            _check_fields(left, list(right.values()) if isinstance(right, Mapping)
+                          else list(right) if isinstance(right, tuple) else [right], "%")
             if "*" in left:  # '%*d' takes its width from the values
                 for value in (right if isinstance(right, tuple) else (right,)):
                     _check_int(value, "a width given to %*")
-        return super().call_binop(context, operator, left, right)
+        return _check_result(super().call_binop(context, operator, left, right), f"the operator {operator}")
 
     def call(__self, __context: Any, __obj: Any, *args: Any, **kwargs: Any) -> Any:  # noqa: N805
         _check_call(__obj, args, kwargs)
-        return super().call(__context, __obj, *args, **kwargs)
+        return _check_result(super().call(__context, __obj, *args, **kwargs),
+                             f"{getattr(__obj, '__name__', 'a call')}()")
 
 
 _ENV = _Env(undefined=StrictUndefined)
@@ -494,12 +562,17 @@ def resolve(value: Any, namespace: Mapping[str, Any]) -> Any:
             if len(parts) == 1 and parts[0][0]:
                 return evaluate_expression(parts[0][1], namespace)
         pieces = []
+        size = 0
         for is_expr, part in split_template(value):
             if not is_expr:
                 pieces.append(part)
-                continue
-            result = evaluate_expression(part, namespace)
-            pieces.append(result if isinstance(result, str) else json.dumps(result, default=str))
+            else:
+                result = evaluate_expression(part, namespace)
+                pieces.append(result if isinstance(result, str) else json.dumps(result, default=str))
+            size += len(pieces[-1])
+            if size > MAX_BUILD:  # each piece is within the bounds; many of them together need not be
+                raise ExpressionError(f"the text around ${{{part}}} would have more than {MAX_BUILD} characters, "
+                                      "more than an expression may build")
         return "".join(pieces)
     if isinstance(value, dict):
         return {k: resolve(v, namespace) for k, v in value.items()}

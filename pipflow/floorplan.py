@@ -10,8 +10,9 @@ import math
 import random
 from typing import Any, Iterable, Mapping
 
-from pipflow.errors import Diagnostic, Location, WorldError
+from pipflow.errors import Diagnostic, Location, UserError, WorldError
 from pipflow.worldfile import Locate, is_point
+from pipflow.yamlsource import read_source, section_sizes
 
 
 def footprint(shelf: dict) -> tuple[float, float, float, float]:
@@ -62,6 +63,11 @@ def layout_diagnostics(geo: dict, floor: dict | None, locate: Locate, section: s
 
 #: metres between candidate start points (a lattice keeps seeded runs easy to read)
 START_GRID = 0.5
+#: lattice points of a floor listed at most (a 500 x 500 m floor); a larger floor is sampled
+#: point by point, so no floor's size is ever allocated for
+MAX_LATTICE = 1_000_000
+#: random lattice points tried per robot on a sampled floor before the floor is called full
+SAMPLE_TRIES = 5000
 
 
 def seeded_starts(world: dict, seed: int | None, footprints: Iterable[Mapping[str, Any]], *, label: str,
@@ -75,7 +81,14 @@ def seeded_starts(world: dict, seed: int | None, footprints: Iterable[Mapping[st
     floor, outside every footprint grown by ``clearance``, at least ``spacing`` from every access
     point; they are shuffled by ``random.Random(f"{label}-{seed}")`` (the label keeps each domain's
     sequence its own) and given to the robots in name order, each ``spacing`` apart from those
-    placed before. Raises WorldError (located at the world file) when a robot finds no point."""
+    placed before.
+
+    Whether the robots fit does not depend on the seed: when the shuffled order leaves a robot
+    without a point, the floor is packed in lattice order (row by row, the densest this rule
+    allows) and the seed only decides who stands where; when even that packing has fewer points
+    than robots, every seed would fail alike, and the WorldError says so at the world file's
+    ``robots`` (how many fit, how many there are, and the rule). A floor of more than
+    :data:`MAX_LATTICE` lattice points is sampled instead of listed."""
     if seed is None:
         return world
     rng = random.Random(f"{label}-{seed}")
@@ -87,19 +100,92 @@ def seeded_starts(world: dict, seed: int | None, footprints: Iterable[Mapping[st
                    and math.dist(p["access"], (x, y)) >= spacing for p in places)
 
     width, height = world["floor"]["width"], world["floor"]["height"]
-    candidates = [(i * START_GRID, j * START_GRID)
-                  for i in range(int(margin / START_GRID), int((width - margin) / START_GRID) + 1)
-                  for j in range(int(margin / START_GRID), int((height - margin) / START_GRID) + 1)]
-    candidates = [q for q in candidates if free(*q)]
-    rng.shuffle(candidates)
+    cols = range(int(margin / START_GRID), int((width - margin) / START_GRID) + 1)
+    rows = range(int(margin / START_GRID), int((height - margin) / START_GRID) + 1)
+    names = sorted(world["robots"])
+    if len(cols) * len(rows) <= MAX_LATTICE:
+        candidates = [(i * START_GRID, j * START_GRID) for i in cols for j in rows]
+        candidates = [q for q in candidates if free(*q)]
+        lattice_order = list(candidates)
+        rng.shuffle(candidates)
+        points = _spaced(candidates, len(names), spacing)
+        if len(points) < len(names):
+            points = _spaced(lattice_order, len(lattice_order), spacing)
+            if len(points) < len(names):
+                raise _no_room(world, seed, len(points), len(names), clearance, spacing, margin)
+            rng.shuffle(points)
+    else:
+        points = _sampled(rng, cols, rows, free, len(names), spacing)
+        if len(points) < len(names):
+            raise _no_room(world, seed, len(points), len(names), clearance, spacing, margin, sampled=True)
     varied = copy.deepcopy(world)
-    taken: list[tuple[float, float]] = []
-    for name in sorted(varied["robots"]):
-        point = next((q for q in candidates if all(math.dist(q, t) >= spacing for t in taken)), None)
-        if point is None:
-            raise WorldError([Diagnostic(Location(str(world.get("path", ""))),
-                                         f"seed {seed}: no free start left on the floor for robot {name!r} "
-                                         f"({len(taken)} robots placed)")])
-        taken.append(point)
+    for name, point in zip(names, points):
         varied["robots"][name]["start"] = [point[0], point[1]]
     return varied
+
+
+class _Spacing:
+    """Points taken so far, each ``spacing`` from the others; a new point is compared only with
+    the taken points of its neighbouring grid cells (a cell is ``spacing`` wide), so taking n
+    points costs O(n), not O(n^2)."""
+
+    def __init__(self, spacing: float):
+        self.spacing, self.cell = spacing, max(spacing, 1e-9)
+        self.taken: list[tuple[float, float]] = []
+        self._grid: dict[tuple[int, int], list[tuple[float, float]]] = {}
+
+    def fits(self, q: tuple[float, float]) -> bool:
+        cx, cy = int(q[0] // self.cell), int(q[1] // self.cell)
+        return all(math.dist(q, t) >= self.spacing for dx in (-1, 0, 1) for dy in (-1, 0, 1)
+                   for t in self._grid.get((cx + dx, cy + dy), ()))
+
+    def add(self, q: tuple[float, float]) -> None:
+        self.taken.append(q)
+        self._grid.setdefault((int(q[0] // self.cell), int(q[1] // self.cell)), []).append(q)
+
+
+def _spaced(candidates: list[tuple[float, float]], wanted: int, spacing: float) -> list[tuple[float, float]]:
+    """The candidates, in their order, that are ``spacing`` apart from every one taken before,
+    up to ``wanted`` of them."""
+    spaced = _Spacing(spacing)
+    for q in candidates:
+        if len(spaced.taken) >= wanted:
+            break
+        if spaced.fits(q):
+            spaced.add(q)
+    return spaced.taken
+
+
+def _sampled(rng: random.Random, cols: range, rows: range, free: Any, wanted: int,
+             spacing: float) -> list[tuple[float, float]]:
+    """Seeded random lattice points of a floor too large to list, free and ``spacing`` apart."""
+    spaced = _Spacing(spacing)
+    for _ in range(wanted):
+        for _ in range(SAMPLE_TRIES):
+            q = (rng.choice(cols) * START_GRID, rng.choice(rows) * START_GRID)
+            if free(*q) and spaced.fits(q):
+                spaced.add(q)
+                break
+        else:
+            break
+    return spaced.taken
+
+
+def _no_room(world: dict, seed: int, room: int, robots: int, clearance: float, spacing: float, margin: float,
+             sampled: bool = False) -> WorldError:
+    """The refusal of a floor that cannot hold the robots' seeded starts, at the world file's
+    ``robots`` key: the same for every seed."""
+    path = str(world.get("path", ""))
+    where = Location(path)
+    try:
+        found = section_sizes(read_source(path, "world file")).get("robots") if path else None
+    except UserError:
+        found = None
+    if found:
+        where = Location(path, found[1], found[2])
+    found_how = (f"no free point was found for robot {room + 1} in {SAMPLE_TRIES} tries" if sampled
+                 else f"the floor has room for {room} seeded start{'s' if room != 1 else ''}")
+    return WorldError([Diagnostic(where, f"seed {seed}: {found_how}, and the world has {robots} robots (seeded starts "
+                                         f"lie on a {START_GRID} m grid, {margin:g} m inside the walls, {clearance:g} m "
+                                         f"from every footprint, {spacing:g} m from access points and from each other; "
+                                         "every seed is alike): make the floor larger or use fewer robots")])

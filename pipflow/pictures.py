@@ -163,6 +163,10 @@ def animation_gif(world: dict, trajectories: dict[str, list], path: Path, makesp
     return Path(path)
 
 
+#: the tallest Gantt chart drawn, whatever the number of robots (inches; 5,400 pixels at 90 dpi)
+GANTT_MAX_INCHES = 60.0
+
+
 def gantt(schedule: dict, path: Path) -> Path:
     """One row per robot that works: its travel legs (light) and the subtasks it works on
     (labelled). Idle robots get no row (the title counts them): with a thousand robots the chart
@@ -170,7 +174,9 @@ def gantt(schedule: dict, path: Path) -> Path:
     plt = _plt()
     robots = _working_robots(schedule)
     idle = len(set(schedule.get("robots") or {}) - set(robots))
-    fig, ax = plt.subplots(figsize=(10, max(2.5, 0.45 * len(robots) + 1.2)))
+    # rows thin out past 130 robots rather than the canvas growing with them (a chart of 20,000
+    # working robots would be a 9,000-inch image: gigabytes of pixels)
+    fig, ax = plt.subplots(figsize=(10, min(GANTT_MAX_INCHES, max(2.5, 0.45 * len(robots) + 1.2))))
     row = {r: i for i, r in enumerate(robots)}
     for r, info in (schedule.get("robots") or {}).items():
         for leg in info.get("legs", []) if r in row else []:

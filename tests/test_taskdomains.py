@@ -266,7 +266,8 @@ def test_seeded_starts_are_one_rule_for_every_domain():
     crowded = {**world, "floor": {"width": 3, "height": 3}}
     with pytest.raises(WorldError) as err:
         seeded_starts(crowded, 1, [], **kw)
-    assert "tiny.yaml" in str(err.value) and "no free start left on the floor for robot" in str(err.value)
+    assert "tiny.yaml" in str(err.value) and "the floor has room for 4 seeded starts" in str(err.value)
+    assert "the world has 6 robots" in str(err.value) and "every seed is alike" in str(err.value)
 
 
 def test_every_simulate_and_score_step_declares_the_core():

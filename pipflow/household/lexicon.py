@@ -233,10 +233,18 @@ for (_k, (_c, _v)) in list(PHRASES.items()):
 _STATE_WORDS = sorted({w for w in ADJECTIVES} | {"on", "off"}, key=len, reverse=True)
 
 
+#: the marks this reader reads besides ASCII letters, digits and white space (every other
+#: character is refused before reading: :mod:`pipflow.language.characters`), each with its
+#: reading: sentence and clause punctuation (. ; ! ? end a sentence, the ellipsis too); the
+#: apostrophes of contractions and possessives; "-" and "_" inside names (a space), "-" before a
+#: number (a minus sign: no count); quotes, brackets and dashes (nothing)
+MARKS = frozenset(".,;:!?'\"()[]-_\u2018\u2019\u201c\u201d\u2010\u2011\u2012\u2013\u2014\u2015\u2026")
+
+
 def normalize(text: str) -> str:
     """Lower case, contractions spelt out ("don't" -> "do not"), hyphens and underscores as
     spaces, so that "desk-lamp", "desk_lamp" and "desk lamp" read alike."""
-    t = text.lower().replace("’", "'")
+    t = text.lower().replace("’", "'").replace("\u2026", "...")
     t = re.sub(r"\b(don't|dont)\b", "do not", t)
     t = re.sub(r"\bdoesn't\b", "does not", t)
     t = re.sub(r"\bcan't\b|\bcannot\b", "can not", t)

@@ -28,8 +28,9 @@ from lark.visitors import CollapseAmbiguities
 
 from pipflow.errors import TranslationError
 from pipflow.household.grammar import NOUN_DUAL, grammar_text
-from pipflow.household.lexicon import (ACTIVITIES, COLD, FILLER, FILLER_TYPO_TARGETS, LIGHT_CATEGORY_WORD, MEALS,
-                                       OPPOSITE, PHRASES, UNIT_DETERMINERS, plurals, words_of)
+from pipflow.household.lexicon import (ACTIVITIES, COLD, FILLER, FILLER_TYPO_TARGETS, LIGHT_CATEGORY_WORD, MARKS,
+                                       MEALS, OPPOSITE, PHRASES, UNIT_DETERMINERS, plurals, words_of)
+from pipflow.language.characters import refuse_unread
 from pipflow.language.names import distance
 from pipflow.language.numbers import read_number
 
@@ -235,6 +236,7 @@ def parse(command: str, world: dict, notes: list[str] | None = None) -> list[dic
     words where the command stops making sense to the grammar."""
     if not isinstance(command, str) or not command.strip():
         raise TranslationError("the command is empty")
+    refuse_unread(command, MARKS)   # a character this reader does not read is refused, never skipped
     notes = notes if notes is not None else []
     tags = tag(command, world, notes)
     if not [t for t in tags if t.cls not in ("END", "COMMA")]:

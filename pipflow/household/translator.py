@@ -19,6 +19,7 @@ from pipflow.errors import Refusal, TranslationError
 from pipflow.household.parser import parse
 from pipflow.household.resolver import resolve
 from pipflow.household.world import members
+from pipflow.language.characters import line_readings
 
 
 def _leave_closed(world: dict, goal: dict) -> None:
@@ -41,7 +42,34 @@ def _key(goal: dict) -> str:
 
 def understand(command: str, world: dict) -> dict:
     """``{"order", "goal", "explain", "notes", "words"}``: the one meaning of the command in this world
-    (module docstring); TranslationError (not understood, ambiguous) or Refusal (impossible)."""
+    (module docstring); TranslationError (not understood, ambiguous) or Refusal (impossible).
+
+    A line break ends a sentence. A command that only makes sense with its lines joined (a
+    sentence wrapped onto the next line) is read joined; one that makes sense both ways with two
+    different goals is refused, quoting both (:func:`pipflow.language.characters.line_readings`)."""
+    texts = line_readings(command)
+    results: list[dict] = []
+    first_error: Exception | None = None
+    for text in texts:
+        try:
+            results.append(_understand(text, world))
+        except (TranslationError, Refusal) as exc:
+            first_error = first_error or exc
+    if not results:
+        assert first_error is not None
+        raise first_error
+    if len(results) > 1 and _key(results[0]["goal"]) != _key(results[1]["goal"]):
+        raise TranslationError(f"the line breaks of {texts[0]!r} can end sentences or continue them, and the two "
+                               f"readings ask for different things: " + " or ".join(
+                                   json.dumps(r["goal"], sort_keys=True) for r in results)
+                               + "; nothing is guessed: end each sentence with a full stop")
+    result = results[0]
+    result["order"] = {**result["order"], "command": command}
+    return result
+
+
+def _understand(command: str, world: dict) -> dict:
+    """:func:`understand` of one reading of the command's line breaks."""
     notes: list[str] = []
     readings = parse(command, world, notes)
     meant: dict[str, tuple[dict, dict]] = {}

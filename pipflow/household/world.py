@@ -37,6 +37,11 @@ STATE_NEEDS = {"open": "openable", "on": "toggleable", "dirty": "washable", "sli
                "hot": "heatable"}
 
 
+#: entries a household world may hold per section (over :data:`pipflow.worldfile.SECTION_LIMIT`'s
+#: default for the others); settable with PIPFLOW_WORLD_LIMITS, e.g. ``places=30000``
+SIZE_LIMITS = {"robots": 20_000, "places": 10_000, "objects": 20_000}
+
+
 def _dicts(data: dict, key: str) -> dict[str, dict]:
     value = data.get(key)
     return {k: v for k, v in value.items() if isinstance(v, dict)} if isinstance(value, dict) else {}
@@ -160,7 +165,7 @@ def _fix_on_keys(data: dict) -> None:
 def world_from_text(text: str, file: str) -> dict:
     """Validate and normalize household world YAML ``text`` (``file`` names it in messages)."""
     data = checked_yaml(text, file, "household world", "household.schema.json", semantic_diagnostics,
-                        prepare=_fix_on_keys)
+                        prepare=_fix_on_keys, limits=SIZE_LIMITS)
     return normalize(data, Path(file))
 
 
@@ -168,17 +173,6 @@ def load_world(path: str | Path) -> dict:
     """Load a household world file; :class:`WorldError` lists every problem with its location."""
     p, text = read_world_file(path)
     return world_from_text(text, str(p))
-
-
-def is_household(path: str | Path) -> bool:
-    """Whether a world file declares ``domain: household`` (cheap: no validation)."""
-    import yaml
-
-    try:
-        data = yaml.safe_load(Path(path).read_text())
-    except (OSError, yaml.YAMLError):
-        return False
-    return isinstance(data, dict) and data.get("domain") == DOMAIN
 
 
 # ---------------------------------------------------------------------------------------------

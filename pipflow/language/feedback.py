@@ -19,6 +19,8 @@ from __future__ import annotations
 import json
 import re
 
+from pipflow.language.parsing import decode_answer_json
+
 #: the variations, in the order they are tried (each level adds one to the ones before)
 QUOTE, FACTS, TEMPERATURE = "quoted previous answer", "added world facts", "raised temperature"
 LEVELS = (QUOTE, FACTS, TEMPERATURE)
@@ -55,7 +57,7 @@ def quote(answer: str, messages: list[str], world: dict, grounded: bool) -> str:
     text = answer.strip()
     if grounded:
         try:
-            data = json.loads(text)
+            data, _ = decode_answer_json(text)
             items = [json.dumps(x) for x in data.get("statements", []) + data.get("goal", [])] + \
                     [json.dumps(x) for x in data.get("rules", []) + data.get("constraints", [])]
             text = "\n".join(items) or text

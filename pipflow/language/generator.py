@@ -26,10 +26,12 @@ from pipflow.language.feedback import vary
 from pipflow.language.llm import complete, resolve_model
 from pipflow.language.local import ensure_server
 from pipflow.language.offline import offline
-from pipflow.language.parsing import ParseIssue, extract_constraints, extract_problem, validate_constraints
+from pipflow.language.parsing import (ParseIssue, extract_constraints, extract_problem, plain_text,
+                                      validate_constraints)
 from pipflow.language.prompting import render
 from pipflow.pddl.common import parse
 from pipflow.pddl.debugger import unclosed_section
+from pipflow.pddl.size import expected_size, size_issues
 from pipflow.taskdomain import TaskDomain
 from pipflow.taskdomains import task_domain
 
@@ -182,6 +184,9 @@ def generate(
                           extra=extra, deadline=deadline, named=named)
         text, usage = answer.text, answer.usage
         log(f"llm: {model} answered in {usage['latency_s']} s, {usage.get('total_tokens')} tokens")
+    # a lone surrogate (a model's "\ud800" decoded by its client) is no character: no file or
+    # terminal can take it, so it is shown as U+FFFD and the answer is not used (the model is told)
+    text, invalid = plain_text(text)
     if save is not None:  # the record first: a paid answer is kept even if the cache is not writable
         save("response.txt", text)
     if entry is None and use_cache:  # --no-cache writes no cache either
@@ -195,7 +200,11 @@ def generate(
            "varied": "; ".join(varied), "reader": "model",
            "round": {"base": base_digest, "sent": _digest(messages, temperature_now), "level": level,
                      "answer": text[:ROUND_ANSWER_CHARS], "max_tokens": max_tokens, "history": history}}
-    out.update(_read_answer(text, world, grounded, domain_text, domain, locate))
+    out.update(_read_answer(text, world, grounded, domain_text, domain, locate, example))
+    if invalid:
+        out.update(problem="", goal=None, errors=[
+            f"the answer has {invalid} character{'s' if invalid > 1 else ''} that are not valid Unicode text (lone "
+            "surrogates, such as an escaped \\ud800), shown here as U+FFFD: write plain text"] + list(out["errors"]))
     if usage.get("finish_reason") == "length" and out.get("errors"):  # the model must shorten, not we raise
         out["errors"] = out["errors"] + [
             f"the answer was cut off at the {max_tokens} tokens it may take: write only what the command asks "
@@ -207,9 +216,10 @@ def generate(
 
 
 def _read_answer(text: str, world: dict, grounded: bool, domain_text: str, domain: TaskDomain,
-                 locate: bool = True) -> dict[str, Any]:
+                 locate: bool = True, example: str | None = None) -> dict[str, Any]:
     """Problem, goal (grounded, or read back from the problem by the domain), constraints and
-    errors of one answer."""
+    errors of one answer. A problem that declares far more than a problem of this world holds
+    (``example``, :mod:`pipflow.pddl.size`) is not parsed: the errors say what to leave out."""
     if grounded and domain.grounding is not None:  # the answer is an order: checked, resolved, written
         try:
             return domain.grounding.read(text, world)
@@ -220,6 +230,10 @@ def _read_answer(text: str, world: dict, grounded: bool, domain_text: str, domai
         problem = extract_problem(text)
     except ParseIssue as issue:
         errors.append(str(issue) + (_unclosed_hint(text) if locate else ""))
+    too_large = size_issues(problem, expected_size(world, example)) if problem else []
+    if too_large:  # parsing it would cost minutes: the model is told what to leave out instead
+        errors += too_large
+        problem = ""
     try:
         constraints = validate_constraints(extract_constraints(text, domain.rule_fields), world, domain.rule_fields)
     except ParseIssue as issue:

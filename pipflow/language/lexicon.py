@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from lark import Token
 
 from pipflow.errors import InputError, Refusal, TranslationError
+from pipflow.language.characters import refuse_unread
 from pipflow.language.names import STOPWORDS, NameIndex, Tok, distance, normalize, read_counts, recognize
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS
 
@@ -48,7 +49,17 @@ SUPERLATIVES = {"strongest": "max", "biggest": "max", "largest": "max", "heavies
 #: contractions whose "'s" is "is" ("it's"), not a possessive
 IS_CONTRACTIONS = {"it", "that", "there", "what", "here", "who", "he", "she"}
 POSS_MARK = "zzposs"
-_BAD_SYMBOLS = re.compile(r"[\^*=+%$<>~|\\{}@]")
+_BAD_SYMBOLS = re.compile(r"[\^*=+%$<>~|\\{}@/&`\u00d7]")
+#: the marks this reader reads besides ASCII letters, digits and white space (see
+#: :mod:`pipflow.language.characters`), each with its reading: sentence and clause punctuation;
+#: brackets (an aside, like commas: round ones; square ones carry nothing); quotes and
+#: apostrophes (nothing; "'s" is a possessive or "is"); "#" before a number ("shelf #2"); the
+#: hyphen, underscore and dashes (set apart by spaces: a pause, like a colon; inside a word: a
+#: hyphen, "8\u201311" a range, but an em dash a space); the minus sign (refused before a count); arrows "->", "=>",
+#: "\u2192" (to); "\u00d7" after a count ("5\u00d7", as "5x"); the ellipsis (full stops). The other
+#: ASCII symbols are in the alphabet only to be refused by name below (:data:`_BAD_SYMBOLS`).
+MARKS = frozenset(".,;:!?()[]'\"#-_+^*=%$<>~|\\{}@/&`"
+                  "\u2018\u2019\u201c\u201d\u2010\u2011\u2012\u2013\u2014\u2015\u2212\u2192\u00d7\u2026")
 
 
 @dataclass(frozen=True)
@@ -69,10 +80,13 @@ def check_text(command: str) -> str:
     if len(command) > MAX_COMMAND_CHARS:
         raise InputError(f"the command is {len(command)} characters long; commands are limited to "
                          f"{MAX_COMMAND_CHARS} characters (split it into several runs)")
+    refuse_unread(command, MARKS)
+    command = command.replace("\u2026", "...")
     # a minus sign binds only when attached to its number ("-5"); a dash set apart by spaces is
     # punctuation ("Cross dock - 2 sku-220", "bin 4 \u2013 3 bolts"), read like a colon
     # (the minus sign U+2212 is never punctuation)
-    command = re.sub(r"(?<=\S)\s+[-\u2013\u2012\u2010\u2014]+\s+(?=\S)", " : ", command)
+    command = re.sub(r"(?<=\S)\s+[-\u2013\u2012\u2010\u2011\u2014\u2015]+\s+(?=\S)", " : ", command)
+    command = re.sub(r"[\u2014\u2015]+", " ", command)  # an em dash between two words: a space (as always)
     m = re.search(r"(?:^|(?<=[\s(:,;]))[-\u2212\u2013\u2012\u2010]\s*(\d[\d,.]*)", command)
     if m:
         raise Refusal(f"'{m.group(0).strip()}': a count cannot be negative (a shelf holds 0 units "
@@ -84,7 +98,9 @@ def check_text(command: str) -> str:
     if m:
         raise Refusal(f"'{m.group(0)}' units: no shelf holds that many; write the count the "
                       f"shelves can hold")
-    text = re.sub(r"-+>|\u2192|=>", " to ", command)
+    text = re.sub(r"[\u2010\u2011\u2012\u2013\u2212]", "-", command)  # other dashes inside a word: a hyphen
+    text = re.sub(r"\b([0-9]+)\s*\u00d7", r"\1 x", text)  # "5\u00d7 product1"; any other "\u00d7" is refused below
+    text = re.sub(r"-+>|\u2192|=>", " to ", text)
     text = re.sub(r"(?<=\w)\s*\+\s*(?=\w)", " plus ", text)  # "3 + 4"
     m = _BAD_SYMBOLS.search(text)
     if m:

@@ -17,7 +17,7 @@ from typing import Any
 from pipflow.errors import Refusal, TranslationError
 from pipflow.language.grounding import ANY, vocabulary
 from pipflow.language.order import validate_order
-from pipflow.language.parsing import ParseIssue
+from pipflow.language.parsing import ParseIssue, decode_answer_json
 from pipflow.language.resolver import resolve
 
 #: the selector keys of a statement and the role of the names they hold
@@ -80,10 +80,13 @@ def read_grounded(text: str, world: dict, command: str | None = None) -> dict[st
     order form does not allow (with its path), a name the world lacks, or what the resolver
     could not compute (a count below zero, more than there is, over capacity)."""
     try:
-        data = json.loads(text)
+        data, end = decode_answer_json(text.strip())
     except json.JSONDecodeError as exc:
         raise ParseIssue(f"the structured answer is not complete JSON ({exc.msg} at character "
                          f"{exc.pos}); raise max_tokens or shorten the answer") from None
+    if text.strip()[end:].strip():  # as json.loads says it
+        raise ParseIssue(f"the structured answer is not complete JSON (Extra data at character {end}); raise "
+                         "max_tokens or shorten the answer")
     if not isinstance(data, dict):
         raise ParseIssue('the structured answer must be one JSON object {"statements": [...], "rules": [...]}')
     if "goal" in data and "statements" not in data:

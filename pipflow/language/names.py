@@ -55,7 +55,11 @@ ORDINALS: dict[str, int] = {
 } | {f"{k}{'st' if k % 10 == 1 and k != 11 else 'nd' if k % 10 == 2 and k != 12 else 'rd' if k % 10 == 3 and k != 13 else 'th'}": k
      for k in range(1, 40)}
 
-_TOKEN = re.compile(r"\d+\.\d+|[A-Za-z0-9]+(?:['’][A-Za-z]+)?(?:[-_][A-Za-z0-9]+)*|[,.;:!?()]")
+#: the words, counts and marks of a command; the characters it steps over are the ones the reader
+#: reads as nothing (quotes, square brackets, white space): every other one was refused before
+#: (:func:`pipflow.language.lexicon.check_text`). "#" is a word of its own: a number mark after a
+#: kind word ("shelf #2"), an unknown word anywhere else.
+_TOKEN = re.compile(r"[0-9]+\.[0-9]+|[A-Za-z0-9]+(?:['’][A-Za-z]+)?(?:[-_][A-Za-z0-9]+)*|[,.;:!?()]|#")
 
 
 @dataclass(frozen=True)
@@ -428,6 +432,10 @@ def recognize(command: str, index: NameIndex) -> list[Tok]:
     i = 0
     while i < len(raw):
         t = raw[i]
+        if t == "#":  # not consumed as a number mark by the name before it
+            toks.append(Tok("word", t, t))
+            i += 1
+            continue
         if not t[0].isalnum():
             toks.append(Tok("punct", t, t))
             i += 1

@@ -25,7 +25,8 @@ from lark import Lark, Token, Tree
 from lark.visitors import CollapseAmbiguities
 from lark.exceptions import UnexpectedInput, UnexpectedToken
 
-from pipflow.errors import PipflowError, TranslationError
+from pipflow.errors import PipflowError, Refusal, TranslationError
+from pipflow.language.characters import line_readings
 from pipflow.language.earley import ListLexer, earley_parser
 from pipflow.language.grammar import GRAMMAR, nullable_optionals
 from pipflow.language.lexicon import Lexed, Lexicon
@@ -1531,9 +1532,51 @@ def _one_meaning(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dic
 def parse(command: str, world: dict) -> dict:
     """The order of a command: ``{"statements": [...], "rules": [...], "command": command}``.
 
-    Raises :class:`TranslationError` quoting the words it cannot place, :class:`InputError` for
-    a command too long to be one, and :class:`Refusal` for counts that cannot exist (negative).
+    Raises :class:`TranslationError` quoting the words it cannot place (or a character it does
+    not read: :mod:`pipflow.language.characters`), :class:`InputError` for a command too long to
+    be one, and :class:`Refusal` for counts that cannot exist (negative).
+
+    A line break ends a sentence; a command whose lines only make sense joined (a sentence
+    wrapped onto the next line) is read joined, and one that makes sense both ways with two
+    different meanings is refused, quoting both (:func:`pipflow.language.characters.line_readings`).
     """
+    readings = line_readings(command)
+    if len(readings) == 1:
+        return {**_parse(readings[0], world), "command": command}
+    broken, joined = readings
+    try:
+        first = _parse(broken, world)
+    except (TranslationError, Refusal) as exc:
+        try:
+            return {**_parse(joined, world), "command": command}
+        except (TranslationError, Refusal):
+            raise exc from None
+    try:
+        second = _parse(joined, world)
+    except (TranslationError, Refusal):
+        return {**first, "command": command}
+    a, b = _meaning_of(first, world), _meaning_of(second, world)
+    if b is not None and a != b:
+        if a is None:
+            return {**second, "command": command}
+        wa = "; ".join(s["words"] for s in first["statements"] + first["rules"])
+        wb = "; ".join(s["words"] for s in second["statements"] + second["rules"])
+        raise TranslationError(f"the line breaks of '{broken}' can end sentences ('{wa}') or continue them "
+                               f"('{wb}'), and the two readings ask for different things; nothing is guessed: "
+                               f"end each sentence with a full stop")
+    return {**first, "command": command}
+
+
+def _meaning_of(order: dict, world: dict) -> str | None:
+    """What an order asks for, for comparing two readings (None: it does not resolve)."""
+    try:
+        r = resolve(order, world, check=False)
+    except PipflowError:
+        return None
+    return repr((r.goal, r.constraints))
+
+
+def _parse(command: str, world: dict) -> dict:
     lex = Lexicon(world, keywords())
     selector = RobotSelector(world, lex.index)
     statements: list[dict] = []

@@ -8,6 +8,7 @@ JSON (``json.loads``, never ``eval``) checked against the task-file format. Ever
 from __future__ import annotations
 
 import json
+import math
 import re
 from typing import Any
 
@@ -23,6 +24,87 @@ FIELD_KEYS = ("product", "from", "to")
 
 class ParseIssue(ValueError):
     """The answer has no usable problem or constraints; the message says what and where."""
+
+
+#: the largest number a model's JSON may state (counts, shares, skill levels), as for world files
+MAX_JSON_NUMBER = 10**9
+#: PDDL problems tried, last first, when an answer has several ``(define (problem``: each try
+#: reads to the end of the text, so an answer of 20,000 of them would cost 20,000 readings
+MAX_PROBLEM_DRAFTS = 8
+
+
+def _number_issue(text: str) -> ParseIssue:
+    shown = text if len(text) <= 24 else text[:20] + "..."
+    return ParseIssue(f"the JSON states the number {shown}; no count, share or skill level here is larger "
+                      f"than {MAX_JSON_NUMBER:,}: write the number the command says")
+
+
+def _json_int(text: str) -> int:
+    if len(text.lstrip("-")) > 10:  # before int(): a 100,000-digit literal is refused, not converted
+        raise _number_issue(text)
+    value = int(text)
+    if abs(value) > MAX_JSON_NUMBER:
+        raise _number_issue(text)
+    return value
+
+
+def _json_float(text: str) -> float:
+    value = float(text)
+    if not math.isfinite(value) or abs(value) > MAX_JSON_NUMBER:
+        raise _number_issue(text)
+    return value
+
+
+def _json_constant(name: str) -> Any:
+    raise ParseIssue(f"the JSON states {name}, which is no number JSON allows: write the number itself")
+
+
+#: what reads every JSON a model writes: bounded numbers, no NaN or Infinity
+ANSWER_DECODER = json.JSONDecoder(parse_int=_json_int, parse_float=_json_float, parse_constant=_json_constant)
+
+
+def decode_answer_json(text: str, start: int = 0) -> tuple[Any, int]:
+    """``(value, end)`` of the JSON value at ``text[start:]`` as a model wrote it (as
+    ``JSONDecoder.raw_decode``): a :class:`ParseIssue` for numbers beyond
+    :data:`MAX_JSON_NUMBER`, ``NaN``/``Infinity``, nesting deeper than Python's decoder goes, and
+    strings with lone surrogates (``"\\ud800"``: no valid text, and no file or terminal can
+    show it); ``json.JSONDecodeError`` for JSON that is not JSON."""
+    try:
+        value, end = ANSWER_DECODER.raw_decode(text, start)
+    except RecursionError:
+        raise ParseIssue("the JSON is nested deeper than any order or rule needs: write it flat, "
+                         "one statement and one rule per item") from None
+    bad = _lone_surrogate(value)
+    if bad is not None:
+        raise ParseIssue(f"the JSON has a string with an invalid character (a lone surrogate, "
+                         f"{bad!r} as escaped): write names as plain text, as the world spells them")
+    return value, end
+
+
+def _lone_surrogate(value: Any) -> str | None:
+    """A string of ``value`` (keys too) holding a lone surrogate, escaped for showing; else None."""
+    stack = [value]
+    while stack:
+        v = stack.pop()
+        if isinstance(v, str):
+            if any("\ud800" <= ch <= "\udfff" for ch in v):
+                return v.encode("utf-8", "backslashreplace").decode("ascii", "backslashreplace")
+        elif isinstance(v, dict):
+            stack.extend(v.keys())
+            stack.extend(v.values())
+        elif isinstance(v, list):
+            stack.extend(v)
+    return None
+
+
+def plain_text(text: str) -> tuple[str, int]:
+    """``text`` with every lone surrogate (no valid character: a model's ``"\\ud800"`` decoded by
+    its client) replaced by U+FFFD, and how many there were. Such a character cannot be written
+    to a UTF-8 file or terminal: kept, it ended the step with a UnicodeEncodeError."""
+    bad = sum(1 for ch in text if "\ud800" <= ch <= "\udfff")
+    if not bad:
+        return text, 0
+    return "".join("\ufffd" if "\ud800" <= ch <= "\udfff" else ch for ch in text), bad
 
 
 def _line_of(text: str, index: int) -> int:
@@ -63,7 +145,7 @@ def extract_problem(text: str) -> str:
                              "write a PDDL problem, not a domain")
         raise ParseIssue("the answer contains no PDDL problem: expected `(define (problem NAME) "
                          "(:domain ...) (:objects ...) (:init ...) (:goal ...))`")
-    for start in reversed(starts):
+    for start in list(reversed(starts))[:MAX_PROBLEM_DRAFTS]:
         end = _balanced_end(text, start)
         if end is not None:
             return text[start:end].strip()
@@ -99,11 +181,10 @@ def extract_constraints(text: str, fields: tuple[str, ...] = FIELD_KEYS) -> list
 
     No JSON at all means the model stated no rule: an empty list. JSON that is there but wrong is
     a :class:`ParseIssue`, because silently dropping a rule would let a forbidden robot work."""
-    decoder = json.JSONDecoder()
     errors = []
     for candidate in _json_candidates(text):
         try:
-            data, _ = decoder.raw_decode(candidate)
+            data, _ = decode_answer_json(candidate)
         except json.JSONDecodeError as exc:
             errors.append(f"the JSON block is not valid JSON ({exc.msg} at line {exc.lineno}, "
                           f"column {exc.colno})")

@@ -20,6 +20,7 @@ from typing import Any
 from pipflow.pddl.common import parse, read_domain_text
 from pipflow.pddl.convert import initial_numbers
 from pipflow.pddl.names import pddl_name
+from pipflow.pddl.size import expected_size, size_issues
 from pipflow.pddl.textpos import find_word, line_col, strip_comments
 from pipflow.pddl.writer import magnitudes
 from pipflow.suggest import did_you_mean_clause
@@ -324,6 +325,12 @@ def debug_problem(problem_text: str | None, domain: str, world: dict | None = No
     if not problem_text or not problem_text.strip():
         return DebugReport(False, ["the problem is empty: write a (define (problem ...) ...) form"])
     domain_text = read_domain_text(domain)
+    # what it would cost to parse, before parsing (a 270 KB answer of 40,000 objects: 156 s)
+    example = task_domain(world).example_problem(world, domain_text) if world is not None else None
+    expected = expected_size(world, example)
+    too_large = size_issues(problem_text, expected, "the problem")
+    if too_large:
+        return DebugReport(False, too_large)
     try:
         parse(domain_text, None)
     except Exception as exc:  # the domain is ours: a failure here is a setup problem, say so

@@ -24,6 +24,7 @@ Unloads are applied before loads at the same instant, so a chain through one she
 """
 from __future__ import annotations
 
+import heapq
 import math
 import re
 from dataclasses import dataclass, field
@@ -117,17 +118,66 @@ def moves_from(schedule: dict, graph: dict | None) -> list[Move]:
 # --------------------------------------------------------------------------------------------
 
 
+class SlotGrid:
+    """The slots on a shelf's top face: a cols x rows grid with at least as many cells as the
+    shelf can hold (cells as square as the footprint allows), but never more than the units that
+    exist in the world (no more can ever lie on it). A slot's position is computed from its index,
+    never stored, and the free slots are a heap of freed indices below a high-water mark: placing
+    a unit is O(log n), and memory follows the units placed, not the capacity (a capacity of
+    10**8 once made a list of 10**8 points and ended in MemoryError).
+
+    When every cell is taken, further units are stacked in layers above (an over-capacity plan
+    stays visible as a peak above capacity instead of vanishing); their indices run on past the
+    grid, each used once."""
+
+    def __init__(self, shelf: dict, units: int):
+        self.x, self.y = float(shelf["x"]), float(shelf["y"])
+        self.width, self.depth = float(shelf["width"]), float(shelf["depth"])
+        cap = max(1, min(int(shelf.get("capacity", 1)), max(1, units)))
+        self.cols = max(1, round(math.sqrt(cap * self.width / self.depth))) if self.depth > 0 else cap
+        self.rows = max(1, math.ceil(cap / self.cols))
+        self.cells = self.cols * self.rows
+        self._freed: list[int] = []   # heap of grid cells freed below the high-water mark
+        self._next = 0                # the first grid cell never used
+        self._stacked = 0             # units stacked above a full grid so far
+
+    def take(self) -> int:
+        """The index of the first free cell (the lowest), else the next place above the grid."""
+        if self._freed:
+            return heapq.heappop(self._freed)
+        if self._next < self.cells:
+            self._next += 1
+            return self._next - 1
+        self._stacked += 1
+        return self.cells + self._stacked - 1
+
+    def free(self, index: int) -> None:
+        if index < self.cells:
+            heapq.heappush(self._freed, index)
+
+    def position(self, index: int) -> Point:
+        cell = index % self.cells
+        j, i = divmod(cell, self.cols)
+        return (self.x + self.width * (i + 0.5) / self.cols, self.y + self.depth * (j + 0.5) / self.rows)
+
+    def layer(self, index: int) -> int:
+        return index // self.cells
+
+
 class Scene:
     """Floor, shelves, unit bodies and robots in one DIRECT pybullet client.
 
     Shelf slots are a grid on the shelf's top face sized for its capacity; the slot map mirrors
-    the bodies' positions, while counts are always read back from the bodies themselves."""
+    the bodies' positions, while counts are always read back from the bodies themselves. A grid
+    is never built as a list: a slot's place is computed from its index (:class:`SlotGrid`), and
+    only as many slots as there are units in the world can ever be used, so a shelf of capacity
+    100,000,000 costs what a shelf of capacity 30 costs."""
 
     def __init__(self, world: dict):
         self.p, self.cid = connect_direct()
         self.world = world
         self.unit_product: dict[int, str] = {}
-        self.slots: dict[str, list[Point]] = {}
+        self.slots: dict[str, SlotGrid] = {}
         self.occupant: dict[str, dict[int, int]] = {}  # shelf -> slot index -> body
         self.robot_body: dict[str, int] = {}
         self.carried: dict[str, list[int]] = {}
@@ -146,18 +196,15 @@ class Scene:
         fw, fh = float(w["floor"]["width"]), float(w["floor"]["height"])
         self._box((fw / 2, fh / 2, 0.01), (0.85, 0.85, 0.82, 1), (fw / 2, fh / 2, -0.01))
         shelves = w.get("shelves", {})
+        units = sum(int(n) for items in w.get("stock", {}).values() for n in items.values())
         for name, sh in shelves.items():
             x, y, sw, sd = (float(sh[k]) for k in ("x", "y", "width", "depth"))
             self._box((sw / 2, sd / 2, SHELF_HEIGHT / 2), (0.55, 0.42, 0.3, 1),
                       (x + sw / 2, y + sd / 2, SHELF_HEIGHT / 2))
-            self.slots[name] = self._slot_grid(sh)
+            self.slots[name] = SlotGrid(sh, units)
             self.occupant[name] = {}
-        sizes = []
-        for name, sh in shelves.items():
-            n = len(self.slots[name])
-            cols = max(1, len({round(s[0], 6) for s in self.slots[name]}))
-            rows = max(1, n // cols)
-            sizes.append(min(float(sh["width"]) / cols, float(sh["depth"]) / rows))
+        sizes = [min(float(sh["width"]) / self.slots[name].cols, float(sh["depth"]) / self.slots[name].rows)
+                 for name, sh in shelves.items()]
         self.unit_size = max(0.05, min([0.3] + [0.6 * s for s in sizes]))
         half = self.unit_size / 2
         col = p.createCollisionShape(p.GEOM_BOX, halfExtents=[half] * 3, physicsClientId=c)
@@ -189,38 +236,21 @@ class Scene:
                 0, rcol, vis, basePosition=(float(sx), float(sy), ROBOT_HEIGHT / 2), physicsClientId=c)
             self.carried[name] = []
 
-    @staticmethod
-    def _slot_grid(shelf: dict) -> list[Point]:
-        """A cols x rows grid on the shelf top with at least ``capacity`` cells, cells as square
-        as the footprint allows."""
-        x, y, sw, sd = (float(shelf[k]) for k in ("x", "y", "width", "depth"))
-        cap = max(1, int(shelf.get("capacity", 1)))
-        cols = max(1, round(math.sqrt(cap * sw / sd))) if sd > 0 else cap
-        rows = max(1, math.ceil(cap / cols))
-        return [(x + sw * (i + 0.5) / cols, y + sd * (j + 0.5) / rows)
-                for j in range(rows) for i in range(cols)]
-
     # state ----------------------------------------------------------------------------------
     def place_on_shelf(self, body: int, shelf: str) -> None:
         """Put a unit on the first free slot; when none is free, stack it on the top layer so the
         overflow stays on the shelf (and is counted) instead of vanishing."""
-        occ = self.occupant[shelf]
-        slots = self.slots[shelf]
-        free = next((i for i in range(len(slots)) if i not in occ), None)
-        if free is not None:
-            occ[free] = body
-            sx, sy = slots[free]
-            z = SHELF_HEIGHT + self.unit_size / 2
-        else:
-            k = len(occ)
-            occ[k] = body
-            sx, sy = slots[k % len(slots)]
-            z = SHELF_HEIGHT + self.unit_size * (0.5 + k // len(slots))
+        k = self.slots[shelf].take()
+        self.occupant[shelf][k] = body
+        sx, sy = self.slots[shelf].position(k)
+        z = SHELF_HEIGHT + self.unit_size * (0.5 + self.slots[shelf].layer(k))
         self.p.resetBasePositionAndOrientation(body, (sx, sy, z), (0, 0, 0, 1), physicsClientId=self.cid)
 
     def take_from_shelf(self, shelf: str, product: str, n: int) -> list[int]:
         occ = self.occupant[shelf]
         picked = [i for i in sorted(occ, reverse=True) if self.unit_product[occ[i]] == product][:n]
+        for i in picked:
+            self.slots[shelf].free(i)
         return [occ.pop(i) for i in picked]
 
     def body_xyz(self, body: int) -> tuple[float, float, float]:

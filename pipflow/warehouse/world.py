@@ -24,8 +24,15 @@ from pipflow.errors import Diagnostic, Location, TaskFileError
 from pipflow.floorplan import inside_footprint, layout_diagnostics, on_floor
 from pipflow.goalcounts import is_bound, value_problems
 from pipflow.suggest import did_you_mean
-from pipflow.worldfile import (Locate, checked_yaml, duplicate_diagnostics, is_point, load_schema, parse_mapping,
-                               read_world_file, schema_diagnostics)
+from pipflow.worldfile import (LIMITS_VARIABLE, Locate, checked_yaml, duplicate_diagnostics, is_point, load_schema,
+                               parse_mapping, read_world_file, schema_diagnostics, size_limits)
+
+
+#: entries a warehouse world may hold per section (over :data:`pipflow.worldfile.SECTION_LIMIT`'s
+#: default for the others), and ``units``: the units in stock, all shelves together (the
+#: simulation plays each unit as a body, and a plan moves them a few at a time); settable with
+#: PIPFLOW_WORLD_LIMITS, e.g. ``shelves=30000,units=500000``
+SIZE_LIMITS = {"robots": 20_000, "shelves": 10_000, "products": 10_000, "units": 200_000}
 
 
 # ---------------------------------------------------------------------------------------------
@@ -94,6 +101,13 @@ def semantic_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
     out += layout_diagnostics(geo, floor, locate, "shelves", "shelf")
 
     stock = data.get("stock") if isinstance(data.get("stock"), dict) else {}
+    units = sum(n for items in stock.values() if isinstance(items, dict)
+                for n in items.values() if isinstance(n, int) and not isinstance(n, bool) and n > 0)
+    limit = size_limits(SIZE_LIMITS)["units"]
+    if units > limit:
+        out.append(Diagnostic(locate(("stock",), key=True),
+                              f"this world file has {units:,} units in stock; the limit is {limit:,} (each unit is a "
+                              f"body in the simulation; settable: {LIMITS_VARIABLE}=units=N in the environment)"))
     for sname, items in stock.items():
         if sname not in shelves:
             out.append(Diagnostic(locate(("stock", sname), key=True),
@@ -166,7 +180,7 @@ def normalize_world(data: dict, path: Path) -> dict:
 
 def world_from_text(text: str, file: str) -> dict:
     """Validate and normalize world YAML ``text`` (``file`` names it in messages)."""
-    data = checked_yaml(text, file, "world", "world.schema.json", semantic_diagnostics)
+    data = checked_yaml(text, file, "world", "world.schema.json", semantic_diagnostics, limits=SIZE_LIMITS)
     return normalize_world(data, Path(file))
 
 

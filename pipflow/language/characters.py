@@ -1,0 +1,138 @@
+"""The characters a command reader reads, and a refusal that quotes every other one.
+
+Why a rule of its own: a reader that skips what it does not know reads the rest as if it were the
+whole command. ``shelf2 holds 2³ product1`` was read as "holds 2" (the superscript skipped), and
+``3½`` and ``²3`` both as 3, because the word splitter only ever matched ASCII letters and
+digits and silently stepped over anything else. A silently changed count is the worst misreading
+there is (robots move), so every domain's reader declares its alphabet and refuses the rest
+before reading a word.
+
+The principle, for every reader:
+
+* **An alphabet, never a guess.** A reader reads ASCII letters and digits, white space, and a
+  fixed list of marks, each with a stated reading (a reader passes its list to :func:`unread`).
+  Any other character is refused, with the word it stands in quoted as the user wrote it, the
+  character named (Unicode name and code point), and what to write instead.
+* **No compatibility folding.** Unicode's compatibility mappings change meaning: NFKC turns
+  ``2³`` into ``23`` and ``½`` into ``1⁄2``. Other scripts' digits (Arabic-Indic ``٣``,
+  Devanagari ``३``), superscripts, fractions and fullwidth forms (``３``, ``ｓｈｅｌｆ２``) are
+  refused like any other character outside the alphabet. For a fullwidth form or an accented
+  letter the message shows the ASCII spelling the user probably meant, as a suggestion: the
+  reader never reads it so by itself.
+* **Typography the readers already read stays read**: curly apostrophes and quotes, dashes and
+  the minus sign, the arrow for "to", the multiplication sign for "x", the ellipsis, and any
+  white space (a no-break space is a space). Those are in each reader's list with their reading.
+
+Line breaks: a line break ends a sentence, as a full stop does; a command wrapped in the middle
+of a sentence still reads, because :func:`line_readings` offers both readings and the reader
+keeps the one that makes sense (refusing when both do and they differ).
+"""
+from __future__ import annotations
+
+import re
+import unicodedata
+
+from pipflow.errors import TranslationError
+
+#: ASCII letters and digits: the characters of every word a reader reads
+WORD_CHARS = frozenset("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789")
+#: words quoted in one refusal at most (the rest are counted)
+MAX_QUOTED = 5
+#: a line break of any kind (what str.splitlines splits at), with the spaces around it
+LINE_BREAK = re.compile(r"[^\S\r\n\v\f\x1c-\x1e\x85\u2028\u2029]*"
+                        r"(?:\r\n|[\r\n\v\f\x1c-\x1e\x85\u2028\u2029])\s*")
+
+
+def unread(text: str, marks: str | frozenset[str]) -> list[tuple[str, str]]:
+    """``(word, character)`` for each character of ``text`` outside the alphabet (ASCII letters
+    and digits, white space, and ``marks``), in order, once per word: the word is the run of
+    non-space characters around it, as the user wrote it."""
+    allowed = WORD_CHARS | frozenset(marks)
+    out: list[tuple[str, str]] = []
+    for m in re.finditer(r"\S+", text):
+        word = m.group(0)
+        bad = next((ch for ch in word if ch not in allowed), None)
+        if bad is not None:
+            out.append((word, bad))
+    return out
+
+
+def refuse_unread(text: str, marks: str | frozenset[str], reader: str = "commands") -> None:
+    """Raise :class:`TranslationError` quoting every word of ``text`` with a character outside
+    the alphabet (module docstring); return silently when there is none."""
+    found = unread(text, marks)
+    if not found:
+        return
+    parts = [_describe(word, ch, reader) for word, ch in found[:MAX_QUOTED]]
+    more = len(found) - MAX_QUOTED
+    tail = f" (and {more} more word{'s' if more > 1 else ''} like it)" if more > 0 else ""
+    raise TranslationError("; ".join(parts) + tail)
+
+
+def _name(ch: str) -> str:
+    return f"U+{ord(ch):04X} {unicodedata.name(ch, 'unnamed character')}"
+
+
+def _describe(word: str, ch: str, reader: str) -> str:
+    """What is wrong with one word, and what to write instead."""
+    category = unicodedata.category(ch)
+    if category[0] == "C" or category in ("Zl", "Zp"):  # control, format (zero-width), private, unassigned
+        shown = word.replace(ch, "")
+        return (f"an invisible character ({_name(ch)}) in '{shown}' is not read in {reader}; delete it")
+    hint = _ascii_spelling(word)
+    also = f" (did you mean '{hint}'?)" if hint else ""
+    if _numeric(ch):
+        return (f"'{word}': '{ch}' ({_name(ch)}) is not one of the digits 0-9 read in {reader}; "
+                f"write the number with them{also}")
+    if category[0] == "L" or category[0] == "M":
+        return (f"'{word}': '{ch}' ({_name(ch)}) is not one of the letters a-z read in {reader}; "
+                f"write the word with them{also}")
+    return f"'{word}': the symbol '{ch}' ({_name(ch)}) is not read in {reader}; write it in words{also}"
+
+
+def _numeric(ch: str) -> bool:
+    try:
+        unicodedata.numeric(ch)
+    except (TypeError, ValueError):
+        return False
+    return True
+
+
+def _ascii_spelling(word: str) -> str | None:
+    """The ASCII spelling of a word whose only foreign characters are fullwidth or halfwidth
+    forms or accented letters (``ｓｈｅｌｆ２`` -> ``shelf2``, ``prodüct1`` -> ``product1``), for a
+    suggestion; None when any character would change meaning (superscripts, fractions, other
+    scripts' digits: their compatibility forms are not the same character)."""
+    out = []
+    for ch in word:
+        if ch.isascii():
+            out.append(ch)
+            continue
+        decomposition = unicodedata.decomposition(ch)
+        if decomposition.startswith(("<wide>", "<narrow>")):
+            base = unicodedata.normalize("NFKC", ch)
+        elif decomposition and not decomposition.startswith("<"):  # canonical: a letter and accents
+            base = "".join(c for c in unicodedata.normalize("NFD", ch) if not unicodedata.combining(c))
+        else:
+            return None
+        if not base.isascii():
+            return None
+        out.append(base)
+    spelled = "".join(out)
+    return spelled if spelled != word else None
+
+
+def line_readings(command: str) -> list[str]:
+    """The readings of a command's line breaks: ``[command]`` when no line break is inside it;
+    otherwise the command with each break read as the end of a sentence (first) and, as a second
+    reading, each break read as a space (a sentence wrapped onto the next line). A break after a
+    sentence's own full stop (or ; ! ?) reads the same both ways: then there is one reading."""
+    text = command.strip()
+    if not LINE_BREAK.search(text):
+        return [command]
+
+    def ended(m: re.Match) -> str:
+        return " " if text[:m.start()].rstrip()[-1:] in (".", ";", "!", "?", "\u2026") else ". "
+
+    broken, joined = LINE_BREAK.sub(ended, text), LINE_BREAK.sub(" ", text)
+    return [broken] if broken == joined else [broken, joined]
