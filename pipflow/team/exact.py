@@ -105,6 +105,7 @@ class _Model:
         ids, robots = p.ids, range(len(p.robots))
         head, tail = _heads_tails(p)
         anc = _ancestors(p)
+        apart = _apart(p)
         latest = {b: ub - tail[b] - p.duration[b] for b in ids}  # latest start within the bound
         m = self.m = Model()
         m.hideOutput()
@@ -149,7 +150,7 @@ class _Model:
                 expr = quicksum(float(L.coef[i]) * v for i, v in mine.items() if L.coef[i] != 0)
                 m.addCons(expr <= L.rhs if L.sense == "<=" else expr >= L.rhs if L.sense == ">=" else expr == L.rhs)
         S = {b: m.addVar(lb=head[b], ub=max(head[b], latest[b]), vtype="C") for b in ids}
-        C = m.addVar(lb=0.0, ub=ub, vtype="C")
+        C = m.addVar(lb=min(ub, _chain_bound(p, apart, head, tail, anc)), ub=ub, vtype="C")
         for b in ids:
             m.addCons(C >= S[b] + p.duration[b] + tail[b])
             for q in p.preds[b]:
@@ -163,6 +164,21 @@ class _Model:
                 big = (latest[a] + p.duration[a]) + t - head[b]
                 if big > 0:
                     m.addCons(S[b] >= S[a] + p.duration[a] + t - big * (1 - v))
+        # subtasks no two disjoint coalitions can serve share a robot, so one ends (and that robot
+        # drives to the other) before the other starts: a disjunction SCIP can branch on
+        for b, c in sorted(apart):
+            t_bc = p.dist(p.last[b], p.first[c]) / p.speed
+            t_cb = p.dist(p.last[c], p.first[b]) / p.speed
+            if b in anc[c]:
+                m.addCons(S[c] >= S[b] + p.duration[b] + t_bc)
+            elif c in anc[b]:
+                m.addCons(S[b] >= S[c] + p.duration[c] + t_cb)
+            else:
+                o = m.addVar(vtype="B")  # 1: b first
+                big_bc = latest[b] + p.duration[b] + t_bc - head[c]
+                big_cb = latest[c] + p.duration[c] + t_cb - head[b]
+                m.addCons(S[c] >= S[b] + p.duration[b] + t_bc - max(big_bc, 0.0) * (1 - o))
+                m.addCons(S[b] >= S[c] + p.duration[c] + t_cb - max(big_cb, 0.0) * o)
         for i in robots:  # a robot does its subtasks one after another
             busy = [(v, drive[k] / p.speed + p.duration[k[2]]) for k, v in y.items() if k[0] == i]
             if busy:
@@ -273,6 +289,74 @@ def _topo(p: JointProblem) -> list[str]:
                 order.append(b)
                 done.add(b)
     return order
+
+
+#: the most robots for which :func:`_apart` enumerates coalitions (2^n subsets per subtask)
+APART_MAX_ROBOTS = 12
+
+
+def _apart(p: JointProblem) -> set[tuple[str, str]]:
+    """Pairs of subtasks that cannot run at the same time: no coalition of one is disjoint from a
+    coalition of the other (e.g. each needs more than half the team's carrying), so some robot
+    does both. Found by enumerating coalitions; empty for teams above :data:`APART_MAX_ROBOTS`."""
+    n = len(p.robots)
+    if n > APART_MAX_ROBOTS:
+        return set()
+    masks: dict[str, list[int]] = {}
+    for b in p.ids:
+        allowed = [i for i in range(n) if p.allowed[b][i]]
+        feas = []
+        for k in range(1, len(allowed) + 1):
+            for combo in itertools.combinations(allowed, k):
+                if p.feasible(b, combo):
+                    feas.append(sum(1 << i for i in combo))
+        masks[b] = feas
+    out = set()
+    for b, c in itertools.combinations(p.ids, 2):
+        if not any(mb & mc == 0 for mb in masks[b] for mc in masks[c]):
+            out.add((b, c))
+    return out
+
+
+def _chain_bound(p: JointProblem, apart: set[tuple[str, str]], head: dict[str, float], tail: dict[str, float],
+                 anc: dict[str, set[str]]) -> float:
+    """A makespan lower bound from the largest groups of pairwise :func:`_apart` subtasks: they run
+    one after another, with a robot driving from each to the next; the best order (a dynamic
+    program over subsets) still takes this long."""
+    import networkx as nx  # deferred: pulls networkx (the travel map has it loaded already)
+
+    g = nx.Graph()
+    g.add_nodes_from(p.ids)
+    g.add_edges_from(apart)
+    best = 0.0
+    for clique in nx.find_cliques(g):
+        if len(clique) < 2 or len(clique) > 12:
+            continue
+        k = len(clique)
+        travel = [[p.dist(p.last[a], p.first[b]) / p.speed for b in clique] for a in clique]
+        # end[(subset, last)]: the earliest end of the subset's subtasks in some order ending with last
+        end: dict[tuple[int, int], float] = {}
+        for j, b in enumerate(clique):
+            end[(1 << j, j)] = head[b] + p.duration[b]
+        for subset in range(1, 1 << k):
+            for j in range(k):
+                e = end.get((subset, j))
+                if e is None:
+                    continue
+                for nxt in range(k):
+                    if subset & (1 << nxt):
+                        continue
+                    if any(clique[q] in anc[clique[nxt]] and not subset & (1 << q) for q in range(k)):
+                        continue  # a predecessor of nxt in the group has not run yet
+                    b = clique[nxt]
+                    e2 = max(head[b], e + travel[j][nxt]) + p.duration[b]
+                    key = (subset | (1 << nxt), nxt)
+                    if e2 < end.get(key, float("inf")):
+                        end[key] = e2
+        full = (1 << k) - 1
+        best = max(best, min((end[(full, j)] + tail[clique[j]] for j in range(k) if (full, j) in end),
+                             default=0.0))
+    return best
 
 
 def _heads_tails(p: JointProblem) -> tuple[dict[str, float], dict[str, float]]:
