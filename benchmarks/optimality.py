@@ -1,12 +1,15 @@
 """Schedules against the proven optimum (issue 26, part 3), and what the improvement phase buys at scale.
 
     python benchmarks/optimality.py [--instances 36] [--seed 0] [--time-limit 300]
-                                    [--sizes 12x4x4,200x20x10,1000x100x20] [--repeat 1]
+                                    [--sizes 12x4x4,200x20x10,1000x100x20,12x40x10,30x100x20] [--repeat 1]
                                     [--skip-small] [--skip-scaled]
 
 Part 1, small instances (up to 8 subtasks and 6 robots; half from the paper's world, half from
 generated worlds; seeded): each is a real plan (pipflow's team planner) of a seeded goal, its
-dependency graph (``deorder``, the workflow's default), and sometimes a robot rule. For each:
+dependency graph, and sometimes a robot rule. For each:
+
+Half of the graphs are ``deorder`` graphs (the workflow's default), half ``exact`` ones (every
+read/write order kept: more edges, the option ``graph_mode=exact``).
 
 * Alg. 1 (``allocate``: the paper's per-subtask IP in frontier order, with this checkout's
   default allocation cost, or each ``--cost``),
@@ -19,11 +22,13 @@ It prints each instance's makespan and its gap to the optimum, ``(ours - optimum
 the mean and worst gap with and without the improvement (only instances SCIP proved optimal
 count; the others are listed). Targets: with the improvement, mean <= 3 %, worst <= 10 %.
 
-Part 2, the scaled suite (the generated worlds of benchmarks/pipeline.py, its commands): one whole
-``pipflow run workflows/warehouse.yaml`` per size and setting in a child process (step cache off),
-``-i improve=false`` and ``-i improve=true`` taking turns so that both see the same load. Prints
-the makespan change (target: -10 % or better) and the wall-time ratio of the whole run with and
-without the improvement (target: <= 1.2x), with the load average before and after each run.
+Part 2, the scaled suite (the generated worlds of benchmarks/pipeline.py and its commands, at its
+sizes and at two where robots are scarce): one whole ``pipflow run workflows/warehouse.yaml`` per
+size and setting in a child process (step cache off), ``-i improve=false`` and ``-i improve=true``
+taking turns so that both see the same load. Prints the makespan change (target: -10 % or
+better), the makespan lower bound of the run's graph (where Alg. 1 meets it, no plan is
+shorter), the TC changes, and the wall-time ratio of the whole run with and without the
+improvement (target: <= 1.2x), with the load average before and after each run.
 """
 from __future__ import annotations
 
@@ -49,11 +54,16 @@ ROOT = Path(__file__).resolve().parents[1]
 WORLD = ROOT / "benchmarks" / "warehouse" / "world.yaml"
 TASKS = ROOT / "benchmarks" / "warehouse" / "tasks.yaml"
 MAX_SUBTASKS, MAX_ROBOTS = 8, 6
+#: the scaled suite: benchmarks/pipeline.py's generated sizes (robots x shelves x products; with
+#: hundreds of robots for a few dozen moves), and two where robots are scarce (a dozen and thirty
+#: robots for the same kind of command)
+SIZES = "12x4x4,200x20x10,1000x100x20,12x40x10,30x100x20"
 
 
 # ------------------------------------------------------------------------------- instances
-def plan_graph(world: dict, goal: dict) -> dict:
-    """The dependency graph of pipflow's plan for ``goal`` (the workflow's default mode)."""
+def plan_graph(world: dict, goal: dict, mode: str) -> dict:
+    """The dependency graph of pipflow's plan for ``goal`` (``mode``: deorder, the workflow's
+    default, keeps only the orders a precondition needs; exact keeps every read/write order)."""
     from pipflow.pddl.common import parse
     from pipflow.pddl.transport import instance_from_problem, moves_to_plan, plan_instance
     from pipflow.pddl.writer import write_problem
@@ -63,26 +73,37 @@ def plan_graph(world: dict, goal: dict) -> dict:
     meta = yaml.safe_load((ROOT / "domains" / "warehouse.actions.yaml").read_text())
     problem = write_problem(world, goal)
     inst = instance_from_problem(parse(domain, problem))
-    return build_graph(domain, problem, moves_to_plan(inst, plan_instance(inst)), meta, "deorder")
+    return build_graph(domain, problem, moves_to_plan(inst, plan_instance(inst)), meta, mode)
 
 
-def random_goal(rng: random.Random, world: dict) -> dict:
-    """One or two shelves, each to hold more of one or two products than it has (counts that the
-    other shelves' stock and the shelf's room allow)."""
+def random_goal(rng: random.Random, world: dict, pairs: int, most: int = 9) -> dict:
+    """Up to ``pairs`` (shelf, product) targets, each a shelf holding 2 to ``most`` more units of a
+    product than it has (counts that the other shelves' stock and the shelf's room allow); or,
+    sometimes, a shelf emptied (its units go wherever the planner finds room)."""
+    if rng.random() < 0.2:
+        full = [s for s, items in world["stock"].items() if sum(items.values()) > 0]
+        if full:
+            shelf = rng.choice(full)
+            return {shelf: {prod: 0 for prod in world["stock"][shelf]}}
     totals: dict[str, int] = {}
     for items in world["stock"].values():
         for prod, k in items.items():
             totals[prod] = totals.get(prod, 0) + k
     goal: dict[str, dict[str, int]] = {}
-    for shelf in rng.sample(list(world["shelves"]), rng.choice([1, 1, 2])):
+    room = {s: v["capacity"] - sum(world["stock"].get(s, {}).values()) for s, v in world["shelves"].items()}
+    for _ in range(4 * pairs):
+        if sum(len(v) for v in goal.values()) >= pairs:
+            break
+        shelf = rng.choice(list(world["shelves"]))
         have = world["stock"].get(shelf, {})
-        room = world["shelves"][shelf]["capacity"] - sum(have.values())
-        for prod in rng.sample([q for q in totals if totals[q] > have.get(q, 0)], rng.choice([1, 2])):
-            extra = min(totals[prod] - have.get(prod, 0), room, rng.randint(2, 9))
-            if extra > 0:
-                goal.setdefault(shelf, {})[prod] = have.get(prod, 0) + extra
-                room -= extra
-                totals[prod] -= extra
+        more = [q for q in totals if totals[q] > have.get(q, 0) and q not in goal.get(shelf, {})]
+        if not more or room[shelf] <= 0:
+            continue
+        prod = rng.choice(more)
+        extra = min(totals[prod] - have.get(prod, 0), room[shelf], rng.randint(2, most))
+        goal.setdefault(shelf, {})[prod] = have.get(prod, 0) + extra
+        room[shelf] -= extra
+        totals[prod] -= extra
     return goal
 
 
@@ -101,7 +122,8 @@ def random_rule(rng: random.Random, world: dict, goal: dict) -> list[dict]:
 
 def small_instances(count: int, seed: int) -> list[dict]:
     """``count`` instances, alternately from the paper's world (a random team of 3-6 of its
-    robots at seeded starts; the paper's goals, then random ones) and from generated worlds."""
+    robots at seeded starts; a paper task's goal or a random one) and from generated worlds, with
+    2 to 8 subtasks in turn (so that the large ones are as many as the small ones)."""
     from pipflow.errors import PipflowError
     from pipflow.team.allocation import allocate
     from pipflow.warehouse.starts import vary_starts
@@ -111,9 +133,10 @@ def small_instances(count: int, seed: int) -> list[dict]:
     rng = random.Random(f"optimality-{seed}")
     out: list[dict] = []
     tries = 0
-    while len(out) < count and tries < 40 * count:
+    while len(out) < count and tries < 60 * count:
         tries += 1
         source = "paper" if len(out) % 2 == 0 else "generated"
+        size = 2 + (len(out) // 2) % (MAX_SUBTASKS - 1)  # 2, 2, 3, 3, ... 8, 8, 2, 2, ...
         k = rng.randint(3, MAX_ROBOTS)
         if source == "paper":
             world = copy.deepcopy(paper)
@@ -121,24 +144,24 @@ def small_instances(count: int, seed: int) -> list[dict]:
             world["robots"] = {r: world["robots"][r] for r in sorted(keep, key=list(paper["robots"]).index)}
             world = vary_starts(world, rng.randint(0, 10_000))
             task = tasks[tries % len(tasks)]
-            goal = task["goal"] if rng.random() < 0.5 else random_goal(rng, world)
+            goal = task["goal"] if rng.random() < 0.3 else random_goal(rng, world, max(1, size // 2), 12)
         else:
             world = generate_world(k, rng.randint(4, 6), rng.randint(2, 4), seed=rng.randint(0, 10_000))
-            goal = random_goal(rng, world)
+            goal = random_goal(rng, world, max(1, size // 2), 12)
         if not goal:
             continue
         rules = random_rule(rng, world, goal)
         try:
-            graph = plan_graph(world, goal)
-            if not 2 <= len(graph["nodes"]) <= MAX_SUBTASKS:
-                continue
+            graph = plan_graph(world, goal, "deorder" if len(out) % 4 < 2 else "exact")
+            if len(graph["nodes"]) != size and not (tries % 40 == 0 and 2 <= len(graph["nodes"]) <= MAX_SUBTASKS):
+                continue  # another size than this turn's (every 40th try takes any size that fits)
             allocate(graph, world, constraints=rules)  # the rules leave every subtask a coalition
         except PipflowError:
             continue
         except Exception:  # the planner's own exceptions (no plan): another goal
             continue
         out.append({"id": f"{source[0]}{len(out) + 1:02d}", "source": source, "world": world, "goal": goal,
-                    "rules": rules, "graph": graph})
+                    "rules": rules, "graph": graph, "mode": graph["mode"]})
     return out
 
 
@@ -158,7 +181,7 @@ def small_part(count: int, seed: int, time_limit: float, costs: list[str | None]
     for cost in costs:
         kw = {"cost": cost} if cost else {}
         print(f"\n-- allocation cost: {cost or 'this checkout default (approach + route)'}")
-        print(f"{'inst':5} {'src':4} {'sub':>3} {'edg':>3} {'rob':>3} {'rule':4} {'Alg.1':>8} {'+improve':>8} "
+        print(f"{'inst':5} {'src':4} {'graph':7} {'sub':>3} {'edg':>3} {'rob':>3} {'rule':4} {'Alg.1':>8} {'+improve':>8} "
               f"{'optimum':>8} {'gap':>7} {'gap+imp':>7} {'lex=':>4} {'imp s':>6} {'exact s':>7} proven")
         gaps, gaps_imp, lex_same, unproven, imp_times = [], [], 0, [], []
         for inst in instances:
@@ -185,7 +208,7 @@ def small_part(count: int, seed: int, time_limit: float, costs: list[str | None]
                 lex_same += same
             else:
                 unproven.append(inst["id"])
-            print(f"{inst['id']:5} {inst['source'][:4]:4} {len(g['nodes']):3} {len(g['edges']):3} {len(w['robots']):3} "
+            print(f"{inst['id']:5} {inst['source'][:4]:4} {inst['mode']:7} {len(g['nodes']):3} {len(g['edges']):3} {len(w['robots']):3} "
                   f"{'yes' if rules else '':4} {k_paper[0]:8.2f} {k_imp[0]:8.2f} {ex.key[0]:8.2f} {gap:7.1%} "
                   f"{gap_imp:7.1%} {'yes' if same else 'no':>4} {imp_s:6.2f} {ex.time_s:7.1f} "
                   f"{'yes' if ex.proven else 'NO (' + ', '.join(s['status'] for s in ex.stages) + ')'}")
@@ -227,9 +250,23 @@ def run_once(label: str, work: Path, improve: bool, timeout: float) -> dict:
             ev = json.loads(line)
             if ev.get("event") == "end" and ev.get("duration") is not None:
                 steps[ev["step"]] = steps.get(ev["step"], 0.0) + float(ev["duration"])
+    tc_sum = None
+    if outputs.get("schedule"):
+        tc_sum = sum(r["distance"] for r in outputs["schedule"]["robots"].values())
     return {"wall": wall, "code": proc.returncode, "err": proc.stderr.strip().splitlines()[-1:] if proc.returncode else [],
-            "makespan": outputs.get("makespan"), "goal_met": outputs.get("goal_met"), "steps": steps,
-            "load": (load, os.getloadavg()[0])}
+            "makespan": outputs.get("makespan"), "tc_max": outputs.get("tc_max"), "tc_sum": tc_sum,
+            "goal_met": outputs.get("goal_met"), "steps": steps, "load": (load, os.getloadavg()[0]),
+            "record": runs[-1].parent if runs else None, "subtasks": len((outputs.get("graph") or {}).get("nodes", []))}
+
+
+def lower_bound(record: Path) -> float:
+    """The makespan no plan of that run's graph can beat (pipflow.team.bounds)."""
+    from pipflow.team.bounds import makespan_bound
+    from pipflow.team.joint import JointProblem
+
+    outputs = json.loads((record / "outputs.json").read_text())
+    world = json.loads((record / "steps" / "world" / "outputs.json").read_text())["world"]
+    return makespan_bound(JointProblem(outputs["graph"], world, outputs.get("constraints") or []))
 
 
 def scaled_part(sizes: list[str], repeat: int, timeout: float) -> None:
@@ -238,8 +275,9 @@ def scaled_part(sizes: list[str], repeat: int, timeout: float) -> None:
           f"and improve=true taking turns, best of {repeat}; load average {' '.join(f'{x:.2f}' for x in os.getloadavg())}; "
           f"records in {work}")
     run_once("paper", work, False, timeout)  # unmeasured: bytecode and the parser cache
-    print(f"{'size':>12} {'wall off':>8} {'wall on':>8} {'ratio':>6} {'improve s':>9} {'allocate s':>10} "
-          f"{'makespan off':>12} {'on':>9} {'change':>7} {'goal':>5}  load (off; on)")
+    print(f"{'size':>12} {'sub':>4} {'wall off':>8} {'wall on':>8} {'ratio':>6} {'improve s':>9} "
+          f"{'makespan off':>12} {'on':>8} {'change':>7} {'bound':>8} {'TC-max':>7} {'TC-sum':>7} {'goal':>5}  load (off; on)")
+    changes, ratios = [], []
     for label in sizes:
         best: dict[bool, dict] = {}
         for _ in range(max(1, repeat)):
@@ -252,11 +290,17 @@ def scaled_part(sizes: list[str], repeat: int, timeout: float) -> None:
             print(f"{label:>12} failed: off exit {off['code']} {off['err']}; on exit {on['code']} {on['err']}")
             continue
         change = on["makespan"] / off["makespan"] - 1
-        print(f"{label:>12} {off['wall']:8.2f} {on['wall']:8.2f} {on['wall'] / off['wall']:6.2f} "
-              f"{on['steps'].get('improve', 0.0):9.2f} {off['steps'].get('allocate', 0.0):10.2f} "
-              f"{off['makespan']:12.1f} {on['makespan']:9.1f} {change:7.1%} {str(on['goal_met']):>5}  "
-              f"{off['load'][0]:.2f}>{off['load'][1]:.2f}; {on['load'][0]:.2f}>{on['load'][1]:.2f}")
-    print("targets: makespan change <= -10%, wall ratio (on / off, the whole run) <= 1.2x")
+        bound = lower_bound(off["record"])
+        changes.append(change)
+        ratios.append(on["wall"] / off["wall"])
+        print(f"{label:>12} {off['subtasks']:4} {off['wall']:8.2f} {on['wall']:8.2f} {on['wall'] / off['wall']:6.2f} "
+              f"{on['steps'].get('improve', 0.0):9.2f} {off['makespan']:12.1f} {on['makespan']:8.1f} {change:7.1%} "
+              f"{bound:8.1f} {on['tc_max'] / off['tc_max'] - 1:7.1%} {on['tc_sum'] / off['tc_sum'] - 1:7.1%} "
+              f"{str(on['goal_met']):>5}  {off['load'][0]:.2f}>{off['load'][1]:.2f}; {on['load'][0]:.2f}>{on['load'][1]:.2f}")
+    if changes:
+        print(f"mean makespan change {statistics.mean(changes):.1%}, mean wall ratio {statistics.mean(ratios):.2f}x, "
+              f"worst {max(ratios):.2f}x (targets: makespan -10% or better, wall <= 1.2x). 'bound': no plan of that "
+              "run's graph ends sooner (pipflow.team.bounds); where Alg. 1 already meets it, no plan is shorter")
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -270,7 +314,7 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--budget", type=int, default=DEFAULT_BUDGET, help="the improvement's plan evaluations")
     ap.add_argument("--cost", default=None,
                     help="allocation costs to compare, comma-separated (when this checkout's allocate takes `cost`)")
-    ap.add_argument("--sizes", default="12x4x4,200x20x10,1000x100x20", help="scaled suite (part 2)")
+    ap.add_argument("--sizes", default=SIZES, help="scaled suite (part 2)")
     ap.add_argument("--repeat", type=int, default=1, help="runs per size and setting in part 2; the fastest is kept")
     ap.add_argument("--timeout", type=float, default=900.0, help="seconds per run in part 2")
     ap.add_argument("--skip-small", action="store_true")

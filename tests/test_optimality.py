@@ -300,3 +300,10 @@ def test_workflow_input_on_improves_and_the_simulation_replays_it(tmp_path):
     assert on.outputs["goal_met"] is True and on.outputs["exe"] == 1.0
     assert on.outputs["simulation"]["makespan"] == pytest.approx(on.outputs["makespan"])
     assert on.outputs["goal"] == off.outputs["goal"]
+
+
+def test_the_step_searches_with_the_libraries_default_budget():
+    from pipflow.steps.improve import local
+    from pipflow.team.improve import DEFAULT_BUDGET
+
+    assert local.defaults["budget"] == DEFAULT_BUDGET

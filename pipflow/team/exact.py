@@ -40,6 +40,7 @@ from typing import Any
 
 from pipflow.errors import InputError
 from pipflow.team.allocation import IPStatus
+from pipflow.team.bounds import ancestors, apart_pairs, chain_bound, heads_tails
 from pipflow.team.joint import JointProblem, Plan, lex_less, replay, schedule_key
 
 START = "@start"  # the arc tail that stands for a robot's start
@@ -103,9 +104,9 @@ class _Model:
 
         self.p = p
         ids, robots = p.ids, range(len(p.robots))
-        head, tail = _heads_tails(p)
-        anc = _ancestors(p)
-        apart = _apart(p)
+        head, tail = heads_tails(p)
+        anc = ancestors(p)
+        apart = apart_pairs(p)
         latest = {b: ub - tail[b] - p.duration[b] for b in ids}  # latest start within the bound
         m = self.m = Model()
         m.hideOutput()
@@ -150,7 +151,7 @@ class _Model:
                 expr = quicksum(float(L.coef[i]) * v for i, v in mine.items() if L.coef[i] != 0)
                 m.addCons(expr <= L.rhs if L.sense == "<=" else expr >= L.rhs if L.sense == ">=" else expr == L.rhs)
         S = {b: m.addVar(lb=head[b], ub=max(head[b], latest[b]), vtype="C") for b in ids}
-        C = m.addVar(lb=min(ub, _chain_bound(p, apart, head, tail, anc)), ub=ub, vtype="C")
+        C = m.addVar(lb=min(ub, chain_bound(p, apart, head, tail, anc)), ub=ub, vtype="C")
         for b in ids:
             m.addCons(C >= S[b] + p.duration[b] + tail[b])
             for q in p.preds[b]:
@@ -271,108 +272,6 @@ def _upper_bound(p: JointProblem) -> float:
     places = set(p.robots) | set(p.last.values())
     far = max((p.dist(a, b) for a in places for b in set(p.first.values())), default=0.0)
     return sum(far / p.speed + p.duration[s] for s in p.nodes) + 1.0
-
-
-def _ancestors(p: JointProblem) -> dict[str, set[str]]:
-    out: dict[str, set[str]] = {}
-    for b in _topo(p):
-        out[b] = set().union(*({q} | out[q] for q in p.preds[b])) if p.preds[b] else set()
-    return out
-
-
-def _topo(p: JointProblem) -> list[str]:
-    order: list[str] = []
-    done: set[str] = set()
-    while len(order) < len(p.ids):
-        for b in p.ids:
-            if b not in done and all(q in done for q in p.preds[b]):
-                order.append(b)
-                done.add(b)
-    return order
-
-
-#: the most robots for which :func:`_apart` enumerates coalitions (2^n subsets per subtask)
-APART_MAX_ROBOTS = 12
-
-
-def _apart(p: JointProblem) -> set[tuple[str, str]]:
-    """Pairs of subtasks that cannot run at the same time: no coalition of one is disjoint from a
-    coalition of the other (e.g. each needs more than half the team's carrying), so some robot
-    does both. Found by enumerating coalitions; empty for teams above :data:`APART_MAX_ROBOTS`."""
-    n = len(p.robots)
-    if n > APART_MAX_ROBOTS:
-        return set()
-    masks: dict[str, list[int]] = {}
-    for b in p.ids:
-        allowed = [i for i in range(n) if p.allowed[b][i]]
-        feas = []
-        for k in range(1, len(allowed) + 1):
-            for combo in itertools.combinations(allowed, k):
-                if p.feasible(b, combo):
-                    feas.append(sum(1 << i for i in combo))
-        masks[b] = feas
-    out = set()
-    for b, c in itertools.combinations(p.ids, 2):
-        if not any(mb & mc == 0 for mb in masks[b] for mc in masks[c]):
-            out.add((b, c))
-    return out
-
-
-def _chain_bound(p: JointProblem, apart: set[tuple[str, str]], head: dict[str, float], tail: dict[str, float],
-                 anc: dict[str, set[str]]) -> float:
-    """A makespan lower bound from the largest groups of pairwise :func:`_apart` subtasks: they run
-    one after another, with a robot driving from each to the next; the best order (a dynamic
-    program over subsets) still takes this long."""
-    import networkx as nx  # deferred: pulls networkx (the travel map has it loaded already)
-
-    g = nx.Graph()
-    g.add_nodes_from(p.ids)
-    g.add_edges_from(apart)
-    best = 0.0
-    for clique in nx.find_cliques(g):
-        if len(clique) < 2 or len(clique) > 12:
-            continue
-        k = len(clique)
-        travel = [[p.dist(p.last[a], p.first[b]) / p.speed for b in clique] for a in clique]
-        # end[(subset, last)]: the earliest end of the subset's subtasks in some order ending with last
-        end: dict[tuple[int, int], float] = {}
-        for j, b in enumerate(clique):
-            end[(1 << j, j)] = head[b] + p.duration[b]
-        for subset in range(1, 1 << k):
-            for j in range(k):
-                e = end.get((subset, j))
-                if e is None:
-                    continue
-                for nxt in range(k):
-                    if subset & (1 << nxt):
-                        continue
-                    if any(clique[q] in anc[clique[nxt]] and not subset & (1 << q) for q in range(k)):
-                        continue  # a predecessor of nxt in the group has not run yet
-                    b = clique[nxt]
-                    e2 = max(head[b], e + travel[j][nxt]) + p.duration[b]
-                    key = (subset | (1 << nxt), nxt)
-                    if e2 < end.get(key, float("inf")):
-                        end[key] = e2
-        full = (1 << k) - 1
-        best = max(best, min((end[(full, j)] + tail[clique[j]] for j in range(k) if (full, j) in end),
-                             default=0.0))
-    return best
-
-
-def _heads_tails(p: JointProblem) -> tuple[dict[str, float], dict[str, float]]:
-    """Earliest start of each subtask (its predecessors' chain, or the nearest allowed robot's
-    drive from its start: none gets there sooner, by the triangle inequality) and the longest
-    chain of its successors' durations."""
-    head: dict[str, float] = {}
-    tail: dict[str, float] = {}
-    order = _topo(p)
-    for b in order:
-        drive = min((p.dist(p.robots[i], p.first[b]) / p.speed for i in range(len(p.robots)) if p.allowed[b][i]),
-                    default=0.0)
-        head[b] = max([drive] + [head[q] + p.duration[q] for q in p.preds[b]])
-    for b in reversed(order):
-        tail[b] = max((p.duration[s] + tail[s] for s in p.succs[b]), default=0.0)
-    return head, tail
 
 
 def brute_force(p: JointProblem) -> tuple[tuple[float, float, float], Plan]:

@@ -109,6 +109,7 @@ class JointProblem:
             self.route_len[sid] = self.timeline.route_length(node)
             self.duration[sid] = self.timeline.duration(node)
         self._dist: dict[tuple[str, str], float] = {}
+        self._feasible: dict[tuple[str, tuple[int, ...]], bool] = {}
 
     # ------------------------------------------------------------------ pieces
     def dist(self, a: str, b: str) -> float:
@@ -119,12 +120,18 @@ class JointProblem:
         return d
 
     def feasible(self, sid: str, coalition: Sequence[int]) -> bool:
-        """Do these robots cover the subtask's skills, and do the user's rules allow them?"""
-        if not coalition or not all(self.allowed[sid][i] for i in coalition):
-            return False
-        x = np.zeros(len(self.robots))
-        x[list(coalition)] = 1.0
-        return covers(self.Q, self.need[sid], x) and all(L.holds(x) for L in self.lin[sid])
+        """Do these robots cover the subtask's skills, and do the user's rules allow them?
+        (Remembered: a search asks about the same coalitions again and again.)"""
+        key = (sid, tuple(sorted(coalition)))
+        ok = self._feasible.get(key)
+        if ok is None:
+            ok = bool(coalition) and all(self.allowed[sid][i] for i in coalition)
+            if ok:
+                x = np.zeros(len(self.robots))
+                x[list(coalition)] = 1.0
+                ok = covers(self.Q, self.need[sid], x) and all(L.holds(x) for L in self.lin[sid])
+            self._feasible[key] = ok
+        return ok
 
     def topological(self, order: Sequence[str]) -> bool:
         """Is ``order`` every subtask once, each after its predecessors?"""
