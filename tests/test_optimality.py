@@ -256,12 +256,16 @@ def test_an_allocation_that_breaks_the_rules_is_refused_not_repaired():
 
 
 # ------------------------------------------------------------------------------- the workflow input
+COMMAND = "Empty shelf4."
+
+
 def _small_team_world(tmp_path: Path) -> Path:
-    """The paper's world with five of its robots at other starts: Alg. 1 sends a far robot that
-    is cheapest by metres while a nearer coalition could start sooner."""
+    """The paper's world with six of its robots, most of them far from shelf4: emptying it takes
+    five moves, and Alg. 1 (with either allocation cost) leaves the makespan 10-50% above what
+    the improvement finds."""
     world = yaml.safe_load((ROOT / "benchmarks" / "warehouse" / "world.yaml").read_text())
-    starts = {"robot0": [21.0, 17.5], "robot2": [11.5, 8.5], "robot4": [26.5, 17.5], "robot7": [3.5, 17.0],
-              "robot9": [13.5, 5.5]}
+    starts = {"robot3": [9.0, 9.5], "robot5": [9.0, 17.5], "robot7": [8.0, 9.0], "robot8": [11.0, 2.0],
+              "robot10": [1.0, 8.0], "robot11": [9.5, 3.0]}
     world["robots"] = {r: {**world["robots"][r], "start": xy} for r, xy in starts.items()}
     path = tmp_path / "world.yaml"
     path.write_text(yaml.safe_dump(world, sort_keys=False))
@@ -274,7 +278,7 @@ def _step(run, sid: str) -> dict:
 
 def test_workflow_input_off_replays_the_papers_allocation_exactly(tmp_path):
     world = _small_team_world(tmp_path)
-    run = pipflow.run("warehouse", command="There should be 17 product1 in shelf2.", world=str(world),
+    run = pipflow.run("warehouse", command=COMMAND, world=str(world),
                       runs_dir=str(tmp_path / "runs"), cache=False)
     assert run.status == "succeeded", run.error
     events = [json.loads(line) for line in (Path(run.record) / "events.jsonl").read_text().splitlines()]
@@ -287,12 +291,12 @@ def test_workflow_input_off_replays_the_papers_allocation_exactly(tmp_path):
 
 def test_workflow_input_on_improves_and_the_simulation_replays_it(tmp_path):
     world = _small_team_world(tmp_path)
-    off = pipflow.run("warehouse", command="There should be 17 product1 in shelf2.", world=str(world),
+    off = pipflow.run("warehouse", command=COMMAND, world=str(world),
                       runs_dir=str(tmp_path / "runs"), cache=False)
-    on = pipflow.run("warehouse-improve", command="There should be 17 product1 in shelf2.", world=str(world),
+    on = pipflow.run("warehouse-improve", command=COMMAND, world=str(world),
                      runs_dir=str(tmp_path / "runs"), cache=False)
     assert off.status == on.status == "succeeded", (off.error, on.error)
-    assert on.outputs["makespan"] < off.outputs["makespan"] - 1.0
+    assert on.outputs["makespan"] < 0.95 * off.outputs["makespan"]
     improved = _step(on, "improve")
     assert improved["improved"] is True
     assert improved["after"]["makespan"] == pytest.approx(on.outputs["makespan"])
@@ -306,4 +310,4 @@ def test_the_step_searches_with_the_libraries_default_budget():
     from pipflow.steps.improve import local
     from pipflow.team.improve import DEFAULT_BUDGET
 
-    assert local.defaults["budget"] == DEFAULT_BUDGET
+    assert local.inputs["budget"].default == DEFAULT_BUDGET
