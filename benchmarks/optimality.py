@@ -1,6 +1,6 @@
 """Schedules against the proven optimum (issue 26, part 3), and what the improvement phase buys at scale.
 
-    python benchmarks/optimality.py [--instances 36] [--seed 0] [--time-limit 300]
+    python benchmarks/optimality.py [--instances 36] [--seed 0] [--time-limit 900]
                                     [--sizes 12x4x4,200x20x10,1000x100x20,12x40x10,30x100x20] [--repeat 1]
                                     [--skip-small] [--skip-scaled]
 
@@ -310,7 +310,7 @@ def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--instances", type=int, default=36, help="small instances (part 1)")
     ap.add_argument("--seed", type=int, default=0)
-    ap.add_argument("--time-limit", type=float, default=300.0, help="seconds SCIP may spend on one instance")
+    ap.add_argument("--time-limit", type=float, default=900.0, help="seconds SCIP may spend on one instance")
     ap.add_argument("--budget", type=int, default=DEFAULT_BUDGET, help="the improvement's plan evaluations")
     ap.add_argument("--cost", default=None,
                     help="allocation costs to compare, comma-separated (when this checkout's allocate takes `cost`)")

@@ -27,7 +27,7 @@ def local(
     speed: Annotated[float, Doc("robot speed, m/s (as the schedule uses it)")] = 1.0,
     handling: Annotated[float, Doc("seconds of loading/unloading per route stop")] = 2.0,
     budget: Annotated[int, Doc("the search's budget in subtask timings (timing a plan of n subtasks costs n; "
-                               "pipflow.team.improve.DEFAULT_BUDGET)")] = 60_000,
+                               "pipflow.team.improve.DEFAULT_BUDGET)")] = 150_000,
     seed: Annotated[int, Doc("the search's random kicks (the same seed, the same result)")] = 0,
 ) -> dict:
     """Start from the allocator's plan; the result is replayed by the Timeline and kept only when better."""

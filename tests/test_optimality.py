@@ -190,7 +190,7 @@ def test_improvement_never_worsens_and_keeps_skills_rules_and_graph(seed, n_sub,
     if not feasible_or_skip(graph, world, constraints, linear):
         return
     paper = allocate(graph, world, constraints=constraints, linear=linear, speed=speed, handling=handling)  # real SCIP
-    better = improve_allocation(graph, world, paper, constraints, linear, speed=speed, handling=handling, budget=800)
+    better = improve_allocation(graph, world, paper, constraints, linear, speed=speed, handling=handling, budget=5000)
     before = schedule_key(build_schedule(graph, paper, world, speed=speed, handling=handling))
     after = schedule_key(build_schedule(graph, better, world, speed=speed, handling=handling))
     assert not lex_less(before, after), f"worse: {before} -> {after}"

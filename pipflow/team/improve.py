@@ -27,8 +27,8 @@ Timeline's arithmetic (:meth:`JointProblem.evaluate`). The search has two levels
 
 Every plan keeps the skills covered, the user's only/never and linear rules, and the graph's
 order (a commit order is always topological). At a local optimum the search kicks the best plan
-(a few random changes, or a few subtasks moved in the order and the plan decoded again) and
-descends again, until :data:`PATIENCE` kicks in a row find nothing better, the budget is spent,
+(a few random changes; a few subtasks moved in the order and the plan decoded again; or one
+subtask given a random coalition and the rest decoded again) and descends again, until :data:`PATIENCE` kicks in a row find nothing better, the budget is spent,
 or the makespan meets the lower bound of :func:`~pipflow.team.bounds.makespan_bound` (no plan
 ends sooner; the descents still lower TC-max and TC-sum). A seed makes it deterministic. The
 result never worsens the objective: :func:`improve_allocation` replays both plans with the
@@ -45,20 +45,21 @@ from typing import Iterator
 import numpy as np
 
 from pipflow.errors import InputError
-from pipflow.team.allocation import greedy, solve_lexicographic
+from pipflow.team.allocation import solve_lexicographic
 from pipflow.team.bounds import makespan_bound
 from pipflow.team.joint import REL_TOL, JointProblem, Outcome, Plan, lex_less, replay, schedule_key
 from pipflow.team.scheduling import build_schedule
 
-#: the search's default budget, in subtask timings (timing or decoding a plan of n subtasks costs
-#: n), so that its time follows the work and not the instance's size
-DEFAULT_BUDGET = 60_000
+#: the search's default budget, in subtask timings (timing a plan of n subtasks costs n; choosing a
+#: coalition :data:`COALITION_COST` plus the robots it prices), so that its time follows the work
+#: done and not the instance's size
+DEFAULT_BUDGET = 150_000
 #: robots considered to join a subtask: the soonest to arrive and the nearest, this many of each
 CANDIDATES = 6
 #: random changes of a kick, at most
 KICK = 3
 #: kicks in a row that find nothing better before the search stops (small instances end early)
-PATIENCE = 25
+PATIENCE = 60
 #: coalition rules of :meth:`Search.decode`
 RULES = ("metres", "fit")
 #: the tightest-fit rule tries coalitions of at most this many of the robots there in time
@@ -67,8 +68,9 @@ FIT_SIZE = 3
 FIT_POOL = 10
 #: the order descent moves every subtask up to this many subtasks; beyond, only the critical chain
 ORDER_ALL = 12
-#: what decoding a plan costs, in timings of it
-DECODE_COST = 4
+#: what choosing one coalition costs, in subtask timings, besides one per robot it prices
+#: (measured: a 7-subtask plan decodes in about 10 timings of it)
+COALITION_COST = 8
 
 
 class _Spent(Exception):
@@ -94,6 +96,9 @@ class Search:
         self.best: Plan | None = None
         self.best_out: Outcome | None = None
         self._seen: dict[tuple, Outcome] = {}
+        self._decoded: dict[tuple, Plan] = {}
+        self._skill = [tuple(float(q) for q in row) for row in p.Q]  # per robot, plain floats
+        self._need = {sid: tuple(float(y) for y in need) for sid, need in p.need.items()}
 
     # ------------------------------------------------------------------ budget and the best plan
     def _charge(self, cost: int) -> None:
@@ -177,16 +182,25 @@ class Search:
         return plan, out
 
     def kick(self, plan: Plan, out: Outcome) -> Plan:
-        """The way out of a local optimum, one of two at random: a few random changes of ``plan``;
-        or its order with a few subtasks moved at random and the plan decoded again by a random
-        rule (another order hands the nearest robots to other subtasks: coalitions change at once)."""
-        if self.rng.random() < 0.5:
+        """The way out of a local optimum, one of three at random: a few random changes of
+        ``plan``; its order with a few subtasks moved at random, decoded again by a random rule
+        (another order hands the nearest robots to other subtasks); or one subtask given a random
+        coalition and the subtasks after it decoded again (a coalition that is worse for its own
+        subtask but frees the robots a later one needs)."""
+        kind = self.rng.randrange(3)
+        if kind == 0:
             order = list(plan.order)
             for _ in range(self.rng.randint(1, KICK)):
                 sid = self.rng.choice(order)
                 order.insert(self.rng.choice(self._places(order, sid) or [order.index(sid)]),
                              order.pop(order.index(sid)))
             return self.decode(order, self.rng.choice(RULES))
+        if kind == 1:
+            k = self.rng.randrange(len(plan.order))
+            sid = plan.order[k]
+            coalition = self.random_coalition(sid, self.state_before(plan, out, sid))
+            if coalition is not None:
+                return self.decode(plan.order, self.rng.choice(RULES), self._with(plan, sid, coalition), k + 1)
         for _ in range(self.rng.randint(1, KICK)):
             sid = self.rng.choice(plan.order)
             moves = list(self.moves_of(plan, out, sid))
@@ -194,6 +208,17 @@ class Search:
                 plan = self.rng.choice(moves)[1]
                 out = self.evaluate(plan, "kick")
         return plan
+
+    def random_coalition(self, sid: str, state: tuple) -> tuple[int, ...] | None:
+        """Candidates of ``sid`` in random order until they cover it, less the ones not needed."""
+        cands = self.candidates(sid, state)
+        self.rng.shuffle(cands)
+        chosen: list[int] = []
+        for i in cands:
+            chosen.append(i)
+            if self.p.feasible(sid, tuple(sorted(chosen))):
+                return self._pruned(sid, tuple(sorted(chosen)), -1, {})
+        return None
 
     def _places(self, order: list[str], sid: str) -> list[int]:
         """Where else ``sid`` may go in ``order``: after its predecessors, before its successors."""
@@ -244,18 +269,22 @@ class Search:
     # ------------------------------------------------------------------ coalitions by time
     def soonest_coalition(self, sid: str, state: tuple, ready: float, rule: str = "metres") -> tuple[int, ...] | None:
         """A coalition that can start ``sid`` soonest. Among the robots there by then: ``metres``,
-        the paper's IP (least metres: the largest, then the sum); ``fit``, the fewest skills beyond
-        the need (then metres), among small coalitions of the soonest (else ``metres``)."""
+        the paper's choice (least metres: the cheapest robots that add a needed skill until the
+        need is covered; with linear rules the paper's IP itself); ``fit``, the fewest skills
+        beyond the need (then metres), among small coalitions of the soonest (else ``metres``).
+        Plain Python over the few skills: this runs for every subtask of every decoded plan."""
         p = self.p
         pos = state[0]
         arr = self.arrivals(sid, state, keep=None if self.small else 2 * CANDIDATES)
+        self._charge(COALITION_COST + len(arr))
         idx = sorted(arr, key=lambda i: (arr[i], i))
-        need = p.need[sid]
-        have = np.zeros(len(p.skills))
+        need, skill = self._need[sid], self._skill
+        have = [0.0] * len(need)
         t = None
         for k, i in enumerate(idx):  # the earliest time by which the robots there cover the skills
-            have = have + p.Q[i]
-            if np.all(have >= need - 1e-9) and (not p.lin[sid] or self._lin_feasible(sid, idx[:k + 1])):
+            have = [h + q for h, q in zip(have, skill[i])]
+            if all(h >= n - 1e-9 for h, n in zip(have, need)) and (
+                    not p.lin[sid] or self._lin_feasible(sid, idx[:k + 1])):
                 t = arr[i]
                 break
         if t is None:
@@ -268,22 +297,31 @@ class Search:
             pool = sorted(there[:FIT_POOL])
             for size in range(1, min(FIT_SIZE, len(pool)) + 1):
                 for combo in itertools.combinations(pool, size):
-                    if p.feasible(sid, combo):
-                        key = (float(np.sum(p.Q[list(combo)].sum(axis=0) - need)), sum(metres[i] for i in combo))
-                        if best is None or key < best[0]:
-                            best = (key, combo)
+                    got = [sum(skill[i][u] for i in combo) for u in range(len(need))]
+                    if any(g < n - 1e-9 for g, n in zip(got, need)) or not p.feasible(sid, combo):
+                        continue
+                    key = (sum(g - n for g, n in zip(got, need)), sum(metres[i] for i in combo))
+                    if best is None or key < best[0]:
+                        best = (key, combo)
             if best is not None:
                 return best[1]
-        eligible = np.zeros(len(p.robots), dtype=bool)
-        eligible[there] = True
-        c = np.zeros(len(p.robots))
-        for i in there:
-            c[i] = metres[i]
         if p.lin[sid]:
-            chosen = solve_lexicographic(p.Q, need, c, eligible, p.lin[sid]).robots
+            eligible = np.zeros(len(p.robots), dtype=bool)
+            eligible[there] = True
+            c = np.zeros(len(p.robots))
+            for i in there:
+                c[i] = metres[i]
+            chosen = tuple(sorted(int(i) for i in solve_lexicographic(p.Q, p.need[sid], c, eligible, p.lin[sid]).robots))
         else:
-            chosen = greedy(p.Q, need, c, eligible)
-        chosen = tuple(sorted(int(i) for i in chosen))
+            have = [0.0] * len(need)
+            picked = []
+            for i in sorted(there, key=lambda j: (metres[j], j)):  # allocation.greedy, on the few robots there
+                if all(h >= n - 1e-9 for h, n in zip(have, need)):
+                    break
+                if any(q > 0 and h < n - 1e-9 for q, h, n in zip(skill[i], have, need)):
+                    picked.append(i)
+                    have = [h + q for h, q in zip(have, skill[i])]
+            chosen = tuple(sorted(picked))
         return chosen if chosen and p.feasible(sid, chosen) else None
 
     def _lin_feasible(self, sid: str, robots: list[int]) -> bool:
@@ -295,10 +333,11 @@ class Search:
     def decode(self, order: list[str], rule: str = "metres", keep: Plan | None = None, prefix: int = 0) -> Plan:
         """The plan of a commit order: each coalition chosen in turn for the earliest start, by
         ``rule`` (:meth:`soonest_coalition`); the first ``prefix`` subtasks keep their coalitions
-        in ``keep``. Charged as :data:`DECODE_COST` timings (measured: it takes about that many
-        times as long as timing the plan)."""
+        in ``keep``. (Remembered: kicks and descents decode the same orders again.)"""
         p = self.p
-        self._charge(DECODE_COST * max(1, len(order)))
+        memo = (tuple(order), rule, tuple(keep.coalitions[s] for s in order[:prefix]) if keep else ())
+        if memo in self._decoded:
+            return self._decoded[memo]
         state = (list(p.robots), np.zeros(len(p.robots)), self.xy.copy())
         pos, free, xy = state
         end: dict[str, float] = {}
@@ -314,7 +353,8 @@ class Search:
             for i in c:
                 pos[i], free[i], xy[i] = p.last[s], end[s], here
             coalitions[s] = c
-        return Plan(list(order), coalitions)
+        plan = self._decoded[memo] = Plan(list(order), coalitions)
+        return plan
 
     def earliest_order(self) -> list[str]:
         """A commit order by list scheduling: always the ready subtask that can start soonest (of
