@@ -311,3 +311,27 @@ def test_the_step_searches_with_the_libraries_default_budget():
     from pipflow.team.improve import DEFAULT_BUDGET
 
     assert local.inputs["budget"].default == DEFAULT_BUDGET
+
+
+def test_a_skill_only_far_robots_have_is_found_in_a_big_team():
+    """In a team larger than the candidate lists, a subtask whose skill only two far robots have
+    still gets them: the search widens its look when the soonest robots cannot cover a need."""
+    world = dict(MINI)
+    points = [[x, y] for y in (1, 5, 6, 11) for x in range(1, 20, 2)]
+    world["robots"] = {f"r{i}": {"start": points[i], "skills": {"carry": 1}} for i in range(40)}
+    for far in ("r38", "r39"):  # the top right corner: farther from the shelves than all but a few
+        world["robots"][far]["skills"] = {"carry": 1, "lift": 1}
+
+    def mv(k, a, b, skills):
+        return {"id": f"s{k}", "index": k - 1, "action": "move-product", "args": [a, b, "red"], "skills": skills,
+                "route": [a, b], "fields": {"product": "red", "from": a, "to": b}}
+    graph = {"mode": "exact", "nodes": [mv(1, "shelfC", "shelfA", {"carry": 2.0}), mv(2, "shelfC", "shelfD", {"carry": 1.0}),
+                                        mv(3, "shelfC", "shelfA", {"carry": 1.0, "lift": 1.0}),
+                                        mv(4, "shelfA", "shelfC", {"carry": 3.0})],
+             "edges": [["s1", "s4"]]}
+    paper = allocate(graph, world)
+    better = improve_allocation(graph, world, paper)
+    _check_plan(graph, world, [], [], better)
+    lifted = next(a for a in better["assignments"] if a["subtask"] == "s3")
+    assert set(lifted["robots"]) & {"r38", "r39"}
+    assert not lex_less(schedule_key(build_schedule(graph, paper, world)), schedule_key(build_schedule(graph, better, world)))

@@ -130,6 +130,8 @@ class Search:
         """The best plan found from ``plan`` (``plan`` itself when nothing beats it)."""
         self.p.check(plan)
         self.best, self.best_out = plan, self.p.evaluate(plan)
+        if not plan.order:
+            return self.best, self.best_out
         try:
             starts = [list(plan.order), self.earliest_order()]
             for order, rule in itertools.product(starts, RULES):
@@ -275,17 +277,21 @@ class Search:
         Plain Python over the few skills: this runs for every subtask of every decoded plan."""
         p = self.p
         pos = state[0]
-        arr = self.arrivals(sid, state, keep=None if self.small else 2 * CANDIDATES)
-        self._charge(COALITION_COST + len(arr))
-        idx = sorted(arr, key=lambda i: (arr[i], i))
         need, skill = self._need[sid], self._skill
-        have = [0.0] * len(need)
         t = None
-        for k, i in enumerate(idx):  # the earliest time by which the robots there cover the skills
-            have = [h + q for h, q in zip(have, skill[i])]
-            if all(h >= n - 1e-9 for h, n in zip(have, need)) and (
-                    not p.lin[sid] or self._lin_feasible(sid, idx[:k + 1])):
-                t = arr[i]
+        for keep in ((None,) if self.small else (2 * CANDIDATES, None)):
+            # the soonest few robots first; all of them when those few cannot cover the need
+            arr = self.arrivals(sid, state, keep=keep)
+            self._charge(COALITION_COST + len(arr))
+            idx = sorted(arr, key=lambda i: (arr[i], i))
+            have = [0.0] * len(need)
+            for k, i in enumerate(idx):  # the earliest time by which the robots there cover the skills
+                have = [h + q for h, q in zip(have, skill[i])]
+                if all(h >= n - 1e-9 for h, n in zip(have, need)) and (
+                        not p.lin[sid] or self._lin_feasible(sid, idx[:k + 1])):
+                    t = arr[i]
+                    break
+            if t is not None:
                 break
         if t is None:
             return None
