@@ -12,7 +12,7 @@ Half of the graphs are ``deorder`` graphs (the workflow's default), half ``exact
 read/write order kept: more edges, the option ``graph_mode=exact``).
 
 * Alg. 1 (``allocate``: the paper's per-subtask IP in frontier order, with this checkout's
-  default allocation cost, or each ``--cost``),
+  default allocation cost, or each of ``--cost total,subtask`` where ``allocate`` takes one),
 * Alg. 1 followed by the improvement phase (``pipflow.team.improve``, the step ``improve.local``),
 * the proven optimum of the joint problem (``pipflow.team.exact``: SCIP, allocation and order
   together, minimising makespan, then TC-max, then TC-sum), given the better of the two plans as
@@ -167,6 +167,8 @@ def small_instances(count: int, seed: int) -> list[dict]:
 
 # ------------------------------------------------------------------------------- part 1
 def small_part(count: int, seed: int, time_limit: float, costs: list[str | None], budget: int) -> bool:
+    """Alg. 1 and Alg. 1 + improvement for each cost, and one exact solve per instance (given the
+    best plan of them all as a first solution); a table per cost."""
     from pipflow.team.allocation import allocate
     from pipflow.team.exact import solve_exact
     from pipflow.team.improve import improve_allocation
@@ -178,40 +180,48 @@ def small_part(count: int, seed: int, time_limit: float, costs: list[str | None]
           f"seed {seed}; made in {time.perf_counter() - t0:.1f} s); load average "
           f"{' '.join(f'{x:.2f}' for x in os.getloadavg())}")
     ok = True
-    for cost in costs:
-        kw = {"cost": cost} if cost else {}
-        print(f"\n-- allocation cost: {cost or 'this checkout default (approach + route)'}")
-        print(f"{'inst':5} {'src':4} {'graph':7} {'sub':>3} {'edg':>3} {'rob':>3} {'rule':4} {'Alg.1':>8} {'+improve':>8} "
-              f"{'optimum':>8} {'gap':>7} {'gap+imp':>7} {'lex=':>4} {'imp s':>6} {'exact s':>7} proven")
-        gaps, gaps_imp, lex_same, unproven, imp_times = [], [], 0, [], []
-        for inst in instances:
-            g, w, rules = inst["graph"], inst["world"], inst["rules"]
-            a = allocate(g, w, constraints=rules, **kw)
+    rows: dict[str | None, list[dict]] = {cost: [] for cost in costs}
+    for inst in instances:
+        g, w, rules = inst["graph"], inst["world"], inst["rules"]
+        p = JointProblem(g, w, rules)
+        found = []
+        for cost in costs:
+            a = allocate(g, w, constraints=rules, **({"cost": cost} if cost else {}))
             t1 = time.perf_counter()
             b = improve_allocation(g, w, a, rules, budget=budget)
             imp_s = time.perf_counter() - t1
-            imp_times.append(imp_s)
-            p = JointProblem(g, w, rules)
-            k_paper = p.evaluate(p.plan_of(a)).key
-            k_imp = p.evaluate(p.plan_of(b)).key
-            hint = p.plan_of(b) if lex_less(k_imp, k_paper) else p.plan_of(a)
-            ex = solve_exact(p, hint=hint, time_limit=time_limit)
-            if ex.proven and (lex_less(k_imp, ex.key) or lex_less(k_paper, ex.key)):
-                print(f"   !! {inst['id']}: a plan beats the proven optimum (a model error)")
-                ok = False
-            gap = k_paper[0] / ex.key[0] - 1
-            gap_imp = k_imp[0] / ex.key[0] - 1
+            plans = (p.plan_of(a), p.plan_of(b))
+            keys = tuple(p.evaluate(plan).key for plan in plans)
+            found += list(zip(keys, plans))
+            rows[cost].append({"inst": inst, "paper": keys[0], "improved": keys[1], "imp_s": imp_s})
+        hint = min(found, key=lambda kp: kp[0])[1]
+        ex = solve_exact(p, hint=hint, time_limit=time_limit)
+        if ex.proven and any(lex_less(k, ex.key) for k, _ in found):
+            print(f"   !! {inst['id']}: a plan beats the proven optimum (a model error)")
+            ok = False
+        for cost in costs:
+            rows[cost][-1]["exact"] = ex
+    for cost in costs:
+        print(f"\n-- allocation cost: {cost or 'this checkout default'}")
+        print(f"{'inst':5} {'src':4} {'graph':7} {'sub':>3} {'edg':>3} {'rob':>3} {'rule':4} {'Alg.1':>8} {'+improve':>8} "
+              f"{'optimum':>8} {'gap':>7} {'gap+imp':>7} {'lex=':>4} {'imp s':>6} {'exact s':>7} proven")
+        gaps, gaps_imp, lex_same, unproven, imp_times = [], [], 0, [], []
+        for row in rows[cost]:
+            inst, ex, k_paper, k_imp = row["inst"], row["exact"], row["paper"], row["improved"]
+            g, w = inst["graph"], inst["world"]
+            gap, gap_imp = k_paper[0] / ex.key[0] - 1, k_imp[0] / ex.key[0] - 1
             same = not lex_less(ex.key, k_imp)
+            imp_times.append(row["imp_s"])
             if ex.proven:
                 gaps.append(gap)
                 gaps_imp.append(gap_imp)
                 lex_same += same
             else:
                 unproven.append(inst["id"])
-            print(f"{inst['id']:5} {inst['source'][:4]:4} {inst['mode']:7} {len(g['nodes']):3} {len(g['edges']):3} {len(w['robots']):3} "
-                  f"{'yes' if rules else '':4} {k_paper[0]:8.2f} {k_imp[0]:8.2f} {ex.key[0]:8.2f} {gap:7.1%} "
-                  f"{gap_imp:7.1%} {'yes' if same else 'no':>4} {imp_s:6.2f} {ex.time_s:7.1f} "
-                  f"{'yes' if ex.proven else 'NO (' + ', '.join(s['status'] for s in ex.stages) + ')'}")
+            print(f"{inst['id']:5} {inst['source'][:4]:4} {inst['mode']:7} {len(g['nodes']):3} {len(g['edges']):3} "
+                  f"{len(w['robots']):3} {'yes' if inst['rules'] else '':4} {k_paper[0]:8.2f} {k_imp[0]:8.2f} "
+                  f"{ex.key[0]:8.2f} {gap:7.1%} {gap_imp:7.1%} {'yes' if same else 'no':>4} {row['imp_s']:6.2f} "
+                  f"{ex.time_s:7.1f} {'yes' if ex.proven else 'NO (' + ', '.join(s['status'] for s in ex.stages) + ')'}")
         n = len(gaps)
         if n:
             print(f"   makespan gap to the proven optimum over {n} instances: Alg. 1 mean {statistics.mean(gaps):.1%}, "
@@ -226,11 +236,14 @@ def small_part(count: int, seed: int, time_limit: float, costs: list[str | None]
 
 
 # ------------------------------------------------------------------------------- part 2
-def run_once(label: str, work: Path, improve: bool, timeout: float) -> dict:
-    """One whole `pipflow run` of the warehouse workflow in a child process."""
-    record = work / "runs" / f"{label}-{'on' if improve else 'off'}"
+def run_once(label: str, work: Path, improve: bool, timeout: float, cost: str | None = None) -> dict:
+    """One whole `pipflow run` of the warehouse workflow in a child process (``cost``: its input
+    ``allocation_cost``, where the workflow has one)."""
+    record = work / "runs" / f"{label}-{cost or 'default'}-{'on' if improve else 'off'}"
     args = [sys.executable, "-m", "pipflow.engine.cli", "run", str(ROOT / "workflows" / "warehouse.yaml"),
             "--no-cache", "-q", "--runs-dir", str(record), "-i", f"improve={'true' if improve else 'false'}"]
+    if cost:
+        args += ["-i", f"allocation_cost={cost}"]
     if label != "paper":
         r, s, p = (int(x) for x in label.split("x"))
         world = generate_world(r, s, p)
@@ -269,12 +282,18 @@ def lower_bound(record: Path) -> float:
     return makespan_bound(JointProblem(outputs["graph"], world, outputs.get("constraints") or []))
 
 
-def scaled_part(sizes: list[str], repeat: int, timeout: float) -> None:
+def scaled_part(sizes: list[str], repeat: int, timeout: float, costs: list[str | None]) -> None:
     work = Path(tempfile.mkdtemp(prefix="pipflow-optimality-"))
     print(f"\nPart 2: the scaled suite, one whole `pipflow run` per size and setting (step cache off), improve=false "
           f"and improve=true taking turns, best of {repeat}; load average {' '.join(f'{x:.2f}' for x in os.getloadavg())}; "
           f"records in {work}")
     run_once("paper", work, False, timeout)  # unmeasured: bytecode and the parser cache
+    for cost in costs:
+        scaled_table(sizes, repeat, timeout, work, cost)
+
+
+def scaled_table(sizes: list[str], repeat: int, timeout: float, work: Path, cost: str | None) -> None:
+    print(f"-- allocation cost: {cost or 'the workflow default'}")
     print(f"{'size':>12} {'sub':>4} {'wall off':>8} {'wall on':>8} {'ratio':>6} {'improve s':>9} "
           f"{'makespan off':>12} {'on':>8} {'change':>7} {'bound':>8} {'TC-max':>7} {'TC-sum':>7} {'goal':>5}  load (off; on)")
     changes, ratios = [], []
@@ -282,7 +301,7 @@ def scaled_part(sizes: list[str], repeat: int, timeout: float) -> None:
         best: dict[bool, dict] = {}
         for _ in range(max(1, repeat)):
             for improve in (False, True):
-                r = run_once(label, work, improve, timeout)
+                r = run_once(label, work, improve, timeout, cost)
                 if improve not in best or (r["code"] != 0, r["wall"]) < (best[improve]["code"] != 0, best[improve]["wall"]):
                     best[improve] = r
         off, on = best[False], best[True]
@@ -330,7 +349,7 @@ def main(argv: list[str] | None = None) -> int:
     if not args.skip_small:
         ok = small_part(args.instances, args.seed, args.time_limit, costs, args.budget)
     if not args.skip_scaled:
-        scaled_part([s.strip() for s in args.sizes.split(",") if s.strip()], args.repeat, args.timeout)
+        scaled_part([s.strip() for s in args.sizes.split(",") if s.strip()], args.repeat, args.timeout, costs)
     return 0 if ok else 1
 
 

@@ -56,9 +56,6 @@ class Plan:
     order: list[str]
     coalitions: dict[str, tuple[int, ...]]
 
-    def copy(self) -> "Plan":
-        return Plan(list(self.order), dict(self.coalitions))
-
 
 @dataclass
 class Outcome:
