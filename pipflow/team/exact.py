@@ -26,9 +26,13 @@ the optimal values are the Timeline's: the plan read back from ``y`` (commit ord
 order of the graph and the robots' sequences, by start time) is what the result holds, with its
 objective as the Timeline computes it.
 
-Two cuts make the makespan bound strong enough for 8 subtasks and 6 robots in seconds:
-``C >= E_b + tail_b`` (the longest chain of successors) and, per robot, ``C >=`` its driving
-and handling time (a robot does its subtasks one after another).
+What makes 8 subtasks and 6 robots provable in seconds to minutes (:mod:`pipflow.team.bounds`):
+``C >= E_b + tail_b`` (the longest chain of successors); per robot, ``C >=`` its driving and
+handling (it does its subtasks one after another); per robot and subtask, ``S_b >=`` the earliest
+its one arc into b allows (no big-M); for two subtasks no two disjoint coalitions can serve (some
+robot does both), an order binary with the drive between them; and the makespan's lower bound
+from the best order of each group of such subtasks. Without the last two, a 7-subtask instance
+took 80 s to prove; with them, 2 s.
 """
 from __future__ import annotations
 
