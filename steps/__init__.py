@@ -17,6 +17,7 @@ GENERIC_STEP_MODULES = [
     "pipflow.steps.problem",
     "pipflow.steps.graph",
     "pipflow.steps.allocate",
+    "pipflow.steps.improve",
     "pipflow.steps.schedule",
     "pipflow.steps.llm",
 ]
