@@ -4,7 +4,7 @@
                                    [--modes free,grounded] [--limit N]
 
 For each paper task it asks the model twice (free text, then grounded: an order, see
-pipflow/language/grounding.py) and reports per mode the share of answers that yield a problem,
+pipflow/warehouse/language/grounding.py) and reports per mode the share of answers that yield a problem,
 that name only the world's objects (the paper's failure: ``prodcut3`` invented as a new
 product), whose counts fit the shelves, and whose goal is exactly the gold one; for grounded
 answers also the share that are complete JSON of the order schema; plus tokens and latency. Default model ``local/smollm2`` starts a llama.cpp server
@@ -51,7 +51,7 @@ def score(out: dict, gold: dict, world: dict) -> dict[str, bool]:
 def is_order(text: str) -> bool:
     """Whether an answer is complete JSON of the order schema (rule scopes "any" dropped)."""
     from pipflow.errors import TranslationError
-    from pipflow.language.order import validate_order
+    from pipflow.warehouse.language.order import validate_order
 
     try:
         data = json.loads(text)

@@ -169,7 +169,7 @@ DOMAIN_PACKAGES = ("pipflow.warehouse", "pipflow.household")
 #: generic modules allowed to spell a domain's name, and why (keep this list short; steps/ has none)
 NAMES_A_DOMAIN = {
     "pipflow.taskdomain": "DEFAULT_DOMAIN: the one place that says which domain a world without `domain:` is",
-    "pipflow.language.grounding": "the JSON schema's name 'warehouse_order' is part of recorded requests' cache "
+    "pipflow.warehouse.language.grounding": "the JSON schema's name 'warehouse_order' is part of recorded requests' cache "
                                   "keys: renaming it would orphan every recorded model answer",
 }
 

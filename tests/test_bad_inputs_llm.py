@@ -121,7 +121,7 @@ def serve():
 
 
 def good_answer() -> str:
-    from pipflow.pddl.writer import write_problem
+    from pipflow.warehouse.problem import write_problem
     from pipflow.warehouse.world import load_world
 
     return f"```pddl\n{write_problem(load_world(WORLD_FILE), {'shelf3': {'product1': 7}})}\n```"

@@ -11,9 +11,10 @@ import yaml
 from pipflow import StepContext
 from pipflow.errors import InputError, LLMError
 from pipflow.language import generator
-from pipflow.language import grounding, llm
-from pipflow.pddl import writer as pddl_writer
-from pipflow.language.llm_orders import read_grounded
+from pipflow.language import llm
+from pipflow.warehouse import problem as pddl_writer
+from pipflow.warehouse.language import grounding
+from pipflow.warehouse.language.llm_orders import read_grounded
 from pipflow.language.parsing import ParseIssue, extract_constraints, extract_problem, validate_constraints
 from pipflow.language.prompting import render
 
@@ -27,7 +28,7 @@ PROBLEM = """(define (problem p) (:domain warehouse)
 
 
 def fake_writer(world: dict, goal: dict, **_names) -> str:
-    """Stands in for pipflow.pddl.writer.write_problem (the warehouse domain's writer): the goal, visibly."""
+    """Stands in for pipflow.warehouse.problem.write_problem (the warehouse domain's writer): the goal, visibly."""
     return "(define (problem written) " + json.dumps(goal, sort_keys=True) + ")"
 
 
@@ -240,10 +241,10 @@ def test_offline_model_uses_translator_and_writer(tmp_path, monkeypatch):
     import sys
     import types
 
-    fake = types.ModuleType("pipflow.language.understand")
+    fake = types.ModuleType("pipflow.warehouse.language.translator")
     fake.understand = lambda command, world: {"goal": {"shelf3": {"product1": 7}}, "constraints": [],
                                               "order": {"statements": [], "rules": []}, "explanation": []}
-    monkeypatch.setitem(sys.modules, "pipflow.language.understand", fake)
+    monkeypatch.setitem(sys.modules, "pipflow.warehouse.language.translator", fake)
     monkeypatch.setattr(pddl_writer, "write_problem", fake_writer)
     out, art = run_step(tmp_path, model="offline")
     assert out["goal"] == {"shelf3": {"product1": 7}} and out["usage"]["calls"] == 0

@@ -8,7 +8,7 @@ from pathlib import Path
 
 from pipflow.engine import RunOptions, run_workflow
 from pipflow.language import generator, llm
-from pipflow.pddl.writer import write_problem
+from pipflow.warehouse.problem import write_problem
 from pipflow.warehouse.world import load_world
 
 REPO = Path(__file__).resolve().parents[1]

@@ -1,4 +1,4 @@
-"""Tests of the offline reading of commands (pipflow.language.understand: parser, resolver, names, numbers).
+"""Tests of the offline reading of commands (pipflow.warehouse.language.translator: parser, resolver, names, numbers).
 
 The paper's ten commands must give the gold exactly; the rest runs on worlds made up here, with
 other names and more robots, so nothing can lean on the benchmark's names.
@@ -15,10 +15,10 @@ import pytest
 import yaml
 
 from pipflow.errors import Refusal, TranslationError
-from pipflow.language.names import distance
+from pipflow.warehouse.language.names import distance
 from pipflow.language.numbers import read_number
-from pipflow.language.resolver import split_evenly
-from pipflow.language.understand import translate
+from pipflow.warehouse.language.resolver import split_evenly
+from pipflow.warehouse.language.translator import translate
 
 ROOT = Path(__file__).resolve().parent.parent
 TASKS = ROOT / "benchmarks" / "warehouse" / "tasks.yaml"

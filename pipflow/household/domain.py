@@ -67,7 +67,7 @@ class HouseholdDomain(TaskDomain):
         Untranslatable commands raise TranslationError, impossible ones Refusal (the same as step
         ``household.problem``)."""
         # deferred: builds the lark parser (~150 ms; only offline reading needs it)
-        from pipflow.household.translator import translate
+        from pipflow.household.language.translator import translate
 
         result = translate(command, world)
         problem = self.write_problem(world, result["concrete"], pddl_domain_name(domain_text, self.name))

@@ -37,7 +37,7 @@ def environment() -> Any:
     env.credits_stream = None
     env.error_used_name = True
     # deferred: pulls unified_planning.shortcuts and networkx (~600 ms; parse-only users need neither)
-    from pipflow.pddl.transport import register
+    from pipflow.warehouse.planner import register
 
     register(env)
     return env

@@ -21,7 +21,7 @@ from pipflow.pddl.common import parse, read_domain_text
 from pipflow.pddl.convert import initial_numbers
 from pipflow.pddl.names import pddl_name
 from pipflow.pddl.textpos import find_word, line_col, strip_comments
-from pipflow.pddl.writer import magnitudes
+from pipflow.warehouse.problem import magnitudes
 from pipflow.suggest import did_you_mean_clause
 from pipflow.taskdomains import task_domain
 

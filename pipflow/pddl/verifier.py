@@ -44,9 +44,9 @@ def goal_problems(world: dict, goal: dict[str, dict[str, Any]]) -> tuple[list[st
 
     Unknown names and malformed values are messages (the problem is wrong, a better problem may
     fix it); goals no final state of the world meets are a refusal (no problem can fix the
-    command): :func:`pipflow.pddl.feasibility.infeasibility_reasons` says why."""
+    command): :func:`pipflow.warehouse.feasibility.infeasibility_reasons` says why."""
     # deferred: pulls networkx (~200 ms; paid when a goal is checked, not by importers of the verifier)
-    from pipflow.pddl.feasibility import infeasibility_reasons
+    from pipflow.warehouse.feasibility import infeasibility_reasons
 
     messages = []
     for s, items in goal.items():

@@ -230,7 +230,7 @@ def _gold_feasibility(task: dict, tid: Any, goal: dict, world: dict, where: Loca
     room for every unit): otherwise a correct refusal would be scored as a failure. Checked only
     once the goal's names and values are valid (their own diagnostics say what is wrong)."""
     # deferred: pulls networkx (~150 ms; only a task file's gold goals are checked with it)
-    from pipflow.pddl.feasibility import infeasibility_reasons
+    from pipflow.warehouse.feasibility import infeasibility_reasons
 
     if task.get("feasible", True) is False or task.get("expect") == "refuse":
         return []

@@ -1,10 +1,10 @@
-"""The offline parser: a command and a world in, an order (:mod:`pipflow.language.order`) out.
+"""The offline parser: a command and a world in, an order (:mod:`pipflow.warehouse.language.order`) out.
 
 It parses each sentence with lark's Earley parser over the grammar of
-:mod:`pipflow.language.grammar`, whose lexicon is the world's names (:mod:`lexicon`), and reads
+:mod:`pipflow.warehouse.language.grammar`, whose lexicon is the world's names (:mod:`lexicon`), and reads
 the tree into statements and robot rules. It does no arithmetic against the stock: relative
 amounts, "except", "the rest", swaps and ellipsis stay symbolic for the resolver
-(:mod:`pipflow.language.resolver`). What it does resolve is the sentence's own structure:
+(:mod:`pipflow.warehouse.language.resolver`). What it does resolve is the sentence's own structure:
 
 * coordination with ellipsis: "four product1 to shelf2 and three to shelf3, taking them from
   shelf1" (the item and the source are shared), "shelf2 to hold 6 product3, and shelf4 too";
@@ -27,11 +27,11 @@ from lark.exceptions import UnexpectedInput, UnexpectedToken
 
 from pipflow.errors import PipflowError, TranslationError
 from pipflow.language.earley import ListLexer, earley_parser
-from pipflow.language.grammar import GRAMMAR, nullable_optionals
-from pipflow.language.lexicon import Lexed, Lexicon
+from pipflow.warehouse.language.grammar import GRAMMAR, nullable_optionals
+from pipflow.warehouse.language.lexicon import Lexed, Lexicon
 from pipflow.language.numbers import NUMBER_WORDS
-from pipflow.language.resolver import resolve
-from pipflow.language.robots import RobotSelector
+from pipflow.warehouse.language.resolver import resolve
+from pipflow.warehouse.language.robots import RobotSelector
 
 #: the most terminals one sentence may have: Earley's time grows faster than the length on
 #: ambiguous lists, so a bound per sentence keeps a whole command's parse linear in its length

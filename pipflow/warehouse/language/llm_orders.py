@@ -1,7 +1,7 @@
 """Orders from a language model, for both LLM modes, so that everything after the generator
 (resolver explanation, verifier, run summary) sees the same typed meaning as the offline path.
 
-* Grounded mode: the model's answer IS an order (:mod:`pipflow.language.grounding` constrains
+* Grounded mode: the model's answer IS an order (:mod:`pipflow.warehouse.language.grounding` constrains
   it). :func:`read_grounded` checks it against ``schemas/order.schema.json`` and the world, then
   resolves it; whatever is wrong becomes ONE message about the JSON the model was asked for
   (which statement, which key, which name, what to write instead), for the next round's prompt.
@@ -15,10 +15,10 @@ import json
 from typing import Any
 
 from pipflow.errors import Refusal, TranslationError
-from pipflow.language.grounding import ANY, vocabulary
-from pipflow.language.order import validate_order
+from pipflow.warehouse.language.grounding import ANY, vocabulary
+from pipflow.warehouse.language.order import validate_order
 from pipflow.language.parsing import ParseIssue
-from pipflow.language.resolver import resolve
+from pipflow.warehouse.language.resolver import resolve
 
 #: the selector keys of a statement and the role of the names they hold
 SELECTOR_ROLES = {"places": "places", "from": "places", "to": "places", "items": "items"}

@@ -14,7 +14,7 @@ tags and skills are enums of the world. Providers with JSON-schema structured ou
 rule's scope the command does not state is ``"any"``); llama.cpp servers get the same language
 as a GBNF grammar (:func:`gbnf`) whose lists, numbers, whitespace and ``words`` are bounded, so a
 small model cannot run on until max_tokens. The resolver then computes goal, bounds, rules and
-the explanation, and the problem writer writes the PDDL (:mod:`pipflow.language.llm_orders`), so
+the explanation, and the problem writer writes the PDDL (:mod:`pipflow.warehouse.language.llm_orders`), so
 a name such as ``prodcut3`` cannot reach the planner: the decoder never emits it.
 """
 from __future__ import annotations

@@ -9,8 +9,8 @@ from __future__ import annotations
 from lark import Token, Tree
 
 from pipflow.errors import Refusal, TranslationError
-from pipflow.language.lexicon import SUPERLATIVES
-from pipflow.language.names import NameIndex, normalize, split_digits
+from pipflow.warehouse.language.lexicon import SUPERLATIVES
+from pipflow.warehouse.language.names import NameIndex, normalize, split_digits
 
 SUPER_WORDS = set(SUPERLATIVES)
 #: words that make a kind or tag said in the singular mean any or all robots of it

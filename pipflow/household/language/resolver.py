@@ -29,8 +29,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from pipflow.errors import Refusal, TranslationError
-from pipflow.household.lexicon import COLD, INDEFINITE, MASS_NOUNS, MEALS, REACHABLE, VIA_PROPERTY, plurals, words_of
-from pipflow.household.order import check_order
+from pipflow.household.language.lexicon import COLD, INDEFINITE, MASS_NOUNS, MEALS, REACHABLE, VIA_PROPERTY, plurals, words_of
+from pipflow.household.language.order import check_order
 from pipflow.household.problem import CONDITIONS
 from pipflow.household.world import entity, initial_state, members
 
