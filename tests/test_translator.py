@@ -15,7 +15,7 @@ import pytest
 import yaml
 
 from pipflow.errors import Refusal, TranslationError
-from pipflow.warehouse.language.names import distance
+from pipflow.language.spelling import distance
 from pipflow.language.numbers import read_number
 from pipflow.warehouse.language.resolver import split_evenly
 from pipflow.warehouse.language.translator import translate

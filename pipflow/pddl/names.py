@@ -31,7 +31,3 @@ def plan_in_world_names(plan: list[dict] | None, world: dict | None) -> list[dic
     return [{**step, "args": [names.get(a, a) for a in step["args"]]} for step in plan]
 
 
-def goal_in_world_names(goal: dict[str, dict[str, int]], world: dict | None) -> dict[str, dict[str, int]]:
-    """A goal ``{shelf: {product: n}}`` spelled as the world spells its names."""
-    names = world_spelling(world)
-    return {names.get(s, s): {names.get(p, p): n for p, n in items.items()} for s, items in goal.items()}

@@ -1,6 +1,7 @@
 """Solve a parsed problem with a UP OneshotPlanner named by the workflow.
 
-Engines: ``pipflow-transport`` (default for the warehouse domain, see
+Engines: ``pipflow-transport`` (the warehouse's own, registered through the entry-point group
+``pipflow.planners``; see
 :mod:`pipflow.warehouse.planner`: near-fewest moves on the paper's tasks, large instances in
 seconds), ``enhsp`` (ENHSP gbfs + hadd, any numeric domain; about 1 s on the paper's tasks but it
 grows fast), ``enhsp-opt`` / ``enhsp-any``, and any other engine installed in UP (``fast-downward``

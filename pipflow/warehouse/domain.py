@@ -15,22 +15,19 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any, Callable, Mapping
 
-from pipflow.warehouse.language import grounding
 from pipflow.language.offline import NO_USAGE
 from pipflow.language.parsing import FIELD_KEYS
-from pipflow.warehouse import problem as writer
-from pipflow.pddl.common import stock_goals
-from pipflow.pddl.debugger import world_mismatches
-from pipflow.pddl.names import goal_in_world_names
-from pipflow.pddl.verifier import goal_problems
 from pipflow.resources import data_file
 from pipflow.taskdomain import GoalCheck, Grounding, Save, TaskDomain, flat_simulation
 from pipflow.warehouse import agreement
+from pipflow.warehouse import problem as writer
 from pipflow.warehouse import world as worlds
+from pipflow.warehouse.language import grounding
+from pipflow.warehouse.meaning import understanding
+from pipflow.warehouse.problem import goal_in_world_names, goal_problems, stock_goals, world_mismatches
 from pipflow.warehouse.scoring import score_run
 from pipflow.warehouse.simulation import simulate
 from pipflow.warehouse.starts import vary_starts
-from pipflow.warehouse.meaning import understanding
 
 
 def _read_grounded(text: str, world: dict) -> dict:

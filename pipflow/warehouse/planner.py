@@ -1015,12 +1015,6 @@ class TransportPlanner(Engine, OneshotPlannerMixin):
         return self._result(S.SOLVED_SATISFICING, plan, outcome.note)
 
 
-def register(env: Any) -> None:
-    """Add ``pipflow-transport`` to a UP environment's engine factory (idempotent)."""
-    if ENGINE_NAME not in env.factory.engines:
-        env.factory.add_engine(ENGINE_NAME, __name__, "TransportPlanner")
-
-
 def fewest_moves(inst: Instance, time_limit: float = 60.0) -> tuple[int | None, bool]:
     """``(moves, proven)``: the order-free minimum number of moves from SCIP, and whether SCIP
     proved it optimal within ``time_limit`` (otherwise its best bound, rounded up, and False).

@@ -30,8 +30,8 @@ from pipflow.errors import TranslationError
 from pipflow.household.language.grammar import NOUN_DUAL, grammar_text
 from pipflow.household.language.lexicon import (ACTIVITIES, COLD, FILLER, FILLER_TYPO_TARGETS, LIGHT_CATEGORY_WORD, MEALS,
                                        OPPOSITE, PHRASES, UNIT_DETERMINERS, plurals, words_of)
-from pipflow.warehouse.language.names import distance
 from pipflow.language.numbers import read_number
+from pipflow.language.spelling import distance
 
 #: the most readings of one ambiguous command that are compared (each is resolved); more is
 #: refused, never cut short

@@ -15,8 +15,9 @@ from dataclasses import dataclass
 from lark import Token
 
 from pipflow.errors import InputError, Refusal, TranslationError
-from pipflow.warehouse.language.names import STOPWORDS, NameIndex, Tok, distance, normalize, read_counts, recognize
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS
+from pipflow.language.spelling import distance, normalize
+from pipflow.warehouse.language.names import STOPWORDS, NameIndex, Tok, read_counts, recognize
 
 #: no user writes a longer command; past this the parser would only be asked to burn time
 MAX_COMMAND_CHARS = 4000
