@@ -156,7 +156,7 @@ def generate(
         if grounded:
             state, got = offline_reading(command, world)
             reading = got if state == "read" else None
-        max_tokens = answer_budget(world, bool(grounded), example, reading)
+        max_tokens = answer_budget(world, domain.grounding if grounded else None, example, reading)
     extra = request_extra(grounding_method(model, api_base), world) if grounded else {}
     if not grounded:
         extra = {**extra, "stop": list(FREE_STOPS)}

@@ -18,7 +18,7 @@ from typing import Any, Callable, Mapping
 from pipflow.language.offline import NO_USAGE
 from pipflow.language.parsing import FIELD_KEYS
 from pipflow.resources import data_file
-from pipflow.taskdomain import GoalCheck, Grounding, Save, TaskDomain, flat_simulation
+from pipflow.taskdomain import Facts, GoalCheck, Grounding, Save, TaskDomain, flat_simulation
 from pipflow.warehouse import agreement
 from pipflow.warehouse import problem as writer
 from pipflow.warehouse import world as worlds
@@ -54,7 +54,9 @@ class WarehouseDomain(TaskDomain):
     workflows = {"pip-llm": "pip-llm", "pip-llm-checked": "pip-llm-checked"}
     default_prompt = "warehouse_problem"
     rule_fields = FIELD_KEYS
-    grounding = Grounding(gbnf=grounding.gbnf, response_format=grounding.response_format, read=_read_grounded)
+    grounding = Grounding(gbnf=grounding.gbnf, response_format=grounding.response_format, read=_read_grounded,
+                          answer_size=grounding.answer_size)
+    name_sections = ("shelves", "products", "robots")
     simulate_options = ("picture", "animation")
 
     def pddl_domain(self) -> Path:
@@ -69,6 +71,10 @@ class WarehouseDomain(TaskDomain):
     def describe(self, world: dict) -> str:
         return (f"{len(world['shelves'])} shelves, {len(world['products'])} products, "
                 f"{len(world['robots'])} robots")
+
+    def places(self, world: dict) -> Mapping[str, Mapping[str, Any]]:
+        """The shelves: a footprint and an access point each."""
+        return world.get("shelves") or {}
 
     def rule_names(self, world: dict) -> Mapping[str, tuple[Any, str]]:
         shelves = world.get("shelves", {})
@@ -118,6 +124,9 @@ class WarehouseDomain(TaskDomain):
         """Each robot's ``carry`` skill (units per move) and the only/never rules."""
         robots = {name: r.get("skills", {}).get("carry", 0) for name, r in world.get("robots", {}).items()}
         return {"robots": robots, "rules": constraints or []}
+
+    def feedback_facts(self, messages: list[str], world: dict) -> Facts:
+        return worlds.feedback_facts(messages, world)
 
     def second_opinion(self, command: str, world: dict, goal: Any, constraints: list[dict],
                        refusal: str | None, last: bool = False) -> Any | None:

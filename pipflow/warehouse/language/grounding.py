@@ -64,6 +64,15 @@ def largest_count(world: dict) -> int:
     return max(caps + [total, 1])
 
 
+def answer_size(world: dict, reading: dict | None) -> tuple[int, int]:
+    """``(goal items, rules)`` a grounded answer is expected to hold: the offline reading's goal
+    counts and rules when the parser read the command, else half of every shelf x product (a
+    command rarely states more) and two rules. The call's token budget comes from it."""
+    if reading is not None:
+        return sum(len(v) for v in reading.get("goal", {}).values()), len(reading.get("constraints") or [])
+    return len(world.get("shelves") or {}) * len(world.get("products") or {}) // 2, 2
+
+
 # ---------------------------------------------------------------- JSON schema
 
 
