@@ -14,7 +14,7 @@ from pipflow.team.scheduling import COSTS, DEFAULT_COST
 # the inputs every allocator takes, named once (each step's signature is its contract)
 Graph = Annotated[dict, Doc("output of graph.dependencies")]
 World = Annotated[dict, Doc("output of world.load")]
-RobotRules = Annotated[list | None, Doc("only/never rules: [{only|never: [robots], product?, from?, to?}]")]
+RobotRules = Annotated[list | None, Doc("only/never rules: [{only|never: [robots], FIELD?: name, ...}], FIELD one of the world's task domain's rule fields")]
 LinearRules = Annotated[list | None, Doc("extra linear constraints: [{robots: [..]|all, coef: n|{robot: n}, "
                                          "skill?, sense, rhs, <field>?}]")]
 Speed = Annotated[float, Doc("robot speed, m/s (times in stats and frontier mode)")]

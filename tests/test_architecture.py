@@ -10,10 +10,16 @@ from __future__ import annotations
 
 import ast
 import io
+import json
+import re
 import tokenize
+from collections import Counter
 from pathlib import Path
 
 import networkx as nx
+import yaml
+
+from pipflow.taskdomains import domain_named, known_domains
 
 ROOT = Path(__file__).resolve().parent.parent
 #: source folder -> the package it is installed as (pyproject's package-dir)
@@ -169,8 +175,6 @@ DOMAIN_PACKAGES = ("pipflow.warehouse", "pipflow.household")
 #: generic modules allowed to spell a domain's name, and why (keep this list short; steps/ has none)
 NAMES_A_DOMAIN = {
     "pipflow.taskdomain": "DEFAULT_DOMAIN: the one place that says which domain a world without `domain:` is",
-    "pipflow.warehouse.language.grounding": "the JSON schema's name 'warehouse_order' is part of recorded requests' cache "
-                                  "keys: renaming it would orphan every recorded model answer",
 }
 
 
@@ -223,6 +227,130 @@ def graph_has_domain_edges() -> bool:
     """The import graph does see the domain packages (their own steps import them)."""
     graph = import_graph()
     return graph.has_edge("pipflow.household.steps", "pipflow.household.domain")
+
+
+# ---------------------------------------------------------------------------------------------
+# task domains' vocabulary (issue 22): generic code speaks no domain's words, not only its name
+# ---------------------------------------------------------------------------------------------
+#: where each task domain's own words are read: its PDDL domain (types, predicates, functions,
+#: actions) and the sections of its world files (the world schema's top level, or a world file's).
+#: The test plugin's garden counts as a domain: a plugin's words are banned too. Installed
+#: third-party domains add their PDDL domain's words (:func:`domain_vocabularies`).
+VOCABULARY_SOURCES = {
+    "warehouse": ("domains/warehouse.pddl", "schemas/world.schema.json"),
+    "household": ("domains/household.pddl", "schemas/household.schema.json"),
+    "garden": ("tests/plugins/pipflow_garden/pipflow_garden/data/garden.pddl",
+               "tests/plugins/pipflow_garden/pipflow_garden/data/world.yaml"),
+}
+#: words of those files that generic code may say anyway, and why (a word two domains share is
+#: generic by itself: robots, floor, name, domain, store)
+COMMON_WORDS = {
+    **dict.fromkeys(("at", "on", "off", "is", "open", "close", "clear", "switch"),
+                    "English function words and everyday verbs that a PDDL domain also uses as predicates "
+                    "(and Python's open, close, clear)"),
+    **dict.fromkeys(("amount", "load", "capacity", "room", "weight", "move"),
+                    "what any robot team carries, and how much fits (allocation and planners say them; "
+                    "yaml's safe_load)"),
+    **dict.fromkeys(("entity", "item", "object", "objects", "place", "places", "categories", "teams"),
+                    "pipflow's generic picture of a world: named places (floor plans, travel) and items, "
+                    "robot teams; Python's object"),
+    **dict.fromkeys(("stored", "prune", "slice"), "words of computing: a stored row, pruning a cache, a slice"),
+}
+#: generic modules allowed to speak a domain's words for now, and why (keep it short)
+SPEAKS_A_DOMAIN = {
+    "pipflow.records.report": "finds the simulation by the warehouse's legacy key final_stock and spells its rule "
+                              "fields: issue 22 point 3 (the report reads declared shapes) replaces both",
+}
+
+
+def _words(text: str) -> list[str]:
+    """The lower-case words of a name or a string: ``final_stock`` and ``finalStock`` are
+    final, stock; ``move-product`` is move, product."""
+    return [w.lower() for part in re.findall(r"[A-Za-z]+", text)
+            for w in re.findall(r"[A-Z]?[a-z]+|[A-Z]+(?![a-z])", part)]
+
+
+def _file_words(path: Path) -> set[str]:
+    """A PDDL domain's types, predicates, functions and actions, or a world file's (a schema's)
+    top-level sections, as words."""
+    text = path.read_text(encoding="utf-8")
+    if path.suffix == ".pddl":
+        text = re.sub(r";[^\n]*", "", text)
+        types = re.search(r"\(\s*:types(.*?)\)", text, re.DOTALL)
+        names = {w for w in types.group(1).split() if w != "-"} if types else set()
+        names |= set(re.findall(r"\(\s*([A-Za-z][\w-]*)\s+\?", text))  # predicates, functions
+        names |= set(re.findall(r"\(\s*:action\s+([\w-]+)", text, re.IGNORECASE))
+    elif path.suffix == ".json":
+        names = set(json.loads(text).get("properties", {}))
+    else:
+        names = set(yaml.safe_load(text) or {})
+    return {w for name in names for w in _words(name)}
+
+
+def domain_vocabularies() -> dict[str, set[str]]:
+    """Each task domain's words: :data:`VOCABULARY_SOURCES`, and the PDDL domain of every other
+    task domain installed (a third-party plugin's)."""
+    out = {name: set().union(*(_file_words(ROOT / f) for f in files)) for name, files in VOCABULARY_SOURCES.items()}
+    for name in known_domains():
+        if name not in out:
+            out[name] = _file_words(Path(domain_named(name).pddl_domain()))
+    return out
+
+
+def banned_words() -> set[str]:
+    """The words generic code may not say: each domain's own (not shared with another domain, not
+    in :data:`COMMON_WORDS`), in the singular and the plural ("shelf", "shelves")."""
+    vocabularies = domain_vocabularies()
+    counts = Counter(w for words in vocabularies.values() for w in words)
+    own = {w for words in vocabularies.values() for w in words if counts[w] == 1 and w not in COMMON_WORDS}
+    forms = set(own)
+    for w in own:
+        forms |= {w + "s", w + "es"} | ({w[:-1] + "ves"} if w.endswith("f") else set()) | (
+            {w[:-1] + "ies"} if w.endswith("y") else set())
+    return forms
+
+
+def vocabulary_lines(path: Path, banned: set[str]) -> list[tuple[int, str]]:
+    """(line, word) of the names and string literals of a module that speak a domain's words.
+    Left out: comments and docstrings (they explain), and attributes of modules from outside
+    pipflow (``itertools.product`` is that library's word, not the warehouse's)."""
+    source = path.read_text(encoding="utf-8")
+    tree = ast.parse(source)
+    docstrings = {(node.lineno, node.col_offset) for node in ast.walk(tree)
+                  if isinstance(node, ast.Expr) and isinstance(node.value, ast.Constant)
+                  and isinstance(node.value.value, str)}
+    outside = {(alias.asname or alias.name).split(".")[0] for node in ast.walk(tree) if isinstance(node, ast.Import)
+               for alias in node.names if alias.name.split(".")[0] != "pipflow"}
+    theirs = {(node.end_lineno, node.end_col_offset - len(node.attr)) for node in ast.walk(tree)
+              if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and node.value.id in outside}
+    found = []
+    for tok in tokenize.generate_tokens(io.StringIO(source).readline):
+        if tok.type in (tokenize.NAME, tokenize.STRING) and tok.start not in docstrings and tok.start not in theirs:
+            found += [(tok.start[0], w) for w in _words(tok.string) if w in banned]
+    return found
+
+
+def test_generic_modules_speak_no_domain_vocabulary():
+    banned = banned_words()
+    found = {name: sorted(set(words)) for name, path in modules().items()
+             if _is_generic(name) and name not in SPEAKS_A_DOMAIN and (words := vocabulary_lines(path, banned))}
+    assert not found, ("generic modules that speak a task domain's words outside comments and docstrings "
+                       f"(ask the TaskDomain for what the code needs; the words belong in the domain's package): {found}")
+
+
+def test_the_vocabulary_check_sees_what_it_must(tmp_path):
+    """The banned words are each domain's own (shelves, stock, fridge-like receptacles, a
+    plugin's beds) and not what every domain shares; the scan finds them in code and strings and
+    not in comments, docstrings or another library's names (a check that found nothing would pass
+    every module)."""
+    banned = banned_words()
+    assert {"shelf", "shelves", "stock", "product", "receptacle", "sliced", "bed", "beds", "crop"} <= banned
+    assert not {"robots", "floor", "place", "open", "load", "name"} & banned
+    probe = tmp_path / "probe.py"
+    probe.write_text('"""Counts stock on shelves."""\nimport itertools\n# the shelf\n'
+                     'x = itertools.product([1], [2])\nfinal_stock = 1\ny = world["shelves"]\n'
+                     'def f():\n    """per shelf"""\n    return f"{x} units on each receptacle"\n')
+    assert [line for line, _ in vocabulary_lines(probe, banned)] == [5, 6, 9]
 
 
 # ---------------------------------------------------------------------------------------------

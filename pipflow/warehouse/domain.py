@@ -16,7 +16,6 @@ from pathlib import Path
 from typing import Any, Callable, Mapping
 
 from pipflow.language.offline import NO_USAGE
-from pipflow.language.parsing import FIELD_KEYS
 from pipflow.resources import data_file
 from pipflow.taskdomain import Facts, GoalCheck, Grounding, Save, TaskDomain, flat_simulation
 from pipflow.warehouse import agreement
@@ -53,7 +52,7 @@ class WarehouseDomain(TaskDomain):
     workflow = "warehouse"
     workflows = {"pip-llm": "pip-llm", "pip-llm-checked": "pip-llm-checked"}
     default_prompt = "warehouse_problem"
-    rule_fields = FIELD_KEYS
+    rule_fields = ("product", "from", "to")
     grounding = Grounding(gbnf=grounding.gbnf, response_format=grounding.response_format, read=_read_grounded,
                           answer_size=grounding.answer_size)
     name_sections = ("shelves", "products", "robots")
