@@ -2,7 +2,8 @@
 
 It parses each sentence with lark's Earley parser over the grammar of
 :mod:`pipflow.warehouse.language.grammar`, whose lexicon is the world's names (:mod:`lexicon`), and reads
-the tree into statements and robot rules. It does no arithmetic against the stock: relative
+the tree into statements and robot rules (a goal clause by the method of its rule:
+:mod:`pipflow.warehouse.language.goals`). It does no arithmetic against the stock: relative
 amounts, "except", "the rest", swaps and ellipsis stay symbolic for the resolver
 (:mod:`pipflow.warehouse.language.resolver`). What it does resolve is the sentence's own structure:
 
@@ -27,6 +28,7 @@ from lark.exceptions import UnexpectedInput, UnexpectedToken
 
 from pipflow.errors import PipflowError, TranslationError
 from pipflow.language.earley import ListLexer, earley_parser
+from pipflow.warehouse.language.goals import GoalRules, quote
 from pipflow.warehouse.language.grammar import GRAMMAR, nullable_optionals
 from pipflow.warehouse.language.lexicon import Lexed, Lexicon
 from pipflow.language.numbers import NUMBER_WORDS
@@ -64,11 +66,7 @@ def keywords() -> dict[str, str]:
     return out
 
 
-def _quote(words: str) -> str:
-    return f"'{words}'"
-
-
-class _Sentence:
+class _Sentence(GoalRules):
     """Reads one parsed sentence into statements and rules."""
 
     def __init__(self, lexed: Lexed, lex: Lexicon, robots: RobotSelector, memory: dict | None = None):
@@ -124,7 +122,7 @@ class _Sentence:
         products = self.index.by_kind["product"]
         if len(products) == 1:
             return products[0]
-        raise TranslationError(f"{_quote(words)} does not say which product "
+        raise TranslationError(f"{quote(words)} does not say which product "
                                f"(candidates: {self.index.candidates('product')})")
 
     def nps(self, items: Tree) -> list[dict]:
@@ -197,15 +195,15 @@ class _Sentence:
             return out({"at_least": nums[0] + 1})
         if kind == "np_below":
             if nums[0] == 0:
-                raise TranslationError(f"{_quote(words)}: fewer than 0 units is impossible")
+                raise TranslationError(f"{quote(words)}: fewer than 0 units is impossible")
             return out({"at_most": nums[0] - 1})
         if kind == "np_between":
             lo, hi = nums[0], nums[1]
             if lo > hi:
-                raise TranslationError(f"{_quote(words)}: the lower bound {lo} is above the upper bound {hi}")
+                raise TranslationError(f"{quote(words)}: the lower bound {lo} is above the upper bound {hi}")
             return out({"at_least": lo, "at_most": hi})
         if kind == "np_vague":
-            raise TranslationError(f"{_quote(words)} is a bound, not a count: it is approximate, and "
+            raise TranslationError(f"{quote(words)} is a bound, not a count: it is approximate, and "
                                    f"the goal needs an exact count or a firm bound ('at least 5', "
                                    f"'at most 5', 'between 3 and 5')")
         if kind == "np_each_more":
@@ -235,7 +233,7 @@ class _Sentence:
             return out({"as_many_as": place}, None)
         if kind == "np_rest":
             return out({"rest": True})
-        raise TranslationError(f"{_quote(words)}: cannot read this amount")
+        raise TranslationError(f"{quote(words)}: cannot read this amount")
 
     # -- places -----------------------------------------------------------------------------
     def place_list(self, node: Tree) -> list[str]:
@@ -248,12 +246,12 @@ class _Sentence:
             elif c.data == "place_word":
                 shelves = self.class_places(c)
                 if len(shelves) != 1:
-                    raise TranslationError(f"{_quote(self.words(c))} does not say which shelf "
+                    raise TranslationError(f"{quote(self.words(c))} does not say which shelf "
                                            f"(candidates: {self.index.candidates('shelf')})")
                 out.append(shelves[0])
             elif c.data == "place_it":
                 if not self.last_places:
-                    raise TranslationError(f"{_quote(self.words(c))}: no place named before it "
+                    raise TranslationError(f"{quote(self.words(c))}: no place named before it "
                                            f"(candidates: {self.index.candidates('shelf')})")
                 out.extend(self.last_places)
             elif c.data == "place_all":
@@ -266,7 +264,7 @@ class _Sentence:
                 n = int(self.toks(c, "NUM")[0].value)
                 every = self.class_places(c)
                 if n != len(every):
-                    raise TranslationError(f"{_quote(self.words(c))}: this world has {len(every)} places, not {n}")
+                    raise TranslationError(f"{quote(self.words(c))}: this world has {len(every)} places, not {n}")
                 out.extend(every)
                 self.distributive = True
             elif c.data == "place_each":
@@ -312,7 +310,7 @@ class _Sentence:
         if len(places) > 1 and mode != "each" and not all(
                 "none" in np["amount"] for np in nps):
             raise TranslationError(
-                f"{_quote(words)}: the command does not say whether each of {', '.join(places)} "
+                f"{quote(words)}: the command does not say whether each of {', '.join(places)} "
                 f"gets these counts or they share them (say 'each', 'respectively' or 'evenly between')")
         for np in nps:
             if add and np["amount"].get("none"):
@@ -320,7 +318,7 @@ class _Sentence:
                 # read as "P holds no lids", emptying P: a misreading)
                 items = np["items"] or ({"names": list(self.last_item)} if self.last_item else None)
                 if items is None:
-                    raise TranslationError(f"{_quote(np['words'])}: cannot tell which product")
+                    raise TranslationError(f"{quote(np['words'])}: cannot tell which product")
                 self.statements.append({"op": "keep", "places": {"names": places}, "items": items,
                                         "inflow_only": False, "words": np["words"]})
                 continue
@@ -349,7 +347,7 @@ class _Sentence:
             return self._rest(places, np)
         if self.pending_source and add and key in ("count", "more", "all", "all_held"):
             if np["items"] is None and not self.last_item:
-                raise TranslationError(f"{_quote(np['words'])}: cannot tell which product")
+                raise TranslationError(f"{quote(np['words'])}: cannot tell which product")
             items = np["items"] or {"names": list(self.last_item or [])}
             n = {"count": a[key]} if key in ("count", "more") else a
             return {"op": "transfer", "items": items, "amount": n, "from": {"names": self.pending_source},
@@ -360,7 +358,7 @@ class _Sentence:
                     "to": {"names": places}, "words": np["words"]}
         if np["items"] is None:
             if not self.last_item:
-                raise TranslationError(f"{_quote(np['words'])}: cannot tell which product this count "
+                raise TranslationError(f"{quote(np['words'])}: cannot tell which product this count "
                                        f"is for (candidates: {self.index.candidates('product')})")
             np = {**np, "items": {"names": list(self.last_item)}}
         if add and key == "count":
@@ -370,7 +368,7 @@ class _Sentence:
             # least 2", already met where P holds 3: a misreading)
             a, key = {"at_least_more": a["at_least"]}, "at_least_more"
         elif add and set(a) & {"at_most", "between"}:
-            raise TranslationError(f"{_quote(np['words'])}: a bound on how many to bring is not a count the "
+            raise TranslationError(f"{quote(np['words'])}: a bound on how many to bring is not a count the "
                                    f"place ends with; say it so ('P should have at most N')")
         if key in CHANGE_AMOUNTS:
             op = "change"
@@ -404,477 +402,6 @@ class _Sentence:
             np, source = self.pitem(pit[0], words)
             return [np], source
         return nps, self.place_list(self.sub(self.sub(node, "src")[0], "places")[0])
-    def goal(self, node: Tree) -> None:
-        kind = node.data
-        words = self.words(node)
-        items = self.sub(node, "items")
-        nps = self.nps(items[0]) if items else []
-        locs = [c for c in node.children if isinstance(c, Tree) and c.data in ("loc", "loc_each", "loc_resp")]
-        plist = self.sub(node, "places")
-        each = bool(self.sub(node, "each") or self.sub(node, "both")) or any(
-            isinstance(c, Token) and c.value in ("each", "both") for c in node.children)
-        if kind in ("g_set", "g_loc_set", "g_set_only"):
-            if not locs:
-                shown = ", ".join(n["words"] for n in nps)
-                raise TranslationError(f"{_quote(shown)}: the command does not say which shelf "
-                                       f"(candidates: {self.index.candidates('shelf')})")
-            places, mode = self.loc(locs[0])
-            if any(isinstance(c, Token) and str(c.value).lower() == "each" for c in node.children):
-                mode = "each"  # "Put 2 springs each on rack B and rack E"
-            # "Add 2 lids to A, 1 to B": a part with no verb of its own shares the add verb before it
-            # (it was read as B's final count: a misreading)
-            bare = len(node.children) == 2 and kind == "g_set"
-            if bare and not self.last_add:
-                self._gap_after_more(nps, places)
-            self.put(places, mode, nps, words, add=bare and self.last_add)
-            if kind == "g_set_only":
-                self.statements.append({"op": "nothing_else", "places": {"names": places},
-                                        "words": "nothing else"})
-            return
-        if kind == "g_place_set":
-            places = self.place_list(plist[0])
-            for ap in self.sub(node, "place_appos"):
-                self.apposition(places, self.nps(self.sub(ap, "items")[0]), self.words(ap))
-            self._receive_is_clear(node, places, nps, words)
-            self.put(places, "each" if each else "one", nps, words)
-            return
-        if kind == "g_place_set_resp":
-            self.respectively(self.place_list(plist[0]), nps, words, False)
-            return
-        if kind == "g_place_set_one":
-            places = self.place_list(plist[0])
-            num = next(int(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "NUM"))
-            head = self.sub(node, "ihead")[0]
-            self.put(places, "one", [{"items": {"names": [self.ihead(head, words)]}, "amount": {"count": num},
-                                      "words": words}], words)
-            return
-        if kind == "g_item_first":
-            pp = self.sub(node, "pitem_plain")  # "bring the apron's seat belts down to 3"
-            head = self.ihead(self.sub(pp[0] if pp else node, "ihead")[0], words)
-            self.last_item = [head]
-            num = next(int(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "NUM"))
-            if pp:
-                place = [str(self.toks(pp[0], "PLACE")[0].value)]
-                self.put(place, "one", [{"items": {"names": [head]}, "amount": {"count": num}, "words": words}], words)
-                return
-            if not locs:
-                raise TranslationError(f"{_quote(words)}: the command does not say which shelf "
-                                       f"(candidates: {self.index.candidates('shelf')})")
-            places, mode = self.loc(locs[0])
-            self.put(places, mode, [{"items": {"names": [head]}, "amount": {"count": num}, "words": words}], words)
-            return
-        if kind == "g_add":
-            if locs:
-                places, mode = self.loc(locs[0])
-            else:
-                places, mode = self.place_list(plist[0]), "each" if each else "one"
-            self.put(places, mode, nps, words, add=True)
-            return
-        if kind == "g_equal_poss":
-            # "Make rack E's gear count equal to rack D's (valves)": D's count now, of its item
-            poss = self.sub(node, "posplace")
-            heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
-            place, other = str(poss[0].children[0].value), str(poss[1].children[0].value)
-            amount = {"as_many_as": other} if len(heads) == 1 or heads[1] == heads[0] else \
-                {"as_many_as": other, "of": heads[1]}
-            self.last_item = heads[:1]
-            self.statements.append({"op": "set", "places": {"names": [place]}, "items": {"names": heads[:1]},
-                                    "amount": amount, "words": words})
-            return
-        if kind == "g_as_many_there":
-            # "Put as many valves on rack E as there are on rack A (and rack B together)"
-            head = self.ihead(self.sub(node, "ihead")[0], words)
-            places = self.loc(locs[0])[0]
-            others = [str(t.value) for t in node.children if isinstance(t, Token) and t.type == "PLACE"]
-            if len(others) > 1 and not self.sub(node, "together"):
-                raise TranslationError(f"{_quote(words)}: as many as each of {', '.join(others)} has, or as "
-                                       f"all of them together? (say 'together')")
-            amount = {"as_many_as": others[0], **({"together_with": others[1:]} if others[1:] else {})}
-            self.put(places, "one", [{"items": {"names": [head]}, "amount": amount, "words": words}], words)
-            return
-        if kind == "g_keep_its_elided":
-            # "Empty hangar B but leave its seat belts": the emptying of that place spares them
-            places = self._last_places(words)
-            heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
-            for st in self.statements:
-                if st["op"] == "empty" and st["places"]["names"] == places and st["items"].get("all"):
-                    st["items"] = {"all": True, "except": list(dict.fromkeys((st["items"].get("except") or []) + heads))}
-            self.statements.append({"op": "keep", "places": {"names": places}, "items": {"names": heads},
-                                    "inflow_only": False, "words": words})
-            return
-        if kind == "g_light_add":
-            # "Rack east is light on flour bags, add three": the count is more of that item there
-            head = self.ihead(self.sub(node, "ihead")[0], words)
-            n = int(self.toks(node, "NUM")[0].value)
-            self.last_item = [head]
-            self.put(self.place_list(plist[0]), "one", [{"items": {"names": [head]}, "amount": {"more": n},
-                                                          "words": words}], words)
-            return
-        if kind == "g_poss_bound":
-            # "Keep rack east's lids between 2 and 6", "hold P's X at least 3"
-            pp = self.sub(node, "pitem_plain")[0]
-            place = [str(self.toks(pp, "PLACE")[0].value)]
-            head = self.ihead(self.sub(pp, "ihead")[0], words)
-            nums = [int(t.value) for t in node.children if isinstance(t, Token) and t.type == "NUM"]
-            if len(nums) == 2:
-                if nums[0] > nums[1]:
-                    raise TranslationError(f"{_quote(words)}: the lower bound {nums[0]} is above the upper bound {nums[1]}")
-                amount = {"at_least": nums[0], "at_most": nums[1]}
-            else:
-                amount = {"at_least": nums[0]} if self.sub(node, "lower") else {"at_most": nums[0]}
-            self.put(place, "one", [{"items": {"names": [head]}, "amount": amount, "words": words}], words)
-            return
-        if kind == "g_match":
-            # "Rack east should match silo 2's flour bag count": that place's count now
-            head = self.ihead(self.sub(node, "ihead")[0], words)
-            other = str(self.sub(node, "posplace")[0].children[0].value)
-            self.last_item = [head]
-            self.put(self.place_list(plist[0]), "one", [{"items": {"names": [head]}, "amount": {"as_many_as": other},
-                                                          "words": words}], words)
-            return
-        if kind == "g_give":
-            # "Dispatch, with its 8 lids, should give 3 of them to rack east": a move from the subject
-            source = self.place_list(plist[0])
-            for ap in self.sub(node, "place_appos"):
-                self.apposition(source, self.nps(self.sub(ap, "items")[0]), self.words(ap))
-            nps = self.nps(items[0])
-            for np in nps:
-                self.statements.append(self._transfer_statement(np, source, self.place_list(plist[1]), words))
-            return
-        if kind == "g_could_use":
-            # "P could use / could do with N more X" is a change; without "more" it could be the
-            # count P should end with or the count to bring: refused, not guessed
-            for np in nps:
-                if set(np["amount"]) != {"more"}:
-                    raise TranslationError(f"{_quote(words)}: 'could use' does not say whether "
-                                           f"{np['words']} is the count to end with or to add "
-                                           f"(say 'N more' or 'should have N')")
-            self.put(self.place_list(plist[0]), "each" if each else "one", nps, words)
-            return
-        if kind == "g_add_place":
-            places = self.place_list(plist[0])
-            self.put(places, "one", nps, words, add=True)
-            return
-        if kind == "g_transfer_with":
-            robots_node = self.sub(node, "robots")[0]
-            sel = self.robots.read(robots_node, self.words(robots_node))
-            self.transfer(node, nps, words)
-            base = {"mode": "only", "robots": sel, "words": words}
-            self.bind.append(base)
-            self.rules.append(base)
-            return
-        if kind in ("g_transfer", "g_transfer_except"):
-            self.transfer(node, nps, words)
-            return
-        if kind == "g_remove":
-            source = self.place_list(plist[0])
-            for np in nps:
-                self.statements.append(self._transfer_statement(np, source, None, words))
-            return
-        if kind == "g_mult":
-            verb = self.first_word(node)
-            head = self.ihead(self.sub(node, "ihead")[0], words)
-            poss = self.sub(node, "posplace")  # "halve the loading bay's bearings"
-            places = [str(poss[0].children[0].value)] if poss else self.loc(locs[0])[0]
-            amount = {"fraction": [1, 2]} if verb == "halve" else {"times": {"double": 2, "triple": 3, "quadruple": 4}[verb]}
-            self.put(places, "each", [{"items": {"names": [head]}, "amount": amount, "words": words}], words)
-            return
-        if kind == "g_keep_part":
-            places = self.place_list(plist[0])
-            for np in nps:
-                if "fraction" in np["amount"]:
-                    self.statements.append(self._goal_statement(places, np, False))
-                else:
-                    self.statements.append(self._goal_statement(places, np, False))
-            return
-        if kind == "g_empty":
-            places = self.place_list(plist[0])
-            self.statements.append({"op": "empty", "places": {"names": places}, "items": {"all": True},
-                                    "words": words})
-            return
-        if kind == "g_empty_item":
-            pp = self.sub(node, "pitem_plain")  # "empty out the parts cage's fuses"
-            places = [str(self.toks(pp[0], "PLACE")[0].value)] if pp else self.place_list(plist[0])
-            head = self.ihead(self.sub(pp[0] if pp else node, "ihead")[0], words)
-            self.statements.append({"op": "empty", "places": {"names": places}, "items": {"names": [head]},
-                                    "words": words})
-            return
-        if kind in ("g_fill", "g_fill_elided"):
-            if kind == "g_fill":
-                places = self.place_list(plist[0])
-            else:
-                places = self._last_places(words)
-            head = self.ihead(self.sub(node, "ihead")[0], words)
-            only = "only" in words.lower().split() or "nothing but" in words.lower()
-            for p in places:
-                self.statements.append({"op": "fill", "places": {"names": [p]}, "items": {"names": [head]},
-                                        "only": only, "words": words})
-            return
-        if kind == "g_nothing_else":
-            places = self.loc(locs[0])[0] if locs else self._last_places(words)
-            self.statements.append({"op": "nothing_else", "places": {"names": places}, "words": words})
-            return
-        if kind == "g_no_inflow":
-            # "Clear shelf2, but nothing goes to shelf4": shelf4 keeps what it has of what moves
-            places, _ = self.loc(locs[0])
-            heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
-            moved: list[str] = []
-            everything = False
-            for st in self.statements:
-                sel = st.get("items") or {}
-                if "names" in sel:
-                    moved += sel["names"]
-                else:
-                    everything = True
-            if heads:
-                sel = {"names": heads}
-            elif moved and not everything:
-                sel = {"names": list(dict.fromkeys(moved))}
-            else:
-                sel = {"all": True}
-            self.statements.append({"op": "keep", "places": {"names": places}, "items": sel,
-                                    "inflow_only": False, "words": words})
-            return
-        if kind == "g_keep":
-            poss = self.sub(node, "posplace")
-            heads = self.sub(node, "ihead")
-            if poss:
-                places = [str(poss[0].children[0].value)]
-            elif locs:
-                places = self.loc(locs[0])[0]
-            else:
-                places = self.place_list(plist[0])
-            sel = {"names": [self.ihead(heads[0], words)]} if heads else {"all": True}
-            self.statements.append({"op": "keep", "places": {"names": places}, "items": sel,
-                                    "inflow_only": False, "words": words})
-            return
-        if kind in ("g_swap", "g_swap_items", "g_swap_poss"):
-            self.swap(node, words)
-            return
-        if kind == "g_split":
-            places = self.place_list(plist[0])
-            for b in self.sub(node, "bare"):
-                nps = [{"items": {"names": [self.ihead(h, words)]}, "amount": {"all": True}, "words": words}
-                       for h in self.sub(b, "ihead")]
-            if not nps:
-                raise TranslationError(f"{_quote(words)}: the command does not say what to share")
-            for np in nps:
-                a = np["amount"]
-                if not ({"count", "all"} & set(a)):
-                    raise TranslationError(f"{_quote(np['words'])}: cannot share this amount")
-                items = np["items"] if np["items"] is not None else {"names": list(self.last_item or [])}
-                stock = self.lex.world.get("stock") or {}
-                held = [p for p in places for i in items.get("names") or [] if int((stock.get(p) or {}).get(i, 0) or 0)]
-                if "count" in a and held:
-                    # "Split 4 X between A and B" with no source: does each end with 2, or get 2 more?
-                    # The same only where none holds X now (each was set to 2: a misreading)
-                    raise TranslationError(f"{_quote(words)}: cannot tell whether each place ends with its share "
-                                           f"or gets it on top of what it holds ({', '.join(dict.fromkeys(held))} "
-                                           f"hold some now); say where the units come from")
-                self.statements.append({"op": "distribute", "places": {"names": places}, "items": items,
-                                        "amount": a, "words": words})
-            return
-        if kind == "g_each":
-            places, mode = self.loc(locs[0])
-            self.put(places, "each", [{"items": {"all": True}, "amount": {"count": 1}, "words": words}], words)
-            return
-        if self.sub(node, "bare") and kind != "g_split":
-            nps = self.bare_nps(node, words)
-        if kind == "g_transfer_src":
-            srcs = self.sub(node, "src")
-            pit = [c for c in node.children if isinstance(c, Tree) and c.data.startswith("pi_")]
-            if pit:
-                np, source = self.pitem(pit[0], words)
-                nps = [np]
-            elif srcs:
-                source = self.place_list(self.sub(srcs[0], "places")[0])
-            else:  # "put the 6 springs from rack C on rack E"
-                source = self.place_list(plist[0])
-            dst = self.loc(locs[0])[0] if locs else self.place_list(plist[-1]) if plist else []
-            for np in nps:
-                self.statements.append(self._transfer_statement(np, source, dst, words))
-            self.last_source = source
-            return
-        if kind == "g_receive":
-            dst, source = self.place_list(plist[0]), self.place_list(plist[1])
-            for np in nps:
-                if "more" in np["amount"]:  # "Overflow needs 4 more boxes from dock 1"
-                    np = {**np, "amount": {"count": np["amount"]["more"]}}
-                self.statements.append(self._transfer_statement(np, source, dst, words))
-            return
-        if kind == "g_remove_src":
-            nps, source = self._items_and_source(node, nps, words)
-            for np in nps:
-                st = self._transfer_statement(np, source, None, words)
-                self.statements.append(st)
-            self.last_source = source
-            return
-        if kind == "g_short":
-            # "Bay 2 is 3 crates short": it needs 3 more; any other amount is not read
-            for np in nps:
-                if set(np["amount"]) != {"count"}:
-                    raise TranslationError(f"{_quote(words)}: cannot tell how many are missing")
-                np = {**np, "amount": {"more": np["amount"]["count"]}}
-                self.statements.append(self._goal_statement(self.place_list(plist[0]), np, False))
-            return
-        if kind in ("g_too_many", "g_lose"):
-            places = self.place_list(plist[0])
-            for ap in self.sub(node, "place_appos"):  # "P, which holds 7 X, should lose 2 of them"
-                self.apposition(places, self.nps(self.sub(ap, "items")[0]), self.words(ap))
-            nps = self.nps(items[0])  # read after the apposition: "them" is what it named
-            for np in nps:
-                a = np["amount"]
-                if "count" in a:
-                    np = {**np, "amount": {"fewer": a["count"]}}
-                elif "fraction" in a:
-                    num, den = a["fraction"]
-                    np = {**np, "amount": {"fraction": [den - num, den]}}
-                else:
-                    raise TranslationError(f"{_quote(words)}: cannot tell how many to take away")
-                self.statements.append(self._goal_statement(places, np, False))
-            return
-        if kind == "g_cut":
-            pp = self.sub(node, "pitem_plain")
-            if pp:
-                places = [str(self.toks(pp[0], "PLACE")[0].value)]
-                head = self.ihead(self.sub(pp[0], "ihead")[0], words)
-            else:
-                places = self.loc(locs[0])[0]
-                head = self.ihead(self.sub(node, "ihead")[0], words)
-            fr = self.sub(node, "frac")
-            if fr:
-                den = int(self.toks(fr[0], "FRAC")[0].value)
-                num = int(self.toks(fr[0], "NUM")[0].value) if self.toks(fr[0], "NUM") else 1
-                amount = {"fraction": [den - num, den]}
-            elif any(isinstance(c, Token) and c.value == "half" for c in node.children):
-                amount = {"fraction": [1, 2]}
-            else:
-                amount = {"fewer": int(self.toks(node, "NUM")[-1].value)}
-            self.statements.append(self._goal_statement(places, {"items": {"names": [head]}, "amount": amount,
-                                                                  "words": words}, False))
-            return
-        if kind == "g_keep_its":
-            places = self.place_list(plist[0])
-            stock = self.lex.world.get("stock") or {}
-            heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
-            nums = [int(t.value) for t in self.toks(node, "NUM")]
-            if nums and len(nums) != len(heads):
-                raise TranslationError(f"{_quote(words)}: cannot tell which count goes with which item")
-            for k, h in enumerate(heads):
-                for p in places:
-                    have = int((stock.get(p) or {}).get(h, 0) or 0)
-                    if nums and nums[k] != have:
-                        raise TranslationError(f"{_quote(words)}: {p} holds {have} {h}, not {nums[k]}; "
-                                               f"cannot tell which is meant")
-            self.statements.append({"op": "keep", "places": {"names": places}, "items": {"names": heads},
-                                    "inflow_only": False, "words": words})
-            return
-        if kind == "g_place_inum":
-            places = self.place_list(plist[0])
-            nps = []
-            for inum in self.sub(node, "inum"):
-                head = self.ihead(self.sub(inum, "ihead")[0], words)
-                nps.append({"items": {"names": [head]}, "amount": {"count": int(self.toks(inum, "NUM")[0].value)},
-                            "words": self.words(inum)})
-            self.put(places, "one", nps, words)
-            return
-        if kind == "g_empty_except":
-            # "Clear out dock 1 except the pallets": the rest goes, the pallets stay as they are
-            places = self.place_list(plist[0])
-            excl = [self.ihead(h, words) for e in self.sub(node, "except_items") for h in self.sub(e, "ihead")]
-            self.statements.append({"op": "empty", "places": {"names": places}, "items": {"all": True, "except": excl},
-                                    "words": words})
-            self.statements.append({"op": "keep", "places": {"names": places}, "items": {"names": excl},
-                                    "inflow_only": False, "words": words})
-            return
-        if kind == "g_transfer_except_items":
-            source, dst = self.place_list(plist[0]), self.place_list(plist[1])
-            excl = [self.ihead(h, words) for e in self.sub(node, "except_items") for h in self.sub(e, "ihead")]
-            self.statements.append(self._transfer_statement(
-                {"items": {"all": True, "except": excl}, "amount": {"all_held": True}, "words": words}, source, dst, words))
-            return
-        if kind in ("g_none_of", "g_none_in"):  # "P mustn't have any X", "we don't want any X in P"
-            places = self.place_list(plist[0]) if kind == "g_none_of" else self.loc(locs[0])[0]
-            heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
-            self.put(places, "each", [{"items": {"names": [h]}, "amount": {"none": True}, "words": words} for h in heads],
-                     words)
-            return
-        if kind == "g_updown":
-            head = self.ihead(self.sub(node, "ihead")[0], words)
-            places = self.loc(locs[0])[0]
-            n = int(self.toks(node, "NUM")[-1].value)
-            down = any(isinstance(t, Token) and str(t.value).lower() == "down" for t in self.toks_any(node))
-            self.statements.append(self._goal_statement(
-                places, {"items": {"names": [head]}, "amount": {"fewer": n} if down else {"more": n}, "words": words},
-                False))
-            return
-        if kind in ("g_raise", "g_lower"):
-            head = self.ihead(self.sub(node, "ihead")[0], words)
-            if locs:
-                places = self.loc(locs[0])[0]
-            elif plist:
-                places = self.place_list(plist[0])
-            else:
-                places = self._last_places(words)
-            n = int(self.toks(node, "NUM")[-1].value)
-            amount = {"more": n} if kind == "g_raise" else {"fewer": n}
-            self.statements.append(self._goal_statement(places, {"items": {"names": [head]}, "amount": amount,
-                                                                  "words": words}, False))
-            return
-        if kind == "g_pronoun_dest":
-            # "Take 2 bags out of overflow and drop them at dock 1": the move gets its destination
-            places = self.loc(locs[0])[0]
-            open_moves = [st for st in self.statements if st["op"] == "transfer" and not st.get("to")]
-            for st in open_moves:
-                st["to"] = {"names": places}
-                st["words"] = f"{st['words']}, {words}"
-            if not open_moves:  # "Take 3 product1 from shelf1. Put them on shelf2."
-                for k, st in enumerate(self.prior):
-                    if st["op"] == "transfer" and not st.get("to"):
-                        self.updates[k] = {**st, "to": {"names": places}, "words": f"{st['words']}, {words}"}
-            if not open_moves and not self.updates:
-                raise TranslationError(f"{_quote(words)}: 'them' of what? nothing was taken before it")
-            return
-        if kind == "g_ceiling":
-            places = self.place_list(plist[0])
-            head = self.ihead(self.sub(node, "ihead")[0], words)
-            n = int(self.toks(node, "NUM")[0].value)
-            self.put(places, "each", [{"items": {"names": [head]}, "amount": {"at_most": n}, "words": words}], words)
-            return
-        if kind == "g_empty_into":
-            source, dst = self.place_list(plist[0]), self.place_list(plist[1])
-            self.statements.append(self._transfer_statement(
-                {"items": {"all": True, "except": []}, "amount": {"all_held": True}, "words": words}, source, dst, words))
-            # the source is emptied, like "empty P": none of any product is left or parked there
-            self.statements.append({"op": "empty", "places": {"names": source}, "items": {"all": True}, "words": words})
-            return
-        if kind == "g_floor":
-            places = self.place_list(plist[0])
-            head = self.ihead(self.sub(node, "ihead")[0], words)
-            n = int(self.toks(node, "NUM")[0].value)
-            self.put(places, "each", [{"items": {"names": [head]}, "amount": {"at_least": n}, "words": words}], words)
-            return
-        if kind == "g_keep_item":
-            head = self.ihead(self.sub(node, "ihead")[0], words)
-            places = self.loc(locs[0])[0] if locs else list(self.index.by_kind["shelf"])
-            self.statements.append({"op": "keep", "places": {"names": places}, "items": {"names": [head]},
-                                    "inflow_only": False, "words": words})
-            return
-        if kind == "g_noop":
-            self.place_list(plist[0])  # "Don't empty rack B, just take 2 gears off it": "it"
-            return
-        if kind in ("g_swap_two", "g_swap_subj"):
-            self.swap(node, words)
-            return
-        if kind == "g_split_src":
-            nps, source = self._items_and_source(node, nps, words)
-            places = self.place_list(plist[-1])
-            for np in nps:
-                items = np["items"] if np["items"] is not None else {"names": list(self.last_item or [])}
-                self.statements.append({"op": "distribute", "places": {"names": places}, "items": items,
-                                        "amount": np["amount"], "from": {"names": source}, "words": words})
-            return
-        raise TranslationError(f"{_quote(words)}: cannot read this statement")
 
     def _receive_is_clear(self, node: Tree, places: list[str], nps: list[dict], words: str) -> None:
         """ "P gets / receives N X" is the count P ends with or the count delivered to it: the same
@@ -898,7 +425,7 @@ class _Sentence:
                 have = int((stock.get(p) or {}).get(item, 0) or 0)
                 if have:
                     raise TranslationError(
-                        f"{_quote(words)}: 'gets {count_words}' could be the count {p} ends with or "
+                        f"{quote(words)}: 'gets {count_words}' could be the count {p} ends with or "
                         f"the count it receives ({p} holds {have} {item} now); say 'should have' or 'more'")
 
     def bare_nps(self, node: Tree, words: str) -> list[dict]:
@@ -923,7 +450,7 @@ class _Sentence:
         elif self.last_places:
             source = list(self.last_places)  # "its valves": of the place just named
         else:
-            raise TranslationError(f"{_quote(words)}: 'its' of which place?")
+            raise TranslationError(f"{quote(words)}: 'its' of which place?")
         head = self.ihead(self.sub(node, "ihead")[0], words)
         self.last_item = [head]
         appos = self.sub(node, "appos")
@@ -958,7 +485,7 @@ class _Sentence:
             items = (np["items"] or prev.get("items") or {}).get("names") or []
             if set(np["amount"]) == {"count"} and any(
                     int((stock.get(p) or {}).get(i, 0) or 0) for p in places for i in items):
-                raise TranslationError(f"{_quote(np['words'])} after {prev['words']!r}: cannot tell whether it is "
+                raise TranslationError(f"{quote(np['words'])} after {prev['words']!r}: cannot tell whether it is "
                                        f"{np['words']} more or {np['words']} in all (say 'more' or 'in all')")
 
     def _shared_destination(self) -> None:
@@ -974,7 +501,7 @@ class _Sentence:
             if not first or not (first[0].isdigit() or first[0].lower() in NUMBER_WORDS | {"another", "all"}):
                 continue  # the second move has its own verb: two statements
             if (st.get("words") or "").split()[0].lower() not in MOVE_VERBS:
-                raise TranslationError(f"{_quote(st['words'])} and {_quote(nxt['words'])}: cannot tell whether "
+                raise TranslationError(f"{quote(st['words'])} and {quote(nxt['words'])}: cannot tell whether "
                                        f"the first goes to {', '.join(nxt['to']['names'])} too")
             st["to"] = {"names": list(nxt["to"]["names"])}
 
@@ -985,7 +512,7 @@ class _Sentence:
         read as a final count for B before: a misreading."""
         amount = taken["amount"]
         if set(amount) != {"count"}:
-            raise TranslationError(f"{_quote(np['words'])} after {taken['words']!r}: cannot tell how the units "
+            raise TranslationError(f"{quote(np['words'])} after {taken['words']!r}: cannot tell how the units "
                                    f"taken are shared")
         if self.budget is None or self.budget["st"] is not taken:
             at = next(k for k, st in enumerate(self.statements) if st is taken)
@@ -994,7 +521,7 @@ class _Sentence:
         left = self.budget["left"]
         n = left if key == "rest" else int(np["amount"][key])
         if n > left or (key == "rest" and n == 0):
-            raise TranslationError(f"{_quote(np['words'])}: only {left} of {taken['words']!r} are left to share")
+            raise TranslationError(f"{quote(np['words'])}: only {left} of {taken['words']!r} are left to share")
         self.budget["left"] = left - n
         return {"op": "transfer", "items": taken["items"], "amount": {"count": n}, "from": taken["from"],
                 "to": {"names": places}, "words": np["words"]}
@@ -1017,17 +544,17 @@ class _Sentence:
         stock = self.lex.world.get("stock") or {}
         for np in nps:
             if "count" not in np["amount"] or not np["items"] or "names" not in np["items"]:
-                raise TranslationError(f"{_quote(words)}: cannot check this against the world")
+                raise TranslationError(f"{quote(words)}: cannot check this against the world")
             for p in places:
                 for i in np["items"]["names"]:
                     have = int((stock.get(p) or {}).get(i, 0) or 0)
                     if have != np["amount"]["count"]:
-                        raise TranslationError(f"{_quote(words)}: {p} holds {have} {i}, not "
+                        raise TranslationError(f"{quote(words)}: {p} holds {have} {i}, not "
                                                f"{np['amount']['count']}; cannot tell which is meant")
 
     def _last_places(self, words: str) -> list[str]:
         if not self.last_places:
-            raise TranslationError(f"{_quote(words)}: the command does not say which shelf "
+            raise TranslationError(f"{quote(words)}: the command does not say which shelf "
                                    f"(candidates: {self.index.candidates('shelf')})")
         return list(self.last_places)
 
@@ -1036,11 +563,11 @@ class _Sentence:
         a = np["amount"]
         if np["items"] is None:
             if not self.last_item:
-                raise TranslationError(f"{_quote(np['words'])}: cannot tell which product "
+                raise TranslationError(f"{quote(np['words'])}: cannot tell which product "
                                        f"(candidates: {self.index.candidates('product')})")
             np = {**np, "items": {"names": list(self.last_item)}}
         if set(a) & BOUND_AMOUNTS or set(a) & {"more", "fewer", "times", "as_many_as", "as_many_here"}:
-            raise TranslationError(f"{_quote(np['words'])}: cannot tell how many units this moves")
+            raise TranslationError(f"{quote(np['words'])}: cannot tell how many units this moves")
         src: dict = {"names": source} if source else {"all": True, "except": list(exclude or [])}
         st = {"op": "transfer", "items": np["items"], "amount": a, "from": src,
               "to": {"names": target} if target else None, "words": words}
@@ -1071,10 +598,10 @@ class _Sentence:
         if exc:
             src = None
         if dst is None or (src is None and not exc):
-            raise TranslationError(f"{_quote(words)}: cannot tell where from and where to")
+            raise TranslationError(f"{quote(words)}: cannot tell where from and where to")
         for np in nps:
             if exc and not ({"all", "all_held", "fraction"} & set(np["amount"])):
-                raise TranslationError(f"{_quote(words)}: 'except' needs all of a product "
+                raise TranslationError(f"{quote(words)}: 'except' needs all of a product "
                                        f"('every keg ... except the ones on staging')")
             self.statements.append(self._transfer_statement(np, src, dst, words, exclude))
 
@@ -1094,7 +621,7 @@ class _Sentence:
                 heads += [self.ihead(h, words) for h in self.sub(c, "ihead")]
         places = list(dict.fromkeys(places))
         if len(places) != 2:
-            raise TranslationError(f"{_quote(words)}: a swap needs exactly two places "
+            raise TranslationError(f"{quote(words)}: a swap needs exactly two places "
                                    f"({len(places)} named)")
         sel = {"names": list(dict.fromkeys(heads))} if heads else {"all": True}
         self.statements.append({"op": "swap", "places": {"names": places}, "items": sel, "words": words})
@@ -1107,10 +634,10 @@ class _Sentence:
             places = self.place_list(self.sub(node, "places")[0])
             last = [s for s in self.statements if "places" in s] or [s for s in self.prior_last if "places" in s]
             if not last:
-                raise TranslationError(f"{_quote(words)}: cannot tell what to repeat there")
+                raise TranslationError(f"{quote(words)}: cannot tell what to repeat there")
             prev = last[-1]
             if prev["op"] not in ("set", "change", "bound", "empty", "fill", "keep", "distribute"):
-                raise TranslationError(f"{_quote(words)}: cannot tell what to repeat there")
+                raise TranslationError(f"{quote(words)}: cannot tell what to repeat there")
             group = [s for s in self.statements or self.prior_last if s.get("words") == prev.get("words")]
             for s in group:
                 if s["words"] in self.received and set(s.get("amount") or {}) == {"count"}:
@@ -1151,14 +678,14 @@ class _Sentence:
                 self.pending_source = source  # "From shelf 4, move 5 product4 to shelf 1"
                 return
             if not changed:
-                raise TranslationError(f"{_quote(words)}: nothing before it to take from there")
+                raise TranslationError(f"{quote(words)}: nothing before it to take from there")
             return
         if kind == "t_gap":
             # "Rack A should have 9 widgets and rack B 6 gears", "..., staging 8": the verb is shared
             places = self.place_list(self.sub(node, "places")[0])
             prev = [st for st in self.statements if st["op"] in ("set", "change", "bound")]
             if not prev:
-                raise TranslationError(f"{_quote(words)}: nothing said before it that it continues")
+                raise TranslationError(f"{quote(words)}: nothing said before it that it continues")
             # the verb is what is shared: "add 3 to A, B 2" adds, "A should have ..., B 2" sets
             if not self.last_add:
                 self._gap_after_more(self.nps(self.sub(node, "items")[0]), places)
@@ -1170,7 +697,7 @@ class _Sentence:
             places = self.place_list(self.sub(node, "places")[0])
             moved = [n for st in self.statements for n in (st.get("items") or {}).get("names", [])]
             if not moved:
-                raise TranslationError(f"{_quote(words)}: not what? nothing is moved before it")
+                raise TranslationError(f"{quote(words)}: not what? nothing is moved before it")
             self.statements.append({"op": "keep", "places": {"names": places}, "items": {"names": list(dict.fromkeys(moved))},
                                     "inflow_only": False, "words": words})
             return
@@ -1180,7 +707,7 @@ class _Sentence:
             # "Move 2 X from A to B, and 1 Y the other way": the move before, from B to A
             prev = self.statements[-1] if self.statements else None
             if prev is None or prev["op"] != "transfer" or not prev.get("to") or "names" not in prev["from"]:
-                raise TranslationError(f"{_quote(words)}: 'the other way' of what? no move from one place "
+                raise TranslationError(f"{quote(words)}: 'the other way' of what? no move from one place "
                                        f"to another comes before it")
             back_from, back_to = list(prev["to"]["names"]), list(prev["from"]["names"])
             for np in self.nps(self.sub(node, "items")[0]):
@@ -1190,13 +717,13 @@ class _Sentence:
             # "Rack B gets 3 widgets from rack C and 2 gears from rack A": the same destination
             prev = self.statements[-1] if self.statements else None
             if prev is None or prev["op"] != "transfer":
-                raise TranslationError(f"{_quote(words)}: cannot tell where these go")
+                raise TranslationError(f"{quote(words)}: cannot tell where these go")
             source = self.place_list(self.sub(node, "places")[0])
             for np in self.nps(self.sub(node, "items")[0]):
                 if prev.get("to") is None and np["amount"] == {"count": 1} and np["words"].lower() == "another" \
                         and prev["amount"] != {"count": 1}:
                     # "take 3 off A and another off B": one more, or another 3? not guessed
-                    raise TranslationError(f"{_quote(words)}: 'another' after {prev['words']!r} does not "
+                    raise TranslationError(f"{quote(words)}: 'another' after {prev['words']!r} does not "
                                            f"say how many (one, or as many again?)")
                 # "Take 1 bolt off A and 2 off B" repeats the removal; after a move, its destination
                 target = prev["to"]["names"] if prev.get("to") else None
@@ -1214,16 +741,16 @@ class _Sentence:
             heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
             prev = self.statements[-1] if self.statements else None
             if prev is None:
-                raise TranslationError(f"{_quote(words)}: nothing said before it that it excepts")
+                raise TranslationError(f"{quote(words)}: nothing said before it that it excepts")
             places = (prev.get("from") or prev.get("places") or {}).get("names")
             if not places:
-                raise TranslationError(f"{_quote(words)}: cannot tell where they stay")
+                raise TranslationError(f"{quote(words)}: cannot tell where they stay")
             self.statements.append({"op": "keep", "places": {"names": places}, "items": {"names": heads},
                                     "inflow_only": False, "words": words})
             return
         if kind == "t_resp":
-            raise TranslationError(f"{_quote(words)}: 'respectively' must follow the places it pairs")
-        raise TranslationError(f"{_quote(words)}: cannot read this")
+            raise TranslationError(f"{quote(words)}: 'respectively' must follow the places it pairs")
+        raise TranslationError(f"{quote(words)}: cannot read this")
 
     # -- rules ------------------------------------------------------------------------------
     def rule(self, node: Tree) -> None:
@@ -1238,10 +765,10 @@ class _Sentence:
             return
         robots_node = self.sub(node, "robots")
         if not robots_node:
-            raise TranslationError(f"{_quote(words)}: names no robot")
+            raise TranslationError(f"{quote(words)}: names no robot")
         sel = self.robots.read(robots_node[0], self.words(robots_node[0]))
         if kind == "rule_permission":
-            raise TranslationError(f"cannot tell whether {_quote(words)} requires or forbids the robots "
+            raise TranslationError(f"cannot tell whether {quote(words)} requires or forbids the robots "
                                    f"(a permission restricts nothing: say 'only ...' or '... must not ...')")
         mode = {"rule_never": "never", "rule_state": "never", "rule_away": "never", "rule_only": "only",
                 "rule_away_items": "never", "rule_never_from": "never", "rule_do_it": "only",
@@ -1368,7 +895,7 @@ class _Sentence:
             self.bind.append(base)
             self.rules.append(base)
         else:
-            raise TranslationError(f"{_quote(self.words(node))}: cannot read this")
+            raise TranslationError(f"{quote(self.words(node))}: cannot read this")
 
     def _rule_for(self, sel: dict, mode: str, statements: list[dict], words: str) -> None:
         base = {"mode": mode, "robots": sel, "words": words}
