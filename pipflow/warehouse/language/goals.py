@@ -2,15 +2,14 @@
 
 Each goal construction of the grammar (:mod:`pipflow.warehouse.language.grammar`) has an alias
 ``g_...``: ``g_set`` ("put 4 X on P"), ``g_transfer_src`` ("move 3 X from P to Q"), ``g_swap``,
-``g_empty_except``, ... :class:`GoalRules` is a lark :class:`~lark.visitors.Interpreter`: a goal
-clause's tree goes to the method its rule names, as pyperplan's tree visitor does, and the method
-turns it into statements of the order (:mod:`pipflow.warehouse.language.order`). Nothing here
-counts against the stock: relative amounts, "the rest" and ellipsis stay symbolic for the
-resolver.
+``g_empty_except``, ... The sentence reader (:mod:`pipflow.warehouse.language.parser`) is a lark
+:class:`~lark.visitors.Interpreter` that inherits :class:`GoalRules`: a goal clause's tree goes to
+the method its rule names, as pyperplan's tree visitor does, and the method turns it into
+statements of the order (:mod:`pipflow.warehouse.language.order`). Nothing here counts against
+the stock: relative amounts, "the rest" and ellipsis stay symbolic for the resolver.
 
-The methods are part of the sentence reader (:mod:`pipflow.warehouse.language.parser`, whose
-reader class inherits them) and share its state: the statements and rules read so far, the item
-and places an ellipsis refers to, a source said before its moves. Each starts from the clause's
+The methods share the reader's state: the statements and rules read so far, the item and places
+an ellipsis refers to, a source said before its moves. Each starts from the clause's
 parts (:class:`ClauseParts`), read in the same order for every rule, because reading an item
 phrase may refuse the command or remember its item for the next clause. The rules that a bare
 item may fill (``bare=True``: "take the drums out of bay 2" moves all of them) read it there too.
@@ -18,10 +17,8 @@ item may fill (``bare=True``: "take the drums out of bay 2" moves all of them) r
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
 
 from lark import Token, Tree
-from lark.visitors import Interpreter
 
 from pipflow.errors import TranslationError
 
@@ -46,23 +43,9 @@ class ClauseParts:
     each: bool
 
 
-class GoalRules(Interpreter):
-    """The goal rules, one method each (several aliases of one construction share a method)."""
-
-    def goal(self, node: Tree) -> None:
-        """Read one goal clause into statements (and rules), by its rule."""
-        self.visit(node)
-
-    def __getattr__(self, name: str) -> Any:
-        """lark's Interpreter answers every missing name with ``__default__``; here only a goal
-        rule's name does (any other missing attribute is a bug, and says so)."""
-        if name.startswith("g_"):
-            return self.__default__
-        raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
-
-    def __default__(self, node: Tree) -> None:
-        """A goal rule with no method: refused with its words, never half-read."""
-        raise TranslationError(f"{quote(self.clause_parts(node).words)}: cannot read this statement")
+class GoalRules:
+    """The goal rules, one method each (several aliases of one construction share a method),
+    mixed into the sentence reader, whose state they use."""
 
     def clause_parts(self, node: Tree, bare: bool = False) -> ClauseParts:
         """The clause's parts (see :class:`ClauseParts`); ``bare``: an item said without a count

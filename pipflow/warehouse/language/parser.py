@@ -20,10 +20,10 @@ A word the grammar cannot place is a :class:`TranslationError` that quotes it.
 from __future__ import annotations
 
 import functools
-from typing import Any
+from typing import Any, Callable
 
 from lark import Lark, Token, Tree
-from lark.visitors import CollapseAmbiguities
+from lark.visitors import CollapseAmbiguities, Interpreter
 from lark.exceptions import UnexpectedInput, UnexpectedToken
 
 from pipflow.errors import PipflowError, TranslationError
@@ -34,6 +34,7 @@ from pipflow.warehouse.language.lexicon import Lexed, Lexicon
 from pipflow.language.numbers import NUMBER_WORDS
 from pipflow.warehouse.language.resolver import resolve
 from pipflow.warehouse.language.robots import RobotSelector
+from pipflow.warehouse.language.tails import TailRules
 
 #: the most terminals one sentence may have: Earley's time grows faster than the length on
 #: ambiguous lists, so a bound per sentence keeps a whole command's parse linear in its length
@@ -41,6 +42,22 @@ MAX_SENTENCE_WORDS = 120
 SET_AMOUNTS = {"count", "all", "none", "as_many_as", "rest", "each"}
 CHANGE_AMOUNTS = {"more", "fewer", "times", "fraction"}
 BOUND_AMOUNTS = {"at_least", "at_most", "between", "at_least_more"}
+#: noun phrases whose amount is read from their numbers alone (``nums``), by rule; the phrase's item
+#: (if it names one) is the last item said, for ellipsis
+AMOUNTS: dict[str, Callable[[list[int]], dict]] = {
+    "np_count": lambda n: {"count": n[0]}, "np_more": lambda n: {"more": n[0]},
+    "np_fewer": lambda n: {"fewer": n[0]}, "np_one": lambda n: {"count": 1}, "np_one_more": lambda n: {"more": 1},
+    "np_all": lambda n: {"all": True}, "np_none": lambda n: {"none": True}, "np_half": lambda n: {"fraction": [1, 2]},
+    "np_twice": lambda n: {"times": 2}, "np_ntimes": lambda n: {"times": n[0]},
+    "np_atleast_more": lambda n: {"at_least_more": n[0]}, "np_all_n": lambda n: {"all": True, "expect": n[0]},
+    "np_atleast": lambda n: {"at_least": n[0]}, "np_atmost": lambda n: {"at_most": n[0]},
+    "np_above": lambda n: {"at_least": n[0] + 1}, "np_rest": lambda n: {"rest": True},
+}
+#: noun phrases that name no item ("another", "3 more", "two"): the item comes from the clause
+ITEMLESS: dict[str, Callable[[list[int]], dict]] = {
+    "np_another": lambda n: {"count": 1}, "np_more_bare": lambda n: {"more": n[0]},
+    "np_bare": lambda n: {"count": n[0]},
+}
 #: verbs whose object goes somewhere: a destination said later in the sentence is theirs too
 MOVE_VERBS = {"move", "bring", "send", "ship", "transfer", "carry", "haul", "shift", "cart", "ferry", "tow",
               "lug", "shuttle", "wheel", "run", "relocate", "deliver", "pull", "grab"}
@@ -66,8 +83,10 @@ def keywords() -> dict[str, str]:
     return out
 
 
-class _Sentence(GoalRules):
-    """Reads one parsed sentence into statements and rules."""
+class _Sentence(GoalRules, TailRules, Interpreter):
+    """Reads one parsed sentence into statements and rules. A goal clause and a tail (a clause
+    that continues the one before it) go to the method their rule names (lark's Interpreter
+    dispatch; the methods are :class:`GoalRules` and :class:`TailRules`)."""
 
     def __init__(self, lexed: Lexed, lex: Lexicon, robots: RobotSelector, memory: dict | None = None):
         self.lexed, self.lex, self.robots = lexed, lex, robots
@@ -93,6 +112,20 @@ class _Sentence(GoalRules):
         # units taken off a place and then shared out ("Move 3 lids from dispatch: 2 to silo 2 and
         # 1 to rack east"): the removal and how many of it are not yet given a destination
         self.budget: dict | None = None
+
+    # -- the rules' dispatch -----------------------------------------------------------------
+    def __getattr__(self, name: str) -> Any:
+        """lark's Interpreter answers every missing name with ``__default__``; here only a goal or
+        a tail rule's name does (any other missing attribute is a bug, and says so)."""
+        if name.startswith(("g_", "t_")):
+            return self.__default__
+        raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
+
+    def __default__(self, node: Tree) -> None:
+        """A rule with no method: refused with its words, never half-read."""
+        if node.data.startswith("t_"):
+            raise TranslationError(f"{quote(self.words(node))}: cannot read this")
+        raise TranslationError(f"{quote(self.clause_parts(node).words)}: cannot read this statement")
 
     # -- words ------------------------------------------------------------------------------
     def words(self, node: Tree | Token | list) -> str:
@@ -129,7 +162,9 @@ class _Sentence(GoalRules):
         return [self.np(c) for c in items.children if isinstance(c, Tree) and c.data.startswith("np_")]
 
     def np(self, node: Tree) -> dict:
-        """One noun phrase: ``{"items": selector|None, "amount": {...}, "words": str}``."""
+        """One noun phrase: ``{"items": selector|None, "amount": {...}, "words": str}``. The
+        phrases whose amount is one of their numbers are :data:`AMOUNTS` (and :data:`ITEMLESS`,
+        which name no item); the others are read here."""
         kind = node.data
         words = self.words(node)
         nums = [int(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "NUM")]
@@ -137,62 +172,30 @@ class _Sentence(GoalRules):
         named = [str(c.value) for c in node.children if isinstance(c, Token) and c.type == "ITEM"]
         item = {"names": [self.ihead(heads[0], words)]} if heads else {"names": named[:1]} if named else None
 
+        def places() -> list[str]:
+            return [str(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "PLACE")]
+
         def out(amount: dict, sel: dict | None = item) -> dict:
             if sel is not None and sel.get("names"):
                 self.last_item = sel["names"]
             return {"items": sel, "amount": amount, "words": words}
 
+        if kind in ITEMLESS:
+            return {"items": None, "amount": ITEMLESS[kind](nums), "words": words}
+        if kind in AMOUNTS:
+            return out(AMOUNTS[kind](nums))
         if kind == "np_more_than_place":
-            place = next(str(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "PLACE"))
-            key = "more" if self.sub(node, "more") else "fewer"
-            return out({"as_many_as": place, key: nums[0]})
-        if kind == "np_another":
-            return {"items": None, "amount": {"count": 1}, "words": words}
-        if kind == "np_more_bare":
-            return {"items": None, "amount": {"more": nums[0]}, "words": words}
+            return out({"as_many_as": places()[0], "more" if self.sub(node, "more") else "fewer": nums[0]})
         if kind == "np_times_as_many":
-            place = next(str(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "PLACE"))
-            return out({"as_many_as": place, "times": nums[0] if nums else 2})
-        if kind == "np_bare":
-            return {"items": None, "amount": {"count": nums[0]}, "words": words}
-        if kind == "np_count":
-            return out({"count": nums[0]})
-        if kind == "np_more":
-            return out({"more": nums[0]})
-        if kind == "np_fewer":
-            return out({"fewer": nums[0]})
-        if kind == "np_one":
-            return out({"count": 1})
-        if kind == "np_one_more":
-            return out({"more": 1})
-        if kind == "np_all":
-            return out({"all": True})
-        if kind == "np_none":
-            return out({"none": True})
+            return out({"as_many_as": places()[0], "times": nums[0] if nums else 2})
         if kind == "np_frac":
             frac = next(c for c in node.children if isinstance(c, Tree) and c.data == "frac")
             den = next(int(t.value) for t in frac.scan_values(lambda v: isinstance(v, Token) and v.type == "FRAC"))
             num = next((int(t.value) for t in frac.scan_values(lambda v: isinstance(v, Token) and v.type == "NUM")), 1)
             return out({"fraction": [num, den]})
-        if kind == "np_half":
-            return out({"fraction": [1, 2]})
-        if kind == "np_twice":
-            return out({"times": 2})
-        if kind == "np_ntimes":
-            return out({"times": nums[0]})
-        if kind == "np_atleast_more":
-            return out({"at_least_more": nums[0]})
-        if kind == "np_all_n":
-            return out({"all": True, "expect": nums[0]})
         if kind == "np_times":
             first = str(node.children[0].value) if isinstance(node.children[0], Token) else words.split()[0]
             return out({"times": {"double": 2, "triple": 3, "quadruple": 4}.get(first.lower(), 2)})
-        if kind == "np_atleast":
-            return out({"at_least": nums[0]})
-        if kind == "np_atmost":
-            return out({"at_most": nums[0]})
-        if kind == "np_above":
-            return out({"at_least": nums[0] + 1})
         if kind == "np_below":
             if nums[0] == 0:
                 raise TranslationError(f"{quote(words)}: fewer than 0 units is impossible")
@@ -206,11 +209,8 @@ class _Sentence(GoalRules):
             raise TranslationError(f"{quote(words)} is a bound, not a count: it is approximate, and "
                                    f"the goal needs an exact count or a firm bound ('at least 5', "
                                    f"'at most 5', 'between 3 and 5')")
-        if kind == "np_each_more":
-            return out({"more": nums[0]}, {"all": True})
-        if kind == "np_each":
-            n = nums[0] if nums else 1
-            return out({"count": n}, {"all": True})
+        if kind in ("np_each_more", "np_each"):
+            return out({"more": nums[0]} if kind == "np_each_more" else {"count": nums[0] if nums else 1}, {"all": True})
         if kind == "np_everything":
             excl = []
             for c in node.children:
@@ -218,21 +218,16 @@ class _Sentence(GoalRules):
                     excl = [self.ihead(h, words) for h in c.children if isinstance(h, Tree) and h.data == "ihead"]
             return out({"all_held": True}, {"all": True, "except": excl})
         if kind == "np_as_many":
-            place = next(str(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "PLACE"))
-            return out({"as_many_as": place})
+            return out({"as_many_as": places()[0]})
         if kind == "np_as_many_item":
             # "as many gears as widgets": the other item's count on the statement's own place
-            other = self.ihead(heads[1], words)
-            return out({"as_many_here": True, "of": other})
+            return out({"as_many_here": True, "of": self.ihead(heads[1], words)})
         if kind == "np_as_many_total":
-            places = [str(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "PLACE")]
-            amount = {"as_many_as": places[0], "together_with": places[1:]}
+            named_places = places()
+            amount = {"as_many_as": named_places[0], "together_with": named_places[1:]}
             return out(amount) if heads else out(amount, None)
         if kind == "np_as_many_elided":
-            place = next(str(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "PLACE"))
-            return out({"as_many_as": place}, None)
-        if kind == "np_rest":
-            return out({"rest": True})
+            return out({"as_many_as": places()[0]}, None)
         raise TranslationError(f"{quote(words)}: cannot read this amount")
 
     # -- places -----------------------------------------------------------------------------
@@ -627,130 +622,6 @@ class _Sentence(GoalRules):
         self.statements.append({"op": "swap", "places": {"names": places}, "items": sel, "words": words})
 
     # -- ellipsis ---------------------------------------------------------------------------
-    def tail(self, node: Tree) -> None:
-        kind = node.data
-        words = self.words(node)
-        if kind == "t_too":
-            places = self.place_list(self.sub(node, "places")[0])
-            last = [s for s in self.statements if "places" in s] or [s for s in self.prior_last if "places" in s]
-            if not last:
-                raise TranslationError(f"{quote(words)}: cannot tell what to repeat there")
-            prev = last[-1]
-            if prev["op"] not in ("set", "change", "bound", "empty", "fill", "keep", "distribute"):
-                raise TranslationError(f"{quote(words)}: cannot tell what to repeat there")
-            group = [s for s in self.statements or self.prior_last if s.get("words") == prev.get("words")]
-            for s in group:
-                if s["words"] in self.received and set(s.get("amount") or {}) == {"count"}:
-                    self._received_check(places, (s.get("items") or {}).get("names") or [], s["words"], words)
-                self.statements.append({**s, "places": {"names": places}, "words": f"{s['words']} ({words})"})
-            return
-        if kind in ("t_elided", "t_elided_fewer"):
-            num = int(node.children[0].value)
-            more = bool(self.sub(node, "more"))
-            amount = {"fewer": num} if kind == "t_elided_fewer" else {"more": num} if more else {"count": num}
-            places, mode = self.loc(self.sub(node, "loc")[0] if self.sub(node, "loc") else
-                                    next(c for c in node.children if isinstance(c, Tree) and c.data.startswith("loc")))
-            prev = [s for s in self.statements if s["op"] in ("set", "change", "transfer")]
-            add = bool(prev) and prev[-1]["op"] == "change" and "more" in prev[-1]["amount"] and "more" not in amount \
-                and "count" in amount
-            if prev and prev[-1]["op"] == "transfer" and "count" in amount:
-                last = prev[-1]
-                self.statements.append({**last, "amount": amount, "to": {"names": places}, "words": words})
-                return
-            self.put(places, mode, [{"items": None, "amount": amount, "words": words}], words, add=add)
-            return
-        if kind == "t_source":
-            source = self.place_list(self.sub(node, "places")[0])
-            changed = False
-            for k, s in enumerate(self.statements):
-                if s["op"] == "change" and "more" in s["amount"]:
-                    self.statements[k] = {"op": "transfer", "items": s["items"],
-                                          "amount": {"count": s["amount"]["more"]}, "from": {"names": source},
-                                          "to": s["places"], "words": f"{s['words']}, {words}"}
-                    changed = True
-                elif s["op"] == "set" and "count" in s["amount"]:
-                    # "four product1 to shelf2, taking them from shelf1": the four come from there
-                    self.statements[k] = {"op": "transfer", "items": s["items"], "amount": s["amount"],
-                                          "from": {"names": source}, "to": s["places"],
-                                          "words": f"{s['words']}, {words}"}
-                    changed = True
-            if not changed and not self.statements:
-                self.pending_source = source  # "From shelf 4, move 5 product4 to shelf 1"
-                return
-            if not changed:
-                raise TranslationError(f"{quote(words)}: nothing before it to take from there")
-            return
-        if kind == "t_gap":
-            # "Rack A should have 9 widgets and rack B 6 gears", "..., staging 8": the verb is shared
-            places = self.place_list(self.sub(node, "places")[0])
-            prev = [st for st in self.statements if st["op"] in ("set", "change", "bound")]
-            if not prev:
-                raise TranslationError(f"{quote(words)}: nothing said before it that it continues")
-            # the verb is what is shared: "add 3 to A, B 2" adds, "A should have ..., B 2" sets
-            if not self.last_add:
-                self._gap_after_more(self.nps(self.sub(node, "items")[0]), places)
-            for np in self.nps(self.sub(node, "items")[0]):
-                self.statements.append(self._goal_statement(places, np, self.last_add))
-            return
-        if kind == "t_not_to":
-            # "Move trays out of freezer A, but not to pick face": pick face keeps what it has of them
-            places = self.place_list(self.sub(node, "places")[0])
-            moved = [n for st in self.statements for n in (st.get("items") or {}).get("names", [])]
-            if not moved:
-                raise TranslationError(f"{quote(words)}: not what? nothing is moved before it")
-            self.statements.append({"op": "keep", "places": {"names": places}, "items": {"names": list(dict.fromkeys(moved))},
-                                    "inflow_only": False, "words": words})
-            return
-        if kind == "t_noop":
-            return  # "4 valves, not 5": a correction that restates what was said
-        if kind == "t_reverse":
-            # "Move 2 X from A to B, and 1 Y the other way": the move before, from B to A
-            prev = self.statements[-1] if self.statements else None
-            if prev is None or prev["op"] != "transfer" or not prev.get("to") or "names" not in prev["from"]:
-                raise TranslationError(f"{quote(words)}: 'the other way' of what? no move from one place "
-                                       f"to another comes before it")
-            back_from, back_to = list(prev["to"]["names"]), list(prev["from"]["names"])
-            for np in self.nps(self.sub(node, "items")[0]):
-                self.statements.append(self._transfer_statement(np, back_from, back_to, words))
-            return
-        if kind == "t_from":
-            # "Rack B gets 3 widgets from rack C and 2 gears from rack A": the same destination
-            prev = self.statements[-1] if self.statements else None
-            if prev is None or prev["op"] != "transfer":
-                raise TranslationError(f"{quote(words)}: cannot tell where these go")
-            source = self.place_list(self.sub(node, "places")[0])
-            for np in self.nps(self.sub(node, "items")[0]):
-                if prev.get("to") is None and np["amount"] == {"count": 1} and np["words"].lower() == "another" \
-                        and prev["amount"] != {"count": 1}:
-                    # "take 3 off A and another off B": one more, or another 3? not guessed
-                    raise TranslationError(f"{quote(words)}: 'another' after {prev['words']!r} does not "
-                                           f"say how many (one, or as many again?)")
-                # "Take 1 bolt off A and 2 off B" repeats the removal; after a move, its destination
-                target = prev["to"]["names"] if prev.get("to") else None
-                self.statements.append(self._transfer_statement(np, source, target, words))
-            return
-        if kind == "t_rest":
-            places = self.place_list(self.sub(node, "places")[0])
-            rest_of = self.sub(node, "rest_of")
-            heads = [self.ihead(h, words) for r in rest_of for h in self.sub(r, "ihead")]
-            np = {"items": {"names": heads} if heads else None, "amount": {"rest": True}, "words": words}
-            self.statements.append(self._rest(places, np))
-            return
-        if kind == "t_not_items":
-            # "Take the widgets off rack C, but not the springs": they stay where they are
-            heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
-            prev = self.statements[-1] if self.statements else None
-            if prev is None:
-                raise TranslationError(f"{quote(words)}: nothing said before it that it excepts")
-            places = (prev.get("from") or prev.get("places") or {}).get("names")
-            if not places:
-                raise TranslationError(f"{quote(words)}: cannot tell where they stay")
-            self.statements.append({"op": "keep", "places": {"names": places}, "items": {"names": heads},
-                                    "inflow_only": False, "words": words})
-            return
-        if kind == "t_resp":
-            raise TranslationError(f"{quote(words)}: 'respectively' must follow the places it pairs")
-        raise TranslationError(f"{quote(words)}: cannot read this")
 
     # -- rules ------------------------------------------------------------------------------
     def rule(self, node: Tree) -> None:
@@ -863,9 +734,9 @@ class _Sentence(GoalRules):
         d = node.data
         self.before_places = list(self.last_places or [])
         if d == "goal" or d.startswith("g_"):
-            self.goal(node if d != "goal" else node.children[0])
+            self.visit(node if d != "goal" else node.children[0])
         elif d.startswith("t_"):
-            self.tail(node)
+            self.visit(node)
         elif d.startswith("rule_"):
             self.rule(node)
         elif d == "aside":
@@ -876,20 +747,20 @@ class _Sentence(GoalRules):
             said = [t for t in self.toks_any(node) if t.type in ("RKIND", "RTAG")][0]
             self.robots.check_apposition(sel, said.type, str(said.value), self.words(node))
             goal = next(c for c in node.children if isinstance(c, Tree) and c.data.startswith("g_"))
-            self.goal(goal)
+            self.visit(goal)
             self._rule_for(sel, "only", [], self.words(node))
         elif d == "addressed":
             robots_node = self.sub(node, "robots")[0]
             sel = self.robots.read(robots_node, self.words(robots_node))
             before = len(self.statements)
             goal = next(c for c in node.children if isinstance(c, Tree) and c.data.startswith("g_"))
-            self.goal(goal)
+            self.visit(goal)
             self._rule_for(sel, "only", self.statements[before:], self.words(node))
         elif d in ("scoped_only", "scoped_only_after", "scoped_never_after", "scoped_never_before"):
             robots_node = self.sub(node, "robots")[0]
             sel = self.robots.read(robots_node, self.words(robots_node))
             goal = next(c for c in node.children if isinstance(c, Tree) and c.data.startswith("g_"))
-            self.goal(goal)
+            self.visit(goal)
             mode = "never" if d in ("scoped_never_after", "scoped_never_before") else "only"
             base = {"mode": mode, "robots": sel, "words": self.words(node)}
             self.bind.append(base)
