@@ -75,7 +75,9 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--limit", type=int, default=None, help="only the first N tasks")
     args = ap.parse_args(argv)
 
-    from pipflow.language.generator import generate
+    from pipflow.language.cache import ResponseCache
+    from pipflow.language.generator import ModelCall, RoundRecord, generate
+    from pipflow.language.llm import Retry
     from pipflow.language.llm import sum_usage
 
     tasks_file = Path(args.tasks)
@@ -91,10 +93,10 @@ def main(argv: list[str] | None = None) -> int:
     tasks = [t for t in spec["tasks"] if t.get("feasible", True)][:args.limit]
     for task in tasks:
         for mode in rows:
-            out = generate(task["command"], world, domain, prompt=args.prompt, model=args.model,
-                           api_base=args.api_base, max_tokens=args.max_tokens, timeout=300,
-                           grounded=mode == "grounded", cache_dir=args.cache_dir,
-                           use_cache=not args.no_cache)
+            out = generate(task["command"], world, domain, prompt=args.prompt,
+                           call=ModelCall(model=args.model, api_base=args.api_base, max_tokens=args.max_tokens,
+                                          grounded=mode == "grounded", retry=Retry(timeout=300)),
+                           record=RoundRecord(cache=None if args.no_cache else ResponseCache(args.cache_dir)))
             rows[mode].append(score(out, task["goal"], world))
             usages[mode].append(out["usage"])
             print(f"{task['id']} {mode:8s} {rows[mode][-1]}", file=sys.stderr)

@@ -9,8 +9,9 @@ from typing import Annotated
 from pipflow import Check, Choices, Doc, PathStr, StepContext, step
 from pipflow.errors import InputError, TranslationError
 from pipflow.language.agreement import refusal_opinion
-from pipflow.language.generator import READERS, generate
-from pipflow.language.llm import resolve_model
+from pipflow.language.cache import ResponseCache
+from pipflow.language.generator import READERS, LoopRound, ModelCall, RoundRecord, generate
+from pipflow.language.llm import Retry, resolve_model
 from pipflow.language.prompting import find_template, prompt_problem
 from pipflow.taskdomains import task_domain
 
@@ -76,13 +77,14 @@ def llm_problem(
         template = find_template(prompt, ctx.base_dir)
         ctx.check_readable(template, f"step {ctx.step_id!r}: prompt template {prompt!r}", named_as=prompt)
         prompt = str(template)
+    responses = ResponseCache(ctx.resolve_path(cache_dir) if cache_dir else None) if cache and ctx.use_cache else None
     out = generate(
-        command, world, domain_text, prompt=prompt, model=resolved, temperature=temperature,
-        max_tokens=max_tokens, timeout=timeout, retries=retries, deadline=deadline, api_base=api_base,
-        feedback=feedback, grounded=grounded,
-        cache_dir=ctx.resolve_path(cache_dir) if cache_dir else None, use_cache=cache and ctx.use_cache,
-        base_dir=ctx.base_dir, save=ctx.write_artifact, log=lambda m: _log(ctx, m), previous=previous,
-        reader=reader, named=ctx.named_by_user)
+        command, world, domain_text, prompt=prompt, base_dir=ctx.base_dir,
+        call=ModelCall(model=resolved, api_base=api_base, temperature=temperature, max_tokens=max_tokens,
+                       grounded=grounded, retry=Retry(timeout=timeout, retries=retries, deadline=deadline),
+                       named=ctx.named_by_user),
+        loop=LoopRound(feedback=feedback, previous=previous, reader=reader),
+        record=RoundRecord(save=ctx.write_artifact, log=lambda m: _log(ctx, m), cache=responses))
     ctx.metrics["llm"] = out["usage"]
     text = out.get("response") or ""
     if len(text) > RESPONSE_OUTPUT_CHARS:  # the whole answer is kept once, as artifact response.txt

@@ -148,15 +148,15 @@ def test_grounded_answer_becomes_goal_and_constraints():
 def test_rate_limits_are_retried_with_backoff_then_fail_clearly():
     slept: list[float] = []
     with pytest.raises(LLMError, match="RateLimitError after 3 attempts"):
-        llm.complete([{"role": "user", "content": "hi"}], model="gpt-4o-mini", retries=2,
-                     extra={"mock_response": "litellm.RateLimitError"}, sleep=slept.append)
+        llm.complete([{"role": "user", "content": "hi"}], model="gpt-4o-mini",
+                     extra={"mock_response": "litellm.RateLimitError"}, retry=llm.Retry(retries=2, sleep=slept.append))
     assert slept == [1.0, 2.0]
 
 
 def test_api_keys_never_appear_in_errors(monkeypatch):
     monkeypatch.setenv("SOMEPROVIDER_API_KEY", "sk-very-secret-value")
     with pytest.raises(LLMError) as info:
-        llm.complete([{"role": "user", "content": "hi"}], model="gpt-4o-mini", retries=0,
+        llm.complete([{"role": "user", "content": "hi"}], model="gpt-4o-mini", retry=llm.Retry(retries=0),
                      extra={"mock_response": Exception("denied for sk-very-secret-value")})
     assert "sk-very-secret-value" not in str(info.value) and "***" in str(info.value)
 
