@@ -4,7 +4,7 @@ docs/architecture.md, so `schedule` and the metrics do not care which one ran, a
 allocation cost c_i they used (``total``, the paper's, or ``subtask``; docs/paper.md)."""
 from __future__ import annotations
 
-from typing import Annotated
+from typing import Annotated, Any
 
 from pipflow import Choices, Doc, StepContext, step
 from pipflow.errors import AllocationError
@@ -25,15 +25,15 @@ Cost = Annotated[str, Choices(*COSTS),
                      "(nearest robots: less travel in sum, one robot may do most subtasks)")]
 
 
-def _run(ctx: StepContext, method: str, graph: dict, world: dict, constraints: list | None,
-         linear: list | None, speed: float, handling: float, cost: str, mode: str = "subtask",
-         time_limit: float = 10.0) -> dict:
+def _run(ctx: StepContext, method: str, graph: dict, world: dict, **options: Any) -> dict:
+    """One allocation with ``method``; ``options``: the step's other inputs, the keyword arguments of
+    :func:`pipflow.team.allocation.allocate` (rules unset: none)."""
     # deferred: pulls numpy (~150 ms; the registry loads every step module, e.g. for `pipflow validate`)
     from pipflow.team.allocation import allocate
 
+    options.update(constraints=options.get("constraints") or [], linear=options.get("linear") or [])
     with library_errors(SCIP, AllocationError, f"allocating with {method}"):
-        result = allocate(graph, world, method=method, constraints=constraints or [], linear=linear or [],
-                          mode=mode, speed=speed, handling=handling, time_limit=time_limit, cost=cost)
+        result = allocate(graph, world, method=method, **options)
     ctx.write_artifact("allocation.json", result)
     st = result["stats"]
     ctx.metrics.update({"alloc_median_ms": st["solve_median_ms"], **{f"predicted_{k}": v for k, v in st["predicted"].items()}})
@@ -60,8 +60,8 @@ def scip(
     cost: Cost = DEFAULT_COST,
 ) -> dict:
     """The paper's allocator; the fast first stage gives the same optimum as the naive model."""
-    return _run(ctx, "naive" if naive else "scip", graph, world, constraints, linear, speed, handling,
-                cost, mode, time_limit)
+    return _run(ctx, "naive" if naive else "scip", graph, world, constraints=constraints, linear=linear,
+                speed=speed, handling=handling, cost=cost, mode=mode, time_limit=time_limit)
 
 
 @step("allocate.greedy", doc="Baseline: cheapest capable robots first until the skills are covered.",
@@ -69,7 +69,8 @@ def scip(
 def greedy(ctx: StepContext, graph: Graph, world: World, constraints: RobotRules = None, linear: LinearRules = None,
            speed: Speed = 1.0, handling: Handling = 2.0, cost: Cost = DEFAULT_COST) -> dict:
     """Greedy baseline for comparison with the IP; "cheapest" by ``cost`` (subtask: the nearest)."""
-    return _run(ctx, "greedy", graph, world, constraints, linear, speed, handling, cost)
+    return _run(ctx, "greedy", graph, world, constraints=constraints, linear=linear, speed=speed,
+                handling=handling, cost=cost)
 
 
 @step("allocate.blind", doc="Ablation (paper's w/o AS): fewest robots by robot order, ignoring travel cost.",
@@ -78,4 +79,5 @@ def blind(ctx: StepContext, graph: Graph, world: World, constraints: RobotRules 
           speed: Speed = 1.0, handling: Handling = 2.0, cost: Cost = DEFAULT_COST) -> dict:
     """Cost-blind allocation: shows what the allocation strategy buys. It never looks at costs;
     ``cost`` only says what the recorded ``costs`` of each assignment mean."""
-    return _run(ctx, "blind", graph, world, constraints, linear, speed, handling, cost)
+    return _run(ctx, "blind", graph, world, constraints=constraints, linear=linear, speed=speed,
+                handling=handling, cost=cost)
