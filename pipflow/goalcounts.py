@@ -95,6 +95,3 @@ def from_limits(lo: int | None, hi: int | None, exact: bool = False) -> Any:
     return out
 
 
-def has_bounds(goal: dict | None) -> bool:
-    """True when any value of ``goal`` (``{place: {item: value}}``) is a bound."""
-    return any(is_bound(v) for items in (goal or {}).values() for v in (items or {}).values())

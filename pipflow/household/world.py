@@ -170,17 +170,6 @@ def load_world(path: str | Path) -> dict:
     return world_from_text(text, str(p))
 
 
-def is_household(path: str | Path) -> bool:
-    """Whether a world file declares ``domain: household`` (cheap: no validation)."""
-    import yaml
-
-    try:
-        data = yaml.safe_load(Path(path).read_text())
-    except (OSError, yaml.YAMLError):
-        return False
-    return isinstance(data, dict) and data.get("domain") == DOMAIN
-
-
 # ---------------------------------------------------------------------------------------------
 # teams and starts
 # ---------------------------------------------------------------------------------------------
@@ -217,10 +206,6 @@ def vary_starts(world: dict, seed: int | None, clearance: float = 0.4, spacing: 
 def entity(world: dict, name: str) -> dict:
     """A place or an object by name."""
     return world["places"].get(name) or world["objects"][name]
-
-
-def has(world: dict, name: str, prop: str) -> bool:
-    return prop in entity(world, name)["properties"]
 
 
 def members(world: dict, category: str) -> list[str]:

@@ -284,16 +284,6 @@ def load_tasks(path: str | Path) -> dict:
 # ---------------------------------------------------------------------------------------------
 # facts
 # ---------------------------------------------------------------------------------------------
-def shelf_load(world: dict, shelf: str) -> int:
-    """Units of all products on ``shelf`` in the initial state."""
-    return sum(world["stock"].get(shelf, {}).values())
-
-
-def product_total(world: dict, product: str) -> int:
-    """Units of ``product`` that exist in the world (over all shelves)."""
-    return sum(items.get(product, 0) for items in world["stock"].values())
-
-
 def feedback_facts(messages: list[str], world: dict) -> Facts:
     """What the refinement loop tells a model about the shelves and products the round's
     messages name, when its next prompt would repeat the last one: the (shelf, product) pairs one

@@ -411,7 +411,6 @@ class GoalRules:
         dst = self.loc(locs[0])[0] if locs else self.place_list(plist[-1]) if plist else []
         for np in nps:
             self.statements.append(self._transfer_statement(np, source, dst, words))
-        self.last_source = source
 
     def g_receive(self, node: Tree) -> None:
         parts = self.clause_parts(node, bare=True)
@@ -429,7 +428,6 @@ class GoalRules:
         for np in nps:
             st = self._transfer_statement(np, source, None, words)
             self.statements.append(st)
-        self.last_source = source
 
     def g_short(self, node: Tree) -> None:
         parts = self.clause_parts(node, bare=True)

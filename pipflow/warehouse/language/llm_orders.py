@@ -136,23 +136,6 @@ def legacy_order(data: dict) -> dict[str, Any]:
     return {"statements": statements, "rules": rules}
 
 
-def goal_statement(shelf: str, product: str, value: Any) -> str:
-    """One goal count as the statement of a grounded order (for feedback in the answer's form)."""
-    base = {"places": {"names": [shelf]}, "items": {"names": [product]}}
-    if isinstance(value, dict):
-        amount = {k: int(value[k]) for k in ("at_least", "at_most") if k in value}
-        return json.dumps({"op": "bound", **base, "amount": amount, "words": "..."})
-    return json.dumps({"op": "set", **base, "amount": {"count": int(value)}, "words": "..."})
-
-
-def rule_statement(rule: dict) -> str:
-    """A resolved robot rule (``{"only"|"never": [names], ...}``) as a rule of a grounded order."""
-    mode = "only" if "only" in rule else "never"
-    out = {"mode": mode, "robots": {"names": list(rule.get(mode) or [])}}
-    out.update({k: rule.get(k, ANY) for k in SCOPE_ROLES})
-    return json.dumps({**out, "words": "..."})
-
-
 def _value_words(shelf: str, product: str, value: Any) -> str:
     if isinstance(value, dict):
         parts = ([f"(>= (stock {shelf} {product}) {value['at_least']})"] if "at_least" in value else []) + \

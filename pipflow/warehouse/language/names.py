@@ -75,9 +75,6 @@ class Tok:
     value: object = None
     of: str = ""
 
-    def is_word(self, *words: str) -> bool:
-        return self.kind == "word" and self.value in words
-
 
 @dataclass(frozen=True)
 class _Name:

@@ -101,7 +101,6 @@ class _Sentence(GoalRules, TailRules, Interpreter):
         self.bind: list[dict] = []  # rules that take the sentence's goal as their scope
         self.last_item: list[str] | None = memory.get("item")
         self.last_places: list[str] | None = memory.get("places")
-        self.last_source: list[str] | None = None
         self.distributive = False  # "every bay", "each of A and B": a count applies to each
         self.before_places: list[str] = []  # the places named before the current part
         self.last_add = False  # whether the last counts came with an add verb (for gapping)
