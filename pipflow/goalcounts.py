@@ -93,5 +93,3 @@ def from_limits(lo: int | None, hi: int | None, exact: bool = False) -> Any:
     if hi is not None:
         out["at_most"] = hi
     return out
-
-

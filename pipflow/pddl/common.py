@@ -140,5 +140,3 @@ def goal_atoms(problem: Any) -> list[Any]:
     ``true`` an empty ``(and)`` parses to. A domain's reader uses it to tell a goal that asks for
     nothing (a model that copied its example unchanged) from one that asks for something."""
     return [g for g in goal_conditions(problem) if not (g.is_bool_constant() and g.bool_constant_value())]
-
-

@@ -30,5 +30,3 @@ def plan_in_world_names(plan: list[dict] | None, world: dict | None) -> list[dic
         return plan
     names = world_spelling(world)
     return [{**step, "args": [names.get(a, a) for a in step["args"]]} for step in plan]
-
-

@@ -960,4 +960,3 @@ def parse(command: str, world: dict) -> dict:
                                f"(shelves: {lex.index.candidates('shelf')}; "
                                f"products: {lex.index.candidates('product')})")
     return {"command": command, "statements": statements, "rules": rules}
-
