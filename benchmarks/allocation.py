@@ -3,7 +3,7 @@ speed of the fast first stage.
 
     python benchmarks/allocation.py [--tasks benchmarks/warehouse/tasks.yaml] [--runs 10]
 
-Part 1 (needs the team planner ``pipflow.pddl.transport``; skipped with a message otherwise):
+Part 1 (needs the team planner ``pipflow.warehouse.planner``; skipped with a message otherwise):
 for each task, plan the gold goal, build the exact dependency graph, allocate with the paper's
 per-subtask IP, frontier mode and greedy, each with both allocation costs side by side (``total``,
 the paper's c_i: each robot's travel so far plus the subtask; ``subtask``: the subtask's approach
@@ -85,8 +85,8 @@ def bounds(graph: dict, world: dict, constraints: list, speed: float, handling: 
 # ------------------------------------------------------------------------------- part 1
 def plan_task(world: dict, goal: dict, domain_text: str) -> tuple[str, list[dict]]:
     from pipflow.pddl.common import parse
-    from pipflow.pddl.transport import instance_from_problem, moves_to_plan, plan_instance
-    from pipflow.pddl.writer import write_problem
+    from pipflow.warehouse.planner import instance_from_problem, moves_to_plan, plan_instance
+    from pipflow.warehouse.problem import write_problem
 
     problem_text = write_problem(world, goal)
     inst = instance_from_problem(parse(domain_text, problem_text))
@@ -100,8 +100,8 @@ def tasks_part(tasks_file: Path, speed: float, handling: float, time_limit: floa
     from pipflow.team.scheduling import COSTS, build_schedule
 
     try:
-        import pipflow.pddl.transport  # noqa: F401  (the team planner)
-        import pipflow.pddl.writer  # noqa: F401
+        import pipflow.warehouse.planner  # noqa: F401  (the team planner)
+        import pipflow.warehouse.problem  # noqa: F401
     except ImportError as exc:
         print(f"[part 1 skipped] team-level planner not available ({exc}); "
               "plans come from pipflow.pddl once it lands.\n")

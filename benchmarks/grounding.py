@@ -4,7 +4,7 @@
                                    [--modes free,grounded] [--limit N]
 
 For each paper task it asks the model twice (free text, then grounded: an order, see
-pipflow/language/grounding.py) and reports per mode the share of answers that yield a problem,
+pipflow/warehouse/language/grounding.py) and reports per mode the share of answers that yield a problem,
 that name only the world's objects (the paper's failure: ``prodcut3`` invented as a new
 product), whose counts fit the shelves, and whose goal is exactly the gold one; for grounded
 answers also the share that are complete JSON of the order schema; plus tokens and latency. Default model ``local/smollm2`` starts a llama.cpp server
@@ -51,7 +51,7 @@ def score(out: dict, gold: dict, world: dict) -> dict[str, bool]:
 def is_order(text: str) -> bool:
     """Whether an answer is complete JSON of the order schema (rule scopes "any" dropped)."""
     from pipflow.errors import TranslationError
-    from pipflow.language.order import validate_order
+    from pipflow.warehouse.language.order import validate_order
 
     try:
         data = json.loads(text)
@@ -75,7 +75,10 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--limit", type=int, default=None, help="only the first N tasks")
     args = ap.parse_args(argv)
 
+    from pipflow.language.cache import ResponseCache
+    from pipflow.language.asking import ModelCall, RoundRecord
     from pipflow.language.generator import generate
+    from pipflow.language.llm import Retry
     from pipflow.language.llm import sum_usage
 
     tasks_file = Path(args.tasks)
@@ -91,10 +94,10 @@ def main(argv: list[str] | None = None) -> int:
     tasks = [t for t in spec["tasks"] if t.get("feasible", True)][:args.limit]
     for task in tasks:
         for mode in rows:
-            out = generate(task["command"], world, domain, prompt=args.prompt, model=args.model,
-                           api_base=args.api_base, max_tokens=args.max_tokens, timeout=300,
-                           grounded=mode == "grounded", cache_dir=args.cache_dir,
-                           use_cache=not args.no_cache)
+            out = generate(task["command"], world, domain, prompt=args.prompt,
+                           call=ModelCall(model=args.model, api_base=args.api_base, max_tokens=args.max_tokens,
+                                          grounded=mode == "grounded", retry=Retry(timeout=300)),
+                           record=RoundRecord(cache=None if args.no_cache else ResponseCache(args.cache_dir)))
             rows[mode].append(score(out, task["goal"], world))
             usages[mode].append(out["usage"])
             print(f"{task['id']} {mode:8s} {rows[mode][-1]}", file=sys.stderr)

@@ -62,7 +62,7 @@ def main() -> None:
     hits.clear()
     started = time.monotonic()
     try:
-        llm.complete(messages, model="openai/m", api_base=base, retries=2, backoff=0.1)
+        llm.complete(messages, model="openai/m", api_base=base, retry=llm.Retry(retries=2, backoff=0.1))
     except Exception as exc:
         said = str(exc).split(":")[1].strip()
     ours, ours_s = len(hits), time.monotonic() - started
@@ -71,7 +71,8 @@ def main() -> None:
     httpd, base, hits = serve(200, delay=5)
     started = time.monotonic()
     try:
-        llm.complete(messages, model="openai/m", api_base=base, timeout=1, retries=5, deadline=2.5, backoff=0.5)
+        llm.complete(messages, model="openai/m", api_base=base,
+                     retry=llm.Retry(timeout=1, retries=5, deadline=2.5, backoff=0.5))
     except Exception as exc:
         slow_said = str(exc).split(":")[1].strip()
     slow, slow_s = len(hits), time.monotonic() - started

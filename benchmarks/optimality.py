@@ -65,8 +65,8 @@ def plan_graph(world: dict, goal: dict, mode: str) -> dict:
     """The dependency graph of pipflow's plan for ``goal`` (``mode``: deorder, the workflow's
     default, keeps only the orders a precondition needs; exact keeps every read/write order)."""
     from pipflow.pddl.common import parse
-    from pipflow.pddl.transport import instance_from_problem, moves_to_plan, plan_instance
-    from pipflow.pddl.writer import write_problem
+    from pipflow.warehouse.planner import instance_from_problem, moves_to_plan, plan_instance
+    from pipflow.warehouse.problem import write_problem
     from pipflow.team.dependency import build_graph
 
     domain = (ROOT / "domains" / "warehouse.pddl").read_text()

@@ -39,9 +39,9 @@ if str(ROOT) not in sys.path:
 from pipflow.team.allocation import allocate  # noqa: E402
 from pipflow.team.dependency import build_graph, to_networkx  # noqa: E402
 from pipflow.pddl.common import parse  # noqa: E402
-from pipflow.pddl.generate import scale_instance  # noqa: E402
+from pipflow.warehouse.generate import scale_instance  # noqa: E402
 from pipflow.pddl.solver import solve_problem  # noqa: E402
-from pipflow.pddl.writer import write_problem  # noqa: E402
+from pipflow.warehouse.problem import write_problem  # noqa: E402
 from pipflow.team.scheduling import build_schedule  # noqa: E402
 from pipflow.warehouse.world import load_tasks  # noqa: E402
 
@@ -113,7 +113,7 @@ def measure(world: dict, goal: dict, args, rng: random.Random) -> dict | None:
 
 
 def scaled_world(shelves: int, products: int, moved: int, robots: int, seed: int) -> tuple[dict, dict]:
-    """A generated warehouse (pipflow.pddl.generate) with a team of ``robots`` along both aisles."""
+    """A generated warehouse (pipflow.warehouse.generate) with a team of ``robots`` along both aisles."""
     world, goal = scale_instance(shelves, products, moved, capacity=40, fill=0.7, seed=seed)
     rng = random.Random(seed)
     width = world["floor"]["width"]

@@ -20,8 +20,8 @@ ROOT = Path(__file__).resolve().parent.parent
 if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
-from pipflow.language.parser import parse  # noqa: E402
-from pipflow.language.lexicon import MAX_COMMAND_CHARS  # noqa: E402
+from pipflow.warehouse.language.parser import parse  # noqa: E402
+from pipflow.warehouse.language.lexicon import MAX_COMMAND_CHARS  # noqa: E402
 
 SENTENCE = "Move 2 product1 from shelf4 to shelf1 and 1 more to shelf2, but robot 3 must not carry product1."
 REPEATS = 3

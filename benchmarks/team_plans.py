@@ -35,14 +35,14 @@ ROOT = Path(__file__).resolve().parents[1]
 if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
-from pipflow.pddl.bounds import ceil_bound, fewest_moves  # noqa: E402
+from pipflow.warehouse.bounds import ceil_bound, fewest_moves  # noqa: E402
 from pipflow.pddl.common import parse  # noqa: E402
-from pipflow.pddl.generate import scale_instance  # noqa: E402
+from pipflow.warehouse.generate import scale_instance  # noqa: E402
 from pipflow.pddl.solver import DEFAULT_ENGINE, solve_problem  # noqa: E402
-from pipflow.pddl.bounds import exact_moves  # noqa: E402
-from pipflow.pddl.transport import flow_plan, instance_from_problem  # noqa: E402
+from pipflow.warehouse.bounds import exact_moves  # noqa: E402
+from pipflow.warehouse.planner import flow_plan, instance_from_problem  # noqa: E402
 from pipflow.pddl.verifier import verify_plan  # noqa: E402
-from pipflow.pddl.writer import write_problem  # noqa: E402
+from pipflow.warehouse.problem import write_problem  # noqa: E402
 from pipflow.warehouse.world import load_tasks  # noqa: E402
 
 DOMAIN = str(ROOT / "domains/warehouse.pddl")

@@ -235,7 +235,7 @@ class _Env(ImmutableSandboxedEnvironment):
                 if isinstance(seq, (str, bytes, list, tuple)) and isinstance(times, int) and times > 0:
                     _check_size(_weight(seq, MAX_BUILD // times + 1) * times, "repeating a value")
             if _whole(left) and _whole(right) and left.bit_length() + right.bit_length() > MAX_INT_BITS + 1:
-                raise TooLarge(f"a product of integers of {left.bit_length()} and {right.bit_length()} bits has "
+                raise TooLarge(f"multiplying integers of {left.bit_length()} and {right.bit_length()} bits gives "
                                f"more than the {MAX_INT_BITS} bits an expression may build")
         elif operator == "**" and isinstance(left, int) and isinstance(right, int) and abs(left) > 1 and right > 0:
             if right * math.log2(abs(left)) > MAX_INT_BITS:

@@ -15,15 +15,15 @@ from pipflow.worldfile import Locate, is_point
 from pipflow.yamlsource import read_source, section_sizes
 
 
-def footprint(shelf: dict) -> tuple[float, float, float, float]:
-    """(x0, y0, x1, y1) of a shelf's footprint."""
-    return shelf["x"], shelf["y"], shelf["x"] + shelf["width"], shelf["y"] + shelf["depth"]
+def footprint(fixture: dict) -> tuple[float, float, float, float]:
+    """(x0, y0, x1, y1) of a fixture's footprint."""
+    return fixture["x"], fixture["y"], fixture["x"] + fixture["width"], fixture["y"] + fixture["depth"]
 
 
-def inside_footprint(point: list[float], shelf: dict) -> bool:
-    """True when ``point`` lies in the shelf's footprint, border included (a robot touching a
-    shelf collides with it)."""
-    x0, y0, x1, y1 = footprint(shelf)
+def inside_footprint(point: list[float], fixture: dict) -> bool:
+    """True when ``point`` lies in the fixture's footprint, border included (a robot touching a
+    fixture collides with it)."""
+    x0, y0, x1, y1 = footprint(fixture)
     return x0 <= point[0] <= x1 and y0 <= point[1] <= y1
 
 

@@ -93,8 +93,3 @@ def from_limits(lo: int | None, hi: int | None, exact: bool = False) -> Any:
     if hi is not None:
         out["at_most"] = hi
     return out
-
-
-def has_bounds(goal: dict | None) -> bool:
-    """True when any value of ``goal`` (``{place: {item: value}}``) is a bound."""
-    return any(is_bound(v) for items in (goal or {}).values() for v in (items or {}).values())

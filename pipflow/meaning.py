@@ -9,7 +9,7 @@ whether or not robots then moved (``misread``); :func:`misread_executed` says wh
 What is generic lives here: robot rules as meanings (which robot may take part in which move),
 and the verdict of one run (:func:`judge`) from a domain's comparison of goals. Each domain says
 when two of its goals mean the same (``goal_difference``): the warehouse by the final stocks they
-accept (:mod:`pipflow.pddl.feasibility`), the household by the final states they accept.
+accept (:mod:`pipflow.warehouse.feasibility`), the household by the final states they accept.
 
 Rules: a rule ``{only|never: [robots], <field>: name, ...}`` governs the moves that agree with
 every field it gives; ``never`` keeps its robots out of them, ``only`` keeps every other robot

@@ -12,6 +12,7 @@ from pathlib import Path
 from typing import Any
 
 from pipflow.engine.writes import write_file
+from pipflow.taskdomains import task_domain
 from pipflow.team.trajectory import ROBOT_COLOURS, Trajectory
 
 #: ``pictures`` workflow input: ``always`` draws them during the run; ``never`` draws none (the
@@ -74,16 +75,18 @@ def robot_colour(i: int) -> tuple:
 
 
 def draw_floor(ax, world: dict) -> None:
-    """Floor outline, shelves (with name, capacity and access point)."""
+    """Floor outline, the world's fixtures (its task domain's places: footprint, name and access
+    point)."""
     from matplotlib.patches import Rectangle
 
     fw, fh = float(world["floor"]["width"]), float(world["floor"]["height"])
     ax.add_patch(Rectangle((0, 0), fw, fh, fill=False, lw=1.5, ec="black"))
-    for name, sh in world.get("shelves", {}).items():
-        ax.add_patch(Rectangle((sh["x"], sh["y"]), sh["width"], sh["depth"], fc="#b08a66", ec="#5a4030"))
-        ax.text(sh["x"] + sh["width"] / 2, sh["y"] + sh["depth"] / 2, name, ha="center", va="center",
-                fontsize=8, color="white")
-        ax.plot(*sh["access"], marker="x", color="#5a4030", ms=6)
+    for name, fixture in task_domain(world).places(world).items():
+        ax.add_patch(Rectangle((fixture["x"], fixture["y"]), fixture["width"], fixture["depth"], fc="#b08a66",
+                               ec="#5a4030"))
+        ax.text(fixture["x"] + fixture["width"] / 2, fixture["y"] + fixture["depth"] / 2, name, ha="center",
+                va="center", fontsize=8, color="white")
+        ax.plot(*fixture["access"], marker="x", color="#5a4030", ms=6)
     ax.set_xlim(-0.5, fw + 0.5)
     ax.set_ylim(-0.5, fh + 0.5)
     ax.set_aspect("equal")

@@ -137,6 +137,21 @@ class Grounding:
     gbnf: Callable[[dict], str]
     response_format: Callable[[dict], dict]
     read: Callable[[str, dict], dict]
+    #: ``answer_size(world, reading)``: ``(goal items, rules)`` a grounded answer is expected to
+    #: hold, from the offline reading's outputs when the parser read the command (``reading``,
+    #: else None: from the world's size); the call's token budget (:mod:`pipflow.language.budget`)
+    answer_size: Callable[[dict, Any], tuple[int, int]]
+
+
+@dataclass(frozen=True)
+class Facts:
+    """What a domain tells a model about the names that feedback messages mention, for a prompt
+    that would otherwise repeat (:mod:`pipflow.language.feedback`): ``together``: groups of names
+    that one message names together (a line of the quoted previous answer that names every name
+    of a group is marked); ``lines``: the world's facts about those names, one line each."""
+
+    together: list[tuple[str, ...]] = field(default_factory=list)
+    lines: list[str] = field(default_factory=list)
 
 
 class TaskDomain(ABC):
@@ -163,6 +178,9 @@ class TaskDomain(ABC):
     grounding: ClassVar[Grounding | None] = None
     #: the switches its ``simulate`` reads from ``options`` (the generic step refuses others)
     simulate_options: ClassVar[tuple[str, ...]] = ()
+    #: the world's sections whose keys name things (PDDL objects, robots): the spellings a plan
+    #: that comes back from UP in lower case is mapped back to (:mod:`pipflow.pddl.names`)
+    name_sections: ClassVar[tuple[str, ...]] = ("robots", "places", "objects")
 
     def workflow_for(self, name: str) -> str:
         """The workflow that carries out method ``name`` on this domain's worlds
@@ -192,6 +210,12 @@ class TaskDomain(ABC):
     def describe(self, world: dict) -> str:
         """One line for the run log: what the world holds."""
         return f"{len(world.get('robots', {}))} robots"
+
+    def places(self, world: dict) -> Mapping[str, Mapping[str, Any]]:
+        """The fixtures of the world's floor plan by name, each a footprint (``x``, ``y``,
+        ``width``, ``depth``) with the ``access`` point robots stand at: what travel
+        (:class:`pipflow.team.travel.TravelMap`) and the path pictures read."""
+        return world.get("places") or {}
 
     def rule_names(self, world: dict) -> Mapping[str, tuple[Any, str]]:
         """For each rule field: the names it may take in this world and what they are called
@@ -238,7 +262,12 @@ class TaskDomain(ABC):
         when the domain's problems are not transport problems."""
         return None
 
-    # -- the LLM check -------------------------------------------------------------------------
+    # -- the LLM loop --------------------------------------------------------------------------
+
+    def feedback_facts(self, messages: list[str], world: dict) -> Facts:
+        """What to tell a model about the names the round's ``messages`` mention when its next
+        prompt would repeat the last one (:class:`Facts`; none by default)."""
+        return Facts()
 
     def second_opinion(self, command: str, world: dict, goal: Any, constraints: list[dict],
                        refusal: str | None, last: bool = False) -> Any | None:

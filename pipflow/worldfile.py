@@ -31,7 +31,7 @@ LIMITS_VARIABLE = "PIPFLOW_WORLD_LIMITS"
 #: the largest number a world or task file may hold (metres, units, skill levels, masses): far
 #: beyond any real floor or stock, and small enough for every solver pipflow drives (SCIP treats
 #: 1e20 as infinity; ENHSP and UP compute in doubles)
-MAX_MAGNITUDE = 10**9
+LARGEST_NUMBER = 10**9
 
 
 def read_world_file(path: str | Path) -> tuple[Path, str]:
@@ -84,7 +84,7 @@ def size_diagnostics(text: str, file: str, kind: str, limits: Mapping[str, int] 
 
 def number_diagnostics(data: Any, locate: Locate) -> list[Diagnostic]:
     """Every number of a parsed file that is not finite (``.nan``, ``.inf``, ``1e400``) or is
-    larger than :data:`MAX_MAGNITUDE`, located. Checked before any other rule, for every domain:
+    larger than :data:`LARGEST_NUMBER`, located. Checked before any other rule, for every domain:
     a NaN compares false with everything, so each later check would pass it silently and it
     would fail far away ("cannot convert float NaN to integer"), and a count of 10**26 would be
     allocated for by whatever meets it first."""
@@ -102,9 +102,9 @@ def number_diagnostics(data: Any, locate: Locate) -> list[Diagnostic]:
         elif isinstance(value, float) and not math.isfinite(value):
             out.append(Diagnostic(locate(path), f"{'/'.join(map(str, path)) or 'value'}: {value} is not a finite "
                                                 "number (write the number itself)"))
-        elif isinstance(value, int | float) and not isinstance(value, bool) and abs(value) > MAX_MAGNITUDE:
+        elif isinstance(value, int | float) and not isinstance(value, bool) and abs(value) > LARGEST_NUMBER:
             out.append(Diagnostic(locate(path), f"{'/'.join(map(str, path))}: {value:g} is larger than any distance, "
-                                                f"count or skill pipflow works with (at most {MAX_MAGNITUDE:,})"))
+                                                f"count or skill pipflow works with (at most {LARGEST_NUMBER:,})"))
     return sorted(out, key=lambda d: (d.location.line, d.location.column) if d.location else (0, 0))
 
 

@@ -302,24 +302,15 @@ def located_reader_error(err: yaml.reader.ReaderError, text: str) -> yaml.Marked
     return yaml.scanner.ScannerError(None, None, f"character #x{code:04x} is not allowed in YAML text ({err.reason})", mark)
 
 
-def _load(text: str, data: bool) -> Any:
+def safe_load(text: str) -> Any:
+    """``yaml.safe_load`` with the limits above; errors are ``yaml.YAMLError`` as there."""
     loader = _SafeCLoader(text)
     try:
-        return loader.get_single_data() if data else loader.get_single_node()
+        return loader.get_single_data()
     except yaml.reader.ReaderError as err:
         raise located_reader_error(err, text) from None
     finally:
         loader.dispose()
-
-
-def compose(text: str) -> yaml.Node | None:
-    """The bounded node tree of a YAML document (``None`` for an empty one)."""
-    return _load(text, data=False)
-
-
-def safe_load(text: str) -> Any:
-    """``yaml.safe_load`` with the limits above; errors are ``yaml.YAMLError`` as there."""
-    return _load(text, data=True)
 
 
 class Locator:

@@ -4,11 +4,13 @@ docs/architecture.md, so `schedule` and the metrics do not care which one ran, a
 allocation cost c_i they used (``total``, the paper's, or ``subtask``; docs/paper.md)."""
 from __future__ import annotations
 
-from typing import Annotated
+from typing import Annotated, Any
 
 from pipflow import Check, Choices, Doc, PathStr, StepContext, step
 from pipflow.errors import AllocationError
-from pipflow.language.asking import require_model
+from pipflow.language.asking import ModelCall, RoundRecord, require_model
+from pipflow.language.cache import ResponseCache
+from pipflow.language.llm import Retry
 from pipflow.language.prompting import find_template, prompt_problem
 from pipflow.liberrors import SCIP, library_errors
 from pipflow.team.scheduling import COSTS, DEFAULT_COST
@@ -16,7 +18,7 @@ from pipflow.team.scheduling import COSTS, DEFAULT_COST
 # the inputs every allocator takes, named once (each step's signature is its contract)
 Graph = Annotated[dict, Doc("output of graph.dependencies")]
 World = Annotated[dict, Doc("output of world.load")]
-RobotRules = Annotated[list | None, Doc("only/never rules: [{only|never: [robots], product?, from?, to?}]")]
+RobotRules = Annotated[list | None, Doc("only/never rules: [{only|never: [robots], FIELD?: name, ...}], FIELD one of the world's task domain's rule fields")]
 LinearRules = Annotated[list | None, Doc("extra linear constraints: [{robots: [..]|all, coef: n|{robot: n}, "
                                          "skill?, sense, rhs, <field>?}]")]
 Speed = Annotated[float, Doc("robot speed, m/s (times in stats and frontier mode)")]
@@ -27,15 +29,15 @@ Cost = Annotated[str, Choices(*COSTS),
                      "(nearest robots: less travel in sum, one robot may do most subtasks)")]
 
 
-def _run(ctx: StepContext, method: str, graph: dict, world: dict, constraints: list | None,
-         linear: list | None, speed: float, handling: float, cost: str, mode: str = "subtask",
-         time_limit: float = 10.0) -> dict:
+def _run(ctx: StepContext, method: str, graph: dict, world: dict, **options: Any) -> dict:
+    """One allocation with ``method``; ``options``: the step's other inputs, the keyword arguments of
+    :func:`pipflow.team.allocation.allocate` (rules unset: none)."""
     # deferred: pulls numpy (~150 ms; the registry loads every step module, e.g. for `pipflow validate`)
     from pipflow.team.allocation import allocate
 
+    options.update(constraints=options.get("constraints") or [], linear=options.get("linear") or [])
     with library_errors(SCIP, AllocationError, f"allocating with {method}"):
-        result = allocate(graph, world, method=method, constraints=constraints or [], linear=linear or [],
-                          mode=mode, speed=speed, handling=handling, time_limit=time_limit, cost=cost)
+        result = allocate(graph, world, method=method, **options)
     ctx.write_artifact("allocation.json", result)
     st = result["stats"]
     ctx.metrics.update({"alloc_median_ms": st["solve_median_ms"], **{f"predicted_{k}": v for k, v in st["predicted"].items()}})
@@ -62,8 +64,8 @@ def scip(
     cost: Cost = DEFAULT_COST,
 ) -> dict:
     """The paper's allocator; the fast first stage gives the same optimum as the naive model."""
-    return _run(ctx, "naive" if naive else "scip", graph, world, constraints, linear, speed, handling,
-                cost, mode, time_limit)
+    return _run(ctx, "naive" if naive else "scip", graph, world, constraints=constraints, linear=linear,
+                speed=speed, handling=handling, cost=cost, mode=mode, time_limit=time_limit)
 
 
 @step("allocate.greedy", doc="Baseline: cheapest capable robots first until the skills are covered.",
@@ -71,7 +73,8 @@ def scip(
 def greedy(ctx: StepContext, graph: Graph, world: World, constraints: RobotRules = None, linear: LinearRules = None,
            speed: Speed = 1.0, handling: Handling = 2.0, cost: Cost = DEFAULT_COST) -> dict:
     """Greedy baseline for comparison with the IP; "cheapest" by ``cost`` (subtask: the nearest)."""
-    return _run(ctx, "greedy", graph, world, constraints, linear, speed, handling, cost)
+    return _run(ctx, "greedy", graph, world, constraints=constraints, linear=linear, speed=speed,
+                handling=handling, cost=cost)
 
 
 @step("allocate.blind", doc="pipflow's cost-blind allocation: fewest robots by robot order, ignoring travel cost "
@@ -81,7 +84,8 @@ def blind(ctx: StepContext, graph: Graph, world: World, constraints: RobotRules 
           speed: Speed = 1.0, handling: Handling = 2.0, cost: Cost = DEFAULT_COST) -> dict:
     """Cost-blind allocation: shows what the allocation strategy buys. It never looks at costs;
     ``cost`` only says what the recorded ``costs`` of each assignment mean."""
-    return _run(ctx, "blind", graph, world, constraints, linear, speed, handling, cost)
+    return _run(ctx, "blind", graph, world, constraints=constraints, linear=linear, speed=speed,
+                handling=handling, cost=cost)
 
 
 @step("allocate.llm",
@@ -114,17 +118,18 @@ def llm(
     ``costs`` are what c_i would have been, for comparison with the IP); each question and answer
     is an artifact (``attemptN-messages.json``, ``attemptN-response.txt``)."""
     resolved = require_model(model, "the allocation of the w/o AS ablation (allocate.llm)")
-    ctx.check_readable(find_template(prompt, ctx.base_dir), f"step {ctx.step_id!r}: prompt template {prompt!r}",
-                       named_as=prompt)
+    template = find_template(prompt, ctx.base_dir)
+    ctx.check_readable(template, f"step {ctx.step_id!r}: prompt template {prompt!r}", named_as=prompt)
     # deferred: pulls numpy through pipflow.team.allocation (~150 ms; the registry loads every step module)
     from pipflow.language.allocator import allocate_by_model
 
+    responses = ResponseCache(ctx.resolve_path(cache_dir) if cache_dir else None) if cache and ctx.use_cache else None
     result = allocate_by_model(
-        graph, world, constraints=constraints, model=resolved, api_base=api_base, prompt=prompt,
-        attempts=attempts, speed=speed, handling=handling, cost=cost, temperature=temperature,
-        max_tokens=max_tokens, timeout=timeout, deadline=deadline,
-        cache_dir=ctx.resolve_path(cache_dir) if cache_dir else None, use_cache=cache and ctx.use_cache,
-        base_dir=ctx.base_dir, save=ctx.write_artifact, log=ctx.log, named=ctx.named_by_user)
+        graph, world, constraints=constraints, prompt=str(template), attempts=attempts,
+        call=ModelCall(model=resolved, api_base=api_base, temperature=temperature, max_tokens=max_tokens,
+                       named=ctx.named_by_user, retry=Retry(timeout=timeout, deadline=deadline)),
+        record=RoundRecord(save=ctx.write_artifact, log=ctx.log, cache=responses),
+        speed=speed, handling=handling, cost=cost)
     ctx.write_artifact("allocation.json", result)
     st = result["stats"]
     ctx.metrics.update({"attempts": st["attempts"], **{f"predicted_{k}": v for k, v in st["predicted"].items()}})

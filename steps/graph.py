@@ -44,7 +44,7 @@ def dependencies(
     plan: Annotated[list, Doc("ordered plan: [{action, args}]")],
     actions: Annotated[Any, Doc("action metadata: path of domains/*.actions.yaml, or its content")],
     mode: Annotated[str, Choices("deorder", "exact", "paper"),
-                    Doc("deorder: only the orders a precondition needs (increments commute; stock and room "
+                    Doc("deorder: only the orders a precondition needs (increments commute; counts and room "
                         "checked for every allowed order); exact: every read/write interaction, transitively "
                         "reduced; paper: Alg. 2's single nearest parent")] = "deorder",
     picture: Annotated[bool, Doc("also draw graph.png (workflows pass pictures == 'always'; see "

@@ -9,9 +9,10 @@ from typing import Annotated
 from pipflow import Check, Choices, Doc, PathStr, StepContext, step
 from pipflow.errors import InputError, Refusal, StepError, TranslationError
 from pipflow.language.agreement import refusal_opinion
-from pipflow.language.asking import ask, require_model
-from pipflow.language.generator import READERS, generate
-from pipflow.language.llm import resolve_model
+from pipflow.language.asking import ModelCall, RoundRecord, ask, require_model
+from pipflow.language.cache import ResponseCache
+from pipflow.language.generator import READERS, LoopRound, generate
+from pipflow.language.llm import Retry, resolve_model
 from pipflow.language.parsing import ParseIssue
 from pipflow.language.prompting import find_template, prompt_problem, render
 from pipflow.language.teamplan import read_team_plan
@@ -83,13 +84,14 @@ def llm_problem(
         template = find_template(prompt, ctx.base_dir)
         ctx.check_readable(template, f"step {ctx.step_id!r}: prompt template {prompt!r}", named_as=prompt)
         prompt = str(template)
+    responses = ResponseCache(ctx.resolve_path(cache_dir) if cache_dir else None) if cache and ctx.use_cache else None
     out = generate(
-        command, world, domain_text, prompt=prompt, model=resolved, temperature=temperature,
-        max_tokens=max_tokens, timeout=timeout, retries=retries, deadline=deadline, api_base=api_base,
-        feedback=feedback, grounded=grounded,
-        cache_dir=ctx.resolve_path(cache_dir) if cache_dir else None, use_cache=cache and ctx.use_cache,
-        base_dir=ctx.base_dir, save=ctx.write_artifact, log=lambda m: _log(ctx, m), previous=previous,
-        reader=reader, named=ctx.named_by_user, locate=locate)
+        command, world, domain_text, prompt=prompt, base_dir=ctx.base_dir,
+        call=ModelCall(model=resolved, api_base=api_base, temperature=temperature, max_tokens=max_tokens,
+                       grounded=grounded, retry=Retry(timeout=timeout, retries=retries, deadline=deadline),
+                       named=ctx.named_by_user),
+        loop=LoopRound(feedback=feedback, previous=previous, reader=reader, locate=locate),
+        record=RoundRecord(save=ctx.write_artifact, log=lambda m: _log(ctx, m), cache=responses))
     ctx.metrics["llm"] = out["usage"]
     text = out.get("response") or ""
     if len(text) > RESPONSE_OUTPUT_CHARS:  # the whole answer is kept once, as artifact response.txt
@@ -208,11 +210,12 @@ def llm_team_plan(
                        named_as=prompt)
     messages = render(prompt, {"command": command, "world": world, "fields": list(tdomain.rule_fields)},
                       ctx.base_dir)
-    answer = ask(messages, model=resolved, api_base=api_base, temperature=temperature,
-                 max_tokens=max_tokens or 1536, timeout=timeout, retries=retries, deadline=deadline,
-                 stop=["\nCommand:"], cache_dir=ctx.resolve_path(cache_dir) if cache_dir else None,
-                 use_cache=cache and ctx.use_cache, save=ctx.write_artifact, log=lambda m: _log(ctx, m),
-                 named=ctx.named_by_user)
+    responses = ResponseCache(ctx.resolve_path(cache_dir) if cache_dir else None) if cache and ctx.use_cache else None
+    answer = ask(messages, stop=["\nCommand:"],
+                 call=ModelCall(model=resolved, api_base=api_base, temperature=temperature,
+                                max_tokens=max_tokens or 1536, named=ctx.named_by_user,
+                                retry=Retry(timeout=timeout, retries=retries, deadline=deadline)),
+                 record=RoundRecord(save=ctx.write_artifact, log=lambda m: _log(ctx, m), cache=responses))
     ctx.metrics["llm"] = answer["usage"]
     try:
         read = read_team_plan(answer["text"], domain_text, problem, world, tdomain.rule_fields)

@@ -18,7 +18,7 @@ from pipflow.pddl.solver import check_engine, problem_digest, remember, remember
 from pipflow.pddl.verifier import verify_plan
 from pipflow.taskdomains import task_domain
 
-DEFAULT_ENGINE = "pipflow-transport"  # see pipflow/pddl/transport.py for why
+DEFAULT_ENGINE = "pipflow-transport"  # see pipflow/warehouse/planner.py for why
 
 
 def _parse(ctx: StepContext, problem: str, domain: str):

@@ -15,13 +15,13 @@ from pipflow.taskdomains import task_domain
 
 
 @step("problem.write",
-      doc="Write the team-level PDDL problem for a goal with the world's task domain's writer: the world's objects and initial state, and the goal (stock goals: one (= (stock s p) n) per count, (>= ...)/(<= ...) per bound).",
+      doc="Write the team-level PDDL problem for a goal with the world's task domain's writer: the world's objects and initial state, and the goal in the domain's form (counts: one (= ...) per count, (>= ...)/(<= ...) per bound).",
       outputs={"problem": "string"},
       cacheable=True)
 def write(
     ctx: StepContext,
     world: Annotated[dict | None, Doc("world dict from world.load")],
-    goal: Annotated[dict | None, Doc("goal {shelf: {product: units or {at_least, at_most}}}")],
+    goal: Annotated[dict | None, Doc("goal in the world's task domain's form (the default domain's: {place: {item: units or {at_least, at_most}}})")],
     domain: Annotated[PathStr, Doc("team-level PDDL domain (its name goes into the problem)")],
     name: Annotated[str, Doc("problem name")] = "task",
 ) -> dict:

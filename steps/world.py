@@ -13,7 +13,7 @@ from pipflow.taskdomains import declared_domain, task_domain
 
 
 @step("world.load",
-      doc="Load a world file (its task domain's format: floor, shelves, products, stock, robots by default), "
+      doc="Load a world file in its task domain's format (the file's domain: key; the default domain's without one), "
           "validated with every problem located.",
       outputs={"world": "object"},
       cacheable=True)

@@ -315,7 +315,7 @@ def test_no_domain_refusal_is_a_refusal(tmp_path):
 
 # --------------------------------------------------------------------------- w/o AS: answers are data
 def problem_answer(goal: dict, rules: list | None = None) -> str:
-    from pipflow.pddl.writer import write_problem
+    from pipflow.warehouse.problem import write_problem
 
     return (f"```pddl\n{write_problem(WORLD, goal)}\n```\n```json\n{json.dumps({'constraints': rules or []})}\n```")
 

@@ -84,7 +84,7 @@ def test_fullwidth_letters_quote_the_users_own_word_with_the_ascii_spelling_as_a
 
 def test_every_word_with_an_unread_character_is_listed_at_once():
     from pipflow.errors import TranslationError
-    from pipflow.language.understand import understand
+    from pipflow.warehouse.language.translator import understand
     from pipflow.warehouse.world import load_world
 
     world = load_world(REPO / "benchmarks/warehouse/world.yaml")
@@ -96,7 +96,7 @@ def test_every_word_with_an_unread_character_is_listed_at_once():
 
 def test_characters_the_readers_do_read_keep_their_reading():
     """Typography that was always read stays read (a regression guard for the alphabet)."""
-    from pipflow.language.understand import understand
+    from pipflow.warehouse.language.translator import understand
     from pipflow.warehouse.world import load_world
 
     world = load_world(REPO / "benchmarks/warehouse/world.yaml")
@@ -119,7 +119,7 @@ def test_characters_the_readers_do_read_keep_their_reading():
 
 def test_a_stray_number_mark_is_refused_not_skipped():
     from pipflow.errors import TranslationError
-    from pipflow.language.understand import understand
+    from pipflow.warehouse.language.translator import understand
     from pipflow.warehouse.world import load_world
 
     world = load_world(REPO / "benchmarks/warehouse/world.yaml")
@@ -145,7 +145,7 @@ def test_a_line_break_between_two_sentences_ends_the_first(tmp_path, capsys):
     ("Put 3 product1 on shelf2.\n\nPut 2 product3 on shelf4.", {"shelf2": {"product1": 3}, "shelf4": {"product3": 2}}),
 ])
 def test_line_breaks_in_warehouse_commands(command, goal):
-    from pipflow.language.understand import understand
+    from pipflow.warehouse.language.translator import understand
     from pipflow.warehouse.world import load_world
 
     world = load_world(REPO / "benchmarks/warehouse/world.yaml")
@@ -156,7 +156,7 @@ def test_a_line_break_that_changes_the_meaning_either_way_is_refused():
     """"Move 2 product1 to shelf2 / and 3 to shelf3" means one thing as two sentences and another
     as one: neither is picked."""
     from pipflow.errors import TranslationError
-    from pipflow.language.understand import understand
+    from pipflow.warehouse.language.translator import understand
     from pipflow.warehouse.world import load_world
 
     world = load_world(REPO / "benchmarks/warehouse/world.yaml")
@@ -185,7 +185,7 @@ def test_a_character_the_household_reader_does_not_read_is_refused_and_quoted(tm
 
 
 def test_household_line_breaks():
-    from pipflow.household.translator import translate
+    from pipflow.household.language.translator import translate
     from pipflow.household.world import load_world
 
     world = load_world(REPO / "benchmarks/household/world.yaml")

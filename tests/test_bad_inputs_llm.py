@@ -121,7 +121,7 @@ def serve():
 
 
 def good_answer() -> str:
-    from pipflow.pddl.writer import write_problem
+    from pipflow.warehouse.problem import write_problem
     from pipflow.warehouse.world import load_world
 
     return f"```pddl\n{write_problem(load_world(WORLD_FILE), {'shelf3': {'product1': 7}})}\n```"
@@ -204,7 +204,7 @@ def test_a_server_that_trickles_bytes_is_abandoned_at_the_time_out(serve):
     started = time.monotonic()
     with pytest.raises(LLMError, match=r"Timeout after 2 attempts.*kept the connection open"):
         llm.complete([{"role": "user", "content": "hi"}], model="openai/fake", api_base=server.api_base,
-                     timeout=1, retries=1, backoff=0.1)
+                     retry=llm.Retry(timeout=1, retries=1, backoff=0.1))
     assert time.monotonic() - started < 6, "two requests of 1 s (+1 s grace each), not 20 s of trickle"
     assert len(server.requests) == 2
 
@@ -219,7 +219,7 @@ def test_malformed_answers_are_clear_errors(serve, body):
     server = serve([{"body": body}])
     with pytest.raises(LLMError, match=r"^openai/fake: "):
         llm.complete([{"role": "user", "content": "hi"}], model="openai/fake", api_base=server.api_base,
-                     retries=0, timeout=5)
+                     retry=llm.Retry(retries=0, timeout=5))
     assert len(server.requests) == 1
 
 
@@ -296,7 +296,9 @@ def test_impossible_call_settings_are_user_errors_before_any_request(serve, args
     from pipflow.language import llm
 
     server = serve(["never asked"])
-    call = {"model": "openai/fake", "api_base": server.api_base, **args}
+    limits = {k: v for k, v in args.items() if k in ("timeout", "deadline", "retries")}
+    call = {"model": "openai/fake", "api_base": server.api_base, "retry": llm.Retry(**limits),
+            **{k: v for k, v in args.items() if k not in limits}}
     with pytest.raises(InputError, match=words):
         llm.complete([{"role": "user", "content": "hi"}], **call)
     assert server.requests == []

@@ -28,7 +28,7 @@ pytestmark = pytest.mark.usefixtures("no_hang")
 
 @pytest.fixture(scope="module")
 def problem():
-    from pipflow.pddl.writer import write_problem
+    from pipflow.warehouse.problem import write_problem
     from pipflow.warehouse.world import load_world
 
     world = load_world(REPO / "benchmarks/warehouse/world.yaml")

@@ -23,7 +23,7 @@ import yaml
 import pipflow
 from fake_openai import FakeOpenAI
 from pipflow.engine.cli import main
-from pipflow.pddl.writer import write_problem
+from pipflow.warehouse.problem import write_problem
 from pipflow.warehouse.world import load_world
 
 REPO = Path(__file__).resolve().parents[1]

@@ -380,7 +380,7 @@ def test_a_run_that_executes_another_goal_than_the_gold_is_misread(tmp_path):
 
 
 def test_understanding_compares_bounds_as_ranges_and_rules_as_sets():
-    from pipflow.warehouse.understanding import understanding as understand
+    from pipflow.warehouse.meaning import understanding as understand
 
     task = {"goal": {"s1": {"p1": 3, "p2": {"at_least": 2}}},
             "constraints": [{"never": ["r1", "r0"], "product": "p1"}, {"only": ["r2"]}]}

@@ -14,10 +14,10 @@ from hypothesis import strategies as st
 
 from pipflow.errors import InputError, WorldError
 from pipflow.goalcounts import describe, holds, limits, value_problems
-from pipflow.pddl.common import parse, stock_goals
-from pipflow.pddl.feasibility import infeasibility_reasons
-from pipflow.pddl.verifier import goal_problems, verify_plan
-from pipflow.pddl.writer import write_problem
+from pipflow.pddl.common import parse
+from pipflow.warehouse.feasibility import infeasibility_reasons
+from pipflow.pddl.verifier import verify_plan
+from pipflow.warehouse.problem import goal_problems, stock_goals, write_problem
 from pipflow.warehouse.world import load_tasks, load_world
 
 ROOT = Path(__file__).resolve().parents[1]

@@ -241,7 +241,7 @@ def test_deordered_schedule_runs_in_pybullet_and_is_shorter(task_id):
     from pipflow.team.allocation import allocate
     from pipflow.pddl.common import parse
     from pipflow.pddl.solver import solve_problem
-    from pipflow.pddl.writer import write_problem
+    from pipflow.warehouse.problem import write_problem
     from pipflow.team.scheduling import build_schedule
     from pipflow.warehouse.simulation import simulate
     from pipflow.warehouse.world import load_tasks

@@ -15,7 +15,7 @@ from pipflow.pddl.common import parse
 from pipflow.pddl.debugger import debug_problem
 from pipflow.pddl.solver import solve_problem
 from pipflow.pddl.verifier import verify_plan
-from pipflow.pddl.writer import write_problem
+from pipflow.warehouse.problem import write_problem
 
 ROOT = Path(__file__).resolve().parents[1]
 DOMAIN = ROOT / "domains" / "warehouse.pddl"
@@ -65,7 +65,7 @@ import yaml
 from pipflow.pddl.debugger import debug_problem
 from pipflow.pddl.solver import solve_problem
 from pipflow.pddl.verifier import verify_plan
-from pipflow.pddl.writer import write_problem
+from pipflow.warehouse.problem import write_problem
 world = yaml.safe_load(open({str(ROOT / 'benchmarks' / 'warehouse' / 'world.yaml')!r}))
 report = debug_problem(write_problem(world, {GOAL!r}), {str(DOMAIN)!r}, world)
 robots = {{n: r["skills"]["carry"] for n, r in world["robots"].items()}}
@@ -158,15 +158,15 @@ def grammar_cache(tmp_path, monkeypatch):
 
 def _command_parser():
     from pipflow.language import earley
-    from pipflow.language.grammar import GRAMMAR, nullable_optionals
+    from pipflow.warehouse.language.grammar import GRAMMAR, nullable_optionals
 
     return earley.earley_parser(nullable_optionals(GRAMMAR), lexer=earley.ListLexer, keep_all_tokens=True,
                                 ambiguity="explicit")
 
 
 def _sentences():
-    from pipflow.language.lexicon import Lexicon
-    from pipflow.language.parser import keywords
+    from pipflow.warehouse.language.lexicon import Lexicon
+    from pipflow.warehouse.language.parser import keywords
 
     for command in COMMANDS:
         yield from Lexicon(WORLD, keywords()).sentences(command)
@@ -206,7 +206,7 @@ def test_parser_from_disk_reads_like_a_fresh_one(grammar_cache, monkeypatch):
 
 def test_parsed_command_is_the_same_with_a_loaded_parser(grammar_cache, monkeypatch):
     """The whole reading (order statements and rules), not only the tree."""
-    from pipflow.language import parser
+    from pipflow.warehouse.language import parser
 
     parser._all_readings_parser.cache_clear()
     try:
@@ -390,7 +390,8 @@ def test_a_new_process_loads_the_parser_another_one_stored(tmp_path):
     code = f"""
 import json, sys
 import yaml
-from pipflow.language import earley, parser
+from pipflow.language import earley
+from pipflow.warehouse.language import parser
 if sys.argv[1] == "load":
     def refuse(*args, **kwargs):
         raise SystemExit("built, not loaded")

@@ -31,7 +31,7 @@ def test_translator_reads_every_name_from_the_unseen_world():
     import yaml
 
     from pipflow.errors import Refusal
-    from pipflow.language.understand import translate
+    from pipflow.warehouse.language.translator import translate
     from pipflow.warehouse.world import load_world
 
     tasks = yaml.safe_load(TASKS.read_text())["tasks"]

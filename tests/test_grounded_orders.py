@@ -21,11 +21,11 @@ from conftest import local_model_server
 import pipflow
 from fake_openai import FakeOpenAI
 from pipflow import StepContext
-from pipflow.language import grounding
-from pipflow.language.llm_orders import explain_goal, read_grounded
-from pipflow.language.order import order_schema, validate_order
+from pipflow.warehouse.language import grounding
+from pipflow.warehouse.language.llm_orders import explain_goal, read_grounded
+from pipflow.warehouse.language.order import order_schema, validate_order
 from pipflow.language.parsing import ParseIssue
-from pipflow.pddl.writer import write_problem
+from pipflow.warehouse.problem import write_problem
 from pipflow.warehouse.world import load_world
 
 REPO = Path(__file__).resolve().parents[1]

@@ -92,7 +92,7 @@ def test_task_file_errors_are_located(tmp_path):
 def test_every_gold_goal_plans_and_validates(world, tasks):
     """Each task's ground truth, written as a problem, is solved by ENHSP and the plan validates."""
     from pipflow.household.problem import write_problem
-    from pipflow.household.translator import resolve_counts
+    from pipflow.household.language.translator import resolve_counts
     from pipflow.pddl.common import parse
     from pipflow.pddl.debugger import debug_problem
     from pipflow.pddl.solver import solve_problem
@@ -145,7 +145,7 @@ def test_debugger_checks_household_problems_against_the_world(world):
 def test_translator_matches_ground_truth(world, tasks):
     """Compound and complex commands all translate to their ground truth; vague ones where the
     world's categories resolve them, and the rest are refused clearly (never a wrong guess)."""
-    from pipflow.household.translator import translate
+    from pipflow.household.language.translator import translate
 
     refused = []
     for t in tasks["tasks"]:
@@ -165,7 +165,7 @@ def test_translator_matches_ground_truth(world, tasks):
 
 
 def test_translator_refusals(world):
-    from pipflow.household.translator import translate
+    from pipflow.household.language.translator import translate
 
     with pytest.raises(Refusal, match="not sliceable"):
         translate("Slice the mug.", world)
@@ -178,7 +178,7 @@ def test_translator_refusals(world):
 
 
 def test_counts_resolve_to_nearest_members(world):
-    from pipflow.household.translator import translate
+    from pipflow.household.language.translator import translate
 
     out = translate("Gather up 3 school supplies on the bed.", world)
     assert out["goal"] == {"in": {}, "state": {}, "count": [{"category": "school-supply", "in": "bed", "at_least": 3}]}

@@ -18,7 +18,7 @@ from conftest import local_model_server
 from pipflow import StepContext
 from pipflow.errors import InputError
 from pipflow.household.domain import GOAL_PLACEHOLDER, HouseholdDomain
-from pipflow.language import generator, llm
+from pipflow.language import asking, generator, llm
 
 ROOT = Path(__file__).resolve().parent.parent
 WORLD = ROOT / "benchmarks" / "household" / "world.yaml"
@@ -57,7 +57,7 @@ def mock_answers(monkeypatch, answers: list[str]) -> list[list[dict]]:
         text = answers[min(len(seen), len(answers)) - 1]
         return llm.complete(messages, **{**kw, "extra": {**(kw.get("extra") or {}), "mock_response": text}})
 
-    monkeypatch.setattr(generator, "complete", fake)
+    monkeypatch.setattr(asking, "complete", fake)
     return seen
 
 

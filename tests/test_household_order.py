@@ -34,7 +34,7 @@ def _norm(goal: dict) -> tuple:
 
 
 def goal_of(command: str, world: dict) -> tuple:
-    from pipflow.household.translator import translate
+    from pipflow.household.language.translator import translate
 
     return _norm(translate(command, world)["goal"])
 
@@ -107,7 +107,7 @@ def test_exceptions_and_overrides(world):
     with pytest.raises(TranslationError, match="is not one of"):
         goal_of("Switch off the lights except the TV.", world)
     # a sequence ends in its last state, and says so
-    from pipflow.household.translator import translate
+    from pipflow.household.language.translator import translate
 
     out = translate("Open the fridge, take out the milk, put it on the table and close the fridge.", world)
     assert _norm(out["goal"]) == ({"diningtable": ["milk"]}, {"fridge": ["closed"]}, [])
@@ -180,7 +180,7 @@ def test_never_a_silent_misreading(world):
 
 
 def test_typos_are_read_and_said(world):
-    from pipflow.household.translator import translate
+    from pipflow.household.language.translator import translate
 
     out = translate("Put the tomatoe in the fridgge.", world)
     assert _norm(out["goal"]) == ({"fridge": ["tomato"]}, {"fridge": ["closed"]}, [])
@@ -206,7 +206,7 @@ def test_exception_by_state_both_and_a_heater_named_by_pronoun(world):
 
 
 def test_explain_names_the_words_of_each_condition(world):
-    from pipflow.household.translator import translate
+    from pipflow.household.language.translator import translate
 
     out = translate("Heat the egg in the microwave and nobody is watching the TV.", world)
     assert "egg hot, from 'heat the egg in the microwave'" in out["explain"]
@@ -215,8 +215,8 @@ def test_explain_names_the_words_of_each_condition(world):
 
 # ------------------------------------------------------------------------------ orders as data
 def test_every_reading_validates_against_the_schema(world):
-    from pipflow.household.order import order_problems
-    from pipflow.household.parser import parse
+    from pipflow.household.language.order import order_problems
+    from pipflow.household.language.parser import parse
 
     for command in ["Slice the lettuce, trash the mug and switch off the floor lamp.",
                     "Take the milk out of the fridge and put it on the dining table.",
@@ -230,8 +230,8 @@ def test_every_reading_validates_against_the_schema(world):
 
 
 def test_a_malformed_order_is_refused_by_the_resolver(world):
-    from pipflow.household.order import order_problems
-    from pipflow.household.resolver import resolve
+    from pipflow.household.language.order import order_problems
+    from pipflow.household.language.resolver import resolve
 
     bad = {"domain": "household", "statements": [{"op": "change", "things": [], "to": "purple", "words": "x"}]}
     assert len(order_problems(bad)) >= 1
@@ -242,7 +242,7 @@ def test_a_malformed_order_is_refused_by_the_resolver(world):
 def test_ambiguous_readings_that_differ_are_refused(world):
     """'put everything on the sofa' is a take-from (then where?) or a put-onto; the grammar keeps
     both readings and the translator does not pick one silently."""
-    from pipflow.household.parser import parse
+    from pipflow.household.language.parser import parse
 
     assert len(parse("Put everything on the sofa on the bed.", world)) >= 1
     with pytest.raises(TranslationError):
@@ -271,7 +271,7 @@ STILL_REFUSED = {"hk-07": "'nobody is in the kitchen': the home model has no roo
 
 @pytest.mark.parametrize("w,task", _set_tasks())
 def test_generalization_set_is_understood(w, task):
-    from pipflow.household.translator import translate
+    from pipflow.household.language.translator import translate
 
     assert task.get("construction"), "every command of the set names its construction"
     if task["feasible"] is False:
@@ -531,7 +531,7 @@ def _statement(world: dict):
 def test_random_orders_read_back(world, data):
     """Random orders (a few statements over distinct things), rendered to English with varying
     verbs, prepositions and joiners, parse back to the same goal."""
-    from pipflow.household.translator import _leave_closed
+    from pipflow.household.language.translator import _leave_closed
 
     picked = data.draw(st.lists(_statement(world), min_size=1, max_size=3, unique_by=lambda s: s[1][1]))
     joiners = [data.draw(st.sampled_from([", ", " and ", ", then ", ". "])) for _ in picked[1:]]

@@ -223,7 +223,7 @@ def test_the_team_planner_reaches_every_feasible_gold_and_no_infeasible_one(path
     the transport planner's flow plan, replayed move by move within stock and capacities, ends
     in a state that meets the goal; each written infeasible goal is proven unsolvable. A gold
     that no plan reaches would score a correct reading as a failure."""
-    from pipflow.pddl.transport import Unsolvable, flow_plan, instance_from_world
+    from pipflow.warehouse.planner import Unsolvable, flow_plan, instance_from_world
 
     world = _world_of(path)
     wrong = []

@@ -81,7 +81,7 @@ def test_a_real_up_engine_error_is_an_error_outcome_naming_unified_planning():
 def test_a_bug_in_pipflows_own_engine_is_not_an_error_outcome(monkeypatch):
     """pipflow-transport is pipflow's code: its bug must keep its traceback, not read as the
     planner's failure (a bare except would have hidden it)."""
-    import pipflow.pddl.transport as transport
+    import pipflow.warehouse.planner as transport
 
     def broken(problem):
         raise ZeroDivisionError("a bug in the transport planner")
@@ -95,7 +95,7 @@ def test_a_bug_in_pipflows_own_engine_is_not_an_error_outcome(monkeypatch):
 def test_a_scip_error_inside_pipflows_own_engine_is_an_error_outcome(monkeypatch):
     """pipflow-transport solves integer programs with SCIP: SCIP failing there is the engine's
     failure (an error outcome naming SCIP), not a bug of pipflow's."""
-    import pipflow.pddl.transport as transport
+    import pipflow.warehouse.planner as transport
     from pyscipopt import Model
 
     def scip_fails(problem):

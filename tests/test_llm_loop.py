@@ -19,7 +19,7 @@ import pytest
 import pipflow
 from fake_openai import FakeOpenAI
 from pipflow.language import agreement, feedback
-from pipflow.pddl.writer import write_problem
+from pipflow.warehouse.problem import write_problem
 from pipflow.warehouse import agreement as warehouse_agreement
 from pipflow.warehouse.world import load_world
 

@@ -10,10 +10,11 @@ import yaml
 
 from pipflow import StepContext
 from pipflow.errors import InputError, LLMError
-from pipflow.language import generator
-from pipflow.language import grounding, llm
-from pipflow.pddl import writer as pddl_writer
-from pipflow.language.llm_orders import read_grounded
+from pipflow.language import asking, generator
+from pipflow.language import llm
+from pipflow.warehouse import problem as pddl_writer
+from pipflow.warehouse.language import grounding
+from pipflow.warehouse.language.llm_orders import read_grounded
 from pipflow.language.parsing import ParseIssue, extract_constraints, extract_problem, validate_constraints
 from pipflow.language.prompting import render
 
@@ -27,7 +28,7 @@ PROBLEM = """(define (problem p) (:domain warehouse)
 
 
 def fake_writer(world: dict, goal: dict, **_names) -> str:
-    """Stands in for pipflow.pddl.writer.write_problem (the warehouse domain's writer): the goal, visibly."""
+    """Stands in for pipflow.warehouse.problem.write_problem (the warehouse domain's writer): the goal, visibly."""
     return "(define (problem written) " + json.dumps(goal, sort_keys=True) + ")"
 
 
@@ -147,15 +148,15 @@ def test_grounded_answer_becomes_goal_and_constraints():
 def test_rate_limits_are_retried_with_backoff_then_fail_clearly():
     slept: list[float] = []
     with pytest.raises(LLMError, match="RateLimitError after 3 attempts"):
-        llm.complete([{"role": "user", "content": "hi"}], model="gpt-4o-mini", retries=2,
-                     extra={"mock_response": "litellm.RateLimitError"}, sleep=slept.append)
+        llm.complete([{"role": "user", "content": "hi"}], model="gpt-4o-mini",
+                     extra={"mock_response": "litellm.RateLimitError"}, retry=llm.Retry(retries=2, sleep=slept.append))
     assert slept == [1.0, 2.0]
 
 
 def test_api_keys_never_appear_in_errors(monkeypatch):
     monkeypatch.setenv("SOMEPROVIDER_API_KEY", "sk-very-secret-value")
     with pytest.raises(LLMError) as info:
-        llm.complete([{"role": "user", "content": "hi"}], model="gpt-4o-mini", retries=0,
+        llm.complete([{"role": "user", "content": "hi"}], model="gpt-4o-mini", retry=llm.Retry(retries=0),
                      extra={"mock_response": Exception("denied for sk-very-secret-value")})
     assert "sk-very-secret-value" not in str(info.value) and "***" in str(info.value)
 
@@ -185,7 +186,7 @@ def mock_provider(monkeypatch, answer: str) -> list[dict]:
         return llm.complete(messages, **{**kw, "extra": {**(kw.get("extra") or {}),
                                                          "mock_response": answer}})
 
-    monkeypatch.setattr(generator, "complete", fake)
+    monkeypatch.setattr(asking, "complete", fake)
     monkeypatch.setattr(pddl_writer, "write_problem", fake_writer)
     return calls
 
@@ -240,10 +241,10 @@ def test_offline_model_uses_translator_and_writer(tmp_path, monkeypatch):
     import sys
     import types
 
-    fake = types.ModuleType("pipflow.language.understand")
+    fake = types.ModuleType("pipflow.warehouse.language.translator")
     fake.understand = lambda command, world: {"goal": {"shelf3": {"product1": 7}}, "constraints": [],
                                               "order": {"statements": [], "rules": []}, "explanation": []}
-    monkeypatch.setitem(sys.modules, "pipflow.language.understand", fake)
+    monkeypatch.setitem(sys.modules, "pipflow.warehouse.language.translator", fake)
     monkeypatch.setattr(pddl_writer, "write_problem", fake_writer)
     out, art = run_step(tmp_path, model="offline")
     assert out["goal"] == {"shelf3": {"product1": 7}} and out["usage"]["calls"] == 0

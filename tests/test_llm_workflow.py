@@ -7,8 +7,8 @@ import json
 from pathlib import Path
 
 from pipflow.engine import RunOptions, run_workflow
-from pipflow.language import generator, llm
-from pipflow.pddl.writer import write_problem
+from pipflow.language import asking, generator, llm
+from pipflow.warehouse.problem import write_problem
 from pipflow.warehouse.world import load_world
 
 REPO = Path(__file__).resolve().parents[1]
@@ -26,7 +26,7 @@ def test_a_model_corrected_by_the_debugger_drives_the_whole_pipeline(tmp_path, m
         prompts.append(messages[-1]["content"])
         return llm.complete(messages, **{**kw, "extra": {**(kw.get("extra") or {}), "mock_response": answers.pop(0)}})
 
-    monkeypatch.setattr(generator, "complete", provider)
+    monkeypatch.setattr(asking, "complete", provider)
     command = ("There should be 20 product1 in shelf2, 16 product1 in shelf4, 2 product1 in shelf3. "
                "But robot 0 should not be used to move product1 from one shelf to another.")
     result = run_workflow("warehouse", {"command": command, "model": "openai/gpt-4o-mini"},

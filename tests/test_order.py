@@ -8,8 +8,8 @@ import jsonschema
 import pytest
 
 from pipflow.errors import Refusal, TranslationError
-from pipflow.language.order import order_schema, validate_order
-from pipflow.language.resolver import resolve, split_evenly
+from pipflow.warehouse.language.order import order_schema, validate_order
+from pipflow.warehouse.language.resolver import resolve, split_evenly
 from pipflow.resources import data_file
 
 WORLD = {

@@ -12,10 +12,10 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from pipflow.errors import InputError, Refusal, TranslationError
-from pipflow.language.order import validate_order
-from pipflow.language.parser import parse
-from pipflow.language.resolver import resolve
-from pipflow.language.understand import understand
+from pipflow.warehouse.language.order import validate_order
+from pipflow.warehouse.language.parser import parse
+from pipflow.warehouse.language.resolver import resolve
+from pipflow.warehouse.language.translator import understand
 
 ROOT = Path(__file__).resolve().parent.parent
 PAPER = yaml.safe_load((ROOT / "benchmarks" / "warehouse" / "world.yaml").read_text())
@@ -267,7 +267,7 @@ def test_misreadings_of_the_issue_are_gone() -> None:
 def test_a_sentence_read_two_ways_that_mean_different_things_is_refused(monkeypatch) -> None:
     """ "from shelf1 to shelf2" parses as one route or as "from" then "to"; both mean one move,
     so the rule is understood. Were the meanings different, nothing would be guessed."""
-    from pipflow.language import parser as parser_module
+    from pipflow.warehouse.language import parser as parser_module
 
     command = "robot 3 must not move product1 from shelf1 to shelf2"
     assert got(command)[1] == [{"never": ["robot3"], "product": "product1", "from": "shelf1", "to": "shelf2"}]

@@ -11,10 +11,10 @@ from pipflow import StepContext
 from pipflow.pddl.common import parse
 from pipflow.pddl.debugger import debug_problem
 from pipflow.pddl.solver import solve_problem
-from pipflow.pddl.transport import instance_from_problem
-from pipflow.pddl.bounds import exact_moves, fewest_moves
+from pipflow.warehouse.planner import instance_from_problem
+from pipflow.warehouse.bounds import exact_moves, fewest_moves
 from pipflow.pddl.verifier import verify_plan
-from pipflow.pddl.writer import write_problem
+from pipflow.warehouse.problem import write_problem
 from pipflow.warehouse.world import load_tasks, load_world
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -168,7 +168,7 @@ def test_full_shelves_swap_through_a_third():
 
 
 def test_scale_instance_under_30s():
-    from pipflow.pddl.generate import scale_instance
+    from pipflow.warehouse.generate import scale_instance
 
     world, goal = scale_instance(50, 10, 2000)
     problem = parse(DOMAIN, write_problem(world, goal))

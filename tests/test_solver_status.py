@@ -9,7 +9,7 @@ import pytest
 
 from pipflow.pddl.common import parse
 from pipflow.pddl.solver import POSITIVE_OUTCOMES, SolveResult, Status, solve_problem
-from pipflow.pddl.writer import write_problem
+from pipflow.warehouse.problem import write_problem
 
 ROOT = Path(__file__).resolve().parent.parent
 DOMAIN = (ROOT / "domains" / "warehouse.pddl").read_text()

@@ -10,10 +10,10 @@ from pathlib import Path
 
 import pytest
 
-from pipflow.pddl.bounds import exact_moves, fewest_moves
+from pipflow.warehouse.bounds import exact_moves, fewest_moves
 from pipflow.pddl.common import parse
 from pipflow.pddl.solver import solve_problem
-from pipflow.pddl.transport import (Instance, NotTransport, Stuck, Unsolvable, coalition_limit, flow_plan,
+from pipflow.warehouse.planner import (Instance, NotTransport, Stuck, Unsolvable, coalition_limit, flow_plan,
                                     instance_from_problem, instance_from_world, lower_bound, solve_instance)
 
 ROOT = Path(__file__).resolve().parents[1]

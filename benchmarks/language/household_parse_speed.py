@@ -18,8 +18,8 @@ from pathlib import Path
 
 import yaml
 
-from pipflow.household.grammar import classes
-from pipflow.household.parser import _dual_classes, _lark, tag
+from pipflow.household.language.grammar import classes
+from pipflow.household.language.parser import _dual_classes, _lark, tag
 from pipflow.household.world import load_world
 
 HERE = Path(__file__).resolve().parent

@@ -21,7 +21,7 @@ def _read(command: str, world: dict) -> dict:
     """The translator's reading: the goal as the command states it (counts kept) and the words
     each condition comes from."""
     # deferred: builds the lark parser (~150 ms; only a check of a model's reading needs it)
-    from pipflow.household.translator import translate
+    from pipflow.household.language.translator import translate
 
     got = translate(command, world)
     return {"goal": got["goal"], "words": got.get("words") or {}}

@@ -22,7 +22,7 @@ from pipflow.household.problem import goal_from_problem, goal_refusal, world_mis
 from pipflow.household.scoring import CATEGORIES, bench_table, load_tasks, score_bench_run, score_run, understanding
 from pipflow.household.simulation import simulate
 from pipflow.language.offline import NO_USAGE
-from pipflow.pddl.common import goal_atoms, stock_goals
+from pipflow.pddl.common import goal_atoms
 from pipflow.resources import data_file
 from pipflow.taskdomain import GoalCheck, Save, TaskDomain, flat_simulation, pddl_domain_name
 
@@ -70,7 +70,7 @@ class HouseholdDomain(TaskDomain):
         Untranslatable commands raise TranslationError, impossible ones Refusal (the same as step
         ``household.problem``)."""
         # deferred: builds the lark parser (~150 ms; only offline reading needs it)
-        from pipflow.household.translator import translate
+        from pipflow.household.language.translator import translate
 
         result = translate(command, world)
         problem = self.write_problem(world, result["concrete"], pddl_domain_name(domain_text, self.name))
@@ -101,9 +101,9 @@ class HouseholdDomain(TaskDomain):
 
     def check_goal(self, parsed: Any, world: dict | None) -> GoalCheck:
         """A goal no plan can reach (slicing a mug) is refused, the reason also a message (the
-        paper's loop feeds it back); the step's ``goal`` output stays the stock-goal form every
-        domain shares (empty for household problems)."""
-        goal = stock_goals(parsed)[0]
+        paper's loop feeds it back); the step's ``goal`` output is empty for household problems
+        (the goal conditions are the problem step's ``goal``)."""
+        goal: dict = {}
         if world is None:
             return GoalCheck(goal)
         refusal = goal_refusal(world, goal_from_problem(parsed))

@@ -8,7 +8,7 @@ Goal conditions (task ground truth and translator output share this shape)::
      "count": [{"category": C, "in": PLACE, "at_least": N}]}   # vague: any N members of C
 
 ``count`` conditions cannot be written as PDDL as they stand (which members?); the translator
-resolves them to concrete ``in`` conditions first (:func:`pipflow.household.translator.resolve_counts`).
+resolves them to concrete ``in`` conditions first (:func:`pipflow.household.language.translator.resolve_counts`).
 The initial state is exactly the world's, so the debugger can demand it of any generated problem.
 """
 from __future__ import annotations

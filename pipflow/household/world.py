@@ -213,10 +213,6 @@ def entity(world: dict, name: str) -> dict:
     return world["places"].get(name) or world["objects"][name]
 
 
-def has(world: dict, name: str, prop: str) -> bool:
-    return prop in entity(world, name)["properties"]
-
-
 def members(world: dict, category: str) -> list[str]:
     """Places and objects of a category, in world order."""
     return [n for n, e in {**world["places"], **world["objects"]}.items() if category in e["categories"]]

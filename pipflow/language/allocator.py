@@ -20,10 +20,10 @@ whoever allocated it (the IP never proposes one).
 from __future__ import annotations
 
 import time
-from typing import Any, Callable
+from typing import Any
 
 from pipflow.errors import AllocationError, InputError
-from pipflow.language.asking import Save, ask
+from pipflow.language.asking import ModelCall, RoundRecord, ask
 from pipflow.language.jsonanswer import json_object
 from pipflow.language.parsing import ParseIssue
 from pipflow.language.prompting import render
@@ -129,33 +129,26 @@ def _short(value: Any) -> str:
     return text if len(text) <= 60 else text[:57] + "..."
 
 
-def allocate_by_model(graph: dict, world: dict, *, constraints: list[dict] | None, model: str,
-                      api_base: str | None, prompt: str, attempts: int = 3, speed: float = 1.0,
-                      handling: float = 2.0, cost: str = "total", temperature: float = 0.0,
-                      max_tokens: int = 1024, timeout: float = 60.0, retries: int = 2,
-                      deadline: float | None = None, cache_dir: Any = None, use_cache: bool = True,
-                      base_dir: Any = None, save: Save | None = None,
-                      log: Callable[[str], None] = lambda m: None,
-                      named: Callable[[str], bool] | None = None) -> dict:
+def allocate_by_model(graph: dict, world: dict, *, constraints: list[dict] | None, prompt: str, call: ModelCall,
+                      record: RoundRecord = RoundRecord(), attempts: int = 3, **timing: Any) -> dict:
     """The allocation contract (docs/architecture.md) of the model's answer: ``method: llm``, the
-    assignments in the model's order with each robot's cost c_i as ``cost`` defines it (what
-    the IP would have seen, for comparison), and ``stats`` (``attempts``, the problems of every
-    refused answer). Raises :class:`AllocationError` when the last answer is still refused."""
+    assignments in the model's order with each robot's cost c_i as ``timing["cost"]`` defines it
+    (what the IP would have seen, for comparison), and ``stats`` (``attempts``, the problems of
+    every refused answer). ``prompt``: the template's path; ``timing``: the
+    :class:`~pipflow.team.scheduling.Timeline`'s ``speed``, ``handling`` and ``cost``. Raises
+    :class:`AllocationError` when the last answer is still refused."""
     if attempts < 1:
         raise InputError(f"attempts must be at least 1, got {attempts}")
     started = time.perf_counter()
     constraints = list(constraints or [])
-    shown = describe(graph, world, Timeline(world, speed=speed, handling=handling, cost=cost), constraints)
+    shown = describe(graph, world, Timeline(world, **timing), constraints)
     history: list[dict] = []
     assignments: list[dict] = []
     if graph["nodes"]:  # nothing to allocate: no question
-        assignments, history = _ask_until_valid(graph, world, constraints, shown, attempts, prompt, base_dir, dict(
-            model=model, api_base=api_base, temperature=temperature, max_tokens=max_tokens, timeout=timeout,
-            retries=retries, deadline=deadline, cache_dir=cache_dir, use_cache=use_cache, save=save, log=log,
-            named=named))
+        assignments, history = _ask_until_valid(graph, world, constraints, shown, attempts, prompt, call, record)
     nodes = {n["id"]: n for n in graph["nodes"]}
     preds = predecessors(graph)
-    timeline = Timeline(world, speed=speed, handling=handling, cost=cost)
+    timeline = Timeline(world, **timing)
     committed = []
     for a in assignments:
         node = nodes[a["subtask"]]
@@ -172,14 +165,14 @@ def allocate_by_model(graph: dict, world: dict, *, constraints: list[dict] | Non
 
 
 def _ask_until_valid(graph: dict, world: dict, constraints: list[dict], shown: dict, attempts: int, prompt: str,
-                     base_dir: Any, call: dict) -> tuple[list[dict], list[dict]]:
+                     call: ModelCall, record: RoundRecord) -> tuple[list[dict], list[dict]]:
     """Ask, check, and ask again with the problems as feedback, at most ``attempts`` times:
     (the valid assignments, the record of every attempt). Raises AllocationError."""
     history: list[dict] = []
     feedback: list[str] = []
     for attempt in range(1, attempts + 1):
-        messages = render(prompt, {**shown, "feedback": feedback}, base_dir)
-        answer = ask(messages, name=f"attempt{attempt}-", **call)
+        messages = render(prompt, {**shown, "feedback": feedback})
+        answer = ask(messages, call=call, record=record, name=f"attempt{attempt}-")
         try:
             assignments, problems = check_answer(json_object(answer["text"]), graph, world, constraints)
         except ParseIssue as issue:
@@ -187,7 +180,7 @@ def _ask_until_valid(graph: dict, world: dict, constraints: list[dict], shown: d
         history.append({"attempt": attempt, "problems": problems, "usage": answer["usage"]})
         if not problems:
             return assignments, history
-        call["log"](f"allocate.llm: answer {attempt} refused: {'; '.join(problems)}")
+        record.log(f"allocate.llm: answer {attempt} refused: {'; '.join(problems)}")
         feedback = problems
     raise AllocationError(f"the model's allocation was refused {attempts} time(s); the last answer: "
                           + "; ".join(history[-1]["problems"]))

@@ -12,6 +12,8 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from pipflow.taskdomain import Grounding
+
 #: characters per token of PDDL and JSON for small models' tokenizers (names split into word and
 #: digits, every parenthesis a token): measured 2.88 (PDDL) and 2.61 (grounded JSON) on SmolLM2-135M
 #: for the paper's world; 2.6 leaves room for other tokenizers
@@ -46,13 +48,10 @@ def grounded_budget(goal_items: int, rules: int) -> int:
     return max(GROUNDED_FLOOR, 2 * (max(goal_items, 2) * ITEM_TOKENS + max(rules, 2) * RULE_TOKENS) + GROUNDED_MARGIN)
 
 
-def answer_budget(world: dict, grounded: bool, example: str | None, reading: Any = None) -> int:
-    """The ``max_tokens`` of one call: from the offline reading's goal when the parser read the
-    command (grounded), else from the world's size (every shelf x product, for grounded) or the
-    example problem (free)."""
-    if grounded:
-        if isinstance(reading, dict):
-            items = sum(len(v) for v in reading.get("goal", {}).values())
-            return grounded_budget(items, len(reading.get("constraints") or []))
-        return grounded_budget(len(world.get("shelves") or {}) * len(world.get("products") or {}) // 2, 2)
+def answer_budget(world: dict, grounding: Grounding | None, example: str | None, reading: Any = None) -> int:
+    """The ``max_tokens`` of one call: a grounded answer's (``grounding``, the world's task
+    domain's) from the size its domain expects (from the offline reading when the parser read the
+    command, else from the world), a free answer's from the example problem."""
+    if grounding is not None:
+        return grounded_budget(*grounding.answer_size(world, reading if isinstance(reading, dict) else None))
     return free_budget(example or "")

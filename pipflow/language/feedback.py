@@ -20,6 +20,8 @@ import json
 import re
 
 from pipflow.language.parsing import decode_answer_json
+from pipflow.taskdomain import Facts
+from pipflow.taskdomains import task_domain
 
 #: the variations, in the order they are tried (each level adds one to the ones before)
 QUOTE, FACTS, TEMPERATURE = "quoted previous answer", "added world facts", "raised temperature"
@@ -37,23 +39,12 @@ def _cited_lines(messages: list[str]) -> set[int]:
     return {int(n) for m in messages for n in re.findall(r"\bline (\d+)", m)}
 
 
-def _pairs(messages: list[str], world: dict) -> set[tuple[str, str]]:
-    """(shelf, product) pairs that one message names together."""
-    shelves, products = list(world.get("shelves") or {}), list(world.get("products") or {})
-    out = set()
-    for m in messages:
-        words = set(re.findall(r"[\w-]+", m.lower()))
-        for s in shelves:
-            for p in products:
-                if s.lower() in words and p.lower() in words:
-                    out.add((s, p))
-    return out
-
-
-def quote(answer: str, messages: list[str], world: dict, grounded: bool) -> str:
+def quote(answer: str, messages: list[str], together: list[tuple[str, ...]], grounded: bool) -> str:
     """The previous answer, lines the messages point at marked with ``>>``: lines they cite by
-    number (the debugger's positions) and lines that name a shelf and a product that one message
-    names together. A grounded answer is laid out one statement (or goal item) and rule per line first."""
+    number (the debugger's positions) and lines that name every name of a group that one message
+    names together (``together``: the world's task domain finds them,
+    :meth:`pipflow.taskdomain.TaskDomain.feedback_facts`). A grounded answer is laid out one
+    statement (or goal item) and rule per line first."""
     text = answer.strip()
     if grounded:
         try:
@@ -66,35 +57,17 @@ def quote(answer: str, messages: list[str], world: dict, grounded: bool) -> str:
     else:
         m = re.search(r"\(\s*define\s*\(\s*problem\b", text, re.IGNORECASE)
         text = text[m.start():] if m else text  # the debugger counts lines from the problem's start
-    cited, pairs = _cited_lines(messages), _pairs(messages, world)
+    cited = _cited_lines(messages)
     lines = text.splitlines() or [""]
     out = []
     for n, line in enumerate(lines[:QUOTE_LINES], 1):
         low = set(re.findall(r"[\w-]+", line.lower()))
-        marked = n in cited or any(s.lower() in low and p.lower() in low for s, p in pairs)
+        marked = n in cited or any(all(name.lower() in low for name in group) for group in together)
         out.append((MARK if marked else "   ") + line)
     if len(lines) > QUOTE_LINES:
         out.append(f"   ... ({len(lines) - QUOTE_LINES} more lines)")
     return ("Your previous answer, with the lines the messages above point at marked '>>':\n```\n"
             + "\n".join(out) + "\n```")
-
-
-def world_facts(messages: list[str], world: dict) -> str:
-    """The world's facts about the shelves and products the messages name: current counts,
-    capacity, how many units of a product exist in all and where."""
-    stock = world.get("stock") or {}
-    shelves = [s for s in world.get("shelves") or {} if any(re.search(rf"\b{re.escape(s)}\b", m) for m in messages)]
-    products = [p for p in world.get("products") or {} if any(re.search(rf"\b{re.escape(p)}\b", m) for m in messages)]
-    lines = []
-    for s in shelves:
-        held = ", ".join(f"{n} {p}" for p, n in (stock.get(s) or {}).items() if n) or "nothing"
-        load = sum((stock.get(s) or {}).values())
-        lines.append(f"- {s} holds {held} now ({load} units; capacity {world['shelves'][s].get('capacity')})")
-    for p in products:
-        where = {s: (items or {}).get(p, 0) for s, items in stock.items() if (items or {}).get(p)}
-        total = sum(where.values())
-        lines.append(f"- there are {total} {p} in all" + (f" ({', '.join(f'{s} {n}' for s, n in where.items())})" if where else ""))
-    return ("Facts of the world that the messages are about:\n" + "\n".join(lines)) if lines else ""
 
 
 def vary(level: int, answer: str, messages: list[str], world: dict, grounded: bool,
@@ -104,14 +77,13 @@ def vary(level: int, answer: str, messages: list[str], world: dict, grounded: bo
     above 2, at most 1.0). A level whose addition is empty (no facts to add) still counts, so
     a higher level always adds something new: the attempt line names the level."""
     extra, done = [], []
+    facts = task_domain(world).feedback_facts(messages, world) if level >= 1 else Facts()
     if level >= 1 and answer.strip():
-        extra.append(quote(answer, messages, world, grounded))
+        extra.append(quote(answer, messages, facts.together, grounded))
         done.append(QUOTE)
-    if level >= 2:
-        facts = world_facts(messages, world)
-        if facts:
-            extra.append(facts)
-            done.append(FACTS)
+    if level >= 2 and facts.lines:
+        extra.append("Facts of the world that the messages are about:\n" + "\n".join(facts.lines))
+        done.append(FACTS)
     if level >= 3:
         temperature = min(1.0, max(temperature, 0.3 * (level - 2)))
         done.append(f"{TEMPERATURE} to {temperature:g}")

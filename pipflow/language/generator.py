@@ -14,20 +14,18 @@ model call, the cache and the PDDL extraction are the same for all.
 """
 from __future__ import annotations
 
-import os
+from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any
 
 from pipflow.errors import InputError
 from pipflow.language.agreement import offline_reading
 from pipflow.language.budget import FREE_STOPS, answer_budget
-from pipflow.language.cache import ResponseCache, cache_key
 from pipflow.language.feedback import vary
-from pipflow.language.llm import complete, resolve_model
-from pipflow.language.local import ensure_server
+from pipflow.language.asking import ModelCall, RoundRecord, answer
+from pipflow.language.llm import resolve_model
 from pipflow.language.offline import offline
-from pipflow.language.parsing import (ParseIssue, extract_constraints, extract_problem, plain_text,
-                                      validate_constraints)
+from pipflow.language.parsing import ParseIssue, extract_constraints, extract_problem, validate_constraints
 from pipflow.language.prompting import render
 from pipflow.pddl.common import parse
 from pipflow.pddl.debugger import unclosed_section
@@ -76,66 +74,115 @@ def request_extra(method: str, world: dict) -> dict[str, Any]:
     return {"response_format": ground.response_format(world)}
 
 
+@dataclass(frozen=True)
+class LoopRound:
+    """Where the round stands in the refinement loop: the checks' ``feedback`` on the last round,
+    the last round's ``round`` output (``previous``: it carries the fingerprints of every earlier
+    prompt), and who reads the command (``reader``, one of :data:`READERS`). ``locate`` False: an
+    answer whose problem never closes is said to be cut off, without the debugger's reading of
+    which section is left open (the 'w/o B' ablation has no debugger)."""
+
+    feedback: list[str] | None = None
+    previous: dict[str, Any] | None = None
+    reader: str = "model"
+    locate: bool = True
+
+
+@dataclass
+class _Prompt:
+    """The messages a round sends, and how they came to be: the fingerprint of the prompt before
+    any variation (``base``), the variation ``level`` and what it ``varied``, the temperature the
+    call uses, and the fingerprints of the loop's earlier prompts (``history``)."""
+
+    messages: list[dict[str, str]]
+    base: str
+    level: int
+    varied: list[str]
+    temperature: float
+    history: list
+
+
 def generate(
     command: str,
     world: dict,
     domain_text: str,
     *,
     prompt: str | None = None,
-    model: str | None = None,
-    temperature: float = 0.0,
-    max_tokens: int | None = None,
-    timeout: float = 60.0,
-    retries: int = 2,
-    deadline: float | None = None,
-    api_base: str | None = None,
-    feedback: list[str] | None = None,
-    grounded: bool = False,
-    cache_dir: str | os.PathLike | None = None,
-    use_cache: bool = True,
     base_dir: Path | None = None,
-    save: Callable[[str, Any], Any] | None = None,
-    log: Callable[[str], None] = lambda message: None,
-    previous: dict[str, Any] | None = None,
-    reader: str = "model",
-    named: Callable[[str], bool] | None = None,
-    locate: bool = True,
+    call: ModelCall = ModelCall(),
+    loop: LoopRound = LoopRound(),
+    record: RoundRecord = RoundRecord(),
 ) -> dict[str, Any]:
     """One generator round; returns the outputs of step ``llm.problem``. ``prompt`` None: the
-    world's domain's template (:attr:`pipflow.taskdomain.TaskDomain.default_prompt`).
+    world's domain's template (:attr:`pipflow.taskdomain.TaskDomain.default_prompt`), found from
+    ``base_dir``.
 
-    ``max_tokens`` None: a budget from the expected answer's size (:mod:`pipflow.language.budget`).
-    ``previous``: the previous round's ``round`` output (it carries the fingerprints of every
-    earlier prompt of the loop); when this round's prompt would be the same as an earlier one's,
+    When this round's prompt would be the same as an earlier one's (:attr:`LoopRound.previous`),
     the prompt is varied (:func:`pipflow.language.feedback.vary`) and the ``varied`` output says
-    how. ``reader`` ``offline-first``: the offline reading when the parser understands the command
+    how. Reader ``offline-first``: the offline reading when the parser understands the command
     (and its Refusal when it finds it impossible), the model only when it does not understand it.
-    The output ``reader`` says whose reading the round's goal is (``offline`` or ``model``).
-    ``named(value)``: whether the user gave a value (a server that may receive the provider
-    key: :func:`pipflow.language.llm.key_may_go_to`).
-    ``locate`` False: an answer whose problem never closes is said to be cut off, without the
-    debugger's reading of which section is left open (the 'w/o B' ablation has no debugger)."""
-    model = resolve_model(model)
+    The output ``reader`` says whose reading the round's goal is (``offline`` or ``model``)."""
+    model = resolve_model(call.model)
     domain = task_domain(world)
-    if reader not in READERS:
-        raise InputError(f"reader {reader!r}: expected one of {', '.join(READERS)}")
+    if loop.reader not in READERS:
+        raise InputError(f"reader {loop.reader!r}: expected one of {', '.join(READERS)}")
     if model == "offline":
-        return {**offline(command, world, domain_text, save), "reader": "offline"}
-    if reader == "offline-first":
+        return {**offline(command, world, domain_text, record.save), "reader": "offline"}
+    if loop.reader == "offline-first":
         state, why = offline_reading(command, world)
         if state != "unread":  # read, or refused as impossible: the parser's word stands
-            return {**offline(command, world, domain_text, save), "reader": "offline"}
-        log(f"offline-first: the parser does not read the command ({why}); asking {model}")
+            return {**offline(command, world, domain_text, record.save), "reader": "offline"}
+        record.log(f"offline-first: the parser does not read the command ({why}); asking {model}")
     if not isinstance(command, str) or not command.strip():
         raise InputError("command must be a non-empty string")
-    if grounded and domain.grounding is None:
+    if call.grounded and domain.grounding is None:
         raise InputError(f"grounded decoding is not available for {domain.name} worlds yet: run without "
                          "grounded (the debugger checks every name against the world)")
-    feedback = [str(m) for m in (feedback or []) if str(m).strip()]
+    feedback = [str(m) for m in (loop.feedback or []) if str(m).strip()]
     example = domain.example_problem(world, domain_text)
     variables = {"command": command, "world": world, "domain": domain_text, "feedback": feedback,
-                 "grounded": bool(grounded), "example": example if not grounded else None}
-    base = render(prompt or domain.default_prompt, variables, base_dir)
+                 "grounded": bool(call.grounded), "example": example if not call.grounded else None}
+    sent = _round_prompt(prompt or domain.default_prompt, variables, base_dir, call, loop.previous)
+    if sent.varied:
+        record.log(f"llm: the prompt would repeat an earlier round's: {'; '.join(sent.varied)}")
+    max_tokens = call.max_tokens
+    if max_tokens is None:
+        reading = None
+        if call.grounded:
+            state, got = offline_reading(command, world)
+            reading = got if state == "read" else None
+        max_tokens = answer_budget(world, domain.grounding if call.grounded else None, example, reading)
+    extra = request_extra(grounding_method(model, call.api_base), world) if call.grounded else {}
+    if not call.grounded:
+        extra = {**extra, "stop": list(FREE_STOPS)}
+    params = {"temperature": sent.temperature, "max_tokens": max_tokens, **extra}
+    text, invalid, usage, key = answer(model, sent.messages, params, extra, call, record)
+    out = {"messages": sent.messages, "response": text, "usage": {**usage, "cache_key": key},
+           "varied": "; ".join(sent.varied), "reader": "model",
+           "round": {"base": sent.base, "sent": _digest(sent.messages, sent.temperature), "level": sent.level,
+                     "answer": text[:ROUND_ANSWER_CHARS], "max_tokens": max_tokens, "history": sent.history}}
+    out.update(_read_answer(text, world, call.grounded, domain_text, domain, loop.locate, example))
+    if invalid:
+        out.update(problem="", goal=None, errors=[
+            f"the answer has {invalid} character{'s' if invalid > 1 else ''} that are not valid Unicode text (lone "
+            "surrogates, such as an escaped \\ud800), shown here as U+FFFD: write plain text"] + list(out["errors"]))
+    if usage.get("finish_reason") == "length" and out.get("errors"):  # the model must shorten, not we raise
+        out["errors"] = out["errors"] + [
+            f"the answer was cut off at the {max_tokens} tokens it may take: write only what the command asks "
+            + ("for: one statement per clause of the command, rules only if it states them, short \"words\""
+               if call.grounded else "for, and no text after the ```json block")]
+    if record.save is not None and not call.grounded and out["goal"] is not None:  # a goal read back from the problem
+        record.save("goal.json", out["goal"])
+    return out
+
+
+def _round_prompt(template: str, variables: dict[str, Any], base_dir: Path | None, call: ModelCall,
+                  previous: Any) -> _Prompt:
+    """The round's prompt: the template rendered with the command, the world, the domain, the
+    example and the feedback (``variables``); varied, one level further each time, while it would
+    be the same as a prompt an earlier round of the loop sent (feedback may also cycle: A, B, A)."""
+    world, feedback = variables["world"], variables["feedback"]
+    base = render(template, variables, base_dir)
     base_digest = _digest(base)
     previous = previous if isinstance(previous, dict) else {}
     # every earlier round of this loop: feedback may also cycle (A, B, A), not only repeat
@@ -147,72 +194,14 @@ def generate(
     while True:  # vary until the prompt differs from every one sent before (each level adds a line)
         if level:
             extra, temperature_now, varied = vary(level, str(previous.get("answer") or ""), feedback, world,
-                                                  bool(grounded), temperature)
-            messages = render(prompt or domain.default_prompt, {**variables, "feedback": feedback + extra}, base_dir)
+                                                  bool(call.grounded), call.temperature)
+            messages = render(template, {**variables, "feedback": feedback + extra}, base_dir)
         else:
-            temperature_now = temperature
+            temperature_now = call.temperature
         if _digest(messages, temperature_now) not in {sent for _, sent in history} or level >= 8:
             break
         level += 1
-    if varied:
-        log(f"llm: the prompt would repeat an earlier round's: {'; '.join(varied)}")
-    if max_tokens is None:
-        reading = None
-        if grounded:
-            state, got = offline_reading(command, world)
-            reading = got if state == "read" else None
-        max_tokens = answer_budget(world, bool(grounded), example, reading)
-    extra = request_extra(grounding_method(model, api_base), world) if grounded else {}
-    if not grounded:
-        extra = {**extra, "stop": list(FREE_STOPS)}
-    params = {"temperature": temperature_now, "max_tokens": max_tokens, **extra}
-    if save is not None:  # the prompt is kept even when the call fails (provider error, time-out)
-        save("messages.json", messages)
-    key = cache_key(model, messages, params)
-    cache = ResponseCache(cache_dir)
-    use_cache = use_cache and os.environ.get("PIPFLOW_NO_CACHE", "") in ("", "0")
-    entry = cache.get(key) if use_cache else None
-    if entry is not None:
-        text, usage = entry["text"], {**entry["usage"], "cached": True, "latency_s": 0.0}
-        log(f"llm: {model} answered from cache {cache.path(key)}")
-    else:
-        call_model, call_base = model, api_base
-        if model.startswith("local/"):
-            call_model, call_base = ensure_server(model)
-        answer = complete(messages, model=call_model, api_base=call_base, timeout=timeout,
-                          retries=retries, temperature=temperature_now, max_tokens=max_tokens,
-                          extra=extra, deadline=deadline, named=named)
-        text, usage = answer.text, answer.usage
-        log(f"llm: {model} answered in {usage['latency_s']} s, {usage.get('total_tokens')} tokens")
-    # a lone surrogate (a model's "\ud800" decoded by its client) is no character: no file or
-    # terminal can take it, so it is shown as U+FFFD and the answer is not used (the model is told)
-    text, invalid = plain_text(text)
-    if save is not None:  # the record first: a paid answer is kept even if the cache is not writable
-        save("response.txt", text)
-    if entry is None and use_cache:  # --no-cache writes no cache either
-        try:
-            cache.put(key, {"model": model, "params": params, "messages": messages, "text": text,
-                            "usage": usage})
-        except OSError as exc:
-            log(f"warning: llm: the response cache {cache.directory} is not writable "
-                f"({exc.strerror or exc}); the answer is kept in the run record only")
-    out = {"messages": messages, "response": text, "usage": {**usage, "cache_key": key},
-           "varied": "; ".join(varied), "reader": "model",
-           "round": {"base": base_digest, "sent": _digest(messages, temperature_now), "level": level,
-                     "answer": text[:ROUND_ANSWER_CHARS], "max_tokens": max_tokens, "history": history}}
-    out.update(_read_answer(text, world, grounded, domain_text, domain, locate, example))
-    if invalid:
-        out.update(problem="", goal=None, errors=[
-            f"the answer has {invalid} character{'s' if invalid > 1 else ''} that are not valid Unicode text (lone "
-            "surrogates, such as an escaped \\ud800), shown here as U+FFFD: write plain text"] + list(out["errors"]))
-    if usage.get("finish_reason") == "length" and out.get("errors"):  # the model must shorten, not we raise
-        out["errors"] = out["errors"] + [
-            f"the answer was cut off at the {max_tokens} tokens it may take: write only what the command asks "
-            + ("for: one statement per clause of the command, rules only if it states them, short \"words\""
-               if grounded else "for, and no text after the ```json block")]
-    if save is not None and not grounded and out["goal"] is not None:  # a goal read back from the problem
-        save("goal.json", out["goal"])
-    return out
+    return _Prompt(messages, base_digest, level, varied, temperature_now, history)
 
 
 def _read_answer(text: str, world: dict, grounded: bool, domain_text: str, domain: TaskDomain,

@@ -191,34 +191,45 @@ def check_model(litellm, model: str, api_base: str | None) -> None:
                          "set it, or use model=offline")
 
 
+@dataclass(frozen=True)
+class Retry:
+    """How patiently one call asks. ``timeout``: seconds per request; ``retries``: more requests
+    after a retryable failure (rate limits, time-outs, server errors, dropped connections), the
+    n-th after a wait of ``backoff`` x 2**n seconds (``sleep`` waits; a test passes a fake);
+    ``deadline``: seconds for the whole call, retries and waits included (None: no bound beyond
+    timeout x tries)."""
+
+    timeout: float = 60.0
+    retries: int = 2
+    deadline: float | None = None
+    backoff: float = 1.0
+    sleep: Callable[[float], None] = time.sleep
+
+
 def complete(
     messages: list[dict[str, str]],
     *,
     model: str,
     temperature: float = 0.0,
     max_tokens: int = 1024,
-    timeout: float = 60.0,
-    retries: int = 2,
     api_base: str | None = None,
     extra: dict[str, Any] | None = None,
-    backoff: float = 1.0,
-    deadline: float | None = None,
-    sleep: Callable[[float], None] = time.sleep,
     named: Callable[[str], bool] | None = None,
+    retry: Retry = Retry(),
 ) -> Completion:
     """Ask ``model`` for one chat completion; retry rate limits, time-outs, server errors and
-    dropped connections ``retries`` times with exponential backoff; raise :class:`LLMError`
+    dropped connections ``retry.retries`` times with exponential backoff; raise :class:`LLMError`
     otherwise (:class:`InputError` for what the user must fix: a missing key, an unknown model).
 
     This is the only retry layer: litellm's and the OpenAI client's own retries are switched off,
-    so ``retries=2`` means at most 3 requests, and the error message counts them. ``timeout``
-    bounds one request; ``deadline`` (seconds) bounds the whole call with its retries and waits.
-    ``extra`` carries provider-specific request fields (``response_format``, a llama.cpp
-    ``grammar`` in ``extra_body``, litellm's ``mock_response`` in tests). ``named(value)`` says
-    whether the user gave a value (the provider key goes to ``api_base`` only if they named it
-    or it is on loopback); no value of a key from the environment is ever sent in the request's
-    content (:func:`check_no_secrets`)."""
-    check_limits(retries=retries, max_tokens=max_tokens, timeout=timeout, deadline=deadline)
+    so ``retries=2`` means at most 3 requests, and the error message counts them (:class:`Retry`:
+    the time-out of one request, the deadline of the whole call). ``extra`` carries
+    provider-specific request fields (``response_format``, a llama.cpp ``grammar`` in
+    ``extra_body``, litellm's ``mock_response`` in tests). ``named(value)`` says whether the user
+    gave a value (the provider key goes to ``api_base`` only if they named it or it is on
+    loopback); no value of a key from the environment is ever sent in the request's content
+    (:func:`check_no_secrets`)."""
+    check_limits(retries=retry.retries, max_tokens=max_tokens, timeout=retry.timeout, deadline=retry.deadline)
     if api_base:
         check_api_base(api_base)
     check_no_secrets(model, messages, api_base, extra)
@@ -235,18 +246,27 @@ def complete(
             withheld = True
         elif model.startswith("openai/") and not os.environ.get("OPENAI_API_KEY"):
             kwargs["api_key"] = "no-key"  # self-hosted OpenAI-compatible servers need none
+    response, attempt, latency = _ask(litellm, kwargs, retry, withheld)
+    return Completion(text=_answer_text(model, response), usage=_usage(litellm, response, latency, attempt))
+
+
+def _ask(litellm: Any, kwargs: dict[str, Any], retry: Retry, withheld: bool) -> tuple[Any, int, float]:
+    """``(response, retries made, latency of the last request)``: the request of ``kwargs``, again
+    after a retryable failure while :class:`Retry` allows; the error that ends it is raised in
+    words (``withheld``: the provider key was not sent to the workflow's server)."""
+    model, api_base = kwargs["model"], kwargs.get("api_base")
     started = time.monotonic()
     attempt = 0  # requests made so far, minus one
     while True:
-        remaining = None if deadline is None else deadline - (time.monotonic() - started)
-        kwargs["timeout"] = timeout if remaining is None else max(0.001, min(timeout, remaining))
+        remaining = None if retry.deadline is None else retry.deadline - (time.monotonic() - started)
+        kwargs["timeout"] = retry.timeout if remaining is None else max(0.001, min(retry.timeout, remaining))
         start = time.perf_counter()
         try:
             # one of the provider's LLM slots across a dask cluster (a no-op unless a bench backend
             # installed its limiter: pipflow.llmslot)
             with llm_slot(model):
                 response = _within(litellm.completion, dict(kwargs), kwargs["timeout"] + GRACE)
-            break
+            return response, attempt, time.perf_counter() - start
         except Exception as exc:  # litellm maps every provider's error onto its own classes
             if not (isinstance(exc, RequestOverrun) or LITELLM.owns(exc)):
                 raise  # not the provider's answer but a bug: it keeps its traceback
@@ -254,16 +274,16 @@ def complete(
             retryable = isinstance(exc, RequestOverrun) or any(
                 isinstance(exc, getattr(litellm, name, ())) for name in _RETRYABLE)
             user_fault = any(isinstance(exc, getattr(litellm, name, ())) for name in _USER_FAULTS)
-            wait = backoff * 2 ** attempt
+            wait = retry.backoff * 2 ** attempt
             spent = time.monotonic() - started
-            in_time = deadline is None or spent + wait < deadline
-            if retryable and not user_fault and attempt < retries and in_time:
-                sleep(wait)
+            in_time = retry.deadline is None or spent + wait < retry.deadline
+            if retryable and not user_fault and attempt < retry.retries and in_time:
+                retry.sleep(wait)
                 attempt += 1
                 continue
             tries = f" after {attempt + 1} attempt{'s' if attempt else ''} in {spent:.1f} s"
-            if retryable and attempt < retries and not in_time:
-                tries += f" (the call's deadline of {deadline:g} s left no time for another)"
+            if retryable and attempt < retry.retries and not in_time:
+                tries += f" (the call's deadline of {retry.deadline:g} s left no time for another)"
             hint = (f" (is the server at {api_base} running?)"
                     if api_base and "connection error" in str(exc).lower() else "")
             if withheld and user_fault:
@@ -272,7 +292,10 @@ def complete(
                          "PIPFLOW_API_BASE to send the key there)")
             message = f"{model}: {kind}{tries}: {_short(redact(str(exc)))}{hint}"
             raise (InputError if user_fault else LLMError)(message) from None
-    latency = time.perf_counter() - start
+
+
+def _answer_text(model: str, response: Any) -> str:
+    """The text of a provider's response, refused when there is none or it is no real answer."""
     try:
         text = response.choices[0].message.content or ""
     except (AttributeError, IndexError, TypeError, KeyError):
@@ -283,7 +306,7 @@ def complete(
     if len(text) > MAX_ANSWER_CHARS:
         raise LLMError(f"{model}: the answer is {len(text):,} characters long, more than the "
                        f"{MAX_ANSWER_CHARS:,} that no real answer reaches; it was neither kept nor parsed")
-    return Completion(text=text, usage=_usage(litellm, response, latency, attempt))
+    return text
 
 
 #: seconds a request may run past its time-out before it is abandoned (see :func:`_within`)

@@ -17,9 +17,6 @@ from pipflow.taskdomains import task_domain
 _PROBLEM_START = re.compile(r"\(\s*define\s*\(\s*problem\b", re.IGNORECASE)
 _FENCE = re.compile(r"```[ \t]*([A-Za-z0-9_-]*)[^\n]*\n(.*?)(?:```|\Z)", re.DOTALL)
 RULE_KEYS = ("only", "never")
-#: the fields a rule may narrow by when no world says otherwise (the default domain's; a world's
-#: task domain has its own: :attr:`pipflow.taskdomain.TaskDomain.rule_fields`)
-FIELD_KEYS = ("product", "from", "to")
 
 
 class ParseIssue(ValueError):
@@ -176,7 +173,7 @@ def _json_candidates(text: str) -> list[str]:
     return found
 
 
-def extract_constraints(text: str, fields: tuple[str, ...] = FIELD_KEYS) -> list[dict[str, Any]]:
+def extract_constraints(text: str, fields: tuple[str, ...] | None = None) -> list[dict[str, Any]]:
     """The robot-use rules stated in the answer, as ``[{"only"|"never": [...], ...}]``.
 
     No JSON at all means the model stated no rule: an empty list. JSON that is there but wrong is
@@ -204,10 +201,10 @@ def extract_constraints(text: str, fields: tuple[str, ...] = FIELD_KEYS) -> list
 def validate_constraints(rules: list[Any], world: dict | None = None,
                          fields: tuple[str, ...] | None = None) -> list[dict[str, Any]]:
     """Check each rule's shape (and, given a world, its names); return them normalized.
-    ``fields``: the keys a rule may narrow by (None: the world's task domain's rule fields, or
-    :data:`FIELD_KEYS` without a world)."""
+    ``fields``: the keys a rule may narrow by (None: the world's task domain's
+    :attr:`~pipflow.taskdomain.TaskDomain.rule_fields`; without a world, the default domain's)."""
     if fields is None:
-        fields = task_domain(world).rule_fields if world is not None else FIELD_KEYS
+        fields = task_domain(world).rule_fields
     out = []
     for n, rule in enumerate(rules, 1):
         where = f"constraint {n}"

@@ -7,21 +7,24 @@ A plan, between steps, is ``[{"action": "move-product", "args": ["shelf1", "shel
 from __future__ import annotations
 
 import hashlib
-import math
 import threading
 from collections import OrderedDict
 from contextlib import contextmanager
 from functools import lru_cache
+from importlib.metadata import entry_points
 from pathlib import Path
 from typing import Any, Iterator
 
-from pipflow.goalcounts import from_limits
+from pipflow.errors import UserError
 from pipflow.pddl.deferred_configspace import defer as _defer_configspace
 from pipflow.pddl.upconfig import install as _cheap_config_lookup
 
 _PARSED: OrderedDict[str, Any] = OrderedDict()  # content hash -> parsed UP problem (read-only)
 _PARSED_MAX = 4  # a run needs one problem (plus the domain alone); a refinement loop a few
 _PARSED_LOCK = threading.Lock()
+#: entry-point group of planners: ``NAME = "module:EngineClass"``, a unified-planning engine that
+#: :func:`environment` adds to UP's factory under NAME (as ``pipflow.steps`` adds steps)
+PLANNERS = "pipflow.planners"
 
 @lru_cache(maxsize=1)
 def environment() -> Any:
@@ -36,11 +39,23 @@ def environment() -> Any:
     env = get_environment()
     env.credits_stream = None
     env.error_used_name = True
-    # deferred: pulls unified_planning.shortcuts and networkx (~600 ms; parse-only users need neither)
-    from pipflow.pddl.transport import register
-
-    register(env)
+    add_planners(env)
     return env
+
+
+def add_planners(env: Any) -> None:
+    """Add the planners registered in the entry-point group :data:`PLANNERS` to UP's engine
+    factory (a task domain's own planner, such as the warehouse's ``pipflow-transport``; a plugin
+    adds one the same way). UP imports each engine's module as it adds it. A planner whose module
+    fails to load is the plugin's error, said with its name, never a traceback."""
+    for ep in entry_points(group=PLANNERS):
+        if ep.name in env.factory.engines:
+            continue
+        try:
+            env.factory.add_engine(ep.name, ep.module, ep.attr)
+        except Exception as err:  # a broken plugin: say which
+            raise UserError(f"planner {ep.name!r} ({ep.value}) of entry-point group {PLANNERS} failed to load: "
+                            f"{type(err).__name__}: {err}") from None
 
 
 def read_domain_text(domain: str | Path) -> str:
@@ -125,55 +140,3 @@ def goal_atoms(problem: Any) -> list[Any]:
     ``true`` an empty ``(and)`` parses to. A domain's reader uses it to tell a goal that asks for
     nothing (a model that copied its example unchanged) from one that asks for something."""
     return [g for g in goal_conditions(problem) if not (g.is_bool_constant() and g.bool_constant_value())]
-
-
-def stock_goals(problem: Any) -> tuple[dict[str, dict[str, Any]], list[str]]:
-    """The goal's stock conditions as ``{shelf: {product: value}}``, plus a list of goal
-    conditions of any other form (as text) that pipflow's goal checks do not understand.
-
-    ``=``, ``>=``, ``<=``, ``>``, ``<`` of ``(stock s p)`` with a number are read, and each
-    cell's conditions merged into one goal value of :mod:`pipflow.goalcounts`: an int when an
-    exact count is stated and agrees with the bounds, else ``{at_least, at_most}`` (a
-    contradiction is kept so that the verifier names it)."""
-    cells: dict[tuple[str, str], list] = {}  # (shelf, product) -> [lo, hi, exact stated]
-    other: list[str] = []
-    for g in goal_conditions(problem):
-        cell = _stock_comparison(g)
-        if cell is None:
-            other.append(str(g))
-            continue
-        (s, p), lo, hi = cell
-        c = cells.setdefault((s, p), [None, None, False])
-        if lo is not None:
-            c[0] = lo if c[0] is None else max(c[0], lo)
-        if hi is not None:
-            c[1] = hi if c[1] is None else min(c[1], hi)
-        c[2] = c[2] or g.is_equals()
-    goal: dict[str, dict[str, Any]] = {}
-    for (s, p), (lo, hi, exact) in cells.items():
-        goal.setdefault(s, {})[p] = from_limits(lo, hi, exact)
-    return goal, other
-
-
-def _stock_comparison(g: Any) -> tuple[tuple[str, str], int | None, int | None] | None:
-    """``((shelf, product), lowest, highest)`` for a comparison of ``(stock s p)`` with a number
-    (whole limits: strict comparisons and fractions rounded inward, counts being whole), or None
-    for any other condition (an exact count that is a fraction included)."""
-    if not (g.is_equals() or g.is_le() or g.is_lt()) or len(g.args) != 2:
-        return None
-    a, b = g.args
-    stock_left = a.is_fluent_exp()
-    fexp, num = (a, b) if stock_left else (b, a)
-    if not (fexp.is_fluent_exp() and fexp.fluent().name == "stock" and len(fexp.args) == 2
-            and (num.is_int_constant() or num.is_real_constant())):
-        return None
-    v = float(num.constant_value())
-    cell = (str(fexp.args[0]), str(fexp.args[1]))
-    if g.is_equals():
-        return (cell, int(v), int(v)) if v.is_integer() else None
-    strict = g.is_lt()
-    if stock_left:  # stock <= v  /  stock < v
-        hi = int(v) - 1 if strict and v.is_integer() else math.floor(v)
-        return cell, None, hi
-    lo = int(v) + 1 if strict and v.is_integer() else math.ceil(v)  # v <= stock  /  v < stock
-    return cell, lo, None

@@ -8,8 +8,7 @@ undefined name the closest names that do exist (difflib). A problem that parses 
 against the world by the world's task domain (:meth:`pipflow.taskdomain.TaskDomain.world_mismatches`):
 its objects and initial state must be exactly the world's, because a generated problem that
 invents a shelf or a few units of stock would be "solved" in a world that is not ours. Every
-mismatch is reported at once. :func:`world_mismatches` here is that check for stock problems
-(shelves, products, magnitudes), the default domain's.
+mismatch is reported at once (the warehouse's check: :func:`pipflow.warehouse.problem.world_mismatches`).
 """
 from __future__ import annotations
 
@@ -18,11 +17,8 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from pipflow.pddl.common import parse, read_domain_text
-from pipflow.pddl.convert import initial_numbers
-from pipflow.pddl.names import pddl_name
 from pipflow.pddl.size import expected_size, size_issues
 from pipflow.pddl.textpos import find_word, line_col, strip_comments
-from pipflow.pddl.writer import magnitudes
 from pipflow.suggest import did_you_mean_clause
 from pipflow.taskdomains import task_domain
 
@@ -260,60 +256,6 @@ def explain_parse_error(exc: Exception, text: str, domain_text: str) -> str:
         where = find_word(text, name, 1) or find_word(text, name)
         return f"{where}name {name!r} is declared twice; declare each object once"
     return f"the problem does not parse: {type(exc).__name__}: {message.splitlines()[0] if message else ''}"
-
-
-# ---------------------------------------------------------------------------------------------
-# the world check
-# ---------------------------------------------------------------------------------------------
-def world_mismatches(problem: Any, text: str, world: dict) -> list[str]:
-    """Every way the parsed stock problem's objects and initial state differ from the world's
-    (shelves, products, stock, loads, capacities, magnitudes)."""
-    out: list[str] = []
-    shelves, products = world["shelves"], world["products"]
-    by_type: dict[str, list[str]] = {}
-    for o in problem.all_objects:
-        by_type.setdefault(str(o.type), []).append(o.name)
-    amounts = magnitudes(world)
-    # UP reads names in lower case: compare the world's names as UP spells them
-    expect = {"shelf": [pddl_name(s) for s in shelves], "product": [pddl_name(p) for p in products],
-              "magnitude": list(amounts)}
-    for typ, names in expect.items():
-        have = by_type.get(typ, [])
-        for n in have:
-            if n not in names:
-                out.append(f"{find_word(text, n)}object {n!r} ({typ}) is not in the world{did_you_mean_clause(n, names)}; "
-                           f"the world's {typ} objects are {', '.join(names)}")
-        for n in names:
-            if n not in have:
-                out.append(f"the problem lacks {typ} {n!r} of the world; declare it in :objects as '{n} - {typ}'")
-    for typ in by_type:
-        if typ not in expect:
-            out.append(f"objects of type {typ!r} are not part of this domain's worlds")
-    init = initial_numbers(problem)
-    want: dict[tuple, int] = {}
-    for s in shelves:
-        for p in products:
-            want[("stock", pddl_name(s), pddl_name(p))] = world["stock"].get(s, {}).get(p, 0)
-        want[("load", pddl_name(s))] = sum(world["stock"].get(s, {}).values())
-        want[("capacity", pddl_name(s))] = world["shelves"][s]["capacity"]
-    for m, k in amounts.items():
-        want[("amount", m)] = k
-    declared = {o.name for o in problem.all_objects}
-    for key, value in want.items():
-        if not all(a in declared for a in key[1:]):
-            continue  # already reported as a missing object
-        form = f"({' '.join(key)})"
-        if key not in init:
-            out.append(f"{form} has no initial value; the world's is {value}: add (= {form} {value}) to :init")
-        elif init[key] != value:
-            what = {"stock": "units of {2} on {1}", "load": "units in all on {1}", "capacity": "the capacity of {1}",
-                    "amount": "the units of {1}"}[key[0]].format(*key)
-            out.append(f"{find_form(text, *key)}(= {form} {init[key]}) but the world has {value} "
-                       f"({what} is {value}); the initial state must be the world's: write (= {form} {value})")
-    for key, value in init.items():
-        if key not in want and all(a in declared for a in key[1:]):
-            out.append(f"{find_form(text, *key)}unexpected initial value (= ({' '.join(key)}) {value})")
-    return out
 
 
 # ---------------------------------------------------------------------------------------------

@@ -1,14 +1,14 @@
 """World names and PDDL names.
 
 PDDL is case-insensitive and UP reads every name in lower case, while a world may spell its
-shelves, products and robots in any case (``A1``, ``SKU-7781``). Problems are checked in lower
+things and robots in any case (``A1``, ``SKU-7781``). Problems are checked in lower
 case, and what comes back out of UP (plans, goals) is mapped back to the world's spelling here,
 so every later step (allocation rules, travel, simulation, scoring) sees the world's own names.
 A world whose names differ only in case is rejected when it is loaded.
 """
 from __future__ import annotations
 
-SECTIONS = ("shelves", "products", "robots", "places", "objects")
+from pipflow.taskdomains import task_domain
 
 
 def pddl_name(name: str) -> str:
@@ -20,7 +20,8 @@ def world_spelling(world: dict | None) -> dict[str, str]:
     """Lower-case name -> the world's spelling, for every named thing of the world."""
     if not world:
         return {}
-    return {pddl_name(n): n for section in SECTIONS for n in (world.get(section) or {})}
+    sections = task_domain(world).name_sections  # where the world keeps the names of its things
+    return {pddl_name(n): n for section in sections for n in (world.get(section) or {})}
 
 
 def plan_in_world_names(plan: list[dict] | None, world: dict | None) -> list[dict] | None:
@@ -29,9 +30,3 @@ def plan_in_world_names(plan: list[dict] | None, world: dict | None) -> list[dic
         return plan
     names = world_spelling(world)
     return [{**step, "args": [names.get(a, a) for a in step["args"]]} for step in plan]
-
-
-def goal_in_world_names(goal: dict[str, dict[str, int]], world: dict | None) -> dict[str, dict[str, int]]:
-    """A goal ``{shelf: {product: n}}`` spelled as the world spells its names."""
-    names = world_spelling(world)
-    return {names.get(s, s): {names.get(p, p): n for p, n in items.items()} for s, items in goal.items()}

@@ -24,7 +24,7 @@ SLACK_FACTOR = 2
 SLACK = 100
 #: without a world to compare with, the most objects, facts and goal forms a problem may have
 ABSOLUTE = 200_000
-#: the largest number a problem may state (as for world files: :data:`pipflow.worldfile.MAX_MAGNITUDE`);
+#: the largest number a problem may state (as for world files: :data:`pipflow.worldfile.LARGEST_NUMBER`);
 #: unified-planning reads ``1e400`` as an exact integer of 400 digits, which every later
 #: conversion to a float overflows ("int too large to convert to float", a crash of the step)
 MAX_NUMBER = 10**9

@@ -1,7 +1,8 @@
 """Solve a parsed problem with a UP OneshotPlanner named by the workflow.
 
-Engines: ``pipflow-transport`` (default for the warehouse domain, see
-:mod:`pipflow.pddl.transport`: near-fewest moves on the paper's tasks, large instances in
+Engines: ``pipflow-transport`` (the warehouse's own, registered through the entry-point group
+``pipflow.planners``; see
+:mod:`pipflow.warehouse.planner`: near-fewest moves on the paper's tasks, large instances in
 seconds), ``enhsp`` (ENHSP gbfs + hadd, any numeric domain; about 1 s on the paper's tasks but it
 grows fast), ``enhsp-opt`` / ``enhsp-any``, and any other engine installed in UP (``fast-downward``
 for classical domains). Params go to the engine's constructor (``{"params": "-h hadd -s gbfs"}``
@@ -21,11 +22,12 @@ import warnings
 from collections import OrderedDict
 from dataclasses import dataclass, field
 from enum import Enum
+from importlib.metadata import entry_points
 from typing import Any
 
 from pipflow.errors import InputError, PlanningError
 from pipflow.liberrors import SCIP, UNIFIED_PLANNING, library_errors
-from pipflow.pddl.common import environment
+from pipflow.pddl.common import PLANNERS, environment
 from pipflow.pddl.convert import plan_to_data
 from pipflow.pddl.java import ensure_java
 
@@ -94,8 +96,11 @@ def check_engine(engine: str) -> None:
         import difflib
 
         close = difflib.get_close_matches(str(engine), known, n=1)
+        stale = "" if any(True for _ in entry_points(group=PLANNERS)) else (
+            f" (none registered in the entry-point group {PLANNERS}: an install older than its pyproject.toml; "
+            "reinstall pipflow, e.g. pip install -e .)")
         raise InputError(f"unknown planner {engine!r}" + (f" (did you mean {close[0]!r}?)" if close else "")
-                         + f"; installed planners: {', '.join(known)}")
+                         + f"; installed planners: {', '.join(known)}{stale}")
 
 
 def problem_digest(domain_text: str, problem_text: str, engine: str, params: Any, timeout: Any) -> str:

@@ -7,13 +7,10 @@ Two independent checks, both reported in full:
   of the fluents in its failed precondition at that point, e.g. ``stock(shelf4, product2) = 0``,
   which is what a model needs to repair the problem.
 * **Goal** (against the world): the world's task domain judges it
-  (:meth:`pipflow.taskdomain.TaskDomain.check_goal`); for stock goals (:func:`goal_problems`,
-  the default domain's check): every object the goal names exists; each goal value is a count
-  or a bound ``{at_least, at_most}`` (read from ``=``, ``>=``, ``<=``, ``>``, ``<`` goals); some
-  final state meets it: no count or lower bound exceeds a shelf's capacity or the units that
-  exist, upper bounds leave room for every unit, the units the goal leaves free fit somewhere. An
-  infeasible goal yields ``refusal``: the reason, in words, that the command cannot be done in
-  this world; the workflow ends there instead of looping.
+  (:meth:`pipflow.taskdomain.TaskDomain.check_goal`; the warehouse's is
+  :func:`pipflow.warehouse.problem.goal_problems`). A goal no plan can reach in this world yields
+  ``refusal``: the reason, in words, that the command cannot be done; the workflow ends there
+  instead of looping.
 """
 from __future__ import annotations
 
@@ -21,10 +18,8 @@ import re
 from dataclasses import dataclass, field
 from typing import Any
 
-from pipflow.goalcounts import value_problems
 from pipflow.pddl.common import environment, format_plan
 from pipflow.pddl.convert import data_to_plan
-from pipflow.suggest import closest
 from pipflow.taskdomains import task_domain
 
 _FLUENT = re.compile(r"([A-Za-z][\w-]*)\(([^()]*)\)")
@@ -36,36 +31,6 @@ class VerifyReport:
     messages: list[str] = field(default_factory=list)
     refusal: str | None = None
     goal: dict = field(default_factory=dict)
-
-
-def goal_problems(world: dict, goal: dict[str, dict[str, Any]]) -> tuple[list[str], str | None]:
-    """``(messages, refusal)`` for a goal ``{shelf: {product: value}}`` in ``world``, a value
-    being an exact count or a bound ``{at_least, at_most}`` (:mod:`pipflow.goalcounts`).
-
-    Unknown names and malformed values are messages (the problem is wrong, a better problem may
-    fix it); goals no final state of the world meets are a refusal (no problem can fix the
-    command): :func:`pipflow.pddl.feasibility.infeasibility_reasons` says why."""
-    # deferred: pulls networkx (~200 ms; paid when a goal is checked, not by importers of the verifier)
-    from pipflow.pddl.feasibility import infeasibility_reasons
-
-    messages = []
-    for s, items in goal.items():
-        if s not in world["shelves"]:
-            near = closest(s, world["shelves"])
-            messages.append(f"the goal names shelf {s!r}, which is not in the world"
-                            + (f" (did you mean {near[0]!r}?)" if near else ""))
-        for p, n in items.items():
-            if p not in world["products"]:
-                near = closest(p, world["products"])
-                messages.append(f"the goal names product {p!r}, which is not in the world"
-                                + (f" (did you mean {near[0]!r}?)" if near else ""))
-            messages += [f"the goal for {p} on {s}: {why}" for why in value_problems(n)]
-    if messages:
-        return messages, None
-    reasons = infeasibility_reasons(world, goal)
-    if reasons:
-        return reasons, "the command cannot be done in this world: " + "; ".join(reasons)
-    return [], None
 
 
 def _explain_inapplicable(problem: Any, plan: Any, index: int, ups_message: str) -> str:

@@ -306,7 +306,7 @@ def _run_body(d: Path, drawn: _Pictures) -> str:
             rows = [[s, p, describe(n) if is_bound(n) else n, sim["final_stock"].get(s, {}).get(p, 0),
                      None if value_problems(n) else holds(int(sim["final_stock"].get(s, {}).get(p, 0)), n)]
                     for s, items in goal.items() for p, n in items.items()]  # n: a count or a bound
-            parts.append("<h3>Goal</h3>" + _table(["shelf", "product", "goal", "final", "holds"], rows))
+            parts.append("<h3>Goal</h3>" + _table(["place", "item", "goal", "final", "holds"], rows))
 
     if met_s:
         m = upgrade_travel_keys(met_s[2])

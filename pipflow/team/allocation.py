@@ -630,48 +630,13 @@ class AllocationWalk:
         best solution found is kept and the gap reported. If the wave cannot be covered by
         disjoint coalitions, the last subtask waits for the next wave; if SCIP finds nothing in
         time, the wave falls back to per-subtask IPs."""
-        from pyscipopt import quicksum  # deferred: SCIP loads only when a model is built
-
-        nodes, preds, robots, Q, tl = self.nodes, self.preds, self.robots, self.Q, self.timeline
         info: dict[str, Any] = {"subtasks": list(wave)}
-        # individual feasibility first, for a clear error
-        data = {}
-        for sid in wave:
-            node = nodes[sid]
-            Y = need_vector(node, self.skills)
-            allowed, why = self.rules.mask(node)
-            lin = self.rules.lin(node)
-            if first_stage_fast(Q, Y, np.zeros(len(robots)), allowed, lin) is None:
-                raise explain_infeasible(node, robots, self.skills, Q, Y, allowed, why, lin)
-            data[sid] = (node, Y, allowed, lin)
+        data = self._wave_needs(wave)
         sub = list(wave)
         deadline = time.perf_counter() + self.time_limit
         while sub:
             t0 = time.perf_counter()
-            remaining = max(0.05, deadline - t0)
-            m = _scip(time_limit=remaining * 0.7)
-            x: dict[tuple[int, str], Any] = {}
-            T, dist, dur = {}, {}, {}
-            for sid in sub:
-                node, Y, allowed, lin = data[sid]
-                ready_t = tl.ready(node, preds[sid])
-                T[sid] = m.addVar(lb=ready_t, vtype="C")
-                dur[sid] = tl.duration(node)
-                for i in np.flatnonzero(allowed):
-                    r = robots[i]
-                    x[(int(i), sid)] = m.addVar(vtype="B")
-                    dist[(int(i), sid)] = tl.cost(r, node)
-                    m.addCons(T[sid] >= tl.arrival(r, node) * x[(int(i), sid)])
-                xs = {i: x[(i, s)] for (i, s) in x if s == sid}
-                _add_rows(m, xs, Q, Y, lin)
-            z = m.addVar(lb=0.0, vtype="C")
-            for sid in sub:
-                m.addCons(z >= T[sid] + dur[sid])
-            for i in range(len(robots)):
-                mine = [x[k] for k in x if k[0] == i]
-                if len(mine) > 1:
-                    m.addCons(quicksum(mine) <= 1)
-            m.setObjective(z, "minimize")
+            m, x, z, dist = self._wave_model(sub, data, max(0.05, deadline - t0))
             m.optimize()
             status = IPStatus.of(m)
             if status is IPStatus.INFEASIBLE and len(sub) > 1:
@@ -684,48 +649,109 @@ class AllocationWalk:
                     self.allocate_one(sid)
                 self.waves.append(info)
                 return
-            zbest, gap = m.getObjVal(), m.getGap()
-            info.update({"status": status, "gap": float(gap), "latest_finish": float(zbest)})
-            sol1 = {k: m.getSolVal(m.getBestSol(), v) for k, v in x.items()}
-            m.freeTransform()
-            m.addCons(z <= zbest + 1e-6 * max(1.0, zbest))
-            sol = sol1
-            if tl.cost_kind == "total":
-                # the paper's first objective at (about) that latest finish: the largest total travel
-                w = m.addVar(lb=0.0, vtype="C")
-                for k, v in x.items():
-                    m.addCons(w >= dist[k] * v)
-                m.setObjective(w, "minimize")
-                m.setParam("limits/time", max(0.05, (deadline - time.perf_counter()) * 0.5))
-                m.optimize()
-                info["max_cost_status"] = IPStatus.of(m)
-                found = m.getNSols() > 0
-                if found:
-                    sol = {k: m.getSolVal(m.getBestSol(), v) for k, v in x.items()}
-                    wbest = m.getObjVal()
-                    info["max_cost"] = float(wbest)
-                m.freeTransform()
-                if found:
-                    m.addCons(w <= wbest + 1e-6 * max(1.0, wbest))
-            # then the sum of costs (with the subtask cost: the metres driven)
-            m.setObjective(quicksum(dist[k] * v for k, v in x.items()), "minimize")
-            m.setParam("limits/time", max(0.05, deadline - time.perf_counter()))
-            m.optimize()
-            if m.getNSols() > 0:
-                sol = {k: m.getSolVal(m.getBestSol(), v) for k, v in x.items()}
-                info["stage2_status"] = IPStatus.of(m)
+            info["status"] = status
+            sol = self._wave_costs(m, x, z, dist, deadline, info)
             self.solve_s.append(time.perf_counter() - t0)
             chosen = {sid: [i for (i, s), v in sol.items() if s == sid and v > 0.5] for sid in sub}
-            starts = {}
-            for sid in sub:
-                node = data[sid][0]
-                starts[sid] = max([tl.ready(node, preds[sid])] + [tl.arrival(robots[i], node) for i in chosen[sid]])
-            for sid in sorted(sub, key=lambda s: (starts[s], nodes[s]["index"])):
-                picked = sorted(chosen[sid])
-                self._commit(sid, [robots[i] for i in picked], {robots[i]: float(dist[(i, sid)]) for i in picked})
+            self._commit_wave(sub, data, chosen, dist)
             info["allocated"] = list(sub)
             self.waves.append(info)
             return
+
+    def _wave_needs(self, wave: list[str]) -> dict[str, tuple]:
+        """Each subtask's ``(node, need vector, allowed robots, linear rules)``, each checked on its
+        own first, for a clear error when no coalition at all can do one."""
+        robots, Q = self.robots, self.Q
+        data = {}
+        for sid in wave:
+            node = self.nodes[sid]
+            Y = need_vector(node, self.skills)
+            allowed, why = self.rules.mask(node)
+            lin = self.rules.lin(node)
+            if first_stage_fast(Q, Y, np.zeros(len(robots)), allowed, lin) is None:
+                raise explain_infeasible(node, robots, self.skills, Q, Y, allowed, why, lin)
+            data[sid] = (node, Y, allowed, lin)
+        return data
+
+    def _wave_model(self, sub: list[str], data: dict[str, tuple], remaining: float) -> tuple:
+        """``(model, x, z, dist)``: the wave's IP, minimising the latest finish ``z``; ``x[(robot
+        index, subtask)]`` the binary choices (each robot in at most one coalition), ``dist`` their
+        costs."""
+        from pyscipopt import quicksum  # deferred: SCIP loads only when a model is built
+
+        preds, robots, Q, tl = self.preds, self.robots, self.Q, self.timeline
+        m = _scip(time_limit=remaining * 0.7)
+        x: dict[tuple[int, str], Any] = {}
+        T, dist, dur = {}, {}, {}
+        for sid in sub:
+            node, Y, allowed, lin = data[sid]
+            ready_t = tl.ready(node, preds[sid])
+            T[sid] = m.addVar(lb=ready_t, vtype="C")
+            dur[sid] = tl.duration(node)
+            for i in np.flatnonzero(allowed):
+                r = robots[i]
+                x[(int(i), sid)] = m.addVar(vtype="B")
+                dist[(int(i), sid)] = tl.cost(r, node)
+                m.addCons(T[sid] >= tl.arrival(r, node) * x[(int(i), sid)])
+            xs = {i: x[(i, s)] for (i, s) in x if s == sid}
+            _add_rows(m, xs, Q, Y, lin)
+        z = m.addVar(lb=0.0, vtype="C")
+        for sid in sub:
+            m.addCons(z >= T[sid] + dur[sid])
+        for i in range(len(robots)):
+            mine = [x[k] for k in x if k[0] == i]
+            if len(mine) > 1:
+                m.addCons(quicksum(mine) <= 1)
+        m.setObjective(z, "minimize")
+        return m, x, z, dist
+
+    def _wave_costs(self, m: Any, x: dict, z: Any, dist: dict, deadline: float, info: dict[str, Any]) -> dict:
+        """The wave's choices at (about) the latest finish found: then the largest cost (total
+        cost, the paper's first objective), then the sum of costs; the stages' outcomes go into
+        ``info``."""
+        from pyscipopt import quicksum  # deferred: SCIP loads only when a model is built
+
+        zbest, gap = m.getObjVal(), m.getGap()
+        info.update({"gap": float(gap), "latest_finish": float(zbest)})
+        sol = {k: m.getSolVal(m.getBestSol(), v) for k, v in x.items()}
+        m.freeTransform()
+        m.addCons(z <= zbest + 1e-6 * max(1.0, zbest))
+        if self.timeline.cost_kind == "total":
+            # the paper's first objective at (about) that latest finish: the largest total travel
+            w = m.addVar(lb=0.0, vtype="C")
+            for k, v in x.items():
+                m.addCons(w >= dist[k] * v)
+            m.setObjective(w, "minimize")
+            m.setParam("limits/time", max(0.05, (deadline - time.perf_counter()) * 0.5))
+            m.optimize()
+            info["max_cost_status"] = IPStatus.of(m)
+            found = m.getNSols() > 0
+            if found:
+                sol = {k: m.getSolVal(m.getBestSol(), v) for k, v in x.items()}
+                wbest = m.getObjVal()
+                info["max_cost"] = float(wbest)
+            m.freeTransform()
+            if found:
+                m.addCons(w <= wbest + 1e-6 * max(1.0, wbest))
+        # then the sum of costs (with the subtask cost: the metres driven)
+        m.setObjective(quicksum(dist[k] * v for k, v in x.items()), "minimize")
+        m.setParam("limits/time", max(0.05, deadline - time.perf_counter()))
+        m.optimize()
+        if m.getNSols() > 0:
+            sol = {k: m.getSolVal(m.getBestSol(), v) for k, v in x.items()}
+            info["stage2_status"] = IPStatus.of(m)
+        return sol
+
+    def _commit_wave(self, sub: list[str], data: dict[str, tuple], chosen: dict[str, list[int]], dist: dict) -> None:
+        """Commit the wave's coalitions in the order they start (then graph order)."""
+        robots, tl = self.robots, self.timeline
+        starts = {}
+        for sid in sub:
+            node = data[sid][0]
+            starts[sid] = max([tl.ready(node, self.preds[sid])] + [tl.arrival(robots[i], node) for i in chosen[sid]])
+        for sid in sorted(sub, key=lambda s: (starts[s], self.nodes[s]["index"])):
+            picked = sorted(chosen[sid])
+            self._commit(sid, [robots[i] for i in picked], {robots[i]: float(dist[(i, sid)]) for i in picked})
 
     # ------------------------------------------------------------------ the contract
     def result(self, mode: str, time_s: float) -> dict:

@@ -40,7 +40,6 @@ import itertools
 import math
 import time
 from dataclasses import dataclass, field
-from typing import Any
 
 from pipflow.errors import InputError
 from pipflow.team.allocation import IPStatus
@@ -106,46 +105,60 @@ class _Model:
     def __init__(self, p: JointProblem, ub: float, w_ub: float | None):
         from pyscipopt import Model, quicksum  # deferred: SCIP loads only when a model is built
 
-        self.p = p
-        ids, robots = p.ids, range(len(p.robots))
-        head, tail = heads_tails(p)
-        anc = ancestors(p)
+        self.p, self.ub, self.sum = p, ub, quicksum
+        self.head, self.tail = heads_tails(p)
+        self.anc = ancestors(p)
+        self.latest = {b: ub - self.tail[b] - p.duration[b] for b in p.ids}  # latest start within the bound
+        self.m = Model()
+        self.m.hideOutput()
+        self._arcs()
+        self._coverage()
         apart = apart_pairs(p)
-        latest = {b: ub - tail[b] - p.duration[b] for b in ids}  # latest start within the bound
-        m = self.m = Model()
-        m.hideOutput()
-        y: dict[tuple[int, str, str], Any] = {}
-        drive: dict[tuple[int, str, str], float] = {}  # metres from the arc's tail to b's first place
-        for i in robots:
-            for b in ids:
+        self._times(apart)
+        self._apart(apart)
+        self._robots_busy()
+        self._no_subtours()
+        self._travel(w_ub)
+
+    def _arcs(self) -> None:
+        """y[i, a, b]: robot i serves b right after a (``START``: first); only arcs that can keep
+        the makespan bound exist. ``drive``: metres from the arc's tail to b's first place."""
+        p, head, latest = self.p, self.head, self.latest
+        drive: dict[tuple[int, str, str], float] = {}
+        for i in range(len(p.robots)):
+            for b in p.ids:
                 if not p.allowed[b][i]:
                     continue
                 d = p.dist(p.robots[i], p.first[b])
                 if d / p.speed <= latest[b] + SLACK_ABS:
                     drive[(i, START, b)] = d
-                for a in ids:
-                    if a == b or not p.allowed[a][i] or b in anc[a]:
+                for a in p.ids:
+                    if a == b or not p.allowed[a][i] or b in self.anc[a]:
                         continue  # robot i cannot serve a before b when b must end before a starts
                     d = p.dist(p.last[a], p.first[b])
                     if head[a] + p.duration[a] + d / p.speed <= latest[b] + SLACK_ABS:
                         drive[(i, a, b)] = d
-        for k in drive:
-            y[k] = m.addVar(vtype="B")
-        self.y, self.drive = y, drive
+        self.y = {k: self.m.addVar(vtype="B") for k in drive}
+        self.drive = drive
+
+    def _coverage(self) -> None:
+        """Flows (a robot leaves a subtask at most as often as it enters it), every subtask served
+        by a coalition that covers its skills and its linear rules."""
+        p, m, quicksum = self.p, self.m, self.sum
         into: dict[tuple[int, str], list] = {}
         out_of: dict[tuple[int, str], list] = {}
-        for (i, a, b), v in y.items():
+        for (i, a, b), v in self.y.items():
             into.setdefault((i, b), []).append(v)
             out_of.setdefault((i, a), []).append(v)
         x = {k: quicksum(vs) for k, vs in into.items()}
         for (i, a), vs in out_of.items():
             m.addCons(quicksum(vs) <= (1 if a == START else x.get((i, a), 0)))
-        for k, vs in into.items():
+        for vs in into.values():
             m.addCons(quicksum(vs) <= 1)
-        for b in ids:
-            mine = {i: x[(i, b)] for i in robots if (i, b) in x}
+        for b in p.ids:
+            mine = {i: x[(i, b)] for i in range(len(p.robots)) if (i, b) in x}
             if not mine:
-                raise InputError(f"subtask {b}: no robot the rules allow can reach it within {ub:g} s")
+                raise InputError(f"subtask {b}: no robot the rules allow can reach it within {self.ub:g} s")
             m.addCons(quicksum(mine.values()) >= 1)
             need = p.need[b]
             for u in range(len(p.skills)):
@@ -154,14 +167,19 @@ class _Model:
             for L in p.lin[b]:
                 expr = quicksum(float(L.coef[i]) * v for i, v in mine.items() if L.coef[i] != 0)
                 m.addCons(expr <= L.rhs if L.sense == "<=" else expr >= L.rhs if L.sense == ">=" else expr == L.rhs)
-        S = {b: m.addVar(lb=head[b], ub=max(head[b], latest[b]), vtype="C") for b in ids}
-        C = m.addVar(lb=min(ub, chain_bound(p, apart, head, tail, anc)), ub=ub, vtype="C")
-        for b in ids:
-            m.addCons(C >= S[b] + p.duration[b] + tail[b])
+        self.into = into
+
+    def _times(self, apart: set) -> None:
+        """Start times S, the makespan C; precedence, and an arc's drive before its subtask starts."""
+        p, m, head, latest = self.p, self.m, self.head, self.latest
+        S = {b: m.addVar(lb=head[b], ub=max(head[b], latest[b]), vtype="C") for b in p.ids}
+        C = m.addVar(lb=min(self.ub, chain_bound(p, apart, head, self.tail, self.anc)), ub=self.ub, vtype="C")
+        for b in p.ids:
+            m.addCons(C >= S[b] + p.duration[b] + self.tail[b])
             for q in p.preds[b]:
                 m.addCons(S[b] >= S[q] + p.duration[q])
-        for (i, a, b), v in y.items():
-            t = drive[(i, a, b)] / p.speed
+        for (i, a, b), v in self.y.items():
+            t = self.drive[(i, a, b)] / p.speed
             if a == START:
                 if t > head[b]:
                     m.addCons(S[b] >= t * v)
@@ -169,14 +187,18 @@ class _Model:
                 big = (latest[a] + p.duration[a]) + t - head[b]
                 if big > 0:
                     m.addCons(S[b] >= S[a] + p.duration[a] + t - big * (1 - v))
-        # subtasks no two disjoint coalitions can serve share a robot, so one ends (and that robot
-        # drives to the other) before the other starts: a disjunction SCIP can branch on
+        self.S, self.C = S, C
+
+    def _apart(self, apart: set) -> None:
+        """Subtasks no two disjoint coalitions can serve share a robot, so one ends (and that
+        robot drives to the other) before the other starts: a disjunction SCIP can branch on."""
+        p, m, S, latest, head = self.p, self.m, self.S, self.latest, self.head
         for b, c in sorted(apart):
             t_bc = p.dist(p.last[b], p.first[c]) / p.speed
             t_cb = p.dist(p.last[c], p.first[b]) / p.speed
-            if b in anc[c]:
+            if b in self.anc[c]:
                 m.addCons(S[c] >= S[b] + p.duration[b] + t_bc)
-            elif c in anc[b]:
+            elif c in self.anc[b]:
                 m.addCons(S[b] >= S[c] + p.duration[c] + t_cb)
             else:
                 o = m.addVar(vtype="B")  # 1: b first
@@ -184,33 +206,46 @@ class _Model:
                 big_cb = latest[c] + p.duration[c] + t_cb - head[b]
                 m.addCons(S[c] >= S[b] + p.duration[b] + t_bc - max(big_bc, 0.0) * (1 - o))
                 m.addCons(S[b] >= S[c] + p.duration[c] + t_cb - max(big_cb, 0.0) * o)
-        for i in robots:  # a robot does its subtasks one after another
-            busy = [(v, drive[k] / p.speed + p.duration[k[2]]) for k, v in y.items() if k[0] == i]
+
+    def _robots_busy(self) -> None:
+        """A robot does its subtasks one after another (the makespan is at least its busy time),
+        and b starts no sooner than the one arc into it that robot i uses allows at the earliest
+        (no big-M, so the LP sees it)."""
+        p, m, y, quicksum = self.p, self.m, self.y, self.sum
+        for i in range(len(p.robots)):
+            busy = [(v, self.drive[k] / p.speed + p.duration[k[2]]) for k, v in y.items() if k[0] == i]
             if busy:
-                m.addCons(C >= quicksum(t * v for v, t in busy))
-        for (i, b), vs in into.items():
-            # at most one of robot i's arcs into b is used: b starts no sooner than that arc allows
-            # at the earliest (no big-M, so the LP sees it)
-            early = [(v, drive[(i, a, b)] / p.speed + (0.0 if a == START else head[a] + p.duration[a]))
+                m.addCons(self.C >= quicksum(t * v for v, t in busy))
+        for (i, b) in self.into:
+            early = [(v, self.drive[(i, a, b)] / p.speed + (0.0 if a == START else self.head[a] + p.duration[a]))
                      for (j, a, bb), v in y.items() if j == i and bb == b]
-            if any(t > head[b] for _, t in early):
-                m.addCons(S[b] >= quicksum(t * v for v, t in early))
+            if any(t > self.head[b] for _, t in early):
+                m.addCons(self.S[b] >= quicksum(t * v for v, t in early))
+
+    def _no_subtours(self) -> None:
+        """With subtasks of zero duration the times alone allow cycles of arcs: order variables U
+        (Miller-Tucker-Zemlin) forbid them."""
+        p, m = self.p, self.m
         self.U = {}
         if min(p.duration.values()) <= 0:
-            U = self.U = {b: m.addVar(lb=0.0, ub=len(ids) - 1, vtype="C") for b in ids}
-            for b in ids:
+            U = self.U = {b: m.addVar(lb=0.0, ub=len(p.ids) - 1, vtype="C") for b in p.ids}
+            for b in p.ids:
                 for q in p.preds[b]:
                     m.addCons(U[b] >= U[q] + 1)
-            for (i, a, b), v in y.items():
+            for (i, a, b), v in self.y.items():
                 if a != START:
-                    m.addCons(U[b] >= U[a] + 1 - len(ids) * (1 - v))
-        self.metres = {i: quicksum((drive[k] + p.route_len[k[2]]) * v for k, v in y.items() if k[0] == i)
-                       for i in robots}
+                    m.addCons(U[b] >= U[a] + 1 - len(p.ids) * (1 - v))
+
+    def _travel(self, w_ub: float | None) -> None:
+        """Each robot's metres, TC-max W (bounded by ``w_ub``) and the three objectives."""
+        p, m, quicksum = self.p, self.m, self.sum
+        self.metres = {i: quicksum((self.drive[k] + p.route_len[k[2]]) * v for k, v in self.y.items() if k[0] == i)
+                       for i in range(len(p.robots))}
         W = m.addVar(lb=0.0, ub=w_ub if w_ub is not None else m.infinity(), vtype="C")
-        for i in robots:
+        for i in range(len(p.robots)):
             m.addCons(W >= self.metres[i])
-        self.S, self.C, self.W = S, C, W
-        self.objectives = {"makespan": C, "tc_max": W, "tc_sum": quicksum(self.metres.values())}
+        self.W = W
+        self.objectives = {"makespan": self.C, "tc_max": W, "tc_sum": quicksum(self.metres.values())}
 
     def hint(self, plan: Plan) -> None:
         """A known plan as SCIP's first solution (partial: SCIP completes and checks it; a plan that

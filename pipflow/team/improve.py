@@ -40,7 +40,7 @@ import itertools
 import math
 import random
 import time
-from typing import Iterator
+from typing import Any, Iterator
 
 import numpy as np
 
@@ -480,14 +480,14 @@ class Search:
 
 
 def improve_allocation(graph: dict, world: dict, allocation: dict, constraints: list | None = None,
-                       linear: list | None = None, *, speed: float = 1.0, handling: float = 2.0,
-                       budget: int = DEFAULT_BUDGET, seed: int = 0, travel=None) -> dict:
+                       linear: list | None = None, *, budget: int = DEFAULT_BUDGET, seed: int = 0,
+                       **timing: Any) -> dict:
     """An allocation (the ``allocate.*`` contract) at least as good as ``allocation``, from the
-    search above. Both are replayed by the Timeline itself and the new one is kept only when its
+    search above; ``timing``: the :class:`JointProblem`'s ``speed``, ``handling`` and ``travel``. Both are replayed by the Timeline itself and the new one is kept only when its
     (makespan, TC-max, TC-sum) is lexicographically better; its assignments are in its commit
     order, with costs as the original allocation's cost definition prices them."""
     t0 = time.perf_counter()
-    p = JointProblem(graph, world, constraints, linear, travel=travel, speed=speed, handling=handling)
+    p = JointProblem(graph, world, constraints, linear, **timing)
     plan0 = p.plan_of(allocation)
     try:
         p.check(plan0)
@@ -495,7 +495,7 @@ def improve_allocation(graph: dict, world: dict, allocation: dict, constraints: 
         raise InputError(f"the allocation to improve is not a valid plan of this graph: {exc}") from None
     search = Search(p, budget=budget, seed=seed)
     plan, _ = search.run(plan0)
-    before = schedule_key(build_schedule(graph, allocation, world, speed=speed, handling=handling, travel=p.travel))
+    before = schedule_key(build_schedule(graph, allocation, world, speed=p.speed, handling=p.handling, travel=p.travel))
     after = schedule_key(replay(p, plan))
     better = lex_less(after, before)
     names = ("makespan", "tc_max", "tc_sum")

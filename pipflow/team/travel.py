@@ -46,6 +46,7 @@ import networkx as nx
 import numpy as np
 
 from pipflow.errors import InputError
+from pipflow.taskdomains import task_domain
 
 Point = tuple[float, float]
 Place = Union[str, Sequence[float]]
@@ -340,8 +341,9 @@ class _Geometry:
 class TravelMap:
     """Shortest obstacle-free travel between points or named places of one world.
 
-    Places are shelf names (standing at the shelf's ``access`` point) and robot names (the
-    robot's ``start``); points are ``[x, y]`` in metres.
+    Places are the names of the world's fixtures (its task domain's
+    :meth:`~pipflow.taskdomain.TaskDomain.places`: standing at the fixture's ``access`` point) and
+    robot names (the robot's ``start``); points are ``[x, y]`` in metres.
 
     >>> tm = TravelMap(world)                       # doctest: +SKIP
     >>> tm.distance("robot0", "shelf3"), tm.path("shelf1", [20, 2])   # doctest: +SKIP
@@ -356,8 +358,7 @@ class TravelMap:
             self.height = float(floor["height"])
         except (KeyError, TypeError) as exc:
             raise InputError("world has no floor {width, height}") from exc
-        # shelves (warehouse) and places (household floor plans) are both footprint + access point
-        fixtures = {**(world.get("shelves") or {}), **(world.get("places") or {})}
+        fixtures = task_domain(world).places(world)  # footprints with access points, in any domain
         self.footprints = {
             name: (float(s["x"]), float(s["y"]), float(s["x"]) + float(s["width"]),
                    float(s["y"]) + float(s["depth"]))
@@ -388,7 +389,7 @@ class TravelMap:
         if isinstance(a, str):
             if a not in self.places:
                 raise InputError(
-                    f"unknown place {a!r}; places are shelves and robots: {', '.join(sorted(self.places))}")
+                    f"unknown place {a!r}; places are the world's fixtures and robots: {', '.join(sorted(self.places))}")
             return self.places[a]
         try:
             x, y = float(a[0]), float(a[1])
@@ -412,7 +413,7 @@ class TravelMap:
     def _key(self, places: dict[str, Point]) -> str:
         content = {
             "floor": [self.width, self.height],
-            "shelves": sorted((n, list(r)) for n, r in self.footprints.items()),
+            "footprints": sorted((n, list(r)) for n, r in self.footprints.items()),
             "places": sorted((n, list(p)) for n, p in places.items()),
             "inflate": self.inflate,
         }

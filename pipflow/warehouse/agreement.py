@@ -13,13 +13,13 @@ from typing import Any
 
 from pipflow.goalcounts import describe, holds, is_bound
 from pipflow.language.agreement import Finding, Opinion, judge, remembered_reading, words_note
-from pipflow.language.names import NameIndex, tokenize
+from pipflow.warehouse.language.names import NameIndex, tokenize
 
 
 def _read(command: str, world: dict) -> dict:
     """The offline reading with the order it comes from (the words of each statement and rule)."""
     # deferred: builds the lark parser (~300 ms; only a check of a model's reading needs it)
-    from pipflow.language.understand import understand
+    from pipflow.warehouse.language.translator import understand
 
     got = understand(command, world)
     return {"goal": got["goal"], "constraints": list(got["constraints"]), "order": got["order"]}

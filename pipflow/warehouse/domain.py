@@ -2,9 +2,9 @@
 as ``warehouse`` in the entry-point group ``pipflow.task_domains``).
 
 Each method is a thin face of a module that does the work: the world loader
-(:mod:`pipflow.warehouse.world`), the command reader (:mod:`pipflow.language.understand`, the
+(:mod:`pipflow.warehouse.world`), the command reader (:mod:`pipflow.warehouse.language.translator`, the
 parser and resolver of the warehouse's order language), the stock-problem writer and checks
-(:mod:`pipflow.pddl.writer`, the debugger's and verifier's stock checks), the pybullet simulation
+(:mod:`pipflow.warehouse.problem`, the debugger's and verifier's stock checks), the pybullet simulation
 (:mod:`pipflow.warehouse.simulation`) and the scoring (:mod:`pipflow.warehouse.scoring`).
 
 Imports of the parser (lark), UP and pybullet are deferred into the methods on purpose: the
@@ -15,28 +15,24 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any, Callable, Mapping
 
-from pipflow.language import grounding
 from pipflow.language.offline import NO_USAGE
-from pipflow.language.parsing import FIELD_KEYS
-from pipflow.pddl import writer
-from pipflow.pddl.common import stock_goals
-from pipflow.pddl.debugger import world_mismatches
-from pipflow.pddl.names import goal_in_world_names
-from pipflow.pddl.verifier import goal_problems
 from pipflow.resources import data_file
-from pipflow.taskdomain import GoalCheck, Grounding, Save, TaskDomain, flat_simulation
+from pipflow.taskdomain import Facts, GoalCheck, Grounding, Save, TaskDomain, flat_simulation
 from pipflow.warehouse import agreement
+from pipflow.warehouse import problem as writer
 from pipflow.warehouse import world as worlds
+from pipflow.warehouse.language import grounding
+from pipflow.warehouse.meaning import understanding
+from pipflow.warehouse.problem import goal_in_world_names, goal_problems, stock_goals, world_mismatches
 from pipflow.warehouse.scoring import score_run
 from pipflow.warehouse.simulation import simulate
 from pipflow.warehouse.starts import vary_starts
-from pipflow.warehouse.understanding import understanding
 
 
 def _read_grounded(text: str, world: dict) -> dict:
     """A grounded answer (an order in JSON) checked and resolved, its problem written."""
     # deferred: pulls lark and jsonschema (the resolver; only LLM-written orders need it)
-    from pipflow.language.llm_orders import read_grounded
+    from pipflow.warehouse.language.llm_orders import read_grounded
 
     got = read_grounded(text, world)
     return {"problem": WarehouseDomain().write_problem(world, got["goal"], "warehouse"), "goal": got["goal"],
@@ -60,8 +56,10 @@ class WarehouseDomain(TaskDomain):
                                             "pip-llm-no-as", "pip-llm-n1", "pip-llm-n2", "pip-llm-n3",
                                             "pip-llm-n4")}}
     default_prompt = "warehouse_problem"
-    rule_fields = FIELD_KEYS
-    grounding = Grounding(gbnf=grounding.gbnf, response_format=grounding.response_format, read=_read_grounded)
+    rule_fields = ("product", "from", "to")
+    grounding = Grounding(gbnf=grounding.gbnf, response_format=grounding.response_format, read=_read_grounded,
+                          answer_size=grounding.answer_size)
+    name_sections = ("shelves", "products", "robots")
     simulate_options = ("picture", "animation")
 
     def pddl_domain(self) -> Path:
@@ -77,6 +75,10 @@ class WarehouseDomain(TaskDomain):
         return (f"{len(world['shelves'])} shelves, {len(world['products'])} products, "
                 f"{len(world['robots'])} robots")
 
+    def places(self, world: dict) -> Mapping[str, Mapping[str, Any]]:
+        """The shelves: a footprint and an access point each."""
+        return world.get("shelves") or {}
+
     def rule_names(self, world: dict) -> Mapping[str, tuple[Any, str]]:
         shelves = world.get("shelves", {})
         return {"product": (world.get("products", {}), "product"), "from": (shelves, "shelf"),
@@ -85,7 +87,7 @@ class WarehouseDomain(TaskDomain):
     def read_offline(self, command: str, world: dict, domain_text: str = "",
                      save: Save | None = None) -> dict:
         # deferred: builds the lark parser (~300 ms; only offline reading needs it)
-        from pipflow.language.understand import understand
+        from pipflow.warehouse.language.translator import understand
 
         result = understand(command, world)
         if save is not None:
@@ -107,7 +109,7 @@ class WarehouseDomain(TaskDomain):
         """The model's goal read back into an order, for the run summary (the paper's mode sets
         no ``goal``: the verifier reads it)."""
         # deferred: pulls lark and jsonschema (the resolver; only a problem's read-back needs it)
-        from pipflow.language.llm_orders import explain_goal
+        from pipflow.warehouse.language.llm_orders import explain_goal
 
         return explain_goal(_stock_goal(parsed, world), constraints, world)
 
@@ -125,6 +127,9 @@ class WarehouseDomain(TaskDomain):
         """Each robot's ``carry`` skill (units per move) and the only/never rules."""
         robots = {name: r.get("skills", {}).get("carry", 0) for name, r in world.get("robots", {}).items()}
         return {"robots": robots, "rules": constraints or []}
+
+    def feedback_facts(self, messages: list[str], world: dict) -> Facts:
+        return worlds.feedback_facts(messages, world)
 
     def second_opinion(self, command: str, world: dict, goal: Any, constraints: list[dict],
                        refusal: str | None, last: bool = False) -> Any | None:

@@ -22,7 +22,7 @@ TC-avg (over the robots that moved: the paper's meaning) and ``tc_avg_team`` (ov
 of the world, which falls as idle robots are added) from the simulated travel; RU =
 ``lower_bound / plan_length`` (capped at 1).
 
-RU's lower bound is :func:`pipflow.pddl.bounds.fewest_moves`: the fewest moves of any plan once
+RU's lower bound is :func:`pipflow.warehouse.bounds.fewest_moves`: the fewest moves of any plan once
 the order of moves is dropped (an integer program, SCIP), so RU = 1 exactly when the plan has the
 fewest moves possible, and below 1 by how many moves it wastes.
 """
@@ -141,8 +141,8 @@ def plan_lower_bound(world: dict, goal: dict, time_limit: float = 10.0) -> int |
     """The fewest moves any plan needs (order-free IP; its proven bound if SCIP runs out of
     time); None when no final state meets the goal."""
     # deferred: pulls unified_planning and networkx (~500 ms; only the plan's lower bound needs them)
-    from pipflow.pddl.bounds import fewest_moves
-    from pipflow.pddl.transport import instance_from_world  # deferred: pulls unified_planning (as above)
+    from pipflow.warehouse.bounds import fewest_moves
+    from pipflow.warehouse.planner import instance_from_world  # deferred: pulls unified_planning (as above)
 
     moves, _ = fewest_moves(instance_from_world(world, goal), time_limit=time_limit)
     return moves

@@ -17,6 +17,7 @@ themselves, and gold goals of feasible tasks that the world cannot meet.
 """
 from __future__ import annotations
 
+import re
 from pathlib import Path
 from typing import Any
 
@@ -24,6 +25,7 @@ from pipflow.errors import Diagnostic, Location, TaskFileError
 from pipflow.floorplan import inside_footprint, layout_diagnostics, on_floor
 from pipflow.goalcounts import is_bound, value_problems
 from pipflow.suggest import did_you_mean
+from pipflow.taskdomain import Facts
 from pipflow.worldfile import (LIMITS_VARIABLE, Locate, checked_yaml, duplicate_diagnostics, is_point, load_schema,
                                parse_mapping, read_world_file, schema_diagnostics, size_limits)
 
@@ -244,7 +246,7 @@ def _gold_feasibility(task: dict, tid: Any, goal: dict, world: dict, where: Loca
     room for every unit): otherwise a correct refusal would be scored as a failure. Checked only
     once the goal's names and values are valid (their own diagnostics say what is wrong)."""
     # deferred: pulls networkx (~150 ms; only a task file's gold goals are checked with it)
-    from pipflow.pddl.feasibility import infeasibility_reasons
+    from pipflow.warehouse.feasibility import infeasibility_reasons
 
     if task.get("feasible", True) is False or task.get("expect") == "refuse":
         return []
@@ -296,11 +298,27 @@ def load_tasks(path: str | Path) -> dict:
 # ---------------------------------------------------------------------------------------------
 # facts
 # ---------------------------------------------------------------------------------------------
-def shelf_load(world: dict, shelf: str) -> int:
-    """Units of all products on ``shelf`` in the initial state."""
-    return sum(world["stock"].get(shelf, {}).values())
-
-
-def product_total(world: dict, product: str) -> int:
-    """Units of ``product`` that exist in the world (over all shelves)."""
-    return sum(items.get(product, 0) for items in world["stock"].values())
+def feedback_facts(messages: list[str], world: dict) -> Facts:
+    """What the refinement loop tells a model about the shelves and products the round's
+    messages name, when its next prompt would repeat the last one: the (shelf, product) pairs one
+    message names together (answer lines naming both are marked), each named shelf's counts and
+    capacity, and each named product's units in all and where."""
+    shelves, products = list(world.get("shelves") or {}), list(world.get("products") or {})
+    together: set[tuple[str, str]] = set()
+    for m in messages:
+        words = set(re.findall(r"[\w-]+", m.lower()))
+        together |= {(s, p) for s in shelves for p in products if s.lower() in words and p.lower() in words}
+    stock = world.get("stock") or {}
+    named = [s for s in shelves if any(re.search(rf"\b{re.escape(s)}\b", m) for m in messages)]
+    lines = []
+    for s in named:
+        held = ", ".join(f"{n} {p}" for p, n in (stock.get(s) or {}).items() if n) or "nothing"
+        load = sum((stock.get(s) or {}).values())
+        lines.append(f"- {s} holds {held} now ({load} units; capacity {world['shelves'][s].get('capacity')})")
+    for p in products:
+        if not any(re.search(rf"\b{re.escape(p)}\b", m) for m in messages):
+            continue
+        where = {s: (items or {}).get(p, 0) for s, items in stock.items() if (items or {}).get(p)}
+        total = sum(where.values())
+        lines.append(f"- there are {total} {p} in all" + (f" ({', '.join(f'{s} {n}' for s, n in where.items())})" if where else ""))
+    return Facts(sorted(together), lines)

@@ -20,7 +20,7 @@ exact search where capacity makes the flow's answer too long:
    move is split to the room there is or parked on a shelf with room.
 5. **Exact search.** When the plan is longer than an admissible lower bound (per product, the
    moves that the cells below and above their range need, :func:`lower_bound`, and the order-free
-   IP of :mod:`pipflow.pddl.bounds`), an A* search over stock states with that bound looks for a
+   IP of :mod:`pipflow.warehouse.bounds`), an A* search over stock states with that bound looks for a
    shorter plan, pruned at the flow plan's length and limited to ``search_budget`` (generated
    states times their size). If it ends within the budget, the plan is *proven*
    to have the fewest moves (UP status SOLVED_OPTIMALLY); otherwise the flow plan (or the best
@@ -62,7 +62,7 @@ from typing import Any, Callable, Optional
 
 from pipflow.pddl.convert import data_to_plan, initial_numbers
 from pipflow.pddl.linear import NotLinear, comparison, conjuncts, key_of
-from pipflow.pddl.writer import magnitudes
+from pipflow.warehouse.problem import magnitudes
 
 ENGINE_NAME = "pipflow-transport"
 ACTION = "move-product"
@@ -1013,12 +1013,6 @@ class TransportPlanner(Engine, OneshotPlannerMixin):
         if outcome.optimal:
             return self._result(S.SOLVED_OPTIMALLY, plan, f"{len(outcome.moves)} moves, proven fewest")
         return self._result(S.SOLVED_SATISFICING, plan, outcome.note)
-
-
-def register(env: Any) -> None:
-    """Add ``pipflow-transport`` to a UP environment's engine factory (idempotent)."""
-    if ENGINE_NAME not in env.factory.engines:
-        env.factory.add_engine(ENGINE_NAME, __name__, "TransportPlanner")
 
 
 def fewest_moves(inst: Instance, time_limit: float = 60.0) -> tuple[int | None, bool]:

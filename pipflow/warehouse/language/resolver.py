@@ -24,7 +24,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from pipflow.errors import Refusal, TranslationError
-from pipflow.language.robots import select
+from pipflow.warehouse.language.robots import select
 
 
 @dataclass

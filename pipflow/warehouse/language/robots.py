@@ -9,8 +9,9 @@ from __future__ import annotations
 from lark import Token, Tree
 
 from pipflow.errors import Refusal, TranslationError
-from pipflow.language.lexicon import SUPERLATIVES
-from pipflow.language.names import NameIndex, normalize, split_digits
+from pipflow.language.spelling import normalize, split_digits
+from pipflow.warehouse.language.lexicon import SUPERLATIVES
+from pipflow.warehouse.language.names import NameIndex
 
 SUPER_WORDS = set(SUPERLATIVES)
 #: words that make a kind or tag said in the singular mean any or all robots of it

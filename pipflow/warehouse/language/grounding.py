@@ -14,7 +14,7 @@ tags and skills are enums of the world. Providers with JSON-schema structured ou
 rule's scope the command does not state is ``"any"``); llama.cpp servers get the same language
 as a GBNF grammar (:func:`gbnf`) whose lists, numbers, whitespace and ``words`` are bounded, so a
 small model cannot run on until max_tokens. The resolver then computes goal, bounds, rules and
-the explanation, and the problem writer writes the PDDL (:mod:`pipflow.language.llm_orders`), so
+the explanation, and the problem writer writes the PDDL (:mod:`pipflow.warehouse.language.llm_orders`), so
 a name such as ``prodcut3`` cannot reach the planner: the decoder never emits it.
 """
 from __future__ import annotations
@@ -62,6 +62,15 @@ def largest_count(world: dict) -> int:
     caps = [int((s or {}).get("capacity", 0) or 0) for s in (world.get("shelves") or {}).values()]
     total = sum(int(n or 0) for row in (world.get("stock") or {}).values() for n in (row or {}).values())
     return max(caps + [total, 1])
+
+
+def answer_size(world: dict, reading: dict | None) -> tuple[int, int]:
+    """``(goal items, rules)`` a grounded answer is expected to hold: the offline reading's goal
+    counts and rules when the parser read the command, else half of every shelf x product (a
+    command rarely states more) and two rules. The call's token budget comes from it."""
+    if reading is not None:
+        return sum(len(v) for v in reading.get("goal", {}).values()), len(reading.get("constraints") or [])
+    return len(world.get("shelves") or {}) * len(world.get("products") or {}) // 2, 2
 
 
 # ---------------------------------------------------------------- JSON schema

@@ -4,7 +4,7 @@ Used by ``benchmarks/team_plans.py`` and the tests to judge plan quality.
 
 * :func:`ceil_bound`: per product, every cell below (above) its goal range needs at least
   ceil(units / largest magnitude) moves in (out); units that must come from (or go to) other
-  cells need ceil(rest / largest) more (:func:`pipflow.pddl.transport.lower_bound`). Instant,
+  cells need ceil(rest / largest) more (:func:`pipflow.warehouse.planner.lower_bound`). Instant,
   but blind to capacity: a full shelf that must first send units away costs moves this bound
   does not see.
 * :func:`fewest_moves` (defined beside the planner, which uses it): an integer program (SCIP via pyscipopt) over moves per (from, to,
@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import time
 
-from pipflow.pddl.transport import Instance, MoveLimit, fewest_moves, lower_bound, search_moves
+from pipflow.warehouse.planner import Instance, MoveLimit, fewest_moves, lower_bound, search_moves
 
 __all__ = ["ceil_bound", "exact_moves", "fewest_moves"]
 

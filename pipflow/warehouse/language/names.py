@@ -6,6 +6,8 @@ works as well as the benchmark's ``shelf1``. People write names apart ("product 
 and misspell them ("prodcut3", "shelve4"); those are matched by edit distance, but only when one
 name is clearly closest: a near-tie, or a kind word with a number the world lacks ("product 9"),
 is a :class:`TranslationError` that quotes the words and lists the candidates, never a guess.
+The spelling rules any domain's reader shares (normal form, edit distance, plurals) are
+:mod:`pipflow.language.spelling`; this module knows the warehouse's kinds of names.
 """
 from __future__ import annotations
 
@@ -14,6 +16,7 @@ from dataclasses import dataclass
 
 from pipflow.errors import TranslationError
 from pipflow.language.numbers import NUMBER_WORDS, read_number, word_value
+from pipflow.language.spelling import distance, normalize, plural_forms, split_digits, tolerance, variants
 
 KINDS: tuple[str, ...] = ("shelf", "product", "robot")
 WORLD_KEYS: dict[str, str] = {"shelf": "shelves", "product": "products", "robot": "robots"}
@@ -57,7 +60,7 @@ ORDINALS: dict[str, int] = {
 
 #: the words, counts and marks of a command; the characters it steps over are the ones the reader
 #: reads as nothing (quotes, square brackets, white space): every other one was refused before
-#: (:func:`pipflow.language.lexicon.check_text`). "#" is a word of its own: a number mark after a
+#: (:func:`pipflow.warehouse.language.lexicon.check_text`). "#" is a word of its own: a number mark after a
 #: kind word ("shelf #2"), an unknown word anywhere else.
 _TOKEN = re.compile(r"[0-9]+\.[0-9]+|[A-Za-z0-9]+(?:['’][A-Za-z]+)?(?:[-_][A-Za-z0-9]+)*|[,.;:!?()]|#")
 
@@ -76,9 +79,6 @@ class Tok:
     value: object = None
     of: str = ""
 
-    def is_word(self, *words: str) -> bool:
-        return self.kind == "word" and self.value in words
-
 
 @dataclass(frozen=True)
 class _Name:
@@ -86,46 +86,6 @@ class _Name:
     kind: str
     alpha: str
     digits: str
-
-
-def normalize(text: str) -> str:
-    """Lower-case letters and digits only: "Cold-Store" and "cold store" compare equal."""
-    return re.sub(r"[^a-z0-9]", "", text.lower())
-
-
-def split_digits(norm: str) -> tuple[str, str]:
-    """("shelf4" -> "shelf", "4"); names without a trailing number keep it all as letters."""
-    m = re.fullmatch(r"(.*?[a-z])(\d+)", norm)
-    return (m.group(1), m.group(2)) if m else (norm, "")
-
-
-def distance(a: str, b: str) -> int:
-    """Edit distance counting a swap of neighbours as one edit ("prodcut" is 1 from "product")."""
-    prev2: list[int] = []
-    prev = list(range(len(b) + 1))
-    for i, ca in enumerate(a, 1):
-        cur = [i] + [0] * len(b)
-        for j, cb in enumerate(b, 1):
-            cur[j] = min(prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (ca != cb))
-            if i > 1 and j > 1 and ca == b[j - 2] and a[i - 2] == cb:
-                cur[j] = min(cur[j], prev2[j - 2] + 1)
-        prev2, prev = prev, cur
-    return prev[len(b)]
-
-
-def tolerance(length: int) -> int:
-    """Edits allowed against a stem of this length: none for very short words, 2 from 5 letters."""
-    return 0 if length <= 2 else 1 if length <= 4 else 2
-
-
-def _variants(alpha: str) -> list[str]:
-    """The word and its singular forms ("apples" -> "apple"), to forgive plurals."""
-    out = [alpha]
-    if len(alpha) > 3 and alpha.endswith("s"):
-        out.append(alpha[:-1])
-        if alpha.endswith("es"):
-            out.append(alpha[:-2])
-    return out
 
 
 def found_shelves(world: dict) -> list[str]:
@@ -151,17 +111,6 @@ def _heads(name: str) -> set[str]:
 
 def _quote(text: str) -> str:
     return f"'{text}'"
-
-
-def plural_forms(norm: str) -> list[str]:
-    """The plural spellings of a normalised name: its last word inflected ("labelroll" ->
-    "labelrolls", "sku220" -> "sku220s", "battery" -> "batteries", "box" -> "boxes"). People
-    pluralise multi-word and coded names as they do any noun, and write them apart, joined,
-    hyphenated or underscored; :func:`normalize` already makes those four spellings one."""
-    out = [norm + "s", norm + "es"]
-    if len(norm) > 2 and norm.endswith("y") and norm[-2] not in "aeiou":
-        out.append(norm[:-1] + "ies")
-    return out
 
 
 class NameIndex:
@@ -216,7 +165,7 @@ class NameIndex:
         None when the word is no head of the world's place names ("places", "areas"): then it
         stands for every place.
         """
-        for v in _variants(normalize(word)):
+        for v in variants(normalize(word)):
             if v in self.groups:
                 return list(self.groups[v])
         return None
@@ -224,7 +173,7 @@ class NameIndex:
     def _unnumbered_class(self, alpha: str) -> bool:
         """True for a class word of places that carry no numbers ("cage" of north_cage): a number
         after it is a count ("each cage 1 more"), never a label."""
-        if any(v in KIND_WORDS["shelf"] for v in _variants(alpha)):
+        if any(v in KIND_WORDS["shelf"] for v in variants(alpha)):
             return False
         members = self.group(alpha)
         return members is not None and not any(split_digits(normalize(m))[1] for m in members)
@@ -245,7 +194,7 @@ class NameIndex:
             if n.kind != kind or not n.digits or int(n.digits) != int(digits):
                 continue
             if word is not None and n.alpha and not any(
-                    w.startswith(n.alpha) or n.alpha in KIND_WORDS[kind] for w in _variants(word)):
+                    w.startswith(n.alpha) or n.alpha in KIND_WORDS[kind] for w in variants(word)):
                 continue
             out.append(n.name)
         return out
@@ -254,7 +203,7 @@ class NameIndex:
         """The kind a bare word names ("shelves", "prodcut" -> product), if any."""
         hits = set()
         for kind in KINDS:
-            for v in _variants(alpha):
+            for v in variants(alpha):
                 if v in KIND_WORDS[kind] or v in self.stems[kind]:
                     hits.add(kind)
                 elif alpha not in STOPWORDS and alpha not in self.reserved and any(
@@ -267,18 +216,18 @@ class NameIndex:
 
     def lookup(self, alpha: str, digits: str, text: str, fuzzy: bool = True) -> Tok | None:
         """Resolve letters + number to a name or a kind word; raise when it cannot be told."""
-        for v in _variants(alpha):
+        for v in variants(alpha):
             exact = [n for n in self.names if n.alpha == v and n.digits == digits]
             if exact:
                 return Tok("name", text, exact[0].name, exact[0].kind)
-        if not digits and any(v in KIND_WORDS[k] for k in KINDS for v in _variants(alpha)):
+        if not digits and any(v in KIND_WORDS[k] for k in KINDS for v in variants(alpha)):
             fuzzy = False  # "racks" is the kind word, not a misspelt rack_a (nor a tie of all racks)
         if fuzzy and alpha not in STOPWORDS and alpha not in self.reserved and alpha:
             scored = []
             for n in self.names:
                 if n.digits != digits:
                     continue
-                d = min(distance(v, n.alpha) for v in _variants(alpha))
+                d = min(distance(v, n.alpha) for v in variants(alpha))
                 if d <= tolerance(len(n.alpha)) and alpha[:1] == n.alpha[:1]:
                     scored.append((d, n))
             if scored:

@@ -1,7 +1,7 @@
 """Orders from a language model, for both LLM modes, so that everything after the generator
 (resolver explanation, verifier, run summary) sees the same typed meaning as the offline path.
 
-* Grounded mode: the model's answer IS an order (:mod:`pipflow.language.grounding` constrains
+* Grounded mode: the model's answer IS an order (:mod:`pipflow.warehouse.language.grounding` constrains
   it). :func:`read_grounded` checks it against ``schemas/order.schema.json`` and the world, then
   resolves it; whatever is wrong becomes ONE message about the JSON the model was asked for
   (which statement, which key, which name, what to write instead), for the next round's prompt.
@@ -15,10 +15,10 @@ import json
 from typing import Any
 
 from pipflow.errors import Refusal, TranslationError
-from pipflow.language.grounding import ANY, vocabulary
-from pipflow.language.order import validate_order
+from pipflow.warehouse.language.grounding import ANY, vocabulary
+from pipflow.warehouse.language.order import validate_order
 from pipflow.language.parsing import ParseIssue, decode_answer_json
-from pipflow.language.resolver import resolve
+from pipflow.warehouse.language.resolver import resolve
 
 #: the selector keys of a statement and the role of the names they hold
 SELECTOR_ROLES = {"places": "places", "from": "places", "to": "places", "items": "items"}
@@ -137,23 +137,6 @@ def legacy_order(data: dict) -> dict[str, Any]:
         rule.update({k: c[k] for k in SCOPE_ROLES if c.get(k) not in (None, ANY)})
         rules.append(rule)
     return {"statements": statements, "rules": rules}
-
-
-def goal_statement(shelf: str, product: str, value: Any) -> str:
-    """One goal count as the statement of a grounded order (for feedback in the answer's form)."""
-    base = {"places": {"names": [shelf]}, "items": {"names": [product]}}
-    if isinstance(value, dict):
-        amount = {k: int(value[k]) for k in ("at_least", "at_most") if k in value}
-        return json.dumps({"op": "bound", **base, "amount": amount, "words": "..."})
-    return json.dumps({"op": "set", **base, "amount": {"count": int(value)}, "words": "..."})
-
-
-def rule_statement(rule: dict) -> str:
-    """A resolved robot rule (``{"only"|"never": [names], ...}``) as a rule of a grounded order."""
-    mode = "only" if "only" in rule else "never"
-    out = {"mode": mode, "robots": {"names": list(rule.get(mode) or [])}}
-    out.update({k: rule.get(k, ANY) for k in SCOPE_ROLES})
-    return json.dumps({**out, "words": "..."})
 
 
 def _value_words(shelf: str, product: str, value: Any) -> str:

@@ -6,7 +6,7 @@ says what should happen to counts (``set``, ``change``, ``bound``, ``transfer``,
 items (``{"names": [...]}`` or ``{"all": true, "except": [...]}``) and an amount; a rule says
 which robots may (``only``) or may not (``never``) do which moves, with a robot selector (names,
 kind, tag, skill bound or the strongest/weakest). Each keeps the words it came from. Parser and
-LLM produce orders; :mod:`pipflow.language.resolver` turns them into goals.
+LLM produce orders; :mod:`pipflow.warehouse.language.resolver` turns them into goals.
 """
 from __future__ import annotations
 

@@ -1,8 +1,8 @@
 """The offline translator for household commands: command + household world -> goal conditions.
 
-Meaning before arithmetic, as for the warehouse: the parser (:mod:`pipflow.household.parser`, a
+Meaning before arithmetic, as for the warehouse: the parser (:mod:`pipflow.household.language.parser`, a
 lark grammar over the world's names and a small lexicon) reads the command into *orders*, one per
-reading of the sentence; the resolver (:mod:`pipflow.household.resolver`) turns an order into
+reading of the sentence; the resolver (:mod:`pipflow.household.language.resolver`) turns an order into
 goal conditions against this world, or refuses with the reason. When a sentence has several
 readings, each is resolved: readings the world rules out are dropped, and if those left mean
 different goals the command is refused as ambiguous, quoting both (never a silent pick).
@@ -16,8 +16,8 @@ from __future__ import annotations
 import json
 
 from pipflow.errors import Refusal, TranslationError
-from pipflow.household.parser import parse
-from pipflow.household.resolver import resolve
+from pipflow.household.language.parser import parse
+from pipflow.household.language.resolver import resolve
 from pipflow.household.world import members
 from pipflow.language.characters import line_readings
 
@@ -134,7 +134,7 @@ def translate(command: str, world: dict) -> dict:
     """``{"goal": conditions as the command states them (counts kept), "concrete": the goal with
     counts resolved to objects, for the PDDL problem, "order": the parsed order, "explain": one
     line per condition with the words it came from, "notes": [...], "words": the words each
-    condition came from (:func:`pipflow.household.resolver.resolve`)}``."""
+    condition came from (:func:`pipflow.household.language.resolver.resolve`)}``."""
     meaning = understand(command, world)
     goal = meaning["goal"]
     _leave_closed(world, goal)

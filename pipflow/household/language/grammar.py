@@ -1,7 +1,7 @@
 """The grammar of household command English, for lark's Earley parser.
 
-Written over token classes, not words: the tagger (:mod:`pipflow.household.parser`) turns the
-command into a sequence of classes from the lexicon (:mod:`pipflow.household.lexicon`) and the
+Written over token classes, not words: the tagger (:mod:`pipflow.household.language.parser`) turns the
+command into a sequence of classes from the lexicon (:mod:`pipflow.household.language.lexicon`) and the
 world's names (``NOUN``), so the grammar is the same for every home. ``@CLASS`` below stands for
 a class *or* that class doubling as a world name: a word such as "trash" or "microwave" is a verb
 in "trash the mug" and a place in "put the mug in the trash"; the tagger emits ``V_TRASH__NOUN``
@@ -18,7 +18,7 @@ whose foods the resolver finds through the lexicon's ``MEALS`` and the world's a
 """
 from __future__ import annotations
 
-from pipflow.household.lexicon import PHRASES
+from pipflow.household.language.lexicon import PHRASES
 
 _RULES = r"""
 start: _sep* item (_sep+ item | _sep* thengap)* _sep*

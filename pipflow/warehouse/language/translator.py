@@ -7,9 +7,9 @@ from __future__ import annotations
 
 from typing import Any
 
-from pipflow.language.order import validate_order
-from pipflow.language.parser import parse
-from pipflow.language.resolver import resolve
+from pipflow.warehouse.language.order import validate_order
+from pipflow.warehouse.language.parser import parse
+from pipflow.warehouse.language.resolver import resolve
 
 
 def understand(command: str, world: dict, check: bool = True) -> dict[str, Any]:

@@ -122,7 +122,7 @@ def final_ranges(world: dict, goal: dict[str, dict[str, Any]],
     goal accepts are those of a box cut by conservation and capacity, and such a set is contained
     in a box exactly when its range on each of the box's cells is), which is how the bench tells a
     goal that lists 0 for the shelves a gathering empties from one that leaves them to
-    conservation (:mod:`pipflow.warehouse.understanding`).
+    conservation (:mod:`pipflow.warehouse.meaning`).
 
     Each end is a minimum-cost flow (networkx's network simplex: exact, whole units): the units
     left once every cell holds its lowest count flow to the cells that may take more, costed

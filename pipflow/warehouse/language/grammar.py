@@ -6,7 +6,7 @@ which way things move, what a negation or an "except" scopes over), and only a p
 (ten more). A sentence that the grammar cannot derive is refused at the first word that fits
 nowhere, so a phrasing nobody wrote a rule for is never half-read.
 
-The terminals are categories that :mod:`pipflow.language.lexicon` assigns from the world: PLACE,
+The terminals are categories that :mod:`pipflow.warehouse.language.lexicon` assigns from the world: PLACE,
 ITEM and ROBOT (a world name), PLACEWORD/ITEMWORD/ROBOTWORD (a kind word alone: "shelf",
 "products", "robots"), RKIND and RTAG (a robot kind or tag of this world: "forklifts"), NUM (a
 count already read from digits, words, collectives or arithmetic), FRAC ("third", "quarters").

@@ -1,6 +1,6 @@
 """The command's words as the grammar's terminals, with the world as the lexicon.
 
-Names come from :mod:`pipflow.language.names` (typo-tolerant, refusing near-ties), counts from
+Names come from :mod:`pipflow.warehouse.language.names` (typo-tolerant, refusing near-ties), counts from
 :mod:`pipflow.language.numbers`; this module adds what the grammar needs on top: robot kinds,
 tags and skills of the world, superlatives, fractions, the possessive "'s", misspelt number
 words ("thre", "sixe"), and the checks on the raw text that must happen before any of that (a
@@ -16,8 +16,9 @@ from lark import Token
 
 from pipflow.errors import InputError, Refusal, TranslationError
 from pipflow.language.characters import refuse_unread
-from pipflow.language.names import STOPWORDS, NameIndex, Tok, distance, normalize, read_counts, recognize
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS
+from pipflow.language.spelling import distance, normalize
+from pipflow.warehouse.language.names import STOPWORDS, NameIndex, Tok, read_counts, recognize
 
 #: no user writes a longer command; past this the parser would only be asked to burn time
 MAX_COMMAND_CHARS = 4000

@@ -6,7 +6,7 @@ Two goals mean the same when they accept exactly the same final stocks the world
 empties equals one that leaves those zeros to conservation, while a count the run states that the
 gold leaves open (0 of a product a shelf never had, when the product could end up there) is a
 different meaning, since it turns away final stocks the gold accepts. The test is exact
-(:func:`pipflow.pddl.feasibility.final_ranges`): the two accept the same stocks exactly when, on
+(:func:`pipflow.warehouse.feasibility.final_ranges`): the two accept the same stocks exactly when, on
 every cell either goal states, the fewest and the most units a cell can hold under the one equal
 those under the other. Goals that no final stock meets (an infeasible task's gold and a reading
 of it) are compared as written: every impossible goal accepts the same nothing, yet "50" read as
@@ -18,7 +18,7 @@ from typing import Any
 
 from pipflow.goalcounts import limits, value_problems
 from pipflow.meaning import judge, rules_as_written, rules_difference
-from pipflow.pddl.feasibility import final_ranges
+from pipflow.warehouse.feasibility import final_ranges
 
 
 def _goal_limits(goal: Any) -> dict | None:

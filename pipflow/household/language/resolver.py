@@ -29,8 +29,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from pipflow.errors import Refusal, TranslationError
-from pipflow.household.lexicon import COLD, INDEFINITE, MASS_NOUNS, MEALS, REACHABLE, VIA_PROPERTY, plurals, words_of
-from pipflow.household.order import check_order
+from pipflow.household.language.lexicon import COLD, INDEFINITE, MASS_NOUNS, MEALS, REACHABLE, VIA_PROPERTY, plurals, words_of
+from pipflow.household.language.order import check_order
 from pipflow.household.problem import CONDITIONS
 from pipflow.household.world import entity, initial_state, members
 
@@ -161,29 +161,7 @@ class Resolver:
                 names = places
         if sel.get("door") and not all("openable" in entity(self.world, n)["properties"] for n in names):
             raise TranslationError(f"'{words}': '{what}' has no door in this world")
-        if "from" in sel:
-            place = self.place_of(sel["from"], words)
-            there = [n for n in names if n in self.world["objects"] and self.world["objects"][n]["in"] == place]
-            if not there:
-                where = ", ".join(f"{n} is in {self.world['objects'][n]['in']}" for n in names if n in self.world["objects"])
-                raise Refusal(f"'{words}': nothing of '{what}' is in {place}" + (f" ({where})" if where and not implicit else ""))
-            names = there
-        for st in sel.get("state") or []:
-            ok = [n for n in names if applies(self.world, n, st) and holds_now(self.world, n, st)]
-            if not ok:
-                now = "; ".join(f"{n} is {_describe(self.world, n)}" for n in names[:4])
-                raise Refusal(f"'{words}': nothing matches '{what}' in this world" + (f" ({now})" if now else ""))
-            names = ok
-        for ex in sel.get("except") or []:
-            if ex.get("ones"):   # "all the dishes except the clean ones"
-                out = [n for n in names if all(applies(self.world, n, c) and holds_now(self.world, n, c)
-                                               for c in ex.get("state") or [])]
-            else:
-                out, _ = self.select(ex, words)
-            missing = [n for n in out if n not in names]
-            if missing:
-                raise TranslationError(f"'{words}': '{ex['words']}' is not one of '{what}'")
-            names = [n for n in names if n not in out]
+        names = self._narrow(sel, words, names, implicit)
         if implicit and need and "count" not in sel:
             fit = [n for n in names if need in entity(self.world, n)["properties"]]
             if not fit:
@@ -216,6 +194,35 @@ class Resolver:
         if not names:
             raise Refusal(f"'{words}': nothing in this world is '{what}'")
         return names, implicit
+
+    def _narrow(self, sel: dict, words: str, names: list[str], implicit: bool) -> list[str]:
+        """The names a selector keeps of ``names`` by where they are ("from"), their states and
+        its exceptions; refused when nothing is left of a place or a state."""
+        what = sel["words"]
+        if "from" in sel:
+            place = self.place_of(sel["from"], words)
+            there = [n for n in names if n in self.world["objects"] and self.world["objects"][n]["in"] == place]
+            if not there:
+                where = ", ".join(f"{n} is in {self.world['objects'][n]['in']}" for n in names if n in self.world["objects"])
+                raise Refusal(f"'{words}': nothing of '{what}' is in {place}" + (f" ({where})" if where and not implicit else ""))
+            names = there
+        for st in sel.get("state") or []:
+            ok = [n for n in names if applies(self.world, n, st) and holds_now(self.world, n, st)]
+            if not ok:
+                now = "; ".join(f"{n} is {_describe(self.world, n)}" for n in names[:4])
+                raise Refusal(f"'{words}': nothing matches '{what}' in this world" + (f" ({now})" if now else ""))
+            names = ok
+        for ex in sel.get("except") or []:
+            if ex.get("ones"):   # "all the dishes except the clean ones"
+                out = [n for n in names if all(applies(self.world, n, c) and holds_now(self.world, n, c)
+                                               for c in ex.get("state") or [])]
+            else:
+                out, _ = self.select(ex, words)
+            missing = [n for n in out if n not in names]
+            if missing:
+                raise TranslationError(f"'{words}': '{ex['words']}' is not one of '{what}'")
+            names = [n for n in names if n not in out]
+        return names
 
     def place_of(self, place: dict, words: str) -> str:
         """The one place a place phrase names (a category of places with one member counts)."""

@@ -1,10 +1,11 @@
-"""The offline parser: a command and a world in, an order (:mod:`pipflow.language.order`) out.
+"""The offline parser: a command and a world in, an order (:mod:`pipflow.warehouse.language.order`) out.
 
 It parses each sentence with lark's Earley parser over the grammar of
-:mod:`pipflow.language.grammar`, whose lexicon is the world's names (:mod:`lexicon`), and reads
-the tree into statements and robot rules. It does no arithmetic against the stock: relative
+:mod:`pipflow.warehouse.language.grammar`, whose lexicon is the world's names (:mod:`lexicon`), and reads
+the tree into statements and robot rules (a goal clause by the method of its rule:
+:mod:`pipflow.warehouse.language.goals`). It does no arithmetic against the stock: relative
 amounts, "except", "the rest", swaps and ellipsis stay symbolic for the resolver
-(:mod:`pipflow.language.resolver`). What it does resolve is the sentence's own structure:
+(:mod:`pipflow.warehouse.language.resolver`). What it does resolve is the sentence's own structure:
 
 * coordination with ellipsis: "four product1 to shelf2 and three to shelf3, taking them from
   shelf1" (the item and the source are shared), "shelf2 to hold 6 product3, and shelf4 too";
@@ -19,20 +20,22 @@ A word the grammar cannot place is a :class:`TranslationError` that quotes it.
 from __future__ import annotations
 
 import functools
-from typing import Any
+from typing import Any, Callable
 
 from lark import Lark, Token, Tree
-from lark.visitors import CollapseAmbiguities
+from lark.visitors import CollapseAmbiguities, Interpreter
 from lark.exceptions import UnexpectedInput, UnexpectedToken
 
 from pipflow.errors import PipflowError, Refusal, TranslationError
 from pipflow.language.characters import line_readings
 from pipflow.language.earley import ListLexer, earley_parser
-from pipflow.language.grammar import GRAMMAR, nullable_optionals
-from pipflow.language.lexicon import Lexed, Lexicon
+from pipflow.warehouse.language.goals import GoalRules, quote
+from pipflow.warehouse.language.grammar import GRAMMAR, nullable_optionals
+from pipflow.warehouse.language.lexicon import Lexed, Lexicon
 from pipflow.language.numbers import NUMBER_WORDS
-from pipflow.language.resolver import resolve
-from pipflow.language.robots import RobotSelector
+from pipflow.warehouse.language.resolver import resolve
+from pipflow.warehouse.language.robots import RobotSelector
+from pipflow.warehouse.language.tails import TailRules
 
 #: the most terminals one sentence may have: Earley's time grows faster than the length on
 #: ambiguous lists, so a bound per sentence keeps a whole command's parse linear in its length
@@ -40,6 +43,22 @@ MAX_SENTENCE_WORDS = 120
 SET_AMOUNTS = {"count", "all", "none", "as_many_as", "rest", "each"}
 CHANGE_AMOUNTS = {"more", "fewer", "times", "fraction"}
 BOUND_AMOUNTS = {"at_least", "at_most", "between", "at_least_more"}
+#: noun phrases whose amount is read from their numbers alone (``nums``), by rule; the phrase's item
+#: (if it names one) is the last item said, for ellipsis
+AMOUNTS: dict[str, Callable[[list[int]], dict]] = {
+    "np_count": lambda n: {"count": n[0]}, "np_more": lambda n: {"more": n[0]},
+    "np_fewer": lambda n: {"fewer": n[0]}, "np_one": lambda n: {"count": 1}, "np_one_more": lambda n: {"more": 1},
+    "np_all": lambda n: {"all": True}, "np_none": lambda n: {"none": True}, "np_half": lambda n: {"fraction": [1, 2]},
+    "np_twice": lambda n: {"times": 2}, "np_ntimes": lambda n: {"times": n[0]},
+    "np_atleast_more": lambda n: {"at_least_more": n[0]}, "np_all_n": lambda n: {"all": True, "expect": n[0]},
+    "np_atleast": lambda n: {"at_least": n[0]}, "np_atmost": lambda n: {"at_most": n[0]},
+    "np_above": lambda n: {"at_least": n[0] + 1}, "np_rest": lambda n: {"rest": True},
+}
+#: noun phrases that name no item ("another", "3 more", "two"): the item comes from the clause
+ITEMLESS: dict[str, Callable[[list[int]], dict]] = {
+    "np_another": lambda n: {"count": 1}, "np_more_bare": lambda n: {"more": n[0]},
+    "np_bare": lambda n: {"count": n[0]},
+}
 #: verbs whose object goes somewhere: a destination said later in the sentence is theirs too
 MOVE_VERBS = {"move", "bring", "send", "ship", "transfer", "carry", "haul", "shift", "cart", "ferry", "tow",
               "lug", "shuttle", "wheel", "run", "relocate", "deliver", "pull", "grab"}
@@ -65,12 +84,10 @@ def keywords() -> dict[str, str]:
     return out
 
 
-def _quote(words: str) -> str:
-    return f"'{words}'"
-
-
-class _Sentence:
-    """Reads one parsed sentence into statements and rules."""
+class _Sentence(GoalRules, TailRules, Interpreter):
+    """Reads one parsed sentence into statements and rules. A goal clause and a tail (a clause
+    that continues the one before it) go to the method their rule names (lark's Interpreter
+    dispatch; the methods are :class:`GoalRules` and :class:`TailRules`)."""
 
     def __init__(self, lexed: Lexed, lex: Lexicon, robots: RobotSelector, memory: dict | None = None):
         self.lexed, self.lex, self.robots = lexed, lex, robots
@@ -85,7 +102,6 @@ class _Sentence:
         self.bind: list[dict] = []  # rules that take the sentence's goal as their scope
         self.last_item: list[str] | None = memory.get("item")
         self.last_places: list[str] | None = memory.get("places")
-        self.last_source: list[str] | None = None
         self.distributive = False  # "every bay", "each of A and B": a count applies to each
         self.before_places: list[str] = []  # the places named before the current part
         self.last_add = False  # whether the last counts came with an add verb (for gapping)
@@ -96,6 +112,20 @@ class _Sentence:
         # units taken off a place and then shared out ("Move 3 lids from dispatch: 2 to silo 2 and
         # 1 to rack east"): the removal and how many of it are not yet given a destination
         self.budget: dict | None = None
+
+    # -- the rules' dispatch -----------------------------------------------------------------
+    def __getattr__(self, name: str) -> Any:
+        """lark's Interpreter answers every missing name with ``__default__``; here only a goal or
+        a tail rule's name does (any other missing attribute is a bug, and says so)."""
+        if name.startswith(("g_", "t_")):
+            return self.__default__
+        raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
+
+    def __default__(self, node: Tree) -> None:
+        """A rule with no method: refused with its words, never half-read."""
+        if node.data.startswith("t_"):
+            raise TranslationError(f"{quote(self.words(node))}: cannot read this")
+        raise TranslationError(f"{quote(self.clause_parts(node).words)}: cannot read this statement")
 
     # -- words ------------------------------------------------------------------------------
     def words(self, node: Tree | Token | list) -> str:
@@ -125,14 +155,16 @@ class _Sentence:
         products = self.index.by_kind["product"]
         if len(products) == 1:
             return products[0]
-        raise TranslationError(f"{_quote(words)} does not say which product "
+        raise TranslationError(f"{quote(words)} does not say which product "
                                f"(candidates: {self.index.candidates('product')})")
 
     def nps(self, items: Tree) -> list[dict]:
         return [self.np(c) for c in items.children if isinstance(c, Tree) and c.data.startswith("np_")]
 
     def np(self, node: Tree) -> dict:
-        """One noun phrase: ``{"items": selector|None, "amount": {...}, "words": str}``."""
+        """One noun phrase: ``{"items": selector|None, "amount": {...}, "words": str}``. The
+        phrases whose amount is one of their numbers are :data:`AMOUNTS` (and :data:`ITEMLESS`,
+        which name no item); the others are read here."""
         kind = node.data
         words = self.words(node)
         nums = [int(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "NUM")]
@@ -140,80 +172,45 @@ class _Sentence:
         named = [str(c.value) for c in node.children if isinstance(c, Token) and c.type == "ITEM"]
         item = {"names": [self.ihead(heads[0], words)]} if heads else {"names": named[:1]} if named else None
 
+        def places() -> list[str]:
+            return [str(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "PLACE")]
+
         def out(amount: dict, sel: dict | None = item) -> dict:
             if sel is not None and sel.get("names"):
                 self.last_item = sel["names"]
             return {"items": sel, "amount": amount, "words": words}
 
+        if kind in ITEMLESS:
+            return {"items": None, "amount": ITEMLESS[kind](nums), "words": words}
+        if kind in AMOUNTS:
+            return out(AMOUNTS[kind](nums))
         if kind == "np_more_than_place":
-            place = next(str(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "PLACE"))
-            key = "more" if self.sub(node, "more") else "fewer"
-            return out({"as_many_as": place, key: nums[0]})
-        if kind == "np_another":
-            return {"items": None, "amount": {"count": 1}, "words": words}
-        if kind == "np_more_bare":
-            return {"items": None, "amount": {"more": nums[0]}, "words": words}
+            return out({"as_many_as": places()[0], "more" if self.sub(node, "more") else "fewer": nums[0]})
         if kind == "np_times_as_many":
-            place = next(str(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "PLACE"))
-            return out({"as_many_as": place, "times": nums[0] if nums else 2})
-        if kind == "np_bare":
-            return {"items": None, "amount": {"count": nums[0]}, "words": words}
-        if kind == "np_count":
-            return out({"count": nums[0]})
-        if kind == "np_more":
-            return out({"more": nums[0]})
-        if kind == "np_fewer":
-            return out({"fewer": nums[0]})
-        if kind == "np_one":
-            return out({"count": 1})
-        if kind == "np_one_more":
-            return out({"more": 1})
-        if kind == "np_all":
-            return out({"all": True})
-        if kind == "np_none":
-            return out({"none": True})
+            return out({"as_many_as": places()[0], "times": nums[0] if nums else 2})
         if kind == "np_frac":
             frac = next(c for c in node.children if isinstance(c, Tree) and c.data == "frac")
             den = next(int(t.value) for t in frac.scan_values(lambda v: isinstance(v, Token) and v.type == "FRAC"))
             num = next((int(t.value) for t in frac.scan_values(lambda v: isinstance(v, Token) and v.type == "NUM")), 1)
             return out({"fraction": [num, den]})
-        if kind == "np_half":
-            return out({"fraction": [1, 2]})
-        if kind == "np_twice":
-            return out({"times": 2})
-        if kind == "np_ntimes":
-            return out({"times": nums[0]})
-        if kind == "np_atleast_more":
-            return out({"at_least_more": nums[0]})
-        if kind == "np_all_n":
-            return out({"all": True, "expect": nums[0]})
         if kind == "np_times":
             first = str(node.children[0].value) if isinstance(node.children[0], Token) else words.split()[0]
             return out({"times": {"double": 2, "triple": 3, "quadruple": 4}.get(first.lower(), 2)})
-        if kind == "np_atleast":
-            return out({"at_least": nums[0]})
-        if kind == "np_atmost":
-            return out({"at_most": nums[0]})
-        if kind == "np_above":
-            return out({"at_least": nums[0] + 1})
         if kind == "np_below":
             if nums[0] == 0:
-                raise TranslationError(f"{_quote(words)}: fewer than 0 units is impossible")
+                raise TranslationError(f"{quote(words)}: fewer than 0 units is impossible")
             return out({"at_most": nums[0] - 1})
         if kind == "np_between":
             lo, hi = nums[0], nums[1]
             if lo > hi:
-                raise TranslationError(f"{_quote(words)}: the lower bound {lo} is above the upper bound {hi}")
+                raise TranslationError(f"{quote(words)}: the lower bound {lo} is above the upper bound {hi}")
             return out({"at_least": lo, "at_most": hi})
         if kind == "np_vague":
-            raise TranslationError(f"{_quote(words)} is a bound, not a count: it is approximate, and "
+            raise TranslationError(f"{quote(words)} is a bound, not a count: it is approximate, and "
                                    f"the goal needs an exact count or a firm bound ('at least 5', "
                                    f"'at most 5', 'between 3 and 5')")
-        if kind == "np_each_more":
-            return out({"more": nums[0]}, {"all": True})
-        if kind == "np_each":
-            n = nums[0] if nums else 1
-            return out({"count": n}, {"all": True})
+        if kind in ("np_each_more", "np_each"):
+            return out({"more": nums[0]} if kind == "np_each_more" else {"count": nums[0] if nums else 1}, {"all": True})
         if kind == "np_everything":
             excl = []
             for c in node.children:
@@ -221,22 +218,17 @@ class _Sentence:
                     excl = [self.ihead(h, words) for h in c.children if isinstance(h, Tree) and h.data == "ihead"]
             return out({"all_held": True}, {"all": True, "except": excl})
         if kind == "np_as_many":
-            place = next(str(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "PLACE"))
-            return out({"as_many_as": place})
+            return out({"as_many_as": places()[0]})
         if kind == "np_as_many_item":
             # "as many gears as widgets": the other item's count on the statement's own place
-            other = self.ihead(heads[1], words)
-            return out({"as_many_here": True, "of": other})
+            return out({"as_many_here": True, "of": self.ihead(heads[1], words)})
         if kind == "np_as_many_total":
-            places = [str(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "PLACE")]
-            amount = {"as_many_as": places[0], "together_with": places[1:]}
+            named_places = places()
+            amount = {"as_many_as": named_places[0], "together_with": named_places[1:]}
             return out(amount) if heads else out(amount, None)
         if kind == "np_as_many_elided":
-            place = next(str(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "PLACE"))
-            return out({"as_many_as": place}, None)
-        if kind == "np_rest":
-            return out({"rest": True})
-        raise TranslationError(f"{_quote(words)}: cannot read this amount")
+            return out({"as_many_as": places()[0]}, None)
+        raise TranslationError(f"{quote(words)}: cannot read this amount")
 
     # -- places -----------------------------------------------------------------------------
     def place_list(self, node: Tree) -> list[str]:
@@ -249,12 +241,12 @@ class _Sentence:
             elif c.data == "place_word":
                 shelves = self.class_places(c)
                 if len(shelves) != 1:
-                    raise TranslationError(f"{_quote(self.words(c))} does not say which shelf "
+                    raise TranslationError(f"{quote(self.words(c))} does not say which shelf "
                                            f"(candidates: {self.index.candidates('shelf')})")
                 out.append(shelves[0])
             elif c.data == "place_it":
                 if not self.last_places:
-                    raise TranslationError(f"{_quote(self.words(c))}: no place named before it "
+                    raise TranslationError(f"{quote(self.words(c))}: no place named before it "
                                            f"(candidates: {self.index.candidates('shelf')})")
                 out.extend(self.last_places)
             elif c.data == "place_all":
@@ -267,7 +259,7 @@ class _Sentence:
                 n = int(self.toks(c, "NUM")[0].value)
                 every = self.class_places(c)
                 if n != len(every):
-                    raise TranslationError(f"{_quote(self.words(c))}: this world has {len(every)} places, not {n}")
+                    raise TranslationError(f"{quote(self.words(c))}: this world has {len(every)} places, not {n}")
                 out.extend(every)
                 self.distributive = True
             elif c.data == "place_each":
@@ -313,7 +305,7 @@ class _Sentence:
         if len(places) > 1 and mode != "each" and not all(
                 "none" in np["amount"] for np in nps):
             raise TranslationError(
-                f"{_quote(words)}: the command does not say whether each of {', '.join(places)} "
+                f"{quote(words)}: the command does not say whether each of {', '.join(places)} "
                 f"gets these counts or they share them (say 'each', 'respectively' or 'evenly between')")
         for np in nps:
             if add and np["amount"].get("none"):
@@ -321,7 +313,7 @@ class _Sentence:
                 # read as "P holds no lids", emptying P: a misreading)
                 items = np["items"] or ({"names": list(self.last_item)} if self.last_item else None)
                 if items is None:
-                    raise TranslationError(f"{_quote(np['words'])}: cannot tell which product")
+                    raise TranslationError(f"{quote(np['words'])}: cannot tell which product")
                 self.statements.append({"op": "keep", "places": {"names": places}, "items": items,
                                         "inflow_only": False, "words": np["words"]})
                 continue
@@ -350,7 +342,7 @@ class _Sentence:
             return self._rest(places, np)
         if self.pending_source and add and key in ("count", "more", "all", "all_held"):
             if np["items"] is None and not self.last_item:
-                raise TranslationError(f"{_quote(np['words'])}: cannot tell which product")
+                raise TranslationError(f"{quote(np['words'])}: cannot tell which product")
             items = np["items"] or {"names": list(self.last_item or [])}
             n = {"count": a[key]} if key in ("count", "more") else a
             return {"op": "transfer", "items": items, "amount": n, "from": {"names": self.pending_source},
@@ -361,7 +353,7 @@ class _Sentence:
                     "to": {"names": places}, "words": np["words"]}
         if np["items"] is None:
             if not self.last_item:
-                raise TranslationError(f"{_quote(np['words'])}: cannot tell which product this count "
+                raise TranslationError(f"{quote(np['words'])}: cannot tell which product this count "
                                        f"is for (candidates: {self.index.candidates('product')})")
             np = {**np, "items": {"names": list(self.last_item)}}
         if add and key == "count":
@@ -371,7 +363,7 @@ class _Sentence:
             # least 2", already met where P holds 3: a misreading)
             a, key = {"at_least_more": a["at_least"]}, "at_least_more"
         elif add and set(a) & {"at_most", "between"}:
-            raise TranslationError(f"{_quote(np['words'])}: a bound on how many to bring is not a count the "
+            raise TranslationError(f"{quote(np['words'])}: a bound on how many to bring is not a count the "
                                    f"place ends with; say it so ('P should have at most N')")
         if key in CHANGE_AMOUNTS:
             op = "change"
@@ -405,477 +397,6 @@ class _Sentence:
             np, source = self.pitem(pit[0], words)
             return [np], source
         return nps, self.place_list(self.sub(self.sub(node, "src")[0], "places")[0])
-    def goal(self, node: Tree) -> None:
-        kind = node.data
-        words = self.words(node)
-        items = self.sub(node, "items")
-        nps = self.nps(items[0]) if items else []
-        locs = [c for c in node.children if isinstance(c, Tree) and c.data in ("loc", "loc_each", "loc_resp")]
-        plist = self.sub(node, "places")
-        each = bool(self.sub(node, "each") or self.sub(node, "both")) or any(
-            isinstance(c, Token) and c.value in ("each", "both") for c in node.children)
-        if kind in ("g_set", "g_loc_set", "g_set_only"):
-            if not locs:
-                shown = ", ".join(n["words"] for n in nps)
-                raise TranslationError(f"{_quote(shown)}: the command does not say which shelf "
-                                       f"(candidates: {self.index.candidates('shelf')})")
-            places, mode = self.loc(locs[0])
-            if any(isinstance(c, Token) and str(c.value).lower() == "each" for c in node.children):
-                mode = "each"  # "Put 2 springs each on rack B and rack E"
-            # "Add 2 lids to A, 1 to B": a part with no verb of its own shares the add verb before it
-            # (it was read as B's final count: a misreading)
-            bare = len(node.children) == 2 and kind == "g_set"
-            if bare and not self.last_add:
-                self._gap_after_more(nps, places)
-            self.put(places, mode, nps, words, add=bare and self.last_add)
-            if kind == "g_set_only":
-                self.statements.append({"op": "nothing_else", "places": {"names": places},
-                                        "words": "nothing else"})
-            return
-        if kind == "g_place_set":
-            places = self.place_list(plist[0])
-            for ap in self.sub(node, "place_appos"):
-                self.apposition(places, self.nps(self.sub(ap, "items")[0]), self.words(ap))
-            self._receive_is_clear(node, places, nps, words)
-            self.put(places, "each" if each else "one", nps, words)
-            return
-        if kind == "g_place_set_resp":
-            self.respectively(self.place_list(plist[0]), nps, words, False)
-            return
-        if kind == "g_place_set_one":
-            places = self.place_list(plist[0])
-            num = next(int(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "NUM"))
-            head = self.sub(node, "ihead")[0]
-            self.put(places, "one", [{"items": {"names": [self.ihead(head, words)]}, "amount": {"count": num},
-                                      "words": words}], words)
-            return
-        if kind == "g_item_first":
-            pp = self.sub(node, "pitem_plain")  # "bring the apron's seat belts down to 3"
-            head = self.ihead(self.sub(pp[0] if pp else node, "ihead")[0], words)
-            self.last_item = [head]
-            num = next(int(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "NUM"))
-            if pp:
-                place = [str(self.toks(pp[0], "PLACE")[0].value)]
-                self.put(place, "one", [{"items": {"names": [head]}, "amount": {"count": num}, "words": words}], words)
-                return
-            if not locs:
-                raise TranslationError(f"{_quote(words)}: the command does not say which shelf "
-                                       f"(candidates: {self.index.candidates('shelf')})")
-            places, mode = self.loc(locs[0])
-            self.put(places, mode, [{"items": {"names": [head]}, "amount": {"count": num}, "words": words}], words)
-            return
-        if kind == "g_add":
-            if locs:
-                places, mode = self.loc(locs[0])
-            else:
-                places, mode = self.place_list(plist[0]), "each" if each else "one"
-            self.put(places, mode, nps, words, add=True)
-            return
-        if kind == "g_equal_poss":
-            # "Make rack E's gear count equal to rack D's (valves)": D's count now, of its item
-            poss = self.sub(node, "posplace")
-            heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
-            place, other = str(poss[0].children[0].value), str(poss[1].children[0].value)
-            amount = {"as_many_as": other} if len(heads) == 1 or heads[1] == heads[0] else \
-                {"as_many_as": other, "of": heads[1]}
-            self.last_item = heads[:1]
-            self.statements.append({"op": "set", "places": {"names": [place]}, "items": {"names": heads[:1]},
-                                    "amount": amount, "words": words})
-            return
-        if kind == "g_as_many_there":
-            # "Put as many valves on rack E as there are on rack A (and rack B together)"
-            head = self.ihead(self.sub(node, "ihead")[0], words)
-            places = self.loc(locs[0])[0]
-            others = [str(t.value) for t in node.children if isinstance(t, Token) and t.type == "PLACE"]
-            if len(others) > 1 and not self.sub(node, "together"):
-                raise TranslationError(f"{_quote(words)}: as many as each of {', '.join(others)} has, or as "
-                                       f"all of them together? (say 'together')")
-            amount = {"as_many_as": others[0], **({"together_with": others[1:]} if others[1:] else {})}
-            self.put(places, "one", [{"items": {"names": [head]}, "amount": amount, "words": words}], words)
-            return
-        if kind == "g_keep_its_elided":
-            # "Empty hangar B but leave its seat belts": the emptying of that place spares them
-            places = self._last_places(words)
-            heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
-            for st in self.statements:
-                if st["op"] == "empty" and st["places"]["names"] == places and st["items"].get("all"):
-                    st["items"] = {"all": True, "except": list(dict.fromkeys((st["items"].get("except") or []) + heads))}
-            self.statements.append({"op": "keep", "places": {"names": places}, "items": {"names": heads},
-                                    "inflow_only": False, "words": words})
-            return
-        if kind == "g_light_add":
-            # "Rack east is light on flour bags, add three": the count is more of that item there
-            head = self.ihead(self.sub(node, "ihead")[0], words)
-            n = int(self.toks(node, "NUM")[0].value)
-            self.last_item = [head]
-            self.put(self.place_list(plist[0]), "one", [{"items": {"names": [head]}, "amount": {"more": n},
-                                                          "words": words}], words)
-            return
-        if kind == "g_poss_bound":
-            # "Keep rack east's lids between 2 and 6", "hold P's X at least 3"
-            pp = self.sub(node, "pitem_plain")[0]
-            place = [str(self.toks(pp, "PLACE")[0].value)]
-            head = self.ihead(self.sub(pp, "ihead")[0], words)
-            nums = [int(t.value) for t in node.children if isinstance(t, Token) and t.type == "NUM"]
-            if len(nums) == 2:
-                if nums[0] > nums[1]:
-                    raise TranslationError(f"{_quote(words)}: the lower bound {nums[0]} is above the upper bound {nums[1]}")
-                amount = {"at_least": nums[0], "at_most": nums[1]}
-            else:
-                amount = {"at_least": nums[0]} if self.sub(node, "lower") else {"at_most": nums[0]}
-            self.put(place, "one", [{"items": {"names": [head]}, "amount": amount, "words": words}], words)
-            return
-        if kind == "g_match":
-            # "Rack east should match silo 2's flour bag count": that place's count now
-            head = self.ihead(self.sub(node, "ihead")[0], words)
-            other = str(self.sub(node, "posplace")[0].children[0].value)
-            self.last_item = [head]
-            self.put(self.place_list(plist[0]), "one", [{"items": {"names": [head]}, "amount": {"as_many_as": other},
-                                                          "words": words}], words)
-            return
-        if kind == "g_give":
-            # "Dispatch, with its 8 lids, should give 3 of them to rack east": a move from the subject
-            source = self.place_list(plist[0])
-            for ap in self.sub(node, "place_appos"):
-                self.apposition(source, self.nps(self.sub(ap, "items")[0]), self.words(ap))
-            nps = self.nps(items[0])
-            for np in nps:
-                self.statements.append(self._transfer_statement(np, source, self.place_list(plist[1]), words))
-            return
-        if kind == "g_could_use":
-            # "P could use / could do with N more X" is a change; without "more" it could be the
-            # count P should end with or the count to bring: refused, not guessed
-            for np in nps:
-                if set(np["amount"]) != {"more"}:
-                    raise TranslationError(f"{_quote(words)}: 'could use' does not say whether "
-                                           f"{np['words']} is the count to end with or to add "
-                                           f"(say 'N more' or 'should have N')")
-            self.put(self.place_list(plist[0]), "each" if each else "one", nps, words)
-            return
-        if kind == "g_add_place":
-            places = self.place_list(plist[0])
-            self.put(places, "one", nps, words, add=True)
-            return
-        if kind == "g_transfer_with":
-            robots_node = self.sub(node, "robots")[0]
-            sel = self.robots.read(robots_node, self.words(robots_node))
-            self.transfer(node, nps, words)
-            base = {"mode": "only", "robots": sel, "words": words}
-            self.bind.append(base)
-            self.rules.append(base)
-            return
-        if kind in ("g_transfer", "g_transfer_except"):
-            self.transfer(node, nps, words)
-            return
-        if kind == "g_remove":
-            source = self.place_list(plist[0])
-            for np in nps:
-                self.statements.append(self._transfer_statement(np, source, None, words))
-            return
-        if kind == "g_mult":
-            verb = self.first_word(node)
-            head = self.ihead(self.sub(node, "ihead")[0], words)
-            poss = self.sub(node, "posplace")  # "halve the loading bay's bearings"
-            places = [str(poss[0].children[0].value)] if poss else self.loc(locs[0])[0]
-            amount = {"fraction": [1, 2]} if verb == "halve" else {"times": {"double": 2, "triple": 3, "quadruple": 4}[verb]}
-            self.put(places, "each", [{"items": {"names": [head]}, "amount": amount, "words": words}], words)
-            return
-        if kind == "g_keep_part":
-            places = self.place_list(plist[0])
-            for np in nps:
-                if "fraction" in np["amount"]:
-                    self.statements.append(self._goal_statement(places, np, False))
-                else:
-                    self.statements.append(self._goal_statement(places, np, False))
-            return
-        if kind == "g_empty":
-            places = self.place_list(plist[0])
-            self.statements.append({"op": "empty", "places": {"names": places}, "items": {"all": True},
-                                    "words": words})
-            return
-        if kind == "g_empty_item":
-            pp = self.sub(node, "pitem_plain")  # "empty out the parts cage's fuses"
-            places = [str(self.toks(pp[0], "PLACE")[0].value)] if pp else self.place_list(plist[0])
-            head = self.ihead(self.sub(pp[0] if pp else node, "ihead")[0], words)
-            self.statements.append({"op": "empty", "places": {"names": places}, "items": {"names": [head]},
-                                    "words": words})
-            return
-        if kind in ("g_fill", "g_fill_elided"):
-            if kind == "g_fill":
-                places = self.place_list(plist[0])
-            else:
-                places = self._last_places(words)
-            head = self.ihead(self.sub(node, "ihead")[0], words)
-            only = "only" in words.lower().split() or "nothing but" in words.lower()
-            for p in places:
-                self.statements.append({"op": "fill", "places": {"names": [p]}, "items": {"names": [head]},
-                                        "only": only, "words": words})
-            return
-        if kind == "g_nothing_else":
-            places = self.loc(locs[0])[0] if locs else self._last_places(words)
-            self.statements.append({"op": "nothing_else", "places": {"names": places}, "words": words})
-            return
-        if kind == "g_no_inflow":
-            # "Clear shelf2, but nothing goes to shelf4": shelf4 keeps what it has of what moves
-            places, _ = self.loc(locs[0])
-            heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
-            moved: list[str] = []
-            everything = False
-            for st in self.statements:
-                sel = st.get("items") or {}
-                if "names" in sel:
-                    moved += sel["names"]
-                else:
-                    everything = True
-            if heads:
-                sel = {"names": heads}
-            elif moved and not everything:
-                sel = {"names": list(dict.fromkeys(moved))}
-            else:
-                sel = {"all": True}
-            self.statements.append({"op": "keep", "places": {"names": places}, "items": sel,
-                                    "inflow_only": False, "words": words})
-            return
-        if kind == "g_keep":
-            poss = self.sub(node, "posplace")
-            heads = self.sub(node, "ihead")
-            if poss:
-                places = [str(poss[0].children[0].value)]
-            elif locs:
-                places = self.loc(locs[0])[0]
-            else:
-                places = self.place_list(plist[0])
-            sel = {"names": [self.ihead(heads[0], words)]} if heads else {"all": True}
-            self.statements.append({"op": "keep", "places": {"names": places}, "items": sel,
-                                    "inflow_only": False, "words": words})
-            return
-        if kind in ("g_swap", "g_swap_items", "g_swap_poss"):
-            self.swap(node, words)
-            return
-        if kind == "g_split":
-            places = self.place_list(plist[0])
-            for b in self.sub(node, "bare"):
-                nps = [{"items": {"names": [self.ihead(h, words)]}, "amount": {"all": True}, "words": words}
-                       for h in self.sub(b, "ihead")]
-            if not nps:
-                raise TranslationError(f"{_quote(words)}: the command does not say what to share")
-            for np in nps:
-                a = np["amount"]
-                if not ({"count", "all"} & set(a)):
-                    raise TranslationError(f"{_quote(np['words'])}: cannot share this amount")
-                items = np["items"] if np["items"] is not None else {"names": list(self.last_item or [])}
-                stock = self.lex.world.get("stock") or {}
-                held = [p for p in places for i in items.get("names") or [] if int((stock.get(p) or {}).get(i, 0) or 0)]
-                if "count" in a and held:
-                    # "Split 4 X between A and B" with no source: does each end with 2, or get 2 more?
-                    # The same only where none holds X now (each was set to 2: a misreading)
-                    raise TranslationError(f"{_quote(words)}: cannot tell whether each place ends with its share "
-                                           f"or gets it on top of what it holds ({', '.join(dict.fromkeys(held))} "
-                                           f"hold some now); say where the units come from")
-                self.statements.append({"op": "distribute", "places": {"names": places}, "items": items,
-                                        "amount": a, "words": words})
-            return
-        if kind == "g_each":
-            places, mode = self.loc(locs[0])
-            self.put(places, "each", [{"items": {"all": True}, "amount": {"count": 1}, "words": words}], words)
-            return
-        if self.sub(node, "bare") and kind != "g_split":
-            nps = self.bare_nps(node, words)
-        if kind == "g_transfer_src":
-            srcs = self.sub(node, "src")
-            pit = [c for c in node.children if isinstance(c, Tree) and c.data.startswith("pi_")]
-            if pit:
-                np, source = self.pitem(pit[0], words)
-                nps = [np]
-            elif srcs:
-                source = self.place_list(self.sub(srcs[0], "places")[0])
-            else:  # "put the 6 springs from rack C on rack E"
-                source = self.place_list(plist[0])
-            dst = self.loc(locs[0])[0] if locs else self.place_list(plist[-1]) if plist else []
-            for np in nps:
-                self.statements.append(self._transfer_statement(np, source, dst, words))
-            self.last_source = source
-            return
-        if kind == "g_receive":
-            dst, source = self.place_list(plist[0]), self.place_list(plist[1])
-            for np in nps:
-                if "more" in np["amount"]:  # "Overflow needs 4 more boxes from dock 1"
-                    np = {**np, "amount": {"count": np["amount"]["more"]}}
-                self.statements.append(self._transfer_statement(np, source, dst, words))
-            return
-        if kind == "g_remove_src":
-            nps, source = self._items_and_source(node, nps, words)
-            for np in nps:
-                st = self._transfer_statement(np, source, None, words)
-                self.statements.append(st)
-            self.last_source = source
-            return
-        if kind == "g_short":
-            # "Bay 2 is 3 crates short": it needs 3 more; any other amount is not read
-            for np in nps:
-                if set(np["amount"]) != {"count"}:
-                    raise TranslationError(f"{_quote(words)}: cannot tell how many are missing")
-                np = {**np, "amount": {"more": np["amount"]["count"]}}
-                self.statements.append(self._goal_statement(self.place_list(plist[0]), np, False))
-            return
-        if kind in ("g_too_many", "g_lose"):
-            places = self.place_list(plist[0])
-            for ap in self.sub(node, "place_appos"):  # "P, which holds 7 X, should lose 2 of them"
-                self.apposition(places, self.nps(self.sub(ap, "items")[0]), self.words(ap))
-            nps = self.nps(items[0])  # read after the apposition: "them" is what it named
-            for np in nps:
-                a = np["amount"]
-                if "count" in a:
-                    np = {**np, "amount": {"fewer": a["count"]}}
-                elif "fraction" in a:
-                    num, den = a["fraction"]
-                    np = {**np, "amount": {"fraction": [den - num, den]}}
-                else:
-                    raise TranslationError(f"{_quote(words)}: cannot tell how many to take away")
-                self.statements.append(self._goal_statement(places, np, False))
-            return
-        if kind == "g_cut":
-            pp = self.sub(node, "pitem_plain")
-            if pp:
-                places = [str(self.toks(pp[0], "PLACE")[0].value)]
-                head = self.ihead(self.sub(pp[0], "ihead")[0], words)
-            else:
-                places = self.loc(locs[0])[0]
-                head = self.ihead(self.sub(node, "ihead")[0], words)
-            fr = self.sub(node, "frac")
-            if fr:
-                den = int(self.toks(fr[0], "FRAC")[0].value)
-                num = int(self.toks(fr[0], "NUM")[0].value) if self.toks(fr[0], "NUM") else 1
-                amount = {"fraction": [den - num, den]}
-            elif any(isinstance(c, Token) and c.value == "half" for c in node.children):
-                amount = {"fraction": [1, 2]}
-            else:
-                amount = {"fewer": int(self.toks(node, "NUM")[-1].value)}
-            self.statements.append(self._goal_statement(places, {"items": {"names": [head]}, "amount": amount,
-                                                                  "words": words}, False))
-            return
-        if kind == "g_keep_its":
-            places = self.place_list(plist[0])
-            stock = self.lex.world.get("stock") or {}
-            heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
-            nums = [int(t.value) for t in self.toks(node, "NUM")]
-            if nums and len(nums) != len(heads):
-                raise TranslationError(f"{_quote(words)}: cannot tell which count goes with which item")
-            for k, h in enumerate(heads):
-                for p in places:
-                    have = int((stock.get(p) or {}).get(h, 0) or 0)
-                    if nums and nums[k] != have:
-                        raise TranslationError(f"{_quote(words)}: {p} holds {have} {h}, not {nums[k]}; "
-                                               f"cannot tell which is meant")
-            self.statements.append({"op": "keep", "places": {"names": places}, "items": {"names": heads},
-                                    "inflow_only": False, "words": words})
-            return
-        if kind == "g_place_inum":
-            places = self.place_list(plist[0])
-            nps = []
-            for inum in self.sub(node, "inum"):
-                head = self.ihead(self.sub(inum, "ihead")[0], words)
-                nps.append({"items": {"names": [head]}, "amount": {"count": int(self.toks(inum, "NUM")[0].value)},
-                            "words": self.words(inum)})
-            self.put(places, "one", nps, words)
-            return
-        if kind == "g_empty_except":
-            # "Clear out dock 1 except the pallets": the rest goes, the pallets stay as they are
-            places = self.place_list(plist[0])
-            excl = [self.ihead(h, words) for e in self.sub(node, "except_items") for h in self.sub(e, "ihead")]
-            self.statements.append({"op": "empty", "places": {"names": places}, "items": {"all": True, "except": excl},
-                                    "words": words})
-            self.statements.append({"op": "keep", "places": {"names": places}, "items": {"names": excl},
-                                    "inflow_only": False, "words": words})
-            return
-        if kind == "g_transfer_except_items":
-            source, dst = self.place_list(plist[0]), self.place_list(plist[1])
-            excl = [self.ihead(h, words) for e in self.sub(node, "except_items") for h in self.sub(e, "ihead")]
-            self.statements.append(self._transfer_statement(
-                {"items": {"all": True, "except": excl}, "amount": {"all_held": True}, "words": words}, source, dst, words))
-            return
-        if kind in ("g_none_of", "g_none_in"):  # "P mustn't have any X", "we don't want any X in P"
-            places = self.place_list(plist[0]) if kind == "g_none_of" else self.loc(locs[0])[0]
-            heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
-            self.put(places, "each", [{"items": {"names": [h]}, "amount": {"none": True}, "words": words} for h in heads],
-                     words)
-            return
-        if kind == "g_updown":
-            head = self.ihead(self.sub(node, "ihead")[0], words)
-            places = self.loc(locs[0])[0]
-            n = int(self.toks(node, "NUM")[-1].value)
-            down = any(isinstance(t, Token) and str(t.value).lower() == "down" for t in self.toks_any(node))
-            self.statements.append(self._goal_statement(
-                places, {"items": {"names": [head]}, "amount": {"fewer": n} if down else {"more": n}, "words": words},
-                False))
-            return
-        if kind in ("g_raise", "g_lower"):
-            head = self.ihead(self.sub(node, "ihead")[0], words)
-            if locs:
-                places = self.loc(locs[0])[0]
-            elif plist:
-                places = self.place_list(plist[0])
-            else:
-                places = self._last_places(words)
-            n = int(self.toks(node, "NUM")[-1].value)
-            amount = {"more": n} if kind == "g_raise" else {"fewer": n}
-            self.statements.append(self._goal_statement(places, {"items": {"names": [head]}, "amount": amount,
-                                                                  "words": words}, False))
-            return
-        if kind == "g_pronoun_dest":
-            # "Take 2 bags out of overflow and drop them at dock 1": the move gets its destination
-            places = self.loc(locs[0])[0]
-            open_moves = [st for st in self.statements if st["op"] == "transfer" and not st.get("to")]
-            for st in open_moves:
-                st["to"] = {"names": places}
-                st["words"] = f"{st['words']}, {words}"
-            if not open_moves:  # "Take 3 product1 from shelf1. Put them on shelf2."
-                for k, st in enumerate(self.prior):
-                    if st["op"] == "transfer" and not st.get("to"):
-                        self.updates[k] = {**st, "to": {"names": places}, "words": f"{st['words']}, {words}"}
-            if not open_moves and not self.updates:
-                raise TranslationError(f"{_quote(words)}: 'them' of what? nothing was taken before it")
-            return
-        if kind == "g_ceiling":
-            places = self.place_list(plist[0])
-            head = self.ihead(self.sub(node, "ihead")[0], words)
-            n = int(self.toks(node, "NUM")[0].value)
-            self.put(places, "each", [{"items": {"names": [head]}, "amount": {"at_most": n}, "words": words}], words)
-            return
-        if kind == "g_empty_into":
-            source, dst = self.place_list(plist[0]), self.place_list(plist[1])
-            self.statements.append(self._transfer_statement(
-                {"items": {"all": True, "except": []}, "amount": {"all_held": True}, "words": words}, source, dst, words))
-            # the source is emptied, like "empty P": none of any product is left or parked there
-            self.statements.append({"op": "empty", "places": {"names": source}, "items": {"all": True}, "words": words})
-            return
-        if kind == "g_floor":
-            places = self.place_list(plist[0])
-            head = self.ihead(self.sub(node, "ihead")[0], words)
-            n = int(self.toks(node, "NUM")[0].value)
-            self.put(places, "each", [{"items": {"names": [head]}, "amount": {"at_least": n}, "words": words}], words)
-            return
-        if kind == "g_keep_item":
-            head = self.ihead(self.sub(node, "ihead")[0], words)
-            places = self.loc(locs[0])[0] if locs else list(self.index.by_kind["shelf"])
-            self.statements.append({"op": "keep", "places": {"names": places}, "items": {"names": [head]},
-                                    "inflow_only": False, "words": words})
-            return
-        if kind == "g_noop":
-            self.place_list(plist[0])  # "Don't empty rack B, just take 2 gears off it": "it"
-            return
-        if kind in ("g_swap_two", "g_swap_subj"):
-            self.swap(node, words)
-            return
-        if kind == "g_split_src":
-            nps, source = self._items_and_source(node, nps, words)
-            places = self.place_list(plist[-1])
-            for np in nps:
-                items = np["items"] if np["items"] is not None else {"names": list(self.last_item or [])}
-                self.statements.append({"op": "distribute", "places": {"names": places}, "items": items,
-                                        "amount": np["amount"], "from": {"names": source}, "words": words})
-            return
-        raise TranslationError(f"{_quote(words)}: cannot read this statement")
 
     def _receive_is_clear(self, node: Tree, places: list[str], nps: list[dict], words: str) -> None:
         """ "P gets / receives N X" is the count P ends with or the count delivered to it: the same
@@ -899,7 +420,7 @@ class _Sentence:
                 have = int((stock.get(p) or {}).get(item, 0) or 0)
                 if have:
                     raise TranslationError(
-                        f"{_quote(words)}: 'gets {count_words}' could be the count {p} ends with or "
+                        f"{quote(words)}: 'gets {count_words}' could be the count {p} ends with or "
                         f"the count it receives ({p} holds {have} {item} now); say 'should have' or 'more'")
 
     def bare_nps(self, node: Tree, words: str) -> list[dict]:
@@ -924,7 +445,7 @@ class _Sentence:
         elif self.last_places:
             source = list(self.last_places)  # "its valves": of the place just named
         else:
-            raise TranslationError(f"{_quote(words)}: 'its' of which place?")
+            raise TranslationError(f"{quote(words)}: 'its' of which place?")
         head = self.ihead(self.sub(node, "ihead")[0], words)
         self.last_item = [head]
         appos = self.sub(node, "appos")
@@ -959,7 +480,7 @@ class _Sentence:
             items = (np["items"] or prev.get("items") or {}).get("names") or []
             if set(np["amount"]) == {"count"} and any(
                     int((stock.get(p) or {}).get(i, 0) or 0) for p in places for i in items):
-                raise TranslationError(f"{_quote(np['words'])} after {prev['words']!r}: cannot tell whether it is "
+                raise TranslationError(f"{quote(np['words'])} after {prev['words']!r}: cannot tell whether it is "
                                        f"{np['words']} more or {np['words']} in all (say 'more' or 'in all')")
 
     def _shared_destination(self) -> None:
@@ -975,7 +496,7 @@ class _Sentence:
             if not first or not (first[0].isdigit() or first[0].lower() in NUMBER_WORDS | {"another", "all"}):
                 continue  # the second move has its own verb: two statements
             if (st.get("words") or "").split()[0].lower() not in MOVE_VERBS:
-                raise TranslationError(f"{_quote(st['words'])} and {_quote(nxt['words'])}: cannot tell whether "
+                raise TranslationError(f"{quote(st['words'])} and {quote(nxt['words'])}: cannot tell whether "
                                        f"the first goes to {', '.join(nxt['to']['names'])} too")
             st["to"] = {"names": list(nxt["to"]["names"])}
 
@@ -986,7 +507,7 @@ class _Sentence:
         read as a final count for B before: a misreading."""
         amount = taken["amount"]
         if set(amount) != {"count"}:
-            raise TranslationError(f"{_quote(np['words'])} after {taken['words']!r}: cannot tell how the units "
+            raise TranslationError(f"{quote(np['words'])} after {taken['words']!r}: cannot tell how the units "
                                    f"taken are shared")
         if self.budget is None or self.budget["st"] is not taken:
             at = next(k for k, st in enumerate(self.statements) if st is taken)
@@ -995,7 +516,7 @@ class _Sentence:
         left = self.budget["left"]
         n = left if key == "rest" else int(np["amount"][key])
         if n > left or (key == "rest" and n == 0):
-            raise TranslationError(f"{_quote(np['words'])}: only {left} of {taken['words']!r} are left to share")
+            raise TranslationError(f"{quote(np['words'])}: only {left} of {taken['words']!r} are left to share")
         self.budget["left"] = left - n
         return {"op": "transfer", "items": taken["items"], "amount": {"count": n}, "from": taken["from"],
                 "to": {"names": places}, "words": np["words"]}
@@ -1018,17 +539,17 @@ class _Sentence:
         stock = self.lex.world.get("stock") or {}
         for np in nps:
             if "count" not in np["amount"] or not np["items"] or "names" not in np["items"]:
-                raise TranslationError(f"{_quote(words)}: cannot check this against the world")
+                raise TranslationError(f"{quote(words)}: cannot check this against the world")
             for p in places:
                 for i in np["items"]["names"]:
                     have = int((stock.get(p) or {}).get(i, 0) or 0)
                     if have != np["amount"]["count"]:
-                        raise TranslationError(f"{_quote(words)}: {p} holds {have} {i}, not "
+                        raise TranslationError(f"{quote(words)}: {p} holds {have} {i}, not "
                                                f"{np['amount']['count']}; cannot tell which is meant")
 
     def _last_places(self, words: str) -> list[str]:
         if not self.last_places:
-            raise TranslationError(f"{_quote(words)}: the command does not say which shelf "
+            raise TranslationError(f"{quote(words)}: the command does not say which shelf "
                                    f"(candidates: {self.index.candidates('shelf')})")
         return list(self.last_places)
 
@@ -1037,11 +558,11 @@ class _Sentence:
         a = np["amount"]
         if np["items"] is None:
             if not self.last_item:
-                raise TranslationError(f"{_quote(np['words'])}: cannot tell which product "
+                raise TranslationError(f"{quote(np['words'])}: cannot tell which product "
                                        f"(candidates: {self.index.candidates('product')})")
             np = {**np, "items": {"names": list(self.last_item)}}
         if set(a) & BOUND_AMOUNTS or set(a) & {"more", "fewer", "times", "as_many_as", "as_many_here"}:
-            raise TranslationError(f"{_quote(np['words'])}: cannot tell how many units this moves")
+            raise TranslationError(f"{quote(np['words'])}: cannot tell how many units this moves")
         src: dict = {"names": source} if source else {"all": True, "except": list(exclude or [])}
         st = {"op": "transfer", "items": np["items"], "amount": a, "from": src,
               "to": {"names": target} if target else None, "words": words}
@@ -1072,10 +593,10 @@ class _Sentence:
         if exc:
             src = None
         if dst is None or (src is None and not exc):
-            raise TranslationError(f"{_quote(words)}: cannot tell where from and where to")
+            raise TranslationError(f"{quote(words)}: cannot tell where from and where to")
         for np in nps:
             if exc and not ({"all", "all_held", "fraction"} & set(np["amount"])):
-                raise TranslationError(f"{_quote(words)}: 'except' needs all of a product "
+                raise TranslationError(f"{quote(words)}: 'except' needs all of a product "
                                        f"('every keg ... except the ones on staging')")
             self.statements.append(self._transfer_statement(np, src, dst, words, exclude))
 
@@ -1095,136 +616,12 @@ class _Sentence:
                 heads += [self.ihead(h, words) for h in self.sub(c, "ihead")]
         places = list(dict.fromkeys(places))
         if len(places) != 2:
-            raise TranslationError(f"{_quote(words)}: a swap needs exactly two places "
+            raise TranslationError(f"{quote(words)}: a swap needs exactly two places "
                                    f"({len(places)} named)")
         sel = {"names": list(dict.fromkeys(heads))} if heads else {"all": True}
         self.statements.append({"op": "swap", "places": {"names": places}, "items": sel, "words": words})
 
     # -- ellipsis ---------------------------------------------------------------------------
-    def tail(self, node: Tree) -> None:
-        kind = node.data
-        words = self.words(node)
-        if kind == "t_too":
-            places = self.place_list(self.sub(node, "places")[0])
-            last = [s for s in self.statements if "places" in s] or [s for s in self.prior_last if "places" in s]
-            if not last:
-                raise TranslationError(f"{_quote(words)}: cannot tell what to repeat there")
-            prev = last[-1]
-            if prev["op"] not in ("set", "change", "bound", "empty", "fill", "keep", "distribute"):
-                raise TranslationError(f"{_quote(words)}: cannot tell what to repeat there")
-            group = [s for s in self.statements or self.prior_last if s.get("words") == prev.get("words")]
-            for s in group:
-                if s["words"] in self.received and set(s.get("amount") or {}) == {"count"}:
-                    self._received_check(places, (s.get("items") or {}).get("names") or [], s["words"], words)
-                self.statements.append({**s, "places": {"names": places}, "words": f"{s['words']} ({words})"})
-            return
-        if kind in ("t_elided", "t_elided_fewer"):
-            num = int(node.children[0].value)
-            more = bool(self.sub(node, "more"))
-            amount = {"fewer": num} if kind == "t_elided_fewer" else {"more": num} if more else {"count": num}
-            places, mode = self.loc(self.sub(node, "loc")[0] if self.sub(node, "loc") else
-                                    next(c for c in node.children if isinstance(c, Tree) and c.data.startswith("loc")))
-            prev = [s for s in self.statements if s["op"] in ("set", "change", "transfer")]
-            add = bool(prev) and prev[-1]["op"] == "change" and "more" in prev[-1]["amount"] and "more" not in amount \
-                and "count" in amount
-            if prev and prev[-1]["op"] == "transfer" and "count" in amount:
-                last = prev[-1]
-                self.statements.append({**last, "amount": amount, "to": {"names": places}, "words": words})
-                return
-            self.put(places, mode, [{"items": None, "amount": amount, "words": words}], words, add=add)
-            return
-        if kind == "t_source":
-            source = self.place_list(self.sub(node, "places")[0])
-            changed = False
-            for k, s in enumerate(self.statements):
-                if s["op"] == "change" and "more" in s["amount"]:
-                    self.statements[k] = {"op": "transfer", "items": s["items"],
-                                          "amount": {"count": s["amount"]["more"]}, "from": {"names": source},
-                                          "to": s["places"], "words": f"{s['words']}, {words}"}
-                    changed = True
-                elif s["op"] == "set" and "count" in s["amount"]:
-                    # "four product1 to shelf2, taking them from shelf1": the four come from there
-                    self.statements[k] = {"op": "transfer", "items": s["items"], "amount": s["amount"],
-                                          "from": {"names": source}, "to": s["places"],
-                                          "words": f"{s['words']}, {words}"}
-                    changed = True
-            if not changed and not self.statements:
-                self.pending_source = source  # "From shelf 4, move 5 product4 to shelf 1"
-                return
-            if not changed:
-                raise TranslationError(f"{_quote(words)}: nothing before it to take from there")
-            return
-        if kind == "t_gap":
-            # "Rack A should have 9 widgets and rack B 6 gears", "..., staging 8": the verb is shared
-            places = self.place_list(self.sub(node, "places")[0])
-            prev = [st for st in self.statements if st["op"] in ("set", "change", "bound")]
-            if not prev:
-                raise TranslationError(f"{_quote(words)}: nothing said before it that it continues")
-            # the verb is what is shared: "add 3 to A, B 2" adds, "A should have ..., B 2" sets
-            if not self.last_add:
-                self._gap_after_more(self.nps(self.sub(node, "items")[0]), places)
-            for np in self.nps(self.sub(node, "items")[0]):
-                self.statements.append(self._goal_statement(places, np, self.last_add))
-            return
-        if kind == "t_not_to":
-            # "Move trays out of freezer A, but not to pick face": pick face keeps what it has of them
-            places = self.place_list(self.sub(node, "places")[0])
-            moved = [n for st in self.statements for n in (st.get("items") or {}).get("names", [])]
-            if not moved:
-                raise TranslationError(f"{_quote(words)}: not what? nothing is moved before it")
-            self.statements.append({"op": "keep", "places": {"names": places}, "items": {"names": list(dict.fromkeys(moved))},
-                                    "inflow_only": False, "words": words})
-            return
-        if kind == "t_noop":
-            return  # "4 valves, not 5": a correction that restates what was said
-        if kind == "t_reverse":
-            # "Move 2 X from A to B, and 1 Y the other way": the move before, from B to A
-            prev = self.statements[-1] if self.statements else None
-            if prev is None or prev["op"] != "transfer" or not prev.get("to") or "names" not in prev["from"]:
-                raise TranslationError(f"{_quote(words)}: 'the other way' of what? no move from one place "
-                                       f"to another comes before it")
-            back_from, back_to = list(prev["to"]["names"]), list(prev["from"]["names"])
-            for np in self.nps(self.sub(node, "items")[0]):
-                self.statements.append(self._transfer_statement(np, back_from, back_to, words))
-            return
-        if kind == "t_from":
-            # "Rack B gets 3 widgets from rack C and 2 gears from rack A": the same destination
-            prev = self.statements[-1] if self.statements else None
-            if prev is None or prev["op"] != "transfer":
-                raise TranslationError(f"{_quote(words)}: cannot tell where these go")
-            source = self.place_list(self.sub(node, "places")[0])
-            for np in self.nps(self.sub(node, "items")[0]):
-                if prev.get("to") is None and np["amount"] == {"count": 1} and np["words"].lower() == "another" \
-                        and prev["amount"] != {"count": 1}:
-                    # "take 3 off A and another off B": one more, or another 3? not guessed
-                    raise TranslationError(f"{_quote(words)}: 'another' after {prev['words']!r} does not "
-                                           f"say how many (one, or as many again?)")
-                # "Take 1 bolt off A and 2 off B" repeats the removal; after a move, its destination
-                target = prev["to"]["names"] if prev.get("to") else None
-                self.statements.append(self._transfer_statement(np, source, target, words))
-            return
-        if kind == "t_rest":
-            places = self.place_list(self.sub(node, "places")[0])
-            rest_of = self.sub(node, "rest_of")
-            heads = [self.ihead(h, words) for r in rest_of for h in self.sub(r, "ihead")]
-            np = {"items": {"names": heads} if heads else None, "amount": {"rest": True}, "words": words}
-            self.statements.append(self._rest(places, np))
-            return
-        if kind == "t_not_items":
-            # "Take the widgets off rack C, but not the springs": they stay where they are
-            heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
-            prev = self.statements[-1] if self.statements else None
-            if prev is None:
-                raise TranslationError(f"{_quote(words)}: nothing said before it that it excepts")
-            places = (prev.get("from") or prev.get("places") or {}).get("names")
-            if not places:
-                raise TranslationError(f"{_quote(words)}: cannot tell where they stay")
-            self.statements.append({"op": "keep", "places": {"names": places}, "items": {"names": heads},
-                                    "inflow_only": False, "words": words})
-            return
-        if kind == "t_resp":
-            raise TranslationError(f"{_quote(words)}: 'respectively' must follow the places it pairs")
-        raise TranslationError(f"{_quote(words)}: cannot read this")
 
     # -- rules ------------------------------------------------------------------------------
     def rule(self, node: Tree) -> None:
@@ -1239,10 +636,10 @@ class _Sentence:
             return
         robots_node = self.sub(node, "robots")
         if not robots_node:
-            raise TranslationError(f"{_quote(words)}: names no robot")
+            raise TranslationError(f"{quote(words)}: names no robot")
         sel = self.robots.read(robots_node[0], self.words(robots_node[0]))
         if kind == "rule_permission":
-            raise TranslationError(f"cannot tell whether {_quote(words)} requires or forbids the robots "
+            raise TranslationError(f"cannot tell whether {quote(words)} requires or forbids the robots "
                                    f"(a permission restricts nothing: say 'only ...' or '... must not ...')")
         mode = {"rule_never": "never", "rule_state": "never", "rule_away": "never", "rule_only": "only",
                 "rule_away_items": "never", "rule_never_from": "never", "rule_do_it": "only",
@@ -1337,9 +734,9 @@ class _Sentence:
         d = node.data
         self.before_places = list(self.last_places or [])
         if d == "goal" or d.startswith("g_"):
-            self.goal(node if d != "goal" else node.children[0])
+            self.visit(node if d != "goal" else node.children[0])
         elif d.startswith("t_"):
-            self.tail(node)
+            self.visit(node)
         elif d.startswith("rule_"):
             self.rule(node)
         elif d == "aside":
@@ -1350,26 +747,26 @@ class _Sentence:
             said = [t for t in self.toks_any(node) if t.type in ("RKIND", "RTAG")][0]
             self.robots.check_apposition(sel, said.type, str(said.value), self.words(node))
             goal = next(c for c in node.children if isinstance(c, Tree) and c.data.startswith("g_"))
-            self.goal(goal)
+            self.visit(goal)
             self._rule_for(sel, "only", [], self.words(node))
         elif d == "addressed":
             robots_node = self.sub(node, "robots")[0]
             sel = self.robots.read(robots_node, self.words(robots_node))
             before = len(self.statements)
             goal = next(c for c in node.children if isinstance(c, Tree) and c.data.startswith("g_"))
-            self.goal(goal)
+            self.visit(goal)
             self._rule_for(sel, "only", self.statements[before:], self.words(node))
         elif d in ("scoped_only", "scoped_only_after", "scoped_never_after", "scoped_never_before"):
             robots_node = self.sub(node, "robots")[0]
             sel = self.robots.read(robots_node, self.words(robots_node))
             goal = next(c for c in node.children if isinstance(c, Tree) and c.data.startswith("g_"))
-            self.goal(goal)
+            self.visit(goal)
             mode = "never" if d in ("scoped_never_after", "scoped_never_before") else "only"
             base = {"mode": mode, "robots": sel, "words": self.words(node)}
             self.bind.append(base)
             self.rules.append(base)
         else:
-            raise TranslationError(f"{_quote(self.words(node))}: cannot read this")
+            raise TranslationError(f"{quote(self.words(node))}: cannot read this")
 
     def _rule_for(self, sel: dict, mode: str, statements: list[dict], words: str) -> None:
         base = {"mode": mode, "robots": sel, "words": words}
@@ -1606,4 +1003,3 @@ def _parse(command: str, world: dict) -> dict:
                                f"(shelves: {lex.index.candidates('shelf')}; "
                                f"products: {lex.index.candidates('product')})")
     return {"command": command, "statements": statements, "rules": rules}
-

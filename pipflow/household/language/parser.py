@@ -4,16 +4,16 @@ Compositional, in three steps, and never by word position:
 
 1. **tag**: the command's words become token classes: the world's names (longest match, with
    plurals, typo-tolerant: "fridgge" reads as "fridge" and a note says so), numbers, and the
-   closed lexicon of :mod:`pipflow.household.lexicon`. A word in neither is a
+   closed lexicon of :mod:`pipflow.household.language.lexicon`. A word in neither is a
    :class:`TranslationError` that quotes it: nothing is skipped silently (politeness words such
    as "please" carry no content and are listed in the lexicon).
-2. **parse**: lark's Earley parser over the grammar of :mod:`pipflow.household.grammar` builds the
+2. **parse**: lark's Earley parser over the grammar of :mod:`pipflow.household.language.grammar` builds the
    sentence structure (clauses, coordination, gapping, pronouns, exceptions, relative clauses,
    state cues). Earley keeps every reading; all of them are returned.
 3. **build**: each reading becomes an *order* (``schemas/household_order.schema.json``): a list
    of statements, each with the selectors of the things it is about and the words it came from.
    Which objects a selector means, and whether the request is possible, is the resolver's job
-   (:mod:`pipflow.household.resolver`), not the parser's.
+   (:mod:`pipflow.household.language.resolver`), not the parser's.
 """
 from __future__ import annotations
 
@@ -27,12 +27,12 @@ from lark.lexer import Lexer
 from lark.visitors import CollapseAmbiguities
 
 from pipflow.errors import TranslationError
-from pipflow.household.grammar import NOUN_DUAL, grammar_text
-from pipflow.household.lexicon import (ACTIVITIES, COLD, FILLER, FILLER_TYPO_TARGETS, LIGHT_CATEGORY_WORD, MARKS,
-                                       MEALS, OPPOSITE, PHRASES, UNIT_DETERMINERS, plurals, words_of)
+from pipflow.household.language.grammar import NOUN_DUAL, grammar_text
+from pipflow.household.language.lexicon import (ACTIVITIES, COLD, FILLER, FILLER_TYPO_TARGETS, LIGHT_CATEGORY_WORD, MARKS,
+                                                MEALS, OPPOSITE, PHRASES, UNIT_DETERMINERS, plurals, words_of)
 from pipflow.language.characters import refuse_unread
-from pipflow.language.names import distance
 from pipflow.language.numbers import read_number
+from pipflow.language.spelling import distance
 
 #: the most readings of one ambiguous command that are compared (each is resolved); more is
 #: refused, never cut short

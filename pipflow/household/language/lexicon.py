@@ -4,7 +4,7 @@ Two halves. The *world's* words (object, place and category names and their ``wo
 plurals) come from the world file, so a new home needs no code. The *command* words below are
 a small, closed lexicon: verbs that ask for a state, adjectives that name one, the function words
 of the grammar, and the **state cues** of vague commands ("nobody is watching the TV" means the
-TV may go off). Each word maps to a token class of the grammar (:mod:`pipflow.household.grammar`)
+TV may go off). Each word maps to a token class of the grammar (:mod:`pipflow.household.language.grammar`)
 and, where it carries meaning, a value (a goal condition, a polarity). docs/household.md lists
 them for users. A word in neither half is never skipped: the parser refuses and quotes it.
 """

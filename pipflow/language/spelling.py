@@ -1,0 +1,63 @@
+"""Spelling of names in commands: one normal form, edit distance, plurals.
+
+Every domain's reader matches the words of a command against the names of its world, and people
+write those names apart, joined or hyphenated ("cold store", "cold-store"), in the plural, and
+misspelt ("prodcut3"). The rules for that are the same in any world: a normal form in which
+those spellings compare equal, an edit distance that counts a swap of neighbours as one edit,
+how many edits a word of a given length may carry, and the plural forms of a name. Which names
+a domain has, and when a near-match is a guess to refuse, stay with the domain's reader.
+"""
+from __future__ import annotations
+
+import re
+
+
+def normalize(text: str) -> str:
+    """Lower-case letters and digits only: "Cold-Store" and "cold store" compare equal."""
+    return re.sub(r"[^a-z0-9]", "", text.lower())
+
+
+def split_digits(norm: str) -> tuple[str, str]:
+    """("bay4" -> "bay", "4"); names without a trailing number keep it all as letters."""
+    m = re.fullmatch(r"(.*?[a-z])(\d+)", norm)
+    return (m.group(1), m.group(2)) if m else (norm, "")
+
+
+def distance(a: str, b: str) -> int:
+    """Edit distance counting a swap of neighbours as one edit ("prodcut" is 1 from "product")."""
+    prev2: list[int] = []
+    prev = list(range(len(b) + 1))
+    for i, ca in enumerate(a, 1):
+        cur = [i] + [0] * len(b)
+        for j, cb in enumerate(b, 1):
+            cur[j] = min(prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (ca != cb))
+            if i > 1 and j > 1 and ca == b[j - 2] and a[i - 2] == cb:
+                cur[j] = min(cur[j], prev2[j - 2] + 1)
+        prev2, prev = prev, cur
+    return prev[len(b)]
+
+
+def tolerance(length: int) -> int:
+    """Edits allowed against a stem of this length: none for very short words, 2 from 5 letters."""
+    return 0 if length <= 2 else 1 if length <= 4 else 2
+
+
+def variants(alpha: str) -> list[str]:
+    """The word and its singular forms ("apples" -> "apple"), to forgive plurals."""
+    out = [alpha]
+    if len(alpha) > 3 and alpha.endswith("s"):
+        out.append(alpha[:-1])
+        if alpha.endswith("es"):
+            out.append(alpha[:-2])
+    return out
+
+
+def plural_forms(norm: str) -> list[str]:
+    """The plural spellings of a normalised name: its last word inflected ("labelroll" ->
+    "labelrolls", "sku220" -> "sku220s", "battery" -> "batteries", "box" -> "boxes"). People
+    pluralise multi-word and coded names as they do any noun, and write them apart, joined,
+    hyphenated or underscored; :func:`normalize` already makes those four spellings one."""
+    out = [norm + "s", norm + "es"]
+    if len(norm) > 2 and norm.endswith("y") and norm[-2] not in "aeiou":
+        out.append(norm[:-1] + "ies")
+    return out

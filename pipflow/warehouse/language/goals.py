@@ -1,0 +1,639 @@
+"""The goal rules of the warehouse's command grammar: one method per rule.
+
+Each goal construction of the grammar (:mod:`pipflow.warehouse.language.grammar`) has an alias
+``g_...``: ``g_set`` ("put 4 X on P"), ``g_transfer_src`` ("move 3 X from P to Q"), ``g_swap``,
+``g_empty_except``, ... The sentence reader (:mod:`pipflow.warehouse.language.parser`) is a lark
+:class:`~lark.visitors.Interpreter` that inherits :class:`GoalRules`: a goal clause's tree goes to
+the method its rule names, as pyperplan's tree visitor does, and the method turns it into
+statements of the order (:mod:`pipflow.warehouse.language.order`). Nothing here counts against
+the stock: relative amounts, "the rest" and ellipsis stay symbolic for the resolver.
+
+The methods share the reader's state: the statements and rules read so far, the item and places
+an ellipsis refers to, a source said before its moves. Each starts from the clause's
+parts (:class:`ClauseParts`), read in the same order for every rule, because reading an item
+phrase may refuse the command or remember its item for the next clause. The rules that a bare
+item may fill (``bare=True``: "take the drums out of bay 2" moves all of them) read it there too.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from lark import Token, Tree
+
+from pipflow.errors import TranslationError
+
+
+def quote(words: str) -> str:
+    """Words of the command, quoted in a message."""
+    return f"'{words}'"
+
+
+@dataclass
+class ClauseParts:
+    """What a goal clause says, before its rule's method reads the rest: the rule (``kind``), the
+    words it spans, its item phrases (``items``) read as counts of items (``nps``), its location
+    phrases (``locs``), its place lists (``plist``), and whether it says "each" or "both"."""
+
+    kind: str
+    words: str
+    items: list[Tree]
+    nps: list[dict]
+    locs: list[Tree]
+    plist: list[Tree]
+    each: bool
+
+
+class GoalRules:
+    """The goal rules, one method each (several aliases of one construction share a method),
+    mixed into the sentence reader, whose state they use."""
+
+    def clause_parts(self, node: Tree, bare: bool = False) -> ClauseParts:
+        """The clause's parts (see :class:`ClauseParts`); ``bare``: an item said without a count
+        is all of it ("take the drums out of bay 2")."""
+        words = self.words(node)
+        items = self.sub(node, "items")
+        nps = self.nps(items[0]) if items else []
+        locs = [c for c in node.children if isinstance(c, Tree) and c.data in ("loc", "loc_each", "loc_resp")]
+        plist = self.sub(node, "places")
+        each = bool(self.sub(node, "each") or self.sub(node, "both")) or any(
+            isinstance(c, Token) and c.value in ("each", "both") for c in node.children)
+        if bare and self.sub(node, "bare"):
+            nps = self.bare_nps(node, words)
+        return ClauseParts(node.data, words, items, nps, locs, plist, each)
+
+    def g_set(self, node: Tree) -> None:
+        parts = self.clause_parts(node)
+        kind, words, nps, locs = parts.kind, parts.words, parts.nps, parts.locs
+        if not locs:
+            shown = ", ".join(n["words"] for n in nps)
+            raise TranslationError(f"{quote(shown)}: the command does not say which shelf "
+                                   f"(candidates: {self.index.candidates('shelf')})")
+        places, mode = self.loc(locs[0])
+        if any(isinstance(c, Token) and str(c.value).lower() == "each" for c in node.children):
+            mode = "each"  # "Put 2 springs each on rack B and rack E"
+        # "Add 2 lids to A, 1 to B": a part with no verb of its own shares the add verb before it
+        # (it was read as B's final count: a misreading)
+        bare = len(node.children) == 2 and kind == "g_set"
+        if bare and not self.last_add:
+            self._gap_after_more(nps, places)
+        self.put(places, mode, nps, words, add=bare and self.last_add)
+        if kind == "g_set_only":
+            self.statements.append({"op": "nothing_else", "places": {"names": places},
+                                    "words": "nothing else"})
+
+    g_loc_set = g_set
+
+    g_set_only = g_set
+
+    def g_place_set(self, node: Tree) -> None:
+        parts = self.clause_parts(node)
+        words, nps, plist, each = parts.words, parts.nps, parts.plist, parts.each
+        places = self.place_list(plist[0])
+        for ap in self.sub(node, "place_appos"):
+            self.apposition(places, self.nps(self.sub(ap, "items")[0]), self.words(ap))
+        self._receive_is_clear(node, places, nps, words)
+        self.put(places, "each" if each else "one", nps, words)
+
+    def g_place_set_resp(self, node: Tree) -> None:
+        parts = self.clause_parts(node)
+        words, nps, plist = parts.words, parts.nps, parts.plist
+        self.respectively(self.place_list(plist[0]), nps, words, False)
+
+    def g_place_set_one(self, node: Tree) -> None:
+        parts = self.clause_parts(node)
+        words, plist = parts.words, parts.plist
+        places = self.place_list(plist[0])
+        num = next(int(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "NUM"))
+        head = self.sub(node, "ihead")[0]
+        self.put(places, "one", [{"items": {"names": [self.ihead(head, words)]}, "amount": {"count": num},
+                                  "words": words}], words)
+
+    def g_item_first(self, node: Tree) -> None:
+        parts = self.clause_parts(node)
+        words, locs = parts.words, parts.locs
+        pp = self.sub(node, "pitem_plain")  # "bring the apron's seat belts down to 3"
+        head = self.ihead(self.sub(pp[0] if pp else node, "ihead")[0], words)
+        self.last_item = [head]
+        num = next(int(t.value) for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == "NUM"))
+        if pp:
+            place = [str(self.toks(pp[0], "PLACE")[0].value)]
+            self.put(place, "one", [{"items": {"names": [head]}, "amount": {"count": num}, "words": words}], words)
+            return
+        if not locs:
+            raise TranslationError(f"{quote(words)}: the command does not say which shelf "
+                                   f"(candidates: {self.index.candidates('shelf')})")
+        places, mode = self.loc(locs[0])
+        self.put(places, mode, [{"items": {"names": [head]}, "amount": {"count": num}, "words": words}], words)
+
+    def g_add(self, node: Tree) -> None:
+        parts = self.clause_parts(node)
+        words, nps, locs, plist, each = parts.words, parts.nps, parts.locs, parts.plist, parts.each
+        if locs:
+            places, mode = self.loc(locs[0])
+        else:
+            places, mode = self.place_list(plist[0]), "each" if each else "one"
+        self.put(places, mode, nps, words, add=True)
+
+    def g_equal_poss(self, node: Tree) -> None:
+        parts = self.clause_parts(node)
+        words = parts.words
+        # "Make rack E's gear count equal to rack D's (valves)": D's count now, of its item
+        poss = self.sub(node, "posplace")
+        heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
+        place, other = str(poss[0].children[0].value), str(poss[1].children[0].value)
+        amount = {"as_many_as": other} if len(heads) == 1 or heads[1] == heads[0] else \
+            {"as_many_as": other, "of": heads[1]}
+        self.last_item = heads[:1]
+        self.statements.append({"op": "set", "places": {"names": [place]}, "items": {"names": heads[:1]},
+                                "amount": amount, "words": words})
+
+    def g_as_many_there(self, node: Tree) -> None:
+        parts = self.clause_parts(node)
+        words, locs = parts.words, parts.locs
+        # "Put as many valves on rack E as there are on rack A (and rack B together)"
+        head = self.ihead(self.sub(node, "ihead")[0], words)
+        places = self.loc(locs[0])[0]
+        others = [str(t.value) for t in node.children if isinstance(t, Token) and t.type == "PLACE"]
+        if len(others) > 1 and not self.sub(node, "together"):
+            raise TranslationError(f"{quote(words)}: as many as each of {', '.join(others)} has, or as "
+                                   f"all of them together? (say 'together')")
+        amount = {"as_many_as": others[0], **({"together_with": others[1:]} if others[1:] else {})}
+        self.put(places, "one", [{"items": {"names": [head]}, "amount": amount, "words": words}], words)
+
+    def g_keep_its_elided(self, node: Tree) -> None:
+        parts = self.clause_parts(node)
+        words = parts.words
+        # "Empty hangar B but leave its seat belts": the emptying of that place spares them
+        places = self._last_places(words)
+        heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
+        for st in self.statements:
+            if st["op"] == "empty" and st["places"]["names"] == places and st["items"].get("all"):
+                st["items"] = {"all": True, "except": list(dict.fromkeys((st["items"].get("except") or []) + heads))}
+        self.statements.append({"op": "keep", "places": {"names": places}, "items": {"names": heads},
+                                "inflow_only": False, "words": words})
+
+    def g_light_add(self, node: Tree) -> None:
+        parts = self.clause_parts(node)
+        words, plist = parts.words, parts.plist
+        # "Rack east is light on flour bags, add three": the count is more of that item there
+        head = self.ihead(self.sub(node, "ihead")[0], words)
+        n = int(self.toks(node, "NUM")[0].value)
+        self.last_item = [head]
+        self.put(self.place_list(plist[0]), "one", [{"items": {"names": [head]}, "amount": {"more": n},
+                                                      "words": words}], words)
+
+    def g_poss_bound(self, node: Tree) -> None:
+        parts = self.clause_parts(node)
+        words = parts.words
+        # "Keep rack east's lids between 2 and 6", "hold P's X at least 3"
+        pp = self.sub(node, "pitem_plain")[0]
+        place = [str(self.toks(pp, "PLACE")[0].value)]
+        head = self.ihead(self.sub(pp, "ihead")[0], words)
+        nums = [int(t.value) for t in node.children if isinstance(t, Token) and t.type == "NUM"]
+        if len(nums) == 2:
+            if nums[0] > nums[1]:
+                raise TranslationError(f"{quote(words)}: the lower bound {nums[0]} is above the upper bound {nums[1]}")
+            amount = {"at_least": nums[0], "at_most": nums[1]}
+        else:
+            amount = {"at_least": nums[0]} if self.sub(node, "lower") else {"at_most": nums[0]}
+        self.put(place, "one", [{"items": {"names": [head]}, "amount": amount, "words": words}], words)
+
+    def g_match(self, node: Tree) -> None:
+        parts = self.clause_parts(node)
+        words, plist = parts.words, parts.plist
+        # "Rack east should match silo 2's flour bag count": that place's count now
+        head = self.ihead(self.sub(node, "ihead")[0], words)
+        other = str(self.sub(node, "posplace")[0].children[0].value)
+        self.last_item = [head]
+        self.put(self.place_list(plist[0]), "one", [{"items": {"names": [head]}, "amount": {"as_many_as": other},
+                                                      "words": words}], words)
+
+    def g_give(self, node: Tree) -> None:
+        parts = self.clause_parts(node)
+        words, items, nps, plist = parts.words, parts.items, parts.nps, parts.plist
+        # "Dispatch, with its 8 lids, should give 3 of them to rack east": a move from the subject
+        source = self.place_list(plist[0])
+        for ap in self.sub(node, "place_appos"):
+            self.apposition(source, self.nps(self.sub(ap, "items")[0]), self.words(ap))
+        nps = self.nps(items[0])
+        for np in nps:
+            self.statements.append(self._transfer_statement(np, source, self.place_list(plist[1]), words))
+
+    def g_could_use(self, node: Tree) -> None:
+        parts = self.clause_parts(node)
+        words, nps, plist, each = parts.words, parts.nps, parts.plist, parts.each
+        # "P could use / could do with N more X" is a change; without "more" it could be the
+        # count P should end with or the count to bring: refused, not guessed
+        for np in nps:
+            if set(np["amount"]) != {"more"}:
+                raise TranslationError(f"{quote(words)}: 'could use' does not say whether "
+                                       f"{np['words']} is the count to end with or to add "
+                                       f"(say 'N more' or 'should have N')")
+        self.put(self.place_list(plist[0]), "each" if each else "one", nps, words)
+
+    def g_add_place(self, node: Tree) -> None:
+        parts = self.clause_parts(node)
+        words, nps, plist = parts.words, parts.nps, parts.plist
+        places = self.place_list(plist[0])
+        self.put(places, "one", nps, words, add=True)
+
+    def g_transfer_with(self, node: Tree) -> None:
+        parts = self.clause_parts(node)
+        words, nps = parts.words, parts.nps
+        robots_node = self.sub(node, "robots")[0]
+        sel = self.robots.read(robots_node, self.words(robots_node))
+        self.transfer(node, nps, words)
+        base = {"mode": "only", "robots": sel, "words": words}
+        self.bind.append(base)
+        self.rules.append(base)
+
+    def g_transfer(self, node: Tree) -> None:
+        parts = self.clause_parts(node)
+        words, nps = parts.words, parts.nps
+        self.transfer(node, nps, words)
+
+    g_transfer_except = g_transfer
+
+    def g_remove(self, node: Tree) -> None:
+        parts = self.clause_parts(node)
+        words, nps, plist = parts.words, parts.nps, parts.plist
+        source = self.place_list(plist[0])
+        for np in nps:
+            self.statements.append(self._transfer_statement(np, source, None, words))
+
+    def g_mult(self, node: Tree) -> None:
+        parts = self.clause_parts(node)
+        words, locs = parts.words, parts.locs
+        verb = self.first_word(node)
+        head = self.ihead(self.sub(node, "ihead")[0], words)
+        poss = self.sub(node, "posplace")  # "halve the loading bay's bearings"
+        places = [str(poss[0].children[0].value)] if poss else self.loc(locs[0])[0]
+        amount = {"fraction": [1, 2]} if verb == "halve" else {"times": {"double": 2, "triple": 3, "quadruple": 4}[verb]}
+        self.put(places, "each", [{"items": {"names": [head]}, "amount": amount, "words": words}], words)
+
+    def g_keep_part(self, node: Tree) -> None:
+        parts = self.clause_parts(node)
+        nps, plist = parts.nps, parts.plist
+        places = self.place_list(plist[0])
+        for np in nps:
+            if "fraction" in np["amount"]:
+                self.statements.append(self._goal_statement(places, np, False))
+            else:
+                self.statements.append(self._goal_statement(places, np, False))
+
+    def g_empty(self, node: Tree) -> None:
+        parts = self.clause_parts(node)
+        words, plist = parts.words, parts.plist
+        places = self.place_list(plist[0])
+        self.statements.append({"op": "empty", "places": {"names": places}, "items": {"all": True},
+                                "words": words})
+
+    def g_empty_item(self, node: Tree) -> None:
+        parts = self.clause_parts(node)
+        words, plist = parts.words, parts.plist
+        pp = self.sub(node, "pitem_plain")  # "empty out the parts cage's fuses"
+        places = [str(self.toks(pp[0], "PLACE")[0].value)] if pp else self.place_list(plist[0])
+        head = self.ihead(self.sub(pp[0] if pp else node, "ihead")[0], words)
+        self.statements.append({"op": "empty", "places": {"names": places}, "items": {"names": [head]},
+                                "words": words})
+
+    def g_fill(self, node: Tree) -> None:
+        parts = self.clause_parts(node)
+        kind, words, plist = parts.kind, parts.words, parts.plist
+        if kind == "g_fill":
+            places = self.place_list(plist[0])
+        else:
+            places = self._last_places(words)
+        head = self.ihead(self.sub(node, "ihead")[0], words)
+        only = "only" in words.lower().split() or "nothing but" in words.lower()
+        for p in places:
+            self.statements.append({"op": "fill", "places": {"names": [p]}, "items": {"names": [head]},
+                                    "only": only, "words": words})
+
+    g_fill_elided = g_fill
+
+    def g_nothing_else(self, node: Tree) -> None:
+        parts = self.clause_parts(node)
+        words, locs = parts.words, parts.locs
+        places = self.loc(locs[0])[0] if locs else self._last_places(words)
+        self.statements.append({"op": "nothing_else", "places": {"names": places}, "words": words})
+
+    def g_no_inflow(self, node: Tree) -> None:
+        parts = self.clause_parts(node)
+        words, locs = parts.words, parts.locs
+        # "Clear shelf2, but nothing goes to shelf4": shelf4 keeps what it has of what moves
+        places, _ = self.loc(locs[0])
+        heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
+        moved: list[str] = []
+        everything = False
+        for st in self.statements:
+            sel = st.get("items") or {}
+            if "names" in sel:
+                moved += sel["names"]
+            else:
+                everything = True
+        if heads:
+            sel = {"names": heads}
+        elif moved and not everything:
+            sel = {"names": list(dict.fromkeys(moved))}
+        else:
+            sel = {"all": True}
+        self.statements.append({"op": "keep", "places": {"names": places}, "items": sel,
+                                "inflow_only": False, "words": words})
+
+    def g_keep(self, node: Tree) -> None:
+        parts = self.clause_parts(node)
+        words, locs, plist = parts.words, parts.locs, parts.plist
+        poss = self.sub(node, "posplace")
+        heads = self.sub(node, "ihead")
+        if poss:
+            places = [str(poss[0].children[0].value)]
+        elif locs:
+            places = self.loc(locs[0])[0]
+        else:
+            places = self.place_list(plist[0])
+        sel = {"names": [self.ihead(heads[0], words)]} if heads else {"all": True}
+        self.statements.append({"op": "keep", "places": {"names": places}, "items": sel,
+                                "inflow_only": False, "words": words})
+
+    def g_swap(self, node: Tree) -> None:
+        parts = self.clause_parts(node)
+        words = parts.words
+        self.swap(node, words)
+
+    g_swap_items = g_swap
+
+    g_swap_poss = g_swap
+
+    def g_split(self, node: Tree) -> None:
+        parts = self.clause_parts(node)
+        words, items, nps, plist = parts.words, parts.items, parts.nps, parts.plist
+        places = self.place_list(plist[0])
+        for b in self.sub(node, "bare"):
+            nps = [{"items": {"names": [self.ihead(h, words)]}, "amount": {"all": True}, "words": words}
+                   for h in self.sub(b, "ihead")]
+        if not nps:
+            raise TranslationError(f"{quote(words)}: the command does not say what to share")
+        for np in nps:
+            a = np["amount"]
+            if not ({"count", "all"} & set(a)):
+                raise TranslationError(f"{quote(np['words'])}: cannot share this amount")
+            items = np["items"] if np["items"] is not None else {"names": list(self.last_item or [])}
+            stock = self.lex.world.get("stock") or {}
+            held = [p for p in places for i in items.get("names") or [] if int((stock.get(p) or {}).get(i, 0) or 0)]
+            if "count" in a and held:
+                # "Split 4 X between A and B" with no source: does each end with 2, or get 2 more?
+                # The same only where none holds X now (each was set to 2: a misreading)
+                raise TranslationError(f"{quote(words)}: cannot tell whether each place ends with its share "
+                                       f"or gets it on top of what it holds ({', '.join(dict.fromkeys(held))} "
+                                       f"hold some now); say where the units come from")
+            self.statements.append({"op": "distribute", "places": {"names": places}, "items": items,
+                                    "amount": a, "words": words})
+
+    def g_each(self, node: Tree) -> None:
+        parts = self.clause_parts(node)
+        words, locs = parts.words, parts.locs
+        places, mode = self.loc(locs[0])
+        self.put(places, "each", [{"items": {"all": True}, "amount": {"count": 1}, "words": words}], words)
+
+    def g_transfer_src(self, node: Tree) -> None:
+        parts = self.clause_parts(node, bare=True)
+        words, nps, locs, plist = parts.words, parts.nps, parts.locs, parts.plist
+        srcs = self.sub(node, "src")
+        pit = [c for c in node.children if isinstance(c, Tree) and c.data.startswith("pi_")]
+        if pit:
+            np, source = self.pitem(pit[0], words)
+            nps = [np]
+        elif srcs:
+            source = self.place_list(self.sub(srcs[0], "places")[0])
+        else:  # "put the 6 springs from rack C on rack E"
+            source = self.place_list(plist[0])
+        dst = self.loc(locs[0])[0] if locs else self.place_list(plist[-1]) if plist else []
+        for np in nps:
+            self.statements.append(self._transfer_statement(np, source, dst, words))
+
+    def g_receive(self, node: Tree) -> None:
+        parts = self.clause_parts(node, bare=True)
+        words, nps, plist = parts.words, parts.nps, parts.plist
+        dst, source = self.place_list(plist[0]), self.place_list(plist[1])
+        for np in nps:
+            if "more" in np["amount"]:  # "Overflow needs 4 more boxes from dock 1"
+                np = {**np, "amount": {"count": np["amount"]["more"]}}
+            self.statements.append(self._transfer_statement(np, source, dst, words))
+
+    def g_remove_src(self, node: Tree) -> None:
+        parts = self.clause_parts(node, bare=True)
+        words, nps = parts.words, parts.nps
+        nps, source = self._items_and_source(node, nps, words)
+        for np in nps:
+            st = self._transfer_statement(np, source, None, words)
+            self.statements.append(st)
+
+    def g_short(self, node: Tree) -> None:
+        parts = self.clause_parts(node, bare=True)
+        words, nps, plist = parts.words, parts.nps, parts.plist
+        # "Bay 2 is 3 crates short": it needs 3 more; any other amount is not read
+        for np in nps:
+            if set(np["amount"]) != {"count"}:
+                raise TranslationError(f"{quote(words)}: cannot tell how many are missing")
+            np = {**np, "amount": {"more": np["amount"]["count"]}}
+            self.statements.append(self._goal_statement(self.place_list(plist[0]), np, False))
+
+    def g_too_many(self, node: Tree) -> None:
+        parts = self.clause_parts(node, bare=True)
+        words, items, nps, plist = parts.words, parts.items, parts.nps, parts.plist
+        places = self.place_list(plist[0])
+        for ap in self.sub(node, "place_appos"):  # "P, which holds 7 X, should lose 2 of them"
+            self.apposition(places, self.nps(self.sub(ap, "items")[0]), self.words(ap))
+        nps = self.nps(items[0])  # read after the apposition: "them" is what it named
+        for np in nps:
+            a = np["amount"]
+            if "count" in a:
+                np = {**np, "amount": {"fewer": a["count"]}}
+            elif "fraction" in a:
+                num, den = a["fraction"]
+                np = {**np, "amount": {"fraction": [den - num, den]}}
+            else:
+                raise TranslationError(f"{quote(words)}: cannot tell how many to take away")
+            self.statements.append(self._goal_statement(places, np, False))
+
+    g_lose = g_too_many
+
+    def g_cut(self, node: Tree) -> None:
+        parts = self.clause_parts(node, bare=True)
+        words, locs = parts.words, parts.locs
+        pp = self.sub(node, "pitem_plain")
+        if pp:
+            places = [str(self.toks(pp[0], "PLACE")[0].value)]
+            head = self.ihead(self.sub(pp[0], "ihead")[0], words)
+        else:
+            places = self.loc(locs[0])[0]
+            head = self.ihead(self.sub(node, "ihead")[0], words)
+        fr = self.sub(node, "frac")
+        if fr:
+            den = int(self.toks(fr[0], "FRAC")[0].value)
+            num = int(self.toks(fr[0], "NUM")[0].value) if self.toks(fr[0], "NUM") else 1
+            amount = {"fraction": [den - num, den]}
+        elif any(isinstance(c, Token) and c.value == "half" for c in node.children):
+            amount = {"fraction": [1, 2]}
+        else:
+            amount = {"fewer": int(self.toks(node, "NUM")[-1].value)}
+        self.statements.append(self._goal_statement(places, {"items": {"names": [head]}, "amount": amount,
+                                                              "words": words}, False))
+
+    def g_keep_its(self, node: Tree) -> None:
+        parts = self.clause_parts(node, bare=True)
+        words, plist = parts.words, parts.plist
+        places = self.place_list(plist[0])
+        stock = self.lex.world.get("stock") or {}
+        heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
+        nums = [int(t.value) for t in self.toks(node, "NUM")]
+        if nums and len(nums) != len(heads):
+            raise TranslationError(f"{quote(words)}: cannot tell which count goes with which item")
+        for k, h in enumerate(heads):
+            for p in places:
+                have = int((stock.get(p) or {}).get(h, 0) or 0)
+                if nums and nums[k] != have:
+                    raise TranslationError(f"{quote(words)}: {p} holds {have} {h}, not {nums[k]}; "
+                                           f"cannot tell which is meant")
+        self.statements.append({"op": "keep", "places": {"names": places}, "items": {"names": heads},
+                                "inflow_only": False, "words": words})
+
+    def g_place_inum(self, node: Tree) -> None:
+        parts = self.clause_parts(node, bare=True)
+        words, nps, plist = parts.words, parts.nps, parts.plist
+        places = self.place_list(plist[0])
+        nps = []
+        for inum in self.sub(node, "inum"):
+            head = self.ihead(self.sub(inum, "ihead")[0], words)
+            nps.append({"items": {"names": [head]}, "amount": {"count": int(self.toks(inum, "NUM")[0].value)},
+                        "words": self.words(inum)})
+        self.put(places, "one", nps, words)
+
+    def g_empty_except(self, node: Tree) -> None:
+        parts = self.clause_parts(node, bare=True)
+        words, plist = parts.words, parts.plist
+        # "Clear out dock 1 except the pallets": the rest goes, the pallets stay as they are
+        places = self.place_list(plist[0])
+        excl = [self.ihead(h, words) for e in self.sub(node, "except_items") for h in self.sub(e, "ihead")]
+        self.statements.append({"op": "empty", "places": {"names": places}, "items": {"all": True, "except": excl},
+                                "words": words})
+        self.statements.append({"op": "keep", "places": {"names": places}, "items": {"names": excl},
+                                "inflow_only": False, "words": words})
+
+    def g_transfer_except_items(self, node: Tree) -> None:
+        parts = self.clause_parts(node, bare=True)
+        words, plist = parts.words, parts.plist
+        source, dst = self.place_list(plist[0]), self.place_list(plist[1])
+        excl = [self.ihead(h, words) for e in self.sub(node, "except_items") for h in self.sub(e, "ihead")]
+        self.statements.append(self._transfer_statement(
+            {"items": {"all": True, "except": excl}, "amount": {"all_held": True}, "words": words}, source, dst, words))
+
+    def g_none_of(self, node: Tree) -> None:
+        parts = self.clause_parts(node, bare=True)
+        kind, words, locs, plist = parts.kind, parts.words, parts.locs, parts.plist
+        places = self.place_list(plist[0]) if kind == "g_none_of" else self.loc(locs[0])[0]
+        heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
+        self.put(places, "each", [{"items": {"names": [h]}, "amount": {"none": True}, "words": words} for h in heads],
+                 words)
+
+    g_none_in = g_none_of
+
+    def g_updown(self, node: Tree) -> None:
+        parts = self.clause_parts(node, bare=True)
+        words, locs = parts.words, parts.locs
+        head = self.ihead(self.sub(node, "ihead")[0], words)
+        places = self.loc(locs[0])[0]
+        n = int(self.toks(node, "NUM")[-1].value)
+        down = any(isinstance(t, Token) and str(t.value).lower() == "down" for t in self.toks_any(node))
+        self.statements.append(self._goal_statement(
+            places, {"items": {"names": [head]}, "amount": {"fewer": n} if down else {"more": n}, "words": words},
+            False))
+
+    def g_raise(self, node: Tree) -> None:
+        parts = self.clause_parts(node, bare=True)
+        kind, words, locs, plist = parts.kind, parts.words, parts.locs, parts.plist
+        head = self.ihead(self.sub(node, "ihead")[0], words)
+        if locs:
+            places = self.loc(locs[0])[0]
+        elif plist:
+            places = self.place_list(plist[0])
+        else:
+            places = self._last_places(words)
+        n = int(self.toks(node, "NUM")[-1].value)
+        amount = {"more": n} if kind == "g_raise" else {"fewer": n}
+        self.statements.append(self._goal_statement(places, {"items": {"names": [head]}, "amount": amount,
+                                                              "words": words}, False))
+
+    g_lower = g_raise
+
+    def g_pronoun_dest(self, node: Tree) -> None:
+        parts = self.clause_parts(node, bare=True)
+        words, locs = parts.words, parts.locs
+        # "Take 2 bags out of overflow and drop them at dock 1": the move gets its destination
+        places = self.loc(locs[0])[0]
+        open_moves = [st for st in self.statements if st["op"] == "transfer" and not st.get("to")]
+        for st in open_moves:
+            st["to"] = {"names": places}
+            st["words"] = f"{st['words']}, {words}"
+        if not open_moves:  # "Take 3 product1 from shelf1. Put them on shelf2."
+            for k, st in enumerate(self.prior):
+                if st["op"] == "transfer" and not st.get("to"):
+                    self.updates[k] = {**st, "to": {"names": places}, "words": f"{st['words']}, {words}"}
+        if not open_moves and not self.updates:
+            raise TranslationError(f"{quote(words)}: 'them' of what? nothing was taken before it")
+
+    def g_ceiling(self, node: Tree) -> None:
+        parts = self.clause_parts(node, bare=True)
+        words, plist = parts.words, parts.plist
+        places = self.place_list(plist[0])
+        head = self.ihead(self.sub(node, "ihead")[0], words)
+        n = int(self.toks(node, "NUM")[0].value)
+        self.put(places, "each", [{"items": {"names": [head]}, "amount": {"at_most": n}, "words": words}], words)
+
+    def g_empty_into(self, node: Tree) -> None:
+        parts = self.clause_parts(node, bare=True)
+        words, plist = parts.words, parts.plist
+        source, dst = self.place_list(plist[0]), self.place_list(plist[1])
+        self.statements.append(self._transfer_statement(
+            {"items": {"all": True, "except": []}, "amount": {"all_held": True}, "words": words}, source, dst, words))
+        # the source is emptied, like "empty P": none of any product is left or parked there
+        self.statements.append({"op": "empty", "places": {"names": source}, "items": {"all": True}, "words": words})
+
+    def g_floor(self, node: Tree) -> None:
+        parts = self.clause_parts(node, bare=True)
+        words, plist = parts.words, parts.plist
+        places = self.place_list(plist[0])
+        head = self.ihead(self.sub(node, "ihead")[0], words)
+        n = int(self.toks(node, "NUM")[0].value)
+        self.put(places, "each", [{"items": {"names": [head]}, "amount": {"at_least": n}, "words": words}], words)
+
+    def g_keep_item(self, node: Tree) -> None:
+        parts = self.clause_parts(node, bare=True)
+        words, locs = parts.words, parts.locs
+        head = self.ihead(self.sub(node, "ihead")[0], words)
+        places = self.loc(locs[0])[0] if locs else list(self.index.by_kind["shelf"])
+        self.statements.append({"op": "keep", "places": {"names": places}, "items": {"names": [head]},
+                                "inflow_only": False, "words": words})
+
+    def g_noop(self, node: Tree) -> None:
+        parts = self.clause_parts(node, bare=True)
+        plist = parts.plist
+        self.place_list(plist[0])  # "Don't empty rack B, just take 2 gears off it": "it"
+
+    def g_swap_two(self, node: Tree) -> None:
+        parts = self.clause_parts(node, bare=True)
+        words = parts.words
+        self.swap(node, words)
+
+    g_swap_subj = g_swap_two
+
+    def g_split_src(self, node: Tree) -> None:
+        parts = self.clause_parts(node, bare=True)
+        words, items, nps, plist = parts.words, parts.items, parts.nps, parts.plist
+        nps, source = self._items_and_source(node, nps, words)
+        places = self.place_list(plist[-1])
+        for np in nps:
+            items = np["items"] if np["items"] is not None else {"names": list(self.last_item or [])}
+            self.statements.append({"op": "distribute", "places": {"names": places}, "items": items,
+                                    "amount": np["amount"], "from": {"names": source}, "words": words})
