@@ -19,5 +19,6 @@ GENERIC_STEP_MODULES = [
     "pipflow.steps.allocate",
     "pipflow.steps.schedule",
     "pipflow.steps.llm",
+    "pipflow.steps.baselines",
 ]
 STEP_MODULES = GENERIC_STEP_MODULES + own_domain_step_modules()

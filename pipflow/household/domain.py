@@ -37,7 +37,9 @@ class HouseholdDomain(TaskDomain):
 
     name = "household"
     workflow = "household"
-    workflows = {"pip-llm": "household", "pip-llm-checked": "household-checked"}
+    workflows = {"pip-llm": "household", "pip-llm-checked": "household-checked",
+                 # the paper's baselines (Sec. V): pipflow/baselines/, docs/paper.md "Baselines"
+                 "cot": "household-cot", "smart-llm": "household-smart-llm", "lamma-p": "household-lamma-p"}
     default_prompt = "household_problem"
     rule_fields = RULE_FIELDS
 

@@ -54,7 +54,9 @@ class WarehouseDomain(TaskDomain):
 
     name = "warehouse"
     workflow = "warehouse"
-    workflows = {"pip-llm": "pip-llm", "pip-llm-checked": "pip-llm-checked"}
+    workflows = {"pip-llm": "pip-llm", "pip-llm-checked": "pip-llm-checked",
+                 # the paper's baselines (Sec. V): pipflow/baselines/, docs/paper.md "Baselines"
+                 "cot": "cot", "smart-llm": "smart-llm", "lamma-p": "lamma-p"}
     default_prompt = "warehouse_problem"
     rule_fields = FIELD_KEYS
     grounding = Grounding(gbnf=grounding.gbnf, response_format=grounding.response_format, read=_read_grounded)

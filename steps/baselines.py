@@ -1,0 +1,305 @@
+"""Steps of the paper's baselines (CoT, SMART-LLM, LaMMA-P; Sec. V, Tables I-III): thin faces of
+:mod:`pipflow.baselines`. A baseline's workflow asks its model its questions (``baseline.ask``,
+one step per stage of its paper), reads the last answer in its format (``baseline.read``; for
+LaMMA-P ``baseline.summary`` and ``baseline.subplans``), and turns the robot plan into the graph
+and allocation that ``schedule``, ``simulate`` and ``score`` judge as they judge PIP-LLM's
+(``baseline.graph``). Nothing a model writes is executed.
+
+UP, lark and litellm are imported where they are used, below these functions."""
+from __future__ import annotations
+
+import re
+from typing import Annotated, Any
+
+from pipflow import Check, Choices, Doc, PathStr, StepContext, step
+from pipflow.baselines.cot import read_cot
+from pipflow.baselines.lammap import (merge_in_time, read_summary, robot_actions, sub_plan_steps,
+                                      subtasks_from_data)
+from pipflow.baselines.located import Unreadable
+from pipflow.baselines.robotplan import schedule_input, steps_from_data
+from pipflow.baselines.skills import domain_skills
+from pipflow.baselines.smartllm import read_smart_llm
+from pipflow.errors import InputError, PDDLError
+from pipflow.language.asking import ask, needs_model
+from pipflow.language.llm import sum_usage
+from pipflow.language.parsing import ParseIssue, extract_problem
+from pipflow.language.prompting import prompt_problem, render
+from pipflow.liberrors import UNIFIED_PLANNING, library_errors
+from pipflow.pddl.common import parse
+from pipflow.pddl.debugger import debug_problem, unclosed_section
+from pipflow.pddl.names import plan_in_world_names
+from pipflow.pddl.solver import check_engine, solve_problem
+from pipflow.yamlsource import read_source, safe_load
+
+#: the baselines, by the names their workflows and bench rows use
+METHODS = ("cot", "smart-llm", "lamma-p")
+#: the formats ``baseline.read`` reads, and what each answer is called in messages
+FORMATS = {"cot": "a plan in the CoT format (PLAN: then `N. ROBOTS: (ACTION ARGS)` lines)",
+           "smart-llm": "SMART-LLM code (functions of skill calls, threads)"}
+
+
+def _text(ctx: StepContext, path: str, what: str) -> str:
+    file = ctx.resolve_path(path)
+    try:
+        return file.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise InputError(f"{what} {file}: {exc.strerror}") from None
+
+
+def _yaml(ctx: StepContext, value: Any, what: str) -> dict:
+    if isinstance(value, dict):
+        return value
+    file = ctx.resolve_path(value)
+    import yaml  # deferred: pulls PyYAML's loader (only metadata files need it)
+
+    try:
+        return safe_load(read_source(file, what)) or {}
+    except yaml.YAMLError as exc:
+        raise InputError(f"{what} {file} is not valid YAML: {exc}") from None
+
+
+def _team(world: dict) -> list[str]:
+    """The robots in the order the prompts list them (``robots[0]`` first)."""
+    return list((world.get("robots") or {}).keys())
+
+
+def _skill_data(domain_text: str) -> list[dict]:
+    return [{"action": s.action, "call": s.call, "params": list(s.params), "types": list(s.types),
+             "signature": s.signature(), "pddl": s.pddl()} for s in domain_skills(domain_text)]
+
+
+def _usage(ctx: StepContext, usages: list[dict]) -> dict:
+    total = sum_usage(usages)
+    ctx.metrics["llm"] = total
+    return total
+
+
+# Model settings every asking step takes, named once.
+Model = Annotated[str | None, Doc("litellm model string or local/smollm2 (a baseline needs a model: offline is "
+                                  "refused); unset: $PIPFLOW_MODEL")]
+ApiBase = Annotated[str | None, Doc("base URL of an OpenAI-compatible server")]
+MaxTokens = Annotated[int, Doc("most tokens of the answer")]
+Timeout = Annotated[float, Doc("seconds per request")]
+Deadline = Annotated[float | None, Doc("seconds for the whole call, retries included")]
+Prompt = Annotated[str, Check(prompt_problem), Doc("prompt template in prompts/ (or a path); its `stage` variable "
+                                                  "says which question")]
+
+
+def _ask(ctx: StepContext, *, name: str, prompt: str, variables: dict, model: str, api_base: str | None,
+         temperature: float, max_tokens: int, timeout: float, retries: int, deadline: float | None,
+         cache: bool) -> tuple[str, dict, list]:
+    messages = render(prompt, variables, ctx.base_dir)
+    answer = ask(messages, model=model, api_base=api_base, temperature=temperature, max_tokens=max_tokens,
+                 timeout=timeout, retries=retries, deadline=deadline, use_cache=cache and ctx.use_cache,
+                 save=ctx.write_artifact, name=name, log=ctx.log)
+    return answer.text, answer.usage, messages
+
+
+@step("baseline.ask",
+      doc="Ask a baseline's model one question of its method (a stage: decompose, allocate, code, summary, plan); "
+          "the answer as text, read by a later step.",
+      outputs={"text": "string", "messages": "array", "usage": "object"})
+def ask_stage(
+    ctx: StepContext,
+    method: Annotated[str, Choices(*METHODS), Doc("the baseline asking")],
+    stage: Annotated[str, Doc("which of its questions (the template's `stage` variable)")],
+    command: Annotated[str, Doc("the natural-language command")],
+    world: Annotated[dict, Doc("the world (output of world.load)")],
+    domain: Annotated[PathStr, Doc("team-level PDDL domain file: its actions are the skills")],
+    prompt: Prompt,
+    answers: Annotated[dict | None, Doc("earlier stages' answers by stage name (the template shows them)")] = None,
+    robot_domain: Annotated[PathStr | None, Doc("robot-level PDDL domain file (LaMMA-P)")] = None,
+    model: Model = None,
+    api_base: ApiBase = None,
+    temperature: Annotated[float, Doc("sampling temperature")] = 0.0,
+    max_tokens: MaxTokens = 1024,
+    timeout: Timeout = 60.0,
+    retries: Annotated[int, Doc("extra tries on provider errors (pipflow's one retry layer)")] = 2,
+    deadline: Deadline = None,
+    cache: Annotated[bool, Doc("replay cached responses; false always calls the model")] = True,
+) -> dict:
+    """The template gets ``command``, ``world``, ``stage``, ``method``, ``domain`` (the team-level
+    PDDL text), ``skills`` (the domain's actions: ``call``, ``signature``, ``pddl``, ``params``,
+    ``types``), ``team`` (robot names, ``robots[0]`` first), ``answers`` and ``robot_domain``."""
+    resolved = needs_model(model, f"the {method} baseline")
+    if not isinstance(command, str) or not command.strip():
+        raise InputError("command must be a non-empty string")
+    domain_text = _text(ctx, domain, "domain file")
+    variables = {"command": command, "world": world, "stage": stage, "method": method, "domain": domain_text,
+                 "skills": _skill_data(domain_text), "team": _team(world), "answers": dict(answers or {}),
+                 "robot_domain": _text(ctx, robot_domain, "robot-level domain file") if robot_domain else ""}
+    text, usage, messages = _ask(ctx, name=stage, prompt=prompt, variables=variables, model=resolved,
+                                 api_base=api_base, temperature=temperature, max_tokens=max_tokens, timeout=timeout,
+                                 retries=retries, deadline=deadline, cache=cache)
+    ctx.metrics["llm"] = usage
+    return {"text": text, "messages": messages, "usage": usage}
+
+
+@step("baseline.read",
+      doc="Read a baseline's answer in its format (CoT plan, SMART-LLM code) as a robot plan; never executed. An "
+          "answer outside the format fails the run with every problem located (line, column): these baselines get "
+          "no further round.",
+      outputs={"plan": "array", "steps": "integer"})
+def read(
+    ctx: StepContext,
+    format: Annotated[str, Choices(*FORMATS), Doc("the answer's format")],
+    text: Annotated[str, Doc("the model's answer")],
+    world: Annotated[dict, Doc("the world (output of world.load): the team, robots[0] first")],
+    domain: Annotated[PathStr, Doc("team-level PDDL domain file: its actions are the skills")],
+) -> dict:
+    """``plan``: robot steps ``{id, action, args, robots, after, where, problems}``."""
+    skills = domain_skills(_text(ctx, domain, "domain file"))
+    try:
+        steps = read_cot(text, skills) if format == "cot" else read_smart_llm(text, skills, _team(world))
+    except Unreadable as bad:
+        ctx.write_artifact("issues.txt", "\n".join(str(i) for i in bad.issues) + "\n")
+        raise bad.refusal(format, FORMATS[format]) from None
+    plan = [s.data() for s in steps]
+    ctx.write_artifact("plan.json", plan)
+    ctx.log(f"read {len(plan)} actions")
+    return {"plan": plan, "steps": len(plan)}
+
+
+@step("baseline.summary",
+      doc="Read LaMMA-P's allocation summary (SubTask / Assigned Robot / Objects Involved / After) as subtasks; "
+          "every problem located. LaMMA-P has no round that corrects a summary: one outside the format ends the run.",
+      outputs={"subtasks": "array"})
+def summary(
+    ctx: StepContext,
+    text: Annotated[str, Doc("the model's summary answer")],
+    world: Annotated[dict, Doc("the world (output of world.load): the team")],
+) -> dict:
+    try:
+        subtasks = read_summary(text, _team(world))
+    except Unreadable as bad:
+        ctx.write_artifact("issues.txt", "\n".join(str(i) for i in bad.issues) + "\n")
+        raise bad.refusal("lamma-p", "a LaMMA-P allocation summary") from None
+    data = [s.data() for s in subtasks]
+    ctx.write_artifact("subtasks.json", data)
+    return {"subtasks": data}
+
+
+@step("baseline.subplans",
+      doc="LaMMA-P's per-robot planning: for each subtask the model writes a PDDL problem in the robot-level domain, "
+          "the debugger checks it (one validator round with its located messages, as LaMMA-P's one validation), a "
+          "planner solves it; the sub-plans merged in time as the summary orders them.",
+      outputs={"plan": "array", "subtasks": "array", "usage": "object"})
+def subplans(
+    ctx: StepContext,
+    subtasks: Annotated[list, Doc("output of baseline.summary")],
+    command: Annotated[str, Doc("the natural-language command")],
+    world: Annotated[dict, Doc("the world (output of world.load)")],
+    domain: Annotated[PathStr, Doc("team-level PDDL domain file")],
+    robot_domain: Annotated[PathStr, Doc("robot-level PDDL domain file (actions name their robots)")],
+    robot_actions_file: Annotated[Any, Doc("the robot-level actions' team actions (domains/*-robots.actions.yaml), "
+                                           "a path or its content")],
+    prompt: Prompt,
+    answers: Annotated[dict | None, Doc("earlier stages' answers by stage name")] = None,
+    rounds: Annotated[int, Doc("validator rounds per problem (LaMMA-P: 1)")] = 1,
+    planner: Annotated[str, Doc("UP engine for the robot-level problems")] = "enhsp",
+    planner_params: Annotated[dict | None, Doc("the engine's parameters, e.g. {params: '-planner sat-hmrphj'}")] = None,
+    planner_timeout: Annotated[float, Doc("seconds per problem")] = 60.0,
+    model: Model = None,
+    api_base: ApiBase = None,
+    temperature: Annotated[float, Doc("sampling temperature")] = 0.0,
+    max_tokens: MaxTokens = 1400,
+    timeout: Timeout = 60.0,
+    retries: Annotated[int, Doc("extra tries on provider errors")] = 2,
+    deadline: Deadline = None,
+    cache: Annotated[bool, Doc("replay cached responses; false always calls the model")] = True,
+) -> dict:
+    """``subtasks``: per subtask its problem, the validator's messages, the planner's outcome and
+    how many actions it got; a subtask whose problem never parses, or has no plan, gets none."""
+    resolved = needs_model(model, "the lamma-p baseline")
+    if rounds < 0:
+        raise InputError(f"rounds must be 0 or more, got {rounds}")
+    check_engine(planner)
+    domain_text = _text(ctx, domain, "domain file")
+    robot_text = _text(ctx, robot_domain, "robot-level domain file")
+    mapping = robot_actions(_yaml(ctx, robot_actions_file, "robot-level actions file"), robot_text, domain_text)
+    with library_errors(UNIFIED_PLANNING, PDDLError, "reading the robot-level domain"):
+        params_of = {a.name: ["?" + p.name for p in a.parameters] for a in parse(robot_text, None).actions}
+    items = subtasks_from_data(subtasks)
+    base = {"command": command, "world": world, "method": "lamma-p", "domain": domain_text,
+            "skills": _skill_data(domain_text), "team": _team(world), "answers": dict(answers or {}),
+            "robot_domain": robot_text, "subtasks": subtasks}
+    settings = dict(model=resolved, api_base=api_base, temperature=temperature, max_tokens=max_tokens,
+                    timeout=timeout, retries=retries, deadline=deadline, cache=cache)
+    usages, report, sub_plans, next_id = [], [], {}, 1
+    for sub in items:
+        tag = f"subtask{sub.number}"
+        variables = {**base, "stage": "problem", "subtask": sub.data(), "previous": "", "feedback": []}
+        text, usage, _ = _ask(ctx, name=f"{tag}.problem", prompt=prompt, variables=variables, **settings)
+        usages.append(usage)
+        problem, shown, messages = _checked_problem(text, robot_text)
+        history = [messages] if messages else []
+        for _ in range(rounds if messages else 0):  # the validator: the debugger's messages, once
+            variables = {**variables, "stage": "validate", "previous": shown, "feedback": messages}
+            text, usage, _ = _ask(ctx, name=f"{tag}.validate", prompt=prompt, variables=variables, **settings)
+            usages.append(usage)
+            problem, shown, messages = _checked_problem(text, robot_text)
+            if messages:
+                history.append(messages)
+            else:
+                break
+        entry: dict[str, Any] = {"subtask": sub.number, "robots": sub.robots, "problem": problem,
+                                 "validator": history, "status": "not planned", "actions": 0}
+        if problem and not messages:
+            ctx.write_artifact(f"{tag}.pddl", problem)
+            result = solve_problem(parse(robot_text, problem), planner, planner_params, planner_timeout)
+            entry["status"], entry["message"] = str(result.status), result.message
+            if result.plan is not None:
+                plan = plan_in_world_names(result.plan, world) or []
+                steps = sub_plan_steps(plan, mapping, sub, next_id, params_of)
+                next_id += len(steps)
+                sub_plans[sub.number] = steps
+                entry["actions"] = len(steps)
+        else:
+            entry["message"] = "; ".join(messages) or "no problem"
+        ctx.log(f"subtask {sub.number} ({', '.join(sub.robots)}): {entry['status']}, {entry['actions']} actions"
+                + (f" ({entry['message']})" if entry["status"] != "solved" else ""))
+        report.append(entry)
+    plan = [s.data() for s in merge_in_time(items, sub_plans)]
+    ctx.write_artifact("plan.json", plan)
+    ctx.write_artifact("subtasks.json", report)
+    return {"plan": plan, "subtasks": report, "usage": _usage(ctx, usages)}
+
+
+def _checked_problem(text: str, robot_domain_text: str) -> tuple[str | None, str, list[str]]:
+    """The problem in an answer (None if it has none), the text to show the validator (the
+    problem, or the answer from its last ``(define``), and the debugger's messages ([] when the
+    problem parses): located as the debugger locates them, an unclosed section by where it opened."""
+    try:
+        problem = extract_problem(text)
+    except ParseIssue as issue:
+        starts = [m.start() for m in re.finditer(r"\(\s*define\b", text, re.IGNORECASE)]
+        body = text[starts[-1]:].split("```", 1)[0].strip() if starts else text.strip()
+        hint = unclosed_section(body) if starts else ""
+        return None, body, [str(issue) + (f" Counting lines from `(define`: {hint}" if hint else "")]
+    report = debug_problem(problem, robot_domain_text, None)
+    return problem, problem, list(report.messages)
+
+
+@step("baseline.graph",
+      doc="The dependency graph and allocation of a robot plan, as the model gave them (its order, its robots), for "
+          "`schedule`; actions the world cannot place (unknown places or objects, robots outside the team) are kept "
+          "as unexecutable: the simulation counts them as not executed.",
+      outputs={"graph": "object", "allocation": "object", "unexecutable": "integer"})
+def graph(
+    ctx: StepContext,
+    plan: Annotated[list, Doc("robot plan: output `plan` of baseline.read or baseline.subplans")],
+    world: Annotated[dict, Doc("the world (output of world.load)")],
+    domain: Annotated[PathStr, Doc("team-level PDDL domain file")],
+    actions: Annotated[Any, Doc("the team domain's action metadata (domains/*.actions.yaml), a path or its content")],
+    method: Annotated[str, Choices(*METHODS), Doc("the baseline whose plan it is")],
+) -> dict:
+    out = schedule_input(steps_from_data(plan), world, _text(ctx, domain, "domain file"),
+                         _yaml(ctx, actions, "action metadata"), method)
+    ctx.write_artifact("graph.json", out["graph"])
+    ctx.write_artifact("allocation.json", out["allocation"])
+    for node in out["graph"]["nodes"]:
+        if node.get("unexecutable"):
+            ctx.log(f"{node['id']} {node['action']} {' '.join(node['args'])} cannot be placed in this world: "
+                    f"{'; '.join(node['unexecutable'])}")
+    ctx.metrics.update({"subtasks": len(out["graph"]["nodes"]), "unexecutable": out["unexecutable"]})
+    return out
