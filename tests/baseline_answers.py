@@ -106,6 +106,8 @@ def warehouse_problems(steps: list[Gold], world: dict) -> dict[int, str]:
     for k, s in enumerate(steps, 1):
         src, dst, product, magnitude = s.args
         units = int(magnitude.removeprefix("magnitude"))
+        for sh in (src, dst):  # a shelf the world lacks (a model's mistake) starts empty
+            stock.setdefault(sh, {})
         load = {sh: sum(stock[sh].values()) for sh in (src, dst)}
         have = {sh: stock[sh].get(product, 0) for sh in (src, dst)}
         mags = " ".join(f"magnitude{m}" for m in range(1, 7))
@@ -115,8 +117,8 @@ def warehouse_problems(steps: list[Gold], world: dict) -> dict[int, str]:
                   f"  (:objects {src} {dst} - shelf {product} - product {mags} - magnitude {' '.join(s.robots)} - robot)\n"
                   f"  (:init (= (stock {src} {product}) {have[src]}) (= (stock {dst} {product}) {have[dst]})\n"
                   f"         (= (load {src}) {load[src]}) (= (load {dst}) {load[dst]})\n"
-                  f"         (= (capacity {src}) {world['shelves'][src]['capacity']}) "
-                  f"(= (capacity {dst}) {world['shelves'][dst]['capacity']})\n"
+                  f"         (= (capacity {src}) {world['shelves'].get(src, {}).get('capacity', 30)}) "
+                  f"(= (capacity {dst}) {world['shelves'].get(dst, {}).get('capacity', 30)})\n"
                   f"         {amounts}\n         {carry})\n"
                   f"  (:goal (= (stock {dst} {product}) {have[dst] + units})))\n```\n")
         stock[src][product] = have[src] - units
