@@ -28,6 +28,7 @@ from pipflow.liberrors import UNIFIED_PLANNING, library_errors
 from pipflow.pddl.common import parse
 from pipflow.pddl.debugger import debug_problem, unclosed_section
 from pipflow.pddl.names import plan_in_world_names
+from pipflow.pddl.textpos import find_word
 from pipflow.pddl.solver import check_engine, solve_problem
 from pipflow.yamlsource import read_source, safe_load
 
@@ -161,22 +162,70 @@ def read(
 
 
 @step("baseline.summary",
-      doc="Read LaMMA-P's allocation summary (SubTask / Assigned Robot / Objects Involved / After) as subtasks; "
-          "every problem located. LaMMA-P has no round that corrects a summary: one outside the format ends the run.",
-      outputs={"subtasks": "array"})
+      doc="Read LaMMA-P's allocation summary (SubTask / Assigned Robot / Objects Involved / After) as subtasks, every "
+          "problem located; one round lets the model fix it (LaMMA-P re-asks for a subtask it cannot read once), then "
+          "a subtask still malformed is skipped, and a summary with no readable subtask ends the run.",
+      outputs={"subtasks": "array", "skipped": "array", "text": "string", "usage": "object"})
 def summary(
     ctx: StepContext,
     text: Annotated[str, Doc("the model's summary answer")],
+    command: Annotated[str, Doc("the natural-language command")],
     world: Annotated[dict, Doc("the world (output of world.load): the team")],
+    domain: Annotated[PathStr, Doc("team-level PDDL domain file")],
+    prompt: Prompt,
+    robot_domain: Annotated[PathStr | None, Doc("robot-level PDDL domain file")] = None,
+    answers: Annotated[dict | None, Doc("earlier stages' answers by stage name")] = None,
+    rounds: Annotated[int, Doc("rounds that let the model fix the summary (LaMMA-P: 1)")] = 1,
+    model: Model = None,
+    api_base: ApiBase = None,
+    temperature: Annotated[float, Doc("sampling temperature")] = 0.0,
+    max_tokens: MaxTokens = 1400,
+    timeout: Timeout = 60.0,
+    retries: Annotated[int, Doc("extra tries on provider errors")] = 2,
+    deadline: Deadline = None,
+    cache: Annotated[bool, Doc("replay cached responses; false always calls the model")] = True,
 ) -> dict:
-    try:
-        subtasks = read_summary(text, _team(world))
-    except Unreadable as bad:
-        ctx.write_artifact("issues.txt", "\n".join(str(i) for i in bad.issues) + "\n")
-        raise bad.refusal("lamma-p", "a LaMMA-P allocation summary") from None
-    data = [s.data() for s in subtasks]
+    """``subtasks``: every subtask read, those with ``issues`` skipped (``skipped`` lists their
+    numbers); ``text``: the summary read (the fixed one after a round)."""
+    if rounds < 0:
+        raise InputError(f"rounds must be 0 or more, got {rounds}")
+    team = _team(world)
+    reading, fatal = _summary_of(text, team)
+    usages: list[dict] = []
+    for k in range(rounds):
+        found = fatal.issues if fatal is not None else reading.issues
+        if not found:
+            break
+        resolved = needs_model(model, "the lamma-p baseline")
+        domain_text = _text(ctx, domain, "domain file")
+        variables = {"command": command, "world": world, "stage": "summary-fix", "method": "lamma-p",
+                     "domain": domain_text, "skills": _skill_data(domain_text), "team": team,
+                     "answers": dict(answers or {}), "previous": text,
+                     "feedback": (fatal or Unreadable(found)).lines(),
+                     "robot_domain": _text(ctx, robot_domain, "robot-level domain file") if robot_domain else ""}
+        text, usage, _ = _ask(ctx, name=f"summary-fix{k + 1}", prompt=prompt, variables=variables, model=resolved,
+                              api_base=api_base, temperature=temperature, max_tokens=max_tokens, timeout=timeout,
+                              retries=retries, deadline=deadline, cache=cache)
+        usages.append(usage)
+        reading, fatal = _summary_of(text, team)
+    if fatal is not None:
+        ctx.write_artifact("issues.txt", "\n".join(str(i) for i in fatal.issues) + "\n")
+        raise fatal.refusal("lamma-p", "a LaMMA-P allocation summary")
+    skipped = [s.number for s in reading.subtasks if s.issues]
+    for s in reading.subtasks:
+        if s.issues:
+            ctx.log(f"subtask of line {s.line} skipped (as LaMMA-P skips a subtask it cannot read): {'; '.join(s.issues)}")
+    data = [s.data() for s in reading.subtasks]
     ctx.write_artifact("subtasks.json", data)
-    return {"subtasks": data}
+    return {"subtasks": data, "skipped": skipped, "text": text, "usage": _usage(ctx, usages)}
+
+
+def _summary_of(text: str, team: list[str]) -> tuple[Any, Unreadable | None]:
+    """The summary read, or the reason none of it can be used."""
+    try:
+        return read_summary(text, team), None
+    except Unreadable as bad:
+        return None, bad
 
 
 @step("baseline.subplans",
@@ -218,7 +267,10 @@ def subplans(
     robot_text = _text(ctx, robot_domain, "robot-level domain file")
     mapping = robot_actions(_yaml(ctx, robot_actions_file, "robot-level actions file"), robot_text, domain_text)
     with library_errors(UNIFIED_PLANNING, PDDLError, "reading the robot-level domain"):
-        params_of = {a.name: ["?" + p.name for p in a.parameters] for a in parse(robot_text, None).actions}
+        robot_level = parse(robot_text, None)
+    params_of = {a.name: ["?" + p.name for p in a.parameters] for a in robot_level.actions}
+    robot_types = {getattr(p.type, "name", str(p.type)) for a in robot_level.actions for p in a.parameters
+                   if "?" + p.name in mapping[a.name].robots}  # what a robot is in this domain
     items = subtasks_from_data(subtasks)
     base = {"command": command, "world": world, "method": "lamma-p", "domain": domain_text,
             "skills": _skill_data(domain_text), "team": _team(world), "answers": dict(answers or {}),
@@ -227,17 +279,21 @@ def subplans(
                     timeout=timeout, retries=retries, deadline=deadline, cache=cache)
     usages, report, sub_plans, next_id = [], [], {}, 1
     for sub in items:
+        if sub.issues:  # the summary could not say what it is (baseline.summary): nothing to plan
+            report.append({"subtask": sub.number, "robots": sub.robots, "problem": None, "validator": [],
+                           "status": "skipped", "actions": 0, "message": "; ".join(sub.issues)})
+            continue
         tag = f"subtask{sub.number}"
         variables = {**base, "stage": "problem", "subtask": sub.data(), "previous": "", "feedback": []}
         text, usage, _ = _ask(ctx, name=f"{tag}.problem", prompt=prompt, variables=variables, **settings)
         usages.append(usage)
-        problem, shown, messages = _checked_problem(text, robot_text)
+        problem, shown, messages = _checked_problem(text, robot_text, sub, robot_types)
         history = [messages] if messages else []
         for _ in range(rounds if messages else 0):  # the validator: the debugger's messages, once
             variables = {**variables, "stage": "validate", "previous": shown, "feedback": messages}
             text, usage, _ = _ask(ctx, name=f"{tag}.validate", prompt=prompt, variables=variables, **settings)
             usages.append(usage)
-            problem, shown, messages = _checked_problem(text, robot_text)
+            problem, shown, messages = _checked_problem(text, robot_text, sub, robot_types)
             if messages:
                 history.append(messages)
             else:
@@ -265,10 +321,13 @@ def subplans(
     return {"plan": plan, "subtasks": report, "usage": _usage(ctx, usages)}
 
 
-def _checked_problem(text: str, robot_domain_text: str) -> tuple[str | None, str, list[str]]:
+def _checked_problem(text: str, robot_domain_text: str, subtask: Any,
+                     robot_types: set[str]) -> tuple[str | None, str, list[str]]:
     """The problem in an answer (None if it has none), the text to show the validator (the
     problem, or the answer from its last ``(define``), and the debugger's messages ([] when the
-    problem parses): located as the debugger locates them, an unclosed section by where it opened."""
+    problem parses and names only the subtask's robots): located as the debugger locates them, an
+    unclosed section by where it opened. A robot the summary did not assign is a message too:
+    LaMMA-P writes each problem in its robot's own domain, where no other robot exists."""
     try:
         problem = extract_problem(text)
     except ParseIssue as issue:
@@ -277,7 +336,15 @@ def _checked_problem(text: str, robot_domain_text: str) -> tuple[str | None, str
         hint = unclosed_section(body) if starts else ""
         return None, body, [str(issue) + (f" Counting lines from `(define`: {hint}" if hint else "")]
     report = debug_problem(problem, robot_domain_text, None)
-    return problem, problem, list(report.messages)
+    messages = list(report.messages)
+    if report.problem is not None:
+        assigned = {r.lower() for r in subtask.robots}
+        for obj in report.problem.all_objects:
+            if getattr(obj.type, "name", "") in robot_types and obj.name.lower() not in assigned:
+                messages.append(f"{find_word(problem, obj.name)}the problem declares the robot {obj.name}, which the "
+                                f"summary did not assign to SubTask {subtask.number} (its robots: "
+                                f"{', '.join(subtask.robots)})")
+    return problem, problem, messages
 
 
 @step("baseline.graph",

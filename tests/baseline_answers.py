@@ -134,6 +134,8 @@ def stage_of(text: str) -> tuple[str, int | None]:
     m = re.search(r"Write the problem of SubTask (\d+)", text)
     if m:
         return ("validate" if "The PDDL validator found these problems" in text else "problem"), int(m.group(1))
+    if "It cannot be read:" in text and "Write the whole problem content summary again" in text:
+        return "summary-fix", None
     if "Finish the problem content summary" in text:
         return "summary", None
     if "Allocate the subtasks:" in text:

@@ -204,16 +204,37 @@ def test_a_smart_llm_answer_with_a_syntax_error_is_located_after_its_three_quest
     assert result.status == "failed" and "line 2, column 16: Python syntax: '(' was never closed" in result.error
 
 
-def test_a_lamma_p_summary_outside_its_format_ends_the_run_located():
+def test_a_lamma_p_summary_it_cannot_read_gets_one_round_with_the_located_problems_then_ends_the_run():
+    """LaMMA-P re-asks once for a summary subtask it cannot read: the second question carries
+    every problem located; still unreadable, the run ends there (no subtask to plan)."""
     summary = ("Problem content summary:\nSubTask 1: move two\nAssigned Robot: robot44\nAfter: none\n"
-               "SubTask 3: again\nAssigned Robot: robot4\nAfter: 1, 7\n")
-    with FakeOpenAI(["decomposition", "allocation", summary]) as server:
+               "SubTask 1: again\nAssigned Robot: robot4\nAfter: 1, 7\n")
+    with FakeOpenAI(["decomposition", "allocation", summary, summary, "never asked"]) as server:
         result = run("lamma-p", server)
-        assert len(server.requests) == 3
+        prompts = server.prompts()
+    assert len(prompts) == 4
     assert result.status == "failed"
-    for located in ("line 3, column 17: 'robot44' is not a robot of the team", "line 5, column 9: expected SubTask 2",
-                    "line 5, column 1: SubTask 2 comes after 7, which is not a subtask of the summary"):
+    for located in ("line 3, column 17: 'robot44' is not a robot of the team", "line 5, column 9: a second SubTask 1",
+                    "line 5, column 1: the subtask of line 5 comes after 7, which is not a subtask of the summary"):
+        assert located in prompts[3], prompts[3][-1500:]
         assert located in result.error, result.error
+
+
+def test_a_lamma_p_subtask_still_unreadable_after_its_round_is_skipped_and_the_others_are_planned():
+    """Two subtasks, the second naming a robot the team lacks, in the summary and in its fix:
+    the second is skipped (as LaMMA-P skips a subtask it cannot read), the first planned and
+    executed; the task is not done."""
+    gold = WH01_GOLD + [Gold("a2", "move-product", ["shelf1", "shelf3", "product1", "magnitude1"], ["robot5"])]
+    summary = summary_answer(gold).replace("Assigned Robot: robot5", "Assigned Robot: robot55")
+    problems = warehouse_problems(gold, WORLD)
+    with FakeOpenAI(["decomposition", "allocation", summary, summary, problems[1]]) as server:
+        result = run("lamma-p", server)
+        assert len(server.requests) == 5
+    assert result.status == "succeeded", result.error
+    assert [(s["subtask"], s["status"], s["actions"]) for s in result.outputs["subtasks"]] == [
+        (1, "solved", 1), (2, "skipped", 0)]
+    assert "'robot55' is not a robot of the team" in result.outputs["subtasks"][1]["message"]
+    assert result.outputs["exe"] == 1.0
 
 
 # ---------------------------------------------------------------------------------------------
@@ -306,16 +327,23 @@ def lamma_p_script(*problems: str) -> list[str]:
     return ["decomposition", "allocation", summary_answer(WH01_GOLD), *problems]
 
 
-def test_lamma_p_gets_one_validator_round_with_the_debuggers_located_message_and_then_succeeds():
+@pytest.mark.parametrize("mistake", ["misspelt product", "a robot not assigned"])
+def test_lamma_p_gets_one_validator_round_with_the_debuggers_located_message_and_then_succeeds(mistake):
     good = warehouse_problems(WH01_GOLD, WORLD)[1]
-    broken = good.replace("(= (stock shelf3 product1) 5)", "(= (stock shelf3 prodcut1) 5)")
+    if mistake == "misspelt product":
+        broken, said = good.replace("(= (stock shelf3 product1) 5)", "(= (stock shelf3 prodcut1) 5)"), \
+            ["prodcut1", "line 3", "did you mean 'product1'"]
+    else:  # the problem adds robot9 (carry 3): LaMMA-P's per-robot domains hold no other robot
+        broken = good.replace("robot4 - robot", "robot4 robot9 - robot").replace("(= (carry robot4) 2)",
+                                                                               "(= (carry robot4) 2) (= (carry robot9) 3)")
+        said = ["line 2, column", "declares the robot robot9, which the summary did not assign to SubTask 1"]
     with FakeOpenAI(lamma_p_script(broken, good)) as server:
         result = run("lamma-p", server)
         prompts = server.prompts()
     assert result.status == "succeeded", result.error
     assert len(prompts) == 5
     assert "The PDDL validator found these problems:" in prompts[4]
-    assert "prodcut1" in prompts[4] and "line 3" in prompts[4] and "did you mean 'product1'" in prompts[4]
+    assert all(words in prompts[4] for words in said), prompts[4][-1200:]
     sub = result.outputs["subtasks"][0]
     assert sub["status"] == "solved" and len(sub["validator"]) == 1
     assert score(REPO / "benchmarks" / "warehouse" / "world.yaml", {"goal": {"shelf3": {"product1": 7}}},
@@ -408,8 +436,9 @@ def test_lamma_p_summary_reads_decorated_fields_and_refuses_a_circle():
     summary = ("Problem content summary:\n**SubTask 1**: open the fridge\n**Assigned Robot**: robot6\n"
                "The fridge is closed, so this comes first.\n**Objects Involved**: fridge\n**After**: none\n"
                "SubTask 2: melon in\nAssigned Robot: team of robot4 and robot5\nAfter: SubTask 1\n")
-    subtasks = read_summary(summary, ["robot4", "robot5", "robot6"])
-    assert [(s.number, s.robots, s.after) for s in subtasks] == [(1, ["robot6"], []), (2, ["robot4", "robot5"], [1])]
+    read = read_summary(summary, ["robot4", "robot5", "robot6"])
+    assert not read.issues
+    assert [(s.number, s.robots, s.after) for s in read.subtasks] == [(1, ["robot6"], []), (2, ["robot4", "robot5"], [1])]
     circle = "SubTask 1: a\nAssigned Robot: robot4\nAfter: 2\nSubTask 2: b\nAssigned Robot: robot5\nAfter: 1\n"
     with pytest.raises(Unreadable, match="in a circle: SubTask 1 -> SubTask 2 -> SubTask 1"):
         read_summary(circle, ["robot4", "robot5"])

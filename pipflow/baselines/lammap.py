@@ -60,7 +60,8 @@ FORM = ("SubTask N: TITLE / Assigned Robot: ROBOT, ROBOT / Objects Involved: NAM
 @dataclass
 class Subtask:
     """One subtask of the summary: its number, title, robots, objects, the subtasks it waits for,
-    and the answer's line where it starts."""
+    the answer's line where it starts, and ``issues`` (located): a subtask with issues is skipped,
+    as LaMMA-P skips a subtask whose structure it cannot read."""
 
     number: int
     title: str
@@ -68,20 +69,37 @@ class Subtask:
     objects: list[str] = field(default_factory=list)
     after: list[int] = field(default_factory=list)
     line: int = 0
+    issues: list[str] = field(default_factory=list)
+
+    def label(self) -> str:
+        """``SubTask 3``, or where it is when its header gave no number of its own."""
+        return f"SubTask {self.number}" if self.number > 0 else f"the subtask of line {self.line}"
 
     def data(self) -> dict[str, Any]:
         return {"number": self.number, "title": self.title, "robots": self.robots, "objects": self.objects,
-                "after": self.after, "line": self.line}
+                "after": self.after, "line": self.line, "issues": self.issues}
+
+
+@dataclass
+class Summary:
+    """A summary as read: every subtask (those with issues are skipped) and every issue, located
+    (the feedback of LaMMA-P's one structure-fixing round)."""
+
+    subtasks: list[Subtask]
+    issues: list[Issue]
+
+    def readable(self) -> list[Subtask]:
+        return [s for s in self.subtasks if not s.issues]
 
 
 def subtasks_from_data(items: list[Any]) -> list[Subtask]:
     out = []
     for item in items or []:
         if not isinstance(item, dict) or "number" not in item or "robots" not in item:
-            raise InputError(f"a subtask is {{number, title, robots, objects, after}}, got {item!r}")
+            raise InputError(f"a subtask is {{number, title, robots, objects, after, issues}}, got {item!r}")
         out.append(Subtask(int(item["number"]), str(item.get("title") or ""), [str(r) for r in item["robots"]],
                            [str(o) for o in item.get("objects") or []], [int(a) for a in item.get("after") or []],
-                           int(item.get("line") or 0)))
+                           int(item.get("line") or 0), [str(i) for i in item.get("issues") or []]))
     return out
 
 
@@ -129,9 +147,11 @@ def _after(value: str, line: int, column: int, issues: list[Issue]) -> list[int]
     return out
 
 
-def read_summary(text: str, team: list[str]) -> list[Subtask]:
+def read_summary(text: str, team: list[str]) -> Summary:
     """The subtasks of a summary answer (after its last "Problem content summary" line, if it has
-    one); :class:`Unreadable` lists every problem located."""
+    one), each problem located and charged to the subtask it is in. :class:`Unreadable` when no
+    subtask can be read at all, or the subtasks wait for each other in a circle (nothing could
+    start); otherwise the subtasks with issues are skipped, the others planned."""
     marks = list(MARK.finditer(text))
     start_line = text.count("\n", 0, marks[-1].start()) + 2 if marks else 1
     lines = text.split("\n")
@@ -139,17 +159,27 @@ def read_summary(text: str, team: list[str]) -> list[Subtask]:
     subtasks: list[Subtask] = []
     seen_fields: set[str] = set()
     assigned: set[int] = set()
+
+    def charge(subtask: Subtask | None, issue: Issue) -> None:
+        issues.append(issue)
+        if subtask is not None:
+            subtask.issues.append(str(issue))
+
     for line_no in range(start_line, len(lines) + 1):
         line = lines[line_no - 1]
         head = HEADER.fullmatch(line)
         if head:
             raw, title = head.group(1).rstrip("."), head.group(2)
-            expected = len(subtasks) + 1
-            if not raw.isdigit() or int(raw) != expected:
-                issues.append(Issue(line_no, head.start(1) + 1, f"expected SubTask {expected}, found "
-                                                               f"{snippet(line.strip())} (number the subtasks 1, 2, 3, ...)"))
-            subtasks.append(Subtask(expected, title, line=line_no))
+            current = Subtask(-len(subtasks) - 1, title, line=line_no)  # a number no After can name, until read
+            subtasks.append(current)
             seen_fields = set()
+            if not raw.isdigit() or int(raw) < 1:
+                charge(current, Issue(line_no, head.start(1) + 1, f"{snippet(line.strip())}: a subtask is numbered "
+                                                                   "SubTask 1, SubTask 2, ..."))
+            elif any(s.number == int(raw) for s in subtasks):
+                charge(current, Issue(line_no, head.start(1) + 1, f"a second SubTask {raw}: number each subtask once"))
+            else:
+                current.number = int(raw)
             continue
         got = FIELD.fullmatch(line)
         if not got:
@@ -157,39 +187,43 @@ def read_summary(text: str, team: list[str]) -> list[Subtask]:
         key = got.group(1).lower().split()[0]
         column = got.start(2) + 1
         if not subtasks:
-            issues.append(Issue(line_no, 1, f"{got.group(1)!r} before any `SubTask 1:` line; the summary is: {FORM}"))
+            charge(None, Issue(line_no, 1, f"{got.group(1)!r} before any `SubTask N:` line; the summary is: {FORM}"))
             continue
+        current = subtasks[-1]
         if key in seen_fields:
-            issues.append(Issue(line_no, 1, f"SubTask {subtasks[-1].number} has a second {got.group(1)!r} line"))
+            charge(current, Issue(line_no, 1, f"{current.label()} has a second {got.group(1)!r} line"))
             continue
         seen_fields.add(key)
-        current = subtasks[-1]
+        found: list[Issue] = []
         if key == "assigned":
-            assigned.add(current.number)
-            current.robots = _robots(got.group(2), line_no, column, team, issues)
+            assigned.add(id(current))
+            current.robots = _robots(got.group(2), line_no, column, team, found)
         elif key == "objects":
             current.objects = [item for item, _ in _items(got.group(2))]
         else:
-            current.after = _after(got.group(2), line_no, column, issues)
+            current.after = _after(got.group(2), line_no, column, found)
+        for issue in found:
+            charge(current, issue)
     if not subtasks:
-        issues.append(Issue(start_line, 1, f"the summary has no `SubTask 1:` line; the summary is: {FORM}"))
+        raise Unreadable(issues + [Issue(start_line, 1, f"the summary has no `SubTask 1:` line; the summary is: {FORM}")])
     numbers = {s.number for s in subtasks}
     for s in subtasks:
-        if s.number not in assigned:
-            issues.append(Issue(s.line, 1, f"SubTask {s.number} has no `Assigned Robot:` line"))
-        for a in s.after:
+        if id(s) not in assigned:
+            charge(s, Issue(s.line, 1, f"{s.label()} has no `Assigned Robot:` line"))
+        for a in list(s.after):
             if a == s.number or a not in numbers:
-                issues.append(Issue(s.line, 1, f"SubTask {s.number} comes after {a}, which is "
-                                               f"{'itself' if a == s.number else 'not a subtask of the summary'}"))
-    if not issues:
-        cycle = _cycle(subtasks)
-        if cycle:
-            first = next(s for s in subtasks if s.number == cycle[0])
-            issues.append(Issue(first.line, 1, "the subtasks wait for each other in a circle: "
-                                               + " -> ".join(f"SubTask {n}" for n in cycle)))
-    if issues:
+                s.after.remove(a)
+                charge(s, Issue(s.line, 1, f"{s.label()} comes after {a}, which is "
+                                           f"{'itself' if a == s.number else 'not a subtask of the summary'}"))
+    cycle = _cycle(subtasks)
+    if cycle:
+        first = next(s for s in subtasks if s.number == cycle[0])
+        raise Unreadable(issues + [Issue(first.line, 1, "the subtasks wait for each other in a circle: "
+                                                        + " -> ".join(f"SubTask {n}" for n in cycle))])
+    summary = Summary(subtasks, issues)
+    if not summary.readable():
         raise Unreadable(issues)
-    return subtasks
+    return summary
 
 
 def _cycle(subtasks: list[Subtask]) -> list[int]:
