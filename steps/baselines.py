@@ -69,6 +69,13 @@ def _skill_data(domain_text: str) -> list[dict]:
              "signature": s.signature(), "pddl": s.pddl()} for s in domain_skills(domain_text)]
 
 
+def _cut_off(usage: dict | None) -> int | None:
+    """The answer's token count when the model stopped at its limit (``finish_reason: length``)."""
+    if isinstance(usage, dict) and usage.get("finish_reason") == "length":
+        return int(usage.get("completion_tokens") or 0) or None
+    return None
+
+
 def _usage(ctx: StepContext, usages: list[dict]) -> dict:
     total = sum_usage(usages)
     ctx.metrics["llm"] = total
@@ -147,6 +154,7 @@ def read(
     text: Annotated[str, Doc("the model's answer")],
     world: Annotated[dict, Doc("the world (output of world.load): the team, robots[0] first")],
     domain: Annotated[PathStr, Doc("team-level PDDL domain file: its actions are the skills")],
+    usage: Annotated[dict | None, Doc("the answer's usage (baseline.ask): a refusal says when it was cut off")] = None,
 ) -> dict:
     """``plan``: robot steps ``{id, action, args, robots, after, where, problems}``."""
     skills = domain_skills(_text(ctx, domain, "domain file"))
@@ -154,7 +162,7 @@ def read(
         steps = read_cot(text, skills) if format == "cot" else read_smart_llm(text, skills, _team(world))
     except Unreadable as bad:
         ctx.write_artifact("issues.txt", "\n".join(str(i) for i in bad.issues) + "\n")
-        raise bad.refusal(format, FORMATS[format]) from None
+        raise bad.refusal(format, FORMATS[format], _cut_off(usage)) from None
     plan = [s.data() for s in steps]
     ctx.write_artifact("plan.json", plan)
     ctx.log(f"read {len(plan)} actions")
@@ -173,6 +181,7 @@ def summary(
     world: Annotated[dict, Doc("the world (output of world.load): the team")],
     domain: Annotated[PathStr, Doc("team-level PDDL domain file")],
     prompt: Prompt,
+    usage: Annotated[dict | None, Doc("the answer's usage (baseline.ask): a refusal says when it was cut off")] = None,
     robot_domain: Annotated[PathStr | None, Doc("robot-level PDDL domain file")] = None,
     answers: Annotated[dict | None, Doc("earlier stages' answers by stage name")] = None,
     rounds: Annotated[int, Doc("rounds that let the model fix the summary (LaMMA-P: 1)")] = 1,
@@ -210,7 +219,7 @@ def summary(
         reading, fatal = _summary_of(text, team)
     if fatal is not None:
         ctx.write_artifact("issues.txt", "\n".join(str(i) for i in fatal.issues) + "\n")
-        raise fatal.refusal("lamma-p", "a LaMMA-P allocation summary")
+        raise fatal.refusal("lamma-p", "a LaMMA-P allocation summary", _cut_off(usages[-1] if usages else usage))
     skipped = [s.number for s in reading.subtasks if s.issues]
     for s in reading.subtasks:
         if s.issues:

@@ -24,7 +24,7 @@ from baseline_answers import (Gold, cot_answer, gold_from_pip_llm, responder, sm
 from fake_openai import FakeOpenAI
 from pipflow.baselines.cot import read_cot
 from pipflow.baselines.lammap import Subtask, merge_in_time, read_summary
-from pipflow.baselines.located import Unreadable
+from pipflow.baselines.located import Issue, Unreadable
 from pipflow.baselines.robotplan import RobotStep
 from pipflow.baselines.skills import domain_skills
 from pipflow.baselines import robotplan, smartllm
@@ -320,6 +320,28 @@ def test_an_action_on_a_missing_shelf_or_beyond_the_robots_skill_is_a_failed_act
     assert not judged["success"] and judged["exe"] < 1.0
 
 
+@pytest.mark.parametrize("method", ["cot", "smart-llm"])
+def test_household_actions_beyond_the_robots_skills_or_on_a_missing_place_fail_in_the_home(method):
+    """hx-01 with the lifters-handler team, planned wrongly: a lifter opens the fridge (it has
+    no open skill), one lifter carries the 2-unit watermelon, the handler puts the mug on a
+    balcony the home lacks. The home simulator refuses each; the run finishes, Exe < 1."""
+    gold = [Gold("a1", "open", ["fridge"], ["robot4"]),
+            Gold("a2", "store", ["watermelon", "diningtable", "fridge"], ["robot5"], ["a1"]),
+            Gold("a3", "store", ["mug", "diningtable", "balcony"], ["robot6"])]
+    team = select_team(load_home(HOME), "lifters-handler")
+    command = "Put the watermelon in the fridge."
+    with FakeOpenAI(responder({command: answers_for(gold, team, problems={})})) as server:
+        result = run(f"household-{method}", server, command=command, team="lifters-handler")
+    assert result.status == "succeeded", result.error
+    reasons = {f["args"][0]: " ".join(f["reasons"]) for f in result.outputs["simulation"]["failures"]}
+    assert "open: needs 1, the coalition has 0" in reasons["fridge"]
+    assert "pickup: needs 2, the coalition has 1" in reasons["watermelon"]
+    assert "'balcony' is not in this world" in reasons["mug"]
+    assert result.outputs["exe"] == 0.0 and result.outputs["unexecutable"] == 1
+    task = {"team": "lifters-handler", "goal": {"in": {"fridge": ["watermelon"]}, "state": {"fridge": ["closed"]}}}
+    assert not score(HOME, task, result.outputs)["success"]
+
+
 # ---------------------------------------------------------------------------------------------
 # LaMMA-P: one validator round, with the debugger's located messages
 # ---------------------------------------------------------------------------------------------
@@ -450,3 +472,35 @@ def test_lamma_p_merge_waits_through_a_subtask_that_got_no_actions():
              3: [RobotStep("a2", "close", ["fridge"], ["r3"]), RobotStep("a3", "open", ["fridge"], ["r3"], ["a2"])]}
     merged = merge_in_time(subtasks, plans)
     assert [(s.id, s.after) for s in merged] == [("a1", []), ("a2", ["a1"]), ("a3", ["a2"])]
+
+
+def test_a_refusal_says_when_the_answer_was_cut_off_at_its_token_limit():
+    error = Unreadable([Issue(3, 1, "expected ':' after the robots")])
+    assert "cut off at the 512 tokens it may take (raise -i max_tokens)" in str(error.refusal("cot", "a plan", 512))
+    assert "cut off" not in str(error.refusal("cot", "a plan"))
+
+
+def test_the_schedule_records_an_action_the_world_cannot_place_as_refused_taking_no_time_and_no_travel():
+    """A robot plan of three moves, the middle one from a shelf the world lacks: the schedule
+    keeps it (refused, at the moment its predecessor ends, nobody drives for it), the move after
+    it waits for it, and the simulation counts it as planned and failed."""
+    from pipflow.baselines.robotplan import schedule_input
+    from pipflow.steps.world import simulate
+    from pipflow.engine.step import StepContext
+    from pipflow.team.scheduling import build_schedule
+
+    steps = [RobotStep("a1", "move-product", ["shelf1", "shelf3", "product1", "magnitude2"], ["robot4"]),
+             RobotStep("a2", "move-product", ["shelf9", "shelf3", "product1", "magnitude1"], ["robot5"], ["a1"]),
+             RobotStep("a3", "move-product", ["shelf2", "shelf4", "product2", "magnitude1"], ["robot5"], ["a2"])]
+    domain = (REPO / "domains" / "warehouse.pddl").read_text()
+    metadata = yaml.safe_load((REPO / "domains" / "warehouse.actions.yaml").read_text())
+    got = schedule_input(steps, WORLD, domain, metadata, "cot")
+    assert got["unexecutable"] == 1 and got["graph"]["edges"] == [["a1", "a2"], ["a2", "a3"]]
+    schedule = build_schedule(got["graph"], got["allocation"], WORLD)
+    first, refused, last = schedule["subtasks"]
+    assert refused["refused"] and "'shelf9' is not in this world" in refused["refused"][0]
+    assert refused["start"] == refused["end"] == first["end"] and last["ready"] == refused["end"]
+    assert all(leg["subtask"] != "a2" for leg in schedule["robots"]["robot5"]["legs"])
+    out = simulate.func(StepContext("simulate", Path("sim"), Path(".")), world=WORLD, schedule=schedule, graph=got["graph"])
+    assert (out["executed"], out["failed"]) == (2, 1) and out["exe"] == pytest.approx(2 / 3)
+    assert [f["subtask"] for f in out["failures"]] == ["a2"]

@@ -41,11 +41,14 @@ class Unreadable(ValueError):
             shown.append(f"... and {len(self.issues) - MAX_LISTED} more problems")
         return shown
 
-    def refusal(self, method: str, what: str) -> AnswerFormatError:
-        """The run's error when the method gives no further round: the answer is not read."""
+    def refusal(self, method: str, what: str, cut_off: int | None = None) -> AnswerFormatError:
+        """The run's error when the method gives no further round: the answer is not read.
+        ``cut_off``: the answer stopped at this many tokens (its ``max_tokens``), which is said."""
         n = len(self.issues)
+        cut = (f" The answer was cut off at the {cut_off} tokens it may take (raise -i max_tokens)."
+               if cut_off else "")
         return AnswerFormatError(f"the {method} answer is not {what} ({n} problem{'s' if n != 1 else ''}; "
-                                 f"{method} gives the model no further round, so nothing is executed):\n  "
+                                 f"{method} gives the model no further round, so nothing is executed):{cut}\n  "
                                  + "\n  ".join(self.lines()))
 
 

@@ -97,13 +97,15 @@ class _Thread:
 
 def code_of(text: str) -> str:
     """The code of an answer, line numbers kept: inside code fences when the answer has any
-    (prose and fence lines blanked), else the whole answer."""
+    (prose and fence lines blanked; a block left open runs to the end), else the whole answer."""
     fences = list(FENCE.finditer(text))
-    if len(fences) < 2:
+    if not fences:
         return text
     lines = text.split("\n")
     keep = [False] * len(lines)
     fence_lines = [text.count("\n", 0, m.start()) for m in fences]
+    if len(fence_lines) % 2:  # the last block never closed (an answer cut off): it runs to the end
+        fence_lines.append(len(lines))
     for open_, close in zip(fence_lines[0::2], fence_lines[1::2]):
         for k in range(open_ + 1, close):
             keep[k] = True
