@@ -8,28 +8,23 @@ and allocation that ``schedule``, ``simulate`` and ``score`` judge as they judge
 UP, lark and litellm are imported where they are used, below these functions."""
 from __future__ import annotations
 
-import re
 from typing import Annotated, Any
+
+import yaml
 
 from pipflow import Check, Choices, Doc, PathStr, StepContext, step
 from pipflow.baselines.cot import read_cot
-from pipflow.baselines.lammap import (merge_in_time, read_summary, robot_actions, sub_plan_steps,
-                                      subtasks_from_data)
+from pipflow.baselines.lammap import read_summary, subtasks_from_data
 from pipflow.baselines.located import Unreadable
 from pipflow.baselines.robotplan import schedule_input, steps_from_data
 from pipflow.baselines.skills import domain_skills
 from pipflow.baselines.smartllm import read_smart_llm
-from pipflow.errors import InputError, PDDLError
+from pipflow.baselines.subplans import plan_subtasks, robot_level
+from pipflow.errors import InputError
 from pipflow.language.asking import ask, needs_model
 from pipflow.language.llm import sum_usage
-from pipflow.language.parsing import ParseIssue, extract_problem
 from pipflow.language.prompting import prompt_problem, render
-from pipflow.liberrors import UNIFIED_PLANNING, library_errors
-from pipflow.pddl.common import parse
-from pipflow.pddl.debugger import debug_problem, unclosed_section
-from pipflow.pddl.names import plan_in_world_names
-from pipflow.pddl.textpos import find_word
-from pipflow.pddl.solver import check_engine, solve_problem
+from pipflow.pddl.solver import check_engine
 from pipflow.yamlsource import read_source, safe_load
 
 #: the baselines, by the names their workflows and bench rows use
@@ -51,8 +46,6 @@ def _yaml(ctx: StepContext, value: Any, what: str) -> dict:
     if isinstance(value, dict):
         return value
     file = ctx.resolve_path(value)
-    import yaml  # deferred: pulls PyYAML's loader (only metadata files need it)
-
     try:
         return safe_load(read_source(file, what)) or {}
     except yaml.YAMLError as exc:
@@ -267,93 +260,33 @@ def subplans(
     cache: Annotated[bool, Doc("replay cached responses; false always calls the model")] = True,
 ) -> dict:
     """``subtasks``: per subtask its problem, the validator's messages, the planner's outcome and
-    how many actions it got; a subtask whose problem never parses, or has no plan, gets none."""
+    how many actions it got (:func:`pipflow.baselines.subplans.plan_subtasks`)."""
     resolved = needs_model(model, "the lamma-p baseline")
     if rounds < 0:
         raise InputError(f"rounds must be 0 or more, got {rounds}")
     check_engine(planner)
     domain_text = _text(ctx, domain, "domain file")
-    robot_text = _text(ctx, robot_domain, "robot-level domain file")
-    mapping = robot_actions(_yaml(ctx, robot_actions_file, "robot-level actions file"), robot_text, domain_text)
-    with library_errors(UNIFIED_PLANNING, PDDLError, "reading the robot-level domain"):
-        robot_level = parse(robot_text, None)
-    params_of = {a.name: ["?" + p.name for p in a.parameters] for a in robot_level.actions}
-    robot_types = {getattr(p.type, "name", str(p.type)) for a in robot_level.actions for p in a.parameters
-                   if "?" + p.name in mapping[a.name].robots}  # what a robot is in this domain
-    items = subtasks_from_data(subtasks)
+    level = robot_level(_text(ctx, robot_domain, "robot-level domain file"),
+                        _yaml(ctx, robot_actions_file, "robot-level actions file"), domain_text)
     base = {"command": command, "world": world, "method": "lamma-p", "domain": domain_text,
             "skills": _skill_data(domain_text), "team": _team(world), "answers": dict(answers or {}),
-            "robot_domain": robot_text, "subtasks": subtasks}
-    settings = dict(model=resolved, api_base=api_base, temperature=temperature, max_tokens=max_tokens,
-                    timeout=timeout, retries=retries, deadline=deadline, cache=cache)
-    usages, report, sub_plans, next_id = [], [], {}, 1
-    for sub in items:
-        if sub.issues:  # the summary could not say what it is (baseline.summary): nothing to plan
-            report.append({"subtask": sub.number, "robots": sub.robots, "problem": None, "validator": [],
-                           "status": "skipped", "actions": 0, "message": "; ".join(sub.issues)})
-            continue
-        tag = f"subtask{sub.number}"
-        variables = {**base, "stage": "problem", "subtask": sub.data(), "previous": "", "feedback": []}
-        text, usage, _ = _ask(ctx, name=f"{tag}.problem", prompt=prompt, variables=variables, **settings)
+            "robot_domain": level.text, "subtasks": subtasks}
+    usages: list[dict] = []
+
+    def ask_model(stage: str, name: str, variables: dict) -> str:
+        text, usage, _ = _ask(ctx, name=name, prompt=prompt, variables={**base, **variables, "stage": stage},
+                              model=resolved, api_base=api_base, temperature=temperature, max_tokens=max_tokens,
+                              timeout=timeout, retries=retries, deadline=deadline, cache=cache)
         usages.append(usage)
-        problem, shown, messages = _checked_problem(text, robot_text, sub, robot_types)
-        history = [messages] if messages else []
-        for _ in range(rounds if messages else 0):  # the validator: the debugger's messages, once
-            variables = {**variables, "stage": "validate", "previous": shown, "feedback": messages}
-            text, usage, _ = _ask(ctx, name=f"{tag}.validate", prompt=prompt, variables=variables, **settings)
-            usages.append(usage)
-            problem, shown, messages = _checked_problem(text, robot_text, sub, robot_types)
-            if messages:
-                history.append(messages)
-            else:
-                break
-        entry: dict[str, Any] = {"subtask": sub.number, "robots": sub.robots, "problem": problem,
-                                 "validator": history, "status": "not planned", "actions": 0}
-        if problem and not messages:
-            ctx.write_artifact(f"{tag}.pddl", problem)
-            result = solve_problem(parse(robot_text, problem), planner, planner_params, planner_timeout)
-            entry["status"], entry["message"] = str(result.status), result.message
-            if result.plan is not None:
-                plan = plan_in_world_names(result.plan, world) or []
-                steps = sub_plan_steps(plan, mapping, sub, next_id, params_of)
-                next_id += len(steps)
-                sub_plans[sub.number] = steps
-                entry["actions"] = len(steps)
-        else:
-            entry["message"] = "; ".join(messages) or "no problem"
-        ctx.log(f"subtask {sub.number} ({', '.join(sub.robots)}): {entry['status']}, {entry['actions']} actions"
-                + (f" ({entry['message']})" if entry["status"] != "solved" else ""))
-        report.append(entry)
-    plan = [s.data() for s in merge_in_time(items, sub_plans)]
+        return text
+
+    steps, report = plan_subtasks(subtasks_from_data(subtasks), level, world, ask_model, rounds=rounds,
+                                  planner=planner, planner_params=planner_params, planner_timeout=planner_timeout,
+                                  save=ctx.write_artifact, log=ctx.log)
+    plan = [st.data() for st in steps]
     ctx.write_artifact("plan.json", plan)
     ctx.write_artifact("subtasks.json", report)
     return {"plan": plan, "subtasks": report, "usage": _usage(ctx, usages)}
-
-
-def _checked_problem(text: str, robot_domain_text: str, subtask: Any,
-                     robot_types: set[str]) -> tuple[str | None, str, list[str]]:
-    """The problem in an answer (None if it has none), the text to show the validator (the
-    problem, or the answer from its last ``(define``), and the debugger's messages ([] when the
-    problem parses and names only the subtask's robots): located as the debugger locates them, an
-    unclosed section by where it opened. A robot the summary did not assign is a message too:
-    LaMMA-P writes each problem in its robot's own domain, where no other robot exists."""
-    try:
-        problem = extract_problem(text)
-    except ParseIssue as issue:
-        starts = [m.start() for m in re.finditer(r"\(\s*define\b", text, re.IGNORECASE)]
-        body = text[starts[-1]:].split("```", 1)[0].strip() if starts else text.strip()
-        hint = unclosed_section(body) if starts else ""
-        return None, body, [str(issue) + (f" Counting lines from `(define`: {hint}" if hint else "")]
-    report = debug_problem(problem, robot_domain_text, None)
-    messages = list(report.messages)
-    if report.problem is not None:
-        assigned = {r.lower() for r in subtask.robots}
-        for obj in report.problem.all_objects:
-            if getattr(obj.type, "name", "") in robot_types and obj.name.lower() not in assigned:
-                messages.append(f"{find_word(problem, obj.name)}the problem declares the robot {obj.name}, which the "
-                                f"summary did not assign to SubTask {subtask.number} (its robots: "
-                                f"{', '.join(subtask.robots)})")
-    return problem, problem, messages
 
 
 @step("baseline.graph",

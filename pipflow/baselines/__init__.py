@@ -13,7 +13,8 @@ a baseline exactly like PIP-LLM.
 
 Modules: ``located`` (located reader issues), ``skills`` (a PDDL domain's actions as the skills
 a model may call), ``robotplan`` (the robot plan and its conversion), one reader per format:
-``cot``, ``smartllm``, ``lammap`` (its summary, its per-robot problems and their merge in time).
+``cot``, ``smartllm``, ``lammap`` (LaMMA-P's summary, its robot-level actions, the merge in time) and
+``subplans`` (LaMMA-P's per-robot problems: asked, validated once, solved).
 Generic code: a domain's words live in its prompts and robot-level PDDL domains (``prompts/``,
 ``domains/``), never here.
 """
