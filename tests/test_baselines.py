@@ -190,7 +190,7 @@ def test_a_cot_answer_outside_its_format_ends_the_run_with_every_problem_located
         assert len(server.requests) == 1  # CoT has no feedback round
     assert result.status == "failed"
     assert "line 4, column 11: expected ',' between robots or ':' after the robots, found '('" in result.error
-    assert "line 5, column 1: step 4 follows step 1: expected step 1 or 2" in result.error
+    assert "line 5, column 1: step 4 follows step 2: expected step 2 or 3" in result.error
     assert "line 6, column 13: 'fly' is not an action of the domain" in result.error
     assert (result.record / "steps" / "read" / "artifacts" / "issues.txt").is_file()
     assert not (result.record / "steps" / "schedule").exists()  # nothing planned, nothing executed
@@ -504,3 +504,15 @@ def test_the_schedule_records_an_action_the_world_cannot_place_as_refused_taking
     out = simulate.func(StepContext("simulate", Path("sim"), Path(".")), world=WORLD, schedule=schedule, graph=got["graph"])
     assert (out["executed"], out["failed"]) == (2, 1) and out["exe"] == pytest.approx(2 / 3)
     assert [f["subtask"] for f in out["failures"]] == ["a2"]
+
+
+def test_cot_takes_a_line_that_ends_with_plan_as_the_marker_and_counts_a_broken_lines_step():
+    """What SmolLM2 writes: "Here is the PLAN:", then lines of which some break the format. The
+    broken lines are each said once; their step numbers still count, so the lines after them are
+    not also blamed for the numbering."""
+    answer = ("Here is the PLAN:\n1. robot4: (move-product shelf1 shelf3 product1 magnitude2)\n"
+              "2. robot5: (carry 1 shelf1)\n3. robot6: (move-product shelf1 shelf3 product1 magnitude1)\n")
+    with pytest.raises(Unreadable) as bad:
+        read_cot(answer, WAREHOUSE_SKILLS)
+    assert [str(i) for i in bad.value.issues] == [
+        "line 3, column 19: expected ')' or a name, found '1'; a plan line is `N. ROBOT, ROBOT: (ACTION ARG ...)`"]

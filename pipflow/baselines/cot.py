@@ -44,10 +44,12 @@ NAME: /[A-Za-z_][A-Za-z0-9_\-]*/
 EXPECTED = {"INT": "a step number", "DOT": "'.' after the step number", "COLON": "':' after the robots",
             "NAME": "a name", "LPAR": "'(' before the action", "RPAR": "')'", "COMMA": "',' between robots",
             "$END": "the end of the line"}
-#: the line that opens the plan, and the one that may close it (markdown emphasis allowed around)
-MARK = re.compile(r"^[ \t#*]*PLAN[ \t*]*:[ \t*]*$", re.IGNORECASE | re.MULTILINE)
+#: the line that opens the plan (it ends with the word PLAN and a colon: "PLAN:", "Here is the plan:"),
+#: and the one that may close it (markdown emphasis allowed around)
+MARK = re.compile(r"^[^\n]*\bPLAN[ \t*]*:[ \t*]*$", re.IGNORECASE | re.MULTILINE)
 END = re.compile(r"^[ \t#*]*END[ \t.*]*$", re.IGNORECASE)
 FENCE = re.compile(r"^[ \t]*```")
+LEADING_NUMBER = re.compile(r"^[ \t]*(\d+)[ \t]*\.")
 FORM = "`N. ROBOT, ROBOT: (ACTION ARG ...)`"
 
 
@@ -106,6 +108,9 @@ def read_cot(text: str, skills: list[Skill]) -> list[RobotStep]:
             tree = _parser().parse(line)
         except UnexpectedInput as exc:
             issues.append(_line_issue(exc, line_no, line))
+            number = LEADING_NUMBER.match(line)  # its step still counts, so the numbering check does not
+            if number:                            # repeat the problem on the lines after it
+                rows.append((line_no, 0, int(number.group(1)), [], "", []))
             continue
         number, robots_tree, action_tree = tree.children
         names = [str(t) for t in action_tree.children]
@@ -122,10 +127,14 @@ def read_cot(text: str, skills: list[Skill]) -> list[RobotStep]:
                                              f"{snippet(line.strip())}"))
             continue
         rows.append((line_no, number.column, int(number), [str(r) for r in robots_tree.children], skill.action, args))
-    if not rows and not issues:
+    rows_read = [r for r in rows if r[4]]
+    if not rows_read and not issues:
         issues.append(Issue(first_line, 1, f"the plan after `PLAN:` has no step: write one action per line as {FORM}"))
     previous = 0
-    for line_no, column, n, *_ in rows:
+    for line_no, column, n, _, action, _ in rows:
+        if not action:  # a line whose problem is said already: only its number counts
+            previous = max(previous, n)
+            continue
         if n not in (previous, previous + 1) or n == 0:
             want = "1" if previous == 0 else f"{previous} or {previous + 1}"
             issues.append(Issue(line_no, column, f"step {n} follows step {previous or 'nothing'}: expected step {want} "
@@ -136,7 +145,7 @@ def read_cot(text: str, skills: list[Skill]) -> list[RobotStep]:
         raise Unreadable(issues)
     steps: list[RobotStep] = []
     by_step: dict[int, list[str]] = {}
-    for k, (line_no, _, n, robots, action, args) in enumerate(rows, 1):
+    for k, (line_no, _, n, robots, action, args) in enumerate(rows_read, 1):
         sid = f"a{k}"
         steps.append(RobotStep(sid, action, args, robots, list(by_step.get(n - 1, [])), f"line {line_no}"))
         by_step.setdefault(n, []).append(sid)
