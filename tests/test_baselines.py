@@ -97,7 +97,7 @@ def test_the_comparison_runs_by_method_name_and_every_baseline_succeeds_on_the_t
     each method by its name (the warehouse's workflows of those names), each run through the
     same simulation and scoring; with right answers every method succeeds on every task, with
     every action executed, and the rows say which method ran (no refinement loop for a
-    baseline, the model as reader)."""
+    baseline, the model as reader; understanding not measured, since a baseline writes no goal)."""
     with FakeOpenAI(responder(paper_answers)) as server:
         results = run_bench(BenchConfig(tasks_file=WAREHOUSE_TASKS, seeds=1, jobs=2, out=tmp_path / "b", use_cache=False,
                                         matrix={"workflow": ["pip-llm", *METHODS]},
@@ -109,6 +109,8 @@ def test_the_comparison_runs_by_method_name_and_every_baseline_succeeds_on_the_t
     rows = json.loads((tmp_path / "b" / "runs.json").read_text())
     assert {(r["variant"], r["loop"], r["reader"]) for r in rows if r["variant"] != "workflow=pip-llm"} == \
         {(f"workflow={m}", "none", "model") for m in METHODS}
+    # a baseline writes no goal: whether it read the command right is not measured (PIP-LLM's goal is)
+    assert {(r["variant"] == "workflow=pip-llm", r["understood"]) for r in rows} == {(True, True), (False, None)}
 
 
 HOUSEHOLD = {  # one task of each category (benchmarks/household/tasks.yaml), a right plan for each

@@ -69,11 +69,26 @@ def run_one(spec: RunSpec) -> dict:
         recorded_outputs(Path(row["run_dir"]), ("goal", "constraints", "loop", "reader"))
     # which refinement loop ran (pip-llm, checked) and whose reading the goal was (offline, model)
     row["loop"], row["reader"] = read.get("loop"), read.get("reader")
-    judged = domain.understand(task, read, row["status"], row.get("error_kind"))
+    if row.get("run_dir") and not writes_goal(Path(row["run_dir"])):  # a baseline: it plans without a goal
+        judged = {"understood": None, "misread": None, "understanding": "not measured: the workflow writes no goal"}
+    else:
+        judged = domain.understand(task, read, row["status"], row.get("error_kind"))
     row.update(judged if judged is not None else
                {"understood": None, "misread": None, "understanding": "not measured for this domain"})
     row["seconds"] = round(time.perf_counter() - started, 3)
     return row
+
+
+def writes_goal(run_dir: Path) -> bool:
+    """Whether the run's workflow has an output ``goal`` (its own snapshot says): a method that
+    plans without stating a goal (the paper's baselines) reads no command into one, so whether
+    it read the command right is not measured. True when the snapshot cannot be read."""
+    try:
+        snapshot = yaml.safe_load((run_dir / "workflow.yaml").read_text(encoding="utf-8")) or {}
+    except (OSError, ValueError, yaml.YAMLError):
+        return True
+    outputs = snapshot.get("outputs") if isinstance(snapshot, dict) else None
+    return not isinstance(outputs, dict) or "goal" in outputs
 
 
 def recorded_outputs(run_dir: Path, names: tuple[str, ...]) -> dict:
