@@ -6,10 +6,10 @@ writes the plan, robots included, with no planner, no allocator and no feedback.
 action per line, until a line ``END`` (or the end of the answer)::
 
     PLAN:
-    1. robot6: (open fridge)
-    2. robot4, robot5: (store pumpkin countertop fridge)
-    2. robot2: (switch-off floorlamp floorlamp)
-    3. robot6: (close fridge)
+    1. r6: (open gate)
+    2. r4, r5: (carry crate dock bay)
+    2. r2: (switch-off light light)
+    3. r6: (close gate)
     END
 
 ``N.`` is the step, then the robots that do the action, then the action of the team-level PDDL

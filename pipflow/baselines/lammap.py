@@ -11,9 +11,9 @@ pipflow's version (``workflows/lamma-p.yaml``, ``household-lamma-p.yaml``):
 
 * the summary is read by :func:`read_summary`, one block per subtask::
 
-      SubTask 2: put the pumpkin in the fridge
-      Assigned Robot: robot4, robot5
-      Objects Involved: pumpkin, countertop, fridge
+      SubTask 2: carry the crate to the bay
+      Assigned Robot: r4, r5
+      Objects Involved: crate, dock, bay
       After: 1
 
   ``After`` is the sequence of operations, per subtask (``none``: it may start at once); lines

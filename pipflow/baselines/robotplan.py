@@ -1,8 +1,8 @@
 """The robot plan: what every baseline's reader produces, and its conversion into the dependency
 graph and allocation that the ``schedule`` step times (docs/architecture.md, "Data between steps").
 
-A robot plan is a list of :class:`RobotStep`: one team-level action of the domain (``store apple
-countertop fridge``), the robots the model gave it, and the steps it must wait for (the order the
+A robot plan is a list of :class:`RobotStep`: one team-level action of the domain (``carry crate
+dock bay``), the robots the model gave it, and the steps it must wait for (the order the
 baseline's format gives: CoT's step numbers, SMART-LLM's sequential calls and thread joins,
 LaMMA-P's sub-plans merged in time). PIP-LLM derives its order from the plan's read/write sets and
 its robots from an IP; a baseline's plan brings both, and :func:`schedule_input` keeps them as the

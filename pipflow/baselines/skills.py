@@ -1,9 +1,8 @@
 """A team-level PDDL domain's actions as the skills a baseline's model may call.
 
-The baselines plan with the actions of the domain PIP-LLM plans with (store, open, move-product,
-...), each done by robots the model names. Their papers call such actions skills: SMART-LLM
-writes them as Python-like calls (``SwitchOff(robots[0], 'lamp')``), CoT and LaMMA-P as PDDL
-actions. One vocabulary for all three, read from the domain itself (UP), so a plugin's domain
+The baselines plan with the actions of the team-level domain PIP-LLM plans with, each done by
+robots the model names. Their papers call such actions skills: SMART-LLM writes them as
+Python-like calls (``SwitchOff(robots[0], 'light', 'light')``), CoT and LaMMA-P as PDDL actions. One vocabulary for all three, read from the domain itself (UP), so a plugin's domain
 gives its baselines their skills with no code.
 """
 from __future__ import annotations
@@ -27,16 +26,16 @@ class Skill:
     types: tuple[str, ...]
 
     def signature(self) -> str:
-        """``Store(robots, i, from, to)``: how the prompt shows it as a call."""
+        """``Carry(robots, i, from, to)``: how the prompt shows it as a call."""
         return f"{self.call}(robots, {', '.join(self.params)})" if self.params else f"{self.call}(robots)"
 
     def pddl(self) -> str:
-        """``(store ?i ?from ?to)``: how the prompt shows it as a PDDL action."""
+        """``(carry ?i ?from ?to)``: how the prompt shows it as a PDDL action."""
         return f"({' '.join([self.action] + ['?' + p for p in self.params])})"
 
 
 def call_name(action: str) -> str:
-    """``move-product`` -> ``MoveProduct``: a PDDL action name as a Python-like call name."""
+    """``switch-off`` -> ``SwitchOff``: a PDDL action name as a Python-like call name."""
     return "".join(part[:1].upper() + part[1:] for part in re.split(r"[-_]+", action) if part)
 
 

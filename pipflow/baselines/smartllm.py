@@ -6,14 +6,14 @@ form coalitions and allocate them (prose), and to write the allocated plan as Py
 subtask a function whose skill calls name the robots (``robot_list[0]``, or the whole
 ``robot_list`` for a team), run one after another by plain calls or side by side by threads::
 
-    def put_pumpkin_away(robot_list):
-        Store(robot_list, 'pumpkin', 'countertop', 'fridge')
+    def carry_crate(robot_list):
+        Carry(robot_list, 'crate', 'dock', 'bay')
 
-    def switch_off_lamp(robot_list):
-        SwitchOff(robot_list[0], 'floorlamp', 'floorlamp')
+    def switch_off_light(robot_list):
+        SwitchOff(robot_list[0], 'light', 'light')
 
-    task1_thread = threading.Thread(target=put_pumpkin_away, args=([robots[0], robots[1]],))
-    task2_thread = threading.Thread(target=switch_off_lamp, args=([robots[2]],))
+    task1_thread = threading.Thread(target=carry_crate, args=([robots[0], robots[1]],))
+    task2_thread = threading.Thread(target=switch_off_light, args=([robots[2]],))
     task1_thread.start()
     task2_thread.start()
     task1_thread.join()
