@@ -16,6 +16,7 @@ else that escapes is a bug in pipflow and is shown with its traceback.
     │   ├── PlanningError                      planner could not solve (time-out, engine error)
     │   ├── AllocationError                    no feasible coalition for a subtask
     │   ├── LLMError                           provider call failed after retries
+    │   ├── AnswerFormatError                  a model's answer is not in the form its method reads
     │   └── TranslationError                   the offline translator cannot resolve the command
     └── Refusal                       exit 3   the command is infeasible; the reason is the message
 
@@ -123,6 +124,12 @@ class AllocationError(StepError):
 
 class LLMError(StepError):
     """A language-model call failed after its retries."""
+
+
+class AnswerFormatError(StepError):
+    """A model's answer is not in the form its method reads (a baseline's plan, code or summary),
+    and the method gives it no further round; the message says where (line and column) and why.
+    Not the user's error: the model wrote it."""
 
 
 class TranslationError(StepError):

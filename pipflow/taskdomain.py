@@ -98,6 +98,32 @@ def simulation_outputs(result: Mapping[str, Any]) -> dict:
     return outputs
 
 
+def split_refused(schedule: Mapping[str, Any]) -> tuple[dict, list[dict]]:
+    """The schedule a domain's simulation runs (without its refused subtasks) and the refused
+    ones: actions of a plan that cannot be placed in the world (a place or object the world
+    lacks, a robot that does not exist; :meth:`pipflow.team.scheduling.Timeline.refuse`). No
+    domain's simulation has to know them: :func:`count_refused` adds them to its result."""
+    subtasks = list(schedule.get("subtasks") or [])
+    refused = [s for s in subtasks if s.get("refused")]
+    if not refused:
+        return dict(schedule), []
+    return {**schedule, "subtasks": [s for s in subtasks if not s.get("refused")]}, refused
+
+
+def count_refused(result: dict, refused: list[dict], planned: int) -> dict:
+    """A simulation's result with the refused subtasks (:func:`split_refused`) counted: each is
+    planned and failed, with its reasons among ``failures``, and Exe is executed over every
+    planned action (``planned``, the whole schedule's subtasks)."""
+    if not refused:
+        return result
+    failures = list(result.get("failures") or []) + [
+        {"subtask": s["id"], "action": s.get("action"), "args": list(s.get("args") or []),
+         "time": round(float(s.get("start", 0.0)), 3), "reasons": list(s["refused"])} for s in refused]
+    executed = int(result.get("executed", 0))
+    return {**result, "failed": int(result.get("failed", 0)) + len(refused), "failures": failures,
+            "exe": executed / planned if planned else 1.0}
+
+
 def flat_simulation(simulation: Mapping[str, Any] | None) -> dict | None:
     """A simulation as one flat mapping, from the generic step's shape (``details`` nested) or a
     domain step's (flat): what a domain's scoring reads. None stays None (no simulation ran)."""

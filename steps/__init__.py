@@ -20,5 +20,6 @@ GENERIC_STEP_MODULES = [
     "pipflow.steps.improve",
     "pipflow.steps.schedule",
     "pipflow.steps.llm",
+    "pipflow.steps.baselines",
 ]
 STEP_MODULES = GENERIC_STEP_MODULES + own_domain_step_modules()

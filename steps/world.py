@@ -8,7 +8,8 @@ from typing import Annotated
 
 from pipflow import Doc, PathStr, StepContext, step
 from pipflow.errors import InputError
-from pipflow.taskdomain import SCORE_CORE, SIMULATION_CORE, report_score, simulation_outputs
+from pipflow.taskdomain import (SCORE_CORE, SIMULATION_CORE, count_refused, report_score, simulation_outputs,
+                                split_refused)
 from pipflow.taskdomains import declared_domain, task_domain
 
 
@@ -55,16 +56,22 @@ def simulate(
                                         "{picture: true, animation: true}: a path map, a GIF")] = None,
 ) -> dict:
     """The step's artifact folder is where a domain draws, when ``snapshots`` or its own options
-    ask; the trajectories and event logs it keeps are artifacts too, not outputs."""
+    ask; the trajectories and event logs it keeps are artifacts too, not outputs. Subtasks the
+    schedule holds as ``refused`` (a plan's actions this world cannot place) are not handed to the
+    domain: they count as planned and failed (:func:`pipflow.taskdomain.count_refused`)."""
     domain = task_domain(world)
     unknown = sorted(set(options or {}) - set(domain.simulate_options))
     if unknown:
         raise InputError(f"simulate: options {', '.join(map(repr, unknown))} are not switches of the "
                          f"{domain.name!r} simulation (known: {', '.join(domain.simulate_options) or 'none'})")
     out_dir = ctx.artifact_path("pictures").parent
-    result = domain.simulate(world, schedule, graph, goal, snapshots=snapshots, out_dir=out_dir,
+    runnable, refused = split_refused(schedule)  # a plan's actions the world cannot place: failed, counted here
+    for s in refused:
+        ctx.log(f"execute: {s['id']} {s.get('action')} {' '.join(map(str, s.get('args') or []))} refused: "
+                f"{'; '.join(s['refused'])}")
+    result = domain.simulate(world, runnable, graph, goal, snapshots=snapshots, out_dir=out_dir,
                              log=ctx.log, save=ctx.write_artifact, **(options or {}))
-    outputs = simulation_outputs(result)
+    outputs = simulation_outputs(count_refused(result, refused, len(schedule.get("subtasks") or [])))
     ctx.metrics.update({k: outputs[k] for k in ("exe", "tc_max", "tc_avg", "tc_avg_team", "gcr")})
     ctx.log(f"executed {outputs['executed']}/{len(schedule.get('subtasks', []))}, goal met: {outputs['goal_met']}"
             f" (GCR {outputs['gcr']:.2f})")

@@ -5,7 +5,8 @@ Each request to ``/v1/chat/completions`` takes the next entry of the script (the
 repeats), or, with ``answer=``, what ``answer(body)`` returns for the request's JSON body (for
 benches whose runs ask in any order): a string is answered as the assistant's message; a dict may instead set ``status``
 (an HTTP error code), ``body`` (raw bytes or text sent as is), ``delay`` (seconds before the
-answer). Every request's JSON body is kept in ``server.requests`` (headers in
+answer). The script may instead be a function of the request's JSON body that returns such an
+entry: runs in parallel (a bench) get answers by what they ask, not by when they ask it. Every request's JSON body is kept in ``server.requests`` (headers in
 ``server.headers``), so tests can count attempts and read the prompts that were sent.
 
     with FakeOpenAI(["(define (problem p) ...)"]) as server:
@@ -18,13 +19,15 @@ import json
 import threading
 import time
 from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
-from typing import Any
+from typing import Any, Callable
 
 
 class FakeOpenAI:
-    def __init__(self, script: list[Any] | None = None, answer: Any = None):
-        self.script = list(script or []) or [""]
-        self.answer = answer
+    def __init__(self, script: list[Any] | Callable[[dict], Any] | None = None,
+                 answer: Callable[[dict], Any] | None = None):
+        # a responder answers by request (``answer=``, or a callable ``script``); else the script in turn
+        self.respond = answer if answer is not None else (script if callable(script) else None)
+        self.script = [] if callable(script) else (list(script or []) or [""])
         self.requests: list[dict] = []
         self.headers: list[dict] = []
         self._lock = threading.Lock()
@@ -48,8 +51,13 @@ class FakeOpenAI:
                     index = len(fake.requests)
                     fake.requests.append(body)
                     fake.headers.append(dict(self.headers))
-                    entry = (fake.answer(body) if fake.answer is not None
-                             else fake.script[min(index, len(fake.script) - 1)])
+                    entry = None if fake.respond else fake.script[min(index, len(fake.script) - 1)]
+                if fake.respond is not None:
+                    try:
+                        entry = fake.respond(body)
+                    except Exception as exc:  # the test's responder failed: say so as a bad request
+                        entry = {"status": 400, "body": json.dumps({"error": {
+                            "message": f"test responder: {type(exc).__name__}: {exc}", "type": "invalid_request_error"}})}
                 if isinstance(entry, str):
                     entry = {"text": entry}
                 if entry.get("delay"):

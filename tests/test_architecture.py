@@ -38,6 +38,7 @@ LAYERS: list[tuple[str, tuple[tuple[str, ...], ...]]] = [
     ("records", (("pipflow.records",),)),
     ("steps", (("pipflow.steps",),)),
     ("task domains", (("pipflow.warehouse",), ("pipflow.household",))),
+    ("baselines", (("pipflow.baselines",),)),
     ("language, pictures", (("pipflow.language",), ("pipflow.pictures",))),
     ("team coordination", (("pipflow.team",),)),
     ("PDDL tools", (("pipflow.pddl",),)),

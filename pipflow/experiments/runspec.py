@@ -71,7 +71,9 @@ def run_one(spec: RunSpec) -> dict:
     # which refinement loop ran (pip-llm, checked) and whose reading the goal was (offline, model)
     row["loop"], row["reader"] = read.get("loop"), read.get("reader")
     row["model"] = _recorded_model(row.get("run_dir"))  # what the paper's tables label a variant with
-    if row["status"] == "succeeded" and "goal" in read and read["goal"] is None:
+    if row.get("run_dir") and not writes_goal(Path(row["run_dir"])):  # a baseline: it plans without a goal
+        judged = {"understood": None, "misread": None, "understanding": "not measured: the workflow writes no goal"}
+    elif row["status"] == "succeeded" and "goal" in read and read["goal"] is None:
         # a workflow whose model states no goal but writes the plan itself (the w/o D ablation):
         # there is no reading to compare with the gold, only the outcome (SR)
         judged = {"understood": None, "misread": None, "understanding": "not measured: the run states no goal"}
@@ -95,6 +97,18 @@ def _recorded_model(run_dir: str | None) -> str | None:
         return None
     model = inputs.get("model") if isinstance(inputs, dict) else None
     return str(model) if model is not None else None
+
+
+def writes_goal(run_dir: Path) -> bool:
+    """Whether the run's workflow has an output ``goal`` (its own snapshot says): a method that
+    plans without stating a goal (the paper's baselines) reads no command into one, so whether
+    it read the command right is not measured. True when the snapshot cannot be read."""
+    try:
+        snapshot = yaml.safe_load((run_dir / "workflow.yaml").read_text(encoding="utf-8")) or {}
+    except (OSError, ValueError, yaml.YAMLError):
+        return True
+    outputs = snapshot.get("outputs") if isinstance(snapshot, dict) else None
+    return not isinstance(outputs, dict) or "goal" in outputs
 
 
 def recorded_outputs(run_dir: Path, names: tuple[str, ...]) -> dict:

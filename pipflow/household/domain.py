@@ -40,7 +40,9 @@ class HouseholdDomain(TaskDomain):
     workflows = {"pip-llm": "household", "pip-llm-checked": "household-checked",
                  # the paper's ablations (Table III) and the w/o B (docs/paper.md, "Ablations")
                  **{f"pip-llm-{name}": f"household-{name}" for name in ("no-domain", "no-debugger", "no-bv", "no-as",
-                                                                        "n1", "n2", "n3", "n4")}}
+                                                                        "n1", "n2", "n3", "n4")},
+                 # the paper's baselines (Sec. V): pipflow/baselines/, docs/paper.md "Baselines"
+                 "cot": "household-cot", "smart-llm": "household-smart-llm", "lamma-p": "household-lamma-p"}
     default_prompt = "household_problem"
     rule_fields = RULE_FIELDS
 

@@ -205,6 +205,26 @@ def _skills(spec: dict, g: GroundAction, problem, where: str) -> dict[str, float
     return out
 
 
+def subtask_node(g: GroundAction, problem, actions_meta: dict, node_id: str, index: int) -> dict:
+    """One node of the ``graph`` contract for grounded action ``g``: its requirement vector Y
+    (``skills``, fluent values read from ``problem``'s initial state), its ``route`` and rule
+    ``fields``, from the action metadata (``{name: {skills, route, fields}}``). Shared by
+    :func:`build_graph` and by plans whose order is given rather than derived (the baselines)."""
+    meta = actions_meta.get(g.name)
+    where = f"action metadata for {g.name!r} (plan step {index + 1})"
+    if meta is None:
+        raise InputError(f"no action metadata for {g.name!r}; known: {', '.join(sorted(actions_meta))}")
+    return {
+        "id": node_id,
+        "index": index,
+        "action": g.name,
+        "args": g.args,
+        "skills": _skills(meta.get("skills", {}), g, problem, where),
+        "route": [_resolve(p, g.binding, where) for p in meta.get("route", [])],
+        "fields": {k: _resolve(v, g.binding, where) for k, v in (meta.get("fields") or {}).items()},
+    }
+
+
 def build_graph(
     domain_text: str,
     problem_text: str,
@@ -224,21 +244,7 @@ def build_graph(
     grounded = ground_plan(problem, plan)
     actions_meta = (metadata or {}).get("actions", metadata or {})
 
-    nodes = []
-    for g in grounded:
-        meta = actions_meta.get(g.name)
-        where = f"action metadata for {g.name!r} (plan step {g.index + 1})"
-        if meta is None:
-            raise InputError(f"no action metadata for {g.name!r}; known: {', '.join(sorted(actions_meta))}")
-        nodes.append({
-            "id": f"s{g.index + 1}",
-            "index": g.index,
-            "action": g.name,
-            "args": g.args,
-            "skills": _skills(meta.get("skills", {}), g, problem, where),
-            "route": [_resolve(p, g.binding, where) for p in meta.get("route", [])],
-            "fields": {k: _resolve(v, g.binding, where) for k, v in (meta.get("fields") or {}).items()},
-        })
+    nodes = [subtask_node(g, problem, actions_meta, f"s{g.index + 1}", g.index) for g in grounded]
 
     dag = nx.DiGraph()
     dag.add_nodes_from(n["id"] for n in nodes)
@@ -346,5 +352,5 @@ def critical_path(graph: dict, duration: dict[str, float]) -> float:
     return max(finish.values(), default=0.0) if finish else 0.0
 
 
-__all__ = ["build_graph", "ground_plan", "interacts", "to_networkx", "to_dot", "draw", "critical_path",
+__all__ = ["build_graph", "subtask_node", "ground_plan", "interacts", "to_networkx", "to_dot", "draw", "critical_path",
            "MODES"]

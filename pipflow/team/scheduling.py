@@ -147,6 +147,24 @@ class Timeline:
         self.records.append(rec)
         return rec
 
+    def refuse(self, node: dict, robots: list[str], preds: Iterable[str]) -> dict:
+        """Record a subtask that cannot be placed in this world (its node says why under
+        ``unexecutable``: an action on a place or object the world lacks, robots that do not
+        exist): it is in the schedule, at the moment its predecessors have ended, under
+        ``refused``, and takes no time; nobody drives. A simulation counts it as planned and not
+        executed (Exe < 1), as the paper's baselines count an action their executor cannot run."""
+        preds = list(preds)
+        missing = [p for p in preds if p not in self.end]
+        if missing:
+            raise InputError(f"subtask {node['id']} is committed before its predecessors {missing}")
+        ready = self.ready(node, preds)
+        self.end[node["id"]] = ready
+        rec = {"id": node["id"], "action": node.get("action"), "args": node.get("args", []),
+               "robots": list(robots), "ready": ready, "start": ready, "end": ready,
+               "refused": [str(r) for r in node["unexecutable"]]}
+        self.records.append(rec)
+        return rec
+
     def result(self) -> dict:
         """The schedule contract of docs/architecture.md."""
         robots = {}
@@ -174,7 +192,9 @@ def build_schedule(graph: dict, allocation: dict, world: dict, speed: float = 1.
                    handling: float = 2.0, travel=None) -> dict:
     """Replay an allocation in its order (Alg. 1) and time it.
 
-    Every subtask must be allocated exactly once, after its predecessors."""
+    Every subtask must be allocated exactly once, after its predecessors. A node marked
+    ``unexecutable`` (a plan's action that names what this world lacks) is recorded as refused
+    (:meth:`Timeline.refuse`) instead of timed."""
     nodes = {n["id"]: n for n in graph["nodes"]}
     preds = predecessors(graph)
     tl = Timeline(world, travel=travel, speed=speed, handling=handling)
@@ -185,6 +205,10 @@ def build_schedule(graph: dict, allocation: dict, world: dict, speed: float = 1.
             raise InputError(f"allocation names unknown subtask {sid!r}")
         if sid in seen:
             raise InputError(f"allocation assigns subtask {sid} twice")
+        if nodes[sid].get("unexecutable"):  # not placeable in this world: recorded, refused, no time
+            seen.add(sid)
+            tl.refuse(nodes[sid], list(a.get("robots", [])), preds[sid])
+            continue
         unknown = [r for r in a.get("robots", []) if r not in tl.free]
         if unknown:
             raise InputError(f"allocation of {sid} names unknown robots {unknown}")

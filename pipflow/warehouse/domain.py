@@ -54,7 +54,9 @@ class WarehouseDomain(TaskDomain):
                  # the paper's ablations (Table III) and the w/o B (docs/paper.md, "Ablations")
                  **{name: name for name in ("pip-llm-no-domain", "pip-llm-no-debugger", "pip-llm-no-bv",
                                             "pip-llm-no-as", "pip-llm-n1", "pip-llm-n2", "pip-llm-n3",
-                                            "pip-llm-n4")}}
+                                            "pip-llm-n4")},
+                 # the paper's baselines (Sec. V): pipflow/baselines/, docs/paper.md "Baselines"
+                 "cot": "cot", "smart-llm": "smart-llm", "lamma-p": "lamma-p"}
     default_prompt = "warehouse_problem"
     rule_fields = ("product", "from", "to")
     grounding = Grounding(gbnf=grounding.gbnf, response_format=grounding.response_format, read=_read_grounded,
