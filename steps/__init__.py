@@ -18,6 +18,7 @@ GENERIC_STEP_MODULES = [
     "pipflow.steps.graph",
     "pipflow.steps.allocate",
     "pipflow.steps.schedule",
+    "pipflow.steps.execute",
     "pipflow.steps.llm",
 ]
 STEP_MODULES = GENERIC_STEP_MODULES + own_domain_step_modules()

@@ -32,7 +32,7 @@ LAYERS: list[tuple[str, tuple[tuple[str, ...], ...]]] = [
     ("records", (("pipflow.records",),)),
     ("steps", (("pipflow.steps",),)),
     ("task domains", (("pipflow.warehouse",), ("pipflow.household",))),
-    ("language, pictures", (("pipflow.language",), ("pipflow.pictures",))),
+    ("language, pictures, execution", (("pipflow.language",), ("pipflow.pictures",), ("pipflow.execution",))),
     ("team coordination", (("pipflow.team",),)),
     ("PDDL tools", (("pipflow.pddl",),)),
     ("neutral helpers", (("pipflow.taskdomain", "pipflow.taskdomains", "pipflow.goalcounts", "pipflow.suggest",
