@@ -238,8 +238,10 @@ class Executor:
         affected = [s for s in now.pending + now.running if anomaly.robot in self._robots_of(s)] if anomaly.robot else []
         needs_plan = bool(now.broken) or anomaly.kind in ("surprise", "refused", "unfinished")
         try:
-            if not now.pending and not now.broken:
-                self._continue(entry, "nothing is left to do but the subtasks under way")
+            if not now.pending and not now.broken:  # they finish from where their robots are, at their pace
+                self.schedule = self._schedule(now.records, now.legs)
+                self._continue(entry, "nothing is left to do but the subtasks under way; their robots finish them "
+                                      "from where they are")
             elif anomaly.kind == "stopped" and not affected and not now.broken:
                 self._continue(entry, f"{anomaly.robot} had no work left")
             elif needs_plan and not now.broken and self._still_fits(now, observed(), nodes):

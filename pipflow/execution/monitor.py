@@ -115,4 +115,5 @@ def first_anomaly(world: dict, faults: list[Fault], planned: dict, actual: dict,
     fresh = [a for a in found if a.time >= after - 1e-9 and a.key not in handled]
     if not fresh:
         return None
-    return min(fresh, key=lambda a: (a.time, ORDER.index(a.kind)))
+    # times within a millisecond are one instant (the simulation reports its events to the ms)
+    return min(fresh, key=lambda a: (round(a.time, 3), ORDER.index(a.kind)))

@@ -20,7 +20,8 @@ from pipflow.execution.motion import clear_of, clip_legs, distance_until
 from pipflow.team.scheduling import Standing
 from pipflow.team.trajectory import ARRIVAL_TOLERANCE, Trajectory
 
-EPS = 1e-6
+#: seconds within which two moments are one (the simulations report their events to the millisecond)
+EPS = 1e-3
 
 
 @dataclass

@@ -485,9 +485,18 @@ class Playback:
                     self._loaded[m.id] = True
                     self.log_events.append({"time": round(et, 3), "subtask": m.id, "event": "load"})
             elif self._loaded.get(m.id):
-                _unload(scene, m, self.out)
+                # a robot that is not at the target (held up on the way) delivers nothing
+                tgt = _access(self.world, m.target)
+                away = [r for r in m.robots if r not in self.out and r in scene.robot_body and tgt is not None
+                        and _dist(scene.robot_xy(r), tgt) > ARRIVAL_TOLERANCE]
+                if away:
+                    self.failures.append({"subtask": m.id, "action": m.action, "args": m.args, "time": round(et, 3),
+                                          "reasons": [f"{', '.join(away)} not at {m.target}: what they carry was not "
+                                                      "delivered"]})
+                    self.log(f"{m.id} not delivered at t={et:.1f}: {', '.join(away)} not at {m.target}")
+                _unload(scene, m, self.out | set(away))
                 self._unloaded.add(m.id)
-                if m.id not in self.interrupted:  # else the units its stopped members carried did not arrive
+                if m.id not in self.interrupted and not away:  # else not all it carried arrived
                     self.executed += 1
                 self.log_events.append({"time": round(et, 3), "subtask": m.id, "event": "unload"})
                 if m.target in scene.occupant:  # an unload changes its target's load only
