@@ -41,7 +41,7 @@ from pipflow.execution.capability import ExecutionCapability, Played
 from pipflow.execution.faults import Fault
 from pipflow.execution.monitor import Anomaly, first_anomaly
 from pipflow.execution.motion import MotionFaults, actual_schedule, clip_legs, drop_site, grown, with_legs
-from pipflow.execution.recovery import Planning, Refused, reallocate, renamed, replan, waits
+from pipflow.execution.recovery import Planning, Refused, cut_off, reallocate, renamed, replan, waits
 from pipflow.execution.standing import Cut, cut
 from pipflow.liberrors import UNIFIED_PLANNING, library_errors
 from pipflow.errors import PlanningError
@@ -259,6 +259,8 @@ class Executor:
                 self._replan(entry, now, known, travel, lost, observed(), k)
         except Refused as err:
             self._refuse(entry, str(err), now, started)
+        except InputError as err:  # no path any more from a robot or between places (a passage walled it off)
+            self._refuse(entry, f"the floor is cut in two: {err}", now, started)
         self._close(entry, started, observed)
 
     def _close(self, entry: dict, started: float, observed: Callable[[], dict] | None) -> None:
@@ -314,8 +316,16 @@ class Executor:
     def _continue(self, entry: dict, why: str) -> None:
         entry.update({"action": "continue", "why": why})
 
+    def _walled_off(self, graph: dict, now: Cut, lost: list[str], travel: Any) -> list[dict]:
+        """With a passage known closed: rules keeping robots off the subtasks they cannot reach."""
+        if not self.known_barriers:
+            return []
+        alive = [r for r in self.records.get("robots", {}) if r not in lost]
+        return cut_off(graph, now.standing, alive, travel)
+
     def _reallocate(self, entry: dict, now: Cut, known: dict, travel: Any, lost: list[str]) -> None:
-        allocation, timeline = reallocate(self.graph, known, now.standing, self.planning, lost, travel)
+        allocation, timeline = reallocate(self.graph, known, now.standing, self.planning, lost, travel,
+                                          self._walled_off(self.graph, now, lost, travel))
         self._merge(now, timeline)
         entry.update({"action": "re-allocate", "reallocated": [a["subtask"] for a in allocation["assignments"]],
                       "allocation": allocation["assignments"]})
@@ -329,7 +339,8 @@ class Executor:
         wait = waits(running, new["nodes"])
         walk = {"mode": new.get("mode"), "nodes": running + new["nodes"], "edges": new["edges"] + wait}
         try:
-            allocation, timeline = reallocate(walk, known, now.standing, self.planning, lost, travel)
+            allocation, timeline = reallocate(walk, known, now.standing, self.planning, lost, travel,
+                                              self._walled_off(walk, now, lost, travel))
         except AllocationError as err:
             raise Refused(f"the new plan needs a coalition the robots still working cannot form: {err}") from None
         kept = set(now.done) | set(now.running)

@@ -66,16 +66,39 @@ def rules_without(constraints: list, lost: list[str]) -> list:
     return list(constraints or []) + ([{"never": sorted(lost), "words": OUT_OF_SERVICE}] if lost else [])
 
 
+def cut_off(graph: dict, standing: Standing, robots: list[str], travel: Any) -> list[dict]:
+    """Rules that keep each robot off the subtasks it can no longer reach (a closed passage walls
+    a part of the floor off): one ``never`` rule per (robot, subtask), matched on the subtask's
+    action and fields. Raises :class:`Refused` for a subtask whose own route is cut in two."""
+    rules: list[dict] = []
+    for node in graph["nodes"]:
+        if node["id"] in standing.ended:
+            continue
+        route = list(node.get("route") or [])
+        try:
+            travel.route_length(route)
+        except InputError as err:
+            raise Refused(f"{node['id']} ({node.get('action')} {' '.join(map(str, node.get('args', [])))}) cannot be "
+                          f"done any more: {err}") from None
+        for r in robots:
+            try:
+                travel.distance(standing.pos.get(r, r), route[0])
+            except InputError:
+                rules.append({"never": [r], "action": node.get("action"), **(node.get("fields") or {}),
+                              "words": f"{r} cannot reach {route[0]}"})
+    return rules
+
+
 def reallocate(graph: dict, world: dict, standing: Standing, planning: Planning, lost: list[str],
-               travel: Any) -> tuple[dict, Any]:
+               travel: Any, extra: list[dict] | None = None) -> tuple[dict, Any]:
     """Allocate every subtask of ``graph`` that ``standing`` does not list as ended, from where
     the team stands (module docstring). Returns the allocation (its contract) and the timeline
     (its records and legs are the new part of the schedule). Raises AllocationError when a
-    subtask finds no coalition among the robots still working."""
+    subtask finds no coalition among the robots still working. ``extra``: more rules (:func:`cut_off`)."""
     if planning.method not in METHODS:
         raise InputError(f"unknown allocation method {planning.method!r}; use one of {', '.join(METHODS)}")
     started = time.perf_counter()
-    walk = AllocationWalk(graph, world, planning.method, rules_without(planning.constraints, lost), None,
+    walk = AllocationWalk(graph, world, planning.method, rules_without(planning.constraints, lost) + list(extra or []), None,
                           travel=travel, speed=planning.speed, handling=planning.handling,
                           time_limit=planning.time_limit, cost=planning.cost, standing=standing)
     if planning.mode == "frontier" and planning.method == "scip":
