@@ -18,9 +18,11 @@ with it:
 A recovery's seconds are the executor's decision: from the moment the monitor reports the
 difference to the new schedule (the run cut, the robots' standing, re-allocation with SCIP or
 re-planning with the planner, the new dependency graph); the simulation passes and the goal's
-feasibility check (a measurement, not part of recovering) are not in them. Each is printed with
-its ratio to the same fault's recovery at the paper's size, measured in this invocation, and the
-load average before and after. Generated worlds come from ``benchmarks/pipeline.py`` (robots on
+feasibility check (a measurement, not part of recovering) are not in them. Both the wall time and
+the CPU time of the run's process are printed (on a shared, loaded machine the wall time says
+more about the neighbours than about the code; the target is judged on CPU time), with the CPU
+time's ratio to the same fault's recovery at the paper's size, measured in this invocation, and
+the load average before and after. Generated worlds come from ``benchmarks/pipeline.py`` (robots on
 free aisle cells, 8 x 2 m shelves; with more than six shelves the command empties six of them).
 """
 from __future__ import annotations
@@ -124,9 +126,10 @@ def main() -> int:
             results[label] = measure(label, world_path, command, faults, work / "runs")
     print(f"\nrecovery seconds (the executor's decision; target under {TARGET_S:g} s at 1,000 robots), "
           "ratio to the paper-sized run's same fault:")
-    print(f"{'size':>12} {'fault':>16} {'action':>12} {'seconds':>8} {'ratio':>6} {'goal met':>8} {'run (s)':>8} {'load':>11}")
+    print(f"{'size':>12} {'fault':>16} {'action':>12} {'seconds':>8} {'CPU s':>7} {'ratio':>6} {'goal met':>8} "
+          f"{'run (s)':>8} {'load':>11}")
     paper = results.get("paper", {}).get("faults", {})
-    worst = 0.0
+    worst = worst_wall = 0.0
     for label, res in results.items():
         for fault in faults:
             f = res["faults"].get(fault)
@@ -134,18 +137,20 @@ def main() -> int:
                 print(f"{label:>12} {fault:>16} {'(no room for this fault in the schedule)':>40}")
                 continue
             for rd in f["rounds"] or [{"action": f["status"], "seconds": None}]:
-                sec = rd.get("seconds")
-                ref = next((x.get("seconds") for x in (paper.get(fault) or {}).get("rounds") or []), None)
-                ratio = f"{sec / ref:6.1f}" if sec is not None and ref else "    --"
-                worst = max(worst, sec or 0.0) if label != "paper" else worst
+                sec, cpu = rd.get("seconds"), rd.get("cpu_seconds")
+                ref = next((x.get("cpu_seconds") for x in (paper.get(fault) or {}).get("rounds") or []), None)
+                ratio = f"{cpu / ref:6.1f}" if cpu is not None and ref else "    --"
+                if label != "paper":
+                    worst, worst_wall = max(worst, cpu or 0.0), max(worst_wall, sec or 0.0)
                 print(f"{label:>12} {fault:>16} {rd.get('action', '?'):>12} "
-                      f"{sec if sec is not None else float('nan'):8.3f} {ratio} {str(f['goal_met']):>8} "
-                      f"{f['wall']:8.1f} {f['load'][0]:5.2f}>{f['load'][1]:<5.2f}")
+                      f"{sec if sec is not None else float('nan'):8.3f} {cpu if cpu is not None else float('nan'):7.3f} "
+                      f"{ratio} {str(f['goal_met']):>8} {f['wall']:8.1f} {f['load'][0]:5.2f}>{f['load'][1]:<5.2f}")
         print(f"{label:>12} {'(no faults)':>16} {'':>12} {'':>8} {'':>6} {'':>8} {res['base_s']:8.1f}")
     big = [label for label in results if label != "paper"]
     if big:
         verdict = "under" if worst < TARGET_S else "OVER"
-        print(f"\nslowest recovery at {', '.join(big)}: {worst:.3f} s ({verdict} the {TARGET_S:g} s target)")
+        print(f"\nslowest recovery at {', '.join(big)}: {worst:.3f} s of CPU ({verdict} the {TARGET_S:g} s target), "
+              f"{worst_wall:.3f} s wall at load {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores")
     return 0
 
 

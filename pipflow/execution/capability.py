@@ -14,7 +14,9 @@ how it is written down:
 * :meth:`with_state`: a world whose initial state is a state the simulation reached (so the
   domain's own problem writer writes the observed state as a new PDDL problem), and
   :meth:`drop_place`: a place where a robot that stopped keeps what it was carrying;
-* :meth:`plan_goal`: the goal of an accepted problem, as the writer takes it;
+* :meth:`plan_goal`: the goal of an accepted problem, as the writer takes it, and
+  :meth:`observed_problem`: that goal from an observed state as a parsed problem (by default
+  written and parsed; a domain may build it faster);
 * :meth:`feasibility`: whether the remaining robots can still reach the goal from a state,
   checked independently of the planner (the bench's denominator for runs after a fault).
 """
@@ -24,7 +26,10 @@ import random
 from dataclasses import dataclass, field
 from typing import Any, ClassVar
 
-from pipflow.errors import InputError
+from pipflow.errors import InputError, PlanningError
+from pipflow.liberrors import UNIFIED_PLANNING, library_errors
+from pipflow.pddl.common import parse
+from pipflow.taskdomain import pddl_domain_name
 
 
 @dataclass
@@ -83,6 +88,16 @@ class ExecutionCapability:
         """A copy of ``world`` with a place (footprint and access point ``site``) where robot
         ``robot``, stopped, keeps what it carries; and the place's name."""
         raise NotImplementedError
+
+    def observed_problem(self, parsed_problem: Any, world: dict, goal: Any, domain_text: str,
+                         name: str) -> tuple[Any, str]:
+        """The problem of ``goal`` from ``world``'s state (its robots: those still working): the
+        parsed UP problem and its text. By default the domain's writer writes it and UP parses
+        it; a domain may build it faster from ``parsed_problem`` (the accepted problem, parsed),
+        which is read-only (clone it)."""
+        text = self.write_problem(world, goal, pddl_domain_name(domain_text, getattr(self, "name", "")), name=name)
+        with library_errors(UNIFIED_PLANNING, PlanningError, "reading the recovery problem"):
+            return parse(domain_text, text), text
 
     def plan_goal(self, parsed_problem: Any, world: dict) -> Any:
         """The goal of an accepted (parsed) problem, in the form :meth:`write_problem` takes."""

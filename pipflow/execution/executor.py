@@ -46,7 +46,6 @@ from pipflow.execution.standing import Cut, cut
 from pipflow.liberrors import UNIFIED_PLANNING, library_errors
 from pipflow.errors import PlanningError
 from pipflow.pddl.common import parse
-from pipflow.taskdomain import pddl_domain_name
 
 EPS = 1e-6
 #: recoveries allowed per fault (and a few for anomalies no fault explains) before the executor
@@ -71,6 +70,19 @@ class Outcome:
     feasible: bool | None = None
     feasibility: str = ""
     notes: list[str] = field(default_factory=list)
+
+
+def cast(world: dict, schedule: dict) -> tuple[dict, dict]:
+    """The world and the schedule with only the robots the schedule moves or names: the others
+    stand still and change nothing, and a simulation of a thousand idle robots would build (and
+    follow) a thousand bodies."""
+    named = {r for r, info in (schedule.get("robots") or {}).items() if info.get("legs")}
+    named |= {r for s in schedule.get("subtasks", []) for r in s.get("robots") or []}
+    robots = world.get("robots") or {}
+    if len(named) == len(robots):
+        return world, schedule
+    return ({**world, "robots": {r: info for r, info in robots.items() if r in named}},
+            {**schedule, "robots": {r: info for r, info in (schedule.get("robots") or {}).items() if r in named}})
 
 
 class Executor:
@@ -156,7 +168,7 @@ class Executor:
         while True:
             truth = self.truth()
             actual, motion = actual_schedule(truth, self.schedule, self.motion_faults())
-            played = self.domain.play(truth, actual, self.graph)
+            played = self.domain.play(*cast(truth, actual), self.graph)
             if self.refusal is not None:
                 break
             anomaly = first_anomaly(truth, self.faults, self.schedule, actual, motion, played, self.handled,
@@ -201,7 +213,7 @@ class Executor:
         return anomaly.words
 
     def recover(self, anomaly: Anomaly, actual: dict, motion: Any, played: Played) -> None:
-        started = time.perf_counter()
+        started = (time.perf_counter(), time.process_time())  # wall and this process's CPU
         k = len(self.rounds) + 1
         t = anomaly.time
         learned = self.learn(anomaly, motion)
@@ -231,7 +243,7 @@ class Executor:
         def observed() -> dict:
             """The world as observed: its state after the running subtasks end (played on what is known)."""
             if not belief:
-                belief.append(self.domain.play(known, self._schedule(now.records, now.legs), self.graph))
+                belief.append(self.domain.play(*cast(known, self._schedule(now.records, now.legs)), self.graph))
             state_world = self.domain.with_state(known, belief[0].final_state)
             return {**state_world, "robots": {r: v for r, v in state_world["robots"].items() if r not in lost}}
 
@@ -263,11 +275,12 @@ class Executor:
             self._refuse(entry, f"the floor is cut in two: {err}", now, started)
         self._close(entry, started, observed)
 
-    def _close(self, entry: dict, started: float, observed: Callable[[], dict] | None) -> None:
+    def _close(self, entry: dict, started: tuple[float, float], observed: Callable[[], dict] | None) -> None:
         """Time the round, check the goal's feasibility from the observed state (not timed as
         recovery: a check, independent of the planner), keep the round."""
         k = entry["round"]
-        entry["seconds"] = round(time.perf_counter() - started, 4)
+        entry["seconds"] = round(time.perf_counter() - started[0], 4)
+        entry["cpu_seconds"] = round(time.process_time() - started[1], 4)
         checked = time.perf_counter()
         self.feasible = (self.domain.feasibility(observed(), self.goal, self.planning.constraints) if observed
                          else (None, "the state could not be observed"))
@@ -304,9 +317,10 @@ class Executor:
 
         rest = [{"action": nodes[s]["action"], "args": list(nodes[s]["args"])}
                 for s in sorted(now.pending, key=lambda s: nodes[s]["index"])]
-        text = self.domain.write_problem(observed, self.goal, pddl_domain_name(self.planning.domain_text, self.domain.name))
         with library_errors(UNIFIED_PLANNING, PlanningError, "checking the remaining plan"):
-            report = verify_plan(parse(self.planning.domain_text, text), rest, observed)
+            accepted = parse(self.planning.domain_text, self.planning.problem)
+            problem, _ = self.domain.observed_problem(accepted, observed, self.goal, self.planning.domain_text, "check")
+            report = verify_plan(problem, rest, observed)
         return report.ok
 
     def _schedule(self, records: list[dict], legs: dict[str, list[dict]]) -> dict:
@@ -357,7 +371,7 @@ class Executor:
         legs = {r: list(now.legs.get(r, [])) + list(timeline.legs.get(r, [])) for r in set(now.legs) | set(timeline.legs)}
         self.schedule = self._schedule(now.records + list(timeline.records), legs)
 
-    def _refuse(self, entry: dict, reason: str, now: Cut | None, started: float) -> None:
+    def _refuse(self, entry: dict, reason: str, now: Cut | None, started: tuple[float, float]) -> None:
         cause = entry["cause"].get("words") or entry["cause"]["kind"]
         if now is not None:
             did = now.done + now.running

@@ -22,7 +22,6 @@ from pipflow.liberrors import UNIFIED_PLANNING, library_errors
 from pipflow.pddl.common import parse
 from pipflow.pddl.names import plan_in_world_names
 from pipflow.pddl.solver import Status, solve_problem
-from pipflow.taskdomain import pddl_domain_name
 from pipflow.team.allocation import METHODS, AllocationWalk
 from pipflow.team.dependency import build_graph
 from pipflow.team.scheduling import Standing
@@ -124,9 +123,9 @@ def replan(domain: Any, world: dict, goal: Any, planning: Planning, name: str) -
     ``goal``, verify the goal, solve, build the graph (module docstring). Raises :class:`Refused`
     when the goal is impossible or no plan exists, PlanningError when the planner times out."""
     started = time.perf_counter()
-    text = domain.write_problem(world, goal, pddl_domain_name(planning.domain_text, domain.name), name=name)
-    with library_errors(UNIFIED_PLANNING, PlanningError, "reading the recovery problem"):
-        parsed = parse(planning.domain_text, text)
+    with library_errors(UNIFIED_PLANNING, PlanningError, "reading the accepted problem"):
+        accepted = parse(planning.domain_text, planning.problem)
+    parsed, text = domain.observed_problem(accepted, world, goal, planning.domain_text, name)
     judged = domain.check_goal(parsed, world)
     if judged.refusal:
         raise Refused(judged.refusal)
@@ -148,7 +147,7 @@ def replan(domain: Any, world: dict, goal: Any, planning: Planning, name: str) -
     if result.plan is None:
         raise PlanningError(f"re-planning failed: {message}")
     plan = plan_in_world_names(result.plan, world)
-    graph = build_graph(planning.domain_text, text, plan, planning.metadata, mode=planning.graph_mode)
+    graph = build_graph(planning.domain_text, text, plan, planning.metadata, mode=planning.graph_mode, parsed=parsed)
     return Replanned(text, plan, graph, message, time.perf_counter() - started)
 
 

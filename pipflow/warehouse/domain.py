@@ -25,7 +25,7 @@ from pipflow.pddl.debugger import world_mismatches
 from pipflow.pddl.names import goal_in_world_names
 from pipflow.pddl.verifier import goal_problems
 from pipflow.resources import data_file
-from pipflow.taskdomain import GoalCheck, Grounding, Save, TaskDomain, flat_simulation
+from pipflow.taskdomain import GoalCheck, Grounding, Save, TaskDomain, flat_simulation, pddl_domain_name
 from pipflow.warehouse import agreement
 from pipflow.warehouse import faults as fault_model
 from pipflow.warehouse import world as worlds
@@ -200,6 +200,14 @@ class WarehouseDomain(TaskDomain, ExecutionCapability):
 
     def plan_goal(self, parsed_problem: Any, world: dict) -> Any:
         return fault_model.plan_goal(parsed_problem, world)
+
+    def observed_problem(self, parsed_problem: Any, world: dict, goal: Any, domain_text: str,
+                         name: str) -> tuple[Any, str]:
+        """The accepted problem with the observed stock (no text parse: fast at any size)."""
+        fast = fault_model.updated_problem(parsed_problem, world)
+        if fast is None:
+            return super().observed_problem(parsed_problem, world, goal, domain_text, name)
+        return fast, self.write_problem(world, goal, pddl_domain_name(domain_text, self.name), name=name)
 
     def feasibility(self, world: dict, goal: Any, constraints: list[dict]) -> tuple[bool | None, str]:
         return fault_model.feasibility(world, goal, constraints)

@@ -27,8 +27,9 @@ from pipflow.errors import InputError
 from pipflow.execution.capability import Played
 from pipflow.goalcounts import limits
 from pipflow.pddl.common import stock_goals
-from pipflow.pddl.names import goal_in_world_names
+from pipflow.pddl.names import goal_in_world_names, pddl_name
 from pipflow.pddl.verifier import goal_problems
+from pipflow.pddl.writer import magnitudes
 from pipflow.suggest import did_you_mean
 
 #: the warehouse's name for a state surprise
@@ -163,6 +164,37 @@ def play(world: dict, schedule: dict, graph: dict | None) -> Played:
     began = {e["subtask"]: float(e["time"]) for e in result["events"] if e["event"] == "load"}
     ended = {e["subtask"]: float(e["time"]) for e in result["events"] if e["event"] == "unload"}
     return Played(result["final_stock"], began, ended, list(result["failures"]), dict(result["interrupted"]), result)
+
+
+def updated_problem(parsed: Any, world: dict) -> Any | None:
+    """The accepted problem with the world's stock as its initial state: a clone of ``parsed`` whose
+    ``stock``, ``load`` and ``capacity`` are the world's, drop places added as shelves. Why not the
+    writer's text: UP's reader takes seconds on a large warehouse (200 x 20 cells: 15 s), and a
+    recovery must not. None when the problem's other objects differ from the world's (a lost
+    robot changed which move sizes the team can carry): then the text is parsed."""
+    from unified_planning.model import Object  # deferred: pulls unified_planning (a recovery's re-plan only)
+
+    problem = parsed.clone()
+    kinds = {t.name: t for t in problem.user_types}
+    if set(kinds) != {"shelf", "product", "magnitude"}:
+        return None
+    have = {o.name for o in problem.objects(kinds["magnitude"])}
+    if have != {pddl_name(m) for m in magnitudes(world)} or \
+            {o.name for o in problem.objects(kinds["product"])} != {pddl_name(p) for p in world["products"]}:
+        return None
+    for shelf in world["shelves"]:
+        if not problem.has_object(pddl_name(shelf)):
+            problem.add_object(Object(pddl_name(shelf), kinds["shelf"]))
+    stock, load, capacity = problem.fluent("stock"), problem.fluent("load"), problem.fluent("capacity")
+    products = [problem.object(pddl_name(p)) for p in world["products"]]
+    for shelf, info in world["shelves"].items():
+        s = problem.object(pddl_name(shelf))
+        items = world["stock"].get(shelf) or {}
+        for name, obj in zip(world["products"], products):
+            problem.set_initial_value(stock(s, obj), int(items.get(name, 0)))
+        problem.set_initial_value(load(s), sum(int(n) for n in items.values()))
+        problem.set_initial_value(capacity(s), int(info["capacity"]))
+    return problem
 
 
 def plan_goal(parsed: Any, world: dict) -> dict:
