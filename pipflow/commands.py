@@ -25,6 +25,10 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
     bench.add_argument("--out", default=None, help="output directory (default: bench-out/<time>)")
     bench.add_argument("--matrix", action="append", metavar="KEY=V1,V2", help="run variants side by side")
     bench.add_argument("-i", "--input", action="append", metavar="KEY=VALUE", help="set a workflow input for every run")
+    bench.add_argument("--faults", default=None, metavar="KIND=N,...",
+                       help="inject faults into every run, drawn from each run's seed: robot-loss=1, slowdown=1, "
+                            "passage-closed=1, and the domain's own surprise kind; --matrix faults=none,"
+                            "robot-loss=1,... compares them side by side")
     bench.add_argument("--no-cache", action="store_true")
     bench.add_argument("--backend", default=None, metavar="local|dask[=ADDRESS]",
                        help="where the runs execute: local (default): a process pool of --jobs; dask: a "

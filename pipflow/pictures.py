@@ -255,3 +255,124 @@ def natural_key(name: str) -> Any:
     import re
 
     return [int(t) if t.isdigit() else t for t in re.split(r"(\d+)", name)]
+
+
+# ------------------------------------------------------------------------------------------
+# faults and recovery (pipflow.execution): where and when things went wrong
+# ------------------------------------------------------------------------------------------
+#: how each fault kind is marked on the map and the Gantt chart
+FAULT_MARKS = {"robot-loss": ("X", "#c62828"), "slowdown": ("v", "#ef6c00"), "passage-closed": ("s", "#000000"),
+               "surprise": ("*", "#8e24aa")}
+
+
+def _fixtures(ax, world: dict) -> None:
+    """Every footprint of the floor (shelves, household places, drop places) with its name."""
+    from matplotlib.patches import Rectangle
+
+    for name, f in task_domain(world).places(world).items():
+        drop = bool(f.get("drop"))
+        ax.add_patch(Rectangle((f["x"], f["y"]), f["width"], f["depth"], fc="#e0b0b0" if drop else "#b08a66",
+                               ec="#c62828" if drop else "#5a4030"))
+        ax.text(f["x"] + f["width"] / 2, f["y"] + f["depth"] / 2 + (0.35 if drop else 0), name, ha="center",
+                va="center", fontsize=6 if drop else 7, color="#c62828" if drop else "white")
+
+
+def fault_map(world: dict, schedule: dict, faults: list[dict], rounds: list[dict], path: Path) -> Path:
+    """Top-down map of a run under faults: each robot's path as driven (the schedule's legs), and
+    where each fault struck: a red X where a robot stopped, a black bar where a passage closed, a
+    purple star at a place whose contents surprised, an orange triangle where a slow robot was
+    noticed; each labelled with its time and the recovery round that answered it."""
+    from matplotlib.patches import Rectangle
+
+    plt = _plt()
+    fig, ax = plt.subplots(figsize=(9, 6.5))
+    fw, fh = float(world["floor"]["width"]), float(world["floor"]["height"])
+    ax.add_patch(Rectangle((0, 0), fw, fh, fill=False, lw=1.5, ec="black"))
+    _fixtures(ax, world)
+    index = {r: i for i, r in enumerate(world.get("robots", {}))}
+    for r, info in sorted((schedule.get("robots") or {}).items(), key=lambda kv: natural_key(kv[0])):
+        legs = info.get("legs") or []
+        if not legs:
+            continue
+        c = robot_colour(index.get(r, 0))
+        for leg in legs:
+            pts = leg.get("path") or [leg["from"], leg["to"]]
+            ax.plot([p[0] for p in pts], [p[1] for p in pts], "-", color=c, lw=1.4, alpha=0.8)
+        ax.plot(*legs[0]["from"], "o", color=c, ms=5)
+        ax.plot([], [], "-", color=c, label=r)
+    fixtures = task_domain(world).places(world)
+    answered = {r.get("cause", {}).get("fault"): r.get("round") for r in rounds}
+    for f in faults:
+        marker, colour = FAULT_MARKS.get(f.get("kind"), ("o", "grey"))
+        when = f"t={f['time']:.0f}s" if f.get("time") is not None else ""
+        label = f"{f.get('id')} {f.get('name')} {when}" + (f" (R{answered[f.get('id')]})" if f.get("id") in answered else "")
+        if f.get("kind") == "passage-closed" and f.get("barrier"):
+            b = f["barrier"]
+            ax.add_patch(Rectangle((b["x"], b["y"]), b["width"], b["depth"], fc="black", ec="black", hatch="//"))
+            ax.annotate(label, (b["x"] + b["width"] / 2, b["y"] + b["depth"]), fontsize=7, ha="center", va="bottom")
+        elif f.get("kind") == "surprise":
+            for place in (f.get("surprise") or {}).get("places") or []:
+                if place in fixtures:
+                    x, y = fixtures[place]["access"]
+                    ax.plot(x, y, marker, color=colour, ms=14, mec="black")
+                    ax.annotate(label, (x, y), textcoords="offset points", xytext=(6, 6), fontsize=7, color=colour)
+        elif f.get("point"):
+            x, y = f["point"]
+            ax.plot(x, y, marker, color=colour, ms=13, mew=3)
+            ax.annotate(f"{f.get('robot')}: {label}", (x, y), textcoords="offset points", xytext=(6, -10),
+                        fontsize=7, color=colour)
+        elif f.get("robot") and f.get("detected") is not None:
+            legs = ((schedule.get("robots") or {}).get(f["robot"]) or {}).get("legs") or []
+            if legs:
+                x, y = Trajectory(legs[0]["from"], legs).position(float(f["detected"]))
+                ax.plot(x, y, marker, color=colour, ms=11)
+                ax.annotate(f"{f['robot']}: {label}", (x, y), textcoords="offset points", xytext=(6, 6),
+                            fontsize=7, color=colour)
+    ax.set_xlim(-0.5, fw + 0.5)
+    ax.set_ylim(-0.5, fh + 0.5)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), title="robot", title_fontsize=8)
+    ax.set_title("Faults and the paths as driven (X robot stopped, bar passage closed, * surprise, v slow)")
+    fig.tight_layout()
+    save_figure(fig, path, dpi=90)
+    plt.close(fig)
+    return Path(path)
+
+
+def fault_gantt(schedule: dict, faults: list[dict], rounds: list[dict], path: Path) -> Path:
+    """The Gantt chart of the schedule carried out, with a dashed line at each recovery (its round
+    and action) and, on a robot's row, the mark of the fault that struck it."""
+    plt = _plt()
+    robots = _working_robots(schedule)
+    row = {r: i for i, r in enumerate(robots)}
+    fig, ax = plt.subplots(figsize=(10, max(2.5, 0.45 * len(robots) + 1.6)))
+    for r, info in (schedule.get("robots") or {}).items():
+        for leg in info.get("legs", []) if r in row else []:
+            ax.barh(row[r], float(leg["end"]) - float(leg["start"]), left=float(leg["start"]), height=0.35,
+                    color="#cccccc", edgecolor="#999999")
+    for k, s in enumerate(schedule.get("subtasks", [])):
+        for r in s.get("robots", []):
+            if r in row:
+                ax.barh(row[r], max(float(s["end"]) - float(s["start"]), 1e-3), left=float(s["start"]), height=0.6,
+                        color=robot_colour(k), alpha=0.75, edgecolor="black", lw=0.5)
+                ax.text(float(s["start"]), row[r], f" {s['id']}", va="center", fontsize=7)
+    for rd in rounds:
+        t = float(rd.get("time", 0.0))
+        ax.axvline(t, color="#c62828", ls="--", lw=1)
+        ax.text(t, -0.9, f"R{rd.get('round')} {rd.get('action')}", color="#c62828", fontsize=7, rotation=0)
+    for f in faults:
+        marker, colour = FAULT_MARKS.get(f.get("kind"), ("o", "grey"))
+        if f.get("robot") in row and f.get("time") is not None:
+            ax.plot(float(f["time"]), row[f["robot"]], marker, color=colour, ms=11, mew=3)
+    ax.set_yticks(range(len(robots)))
+    ax.set_yticklabels(robots, fontsize=8)
+    ax.set_ylim(len(robots) - 0.5, -1.3)
+    ax.set_xlabel("time (s)")
+    ax.set_title(f"Schedule carried out (makespan {float(schedule.get('makespan', 0)):.1f} s); "
+                 "dashed: recoveries; marks: faults")
+    fig.tight_layout()
+    save_figure(fig, path, dpi=90)
+    plt.close(fig)
+    return Path(path)

@@ -19,6 +19,7 @@ GENERIC_STEP_MODULES = [
     "pipflow.steps.allocate",
     "pipflow.steps.improve",
     "pipflow.steps.schedule",
+    "pipflow.steps.execute",
     "pipflow.steps.llm",
     "pipflow.steps.baselines",
 ]

@@ -39,7 +39,7 @@ LAYERS: list[tuple[str, tuple[tuple[str, ...], ...]]] = [
     ("steps", (("pipflow.steps",),)),
     ("task domains", (("pipflow.warehouse",), ("pipflow.household",))),
     ("baselines", (("pipflow.baselines",),)),
-    ("language, pictures", (("pipflow.language",), ("pipflow.pictures",))),
+    ("language, pictures, execution", (("pipflow.language",), ("pipflow.pictures",), ("pipflow.execution",))),
     ("team coordination", (("pipflow.team",),)),
     ("PDDL tools", (("pipflow.pddl",),)),
     ("neutral helpers", (("pipflow.taskdomain", "pipflow.taskdomains", "pipflow.goalcounts", "pipflow.suggest",

@@ -47,11 +47,12 @@ from pipflow.engine.registry import default_registry
 from pipflow.engine.runner import find_workflow, resolve_inputs
 from pipflow.engine.store import atomic_write, read_json, write_json
 from pipflow.engine.writes import DiskError, disk_error, make_dirs, writing
-from pipflow.engine.validate import load_workflow
+from pipflow.engine.validate import check_given_values, load_workflow
 from pipflow.errors import UserError
 from pipflow.experiments.backends import build_bundle, make_backend, parse_backend, parse_limits, run_key
 from pipflow.experiments.benchdomains import domain_named, domain_of
 from pipflow.experiments.benchstats import aggregate_task, summarize
+from pipflow.experiments.faultstats import FAULT_FIELDS, fault_summary, fault_table
 from pipflow.experiments.papertables import MIN_RUNS, bench_tables, render, write_tables
 from pipflow.experiments.runspec import RunSpec, recorded_outputs, run_one  # noqa: F401  (the bench's face: tests, scripts)
 from pipflow.meaning import misread_cell
@@ -209,7 +210,9 @@ def check_variants(specs: list[RunSpec]) -> dict[tuple, dict[str, str]]:
         if (key, task_inputs) not in checked:
             checked.add((key, task_inputs))
             try:
-                resolve_inputs(wf, _run_inputs(spec), from_text=True)
+                values = resolve_inputs(wf, _run_inputs(spec), from_text=True)
+                # the steps' own checks of the values a variant sets (a misspelt fault kind, say)
+                check_given_values(wf, registry, {k: values[k] for k in spec.inputs if k in values})
             except UserError as err:
                 raise UserError(f"{where} (task {spec.task['id']!r}): {err}") from None
     return files
@@ -454,6 +457,9 @@ def _results(rows: list[dict], tasks: list[dict], config: BenchConfig, wall: flo
         variant_results.append({"name": name, "summary": {**summarize(task_rows), **understanding(vrows)},
                                 "tasks": task_rows, "constructions": _by_construction(vrows, tasks),
                                 "stage_seconds": {k: sum(v) / len(v) for k, v in stage.items()}})
+        faults = fault_summary(vrows)  # runs under faults: SR where reachable, refusals, recovery times
+        if faults is not None:
+            variant_results[-1]["faults"] = faults
     first = variant_results[0]
     return {"summary": first["summary"], "tasks": first["tasks"], "constructions": first["constructions"],
             "variants": variant_results,
@@ -502,9 +508,10 @@ def markdown_table(results: dict) -> str:
     per category)."""
     config = results.get("config") or {}
     domain = domain_named(config.get("domain"))
+    faults = fault_table(results)  # runs under faults (None without)
     table = domain.bench_table(results, Path(config["tasks"]))
     if table is not None:  # its layout is the domain's, understanding columns included
-        return table
+        return table + (f"\n\n{faults}" if faults else "")
     lines = []
     for variant in results["variants"]:
         if len(results["variants"]) > 1:
@@ -527,6 +534,8 @@ def markdown_table(results: dict) -> str:
             for name, c in variant["constructions"].items():
                 lines.append(f"| {name} | {c['runs']} | {_pct(c['understood'])} | {misread_cell(c)} |")
             lines.append("")
+    if faults:
+        lines.append(faults)
     lines.append(f"wall time: {results['wall_seconds']:.1f} s")
     return "\n".join(lines)
 
@@ -535,7 +544,8 @@ def _write(out: Path, rows: list[dict], results: dict) -> None:
     write_json(out / "results.json", results, root=out)
     write_json(out / "runs.json", rows, root=out)
     text = io.StringIO(newline="")
-    writer = csv.DictWriter(text, fieldnames=RESULT_FIELDS, extrasaction="ignore")
+    fields = RESULT_FIELDS + (FAULT_FIELDS if any(r.get("faults") for r in rows) else [])
+    writer = csv.DictWriter(text, fieldnames=fields, extrasaction="ignore")
     writer.writeheader()
     for row in rows:
         writer.writerow({k: (json.dumps(v) if isinstance(v, (list, dict)) else v) for k, v in row.items()})
@@ -582,6 +592,11 @@ def bench_main(args: argparse.Namespace) -> int:
         raise UserError("--min-runs marks the cells of the paper's tables: give it with --table paper")
     inputs = key_values(args.input or [])
     matrix = parse_matrix(args.matrix)
+    faults = getattr(args, "faults", None)
+    if faults is not None:  # --faults SPEC: the `faults` input of every run (README, "Faults, monitoring and recovery")
+        if "faults" in inputs or "faults" in matrix:
+            raise UserError("--faults and -i faults= / --matrix faults= both set the faults; give one of them")
+        inputs["faults"] = faults
     config = BenchConfig(
         tasks_file=tasks_file, workflow=args.workflow, seeds=args.seeds,
         jobs=_workers(args.jobs), out=Path(args.out or f"bench-out/{stamp}"),

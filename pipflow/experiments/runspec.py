@@ -19,7 +19,12 @@ from pipflow.engine.runner import run_workflow
 from pipflow.engine.store import read_json
 from pipflow.errors import UserError
 from pipflow.experiments.benchdomains import domain_named
+from pipflow.experiments.faultstats import fault_columns
 from pipflow.meaning import misread_executed
+
+
+#: the outputs a run under faults leaves even when it stops early (what it did, what went wrong)
+FAULT_OUTPUTS = ("graph", "schedule", "simulation", "faults", "recoveries", "feasible_after_faults")
 
 
 @dataclass(frozen=True)
@@ -65,7 +70,11 @@ def run_one(spec: RunSpec) -> dict:
     if task.get("expect") == "refuse" and error is not None and row.get("error_kind") == "TranslationError":
         refusal, error = error, None  # the right answer to an ambiguous command: refuse, quoting the words
     domain = domain_named(task.get("domain"))
+    if row["status"] != "succeeded" and row.get("run_dir") and spec.inputs.get("faults"):
+        # a run a fault stopped (refused, failed) is scored on what it carried out before it stopped
+        outputs = {**recorded_outputs(Path(row["run_dir"]), FAULT_OUTPUTS), **outputs}
     row.update(domain.score_bench_run(spec.world_path, task, outputs, refusal, error))
+    row.update(fault_columns(outputs, row["status"]))
     read = outputs if row["status"] == "succeeded" or not row.get("run_dir") else \
         recorded_outputs(Path(row["run_dir"]), ("goal", "constraints", "loop", "reader"))
     # which refinement loop ran (pip-llm, checked) and whose reading the goal was (offline, model)

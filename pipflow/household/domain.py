@@ -16,7 +16,9 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any, Callable, Mapping
 
+from pipflow.execution.capability import ExecutionCapability, Played
 from pipflow.household import agreement
+from pipflow.household import faults as fault_model
 from pipflow.household import world as worlds
 from pipflow.household.problem import goal_from_problem, goal_refusal, world_mismatches, write_problem
 from pipflow.household.scoring import CATEGORIES, bench_table, load_tasks, score_bench_run, score_run, understanding
@@ -32,7 +34,7 @@ RULE_FIELDS = ("object", "from", "to", "at")
 GOAL_PLACEHOLDER = "; the goal conditions of the command go here"
 
 
-class HouseholdDomain(TaskDomain):
+class HouseholdDomain(TaskDomain, ExecutionCapability):
     """A home: objects in places, states to change (open, on, dirty, sliced), a robot team."""
 
     name = "household"
@@ -45,6 +47,7 @@ class HouseholdDomain(TaskDomain):
                  "cot": "household-cot", "smart-llm": "household-smart-llm", "lamma-p": "household-lamma-p"}
     default_prompt = "household_problem"
     rule_fields = RULE_FIELDS
+    surprise_names = fault_model.SURPRISE_NAMES
 
     def pddl_domain(self) -> Path:
         return data_file("domains/household.pddl")
@@ -140,7 +143,7 @@ class HouseholdDomain(TaskDomain):
     def score_bench_run(self, world_path: str, task: dict, outputs: dict, refusal: str | None,
                         error: str | None) -> dict:
         return score_bench_run(world_path, task, {**outputs, "simulation": flat_simulation(outputs.get("simulation"))},
-                               refusal, error)
+                               refusal, error, adjust=lambda world: fault_model.as_it_was(world, outputs.get("faults")))
 
     def understand(self, task: dict, outputs: dict, status: str, error_kind: str | None,
                    world_path: str | None = None) -> dict | None:
@@ -156,3 +159,29 @@ class HouseholdDomain(TaskDomain):
     def table_groups(self, tasks: list[dict]) -> list[tuple[str, list[str]]] | None:
         """The paper's categories, in its order (compound, complex, vague)."""
         return [(c, [t["id"] for t in tasks if t.get("category") == c]) for c in CATEGORIES]
+
+    # -- execution under faults (pipflow.execution): the home's side is household/faults.py
+
+    def play(self, world: dict, schedule: dict, graph: dict | None) -> Played:
+        return fault_model.play(world, schedule, graph)
+
+    def draw_surprise(self, world: dict, schedule: dict, graph: dict | None, rng: Any) -> dict | None:
+        return fault_model.draw_surprise(world, schedule, graph, rng)
+
+    def check_surprise(self, world: dict, given: dict, where: str) -> dict:
+        return fault_model.check_surprise(world, given, where)
+
+    def apply_surprise(self, world: dict, surprise: dict) -> dict:
+        return fault_model.apply_surprise(world, surprise)
+
+    def with_state(self, world: dict, state: Any) -> dict:
+        return fault_model.with_state(world, state)
+
+    def drop_place(self, world: dict, robot: str, site: dict) -> tuple[dict, str]:
+        return fault_model.drop_place(world, robot, site)
+
+    def plan_goal(self, parsed_problem: Any, world: dict) -> Any:
+        return fault_model.plan_goal(parsed_problem, world)
+
+    def feasibility(self, world: dict, goal: Any, constraints: list[dict]) -> tuple[bool | None, str]:
+        return fault_model.feasibility(world, goal, constraints)

@@ -243,10 +243,14 @@ def load_tasks(path: str | Path) -> dict:
             "workflow": data.get("workflow", "household"), "tasks": tasks}
 
 
-def score_bench_run(world_path: str, task: dict, outputs: dict, refusal: str | None, error: str | None) -> dict:
+def score_bench_run(world_path: str, task: dict, outputs: dict, refusal: str | None, error: str | None,
+                    adjust: Any = None) -> dict:
     """Score one bench run of a household task (the team's world, the task's ground truth); the
-    row also says how RU's reference was found (``reference``)."""
+    row also says how RU's reference was found (``reference``). ``adjust``: the world as the run
+    really found it (a run under faults: its surprises)."""
     world = select_team(load_world(world_path), task.get("team"))
+    if adjust is not None:
+        world = adjust(world)
     feasible = task.get("feasible", True) is not False and task.get("expect") != "refuse"  # refusing is right
     goal = task.get("goal") or {}
     row = score_run(world, goal, feasible=feasible, graph=outputs.get("graph"), schedule=outputs.get("schedule"),

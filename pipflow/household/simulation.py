@@ -135,11 +135,18 @@ def _coalition_short(world: dict, robots: list[str], need: dict[str, float]) -> 
 
 def simulate(world: dict, schedule: dict, graph: dict | None, goal: dict | None = None, *,
              snapshots: bool = False, out_dir: str | Path | None = None,
-             log: Callable[[str], None] | None = None) -> dict:
+             log: Callable[[str], None] | None = None, trace: bool = False) -> dict:
     """Run ``schedule`` on the household ``world``; see the module docstring.
 
     Returns ``{final_state, executed, failed, failures, exe, travel, tc_max, tc_avg, tc_avg_team, goal_met,
-    gcr, conditions, jumps, makespan, pictures}``."""
+    gcr, conditions, jumps, makespan, pictures}``; ``trace``: also ``began``, ``ended`` (when each
+    subtask began and ended) and ``interrupted`` (when a member of a running subtask stopped), for
+    the executor.
+
+    A robot with ``stopped: {time, drop}`` in the world (:mod:`pipflow.execution`) is out of
+    service from ``time``: a subtask that needs it is refused; one it works on when it stops is
+    interrupted (its effects do not land) and an object it carries is put in the ``drop`` place
+    (or stays with it, when there is none)."""
     log = log or (lambda m: None)
     nodes = {n["id"]: n for n in (graph or {}).get("nodes", [])}
     places = {n: tuple(p["access"]) for n, p in world["places"].items()}
@@ -154,44 +161,47 @@ def simulate(world: dict, schedule: dict, graph: dict | None, goal: dict | None 
     if scene:
         pictures.append(scene.snapshot(Path(out_dir) / "home-start.png", home).name)
 
-    events: list[tuple[float, int, int, dict]] = []
-    for k, s in enumerate(schedule.get("subtasks", [])):
-        events.append((float(s["start"]), 1, k, s))
-        events.append((float(s["end"]), 0, k, s))
-    events.sort(key=lambda e: (e[0], e[1], e[2]))
+    stops = {r: info["stopped"] for r, info in world["robots"].items() if info.get("stopped")}
+    events = _events(schedule, stops)
     executed, failures, running = 0, [], set()
+    began: dict[str, float] = {}
+    ended: dict[str, float] = {}
+    interrupted: dict[str, float] = {}
+    out: set[str] = set()
+    by_id = {s["id"]: s for s in schedule.get("subtasks", [])}
     for t, kind, _, s in events:
+        if kind == -1:
+            _stop(home, s, t, running, by_id, interrupted, out, log)
+            continue
         action, args, robots = s["action"], list(s.get("args") or []), list(s.get("robots") or [])
         if kind == 0:
-            if s["id"] in running:
+            if s["id"] in running and s["id"] not in interrupted:
                 home.finish(action, args)
                 executed += 1
+                ended[s["id"]] = t
             continue
         node = nodes.get(s["id"], {})
         why = home.problems(action, args)
         why += _coalition_short(world, robots, dict(node.get("skills") or {}))
-        route = list(node.get("route") or [])
-        if route and route[0] in places:
-            for r in robots:
-                pos = traj[r].position(t) if r in traj else None
-                if pos is None or math.dist(pos, places[route[0]]) > TOLERANCE:
-                    why.append(f"{r} is not at {route[0]} at t={t:.1f}")
+        why += [f"{r} is out of service (stopped at t={float(stops[r]['time']):.1f})" for r in robots if r in out]
+        why += _not_there(robots, list(node.get("route") or []), places, traj, t)
         if why:
             failures.append({"subtask": s["id"], "action": action, "args": args, "time": round(t, 3), "reasons": why})
             log(f"execute: {s['id']} {action} {' '.join(args)} refused: {'; '.join(why)}")
             continue
         home.begin(action, args)
         running.add(s["id"])
+        began[s["id"]] = t
 
     final = home.data()
     if scene:
         pictures.append(scene.snapshot(Path(out_dir) / "home-end.png", home).name)
         scene.close()
     planned = len(schedule.get("subtasks", []))
-    travel = {r: round(sum(seg[3][-1] for seg in tr.segments) + sum(j["metres"] for j in tr.jumps), 6)
-              for r, tr in traj.items() if r in world["robots"]}
+    travel = {r: _metres(tr) for r, tr in traj.items() if r in world["robots"]}
     met, total, unmet = check_conditions(world, final, goal or {})
-    return {
+    traced = {"began": began, "ended": ended, "interrupted": interrupted} if trace else {}
+    return {**traced,
         "final_state": final, "executed": executed, "failed": len(failures), "failures": failures,
         "exe": executed / planned if planned else 1.0, "travel": travel,
         **travel_costs(travel),  # tc_max, tc_avg (robots that moved), tc_avg_team
@@ -200,6 +210,50 @@ def simulate(world: dict, schedule: dict, graph: dict | None, goal: dict | None 
         "jumps": {r: tr.jumps for r, tr in traj.items() if tr.jumps},
         "makespan": float(schedule.get("makespan", 0.0)), "pictures": pictures,
     }
+
+
+def _events(schedule: dict, stops: dict[str, dict]) -> list[tuple[float, int, int, dict]]:
+    """The run's events in time order: at one instant subtasks end (0) before others start (1),
+    and a robot's stop (-1) comes first."""
+    events: list[tuple[float, int, int, dict]] = []
+    for k, s in enumerate(schedule.get("subtasks", [])):
+        events.append((float(s["start"]), 1, k, s))
+        events.append((float(s["end"]), 0, k, s))
+    for k, (r, stop) in enumerate(sorted(stops.items())):
+        events.append((float(stop["time"]), -1, k, {"robot": r, **stop}))
+    return sorted(events, key=lambda e: (e[0], e[1], e[2]))
+
+
+def _not_there(robots: list[str], route: list[str], places: dict[str, tuple], traj: dict[str, Trajectory],
+               t: float) -> list[str]:
+    """Why a subtask cannot start at ``t``: members not standing at its route's first place."""
+    if not route or route[0] not in places:
+        return []
+    return [f"{r} is not at {route[0]} at t={t:.1f}" for r in robots
+            if r not in traj or math.dist(traj[r].position(t), places[route[0]]) > TOLERANCE]
+
+
+def _metres(tr: Trajectory) -> float:
+    """What a robot drove: its legs and its jumps (moves the plan did not route)."""
+    return round(sum(seg[3][-1] for seg in tr.segments) + sum(j["metres"] for j in tr.jumps), 6)
+
+
+def _stop(home: Home, stop: dict, t: float, running: set[str], by_id: dict[str, dict],
+          interrupted: dict[str, float], out: set[str], log: Callable[[str], None]) -> None:
+    """Robot ``stop["robot"]`` goes out of service at ``t``: the subtasks it works on are
+    interrupted, and an object its coalition carries lands in its drop place, if it has one."""
+    robot, drop = stop["robot"], stop.get("drop")
+    out.add(robot)
+    for sid in sorted(running):
+        s = by_id[sid]
+        if robot not in (s.get("robots") or []) or sid in interrupted or float(s["end"]) <= t:
+            continue
+        interrupted[sid] = t
+        args = list(s.get("args") or [])
+        if s["action"] in ("store", "trash") and args and home.at.get(args[0]) is None:
+            home.at[args[0]] = drop if drop in home.world["places"] else None
+            log(f"{robot} stopped at t={t:.1f} during {sid}: {args[0]} is "
+                + (f"in {drop}" if drop in home.world["places"] else "stuck with it"))
 
 
 class _Scene:

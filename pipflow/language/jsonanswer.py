@@ -23,7 +23,7 @@ def json_object(text: str, what: str = "answer") -> dict[str, Any]:
     that starts like JSON, else the text from its first ``{``. Raises :class:`ParseIssue` with
     the line and column (counted in the block) when it is not valid JSON, or not an object."""
     fences = [(lang.lower(), body) for lang, body in _FENCE.findall(text or "")]
-    blocks = [(f"the ```json block", b) for lang, b in fences if lang == "json"]
+    blocks = [("the ```json block", b) for lang, b in fences if lang == "json"]
     blocks += [("the code block", b) for lang, b in fences if lang == "" and b.lstrip()[:1] in "[{"]
     start = (text or "").find("{")
     if not blocks and start >= 0:

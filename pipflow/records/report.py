@@ -308,6 +308,8 @@ def _run_body(d: Path, drawn: _Pictures) -> str:
                     for s, items in goal.items() for p, n in items.items()]  # n: a count or a bound
             parts.append("<h3>Goal</h3>" + _table(["place", "item", "goal", "final", "holds"], rows))
 
+    parts.append(_faults_section(steps, world, drawn))  # runs under faults only ("" otherwise)
+
     if met_s:
         m = upgrade_travel_keys(met_s[2])
         parts.append("<h2>Metrics</h2>" + _table(
@@ -321,6 +323,56 @@ def _run_body(d: Path, drawn: _Pictures) -> str:
 
     parts.append("<h2>Steps</h2>" + _table(["step", "outputs"], [[n, ", ".join(sorted(o))] for n, _, o in steps]))
     return "\n".join(parts)
+
+
+# ------------------------------------------------------------------------------------------
+# faults and recovery (pipflow.execution)
+# ------------------------------------------------------------------------------------------
+
+
+def _faults_section(steps, world: dict | None, drawn: _Pictures) -> str:
+    """What went wrong and how the run recovered: the faults (what, to whom, when, when noticed),
+    each recovery round (cause, what it learned and did, its seconds, whether the goal was still
+    reachable), the refusal if the goal went out of reach, and where and when on the map and the
+    Gantt chart. Empty for a run without faults."""
+    found = _find(steps, lambda o: isinstance(o.get("recoveries"), list) and isinstance(o.get("faults"), list))
+    if not found or not found[2]["faults"]:
+        return ""
+    out = found[2]
+    faults, rounds = out["faults"], out["recoveries"]
+    parts = ["<h2>Faults and recovery</h2>"]
+    if out.get("refusal"):
+        parts.append(f"<div class='cause'><p><b>Refused after a fault:</b> {_e(out['refusal'])}</p></div>")
+    parts.append(_table(["fault", "kind", "what", "struck at (s)", "noticed at (s)", "round"],
+                        [[f.get("id"), f.get("name"), _fault_words(f), f.get("time"), f.get("detected"),
+                          f.get("round")] for f in faults]))
+    rows = []
+    for r in rounds:
+        what = (r.get("why") or ", ".join(r.get("reallocated") or []) or ", ".join(r.get("replanned") or [])
+                or r.get("refusal") or "")
+        if r.get("action") == "re-plan":
+            what = f"aborted {', '.join(r.get('aborted') or []) or 'none'}; new: {', '.join(r.get('replanned') or [])}"
+        rows.append([r.get("round"), r.get("time"), (r.get("cause") or {}).get("words"), r.get("learned"),
+                     r.get("action"), what, r.get("seconds"), r.get("feasible")])
+    parts.append(_table(["round", "t (s)", "cause", "learned", "action", "what", "seconds", "goal reachable"], rows))
+    schedule, graph_world = out.get("schedule"), out.get("world") or world
+    if isinstance(schedule, dict) and isinstance(graph_world, dict):
+        try:
+            pictures.fault_map(graph_world, schedule, faults, rounds, drawn.path("faults-map.png"))
+            pictures.fault_gantt(schedule, faults, rounds, drawn.path("faults-gantt.png"))
+            parts.append(_img(drawn.src("faults-map.png"), "where the faults struck")
+                         + _img(drawn.src("faults-gantt.png"), "the schedule carried out, with the recoveries"))
+        except Exception as exc:  # a picture must never hide the rest of the report
+            parts.append(f"<p class='bad'>could not draw the faults: {_e(exc)}</p>")
+    return "\n".join(parts)
+
+
+def _fault_words(f: dict) -> str:
+    if f.get("kind") == "surprise":
+        return str((f.get("surprise") or {}).get("words") or "")
+    who = f.get("robot") or " - ".join(f.get("between") or []) or ""
+    extra = f" at {100 * f['factor']:.0f}% speed" if f.get("factor") else ""
+    return f"{who}{extra}" + ("" if f.get("occurred", True) else " (did not happen before the run ended)")
 
 
 # ------------------------------------------------------------------------------------------

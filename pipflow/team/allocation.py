@@ -41,7 +41,7 @@ from typing import Any, Iterable
 import numpy as np
 
 from pipflow.errors import AllocationError, InputError
-from pipflow.team.scheduling import DEFAULT_COST, Timeline, check_cost, predecessors
+from pipflow.team.scheduling import DEFAULT_COST, Standing, Timeline, check_cost, predecessors
 
 EPS = 1e-7
 #: SCIP reads any number this large as infinite (its default ``numerics/infinity``)
@@ -526,13 +526,17 @@ METHODS = ("scip", "naive", "greedy", "blind")
 
 def allocate(graph: dict, world: dict, method: str = "scip", constraints: list | None = None,
              linear: list | None = None, mode: str = "subtask", travel=None, speed: float = 1.0,
-             handling: float = 2.0, time_limit: float = 10.0, cost: str = DEFAULT_COST) -> dict:
+             handling: float = 2.0, time_limit: float = 10.0, cost: str = DEFAULT_COST,
+             standing: Standing | None = None) -> dict:
     """Walk the graph frontier (Alg. 1) and allocate every subtask; the allocation contract.
 
     ``mode="subtask"``: one IP per subtask (the paper); ``mode="frontier"`` (scip only): all ready
     subtasks in one IP minimising their latest finish, then (with ``cost="total"``) the largest
     cost and then the sum of costs, as the paper's objective does; (with ``cost="subtask"``) the
-    sum of costs, the total distance. ``cost``: what c_i is (:data:`scheduling.COSTS`)."""
+    sum of costs, the total distance. ``cost``: what c_i is (:data:`scheduling.COSTS`).
+    ``standing``: continue from where a team stands (:class:`~pipflow.team.scheduling.Standing`):
+    the subtasks it lists as ended are not allocated again, the rest are, from the robots'
+    positions, free times and travel so far."""
     if method not in METHODS:
         raise InputError(f"unknown allocation method {method!r}; use one of {', '.join(METHODS)}")
     if mode not in ("subtask", "frontier"):
@@ -540,7 +544,7 @@ def allocate(graph: dict, world: dict, method: str = "scip", constraints: list |
     if not 0 < time_limit < SCIP_INFINITY:  # NaN too
         raise InputError(f"time_limit must be a positive number of seconds, got {time_limit}")
     walk = AllocationWalk(graph, world, method, constraints, linear, travel=travel, speed=speed,
-                          handling=handling, time_limit=time_limit, cost=check_cost(cost))
+                          handling=handling, time_limit=time_limit, cost=check_cost(cost), standing=standing)
     t_start = time.perf_counter()
     if mode == "subtask" or method != "scip":
         walk.run_per_subtask()
@@ -559,7 +563,7 @@ class AllocationWalk:
 
     def __init__(self, graph: dict, world: dict, method: str, constraints: list | None, linear: list | None,
                  *, travel=None, speed: float = 1.0, handling: float = 2.0, time_limit: float = 10.0,
-                 cost: str = DEFAULT_COST):
+                 cost: str = DEFAULT_COST, standing: Standing | None = None):
         self.method = method
         self.time_limit = time_limit
         self.nodes = {n["id"]: n for n in graph["nodes"]}
@@ -567,12 +571,13 @@ class AllocationWalk:
         self.robots, self.skills, self.Q = skill_matrix(world, graph["nodes"])
         self.rules = Rules(self.robots, self.skills, self.Q, constraints, linear, graph["nodes"])
         # the one source of the costs: the IPs optimise what the schedule will report
-        self.timeline = Timeline(world, travel=travel, speed=speed, handling=handling, cost=cost)
+        self.timeline = Timeline(world, travel=travel, speed=speed, handling=handling, cost=cost, standing=standing)
         for n in graph["nodes"]:
             self.timeline.check_route(n)
         self.order = sorted(self.nodes, key=lambda s: self.nodes[s]["index"])
         self.assignments: list[dict] = []
-        self.done: set[str] = set()
+        # a walk that continues: what has ended (or runs to its end) is not allocated again
+        self.done: set[str] = set(standing.ended) & set(self.nodes) if standing is not None else set()
         self.solve_s: list[float] = []
         self.waves: list[dict] = []
 

@@ -231,16 +231,19 @@ def build_graph(
     plan: list[dict],
     metadata: dict,
     mode: str = "exact",
+    parsed: Any = None,
 ) -> dict:
     """The ``graph`` contract of docs/architecture.md for ``plan``.
 
     ``metadata`` is the parsed ``*.actions.yaml`` (``{"actions": {name: {skills, route, fields}}}``).
+    ``parsed``: the problem already parsed (read only), when the caller has it (a recovery builds
+    its problem without the text parser: :mod:`pipflow.execution.recovery`).
     """
     import networkx as nx
 
     if mode not in MODES:
         raise InputError(f"unknown dependency mode {mode!r}; use one of {', '.join(MODES)}")
-    problem = _parse(domain_text, problem_text)
+    problem = parsed if parsed is not None else _parse(domain_text, problem_text)
     grounded = ground_plan(problem, plan)
     actions_meta = (metadata or {}).get("actions", metadata or {})
 

@@ -18,10 +18,17 @@ The allocation cost c_i of a robot for a subtask has two definitions (:data:`COS
 * ``subtask``: the approach plus the route of this subtask only. It picks the nearest robots
   for each subtask whatever they did before: less driving in total (TC-sum), but one robot may
   do most of the work (a larger TC-max and makespan).
+
+A timeline may start from a :class:`Standing` instead of the world's starts: where each robot
+stands (a place or a point), when it is free, how far it has driven, which subtasks have already
+ended (or will, as they run) and when, and the pace of robots found slower than planned. That is
+how a run re-allocates what is left after something went wrong (:mod:`pipflow.execution`): the
+same costs, the same IP, from where everyone stands now.
 """
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass, field
 from typing import Any, Iterable
 
 from pipflow.errors import InputError
@@ -40,11 +47,29 @@ def check_cost(cost: str) -> str:
     return cost
 
 
+@dataclass
+class Standing:
+    """Where a team stands at ``time``, for a timeline that continues from there (module doc).
+
+    ``pos``: a robot's place name or ``[x, y]`` point (robots not given stand at their start);
+    ``free``: when it can start something new; ``driven``: metres it has driven (or will, to
+    finish what it is doing); ``ended``: end times of subtasks done or running (their successors
+    wait for them); ``pace``: the share of the planned speed a robot really drives at (1: as
+    planned), which its new legs then assume and record."""
+
+    time: float = 0.0
+    pos: dict[str, Any] = field(default_factory=dict)
+    free: dict[str, float] = field(default_factory=dict)
+    driven: dict[str, float] = field(default_factory=dict)
+    ended: dict[str, float] = field(default_factory=dict)
+    pace: dict[str, float] = field(default_factory=dict)
+
+
 class Timeline:
     """Robots' positions and free times, and subtasks' end times, as subtasks are committed."""
 
     def __init__(self, world: dict, travel=None, speed: float = 1.0, handling: float = 2.0,
-                 cost: str = DEFAULT_COST):
+                 cost: str = DEFAULT_COST, standing: Standing | None = None):
         # deferred: pulls networkx and numpy (~350 ms; a schedule without travel times needs neither)
         from pipflow.team.travel import TravelMap
 
@@ -63,7 +88,31 @@ class Timeline:
         self.end: dict[str, float] = {}
         self.legs: dict[str, list[dict]] = {r: [] for r in self.robots}
         self.driven: dict[str, float] = {r: 0.0 for r in self.robots}  # metres of the legs so far
+        self.pace: dict[str, float] = {}  # robots slower than planned (absent: 1)
         self.records: list[dict] = []
+        if standing is not None:
+            self._continue_from(standing)
+
+    def _continue_from(self, standing: Standing) -> None:
+        """Start where ``standing`` says the team is (names it does not know are refused)."""
+        named = set(standing.pos) | set(standing.free) | set(standing.driven) | set(standing.pace)
+        unknown = sorted(named - set(self.robots))
+        if unknown:
+            raise InputError(f"the standing names robots the world does not have: {', '.join(unknown)}")
+        for r, p in standing.pos.items():
+            self.pos[r] = p if isinstance(p, str) else (float(p[0]), float(p[1]))
+        self.free.update({r: float(t) for r, t in standing.free.items()})
+        self.driven.update({r: float(m) for r, m in standing.driven.items()})
+        self.end.update({s: float(t) for s, t in standing.ended.items()})
+        for r, f in standing.pace.items():
+            if not 0 < f < math.inf:
+                raise InputError(f"pace of {r} must be a positive finite share of its speed, got {f}")
+            if f != 1.0:
+                self.pace[r] = float(f)
+
+    def speed_of(self, robot: str) -> float:
+        """Metres per second the robot really drives (its pace times the planned speed)."""
+        return self.speed * self.pace.get(robot, 1.0)
 
     # -- costs ------------------------------------------------------------------------------
     def check_route(self, node: dict) -> list[str]:
@@ -102,7 +151,7 @@ class Timeline:
         return max((self.end[p] for p in preds), default=0.0)
 
     def arrival(self, robot: str, node: dict) -> float:
-        return self.free[robot] + self.approach(robot, node) / self.speed
+        return self.free[robot] + self.approach(robot, node) / self.speed_of(robot)
 
     # -- commit -----------------------------------------------------------------------------
     def commit(self, node: dict, robots: list[str], preds: Iterable[str]) -> dict:
@@ -121,22 +170,23 @@ class Timeline:
             if d > 1e-12:
                 a = self.travel.point(self.pos[r])
                 b = self.travel.point(route[0])
-                self.legs[r].append({
+                self.legs[r].append(self._paced(r, {
                     "subtask": node["id"], "from": list(a), "to": list(b),
                     "path": self.travel.path(self.pos[r], route[0]),
-                    "start": self.free[r], "end": self.free[r] + d / self.speed, "distance": d,
-                })
+                    "start": self.free[r], "end": self.free[r] + d / self.speed_of(r), "distance": d,
+                }))
                 self.driven[r] += d
+        speed = min(self.speed_of(r) for r in robots)  # a coalition drives at its slowest member's pace
         t = start + self.handling
         for k in range(1, len(route)):
             d = self.travel.distance(route[k - 1], route[k])
             a, b = self.travel.point(route[k - 1]), self.travel.point(route[k])
             path = self.travel.path(route[k - 1], route[k])
             for r in robots:
-                self.legs[r].append({"subtask": node["id"], "from": list(a), "to": list(b), "path": path,
-                                     "start": t, "end": t + d / self.speed, "distance": d})
+                self.legs[r].append(self._paced(r, {"subtask": node["id"], "from": list(a), "to": list(b),
+                                                    "path": path, "start": t, "end": t + d / speed, "distance": d}))
                 self.driven[r] += d
-            t += d / self.speed + self.handling
+            t += d / speed + self.handling
         end = t
         for r in robots:
             self.pos[r] = route[-1]
@@ -164,6 +214,13 @@ class Timeline:
                "refused": [str(r) for r in node["unexecutable"]]}
         self.records.append(rec)
         return rec
+
+    def _paced(self, robot: str, leg: dict) -> dict:
+        """A leg of a robot slower than planned says at which share of the speed it was planned
+        (``pace``), so that execution does not slow it a second time; other legs are unchanged."""
+        if robot in self.pace:
+            leg["pace"] = self.pace[robot]
+        return leg
 
     def result(self) -> dict:
         """The schedule contract of docs/architecture.md."""

@@ -359,10 +359,13 @@ class TravelMap:
         except (KeyError, TypeError) as exc:
             raise InputError("world has no floor {width, height}") from exc
         fixtures = task_domain(world).places(world)  # footprints with access points, in any domain
+        # barriers: footprints without an access point (a passage found closed during a run,
+        # pipflow.execution): paths go around them like around any fixture
+        blocked = {f"barrier {k + 1}": b for k, b in enumerate(world.get("barriers") or [])}
         self.footprints = {
             name: (float(s["x"]), float(s["y"]), float(s["x"]) + float(s["width"]),
                    float(s["y"]) + float(s["depth"]))
-            for name, s in fixtures.items()
+            for name, s in {**fixtures, **blocked}.items()
         }
         self.obstacles = [
             (x0 - self.inflate, y0 - self.inflate, x1 + self.inflate, y1 + self.inflate)

@@ -15,10 +15,12 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any, Callable, Mapping
 
+from pipflow.execution.capability import ExecutionCapability, Played
 from pipflow.language.offline import NO_USAGE
 from pipflow.resources import data_file
-from pipflow.taskdomain import Facts, GoalCheck, Grounding, Save, TaskDomain, flat_simulation
+from pipflow.taskdomain import Facts, GoalCheck, Grounding, Save, TaskDomain, flat_simulation, pddl_domain_name
 from pipflow.warehouse import agreement
+from pipflow.warehouse import faults as fault_model
 from pipflow.warehouse import problem as writer
 from pipflow.warehouse import world as worlds
 from pipflow.warehouse.language import grounding
@@ -45,7 +47,7 @@ def _stock_goal(parsed: Any, world: dict | None) -> dict:
     return goal_in_world_names(stock_goals(parsed)[0], world)
 
 
-class WarehouseDomain(TaskDomain):
+class WarehouseDomain(TaskDomain, ExecutionCapability):
     """Pallets of products moved between shelves by robots that carry a few units each."""
 
     name = "warehouse"
@@ -63,6 +65,7 @@ class WarehouseDomain(TaskDomain):
                           answer_size=grounding.answer_size)
     name_sections = ("shelves", "products", "robots")
     simulate_options = ("picture", "animation")
+    surprise_names = fault_model.SURPRISE_NAMES
 
     def pddl_domain(self) -> Path:
         return data_file("domains/warehouse.pddl")
@@ -171,7 +174,9 @@ class WarehouseDomain(TaskDomain):
 
     def score_bench_run(self, world_path: str, task: dict, outputs: dict, refusal: str | None,
                         error: str | None) -> dict:
-        return self.score(worlds.load_world(world_path), task.get("goal") or {},
+        """A run under faults is scored against the stock as it really was (its surprises)."""
+        world = fault_model.as_it_was(worlds.load_world(world_path), outputs.get("faults"))
+        return self.score(world, task.get("goal") or {},
                           constraints=task.get("constraints"),
                           feasible=task.get("feasible", True) and task.get("expect") != "refuse",
                           graph=outputs.get("graph"), schedule=outputs.get("schedule"),
@@ -183,3 +188,37 @@ class WarehouseDomain(TaskDomain):
         world = worlds.load_world(world_path) if world_path else None
         fields = {f: list(names) for f, (names, _) in self.rule_names(world).items()} if world else None
         return understanding(task, outputs, status, error_kind, world, fields)
+
+    # -- execution under faults (pipflow.execution): the warehouse's side is warehouse/faults.py
+
+    def play(self, world: dict, schedule: dict, graph: dict | None) -> Played:
+        return fault_model.play(world, schedule, graph)
+
+    def draw_surprise(self, world: dict, schedule: dict, graph: dict | None, rng: Any) -> dict | None:
+        return fault_model.draw_surprise(world, schedule, graph, rng)
+
+    def check_surprise(self, world: dict, given: dict, where: str) -> dict:
+        return fault_model.check_surprise(world, given, where)
+
+    def apply_surprise(self, world: dict, surprise: dict) -> dict:
+        return fault_model.apply_surprise(world, surprise)
+
+    def with_state(self, world: dict, state: Any) -> dict:
+        return fault_model.with_state(world, state)
+
+    def drop_place(self, world: dict, robot: str, site: dict) -> tuple[dict, str]:
+        return fault_model.drop_place(world, robot, site)
+
+    def plan_goal(self, parsed_problem: Any, world: dict) -> Any:
+        return fault_model.plan_goal(parsed_problem, world)
+
+    def observed_problem(self, parsed_problem: Any, world: dict, goal: Any, domain_text: str,
+                         name: str) -> tuple[Any, str]:
+        """The accepted problem with the observed stock (no text parse: fast at any size)."""
+        fast = fault_model.updated_problem(parsed_problem, world)
+        if fast is None:
+            return super().observed_problem(parsed_problem, world, goal, domain_text, name)
+        return fast, self.write_problem(world, goal, pddl_domain_name(domain_text, self.name), name=name)
+
+    def feasibility(self, world: dict, goal: Any, constraints: list[dict]) -> tuple[bool | None, str]:
+        return fault_model.feasibility(world, goal, constraints)

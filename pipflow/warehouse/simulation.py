@@ -204,7 +204,8 @@ class Scene:
             self.slots[name] = SlotGrid(sh, units)
             self.occupant[name] = {}
         sizes = [min(float(sh["width"]) / self.slots[name].cols, float(sh["depth"]) / self.slots[name].rows)
-                 for name, sh in shelves.items()]
+                 for name, sh in shelves.items()
+                 if not sh.get("drop")]  # a stopped robot's cargo place (pipflow.execution): not a shelf to size units by
         self.unit_size = max(0.05, min([0.3] + [0.6 * s for s in sizes]))
         half = self.unit_size / 2
         col = p.createCollisionShape(p.GEOM_BOX, halfExtents=[half] * 3, physicsClientId=c)
@@ -319,13 +320,18 @@ def _access(world: dict, place: str | None) -> Point | None:
 
 def simulate(world: dict, schedule: dict, graph: dict | None = None, goal: dict | None = None, *,
              snapshots: bool = False, animation: bool = False, out_dir: str | Path | None = None,
-             step: float = 0.25, log=None) -> dict:
+             step: float = 0.25, log=None, trace: bool = False) -> dict:
     """Run ``schedule`` in pybullet and return what the world looks like afterwards.
 
     Returns ``{final_stock, executed, failed, failures, exe, travel, tc_max, tc_avg, tc_avg_team, goal_met,
     gcr, peak_load, stray_units, jumps, makespan, trajectories, events, pictures}``; ``jumps``
     lists legs that start away from where the robot stood (a broken schedule: the body jumps); pictures (file
-    names in ``out_dir``) only when ``out_dir`` is given.
+    names in ``out_dir``) only when ``out_dir`` is given. ``trace``: also ``interrupted`` (subtasks
+    whose coalition lost a member between load and unload, with when), for the executor.
+
+    A robot with ``stopped: {time, drop}`` in the world (:mod:`pipflow.execution`) is out of
+    service from ``time``: a load that needs it is refused, it unloads nothing, and what it carries
+    is put on the ``drop`` place at ``time`` (or stays on it, when there is none).
 
     Three phases: set up (the moves, each robot's trajectory, the load/unload instants and the
     sample times), run the schedule in a scene (:class:`Playback`), measure (the result) and,
@@ -335,6 +341,9 @@ def simulate(world: dict, schedule: dict, graph: dict | None = None, goal: dict 
     traj = _trajectories(world, schedule)
     events = _event_times(world, moves, traj)
     makespan, sample_times = _sample_times(schedule, traj, events, step)
+    stops = _stops(world)
+    if stops:
+        sample_times = sorted(set(sample_times) | {t for t, _ in stops.values() if 0 <= t <= makespan})
     out = Path(out_dir) if out_dir else None
     snap_plan = _snapshot_times(events, makespan) if (snapshots and out) else {}
     scene = Scene(world)
@@ -345,12 +354,24 @@ def simulate(world: dict, schedule: dict, graph: dict | None = None, goal: dict 
     finally:
         scene.close()
     result = _measure(run, traj, final_stock, stray, goal, makespan, planned=len(moves))
+    if trace:
+        result["interrupted"] = dict(run.interrupted)
     if out is not None:
         _draw(world, result, run.travel, out, makespan, animation, log)
     return result
 
 
 # ---------------------------------------------------------------------------- set up
+def _stops(world: dict) -> dict[str, tuple[float, str | None]]:
+    """Robots out of service: ``{robot: (from when, drop place or None)}``."""
+    out = {}
+    for r, info in (world.get("robots") or {}).items():
+        stop = info.get("stopped")
+        if stop:
+            out[r] = (float(stop["time"]), stop.get("drop"))
+    return out
+
+
 def _trajectories(world: dict, schedule: dict) -> dict[str, Trajectory]:
     """Each robot's motion as the schedule's legs fix it (a robot without legs stands still)."""
     robots = world.get("robots", {})
@@ -416,6 +437,7 @@ class Playback:
         self.log_events: list[dict] = []
         self.pictures: list[str] = []
         self._loaded: dict[str, bool] = {}
+        self._unloaded: set[str] = set()
         self._next_event = 0
         # only robots with legs move, and each only from its first leg's start to its last leg's
         # end: pybullet work follows the robots a run uses, not the size of the fleet
@@ -423,12 +445,35 @@ class Playback:
                         if tr.segments and r in scene.robot_body}
         self._movers = sorted(self._window, key=lambda r: self._window[r][0])
         self._settled: set[str] = set()
+        self.stops = _stops(world)
+        self.out: set[str] = set()  # robots out of service by now
+        self.interrupted: dict[str, float] = {}
 
     def play(self, sample_times: list[float], snap_plan: dict[str, float], out: Path | None) -> None:
         for t in sample_times:
             self.move_robots(t)
+            self.apply_stops(t)
             self.apply_events(t)
             self.take_snapshots(t, snap_plan, out)
+
+    def apply_stops(self, t: float) -> None:
+        """Robots whose stop is due: out of service from now; what they carry goes on their drop
+        place (if they have one); a loaded move they belong to is interrupted."""
+        for r, (when, drop) in self.stops.items():
+            if r in self.out or when > t + 1e-9:
+                continue
+            self.out.add(r)
+            for mid, loaded in self._loaded.items():
+                m = self.by_id[mid]
+                if loaded and r in m.robots and mid not in self._unloaded:
+                    self.interrupted.setdefault(mid, round(when, 3))
+            held = self.scene.carried.get(r) or []
+            if held and drop in self.scene.occupant:
+                for body in held:
+                    self.scene.place_on_shelf(body, drop)
+                self.scene.carried[r] = []
+            self.log(f"{r} is out of service from t={when:.1f}"
+                     + (f"; {len(held)} unit(s) it carried are on {drop}" if held and drop in self.scene.occupant else ""))
 
     def move_robots(self, t: float) -> None:
         """Put every moving robot where its trajectory says at ``t``; add the metres its body went."""
@@ -458,6 +503,7 @@ class Playback:
             m = self.by_id[mid]
             if kind == 1:
                 reasons = _check(scene, self.world, m)
+                reasons += [f"{r} is out of service (stopped at t={self.stops[r][0]:.1f})" for r in m.robots if r in self.out]
                 if reasons:
                     self.failures.append({"subtask": m.id, "action": m.action, "args": m.args,
                                           "time": round(et, 3), "reasons": reasons})
@@ -468,8 +514,19 @@ class Playback:
                     self._loaded[m.id] = True
                     self.log_events.append({"time": round(et, 3), "subtask": m.id, "event": "load"})
             elif self._loaded.get(m.id):
-                _unload(scene, m)
-                self.executed += 1
+                # a robot that is not at the target (held up on the way) delivers nothing
+                tgt = _access(self.world, m.target)
+                away = [r for r in m.robots if r not in self.out and r in scene.robot_body and tgt is not None
+                        and _dist(scene.robot_xy(r), tgt) > ARRIVAL_TOLERANCE]
+                if away:
+                    self.failures.append({"subtask": m.id, "action": m.action, "args": m.args, "time": round(et, 3),
+                                          "reasons": [f"{', '.join(away)} not at {m.target}: what they carry was not "
+                                                      "delivered"]})
+                    self.log(f"{m.id} not delivered at t={et:.1f}: {', '.join(away)} not at {m.target}")
+                _unload(scene, m, self.out | set(away))
+                self._unloaded.add(m.id)
+                if m.id not in self.interrupted and not away:  # else not all it carried arrived
+                    self.executed += 1
                 self.log_events.append({"time": round(et, 3), "subtask": m.id, "event": "unload"})
                 if m.target in scene.occupant:  # an unload changes its target's load only
                     stock, _ = scene.count_stock(only=m.target)
@@ -579,8 +636,11 @@ def _load(scene: Scene, world: dict, m: Move) -> None:
         scene.move_robot(order[0], scene.robot_xy(order[0]))
 
 
-def _unload(scene: Scene, m: Move) -> None:
+def _unload(scene: Scene, m: Move, out: set[str] = frozenset()) -> None:
+    """The coalition puts what it carries on the target (a robot out of service puts nothing)."""
     for r in m.robots:
+        if r in out:
+            continue
         for body in scene.carried.get(r, []):
             scene.place_on_shelf(body, m.target)
         if r in scene.carried:

@@ -1,0 +1,169 @@
+"""Recovery, cheapest first: the mechanics the executor chooses between.
+
+* :func:`reallocate`: the remaining subtasks of the plan to the robots still working, with the
+  run's own allocator, rules and skills (the paper's IP through
+  :class:`pipflow.team.allocation.AllocationWalk`), from where everyone stands and when each is
+  free (:class:`pipflow.team.scheduling.Standing`). A lost robot is kept out by one more rule,
+  ``never``, so the run's own rules keep naming it without error.
+* :func:`replan`: the observed state written as a new PDDL problem through the task domain's own
+  writer, to the same goal, checked by the domain's verifier, solved by the run's planner (with
+  its fallback), and turned into a dependency graph the same way (:func:`pipflow.team.dependency.build_graph`).
+  A goal the verifier finds impossible, or a problem the planner proves unsolvable, is a
+  :class:`Refused` with the reason.
+"""
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+from typing import Any
+
+from pipflow.errors import InputError, PlanningError
+from pipflow.liberrors import UNIFIED_PLANNING, library_errors
+from pipflow.pddl.common import parse
+from pipflow.pddl.names import plan_in_world_names
+from pipflow.pddl.solver import Status, solve_problem
+from pipflow.team.allocation import METHODS, AllocationWalk
+from pipflow.team.dependency import build_graph
+from pipflow.team.scheduling import Standing
+
+#: the planner pipflow ships for transport-shaped problems (its robots' capacities come from the
+#: domain's ``planner_params``), as the ``pddl.solve`` step names it
+TRANSPORT_PLANNER = "pipflow-transport"
+#: the rule that keeps a lost robot out of every new coalition
+OUT_OF_SERVICE = "out of service"
+
+
+class Refused(Exception):
+    """The goal cannot be reached any more; the message says why."""
+
+
+@dataclass
+class Planning:
+    """How the run planned, so that a recovery plans the same way: the PDDL domain and its action
+    metadata, the accepted problem (its goal is the goal), the planner and its settings, the
+    dependency graph's mode, the allocator and its cost, the robot rules, speed and handling."""
+
+    domain_text: str
+    metadata: dict
+    problem: str
+    planner: str = TRANSPORT_PLANNER
+    planner_params: dict | None = None
+    fallback: str | None = None
+    planner_timeout: float = 60.0
+    graph_mode: str = "deorder"
+    method: str = "scip"
+    mode: str = "subtask"
+    cost: str = "total"
+    constraints: list = field(default_factory=list)
+    speed: float = 1.0
+    handling: float = 2.0
+    time_limit: float = 10.0
+
+
+def rules_without(constraints: list, lost: list[str]) -> list:
+    """The run's rules plus one that keeps ``lost`` robots out of every subtask."""
+    return list(constraints or []) + ([{"never": sorted(lost), "words": OUT_OF_SERVICE}] if lost else [])
+
+
+def cut_off(graph: dict, standing: Standing, robots: list[str], travel: Any) -> list[dict]:
+    """Rules that keep each robot off the subtasks it can no longer reach (a closed passage walls
+    a part of the floor off): one ``never`` rule per (robot, subtask), matched on the subtask's
+    action and fields. Raises :class:`Refused` for a subtask whose own route is cut in two."""
+    rules: list[dict] = []
+    for node in graph["nodes"]:
+        if node["id"] in standing.ended:
+            continue
+        route = list(node.get("route") or [])
+        try:
+            travel.route_length(route)
+        except InputError as err:
+            raise Refused(f"{node['id']} ({node.get('action')} {' '.join(map(str, node.get('args', [])))}) cannot be "
+                          f"done any more: {err}") from None
+        for r in robots:
+            try:
+                travel.distance(standing.pos.get(r, r), route[0])
+            except InputError:
+                rules.append({"never": [r], "action": node.get("action"), **(node.get("fields") or {}),
+                              "words": f"{r} cannot reach {route[0]}"})
+    return rules
+
+
+def reallocate(graph: dict, world: dict, standing: Standing, planning: Planning, lost: list[str],
+               travel: Any, extra: list[dict] | None = None) -> tuple[dict, Any]:
+    """Allocate every subtask of ``graph`` that ``standing`` does not list as ended, from where
+    the team stands (module docstring). Returns the allocation (its contract) and the timeline
+    (its records and legs are the new part of the schedule). Raises AllocationError when a
+    subtask finds no coalition among the robots still working. ``extra``: more rules (:func:`cut_off`)."""
+    if planning.method not in METHODS:
+        raise InputError(f"unknown allocation method {planning.method!r}; use one of {', '.join(METHODS)}")
+    started = time.perf_counter()
+    walk = AllocationWalk(graph, world, planning.method, rules_without(planning.constraints, lost) + list(extra or []), None,
+                          travel=travel, speed=planning.speed, handling=planning.handling,
+                          time_limit=planning.time_limit, cost=planning.cost, standing=standing)
+    if planning.mode == "frontier" and planning.method == "scip":
+        walk.run_by_waves()
+    else:
+        walk.run_per_subtask()
+    return walk.result(planning.mode, time.perf_counter() - started), walk.timeline
+
+
+@dataclass
+class Replanned:
+    """A new team plan from the observed state: its problem text, plan, graph, and the planner's words."""
+
+    problem: str
+    plan: list[dict]
+    graph: dict
+    message: str
+    seconds: float
+
+
+def replan(domain: Any, world: dict, goal: Any, planning: Planning, name: str) -> Replanned:
+    """Write ``world``'s state (the observed one, robots still working only) as a problem to
+    ``goal``, verify the goal, solve, build the graph (module docstring). Raises :class:`Refused`
+    when the goal is impossible or no plan exists, PlanningError when the planner times out."""
+    started = time.perf_counter()
+    with library_errors(UNIFIED_PLANNING, PlanningError, "reading the accepted problem"):
+        accepted = parse(planning.domain_text, planning.problem)
+    parsed, text = domain.observed_problem(accepted, world, goal, planning.domain_text, name)
+    judged = domain.check_goal(parsed, world)
+    if judged.refusal:
+        raise Refused(judged.refusal)
+    params = planning.planner_params
+    if planning.planner == TRANSPORT_PLANNER:
+        known = domain.planner_params(world, planning.constraints)
+        if known is not None:
+            params = {**known, **(params or {})}
+    result = solve_problem(parsed, planning.planner, params, planning.planner_timeout)
+    message = result.message
+    if result.status in (Status.ERROR, Status.TIMEOUT) and planning.fallback and planning.fallback != planning.planner:
+        second = solve_problem(parsed, planning.fallback, None, planning.planner_timeout)
+        message = f"{message}; fell back to {planning.fallback}: {second.message}"
+        result = second
+    if result.status == Status.UNSOLVABLE:
+        raise Refused(f"no plan reaches the goal from the observed state ({message})")
+    if result.status == Status.TIMEOUT:
+        raise PlanningError(message)
+    if result.plan is None:
+        raise PlanningError(f"re-planning failed: {message}")
+    plan = plan_in_world_names(result.plan, world)
+    graph = build_graph(planning.domain_text, text, plan, planning.metadata, mode=planning.graph_mode, parsed=parsed)
+    return Replanned(text, plan, graph, message, time.perf_counter() - started)
+
+
+def renamed(graph: dict, prefix: str, offset: int) -> dict:
+    """A graph whose subtask ids carry ``prefix`` (``r1-s3``) and whose indices start at
+    ``offset``: a re-planned part never shares an id or a position with the plan before it."""
+    ids = {n["id"]: f"{prefix}{n['id']}" for n in graph["nodes"]}
+    nodes = [{**n, "id": ids[n["id"]], "index": int(n["index"]) + offset} for n in graph["nodes"]]
+    return {**graph, "nodes": nodes, "edges": [[ids[u], ids[v]] for u, v in graph["edges"]]}
+
+
+def waits(running: list[dict], new: list[dict]) -> list[list[str]]:
+    """Edges from each running subtask to each new one that visits a place it visits: a new plan
+    starts from the state after the running subtasks end, so where they touch, it waits."""
+    out = []
+    for r in running:
+        places = set(r.get("route") or [])
+        out += [[r["id"], n["id"]] for n in new if places & set(n.get("route") or [])]
+    return out

@@ -1,0 +1,116 @@
+"""The bench's view of runs under faults (``--faults``, ``--matrix faults=...``): per run, what
+went wrong and how the run recovered; per variant, SR with and without the runs a fault made
+impossible, the refusals after a fault (right when the goal was out of reach, wrong otherwise),
+makespan and TC, and the seconds each recovery took.
+
+Why SR needs a second denominator: a run that loses the only robot able to open the fridge
+cannot meet its goal, and its right answer is a clear refusal. ``sr`` stays the share of runs
+whose goal was met in the end (as without faults); ``sr_feasible`` is that share among the runs
+whose goal was still reachable after the faults, as the task domain's feasibility check judged
+it from the observed state (never assumed); ``refused_right`` counts the refusals of runs it
+judged unreachable, ``refused_wrong`` those it judged reachable. Rows of runs without faults
+gain no key, so a bench without faults reads exactly as before.
+"""
+from __future__ import annotations
+
+from statistics import mean
+from typing import Any
+
+from pipflow.metrics import counts_for_travel
+
+#: the columns runs.csv gains when some run had faults
+FAULT_FIELDS = ["faults", "fault_outcome", "feasible_after_faults", "recoveries", "recovery_actions",
+                "recovery_seconds"]
+
+
+def fault_columns(outputs: dict, status: str) -> dict:
+    """The row's fault columns from a run's outputs (none: the run had no faults)."""
+    faults = [f for f in outputs.get("faults") or [] if isinstance(f, dict)]
+    if not faults:
+        return {}
+    rounds = [r for r in outputs.get("recoveries") or [] if isinstance(r, dict)]
+    feasible = outputs.get("feasible_after_faults")
+    if status == "succeeded":
+        outcome = "succeeded"
+    elif status == "refused":
+        outcome = {False: "refused: out of reach", True: "refused: still reachable"}.get(feasible, "refused: not judged")
+    else:
+        outcome = status
+    return {"faults": [f.get("name") or f.get("kind") for f in faults],
+            "fault_detail": [{k: f.get(k) for k in ("kind", "robot", "time", "occurred", "detected") if f.get(k) is not None}
+                             for f in faults],
+            "fault_outcome": outcome, "feasible_after_faults": feasible, "recoveries": len(rounds),
+            "recovery_actions": [r.get("action") for r in rounds],
+            "recovery_seconds": [r.get("seconds") for r in rounds if r.get("seconds") is not None]}
+
+
+def fault_summary(rows: list[dict]) -> dict | None:
+    """Per variant (module docstring); None when no run of it had faults."""
+    if not any(r.get("faults") for r in rows):
+        return None
+    reachable = [r for r in rows if r.get("feasible_after_faults") is not False]
+    refused = [r for r in rows if r.get("status") == "refused" and r.get("faults")]
+    ok = [r for r in rows if r.get("success")]
+    moved = [r for r in rows if counts_for_travel(r)]
+    seconds = [s for r in rows for s in r.get("recovery_seconds") or []]
+    actions: dict[str, int] = {}
+    for r in rows:
+        for a in r.get("recovery_actions") or []:
+            actions[a] = actions.get(a, 0) + 1
+    return {
+        "runs": len(rows), "with_faults": sum(1 for r in rows if r.get("faults")),
+        "sr": len(ok) / len(rows) if rows else None,
+        "reachable": len(reachable),
+        "sr_feasible": sum(1 for r in reachable if r.get("success")) / len(reachable) if reachable else None,
+        "refused_right": sum(1 for r in refused if r.get("feasible_after_faults") is False),
+        "refused_wrong": sum(1 for r in refused if r.get("feasible_after_faults") is True),
+        "failed": sum(1 for r in rows if r.get("status") not in ("succeeded", "refused")),
+        "makespan": _mean([r.get("makespan") for r in moved]),
+        "tc_max": _mean([r.get("tc_max") for r in moved]),
+        "tc_avg": _mean([r.get("tc_avg") for r in moved]),
+        "recoveries": actions, "recovery_seconds_mean": _mean(seconds),
+        "recovery_seconds_max": max(seconds) if seconds else None,
+    }
+
+
+def _mean(xs: list[Any]) -> float | None:
+    xs = [float(x) for x in xs if isinstance(x, (int, float))]
+    return mean(xs) if xs else None
+
+
+def _f(x: Any, digits: int = 1) -> str:
+    return "--" if x is None else f"{x:.{digits}f}"
+
+
+def _pct(x: Any) -> str:
+    return "--" if x is None else f"{100 * x:.0f}"
+
+
+def fault_table(results: dict) -> str | None:
+    """SR, SR where the goal stayed reachable, refusals, makespan, TC and recovery seconds per
+    variant, side by side (variants without faults included, for the comparison); None when
+    no variant had faults."""
+    variants = results.get("variants") or []
+    if not any(v.get("faults") for v in variants):
+        return None
+    lines = ["### Faults and recovery", "",
+             "| variant | runs | SR (%) | reachable | SR where reachable (%) | refused: out of reach / still reachable "
+             "| failed | makespan (s) | TC max/avg (m) | recoveries | recovery s (mean/max) |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
+    for v in variants:
+        f = v.get("faults")
+        s = v.get("summary") or {}
+        if f is None:  # no faults: every run's goal was reachable
+            lines.append(f"| {v['name']} | {s.get('runs')} | {_pct(s.get('sr'))} | {s.get('runs')} | {_pct(s.get('sr'))} "
+                         f"| 0 / 0 | -- | {_f(_variant_makespan(v))} | {_f(s.get('tc_max'))}/{_f(s.get('tc_avg'))} | -- | -- |")
+            continue
+        acts = ", ".join(f"{k} {n}" for k, n in sorted(f["recoveries"].items())) or "none"
+        lines.append(f"| {v['name']} | {f['runs']} | {_pct(f['sr'])} | {f['reachable']} | {_pct(f['sr_feasible'])} "
+                     f"| {f['refused_right']} / {f['refused_wrong']} | {f['failed']} | {_f(f['makespan'])} "
+                     f"| {_f(f['tc_max'])}/{_f(f['tc_avg'])} | {acts} "
+                     f"| {_f(f['recovery_seconds_mean'], 3)}/{_f(f['recovery_seconds_max'], 3)} |")
+    return "\n".join(lines) + "\n"
+
+
+def _variant_makespan(variant: dict) -> float | None:
+    return _mean([t.get("makespan") for t in variant.get("tasks") or []])

@@ -1,0 +1,386 @@
+"""Execution under faults (issue 27): each fault kind, each recovery path (continue, re-allocate,
+re-plan, refuse), a run that takes two faults, faults off meaning the paper's pipeline, the bench
+and the report. Every run goes through the real pipeline: the offline reader, the planners
+(pipflow-transport, ENHSP), SCIP's allocation, the pybullet warehouse and the home simulator.
+
+The faults are placed from the run without faults (a robot on its way, a robot carrying, a shelf a
+robot takes from), so a test says what it exercises rather than trusting a seed's draw."""
+from __future__ import annotations
+
+import csv
+import json
+import math
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+import pipflow
+from pipflow.execution import faults as fk
+from pipflow.experiments.benchmarking import RESULT_FIELDS
+from pipflow.team.scheduling import Standing, Timeline
+from pipflow.team.trajectory import ARRIVAL_TOLERANCE
+
+REPO = Path(__file__).resolve().parent.parent
+WH01 = "There should be 7 product 1 in shelf 3."
+WH10 = "shelf4 stores a dozen product3 and a quintet of product1."
+
+
+def run(tmp_path: Path, command: str, workflow: str = "warehouse", **inputs):
+    return pipflow.run(workflow, command=command, runs_dir=tmp_path / "runs", cache=False, **inputs)
+
+
+def step_outputs(run_, step: str) -> dict:
+    data = json.loads((run_.record / "steps" / step / "outputs.json").read_text())
+    return data.get("outputs", data)
+
+
+def legs_of(schedule: dict, robot: str) -> list[dict]:
+    return ((schedule.get("robots") or {}).get(robot) or {}).get("legs") or []
+
+
+def leg_where(schedule: dict, pick) -> tuple[str, dict, dict]:
+    """The first (robot, leg, subtask record) of the schedule for which ``pick(leg, record)``."""
+    records = {s["id"]: s for s in schedule["subtasks"]}
+    for r in sorted(schedule["robots"]):
+        for leg in legs_of(schedule, r):
+            rec = records.get(leg.get("subtask"))
+            if rec is not None and pick(leg, rec):
+                return r, leg, rec
+    raise AssertionError("no such leg in the schedule")
+
+
+def approach(leg: dict, rec: dict) -> bool:
+    """A leg on the way to a subtask, before its work begins (long enough to be stopped on)."""
+    return float(leg["end"]) <= float(rec["start"]) + 1e-9 and float(leg["end"]) - float(leg["start"]) > 2.0
+
+
+def carrying(leg: dict, rec: dict) -> bool:
+    """A leg of a subtask's route, after the load (the robot carries units)."""
+    return float(leg["start"]) > float(rec["start"]) and float(leg["end"]) - float(leg["start"]) > 2.0
+
+
+def crosses(path: list, rect: tuple[float, float, float, float]) -> bool:
+    """Does a polyline pass through the open rectangle? (sampled every 5 cm)"""
+    for a, b in zip(path, path[1:]):
+        n = max(2, int(math.dist(a, b) / 0.05))
+        for k in range(n + 1):
+            x, y = a[0] + (b[0] - a[0]) * k / n, a[1] + (b[1] - a[1]) * k / n
+            if rect[0] < x < rect[2] and rect[1] < y < rect[3]:
+                return True
+    return False
+
+
+@pytest.fixture(scope="module")
+def base(tmp_path_factory):
+    """WH10 and WH01 without faults, seed 3: the schedules the faults are placed in."""
+    tmp = tmp_path_factory.mktemp("base")
+    return {"wh10": run(tmp, WH10, seed=3), "wh01": run(tmp, WH01, seed=3)}
+
+
+# ------------------------------------------------------------------------------------------
+# faults off: the paper's pipeline, unchanged
+# ------------------------------------------------------------------------------------------
+def test_without_faults_nothing_changes(tmp_path, base):
+    """`none` skips the executor; a fault list that asks for nothing passes everything through."""
+    a = base["wh10"]
+    b = run(tmp_path, WH10, seed=3, faults="none")
+    c = run(tmp_path, WH10, seed=3, faults="off")
+    assert a.ok and b.ok and c.ok
+    assert a.outputs == b.outputs
+    assert a.outputs["faults"] is None and a.outputs["recoveries"] is None
+    events = [json.loads(line) for line in (b.record / "events.jsonl").read_text().splitlines()]
+    assert any(e.get("event") == "skip" and e.get("step") == "execute" for e in events)
+    for key in ("goal", "plan", "schedule", "graph", "makespan", "tc_max", "tc_avg", "goal_met", "exe"):
+        assert c.outputs[key] == a.outputs[key], key
+    assert c.outputs["faults"] == [] and c.outputs["recoveries"] == []
+
+
+# ------------------------------------------------------------------------------------------
+# robot loss: re-allocate, re-plan, and the monitor's timing
+# ------------------------------------------------------------------------------------------
+def test_robot_lost_on_its_way_is_replaced_by_reallocation(tmp_path, base):
+    schedule = base["wh10"].outputs["schedule"]
+    robot, leg, rec = leg_where(schedule, approach)
+    t = round((float(leg["start"]) + float(leg["end"])) / 2, 3)
+    r = run(tmp_path, WH10, seed=3, faults=[{"kind": "robot-loss", "robot": robot, "time": t}])
+    assert r.ok, r.error
+    (fault,), (first,) = r.outputs["faults"], r.outputs["recoveries"]
+    assert fault["occurred"] and fault["detected"] == pytest.approx(t)  # the heartbeat stops: known at once
+    assert first["cause"]["kind"] == "stopped" and first["action"] == "re-allocate"
+    assert rec["id"] in first["reallocated"] and robot in first["lost"]
+    done = r.outputs["schedule"]
+    assert all(robot not in s["robots"] for s in done["subtasks"] if float(s["start"]) > t)
+    assert max(float(l["end"]) for l in legs_of(done, robot)) <= t + 1e-6  # it moved no more
+    sim = r.outputs["simulation"]
+    assert sim["goal_met"] and not sim["failures"]
+    assert {p: sim["final_stock"]["shelf4"][p] for p in ("product3", "product1")} == {"product3": 12, "product1": 5}
+    # robots on their way to work not yet begun stopped where they were and were given new legs from there
+    cut = [l for rr in done["robots"] for l in legs_of(done, rr) if l.get("cut") and l.get("done")]
+    assert cut and all(float(l["end"]) == pytest.approx(t) for l in cut)
+
+
+def test_robot_lost_while_carrying_leaves_its_load_and_the_run_replans(tmp_path, base):
+    schedule = base["wh10"].outputs["schedule"]
+    robot, leg, rec = leg_where(schedule, carrying)
+    t = round((float(leg["start"]) + float(leg["end"])) / 2, 3)
+    r = run(tmp_path, WH10, seed=3, faults=[{"kind": "robot-loss", "robot": robot, "time": t}])
+    assert r.ok, r.error
+    (first,) = r.outputs["recoveries"]
+    assert first["action"] == "re-plan" and rec["id"] in first["broken"]
+    assert first["replanned"] and all(s.startswith("r1-") for s in first["replanned"])
+    assert first["feasible"] is True
+    sim = r.outputs["simulation"]
+    assert sim["goal_met"] and not sim["failures"]
+    drop = f"{robot}-cargo"
+    assert drop in sim["final_stock"]  # its units lay where it stopped: a place of the new plan
+    before = {p: sum(items.get(p, 0) for items in base["wh10"].outputs["simulation"]["final_stock"].values())
+              for p in ("product1", "product3")}
+    after = {p: sum(items.get(p, 0) for items in sim["final_stock"].values()) for p in before}
+    assert after == before  # every unit is accounted for, on a shelf or on the stopped robot
+    assert r.outputs["faults"][0]["drop"] == drop
+
+
+def test_goal_out_of_reach_after_a_loss_is_refused_saying_what_and_what_was_done(tmp_path):
+    """The handler is the only robot that opens the fridge: lost before it does, the goal is out
+    of reach; exit 3, the reason, what was carried out, and the record of it."""
+    out = subprocess.run([sys.executable, "-m", "pipflow.engine.cli", "run", "household",
+                          "-i", "command=Put the apple in the fridge.", "-i", "team=lifters-handler",
+                          "-i", "faults=[{kind: robot-loss, robot: robot6, time: 0.5}]",
+                          "--runs-dir", str(tmp_path / "runs")], capture_output=True, text=True, cwd=tmp_path)
+    assert out.returncode == 3, out.stderr + out.stdout
+    assert "Traceback" not in out.stderr
+    text = out.stderr + out.stdout
+    assert "robot6" in text and "open" in text and "cannot be reached" in text and "Carried out" in text
+    record = next((tmp_path / "runs").iterdir())
+    execute = json.loads((record / "steps" / "execute" / "outputs.json").read_text())
+    execute = execute.get("outputs", execute)
+    assert execute["feasible"] is False and "open" in execute["feasibility"]
+    assert execute["recoveries"][-1]["action"] == "refuse"
+    sim = json.loads((record / "steps" / "simulate" / "outputs.json").read_text())
+    assert "executed" in sim.get("outputs", sim)  # the simulation of what was done is kept
+
+
+def test_two_faults_in_one_run(tmp_path, base):
+    """Two robots lost at two moments: two rounds, each from where the team then stands."""
+    schedule = base["wh10"].outputs["schedule"]
+    first, leg1, _ = leg_where(schedule, approach)
+    t1 = round((float(leg1["start"]) + float(leg1["end"])) / 2, 3)
+    second = next(r for r in sorted(schedule["robots"], key=lambda r: -len(legs_of(schedule, r)))
+                  if r != first and legs_of(schedule, r))
+    t2 = round(t1 + 3.0, 3)
+    r = run(tmp_path, WH10, seed=3, faults=[{"kind": "robot-loss", "robot": first, "time": t1},
+                                            {"kind": "robot-loss", "robot": second, "time": t2}])
+    assert r.ok, r.error
+    rounds = r.outputs["recoveries"]
+    assert [x["cause"]["robot"] for x in rounds] == [first, second]
+    assert rounds[1]["lost"] == sorted([first, second])
+    done = r.outputs["schedule"]
+    for robot, t in ((first, t1), (second, t2)):
+        assert all(robot not in s["robots"] for s in done["subtasks"] if float(s["start"]) > t)
+    assert r.outputs["simulation"]["goal_met"]
+
+
+def test_robot_loss_drawn_from_the_seed_is_reproducible(tmp_path):
+    a = run(tmp_path, WH10, seed=5, faults="robot-loss=1")
+    b = run(tmp_path, WH10, seed=5, faults="robot-loss=1")
+    assert a.ok and b.ok
+    assert a.outputs["faults"] == b.outputs["faults"] and a.outputs["faults"][0]["drawn"]
+    assert a.outputs["simulation"]["final_stock"] == b.outputs["simulation"]["final_stock"]
+
+
+# ------------------------------------------------------------------------------------------
+# stock surprise, slowdown, closed passage
+# ------------------------------------------------------------------------------------------
+def _source(base_run) -> tuple[str, str, dict]:
+    graph = base_run.outputs["graph"]
+    node = graph["nodes"][0]
+    rec = next(s for s in base_run.outputs["schedule"]["subtasks"] if s["id"] == node["id"])
+    return node["fields"]["from"], node["fields"]["product"], rec
+
+
+def test_stock_surprise_is_found_on_arrival_and_the_run_replans(tmp_path, base):
+    shelf, product, rec = _source(base["wh01"])
+    world = base["wh01"].outputs  # the records say what the world file says
+    r = run(tmp_path, WH01, seed=3, faults=[{"kind": "stock-surprise", "place": shelf, "product": product, "count": 1}])
+    assert r.ok, r.error
+    (first,) = r.outputs["recoveries"]
+    assert first["cause"]["kind"] == "surprise" and first["cause"]["place"] == shelf
+    # known when the first robot arrives there, before it takes anything: the load's moment
+    assert first["time"] <= float(rec["start"]) + 30 and first["action"] == "re-plan"
+    assert rec["id"] in first["aborted"]
+    sim = r.outputs["simulation"]
+    assert sim["goal_met"] and sim["final_stock"]["shelf3"]["product1"] == 7 and not sim["failures"]
+    assert world["goal"] == {"shelf3": {"product1": 7}}
+
+
+def test_stock_surprise_the_plan_still_fits_continues(tmp_path, base):
+    shelf, product, _ = _source(base["wh01"])
+    r = run(tmp_path, WH01, seed=3, faults=[{"kind": "stock-surprise", "place": shelf, "product": product, "delta": 2}])
+    assert r.ok, r.error
+    (first,) = r.outputs["recoveries"]
+    assert first["action"] == "continue" and "still reaches the goal" in first["why"]
+    assert r.outputs["schedule"]["subtasks"] == base["wh01"].outputs["schedule"]["subtasks"]
+    assert r.outputs["simulation"]["goal_met"]
+
+
+def test_slow_robot_is_noticed_behind_plan_and_reallocated(tmp_path, base):
+    schedule = base["wh10"].outputs["schedule"]
+    robot, leg, _ = leg_where(schedule, approach)
+    t = float(leg["start"])
+    r = run(tmp_path, WH10, seed=3, faults=[{"kind": "slowdown", "robot": robot, "time": t, "factor": 0.4}])
+    assert r.ok, r.error
+    first = r.outputs["recoveries"][0]
+    assert first["cause"]["kind"] == "behind" and first["cause"]["robot"] == robot
+    # noticed once it is the arrival tolerance behind: 0.75 m at 60% of 1 m/s lost, about 1.25 s
+    assert t < first["time"] <= t + ARRIVAL_TOLERANCE / 0.6 + 0.2
+    assert first["action"] in ("re-allocate", "continue")
+    later = [l for l in legs_of(r.outputs["schedule"], robot) if float(l["start"]) >= first["time"] and not l.get("done")]
+    assert later and all(l.get("pace") == pytest.approx(0.4) for l in later)  # planned at its real speed
+    sim = r.outputs["simulation"]
+    assert sim["goal_met"] and not sim["failures"] and not sim["jumps"]
+
+
+def test_closed_passage_is_found_and_driven_around(tmp_path, base):
+    """The aisle between shelf2 and shelf4 closes from the start: the robot that takes product3
+    from shelf2 meets the barrier, and every leg after that goes round it."""
+    r = run(tmp_path, WH10, seed=3, faults=[{"kind": "passage-closed", "between": ["shelf2", "shelf4"], "time": 0}])
+    assert r.ok, r.error
+    (fault,) = r.outputs["faults"]
+    b = fault["barrier"]
+    rect = (b["x"], b["y"], b["x"] + b["width"], b["y"] + b["depth"])
+    rounds = r.outputs["recoveries"]
+    assert rounds and rounds[0]["cause"]["kind"] == "blocked"
+    t = rounds[0]["time"]
+    for robot, info in r.outputs["schedule"]["robots"].items():
+        for leg in info["legs"]:
+            if float(leg["start"]) >= t - 1e-6:
+                assert not crosses(leg.get("path") or [leg["from"], leg["to"]], rect), (robot, leg)
+    sim = r.outputs["simulation"]
+    assert sim["goal_met"] and not sim["failures"] and not sim["jumps"]
+    assert sim["tc_max"] > base["wh10"].outputs["tc_max"] - 1e-6  # the detour is driven, not skipped
+
+
+# ------------------------------------------------------------------------------------------
+# the household
+# ------------------------------------------------------------------------------------------
+def test_household_compound_task_survives_a_robot_loss(tmp_path):
+    base_run = run(tmp_path, "Put the apple and the tomato in the fridge.", "household", team="homogeneous", seed=1)
+    assert base_run.ok
+    schedule = base_run.outputs["schedule"]
+    robot = next(r for r in sorted(schedule["robots"]) if legs_of(schedule, r))
+    t = round(float(legs_of(schedule, robot)[0]["end"]) / 2, 3)
+    r = run(tmp_path, "Put the apple and the tomato in the fridge.", "household", team="homogeneous", seed=1,
+            faults=[{"kind": "robot-loss", "robot": robot, "time": t}])
+    assert r.ok, r.error
+    assert r.outputs["recoveries"][0]["cause"]["robot"] == robot
+    assert r.outputs["simulation"]["goal_met"] and r.outputs["feasible_after_faults"] is True
+
+
+def test_household_object_surprise_is_fetched_where_it_really_is(tmp_path):
+    r = run(tmp_path, "Put the apple in the fridge.", "household", team="homogeneous", seed=1,
+            faults=[{"kind": "object-surprise", "object": "apple", "in": "sink"}])
+    assert r.ok, r.error
+    first = r.outputs["recoveries"][0]
+    assert first["cause"]["kind"] == "surprise" and first["action"] == "re-plan"
+    assert any(step["args"][:2] == ["apple", "sink"] for step in first["plan"])
+    sim = r.outputs["simulation"]
+    assert sim["goal_met"] and sim["final_state"]["at"]["apple"] == "fridge" and not sim["failures"]
+
+
+# ------------------------------------------------------------------------------------------
+# bad fault specs: clear messages, exit 2
+# ------------------------------------------------------------------------------------------
+@pytest.mark.parametrize("value, words", [
+    ("robot-los=1", "did you mean 'robot-loss'"),
+    ("robot-loss=0", "between 1 and"),
+    ("[{kind: slowdown, factor: 1.5}]", "factor"),
+    ("[{kind: robot-loss, time: 3, after: 1}]", "not both"),
+    ("[{kind: passage-closed, between: [shelf1]}]", "two different places"),
+])
+def test_a_bad_fault_spec_is_refused_before_anything_runs(tmp_path, value, words):
+    out = subprocess.run([sys.executable, "-m", "pipflow.engine.cli", "run", "warehouse", "-i", f"faults={value}",
+                          "--runs-dir", str(tmp_path / "runs")], capture_output=True, text=True, cwd=tmp_path)
+    assert out.returncode == 2 and words in out.stderr and "Traceback" not in out.stderr, out.stderr
+    assert not (tmp_path / "runs").exists() or not any((tmp_path / "runs").iterdir())
+
+
+@pytest.mark.parametrize("spec, words", [
+    ({"kind": "robot-loss", "robot": "robot99"}, "unknown robot 'robot99'"),
+    ({"kind": "object-surprise", "object": "apple", "in": "sink"}, "'object-surprise' is not a fault kind"),
+    ({"kind": "stock-surprise", "place": "shelf9", "product": "product1", "count": 1}, "unknown shelf"),
+])
+def test_a_fault_the_world_has_no_place_for_is_a_user_error(tmp_path, spec, words):
+    r = run(tmp_path, WH01, faults=[spec])
+    assert r.status == "failed" and words in r.error, r.error
+    assert r.error_step == "execute"
+
+
+# ------------------------------------------------------------------------------------------
+# the bench and the report
+# ------------------------------------------------------------------------------------------
+def test_bench_measures_with_and_without_faults_side_by_side(tmp_path):
+    tasks = tmp_path / "tasks.yaml"
+    tasks.write_text(f"world: {REPO / 'benchmarks/warehouse/world.yaml'}\ntasks:\n"
+                     f"  - id: wh-01\n    command: \"{WH01}\"\n    goal: {{shelf3: {{product1: 7}}}}\n"
+                     f"  - id: wh-10\n    command: \"{WH10}\"\n    goal: {{shelf4: {{product3: 12, product1: 5}}}}\n")
+    results = pipflow.bench(tasks, seeds=1, out=tmp_path / "b", matrix={"faults": ["none", "robot-loss=1"]})
+    by = {v["name"]: v for v in results["variants"]}
+    assert "faults" not in by["faults=none"]
+    f = by["faults=robot-loss=1"]["faults"]
+    assert f["runs"] == 2 and f["with_faults"] == 2 and f["sr"] == 1.0 and f["sr_feasible"] == 1.0
+    assert f["recovery_seconds_max"] is not None and sum(f["recoveries"].values()) >= 2
+    table = (tmp_path / "b" / "table.md").read_text()
+    assert "Faults and recovery" in table and "faults=robot-loss=1" in table
+    with (tmp_path / "b" / "runs.csv").open() as fh:
+        header = next(csv.reader(fh))
+    assert "fault_outcome" in header and "recovery_seconds" in header
+    plain = pipflow.bench(tasks, seeds=1, out=tmp_path / "p")
+    with (tmp_path / "p" / "runs.csv").open() as fh:
+        assert next(csv.reader(fh)) == RESULT_FIELDS  # a bench without faults reads as before
+    assert "Faults" not in (tmp_path / "p" / "table.md").read_text() and "faults" not in plain["variants"][0]
+
+
+def test_report_shows_where_and_when_faults_struck(tmp_path, base):
+    schedule = base["wh10"].outputs["schedule"]
+    robot, leg, _ = leg_where(schedule, carrying)
+    t = round((float(leg["start"]) + float(leg["end"])) / 2, 3)
+    r = run(tmp_path, WH10, seed=3, faults=[{"kind": "robot-loss", "robot": robot, "time": t}])
+    page = r.report()
+    html = page.read_text()
+    assert "Faults and recovery" in html and "re-plan" in html and robot in html
+    from PIL import Image
+
+    for name in ("faults-map.png", "faults-gantt.png"):
+        with Image.open(r.record / "report" / name) as img:
+            assert img.size[0] > 300
+
+
+# ------------------------------------------------------------------------------------------
+# the pieces: a timeline that continues, fault specs
+# ------------------------------------------------------------------------------------------
+def test_timeline_continues_from_where_the_team_stands():
+    world = {"floor": {"width": 20, "height": 10},
+             "shelves": {"a": {"x": 2, "y": 6, "width": 4, "depth": 1, "capacity": 9, "access": [4, 5]},
+                         "b": {"x": 12, "y": 6, "width": 4, "depth": 1, "capacity": 9, "access": [14, 5]}},
+             "robots": {"r1": {"start": [1, 1], "skills": {"carry": 1}}, "r2": {"start": [19, 1], "skills": {"carry": 1}}}}
+    standing = Standing(time=10.0, pos={"r1": [10.0, 2.0], "r2": "b"}, free={"r1": 10.0, "r2": 12.0},
+                        driven={"r1": 9.0, "r2": 3.0}, ended={"s0": 11.0}, pace={"r1": 0.5})
+    tl = Timeline(world, standing=standing)
+    node = {"id": "s1", "route": ["a", "b"]}
+    rec = tl.commit(node, ["r1"], ["s0"])
+    first = tl.legs["r1"][0]
+    assert first["from"] == [10.0, 2.0] and first["start"] == 10.0 and first["pace"] == 0.5
+    assert first["end"] == pytest.approx(10.0 + first["distance"] / 0.5)  # at its real pace
+    assert rec["start"] >= 11.0 and rec["start"] == pytest.approx(first["end"])  # after s0, once it arrived
+    assert tl.driven["r1"] == pytest.approx(9.0 + sum(l["distance"] for l in tl.legs["r1"]))
+    assert tl.cost("r2", node) == pytest.approx(3.0 + tl.subtask_cost("r2", node))  # total: travel so far counts
+
+
+def test_fault_counts_and_specs_are_read():
+    specs = fk.parse("robot-loss=2+slowdown, stock-surprise=1", ("stock-surprise",))
+    assert [s.kind for s in specs] == ["robot-loss", "robot-loss", "slowdown", "surprise"]
+    assert fk.parse("none") == [] and fk.parse(None) == [] and fk.parse([]) == []
+    (one,) = fk.parse({"kind": "robot-loss", "robot": "robot2", "after": 2})
+    assert one.given == {"robot": "robot2", "after": 2}
