@@ -163,6 +163,9 @@ class TaskDomain(ABC):
     grounding: ClassVar[Grounding | None] = None
     #: the switches its ``simulate`` reads from ``options`` (the generic step refuses others)
     simulate_options: ClassVar[tuple[str, ...]] = ()
+    #: task-file fields the bench groups its tasks by, in its tables and report (household:
+    #: ``("category",)``: compound, complex, vague); each task row of results.json carries them
+    task_groups: ClassVar[tuple[str, ...]] = ()
 
     def workflow_for(self, name: str) -> str:
         """The workflow that carries out method ``name`` on this domain's worlds

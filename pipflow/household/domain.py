@@ -40,6 +40,7 @@ class HouseholdDomain(TaskDomain):
     workflows = {"pip-llm": "household", "pip-llm-checked": "household-checked"}
     default_prompt = "household_problem"
     rule_fields = RULE_FIELDS
+    task_groups = ("category",)  # the paper's three: compound, complex, vague
 
     def pddl_domain(self) -> Path:
         return data_file("domains/household.pddl")
