@@ -65,10 +65,35 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
     view.add_argument("--no-browser", action="store_true", help="print the address only")
     view.set_defaults(func=cmd_view)
 
+    track = sub.add_parser("mlflow-log", parents=[common],
+                           help="log runs or benches to MLflow (needs the mlflow extra); the records stay pipflow's")
+    track.add_argument("records", nargs="+", metavar="RUN_OR_BENCH", help=RECORD_HELP)
+    track.add_argument("--tracking-uri", default=None,
+                       help="MLflow store (default: $MLFLOW_TRACKING_URI, else MLflow's own default, "
+                            "sqlite:///mlflow.db here); e.g. sqlite:///mlflow.db, file:./mlruns, http://host:5000")
+    track.add_argument("--experiment", default="pipflow", help="MLflow experiment name (default: pipflow)")
+    track.add_argument("--again", action="store_true", help="log a record that is already in the store once more")
+    track.set_defaults(func=cmd_mlflow_log)
+
     compare = sub.add_parser("compare", parents=[common],
                              help="runs, or benches (per variant), side by side with intervals over seeds")
     compare.add_argument("records", nargs="+", metavar="RUN_OR_BENCH", help=RECORD_HELP + " (two or more)")
     compare.set_defaults(func=cmd_compare)
+
+
+def cmd_mlflow_log(args: argparse.Namespace) -> int:
+    # deferred: the MLflow export (and mlflow itself, an optional extra) only for this command
+    from pipflow.records.tracking import log_record
+
+    for ref in args.records:
+        folder = _record(ref, args)
+        done = log_record(folder, tracking_uri=args.tracking_uri, experiment=args.experiment, again=args.again)
+        what = "already logged as" if done.existing else "logged as"
+        extra = f" with {done.children} variant run(s)" if done.children else ""
+        print(f"{folder}: {what} MLflow run {done.run_id}{extra} (experiment {args.experiment!r}, "
+              f"id {done.experiment_id}; store {done.tracking_uri}); see it with `mlflow ui --backend-store-uri "
+              f"{done.tracking_uri}`")
+    return 0
 
 
 def cmd_bench(args: argparse.Namespace) -> int:

@@ -108,6 +108,20 @@ def flat_simulation(simulation: Mapping[str, Any] | None) -> dict | None:
     return {**details, **rest} if isinstance(details, Mapping) else rest
 
 
+def plain_words(value: Any, prefix: str = "") -> list[str]:
+    """``{"a": {"b": [1, 2]}}`` -> ``["a b: 1, 2"]``: any JSON value as lines of words."""
+    if isinstance(value, Mapping):
+        lines: list[str] = []
+        for key, inner in value.items():
+            lines += plain_words(inner, f"{prefix} {key}".strip())
+        return lines
+    if isinstance(value, (list, tuple)):
+        if all(not isinstance(x, (Mapping, list, tuple)) for x in value):
+            return [f"{prefix}: {', '.join(map(str, value))}" if prefix else ", ".join(map(str, value))]
+        return [line for x in value for line in plain_words(x, prefix)]
+    return [f"{prefix}: {value}" if prefix else str(value)]
+
+
 def pddl_domain_name(domain_text: str, default: str) -> str:
     """The name in ``(define (domain NAME)`` of a PDDL domain text, or ``default``: a problem must
     name the domain it is read with."""
@@ -292,6 +306,18 @@ class TaskDomain(ABC):
         file's world, in which meanings are compared. :func:`pipflow.meaning.judge` gives the
         verdict from a comparison of the domain's goals."""
         return None
+
+    # -- the report ----------------------------------------------------------------------------
+
+    def goal_words(self, goal: Any) -> list[str]:
+        """A goal in plain words, a line per condition, for the report's "Understood" (never a
+        Python list). The default spells a mapping out, key by key, lists joined by commas."""
+        return plain_words(goal)
+
+    def floor_plan(self, world: dict) -> list[dict]:
+        """The footprints the replay draws under the robots: ``[{"name", "x", "y", "width",
+        "depth"}]`` in metres (empty: the floor alone)."""
+        return []
 
     def bench_table(self, results: dict, tasks_file: Path) -> str | None:
         """The markdown table of a bench, when the domain groups it its own way (None: the

@@ -148,3 +148,23 @@ class HouseholdDomain(TaskDomain):
 
     def bench_table(self, results: dict, tasks_file: Path) -> str | None:
         return bench_table(results, tasks_file)
+
+    # -- the report ----------------------------------------------------------------------------
+
+    def goal_words(self, goal: Any) -> list[str]:
+        """``fridge holds pumpkin``, ``lettuce: sliced``, ``at least 2 of fruit in fridge``."""
+        if not isinstance(goal, Mapping):
+            return super().goal_words(goal)
+        lines = [f"{place} holds {', '.join(map(str, objs))}" for place, objs in (goal.get("in") or {}).items()]
+        lines += [f"{thing}: {', '.join(map(str, states))}" for thing, states in (goal.get("state") or {}).items()]
+        for c in goal.get("count") or []:
+            if isinstance(c, Mapping):
+                lines.append(f"at least {c.get('at_least')} of {c.get('category')} in {c.get('in')}")
+        rest = {k: v for k, v in goal.items() if k not in ("in", "state", "count")}
+        return lines + (super().goal_words(rest) if rest else [])
+
+    def floor_plan(self, world: dict) -> list[dict]:
+        """The places' footprints (furniture, appliances, receptacles)."""
+        return [{"name": name, "x": float(pl["x"]), "y": float(pl["y"]), "width": float(pl["width"]),
+                 "depth": float(pl["depth"]), "access": list(pl.get("access") or [])}
+                for name, pl in (world.get("places") or {}).items()]

@@ -42,7 +42,9 @@ from pipflow.metrics import upgrade_travel_keys
 from pipflow.records.benchread import BY_KEY, ROW_KEY, Bench, fmt_interval, fmt_value, read_bench, task_commands, task_fields
 from pipflow.records.intervals import LEVEL, STUDENT, WILSON, wilson
 from pipflow.records.matrix import matrix_html, relative_link
-from pipflow.taskdomains import domain_named
+from pipflow.records.replay import replay_section
+from pipflow.taskdomain import plain_words
+from pipflow.taskdomains import domain_named, task_domain
 
 _CHECK_SCRIPT = """<script>
 window.addEventListener('load', function () {
@@ -271,6 +273,7 @@ def _run_body(d: Path, drawn: _Pictures) -> str:
     elif schedule:
         pictures.gantt(schedule, drawn.path("gantt.png"))
         parts.append("<h2>Schedule</h2>" + _img(drawn.src("gantt.png"), "Gantt chart per robot"))
+    parts.append(_replay(d, steps, world, schedule, graph_s[2]["graph"] if graph_s else None))
 
     if sim_s:
         name, sd, sim = sim_s
@@ -325,6 +328,24 @@ def _run_body(d: Path, drawn: _Pictures) -> str:
 
     parts.append("<h2>Steps</h2>" + _table(["step", "outputs"], [[n, ", ".join(sorted(o))] for n, _, o in steps]))
     return "\n".join(parts)
+
+
+def _replay(d: Path, steps, world: Any, schedule: Any, graph: Any) -> str:
+    """The replay section (:mod:`pipflow.records.replay`): the recorded trajectories of whichever
+    step kept them (``trajectories.json``), else the schedule's legs; the floor plan from the
+    world's task domain."""
+    if not isinstance(world, dict) or not isinstance(schedule, dict):
+        return ""
+    recorded = None
+    for name, sd, _ in steps:
+        data = _read(sd / "artifacts" / "trajectories.json")
+        if isinstance(data, dict) and isinstance(data.get("trajectories"), dict):
+            recorded = data
+    try:
+        plan = list(task_domain(world).floor_plan(world))
+    except UserError:  # the world's domain is no longer installed: the floor alone
+        plan = []
+    return replay_section(world, schedule, graph, recorded, plan)
 
 
 # ------------------------------------------------------------------------------------------
@@ -397,9 +418,7 @@ def _understood(steps) -> str:
     lines = list((gen[2].get("explanation") if gen else None) or [])
     goal = (ver[2].get("goal") if ver else None) or (gen[2].get("goal") if gen else None)
     if not lines and isinstance(goal, dict):
-        for place, items in goal.items():
-            for item, value in (items.items() if isinstance(items, dict) else []):
-                lines.append(f"{place} {item}: {_goal_words(value)}")
+        lines = _goal_lines(steps, goal)
     for rule in (gen[2].get("constraints") or []) if gen else []:
         if isinstance(rule, dict):
             lines.append(_rule_words(rule))
@@ -408,13 +427,15 @@ def _understood(steps) -> str:
     return "<h2>Understood</h2><ul class='understood'>" + "".join(f"<li>{_e(x)}</li>" for x in lines) + "</ul>"
 
 
-def _goal_words(value: Any) -> str:
-    if isinstance(value, dict):
-        lo, hi = value.get("at_least"), value.get("at_most")
-        if lo is not None and hi is not None:
-            return f"between {lo} and {hi}"
-        return f"at least {lo}" if lo is not None else f"at most {hi}"
-    return f"exactly {value}"
+def _goal_lines(steps, goal: dict) -> list[str]:
+    """The goal in its task domain's words (``fridge holds pumpkin``, ``shelf4 product3: exactly
+    12``), never a Python list; a domain no longer installed: the goal spelt out generically."""
+    world = (_find(steps, lambda o: isinstance(o.get("world"), dict)) or (None, None, {}))[2].get("world")
+    try:
+        domain = task_domain(world) if isinstance(world, dict) else domain_named(None)
+    except UserError:
+        return plain_words(goal)
+    return list(domain.goal_words(goal))
 
 
 def _rule_words(rule: dict) -> str:
@@ -661,13 +682,11 @@ def _refusals_and_errors(bench: Bench) -> tuple[list, list]:
     for v in bench.variants:
         for tid in bench.task_ids:
             runs = bench.runs_of(v, tid)
-            if runs:
-                right = {str(r.get("error")) for r in runs if r.get("success") and r.get("error")}
-                wrong = {str(r.get("error")) for r in runs if not r.get("success") and r.get("error")}
-            else:  # no runs.json: the task row's first error, placed by its success rate
-                t = bench.tasks[v].get(tid) or {}
-                right = {str(t["error"])} if t.get("error") and t.get("sr") == 1 else set()
-                wrong = {str(t["error"])} if t.get("error") and t.get("sr") != 1 else set()
+            right = {str(r.get("error")) for r in runs if r.get("success") and r.get("error")}
+            wrong = {str(r.get("error")) for r in runs if not r.get("success") and r.get("error")}
+            t = bench.tasks[v].get(tid) or {}
+            if not right and not wrong and t.get("error"):  # rows without errors (older): the task row's, by its SR
+                (right if t.get("sr") == 1 else wrong).add(str(t["error"]))
             refusals += [(v, tid, text) for text in sorted(right)]
             errors += [(v, tid, text) for text in sorted(wrong)]
     return refusals, errors

@@ -15,6 +15,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any, Callable, Mapping
 
+from pipflow.goalcounts import describe, is_bound
 from pipflow.language import grounding
 from pipflow.language.offline import NO_USAGE
 from pipflow.language.parsing import FIELD_KEYS
@@ -172,3 +173,18 @@ class WarehouseDomain(TaskDomain):
         world = worlds.load_world(world_path) if world_path else None
         fields = {f: list(names) for f, (names, _) in self.rule_names(world).items()} if world else None
         return understanding(task, outputs, status, error_kind, world, fields)
+
+    # -- the report ----------------------------------------------------------------------------
+
+    def goal_words(self, goal: Any) -> list[str]:
+        """``shelf4 product3: exactly 12``, ``shelf1 product2: at least 3``: a line per count."""
+        if not isinstance(goal, Mapping):
+            return super().goal_words(goal)
+        return [f"{shelf} {product}: {describe(value) if is_bound(value) else f'exactly {value}'}"
+                for shelf, items in goal.items() if isinstance(items, Mapping) for product, value in items.items()]
+
+    def floor_plan(self, world: dict) -> list[dict]:
+        """The shelves' footprints (and access points)."""
+        return [{"name": name, "x": float(sh["x"]), "y": float(sh["y"]), "width": float(sh["width"]),
+                 "depth": float(sh["depth"]), "access": list(sh.get("access") or [])}
+                for name, sh in (world.get("shelves") or {}).items()]
