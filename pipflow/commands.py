@@ -34,7 +34,7 @@ def register(sub: argparse._SubParsersAction, common: argparse.ArgumentParser) -
     bench.add_argument("--seeds", type=int, default=1, help="runs per task; seeds vary the robots' start positions")
     bench.add_argument("--jobs", type=positive_int, default=None,
                        help="parallel processes, or workers of a local dask cluster (default: CPU count)")
-    bench.add_argument("--out", default=None, help="output directory (default: bench-out/<time>)")
+    bench.add_argument("--out", default=None, help="output directory: new, empty, or a bench's (default: bench-out/<UTC time>-<random>)")
     bench.add_argument("--matrix", action="append", metavar="KEY=V1,V2", help="run variants side by side")
     bench.add_argument("-i", "--input", action="append", metavar="KEY=VALUE", help="set a workflow input for every run")
     bench.add_argument("--no-cache", action="store_true")

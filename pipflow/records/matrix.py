@@ -43,7 +43,7 @@ _SCRIPT = """<script>
     document.querySelectorAll('table.matrix td.cell').forEach(function (td) {
       td.querySelector('.metric').textContent = td.getAttribute('data-m-' + key) || '-';
     });
-    document.querySelectorAll('table.matrix .metric-name').forEach(function (el) {
+    document.querySelectorAll('.metric-name').forEach(function (el) {
       el.textContent = menu.options[menu.selectedIndex].text;
     });
   }

@@ -198,7 +198,7 @@ def replay_html(data: dict) -> str:
             "#replay-svg text.robot{font-size:.42px;fill:#111;text-anchor:middle;font-weight:bold}"
             "#replay-svg text.load{font-size:.36px;fill:#7a2e00;text-anchor:middle}"
             ".replay-wrap{display:flex;gap:1.5em;align-items:flex-start;flex-wrap:wrap}"
-            "#replay-svg{flex:0 1 680px;width:680px;max-width:100%;border:1px solid #ccc;background:white}"
+            "#replay-svg{flex:0 1 600px;width:600px;max-width:100%;border:1px solid #ccc;background:white}"
             ".replay-controls{margin:.4em 0} .replay-controls input[type=range]{width:460px;vertical-align:middle}</style>"
             f"<div class='replay-controls'><button id='replay-play' type='button'>play</button> "
             f"<input id='replay-time' type='range' min='0' max='{data['end']:.3f}' step='0.1' value='0'> "

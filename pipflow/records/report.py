@@ -239,7 +239,7 @@ def _run_body(d: Path, drawn: _Pictures) -> str:
     schedule = sched_s[2]["schedule"] if sched_s else None
 
     # team plan, with the robots the schedule gave each subtask
-    parts.append("<h2>Team plan</h2>")
+    parts.append("<h2 id='plan'>Team plan</h2>")
     plan = plan_s[2]["plan"] if plan_s else None
     if plan is not None:
         # subtask ids as the graph and the Gantt chart name them (s1, s2, ...), not list positions
@@ -258,6 +258,7 @@ def _run_body(d: Path, drawn: _Pictures) -> str:
         parts.append("<p>(no plan in this run)</p>")
 
     mode = inputs.get("pictures") if inputs.get("pictures") in pictures.MODES else "auto"
+    parts.append("<span id='pictures'></span>")  # where a bench's matrix links a run's pictures
     if graph_s and not pictures.wanted(mode, "graph", pictures.size_of("graph", graph_s[2]["graph"])):
         parts.append(f"<h2>Dependency graph</h2><p>not drawn (pictures: {_e(mode)}; "
                      f"{len(graph_s[2]['graph'].get('nodes', []))} subtasks)</p>")
@@ -476,7 +477,7 @@ def _loop_section(rounds: list[dict]) -> str:
             checks.append(f"<h4>verifier: refusal</h4><p>{_e(ver['refusal'])}</p>")
         cards.append(f"<div class='round'>{head}{facts}"
                      + (f"<h4>Prompt</h4>{msgs}" if msgs else "") + answer_html + "".join(checks) + "</div>")
-    return "<h2>Refinement loop</h2>" + "".join(cards)
+    return "<h2 id='loop'>Refinement loop</h2>" + "".join(cards)
 
 
 # ------------------------------------------------------------------------------------------
