@@ -94,6 +94,8 @@ def _summary(value: Any, limit: int = 160, key: str = "") -> str:
         acts = ["(" + " ".join([str(a["action"]), *map(str, a.get("args", []))]) + ")" for a in value]
         more = f" ... ({len(acts)} actions)" if len(acts) > 3 else ""
         return " ".join(acts[:3]) + more
+    if isinstance(value, str) and len(value) <= 4 * limit:  # a sentence (a fallback's reason) is said whole
+        return json.dumps(value)
     if isinstance(value, list) and value and all(isinstance(x, str) for x in value):
         text = "; ".join(value)
         if len(text) <= 4 * limit:

@@ -193,7 +193,7 @@ def gantt(schedule: dict, path: Path) -> Path:
     for k, s in enumerate(schedule.get("subtasks", [])):
         for r in s.get("robots", []):
             ax.barh(row[r], max(float(s["end"]) - float(s["start"]), 1e-3), left=float(s["start"]),
-                    height=0.62, color=colour[s.get("id")], alpha=0.35, edgecolor="black", lw=0.6)
+                    height=0.62, color=colour[s.get("id")], alpha=0.45, edgecolor="black", lw=0.6)
             ax.text(float(s["start"]), row[r], f" {s['id']}", va="center", fontsize=7)
     for r, info in (schedule.get("robots") or {}).items():
         for leg in info.get("legs", []) if r in row else []:
@@ -211,7 +211,7 @@ def gantt(schedule: dict, path: Path) -> Path:
                  + (f"; {idle} idle robot{'s' if idle != 1 else ''} not shown)" if idle else ")"))
     first = subtask_colour(0)
     ax.legend(handles=[Patch(facecolor=TRAVEL_GREY, edgecolor="#999999", label="travel to a subtask, empty"),
-                       Patch(facecolor=first, alpha=0.35, edgecolor="black", label="subtask (id at left): start to end"),
+                       Patch(facecolor=first, alpha=0.45, edgecolor="black", label="subtask (id at left): start to end"),
                        Patch(facecolor=first, alpha=0.9, edgecolor="#333333",
                              label="inside it: travel with the load; the rest: loading, unloading")],
               loc="upper center", bbox_to_anchor=(0.5, -0.16 if len(robots) > 3 else -0.3), ncol=3, fontsize=8,

@@ -91,11 +91,11 @@ def test_household_run_report_shows_the_simulation(tmp_path):
     understood = html.split("<h2>Understood</h2>")[1].split("</ul>")[0]
     assert "fridge holds apple" in understood and "floorlamp: off" in understood
     assert "[" not in understood and "&#x27;" not in understood  # words, not Python lists
-    assert "snapshot_1_start.png" in html and "snapshot_2_end.png" in html
-    assert "<h2>Simulation</h2>" in html  # the household's simulation, shown as the warehouse's is
     with Browser(1400, 1000) as b:
         b.goto(page.as_uri())
         looks_drawn(b.screenshot(tmp_path / "household_run_report.png", full_page=True))
+    assert "snapshot_1_start.png" in html and "snapshot_2_end.png" in html
+    assert "<h2>Simulation</h2>" in html  # the household's simulation, shown as the warehouse's is
     # each snapshot is labelled: the time in the top left corner, names on places and robots
     from PIL import Image
 

@@ -99,7 +99,7 @@ def test_validate_checks_a_plugins_choices(demo_plugin_site, tmp_path):
                   "    with: {text: hi, style: shouty}\n")
     out = pipflow_with_plugin(demo_plugin_site, tmp_path, "validate", str(wf))
     assert out.returncode == 2
-    assert "pick.yaml:6:26: step 'say': argument 'style': 'shouty' is not one of 'plain', 'spaced'" in out.stderr
+    assert "pick.yaml:6:29: step 'say': argument 'style': 'shouty' is not one of 'plain', 'spaced'" in out.stderr
     wf.write_text(wf.read_text().replace("shouty", "spaced"))
     assert pipflow_with_plugin(demo_plugin_site, tmp_path, "validate", str(wf)).returncode == 0
 

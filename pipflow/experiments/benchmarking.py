@@ -495,7 +495,7 @@ def _results(rows: list[dict], tasks: list[dict], config: BenchConfig, wall: flo
     first = variant_results[0]
     return {"summary": first["summary"], "tasks": first["tasks"], "constructions": first["constructions"],
             "variants": variant_results,
-            "config": {"tasks": str(config.tasks_file), "domain": domain, "workflow": config.workflow, "seeds": config.seeds,
+            "config": {"tasks": str(Path(config.tasks_file).resolve()), "domain": domain, "workflow": config.workflow, "seeds": config.seeds,
                        "jobs": config.jobs, "backend": config.backend, "matrix": config.matrix, "inputs": config.inputs},
             "wall_seconds": round(wall, 3),
             "created": _dt.datetime.now(_dt.timezone.utc).isoformat(timespec="seconds")}

@@ -195,15 +195,25 @@ def fmt_difference(a: float | None, b: float | None, metric: Metric) -> str:
     return f"{100 * d:+.0f} pp" if metric.percent else f"{d:+.2f}"
 
 
-def task_fields(config: dict) -> dict[str, dict]:
-    """Each task of the bench's task file by id, read back (empty when the file is gone)."""
-    try:
-        doc = safe_load(read_source(config.get("tasks") or "", "task file"))
-    except Exception:  # a moved or damaged task file only loses what is read from it
+def task_fields(config: dict, bench: Path | None = None) -> dict[str, dict]:
+    """Each task of the bench's task file by id, read back (empty when the file is gone). An
+    older bench names it relative to where it ran: then it is looked for beside the bench folder
+    and above it too."""
+    name = str(config.get("tasks") or "")
+    candidates = [Path(name)] + ([bench.parent / name, bench.parent.parent / name] if bench is not None and name
+                                 and not Path(name).is_absolute() else [])
+    doc = None
+    for candidate in candidates:
+        try:
+            doc = safe_load(read_source(str(candidate), "task file"))
+            break
+        except Exception:  # a moved or damaged task file only loses what is read from it
+            continue
+    if not isinstance(doc, dict):
         return {}
     return {str(t.get("id")): t for t in (doc or {}).get("tasks", []) if isinstance(t, dict)}
 
 
-def task_commands(config: dict) -> dict[str, str]:
+def task_commands(config: dict, bench: Path | None = None) -> dict[str, str]:
     """Each task's command, read back from the bench's task file (empty when it is gone)."""
-    return {tid: str(t.get("command", "")) for tid, t in task_fields(config).items()}
+    return {tid: str(t.get("command", "")) for tid, t in task_fields(config, bench).items()}

@@ -23,7 +23,7 @@ _STYLE = """<style>
 table.matrix { border-collapse: collapse; margin: .5em 0; }
 table.matrix td, table.matrix th { border: 1px solid #bbb; padding: .3em .5em; vertical-align: top; }
 table.matrix th { background: #eef2f7; font-weight: normal; }
-table.matrix th.variant { font-weight: bold; max-width: 12em; word-break: break-word; }
+table.matrix th.variant { font-weight: bold; max-width: 14em; }
 table.matrix td.cell { cursor: pointer; min-width: 8.5em; }
 table.matrix td.cell.picked { outline: 3px solid #1f4e8c; }
 table.matrix .sr { font-weight: bold; } table.matrix .metric { font-variant-numeric: tabular-nums; }
@@ -86,12 +86,13 @@ def matrix_html(benches: list[Bench], link: Callable[[Bench, dict], str | None],
     commands: dict[str, str] = {}
     for b in benches:
         task_ids += [t for t in b.task_ids if t not in task_ids]
-        commands = {**task_commands(b.config), **commands}
+        commands = {**task_commands(b.config, b.path), **commands}
     choices = [m for m in METRICS if m.key != "sr"]
     default = default_metric if default_metric in BY_KEY else "tc_max"
     menu = "".join(f"<option value='{m.key}'{' selected' if m.key == default else ''}>{html.escape(m.heading())}</option>"
                    for m in choices)
-    head = "<tr><th>task</th>" + "".join(f"<th class='variant'>{html.escape(name)}</th>" for _, _, name in columns) + "</tr>"
+    head = "<tr><th>task</th>" + "".join(f"<th class='variant'>{html.escape(name).replace(',', ',<wbr>')}</th>"
+                                         for _, _, name in columns) + "</tr>"
     body = []
     for tid in task_ids + [None]:
         cells = []
@@ -129,6 +130,10 @@ def _cell(b: Bench, variant: str, tid: str | None, name: str, choices, link) -> 
         where = " &middot; ".join(f"<a href='{html.escape(url)}#{anchor}'>{words}</a>" for anchor, words in SECTIONS) \
             if url else "(no run record)"
         outcome = "succeeded" if r.get("success") else "refused" if r.get("refused") else "did not succeed"
+        figures = ", ".join(f"{m.label} {float(r[m.key]):.2f}{(' ' + m.unit) if m.unit else ''}"
+                            for m in (BY_KEY["tc_max"], BY_KEY["makespan"]) if isinstance(r.get(m.key), (int, float))
+                            and r.get("success") and not r.get("refused"))
+        outcome += f" ({figures})" if figures else ""
         err = f"<br><span class='small'>{html.escape(str(r.get('error'))[:300])}</span>" if r.get("error") else ""
         rows.append(f"<li>seed {html.escape(str(r.get('seed')))}: {outcome}; "
                     + (f"<a href='{html.escape(url)}'>report</a>: " if url else "") + f"{where}{err}</li>")

@@ -63,7 +63,7 @@ table { border-collapse: collapse; margin: .5em 0; } td, th { border: 1px solid 
 th { background: #eef2f7; } td.num { text-align: right; font-variant-numeric: tabular-nums; }
 .ok { color: #1a7f37; font-weight: bold; } .bad { color: #c62828; font-weight: bold; }
 img { max-width: 100%; border: 1px solid #ddd; margin: .3em 0; }
-.chart { overflow-x: auto; max-width: 100%; border: 1px solid #eee; } .chart img { max-width: none; border: 0; }
+.wide { overflow-x: auto; max-width: 100%; } .chart { overflow-x: auto; max-width: 100%; border: 1px solid #eee; } .chart img { max-width: none; border: 0; }
 .snaps figure { display: inline-block; width: 48%; margin: .3em .5%; } .snaps img { width: 100%; } figcaption { text-align: center; color: #444; } pre { background: #f6f8fa; padding: .6em; overflow-x: auto; white-space: pre-wrap; }
 .round { border: 1px solid #ccd; border-radius: 6px; padding: .2em 1em .6em; margin: .8em 0; }
 .cause { border: 2px solid #c62828; border-radius: 6px; padding: .2em 1em; background: #fff5f5; }
@@ -498,9 +498,9 @@ def _bench_body(d: Path, drawn: _Pictures, write_runs: bool = True) -> str:
     names = bench.variants
     parts = [_bench_config(bench.results, bench.config)]
     parts.append("<h2 id='summary'>Summary</h2>" + _summary_table(bench) + f"<p class='small'>{_e(_ci_note(bench))}</p>")
-    parts.append(matrix_html([bench], relative_link(d)))
     for group, labels in _task_groups(bench).items():
         parts.append(f"<h2 id='per-{_e(group)}'>Per {_e(group)}</h2>" + _group_table(bench, group, labels))
+    parts.append(matrix_html([bench], relative_link(d)))
     constructions = [(n, (v.get("constructions") or {})) for n, v in zip(names, bench.results.get("variants") or [])]
     if any(c for _, c in constructions):
         rows = [[k, *[Raw(f"{_e(c.get(k, {}).get('runs', ''))} runs, {_e(_pct(c.get(k, {}).get('understood')) or '-')} "
@@ -606,7 +606,7 @@ def _task_groups(bench: Bench) -> dict[str, dict[str, str]]:
         labels = {tid: str(row[field]) for v in bench.variants for tid, row in bench.tasks[v].items()
                   if row.get(field) is not None}
         if not labels:
-            labels = {tid: str(t[field]) for tid, t in task_fields(bench.config).items()
+            labels = {tid: str(t[field]) for tid, t in task_fields(bench.config, bench.path).items()
                       if t.get(field) is not None and tid in bench.task_ids}
         if labels:
             out[field] = labels
@@ -656,7 +656,7 @@ def _tasks_table(bench: Bench) -> str:
     interval over seeds), RU and Exe; then each further variant's TC-max difference to the
     first."""
     names = bench.variants
-    commands = task_commands(bench.config)
+    commands = task_commands(bench.config, bench.path)
     link = relative_link(bench.path)
     rows = []
     for tid in bench.task_ids:
@@ -706,7 +706,7 @@ def _grouped_table(names: list[str], rows: list[list[Any]]) -> str:
         f"<td class='num'>{_num(c)}</td>" if isinstance(c, (int, float)) or c is None else
         f"<td class='cmd'>{_num(c)}</td>" if i == 1 else f"<td>{_num(c)}</td>"
         for i, c in enumerate(row)) + "</tr>" for row in rows)
-    return f"<table class='tasks'><tr>{top}</tr><tr>{sub}</tr>{body}</table>"
+    return f"<div class='wide'><table class='tasks'><tr>{top}</tr><tr>{sub}</tr>{body}</table></div>"
 
 
 def _bench_config(results: dict, config: dict) -> str:
@@ -742,7 +742,8 @@ def _bench_overview(bench: Bench, ids: list[str], path: Path, title: str = "") -
             mid.append(m)
             lo.append(m - f.interval[0] if f.interval else 0.0)
             hi.append(f.interval[1] - m if f.interval else 0.0)
-        a2.bar(xs, mid, width, yerr=[lo, hi], capsize=2, label=name)
+        spread = any(lo) or any(hi)  # one seed: no interval, no whiskers
+        a2.bar(xs, mid, width, yerr=[lo, hi] if spread else None, capsize=2 if spread else 0, label=name)
     a1.set_ylim(0, 105)
     a1.set_ylabel("SR (%)")
     a1.set_title("Success rate per task" + (f": {title}" if title else ""))
