@@ -25,8 +25,8 @@ from .progress import LiveProgress, PlainProgress
 from .registry import default_registry
 from .source import load_yaml, plain
 from .interrupts import Interrupted, exit_code
-from .store import (STALE, DamagedRecord, RunStore, find_run, list_runs, read_json, redact, register_secrets,
-                    shown_status, stale_note)
+from .recordref import UNITS, command_of as _command_of, headline, resolve_record, run_infos
+from .store import STALE, DamagedRecord, RunStore, read_json, redact, register_secrets, shown_status, stale_note
 
 EXIT_INTERRUPTED = 130  # Ctrl-C; other signals: interrupts.exit_code
 
@@ -83,8 +83,6 @@ def _options(args: argparse.Namespace, step_ids: list[str]):
     return RunOptions(jobs=args.jobs, use_cache=not args.no_cache, on_event=display), display
 
 
-# Units of the figures a run summary prints (outputs of the built-in workflows).
-UNITS = {"makespan": "s", "tc_max": "m", "tc_avg": "m", "tc_avg_team": "m", "seconds": "s"}
 
 
 def _summary(value: Any, limit: int = 160, key: str = "") -> str:
@@ -96,6 +94,8 @@ def _summary(value: Any, limit: int = 160, key: str = "") -> str:
         acts = ["(" + " ".join([str(a["action"]), *map(str, a.get("args", []))]) + ")" for a in value]
         more = f" ... ({len(acts)} actions)" if len(acts) > 3 else ""
         return " ".join(acts[:3]) + more
+    if isinstance(value, str) and len(value) <= 4 * limit:  # a sentence (a fallback's reason) is said whole
+        return json.dumps(value)
     if isinstance(value, list) and value and all(isinstance(x, str) for x in value):
         text = "; ".join(value)
         if len(text) <= 4 * limit:
@@ -104,10 +104,28 @@ def _summary(value: Any, limit: int = 160, key: str = "") -> str:
     if len(text) <= limit:
         return text
     size = f"{len(value)} items" if isinstance(value, (list, dict)) else f"{len(text)} chars"
-    return f"<{type(value).__name__}, {size}: `pipflow show` prints it whole>"
+    return f"<{type(value).__name__}, {size}: `pipflow show RUN --full` prints it whole>"
+
+
+def _warnings(run_dir: Any) -> list[str]:
+    """The warnings a run recorded (a planner's fallback, a cache not written...), as lines."""
+    try:
+        events = RunStore.open(Path(run_dir)).events() if run_dir else []
+    except (OSError, UserError, ValueError):
+        return []
+    lines = []
+    for e in events:
+        if e.get("event") == "warning":
+            it = f" #{e['iteration']}" if "iteration" in e else ""
+            line = f"warning: step {e.get('step')}{it}: {e.get('message')}"
+            if line not in lines:
+                lines.append(line)
+    return lines
 
 
 def _print_result(result, quiet: bool) -> int:
+    for line in _warnings(getattr(result, "run_dir", None)):  # said during the run; said again with the result
+        print(redact(line), file=sys.stderr)
     if result.status == "succeeded":
         if not quiet:
             for key, value in result.outputs.items():
@@ -169,7 +187,10 @@ def cmd_validate(args: argparse.Namespace) -> int:
             print(err, file=sys.stderr)
             failed += 1
             continue
-        _, diagnostics = check_workflow(path, registry)
+        wf, diagnostics = check_workflow(path, registry)
+        defaults = _default_path_problems(wf) if wf is not None and not diagnostics else []
+        if defaults:
+            diagnostics = list(diagnostics) + defaults
         if diagnostics:
             failed += 1
             print(f"{path}: {len(diagnostics)} problem(s)", file=sys.stderr)
@@ -178,6 +199,26 @@ def cmd_validate(args: argparse.Namespace) -> int:
         else:
             print(f"{path}: ok")
     return 2 if failed else 0
+
+
+def _default_path_problems(wf) -> list[str]:
+    """What a run would say of the workflow's path defaults (missing, or outside where the
+    workflow may read by itself): a copied built-in workflow validated and then failed on its
+    ``../benchmarks/...`` default. Checked by ``validate`` only, since a run may name the file."""
+    # deferred: pulls networkx and jsonschema (~350 ms; show, runs, cache and --help need neither)
+    from .runner import default_path_problem
+
+    problems = []
+    for name, spec in wf.inputs.items():
+        value = spec.default
+        if spec.type != "path" or not isinstance(value, str) or not value or "${" in value:
+            continue
+        base = Path(spec.loc.file).resolve().parent if spec.loc else Path(wf.file).parent
+        resolved = str((base / Path(value).expanduser()).resolve())
+        problem = default_path_problem(wf, name, value, resolved, base)
+        if problem:
+            problems.append(problem)
+    return problems
 
 
 def cmd_steps(args: argparse.Namespace) -> int:
@@ -224,42 +265,27 @@ def cmd_graph(args: argparse.Namespace) -> int:
     return 0
 
 
-def _run_infos(runs_dir: Path) -> list[tuple[Path, dict]]:
-    out = []
-    for run in list_runs(runs_dir):
-        try:  # one damaged record must not hide the others: it is listed as damaged
-            info = read_json(run / "run.json", None)
-        except DamagedRecord as err:
-            info = {"status": "damaged", "error": str(err)}
-        info = info if isinstance(info, dict) else {"status": "damaged", "error": "run.json unreadable"}
-        if shown_status(run, info) == STALE:  # its process died without saying how the run ended
-            info = {**info, "status": STALE, "error": info.get("error") or stale_note(run, info)}
-        out.append((run, info))
-    # newest first by start time (names have one-second resolution: two runs of one second tie)
-    return sorted(out, key=lambda ri: (str(ri[1].get("started") or ""), ri[0].name), reverse=True)
-
-
 def _find_run(ref: str, runs_dir: Path) -> Path:
-    """A run by path or name (as :func:`store.find_run`), or ``latest`` / ``-N`` (the N-th newest),
-    or a workflow's name (its newest run)."""
-    if ref == "latest" or (ref.startswith("-") and ref[1:].isdigit()):
-        n = 1 if ref == "latest" else int(ref[1:])
-        infos = _run_infos(runs_dir)
-        if not 1 <= n <= len(infos):
-            raise UserError(f"{ref}: there are {len(infos)} run(s) in {runs_dir}")
-        return infos[n - 1][0]
-    p = Path(ref)
-    if not (p / "run.json").exists():
-        of_workflow = [run for run, info in _run_infos(runs_dir) if info.get("name") == ref]
-        if of_workflow:
-            return of_workflow[0]
-    return find_run(ref, runs_dir)
+    """A run as every command reads a reference (:func:`.recordref.resolve_record`, runs only)."""
+    return resolve_record(ref, runs_dir, benches=False)
+
+
+def _outputs_of(run: Path) -> Any:
+    try:
+        return read_json(run / "outputs.json", None)
+    except DamagedRecord:
+        return None
+
+
+def _clip(text: str, width: int) -> str:
+    text = " ".join(str(text).split())
+    return text if len(text) <= width else text[: width - 3] + "..."
 
 
 def cmd_runs(args: argparse.Namespace) -> int:
     if Path(args.runs_dir).exists() and not Path(args.runs_dir).is_dir():
         raise UserError(f"--runs-dir {args.runs_dir}: a file, not a folder of runs")
-    infos = _run_infos(Path(args.runs_dir))
+    infos = run_infos(Path(args.runs_dir))
     if args.workflow:
         infos = [(r, i) for r, i in infos if args.workflow in (i.get("name"), Path(str(i.get("workflow", ""))).stem)]
     if args.status:
@@ -272,12 +298,18 @@ def cmd_runs(args: argparse.Namespace) -> int:
         return 0
     for run, info in infos[: args.limit]:
         secs = info.get("seconds") if isinstance(info.get("seconds"), (int, float)) else None
-        print(f"{run.name:<50} {info.get('status', '?'):<11} {f'{secs:.2f}s' if secs is not None else '':>8}  "
-              f"{info.get('error') or ''}"[:160])
+        where = f"step {info['error_step']}: " if info.get("error_step") else ""
+        result = headline(_outputs_of(run)) if info.get("status") == "succeeded" else \
+            _clip(where + str(info.get("error") or ""), 70)
+        command = _command_of(info)
+        print(redact(f"{run.name:<44} {str(info.get('status', '?')):<11} {f'{secs:.1f}s' if secs is not None else '':>7}  "
+                     f"{result:<42}  " + (f'"{_clip(command, 60)}"' if command else "")).rstrip())
     return 0
 
 
 def cmd_show(args: argparse.Namespace) -> int:
+    """A run in a screenful: what it was asked, how it ended, its headline figures and where to
+    look further; ``--full`` prints every input, step and output (the whole record)."""
     store = RunStore.open(_find_run(args.run, Path(args.runs_dir)))
     problems: list[str] = []  # damaged parts of the record: reported, the rest still shown
     try:
@@ -288,20 +320,16 @@ def cmd_show(args: argparse.Namespace) -> int:
     print(f"run       {store.root}")
     if shown_status(store.root, info) == STALE:
         info = {**info, "status": STALE, "error": info.get("error") or stale_note(store.root, info)}
-    for key in ("name", "workflow", "status", "started", "finished", "seconds", "error_step", "error"):
+    full = bool(getattr(args, "full", False))
+    keys = ("name", "workflow", "status", "started", "finished", "seconds", "error_step", "error") if full else \
+        ("name", "status", "started", "seconds", "error_step", "error")
+    for key in keys:
         if info.get(key) not in (None, ""):
-            print(f"{key:<9} {info[key]}")
-    print("inputs:")
-    inputs = info.get("inputs")
-    for k, v in (inputs if isinstance(inputs, dict) else {}).items():
-        print(f"  {k} = {json.dumps(v, default=str)[:100]}")
-    print("steps:")
-    for e in store.events():
-        if e.get("event") in ("end", "skip", "error") and e.get("step"):
-            it = f" #{e['iteration']}" if "iteration" in e else ""
-            status = e.get("status", "skipped" if e["event"] == "skip" else "")
-            dur = f"{e['duration']:.3f}s" if isinstance(e.get("duration"), (int, float)) else ""
-            print(f"  {str(e['step']) + it:<22} {str(status):<10} {dur:>9}" + (" cached" if e.get("cached") else ""))
+            value = info[key]
+            shown = f"{value:.2f}" if key == "seconds" and isinstance(value, float) and not full else value
+            print(redact(f"{key:<9} {shown}"))
+    inputs = info.get("inputs") if isinstance(info.get("inputs"), dict) else {}
+    events = store.events()
     if store.damaged_events:
         problems.append(f"{store.root / 'events.jsonl'}: damaged line(s) "
                         f"{', '.join(map(str, store.damaged_events[:10]))} skipped (a run killed while writing?)")
@@ -310,9 +338,48 @@ def cmd_show(args: argparse.Namespace) -> int:
     except DamagedRecord as err:
         outputs = None
         problems.append(str(err))
-    if outputs is not None:
-        print("outputs:")
-        print("  " + json.dumps(outputs, indent=2, default=str).replace("\n", "\n  "))
+    if full:
+        print("inputs:")
+        for k, v in inputs.items():
+            print(redact(f"  {k} = {json.dumps(v, default=str)[:100]}"))
+        print("steps:")
+        for e in events:
+            if e.get("event") in ("end", "skip", "error") and e.get("step"):
+                it = f" #{e['iteration']}" if "iteration" in e else ""
+                status = e.get("status", "skipped" if e["event"] == "skip" else "")
+                dur = f"{e['duration']:.3f}s" if isinstance(e.get("duration"), (int, float)) else ""
+                print(f"  {str(e['step']) + it:<22} {str(status):<10} {dur:>9}" + (" cached" if e.get("cached") else ""))
+        if outputs is not None:
+            print("outputs:")
+            print(redact("  " + json.dumps(outputs, indent=2, default=str).replace("\n", "\n  ")))
+    else:
+        if isinstance(inputs.get("command"), str):
+            print(redact(f"command   {inputs['command']}"))
+        given = [k for k in (info.get("given") or []) if k in inputs and k != "command"]
+        if given:
+            print(redact("given     " + ", ".join(f"{k}={json.dumps(inputs[k], default=str)[:60]}" for k in given)))
+        ends = [e for e in events if e.get("event") in ("end", "skip", "error") and e.get("step")]
+        if ends:
+            counts: dict[str, int] = {}
+            for e in ends:
+                word = "skipped" if e["event"] == "skip" else "failed" if e["event"] == "error" else \
+                    "cached" if e.get("cached") else "ran"
+                counts[word] = counts.get(word, 0) + 1
+            timed = [e for e in ends if isinstance(e.get("duration"), (int, float)) and "iterations" not in e
+                     and not e.get("cached")]
+            slow = max(timed, key=lambda e: e["duration"], default=None)
+            it = f" #{slow['iteration']}" if slow and "iteration" in slow else ""
+            print("steps     " + ", ".join(f"{n} {w}" for w, n in counts.items())
+                  + (f"; slowest {slow['step']}{it} {slow['duration']:.2f}s" if slow else ""))
+        if isinstance(outputs, dict) and outputs:
+            line = headline(outputs)
+            if line:
+                print(f"result    {line}")
+            print("outputs:")
+            for key, value in outputs.items():
+                print(redact(f"  {key}: {_summary(value, limit=100, key=key)}"))
+        print(f"more      pipflow show {args.run} --full (every input, step and output); "
+              f"pipflow report {args.run} (HTML with pictures); files in {store.root}")
     for problem in problems:
         print(f"warning: {problem}", file=sys.stderr)
     return 0
@@ -392,8 +459,9 @@ def build_parser() -> argparse.ArgumentParser:
     runs.set_defaults(func=cmd_runs)
 
     show = sub.add_parser("show", parents=[common], help="summarise a run")
-    show.add_argument("run", help="run directory, its name or a unique part of it, a workflow's name "
+    show.add_argument("run", help="run directory, its name or a unique part of it (its id), a workflow's name "
                                   "(its newest run), latest, or -N (the N-th newest)")
+    show.add_argument("--full", action="store_true", help="every input, step and output (default: a summary)")
     show.set_defaults(func=cmd_show)
 
     resume = sub.add_parser("resume", parents=[common], help="rerun only what did not finish")

@@ -13,6 +13,7 @@ from pathlib import Path
 from typing import Any, Union
 
 from pipflow.errors import Diagnostic, Location, SourceFileError
+from pipflow.resources import data_dir
 
 from .source import SourceDict, SourceList, load_yaml, plain
 
@@ -152,6 +153,27 @@ class Workflow:
 MAX_EXTENDS = 32  # files in one `extends` chain; real chains have two or three
 
 
+def builtin_names() -> list[str]:
+    """The names of pipflow's built-in workflows (``warehouse``, ``household``, ...)."""
+    try:
+        return sorted(p.stem for p in data_dir("workflows").glob("*.yaml"))
+    except FileNotFoundError:
+        return []
+
+
+def builtin_workflow(ref: str) -> Path | None:
+    """The built-in workflow a bare name means (``warehouse`` or ``warehouse.yaml``: no folder),
+    or None."""
+    if not isinstance(ref, str) or "/" in ref or "\\" in ref:
+        return None
+    name = ref if ref.endswith((".yaml", ".yml")) else f"{ref}.yaml"
+    try:
+        candidate = data_dir("workflows") / name
+    except FileNotFoundError:
+        return None
+    return candidate if candidate.is_file() else None
+
+
 def read_workflow_data(path: Path, diagnostics: list[Diagnostic], _seen: tuple = ()) -> tuple[Any, list[Path]]:
     """Load a workflow file and merge the chain of files it extends (base first).
 
@@ -177,8 +199,12 @@ def read_workflow_data(path: Path, diagnostics: list[Diagnostic], _seen: tuple =
         return data, [path]
     base_path = (path.parent / base_ref).resolve()
     if not base_path.exists():
-        diagnostics.append(Diagnostic(where, f"extends {base_ref!r}: no such file ({base_path})"))
-        return data, [path]
+        builtin = builtin_workflow(base_ref)
+        if builtin is None:
+            diagnostics.append(Diagnostic(where, f"extends {base_ref!r}: no such file ({base_path}) and no built-in "
+                                                 f"workflow of that name (built-in: {', '.join(builtin_names())})"))
+            return data, [path]
+        base_path = builtin.resolve()  # `extends: warehouse`: the built-in workflow, with its own defaults
     try:
         base, files = read_workflow_data(base_path, diagnostics, (*_seen, path))
     except SourceFileError as err:

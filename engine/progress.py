@@ -104,3 +104,70 @@ class LiveProgress:
 
     def close(self) -> None:
         self.live.stop()
+
+
+def _duration(seconds: float) -> str:
+    """``1h 02m``, ``3m 10s``, ``42s``."""
+    seconds = max(0, int(round(seconds)))
+    h, rest = divmod(seconds, 3600)
+    m, s = divmod(rest, 60)
+    return f"{h}h {m:02d}m" if h else f"{m}m {s:02d}s" if m else f"{s}s"
+
+
+class CountProgress:
+    """Progress of many units of work (a bench's runs) where no terminal shows a live bar (CI,
+    ``nohup``, output to a file): a line every ``every`` finished units (default: a twentieth of
+    the total) and every ``seconds`` without one, with done/total, the rate and the time left::
+
+        bench (local): 12/89 runs (13%), 4m 10s elapsed, 2.9 runs/min, about 26m 33s left
+    """
+
+    def __init__(self, label: str, total: int, done: int = 0, stream: TextIO | None = None,
+                 every: int | None = None, seconds: float = 30.0):
+        self.label, self.total, self.start_done, self.done = label, total, done, done
+        self.stream = stream if stream is not None else sys.stderr
+        self.every = every or max(1, total // 20)
+        self.seconds = seconds
+        self.started = time.monotonic()
+        self._lock = threading.Lock()
+        self._stop = threading.Event()
+        self._last = self.started
+        self._thread = threading.Thread(target=self._tick, name="pipflow-progress", daemon=True)
+        self._thread.start()
+        self._print()
+
+    def line(self) -> str:
+        elapsed = time.monotonic() - self.started
+        fresh = self.done - self.start_done
+        pct = f" ({100 * self.done / self.total:.0f}%)" if self.total else ""
+        text = f"{self.label}: {self.done}/{self.total} runs{pct}, {_duration(elapsed)} elapsed"
+        if fresh > 0 and elapsed > 0:
+            rate = fresh / elapsed
+            text += (f", {rate * 60:.1f} runs/min" if rate < 1 else f", {rate:.1f} runs/s")
+            if self.done < self.total:
+                text += f", about {_duration((self.total - self.done) / rate)} left"
+        elif self.done < self.total:
+            text += ", time left: after the first run"
+        return text
+
+    def advance(self, n: int = 1) -> None:
+        with self._lock:
+            self.done += n
+            if self.done >= self.total or (self.done - self.start_done) % self.every == 0:
+                self._print()
+
+    def _print(self) -> None:
+        self._last = time.monotonic()
+        try:
+            print(self.line(), file=self.stream, flush=True)
+        except (OSError, ValueError):  # a closed stream must not stop the work
+            pass
+
+    def _tick(self) -> None:
+        while not self._stop.wait(1.0):
+            with self._lock:
+                if time.monotonic() - self._last >= self.seconds and self.done < self.total:
+                    self._print()
+
+    def close(self) -> None:
+        self._stop.set()

@@ -63,6 +63,35 @@ def declared_env(wf: Workflow) -> dict[str, str]:
     return {name: os.environ[name] for name in wf.env if name in os.environ and not looks_secret(name)}
 
 
+def default_path_problem(wf: Workflow, name: str, written: Any, resolved: str, base: Path) -> str | None:
+    """Why the default of path input ``name`` (``written`` in the workflow, ``resolved`` against
+    ``base``, the folder of the file that declares it) cannot be read, in words that say what to
+    do; None when it can. A default must exist and reads only where its workflow lives
+    (:func:`outside`: a file elsewhere only when the user names it). A copied built-in workflow is
+    the usual case: its ``../benchmarks/...`` defaults were relative to pipflow's own folder; the
+    message names pipflow's file and ``extends``."""
+    spec = wf.inputs[name]
+    where = f"{spec.loc or wf.file}: default of input {name!r}"
+    if not Path(resolved).exists():
+        problem = (f"{written!r} names {resolved}, which does not exist (a workflow's relative paths are read from "
+                   f"the folder of the file that writes them, {base})")
+    else:
+        problem = outside(resolved, [base])  # a default reads only where its workflow lives
+        if problem is None:
+            return None
+    builtins = data_dir("workflows").resolve()
+    builtin = (builtins / str(written)).resolve() if isinstance(written, str) else None
+    if builtin is None or not builtin.exists() or Path(wf.file).resolve().parent == builtins:
+        return f"{where}: {problem}; name the file yourself: -i {name}=PATH (or --inputs, or a keyword of pipflow.run)"
+    stem = Path(wf.file).stem
+    base_name = stem if (builtins / f"{stem}.yaml").is_file() else "NAME"
+    return (f"{where}: {problem}. This looks like a copy of a built-in workflow, whose defaults are relative to "
+            f"pipflow's folder, where this file is {builtin}. Either name it: -i {name}={builtin} (or --inputs, or a "
+            f"keyword of pipflow.run), or write `extends: {base_name}` instead of a copy, which keeps the built-in's "
+            "defaults (a workflow's default may name a file outside its own folder and pipflow's only when you give "
+            "it yourself)")
+
+
 def resolve_inputs(wf: Workflow, given: dict[str, Any], from_text: bool = False, cwd: Path | None = None) -> dict:
     """Declared defaults, overridden by the given values (coerced from text for ``-i``)."""
     unknown = [k for k in given if k not in wf.inputs]
@@ -97,9 +126,9 @@ def resolve_inputs(wf: Workflow, given: dict[str, Any], from_text: bool = False,
         if spec.type == "path" and isinstance(value, str) and value and not Path(value).expanduser().is_absolute():
             value = str((base / Path(value).expanduser()).resolve())
         if spec.type == "path" and name not in given and isinstance(value, str) and value:
-            problem = outside(value, [base])  # a default reads only where its workflow lives
+            problem = default_path_problem(wf, name, spec.default, value, base)
             if problem:
-                raise InputError(f"{spec.loc or wf.file}: default of input {name!r}: {problem}")
+                raise InputError(problem)
         if not type_matches(value, spec.type):
             raise InputError(f"input {name!r} must be {spec.type}, got {value!r}")
         if isinstance(value, float) and not math.isfinite(value):  # .nan / .inf in an inputs file

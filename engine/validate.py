@@ -248,10 +248,13 @@ def _semantic_diagnostics(wf: Workflow, registry: Registry) -> list[Diagnostic]:
 
 
 def _value_problem(declared: Any, value: Any, wf: Workflow, given: dict | None = None) -> str | None:
-    """What the input's own ``check`` says of a literal value, or of the workflow input that the
-    value is exactly a reference to (its given value, else its literal default)."""
-    if declared.check is None:
+    """What the step input's ``Choices`` and its own ``check`` say of a literal value, or of the
+    workflow input that the value is exactly a reference to (its given value, else its literal
+    default, and every value the workflow input's own ``choices`` allow). Why here: a value outside
+    a step's choices used to pass validation and fail the run after the whole refinement loop."""
+    if declared.check is None and not declared.choices:
         return None
+    name = None
     if isinstance(value, str) and has_expression(value):
         name = _input_reference(value)
         if name is None or name not in wf.inputs:
@@ -259,12 +262,24 @@ def _value_problem(declared: Any, value: Any, wf: Workflow, given: dict | None =
         if given is not None and name in given:
             value = given[name]
         else:
-            value = wf.inputs[name].default
+            spec = wf.inputs[name]
+            if declared.choices and spec.choices:
+                outside = [c for c in spec.choices if c not in declared.choices]
+                if outside:
+                    return (f"input {name!r} allows {', '.join(map(repr, outside))}, which this step does not accept "
+                            f"(one of {', '.join(map(repr, declared.choices))})")
+            value = spec.default
             if value is None or has_expression(value):
                 return None
     if value is None:
         return None
-    return declared.check(value, wf.file.parent)
+    if declared.choices and value not in declared.choices:
+        close = difflib.get_close_matches(str(value), [str(c) for c in declared.choices], n=1)
+        via = f" (the {'given value' if given is not None and name in (given or {}) else 'default'} of input {name!r})" \
+            if name else ""
+        return (f"{value!r}{via} is not one of {', '.join(map(repr, declared.choices))}"
+                + (f"; did you mean {close[0]!r}?" if close else ""))
+    return declared.check(value, wf.file.parent) if declared.check is not None else None
 
 
 def _plain_reference(value: Any) -> tuple[str, str] | None:

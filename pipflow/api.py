@@ -17,7 +17,7 @@ from typing import Any
 
 from pipflow.engine.executor import RunOptions
 from pipflow.engine.runner import run_workflow
-from pipflow.experiments.benchmarking import BenchConfig, run_bench
+from pipflow.experiments.benchmarking import BenchConfig, fresh_out, run_bench
 from pipflow.records.report import write_report
 
 
@@ -57,11 +57,19 @@ def run(workflow: str | Path, *, runs_dir: str | Path | None = None, jobs: int =
 
 
 def bench(tasks: str | Path, *, workflow: str | None = None, seeds: int = 1, jobs: int = 1,
-          out: str | Path = "bench-out/api", matrix: dict[str, list[str]] | None = None,
+          out: str | Path | None = None, matrix: dict[str, list[str]] | None = None,
           cache: bool = True, **inputs: Any) -> dict[str, Any]:
     """Run a task file's tasks x seeds (optionally x a matrix of input variants) and return the
-    content of the bench's ``results.json`` (its ``summary`` and per-task rows)."""
+    content of the bench's ``results.json`` (its ``summary`` and per-task rows; ``["out"]`` says
+    where the bench folder is).
+
+    Each call writes a fresh folder ``bench-out/<UTC time>-api-<random>`` unless ``out`` names
+    one: a new or empty folder, or a bench's folder (its rows are replaced run by run); a folder
+    holding anything else is refused (:class:`~pipflow.errors.UserError`), so two calls never mix
+    their results."""
+    folder = Path(out) if out is not None else fresh_out(label="api")
     config = BenchConfig(tasks_file=Path(tasks), workflow=workflow, seeds=max(1, seeds), jobs=max(1, jobs),
-                         out=Path(out), matrix={k: [str(v) for v in vs] for k, vs in (matrix or {}).items()},
+                         out=folder, matrix={k: [str(v) for v in vs] for k, vs in (matrix or {}).items()},
                          inputs={k: str(v) for k, v in inputs.items()}, use_cache=cache)
-    return run_bench(config, progress=False)
+    results = run_bench(config, progress=False)
+    return {**results, "out": str(folder)}

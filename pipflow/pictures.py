@@ -168,35 +168,61 @@ def animation_gif(world: dict, trajectories: dict[str, list], path: Path, makesp
 
 #: the tallest Gantt chart drawn, whatever the number of robots (inches; 5,400 pixels at 90 dpi)
 GANTT_MAX_INCHES = 60.0
+#: subtask colours of the Gantt chart: distinct, and none grey (grey is travel without a load)
+SUBTASK_COLOURS = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#bcbd22",
+                   "#17becf", "#393b79", "#e6550d", "#31a354", "#756bb1", "#843c39", "#d6616b", "#637939"]
+#: travel to a subtask, empty (the approach): the only grey of the chart
+TRAVEL_GREY = "#cccccc"
+
+
+def subtask_colour(k: int) -> str:
+    return SUBTASK_COLOURS[k % len(SUBTASK_COLOURS)]
 
 
 def gantt(schedule: dict, path: Path) -> Path:
-    """One row per robot that works: its travel legs (light) and the subtasks it works on
-    (labelled). Idle robots get no row (the title counts them): with a thousand robots the chart
+    """One row per robot that works. Grey bars: travel to a subtask, empty (the approach). A
+    coloured box: a subtask, from its start to its end, its id at the left; the darker box inside
+    it: the part of the subtask spent travelling with the load between its places (the route),
+    the rest of the box being loading and unloading. The legend says so. Subtask colours are
+    never grey. Idle robots get no row (the title counts them): with a thousand robots the chart
     stays readable and cheap."""
+    from matplotlib.patches import Patch
+
     plt = _plt()
     robots = _working_robots(schedule)
     idle = len(set(schedule.get("robots") or {}) - set(robots))
     # rows thin out past 130 robots rather than the canvas growing with them (a chart of 20,000
     # working robots would be a 9,000-inch image: gigabytes of pixels)
-    fig, ax = plt.subplots(figsize=(10, min(GANTT_MAX_INCHES, max(2.5, 0.45 * len(robots) + 1.2))))
+    fig, ax = plt.subplots(figsize=(10, min(GANTT_MAX_INCHES, max(2.5, 0.45 * len(robots) + 1.6))))
     row = {r: i for i, r in enumerate(robots)}
-    for r, info in (schedule.get("robots") or {}).items():
-        for leg in info.get("legs", []) if r in row else []:
-            ax.barh(row[r], float(leg["end"]) - float(leg["start"]), left=float(leg["start"]),
-                    height=0.35, color="#cccccc", edgecolor="#999999")
+    colour = {s.get("id"): subtask_colour(k) for k, s in enumerate(schedule.get("subtasks", []))}
+    spans = {s.get("id"): (float(s["start"]), float(s["end"])) for s in schedule.get("subtasks", [])}
     for k, s in enumerate(schedule.get("subtasks", [])):
-        colour = robot_colour(k)
         for r in s.get("robots", []):
             ax.barh(row[r], max(float(s["end"]) - float(s["start"]), 1e-3), left=float(s["start"]),
-                    height=0.6, color=colour, alpha=0.75, edgecolor="black", lw=0.5)
+                    height=0.62, color=colour[s.get("id")], alpha=0.45, edgecolor="black", lw=0.6)
             ax.text(float(s["start"]), row[r], f" {s['id']}", va="center", fontsize=7)
+    for r, info in (schedule.get("robots") or {}).items():
+        for leg in info.get("legs", []) if r in row else []:
+            start, end = float(leg["start"]), float(leg["end"])
+            span = spans.get(leg.get("subtask"))
+            carrying = span is not None and start >= span[0] - 1e-6 and end <= span[1] + 1e-6
+            ax.barh(row[r], end - start, left=start, height=0.3,
+                    color=colour[leg.get("subtask")] if carrying else TRAVEL_GREY,
+                    edgecolor="#333333" if carrying else "#999999", lw=0.5, alpha=0.9 if carrying else 1.0)
     ax.set_yticks(range(len(robots)))
     ax.set_yticklabels(robots, fontsize=8)
     ax.invert_yaxis()
     ax.set_xlabel("time (s)")
-    ax.set_title(f"Schedule (makespan {float(schedule.get('makespan', 0)):.1f} s; grey = travel"
+    ax.set_title(f"Schedule (makespan {float(schedule.get('makespan', 0)):.1f} s"
                  + (f"; {idle} idle robot{'s' if idle != 1 else ''} not shown)" if idle else ")"))
+    first = subtask_colour(0)
+    ax.legend(handles=[Patch(facecolor=TRAVEL_GREY, edgecolor="#999999", label="travel to a subtask, empty"),
+                       Patch(facecolor=first, alpha=0.45, edgecolor="black", label="subtask (id at left): start to end"),
+                       Patch(facecolor=first, alpha=0.9, edgecolor="#333333",
+                             label="inside it: travel with the load; the rest: loading, unloading")],
+              loc="upper center", bbox_to_anchor=(0.5, -0.16 if len(robots) > 3 else -0.3), ncol=3, fontsize=8,
+              frameon=False)
     fig.tight_layout()
     save_figure(fig, path, dpi=90)
     plt.close(fig)

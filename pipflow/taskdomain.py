@@ -134,6 +134,20 @@ def flat_simulation(simulation: Mapping[str, Any] | None) -> dict | None:
     return {**details, **rest} if isinstance(details, Mapping) else rest
 
 
+def plain_words(value: Any, prefix: str = "") -> list[str]:
+    """``{"a": {"b": [1, 2]}}`` -> ``["a b: 1, 2"]``: any JSON value as lines of words."""
+    if isinstance(value, Mapping):
+        lines: list[str] = []
+        for key, inner in value.items():
+            lines += plain_words(inner, f"{prefix} {key}".strip())
+        return lines
+    if isinstance(value, (list, tuple)):
+        if all(not isinstance(x, (Mapping, list, tuple)) for x in value):
+            return [f"{prefix}: {', '.join(map(str, value))}" if prefix else ", ".join(map(str, value))]
+        return [line for x in value for line in plain_words(x, prefix)]
+    return [f"{prefix}: {value}" if prefix else str(value)]
+
+
 def pddl_domain_name(domain_text: str, default: str) -> str:
     """The name in ``(define (domain NAME)`` of a PDDL domain text, or ``default``: a problem must
     name the domain it is read with."""
@@ -207,6 +221,9 @@ class TaskDomain(ABC):
     #: the world's sections whose keys name things (PDDL objects, robots): the spellings a plan
     #: that comes back from UP in lower case is mapped back to (:mod:`pipflow.pddl.names`)
     name_sections: ClassVar[tuple[str, ...]] = ("robots", "places", "objects")
+    #: task-file fields the bench groups its tasks by, in its tables and report (household:
+    #: ``("category",)``: compound, complex, vague); each task row of results.json carries them
+    task_groups: ClassVar[tuple[str, ...]] = ()
 
     def workflow_for(self, name: str) -> str:
         """The workflow that carries out method ``name`` on this domain's worlds
@@ -344,6 +361,20 @@ class TaskDomain(ABC):
         file's world, in which meanings are compared. :func:`pipflow.meaning.judge` gives the
         verdict from a comparison of the domain's goals."""
         return None
+
+    # -- the report ----------------------------------------------------------------------------
+
+    def goal_words(self, goal: Any) -> list[str]:
+        """A goal in plain words, a line per condition, for the report's "Understood" (never a
+        Python list). The default spells a mapping out, key by key, lists joined by commas."""
+        return plain_words(goal)
+
+    def floor_plan(self, world: dict) -> list[dict]:
+        """The footprints the replay draws under the robots: ``[{"name", "x", "y", "width",
+        "depth", "access"}]`` in metres, from :meth:`places` (empty: the floor alone)."""
+        return [{"name": name, "x": float(p["x"]), "y": float(p["y"]), "width": float(p["width"]),
+                 "depth": float(p["depth"]), "access": list(p.get("access") or [])}
+                for name, p in self.places(world).items()]
 
     def bench_table(self, results: dict, tasks_file: Path) -> str | None:
         """The markdown table of a bench, when the domain groups it its own way (None: the

@@ -50,7 +50,8 @@ def debug(
 @step("pddl.solve",
       doc="Solve a problem with a UP engine; status is solved, unsolvable or error, each with its message; a time-out fails the step.",
       outputs={"status": "string", "plan": "array", "message": "string", "messages": "array", "time": "number",
-               "engine": "string"})
+               "engine": "string", "requested": "string", "fallback": "string"},
+      version="2")  # 2: requested and fallback (cached answers of version 1 lack them)
 def solve(
     ctx: StepContext,
     problem: Annotated[str | None, Doc("PDDL problem text")],
@@ -72,17 +73,20 @@ def solve(
     content (domain, problem, engine, params, timeout): an unchanged problem in the next round of
     a refinement loop is not solved again. A time-out (of the fallback too, if the workflow names
     one) fails the step with "the planner ... timed out after N s": another round would time out
-    again."""
+    again. ``engine`` is the engine that answered, ``requested`` the one asked for, and
+    ``fallback`` says, when they differ, why the first could not answer (null otherwise): a
+    fallback is never silent (it is also a warning of the run)."""
     check_engine(engine)
     if fallback:
         check_engine(fallback)
     if not problem:
         return _outcome("error", None, "no problem to solve (the debugger rejected it or it was not written)",
-                        0.0, engine)
+                        0.0, engine, engine)
     try:
         parsed = _parse(ctx, problem, domain)
     except PDDLError as exc:
-        return _outcome("error", None, f"the problem does not parse ({exc}); run pddl.debug first", 0.0, engine)
+        return _outcome("error", None, f"the problem does not parse ({exc}); run pddl.debug first", 0.0, engine,
+                        engine)
     domain_text = _read_text(ctx.resolve_path(domain))
     first_params = params
     if engine == DEFAULT_ENGINE and world and world.get("robots"):  # the robots' capacities: the domain knows them
@@ -92,11 +96,15 @@ def solve(
             first_params = {**known, **(params or {})}
     result = _solve_once(ctx, parsed, problem, domain_text, engine, first_params, timeout)
     message = result.message
+    fell_back = None
     if result.status in ("error", "timeout") and fallback and fallback != engine:
         ctx.log(f"solve: {message}; trying the fallback {fallback}")
         second = _solve_once(ctx, parsed, problem, domain_text, fallback, None, timeout)
         message = f"{message}; fell back to {fallback}: {second.message}"
         ctx.metrics["fallback"] = fallback
+        fell_back = (f"the planner {engine} could not answer ({_short(result.message)}); the workflow's fallback "
+                     f"{fallback} answered instead")
+        ctx.warn(fell_back)
         result = second
     ctx.log(f"solve: {message}")
     ctx.metrics.update({"solve_time": result.time, "engine": result.engine,
@@ -106,14 +114,23 @@ def solve(
     plan = plan_in_world_names(result.plan, world)
     if plan is not None:
         ctx.write_artifact("plan.txt", format_plan(plan))
-    return _outcome(result.status.value, plan, message, result.time, result.engine)
+    return _outcome(result.status.value, plan, message, result.time, result.engine, engine, fell_back)
 
 
-def _outcome(status: str, plan: list | None, message: str, time: float, engine: str) -> dict:
+def _outcome(status: str, plan: list | None, message: str, time: float, engine: str, requested: str,
+             fallback: str | None = None) -> dict:
     """The step's outputs; ``messages`` (the checking steps' convention) holds the message when
     there is no plan, so a loop that runs out of rounds quotes the planner's reason too."""
     return {"status": status, "plan": plan, "message": message, "messages": [] if plan else [message],
-            "time": time, "engine": engine}
+            "time": time, "engine": engine, "requested": requested, "fallback": fallback}
+
+
+def _short(message: str, limit: int = 160) -> str:
+    """A planner's failure in one short line (Fast Downward's is its whole log)."""
+    text = " ".join(str(message).split())
+    if "Reason:" in text:  # the translator's own words: "Error in requirements. Reason: Invalid requirement..."
+        text = text[text.index("Reason:") + len("Reason:"):].strip()
+    return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
 def _read_text(path) -> str:

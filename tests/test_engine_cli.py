@@ -195,6 +195,9 @@ def test_runs_and_show(engine_env, capsys):
 
     assert main(["show", "--runs-dir", str(runs), ok.run_dir.name[-6:]]) == 0  # unique suffix
     shown = capsys.readouterr().out
+    assert "succeeded" in shown and "final: 3" in shown and "--full" in shown  # a summary, saying where more is
+    assert main(["show", "--full", "--runs-dir", str(runs), ok.run_dir.name[-6:]]) == 0
+    shown = capsys.readouterr().out
     assert "succeeded" in shown and "target = 3" in shown
     assert '"final": 3' in shown and "bump #3" in shown
 

@@ -235,7 +235,7 @@ def test_workflow_runs_offline_end_to_end(tmp_path):
     assert out["goal"] == {"in": {"fridge": ["pumpkin"]}, "state": {"floorlamp": ["off"], "fridge": ["closed"]}}
     pairs = [a["robots"] for a in out["allocation"]["assignments"] if len(a["robots"]) >= 2]
     assert pairs, "the 2-unit pumpkin needs two lifters"
-    assert (Path(result.run_dir) / "steps" / "simulate" / "artifacts" / "home-end.png").exists()
+    assert (Path(result.run_dir) / "steps" / "simulate" / "artifacts" / "snapshot_2_end.png").exists()
     from pipflow.household.scoring import score_run
     from pipflow.household.world import load_world, select_team
 

@@ -35,7 +35,7 @@ def render(page: Path, out_png: Path) -> str:
     exe = chromium()
     with tempfile.TemporaryDirectory() as profile:
         common = [exe, *CHROMIUM_FLAGS, f"--user-data-dir={profile}"]
-        subprocess.run(common + [f"--screenshot={out_png}", "--window-size=1200,2000", page.resolve().as_uri()],
+        subprocess.run(common + [f"--screenshot={out_png}", "--window-size=1200,4000", page.resolve().as_uri()],
                        check=True, capture_output=True, timeout=120)
     with tempfile.TemporaryDirectory() as profile:
         common = [exe, *CHROMIUM_FLAGS, f"--user-data-dir={profile}"]
@@ -110,7 +110,7 @@ def test_bench_report_renders_in_chromium(tmp_path):
     run = make_run_dir(bench / "runs")
     write_report(run)
     tasks = [{"id": f"wh-{i:02d}", "runs": 3, "sr": 1.0 if i % 3 else 2 / 3, "gcr": 1.0, "exe": 1.0, "ru": 0.8,
-              "tc_max": 30.0 + i, "tc_avg": 8.0 + i / 2, "makespan": 50.0,
+              "tc_max": 31.0 + i, "tc_avg": 8.0 + i / 2, "makespan": 50.0,
               "error": None if i % 3 else "refused: over capacity"} for i in range(1, 4)]
     summary = {"runs": 9, "sr": 8 / 9, "gcr": 1.0, "exe": 1.0, "ru": 0.8, "tc_max": 32.0, "tc_avg": 9.0}
     runs = [{"variant": v, "task": t["id"], "seed": s, "success": bool(i % 3 or s), "tc_max": 30.0 + i + s,
@@ -130,12 +130,13 @@ def test_bench_report_renders_in_chromium(tmp_path):
     html = page.read_text()
     assert "wh-03" in html and "refused: over capacity" in html and "href='runs/run1/report.html'" in html
     # variants side by side in one table, each task with its command, seeds labelled, SR as a percentage
-    assert html.count("<h2>Tasks</h2>") == 1
-    assert "<th colspan='3'>default</th><th colspan='3'>graph_mode=paper</th>" in html
+    assert html.count("<h2 id='tasks'>Tasks</h2>") == 1
+    assert "<th colspan='5'>default</th><th colspan='5'>graph_mode=paper</th>" in html
     assert "\u0394 TC-max (m) vs default" in html
     assert "put 3 product1 on shelf2" in html and ">seed 2</a>" in html and "67%" in html and "0.67" not in html
     assert "matrix: graph_mode" in html and "exact, paper" in html
-    assert "32.00 (31.00\u201333.00)" in html  # wh-01's TC-max over its three seeds: mean (min-max)
+    # wh-01's TC-max over its three seeds (31, 32, 33 m): mean 32, Student t 95% interval 32 -+ 4.303 * 1 / sqrt(3)
+    assert "32.00 <span class='small'>[29.52, 34.48]</span>" in html
     assert_rendered(page, tmp_path, min_images=1)
 
 

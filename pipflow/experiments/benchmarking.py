@@ -43,6 +43,7 @@ from typing import Any
 from pipflow.engine.cliargs import key_values
 from pipflow.engine.interrupts import interrupt_signals
 from pipflow.engine.locks import FolderLock, writer_alive
+from pipflow.engine.progress import CountProgress
 from pipflow.engine.registry import default_registry
 from pipflow.engine.runner import find_workflow, resolve_inputs
 from pipflow.engine.store import atomic_write, read_json, write_json
@@ -61,8 +62,8 @@ from pipflow.records.compare import variants_side_by_side
 from pipflow.taskdomain import TaskDomain
 from pipflow.version import __version__
 
-RESULT_FIELDS = ["variant", "task", "seed", "status", "loop", "reader", "model", "success", "understood", "misread",
-                 "misread_executed", "goal_met", "gcr", "exe", "ru", "tc_max", "tc_avg", "tc_avg_team", "makespan",
+RESULT_FIELDS = ["variant", "task", "seed", "status", "loop", "reader", "model", "planner", "engine", "fallback",
+                 "success", "understood", "misread", "misread_executed", "goal_met", "gcr", "exe", "ru", "tc_max", "tc_avg", "tc_avg_team", "makespan",
                  "planned", "executed", "seconds", "error", "run_dir", "config_hash"]
 
 
@@ -322,6 +323,7 @@ def _prepare_out(out: Path, specs: list[RunSpec]) -> None:
     """Make the bench folder (a user error, naming it, when that cannot be done) and refuse a
     bench whose rows would share a file on this folder's file system (names that differ only in
     case, where the file system ignores case)."""
+    refuse_foreign_folder(out)
     try:
         out.mkdir(parents=True, exist_ok=True)
         probe = out / f".pipflow-Write-Test-{os.getpid()}"
@@ -342,6 +344,36 @@ def _prepare_out(out: Path, specs: list[RunSpec]) -> None:
             if seen.setdefault(name, key) != key:
                 raise UserError(f"--out {out}: runs {seen[name]} and {key} would share one row file on this file "
                                 "system, which ignores upper and lower case; rename one task or variant")
+
+
+#: what a bench folder holds: a folder with none of these (and not empty) is someone else's
+BENCH_MARKS = ("results.json", "runs", "records", RUNNING, "runs.json")
+
+
+def refuse_foreign_folder(out: Path) -> None:
+    """Refuse to write a bench into a folder that holds other things than a bench (a bench's
+    rows, records and tables would be mixed with the user's files); an empty or missing folder,
+    or one a bench wrote, is fine."""
+    if out.is_symlink() or (out.exists() and not out.is_dir()):
+        raise UserError(f"--out {out}: cannot write the bench folder there: it is not a folder (a bench writes a "
+                        "folder of results); nothing was run")
+    if not out.is_dir():
+        return
+    try:
+        names = [p.name for p in out.iterdir()]
+    except OSError as err:
+        raise UserError(f"--out {out}: cannot read the folder ({err.strerror or err}); nothing was run") from None
+    if names and not any(n in BENCH_MARKS for n in names):
+        shown = ", ".join(sorted(names)[:3]) + (" ..." if len(names) > 3 else "")
+        raise UserError(f"--out {out}: the folder holds files that are not a bench's ({shown}); a bench writes into "
+                        "a new or empty folder, or one a bench wrote (to continue it: --resume); nothing was run")
+
+
+def fresh_out(root: Path = Path("bench-out"), label: str = "") -> Path:
+    """A new bench folder under ``root``: the UTC time to the second, plus a short random part so
+    that two benches started in one second never share a folder."""
+    stamp = _dt.datetime.now(_dt.timezone.utc).strftime("%Y%m%dT%H%M%SZ")
+    return root / f"{stamp}{'-' + label if label else ''}-{os.urandom(3).hex()}"
 
 
 def _clear_unfinished(out: Path) -> None:
@@ -399,13 +431,19 @@ def _execute(backend, todo: list[RunSpec], done: dict, out: Path, progress: bool
     retried after a worker died counts once), stamped with its run's fingerprint. A run that
     ended in a user error stops the bench (:class:`UserError`; its row is not stored, so a
     ``--resume`` after the fix runs it). Returns how many runs finished here."""
-    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
-
+    from rich.progress import (BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn,
+                               TimeRemainingColumn)
 
     fresh = 0
     by_key = {run_key(s): s for s in todo}
-    columns = [TextColumn(f"bench ({backend.name})"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn()]
-    with Progress(*columns, disable=not progress, transient=False) as bar:
+    columns = [TextColumn(f"bench ({backend.name})"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(),
+               TextColumn("left"), TimeRemainingColumn()]
+    # a live bar on a terminal; elsewhere (CI, nohup, a file) a line every few runs or 30 s
+    live = progress and sys.stderr.isatty()
+    lines = CountProgress(f"bench ({backend.name})", total, total - len(todo)) if progress and not live else None
+    with Progress(*columns, disable=not live, transient=False) as bar, contextlib.ExitStack() as stack:
+        if lines is not None:
+            stack.callback(lines.close)
         task_id = bar.add_task("runs", total=total, completed=total - len(todo))
 
         def receive(row: dict) -> None:
@@ -431,6 +469,8 @@ def _execute(backend, todo: list[RunSpec], done: dict, out: Path, progress: bool
                                     f"--out {out} --resume` continues once there is space)", err.path, err.errno) from None
             fresh += 1
             bar.advance(task_id)
+            if lines is not None:
+                lines.advance()
             if on_row is not None:
                 on_row(row)
 
@@ -440,6 +480,7 @@ def _execute(backend, todo: list[RunSpec], done: dict, out: Path, progress: bool
 
 
 def _results(rows: list[dict], tasks: list[dict], config: BenchConfig, wall: float, domain: str) -> dict:
+    groups = domain_named(domain).task_groups
     by_variant: dict[str, list[dict]] = {}
     for row in rows:
         by_variant.setdefault(row["variant"], []).append(row)
@@ -449,7 +490,8 @@ def _results(rows: list[dict], tasks: list[dict], config: BenchConfig, wall: flo
         for t in tasks:
             trows = [r for r in vrows if r["task"] == t["id"]]
             task_rows.append({**aggregate_task(t["id"], trows), **understanding(trows),
-                              **({"construction": t["construction"]} if t.get("construction") else {})})
+                              **({"construction": t["construction"]} if t.get("construction") else {}),
+                              **{g: t[g] for g in groups if t.get(g) is not None}})  # the domain's task groups
         stage = {}
         for r in vrows:
             for k, v in (r.get("stage_seconds") or {}).items():
@@ -463,7 +505,7 @@ def _results(rows: list[dict], tasks: list[dict], config: BenchConfig, wall: flo
     first = variant_results[0]
     return {"summary": first["summary"], "tasks": first["tasks"], "constructions": first["constructions"],
             "variants": variant_results,
-            "config": {"tasks": str(config.tasks_file), "domain": domain, "workflow": config.workflow, "seeds": config.seeds,
+            "config": {"tasks": str(Path(config.tasks_file).resolve()), "domain": domain, "workflow": config.workflow, "seeds": config.seeds,
                        "jobs": config.jobs, "backend": config.backend, "matrix": config.matrix, "inputs": config.inputs},
             "wall_seconds": round(wall, 3),
             "created": _dt.datetime.now(_dt.timezone.utc).isoformat(timespec="seconds")}
@@ -540,6 +582,31 @@ def markdown_table(results: dict) -> str:
     return "\n".join(lines)
 
 
+def planner_lines(rows: list[dict]) -> list[str]:
+    """Which planner answered, per variant, and every fallback: a plan another planner made is
+    never shown as the asked-for planner's (the run rows say ``planner``, ``engine``, ``fallback``)."""
+    lines = []
+    variants = list(dict.fromkeys(r.get("variant", "default") for r in rows))
+    for v in variants:
+        vrows = [r for r in rows if r.get("variant", "default") == v]
+        engines: dict[str, int] = {}
+        for r in vrows:
+            if r.get("engine"):
+                engines[str(r["engine"])] = engines.get(str(r["engine"]), 0) + 1
+        fell = [r for r in vrows if r.get("fallback")]
+        if not engines and not fell:
+            continue
+        name = f" ({v})" if len(variants) > 1 else ""
+        line = f"planner{name}: " + ", ".join(f"{e} answered {n} run(s)" for e, n in engines.items())
+        if fell:
+            failed = sum(1 for r in fell if r.get("error_kind") == "PlannerFallback")
+            line += (f"; FELL BACK in {len(fell)} run(s)" + (f" ({failed} counted as failed: the bench names the "
+                                                              "planner)" if failed else "")
+                     + f", e.g. {fell[0]['task']} seed {fell[0]['seed']}: {fell[0]['fallback']}")
+        lines.append(line)
+    return lines
+
+
 def _write(out: Path, rows: list[dict], results: dict) -> None:
     write_json(out / "results.json", results, root=out)
     write_json(out / "runs.json", rows, root=out)
@@ -550,7 +617,7 @@ def _write(out: Path, rows: list[dict], results: dict) -> None:
     for row in rows:
         writer.writerow({k: (json.dumps(v) if isinstance(v, (list, dict)) else v) for k, v in row.items()})
     atomic_write(out / "runs.csv", text.getvalue(), root=out)
-    atomic_write(out / "table.md", markdown_table(results) + "\n", root=out)
+    atomic_write(out / "table.md", "\n".join([markdown_table(results), *planner_lines(rows)]) + "\n", root=out)
 
 
 def chosen_backend(args: argparse.Namespace) -> str:
@@ -574,7 +641,6 @@ def chosen_backend(args: argparse.Namespace) -> str:
 
 def bench_main(args: argparse.Namespace) -> int:
     """The CLI entry: build the config from arguments, run, print the table."""
-    stamp = _dt.datetime.now(_dt.timezone.utc).strftime("%Y%m%dT%H%M%SZ")
     tasks_file = Path(args.tasks)
     if not tasks_file.exists():
         raise UserError(f"{tasks_file}: no such task file")
@@ -599,11 +665,13 @@ def bench_main(args: argparse.Namespace) -> int:
         inputs["faults"] = faults
     config = BenchConfig(
         tasks_file=tasks_file, workflow=args.workflow, seeds=args.seeds,
-        jobs=_workers(args.jobs), out=Path(args.out or f"bench-out/{stamp}"),
+        jobs=_workers(args.jobs), out=Path(args.out) if args.out else fresh_out(),
         matrix=matrix, inputs=inputs, use_cache=not args.no_cache,
         backend=backend, resume=resume, llm_limits=parse_limits(limits))
     results = run_bench(config, progress=not args.quiet)
     print(markdown_table(results))
+    for line in planner_lines(json.loads((config.out / "runs.json").read_text())):
+        print(line)
     if len(results.get("variants", [])) > 1:
         print(variants_side_by_side(results, json.loads((config.out / "runs.json").read_text())))
     if getattr(args, "table", None) == "paper":  # the paper's tables (I-III), also in OUT/paper/

@@ -76,10 +76,20 @@ def run_one(spec: RunSpec) -> dict:
     row.update(domain.score_bench_run(spec.world_path, task, outputs, refusal, error))
     row.update(fault_columns(outputs, row["status"]))
     read = outputs if row["status"] == "succeeded" or not row.get("run_dir") else \
-        recorded_outputs(Path(row["run_dir"]), ("goal", "constraints", "loop", "reader"))
+        recorded_outputs(Path(row["run_dir"]), ("goal", "constraints", "loop", "reader", "planner", "engine",
+                                                "planner_fallback"))
     # which refinement loop ran (pip-llm, checked) and whose reading the goal was (offline, model)
     row["loop"], row["reader"] = read.get("loop"), read.get("reader")
     row["model"] = _recorded_model(row.get("run_dir"))  # what the paper's tables label a variant with
+    # which planner was asked for and which answered; a fallback the bench's own values asked to
+    # avoid (a planner named by --matrix or -i) is not that planner's result: the run is an error
+    row["planner"], row["engine"], row["fallback"] = read.get("planner"), read.get("engine"), read.get("planner_fallback")
+    if row["fallback"] and row["planner"] and str(row["planner"]) in {str(v) for v in spec.inputs.values()}:
+        error = (f"the planner {row['planner']} that this bench asks for could not run the problem: "
+                 f"{row['fallback']}; {row['engine']}'s plan is not {row['planner']}'s result, so the run counts as "
+                 f"failed (a fallback is accepted only where the bench does not name the planner)")
+        row.update(domain.score_bench_run(spec.world_path, task, {}, None, error))
+        row["status"], row["error_kind"] = "failed", "PlannerFallback"
     if row.get("run_dir") and not writes_goal(Path(row["run_dir"])):  # a baseline: it plans without a goal
         judged = {"understood": None, "misread": None, "understanding": "not measured: the workflow writes no goal"}
     elif row["status"] == "succeeded" and "goal" in read and read["goal"] is None:

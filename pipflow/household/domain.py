@@ -48,6 +48,7 @@ class HouseholdDomain(TaskDomain, ExecutionCapability):
     default_prompt = "household_problem"
     rule_fields = RULE_FIELDS
     surprise_names = fault_model.SURPRISE_NAMES
+    task_groups = ("category",)  # the paper's three: compound, complex, vague
 
     def pddl_domain(self) -> Path:
         return data_file("domains/household.pddl")
@@ -185,3 +186,17 @@ class HouseholdDomain(TaskDomain, ExecutionCapability):
 
     def feasibility(self, world: dict, goal: Any, constraints: list[dict]) -> tuple[bool | None, str]:
         return fault_model.feasibility(world, goal, constraints)
+
+    # -- the report ----------------------------------------------------------------------------
+
+    def goal_words(self, goal: Any) -> list[str]:
+        """``fridge holds pumpkin``, ``lettuce: sliced``, ``at least 2 of fruit in fridge``."""
+        if not isinstance(goal, Mapping):
+            return super().goal_words(goal)
+        lines = [f"{place} holds {', '.join(map(str, objs))}" for place, objs in (goal.get("in") or {}).items()]
+        lines += [f"{thing}: {', '.join(map(str, states))}" for thing, states in (goal.get("state") or {}).items()]
+        for c in goal.get("count") or []:
+            if isinstance(c, Mapping):
+                lines.append(f"at least {c.get('at_least')} of {c.get('category')} in {c.get('in')}")
+        rest = {k: v for k, v in goal.items() if k not in ("in", "state", "count")}
+        return lines + (super().goal_words(rest) if rest else [])

@@ -288,7 +288,7 @@ def bench_table(results: dict, tasks_file: str | Path) -> str:
     for variant in results["variants"]:
         if len(results["variants"]) > 1:
             lines.append(f"### {variant['name']}\n")
-        lines += ["| Category | tasks | runs | SR | understood | misread (executed) | TC max/avg (m) | GCR | RU | Exe |",
+        lines += ["| Category | tasks | runs | SR (%) | understood (%) | misread (executed) | TC max/avg (m) | GCR | RU | Exe |",
                   "|---|---|---|---|---|---|---|---|---|---|"]
         groups = [(c, [t for t in variant["tasks"] if category.get(t["id"]) == c]) for c in CATEGORIES]
         groups.append(("**all**", list(variant["tasks"])))
@@ -307,18 +307,18 @@ def bench_table(results: dict, tasks_file: str | Path) -> str:
             understood = (sum(r["understood"] * r["runs"] for r in measured) / sum(r["runs"] for r in measured)
                           if measured else None)
             misread = {k: sum(int(r.get(k) or 0) for r in rows) for k in ("misread", "misread_executed")}
-            lines.append(f"| {name} | {len(rows)} | {runs} | {w('sr'):.2f} | "
-                         f"{'--' if understood is None else f'{understood:.2f}'} | {misread_cell(misread)} | "
+            lines.append(f"| {name} | {len(rows)} | {runs} | {100 * w('sr'):.0f} | "
+                         f"{'--' if understood is None else f'{100 * understood:.0f}'} | {misread_cell(misread)} | "
                          f"{_fmt(tmax)}/{_fmt(tavg)} | {w('gcr'):.2f} | {w('ru'):.2f} | {w('exe'):.2f} |")
         if variant.get("constructions"):
-            lines += ["", "| Construction | runs | understood | misread (executed) |", "|---|---|---|---|"]
+            lines += ["", "| Construction | runs | understood (%) | misread (executed) |", "|---|---|---|---|"]
             for name, c in sorted(variant["constructions"].items()):
-                und = "--" if c.get("understood") is None else f"{c['understood']:.2f}"
+                und = "--" if c.get("understood") is None else f"{100 * c['understood']:.0f}"
                 lines.append(f"| {name} | {c['runs']} | {und} | {misread_cell(c)} |")
-        lines += ["", "| Task | category | SR | TC max/avg (m) | GCR | RU | Exe | error |", "|---|---|---|---|---|---|---|---|"]
+        lines += ["", "| Task | category | SR (%) | TC max/avg (m) | GCR | RU | Exe | error |", "|---|---|---|---|---|---|---|---|"]
         for t in variant["tasks"]:
             err = (t.get("error") or "").replace("|", "/").replace("\n", " ")[:90]
-            lines.append(f"| {t['id']} | {category.get(t['id'])} | {t['sr']:.2f} | {_fmt(t['tc_max'])}/{_fmt(t['tc_avg'])} | "
+            lines.append(f"| {t['id']} | {category.get(t['id'])} | {100 * t['sr']:.0f} | {_fmt(t['tc_max'])}/{_fmt(t['tc_avg'])} | "
                          f"{t['gcr']:.2f} | {t['ru']:.2f} | {t['exe']:.2f} | {err} |")
         lines.append("")
     lines.append(f"wall time: {results['wall_seconds']:.1f} s")

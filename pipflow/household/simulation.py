@@ -150,16 +150,14 @@ def simulate(world: dict, schedule: dict, graph: dict | None, goal: dict | None 
     log = log or (lambda m: None)
     nodes = {n["id"]: n for n in (graph or {}).get("nodes", [])}
     places = {n: tuple(p["access"]) for n, p in world["places"].items()}
-    legs: dict[str, list[dict]] = {r: [] for r in world["robots"]}
-    for r, info in (schedule.get("robots") or {}).items():
-        legs.setdefault(r, []).extend(info.get("legs", []))
-    traj = {r: Trajectory(world["robots"].get(r, {}).get("start", (0, 0)), ls) for r, ls in legs.items()}
+    traj = _trajectories(world, schedule)
 
     home = Home(world)
     scene = _Scene(world) if snapshots and out_dir else None
     pictures: list[str] = []
-    if scene:
-        pictures.append(scene.snapshot(Path(out_dir) / "home-start.png", home).name)
+    if scene:  # named as every domain's snapshots are (snapshot_<n>_<moment>.png), labelled
+        pictures.append(scene.snapshot(Path(out_dir) / "snapshot_1_start.png", home,
+                                       {r: tuple(tr.position(0.0)) for r, tr in traj.items()}, "t = 0.0 s: start").name)
 
     stops = {r: info["stopped"] for r, info in world["robots"].items() if info.get("stopped")}
     events = _events(schedule, stops)
@@ -195,7 +193,10 @@ def simulate(world: dict, schedule: dict, graph: dict | None, goal: dict | None 
 
     final = home.data()
     if scene:
-        pictures.append(scene.snapshot(Path(out_dir) / "home-end.png", home).name)
+        end = float(schedule.get("makespan", 0.0))
+        pictures.append(scene.snapshot(Path(out_dir) / "snapshot_2_end.png", home,
+                                       {r: tuple(tr.position(end)) for r, tr in traj.items()},
+                                       f"t = {end:.1f} s: end").name)
         scene.close()
     planned = len(schedule.get("subtasks", []))
     travel = {r: _metres(tr) for r, tr in traj.items() if r in world["robots"]}
@@ -210,6 +211,14 @@ def simulate(world: dict, schedule: dict, graph: dict | None, goal: dict | None 
         "jumps": {r: tr.jumps for r, tr in traj.items() if tr.jumps},
         "makespan": float(schedule.get("makespan", 0.0)), "pictures": pictures,
     }
+
+
+def _trajectories(world: dict, schedule: dict) -> dict[str, Trajectory]:
+    """Each robot's motion: its start and the legs the schedule gives it (none: it stays)."""
+    legs: dict[str, list[dict]] = {r: [] for r in world["robots"]}
+    for r, info in (schedule.get("robots") or {}).items():
+        legs.setdefault(r, []).extend(info.get("legs", []))
+    return {r: Trajectory(world["robots"].get(r, {}).get("start", (0, 0)), ls) for r, ls in legs.items()}
 
 
 def _events(schedule: dict, stops: dict[str, dict]) -> list[tuple[float, int, int, dict]]:
@@ -263,6 +272,7 @@ class _Scene:
         self.p, self.cid = connect_direct()
         p, self.world = self.p, world
         self.bodies: dict[str, int] = {}
+        self.robots: dict[str, int] = {}
         fw, fh = float(world["floor"]["width"]), float(world["floor"]["height"])
         self._box((fw / 2, fh / 2, 0.01), "beige", (fw / 2, fh / 2, -0.01))
         for name, pl in world["places"].items():
@@ -274,7 +284,8 @@ class _Scene:
         for i, (name, r) in enumerate(world["robots"].items()):
             vis = p.createVisualShape(p.GEOM_CYLINDER, radius=0.25, length=0.5,
                                       rgbaColor=ROBOT_COLOURS[i % len(ROBOT_COLOURS)], physicsClientId=self.cid)
-            p.createMultiBody(0, -1, vis, basePosition=(r["start"][0], r["start"][1], 0.25), physicsClientId=self.cid)
+            self.robots[name] = p.createMultiBody(0, -1, vis, basePosition=(r["start"][0], r["start"][1], 0.25),
+                                                  physicsClientId=self.cid)
 
     def _box(self, half, colour: str, pos) -> int:
         vis = self.p.createVisualShape(self.p.GEOM_BOX, halfExtents=half, rgbaColor=colour_rgba(colour), physicsClientId=self.cid)
@@ -284,8 +295,21 @@ class _Scene:
         vis = self.p.createVisualShape(self.p.GEOM_SPHERE, radius=radius, rgbaColor=colour_rgba(colour), physicsClientId=self.cid)
         return self.p.createMultiBody(0, -1, vis, basePosition=(0, 0, -5), physicsClientId=self.cid)
 
-    def snapshot(self, path: Path, home: Home, width: int = 640, height: int = 480) -> Path:
+    def snapshot(self, path: Path, home: Home, robots_at: dict | None = None, caption: str = "",
+                 width: int = 800, height: int = 560) -> Path:
+        """The home with each object where ``home`` has it and each robot at ``robots_at``; every
+        place and robot labelled with its name, ``caption`` (the time) in a corner."""
         p, c = self.p, self.cid
+        names = list(self.world["robots"])
+        for r, xy in (robots_at or {}).items():
+            if r in self.robots:
+                p.resetBasePositionAndOrientation(self.robots[r], (float(xy[0]), float(xy[1]), 0.25), (0, 0, 0, 1),
+                                                  physicsClientId=c)
+        labels = [(name, (pl["x"] + pl["width"] / 2, pl["y"], (0.45 if "receptacle" in pl["properties"] else 1.0) + 0.15),
+                   "place") for name, pl in self.world["places"].items()]
+        for r, body in self.robots.items():
+            (x, y, _), _ = p.getBasePositionAndOrientation(body, physicsClientId=c)
+            labels.append((r, (x, y, 0.8), "robot", ROBOT_COLOURS[names.index(r) % len(ROBOT_COLOURS)]))
         slots: dict[str, int] = {}
         for name, body in self.bodies.items():
             place = home.at.get(name)
@@ -298,7 +322,7 @@ class _Scene:
             y = pl["y"] + 0.12 + 0.22 * (k // cols) % max(pl["depth"], 0.22)
             h = 0.45 if "receptacle" in pl["properties"] else 1.0
             p.resetBasePositionAndOrientation(body, (x, y, h + 0.1), (0, 0, 0, 1), physicsClientId=c)
-        return render_floor(p, c, self.world["floor"], path, width, height)
+        return render_floor(p, c, self.world["floor"], path, width, height, labels, caption)
 
     def close(self) -> None:
         try:

@@ -73,7 +73,7 @@ def simulate(
     goal: Annotated[dict | None, Doc("goal conditions to judge the final state against")] = None,
     snapshots: Annotated[bool, Doc("save pybullet pictures of the start and the end")] = False,
 ) -> dict:
-    out_dir = ctx.artifact_path("home-start.png").parent if snapshots else None
+    out_dir = ctx.artifact_path("snapshot_1_start.png").parent if snapshots else None
     result = _domain().simulate(world, schedule, graph, goal, snapshots=snapshots, out_dir=out_dir, log=ctx.log)
     ctx.metrics.update({k: result[k] for k in ("exe", "tc_max", "tc_avg", "tc_avg_team", "gcr")})
     ctx.log(f"executed {result['executed']}/{len(schedule.get('subtasks', []))}, goal conditions "

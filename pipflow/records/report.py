@@ -35,11 +35,16 @@ from typing import Any
 from pipflow import pictures
 from pipflow.engine.store import shown_status
 from pipflow.engine.writes import make_dirs, write_file
-from pipflow.errors import InputError
+from pipflow.errors import InputError, UserError
 from pipflow.goalcounts import describe, holds, is_bound, value_problems
 from pipflow.meaning import misread_cell
-from pipflow.metrics import counts_for_travel, upgrade_results, upgrade_travel_keys
-from pipflow.yamlsource import read_source, safe_load
+from pipflow.metrics import upgrade_travel_keys
+from pipflow.records.benchread import BY_KEY, ROW_KEY, Bench, fmt_interval, fmt_value, read_bench, task_commands, task_fields
+from pipflow.records.intervals import LEVEL, STUDENT, WILSON, wilson
+from pipflow.records.matrix import matrix_html, relative_link
+from pipflow.records.replay import replay_section
+from pipflow.taskdomain import plain_words
+from pipflow.taskdomains import domain_named, task_domain
 
 _CHECK_SCRIPT = """<script>
 window.addEventListener('load', function () {
@@ -58,6 +63,7 @@ table { border-collapse: collapse; margin: .5em 0; } td, th { border: 1px solid 
 th { background: #eef2f7; } td.num { text-align: right; font-variant-numeric: tabular-nums; }
 .ok { color: #1a7f37; font-weight: bold; } .bad { color: #c62828; font-weight: bold; }
 img { max-width: 100%; border: 1px solid #ddd; margin: .3em 0; }
+.wide { overflow-x: auto; max-width: 100%; } .chart { overflow-x: auto; max-width: 100%; border: 1px solid #eee; } .chart img { max-width: none; border: 0; }
 .snaps figure { display: inline-block; width: 48%; margin: .3em .5%; } .snaps img { width: 100%; } figcaption { text-align: center; color: #444; } pre { background: #f6f8fa; padding: .6em; overflow-x: auto; white-space: pre-wrap; }
 .round { border: 1px solid #ccd; border-radius: 6px; padding: .2em 1em .6em; margin: .8em 0; }
 .cause { border: 2px solid #c62828; border-radius: 6px; padding: .2em 1em; background: #fff5f5; }
@@ -100,7 +106,7 @@ def write_report(directory: str | Path, output: str | Path | None = None) -> Pat
     pics = _Pictures(root / "report" if root is not None and out.parent == root else out.parent / f"{out.stem}_files",
                      root)
     if is_bench:
-        body = _bench_body(d, pics)
+        body = _bench_body(d, pics, write_runs=root is not None)  # a page elsewhere writes nothing into the record
         title = f"pipflow bench: {d.name}"
     else:
         body = _run_body(d, pics)
@@ -233,7 +239,7 @@ def _run_body(d: Path, drawn: _Pictures) -> str:
     schedule = sched_s[2]["schedule"] if sched_s else None
 
     # team plan, with the robots the schedule gave each subtask
-    parts.append("<h2>Team plan</h2>")
+    parts.append("<h2 id='plan'>Team plan</h2>")
     plan = plan_s[2]["plan"] if plan_s else None
     if plan is not None:
         # subtask ids as the graph and the Gantt chart name them (s1, s2, ...), not list positions
@@ -252,6 +258,7 @@ def _run_body(d: Path, drawn: _Pictures) -> str:
         parts.append("<p>(no plan in this run)</p>")
 
     mode = inputs.get("pictures") if inputs.get("pictures") in pictures.MODES else "auto"
+    parts.append("<span id='pictures'></span>")  # where a bench's matrix links a run's pictures
     if graph_s and not pictures.wanted(mode, "graph", pictures.size_of("graph", graph_s[2]["graph"])):
         parts.append(f"<h2>Dependency graph</h2><p>not drawn (pictures: {_e(mode)}; "
                      f"{len(graph_s[2]['graph'].get('nodes', []))} subtasks)</p>")
@@ -267,6 +274,7 @@ def _run_body(d: Path, drawn: _Pictures) -> str:
     elif schedule:
         pictures.gantt(schedule, drawn.path("gantt.png"))
         parts.append("<h2>Schedule</h2>" + _img(drawn.src("gantt.png"), "Gantt chart per robot"))
+    parts.append(_replay(d, steps, world, schedule, graph_s[2]["graph"] if graph_s else None))
 
     if sim_s:
         name, sd, sim = sim_s
@@ -323,6 +331,24 @@ def _run_body(d: Path, drawn: _Pictures) -> str:
 
     parts.append("<h2>Steps</h2>" + _table(["step", "outputs"], [[n, ", ".join(sorted(o))] for n, _, o in steps]))
     return "\n".join(parts)
+
+
+def _replay(d: Path, steps, world: Any, schedule: Any, graph: Any) -> str:
+    """The replay section (:mod:`pipflow.records.replay`): the recorded trajectories of whichever
+    step kept them (``trajectories.json``), else the schedule's legs; the floor plan from the
+    world's task domain."""
+    if not isinstance(world, dict) or not isinstance(schedule, dict):
+        return ""
+    recorded = None
+    for name, sd, _ in steps:
+        data = _read(sd / "artifacts" / "trajectories.json")
+        if isinstance(data, dict) and isinstance(data.get("trajectories"), dict):
+            recorded = data
+    try:
+        plan = list(task_domain(world).floor_plan(world))
+    except UserError:  # the world's domain is no longer installed: the floor alone
+        plan = []
+    return replay_section(world, schedule, graph, recorded, plan)
 
 
 # ------------------------------------------------------------------------------------------
@@ -445,9 +471,7 @@ def _understood(steps) -> str:
     lines = list((gen[2].get("explanation") if gen else None) or [])
     goal = (ver[2].get("goal") if ver else None) or (gen[2].get("goal") if gen else None)
     if not lines and isinstance(goal, dict):
-        for place, items in goal.items():
-            for item, value in (items.items() if isinstance(items, dict) else []):
-                lines.append(f"{place} {item}: {_goal_words(value)}")
+        lines = _goal_lines(steps, goal)
     for rule in (gen[2].get("constraints") or []) if gen else []:
         if isinstance(rule, dict):
             lines.append(_rule_words(rule))
@@ -456,13 +480,15 @@ def _understood(steps) -> str:
     return "<h2>Understood</h2><ul class='understood'>" + "".join(f"<li>{_e(x)}</li>" for x in lines) + "</ul>"
 
 
-def _goal_words(value: Any) -> str:
-    if isinstance(value, dict):
-        lo, hi = value.get("at_least"), value.get("at_most")
-        if lo is not None and hi is not None:
-            return f"between {lo} and {hi}"
-        return f"at least {lo}" if lo is not None else f"at most {hi}"
-    return f"exactly {value}"
+def _goal_lines(steps, goal: dict) -> list[str]:
+    """The goal in its task domain's words (``fridge holds pumpkin``, ``shelf4 product3: exactly
+    12``), never a Python list; a domain no longer installed: the goal spelt out generically."""
+    world = (_find(steps, lambda o: isinstance(o.get("world"), dict)) or (None, None, {}))[2].get("world")
+    try:
+        domain = task_domain(world) if isinstance(world, dict) else domain_named(None)
+    except UserError:
+        return plain_words(goal)
+    return list(domain.goal_words(goal))
 
 
 def _rule_words(rule: dict) -> str:
@@ -503,7 +529,7 @@ def _loop_section(rounds: list[dict]) -> str:
             checks.append(f"<h4>verifier: refusal</h4><p>{_e(ver['refusal'])}</p>")
         cards.append(f"<div class='round'>{head}{facts}"
                      + (f"<h4>Prompt</h4>{msgs}" if msgs else "") + answer_html + "".join(checks) + "</div>")
-    return "<h2>Refinement loop</h2>" + "".join(cards)
+    return "<h2 id='loop'>Refinement loop</h2>" + "".join(cards)
 
 
 # ------------------------------------------------------------------------------------------
@@ -511,71 +537,218 @@ def _loop_section(rounds: list[dict]) -> str:
 # ------------------------------------------------------------------------------------------
 
 
-def _bench_body(d: Path, drawn: _Pictures) -> str:
-    """Variants side by side: a summary row per variant, then per task each variant's SR,
-    understanding, travel and makespan (mean and spread over seeds), with the difference to the
-    first variant; the configuration shows the matrix that made the variants."""
-    results = _read(d / "results.json")
-    if not isinstance(results, dict) or "tasks" not in results:
-        raise InputError(f"{d / 'results.json'}: not a results file (needs 'summary' and 'tasks')")
-    runs = [upgrade_travel_keys(r) for r in (_read(d / "runs.json", []) or []) if isinstance(r, dict)]
-    results = upgrade_results(results)
-    config = results.get("config") or {}
-    variants = results.get("variants") or [{"name": "default", "summary": results.get("summary", {}),
-                                            "tasks": results.get("tasks", [])}]
-    names = [v.get("name", "default") for v in variants]
-    parts = [_bench_config(results, config)]
-
-    parts.append("<h2>Summary</h2>" + _table(
-        ["variant", "runs", "SR", "understood", "misread (executed)", "GCR", "TC-max (m)", "TC-avg (m)", "makespan (s)",
-         "time per run (s)", "tokens"],
-        [[v.get("name", "default"), (v.get("summary") or {}).get("runs"), _pct((v.get("summary") or {}).get("sr")),
-          _pct((v.get("summary") or {}).get("understood")), misread_cell(v.get("summary") or {}),
-          (v.get("summary") or {}).get("gcr"), (v.get("summary") or {}).get("tc_max"),
-          (v.get("summary") or {}).get("tc_avg"), _mean_of(runs, v.get("name", "default"), "makespan"),
-          _mean_of(runs, v.get("name", "default"), "seconds"), _mean_of(runs, v.get("name", "default"), "tokens")]
-         for v in variants]))
-
-    commands = _task_commands(config)
-    by_task = {name: {t.get("id"): t for t in v.get("tasks", []) if isinstance(t, dict)}
-               for name, v in zip(names, variants)}
-    task_ids = [t.get("id") for t in variants[0].get("tasks", []) if isinstance(t, dict)]
-    rows = []
-    for tid in task_ids:
-        row: list[Any] = [tid, commands.get(tid, "")]
-        base_tc = None
-        for k, n in enumerate(names):
-            t = by_task[n].get(tid) or {}
-            vr = [r for r in runs if r.get("variant", "default") == n and r.get("task") == tid]
-            tc = [float(r["tc_max"]) for r in vr if counts_for_travel(r) and isinstance(r.get("tc_max"), (int, float))]
-            links = " ".join(f"<a href='{_e(link)}'>seed {_e(r.get('seed'))}</a>" for r in vr
-                             for link in [_rel(d, r.get("run_dir"))] if link)
-            row += [Raw(f"{_pct(t.get('sr'))}<br><span class='small'>{links}</span>"), _spread(tc),
-                    _num(t.get("makespan"))]
-            if k == 0:
-                base_tc = t.get("tc_max")
-        for n in names[1:]:
-            t = by_task[n].get(tid) or {}
-            row.append(t.get("tc_max") - base_tc if isinstance(t.get("tc_max"), (int, float))
-                       and isinstance(base_tc, (int, float)) else None)
-        rows.append(row)
-    parts.append("<h2>Tasks</h2>" + _grouped_table(names, rows))
-    errors = [(n, t.get("id"), t.get("error")) for n, v in zip(names, variants) for t in v.get("tasks", [])
-              if isinstance(t, dict) and t.get("error")]
+def _bench_body(d: Path, drawn: _Pictures, write_runs: bool = True) -> str:
+    """A bench: its configuration, a summary row per variant (SR and the other shares as
+    percents, each figure with its 95% interval over seeds), the matrix of variants x tasks (one
+    click to each run), a table per group of tasks when the task domain groups them (household:
+    per category), the tasks' table with each seed's run, the right refusals apart from the
+    errors, and the per-task charts. ``write_runs``: write the report of every run of the bench
+    that has none yet (or an older one), so that every seed link opens a report."""
+    bench = read_bench(d)
+    if write_runs:
+        _write_run_reports(bench)
+    names = bench.variants
+    parts = [_bench_config(bench.results, bench.config)]
+    parts.append("<h2 id='summary'>Summary</h2>" + _summary_table(bench) + f"<p class='small'>{_e(_ci_note(bench))}</p>")
+    for group, labels in _task_groups(bench).items():
+        parts.append(f"<h2 id='per-{_e(group)}'>Per {_e(group)}</h2>" + _group_table(bench, group, labels))
+    parts.append(matrix_html([bench], relative_link(d)))
+    constructions = [(n, (v.get("constructions") or {})) for n, v in zip(names, bench.results.get("variants") or [])]
+    if any(c for _, c in constructions):
+        rows = [[k, *[Raw(f"{_e(c.get(k, {}).get('runs', ''))} runs, {_e(_pct(c.get(k, {}).get('understood')) or '-')} "
+                          f"understood, misread {_e(misread_cell(c.get(k, {})))}") if k in c else None
+                      for _, c in constructions]]
+                for k in sorted({k for _, c in constructions for k in c})]
+        parts.append("<h2 id='constructions'>Understanding per construction</h2>"
+                     + _table(["construction", *names], rows))
+    parts.append("<h2 id='tasks'>Tasks</h2>" + _tasks_table(bench))
+    refusals, errors = _refusals_and_errors(bench)
+    if refusals:
+        parts.append("<h3 id='refusals'>Refused, as the task asks</h3><p class='small'>Commands the task file marks "
+                     "impossible (or to refuse): a refusal with a reason is the right answer.</p><ul>" + "".join(
+                         f"<li><b>{_e(tid)}</b>" + (f" [{_e(n)}]" if len(names) > 1 else "") + f": {_e(text)}</li>"
+                         for n, tid, text in refusals) + "</ul>")
     if errors:
-        parts.append("<h3>Errors</h3><ul>" + "".join(
-            f"<li><b>{_e(tid)}</b>" + (f" [{_e(n)}]" if len(names) > 1 else "") + f": {_e(err)}</li>"
-            for n, tid, err in errors) + "</ul>")
-    if task_ids:
-        _bench_overview(variants, runs, drawn.path("overview.png"))
-        parts.append("<h2>Per task</h2>" + _img(drawn.src("overview.png"), "SR and TC-max per task and variant"))
+        parts.append("<h3 id='errors'>Errors</h3><p class='small'>Runs that did not succeed, with why.</p><ul>" + "".join(
+            f"<li><b>{_e(tid)}</b>" + (f" [{_e(n)}]" if len(names) > 1 else "") + f": {_e(text)}</li>"
+            for n, tid, text in errors) + "</ul>")
+    if bench.task_ids:
+        groups = _task_groups(bench)
+        chart_groups = next(iter(groups.items()), None)
+        parts.append("<h2 id='charts'>Per task</h2><p class='small'>At full size; scroll sideways in a wide "
+                     "chart.</p>")
+        sets = ([(label, [t for t in bench.task_ids if chart_groups[1].get(t) == label])
+                 for label in dict.fromkeys(chart_groups[1].values())] if chart_groups else [("", bench.task_ids)])
+        for k, (label, ids) in enumerate(sets):
+            if not ids:
+                continue
+            name = f"overview{'-' + re.sub(r'[^A-Za-z0-9_-]', '_', str(label)) if label else ''}.png"
+            _bench_overview(bench, ids, drawn.path(name), title=str(label))
+            parts.append((f"<h3>{_e(label)}</h3>" if label else "")
+                         + f"<div class='chart'>{_img(drawn.src(name), f'SR and TC-max per task and variant {label}'.strip())}</div>")
     return "\n".join(parts)
+
+
+def _write_run_reports(bench: Bench) -> None:
+    """The report of each run of the bench whose report is missing or older than its record."""
+    for run in bench.runs:
+        folder = bench.run_folder(run)
+        if folder is None:
+            continue
+        page = folder / "report.html"
+        try:
+            if page.is_file() and not page.is_symlink() and page.stat().st_mtime >= (folder / "run.json").stat().st_mtime:
+                continue
+            write_report(folder)
+        except (UserError, OSError):  # a run whose report cannot be written keeps a link to its folder
+            continue
+
+
+def _ci_note(bench: Bench) -> str:
+    seeds = int(bench.config.get("seeds") or 1)
+    if seeds < 2:
+        return "One seed per task: no intervals (run the bench with --seeds 2 or more for them)."
+    return (f"[lo, hi]: the {int(LEVEL * 100)}% interval over the {seeds} seeds: {WILSON} for SR and understood, "
+            f"{STUDENT} for the others; the all-tasks figures over each seed's figure of all tasks.")
+
+
+def _figure_cell(bench: Bench, variant: str, task: str | None, key: str) -> Any:
+    metric = BY_KEY[key]
+    f = bench.figure(variant, task, metric)
+    if f.value is None:
+        return None
+    interval = fmt_interval(f.interval, metric)
+    return Raw(_e(fmt_value(f.value, metric)) + (f" <span class='small'>{_e(interval)}</span>" if interval else ""))
+
+
+def _summary_table(bench: Bench) -> str:
+    rows = []
+    for v in bench.variants:
+        s = bench.summaries.get(v, {})
+        fallbacks = [r for r in bench.runs_of(v) if r.get("fallback")]
+        rows.append([v, s.get("runs"), _figure_cell(bench, v, None, "sr"), _figure_cell(bench, v, None, "understood"),
+                     misread_cell(s), _figure_cell(bench, v, None, "gcr"), _figure_cell(bench, v, None, "exe"),
+                     _figure_cell(bench, v, None, "ru"), _figure_cell(bench, v, None, "tc_max"),
+                     _figure_cell(bench, v, None, "tc_avg"), _figure_cell(bench, v, None, "makespan"),
+                     _figure_cell(bench, v, None, "seconds"), _engines(bench.runs_of(v)),
+                     Raw(f"<span class='bad'>{len(fallbacks)}</span>") if fallbacks else 0])
+    return _table(["variant", "runs", "SR", "understood", "misread (executed)", "GCR", "Exe", "RU", "TC-max (m)",
+                   "TC-avg (m)", "makespan (s)", "time per run (s)", "planner", "planner fell back"], rows)
+
+
+def _engines(runs: list[dict]) -> str:
+    """Which planner answered, over the runs (``engine`` of each row; older rows have none)."""
+    counts: dict[str, int] = {}
+    for r in runs:
+        if r.get("engine"):
+            counts[str(r["engine"])] = counts.get(str(r["engine"]), 0) + 1
+    return ", ".join(f"{k} ({n})" if len(counts) > 1 else k for k, n in counts.items()) or ""
+
+
+def _task_groups(bench: Bench) -> dict[str, dict[str, str]]:
+    """``{field: {task id: label}}`` for each field the bench's task domain groups its tasks by
+    (:attr:`pipflow.taskdomain.TaskDomain.task_groups`), read from the task rows (or, for an
+    older bench, from its task file)."""
+    try:
+        fields = tuple(domain_named(bench.config.get("domain")).task_groups)
+    except UserError:  # a bench of a domain no longer installed: no groups
+        return {}
+    out: dict[str, dict[str, str]] = {}
+    for field in fields:
+        labels = {tid: str(row[field]) for v in bench.variants for tid, row in bench.tasks[v].items()
+                  if row.get(field) is not None}
+        if not labels:
+            labels = {tid: str(t[field]) for tid, t in task_fields(bench.config, bench.path).items()
+                      if t.get(field) is not None and tid in bench.task_ids}
+        if labels:
+            out[field] = labels
+    return out
+
+
+def _group_table(bench: Bench, field: str, labels: dict[str, str]) -> str:
+    """One row per group (and all tasks) and variant: tasks, runs, SR, understood, misread, TC,
+    GCR, RU, Exe; the rates over the group's runs, TC over its tasks that have a travel figure
+    (as the bench's summary is made)."""
+    rows = []
+    for label in list(dict.fromkeys(labels.values())) + [None]:
+        ids = [t for t in bench.task_ids if label is None or labels.get(t) == label]
+        for v in bench.variants:
+            runs = [r for r in bench.runs_of(v) if str(r.get("task")) in ids]
+            tasks = [bench.tasks[v][t] for t in ids if t in bench.tasks[v]]
+            n = sum(int(t.get("runs") or 0) for t in tasks)
+
+            def share(key: str) -> Any:
+                if runs:
+                    vals = [bool(r.get(ROW_KEY.get(key, key))) for r in runs if r.get(ROW_KEY.get(key, key)) is not None]
+                    if not vals:
+                        return None
+                    interval = fmt_interval(wilson(sum(vals), len(vals)), BY_KEY[key])
+                    return Raw(f"{100 * sum(vals) / len(vals):.0f}%" + (f" <span class='small'>{interval}</span>" if interval else ""))
+                vals = [(t.get(key), t.get("runs") or 0) for t in tasks if t.get(key) is not None]
+                total = sum(w for _, w in vals)
+                return _pct(sum(x * w for x, w in vals) / total) if total else None
+
+            def mean(key: str, weighted: bool = True) -> Any:
+                vals = [(float(t[key]), (t.get("runs") or 0) if weighted else 1) for t in tasks
+                        if isinstance(t.get(key), (int, float))]
+                total = sum(w for _, w in vals)
+                return round(sum(x * w for x, w in vals) / total, 2) if total else None
+
+            misread = {k: sum(int(t.get(k) or 0) for t in tasks) for k in ("misread", "misread_executed")}
+            rows.append([Raw(f"<b>all</b>") if label is None else label] + ([v] if len(bench.variants) > 1 else [])
+                        + [len(tasks), n, share("sr"), share("understood"), misread_cell(misread),
+                           mean("tc_max", False), mean("tc_avg", False), mean("gcr"), mean("ru"), mean("exe")])
+    head = [field] + (["variant"] if len(bench.variants) > 1 else []) + [
+        "tasks", "runs", "SR", "understood", "misread (executed)", "TC-max (m)", "TC-avg (m)", "GCR", "RU", "Exe"]
+    return _table(head, rows)
+
+
+def _tasks_table(bench: Bench) -> str:
+    """Per task, each variant's SR (with each seed's run linked), TC-max and makespan (mean and
+    interval over seeds), RU and Exe; then each further variant's TC-max difference to the
+    first."""
+    names = bench.variants
+    commands = task_commands(bench.config, bench.path)
+    link = relative_link(bench.path)
+    rows = []
+    for tid in bench.task_ids:
+        row: list[Any] = [tid, commands.get(tid, "")]
+        for n in names:
+            vr = sorted(bench.runs_of(n, tid), key=lambda r: r.get("seed") or 0)
+            links = " ".join(f"<a href='{_e(url)}'>seed {_e(r.get('seed'))}</a>" for r in vr for url in [link(bench, r)] if url)
+            sr = _figure_cell(bench, n, tid, "sr")
+            row += [Raw(f"{sr if sr is not None else '&ndash;'}<br><span class='small'>{links}</span>"),
+                    _figure_cell(bench, n, tid, "tc_max"), _figure_cell(bench, n, tid, "makespan"),
+                    _figure_cell(bench, n, tid, "ru"), _figure_cell(bench, n, tid, "exe")]
+        base = bench.figure(names[0], tid, BY_KEY["tc_max"]).value
+        for n in names[1:]:
+            other = bench.figure(n, tid, BY_KEY["tc_max"]).value
+            row.append(other - base if other is not None and base is not None else None)
+        rows.append(row)
+    return _grouped_table(names, rows)
+
+
+def _refusals_and_errors(bench: Bench) -> tuple[list, list]:
+    """Per variant and task, the refusals that were the right answer (the run succeeded by
+    refusing) and the errors of runs that did not succeed, each text once."""
+    refusals, errors = [], []
+    for v in bench.variants:
+        for tid in bench.task_ids:
+            runs = bench.runs_of(v, tid)
+            right = {str(r.get("error")) for r in runs if r.get("success") and r.get("error")}
+            wrong = {str(r.get("error")) for r in runs if not r.get("success") and r.get("error")}
+            t = bench.tasks[v].get(tid) or {}
+            if not right and not wrong and t.get("error"):  # rows without errors (older): the task row's, by its SR
+                (right if t.get("sr") == 1 else wrong).add(str(t["error"]))
+            refusals += [(v, tid, text) for text in sorted(right)]
+            errors += [(v, tid, text) for text in sorted(wrong)]
+    return refusals, errors
 
 
 def _grouped_table(names: list[str], rows: list[list[Any]]) -> str:
     """Per-task rows under a two-level header: one column group per variant (SR, TC-max,
-    makespan), then the difference in TC-max of each further variant to the first."""
-    per = ("SR", "TC-max (m)", "makespan (s)")
+    makespan, RU, Exe), then the difference in TC-max of each further variant to the first."""
+    per = ("SR", "TC-max (m)", "makespan (s)", "RU", "Exe")
     top = "<th rowspan='2'>task</th><th rowspan='2' class='cmd'>command</th>" + "".join(
         f"<th colspan='{len(per)}'>{_e(n)}</th>" for n in names)
     if len(names) > 1:
@@ -585,7 +758,7 @@ def _grouped_table(names: list[str], rows: list[list[Any]]) -> str:
         f"<td class='num'>{_num(c)}</td>" if isinstance(c, (int, float)) or c is None else
         f"<td class='cmd'>{_num(c)}</td>" if i == 1 else f"<td>{_num(c)}</td>"
         for i, c in enumerate(row)) + "</tr>" for row in rows)
-    return f"<table class='tasks'><tr>{top}</tr><tr>{sub}</tr>{body}</table>"
+    return f"<div class='wide'><table class='tasks'><tr>{top}</tr><tr>{sub}</tr>{body}</table></div>"
 
 
 def _bench_config(results: dict, config: dict) -> str:
@@ -597,81 +770,48 @@ def _bench_config(results: dict, config: dict) -> str:
     return "<h2>Configuration</h2>" + _table(["", ""], rows)
 
 
-def _task_commands(config: dict) -> dict[str, str]:
-    """Each task's command, read back from the bench's task file (empty when it is gone)."""
-    try:
-        doc = safe_load(read_source(config.get("tasks") or "", "task file"))
-    except Exception:  # a moved or damaged task file only loses the command column
-        return {}
-    return {str(t.get("id")): str(t.get("command", "")) for t in (doc or {}).get("tasks", []) if isinstance(t, dict)}
-
-
 def _pct(x: Any) -> Any:
     return None if x is None else f"{100 * float(x):.0f}%"
 
 
-def _spread(values: list[float]) -> Any:
-    """Mean over seeds, with the spread (min-max) when there is more than one."""
-    if not values:
-        return None
-    mean = sum(values) / len(values)
-    if len(values) == 1:
-        return round(mean, 2)
-    return f"{mean:.2f} ({min(values):.2f}\u2013{max(values):.2f})"
-
-
-def _mean_of(runs: list[dict], variant: str, key: str) -> Any:
-    vals = [float(r[key]) for r in runs if r.get("variant", "default") == variant
-            and isinstance(r.get(key), (int, float)) and not isinstance(r.get(key), bool)]
-    return round(sum(vals) / len(vals), 2) if vals else None
-
-
-def _rel(d: Path, run_dir: str | None) -> str | None:
-    """Link to a run inside the bench dir: its report.html when written, else the directory."""
-    if not run_dir:
-        return None
-    p = Path(run_dir)
-    p = p if p.is_absolute() else (d / p)
-    try:
-        rel = p.resolve().relative_to(d.resolve())
-    except ValueError:
-        return None
-    if (p / "report.html").is_file():
-        return f"{rel.as_posix()}/report.html"
-    return rel.as_posix() if p.is_dir() else None
-
-
-def _bench_overview(variants: list[dict], runs: list[dict], path: Path) -> None:
-    """SR and TC-max per task, one bar per variant; TC-max bars carry the spread over seeds."""
+def _bench_overview(bench: Bench, ids: list[str], path: Path, title: str = "") -> None:
+    """SR and TC-max of tasks ``ids``, one bar per variant; TC-max bars carry the 95% interval
+    over seeds (none with one seed). Drawn at a readable size (about 0.35 inch a bar), never
+    squeezed: the page scrolls it; the legend sits above the axes, never on the bars."""
     plt = pictures._plt()  # matplotlib loads here, on first drawing
-    ids = [str(t.get("id")) for t in variants[0].get("tasks", [])]
     x = list(range(len(ids)))
-    width = 0.8 / max(1, len(variants))
-    fig, (a1, a2) = plt.subplots(1, 2, figsize=(max(12, 0.6 * len(ids) * len(variants) + 4), 4.5))
-    for k, v in enumerate(variants):
-        name = v.get("name", "default")
-        tasks = {str(t.get("id")): t for t in v.get("tasks", [])}
+    k_vars = max(1, len(bench.variants))
+    width = 0.8 / k_vars
+    fig, (a1, a2) = plt.subplots(2, 1, figsize=(max(8.0, 0.35 * len(ids) * k_vars + 2.5), 7.5))
+    for k, name in enumerate(bench.variants):
         xs = [i - 0.4 + width * (k + 0.5) for i in x]
-        a1.bar(xs, [100 * float((tasks.get(i) or {}).get("sr") or 0) for i in ids], width, label=name)
-        lo, mid, hi = [], [], []
-        for i in ids:
-            tc = [float(r["tc_max"]) for r in runs if r.get("variant", "default") == name and str(r.get("task")) == i
-                  and counts_for_travel(r) and isinstance(r.get("tc_max"), (int, float))]
-            m = sum(tc) / len(tc) if tc else 0.0
+        srs = [bench.figure(name, t, BY_KEY["sr"]).value for t in ids]
+        a1.bar(xs, [100 * (v or 0.0) for v in srs], width, label=name)
+        mid, lo, hi = [], [], []
+        for t in ids:
+            f = bench.figure(name, t, BY_KEY["tc_max"])
+            m = f.value or 0.0
             mid.append(m)
-            lo.append(m - min(tc) if tc else 0.0)
-            hi.append(max(tc) - m if tc else 0.0)
-        a2.bar(xs, mid, width, yerr=[lo, hi], capsize=2, label=name)
+            lo.append(m - f.interval[0] if f.interval else 0.0)
+            hi.append(f.interval[1] - m if f.interval else 0.0)
+        spread = any(lo) or any(hi)  # one seed: no interval, no whiskers
+        a2.bar(xs, mid, width, yerr=[lo, hi] if spread else None, capsize=2 if spread else 0, label=name)
     a1.set_ylim(0, 105)
     a1.set_ylabel("SR (%)")
-    a1.set_title("Success rate per task")
+    a1.set_title("Success rate per task" + (f": {title}" if title else ""))
     a2.set_ylabel("TC-max (m), successful runs")
-    a2.set_title("Longest robot travel per task (bars: spread over seeds)")
+    a2.set_title("Longest robot travel per task (bars: 95% interval over seeds)")
     for a in (a1, a2):
         a.set_xticks(x)
-        a.set_xticklabels(ids, rotation=45, ha="right", fontsize=9)
-        if len(variants) > 1:
-            a.legend(fontsize=8)
-    fig.tight_layout()
+        a.set_xticklabels(ids, rotation=60, ha="right", fontsize=9)
+        a.set_xlim(-0.6, len(ids) - 0.4)
+    if k_vars > 1:  # one legend for both charts, above them, a line per variant: it never covers a bar
+        handles, labels = a1.get_legend_handles_labels()
+        top = 0.22 * k_vars + 0.2  # inches
+        fig.set_figheight(fig.get_figheight() + top)
+        fig.legend(handles, labels, loc="upper left", ncol=1, fontsize=9, frameon=False, bbox_to_anchor=(0.01, 1.0))
+        fig.tight_layout(rect=(0, 0, 1, 1 - top / fig.get_figheight()))
+    else:
+        fig.tight_layout()
     pictures.save_figure(fig, path, dpi=90)
     plt.close(fig)

@@ -16,6 +16,7 @@ from pathlib import Path
 from typing import Any, Callable, Mapping
 
 from pipflow.execution.capability import ExecutionCapability, Played
+from pipflow.goalcounts import describe, is_bound
 from pipflow.language.offline import NO_USAGE
 from pipflow.resources import data_file
 from pipflow.taskdomain import Facts, GoalCheck, Grounding, Save, TaskDomain, flat_simulation, pddl_domain_name
@@ -222,3 +223,12 @@ class WarehouseDomain(TaskDomain, ExecutionCapability):
 
     def feasibility(self, world: dict, goal: Any, constraints: list[dict]) -> tuple[bool | None, str]:
         return fault_model.feasibility(world, goal, constraints)
+
+    # -- the report ----------------------------------------------------------------------------
+
+    def goal_words(self, goal: Any) -> list[str]:
+        """``shelf4 product3: exactly 12``, ``shelf1 product2: at least 3``: a line per count."""
+        if not isinstance(goal, Mapping):
+            return super().goal_words(goal)
+        return [f"{shelf} {product}: {describe(value) if is_bound(value) else f'exactly {value}'}"
+                for shelf, items in goal.items() if isinstance(items, Mapping) for product, value in items.items()]

@@ -297,9 +297,15 @@ class Scene:
         x, y, _ = self.body_xyz(self.robot_body[robot])
         return (x, y)
 
-    def snapshot(self, path: Path, width: int = 640, height: int = 400) -> Path:
-        """An oblique view of the whole floor with the tiny renderer (no display needed)."""
-        return render_floor(self.p, self.cid, self.world["floor"], path, width, height)
+    def snapshot(self, path: Path, width: int = 800, height: int = 500, caption: str = "") -> Path:
+        """An oblique view of the whole floor with the tiny renderer (no display needed), each
+        shelf and robot labelled with its name and ``caption`` (the time) in a corner."""
+        labels = [(name, (float(sh["x"]) + float(sh["width"]) / 2, float(sh["y"]), SHELF_HEIGHT + 0.2), "place")
+                  for name, sh in self.world.get("shelves", {}).items()]
+        names = list(self.world.get("robots", {}))
+        labels += [(r, (*self.robot_xy(r), ROBOT_HEIGHT + 0.35), "robot", ROBOT_COLOURS[names.index(r) % len(ROBOT_COLOURS)])
+                   for r in names]
+        return render_floor(self.p, self.cid, self.world["floor"], path, width, height, labels, caption)
 
     def close(self) -> None:
         try:
@@ -537,7 +543,7 @@ class Playback:
         for name, ts in list(snap_plan.items()):
             if t + 1e-9 >= ts:
                 fname = f"snapshot_{len(self.pictures) + 1}_{name}.png"
-                self.scene.snapshot(out / fname)
+                self.scene.snapshot(out / fname, caption=f"t = {t:.1f} s: {name.replace('-', ' ')}")
                 self.pictures.append(fname)
                 del snap_plan[name]
 
