@@ -353,8 +353,8 @@ def shown_status(run_dir: Path, info: dict) -> str:
 def stale_note(run_dir: Path, info: dict) -> str:
     """Why a stale record is stale, in words, for ``show`` and the listings."""
     pid = info.get("pid")
-    return (f"its process{f' (pid {pid})' if pid else ''} is gone, the end unrecorded (killed?); "
-            f"`pipflow resume` continues it")
+    # short enough for the listing's column (70 characters), hint included
+    return f"process{f' {pid}' if pid else ''} gone (killed?); `pipflow resume` continues it"
 
 
 def list_runs(runs_dir: Path) -> list[Path]:
