@@ -16,6 +16,7 @@ from pathlib import Path
 from typing import Any, Callable, Mapping
 
 from pipflow.language.offline import NO_USAGE
+from pipflow.pddl.common import share
 from pipflow.resources import data_file
 from pipflow.taskdomain import Facts, GoalCheck, Grounding, Save, TaskDomain, flat_simulation
 from pipflow.warehouse import agreement
@@ -92,7 +93,10 @@ class WarehouseDomain(TaskDomain):
         result = understand(command, world)
         if save is not None:
             save("order.json", result["order"])
-        return {"problem": self.write_problem(world, result["goal"], "warehouse"), "goal": result["goal"],
+        text = self.write_problem(world, result["goal"], "warehouse")
+        if domain_text:
+            _share_built(text, world, result["goal"], domain_text)
+        return {"problem": text, "goal": result["goal"],
                 "constraints": list(result["constraints"]), "order": result["order"],
                 "explanation": list(result["explanation"]), "messages": [], "response": "",
                 "usage": dict(NO_USAGE), "errors": []}
@@ -181,3 +185,22 @@ class WarehouseDomain(TaskDomain):
         world = worlds.load_world(world_path) if world_path else None
         fields = {f: list(names) for f, (names, _) in self.rule_names(world).items()} if world else None
         return understanding(task, outputs, status, error_kind, world, fields)
+
+
+
+def _share_built(text: str, world: dict, goal: Any, domain_text: str) -> None:
+    """The problem the offline reader wrote, built with UP's API and handed to the parse memo
+    (:func:`pipflow.warehouse.problem.problem_object`): the debugger, planner and verifier read it
+    without parsing the text. Only when ``text`` is exactly what this module's writer writes for
+    the goal (a writer replaced by a plugin or a test may write something else: that text is
+    parsed as any other), and only for a domain these names and fluents fit."""
+    if _OUR_WRITER(world, goal, name="task", domain="warehouse") != text:
+        return
+    try:
+        built = writer.problem_object(world, goal, domain_text)
+    except Exception:  # not this writer's domain (another user's PDDL): the text is parsed
+        return
+    share(domain_text, text, built)
+
+
+_OUR_WRITER = writer.write_problem  # captured at import: what the built object stands for
