@@ -22,7 +22,7 @@ from typing import Any
 
 from pipflow.errors import InputError
 from pipflow.goalcounts import from_limits, is_bound, value_problems
-from pipflow.pddl.common import goal_conditions
+from pipflow.pddl.common import goal_conditions, parse
 from pipflow.pddl.convert import initial_numbers
 from pipflow.pddl.debugger import find_form
 from pipflow.pddl.names import pddl_name, world_spelling
@@ -99,8 +99,6 @@ def problem_object(world: dict, goal: dict[str, dict[str, Any]], domain_text: st
     UP raises when ``domain_text`` is not a domain these names and fluents fit (the caller then
     shares nothing and the text is parsed as any other)."""
     from unified_planning.model import Object  # deferred: unified_planning (only the offline reader builds)
-
-    from pipflow.pddl.common import parse  # the domain alone: memoised, 20 ms
 
     problem = parse(domain_text, None).clone()
     problem.name = pddl_name(name)
