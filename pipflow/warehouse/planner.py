@@ -521,10 +521,15 @@ def _fewest_moves_flow(supply: dict, demand: dict, extra_src: dict, extra_dst: d
         m.addCons(y[a] >= n[a])
     e_src = {s: m.addVar(vtype="I", lb=0, ub=c) for s, c in extra_src.items()}
     e_dst = {t: m.addVar(vtype="I", lb=0, ub=c) for t, c in extra_dst.items()}
+    out_of: dict[str, list] = {}  # each cell's arcs in the order of ``arcs``: one pass, not one per cell
+    into: dict[str, list] = {}
+    for a in arcs:
+        out_of.setdefault(a[0], []).append(y[a])
+        into.setdefault(a[1], []).append(y[a])
     for s in dict.fromkeys([*supply, *extra_src]):  # a fixed order: SCIP's answer depends on it
-        m.addCons(quicksum(y[a] for a in arcs if a[0] == s) == supply.get(s, 0) + (e_src[s] if s in e_src else 0))
+        m.addCons(quicksum(out_of.get(s, [])) == supply.get(s, 0) + (e_src[s] if s in e_src else 0))
     for t in dict.fromkeys([*demand, *extra_dst]):
-        m.addCons(quicksum(y[a] for a in arcs if a[1] == t) == demand.get(t, 0) + (e_dst[t] if t in e_dst else 0))
+        m.addCons(quicksum(into.get(t, [])) == demand.get(t, 0) + (e_dst[t] if t in e_dst else 0))
     if e_src:
         m.addCons(quicksum(e_src.values()) == max(need, 0))
     if e_dst:
