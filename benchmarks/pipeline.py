@@ -1,6 +1,6 @@
 """Per-stage times of the whole `pipflow run` at the paper's size and at generated scales.
 
-    python benchmarks/pipeline.py [--sizes paper,12x4x4,200x20x10,1000x100x20,1000x200x20]
+    python benchmarks/pipeline.py [--sizes paper,1000x100x20,1000x400x40:24,5000x400x40:24,10000x400x40:24]
                                   [--baseline REV] [--baseline-sizes ...] [--repeat N]
                                   [--timeout 900] [--keep DIR]
 
@@ -35,8 +35,15 @@ in memory only, as before the cache existed). Other sizes run warm. Before any m
 code makes one unmeasured run of the paper's size, so that every code has its bytecode compiled
 and the warm cache is filled; the cold variant still pays the parser build in every run.
 
+Sizes may end in ``:N``, the number of shelves the command empties (``5000x400x40:24``: issue
+26's row, "Empty shelf1, ..., shelf23 and shelf24."). The sizes that differ only in robots (the
+default ``1000x400x40:24``, ``5000x400x40:24`` and ``10000x400x40:24``) give the growth of each
+stage with the fleet, printed as a ratio and the exponent k of robots^k it means.
+
 Targets (issue 15): the main job at most 1.5 s wall on an idle 2-core machine; 1000 x 100 x 20
-within 8x the main job; peak memory under 1 GB everywhere.
+within 8x the main job. Issue 26: 5000 x 400 x 40 (24 shelves emptied) within 15x the main job;
+peak memory under 2 GB at 10,000 robots; nothing worse than n log n in robots where the work
+allows it.
 """
 from __future__ import annotations
 
@@ -53,12 +60,13 @@ import threading
 import time
 from pathlib import Path
 
+import numpy as np
 import yaml
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from baseline_code import REPO, baseline_site  # noqa: E402,F401  (a sibling script module; shared with engine_overhead.py)
 WORKFLOW = REPO / "workflows" / "warehouse.yaml"
-DEFAULT_SIZES = "paper,12x4x4,200x20x10,1000x100x20,1000x200x20"
+DEFAULT_SIZES = "paper,1000x100x20,1000x400x40:24,5000x400x40:24,10000x400x40:24"
 
 SHELF_W, SHELF_D, AISLE_X, AISLE_Y = 8.0, 2.0, 6.0, 6.0
 CAPACITY = 30
@@ -80,14 +88,16 @@ def generate_world(robots: int, shelves: int, products: int, seed: int = 0) -> d
         x, y = AISLE_X + c * pitch_x, AISLE_Y + r * pitch_y
         out_shelves[name] = {"x": x, "y": y, "width": SHELF_W, "depth": SHELF_D, "capacity": CAPACITY,
                              "access": [x + SHELF_W / 2, y - 1.0]}
-    # free cells: 1 m lattice, off every shelf inflated by 1 m, not on an access point
-    cells = []
-    for gx in range(1, int(width)):
-        for gy in range(1, int(height)):
-            if any(s["x"] - 1 <= gx <= s["x"] + SHELF_W + 1 and s["y"] - 1 <= gy <= s["y"] + SHELF_D + 1
-                   for s in out_shelves.values()):
-                continue
-            cells.append([float(gx), float(gy)])
+    # free cells: 1 m lattice, off every shelf inflated by 1 m (which covers its access point),
+    # in lattice order; marked per shelf on a grid (a test of every cell against every shelf took
+    # minutes at 400 shelves)
+    taken = np.zeros((int(width) + 1, int(height) + 1), dtype=bool)
+    for sh in out_shelves.values():
+        x0, y0 = max(1, math.ceil(sh["x"] - 1)), max(1, math.ceil(sh["y"] - 1))
+        x1, y1 = math.floor(sh["x"] + SHELF_W + 1), math.floor(sh["y"] + SHELF_D + 1)
+        taken[x0:x1 + 1, y0:y1 + 1] = True
+    cells = [[float(gx), float(gy)] for gx in range(1, int(width)) for gy in range(1, int(height))
+             if not taken[gx, gy]]
     if len(cells) < robots:
         raise SystemExit(f"{robots} robots do not fit on {len(cells)} free cells")
     starts = rng.sample(cells, robots)
@@ -106,13 +116,21 @@ def generate_world(robots: int, shelves: int, products: int, seed: int = 0) -> d
             "stock": stock, "robots": out_robots}
 
 
-def command_for(world: dict) -> str:
+def parse_size(label: str) -> tuple[int, int, int, int | None]:
+    """``ROBOTSxSHELVESxPRODUCTS[:EMPTIED]`` -> the numbers (EMPTIED None: the default command)."""
+    dims, _, emptied = label.partition(":")
+    r, s, p = (int(x) for x in dims.split("x"))
+    return r, s, p, int(emptied) if emptied else None
+
+
+def command_for(world: dict, emptied: int | None = None) -> str:
     """Small worlds: the paper's default form on the last shelf, with counts that fit what exists;
-    larger worlds: empty six shelves (every unit they hold moves elsewhere)."""
+    larger worlds: empty six shelves (every unit they hold moves elsewhere), or ``emptied``
+    shelves where the size says so (issue 26's rows empty 24)."""
     shelves = list(world["shelves"])
-    if len(shelves) > 6:
-        six = shelves[:6]
-        return "Empty " + ", ".join(six[:-1]) + f" and {six[-1]}."
+    if emptied or len(shelves) > 6:
+        some = shelves[:emptied or 6]
+        return "Empty " + ", ".join(some[:-1]) + f" and {some[-1]}."
     totals: dict[str, int] = {}
     for items in world["stock"].values():
         for p, n in items.items():
@@ -139,15 +157,16 @@ def run_size(label: str, work: Path, timeout: float, site: Path | None = None, g
     ``grammar``: the parser cache folder the child uses (``""``: none); ``name``: the code's
     label, for the record folder."""
     workflow = site / "pipflow" / "workflows" / WORKFLOW.name if site else WORKFLOW
-    record = work / "runs" / f"{label}-{name}"
+    record = work / "runs" / f"{label.replace(':', '-')}-{name}"
     args = [sys.executable, "-m", "pipflow.engine.cli", "run", str(workflow), "--no-cache", "-q",
             "--runs-dir", str(record)]
     if label != "paper":
-        r, s, p = (int(x) for x in label.split("x"))
+        r, s, p, emptied = parse_size(label)
         world = generate_world(r, s, p)
-        path = work / f"world-{label}.yaml"
-        path.write_text(yaml.safe_dump(world, sort_keys=False))
-        args += ["-i", f"world={path}", "-i", f"command={command_for(world)}"]
+        path = work / f"world-{label.replace(':', '-')}.yaml"
+        if not path.exists():  # one world per size, whichever code runs it
+            path.write_text(yaml.safe_dump(world, sort_keys=False))
+        args += ["-i", f"world={path}", "-i", f"command={command_for(world, emptied)}"]
     env = dict(os.environ, PYTHONPATH=str(site)) if site else dict(os.environ)
     if grammar is not None:
         env[GRAMMAR_ENV] = str(grammar)
@@ -280,12 +299,49 @@ def main() -> int:
           f"(cpu {cold['cpu'] - warm_paper['cpu']:+.2f} s); storing the parser costs {cold['wall'] - off['wall']:+.2f} s "
           f"over building it without a disk cache")
     base = warm_paper["wall"]
+    print_growth([best[("now warm", label)] for label in sizes if ("now warm", label) in best], stages)
     big = best.get(("now warm", "1000x100x20"))
+    scaled = best.get(("now warm", "5000x400x40:24"))
+    fleet = [r for r in rows if r["code_name"] == "now warm" and label_robots(r["label"]) >= 10_000]
     print(f"targets: paper <= 1.5 s wall on an idle machine: warm {base:.2f} s, cold {cold['wall']:.2f} s "
           f"(load {warm_paper['load'][0]:.2f}); "
           + (f"1000x100x20 <= 8x paper: {big['wall'] / base:.1f}x; " if big else "")
-          + f"peak memory < 1024 MB: {max(r['peak_mb'] for r in rows):.0f} MB (the largest child)")
+          + (f"5000x400x40:24 <= 15x paper (issue 26): {scaled['wall'] / base:.1f}x; " if scaled else "")
+          + (f"peak memory at 10,000 robots < 2048 MB: {max(r['peak_mb'] for r in fleet):.0f} MB; " if fleet else "")
+          + f"largest child's peak memory: {max(r['peak_mb'] for r in rows):.0f} MB")
     return 0 if ok else 1
+
+
+def label_robots(label: str) -> int:
+    return 0 if label == "paper" else parse_size(label)[0]
+
+
+def print_growth(rows: list[dict], stages: list[str]) -> None:
+    """How each stage grows with the fleet: for sizes that differ only in robots (same shelves,
+    products and command), the time at the most robots over the time at the fewest, and the
+    exponent k of robots^k that ratio means (1: linear; n log n from 1,000 to 10,000 robots is
+    about 1.3; 2: quadratic). Stages under 0.05 s at the fewest robots are too short to say."""
+    groups: dict[str, list[dict]] = {}
+    for r in rows:
+        if r["label"] != "paper" and r["code"] == 0:
+            groups.setdefault(r["label"].split("x", 1)[1], []).append(r)
+    for rest, members in groups.items():
+        if len(members) < 2:
+            continue
+        members.sort(key=lambda r: label_robots(r["label"]))
+        lo, hi = members[0], members[-1]
+        n = label_robots(hi["label"]) / label_robots(lo["label"])
+        print(f"-- growth from {lo['label']} to {hi['label']} ({n:g}x the robots): time ratio (exponent k of robots^k)")
+        parts = []
+        for s in ["wall", *stages]:
+            a = lo["wall"] if s == "wall" else lo["stages"].get(s)
+            b = hi["wall"] if s == "wall" else hi["stages"].get(s)
+            if a is None or b is None:
+                continue
+            parts.append(f"{s} {b / a:.2f} (k={math.log(b / a) / math.log(n):.2f})" if a >= 0.05
+                         else f"{s} {a:.2f}->{b:.2f} s")
+        parts.append(f"peak memory {hi['peak_mb'] / lo['peak_mb']:.2f}")
+        print("   " + "; ".join(parts))
 
 
 if __name__ == "__main__":

@@ -188,3 +188,27 @@ def test_idle_robots_lower_the_team_mean_but_not_tc_avg(world):
     assert many["tc_avg_team"] < few["tc_avg_team"]
     assert many["tc_avg"] == few["tc_avg"] == pytest.approx(few["tc_max"])
     assert all(v == 0.0 for r, v in many["travel"].items() if r.startswith("idle"))
+
+
+def test_idle_robots_get_no_body_and_the_outputs_are_those_of_a_scene_with_every_body(world, monkeypatch):
+    """A fleet of idle robots beside the one that moves: the playback builds a body for the
+    robot the schedule names only, and every output equals the run that embodies them all."""
+    from pipflow.warehouse import simulation
+
+    for i in range(300):  # idle robots along the floor's lower edge
+        world["robots"][f"idle{i}"] = {"start": [0.5 + (i % 60) * 0.5, 0.5 + (i // 60) * 0.3], "skills": {"carry": 1}}
+    graph, schedule = wh01()
+    built: list[int] = []
+    real_scene = simulation.Scene
+
+    def counting_scene(w, robots=None):
+        scene = real_scene(w, robots)
+        built.append(len(scene.robot_body))
+        return scene
+
+    monkeypatch.setattr(simulation, "Scene", counting_scene)
+    few = simulate(world, schedule, graph, {"shelf3": {"product1": 7}})
+    monkeypatch.setattr(simulation, "_named_robots", lambda schedule, moves: None)
+    every = simulate(world, schedule, graph, {"shelf3": {"product1": 7}})
+    assert built == [1, len(world["robots"])]
+    assert few == every

@@ -90,7 +90,7 @@ def test_task_names_checked(tmp_path):
 
 def test_seeded_starts_are_free_and_repeatable():
     from pipflow.warehouse.starts import vary_starts
-    from pipflow.warehouse.world import inside_footprint
+    from pipflow.floorplan import inside_footprint
 
     w = load_world(ROOT / "benchmarks/warehouse/world.yaml")
     a, b = vary_starts(w, 3), vary_starts(w, 3)

@@ -22,7 +22,7 @@ from pathlib import Path
 from typing import Any
 
 from pipflow.errors import Diagnostic, InputError
-from pipflow.floorplan import inside_footprint, layout_diagnostics, on_floor, seeded_starts
+from pipflow.floorplan import FootprintGrid, layout_diagnostics, on_floor, seeded_starts
 from pipflow.suggest import did_you_mean
 from pipflow.worldfile import Locate, checked_yaml, is_point, read_world_file
 
@@ -104,16 +104,16 @@ def semantic_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
                 out.append(Diagnostic(locate(("categories", cname, "home")),
                                       f"category {cname!r} has home {home!r}, which is not a receptacle"))
 
+    grid = FootprintGrid(geo)  # a robot's start against the places near it, not every place
     for rname, robot in robots.items():
         start = robot.get("start")
         if not is_point(start):
             continue
         if floor and not on_floor(start, floor):
             out.append(Diagnostic(locate(("robots", rname, "start")), f"robot {rname!r} starts at {start}, off the floor"))
-        for pname, p in geo.items():
-            if inside_footprint(start, p):
-                out.append(Diagnostic(locate(("robots", rname, "start")),
-                                      f"robot {rname!r} starts at {start}, inside the footprint of {pname!r}"))
+        for pname in grid.containing(start, geo):
+            out.append(Diagnostic(locate(("robots", rname, "start")),
+                                  f"robot {rname!r} starts at {start}, inside the footprint of {pname!r}"))
     for tname, members in (data.get("teams") or {}).items() if isinstance(data.get("teams"), dict) else ():
         for k, r in enumerate(members or []):
             if r not in robots:

@@ -36,11 +36,12 @@ import math
 import time
 from dataclasses import dataclass, field
 from enum import Enum
-from typing import Any, Iterable
+from typing import Any
 
 import numpy as np
 
 from pipflow.errors import AllocationError, InputError
+from pipflow.team.nearest import nearest_costs, straight_bounds
 from pipflow.team.scheduling import DEFAULT_COST, Standing, Timeline, check_cost, predecessors
 
 EPS = 1e-7
@@ -575,6 +576,11 @@ class AllocationWalk:
         for n in graph["nodes"]:
             self.timeline.check_route(n)
         self.order = sorted(self.nodes, key=lambda s: self.nodes[s]["index"])
+        # where each robot stands and how far it has driven, as arrays: the costs' lower bounds
+        # for the exact prefilter (pipflow.team.nearest), updated as subtasks are committed
+        self.index = {r: i for i, r in enumerate(self.robots)}
+        self.xy = np.array([self.timeline.travel.point(self.timeline.pos[r]) for r in self.robots], dtype=float)
+        self.driven = np.zeros(len(self.robots))
         self.assignments: list[dict] = []
         # a walk that continues: what has ended (or runs to its end) is not allocated again
         self.done: set[str] = set(standing.ended) & set(self.nodes) if standing is not None else set()
@@ -602,6 +608,10 @@ class AllocationWalk:
     def _commit(self, sid: str, names: list[str], costs: dict[str, float]) -> None:
         self.assignments.append({"subtask": sid, "robots": names, "costs": costs})
         self.timeline.commit(self.nodes[sid], names, self.preds[sid])
+        tl = self.timeline
+        for r in names:
+            self.xy[self.index[r]] = tl.travel.point(tl.pos[r])
+            self.driven[self.index[r]] = tl.driven[r]
         self.done.add(sid)
 
     # ------------------------------------------------------------------ one subtask
@@ -611,7 +621,7 @@ class AllocationWalk:
         Y = need_vector(node, self.skills)
         allowed, why = self.rules.mask(node)
         lin = self.rules.lin(node)
-        c = np.array([self.timeline.cost(r, node) for r in robots])
+        c = self.costs(node, Q, Y, allowed, lin)
         t0 = time.perf_counter()
         if self.method in ("scip", "naive"):
             chosen = solve_lexicographic(Q, Y, c, allowed, lin, "naive" if self.method == "naive" else "fast").robots
@@ -626,6 +636,19 @@ class AllocationWalk:
         if not chosen:
             raise explain_infeasible(node, robots, self.skills, Q, Y, allowed, why, lin)
         self._commit(sid, [robots[i] for i in chosen], {robots[i]: float(c[i]) for i in chosen})
+
+    def costs(self, node: dict, Q: np.ndarray, Y: np.ndarray, allowed: np.ndarray, lin: list[Linear]) -> np.ndarray:
+        """c_i for the subtask's IP. Method ``scip``: exact for the robots that can be in the
+        optimum and ``inf`` for the rest, proven to give the same optimum
+        (:mod:`pipflow.team.nearest`); the other methods: every robot's exact cost."""
+        tl, robots = self.timeline, self.robots
+        if self.method != "scip":
+            return np.array([tl.cost(r, node) for r in robots])
+        route = tl.check_route(node)
+        base = tl.route_length(node) + (self.driven if tl.cost_kind == "total" else 0.0)
+        bounds = straight_bounds(self.xy, tl.travel.point(route[0]), np.broadcast_to(base, len(robots)))
+        return nearest_costs(bounds, allowed, lambda i: tl.cost(robots[i], node),
+                             lambda c: first_stage_fast(Q, Y, c, allowed, list(lin)))
 
     # ------------------------------------------------------------------ one wave
     def allocate_wave(self, wave: list[str]) -> None:

@@ -18,6 +18,7 @@ from typing import Any, Callable, Mapping
 from pipflow.execution.capability import ExecutionCapability, Played
 from pipflow.goalcounts import describe, is_bound
 from pipflow.language.offline import NO_USAGE
+from pipflow.pddl.common import share
 from pipflow.resources import data_file
 from pipflow.taskdomain import Facts, GoalCheck, Grounding, Save, TaskDomain, flat_simulation, pddl_domain_name
 from pipflow.warehouse import agreement
@@ -98,7 +99,10 @@ class WarehouseDomain(TaskDomain, ExecutionCapability):
         result = understand(command, world)
         if save is not None:
             save("order.json", result["order"])
-        return {"problem": self.write_problem(world, result["goal"], "warehouse"), "goal": result["goal"],
+        text = self.write_problem(world, result["goal"], "warehouse")
+        if domain_text:
+            _share_built(text, world, result["goal"], domain_text)
+        return {"problem": text, "goal": result["goal"],
                 "constraints": list(result["constraints"]), "order": result["order"],
                 "explanation": list(result["explanation"]), "messages": [], "response": "",
                 "usage": dict(NO_USAGE), "errors": []}
@@ -232,3 +236,21 @@ class WarehouseDomain(TaskDomain, ExecutionCapability):
             return super().goal_words(goal)
         return [f"{shelf} {product}: {describe(value) if is_bound(value) else f'exactly {value}'}"
                 for shelf, items in goal.items() if isinstance(items, Mapping) for product, value in items.items()]
+
+
+def _share_built(text: str, world: dict, goal: Any, domain_text: str) -> None:
+    """The problem the offline reader wrote, built with UP's API and handed to the parse memo
+    (:func:`pipflow.warehouse.problem.problem_object`): the debugger, planner and verifier read it
+    without parsing the text. Only when ``text`` is exactly what this module's writer writes for
+    the goal (a writer replaced by a plugin or a test may write something else: that text is
+    parsed as any other), and only for a domain these names and fluents fit."""
+    if _OUR_WRITER(world, goal, name="task", domain="warehouse") != text:
+        return
+    try:
+        built = writer.problem_object(world, goal, domain_text)
+    except Exception:  # not this writer's domain (another user's PDDL): the text is parsed
+        return
+    share(domain_text, text, built)
+
+
+_OUR_WRITER = writer.write_problem  # captured at import: what the built object stands for

@@ -416,12 +416,13 @@ def product_flows(inst: Instance, p: str, final: dict, slack: dict, room: dict[s
     sinks = list(dict.fromkeys(list(demand) + free_dst))
     arcs = {}
     sizes = sorted(set(inst.magnitudes.values()))
+    big = largest_move(inst)  # a sum over every shelf: once, not per arc
     for s in sources:
         for t in sinks:
             if s != t and (limit is None or limit(s, t, p) >= smallest):
                 g.add_edge(("out", s), ("in", t), weight=0)
                 cap = limit(s, t, p) if limit is not None else float("inf")
-                arcs[s, t] = min(largest_move(inst), max(z for z in sizes if z <= cap))
+                arcs[s, t] = min(big, max(z for z in sizes if z <= cap))
     extra_src = {s: slack[s, p] for s in free_src}
     extra_dst = {t: g[("in", t)]["Y"]["capacity"] for t in free_dst}
     try:
@@ -520,10 +521,15 @@ def _fewest_moves_flow(supply: dict, demand: dict, extra_src: dict, extra_dst: d
         m.addCons(y[a] >= n[a])
     e_src = {s: m.addVar(vtype="I", lb=0, ub=c) for s, c in extra_src.items()}
     e_dst = {t: m.addVar(vtype="I", lb=0, ub=c) for t, c in extra_dst.items()}
+    out_of: dict[str, list] = {}  # each cell's arcs in the order of ``arcs``: one pass, not one per cell
+    into: dict[str, list] = {}
+    for a in arcs:
+        out_of.setdefault(a[0], []).append(y[a])
+        into.setdefault(a[1], []).append(y[a])
     for s in dict.fromkeys([*supply, *extra_src]):  # a fixed order: SCIP's answer depends on it
-        m.addCons(quicksum(y[a] for a in arcs if a[0] == s) == supply.get(s, 0) + (e_src[s] if s in e_src else 0))
+        m.addCons(quicksum(out_of.get(s, [])) == supply.get(s, 0) + (e_src[s] if s in e_src else 0))
     for t in dict.fromkeys([*demand, *extra_dst]):
-        m.addCons(quicksum(y[a] for a in arcs if a[1] == t) == demand.get(t, 0) + (e_dst[t] if t in e_dst else 0))
+        m.addCons(quicksum(into.get(t, [])) == demand.get(t, 0) + (e_dst[t] if t in e_dst else 0))
     if e_src:
         m.addCons(quicksum(e_src.values()) == max(need, 0))
     if e_dst:
@@ -559,15 +565,20 @@ def coalition_limit(robots: dict[str, float], rules: list[dict] | None) -> MoveL
     rules = [{k: ([str(x).lower() for x in v] if k in ("only", "never") else str(v).lower()) for k, v in r.items()}
              for r in rules or []]
 
+    everyone = set(team)
+    whole_team = sum(team[r] for r in everyone)  # a move no rule names: the whole team, summed once
+
     @functools.lru_cache(maxsize=None)
     def limit(src: str, dst: str, product: str) -> float:
         move = {"from": src.lower(), "to": dst.lower(), "product": product.lower()}
-        allowed = set(team)
-        for rule in rules:
-            if all(rule[k] == move[k] for k in move if k in rule):
-                allowed -= set(rule.get("never", ()))
-                if "only" in rule:
-                    allowed &= set(rule["only"])
+        matching = [rule for rule in rules if all(rule[k] == move[k] for k in move if k in rule)]
+        if not matching:
+            return whole_team
+        allowed = set(everyone)
+        for rule in matching:
+            allowed -= set(rule.get("never", ()))
+            if "only" in rule:
+                allowed &= set(rule["only"])
         return sum(team[r] for r in allowed)
 
     return limit
@@ -694,12 +705,20 @@ class _Cells:
     def __init__(self, inst: Instance, limit: "MoveLimit"):
         self.S, self.P = len(inst.shelves), len(inst.products)
         self.inst = inst
+        self._move_limit = limit
         self.lo = [inst.lo(s, p) for s in inst.shelves for p in inst.products]
         self.hi = [inst.hi(s, p) for s in inst.shelves for p in inst.products]
         self.cap = [inst.capacity[s] for s in inst.shelves]
         self.big = largest_move(inst)
         self.sizes = sorted(set(inst.magnitudes.values()))
-        self.limit = [[[limit(a, b, p) for p in inst.products] for b in inst.shelves] for a in inst.shelves]
+
+    @functools.cached_property
+    def limit(self) -> list[list[list[float]]]:
+        """Most units per move, ``[i][k][j]`` for shelf i -> shelf k, product j: S x S x P
+        entries, built only when a search asks (the lower bound never does; 400 shelves x 40
+        products are 6.4 million)."""
+        inst, limit = self.inst, self._move_limit
+        return [[[limit(a, b, p) for p in inst.products] for b in inst.shelves] for a in inst.shelves]
 
     def start(self) -> tuple[tuple, tuple]:
         inst = self.inst

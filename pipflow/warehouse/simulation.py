@@ -29,6 +29,7 @@ import math
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Iterable
 
 from pipflow import pictures as pics
 from pipflow.bullet import colour_rgba, connect_direct, render_floor
@@ -173,9 +174,13 @@ class Scene:
     only as many slots as there are units in the world can ever be used, so a shelf of capacity
     100,000,000 costs what a shelf of capacity 30 costs."""
 
-    def __init__(self, world: dict):
+    def __init__(self, world: dict, robots: Iterable[str] | None = None):
+        """``robots``: the robots that get a body (None: all). A robot the schedule never names
+        stands still and carries nothing, so a run without pictures builds none for it: 5,000
+        robots of which a dozen move cost a dozen bodies, not 5,000."""
         self.p, self.cid = connect_direct()
         self.world = world
+        self.embodied = None if robots is None else set(robots)
         self.unit_product: dict[int, str] = {}
         self.slots: dict[str, SlotGrid] = {}
         self.occupant: dict[str, dict[int, int]] = {}  # shelf -> slot index -> body
@@ -227,6 +232,8 @@ class Scene:
                                       physicsClientId=c)
         robot_visuals: dict[int, int] = {}  # one visual shape per colour, not per robot
         for i, (name, info) in enumerate(w.get("robots", {}).items()):
+            if self.embodied is not None and name not in self.embodied:
+                continue
             k = i % len(ROBOT_COLOURS)
             if k not in robot_visuals:
                 robot_visuals[k] = p.createVisualShape(p.GEOM_CYLINDER, radius=ROBOT_RADIUS, length=ROBOT_HEIGHT,
@@ -352,7 +359,8 @@ def simulate(world: dict, schedule: dict, graph: dict | None = None, goal: dict 
         sample_times = sorted(set(sample_times) | {t for t, _ in stops.values() if 0 <= t <= makespan})
     out = Path(out_dir) if out_dir else None
     snap_plan = _snapshot_times(events, makespan) if (snapshots and out) else {}
-    scene = Scene(world)
+    # pictures show every robot; without them only the robots the schedule names need a body
+    scene = Scene(world, None if (snapshots and out) else _named_robots(schedule, moves))
     try:
         run = Playback(scene, world, moves, traj, events, log)
         run.play(sample_times, snap_plan, out)
@@ -376,6 +384,13 @@ def _stops(world: dict) -> dict[str, tuple[float, str | None]]:
         if stop:
             out[r] = (float(stop["time"]), stop.get("drop"))
     return out
+
+
+def _named_robots(schedule: dict, moves: list[Move]) -> set[str]:
+    """The robots that drive a leg or belong to a move's coalition: the only ones that can
+    move, carry or be checked at a place."""
+    named = {r for r, info in (schedule.get("robots") or {}).items() if info.get("legs")}
+    return named | {r for m in moves for r in m.robots}
 
 
 def _trajectories(world: dict, schedule: dict) -> dict[str, Trajectory]:
@@ -434,7 +449,11 @@ class Playback:
         self.scene, self.world, self.traj, self.events, self.log = scene, world, traj, events, log
         self.by_id = {m.id: m for m in moves}
         self.travel = {r: 0.0 for r in traj}
-        self.last_xy = {r: scene.robot_xy(r) for r in traj if r in scene.robot_body}
+        # a robot without a body stands where it started (the start as the body would report it)
+        starts = world.get("robots", {})
+        self.last_xy = {r: scene.robot_xy(r) if r in scene.robot_body else
+                        (float(starts[r]["start"][0]), float(starts[r]["start"][1]))
+                        for r in traj if r in scene.robot_body or r in starts}
         self.paths = {r: [[0.0, *self.last_xy[r]]] for r in self.last_xy}
         stock0, _ = scene.count_stock()
         self.peak: dict[str, int] = {shelf: sum(items.values()) for shelf, items in stock0.items()}

@@ -22,7 +22,7 @@ from pathlib import Path
 from typing import Any
 
 from pipflow.errors import Diagnostic, Location, TaskFileError
-from pipflow.floorplan import inside_footprint, layout_diagnostics, on_floor
+from pipflow.floorplan import FootprintGrid, layout_diagnostics, on_floor
 from pipflow.goalcounts import is_bound, value_problems
 from pipflow.suggest import did_you_mean
 from pipflow.taskdomain import Facts
@@ -135,6 +135,7 @@ def semantic_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
 
     robots = data.get("robots") if isinstance(data.get("robots"), dict) else {}
     out += robot_label_diagnostics(data, locate)
+    grid = FootprintGrid(geo)  # a robot's start against the shelves near it, not every shelf
     for rname, robot in robots.items():
         start = robot.get("start") if isinstance(robot, dict) else None
         if not is_point(start):
@@ -143,10 +144,9 @@ def semantic_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
             out.append(Diagnostic(locate(("robots", rname, "start")),
                                   f"robot {rname!r} starts at {start}, off the floor "
                                   f"(0, 0)-({floor['width']}, {floor['height']})"))
-        for sname, shelf in geo.items():
-            if inside_footprint(start, shelf):
-                out.append(Diagnostic(locate(("robots", rname, "start")),
-                                      f"robot {rname!r} starts at {start}, inside the footprint of shelf {sname!r}"))
+        for sname in grid.containing(start, geo):
+            out.append(Diagnostic(locate(("robots", rname, "start")),
+                                  f"robot {rname!r} starts at {start}, inside the footprint of shelf {sname!r}"))
     return out
 
 
