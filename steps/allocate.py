@@ -10,6 +10,7 @@ from pipflow import Choices, Doc, StepContext, step
 from pipflow.errors import AllocationError
 from pipflow.liberrors import SCIP, library_errors
 from pipflow.team.scheduling import COSTS, DEFAULT_COST
+from pipflow.values import AllocationOutputs
 
 # the inputs every allocator takes, named once (each step's signature is its contract)
 Graph = Annotated[dict, Doc("output of graph.dependencies")]
@@ -43,8 +44,7 @@ def _run(ctx: StepContext, method: str, graph: dict, world: dict, constraints: l
 
 
 @step("allocate.scip",
-      doc="Lexicographic IP per subtask (min max cost, then min sum of costs) with SCIP; or frontier mode.",
-      outputs={"allocation": "object", "cost": "string"}, cacheable=True)
+      doc="Lexicographic IP per subtask (min max cost, then min sum of costs) with SCIP; or frontier mode.", cacheable=True)
 def scip(
     ctx: StepContext,
     graph: Graph,
@@ -58,24 +58,22 @@ def scip(
     time_limit: Annotated[float, Doc("seconds per frontier wave (frontier mode)")] = 10.0,
     naive: Annotated[bool, Doc("solve the first stage as a full SCIP model (slow; for comparison)")] = False,
     cost: Cost = DEFAULT_COST,
-) -> dict:
+) -> AllocationOutputs:
     """The paper's allocator; the fast first stage gives the same optimum as the naive model."""
     return _run(ctx, "naive" if naive else "scip", graph, world, constraints, linear, speed, handling,
                 cost, mode, time_limit)
 
 
-@step("allocate.greedy", doc="Baseline: cheapest capable robots first until the skills are covered.",
-      outputs={"allocation": "object", "cost": "string"}, cacheable=True)
+@step("allocate.greedy", doc="Baseline: cheapest capable robots first until the skills are covered.", cacheable=True)
 def greedy(ctx: StepContext, graph: Graph, world: World, constraints: RobotRules = None, linear: LinearRules = None,
-           speed: Speed = 1.0, handling: Handling = 2.0, cost: Cost = DEFAULT_COST) -> dict:
+           speed: Speed = 1.0, handling: Handling = 2.0, cost: Cost = DEFAULT_COST) -> AllocationOutputs:
     """Greedy baseline for comparison with the IP; "cheapest" by ``cost`` (subtask: the nearest)."""
     return _run(ctx, "greedy", graph, world, constraints, linear, speed, handling, cost)
 
 
-@step("allocate.blind", doc="Ablation (paper's w/o AS): fewest robots by robot order, ignoring travel cost.",
-      outputs={"allocation": "object", "cost": "string"}, cacheable=True)
+@step("allocate.blind", doc="Ablation (paper's w/o AS): fewest robots by robot order, ignoring travel cost.", cacheable=True)
 def blind(ctx: StepContext, graph: Graph, world: World, constraints: RobotRules = None, linear: LinearRules = None,
-          speed: Speed = 1.0, handling: Handling = 2.0, cost: Cost = DEFAULT_COST) -> dict:
+          speed: Speed = 1.0, handling: Handling = 2.0, cost: Cost = DEFAULT_COST) -> AllocationOutputs:
     """Cost-blind allocation: shows what the allocation strategy buys. It never looks at costs;
     ``cost`` only says what the recorded ``costs`` of each assignment mean."""
     return _run(ctx, "blind", graph, world, constraints, linear, speed, handling, cost)

@@ -12,7 +12,9 @@ from pipflow.language.agreement import refusal_opinion
 from pipflow.language.generator import READERS, generate
 from pipflow.language.llm import resolve_model
 from pipflow.language.prompting import find_template, prompt_problem
+from pipflow.taskdomain import Capability
 from pipflow.taskdomains import task_domain
+from pipflow.values import CheckOutputs, ProblemReading
 
 #: the longest answer kept in the step's ``response`` output. The run record copies outputs (each
 #: loop iteration, the loop's result), so a long answer is stored once in full, as the artifact
@@ -23,12 +25,6 @@ RESPONSE_OUTPUT_CHARS = 32_000
 @step(
     "llm.problem",
     doc="Write the team-level PDDL problem for a command with a language model (or offline).",
-    outputs={"problem": "string", "goal": "any", "constraints": "array", "messages": "array",
-             "response": "string", "usage": "object", "errors": "array",
-             "order": "any", "explanation": "any",  # offline: the order and the resolver's arithmetic
-             "varied": "string", "round": "object",  # what changed in a prompt that would repeat; this round
-             "concrete": "object",  # offline, where the domain has it: the goal with counts resolved
-             "reader": "string"},  # who wrote this round's goal: offline (the parser) or model
 )
 def llm_problem(
     ctx: StepContext,
@@ -59,7 +55,7 @@ def llm_problem(
                       Doc("model: the model reads every command; offline-first: the offline parser reads it "
                           "when it understands it (no model call), the model only what the parser refuses as "
                           "not understood (a command the parser finds impossible is refused)")] = "model",
-) -> dict:
+) -> ProblemReading:
     """``problem`` is "" when the answer held no usable problem; ``errors`` then says why, in
     words meant for the next round's prompt. ``goal`` is set by offline and grounded runs, and by
     every run of a domain that reads its goal back from the problem (household: its goal
@@ -96,8 +92,6 @@ def llm_problem(
     doc="The checked loop's second opinion on the model's reading: its goal and robot rules against the offline "
         "parser's reading of the command (or the doubts the command's names and numbers raise); decides whether a "
         "refusal is final. Feedback names what disagrees and the command's words, never the parser's value.",
-    outputs={"ok": "boolean", "messages": "array", "refusal": "string", "disagreement": "array",
-             "basis": "string"},
 )
 def llm_check(
     ctx: StepContext,
@@ -113,7 +107,7 @@ def llm_check(
     strict: Annotated[bool, Doc("a goal the command's words raise doubts about (the parser did not read the "
                                 "command) ends the run, not executed, instead of being accepted with a warning")] = False,
     last: Annotated[bool, Doc("this is the loop's last round: a refusal nothing confirms or denies is then final")] = False,
-) -> dict:
+) -> CheckOutputs:
     """``ok``: the reading agrees with the offline reading, or the parser does not read the
     command (its words raise doubts at most: accepted, the doubts in ``disagreement`` as
     warnings; with ``strict`` the run ends instead, TranslationError); ``messages``: a firm
@@ -123,8 +117,9 @@ def llm_check(
     if resolve_model(model) == "offline" or reader == "offline":  # the reading is the parser's own
         return {"ok": True, "messages": [], "refusal": refusal, "disagreement": [], "basis": "none"}
     domain = task_domain(world)
-    opinion = domain.second_opinion(command, world, goal, constraints, refusal, last)
-    if opinion is None:  # a domain whose goals are not compared: only whether a refusal is final
+    if domain.supports(Capability.SECOND_OPINION):
+        opinion = domain.second_opinion(command, world, goal, constraints, refusal, last)
+    else:  # a domain whose goals are not compared: only whether a refusal is final
         if strict:  # nothing can check the model's reading: offline-first executes only the parser's
             raise TranslationError(f"the offline parser does not read the command, and the {domain.name} domain "
                                    "cannot check a model's reading of it, so it is not executed; say the command "

@@ -275,15 +275,15 @@ def test_the_simulator_refuses_what_the_garden_cannot_do(garden):
     assert out["executed"] == 0 and out["goal_met"] is False and out["conditions"]["unmet"]
     assert out["final_state"]["ripe"]["south"]["pumpkin"] == 2  # nothing changed
     # the protocol's one shape: pipflow's generic steps simulate and score take the garden's result
-    from pipflow.taskdomain import SCORE_CORE, SIMULATION_CORE, simulation_outputs
+    from pipflow.values import Score, SimulationCore, simulation_outputs
 
     from pipflow_garden.domain import GardenDomain
 
     generic = simulation_outputs(out)
-    assert set(SIMULATION_CORE) <= set(generic) and set(generic["details"]) == {"conditions"}
+    assert set(SimulationCore.__annotations__) <= set(generic) and set(generic["details"]) == {"conditions"}
     scored = GardenDomain().score(world, {"stored": {"shed": {"pumpkin": 1}}}, graph=graph, schedule=schedule,
                                   simulation=generic)
-    assert set(scored) == set(SCORE_CORE) and not scored["success"]
+    assert set(scored) == set(Score.__annotations__) and not scored["success"]
     assert scored == GardenDomain().score(world, {"stored": {"shed": {"pumpkin": 1}}}, graph=graph,
                                           schedule=schedule, simulation=out)  # the flat form scores the same
 
@@ -354,7 +354,9 @@ def test_resource_use_is_measured_against_the_fewest_actions(garden):
     done["final_state"]["ripe"]["herbs"]["basil"] = 0
     done["final_state"]["stored"]["crate"] = {"basil": 4}
     subtasks = [{"id": f"s{i}", "action": "harvest", "robots": []} for i in range(7)]
-    score = scoring.score_run(world, goal, schedule={"subtasks": subtasks}, simulation=done)
+    from pipflow_garden.domain import GardenDomain
+
+    score = GardenDomain().score(world, goal, schedule={"subtasks": subtasks}, simulation=done)
     assert score["success"] is True and score["lower_bound"] == 5 and score["ru"] == pytest.approx(5 / 7)
 
 

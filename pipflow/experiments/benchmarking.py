@@ -56,7 +56,7 @@ from pipflow.experiments.runspec import RunSpec, recorded_outputs, run_one  # no
 from pipflow.meaning import misread_cell
 from pipflow.metrics import DEFINITIONS
 from pipflow.records.compare import variants_side_by_side
-from pipflow.taskdomain import TaskDomain
+from pipflow.taskdomain import Capability, TaskDomain
 from pipflow.version import __version__
 
 RESULT_FIELDS = ["variant", "task", "seed", "status", "loop", "reader", "success", "understood", "misread",
@@ -499,9 +499,8 @@ def markdown_table(results: dict) -> str:
     per category)."""
     config = results.get("config") or {}
     domain = domain_named(config.get("domain"))
-    table = domain.bench_table(results, Path(config["tasks"]))
-    if table is not None:  # its layout is the domain's, understanding columns included
-        return table
+    if domain.supports(Capability.BENCH_TABLE):  # its layout is the domain's, understanding columns included
+        return domain.bench_table(results, Path(config["tasks"]))
     lines = []
     for variant in results["variants"]:
         if len(results["variants"]) > 1:
