@@ -12,6 +12,7 @@ from pathlib import Path
 from typing import Any
 
 from pipflow.engine.writes import write_file
+from pipflow.taskdomains import task_domain
 from pipflow.team.trajectory import ROBOT_COLOURS, Trajectory
 
 #: ``pictures`` workflow input: ``always`` draws them during the run; ``never`` draws none (the
@@ -74,12 +75,13 @@ def robot_colour(i: int) -> tuple:
 
 
 def draw_floor(ax, world: dict) -> None:
-    """Floor outline, shelves (with name, capacity and access point)."""
+    """Floor outline, and each fixture of the world's floor plan (its task domain's
+    :meth:`~pipflow.taskdomain.TaskDomain.floor_plan`) with its name and access point."""
     from matplotlib.patches import Rectangle
 
     fw, fh = float(world["floor"]["width"]), float(world["floor"]["height"])
     ax.add_patch(Rectangle((0, 0), fw, fh, fill=False, lw=1.5, ec="black"))
-    for name, sh in world.get("shelves", {}).items():
+    for name, sh in task_domain(world).floor_plan(world).items():
         ax.add_patch(Rectangle((sh["x"], sh["y"]), sh["width"], sh["depth"], fc="#b08a66", ec="#5a4030"))
         ax.text(sh["x"] + sh["width"] / 2, sh["y"] + sh["depth"] / 2, name, ha="center", va="center",
                 fontsize=8, color="white")

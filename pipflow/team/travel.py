@@ -46,6 +46,7 @@ import networkx as nx
 import numpy as np
 
 from pipflow.errors import InputError
+from pipflow.taskdomains import task_domain
 
 Point = tuple[float, float]
 Place = Union[str, Sequence[float]]
@@ -340,8 +341,9 @@ class _Geometry:
 class TravelMap:
     """Shortest obstacle-free travel between points or named places of one world.
 
-    Places are shelf names (standing at the shelf's ``access`` point) and robot names (the
-    robot's ``start``); points are ``[x, y]`` in metres.
+    Places are the names of the world's fixtures (standing at the fixture's ``access`` point:
+    its task domain's floor plan) and robot names (the robot's ``start``); points are ``[x, y]``
+    in metres.
 
     >>> tm = TravelMap(world)                       # doctest: +SKIP
     >>> tm.distance("robot0", "shelf3"), tm.path("shelf1", [20, 2])   # doctest: +SKIP
@@ -356,8 +358,8 @@ class TravelMap:
             self.height = float(floor["height"])
         except (KeyError, TypeError) as exc:
             raise InputError("world has no floor {width, height}") from exc
-        # shelves (warehouse) and places (household floor plans) are both footprint + access point
-        fixtures = {**(world.get("shelves") or {}), **(world.get("places") or {})}
+        # the world's fixtures (footprint + access point), as its task domain lays them out
+        fixtures = dict(task_domain(world).floor_plan(world))
         self.footprints = {
             name: (float(s["x"]), float(s["y"]), float(s["x"]) + float(s["width"]),
                    float(s["y"]) + float(s["depth"]))
