@@ -25,7 +25,8 @@ from .progress import LiveProgress, PlainProgress
 from .registry import default_registry
 from .source import load_yaml, plain
 from .interrupts import Interrupted, exit_code
-from .store import (STALE, DamagedRecord, RunStore, find_run, list_runs, read_json, redact, register_secrets,
+from .status import RunStatus
+from .store import (DamagedRecord, RunStore, find_run, list_runs, read_json, redact, register_secrets,
                     shown_status, stale_note)
 
 EXIT_INTERRUPTED = 130  # Ctrl-C; other signals: interrupts.exit_code
@@ -108,7 +109,7 @@ def _summary(value: Any, limit: int = 160, key: str = "") -> str:
 
 
 def _print_result(result, quiet: bool) -> int:
-    if result.status == "succeeded":
+    if result.ok:
         if not quiet:
             for key, value in result.outputs.items():
                 print(redact(f"{key}: {_summary(value, key=key)}"))
@@ -148,7 +149,7 @@ def cmd_run(args: argparse.Namespace) -> int:
     finally:
         if display:
             display.close()
-    if args.verbose and result.exception is not None and result.status == "failed":
+    if args.verbose and result.exception is not None and result.status is RunStatus.FAILED:
         _print_traceback(result.exception)
     return _print_result(result, args.quiet)
 
@@ -232,8 +233,8 @@ def _run_infos(runs_dir: Path) -> list[tuple[Path, dict]]:
         except DamagedRecord as err:
             info = {"status": "damaged", "error": str(err)}
         info = info if isinstance(info, dict) else {"status": "damaged", "error": "run.json unreadable"}
-        if shown_status(run, info) == STALE:  # its process died without saying how the run ended
-            info = {**info, "status": STALE, "error": info.get("error") or stale_note(run, info)}
+        if shown_status(run, info) is RunStatus.STALE:  # its process died without saying how the run ended
+            info = {**info, "status": RunStatus.STALE.value, "error": info.get("error") or stale_note(run, info)}
         out.append((run, info))
     # newest first by start time (names have one-second resolution: two runs of one second tie)
     return sorted(out, key=lambda ri: (str(ri[1].get("started") or ""), ri[0].name), reverse=True)
@@ -286,8 +287,8 @@ def cmd_show(args: argparse.Namespace) -> int:
         info = {}
         problems.append(str(err))
     print(f"run       {store.root}")
-    if shown_status(store.root, info) == STALE:
-        info = {**info, "status": STALE, "error": info.get("error") or stale_note(store.root, info)}
+    if shown_status(store.root, info) is RunStatus.STALE:
+        info = {**info, "status": RunStatus.STALE.value, "error": info.get("error") or stale_note(store.root, info)}
     for key in ("name", "workflow", "status", "started", "finished", "seconds", "error_step", "error"):
         if info.get(key) not in (None, ""):
             print(f"{key:<9} {info[key]}")

@@ -6,7 +6,6 @@ the bench scores: its ``status`` is a :class:`~pipflow.engine.status.RunStatus`.
 """
 from __future__ import annotations
 
-import difflib
 import math
 import os
 import time
@@ -16,6 +15,7 @@ from typing import Any, Callable
 
 from pipflow.errors import InputError, PipflowError, Refusal, UserError
 from pipflow.resources import data_dir
+from pipflow.suggest import closest
 
 from .executor import Executor, RunOptions, write_metrics
 from .expr import ExpressionError, has_expression, resolve
@@ -84,7 +84,7 @@ def find_workflow(ref: str | Path) -> Path:
     if (builtin / name).is_file():
         return builtin / name
     known = sorted(x.name for x in builtin.glob("*.yaml"))
-    close = difflib.get_close_matches(name, known, n=1)
+    close = closest(name, known, n=1)
     raise UserError(f"{ref}: no such workflow file" + (f"; did you mean the built-in {close[0]!r}?" if close else
                                                        f"; built-in workflows: {', '.join(known)}"))
 
@@ -102,7 +102,7 @@ def resolve_inputs(wf: Workflow, given: dict[str, Any], from_text: bool = False,
     if unknown:
         hints = []
         for k in unknown:
-            close = difflib.get_close_matches(str(k), list(wf.inputs), n=1)  # an inputs file may have number keys
+            close = closest(str(k), list(wf.inputs), n=1)  # an inputs file may have number keys
             hints.append(f"{k!r}" + (f" (did you mean {close[0]!r}?)" if close else ""))
         raise InputError(f"{wf.file}: unknown input {', '.join(hints)}; declared: {', '.join(wf.inputs) or 'none'}")
     env_ns = {"env": declared_env(wf), "inputs": {}}

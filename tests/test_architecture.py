@@ -19,7 +19,7 @@ ROOT = Path(__file__).resolve().parent.parent
 #: source folder -> the package it is installed as (pyproject's package-dir)
 PACKAGES = {"pipflow": "pipflow", "engine": "pipflow.engine", "steps": "pipflow.steps"}
 #: what the engine may import of pipflow's library (everything else sits above it)
-ENGINE_MAY_IMPORT = {"pipflow.errors", "pipflow.resources", "pipflow.yamlsource"}
+ENGINE_MAY_IMPORT = {"pipflow.errors", "pipflow.resources", "pipflow.yamlsource", "pipflow.suggest"}
 #: the layers of docs/architecture.md, top down: each a tuple of groups, a group a tuple of
 #: package prefixes (a prefix is a sub-package or a root module, and covers what is below it).
 #: A module imports its own group or a group of a lower layer; two groups of one layer are
@@ -36,12 +36,12 @@ LAYERS: list[tuple[str, tuple[tuple[str, ...], ...]]] = [
     ("language, pictures", (("pipflow.language",), ("pipflow.pictures",))),
     ("team coordination", (("pipflow.team",),)),
     ("PDDL tools", (("pipflow.pddl",),)),
-    ("neutral helpers", (("pipflow.taskdomain", "pipflow.taskdomains", "pipflow.goalcounts", "pipflow.suggest",
+    ("neutral helpers", (("pipflow.taskdomain", "pipflow.taskdomains", "pipflow.goalcounts",
                           "pipflow.worldfile", "pipflow.floorplan", "pipflow.bullet", "pipflow.llmslot",
                           "pipflow.liberrors", "pipflow.metrics", "pipflow.meaning", "pipflow.values",
                           "pipflow.taskfile", "pipflow.worldcheck"),)),
     ("engine", (("pipflow.engine",),)),
-    ("base", (("pipflow.errors", "pipflow.resources", "pipflow.yamlsource", "pipflow.version"),)),
+    ("base", (("pipflow.errors", "pipflow.resources", "pipflow.yamlsource", "pipflow.version", "pipflow.suggest"),)),
 ]
 #: ``from pipflow import step, Doc`` is the step author's API: the package face eagerly imports
 #: only the engine's step contract and the errors (its ``run``/``bench`` load lazily), so an arrow

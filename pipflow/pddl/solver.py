@@ -26,6 +26,7 @@ from typing import Any
 from pipflow.errors import InputError, PlanningError
 from pipflow.liberrors import SCIP, UNIFIED_PLANNING, library_errors
 from pipflow.pddl.common import environment
+from pipflow.suggest import closest
 from pipflow.pddl.convert import plan_to_data
 from pipflow.pddl.java import ensure_java
 
@@ -91,9 +92,7 @@ def check_engine(engine: str) -> None:
     are: a misspelt planner must never be replaced silently by another one."""
     known = planner_names()
     if engine not in known:
-        import difflib
-
-        close = difflib.get_close_matches(str(engine), known, n=1)
+        close = closest(str(engine), known, n=1)
         raise InputError(f"unknown planner {engine!r}" + (f" (did you mean {close[0]!r}?)" if close else "")
                          + f"; installed planners: {', '.join(known)}")
 

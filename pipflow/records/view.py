@@ -30,7 +30,8 @@ from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 from pathlib import Path
 from typing import Any
 
-from pipflow.engine.store import STALE, shown_status, stale_note
+from pipflow.engine.status import RunStatus
+from pipflow.engine.store import shown_status, stale_note
 from pipflow.errors import InputError, UserError
 from pipflow.records.compare import compare_html
 from pipflow.records.report import write_report
@@ -87,8 +88,9 @@ def _number(value: Any) -> float | None:
 
 
 def _run_record(d: Path, rel: str, info: dict) -> Record:
-    status = shown_status(d, info)
-    detail = str(info.get("error") or (stale_note(d, info) if status == STALE else ""))
+    shown = shown_status(d, info)
+    status = str(shown)  # the record's word: succeeded, failed, stale...
+    detail = str(info.get("error") or (stale_note(d, info) if shown is RunStatus.STALE else ""))
     return Record("run", rel, d.name, str(info.get("name") or Path(str(info.get("workflow", "?"))).stem),
                   status, str(info.get("started") or ""), _number(info.get("seconds")), detail)
 
