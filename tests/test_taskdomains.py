@@ -10,9 +10,9 @@ import pytest
 
 from pipflow import StepContext
 from pipflow.errors import InputError
-from pipflow.taskdomain import DEFAULT_DOMAIN, TaskDomain, pddl_domain_name
-from pipflow.values import Score, SimulationCore
+from pipflow.taskdomain import DEFAULT_DOMAIN, Capability, TaskDomain, pddl_domain_name
 from pipflow.taskdomains import GROUP, declared_domain, domain_named, known_domains, task_domain
+from pipflow.values import Score, SimulationCore, refusal_expected
 
 REPO = Path(__file__).resolve().parent.parent
 HOUSEHOLD_WORLD = REPO / "benchmarks/household/world.yaml"
@@ -287,3 +287,48 @@ def test_every_simulate_and_score_step_declares_the_core():
         assert {k: s.outputs.get(k) for k in core} == core, s.name
     for s in scores:
         assert s.outputs == score.outputs, s.name
+
+
+# ------------------------------------------------------------------ the protocol: core and capabilities
+def test_a_domain_that_leaves_out_part_of_the_core_cannot_be_made():
+    """The required core is abstract: a domain without, say, a simulation or the goal's conditions
+    is refused when it is instantiated, naming what it lacks (never a None at run time)."""
+    class Half(TaskDomain):
+        name = "half"
+
+        def load_world(self, path, *, seed=None, **options):
+            return {}
+
+    with pytest.raises(TypeError) as err:
+        Half()
+    for member in ("simulate", "goal_conditions", "read_command", "read_goal", "goal_problems", "reference"):
+        assert member in str(err.value)
+
+
+def test_capabilities_are_declared_by_mixins_and_asked_with_supports():
+    warehouse, household = domain_named("warehouse"), domain_named("household")
+    assert set(warehouse.capabilities()) == {Capability.GROUNDED_DECODING, Capability.SECOND_OPINION,
+                                             Capability.TRANSPORT_PLANNER, Capability.UNDERSTANDING}
+    assert set(household.capabilities()) == {Capability.SECOND_OPINION, Capability.UNDERSTANDING,
+                                             Capability.BENCH_TABLE}
+    assert not household.supports(Capability.GROUNDED_DECODING) and not hasattr(household, "planner_params")
+
+
+def test_a_refusal_is_the_right_answer_in_one_definition():
+    assert refusal_expected({"feasible": False}) and refusal_expected({"expect": "refuse"})
+    assert not refusal_expected({}) and not refusal_expected({"feasible": True, "expect": None})
+
+
+@pytest.mark.parametrize("name", ["warehouse", "household"])
+def test_an_infeasible_task_that_was_not_refused_keeps_the_simulations_exe(name):
+    """One definition of the score in every domain: a run whose right answer was a refusal but
+    that executed fails, and its Exe is what the simulation measured (not 0, not 1)."""
+    domain = domain_named(name)
+    world = domain.load_world(WAREHOUSE_WORLD if name == "warehouse" else HOUSEHOLD_WORLD)
+    sim = {"executed": 1, "exe": 0.5, "final_state": domain.initial_state(world), "travel": {}, "failures": [],
+           "jumps": {}, "makespan": 3.0}
+    schedule = {"subtasks": [{"id": "s1"}, {"id": "s2"}]}
+    score = domain.score(world, {}, feasible=False, schedule=schedule, simulation=sim)
+    assert not score["success"] and score["exe"] == 0.5 and score["violations"] == ["infeasible command was not refused"]
+    refused = domain.score(world, {}, feasible=False, refusal="it cannot be done")
+    assert refused["success"] and refused["exe"] == 1.0 and refused["lower_bound"] is None
