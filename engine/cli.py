@@ -197,7 +197,7 @@ def cmd_steps(args: argparse.Namespace) -> int:
             default = "required" if spec.required else f"default {spec.default!r}"
             choices = f" (one of: {', '.join(map(str, spec.choices))})" if spec.choices else ""
             print(f"  {name:<14} {spec.type:<8} {default:<24} {spec.doc}{choices}")
-        print("outputs:")
+        print("outputs:" + (f" (family: {step.shape})" if step.shape else ""))
         for name, type_name in step.outputs.items():
             print(f"  {name:<14} {type_name}")
         return 0

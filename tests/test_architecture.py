@@ -39,7 +39,7 @@ LAYERS: list[tuple[str, tuple[tuple[str, ...], ...]]] = [
     ("neutral helpers", (("pipflow.taskdomain", "pipflow.taskdomains", "pipflow.goalcounts",
                           "pipflow.worldfile", "pipflow.floorplan", "pipflow.bullet", "pipflow.llmslot",
                           "pipflow.liberrors", "pipflow.metrics", "pipflow.meaning", "pipflow.values",
-                          "pipflow.taskfile", "pipflow.worldcheck"),)),
+                          "pipflow.taskfile", "pipflow.worldcheck", "pipflow.scoring"),)),
     ("engine", (("pipflow.engine",),)),
     ("base", (("pipflow.errors", "pipflow.resources", "pipflow.yamlsource", "pipflow.version", "pipflow.suggest"),)),
 ]

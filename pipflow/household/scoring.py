@@ -1,6 +1,6 @@
 """Household scoring's facts: final-state conditions, RU's reference, task files and the bench
 table. The score itself is the protocol's, the same for every domain
-(:func:`pipflow.taskdomain.score_run`).
+(:func:`pipflow.scoring.score_run`).
 
 A run succeeds when, judged on the simulation's final state (never on what the plan claims),
 every ground-truth condition holds (objects in receptacles, object states, category counts),

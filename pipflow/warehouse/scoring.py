@@ -1,6 +1,6 @@
 """The warehouse's facts for scoring a run: the goal's counts in a stock, the checks only a
 warehouse has, and RU's reference. The score itself is the protocol's, the same for every domain
-(:func:`pipflow.taskdomain.score_run`; the bench's aggregation is :mod:`pipflow.experiments.benchstats`).
+(:func:`pipflow.scoring.score_run`; the bench's aggregation is :mod:`pipflow.experiments.benchstats`).
 
 A warehouse run succeeds when, judged on what the *simulation* reports (never on what the plan
 claims), besides what every domain asks (every goal condition holds, no subtask refused, no robot
@@ -22,7 +22,7 @@ fewest moves possible, and below 1 by how many moves it wastes.
 from __future__ import annotations
 
 from collections import Counter
-from typing import Any, Iterable
+from typing import Iterable
 
 from pipflow.goalcounts import describe, holds
 from pipflow.taskdomain import Condition
