@@ -61,6 +61,9 @@ from pipflow.values import NO_USAGE, SCORE_METRICS, SIMULATION_METRICS, Score, r
 #: the domain of a world (or task file) that does not name one
 DEFAULT_DOMAIN = "warehouse"
 
+#: the line the default example problem leaves in its goal: where the command's conditions go
+GOAL_PLACEHOLDER = "; the goal conditions of the command go here"
+
 #: ``save(name, data)``: keep an artifact of the step (the engine's ``ctx.write_artifact``)
 Save = Callable[[str, Any], Any]
 
@@ -334,8 +337,7 @@ class TaskDomain(ABC):
         objects and initial state with an empty goal, and a line in it saying where the goal's
         conditions go."""
         text = self.write_problem(world, {}, pddl_domain_name(domain_text, self.name))
-        placeholder = "; the goal conditions of the command go here"
-        return text.replace("(:goal (and\n", f"(:goal (and\n    {placeholder}\n", 1)
+        return text.replace("(:goal (and\n", f"(:goal (and\n    {GOAL_PLACEHOLDER}\n", 1)
 
     def world_mismatches(self, parsed: Any, problem_text: str, world: dict) -> list[str]:
         """The debugger's check of a parsed problem against the world: objects and initial state

@@ -17,7 +17,8 @@ from conftest import local_model_server
 
 from pipflow import StepContext
 from pipflow.errors import InputError
-from pipflow.household.domain import GOAL_PLACEHOLDER, HouseholdDomain
+from pipflow.household.domain import HouseholdDomain
+from pipflow.taskdomain import GOAL_PLACEHOLDER
 from pipflow.language import generator, llm
 
 ROOT = Path(__file__).resolve().parent.parent
