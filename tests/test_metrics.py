@@ -156,8 +156,8 @@ def test_household_conditions_no_final_state_can_break_change_no_meaning():
 # ----------------------------------------------------------------------------- household RU
 def _household_score(team_name: str, goal: dict, plan: list[dict]) -> dict:
     """``plan`` through the real graph, SCIP allocation, schedule and home simulator, scored."""
+    from pipflow.household.domain import HouseholdDomain
     from pipflow.household.problem import write_problem
-    from pipflow.household.scoring import score_run
     from pipflow.household.simulation import simulate
     from pipflow.household.world import load_world, select_team
     from pipflow.team.allocation import allocate
@@ -167,7 +167,8 @@ def _household_score(team_name: str, goal: dict, plan: list[dict]) -> dict:
     team = select_team(load_world(HOME), team_name)
     graph = build_graph(DOMAIN.read_text(), write_problem(team, goal), plan, yaml.safe_load(ACTIONS.read_text()))
     schedule = build_schedule(graph, allocate(graph, team), team)
-    return score_run(team, goal, graph=graph, schedule=schedule, simulation=simulate(team, schedule, graph, goal))
+    return HouseholdDomain().score(team, goal, graph=graph, schedule=schedule,
+                                   simulation=simulate(team, schedule, graph, goal))
 
 
 def step(action: str, *args: str) -> dict:
