@@ -271,8 +271,8 @@ def test_older_records_are_read_in_todays_names_and_never_resumed_into_a_new_tab
                         (new, {"id": "t", "runs": 1, "sr": 1.0, "tc_max": 20.0, "tc_avg": 19.0, "tc_avg_team": 2.0})):
         folder.mkdir()
         (folder / "results.json").write_text(json.dumps({"summary": dict(row), "tasks": [row]}))
-    _, rows = comparison(old, new)
-    assert ["t tc_avg (m)", 19.0, 19.0, 0.0] in rows
+    rows = {r.label: r for r in comparison(old, new).rows}
+    assert rows["t TC-avg (m)"].cells == ["19.00", "19.00"] and not rows["t TC-avg (m)"].differs
 
     (tmp_path / "b").mkdir()
     results, out = bench(tmp_path / "b", [{"id": "move", "command": "There should be 4 product1 in shelf2.",
