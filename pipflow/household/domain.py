@@ -5,9 +5,9 @@ entry-point group ``pipflow.task_domains``.
 The core of :class:`pipflow.taskdomain.TaskDomain` and four capabilities (the checked loop's
 second opinion, goals compared by meaning, a bench table by category, execution under faults),
 each a thin face of a module of this package: the world loader (:mod:`.world`), the translator
-(:mod:`.language.translator`) and
-problem writer and checks (:mod:`.problem`), the simulation (:mod:`.simulation`) and the facts of
-scoring and the task files (:mod:`.scoring`). Household goals are conditions (``{"in": {place:
+(:mod:`.language.translator`) and problem writer and checks (:mod:`.problem`), the simulation
+(:mod:`.simulation`), the facts of scoring and the task files (:mod:`.scoring`) and the side of
+faults (:mod:`.faults`). Household goals are conditions (``{"in": {place:
 [objects]}, "state": {thing: [conditions]}}``), read back from a model's problem; the checked
 loop compares them with the translator's reading (:mod:`.agreement`).
 
