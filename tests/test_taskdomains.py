@@ -334,3 +334,28 @@ def test_an_infeasible_task_that_was_not_refused_keeps_the_simulations_exe(name)
     assert not score["success"] and score["exe"] == 0.5 and score["violations"] == ["infeasible command was not refused"]
     refused = domain.score(world, {}, feasible=False, refusal="it cannot be done")
     assert refused["success"] and refused["exe"] == 1.0 and refused["lower_bound"] is None
+
+
+def test_a_run_under_faults_is_scored_in_the_world_as_it_really_was():
+    """The bench scores a run under faults against the world as the run found it (its surprises
+    put in by the execution capability's ``as_it_was``), once in the protocol's score_bench_run:
+    a unit the records missed is not a broken conservation; the same run judged on the records is."""
+    domain = domain_named("warehouse")
+    assert domain.supports(Capability.EXECUTION)
+    world = domain.load_world(WAREHOUSE_WORLD)
+    shelf, items = next((s, i) for s, i in world["stock"].items() if i)
+    product, count = next(iter(items.items()))
+    real = {s: dict(i) for s, i in world["stock"].items()}
+    real[shelf][product] = count + 1
+    surprise = {"kind": "surprise", "surprise": {"place": shelf, "product": product, "count": count + 1,
+                                                  "records": count, "words": f"one more {product} on {shelf}"}}
+    sim = {"final_state": real, "executed": 0, "failed": 0, "failures": [], "exe": 1.0, "travel": {}, "jumps": {},
+           "makespan": 0.0}
+    task = {"goal": {shelf: {product: count + 1}}}
+    outputs = {"schedule": {"subtasks": []}, "simulation": sim}
+    as_found = domain.score_bench_run(str(WAREHOUSE_WORLD), task, {**outputs, "faults": [surprise]}, None, None)
+    assert as_found["success"], as_found["violations"]
+    on_records = domain.score_bench_run(str(WAREHOUSE_WORLD), task, outputs, None, None)
+    assert not on_records["success"]
+    assert f"{product}: {sum(int(i.get(product, 0)) for i in world['stock'].values())} units before" in \
+        " ".join(on_records["violations"])
