@@ -26,7 +26,8 @@ from .registry import default_registry
 from .source import load_yaml, plain
 from .interrupts import Interrupted, exit_code
 from .recordref import UNITS, command_of as _command_of, headline, resolve_record, run_infos
-from .store import STALE, DamagedRecord, RunStore, read_json, redact, register_secrets, shown_status, stale_note
+from .status import RunStatus
+from .store import DamagedRecord, RunStore, read_json, redact, register_secrets, shown_status, stale_note
 
 EXIT_INTERRUPTED = 130  # Ctrl-C; other signals: interrupts.exit_code
 
@@ -126,7 +127,7 @@ def _warnings(run_dir: Any) -> list[str]:
 def _print_result(result, quiet: bool) -> int:
     for line in _warnings(getattr(result, "run_dir", None)):  # said during the run; said again with the result
         print(redact(line), file=sys.stderr)
-    if result.status == "succeeded":
+    if result.ok:
         if not quiet:
             for key, value in result.outputs.items():
                 print(redact(f"{key}: {_summary(value, key=key)}"))
@@ -166,7 +167,7 @@ def cmd_run(args: argparse.Namespace) -> int:
     finally:
         if display:
             display.close()
-    if args.verbose and result.exception is not None and result.status == "failed":
+    if args.verbose and result.exception is not None and result.status is RunStatus.FAILED:
         _print_traceback(result.exception)
     return _print_result(result, args.quiet)
 
@@ -237,7 +238,7 @@ def cmd_steps(args: argparse.Namespace) -> int:
             default = "required" if spec.required else f"default {spec.default!r}"
             choices = f" (one of: {', '.join(map(str, spec.choices))})" if spec.choices else ""
             print(f"  {name:<14} {spec.type:<8} {default:<24} {spec.doc}{choices}")
-        print("outputs:")
+        print("outputs:" + (f" (family: {step.shape})" if step.shape else ""))
         for name, type_name in step.outputs.items():
             print(f"  {name:<14} {type_name}")
         return 0
@@ -318,8 +319,8 @@ def cmd_show(args: argparse.Namespace) -> int:
         info = {}
         problems.append(str(err))
     print(f"run       {store.root}")
-    if shown_status(store.root, info) == STALE:
-        info = {**info, "status": STALE, "error": info.get("error") or stale_note(store.root, info)}
+    if shown_status(store.root, info) is RunStatus.STALE:
+        info = {**info, "status": RunStatus.STALE.value, "error": info.get("error") or stale_note(store.root, info)}
     full = bool(getattr(args, "full", False))
     keys = ("name", "workflow", "status", "started", "finished", "seconds", "error_step", "error") if full else \
         ("name", "status", "started", "seconds", "error_step", "error")

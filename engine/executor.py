@@ -51,6 +51,12 @@ def _none_outputs(step: Step | None) -> dict:
     return {name: None for name in (step.outputs if step else {})}
 
 
+def _declared(step: Step) -> dict:
+    """What the record keeps of a step's declaration beside its name: the family of its outputs
+    (readers of the record find steps by it, :func:`pipflow.engine.step.shape`)."""
+    return {"shape": step.shape} if step.shape else {}
+
+
 class Executor:
     def __init__(self, workflow: Workflow, registry: Registry, store: RunStore, inputs: dict,
                  options: RunOptions, completed: dict[str, dict] | None = None,
@@ -227,12 +233,12 @@ class Executor:
         if spec.when is not None and not self._condition(spec.when, ns, spec.id):
             outputs = _none_outputs(step)
             self.store.write_step_outputs(spec.id, outputs, iteration)
-            self.store.event("skip", spec.id, reason="when", **label)
+            self.store.event("skip", spec.id, reason="when", **_declared(step), **label)
             return outputs
         args = self._arguments(spec, step, ns)
         step_dir = self.store.step_dir(spec.id, iteration)
         artifact_dir = step_dir / "artifacts"
-        self.store.event("start", spec.id, uses=spec.uses, **label)
+        self.store.event("start", spec.id, uses=spec.uses, **_declared(step), **label)
         started = time.perf_counter()
         use_cache = self.cache is not None and (spec.cache if spec.cache is not None else step.cacheable)
         key = cache_key(step.name, step.version, args, step.module) if use_cache else None

@@ -22,7 +22,8 @@ from typing import Any
 
 from pipflow.errors import UserError
 
-from .store import STALE, DamagedRecord, list_runs, read_json, shown_status, stale_note
+from .status import RunStatus
+from .store import DamagedRecord, list_runs, read_json, shown_status, stale_note
 
 #: where ``pipflow bench`` writes when no ``--out`` is given (relative to the working folder)
 BENCH_DIR = Path("bench-out")
@@ -39,8 +40,8 @@ def run_infos(runs_dir: Path) -> list[tuple[Path, dict]]:
         except DamagedRecord as err:
             info = {"status": "damaged", "error": str(err)}
         info = info if isinstance(info, dict) else {"status": "damaged", "error": "run.json unreadable"}
-        if shown_status(run, info) == STALE:  # its process died without saying how the run ended
-            info = {**info, "status": STALE, "error": info.get("error") or stale_note(run, info)}
+        if shown_status(run, info) is RunStatus.STALE:  # its process died without saying how the run ended
+            info = {**info, "status": RunStatus.STALE.value, "error": info.get("error") or stale_note(run, info)}
         out.append((run, info))
     # names have one-second resolution: two runs of one second tie on the name, not on `started`
     return sorted(out, key=lambda ri: (str(ri[1].get("started") or ""), ri[0].name), reverse=True)

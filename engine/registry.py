@@ -11,13 +11,13 @@ message that names the broken plugin.
 """
 from __future__ import annotations
 
-import difflib
 import importlib
 from importlib.metadata import entry_points
 from types import ModuleType
 from typing import Iterable
 
 from pipflow.errors import UserError
+from pipflow.suggest import closest
 
 from .step import Step
 
@@ -54,7 +54,7 @@ class Registry:
         return sorted(self._steps)
 
     def closest(self, name: str, n: int = 3) -> list[str]:
-        return difflib.get_close_matches(name, self._steps, n=n, cutoff=0.5)
+        return closest(name, self._steps, n=n, cutoff=0.5)  # the module's function: pipflow.suggest
 
     def __contains__(self, name: str) -> bool:
         return name in self._steps

@@ -1,24 +1,28 @@
 """Run a workflow file end to end: validate, resolve inputs, create the run record, execute,
 and leave the record complete whatever happens (success, step failure, refusal, Ctrl-C).
+
+What comes back is one :class:`Run`, the same object ``pipflow.run`` returns to a notebook and
+the bench scores: its ``status`` is a :class:`~pipflow.engine.status.RunStatus`.
 """
 from __future__ import annotations
 
-import difflib
 import math
 import os
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, Callable
 
 from pipflow.errors import InputError, PipflowError, Refusal, UserError
 from pipflow.resources import data_dir
+from pipflow.suggest import closest
 
 from .executor import Executor, RunOptions, write_metrics
 from .expr import ExpressionError, has_expression, resolve
 from .interrupts import Interrupted, interrupt_signals
 from .model import Workflow
 from .provenance import Provenance, outside
+from .status import RunStatus
 from .registry import Registry, default_registry
 from .store import DamagedRecord, RunStore, looks_secret, read_json, utc_now
 from .types import coerce_text, type_matches
@@ -26,10 +30,24 @@ from .validate import check_given_values, load_workflow
 from .writes import DiskError
 
 
+#: writes a run's static HTML report and returns its path; installed by the records layer
+#: (:mod:`pipflow.records.report`) when it is imported, since the engine imports nothing above it
+_report_writer: Callable[[Path], Path] | None = None
+
+
+def install_report_writer(writer: Callable[[Path], Path]) -> None:
+    """Let :meth:`Run.report` write reports with ``writer`` (the records layer's hook)."""
+    global _report_writer
+    _report_writer = writer
+
+
 @dataclass
-class RunResult:
+class Run:
+    """One run, finished or not: where its record is, how it stands, its outputs and why it
+    stopped. Returned by :func:`run_workflow` and :func:`resume_run`, and by ``pipflow.run``."""
+
     run_dir: Path
-    status: str  # succeeded | failed | refused | interrupted
+    status: RunStatus
     outputs: dict = field(default_factory=dict)
     error: str | None = None
     error_step: str | None = None
@@ -38,7 +56,22 @@ class RunResult:
 
     @property
     def ok(self) -> bool:
-        return self.status == "succeeded"
+        return RunStatus(self.status).ok
+
+    @property
+    def record(self) -> Path:
+        """The run directory (what ``pipflow show``, ``report`` and ``view`` read)."""
+        return Path(self.run_dir)
+
+    def report(self) -> Path:
+        """Write the run's static HTML report and return its path."""
+        if _report_writer is None:
+            raise UserError("no report writer is loaded: import pipflow.records.report (pipflow.run does)")
+        return _report_writer(self.record)
+
+
+#: the name this class had before it was one with the API's (kept for code that imports it)
+RunResult = Run
 
 
 def find_workflow(ref: str | Path) -> Path:
@@ -51,7 +84,7 @@ def find_workflow(ref: str | Path) -> Path:
     if (builtin / name).is_file():
         return builtin / name
     known = sorted(x.name for x in builtin.glob("*.yaml"))
-    close = difflib.get_close_matches(name, known, n=1)
+    close = closest(name, known, n=1)
     raise UserError(f"{ref}: no such workflow file" + (f"; did you mean the built-in {close[0]!r}?" if close else
                                                        f"; built-in workflows: {', '.join(known)}"))
 
@@ -98,7 +131,7 @@ def resolve_inputs(wf: Workflow, given: dict[str, Any], from_text: bool = False,
     if unknown:
         hints = []
         for k in unknown:
-            close = difflib.get_close_matches(str(k), list(wf.inputs), n=1)  # an inputs file may have number keys
+            close = closest(str(k), list(wf.inputs), n=1)  # an inputs file may have number keys
             hints.append(f"{k!r}" + (f" (did you mean {close[0]!r}?)" if close else ""))
         raise InputError(f"{wf.file}: unknown input {', '.join(hints)}; declared: {', '.join(wf.inputs) or 'none'}")
     env_ns = {"env": declared_env(wf), "inputs": {}}
@@ -141,8 +174,8 @@ def resolve_inputs(wf: Workflow, given: dict[str, Any], from_text: bool = False,
 
 def run_workflow(workflow: str | Path, inputs: dict[str, Any] | None = None, *, runs_dir: str | Path = "runs",
                  options: RunOptions | None = None, registry: Registry | None = None,
-                 inputs_from_text: bool = False) -> RunResult:
-    """Validate and run a workflow; never raises for a failed run (see ``RunResult``), only for
+                 inputs_from_text: bool = False) -> Run:
+    """Validate and run a workflow; never raises for a failed run (see :class:`Run`), only for
     problems found before a run directory exists (invalid workflow, bad inputs)."""
     registry = registry or default_registry()
     wf = load_workflow(find_workflow(workflow), registry)
@@ -151,7 +184,7 @@ def run_workflow(workflow: str | Path, inputs: dict[str, Any] | None = None, *, 
     provenance = _provenance(wf, values, inputs or {})
     store = RunStore.create(Path(runs_dir), wf.name)
     try:  # run.json first: a record is never without it (runs, show and resume look for it)
-        store.update_run(workflow=str(wf.file), name=wf.name, status="running", started=utc_now(),
+        store.update_run(workflow=str(wf.file), name=wf.name, status=RunStatus.RUNNING, started=utc_now(),
                          inputs=values, pid=os.getpid(), path_bases=wf.path_bases(), given=provenance.to_json(),
                          workflow_files=[str(f) for f in (wf.files or [wf.file])])
         store.reserve()
@@ -173,7 +206,7 @@ def _provenance(wf: Workflow, values: dict, given: Any) -> Provenance:
 SNAPSHOT = "workflow.yaml"
 
 
-def resume_run(run_dir: str | Path, options: RunOptions | None = None, registry: Registry | None = None) -> RunResult:
+def resume_run(run_dir: str | Path, options: RunOptions | None = None, registry: Registry | None = None) -> Run:
     """Rerun only what did not finish in an earlier run, in the same run directory.
 
     The steps come from the run's own snapshot (``workflow.yaml``), never from the workflow
@@ -185,7 +218,7 @@ def resume_run(run_dir: str | Path, options: RunOptions | None = None, registry:
     store.lock()
     try:
         info = store.run_info()
-        if info.get("status") == "succeeded":
+        if RunStatus.of(info.get("status")) is RunStatus.SUCCEEDED:
             raise UserError(f"{run_dir}: this run already succeeded; nothing to resume")
         wf = _snapshot_workflow(store, info, registry)
         values = _recorded_inputs(wf, store)
@@ -193,7 +226,7 @@ def resume_run(run_dir: str | Path, options: RunOptions | None = None, registry:
         provenance = _provenance(wf, values, [g for g in given if isinstance(g, str)])
         completed = _completed_nodes(wf, store)
         store.reserve()
-        store.update_run(status="running", resumed=utc_now(), error=None, error_step=None, pid=os.getpid())
+        store.update_run(status=RunStatus.RUNNING, resumed=utc_now(), error=None, error_step=None, pid=os.getpid())
     except DiskError as err:
         store.close()
         raise DiskError(f"{err}; the run was not resumed (free some space and resume it again)",
@@ -204,10 +237,10 @@ def resume_run(run_dir: str | Path, options: RunOptions | None = None, registry:
     try:
         store.event("resume", reused=sorted(completed), damaged_events=store.damaged_events or None)
     except UserError as err:  # the event log cannot be written (a link, a full disk): the record says so
-        result = RunResult(run_dir=store.root, status="failed", error=str(err), exception=err)
+        result = Run(run_dir=store.root, status=RunStatus.FAILED, error=str(err), exception=err)
         store.release_reserve()
         try:
-            store.update_run(status="failed", finished=utc_now(), error=str(err))
+            store.update_run(status=RunStatus.FAILED, finished=utc_now(), error=str(err))
         finally:
             store.close()
         return result
@@ -271,27 +304,27 @@ def _completed_nodes(wf: Workflow, store: RunStore) -> dict[str, dict]:
 
 
 def _execute(wf: Workflow, store: RunStore, values: dict, options: RunOptions, registry: Registry,
-             completed: dict | None, provenance: Provenance, files: list | None = None) -> RunResult:
+             completed: dict | None, provenance: Provenance, files: list | None = None) -> Run:
     executor = Executor(wf, registry, store, values, options, completed, provenance=provenance, files=files)
     started = time.perf_counter()
-    result = RunResult(run_dir=store.root, status="running")
+    result = Run(run_dir=store.root, status=RunStatus.RUNNING)
     store.listener = options.on_event
     try:
         with interrupt_signals():  # SIGTERM and SIGHUP end the run as interrupted, as Ctrl-C does
             result.outputs = executor.run()
             store.write_json(store.root / "outputs.json", result.outputs)
-        result.status = "succeeded"
+        result.status = RunStatus.SUCCEEDED
     except KeyboardInterrupt as err:
         why = f"interrupted by {err.name}" if isinstance(err, Interrupted) else "interrupted by the user"
-        result.status, result.error, result.exception = "interrupted", why, err
+        result.status, result.error, result.exception = RunStatus.INTERRUPTED, why, err
     except ExpressionError as err:
-        result.status, result.error, result.exception = "failed", str(err), err
+        result.status, result.error, result.exception = RunStatus.FAILED, str(err), err
     except PipflowError as err:
-        result.status = "refused" if isinstance(err, Refusal) else "failed"
+        result.status = RunStatus.REFUSED if isinstance(err, Refusal) else RunStatus.FAILED
         result.error, result.exception = str(err), err
         result.error_step = getattr(err, "step_id", None)
     except Exception as err:  # a bug: keep the record, then let the traceback show
-        result.status, result.error, result.exception = "failed", f"internal error: {type(err).__name__}: {err}", err
+        result.status, result.error, result.exception = RunStatus.FAILED, f"internal error: {type(err).__name__}: {err}", err
         result.error_step = getattr(err, "step_id", None)
         raise
     finally:
@@ -302,7 +335,7 @@ def _execute(wf: Workflow, store: RunStore, values: dict, options: RunOptions, r
     return result
 
 
-def _finish(store: RunStore, executor: Executor, result: RunResult) -> None:
+def _finish(store: RunStore, executor: Executor, result: Run) -> None:
     """The record's last words: metrics, the error event, run.json's final status. The space
     reserved for them is given back first, so a run that filled the disk still says so; a write
     that fails even then turns a success into a failure naming the disk, and the rest are still
@@ -323,12 +356,12 @@ def _finish(store: RunStore, executor: Executor, result: RunResult) -> None:
         store.close()
 
 
-def _error_event(store: RunStore, result: RunResult) -> None:
-    if result.status != "succeeded":
+def _error_event(store: RunStore, result: Run) -> None:
+    if result.status is not RunStatus.SUCCEEDED:
         store.event("error", result.error_step, status=result.status, error=result.error,
                     kind=type(result.exception).__name__ if result.exception else None)
 
 
-def _fail(result: RunResult, err: DiskError) -> None:
-    if result.status == "succeeded":
-        result.status, result.error, result.exception = "failed", str(err), err
+def _fail(result: Run, err: DiskError) -> None:
+    if result.status is RunStatus.SUCCEEDED:
+        result.status, result.error, result.exception = RunStatus.FAILED, str(err), err

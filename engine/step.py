@@ -19,8 +19,25 @@ default of another type is a :class:`~pipflow.errors.StepDefinitionError` naming
 
 ``inputs={name: Input(...)}`` (the first style) is still accepted for one release, for
 third-party plugins: it is checked against the signature, and a difference (a name, a type, a
-default) is an error naming the parameter and both values. Outputs are declared with
-``outputs={...}``; a step that returns a key it does not declare fails when it runs.
+default) is an error naming the parameter and both values.
+
+Outputs are declared by the return annotation: a ``TypedDict`` names each output and its type
+(mapped like the inputs' hints; a nested TypedDict is an object), and the family it belongs to
+when it carries a :func:`shape` (recorded with the step's start in the run's events, so a reader
+such as the report finds "the simulation" by what the step declared, never by the keys of what
+it returned)::
+
+    @shape("greeting")
+    class Greeting(TypedDict):
+        text: str
+        length: int
+
+    @step("text.greet", doc="Greet.")
+    def greet(ctx: StepContext, name: Annotated[str, Doc("who")]) -> Greeting:
+        return {"text": f"hello {name}", "length": len(name) + 6}
+
+``outputs={...}`` (with ``-> dict``) still declares them by hand; given beside a TypedDict it
+must agree with it. A step that returns a key it does not declare fails when it runs.
 
 Steps are registered through the entry-point group ``pipflow.steps``. Step functions receive
 resolved, JSON-like arguments and return a dict of JSON-like outputs: that is what makes run
@@ -51,6 +68,22 @@ _REQUIRED = object()
 
 #: A path argument: the step receives the path, resolved against the workflow's folder, as a str.
 PathStr = NewType("PathStr", str)
+
+#: the attribute a :func:`shape` sets on a TypedDict
+SHAPE_ATTRIBUTE = "__pipflow_shape__"
+
+
+def shape(name: str) -> Callable[[type], type]:
+    """Class decorator: the TypedDict declares outputs of the family ``name`` (``"simulation"``,
+    ``"score"``, ...). Steps whose outputs differ in detail (a domain's own simulation step with
+    keys of its own) belong to one family by carrying the same name; readers of run records look
+    steps up by it (:func:`pipflow.engine.store.RunStore` keeps it in the step's ``start`` event)."""
+    def tag(cls: type) -> type:
+        if not typing.is_typeddict(cls):
+            raise TypeError(f"@shape({name!r}) marks a TypedDict, not {cls!r}")
+        setattr(cls, SHAPE_ATTRIBUTE, name)
+        return cls
+    return tag
 
 
 @dataclass(frozen=True)
@@ -112,6 +145,8 @@ class Step:
     version: str = "1"
     cacheable: bool = False
     module: str = ""
+    #: the family of its outputs (a :func:`shape` of its return TypedDict), or None
+    shape: str | None = None
 
     def defaults(self) -> dict[str, Any]:
         return {k: v.default for k, v in self.inputs.items() if not v.required}
@@ -134,15 +169,21 @@ def step(
             if type_name not in TYPES:
                 raise StepDefinitionError(f"step {name!r} ({_where(func)}): output {key!r} has unknown type "
                                           f"{type_name!r}; use one of {', '.join(TYPES)}")
+        typed, family = signature_outputs(func, name)
+        if typed is not None and outputs is not None and dict(outputs) != typed:
+            differ = sorted(k for k in set(typed) | set(outputs) if typed.get(k) != outputs.get(k))
+            raise StepDefinitionError(f"step {name!r} ({_where(func)}): outputs= and the return TypedDict disagree "
+                                      f"on {', '.join(map(repr, differ))}; declare the outputs in one place")
         return Step(
             name=name,
             func=func,
             doc=doc or (func.__doc__ or "").strip().split("\n\n")[0],
             inputs=signature_inputs(func, name, inputs),
-            outputs=dict(outputs or {}),
+            outputs=dict(typed if typed is not None else outputs or {}),
             version=version,
             cacheable=cacheable,
             module=func.__module__,
+            shape=family,
         )
 
     return wrap
@@ -199,6 +240,44 @@ def signature_inputs(func: Callable, name: str, declared: dict[str, Input] | Non
         raise StepDefinitionError(f"{where}: inputs= declares {', '.join(map(repr, declared))}, "
                                   f"which the function does not take")
     return found
+
+
+def signature_outputs(func: Callable, name: str) -> tuple[dict[str, str] | None, str | None]:
+    """The outputs a step's return annotation declares (a TypedDict: each key's type) and their
+    family (its :func:`shape`); ``(None, None)`` for any other annotation (``-> dict``)."""
+    where = f"step {name!r} ({_where(func)})"
+    try:
+        hint = typing.get_type_hints(func, include_extras=True).get("return")
+    except Exception as err:
+        raise StepDefinitionError(f"{where}: its type hints cannot be read: {type(err).__name__}: {err}") from None
+    if typing.get_origin(hint) is Annotated:
+        hint = typing.get_args(hint)[0]
+    if not typing.is_typeddict(hint):
+        return None, None
+    found = {}
+    for key, field_hint in typing.get_type_hints(hint, include_extras=True).items():
+        type_name = output_type(field_hint)
+        if type_name is None:
+            raise StepDefinitionError(f"{where}: output {key!r} of {hint.__name__}: the hint {_show_hint(field_hint)} "
+                                      f"maps to no output type; use str, int, float, bool, dict, list, a TypedDict or Any")
+        found[key] = type_name
+    return found, getattr(hint, SHAPE_ATTRIBUTE, None)
+
+
+def output_type(hint: Any) -> str | None:
+    """The declared type of one output from its hint (a TypedDict is an object; whether it may be
+    null does not matter: a skipped step's outputs are all null)."""
+    if typing.get_origin(hint) is Annotated:
+        hint = typing.get_args(hint)[0]
+    if typing.get_origin(hint) in (Union, types.UnionType):
+        members = [m for m in typing.get_args(hint) if m is not type(None)]
+        found = {output_type(m) for m in members}
+        if found == {"integer", "number"}:
+            return "number"
+        return found.pop() if len(found) == 1 else "any"
+    if typing.is_typeddict(hint):
+        return "object"
+    return _type_of(hint)[0]
 
 
 def _one_input(where: str, p: inspect.Parameter, hint: Any, legacy: Input | None) -> Input:

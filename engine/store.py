@@ -38,6 +38,7 @@ import yaml
 from pipflow.errors import UserError
 
 from .locks import FolderLock, writer_alive
+from .status import RunStatus
 from .writes import FILE_MODE, AppendLog, DiskError, disk_error, write_file  # noqa: F401  (FILE_MODE, DiskError: re-exported)
 
 
@@ -337,16 +338,20 @@ class RunStore:
             self._folder_lock.release()
 
 
-STALE = "stale"
+#: the status shown for a record whose writer died (the name readers used before the enum)
+STALE = RunStatus.STALE
 
 
-def shown_status(run_dir: Path, info: dict) -> str:
+def shown_status(run_dir: Path, info: dict) -> RunStatus | str:
     """The status readers show: a record that says "running" while no process holds its lock
     was left by a process that died without saying how the run ended (kill -9, a power cut):
-    it is shown as ``stale`` (``pipflow resume`` continues it)."""
-    status = str(info.get("status", "?"))
-    if status == "running" and writer_alive(run_dir) is False:
-        return STALE
+    it is shown as ``stale`` (``pipflow resume`` continues it). A word that names no status (a
+    damaged or foreign record) is shown as it is."""
+    status = RunStatus.of(info.get("status", "?"))
+    if status is None:
+        return str(info.get("status", "?"))
+    if status is RunStatus.RUNNING and writer_alive(run_dir) is False:
+        return RunStatus.STALE
     return status
 
 

@@ -8,7 +8,6 @@ steps on the cycle). A loop without a maximum is a schema error.
 """
 from __future__ import annotations
 
-import difflib
 import functools
 import json
 from pathlib import Path
@@ -19,6 +18,7 @@ import networkx as nx
 
 from pipflow.errors import Diagnostic, InputError, Location, SourceFileError, WorkflowError
 from pipflow.resources import data_file
+from pipflow.suggest import closest
 
 from .expr import ExpressionError, Reference, has_expression, split_template, template_references
 from .model import LoopSpec, StepSpec, Workflow, build_workflow, read_workflow_data
@@ -184,7 +184,7 @@ def _message(error: jsonschema.ValidationError) -> str:
         extra = sorted(set(error.instance) - set(error.schema.get("properties", {})), key=str)  # keys may be null, numbers
         hints = []
         for e in extra:
-            close = difflib.get_close_matches(str(e), list(error.schema.get("properties", {})), n=1)
+            close = closest(str(e), list(error.schema.get("properties", {})), n=1)
             hints.append(f"{e!r}" + (f" (did you mean {close[0]!r}?)" if close else ""))
         return "unknown key " + ", ".join(hints)
     if error.validator == "not" and error.schema.get("anyOf"):
@@ -220,7 +220,7 @@ def _semantic_diagnostics(wf: Workflow, registry: Registry) -> list[Diagnostic]:
             continue
         for arg, value in s.args.items():
             if arg not in step.inputs:
-                close = difflib.get_close_matches(arg, list(step.inputs), n=1)
+                close = closest(arg, list(step.inputs), n=1)
                 hint = f"; did you mean {close[0]!r}?" if close else f"; it takes {', '.join(step.inputs) or 'none'}"
                 out.append(Diagnostic(s.arg_loc(arg), f"step {s.id!r} ({s.uses}): unknown argument {arg!r}{hint}"))
                 continue
@@ -274,7 +274,7 @@ def _value_problem(declared: Any, value: Any, wf: Workflow, given: dict | None =
     if value is None:
         return None
     if declared.choices and value not in declared.choices:
-        close = difflib.get_close_matches(str(value), [str(c) for c in declared.choices], n=1)
+        close = closest(str(value), declared.choices, n=1)
         via = f" (the {'given value' if given is not None and name in (given or {}) else 'default'} of input {name!r})" \
             if name else ""
         return (f"{value!r}{via} is not one of {', '.join(map(repr, declared.choices))}"
@@ -405,7 +405,7 @@ def _check_reference(ref: Reference, node, loop_id, wf: Workflow, by_id, loops, 
     if ref.name == "inputs":
         if ref.attr is None or ref.attr in wf.inputs:
             return None
-        close = difflib.get_close_matches(ref.attr, list(wf.inputs), n=1)
+        close = closest(ref.attr, list(wf.inputs), n=1)
         return f"unknown input 'inputs.{ref.attr}'" + (f"; did you mean 'inputs.{close[0]}'?" if close else
                                                        f"; declared inputs: {', '.join(wf.inputs) or 'none'}")
     if ref.name == "env":
@@ -421,7 +421,7 @@ def _check_reference(ref: Reference, node, loop_id, wf: Workflow, by_id, loops, 
             return f"'{ref.name}.{ref.attr}': a loop's outputs are 'iterations' and 'done'"
         return None
     if ref.name not in by_id:
-        close = difflib.get_close_matches(ref.name, list(by_id) + list(loops) + ["inputs", "env"], n=1)
+        close = closest(ref.name, list(by_id) + list(loops) + ["inputs", "env"], n=1)
         return f"unknown reference {ref.name!r}" + (f"; did you mean {close[0]!r}?" if close else "")
     if node is not None and ref.name == node.id:
         return f"step {ref.name!r} refers to its own outputs"
@@ -430,7 +430,7 @@ def _check_reference(ref: Reference, node, loop_id, wf: Workflow, by_id, loops, 
         pass  # until/max of a loop may read its own steps
     step = registry.get(target.uses)
     if step is not None and step.outputs and ref.attr is not None and ref.attr not in step.outputs:
-        close = difflib.get_close_matches(ref.attr, list(step.outputs), n=1)
+        close = closest(ref.attr, list(step.outputs), n=1)
         return (f"step {ref.name!r} ({target.uses}) has no output {ref.attr!r}"
                 + (f"; did you mean {close[0]!r}?" if close else f"; its outputs: {', '.join(step.outputs)}"))
     return None

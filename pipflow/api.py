@@ -5,40 +5,23 @@ where the record is), not exit codes and printed tables. Both functions run exac
 ``pipflow run`` / ``pipflow bench`` run, with the same validation and the same run records, so a
 result seen in a notebook can be reopened with ``pipflow show`` or ``pipflow report``.
 
-Failures of the run itself (a step failed, the command was refused) come back as a ``Run`` whose
-``status`` says so; problems found before a run exists (an invalid workflow, an unknown input)
-raise the usual :class:`pipflow.errors.UserError`.
+Failures of the run itself (a step failed, the command was refused) come back as a :class:`Run`
+(the engine's one run class) whose ``status`` (a :class:`~pipflow.engine.status.RunStatus`) says
+so; problems found before a run exists (an invalid workflow, an unknown input) raise the usual
+:class:`pipflow.errors.UserError`.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 from pipflow.engine.executor import RunOptions
-from pipflow.engine.runner import run_workflow
+from pipflow.engine.runner import Run, run_workflow
+from pipflow.engine.status import RunStatus
 from pipflow.experiments.benchmarking import BenchConfig, fresh_out, run_bench
-from pipflow.records.report import write_report
+from pipflow.records import report as _report  # noqa: F401  (installs the writer of Run.report())
 
-
-@dataclass
-class Run:
-    """One finished run: ``status`` is succeeded, failed, refused or interrupted."""
-
-    status: str
-    outputs: dict[str, Any] = field(default_factory=dict)
-    record: Path | None = None
-    error: str | None = None
-    error_step: str | None = None
-    seconds: float = 0.0
-
-    @property
-    def ok(self) -> bool:
-        return self.status == "succeeded"
-
-    def report(self) -> Path:
-        """Write the run's static HTML report and return its path."""
-        return write_report(self.record)
+__all__ = ["Run", "RunStatus", "run", "bench"]
 
 
 def run(workflow: str | Path, *, runs_dir: str | Path | None = None, jobs: int = 1,
@@ -50,10 +33,7 @@ def run(workflow: str | Path, *, runs_dir: str | Path | None = None, jobs: int =
     >>> r.status, r.outputs["goal"]                                         # doctest: +SKIP
     ('succeeded', {'shelf2': {'product1': 3}})
     """
-    result = run_workflow(workflow, inputs, runs_dir=runs_dir or "runs",
-                          options=RunOptions(jobs=jobs, use_cache=cache))
-    return Run(status=result.status, outputs=result.outputs, record=Path(result.run_dir),
-               error=result.error, error_step=result.error_step, seconds=result.seconds)
+    return run_workflow(workflow, inputs, runs_dir=runs_dir or "runs", options=RunOptions(jobs=jobs, use_cache=cache))
 
 
 def bench(tasks: str | Path, *, workflow: str | None = None, seeds: int = 1, jobs: int = 1,

@@ -25,10 +25,9 @@ import itertools
 import json
 from typing import Any, Callable, Iterable, Mapping
 
-#: how a run ends when its command was refused as impossible in its world (understood, then refused)
-REFUSED_AS_IMPOSSIBLE = "Refusal"
-#: how a run ends when its reader refused to guess (a word it could not place, an ambiguity)
-NOT_UNDERSTOOD = "TranslationError"
+from pipflow.engine.status import RunStatus
+from pipflow.values import NOT_UNDERSTOOD, REFUSED_AS_IMPOSSIBLE, ambiguous, impossible
+
 #: the stand-in for every value of a field that no rule names
 OTHER = "(any other)"
 
@@ -130,10 +129,11 @@ def judge(task: Mapping[str, Any], outputs: Mapping[str, Any], status: str, erro
     (executed, failed later in planning, refused for another reason); a feasible command refused
     as impossible read an impossible meaning into it, so it is misread too. ``understood`` is None
     (not measured) only when a finished run has no ``goal`` output."""
-    refused = status == "refused" or error_kind == REFUSED_AS_IMPOSSIBLE
+    state = RunStatus.of(status)
+    refused = state is RunStatus.REFUSED or error_kind == REFUSED_AS_IMPOSSIBLE
     unclear = error_kind == NOT_UNDERSTOOD
     has_goal = isinstance(outputs, Mapping) and outputs.get("goal") is not None
-    executed = status == "succeeded"
+    executed = state is RunStatus.SUCCEEDED
     if executed and not has_goal:
         return {"understood": None, "misread": None,
                 "understanding": "not measured: the workflow has no output `goal`"}
@@ -144,10 +144,10 @@ def judge(task: Mapping[str, Any], outputs: Mapping[str, Any], status: str, erro
                                 rule_difference(gold_rules, run_rules)) if p]
         return "; ".join(problems) or None
 
-    if task.get("expect") == "refuse" and task.get("feasible") is False and (unclear or refused):
+    if ambiguous(task) and impossible(task) and (unclear or refused):
         return {"understood": True, "misread": False,
                 "understanding": "refused, as it should be (ambiguous, and impossible in every reading)"}
-    if task.get("expect") == "refuse":
+    if ambiguous(task):
         if unclear:
             return {"understood": True, "misread": False, "understanding": "refused to guess, as it should"}
         if has_goal or executed:
@@ -156,7 +156,7 @@ def judge(task: Mapping[str, Any], outputs: Mapping[str, Any], status: str, erro
                                      + (" and executed it" if executed else "")}
         return {"understood": False, "misread": False,
                 "understanding": "refused as impossible instead of asking what was meant" if refused else "not refused"}
-    if task.get("feasible") is False:
+    if impossible(task):
         if unclear:
             return {"understood": False, "misread": False,
                     "understanding": "not understood (the reader could not place its words), so not refused as impossible"}

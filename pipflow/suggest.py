@@ -1,7 +1,9 @@
-"""Name suggestions for error messages ("did you mean ...?"), shared by every file checker.
+"""Name suggestions for error messages ("did you mean ...?"), the one place they are computed.
 
-A neutral module: the world and task checkers of every domain, the PDDL debugger and the
-verifier all suggest names, and none of them should import another to borrow its helper."""
+A base module (it imports nothing of pipflow): the engine's workflow checks (unknown steps,
+inputs, outputs, references, workflows), the world and task checkers of every domain, the
+planner names, the PDDL debugger and the verifier all suggest names through :func:`closest`,
+and none of them imports another to borrow its helper."""
 from __future__ import annotations
 
 import difflib

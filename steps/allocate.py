@@ -14,6 +14,7 @@ from pipflow.language.llm import Retry
 from pipflow.language.prompting import find_template, prompt_problem
 from pipflow.liberrors import SCIP, library_errors
 from pipflow.team.scheduling import COSTS, DEFAULT_COST
+from pipflow.values import AllocationOutputs
 
 # the inputs every allocator takes, named once (each step's signature is its contract)
 Graph = Annotated[dict, Doc("output of graph.dependencies")]
@@ -47,8 +48,7 @@ def _run(ctx: StepContext, method: str, graph: dict, world: dict, **options: Any
 
 
 @step("allocate.scip",
-      doc="Lexicographic IP per subtask (min max cost, then min sum of costs) with SCIP; or frontier mode.",
-      outputs={"allocation": "object", "cost": "string"}, cacheable=True)
+      doc="Lexicographic IP per subtask (min max cost, then min sum of costs) with SCIP; or frontier mode.", cacheable=True)
 def scip(
     ctx: StepContext,
     graph: Graph,
@@ -62,26 +62,24 @@ def scip(
     time_limit: Annotated[float, Doc("seconds per frontier wave (frontier mode)")] = 10.0,
     naive: Annotated[bool, Doc("solve the first stage as a full SCIP model (slow; for comparison)")] = False,
     cost: Cost = DEFAULT_COST,
-) -> dict:
+) -> AllocationOutputs:
     """The paper's allocator; the fast first stage gives the same optimum as the naive model."""
     return _run(ctx, "naive" if naive else "scip", graph, world, constraints=constraints, linear=linear,
                 speed=speed, handling=handling, cost=cost, mode=mode, time_limit=time_limit)
 
 
-@step("allocate.greedy", doc="Baseline: cheapest capable robots first until the skills are covered.",
-      outputs={"allocation": "object", "cost": "string"}, cacheable=True)
+@step("allocate.greedy", doc="Baseline: cheapest capable robots first until the skills are covered.", cacheable=True)
 def greedy(ctx: StepContext, graph: Graph, world: World, constraints: RobotRules = None, linear: LinearRules = None,
-           speed: Speed = 1.0, handling: Handling = 2.0, cost: Cost = DEFAULT_COST) -> dict:
+           speed: Speed = 1.0, handling: Handling = 2.0, cost: Cost = DEFAULT_COST) -> AllocationOutputs:
     """Greedy baseline for comparison with the IP; "cheapest" by ``cost`` (subtask: the nearest)."""
     return _run(ctx, "greedy", graph, world, constraints=constraints, linear=linear, speed=speed,
                 handling=handling, cost=cost)
 
 
 @step("allocate.blind", doc="pipflow's cost-blind allocation: fewest robots by robot order, ignoring travel cost "
-                            "(not the paper's w/o AS, which is allocate.llm).",
-      outputs={"allocation": "object", "cost": "string"}, cacheable=True)
+                            "(not the paper's w/o AS, which is allocate.llm).", cacheable=True)
 def blind(ctx: StepContext, graph: Graph, world: World, constraints: RobotRules = None, linear: LinearRules = None,
-          speed: Speed = 1.0, handling: Handling = 2.0, cost: Cost = DEFAULT_COST) -> dict:
+          speed: Speed = 1.0, handling: Handling = 2.0, cost: Cost = DEFAULT_COST) -> AllocationOutputs:
     """Cost-blind allocation: shows what the allocation strategy buys. It never looks at costs;
     ``cost`` only says what the recorded ``costs`` of each assignment mean."""
     return _run(ctx, "blind", graph, world, constraints=constraints, linear=linear, speed=speed,
@@ -91,7 +89,7 @@ def blind(ctx: StepContext, graph: Graph, world: World, constraints: RobotRules 
 @step("allocate.llm",
       doc="The paper's 'w/o AS' ablation: a language model allocates the subtasks to robots and orders them "
           "(instead of the IP); its JSON answer is checked (skills, rules, order) and refused with feedback.",
-      outputs={"allocation": "object", "cost": "string"}, cacheable=True)
+      cacheable=True)
 def llm(
     ctx: StepContext,
     graph: Graph,
@@ -113,7 +111,7 @@ def llm(
     deadline: Annotated[float | None, Doc("seconds per call, retries and waits included")] = None,
     cache_dir: Annotated[PathStr | None, Doc("response cache folder (default .pipflow-cache/llm)")] = None,
     cache: Annotated[bool, Doc("replay cached responses; false always calls the model")] = True,
-) -> dict:
+) -> AllocationOutputs:
     """The model's coalitions in the model's order, timed as every allocation is (the recorded
     ``costs`` are what c_i would have been, for comparison with the IP); each question and answer
     is an artifact (``attemptN-messages.json``, ``attemptN-response.txt``)."""

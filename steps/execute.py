@@ -15,6 +15,7 @@ from pipflow.execution import faults as fault_specs
 from pipflow.execution.capability import capable
 from pipflow.liberrors import SCIP, library_errors
 from pipflow.taskdomains import task_domain
+from pipflow.values import ExecutionOutputs
 from pipflow.yamlsource import read_source, safe_load
 
 
@@ -32,9 +33,7 @@ def _metadata(ctx: StepContext, value: Any) -> dict:
 
 @step("execute",
       doc="Carry out a schedule under faults (declared, or drawn from the seed): watch it against the schedule and "
-          "recover, cheapest first (re-allocate, re-plan, refuse); outputs the world, schedule and graph to simulate.",
-      outputs={"world": "object", "schedule": "object", "graph": "object", "faults": "array", "recoveries": "array",
-               "refusal": "any", "feasible": "any", "feasibility": "string"})
+          "recover, cheapest first (re-allocate, re-plan, refuse); outputs the world, schedule and graph to simulate.")
 def execute(
     ctx: StepContext,
     world: Annotated[dict, Doc("the world (output of world.load)")],
@@ -57,7 +56,7 @@ def execute(
     constraints: Annotated[list | None, Doc("the run's robot rules")] = None,
     speed: Annotated[float, Doc("robot speed, m/s")] = 1.0,
     handling: Annotated[float, Doc("seconds of loading/unloading per route stop")] = 2.0,
-) -> dict:
+) -> ExecutionOutputs:
     """Faults are checked against the world before anything is played (an unknown robot or shelf
     is exit 2, naming the fault)."""
     identity = {"world": world, "schedule": schedule, "graph": graph, "faults": [], "recoveries": [],

@@ -8,6 +8,7 @@ from pipflow import Choices, Doc, StepContext, step
 from pipflow.errors import InputError
 from pipflow.pictures import dependency_graph
 from pipflow.team.dependency import build_graph, to_dot
+from pipflow.values import GraphOutputs
 from pipflow.yamlsource import read_source, safe_load
 
 
@@ -34,7 +35,6 @@ def _read_metadata(ctx: StepContext, value) -> dict:
 @step(
     "graph.dependencies",
     doc="Build the subtask dependency DAG of a team plan (minimal deordering, exact read/write, or paper Alg. 2).",
-    outputs={"graph": "object"},
     cacheable=True,
 )
 def dependencies(
@@ -49,7 +49,7 @@ def dependencies(
                         "reduced; paper: Alg. 2's single nearest parent")] = "deorder",
     picture: Annotated[bool, Doc("also draw graph.png (workflows pass pictures == 'always'; see "
                                  "pipflow.pictures)")] = True,
-) -> dict:
+) -> GraphOutputs:
     """Ground the plan with unified-planning and link actions whose fluents interact."""
 
 

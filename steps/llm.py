@@ -17,8 +17,9 @@ from pipflow.language.parsing import ParseIssue
 from pipflow.language.prompting import find_template, prompt_problem, render
 from pipflow.language.teamplan import read_team_plan
 from pipflow.pddl.common import format_plan
-from pipflow.taskdomain import pddl_domain_name
+from pipflow.taskdomain import Capability, pddl_domain_name
 from pipflow.taskdomains import task_domain
+from pipflow.values import CheckOutputs, ProblemReading
 
 #: the longest answer kept in the step's ``response`` output. The run record copies outputs (each
 #: loop iteration, the loop's result), so a long answer is stored once in full, as the artifact
@@ -29,12 +30,6 @@ RESPONSE_OUTPUT_CHARS = 32_000
 @step(
     "llm.problem",
     doc="Write the team-level PDDL problem for a command with a language model (or offline).",
-    outputs={"problem": "string", "goal": "any", "constraints": "array", "messages": "array",
-             "response": "string", "usage": "object", "errors": "array",
-             "order": "any", "explanation": "any",  # offline: the order and the resolver's arithmetic
-             "varied": "string", "round": "object",  # what changed in a prompt that would repeat; this round
-             "concrete": "object",  # offline, where the domain has it: the goal with counts resolved
-             "reader": "string"},  # who wrote this round's goal: offline (the parser) or model
 )
 def llm_problem(
     ctx: StepContext,
@@ -67,7 +62,7 @@ def llm_problem(
                           "not understood (a command the parser finds impossible is refused)")] = "model",
     locate: Annotated[bool, Doc("say which section of a problem that never closes is left open (the debugger's "
                                 "reading); false in a workflow without the debugger (the 'w/o B' ablation)")] = True,
-) -> dict:
+) -> ProblemReading:
     """``problem`` is "" when the answer held no usable problem; ``errors`` then says why, in
     words meant for the next round's prompt. ``goal`` is set by offline and grounded runs, and by
     every run of a domain that reads its goal back from the problem (household: its goal
@@ -105,8 +100,6 @@ def llm_problem(
     doc="The checked loop's second opinion on the model's reading: its goal and robot rules against the offline "
         "parser's reading of the command (or the doubts the command's names and numbers raise); decides whether a "
         "refusal is final. Feedback names what disagrees and the command's words, never the parser's value.",
-    outputs={"ok": "boolean", "messages": "array", "refusal": "string", "disagreement": "array",
-             "basis": "string"},
 )
 def llm_check(
     ctx: StepContext,
@@ -122,7 +115,7 @@ def llm_check(
     strict: Annotated[bool, Doc("a goal the command's words raise doubts about (the parser did not read the "
                                 "command) ends the run, not executed, instead of being accepted with a warning")] = False,
     last: Annotated[bool, Doc("this is the loop's last round: a refusal nothing confirms or denies is then final")] = False,
-) -> dict:
+) -> CheckOutputs:
     """``ok``: the reading agrees with the offline reading, or the parser does not read the
     command (its words raise doubts at most: accepted, the doubts in ``disagreement`` as
     warnings; with ``strict`` the run ends instead, TranslationError); ``messages``: a firm
@@ -132,8 +125,9 @@ def llm_check(
     if resolve_model(model) == "offline" or reader == "offline":  # the reading is the parser's own
         return {"ok": True, "messages": [], "refusal": refusal, "disagreement": [], "basis": "none"}
     domain = task_domain(world)
-    opinion = domain.second_opinion(command, world, goal, constraints, refusal, last)
-    if opinion is None:  # a domain whose goals are not compared: only whether a refusal is final
+    if domain.supports(Capability.SECOND_OPINION):
+        opinion = domain.second_opinion(command, world, goal, constraints, refusal, last)
+    else:  # a domain whose goals are not compared: only whether a refusal is final
         if strict:  # nothing can check the model's reading: offline-first executes only the parser's
             raise TranslationError(f"the offline parser does not read the command, and the {domain.name} domain "
                                    "cannot check a model's reading of it, so it is not executed; say the command "

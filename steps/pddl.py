@@ -16,7 +16,9 @@ from pipflow.pddl.debugger import debug_problem
 from pipflow.pddl.names import plan_in_world_names
 from pipflow.pddl.solver import check_engine, problem_digest, remember, remembered, solve_problem
 from pipflow.pddl.verifier import verify_plan
+from pipflow.taskdomain import Capability
 from pipflow.taskdomains import task_domain
+from pipflow.values import DebugOutputs, SolveOutputs, VerifyOutputs
 
 DEFAULT_ENGINE = "pipflow-transport"  # see pipflow/warehouse/planner.py for why
 
@@ -29,14 +31,13 @@ def _parse(ctx: StepContext, problem: str, domain: str):
 
 
 @step("pddl.debug",
-      doc="Parse a problem against the domain and check it against the world; explain every failure (line, column, token, closest names).",
-      outputs={"ok": "boolean", "messages": "array", "problem": "string"})
+      doc="Parse a problem against the domain and check it against the world; explain every failure (line, column, token, closest names).")
 def debug(
     ctx: StepContext,
     problem: Annotated[str | None, Doc("PDDL problem text")],
     domain: Annotated[PathStr, Doc("PDDL domain file")],
     world: Annotated[dict | None, Doc("world dict; when given, objects and initial state must be the world's")] = None,
-) -> dict:
+) -> DebugOutputs:
     """``problem`` out is the text when it is clean, ``None`` otherwise (so the planner is skipped
     and the messages go back to the generator)."""
     if problem is not None:
@@ -49,8 +50,6 @@ def debug(
 
 @step("pddl.solve",
       doc="Solve a problem with a UP engine; status is solved, unsolvable or error, each with its message; a time-out fails the step.",
-      outputs={"status": "string", "plan": "array", "message": "string", "messages": "array", "time": "number",
-               "engine": "string", "requested": "string", "fallback": "string"},
       version="2")  # 2: requested and fallback (cached answers of version 1 lack them)
 def solve(
     ctx: StepContext,
@@ -67,7 +66,7 @@ def solve(
                                       "(PDDL reads them in lower case)")] = None,
     constraints: Annotated[list | None, Doc("only/never robot rules: with the world, pipflow-transport keeps "
                                             "each move within what its allowed robots carry")] = None,
-) -> dict:
+) -> SolveOutputs:
     """An unknown engine (or fallback) is the user's error: exit 2, naming the installed planners,
     never a silent substitute. A problem that found no plan is remembered in this process by
     content (domain, problem, engine, params, timeout): an unchanged problem in the next round of
@@ -90,10 +89,9 @@ def solve(
     domain_text = _read_text(ctx.resolve_path(domain))
     first_params = params
     if engine == DEFAULT_ENGINE and world and world.get("robots"):  # the robots' capacities: the domain knows them
-
-        known = task_domain(world).planner_params(world, constraints or [])
-        if known is not None:
-            first_params = {**known, **(params or {})}
+        tdomain = task_domain(world)
+        if tdomain.supports(Capability.TRANSPORT_PLANNER):
+            first_params = {**tdomain.planner_params(world, constraints or []), **(params or {})}
     result = _solve_once(ctx, parsed, problem, domain_text, engine, first_params, timeout)
     message = result.message
     fell_back = None
@@ -118,7 +116,7 @@ def solve(
 
 
 def _outcome(status: str, plan: list | None, message: str, time: float, engine: str, requested: str,
-             fallback: str | None = None) -> dict:
+             fallback: str | None = None) -> SolveOutputs:
     """The step's outputs; ``messages`` (the checking steps' convention) holds the message when
     there is no plan, so a loop that runs out of rounds quotes the planner's reason too."""
     return {"status": status, "plan": plan, "message": message, "messages": [] if plan else [message],
@@ -156,8 +154,7 @@ def _solve_once(ctx: StepContext, parsed, problem: str, domain_text: str, engine
 
 
 @step("pddl.verify",
-      doc="Validate the plan with UP's sequential plan validator and check the goal against the world; an infeasible goal yields a refusal reason.",
-      outputs={"ok": "boolean", "messages": "array", "refusal": "string", "goal": "object"})
+      doc="Validate the plan with UP's sequential plan validator and check the goal against the world; an infeasible goal yields a refusal reason.")
 def verify(
     ctx: StepContext,
     problem: Annotated[str | None, Doc("PDDL problem text")],
@@ -167,7 +164,7 @@ def verify(
     parse_details: Annotated[bool, Doc("say where a problem that does not parse goes wrong (the parser's "
                                        "message); false in a workflow without the debugger, whose job that "
                                        "is (the 'w/o B' ablation)")] = True,
-) -> dict:
+) -> VerifyOutputs:
     """``refusal`` is a reason string when no plan can satisfy the goal in this world (more units
     than exist, over capacity), else None; ``goal`` is the problem's goal as {shelf: {product: n}}."""
     if not problem:

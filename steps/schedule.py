@@ -6,12 +6,11 @@ from typing import Annotated
 from pipflow import Doc, StepContext, step
 from pipflow.pictures import gantt
 from pipflow.team.scheduling import build_schedule
+from pipflow.values import ScheduleOutputs
 
 
 @step("schedule",
       doc="Time an allocation: start when predecessors are done and the coalition has gathered.",
-      outputs={"schedule": "object", "makespan": "number", "tc_max": "number", "tc_avg": "number",
-               "tc_avg_team": "number"},
       version="2",  # 2: tc_avg is the mean over the robots that moved, tc_avg_team over every robot
       cacheable=True)
 def schedule(
@@ -23,7 +22,7 @@ def schedule(
     handling: Annotated[float, Doc("seconds of loading/unloading per route stop")] = 2.0,
     picture: Annotated[bool, Doc("also draw a Gantt chart (workflows pass pictures == 'always'; see "
                                  "pipflow.pictures)")] = True,
-) -> dict:
+) -> ScheduleOutputs:
     """Replay the allocation in its order; legs follow obstacle-free paths."""
 
 

@@ -8,15 +8,14 @@ from typing import Annotated
 
 from pipflow import Doc, PathStr, StepContext, step
 from pipflow.errors import InputError
-from pipflow.taskdomain import (SCORE_CORE, SIMULATION_CORE, count_refused, report_score, simulation_outputs,
-                                split_refused)
+from pipflow.taskdomain import report_score, report_simulation
 from pipflow.taskdomains import declared_domain, task_domain
+from pipflow.values import Score, Simulation, WorldOutputs, count_refused, simulation_outputs, split_refused
 
 
 @step("world.load",
       doc="Load a world file in its task domain's format (the file's domain: key; the default domain's without one), "
           "validated with every problem located.",
-      outputs={"world": "object"},
       cacheable=True)
 def load(
     ctx: StepContext,
@@ -25,7 +24,7 @@ def load(
     seed: Annotated[int | None, Doc("vary the robots' start positions reproducibly (none: as in the file)")] = None,
     task_domain: Annotated[str | None, Doc("the task domain the workflow is written for: a world of another "
                                            "is refused, naming that domain's workflows (none: any)")] = None,
-) -> dict:
+) -> WorldOutputs:
     """Raises WorldError (exit 2) listing each problem with file:line:col, InputError for an
     unknown ``domain:`` or a world of another domain than ``task_domain``; returns the
     normalized world dict of docs/architecture.md."""
@@ -43,7 +42,6 @@ def load(
 @step("simulate",
       doc="Execute a schedule in the world's task domain's simulator; the same core outputs in every domain "
           "(final state, executed, failures, travel, TC, goal met, GCR), the domain's own under `details`.",
-      outputs={**SIMULATION_CORE, "pictures": "array", "details": "object"},
       version="2")  # 2: tc_avg over the robots that moved, tc_avg_team; GCR of pipflow.metrics
 def simulate(
     ctx: StepContext,
@@ -54,11 +52,11 @@ def simulate(
     snapshots: Annotated[bool, Doc("save pictures of key moments (PNG), where the domain draws them")] = False,
     options: Annotated[dict | None, Doc("the domain's own switches (its simulate's options), e.g. "
                                         "{picture: true, animation: true}: a path map, a GIF")] = None,
-) -> dict:
+) -> Simulation:
     """The step's artifact folder is where a domain draws, when ``snapshots`` or its own options
     ask; the trajectories and event logs it keeps are artifacts too, not outputs. Subtasks the
     schedule holds as ``refused`` (a plan's actions this world cannot place) are not handed to the
-    domain: they count as planned and failed (:func:`pipflow.taskdomain.count_refused`)."""
+    domain: they count as planned and failed (:func:`pipflow.values.count_refused`)."""
     domain = task_domain(world)
     unknown = sorted(set(options or {}) - set(domain.simulate_options))
     if unknown:
@@ -72,16 +70,12 @@ def simulate(
     result = domain.simulate(world, runnable, graph, goal, snapshots=snapshots, out_dir=out_dir,
                              log=ctx.log, save=ctx.write_artifact, **(options or {}))
     outputs = simulation_outputs(count_refused(result, refused, len(schedule.get("subtasks") or [])))
-    ctx.metrics.update({k: outputs[k] for k in ("exe", "tc_max", "tc_avg", "tc_avg_team", "gcr")})
-    ctx.log(f"executed {outputs['executed']}/{len(schedule.get('subtasks', []))}, goal met: {outputs['goal_met']}"
-            f" (GCR {outputs['gcr']:.2f})")
-    return outputs
+    return report_simulation(ctx, outputs, schedule)
 
 
 @step("score",
       doc="Score a run against its task in the world's task domain: success, GCR, Exe, RU, TC-max, TC-avg "
-          "(over the robots that moved; tc_avg_team over every robot), violations; flat, the same keys in every domain.",
-      outputs=dict(SCORE_CORE))
+          "(over the robots that moved; tc_avg_team over every robot), violations; flat, the same keys in every domain.")
 def score(
     ctx: StepContext,
     world: Annotated[dict, Doc("the world (output of world.load)")],
@@ -92,7 +86,7 @@ def score(
     simulation: Annotated[dict | None, Doc("outputs of simulate")] = None,
     feasible: Annotated[bool, Doc("false: only a refusal with nothing executed succeeds")] = True,
     refusal: Annotated[str | None, Doc("refusal message, when the pipeline refused")] = None,
-) -> dict:
+) -> Score:
     result = task_domain(world).score(world, goal, constraints=constraints or [], feasible=feasible, graph=graph,
                                       schedule=schedule, simulation=simulation, refusal=refusal)
     return report_score(ctx, result)

@@ -25,7 +25,7 @@ ROOT = Path(__file__).resolve().parent.parent
 #: source folder -> the package it is installed as (pyproject's package-dir)
 PACKAGES = {"pipflow": "pipflow", "engine": "pipflow.engine", "steps": "pipflow.steps"}
 #: what the engine may import of pipflow's library (everything else sits above it)
-ENGINE_MAY_IMPORT = {"pipflow.errors", "pipflow.resources", "pipflow.yamlsource"}
+ENGINE_MAY_IMPORT = {"pipflow.errors", "pipflow.resources", "pipflow.yamlsource", "pipflow.suggest"}
 #: the layers of docs/architecture.md, top down: each a tuple of groups, a group a tuple of
 #: package prefixes (a prefix is a sub-package or a root module, and covers what is below it).
 #: A module imports its own group or a group of a lower layer; two groups of one layer are
@@ -39,14 +39,16 @@ LAYERS: list[tuple[str, tuple[tuple[str, ...], ...]]] = [
     ("steps", (("pipflow.steps",),)),
     ("task domains", (("pipflow.warehouse",), ("pipflow.household",))),
     ("baselines", (("pipflow.baselines",),)),
+    ("plugin face", (("pipflow.plugin",),)),
     ("language, pictures, execution", (("pipflow.language",), ("pipflow.pictures",), ("pipflow.execution",))),
     ("team coordination", (("pipflow.team",),)),
     ("PDDL tools", (("pipflow.pddl",),)),
-    ("neutral helpers", (("pipflow.taskdomain", "pipflow.taskdomains", "pipflow.goalcounts", "pipflow.suggest",
+    ("neutral helpers", (("pipflow.taskdomain", "pipflow.taskdomains", "pipflow.goalcounts",
                           "pipflow.worldfile", "pipflow.floorplan", "pipflow.bullet", "pipflow.llmslot",
-                          "pipflow.liberrors", "pipflow.metrics", "pipflow.meaning"),)),
+                          "pipflow.liberrors", "pipflow.metrics", "pipflow.meaning", "pipflow.values",
+                          "pipflow.taskfile", "pipflow.worldcheck", "pipflow.scoring"),)),
     ("engine", (("pipflow.engine",),)),
-    ("base", (("pipflow.errors", "pipflow.resources", "pipflow.yamlsource", "pipflow.version"),)),
+    ("base", (("pipflow.errors", "pipflow.resources", "pipflow.yamlsource", "pipflow.version", "pipflow.suggest"),)),
 ]
 #: ``from pipflow import step, Doc`` is the step author's API: the package face eagerly imports
 #: only the engine's step contract and the errors (its ``run``/``bench`` load lazily), so an arrow
@@ -412,18 +414,16 @@ STEP_REASON = ("a step's parameters are its declared inputs, each one a workflow
 LONG_ROOMS = {
     **dict.fromkeys(("pipflow.taskdomain.TaskDomain.simulate", "pipflow.taskdomain.TaskDomain.score",
                      "pipflow.warehouse.domain.WarehouseDomain.simulate",
-                     "pipflow.warehouse.domain.WarehouseDomain.score",
                      "pipflow.household.domain.HouseholdDomain.simulate",
-                     "pipflow.household.domain.HouseholdDomain.score",
-                     "pipflow.warehouse.simulation.simulate", "pipflow.warehouse.scoring.score_run"),
-                    "the TaskDomain protocol's simulate/score keywords (and the warehouse's functions behind "
-                    "them); issue 22 point 3 (typed values: one Run, the simulation result) replaces them"),
+                     "pipflow.warehouse.simulation.simulate", "pipflow.scoring.score_run"),
+                    "the TaskDomain protocol's simulate/score keywords (and the functions behind them: the "
+                    "warehouse's simulation, the one score of every domain): a run's parts, each a value "
+                    "the steps pass by name"),
     **dict.fromkeys(("pipflow.team.allocation.allocate", "pipflow.team.allocation.AllocationWalk.__init__"),
                     "the allocate steps' inputs passed through one keyword each (steps/allocate.py); the "
                     "concurrent baselines work builds on this signature, so it is regrouped after that merges"),
     "pipflow.engine.step.StepContext.__init__": "built by the executor and by hand in tests and notebooks (the "
                                                 "step author's API): its keyword arguments are public",
-    "pipflow.records.report._run_body": "issue 22 point 3 rewrites the report's run page to read declared shapes",
 }
 
 

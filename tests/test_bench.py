@@ -19,7 +19,9 @@ from conftest import interrupt_after
 from pipflow.experiments.benchmarking import BenchConfig, read_row, row_path, run_bench
 from pipflow.experiments.backends import parse_backend, parse_limits, run_key
 from pipflow.errors import UserError
-from pipflow.warehouse.scoring import score_run
+from pipflow.warehouse.domain import WarehouseDomain
+
+score_run = WarehouseDomain().score  # the protocol's score of a warehouse run
 
 FIXTURE = Path(__file__).resolve().parent / "fixtures" / "bench"
 TASKS = FIXTURE / "tasks.yaml"
@@ -380,28 +382,28 @@ def test_a_run_that_executes_another_goal_than_the_gold_is_misread(tmp_path):
 
 
 def test_understanding_compares_bounds_as_ranges_and_rules_as_sets():
-    from pipflow.warehouse.meaning import understanding as understand
+    understand = WarehouseDomain().understand  # meanings compared as written: no world
 
     task = {"goal": {"s1": {"p1": 3, "p2": {"at_least": 2}}},
             "constraints": [{"never": ["r1", "r0"], "product": "p1"}, {"only": ["r2"]}]}
     outputs = {"goal": {"s1": {"p1": {"at_least": 3, "at_most": 3}, "p2": {"at_least": 2}}, "s9": {}},
                "constraints": [{"only": ["r2"], "words": "only r2"}, {"never": ["r0", "r1"], "product": "p1"}]}
-    assert understand(task, outputs, "succeeded", None, None) == {
+    assert understand(task, outputs, "succeeded", None) == {
         "understood": True, "misread": False, "understanding": "goal and rules mean what the gold means"}
     looser = {**outputs, "goal": {"s1": {"p1": 3, "p2": {"at_least": 1}}}}
-    verdict = understand(task, looser, "succeeded", None, None)
+    verdict = understand(task, looser, "succeeded", None)
     assert verdict["understood"] is False and verdict["misread"] is True
     assert "s1 p2: gold at least 2, run at least 1" in verdict["understanding"]
     dropped = {**outputs, "constraints": [{"only": ["r2"]}]}
     verdict = understand(task, dropped, "failed", "AllocationError")  # another meaning, failed later: misread
     assert verdict["understood"] is False and verdict["misread"] is True and "missing" in verdict["understanding"]
     assert understand(task, {}, "refused", "Refusal", None)["understood"] is False  # a feasible task refused
-    assert understand(task, {"plan": []}, "succeeded", None, None)["understood"] is None  # a workflow without `goal`
+    assert understand(task, {"plan": []}, "succeeded", None)["understood"] is None  # a workflow without `goal`
     infeasible, ambiguous = {"feasible": False, "goal": {"s1": {"p1": 99}}}, {"expect": "refuse", "goal": {}}
     assert understand(infeasible, {}, "refused", "Refusal", None)["understood"] is True
     assert understand(ambiguous, {}, "failed", "TranslationError", None)["understood"] is True
     for spec in (infeasible, ambiguous):
-        executed = understand(spec, {"goal": {"s1": {"p1": 1}}}, "succeeded", None, None)
+        executed = understand(spec, {"goal": {"s1": {"p1": 1}}}, "succeeded", None)
         assert executed["understood"] is False and executed["misread"] is True
 
 

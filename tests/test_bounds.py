@@ -180,14 +180,19 @@ def test_a_malformed_value_from_a_problem_is_a_message_not_a_refusal():
 def test_simulation_and_scoring_count_bounds():
     from sim_fixtures import wh01
 
-    from pipflow.warehouse.scoring import goal_counts, score_run
+    from pipflow.warehouse.domain import WarehouseDomain
+    from pipflow.warehouse.scoring import goal_conditions
     from pipflow.warehouse.simulation import goal_check, simulate
 
+    def holding(stock: dict, goal: dict) -> list[bool]:
+        return [c.holds for c in goal_conditions(stock, goal)]
+
+    score_run = WarehouseDomain().score
     final = {"shelf3": {"product1": 7}, "shelf4": {"product1": 15}}
     goal = {"shelf3": {"product1": {"at_least": 6}}, "shelf4": {"product1": {"at_most": 10}}}
-    assert goal_counts(final, goal) == (1, 2) and goal_check(final, goal, WORLD["stock"]) == (False, 0.5)
-    assert goal_counts(final, {"shelf3": {"product1": {"at_least": 7, "at_most": 7}}}) == (1, 1)
-    assert goal_counts(final, {"shelf1": {"product4": {"at_most": 0}}}) == (1, 1)  # an absent product counts 0
+    assert holding(final, goal) == [True, False] and goal_check(final, goal, WORLD["stock"]) == (False, 0.5)
+    assert holding(final, {"shelf3": {"product1": {"at_least": 7, "at_most": 7}}}) == [True]
+    assert holding(final, {"shelf1": {"product4": {"at_most": 0}}}) == [True]  # an absent product counts 0
 
     graph, schedule = wh01()  # two units of product1 from shelf1 to shelf3: shelf3 ends with 7
     within = {"shelf3": {"product1": {"at_least": 6, "at_most": 8}}}
@@ -198,7 +203,7 @@ def test_simulation_and_scoring_count_bounds():
     sim = simulate(WORLD, schedule, graph, above)
     assert not sim["goal_met"] and sim["gcr"] == 0.0
     s = score_run(WORLD, above, graph=graph, schedule=schedule, simulation=sim)
-    assert not s["success"] and "goal: 1 of 1 counts do not hold" in s["violations"]
+    assert not s["success"] and "goal: shelf3 holds at most 6 product1 (it holds 7)" in s["violations"]
 
 
 # ---------------------------------------------------------------- task files

@@ -51,6 +51,32 @@ def garden(garden_plugin_site, monkeypatch):
             "allotment": world.load_world(data / "world.yaml")}
 
 
+def test_the_plugin_imports_nothing_of_pipflow_but_its_public_face():
+    """A plugin author imports ``pipflow.plugin`` and nothing else of pipflow (internals move)."""
+    import ast
+
+    seen = set()
+    for path in (PACKAGE / "pipflow_garden").glob("*.py"):
+        for node in ast.walk(ast.parse(path.read_text(), str(path))):
+            names = [a.name for a in node.names] if isinstance(node, ast.Import) else \
+                [node.module or ""] if isinstance(node, ast.ImportFrom) else []
+            seen |= {(path.name, n) for n in names if n == "pipflow" or n.startswith("pipflow.")}
+    assert seen and {n for _, n in seen} == {"pipflow.plugin"}, sorted(seen)
+
+
+def test_an_infeasible_task_not_refused_keeps_the_simulations_exe_in_the_garden_too(garden):
+    """The score is pipflow's one definition: the garden once gave such a run Exe 0.0 where the
+    household gave the simulation's."""
+    from pipflow_garden.domain import GardenDomain
+
+    domain, world = GardenDomain(), garden["allotment"]
+    sim = {"executed": 1, "exe": 0.5, "final_state": domain.initial_state(world), "travel": {}, "failures": [],
+           "jumps": {}, "makespan": 3.0}
+    score = domain.score(world, {}, feasible=False, schedule={"subtasks": [{"id": "s1"}, {"id": "s2"}]},
+                         simulation=sim)
+    assert not score["success"] and score["exe"] == 0.5 and score["violations"] == ["infeasible command was not refused"]
+
+
 def test_plugin_package_declares_no_pipflow_dependency():
     text = (PACKAGE / "pyproject.toml").read_text()
     deps = text.split("dependencies =", 1)[1].split("]", 1)[0]
@@ -275,15 +301,15 @@ def test_the_simulator_refuses_what_the_garden_cannot_do(garden):
     assert out["executed"] == 0 and out["goal_met"] is False and out["conditions"]["unmet"]
     assert out["final_state"]["ripe"]["south"]["pumpkin"] == 2  # nothing changed
     # the protocol's one shape: pipflow's generic steps simulate and score take the garden's result
-    from pipflow.taskdomain import SCORE_CORE, SIMULATION_CORE, simulation_outputs
+    from pipflow.values import Score, SimulationCore, simulation_outputs
 
     from pipflow_garden.domain import GardenDomain
 
     generic = simulation_outputs(out)
-    assert set(SIMULATION_CORE) <= set(generic) and set(generic["details"]) == {"conditions"}
+    assert set(SimulationCore.__annotations__) <= set(generic) and set(generic["details"]) == {"conditions"}
     scored = GardenDomain().score(world, {"stored": {"shed": {"pumpkin": 1}}}, graph=graph, schedule=schedule,
                                   simulation=generic)
-    assert set(scored) == set(SCORE_CORE) and not scored["success"]
+    assert set(scored) == set(Score.__annotations__) and not scored["success"]
     assert scored == GardenDomain().score(world, {"stored": {"shed": {"pumpkin": 1}}}, graph=graph,
                                           schedule=schedule, simulation=out)  # the flat form scores the same
 
@@ -354,7 +380,9 @@ def test_resource_use_is_measured_against_the_fewest_actions(garden):
     done["final_state"]["ripe"]["herbs"]["basil"] = 0
     done["final_state"]["stored"]["crate"] = {"basil": 4}
     subtasks = [{"id": f"s{i}", "action": "harvest", "robots": []} for i in range(7)]
-    score = scoring.score_run(world, goal, schedule={"subtasks": subtasks}, simulation=done)
+    from pipflow_garden.domain import GardenDomain
+
+    score = GardenDomain().score(world, goal, schedule={"subtasks": subtasks}, simulation=done)
     assert score["success"] is True and score["lower_bound"] == 5 and score["ru"] == pytest.approx(5 / 7)
 
 

@@ -202,3 +202,88 @@ def test_pipflow_steps_shows_the_signature_contract(capsys):
     out = capsys.readouterr().out
     assert "(one of: deorder, exact, paper)" in out
     assert "picture        boolean  default True" in out and "also draw graph.png" in out
+
+
+# ------------------------------------------------------------------ outputs declared by the return type
+from typing import TypedDict  # noqa: E402
+
+from pipflow.engine.step import shape  # noqa: E402
+
+
+class _Inner(TypedDict):
+    x: float
+
+
+@shape("greeting")
+class _Greeting(TypedDict):
+    text: str
+    length: int
+    ratio: float | None
+    parts: list[str]
+    table: dict[str, int]
+    inner: _Inner
+    anything: Any
+
+
+def test_a_typeddict_return_declares_the_outputs_and_their_family():
+    @step("t.greet", doc="Greet.")
+    def greet(ctx: StepContext, name: str) -> _Greeting:
+        return {"text": f"hello {name}"}
+
+    assert greet.outputs == {"text": "string", "length": "integer", "ratio": "number", "parts": "array",
+                             "table": "object", "inner": "object", "anything": "any"}
+    assert greet.shape == "greeting"
+    # outputs= beside the TypedDict must say the same; a difference names the outputs
+    same = step("t.greet", outputs=dict(greet.outputs))(greet.func)
+    assert same.outputs == greet.outputs
+    with pytest.raises(StepDefinitionError) as err:
+        step("t.greet", outputs={**greet.outputs, "length": "number", "extra": "string"})(greet.func)
+    assert "outputs= and the return TypedDict disagree on 'extra', 'length'" in str(err.value)
+    # -> dict and outputs=: the first style, no family
+    def counted(ctx: StepContext, n: int) -> dict:
+        return {"n": n}
+
+    plain = step("t.plain", outputs={"n": "integer"})(counted)
+    assert plain.outputs == {"n": "integer"} and plain.shape is None
+
+
+class _Odd(TypedDict):
+    values: set
+
+
+def test_an_output_hint_that_maps_to_no_type_is_refused():
+    def odd(ctx: StepContext) -> _Odd:
+        return {}
+
+    with pytest.raises(StepDefinitionError) as err:
+        step("t.odd")(odd)
+    assert "output 'values' of _Odd" in str(err.value) and "maps to no output type" in str(err.value)
+    with pytest.raises(TypeError):
+        shape("x")(dict)  # a family names TypedDicts only
+
+
+def test_the_record_keeps_each_steps_family_and_the_status_words(tmp_path):
+    """The start event says which family of outputs a step declared (what the report looks steps
+    up by); run.json keeps the status as the word it always was, and pipflow.run returns the
+    engine's one Run."""
+    import json
+
+    import pipflow
+    from pipflow.engine.runner import Run
+    from pipflow.engine.status import RunStatus
+
+    @step("t.greeted", doc="Greet.")
+    def greeted(ctx: StepContext, name: str) -> _Greeting:
+        return {"text": f"hello {name}", "length": 6 + len(name)}
+
+    registry = Registry()
+    registry.add(greeted, "test")
+    wf = tmp_path / "wf.yaml"
+    wf.write_text("pipflow: 1\nname: greet\nsteps:\n  - id: hi\n    uses: t.greeted\n    with: {name: ada}\n")
+    result = run_workflow(wf, runs_dir=tmp_path / "runs", registry=registry)
+    assert isinstance(result, Run) and result.status is RunStatus.SUCCEEDED and result.ok
+    starts = [json.loads(line) for line in (result.run_dir / "events.jsonl").read_text().splitlines()]
+    assert {"event": "start", "step": "hi", "uses": "t.greeted", "shape": "greeting"}.items() <= \
+        next(e for e in starts if e["event"] == "start").items()
+    assert json.loads((result.run_dir / "run.json").read_text())["status"] == "succeeded"
+    assert pipflow.Run is Run and RunStatus.of("refused") is RunStatus.REFUSED and RunStatus.of("ok") is None

@@ -236,10 +236,10 @@ def test_workflow_runs_offline_end_to_end(tmp_path):
     pairs = [a["robots"] for a in out["allocation"]["assignments"] if len(a["robots"]) >= 2]
     assert pairs, "the 2-unit pumpkin needs two lifters"
     assert (Path(result.run_dir) / "steps" / "simulate" / "artifacts" / "snapshot_2_end.png").exists()
-    from pipflow.household.scoring import score_run
+    from pipflow.household.domain import HouseholdDomain
     from pipflow.household.world import load_world, select_team
 
-    score = score_run(select_team(load_world(WORLD), "lifters-handler"), out["goal"], graph=out["graph"],
+    score = HouseholdDomain().score(select_team(load_world(WORLD), "lifters-handler"), out["goal"], graph=out["graph"],
                       schedule=out["schedule"], simulation=out["simulation"])
     assert score["success"] and score["gcr"] == 1.0 and 0 < score["ru"] <= 1
     json.dumps(score)

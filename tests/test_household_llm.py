@@ -17,8 +17,9 @@ from conftest import local_model_server
 
 from pipflow import StepContext
 from pipflow.errors import InputError
-from pipflow.household.domain import GOAL_PLACEHOLDER, HouseholdDomain
+from pipflow.household.domain import HouseholdDomain
 from pipflow.language import asking, generator, llm
+from pipflow.taskdomain import GOAL_PLACEHOLDER
 
 ROOT = Path(__file__).resolve().parent.parent
 WORLD = ROOT / "benchmarks" / "household" / "world.yaml"

@@ -551,7 +551,9 @@ def test_random_orders_read_back(world, data):
 
 # ------------------------------------------------------------------------------ scoring
 def test_scorer_honours_infeasible_tasks(world):
-    from pipflow.household.scoring import score_run
+    from pipflow.household.domain import HouseholdDomain
+
+    score_run = HouseholdDomain().score
 
     ok = score_run(world, {}, feasible=False, refusal="mug cannot be hot: it is not heatable")
     assert ok["success"] and ok["gcr"] == 1.0 and ok["violations"] == []
@@ -595,7 +597,9 @@ def test_heating_in_the_microwave_runs_end_to_end(tmp_path):
 def test_bench_understanding_of_household_runs():
     """What `pipflow bench` reports per run: understood when the run's goal is the gold (lists as
     sets) or a refusal was right; misread when a run executed another goal."""
-    from pipflow.household.scoring import understanding
+    from pipflow.household.domain import HouseholdDomain
+
+    understanding = HouseholdDomain().understand  # no world: goals and rules compared as written
 
     task = {"goal": {"in": {"fridge": ["apple", "tomato"]}, "state": {"fridge": ["closed"]}}}
     same = {"goal": {"in": {"fridge": ["tomato", "apple"]}, "state": {"fridge": ["closed"]}, "count": []}}

@@ -156,8 +156,8 @@ def test_household_conditions_no_final_state_can_break_change_no_meaning():
 # ----------------------------------------------------------------------------- household RU
 def _household_score(team_name: str, goal: dict, plan: list[dict]) -> dict:
     """``plan`` through the real graph, SCIP allocation, schedule and home simulator, scored."""
+    from pipflow.household.domain import HouseholdDomain
     from pipflow.household.problem import write_problem
-    from pipflow.household.scoring import score_run
     from pipflow.household.simulation import simulate
     from pipflow.household.world import load_world, select_team
     from pipflow.team.allocation import allocate
@@ -167,7 +167,8 @@ def _household_score(team_name: str, goal: dict, plan: list[dict]) -> dict:
     team = select_team(load_world(HOME), team_name)
     graph = build_graph(DOMAIN.read_text(), write_problem(team, goal), plan, yaml.safe_load(ACTIONS.read_text()))
     schedule = build_schedule(graph, allocate(graph, team), team)
-    return score_run(team, goal, graph=graph, schedule=schedule, simulation=simulate(team, schedule, graph, goal))
+    return HouseholdDomain().score(team, goal, graph=graph, schedule=schedule,
+                                   simulation=simulate(team, schedule, graph, goal))
 
 
 def step(action: str, *args: str) -> dict:
@@ -270,8 +271,8 @@ def test_older_records_are_read_in_todays_names_and_never_resumed_into_a_new_tab
                         (new, {"id": "t", "runs": 1, "sr": 1.0, "tc_max": 20.0, "tc_avg": 19.0, "tc_avg_team": 2.0})):
         folder.mkdir()
         (folder / "results.json").write_text(json.dumps({"summary": dict(row), "tasks": [row]}))
-    _, rows = comparison(old, new)
-    assert ["t tc_avg (m)", 19.0, 19.0, 0.0] in rows
+    rows = {r.label: r for r in comparison(old, new).rows}
+    assert rows["t TC-avg (m)"].cells == ["19.00", "19.00"] and not rows["t TC-avg (m)"].differs
 
     (tmp_path / "b").mkdir()
     results, out = bench(tmp_path / "b", [{"id": "move", "command": "There should be 4 product1 in shelf2.",

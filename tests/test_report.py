@@ -63,6 +63,18 @@ def write_json(path: Path, value) -> None:
     path.write_text(json.dumps(value))
 
 
+def start_events(run: Path, uses: dict[str, str]) -> None:
+    """The start event of each step as the engine writes it: the step it used and the family of
+    outputs it declares (what the report finds steps by)."""
+    from pipflow.engine.registry import default_registry
+
+    registry = default_registry()
+    lines = [json.dumps({"event": "start", "step": sid, "uses": name,
+                         **({"shape": registry.get(name).shape} if registry.get(name).shape else {})})
+             for sid, name in uses.items()]
+    (run / "events.jsonl").write_text("\n".join(lines) + "\n")
+
+
 def make_run_dir(root: Path) -> Path:
     """A run record as the engine writes it, with real simulate/metrics step outputs."""
     from pipflow.engine.step import StepContext
@@ -76,7 +88,7 @@ def make_run_dir(root: Path) -> Path:
     graph, schedule = chain(world, spec)
     goal = {"shelf3": {"product4": 10, "product1": 7}}
     run = root / "run1"
-    write_json(run / "run.json", {"status": "ok", "workflow": "warehouse.yaml"})
+    write_json(run / "run.json", {"status": "succeeded", "workflow": "warehouse.yaml"})
     write_json(run / "inputs.json", {"command": "There should be 10 product4 and 7 product1 in shelf3.", "goal": goal})
     write_json(run / "steps" / "world" / "outputs.json", {"world": world})
     write_json(run / "steps" / "plan" / "outputs.json",
@@ -90,6 +102,8 @@ def make_run_dir(root: Path) -> Path:
     m = score.func(StepContext("metrics", run / "steps" / "metrics" / "artifacts", run), world=world, goal=goal,
                    graph=graph, schedule=schedule, simulation=sim)
     write_json(run / "steps" / "metrics" / "outputs.json", m)
+    start_events(run, {"world": "world.load", "plan": "pddl.solve", "graph": "graph.dependencies",
+                       "schedule": "schedule", "simulate": "simulate.pybullet", "metrics": "metrics.score"})
     return run
 
 
@@ -167,3 +181,63 @@ def test_not_a_report_dir(tmp_path):
 
     with pytest.raises(InputError):
         write_report(tmp_path)
+
+
+# ------------------------------------------------------------- every domain: the same sections
+SECTIONS = ("<h2 id='plan'>Team plan</h2>", "<h2>Dependency graph</h2>", "<h2>Schedule</h2>", "<h2>Robot paths</h2>",
+            "<h2>Simulation</h2>", "<h3>Goal</h3>")
+
+
+def _report_of_only_run(runs: Path) -> tuple[Path, str]:
+    (run,) = runs.iterdir()
+    page = write_report(run)
+    return page, page.read_text()
+
+
+def test_household_run_report_shows_the_simulation_and_the_robot_paths(tmp_path, monkeypatch):
+    """The report finds a run's steps by the families their outputs declare, in any domain: a
+    household run (its own step household.simulate, final_state, no trajectories kept) shows the
+    same sections as a warehouse run, the path map drawn from the schedule's legs on the home's
+    floor plan, the goal's conditions as the household reads them."""
+    from pipflow.api import run as run_workflow
+
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setenv("PIPFLOW_CACHE_DIR", str(tmp_path / "cache"))
+    done = run_workflow("household", runs_dir=tmp_path / "runs",
+                        command="Put the apple in the fridge and switch off the floor lamp.")
+    assert done.ok, done.error
+    page, html = _report_of_only_run(tmp_path / "runs")
+    for section in SECTIONS:
+        assert section in html, section
+    assert "report/paths.png" in html and "apple in fridge" in html
+    assert "<td>floorlamp off</td><td class='num'><span class='ok'>yes</span>" in html
+    shot = tmp_path / "household.png"
+    dom = render(page, shot)
+    assert 'data-images-ok="true"' in re.search(r"<body[^>]*>", dom).group(0)
+    shutil.copy(shot, Path(os.environ.get("PIPFLOW_REPORT_SHOTS", tmp_path)) / "household-report.png")
+
+
+def test_garden_run_report_shows_the_simulation_and_the_robot_paths(garden_plugin_site, tmp_path):
+    """The same sections for a domain pipflow knows only through its plugin (the generic step
+    simulate, the garden's floor plan and goal conditions asked of the domain)."""
+    import sys
+
+    workflow = garden_plugin_site / "pipflow_garden" / "workflows" / "garden.yaml"
+    env = {**os.environ, "PYTHONPATH": str(garden_plugin_site), "PIPFLOW_CACHE_DIR": str(tmp_path / "cache")}
+    env.pop("PIPFLOW_MODEL", None)
+    cli = [sys.executable, "-m", "pipflow.engine.cli"]
+    proc = subprocess.run(cli + ["run", str(workflow), "-i", "command=Prune south, then bring two pumpkins from south "
+                                 "into the shed.", "--runs-dir", "runs"], cwd=tmp_path, env=env, capture_output=True,
+                          text=True, timeout=600)
+    assert proc.returncode == 0, proc.stderr
+    (run,) = (tmp_path / "runs").iterdir()
+    proc = subprocess.run(cli + ["report", str(run)], cwd=tmp_path, env=env, capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr
+    html = (run / "report.html").read_text()
+    for section in SECTIONS:
+        assert section in html, section
+    assert "report/paths.png" in html and "shed holds 2 pumpkin" in html
+    shot = tmp_path / "garden.png"
+    dom = render(run / "report.html", shot)
+    assert 'data-images-ok="true"' in re.search(r"<body[^>]*>", dom).group(0)
+    shutil.copy(shot, Path(os.environ.get("PIPFLOW_REPORT_SHOTS", tmp_path)) / "garden-report.png")

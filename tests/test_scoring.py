@@ -6,7 +6,11 @@ import copy
 import pytest
 
 from pipflow.experiments.benchstats import aggregate_task, summarize
-from pipflow.warehouse.scoring import plan_lower_bound, score_run
+from pipflow.warehouse.domain import WarehouseDomain
+from pipflow.warehouse.scoring import plan_lower_bound
+
+#: the protocol's score of a warehouse run (pipflow.scoring.score_run with the warehouse's hooks)
+score_run = WarehouseDomain().score
 from pipflow.warehouse.simulation import simulate
 from sim_fixtures import R5_TO_S1, S1_TO_S3, build, chain, load_world, route, wh01
 

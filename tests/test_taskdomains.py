@@ -10,8 +10,9 @@ import pytest
 
 from pipflow import StepContext
 from pipflow.errors import InputError
-from pipflow.taskdomain import DEFAULT_DOMAIN, TaskDomain, pddl_domain_name
+from pipflow.taskdomain import DEFAULT_DOMAIN, Capability, TaskDomain, pddl_domain_name
 from pipflow.taskdomains import GROUP, declared_domain, domain_named, known_domains, task_domain
+from pipflow.values import Score, SimulationCore, refusal_expected
 
 REPO = Path(__file__).resolve().parent.parent
 HOUSEHOLD_WORLD = REPO / "benchmarks/household/world.yaml"
@@ -122,13 +123,12 @@ def test_the_score_steps_of_both_domains_return_one_shape():
 
 
 def test_household_scores_travel_over_the_robots_that_moved():
-    from pipflow.household.scoring import score_run
-
     home = domain_named("household").load_world(HOUSEHOLD_WORLD)
     robots = list(home["robots"])
     sim = {"executed": 1, "exe": 1.0, "final_state": {}, "tc_max": 6.0, "tc_avg": 6.0,
            "travel": {robots[0]: 6.0, robots[1]: 0.0, robots[2]: 0.0}}
-    score = score_run(home, {"in": {}, "state": {}}, schedule={"subtasks": [{"id": "s1"}]}, simulation=sim)
+    score = domain_named("household").score(home, {"in": {}, "state": {}}, schedule={"subtasks": [{"id": "s1"}]},
+                                            simulation=sim)
     assert score["tc_avg"] == 6.0 and score["tc_avg_team"] == 2.0  # TC-avg: over the robots that moved
 
 
@@ -148,14 +148,19 @@ def _run_generic_steps(tmp_path: Path, world: dict, schedule: dict, graph: dict 
     return sim, scored
 
 
+SIMULATION_CORE = tuple(SimulationCore.__annotations__)
+
+
 def test_the_generic_steps_declare_the_protocols_core():
+    """Their outputs are declared by their return types: the simulation core, and the score."""
     from pipflow.steps.world import score, simulate
-    from pipflow.taskdomain import SCORE_CORE, SIMULATION_CORE
 
     assert set(SIMULATION_CORE) <= set(simulate.outputs) and set(simulate.outputs) - set(SIMULATION_CORE) == {
         "pictures", "details"}
     assert simulate.outputs["final_state"] == "object" and simulate.outputs["tc_avg_team"] == "number"
-    assert score.outputs == SCORE_CORE
+    assert simulate.outputs["executed"] == "integer" and simulate.outputs["failures"] == "array"
+    assert set(score.outputs) == set(Score.__annotations__) and score.outputs["success"] == "boolean"
+    assert (simulate.shape, score.shape) == ("simulation", "score")
 
 
 def test_warehouse_simulation_through_the_generic_steps(tmp_path):
@@ -165,8 +170,6 @@ def test_warehouse_simulation_through_the_generic_steps(tmp_path):
     import json
 
     from pipflow.steps.world import simulate as simulate_step
-    from pipflow.taskdomain import SCORE_CORE, SIMULATION_CORE
-    from pipflow.warehouse.scoring import score_run
     from pipflow.warehouse.simulation import simulate as pybullet_run
     from sim_fixtures import load_world, wh01
 
@@ -191,18 +194,15 @@ def test_warehouse_simulation_through_the_generic_steps(tmp_path):
                       options={"animaton": True})
     saved = json.loads((tmp_path / "simulate" / "trajectories.json").read_text())
     assert set(saved) == {"trajectories", "events"} and saved["trajectories"]["robot5"]
-    assert set(scored) == set(SCORE_CORE) and scored["success"] and scored["violations"] == []
+    assert set(scored) == set(Score.__annotations__) and scored["success"] and scored["violations"] == []
     # the domain step's flat shape (final_stock) scores the same
     flat = pybullet_run(world, schedule, graph, goal)
-    assert score_run(world, goal, graph=graph, schedule=schedule, simulation=flat) == scored
+    assert domain_named("warehouse").score(world, goal, graph=graph, schedule=schedule, simulation=flat) == scored
 
 
 def test_household_simulation_through_the_generic_steps(tmp_path):
     """A household world with nothing to do: the core keys, the home's state as ``final_state``,
     the goal conditions under ``details``; scored like household.score."""
-    from pipflow.household.scoring import score_run
-    from pipflow.taskdomain import SCORE_CORE, SIMULATION_CORE
-
     world = domain_named("household").load_world(HOUSEHOLD_WORLD)
     assert world["objects"]["apple"]["in"] == "countertop"
     goal = {"in": {"countertop": ["apple"], "fridge": ["tomato"]}}  # one condition holds already
@@ -213,13 +213,14 @@ def test_household_simulation_through_the_generic_steps(tmp_path):
     # nothing executed: the condition that held from the start recalls nothing (README, "GCR")
     assert sim["gcr"] == 0.0 and not sim["goal_met"] and sim["final_state"]
     assert not scored["success"] and scored["gcr"] == 0.0
-    assert set(scored) == set(SCORE_CORE)
-    assert scored == score_run(world, goal, schedule=schedule, simulation=domain_named("household").simulate(
-        world, schedule, None, goal, log=lambda m: None))
+    assert set(scored) == set(Score.__annotations__)
+    home = domain_named("household")
+    assert scored == home.score(world, goal, schedule=schedule, simulation=home.simulate(world, schedule, None, goal,
+                                                                                       log=lambda m: None))
 
 
 def test_a_domain_result_without_the_core_is_named():
-    from pipflow.taskdomain import simulation_outputs
+    from pipflow.values import simulation_outputs
 
     with pytest.raises(TypeError, match="lacks final_state, tc_avg_team"):
         simulation_outputs({"executed": 1, "failed": 0, "failures": [], "exe": 1.0, "travel": {}, "tc_max": 0.0,
@@ -272,19 +273,89 @@ def test_seeded_starts_are_one_rule_for_every_domain():
 
 def test_every_simulate_and_score_step_declares_the_core():
     """One shape per family, for every registered step of the two families (the generic ones and
-    the domains' own): the simulation core (the warehouse's older step names the final state
-    ``final_stock``) and the score core."""
+    the domains' own), found by the family their return type declares: the simulation core
+    (the warehouse's older step also keeps the final state as ``final_stock``) and the score."""
     from pipflow.engine.registry import default_registry
-    from pipflow.taskdomain import SCORE_CORE, SIMULATION_CORE
+    from pipflow.steps.world import score, simulate
 
     steps = list(default_registry())
-    simulates = [s for s in steps if "simulate" in s.name.split(".")]
-    scores = [s for s in steps if "score" in s.name.split(".")]
+    simulates = [s for s in steps if s.shape == "simulation"]
+    scores = [s for s in steps if s.shape == "score"]
     assert {"simulate", "simulate.pybullet", "household.simulate"} <= {s.name for s in simulates}
     assert {"score", "metrics.score", "household.score"} <= {s.name for s in scores}
+    core = {k: simulate.outputs[k] for k in SIMULATION_CORE}
     for s in simulates:
-        missing = set(SIMULATION_CORE) - {"final_state"} - set(s.outputs)
-        assert not missing and ({"final_state", "final_stock"} & set(s.outputs)), (s.name, missing)
-        assert all(s.outputs.get(k) == t for k, t in SIMULATION_CORE.items() if k in s.outputs), s.name
+        assert {k: s.outputs.get(k) for k in core} == core, s.name
     for s in scores:
-        assert {k: s.outputs.get(k) for k in SCORE_CORE} == SCORE_CORE, s.name
+        assert s.outputs == score.outputs, s.name
+
+
+# ------------------------------------------------------------------ the protocol: core and capabilities
+def test_a_domain_that_leaves_out_part_of_the_core_cannot_be_made():
+    """The required core is abstract: a domain without, say, a simulation or the goal's conditions
+    is refused when it is instantiated, naming what it lacks (never a None at run time)."""
+    class Half(TaskDomain):
+        name = "half"
+
+        def load_world(self, path, *, seed=None, **options):
+            return {}
+
+    with pytest.raises(TypeError) as err:
+        Half()
+    for member in ("simulate", "goal_conditions", "read_command", "read_goal", "goal_problems", "reference"):
+        assert member in str(err.value)
+
+
+def test_capabilities_are_declared_by_mixins_and_asked_with_supports():
+    warehouse, household = domain_named("warehouse"), domain_named("household")
+    assert set(warehouse.capabilities()) == {Capability.GROUNDED_DECODING, Capability.SECOND_OPINION,
+                                             Capability.TRANSPORT_PLANNER, Capability.UNDERSTANDING,
+                                             Capability.EXECUTION}
+    assert set(household.capabilities()) == {Capability.SECOND_OPINION, Capability.UNDERSTANDING,
+                                             Capability.BENCH_TABLE, Capability.EXECUTION}
+    assert not household.supports(Capability.GROUNDED_DECODING) and not hasattr(household, "planner_params")
+
+
+def test_a_refusal_is_the_right_answer_in_one_definition():
+    assert refusal_expected({"feasible": False}) and refusal_expected({"expect": "refuse"})
+    assert not refusal_expected({}) and not refusal_expected({"feasible": True, "expect": None})
+
+
+@pytest.mark.parametrize("name", ["warehouse", "household"])
+def test_an_infeasible_task_that_was_not_refused_keeps_the_simulations_exe(name):
+    """One definition of the score in every domain: a run whose right answer was a refusal but
+    that executed fails, and its Exe is what the simulation measured (not 0, not 1)."""
+    domain = domain_named(name)
+    world = domain.load_world(WAREHOUSE_WORLD if name == "warehouse" else HOUSEHOLD_WORLD)
+    sim = {"executed": 1, "exe": 0.5, "final_state": domain.initial_state(world), "travel": {}, "failures": [],
+           "jumps": {}, "makespan": 3.0}
+    schedule = {"subtasks": [{"id": "s1"}, {"id": "s2"}]}
+    score = domain.score(world, {}, feasible=False, schedule=schedule, simulation=sim)
+    assert not score["success"] and score["exe"] == 0.5 and score["violations"] == ["infeasible command was not refused"]
+    refused = domain.score(world, {}, feasible=False, refusal="it cannot be done")
+    assert refused["success"] and refused["exe"] == 1.0 and refused["lower_bound"] is None
+
+
+def test_a_run_under_faults_is_scored_in_the_world_as_it_really_was():
+    """The bench scores a run under faults against the world as the run found it (its surprises
+    put in by the execution capability's ``as_it_was``), once in the protocol's score_bench_run:
+    a unit the records missed is not a broken conservation; the same run judged on the records is."""
+    domain = domain_named("warehouse")
+    assert domain.supports(Capability.EXECUTION)
+    world = domain.load_world(WAREHOUSE_WORLD)
+    shelf, items = next((s, i) for s, i in world["stock"].items() if i)
+    product, count = next(iter(items.items()))
+    real = {s: dict(i) for s, i in world["stock"].items()}
+    real[shelf][product] = count + 1
+    surprise = {"kind": "surprise", "surprise": {"place": shelf, "product": product, "count": count + 1,
+                                                  "records": count, "words": f"one more {product} on {shelf}"}}
+    sim = {"final_state": real, "executed": 0, "failed": 0, "failures": [], "exe": 1.0, "travel": {}, "jumps": {},
+           "makespan": 0.0}
+    task = {"goal": {shelf: {product: count + 1}}}
+    outputs = {"schedule": {"subtasks": []}, "simulation": sim}
+    as_found = domain.score_bench_run(str(WAREHOUSE_WORLD), task, {**outputs, "faults": [surprise]}, None, None)
+    assert as_found["success"], as_found["violations"]
+    on_records = domain.score_bench_run(str(WAREHOUSE_WORLD), task, outputs, None, None)
+    assert not on_records["success"]
+    assert f"{product}: {sum(int(i.get(product, 0)) for i in world['stock'].values())} units before" in \
+        " ".join(on_records["violations"])

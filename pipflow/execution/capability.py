@@ -29,7 +29,7 @@ from typing import Any, ClassVar
 from pipflow.errors import InputError, PlanningError
 from pipflow.liberrors import UNIFIED_PLANNING, library_errors
 from pipflow.pddl.common import parse
-from pipflow.taskdomain import pddl_domain_name
+from pipflow.taskdomain import Capability, pddl_domain_name, register_capability
 
 
 @dataclass
@@ -49,6 +49,7 @@ class Played:
     result: dict = field(default_factory=dict)
 
 
+@register_capability
 class ExecutionCapability:
     """Mixin for a :class:`~pipflow.taskdomain.TaskDomain` whose runs can take faults (module doc).
 
@@ -56,6 +57,7 @@ class ExecutionCapability:
     t, "drop": place or None}``: the simulation then refuses its work from ``t`` on and, when it
     carried something, puts that on the ``drop`` place at ``t``."""
 
+    capability: ClassVar[Capability] = Capability.EXECUTION
     #: the domain's own names for a state surprise (``--faults stock-surprise=1``); ``surprise``
     #: always works
     surprise_names: ClassVar[tuple[str, ...]] = ()
@@ -79,6 +81,15 @@ class ExecutionCapability:
     def apply_surprise(self, world: dict, surprise: dict) -> dict:
         """A copy of ``world`` whose state is what it really is under ``surprise``."""
         raise NotImplementedError
+
+    def as_it_was(self, world: dict, faults: list[dict] | None) -> dict:
+        """The world as a run under ``faults`` (an ``execute`` step's output) really found it:
+        every surprise in it put in (:meth:`apply_surprise`). What a bench scores such a run
+        against (the units or objects the records got wrong were never the run's to conserve)."""
+        for fault in faults or []:
+            if isinstance(fault, dict) and fault.get("kind") == "surprise" and fault.get("surprise"):
+                world = self.apply_surprise(world, fault["surprise"])
+        return world
 
     def with_state(self, world: dict, state: Any) -> dict:
         """A copy of ``world`` whose initial state is ``state`` (a :class:`Played` final state)."""

@@ -22,6 +22,7 @@ from pipflow.liberrors import UNIFIED_PLANNING, library_errors
 from pipflow.pddl.common import parse
 from pipflow.pddl.names import plan_in_world_names
 from pipflow.pddl.solver import Status, solve_problem
+from pipflow.taskdomain import Capability
 from pipflow.team.allocation import METHODS, AllocationWalk
 from pipflow.team.dependency import build_graph
 from pipflow.team.scheduling import Standing
@@ -130,10 +131,8 @@ def replan(domain: Any, world: dict, goal: Any, planning: Planning, name: str) -
     if judged.refusal:
         raise Refused(judged.refusal)
     params = planning.planner_params
-    if planning.planner == TRANSPORT_PLANNER:
-        known = domain.planner_params(world, planning.constraints)
-        if known is not None:
-            params = {**known, **(params or {})}
+    if planning.planner == TRANSPORT_PLANNER and domain.supports(Capability.TRANSPORT_PLANNER):
+        params = {**domain.planner_params(world, planning.constraints), **(params or {})}
     result = solve_problem(parsed, planning.planner, params, planning.planner_timeout)
     message = result.message
     if result.status in (Status.ERROR, Status.TIMEOUT) and planning.fallback and planning.fallback != planning.planner:

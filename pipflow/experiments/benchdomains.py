@@ -12,11 +12,11 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from pipflow.taskdomain import REFUSED_KINDS, TaskDomain
+from pipflow.taskdomain import TaskDomain
 from pipflow.taskdomains import declared_domain
 from pipflow.taskdomains import domain_named as _domain_named
 
-__all__ = ["REFUSED_KINDS", "domain_named", "domain_of"]
+__all__ = ["domain_named", "domain_of"]
 
 
 def domain_named(name: str | None) -> TaskDomain:

@@ -59,7 +59,7 @@ from pipflow.experiments.runspec import RunSpec, recorded_outputs, run_one  # no
 from pipflow.meaning import misread_cell
 from pipflow.metrics import DEFINITIONS
 from pipflow.records.compare import variants_side_by_side
-from pipflow.taskdomain import TaskDomain
+from pipflow.taskdomain import Capability, TaskDomain
 from pipflow.version import __version__
 
 RESULT_FIELDS = ["variant", "task", "seed", "status", "loop", "reader", "model", "planner", "engine", "fallback",
@@ -551,8 +551,8 @@ def markdown_table(results: dict) -> str:
     config = results.get("config") or {}
     domain = domain_named(config.get("domain"))
     faults = fault_table(results)  # runs under faults (None without)
-    table = domain.bench_table(results, Path(config["tasks"]))
-    if table is not None:  # its layout is the domain's, understanding columns included
+    if domain.supports(Capability.BENCH_TABLE):  # its layout is the domain's, understanding columns included
+        table = domain.bench_table(results, Path(config["tasks"]))  # type: ignore[attr-defined]
         return table + (f"\n\n{faults}" if faults else "")
     lines = []
     for variant in results["variants"]:

@@ -16,11 +16,13 @@ import yaml
 from pipflow.engine.executor import RunOptions
 from pipflow.engine.expr import resolve
 from pipflow.engine.runner import run_workflow
+from pipflow.engine.status import RunStatus
 from pipflow.engine.store import read_json
 from pipflow.errors import UserError
 from pipflow.experiments.benchdomains import domain_named
 from pipflow.experiments.faultstats import fault_columns
 from pipflow.meaning import misread_executed
+from pipflow.values import NOT_UNDERSTOOD, ambiguous
 
 
 #: the outputs a run under faults leaves even when it stops early (what it did, what went wrong)
@@ -54,28 +56,28 @@ def run_one(spec: RunSpec) -> dict:
     try:
         result = run_workflow(spec.workflow, inputs, runs_dir=spec.runs_dir, inputs_from_text=True,
                               options=RunOptions(use_cache=spec.use_cache))
-        row["status"], row["run_dir"] = result.status, str(result.run_dir)
+        row["status"], row["run_dir"] = RunStatus(result.status).value, str(result.run_dir)
         row["error_kind"] = type(result.exception).__name__ if result.exception is not None else None
         row["user_error"] = isinstance(result.exception, UserError)
         outputs = result.outputs or {}
-        if result.status == "refused":
+        if result.status is RunStatus.REFUSED:
             refusal = result.error
-        elif result.status != "succeeded":
+        elif result.status is not RunStatus.SUCCEEDED:
             error = result.error
         metrics = read_json(result.run_dir / "metrics.json", {})
         row["stage_seconds"] = metrics.get("step_seconds", {})
     except Exception as err:  # an invalid workflow or input: the run never started
         row["status"], error = "error", f"{type(err).__name__}: {err}"
         row["error_kind"], row["user_error"] = type(err).__name__, isinstance(err, UserError)
-    if task.get("expect") == "refuse" and error is not None and row.get("error_kind") == "TranslationError":
+    if ambiguous(task) and error is not None and row.get("error_kind") == NOT_UNDERSTOOD:
         refusal, error = error, None  # the right answer to an ambiguous command: refuse, quoting the words
     domain = domain_named(task.get("domain"))
-    if row["status"] != "succeeded" and row.get("run_dir") and spec.inputs.get("faults"):
+    if row["status"] != RunStatus.SUCCEEDED and row.get("run_dir") and spec.inputs.get("faults"):
         # a run a fault stopped (refused, failed) is scored on what it carried out before it stopped
         outputs = {**recorded_outputs(Path(row["run_dir"]), FAULT_OUTPUTS), **outputs}
     row.update(domain.score_bench_run(spec.world_path, task, outputs, refusal, error))
     row.update(fault_columns(outputs, row["status"]))
-    read = outputs if row["status"] == "succeeded" or not row.get("run_dir") else \
+    read = outputs if row["status"] == RunStatus.SUCCEEDED or not row.get("run_dir") else \
         recorded_outputs(Path(row["run_dir"]), ("goal", "constraints", "loop", "reader", "planner", "engine",
                                                 "planner_fallback"))
     # which refinement loop ran (pip-llm, checked) and whose reading the goal was (offline, model)
@@ -92,7 +94,7 @@ def run_one(spec: RunSpec) -> dict:
         row["status"], row["error_kind"] = "failed", "PlannerFallback"
     if row.get("run_dir") and not writes_goal(Path(row["run_dir"])):  # a baseline: it plans without a goal
         judged = {"understood": None, "misread": None, "understanding": "not measured: the workflow writes no goal"}
-    elif row["status"] == "succeeded" and "goal" in read and read["goal"] is None:
+    elif row["status"] == RunStatus.SUCCEEDED and "goal" in read and read["goal"] is None:
         # a workflow whose model states no goal but writes the plan itself (the w/o D ablation):
         # there is no reading to compare with the gold, only the outcome (SR)
         judged = {"understood": None, "misread": None, "understanding": "not measured: the run states no goal"}

@@ -1,4 +1,6 @@
-"""Household scoring: final-state conditions, one run's score, and the bench hooks.
+"""Household scoring's facts: final-state conditions, RU's reference, task files and the bench
+table. The score itself is the protocol's, the same for every domain
+(:func:`pipflow.scoring.score_run`).
 
 A run succeeds when, judged on the simulation's final state (never on what the plan claims),
 every ground-truth condition holds (objects in receptacles, object states, category counts),
@@ -14,8 +16,8 @@ no subtask was refused, and no robot's legs jump. Metrics as in the paper's AI2-
   travel (the bench averages them over successful runs that executed, not over right refusals).
 
 What ``pipflow bench`` uses for task files with ``domain: household``, through the domain object
-(:class:`pipflow.household.domain.HouseholdDomain`): :func:`load_tasks`, :func:`score_bench_run`,
-:func:`understanding`, :func:`bench_table`.
+(:class:`pipflow.household.domain.HouseholdDomain`): :func:`load_tasks`, :func:`condition_values`,
+:func:`reference_actions`, :func:`bench_table`.
 """
 from __future__ import annotations
 
@@ -24,11 +26,10 @@ from typing import Any
 
 from pipflow.errors import Diagnostic, TaskFileError
 from pipflow.household.problem import CONDITIONS
-from pipflow.household.meaning import canonical, goal_difference
 from pipflow.household.reference import optimal_length
-from pipflow.household.world import initial_state, load_world, members, select_team, team_members
-from pipflow.meaning import judge, misread_cell, rules_as_written, rules_difference
-from pipflow.metrics import goal_condition_recall, travel_costs
+from pipflow.household.world import initial_state, load_world, members, team_members
+from pipflow.meaning import misread_cell
+from pipflow.metrics import goal_condition_recall
 from pipflow.suggest import did_you_mean
 from pipflow.worldfile import parse_mapping, read_world_file
 
@@ -69,15 +70,14 @@ def check_conditions(world: dict, state: dict, goal: dict) -> tuple[int, int, li
 
 
 def recall(world: dict, state: dict, goal: dict) -> float:
-    """GCR of the final ``state`` (:func:`pipflow.metrics.goal_condition_recall`): the share of
-    the goal's conditions that hold, where those that held in the world's initial state count
-    only once the run achieved one it had to change."""
-    start = [ok for ok, _ in condition_values(world, _initial(world), goal)]
-    end = [ok for ok, _ in condition_values(world, state, goal)]
-    return goal_condition_recall(start, end)
+    """GCR of ``state`` (:func:`pipflow.metrics.goal_condition_recall`), the conditions at the
+    world's initial state for the start."""
+    return goal_condition_recall([ok for ok, _ in condition_values(world, initial(world), goal)],
+                                 [ok for ok, _ in condition_values(world, state, goal)])
 
 
-def _initial(world: dict) -> dict:
+def initial(world: dict) -> dict:
+    """The world's state before anything moved, in the form of the simulation's final state."""
     s = initial_state(world)
     return {"at": s["at"], **{k: sorted(v) for k, v in s.items() if k != "at"}}
 
@@ -98,7 +98,7 @@ def relaxed_actions(world: dict, goal: dict) -> int:
     closed container that must be entered, a carry to a sink or heater for a wash or heat of an
     object that is elsewhere. It leaves out what a plan does around these (opening the container
     an object is taken from, carrying it back), so it is only RU's fallback reference."""
-    s = _initial(world)
+    s = initial(world)
     props = {n: e["properties"] for n, e in {**world["places"], **world["objects"]}.items()}
     n, entered = 0, set()
     for place, items in (goal.get("in") or {}).items():
@@ -125,44 +125,6 @@ def relaxed_actions(world: dict, goal: dict) -> int:
         if p in world["places"] and "openable" in props[p] and p not in s["open"]:
             n += 1 + (1 if "closed" in (goal.get("state") or {}).get(p, []) else 0)
     return n
-
-
-def score_run(world: dict, goal: dict, *, feasible: bool = True, graph: dict | None = None,
-              schedule: dict | None = None, simulation: dict | None = None, refusal: str | None = None,
-              error: str | None = None) -> dict:
-    """Score one household run (``world``: the team's world). Keys as the outputs of step ``metrics.score``.
-
-    A task marked ``feasible: false`` succeeds exactly when the run was refused with a reason and
-    nothing was planned or executed (a refusal is the right answer: robots must not move)."""
-    sim = simulation or {}
-    planned = len((schedule or {}).get("subtasks", []))
-    executed = int(sim.get("executed", 0))
-    travel = travel_costs(sim.get("travel") or {})
-    if not feasible:
-        ok = bool(refusal and str(refusal).strip()) and executed == 0 and planned == 0
-        violations = [] if ok else (["infeasible command was not refused"] if not refusal else
-                                    ["refusal has no reason"] if not str(refusal).strip() else ["actions were executed"])
-        return {"planned": planned, "executed": executed, "refused": bool(refusal), "error": refusal or error or None,
-                "makespan": float(sim.get("makespan", 0.0) or 0.0), "lower_bound": None, "success": ok,
-                "goal_met": ok, "gcr": 1.0 if ok else 0.0, "exe": 1.0 if ok else float(sim.get("exe", 0.0) or 0.0),
-                "ru": 1.0 if ok else 0.0, **travel, "violations": violations}
-    base = {"planned": planned, "executed": executed, "refused": bool(refusal),
-            "error": refusal or error or None, "makespan": float(sim.get("makespan", 0.0) or 0.0)}
-    if simulation is None:  # refused or failed before execution: nothing changed, nothing recalled
-        why = "refused a feasible command" if refusal else f"run failed: {error}" if error else "no simulation"
-        return {**base, "lower_bound": None, "success": False, "goal_met": False,
-                "gcr": recall(world, _initial(world), goal), "exe": 0.0, "ru": 0.0, **travel_costs({}),
-                "violations": [why]}
-    final = sim.get("final_state") or {}
-    met, total, unmet = check_conditions(world, final, goal)
-    violations = [f"goal: {u}" for u in unmet]
-    violations += [f"{f['subtask']} {f['action']} refused: {'; '.join(f['reasons'])}" for f in sim.get("failures") or []]
-    violations += [f"{r} jumps {j['metres']:g} m" for r, js in (sim.get("jumps") or {}).items() for j in js]
-    reference, _ = reference_actions(world, goal)
-    ru = min(1.0, reference / planned) if planned else (1.0 if reference == 0 else 0.0)
-    return {**base, "lower_bound": reference, "success": not violations, "goal_met": met == total,
-            "gcr": recall(world, final, goal), "exe": float(sim.get("exe", 0.0)), "ru": ru, **travel,
-            "violations": violations}
 
 
 # ------------------------------------------------------------------------------------------
@@ -241,38 +203,6 @@ def load_tasks(path: str | Path) -> dict:
         raise TaskFileError(diags, f"invalid household task file {p} ({len(diags)} problem(s))")
     return {"path": str(p), "world_path": str(world_path), "world": world, "domain": "household",
             "workflow": data.get("workflow", "household"), "tasks": tasks}
-
-
-def score_bench_run(world_path: str, task: dict, outputs: dict, refusal: str | None, error: str | None,
-                    adjust: Any = None) -> dict:
-    """Score one bench run of a household task (the team's world, the task's ground truth); the
-    row also says how RU's reference was found (``reference``). ``adjust``: the world as the run
-    really found it (a run under faults: its surprises)."""
-    world = select_team(load_world(world_path), task.get("team"))
-    if adjust is not None:
-        world = adjust(world)
-    feasible = task.get("feasible", True) is not False and task.get("expect") != "refuse"  # refusing is right
-    goal = task.get("goal") or {}
-    row = score_run(world, goal, feasible=feasible, graph=outputs.get("graph"), schedule=outputs.get("schedule"),
-                    simulation=outputs.get("simulation"), refusal=refusal, error=error)
-    if row.get("lower_bound") is not None:
-        row["reference"] = reference_actions(world, goal)[1]  # computed once per goal: remembered
-    return row
-
-
-def understanding(task: dict, outputs: dict, status: str, error_kind: str | None,
-                  world: dict | None = None, rule_fields: dict[str, list[str]] | None = None) -> dict:
-    """Whether a bench run read the household command as its gold (:func:`pipflow.meaning.judge`):
-    the goals compared by the final states of ``world`` they accept
-    (:func:`pipflow.household.meaning.goal_difference`; without a world, as written), the robot
-    rules by what they forbid (``rule_fields``: the names each rule field takes)."""
-    if world is None:
-        return judge(task, outputs, status, error_kind, rule_difference=rules_as_written,
-                     goal_difference=lambda gold, run: None if canonical(gold or {}) == canonical(run)
-                     else f"goal {canonical(run)}, gold {canonical(gold or {})}")
-    return judge(task, outputs, status, error_kind,
-                 goal_difference=lambda gold, run: goal_difference(world, gold or {}, run),
-                 rule_difference=lambda gold, run: rules_difference(gold, run, world["robots"], rule_fields or {}))
 
 
 def _fmt(v: Any) -> str:

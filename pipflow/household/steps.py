@@ -10,10 +10,33 @@ The domain (its parser, UP, pybullet) is imported inside the step functions on p
 steps or running a workflow that does not use them stays fast."""
 from __future__ import annotations
 
-from typing import Annotated
+from typing import Annotated, Any, TypedDict
 
 from pipflow import Doc, PathStr, StepContext, step
-from pipflow.taskdomain import SCORE_CORE, report_score
+from pipflow.engine.step import shape
+from pipflow.taskdomain import report_score, report_simulation
+from pipflow.values import READING, SIMULATION, Score, SimulationCore, WorldOutputs
+
+
+@shape(SIMULATION)
+class HouseholdSimulation(SimulationCore):
+    """The outputs of ``household.simulate``: the simulation core (``final_state``: where each
+    object is and its states), the goal's conditions met / total / unmet, the pictures drawn."""
+
+    conditions: dict[str, Any]
+    pictures: list[str]
+
+
+@shape(READING)
+class HouseholdReading(TypedDict):
+    """The outputs of ``household.problem``: the problem, the goal as the command says it, the
+    goal with counts resolved to objects (what the problem asks), rules, errors."""
+
+    problem: str
+    goal: dict
+    concrete: dict
+    constraints: list
+    errors: list
 
 
 def _domain():
@@ -24,13 +47,13 @@ def _domain():
 
 @step("household.load",
       doc="Load a household world (places, objects, categories, robots), validated with every problem located; keep the task's team.",
-      outputs={"world": "object"}, cacheable=True)
+      cacheable=True)
 def load(
     ctx: StepContext,
     path: Annotated[PathStr, Doc("household world YAML file, relative to the workflow file")],
     team: Annotated[str | None, Doc("a team of the world, or robot names 'a,b,c' (none: every robot)")] = None,
     seed: Annotated[int | None, Doc("vary the robots' start positions reproducibly (none: as in the file)")] = None,
-) -> dict:
+) -> WorldOutputs:
     """Raises WorldError (exit 2) listing each problem with file:line:col."""
     world = _domain().load_world(ctx.resolve_path(path), seed=seed, team=team)
     ctx.log(f"household world {world['name']}: {len(world['places'])} places, {len(world['objects'])} objects, "
@@ -40,7 +63,6 @@ def load(
 
 @step("household.problem",
       doc="Translate a household command (offline, deterministic) into goal conditions and the team-level PDDL problem.",
-      outputs={"problem": "string", "goal": "object", "concrete": "object", "constraints": "array", "errors": "array"},
       cacheable=True)
 def problem(
     ctx: StepContext,
@@ -49,7 +71,7 @@ def problem(
     domain: Annotated[PathStr, Doc("team-level PDDL domain (its name goes into the problem)")],
     feedback: Annotated[list | None, Doc("previous round's messages (the offline translator is deterministic "
                                          "and ignores them)")] = None,
-) -> dict:
+) -> HouseholdReading:
     """``goal`` keeps the command's conditions (counts included) for judging; ``concrete`` has the
     counts resolved to objects, which is what the problem asks for. Untranslatable commands raise
     TranslationError; impossible ones (slice a mug) raise Refusal with the reason."""
@@ -60,10 +82,6 @@ def problem(
 
 @step("household.simulate",
       doc="Execute a schedule in the home: preconditions and coalition skills checked, state updated, travel measured, pybullet pictures.",
-      outputs={"final_state": "object", "executed": "integer", "failed": "integer", "failures": "array",
-               "exe": "number", "travel": "object", "tc_max": "number", "tc_avg": "number", "tc_avg_team": "number",
-               "goal_met": "boolean",
-               "gcr": "number", "conditions": "object", "jumps": "object", "makespan": "number", "pictures": "array"},
       version="2")  # 2: tc_avg over the robots that moved, tc_avg_team; GCR of pipflow.metrics
 def simulate(
     ctx: StepContext,
@@ -72,19 +90,16 @@ def simulate(
     graph: Annotated[dict | None, Doc("output of graph.dependencies (skills and route per subtask)")] = None,
     goal: Annotated[dict | None, Doc("goal conditions to judge the final state against")] = None,
     snapshots: Annotated[bool, Doc("save pybullet pictures of the start and the end")] = False,
-) -> dict:
+) -> HouseholdSimulation:
     out_dir = ctx.artifact_path("snapshot_1_start.png").parent if snapshots else None
     result = _domain().simulate(world, schedule, graph, goal, snapshots=snapshots, out_dir=out_dir, log=ctx.log)
-    ctx.metrics.update({k: result[k] for k in ("exe", "tc_max", "tc_avg", "tc_avg_team", "gcr")})
-    ctx.log(f"executed {result['executed']}/{len(schedule.get('subtasks', []))}, goal conditions "
-            f"{result['conditions']['met']}/{result['conditions']['total']}")
-    return result
+    ctx.log(f"goal conditions {result['conditions']['met']}/{result['conditions']['total']}")
+    return report_simulation(ctx, result, schedule)
 
 
 @step("household.score",
       doc="Score a household run's final state against ground-truth conditions (SR, GCR, Exe, RU, TC); "
-          "the outputs of metrics.score, flat.",
-      outputs=dict(SCORE_CORE))
+          "the outputs of metrics.score, flat.")
 def score(
     ctx: StepContext,
     world: Annotated[dict, Doc("output of household.load")],
@@ -92,7 +107,7 @@ def score(
     schedule: Annotated[dict | None, Doc("output of schedule")] = None,
     graph: Annotated[dict | None, Doc("output of graph.dependencies")] = None,
     simulation: Annotated[dict | None, Doc("output of household.simulate")] = None,
-) -> dict:
+) -> Score:
     """The same flat outputs as ``metrics.score`` (one shape per family), so a workflow or the
     bench reads ``success``/``gcr`` the same way in either domain."""
     return report_score(ctx, _domain().score(world, goal, graph=graph, schedule=schedule, simulation=simulation))

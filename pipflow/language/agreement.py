@@ -37,7 +37,7 @@ from dataclasses import dataclass, field
 from typing import Any, Callable
 
 from pipflow.errors import InputError, Refusal, TranslationError
-from pipflow.language.offline import offline
+from pipflow.taskdomains import task_domain
 
 OFFLINE = "offline reading"
 WORDS = "command's words"
@@ -95,13 +95,13 @@ def remembered_reading(command: str, world: dict, read: Callable[[str, dict], An
 
 
 def _offline_goal(command: str, world: dict) -> dict:
-    got = offline(command, world)
-    return {"goal": got["goal"], "constraints": got["constraints"], "explanation": got.get("explanation") or []}
+    got = task_domain(world).read_command(command, world)  # the reading alone: no problem to write
+    return {"goal": got.goal, "constraints": list(got.constraints), "explanation": got.explanation or []}
 
 
 def offline_reading(command: str, world: dict) -> tuple[str, Any]:
     """The offline parser's reading of ``command`` through the world's task domain
-    (:func:`pipflow.language.offline.offline`): ``("read", {"goal", "constraints",
+    (:meth:`pipflow.taskdomain.TaskDomain.read_command`): ``("read", {"goal", "constraints",
     "explanation"})``, ``("refused", reason)`` or ``("unread", why)``."""
     return remembered_reading(command, world, _offline_goal)
 

@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from pipflow.taskdomain import Grounding
+from pipflow.taskdomain import GroundedDecoding
 
 #: characters per token of PDDL and JSON for small models' tokenizers (names split into word and
 #: digits, every parenthesis a token): measured 2.88 (PDDL) and 2.61 (grounded JSON) on SmolLM2-135M
@@ -48,10 +48,11 @@ def grounded_budget(goal_items: int, rules: int) -> int:
     return max(GROUNDED_FLOOR, 2 * (max(goal_items, 2) * ITEM_TOKENS + max(rules, 2) * RULE_TOKENS) + GROUNDED_MARGIN)
 
 
-def answer_budget(world: dict, grounding: Grounding | None, example: str | None, reading: Any = None) -> int:
-    """The ``max_tokens`` of one call: a grounded answer's (``grounding``, the world's task
-    domain's) from the size its domain expects (from the offline reading when the parser read the
-    command, else from the world), a free answer's from the example problem."""
+def answer_budget(world: dict, grounding: GroundedDecoding | None, example: str | None, reading: Any = None) -> int:
+    """The ``max_tokens`` of one call: a grounded answer's (``grounding``: the world's task
+    domain, when the answer is grounded) from the size its domain expects
+    (:meth:`~pipflow.taskdomain.GroundedDecoding.answer_size`: from the offline reading when the
+    parser read the command, else from the world), a free answer's from the example problem."""
     if grounding is not None:
         return grounded_budget(*grounding.answer_size(world, reading if isinstance(reading, dict) else None))
     return free_budget(example or "")

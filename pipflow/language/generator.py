@@ -30,7 +30,7 @@ from pipflow.language.prompting import render
 from pipflow.pddl.common import parse
 from pipflow.pddl.debugger import unclosed_section
 from pipflow.pddl.size import expected_size, size_issues
-from pipflow.taskdomain import TaskDomain
+from pipflow.taskdomain import Capability, TaskDomain
 from pipflow.taskdomains import task_domain
 
 #: who reads the command: ``model`` (every command, the paper's way), or ``offline-first`` (the
@@ -62,16 +62,15 @@ def grounding_method(model: str, api_base: str | None) -> str:
     return "gbnf" if model.startswith("local/") or api_base else "json_schema"
 
 
-def request_extra(method: str, world: dict) -> dict[str, Any]:
-    """The request fields that constrain decoding (the world's domain's grounding); part of the
-    cache key."""
-    domain = task_domain(world)
-    ground = domain.grounding
-    if ground is None:
+def request_extra(method: str, world: dict, domain: TaskDomain | None = None) -> dict[str, Any]:
+    """The request fields that constrain decoding (the world's domain's grounding: ``domain``,
+    when the caller has it already); part of the cache key."""
+    domain = domain or task_domain(world)
+    if not domain.supports(Capability.GROUNDED_DECODING):
         raise InputError(f"grounded decoding is not available for {domain.name} worlds")
     if method == "gbnf":
-        return {"extra_body": {"grammar": ground.gbnf(world)}}
-    return {"response_format": ground.response_format(world)}
+        return {"extra_body": {"grammar": domain.grounding_gbnf(world)}}  # type: ignore[attr-defined]
+    return {"response_format": domain.grounding_schema(world)}  # type: ignore[attr-defined]
 
 
 @dataclass(frozen=True)
@@ -127,15 +126,15 @@ def generate(
     if loop.reader not in READERS:
         raise InputError(f"reader {loop.reader!r}: expected one of {', '.join(READERS)}")
     if model == "offline":
-        return {**offline(command, world, domain_text, record.save), "reader": "offline"}
+        return {**offline(command, world, domain_text, record.save, domain), "reader": "offline"}
     if loop.reader == "offline-first":
         state, why = offline_reading(command, world)
         if state != "unread":  # read, or refused as impossible: the parser's word stands
-            return {**offline(command, world, domain_text, record.save), "reader": "offline"}
+            return {**offline(command, world, domain_text, record.save, domain), "reader": "offline"}
         record.log(f"offline-first: the parser does not read the command ({why}); asking {model}")
     if not isinstance(command, str) or not command.strip():
         raise InputError("command must be a non-empty string")
-    if call.grounded and domain.grounding is None:
+    if call.grounded and not domain.supports(Capability.GROUNDED_DECODING):
         raise InputError(f"grounded decoding is not available for {domain.name} worlds yet: run without "
                          "grounded (the debugger checks every name against the world)")
     feedback = [str(m) for m in (loop.feedback or []) if str(m).strip()]
@@ -151,8 +150,8 @@ def generate(
         if call.grounded:
             state, got = offline_reading(command, world)
             reading = got if state == "read" else None
-        max_tokens = answer_budget(world, domain.grounding if call.grounded else None, example, reading)
-    extra = request_extra(grounding_method(model, call.api_base), world) if call.grounded else {}
+        max_tokens = answer_budget(world, domain if call.grounded else None, example, reading)  # type: ignore[arg-type]
+    extra = request_extra(grounding_method(model, call.api_base), world, domain) if call.grounded else {}
     if not call.grounded:
         extra = {**extra, "stop": list(FREE_STOPS)}
     params = {"temperature": sent.temperature, "max_tokens": max_tokens, **extra}
@@ -209,9 +208,9 @@ def _read_answer(text: str, world: dict, grounded: bool, domain_text: str, domai
     """Problem, goal (grounded, or read back from the problem by the domain), constraints and
     errors of one answer. A problem that declares far more than a problem of this world holds
     (``example``, :mod:`pipflow.pddl.size`) is not parsed: the errors say what to leave out."""
-    if grounded and domain.grounding is not None:  # the answer is an order: checked, resolved, written
+    if grounded and domain.supports(Capability.GROUNDED_DECODING):  # the answer is an order: checked, resolved, written
         try:
-            return domain.grounding.read(text, world)
+            return domain.read_grounded(text, world)  # type: ignore[attr-defined]
         except ParseIssue as issue:
             return {"problem": "", "goal": None, "constraints": [], "errors": [str(issue)]}
     errors, problem, constraints = [], "", []
@@ -224,7 +223,8 @@ def _read_answer(text: str, world: dict, grounded: bool, domain_text: str, domai
         errors += too_large
         problem = ""
     try:
-        constraints = validate_constraints(extract_constraints(text, domain.rule_fields), world, domain.rule_fields)
+        constraints = validate_constraints(extract_constraints(text, domain.rule_fields), world, domain.rule_fields,
+                                           domain=domain)
     except ParseIssue as issue:
         errors.append(str(issue))
     out = {"problem": problem, "goal": None, "constraints": constraints, "errors": errors}

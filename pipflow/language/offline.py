@@ -9,16 +9,14 @@ from __future__ import annotations
 
 from typing import Any, Callable
 
+from pipflow.taskdomain import TaskDomain
 from pipflow.taskdomains import task_domain
-
-NO_USAGE: dict[str, Any] = {"calls": 0, "cached": False, "prompt_tokens": 0, "completion_tokens": 0,
-                            "total_tokens": 0, "latency_s": 0.0, "cost_usd": 0.0}
 
 
 def offline(command: str, world: dict, domain_text: str = "",
-            save: Callable[[str, Any], Any] | None = None) -> dict[str, Any]:
-    """Model ``offline``: the command read by the world's task domain
-    (:meth:`pipflow.taskdomain.TaskDomain.read_offline`), its goal written as PDDL. ``order``
-    is the typed meaning where the domain has one, ``explanation`` the resolver's arithmetic in
-    plain words, for the run summary to echo before robots move."""
-    return task_domain(world).read_offline(command, world, domain_text, save)
+            save: Callable[[str, Any], Any] | None = None, domain: TaskDomain | None = None) -> dict[str, Any]:
+    """Model ``offline``: the command read by the world's task domain (``domain``, when the caller
+    has it already; :meth:`pipflow.taskdomain.TaskDomain.read_offline`), its goal written as PDDL.
+    ``order`` is the typed meaning where the domain has one, ``explanation`` the resolver's
+    arithmetic in plain words, for the run summary to echo before robots move."""
+    return (domain or task_domain(world)).read_offline(command, world, domain_text, save)

@@ -12,6 +12,7 @@ import math
 import re
 from typing import Any
 
+from pipflow.taskdomain import TaskDomain
 from pipflow.taskdomains import task_domain
 
 _PROBLEM_START = re.compile(r"\(\s*define\s*\(\s*problem\b", re.IGNORECASE)
@@ -199,12 +200,15 @@ def extract_constraints(text: str, fields: tuple[str, ...] | None = None) -> lis
 
 
 def validate_constraints(rules: list[Any], world: dict | None = None,
-                         fields: tuple[str, ...] | None = None) -> list[dict[str, Any]]:
+                         fields: tuple[str, ...] | None = None, domain: TaskDomain | None = None) -> list[dict[str, Any]]:
     """Check each rule's shape (and, given a world, its names); return them normalized.
     ``fields``: the keys a rule may narrow by (None: the world's task domain's
-    :attr:`~pipflow.taskdomain.TaskDomain.rule_fields`; without a world, the default domain's)."""
+    :attr:`~pipflow.taskdomain.TaskDomain.rule_fields`; without a world, the default domain's);
+    ``domain``: the world's task domain, when the caller has it already."""
+    if domain is None:
+        domain = task_domain(world)
     if fields is None:
-        fields = task_domain(world).rule_fields
+        fields = domain.rule_fields
     out = []
     for n, rule in enumerate(rules, 1):
         where = f"constraint {n}"
@@ -228,14 +232,14 @@ def validate_constraints(rules: list[Any], world: dict | None = None,
                     raise ParseIssue(f"{where}: \"{key}\" must be a name, got {json.dumps(rule[key])}")
                 clean[key] = rule[key]
         if world is not None:
-            _check_names(where, clean, world)
+            _check_names(where, clean, world, domain)
         out.append(clean)
     return out
 
 
-def _check_names(where: str, rule: dict[str, Any], world: dict) -> None:
+def _check_names(where: str, rule: dict[str, Any], world: dict, domain: TaskDomain) -> None:
     kind = "only" if "only" in rule else "never"
-    names = task_domain(world).rule_names(world)  # field -> (its names in this world, what they are)
+    names = domain.rule_names(world)  # field -> (its names in this world, what they are)
     pools = {kind: world.get("robots", {}), **{key: pool for key, (pool, _) in names.items()}}
     what = {kind: "robot", **{key: label for key, (_, label) in names.items()}}
     for key, pool in pools.items():

@@ -10,6 +10,7 @@ import hashlib
 import threading
 from collections import OrderedDict
 from contextlib import contextmanager
+from fractions import Fraction
 from functools import lru_cache
 from importlib.metadata import entry_points
 from pathlib import Path
@@ -161,3 +162,20 @@ def goal_atoms(problem: Any) -> list[Any]:
     ``true`` an empty ``(and)`` parses to. A domain's reader uses it to tell a goal that asks for
     nothing (a model that copied its example unchanged) from one that asks for something."""
     return [g for g in goal_conditions(problem) if not (g.is_bool_constant() and g.bool_constant_value())]
+
+
+def fluent_call(node: Any) -> tuple[str, tuple[str, ...]] | None:
+    """``(name, (object names...))`` of a fluent expression such as ``(stored shed tomato)``;
+    None for any other node. How a domain reads the goal and initial state of a parsed problem."""
+    if node.is_fluent_exp():
+        return node.fluent().name, tuple(a.object().name for a in node.args)
+    return None
+
+
+def number_value(node: Any) -> int | None:
+    """The whole number a constant node states (``3``, ``3.0``); None for a fraction or any other
+    node (a count of units is whole)."""
+    if node.is_int_constant() or node.is_real_constant():
+        v = Fraction(str(node.constant_value()))
+        return int(v) if v.denominator == 1 else None
+    return None

@@ -30,6 +30,7 @@ from pipflow.liberrors import SCIP, UNIFIED_PLANNING, library_errors
 from pipflow.pddl.common import PLANNERS, environment
 from pipflow.pddl.convert import plan_to_data
 from pipflow.pddl.java import ensure_java
+from pipflow.suggest import closest
 
 DEFAULT_ENGINE = "pipflow-transport"
 JAVA_ENGINES = ("enhsp",)
@@ -93,9 +94,7 @@ def check_engine(engine: str) -> None:
     are: a misspelt planner must never be replaced silently by another one."""
     known = planner_names()
     if engine not in known:
-        import difflib
-
-        close = difflib.get_close_matches(str(engine), known, n=1)
+        close = closest(str(engine), known, n=1)
         stale = "" if any(True for _ in entry_points(group=PLANNERS)) else (
             f" (none registered in the entry-point group {PLANNERS}: an install older than its pyproject.toml; "
             "reinstall pipflow, e.g. pip install -e .)")

@@ -12,10 +12,14 @@ full or read-only disk is a user error naming it.
 A small inline script marks ``<body data-images-ok="true">`` once every image has loaded with a
 non-zero size, so a headless browser can check the page really renders its pictures.
 
-Run directory (engine/store.py): ``run.json`` (or ``status.json``), ``inputs.json``,
-``outputs.json``, ``steps/<id>/outputs.json`` and ``steps/<id>/artifacts/*``. Steps are found by
-what they output (``plan``, ``graph``, ``schedule``, ``final_stock``, ``violations``), not by id,
-so any workflow's record can be reported.
+Run directory (engine/store.py): ``run.json``, ``inputs.json``, ``outputs.json``,
+``events.jsonl``, ``steps/<id>/outputs.json`` and ``steps/<id>/artifacts/*``. Steps are found by
+the family of outputs they declare (the ``shape`` of :mod:`pipflow.values` their start event
+records: world, plan, graph, schedule, simulation, score...), never by id nor by the keys of what
+they returned, so any workflow's record of any task domain is reported with the same sections;
+a record made before shapes were recorded is read through the registry's declaration of the
+step it used. Where the report reads a domain's values (the floor plan, the goal's conditions
+in the final state) it asks the world's task domain.
 
 Bench directory: ``results.json`` with ``{"summary": {...}, "tasks": [{"id", "runs", "sr", "gcr",
 "exe", "ru", "tc_max", "tc_avg", "error"}], "variants"?: [{"name", "summary", "tasks"}], ...}`` and,
@@ -32,11 +36,13 @@ import re
 from pathlib import Path
 from typing import Any
 
-from pipflow import pictures
+from pipflow import pictures, values
+from pipflow.engine.registry import default_registry
+from pipflow.engine.runner import install_report_writer
+from pipflow.engine.status import RunStatus
 from pipflow.engine.store import shown_status
 from pipflow.engine.writes import make_dirs, write_file
-from pipflow.errors import InputError, UserError
-from pipflow.goalcounts import describe, holds, is_bound, value_problems
+from pipflow.errors import InputError, PipflowError, UserError
 from pipflow.meaning import misread_cell
 from pipflow.metrics import upgrade_travel_keys
 from pipflow.records.benchread import BY_KEY, ROW_KEY, Bench, fmt_interval, fmt_value, read_bench, task_commands, task_fields
@@ -45,6 +51,7 @@ from pipflow.records.matrix import matrix_html, relative_link
 from pipflow.records.replay import replay_section
 from pipflow.taskdomain import plain_words
 from pipflow.taskdomains import domain_named, task_domain
+from pipflow.team.trajectory import planned_paths
 
 _CHECK_SCRIPT = """<script>
 window.addEventListener('load', function () {
@@ -100,7 +107,7 @@ def write_report(directory: str | Path, output: str | Path | None = None) -> Pat
     when the page lies elsewhere; a page written elsewhere writes nothing into the record."""
     d = Path(directory)
     is_bench = (d / "results.json").is_file()
-    if not is_bench and not ((d / "steps").is_dir() or (d / "run.json").is_file() or (d / "status.json").is_file()):
+    if not is_bench and not ((d / "steps").is_dir() or (d / "run.json").is_file()):
         raise InputError(f"{d}: neither a run directory (steps/, run.json) nor a bench directory (results.json)")
     out, root = _page_path(d, output)
     pics = _Pictures(root / "report" if root is not None and out.parent == root else out.parent / f"{out.stem}_files",
@@ -204,58 +211,86 @@ def _steps(d: Path) -> list[tuple[str, Path, dict]]:
     return out
 
 
-def _find(steps, test) -> tuple[str, Path, dict] | None:
-    hits = [s for s in steps if test(s[2])]
+def _events(d: Path) -> list[dict]:
+    """The readable events of a run's log (a torn or damaged line is skipped)."""
+    try:
+        lines = (d / "events.jsonl").read_text(encoding="utf-8", errors="replace").splitlines()
+    except OSError:
+        return []
+    out = []
+    for line in lines:
+        try:
+            event = json.loads(line)
+        except json.JSONDecodeError:
+            continue
+        if isinstance(event, dict):
+            out.append(event)
+    return out
+
+
+def _shapes(d: Path) -> dict[str, str]:
+    """The family of outputs each step of the record declared (its start event's ``shape``); for a
+    step whose event has none (a record made before they were recorded), the declaration of the
+    step it used (``uses``), as the registry holds it."""
+    shapes: dict[str, str] = {}
+    uses: dict[str, str] = {}
+    for e in _events(d):
+        step = e.get("step")
+        if e.get("event") in ("start", "skip") and isinstance(step, str):
+            if isinstance(e.get("shape"), str):
+                shapes[step] = e["shape"]
+            elif isinstance(e.get("uses"), str):
+                uses[step] = e["uses"]
+    unknown = {s: u for s, u in uses.items() if s not in shapes}
+    if unknown:
+        registry = default_registry()
+        for step, name in unknown.items():
+            declared = registry.get(name)
+            if declared is not None and declared.shape:
+                shapes[step] = declared.shape
+    return shapes
+
+
+def _find(steps, shapes: dict[str, str], family: str) -> tuple[str, Path, dict] | None:
+    """The last step (in the record's order) whose outputs are of ``family``."""
+    hits = [s for s in steps if shapes.get(s[0]) == family]
     return hits[-1] if hits else None
 
 
 def _run_body(d: Path, drawn: _Pictures) -> str:
     info = _read(d / "run.json", {}) or {}
     info = info if isinstance(info, dict) else {}
-    info.update(_read(d / "status.json", {}) or {})
     inputs = _read(d / "inputs.json", {}) or {}
+    outputs = _read(d / "outputs.json", {}) or {}
     steps = _steps(d)
+    shapes = _shapes(d)
     parts = []
 
-    status = shown_status(d, info) if (d / "run.json").is_file() else info.get("status", "?")
-    cls = "ok" if status in ("ok", "success", "succeeded", "done", "completed") else "bad"
-    command = inputs.get("command") or next((o["command"] for _, _, o in steps if isinstance(o.get("command"), str)), None)
+    status = shown_status(d, info) if (d / "run.json").is_file() else "?"  # only a steps/ folder left
+    succeeded = RunStatus.of(status) is RunStatus.SUCCEEDED
+    cls = "ok" if succeeded else "bad"
+    command = inputs.get("command")
     parts.append(_table(["", ""], [["status", Raw(f"<span class='{cls}'>{_e(status)}</span>")],
                                    ["workflow", info.get("workflow", "")], ["error", info.get("error")]]))
     parts.append("<h2>Command</h2>" + (f"<p><q>{_e(command)}</q></p>" if command else "<p>(no command input)</p>"))
-    rounds = _loop_rounds(d)
-    if status not in ("succeeded", "ok", "success", "done", "completed") and rounds:
+    rounds = _loop_rounds(d, shapes)
+    if not succeeded and rounds:
         parts.insert(1, _failure_cause(info, rounds[-1]))
-    parts.append(_understood(steps))
+    parts.append(_understood(steps, shapes))
     if rounds:
         parts.append(_loop_section(rounds))
 
-    world = (_find(steps, lambda o: isinstance(o.get("world"), dict)) or (None, None, {}))[2].get("world")
-    plan_s = _find(steps, lambda o: isinstance(o.get("plan"), list))
-    graph_s = _find(steps, lambda o: isinstance(o.get("graph"), dict) and "nodes" in o["graph"])
-    sched_s = _find(steps, lambda o: isinstance(o.get("schedule"), dict) and "subtasks" in o["schedule"])
-    sim_s = _find(steps, lambda o: "final_stock" in o and "executed" in o)
-    met_s = _find(steps, lambda o: "violations" in o and "success" in o)
-    schedule = sched_s[2]["schedule"] if sched_s else None
+    world = (_find(steps, shapes, values.WORLD) or (None, None, {}))[2].get("world")
+    world = world if isinstance(world, dict) else None
+    plan_s = _find(steps, shapes, values.PLAN)
+    graph_s = _find(steps, shapes, values.GRAPH)
+    sched_s = _find(steps, shapes, values.SCHEDULE)
+    sim_s = _find(steps, shapes, values.SIMULATION)
+    met_s = _find(steps, shapes, values.SCORE)
+    schedule = sched_s[2]["schedule"] if sched_s and isinstance(sched_s[2].get("schedule"), dict) else None
+    graph_s = graph_s if graph_s and isinstance(graph_s[2].get("graph"), dict) else None
 
-    # team plan, with the robots the schedule gave each subtask
-    parts.append("<h2 id='plan'>Team plan</h2>")
-    plan = plan_s[2]["plan"] if plan_s else None
-    if plan is not None:
-        # subtask ids as the graph and the Gantt chart name them (s1, s2, ...), not list positions
-        nodes = graph_s[2]["graph"].get("nodes", []) if graph_s else []
-        ids = {n.get("index"): n.get("id") for n in nodes if isinstance(n, dict)}
-        by_id = {s.get("id"): s for s in (schedule or {}).get("subtasks", []) if isinstance(s, dict)}
-        rows = []
-        for i, a in enumerate(plan):
-            text = " ".join(map(str, [a.get("action")] + list(a.get("args", []))))
-            sid = ids.get(i, f"s{i + 1}")
-            s = by_id.get(sid)
-            rows.append([sid, f"({text})", ", ".join(s["robots"]) if s else "",
-                         f"{s['start']:.1f}" if s else "", f"{s['end']:.1f}" if s else ""])
-        parts.append(_table(["subtask", "action", "robots", "start (s)", "end (s)"], rows) if rows else "<p>empty plan</p>")
-    else:
-        parts.append("<p>(no plan in this run)</p>")
+    parts.append(_plan_section(plan_s[2].get("plan") if plan_s else None, graph_s, schedule))
 
     mode = inputs.get("pictures") if inputs.get("pictures") in pictures.MODES else "auto"
     parts.append("<span id='pictures'></span>")  # where a bench's matrix links a run's pictures
@@ -277,48 +312,11 @@ def _run_body(d: Path, drawn: _Pictures) -> str:
     parts.append(_replay(d, steps, world, schedule, graph_s[2]["graph"] if graph_s else None))
 
     if sim_s:
-        name, sd, sim = sim_s
-        sim = upgrade_travel_keys(sim)  # a record of before TC-avg had one definition
-        art = sd / "artifacts"
-        pics = [p for p in sim.get("pictures", []) if (art / p).is_file()]
-        src = f"steps/{name}/artifacts/paths.png" if "paths.png" in pics else None
-        traj = _read(art / "trajectories.json", {}).get("trajectories", {}) if src is None and world else {}
-        if traj and pictures.wanted(mode, "paths", pictures.size_of("paths", traj)):
-            pictures.path_map(world, traj, drawn.path("paths.png"), travel=sim.get("travel"))
-            src = drawn.src("paths.png")
-        if src:
-            parts.append("<h2>Robot paths</h2>" + _img(src, "robot paths"))
-        snaps = [p for p in pics if p.startswith("snapshot_")]
-        if snaps:
-            parts.append("<h2>Snapshots</h2><div class='snaps'>" + "".join(
-                f"<figure>{_img(f'steps/{name}/artifacts/{p}', p)}<figcaption>{_e(_snapshot_caption(p))}"
-                f"</figcaption></figure>" for p in snaps) + "</div>")
-        anim = [p for p in pics if p.endswith(".gif")]
-        if anim:
-            parts.append("<h2>Animation</h2>" + _img(f"steps/{name}/artifacts/{anim[0]}", "animation"))
-        parts.append("<h2>Simulation</h2>" + _table(
-            ["executed", "failed", "Exe", "TC-max (m)", "TC-avg, robots that moved (m)", "TC-avg over the team (m)",
-             "makespan (s)", "goal met", "GCR"],
-            [[sim.get("executed"), sim.get("failed"), sim.get("exe"), sim.get("tc_max"), sim.get("tc_avg"),
-              sim.get("tc_avg_team"),
-              sim.get("makespan"), sim.get("goal_met"), sim.get("gcr")]]))
-        if sim.get("failures"):
-            parts.append("<p>Actions not executed:</p><ul>" + "".join(
-                f"<li>{_e(f['subtask'])} at t={_e(f['time'])}: {_e('; '.join(f['reasons']))}</li>"
-                for f in sim["failures"]) + "</ul>")
-        if sim.get("travel"):
-            parts.append(_table(["robot", "travel (m)"], [[r, float(v)] for r, v in sorted(
-                sim["travel"].items(), key=lambda kv: pictures.natural_key(kv[0]))]))
-        goal = inputs.get("goal")
-        if isinstance(goal, dict):
-            rows = [[s, p, describe(n) if is_bound(n) else n, sim["final_stock"].get(s, {}).get(p, 0),
-                     None if value_problems(n) else holds(int(sim["final_stock"].get(s, {}).get(p, 0)), n)]
-                    for s, items in goal.items() for p, n in items.items()]  # n: a count or a bound
-            parts.append("<h3>Goal</h3>" + _table(["place", "item", "goal", "final", "holds"], rows))
+        parts += _simulation_sections(sim_s, world, schedule, outputs.get("goal", inputs.get("goal")), mode, drawn)
 
-    parts.append(_faults_section(steps, world, drawn))  # runs under faults only ("" otherwise)
+    parts.append(_faults_section(steps, shapes, world, drawn))  # runs under faults only ("" otherwise)
 
-    if met_s:
+    if met_s and isinstance(met_s[2].get("violations"), list):  # a skipped score step: all null
         m = upgrade_travel_keys(met_s[2])
         parts.append("<h2>Metrics</h2>" + _table(
             ["success", "GCR", "Exe", "RU", "TC-max (m)", "TC-avg, robots that moved (m)", "TC-avg over the team (m)",
@@ -331,6 +329,25 @@ def _run_body(d: Path, drawn: _Pictures) -> str:
 
     parts.append("<h2>Steps</h2>" + _table(["step", "outputs"], [[n, ", ".join(sorted(o))] for n, _, o in steps]))
     return "\n".join(parts)
+
+
+def _plan_section(plan: Any, graph_s: tuple[str, Path, dict] | None, schedule: dict | None) -> str:
+    """The team plan, with the robots the schedule gave each subtask (ids as the graph and the
+    Gantt chart name them: s1, s2, ..., not list positions)."""
+    if plan is None:
+        return "<h2 id='plan'>Team plan</h2><p>(no plan in this run)</p>"
+    nodes = graph_s[2]["graph"].get("nodes", []) if graph_s else []
+    ids = {n.get("index"): n.get("id") for n in nodes if isinstance(n, dict)}
+    by_id = {s.get("id"): s for s in (schedule or {}).get("subtasks", []) if isinstance(s, dict)}
+    rows = []
+    for i, a in enumerate(plan):
+        text = " ".join(map(str, [a.get("action")] + list(a.get("args", []))))
+        sid = ids.get(i, f"s{i + 1}")
+        s = by_id.get(sid)
+        rows.append([sid, f"({text})", ", ".join(s["robots"]) if s else "",
+                     f"{s['start']:.1f}" if s else "", f"{s['end']:.1f}" if s else ""])
+    return "<h2 id='plan'>Team plan</h2>" + (
+        _table(["subtask", "action", "robots", "start (s)", "end (s)"], rows) if rows else "<p>empty plan</p>")
 
 
 def _replay(d: Path, steps, world: Any, schedule: Any, graph: Any) -> str:
@@ -356,13 +373,13 @@ def _replay(d: Path, steps, world: Any, schedule: Any, graph: Any) -> str:
 # ------------------------------------------------------------------------------------------
 
 
-def _faults_section(steps, world: dict | None, drawn: _Pictures) -> str:
+def _faults_section(steps, shapes: dict[str, str], world: dict | None, drawn: _Pictures) -> str:
     """What went wrong and how the run recovered: the faults (what, to whom, when, when noticed),
     each recovery round (cause, what it learned and did, its seconds, whether the goal was still
     reachable), the refusal if the goal went out of reach, and where and when on the map and the
-    Gantt chart. Empty for a run without faults."""
-    found = _find(steps, lambda o: isinstance(o.get("recoveries"), list) and isinstance(o.get("faults"), list))
-    if not found or not found[2]["faults"]:
+    Gantt chart. Empty for a run without faults (or whose execution step was skipped)."""
+    found = _find(steps, shapes, values.EXECUTION)
+    if not found or not isinstance(found[2].get("faults"), list) or not found[2]["faults"]:
         return ""
     out = found[2]
     faults, rounds = out["faults"], out["recoveries"]
@@ -401,6 +418,77 @@ def _fault_words(f: dict) -> str:
     return f"{who}{extra}" + ("" if f.get("occurred", True) else " (did not happen before the run ended)")
 
 
+def _simulation_sections(sim_s: tuple[str, Path, dict], world: dict | None, schedule: dict | None, goal: Any,
+                         mode: str, drawn: _Pictures) -> list[str]:
+    """Robot paths, snapshots, animation and the Simulation table of any domain's simulation step
+    (the family :data:`pipflow.values.SIMULATION`: the core, flat or with ``details``). The path
+    map is the one the simulation drew, else drawn from the trajectories it kept, else from the
+    schedule's legs (what a simulation that follows them drove); the goal's conditions in the
+    final state are the world's task domain's."""
+    name, sd, raw = sim_s
+    sim = upgrade_travel_keys(values.flat_simulation(raw) or {})  # a record of before TC-avg had one definition
+    if sim.get("executed") is None:  # skipped (the run was refused before it): all null
+        return []
+    parts = []
+    art = sd / "artifacts"
+    pics = [p for p in sim.get("pictures") or [] if isinstance(p, str) and (art / p).is_file()]
+    src = f"steps/{name}/artifacts/paths.png" if "paths.png" in pics else None
+    if src is None and world:
+        kept = _read(art / "trajectories.json", {}) or {}
+        traj = kept.get("trajectories") if isinstance(kept, dict) else None
+        traj = traj or (planned_paths(world, schedule) if schedule else None)
+        if traj and not pictures.wanted(mode, "paths", pictures.size_of("paths", traj)):
+            parts.append(f"<h2>Robot paths</h2><p>not drawn (pictures: {_e(mode)}; {len(traj)} robots)</p>")
+        elif traj:
+            try:
+                pictures.path_map(world, traj, drawn.path("paths.png"), travel=sim.get("travel"))
+                src = drawn.src("paths.png")
+            except Exception as exc:  # a picture must never hide the rest of the report
+                parts.append(f"<h2>Robot paths</h2><p class='bad'>could not draw: {_e(exc)}</p>")
+    if src:
+        parts.append("<h2>Robot paths</h2>" + _img(src, "robot paths"))
+    snaps = [p for p in pics if p != "paths.png" and p.endswith(".png")]
+    if snaps:
+        parts.append("<h2>Snapshots</h2><div class='snaps'>" + "".join(
+            f"<figure>{_img(f'steps/{name}/artifacts/{p}', p)}<figcaption>{_e(_snapshot_caption(p))}"
+            f"</figcaption></figure>" for p in snaps) + "</div>")
+    anim = [p for p in pics if p.endswith(".gif")]
+    if anim:
+        parts.append("<h2>Animation</h2>" + _img(f"steps/{name}/artifacts/{anim[0]}", "animation"))
+    parts.append("<h2>Simulation</h2>" + _table(
+        ["executed", "failed", "Exe", "TC-max (m)", "TC-avg, robots that moved (m)", "TC-avg over the team (m)",
+         "makespan (s)", "goal met", "GCR"],
+        [[sim.get("executed"), sim.get("failed"), sim.get("exe"), sim.get("tc_max"), sim.get("tc_avg"),
+          sim.get("tc_avg_team"), sim.get("makespan"), sim.get("goal_met"), sim.get("gcr")]]))
+    failures = [f for f in sim.get("failures") or [] if isinstance(f, dict)]
+    if failures:
+        parts.append("<p>Actions not executed:</p><ul>" + "".join(
+            f"<li>{_e(f.get('subtask'))}" + (f" at t={_e(f['time'])}" if f.get("time") is not None else "")
+            + f": {_e('; '.join(map(str, f.get('reasons') or [])))}</li>" for f in failures) + "</ul>")
+    if isinstance(sim.get("travel"), dict) and sim["travel"]:
+        parts.append(_table(["robot", "travel (m)"], [[r, float(v)] for r, v in sorted(
+            sim["travel"].items(), key=lambda kv: pictures.natural_key(kv[0]))]))
+    conditions = _goal_conditions(world, sim, goal)
+    if conditions:
+        parts.append("<h3>Goal</h3>" + _table(["goal condition (as the run read the command)", "holds at the end"],
+                                              [[c.words, c.holds] for c in conditions]))
+    return parts
+
+
+def _goal_conditions(world: dict | None, sim: dict, goal: Any) -> list:
+    """The goal's conditions in the simulation's final state, as the world's task domain reads
+    them; none when the record lacks a world, a goal or a final state, or the domain cannot read
+    this goal (a damaged record loses only this table)."""
+    if not world or goal is None:
+        return []
+    try:
+        domain = task_domain(world)
+        final = domain.final_state(sim)
+        return [] if final is None else list(domain.goal_conditions(world, final, goal))
+    except (PipflowError, LookupError, TypeError, ValueError, AttributeError):
+        return []
+
+
 # ------------------------------------------------------------------------------------------
 # the refinement loop and what was understood
 # ------------------------------------------------------------------------------------------
@@ -413,10 +501,16 @@ def _snapshot_caption(file_name: str) -> str:
     return f"{number}. {moment.replace('-', ' ')}" if moment else stem
 
 
-def _loop_rounds(d: Path) -> list[dict]:
+#: the part each family of step outputs plays in a round of the refinement loop
+_ROLES = {values.READING: "generate", values.DEBUG: "debug", values.PLAN: "solve", values.VERIFY: "verify",
+          values.CHECK: "check"}
+
+
+def _loop_rounds(d: Path, shapes: dict[str, str]) -> list[dict]:
     """Every round of every loop in the record: ``{"loop", "n", "generate", "debug", "verify",
-    "solve"}``, each the outputs of the inner step that plays that part (found by what it
-    outputs, so any workflow's loop is shown) plus the step's artifact folder under ``dir``."""
+    "solve", "check"}``, each the outputs of the inner step that plays that part (found by the
+    family its outputs declare, so any workflow's loop is shown) plus the step's artifact folder
+    under ``_dir``."""
     rounds = []
     for it_dir in sorted((d / "steps").glob("*/iterations/*"), key=lambda p: (p.parent.parent.name, _int(p.name))):
         r: dict[str, Any] = {"loop": it_dir.parent.parent.name, "n": _int(it_dir.name)}
@@ -424,17 +518,9 @@ def _loop_rounds(d: Path) -> list[dict]:
             out = _read(sd / "outputs.json")
             if not isinstance(out, dict):
                 out = {}
-            out = {**out, "_dir": sd, "_id": sd.name}
-            if "response" in out or "messages" in out and "usage" in out:
-                r["generate"] = out
-            elif "basis" in out and "disagreement" in out:  # llm.check: the second opinion
-                r["check"] = out
-            elif "plan" in out:
-                r["solve"] = out
-            elif "refusal" in out or "goal" in out and "ok" in out:
-                r["verify"] = out
-            elif "ok" in out:
-                r["debug"] = out
+            role = _ROLES.get(shapes.get(sd.name, ""))
+            if role is not None:
+                r[role] = {**out, "_dir": sd, "_id": sd.name}
         gen = r.get("generate")
         if gen is not None and not gen.get("messages"):  # a failed generate keeps its prompt as an artifact
             gen["messages"] = _read(gen["_dir"] / "artifacts" / "messages.json", []) or []
@@ -464,14 +550,15 @@ def _failure_cause(info: dict, last: dict) -> str:
             f"<p>Round {last['n']} of loop <code>{_e(last['loop'])}</code> ended with:</p><ul>{items}</ul></div>")
 
 
-def _understood(steps) -> str:
+def _understood(steps, shapes: dict[str, str]) -> str:
     """The order as the run understood it, in plain words, before anything moved."""
-    gen = _find(steps, lambda o: "constraints" in o and ("goal" in o or "explanation" in o))
-    ver = _find(steps, lambda o: "refusal" in o and "goal" in o)
-    lines = list((gen[2].get("explanation") if gen else None) or [])
+    gen = _find(steps, shapes, values.READING)
+    ver = _find(steps, shapes, values.VERIFY)
+    explanation = (gen[2].get("explanation") if gen else None) or []
+    lines = explanation.splitlines() if isinstance(explanation, str) else list(explanation)
     goal = (ver[2].get("goal") if ver else None) or (gen[2].get("goal") if gen else None)
     if not lines and isinstance(goal, dict):
-        lines = _goal_lines(steps, goal)
+        lines = _goal_lines(steps, shapes, goal)
     for rule in (gen[2].get("constraints") or []) if gen else []:
         if isinstance(rule, dict):
             lines.append(_rule_words(rule))
@@ -480,10 +567,10 @@ def _understood(steps) -> str:
     return "<h2>Understood</h2><ul class='understood'>" + "".join(f"<li>{_e(x)}</li>" for x in lines) + "</ul>"
 
 
-def _goal_lines(steps, goal: dict) -> list[str]:
+def _goal_lines(steps, shapes: dict[str, str], goal: dict) -> list[str]:
     """The goal in its task domain's words (``fridge holds pumpkin``, ``shelf4 product3: exactly
     12``), never a Python list; a domain no longer installed: the goal spelt out generically."""
-    world = (_find(steps, lambda o: isinstance(o.get("world"), dict)) or (None, None, {}))[2].get("world")
+    world = (_find(steps, shapes, values.WORLD) or (None, None, {}))[2].get("world")
     try:
         domain = task_domain(world) if isinstance(world, dict) else domain_named(None)
     except UserError:
@@ -493,7 +580,7 @@ def _goal_lines(steps, goal: dict) -> list[str]:
 
 def _rule_words(rule: dict) -> str:
     who = ", ".join(rule.get("only") or rule.get("never") or [])
-    scope = " ".join(f"{k} {rule[k]}" for k in ("product", "from", "to") if rule.get(k))
+    scope = " ".join(f"{k} {v}" for k, v in rule.items() if k not in ("only", "never", "words") and v)
     verb = "only" if "only" in rule else "never"
     text = f"rule: {verb} {who} in moves" + (f" of {scope}" if scope else "")
     return text + (f" (from '{rule['words']}')" if rule.get("words") else "")
@@ -815,3 +902,6 @@ def _bench_overview(bench: Bench, ids: list[str], path: Path, title: str = "") -
         fig.tight_layout()
     pictures.save_figure(fig, path, dpi=90)
     plt.close(fig)
+
+
+install_report_writer(write_report)  # Run.report() of the engine writes this report

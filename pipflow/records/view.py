@@ -38,7 +38,8 @@ from pathlib import Path
 from typing import Any
 
 from pipflow.engine.recordref import command_of, headline
-from pipflow.engine.store import STALE, shown_status, stale_note
+from pipflow.engine.status import RunStatus
+from pipflow.engine.store import shown_status, stale_note
 from pipflow.errors import InputError, UserError
 from pipflow.records.compare import compare_html
 from pipflow.records.report import write_report
@@ -101,10 +102,11 @@ def _number(value: Any) -> float | None:
 
 
 def _run_record(d: Path, rel: str, info: dict) -> Record:
-    status = shown_status(d, info)
-    detail = str(info.get("error") or (stale_note(d, info) if status == STALE else ""))
+    shown = shown_status(d, info)
+    status = str(shown)  # the record's word: succeeded, failed, stale...
+    detail = str(info.get("error") or (stale_note(d, info) if shown is RunStatus.STALE else ""))
     result = ""
-    if status == "succeeded":
+    if shown is RunStatus.SUCCEEDED:
         try:
             result = headline(json.loads((d / "outputs.json").read_text(encoding="utf-8")))
         except (OSError, ValueError):

@@ -92,3 +92,24 @@ class Trajectory:
 
 def distance(p: Point, q: Point) -> float:
     return math.hypot(p[0] - q[0], p[1] - q[1])
+
+
+def planned_paths(world: dict, schedule: dict) -> dict[str, list[list[float]]]:
+    """Each robot's planned motion as ``[[t, x, y], ...]`` (the form of a simulation's recorded
+    trajectories, which the path map draws): its start, then every vertex of its legs at the time
+    the schedule passes it; a robot without legs, its start alone. What a simulation that follows
+    the schedule's legs (and keeps no trajectories of its own) drove."""
+    robots = world.get("robots") or {}
+    legs: dict[str, list[dict]] = {r: [] for r in robots}
+    for r, info in (schedule.get("robots") or {}).items():
+        legs.setdefault(r, []).extend(info.get("legs", []))
+    out = {}
+    for r, robot_legs in legs.items():
+        tr = Trajectory(robots.get(r, {}).get("start", (0.0, 0.0)), robot_legs)
+        points = [[0.0, *tr.start]]
+        for t in tr.vertex_times():
+            x, y = tr.position(t)
+            if (x, y) != tuple(points[-1][1:]):
+                points.append([round(t, 4), round(x, 4), round(y, 4)])
+        out[r] = points
+    return out

@@ -1,11 +1,16 @@
 """The warehouse as a pipflow task domain: the one object the generic code talks to (registered
 as ``warehouse`` in the entry-point group ``pipflow.task_domains``).
 
-Each method is a thin face of a module that does the work: the world loader
-(:mod:`pipflow.warehouse.world`), the command reader (:mod:`pipflow.warehouse.language.translator`, the
-parser and resolver of the warehouse's order language), the stock-problem writer and checks
-(:mod:`pipflow.warehouse.problem`, the debugger's and verifier's stock checks), the pybullet simulation
-(:mod:`pipflow.warehouse.simulation`) and the scoring (:mod:`pipflow.warehouse.scoring`).
+The core of :class:`pipflow.taskdomain.TaskDomain` and five capabilities (grounded decoding, the
+checked loop's second opinion, pipflow's transport planner, goals compared by meaning, execution
+under faults), each a thin face of a module that does the work: the world loader
+(:mod:`pipflow.warehouse.world`), the command reader (:mod:`pipflow.warehouse.language.translator`,
+the parser and resolver of the warehouse's order language), the stock-problem writer and checks
+(:mod:`pipflow.warehouse.problem`, the debugger's and verifier's stock checks), the pybullet
+simulation (:mod:`pipflow.warehouse.simulation`), the checks of a run
+(:mod:`pipflow.warehouse.scoring`) and the side of faults (:mod:`pipflow.warehouse.faults`).
+Scoring, the bench row and the understanding verdict are the protocol's own, the same as every
+domain's.
 
 Imports of the parser (lark), UP and pybullet are deferred into the methods on purpose: the
 registry imports this module for every warehouse run, and a run pays only for what it uses.
@@ -17,31 +22,19 @@ from typing import Any, Callable, Mapping
 
 from pipflow.execution.capability import ExecutionCapability, Played
 from pipflow.goalcounts import describe, is_bound
-from pipflow.language.offline import NO_USAGE
 from pipflow.pddl.common import share
 from pipflow.resources import data_file
-from pipflow.taskdomain import Facts, GoalCheck, Grounding, Save, TaskDomain, flat_simulation, pddl_domain_name
-from pipflow.warehouse import agreement
+from pipflow.taskdomain import (ComparesGoals, Condition, Facts, GroundedDecoding, Reading, Reference, Save,
+                                SecondOpinion, TaskDomain, TransportPlanning, pddl_domain_name)
+from pipflow.warehouse import agreement, scoring
 from pipflow.warehouse import faults as fault_model
 from pipflow.warehouse import problem as writer
 from pipflow.warehouse import world as worlds
 from pipflow.warehouse.language import grounding
-from pipflow.warehouse.meaning import understanding
+from pipflow.warehouse.meaning import goal_difference
 from pipflow.warehouse.problem import goal_in_world_names, goal_problems, stock_goals, world_mismatches
-from pipflow.warehouse.scoring import score_run
 from pipflow.warehouse.simulation import simulate
 from pipflow.warehouse.starts import vary_starts
-
-
-def _read_grounded(text: str, world: dict) -> dict:
-    """A grounded answer (an order in JSON) checked and resolved, its problem written."""
-    # deferred: pulls lark and jsonschema (the resolver; only LLM-written orders need it)
-    from pipflow.warehouse.language.llm_orders import read_grounded
-
-    got = read_grounded(text, world)
-    return {"problem": WarehouseDomain().write_problem(world, got["goal"], "warehouse"), "goal": got["goal"],
-            "constraints": got["constraints"], "order": got["order"], "explanation": got["explanation"],
-            "errors": []}
 
 
 def _stock_goal(parsed: Any, world: dict | None) -> dict:
@@ -49,7 +42,8 @@ def _stock_goal(parsed: Any, world: dict | None) -> dict:
     return goal_in_world_names(stock_goals(parsed)[0], world)
 
 
-class WarehouseDomain(TaskDomain, ExecutionCapability):
+class WarehouseDomain(TaskDomain, GroundedDecoding, SecondOpinion, TransportPlanning, ComparesGoals,
+                      ExecutionCapability):
     """Pallets of products moved between shelves by robots that carry a few units each."""
 
     name = "warehouse"
@@ -63,18 +57,19 @@ class WarehouseDomain(TaskDomain, ExecutionCapability):
                  "cot": "cot", "smart-llm": "smart-llm", "lamma-p": "lamma-p"}
     default_prompt = "warehouse_problem"
     rule_fields = ("product", "from", "to")
-    grounding = Grounding(gbnf=grounding.gbnf, response_format=grounding.response_format, read=_read_grounded,
-                          answer_size=grounding.answer_size)
     name_sections = ("shelves", "products", "robots")
     simulate_options = ("picture", "animation")
+    goal_example = "(= (stock shelf2 product1) 3)"
     surprise_names = fault_model.SURPRISE_NAMES
 
+    # -- files ---------------------------------------------------------------------------------
     def pddl_domain(self) -> Path:
         return data_file("domains/warehouse.pddl")
 
     def action_metadata(self) -> Path:
         return data_file("domains/warehouse.actions.yaml")
 
+    # -- worlds --------------------------------------------------------------------------------
     def load_world(self, path: str | Path, *, seed: int | None = None, **options: Any) -> dict:
         return vary_starts(worlds.load_world(path), seed)
 
@@ -91,21 +86,22 @@ class WarehouseDomain(TaskDomain, ExecutionCapability):
         return {"product": (world.get("products", {}), "product"), "from": (shelves, "shelf"),
                 "to": (shelves, "shelf")}
 
-    def read_offline(self, command: str, world: dict, domain_text: str = "",
-                     save: Save | None = None) -> dict:
+    # -- language ------------------------------------------------------------------------------
+    def read_offline(self, command: str, world: dict, domain_text: str = "", save: Save | None = None) -> dict:
+        """The protocol's offline round, and our own problem built for the debugger, planner and
+        verifier to read without parsing its text (:func:`_share_built`)."""
+        out = super().read_offline(command, world, domain_text, save)
+        if domain_text:
+            _share_built(out["problem"], world, out.get("concrete", out["goal"]), domain_text)
+        return out
+
+    def read_command(self, command: str, world: dict) -> Reading:
         # deferred: builds the lark parser (~300 ms; only offline reading needs it)
         from pipflow.warehouse.language.translator import understand
 
         result = understand(command, world)
-        if save is not None:
-            save("order.json", result["order"])
-        text = self.write_problem(world, result["goal"], "warehouse")
-        if domain_text:
-            _share_built(text, world, result["goal"], domain_text)
-        return {"problem": text, "goal": result["goal"],
-                "constraints": list(result["constraints"]), "order": result["order"],
-                "explanation": list(result["explanation"]), "messages": [], "response": "",
-                "usage": dict(NO_USAGE), "errors": []}
+        return Reading(result["goal"], list(result["constraints"]), order=result["order"],
+                       explanation=list(result["explanation"]))
 
     def write_problem(self, world: dict, goal: Any, domain_name: str, name: str = "task") -> str:
         return writer.write_problem(world, goal, name=name, domain=domain_name)  # looked up per call: replaceable
@@ -114,6 +110,9 @@ class WarehouseDomain(TaskDomain, ExecutionCapability):
         """The world's current stock as the goal: every name and number in the expected form."""
         stock = {s: dict(items) for s, items in world.get("stock", {}).items() if items}
         return self.write_problem(world, stock, "warehouse")
+
+    def read_goal(self, parsed: Any, world: dict | None) -> tuple[Any, list[str]]:
+        return _stock_goal(parsed, world), []
 
     def read_problem(self, parsed: Any, world: dict, constraints: list[dict]) -> dict:
         """The model's goal read back into an order, for the run summary (the paper's mode sets
@@ -126,14 +125,33 @@ class WarehouseDomain(TaskDomain, ExecutionCapability):
     def world_mismatches(self, parsed: Any, problem_text: str, world: dict) -> list[str]:
         return world_mismatches(parsed, problem_text, world)
 
-    def check_goal(self, parsed: Any, world: dict | None) -> GoalCheck:
-        goal = _stock_goal(parsed, world)
-        if world is None:
-            return GoalCheck(goal)
+    def goal_problems(self, world: dict, goal: Any) -> tuple[list[str], str | None]:
+        """Unknown names and malformed counts (feedback), and the reasons no final stock of the
+        world meets the goal (a refusal)."""
         messages, refusal = goal_problems(world, goal)
-        return GoalCheck(goal, messages, refusal)
+        return messages, ("; ".join(messages) if refusal else None)  # a refusal's messages are its reasons
 
-    def planner_params(self, world: dict, constraints: list[dict]) -> dict | None:
+    # -- capabilities --------------------------------------------------------------------------
+    def grounding_gbnf(self, world: dict) -> str:
+        return grounding.gbnf(world)
+
+    def grounding_schema(self, world: dict) -> dict:
+        return grounding.response_format(world)
+
+    def read_grounded(self, text: str, world: dict) -> dict:
+        """A grounded answer (an order in JSON) checked and resolved, its problem written."""
+        # deferred: pulls lark and jsonschema (the resolver; only LLM-written orders need it)
+        from pipflow.warehouse.language.llm_orders import read_grounded
+
+        got = read_grounded(text, world)
+        return {"problem": self.write_problem(world, got["goal"], "warehouse"), "goal": got["goal"],
+                "constraints": got["constraints"], "order": got["order"], "explanation": got["explanation"],
+                "errors": []}
+
+    def answer_size(self, world: dict, reading: Any) -> tuple[int, int]:
+        return grounding.answer_size(world, reading)
+
+    def planner_params(self, world: dict, constraints: list[dict]) -> dict:
         """Each robot's ``carry`` skill (units per move) and the only/never rules."""
         robots = {name: r.get("skills", {}).get("carry", 0) for name, r in world.get("robots", {}).items()}
         return {"robots": robots, "rules": constraints or []}
@@ -142,9 +160,14 @@ class WarehouseDomain(TaskDomain, ExecutionCapability):
         return worlds.feedback_facts(messages, world)
 
     def second_opinion(self, command: str, world: dict, goal: Any, constraints: list[dict],
-                       refusal: str | None, last: bool = False) -> Any | None:
+                       refusal: str | None, last: bool = False) -> Any:
         return agreement.second_opinion(command, world, goal, constraints, refusal, last)
 
+    def goal_difference(self, world: dict | None, gold: Any, run: Any) -> str | None:
+        """Goals compared by the final stocks they accept (:mod:`pipflow.warehouse.understanding`)."""
+        return goal_difference(world, gold, run)
+
+    # -- simulation and scoring ----------------------------------------------------------------
     def simulate(self, world: dict, schedule: dict, graph: dict | None, goal: Any, *,
                  snapshots: bool = False, out_dir: Path | None = None,
                  log: Callable[[str], None] = print, save: Save | None = None, **options: Any) -> dict:
@@ -163,39 +186,38 @@ class WarehouseDomain(TaskDomain, ExecutionCapability):
             save("trajectories.json", {"trajectories": result.pop("trajectories"), "events": result.pop("events")})
         return result
 
-    def score(self, world: dict, goal: Any, *, constraints: list[dict] | None = None,
-              feasible: bool = True, graph: dict | None = None, schedule: dict | None = None,
-              simulation: dict | None = None, refusal: str | None = None,
-              error: str | None = None) -> dict:
-        """``simulation``: the generic step's outputs or ``simulate.pybullet``'s (``final_stock``)."""
-        sim = flat_simulation(simulation)
-        if sim is not None and "final_stock" not in sim and "final_state" in sim:
-            sim["final_stock"] = sim["final_state"]
-        return score_run(world, goal, constraints=constraints or [], feasible=feasible, graph=graph,
-                         schedule=schedule, simulation=sim, refusal=refusal, error=error)
+    def initial_state(self, world: dict) -> Any:
+        return world.get("stock", {})
 
+    def final_state(self, simulation: Mapping[str, Any]) -> Any:
+        """``final_state``, or ``final_stock`` in the outputs of ``simulate.pybullet``."""
+        return simulation.get("final_state", simulation.get("final_stock"))
+
+    def goal_conditions(self, world: dict, state: Any, goal: Any) -> list[Condition]:
+        return scoring.goal_conditions(state, goal)
+
+    def reference(self, world: dict, goal: Any) -> Reference:
+        """The fewest moves any plan needs (:func:`pipflow.warehouse.scoring.plan_lower_bound`)."""
+        return Reference(scoring.plan_lower_bound(world, goal))
+
+    def rule_violations(self, constraints: list[dict] | None, graph: dict | None,
+                        schedule: dict | None, world: dict) -> list[str]:
+        return scoring.constraint_violations(scoring.move_fields(graph, schedule), constraints)
+
+    def extra_violations(self, world: dict, simulation: Mapping[str, Any], graph: dict | None,
+                         schedule: dict | None) -> list[str]:
+        """Units are conserved, no shelf ever held more than its capacity, every coalition had
+        the skills its move needs."""
+        final = self.final_state(simulation) or {}
+        return (scoring.conservation_violations(world, final, int(simulation.get("stray_units", 0)))
+                + scoring.capacity_violations(world, simulation.get("peak_load"), final)
+                + scoring.skill_violations(scoring.move_fields(graph, schedule), world))
+
+    # -- the bench -----------------------------------------------------------------------------
     def load_tasks(self, path: Path) -> dict:
         return worlds.load_tasks(path)
 
-    def score_bench_run(self, world_path: str, task: dict, outputs: dict, refusal: str | None,
-                        error: str | None) -> dict:
-        """A run under faults is scored against the stock as it really was (its surprises)."""
-        world = fault_model.as_it_was(worlds.load_world(world_path), outputs.get("faults"))
-        return self.score(world, task.get("goal") or {},
-                          constraints=task.get("constraints"),
-                          feasible=task.get("feasible", True) and task.get("expect") != "refuse",
-                          graph=outputs.get("graph"), schedule=outputs.get("schedule"),
-                          simulation=outputs.get("simulation"), refusal=refusal, error=error)
-
-    def understand(self, task: dict, outputs: dict, status: str, error_kind: str | None,
-                   world_path: str | None = None) -> dict | None:
-        """Meanings compared in the task file's world (its stock and robots; starts do not matter)."""
-        world = worlds.load_world(world_path) if world_path else None
-        fields = {f: list(names) for f, (names, _) in self.rule_names(world).items()} if world else None
-        return understanding(task, outputs, status, error_kind, world, fields)
-
     # -- execution under faults (pipflow.execution): the warehouse's side is warehouse/faults.py
-
     def play(self, world: dict, schedule: dict, graph: dict | None) -> Played:
         return fault_model.play(world, schedule, graph)
 
@@ -229,7 +251,6 @@ class WarehouseDomain(TaskDomain, ExecutionCapability):
         return fault_model.feasibility(world, goal, constraints)
 
     # -- the report ----------------------------------------------------------------------------
-
     def goal_words(self, goal: Any) -> list[str]:
         """``shelf4 product3: exactly 12``, ``shelf1 product2: at least 3``: a line per count."""
         if not isinstance(goal, Mapping):

@@ -109,16 +109,6 @@ def apply_surprise(world: dict, surprise: dict) -> dict:
     return out
 
 
-def as_it_was(world: dict, faults: list[dict] | None) -> dict:
-    """The world as a run under ``faults`` (an ``execute`` step's output) really found it: every
-    surprise in it. What a bench scores such a run against (the units or objects the records
-    got wrong were never the run's to conserve)."""
-    for fault in faults or []:
-        if isinstance(fault, dict) and fault.get("kind") == "surprise" and fault.get("surprise"):
-            world = apply_surprise(world, fault["surprise"])
-    return world
-
-
 # ------------------------------------------------------------------------------------------
 # the world's state, drop places
 # ------------------------------------------------------------------------------------------

@@ -1,5 +1,5 @@
-"""Whether a warehouse bench run understood its command: the meaning of the goal and robot rules
-it resolved, compared with the task's gold (:mod:`pipflow.meaning` gives the verdict).
+"""When two warehouse goals mean the same: the warehouse's half of whether a bench run understood
+its command (the verdict, rules included, is the protocol's: :meth:`pipflow.taskdomain.TaskDomain.understand`).
 
 Two goals mean the same when they accept exactly the same final stocks the world can reach
 (every unit on some shelf, capacities kept): a goal that lists 0 for the shelves a gathering
@@ -17,7 +17,6 @@ from __future__ import annotations
 from typing import Any
 
 from pipflow.goalcounts import limits, value_problems
-from pipflow.meaning import judge, rules_as_written, rules_difference
 from pipflow.warehouse.feasibility import final_ranges
 
 
@@ -86,16 +85,3 @@ def goal_difference(world: dict | None, gold: Any, run: Any) -> str | None:
     text = [f"{s} {p}: the gold allows {_show(in_gold[s, p])}, the run's goal {_show(in_run[s, p])}"
             for s, p in differ]
     return "goal: " + "; ".join(text[:4]) + (" ..." if len(text) > 4 else "")
-
-
-def understanding(task: dict, outputs: dict, status: str, error_kind: str | None, world: dict | None = None,
-                  rule_fields: dict[str, Any] | None = None) -> dict:
-    """The verdict of :func:`pipflow.meaning.judge` for one run of a warehouse task in ``world``
-    (None: goals and rules compared as written); ``rule_fields``: the names each rule field
-    takes (the domain's ``rule_names``)."""
-    if world is None:
-        return judge(task, outputs, status, error_kind, goal_difference=lambda gold, run: goal_difference(None, gold, run),
-                     rule_difference=rules_as_written)
-    return judge(task, outputs, status, error_kind,
-                 goal_difference=lambda gold, run: goal_difference(world, gold, run),
-                 rule_difference=lambda gold, run: rules_difference(gold, run, world["robots"], rule_fields or {}))

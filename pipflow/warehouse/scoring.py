@@ -1,26 +1,19 @@
-"""Scoring one run of a warehouse task (the aggregation into the bench table is :mod:`pipflow.experiments.benchstats`).
+"""The warehouse's facts for scoring a run: the goal's counts in a stock, the checks only a
+warehouse has, and RU's reference. The score itself is the protocol's, the same for every domain
+(:func:`pipflow.scoring.score_run`; the bench's aggregation is :mod:`pipflow.experiments.benchstats`).
 
-A run succeeds when, judged on what the *simulation* reports (never on what the plan claims):
+A warehouse run succeeds when, judged on what the *simulation* reports (never on what the plan
+claims), besides what every domain asks (every goal condition holds, no subtask refused, no robot
+jumps, the task's rules kept):
 
 * every goal value listed by the task holds in the final stock: an exact count exactly, a bound
-  (``{at_least, at_most}``) when the final count lies within it;
+  (``{at_least, at_most}``) when the final count lies within it (:func:`goal_conditions`);
 * every move obeys the task's constraints (``only``/``never``, matched on the move's
-  ``product``/``from``/``to`` fields, all given fields must agree);
+  ``product``/``from``/``to`` fields, all given fields must agree: :func:`constraint_violations`);
 * units are conserved (per product, the final shelves hold what the initial shelves held, and no
   unit lies off the shelves);
 * no shelf ever held more than its capacity (the simulator's ``peak_load``);
-* every move's coalition had the skill levels it needs (summed per skill);
-* every robot's legs connect (the simulator reports ``jumps`` otherwise).
-
-A task marked ``feasible: false`` succeeds only when it was refused with a reason and nothing was
-executed.
-
-Metrics (paper, Sec. IV-B; their definitions, shared by every domain, are :mod:`pipflow.metrics`):
-GCR = fraction of goal counts met at the end, counts that already held at the start counting
-only once the run achieved a count it had to change; Exe = executed / planned actions; TC-max,
-TC-avg (over the robots that moved: the paper's meaning) and ``tc_avg_team`` (over every robot
-of the world, which falls as idle robots are added) from the simulated travel; RU =
-``lower_bound / plan_length`` (capped at 1).
+* every move's coalition had the skill levels it needs (summed per skill).
 
 RU's lower bound is :func:`pipflow.warehouse.bounds.fewest_moves`: the fewest moves of any plan once
 the order of moves is dropped (an integer program, SCIP), so RU = 1 exactly when the plan has the
@@ -31,8 +24,8 @@ from __future__ import annotations
 from collections import Counter
 from typing import Iterable
 
-from pipflow.goalcounts import values_met
-from pipflow.metrics import goal_condition_recall, travel_costs
+from pipflow.goalcounts import describe, holds
+from pipflow.taskdomain import Condition
 
 
 # ------------------------------------------------------------------------------------------
@@ -40,18 +33,16 @@ from pipflow.metrics import goal_condition_recall, travel_costs
 # ------------------------------------------------------------------------------------------
 
 
-def goal_counts(stock: dict, goal: dict) -> tuple[int, int]:
-    """(met, listed) goal values: an exact count is met when the final count equals it, a bound
-    ``{at_least, at_most}`` when the final count lies within it."""
-    met = values_met(stock, goal)
-    return sum(met), len(met)
-
-
-def recall(world: dict, stock: dict, goal: dict) -> float:
-    """GCR of the final ``stock`` (:func:`pipflow.metrics.goal_condition_recall`): the share of
-    goal counts that hold, counts that held in the world's initial stock counting only once the
-    run achieved a count it had to change."""
-    return goal_condition_recall(values_met(world.get("stock", {}), goal), values_met(stock, goal))
+def goal_conditions(stock: dict | None, goal: dict | None) -> list[Condition]:
+    """Each value of ``goal`` in ``stock`` (``{shelf: {product: count}}``, a missing count is 0),
+    in the goal's order: an exact count holds when the count equals it, a bound
+    ``{at_least, at_most}`` when the count lies within it."""
+    out = []
+    for shelf, items in (goal or {}).items():
+        for product, value in items.items():
+            have = int((stock or {}).get(shelf, {}).get(product, 0))
+            out.append(Condition(f"{shelf} holds {describe(value)} {product} (it holds {have})", holds(have, value)))
+    return out
 
 
 def move_fields(graph: dict | None, schedule: dict | None) -> list[dict]:
@@ -146,61 +137,3 @@ def plan_lower_bound(world: dict, goal: dict, time_limit: float = 10.0) -> int |
 
     moves, _ = fewest_moves(instance_from_world(world, goal), time_limit=time_limit)
     return moves
-
-
-# ------------------------------------------------------------------------------------------
-# one run
-# ------------------------------------------------------------------------------------------
-
-
-def score_run(world: dict, goal: dict, *, constraints: list | None = None, feasible: bool = True,
-              graph: dict | None = None, schedule: dict | None = None,
-              simulation: dict | None = None, refusal: str | None = None, error: str | None = None,
-              ) -> dict:
-    """Score one run. ``refusal`` is the message of a :class:`pipflow.Refusal`, ``error`` that
-    of any other failure; both mean the pipeline stopped before simulating (normally).
-
-    Returns ``{success, goal_met, gcr, exe, ru, tc_max, tc_avg, tc_avg_team, makespan, planned, executed,
-    lower_bound, violations, refused, error}``."""
-    sim = simulation or {}
-    travel = travel_costs(sim.get("travel") or {})
-    planned = len((schedule or {}).get("subtasks", []))
-    executed = int(sim.get("executed", 0))
-    base = {"planned": planned, "executed": executed, "refused": bool(refusal),
-            "error": refusal or error or None, "makespan": float(sim.get("makespan", (schedule or {}).get("makespan", 0.0)) or 0.0)}
-
-    if not feasible:
-        ok = bool(refusal and str(refusal).strip()) and executed == 0 and planned == 0
-        violations = [] if ok else (
-            ["infeasible command was not refused"] if not refusal else
-            ["refusal has no reason"] if not str(refusal).strip() else ["actions were executed"])
-        return {**base, "success": ok, "goal_met": ok, "gcr": 1.0 if ok else 0.0,
-                "exe": 1.0 if ok else (sim.get("exe", 0.0) or 0.0), "ru": 1.0 if ok else 0.0,
-                **travel, "lower_bound": None, "violations": violations}
-
-    if simulation is None:  # refused or failed before execution: nothing changed, nothing recalled
-        why = "refused a feasible command" if refusal else f"run failed: {error}" if error else "no simulation"
-        return {**base, "success": False, "goal_met": False, "gcr": recall(world, world.get("stock", {}), goal),
-                "exe": 0.0, "ru": 0.0, **travel_costs({}), "lower_bound": None, "violations": [why]}
-
-    final = sim.get("final_stock", {})
-    met, listed = goal_counts(final, goal)
-    moves = move_fields(graph, schedule)
-    violations = []
-    if met != listed:
-        violations.append(f"goal: {listed - met} of {listed} counts do not hold")
-    violations += constraint_violations(moves, constraints)
-    violations += conservation_violations(world, final, int(sim.get("stray_units", 0)))
-    violations += capacity_violations(world, sim.get("peak_load"), final)
-    violations += skill_violations(moves, world)
-    for robot, jumps in (sim.get("jumps") or {}).items():
-        violations += [f"{robot} jumps {j['metres']:g} m at t={j['time']:g} (legs do not connect)" for j in jumps]
-    lb = plan_lower_bound(world, goal)
-    if planned == 0:
-        ru = 1.0 if lb == 0 else 0.0
-    else:
-        ru = min(1.0, (lb or 0) / planned)
-    return {**base, "success": not violations, "goal_met": met == listed,
-            "gcr": recall(world, final, goal),
-            "exe": float(sim.get("exe", executed / planned if planned else 1.0)), "ru": ru,
-            **travel, "lower_bound": lb, "violations": violations}

@@ -9,26 +9,12 @@ text.
 """
 from __future__ import annotations
 
-from fractions import Fraction
 from typing import Any
 
-from pipflow.pddl.common import goal_atoms
+from pipflow.plugin import fluent_call, goal_atoms, number_value
 
 from pipflow_garden.problem import initial_facts
 from pipflow_garden.world import ripe_total
-
-
-def _number(node: Any) -> int | None:
-    if node.is_int_constant() or node.is_real_constant():
-        v = Fraction(str(node.constant_value()))
-        return int(v) if v.denominator == 1 else None
-    return None
-
-
-def _fluent(node: Any) -> tuple[str, tuple[str, ...]] | None:
-    if node.is_fluent_exp():
-        return node.fluent().name, tuple(a.object().name for a in node.args)
-    return None
 
 
 def goal_from_problem(parsed: Any) -> tuple[dict, list[str]]:
@@ -38,14 +24,14 @@ def goal_from_problem(parsed: Any) -> tuple[dict, list[str]]:
     bounds: dict[tuple[str, str, str], dict[str, int]] = {}
     unread = []
     for g in goal_atoms(parsed):
-        f = _fluent(g)
+        f = fluent_call(g)
         if f and f[0] in ("watered", "clear"):
             goal.setdefault(f[0], []).append(f[1][0])
             continue
         side = None
         if g.is_le() or g.is_lt() or g.is_equals():
             a, b = g.args
-            fa, fb, na, nb = _fluent(a), _fluent(b), _number(a), _number(b)
+            fa, fb, na, nb = fluent_call(a), fluent_call(b), number_value(a), number_value(b)
             shift = 1 if g.is_lt() else 0
             if fa and fa[0] in ("stored", "ripe") and nb is not None:
                 side = (fa, {"at_most": nb - shift} if not g.is_equals() else {"at_least": nb, "at_most": nb})
@@ -89,10 +75,10 @@ def world_mismatches(parsed: Any, world: dict) -> list[str]:
             out.append(f"the problem leaves out the garden's {kind} objects {', '.join(missing)}")
     expected = initial_facts(world)
     for fluent_exp, value in parsed.explicit_initial_values.items():
-        f = _fluent(fluent_exp)
+        f = fluent_call(fluent_exp)
         if f is None:
             continue
-        v = value.bool_constant_value() if value.is_bool_constant() else _number(value)
+        v = value.bool_constant_value() if value.is_bool_constant() else number_value(value)
         want = expected.get(f, False if isinstance(v, bool) else 0)
         if v != want and all(a in set().union(*kinds.values()) for a in f[1]):
             out.append(f"initial state: ({f[0]} {' '.join(f[1])}) is {v} in the problem, {want} in the garden")

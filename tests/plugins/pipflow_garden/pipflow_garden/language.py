@@ -28,8 +28,7 @@ from typing import Any
 
 from lark import Lark, Token, Transformer, UnexpectedInput
 
-from pipflow.errors import Refusal, TranslationError
-from pipflow.suggest import closest
+from pipflow.plugin import Refusal, TranslationError, closest
 
 from pipflow_garden.world import ripe_total
 

@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 from typing import Any, Callable
 
-from pipflow.metrics import goal_condition_recall, travel_costs
+from pipflow.plugin import goal_condition_recall, travel_costs
 
 STEP = 0.05  # metres between the points of a path that are checked against footprints
 
