@@ -20,6 +20,7 @@ from __future__ import annotations
 import functools
 import json
 from dataclasses import dataclass, field
+from typing import Callable
 
 from lark import Lark, Token, Tree
 from lark.exceptions import UnexpectedInput
@@ -30,6 +31,7 @@ from pipflow.errors import TranslationError
 from pipflow.household.language.grammar import NOUN_DUAL, grammar_text
 from pipflow.household.language.lexicon import (ACTIVITIES, COLD, FILLER, FILLER_TYPO_TARGETS, LIGHT_CATEGORY_WORD, MARKS,
                                                 MEALS, OPPOSITE, PHRASES, UNIT_DETERMINERS, plurals, words_of)
+from pipflow.language.asides import FUNCTION_WORDS, clauses, content_free, said
 from pipflow.language.characters import refuse_unread
 from pipflow.language.numbers import read_number
 from pipflow.language.spelling import distance
@@ -231,13 +233,82 @@ def _words(tags: list[Tag], node: Tree | Token) -> str:
     return " ".join(tags[k].words for k in idx)
 
 
+#: lexicon classes of function words: alone in a clause they carry nothing an order needs
+GLUE_CLASSES = {"THE", "THAT", "IT", "IS", "SUBJ", "BE", "HAVE", "SHOULD", "INTENS", "OF", "AT", "IN", "ON", "OFF",
+                "OUT", "UP", "TO", "FROM", "WITH", "AND", "SEE", "SURE"}
+#: marks that end a clause, for setting content-free clauses aside
+CLAUSE_MARKS = {",", ".", ";", "!", "?", ":"}
+
+
+def _content(world: dict) -> Callable[[str], bool]:
+    """The test :func:`pipflow.language.asides.content_free` asks of each word: a word of a
+    world name (or a misspelling of one, or of a content word of the lexicon), a number, or a
+    lexicon word that is no function word ("put", "off" with a verb is content by the verb)."""
+    index = world_phrases(world)
+    world_words = {w for k in index for w in k}
+    lexicon_words = {w for k, (cls, _) in PHRASES.items() if cls not in GLUE_CLASSES for w in k} - FUNCTION_WORDS
+    vocab = _vocabulary(index)
+
+    def content(w: str) -> bool:
+        if w in world_words or w in lexicon_words or w.isdigit() or read_number([w], 0):
+            return True
+        if w in FUNCTION_WORDS:
+            return False
+        return len(w) >= 4 and bool(_typo_of(w, vocab))
+    return content
+
+
+def without_asides(command: str, world: dict) -> tuple[str, list[str]] | None:
+    """The command without its content-free clauses (:mod:`pipflow.language.asides`) and the
+    words of those, or None when it has none (or nothing else)."""
+    words = words_of(command)
+    content = _content(world)
+    free = [c for c in clauses(words, CLAUSE_MARKS) if content_free(c.words, content)]
+    if not free:
+        return None
+    drop = {k for c in free for k in range(c.start, c.end)}
+    kept = [w for k, w in enumerate(words) if k not in drop]
+    # a clause mark left with nothing before it in its sentence goes too
+    out: list[str] = []
+    for w in kept:
+        if w in CLAUSE_MARKS and (not out or out[-1] in CLAUSE_MARKS):
+            if w not in (",", ":") and out:
+                out[-1] = w
+            continue
+        out.append(w)
+    if not [w for w in out if w not in CLAUSE_MARKS]:
+        return None
+    return " ".join(out), [" ".join(c.words) for c in free]
+
+
 def parse(command: str, world: dict, notes: list[str] | None = None) -> list[dict]:
     """Every reading of the command as an order (module docstring); TranslationError quoting the
-    words where the command stops making sense to the grammar."""
+    words where the command stops making sense to the grammar.
+
+    A command that does not read as said is read again without its content-free clauses
+    (greetings, thanks, asides: :mod:`pipflow.language.asides`); they are set aside, said in the
+    notes and in each order's ``set_aside``. Every other clause still needs every word placed."""
     if not isinstance(command, str) or not command.strip():
         raise TranslationError("the command is empty")
     refuse_unread(command, MARKS)   # a character this reader does not read is refused, never skipped
     notes = notes if notes is not None else []
+    try:
+        return _parse(command, world, notes)
+    except TranslationError as exc:
+        trimmed = without_asides(command, world)
+        if trimmed is None:
+            raise
+        mine: list[str] = []
+        try:
+            readings = _parse(trimmed[0], world, mine)
+        except TranslationError:
+            raise exc from None
+    notes += mine + [said(trimmed[1])]
+    return [{**r, "set_aside": trimmed[1]} for r in readings]
+
+
+def _parse(command: str, world: dict, notes: list[str]) -> list[dict]:
+    """:func:`parse` of the command as said."""
     tags = tag(command, world, notes)
     if not [t for t in tags if t.cls not in ("END", "COMMA")]:
         raise TranslationError(f"{command.strip()!r} asks for nothing the offline parser can read")

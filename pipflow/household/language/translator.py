@@ -19,6 +19,7 @@ from pipflow.errors import Refusal, TranslationError
 from pipflow.household.language.parser import parse
 from pipflow.household.language.resolver import resolve
 from pipflow.household.world import members
+from pipflow.language.asides import said
 from pipflow.language.characters import line_readings
 
 
@@ -138,5 +139,7 @@ def translate(command: str, world: dict) -> dict:
     meaning = understand(command, world)
     goal = meaning["goal"]
     _leave_closed(world, goal)
+    aside = meaning["order"].get("set_aside")
     return {"goal": goal, "concrete": resolve_counts(world, goal), "order": meaning["order"],
-            "explain": meaning["explain"], "notes": meaning["notes"], "words": meaning["words"]}
+            "explain": meaning["explain"] + ([said(aside)] if aside else []), "notes": meaning["notes"],
+            "words": meaning["words"]}

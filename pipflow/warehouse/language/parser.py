@@ -33,6 +33,7 @@ from pipflow.warehouse.language.goals import GoalRules, quote
 from pipflow.warehouse.language.grammar import GRAMMAR, nullable_optionals
 from pipflow.warehouse.language.lexicon import Lexed, Lexicon
 from pipflow.language.numbers import NUMBER_WORDS
+from pipflow.language.spelling import normalize
 from pipflow.warehouse.language.resolver import resolve
 from pipflow.warehouse.language.robots import RobotSelector
 from pipflow.warehouse.language.tails import TailRules
@@ -240,6 +241,11 @@ class _Sentence(GoalRules, TailRules, Interpreter):
                 out.append(str(c.children[0].value))
             elif c.data == "place_word":
                 shelves = self.class_places(c)
+                if len(shelves) > 1 and self._plural_group(c):
+                    # "the aisles" where aisle-1 and aisle-2 share the head: those places (a count
+                    # for them still needs "each" or a total: see put)
+                    out.extend(shelves)
+                    continue
                 if len(shelves) != 1:
                     raise TranslationError(f"{quote(self.words(c))} does not say which shelf "
                                            f"(candidates: {self.index.candidates('shelf')})")
@@ -268,6 +274,15 @@ class _Sentence(GoalRules, TailRules, Interpreter):
         out = list(dict.fromkeys(out))
         self.last_places = out
         return out
+
+    def _plural_group(self, node: Tree) -> bool:
+        """Whether a place word is the plural of a head noun the world's place names share
+        ("aisles", "docks"): a group of the world. A generic word ("shelves", "places") is not."""
+        words = [t for t in node.children if isinstance(t, Token) and t.type == "PLACEWORD"]
+        if not words or words[0].start_pos is None:
+            return False
+        text = normalize(self.lexed.source[words[0].start_pos].text)
+        return text.endswith("s") and text not in self.index.groups and self.index.group(text) is not None
 
     def class_places(self, node: Tree) -> list[str]:
         """The places a class word selects: "cages" only the world's cages (a head noun their
@@ -629,8 +644,8 @@ class _Sentence(GoalRules, TailRules, Interpreter):
         words = self.words(node)
         if kind == "rule_never_group":  # "no forklift may carry widgets"
             said = [t for t in self.toks_any(node) if t.type in ("RKIND", "RTAG", "ROBOTWORD")][0]
-            group = ({"kind": str(said.value)} if said.type == "RKIND" else {"tag": str(said.value)}
-                     if said.type == "RTAG" else {"names": list(self.index.by_kind["robot"])})
+            group = (self.robots.group(said.type, str(said.value)) if said.type in ("RKIND", "RTAG")
+                     else {"names": list(self.index.by_kind["robot"])})
             scope = self.sub(node, "rscope")
             self.scoped({"mode": "never", "robots": group, "words": words}, scope[0] if scope else node)
             return
@@ -860,7 +875,8 @@ def _fail(exc: UnexpectedInput, lexed: Lexed, lex: Lexicon) -> TranslationError:
         where = f"'{sentence}' ends before it says what to do"
     return TranslationError(f"{where}: the command is not understood, so nothing is guessed "
                             f"(shelves: {lex.index.candidates('shelf')}; products: "
-                            f"{lex.index.candidates('product')}; robots: {lex.index.candidates('robot')})")
+                            f"{lex.index.candidates('product')}; robots: {lex.index.candidates('robot')}; "
+                            f"robot groups: {lex.group_names()})")
 
 
 def _read(tree: Tree, lexed: Lexed, lex: Lexicon, selector: RobotSelector, memory: dict) -> _Sentence:
@@ -979,7 +995,9 @@ def _parse(command: str, world: dict) -> dict:
     statements: list[dict] = []
     rules: list[dict] = []
     memory: dict = {}
-    for lexed in lex.sentences(command):
+    set_aside: list[str] = []
+    sentences = lex.sentences(command)
+    for lexed in sentences:
         if not lexed.tokens:
             continue
         if len(lexed.tokens) > MAX_SENTENCE_WORDS:
@@ -989,8 +1007,16 @@ def _parse(command: str, world: dict) -> dict:
                                    f"and go on in a new one)")
         try:
             reader = _one_meaning(lexed, lex, selector, world, memory)
-        except UnexpectedInput as exc:
-            raise _fail(exc, lexed, lex) from None
+        except (UnexpectedInput, TranslationError) as exc:
+            # the sentence as said does not read; without its content-free clauses it may
+            # (asides.py): they are set aside and said aloud, the rest still needs every word
+            if lexed.trimmed is None:
+                raise (_fail(exc, lexed, lex) if isinstance(exc, UnexpectedInput) else exc) from None
+            try:
+                reader = _one_meaning(lexed.trimmed, lex, selector, world, memory)
+            except (UnexpectedInput, TranslationError):
+                raise (_fail(exc, lexed, lex) if isinstance(exc, UnexpectedInput) else exc) from None
+            set_aside += list(lexed.aside)
         for k, new in reader.updates.items():
             statements[k] = new
         statements += reader.statements
@@ -1002,4 +1028,6 @@ def _parse(command: str, world: dict) -> dict:
         raise TranslationError(f"found no goal and no robot rule in '{command}' "
                                f"(shelves: {lex.index.candidates('shelf')}; "
                                f"products: {lex.index.candidates('product')})")
-    return {"command": command, "statements": statements, "rules": rules}
+    set_aside = lex.aside + set_aside
+    return {"command": command, "statements": statements, "rules": rules,
+            **({"set_aside": set_aside} if set_aside else {})}

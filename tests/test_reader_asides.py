@@ -1,0 +1,142 @@
+"""Issue 23, point 1: content-free parts of a command are set aside, not parsed, and said aloud;
+operative words (negation, only/except, bounds, quantities, a number) are never set aside, even
+misspelt. Through the real readers of both domains (warehouse and household)."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+import yaml
+
+from pipflow.errors import TranslationError
+from pipflow.household.language.translator import translate as household
+from pipflow.household.world import load_world as load_home
+from pipflow.language.asides import content_free, near_operative
+from pipflow.warehouse.language.translator import understand
+
+ROOT = Path(__file__).resolve().parent.parent
+PAPER = yaml.safe_load((ROOT / "benchmarks" / "warehouse" / "world.yaml").read_text())
+STUDIO = load_home(ROOT / "benchmarks" / "language" / "household-studio-world.yaml")
+# paper stock: shelf1 {p1 10, p2 2, p3 3}, shelf2 {p1 8, p2 5, p3 6, p4 2}
+
+
+@pytest.mark.parametrize("command, aside", [
+    ("Morning all, shelf2 needs 3 more product1", "Morning all"),
+    ("Hi team! Shelf2 needs 3 more product1", "Hi team"),
+    ("Shelf2 needs 3 more product1. Cheers", "Cheers"),
+    ("I'm off out, shelf2 needs 3 more product1", "Im off out"),
+    ("Shelf2 needs 3 more product1, thanks so much", "thanks so much"),
+])
+def test_warehouse_talk_is_set_aside_and_said(command: str, aside: str) -> None:
+    got = understand(command, PAPER)
+    assert got["goal"] == {"shelf2": {"product1": 11}}
+    assert got["order"]["set_aside"] == [aside]
+    assert any("set aside" in line and aside in line for line in got["explanation"])
+
+
+@pytest.mark.parametrize("tail", [
+    "not shelf3",            # negation naming a place: content anyway
+    "no more than that",     # a bound with no name and no number
+    "except",                # exclusivity alone
+    "5",                     # a bare number
+    "nto that",              # a misspelt negation
+    "olny",                  # a misspelt "only"
+    "all of it",             # a quantity
+    "and the prodcut",       # a misspelt name is never talk
+])
+def test_warehouse_operative_clauses_are_never_set_aside(tail: str) -> None:
+    with pytest.raises(TranslationError):
+        understand(f"Move 2 product1 from shelf1 to shelf2, {tail}", PAPER)
+
+
+def test_a_content_clause_still_needs_every_word() -> None:
+    """Only a clause with no content is set aside; a stray word inside a clause that names
+    something still sinks the command."""
+    with pytest.raises(TranslationError, match="blorp"):
+        understand("Morning all, shelf2 needs 3 more blorp product1", PAPER)
+
+
+def test_household_talk_is_set_aside_and_said() -> None:
+    got = household("Toss the orange in the recycling, it's gone mouldy", STUDIO)
+    assert got["goal"]["in"] == {"recycling": ["orange"]}
+    assert got["order"]["set_aside"] == ["it is gone mouldy"]
+    assert "set aside" in got["explain"][-1]
+    got = household("Morning! I'm off out, turn the radio off", STUDIO)
+    assert got["goal"]["state"] == {"radio": ["off"]}
+    assert got["order"]["set_aside"] == ["morning", "i am off out"]
+
+
+@pytest.mark.parametrize("tail", ["not the pantry", "except", "then the rest", "and the oragne", "2", "olny"])
+def test_household_operative_clauses_are_never_set_aside(tail: str) -> None:
+    with pytest.raises(TranslationError):
+        household(f"Put the banana in the icebox, {tail}", STUDIO)
+
+
+def test_operative_words_by_definition() -> None:
+    never = lambda w: False  # noqa: E731 - a domain that knows no word
+    for clause in (["not"], ["never"], ["only"], ["except"], ["no", "more", "than"], ["at", "least"],
+                   ["all"], ["both"], ["half"], ["the", "rest"], ["too"], ["nto"], ["exept"]):
+        assert not content_free(clause, never), clause
+    for clause in (["it", "is", "broken"], ["cheers"], ["morning", "all"], ["hi", "everyone"]):
+        assert content_free(clause, never), clause
+    assert not near_operative("gone") and not near_operative("out")  # far keys: no slip of "none", "but"
+
+
+# -- issue 23, point 3: robot groups from the world ----------------------------------------------
+FOODBANK = yaml.safe_load((ROOT / "benchmarks" / "language" / "foodbank.yaml").read_text())
+TUGS = ["tug1", "tug2", "tug3", "tug4"]
+
+
+def _never(rules: list[dict]) -> set[str]:
+    return {r for rule in rules if "never" in rule for r in rule["never"]}
+
+
+@pytest.mark.parametrize("command", [
+    "Move 2 rice sacks from aisle 1 to cooler, no tugs",
+    "No tug may carry rice sacks. Move 2 rice sacks from aisle 1 to cooler",
+])
+def test_a_name_stem_plural_is_that_group_never_every_robot(command: str) -> None:
+    """ "tugs" where robots are tug1..tug4 (no kind declared) means those four: it was read as
+    "robots", so "no tugs" forbade every robot (a misreading)."""
+    got = understand(command, FOODBANK)
+    assert _never(got["constraints"]) == set(TUGS)
+
+
+@pytest.mark.parametrize("command", [
+    "Move 2 rice sacks from aisle 1 to cooler, tugs only",
+    "Move 2 rice sacks from aisle 1 to cooler, only the tugs",
+    "Only tugs may move rice sacks. Move 2 rice sacks from aisle 1 to cooler",
+])
+def test_only_the_stem_group(command: str) -> None:
+    got = understand(command, FOODBANK)
+    assert [sorted(r["only"]) for r in got["constraints"] if "only" in r] == [TUGS]
+
+
+def test_the_stem_said_in_the_singular_is_refused_naming_them() -> None:
+    with pytest.raises(TranslationError, match="tug1, tug2, tug3, tug4"):
+        understand("The tug must not carry diapers. Move 2 rice sacks from aisle 1 to cooler", FOODBANK)
+
+
+def test_declared_kinds_come_before_stems_and_a_numbered_robot_stays_one() -> None:
+    got = understand("Robot tug 3 must not carry diapers. Move 2 rice sacks from aisle 1 to cooler", FOODBANK)
+    assert _never(got["constraints"]) == {"tug3"}
+    got = understand("No forklifts. Move 2 rice sacks from aisle 1 to cooler", FOODBANK)
+    assert _never(got["constraints"]) == {"lifty"}
+
+
+def test_a_group_word_that_matches_nothing_is_refused_naming_the_groups() -> None:
+    with pytest.raises(TranslationError, match=r"robot groups: kind amr, .*tugs \(tug1, tug2, tug3, tug4\)"):
+        understand("Move 2 rice sacks from aisle 1 to cooler, no drones", FOODBANK)
+
+
+def test_a_plural_place_head_is_that_group_of_places() -> None:
+    """ "the docks" where inbound_dock and outbound_dock share the head: those two, never every
+    place; the singular stays refused (which one?), a count still needs "each" or a total."""
+    got = understand("Empty the docks", FOODBANK)
+    assert set(got["goal"]) == {"inbound_dock", "outbound_dock"}
+    got = understand("Move all the diapers from the aisles to the cooler", FOODBANK)
+    assert got["goal"] == {"aisle-1": {"diapers": 0}, "aisle-2": {"diapers": 0}, "cooler": {"diapers": 6}}
+    with pytest.raises(TranslationError):
+        understand("Empty the dock", FOODBANK)
+    with pytest.raises(TranslationError, match="each"):
+        understand("Put 1 diapers on the docks", FOODBANK)
