@@ -140,3 +140,35 @@ def test_a_plural_place_head_is_that_group_of_places() -> None:
         understand("Empty the dock", FOODBANK)
     with pytest.raises(TranslationError, match="each"):
         understand("Put 1 diapers on the docks", FOODBANK)
+
+
+# -- issue 23: the swap misreading, spurious ambiguity, typos of grammar words -------------------
+def test_swapping_two_items_between_two_places_exchanges_those_units() -> None:
+    """ "Swap the product1 on shelf 1 with the product3 on shelf 2": shelf1's product1 goes to
+    shelf2 and shelf2's product3 to shelf1. It was read as swapping each product's count between
+    the shelves (shelf1 product1 8, product3 6): a misreading that executes."""
+    got = understand("Swap the product1 on shelf 1 with the product3 on shelf 2", PAPER)
+    assert got["goal"] == {"shelf1": {"product1": 0, "product3": 9}, "shelf2": {"product1": 18, "product3": 0}}
+    # one item on both sides is that item's counts exchanged, as before
+    got = understand("Swap the product1 on shelf 1 with the product1 on shelf 2", PAPER)
+    assert got["goal"] == {"shelf1": {"product1": 8}, "shelf2": {"product1": 10}}
+
+
+def test_the_same_rules_in_another_order_or_said_twice_are_one_meaning() -> None:
+    from pipflow.warehouse.language.parser import canonical
+    a = canonical({"s1": {"p": 1}, "s2": {"p": 2}}, [{"never": ["r1", "r2"], "product": "p", "words": "x"},
+                                                     {"only": ["r3", "r4"]}])
+    b = canonical({"s2": {"p": 2}, "s1": {"p": 1}}, [{"only": ["r4", "r3"], "words": "y"}, {"never": ["r2"], "product": "p"},
+                                                     {"never": ["r1"], "product": "p"}, {"only": ["r3", "r4"]}])
+    assert a == b
+    assert a != canonical({"s1": {"p": 1}, "s2": {"p": 2}}, [{"never": ["r1"], "product": "p"}, {"only": ["r3", "r4"]}])
+
+
+@pytest.mark.parametrize("command", ["Mvoe 3 product1 from shelf1 to shelf2", "Move 3 product1 form shelf1 to shelf2"])
+def test_a_slip_in_a_grammar_word_is_repaired(command: str) -> None:
+    assert understand(command, PAPER)["goal"] == {"shelf1": {"product1": 7}, "shelf2": {"product1": 11}}
+
+
+def test_two_repairs_that_compete_are_refused() -> None:
+    with pytest.raises(TranslationError, match="fro"):   # "for" or "from"?
+        understand("Move 3 product1 fro shelf1 to shelf2", PAPER)

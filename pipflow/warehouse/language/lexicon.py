@@ -18,7 +18,7 @@ from pipflow.errors import InputError, Refusal, TranslationError
 from pipflow.language.asides import FUNCTION_WORDS, clauses, content_free
 from pipflow.language.characters import refuse_unread
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS
-from pipflow.language.spelling import distance, normalize, tolerance
+from pipflow.language.spelling import distance, normalize, slip, tolerance
 from pipflow.warehouse.language.names import KIND_WORDS, STOPWORDS, NameIndex, Tok, read_counts, recognize
 
 #: no user writes a longer command; past this the parser would only be asked to burn time
@@ -210,13 +210,20 @@ class Lexicon:
                 or word in NUMBER_WORDS or word in FRACTIONS or word in SUPERLATIVES)
 
     def _keyword_typo(self, word: str) -> str | None:
-        """The keyword a misspelt word means ("shuld" -> should): one edit, one candidate, five
-        letters or more, same first letter; anything less sure stays unknown and is refused."""
-        if len(word) < 5 or not word.isalpha():
+        """The keyword a misspelt word means ("shuld" -> should, "mvoe" -> move, "form" -> from):
+        one edit with the same first letter for words of five letters or more, or one slip of the
+        fingers (:func:`pipflow.language.spelling.slip`) for any of three or more; one candidate
+        only: two repairs that compete ("fro": for, or from?) leave the word unknown, refused."""
+        if len(word) < 3 or not word.isalpha():
             return None
-        cands = [k for k in self.keywords if k[:1] == word[:1] and k.isalpha() and len(k) >= 4
-                 and abs(len(k) - len(word)) <= 1 and distance(word, k) <= 1]
-        return cands[0] if len(cands) == 1 else None
+        cands = set()
+        if len(word) >= 5:
+            cands |= {k for k in self.keywords if k[:1] == word[:1] and k.isalpha() and len(k) >= 4
+                      and abs(len(k) - len(word)) <= 1 and distance(word, k) <= 1}
+        # a slip of the fingers on any grammar word of 3 letters or more ("mvoe", "form" for
+        # "from", "teh"): neighbours swapped, a letter dropped or doubled, a key next to it
+        cands |= {k for k in self.keywords if k.isalpha() and len(k) >= 3 and slip(word, k)}
+        return next(iter(cands)) if len(cands) == 1 else None
 
     def robot_stem(self, word: str) -> str | None:
         """The name stem a robot word means as a group ("tugs", "tug" -> "tug" where robots are
@@ -271,14 +278,20 @@ class Lexicon:
             return True
         if word in FUNCTION_WORDS or word in FILLERS:
             return False
+        repaired = SPELLINGS.get(word) or self._keyword_typo(word)
+        if repaired is not None and repaired not in FUNCTION_WORDS:
+            return True
         return any(distance(word, w) <= max(1, tolerance(len(w))) for w in self._name_words)
 
     def _clauses(self, cur: list[Tok]) -> tuple[list[Tok], list[str]]:
         """The sentence's tokens without its content-free clauses (split at commas and colons),
         and the words of those. A name, count or kind word is content by itself."""
         marks = {",", ":", "(", ")"}
+        # the words as written (a greeting's "lads" is no misspelt "loads"); a word that a repair
+        # would make a grammar word is content (:meth:`content`)
         words = [str(t.value) if t.kind == "punct" and t.value in marks else
-                 (str(t.value).lower() if t.kind == "word" else "\0") for t in cur]
+                 (re.sub(r"[^a-z0-9]", "", t.text.lower()) or str(t.value) if t.kind == "word" else "\0")
+                 for t in cur]
         keep: list[Tok] = []
         aside: list[str] = []
         parts = clauses(words, marks)

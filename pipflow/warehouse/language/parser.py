@@ -20,6 +20,7 @@ A word the grammar cannot place is a :class:`TranslationError` that quotes it.
 from __future__ import annotations
 
 import functools
+import json
 from typing import Any, Callable
 
 from lark import Lark, Token, Tree
@@ -633,6 +634,14 @@ class _Sentence(GoalRules, TailRules, Interpreter):
         if len(places) != 2:
             raise TranslationError(f"{quote(words)}: a swap needs exactly two places "
                                    f"({len(places)} named)")
+        if node.data == "g_swap_two" and len(heads) == 2 and heads[0] != heads[1]:
+            # "Swap the product1 on shelf 1 with the product3 on shelf 2": those units change
+            # places (all of X from A to B, all of Y from B to A), not each item's count between
+            # the two places (a misreading of the earlier reader)
+            for item, src, dst in ((heads[0], places[0], places[1]), (heads[1], places[1], places[0])):
+                self.statements.append({"op": "transfer", "items": {"names": [item]}, "amount": {"all": True},
+                                        "from": {"names": [src]}, "to": {"names": [dst]}, "words": words})
+            return
         sel = {"names": list(dict.fromkeys(heads))} if heads else {"all": True}
         self.statements.append({"op": "swap", "places": {"names": places}, "items": sel, "words": words})
 
@@ -892,14 +901,31 @@ def _read(tree: Tree, lexed: Lexed, lex: Lexicon, selector: RobotSelector, memor
 MAX_READINGS = 64
 
 
+def canonical(goal: dict, constraints: list[dict]) -> str:
+    """A meaning in one form, so that two readings that ask for the same thing compare equal: the
+    goal's places and items in sorted order; the rules as a set (a conjunction: order and
+    repetition do not matter), robot lists as sets, a ``never`` rule one rule per robot (never
+    [a, b] forbids what never [a] and never [b] forbid), and a rule's source words left out.
+    Two readings that are the same rule said twice are one reading, never "two ways"."""
+    rules: set[str] = set()
+    for rule in constraints:
+        scope = {k: v for k, v in rule.items() if k not in ("only", "never", "words")}
+        if "never" in rule:
+            rules |= {json.dumps({**scope, "never": r}, sort_keys=True, default=str) for r in rule["never"]}
+        else:
+            rules.add(json.dumps({**scope, "only": sorted(rule.get("only") or [])}, sort_keys=True, default=str))
+    return json.dumps([goal, sorted(rules)], sort_keys=True, default=str)
+
+
 def _meaning(reader: _Sentence, world: dict) -> str | None:
-    """What a reading asks for, for comparison: its resolved goal and rules (None when the reading
-    does not resolve on its own: it is then no meaning to compare)."""
+    """What a reading asks for, for comparison: its resolved goal and rules in one form
+    (:func:`canonical`; None when the reading does not resolve on its own: it is then no
+    meaning to compare)."""
     try:
         r = resolve({"statements": reader.statements, "rules": reader.rules}, world, check=False)
     except PipflowError:
         return None
-    return repr((r.goal, r.constraints))
+    return canonical(r.goal, r.constraints)
 
 
 def _parts(tree: Tree) -> int:
@@ -986,7 +1012,7 @@ def _meaning_of(order: dict, world: dict) -> str | None:
         r = resolve(order, world, check=False)
     except PipflowError:
         return None
-    return repr((r.goal, r.constraints))
+    return canonical(r.goal, r.constraints)
 
 
 def _parse(command: str, world: dict) -> dict:
