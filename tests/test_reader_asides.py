@@ -172,3 +172,33 @@ def test_a_slip_in_a_grammar_word_is_repaired(command: str) -> None:
 def test_two_repairs_that_compete_are_refused() -> None:
     with pytest.raises(TranslationError, match="fro"):   # "for" or "from"?
         understand("Move 3 product1 fro shelf1 to shelf2", PAPER)
+
+
+@pytest.mark.parametrize("command, goal", [
+    ("stage 6 product2 at shelf3", {"shelf3": {"product2": 9}}),
+    ("gather every product3 at shelf2", {"shelf2": {"product3": 15}}),
+    ("Consolidate all product4 on shelf1", {"shelf1": {"product4": 12}}),
+])
+def test_gathering_and_staging_verbs_are_move_verbs(command: str, goal: dict) -> None:
+    assert understand(command, PAPER)["goal"] == goal
+
+
+def test_an_unknown_verb_is_never_guessed() -> None:
+    with pytest.raises(TranslationError, match="yeet"):
+        understand("yeet 6 product2 at shelf3", PAPER)
+
+
+@pytest.mark.parametrize("command", [
+    "First put the banana in the icebox, then put the orange in the pantry",
+    "Put the banana in the icebox and the orange in the pantry, do both in parallel",
+    "Put the banana in the icebox and the orange in the pantry. Do them at the same time.",
+])
+def test_household_manner_and_order_adverbs_are_no_condition(command: str) -> None:
+    got = household(command, STUDIO)
+    assert got["goal"]["in"] == {"icebox": ["banana"], "pantry": ["orange"]}
+    assert any("plan decides" in n for n in got["notes"])
+
+
+def test_household_manner_words_inside_a_content_clause_are_not_dropped() -> None:
+    with pytest.raises(TranslationError):
+        household("Put the first banana in the icebox", STUDIO)

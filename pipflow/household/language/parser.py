@@ -29,8 +29,9 @@ from lark.visitors import CollapseAmbiguities
 
 from pipflow.errors import TranslationError
 from pipflow.household.language.grammar import NOUN_DUAL, grammar_text
-from pipflow.household.language.lexicon import (ACTIVITIES, COLD, FILLER, FILLER_TYPO_TARGETS, LIGHT_CATEGORY_WORD, MARKS,
-                                                MEALS, OPPOSITE, PHRASES, UNIT_DETERMINERS, plurals, words_of)
+from pipflow.household.language.lexicon import (ACTIVITIES, COLD, FILLER, FILLER_TYPO_TARGETS, LIGHT_CATEGORY_WORD, MANNER_OBJECTS,
+                                                MANNERS, MARKS, MEALS, OPPOSITE, PHRASES, UNIT_DETERMINERS, plurals,
+                                                words_of)
 from pipflow.language.asides import FUNCTION_WORDS, clauses, content_free, said
 from pipflow.language.characters import refuse_unread
 from pipflow.language.numbers import read_number
@@ -135,11 +136,40 @@ def _match(words: list[str], i: int, table: dict, longest: int) -> int:
     return 0
 
 
+def _without_manner(words: list[str], notes: list[str]) -> list[str]:
+    """The words without what says how the steps run, not what the home ends like (lexicon
+    ``MANNERS``): a clause "do both in parallel", "one after the other", and "first" opening a
+    clause ("first the mug, then the plate"). A note says what was read so."""
+    out: list[str] = []
+    start = 0
+    for k, w in enumerate(words + ["."]):
+        if w not in PUNCT:
+            continue
+        clause = words[start:k]
+        body = clause[1:] if clause[:1] == ["do"] else clause
+        manner = next((m for m in MANNERS if len(m) <= len(body) and tuple(body[len(body) - len(m):]) == m), None)
+        if clause and manner is not None and tuple(body[:len(body) - len(manner)]) in MANNER_OBJECTS:
+            notes.append(f"'{' '.join(clause)}' says how the steps run, not what the home should end like; "
+                         "the plan decides the order")
+            if k < len(words) and w != "," and out and out[-1] not in PUNCT:
+                out.append(w)   # a sentence's end stays; a comma goes with the clause
+            start = k + 1
+            continue
+        if clause[:1] == ["first"] or clause[:1] == ["firstly"]:
+            notes.append(f"'{clause[0]}': the order of the steps; the plan decides it")
+            clause = clause[1:]
+        out += clause + ([w] if k < len(words) else [])
+        start = k + 1
+    while out and out[-1] == ",":
+        out.pop()
+    return out
+
+
 def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
     """The command as grammar tokens (module docstring, step 1)."""
     notes = notes if notes is not None else []
     index = world_phrases(world)
-    words = words_of(command)
+    words = _without_manner(words_of(command), notes)
     vocab = _vocabulary(index)
     # typos: a word known nowhere, close to exactly one known word, is read as that word
     for k, w in enumerate(words):

@@ -63,7 +63,8 @@ ITEMLESS: dict[str, Callable[[list[int]], dict]] = {
 }
 #: verbs whose object goes somewhere: a destination said later in the sentence is theirs too
 MOVE_VERBS = {"move", "bring", "send", "ship", "transfer", "carry", "haul", "shift", "cart", "ferry", "tow",
-              "lug", "shuttle", "wheel", "run", "relocate", "deliver", "pull", "grab"}
+              "lug", "shuttle", "wheel", "run", "relocate", "deliver", "pull", "grab", "stage", "gather",
+              "consolidate", "collect"}
 #: "P gets N X": a final count or a delivery; read only where both mean the same
 RECEIVE_VERBS = {"get", "gets", "receive", "receives", "give"}
 
