@@ -202,3 +202,53 @@ def test_household_manner_and_order_adverbs_are_no_condition(command: str) -> No
 def test_household_manner_words_inside_a_content_clause_are_not_dropped() -> None:
     with pytest.raises(TranslationError):
         household("Put the first banana in the icebox", STUDIO)
+
+
+# -- issue 23: a thing named by one word of its name ---------------------------------------------
+@pytest.mark.parametrize("command, goal", [
+    ("Double formula on aisle 2", {"aisle-2": {"baby-formula": 6}}),
+    ("Move 3 rice from inbound to outbound", {"inbound_dock": {"rice_sack": 1}, "outbound_dock": {"rice_sack": 4}}),
+])
+def test_warehouse_one_word_of_a_name_that_no_other_name_has(command: str, goal: dict) -> None:
+    assert understand(command, FOODBANK)["goal"] == goal
+
+
+def test_warehouse_a_word_two_names_share_or_a_robot_word_is_no_name() -> None:
+    with pytest.raises(TranslationError):
+        understand("Empty the dock", FOODBANK)           # inbound_dock or outbound_dock
+    cold = yaml.safe_load((ROOT / "benchmarks" / "language" / "cold.yaml").read_text())
+    from pipflow.warehouse.language.names import NameIndex
+    assert "big" not in NameIndex(cold).parts           # big_lift is a robot: "big" stays English
+
+
+def test_household_the_head_of_a_two_word_name_names_the_thing() -> None:
+    got = household("Wash the pot", STUDIO)
+    assert got["goal"]["state"]["soup_pot"] == ["clean"]
+    with pytest.raises(TranslationError, match="coffee"):   # a modifier is not read alone
+        household("Put the magazine on the coffee", STUDIO)
+
+
+# -- issue 23, point 5 (part): a refusal offers candidate readings, never acts on one ------------
+def test_an_ambiguous_rule_scope_is_refused_with_both_readings_offered() -> None:
+    command = "Move all the rice from the inbound dock to aisle 2, and only the forklift should handle it."
+    with pytest.raises(TranslationError) as caught:
+        understand(command, FOODBANK)
+    offered = caught.value.candidates
+    assert [c["constraints"] for c in offered] == [
+        [{"only": ["lifty"], "product": "rice_sack"}],
+        [{"only": ["lifty"], "product": "rice_sack", "from": "inbound_dock", "to": "aisle-2"}]]
+    assert all(c["goal"] == {"inbound_dock": {"rice_sack": 0}, "aisle-2": {"rice_sack": 4}} for c in offered)
+    assert "Did you mean: (1)" in str(caught.value) and "only forklift should handle it" in offered[0]["words"]
+
+
+def test_a_word_no_rule_places_offers_the_reading_without_it() -> None:
+    with pytest.raises(TranslationError, match="cannot place 'pronto'") as caught:
+        understand("Send 2 rice sacks to aisle 1 pronto", FOODBANK)
+    assert [c["goal"] for c in caught.value.candidates] == [{"aisle-1": {"rice_sack": 7}}]
+    assert caught.value.candidates[0]["words"] == "2 rice sacks"   # what the reading rests on
+
+
+def test_no_candidate_where_nothing_else_reads() -> None:
+    with pytest.raises(TranslationError) as caught:
+        understand("blorp", PAPER)
+    assert caught.value.candidates == []

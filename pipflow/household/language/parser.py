@@ -88,7 +88,35 @@ def world_phrases(world: dict) -> dict[tuple[str, ...], list[dict]]:
         phrases = [name] + list((c or {}).get("words") or [])
         for phrase in phrases:
             add(phrase, "category", name, phrases)
+    _add_parts(world, index)
     return index
+
+
+def _add_parts(world: dict, index: dict[tuple[str, ...], list[dict]]) -> None:
+    """The last word of a thing's name of two or more words, when no other thing's name has it
+    ("kettle" of electric_kettle, "pot" of soup_pot), names that thing: people shorten names to
+    their head noun. A modifier is not read alone ("kitchen" of kitchen_table is no room of the
+    home, "coffee" of coffee_table no drink); a word two things share, a word the index already
+    has, a word of the command lexicon or a function word names nothing alone (never a guess)."""
+    owners: dict[str, set[tuple[str, str]]] = {}
+    heads: set[str] = set()
+    for kind, table in (("object", world.get("objects") or {}), ("place", world.get("places") or {})):
+        for name, e in table.items():
+            for phrase in [name] + list(e.get("words") or []):
+                words = words_of(phrase)
+                for w in words:
+                    owners.setdefault(w, set()).add((kind, name))
+                if len(words) >= 2:
+                    heads.add(words[-1])
+    for w, things in owners.items():
+        if w not in heads or len(things) != 1 or len(w) < 3 or not w.isalpha() or (w,) in index or (w,) in PHRASES \
+                or w in FUNCTION_WORDS or any(w in key for key in FILLER) or read_number([w], 0):
+            continue
+        kind, name = next(iter(things))
+        index[(w,)] = [{"kind": kind, "name": name, "plural": False}]
+        for p in plurals(w):
+            if (p,) not in index and (p,) not in PHRASES and p not in owners:
+                index[(p,)] = [{"kind": kind, "name": name, "plural": True}]
 
 
 # ---------------------------------------------------------------------------------------------

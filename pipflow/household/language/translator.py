@@ -23,6 +23,10 @@ from pipflow.language.asides import said
 from pipflow.language.characters import line_readings
 
 
+#: readings offered at most when a command is refused as ambiguous
+MAX_CANDIDATES = 3
+
+
 def _leave_closed(world: dict, goal: dict) -> None:
     """Closed containers the plan must open are closed again unless the command said open."""
     touched = set(goal.get("in", {}))
@@ -33,6 +37,14 @@ def _leave_closed(world: dict, goal: dict) -> None:
         e = world["places"][p]
         if "openable" in e["properties"] and not e["state"].get("open") and p not in goal["state"]:
             goal["state"][p] = ["closed"]
+
+
+def _closed_again(world: dict, goal: dict) -> dict:
+    """A copy of a goal with the containers a plan opens closed again (:func:`_leave_closed`)."""
+    out = json.loads(json.dumps(goal))
+    out.setdefault("state", {})
+    _leave_closed(world, out)
+    return out
 
 
 def _key(goal: dict) -> str:
@@ -95,8 +107,14 @@ def _understand(command: str, world: dict) -> dict:
             meant = simplest
     if len(meant) > 1:
         goals = [out["goal"] for _, out in meant.values()]
+        # ask rather than refuse (issue 23): each reading is offered, in plain words, with the
+        # words it rests on; none is acted on unchosen
+        offered = [{"reading": "; ".join(out["explain"]), "goal": _closed_again(world, out["goal"]), "order": order,
+                    "words": "; ".join(st.get("words", "") for st in order["statements"])}
+                   for order, out in list(meant.values())[:MAX_CANDIDATES]]
         raise TranslationError(f"{command.strip()!r} can be read in {len(goals)} ways: "
-                               + " or ".join(json.dumps(g, sort_keys=True) for g in goals[:2]) + "; say it in other words")
+                               + " or ".join(json.dumps(g, sort_keys=True) for g in goals[:2]) + "; say it in other words",
+                               candidates=offered)
     order, out = next(iter(meant.values()))
     return {"order": order, "goal": out["goal"], "explain": out["explain"], "notes": notes + out["notes"],
             "words": out["words"]}

@@ -65,6 +65,12 @@ ITEMLESS: dict[str, Callable[[list[int]], dict]] = {
 MOVE_VERBS = {"move", "bring", "send", "ship", "transfer", "carry", "haul", "shift", "cart", "ferry", "tow",
               "lug", "shuttle", "wheel", "run", "relocate", "deliver", "pull", "grab", "stage", "gather",
               "consolidate", "collect"}
+#: verbs whose object is the units themselves ("must not move them", "should handle it"); after
+#: "do", "help with" or "work on" a pronoun is the task instead
+ITEM_VERBS = {"move", "moves", "carry", "carries", "touch", "touches", "take", "takes", "deliver", "delivers",
+              "send", "sends", "handle", "handles", "bring", "brings", "transport", "transports", "ship", "put",
+              "place", "load", "unload", "fetch", "stock", "restock", "remove", "supply", "lift", "haul"}
+PRONOUNS = {"it", "them", "that", "those", "these", "this"}
 #: "P gets N X": a final count or a delivery; read only where both mean the same
 RECEIVE_VERBS = {"get", "gets", "receive", "receives", "give"}
 
@@ -92,8 +98,10 @@ class _Sentence(GoalRules, TailRules, Interpreter):
     that continues the one before it) go to the method their rule names (lark's Interpreter
     dispatch; the methods are :class:`GoalRules` and :class:`TailRules`)."""
 
-    def __init__(self, lexed: Lexed, lex: Lexicon, robots: RobotSelector, memory: dict | None = None):
+    def __init__(self, lexed: Lexed, lex: Lexicon, robots: RobotSelector, memory: dict | None = None,
+                 picks: dict | None = None):
         self.lexed, self.lex, self.robots = lexed, lex, robots
+        self.picks = picks or {}  # a reading the user chose where the sentence has several (_Choice)
         memory = memory or {}
         # what earlier sentences said, for "them", "too", "do it" and an elided item or place
         self.prior: list[dict] = list(memory.get("statements") or [])
@@ -103,6 +111,9 @@ class _Sentence(GoalRules, TailRules, Interpreter):
         self.statements: list[dict] = []
         self.rules: list[dict] = []
         self.bind: list[dict] = []  # rules that take the sentence's goal as their scope
+        # of those, the ones whose pronoun is what the robots handle ("must not move them"): the
+        # items, or the items on this move? (finish refuses where the two differ)
+        self.item_pronouns: list[dict] = []
         self.last_item: list[str] | None = memory.get("item")
         self.last_places: list[str] | None = memory.get("places")
         self.distributive = False  # "every bay", "each of A and B": a count applies to each
@@ -701,6 +712,7 @@ class _Sentence(GoalRules, TailRules, Interpreter):
         products: list[str] = []
         places: list[dict] = []
         unscoped_all = False
+        item_pronoun = False  # "must not move them": the pronoun is the object of the robots' work
         if scope is not None:
             for c in scope.children:
                 if not isinstance(c, Tree):
@@ -712,6 +724,9 @@ class _Sentence(GoalRules, TailRules, Interpreter):
                     self.last_item = products[:1] if len(set(products)) == 1 else None
                 elif c.data == "ro_pronoun":
                     pronoun = True
+                    said = (base.get("words") or "").lower().split()
+                    at = max((k for k, w in enumerate(said) if w in PRONOUNS), default=0)
+                    item_pronoun = at > 0 and said[at - 1] in ITEM_VERBS
                 elif c.data == "ro_any":
                     unscoped_all = True
                 elif c.data == "rw_from":
@@ -743,6 +758,8 @@ class _Sentence(GoalRules, TailRules, Interpreter):
             # that", "move them") points at what the sentence asks for
             if pronoun and not unscoped_all:
                 self.bind.append(base)
+                if item_pronoun:
+                    self.item_pronouns.append(base)
             self.rules.append(base)
             return
         for product in products or [None]:
@@ -854,6 +871,18 @@ class _Sentence(GoalRules, TailRules, Interpreter):
                 if use_product:
                     new["product"] = use_product
                 if use_place:
+                    if use_product and r in self.item_pronouns and self.picks.get("scope") == "item":
+                        out.append(new)   # chosen: the product wherever it goes
+                        continue
+                    if use_product and r in self.item_pronouns and self.picks.get("scope") != "move":
+                        # "only the forklift should handle it": it is the product (any move of
+                        # it) or this move of it? Readers differ; the two rules allow different
+                        # plans, so neither is guessed
+                        raise _Choice(
+                            "scope", ("item", "move"),
+                            f"{quote(r.get('words') or '')}: the rule may hold for {use_product} wherever it "
+                            f"goes or only for this move of it ({', '.join(f'{k} {v}' for k, v in use_place.items())}); "
+                            f"say which (e.g. 'for {use_product}' or 'for that move')")
                     new.update(use_place)
                 out.append(new)
             else:
@@ -861,6 +890,31 @@ class _Sentence(GoalRules, TailRules, Interpreter):
                 r.pop("open", None)
                 out.append(r)
         self.rules = out
+
+
+def _clause_of(lexed: Lexed, k: int) -> list[int]:
+    """The terminals of the clause (between commas or colons) that holds terminal ``k``."""
+    marks = {",", ":"}
+    start = k
+    while start > 0 and str(lexed.tokens[start - 1].value) not in marks:
+        start -= 1
+    end = k
+    while end + 1 < len(lexed.tokens) and str(lexed.tokens[end + 1].value) not in marks:
+        end += 1
+    if end + 1 < len(lexed.tokens):
+        end += 1  # its comma goes with it
+    elif start > 0:
+        start -= 1
+    return list(range(start, end + 1))
+
+
+def _without(lexed: Lexed, drop: list[int]) -> Lexed:
+    """The sentence with the terminals at ``drop`` left out (a candidate reading that does not
+    read them; offered, never acted on unchosen)."""
+    keep = [k for k in range(len(lexed.tokens)) if k not in set(drop)]
+    tokens = [Token(lexed.tokens[k].type, lexed.tokens[k].value, start_pos=j) for j, k in enumerate(keep)]
+    exact = frozenset(j for j, k in enumerate(keep) if k in lexed.exact)
+    return Lexed(tokens, [lexed.source[k] for k in keep], exact)
 
 
 def _fail(exc: UnexpectedInput, lexed: Lexed, lex: Lexicon) -> TranslationError:
@@ -874,6 +928,13 @@ def _fail(exc: UnexpectedInput, lexed: Lexed, lex: Lexicon) -> TranslationError:
             return TranslationError(f"'{prev.text} {word}': cannot tell which product this count is for "
                                     f"(candidates: {lex.index.candidates('product')})")
         where = f"cannot place '{word}' in '{sentence}'"
+        error = TranslationError(f"{where}: the command is not understood, so nothing is guessed "
+                                 f"(shelves: {lex.index.candidates('shelf')}; products: "
+                                 f"{lex.index.candidates('product')}; robots: {lex.index.candidates('robot')}; "
+                                 f"robot groups: {lex.group_names()})")
+        error.unplaced = k  # type: ignore[attr-defined]
+        error.clause = _clause_of(lexed, k)  # type: ignore[attr-defined]
+        return error
     else:
         kinds = [t.type for t in lexed.tokens]
         if "PLACE" not in kinds and "ITEM" in kinds and "ROBOT" not in kinds:
@@ -889,8 +950,18 @@ def _fail(exc: UnexpectedInput, lexed: Lexed, lex: Lexicon) -> TranslationError:
                             f"robot groups: {lex.group_names()})")
 
 
-def _read(tree: Tree, lexed: Lexed, lex: Lexicon, selector: RobotSelector, memory: dict) -> _Sentence:
-    reader = _Sentence(lexed, lex, selector, memory)
+class _Choice(TranslationError):
+    """A sentence with several readings that ask for different things: which one is ``key``'s
+    option; :func:`parse` offers each as a candidate (never picks one itself)."""
+
+    def __init__(self, key: str, options: tuple, message: str):
+        super().__init__(message)
+        self.key, self.options = key, options
+
+
+def _read(tree: Tree, lexed: Lexed, lex: Lexicon, selector: RobotSelector, memory: dict,
+          picks: dict | None = None) -> _Sentence:
+    reader = _Sentence(lexed, lex, selector, memory, picks)
     for part in tree.children[0].children:
         if isinstance(part, Tree) and part.data not in ("sep", "lead"):
             reader.part(part)
@@ -900,6 +971,8 @@ def _read(tree: Tree, lexed: Lexed, lex: Lexicon, selector: RobotSelector, memor
 
 #: readings of one sentence compared at most; beyond, the sentence is refused as too ambiguous
 MAX_READINGS = 64
+#: readings offered at most when a command is refused (issue 23: ask rather than refuse)
+MAX_CANDIDATES = 3
 
 
 def canonical(goal: dict, constraints: list[dict]) -> str:
@@ -933,7 +1006,8 @@ def _parts(tree: Tree) -> int:
     return sum(1 for p in tree.children[0].children if isinstance(p, Tree) and p.data not in ("sep", "lead"))
 
 
-def _one_meaning(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict, memory: dict) -> _Sentence:
+def _one_meaning(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict, memory: dict,
+                 picks: dict | None = None) -> _Sentence:
     """Read a sentence in every way the grammar allows, and keep its meaning only if there is one.
 
     Readings that make no sense (an error, or nothing that resolves) are not meanings. Of the
@@ -941,9 +1015,10 @@ def _one_meaning(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dic
     them: the grammar's preferences never choose between meanings silently. The reading kept
     is the one with the fewest, longest parts.
     """
+    picks = picks or {}
     tree = _all_readings_parser().parse(lexed.tokens)
     if not any(t.data == "_ambig" for t in tree.iter_subtrees()):
-        return _read(tree, lexed, lex, selector, memory)
+        return _read(tree, lexed, lex, selector, memory, picks)
     sentence = " ".join(t.text for t in lexed.source).replace(" zzposs", "'s")
     readings: list[tuple[int, _Sentence, str | None]] = []
     errors: list[tuple[int, PipflowError]] = []
@@ -952,7 +1027,7 @@ def _one_meaning(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dic
             raise TranslationError(f"'{sentence}' can be read in too many ways to be sure of one; "
                                    f"say it in shorter sentences")
         try:
-            reader = _read(alt, lexed, lex, selector, memory)
+            reader = _read(alt, lexed, lex, selector, memory, picks)
         except PipflowError as exc:
             errors.append((_parts(alt), exc))
             continue
@@ -960,12 +1035,16 @@ def _one_meaning(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dic
     if not readings:
         raise min(errors, key=lambda e: e[0])[1]
     meant = [(n, r, m) for n, r, m in readings if m is not None]
-    if len({m for _, _, m in meant}) > 1:
+    distinct = list(dict.fromkeys(m for _, _, m in meant))
+    if len(distinct) > 1:
+        if picks.get("reading") is not None:   # chosen by the user among the candidates
+            return min((x for x in meant if x[2] == distinct[picks["reading"]]), key=lambda x: x[0])[1]
         (_, a, _), (_, b, _) = meant[0], next(x for x in meant if x[2] != meant[0][2])
         wa = "; ".join(s["words"] for s in a.statements + a.rules)
         wb = "; ".join(s["words"] for s in b.statements + b.rules)
-        raise TranslationError(f"'{sentence}' can be read in two ways that ask for different things "
-                               f"('{wa}' or '{wb}'); nothing is guessed: say it another way")
+        raise _Choice("reading", tuple(range(min(len(distinct), MAX_CANDIDATES))),
+                      f"'{sentence}' can be read in two ways that ask for different things "
+                      f"('{wa}' or '{wb}'); nothing is guessed: say it another way")
     return min(meant or readings, key=lambda x: x[0])[1]
 
 
@@ -982,7 +1061,15 @@ def parse(command: str, world: dict) -> dict:
     """
     readings = line_readings(command)
     if len(readings) == 1:
-        return {**_parse(readings[0], world), "command": command}
+        try:
+            return {**_parse(readings[0], world), "command": command}
+        except TranslationError as exc:
+            exc.candidates = candidates(readings[0], world, exc)
+            if exc.candidates:
+                exc.args = (f"{exc.args[0]}. Did you mean: " + "; or ".join(
+                    f"({k}) {c['reading']} [from '{c['words']}']" for k, c in enumerate(exc.candidates, 1))
+                    + "? Say it so, or choose one",)
+            raise
     broken, joined = readings
     try:
         first = _parse(broken, world)
@@ -1007,6 +1094,42 @@ def parse(command: str, world: dict) -> dict:
     return {**first, "command": command}
 
 
+def candidates(command: str, world: dict, exc: TranslationError) -> list[dict]:
+    """Up to :data:`MAX_CANDIDATES` readings to offer for a command refused as not understood or
+    ambiguous (issue 23: ask rather than refuse), each ``{"reading", "words", "goal",
+    "constraints", "order"}``: the competing readings of an ambiguous sentence, and for a word no
+    rule places, the sentence without that word and without its clause. Each is the whole
+    command read with that one choice and resolved against the world; readings that do not
+    resolve, or repeat another's meaning, are not offered. Nothing here is acted on: a user (or
+    the bench) chooses."""
+    sentence = getattr(exc, "sentence", None)
+    if sentence is None:
+        return []
+    if isinstance(exc, _Choice):
+        picks = [{exc.key: option} for option in exc.options]
+    elif getattr(exc, "unplaced", None) is not None:
+        picks = [{"drop": [exc.unplaced]}, {"drop": exc.clause}]  # type: ignore[attr-defined]
+    else:
+        return []
+    if getattr(exc, "trimmed", False):
+        picks = [{**p, "trimmed": True} for p in picks]
+    out: list[dict] = []
+    seen: set[str] = set()
+    for pick in picks:
+        try:
+            order = _parse(command, world, {sentence: pick})
+            got = resolve(order, world)
+        except PipflowError:
+            continue
+        meaning = canonical(got.goal, got.constraints)
+        if meaning in seen:
+            continue
+        seen.add(meaning)
+        out.append({"reading": "; ".join(got.explanation), "goal": got.goal, "constraints": got.constraints,
+                    "words": "; ".join(x["words"] for x in order["statements"] + order["rules"]), "order": order})
+    return out[:MAX_CANDIDATES]
+
+
 def _meaning_of(order: dict, world: dict) -> str | None:
     """What an order asks for, for comparing two readings (None: it does not resolve)."""
     try:
@@ -1016,7 +1139,11 @@ def _meaning_of(order: dict, world: dict) -> str | None:
     return canonical(r.goal, r.constraints)
 
 
-def _parse(command: str, world: dict) -> dict:
+def _parse(command: str, world: dict, picks: dict | None = None) -> dict:
+    """:func:`parse` of one reading of the line breaks. ``picks``: for a sentence (its index), the
+    reading a user chose among candidates: ``{"reading": k}``, ``{"scope": ...}``, or ``{"drop":
+    [token indexes]}`` (words left out of it); none in an ordinary run."""
+    picks = picks or {}
     lex = Lexicon(world, keywords())
     selector = RobotSelector(world, lex.index)
     statements: list[dict] = []
@@ -1024,25 +1151,39 @@ def _parse(command: str, world: dict) -> dict:
     memory: dict = {}
     set_aside: list[str] = []
     sentences = lex.sentences(command)
-    for lexed in sentences:
+    for index, lexed in enumerate(sentences):
         if not lexed.tokens:
             continue
+        pick = picks.get(index) or {}
+        if pick.get("trimmed") and lexed.trimmed is not None:
+            set_aside += list(lexed.aside)
+            lexed = lexed.trimmed
+        if pick.get("drop"):
+            lexed = _without(lexed, pick["drop"])
+            if not lexed.tokens:
+                continue
         if len(lexed.tokens) > MAX_SENTENCE_WORDS:
             shown = " ".join(t.text for t in lexed.source[:12])
             raise TranslationError(f"the sentence '{shown} ...' has {len(lexed.tokens)} words; sentences "
                                    f"are read up to {MAX_SENTENCE_WORDS} words (end it with a full stop "
                                    f"and go on in a new one)")
         try:
-            reader = _one_meaning(lexed, lex, selector, world, memory)
+            reader = _one_meaning(lexed, lex, selector, world, memory, pick)
         except (UnexpectedInput, TranslationError) as exc:
             # the sentence as said does not read; without its content-free clauses it may
             # (asides.py): they are set aside and said aloud, the rest still needs every word
+            error = _fail(exc, lexed, lex) if isinstance(exc, UnexpectedInput) else exc
+            error.sentence = index  # type: ignore[attr-defined]  # for the candidates (parse)
             if lexed.trimmed is None:
-                raise (_fail(exc, lexed, lex) if isinstance(exc, UnexpectedInput) else exc) from None
+                raise error from None
             try:
-                reader = _one_meaning(lexed.trimmed, lex, selector, world, memory)
-            except (UnexpectedInput, TranslationError):
-                raise (_fail(exc, lexed, lex) if isinstance(exc, UnexpectedInput) else exc) from None
+                reader = _one_meaning(lexed.trimmed, lex, selector, world, memory, pick)
+            except (UnexpectedInput, TranslationError) as again:
+                # what is left after the talk is set aside is what does not read: say that
+                error = _fail(again, lexed.trimmed, lex) if isinstance(again, UnexpectedInput) else again
+                error.sentence, error.trimmed = index, True  # type: ignore[attr-defined]
+                error.args = (f"{error.args[0]} (set aside: {'; '.join(repr(a) for a in lexed.aside)})",)
+                raise error from None
             set_aside += list(lexed.aside)
         for k, new in reader.updates.items():
             statements[k] = new
