@@ -40,6 +40,12 @@ class RunResult:
     def ok(self) -> bool:
         return self.status == "succeeded"
 
+    @property
+    def candidates(self) -> list:
+        """The readings a refusal offered instead (the error's ``candidates``; the input
+        ``reading`` of a workflow that declares it runs one): empty when none were offered."""
+        return list(getattr(self.exception, "candidates", None) or [])
+
 
 def find_workflow(ref: str | Path) -> Path:
     """A workflow by path, or by the name of a built-in workflow (``warehouse``)."""
@@ -287,7 +293,8 @@ def _finish(store: RunStore, executor: Executor, result: RunResult) -> None:
                 _fail(result, err)
         try:
             store.update_run(status=result.status, finished=utc_now(), error=result.error,
-                             error_step=result.error_step, seconds=round(result.seconds, 6))
+                             error_step=result.error_step, seconds=round(result.seconds, 6),
+                             **({"candidates": result.candidates} if result.candidates else {}))
         except DiskError as err:
             _fail(result, err)
     finally:

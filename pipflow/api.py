@@ -31,6 +31,9 @@ class Run:
     error: str | None = None
     error_step: str | None = None
     seconds: float = 0.0
+    #: readings a refusal offered instead (each with ``reading``, ``words``, its goal); run one
+    #: with the workflow's input ``reading`` (1-based)
+    candidates: list = field(default_factory=list)
 
     @property
     def ok(self) -> bool:
@@ -53,7 +56,8 @@ def run(workflow: str | Path, *, runs_dir: str | Path | None = None, jobs: int =
     result = run_workflow(workflow, inputs, runs_dir=runs_dir or "runs",
                           options=RunOptions(jobs=jobs, use_cache=cache))
     return Run(status=result.status, outputs=result.outputs, record=Path(result.run_dir),
-               error=result.error, error_step=result.error_step, seconds=result.seconds)
+               error=result.error, error_step=result.error_step, seconds=result.seconds,
+               candidates=result.candidates)
 
 
 def bench(tasks: str | Path, *, workflow: str | None = None, seeds: int = 1, jobs: int = 1,

@@ -202,8 +202,8 @@ class Lexicon:
         self._name_words |= {w for ws in self.index.stems.values() for w in ws}
         self.aside: list[str] = []
         #: name stems two or more robots share ("tug" of tug1..tug4): groups of the world
-        self.robot_stems = {stem for stem in self.index.stems["robot"]
-                            if sum(1 for n in self.index.names if n.kind == "robot" and n.alpha == stem) >= 2}
+        self.robot_stems = {stem for stem in self.index.stems["robot"] if stem not in KIND_WORDS["robot"]
+                            and sum(1 for n in self.index.names if n.kind == "robot" and n.alpha == stem) >= 2}
 
     def _known(self, word: str) -> bool:
         return (word in self.keywords or word in FILLERS or word in STOPWORDS

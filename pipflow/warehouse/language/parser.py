@@ -1125,7 +1125,8 @@ def candidates(command: str, world: dict, exc: TranslationError) -> list[dict]:
         if meaning in seen:
             continue
         seen.add(meaning)
-        out.append({"reading": "; ".join(got.explanation), "goal": got.goal, "constraints": got.constraints,
+        out.append({"reading": "; ".join(got.explanation), "explanation": list(got.explanation),
+                    "goal": got.goal, "constraints": got.constraints,
                     "words": "; ".join(x["words"] for x in order["statements"] + order["rules"]), "order": order})
     return out[:MAX_CANDIDATES]
 
