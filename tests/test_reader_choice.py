@@ -58,3 +58,28 @@ def test_pipflow_run_on_a_terminal_asks_which_reading(tmp_path: Path) -> None:
                                       "--no-input"], b"1\n", root)
     assert "run which reading?" not in out and code == 1, out
     assert "Did you mean: (1)" in out   # the candidates are said in the refusal all the same
+
+
+def test_the_bench_reports_candidate_recall(tmp_path: Path) -> None:
+    """Of the clear, feasible commands refused as not understood, the share whose gold reading
+    was among the candidates: here one of two (the first offers it, the second offers nothing)."""
+    from pipflow.experiments.benchmarking import BenchConfig, run_bench
+
+    fixture = Path(__file__).resolve().parent / "fixtures" / "bench"
+    tasks = tmp_path / "tasks.yaml"
+    tasks.write_text(f"""world: {fixture / 'world.yaml'}
+tasks:
+  - id: offered
+    command: "There should be 4 product1 in shelf2 pronto."
+    goal: {{shelf2: {{product1: 4}}}}
+  - id: not-offered
+    command: "Blorp shelf2 with 4 product1."
+    goal: {{shelf2: {{product1: 4}}}}
+  - id: read
+    command: "There should be 4 product1 in shelf2."
+    goal: {{shelf2: {{product1: 4}}}}
+""")
+    results = run_bench(BenchConfig(tasks_file=tasks, seeds=1, jobs=1, out=tmp_path / "out", use_cache=False),
+                        progress=False)
+    assert results["summary"]["candidate_recall"] == 0.5
+    assert "candidate_recall: 0.50" in (tmp_path / "out" / "table.md").read_text()

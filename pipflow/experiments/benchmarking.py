@@ -468,9 +468,13 @@ def understanding(rows: list[dict]) -> dict:
     (None when no run of these was measured); ``misread``: how many runs resolved another meaning
     (whatever happened next); ``misread_executed``: how many of those robots executed."""
     measured = [r for r in rows if r.get("understood") is not None]
+    asked = [r for r in rows if r.get("candidate_hit") is not None]
     return {"understood": (sum(1 for r in measured if r["understood"]) / len(measured)) if measured else None,
             "misread": sum(1 for r in rows if r.get("misread")),
-            "misread_executed": sum(1 for r in rows if r.get("misread_executed"))}
+            "misread_executed": sum(1 for r in rows if r.get("misread_executed")),
+            # of the clear, feasible commands refused as not understood: the share whose gold reading
+            # was among the candidate readings the refusal offered (issue 23)
+            "candidate_recall": (sum(1 for r in asked if r["candidate_hit"]) / len(asked)) if asked else None}
 
 
 def _by_construction(rows: list[dict], tasks: list[dict]) -> dict[str, dict]:
@@ -527,6 +531,12 @@ def markdown_table(results: dict) -> str:
             for name, c in variant["constructions"].items():
                 lines.append(f"| {name} | {c['runs']} | {_pct(c['understood'])} | {misread_cell(c)} |")
             lines.append("")
+    for variant in results["variants"]:
+        recall = (variant.get("summary") or {}).get("candidate_recall")
+        if recall is not None:
+            lines.append(f"candidate_recall{' (' + variant['name'] + ')' if len(results['variants']) > 1 else ''}: "
+                         f"{recall:.2f} (of the clear, feasible commands refused as not understood, the share "
+                         f"whose gold reading was among the readings offered)")
     lines.append(f"wall time: {results['wall_seconds']:.1f} s")
     return "\n".join(lines)
 
