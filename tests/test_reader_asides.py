@@ -252,3 +252,14 @@ def test_no_candidate_where_nothing_else_reads() -> None:
     with pytest.raises(TranslationError) as caught:
         understand("blorp", PAPER)
     assert caught.value.candidates == []
+
+
+def test_household_an_object_dropped_after_a_verb_is_it() -> None:
+    """ "slice the carrot, then put in the icebox" reads like "put it in the icebox"; with no
+    thing named before, there is nothing for "it" to be, and it stays refused."""
+    got = household("Slice the carrot, then put in the icebox", STUDIO)
+    assert got["goal"]["in"] == {"icebox": ["carrot"]} and got["goal"]["state"]["carrot"] == ["sliced"]
+    assert got["goal"] == household("Slice the carrot, then put it in the icebox", STUDIO)["goal"]
+    assert "put (it) in the icebox" in got["explain"][0] and any("read as 'it'" in n for n in got["notes"])
+    with pytest.raises(TranslationError):
+        household("Put in the icebox", STUDIO)

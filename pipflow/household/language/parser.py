@@ -373,6 +373,18 @@ def _parse(command: str, world: dict, notes: list[str]) -> list[dict]:
     try:
         tree = _lark(_dual_classes(world)).parse(tags)
     except UnexpectedInput as exc:
+        filled = _elided_objects(tags)
+        if filled is not None:
+            try:
+                tree = _lark(_dual_classes(world)).parse(filled)
+            except UnexpectedInput:
+                filled = None
+        if filled is not None:
+            notes.append("a verb with its object left out ('" + "', '".join(
+                f"{tags[k].words} {tags[k + 1].words}" for k in range(len(tags) - 1)
+                if tags[k].cls in DROPPED_OBJECT_VERBS and tags[k + 1].cls in DESTINATIONS)
+                + "') read as 'it': the thing named before")
+            return _orders(filled, tree, command)
         k = getattr(exc, "pos_in_stream", None)
         k = k if isinstance(k, int) and 0 <= k < len(tags) else len(tags) - 1
         start = k
@@ -386,6 +398,34 @@ def _parse(command: str, world: dict, notes: list[str]) -> list[dict]:
         raise TranslationError(f"could not place the words '{here}' in '{clause}': the offline parser reads "
                                "changes of state, moves, put-aways, trashing and state cues (docs/household.md); "
                                "a language model may read it") from None
+    return _orders(tags, tree, command)
+
+
+#: verbs whose object goes somewhere, and the words that say where: "then put in the fridge"
+#: drops the object "it" (the thing named before), as people do after naming it
+DROPPED_OBJECT_VERBS = {"V_PUT", "V_THROW"}
+DESTINATIONS = {"IN", "ON"}
+
+
+def _elided_objects(tags: list[Tag]) -> list[Tag] | None:
+    """The tags with "it" put back after a verb of :data:`DROPPED_OBJECT_VERBS` followed at once
+    by a destination, when a thing was named before the verb ("slice the carrot, then put in the
+    fridge"); None when there is no such verb. Tried only when the command does not parse as
+    said; "it" then means what it always means (the resolver's pronoun: the thing before)."""
+    out: list[Tag] = []
+    changed = False
+    for k, t in enumerate(tags):
+        out.append(t)
+        named_before = any(x.cls == "NOUN" or x.cls.endswith(NOUN_DUAL) for x in tags[:k])
+        if (t.cls in DROPPED_OBJECT_VERBS and k + 1 < len(tags) and tags[k + 1].cls in DESTINATIONS
+                and named_before):
+            out.append(Tag("IT", None, "(it)"))
+            changed = True
+    return out if changed else None
+
+
+def _orders(tags: list[Tag], tree: Tree, command: str) -> list[dict]:
+    """Every distinct order the parse forest holds (module docstring, step 3)."""
     readings: list[dict] = []
     seen: set[str] = set()
     trees = CollapseAmbiguities().transform(tree)
