@@ -263,3 +263,13 @@ def test_household_an_object_dropped_after_a_verb_is_it() -> None:
     assert "put (it) in the icebox" in got["explain"][0] and any("read as 'it'" in n for n in got["notes"])
     with pytest.raises(TranslationError):
         household("Put in the icebox", STUDIO)
+
+
+@pytest.mark.parametrize("tail", ["those on the left", "from the top", "on the left", "which are old",
+                                  "the old ones", "and the blorp"])
+def test_a_clause_that_narrows_the_order_is_never_set_aside(tail: str) -> None:
+    """Setting aside "..., those on the left" would widen what the robots do: refused instead."""
+    with pytest.raises(TranslationError):
+        understand(f"Move 2 product1 from shelf1 to shelf2, {tail}", PAPER)
+    with pytest.raises(TranslationError):
+        household(f"Put the banana in the icebox, {tail}", STUDIO)

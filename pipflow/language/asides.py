@@ -18,7 +18,10 @@ close to them: a misspelt name is never an aside), and its lexicon's content wor
 
 A greeting with its addressee ("Morning all", "Hi everyone") is the one place where a quantifier
 is no quantifier: a clause that opens with a greeting word and has nothing but addressee words
-after it is content-free.
+after it is content-free. A clause that opens with a word that attaches it to the one before (a
+preposition, "and", an article: "..., on the left", "..., the big ones") or that picks out which
+things are meant ("those", "which") is never set aside: it would narrow the order, and dropping it
+would widen what the robots do.
 """
 from __future__ import annotations
 
@@ -42,8 +45,16 @@ QUANTITIES = {"all", "every", "each", "both", "any", "some", "several", "few", "
               "lots", "zero", "number", "amount", "count", "quarter", "third", "bit"}
 REPETITION = {"too", "also", "same", "again", "likewise", "aswell", "back", "first", "then", "after",
               "before", "while", "until", "till", "or"}
+#: words that pick out which things are meant ("those on the left", ", which ...", "the ones"):
+#: a clause with one restricts the order it belongs to, even when it names nothing
+SELECTION = {"those", "these", "ones", "one", "which", "whichever", "whose", "where", "wherever"}
 #: the words that can never be set aside, whatever the domain
-OPERATIVE = frozenset(NEGATION | EXCLUSIVITY | BOUNDS | QUANTITIES | REPETITION)
+OPERATIVE = frozenset(NEGATION | EXCLUSIVITY | BOUNDS | QUANTITIES | REPETITION | SELECTION)
+#: words that attach a clause to the one before ("..., from the top", "..., on the left"): such a
+#: clause modifies what was said, so it is never talk to set aside
+ATTACHING = frozenset({"from", "on", "in", "at", "to", "into", "onto", "off", "of", "with", "for", "by",
+                       "under", "over", "near", "behind", "above", "below", "inside", "towards", "toward",
+                       "via", "through", "and", "plus", "that", "the", "a", "an", "its", "their"})
 #: English function words: pronouns, auxiliaries, articles, prepositions and conjunctions, and
 #: the verbs of talk ("think", "know", "got"). A domain lexicon that has them as grammar words
 #: does not make them content: alone, they say nothing an order needs ("it's broken", "I'm off out")
@@ -97,6 +108,8 @@ def content_free(words: Iterable[str], content: Callable[[str], bool]) -> bool:
         return True
     if is_greeting(ws):
         return True   # its "all" or "team" is who is greeted, no quantifier or robot group
+    if ws[0] in ATTACHING:
+        return False  # it modifies the clause before ("..., on the left", "..., and the rest")
     return not any(near_operative(w) or content(w) for w in ws)
 
 
