@@ -273,3 +273,15 @@ def test_a_clause_that_narrows_the_order_is_never_set_aside(tail: str) -> None:
         understand(f"Move 2 product1 from shelf1 to shelf2, {tail}", PAPER)
     with pytest.raises(TranslationError):
         household(f"Put the banana in the icebox, {tail}", STUDIO)
+
+
+def test_a_product_modifier_names_it_only_when_it_is_what_the_container_holds() -> None:
+    """ "rice" of rice_sack is the rice in the sacks; "oil" of oil-filter or "plants" of plant_pot
+    name something else, and are never read as those products."""
+    from pipflow.warehouse.language.names import NameIndex
+
+    spares = yaml.safe_load((ROOT / "benchmarks" / "language" / "spares.yaml").read_text())
+    nursery = yaml.safe_load((ROOT / "benchmarks" / "language" / "nursery.yaml").read_text())
+    assert "oil" not in NameIndex(spares).parts and NameIndex(spares).parts["filter"].name == "oil-filter"
+    assert "plant" not in NameIndex(nursery).parts and "plants" not in NameIndex(nursery).parts
+    assert NameIndex(FOODBANK).parts["rice"].name == "rice_sack"

@@ -51,6 +51,10 @@ STOPWORDS: set[str] = {
     "spread", "distribute", "send", "deliver", "transfer", "shift", "ship", "set", "end",
 } | NUMBER_WORDS
 
+#: container nouns: a product named "<content> <container>" (rice_sack, soup_can) may be called by
+#: its content alone
+CONTAINERS = {"sack", "can", "bag", "box", "tin", "jar", "bottle", "carton", "crate", "case", "pack", "packet",
+              "tub", "drum", "tote", "pallet", "keg", "barrel", "bucket", "pail", "cask", "basket", "tray"}
 NUMBER_MARKS = {"number", "no", "nr", "num", "#"}
 ORDINALS: dict[str, int] = {
     w: k for k, w in enumerate(
@@ -177,6 +181,12 @@ class NameIndex:
             if n.kind == "robot" or len([w for w in words if w.isalpha()]) < 2:
                 continue
             for k, w in enumerate(words):
+                # a product goes by its head noun ("formula" of baby-formula), or by what its
+                # container holds ("rice" of rice_sack, "soup" of soup_can); another modifier names
+                # something else ("oil" is no oil filter, "plants" no plant pots). A place goes by
+                # any word of its own ("inbound" of inbound_dock, "paint" of paint-shop)
+                if n.kind == "product" and k < len(words) - 1 and words[-1] not in CONTAINERS:
+                    continue
                 if w.isalpha() and len(w) >= 3 and alone(w):
                     # the plural only of the last word ("soups" of soup_can is no noun of it)
                     forms = [w] + ([f for f in plural_forms(w)[:1] if alone(f)] if k == len(words) - 1 else [])
