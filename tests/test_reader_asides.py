@@ -285,3 +285,13 @@ def test_a_product_modifier_names_it_only_when_it_is_what_the_container_holds() 
     assert "oil" not in NameIndex(spares).parts and NameIndex(spares).parts["filter"].name == "oil-filter"
     assert "plant" not in NameIndex(nursery).parts and "plants" not in NameIndex(nursery).parts
     assert NameIndex(FOODBANK).parts["rice"].name == "rice_sack"
+
+
+def test_household_a_function_word_of_a_name_is_no_content_and_the_error_is_what_is_left() -> None:
+    """ "of" of "bottle of water" is no name: "it's years out of date" is talk. When the rest
+    still does not read, the refusal quotes the rest and says what was set aside."""
+    farm = load_home(ROOT / "benchmarks" / "language" / "household-farmhouse-world.yaml")
+    got = household("Throw away the almanac, it's years out of date", farm)
+    assert got["order"]["set_aside"] == ["it is years out of date"]
+    with pytest.raises(TranslationError, match=r"blorp.*\(set aside: 'morning'\)"):
+        household("Morning! Slice the pear, and blorp the kettle", farm)

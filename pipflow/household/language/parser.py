@@ -303,7 +303,7 @@ def _content(world: dict) -> Callable[[str], bool]:
     world name (or a misspelling of one, or of a content word of the lexicon), a number, or a
     lexicon word that is no function word ("put", "off" with a verb is content by the verb)."""
     index = world_phrases(world)
-    world_words = {w for k in index for w in k}
+    world_words = {w for k in index for w in k} - FUNCTION_WORDS   # "of" of "bottle of water" is no name
     lexicon_words = {w for k, (cls, _) in PHRASES.items() if cls not in GLUE_CLASSES for w in k} - FUNCTION_WORDS
     vocab = _vocabulary(index)
 
@@ -359,8 +359,10 @@ def parse(command: str, world: dict, notes: list[str] | None = None) -> list[dic
         mine: list[str] = []
         try:
             readings = _parse(trimmed[0], world, mine)
-        except TranslationError:
-            raise exc from None
+        except TranslationError as again:
+            # what is left after the talk is set aside is what does not read: say that
+            raise TranslationError(f"{again} (set aside: {'; '.join(repr(a) for a in trimmed[1])})",
+                                   candidates=again.candidates) from None
     notes += mine + [said(trimmed[1])]
     return [{**r, "set_aside": trimmed[1]} for r in readings]
 
