@@ -469,12 +469,13 @@ def understanding(rows: list[dict]) -> dict:
     (whatever happened next); ``misread_executed``: how many of those robots executed."""
     measured = [r for r in rows if r.get("understood") is not None]
     asked = [r for r in rows if r.get("candidate_hit") is not None]
-    return {"understood": (sum(1 for r in measured if r["understood"]) / len(measured)) if measured else None,
-            "misread": sum(1 for r in rows if r.get("misread")),
-            "misread_executed": sum(1 for r in rows if r.get("misread_executed")),
-            # of the clear, feasible commands refused as not understood: the share whose gold reading
-            # was among the candidate readings the refusal offered (issue 23)
-            "candidate_recall": (sum(1 for r in asked if r["candidate_hit"]) / len(asked)) if asked else None}
+    out = {"understood": (sum(1 for r in measured if r["understood"]) / len(measured)) if measured else None,
+           "misread": sum(1 for r in rows if r.get("misread")),
+           "misread_executed": sum(1 for r in rows if r.get("misread_executed"))}
+    if asked:  # of the clear, feasible commands refused as not understood: the share whose gold
+        # reading was among the candidate readings the refusal offered (issue 23)
+        out["candidate_recall"] = sum(1 for r in asked if r["candidate_hit"]) / len(asked)
+    return out
 
 
 def _by_construction(rows: list[dict], tasks: list[dict]) -> dict[str, dict]:
