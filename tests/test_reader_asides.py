@@ -295,3 +295,8 @@ def test_household_a_function_word_of_a_name_is_no_content_and_the_error_is_what
     assert got["order"]["set_aside"] == ["it is years out of date"]
     with pytest.raises(TranslationError, match=r"blorp.*\(set aside: 'morning'\)"):
         household("Morning! Slice the pear, and blorp the kettle", farm)
+
+
+def test_an_unknown_verb_on_a_thing_is_an_instruction_never_talk() -> None:
+    with pytest.raises(TranslationError, match="recount"):
+        understand("Shelf2 needs 3 more product1, recount them", PAPER)

@@ -68,6 +68,8 @@ FUNCTION_WORDS = frozenset({
     "ah", "now", "today", "please", "yes", "yeah", "yep", "got", "get", "getting", "go", "going", "gone",
     "let", "lets", "think", "know", "see", "sure", "right", "really", "very", "still", "already", "yet",
     "when", "where", "how", "why", "like", "s", "ll", "ve", "d", "re", "m", "t"})
+#: a word followed by one of these is a verb acting on a thing ("recount them"): an instruction
+OBJECT_PRONOUNS = frozenset({"it", "them", "this", "that", "these", "those", "him", "her", "everything"})
 #: words that open a greeting or a thanks; with nothing after them but addressees, the clause is talk
 GREETINGS = frozenset({"hi", "hello", "hey", "hiya", "heya", "howdy", "morning", "afternoon", "evening", "good",
                        "greetings", "yo", "cheers", "thanks", "thank", "ta", "thx", "ok", "okay", "alright"})
@@ -110,6 +112,8 @@ def content_free(words: Iterable[str], content: Callable[[str], bool]) -> bool:
         return True   # its "all" or "team" is who is greeted, no quantifier or robot group
     if ws[0] in ATTACHING:
         return False  # it modifies the clause before ("..., on the left", "..., and the rest")
+    if any(w not in FUNCTION_WORDS and nxt in OBJECT_PRONOUNS for w, nxt in zip(ws, ws[1:])):
+        return False  # "..., recount them": an instruction about a thing, in a verb not read
     return not any(near_operative(w) or content(w) for w in ws)
 
 
