@@ -13,6 +13,9 @@ world as the world loader gives it to the workflow, and is judged (benchmarks/la
   wrongly. This is the defect that matters most, so any misread makes the exit status 1;
 * ``crashed``: an exception that is not one of pipflow's errors (a bug; exit status 1 as well).
 
+``candidate_recall`` (issue 23): of the refused clear, feasible commands, the share whose gold
+reading is among the candidate readings the refusal offered (``TranslationError.candidates``).
+
 The table is printed per construction (the task's ``construction`` label) and in total. It
 times nothing that a test relies on; the mean time per command and the load average are printed
 for the record only.
@@ -50,6 +53,9 @@ class Outcome:
     construction: str
     verdict: str
     detail: str
+    #: for a refused clear, feasible command: whether its gold is among the readings the refusal
+    #: offered (``candidates`` of the error); None for every other verdict
+    gold_offered: bool | None = None
 
 
 def default_task_files() -> list[Path]:
@@ -171,7 +177,11 @@ def run_file(tasks_path: Path) -> list[Outcome]:
         verdict, detail = judge(task, got, error, domain)
         label = task.get("construction") or task.get("category") or default_label  # household: category
         file = f"{tasks_path.parent.name}/{tasks_path.stem}"
-        out.append(Outcome(f"{file}/{task['id']}", file, label, verdict, detail))
+        offered = None
+        if verdict == "refused":
+            offered = any(judge(task, {"goal": c.get("goal"), "constraints": c.get("constraints")}, None, domain)[0]
+                          == "understood" for c in getattr(error, "candidates", None) or [])
+        out.append(Outcome(f"{file}/{task['id']}", file, label, verdict, detail, offered))
     return out
 
 
@@ -223,6 +233,11 @@ def main(argv: list[str]) -> int:
     if n:
         print(f"\n{n} commands in {len(files)} files; mean {elapsed / n * 1000:.1f} ms per command "
               f"(load average {load1:.2f} / {load5:.2f})")
+    refused = [o for o in outcomes if o.gold_offered is not None]
+    if refused:
+        hit = sum(bool(o.gold_offered) for o in refused)
+        print(f"candidate_recall: {hit}/{len(refused)} = {hit / len(refused):.2f} (refused clear, feasible "
+              f"commands whose gold reading is among the readings the refusal offered)")
     bad = sum(o.verdict in ("misread", "crashed") for o in outcomes)
     return 1 if bad else 0
 

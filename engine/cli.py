@@ -169,7 +169,47 @@ def cmd_run(args: argparse.Namespace) -> int:
             display.close()
     if args.verbose and result.exception is not None and result.status is RunStatus.FAILED:
         _print_traceback(result.exception)
+    chosen = _ask_reading(result, wf, values, args)
+    if chosen is not None:
+        _print_result(result, args.quiet)
+        print(f"running reading {chosen}", file=sys.stderr)
+        values = {**values, "reading": str(chosen) if from_text else chosen}
+        options, display = _options(args, in_order)
+        try:
+            result = run_workflow(path, values, runs_dir=args.runs_dir, options=options, inputs_from_text=from_text)
+        finally:
+            if display:
+                display.close()
     return _print_result(result, args.quiet)
+
+
+#: the workflow input that runs one of the readings a refusal offered (1-based)
+READING_INPUT = "reading"
+
+
+def _ask_reading(result, wf, values: dict, args: argparse.Namespace) -> int | None:
+    """On a terminal, a run refused with candidate readings asks which one to run (or none);
+    with ``--no-input``, off a terminal, for a workflow without a ``reading`` input, or when a
+    reading was already given, it asks nothing: the run stays refused, the candidates in its
+    record (run.json ``candidates``). Returns the reading chosen, or None."""
+    offered = result.candidates
+    if (not offered or args.no_input or READING_INPUT not in getattr(wf, "inputs", {})
+            or values.get(READING_INPUT) not in (None, "", "null") or not sys.stdin.isatty()):
+        return None
+    print("the command was not understood as said; it could mean:", file=sys.stderr)
+    for k, c in enumerate(offered, 1):
+        print(redact(f"  {k}. {c.get('reading')}  [from '{c.get('words')}']"), file=sys.stderr)
+    while True:
+        print(f"run which reading? [1-{len(offered)}, or Enter for none] ", end="", file=sys.stderr, flush=True)
+        try:
+            answer = input().strip()
+        except EOFError:
+            return None
+        if answer.lower() in ("", "none", "n", "no", "0", "q"):
+            return None
+        if answer.isdigit() and 1 <= int(answer) <= len(offered):
+            return int(answer)
+        print(f"'{answer}': answer a number from 1 to {len(offered)}, or Enter for none", file=sys.stderr)
 
 
 def cmd_validate(args: argparse.Namespace) -> int:
@@ -436,6 +476,8 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--dry-run", action="store_true", help="validate and show the inputs; run nothing")
     run.add_argument("--jobs", type=positive_int, default=1, help="independent steps to run at once")
     run.add_argument("--no-cache", action="store_true", help="ignore and do not write the step cache")
+    run.add_argument("--no-input", action="store_true",
+                     help="never ask: a command refused with candidate readings stays refused (they are in the record)")
     run.set_defaults(func=cmd_run)
 
     val = sub.add_parser("validate", parents=[common], help="check workflow files; report every problem")

@@ -63,6 +63,12 @@ class Run:
         """The run directory (what ``pipflow show``, ``report`` and ``view`` read)."""
         return Path(self.run_dir)
 
+    @property
+    def candidates(self) -> list:
+        """The readings a refusal offered instead (the error's ``candidates``; the input
+        ``reading`` of a workflow that declares it runs one): empty when none were offered."""
+        return list(getattr(self.exception, "candidates", None) or [])
+
     def report(self) -> Path:
         """Write the run's static HTML report and return its path."""
         if _report_writer is None:
@@ -349,7 +355,8 @@ def _finish(store: RunStore, executor: Executor, result: Run) -> None:
                 _fail(result, err)
         try:
             store.update_run(status=result.status, finished=utc_now(), error=result.error,
-                             error_step=result.error_step, seconds=round(result.seconds, 6))
+                             error_step=result.error_step, seconds=round(result.seconds, 6),
+                             **({"candidates": result.candidates} if result.candidates else {}))
         except DiskError as err:
             _fail(result, err)
     finally:

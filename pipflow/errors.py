@@ -133,7 +133,16 @@ class AnswerFormatError(StepError):
 
 
 class TranslationError(StepError):
-    """The offline translator cannot resolve part of a command (it never guesses)."""
+    """The offline translator cannot resolve part of a command (it never guesses).
+
+    ``candidates``: up to three readings the reader could offer instead (each a dict with
+    ``reading``, the plain words of what it would do, and ``words``, the command's words it rests
+    on, plus the goal and rules it would give), for a user to choose from; empty when there is
+    nothing to offer. A refusal stays a refusal: a candidate is never acted on unchosen."""
+
+    def __init__(self, *args: object, candidates: list | None = None):
+        super().__init__(*args)
+        self.candidates: list = list(candidates or [])
 
 
 class Refusal(PipflowError):

@@ -333,6 +333,23 @@ class TaskDomain(ABC):
         the words it could not place: refuse, never guess) or Refusal (impossible in this
         world, with the reason)."""
 
+    def read_candidate(self, candidate: dict, world: dict, domain_text: str = "",
+                       save: Save | None = None) -> dict:
+        """Model ``offline`` with a reading the user chose among those a refusal offered
+        (``TranslationError.candidates``: ``goal``, ``constraints``, ``order``, ``reading``): its
+        problem written, the outputs of :meth:`read_offline`. A domain whose goal needs more than
+        :meth:`write_problem` of the candidate's goal overrides this."""
+        goal = candidate.get("goal") or {}
+        if save is not None and candidate.get("order") is not None:
+            save("order.json", candidate["order"])
+        return {"problem": self.write_problem(world, goal, pddl_domain_name(domain_text, self.name)),
+                "goal": goal, "constraints": list(candidate.get("constraints") or []),
+                "order": candidate.get("order"),
+                "explanation": list(candidate.get("explanation") or [str(candidate.get("reading") or "")]),
+                "messages": [], "response": "", "usage": {"calls": 0, "cached": False, "prompt_tokens": 0,
+                                                          "completion_tokens": 0, "total_tokens": 0,
+                                                          "latency_s": 0.0, "cost_usd": 0.0}, "errors": []}
+
     @abstractmethod
     def write_problem(self, world: dict, goal: Any, domain_name: str, name: str = "task") -> str:
         """The PDDL problem ``name`` for ``goal`` in ``world``, naming PDDL domain ``domain_name``."""

@@ -62,6 +62,8 @@ def llm_problem(
                           "not understood (a command the parser finds impossible is refused)")] = "model",
     locate: Annotated[bool, Doc("say which section of a problem that never closes is left open (the debugger's "
                                 "reading); false in a workflow without the debugger (the 'w/o B' ablation)")] = True,
+    reading: Annotated[int | None, Doc("offline: after a refusal that offered candidate readings, the one the "
+                                       "user chose (1-based); a command read as said ignores it")] = None,
 ) -> ProblemReading:
     """``problem`` is "" when the answer held no usable problem; ``errors`` then says why, in
     words meant for the next round's prompt. ``goal`` is set by offline and grounded runs, and by
@@ -85,7 +87,7 @@ def llm_problem(
         call=ModelCall(model=resolved, api_base=api_base, temperature=temperature, max_tokens=max_tokens,
                        grounded=grounded, retry=Retry(timeout=timeout, retries=retries, deadline=deadline),
                        named=ctx.named_by_user),
-        loop=LoopRound(feedback=feedback, previous=previous, reader=reader, locate=locate),
+        loop=LoopRound(feedback=feedback, previous=previous, reader=reader, locate=locate, reading=reading),
         record=RoundRecord(save=ctx.write_artifact, log=lambda m: _log(ctx, m), cache=responses))
     ctx.metrics["llm"] = out["usage"]
     text = out.get("response") or ""

@@ -227,7 +227,8 @@ def test_doubts_from_the_command_words_are_warnings_never_feedback(tmp_path):
     reading, so the model's 5 where the command says 4 is not fed back (feedback would teach the
     model to restate numbers): it is accepted in round 1, and the run's outcome says what is
     doubtful."""
-    command = "Hmm, shelf2 ought to have 4 product3 please, zorbly glimwise."
+    # the nonsense sits in the clause that names things: a clause of its own would be set aside
+    command = "Hmm, shelf2 ought to have 4 zorbly product3 please, glimwise."
     state, why = agreement.offline_reading(command, WORLD)
     assert state == "unread", (state, why)  # this test needs a command the parser does not read
     with FakeOpenAI([grounded_answer({"shelf2": {"product3": 5}})]) as server:
@@ -403,7 +404,7 @@ def test_a_refusal_is_final_only_when_the_command_makes_the_goal_impossible():
     command = warehouse_agreement.second_opinion("shelf1 should hold 40 product1.", WORLD,
                                                  {"shelf1": {"product1": 30}}, [], None)
     assert command.refusal and "capacity" in command.refusal
-    unread = "Hmm, shelf1 ought to hold 40 product1 please, zorbly glimwise."  # nothing tells whose it is
+    unread = "Hmm, shelf1 ought to hold 40 zorbly product1 please."  # nothing tells whose it is
     refusal = "the command cannot be done in this world: over capacity"
     before = warehouse_agreement.second_opinion(unread, WORLD, {"shelf1": {"product1": 40}}, [], refusal)
     last = warehouse_agreement.second_opinion(unread, WORLD, {"shelf1": {"product1": 40}}, [], refusal, last=True)
@@ -529,9 +530,12 @@ def test_offline_first_executes_no_model_reading_a_domain_cannot_check(tmp_path,
     from pipflow import StepContext
     from pipflow.errors import TranslationError
     from pipflow.steps.llm import llm_check
+    from pipflow.taskdomain import Capability, TaskDomain
     from pipflow.warehouse.domain import WarehouseDomain
 
-    monkeypatch.setattr(WarehouseDomain, "second_opinion", lambda self, *args: None)
+    offers = TaskDomain.supports  # the protocol says which capabilities a domain has: take one away
+    monkeypatch.setattr(WarehouseDomain, "supports",
+                        lambda self, c: Capability(c) is not Capability.SECOND_OPINION and offers(self, c))
     ctx = StepContext("check", tmp_path / "artifacts", base_dir=REPO)
     args = dict(command=REPRO, world=WORLD, goal=REPRO_WRONG, constraints=[], refusal=None, model="openai/fake",
                 reader="model")

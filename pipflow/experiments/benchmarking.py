@@ -516,9 +516,14 @@ def understanding(rows: list[dict]) -> dict:
     (None when no run of these was measured); ``misread``: how many runs resolved another meaning
     (whatever happened next); ``misread_executed``: how many of those robots executed."""
     measured = [r for r in rows if r.get("understood") is not None]
-    return {"understood": (sum(1 for r in measured if r["understood"]) / len(measured)) if measured else None,
-            "misread": sum(1 for r in rows if r.get("misread")),
-            "misread_executed": sum(1 for r in rows if r.get("misread_executed"))}
+    asked = [r for r in rows if r.get("candidate_hit") is not None]
+    out = {"understood": (sum(1 for r in measured if r["understood"]) / len(measured)) if measured else None,
+           "misread": sum(1 for r in rows if r.get("misread")),
+           "misread_executed": sum(1 for r in rows if r.get("misread_executed"))}
+    if asked:  # of the clear, feasible commands refused as not understood: the share whose gold
+        # reading was among the candidate readings the refusal offered (issue 23)
+        out["candidate_recall"] = sum(1 for r in asked if r["candidate_hit"]) / len(asked)
+    return out
 
 
 def _by_construction(rows: list[dict], tasks: list[dict]) -> dict[str, dict]:
@@ -578,6 +583,12 @@ def markdown_table(results: dict) -> str:
             lines.append("")
     if faults:
         lines.append(faults)
+    for variant in results["variants"]:
+        recall = (variant.get("summary") or {}).get("candidate_recall")
+        if recall is not None:
+            lines.append(f"candidate_recall{' (' + variant['name'] + ')' if len(results['variants']) > 1 else ''}: "
+                         f"{recall:.2f} (of the clear, feasible commands refused as not understood, the share "
+                         f"whose gold reading was among the readings offered)")
     lines.append(f"wall time: {results['wall_seconds']:.1f} s")
     return "\n".join(lines)
 

@@ -53,6 +53,7 @@ def run_one(spec: RunSpec) -> dict:
               **(task.get("inputs") or {}), **spec.inputs}  # per-task inputs (a robot team, say)
     refusal = error = None
     outputs: dict = {}
+    offered: list = []
     try:
         result = run_workflow(spec.workflow, inputs, runs_dir=spec.runs_dir, inputs_from_text=True,
                               options=RunOptions(use_cache=spec.use_cache))
@@ -60,6 +61,7 @@ def run_one(spec: RunSpec) -> dict:
         row["error_kind"] = type(result.exception).__name__ if result.exception is not None else None
         row["user_error"] = isinstance(result.exception, UserError)
         outputs = result.outputs or {}
+        offered = result.candidates
         if result.status is RunStatus.REFUSED:
             refusal = result.error
         elif result.status is not RunStatus.SUCCEEDED:
@@ -103,8 +105,24 @@ def run_one(spec: RunSpec) -> dict:
     row.update(judged if judged is not None else
                {"understood": None, "misread": None, "understanding": "not measured for this domain"})
     row["misread_executed"] = misread_executed(row.get("misread"), row.get("executed"))
+    row["candidate_hit"] = _candidate_hit(domain, task, spec.world_path, row, offered)
     row["seconds"] = round(time.perf_counter() - started, 3)
     return row
+
+
+def _candidate_hit(domain: Any, task: dict, world_path: str, row: dict, offered: list) -> bool | None:
+    """For a clear, feasible command the reader refused as not understood: whether the task's
+    gold reading is among the candidate readings the refusal offered (issue 23's
+    ``candidate_recall``); None for every other run."""
+    if (row.get("status") == "succeeded" or row.get("error_kind") != NOT_UNDERSTOOD
+            or task.get("expect") == "refuse" or task.get("feasible") is False):
+        return None
+    for c in offered:
+        read = {"goal": c.get("goal"), "constraints": c.get("constraints") or []}
+        judged = domain.understand(task, read, "succeeded", None, world_path=world_path)
+        if judged and judged.get("understood"):
+            return True
+    return False
 
 
 def _recorded_model(run_dir: str | None) -> str | None:

@@ -87,6 +87,24 @@ class HouseholdDomain(TaskDomain, SecondOpinion, ComparesGoals, OwnBenchTable, E
         result = translate(command, world)
         return Reading(result["goal"], [], concrete=result["concrete"])
 
+    def read_candidate(self, candidate: dict, world: dict, domain_text: str = "",
+                       save: Save | None = None) -> dict:
+        """A reading the user chose among those a refusal offered: its goal (containers closed
+        again) with counts resolved to objects, as :meth:`read_offline` writes it."""
+        # deferred: the translator builds the lark parser (only offline reading needs it)
+        from pipflow.household.language.translator import resolve_counts
+
+        goal = candidate.get("goal") or {}
+        concrete = resolve_counts(world, goal)
+        problem = self.write_problem(world, concrete, pddl_domain_name(domain_text, self.name))
+        if save is not None:
+            save("goal.json", {"goal": goal, "concrete": concrete, "order": candidate.get("order"),
+                               "explain": [candidate.get("reading")]})
+            save("problem.pddl", problem)
+        return {"problem": problem, "goal": goal, "concrete": concrete, "constraints": [],
+                "explanation": [str(candidate.get("reading") or "")],
+                "messages": [], "response": "", "usage": dict(NO_USAGE), "errors": []}
+
     def write_problem(self, world: dict, goal: Any, domain_name: str, name: str = "task") -> str:
         return write_problem(world, goal, name=name, domain=domain_name)
 

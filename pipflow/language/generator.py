@@ -85,6 +85,8 @@ class LoopRound:
     previous: dict[str, Any] | None = None
     reader: str = "model"
     locate: bool = True
+    #: the candidate reading a user chose after a refusal that offered several (1-based; issue 23)
+    reading: int | None = None
 
 
 @dataclass
@@ -126,11 +128,11 @@ def generate(
     if loop.reader not in READERS:
         raise InputError(f"reader {loop.reader!r}: expected one of {', '.join(READERS)}")
     if model == "offline":
-        return {**offline(command, world, domain_text, record.save, domain), "reader": "offline"}
+        return {**offline(command, world, domain_text, record.save, loop.reading, domain), "reader": "offline"}
     if loop.reader == "offline-first":
         state, why = offline_reading(command, world)
         if state != "unread":  # read, or refused as impossible: the parser's word stands
-            return {**offline(command, world, domain_text, record.save, domain), "reader": "offline"}
+            return {**offline(command, world, domain_text, record.save, loop.reading, domain), "reader": "offline"}
         record.log(f"offline-first: the parser does not read the command ({why}); asking {model}")
     if not isinstance(command, str) or not command.strip():
         raise InputError("command must be a non-empty string")

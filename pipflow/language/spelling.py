@@ -61,3 +61,35 @@ def plural_forms(norm: str) -> list[str]:
     if len(norm) > 2 and norm.endswith("y") and norm[-2] not in "aeiou":
         out.append(norm[:-1] + "ies")
     return out
+
+
+#: the letters next to each letter on a QWERTY keyboard (a finger that slipped)
+_ROWS = ("qwertyuiop", "asdfghjkl", "zxcvbnm")
+KEY_NEIGHBOURS: dict[str, set[str]] = {}
+for _r, _row in enumerate(_ROWS):
+    for _c, _ch in enumerate(_row):
+        near = {_row[k] for k in (_c - 1, _c + 1) if 0 <= k < len(_row)}
+        # the rows are staggered: the row above is shifted right (g is under t and y), the row below left
+        for _other, _cols in ((_r - 1, (_c, _c + 1)), (_r + 1, (_c - 1, _c))):
+            if 0 <= _other < len(_ROWS):
+                near |= {_ROWS[_other][k] for k in _cols if 0 <= k < len(_ROWS[_other])}
+        KEY_NEIGHBOURS[_ch] = near
+
+
+def slip(word: str, target: str) -> bool:
+    """Whether ``word`` is ``target`` typed with one slip: two neighbouring letters swapped
+    ("mvoe", "form"), one letter left out or doubled in ("evry", "onnly"; targets of four letters
+    or more), or one letter replaced by a key next to it ("onlu"). A letter replaced by a far key
+    is no slip: "gone" is not "none", "out" is not "but"."""
+    if word == target:
+        return False
+    a, b = word, target
+    if len(a) == len(b):
+        diff = [k for k in range(len(a)) if a[k] != b[k]]
+        if len(diff) == 2 and diff[1] == diff[0] + 1 and a[diff[0]] == b[diff[1]] and a[diff[1]] == b[diff[0]]:
+            return True
+        return len(diff) == 1 and b[diff[0]] in KEY_NEIGHBOURS.get(a[diff[0]], set())
+    if len(b) < 4 or abs(len(a) - len(b)) != 1:
+        return False
+    short, long_ = (a, b) if len(a) < len(b) else (b, a)
+    return any(long_[:k] + long_[k + 1:] == short for k in range(len(long_)))

@@ -199,6 +199,18 @@ FILLER = {("please",), ("kindly",), ("just",), ("quickly",), ("now",), ("for", "
           ("us",), ("would", "you", "mind"), ("do", "you", "mind"), ("would", "you", "please"),
           ("could", "you", "please"), ("if", "you", "would"), ("if", "you", "could"),
           ("do", "not", "forget", "to"), ("remember", "to"), ("make", "sure", "to"), ("you", "can")}
+#: how the steps are to be run, not what the home should end like: a goal is the end state, and
+#: the planner and the allocator decide the order and what runs in parallel. A clause made only of
+#: "do" + what it does it to + one of these, or of one of these alone, is read as no condition
+#: (a note says so); "first" / "firstly" opening a clause likewise
+MANNERS = {("in", "parallel"), ("at", "the", "same", "time"), ("at", "once"), ("simultaneously",),
+           ("in", "any", "order"), ("one", "after", "the", "other"), ("one", "by", "one"), ("in", "turn"),
+           ("in", "that", "order"), ("in", "this", "order"), ("in", "order"), ("in", "sequence"),
+           ("together",), ("either", "way")}
+MANNER_OBJECTS = {("both",), ("them",), ("it",), ("these",), ("those",), ("all",), ("everything",),
+                  ("both", "of", "them"), ("all", "of", "them"), ("the", "two"), ("the", "lot"), ()}
+ORDER_OPENERS = {"first", "firstly", "start", "to", "with"}
+
 #: filler words a misspelling may be read as ("plese"): only these, long and close to no
 #: content word, so that a misspelt content word is never dropped as politeness
 FILLER_TYPO_TARGETS = {"please", "thanks"}

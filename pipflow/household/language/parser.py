@@ -20,6 +20,7 @@ from __future__ import annotations
 import functools
 import json
 from dataclasses import dataclass, field
+from typing import Callable
 
 from lark import Lark, Token, Tree
 from lark.exceptions import UnexpectedInput
@@ -28,8 +29,10 @@ from lark.visitors import CollapseAmbiguities
 
 from pipflow.errors import TranslationError
 from pipflow.household.language.grammar import NOUN_DUAL, grammar_text
-from pipflow.household.language.lexicon import (ACTIVITIES, COLD, FILLER, FILLER_TYPO_TARGETS, LIGHT_CATEGORY_WORD, MARKS,
-                                                MEALS, OPPOSITE, PHRASES, UNIT_DETERMINERS, plurals, words_of)
+from pipflow.household.language.lexicon import (ACTIVITIES, COLD, FILLER, FILLER_TYPO_TARGETS, LIGHT_CATEGORY_WORD, MANNER_OBJECTS,
+                                                MANNERS, MARKS, MEALS, OPPOSITE, PHRASES, UNIT_DETERMINERS, plurals,
+                                                words_of)
+from pipflow.language.asides import FUNCTION_WORDS, clauses, content_free, said
 from pipflow.language.characters import refuse_unread
 from pipflow.language.numbers import read_number
 from pipflow.language.spelling import distance
@@ -85,7 +88,35 @@ def world_phrases(world: dict) -> dict[tuple[str, ...], list[dict]]:
         phrases = [name] + list((c or {}).get("words") or [])
         for phrase in phrases:
             add(phrase, "category", name, phrases)
+    _add_parts(world, index)
     return index
+
+
+def _add_parts(world: dict, index: dict[tuple[str, ...], list[dict]]) -> None:
+    """The last word of a thing's name of two or more words, when no other thing's name has it
+    ("kettle" of electric_kettle, "pot" of soup_pot), names that thing: people shorten names to
+    their head noun. A modifier is not read alone ("kitchen" of kitchen_table is no room of the
+    home, "coffee" of coffee_table no drink); a word two things share, a word the index already
+    has, a word of the command lexicon or a function word names nothing alone (never a guess)."""
+    owners: dict[str, set[tuple[str, str]]] = {}
+    heads: set[str] = set()
+    for kind, table in (("object", world.get("objects") or {}), ("place", world.get("places") or {})):
+        for name, e in table.items():
+            for phrase in [name] + list(e.get("words") or []):
+                words = words_of(phrase)
+                for w in words:
+                    owners.setdefault(w, set()).add((kind, name))
+                if len(words) >= 2:
+                    heads.add(words[-1])
+    for w, things in owners.items():
+        if w not in heads or len(things) != 1 or len(w) < 3 or not w.isalpha() or (w,) in index or (w,) in PHRASES \
+                or w in FUNCTION_WORDS or any(w in key for key in FILLER) or read_number([w], 0):
+            continue
+        kind, name = next(iter(things))
+        index[(w,)] = [{"kind": kind, "name": name, "plural": False}]
+        for p in plurals(w):
+            if (p,) not in index and (p,) not in PHRASES and p not in owners:
+                index[(p,)] = [{"kind": kind, "name": name, "plural": True}]
 
 
 # ---------------------------------------------------------------------------------------------
@@ -133,11 +164,40 @@ def _match(words: list[str], i: int, table: dict, longest: int) -> int:
     return 0
 
 
+def _without_manner(words: list[str], notes: list[str]) -> list[str]:
+    """The words without what says how the steps run, not what the home ends like (lexicon
+    ``MANNERS``): a clause "do both in parallel", "one after the other", and "first" opening a
+    clause ("first the mug, then the plate"). A note says what was read so."""
+    out: list[str] = []
+    start = 0
+    for k, w in enumerate(words + ["."]):
+        if w not in PUNCT:
+            continue
+        clause = words[start:k]
+        body = clause[1:] if clause[:1] == ["do"] else clause
+        manner = next((m for m in MANNERS if len(m) <= len(body) and tuple(body[len(body) - len(m):]) == m), None)
+        if clause and manner is not None and tuple(body[:len(body) - len(manner)]) in MANNER_OBJECTS:
+            notes.append(f"'{' '.join(clause)}' says how the steps run, not what the home should end like; "
+                         "the plan decides the order")
+            if k < len(words) and w != "," and out and out[-1] not in PUNCT:
+                out.append(w)   # a sentence's end stays; a comma goes with the clause
+            start = k + 1
+            continue
+        if clause[:1] == ["first"] or clause[:1] == ["firstly"]:
+            notes.append(f"'{clause[0]}': the order of the steps; the plan decides it")
+            clause = clause[1:]
+        out += clause + ([w] if k < len(words) else [])
+        start = k + 1
+    while out and out[-1] == ",":
+        out.pop()
+    return out
+
+
 def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
     """The command as grammar tokens (module docstring, step 1)."""
     notes = notes if notes is not None else []
     index = world_phrases(world)
-    words = words_of(command)
+    words = _without_manner(words_of(command), notes)
     vocab = _vocabulary(index)
     # typos: a word known nowhere, close to exactly one known word, is read as that word
     for k, w in enumerate(words):
@@ -231,19 +291,102 @@ def _words(tags: list[Tag], node: Tree | Token) -> str:
     return " ".join(tags[k].words for k in idx)
 
 
+#: lexicon classes of function words: alone in a clause they carry nothing an order needs
+GLUE_CLASSES = {"THE", "THAT", "IT", "IS", "SUBJ", "BE", "HAVE", "SHOULD", "INTENS", "OF", "AT", "IN", "ON", "OFF",
+                "OUT", "UP", "TO", "FROM", "WITH", "AND", "SEE", "SURE"}
+#: marks that end a clause, for setting content-free clauses aside
+CLAUSE_MARKS = {",", ".", ";", "!", "?", ":"}
+
+
+def _content(world: dict) -> Callable[[str], bool]:
+    """The test :func:`pipflow.language.asides.content_free` asks of each word: a word of a
+    world name (or a misspelling of one, or of a content word of the lexicon), a number, or a
+    lexicon word that is no function word ("put", "off" with a verb is content by the verb)."""
+    index = world_phrases(world)
+    world_words = {w for k in index for w in k} - FUNCTION_WORDS   # "of" of "bottle of water" is no name
+    lexicon_words = {w for k, (cls, _) in PHRASES.items() if cls not in GLUE_CLASSES for w in k} - FUNCTION_WORDS
+    vocab = _vocabulary(index)
+
+    def content(w: str) -> bool:
+        if w in world_words or w in lexicon_words or w.isdigit() or read_number([w], 0):
+            return True
+        if w in FUNCTION_WORDS:
+            return False
+        return len(w) >= 4 and bool(_typo_of(w, vocab))
+    return content
+
+
+def without_asides(command: str, world: dict) -> tuple[str, list[str]] | None:
+    """The command without its content-free clauses (:mod:`pipflow.language.asides`) and the
+    words of those, or None when it has none (or nothing else)."""
+    words = words_of(command)
+    content = _content(world)
+    free = [c for c in clauses(words, CLAUSE_MARKS) if content_free(c.words, content)]
+    if not free:
+        return None
+    drop = {k for c in free for k in range(c.start, c.end)}
+    kept = [w for k, w in enumerate(words) if k not in drop]
+    # a clause mark left with nothing before it in its sentence goes too
+    out: list[str] = []
+    for w in kept:
+        if w in CLAUSE_MARKS and (not out or out[-1] in CLAUSE_MARKS):
+            if w not in (",", ":") and out:
+                out[-1] = w
+            continue
+        out.append(w)
+    if not [w for w in out if w not in CLAUSE_MARKS]:
+        return None
+    return " ".join(out), [" ".join(c.words) for c in free]
+
+
 def parse(command: str, world: dict, notes: list[str] | None = None) -> list[dict]:
     """Every reading of the command as an order (module docstring); TranslationError quoting the
-    words where the command stops making sense to the grammar."""
+    words where the command stops making sense to the grammar.
+
+    A command that does not read as said is read again without its content-free clauses
+    (greetings, thanks, asides: :mod:`pipflow.language.asides`); they are set aside, said in the
+    notes and in each order's ``set_aside``. Every other clause still needs every word placed."""
     if not isinstance(command, str) or not command.strip():
         raise TranslationError("the command is empty")
     refuse_unread(command, MARKS)   # a character this reader does not read is refused, never skipped
     notes = notes if notes is not None else []
+    try:
+        return _parse(command, world, notes)
+    except TranslationError as exc:
+        trimmed = without_asides(command, world)
+        if trimmed is None:
+            raise
+        mine: list[str] = []
+        try:
+            readings = _parse(trimmed[0], world, mine)
+        except TranslationError as again:
+            # what is left after the talk is set aside is what does not read: say that
+            raise TranslationError(f"{again} (set aside: {'; '.join(repr(a) for a in trimmed[1])})",
+                                   candidates=again.candidates) from None
+    notes += mine + [said(trimmed[1])]
+    return [{**r, "set_aside": trimmed[1]} for r in readings]
+
+
+def _parse(command: str, world: dict, notes: list[str]) -> list[dict]:
+    """:func:`parse` of the command as said."""
     tags = tag(command, world, notes)
     if not [t for t in tags if t.cls not in ("END", "COMMA")]:
         raise TranslationError(f"{command.strip()!r} asks for nothing the offline parser can read")
     try:
         tree = _lark(_dual_classes(world)).parse(tags)
     except UnexpectedInput as exc:
+        filled = _elided_objects(tags)
+        if filled is not None:
+            try:
+                tree = _lark(_dual_classes(world)).parse(filled)
+            except UnexpectedInput:
+                filled = None
+        if filled is not None:
+            notes.append("a verb with its object left out ('" + "', '".join(
+                f"{tags[k].words} {tags[k + 1].words}" for k in range(len(tags) - 1)
+                if tags[k].cls in DROPPED_OBJECT_VERBS and tags[k + 1].cls in DESTINATIONS)
+                + "') read as 'it': the thing named before")
+            return _orders(filled, tree, command)
         k = getattr(exc, "pos_in_stream", None)
         k = k if isinstance(k, int) and 0 <= k < len(tags) else len(tags) - 1
         start = k
@@ -257,6 +400,34 @@ def parse(command: str, world: dict, notes: list[str] | None = None) -> list[dic
         raise TranslationError(f"could not place the words '{here}' in '{clause}': the offline parser reads "
                                "changes of state, moves, put-aways, trashing and state cues (docs/household.md); "
                                "a language model may read it") from None
+    return _orders(tags, tree, command)
+
+
+#: verbs whose object goes somewhere, and the words that say where: "then put in the fridge"
+#: drops the object "it" (the thing named before), as people do after naming it
+DROPPED_OBJECT_VERBS = {"V_PUT", "V_THROW"}
+DESTINATIONS = {"IN", "ON"}
+
+
+def _elided_objects(tags: list[Tag]) -> list[Tag] | None:
+    """The tags with "it" put back after a verb of :data:`DROPPED_OBJECT_VERBS` followed at once
+    by a destination, when a thing was named before the verb ("slice the carrot, then put in the
+    fridge"); None when there is no such verb. Tried only when the command does not parse as
+    said; "it" then means what it always means (the resolver's pronoun: the thing before)."""
+    out: list[Tag] = []
+    changed = False
+    for k, t in enumerate(tags):
+        out.append(t)
+        named_before = any(x.cls == "NOUN" or x.cls.endswith(NOUN_DUAL) for x in tags[:k])
+        if (t.cls in DROPPED_OBJECT_VERBS and k + 1 < len(tags) and tags[k + 1].cls in DESTINATIONS
+                and named_before):
+            out.append(Tag("IT", None, "(it)"))
+            changed = True
+    return out if changed else None
+
+
+def _orders(tags: list[Tag], tree: Tree, command: str) -> list[dict]:
+    """Every distinct order the parse forest holds (module docstring, step 3)."""
     readings: list[dict] = []
     seen: set[str] = set()
     trees = CollapseAmbiguities().transform(tree)

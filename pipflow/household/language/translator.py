@@ -19,7 +19,12 @@ from pipflow.errors import Refusal, TranslationError
 from pipflow.household.language.parser import parse
 from pipflow.household.language.resolver import resolve
 from pipflow.household.world import members
+from pipflow.language.asides import said
 from pipflow.language.characters import line_readings
+
+
+#: readings offered at most when a command is refused as ambiguous
+MAX_CANDIDATES = 3
 
 
 def _leave_closed(world: dict, goal: dict) -> None:
@@ -32,6 +37,14 @@ def _leave_closed(world: dict, goal: dict) -> None:
         e = world["places"][p]
         if "openable" in e["properties"] and not e["state"].get("open") and p not in goal["state"]:
             goal["state"][p] = ["closed"]
+
+
+def _closed_again(world: dict, goal: dict) -> dict:
+    """A copy of a goal with the containers a plan opens closed again (:func:`_leave_closed`)."""
+    out = json.loads(json.dumps(goal))
+    out.setdefault("state", {})
+    _leave_closed(world, out)
+    return out
 
 
 def _key(goal: dict) -> str:
@@ -94,8 +107,14 @@ def _understand(command: str, world: dict) -> dict:
             meant = simplest
     if len(meant) > 1:
         goals = [out["goal"] for _, out in meant.values()]
+        # ask rather than refuse (issue 23): each reading is offered, in plain words, with the
+        # words it rests on; none is acted on unchosen
+        offered = [{"reading": "; ".join(out["explain"]), "goal": _closed_again(world, out["goal"]), "order": order,
+                    "words": "; ".join(st.get("words", "") for st in order["statements"])}
+                   for order, out in list(meant.values())[:MAX_CANDIDATES]]
         raise TranslationError(f"{command.strip()!r} can be read in {len(goals)} ways: "
-                               + " or ".join(json.dumps(g, sort_keys=True) for g in goals[:2]) + "; say it in other words")
+                               + " or ".join(json.dumps(g, sort_keys=True) for g in goals[:2]) + "; say it in other words",
+                               candidates=offered)
     order, out = next(iter(meant.values()))
     return {"order": order, "goal": out["goal"], "explain": out["explain"], "notes": notes + out["notes"],
             "words": out["words"]}
@@ -138,5 +157,7 @@ def translate(command: str, world: dict) -> dict:
     meaning = understand(command, world)
     goal = meaning["goal"]
     _leave_closed(world, goal)
+    aside = meaning["order"].get("set_aside")
     return {"goal": goal, "concrete": resolve_counts(world, goal), "order": meaning["order"],
-            "explain": meaning["explain"], "notes": meaning["notes"], "words": meaning["words"]}
+            "explain": meaning["explain"] + ([said(aside)] if aside else []), "notes": meaning["notes"],
+            "words": meaning["words"]}

@@ -167,6 +167,7 @@ addv: "add" | "bring" | "deliver" | "send" | "ship" | "move" | "transfer" | "car
     | "relocate" | "take" | "haul" | "bring" "over" | "move" "over" | "send" "over"
     | "supply" | "drop" "off" | "get" | "push" | "cart" | "ferry" | "tow" | "lug" | "shuttle" | "wheel"
     | "grab" | "run" | "pull" | "return" | "dump" | "fetch" | "dispatch"
+    | "stage" | "gather" | "consolidate" | "collect" | "restage"
 removev: "remove" | "take" | "unload" | "pull" | "withdraw" | "clear" | "get" | "move"
        | "get" "rid" "of" | "dispose" "of" | "throw" "out" | "take" "away" | "knock" | "grab" | "send" | "ship"
 splitv: "split" | "divide" | "distribute" | "share" | "spread" | "spread" "out" | "share" "out"

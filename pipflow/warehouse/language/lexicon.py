@@ -10,15 +10,16 @@ the grammar nor a filler stays an unknown terminal, so the parser refuses it by 
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from lark import Token
 
 from pipflow.errors import InputError, Refusal, TranslationError
+from pipflow.language.asides import FUNCTION_WORDS, clauses, content_free
 from pipflow.language.characters import refuse_unread
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS
-from pipflow.language.spelling import distance, normalize
-from pipflow.warehouse.language.names import STOPWORDS, NameIndex, Tok, read_counts, recognize
+from pipflow.language.spelling import distance, normalize, slip, tolerance
+from pipflow.warehouse.language.names import KIND_WORDS, STOPWORDS, NameIndex, Tok, read_counts, recognize
 
 #: no user writes a longer command; past this the parser would only be asked to burn time
 MAX_COMMAND_CHARS = 4000
@@ -72,6 +73,11 @@ class Lexed:
     #: positions of counts said with "exactly" / "precisely" (the word itself is a filler): a
     #: final count, never a delivery ("Give each shelf exactly 3")
     exact: frozenset[int] = frozenset()
+    #: the sentence without its content-free clauses (:mod:`pipflow.language.asides`), read when
+    #: the whole does not parse; None when no clause is content-free
+    trimmed: "Lexed | None" = None
+    #: the words of those clauses, for the echo
+    aside: tuple[str, ...] = ()
 
 
 def check_text(command: str) -> str:
@@ -189,19 +195,54 @@ class Lexicon:
                      for t in (r.get("tags") or [])}
         self.skills = {str(s).lower() for r in robots.values() if isinstance(r, dict)
                        for s in (r.get("skills") or {})}
+        # the words of the world's names, for telling a misspelt name from talk
+        self._name_words = {w for n in self.index.names
+                            for w in [n.alpha + n.digits, n.alpha] + re.split(r"[-_\s]+", n.name.lower())
+                            if len(w) >= 3} | {w for ws in KIND_WORDS.values() for w in ws}
+        self._name_words |= {w for ws in self.index.stems.values() for w in ws}
+        self.aside: list[str] = []
+        #: name stems two or more robots share ("tug" of tug1..tug4): groups of the world
+        self.robot_stems = {stem for stem in self.index.stems["robot"] if stem not in KIND_WORDS["robot"]
+                            and sum(1 for n in self.index.names if n.kind == "robot" and n.alpha == stem) >= 2}
 
     def _known(self, word: str) -> bool:
         return (word in self.keywords or word in FILLERS or word in STOPWORDS
                 or word in NUMBER_WORDS or word in FRACTIONS or word in SUPERLATIVES)
 
     def _keyword_typo(self, word: str) -> str | None:
-        """The keyword a misspelt word means ("shuld" -> should): one edit, one candidate, five
-        letters or more, same first letter; anything less sure stays unknown and is refused."""
-        if len(word) < 5 or not word.isalpha():
+        """The keyword a misspelt word means ("shuld" -> should, "mvoe" -> move, "form" -> from):
+        one edit with the same first letter for words of five letters or more, or one slip of the
+        fingers (:func:`pipflow.language.spelling.slip`) for any of three or more; one candidate
+        only: two repairs that compete ("fro": for, or from?) leave the word unknown, refused."""
+        if len(word) < 3 or not word.isalpha():
             return None
-        cands = [k for k in self.keywords if k[:1] == word[:1] and k.isalpha() and len(k) >= 4
-                 and abs(len(k) - len(word)) <= 1 and distance(word, k) <= 1]
-        return cands[0] if len(cands) == 1 else None
+        cands = set()
+        if len(word) >= 5:
+            cands |= {k for k in self.keywords if k[:1] == word[:1] and k.isalpha() and len(k) >= 4
+                      and abs(len(k) - len(word)) <= 1 and distance(word, k) <= 1}
+        # a slip of the fingers on any grammar word of 3 letters or more ("mvoe", "form" for
+        # "from", "teh"): neighbours swapped, a letter dropped or doubled, a key next to it
+        cands |= {k for k in self.keywords if k.isalpha() and len(k) >= 3 and slip(word, k)}
+        return next(iter(cands)) if len(cands) == 1 else None
+
+    def robot_stem(self, word: str) -> str | None:
+        """The name stem a robot word means as a group ("tugs", "tug" -> "tug" where robots are
+        tug1..tug4), when it is no English word for robots ("robots", "bots" mean every robot)
+        and no declared kind or tag (those come first: :meth:`_group`)."""
+        low = normalize(word)
+        for v in dict.fromkeys([low, low[:-1] if low.endswith("s") else low, low[:-2] if low.endswith("es") else low]):
+            if v in KIND_WORDS["robot"]:
+                return None
+            if v in self.robot_stems:
+                return v
+        return None
+
+    def group_names(self) -> str:
+        """The robot groups of this world, for a refusal of a group word that matches none."""
+        parts = [f"kind {k}" for k in sorted(self.kinds)] + [f"tag {t}" for t in sorted(self.tags)]
+        parts += [f"{stem}s ({', '.join(n.name for n in self.index.names if n.kind == 'robot' and n.alpha == stem)})"
+                  for stem in sorted(self.robot_stems)]
+        return ", ".join(parts) or "none but all robots"
 
     def _joined(self, text: str) -> str:
         """Multi-word robot kinds and tags ("night shift") as one word, so they read as one."""
@@ -224,8 +265,54 @@ class Lexicon:
                     return "RTAG", tag
         return None
 
+    def content(self, word: str) -> bool:
+        """Whether a word of a clause carries content here (:func:`pipflow.language.asides.content_free`):
+        a grammar word that is no function word, a number or fraction word, a robot kind, tag,
+        skill or superlative, or a word within a typo's reach of a name of the world (a misspelt
+        name is never talk)."""
+        if word in self.keywords and word not in FUNCTION_WORDS:
+            return True
+        if word in NUMBER_WORDS or word in FRACTIONS or word in SUPERLATIVES or word in self.skills:
+            return True
+        if self._group(word) is not None or _number_typo(word) is not None:
+            return True
+        if word in FUNCTION_WORDS or word in FILLERS:
+            return False
+        repaired = SPELLINGS.get(word) or self._keyword_typo(word)
+        if repaired is not None and repaired not in FUNCTION_WORDS:
+            return True
+        return any(distance(word, w) <= max(1, tolerance(len(w))) for w in self._name_words)
+
+    def _clauses(self, cur: list[Tok]) -> tuple[list[Tok], list[str]]:
+        """The sentence's tokens without its content-free clauses (split at commas and colons),
+        and the words of those. A name, count or kind word is content by itself."""
+        marks = {",", ":", "(", ")"}
+        # the words as written (a greeting's "lads" is no misspelt "loads"); a word that a repair
+        # would make a grammar word is content (:meth:`content`)
+        words = [str(t.value) if t.kind == "punct" and t.value in marks else
+                 (re.sub(r"[^a-z0-9]", "", t.text.lower()) or str(t.value) if t.kind == "word" else "\0")
+                 for t in cur]
+        keep: list[Tok] = []
+        aside: list[str] = []
+        parts = clauses(words, marks)
+        free = [c for c in parts if content_free(c.words, lambda w: w == "\0" or self.content(w))]
+        if not free:
+            return cur, []
+        drop = {k for c in free for k in range(c.start, c.end)}
+        for c in free:
+            aside.append(" ".join(t.text for t in cur[c.start:c.end]))
+            # the clause mark that set it off goes with it
+            if c.end < len(cur) and cur[c.end].kind == "punct":
+                drop.add(c.end)
+            elif c.start > 0 and cur[c.start - 1].kind == "punct":
+                drop.add(c.start - 1)
+        keep = [t for k, t in enumerate(cur) if k not in drop]
+        return keep, aside
+
     def sentences(self, command: str) -> list[Lexed]:
-        """The command's sentences as terminals (split at . ; ! ?)."""
+        """The command's sentences as terminals (split at . ; ! ?). A sentence with no content
+        (:meth:`content`) is set aside: not returned, its words kept in :attr:`aside`; a sentence
+        with some content-free clauses carries its reading without them as ``trimmed``."""
         text = self._joined(check_text(command))
         toks = recognize(text, self.index)
         fixed = []
@@ -239,10 +326,18 @@ class Lexicon:
         toks = corrected(read_counts(_split_hyphens(fixed, self.keywords)))
         out: list[Lexed] = []
         cur: list[Tok] = []
+        self.aside: list[str] = []
         for t in toks + [Tok("punct", ".", ".")]:
             if t.kind == "punct" and t.value in (".", ";", "!", "?"):
                 if cur:
-                    out.append(self._terminals(cur))
+                    keep, aside = self._clauses(cur)
+                    if not [x for x in keep if x.kind != "punct"]:
+                        self.aside.append(" ".join(x.text for x in cur))
+                    elif aside:
+                        trimmed = self._terminals(keep)
+                        out.append(replace(self._terminals(cur), trimmed=trimmed, aside=tuple(aside)))
+                    else:
+                        out.append(self._terminals(cur))
                 cur = []
             else:
                 cur.append(t)
@@ -253,7 +348,7 @@ class Lexicon:
         source: list[Tok] = []
         exact: set[int] = set()
         said_exactly = False
-        for t in toks:
+        for k, t in enumerate(toks):
             term = self._terminal(t)
             if term is None:
                 said_exactly = t.kind == "word" and str(t.value) in EXACT_WORDS
@@ -261,6 +356,11 @@ class Lexicon:
             if said_exactly and term[0] == "NUM":
                 exact.add(len(tokens))
             said_exactly = False
+            if term[0] == "ROBOTWORD" and not (k + 1 < len(toks) and toks[k + 1].kind == "num"):
+                # "tugs" where the robots are tug1..tug4: a group of the world, never every robot
+                stem = self.robot_stem(t.text)
+                if stem is not None:
+                    term = ("RKIND", stem)
             if term[0] == "POSS" and tokens and tokens[-1].type == "ROBOT" and "is" in self.keywords:
                 term = (self.keywords["is"], "is")  # "Jumbo's the only one ...": a robot's "'s" is "is"
             tokens.append(Token(term[0], term[1], start_pos=len(tokens)))

@@ -51,6 +51,10 @@ STOPWORDS: set[str] = {
     "spread", "distribute", "send", "deliver", "transfer", "shift", "ship", "set", "end",
 } | NUMBER_WORDS
 
+#: container nouns: a product named "<content> <container>" (rice_sack, soup_can) may be called by
+#: its content alone
+CONTAINERS = {"sack", "can", "bag", "box", "tin", "jar", "bottle", "carton", "crate", "case", "pack", "packet",
+              "tub", "drum", "tote", "pallet", "keg", "barrel", "bucket", "pail", "cask", "basket", "tray"}
 NUMBER_MARKS = {"number", "no", "nr", "num", "#"}
 ORDINALS: dict[str, int] = {
     w: k for k, w in enumerate(
@@ -158,6 +162,38 @@ class NameIndex:
                     x.kind != "shelf" and x.alpha == head for x in self.names):
                 del self.groups[head]
         self.stems["shelf"] |= set(self.groups)
+
+        # One word of a name of two or more words that no other name has ("formula" of
+        # baby-formula, "inbound" of inbound_dock, "rice" of rice_sack) names that thing: people
+        # shorten names. A word two names share ("dock" of two docks), a grammar or filler word
+        # ("sack", "can"), a kind word, a head several places share or a number word names nothing
+        # alone (a group, a word of the grammar, or refused: never a guess between names).
+        owners: dict[str, set[str]] = {}
+        by_name = {n.name: n for n in self.names}
+
+        def alone(word: str) -> bool:
+            return (word not in STOPWORDS and word not in self.reserved and word not in self.forms
+                    and word not in NUMBER_WORDS and word not in self.groups
+                    and not any(word in KIND_WORDS[k] or word in self.stems[k] for k in KINDS))
+        for n in self.names:
+            words = [w for w in re.split(r"[-_\s]+", n.name.lower()) if w]
+            # robots go by name, kind or tag: a word of a robot's name ("big" of big_lift) is English
+            if n.kind == "robot" or len([w for w in words if w.isalpha()]) < 2:
+                continue
+            for k, w in enumerate(words):
+                # a product goes by its head noun ("formula" of baby-formula), or by what its
+                # container holds ("rice" of rice_sack, "soup" of soup_can); another modifier names
+                # something else ("oil" is no oil filter, "plants" no plant pots). A place goes by
+                # any word of its own ("inbound" of inbound_dock, "paint" of paint-shop)
+                if n.kind == "product" and k < len(words) - 1 and words[-1] not in CONTAINERS:
+                    continue
+                if w.isalpha() and len(w) >= 3 and alone(w):
+                    # the plural only of the last word ("soups" of soup_can is no noun of it)
+                    forms = [w] + ([f for f in plural_forms(w)[:1] if alone(f)] if k == len(words) - 1 else [])
+                    for form in forms:
+                        owners.setdefault(form, set()).add(n.name)
+        self.parts: dict[str, _Name] = {form: by_name[next(iter(names))] for form, names in owners.items()
+                                        if len(names) == 1}
 
     def group(self, word: str) -> list[str] | None:
         """The places a plural or class word selects ("cages" -> the places whose head is cage).
@@ -349,6 +385,9 @@ class NameIndex:
         whole = self.forms.get(norm)
         if whole is not None and not (norm != whole.alpha + whole.digits and low in STOPWORDS):
             return Tok("name", raw[i], whole.name, whole.kind), i + 1  # "sku-220s", "label_rolls"
+        part = self.parts.get(norm)
+        if part is not None:
+            return Tok("name", raw[i], part.name, part.kind), i + 1  # "formula" for baby-formula
         alpha, digits = split_digits(norm)
         found = self.lookup(alpha, digits, raw[i])
         return (found, i + 1) if found is not None else None

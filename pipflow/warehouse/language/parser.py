@@ -20,6 +20,7 @@ A word the grammar cannot place is a :class:`TranslationError` that quotes it.
 from __future__ import annotations
 
 import functools
+import json
 from typing import Any, Callable
 
 from lark import Lark, Token, Tree
@@ -33,6 +34,7 @@ from pipflow.warehouse.language.goals import GoalRules, quote
 from pipflow.warehouse.language.grammar import GRAMMAR, nullable_optionals
 from pipflow.warehouse.language.lexicon import Lexed, Lexicon
 from pipflow.language.numbers import NUMBER_WORDS
+from pipflow.language.spelling import normalize
 from pipflow.warehouse.language.resolver import resolve
 from pipflow.warehouse.language.robots import RobotSelector
 from pipflow.warehouse.language.tails import TailRules
@@ -61,7 +63,14 @@ ITEMLESS: dict[str, Callable[[list[int]], dict]] = {
 }
 #: verbs whose object goes somewhere: a destination said later in the sentence is theirs too
 MOVE_VERBS = {"move", "bring", "send", "ship", "transfer", "carry", "haul", "shift", "cart", "ferry", "tow",
-              "lug", "shuttle", "wheel", "run", "relocate", "deliver", "pull", "grab"}
+              "lug", "shuttle", "wheel", "run", "relocate", "deliver", "pull", "grab", "stage", "gather",
+              "consolidate", "collect"}
+#: verbs whose object is the units themselves ("must not move them", "should handle it"); after
+#: "do", "help with" or "work on" a pronoun is the task instead
+ITEM_VERBS = {"move", "moves", "carry", "carries", "touch", "touches", "take", "takes", "deliver", "delivers",
+              "send", "sends", "handle", "handles", "bring", "brings", "transport", "transports", "ship", "put",
+              "place", "load", "unload", "fetch", "stock", "restock", "remove", "supply", "lift", "haul"}
+PRONOUNS = {"it", "them", "that", "those", "these", "this"}
 #: "P gets N X": a final count or a delivery; read only where both mean the same
 RECEIVE_VERBS = {"get", "gets", "receive", "receives", "give"}
 
@@ -89,8 +98,10 @@ class _Sentence(GoalRules, TailRules, Interpreter):
     that continues the one before it) go to the method their rule names (lark's Interpreter
     dispatch; the methods are :class:`GoalRules` and :class:`TailRules`)."""
 
-    def __init__(self, lexed: Lexed, lex: Lexicon, robots: RobotSelector, memory: dict | None = None):
+    def __init__(self, lexed: Lexed, lex: Lexicon, robots: RobotSelector, memory: dict | None = None,
+                 picks: dict | None = None):
         self.lexed, self.lex, self.robots = lexed, lex, robots
+        self.picks = picks or {}  # a reading the user chose where the sentence has several (_Choice)
         memory = memory or {}
         # what earlier sentences said, for "them", "too", "do it" and an elided item or place
         self.prior: list[dict] = list(memory.get("statements") or [])
@@ -100,6 +111,9 @@ class _Sentence(GoalRules, TailRules, Interpreter):
         self.statements: list[dict] = []
         self.rules: list[dict] = []
         self.bind: list[dict] = []  # rules that take the sentence's goal as their scope
+        # of those, the ones whose pronoun is what the robots handle ("must not move them"): the
+        # items, or the items on this move? (finish refuses where the two differ)
+        self.item_pronouns: list[dict] = []
         self.last_item: list[str] | None = memory.get("item")
         self.last_places: list[str] | None = memory.get("places")
         self.distributive = False  # "every bay", "each of A and B": a count applies to each
@@ -240,6 +254,11 @@ class _Sentence(GoalRules, TailRules, Interpreter):
                 out.append(str(c.children[0].value))
             elif c.data == "place_word":
                 shelves = self.class_places(c)
+                if len(shelves) > 1 and self._plural_group(c):
+                    # "the aisles" where aisle-1 and aisle-2 share the head: those places (a count
+                    # for them still needs "each" or a total: see put)
+                    out.extend(shelves)
+                    continue
                 if len(shelves) != 1:
                     raise TranslationError(f"{quote(self.words(c))} does not say which shelf "
                                            f"(candidates: {self.index.candidates('shelf')})")
@@ -268,6 +287,15 @@ class _Sentence(GoalRules, TailRules, Interpreter):
         out = list(dict.fromkeys(out))
         self.last_places = out
         return out
+
+    def _plural_group(self, node: Tree) -> bool:
+        """Whether a place word is the plural of a head noun the world's place names share
+        ("aisles", "docks"): a group of the world. A generic word ("shelves", "places") is not."""
+        words = [t for t in node.children if isinstance(t, Token) and t.type == "PLACEWORD"]
+        if not words or words[0].start_pos is None:
+            return False
+        text = normalize(self.lexed.source[words[0].start_pos].text)
+        return text.endswith("s") and text not in self.index.groups and self.index.group(text) is not None
 
     def class_places(self, node: Tree) -> list[str]:
         """The places a class word selects: "cages" only the world's cages (a head noun their
@@ -618,6 +646,14 @@ class _Sentence(GoalRules, TailRules, Interpreter):
         if len(places) != 2:
             raise TranslationError(f"{quote(words)}: a swap needs exactly two places "
                                    f"({len(places)} named)")
+        if node.data == "g_swap_two" and len(heads) == 2 and heads[0] != heads[1]:
+            # "Swap the product1 on shelf 1 with the product3 on shelf 2": those units change
+            # places (all of X from A to B, all of Y from B to A), not each item's count between
+            # the two places (a misreading of the earlier reader)
+            for item, src, dst in ((heads[0], places[0], places[1]), (heads[1], places[1], places[0])):
+                self.statements.append({"op": "transfer", "items": {"names": [item]}, "amount": {"all": True},
+                                        "from": {"names": [src]}, "to": {"names": [dst]}, "words": words})
+            return
         sel = {"names": list(dict.fromkeys(heads))} if heads else {"all": True}
         self.statements.append({"op": "swap", "places": {"names": places}, "items": sel, "words": words})
 
@@ -629,8 +665,8 @@ class _Sentence(GoalRules, TailRules, Interpreter):
         words = self.words(node)
         if kind == "rule_never_group":  # "no forklift may carry widgets"
             said = [t for t in self.toks_any(node) if t.type in ("RKIND", "RTAG", "ROBOTWORD")][0]
-            group = ({"kind": str(said.value)} if said.type == "RKIND" else {"tag": str(said.value)}
-                     if said.type == "RTAG" else {"names": list(self.index.by_kind["robot"])})
+            group = (self.robots.group(said.type, str(said.value)) if said.type in ("RKIND", "RTAG")
+                     else {"names": list(self.index.by_kind["robot"])})
             scope = self.sub(node, "rscope")
             self.scoped({"mode": "never", "robots": group, "words": words}, scope[0] if scope else node)
             return
@@ -676,6 +712,7 @@ class _Sentence(GoalRules, TailRules, Interpreter):
         products: list[str] = []
         places: list[dict] = []
         unscoped_all = False
+        item_pronoun = False  # "must not move them": the pronoun is the object of the robots' work
         if scope is not None:
             for c in scope.children:
                 if not isinstance(c, Tree):
@@ -687,6 +724,9 @@ class _Sentence(GoalRules, TailRules, Interpreter):
                     self.last_item = products[:1] if len(set(products)) == 1 else None
                 elif c.data == "ro_pronoun":
                     pronoun = True
+                    said = (base.get("words") or "").lower().split()
+                    at = max((k for k, w in enumerate(said) if w in PRONOUNS), default=0)
+                    item_pronoun = at > 0 and said[at - 1] in ITEM_VERBS
                 elif c.data == "ro_any":
                     unscoped_all = True
                 elif c.data == "rw_from":
@@ -718,6 +758,8 @@ class _Sentence(GoalRules, TailRules, Interpreter):
             # that", "move them") points at what the sentence asks for
             if pronoun and not unscoped_all:
                 self.bind.append(base)
+                if item_pronoun:
+                    self.item_pronouns.append(base)
             self.rules.append(base)
             return
         for product in products or [None]:
@@ -829,6 +871,18 @@ class _Sentence(GoalRules, TailRules, Interpreter):
                 if use_product:
                     new["product"] = use_product
                 if use_place:
+                    if use_product and r in self.item_pronouns and self.picks.get("scope") == "item":
+                        out.append(new)   # chosen: the product wherever it goes
+                        continue
+                    if use_product and r in self.item_pronouns and self.picks.get("scope") != "move":
+                        # "only the forklift should handle it": it is the product (any move of
+                        # it) or this move of it? Readers differ; the two rules allow different
+                        # plans, so neither is guessed
+                        raise _Choice(
+                            "scope", ("item", "move"),
+                            f"{quote(r.get('words') or '')}: the rule may hold for {use_product} wherever it "
+                            f"goes or only for this move of it ({', '.join(f'{k} {v}' for k, v in use_place.items())}); "
+                            f"say which (e.g. 'for {use_product}' or 'for that move')")
                     new.update(use_place)
                 out.append(new)
             else:
@@ -836,6 +890,31 @@ class _Sentence(GoalRules, TailRules, Interpreter):
                 r.pop("open", None)
                 out.append(r)
         self.rules = out
+
+
+def _clause_of(lexed: Lexed, k: int) -> list[int]:
+    """The terminals of the clause (between commas or colons) that holds terminal ``k``."""
+    marks = {",", ":"}
+    start = k
+    while start > 0 and str(lexed.tokens[start - 1].value) not in marks:
+        start -= 1
+    end = k
+    while end + 1 < len(lexed.tokens) and str(lexed.tokens[end + 1].value) not in marks:
+        end += 1
+    if end + 1 < len(lexed.tokens):
+        end += 1  # its comma goes with it
+    elif start > 0:
+        start -= 1
+    return list(range(start, end + 1))
+
+
+def _without(lexed: Lexed, drop: list[int]) -> Lexed:
+    """The sentence with the terminals at ``drop`` left out (a candidate reading that does not
+    read them; offered, never acted on unchosen)."""
+    keep = [k for k in range(len(lexed.tokens)) if k not in set(drop)]
+    tokens = [Token(lexed.tokens[k].type, lexed.tokens[k].value, start_pos=j) for j, k in enumerate(keep)]
+    exact = frozenset(j for j, k in enumerate(keep) if k in lexed.exact)
+    return Lexed(tokens, [lexed.source[k] for k in keep], exact)
 
 
 def _fail(exc: UnexpectedInput, lexed: Lexed, lex: Lexicon) -> TranslationError:
@@ -849,6 +928,13 @@ def _fail(exc: UnexpectedInput, lexed: Lexed, lex: Lexicon) -> TranslationError:
             return TranslationError(f"'{prev.text} {word}': cannot tell which product this count is for "
                                     f"(candidates: {lex.index.candidates('product')})")
         where = f"cannot place '{word}' in '{sentence}'"
+        error = TranslationError(f"{where}: the command is not understood, so nothing is guessed "
+                                 f"(shelves: {lex.index.candidates('shelf')}; products: "
+                                 f"{lex.index.candidates('product')}; robots: {lex.index.candidates('robot')}; "
+                                 f"robot groups: {lex.group_names()})")
+        error.unplaced = k  # type: ignore[attr-defined]
+        error.clause = _clause_of(lexed, k)  # type: ignore[attr-defined]
+        return error
     else:
         kinds = [t.type for t in lexed.tokens]
         if "PLACE" not in kinds and "ITEM" in kinds and "ROBOT" not in kinds:
@@ -860,11 +946,22 @@ def _fail(exc: UnexpectedInput, lexed: Lexed, lex: Lexicon) -> TranslationError:
         where = f"'{sentence}' ends before it says what to do"
     return TranslationError(f"{where}: the command is not understood, so nothing is guessed "
                             f"(shelves: {lex.index.candidates('shelf')}; products: "
-                            f"{lex.index.candidates('product')}; robots: {lex.index.candidates('robot')})")
+                            f"{lex.index.candidates('product')}; robots: {lex.index.candidates('robot')}; "
+                            f"robot groups: {lex.group_names()})")
 
 
-def _read(tree: Tree, lexed: Lexed, lex: Lexicon, selector: RobotSelector, memory: dict) -> _Sentence:
-    reader = _Sentence(lexed, lex, selector, memory)
+class _Choice(TranslationError):
+    """A sentence with several readings that ask for different things: which one is ``key``'s
+    option; :func:`parse` offers each as a candidate (never picks one itself)."""
+
+    def __init__(self, key: str, options: tuple, message: str):
+        super().__init__(message)
+        self.key, self.options = key, options
+
+
+def _read(tree: Tree, lexed: Lexed, lex: Lexicon, selector: RobotSelector, memory: dict,
+          picks: dict | None = None) -> _Sentence:
+    reader = _Sentence(lexed, lex, selector, memory, picks)
     for part in tree.children[0].children:
         if isinstance(part, Tree) and part.data not in ("sep", "lead"):
             reader.part(part)
@@ -874,23 +971,43 @@ def _read(tree: Tree, lexed: Lexed, lex: Lexicon, selector: RobotSelector, memor
 
 #: readings of one sentence compared at most; beyond, the sentence is refused as too ambiguous
 MAX_READINGS = 64
+#: readings offered at most when a command is refused (issue 23: ask rather than refuse)
+MAX_CANDIDATES = 3
+
+
+def canonical(goal: dict, constraints: list[dict]) -> str:
+    """A meaning in one form, so that two readings that ask for the same thing compare equal: the
+    goal's places and items in sorted order; the rules as a set (a conjunction: order and
+    repetition do not matter), robot lists as sets, a ``never`` rule one rule per robot (never
+    [a, b] forbids what never [a] and never [b] forbid), and a rule's source words left out.
+    Two readings that are the same rule said twice are one reading, never "two ways"."""
+    rules: set[str] = set()
+    for rule in constraints:
+        scope = {k: v for k, v in rule.items() if k not in ("only", "never", "words")}
+        if "never" in rule:
+            rules |= {json.dumps({**scope, "never": r}, sort_keys=True, default=str) for r in rule["never"]}
+        else:
+            rules.add(json.dumps({**scope, "only": sorted(rule.get("only") or [])}, sort_keys=True, default=str))
+    return json.dumps([goal, sorted(rules)], sort_keys=True, default=str)
 
 
 def _meaning(reader: _Sentence, world: dict) -> str | None:
-    """What a reading asks for, for comparison: its resolved goal and rules (None when the reading
-    does not resolve on its own: it is then no meaning to compare)."""
+    """What a reading asks for, for comparison: its resolved goal and rules in one form
+    (:func:`canonical`; None when the reading does not resolve on its own: it is then no
+    meaning to compare)."""
     try:
         r = resolve({"statements": reader.statements, "rules": reader.rules}, world, check=False)
     except PipflowError:
         return None
-    return repr((r.goal, r.constraints))
+    return canonical(r.goal, r.constraints)
 
 
 def _parts(tree: Tree) -> int:
     return sum(1 for p in tree.children[0].children if isinstance(p, Tree) and p.data not in ("sep", "lead"))
 
 
-def _one_meaning(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict, memory: dict) -> _Sentence:
+def _one_meaning(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict, memory: dict,
+                 picks: dict | None = None) -> _Sentence:
     """Read a sentence in every way the grammar allows, and keep its meaning only if there is one.
 
     Readings that make no sense (an error, or nothing that resolves) are not meanings. Of the
@@ -898,9 +1015,10 @@ def _one_meaning(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dic
     them: the grammar's preferences never choose between meanings silently. The reading kept
     is the one with the fewest, longest parts.
     """
+    picks = picks or {}
     tree = _all_readings_parser().parse(lexed.tokens)
     if not any(t.data == "_ambig" for t in tree.iter_subtrees()):
-        return _read(tree, lexed, lex, selector, memory)
+        return _read(tree, lexed, lex, selector, memory, picks)
     sentence = " ".join(t.text for t in lexed.source).replace(" zzposs", "'s")
     readings: list[tuple[int, _Sentence, str | None]] = []
     errors: list[tuple[int, PipflowError]] = []
@@ -909,7 +1027,7 @@ def _one_meaning(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dic
             raise TranslationError(f"'{sentence}' can be read in too many ways to be sure of one; "
                                    f"say it in shorter sentences")
         try:
-            reader = _read(alt, lexed, lex, selector, memory)
+            reader = _read(alt, lexed, lex, selector, memory, picks)
         except PipflowError as exc:
             errors.append((_parts(alt), exc))
             continue
@@ -917,12 +1035,16 @@ def _one_meaning(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dic
     if not readings:
         raise min(errors, key=lambda e: e[0])[1]
     meant = [(n, r, m) for n, r, m in readings if m is not None]
-    if len({m for _, _, m in meant}) > 1:
+    distinct = list(dict.fromkeys(m for _, _, m in meant))
+    if len(distinct) > 1:
+        if picks.get("reading") is not None:   # chosen by the user among the candidates
+            return min((x for x in meant if x[2] == distinct[picks["reading"]]), key=lambda x: x[0])[1]
         (_, a, _), (_, b, _) = meant[0], next(x for x in meant if x[2] != meant[0][2])
         wa = "; ".join(s["words"] for s in a.statements + a.rules)
         wb = "; ".join(s["words"] for s in b.statements + b.rules)
-        raise TranslationError(f"'{sentence}' can be read in two ways that ask for different things "
-                               f"('{wa}' or '{wb}'); nothing is guessed: say it another way")
+        raise _Choice("reading", tuple(range(min(len(distinct), MAX_CANDIDATES))),
+                      f"'{sentence}' can be read in two ways that ask for different things "
+                      f"('{wa}' or '{wb}'); nothing is guessed: say it another way")
     return min(meant or readings, key=lambda x: x[0])[1]
 
 
@@ -939,7 +1061,15 @@ def parse(command: str, world: dict) -> dict:
     """
     readings = line_readings(command)
     if len(readings) == 1:
-        return {**_parse(readings[0], world), "command": command}
+        try:
+            return {**_parse(readings[0], world), "command": command}
+        except TranslationError as exc:
+            exc.candidates = candidates(readings[0], world, exc)
+            if exc.candidates:
+                exc.args = (f"{exc.args[0]}. Did you mean: " + "; or ".join(
+                    f"({k}) {c['reading']} [from '{c['words']}']" for k, c in enumerate(exc.candidates, 1))
+                    + "? Say it so, or choose one",)
+            raise
     broken, joined = readings
     try:
         first = _parse(broken, world)
@@ -964,33 +1094,98 @@ def parse(command: str, world: dict) -> dict:
     return {**first, "command": command}
 
 
+def candidates(command: str, world: dict, exc: TranslationError) -> list[dict]:
+    """Up to :data:`MAX_CANDIDATES` readings to offer for a command refused as not understood or
+    ambiguous (issue 23: ask rather than refuse), each ``{"reading", "words", "goal",
+    "constraints", "order"}``: the competing readings of an ambiguous sentence, and for a word no
+    rule places, the sentence without that word and without its clause. Each is the whole
+    command read with that one choice and resolved against the world; readings that do not
+    resolve, or repeat another's meaning, are not offered. Nothing here is acted on: a user (or
+    the bench) chooses."""
+    sentence = getattr(exc, "sentence", None)
+    if sentence is None:
+        return []
+    if isinstance(exc, _Choice):
+        picks = [{exc.key: option} for option in exc.options]
+    elif getattr(exc, "unplaced", None) is not None:
+        picks = [{"drop": [exc.unplaced]}, {"drop": exc.clause}]  # type: ignore[attr-defined]
+    else:
+        return []
+    if getattr(exc, "trimmed", False):
+        picks = [{**p, "trimmed": True} for p in picks]
+    out: list[dict] = []
+    seen: set[str] = set()
+    for pick in picks:
+        try:
+            order = _parse(command, world, {sentence: pick})
+            got = resolve(order, world)
+        except PipflowError:
+            continue
+        meaning = canonical(got.goal, got.constraints)
+        if meaning in seen:
+            continue
+        seen.add(meaning)
+        out.append({"reading": "; ".join(got.explanation), "explanation": list(got.explanation),
+                    "goal": got.goal, "constraints": got.constraints,
+                    "words": "; ".join(x["words"] for x in order["statements"] + order["rules"]), "order": order})
+    return out[:MAX_CANDIDATES]
+
+
 def _meaning_of(order: dict, world: dict) -> str | None:
     """What an order asks for, for comparing two readings (None: it does not resolve)."""
     try:
         r = resolve(order, world, check=False)
     except PipflowError:
         return None
-    return repr((r.goal, r.constraints))
+    return canonical(r.goal, r.constraints)
 
 
-def _parse(command: str, world: dict) -> dict:
+def _parse(command: str, world: dict, picks: dict | None = None) -> dict:
+    """:func:`parse` of one reading of the line breaks. ``picks``: for a sentence (its index), the
+    reading a user chose among candidates: ``{"reading": k}``, ``{"scope": ...}``, or ``{"drop":
+    [token indexes]}`` (words left out of it); none in an ordinary run."""
+    picks = picks or {}
     lex = Lexicon(world, keywords())
     selector = RobotSelector(world, lex.index)
     statements: list[dict] = []
     rules: list[dict] = []
     memory: dict = {}
-    for lexed in lex.sentences(command):
+    set_aside: list[str] = []
+    sentences = lex.sentences(command)
+    for index, lexed in enumerate(sentences):
         if not lexed.tokens:
             continue
+        pick = picks.get(index) or {}
+        if pick.get("trimmed") and lexed.trimmed is not None:
+            set_aside += list(lexed.aside)
+            lexed = lexed.trimmed
+        if pick.get("drop"):
+            lexed = _without(lexed, pick["drop"])
+            if not lexed.tokens:
+                continue
         if len(lexed.tokens) > MAX_SENTENCE_WORDS:
             shown = " ".join(t.text for t in lexed.source[:12])
             raise TranslationError(f"the sentence '{shown} ...' has {len(lexed.tokens)} words; sentences "
                                    f"are read up to {MAX_SENTENCE_WORDS} words (end it with a full stop "
                                    f"and go on in a new one)")
         try:
-            reader = _one_meaning(lexed, lex, selector, world, memory)
-        except UnexpectedInput as exc:
-            raise _fail(exc, lexed, lex) from None
+            reader = _one_meaning(lexed, lex, selector, world, memory, pick)
+        except (UnexpectedInput, TranslationError) as exc:
+            # the sentence as said does not read; without its content-free clauses it may
+            # (asides.py): they are set aside and said aloud, the rest still needs every word
+            error = _fail(exc, lexed, lex) if isinstance(exc, UnexpectedInput) else exc
+            error.sentence = index  # type: ignore[attr-defined]  # for the candidates (parse)
+            if lexed.trimmed is None:
+                raise error from None
+            try:
+                reader = _one_meaning(lexed.trimmed, lex, selector, world, memory, pick)
+            except (UnexpectedInput, TranslationError) as again:
+                # what is left after the talk is set aside is what does not read: say that
+                error = _fail(again, lexed.trimmed, lex) if isinstance(again, UnexpectedInput) else again
+                error.sentence, error.trimmed = index, True  # type: ignore[attr-defined]
+                error.args = (f"{error.args[0]} (set aside: {'; '.join(repr(a) for a in lexed.aside)})",)
+                raise error from None
+            set_aside += list(lexed.aside)
         for k, new in reader.updates.items():
             statements[k] = new
         statements += reader.statements
@@ -1002,4 +1197,6 @@ def _parse(command: str, world: dict) -> dict:
         raise TranslationError(f"found no goal and no robot rule in '{command}' "
                                f"(shelves: {lex.index.candidates('shelf')}; "
                                f"products: {lex.index.candidates('product')})")
-    return {"command": command, "statements": statements, "rules": rules}
+    set_aside = lex.aside + set_aside
+    return {"command": command, "statements": statements, "rules": rules,
+            **({"set_aside": set_aside} if set_aside else {})}

@@ -62,8 +62,8 @@ class RobotSelector:
         vals = list(node.scan_values(lambda v: isinstance(v, Token)))
         if node.data == "r_kind":
             t = next(v for v in vals if v.type in ("RKIND", "RTAG"))
-            sel = {"kind": str(t.value)} if t.type == "RKIND" else {"tag": str(t.value)}
-            self._check_one(sel, words)
+            sel = self.group(t.type, str(t.value))
+            self._check_one(sel, words, str(t.value))
             return sel
         if node.data in ("r_skill_min", "r_skill_max"):
             n = int(next(t.value for t in vals if t.type == "NUM"))
@@ -87,7 +87,22 @@ class RobotSelector:
             return sel
         raise TranslationError(f"'{words}': cannot tell which robots")
 
-    def _check_one(self, sel: dict, words: str) -> None:
+    def group(self, terminal: str, value: str) -> dict:
+        """The selector of a group word: a declared kind (RKIND) or tag (RTAG) of the world, else
+        (RKIND of a name stem the lexicon found: "tugs") the robots whose names share the stem."""
+        if terminal == "RTAG":
+            return {"tag": value}
+        robots = self.world.get("robots") or {}
+        kinds = {str(_robot_of(robots, r).get("kind", "")).lower() for r in robots}
+        if value.lower() in kinds:
+            return {"kind": value}
+        members = [r for r in robots if split_digits(normalize(r))[0] == normalize(value)
+                   and split_digits(normalize(r))[1]]
+        if not members:
+            raise TranslationError(f"'{value}': no robot kind, tag or name stem of this world")
+        return {"names": members}
+
+    def _check_one(self, sel: dict, words: str, said_as: str | None = None) -> None:
         """ "the AGV" (a kind or tag said in the singular, with no "all" / "any" / "a") names one
         robot: where the world has several of it, which one is not guessed (nor that all are
         meant); "the AGVs", "any AGV", "AGV crew" are the group."""
@@ -95,11 +110,13 @@ class RobotSelector:
         if not said or set(said) & GROUP_WORDS:
             return
         noun = said[-1]
-        if noun.endswith("s") and noun != normalize(next(iter(sel.values()))).replace(" ", ""):
+        value = said_as if said_as is not None else str(next(iter(sel.values())))
+        if noun.endswith("s") and noun != normalize(value).replace(" ", ""):
             return  # plural: "forklifts", "night robots"
         matched = select(sel, self.world, words)
         if len(matched) > 1:
-            raise TranslationError(f"'{words}': {len(matched)} robots are {_what(sel)} ({', '.join(matched)}); "
+            what = _what(sel) if "names" not in sel else f"named {value} with a number"
+            raise TranslationError(f"'{words}': {len(matched)} robots are {what} ({', '.join(matched)}); "
                                    f"cannot tell which one is meant (name it, or say all of them)")
 
     def _check_tie(self, sel: dict, vals: list[Token], words: str) -> None:

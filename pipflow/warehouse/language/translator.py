@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from pipflow.language.asides import said
 from pipflow.warehouse.language.order import validate_order
 from pipflow.warehouse.language.parser import parse
 from pipflow.warehouse.language.resolver import resolve
@@ -21,8 +22,9 @@ def understand(command: str, world: dict, check: bool = True) -> dict[str, Any]:
     order = parse(command, world)
     validate_order(order)
     resolved = resolve(order, world, check)
+    explanation = resolved.explanation + ([said(order["set_aside"])] if order.get("set_aside") else [])
     return {"order": order, "goal": resolved.goal, "constraints": resolved.constraints,
-            "explanation": resolved.explanation}
+            "explanation": explanation}
 
 
 def translate(command: str, world: dict, check: bool = True) -> dict[str, Any]:

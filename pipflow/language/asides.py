@@ -1,0 +1,135 @@
+"""Content-free parts of a command: what may be set aside unread, and what never may.
+
+People wrap an order in talk: a greeting ("Morning all"), thanks ("cheers"), a reason or an aside
+("it's broken", "I'm off out"). A reader that must place every word refuses the whole command on
+such a part, though it carries nothing the order needs. This module decides, for any domain,
+whether a clause (a sentence, or a part of one set off by commas) is *content-free*: it names
+nothing of the world, has no number and no **operative word**. Such a part is set aside, not
+parsed, and the reader says so aloud (the echo lists it), so a user sees what was not read.
+
+Operative words are the ones whose loss would change what is asked, even in a clause that names
+nothing: negation ("not", "never", "nothing", "don't"), exclusivity ("only", "except", "but",
+"unless", "instead"), bounds and comparison ("at least", "no more than", "above", "max"),
+quantities and quantifiers ("all", "every", "both", "half", "rest", "another", "some"), and
+repetition ("too", "also", "same", "again"); a word one edit or one swap away from one of them
+("nto", "olny", "exept") is operative too. The domain adds its own: its world's names (and words
+close to them: a misspelt name is never an aside), and its lexicon's content words (verbs such as
+"move" or "empty"), which the domain reader passes in as ``operative``.
+
+A greeting with its addressee ("Morning all", "Hi everyone") is the one place where a quantifier
+is no quantifier: a clause that opens with a greeting word and has nothing but addressee words
+after it is content-free. A clause that opens with a word that attaches it to the one before (a
+preposition, "and", an article: "..., on the left", "..., the big ones") or that picks out which
+things are meant ("those", "which") is never set aside: it would narrow the order, and dropping it
+would widen what the robots do.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Callable, Iterable
+
+from pipflow.language.spelling import slip
+
+NEGATION = {"no", "not", "never", "nothing", "none", "nobody", "noone", "neither", "nor", "without", "dont",
+            "doesnt", "didnt", "cant", "cannot", "wont", "shouldnt", "mustnt", "isnt", "arent", "nowhere",
+            "n't", "nope"}
+EXCLUSIVITY = {"only", "except", "excepting", "but", "besides", "apart", "unless", "instead", "alone", "solely",
+               "exclusively", "else", "just", "other", "otherwise", "rather"}
+BOUNDS = {"least", "most", "max", "maximum", "min", "minimum", "more", "fewer", "less", "above", "below",
+          "under", "over", "exceed", "exceeds", "between", "beyond", "within", "limit", "cap", "capped",
+          "upto", "tops", "than", "enough", "full", "empty", "capacity", "exactly", "precisely"}
+QUANTITIES = {"all", "every", "each", "both", "any", "some", "several", "few", "many", "much", "half",
+              "halves", "double", "twice", "triple", "thrice", "dozen", "rest", "remaining", "remainder",
+              "everything", "anything", "everyone", "everybody", "anyone", "anybody", "whole", "entire",
+              "another", "either", "respectively", "apiece", "once", "single", "pair", "couple", "lot",
+              "lots", "zero", "number", "amount", "count", "quarter", "third", "bit"}
+REPETITION = {"too", "also", "same", "again", "likewise", "aswell", "back", "first", "then", "after",
+              "before", "while", "until", "till", "or"}
+#: words that pick out which things are meant ("those on the left", ", which ...", "the ones"):
+#: a clause with one restricts the order it belongs to, even when it names nothing
+SELECTION = {"those", "these", "ones", "one", "which", "whichever", "whose", "where", "wherever"}
+#: the words that can never be set aside, whatever the domain
+OPERATIVE = frozenset(NEGATION | EXCLUSIVITY | BOUNDS | QUANTITIES | REPETITION | SELECTION)
+#: words that attach a clause to the one before ("..., from the top", "..., on the left"): such a
+#: clause modifies what was said, so it is never talk to set aside
+ATTACHING = frozenset({"from", "on", "in", "at", "to", "into", "onto", "off", "of", "with", "for", "by",
+                       "under", "over", "near", "behind", "above", "below", "inside", "towards", "toward",
+                       "via", "through", "and", "plus", "that", "the", "a", "an", "its", "their"})
+#: English function words: pronouns, auxiliaries, articles, prepositions and conjunctions, and
+#: the verbs of talk ("think", "know", "got"). A domain lexicon that has them as grammar words
+#: does not make them content: alone, they say nothing an order needs ("it's broken", "I'm off out")
+FUNCTION_WORDS = frozenset({
+    "i", "im", "me", "my", "mine", "we", "us", "our", "you", "your", "yours", "it", "its", "they", "them",
+    "their", "he", "him", "his", "she", "her", "this", "that", "these", "those", "there", "here", "what",
+    "which", "who", "whom", "whose", "is", "am", "are", "was", "were", "be", "been", "being", "has", "have",
+    "had", "having", "will", "would", "shall", "should", "can", "could", "may", "might", "must", "ought",
+    "a", "an", "the", "of", "to", "from", "in", "on", "at", "for", "with", "by", "about", "off", "out", "up",
+    "down", "into", "onto", "and", "so", "as", "if", "because", "since", "cause", "cuz", "coz", "well", "oh",
+    "ah", "now", "today", "please", "yes", "yeah", "yep", "got", "get", "getting", "go", "going", "gone",
+    "let", "lets", "think", "know", "see", "sure", "right", "really", "very", "still", "already", "yet",
+    "when", "where", "how", "why", "like", "s", "ll", "ve", "d", "re", "m", "t"})
+#: a word followed by one of these is a verb acting on a thing ("recount them"): an instruction
+OBJECT_PRONOUNS = frozenset({"it", "them", "this", "that", "these", "those", "him", "her", "everything"})
+#: words that open a greeting or a thanks; with nothing after them but addressees, the clause is talk
+GREETINGS = frozenset({"hi", "hello", "hey", "hiya", "heya", "howdy", "morning", "afternoon", "evening", "good",
+                       "greetings", "yo", "cheers", "thanks", "thank", "ta", "thx", "ok", "okay", "alright"})
+#: who a greeting is said to ("Morning all", "Hi team")
+ADDRESSEES = frozenset({"all", "everyone", "everybody", "team", "folks", "guys", "gang", "lads", "people",
+                        "there", "you", "mate", "mates", "yall", "crew", "robots", "bots", "y", "again", "so",
+                        "much", "very", "a", "lot", "in", "advance"})
+
+
+@dataclass(frozen=True)
+class Clause:
+    """A stretch of a command between clause marks: its words and where they are."""
+
+    start: int
+    end: int            # one past the last word
+    words: tuple[str, ...]
+
+
+def near_operative(word: str) -> bool:
+    """An operative word, or one slip from one (:func:`pipflow.language.spelling.slip`: "nto",
+    "olny", "exept", "onlu"): a misspelt "not" or "only" must never be read as talk."""
+    if word in OPERATIVE:
+        return True
+    return len(word) >= 3 and any(slip(word, o) for o in OPERATIVE if len(o) >= 3)
+
+
+def is_greeting(words: Iterable[str]) -> bool:
+    """ "Morning all", "hi team", "thanks so much": a greeting word, then only addressees."""
+    ws = [w for w in words if w]
+    return bool(ws) and ws[0] in GREETINGS and all(w in ADDRESSEES or w in GREETINGS for w in ws[1:])
+
+
+def content_free(words: Iterable[str], content: Callable[[str], bool]) -> bool:
+    """Whether a clause carries nothing an order needs (module doc). ``content(word)`` is the
+    domain's test: a name of its world (or close to one), a number, a content word of its lexicon."""
+    ws = [w for w in words if w]
+    if not ws:
+        return True
+    if is_greeting(ws):
+        return True   # its "all" or "team" is who is greeted, no quantifier or robot group
+    if ws[0] in ATTACHING:
+        return False  # it modifies the clause before ("..., on the left", "..., and the rest")
+    if any(w not in FUNCTION_WORDS and nxt in OBJECT_PRONOUNS for w, nxt in zip(ws, ws[1:])):
+        return False  # "..., recount them": an instruction about a thing, in a verb not read
+    return not any(near_operative(w) or content(w) for w in ws)
+
+
+def clauses(words: list[str], marks: set[str]) -> list[Clause]:
+    """The clauses of a word list, split at the clause marks (which belong to no clause)."""
+    out: list[Clause] = []
+    start = 0
+    for k, w in enumerate(words + [next(iter(marks))]):
+        if w in marks:
+            if k > start:
+                out.append(Clause(start, k, tuple(words[start:k])))
+            start = k + 1
+    return out
+
+
+def said(parts: list[str]) -> str:
+    """The echo line of what was set aside."""
+    return ("set aside, not read (names nothing of the world, no number, no operative word): "
+            + "; ".join(f"'{p}'" for p in parts))
