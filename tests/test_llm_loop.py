@@ -529,9 +529,12 @@ def test_offline_first_executes_no_model_reading_a_domain_cannot_check(tmp_path,
     from pipflow import StepContext
     from pipflow.errors import TranslationError
     from pipflow.steps.llm import llm_check
+    from pipflow.taskdomain import Capability
     from pipflow.warehouse.domain import WarehouseDomain
 
-    monkeypatch.setattr(WarehouseDomain, "second_opinion", lambda self, *args: None)
+    offers = WarehouseDomain.supports  # the warehouse as a domain without the SecondOpinion capability
+    monkeypatch.setattr(WarehouseDomain, "supports",
+                        lambda self, capability: capability is not Capability.SECOND_OPINION and offers(self, capability))
     ctx = StepContext("check", tmp_path / "artifacts", base_dir=REPO)
     args = dict(command=REPRO, world=WORLD, goal=REPRO_WRONG, constraints=[], refusal=None, model="openai/fake",
                 reader="model")
