@@ -340,8 +340,10 @@ def cmd_runs(args: argparse.Namespace) -> int:
     for run, info in infos[: args.limit]:
         secs = info.get("seconds") if isinstance(info.get("seconds"), (int, float)) else None
         where = f"step {info['error_step']}: " if info.get("error_step") else ""
-        result = headline(_outputs_of(run)) if info.get("status") == "succeeded" else \
-            _clip(where + str(info.get("error") or ""), 70)
+        why = where + str(info.get("error") or "")
+        # a stale run's note is said whole: its end says how to continue it (`pipflow resume`)
+        result = headline(_outputs_of(run)) if info.get("status") == RunStatus.SUCCEEDED else \
+            why if info.get("status") == RunStatus.STALE else _clip(why, 70)
         command = _command_of(info)
         print(redact(f"{run.name:<44} {str(info.get('status', '?')):<11} {f'{secs:.1f}s' if secs is not None else '':>7}  "
                      f"{result:<42}  " + (f'"{_clip(command, 60)}"' if command else "")).rstrip())

@@ -171,6 +171,8 @@ def test_path_inputs_are_relative_to_the_workflow_file(engine_env, monkeypatch):
             with: {value: "${inputs.data}"}
         outputs: {data: "${p.value}"}
     """)
+    (engine_env / "sub" / "data").mkdir()
+    (engine_env / "sub" / "data" / "file.txt").write_text("x")  # a default path must name a file that exists
     elsewhere = engine_env / "elsewhere"
     elsewhere.mkdir()
     monkeypatch.chdir(elsewhere)
