@@ -141,19 +141,37 @@ def test_every_allocate_step_takes_the_cost_by_name_and_records_it(tmp_path):
             assert written["cost"] == written["stats"]["cost"] == cost
 
 
-@pytest.mark.parametrize("name", sorted(p.stem for p in find_workflow("warehouse").parent.glob("*.yaml")))
+def _built_in_workflows() -> dict[str, bool]:
+    """Every built-in workflow by name, and whether it has an allocate step."""
+    out = {}
+    for path in sorted(find_workflow("warehouse").parent.glob("*.yaml")):
+        steps = load_workflow(path).all_steps()
+        out[path.stem] = any(s.uses.startswith("allocate.") for s in steps)
+    return out
+
+
+BUILT_IN = _built_in_workflows()
+
+
+@pytest.mark.parametrize("name", sorted(n for n, allocates in BUILT_IN.items() if allocates))
 def test_every_built_in_workflow_passes_its_allocation_cost_input_to_the_allocator(name):
     """The built-in workflows and their variants (greedy and blind replace the allocate step)
     declare the input with the paper's default and hand it to the allocator, and output it."""
     workflow = load_workflow(find_workflow(name))
     allocators = [s for s in workflow.all_steps() if s.uses.startswith("allocate.")]
-    if not allocators:
-        pytest.skip(f"{name} allocates nothing")
     spec = workflow.inputs["allocation_cost"]
     assert spec.default == "total" and list(spec.choices) == list(COSTS)
     for st in allocators:
         assert st.args.get("cost") == "${inputs.allocation_cost}", (name, st.id)
     assert workflow.outputs.get("allocation_cost") == f"${{{allocators[0].id}.cost}}"
+
+
+def test_the_workflows_without_an_allocator_are_the_baselines_whose_model_names_the_robots():
+    """Only the paper's baselines have no allocate step: their model's plan names its robots
+    (steps baseline.*). Any other workflow without one would have escaped the cost check above."""
+    for name in (n for n, allocates in BUILT_IN.items() if not allocates):
+        uses = {s.uses for s in load_workflow(find_workflow(name)).all_steps()}
+        assert any(u.startswith("baseline.") for u in uses), (name, sorted(uses))
 
 
 WH05 = ("There should be 20 product1 in shelf2, 16 product1 in shelf4, 2 product1 in shelf3. "
