@@ -180,11 +180,15 @@ def _open_dir(root: Path, parts: tuple[str, ...], create: bool) -> int:
                 if stat.S_ISLNK(os.lstat(part, dir_fd=fd).st_mode):
                     raise _link_error(shown, fd, part) from None
                 raise UserError(f"{shown} is a file where pipflow needs a folder") from None
-            os.close(fd)
-            fd = child
+            # the parent's descriptor is dropped only once the child's is held: an interrupt
+            # (SIGTERM/SIGHUP raise in here, engine/interrupts.py) that lands in this close
+            # leaves ``fd`` naming the child, never a descriptor closed already
+            parent, fd = fd, child
+            os.close(parent)
         return fd
     except BaseException:
-        os.close(fd)
+        with contextlib.suppress(OSError):  # the cause is what propagates, not a failed clean-up
+            os.close(fd)
         raise
 
 

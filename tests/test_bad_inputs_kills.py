@@ -259,3 +259,28 @@ def test_task_ids_through_the_api(tmp_path, monkeypatch):
     tasks = tasks_with_ids(tmp_path, ["x/y", "x_y"])
     results = pipflow.bench(tasks, out=tmp_path / "out", jobs=2)
     assert results["summary"]["runs"] == 2 and len(rows_of(tmp_path / "out")) == 2
+
+
+def test_an_interrupt_that_lands_while_a_record_folder_is_opened_is_the_interrupt(tmp_path, monkeypatch):
+    """SIGTERM and SIGHUP raise in whatever the main thread runs. One that lands in the close of a
+    parent folder's descriptor, while a record's folders are walked, ends the write as the
+    interrupt (exit 128+N upstream), not as a second close of that descriptor (EBADF, exit 1):
+    seen once in CI under load."""
+    from pipflow.engine.interrupts import Interrupted
+    from pipflow.engine.writes import write_file
+
+    real_close = os.close
+    landed: list[int] = []
+
+    def close_then_interrupt(fd: int) -> None:
+        real_close(fd)
+        if not landed:  # the signal arrives just as the first parent's descriptor is closed
+            landed.append(fd)
+            raise Interrupted(signal.SIGHUP)
+
+    monkeypatch.setattr(os, "close", close_then_interrupt)
+    with pytest.raises(Interrupted):
+        write_file(tmp_path / "run" / "steps" / "spin" / "outputs.json", b"{}", root=tmp_path)
+    monkeypatch.undo()
+    assert landed  # the interrupt did land inside the walk
+    assert write_file(tmp_path / "run" / "steps" / "spin" / "outputs.json", b"{}", root=tmp_path).read_bytes() == b"{}"
