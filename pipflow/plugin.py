@@ -11,7 +11,8 @@ The surface, by what a domain does (README, "Writing a domain plugin"):
 * **the protocol** -- :class:`TaskDomain` (the required core and the template methods), the
   capability mixins :class:`ComparesGoals`, :class:`SecondOpinion`, :class:`TransportPlanning`,
   :class:`GroundedDecoding`, :class:`OwnBenchTable`, :class:`ExecutionCapability` (execution under
-  faults: what :meth:`ExecutionCapability.play` returns is a :class:`Played`) and
+  faults: what :meth:`ExecutionCapability.play` returns is a :class:`Played`; :class:`ModuleExecution`
+  when a module of functions holds the domain's side of it) and
   :class:`Capability`; the small values its methods return: :class:`Reading`, :class:`Condition`,
   :class:`Reference`, :class:`GoalCheck`, :class:`Facts`;
   ``Save`` (the artifact hook a simulation gets) and :func:`pddl_domain_name`;
@@ -37,7 +38,7 @@ from __future__ import annotations
 
 from pipflow.engine.step import Doc, PathStr, StepContext, shape, step
 from pipflow.errors import Diagnostic, InputError, Refusal, TaskFileError, TranslationError, WorldError
-from pipflow.execution.capability import ExecutionCapability, Played
+from pipflow.execution.capability import ExecutionCapability, ModuleExecution, Played
 from pipflow.floorplan import footprint, inside_footprint, seeded_starts
 from pipflow.metrics import goal_condition_recall, travel_costs
 from pipflow.pddl.common import fluent_call, goal_atoms, number_value
@@ -53,7 +54,7 @@ from pipflow.worldfile import is_point, parse_mapping, read_world_file
 __all__ = [
     # the protocol
     "TaskDomain", "Capability", "ComparesGoals", "SecondOpinion", "TransportPlanning", "GroundedDecoding",
-    "OwnBenchTable", "ExecutionCapability", "Played", "Reading", "Condition", "Reference", "GoalCheck", "Facts",
+    "OwnBenchTable", "ExecutionCapability", "ModuleExecution", "Played", "Reading", "Condition", "Reference", "GoalCheck", "Facts",
     "Save", "pddl_domain_name",
     # typed values
     "World", "Robot", "Place", "Schedule", "SimulationCore", "Score", "refusal_expected",

@@ -333,22 +333,13 @@ class TaskDomain(ABC):
         the words it could not place: refuse, never guess) or Refusal (impossible in this
         world, with the reason)."""
 
-    def read_candidate(self, candidate: dict, world: dict, domain_text: str = "",
-                       save: Save | None = None) -> dict:
-        """Model ``offline`` with a reading the user chose among those a refusal offered
-        (``TranslationError.candidates``: ``goal``, ``constraints``, ``order``, ``reading``): its
-        problem written, the outputs of :meth:`read_offline`. A domain whose goal needs more than
-        :meth:`write_problem` of the candidate's goal overrides this."""
-        goal = candidate.get("goal") or {}
-        if save is not None and candidate.get("order") is not None:
-            save("order.json", candidate["order"])
-        return {"problem": self.write_problem(world, goal, pddl_domain_name(domain_text, self.name)),
-                "goal": goal, "constraints": list(candidate.get("constraints") or []),
-                "order": candidate.get("order"),
-                "explanation": list(candidate.get("explanation") or [str(candidate.get("reading") or "")]),
-                "messages": [], "response": "", "usage": {"calls": 0, "cached": False, "prompt_tokens": 0,
-                                                          "completion_tokens": 0, "total_tokens": 0,
-                                                          "latency_s": 0.0, "cost_usd": 0.0}, "errors": []}
+    def candidate_reading(self, candidate: dict, world: dict) -> Reading:
+        """The :class:`Reading` of a reading the user chose among those a refusal offered
+        (``TranslationError.candidates``: ``goal``, ``constraints``, ``order``, ``reading``). A
+        domain whose goal needs resolving in the world (counts to objects) overrides this."""
+        return Reading(candidate.get("goal") or {}, list(candidate.get("constraints") or []),
+                       order=candidate.get("order"),
+                       explanation=list(candidate.get("explanation") or [str(candidate.get("reading") or "")]))
 
     @abstractmethod
     def write_problem(self, world: dict, goal: Any, domain_name: str, name: str = "task") -> str:
@@ -492,7 +483,18 @@ class TaskDomain(ABC):
         generator round (``problem``, ``goal``, ``constraints``, ``messages``, ``response``,
         ``usage``, ``errors``, and ``order``, ``explanation``, ``concrete`` where the reading has
         them). ``save`` keeps the reading (``goal.json``, ``order.json``) and the problem."""
-        reading = self.read_command(command, world)
+        return self.offline_round(self.read_command(command, world), world, domain_text, save)
+
+    def read_candidate(self, candidate: dict, world: dict, domain_text: str = "",
+                       save: Save | None = None) -> dict:
+        """Model ``offline`` with a reading the user chose after a refusal
+        (:meth:`candidate_reading`): the outputs of :meth:`read_offline`."""
+        return self.offline_round(self.candidate_reading(candidate, world), world, domain_text, save)
+
+    def offline_round(self, reading: Reading, world: dict, domain_text: str = "",
+                      save: Save | None = None) -> dict:
+        """The outputs of one offline generator round for ``reading``: its problem written, the
+        reading kept (:meth:`read_offline`)."""
         problem = self.write_problem(world, reading.problem_goal, pddl_domain_name(domain_text, self.name))
         out: dict[str, Any] = {"problem": problem, "goal": reading.goal, "constraints": list(reading.constraints),
                                "messages": [], "response": "", "usage": dict(NO_USAGE), "errors": []}

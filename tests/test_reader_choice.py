@@ -13,6 +13,8 @@ from pathlib import Path
 
 import pipflow
 
+REPO = Path(__file__).resolve().parent.parent
+
 COMMAND = "Send 2 product1 from shelf1 to shelf2 pronto"   # 'pronto' is placed by no rule
 GOAL = {"shelf1": {"product1": 8}, "shelf2": {"product1": 10}}
 
@@ -83,3 +85,22 @@ tasks:
                         progress=False)
     assert results["summary"]["candidate_recall"] == 0.5
     assert "candidate_recall: 0.50" in (tmp_path / "out" / "table.md").read_text()
+
+
+def test_a_household_reading_chosen_after_a_refusal_is_written_with_its_counts_resolved():
+    """`-i reading=K` on a home: the chosen reading's count ("two fruits in the fridge") becomes
+    the objects the problem moves, and the round keeps the reading (it raised NameError before:
+    the household's own copy of the offline round had lost its imports)."""
+    from pipflow.household import world as household_world
+    from pipflow.household.domain import HouseholdDomain
+
+    world = household_world.load_world(REPO / "benchmarks/household/world.yaml")
+    saved: dict = {}
+    out = HouseholdDomain().read_candidate(
+        {"goal": {"count": [{"category": "fruit", "in": "fridge", "at_least": 2}]}, "reading": "two fruits in the fridge"},
+        world, (REPO / "domains/household.pddl").read_text(), saved.__setitem__)
+    goal_part = out["problem"].split("(:goal", 1)[1]
+    assert "(at apple fridge)" in goal_part and "(at watermelon fridge)" in goal_part
+    assert out["goal"] == {"count": [{"category": "fruit", "in": "fridge", "at_least": 2}]}
+    assert out["explanation"] == ["two fruits in the fridge"] and out["errors"] == []
+    assert {"goal.json", "problem.pddl"} <= set(saved)

@@ -120,6 +120,44 @@ class ExecutionCapability:
         return None, "this task domain does not check feasibility"
 
 
+class ModuleExecution(ExecutionCapability):
+    """The capability for a domain that keeps its side of it in a module of plain functions
+    (``fault_model``: ``play``, ``draw_surprise``, ``check_surprise``, ``apply_surprise``,
+    ``with_state``, ``drop_place``, ``plan_goal``, ``feasibility``, taking the same arguments as
+    these methods, and ``SURPRISE_NAMES``): the delegation written once, not per domain."""
+
+    fault_model: ClassVar[Any]
+
+    def __init_subclass__(cls, **kwargs: Any) -> None:
+        super().__init_subclass__(**kwargs)
+        if "fault_model" in cls.__dict__:
+            cls.surprise_names = tuple(cls.fault_model.SURPRISE_NAMES)
+
+    def play(self, world: dict, schedule: dict, graph: dict | None) -> Played:
+        return self.fault_model.play(world, schedule, graph)
+
+    def draw_surprise(self, world: dict, schedule: dict, graph: dict | None, rng: random.Random) -> dict | None:
+        return self.fault_model.draw_surprise(world, schedule, graph, rng)
+
+    def check_surprise(self, world: dict, given: dict, where: str) -> dict:
+        return self.fault_model.check_surprise(world, given, where)
+
+    def apply_surprise(self, world: dict, surprise: dict) -> dict:
+        return self.fault_model.apply_surprise(world, surprise)
+
+    def with_state(self, world: dict, state: Any) -> dict:
+        return self.fault_model.with_state(world, state)
+
+    def drop_place(self, world: dict, robot: str, site: dict) -> tuple[dict, str]:
+        return self.fault_model.drop_place(world, robot, site)
+
+    def plan_goal(self, parsed_problem: Any, world: dict) -> Any:
+        return self.fault_model.plan_goal(parsed_problem, world)
+
+    def feasibility(self, world: dict, goal: Any, constraints: list[dict]) -> tuple[bool | None, str]:
+        return self.fault_model.feasibility(world, goal, constraints)
+
+
 def capable(domain: Any) -> ExecutionCapability:
     """``domain`` if it has the execution capability, else an InputError saying so."""
     if not isinstance(domain, ExecutionCapability):

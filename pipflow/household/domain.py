@@ -19,7 +19,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any, Callable, Mapping
 
-from pipflow.execution.capability import ExecutionCapability, Played
+from pipflow.execution.capability import ModuleExecution
 from pipflow.household import agreement, meaning, scoring
 from pipflow.household import faults as fault_model
 from pipflow.household import world as worlds
@@ -33,7 +33,7 @@ from pipflow.taskdomain import (ComparesGoals, Condition, OwnBenchTable, Reading
 RULE_FIELDS = ("object", "from", "to", "at")
 
 
-class HouseholdDomain(TaskDomain, SecondOpinion, ComparesGoals, OwnBenchTable, ExecutionCapability):
+class HouseholdDomain(TaskDomain, SecondOpinion, ComparesGoals, OwnBenchTable, ModuleExecution):
     """A home: objects in places, states to change (open, on, dirty, sliced), a robot team."""
 
     name = "household"
@@ -47,7 +47,7 @@ class HouseholdDomain(TaskDomain, SecondOpinion, ComparesGoals, OwnBenchTable, E
     default_prompt = "household_problem"
     rule_fields = RULE_FIELDS
     goal_example = "(at apple fridge) or (not (is-on floorlamp))"
-    surprise_names = fault_model.SURPRISE_NAMES
+    fault_model = fault_model  # its side of execution under faults (ModuleExecution)
     task_groups = ("category",)  # the paper's three: compound, complex, vague
 
     # -- files ---------------------------------------------------------------------------------
@@ -87,23 +87,15 @@ class HouseholdDomain(TaskDomain, SecondOpinion, ComparesGoals, OwnBenchTable, E
         result = translate(command, world)
         return Reading(result["goal"], [], concrete=result["concrete"])
 
-    def read_candidate(self, candidate: dict, world: dict, domain_text: str = "",
-                       save: Save | None = None) -> dict:
+    def candidate_reading(self, candidate: dict, world: dict) -> Reading:
         """A reading the user chose among those a refusal offered: its goal (containers closed
-        again) with counts resolved to objects, as :meth:`read_offline` writes it."""
+        again) with counts resolved to objects, as :meth:`read_command` resolves them."""
         # deferred: the translator builds the lark parser (only offline reading needs it)
         from pipflow.household.language.translator import resolve_counts
 
         goal = candidate.get("goal") or {}
-        concrete = resolve_counts(world, goal)
-        problem = self.write_problem(world, concrete, pddl_domain_name(domain_text, self.name))
-        if save is not None:
-            save("goal.json", {"goal": goal, "concrete": concrete, "order": candidate.get("order"),
-                               "explain": [candidate.get("reading")]})
-            save("problem.pddl", problem)
-        return {"problem": problem, "goal": goal, "concrete": concrete, "constraints": [],
-                "explanation": [str(candidate.get("reading") or "")],
-                "messages": [], "response": "", "usage": dict(NO_USAGE), "errors": []}
+        return Reading(goal, [], order=candidate.get("order"), explanation=[str(candidate.get("reading") or "")],
+                       concrete=resolve_counts(world, goal))
 
     def write_problem(self, world: dict, goal: Any, domain_name: str, name: str = "task") -> str:
         return write_problem(world, goal, name=name, domain=domain_name)
@@ -135,31 +127,6 @@ class HouseholdDomain(TaskDomain, SecondOpinion, ComparesGoals, OwnBenchTable, E
 
     def bench_table(self, results: dict, tasks_file: Path) -> str:
         return scoring.bench_table(results, tasks_file)
-
-    # execution under faults (pipflow.execution): the home's side is household/faults.py
-    def play(self, world: dict, schedule: dict, graph: dict | None) -> Played:
-        return fault_model.play(world, schedule, graph)
-
-    def draw_surprise(self, world: dict, schedule: dict, graph: dict | None, rng: Any) -> dict | None:
-        return fault_model.draw_surprise(world, schedule, graph, rng)
-
-    def check_surprise(self, world: dict, given: dict, where: str) -> dict:
-        return fault_model.check_surprise(world, given, where)
-
-    def apply_surprise(self, world: dict, surprise: dict) -> dict:
-        return fault_model.apply_surprise(world, surprise)
-
-    def with_state(self, world: dict, state: Any) -> dict:
-        return fault_model.with_state(world, state)
-
-    def drop_place(self, world: dict, robot: str, site: dict) -> tuple[dict, str]:
-        return fault_model.drop_place(world, robot, site)
-
-    def plan_goal(self, parsed_problem: Any, world: dict) -> Any:
-        return fault_model.plan_goal(parsed_problem, world)
-
-    def feasibility(self, world: dict, goal: Any, constraints: list[dict]) -> tuple[bool | None, str]:
-        return fault_model.feasibility(world, goal, constraints)
 
     # -- simulation and scoring ----------------------------------------------------------------
     def simulate(self, world: dict, schedule: dict, graph: dict | None, goal: Any, *,

@@ -20,7 +20,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any, Callable, Mapping
 
-from pipflow.execution.capability import ExecutionCapability, Played
+from pipflow.execution.capability import ModuleExecution
 from pipflow.goalcounts import describe, is_bound
 from pipflow.pddl.common import share
 from pipflow.resources import data_file
@@ -43,7 +43,7 @@ def _stock_goal(parsed: Any, world: dict | None) -> dict:
 
 
 class WarehouseDomain(TaskDomain, GroundedDecoding, SecondOpinion, TransportPlanning, ComparesGoals,
-                      ExecutionCapability):
+                      ModuleExecution):
     """Pallets of products moved between shelves by robots that carry a few units each."""
 
     name = "warehouse"
@@ -60,7 +60,7 @@ class WarehouseDomain(TaskDomain, GroundedDecoding, SecondOpinion, TransportPlan
     name_sections = ("shelves", "products", "robots")
     simulate_options = ("picture", "animation")
     goal_example = "(= (stock shelf2 product1) 3)"
-    surprise_names = fault_model.SURPRISE_NAMES
+    fault_model = fault_model  # its side of execution under faults (ModuleExecution)
 
     # -- files ---------------------------------------------------------------------------------
     def pddl_domain(self) -> Path:
@@ -217,27 +217,7 @@ class WarehouseDomain(TaskDomain, GroundedDecoding, SecondOpinion, TransportPlan
     def load_tasks(self, path: Path) -> dict:
         return worlds.load_tasks(path)
 
-    # -- execution under faults (pipflow.execution): the warehouse's side is warehouse/faults.py
-    def play(self, world: dict, schedule: dict, graph: dict | None) -> Played:
-        return fault_model.play(world, schedule, graph)
-
-    def draw_surprise(self, world: dict, schedule: dict, graph: dict | None, rng: Any) -> dict | None:
-        return fault_model.draw_surprise(world, schedule, graph, rng)
-
-    def check_surprise(self, world: dict, given: dict, where: str) -> dict:
-        return fault_model.check_surprise(world, given, where)
-
-    def apply_surprise(self, world: dict, surprise: dict) -> dict:
-        return fault_model.apply_surprise(world, surprise)
-
-    def with_state(self, world: dict, state: Any) -> dict:
-        return fault_model.with_state(world, state)
-
-    def drop_place(self, world: dict, robot: str, site: dict) -> tuple[dict, str]:
-        return fault_model.drop_place(world, robot, site)
-
-    def plan_goal(self, parsed_problem: Any, world: dict) -> Any:
-        return fault_model.plan_goal(parsed_problem, world)
+    # -- execution under faults: warehouse/faults.py through ModuleExecution, and a faster re-plan
 
     def observed_problem(self, parsed_problem: Any, world: dict, goal: Any, domain_text: str,
                          name: str) -> tuple[Any, str]:
@@ -246,9 +226,6 @@ class WarehouseDomain(TaskDomain, GroundedDecoding, SecondOpinion, TransportPlan
         if fast is None:
             return super().observed_problem(parsed_problem, world, goal, domain_text, name)
         return fast, self.write_problem(world, goal, pddl_domain_name(domain_text, self.name), name=name)
-
-    def feasibility(self, world: dict, goal: Any, constraints: list[dict]) -> tuple[bool | None, str]:
-        return fault_model.feasibility(world, goal, constraints)
 
     # -- the report ----------------------------------------------------------------------------
     def goal_words(self, goal: Any) -> list[str]:
