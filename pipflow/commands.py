@@ -15,7 +15,6 @@ from pipflow.engine.cliargs import port_number, positive_int
 from pipflow.engine.recordref import BENCH_DIR, resolve_record
 from pipflow.engine.writes import DiskError
 from pipflow.errors import UserError
-from pipflow.records.compare import compare_text
 
 
 #: how every command names a record (:mod:`pipflow.engine.recordref`)
@@ -170,5 +169,7 @@ def cmd_view(args: argparse.Namespace) -> int:
 def cmd_compare(args: argparse.Namespace) -> int:
     if len(args.records) < 2:
         raise UserError("compare needs two or more records (runs, or benches): e.g. `pipflow compare latest -2`")
+    # deferred: the comparison's statistics and bench readers (every CLI command loads this module)
+    from pipflow.records.compare import compare_text
     print(compare_text(*[_record(ref, args) for ref in args.records]))
     return 0
