@@ -115,6 +115,7 @@ def test_run_report_renders_in_chromium(tmp_path):
                    "report/graph.png", "report/gantt.png", "steps/simulate/artifacts/paths.png",
                    "snapshot_1_start.png", "Metrics", "TC-max"):
         assert needle in html, needle
+    assert not re.search(r"<tr>(<th></th>)+</tr>", html), "a key-value table drew an empty header row"
     assert_rendered(page, tmp_path, min_images=7)
 
 

@@ -190,11 +190,12 @@ def _num(x: Any, digits: int = 2) -> str:
 
 
 def _table(headers: list[str], rows: list[list[Any]]) -> str:
-    head = "".join(f"<th>{_e(h)}</th>" for h in headers)
+    """An HTML table; a key-value table (every header empty) has no header row, not an empty one."""
+    head = "".join(f"<th>{_e(h)}</th>" for h in headers) if any(headers) else ""
     body = "".join("<tr>" + "".join(
         f"<td class='num'>{_num(c)}</td>" if isinstance(c, (int, float)) or c is None else f"<td>{_num(c)}</td>"
         for c in row) + "</tr>" for row in rows)
-    return f"<table><tr>{head}</tr>{body}</table>"
+    return f"<table>{f'<tr>{head}</tr>' if head else ''}{body}</table>"
 
 
 # ------------------------------------------------------------------------------------------
