@@ -18,14 +18,14 @@ import pytest
 
 from fake_openai import FakeOpenAI
 from pipflow.errors import Refusal, TranslationError, WorldError
+from cli_entry import PIPFLOW
 
 PACKAGE = Path(__file__).resolve().parent / "plugins" / "pipflow_garden"
 
 
 def pipflow(site: Path, cwd: Path, *args: str, timeout: float = 300, extra_env: dict | None = None
             ) -> subprocess.CompletedProcess:
-    exe = shutil.which("pipflow")
-    cmd = [exe] if exe else [sys.executable, "-m", "pipflow.engine.cli"]
+    cmd = [PIPFLOW]
     env = {**{k: v for k, v in os.environ.items() if k != "PIPFLOW_MODEL"},  # offline unless a test says
            "PYTHONPATH": os.pathsep.join([str(site), os.environ.get("PYTHONPATH", "")]).rstrip(os.pathsep),
            "PIPFLOW_CACHE_DIR": str(cwd / "cache"), **(extra_env or {})}

@@ -5,9 +5,7 @@ from __future__ import annotations
 
 import json
 import os
-import shutil
 import subprocess
-import sys
 from pathlib import Path
 
 WORKFLOWS = Path(__file__).resolve().parent / "fixtures" / "workflows"
@@ -15,8 +13,7 @@ DEMO = WORKFLOWS / "demo_plugin.yaml"
 
 
 def pipflow(site: Path, cwd: Path, *args: str) -> subprocess.CompletedProcess:
-    exe = shutil.which("pipflow")
-    cmd = [exe] if exe else [sys.executable, "-m", "pipflow.engine.cli"]
+    cmd = [PIPFLOW]
     env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(site), os.environ.get("PYTHONPATH", "")]).rstrip(os.pathsep),
            "PIPFLOW_CACHE_DIR": str(cwd / "cache")}
     return subprocess.run([*cmd, *args], cwd=cwd, env=env, capture_output=True, text=True, timeout=120)
@@ -208,6 +205,7 @@ def test_pipflow_steps_shows_the_signature_contract(capsys):
 from typing import TypedDict  # noqa: E402
 
 from pipflow.engine.step import shape  # noqa: E402
+from cli_entry import PIPFLOW
 
 
 class _Inner(TypedDict):

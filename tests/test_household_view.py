@@ -5,7 +5,6 @@ right refusals apart from the errors, and charts shown at their own size (scroll
 squeezed); the CLI's household table with SR in percent like the other table."""
 from __future__ import annotations
 
-import json
 import os
 import re
 import subprocess
@@ -18,6 +17,7 @@ import yaml
 import pipflow
 from cdp import Browser, looks_drawn
 from pipflow.records.report import write_report
+from cli_entry import PIPFLOW
 
 REPO = Path(__file__).resolve().parents[1]
 #: two tasks of each of the paper's categories; hx-23 ("heat the mug") is impossible: refusing is right
@@ -32,7 +32,7 @@ def household_bench(tmp_path_factory) -> tuple[Path, str]:
     doc["world"] = str(REPO / "benchmarks/household/world.yaml")
     (root / "tasks.yaml").write_text(yaml.safe_dump(doc))
     env = {**os.environ, "PIPFLOW_CACHE_DIR": str(root / "cache")}
-    out = subprocess.run(["pipflow", "bench", "tasks.yaml", "--out", "hb", "--jobs", "2"], cwd=root, env=env,
+    out = subprocess.run([PIPFLOW, "bench", "tasks.yaml", "--out", "hb", "--jobs", "2"], cwd=root, env=env,
                          capture_output=True, text=True, timeout=3000)
     assert out.returncode == 0, out.stderr[-3000:]
     return root / "hb", out.stdout

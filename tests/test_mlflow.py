@@ -16,6 +16,7 @@ import pytest
 import yaml
 
 from cdp import Browser, looks_drawn
+from cli_entry import PIPFLOW
 
 mlflow = pytest.importorskip("mlflow", reason="the `mlflow` extra (in the `test` extra): pip install -e '.[test]'")
 
@@ -24,7 +25,7 @@ REPO = Path(__file__).resolve().parents[1]
 
 def cli(*args: str, cwd: Path) -> subprocess.CompletedProcess:
     env = {**os.environ, "PIPFLOW_CACHE_DIR": str(cwd / "cache")}
-    out = subprocess.run(["pipflow", *args], cwd=cwd, capture_output=True, text=True, timeout=1800, env=env)
+    out = subprocess.run([PIPFLOW, *args], cwd=cwd, capture_output=True, text=True, timeout=1800, env=env)
     assert out.returncode == 0, out.stderr[-3000:]
     return out
 

@@ -4,12 +4,13 @@ from __future__ import annotations
 
 import subprocess
 from pathlib import Path
+from cli_entry import PIPFLOW
 
 REPO = Path(__file__).resolve().parents[1]
 
 
 def _pipflow(*args: str, cwd: Path) -> subprocess.CompletedProcess:
-    return subprocess.run(["pipflow", *args], capture_output=True, text=True, cwd=cwd, timeout=120)
+    return subprocess.run([PIPFLOW, *args], capture_output=True, text=True, cwd=cwd, timeout=120)
 
 
 def test_misspelt_prompt_input_is_a_user_error_before_any_step(tmp_path):

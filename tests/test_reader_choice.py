@@ -8,10 +8,10 @@ import json
 import os
 import pty
 import subprocess
-import sys
 from pathlib import Path
 
 import pipflow
+from cli_entry import PIPFLOW
 
 REPO = Path(__file__).resolve().parent.parent
 
@@ -38,7 +38,7 @@ def test_a_reading_that_was_not_offered_is_a_user_error(tmp_path: Path) -> None:
 def _pipflow_on_terminal(args: list[str], answer: bytes, cwd: Path) -> tuple[int, str]:
     """``pipflow ARGS`` with stdin on a pseudo-terminal that types ``answer``."""
     main, child = pty.openpty()
-    proc = subprocess.Popen([str(Path(sys.executable).parent / "pipflow"), *args], stdin=child, stdout=subprocess.PIPE,
+    proc = subprocess.Popen([PIPFLOW, *args], stdin=child, stdout=subprocess.PIPE,
                             stderr=subprocess.STDOUT, cwd=cwd, env={**os.environ, "PYTHONUNBUFFERED": "1"})
     os.close(child)
     os.write(main, answer)

@@ -11,7 +11,6 @@ import json
 import os
 import re
 import subprocess
-import sys
 import urllib.request
 from pathlib import Path
 
@@ -19,13 +18,14 @@ import pytest
 import yaml
 
 from cdp import Browser, looks_drawn
+from cli_entry import PIPFLOW
 
 REPO = Path(__file__).resolve().parents[1]
 TASKS = ("wh-04", "wh-06", "wh-10")  # several moves each: the variants differ
 
 
 def pipflow_cli(*args: str, cwd: Path, check: bool = True, **kw) -> subprocess.CompletedProcess:
-    out = subprocess.run(["pipflow", *args], cwd=cwd, capture_output=True, text=True, timeout=1800, **kw)
+    out = subprocess.run([PIPFLOW, *args], cwd=cwd, capture_output=True, text=True, timeout=1800, **kw)
     if check:
         assert out.returncode == 0, out.stderr[-3000:]
     return out
@@ -109,7 +109,7 @@ def test_runs_and_show_say_what_was_asked_and_how_it_went(place):
 
 
 def test_view_lists_runs_and_benches_with_command_and_result(place):
-    proc = subprocess.Popen(["pipflow", "view", "--no-browser"], cwd=place, stdout=subprocess.PIPE,
+    proc = subprocess.Popen([PIPFLOW, "view", "--no-browser"], cwd=place, stdout=subprocess.PIPE,
                             stderr=subprocess.PIPE, text=True)
     try:
         first = proc.stdout.readline()

@@ -18,13 +18,14 @@ import yaml
 import pipflow
 from pipflow.errors import UserError
 from test_engine_plugin import pipflow as pipflow_with_plugin
+from cli_entry import PIPFLOW
 
 REPO = Path(__file__).resolve().parents[1]
 
 
 def cli(*args: str, cwd: Path, check: bool = True) -> subprocess.CompletedProcess:
     env = {**os.environ, "PIPFLOW_CACHE_DIR": str(cwd / "cache")}
-    out = subprocess.run(["pipflow", *args], cwd=cwd, capture_output=True, text=True, timeout=1800, env=env)
+    out = subprocess.run([PIPFLOW, *args], cwd=cwd, capture_output=True, text=True, timeout=1800, env=env)
     if check:
         assert out.returncode == 0, out.stderr[-3000:]
     return out
@@ -175,7 +176,7 @@ def test_bench_progress_when_the_output_is_not_a_terminal(tmp_path):
 def test_bench_bar_on_a_terminal_shows_the_time_left(tmp_path):
     tasks = one_task(tmp_path, ("wh-01", "wh-02"))
     env = {**os.environ, "PIPFLOW_CACHE_DIR": str(tmp_path / "cache")}
-    out = subprocess.run(["script", "-qec", f"pipflow bench {tasks} --out t --jobs 1", "/dev/null"], cwd=tmp_path,
+    out = subprocess.run(["script", "-qec", f"{PIPFLOW} bench {tasks} --out t --jobs 1", "/dev/null"], cwd=tmp_path,
                          capture_output=True, text=True, timeout=1800, env=env)
     assert out.returncode == 0, out.stdout[-2000:]
     screen = re.sub(r"\x1b\[[0-9;]*[A-Za-z]", "", out.stdout).replace("\r", "\n")

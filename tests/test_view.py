@@ -18,6 +18,7 @@ import pipflow
 from pipflow.records.compare import compare_text
 from pipflow.records.view import ViewServer
 from test_report import CHROMIUM_FLAGS, chromium
+from cli_entry import PIPFLOW
 
 REPO = Path(__file__).resolve().parents[1]
 
@@ -117,21 +118,21 @@ def test_compare_two_runs_in_the_page_and_on_the_command_line(records, tmp_path)
         assert "Uncaught" not in console
     finally:
         server.stop()
-    out = subprocess.run(["pipflow", "compare", str(a), str(b)], capture_output=True, text=True)
+    out = subprocess.run([PIPFLOW, "compare", str(a), str(b)], capture_output=True, text=True)
     assert out.returncode == 0 and "tc_max (m)" in out.stdout
-    bad = subprocess.run(["pipflow", "compare", str(a), str(records / "benches" / "b1")], capture_output=True, text=True)
+    bad = subprocess.run([PIPFLOW, "compare", str(a), str(records / "benches" / "b1")], capture_output=True, text=True)
     assert bad.returncode == 2 and "cannot compare a run" in bad.stderr and "Traceback" not in bad.stderr
 
 
 def test_show_latest_and_runs_filters(records):
     runs = str(records / "runs")
-    latest = subprocess.run(["pipflow", "show", "latest", "--runs-dir", runs], capture_output=True, text=True)
+    latest = subprocess.run([PIPFLOW, "show", "latest", "--runs-dir", runs], capture_output=True, text=True)
     assert latest.returncode == 0 and "refused" in latest.stdout
-    second = subprocess.run(["pipflow", "show", "-2", "--runs-dir", runs], capture_output=True, text=True)
+    second = subprocess.run([PIPFLOW, "show", "-2", "--runs-dir", runs], capture_output=True, text=True)
     assert second.returncode == 0 and "status    succeeded" in second.stdout
-    full = subprocess.run(["pipflow", "show", "-2", "--full", "--runs-dir", runs], capture_output=True, text=True)
+    full = subprocess.run([PIPFLOW, "show", "-2", "--full", "--runs-dir", runs], capture_output=True, text=True)
     assert '"tc_avg"' in full.stdout and '"simulation"' in full.stdout  # --full: whole outputs, not cut
-    listed = subprocess.run(["pipflow", "runs", "--status", "refused", "--runs-dir", runs], capture_output=True, text=True)
+    listed = subprocess.run([PIPFLOW, "runs", "--status", "refused", "--runs-dir", runs], capture_output=True, text=True)
     assert listed.stdout.count("\n") == 1 and "refused" in listed.stdout
 
 
