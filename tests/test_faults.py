@@ -215,6 +215,64 @@ def test_stock_surprise_is_found_on_arrival_and_the_run_replans(tmp_path, base):
     assert world["goal"] == {"shelf3": {"product1": 7}}
 
 
+def test_replan_repairs_the_plan_keeping_the_steps_that_still_apply(tmp_path, base):
+    """WH10's first move takes from a shelf that holds one unit fewer than recorded: the re-plan
+    keeps every step not begun that still applies from the observed state, drops the one that
+    takes more than is there, and plans only what that leaves undone; with repair=false the
+    same fault is re-planned from scratch. Both meet the goal; the repaired plan keeps the
+    old plan's untouched steps (the same action and arguments) and adds only the patch."""
+    shelf, product, rec = _source(base["wh10"])
+    fault = [{"kind": "stock-surprise", "place": shelf, "product": product, "delta": -1}]
+    repaired = run(tmp_path, WH10, seed=3, faults=fault)
+    scratch = run(tmp_path, WH10, seed=3, faults=fault, repair=False)
+    assert repaired.ok and scratch.ok, (repaired.error, scratch.error)
+    (first,) = repaired.outputs["recoveries"]
+    assert first["action"] == "re-plan" and first["repaired"]["kept"] >= 1
+    nodes = {n["id"]: n for n in base["wh10"].outputs["graph"]["nodes"]}
+    steps = [(nodes[s]["action"], nodes[s]["args"]) for s in first["aborted"]]
+    dropped = [(nodes[s]["action"], nodes[s]["args"]) for s in first["repaired"]["dropped"]]
+    kept = [x for x in steps if x not in dropped]
+    assert len(kept) == first["repaired"]["kept"]
+    new = [(p["action"], p["args"]) for p in first["plan"]]
+    assert new[:len(kept)] == kept  # the old steps that still apply, in their order, then the patch
+    assert "repaired the plan" in first["planner"]
+    (other,) = scratch.outputs["recoveries"]
+    assert other["action"] == "re-plan" and "repaired" not in other
+    for r in (repaired, scratch):
+        sim = r.outputs["simulation"]
+        assert sim["goal_met"] and not sim["failures"]
+        assert sim["final_stock"]["shelf4"] == {"product3": 12, "product1": 5} | {
+            k: v for k, v in sim["final_stock"]["shelf4"].items() if k not in ("product3", "product1")}
+
+
+def test_the_records_are_never_written_into(tmp_path, base):
+    """The executor builds the worlds it plays from the records, copying only what it changes:
+    after a run with a lost robot, a surprise and a closed passage, the world as loaded is as it
+    was (nothing downstream wrote into a world it shares with the records)."""
+    from pipflow.execution.executor import Executor
+
+    seen = {}
+    original = Executor.__init__
+
+    def keep(self, domain, world, *args, **kwargs):
+        seen["records"], seen["copy"] = world, json.loads(json.dumps(world))
+        original(self, domain, world, *args, **kwargs)
+
+    schedule = base["wh10"].outputs["schedule"]
+    robot, leg, _ = leg_where(schedule, carrying)
+    shelf, product, _ = _source(base["wh10"])
+    Executor.__init__ = keep
+    try:
+        r = run(tmp_path, WH10, seed=3, faults=[
+            {"kind": "robot-loss", "robot": robot, "time": round((float(leg["start"]) + float(leg["end"])) / 2, 3)},
+            {"kind": "stock-surprise", "place": shelf, "product": product, "delta": -1}])
+    finally:
+        Executor.__init__ = original
+    assert r.ok, r.error
+    assert len(r.outputs["recoveries"]) >= 2
+    assert json.loads(json.dumps(seen["records"])) == seen["copy"]
+
+
 def test_stock_surprise_the_plan_still_fits_continues(tmp_path, base):
     shelf, product, _ = _source(base["wh01"])
     r = run(tmp_path, WH01, seed=3, faults=[{"kind": "stock-surprise", "place": shelf, "product": product, "delta": 2}])

@@ -18,7 +18,6 @@ warehouse knows about its world changing.
 """
 from __future__ import annotations
 
-import copy
 import math
 import random
 from typing import Any
@@ -98,9 +97,9 @@ def check_surprise(world: dict, given: dict, where: str) -> dict:
 def apply_surprise(world: dict, surprise: dict) -> dict:
     """The world whose shelf holds the surprise's true count (the difference from the records is
     added, so a world already changed elsewhere keeps its changes)."""
-    out = copy.deepcopy(world)
     shelf, product = surprise["place"], surprise["product"]
-    items = out["stock"].setdefault(shelf, {})
+    items = dict(world["stock"].get(shelf) or {})
+    out = {**world, "stock": {**world["stock"], shelf: items}}  # copied where it changes
     count = int(items.get(product, 0)) + int(surprise["count"]) - int(surprise["records"])
     if count:
         items[product] = count
@@ -115,11 +114,11 @@ def apply_surprise(world: dict, surprise: dict) -> dict:
 def with_state(world: dict, stock: dict) -> dict:
     """The world whose stock is ``stock`` (a simulation's final stock); a drop place holds room
     for exactly what it holds (nothing is parked on a stopped robot)."""
-    out = copy.deepcopy(world)
+    out = {**world, "shelves": dict(world["shelves"])}  # copied where it changes
     out["stock"] = {s: {p: int(n) for p, n in (stock.get(s) or {}).items() if n} for s in out["shelves"]}
-    for name, shelf in out["shelves"].items():
+    for name, shelf in world["shelves"].items():
         if shelf.get("drop"):
-            shelf["capacity"] = sum(out["stock"][name].values())
+            out["shelves"][name] = {**shelf, "capacity": sum(out["stock"][name].values())}
     return out
 
 
@@ -127,7 +126,7 @@ def drop_place(world: dict, robot: str, site: dict) -> tuple[dict, str]:
     """The world with a small shelf ``<robot>-cargo`` where the stopped robot stands, room for
     what it can carry (the simulation puts its units there; :func:`with_state` then fits the room
     to them)."""
-    out = copy.deepcopy(world)
+    out = {**world, "shelves": dict(world["shelves"]), "stock": dict(world["stock"])}  # copied where it changes
     name, k = f"{robot}-cargo", 1
     while name in out["shelves"] or name in out["robots"] or name in out["products"]:
         k += 1
