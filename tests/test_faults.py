@@ -400,6 +400,30 @@ def test_bench_measures_with_and_without_faults_side_by_side(tmp_path):
     assert "Faults" not in (tmp_path / "p" / "table.md").read_text() and "faults" not in plain["variants"][0]
 
 
+def test_bench_table_says_sr_where_reachable_and_the_clear_refusals(tmp_path):
+    """A shelf short of one unit of a product the goal needs every unit of: that run's goal is out
+    of reach and its right answer is a refusal; the other task never visits the shelf and
+    succeeds. The table's row names the fault kind, SR over all runs (50%), the runs whose goal
+    stayed reachable (1) and SR among them (100%), and the clear refusal (1), apart from
+    refusals of a goal still reachable (0); runs.csv says per run whether it stayed reachable."""
+    tasks = tmp_path / "tasks.yaml"
+    tasks.write_text(f"world: {REPO / 'benchmarks/warehouse/world.yaml'}\ntasks:\n"
+                     f"  - id: wh-01\n    command: \"{WH01}\"\n    goal: {{shelf3: {{product1: 7}}}}\n"
+                     "  - id: all-p3\n    command: \"shelf4 stores 15 product3.\"\n    goal: {shelf4: {product3: 15}}\n")
+    surprise = [{"kind": "stock-surprise", "place": "shelf2", "product": "product3", "delta": -1}]
+    results = pipflow.bench(tasks, seeds=1, out=tmp_path / "b", faults=surprise)
+    f = results["variants"][0]["faults"]
+    assert (f["runs"], f["sr"], f["reachable"], f["sr_feasible"], f["refused_right"], f["refused_wrong"]) == \
+        (2, 0.5, 1, 1.0, 1, 0)
+    assert f["kinds"] == ["stock-surprise"]
+    row = next(line for line in (tmp_path / "b" / "table.md").read_text().splitlines() if line.startswith("| default |"))
+    assert [c.strip() for c in row.strip("|").split("|")][:8] == ["default", "stock-surprise", "2", "50", "1", "100", "1", "0"]
+    with (tmp_path / "b" / "runs.csv").open() as fh:
+        rows = {r["task"]: r for r in csv.DictReader(fh)}
+    assert rows["all-p3"]["feasible_after_faults"] == "False" and rows["all-p3"]["fault_outcome"] == "refused: out of reach"
+    assert rows["wh-01"]["fault_outcome"] == "succeeded"
+
+
 def test_report_shows_where_and_when_faults_struck(tmp_path, base):
     schedule = base["wh10"].outputs["schedule"]
     robot, leg, _ = leg_where(schedule, carrying)
@@ -442,3 +466,43 @@ def test_fault_counts_and_specs_are_read():
     assert fk.parse("none") == [] and fk.parse(None) == [] and fk.parse([]) == []
     (one,) = fk.parse({"kind": "robot-loss", "robot": "robot2", "after": 2})
     assert one.given == {"robot": "robot2", "after": 2}
+
+
+def test_a_drawn_stock_surprise_is_units_missing_or_misplaced(base):
+    """Over seeds, the warehouse's drawn surprise is either units gone from a shelf the plan takes
+    from (fewer in the world than recorded), or the same units lying on another shelf with room
+    for them (the total conserved); a misplaced draw is two faults, each found where a robot
+    arrives. Never units from nowhere, never at a shelf recorded empty."""
+    from pipflow.taskdomains import task_domain
+    from pipflow.execution.capability import capable
+
+    run_ = base["wh10"]
+    world = json.loads((run_.record / "steps" / "world" / "outputs.json").read_text())
+    world = world.get("outputs", world)["world"]
+    domain = capable(task_domain(world))
+    takes = {n["fields"]["from"] for n in run_.outputs["graph"]["nodes"]}
+    seen = set()
+    for seed in range(40):
+        placed = fk.resolve(fk.parse("stock-surprise=1", domain.surprise_names), world, run_.outputs["schedule"],
+                            run_.outputs["graph"], seed, domain)
+        real = world
+        for f in placed:
+            real = domain.apply_surprise(real, f.surprise)
+        total = {p: sum(items.get(p, 0) for items in world["stock"].values()) for p in world["products"]}
+        after = {p: sum(items.get(p, 0) for items in real["stock"].values()) for p in world["products"]}
+        first = placed[0].surprise
+        assert first["place"] in takes and first["records"] > 0 and first["count"] < first["records"]
+        k = first["records"] - first["count"]
+        assert 1 <= k <= 3
+        how = first["how"]
+        seen.add(how)
+        if how == "missing":
+            assert len(placed) == 1 and after[first["product"]] == total[first["product"]] - k
+        else:
+            assert how == "misplaced" and [f.id for f in placed] == ["f1a", "f1b"]
+            host = placed[1].surprise
+            assert host["place"] != first["place"] and host["count"] == host["records"] + k
+            assert after == total  # the same units, elsewhere
+            assert sum(real["stock"][host["place"]].values()) <= world["shelves"][host["place"]]["capacity"]
+            assert placed[0].surprise["places"] == [first["place"]] and placed[1].surprise["places"] == [host["place"]]
+    assert seen == {"missing", "misplaced"}
