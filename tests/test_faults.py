@@ -273,6 +273,27 @@ def test_the_records_are_never_written_into(tmp_path, base):
     assert json.loads(json.dumps(seen["records"])) == seen["copy"]
 
 
+def test_misplaced_units_are_two_surprises_found_one_after_the_other(tmp_path, base):
+    """One unit recorded on the first shelf WH10 takes from lies on the shelf that move brings
+    its units to: the shortage is found on arrival at the first shelf, the extra unit when a
+    robot first reaches the other; two rounds, each from what was known then, and the goal is
+    met in the world as it really was (the same units, one elsewhere)."""
+    shelf, product, _ = _source(base["wh10"])
+    other = base["wh10"].outputs["graph"]["nodes"][0]["fields"]["to"]
+    r = run(tmp_path, WH10, seed=3, faults=[
+        {"kind": "stock-surprise", "place": shelf, "product": product, "delta": -1},
+        {"kind": "stock-surprise", "place": other, "product": product, "delta": 1}])
+    assert r.ok, r.error
+    rounds = r.outputs["recoveries"]
+    assert [x["cause"]["fault"] for x in rounds if x["cause"]["kind"] == "surprise"] == ["f1", "f2"]
+    assert rounds[0]["time"] < rounds[1]["time"]
+    assert [f["detected"] is not None for f in r.outputs["faults"]] == [True, True]
+    sim = r.outputs["simulation"]
+    assert sim["goal_met"] and sim["final_stock"]["shelf4"]["product3"] == 12 and sim["final_stock"]["shelf4"]["product1"] == 5
+    before = sum(items.get(product, 0) for items in base["wh10"].outputs["simulation"]["final_stock"].values())
+    assert sum(items.get(product, 0) for items in sim["final_stock"].values()) == before
+
+
 def test_stock_surprise_the_plan_still_fits_continues(tmp_path, base):
     shelf, product, _ = _source(base["wh01"])
     r = run(tmp_path, WH01, seed=3, faults=[{"kind": "stock-surprise", "place": shelf, "product": product, "delta": 2}])
