@@ -902,10 +902,13 @@ class Outcome:
     note: str = ""
 
 
-def flow_plan(inst: Instance, limit: "MoveLimit" = None) -> list["Move"]:
-    """Steps 1-4: the flow plan (no search). Raises :class:`Unsolvable` or :class:`Stuck`."""
+def flow_plan(inst: Instance, limit: "MoveLimit" = None, checked: bool = False) -> list["Move"]:
+    """Steps 1-4: the flow plan (no search). Raises :class:`Unsolvable` or :class:`Stuck`.
+    ``checked``: the caller already ran :func:`check_final_state` (a max-flow over products and
+    shelves: not twice per solve)."""
     limit = limit or no_limit
-    check_final_state(inst)
+    if not checked:
+        check_final_state(inst)
     final, slack = plan_targets(inst)
     room = {s: inst.capacity[s] - sum(final[s, p] for p in inst.products) for s in inst.shelves}
     flows: dict[tuple[str, str, str], int] = {}
@@ -924,7 +927,7 @@ def solve_instance(inst: Instance, limit: "MoveLimit" = None, budget: int = DEFA
     limit = limit or no_limit
     check_final_state(inst)
     try:
-        moves: Optional[list] = flow_plan(inst, limit)
+        moves: Optional[list] = flow_plan(inst, limit, checked=True)
     except Stuck as exc:
         moves, stuck = None, exc
     bound = lower_bound(inst)
