@@ -294,6 +294,23 @@ def test_misplaced_units_are_two_surprises_found_one_after_the_other(tmp_path, b
     assert sum(items.get(product, 0) for items in sim["final_stock"].values()) == before
 
 
+def test_units_found_where_the_plan_brings_more_are_planned_away(tmp_path, base):
+    """WH01 brings product1 to shelf3 until it holds 7; one of the units recorded on the shelf it
+    takes from lies on shelf3 already. When the robots get to shelf3 nothing of the plan is left,
+    but the goal does not hold in what they see: the run re-plans from there (never ends
+    believing itself done), and shelf3 holds 7 at the end."""
+    shelf, product, _ = _source(base["wh01"])
+    assert product == "product1" and shelf != "shelf3"
+    r = run(tmp_path, WH01, seed=3, faults=[
+        {"kind": "stock-surprise", "place": shelf, "product": product, "delta": -1},
+        {"kind": "stock-surprise", "place": "shelf3", "product": product, "delta": 1}])
+    assert r.ok, r.error
+    last = r.outputs["recoveries"][-1]
+    assert last["cause"]["fault"] == "f2" and last["action"] == "re-plan" and not last["pending"]
+    sim = r.outputs["simulation"]
+    assert sim["goal_met"] and sim["final_stock"]["shelf3"]["product1"] == 7
+
+
 def test_stock_surprise_the_plan_still_fits_continues(tmp_path, base):
     shelf, product, _ = _source(base["wh01"])
     r = run(tmp_path, WH01, seed=3, faults=[{"kind": "stock-surprise", "place": shelf, "product": product, "delta": 2}])

@@ -259,16 +259,24 @@ class Executor:
                                                                    self.planning.domain_text, f"recovery{k}")
             return seen["problem"]
 
+        def fits() -> bool:
+            """Whether the pending subtasks still reach the goal from the observed state (once per round)."""
+            if "fits" not in seen:
+                seen["fits"] = self._still_fits(now, problem()[0], nodes)
+            return seen["fits"]
+
         affected = [s for s in now.pending + now.running if anomaly.robot in self._robots_of(s)] if anomaly.robot else []
         needs_plan = bool(now.broken) or anomaly.kind in ("surprise", "refused", "unfinished")
         try:
-            if not now.pending and not now.broken:  # they finish from where their robots are, at their pace
+            if not now.pending and not now.broken and (not needs_plan or fits()):
+                # they finish from where their robots are, at their pace (after what was learnt of
+                # the state, only when the goal then holds: units found where the plan brings more)
                 self.schedule = self._schedule(now.records, now.legs)
                 self._continue(entry, "nothing is left to do but the subtasks under way; their robots finish them "
                                       "from where they are")
             elif anomaly.kind == "stopped" and not affected and not now.broken:
                 self._continue(entry, f"{anomaly.robot} had no work left")
-            elif needs_plan and not now.broken and self._still_fits(now, problem()[0], nodes):
+            elif needs_plan and not now.broken and fits():
                 if anomaly.kind == "surprise":
                     self._continue(entry, "the remaining plan still reaches the goal from the observed state")
                 else:

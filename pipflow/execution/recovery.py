@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from pipflow.errors import InputError, PlanningError
+from pipflow.liberrors import UNIFIED_PLANNING, library_errors
 from pipflow.pddl.convert import data_to_plan
 from pipflow.pddl.names import plan_in_world_names
 from pipflow.pddl.solver import Status, solve_problem
@@ -136,8 +137,9 @@ class Repaired:
 
 def repair(parsed: Any, steps: list[dict], planning: Planning, params: dict | None) -> Repaired | None:
     """Plan repair, the cheaper re-plan: play the old plan's steps that were not begun (``steps``,
-    ``{action, args}`` in plan order, any other keys kept in ``dropped``) from the observed state in UP's sequential simulator, keeping each that
-    applies and dropping each that does not (a shelf short of the units it takes); then ask the
+    ``{action, args}`` in plan order, any other keys kept in ``dropped``) from the observed state
+    in UP's sequential simulator, keeping each that applies and dropping each that does not (a
+    shelf short of the units it takes); then ask the
     run's planner for a plan from the state they reach to the same goal (usually a few moves:
     what the surprise or the lost load took away). The plan is the kept steps and that patch,
     valid from the observed state by construction (each kept step was applied in the
@@ -146,15 +148,30 @@ def repair(parsed: Any, steps: list[dict], planning: Planning, params: dict | No
     changed one corner of it. None when the patch cannot be found (no plan from there: the
     kept steps may have used what the goal needs) or the steps use what this check does not
     model (conditional or universally quantified effects): the caller then plans anew."""
+    with library_errors(UNIFIED_PLANNING, PlanningError, "repairing the plan"):
+        try:
+            up_plan = data_to_plan(parsed, steps)
+        except ValueError:
+            return None
+        if any(e.is_conditional() or e.is_forall() for ai in up_plan.actions for e in getattr(ai.action, "effects", [])):
+            return None
+        keep, dropped, patch = _replay(parsed, steps, up_plan)
+    result = solve_problem(patch, planning.planner, params, planning.planner_timeout)
+    if result.status != Status.SOLVED or result.plan is None:
+        return None
+    words = (f"repaired the plan: kept {len(keep)} of its {len(steps)} steps not begun, dropped {len(dropped)}, "
+             f"added {len(result.plan)} ({result.message})")
+    bare = [{"action": x["action"], "args": list(x["args"])} for x in keep]
+    return Repaired(bare + list(result.plan), len(keep), dropped, words)
+
+
+def _replay(parsed: Any, steps: list[dict], up_plan: Any) -> tuple[list[dict], list[dict], Any]:
+    """:func:`repair`'s first half: the steps kept and dropped, and the problem from the state
+    the kept ones reach (a clone of ``parsed`` whose initial values of every fluent they change
+    are that state's)."""
     # deferred: pulls unified_planning (only re-plans get here)
     from unified_planning.shortcuts import SequentialSimulator
 
-    try:
-        up_plan = data_to_plan(parsed, steps)
-    except ValueError:
-        return None
-    if any(e.is_conditional() or e.is_forall() for ai in up_plan.actions for e in getattr(ai.action, "effects", [])):
-        return None
     keep: list[dict] = []
     dropped: list[dict] = []
     changed: dict = {}
@@ -173,13 +190,7 @@ def repair(parsed: Any, steps: list[dict], planning: Planning, params: dict | No
         patch = parsed.clone()
         for fluent in changed:
             patch.set_initial_value(fluent, state.get_value(fluent))
-    result = solve_problem(patch, planning.planner, params, planning.planner_timeout)
-    if result.status != Status.SOLVED or result.plan is None:
-        return None
-    words = (f"repaired the plan: kept {len(keep)} of its {len(steps)} steps not begun, dropped {len(dropped)}, "
-             f"added {len(result.plan)} ({result.message})")
-    bare = [{"action": x["action"], "args": list(x["args"])} for x in keep]
-    return Repaired(bare + list(result.plan), len(keep), dropped, words)
+    return keep, dropped, patch
 
 
 def replan(domain: Any, world: dict, goal: Any, planning: Planning, problem: tuple[Any, str],
@@ -198,7 +209,10 @@ def replan(domain: Any, world: dict, goal: Any, planning: Planning, problem: tup
     params = planning.planner_params
     if planning.planner == TRANSPORT_PLANNER and domain.supports(Capability.TRANSPORT_PLANNER):
         params = {**domain.planner_params(world, planning.constraints), **(params or {})}
-    repaired = repair(parsed, kept, planning, params) if kept and planning.repair else None
+    try:
+        repaired = repair(parsed, kept, planning, params) if kept and planning.repair else None
+    except PlanningError:  # UP could not play the old steps: the plan is made anew
+        repaired = None
     if repaired is not None:
         plan = plan_in_world_names(repaired.plan, world)
         graph = build_graph(planning.domain_text, text, plan, planning.metadata, mode=planning.graph_mode, parsed=parsed)
