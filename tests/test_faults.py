@@ -182,6 +182,23 @@ def test_two_faults_in_one_run(tmp_path, base):
     assert r.outputs["simulation"]["goal_met"]
 
 
+def test_robot_lost_after_its_first_subtask_does_no_other(tmp_path, base):
+    """``after: 1``: the robot stops once its first subtask ends; the subtasks it still had go to
+    others, and the goal is met."""
+    wh06 = "On shelf4, there oughta be 14 prodcut3, 2 prodcut1, and 1 prduct2."  # seven moves for twelve robots
+    schedule = run(tmp_path, wh06, seed=3).outputs["schedule"]
+    counts = {r: sum(1 for s in schedule["subtasks"] if r in s["robots"]) for r in schedule["robots"]}
+    robot = next(r for r, n in sorted(counts.items()) if n >= 2)
+    first_end = min(float(s["end"]) for s in schedule["subtasks"] if robot in s["robots"])
+    r = run(tmp_path, wh06, seed=3, faults=[{"kind": "robot-loss", "robot": robot, "after": 1}])
+    assert r.ok, r.error
+    fault = r.outputs["faults"][0]
+    assert fault["occurred"] and fault["time"] == pytest.approx(first_end, abs=0.5)
+    done = r.outputs["schedule"]["subtasks"]
+    assert sum(1 for s in done if robot in s["robots"]) == 1
+    assert r.outputs["recoveries"] and r.outputs["simulation"]["goal_met"]
+
+
 def test_robot_loss_drawn_from_the_seed_is_reproducible(tmp_path):
     a = run(tmp_path, WH10, seed=5, faults="robot-loss=1")
     b = run(tmp_path, WH10, seed=5, faults="robot-loss=1")
