@@ -378,6 +378,25 @@ def test_closed_passage_is_found_and_driven_around(tmp_path, base):
 # ------------------------------------------------------------------------------------------
 # the household
 # ------------------------------------------------------------------------------------------
+def test_a_passage_that_cuts_the_floor_in_two_is_a_clear_refusal(tmp_path):
+    """The only passage from shelf1 to shelf2 closes: the robot carrying the units finds it closed
+    and no path leads on; the run stops with a refusal that says which passage and what was
+    carried out (exit 3, no traceback), not a crash and not a silent partial result."""
+    world = REPO / "tests" / "fixtures" / "faults" / "corridor.yaml"
+    out = subprocess.run([sys.executable, "-m", "pipflow.engine.cli", "run", "warehouse",
+                          "-i", "command=There should be 3 product1 in shelf2.", "-i", f"world={world}",
+                          "-i", "faults=[{kind: passage-closed, between: [shelf1, shelf2], time: 0}]",
+                          "--runs-dir", str(tmp_path / "runs")], capture_output=True, text=True, cwd=tmp_path)
+    text = out.stderr + out.stdout
+    assert out.returncode == 3, text
+    assert "Traceback" not in text and "np.float64" not in text
+    assert "found the passage closed" in text and "shelf1 and shelf2" in text and "Carried out" in text
+    record = next((tmp_path / "runs").iterdir())
+    execute = json.loads((record / "steps" / "execute" / "outputs.json").read_text())
+    execute = execute.get("outputs", execute)
+    assert execute["recoveries"][-1]["action"] == "refuse" and execute["refusal"]
+
+
 def test_household_compound_task_survives_a_robot_loss(tmp_path):
     base_run = run(tmp_path, "Put the apple and the tomato in the fridge.", "household", team="homogeneous", seed=1)
     assert base_run.ok

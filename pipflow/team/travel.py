@@ -110,6 +110,11 @@ def _blocked(ax: Any, ay: Any, bx: np.ndarray, by: np.ndarray, x0: np.ndarray,
     return ~miss & (t0 < t1 - _EPS) & inside
 
 
+def _shown(p: Any) -> str:
+    """A point as a message shows it: ``[9.6, 1.2]`` (never numpy's ``np.float64(9.6)``)."""
+    return "[" + ", ".join(f"{float(v):g}" for v in p) + "]"
+
+
 def _visible_from(a: Point, targets: np.ndarray, rects: np.ndarray, cores: np.ndarray) -> np.ndarray:
     """For each target (rows of an (n, 2) array), whether the segment from ``a`` keeps out of every
     inflated footprint (``rects``, (m, 4) arrays of x0, y0, x1, y1). An end point within a
@@ -361,7 +366,7 @@ class _Geometry:
         ok, lengths = self.seen(p)
         total = lengths + dist[ok]
         if not len(ok) or not np.isfinite(total).any():
-            raise InputError(f"no obstacle-free path from {list(p)} to {list(self.nodes[target])}")
+            raise InputError(f"no obstacle-free path from {_shown(p)} to {_shown(self.nodes[target])}")
         best = int(np.argmin(total))
         v = int(ok[best])
         path = [p] if lengths[best] > 0 else []
@@ -388,7 +393,7 @@ class _Geometry:
         g = bmat([[self.graph(), csr_matrix(extra.T)], [csr_matrix(extra), csr_matrix(ab)]], format="csr")
         dist, pred = dijkstra(g, directed=False, indices=[k], return_predecessors=True)
         if not np.isfinite(dist[0, k + 1]):
-            raise InputError(f"no obstacle-free path from {list(a)} to {list(b)}")
+            raise InputError(f"no obstacle-free path from {_shown(a)} to {_shown(b)}")
         path, v = [], k + 1
         while v != k:
             path.append(b if v == k + 1 else (float(self.nodes[v, 0]), float(self.nodes[v, 1])))
