@@ -332,7 +332,7 @@ def _run_body(d: Path, drawn: _Pictures) -> str:
         pictures.gantt(schedule, drawn.path("gantt.png"))
         parts.append("<h2>Schedule</h2>" + _img(drawn.src("gantt.png"), "Gantt chart per robot"))
     parts.append(_replay(d, steps, world, schedule, graph_s[2]["graph"] if graph_s else None,
-                         incidents(world, executed[2]) if executed is not None else None))
+                         _incidents(world, executed[2]) if executed is not None else None))
 
     if sim_s:
         parts += _simulation_sections(sim_s, world, schedule, outputs.get("goal", inputs.get("goal")), mode, drawn)
@@ -438,7 +438,7 @@ def _executed_plan_section(out: dict, graph_s: tuple[str, Path, dict] | None, sc
                    else "<p>nothing was carried out</p>")
 
 
-def incidents(world: dict | None, out: dict) -> list[dict]:
+def _incidents(world: dict | None, out: dict) -> list[dict]:
     """The faults and recovery rounds of a run as moments of its replay: ``{time, kind, words}``
     and, where the fault is at a point, ``x``/``y`` (a robot's stop, a closed passage's middle,
     a surprising place's access point) or the ``robot`` it struck (the replay puts the mark
