@@ -17,6 +17,7 @@ from pathlib import Path
 import pytest
 
 import pipflow
+from pipflow.errors import InputError
 from pipflow.execution import faults as fk
 from pipflow.experiments.benchmarking import RESULT_FIELDS
 from pipflow.team.scheduling import Standing, Timeline
@@ -580,3 +581,32 @@ def test_a_drawn_stock_surprise_is_units_missing_or_misplaced(base):
             assert sum(real["stock"][host["place"]].values()) <= world["shelves"][host["place"]]["capacity"]
             assert placed[0].surprise["places"] == [first["place"]] and placed[1].surprise["places"] == [host["place"]]
     assert seen == {"missing", "misplaced"}
+
+
+def test_a_drop_place_never_walls_its_own_access_point_in():
+    """A robot stops in a pocket between two pieces of furniture (the hv-12 home, seed 1): the
+    square beside it on the side it came from, with the furniture's margins, would close the
+    pocket, and no robot could fetch what it carried (the run was refused). The drop place goes
+    on a side that keeps its access point reachable the way the robot came."""
+    from pipflow.execution.motion import drop_site
+    from pipflow.team.travel import TravelMap
+    from pipflow.warehouse.faults import drop_place
+
+    world = {"floor": {"width": 10, "height": 8}, "products": {"p": {}}, "stock": {"desk": {}, "bookshelf": {}},
+             "shelves": {"desk": {"x": 8.6, "y": 2.5, "width": 1.2, "depth": 0.7, "capacity": 5, "access": [9.2, 3.9]},
+                         "bookshelf": {"x": 9.4, "y": 0.2, "width": 0.5, "depth": 1.4, "capacity": 5,
+                                       "access": [8.6, 0.5]}},
+             "robots": {"r1": {"start": [1, 1], "skills": {"carry": 1}}}}
+    point, came = (9.2, 1.9), (6.0, 1.7)
+
+    def reaches(site: dict) -> bool:
+        try:
+            TravelMap(drop_place(world, "r1", site)[0]).distance(came, tuple(site["access"]))
+        except InputError:
+            return False
+        return True
+
+    blind = drop_site(world, point, came)
+    assert not reaches(blind)  # the side it came from walls the pocket in
+    site = drop_site(world, point, came, reaches)
+    assert reaches(site) and site["access"] == [9.2, 1.9]

@@ -325,7 +325,22 @@ class Executor:
             return
         legs = ((self.schedule.get("robots") or {}).get(robot) or {}).get("legs") or []
         came = next((l.get("from") for l in reversed(legs) if float(l["start"]) < t), None)
-        site = drop_site(self.known(), point, tuple(came) if came else None)
+        known = self.known()
+
+        def reaches(site: dict) -> bool:
+            """Whether a robot coming the way this one came can still get to the site."""
+            if not came:
+                return True
+            from pipflow.team.travel import TravelMap  # deferred: numpy/networkx (only runs with faults get here)
+
+            world, _ = self.domain.drop_place(known, robot, site)
+            try:
+                TravelMap(world).distance(tuple(came), tuple(site["access"]))
+            except InputError:
+                return False
+            return True
+
+        site = drop_site(known, point, tuple(came) if came else None, reaches)
         _, name = self.domain.drop_place(self.records, robot, site)
         self.drop_sites[robot], self.drops[robot] = site, name
 
