@@ -86,6 +86,40 @@ def cast(world: dict, schedule: dict) -> tuple[dict, dict]:
             {**schedule, "robots": {r: info for r, info in (schedule.get("robots") or {}).items() if r in named}})
 
 
+class _Observed:
+    """What one recovery round learns of the observed state, each part computed once and only if
+    asked: the world after the running subtasks end (played on what is known), the goal from it
+    as a problem, and whether the pending subtasks still reach the goal from it. The
+    stay-or-re-plan check, the re-plan and the feasibility check all read the same state."""
+
+    def __init__(self, executor: "Executor", known: dict, now: Cut, lost: list[str], k: int):
+        self.ex, self.known, self.now, self.lost, self.k = executor, known, now, lost, k
+        self._world: dict | None = None
+        self._problem: tuple[Any, str] | None = None
+        self._fits: bool | None = None
+
+    def world(self) -> dict:
+        if self._world is None:
+            ex, now = self.ex, self.now
+            belief = ex.domain.play(*cast(self.known, ex._schedule(now.records, now.legs)), ex.graph)
+            state_world = ex.domain.with_state(self.known, belief.final_state)
+            self._world = {**state_world, "robots": {r: v for r, v in state_world["robots"].items() if r not in self.lost}}
+        return self._world
+
+    def problem(self) -> tuple[Any, str]:
+        if self._problem is None:
+            ex = self.ex
+            with library_errors(UNIFIED_PLANNING, PlanningError, "building the problem from the observed state"):
+                self._problem = ex.domain.observed_problem(ex._accepted(), self.world(), ex.goal,
+                                                           ex.planning.domain_text, f"recovery{self.k}")
+        return self._problem
+
+    def fits(self) -> bool:
+        if self._fits is None:
+            self._fits = self.ex._still_fits(self.now, self.problem()[0], {n["id"]: n for n in self.ex.graph["nodes"]})
+        return self._fits
+
+
 class Executor:
     """One execution under faults (module docstring)."""
 
@@ -239,32 +273,8 @@ class Executor:
             return
         entry.update({"done": now.done, "running": now.running, "broken": now.broken, "pending": now.pending,
                       "lost": lost})
-        seen: dict[str, Any] = {}
-
-        def observed() -> dict:
-            """The world as observed: its state after the running subtasks end (played on what is
-            known), once per round: the stay-or-re-plan check, the re-plan and the feasibility
-            check all read the same state."""
-            if "world" not in seen:
-                belief = self.domain.play(*cast(known, self._schedule(now.records, now.legs)), self.graph)
-                state_world = self.domain.with_state(known, belief.final_state)
-                seen["world"] = {**state_world, "robots": {r: v for r, v in state_world["robots"].items() if r not in lost}}
-            return seen["world"]
-
-        def problem() -> tuple[Any, str]:
-            """The goal from the observed state as a problem (parsed, text), built once per round."""
-            if "problem" not in seen:
-                with library_errors(UNIFIED_PLANNING, PlanningError, "building the problem from the observed state"):
-                    seen["problem"] = self.domain.observed_problem(self._accepted(), observed(), self.goal,
-                                                                   self.planning.domain_text, f"recovery{k}")
-            return seen["problem"]
-
-        def fits() -> bool:
-            """Whether the pending subtasks still reach the goal from the observed state (once per round)."""
-            if "fits" not in seen:
-                seen["fits"] = self._still_fits(now, problem()[0], nodes)
-            return seen["fits"]
-
+        seen = _Observed(self, known, now, lost, k)
+        observed, problem, fits = seen.world, seen.problem, seen.fits
         affected = [s for s in now.pending + now.running if anomaly.robot in self._robots_of(s)] if anomaly.robot else []
         needs_plan = bool(now.broken) or anomaly.kind in ("surprise", "refused", "unfinished")
         try:

@@ -317,20 +317,7 @@ def _run_body(d: Path, drawn: _Pictures) -> str:
             parts.append("<h2>Dependency graph</h2>" + _img(drawn.src("graph.png"), "dependency graph"))
         except Exception as exc:  # a picture must never hide the rest of the report
             parts.append(f"<h2>Dependency graph</h2><p class='bad'>could not draw: {_e(exc)}</p>")
-    if schedule and not pictures.wanted(mode, "gantt", pictures.size_of("gantt", schedule)):
-        parts.append(f"<h2>Schedule</h2><p>Gantt chart not drawn (pictures: {_e(mode)}; "
-                     f"{pictures.size_of('gantt', schedule)} working robots)</p>")
-    elif schedule and executed is not None:
-        try:
-            pictures.fault_gantt(schedule, executed[2]["faults"], executed[2].get("recoveries") or [],
-                                 drawn.path("faults-gantt.png"))
-            parts.append("<h2>Schedule as carried out</h2>"
-                         + _img(drawn.src("faults-gantt.png"), "the schedule carried out, with the faults and recoveries"))
-        except Exception as exc:  # a picture must never hide the rest of the report
-            parts.append(f"<h2>Schedule as carried out</h2><p class='bad'>could not draw: {_e(exc)}</p>")
-    elif schedule:
-        pictures.gantt(schedule, drawn.path("gantt.png"))
-        parts.append("<h2>Schedule</h2>" + _img(drawn.src("gantt.png"), "Gantt chart per robot"))
+    parts.append(_schedule_section(schedule, executed[2] if executed is not None else None, mode, drawn))
     parts.append(_replay(d, steps, world, schedule, graph_s[2]["graph"] if graph_s else None,
                          _incidents(world, executed[2]) if executed is not None else None))
 
@@ -339,19 +326,44 @@ def _run_body(d: Path, drawn: _Pictures) -> str:
 
     parts.append(_faults_section(executed, world, drawn, records, sim_s))  # runs under faults only ("" otherwise)
 
-    if met_s and isinstance(met_s[2].get("violations"), list):  # a skipped score step: all null
-        m = upgrade_travel_keys(met_s[2])
-        parts.append("<h2>Metrics</h2>" + _table(
-            ["success", "GCR", "Exe", "RU", "TC-max (m)", "TC-avg, robots that moved (m)", "TC-avg over the team (m)",
-             "planned", "lower bound"],
-            [[m.get("success"), m.get("gcr"), m.get("exe"), m.get("ru"), m.get("tc_max"), m.get("tc_avg"),
-              m.get("tc_avg_team"),
-              m.get("planned"), m.get("lower_bound")]]))
-        if m.get("violations"):
-            parts.append("<ul>" + "".join(f"<li class='bad'>{_e(v)}</li>" for v in m["violations"]) + "</ul>")
+    parts.append(_metrics_section(met_s))
 
     parts.append("<h2>Steps</h2>" + _table(["step", "outputs"], [[n, ", ".join(sorted(o))] for n, _, o in steps]))
     return "\n".join(parts)
+
+
+def _metrics_section(met_s: tuple[str, Path, dict] | None) -> str:
+    """The score step's metrics and the violations it found ("" for a skipped score step)."""
+    if not met_s or not isinstance(met_s[2].get("violations"), list):  # a skipped score step: all null
+        return ""
+    m = upgrade_travel_keys(met_s[2])
+    out = "<h2>Metrics</h2>" + _table(
+        ["success", "GCR", "Exe", "RU", "TC-max (m)", "TC-avg, robots that moved (m)", "TC-avg over the team (m)",
+         "planned", "lower bound"],
+        [[m.get("success"), m.get("gcr"), m.get("exe"), m.get("ru"), m.get("tc_max"), m.get("tc_avg"),
+          m.get("tc_avg_team"), m.get("planned"), m.get("lower_bound")]])
+    if m.get("violations"):
+        out += "<ul>" + "".join(f"<li class='bad'>{_e(v)}</li>" for v in m["violations"]) + "</ul>"
+    return out
+
+
+def _schedule_section(schedule: dict | None, executed: dict | None, mode: str, drawn: _Pictures) -> str:
+    """The Gantt chart: of the schedule as carried out, with the faults and recoveries, under
+    faults (``executed``: the execution step's outputs); of the schedule otherwise."""
+    if not schedule:
+        return ""
+    if not pictures.wanted(mode, "gantt", pictures.size_of("gantt", schedule)):
+        return (f"<h2>Schedule</h2><p>Gantt chart not drawn (pictures: {_e(mode)}; "
+                f"{pictures.size_of('gantt', schedule)} working robots)</p>")
+    if executed is None:
+        pictures.gantt(schedule, drawn.path("gantt.png"))
+        return "<h2>Schedule</h2>" + _img(drawn.src("gantt.png"), "Gantt chart per robot")
+    try:
+        pictures.fault_gantt(schedule, executed["faults"], executed.get("recoveries") or [], drawn.path("faults-gantt.png"))
+        return ("<h2>Schedule as carried out</h2>"
+                + _img(drawn.src("faults-gantt.png"), "the schedule carried out, with the faults and recoveries"))
+    except Exception as exc:  # a picture must never hide the rest of the report
+        return f"<h2>Schedule as carried out</h2><p class='bad'>could not draw: {_e(exc)}</p>"
 
 
 def _plan_section(plan: Any, graph_s: tuple[str, Path, dict] | None, schedule: dict | None) -> str:
