@@ -56,6 +56,8 @@ def execute(
     constraints: Annotated[list | None, Doc("the run's robot rules")] = None,
     speed: Annotated[float, Doc("robot speed, m/s")] = 1.0,
     handling: Annotated[float, Doc("seconds of loading/unloading per route stop")] = 2.0,
+    repair: Annotated[bool, Doc("a re-plan first repairs the old plan (keeps its steps that still apply, plans what "
+                                "they leave undone); false: every re-plan is a plan from scratch")] = True,
 ) -> ExecutionOutputs:
     """Faults are checked against the world before anything is played (an unknown robot or shelf
     is exit 2, naming the fault)."""
@@ -81,7 +83,7 @@ def execute(
     planning = Planning(domain_text=ctx.resolve_path(domain).read_text(encoding="utf-8"), metadata=_metadata(ctx, actions),
                         problem=problem, planner=planner, planner_params=planner_params, fallback=fallback,
                         planner_timeout=planner_timeout, graph_mode=graph_mode, method=method, mode=mode, cost=cost,
-                        constraints=list(constraints or []), speed=speed, handling=handling)
+                        constraints=list(constraints or []), speed=speed, handling=handling, repair=repair)
     with library_errors(SCIP, AllocationError, "re-allocating after a fault"):
         outcome = Executor(domain_obj, world, schedule, graph, placed, planning, log=ctx.log,
                            save=ctx.write_artifact).run()

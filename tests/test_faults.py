@@ -17,6 +17,7 @@ from pathlib import Path
 import pytest
 
 import pipflow
+from pipflow.errors import InputError
 from pipflow.execution import faults as fk
 from pipflow.experiments.benchmarking import RESULT_FIELDS
 from pipflow.team.scheduling import Standing, Timeline
@@ -182,6 +183,23 @@ def test_two_faults_in_one_run(tmp_path, base):
     assert r.outputs["simulation"]["goal_met"]
 
 
+def test_robot_lost_after_its_first_subtask_does_no_other(tmp_path, base):
+    """``after: 1``: the robot stops once its first subtask ends; the subtasks it still had go to
+    others, and the goal is met."""
+    wh06 = "On shelf4, there oughta be 14 prodcut3, 2 prodcut1, and 1 prduct2."  # seven moves for twelve robots
+    schedule = run(tmp_path, wh06, seed=3).outputs["schedule"]
+    counts = {r: sum(1 for s in schedule["subtasks"] if r in s["robots"]) for r in schedule["robots"]}
+    robot = next(r for r, n in sorted(counts.items()) if n >= 2)
+    first_end = min(float(s["end"]) for s in schedule["subtasks"] if robot in s["robots"])
+    r = run(tmp_path, wh06, seed=3, faults=[{"kind": "robot-loss", "robot": robot, "after": 1}])
+    assert r.ok, r.error
+    fault = r.outputs["faults"][0]
+    assert fault["occurred"] and fault["time"] == pytest.approx(first_end, abs=0.5)
+    done = r.outputs["schedule"]["subtasks"]
+    assert sum(1 for s in done if robot in s["robots"]) == 1
+    assert r.outputs["recoveries"] and r.outputs["simulation"]["goal_met"]
+
+
 def test_robot_loss_drawn_from_the_seed_is_reproducible(tmp_path):
     a = run(tmp_path, WH10, seed=5, faults="robot-loss=1")
     b = run(tmp_path, WH10, seed=5, faults="robot-loss=1")
@@ -213,6 +231,102 @@ def test_stock_surprise_is_found_on_arrival_and_the_run_replans(tmp_path, base):
     sim = r.outputs["simulation"]
     assert sim["goal_met"] and sim["final_stock"]["shelf3"]["product1"] == 7 and not sim["failures"]
     assert world["goal"] == {"shelf3": {"product1": 7}}
+
+
+def test_replan_repairs_the_plan_keeping_the_steps_that_still_apply(tmp_path, base):
+    """WH10's first move takes from a shelf that holds one unit fewer than recorded: the re-plan
+    keeps every step not begun that still applies from the observed state, drops the one that
+    takes more than is there, and plans only what that leaves undone; with repair=false the
+    same fault is re-planned from scratch. Both meet the goal; the repaired plan keeps the
+    old plan's untouched steps (the same action and arguments) and adds only the patch."""
+    shelf, product, rec = _source(base["wh10"])
+    fault = [{"kind": "stock-surprise", "place": shelf, "product": product, "delta": -1}]
+    repaired = run(tmp_path, WH10, seed=3, faults=fault)
+    scratch = run(tmp_path, WH10, seed=3, faults=fault, repair=False)
+    assert repaired.ok and scratch.ok, (repaired.error, scratch.error)
+    (first,) = repaired.outputs["recoveries"]
+    assert first["action"] == "re-plan" and first["repaired"]["kept"] >= 1
+    nodes = {n["id"]: n for n in base["wh10"].outputs["graph"]["nodes"]}
+    steps = [(nodes[s]["action"], nodes[s]["args"]) for s in first["aborted"]]
+    dropped = [(nodes[s]["action"], nodes[s]["args"]) for s in first["repaired"]["dropped"]]
+    kept = [x for x in steps if x not in dropped]
+    assert len(kept) == first["repaired"]["kept"]
+    new = [(p["action"], p["args"]) for p in first["plan"]]
+    assert new[:len(kept)] == kept  # the old steps that still apply, in their order, then the patch
+    assert "repaired the plan" in first["planner"]
+    (other,) = scratch.outputs["recoveries"]
+    assert other["action"] == "re-plan" and "repaired" not in other
+    for r in (repaired, scratch):
+        sim = r.outputs["simulation"]
+        assert sim["goal_met"] and not sim["failures"]
+        assert sim["final_stock"]["shelf4"] == {"product3": 12, "product1": 5} | {
+            k: v for k, v in sim["final_stock"]["shelf4"].items() if k not in ("product3", "product1")}
+
+
+def test_the_records_are_never_written_into(tmp_path, base):
+    """The executor builds the worlds it plays from the records, copying only what it changes:
+    after a run with a lost robot, a surprise and a closed passage, the world as loaded is as it
+    was (nothing downstream wrote into a world it shares with the records)."""
+    from pipflow.execution.executor import Executor
+
+    seen = {}
+    original = Executor.__init__
+
+    def keep(self, domain, world, *args, **kwargs):
+        seen["records"], seen["copy"] = world, json.loads(json.dumps(world))
+        original(self, domain, world, *args, **kwargs)
+
+    schedule = base["wh10"].outputs["schedule"]
+    robot, leg, _ = leg_where(schedule, carrying)
+    shelf, product, _ = _source(base["wh10"])
+    Executor.__init__ = keep
+    try:
+        r = run(tmp_path, WH10, seed=3, faults=[
+            {"kind": "robot-loss", "robot": robot, "time": round((float(leg["start"]) + float(leg["end"])) / 2, 3)},
+            {"kind": "stock-surprise", "place": shelf, "product": product, "delta": -1}])
+    finally:
+        Executor.__init__ = original
+    assert r.ok, r.error
+    assert len(r.outputs["recoveries"]) >= 2
+    assert json.loads(json.dumps(seen["records"])) == seen["copy"]
+
+
+def test_misplaced_units_are_two_surprises_found_one_after_the_other(tmp_path, base):
+    """One unit recorded on the first shelf WH10 takes from lies on the shelf that move brings
+    its units to: the shortage is found on arrival at the first shelf, the extra unit when a
+    robot first reaches the other; two rounds, each from what was known then, and the goal is
+    met in the world as it really was (the same units, one elsewhere)."""
+    shelf, product, _ = _source(base["wh10"])
+    other = base["wh10"].outputs["graph"]["nodes"][0]["fields"]["to"]
+    r = run(tmp_path, WH10, seed=3, faults=[
+        {"kind": "stock-surprise", "place": shelf, "product": product, "delta": -1},
+        {"kind": "stock-surprise", "place": other, "product": product, "delta": 1}])
+    assert r.ok, r.error
+    rounds = r.outputs["recoveries"]
+    assert [x["cause"]["fault"] for x in rounds if x["cause"]["kind"] == "surprise"] == ["f1", "f2"]
+    assert rounds[0]["time"] < rounds[1]["time"]
+    assert [f["detected"] is not None for f in r.outputs["faults"]] == [True, True]
+    sim = r.outputs["simulation"]
+    assert sim["goal_met"] and sim["final_stock"]["shelf4"]["product3"] == 12 and sim["final_stock"]["shelf4"]["product1"] == 5
+    before = sum(items.get(product, 0) for items in base["wh10"].outputs["simulation"]["final_stock"].values())
+    assert sum(items.get(product, 0) for items in sim["final_stock"].values()) == before
+
+
+def test_units_found_where_the_plan_brings_more_are_planned_away(tmp_path, base):
+    """WH01 brings product1 to shelf3 until it holds 7; one of the units recorded on the shelf it
+    takes from lies on shelf3 already. When the robots get to shelf3 nothing of the plan is left,
+    but the goal does not hold in what they see: the run re-plans from there (never ends
+    believing itself done), and shelf3 holds 7 at the end."""
+    shelf, product, _ = _source(base["wh01"])
+    assert product == "product1" and shelf != "shelf3"
+    r = run(tmp_path, WH01, seed=3, faults=[
+        {"kind": "stock-surprise", "place": shelf, "product": product, "delta": -1},
+        {"kind": "stock-surprise", "place": "shelf3", "product": product, "delta": 1}])
+    assert r.ok, r.error
+    last = r.outputs["recoveries"][-1]
+    assert last["cause"]["fault"] == "f2" and last["action"] == "re-plan" and not last["pending"]
+    sim = r.outputs["simulation"]
+    assert sim["goal_met"] and sim["final_stock"]["shelf3"]["product1"] == 7
 
 
 def test_stock_surprise_the_plan_still_fits_continues(tmp_path, base):
@@ -265,6 +379,25 @@ def test_closed_passage_is_found_and_driven_around(tmp_path, base):
 # ------------------------------------------------------------------------------------------
 # the household
 # ------------------------------------------------------------------------------------------
+def test_a_passage_that_cuts_the_floor_in_two_is_a_clear_refusal(tmp_path):
+    """The only passage from shelf1 to shelf2 closes: the robot carrying the units finds it closed
+    and no path leads on; the run stops with a refusal that says which passage and what was
+    carried out (exit 3, no traceback), not a crash and not a silent partial result."""
+    world = REPO / "tests" / "fixtures" / "faults" / "corridor.yaml"
+    out = subprocess.run([sys.executable, "-m", "pipflow.engine.cli", "run", "warehouse",
+                          "-i", "command=There should be 3 product1 in shelf2.", "-i", f"world={world}",
+                          "-i", "faults=[{kind: passage-closed, between: [shelf1, shelf2], time: 0}]",
+                          "--runs-dir", str(tmp_path / "runs")], capture_output=True, text=True, cwd=tmp_path)
+    text = out.stderr + out.stdout
+    assert out.returncode == 3, text
+    assert "Traceback" not in text and "np.float64" not in text
+    assert "found the passage closed" in text and "shelf1 and shelf2" in text and "Carried out" in text
+    record = next((tmp_path / "runs").iterdir())
+    execute = json.loads((record / "steps" / "execute" / "outputs.json").read_text())
+    execute = execute.get("outputs", execute)
+    assert execute["recoveries"][-1]["action"] == "refuse" and execute["refusal"]
+
+
 def test_household_compound_task_survives_a_robot_loss(tmp_path):
     base_run = run(tmp_path, "Put the apple and the tomato in the fridge.", "household", team="homogeneous", seed=1)
     assert base_run.ok
@@ -342,6 +475,30 @@ def test_bench_measures_with_and_without_faults_side_by_side(tmp_path):
     assert "Faults" not in (tmp_path / "p" / "table.md").read_text() and "faults" not in plain["variants"][0]
 
 
+def test_bench_table_says_sr_where_reachable_and_the_clear_refusals(tmp_path):
+    """A shelf short of one unit of a product the goal needs every unit of: that run's goal is out
+    of reach and its right answer is a refusal; the other task never visits the shelf and
+    succeeds. The table's row names the fault kind, SR over all runs (50%), the runs whose goal
+    stayed reachable (1) and SR among them (100%), and the clear refusal (1), apart from
+    refusals of a goal still reachable (0); runs.csv says per run whether it stayed reachable."""
+    tasks = tmp_path / "tasks.yaml"
+    tasks.write_text(f"world: {REPO / 'benchmarks/warehouse/world.yaml'}\ntasks:\n"
+                     f"  - id: wh-01\n    command: \"{WH01}\"\n    goal: {{shelf3: {{product1: 7}}}}\n"
+                     "  - id: all-p3\n    command: \"shelf4 stores 15 product3.\"\n    goal: {shelf4: {product3: 15}}\n")
+    surprise = [{"kind": "stock-surprise", "place": "shelf2", "product": "product3", "delta": -1}]
+    results = pipflow.bench(tasks, seeds=1, out=tmp_path / "b", faults=surprise)
+    f = results["variants"][0]["faults"]
+    assert (f["runs"], f["sr"], f["reachable"], f["sr_feasible"], f["refused_right"], f["refused_wrong"]) == \
+        (2, 0.5, 1, 1.0, 1, 0)
+    assert f["kinds"] == ["stock-surprise"]
+    row = next(line for line in (tmp_path / "b" / "table.md").read_text().splitlines() if line.startswith("| default |"))
+    assert [c.strip() for c in row.strip("|").split("|")][:8] == ["default", "stock-surprise", "2", "50", "1", "100", "1", "0"]
+    with (tmp_path / "b" / "runs.csv").open() as fh:
+        rows = {r["task"]: r for r in csv.DictReader(fh)}
+    assert rows["all-p3"]["feasible_after_faults"] == "False" and rows["all-p3"]["fault_outcome"] == "refused: out of reach"
+    assert rows["wh-01"]["fault_outcome"] == "succeeded"
+
+
 def test_report_shows_where_and_when_faults_struck(tmp_path, base):
     schedule = base["wh10"].outputs["schedule"]
     robot, leg, _ = leg_where(schedule, carrying)
@@ -384,3 +541,72 @@ def test_fault_counts_and_specs_are_read():
     assert fk.parse("none") == [] and fk.parse(None) == [] and fk.parse([]) == []
     (one,) = fk.parse({"kind": "robot-loss", "robot": "robot2", "after": 2})
     assert one.given == {"robot": "robot2", "after": 2}
+
+
+def test_a_drawn_stock_surprise_is_units_missing_or_misplaced(base):
+    """Over seeds, the warehouse's drawn surprise is either units gone from a shelf the plan takes
+    from (fewer in the world than recorded), or the same units lying on another shelf with room
+    for them (the total conserved); a misplaced draw is two faults, each found where a robot
+    arrives. Never units from nowhere, never at a shelf recorded empty."""
+    from pipflow.taskdomains import task_domain
+    from pipflow.execution.capability import capable
+
+    run_ = base["wh10"]
+    world = json.loads((run_.record / "steps" / "world" / "outputs.json").read_text())
+    world = world.get("outputs", world)["world"]
+    domain = capable(task_domain(world))
+    takes = {n["fields"]["from"] for n in run_.outputs["graph"]["nodes"]}
+    seen = set()
+    for seed in range(40):
+        placed = fk.resolve(fk.parse("stock-surprise=1", domain.surprise_names), world, run_.outputs["schedule"],
+                            run_.outputs["graph"], seed, domain)
+        real = world
+        for f in placed:
+            real = domain.apply_surprise(real, f.surprise)
+        total = {p: sum(items.get(p, 0) for items in world["stock"].values()) for p in world["products"]}
+        after = {p: sum(items.get(p, 0) for items in real["stock"].values()) for p in world["products"]}
+        first = placed[0].surprise
+        assert first["place"] in takes and first["records"] > 0 and first["count"] < first["records"]
+        k = first["records"] - first["count"]
+        assert 1 <= k <= 3
+        how = first["how"]
+        seen.add(how)
+        if how == "missing":
+            assert len(placed) == 1 and after[first["product"]] == total[first["product"]] - k
+        else:
+            assert how == "misplaced" and [f.id for f in placed] == ["f1a", "f1b"]
+            host = placed[1].surprise
+            assert host["place"] != first["place"] and host["count"] == host["records"] + k
+            assert after == total  # the same units, elsewhere
+            assert sum(real["stock"][host["place"]].values()) <= world["shelves"][host["place"]]["capacity"]
+            assert placed[0].surprise["places"] == [first["place"]] and placed[1].surprise["places"] == [host["place"]]
+    assert seen == {"missing", "misplaced"}
+
+
+def test_a_drop_place_never_walls_its_own_access_point_in():
+    """A robot stops in a pocket between two pieces of furniture (the hv-12 home, seed 1): the
+    square beside it on the side it came from, with the furniture's margins, would close the
+    pocket, and no robot could fetch what it carried (the run was refused). The drop place goes
+    on a side that keeps its access point reachable the way the robot came."""
+    from pipflow.execution.motion import drop_site
+    from pipflow.team.travel import TravelMap
+    from pipflow.warehouse.faults import drop_place
+
+    world = {"floor": {"width": 10, "height": 8}, "products": {"p": {}}, "stock": {"desk": {}, "bookshelf": {}},
+             "shelves": {"desk": {"x": 8.6, "y": 2.5, "width": 1.2, "depth": 0.7, "capacity": 5, "access": [9.2, 3.9]},
+                         "bookshelf": {"x": 9.4, "y": 0.2, "width": 0.5, "depth": 1.4, "capacity": 5,
+                                       "access": [8.6, 0.5]}},
+             "robots": {"r1": {"start": [1, 1], "skills": {"carry": 1}}}}
+    point, came = (9.2, 1.9), (6.0, 1.7)
+
+    def reaches(site: dict) -> bool:
+        try:
+            TravelMap(drop_place(world, "r1", site)[0]).distance(came, tuple(site["access"]))
+        except InputError:
+            return False
+        return True
+
+    blind = drop_site(world, point, came)
+    assert not reaches(blind)  # the side it came from walls the pocket in
+    site = drop_site(world, point, came, reaches)
+    assert reaches(site) and site["access"] == [9.2, 1.9]

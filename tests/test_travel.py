@@ -145,3 +145,64 @@ def test_bad_places_are_input_errors():
     bad = dict(w, robots={"r0": {"start": [50, 1], "skills": {"carry": 1}}})
     with pytest.raises(InputError, match="off the floor"):
         TravelMap(bad)
+
+
+@pytest.mark.parametrize("size", ["paper", "generated"])
+def test_a_floor_grown_by_a_barrier_and_a_drop_place_is_the_floor_built_anew(world, size):
+    """A closed passage (a barrier) and a stopped robot's drop place (a small footprint with an
+    access point) added to a floor whose graph is built: the grown graph has exactly the edges,
+    lengths and distances of the graph built from nothing for the new floor, and it was grown
+    (the old graph's edges reused), not built again."""
+    import sys
+
+    import numpy as np
+
+    from pipflow.team import travel
+
+    if size == "generated":
+        sys.path.insert(0, str(Path(__file__).parents[1] / "benchmarks"))
+        from pipeline import generate_world
+
+        world = generate_world(60, 40, 4)
+    shelves = list(world["shelves"].values())
+    s = shelves[0]
+    x, y = float(s["x"]) + float(s["width"]) + 0.2, float(s["y"]) - 0.4
+    more = dict(world, shelves=dict(world["shelves"], **{"robot0-cargo": {
+        "x": x, "y": y, "width": 0.6, "depth": 0.6, "capacity": 6, "access": [x + 0.3, y - 0.5], "drop": "robot0"}}),
+        stock=dict(world.get("stock") or {}, **{"robot0-cargo": {}}),
+        barriers=[{"x": float(s["x"]) - 1.5, "y": float(s["y"]) - 1.0, "width": 1.2, "depth": 0.3}])
+    travel._GEOMETRIES.clear()
+    before = TravelMap(world).geometry()
+    before.edges()  # the floor before: built
+    built = travel._Geometry.__init__
+    grown_called = []
+    original = travel._Geometry.grown.__func__
+
+    def grown(cls, *args):
+        grown_called.append(True)
+        return original(cls, *args)
+
+    travel._Geometry.grown = classmethod(grown)
+    try:
+        after = TravelMap(more)
+        fresh = after.geometry()
+    finally:
+        travel._Geometry.grown = classmethod(original)
+    assert grown_called and fresh._edges is not None
+    travel._GEOMETRIES.clear()
+    anew = TravelMap(more).geometry()
+    assert anew is not fresh and travel._Geometry.__init__ is built
+
+    def pairs(geo):
+        r, c, w = geo.edges()
+        return {frozenset([tuple(geo.nodes[i]), tuple(geo.nodes[j])]): round(float(d), 9) for i, j, d in zip(r, c, w)}
+
+    assert pairs(fresh) == pairs(anew) and len(pairs(anew)) > 0
+    gone, new = set(pairs(before)) - set(pairs(anew)), set(pairs(anew)) - set(pairs(before))
+    assert gone and new  # the new footprints blocked some old edges and brought their own
+    assert np.allclose(fresh.nodes, anew.nodes)
+    places = list(more["shelves"])[:6] + ["robot0-cargo"]
+    for a in places:
+        for b in places:
+            assert fresh.route_to_node(after.point(a), fresh.index[after.point(b)])[0] == pytest.approx(
+                anew.route_to_node(after.point(a), anew.index[after.point(b)])[0])

@@ -70,7 +70,9 @@ class ExecutionCapability:
                       rng: random.Random) -> dict | None:
         """A surprise that matters to this schedule (at a place it takes something from), drawn
         with ``rng``; None when the schedule offers none. The dict has ``places`` (where a robot
-        that arrives notices it), ``words`` (what it is) and the domain's own fields."""
+        that arrives notices it), ``words`` (what it is) and the domain's own fields; or ``parts``,
+        a list of such dicts found each on its own (units missing at one place lie at another),
+        and ``how`` it came about (the domain's word, kept in the record)."""
         return None
 
     def check_surprise(self, world: dict, given: dict, where: str) -> dict:

@@ -46,6 +46,7 @@ from pipflow.execution.standing import Cut, Driving, Stops, cut
 from pipflow.liberrors import UNIFIED_PLANNING, library_errors
 from pipflow.errors import PlanningError
 from pipflow.pddl.common import parse
+from pipflow.pddl.convert import data_to_plan
 
 EPS = 1e-6
 #: recoveries allowed per fault (and a few for anomalies no fault explains) before the executor
@@ -85,6 +86,40 @@ def cast(world: dict, schedule: dict) -> tuple[dict, dict]:
             {**schedule, "robots": {r: info for r, info in (schedule.get("robots") or {}).items() if r in named}})
 
 
+class _Observed:
+    """What one recovery round learns of the observed state, each part computed once and only if
+    asked: the world after the running subtasks end (played on what is known), the goal from it
+    as a problem, and whether the pending subtasks still reach the goal from it. The
+    stay-or-re-plan check, the re-plan and the feasibility check all read the same state."""
+
+    def __init__(self, executor: "Executor", known: dict, now: Cut, lost: list[str], k: int):
+        self.ex, self.known, self.now, self.lost, self.k = executor, known, now, lost, k
+        self._world: dict | None = None
+        self._problem: tuple[Any, str] | None = None
+        self._fits: bool | None = None
+
+    def world(self) -> dict:
+        if self._world is None:
+            ex, now = self.ex, self.now
+            belief = ex.domain.play(*cast(self.known, ex._schedule(now.records, now.legs)), ex.graph)
+            state_world = ex.domain.with_state(self.known, belief.final_state)
+            self._world = {**state_world, "robots": {r: v for r, v in state_world["robots"].items() if r not in self.lost}}
+        return self._world
+
+    def problem(self) -> tuple[Any, str]:
+        if self._problem is None:
+            ex = self.ex
+            with library_errors(UNIFIED_PLANNING, PlanningError, "building the problem from the observed state"):
+                self._problem = ex.domain.observed_problem(ex._accepted(), self.world(), ex.goal,
+                                                           ex.planning.domain_text, f"recovery{self.k}")
+        return self._problem
+
+    def fits(self) -> bool:
+        if self._fits is None:
+            self._fits = self.ex._still_fits(self.now, self.problem()[0], {n["id"]: n for n in self.ex.graph["nodes"]})
+        return self._fits
+
+
 class Executor:
     """One execution under faults (module docstring)."""
 
@@ -118,7 +153,12 @@ class Executor:
 
     # ------------------------------------------------------------------ worlds
     def _world(self, surprises: list[str], barriers: list[str], stops: dict[str, float]) -> dict:
-        w = copy.deepcopy(self.records)
+        """The records with these surprises, drop places, barriers and stops. Copied where it
+        changes only (the domain's ``apply_surprise`` and ``drop_place`` return copies; a stopped
+        robot's entry is replaced, not written into): a deep copy of a thousand robots costs a
+        tenth of a second per world, and a recovery makes several. Nothing downstream writes
+        into a world (the records stay as loaded: tests/test_faults.py checks it)."""
+        w = {**self.records, "robots": dict(self.records.get("robots") or {})}
         for fid in surprises:
             w = self.domain.apply_surprise(w, self.by_id[fid].surprise)
         for r, site in self.drop_sites.items():
@@ -126,7 +166,7 @@ class Executor:
         if barriers:
             w["barriers"] = list(w.get("barriers") or []) + [self.by_id[fid].barrier for fid in barriers]
         for r, t in stops.items():
-            w["robots"][r]["stopped"] = {"time": t, "drop": self.drops.get(r)}
+            w["robots"][r] = {**w["robots"][r], "stopped": {"time": t, "drop": self.drops.get(r)}}
         return w
 
     def truth(self) -> dict:
@@ -233,25 +273,20 @@ class Executor:
             return
         entry.update({"done": now.done, "running": now.running, "broken": now.broken, "pending": now.pending,
                       "lost": lost})
-        belief: list[Played] = []
-
-        def observed() -> dict:
-            """The world as observed: its state after the running subtasks end (played on what is known)."""
-            if not belief:
-                belief.append(self.domain.play(*cast(known, self._schedule(now.records, now.legs)), self.graph))
-            state_world = self.domain.with_state(known, belief[0].final_state)
-            return {**state_world, "robots": {r: v for r, v in state_world["robots"].items() if r not in lost}}
-
+        seen = _Observed(self, known, now, lost, k)
+        observed, problem, fits = seen.world, seen.problem, seen.fits
         affected = [s for s in now.pending + now.running if anomaly.robot in self._robots_of(s)] if anomaly.robot else []
         needs_plan = bool(now.broken) or anomaly.kind in ("surprise", "refused", "unfinished")
         try:
-            if not now.pending and not now.broken:  # they finish from where their robots are, at their pace
+            if not now.pending and not now.broken and (not needs_plan or fits()):
+                # they finish from where their robots are, at their pace (after what was learnt of
+                # the state, only when the goal then holds: units found where the plan brings more)
                 self.schedule = self._schedule(now.records, now.legs)
                 self._continue(entry, "nothing is left to do but the subtasks under way; their robots finish them "
                                       "from where they are")
             elif anomaly.kind == "stopped" and not affected and not now.broken:
                 self._continue(entry, f"{anomaly.robot} had no work left")
-            elif needs_plan and not now.broken and self._still_fits(now, observed(), nodes):
+            elif needs_plan and not now.broken and fits():
                 if anomaly.kind == "surprise":
                     self._continue(entry, "the remaining plan still reaches the goal from the observed state")
                 else:
@@ -261,9 +296,9 @@ class Executor:
                     self._reallocate(entry, now, known, travel, lost)
                 except AllocationError as err:
                     entry["reallocation_failed"] = str(err)
-                    self._replan(entry, now, known, travel, lost, observed(), k)
+                    self._replan(entry, now, known, travel, lost, observed(), problem(), k)
             else:
-                self._replan(entry, now, known, travel, lost, observed(), k)
+                self._replan(entry, now, known, travel, lost, observed(), problem(), k)
         except Refused as err:
             self._refuse(entry, str(err), now, started)
         except InputError as err:  # no path any more from a robot or between places (a passage walled it off)
@@ -300,23 +335,47 @@ class Executor:
             return
         legs = ((self.schedule.get("robots") or {}).get(robot) or {}).get("legs") or []
         came = next((l.get("from") for l in reversed(legs) if float(l["start"]) < t), None)
-        site = drop_site(self.known(), point, tuple(came) if came else None)
-        _, name = self.domain.drop_place(copy.deepcopy(self.records), robot, site)
+        known = self.known()
+
+        def reaches(site: dict) -> bool:
+            """Whether a robot coming the way this one came can still get to the site."""
+            if not came:
+                return True
+            from pipflow.team.travel import TravelMap  # deferred: numpy/networkx (only runs with faults get here)
+
+            world, _ = self.domain.drop_place(known, robot, site)
+            try:
+                TravelMap(world).distance(tuple(came), tuple(site["access"]))
+            except InputError:
+                return False
+            return True
+
+        site = drop_site(known, point, tuple(came) if came else None, reaches)
+        _, name = self.domain.drop_place(self.records, robot, site)
         self.drop_sites[robot], self.drops[robot] = site, name
 
-    def _still_fits(self, now: Cut, observed: dict, nodes: dict) -> bool:
+    def _accepted(self) -> Any:
+        """The accepted problem, parsed (the parse memo's shared copy: read-only)."""
+        with library_errors(UNIFIED_PLANNING, PlanningError, "reading the accepted problem"):
+            return parse(self.planning.domain_text, self.planning.problem)
+
+    def _still_fits(self, now: Cut, problem: Any, nodes: dict) -> bool:
         """Whether the pending subtasks, in plan order, still reach the goal from the observed state
-        (UP's sequential plan validator on the observed state's problem)."""
+        (UP's sequential plan validator on the observed state's problem). Only the verdict is
+        needed: the verifier's goal check and its explanation of a failed step are not asked for."""
         # deferred: pulls unified_planning (only recoveries from a surprise get here)
-        from pipflow.pddl.verifier import verify_plan
+        from unified_planning.engines import ValidationResultStatus
+        from unified_planning.shortcuts import PlanValidator
 
         rest = [{"action": nodes[s]["action"], "args": list(nodes[s]["args"])}
                 for s in sorted(now.pending, key=lambda s: nodes[s]["index"])]
         with library_errors(UNIFIED_PLANNING, PlanningError, "checking the remaining plan"):
-            accepted = parse(self.planning.domain_text, self.planning.problem)
-            problem, _ = self.domain.observed_problem(accepted, observed, self.goal, self.planning.domain_text, "check")
-            report = verify_plan(problem, rest, observed)
-        return report.ok
+            try:
+                plan = data_to_plan(problem, rest)
+            except ValueError:  # a step names what the observed problem does not have
+                return False
+            with PlanValidator(name="sequential_plan_validator") as validator:
+                return validator.validate(problem, plan).status == ValidationResultStatus.VALID
 
     def _schedule(self, records: list[dict], legs: dict[str, list[dict]]) -> dict:
         robots = {r: {"legs": ls, "distance": sum(float(l.get("distance", 0.0)) for l in ls)} for r, ls in legs.items()}
@@ -339,8 +398,12 @@ class Executor:
         entry.update({"action": "re-allocate", "reallocated": [a["subtask"] for a in allocation["assignments"]],
                       "allocation": allocation["assignments"]})
 
-    def _replan(self, entry: dict, now: Cut, known: dict, travel: Any, lost: list[str], observed: dict, k: int) -> None:
-        found = replan(self.domain, observed, self.goal, self.planning, name=f"recovery{k}")
+    def _replan(self, entry: dict, now: Cut, known: dict, travel: Any, lost: list[str], observed: dict,
+                problem: tuple[Any, str], k: int) -> None:
+        nodes = {n["id"]: n for n in self.graph["nodes"]}
+        rest = [{"action": nodes[s]["action"], "args": list(nodes[s]["args"]), "subtask": s}
+                for s in sorted(now.pending, key=lambda s: nodes[s]["index"])]
+        found = replan(self.domain, observed, self.goal, self.planning, problem, rest)
         offset = 1 + max((int(n["index"]) for n in self.graph["nodes"]), default=-1)
         new = renamed(found.graph, f"r{k}-", offset)
         nodes = {n["id"]: n for n in self.graph["nodes"]}
@@ -356,6 +419,8 @@ class Executor:
         self.graph = {**self.graph, "nodes": [n for n in self.graph["nodes"] if n["id"] in kept] + new["nodes"],
                       "edges": [e for e in self.graph["edges"] if e[0] in kept and e[1] in kept] + new["edges"] + wait}
         self._merge(now, timeline)
+        if found.kept is not None:
+            entry["repaired"] = {"kept": found.kept, "dropped": [x["subtask"] for x in found.dropped]}
         entry.update({"action": "re-plan", "aborted": list(now.pending), "plan": found.plan,
                       "replanned": [n["id"] for n in new["nodes"]], "planner": found.message,
                       "allocation": allocation["assignments"]})

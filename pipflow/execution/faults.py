@@ -20,6 +20,8 @@ A workflow input (``faults``) or a bench option (``--faults``) names them, in on
   - ``{kind: surprise, ...}`` (a domain names it its own way, e.g. ``stock-surprise``): a place
     holds other contents than the world file says; robots find out when one first arrives
     there. The other fields are the domain's (:meth:`~pipflow.execution.capability.ExecutionCapability.check_surprise`).
+    A drawn surprise may come in ``parts`` (units missing here lie there): each part is a fault
+    of its own (``f1a``, ``f1b``), found where and when a robot first arrives at its place.
 
 ``none`` (or nothing) means no faults. Every problem is a clear :class:`InputError` naming the
 fault (``faults[2]``) and the cause: a fault that cannot be placed is never silently dropped.
@@ -303,7 +305,11 @@ def resolve(specs: list[Spec], world: dict, schedule: dict, graph: dict | None, 
             if surprise is None:
                 raise InputError(f"{spec.where}: this schedule takes nothing from any place, so no surprise can "
                                  "matter to it; give the surprise's place and contents explicitly")
-            out.append(Fault(fid, SURPRISE, spec.name, surprise=surprise, drawn=not g))
+            parts = surprise.get("parts") or [surprise]
+            for j, part in enumerate(parts):  # each part is found on its own (where a robot arrives)
+                out.append(Fault(fid if len(parts) == 1 else f"{fid}{chr(ord('a') + j)}", SURPRISE, spec.name,
+                                 surprise={**part, "how": surprise.get("how")} if surprise.get("how") else part,
+                                 drawn=not g))
     return out
 
 

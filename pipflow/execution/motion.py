@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any, Iterable, Sequence
+from typing import Any, Callable, Iterable, Sequence
 
 from pipflow.metrics import travel_costs
 from pipflow.taskdomains import task_domain
@@ -395,12 +395,16 @@ def inside(point: Point, rect: tuple[float, float, float, float]) -> bool:
     return rect[0] < point[0] < rect[2] and rect[1] < point[1] < rect[3]
 
 
-def drop_site(world: dict, point: Point, toward: Point | None = None) -> dict:
+def drop_site(world: dict, point: Point, toward: Point | None = None,
+              reaches: Callable[[dict], bool] | None = None) -> dict:
     """The footprint and access point of the place where a robot that stopped at ``point`` keeps
     what it carried: its access point is ``point`` itself (another robot comes where it stands),
     its footprint a :data:`DROP_SIDE` square just beside it, on the side ``toward`` (where it came
     from) or the first side where the square covers no access point or robot start and overlaps
-    no footprint (a robot may stop right at a shelf's access point)."""
+    no footprint (a robot may stop right at a shelf's access point). ``reaches(site)``: whether a
+    robot can still get to the site's access point once its footprint is there; a side that walls
+    the access point in (the square and the margins of the furniture around it closing a pocket)
+    is passed over while another side keeps it reachable."""
     px, py = float(point[0]), float(point[1])
     half = DROP_SIDE / 2
     rects = _footprints(world)
@@ -410,6 +414,7 @@ def drop_site(world: dict, point: Point, toward: Point | None = None) -> dict:
     if toward is not None:
         d = (toward[0] - px, toward[1] - py)
         sides.sort(key=lambda s: -(s[0] * d[0] + s[1] * d[1]))
+    fits: list[dict] = []
     for size in (DROP_SIDE, DROP_SIDE / 3):
         half = size / 2
         for sx, sy in sides:
@@ -419,8 +424,13 @@ def drop_site(world: dict, point: Point, toward: Point | None = None) -> dict:
             overlaps = any(box[0] < r[2] and r[0] < box[2] and box[1] < r[3] and r[1] < box[3] for r in rects)
             covers = any(box[0] <= q[0] <= box[2] and box[1] <= q[1] <= box[3] for q in keep + [(px, py)])
             if on_floor and not overlaps and not covers:
-                return {"x": round(box[0], 4), "y": round(box[1], 4), "width": size, "depth": size,
+                site = {"x": round(box[0], 4), "y": round(box[1], 4), "width": size, "depth": size,
                         "access": [round(px, 4), round(py, 4)]}
+                if reaches is None or reaches(site):
+                    return site
+                fits.append(site)
+    if fits:  # no side keeps it reachable: the first that fits (a re-plan will say what cannot be done)
+        return fits[0]
     return {"x": round(px + 0.2, 4), "y": round(py + 0.2, 4), "width": 0.01, "depth": 0.01,
             "access": [round(px, 4), round(py, 4)]}
 

@@ -19,7 +19,7 @@ from typing import Any
 
 from pipflow.errors import InputError, PlanningError
 from pipflow.liberrors import UNIFIED_PLANNING, library_errors
-from pipflow.pddl.common import parse
+from pipflow.pddl.convert import data_to_plan
 from pipflow.pddl.names import plan_in_world_names
 from pipflow.pddl.solver import Status, solve_problem
 from pipflow.taskdomain import Capability
@@ -59,6 +59,8 @@ class Planning:
     speed: float = 1.0
     handling: float = 2.0
     time_limit: float = 10.0
+    #: re-plan by repairing the old plan first (:func:`repair`); False: always a plan from scratch
+    repair: bool = True
 
 
 def rules_without(constraints: list, lost: list[str]) -> list:
@@ -110,29 +112,112 @@ def reallocate(graph: dict, world: dict, standing: Standing, planning: Planning,
 
 @dataclass
 class Replanned:
-    """A new team plan from the observed state: its problem text, plan, graph, and the planner's words."""
+    """A new team plan from the observed state: its problem text, plan, graph, the planner's
+    words; when it repaired the old plan, how many of its steps it kept and which it dropped."""
 
     problem: str
     plan: list[dict]
     graph: dict
     message: str
     seconds: float
+    kept: int | None = None
+    dropped: list[dict] = field(default_factory=list)
 
 
-def replan(domain: Any, world: dict, goal: Any, planning: Planning, name: str) -> Replanned:
-    """Write ``world``'s state (the observed one, robots still working only) as a problem to
-    ``goal``, verify the goal, solve, build the graph (module docstring). Raises :class:`Refused`
-    when the goal is impossible or no plan exists, PlanningError when the planner times out."""
+@dataclass
+class Repaired:
+    """The old plan's steps that still apply from the observed state, followed by a plan for
+    what they leave undone (:func:`repair`)."""
+
+    plan: list[dict]
+    kept: int
+    dropped: list[dict]
+    message: str
+
+
+def repair(parsed: Any, steps: list[dict], planning: Planning, params: dict | None) -> Repaired | None:
+    """Plan repair, the cheaper re-plan: play the old plan's steps that were not begun (``steps``,
+    ``{action, args}`` in plan order, any other keys kept in ``dropped``) from the observed state
+    in UP's sequential simulator, keeping each that applies and dropping each that does not (a
+    shelf short of the units it takes); then ask the
+    run's planner for a plan from the state they reach to the same goal (usually a few moves:
+    what the surprise or the lost load took away). The plan is the kept steps and that patch,
+    valid from the observed state by construction (each kept step was applied in the
+    simulator, the patch was planned from where they end). Why: a plan from scratch solves the
+    whole goal again (at 100 shelves x 20 products, a program per product), where the fault
+    changed one corner of it. None when the patch cannot be found (no plan from there: the
+    kept steps may have used what the goal needs) or the steps use what this check does not
+    model (conditional or universally quantified effects): the caller then plans anew."""
+    with library_errors(UNIFIED_PLANNING, PlanningError, "repairing the plan"):
+        try:
+            up_plan = data_to_plan(parsed, steps)
+        except ValueError:
+            return None
+        if any(e.is_conditional() or e.is_forall() for ai in up_plan.actions for e in getattr(ai.action, "effects", [])):
+            return None
+        keep, dropped, patch = _replay(parsed, steps, up_plan)
+    result = solve_problem(patch, planning.planner, params, planning.planner_timeout)
+    if result.status != Status.SOLVED or result.plan is None:
+        return None
+    words = (f"repaired the plan: kept {len(keep)} of its {len(steps)} steps not begun, dropped {len(dropped)}, "
+             f"added {len(result.plan)} ({result.message})")
+    bare = [{"action": x["action"], "args": list(x["args"])} for x in keep]
+    return Repaired(bare + list(result.plan), len(keep), dropped, words)
+
+
+def _replay(parsed: Any, steps: list[dict], up_plan: Any) -> tuple[list[dict], list[dict], Any]:
+    """:func:`repair`'s first half: the steps kept and dropped, and the problem from the state
+    the kept ones reach (a clone of ``parsed`` whose initial values of every fluent they change
+    are that state's)."""
+    # deferred: pulls unified_planning (only re-plans get here)
+    from unified_planning.shortcuts import SequentialSimulator
+
+    keep: list[dict] = []
+    dropped: list[dict] = []
+    changed: dict = {}
+    env = parsed.environment
+    with SequentialSimulator(problem=parsed) as sim:
+        state = sim.get_initial_state()
+        for step, ai in zip(steps, up_plan.actions):
+            if not sim.is_applicable(state, ai):
+                dropped.append(step)
+                continue
+            state = sim.apply(state, ai)
+            keep.append(step)
+            bind = {env.expression_manager.ParameterExp(p): a for p, a in zip(ai.action.parameters, ai.actual_parameters)}
+            for e in ai.action.effects:
+                changed[env.substituter.substitute(e.fluent, bind)] = None
+        patch = parsed.clone()
+        for fluent in changed:
+            patch.set_initial_value(fluent, state.get_value(fluent))
+    return keep, dropped, patch
+
+
+def replan(domain: Any, world: dict, goal: Any, planning: Planning, problem: tuple[Any, str],
+           kept: list[dict] | None = None) -> Replanned:
+    """Solve ``problem`` (the observed state of ``world``, robots still working only, to ``goal``,
+    parsed and as text: the domain's ``observed_problem``), after verifying its goal; build the
+    graph (module docstring). ``kept``: the steps the old plan had not begun, in its order: the
+    plan is first repaired from them (:func:`repair`), and made anew only when that fails.
+    Raises :class:`Refused` when the goal is impossible or no plan exists, PlanningError when
+    the planner times out."""
     started = time.perf_counter()
-    with library_errors(UNIFIED_PLANNING, PlanningError, "reading the accepted problem"):
-        accepted = parse(planning.domain_text, planning.problem)
-    parsed, text = domain.observed_problem(accepted, world, goal, planning.domain_text, name)
+    parsed, text = problem
     judged = domain.check_goal(parsed, world)
     if judged.refusal:
         raise Refused(judged.refusal)
     params = planning.planner_params
     if planning.planner == TRANSPORT_PLANNER and domain.supports(Capability.TRANSPORT_PLANNER):
         params = {**domain.planner_params(world, planning.constraints), **(params or {})}
+    try:
+        repaired = repair(parsed, kept, planning, params) if kept and planning.repair else None
+    except PlanningError:  # UP could not play the old steps: the plan is made anew
+        repaired = None
+    if repaired is not None:
+        plan = plan_in_world_names(repaired.plan, world)
+        graph = build_graph(planning.domain_text, text, plan, planning.metadata, mode=planning.graph_mode, parsed=parsed)
+        return Replanned(text, plan, graph, repaired.message, time.perf_counter() - started, repaired.kept,
+                         repaired.dropped)
     result = solve_problem(parsed, planning.planner, params, planning.planner_timeout)
     message = result.message
     if result.status in (Status.ERROR, Status.TIMEOUT) and planning.fallback and planning.fallback != planning.planner:

@@ -57,14 +57,18 @@ def fault_summary(rows: list[dict]) -> dict | None:
     for r in rows:
         for a in r.get("recovery_actions") or []:
             actions[a] = actions.get(a, 0) + 1
+    kinds = sorted({str(name) for r in rows for name in r.get("faults") or []})
     return {
-        "runs": len(rows), "with_faults": sum(1 for r in rows if r.get("faults")),
+        "runs": len(rows), "with_faults": sum(1 for r in rows if r.get("faults")), "kinds": kinds,
         "sr": len(ok) / len(rows) if rows else None,
         "reachable": len(reachable),
         "sr_feasible": sum(1 for r in reachable if r.get("success")) / len(reachable) if reachable else None,
         "refused_right": sum(1 for r in refused if r.get("feasible_after_faults") is False),
         "refused_wrong": sum(1 for r in refused if r.get("feasible_after_faults") is True),
         "failed": sum(1 for r in rows if r.get("status") not in ("succeeded", "refused")),
+        # ran to its end believing it done, the goal not met in the world as it was (a surprise
+        # at a place no robot went to): neither a success nor a refusal
+        "unmet": sum(1 for r in rows if r.get("status") == "succeeded" and not r.get("success")),
         "makespan": _mean([r.get("makespan") for r in moved]),
         "tc_max": _mean([r.get("tc_max") for r in moved]),
         "tc_avg": _mean([r.get("tc_avg") for r in moved]),
@@ -94,20 +98,22 @@ def fault_table(results: dict) -> str | None:
     if not any(v.get("faults") for v in variants):
         return None
     lines = ["### Faults and recovery", "",
-             "| variant | runs | SR (%) | reachable | SR where reachable (%) | refused: out of reach / still reachable "
-             "| failed | makespan (s) | TC max/avg (m) | recoveries | recovery s (mean/max) |",
-             "|---|---|---|---|---|---|---|---|---|---|---|"]
+             "| variant | faults | runs | SR (%) | goal still reachable | SR where reachable (%) "
+             "| clear refusals (out of reach) | refused though reachable | ended, goal unmet | failed | makespan (s) "
+             "| TC max/avg (m) | recoveries | recovery s (mean/max) |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for v in variants:
         f = v.get("faults")
         s = v.get("summary") or {}
         if f is None:  # no faults: every run's goal was reachable
-            lines.append(f"| {v['name']} | {s.get('runs')} | {_pct(s.get('sr'))} | {s.get('runs')} | {_pct(s.get('sr'))} "
-                         f"| 0 / 0 | -- | {_f(_variant_makespan(v))} | {_f(s.get('tc_max'))}/{_f(s.get('tc_avg'))} | -- | -- |")
+            lines.append(f"| {v['name']} | none | {s.get('runs')} | {_pct(s.get('sr'))} | {s.get('runs')} "
+                         f"| {_pct(s.get('sr'))} | 0 | 0 | -- | -- | {_f(_variant_makespan(v))} "
+                         f"| {_f(s.get('tc_max'))}/{_f(s.get('tc_avg'))} | -- | -- |")
             continue
         acts = ", ".join(f"{k} {n}" for k, n in sorted(f["recoveries"].items())) or "none"
-        lines.append(f"| {v['name']} | {f['runs']} | {_pct(f['sr'])} | {f['reachable']} | {_pct(f['sr_feasible'])} "
-                     f"| {f['refused_right']} / {f['refused_wrong']} | {f['failed']} | {_f(f['makespan'])} "
-                     f"| {_f(f['tc_max'])}/{_f(f['tc_avg'])} | {acts} "
+        lines.append(f"| {v['name']} | {', '.join(f.get('kinds') or []) or '?'} | {f['runs']} | {_pct(f['sr'])} "
+                     f"| {f['reachable']} | {_pct(f['sr_feasible'])} | {f['refused_right']} | {f['refused_wrong']} "
+                     f"| {f.get('unmet', 0)} | {f['failed']} | {_f(f['makespan'])} | {_f(f['tc_max'])}/{_f(f['tc_avg'])} | {acts} "
                      f"| {_f(f['recovery_seconds_mean'], 3)}/{_f(f['recovery_seconds_max'], 3)} |")
     return "\n".join(lines) + "\n"
 

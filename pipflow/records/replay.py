@@ -55,10 +55,13 @@ def _planned_tracks(world: dict, schedule: dict) -> dict[str, list[list[float]]]
 
 
 def replay_data(world: dict, schedule: dict | None, graph: dict | None, recorded: dict | None,
-                floor_plan: list[dict]) -> dict | None:
+                floor_plan: list[dict], incidents: list[dict] | None = None) -> dict | None:
     """What the page's script animates: floor, footprints, robots (colour, track), subtasks
-    (robots, start, end, what they move, when the load is on), the end time; None without a
-    world or anything to move."""
+    (robots, start, end, what they move, when the load is on), the end time, and the moments a
+    run under faults went off plan (``incidents``, the page's ``events``: ``{time, kind, words}`` with ``x``/``y`` or the
+    ``robot`` it struck, a closed passage's ``barrier`` [x, y, width, depth], the robot that ``stops`` there
+    for good (its row then says so): a mark that appears
+    at its time, and a line in the log under the floor); None without a world or anything to move."""
     if not isinstance(world, dict) or not isinstance(world.get("floor"), dict):
         return None
     schedule = schedule or {}
@@ -90,7 +93,8 @@ def replay_data(world: dict, schedule: dict | None, graph: dict | None, recorded
               for k, (r, pts) in enumerate(sorted(tracks.items(), key=lambda kv: names.index(kv[0])
                                                   if kv[0] in names else len(names)))}
     return {"floor": {"width": float(world["floor"]["width"]), "height": float(world["floor"]["height"])},
-            "places": floor_plan, "robots": robots, "subtasks": subtasks, "end": end, "source": source}
+            "places": floor_plan, "robots": robots, "subtasks": subtasks, "end": end, "source": source,
+            "events": [e for e in incidents or [] if isinstance(e, dict) and isinstance(e.get("time"), (int, float))]}
 
 
 _SCRIPT = """<script>
@@ -111,6 +115,8 @@ _SCRIPT = """<script>
   }
   function doing(robot, t) {
     var out = {doing: '', carries: ''}, next = null;
+    var stop = data.events.filter(function (e) { return e.stops === robot && t >= e.time; })[0];
+    if (stop) { return {doing: 'out of service since t = ' + stop.time.toFixed(1) + ' s', carries: ''}; }
     data.subtasks.forEach(function (s) {
       if (s.robots.indexOf(robot) < 0) { return; }
       if (t < s.start) { if (next === null || s.start < next.start) { next = s; } return; }
@@ -144,6 +150,20 @@ _SCRIPT = """<script>
       row.cells[2].textContent = d.doing || 'idle';
       row.cells[3].textContent = d.carries || '';
     });
+    var shown = [];
+    data.events.forEach(function (e, k) {
+      var on = t >= e.time - 1e-9, mark = svg.querySelector('[data-event="' + k + '"]');
+      if (on) { shown.push('t = ' + e.time.toFixed(1) + ' s  ' + e.words); }
+      if (!mark) { return; }
+      mark.setAttribute('visibility', on ? 'visible' : 'hidden');
+      if (e.robot !== undefined && data.robots[e.robot]) {
+        var q = at(data.robots[e.robot].track, e.time);
+        mark.setAttribute('transform', 'translate(' + q[0] + ',' + (H - q[1]) + ')');
+      }
+    });
+    var log = document.getElementById('replay-events');
+    if (log) { log.textContent = shown.length ? shown.join('\\n') : 'nothing has gone off plan yet'; }
+    document.body.dataset.replayEvents = String(shown.length);
     document.body.dataset.replayTime = t.toFixed(3);
   }
   var timer = null, last = null;
@@ -186,6 +206,24 @@ def replay_html(data: dict) -> str:
         parts.append(f"<circle data-robot='{q}' r='0.3' fill='{info['colour']}' stroke='#111' stroke-width='0.03'>"
                      f"<title>{q}</title></circle><text data-robot='{q}' class='robot'>{q}</text>"
                      f"<text data-load='{q}' class='load'></text>")
+    colours = {"robot-loss": "#c62828", "passage-closed": "#111111", "surprise": "#7b1fa2", "slowdown": "#ef6c00"}
+    for k, e in enumerate(data.get("events") or []):
+        c = colours.get(e.get("kind"), "#c62828")
+        title = f"<title>{html.escape(str(e.get('words', '')))}</title>"
+        if e.get("barrier"):
+            x, y, w, d = e["barrier"]
+            parts.append(f"<g data-event='{k}' visibility='hidden'>{title}<rect x='{x}' y='{fh - y - d}' width='{w}' "
+                         f"height='{d}' fill='{c}' stroke='{c}' stroke-width='0.05'/></g>")
+        elif e.get("kind") == "recovery":
+            continue
+        elif "x" in e and "y" in e:
+            parts.append(f"<g data-event='{k}' visibility='hidden' transform='translate({e['x']},{fh - e['y']})'>{title}"
+                         f"<path d='M-0.5,-0.5L0.5,0.5M-0.5,0.5L0.5,-0.5' stroke='{c}' stroke-width='0.16'/>"
+                         "<circle r='0.75' fill='none' stroke-width='0.08' "
+                         f"stroke='{c}'/></g>")
+        elif e.get("robot"):
+            parts.append(f"<g data-event='{k}' visibility='hidden'>{title}<circle r='0.7' fill='none' "
+                         f"stroke='{c}' stroke-width='0.12' stroke-dasharray='0.2,0.12'/></g>")
     table = "".join(f"<tr data-robot='{html.escape(r)}'><td><span style='color:{info['colour']}'>&#9679;</span> "
                     f"{html.escape(r)}</td><td></td><td></td><td></td></tr>" for r, info in data["robots"].items())
     source = ("the simulation's recorded trajectories" if data["source"] == "recorded" else
@@ -208,11 +246,15 @@ def replay_html(data: dict) -> str:
             f"xmlns='http://www.w3.org/2000/svg'>{''.join(parts)}</svg>"
             "<table id='replay-robots'><tr><th>robot</th><th>at (m)</th><th>doing</th><th>carrying</th></tr>"
             f"{table}</table></div>"
+            + ("<p class='small'>Faults and recoveries so far (a cross where a fault struck, a black bar: a closed "
+               "passage, a dashed ring: a robot slowed):</p><pre id='replay-events'></pre>" if data.get("events") else "")
+            + 
             f"<script type='application/json' id='replay-data'>{payload}</script>" + _SCRIPT)
 
 
-def replay_section(world: Any, schedule: Any, graph: Any, recorded: Any, floor_plan: list[dict]) -> str:
+def replay_section(world: Any, schedule: Any, graph: Any, recorded: Any, floor_plan: list[dict],
+                   incidents: list[dict] | None = None) -> str:
     """The report's replay section, or ``""`` when the record has nothing to replay."""
     data = replay_data(world, schedule if isinstance(schedule, dict) else None,
-                       graph if isinstance(graph, dict) else None, recorded, floor_plan)
+                       graph if isinstance(graph, dict) else None, recorded, floor_plan, incidents)
     return replay_html(data) if data else ""

@@ -110,6 +110,11 @@ def _blocked(ax: Any, ay: Any, bx: np.ndarray, by: np.ndarray, x0: np.ndarray,
     return ~miss & (t0 < t1 - _EPS) & inside
 
 
+def _shown(p: Any) -> str:
+    """A point as a message shows it: ``[9.6, 1.2]`` (never numpy's ``np.float64(9.6)``)."""
+    return "[" + ", ".join(f"{float(v):g}" for v in p) + "]"
+
+
 def _visible_from(a: Point, targets: np.ndarray, rects: np.ndarray, cores: np.ndarray) -> np.ndarray:
     """For each target (rows of an (n, 2) array), whether the segment from ``a`` keeps out of every
     inflated footprint (``rects``, (m, 4) arrays of x0, y0, x1, y1). An end point within a
@@ -169,6 +174,7 @@ class _Geometry:
             if k >= 0 and p not in anchor_set:
                 i = self.index[p]
                 self._rect[i], self._quad[i] = k, (sx, sy)
+        self.anchors = list(anchors)
         self._graph = None
         self._edges: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None
         self._small: nx.Graph | None = None
@@ -252,6 +258,64 @@ class _Geometry:
         w = np.hypot(*(self.nodes[r] - self.nodes[c]).T)
         return r, c, w
 
+    def _info(self, i: int) -> tuple:
+        """What decides node ``i``'s edges besides visibility: its rectangle and quadrant (the
+        tangency test), or none (an access point, a corner touching another footprint)."""
+        k = int(self._rect[i])
+        return (None,) if k < 0 else (tuple(self.rects[k].tolist()), tuple(self._quad[i].tolist()))
+
+    def _rows(self, i: int, others: np.ndarray) -> np.ndarray:
+        """Of the nodes ``others``, those node ``i`` has an edge with (tangent at both ends, in
+        sight past every footprint): :meth:`_build_edges` for one node."""
+        a = (self.nodes[i, 0], self.nodes[i, 1])
+        others = others[self._tangent(self.nodes[i], others) & self._tangent(self.nodes[others], np.full(len(others), i))]
+        return others[_visible_from(a, self.nodes[others], self.rects, self.cores)]
+
+    @classmethod
+    def grown(cls, base: "_Geometry", rects: np.ndarray, cores: np.ndarray, anchors: list[Point]) -> "_Geometry":
+        """The geometry of ``base``'s floor with more footprints and access points (a closed
+        passage's barrier, a stopped robot's drop place: :mod:`pipflow.execution`), built from
+        ``base``'s edges rather than from nothing: an edge between two nodes whose tangency is
+        unchanged stays exactly when no new footprint blocks it (visibility is tested footprint by
+        footprint, so it only ever shrinks as footprints are added), and only the new nodes and
+        those whose tangency changed (a corner a new footprint touches or covers) are joined
+        anew. The same graph as a build from nothing (tests/test_travel.py checks it), for the
+        cost of the nodes that changed: a recovery at 100 shelves does not rebuild 14,000 edges
+        for one barrier."""
+        geo = cls(base.width, base.height, rects, cores, anchors)
+        have = set(map(tuple, base.rects.tolist()))
+        fresh = [k for k, r in enumerate(geo.rects.tolist()) if tuple(r) not in have]
+        inv = np.full(len(base.nodes), -1)
+        same = np.zeros(len(geo.nodes), dtype=bool)
+        for p, i in geo.index.items():
+            j = base.index.get(p)
+            if j is not None and geo._info(i) == base._info(j):
+                inv[j], same[i] = i, True
+        r, c, w = base.edges()
+        r, c = inv[r], inv[c]
+        keep = (r >= 0) & (c >= 0)
+        r, c, w = r[keep], c[keep], w[keep]
+        for k in fresh:  # an old edge a new footprint blocks goes (its margin rule as in _visible_from)
+            if not len(r):
+                break
+            ax, ay, bx, by = geo.nodes[r, 0], geo.nodes[r, 1], geo.nodes[c, 0], geo.nodes[c, 1]
+            x0, y0, x1, y1 = geo.rects[k]
+            near = (x0 < ax) & (ax < x1) & (y0 < ay) & (ay < y1) | (x0 < bx) & (bx < x1) & (y0 < by) & (by < y1)
+            box = np.where(near[:, None], geo.cores[k][None, :], geo.rects[k][None, :])
+            hit = _blocked(ax, ay, bx, by, box[:, 0], box[:, 1], box[:, 2], box[:, 3])
+            r, c, w = r[~hit], c[~hit], w[~hit]
+        rows, cols = [r], [c]
+        changed = np.nonzero(~same)[0]
+        everyone = np.arange(len(geo.nodes))
+        for i in changed:  # joined anew, each pair once (a pair of two changed nodes: by the lower)
+            others = everyone[(everyone != i) & (same | (everyone > i))]
+            seen = geo._rows(int(i), others)
+            rows.append(np.minimum(seen, i))
+            cols.append(np.maximum(seen, i))
+        r, c = np.concatenate(rows).astype(int), np.concatenate(cols).astype(int)
+        geo._edges = (r, c, np.hypot(*(geo.nodes[r] - geo.nodes[c]).T))
+        return geo
+
     def tree(self, target: int) -> tuple[np.ndarray, np.ndarray]:
         """Distances to node ``target`` from every node, and each node's next node towards it
         (-9999 where there is none, scipy's mark)."""
@@ -302,7 +366,7 @@ class _Geometry:
         ok, lengths = self.seen(p)
         total = lengths + dist[ok]
         if not len(ok) or not np.isfinite(total).any():
-            raise InputError(f"no obstacle-free path from {list(p)} to {list(self.nodes[target])}")
+            raise InputError(f"no obstacle-free path from {_shown(p)} to {_shown(self.nodes[target])}")
         best = int(np.argmin(total))
         v = int(ok[best])
         path = [p] if lengths[best] > 0 else []
@@ -329,7 +393,7 @@ class _Geometry:
         g = bmat([[self.graph(), csr_matrix(extra.T)], [csr_matrix(extra), csr_matrix(ab)]], format="csr")
         dist, pred = dijkstra(g, directed=False, indices=[k], return_predecessors=True)
         if not np.isfinite(dist[0, k + 1]):
-            raise InputError(f"no obstacle-free path from {list(a)} to {list(b)}")
+            raise InputError(f"no obstacle-free path from {_shown(a)} to {_shown(b)}")
         path, v = [], k + 1
         while v != k:
             path.append(b if v == k + 1 else (float(self.nodes[v, 0]), float(self.nodes[v, 1])))
@@ -428,7 +492,9 @@ class TravelMap:
             with _GEOMETRIES_LOCK:
                 geo = _GEOMETRIES.get(self._floor_key)
                 if geo is None:
-                    geo = _Geometry(self.width, self.height, self._rects, self._cores, self._anchors)
+                    base = self._base()
+                    geo = (_Geometry.grown(base, self._rects, self._cores, self._anchors) if base is not None
+                           else _Geometry(self.width, self.height, self._rects, self._cores, self._anchors))
                     _GEOMETRIES[self._floor_key] = geo
                     while len(_GEOMETRIES) > _GEOMETRIES_MAX:
                         _GEOMETRIES.popitem(last=False)
@@ -436,6 +502,18 @@ class TravelMap:
                     _GEOMETRIES.move_to_end(self._floor_key)
             self._geo = geo
         return self._geo
+
+    def _base(self) -> "_Geometry | None":
+        """A built geometry of this floor with some of these footprints and access points and no
+        others (the floor before a passage closed or a robot stopped), to grow rather than build
+        from nothing; None when there is none. The caller holds the lock."""
+        mine = set(map(tuple, self._rects.tolist()))
+        anchors = set(self._anchors)
+        for geo in reversed(_GEOMETRIES.values()):
+            if (geo.width, geo.height) == (self.width, self.height) and geo._edges is not None \
+                    and set(map(tuple, geo.rects.tolist())) <= mine and set(geo.anchors) <= anchors:
+                return geo
+        return None
 
     def _check_points(self, named: dict[str, Point]) -> None:
         """Every point on the floor and outside every footprint (all at once: a thousand robots)."""

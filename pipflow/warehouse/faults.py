@@ -18,7 +18,6 @@ warehouse knows about its world changing.
 """
 from __future__ import annotations
 
-import copy
 import math
 import random
 from typing import Any
@@ -41,8 +40,24 @@ def _words(shelf: str, product: str, count: int, records: int) -> str:
     return f"{shelf} holds {count} {product}, not {records} as the records say"
 
 
+#: how a drawn stock surprise came about: units gone (stolen, damaged, never delivered), or units
+#: put on another shelf than the records say (the same units, in the wrong place)
+MISSING, MISPLACED = "missing", "misplaced"
+
+
 def draw_surprise(world: dict, schedule: dict, graph: dict | None, rng: random.Random) -> dict | None:
-    """A shelf the schedule first visits to take a product from, holding fewer or more of it."""
+    """A shelf the schedule first visits to take a product from holds fewer of it than the
+    records say, drawn the way stock goes wrong in a warehouse (each half the time):
+
+    * **missing**: 1 to 3 units (at most what is recorded there) are gone for good;
+    * **misplaced**: they lie on another shelf with room for them (drawn among all shelves but
+      the first), a shelf that then holds more than recorded. The two shelves are two parts of
+      the surprise, each found when a robot first arrives there (``parts``): a robot that finds
+      units missing does not know where they went.
+
+    Drawn where the plan takes from, so that it always matters; never chosen so that the goal
+    stays reachable: when the goal needed the units that are gone (or the room that misplaced
+    ones take), the run's right answer is a refusal, and the bench counts it as such."""
     nodes = {n["id"]: n for n in (graph or {}).get("nodes", [])}
     first: dict[str, tuple[str, str]] = {}  # shelf -> (role of its first visit, product)
     for rec in sorted(schedule.get("subtasks", []), key=lambda r: (float(r["start"]), r["id"])):
@@ -51,16 +66,31 @@ def draw_surprise(world: dict, schedule: dict, graph: dict | None, rng: random.R
             shelf = fields.get(role)
             if shelf in world["shelves"] and shelf not in first:
                 first[shelf] = (role, fields.get("product"))
-    candidates = sorted((s, p) for s, (role, p) in first.items() if role == "from" and p in world["products"])
+    candidates = sorted((s, p) for s, (role, p) in first.items()
+                        if role == "from" and p in world["products"] and int(world["stock"].get(s, {}).get(p, 0)) > 0)
     if not candidates:
         return None
     shelf, product = rng.choice(candidates)
     records = int(world["stock"].get(shelf, {}).get(product, 0))
-    room = int(world["shelves"][shelf]["capacity"]) - sum(world["stock"].get(shelf, {}).values())
-    fewer = records > 0 and (room <= 0 or rng.random() < 0.5)
-    count = records - rng.randint(1, min(3, records)) if fewer else records + rng.randint(1, max(1, min(3, room)))
-    return {"place": shelf, "product": product, "count": count, "records": records, "places": [shelf],
-            "words": _words(shelf, product, count, records)}
+    k = rng.randint(1, min(3, records))
+    short = {"place": shelf, "product": product, "count": records - k, "records": records, "places": [shelf],
+             "words": _words(shelf, product, records - k, records)}
+    how = MISSING if rng.random() < 0.5 else MISPLACED
+    if how == MISPLACED:
+        room = {t: int(info["capacity"]) - sum(int(n) for n in (world["stock"].get(t) or {}).values())
+                for t, info in world["shelves"].items() if t != shelf and not info.get("drop")}
+        hosts = sorted(t for t, free in room.items() if free >= k)
+        if hosts:
+            host = rng.choice(hosts)
+            had = int(world["stock"].get(host, {}).get(product, 0))
+            extra = {"place": host, "product": product, "count": had + k, "records": had, "places": [host],
+                     "words": f"{_words(host, product, had + k, had)} ({k} misplaced from {shelf})"}
+            short["words"] += f" ({k} misplaced, lying elsewhere)"
+            return {"how": MISPLACED, "parts": [short, extra],
+                    "words": f"{k} {product} recorded on {shelf} lie on {host}"}
+        how = MISSING  # no shelf has room for them: they are gone
+    short["words"] += f" ({k} missing)"
+    return {**short, "how": how}
 
 
 def check_surprise(world: dict, given: dict, where: str) -> dict:
@@ -98,9 +128,9 @@ def check_surprise(world: dict, given: dict, where: str) -> dict:
 def apply_surprise(world: dict, surprise: dict) -> dict:
     """The world whose shelf holds the surprise's true count (the difference from the records is
     added, so a world already changed elsewhere keeps its changes)."""
-    out = copy.deepcopy(world)
     shelf, product = surprise["place"], surprise["product"]
-    items = out["stock"].setdefault(shelf, {})
+    items = dict(world["stock"].get(shelf) or {})
+    out = {**world, "stock": {**world["stock"], shelf: items}}  # copied where it changes
     count = int(items.get(product, 0)) + int(surprise["count"]) - int(surprise["records"])
     if count:
         items[product] = count
@@ -115,11 +145,11 @@ def apply_surprise(world: dict, surprise: dict) -> dict:
 def with_state(world: dict, stock: dict) -> dict:
     """The world whose stock is ``stock`` (a simulation's final stock); a drop place holds room
     for exactly what it holds (nothing is parked on a stopped robot)."""
-    out = copy.deepcopy(world)
+    out = {**world, "shelves": dict(world["shelves"])}  # copied where it changes
     out["stock"] = {s: {p: int(n) for p, n in (stock.get(s) or {}).items() if n} for s in out["shelves"]}
-    for name, shelf in out["shelves"].items():
+    for name, shelf in world["shelves"].items():
         if shelf.get("drop"):
-            shelf["capacity"] = sum(out["stock"][name].values())
+            out["shelves"][name] = {**shelf, "capacity": sum(out["stock"][name].values())}
     return out
 
 
@@ -127,7 +157,7 @@ def drop_place(world: dict, robot: str, site: dict) -> tuple[dict, str]:
     """The world with a small shelf ``<robot>-cargo`` where the stopped robot stands, room for
     what it can carry (the simulation puts its units there; :func:`with_state` then fits the room
     to them)."""
-    out = copy.deepcopy(world)
+    out = {**world, "shelves": dict(world["shelves"]), "stock": dict(world["stock"])}  # copied where it changes
     name, k = f"{robot}-cargo", 1
     while name in out["shelves"] or name in out["robots"] or name in out["products"]:
         k += 1

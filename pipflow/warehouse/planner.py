@@ -55,7 +55,9 @@ import heapq
 import itertools
 import math
 from math import ceil
+import threading
 import time
+from collections import OrderedDict
 from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any, Callable, Optional
@@ -491,9 +493,39 @@ def _chunked_fewest_moves(supply: dict, demand: dict, extra_src: dict, extra_dst
     return flows
 
 
+#: the last per-product programs and their answers (:func:`_fewest_moves_flow`)
+_SOLVED_FLOWS: "OrderedDict[tuple, Optional[dict]]" = OrderedDict()
+_SOLVED_FLOWS_MAX = 512
+_SOLVED_FLOWS_LOCK = threading.Lock()
+
+
 def _fewest_moves_flow(supply: dict, demand: dict, extra_src: dict, extra_dst: dict, need: int,
                        arcs: dict[tuple[str, str], int], time_limit: float = 2.0,
                        nodes: int = 0) -> Optional[dict]:
+    """:func:`_solve_fewest_moves_flow`, remembered: the same program (the same cells, amounts,
+    preferences and arcs, in the same order) is answered as before. Why: a re-plan after a
+    fault (:mod:`pipflow.execution`) solves the whole goal again from the observed state, and
+    every product the fault and the moves made since did not touch poses exactly the program it
+    posed the first time; at 100 shelves x 20 products these programs are most of a re-plan's
+    time. The answer is a copy (callers may not share it)."""
+    key = (tuple(supply.items()), tuple(demand.items()), tuple(extra_src.items()), tuple(extra_dst.items()),
+           need, tuple(arcs.items()), time_limit, nodes)
+    with _SOLVED_FLOWS_LOCK:
+        if key in _SOLVED_FLOWS:
+            _SOLVED_FLOWS.move_to_end(key)
+            hit = _SOLVED_FLOWS[key]
+            return dict(hit) if hit is not None else None
+    found = _solve_fewest_moves_flow(supply, demand, extra_src, extra_dst, need, arcs, time_limit, nodes)
+    with _SOLVED_FLOWS_LOCK:
+        _SOLVED_FLOWS[key] = dict(found) if found is not None else None
+        while len(_SOLVED_FLOWS) > _SOLVED_FLOWS_MAX:
+            _SOLVED_FLOWS.popitem(last=False)
+    return found
+
+
+def _solve_fewest_moves_flow(supply: dict, demand: dict, extra_src: dict, extra_dst: dict, need: int,
+                             arcs: dict[tuple[str, str], int], time_limit: float = 2.0,
+                             nodes: int = 0) -> Optional[dict]:
     """One product's transfers ``{(from, to): units}`` in the fewest moves (each arc carries at
     most ``arcs[from, to]`` units per move), by a small SCIP integer program; then the fewest
     units, then cells earlier in ``extra_src``/``extra_dst`` (the preferred ones). ``nodes``: stop
@@ -870,10 +902,13 @@ class Outcome:
     note: str = ""
 
 
-def flow_plan(inst: Instance, limit: "MoveLimit" = None) -> list["Move"]:
-    """Steps 1-4: the flow plan (no search). Raises :class:`Unsolvable` or :class:`Stuck`."""
+def flow_plan(inst: Instance, limit: "MoveLimit" = None, checked: bool = False) -> list["Move"]:
+    """Steps 1-4: the flow plan (no search). Raises :class:`Unsolvable` or :class:`Stuck`.
+    ``checked``: the caller already ran :func:`check_final_state` (a max-flow over products and
+    shelves: not twice per solve)."""
     limit = limit or no_limit
-    check_final_state(inst)
+    if not checked:
+        check_final_state(inst)
     final, slack = plan_targets(inst)
     room = {s: inst.capacity[s] - sum(final[s, p] for p in inst.products) for s in inst.shelves}
     flows: dict[tuple[str, str, str], int] = {}
@@ -892,7 +927,7 @@ def solve_instance(inst: Instance, limit: "MoveLimit" = None, budget: int = DEFA
     limit = limit or no_limit
     check_final_state(inst)
     try:
-        moves: Optional[list] = flow_plan(inst, limit)
+        moves: Optional[list] = flow_plan(inst, limit, checked=True)
     except Stuck as exc:
         moves, stuck = None, exc
     bound = lower_bound(inst)
