@@ -23,7 +23,7 @@ sentence: lead? part aside? (sep part aside?)* sep? aside?
 lead: ("but" | "and" | "then" | "also" | "so" | "however" | "now" | "oh" | "well" | "next"
       | "finally" | "first" | "afterwards" | "after" "that" | "additionally" | "plus"
       | ("can" | "could" | "would") ("you" | "we") | "you" ("should" | "must" | "can") | "just" | "let" "us"
-      | ("team" | "guys" | "folks" | "people" | "crew") ",") ","?
+      | ("team" | "guys" | "folks" | "people" | "crew") ",") ("," | ":")?
 
 // a separator costs: of two readings, the one with fewer, longer parts wins
 // ("only alpha and charlie may carry bolts" is one rule, not "only alpha" and a second clause)
@@ -45,6 +45,7 @@ aside: "instead" "of" NUM | "rather" "than" NUM
      | "when" "you" ("get" "a" "chance" | "have" "time" | "get" "time")
      | ("this" | "before") ("morning" | "afternoon" | "evening" | "shift" "ends"?) | "before" ("lunch" | "noon")
      | "tomorrow" | "first" "thing" | "before" "end" "of" "shift"
+     | "by" NUM ("pm" | "am" | "oclock" | "o" "clock")?
 
 // ---------------------------------------------------------------- amounts and items
 rlsep: "," | "and" | "," "and" | "or" | "nor" | "," "or"

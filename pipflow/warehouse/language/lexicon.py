@@ -139,6 +139,84 @@ def _number_typo(word: str) -> str | None:
 CORRECTIONS = (("no",), ("sorry",), ("wait",), ("i", "mean"), ("make", "that"), ("or", "rather"), ("rather",))
 
 
+#: words that take back what was just said ("no wait, make that 3", "sorry, I meant 4")
+TAKE_BACK = {"no", "wait", "sorry", "oops", "actually", "hmm", "erm", "nope", "correction", "scratch", "that"}
+#: the words that then say the new count
+RESTATE = (("make", "that"), ("make", "it"), ("i", "mean"), ("i", "meant"), ("i", "meant", "to", "say"),
+           ("or", "rather"), ("rather",))
+#: a particle of direction before a preposition and a place ("bring them down from the mezzanine",
+#: "up to the mezzanine"): it says nothing the place does not ("up to 5" is a bound: no place follows)
+DIRECTION_PARTICLES = {"up", "down", "across", "along"}
+_PLACE_PREPOSITIONS = {"to", "into", "onto", "from", "off", "in", "on", "at"}
+
+
+def without_particles(toks: list[Tok]) -> list[Tok]:
+    """The tokens without a particle of direction that stands between a verb's object and
+    a preposition followed by a place (:data:`DIRECTION_PARTICLES`)."""
+    out: list[Tok] = []
+    for k, t in enumerate(toks):
+        if t.kind == "word" and t.value in DIRECTION_PARTICLES and k + 2 < len(toks):
+            prep, nxt = toks[k + 1], toks[k + 2]
+            if nxt.kind == "word" and nxt.value == "the" and k + 3 < len(toks):
+                nxt = toks[k + 3]
+            if (prep.kind == "word" and prep.value in _PLACE_PREPOSITIONS and nxt.kind == "name"
+                    and nxt.of == "shelf"):
+                continue
+        out.append(t)
+    return out
+
+
+def corrected_later(toks: list[Tok]) -> list[Tok]:
+    """A count taken back at the end of its sentence ("Move 2 X from P to Q, no wait, make that 3";
+    "..., sorry, I meant 3"): the sentence's one count becomes the new one and the taking back is
+    no part of the order. Where the sentence has several counts, which one is taken back is not
+    said: the words stay, and the sentence is refused on them."""
+    ends = {".", ";", "!", "?"}
+    out = list(toks)
+    k = 0
+    while k < len(out):
+        t = out[k]
+        if not (t.kind == "punct" and t.value in (",", ":")):
+            k += 1
+            continue
+        j = k + 1
+        took_back = False
+        while j < len(out) and out[j].kind == "word" and out[j].value in TAKE_BACK:
+            took_back, j = True, j + 1
+        if j < len(out) and out[j].kind == "punct" and out[j].value == ",":
+            j += 1
+        restated = False
+        for words in sorted(RESTATE, key=len, reverse=True):
+            got = [str(x.value) for x in out[j:j + len(words)] if x.kind == "word"]
+            if got == list(words):
+                restated, j = True, j + len(words)
+                break
+        if not (took_back or restated) or j >= len(out) or out[j].kind != "num":
+            k += 1
+            continue
+        new = out[j]
+        end = j + 1
+        if end < len(out) and out[end].kind == "name" and out[end].of == "product":
+            end += 1
+        if end < len(out) and not (out[end].kind == "punct" and out[end].value in ends):
+            k += 1
+            continue
+        start = k
+        while start > 0 and not (out[start - 1].kind == "punct" and out[start - 1].value in ends):
+            start -= 1
+        counts = [m for m in range(start, k) if out[m].kind == "num"]
+        named = out[j + 1] if j + 1 < end else None
+        if len(counts) != 1 or (named is not None and not (
+                counts[0] + 1 < k and out[counts[0] + 1].kind == "name" and out[counts[0] + 1].value == named.value)):
+            k += 1
+            continue
+        old = out[counts[0]]
+        spoken = " ".join(x.text for x in out[k + 1:end])
+        out[counts[0]] = Tok("num", f"{old.text} (taken back: {spoken})", new.value)
+        del out[k:end]
+    return out
+
+
 def _split_hyphens(toks: list[Tok], keywords: dict[str, str]) -> list[Tok]:
     """A hyphenated word that is no name, keyword or count reads as its words ("night-shift"
     robots are the night shift robots, "re-stock" is restock's words)."""
@@ -283,6 +361,18 @@ class Lexicon:
             return True
         return any(distance(word, w) <= max(1, tolerance(len(w))) for w in self._name_words)
 
+    def names_world(self, word: str) -> bool:
+        """Whether a word of a clause names something of this world or a count: a world name, a
+        robot kind or tag, a number word, or a word within a typo's reach of a name's word (the
+        test a pleasantry's words must pass: :func:`pipflow.language.asides.is_pleasantry`)."""
+        if word in NUMBER_WORDS or word in FRACTIONS or self._group(word) is not None:
+            return True
+        if word in FUNCTION_WORDS or word in FILLERS or word in self.keywords:
+            return False  # "for" is no misspelt "four"
+        if _number_typo(word):
+            return True
+        return any(distance(word, w) <= max(1, tolerance(len(w))) for w in self._name_words)
+
     def _clauses(self, cur: list[Tok]) -> tuple[list[Tok], list[str]]:
         """The sentence's tokens without its content-free clauses (split at commas and colons),
         and the words of those. A name, count or kind word is content by itself."""
@@ -295,7 +385,8 @@ class Lexicon:
         keep: list[Tok] = []
         aside: list[str] = []
         parts = clauses(words, marks)
-        free = [c for c in parts if content_free(c.words, lambda w: w == "\0" or self.content(w))]
+        free = [c for c in parts if content_free(c.words, lambda w: w == "\0" or self.content(w),
+                                                 lambda w: w == "\0" or self.names_world(w))]
         if not free:
             return cur, []
         drop = {k for c in free for k in range(c.start, c.end)}
@@ -323,7 +414,7 @@ class Lexicon:
                 if typo is not None:
                     t = Tok("word", t.text, typo)
             fixed.append(t)
-        toks = corrected(read_counts(_split_hyphens(fixed, self.keywords)))
+        toks = corrected_later(without_particles(corrected(read_counts(_split_hyphens(fixed, self.keywords)))))
         out: list[Lexed] = []
         cur: list[Tok] = []
         self.aside: list[str] = []

@@ -195,6 +195,23 @@ class NameIndex:
         self.parts: dict[str, _Name] = {form: by_name[next(iter(names))] for form, names in owners.items()
                                         if len(names) == 1}
 
+        # A name shortened to the start of one of its words ("mezz" of mezzanine, "recv" is not
+        # one: "receiving"'s start is "rece"): a prefix of four letters or more, two or more
+        # letters short of the word, that starts a word of one place or product only and is no
+        # word of the grammar. Read only where nothing else (an exact or misspelt name, a word of
+        # a name) matches: a shortening never outranks a typo of another name.
+        starts: dict[str, set[str]] = {}
+        for n in self.names:
+            if n.kind == "robot":
+                continue
+            for w in re.split(r"[-_\s]+", n.name.lower()):
+                if w.isalpha() and len(w) >= 6:
+                    for size in range(4, len(w) - 1):
+                        starts.setdefault(w[:size], set()).add(n.name)
+        self.prefixes: dict[str, _Name] = {
+            form: by_name[next(iter(names))] for form, names in starts.items()
+            if len(names) == 1 and alone(form) and form not in owners}
+
     def group(self, word: str) -> list[str] | None:
         """The places a plural or class word selects ("cages" -> the places whose head is cage).
 
@@ -390,6 +407,9 @@ class NameIndex:
             return Tok("name", raw[i], part.name, part.kind), i + 1  # "formula" for baby-formula
         alpha, digits = split_digits(norm)
         found = self.lookup(alpha, digits, raw[i])
+        if found is None and norm in self.prefixes:
+            short = self.prefixes[norm]
+            found = Tok("name", raw[i], short.name, short.kind)  # "mezz" for mezzanine
         return (found, i + 1) if found is not None else None
 
 

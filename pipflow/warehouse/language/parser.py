@@ -30,7 +30,7 @@ from lark.exceptions import UnexpectedInput, UnexpectedToken
 from pipflow.errors import PipflowError, Refusal, TranslationError
 from pipflow.language.characters import line_readings
 from pipflow.language.earley import ListLexer, earley_parser
-from pipflow.warehouse.language.goals import GoalRules, quote
+from pipflow.warehouse.language.goals import Choice, GoalRules, quote
 from pipflow.warehouse.language.grammar import GRAMMAR, nullable_optionals
 from pipflow.warehouse.language.lexicon import Lexed, Lexicon
 from pipflow.language.numbers import NUMBER_WORDS
@@ -111,6 +111,7 @@ class _Sentence(GoalRules, TailRules, Interpreter):
         self.statements: list[dict] = []
         self.rules: list[dict] = []
         self.bind: list[dict] = []  # rules that take the sentence's goal as their scope
+        self.own: dict[int, list[dict]] = {}  # of those, an addressed robot's: its own goal's statements
         # of those, the ones whose pronoun is what the robots handle ("must not move them"): the
         # items, or the items on this move? (finish refuses where the two differ)
         self.item_pronouns: list[dict] = []
@@ -559,6 +560,11 @@ class _Sentence(GoalRules, TailRules, Interpreter):
         items = np["items"] or prev.get("items")
         if not source or not items or "names" not in items:
             raise TranslationError(f"'{np['words']}': the rest of what? (say where it comes from)")
+        if prev["op"] == "set" and self.lexed.tokens and self.lexed.tokens[0].type in ("ITEM", "ITEMWORD"):
+            # "tote bags: 1 on P, rest to Q": the sentence is about the item, so "the rest" may be
+            # the rest of every tote bag, or of P's; neither is guessed
+            raise TranslationError(f"'{np['words']}': the rest of {', '.join(source)}'s, or of every one in the "
+                                   f"world? say where it comes from")
         return {"op": "transfer", "items": items, "amount": {"rest": True}, "from": {"names": source},
                 "to": {"names": places}, "words": np["words"]}
 
@@ -811,9 +817,14 @@ class _Sentence(GoalRules, TailRules, Interpreter):
             raise TranslationError(f"{quote(self.words(node))}: cannot read this")
 
     def _rule_for(self, sel: dict, mode: str, statements: list[dict], words: str) -> None:
+        """A rule of an addressed robot: bound to the sentence's goal (:meth:`finish`); where the
+        sentence addresses several robots, each with its own goal ("the forklift take 2 X from P
+        to Q, and the cobot 1 Y from R to Q"), each rule takes its own goal's scope."""
         base = {"mode": mode, "robots": sel, "words": words}
         self.bind.append(base)
         self.rules.append(base)
+        if statements:
+            self.own[id(base)] = list(statements)
 
     def finish(self) -> None:
         """Rules with no scope of their own take the sentence's goal (see the module doc)."""
@@ -840,6 +851,40 @@ class _Sentence(GoalRules, TailRules, Interpreter):
             for r in self.rules:
                 r.pop("open", None)
             return
+        own = [r for r in self.rules if id(r) in self.own]
+        out: list[dict] = []
+        for r in self.rules:
+            if r in self.bind and not r.get("open"):
+                scope = self.own[id(r)] if len(own) > 1 and id(r) in self.own else statements
+                use_product, use_place = self._scope(scope)
+                new = dict(r)
+                if use_product:
+                    new["product"] = use_product
+                if use_place:
+                    if use_product and r in self.item_pronouns and self.picks.get("scope") == "item":
+                        out.append(new)   # chosen: the product wherever it goes
+                        continue
+                    if use_product and r in self.item_pronouns and self.picks.get("scope") != "move":
+                        # "only the forklift should handle it": it is the product (any move of
+                        # it) or this move of it? Readers differ; the two rules allow different
+                        # plans, so neither is guessed
+                        raise _Choice(
+                            "scope", ("item", "move"),
+                            f"{quote(r.get('words') or '')}: the rule may hold for {use_product} wherever it "
+                            f"goes or only for this move of it ({', '.join(f'{k} {v}' for k, v in use_place.items())}); "
+                            f"say which (e.g. 'for {use_product}' or 'for that move')")
+                    new.update(use_place)
+                out.append(new)
+            else:
+                r = dict(r)
+                r.pop("open", None)
+                out.append(r)
+        self.rules = out
+
+    @staticmethod
+    def _scope(statements: list[dict]) -> tuple[str | None, dict | None]:
+        """The one product and the one move (``{"from", "to"}``) of some statements, where each is
+        one (None where several leave the field open)."""
         products: list[str] = []
         moves: list[dict] = []
         for s in statements:
@@ -864,32 +909,7 @@ class _Sentence(GoalRules, TailRules, Interpreter):
         places = {v for m in uniq_moves for v in m.values()}
         use_product = products[0] if len(products) == 1 and products[0] != "*" else None
         use_place = uniq_moves[0] if (len(uniq_moves) == 1 and "*" not in places) else None
-        out: list[dict] = []
-        for r in self.rules:
-            if r in self.bind and not r.get("open"):
-                new = dict(r)
-                if use_product:
-                    new["product"] = use_product
-                if use_place:
-                    if use_product and r in self.item_pronouns and self.picks.get("scope") == "item":
-                        out.append(new)   # chosen: the product wherever it goes
-                        continue
-                    if use_product and r in self.item_pronouns and self.picks.get("scope") != "move":
-                        # "only the forklift should handle it": it is the product (any move of
-                        # it) or this move of it? Readers differ; the two rules allow different
-                        # plans, so neither is guessed
-                        raise _Choice(
-                            "scope", ("item", "move"),
-                            f"{quote(r.get('words') or '')}: the rule may hold for {use_product} wherever it "
-                            f"goes or only for this move of it ({', '.join(f'{k} {v}' for k, v in use_place.items())}); "
-                            f"say which (e.g. 'for {use_product}' or 'for that move')")
-                    new.update(use_place)
-                out.append(new)
-            else:
-                r = dict(r)
-                r.pop("open", None)
-                out.append(r)
-        self.rules = out
+        return use_product, use_place
 
 
 def _clause_of(lexed: Lexed, k: int) -> list[int]:
@@ -950,13 +970,8 @@ def _fail(exc: UnexpectedInput, lexed: Lexed, lex: Lexicon) -> TranslationError:
                             f"robot groups: {lex.group_names()})")
 
 
-class _Choice(TranslationError):
-    """A sentence with several readings that ask for different things: which one is ``key``'s
-    option; :func:`parse` offers each as a candidate (never picks one itself)."""
-
-    def __init__(self, key: str, options: tuple, message: str):
-        super().__init__(message)
-        self.key, self.options = key, options
+#: a sentence with several readings that ask for different things (:class:`goals.Choice`)
+_Choice = Choice
 
 
 def _read(tree: Tree, lexed: Lexed, lex: Lexicon, selector: RobotSelector, memory: dict,
