@@ -128,3 +128,31 @@ def test_the_rest_after_a_sentence_about_an_item_is_refused() -> None:
 
 def test_a_lead_with_a_colon_and_a_deadline_are_read() -> None:
     assert understand("Next: move 2 reams from bin 4 to bin 5 by 4", SHOP)["goal"] == MOVE_2
+
+
+# -- issue 23, point 2: the verb lexicon --------------------------------------------------------
+@pytest.mark.parametrize("command, goal", [
+    ("Stow 2 staplers on bin 4", {"bin_4": {"stapler": 2}}),                                  # place
+    ("Shove 2 reams from bin 4 to bin 5", MOVE_2),                                            # move
+    ("Offload 2 reams from bin 4", {"bin_4": {"ream": 3}}),                                   # remove
+    ("Hang on to bin 5 as it is", {"bin_5": {"ream": 1, "envelope": 0, "stapler": 2, "gallon_jug": 0}}),  # keep
+    ("Round up every envelope at the gallery", {"gallery": {"envelope": 3}, "bin_4": {"envelope": 0},  # gather
+                                                "bin_5": {"envelope": 0}, "dispatch_bench": {"envelope": 0}}),
+    ("Sotw 2 staplers on bin 4", {"bin_4": {"stapler": 2}}),                                  # a slip of a lexicon verb
+])
+def test_the_verb_lexicon_maps_each_verb_to_its_operation(command: str, goal: dict) -> None:
+    assert understand(command, SHOP)["goal"] == goal
+
+
+def test_every_lexicon_verb_names_an_operation_and_a_grammar_verb() -> None:
+    from pipflow.warehouse.language.lexicon import VERB_LEXICON
+    from pipflow.warehouse.language.parser import keywords
+    ops = {"place", "move", "remove", "keep", "gather", "empty"}
+    for phrase, (op, verb) in VERB_LEXICON.items():
+        assert op in ops and verb in keywords(), phrase
+
+
+@pytest.mark.parametrize("verb", ["yeet", "hand", "truck"])   # unknown, or a noun as often as a verb
+def test_a_verb_outside_the_lexicon_is_never_guessed(verb: str) -> None:
+    with pytest.raises(TranslationError, match=verb):
+        understand(f"{verb} 2 reams from bin 4 to bin 5", SHOP)

@@ -139,6 +139,64 @@ def _number_typo(word: str) -> str | None:
 CORRECTIONS = (("no",), ("sorry",), ("wait",), ("i", "mean"), ("make", "that"), ("or", "rather"), ("rather",))
 
 
+#: The verb lexicon (issue 23, point 2; docs/language.md "Verbs"): each verb or phrasal verb of
+#: placing, moving, removing, keeping and gathering that staff use, with the order operation it
+#: means and the grammar verb that carries that operation. The grammar's own verbs are read as
+#: they are (its rules decide what each does in its clause); the phrases below are read as the
+#: grammar verb they name, their words kept for the echo. A verb in neither is never guessed: it
+#: stays an unknown word, and the sentence is refused on it. Words that are nouns as often as verbs
+#: ("hand", "truck", "group", "pool") and idioms that mean something else ("take over", "run over")
+#: are left out on purpose.
+#:   place  - a count put on a place ("put", "stow"): a final count where the place holds none
+#:   move   - units taken from a place to another ("shift", "bring over"): adds at the target
+#:   remove - units taken off a place ("pull off", "offload"): removes at the source
+#:   keep   - a place or count left as it is ("hang on to")
+#:   gather - every unit of an item brought to one place ("round up", "consolidate")
+#:   empty  - a place cleared of everything ("clear out", "clean out")
+VERB_LEXICON: dict[str, tuple[str, str]] = {
+    # placing
+    "stow": ("place", "put"), "stash": ("place", "put"), "slot": ("place", "put"), "set down": ("place", "put"),
+    "lay": ("place", "put"), "plonk": ("place", "put"), "shelve": ("place", "put"),
+    # moving (and the grammar's own: move, bring, send, ship, transfer, carry, haul, shift, cart,
+    # ferry, tow, lug, shuttle, wheel, relocate, deliver, stage, restage, fetch, dispatch, bring over, move over)
+    "shove": ("move", "move"), "drag": ("move", "move"), "move across": ("move", "move"),
+    "send across": ("move", "send"), "carry over": ("move", "carry"), "bring across": ("move", "bring"),
+    # removing (and the grammar's own: remove, unload, withdraw, take away, get rid of, dispose of, throw out)
+    "offload": ("remove", "unload"), "off-load": ("remove", "unload"), "pull off": ("remove", "take"),
+    "pull out": ("remove", "take"), "take off": ("remove", "take"), "take out": ("remove", "take"),
+    "clear away": ("remove", "remove"),
+    # keeping (and the grammar's own: keep, leave, retain, hold)
+    "hang on to": ("keep", "keep"), "hold on to": ("keep", "keep"), "hang onto": ("keep", "keep"),
+    # gathering (and the grammar's own: gather, consolidate, collect)
+    "round up": ("gather", "gather"), "bring together": ("gather", "gather"),
+    "centralise": ("gather", "consolidate"), "centralize": ("gather", "consolidate"),
+    # emptying (and the grammar's own: empty, clear, clear out, clean out)
+    "clear off": ("empty", "clear"), "strip": ("empty", "empty"), "vacate": ("empty", "empty"),
+}
+
+
+def lexicon_verbs(toks: list[Tok], keywords: dict[str, str]) -> list[Tok]:
+    """The tokens with each phrase of :data:`VERB_LEXICON` read as its grammar verb (longest
+    phrase first; a phrase whose words are already the grammar's, or whose verb the grammar does
+    not have, is left alone). The verb's words as written stay its text."""
+    phrases = sorted(((tuple(k.split()), v[1]) for k, v in VERB_LEXICON.items() if v[1] in keywords),
+                     key=lambda x: -len(x[0]))
+    out: list[Tok] = []
+    k = 0
+    while k < len(toks):
+        for words, verb in phrases:
+            got = toks[k:k + len(words)]
+            if (len(got) == len(words) and all(x.kind == "word" and x.value == w for x, w in zip(got, words))
+                    and not (len(words) == 1 and words[0] in keywords)):
+                out.append(Tok("word", " ".join(x.text for x in got), verb))
+                k += len(words)
+                break
+        else:
+            out.append(toks[k])
+            k += 1
+    return out
+
+
 #: words that take back what was just said ("no wait, make that 3", "sorry, I meant 4")
 TAKE_BACK = {"no", "wait", "sorry", "oops", "actually", "hmm", "erm", "nope", "correction", "scratch", "that"}
 #: the words that then say the new count
@@ -301,6 +359,9 @@ class Lexicon:
         # a slip of the fingers on any grammar word of 3 letters or more ("mvoe", "form" for
         # "from", "teh"): neighbours swapped, a letter dropped or doubled, a key next to it
         cands |= {k for k in self.keywords if k.isalpha() and len(k) >= 3 and slip(word, k)}
+        # and towards the verb lexicon's one-word verbs ("sotw" -> stow, read as "put")
+        cands |= {verb for k, (_, verb) in VERB_LEXICON.items()
+                  if " " not in k and k.isalpha() and verb in self.keywords and slip(word, k)}
         return next(iter(cands)) if len(cands) == 1 else None
 
     def robot_stem(self, word: str) -> str | None:
@@ -414,7 +475,8 @@ class Lexicon:
                 if typo is not None:
                     t = Tok("word", t.text, typo)
             fixed.append(t)
-        toks = corrected_later(without_particles(corrected(read_counts(_split_hyphens(fixed, self.keywords)))))
+        toks = lexicon_verbs(read_counts(_split_hyphens(fixed, self.keywords)), self.keywords)
+        toks = corrected_later(without_particles(corrected(toks)))
         out: list[Lexed] = []
         cur: list[Tok] = []
         self.aside: list[str] = []
