@@ -156,3 +156,16 @@ def test_every_lexicon_verb_names_an_operation_and_a_grammar_verb() -> None:
 def test_a_verb_outside_the_lexicon_is_never_guessed(verb: str) -> None:
     with pytest.raises(TranslationError, match=verb):
         understand(f"{verb} 2 reams from bin 4 to bin 5", SHOP)
+
+
+# -- issue 23, point 4: candidate readings from partial parses ----------------------------------
+def test_a_refusal_offers_the_clauses_that_parse_and_names_the_words_left_out() -> None:
+    """A reason clause that names a place sinks the command (it carries content); the candidate
+    built from the clause that parses is offered, with the words it did not read named."""
+    with pytest.raises(TranslationError) as err:
+        understand("We're doing an audit on bin 5 this week, so move 2 reams from bin 4 to bin 5 first please", SHOP)
+    offered = [c for c in err.value.candidates if c["goal"] == MOVE_2]
+    assert offered, err.value.candidates
+    assert any("audit" in w for w in offered[0]["unread"])
+    assert "not read" in offered[0]["reading"] and "audit" in offered[0]["reading"]
+    assert len(err.value.candidates) <= 3

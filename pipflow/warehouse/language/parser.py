@@ -945,8 +945,11 @@ def _fail(exc: UnexpectedInput, lexed: Lexed, lex: Lexicon) -> TranslationError:
         word = lexed.source[k].text.replace("zzposs", "'s")
         prev = lexed.source[k - 1] if k > 0 else None
         if prev is not None and prev.kind == "num" and lexed.tokens[k].type == "UNKNOWN":
-            return TranslationError(f"'{prev.text} {word}': cannot tell which product this count is for "
-                                    f"(candidates: {lex.index.candidates('product')})")
+            error = TranslationError(f"'{prev.text} {word}': cannot tell which product this count is for "
+                                     f"(candidates: {lex.index.candidates('product')})")
+            error.unplaced = k  # type: ignore[attr-defined]
+            error.clause = _clause_of(lexed, k)  # type: ignore[attr-defined]
+            return error
         where = f"cannot place '{word}' in '{sentence}'"
         error = TranslationError(f"{where}: the command is not understood, so nothing is guessed "
                                  f"(shelves: {lex.index.candidates('shelf')}; products: "
@@ -1119,20 +1122,23 @@ def candidates(command: str, world: dict, exc: TranslationError) -> list[dict]:
     the bench) chooses."""
     sentence = getattr(exc, "sentence", None)
     if sentence is None:
-        return []
-    if isinstance(exc, _Choice):
-        picks = [{exc.key: option} for option in exc.options]
+        picks: list[dict] = []
+    elif isinstance(exc, _Choice):
+        picks = [{sentence: {exc.key: option}} for option in exc.options]
     elif getattr(exc, "unplaced", None) is not None:
-        picks = [{"drop": [exc.unplaced]}, {"drop": exc.clause}]  # type: ignore[attr-defined]
+        picks = [{sentence: {"drop": [exc.unplaced]}}, {sentence: {"drop": exc.clause}}]  # type: ignore[attr-defined]
     else:
-        return []
+        picks = []
     if getattr(exc, "trimmed", False):
-        picks = [{**p, "trimmed": True} for p in picks]
+        picks = [{k: {**p, "trimmed": True} for k, p in pick.items()} for pick in picks]
+    # partial parses: in every sentence, the words no rule places (or their clauses) left out one
+    # after another, the clauses that do parse kept, the words left out named
+    picks += [{"*": {"salvage": "word"}}, {"*": {"salvage": "clause"}}]
     out: list[dict] = []
     seen: set[str] = set()
     for pick in picks:
         try:
-            order = _parse(command, world, {sentence: pick})
+            order = _parse(command, world, pick)
             got = resolve(order, world)
         except PipflowError:
             continue
@@ -1140,10 +1146,45 @@ def candidates(command: str, world: dict, exc: TranslationError) -> list[dict]:
         if meaning in seen:
             continue
         seen.add(meaning)
-        out.append({"reading": "; ".join(got.explanation), "explanation": list(got.explanation),
-                    "goal": got.goal, "constraints": got.constraints,
+        unread = order.get("unread") or []
+        explanation = list(got.explanation) + ([f"not read: {', '.join(repr(w) for w in unread)}"] if unread else [])
+        out.append({"reading": "; ".join(explanation), "explanation": explanation,
+                    "goal": got.goal, "constraints": got.constraints, "unread": unread,
                     "words": "; ".join(x["words"] for x in order["statements"] + order["rules"]), "order": order})
     return out[:MAX_CANDIDATES]
+
+
+#: words a partial parse may leave out of one sentence, at most
+MAX_SALVAGED = 3
+
+
+def _salvage(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict, memory: dict,
+             pick: dict, how: str) -> tuple[_Sentence, list[str]]:
+    """A candidate reading of a sentence that does not read: the word no rule places (``how`` =
+    "word") or its clause ("clause") left out, again while another word cannot be placed, up to
+    :data:`MAX_SALVAGED` times; returns the reading and the words left out (named in the
+    candidate's echo). Only ever offered, never acted on unchosen."""
+    unread: list[str] = []
+    for _ in range(MAX_SALVAGED + 1):
+        try:
+            return _one_meaning(lexed, lex, selector, world, memory, pick), unread
+        except UnexpectedInput as exc:
+            error = _fail(exc, lexed, lex)
+            if getattr(error, "unplaced", None) is None:
+                # it ends before it says what to do: the last word is the one that does not fit
+                error.unplaced, error.clause = len(lexed.tokens) - 1, [len(lexed.tokens) - 1]  # type: ignore[attr-defined]
+        except TranslationError as exc:
+            error = exc
+        k = getattr(error, "unplaced", None)
+        if k is None or len(unread) >= MAX_SALVAGED:
+            raise error
+        drop = [k] if how == "word" else list(error.clause)  # type: ignore[attr-defined]
+        unread.append(" ".join(lexed.source[j].text for j in drop if j < len(lexed.source)
+                               and lexed.tokens[j].type != ",").replace(" zzposs", "'s"))
+        lexed = _without(lexed, drop)
+        if not lexed.tokens:
+            raise error
+    raise TranslationError("nothing left to read")
 
 
 def _meaning_of(order: dict, world: dict) -> str | None:
@@ -1166,6 +1207,7 @@ def _parse(command: str, world: dict, picks: dict | None = None) -> dict:
     rules: list[dict] = []
     memory: dict = {}
     set_aside: list[str] = []
+    unread: list[str] = []  # words a candidate reading left out (salvage mode only)
     sentences = lex.sentences(command)
     for index, lexed in enumerate(sentences):
         if not lexed.tokens:
@@ -1183,8 +1225,14 @@ def _parse(command: str, world: dict, picks: dict | None = None) -> dict:
             raise TranslationError(f"the sentence '{shown} ...' has {len(lexed.tokens)} words; sentences "
                                    f"are read up to {MAX_SENTENCE_WORDS} words (end it with a full stop "
                                    f"and go on in a new one)")
+        salvage = (picks.get("*") or {}).get("salvage")
         try:
-            reader = _one_meaning(lexed, lex, selector, world, memory, pick)
+            if salvage:
+                reader, left_out = _salvage(lexed.trimmed or lexed, lex, selector, world, memory, pick, salvage)
+                unread += left_out
+                set_aside += list(lexed.aside) if lexed.trimmed is not None else []
+            else:
+                reader = _one_meaning(lexed, lex, selector, world, memory, pick)
         except (UnexpectedInput, TranslationError) as exc:
             # the sentence as said does not read; without its content-free clauses it may
             # (asides.py): they are set aside and said aloud, the rest still needs every word
@@ -1214,4 +1262,4 @@ def _parse(command: str, world: dict, picks: dict | None = None) -> dict:
                                f"products: {lex.index.candidates('product')})")
     set_aside = lex.aside + set_aside
     return {"command": command, "statements": statements, "rules": rules,
-            **({"set_aside": set_aside} if set_aside else {})}
+            **({"set_aside": set_aside} if set_aside else {}), **({"unread": unread} if unread else {})}
