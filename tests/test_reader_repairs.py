@@ -169,3 +169,17 @@ def test_a_refusal_offers_the_clauses_that_parse_and_names_the_words_left_out() 
     assert any("audit" in w for w in offered[0]["unread"])
     assert "not read" in offered[0]["reading"] and "audit" in offered[0]["reading"]
     assert len(err.value.candidates) <= 3
+
+
+# -- constructions the held-out writer used that no rule read -----------------------------------
+@pytest.mark.parametrize("command, goal", [
+    ("bin 5: add 2 envelopes", {"bin_5": {"envelope": 2}}),
+    ("The gallery needs emptying into bin 4", {"gallery": {"ream": 0, "envelope": 0, "stapler": 0, "gallon_jug": 0},
+                                               "bin_4": {"stapler": 3, "envelope": 3}}),
+    ("Bin 5 needs emptying", {"bin_5": {"ream": 0, "envelope": 0, "stapler": 0, "gallon_jug": 0}}),
+    ("No staplers anywhere except the gallery", {"bin_4": {"stapler": 0}, "bin_5": {"stapler": 0},
+                                                 "dispatch_bench": {"stapler": 0}}),
+    ("Nothing but staplers on bin 5", {"bin_5": {"ream": 0, "envelope": 0, "gallon_jug": 0}}),
+])
+def test_constructions_of_emptying_excepting_and_adding_after_a_colon(command: str, goal: dict) -> None:
+    assert understand(command, SHOP)["goal"] == goal

@@ -356,6 +356,30 @@ class GoalRules:
 
     g_fill_elided = g_fill
 
+    def g_none_except(self, node: Tree) -> None:
+        """ "No X anywhere except P": none of X on every place of the world but P (P is not
+        listed: it is just not selected, as "every place except P" is)."""
+        parts = self.clause_parts(node, bare=True)
+        words = parts.words
+        heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
+        kept = [p for e in self.sub(node, "except_pl") for p in self.place_list(e)]
+        places = [p for p in self.index.by_kind["shelf"] if p not in kept]
+        if not kept or not places:
+            raise TranslationError(f"{quote(words)}: cannot tell which places are excepted")
+        self.put(places, "each", [{"items": {"names": [h]}, "amount": {"none": True}, "words": words}
+                                  for h in heads], words)
+
+    def g_nothing_but(self, node: Tree) -> None:
+        """ "Nothing but X on P": none of every other product of the world on P (convention 3's
+        "every product"); X itself is not fixed."""
+        parts = self.clause_parts(node, bare=True)
+        words = parts.words
+        heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
+        places = self.loc(parts.locs[0])[0]
+        others = [i for i in self.index.by_kind["product"] if i not in heads]
+        self.put(places, "each", [{"items": {"names": [i]}, "amount": {"none": True}, "words": words}
+                                  for i in others], words)
+
     def g_nothing_else(self, node: Tree) -> None:
         parts = self.clause_parts(node)
         words, locs = parts.words, parts.locs

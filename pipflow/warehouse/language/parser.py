@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import functools
 import json
+from collections import OrderedDict
 from typing import Any, Callable
 
 from lark import Lark, Token, Tree
@@ -1024,6 +1025,43 @@ def _parts(tree: Tree) -> int:
     return sum(1 for p in tree.children[0].children if isinstance(p, Tree) and p.data not in ("sep", "lead"))
 
 
+#: parse forests of recent sentences, by their terminals (the grammar is the same in every world,
+#: and a sentence's terminals are all the parse sees): a candidate reading re-reads the sentences
+#: that did parse, and a command's two line readings share most sentences
+_FORESTS: "OrderedDict[tuple, tuple[bool, Any]]" = OrderedDict()
+_FORESTS_KEPT = 256
+#: new sentence parses one refusal may spend on its candidate readings (a parse of a sentence read
+#: before is remembered and free): the candidates of a refused command cost at most this many
+#: parses more than the refusal itself (benchmarks/translator.py measures the time)
+CANDIDATE_PARSES = 3
+_CANDIDATE_BUDGET: dict[str, int | None] = {"left": None}
+
+
+def _tree(tokens: list[Token]) -> Tree:
+    """The Earley forest of a sentence's terminals (every reading), or the parse error it raised,
+    remembered for the last :data:`_FORESTS_KEPT` sentences. Readers only read the forest (lark's
+    Interpreter and CollapseAmbiguities build new trees), so one forest serves every reading."""
+    key = tuple((t.type, repr(t.value)) for t in tokens)
+    hit = _FORESTS.get(key)
+    if hit is None:
+        if _CANDIDATE_BUDGET["left"] is not None:
+            if _CANDIDATE_BUDGET["left"] <= 0:
+                raise TranslationError("no parse left for candidate readings")
+            _CANDIDATE_BUDGET["left"] -= 1
+        try:
+            hit = (True, _all_readings_parser().parse(tokens))
+        except UnexpectedInput as exc:
+            hit = (False, exc)
+        _FORESTS[key] = hit
+        if len(_FORESTS) > _FORESTS_KEPT:
+            _FORESTS.popitem(last=False)
+    else:
+        _FORESTS.move_to_end(key)
+    if not hit[0]:
+        raise hit[1]
+    return hit[1]
+
+
 def _one_meaning(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict, memory: dict,
                  picks: dict | None = None) -> _Sentence:
     """Read a sentence in every way the grammar allows, and keep its meaning only if there is one.
@@ -1034,7 +1072,7 @@ def _one_meaning(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dic
     is the one with the fewest, longest parts.
     """
     picks = picks or {}
-    tree = _all_readings_parser().parse(lexed.tokens)
+    tree = _tree(lexed.tokens)
     if not any(t.data == "_ambig" for t in tree.iter_subtrees()):
         return _read(tree, lexed, lex, selector, memory, picks)
     sentence = " ".join(t.text for t in lexed.source).replace(" zzposs", "'s")
@@ -1125,37 +1163,47 @@ def candidates(command: str, world: dict, exc: TranslationError) -> list[dict]:
         picks: list[dict] = []
     elif isinstance(exc, _Choice):
         picks = [{sentence: {exc.key: option}} for option in exc.options]
-    elif getattr(exc, "unplaced", None) is not None:
-        picks = [{sentence: {"drop": [exc.unplaced]}}, {sentence: {"drop": exc.clause}}]  # type: ignore[attr-defined]
     else:
-        picks = []
+        picks = []  # a word no rule places: the partial parses below leave it (or its clause) out first
     if getattr(exc, "trimmed", False):
         picks = [{k: {**p, "trimmed": True} for k, p in pick.items()} for pick in picks]
     # partial parses: in every sentence, the words no rule places (or their clauses) left out one
     # after another, the clauses that do parse kept, the words left out named
-    picks += [{"*": {"salvage": "word"}}, {"*": {"salvage": "clause"}}]
+    picks += [{"*": {"salvage": "clause"}}, {"*": {"salvage": "word"}}]
     out: list[dict] = []
     seen: set[str] = set()
-    for pick in picks:
-        try:
-            order = _parse(command, world, pick)
-            got = resolve(order, world)
-        except PipflowError:
-            continue
-        meaning = canonical(got.goal, got.constraints)
-        if meaning in seen:
-            continue
-        seen.add(meaning)
-        unread = order.get("unread") or []
-        explanation = list(got.explanation) + ([f"not read: {', '.join(repr(w) for w in unread)}"] if unread else [])
-        out.append({"reading": "; ".join(explanation), "explanation": explanation,
-                    "goal": got.goal, "constraints": got.constraints, "unread": unread,
-                    "words": "; ".join(x["words"] for x in order["statements"] + order["rules"]), "order": order})
+    _CANDIDATE_BUDGET["left"] = CANDIDATE_PARSES
+    try:
+        for pick in picks:
+            _candidate(command, world, pick, out, seen)
+    finally:
+        _CANDIDATE_BUDGET["left"] = None
     return out[:MAX_CANDIDATES]
 
 
-#: words a partial parse may leave out of one sentence, at most
-MAX_SALVAGED = 3
+def _candidate(command: str, world: dict, pick: dict, out: list[dict], seen: set[str]) -> None:
+    """The command read with one pick, resolved, added to ``out`` unless it fails or repeats a
+    meaning already offered."""
+    try:
+        order = _parse(command, world, pick)
+        got = resolve(order, world)
+    except PipflowError:
+        return
+    meaning = canonical(got.goal, got.constraints)
+    if meaning in seen:
+        return
+    seen.add(meaning)
+    unread = order.get("unread") or []
+    explanation = list(got.explanation) + ([f"not read: {', '.join(repr(w) for w in unread)}"] if unread else [])
+    out.append({"reading": "; ".join(explanation), "explanation": explanation,
+                "goal": got.goal, "constraints": got.constraints, "unread": unread,
+                "words": "; ".join(x["words"] for x in order["statements"] + order["rules"]), "order": order})
+
+
+#: words (or clauses) a partial parse may leave out of one sentence, at most: each costs a parse of
+#: the sentence, and a third one added 1 of 86 refused gold readings to the candidates for 30% more
+#: time on a refusal (benchmarks/language, 2026-12-02)
+MAX_SALVAGED = 2
 
 
 def _salvage(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict, memory: dict,
