@@ -283,7 +283,7 @@ def test_command_size_is_capped_and_the_parse_is_per_sentence() -> None:
     with pytest.raises(TranslationError, match="read up to 120 words"):
         understand("1, " * 70 + "product1 on shelf1", PAPER)
     # many short sentences are fine: the parse works one sentence at a time
-    order = parse("put 1 product1 on shelf1. " * 40, PAPER)
+    order = parse("put 1 product4 on shelf1. " * 40, PAPER)  # shelf1 holds no product4: "put" is clear
     assert len(order["statements"]) == 40
 
 
@@ -326,7 +326,8 @@ def statements(draw) -> tuple[str, dict]:
     num = _num(draw, n)
     one = {"names": [p]}
     if kind == "set":
-        text = draw(st.sampled_from([f"{p} should hold {num} {i}", f"put {num} {i} on {p}",
+        # ("put N X on P" is no final count where P holds some X: add or set? it is refused, issue 23)
+        text = draw(st.sampled_from([f"{p} should hold {num} {i}", f"{p} should end up with {num} {i}",
                                      f"there should be {num} {i} in {p}"]))
         return text, {"op": "set", "places": one, "items": {"names": [i]}, "amount": {"count": n}, "words": text}
     if kind == "add":

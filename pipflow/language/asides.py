@@ -73,6 +73,14 @@ OBJECT_PRONOUNS = frozenset({"it", "them", "this", "that", "these", "those", "hi
 #: words that open a greeting or a thanks; with nothing after them but addressees, the clause is talk
 GREETINGS = frozenset({"hi", "hello", "hey", "hiya", "heya", "howdy", "morning", "afternoon", "evening", "good",
                        "greetings", "yo", "cheers", "thanks", "thank", "ta", "thx", "ok", "okay", "alright"})
+#: words that open an apology or a thanks for something ("sorry for the late ask", "thanks for
+#: earlier"): what follows "for" / "about" is what one is sorry or thankful for, not an order
+PLEASANTRIES = frozenset({"sorry", "apologies", "apologise", "apologize", "pardon", "thanks", "thank", "thx",
+                          "ta", "cheers", "ty", "grateful", "appreciate", "appreciated"})
+#: words that open a statement about someone or something ("she's been dropping them", "it's broken"):
+#: a verb acting on a pronoun after them reports what happened, it asks for nothing
+SUBJECTS = frozenset({"i", "im", "ive", "we", "were", "weve", "he", "hes", "she", "shes", "it", "its", "they",
+                      "theyre", "theyve", "there", "theres"})
 #: who a greeting is said to ("Morning all", "Hi team")
 ADDRESSEES = frozenset({"all", "everyone", "everybody", "team", "folks", "guys", "gang", "lads", "people",
                         "there", "you", "mate", "mates", "yall", "crew", "robots", "bots", "y", "again", "so",
@@ -93,6 +101,8 @@ def near_operative(word: str) -> bool:
     "olny", "exept", "onlu"): a misspelt "not" or "only" must never be read as talk."""
     if word in OPERATIVE:
         return True
+    if word in FUNCTION_WORDS:
+        return False  # a word of its own ("them", "then"'s neighbour), spelt right: no slip
     return len(word) >= 3 and any(slip(word, o) for o in OPERATIVE if len(o) >= 3)
 
 
@@ -102,17 +112,38 @@ def is_greeting(words: Iterable[str]) -> bool:
     return bool(ws) and ws[0] in GREETINGS and all(w in ADDRESSEES or w in GREETINGS for w in ws[1:])
 
 
-def content_free(words: Iterable[str], content: Callable[[str], bool]) -> bool:
+def is_pleasantry(words: Iterable[str], names: Callable[[str], bool]) -> bool:
+    """ "sorry for the late ask", "thanks for earlier", "thank you so much": an apology or thanks,
+    then only what it is for. Words of the grammar may follow ("ask", "earlier"): they say what
+    one is sorry for, not what to do; a name of the world, a number (``names``) or an operative
+    word may not ("thanks, and not on bay 2" is no pleasantry)."""
+    ws = [w for w in words if w]
+    if not ws or ws[0] not in PLEASANTRIES:
+        return False
+    rest = ws[2:] if ws[:2] == ["thank", "you"] else ws[1:]
+    if rest and rest[0] not in ("for", "about", "again", "so", "very", "a", "lot", "all", "everyone", "team", "in"):
+        return False
+    return not any(near_operative(w) and w not in ADDRESSEES for w in rest) and not any(names(w) for w in rest)
+
+
+def content_free(words: Iterable[str], content: Callable[[str], bool],
+                 names: Callable[[str], bool] | None = None) -> bool:
     """Whether a clause carries nothing an order needs (module doc). ``content(word)`` is the
-    domain's test: a name of its world (or close to one), a number, a content word of its lexicon."""
+    domain's test: a name of its world (or close to one), a number, a content word of its lexicon.
+    ``names(word)`` (optional; without it apologies and thanks are judged by ``content``): only a
+    name of the world or a number, for a pleasantry (:func:`is_pleasantry`), whose grammar words
+    are what it is for."""
     ws = [w for w in words if w]
     if not ws:
         return True
     if is_greeting(ws):
         return True   # its "all" or "team" is who is greeted, no quantifier or robot group
+    if names is not None and is_pleasantry(ws, names):
+        return True
     if ws[0] in ATTACHING:
         return False  # it modifies the clause before ("..., on the left", "..., and the rest")
-    if any(w not in FUNCTION_WORDS and nxt in OBJECT_PRONOUNS for w, nxt in zip(ws, ws[1:])):
+    if ws[0] not in SUBJECTS and any(w not in FUNCTION_WORDS and nxt in OBJECT_PRONOUNS
+                                     for w, nxt in zip(ws, ws[1:])):
         return False  # "..., recount them": an instruction about a thing, in a verb not read
     return not any(near_operative(w) or content(w) for w in ws)
 

@@ -28,6 +28,20 @@ def quote(words: str) -> str:
     return f"'{words}'"
 
 
+class Choice(TranslationError):
+    """A sentence with several readings that ask for different things: which one is ``key``'s
+    option; the parser offers each as a candidate reading (never picks one itself)."""
+
+    def __init__(self, key: str, options: tuple, message: str):
+        super().__init__(message)
+        self.key, self.options = key, options
+
+
+#: verbs of placing whose count is a final count or a delivery, as the place holds the item or not:
+#: "put 2 X on P" where P holds none is 2 either way; where P holds some, 2 in all or 2 more?
+PLACING_VERBS = {"put", "place", "stick", "pop", "park", "store", "stock"}
+
+
 @dataclass
 class ClauseParts:
     """What a goal clause says, before its rule's method reads the rest: the rule (``kind``), the
@@ -41,6 +55,11 @@ class ClauseParts:
     locs: list[Tree]
     plist: list[Tree]
     each: bool
+
+
+def _held(world: dict, place: str, item: str) -> int:
+    """Units of an item on a place now (the world's stock; missing means zero)."""
+    return int(((world.get("stock") or {}).get(place) or {}).get(item, 0) or 0)
 
 
 class GoalRules:
@@ -76,10 +95,35 @@ class GoalRules:
         bare = len(node.children) == 2 and kind == "g_set"
         if bare and not self.last_add:
             self._gap_after_more(nps, places)
-        self.put(places, mode, nps, words, add=bare and self.last_add)
+        add = bare and self.last_add
+        verb = self.sub(node, "putv")
+        several = len(places) > 1 and mode not in ("each", "respectively", "resp") and not self.distributive
+        if verb and not several and self.first_word(verb[0]) in PLACING_VERBS and self._put_adds(places, nps, words):
+            add = True
+        self.put(places, mode, nps, words, add=add)
         if kind == "g_set_only":
             self.statements.append({"op": "nothing_else", "places": {"names": places},
                                     "words": "nothing else"})
+
+    def _put_adds(self, places: list[str], nps: list[dict], words: str) -> bool:
+        """Whether "put N X on P" is a delivery: where P holds none of X it does not matter (a final
+        count, as read before); where P holds some, "put" says neither "in all" nor "more", so
+        the sentence is refused with both readings offered (``picks["put"]``: the user's choice)."""
+        if self.budget:
+            return True  # "take 3 X off P and put 2 on Q": the units taken, delivered
+        held = [(p, np) for p in places for np in nps if "count" in np["amount"] and np["items"]
+                for i in (np["items"].get("names") or [])
+                if _held(self.lex.world, p, i) > 0]
+        if not held:
+            return False
+        choice = self.picks.get("put")
+        if choice is None:
+            p, np = held[0]
+            n = np["amount"]["count"]
+            raise Choice("put", ("set", "add"),
+                         f"{quote(words)}: {p} already holds some; 'put {n}' can mean {n} there in all or "
+                         f"{n} more; nothing is guessed: say '{n} in all' or '{n} more'")
+        return choice == "add"
 
     g_loc_set = g_set
 
@@ -311,6 +355,30 @@ class GoalRules:
                                     "only": only, "words": words})
 
     g_fill_elided = g_fill
+
+    def g_none_except(self, node: Tree) -> None:
+        """ "No X anywhere except P": none of X on every place of the world but P (P is not
+        listed: it is just not selected, as "every place except P" is)."""
+        parts = self.clause_parts(node, bare=True)
+        words = parts.words
+        heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
+        kept = [p for e in self.sub(node, "except_pl") for p in self.place_list(e)]
+        places = [p for p in self.index.by_kind["shelf"] if p not in kept]
+        if not kept or not places:
+            raise TranslationError(f"{quote(words)}: cannot tell which places are excepted")
+        self.put(places, "each", [{"items": {"names": [h]}, "amount": {"none": True}, "words": words}
+                                  for h in heads], words)
+
+    def g_nothing_but(self, node: Tree) -> None:
+        """ "Nothing but X on P": none of every other product of the world on P (convention 3's
+        "every product"); X itself is not fixed."""
+        parts = self.clause_parts(node, bare=True)
+        words = parts.words
+        heads = [self.ihead(h, words) for h in self.sub(node, "ihead")]
+        places = self.loc(parts.locs[0])[0]
+        others = [i for i in self.index.by_kind["product"] if i not in heads]
+        self.put(places, "each", [{"items": {"names": [i]}, "amount": {"none": True}, "words": words}
+                                  for i in others], words)
 
     def g_nothing_else(self, node: Tree) -> None:
         parts = self.clause_parts(node)

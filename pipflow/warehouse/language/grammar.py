@@ -23,7 +23,7 @@ sentence: lead? part aside? (sep part aside?)* sep? aside?
 lead: ("but" | "and" | "then" | "also" | "so" | "however" | "now" | "oh" | "well" | "next"
       | "finally" | "first" | "afterwards" | "after" "that" | "additionally" | "plus"
       | ("can" | "could" | "would") ("you" | "we") | "you" ("should" | "must" | "can") | "just" | "let" "us"
-      | ("team" | "guys" | "folks" | "people" | "crew") ",") ","?
+      | ("team" | "guys" | "folks" | "people" | "crew") ",") ("," | ":")?
 
 // a separator costs: of two readings, the one with fewer, longer parts wins
 // ("only alpha and charlie may carry bolts" is one rule, not "only alpha" and a second clause)
@@ -45,6 +45,7 @@ aside: "instead" "of" NUM | "rather" "than" NUM
      | "when" "you" ("get" "a" "chance" | "have" "time" | "get" "time")
      | ("this" | "before") ("morning" | "afternoon" | "evening" | "shift" "ends"?) | "before" ("lunch" | "noon")
      | "tomorrow" | "first" "thing" | "before" "end" "of" "shift"
+     | "by" NUM ("pm" | "am" | "oclock" | "o" "clock")?
 
 // ---------------------------------------------------------------- amounts and items
 rlsep: "," | "and" | "," "and" | "or" | "nor" | "," "or"
@@ -196,6 +197,11 @@ goal: there_be items loc                                  -> g_set
     | both? places modal? each? setv each? items left?     -> g_place_set
     | both? places modal? "each" be? items                  -> g_place_set
     | places ":" items                                     -> g_place_set
+    | places ":" ("add" | "plus") items                     -> g_add_place
+    | places ("needs" | "need" | "wants") ("emptying" | "clearing" "out"? | "emptying" "out") ("into" | "onto" | "to") places -> g_empty_into
+    | places ("needs" | "need" | "wants") ("emptying" | "clearing" "out"? | "emptying" "out") -> g_empty
+    | ("no" | "zero") ihead (lsep ihead)* ("anywhere" | "elsewhere") except_pl -> g_none_except
+    | "nothing" "but" ihead (lsep ihead)* loc                -> g_nothing_but
     | places ":" inum (lsep inum)*                         -> g_place_inum
     | places modal? setv items "respectively"               -> g_place_set_resp
     | places "to" setv items                                -> g_place_set

@@ -139,6 +139,142 @@ def _number_typo(word: str) -> str | None:
 CORRECTIONS = (("no",), ("sorry",), ("wait",), ("i", "mean"), ("make", "that"), ("or", "rather"), ("rather",))
 
 
+#: The verb lexicon (issue 23, point 2; docs/language.md "Verbs"): each verb or phrasal verb of
+#: placing, moving, removing, keeping and gathering that staff use, with the order operation it
+#: means and the grammar verb that carries that operation. The grammar's own verbs are read as
+#: they are (its rules decide what each does in its clause); the phrases below are read as the
+#: grammar verb they name, their words kept for the echo. A verb in neither is never guessed: it
+#: stays an unknown word, and the sentence is refused on it. Words that are nouns as often as verbs
+#: ("hand", "truck", "group", "pool") and idioms that mean something else ("take over", "run over")
+#: are left out on purpose.
+#:   place  - a count put on a place ("put", "stow"): a final count where the place holds none
+#:   move   - units taken from a place to another ("shift", "bring over"): adds at the target
+#:   remove - units taken off a place ("pull off", "offload"): removes at the source
+#:   keep   - a place or count left as it is ("hang on to")
+#:   gather - every unit of an item brought to one place ("round up", "consolidate")
+#:   empty  - a place cleared of everything ("clear out", "clean out")
+VERB_LEXICON: dict[str, tuple[str, str]] = {
+    # placing
+    "stow": ("place", "put"), "stash": ("place", "put"), "slot": ("place", "put"), "set down": ("place", "put"),
+    "lay": ("place", "put"), "plonk": ("place", "put"), "shelve": ("place", "put"),
+    # moving (and the grammar's own: move, bring, send, ship, transfer, carry, haul, shift, cart,
+    # ferry, tow, lug, shuttle, wheel, relocate, deliver, stage, restage, fetch, dispatch, bring over, move over)
+    "shove": ("move", "move"), "drag": ("move", "move"), "move across": ("move", "move"),
+    "send across": ("move", "send"), "carry over": ("move", "carry"), "bring across": ("move", "bring"),
+    # removing (and the grammar's own: remove, unload, withdraw, take away, get rid of, dispose of, throw out)
+    "offload": ("remove", "unload"), "off-load": ("remove", "unload"), "pull off": ("remove", "take"),
+    "pull out": ("remove", "take"), "take off": ("remove", "take"), "take out": ("remove", "take"),
+    "clear away": ("remove", "remove"),
+    # keeping (and the grammar's own: keep, leave, retain, hold)
+    "hang on to": ("keep", "keep"), "hold on to": ("keep", "keep"), "hang onto": ("keep", "keep"),
+    # gathering (and the grammar's own: gather, consolidate, collect)
+    "round up": ("gather", "gather"), "bring together": ("gather", "gather"),
+    "centralise": ("gather", "consolidate"), "centralize": ("gather", "consolidate"),
+    # emptying (and the grammar's own: empty, clear, clear out, clean out)
+    "clear off": ("empty", "clear"), "strip": ("empty", "empty"), "vacate": ("empty", "empty"),
+}
+
+
+def lexicon_verbs(toks: list[Tok], keywords: dict[str, str]) -> list[Tok]:
+    """The tokens with each phrase of :data:`VERB_LEXICON` read as its grammar verb (longest
+    phrase first; a phrase whose words are already the grammar's, or whose verb the grammar does
+    not have, is left alone). The verb's words as written stay its text."""
+    phrases = sorted(((tuple(k.split()), v[1]) for k, v in VERB_LEXICON.items() if v[1] in keywords),
+                     key=lambda x: -len(x[0]))
+    out: list[Tok] = []
+    k = 0
+    while k < len(toks):
+        for words, verb in phrases:
+            got = toks[k:k + len(words)]
+            if (len(got) == len(words) and all(x.kind == "word" and x.value == w for x, w in zip(got, words))
+                    and not (len(words) == 1 and words[0] in keywords)):
+                out.append(Tok("word", " ".join(x.text for x in got), verb))
+                k += len(words)
+                break
+        else:
+            out.append(toks[k])
+            k += 1
+    return out
+
+
+#: words that take back what was just said ("no wait, make that 3", "sorry, I meant 4")
+TAKE_BACK = {"no", "wait", "sorry", "oops", "actually", "hmm", "erm", "nope", "correction", "scratch", "that"}
+#: the words that then say the new count
+RESTATE = (("make", "that"), ("make", "it"), ("i", "mean"), ("i", "meant"), ("i", "meant", "to", "say"),
+           ("or", "rather"), ("rather",))
+#: a particle of direction before a preposition and a place ("bring them down from the mezzanine",
+#: "up to the mezzanine"): it says nothing the place does not ("up to 5" is a bound: no place follows)
+DIRECTION_PARTICLES = {"up", "down", "across", "along"}
+_PLACE_PREPOSITIONS = {"to", "into", "onto", "from", "off", "in", "on", "at"}
+
+
+def without_particles(toks: list[Tok]) -> list[Tok]:
+    """The tokens without a particle of direction that stands between a verb's object and
+    a preposition followed by a place (:data:`DIRECTION_PARTICLES`)."""
+    out: list[Tok] = []
+    for k, t in enumerate(toks):
+        if t.kind == "word" and t.value in DIRECTION_PARTICLES and k + 2 < len(toks):
+            prep, nxt = toks[k + 1], toks[k + 2]
+            if nxt.kind == "word" and nxt.value == "the" and k + 3 < len(toks):
+                nxt = toks[k + 3]
+            if (prep.kind == "word" and prep.value in _PLACE_PREPOSITIONS and nxt.kind == "name"
+                    and nxt.of == "shelf"):
+                continue
+        out.append(t)
+    return out
+
+
+def corrected_later(toks: list[Tok]) -> list[Tok]:
+    """A count taken back at the end of its sentence ("Move 2 X from P to Q, no wait, make that 3";
+    "..., sorry, I meant 3"): the sentence's one count becomes the new one and the taking back is
+    no part of the order. Where the sentence has several counts, which one is taken back is not
+    said: the words stay, and the sentence is refused on them."""
+    ends = {".", ";", "!", "?"}
+    out = list(toks)
+    k = 0
+    while k < len(out):
+        t = out[k]
+        if not (t.kind == "punct" and t.value in (",", ":")):
+            k += 1
+            continue
+        j = k + 1
+        took_back = False
+        while j < len(out) and out[j].kind == "word" and out[j].value in TAKE_BACK:
+            took_back, j = True, j + 1
+        if j < len(out) and out[j].kind == "punct" and out[j].value == ",":
+            j += 1
+        restated = False
+        for words in sorted(RESTATE, key=len, reverse=True):
+            got = [str(x.value) for x in out[j:j + len(words)] if x.kind == "word"]
+            if got == list(words):
+                restated, j = True, j + len(words)
+                break
+        if not (took_back or restated) or j >= len(out) or out[j].kind != "num":
+            k += 1
+            continue
+        new = out[j]
+        end = j + 1
+        if end < len(out) and out[end].kind == "name" and out[end].of == "product":
+            end += 1
+        if end < len(out) and not (out[end].kind == "punct" and out[end].value in ends):
+            k += 1
+            continue
+        start = k
+        while start > 0 and not (out[start - 1].kind == "punct" and out[start - 1].value in ends):
+            start -= 1
+        counts = [m for m in range(start, k) if out[m].kind == "num"]
+        named = out[j + 1] if j + 1 < end else None
+        if len(counts) != 1 or (named is not None and not (
+                counts[0] + 1 < k and out[counts[0] + 1].kind == "name" and out[counts[0] + 1].value == named.value)):
+            k += 1
+            continue
+        old = out[counts[0]]
+        spoken = " ".join(x.text for x in out[k + 1:end])
+        out[counts[0]] = Tok("num", f"{old.text} (taken back: {spoken})", new.value)
+        del out[k:end]
+    return out
+
+
 def _split_hyphens(toks: list[Tok], keywords: dict[str, str]) -> list[Tok]:
     """A hyphenated word that is no name, keyword or count reads as its words ("night-shift"
     robots are the night shift robots, "re-stock" is restock's words)."""
@@ -223,6 +359,9 @@ class Lexicon:
         # a slip of the fingers on any grammar word of 3 letters or more ("mvoe", "form" for
         # "from", "teh"): neighbours swapped, a letter dropped or doubled, a key next to it
         cands |= {k for k in self.keywords if k.isalpha() and len(k) >= 3 and slip(word, k)}
+        # and towards the verb lexicon's one-word verbs ("sotw" -> stow, read as "put")
+        cands |= {verb for k, (_, verb) in VERB_LEXICON.items()
+                  if " " not in k and k.isalpha() and verb in self.keywords and slip(word, k)}
         return next(iter(cands)) if len(cands) == 1 else None
 
     def robot_stem(self, word: str) -> str | None:
@@ -283,6 +422,18 @@ class Lexicon:
             return True
         return any(distance(word, w) <= max(1, tolerance(len(w))) for w in self._name_words)
 
+    def names_world(self, word: str) -> bool:
+        """Whether a word of a clause names something of this world or a count: a world name, a
+        robot kind or tag, a number word, or a word within a typo's reach of a name's word (the
+        test a pleasantry's words must pass: :func:`pipflow.language.asides.is_pleasantry`)."""
+        if word in NUMBER_WORDS or word in FRACTIONS or self._group(word) is not None:
+            return True
+        if word in FUNCTION_WORDS or word in FILLERS or word in self.keywords:
+            return False  # "for" is no misspelt "four"
+        if _number_typo(word):
+            return True
+        return any(distance(word, w) <= max(1, tolerance(len(w))) for w in self._name_words)
+
     def _clauses(self, cur: list[Tok]) -> tuple[list[Tok], list[str]]:
         """The sentence's tokens without its content-free clauses (split at commas and colons),
         and the words of those. A name, count or kind word is content by itself."""
@@ -295,7 +446,8 @@ class Lexicon:
         keep: list[Tok] = []
         aside: list[str] = []
         parts = clauses(words, marks)
-        free = [c for c in parts if content_free(c.words, lambda w: w == "\0" or self.content(w))]
+        free = [c for c in parts if content_free(c.words, lambda w: w == "\0" or self.content(w),
+                                                 lambda w: w == "\0" or self.names_world(w))]
         if not free:
             return cur, []
         drop = {k for c in free for k in range(c.start, c.end)}
@@ -323,7 +475,8 @@ class Lexicon:
                 if typo is not None:
                     t = Tok("word", t.text, typo)
             fixed.append(t)
-        toks = corrected(read_counts(_split_hyphens(fixed, self.keywords)))
+        toks = lexicon_verbs(read_counts(_split_hyphens(fixed, self.keywords)), self.keywords)
+        toks = corrected_later(without_particles(corrected(toks)))
         out: list[Lexed] = []
         cur: list[Tok] = []
         self.aside: list[str] = []

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
+from typing import Callable
 
 from pipflow.errors import TranslationError
 from pipflow.language.numbers import NUMBER_WORDS, read_number, word_value
@@ -117,6 +118,25 @@ def _quote(text: str) -> str:
     return f"'{text}'"
 
 
+def _starts(names: list["_Name"], by_name: dict[str, "_Name"], alone: Callable[[str], bool],
+            words_of_names: dict[str, set[str]]) -> dict[str, "_Name"]:
+    """A name shortened to the start of one of its words ("mezz" of mezzanine): a prefix of four
+    letters or more, two or more letters short of a word of six or more, that starts a word of
+    one place or product only and is no word of the grammar (``alone``) nor a whole word of a name
+    (``words_of_names``). The reader reads it only where nothing else (an exact or misspelt name, a
+    word of a name) matches: a shortening never outranks a typo of another name."""
+    starts: dict[str, set[str]] = {}
+    for n in names:
+        if n.kind == "robot":
+            continue
+        for w in re.split(r"[-_\s]+", n.name.lower()):
+            if w.isalpha() and len(w) >= 6:
+                for size in range(4, len(w) - 1):
+                    starts.setdefault(w[:size], set()).add(n.name)
+    return {form: by_name[next(iter(owners))] for form, owners in starts.items()
+            if len(owners) == 1 and alone(form) and form not in words_of_names}
+
+
 class NameIndex:
     """The world's names by kind, and the rules for deciding which one a word means."""
 
@@ -194,6 +214,8 @@ class NameIndex:
                         owners.setdefault(form, set()).add(n.name)
         self.parts: dict[str, _Name] = {form: by_name[next(iter(names))] for form, names in owners.items()
                                         if len(names) == 1}
+
+        self.prefixes = _starts(self.names, by_name, alone, owners)
 
     def group(self, word: str) -> list[str] | None:
         """The places a plural or class word selects ("cages" -> the places whose head is cage).
@@ -390,6 +412,9 @@ class NameIndex:
             return Tok("name", raw[i], part.name, part.kind), i + 1  # "formula" for baby-formula
         alpha, digits = split_digits(norm)
         found = self.lookup(alpha, digits, raw[i])
+        if found is None and norm in self.prefixes:
+            short = self.prefixes[norm]
+            found = Tok("name", raw[i], short.name, short.kind)  # "mezz" for mezzanine
         return (found, i + 1) if found is not None else None
 
 

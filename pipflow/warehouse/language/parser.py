@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import functools
 import json
+from collections import OrderedDict
 from typing import Any, Callable
 
 from lark import Lark, Token, Tree
@@ -30,7 +31,7 @@ from lark.exceptions import UnexpectedInput, UnexpectedToken
 from pipflow.errors import PipflowError, Refusal, TranslationError
 from pipflow.language.characters import line_readings
 from pipflow.language.earley import ListLexer, earley_parser
-from pipflow.warehouse.language.goals import GoalRules, quote
+from pipflow.warehouse.language.goals import Choice, GoalRules, quote
 from pipflow.warehouse.language.grammar import GRAMMAR, nullable_optionals
 from pipflow.warehouse.language.lexicon import Lexed, Lexicon
 from pipflow.language.numbers import NUMBER_WORDS
@@ -111,6 +112,7 @@ class _Sentence(GoalRules, TailRules, Interpreter):
         self.statements: list[dict] = []
         self.rules: list[dict] = []
         self.bind: list[dict] = []  # rules that take the sentence's goal as their scope
+        self.own: dict[int, list[dict]] = {}  # of those, an addressed robot's: its own goal's statements
         # of those, the ones whose pronoun is what the robots handle ("must not move them"): the
         # items, or the items on this move? (finish refuses where the two differ)
         self.item_pronouns: list[dict] = []
@@ -559,6 +561,11 @@ class _Sentence(GoalRules, TailRules, Interpreter):
         items = np["items"] or prev.get("items")
         if not source or not items or "names" not in items:
             raise TranslationError(f"'{np['words']}': the rest of what? (say where it comes from)")
+        if prev["op"] == "set" and self.lexed.tokens and self.lexed.tokens[0].type in ("ITEM", "ITEMWORD"):
+            # "tote bags: 1 on P, rest to Q": the sentence is about the item, so "the rest" may be
+            # the rest of every tote bag, or of P's; neither is guessed
+            raise TranslationError(f"'{np['words']}': the rest of {', '.join(source)}'s, or of every one in the "
+                                   f"world? say where it comes from")
         return {"op": "transfer", "items": items, "amount": {"rest": True}, "from": {"names": source},
                 "to": {"names": places}, "words": np["words"]}
 
@@ -811,9 +818,14 @@ class _Sentence(GoalRules, TailRules, Interpreter):
             raise TranslationError(f"{quote(self.words(node))}: cannot read this")
 
     def _rule_for(self, sel: dict, mode: str, statements: list[dict], words: str) -> None:
+        """A rule of an addressed robot: bound to the sentence's goal (:meth:`finish`); where the
+        sentence addresses several robots, each with its own goal ("the forklift take 2 X from P
+        to Q, and the cobot 1 Y from R to Q"), each rule takes its own goal's scope."""
         base = {"mode": mode, "robots": sel, "words": words}
         self.bind.append(base)
         self.rules.append(base)
+        if statements:
+            self.own[id(base)] = list(statements)
 
     def finish(self) -> None:
         """Rules with no scope of their own take the sentence's goal (see the module doc)."""
@@ -840,6 +852,40 @@ class _Sentence(GoalRules, TailRules, Interpreter):
             for r in self.rules:
                 r.pop("open", None)
             return
+        own = [r for r in self.rules if id(r) in self.own]
+        out: list[dict] = []
+        for r in self.rules:
+            if r in self.bind and not r.get("open"):
+                scope = self.own[id(r)] if len(own) > 1 and id(r) in self.own else statements
+                use_product, use_place = self._scope(scope)
+                new = dict(r)
+                if use_product:
+                    new["product"] = use_product
+                if use_place:
+                    if use_product and r in self.item_pronouns and self.picks.get("scope") == "item":
+                        out.append(new)   # chosen: the product wherever it goes
+                        continue
+                    if use_product and r in self.item_pronouns and self.picks.get("scope") != "move":
+                        # "only the forklift should handle it": it is the product (any move of
+                        # it) or this move of it? Readers differ; the two rules allow different
+                        # plans, so neither is guessed
+                        raise _Choice(
+                            "scope", ("item", "move"),
+                            f"{quote(r.get('words') or '')}: the rule may hold for {use_product} wherever it "
+                            f"goes or only for this move of it ({', '.join(f'{k} {v}' for k, v in use_place.items())}); "
+                            f"say which (e.g. 'for {use_product}' or 'for that move')")
+                    new.update(use_place)
+                out.append(new)
+            else:
+                r = dict(r)
+                r.pop("open", None)
+                out.append(r)
+        self.rules = out
+
+    @staticmethod
+    def _scope(statements: list[dict]) -> tuple[str | None, dict | None]:
+        """The one product and the one move (``{"from", "to"}``) of some statements, where each is
+        one (None where several leave the field open)."""
         products: list[str] = []
         moves: list[dict] = []
         for s in statements:
@@ -864,32 +910,7 @@ class _Sentence(GoalRules, TailRules, Interpreter):
         places = {v for m in uniq_moves for v in m.values()}
         use_product = products[0] if len(products) == 1 and products[0] != "*" else None
         use_place = uniq_moves[0] if (len(uniq_moves) == 1 and "*" not in places) else None
-        out: list[dict] = []
-        for r in self.rules:
-            if r in self.bind and not r.get("open"):
-                new = dict(r)
-                if use_product:
-                    new["product"] = use_product
-                if use_place:
-                    if use_product and r in self.item_pronouns and self.picks.get("scope") == "item":
-                        out.append(new)   # chosen: the product wherever it goes
-                        continue
-                    if use_product and r in self.item_pronouns and self.picks.get("scope") != "move":
-                        # "only the forklift should handle it": it is the product (any move of
-                        # it) or this move of it? Readers differ; the two rules allow different
-                        # plans, so neither is guessed
-                        raise _Choice(
-                            "scope", ("item", "move"),
-                            f"{quote(r.get('words') or '')}: the rule may hold for {use_product} wherever it "
-                            f"goes or only for this move of it ({', '.join(f'{k} {v}' for k, v in use_place.items())}); "
-                            f"say which (e.g. 'for {use_product}' or 'for that move')")
-                    new.update(use_place)
-                out.append(new)
-            else:
-                r = dict(r)
-                r.pop("open", None)
-                out.append(r)
-        self.rules = out
+        return use_product, use_place
 
 
 def _clause_of(lexed: Lexed, k: int) -> list[int]:
@@ -925,8 +946,11 @@ def _fail(exc: UnexpectedInput, lexed: Lexed, lex: Lexicon) -> TranslationError:
         word = lexed.source[k].text.replace("zzposs", "'s")
         prev = lexed.source[k - 1] if k > 0 else None
         if prev is not None and prev.kind == "num" and lexed.tokens[k].type == "UNKNOWN":
-            return TranslationError(f"'{prev.text} {word}': cannot tell which product this count is for "
-                                    f"(candidates: {lex.index.candidates('product')})")
+            error = TranslationError(f"'{prev.text} {word}': cannot tell which product this count is for "
+                                     f"(candidates: {lex.index.candidates('product')})")
+            error.unplaced = k  # type: ignore[attr-defined]
+            error.clause = _clause_of(lexed, k)  # type: ignore[attr-defined]
+            return error
         where = f"cannot place '{word}' in '{sentence}'"
         error = TranslationError(f"{where}: the command is not understood, so nothing is guessed "
                                  f"(shelves: {lex.index.candidates('shelf')}; products: "
@@ -950,13 +974,8 @@ def _fail(exc: UnexpectedInput, lexed: Lexed, lex: Lexicon) -> TranslationError:
                             f"robot groups: {lex.group_names()})")
 
 
-class _Choice(TranslationError):
-    """A sentence with several readings that ask for different things: which one is ``key``'s
-    option; :func:`parse` offers each as a candidate (never picks one itself)."""
-
-    def __init__(self, key: str, options: tuple, message: str):
-        super().__init__(message)
-        self.key, self.options = key, options
+#: a sentence with several readings that ask for different things (:class:`goals.Choice`)
+_Choice = Choice
 
 
 def _read(tree: Tree, lexed: Lexed, lex: Lexicon, selector: RobotSelector, memory: dict,
@@ -1006,6 +1025,43 @@ def _parts(tree: Tree) -> int:
     return sum(1 for p in tree.children[0].children if isinstance(p, Tree) and p.data not in ("sep", "lead"))
 
 
+#: parse forests of recent sentences, by their terminals (the grammar is the same in every world,
+#: and a sentence's terminals are all the parse sees): a candidate reading re-reads the sentences
+#: that did parse, and a command's two line readings share most sentences
+_FORESTS: "OrderedDict[tuple, tuple[bool, Any]]" = OrderedDict()
+_FORESTS_KEPT = 256
+#: new sentence parses one refusal may spend on its candidate readings (a parse of a sentence read
+#: before is remembered and free): the candidates of a refused command cost at most this many
+#: parses more than the refusal itself (benchmarks/translator.py measures the time)
+CANDIDATE_PARSES = 3
+_CANDIDATE_BUDGET: dict[str, int | None] = {"left": None}
+
+
+def _tree(tokens: list[Token]) -> Tree:
+    """The Earley forest of a sentence's terminals (every reading), or the parse error it raised,
+    remembered for the last :data:`_FORESTS_KEPT` sentences. Readers only read the forest (lark's
+    Interpreter and CollapseAmbiguities build new trees), so one forest serves every reading."""
+    key = tuple((t.type, repr(t.value)) for t in tokens)
+    hit = _FORESTS.get(key)
+    if hit is None:
+        if _CANDIDATE_BUDGET["left"] is not None:
+            if _CANDIDATE_BUDGET["left"] <= 0:
+                raise TranslationError("no parse left for candidate readings")
+            _CANDIDATE_BUDGET["left"] -= 1
+        try:
+            hit = (True, _all_readings_parser().parse(tokens))
+        except UnexpectedInput as exc:
+            hit = (False, exc)
+        _FORESTS[key] = hit
+        if len(_FORESTS) > _FORESTS_KEPT:
+            _FORESTS.popitem(last=False)
+    else:
+        _FORESTS.move_to_end(key)
+    if not hit[0]:
+        raise hit[1]
+    return hit[1]
+
+
 def _one_meaning(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict, memory: dict,
                  picks: dict | None = None) -> _Sentence:
     """Read a sentence in every way the grammar allows, and keep its meaning only if there is one.
@@ -1016,7 +1072,7 @@ def _one_meaning(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dic
     is the one with the fewest, longest parts.
     """
     picks = picks or {}
-    tree = _all_readings_parser().parse(lexed.tokens)
+    tree = _tree(lexed.tokens)
     if not any(t.data == "_ambig" for t in tree.iter_subtrees()):
         return _read(tree, lexed, lex, selector, memory, picks)
     sentence = " ".join(t.text for t in lexed.source).replace(" zzposs", "'s")
@@ -1104,31 +1160,79 @@ def candidates(command: str, world: dict, exc: TranslationError) -> list[dict]:
     the bench) chooses."""
     sentence = getattr(exc, "sentence", None)
     if sentence is None:
-        return []
-    if isinstance(exc, _Choice):
-        picks = [{exc.key: option} for option in exc.options]
-    elif getattr(exc, "unplaced", None) is not None:
-        picks = [{"drop": [exc.unplaced]}, {"drop": exc.clause}]  # type: ignore[attr-defined]
+        picks: list[dict] = []
+    elif isinstance(exc, _Choice):
+        picks = [{sentence: {exc.key: option}} for option in exc.options]
     else:
-        return []
+        picks = []  # a word no rule places: the partial parses below leave it (or its clause) out first
     if getattr(exc, "trimmed", False):
-        picks = [{**p, "trimmed": True} for p in picks]
+        picks = [{k: {**p, "trimmed": True} for k, p in pick.items()} for pick in picks]
+    # partial parses: in every sentence, the words no rule places (or their clauses) left out one
+    # after another, the clauses that do parse kept, the words left out named
+    picks += [{"*": {"salvage": "clause"}}, {"*": {"salvage": "word"}}]
     out: list[dict] = []
     seen: set[str] = set()
-    for pick in picks:
-        try:
-            order = _parse(command, world, {sentence: pick})
-            got = resolve(order, world)
-        except PipflowError:
-            continue
-        meaning = canonical(got.goal, got.constraints)
-        if meaning in seen:
-            continue
-        seen.add(meaning)
-        out.append({"reading": "; ".join(got.explanation), "explanation": list(got.explanation),
-                    "goal": got.goal, "constraints": got.constraints,
-                    "words": "; ".join(x["words"] for x in order["statements"] + order["rules"]), "order": order})
+    _CANDIDATE_BUDGET["left"] = CANDIDATE_PARSES
+    try:
+        for pick in picks:
+            _candidate(command, world, pick, out, seen)
+    finally:
+        _CANDIDATE_BUDGET["left"] = None
     return out[:MAX_CANDIDATES]
+
+
+def _candidate(command: str, world: dict, pick: dict, out: list[dict], seen: set[str]) -> None:
+    """The command read with one pick, resolved, added to ``out`` unless it fails or repeats a
+    meaning already offered."""
+    try:
+        order = _parse(command, world, pick)
+        got = resolve(order, world)
+    except PipflowError:
+        return
+    meaning = canonical(got.goal, got.constraints)
+    if meaning in seen:
+        return
+    seen.add(meaning)
+    unread = order.get("unread") or []
+    explanation = list(got.explanation) + ([f"not read: {', '.join(repr(w) for w in unread)}"] if unread else [])
+    out.append({"reading": "; ".join(explanation), "explanation": explanation,
+                "goal": got.goal, "constraints": got.constraints, "unread": unread,
+                "words": "; ".join(x["words"] for x in order["statements"] + order["rules"]), "order": order})
+
+
+#: words (or clauses) a partial parse may leave out of one sentence, at most: each costs a parse of
+#: the sentence, and a third one added 1 of 86 refused gold readings to the candidates for 30% more
+#: time on a refusal (benchmarks/language, 2026-12-02)
+MAX_SALVAGED = 2
+
+
+def _salvage(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict, memory: dict,
+             pick: dict, how: str) -> tuple[_Sentence, list[str]]:
+    """A candidate reading of a sentence that does not read: the word no rule places (``how`` =
+    "word") or its clause ("clause") left out, again while another word cannot be placed, up to
+    :data:`MAX_SALVAGED` times; returns the reading and the words left out (named in the
+    candidate's echo). Only ever offered, never acted on unchosen."""
+    unread: list[str] = []
+    for _ in range(MAX_SALVAGED + 1):
+        try:
+            return _one_meaning(lexed, lex, selector, world, memory, pick), unread
+        except UnexpectedInput as exc:
+            error = _fail(exc, lexed, lex)
+            if getattr(error, "unplaced", None) is None:
+                # it ends before it says what to do: the last word is the one that does not fit
+                error.unplaced, error.clause = len(lexed.tokens) - 1, [len(lexed.tokens) - 1]  # type: ignore[attr-defined]
+        except TranslationError as exc:
+            error = exc
+        k = getattr(error, "unplaced", None)
+        if k is None or len(unread) >= MAX_SALVAGED:
+            raise error
+        drop = [k] if how == "word" else list(error.clause)  # type: ignore[attr-defined]
+        unread.append(" ".join(lexed.source[j].text for j in drop if j < len(lexed.source)
+                               and lexed.tokens[j].type != ",").replace(" zzposs", "'s"))
+        lexed = _without(lexed, drop)
+        if not lexed.tokens:
+            raise error
+    raise TranslationError("nothing left to read")
 
 
 def _meaning_of(order: dict, world: dict) -> str | None:
@@ -1151,6 +1255,7 @@ def _parse(command: str, world: dict, picks: dict | None = None) -> dict:
     rules: list[dict] = []
     memory: dict = {}
     set_aside: list[str] = []
+    unread: list[str] = []  # words a candidate reading left out (salvage mode only)
     sentences = lex.sentences(command)
     for index, lexed in enumerate(sentences):
         if not lexed.tokens:
@@ -1168,8 +1273,14 @@ def _parse(command: str, world: dict, picks: dict | None = None) -> dict:
             raise TranslationError(f"the sentence '{shown} ...' has {len(lexed.tokens)} words; sentences "
                                    f"are read up to {MAX_SENTENCE_WORDS} words (end it with a full stop "
                                    f"and go on in a new one)")
+        salvage = (picks.get("*") or {}).get("salvage")
         try:
-            reader = _one_meaning(lexed, lex, selector, world, memory, pick)
+            if salvage:
+                reader, left_out = _salvage(lexed.trimmed or lexed, lex, selector, world, memory, pick, salvage)
+                unread += left_out
+                set_aside += list(lexed.aside) if lexed.trimmed is not None else []
+            else:
+                reader = _one_meaning(lexed, lex, selector, world, memory, pick)
         except (UnexpectedInput, TranslationError) as exc:
             # the sentence as said does not read; without its content-free clauses it may
             # (asides.py): they are set aside and said aloud, the rest still needs every word
@@ -1199,4 +1310,4 @@ def _parse(command: str, world: dict, picks: dict | None = None) -> dict:
                                f"products: {lex.index.candidates('product')})")
     set_aside = lex.aside + set_aside
     return {"command": command, "statements": statements, "rules": rules,
-            **({"set_aside": set_aside} if set_aside else {})}
+            **({"set_aside": set_aside} if set_aside else {}), **({"unread": unread} if unread else {})}

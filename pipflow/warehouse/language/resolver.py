@@ -147,6 +147,12 @@ def _set(st: _State, s: dict) -> None:
             elif a.get("all"):
                 total = world_total(st.world, i)
                 st.put(p, i, total, f"all {total} the world has", words, True)
+                if len(places) == 1:
+                    # all of it on one place is none anywhere else: the goal says so (the
+                    # sources a move of "every X" empties are counts the command fixes)
+                    for q in st.places:
+                        if q != p and (q, i) not in st.fixed:
+                            st.put(q, i, 0, f"0: all {i} go to {p}", words, True)
             elif "as_many_as" in a:
                 # the count now of this item (or of the item ``of``) at a place, or at several together
                 others = [a["as_many_as"], *a.get("together_with", [])]
