@@ -44,6 +44,21 @@ ACTIVITIES = {"watching": None, "reading": "light", "using": None, "listening": 
 #: "it is (too) bright" -> off, "it is dark" -> on; both speak of the world's category "light"
 LIGHT_CUES = {"bright": "off", "sunny": "off", "dark": "on", "gloomy": "on", "dim": "on"}
 LIGHT_CATEGORY_WORD = "light"
+#: "it's freezing in here", "I'm cold": the home's room heaters on; "it's roasting in here": the
+#: room heaters that are on, off. Words that say how warm the *room* is ("cold" and "hot" also
+#: describe things, so they are cues only said of the room or of a person: "it's cold in here",
+#: "I'm cold"; "freezing", "chilly" alone are cues)
+TEMPERATURE_CUES = {"freezing": "on", "chilly": "on", "nippy": "on", "perishing": "on", "baltic": "on",
+                    "frozen": "on", "roasting": "off", "boiling": "off", "sweltering": "off", "stifling": "off",
+                    "baking": "off"}
+#: the adjectives that are temperature cues when said of the room or of a person
+TEMPERATURE_ADJECTIVES = {"cold": "on", "hot": "off", "warm": "off"}
+#: what warms a room (not food): a thing that switches and is named, or worded, by one of these
+#: ("log burner", "radiator"), or a member of a category of the world so named. "stove" and
+#: "burner" alone are not here: a kitchen stove warms food, and no two people agree it is the heating
+ROOM_HEATERS = ("heater", "heaters", "radiator", "radiators", "fire", "fireplace", "log burner", "wood burner",
+                "woodburner", "wood stove", "log stove", "stove heater", "space heater", "heating",
+                "central heating", "electric fire", "gas fire")
 
 #: one-or-more-word phrases of command English -> (token class, value)
 PHRASES: dict[tuple[str, ...], tuple[str, object]] = {}
@@ -61,6 +76,8 @@ for _w, _c in ADJECTIVES.items():
     if tuple(_w.split()) not in PHRASES:
         _add("ADJ", _w, _c)
 _add("V_TOGGLE", "turn,switch,power,flip,flick")
+#: "light the stove", "light the fire": a thing that burns or shines is switched on
+_add("V_LIGHT", "light,light up", "on")
 #: "chill the juice": into the home's cold place (the category named, or with a word, "cold")
 COLD = "cold"
 _add("V_CHILL", "chill,cool,refrigerate,cool down,chill down")
@@ -77,7 +94,7 @@ _add("UNIT", "pieces of,bits of,items of")
 #: "a piece of fruit" is a determiner of one (a unit word in the determiner keeps the grammar small)
 UNIT_DETERMINERS = {"a piece of", "a bit of", "an item of"}
 _add("V_PUT", "put,place,move,bring,take,carry,set,transfer,gather,collect,stash,drop,store,stick,pop,lay,"
-     "hang,deliver,fetch,get,pick,relocate,stack,grab,shift")
+     "hang,deliver,fetch,get,pick,relocate,stack,grab,shift,clear,pack")
 _add("V_THROW", "throw,toss,chuck")
 _add("V_TRASH", "trash,discard,bin,dump,junk,get rid of,dispose of,throw away,throw out")
 _add("V_TIDY", "tidy,return,clear away")
@@ -88,6 +105,15 @@ _add("V_PREPARE", "prepare,fix,fix up,whip up,rustle up")
 _add("SURE", "sure,certain")
 _add("ACTIVITY", ",".join(ACTIVITIES))
 _add("LIGHTCUE", ",".join(LIGHT_CUES))
+for _w, _v in TEMPERATURE_CUES.items():
+    _add("TEMPCUE", _w, _v)
+#: "deal with the dishes", "sort the bedding out": what the things need, read from their states
+#: and the home (docs/household.md, "what things need"); never a guess when two things would do
+_add("V_TEND", "deal with,see to,take care of,sort,sort out,handle,attend to,do something about")
+#: "the bedding's all over the place", "the dishes are piling up": disorder said of things, a cue
+#: that they need what "deal with" reads
+_add("MESS", "all over the place,piling up,piled up,lying around,lying about,left out,scattered about,"
+     "scattered around,strewn about,strewn around,a mess,in a mess,messy,a tip")
 for _w in LIGHT_CUES:
     PHRASES[(_w,)] = ("LIGHTCUE", LIGHT_CUES[_w])
 _add("SEE", "see")
@@ -99,7 +125,7 @@ _add("EVERY", "every,each,any")
 _add("BOTH", "both")
 _add("EVERYTHING", "everything,all things,all the things,anything")
 _add("THING", "thing,things,stuff,items,objects")
-_add("AND", "and,as well as,plus,along with")
+_add("AND", "and,as well as,plus,along with,n")
 _add("THEN", "then,after that,afterwards,next,finally,and then,also")
 _add("BUT", "but")
 _add("IN", "in,into,inside,inside of,within")
@@ -114,7 +140,8 @@ _add("FROM", "from,out of,off of")
 _add("OUT", "out")
 _add("OFF", "off")
 _add("UP", "up")
-_add("AWAY", "away,where it belongs,where they belong,in its place,in their place,in their places,back in its place,"
+_add("AWAY", "away,where it belongs,where they belong,where it goes,where they go,where it lives,where they live,"
+     "away where it belongs,away where they belong,away where it goes,away where they go,in its place,in their place,in their places,back in its place,"
      "back in their place,back where it belongs,back where they belong")
 _add("BACK", "back")
 _add("OF", "of")
@@ -149,7 +176,9 @@ _add("CANNOT", "can not,could not,cannot")
 _add("SOMEWHERE", "somewhere,some place,someplace")
 _add("HERE", "here,in here,in the house,in the home,in the flat,in the apartment,around the house,everywhere")
 _add("PIECES", "in half,in two,into pieces,into slices,into cubes,in pieces,in slices,into halves")
-_add("DOOR", "door,doors")
+_add("DOOR", "door,doors,lid,lids")
+#: the part of a switching thing that switches it: "turn on the lamp switch" is the lamp
+_add("SWITCHPART", "button,power button,on button,off button")
 _add("ONES", "ones")
 
 #: the negation of a wanted state is the other polarity of the same predicate ("don't leave the
@@ -198,7 +227,8 @@ FILLER = {("please",), ("kindly",), ("just",), ("quickly",), ("now",), ("for", "
           ("can", "someone"), ("could", "someone"), ("someone",), ("somebody",), ("can", "somebody"),
           ("us",), ("would", "you", "mind"), ("do", "you", "mind"), ("would", "you", "please"),
           ("could", "you", "please"), ("if", "you", "would"), ("if", "you", "could"),
-          ("do", "not", "forget", "to"), ("remember", "to"), ("make", "sure", "to"), ("you", "can")}
+          ("do", "not", "forget", "to"), ("remember", "to"), ("make", "sure", "to"), ("you", "can"),
+          ("pls",), ("plz",), ("plse",), ("thx",), ("ta",), ("cheers",)}
 #: how the steps are to be run, not what the home should end like: a goal is the end state, and
 #: the planner and the allocator decide the order and what runs in parallel. A clause made only of
 #: "do" + what it does it to + one of these, or of one of these alone, is read as no condition

@@ -30,8 +30,8 @@ from lark.visitors import CollapseAmbiguities
 from pipflow.errors import TranslationError
 from pipflow.household.language.grammar import NOUN_DUAL, grammar_text
 from pipflow.household.language.lexicon import (ACTIVITIES, COLD, FILLER, FILLER_TYPO_TARGETS, LIGHT_CATEGORY_WORD, MANNER_OBJECTS,
-                                                MANNERS, MARKS, MEALS, OPPOSITE, PHRASES, UNIT_DETERMINERS, plurals,
-                                                words_of)
+                                                MANNERS, MARKS, MEALS, OPPOSITE, PHRASES, TEMPERATURE_ADJECTIVES, UNIT_DETERMINERS,
+                                                plurals, words_of)
 from pipflow.language.asides import FUNCTION_WORDS, clauses, content_free, said
 from pipflow.language.characters import refuse_unread
 from pipflow.language.numbers import read_number
@@ -128,7 +128,8 @@ PUNCT = {".": "END", ";": "END", "!": "END", "?": "END", ":": "END", ",": "COMMA
 #: token classes whose words a typo may be read as: content words only. A function word is short
 #: and close to many words ("fork" is not "for", "house" is not "those"), so it is never guessed.
 CONTENT_CLASSES = {"V_STATE", "V_OPEN", "V_SHUT", "V_CLEAN", "V_WARM", "V_TOGGLE", "V_PUT", "V_THROW", "V_TRASH", "V_CHILL",
-                   "V_TIDY", "V_LEAVE", "V_MAKE", "V_PREPARE", "ADJ", "ACTIVITY", "LIGHTCUE", "TOGGLED", "MEAL"}
+                   "V_TIDY", "V_LEAVE", "V_MAKE", "V_PREPARE", "ADJ", "ACTIVITY", "LIGHTCUE", "TOGGLED", "MEAL", "V_LIGHT",
+                   "TEMPCUE", "V_TEND"}
 
 
 def _vocabulary(world_index: dict) -> set[str]:
@@ -292,7 +293,9 @@ def _words(tags: list[Tag], node: Tree | Token) -> str:
 
 
 #: lexicon classes of function words: alone in a clause they carry nothing an order needs
+#: (and words that only colour a cue or a time: "for the night", "in here", "late", "really")
 GLUE_CLASSES = {"THE", "THAT", "IT", "IS", "SUBJ", "BE", "HAVE", "SHOULD", "INTENS", "OF", "AT", "IN", "ON", "OFF",
+                "ANYMORE", "REASON", "HERE",
                 "OUT", "UP", "TO", "FROM", "WITH", "AND", "SEE", "SURE"}
 #: marks that end a clause, for setting content-free clauses aside
 CLAUSE_MARKS = {",", ".", ";", "!", "?", ":"}
@@ -551,7 +554,7 @@ class Builder:
         return out
 
     def things(self, node: Tree) -> list[dict]:
-        return [self.np(n) for n in self._subs(node, "np") + self._subs(node, "tnp")]
+        return [self.np(n) for n in self._subs(node, "np") + self._subs(node, "tnp") + self._subs(node, "snp")]
 
     def target(self, node: Tree) -> dict:
         p = self._sub(node, "place") or self._sub(node, "bare")
@@ -566,7 +569,7 @@ class Builder:
     def statement(self, node: Tree) -> dict:
         kind = node.data
         words = _words(self.tags, node)
-        th = self._sub(node, "things") or self._sub(node, "tthings")
+        th = self._sub(node, "things") or self._sub(node, "tthings") or self._sub(node, "sthings")
         things = self.things(th) if th is not None else []
         exc = self._sub(node, "exception")
         if kind == "change":
@@ -580,6 +583,8 @@ class Builder:
                 st["via"] = self.place(self._sub(via, "place"))
             elif via is not None:   # "heat the pan on it"
                 st["via"] = {"words": _words(self.tags, via), "pronoun": True}
+        elif kind == "toggle" and self._has(node, "V_LIGHT"):   # "light the stove"
+            st = {"op": "change", "things": things, "to": "on"}
         elif kind == "toggle":
             st = {"op": "change", "things": things, "to": self.state(node)}
         elif kind == "put":
@@ -617,6 +622,8 @@ class Builder:
             st = {"op": "observe", "things": things, "is": self.state(self._sub(node, "state"))}
         elif kind == "cue":
             st = self.cue(node, things)
+        elif kind == "tend":   # "deal with the dishes", "the bedding is all over the place"
+            st = {"op": "tend", "things": things}
         else:  # a rule of the grammar without a statement: a bug, not a user error
             raise AssertionError(f"no statement for grammar rule {kind!r}")
         if exc is not None:   # "put all the fruit in the fridge but not the watermelon"
@@ -627,7 +634,14 @@ class Builder:
     def cue(self, node: Tree, things: list[dict]) -> dict:
         st: dict = {"op": "cue", "things": things}
         act, light = self._sub(node, "activity"), self._sub(node, "lightcue")
-        if act is not None:
+        warmth = self._sub(node, "tempcue") or self._sub(node, "tempadj")
+        if warmth is not None:
+            t = self.tag_of(self._tokens(warmth)[0])
+            to = TEMPERATURE_ADJECTIVES.get(str(t.value)) if warmth.data == "tempadj" else str(t.value)
+            if to is None:   # "it is dirty in here": no temperature, no cue
+                raise TranslationError(f"'{t.words}' says nothing of how warm it is")
+            st.update(to=to, cue=f"it is {t.words}", heating=True)
+        elif act is not None:
             word = self.tag_of(self._tokens(act)[0]).words
             st.update(to="off", cue=f"nobody is {word}")
             if ACTIVITIES.get(word):
@@ -648,7 +662,7 @@ class Builder:
             to = self.state(self._sub(wish, "state"))
             if self._sub(wish, "not") is not None:   # "make sure the oven is not on"
                 to = OPPOSITE[to]
-            out.append({"op": "change", "things": self.things(self._sub(wish, "things")),
+            out.append({"op": "change", "things": self.things(self._sub(wish, "sthings")),
                         "to": to, "words": _words(self.tags, wish)})
         return out
 

@@ -29,7 +29,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from pipflow.errors import Refusal, TranslationError
-from pipflow.household.language.lexicon import COLD, INDEFINITE, MASS_NOUNS, MEALS, REACHABLE, VIA_PROPERTY, plurals, words_of
+from pipflow.household.language.lexicon import (COLD, INDEFINITE, MASS_NOUNS, MEALS, REACHABLE, ROOM_HEATERS, VIA_PROPERTY,
+                                                plurals, words_of)
 from pipflow.household.language.order import check_order
 from pipflow.household.problem import CONDITIONS
 from pipflow.household.world import entity, initial_state, members
@@ -413,6 +414,8 @@ class Resolver:
             self.cue(st, words)
         elif op == "meal":
             self.meal(st, words)
+        elif op == "tend":
+            self.tend(st, words)
         else:
             raise TranslationError(f"'{words}': unknown statement {op!r}")
 
@@ -483,7 +486,78 @@ class Resolver:
             self.put(n, place, words)
         self.last = [n for n, _ in named] or self.last
 
+    def room_heaters(self) -> list[str]:
+        """The things that warm the room (lexicon ``ROOM_HEATERS``): members of a category of the
+        world named or worded so, else things that switch whose name or words are so."""
+        wanted = {" ".join(words_of(w)) for w in ROOM_HEATERS}
+        cats = [c for c, e in (self.world.get("categories") or {}).items()
+                if {" ".join(words_of(w)) for w in [c] + list((e or {}).get("words") or [])} & wanted]
+        found = [n for c in cats for n in members(self.world, c)]
+        if not found:
+            found = [n for n, e in {**self.world["places"], **self.world["objects"]}.items()
+                     if {" ".join(words_of(w)) for w in [n] + list(e.get("words") or [])} & wanted]
+        return [n for n in dict.fromkeys(found) if applies(self.world, n, "on")]
+
+    def warmth(self, st: dict, words: str) -> None:
+        """ "it is freezing in here": the room heaters on; "it is roasting in here": the room
+        heaters that are on, off. Things the sentence names are what it speaks of ("it is freezing
+        with that fan going": the fan off). No heater, or none on when it is too warm: asked."""
+        cond = st["to"]
+        if st["things"]:   # the thing named is the cause: a heater on/off as asked, anything else the other way
+            heaters = set(self.room_heaters())
+            for n, explicit in self.objects(st["things"], words, cond="on"):
+                self.want(n, cond if n in heaters else ("off" if cond == "on" else "on"), explicit, words)
+            return
+        heaters = self.room_heaters()
+        if cond == "off":
+            heaters = [n for n in heaters if holds_now(self.world, n, "on")]
+        if not heaters:
+            raise TranslationError(f"'{words}': which thing? this home has no room heater "
+                                   f"{'that is on ' if cond == 'off' else ''}(a heater, radiator, fire or log burner "
+                                   "that switches); say what to switch")
+        self.goal.notes.append(f"'{words}': read as the room's heating {cond} ({', '.join(heaters)}; "
+                               "docs/household.md, cues)")
+        for n in heaters:
+            self.want(n, cond, False, words)
+        self.last = heaters
+
+    def tend(self, st: dict, words: str) -> None:
+        """What things need ("deal with the dishes", "the bedding is all over the place"), read
+        from their states and the home: when any of them is dirty, the dirty ones washed (the
+        clean ones are left); else the ones away from their category's home put there. Things
+        that need neither, or a need the home cannot meet, are asked, never guessed."""
+        named = self.objects(st["things"], words)
+        names = [n for n, _ in named]
+        dirty = [n for n in names if applies(self.world, n, "clean") and holds_now(self.world, n, "dirty")]
+        if dirty:
+            left = [n for n in names if n not in dirty]
+            self.goal.notes.append(f"'{words}': read as {', '.join(dirty)} washed (dirty)"
+                                   + (f"; {', '.join(left)} left as found" if left else ""))
+            for n in dirty:
+                self.want(n, "clean", True, words)
+            self.last = dirty
+            return
+        homes = {}
+        for n in names:
+            e = entity(self.world, n)
+            home = [self.world["categories"][c]["home"] for c in e["categories"]
+                    if (self.world["categories"].get(c) or {}).get("home")]
+            if n in self.world["objects"] and home and "pickupable" in e["properties"]:
+                homes[n] = home[0]
+        away = [n for n in names if n in homes and self.world["objects"][n]["in"] != homes[n]]
+        if not away:
+            raise TranslationError(f"'{words}': what should be done with {', '.join(names) or 'it'}? "
+                                   "(nothing of it is dirty or away from its home); say what to do")
+        self.goal.notes.append(f"'{words}': read as {', '.join(names)} put where {'they belong' if len(names) > 1 else 'it belongs'}")
+        for n in names:
+            if n in homes:
+                self.put(n, homes[n], words)
+        self.last = names
+
     def cue(self, st: dict, words: str) -> None:
+        if st.get("heating"):
+            self.warmth(st, words)
+            return
         cond = st["to"]
         default = st.get("default")
         cats = [c for c, e in (self.world.get("categories") or {}).items()
@@ -582,6 +656,14 @@ class Resolver:
         if self.picked:
             obj, words = next(iter(self.picked.items()))
             raise TranslationError(f"'{words}': where to? name a place for {obj} (e.g. 'in the fridge')")
+        for names, state, words in list(self.observed):
+            if state == "dirty" and names and all(applies(self.world, n, "clean") for n in names):
+                # "the dishes on the table are filthy": dirt that nothing else answers asks for washing
+                self.goal.notes.append(f"'{words}': dirt said and nothing done about it: read as washing "
+                                       f"{', '.join(names)} (docs/household.md, cues)")
+                for n in names:
+                    self.want(n, "clean", True, words)
+                self.observed.remove((names, state, words))
         if self.observed:
             words = self.observed[0][2]
             raise TranslationError(f"'{words}' describes the home but asks for nothing (say what to do, "

@@ -1,0 +1,115 @@
+"""Issue 23, second step, household reader: the general causes of the held-out houseboat set's
+refusals, in a bothy of our own (names no benchmark uses): a thing lit ("light the stove"), texting
+words ("pls", "n"), "where they go", a thing cleared off a place, a switch named by its button,
+a thing picked out by where it is in a subject ("the jug on the trestle needs washing"), what
+things need ("deal with the crocks", "the veg is all over the place", "X is filthy") and the
+warmth of the room ("it's freezing in here", "I'm cold"). Each read right, or refused where two
+people would not agree."""
+from __future__ import annotations
+
+import pytest
+
+from pipflow.errors import Refusal, TranslationError
+from pipflow.household.language.translator import translate
+from pipflow.household.world import world_from_text
+
+BOTHY = """
+domain: household
+name: bothy
+floor: {width: 6, height: 5}
+categories:
+  crocks: {words: [crocks, crockery, dishes], home: dresser}
+  lamps: {words: [lamps, lights]}
+  veg: {words: [veg, vegetables], home: larder}
+  fruit: {words: [fruit], home: bench}
+places:
+  icebox:   {x: 0.2, y: 4.0, width: 0.8, depth: 0.8, access: [0.6, 3.5], properties: [receptacle, openable], state: {open: false}}
+  bench:    {x: 1.4, y: 4.2, width: 1.5, depth: 0.6, access: [2.1, 3.6], properties: [receptacle], words: [worktop]}
+  griddle:  {x: 3.2, y: 4.2, width: 0.7, depth: 0.6, access: [3.5, 3.6], properties: [receptacle, heater, toggleable], state: {on: false}}
+  basin:    {x: 0.2, y: 2.0, width: 0.7, depth: 0.7, access: [1.2, 2.3], properties: [receptacle, sink]}
+  dresser:  {x: 0.2, y: 0.2, width: 1.0, depth: 0.5, access: [0.7, 1.0], properties: [receptacle, openable], state: {open: false}}
+  larder:   {x: 4.2, y: 0.2, width: 1.0, depth: 0.5, access: [4.7, 1.0], properties: [receptacle, openable], state: {open: false}}
+  trestle:  {x: 2.5, y: 2.0, width: 1.2, depth: 0.8, access: [3.1, 1.5], properties: [receptacle], words: [table, trestle table]}
+  lamp:     {x: 4.0, y: 2.2, width: 0.2, depth: 0.2, access: [4.3, 1.5], properties: [toggleable], state: {on: false}, categories: [lamps]}
+  wood_stove: {x: 5.3, y: 2.2, width: 0.5, depth: 0.5, access: [5.0, 1.5], properties: [toggleable], state: {on: false}}
+  pail:     {x: 5.2, y: 4.2, width: 0.4, depth: 0.4, access: [5.0, 3.6], properties: [garbage], words: [bin]}
+objects:
+  jug:      {in: trestle, mass: 1, properties: [pickupable, washable], state: {dirty: true}, categories: [crocks]}
+  platter:  {in: trestle, mass: 1, properties: [pickupable, washable], state: {dirty: true}, categories: [crocks]}
+  beaker:   {in: bench, mass: 1, properties: [pickupable, washable], categories: [crocks]}
+  turnip:   {in: bench, mass: 1, properties: [pickupable, sliceable, heatable], categories: [veg]}
+  swede:    {in: larder, mass: 1, properties: [pickupable, sliceable, heatable], categories: [veg]}
+  plum:     {in: bench, mass: 1, properties: [pickupable, sliceable], categories: [fruit]}
+  lantern:  {in: trestle, mass: 1, properties: [pickupable, toggleable], state: {on: true}, categories: [lamps]}
+  wireless: {in: dresser, mass: 1, properties: [pickupable, toggleable], state: {on: false}}
+robots:
+  r1: {start: [1.0, 1.0], skills: {pickup: 1, open: 1, toggle: 1, slice: 1, wash: 1, heat: 1}}
+  r2: {start: [3.0, 1.0], skills: {pickup: 1, open: 1, toggle: 1, slice: 1, wash: 1, heat: 1}}
+"""
+
+
+@pytest.fixture(scope="module")
+def bothy() -> dict:
+    return world_from_text(BOTHY, "bothy.yaml")
+
+
+def goal(command: str, world: dict) -> tuple[dict, dict]:
+    g = translate(command, world)["goal"]
+    return ({p: sorted(v) for p, v in g.get("in", {}).items() if v},
+            {n: sorted(v) for n, v in g.get("state", {}).items() if v})
+
+
+def test_a_thing_lit_is_switched_on(bothy):
+    assert goal("Light the wood stove and switch the lantern off.", bothy) == \
+        ({}, {"wood_stove": ["on"], "lantern": ["off"]})
+    with pytest.raises(Refusal):   # a jug does not switch: lighting it is impossible, never a guess
+        goal("Light the jug.", bothy)
+
+
+def test_texting_words_and_where_things_go(bothy):
+    assert goal("Wash the jug n the platter pls", bothy) == ({}, {"jug": ["clean"], "platter": ["clean"]})
+    assert goal("turn on the lamp plz", bothy) == ({}, {"lamp": ["on"]})
+    assert goal("Clear the crocks and the veg off the bench, put them where they go.", bothy) == \
+        ({"dresser": ["beaker"], "larder": ["turnip"]}, {"dresser": ["closed"], "larder": ["closed"]})
+    assert goal("Put the plum away where it belongs.", bothy) == ({"bench": ["plum"]}, {})
+
+
+def test_a_switch_named_by_its_button(bothy):
+    assert goal("Turn on the wireless power button.", bothy) == ({}, {"wireless": ["on"], "dresser": ["closed"]})
+    assert goal("Switch the lamp switch on.", bothy) == ({}, {"lamp": ["on"]})
+
+
+def test_a_subject_picked_out_by_where_it_is(bothy):
+    assert goal("The jug on the trestle needs washing, and put the plum in the basin.", bothy) == \
+        ({"basin": ["plum"]}, {"jug": ["clean"]})
+    with pytest.raises(Refusal):   # the jug is on the trestle, not in the basin: never another jug
+        goal("The jug in the basin needs washing.", bothy)
+
+
+def test_what_things_need(bothy):
+    # dirt first: the dirty crocks washed, the clean beaker left as found
+    assert goal("The dishes are piling up, can someone deal with them?", bothy) == \
+        ({}, {"jug": ["clean"], "platter": ["clean"]})
+    assert goal("The crocks on the trestle are filthy.", bothy) == ({}, {"jug": ["clean"], "platter": ["clean"]})
+    # nothing dirty: things away from their kind's home put there (the swede is home already)
+    assert goal("The veg is all over the place.", bothy) == \
+        ({"larder": ["swede", "turnip"]}, {"larder": ["closed"]})
+    assert goal("Sort the veg out.", bothy) == ({"larder": ["swede", "turnip"]}, {"larder": ["closed"]})
+    with pytest.raises(TranslationError, match="what should be done"):   # home, clean: nothing two people agree on
+        goal("Deal with the swede.", bothy)
+    with pytest.raises(TranslationError):   # the wireless has no home and is clean
+        goal("Can you deal with the wireless?", bothy)
+
+
+def test_the_warmth_of_the_room(bothy, tmp_path):
+    # the wood stove warms the room; the griddle is a heater for food, never the heating
+    assert goal("Brr, it's freezing in here.", bothy) == ({}, {"wood_stove": ["on"]})
+    assert goal("I'm cold.", bothy) == ({}, {"wood_stove": ["on"]})
+    assert goal("It's cold in here, light the lamp.", bothy) == ({}, {"lamp": ["on"], "wood_stove": ["on"]})
+    with pytest.raises(TranslationError, match="room heater that is on"):   # nothing heating is on
+        goal("It's roasting in here.", bothy)
+    with pytest.raises(TranslationError):   # "it is cold" of the thing said before, or of the room: not read
+        goal("Put the plum in the icebox, it is cold.", bothy)
+    no_stove = world_from_text(BOTHY.replace("wood_stove", "stool"), "bothy.yaml")
+    with pytest.raises(TranslationError, match="no room heater"):
+        goal("It's freezing in here.", no_stove)
