@@ -113,3 +113,50 @@ def test_the_warmth_of_the_room(bothy, tmp_path):
     no_stove = world_from_text(BOTHY.replace("wood_stove", "stool"), "bothy.yaml")
     with pytest.raises(TranslationError, match="no room heater"):
         goal("It's freezing in here.", no_stove)
+
+
+def test_what_the_speaker_will_do_is_set_aside_and_said(bothy):
+    got = translate("Can you open the icebox? I'll grab the plum myself.", bothy)
+    assert got["goal"]["state"] == {"icebox": ["open"]} and got["goal"]["in"] == {}
+    assert got["order"]["speaker_does"] == ["i will grab the plum myself"]
+    assert any("what the speaker will do" in line for line in got["explain"])
+    # a wish is no doing of the speaker's, and negation or "only" bear on the robots: never set aside
+    for tail in ("I'll need the turnip hot.", "I'll not touch the plum.", "I'll only wash the jug."):
+        with pytest.raises(TranslationError):
+            translate(f"Open the icebox. {tail}", bothy)
+
+
+def test_dashes_and_brackets_set_an_aside_off(bothy):
+    got = translate("Bin the plum \u2014 it smells off \u2014 and switch on the lamp.", bothy)
+    assert got["goal"]["in"] == {"pail": ["plum"]} and got["goal"]["state"] == {"lamp": ["on"]}
+    assert got["order"]["set_aside"] == ["it smells off"]
+    got = translate("Bin the plum (it smells off) and switch on the lamp.", bothy)
+    assert got["order"]["set_aside"] == ["it smells off"]
+    with pytest.raises(TranslationError):   # a part set off that names something is still read, and refused
+        translate("Bin the plum (and the wobbly jug) and switch on the lamp.", bothy)
+
+
+def test_a_modifier_alone_names_nothing_so_talk_with_it_is_set_aside(bothy, tmp_path):
+    """ "wood" of wood_stove names nothing alone: "off to the wood yard" is talk; "the" is no slip of
+    "then" (a word in its own right), so a clause with "the" can be talk."""
+    got = translate("Lights out, we're off to the wood yard for the night.", bothy)
+    assert got["goal"]["state"] == {"lamp": ["off"], "lantern": ["off"]}
+    assert got["order"]["set_aside"] == ["we are off to the wood yard for the night"]
+
+
+def test_a_cue_asks_for_a_change(bothy):
+    """ "it's getting dark": the lights that are off go on; one on already is no condition."""
+    assert goal("It's getting a bit dark in here.", bothy) == ({}, {"lamp": ["on"]})
+    lit = world_from_text(BOTHY.replace("state: {on: false}, categories: [lamps]", "state: {on: true}, categories: [lamps]"),
+                          "bothy.yaml")
+    with pytest.raises(TranslationError, match="already"):
+        goal("It's getting a bit dark in here.", lit)
+
+
+def test_a_function_word_is_no_slip_of_an_operative_word():
+    """pipflow.language.asides: "the" is a word, not "then" typed with a slip; "on" is not "no".
+    A misspelling that is no word of its own still is one ("nto", "olny")."""
+    from pipflow.language.asides import near_operative
+
+    assert not near_operative("the") and not near_operative("on")
+    assert near_operative("nto") and near_operative("olny") and near_operative("not")

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import functools
 import json
+import re
 from dataclasses import dataclass, field
 from typing import Callable
 
@@ -32,7 +33,7 @@ from pipflow.household.language.grammar import NOUN_DUAL, grammar_text
 from pipflow.household.language.lexicon import (ACTIVITIES, COLD, FILLER, FILLER_TYPO_TARGETS, LIGHT_CATEGORY_WORD, MANNER_OBJECTS,
                                                 MANNERS, MARKS, MEALS, OPPOSITE, PHRASES, TEMPERATURE_ADJECTIVES, UNIT_DETERMINERS,
                                                 plurals, words_of)
-from pipflow.language.asides import FUNCTION_WORDS, clauses, content_free, said
+from pipflow.language.asides import EXCLUSIVITY, FUNCTION_WORDS, NEGATION, clauses, content_free, said
 from pipflow.language.characters import refuse_unread
 from pipflow.language.numbers import read_number
 from pipflow.language.spelling import distance
@@ -306,9 +307,13 @@ def _content(world: dict) -> Callable[[str], bool]:
     world name (or a misspelling of one, or of a content word of the lexicon), a number, or a
     lexicon word that is no function word ("put", "off" with a verb is content by the verb)."""
     index = world_phrases(world)
-    world_words = {w for k in index for w in k} - FUNCTION_WORDS   # "of" of "bottle of water" is no name
+    # the words that name something alone: a one-word name and the head (last word) of a longer
+    # one; a modifier alone names nothing ("mooring" of mooring_line in "we're mooring up"), and
+    # "of" of "bottle of water" is no name
+    world_words = {k[-1] for k in index if "of" not in k} | {k[0] for k in index if "of" in k}
+    world_words = {w for w in world_words if (w,) in index} - FUNCTION_WORDS
     lexicon_words = {w for k, (cls, _) in PHRASES.items() if cls not in GLUE_CLASSES for w in k} - FUNCTION_WORDS
-    vocab = _vocabulary(index)
+    vocab = {w for w in _vocabulary(index) if w in world_words or w in lexicon_words or w in FILLER_TYPO_TARGETS}
 
     def content(w: str) -> bool:
         if w in world_words or w in lexicon_words or w.isdigit() or read_number([w], 0):
@@ -319,15 +324,42 @@ def _content(world: dict) -> Callable[[str], bool]:
     return content
 
 
-def without_asides(command: str, world: dict) -> tuple[str, list[str]] | None:
-    """The command without its content-free clauses (:mod:`pipflow.language.asides`) and the
-    words of those, or None when it has none (or nothing else)."""
-    words = words_of(command)
+#: how a clause opens when it says what the speaker will do ("I'll grab the milk myself", "I'm
+#: about to unpack the shopping"): no order for the robots
+SPEAKER_OPENERS = (("i", "will"), ("we", "will"), ("i", "am", "about", "to"), ("we", "are", "about", "to"),
+                   ("i", "am", "going", "to"), ("we", "are", "going", "to"), ("i", "shall"), ("we", "shall"))
+#: verbs after such an opener that make it a wish, not the speaker's doing ("I'll need the oven on",
+#: "I'll take the tea in the cabin", "I'm going to want ..."): never set aside
+WISH_VERBS = {"need", "want", "like", "have", "take", "be", "wish", "prefer", "love"}
+
+
+def speaker_doing(words: tuple[str, ...]) -> bool:
+    """Whether a clause says what the speaker will do ("I'll grab the milk myself"): it opens with
+    :data:`SPEAKER_OPENERS`, its verb is no wish (:data:`WISH_VERBS`) and it has no negation or
+    exclusivity ("I'll not ...", "I'll only ..."), which would bear on what the robots do."""
+    for opener in SPEAKER_OPENERS:
+        if words[:len(opener)] == opener and len(words) > len(opener):
+            rest = words[len(opener):]
+            return rest[0] not in WISH_VERBS and not any(w in NEGATION or w in EXCLUSIVITY for w in rest)
+    return False
+
+
+#: marks that set a part of a sentence off like commas: dashes, brackets
+_PARENTHESES = re.compile(r"\s[-\u2010-\u2015]+\s|[\u2013\u2014\u2015()\[\]]")
+
+
+def without_asides(command: str, world: dict) -> tuple[str, list[str], list[str]] | None:
+    """The command without its content-free clauses (:mod:`pipflow.language.asides`) and its
+    clauses that say what the speaker will do (:func:`speaker_doing`): (the rest, the words of
+    the first, the words of the second), or None when it has none (or nothing else). Dashes and
+    brackets set a clause off as commas do ("throw the fish away - it smells off - and ...")."""
+    words = words_of(_PARENTHESES.sub(" , ", command))
     content = _content(world)
     free = [c for c in clauses(words, CLAUSE_MARKS) if content_free(c.words, content)]
-    if not free:
+    own = [c for c in clauses(words, CLAUSE_MARKS) if c not in free and speaker_doing(c.words)]
+    if not free and not own:
         return None
-    drop = {k for c in free for k in range(c.start, c.end)}
+    drop = {k for c in free + own for k in range(c.start, c.end)}
     kept = [w for k, w in enumerate(words) if k not in drop]
     # a clause mark left with nothing before it in its sentence goes too
     out: list[str] = []
@@ -339,7 +371,7 @@ def without_asides(command: str, world: dict) -> tuple[str, list[str]] | None:
         out.append(w)
     if not [w for w in out if w not in CLAUSE_MARKS]:
         return None
-    return " ".join(out), [" ".join(c.words) for c in free]
+    return " ".join(out), [" ".join(c.words) for c in free], [" ".join(c.words) for c in own]
 
 
 def parse(command: str, world: dict, notes: list[str] | None = None) -> list[dict]:
@@ -364,10 +396,12 @@ def parse(command: str, world: dict, notes: list[str] | None = None) -> list[dic
             readings = _parse(trimmed[0], world, mine)
         except TranslationError as again:
             # what is left after the talk is set aside is what does not read: say that
-            raise TranslationError(f"{again} (set aside: {'; '.join(repr(a) for a in trimmed[1])})",
+            raise TranslationError(f"{again} (set aside: {'; '.join(repr(a) for a in trimmed[1] + trimmed[2])})",
                                    candidates=again.candidates) from None
-    notes += mine + [said(trimmed[1])]
-    return [{**r, "set_aside": trimmed[1]} for r in readings]
+    notes += mine + ([said(trimmed[1])] if trimmed[1] else []) + [
+        f"'{own}' says what the speaker will do: no order for the robots (set aside)" for own in trimmed[2]]
+    extra = {**({"set_aside": trimmed[1]} if trimmed[1] else {}), **({"speaker_does": trimmed[2]} if trimmed[2] else {})}
+    return [{**r, **extra} for r in readings]
 
 
 def _parse(command: str, world: dict, notes: list[str]) -> list[dict]:

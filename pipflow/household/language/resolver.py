@@ -508,13 +508,13 @@ class Resolver:
             for n, explicit in self.objects(st["things"], words, cond="on"):
                 self.want(n, cond if n in heaters else ("off" if cond == "on" else "on"), explicit, words)
             return
-        heaters = self.room_heaters()
-        if cond == "off":
-            heaters = [n for n in heaters if holds_now(self.world, n, "on")]
+        every = self.room_heaters()
+        # a cue asks for a change: a heater already as asked is no condition
+        heaters = [n for n in every if not holds_now(self.world, n, cond)]
         if not heaters:
             raise TranslationError(f"'{words}': which thing? this home has no room heater "
-                                   f"{'that is on ' if cond == 'off' else ''}(a heater, radiator, fire or log burner "
-                                   "that switches); say what to switch")
+                                   f"{'that is on ' if cond == 'off' else 'that is off ' if every else ''}(a heater, "
+                                   "radiator, fire or log burner that switches); say what to switch")
         self.goal.notes.append(f"'{words}': read as the room's heating {cond} ({', '.join(heaters)}; "
                                "docs/household.md, cues)")
         for n in heaters:
@@ -560,8 +560,10 @@ class Resolver:
             return
         cond = st["to"]
         default = st.get("default")
+        # the cue's category: named or worded by its word, in the singular or the plural ("lights")
+        forms = {default, *plurals(default)} if default else set()
         cats = [c for c, e in (self.world.get("categories") or {}).items()
-                if default and (c == default or default in ((e or {}).get("words") or []))]
+                if default and (c in forms or forms & set((e or {}).get("words") or []))]
         # an observation answers the cue when it is about what the cue speaks of ("the desk lamp
         # is on and nobody is reading": a light); "the TV is on and nobody is reading" is not
         fits = [o for o in self.observed
@@ -645,7 +647,13 @@ class Resolver:
                 self.goal.notes.append(f"'{words}' is the reason for {', '.join(asked)} {cond}, not a request for "
                                        f"every {cat}")
                 continue
-            self.goal.notes.append(f"'{words}': read as every {cat} {cond} ({', '.join(names)})")
+            # a cue asks for a change: "it is getting dark" asks nothing of a light that is on already
+            already = [n for n in names if holds_now(self.world, n, cond)]
+            names = [n for n in names if n not in already]
+            if not names:
+                raise TranslationError(f"'{words}': every {cat} is {cond} already; say what to do")
+            self.goal.notes.append(f"'{words}': read as every {cat} {cond} ({', '.join(names)})"
+                                   + (f"; {', '.join(already)} {cond} already" if already else ""))
             for n in names:
                 self.want(n, cond, False, words)
 

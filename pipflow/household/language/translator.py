@@ -158,6 +158,9 @@ def translate(command: str, world: dict) -> dict:
     goal = meaning["goal"]
     _leave_closed(world, goal)
     aside = meaning["order"].get("set_aside")
+    own = meaning["order"].get("speaker_does") or []
     return {"goal": goal, "concrete": resolve_counts(world, goal), "order": meaning["order"],
-            "explain": meaning["explain"] + ([said(aside)] if aside else []), "notes": meaning["notes"],
+            "explain": meaning["explain"] + ([said(aside)] if aside else [])
+            + [f"set aside, not read (what the speaker will do, no order for the robots): '{o}'" for o in own],
+            "notes": meaning["notes"],
             "words": meaning["words"]}
