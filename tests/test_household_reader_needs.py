@@ -160,3 +160,29 @@ def test_a_function_word_is_no_slip_of_an_operative_word():
 
     assert not near_operative("the") and not near_operative("on")
     assert near_operative("nto") and near_operative("olny") and near_operative("not")
+
+
+def test_idioms_of_the_home(bothy):
+    """"put the X on" switches a thing that switches (refused for one that does not); "be a dear
+    and", "while you're at it" are framing; "X wants a scrub"; "chopped up"; "two of the X"; "put X in
+    P along with Y"; "I'm off to bed" is a reason; "with that X going" names what a cue speaks of."""
+    assert goal("Pop the wireless on.", bothy) == ({}, {"wireless": ["on"], "dresser": ["closed"]})
+    with pytest.raises(Refusal):
+        goal("Put the jug on.", bothy)
+    assert goal("Be a dear and slice the plum, and wash the jug while you're at it.", bothy) == \
+        ({}, {"plum": ["sliced"], "jug": ["clean"]})
+    assert goal("The platter wants a good scrub.", bothy) == ({}, {"platter": ["clean"]})
+    assert goal("I would like the turnip chopped up.", bothy) == ({}, {"turnip": ["sliced"]})
+    assert goal("Put the jug in the basin along with the platter.", bothy) == ({"basin": ["jug", "platter"]}, {})
+    assert goal("I'm off to bed, turn the lantern off.", bothy) == ({}, {"lantern": ["off"]})
+    lit = world_from_text(BOTHY.replace("properties: [toggleable], state: {on: false}}",
+                                        "properties: [toggleable], state: {on: true}}"), "bothy.yaml")
+    assert goal("It's freezing in here with that lantern going.", lit) == ({}, {"lantern": ["off"]})
+
+
+def test_a_count_taken_out_of_a_closed_container_closes_it_again(bothy):
+    """"bring two of the veg to the bench": the one at hand is the turnip; the second comes out of
+    the closed larder, which is closed again (the gold of every set says so)."""
+    got = translate("Bring two of the veg to the bench.", bothy)
+    assert got["goal"]["count"] == [{"category": "veg", "in": "bench", "at_least": 2}]
+    assert got["goal"]["state"] == {"larder": ["closed"]}

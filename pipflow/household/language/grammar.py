@@ -40,6 +40,7 @@ toggle: @V_TOGGLE onoff tthings @HERE?
       | @V_SHUT tthings off
       | @V_TOGGLE typo_off tthings
       | @V_SHUTDOWN tthings
+      | _vput tthings on
       | @V_LIGHT tthings @HERE?
 typo_off: @OF
 tthings: tnp ((COMMA | @AND | COMMA @AND) tnp)*
@@ -52,6 +53,7 @@ put: _vput @UP? things source? target? exception?
    | _vput @UP? things target source
    | _vput @OUT things | _vput things @OUT
    | _vput @UP? things source @AND target
+   | _vput @UP? things @AWAY? target (@AND | COMMA @AND) things
    | _vput things @AWAY target
    | sthings @SHOULD? (@GOES | @BE) target
    | _vput @AWAY things target
@@ -78,9 +80,10 @@ trash: @V_TRASH things | @V_THROW @AWAY things | @V_THROW things @AWAY | @V_THRO
 
 request: @V_LEAVE things state
        | @V_MAKE things state
-       | @SUBJ? (@WANT | @NEED) things (@TO @BE)? state
+       | @SUBJ? (@WANT | @NEED) things (@TO @BE)? state @UP?
        | sthings @SHOULD @BE? state @TOO?
        | sthings @NEED state
+       | sthings @NEED @ACT
 unwant: @DONOT @V_LEAVE things state
       | sthings @SHOULD @NOT @BE? state
 ensure: @V_MAKE @SURE @THAT? wish ((COMMA | @AND | COMMA @AND) wish)*
@@ -89,7 +92,7 @@ not: @NOT
 state: @ADJ | @V_OPEN | @V_SHUT | @V_CLEAN | @V_WARM | @V_STATE | on | off | @TOGGLED onoff | @V_TOGGLE onoff
 
 after: @ONCE @SUBJ @HAVE? state things
-reason: @IT @IS (@INTENS | @TOO)* @REASON
+reason: @IT @IS (@INTENS | @TOO)* @REASON | @SUBJ @IS @REASON
 meal: (@V_MAKE | @V_PREPARE | _vstate) @THE? @MEAL @HERE?
     | @SUBJ? (@WANT | @NEED) @THE? @MEAL
 
@@ -101,8 +104,8 @@ cue: @NOBODY @IS? activity (@TO | @ON | @AT)? things? @ANYMORE?
    | @SUBJ? @IS? @DONE things @ANYMORE?
    | @SUBJ @HAVE? @FINISHED activity things?
    | sthings @IS @NOT @NEEDED @ANYMORE?
-   | @IT @IS (@INTENS | @TOO)* tempcue @HERE?
-   | @IT @IS (@INTENS | @TOO)* tempadj @HERE
+   | @IT @IS (@INTENS | @TOO)* tempcue @HERE? (@WITH @THAT? things (@GOING | on))?
+   | @IT @IS (@INTENS | @TOO)* tempadj @HERE (@WITH @THAT? things (@GOING | on))?
    | @SUBJ @IS (@INTENS | @TOO)* (tempcue | tempadj) @HERE?
    | @IT @IS (@INTENS | @TOO)* lightcue @HERE?
    | @SUBJ @CANNOT @SEE @HERE?
@@ -130,7 +133,7 @@ sel: quant? @OF? @THE? count? adj* noun @DOOR? rel?
    | @BOTH
    | @THE @DOOR
 quant: @ALL | @EVERY | @BOTH
-count: NUM @OF? | NUM @UNIT
+count: NUM @OF? | NUM @UNIT | NUM @OF @THE
 adj: @ADJ | @V_CLEAN | @V_WARM | @V_OPEN | @V_SHUT
 rel: @THAT @IS state | @THAT @IS where | @FROM place
 where: (@IN | @ON) place

@@ -153,7 +153,7 @@ _add("BE", "be,stay,remain,stays,remains,go")
 _add("SHOULD", "should,must,has to,have to,needs to,need to,ought to,got to,can")
 _add("SUBJ", "i,we,you")
 _add("WANT", "want,would like,like,wish,d like,prefer")
-_add("NEED", "need,needs")
+_add("NEED", "need,needs,wants")
 _add("NEEDED", "needed,necessary,required,in use")
 #: "we are done with the laptop": the thing is not needed (a state cue, like "we do not need")
 _add("DONE", "done with,finished with,through with")
@@ -166,12 +166,15 @@ _add("ONCE", "once,after,when")
 _add("GOES", "goes,belongs,belong")
 #: reasons that ask for nothing by themselves ("it is late, turn off the TV"): dropped before a
 #: request, refused alone
-_add("REASON", "late,bedtime,time for bed,night time")
+_add("REASON", "late,bedtime,time for bed,night time,off to bed,going to bed,heading to bed,off out,going out,"
+     "heading out,off to work,going to work")
 _add("DONOT", "do not,does not,did not,no longer,dont")
 _add("ANYMORE", "anymore,any more,any longer,for now,for the night,tonight,right now")
 _add("NOBODY", "nobody,no one,noone,none of us")
 _add("INTENS", "very,so,really,quite,rather,extremely,pretty,a bit,a little,way too,much too,far too,getting")
 _add("TOO", "too,as well")
+#: "it's freezing with that fan going": a thing said to be running
+_add("GOING", "going,running,blasting,blaring,whirring,humming")
 _add("CANNOT", "can not,could not,cannot")
 _add("SOMEWHERE", "somewhere,some place,someplace")
 _add("HERE", "here,in here,in the house,in the home,in the flat,in the apartment,around the house,everywhere")
@@ -228,7 +231,9 @@ FILLER = {("please",), ("kindly",), ("just",), ("quickly",), ("now",), ("for", "
           ("us",), ("would", "you", "mind"), ("do", "you", "mind"), ("would", "you", "please"),
           ("could", "you", "please"), ("if", "you", "would"), ("if", "you", "could"),
           ("do", "not", "forget", "to"), ("remember", "to"), ("make", "sure", "to"), ("you", "can"),
-          ("pls",), ("plz",), ("plse",), ("thx",), ("ta",), ("cheers",)}
+          ("pls",), ("plz",), ("plse",), ("thx",), ("ta",), ("cheers",),
+          ("while", "you", "are", "at", "it"), ("when", "you", "get", "a", "chance"), ("when", "you", "can"),
+          ("be", "a", "dear", "and"), ("be", "a", "love", "and"), ("be", "an", "angel", "and"), ("be", "a", "star", "and")}
 #: how the steps are to be run, not what the home should end like: a goal is the end state, and
 #: the planner and the allocator decide the order and what runs in parallel. A clause made only of
 #: "do" + what it does it to + one of these, or of one of these alone, is read as no condition

@@ -622,7 +622,9 @@ class Builder:
         elif kind == "toggle":
             st = {"op": "change", "things": things, "to": self.state(node)}
         elif kind == "put":
-            st = {"op": "put", "things": things}
+            # "put it in the cabinet along with the bowl": the things after the place go there too
+            subs = self._subs(node, "things") + self._subs(node, "sthings")
+            st = {"op": "put", "things": [s for sub in subs for s in self.things(sub)]}
             src, tgt = self._sub(node, "source"), self._sub(node, "target")
             if src is not None:
                 st["from"] = self.place(self._sub(src, "place"))
@@ -641,6 +643,9 @@ class Builder:
         elif kind == "chill":
             verb = next(t for t in self._tokens(node) if self._cls(t) == "V_CHILL")
             st = {"op": "put", "things": things, "to": {"words": self.tag_of(verb).words, "quality": COLD}}
+        elif kind == "request" and self._has(node, "ACT"):   # "the saucepan wants a good scrub"
+            act = next(t for t in self._tokens(node) if self._cls(t) == "ACT")
+            st = {"op": "change", "things": things, "to": str(self.tag_of(act).value)}
         elif kind in ("request", "after"):   # "after": "once you have washed the pan, ..." (done first)
             st = {"op": "change", "things": things, "to": self.state(self._sub(node, "state"))}
         elif kind == "unwant":   # "don't leave the fridge open", "the TV shouldn't be on": the other polarity

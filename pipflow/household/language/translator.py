@@ -157,6 +157,10 @@ def translate(command: str, world: dict) -> dict:
     meaning = understand(command, world)
     goal = meaning["goal"]
     _leave_closed(world, goal)
+    if goal.get("count"):
+        # the things a count takes come out of closed containers too ("bring two of the pastries
+        # to the table": the bread bin is opened for them, and closed again)
+        _leave_closed(world, {"in": resolve_counts(world, goal)["in"], "state": goal["state"]})   # goal's state, shared
     aside = meaning["order"].get("set_aside")
     own = meaning["order"].get("speaker_does") or []
     return {"goal": goal, "concrete": resolve_counts(world, goal), "order": meaning["order"],
