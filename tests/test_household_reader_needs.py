@@ -186,3 +186,49 @@ def test_a_count_taken_out_of_a_closed_container_closes_it_again(bothy):
     got = translate("Bring two of the veg to the bench.", bothy)
     assert got["goal"]["count"] == [{"category": "veg", "in": "bench", "at_least": 2}]
     assert got["goal"]["state"] == {"larder": ["closed"]}
+
+
+def test_how_and_in_what_order_is_the_plans_choice(bothy):
+    """Issue 23's household causes: an adverb of order anywhere in a clause ("first", "last") and a
+    sentence that only restates the order of things already named say how the steps run; an
+    ordinal after a determiner ("the first jug") is no such word, and a sentence that names
+    something new is read (or refused), never dropped."""
+    both = ({}, {"jug": ["clean"], "platter": ["clean"]})
+    assert goal("Wash the jug first, then the platter.", bothy) == both
+    assert goal("Wash the jug and the platter: first the jug, then the platter.", bothy) == both
+    assert goal("Wash the jug and slice the plum, do both in parallel.", bothy) == ({}, {"jug": ["clean"], "plum": ["sliced"]})
+    with pytest.raises(TranslationError):
+        goal("Wash the first jug.", bothy)
+    with pytest.raises(TranslationError):
+        goal("Wash the jug and the platter. First the jug, then the beaker.", bothy)
+
+
+def test_a_thing_named_by_where_it_is_and_what_it_is(bothy):
+    """ "the trestle lantern": the home has no such name, but a trestle and a lantern on it; "the
+    bench lantern" (none there) is refused, never another lantern; the object left out after a
+    verb is the thing named before."""
+    assert goal("Turn off the trestle lantern.", bothy) == ({}, {"lantern": ["off"]})
+    assert goal("Switch the table lantern switch off.", bothy) == ({}, {"lantern": ["off"]})
+    with pytest.raises(TranslationError):
+        goal("Turn off the bench lantern.", bothy)
+    assert goal("Slice the turnip, then put in the icebox.", bothy) == \
+        ({"icebox": ["turnip"]}, {"turnip": ["sliced"], "icebox": ["closed"]})
+
+
+def test_an_amount_in_a_container_is_some_of_it(bothy):
+    """ "a bowl of plums" is the plums (no thing of the home holds another); "a bowl of fruit" of a
+    kind does not say how many (asked); where the home has a bowl, "a bowl of X" may mean it too
+    (refused)."""
+    assert goal("Put a bowl of plums on the trestle.", bothy) == ({"trestle": ["plum"]}, {})
+    with pytest.raises(TranslationError, match="how many"):
+        goal("Put a bowl of fruit on the trestle.", bothy)
+    with_bowl = world_from_text(BOTHY.replace("  beaker:", "  bowl:"), "bothy.yaml")
+    with pytest.raises(TranslationError):
+        goal("Put a bowl of plums on the trestle.", with_bowl)
+
+
+def test_a_purpose_is_not_part_of_the_goal(bothy):
+    assert goal("The lantern goes on the bench for airing.", bothy) == ({"bench": ["lantern"]}, {})
+    assert goal("Put the plum in the icebox for later.", bothy) == ({"icebox": ["plum"]}, {"icebox": ["closed"]})
+    with pytest.raises(TranslationError):   # "for washing": the washing may be asked too
+        goal("Put the jug in the basin for washing.", bothy)

@@ -245,6 +245,21 @@ MANNERS = {("in", "parallel"), ("at", "the", "same", "time"), ("at", "once"), ("
 MANNER_OBJECTS = {("both",), ("them",), ("it",), ("these",), ("those",), ("all",), ("everything",),
                   ("both", "of", "them"), ("all", "of", "them"), ("the", "two"), ("the", "lot"), ()}
 ORDER_OPENERS = {"first", "firstly", "start", "to", "with"}
+#: words that put a step first or last ("wash the mug first"): the order of the steps, which the
+#: plan decides; an ordinal after a determiner ("the first banana") is no such word (refused)
+ORDER_WORDS = {"first", "firstly", "last", "lastly", "second", "secondly"}
+#: determiners after which "first" is an ordinal ("the first mug")
+ORDINAL_DETERMINERS = {"the", "a", "an", "my", "your", "our", "this", "that", "its", "their", "his", "her"}
+#: containers people name an amount by ("a bowl of cherries", "a bag of flour"): no thing of the
+#: home model holds another, so "a bowl of X" is some X; when the home has a thing named by the
+#: container word itself (a bowl), it is refused: the bowl may be meant too
+MEASURES = {"bowl", "bowlful", "plate", "plateful", "cup", "glass", "mug", "bag", "box", "basket", "tin", "can", "jar",
+            "bottle", "handful", "pile", "stack", "bunch", "punnet", "packet", "pack", "tray", "dish", "carton",
+            "crate", "sack", "pot", "jug", "tub", "heap", "load"}
+#: "the quilt goes on the table for airing": what for, not what the home should end like: "for" +
+#: a word of no verb of the lexicon in -ing, or one of these, at the end of a clause
+PURPOSES = {("later",), ("tomorrow",), ("the", "morning"), ("the", "weekend"), ("now",), ("safekeeping",),
+            ("safe", "keeping")}
 
 #: filler words a misspelling may be read as ("plese"): only these, long and close to no
 #: content word, so that a misspelt content word is never dropped as politeness

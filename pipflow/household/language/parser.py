@@ -30,9 +30,10 @@ from lark.visitors import CollapseAmbiguities
 
 from pipflow.errors import TranslationError
 from pipflow.household.language.grammar import NOUN_DUAL, grammar_text
+from pipflow.household.world import members
 from pipflow.household.language.lexicon import (ACTIVITIES, COLD, FILLER, FILLER_TYPO_TARGETS, LIGHT_CATEGORY_WORD, MANNER_OBJECTS,
-                                                MANNERS, MARKS, MEALS, OPPOSITE, PHRASES, TEMPERATURE_ADJECTIVES, UNIT_DETERMINERS,
-                                                plurals, words_of)
+                                                MANNERS, MARKS, MEALS, MEASURES, OPPOSITE, ORDER_WORDS, ORDINAL_DETERMINERS,
+                                                PHRASES, PURPOSES, TEMPERATURE_ADJECTIVES, UNIT_DETERMINERS, plurals, words_of)
 from pipflow.language.asides import EXCLUSIVITY, FUNCTION_WORDS, NEGATION, clauses, content_free, said
 from pipflow.language.characters import refuse_unread
 from pipflow.language.numbers import read_number
@@ -185,9 +186,14 @@ def _without_manner(words: list[str], notes: list[str]) -> list[str]:
                 out.append(w)   # a sentence's end stays; a comma goes with the clause
             start = k + 1
             continue
-        if clause[:1] == ["first"] or clause[:1] == ["firstly"]:
-            notes.append(f"'{clause[0]}': the order of the steps; the plan decides it")
-            clause = clause[1:]
+        kept = []
+        for j, x in enumerate(clause):   # "wash the mug first", "first the mug, then the plate"
+            if x in ORDER_WORDS and not (j and clause[j - 1] in ORDINAL_DETERMINERS) and \
+                    not (j + 1 < len(clause) and clause[j + 1] == "of"):
+                notes.append(f"'{x}': the order of the steps; the plan decides it")
+                continue
+            kept.append(x)
+        clause = _without_purpose(kept, notes)
         out += clause + ([w] if k < len(words) else [])
         start = k + 1
     while out and out[-1] == ",":
@@ -195,11 +201,94 @@ def _without_manner(words: list[str], notes: list[str]) -> list[str]:
     return out
 
 
+def _without_purpose(clause: list[str], notes: list[str]) -> list[str]:
+    """A clause without its closing purpose ("... for airing", "... for later": lexicon
+    ``PURPOSES``, or "for" + an -ing word that is no verb of the lexicon): what for, not what the
+    home should end like. "for washing" (a verb the home can do) is kept, and refused: it may ask
+    for the washing too."""
+    for n in (1, 2):
+        if len(clause) > n + 1 and clause[-n - 1] == "for":
+            tail = tuple(clause[-n:])
+            if tail in PURPOSES or (n == 1 and tail[0].endswith("ing") and len(tail[0]) > 5
+                                    and not any(tail[0] in key for key in PHRASES)):
+                notes.append(f"'for {' '.join(tail)}' says what for, not what the home should end like")
+                return clause[:-n - 1]
+    return clause
+
+
+def _measures(words: list[str], index: dict, notes: list[str]) -> list[str]:
+    """ "a bowl of cherries" as "some cherries" (lexicon ``MEASURES``), unless the home has a thing
+    named by the container word (then it stays, and is refused: the bowl may be meant too)."""
+    out: list[str] = []
+    k = 0
+    while k < len(words):
+        w = words[k]
+        if w in ("a", "an", "one") and k + 3 < len(words) and words[k + 2] == "of" and \
+                (words[k + 1] in MEASURES or words[k + 1] + "s" in MEASURES or words[k + 1].rstrip("s") in MEASURES) \
+                and (words[k + 1],) not in index and words[k + 3] not in PUNCT:
+            notes.append(f"'{w} {words[k + 1]} of' read as 'some' (an amount of what follows, not a thing of the home)")
+            out.append("some")
+            k += 3
+            continue
+        out.append(w)
+        k += 1
+    return out
+
+
+def _located(tags: list["Tag"], world: dict, notes: list[str]) -> list["Tag"]:
+    """ "the table lamp" where the home has no "table lamp" but a table and lamps: the lamp that
+    is on the table, when the place word is followed at once by a name of objects and some of
+    them are in that place; the other lamps are not meant. None there: left as said (refused)."""
+    out: list[Tag] = []
+    for t in tags:
+        prev = out[-1] if out else None
+        if t.cls == "NOUN" and prev is not None and prev.cls == "NOUN" and prev.nouns and \
+                all(r["kind"] == "place" for r in prev.nouns):
+            places = {r["name"] for r in prev.nouns}
+            objects = [o for r in t.nouns for o in ([r["name"]] if r["kind"] == "object" else
+                                                     members(world, r["name"]) if r["kind"] == "category" else [])]
+            there = [o for o in dict.fromkeys(objects) if o in world["objects"] and world["objects"][o]["in"] in places]
+            if there:
+                plural = any(r.get("plural") for r in t.nouns)
+                notes.append(f"read '{prev.words} {t.words}' as {', '.join(there)} (in {', '.join(sorted(places))})")
+                out[-1] = Tag("NOUN", None, f"{prev.words} {t.words}",
+                              [{"kind": "object", "name": o, "plural": plural} for o in there])
+                continue
+        out.append(t)
+    return out
+
+
+#: the tags a sentence that only restates the order of things has: "first the mug, then the plate"
+_ORDER_ONLY = {"THE", "NOUN", "COMMA", "AND", "THEN"}
+
+
+def _restated_order(tags: list[Tag], notes: list[str]) -> list[Tag]:
+    """The tags without a sentence that only lists things already named, in an order ("wash the
+    mug and the plate: first the mug, then the plate"): the order of the steps, which the plan
+    decides. A sentence that names anything new is kept (and read, or refused)."""
+    out: list[Tag] = []
+    named: set[str] = set()
+    start = 0
+    for k in range(len(tags) + 1):
+        if k < len(tags) and tags[k].cls != "END":
+            continue
+        sentence = tags[start:k]
+        nouns = [t for t in sentence if t.cls == "NOUN" or t.cls.endswith(NOUN_DUAL)]
+        names = {r["name"] for t in nouns for r in t.nouns}
+        if out and nouns and names <= named and all(t.cls in _ORDER_ONLY or t.cls.endswith(NOUN_DUAL) for t in sentence):
+            notes.append(f"'{' '.join(t.words for t in sentence)}': the order of the steps; the plan decides it")
+        else:
+            out += sentence + tags[k:k + 1]
+        named |= names
+        start = k + 1
+    return out
+
+
 def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
     """The command as grammar tokens (module docstring, step 1)."""
     notes = notes if notes is not None else []
     index = world_phrases(world)
-    words = _without_manner(words_of(command), notes)
+    words = _measures(_without_manner(words_of(command), notes), index, notes)
     vocab = _vocabulary(index)
     # typos: a word known nowhere, close to exactly one known word, is read as that word
     for k, w in enumerate(words):
@@ -252,6 +341,7 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
             cls, value = PHRASES[tuple(words[i:i + n])]
             out.append(Tag(cls, value, text))
         i += n
+    out = _restated_order(_located(out, world, notes), notes)
     if unknown:
         names = sorted(set(world.get("objects") or {}) | set(world.get("places") or {}))
         raise TranslationError(
