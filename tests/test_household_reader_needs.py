@@ -232,3 +232,59 @@ def test_a_purpose_is_not_part_of_the_goal(bothy):
     assert goal("Put the plum in the icebox for later.", bothy) == ({"icebox": ["plum"]}, {"icebox": ["closed"]})
     with pytest.raises(TranslationError):   # "for washing": the washing may be asked too
         goal("Put the jug in the basin for washing.", bothy)
+
+
+def test_toast_is_made_of_the_homes_bread(bothy):
+    loafy = world_from_text(BOTHY.replace("  plum:", "  loaf:     {in: larder, mass: 1, properties: [pickupable, sliceable, "
+                                          "heatable], words: [bread]}\n  plum:"), "bothy.yaml")
+    assert goal("Make some toast.", loafy) == ({}, {"loaf": ["hot", "sliced"], "larder": ["closed"]})
+    with pytest.raises(Refusal):   # no bread in the bothy: no toast is guessed from a turnip
+        goal("Make some toast.", bothy)
+
+
+# ------------------------------------------------------------------------------ candidate readings
+def offered(command: str, world: dict) -> list[dict]:
+    with pytest.raises(TranslationError) as refused:
+        translate(command, world)
+    return refused.value.candidates
+
+
+def _goals(cands: list[dict]) -> list[tuple[dict, dict]]:
+    return [({p: sorted(v) for p, v in c["goal"].get("in", {}).items() if v},
+             {n: sorted(v) for n, v in c["goal"].get("state", {}).items() if v}) for c in cands]
+
+
+def test_a_refusal_offers_readings_from_repairs_and_the_parts_that_parse(bothy):
+    """Issue 23 point 4: up to three candidate readings, each in plain words with the words it rests
+    on; never acted on unchosen (translate still refuses)."""
+    # a misspelling two edits away (the reader repairs only one)
+    cands = offered("Slice the tunrpi.", bothy)
+    assert ({}, {"turnip": ["sliced"]}) in _goals(cands)
+    assert any("'tunrpi' read as 'turnip'" in c["reading"] and c["words"] == "turnip" for c in cands)
+    # a word it cannot place, left out; the rest read
+    cands = offered("Wash the jug and blorp the platter.", bothy)
+    assert _goals(cands)[0] == ({}, {"jug": ["clean"], "platter": ["clean"]})
+    assert "read without 'blorp'" in cands[0]["reading"]
+    # a clause of talk it could not set aside (a word near a name), left out
+    cands = offered("Light the lamp, we're lantrn spotting.", bothy)
+    assert ({}, {"lamp": ["on"]}) in _goals(cands)
+    # a list said with "or"
+    cands = offered("Nobody is using the lantern or the wireless.", bothy)
+    assert ({}, {"lantern": ["off"], "wireless": ["off"], "dresser": ["closed"]}) in _goals(cands)
+    # the choice a singular asks for: each thing it could be
+    cands = offered("Turn on the lamp.", lamps(bothy))
+    assert sorted(_goals(cands), key=str) == [({}, {"lamp": ["on"]}), ({}, {"lantern": ["on"]})]
+    assert all(c["words"] in ("lamp", "lantern") for c in cands)
+
+
+def lamps(bothy: dict) -> dict:
+    """The bothy with its lantern worded a lamp too: "the lamp" is then two things."""
+    return world_from_text(BOTHY.replace("categories: [lamps]}\n  wireless", "categories: [lamps], words: [lamp]}\n  wireless"),
+                           "bothy.yaml")
+
+
+def test_no_candidate_drops_an_operative_word(bothy):
+    """Dropping "not", "only", "except" would widen what the robots do: never offered."""
+    for command in ("Wash the jug but nto the platter.", "Wash only the jug, not the platter, blorp."):
+        for c in offered(command, bothy):
+            assert c["goal"]["state"] != {"jug": ["clean"], "platter": ["clean"]}, c["reading"]

@@ -94,6 +94,7 @@ state: @ADJ | @V_OPEN | @V_SHUT | @V_CLEAN | @V_WARM | @V_STATE | on | off | @TO
 after: @ONCE @SUBJ @HAVE? state things
 reason: @IT @IS (@INTENS | @TOO)* @REASON | @SUBJ @IS @REASON
 meal: (@V_MAKE | @V_PREPARE | _vstate) @THE? @MEAL @HERE?
+    | (@V_MAKE | @V_PREPARE) @THE? @V_STATE @HERE?
     | @SUBJ? (@WANT | @NEED) @THE? @MEAL
 
 observe: sthings @IS state

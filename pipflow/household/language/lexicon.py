@@ -207,9 +207,13 @@ MEALS: dict[str, dict] = {
                   "foods": ["egg", "bread", "toast", "bacon", "sausage", "pancake", "waffle", "porridge", "oatmeal",
                             "bagel", "croissant", "muffin", "bun", "roll"]},
 }
-_add("MEAL", ",".join(MEALS))
+#: toast is bread sliced and heated: "make (some) toast" (a meal whose word is also a verb, "toast
+#: the bread": the verb keeps its class, and the grammar reads "make" + it as the meal)
+MEALS["toast"] = {"state": "hot", "also": ["sliced"], "foods": ["bread", "loaf", "toast", "bloomer", "baguette"],
+                  "base": ["bread", "loaf", "toast", "bloomer", "baguette"]}
 for _m in MEALS:
-    PHRASES[tuple(_m.split())] = ("MEAL", _m)
+    if tuple(_m.split()) not in PHRASES:
+        PHRASES[tuple(_m.split())] = ("MEAL", _m)
 
 #: category words that name a mass, not one thing: "put away the fruit" means all of it, while
 #: "turn off the lamp" names one lamp (and is asked back when the home has several)

@@ -143,6 +143,13 @@ def _vocabulary(world_index: dict) -> set[str]:
     return {w for w in vocab if len(w) >= 3}
 
 
+def known_word(w: str, index: dict, vocab: set[str]) -> bool:
+    """Whether the tagger reads ``w`` as it is: a word of the world, of the lexicon, of the
+    politeness list, a number or a mark."""
+    return w in vocab or w in PUNCT or w.isdigit() or any(w in key for key in PHRASES) or \
+        any(w in key for key in index) or any(w in key for key in FILLER) or bool(read_number([w], 0))
+
+
 def _typo_of(word: str, vocab: set[str]) -> list[str]:
     """Known words ``word`` may be a misspelling of, closest first: the same first letter and one
     edit (two for words of 7 letters or more; a swap of neighbours is one). "toaster" is not
@@ -292,9 +299,7 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
     vocab = _vocabulary(index)
     # typos: a word known nowhere, close to exactly one known word, is read as that word
     for k, w in enumerate(words):
-        known = w in vocab or w in PUNCT or w.isdigit() or any(w in key for key in PHRASES) or \
-            any(w in key for key in index) or any(w in key for key in FILLER) or read_number([w], 0)
-        if known or len(w) < 4:
+        if known_word(w, index, vocab) or len(w) < 4:
             continue
         close = _typo_of(w, vocab)
         if close and len({_meaning(c, index) for c in close}) == 1:
@@ -344,9 +349,11 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
     out = _restated_order(_located(out, world, notes), notes)
     if unknown:
         names = sorted(set(world.get("objects") or {}) | set(world.get("places") or {}))
-        raise TranslationError(
+        error = TranslationError(
             f"{', '.join(repr(u) for u in dict.fromkeys(unknown))} names nothing in this world and is no word the "
             f"offline parser knows (in {command.strip()!r}); things of this world: {', '.join(names)}")
+        error.unread = list(dict.fromkeys(unknown))  # type: ignore[attr-defined]  # for candidate readings
+        raise error
     return out
 
 
@@ -741,7 +748,14 @@ class Builder:
         elif kind == "unwant":   # "don't leave the fridge open", "the TV shouldn't be on": the other polarity
             st = {"op": "change", "things": things, "to": OPPOSITE[self.state(self._sub(node, "state"))]}
         elif kind == "meal":
-            meal = str(self.tag_of(next(t for t in self._tokens(node) if self._cls(t) == "MEAL")).value)
+            named = next((t for t in self._tokens(node) if self._cls(t) == "MEAL"), None)
+            if named is None:   # "make some toast": a meal whose word is a verb too
+                said = self.tag_of(next(t for t in self._tokens(node)[1:] if self._cls(t) == "V_STATE")).words
+                if said not in MEALS:
+                    raise TranslationError(f"'{words}': '{said}' is no meal the offline parser knows")
+                meal = said
+            else:
+                meal = str(self.tag_of(named).value)
             verb = self.tag_of(self._tokens(node)[0])
             if verb.value is not None and verb.value != MEALS[meal]["state"]:   # "cook breakfast", never "heat a salad"
                 raise TranslationError(f"'{words}': a {meal} is not made by '{verb.words}' "

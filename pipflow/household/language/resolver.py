@@ -38,6 +38,14 @@ from pipflow.household.world import entity, initial_state, members
 _FLAG = {"is-open": "open", "is-on": "on", "dirty": "dirty", "sliced": "sliced", "hot": "hot"}
 
 
+def _choice(error: TranslationError, words: str, names: list[str]) -> TranslationError:
+    """The error with what it asks to choose among: ``choices`` = (the words that name several
+    things, their names), from which the refusal's candidate readings are built
+    (:mod:`pipflow.household.language.candidates`)."""
+    error.choices = (words, list(names))  # type: ignore[attr-defined]
+    return error
+
+
 def holds_now(world: dict, name: str, cond: str) -> bool:
     """Whether a state condition holds in the world as it is (before any plan)."""
     pred, positive, _ = CONDITIONS[cond]
@@ -72,8 +80,10 @@ class _Goal:
 class Resolver:
     """One order in one world; see the module docstring."""
 
-    def __init__(self, world: dict):
+    def __init__(self, world: dict, choose: dict[str, str] | None = None):
         self.world = world
+        #: words that name several things -> the one a user chose among them (a candidate reading)
+        self.choose = dict(choose or {})
         self.goal = _Goal()
         self.last: list[str] = []
         self.picked: dict[str, str] = {}          # objects taken with no place yet -> words
@@ -188,8 +198,11 @@ class Resolver:
             if n != len(names):
                 raise TranslationError(f"'{words}': '{what}' asks for {n} of {len(names)} things named so "
                                        f"({', '.join(names)}); say which")
+        elif not plural and len(names) > 1 and self.choose.get(what) in names:
+            names = [self.choose[what]]
         elif not plural and len(names) > 1:
-            raise TranslationError(f"'{words}': '{what}' could be any of {', '.join(names)}; say which")
+            raise _choice(TranslationError(f"'{words}': '{what}' could be any of {', '.join(names)}; say which"),
+                          what, names)
         if sel.get("both") and len(names) != 2:
             raise TranslationError(f"'{words}': 'both' but '{what}' are {len(names)} things")
         if not names:
@@ -248,8 +261,11 @@ class Resolver:
         names = list(dict.fromkeys(names))
         if not names:
             raise TranslationError(f"'{words}': '{place['words']}' is not a place of this world")
+        if len(names) > 1 and self.choose.get(place["words"]) in names:
+            names = [self.choose[place["words"]]]
         if len(names) > 1:
-            raise TranslationError(f"'{words}': '{place['words']}' could be {', '.join(names)}; say which")
+            raise _choice(TranslationError(f"'{words}': '{place['words']}' could be {', '.join(names)}; say which"),
+                          place["words"], names)
         return names[0]
 
     # goal building -----------------------------------------------------------------------
@@ -621,13 +637,15 @@ class Resolver:
                 raise Refusal(f"'{words}': this home has no {' or '.join(base[:3])} (or other base for a {meal}), "
                               f"so the offline reading will not guess one; say which things should be {cond}")
             source = f"the {meal} foods of the lexicon"
-        able = [n for n in foods if need in self.world["objects"][n]["properties"]]
+        also = list(spec.get("also") or [])   # toast: sliced too
+        able = [n for n in foods if all(CONDITIONS[c][2] in self.world["objects"][n]["properties"] for c in [cond] + also)]
         if not able:
             raise Refusal(f"'{words}': this home has nothing for a {meal} that can be {cond}"
                           + (f" ({', '.join(foods)} cannot)" if foods else ""))
         self.goal.notes.append(f"'{words}': read as {', '.join(able)} {cond} ({source}; docs/household.md, meals)")
         for n in able:
-            self.want(n, cond, False, words)
+            for c in [cond] + also:
+                self.want(n, c, False, words)
         self.last = able
 
     def _apply_cue_defaults(self) -> None:
@@ -692,9 +710,10 @@ class Resolver:
         return {"goal": goal, "explain": explain, "notes": list(g.notes), "words": words}
 
 
-def resolve(order: dict, world: dict) -> dict:
+def resolve(order: dict, world: dict, choose: dict[str, str] | None = None) -> dict:
     """``{"goal": {"in", "state", "count"?}, "explain": [one line per condition with its words],
     "notes": [...], "words": {"in": {object: words}, "state": {name: {condition: words}}}}`` for a
     household order in a world (checked against its schema first);
-    Refusal or TranslationError otherwise."""
-    return Resolver(world).resolve(check_order(order))
+    Refusal or TranslationError otherwise. ``choose``: words that name several things -> the
+    one meant (a candidate reading the refusal offers; never set by the reader itself)."""
+    return Resolver(world, choose).resolve(check_order(order))
