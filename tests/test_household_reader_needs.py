@@ -288,3 +288,18 @@ def test_no_candidate_drops_an_operative_word(bothy):
     for command in ("Wash the jug but nto the platter.", "Wash only the jug, not the platter, blorp."):
         for c in offered(command, bothy):
             assert c["goal"]["state"] != {"jug": ["clean"], "platter": ["clean"]}, c["reading"]
+
+
+def test_where_an_action_happens_said_after_it(bothy):
+    """ "heat the turnip? not on the griddle, use the X": the place said after the action (a
+    correction); "not on X" alone, "use X" with no action before, or the same place refused and
+    used, are asked."""
+    hob = world_from_text(BOTHY.replace("  basin:", "  range:    {x: 3.2, y: 3.0, width: 0.7, depth: 0.6, access: [3.5, 2.5], "
+                                        "properties: [receptacle, heater]}\n  basin:"), "bothy.yaml")
+    assert goal("Could you heat up the turnip? Not on the griddle, use the range.", hob) == \
+        ({"range": ["turnip"]}, {"turnip": ["hot"]})
+    assert goal("Heat up the turnip, use the griddle.", hob) == ({"griddle": ["turnip"]}, {"turnip": ["hot"]})
+    for command in ("Heat up the turnip, not on the griddle.", "Use the range.",
+                    "Heat the turnip, not on the range, use the range."):
+        with pytest.raises(TranslationError):
+            goal(command, hob)

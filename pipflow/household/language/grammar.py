@@ -25,7 +25,7 @@ start: _sep* item (_sep+ item | _sep* thengap)* _sep*
 _sep: COMMA | END | @AND | @THEN | @BUT
 
 ?item: change | toggle | put | gap | away | trash | chill | request | unwant | ensure | observe | cue | meal | after | reason
-      | tend
+      | tend | notvia | usevia
 
 change: _vstate @UP? things @PIECES? via? exception? @HERE?
       | _vstate things @UP via? exception?
@@ -114,6 +114,9 @@ activity: @ACTIVITY
 lightcue: @LIGHTCUE
 tempcue: @TEMPCUE
 tempadj: @ADJ
+
+notvia: @NOT via
+usevia: @V_USE @THE? place
 
 tend: @V_TEND @OUT? things | @V_TEND things @OUT
     | sthings @IS? @MESS

@@ -100,6 +100,8 @@ _add("V_TRASH", "trash,discard,bin,dump,junk,get rid of,dispose of,throw away,th
 _add("V_TIDY", "tidy,return,clear away")
 _add("V_LEAVE", "leave,keep")
 _add("V_MAKE", "make")
+#: "heat the pie, not in the oven, use the hob": the place an action happens, said after it
+_add("V_USE", "use,do it in,do it on")
 #: verbs that prepare a meal ("fix us some breakfast"); "make" is V_MAKE (also "make sure")
 _add("V_PREPARE", "prepare,fix,fix up,whip up,rustle up")
 _add("SURE", "sure,certain")

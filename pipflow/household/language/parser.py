@@ -798,6 +798,26 @@ class Builder:
             st.update(to="off", cue="not needed")
         return st
 
+    def where_instead(self, item: Tree, statements: list[dict], refused: dict | None) -> dict | None:
+        """ "heat up the pie? not in the oven, use the hob": the place the change before happens,
+        said after it; the place said not to use must not be the one it had. Returns the refused
+        place still waiting for its replacement (None once said)."""
+        if item.data == "notvia":
+            via = self._sub(item, "via")
+            return {"words": _words(self.tags, item), "place": self.place(self._sub(via, "place"))}
+        last = statements[-1] if statements else None
+        if last is None or last.get("op") != "change":
+            raise TranslationError(f"'{_words(self.tags, item)}': use it for what? (no action before it)")
+        place = self.place(self._sub(item, "place"))
+        if refused is not None and {r["name"] for r in refused["place"]["readings"]} & \
+                {r["name"] for r in place["readings"]}:
+            raise TranslationError(f"'{refused['words']}' and '{_words(self.tags, item)}' name the same place")
+        if "via" in last and refused is None:
+            raise TranslationError(f"'{last['words']}' says where already; '{_words(self.tags, item)}' says another place")
+        last["via"] = place
+        last["words"] += " ; " + (refused["words"] + " , " if refused else "") + _words(self.tags, item)
+        return None
+
     def ensure(self, node: Tree) -> list[dict]:
         """"make sure the oven is closed and the big light is off": one change per wish."""
         out = []
@@ -812,10 +832,16 @@ class Builder:
     def order(self, tree: Tree) -> dict:
         items = [c for c in tree.children if isinstance(c, Tree)]
         statements: list[dict] = []
+        refused_place: dict | None = None
         for item in items:
             if item.data == "reason":   # "it is late, ...": why, not what
                 continue
+            if item.data in ("notvia", "usevia"):
+                refused_place = self.where_instead(item, statements, refused_place)
+                continue
             statements += self.ensure(item) if item.data == "ensure" else [self.statement(item)]
+        if refused_place is not None:   # "heat the pie, not in the oven": where then?
+            raise TranslationError(f"'{refused_place['words']}': not there, but where? say where (e.g. 'use the hob')")
         if not statements:
             raise TranslationError(f"{self.command.strip()!r} gives a reason but asks for nothing; say what to do")
         return {"domain": "household", "command": self.command, "statements": statements}
