@@ -294,7 +294,7 @@ def test_where_an_action_happens_said_after_it(bothy):
     """ "heat the turnip? not on the griddle, use the X": the place said after the action (a
     correction); "not on X" alone, "use X" with no action before, or the same place refused and
     used, are asked."""
-    hob = world_from_text(BOTHY.replace("  basin:", "  range:    {x: 3.2, y: 3.0, width: 0.7, depth: 0.6, access: [3.5, 2.5], "
+    hob = world_from_text(BOTHY.replace("  basin:", "  range:    {x: 1.4, y: 2.9, width: 0.5, depth: 0.5, access: [1.65, 2.6], "
                                         "properties: [receptacle, heater]}\n  basin:"), "bothy.yaml")
     assert goal("Could you heat up the turnip? Not on the griddle, use the range.", hob) == \
         ({"range": ["turnip"]}, {"turnip": ["hot"]})
