@@ -57,9 +57,34 @@ class Tag:
 # ---------------------------------------------------------------------------------------------
 # the world's words
 # ---------------------------------------------------------------------------------------------
+#: the index of the last worlds read: id -> (the world, what its names were, the index); a world
+#: is read many times per command (tagging, the grammar's twins, asides, candidates)
+_INDEXES: dict[int, tuple[dict, tuple, dict]] = {}
+
+
+def _names_key(world: dict) -> tuple:
+    """What :func:`world_phrases` reads of a world, cheaply: a changed name or word is a new index."""
+    return tuple((kind, name, tuple((e or {}).get("words") or ()))
+                 for kind in ("objects", "places", "categories") for name, e in (world.get(kind) or {}).items())
+
+
 def world_phrases(world: dict) -> dict[tuple[str, ...], list[dict]]:
     """Word sequences -> the world things they name: every object, place and category name and
-    ``words`` entry, with plural forms. A phrase may name several things ("lamp")."""
+    ``words`` entry, with plural forms. A phrase may name several things ("lamp"). Read-only: the
+    index of a world is kept while its names are unchanged."""
+    key = _names_key(world)
+    hit = _INDEXES.get(id(world))
+    if hit is not None and hit[0] is world and hit[1] == key:
+        return hit[2]
+    index = _world_phrases(world)
+    if len(_INDEXES) >= 16:
+        _INDEXES.clear()
+    _INDEXES[id(world)] = (world, key, index)
+    return index
+
+
+def _world_phrases(world: dict) -> dict[tuple[str, ...], list[dict]]:
+    """:func:`world_phrases`, built."""
     index: dict[tuple[str, ...], list[dict]] = {}
 
     def add(phrase: str, kind: str, name: str, others: list[str]) -> None:
