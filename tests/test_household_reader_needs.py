@@ -303,3 +303,12 @@ def test_where_an_action_happens_said_after_it(bothy):
                     "Heat the turnip, not on the range, use the range."):
         with pytest.raises(TranslationError):
             goal(command, hob)
+
+
+def test_a_world_whose_names_change_is_read_with_its_new_names(bothy):
+    """The phrase index of a world is kept between commands (reading time): a changed name must
+    not be read with the old index."""
+    home = world_from_text(BOTHY, "bothy.yaml")
+    assert goal("Turn on the lamp.", home) == ({}, {"lamp": ["on"]})
+    home["places"]["lamp"]["words"] = ["glowstick"]
+    assert goal("Turn on the glowstick.", home) == ({}, {"lamp": ["on"]})
