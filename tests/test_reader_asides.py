@@ -66,10 +66,18 @@ def test_household_talk_is_set_aside_and_said() -> None:
     assert got["order"]["set_aside"] == ["morning", "i am off out"]
 
 
-@pytest.mark.parametrize("tail", ["not the pantry", "except", "then the rest", "and the oragne", "2", "olny"])
+@pytest.mark.parametrize("tail", ["not the pantry", "except", "then the rest", "2", "olny"])
 def test_household_operative_clauses_are_never_set_aside(tail: str) -> None:
     with pytest.raises(TranslationError):
         household(f"Put the banana in the icebox, {tail}", STUDIO)
+
+
+def test_household_a_misspelt_name_after_a_move_is_read_never_set_aside() -> None:
+    """ "..., and the oragne" names a thing (misspelt): it goes where the move puts the banana
+    ("put X in P along with Y"), it is never set aside."""
+    got = household("Put the banana in the icebox, and the oragne", STUDIO)
+    assert sorted(got["goal"]["in"]["icebox"]) == ["banana", "orange"]
+    assert "set_aside" not in got["order"]
 
 
 def test_operative_words_by_definition() -> None:

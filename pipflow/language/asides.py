@@ -101,8 +101,8 @@ def near_operative(word: str) -> bool:
     "olny", "exept", "onlu"): a misspelt "not" or "only" must never be read as talk."""
     if word in OPERATIVE:
         return True
-    if word in FUNCTION_WORDS:
-        return False  # a word of its own ("them", "then"'s neighbour), spelt right: no slip
+    if word in FUNCTION_WORDS:   # a word in its own right: "the" is no slip of "then", "on" none of "no"
+        return False
     return len(word) >= 3 and any(slip(word, o) for o in OPERATIVE if len(o) >= 3)
 
 

@@ -25,6 +25,7 @@ start: _sep* item (_sep+ item | _sep* thengap)* _sep*
 _sep: COMMA | END | @AND | @THEN | @BUT
 
 ?item: change | toggle | put | gap | away | trash | chill | request | unwant | ensure | observe | cue | meal | after | reason
+      | tend | notvia | usevia
 
 change: _vstate @UP? things @PIECES? via? exception? @HERE?
       | _vstate things @UP via? exception?
@@ -39,9 +40,11 @@ toggle: @V_TOGGLE onoff tthings @HERE?
       | @V_SHUT tthings off
       | @V_TOGGLE typo_off tthings
       | @V_SHUTDOWN tthings
+      | _vput tthings on
+      | @V_LIGHT tthings @HERE?
 typo_off: @OF
 tthings: tnp ((COMMA | @AND | COMMA @AND) tnp)*
-tnp: sel where? exception?
+tnp: sel (@SWITCHPART | @V_TOGGLE)? where? exception?
 onoff: on | off
 on: @ON
 off: @OFF | @OUT
@@ -50,8 +53,9 @@ put: _vput @UP? things source? target? exception?
    | _vput @UP? things target source
    | _vput @OUT things | _vput things @OUT
    | _vput @UP? things source @AND target
+   | _vput @UP? things @AWAY? target (@AND | COMMA @AND) things
    | _vput things @AWAY target
-   | things @SHOULD? (@GOES | @BE) target
+   | sthings @SHOULD? (@GOES | @BE) target
    | _vput @AWAY things target
    | @V_LEAVE things target
 _vput: @V_PUT | @V_THROW
@@ -76,37 +80,52 @@ trash: @V_TRASH things | @V_THROW @AWAY things | @V_THROW things @AWAY | @V_THRO
 
 request: @V_LEAVE things state
        | @V_MAKE things state
-       | @SUBJ? (@WANT | @NEED) things (@TO @BE)? state
-       | things @SHOULD @BE? state @TOO?
-       | things @NEED state
+       | @SUBJ? (@WANT | @NEED) things (@TO @BE)? state @UP?
+       | sthings @SHOULD @BE? state @TOO?
+       | sthings @NEED state
+       | sthings @NEED @ACT
 unwant: @DONOT @V_LEAVE things state
-      | things @SHOULD @NOT @BE? state
+      | sthings @SHOULD @NOT @BE? state
 ensure: @V_MAKE @SURE @THAT? wish ((COMMA | @AND | COMMA @AND) wish)*
-wish: things (@IS | @SHOULD @BE) not? state
+wish: sthings (@IS | @SHOULD @BE) not? state
 not: @NOT
 state: @ADJ | @V_OPEN | @V_SHUT | @V_CLEAN | @V_WARM | @V_STATE | on | off | @TOGGLED onoff | @V_TOGGLE onoff
 
 after: @ONCE @SUBJ @HAVE? state things
-reason: @IT @IS (@INTENS | @TOO)* @REASON
+reason: @IT @IS (@INTENS | @TOO)* @REASON | @SUBJ @IS @REASON
 meal: (@V_MAKE | @V_PREPARE | _vstate) @THE? @MEAL @HERE?
+    | (@V_MAKE | @V_PREPARE) @THE? @V_STATE @HERE?
     | @SUBJ? (@WANT | @NEED) @THE? @MEAL
 
-observe: things @IS state
+observe: sthings @IS state
 
 cue: @NOBODY @IS? activity (@TO | @ON | @AT)? things? @ANYMORE?
    | @SUBJ? @DONOT @NEED things (on | @ANYMORE)?
    | @NOBODY @NEED things @ANYMORE?
    | @SUBJ? @IS? @DONE things @ANYMORE?
    | @SUBJ @HAVE? @FINISHED activity things?
-   | things @IS @NOT @NEEDED @ANYMORE?
+   | sthings @IS @NOT @NEEDED @ANYMORE?
+   | @IT @IS (@INTENS | @TOO)* tempcue @HERE? (@WITH @THAT? things (@GOING | on))?
+   | @IT @IS (@INTENS | @TOO)* tempadj @HERE (@WITH @THAT? things (@GOING | on))?
+   | @SUBJ @IS (@INTENS | @TOO)* (tempcue | tempadj) @HERE?
    | @IT @IS (@INTENS | @TOO)* lightcue @HERE?
    | @SUBJ @CANNOT @SEE @HERE?
 activity: @ACTIVITY
 lightcue: @LIGHTCUE
+tempcue: @TEMPCUE
+tempadj: @ADJ
+
+notvia: @NOT via
+usevia: @V_USE @THE? place
+
+tend: @V_TEND @OUT? things | @V_TEND things @OUT
+    | sthings @IS? @MESS
 
 things: np ((COMMA | @AND | COMMA @AND) np)*
       | @BOTH np @AND np
 np: sel exception?
+sthings: snp ((COMMA | @AND | COMMA @AND) snp)*
+snp: sel where? exception?
 exception: COMMA? @EXCEPT things
 sel: quant? @OF? @THE? count? adj* noun @DOOR? rel?
    | @EVERYTHING where?
@@ -118,7 +137,7 @@ sel: quant? @OF? @THE? count? adj* noun @DOOR? rel?
    | @BOTH
    | @THE @DOOR
 quant: @ALL | @EVERY | @BOTH
-count: NUM @OF? | NUM @UNIT
+count: NUM @OF? | NUM @UNIT | NUM @OF @THE
 adj: @ADJ | @V_CLEAN | @V_WARM | @V_OPEN | @V_SHUT
 rel: @THAT @IS state | @THAT @IS where | @FROM place
 where: (@IN | @ON) place

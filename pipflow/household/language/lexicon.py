@@ -44,6 +44,21 @@ ACTIVITIES = {"watching": None, "reading": "light", "using": None, "listening": 
 #: "it is (too) bright" -> off, "it is dark" -> on; both speak of the world's category "light"
 LIGHT_CUES = {"bright": "off", "sunny": "off", "dark": "on", "gloomy": "on", "dim": "on"}
 LIGHT_CATEGORY_WORD = "light"
+#: "it's freezing in here", "I'm cold": the home's room heaters on; "it's roasting in here": the
+#: room heaters that are on, off. Words that say how warm the *room* is ("cold" and "hot" also
+#: describe things, so they are cues only said of the room or of a person: "it's cold in here",
+#: "I'm cold"; "freezing", "chilly" alone are cues)
+TEMPERATURE_CUES = {"freezing": "on", "chilly": "on", "nippy": "on", "perishing": "on", "baltic": "on",
+                    "frozen": "on", "roasting": "off", "boiling": "off", "sweltering": "off", "stifling": "off",
+                    "baking": "off"}
+#: the adjectives that are temperature cues when said of the room or of a person
+TEMPERATURE_ADJECTIVES = {"cold": "on", "hot": "off", "warm": "off"}
+#: what warms a room (not food): a thing that switches and is named, or worded, by one of these
+#: ("log burner", "radiator"), or a member of a category of the world so named. "stove" and
+#: "burner" alone are not here: a kitchen stove warms food, and no two people agree it is the heating
+ROOM_HEATERS = ("heater", "heaters", "radiator", "radiators", "fire", "fireplace", "log burner", "wood burner",
+                "woodburner", "wood stove", "log stove", "stove heater", "space heater", "heating",
+                "central heating", "electric fire", "gas fire")
 
 #: one-or-more-word phrases of command English -> (token class, value)
 PHRASES: dict[tuple[str, ...], tuple[str, object]] = {}
@@ -61,6 +76,8 @@ for _w, _c in ADJECTIVES.items():
     if tuple(_w.split()) not in PHRASES:
         _add("ADJ", _w, _c)
 _add("V_TOGGLE", "turn,switch,power,flip,flick")
+#: "light the stove", "light the fire": a thing that burns or shines is switched on
+_add("V_LIGHT", "light,light up", "on")
 #: "chill the juice": into the home's cold place (the category named, or with a word, "cold")
 COLD = "cold"
 _add("V_CHILL", "chill,cool,refrigerate,cool down,chill down")
@@ -77,17 +94,28 @@ _add("UNIT", "pieces of,bits of,items of")
 #: "a piece of fruit" is a determiner of one (a unit word in the determiner keeps the grammar small)
 UNIT_DETERMINERS = {"a piece of", "a bit of", "an item of"}
 _add("V_PUT", "put,place,move,bring,take,carry,set,transfer,gather,collect,stash,drop,store,stick,pop,lay,"
-     "hang,deliver,fetch,get,pick,relocate,stack,grab,shift")
+     "hang,deliver,fetch,get,pick,relocate,stack,grab,shift,clear,pack")
 _add("V_THROW", "throw,toss,chuck")
 _add("V_TRASH", "trash,discard,bin,dump,junk,get rid of,dispose of,throw away,throw out")
 _add("V_TIDY", "tidy,return,clear away")
 _add("V_LEAVE", "leave,keep")
 _add("V_MAKE", "make")
+#: "heat the pie, not in the oven, use the hob": the place an action happens, said after it
+_add("V_USE", "use,do it in,do it on")
 #: verbs that prepare a meal ("fix us some breakfast"); "make" is V_MAKE (also "make sure")
 _add("V_PREPARE", "prepare,fix,fix up,whip up,rustle up")
 _add("SURE", "sure,certain")
 _add("ACTIVITY", ",".join(ACTIVITIES))
 _add("LIGHTCUE", ",".join(LIGHT_CUES))
+for _w, _v in TEMPERATURE_CUES.items():
+    _add("TEMPCUE", _w, _v)
+#: "deal with the dishes", "sort the bedding out": what the things need, read from their states
+#: and the home (docs/household.md, "what things need"); never a guess when two things would do
+_add("V_TEND", "deal with,see to,take care of,sort,sort out,handle,attend to,do something about")
+#: "the bedding's all over the place", "the dishes are piling up": disorder said of things, a cue
+#: that they need what "deal with" reads
+_add("MESS", "all over the place,piling up,piled up,lying around,lying about,left out,scattered about,"
+     "scattered around,strewn about,strewn around,a mess,in a mess,messy,a tip")
 for _w in LIGHT_CUES:
     PHRASES[(_w,)] = ("LIGHTCUE", LIGHT_CUES[_w])
 _add("SEE", "see")
@@ -99,7 +127,7 @@ _add("EVERY", "every,each,any")
 _add("BOTH", "both")
 _add("EVERYTHING", "everything,all things,all the things,anything")
 _add("THING", "thing,things,stuff,items,objects")
-_add("AND", "and,as well as,plus,along with")
+_add("AND", "and,as well as,plus,along with,n")
 _add("THEN", "then,after that,afterwards,next,finally,and then,also")
 _add("BUT", "but")
 _add("IN", "in,into,inside,inside of,within")
@@ -114,7 +142,8 @@ _add("FROM", "from,out of,off of")
 _add("OUT", "out")
 _add("OFF", "off")
 _add("UP", "up")
-_add("AWAY", "away,where it belongs,where they belong,in its place,in their place,in their places,back in its place,"
+_add("AWAY", "away,where it belongs,where they belong,where it goes,where they go,where it lives,where they live,"
+     "away where it belongs,away where they belong,away where it goes,away where they go,in its place,in their place,in their places,back in its place,"
      "back in their place,back where it belongs,back where they belong")
 _add("BACK", "back")
 _add("OF", "of")
@@ -126,7 +155,7 @@ _add("BE", "be,stay,remain,stays,remains,go")
 _add("SHOULD", "should,must,has to,have to,needs to,need to,ought to,got to,can")
 _add("SUBJ", "i,we,you")
 _add("WANT", "want,would like,like,wish,d like,prefer")
-_add("NEED", "need,needs")
+_add("NEED", "need,needs,wants")
 _add("NEEDED", "needed,necessary,required,in use")
 #: "we are done with the laptop": the thing is not needed (a state cue, like "we do not need")
 _add("DONE", "done with,finished with,through with")
@@ -139,17 +168,22 @@ _add("ONCE", "once,after,when")
 _add("GOES", "goes,belongs,belong")
 #: reasons that ask for nothing by themselves ("it is late, turn off the TV"): dropped before a
 #: request, refused alone
-_add("REASON", "late,bedtime,time for bed,night time")
+_add("REASON", "late,bedtime,time for bed,night time,off to bed,going to bed,heading to bed,off out,going out,"
+     "heading out,off to work,going to work")
 _add("DONOT", "do not,does not,did not,no longer,dont")
 _add("ANYMORE", "anymore,any more,any longer,for now,for the night,tonight,right now")
 _add("NOBODY", "nobody,no one,noone,none of us")
 _add("INTENS", "very,so,really,quite,rather,extremely,pretty,a bit,a little,way too,much too,far too,getting")
 _add("TOO", "too,as well")
+#: "it's freezing with that fan going": a thing said to be running
+_add("GOING", "going,running,blasting,blaring,whirring,humming")
 _add("CANNOT", "can not,could not,cannot")
 _add("SOMEWHERE", "somewhere,some place,someplace")
 _add("HERE", "here,in here,in the house,in the home,in the flat,in the apartment,around the house,everywhere")
 _add("PIECES", "in half,in two,into pieces,into slices,into cubes,in pieces,in slices,into halves")
-_add("DOOR", "door,doors")
+_add("DOOR", "door,doors,lid,lids")
+#: the part of a switching thing that switches it: "turn on the lamp switch" is the lamp
+_add("SWITCHPART", "button,power button,on button,off button")
 _add("ONES", "ones")
 
 #: the negation of a wanted state is the other polarity of the same predicate ("don't leave the
@@ -175,9 +209,13 @@ MEALS: dict[str, dict] = {
                   "foods": ["egg", "bread", "toast", "bacon", "sausage", "pancake", "waffle", "porridge", "oatmeal",
                             "bagel", "croissant", "muffin", "bun", "roll"]},
 }
-_add("MEAL", ",".join(MEALS))
+#: toast is bread sliced and heated: "make (some) toast" (a meal whose word is also a verb, "toast
+#: the bread": the verb keeps its class, and the grammar reads "make" + it as the meal)
+MEALS["toast"] = {"state": "hot", "also": ["sliced"], "foods": ["bread", "loaf", "toast", "bloomer", "baguette"],
+                  "base": ["bread", "loaf", "toast", "bloomer", "baguette"]}
 for _m in MEALS:
-    PHRASES[tuple(_m.split())] = ("MEAL", _m)
+    if tuple(_m.split()) not in PHRASES:
+        PHRASES[tuple(_m.split())] = ("MEAL", _m)
 
 #: category words that name a mass, not one thing: "put away the fruit" means all of it, while
 #: "turn off the lamp" names one lamp (and is asked back when the home has several)
@@ -198,7 +236,10 @@ FILLER = {("please",), ("kindly",), ("just",), ("quickly",), ("now",), ("for", "
           ("can", "someone"), ("could", "someone"), ("someone",), ("somebody",), ("can", "somebody"),
           ("us",), ("would", "you", "mind"), ("do", "you", "mind"), ("would", "you", "please"),
           ("could", "you", "please"), ("if", "you", "would"), ("if", "you", "could"),
-          ("do", "not", "forget", "to"), ("remember", "to"), ("make", "sure", "to"), ("you", "can")}
+          ("do", "not", "forget", "to"), ("remember", "to"), ("make", "sure", "to"), ("you", "can"),
+          ("pls",), ("plz",), ("plse",), ("thx",), ("ta",), ("cheers",),
+          ("while", "you", "are", "at", "it"), ("when", "you", "get", "a", "chance"), ("when", "you", "can"),
+          ("be", "a", "dear", "and"), ("be", "a", "love", "and"), ("be", "an", "angel", "and"), ("be", "a", "star", "and")}
 #: how the steps are to be run, not what the home should end like: a goal is the end state, and
 #: the planner and the allocator decide the order and what runs in parallel. A clause made only of
 #: "do" + what it does it to + one of these, or of one of these alone, is read as no condition
@@ -210,6 +251,21 @@ MANNERS = {("in", "parallel"), ("at", "the", "same", "time"), ("at", "once"), ("
 MANNER_OBJECTS = {("both",), ("them",), ("it",), ("these",), ("those",), ("all",), ("everything",),
                   ("both", "of", "them"), ("all", "of", "them"), ("the", "two"), ("the", "lot"), ()}
 ORDER_OPENERS = {"first", "firstly", "start", "to", "with"}
+#: words that put a step first or last ("wash the mug first"): the order of the steps, which the
+#: plan decides; an ordinal after a determiner ("the first banana") is no such word (refused)
+ORDER_WORDS = {"first", "firstly", "last", "lastly", "second", "secondly"}
+#: determiners after which "first" is an ordinal ("the first mug")
+ORDINAL_DETERMINERS = {"the", "a", "an", "my", "your", "our", "this", "that", "its", "their", "his", "her"}
+#: containers people name an amount by ("a bowl of cherries", "a bag of flour"): no thing of the
+#: home model holds another, so "a bowl of X" is some X; when the home has a thing named by the
+#: container word itself (a bowl), it is refused: the bowl may be meant too
+MEASURES = {"bowl", "bowlful", "plate", "plateful", "cup", "glass", "mug", "bag", "box", "basket", "tin", "can", "jar",
+            "bottle", "handful", "pile", "stack", "bunch", "punnet", "packet", "pack", "tray", "dish", "carton",
+            "crate", "sack", "pot", "jug", "tub", "heap", "load"}
+#: "the quilt goes on the table for airing": what for, not what the home should end like: "for" +
+#: a word of no verb of the lexicon in -ing, or one of these, at the end of a clause
+PURPOSES = {("later",), ("tomorrow",), ("the", "morning"), ("the", "weekend"), ("now",), ("safekeeping",),
+            ("safe", "keeping")}
 
 #: filler words a misspelling may be read as ("plese"): only these, long and close to no
 #: content word, so that a misspelt content word is never dropped as politeness

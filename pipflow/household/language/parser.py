@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import functools
 import json
+import re
 from dataclasses import dataclass, field
 from typing import Callable
 
@@ -29,10 +30,11 @@ from lark.visitors import CollapseAmbiguities
 
 from pipflow.errors import TranslationError
 from pipflow.household.language.grammar import NOUN_DUAL, grammar_text
+from pipflow.household.world import members
 from pipflow.household.language.lexicon import (ACTIVITIES, COLD, FILLER, FILLER_TYPO_TARGETS, LIGHT_CATEGORY_WORD, MANNER_OBJECTS,
-                                                MANNERS, MARKS, MEALS, OPPOSITE, PHRASES, UNIT_DETERMINERS, plurals,
-                                                words_of)
-from pipflow.language.asides import FUNCTION_WORDS, clauses, content_free, said
+                                                MANNERS, MARKS, MEALS, MEASURES, OPPOSITE, ORDER_WORDS, ORDINAL_DETERMINERS,
+                                                PHRASES, PURPOSES, TEMPERATURE_ADJECTIVES, UNIT_DETERMINERS, plurals, words_of)
+from pipflow.language.asides import EXCLUSIVITY, FUNCTION_WORDS, NEGATION, clauses, content_free, said
 from pipflow.language.characters import refuse_unread
 from pipflow.language.numbers import read_number
 from pipflow.language.spelling import distance
@@ -55,9 +57,34 @@ class Tag:
 # ---------------------------------------------------------------------------------------------
 # the world's words
 # ---------------------------------------------------------------------------------------------
+#: the index of the last worlds read: id -> (the world, what its names were, the index); a world
+#: is read many times per command (tagging, the grammar's twins, asides, candidates)
+_INDEXES: dict[int, tuple[dict, tuple, dict]] = {}
+
+
+def _names_key(world: dict) -> tuple:
+    """What :func:`world_phrases` reads of a world, cheaply: a changed name or word is a new index."""
+    return tuple((kind, name, tuple((e or {}).get("words") or ()))
+                 for kind in ("objects", "places", "categories") for name, e in (world.get(kind) or {}).items())
+
+
 def world_phrases(world: dict) -> dict[tuple[str, ...], list[dict]]:
     """Word sequences -> the world things they name: every object, place and category name and
-    ``words`` entry, with plural forms. A phrase may name several things ("lamp")."""
+    ``words`` entry, with plural forms. A phrase may name several things ("lamp"). Read-only: the
+    index of a world is kept while its names are unchanged."""
+    key = _names_key(world)
+    hit = _INDEXES.get(id(world))
+    if hit is not None and hit[0] is world and hit[1] == key:
+        return hit[2]
+    index = _world_phrases(world)
+    if len(_INDEXES) >= 16:
+        _INDEXES.clear()
+    _INDEXES[id(world)] = (world, key, index)
+    return index
+
+
+def _world_phrases(world: dict) -> dict[tuple[str, ...], list[dict]]:
+    """:func:`world_phrases`, built."""
     index: dict[tuple[str, ...], list[dict]] = {}
 
     def add(phrase: str, kind: str, name: str, others: list[str]) -> None:
@@ -128,7 +155,8 @@ PUNCT = {".": "END", ";": "END", "!": "END", "?": "END", ":": "END", ",": "COMMA
 #: token classes whose words a typo may be read as: content words only. A function word is short
 #: and close to many words ("fork" is not "for", "house" is not "those"), so it is never guessed.
 CONTENT_CLASSES = {"V_STATE", "V_OPEN", "V_SHUT", "V_CLEAN", "V_WARM", "V_TOGGLE", "V_PUT", "V_THROW", "V_TRASH", "V_CHILL",
-                   "V_TIDY", "V_LEAVE", "V_MAKE", "V_PREPARE", "ADJ", "ACTIVITY", "LIGHTCUE", "TOGGLED", "MEAL"}
+                   "V_TIDY", "V_LEAVE", "V_MAKE", "V_PREPARE", "ADJ", "ACTIVITY", "LIGHTCUE", "TOGGLED", "MEAL", "V_LIGHT",
+                   "TEMPCUE", "V_TEND"}
 
 
 def _vocabulary(world_index: dict) -> set[str]:
@@ -138,6 +166,13 @@ def _vocabulary(world_index: dict) -> set[str]:
     vocab |= FILLER_TYPO_TARGETS
     vocab |= {w for k in world_index for w in k}
     return {w for w in vocab if len(w) >= 3}
+
+
+def known_word(w: str, index: dict, vocab: set[str]) -> bool:
+    """Whether the tagger reads ``w`` as it is: a word of the world, of the lexicon, of the
+    politeness list, a number or a mark."""
+    return w in vocab or w in PUNCT or w.isdigit() or any(w in key for key in PHRASES) or \
+        any(w in key for key in index) or any(w in key for key in FILLER) or bool(read_number([w], 0))
 
 
 def _typo_of(word: str, vocab: set[str]) -> list[str]:
@@ -183,9 +218,14 @@ def _without_manner(words: list[str], notes: list[str]) -> list[str]:
                 out.append(w)   # a sentence's end stays; a comma goes with the clause
             start = k + 1
             continue
-        if clause[:1] == ["first"] or clause[:1] == ["firstly"]:
-            notes.append(f"'{clause[0]}': the order of the steps; the plan decides it")
-            clause = clause[1:]
+        kept = []
+        for j, x in enumerate(clause):   # "wash the mug first", "first the mug, then the plate"
+            if x in ORDER_WORDS and not (j and clause[j - 1] in ORDINAL_DETERMINERS) and \
+                    not (j + 1 < len(clause) and clause[j + 1] == "of"):
+                notes.append(f"'{x}': the order of the steps; the plan decides it")
+                continue
+            kept.append(x)
+        clause = _without_purpose(kept, notes)
         out += clause + ([w] if k < len(words) else [])
         start = k + 1
     while out and out[-1] == ",":
@@ -193,17 +233,98 @@ def _without_manner(words: list[str], notes: list[str]) -> list[str]:
     return out
 
 
+def _without_purpose(clause: list[str], notes: list[str]) -> list[str]:
+    """A clause without its closing purpose ("... for airing", "... for later": lexicon
+    ``PURPOSES``, or "for" + an -ing word that is no verb of the lexicon): what for, not what the
+    home should end like. "for washing" (a verb the home can do) is kept, and refused: it may ask
+    for the washing too."""
+    for n in (1, 2):
+        if len(clause) > n + 1 and clause[-n - 1] == "for":
+            tail = tuple(clause[-n:])
+            if tail in PURPOSES or (n == 1 and tail[0].endswith("ing") and len(tail[0]) > 5
+                                    and not any(tail[0] in key for key in PHRASES)):
+                notes.append(f"'for {' '.join(tail)}' says what for, not what the home should end like")
+                return clause[:-n - 1]
+    return clause
+
+
+def _measures(words: list[str], index: dict, notes: list[str]) -> list[str]:
+    """ "a bowl of cherries" as "some cherries" (lexicon ``MEASURES``), unless the home has a thing
+    named by the container word (then it stays, and is refused: the bowl may be meant too)."""
+    out: list[str] = []
+    k = 0
+    while k < len(words):
+        w = words[k]
+        if w in ("a", "an", "one") and k + 3 < len(words) and words[k + 2] == "of" and \
+                (words[k + 1] in MEASURES or words[k + 1] + "s" in MEASURES or words[k + 1].rstrip("s") in MEASURES) \
+                and (words[k + 1],) not in index and words[k + 3] not in PUNCT:
+            notes.append(f"'{w} {words[k + 1]} of' read as 'some' (an amount of what follows, not a thing of the home)")
+            out.append("some")
+            k += 3
+            continue
+        out.append(w)
+        k += 1
+    return out
+
+
+def _located(tags: list["Tag"], world: dict, notes: list[str]) -> list["Tag"]:
+    """ "the table lamp" where the home has no "table lamp" but a table and lamps: the lamp that
+    is on the table, when the place word is followed at once by a name of objects and some of
+    them are in that place; the other lamps are not meant. None there: left as said (refused)."""
+    out: list[Tag] = []
+    for t in tags:
+        prev = out[-1] if out else None
+        if t.cls == "NOUN" and prev is not None and prev.cls == "NOUN" and prev.nouns and \
+                all(r["kind"] == "place" for r in prev.nouns):
+            places = {r["name"] for r in prev.nouns}
+            objects = [o for r in t.nouns for o in ([r["name"]] if r["kind"] == "object" else
+                                                     members(world, r["name"]) if r["kind"] == "category" else [])]
+            there = [o for o in dict.fromkeys(objects) if o in world["objects"] and world["objects"][o]["in"] in places]
+            if there:
+                plural = any(r.get("plural") for r in t.nouns)
+                notes.append(f"read '{prev.words} {t.words}' as {', '.join(there)} (in {', '.join(sorted(places))})")
+                out[-1] = Tag("NOUN", None, f"{prev.words} {t.words}",
+                              [{"kind": "object", "name": o, "plural": plural} for o in there])
+                continue
+        out.append(t)
+    return out
+
+
+#: the tags a sentence that only restates the order of things has: "first the mug, then the plate"
+_ORDER_ONLY = {"THE", "NOUN", "COMMA", "AND", "THEN"}
+
+
+def _restated_order(tags: list[Tag], notes: list[str]) -> list[Tag]:
+    """The tags without a sentence that only lists things already named, in an order ("wash the
+    mug and the plate: first the mug, then the plate"): the order of the steps, which the plan
+    decides. A sentence that names anything new is kept (and read, or refused)."""
+    out: list[Tag] = []
+    named: set[str] = set()
+    start = 0
+    for k in range(len(tags) + 1):
+        if k < len(tags) and tags[k].cls != "END":
+            continue
+        sentence = tags[start:k]
+        nouns = [t for t in sentence if t.cls == "NOUN" or t.cls.endswith(NOUN_DUAL)]
+        names = {r["name"] for t in nouns for r in t.nouns}
+        if out and nouns and names <= named and all(t.cls in _ORDER_ONLY or t.cls.endswith(NOUN_DUAL) for t in sentence):
+            notes.append(f"'{' '.join(t.words for t in sentence)}': the order of the steps; the plan decides it")
+        else:
+            out += sentence + tags[k:k + 1]
+        named |= names
+        start = k + 1
+    return out
+
+
 def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
     """The command as grammar tokens (module docstring, step 1)."""
     notes = notes if notes is not None else []
     index = world_phrases(world)
-    words = _without_manner(words_of(command), notes)
+    words = _measures(_without_manner(words_of(command), notes), index, notes)
     vocab = _vocabulary(index)
     # typos: a word known nowhere, close to exactly one known word, is read as that word
     for k, w in enumerate(words):
-        known = w in vocab or w in PUNCT or w.isdigit() or any(w in key for key in PHRASES) or \
-            any(w in key for key in index) or any(w in key for key in FILLER) or read_number([w], 0)
-        if known or len(w) < 4:
+        if known_word(w, index, vocab) or len(w) < 4:
             continue
         close = _typo_of(w, vocab)
         if close and len({_meaning(c, index) for c in close}) == 1:
@@ -250,11 +371,14 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
             cls, value = PHRASES[tuple(words[i:i + n])]
             out.append(Tag(cls, value, text))
         i += n
+    out = _restated_order(_located(out, world, notes), notes)
     if unknown:
         names = sorted(set(world.get("objects") or {}) | set(world.get("places") or {}))
-        raise TranslationError(
+        error = TranslationError(
             f"{', '.join(repr(u) for u in dict.fromkeys(unknown))} names nothing in this world and is no word the "
             f"offline parser knows (in {command.strip()!r}); things of this world: {', '.join(names)}")
+        error.unread = list(dict.fromkeys(unknown))  # type: ignore[attr-defined]  # for candidate readings
+        raise error
     return out
 
 
@@ -292,7 +416,9 @@ def _words(tags: list[Tag], node: Tree | Token) -> str:
 
 
 #: lexicon classes of function words: alone in a clause they carry nothing an order needs
+#: (and words that only colour a cue or a time: "for the night", "in here", "late", "really")
 GLUE_CLASSES = {"THE", "THAT", "IT", "IS", "SUBJ", "BE", "HAVE", "SHOULD", "INTENS", "OF", "AT", "IN", "ON", "OFF",
+                "ANYMORE", "REASON", "HERE",
                 "OUT", "UP", "TO", "FROM", "WITH", "AND", "SEE", "SURE"}
 #: marks that end a clause, for setting content-free clauses aside
 CLAUSE_MARKS = {",", ".", ";", "!", "?", ":"}
@@ -303,9 +429,13 @@ def _content(world: dict) -> Callable[[str], bool]:
     world name (or a misspelling of one, or of a content word of the lexicon), a number, or a
     lexicon word that is no function word ("put", "off" with a verb is content by the verb)."""
     index = world_phrases(world)
-    world_words = {w for k in index for w in k} - FUNCTION_WORDS   # "of" of "bottle of water" is no name
+    # the words that name something alone: a one-word name and the head (last word) of a longer
+    # one; a modifier alone names nothing ("mooring" of mooring_line in "we're mooring up"), and
+    # "of" of "bottle of water" is no name
+    world_words = {k[-1] for k in index if "of" not in k} | {k[0] for k in index if "of" in k}
+    world_words = {w for w in world_words if (w,) in index} - FUNCTION_WORDS
     lexicon_words = {w for k, (cls, _) in PHRASES.items() if cls not in GLUE_CLASSES for w in k} - FUNCTION_WORDS
-    vocab = _vocabulary(index)
+    vocab = {w for w in _vocabulary(index) if w in world_words or w in lexicon_words or w in FILLER_TYPO_TARGETS}
 
     def content(w: str) -> bool:
         if w in world_words or w in lexicon_words or w.isdigit() or read_number([w], 0):
@@ -316,15 +446,42 @@ def _content(world: dict) -> Callable[[str], bool]:
     return content
 
 
-def without_asides(command: str, world: dict) -> tuple[str, list[str]] | None:
-    """The command without its content-free clauses (:mod:`pipflow.language.asides`) and the
-    words of those, or None when it has none (or nothing else)."""
-    words = words_of(command)
+#: how a clause opens when it says what the speaker will do ("I'll grab the milk myself", "I'm
+#: about to unpack the shopping"): no order for the robots
+SPEAKER_OPENERS = (("i", "will"), ("we", "will"), ("i", "am", "about", "to"), ("we", "are", "about", "to"),
+                   ("i", "am", "going", "to"), ("we", "are", "going", "to"), ("i", "shall"), ("we", "shall"))
+#: verbs after such an opener that make it a wish, not the speaker's doing ("I'll need the oven on",
+#: "I'll take the tea in the cabin", "I'm going to want ..."): never set aside
+WISH_VERBS = {"need", "want", "like", "have", "take", "be", "wish", "prefer", "love"}
+
+
+def speaker_doing(words: tuple[str, ...]) -> bool:
+    """Whether a clause says what the speaker will do ("I'll grab the milk myself"): it opens with
+    :data:`SPEAKER_OPENERS`, its verb is no wish (:data:`WISH_VERBS`) and it has no negation or
+    exclusivity ("I'll not ...", "I'll only ..."), which would bear on what the robots do."""
+    for opener in SPEAKER_OPENERS:
+        if words[:len(opener)] == opener and len(words) > len(opener):
+            rest = words[len(opener):]
+            return rest[0] not in WISH_VERBS and not any(w in NEGATION or w in EXCLUSIVITY for w in rest)
+    return False
+
+
+#: marks that set a part of a sentence off like commas: dashes, brackets
+_PARENTHESES = re.compile(r"\s[-\u2010-\u2015]+\s|[\u2013\u2014\u2015()\[\]]")
+
+
+def without_asides(command: str, world: dict) -> tuple[str, list[str], list[str]] | None:
+    """The command without its content-free clauses (:mod:`pipflow.language.asides`) and its
+    clauses that say what the speaker will do (:func:`speaker_doing`): (the rest, the words of
+    the first, the words of the second), or None when it has none (or nothing else). Dashes and
+    brackets set a clause off as commas do ("throw the fish away - it smells off - and ...")."""
+    words = words_of(_PARENTHESES.sub(" , ", command))
     content = _content(world)
     free = [c for c in clauses(words, CLAUSE_MARKS) if content_free(c.words, content)]
-    if not free:
+    own = [c for c in clauses(words, CLAUSE_MARKS) if c not in free and speaker_doing(c.words)]
+    if not free and not own:
         return None
-    drop = {k for c in free for k in range(c.start, c.end)}
+    drop = {k for c in free + own for k in range(c.start, c.end)}
     kept = [w for k, w in enumerate(words) if k not in drop]
     # a clause mark left with nothing before it in its sentence goes too
     out: list[str] = []
@@ -336,7 +493,7 @@ def without_asides(command: str, world: dict) -> tuple[str, list[str]] | None:
         out.append(w)
     if not [w for w in out if w not in CLAUSE_MARKS]:
         return None
-    return " ".join(out), [" ".join(c.words) for c in free]
+    return " ".join(out), [" ".join(c.words) for c in free], [" ".join(c.words) for c in own]
 
 
 def parse(command: str, world: dict, notes: list[str] | None = None) -> list[dict]:
@@ -361,10 +518,12 @@ def parse(command: str, world: dict, notes: list[str] | None = None) -> list[dic
             readings = _parse(trimmed[0], world, mine)
         except TranslationError as again:
             # what is left after the talk is set aside is what does not read: say that
-            raise TranslationError(f"{again} (set aside: {'; '.join(repr(a) for a in trimmed[1])})",
+            raise TranslationError(f"{again} (set aside: {'; '.join(repr(a) for a in trimmed[1] + trimmed[2])})",
                                    candidates=again.candidates) from None
-    notes += mine + [said(trimmed[1])]
-    return [{**r, "set_aside": trimmed[1]} for r in readings]
+    notes += mine + ([said(trimmed[1])] if trimmed[1] else []) + [
+        f"'{own}' says what the speaker will do: no order for the robots (set aside)" for own in trimmed[2]]
+    extra = {**({"set_aside": trimmed[1]} if trimmed[1] else {}), **({"speaker_does": trimmed[2]} if trimmed[2] else {})}
+    return [{**r, **extra} for r in readings]
 
 
 def _parse(command: str, world: dict, notes: list[str]) -> list[dict]:
@@ -551,7 +710,7 @@ class Builder:
         return out
 
     def things(self, node: Tree) -> list[dict]:
-        return [self.np(n) for n in self._subs(node, "np") + self._subs(node, "tnp")]
+        return [self.np(n) for n in self._subs(node, "np") + self._subs(node, "tnp") + self._subs(node, "snp")]
 
     def target(self, node: Tree) -> dict:
         p = self._sub(node, "place") or self._sub(node, "bare")
@@ -566,7 +725,7 @@ class Builder:
     def statement(self, node: Tree) -> dict:
         kind = node.data
         words = _words(self.tags, node)
-        th = self._sub(node, "things") or self._sub(node, "tthings")
+        th = self._sub(node, "things") or self._sub(node, "tthings") or self._sub(node, "sthings")
         things = self.things(th) if th is not None else []
         exc = self._sub(node, "exception")
         if kind == "change":
@@ -580,10 +739,14 @@ class Builder:
                 st["via"] = self.place(self._sub(via, "place"))
             elif via is not None:   # "heat the pan on it"
                 st["via"] = {"words": _words(self.tags, via), "pronoun": True}
+        elif kind == "toggle" and self._has(node, "V_LIGHT"):   # "light the stove"
+            st = {"op": "change", "things": things, "to": "on"}
         elif kind == "toggle":
             st = {"op": "change", "things": things, "to": self.state(node)}
         elif kind == "put":
-            st = {"op": "put", "things": things}
+            # "put it in the cabinet along with the bowl": the things after the place go there too
+            subs = self._subs(node, "things") + self._subs(node, "sthings")
+            st = {"op": "put", "things": [s for sub in subs for s in self.things(sub)]}
             src, tgt = self._sub(node, "source"), self._sub(node, "target")
             if src is not None:
                 st["from"] = self.place(self._sub(src, "place"))
@@ -602,12 +765,22 @@ class Builder:
         elif kind == "chill":
             verb = next(t for t in self._tokens(node) if self._cls(t) == "V_CHILL")
             st = {"op": "put", "things": things, "to": {"words": self.tag_of(verb).words, "quality": COLD}}
+        elif kind == "request" and self._has(node, "ACT"):   # "the saucepan wants a good scrub"
+            act = next(t for t in self._tokens(node) if self._cls(t) == "ACT")
+            st = {"op": "change", "things": things, "to": str(self.tag_of(act).value)}
         elif kind in ("request", "after"):   # "after": "once you have washed the pan, ..." (done first)
             st = {"op": "change", "things": things, "to": self.state(self._sub(node, "state"))}
         elif kind == "unwant":   # "don't leave the fridge open", "the TV shouldn't be on": the other polarity
             st = {"op": "change", "things": things, "to": OPPOSITE[self.state(self._sub(node, "state"))]}
         elif kind == "meal":
-            meal = str(self.tag_of(next(t for t in self._tokens(node) if self._cls(t) == "MEAL")).value)
+            named = next((t for t in self._tokens(node) if self._cls(t) == "MEAL"), None)
+            if named is None:   # "make some toast": a meal whose word is a verb too
+                said = self.tag_of(next(t for t in self._tokens(node)[1:] if self._cls(t) == "V_STATE")).words
+                if said not in MEALS:
+                    raise TranslationError(f"'{words}': '{said}' is no meal the offline parser knows")
+                meal = said
+            else:
+                meal = str(self.tag_of(named).value)
             verb = self.tag_of(self._tokens(node)[0])
             if verb.value is not None and verb.value != MEALS[meal]["state"]:   # "cook breakfast", never "heat a salad"
                 raise TranslationError(f"'{words}': a {meal} is not made by '{verb.words}' "
@@ -617,6 +790,8 @@ class Builder:
             st = {"op": "observe", "things": things, "is": self.state(self._sub(node, "state"))}
         elif kind == "cue":
             st = self.cue(node, things)
+        elif kind == "tend":   # "deal with the dishes", "the bedding is all over the place"
+            st = {"op": "tend", "things": things}
         else:  # a rule of the grammar without a statement: a bug, not a user error
             raise AssertionError(f"no statement for grammar rule {kind!r}")
         if exc is not None:   # "put all the fruit in the fridge but not the watermelon"
@@ -627,7 +802,14 @@ class Builder:
     def cue(self, node: Tree, things: list[dict]) -> dict:
         st: dict = {"op": "cue", "things": things}
         act, light = self._sub(node, "activity"), self._sub(node, "lightcue")
-        if act is not None:
+        warmth = self._sub(node, "tempcue") or self._sub(node, "tempadj")
+        if warmth is not None:
+            t = self.tag_of(self._tokens(warmth)[0])
+            to = TEMPERATURE_ADJECTIVES.get(str(t.value)) if warmth.data == "tempadj" else str(t.value)
+            if to is None:   # "it is dirty in here": no temperature, no cue
+                raise TranslationError(f"'{t.words}' says nothing of how warm it is")
+            st.update(to=to, cue=f"it is {t.words}", heating=True)
+        elif act is not None:
             word = self.tag_of(self._tokens(act)[0]).words
             st.update(to="off", cue=f"nobody is {word}")
             if ACTIVITIES.get(word):
@@ -641,6 +823,26 @@ class Builder:
             st.update(to="off", cue="not needed")
         return st
 
+    def where_instead(self, item: Tree, statements: list[dict], refused: dict | None) -> dict | None:
+        """ "heat up the pie? not in the oven, use the hob": the place the change before happens,
+        said after it; the place said not to use must not be the one it had. Returns the refused
+        place still waiting for its replacement (None once said)."""
+        if item.data == "notvia":
+            via = self._sub(item, "via")
+            return {"words": _words(self.tags, item), "place": self.place(self._sub(via, "place"))}
+        last = statements[-1] if statements else None
+        if last is None or last.get("op") != "change":
+            raise TranslationError(f"'{_words(self.tags, item)}': use it for what? (no action before it)")
+        place = self.place(self._sub(item, "place"))
+        if refused is not None and {r["name"] for r in refused["place"]["readings"]} & \
+                {r["name"] for r in place["readings"]}:
+            raise TranslationError(f"'{refused['words']}' and '{_words(self.tags, item)}' name the same place")
+        if "via" in last and refused is None:
+            raise TranslationError(f"'{last['words']}' says where already; '{_words(self.tags, item)}' says another place")
+        last["via"] = place
+        last["words"] += " ; " + (refused["words"] + " , " if refused else "") + _words(self.tags, item)
+        return None
+
     def ensure(self, node: Tree) -> list[dict]:
         """"make sure the oven is closed and the big light is off": one change per wish."""
         out = []
@@ -648,17 +850,23 @@ class Builder:
             to = self.state(self._sub(wish, "state"))
             if self._sub(wish, "not") is not None:   # "make sure the oven is not on"
                 to = OPPOSITE[to]
-            out.append({"op": "change", "things": self.things(self._sub(wish, "things")),
+            out.append({"op": "change", "things": self.things(self._sub(wish, "sthings")),
                         "to": to, "words": _words(self.tags, wish)})
         return out
 
     def order(self, tree: Tree) -> dict:
         items = [c for c in tree.children if isinstance(c, Tree)]
         statements: list[dict] = []
+        refused_place: dict | None = None
         for item in items:
             if item.data == "reason":   # "it is late, ...": why, not what
                 continue
+            if item.data in ("notvia", "usevia"):
+                refused_place = self.where_instead(item, statements, refused_place)
+                continue
             statements += self.ensure(item) if item.data == "ensure" else [self.statement(item)]
+        if refused_place is not None:   # "heat the pie, not in the oven": where then?
+            raise TranslationError(f"'{refused_place['words']}': not there, but where? say where (e.g. 'use the hob')")
         if not statements:
             raise TranslationError(f"{self.command.strip()!r} gives a reason but asks for nothing; say what to do")
         return {"domain": "household", "command": self.command, "statements": statements}

@@ -29,12 +29,21 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from pipflow.errors import Refusal, TranslationError
-from pipflow.household.language.lexicon import COLD, INDEFINITE, MASS_NOUNS, MEALS, REACHABLE, VIA_PROPERTY, plurals, words_of
+from pipflow.household.language.lexicon import (COLD, INDEFINITE, MASS_NOUNS, MEALS, REACHABLE, ROOM_HEATERS, VIA_PROPERTY,
+                                                plurals, words_of)
 from pipflow.household.language.order import check_order
 from pipflow.household.problem import CONDITIONS
 from pipflow.household.world import entity, initial_state, members
 
 _FLAG = {"is-open": "open", "is-on": "on", "dirty": "dirty", "sliced": "sliced", "hot": "hot"}
+
+
+def _choice(error: TranslationError, words: str, names: list[str]) -> TranslationError:
+    """The error with what it asks to choose among: ``choices`` = (the words that name several
+    things, their names), from which the refusal's candidate readings are built
+    (:mod:`pipflow.household.language.candidates`)."""
+    error.choices = (words, list(names))  # type: ignore[attr-defined]
+    return error
 
 
 def holds_now(world: dict, name: str, cond: str) -> bool:
@@ -71,8 +80,10 @@ class _Goal:
 class Resolver:
     """One order in one world; see the module docstring."""
 
-    def __init__(self, world: dict):
+    def __init__(self, world: dict, choose: dict[str, str] | None = None):
         self.world = world
+        #: words that name several things -> the one a user chose among them (a candidate reading)
+        self.choose = dict(choose or {})
         self.goal = _Goal()
         self.last: list[str] = []
         self.picked: dict[str, str] = {}          # objects taken with no place yet -> words
@@ -187,8 +198,11 @@ class Resolver:
             if n != len(names):
                 raise TranslationError(f"'{words}': '{what}' asks for {n} of {len(names)} things named so "
                                        f"({', '.join(names)}); say which")
+        elif not plural and len(names) > 1 and self.choose.get(what) in names:
+            names = [self.choose[what]]
         elif not plural and len(names) > 1:
-            raise TranslationError(f"'{words}': '{what}' could be any of {', '.join(names)}; say which")
+            raise _choice(TranslationError(f"'{words}': '{what}' could be any of {', '.join(names)}; say which"),
+                          what, names)
         if sel.get("both") and len(names) != 2:
             raise TranslationError(f"'{words}': 'both' but '{what}' are {len(names)} things")
         if not names:
@@ -247,8 +261,11 @@ class Resolver:
         names = list(dict.fromkeys(names))
         if not names:
             raise TranslationError(f"'{words}': '{place['words']}' is not a place of this world")
+        if len(names) > 1 and self.choose.get(place["words"]) in names:
+            names = [self.choose[place["words"]]]
         if len(names) > 1:
-            raise TranslationError(f"'{words}': '{place['words']}' could be {', '.join(names)}; say which")
+            raise _choice(TranslationError(f"'{words}': '{place['words']}' could be {', '.join(names)}; say which"),
+                          place["words"], names)
         return names[0]
 
     # goal building -----------------------------------------------------------------------
@@ -413,6 +430,8 @@ class Resolver:
             self.cue(st, words)
         elif op == "meal":
             self.meal(st, words)
+        elif op == "tend":
+            self.tend(st, words)
         else:
             raise TranslationError(f"'{words}': unknown statement {op!r}")
 
@@ -483,11 +502,84 @@ class Resolver:
             self.put(n, place, words)
         self.last = [n for n, _ in named] or self.last
 
+    def room_heaters(self) -> list[str]:
+        """The things that warm the room (lexicon ``ROOM_HEATERS``): members of a category of the
+        world named or worded so, else things that switch whose name or words are so."""
+        wanted = {" ".join(words_of(w)) for w in ROOM_HEATERS}
+        cats = [c for c, e in (self.world.get("categories") or {}).items()
+                if {" ".join(words_of(w)) for w in [c] + list((e or {}).get("words") or [])} & wanted]
+        found = [n for c in cats for n in members(self.world, c)]
+        if not found:
+            found = [n for n, e in {**self.world["places"], **self.world["objects"]}.items()
+                     if {" ".join(words_of(w)) for w in [n] + list(e.get("words") or [])} & wanted]
+        return [n for n in dict.fromkeys(found) if applies(self.world, n, "on")]
+
+    def warmth(self, st: dict, words: str) -> None:
+        """ "it is freezing in here": the room heaters on; "it is roasting in here": the room
+        heaters that are on, off. Things the sentence names are what it speaks of ("it is freezing
+        with that fan going": the fan off). No heater, or none on when it is too warm: asked."""
+        cond = st["to"]
+        if st["things"]:   # the thing named is the cause: a heater on/off as asked, anything else the other way
+            heaters = set(self.room_heaters())
+            for n, explicit in self.objects(st["things"], words, cond="on"):
+                self.want(n, cond if n in heaters else ("off" if cond == "on" else "on"), explicit, words)
+            return
+        every = self.room_heaters()
+        # a cue asks for a change: a heater already as asked is no condition
+        heaters = [n for n in every if not holds_now(self.world, n, cond)]
+        if not heaters:
+            raise TranslationError(f"'{words}': which thing? this home has no room heater "
+                                   f"{'that is on ' if cond == 'off' else 'that is off ' if every else ''}(a heater, "
+                                   "radiator, fire or log burner that switches); say what to switch")
+        self.goal.notes.append(f"'{words}': read as the room's heating {cond} ({', '.join(heaters)}; "
+                               "docs/household.md, cues)")
+        for n in heaters:
+            self.want(n, cond, False, words)
+        self.last = heaters
+
+    def tend(self, st: dict, words: str) -> None:
+        """What things need ("deal with the dishes", "the bedding is all over the place"), read
+        from their states and the home: when any of them is dirty, the dirty ones washed (the
+        clean ones are left); else the ones away from their category's home put there. Things
+        that need neither, or a need the home cannot meet, are asked, never guessed."""
+        named = self.objects(st["things"], words)
+        names = [n for n, _ in named]
+        dirty = [n for n in names if applies(self.world, n, "clean") and holds_now(self.world, n, "dirty")]
+        if dirty:
+            left = [n for n in names if n not in dirty]
+            self.goal.notes.append(f"'{words}': read as {', '.join(dirty)} washed (dirty)"
+                                   + (f"; {', '.join(left)} left as found" if left else ""))
+            for n in dirty:
+                self.want(n, "clean", True, words)
+            self.last = dirty
+            return
+        homes = {}
+        for n in names:
+            e = entity(self.world, n)
+            home = [self.world["categories"][c]["home"] for c in e["categories"]
+                    if (self.world["categories"].get(c) or {}).get("home")]
+            if n in self.world["objects"] and home and "pickupable" in e["properties"]:
+                homes[n] = home[0]
+        away = [n for n in names if n in homes and self.world["objects"][n]["in"] != homes[n]]
+        if not away:
+            raise TranslationError(f"'{words}': what should be done with {', '.join(names) or 'it'}? "
+                                   "(nothing of it is dirty or away from its home); say what to do")
+        self.goal.notes.append(f"'{words}': read as {', '.join(names)} put where {'they belong' if len(names) > 1 else 'it belongs'}")
+        for n in names:
+            if n in homes:
+                self.put(n, homes[n], words)
+        self.last = names
+
     def cue(self, st: dict, words: str) -> None:
+        if st.get("heating"):
+            self.warmth(st, words)
+            return
         cond = st["to"]
         default = st.get("default")
+        # the cue's category: named or worded by its word, in the singular or the plural ("lights")
+        forms = {default, *plurals(default)} if default else set()
         cats = [c for c, e in (self.world.get("categories") or {}).items()
-                if default and (c == default or default in ((e or {}).get("words") or []))]
+                if default and (c in forms or forms & set((e or {}).get("words") or []))]
         # an observation answers the cue when it is about what the cue speaks of ("the desk lamp
         # is on and nobody is reading": a light); "the TV is on and nobody is reading" is not
         fits = [o for o in self.observed
@@ -545,13 +637,15 @@ class Resolver:
                 raise Refusal(f"'{words}': this home has no {' or '.join(base[:3])} (or other base for a {meal}), "
                               f"so the offline reading will not guess one; say which things should be {cond}")
             source = f"the {meal} foods of the lexicon"
-        able = [n for n in foods if need in self.world["objects"][n]["properties"]]
+        also = list(spec.get("also") or [])   # toast: sliced too
+        able = [n for n in foods if all(CONDITIONS[c][2] in self.world["objects"][n]["properties"] for c in [cond] + also)]
         if not able:
             raise Refusal(f"'{words}': this home has nothing for a {meal} that can be {cond}"
                           + (f" ({', '.join(foods)} cannot)" if foods else ""))
         self.goal.notes.append(f"'{words}': read as {', '.join(able)} {cond} ({source}; docs/household.md, meals)")
         for n in able:
-            self.want(n, cond, False, words)
+            for c in [cond] + also:
+                self.want(n, c, False, words)
         self.last = able
 
     def _apply_cue_defaults(self) -> None:
@@ -571,7 +665,13 @@ class Resolver:
                 self.goal.notes.append(f"'{words}' is the reason for {', '.join(asked)} {cond}, not a request for "
                                        f"every {cat}")
                 continue
-            self.goal.notes.append(f"'{words}': read as every {cat} {cond} ({', '.join(names)})")
+            # a cue asks for a change: "it is getting dark" asks nothing of a light that is on already
+            already = [n for n in names if holds_now(self.world, n, cond)]
+            names = [n for n in names if n not in already]
+            if not names:
+                raise TranslationError(f"'{words}': every {cat} is {cond} already; say what to do")
+            self.goal.notes.append(f"'{words}': read as every {cat} {cond} ({', '.join(names)})"
+                                   + (f"; {', '.join(already)} {cond} already" if already else ""))
             for n in names:
                 self.want(n, cond, False, words)
 
@@ -582,6 +682,14 @@ class Resolver:
         if self.picked:
             obj, words = next(iter(self.picked.items()))
             raise TranslationError(f"'{words}': where to? name a place for {obj} (e.g. 'in the fridge')")
+        for names, state, words in list(self.observed):
+            if state == "dirty" and names and all(applies(self.world, n, "clean") for n in names):
+                # "the dishes on the table are filthy": dirt that nothing else answers asks for washing
+                self.goal.notes.append(f"'{words}': dirt said and nothing done about it: read as washing "
+                                       f"{', '.join(names)} (docs/household.md, cues)")
+                for n in names:
+                    self.want(n, "clean", True, words)
+                self.observed.remove((names, state, words))
         if self.observed:
             words = self.observed[0][2]
             raise TranslationError(f"'{words}' describes the home but asks for nothing (say what to do, "
@@ -602,9 +710,10 @@ class Resolver:
         return {"goal": goal, "explain": explain, "notes": list(g.notes), "words": words}
 
 
-def resolve(order: dict, world: dict) -> dict:
+def resolve(order: dict, world: dict, choose: dict[str, str] | None = None) -> dict:
     """``{"goal": {"in", "state", "count"?}, "explain": [one line per condition with its words],
     "notes": [...], "words": {"in": {object: words}, "state": {name: {condition: words}}}}`` for a
     household order in a world (checked against its schema first);
-    Refusal or TranslationError otherwise."""
-    return Resolver(world).resolve(check_order(order))
+    Refusal or TranslationError otherwise. ``choose``: words that name several things -> the
+    one meant (a candidate reading the refusal offers; never set by the reader itself)."""
+    return Resolver(world, choose).resolve(check_order(order))

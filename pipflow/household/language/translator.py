@@ -16,6 +16,7 @@ from __future__ import annotations
 import json
 
 from pipflow.errors import Refusal, TranslationError
+from pipflow.household.language.candidates import candidate_readings
 from pipflow.household.language.parser import parse
 from pipflow.household.language.resolver import resolve
 from pipflow.household.world import members
@@ -53,7 +54,7 @@ def _key(goal: dict) -> str:
                        "count": goal.get("count", [])}, sort_keys=True)
 
 
-def understand(command: str, world: dict) -> dict:
+def understand(command: str, world: dict, choose: dict[str, str] | None = None) -> dict:
     """``{"order", "goal", "explain", "notes", "words"}``: the one meaning of the command in this world
     (module docstring); TranslationError (not understood, ambiguous) or Refusal (impossible).
 
@@ -65,7 +66,7 @@ def understand(command: str, world: dict) -> dict:
     first_error: Exception | None = None
     for text in texts:
         try:
-            results.append(_understand(text, world))
+            results.append(_understand(text, world, choose))
         except (TranslationError, Refusal) as exc:
             first_error = first_error or exc
     if not results:
@@ -81,7 +82,7 @@ def understand(command: str, world: dict) -> dict:
     return result
 
 
-def _understand(command: str, world: dict) -> dict:
+def _understand(command: str, world: dict, choose: dict[str, str] | None = None) -> dict:
     """:func:`understand` of one reading of the command's line breaks."""
     notes: list[str] = []
     readings = parse(command, world, notes)
@@ -89,7 +90,7 @@ def _understand(command: str, world: dict) -> dict:
     first_error: Exception | None = None
     for order in readings:
         try:
-            out = resolve(order, world)
+            out = resolve(order, world, choose)
         except (TranslationError, Refusal) as exc:
             first_error = first_error or exc
             continue
@@ -153,11 +154,33 @@ def translate(command: str, world: dict) -> dict:
     """``{"goal": conditions as the command states them (counts kept), "concrete": the goal with
     counts resolved to objects, for the PDDL problem, "order": the parsed order, "explain": one
     line per condition with the words it came from, "notes": [...], "words": the words each
-    condition came from (:func:`pipflow.household.language.resolver.resolve`)}``."""
-    meaning = understand(command, world)
+    condition came from (:func:`pipflow.household.language.resolver.resolve`)}``.
+
+    A command refused as not understood carries up to three candidate readings
+    (:mod:`pipflow.household.language.candidates`); none is acted on unchosen."""
+    try:
+        return _translate(command, world)
+    except TranslationError as exc:
+        offered = candidate_readings(command, world, exc, _translate)
+        if len(offered) == len(exc.candidates):
+            raise
+        raise TranslationError(str(exc), candidates=offered) from None
+
+
+def _translate(command: str, world: dict, choose: dict[str, str] | None = None) -> dict:
+    """:func:`translate` without looking for candidate readings; ``choose``: words that name
+    several things -> the one meant (:func:`pipflow.household.language.resolver.resolve`)."""
+    meaning = understand(command, world, choose)
     goal = meaning["goal"]
     _leave_closed(world, goal)
+    if goal.get("count"):
+        # the things a count takes come out of closed containers too ("bring two of the pastries
+        # to the table": the bread bin is opened for them, and closed again)
+        _leave_closed(world, {"in": resolve_counts(world, goal)["in"], "state": goal["state"]})   # goal's state, shared
     aside = meaning["order"].get("set_aside")
+    own = meaning["order"].get("speaker_does") or []
     return {"goal": goal, "concrete": resolve_counts(world, goal), "order": meaning["order"],
-            "explain": meaning["explain"] + ([said(aside)] if aside else []), "notes": meaning["notes"],
+            "explain": meaning["explain"] + ([said(aside)] if aside else [])
+            + [f"set aside, not read (what the speaker will do, no order for the robots): '{o}'" for o in own],
+            "notes": meaning["notes"],
             "words": meaning["words"]}

@@ -1,0 +1,139 @@
+"""Candidate readings for a household command the reader refuses as not understood (issue 23).
+
+A refusal that only says "not understood" leaves the user to guess what to change. Where the
+reader can see near readings it offers up to three, each in plain words with the words it rests
+on, and acts on none unchosen (``TranslationError.candidates``; ``pipflow run`` asks, the bench
+counts ``candidate_recall``). They are built, in this order of preference, from:
+
+* **the choice the refusal asks for**: "'the lamp' could be any of desk_lamp, floor_lamp" offers
+  the command with each of them named;
+* **repairs of a word the reader does not know**: a misspelling two edits away, or with another
+  first letter (the reader itself repairs only one edit, same first letter, one meaning); a
+  modifier said alone ("the mobile" of mobile_phone) read as its thing's whole name;
+* **the parts that did parse**: the command without one word it could not place, or without one
+  clause, when that word or clause has no operative word (negation, only/except, bounds,
+  quantities: :func:`pipflow.language.asides.near_operative`), since dropping one would widen
+  what the robots do.
+
+Each candidate is read by the same translator as any command, so it is a reading of this world
+(impossible ones are not offered). The search is bounded (:data:`MAX_TRIES` readings).
+"""
+from __future__ import annotations
+
+import json
+import re
+from typing import Callable
+
+from pipflow.errors import PipflowError, TranslationError
+from pipflow.household.language.lexicon import words_of
+from pipflow.household.language.parser import _vocabulary, tag, world_phrases
+from pipflow.language.asides import FUNCTION_WORDS, near_operative
+from pipflow.language.spelling import distance
+
+#: at most this many candidate readings are offered
+MAX_CANDIDATES = 3
+#: at most this many other wordings are read while looking for them
+MAX_TRIES = 10
+#: words the reader refuses that join a list, and the joiner a candidate reads them as ("or" is
+#: a choice where the reader refuses it; in "nobody is using X or Y" it lists both)
+JOINERS = {"or": "and", "nor": "and"}
+#: clause marks of the command (dashes and brackets set a clause off too)
+_CLAUSE_SPLIT = re.compile(r"[,.;:!?()\[\]\u2013\u2014]|\s-\s")
+
+
+def _goal_key(goal: dict) -> str:
+    return json.dumps({"in": {p: sorted(v) for p, v in (goal.get("in") or {}).items() if v},
+                       "state": {n: sorted(v) for n, v in (goal.get("state") or {}).items() if v},
+                       "count": goal.get("count") or []}, sort_keys=True)
+
+
+def _modifier_names(world: dict) -> dict[str, list[str]]:
+    """First words of the names of two or more words -> the names of the things they begin
+    ("mobile" -> ["mobile phone"]), for a modifier said alone."""
+    out: dict[str, list[str]] = {}
+    for table in (world.get("objects") or {}, world.get("places") or {}):
+        for name, e in table.items():
+            for phrase in [name] + list(e.get("words") or []):
+                ws = words_of(phrase)
+                if len(ws) >= 2 and ws[0] not in FUNCTION_WORDS:
+                    full = " ".join(ws)
+                    if full not in out.setdefault(ws[0], []):
+                        out[ws[0]].append(full)
+    return out
+
+
+def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[str, str, str, dict]]:
+    """(other wording, how it differs in plain words, the words it rests on, the choice of a
+    thing among several it makes), best first."""
+    out: list[tuple[str, str, str, dict]] = []
+    choices = getattr(error, "choices", None)
+    if choices:
+        said, names = choices
+        out += [(command, f"'{said}' read as {name}", name, {said: name}) for name in names]
+    words = words_of(command)
+    index = world_phrases(world)
+    vocab = _vocabulary(index)
+    modifiers = _modifier_names(world)
+    try:
+        tags = tag(command, world, [])
+        unknown: list[str] = []
+    except TranslationError as exc:   # the words the tagger could not read (after its own repairs)
+        tags, unknown = [], [w for w in getattr(exc, "unread", []) if w in words]
+    near: dict[str, list[tuple[int, str]]] = {
+        w: sorted((distance(w, v), v) for v in vocab if len(w) >= 4 and abs(len(v) - len(w)) <= 2
+                  and distance(w, v) <= 2)[:3] for w in unknown}
+    def swap(w: str, by: str) -> str:
+        return " ".join(by if x == w else x for x in words)
+
+    for w in unknown:   # one edit first, then a modifier's whole name, then two edits
+        out += [(swap(w, v), f"'{w}' read as '{v}'", v, {}) for d, v in near[w] if d == 1]
+    for w in unknown:
+        out += [(swap(w, full), f"'{w}' read as '{full}'", full, {}) for full in modifiers.get(w, [])]
+    for w in unknown:
+        out += [(swap(w, v), f"'{w}' read as '{v}'", v, {}) for d, v in near[w] if d == 2]
+    if not unknown:   # "the table lamp" where no lamp is on the table: the thing its last word names
+        text = " ".join(words)
+        for a, b in zip(tags, tags[1:]):
+            pair = f"{a.words} {b.words}"
+            if a.cls == "NOUN" and b.cls == "NOUN" and pair in text:
+                out.append((text.replace(pair, b.words, 1), f"'{pair}' read as '{b.words}'", b.words, {}))
+    for w in unknown:   # "nobody is using the tablet or the radio": a list said with "or"
+        if w in JOINERS:
+            out.append((swap(w, JOINERS[w]), f"'{w}' read as '{JOINERS[w]}'", swap(w, JOINERS[w]), {}))
+    for w in unknown:
+        if not near_operative(w) and w not in JOINERS:
+            rest = " ".join(x for x in words if x != w)
+            out.append((rest, f"read without '{w}' (not understood)", rest, {}))
+    parts = [p.strip() for p in _CLAUSE_SPLIT.split(command) if p.strip()]
+    if len(parts) > 1:
+        for part in parts:
+            ws = words_of(part)
+            if ws and not any(near_operative(x) for x in ws):
+                rest = _CLAUSE_SPLIT.sub(" , ", command.replace(part, " ", 1))
+                out.append((rest, f"read without '{' '.join(ws)}' (not understood)", " ".join(words_of(rest)), {}))
+    return out
+
+
+def candidate_readings(command: str, world: dict, error: TranslationError,
+                       read: Callable[[str, dict, dict], dict]) -> list[dict]:
+    """Up to :data:`MAX_CANDIDATES` readings to offer for a refused command (module docstring),
+    after those the error already offers. ``read(text, world, choose)`` is the translator without
+    candidates (a wording that does not read is skipped, never offered)."""
+    offered = list(error.candidates)
+    seen = {_goal_key(c.get("goal") or {}) for c in offered}
+    tries = 0
+    for text, how, rests_on, choose in _wordings(command, world, error):
+        if len(offered) >= MAX_CANDIDATES or tries >= MAX_TRIES:
+            break
+        tries += 1
+        try:
+            got = read(text, world, choose)
+        except PipflowError:
+            continue
+        key = _goal_key(got["goal"])
+        if key in seen or not any(got["goal"].get(k) for k in ("in", "state", "count")):
+            continue
+        seen.add(key)
+        offered.append({"reading": f"{how}: " + "; ".join(got["explain"]), "goal": got["goal"],
+                        "order": got["order"], "words": rests_on})
+    return offered[:MAX_CANDIDATES]
