@@ -140,9 +140,10 @@ def test_a_line_break_between_two_sentences_ends_the_first(tmp_path, capsys):
     ("Move 2 product3 from shelf1 to shelf4\r\nshelf2 should have 3 product1",
      {"shelf1": {"product3": 1}, "shelf4": {"product3": 4}, "shelf2": {"product1": 3}}),
     ("shelf2 should have 3 product1\u2028Put 2 product4 on shelf1", {"shelf2": {"product1": 3}, "shelf1": {"product4": 2}}),
-    ("Put 3 product1 on shelf2\nrobot1 must not help", {"shelf2": {"product1": 3}}),
-    ("Put 3 product1\non shelf2", {"shelf2": {"product1": 3}}),   # a wrapped sentence still reads
-    ("Put 3 product1 on shelf2.\n\nPut 2 product3 on shelf4.", {"shelf2": {"product1": 3}, "shelf4": {"product3": 2}}),
+    # ("put N X on P" where P holds none of X: a final count; where it holds some, add or set? refused)
+    ("Put 3 product4 on shelf1\nrobot1 must not help", {"shelf1": {"product4": 3}}),
+    ("Put 3 product4\non shelf1", {"shelf1": {"product4": 3}}),   # a wrapped sentence still reads
+    ("Put 3 product4 on shelf1.\n\nPut 2 product2 on shelf4.", {"shelf1": {"product4": 3}, "shelf4": {"product2": 2}}),
 ])
 def test_line_breaks_in_warehouse_commands(command, goal):
     from pipflow.warehouse.language.translator import understand

@@ -458,7 +458,7 @@ def test_a_refusal_to_guess_is_a_success_where_the_task_expects_one(tmp_path):
     tasks = tmp_path / "tasks.yaml"
     tasks.write_text(f"world: {world}\ntasks:\n"
                      "  - {id: vague, command: 'put some product1 on shelf2', goal: {}, expect: refuse}\n"
-                     "  - {id: clear, command: 'put 3 product1 on shelf2', goal: {shelf2: {product1: 3}},"
+                     "  - {id: clear, command: 'put 3 product4 on shelf1', goal: {shelf1: {product4: 3}},"
                      " expect: refuse}\n")
     results = run_bench(BenchConfig(tasks_file=tasks, seeds=1, jobs=1, out=tmp_path / "out", use_cache=False),
                         progress=False)

@@ -149,7 +149,7 @@ def test_distance_counts_swaps_once() -> None:
     ("On shelf5, there should be 3 product1, and 5 product2 on shelf6",
      {"shelf5": {"product1": 3}, "shelf6": {"product2": 5}}),
     ("There should be 3 product2 in shelf4, 5 in shelf2", {"shelf4": {"product2": 3}, "shelf2": {"product2": 5}}),
-    ("put 5 product1 on shelf2", {"shelf2": {"product1": 5}}),
+    ("put 5 product4 on shelf2", {"shelf2": {"product4": 5}}),  # shelf2 holds none: "put" is a final count
     ("Theyre supposed to be 17 prodct1 on shelve5, I think.", {"shelf5": {"product1": 17}}),
     ("There should be 7 product 1 in shelf three.", {"shelf3": {"product1": 7}}),
     ("shelf five holds twenty-one product 5", {"shelf5": {"product5": 21}}),
@@ -165,7 +165,7 @@ def test_clause_structure(command: str, expected: dict) -> None:
 
 
 def test_other_world_names() -> None:
-    assert goal("put 5 apples on rack a", DEPOT) == {"rack_a": {"apple": 5}}
+    assert goal("rack a should hold 5 apples", DEPOT) == {"rack_a": {"apple": 5}}
     assert goal("cold store gets 7 widget 2", DEPOT) == {"cold-store": {"widget2": 7}}
     assert goal("There should be 2 widget2 in bin 7 and 3 aple in the cold-store.", DEPOT) == {
         "bin7": {"widget2": 2}, "cold-store": {"apple": 3}}
@@ -179,8 +179,9 @@ def test_other_world_names() -> None:
     ("double the product1 on shelf3", {"shelf3": {"product1": 10}}),
     ("twice as many product1 on shelf2", {"shelf2": {"product1": 16}}),
     ("half the product1 on shelf1", {"shelf1": {"product1": 5}}),
-    ("all product2 in shelf1", {"shelf1": {"product2": 10}}),
-    ("every product2 should be on shelf1", {"shelf1": {"product2": 10}}),
+    # all of an item on one place: the places it leaves are listed at 0 (benchmarks/language conventions 1, 7)
+    ("all product2 in shelf1", {"shelf1": {"product2": 10}, **{f"shelf{i}": {"product2": 0} for i in range(2, 7)}}),
+    ("every product2 should be on shelf1", {"shelf1": {"product2": 10}, **{f"shelf{i}": {"product2": 0} for i in range(2, 7)}}),
     ("no product3 on shelf2", {"shelf2": {"product3": 0}}),
     ("shelf4 should be empty", {"shelf4": {"product1": 0, "product2": 0, "product3": 0, "product4": 0, "product5": 0}}),  # every product of the world, held or not
     ("empty shelf6", {"shelf6": {"product1": 0, "product2": 0, "product3": 0, "product4": 0, "product5": 0}}),
@@ -220,7 +221,7 @@ def test_full_counts_goods_the_command_keeps() -> None:
 
 
 def test_quantifiers_in_other_world() -> None:
-    assert goal("all apples in rack_b", DEPOT) == {"rack_b": {"apple": 5}}
+    assert goal("all apples in rack_b", DEPOT) == {"rack_b": {"apple": 5}, **{p: {"apple": 0} for p in DEPOT["shelves"] if p != "rack_b"}}
     assert goal("the cold-store should be empty", DEPOT) == {"cold-store": {"apple": 0, "widget2": 0, "pear": 0}}
     assert goal("move 2 apples from rack_a to cold-store", DEPOT) == {
         "rack_a": {"apple": 2}, "cold-store": {"apple": 3}}
@@ -350,9 +351,9 @@ def test_nothing_else_zeroes_other_goods() -> None:
 
 
 def test_delivery_verb_makes_place_a_destination() -> None:
-    got = translate("robot 3 should put 5 product1 on shelf2", HALL)
-    assert got == {"goal": {"shelf2": {"product1": 5}},
-                   "constraints": [{"only": ["robot3"], "product": "product1", "to": "shelf2"}]}
+    got = translate("robot 3 should put 5 product4 on shelf2", HALL)
+    assert got == {"goal": {"shelf2": {"product4": 5}},
+                   "constraints": [{"only": ["robot3"], "product": "product4", "to": "shelf2"}]}
 
 
 # -- general phrasings (second version) --------------------------------------------------------
@@ -379,7 +380,7 @@ YARD = {
     ("Set shelf2 to 5 product1", HALL, {"shelf2": {"product1": 5}}),
     ("let shelf 2 have 5 of product1", HALL, {"shelf2": {"product1": 5}}),
     ("5x product1 -> shelf2", HALL, {"shelf2": {"product1": 5}}),
-    ("put five of product 1 onto shelf two", HALL, {"shelf2": {"product1": 5}}),
+    ("put five of product 4 onto shelf two", HALL, {"shelf2": {"product4": 5}}),
     ("we need 5 more product1 at shelf2", HALL, {"shelf2": {"product1": 13}}),
     ("shelf2 needs 3 extra product2", HALL, {"shelf2": {"product2": 8}}),
     ("remove 2 product3 from shelf1", HALL, {"shelf1": {"product3": 1}}),
@@ -402,12 +403,12 @@ def test_product_first_and_other_phrasings(command: str, world: dict, expected: 
      {"shelf1": {"product2": 4}, "shelf2": {"product2": 4}}),
     ("both shelf1 and shelf2 should hold 4 product2", HALL,
      {"shelf1": {"product2": 4}, "shelf2": {"product2": 4}}),
-    ("put 4 product2 on each of shelf1 and shelf2", HALL,
-     {"shelf1": {"product2": 4}, "shelf2": {"product2": 4}}),
+    ("put 4 product4 on each of shelf1 and shelf2", HALL,
+     {"shelf1": {"product4": 4}, "shelf2": {"product4": 4}}),
     ("shelf1 and shelf2 should hold 4 and 6 product1 respectively", HALL,
      {"shelf1": {"product1": 4}, "shelf2": {"product1": 6}}),
-    ("put 4 product1 and 6 product2 on shelf1 and shelf2 respectively", HALL,
-     {"shelf1": {"product1": 4}, "shelf2": {"product2": 6}}),
+    ("put 4 product4 and 6 product3 on shelf1 and shelf2 respectively", HALL,
+     {"shelf1": {"product4": 4}, "shelf2": {"product3": 6}}),
     ("empty shelf1 and shelf4", HALL, {**{"shelf1": {"product1": 0, "product2": 0, "product3": 0, "product4": 0, "product5": 0}}, **{"shelf4": {"product1": 0, "product2": 0, "product3": 0, "product4": 0, "product5": 0}}}),
     ("none of product3 on shelf2", HALL, {"shelf2": {"product3": 0}}),
     ("no product3 on shelf1 and shelf3", HALL, {"shelf1": {"product3": 0}, "shelf3": {"product3": 0}}),
@@ -485,20 +486,20 @@ def test_more_rules(command: str, world: dict, expected: list[dict]) -> None:
 
 @pytest.mark.parametrize("command,world,expected", [
     # one product and one place: the trailing rule governs them
-    ("put 5 product1 on shelf2, but do not use robot 3 for that", HALL,
-     [{"never": ["robot3"], "product": "product1", "to": "shelf2"}]),
+    ("put 5 product4 on shelf2, but do not use robot 3 for that", HALL,
+     [{"never": ["robot3"], "product": "product4", "to": "shelf2"}]),
     ("remove 2 product3 from shelf1 without using robot 3", HALL,
      [{"never": ["robot3"], "product": "product3", "from": "shelf1"}]),
     ("move 4 apples from rack_a to A1 using only alpha", YARD,
      [{"only": ["alpha"], "product": "apple", "from": "rack_a", "to": "A1"}]),
     # a rule with no scope words of its own holds for the whole command (it was narrowed to the
     # sentence's product, which left robot 4 free for every other move the plan needs)
-    ("put 5 product1 on shelf2 and 3 on shelf3, robot 4 must not help", HALL, [{"never": ["robot4"]}]),
+    ("put 5 product4 on shelf2 and 3 on shelf3, robot 4 must not help", HALL, [{"never": ["robot4"]}]),
     # two products and two places: the whole task
-    ("put 5 product1 on shelf2 and 3 product2 on shelf3 using only robot 5", HALL, [{"only": ["robot5"]}]),
+    ("put 5 product4 on shelf2 and 3 product5 on shelf3 using only robot 5", HALL, [{"only": ["robot5"]}]),
     # a robot's state is never narrowed; a rule in its own sentence is not bound
-    ("put 5 product1 on shelf2, robot 11 is broken", HALL, [{"never": ["robot11"]}]),
-    ("put 5 product1 on shelf2. Do not use robot 11.", HALL, [{"never": ["robot11"]}]),
+    ("put 5 product4 on shelf2, robot 11 is broken", HALL, [{"never": ["robot11"]}]),
+    ("put 5 product4 on shelf2. Do not use robot 11.", HALL, [{"never": ["robot11"]}]),
     ("put 2 apples on bay-12 and keep forklift-2 away from A1", YARD,
      [{"never": ["forklift-2"], "from": "A1"}, {"never": ["forklift-2"], "to": "A1"}]),
 ])
@@ -540,7 +541,7 @@ def test_short_and_common_words_are_not_names() -> None:
     # "a" is not the shelf A1 and "help" is not a misspelt "shelf"
     assert goal("put a apple on A1 and a SKU-7781 on bay-12", YARD) == {
         "A1": {"apple": 1}, "bay-12": {"SKU-7781": 1}}
-    assert rules("put 5 product1 on shelf2 and 3 on shelf3, robot 4 must not help", HALL) == [
+    assert rules("put 5 product4 on shelf2 and 3 on shelf3, robot 4 must not help", HALL) == [
         {"never": ["robot4"]}]
 
 

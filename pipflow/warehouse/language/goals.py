@@ -98,20 +98,22 @@ class GoalRules:
         add = bare and self.last_add
         verb = self.sub(node, "putv")
         several = len(places) > 1 and mode not in ("each", "respectively", "resp") and not self.distributive
-        if verb and not several and self.first_word(verb[0]) in PLACING_VERBS and self._put_adds(places, nps, words):
+        if verb and not several and self.first_word(verb[0]) in PLACING_VERBS and self._put_adds(places, nps, words, mode):
             add = True
         self.put(places, mode, nps, words, add=add)
         if kind == "g_set_only":
             self.statements.append({"op": "nothing_else", "places": {"names": places},
                                     "words": "nothing else"})
 
-    def _put_adds(self, places: list[str], nps: list[dict], words: str) -> bool:
+    def _put_adds(self, places: list[str], nps: list[dict], words: str, mode: str = "one") -> bool:
         """Whether "put N X on P" is a delivery: where P holds none of X it does not matter (a final
         count, as read before); where P holds some, "put" says neither "in all" nor "more", so
         the sentence is refused with both readings offered (``picks["put"]``: the user's choice)."""
         if self.budget:
             return True  # "take 3 X off P and put 2 on Q": the units taken, delivered
-        held = [(p, np) for p in places for np in nps if "count" in np["amount"] and np["items"]
+        pairs = ([(p, np) for p, np in zip(places, nps)] if mode in ("respectively", "resp")
+                 else [(p, np) for p in places for np in nps])
+        held = [(p, np) for p, np in pairs if "count" in np["amount"] and np["items"]
                 for i in (np["items"].get("names") or [])
                 if _held(self.lex.world, p, i) > 0]
         if not held:
