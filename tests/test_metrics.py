@@ -124,7 +124,9 @@ def household_bench(tmp_path_factory):
         {"id": "mug", **team, "feasible": False, "command": "Heat the mug in the microwave."},
         {"id": "apple", **team, "command": "Put the apple in the fridge together.",
          "goal": {"in": {"fridge": ["apple"]}, "state": {"fridge": ["closed"], "microwave": ["closed"]}}},
-        {"id": "two-drinks", **team, "command": "Put two drinks on the desk.", "goal": {"in": {"desk": ["milk", "bottle"]}}},
+        # the milk comes out of the closed fridge, which is closed again (the household sets' convention)
+        {"id": "two-drinks", **team, "command": "Put two drinks on the desk.",
+         "goal": {"in": {"desk": ["milk", "bottle"]}, "state": {"fridge": ["closed"]}}},
         {"id": "a-drink", **team, "command": "Put a drink on the desk.", "goal": {"in": {"desk": ["milk"]}}},
     ], world=HOME, domain="household")
 

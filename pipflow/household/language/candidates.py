@@ -7,8 +7,9 @@ counts ``candidate_recall``). They are built, in this order of preference, from:
 
 * **the choice the refusal asks for**: "'the lamp' could be any of desk_lamp, floor_lamp" offers
   the command with each of them named;
-* **repairs of a word the reader does not know**: a misspelling two edits away, or with another
-  first letter (the reader itself repairs only one edit, same first letter, one meaning); a
+* **repairs of a word the reader does not know**: a misspelling one edit away with another first
+  letter, or two edits away with the same one (the reader itself repairs only one edit, same
+  first letter, one meaning: "tunrpi" is offered as turnip, "kettle" never as bottle); a
   modifier said alone ("the mobile" of mobile_phone) read as its thing's whole name;
 * **the parts that did parse**: the command without one word it could not place, or without one
   clause, when that word or clause has no operative word (negation, only/except, bounds,
@@ -79,9 +80,11 @@ def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[
         unknown: list[str] = []
     except TranslationError as exc:   # the words the tagger could not read (after its own repairs)
         tags, unknown = [], [w for w in getattr(exc, "unread", []) if w in words]
+    # one edit with any first letter ("vowl" for bowl), two with the same first letter ("tunrpi"):
+    # "kettle" is never offered as "bottle"
     near: dict[str, list[tuple[int, str]]] = {
-        w: sorted((distance(w, v), v) for v in vocab if len(w) >= 4 and abs(len(v) - len(w)) <= 2
-                  and distance(w, v) <= 2)[:3] for w in unknown}
+        w: sorted((d, v) for d, v in ((distance(w, v), v) for v in vocab if len(w) >= 4 and abs(len(v) - len(w)) <= 2)
+                  if d == 1 or (d == 2 and v[0] == w[0]))[:3] for w in unknown}
     def swap(w: str, by: str) -> str:
         return " ".join(by if x == w else x for x in words)
 
