@@ -468,6 +468,8 @@ def test_a_fault_with_nothing_to_strike_is_run_without_and_recorded_not_applicab
     assert "no passage to close" in skipped["passage-closed"]["why"]
     execution = json.loads((r.record / "steps" / "execute" / "artifacts" / "execution.json").read_text())
     assert [f["id"] for f in execution["not_applicable"]] == ["f1", "f2", "f3", "f4"]
+    html = r.report().read_text()  # the report says so too
+    assert "Faults not applicable" in html and "no passage to close" in html
 
 
 def test_a_fault_that_names_its_target_stays_a_user_error_on_the_command_line(tmp_path):
