@@ -607,6 +607,39 @@ def test_fault_counts_and_specs_are_read():
     assert one.given == {"robot": "robot2", "after": 2}
 
 
+def test_only_a_drawn_target_can_be_not_applicable(base):
+    """In the warehouse's real world and WH01's schedule: three robot losses drawn where the
+    schedule gives fewer robots work set the extra ones apart, while a robot loss and a slowdown
+    naming their robot always apply; a surprise a domain cannot place where the user named it is
+    the user's error (a domain that says so with FaultNotApplicable), never set apart."""
+    from pipflow.errors import FaultNotApplicable
+    from pipflow.execution.capability import capable
+    from pipflow.taskdomains import task_domain
+
+    run_ = base["wh01"]
+    world = step_outputs(run_, "world")["world"]
+    schedule, graph = run_.outputs["schedule"], run_.outputs["graph"]
+    domain = capable(task_domain(world))
+    working = fk.working_windows(schedule)
+    n = len(working)
+    placed = fk.resolve(fk.parse(f"robot-loss={n + 2}"), world, schedule, graph, 1, domain)
+    assert sorted(f.robot for f in placed.faults) == sorted(working)
+    assert [na.id for na in placed.not_applicable] == [f"f{n + 1}", f"f{n + 2}"]
+    assert all("already stopped" in na.why for na in placed.not_applicable)
+    idle = next(r for r in world["robots"] if r not in working)
+    named = fk.resolve(fk.parse([{"kind": "robot-loss", "robot": idle, "time": 1}, {"kind": "slowdown", "robot": idle}]),
+                       world, schedule, graph, 1, domain)
+    assert [f.robot for f in named.faults] == [idle, idle] and not named.not_applicable
+
+    class Picky(type(domain)):
+        def check_surprise(self, world, given, where):
+            raise FaultNotApplicable("nothing here to be surprised about")
+
+    with pytest.raises(InputError, match=r"faults\[1\]: nothing here"):
+        fk.resolve(fk.parse([{"kind": "stock-surprise", "place": "shelf1", "product": "product1", "count": 1}],
+                            domain.surprise_names), world, schedule, graph, 1, Picky())
+
+
 def test_a_drawn_stock_surprise_is_units_missing_or_misplaced(base):
     """Over seeds, the warehouse's drawn surprise is either units gone from a shelf the plan takes
     from (fewer in the world than recorded), or the same units lying on another shelf with room

@@ -331,8 +331,21 @@ def resolve(specs: list[Spec], world: dict, schedule: dict, graph: dict | None, 
             else:
                 out.faults += _surprise(spec, fid, world, schedule, graph, rng, domain)
         except FaultNotApplicable as why:
+            if names_target(spec):  # the user chose the target: a fault that cannot strike it is their error
+                raise InputError(f"{spec.where}: {why}") from None
             out.not_applicable.append(NotApplicable(fid, spec.kind, spec.name, str(why), spec.where))
     return out
+
+
+def names_target(spec: Spec) -> bool:
+    """Whether a spec names what its fault strikes (a robot, a passage's ends, a surprise's place
+    and contents) rather than leaving it to be drawn: only a drawn target can be not applicable."""
+    g = spec.given
+    if spec.kind in (ROBOT_LOSS, SLOWDOWN):
+        return "robot" in g
+    if spec.kind == PASSAGE:
+        return "between" in g
+    return bool(g)
 
 
 def _robot_fault(spec: Spec, fid: str, world: dict, windows: dict[str, tuple[float, float]], lost: set[str],
