@@ -15,9 +15,10 @@ Why runs are set apart as **not applicable**: a fault drawn by count strikes a t
 offers (a robot with work, a passage on a route, a place the plan takes from); a task whose plan
 offers none (it slices an apple and carries nothing: no object surprise can matter) is carried
 out without it (:mod:`pipflow.execution.faults`). Such a run says nothing about recovery from
-that fault, so every number of the variant's fault row is over the runs that had every fault the
-variant asks for; ``not_applicable`` counts the others, and ``not_applicable_why`` says per fault
-kind why and for which runs.
+that fault, so every number of the variant's fault row but ``runs`` is over the runs none of
+whose faults was set apart (``applied``; a run that ended before execution, an impossible command
+refused, stays in as before); ``not_applicable`` counts the others, and ``not_applicable_why``
+says per fault kind why and for which runs.
 """
 from __future__ import annotations
 
