@@ -104,6 +104,14 @@ class PDDLError(InputError):
     it. Raised by :func:`pipflow.liberrors.library_errors` with the reader's own words."""
 
 
+class FaultNotApplicable(PipflowError):
+    """A fault asked for by count has nothing in this run to strike: its target is drawn from the
+    run (a robot with work, a passage on a route, a place the plan takes from) and the run offers
+    none. Not a user error: the run goes on without that fault and records it as not applicable,
+    with this message as the reason (:mod:`pipflow.execution.faults`). A fault that names its
+    target never raises it: a target the world lacks is an :class:`InputError`."""
+
+
 class StepError(PipflowError):
     """A step failed while running."""
 

@@ -340,8 +340,9 @@ class ScheduleOutputs(TypedDict):
 class ExecutionOutputs(TypedDict):
     """``execute`` (:mod:`pipflow.execution`): the world as it really was, the schedule the robots
     really carried out and its graph (what the simulation then plays), the faults, the recovery
-    rounds, the refusal when the goal went out of reach, and whether it was still reachable
-    (``feasible``: None when unknown) and why."""
+    rounds, the refusal when the goal went out of reach, whether it was still reachable
+    (``feasible``: None when unknown) and why, and the faults asked for that did not apply to the
+    run (``not_applicable``: id, kind, name, why; :class:`pipflow.execution.faults.NotApplicable`)."""
 
     world: dict
     schedule: dict
@@ -351,3 +352,4 @@ class ExecutionOutputs(TypedDict):
     refusal: Any
     feasible: Any
     feasibility: str
+    not_applicable: list

@@ -2,7 +2,8 @@
 :mod:`pipflow.execution`). Its outputs are what the simulation step then plays: the world as it
 really was, the schedule the robots really carried out, its graph; and what happened: the faults,
 the recovery rounds, the refusal when the goal went out of reach (a later ``core.refuse`` ends the
-run with it, after the simulation has recorded what was done).
+run with it, after the simulation has recorded what was done), and the faults asked for that did
+not apply to this run (a drawn target the run does not offer: carried out without them).
 
 Without faults the step hands its inputs on unchanged (the built-in workflows skip it then)."""
 from __future__ import annotations
@@ -62,7 +63,7 @@ def execute(
     """Faults are checked against the world before anything is played (an unknown robot or shelf
     is exit 2, naming the fault)."""
     identity = {"world": world, "schedule": schedule, "graph": graph, "faults": [], "recoveries": [],
-                "refusal": None, "feasible": None, "feasibility": ""}
+                "refusal": None, "feasible": None, "feasibility": "", "not_applicable": []}
     owner = task_domain(world)
     specs = fault_specs.parse(faults, tuple(getattr(owner, "surprise_names", ()) or ()))
     if not specs:
@@ -77,9 +78,16 @@ def execute(
     mode = "frontier" if method.endswith("-frontier") else "subtask"
     method = method.removesuffix("-frontier")
     cost = str((allocation or {}).get("cost") or "total")
-    placed = fault_specs.resolve(specs, world, schedule, graph, seed, domain_obj)
+    placement = fault_specs.resolve(specs, world, schedule, graph, seed, domain_obj)
+    placed, skipped = placement.faults, [f.to_json() for f in placement.not_applicable]
+    for na in placement.not_applicable:
+        ctx.log(f"fault {na.id}: {na.describe()}; the run goes on without it")
     for f in placed:
         ctx.log(f"fault {f.id}: {f.describe()}")
+    if not placed:  # nothing applies: the schedule is carried out as planned
+        ctx.write_artifact("execution.json", {"faults": [], "not_applicable": skipped, "recoveries": []})
+        ctx.metrics.update({"faults": 0, "faults_not_applicable": len(skipped)})
+        return {**identity, "not_applicable": skipped}
     planning = Planning(domain_text=ctx.resolve_path(domain).read_text(encoding="utf-8"), metadata=_metadata(ctx, actions),
                         problem=problem, planner=planner, planner_params=planner_params, fallback=fallback,
                         planner_timeout=planner_timeout, graph_mode=graph_mode, method=method, mode=mode, cost=cost,
@@ -87,14 +95,16 @@ def execute(
     with library_errors(SCIP, AllocationError, "re-allocating after a fault"):
         outcome = Executor(domain_obj, world, schedule, graph, placed, planning, log=ctx.log,
                            save=ctx.write_artifact).run()
-    ctx.write_artifact("execution.json", {"faults": outcome.faults, "recoveries": outcome.rounds,
+    ctx.write_artifact("execution.json", {"faults": outcome.faults, "not_applicable": skipped,
+                                          "recoveries": outcome.rounds,
                                           "refusal": outcome.refusal, "feasible": outcome.feasible,
                                           "feasibility": outcome.feasibility, "notes": outcome.notes})
     ctx.write_artifact("schedule.json", outcome.schedule)
-    ctx.metrics.update({"faults": len(outcome.faults), "recoveries": len(outcome.rounds),
+    ctx.metrics.update({"faults": len(outcome.faults), "faults_not_applicable": len(skipped),
+                        "recoveries": len(outcome.rounds),
                         "recovery_seconds": sum(r.get("seconds", 0.0) for r in outcome.rounds)})
     if outcome.refusal:
         ctx.log(f"refusing: {outcome.refusal}")
     return {"world": outcome.world, "schedule": outcome.schedule, "graph": outcome.graph, "faults": outcome.faults,
             "recoveries": outcome.rounds, "refusal": outcome.refusal, "feasible": outcome.feasible,
-            "feasibility": outcome.feasibility}
+            "feasibility": outcome.feasibility, "not_applicable": skipped}

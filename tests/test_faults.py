@@ -453,6 +453,69 @@ def test_a_fault_the_world_has_no_place_for_is_a_user_error(tmp_path, spec, word
 # ------------------------------------------------------------------------------------------
 # the bench and the report
 # ------------------------------------------------------------------------------------------
+def test_a_fault_with_nothing_to_strike_is_run_without_and_recorded_not_applicable(tmp_path):
+    """A goal the world already meets: the schedule gives no robot work, takes from no shelf and
+    drives no leg, so no drawn fault of any kind has a target. The run is carried out (exit 0)
+    without them, and its record names each fault, its kind and why it did not apply."""
+    r = run(tmp_path, "There should be 5 product1 in shelf3.", seed=1,
+            faults="stock-surprise=1,robot-loss=1,passage-closed=1,slowdown=1")
+    assert r.ok, r.error
+    assert r.outputs["faults"] == [] and r.outputs["simulation"]["goal_met"]
+    skipped = {f["name"]: f for f in r.outputs["faults_not_applicable"]}
+    assert set(skipped) == {"stock-surprise", "robot-loss", "passage-closed", "slowdown"}
+    assert "takes no product from a shelf" in skipped["stock-surprise"]["why"]
+    assert "no robot any work" in skipped["robot-loss"]["why"] and "no robot any work" in skipped["slowdown"]["why"]
+    assert "no passage to close" in skipped["passage-closed"]["why"]
+    execution = json.loads((r.record / "steps" / "execute" / "artifacts" / "execution.json").read_text())
+    assert [f["id"] for f in execution["not_applicable"]] == ["f1", "f2", "f3", "f4"]
+    html = r.report().read_text()  # the report says so too
+    assert "Faults not applicable" in html and "no passage to close" in html
+
+
+def test_a_fault_that_names_its_target_stays_a_user_error_on_the_command_line(tmp_path):
+    """Only drawn targets can be not applicable: a household object surprise naming an object the
+    home lacks is exit 2 naming the spec, with no traceback."""
+    out = subprocess.run([sys.executable, "-m", "pipflow.engine.cli", "run", "household", "-i", "team=homogeneous",
+                          "-i", "command=Slice the apple.", "-i", "faults=[{kind: object-surprise, object: melon, in: sink}]",
+                          "--runs-dir", str(tmp_path / "runs"), "--no-cache"], capture_output=True, text=True, cwd=tmp_path)
+    assert out.returncode == 2 and "faults[1]" in out.stderr and "unknown object 'melon'" in out.stderr, out.stderr
+    assert "Traceback" not in out.stderr
+
+
+def test_bench_runs_a_task_a_fault_does_not_apply_to_and_counts_it_apart(tmp_path):
+    """Household, object-surprise=1: slicing carries no object anywhere, so no object lying
+    elsewhere can matter (issue 27: hc-09 stopped the whole bench). The bench runs every task;
+    the slicing run is carried out without the fault (and meets its goal), recorded as not
+    applicable; the fault row's SR and recovery numbers are over the one run that had the fault,
+    and the table counts the other apart, saying which kind and why."""
+    home = REPO / "benchmarks" / "household" / "world.yaml"
+    tasks = tmp_path / "tasks.yaml"
+    tasks.write_text(f"domain: household\nworld: {home}\ntasks:\n"
+                     "  - id: slice\n    category: compound\n    team: homogeneous\n"
+                     "    command: \"Slice the apple and the tomato.\"\n    goal: {state: {apple: [sliced], tomato: [sliced]}}\n"
+                     "  - id: store\n    category: compound\n    team: homogeneous\n"
+                     "    command: \"Put the apple in the fridge.\"\n    goal: {in: {fridge: [apple]}, state: {fridge: [closed]}}\n")
+    results = pipflow.bench(tasks, seeds=1, out=tmp_path / "b", faults="object-surprise=1")
+    f = results["variants"][0]["faults"]
+    assert (f["runs"], f["not_applicable"], f["applied"], f["with_faults"]) == (2, 1, 1, 1)
+    assert f["kinds"] == ["object-surprise"]
+    assert list(f["not_applicable_why"]) == ["object-surprise"]
+    (why, which), = f["not_applicable_why"]["object-surprise"].items()
+    assert which == ["slice seed 0"] and "carries no object" in why
+    with (tmp_path / "b" / "runs.csv").open() as fh:
+        rows = {r["task"]: r for r in csv.DictReader(fh)}
+    assert rows["slice"]["status"] == "succeeded" and rows["slice"]["success"] == "True"
+    assert rows["slice"]["fault_outcome"] == "fault not applicable" and "object-surprise" in rows["slice"]["faults_not_applicable"]
+    assert rows["store"]["fault_outcome"] != "fault not applicable" and json.loads(rows["store"]["faults"]) == ["object-surprise"]
+    store_ok = rows["store"]["success"] == "True"
+    assert f["sr"] == (1.0 if store_ok else 0.0)  # over the run that had the fault, not both
+    table = (tmp_path / "b" / "table.md").read_text()
+    row = next(line for line in table.splitlines() if line.startswith("| default |"))
+    assert [c.strip() for c in row.strip("|").split("|")][:5] == ["default", "object-surprise", "2", "1",
+                                                                   "100" if store_ok else "0"]
+    assert "object-surprise not applicable: 1 run(s) (slice seed 0)" in table
+
+
 def test_bench_measures_with_and_without_faults_side_by_side(tmp_path):
     tasks = tmp_path / "tasks.yaml"
     tasks.write_text(f"world: {REPO / 'benchmarks/warehouse/world.yaml'}\ntasks:\n"
@@ -492,7 +555,8 @@ def test_bench_table_says_sr_where_reachable_and_the_clear_refusals(tmp_path):
         (2, 0.5, 1, 1.0, 1, 0)
     assert f["kinds"] == ["stock-surprise"]
     row = next(line for line in (tmp_path / "b" / "table.md").read_text().splitlines() if line.startswith("| default |"))
-    assert [c.strip() for c in row.strip("|").split("|")][:8] == ["default", "stock-surprise", "2", "50", "1", "100", "1", "0"]
+    assert [c.strip() for c in row.strip("|").split("|")][:9] == ["default", "stock-surprise", "2", "0", "50", "1", "100",
+                                                                   "1", "0"]
     with (tmp_path / "b" / "runs.csv").open() as fh:
         rows = {r["task"]: r for r in csv.DictReader(fh)}
     assert rows["all-p3"]["feasible_after_faults"] == "False" and rows["all-p3"]["fault_outcome"] == "refused: out of reach"
@@ -543,6 +607,39 @@ def test_fault_counts_and_specs_are_read():
     assert one.given == {"robot": "robot2", "after": 2}
 
 
+def test_only_a_drawn_target_can_be_not_applicable(base):
+    """In the warehouse's real world and WH01's schedule: three robot losses drawn where the
+    schedule gives fewer robots work set the extra ones apart, while a robot loss and a slowdown
+    naming their robot always apply; a surprise a domain cannot place where the user named it is
+    the user's error (a domain that says so with FaultNotApplicable), never set apart."""
+    from pipflow.errors import FaultNotApplicable
+    from pipflow.execution.capability import capable
+    from pipflow.taskdomains import task_domain
+
+    run_ = base["wh01"]
+    world = step_outputs(run_, "world")["world"]
+    schedule, graph = run_.outputs["schedule"], run_.outputs["graph"]
+    domain = capable(task_domain(world))
+    working = fk.working_windows(schedule)
+    n = len(working)
+    placed = fk.resolve(fk.parse(f"robot-loss={n + 2}"), world, schedule, graph, 1, domain)
+    assert sorted(f.robot for f in placed.faults) == sorted(working)
+    assert [na.id for na in placed.not_applicable] == [f"f{n + 1}", f"f{n + 2}"]
+    assert all("already stopped" in na.why for na in placed.not_applicable)
+    idle = next(r for r in world["robots"] if r not in working)
+    named = fk.resolve(fk.parse([{"kind": "robot-loss", "robot": idle, "time": 1}, {"kind": "slowdown", "robot": idle}]),
+                       world, schedule, graph, 1, domain)
+    assert [f.robot for f in named.faults] == [idle, idle] and not named.not_applicable
+
+    class Picky(type(domain)):
+        def check_surprise(self, world, given, where):
+            raise FaultNotApplicable("nothing here to be surprised about")
+
+    with pytest.raises(InputError, match=r"faults\[1\]: nothing here"):
+        fk.resolve(fk.parse([{"kind": "stock-surprise", "place": "shelf1", "product": "product1", "count": 1}],
+                            domain.surprise_names), world, schedule, graph, 1, Picky())
+
+
 def test_a_drawn_stock_surprise_is_units_missing_or_misplaced(base):
     """Over seeds, the warehouse's drawn surprise is either units gone from a shelf the plan takes
     from (fewer in the world than recorded), or the same units lying on another shelf with room
@@ -559,7 +656,7 @@ def test_a_drawn_stock_surprise_is_units_missing_or_misplaced(base):
     seen = set()
     for seed in range(40):
         placed = fk.resolve(fk.parse("stock-surprise=1", domain.surprise_names), world, run_.outputs["schedule"],
-                            run_.outputs["graph"], seed, domain)
+                            run_.outputs["graph"], seed, domain).faults
         real = world
         for f in placed:
             real = domain.apply_surprise(real, f.surprise)

@@ -69,7 +69,8 @@ class ExecutionCapability:
     def draw_surprise(self, world: dict, schedule: dict, graph: dict | None,
                       rng: random.Random) -> dict | None:
         """A surprise that matters to this schedule (at a place it takes something from), drawn
-        with ``rng``; None when the schedule offers none. The dict has ``places`` (where a robot
+        with ``rng``; when the schedule offers none, None or :class:`pipflow.errors.FaultNotApplicable`
+        saying why in the domain's words (the run goes on without it). The dict has ``places`` (where a robot
         that arrives notices it), ``words`` (what it is) and the domain's own fields; or ``parts``,
         a list of such dicts found each on its own (units missing at one place lie at another),
         and ``how`` it came about (the domain's word, kept in the record)."""

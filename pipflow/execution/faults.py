@@ -25,6 +25,14 @@ A workflow input (``faults``) or a bench option (``--faults``) names them, in on
 
 ``none`` (or nothing) means no faults. Every problem is a clear :class:`InputError` naming the
 fault (``faults[2]``) and the cause: a fault that cannot be placed is never silently dropped.
+
+**Not applicable**: a fault whose target is drawn (a count, or a spec that leaves its robot,
+passage or place out) may find nothing in a run to strike: a plan that moves no object an object
+surprise could matter to, a schedule that gives no robot work, no leg that passes a passage. Such
+a run is carried out without that fault, and the fault is recorded as not applicable with the
+reason (:class:`NotApplicable`; the bench counts such runs apart: one task where a fault does not
+apply never ends a bench). A spec that names its target (``robot: robot9``, ``place: shelf2``) is
+checked against the world instead: a target the world lacks stays an :class:`InputError`.
 """
 from __future__ import annotations
 
@@ -34,7 +42,7 @@ import re
 from dataclasses import asdict, dataclass, field
 from typing import Any
 
-from pipflow.errors import InputError
+from pipflow.errors import FaultNotApplicable, InputError
 from pipflow.execution.motion import barrier_across, share_point
 from pipflow.suggest import did_you_mean
 
@@ -91,6 +99,33 @@ class Fault:
             return (f"the passage{where} closes{when} (barrier {b.get('width', 0):.1f} x {b.get('depth', 0):.1f} m "
                     f"at ({b.get('x', 0):.1f}, {b.get('y', 0):.1f}))")
         return (self.surprise or {}).get("words") or f"{self.name} at {(self.surprise or {}).get('places')}"
+
+
+@dataclass
+class NotApplicable:
+    """A fault asked for whose drawn target this run does not offer (module docstring): the run
+    goes on without it; the record keeps which fault, its kind and why."""
+
+    id: str
+    kind: str
+    name: str
+    why: str
+    where: str
+
+    def to_json(self) -> dict:
+        return asdict(self)
+
+    def describe(self) -> str:
+        return f"{self.name} ({self.where}) not applicable to this run: {self.why}"
+
+
+@dataclass
+class Placement:
+    """What :func:`resolve` made of the specs: the faults placed in the run, in order, and those
+    that did not apply to it."""
+
+    faults: list[Fault] = field(default_factory=list)
+    not_applicable: list[NotApplicable] = field(default_factory=list)
 
 
 @dataclass
@@ -253,11 +288,14 @@ def check_robot(spec: Spec, world: dict) -> str:
 
 
 def draw_robot(spec: Spec, windows: dict[str, tuple[float, float]], taken: set[str], rng: random.Random) -> str:
-    """A robot with work in the schedule that no earlier loss took (so that the fault bites)."""
+    """A robot with work in the schedule that no earlier loss took (so that the fault bites);
+    :class:`FaultNotApplicable` when there is none."""
     free = sorted(r for r in windows if r not in taken)
     if not free:
-        raise InputError(f"{spec.where}: no robot with work left to fault (the schedule gives work to "
-                         f"{len(windows)} robot(s), {len(taken)} already faulted)")
+        if not windows:
+            raise FaultNotApplicable("the schedule gives no robot any work (nothing is left to carry out)")
+        raise FaultNotApplicable(f"no robot with work left to fault: the {len(windows)} robot(s) the schedule gives "
+                                 "work to are already stopped by earlier robot losses")
     return rng.choice(free)
 
 
@@ -269,48 +307,78 @@ def draw_time(window: tuple[float, float] | None, rng: random.Random) -> float:
 
 
 def resolve(specs: list[Spec], world: dict, schedule: dict, graph: dict | None, seed: int | None,
-            domain: Any, travel: Any = None) -> list[Fault]:
+            domain: Any, travel: Any = None) -> Placement:
     """Place each spec in this run: fields it fixes are checked against the world, the others are
     drawn (module docstring) from the seed's stream, in order. ``domain`` draws and checks its
-    surprises; ``travel`` (a :class:`pipflow.team.travel.TravelMap` of the world) finds passages."""
+    surprises; ``travel`` (a :class:`pipflow.team.travel.TravelMap` of the world) finds passages.
+    A spec whose drawn target the run does not offer is not applicable (module docstring)."""
     rng = rng_for(seed)
     windows = working_windows(schedule)
     names = tuple(getattr(domain, "surprise_names", ()) or ())
-    out: list[Fault] = []
+    out = Placement()
     lost: set[str] = set()
     for k, spec in enumerate(specs, 1):
-        fid, g = f"f{k}", spec.given
+        fid = f"f{k}"
         if spec.kind == SURPRISE and spec.name != SURPRISE and spec.name not in names:
             own = ", ".join(names) or "none"
             raise InputError(f"{spec.where}: {spec.name!r} is not a fault of the {getattr(domain, 'name', '?')!r} "
                              f"task domain (its surprise: surprise, {own})")
-        if spec.kind in (ROBOT_LOSS, SLOWDOWN):
-            robot = check_robot(spec, world) if "robot" in g else draw_robot(spec, windows, lost, rng)
-            fault = Fault(fid, spec.kind, spec.name, robot=robot, drawn=not g)
-            if spec.kind == ROBOT_LOSS:
-                lost.add(robot)
-                if "after" in g:
-                    fault.after = int(g["after"])
-                else:
-                    fault.time = float(g["time"]) if "time" in g else draw_time(windows.get(robot), rng)
+        try:
+            if spec.kind in (ROBOT_LOSS, SLOWDOWN):
+                out.faults.append(_robot_fault(spec, fid, world, windows, lost, rng))
+            elif spec.kind == PASSAGE:
+                out.faults.append(_passage(spec, fid, world, schedule, rng, travel))
             else:
-                fault.time = float(g["time"]) if "time" in g else draw_time(windows.get(robot), rng)
-                fault.factor = float(g["factor"]) if "factor" in g else round(rng.uniform(*SLOW_RANGE), 2)
-            out.append(fault)
-        elif spec.kind == PASSAGE:
-            out.append(_passage(spec, fid, world, schedule, rng, travel))
-        else:
-            surprise = (domain.check_surprise(world, g, spec.where) if g
-                        else domain.draw_surprise(world, schedule, graph, rng))
-            if surprise is None:
-                raise InputError(f"{spec.where}: this schedule takes nothing from any place, so no surprise can "
-                                 "matter to it; give the surprise's place and contents explicitly")
-            parts = surprise.get("parts") or [surprise]
-            for j, part in enumerate(parts):  # each part is found on its own (where a robot arrives)
-                out.append(Fault(fid if len(parts) == 1 else f"{fid}{chr(ord('a') + j)}", SURPRISE, spec.name,
-                                 surprise={**part, "how": surprise.get("how")} if surprise.get("how") else part,
-                                 drawn=not g))
+                out.faults += _surprise(spec, fid, world, schedule, graph, rng, domain)
+        except FaultNotApplicable as why:
+            if names_target(spec):  # the user chose the target: a fault that cannot strike it is their error
+                raise InputError(f"{spec.where}: {why}") from None
+            out.not_applicable.append(NotApplicable(fid, spec.kind, spec.name, str(why), spec.where))
     return out
+
+
+def names_target(spec: Spec) -> bool:
+    """Whether a spec names what its fault strikes (a robot, a passage's ends, a surprise's place
+    and contents) rather than leaving it to be drawn: only a drawn target can be not applicable."""
+    g = spec.given
+    if spec.kind in (ROBOT_LOSS, SLOWDOWN):
+        return "robot" in g
+    if spec.kind == PASSAGE:
+        return "between" in g
+    return bool(g)
+
+
+def _robot_fault(spec: Spec, fid: str, world: dict, windows: dict[str, tuple[float, float]], lost: set[str],
+                 rng: random.Random) -> Fault:
+    """A robot loss or a slowdown: of the robot it names, or of one drawn among those with work."""
+    g = spec.given
+    robot = check_robot(spec, world) if "robot" in g else draw_robot(spec, windows, lost, rng)
+    fault = Fault(fid, spec.kind, spec.name, robot=robot, drawn=not g)
+    if spec.kind == ROBOT_LOSS:
+        lost.add(robot)
+        if "after" in g:
+            fault.after = int(g["after"])
+        else:
+            fault.time = float(g["time"]) if "time" in g else draw_time(windows.get(robot), rng)
+    else:
+        fault.time = float(g["time"]) if "time" in g else draw_time(windows.get(robot), rng)
+        fault.factor = float(g["factor"]) if "factor" in g else round(rng.uniform(*SLOW_RANGE), 2)
+    return fault
+
+
+def _surprise(spec: Spec, fid: str, world: dict, schedule: dict, graph: dict | None, rng: random.Random,
+              domain: Any) -> list[Fault]:
+    """A state surprise as written (checked by the domain), or drawn by the domain where the plan
+    takes something from; one fault per part (each found where a robot first arrives)."""
+    g = spec.given
+    surprise = (domain.check_surprise(world, g, spec.where) if g
+                else domain.draw_surprise(world, schedule, graph, rng))
+    if surprise is None:  # the domain gave no reason of its own
+        raise FaultNotApplicable("this schedule takes nothing from any place, so no surprise can matter to it")
+    parts = surprise.get("parts") or [surprise]
+    return [Fault(fid if len(parts) == 1 else f"{fid}{chr(ord('a') + j)}", SURPRISE, spec.name,
+                  surprise={**part, "how": surprise.get("how")} if surprise.get("how") else part, drawn=not g)
+            for j, part in enumerate(parts)]
 
 
 def _passage(spec: Spec, fid: str, world: dict, schedule: dict, rng: random.Random, travel: Any) -> Fault:
@@ -348,8 +416,8 @@ def _passage(spec: Spec, fid: str, world: dict, schedule: dict, rng: random.Rand
         ends = [_place_at(travel, leg["from"]), _place_at(travel, leg["to"])]
         return Fault(fid, PASSAGE, spec.name, time=time, between=ends if None not in ends else None,
                      at=share, barrier=barrier, drawn=True)
-    raise InputError(f"{spec.where}: no passage to close: no leg of this schedule runs 3 m or more through open "
-                     "floor away from access points")
+    raise FaultNotApplicable("no passage to close: no leg of this schedule runs 3 m or more through open floor "
+                             "away from access points")
 
 
 def _place_at(travel: Any, point: Any) -> str | None:

@@ -26,7 +26,8 @@ from pipflow.values import NOT_UNDERSTOOD, ambiguous
 
 
 #: the outputs a run under faults leaves even when it stops early (what it did, what went wrong)
-FAULT_OUTPUTS = ("graph", "schedule", "simulation", "faults", "recoveries", "feasible_after_faults")
+FAULT_OUTPUTS = ("graph", "schedule", "simulation", "faults", "recoveries", "feasible_after_faults",
+                 "faults_not_applicable")
 
 
 @dataclass(frozen=True)

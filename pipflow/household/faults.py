@@ -22,7 +22,7 @@ import copy
 import random
 from typing import Any
 
-from pipflow.errors import InputError
+from pipflow.errors import FaultNotApplicable, InputError
 from pipflow.execution.capability import Played
 from pipflow.household.problem import CONDITIONS, goal_from_problem, goal_refusal
 from pipflow.household.scoring import holds
@@ -47,18 +47,21 @@ def _words(obj: str, place: str, records: str) -> str:
 
 
 def draw_surprise(world: dict, schedule: dict, graph: dict | None, rng: random.Random) -> dict | None:
-    """An object the schedule carries away from a place, lying in another receptacle."""
+    """An object the schedule carries away from a place, lying in another receptacle;
+    :class:`FaultNotApplicable` when the plan carries no object away (it only slices, switches,
+    heats...) or the home has no other receptacle for it."""
     moved = sorted({(s.get("args") or [None])[0] for s in schedule.get("subtasks", [])
                     if s.get("action") in ("store", "trash")} - {None})
     moved = [o for o in moved if o in world["objects"]]
     if not moved:
-        return None
+        raise FaultNotApplicable("the plan carries no object from one place to another (it stores or trashes none), "
+                                 "so no object lying elsewhere can matter to it")
     obj = rng.choice(moved)
     records = world["objects"][obj]["in"]
     elsewhere = sorted(p for p, e in world["places"].items()
                        if p != records and "receptacle" in e["properties"] and not e.get("drop"))
     if not elsewhere:
-        return None
+        raise FaultNotApplicable(f"no receptacle other than {records} for {obj} to lie in")
     place = rng.choice(elsewhere)
     return {"object": obj, "in": place, "records": records, "places": [records, place],
             "words": _words(obj, place, records)}

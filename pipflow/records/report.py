@@ -325,7 +325,8 @@ def _run_body(d: Path, drawn: _Pictures) -> str:
     if sim_s:
         parts += _simulation_sections(sim_s, world, schedule, outputs.get("goal", inputs.get("goal")), mode, drawn)
 
-    parts.append(_faults_section(executed, world, drawn, records, sim_s))  # runs under faults only ("" otherwise)
+    parts.append(_faults_section(executed, world, drawn, records, sim_s)  # runs under faults only ("" otherwise)
+                 + _not_applicable_section(_find(steps, shapes, values.EXECUTION)))
 
     parts.append(_metrics_section(met_s))
 
@@ -546,6 +547,17 @@ def _faults_section(executed: tuple[str, Path, dict] | None, world: dict | None,
         except Exception as exc:  # a picture must never hide the rest of the report
             parts.append(f"<p class='bad'>could not draw the faults: {_e(exc)}</p>")
     return "\n".join(parts)
+
+
+def _not_applicable_section(found: tuple[str, Path, dict] | None) -> str:
+    """The faults asked for that had nothing in this run to strike (the run went on without
+    them): which, their kind, and why. Empty when every fault asked for applied."""
+    skipped = [f for f in ((found[2] if found else {}).get("not_applicable") or []) if isinstance(f, dict)]
+    if not skipped:
+        return ""
+    return ("<h3 id='faults-not-applicable'>Faults not applicable (the run was carried out without them)</h3>"
+            + _table(["fault", "kind", "asked for in", "why"],
+                     [[f.get("id"), f.get("name"), f.get("where"), f.get("why")] for f in skipped]))
 
 
 def _flat(state: Any, prefix: tuple = ()) -> dict[tuple, Any]:

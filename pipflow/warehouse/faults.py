@@ -22,7 +22,7 @@ import math
 import random
 from typing import Any
 
-from pipflow.errors import InputError
+from pipflow.errors import FaultNotApplicable, InputError
 from pipflow.execution.capability import Played
 from pipflow.goalcounts import limits
 from pipflow.pddl.names import pddl_name
@@ -57,7 +57,8 @@ def draw_surprise(world: dict, schedule: dict, graph: dict | None, rng: random.R
 
     Drawn where the plan takes from, so that it always matters; never chosen so that the goal
     stays reachable: when the goal needed the units that are gone (or the room that misplaced
-    ones take), the run's right answer is a refusal, and the bench counts it as such."""
+    ones take), the run's right answer is a refusal, and the bench counts it as such.
+    :class:`FaultNotApplicable` when the plan takes from no shelf that holds units."""
     nodes = {n["id"]: n for n in (graph or {}).get("nodes", [])}
     first: dict[str, tuple[str, str]] = {}  # shelf -> (role of its first visit, product)
     for rec in sorted(schedule.get("subtasks", []), key=lambda r: (float(r["start"]), r["id"])):
@@ -69,7 +70,8 @@ def draw_surprise(world: dict, schedule: dict, graph: dict | None, rng: random.R
     candidates = sorted((s, p) for s, (role, p) in first.items()
                         if role == "from" and p in world["products"] and int(world["stock"].get(s, {}).get(p, 0)) > 0)
     if not candidates:
-        return None
+        raise FaultNotApplicable("the plan takes no product from a shelf that holds it (a first visit that loads), "
+                                 "so no shelf's count can matter to it")
     shelf, product = rng.choice(candidates)
     records = int(world["stock"].get(shelf, {}).get(product, 0))
     k = rng.randint(1, min(3, records))
