@@ -309,7 +309,9 @@ def test_held_out_sets_are_never_misread(w, task):
     answer is a refusal is never given a goal."""
     from pipflow.household.language.translator import translate
 
-    assert task.get("construction") and task.get("category")
+    # a held-out set's author may not see the construction labels (they would read the other
+    # sets to learn them): the paper's category is required, a construction label is not
+    assert task.get("category") in ("compound", "complex", "vague")
     try:
         got = translate(task["command"], w)
     except (TranslationError, Refusal):
