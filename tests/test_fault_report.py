@@ -67,6 +67,14 @@ def test_the_report_shows_the_run_as_carried_out(lost_while_carrying):
     state = section.split("The state: records, as found, at the end")[1]
     for product, n in final[drop].items():
         assert f"<td>{drop} {product}</td><td class='num'>&ndash;</td><td class='num'>&ndash;</td><td class='num'>{n}</td>" in state
+    # a count gone from a shelf the final state lists is none left (0), never drawn as unknown
+    table = state.split("</table>")[0]
+    records = json.loads((Path(run.record) / "steps" / "world" / "outputs.json").read_text())["world"]["stock"]
+    emptied = [f"{shelf} {product}" for shelf, held in records.items() for product, n in held.items()
+               if n and shelf in final and product not in final[shelf]]
+    assert emptied, "WH10 empties some shelf of a product"
+    for name in emptied:
+        assert table.split(f"<td>{name}</td>")[1].split("</tr>")[0].endswith("<td class='num'>0</td>")
 
 
 def test_the_replay_plays_the_executed_schedule_in_the_real_world(lost_while_carrying, tmp_path):

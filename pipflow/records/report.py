@@ -570,6 +570,17 @@ def _flat(state: Any, prefix: tuple = ()) -> dict[tuple, Any]:
     return {prefix: state} if prefix else {}
 
 
+def _count(state: dict, key: tuple) -> Any:
+    """``state[key]``; a count the state leaves out under a place it does list is 0 (a state
+    lists what is there: "shelf2 product3" gone from a listed shelf2 is none left, not unknown),
+    while a place the state does not list at all stays unknown (None, drawn as a dash)."""
+    if key in state:
+        return state[key]
+    siblings = [v for k, v in state.items() if k[:-1] == key[:-1] and len(k) == len(key)]
+    counts = siblings and all(isinstance(v, int) and not isinstance(v, bool) for v in siblings)
+    return 0 if len(key) > 1 and counts else None
+
+
 #: the most rows the state table shows (a thousand shelves' worth would bury the report)
 STATE_ROWS = 60
 
@@ -593,7 +604,7 @@ def _state_table(records: dict | None, world: dict | None, sim_s: tuple[str, Pat
                    if not (before.get(k) == found.get(k) == end.get(k))}, key=lambda k: [pictures.natural_key(p) for p in k])
     if not keys:
         return ""
-    rows = [[" ".join(k), before.get(k), found.get(k), end.get(k)] for k in keys[:STATE_ROWS]]
+    rows = [[" ".join(k), *(_count(state, k) for state in (before, found, end))] for k in keys[:STATE_ROWS]]
     more = f"<p class='small'>and {len(keys) - STATE_ROWS} more</p>" if len(keys) > STATE_ROWS else ""
     return ("<h3>The state: records, as found, at the end</h3><p class='small'>Every entry that is not the same in "
             "all three: the world file's records, the world as the run really found it, and the final observed state "
