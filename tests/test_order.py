@@ -58,7 +58,8 @@ def test_invalid_orders_are_refused_with_where(bad: dict, where: str) -> None:
 
 @pytest.mark.parametrize("statement,expected", [
     ({"op": "set", "places": A, "items": X, "amount": {"count": 7}}, {"a": {"x": 7}}),
-    ({"op": "set", "places": C, "items": X, "amount": {"all": True}}, {"c": {"x": 10}}),
+    # all of an item on one place is none anywhere else: the goal lists those places at 0
+    ({"op": "set", "places": C, "items": X, "amount": {"all": True}}, {"c": {"x": 10}, "a": {"x": 0}, "b": {"x": 0}}),
     ({"op": "set", "places": C, "items": {"all": True}, "amount": {"count": 1}}, {"c": {"x": 1, "y": 1, "z": 1}}),
     ({"op": "set", "places": C, "items": Y, "amount": {"as_many_as": "a"}}, {"c": {"y": 3}}),
     ({"op": "change", "places": A, "items": X, "amount": {"more": 5}}, {"a": {"x": 9}}),
