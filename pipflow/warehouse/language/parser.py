@@ -864,7 +864,8 @@ class _Sentence(GoalRules, TailRules, Interpreter):
             if r in self.bind and not r.get("open"):
                 scope = self.own[id(r)] if len(own) > 1 and id(r) in self.own else statements
                 use_product, use_place = self._scope(scope)
-                if r in self.job_pronouns and (use_product or use_place) and self.picks.get("scope") != "move":
+                if (r in self.job_pronouns and not self.statements and (use_product or use_place)
+                        and self.picks.get("scope") != "move"):   # a sentence of its own after the goal
                     if self.picks.get("scope") == "command":
                         out.append(dict(r))   # chosen: the whole job
                         continue
