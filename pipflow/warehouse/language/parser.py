@@ -102,7 +102,7 @@ class _Sentence(GoalRules, TailRules, Interpreter):
     def __init__(self, lexed: Lexed, lex: Lexicon, robots: RobotSelector, memory: dict | None = None,
                  picks: dict | None = None):
         self.lexed, self.lex, self.robots = lexed, lex, robots
-        self.picks = picks or {}  # a reading the user chose where the sentence has several (_Choice)
+        self.picks = picks or {}  # a reading the user chose where the sentence has several (Choice)
         memory = memory or {}
         # what earlier sentences said, for "them", "too", "do it" and an elided item or place
         self.prior: list[dict] = list(memory.get("statements") or [])
@@ -721,7 +721,6 @@ class _Sentence(GoalRules, TailRules, Interpreter):
         places: list[dict] = []
         unscoped_all = False
         item_pronoun = False  # "must not move them": the pronoun is the object of the robots' work
-        job_pronoun = False
         if scope is not None:
             for c in scope.children:
                 if not isinstance(c, Tree):
@@ -736,7 +735,6 @@ class _Sentence(GoalRules, TailRules, Interpreter):
                     said = (base.get("words") or "").lower().split()
                     at = max((k for k, w in enumerate(said) if w in PRONOUNS), default=0)
                     item_pronoun = at > 0 and said[at - 1] in ITEM_VERBS
-                    job_pronoun = _for_this(base.get("words") or "")
                 elif c.data == "ro_any":
                     unscoped_all = True
                 elif c.data == "rw_from":
@@ -753,7 +751,6 @@ class _Sentence(GoalRules, TailRules, Interpreter):
                             places.append({"from": x, "to": y})
                 elif c.data == "rw_pronoun":
                     pronoun = True
-                    job_pronoun = _for_this(base.get("words") or "")
                 elif c.data in ("rw_all",):
                     unscoped_all = True
         # "from shelf1 to shelf2" is one move, whether read as a route or as "from" then "to"
@@ -771,7 +768,7 @@ class _Sentence(GoalRules, TailRules, Interpreter):
                 self.bind.append(base)
                 if item_pronoun:
                     self.item_pronouns.append(base)
-                if job_pronoun:
+                if _for_this(base.get("words") or ""):
                     self.job_pronouns.append(base)
             self.rules.append(base)
             return
@@ -872,7 +869,7 @@ class _Sentence(GoalRules, TailRules, Interpreter):
                     # "Move the hats to P. Don't use grip2 for this.": this job (no robot of it
                     # may be grip2), or this move (grip2 may still do any other)? Readers differ
                     # (both are in our held-out sets' golds); the rules allow different plans
-                    raise _Choice(
+                    raise Choice(
                         "scope", ("command", "move"),
                         f"{quote(r.get('words') or '')}: the rule may hold for the whole command or only for "
                         f"this move ({_scope_words(use_product, use_place)}); say which "
@@ -888,7 +885,7 @@ class _Sentence(GoalRules, TailRules, Interpreter):
                         # "only the forklift should handle it": it is the product (any move of
                         # it) or this move of it? Readers differ; the two rules allow different
                         # plans, so neither is guessed
-                        raise _Choice(
+                        raise Choice(
                             "scope", ("item", "move"),
                             f"{quote(r.get('words') or '')}: the rule may hold for {use_product} wherever it "
                             f"goes or only for this move of it ({', '.join(f'{k} {v}' for k, v in use_place.items())}); "
@@ -991,10 +988,6 @@ def _fail(exc: UnexpectedInput, lexed: Lexed, lex: Lexicon) -> TranslationError:
                             f"(shelves: {lex.index.candidates('shelf')}; products: "
                             f"{lex.index.candidates('product')}; robots: {lex.index.candidates('robot')}; "
                             f"robot groups: {lex.group_names()})")
-
-
-#: a sentence with several readings that ask for different things (:class:`goals.Choice`)
-_Choice = Choice
 
 
 def _for_this(words: str) -> bool:
@@ -1130,7 +1123,7 @@ def _one_meaning(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dic
         (_, a, _), (_, b, _) = meant[0], next(x for x in meant if x[2] != meant[0][2])
         wa = "; ".join(s["words"] for s in a.statements + a.rules)
         wb = "; ".join(s["words"] for s in b.statements + b.rules)
-        raise _Choice("reading", tuple(range(min(len(distinct), MAX_CANDIDATES))),
+        raise Choice("reading", tuple(range(min(len(distinct), MAX_CANDIDATES))),
                       f"'{sentence}' can be read in two ways that ask for different things "
                       f"('{wa}' or '{wb}'); nothing is guessed: say it another way")
     return min(meant or readings, key=lambda x: x[0])[1]
@@ -1193,7 +1186,7 @@ def candidates(command: str, world: dict, exc: TranslationError) -> list[dict]:
     sentence = getattr(exc, "sentence", None)
     if sentence is None:
         picks: list[dict] = []
-    elif isinstance(exc, _Choice):
+    elif isinstance(exc, Choice):
         picks = [{sentence: {exc.key: option}} for option in exc.options]
     else:
         picks = []  # a word no rule places: the partial parses below leave it (or its clause) out first
