@@ -22,6 +22,7 @@ for the record only.
 """
 from __future__ import annotations
 
+import argparse
 import json
 import os
 import sys
@@ -210,11 +211,20 @@ def _row(name: str, counts: Counter, width: int) -> str:
 
 
 def main(argv: list[str]) -> int:
-    verbose = "-v" in argv
-    files = [Path(a) for a in argv if a != "-v"] or default_task_files()
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("-v", "--verbose", action="store_true", help="a line for every task, not only the misses")
+    parser.add_argument("files", nargs="*", type=Path,
+                        help="task files (default: every task file of benchmarks/language/ and the paper's tasks)")
+    args = parser.parse_args(argv)
+    verbose = args.verbose
+    files = args.files or default_task_files()
     outcomes: list[Outcome] = []
     started = time.perf_counter()
     for path in files:
+        if not path.is_file():
+            print(f"error: {path}: no such task file", file=sys.stderr)
+            return 2
         try:
             outcomes += run_file(path.resolve())
         except WorldError as exc:

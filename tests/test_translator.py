@@ -85,6 +85,16 @@ def test_benchmark_script_prints_share() -> None:
     assert "100.0%" in out.stdout.splitlines()[-3]
 
 
+def test_translator_benchmark_says_its_usage_and_refuses_a_missing_file_without_a_traceback(tmp_path):
+    script = str(ROOT / "benchmarks" / "translator.py")
+    helped = subprocess.run([sys.executable, script, "--help"], capture_output=True, text=True, check=False)
+    assert helped.returncode == 0 and "usage:" in helped.stdout
+    missing = tmp_path / "none.yaml"
+    out = subprocess.run([sys.executable, script, str(missing)], capture_output=True, text=True, check=False)
+    assert out.returncode == 2
+    assert str(missing) in out.stderr and "Traceback" not in out.stderr
+
+
 def _code_strings(src: str) -> list[str]:
     """String literals and names of a module, docstrings and comments left out."""
     tree = ast.parse(src)
