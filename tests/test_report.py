@@ -158,9 +158,9 @@ def test_bench_report_renders_in_chromium(tmp_path):
 def test_broken_image_is_detected(tmp_path):
     """The check itself must be able to fail: a page with a missing picture is not ok."""
     page = tmp_path / "p.html"
-    from pipflow.records import report
+    from pipflow.records import htmlparts
 
-    page.write_text(f"<html><body><img src='missing.png'>{report._CHECK_SCRIPT}</body></html>")
+    page.write_text(f"<html><body><img src='missing.png'>{htmlparts.CHECK_SCRIPT}</body></html>")
     dom = render(page, tmp_path / "s.png")
     assert 'data-images-ok="false"' in dom
 
