@@ -12,6 +12,7 @@ from pathlib import Path
 from typing import Any
 
 from pipflow.engine.writes import write_file
+from pipflow.placelabels import place_labels
 from pipflow.taskdomains import task_domain
 from pipflow.team.trajectory import ROBOT_COLOURS, Trajectory
 
@@ -84,14 +85,30 @@ def draw_floor(ax, world: dict) -> None:
     for name, fixture in task_domain(world).places(world).items():
         ax.add_patch(Rectangle((fixture["x"], fixture["y"]), fixture["width"], fixture["depth"], fc="#b08a66",
                                ec="#5a4030"))
-        ax.text(fixture["x"] + fixture["width"] / 2, fixture["y"] + fixture["depth"] / 2, name, ha="center",
-                va="center", fontsize=8, color="white")
         ax.plot(*fixture["access"], marker="x", color="#5a4030", ms=6)
     ax.set_xlim(-0.5, fw + 0.5)
     ax.set_ylim(-0.5, fh + 0.5)
     ax.set_aspect("equal")
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")
+
+
+def name_places(ax, world: dict) -> None:
+    """Write each place's name where it can be read (:func:`pipflow.placelabels.place_labels`),
+    sized to the axes as laid out: call it after ``tight_layout``, which sets how many points a
+    metre takes. A drop place's name is red; a name beside its place is in dark ink."""
+    ax.apply_aspect()
+    fig, box = ax.figure, ax.get_position()
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    per_metre = 72 * min(box.width * fig.get_figwidth() / (x1 - x0), box.height * fig.get_figheight() / (y1 - y0))
+    places = task_domain(world).places(world)
+    labels = place_labels([(n, (f["x"], f["y"], f["width"], f["depth"])) for n, f in places.items()],
+                          (float(world["floor"]["width"]), float(world["floor"]["height"])),
+                          largest=8 / per_metre, smallest=5.5 / per_metre, beside=7 / per_metre)
+    for (name, f), label in zip(places.items(), labels):
+        ink = "#c62828" if f.get("drop") else "white" if label.inside else "#3b2a1c"
+        ax.text(label.x, label.y, name, ha="center", va="center", fontsize=label.size * per_metre,
+                rotation=90 if label.upright else 0, color=ink)
 
 
 def path_map(world: dict, trajectories: dict[str, list], path: Path, travel: dict | None = None) -> Path:
@@ -117,6 +134,7 @@ def path_map(world: dict, trajectories: dict[str, list], path: Path, travel: dic
     ax.legend(fontsize=9, loc="upper left", bbox_to_anchor=(1.01, 1.0), title="robot (travel)", title_fontsize=9)
     ax.set_title("Robot paths (o start, \u25a0 end)")
     fig.tight_layout()
+    name_places(ax, world)
     save_figure(fig, path, dpi=90)
     plt.close(fig)
     return Path(path)
@@ -135,6 +153,7 @@ def animation_gif(world: dict, trajectories: dict[str, list], path: Path, makesp
     plt = _plt()
     fig, ax = plt.subplots(figsize=(5, 3.5), dpi=72)
     draw_floor(ax, world)
+    name_places(ax, world)
     names = list(world.get("robots", {}))
     # replay the recorded samples as a trajectory (one leg through all recorded points)
     replay = {}
@@ -292,15 +311,14 @@ FAULT_MARKS = {"robot-loss": ("X", "#c62828"), "slowdown": ("v", "#ef6c00"), "pa
 
 
 def _fixtures(ax, world: dict) -> None:
-    """Every footprint of the floor (shelves, household places, drop places) with its name."""
+    """Every footprint of the floor (shelves, household places, drop places; their names are
+    written by :func:`name_places` once the figure is laid out)."""
     from matplotlib.patches import Rectangle
 
     for name, f in task_domain(world).places(world).items():
         drop = bool(f.get("drop"))
         ax.add_patch(Rectangle((f["x"], f["y"]), f["width"], f["depth"], fc="#e0b0b0" if drop else "#b08a66",
                                ec="#c62828" if drop else "#5a4030"))
-        ax.text(f["x"] + f["width"] / 2, f["y"] + f["depth"] / 2 + (0.35 if drop else 0), name, ha="center",
-                va="center", fontsize=6 if drop else 7, color="#c62828" if drop else "white")
 
 
 def fault_map(world: dict, schedule: dict, faults: list[dict], rounds: list[dict], path: Path) -> Path:
@@ -362,6 +380,7 @@ def fault_map(world: dict, schedule: dict, faults: list[dict], rounds: list[dict
     ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), title="robot", title_fontsize=8)
     ax.set_title("Faults and the paths as driven (X robot stopped, bar passage closed, * surprise, v slow)")
     fig.tight_layout()
+    name_places(ax, world)
     save_figure(fig, path, dpi=90)
     plt.close(fig)
     return Path(path)

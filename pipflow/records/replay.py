@@ -18,6 +18,7 @@ import html
 import json
 from typing import Any
 
+from pipflow.placelabels import place_labels
 from pipflow.team.trajectory import ROBOT_COLOURS, Trajectory
 
 #: the most samples a robot's track keeps in the page (longer tracks are thinned evenly; the
@@ -192,11 +193,17 @@ def replay_html(data: dict) -> str:
     """The replay section: the SVG floor with robots, the controls, the robots' table."""
     fw, fh = data["floor"]["width"], data["floor"]["height"]
     parts = [f"<rect x='0' y='0' width='{fw}' height='{fh}' fill='#f4f4ef' stroke='#222' stroke-width='0.06'/>"]
-    for pl in data["places"]:
+    labels = place_labels([(str(pl["name"]), (pl["x"], pl["y"], pl["width"], pl["depth"])) for pl in data["places"]],
+                          (fw, fh))
+    for pl, label in zip(data["places"], labels):
         x, y, w, d = pl["x"], pl["y"], pl["width"], pl["depth"]
+        name = html.escape(str(pl["name"]))
+        cx, cy = f"{label.x:.3f}", f"{fh - label.y:.3f}"
+        turn = f" transform='rotate(-90 {cx} {cy})'" if label.upright else ""
         parts.append(f"<rect x='{x}' y='{fh - y - d}' width='{w}' height='{d}' fill='#b08a66' stroke='#5a4030' "
-                     f"stroke-width='0.04'><title>{html.escape(str(pl['name']))}</title></rect>"
-                     f"<text x='{x + w / 2}' y='{fh - y - d / 2}' class='place'>{html.escape(str(pl['name']))}</text>")
+                     f"stroke-width='0.04'><title>{name}</title></rect>"
+                     f"<text x='{cx}' y='{cy}' class='{'place' if label.inside else 'place-beside'}' "
+                     f"style='font-size:{label.size:.3f}px'{turn}>{name}</text>")
     for r, info in data["robots"].items():
         pts = " ".join(f"{p[1]:.2f},{fh - p[2]:.2f}" for p in info["track"])
         parts.append(f"<polyline points='{pts}' fill='none' stroke='{info['colour']}' stroke-width='0.05' "
@@ -233,6 +240,7 @@ def replay_html(data: dict) -> str:
             f"<p class='small'>The schedule over time, from {source}; a thick ring: the robot carries the "
             "subtask's load. Drag the slider, or play.</p>"
             "<style>#replay-svg text.place{font-size:.42px;fill:#fff;text-anchor:middle;dominant-baseline:middle}"
+            "#replay-svg text.place-beside{fill:#3b2a1c;text-anchor:middle;dominant-baseline:middle}"
             "#replay-svg text.robot{font-size:.42px;fill:#111;text-anchor:middle;font-weight:bold}"
             "#replay-svg text.load{font-size:.36px;fill:#7a2e00;text-anchor:middle}"
             ".replay-wrap{display:flex;gap:1.5em;align-items:flex-start;flex-wrap:wrap}"
