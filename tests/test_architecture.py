@@ -44,7 +44,7 @@ LAYERS: list[tuple[str, tuple[tuple[str, ...], ...]]] = [
     ("team coordination", (("pipflow.team",),)),
     ("PDDL tools", (("pipflow.pddl",),)),
     ("neutral helpers", (("pipflow.taskdomain", "pipflow.taskdomains", "pipflow.goalcounts",
-                          "pipflow.worldfile", "pipflow.floorplan", "pipflow.bullet", "pipflow.llmslot",
+                          "pipflow.worldfile", "pipflow.floorplan", "pipflow.placelabels", "pipflow.bullet", "pipflow.llmslot",
                           "pipflow.liberrors", "pipflow.metrics", "pipflow.meaning", "pipflow.values",
                           "pipflow.taskfile", "pipflow.worldcheck", "pipflow.scoring"),)),
     ("engine", (("pipflow.engine",),)),
