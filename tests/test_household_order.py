@@ -47,6 +47,26 @@ def test_state_change_verbs_and_particles(world):
     assert goal_of("Shut off the floor lamp.", world) == ({}, {"floorlamp": ["off"]}, [])
 
 
+def test_a_thing_said_after_the_particle_takes_the_same_switch(world):
+    """ "turn the TV on and the stove": the stove goes on too (it was refused, or read with what
+    followed it)."""
+    assert goal_of("Turn the TV on and the stove.", world) == ({}, {"tv": ["on"], "stove": ["on"]}, [])
+    assert goal_of("Switch the TV off and the floor lamp, please.", world) == \
+        ({}, {"tv": ["off"], "floorlamp": ["off"]}, [])
+    assert goal_of("Turn the TV on and the stove off.", world) == ({}, {"tv": ["on"], "stove": ["off"]}, [])
+
+
+def test_a_thing_between_a_switch_and_a_clause_of_its_own_is_asked_never_guessed(world):
+    """ "put the TV on and the stove, and the desk lamp can go off": the stove goes with the TV
+    (on) or with the lamp (off); the reader turned it off. Both readings are offered, none is taken."""
+    from pipflow.household.language.translator import translate
+
+    with pytest.raises(TranslationError) as refused:
+        translate("Put the TV on and the stove, and the desk lamp can go off.", world)
+    offered = " | ".join(c["reading"] for c in refused.value.candidates)
+    assert "stove on" in offered and "stove off" in offered
+
+
 def test_heating_in_a_named_heater_keeps_the_thing_there(world):
     """'heat the egg in the microwave' was refused as 'microwave cannot be hot'; the egg must be
     heated there, so it ends in the (closed) microwave, and the fridge it came from is closed."""

@@ -41,6 +41,8 @@ toggle: @V_TOGGLE onoff tthings @HERE?
       | @V_TOGGLE typo_off tthings
       | @V_SHUTDOWN tthings
       | _vput tthings on
+      | @V_TOGGLE tthings onoff (@AND | COMMA @AND) tthings @HERE?
+      | _vput tthings on (@AND | COMMA @AND) tthings
       | @V_LIGHT tthings @HERE?
 typo_off: @OF
 tthings: tnp ((COMMA | @AND | COMMA @AND) tnp)*

@@ -741,8 +741,9 @@ class Builder:
                 st["via"] = {"words": _words(self.tags, via), "pronoun": True}
         elif kind == "toggle" and self._has(node, "V_LIGHT"):   # "light the stove"
             st = {"op": "change", "things": things, "to": "on"}
-        elif kind == "toggle":
-            st = {"op": "change", "things": things, "to": self.state(node)}
+        elif kind == "toggle":   # "turn the fire on and the kettle": the things after the particle too
+            st = {"op": "change", "things": [t for sub in self._subs(node, "tthings") for t in self.things(sub)],
+                  "to": self.state(node)}
         elif kind == "put":
             # "put it in the cabinet along with the bowl": the things after the place go there too
             subs = self._subs(node, "things") + self._subs(node, "sthings")
