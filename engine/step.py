@@ -56,7 +56,10 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Annotated, Any, Callable, NewType, Union
 
-from pipflow.errors import StepDefinitionError
+import yaml
+
+from pipflow.errors import InputError, StepDefinitionError
+from pipflow.yamlsource import read_source, safe_load, yaml_error_diagnostic
 
 from .provenance import Provenance
 from .store import atomic_write
@@ -397,6 +400,19 @@ class StepContext:
         resolved = p if p.is_absolute() else (self.base_dir / p).resolve()
         self.check_readable(resolved, f"step {self.step_id!r}: {path}", named_as=str(path))
         return resolved
+
+    def read_yaml(self, value: Any, what: str) -> dict:
+        """A step input that is "a path or its content": a mapping given inline is returned as it
+        is; anything else names a YAML file (resolved as :meth:`resolve_path`), read by the shared
+        bounded reader and loader (regular files, a size cap, no alias bombs). Bad YAML is an
+        :class:`~pipflow.errors.InputError` naming ``what``, the file and the line."""
+        if isinstance(value, dict):
+            return value
+        path = self.resolve_path(value)
+        try:
+            return safe_load(read_source(path, what)) or {}
+        except yaml.YAMLError as exc:
+            raise InputError(f"{what}: {yaml_error_diagnostic(exc, str(path))}") from None
 
     def check_readable(self, path: str | os.PathLike, what: str, named_as: Any = None) -> None:
         """Raise :class:`~pipflow.errors.InputError` unless the step may read ``path`` (named by

@@ -10,8 +10,6 @@ from __future__ import annotations
 
 from typing import Annotated, Any
 
-import yaml
-
 from pipflow import Check, Choices, Doc, PathStr, StepContext, step
 from pipflow.baselines.cot import read_cot
 from pipflow.baselines.lammap import read_summary, subtasks_from_data
@@ -26,7 +24,6 @@ from pipflow.language.cache import ResponseCache
 from pipflow.language.llm import Retry, sum_usage
 from pipflow.language.prompting import find_template, prompt_problem, render
 from pipflow.pddl.solver import check_engine
-from pipflow.yamlsource import read_source, safe_load
 
 #: the baselines, by the names their workflows and bench rows use
 METHODS = ("cot", "smart-llm", "lamma-p")
@@ -41,16 +38,6 @@ def _text(ctx: StepContext, path: str, what: str) -> str:
         return file.read_text(encoding="utf-8")
     except OSError as exc:
         raise InputError(f"{what} {file}: {exc.strerror}") from None
-
-
-def _yaml(ctx: StepContext, value: Any, what: str) -> dict:
-    if isinstance(value, dict):
-        return value
-    file = ctx.resolve_path(value)
-    try:
-        return safe_load(read_source(file, what)) or {}
-    except yaml.YAMLError as exc:
-        raise InputError(f"{what} {file} is not valid YAML: {exc}") from None
 
 
 def _team(world: dict) -> list[str]:
@@ -279,7 +266,7 @@ def subplans(
     check_engine(planner)
     domain_text = _text(ctx, domain, "domain file")
     level = robot_level(_text(ctx, robot_domain, "robot-level domain file"),
-                        _yaml(ctx, robot_actions_file, "robot-level actions file"), domain_text)
+                        ctx.read_yaml(robot_actions_file, "robot-level actions file"), domain_text)
     base = {"command": command, "world": world, "method": "lamma-p", "domain": domain_text,
             "skills": _skill_data(domain_text), "team": _team(world), "answers": dict(answers or {}),
             "robot_domain": level.text, "subtasks": subtasks}
@@ -315,7 +302,7 @@ def graph(
     method: Annotated[str, Choices(*METHODS), Doc("the baseline whose plan it is")],
 ) -> dict:
     out = schedule_input(steps_from_data(plan), world, _text(ctx, domain, "domain file"),
-                         _yaml(ctx, actions, "action metadata"), method)
+                         ctx.read_yaml(actions, "action metadata"), method)
     ctx.write_artifact("graph.json", out["graph"])
     ctx.write_artifact("allocation.json", out["allocation"])
     for node in out["graph"]["nodes"]:

@@ -11,25 +11,12 @@ from __future__ import annotations
 from typing import Annotated, Any
 
 from pipflow import Check, Choices, Doc, PathStr, StepContext, step
-from pipflow.errors import AllocationError, InputError
+from pipflow.errors import AllocationError
 from pipflow.execution import faults as fault_specs
 from pipflow.execution.capability import capable
 from pipflow.liberrors import SCIP, library_errors
 from pipflow.taskdomains import task_domain
 from pipflow.values import ExecutionOutputs
-from pipflow.yamlsource import read_source, safe_load
-
-
-def _metadata(ctx: StepContext, value: Any) -> dict:
-    import yaml
-
-    if isinstance(value, dict):
-        return value
-    path = ctx.resolve_path(value)
-    try:  # the shared bounded reader and loader (regular files, size cap, no alias bombs)
-        return safe_load(read_source(path, "action metadata file")) or {}
-    except yaml.YAMLError as exc:
-        raise InputError(f"action metadata {path} is not valid YAML: {exc}") from exc
 
 
 @step("execute",
@@ -88,8 +75,9 @@ def execute(
         ctx.write_artifact("execution.json", {"faults": [], "not_applicable": skipped, "recoveries": []})
         ctx.metrics.update({"faults": 0, "faults_not_applicable": len(skipped)})
         return {**identity, "not_applicable": skipped}
-    planning = Planning(domain_text=ctx.resolve_path(domain).read_text(encoding="utf-8"), metadata=_metadata(ctx, actions),
-                        problem=problem, planner=planner, planner_params=planner_params, fallback=fallback,
+    planning = Planning(domain_text=ctx.resolve_path(domain).read_text(encoding="utf-8"),
+                        metadata=ctx.read_yaml(actions, "action metadata file"), problem=problem, planner=planner,
+                        planner_params=planner_params, fallback=fallback,
                         planner_timeout=planner_timeout, graph_mode=graph_mode, method=method, mode=mode, cost=cost,
                         constraints=list(constraints or []), speed=speed, handling=handling, repair=repair)
     with library_errors(SCIP, AllocationError, "re-allocating after a fault"):

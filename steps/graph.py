@@ -5,11 +5,9 @@ from __future__ import annotations
 from typing import Annotated, Any
 
 from pipflow import Choices, Doc, StepContext, step
-from pipflow.errors import InputError
 from pipflow.pictures import dependency_graph
 from pipflow.team.dependency import build_graph, to_dot
 from pipflow.values import GraphOutputs
-from pipflow.yamlsource import read_source, safe_load
 
 
 def _read_text(ctx: StepContext, value: str) -> str:
@@ -17,19 +15,6 @@ def _read_text(ctx: StepContext, value: str) -> str:
     if "(" in value:
         return value
     return ctx.resolve_path(value).read_text()
-
-
-def _read_metadata(ctx: StepContext, value) -> dict:
-    import yaml
-
-
-    if isinstance(value, dict):
-        return value
-    path = ctx.resolve_path(value)
-    try:  # the shared bounded reader and loader (regular files, size cap, no alias bombs)
-        return safe_load(read_source(path, "action metadata file")) or {}
-    except yaml.YAMLError as exc:
-        raise InputError(f"action metadata {path} is not valid YAML: {exc}") from exc
 
 
 @step(
@@ -54,7 +39,7 @@ def dependencies(
 
 
     graph = build_graph(_read_text(ctx, domain), _read_text(ctx, problem), plan,
-                        _read_metadata(ctx, actions), mode=mode)
+                        ctx.read_yaml(actions, "action metadata file"), mode=mode)
     ctx.write_artifact("graph.json", graph)
     ctx.write_artifact("graph.dot", to_dot(graph))
     if picture:

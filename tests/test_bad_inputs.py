@@ -966,3 +966,16 @@ def test_the_pipflow_command_itself(ws, case):
     assert proc.returncode == 2, proc.stderr
     assert "Traceback" not in proc.stdout + proc.stderr
     assert proc.stderr.strip()
+
+
+def test_bad_yaml_in_a_path_or_content_input_names_the_file_and_line_and_keeps_the_record(tmp_path, capsys):
+    """A step input given as "a path or its content" (the action metadata here) read from a file
+    with broken YAML: exit 2, the step, the file and its line; the run record says failed."""
+    bad = tmp_path / "actions.yaml"
+    bad.write_text("skills: [carry\n", encoding="utf-8")
+    code, _, err = cli(capsys, "run", str(REPO / "workflows" / "warehouse.yaml"), "-i", f"actions={bad}",
+                       "--no-cache", "--runs-dir", str(tmp_path / "runs"))
+    assert code == 2, err
+    assert "step 'graph'" in err and f"{bad}:2:" in err and "YAML" in err and "Traceback" not in err
+    run = next((tmp_path / "runs").iterdir())
+    assert json.loads((run / "run.json").read_text())["status"] == "failed"

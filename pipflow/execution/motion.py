@@ -27,6 +27,7 @@ from typing import Any, Callable, Iterable, Sequence
 from pipflow.metrics import travel_costs
 from pipflow.taskdomains import task_domain
 from pipflow.team.trajectory import ARRIVAL_TOLERANCE, Trajectory
+from pipflow.team.travel import clip_segment
 
 Point = tuple[float, float]
 #: metres a barrier is grown by when robots meet it (the travel map's robot margin)
@@ -105,22 +106,8 @@ def share_point(path: Sequence[Sequence[float]], share: float) -> tuple[Point, P
 
 def _enter(a: Point, b: Point, rect: tuple[float, float, float, float]) -> float | None:
     """Share of segment a-b at which it enters the open rectangle (0 if a lies inside), or None."""
-    x0, y0, x1, y1 = rect
-    dx, dy = b[0] - a[0], b[1] - a[1]
-    t0, t1 = 0.0, 1.0
-    for p, q in ((-dx, a[0] - x0), (dx, x1 - a[0]), (-dy, a[1] - y0), (dy, y1 - a[1])):
-        if abs(p) < 1e-12:
-            if q <= 1e-9:
-                return None
-        else:
-            t = q / p
-            if p < 0:
-                t0 = max(t0, t)
-            else:
-                t1 = min(t1, t)
-            if t0 >= t1 - 1e-9:
-                return None
-    return t0
+    clipped = clip_segment(a, b, rect)
+    return None if clipped is None else clipped[0]
 
 
 # ------------------------------------------------------------------------------------------

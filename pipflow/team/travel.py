@@ -59,18 +59,17 @@ SMALL_GRAPH = 64
 _GEOMETRIES_LOCK = threading.Lock()
 
 
-def _rect_hits_segment(rect: tuple[float, float, float, float], a: Point, b: Point) -> bool:
-    """True when segment a-b passes through the open rectangle (x0, y0, x1, y1).
-
-    Liang-Barsky clipping; touching the boundary does not count, so paths may graze the
-    inflated footprint (the inflation already keeps robots off the real shelf)."""
+def clip_segment(a: Point, b: Point, rect: tuple[float, float, float, float]) -> tuple[float, float] | None:
+    """The shares (t0, t1) of segment a-b that lie in the open rectangle (x0, y0, x1, y1), by
+    Liang-Barsky clipping; None when no piece of positive length does (a segment along an edge
+    stays outside)."""
     x0, y0, x1, y1 = rect
     dx, dy = b[0] - a[0], b[1] - a[1]
     t0, t1 = 0.0, 1.0
     for p, q in ((-dx, a[0] - x0), (dx, x1 - a[0]), (-dy, a[1] - y0), (dy, y1 - a[1])):
         if abs(p) < 1e-12:
             if q <= _EPS:
-                return False
+                return None
         else:
             t = q / p
             if p < 0:
@@ -78,9 +77,22 @@ def _rect_hits_segment(rect: tuple[float, float, float, float], a: Point, b: Poi
             else:
                 t1 = min(t1, t)
             if t0 >= t1 - _EPS:
-                return False
-    # the clipped piece must have positive length strictly inside
-    mx, my = a[0] + dx * (t0 + t1) / 2, a[1] + dy * (t0 + t1) / 2
+                return None
+    return t0, t1
+
+
+def _rect_hits_segment(rect: tuple[float, float, float, float], a: Point, b: Point) -> bool:
+    """True when segment a-b passes through the open rectangle (x0, y0, x1, y1).
+
+    Touching the boundary does not count, so paths may graze the inflated footprint (the
+    inflation already keeps robots off the real shelf): the clipped piece must have its midpoint
+    strictly inside."""
+    clipped = clip_segment(a, b, rect)
+    if clipped is None:
+        return False
+    x0, y0, x1, y1 = rect
+    t = (clipped[0] + clipped[1]) / 2
+    mx, my = a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t
     return x0 + _EPS < mx < x1 - _EPS and y0 + _EPS < my < y1 - _EPS
 
 
