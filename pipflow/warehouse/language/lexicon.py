@@ -413,10 +413,12 @@ class Lexicon:
             return True
         if word in NUMBER_WORDS or word in FRACTIONS or word in SUPERLATIVES or word in self.skills:
             return True
-        if self._group(word) is not None or _number_typo(word) is not None:
+        if self._group(word) is not None:
             return True
         if word in FUNCTION_WORDS or word in FILLERS:
-            return False
+            return False  # "for" is no misspelt "four", "to" none of "two" (as in names_world)
+        if _number_typo(word) is not None:
+            return True
         repaired = SPELLINGS.get(word) or self._keyword_typo(word)
         if repaired is not None and repaired not in FUNCTION_WORDS:
             return True
