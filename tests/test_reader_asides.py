@@ -28,6 +28,9 @@ STUDIO = load_home(ROOT / "benchmarks" / "language" / "household-studio-world.ya
     ("Shelf2 needs 3 more product1, thanks so much", "thanks so much"),
     # "for" is a function word, no misspelt "four": a reason with it is still talk
     ("Shelf2 needs 3 more product1. She is booked for the lorry.", "She is booked for the lorry"),
+    # a thanks closing the order without a comma
+    ("Shelf2 needs 3 more product1 ta", "ta"),
+    ("Shelf2 needs 3 more product1 cheers!", "cheers"),
     ("Shelf2 needs 3 more product1, it's for the van", "it is for the van"),
 ])
 def test_warehouse_talk_is_set_aside_and_said(command: str, aside: str) -> None:

@@ -87,6 +87,21 @@ ADDRESSEES = frozenset({"all", "everyone", "everybody", "team", "folks", "guys",
                         "much", "very", "a", "lot", "in", "advance"})
 
 
+#: a thanks that can close an order without a comma before it ("... to bay 2 ta")
+THANKS = frozenset({"thanks", "ta", "cheers", "thx", "ty", "tyvm", "thankyou"})
+
+
+def trailing_thanks(words: list[str], content: Callable[[str], bool]) -> int:
+    """How many words at the end of a clause are a thanks said without a comma ("... to bay 2
+    ta", "... thank you"): they are set aside like a thanks set off by one. 0 when there is none,
+    when the thanks is the whole clause (then the clause itself is talk), or when its word
+    carries content in this domain (a name that happens to be "ta")."""
+    k = 2 if words[-2:] == ["thank", "you"] else 1 if words and words[-1] in THANKS else 0
+    if k == 0 or k >= len(words) or any(content(w) for w in words[-k:]):
+        return 0
+    return k
+
+
 @dataclass(frozen=True)
 class Clause:
     """A stretch of a command between clause marks: its words and where they are."""

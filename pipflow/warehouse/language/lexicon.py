@@ -15,7 +15,7 @@ from dataclasses import dataclass, replace
 from lark import Token
 
 from pipflow.errors import InputError, Refusal, TranslationError
-from pipflow.language.asides import FUNCTION_WORDS, clauses, content_free
+from pipflow.language.asides import FUNCTION_WORDS, Clause, clauses, content_free, trailing_thanks
 from pipflow.language.characters import refuse_unread
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS
 from pipflow.language.spelling import distance, normalize, slip, tolerance
@@ -450,6 +450,10 @@ class Lexicon:
         parts = clauses(words, marks)
         free = [c for c in parts if content_free(c.words, lambda w: w == "\0" or self.content(w),
                                                  lambda w: w == "\0" or self.names_world(w))]
+        thanks = trailing_thanks(list(parts[-1].words), self.content) if parts and parts[-1] not in free else 0
+        if thanks:   # "... to the dray bay ta": the thanks closing the last clause, without a comma
+            end = parts[-1].end
+            free.append(Clause(end - thanks, end, parts[-1].words[-thanks:]))
         if not free:
             return cur, []
         drop = {k for c in free for k in range(c.start, c.end)}
