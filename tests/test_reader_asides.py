@@ -131,6 +131,18 @@ def test_the_stem_said_in_the_singular_is_refused_naming_them() -> None:
         understand("The tug must not carry diapers. Move 2 rice sacks from aisle 1 to cooler", FOODBANK)
 
 
+@pytest.mark.parametrize("command", [
+    "Move 2 rice sacks from aisle 1 to cooler, no gantries",
+    "No gantries. Move 2 rice sacks from aisle 1 to cooler",
+])
+def test_a_declared_kind_in_its_plural_in_ies_is_that_kind(command: str) -> None:
+    """ "gantries" of kind gantry (a plural in -ies, like "batteries" of a product) was refused."""
+    world = {**FOODBANK, "robots": {**FOODBANK["robots"],
+                                    "heron": {**FOODBANK["robots"]["lifty"], "kind": "gantry"}}}
+    got = understand(command, world)
+    assert _never(got["constraints"]) == {"heron"}
+
+
 def test_declared_kinds_come_before_stems_and_a_numbered_robot_stays_one() -> None:
     got = understand("Robot tug 3 must not carry diapers. Move 2 rice sacks from aisle 1 to cooler", FOODBANK)
     assert _never(got["constraints"]) == {"tug3"}

@@ -18,7 +18,7 @@ from pipflow.errors import InputError, Refusal, TranslationError
 from pipflow.language.asides import FUNCTION_WORDS, Clause, clauses, content_free, trailing_thanks
 from pipflow.language.characters import refuse_unread
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS
-from pipflow.language.spelling import distance, normalize, slip, tolerance
+from pipflow.language.spelling import distance, normalize, plural_forms, slip, tolerance
 from pipflow.warehouse.language.names import KIND_WORDS, STOPWORDS, NameIndex, Tok, read_counts, recognize
 
 #: no user writes a longer command; past this the parser would only be asked to burn time
@@ -395,13 +395,12 @@ class Lexicon:
     def _group(self, text: str) -> tuple[str, str] | None:
         """("RKIND", kind) or ("RTAG", tag) when the word names robots by kind or tag."""
         low = normalize(text)
-        for form in (low, low[:-1] if low.endswith("s") else low, low[:-2] if low.endswith("es") else low):
-            for kind in self.kinds:
-                if normalize(kind) == form:
-                    return "RKIND", kind
-            for tag in self.tags:
-                if normalize(tag) == form:
-                    return "RTAG", tag
+        for kind in self.kinds:   # the word itself, or a plural of it ("gantries" of gantry)
+            if low == normalize(kind) or low in plural_forms(normalize(kind)):
+                return "RKIND", kind
+        for tag in self.tags:
+            if low == normalize(tag) or low in plural_forms(normalize(tag)):
+                return "RTAG", tag
         return None
 
     def content(self, word: str) -> bool:
