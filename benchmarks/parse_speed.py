@@ -148,7 +148,8 @@ def main(argv: list[str]) -> int:
     print(head)
     print("-" * len(head))
     totals = {"base": [0.0, 0], "this": [0.0, 0]}
-    for path, _ in files:
+    by_domain: dict[str, dict[str, list]] = defaultdict(lambda: {"base": [0.0, 0], "this": [0.0, 0]})
+    for path, domain in files:
         if path in skipped:
             continue
         row = {}
@@ -156,15 +157,17 @@ def main(argv: list[str]) -> int:
             secs = [res[path]["seconds"] for res in got[name]]
             n = got[name][0][path]["n"]
             row[name] = (1000 * sum(secs) / len(secs) / max(1, n), got[name][0][path]["refused"])
-            totals[name][0] += sum(secs) / len(secs)
-            totals[name][1] += n
+            for into in (totals, by_domain[domain]):
+                into[name][0] += sum(secs) / len(secs)
+                into[name][1] += n
         ratio = row["this"][0] / row["base"][0] if row["base"][0] else float("nan")
         print(f"{Path(path).name:<40} {n:>4} {row['base'][0]:>8.1f} {row['this'][0]:>8.1f} {ratio:>5.2f}x "
               f"{row['base'][1]:>8}/{row['this'][1]}")
-    b = 1000 * totals["base"][0] / max(1, totals["base"][1])
-    t = 1000 * totals["this"][0] / max(1, totals["this"][1])
     print("-" * len(head))
-    print(f"{'overall':<40} {totals['this'][1]:>4} {b:>8.1f} {t:>8.1f} {t / b:>5.2f}x")
+    for label, sums in [*((f"all {d}", by_domain[d]) for d in sorted(by_domain)), ("overall", totals)]:
+        b = 1000 * sums["base"][0] / max(1, sums["base"][1])
+        t = 1000 * sums["this"][0] / max(1, sums["this"][1])
+        print(f"{label:<40} {sums['this'][1]:>4} {b:>8.1f} {t:>8.1f} {t / b:>5.2f}x")
     print(f"\nCPU ms per command (mean of {args.rounds} rounds); ratio this/base; load average {load()}")
     return 0
 
