@@ -1060,8 +1060,10 @@ _FORESTS: "OrderedDict[tuple, tuple[bool, Any]]" = OrderedDict()
 _FORESTS_KEPT = 256
 #: new sentence parses one refusal may spend on its candidate readings (a parse of a sentence read
 #: before is remembered and free): the candidates of a refused command cost at most this many
-#: parses more than the refusal itself (benchmarks/translator.py measures the time)
-CANDIDATE_PARSES = 3
+#: parses more than the refusal itself. With the lookahead predictor a parse costs a sixth of what
+#: it did, so a refusal may try four partial parses of up to three words each (9 parses) and still
+#: read faster than a344570 (benchmarks/parse_speed.py)
+CANDIDATE_PARSES = 9
 _CANDIDATE_BUDGET: dict[str, int | None] = {"left": None}
 
 
@@ -1182,7 +1184,8 @@ def candidates(command: str, world: dict, exc: TranslationError) -> list[dict]:
     """Up to :data:`MAX_CANDIDATES` readings to offer for a command refused as not understood or
     ambiguous (issue 23: ask rather than refuse), each ``{"reading", "words", "goal",
     "constraints", "order"}``: the competing readings of an ambiguous sentence, and for a word no
-    rule places, the sentence without that word and without its clause. Each is the whole
+    rule places, the sentence without that word, without its clause, without the words that open
+    its clause, and (in a command of several sentences) without the sentence. Each is the whole
     command read with that one choice and resolved against the world; readings that do not
     resolve, or repeat another's meaning, are not offered. Nothing here is acted on: a user (or
     the bench) chooses."""
@@ -1197,7 +1200,8 @@ def candidates(command: str, world: dict, exc: TranslationError) -> list[dict]:
         picks = [{k: {**p, "trimmed": True} for k, p in pick.items()} for pick in picks]
     # partial parses: in every sentence, the words no rule places (or their clauses) left out one
     # after another, the clauses that do parse kept, the words left out named
-    picks += [{"*": {"salvage": "clause"}}, {"*": {"salvage": "word"}}]
+    picks += [{"*": {"salvage": "clause"}}, {"*": {"salvage": "word"}}, {"*": {"salvage": "lead"}},
+              {"*": {"salvage": "sentence"}}]
     out: list[dict] = []
     seen: set[str] = set()
     _CANDIDATE_BUDGET["left"] = CANDIDATE_PARSES
@@ -1229,9 +1233,9 @@ def _candidate(command: str, world: dict, pick: dict, out: list[dict], seen: set
 
 
 #: words (or clauses) a partial parse may leave out of one sentence, at most: each costs a parse of
-#: the sentence, and a third one added 1 of 86 refused gold readings to the candidates for 30% more
-#: time on a refusal (benchmarks/language, 2026-12-02)
-MAX_SALVAGED = 2
+#: the sentence (a third one added 1 of 86 refused gold readings to the candidates, 2026-12-02; it
+#: is affordable since parses take a sixth of the time)
+MAX_SALVAGED = 3
 
 
 def _salvage(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict, memory: dict,
@@ -1254,13 +1258,31 @@ def _salvage(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict, m
         k = getattr(error, "unplaced", None)
         if k is None or len(unread) >= MAX_SALVAGED:
             raise error
-        drop = [k] if how == "word" else list(error.clause)  # type: ignore[attr-defined]
+        drop = _dropped(how, k, list(error.clause), lexed)  # type: ignore[attr-defined]
         unread.append(" ".join(lexed.source[j].text for j in drop if j < len(lexed.source)
                                and lexed.tokens[j].type != ",").replace(" zzposs", "'s"))
         lexed = _without(lexed, drop)
         if not lexed.tokens:
             raise error
     raise TranslationError("nothing left to read")
+
+
+def _said(lexed: Lexed) -> str:
+    """A sentence's words as the user wrote them (for an echo)."""
+    return " ".join(t.text for t in lexed.source).replace(" zzposs", "'s")
+
+
+def _dropped(how: str, k: int, clause: list[int], lexed: Lexed) -> list[int]:
+    """The terminals a partial parse leaves out for the word at ``k`` that no rule places: the
+    word ("word"), its clause ("clause"), or the word that opens its clause ("lead": what led the
+    parser astray, as "could" in "could two more X go to P"; again while the next still does not
+    read, up to :data:`MAX_SALVAGED`; the word itself when it opens its clause)."""
+    if how == "word":
+        return [k]
+    if how == "lead":
+        opening = [j for j in clause if j < k and str(lexed.tokens[j].value) not in (",", ":")]
+        return opening[:1] or [k]
+    return clause
 
 
 def _meaning_of(order: dict, world: dict) -> str | None:
@@ -1303,7 +1325,7 @@ def _parse(command: str, world: dict, picks: dict | None = None) -> dict:
                                    f"and go on in a new one)")
         salvage = (picks.get("*") or {}).get("salvage")
         try:
-            if salvage:
+            if salvage and salvage != "sentence":
                 reader, left_out = _salvage(lexed.trimmed or lexed, lex, selector, world, memory, pick, salvage)
                 unread += left_out
                 set_aside += list(lexed.aside) if lexed.trimmed is not None else []
@@ -1315,6 +1337,9 @@ def _parse(command: str, world: dict, picks: dict | None = None) -> dict:
             error = _fail(exc, lexed, lex) if isinstance(exc, UnexpectedInput) else exc
             error.sentence = index  # type: ignore[attr-defined]  # for the candidates (parse)
             if lexed.trimmed is None:
+                if salvage == "sentence" and len(sentences) > 1:
+                    unread.append(_said(lexed))  # a candidate reading without this sentence
+                    continue
                 raise error from None
             try:
                 reader = _one_meaning(lexed.trimmed, lex, selector, world, memory, pick)
@@ -1323,6 +1348,9 @@ def _parse(command: str, world: dict, picks: dict | None = None) -> dict:
                 error = _fail(again, lexed.trimmed, lex) if isinstance(again, UnexpectedInput) else again
                 error.sentence, error.trimmed = index, True  # type: ignore[attr-defined]
                 error.args = (f"{error.args[0]} (set aside: {'; '.join(repr(a) for a in lexed.aside)})",)
+                if salvage == "sentence" and len(sentences) > 1:
+                    unread.append(_said(lexed))
+                    continue
                 raise error from None
             set_aside += list(lexed.aside)
         for k, new in reader.updates.items():

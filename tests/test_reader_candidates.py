@@ -1,0 +1,61 @@
+"""Issue 23, point 4 (warehouse reader): more candidate readings for a refused command, each
+offered (never acted on) with the words it did not read named: the words of a clause before the
+one no rule places left out ("could" in "could two more X go to P"), and a whole sentence that
+does not read left out of a command of several. In a world of its own (a bike shop), through the
+real reader."""
+from __future__ import annotations
+
+import pytest
+
+from pipflow.errors import TranslationError
+from pipflow.warehouse.language.translator import understand
+
+BIKES = {
+    "name": "bikeshop",
+    "floor": {"width": 30, "height": 20},
+    "shelves": {
+        "front_rack": {"x": 2, "y": 14, "width": 4, "depth": 2, "capacity": 12, "access": [4, 13]},
+        "back_room": {"x": 10, "y": 14, "width": 4, "depth": 2, "capacity": 12, "access": [12, 13]},
+        "wall_hooks": {"x": 20, "y": 14, "width": 6, "depth": 2, "capacity": 10, "access": [23, 13]},
+        "repair_bench": {"x": 4, "y": 3, "width": 6, "depth": 2, "capacity": 10, "access": [7, 6]},
+    },
+    "products": {"inner_tube": {"color": "black"}, "helmet": {"color": "red"}, "pump": {"color": "blue"},
+                 "chain": {"color": "gray"}},
+    "stock": {"front_rack": {"inner_tube": 5, "helmet": 2}, "back_room": {"inner_tube": 1, "pump": 3},
+              "wall_hooks": {"helmet": 3, "chain": 1}, "repair_bench": {"chain": 2}},
+    "robots": {
+        "porter": {"kind": "forklift", "start": [1, 8], "skills": {"carry": 4}},
+        "zip_1": {"kind": "amr", "start": [15, 8], "skills": {"carry": 1}},
+        "zip_2": {"kind": "amr", "start": [18, 8], "skills": {"carry": 1}},
+    },
+}
+
+
+def _offered(command: str) -> list[dict]:
+    with pytest.raises(TranslationError) as err:
+        understand(command, BIKES)
+    assert len(err.value.candidates) <= 3
+    return err.value.candidates
+
+
+def test_the_words_that_lead_a_clause_astray_are_left_out_in_a_candidate() -> None:
+    """'could' before the count is what no rule reads here; the reading without it is offered,
+    and says that 'could' was not read."""
+    offered = _offered("could two more pumps go to the wall hooks")
+    hit = [c for c in offered if c["goal"] == {"wall_hooks": {"pump": 2}}]
+    assert hit, offered
+    assert hit[0]["unread"] == ["could"] and "not read: 'could'" in hit[0]["reading"]
+
+
+def test_a_sentence_that_does_not_read_is_left_out_in_a_candidate_and_named() -> None:
+    offered = _offered("Can porter bring the helmets from the wall hooks to the back room? All three.")
+    hit = [c for c in offered if c["goal"] == {"wall_hooks": {"helmet": 0}, "back_room": {"helmet": 3}}]
+    assert hit, offered
+    assert [r["only"] for r in hit[0]["constraints"]] == [["porter"]]
+    assert hit[0]["unread"] == ["All three"]
+
+
+def test_a_single_sentence_is_never_left_out_whole() -> None:
+    """Nothing would be left to offer: the refusal offers no empty reading."""
+    offered = _offered("the wall hooks are looking bare")
+    assert all(c["goal"] or c["constraints"] for c in offered)
