@@ -59,3 +59,22 @@ def test_a_single_sentence_is_never_left_out_whole() -> None:
     """Nothing would be left to offer: the refusal offers no empty reading."""
     offered = _offered("the wall hooks are looking bare")
     assert all(c["goal"] or c["constraints"] for c in offered)
+
+
+@pytest.mark.parametrize("command, wrong, right", [
+    ("move 2 pumps fro the back room to the front rack", "fro", "from"),       # for, or from?
+    ("move 2 pumps from the back room to the fornt rack", "fornt", "front"),   # a name's word
+])
+def test_a_near_miss_word_is_offered_respelt_and_the_repair_is_said(command: str, wrong: str, right: str) -> None:
+    """The lexicon repairs only a word with one near repair (it acts on it); a candidate may
+    offer the reading with the word respelt, saying so, for the user to choose."""
+    offered = _offered(command)
+    hit = [c for c in offered if c["goal"] == {"back_room": {"pump": 1}, "front_rack": {"pump": 2}}]
+    assert hit, offered
+    assert f"read '{wrong}' as '{right}'" in hit[0]["reading"]
+
+
+def test_a_respelt_reading_is_only_offered_when_the_whole_command_then_reads() -> None:
+    """'zorp' is near no word that has a place: no repair is offered for it."""
+    offered = _offered("move 2 pumps zorp the back room to the front rack")
+    assert not any("read 'zorp'" in c["reading"] for c in offered)

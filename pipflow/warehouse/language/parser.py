@@ -35,6 +35,7 @@ from pipflow.language.lookahead import with_lookahead
 from pipflow.warehouse.language.goals import Choice, GoalRules, quote
 from pipflow.warehouse.language.grammar import GRAMMAR, nullable_optionals
 from pipflow.warehouse.language.lexicon import Lexed, Lexicon
+from pipflow.warehouse.language.repairs import near_words, with_word
 from pipflow.language.numbers import NUMBER_WORDS
 from pipflow.language.spelling import normalize
 from pipflow.warehouse.language.resolver import resolve
@@ -967,7 +968,7 @@ def _fail(exc: UnexpectedInput, lexed: Lexed, lex: Lexicon) -> TranslationError:
         if prev is not None and prev.kind == "num" and lexed.tokens[k].type == "UNKNOWN":
             error = TranslationError(f"'{prev.text} {word}': cannot tell which product this count is for "
                                      f"(candidates: {lex.index.candidates('product')})")
-            error.unplaced = k  # type: ignore[attr-defined]
+            error.unplaced, error.word = k, word  # type: ignore[attr-defined]
             error.clause = _clause_of(lexed, k)  # type: ignore[attr-defined]
             return error
         where = f"cannot place '{word}' in '{sentence}'"
@@ -975,7 +976,7 @@ def _fail(exc: UnexpectedInput, lexed: Lexed, lex: Lexicon) -> TranslationError:
                                  f"(shelves: {lex.index.candidates('shelf')}; products: "
                                  f"{lex.index.candidates('product')}; robots: {lex.index.candidates('robot')}; "
                                  f"robot groups: {lex.group_names()})")
-        error.unplaced = k  # type: ignore[attr-defined]
+        error.unplaced, error.word = k, word  # type: ignore[attr-defined]
         error.clause = _clause_of(lexed, k)  # type: ignore[attr-defined]
         return error
     else:
@@ -1200,22 +1201,35 @@ def candidates(command: str, world: dict, exc: TranslationError) -> list[dict]:
         picks = [{k: {**p, "trimmed": True} for k, p in pick.items()} for pick in picks]
     # partial parses: in every sentence, the words no rule places (or their clauses) left out one
     # after another, the clauses that do parse kept, the words left out named
-    picks += [{"*": {"salvage": "clause"}}, {"*": {"salvage": "word"}}, {"*": {"salvage": "lead"}},
-              {"*": {"salvage": "sentence"}}]
+    picks += [{"*": {"salvage": how}} for how in SALVAGE]
     out: list[dict] = []
     seen: set[str] = set()
     _CANDIDATE_BUDGET["left"] = CANDIDATE_PARSES
     try:
-        for pick in picks:
+        for pick in picks[:-len(SALVAGE)]:
+            _candidate(command, world, pick, out, seen)
+        # a word no rule places may be a near miss of a word that has a place: the command read
+        # with it respelt, once for each near word, the repair said in the echo
+        word = getattr(exc, "word", None)
+        for right in near_words(word, Lexicon(world, keywords())) if word else []:
+            repaired = with_word(command, word, right)
+            if repaired is not None:
+                _candidate(repaired, world, {}, out, seen, note=f"read '{word}' as '{right}'")
+        for pick in picks[-len(SALVAGE):]:
             _candidate(command, world, pick, out, seen)
     finally:
         _CANDIDATE_BUDGET["left"] = None
     return out[:MAX_CANDIDATES]
 
 
-def _candidate(command: str, world: dict, pick: dict, out: list[dict], seen: set[str]) -> None:
+#: the partial parses a refusal offers, in this order (:func:`_dropped`; "sentence": a sentence
+#: that does not read left out of a command of several)
+SALVAGE = ("clause", "word", "lead", "sentence")
+
+
+def _candidate(command: str, world: dict, pick: dict, out: list[dict], seen: set[str], note: str = "") -> None:
     """The command read with one pick, resolved, added to ``out`` unless it fails or repeats a
-    meaning already offered."""
+    meaning already offered; ``note`` (a repair made to the command) is said in its echo."""
     try:
         order = _parse(command, world, pick)
         got = resolve(order, world)
@@ -1226,7 +1240,8 @@ def _candidate(command: str, world: dict, pick: dict, out: list[dict], seen: set
         return
     seen.add(meaning)
     unread = order.get("unread") or []
-    explanation = list(got.explanation) + ([f"not read: {', '.join(repr(w) for w in unread)}"] if unread else [])
+    explanation = (([note] if note else []) + list(got.explanation)
+                   + ([f"not read: {', '.join(repr(w) for w in unread)}"] if unread else []))
     out.append({"reading": "; ".join(explanation), "explanation": explanation,
                 "goal": got.goal, "constraints": got.constraints, "unread": unread,
                 "words": "; ".join(x["words"] for x in order["statements"] + order["rules"]), "order": order})
