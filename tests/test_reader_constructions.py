@@ -1,0 +1,28 @@
+"""Issue 23, second step (warehouse reader): constructions the held-out writers used that no rule
+read, each by class (not phrase), in a world of its own (the bike shop of
+test_reader_candidates), through the real reader."""
+from __future__ import annotations
+
+import pytest
+
+from pipflow.warehouse.language.translator import translate
+from tests.test_reader_candidates import BIKES
+
+ALL_HELMETS_BUT_HOOKS = {"front_rack": {"helmet": 0}, "back_room": {"helmet": 2}, "repair_bench": {"helmet": 0},
+                         "wall_hooks": {"helmet": 3}}
+
+
+@pytest.mark.parametrize("command", [
+    "Send all the helmets to the back room, except the ones on the wall hooks.",
+    "Bring every helmet to the back room, apart from those on the wall hooks",
+    "Every helmet goes to the back room, except the ones up on the wall hooks.",
+])
+def test_except_places_after_a_comma_and_after_go(command: str) -> None:
+    """"all X to P, except the ones on Q": the exception after a comma (it was read only without
+    one), after "X goes to P", and with a particle ("up on Q")."""
+    assert translate(command, BIKES)["goal"] == ALL_HELMETS_BUT_HOOKS
+
+
+def test_every_item_goes_to_a_place_gathers_it_there() -> None:
+    assert translate("Every chain goes to the front rack", BIKES)["goal"] == {
+        "front_rack": {"chain": 3}, "back_room": {"chain": 0}, "wall_hooks": {"chain": 0}, "repair_bench": {"chain": 0}}
