@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import pytest
 
+from pipflow.errors import TranslationError
 from pipflow.warehouse.language.translator import translate
 from tests.test_reader_candidates import BIKES
 
@@ -26,3 +27,23 @@ def test_except_places_after_a_comma_and_after_go(command: str) -> None:
 def test_every_item_goes_to_a_place_gathers_it_there() -> None:
     assert translate("Every chain goes to the front rack", BIKES)["goal"] == {
         "front_rack": {"chain": 3}, "back_room": {"chain": 0}, "wall_hooks": {"chain": 0}, "repair_bench": {"chain": 0}}
+
+
+TRAYS = {**BIKES, "shelves": {**BIKES["shelves"],
+                              "tray-a": {"x": 14, "y": 3, "width": 3, "depth": 2, "capacity": 6, "access": [15, 6]},
+                              "tray-b": {"x": 20, "y": 3, "width": 3, "depth": 2, "capacity": 6, "access": [21, 6]}}}
+
+
+@pytest.mark.parametrize("command", [
+    "Every tray should have 2 inner tubes.", "Each tray should have 2 inner tubes", "both trays should have 2 inner tubes",
+    "all trays should have 2 inner tubes",
+])
+def test_the_head_noun_two_places_share_is_their_group_not_a_tie(command: str) -> None:
+    """"tray" of tray-a and tray-b was refused as equally close to both (a misspelling of
+    either); after every / each / both / all, or as a plural, it is the group of the trays."""
+    assert translate(command, TRAYS)["goal"] == {"tray-a": {"inner_tube": 2}, "tray-b": {"inner_tube": 2}}
+
+
+def test_the_shared_head_noun_alone_is_still_refused_naming_no_guess() -> None:
+    with pytest.raises(TranslationError, match="which shelf"):
+        translate("the tray should have 2 pumps", TRAYS)

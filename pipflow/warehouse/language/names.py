@@ -278,8 +278,10 @@ class NameIndex:
             exact = [n for n in self.names if n.alpha == v and n.digits == digits]
             if exact:
                 return Tok("name", text, exact[0].name, exact[0].kind)
-        if not digits and any(v in KIND_WORDS[k] for k in KINDS for v in variants(alpha)):
-            fuzzy = False  # "racks" is the kind word, not a misspelt rack_a (nor a tie of all racks)
+        if not digits and any(v in KIND_WORDS[k] or v in self.groups for k in KINDS for v in variants(alpha)):
+            # "racks" is the kind word, not a misspelt rack_a (nor a tie of all racks); "row" of
+            # row-a and row-b is the head noun they share (a group: "every row"), not a tie
+            fuzzy = False
         if fuzzy and alpha not in STOPWORDS and alpha not in self.reserved and alpha:
             scored = []
             for n in self.names:
