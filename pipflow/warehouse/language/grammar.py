@@ -441,6 +441,7 @@ rneg: "not" | "never" | "dont" | "doesnt" | "shouldnt" | "mustnt" | "cant" | "ca
     | "isnt" | "arent" | "no" "longer"
 rmodal: "should" | "must" | "shall" | "will" | "may" | "can" | "is" "to" | "are" "to" | "would"
       | "do" | "does" | "is" "allowed" "to" | "are" "allowed" "to" | "ought" "to"
+      | ("allowed" | "permitted") "to"
 oblig: "should" | "must" | "shall" | "will" | "is" "to" | "are" "to" | "has" "to" | "have" "to"
 state: "broken" | "faulty" | "unavailable" | "offline" | "disabled" | "damaged" | "down"
      | "idle" | "unused" | "busy" | "charging" | "malfunctioning" | "out" "of" ("order" | "service")
@@ -463,6 +464,7 @@ robj: ITEM ((lsep | "or" | "nor" | "," "or") ITEM)*       -> ro_items
     | ("it" | "them" | "that" | "those" | "these" | "this")  -> ro_pronoun
     | "for" ITEM (lsep ITEM)*                               -> ro_items
     | "all" ITEM (lsep ITEM)*                               -> ro_items
+    | "any" ITEM ((lsep | "or" | "nor" | "," "or") ITEM)*   -> ro_items
 rwhere: from places                                    -> rw_from
       | from places to places                          -> rw_route
       | ("to" | "into" | "onto" | "towards" | "toward") places -> rw_to
@@ -502,7 +504,7 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | ("keep" | "leave") robots "off" ITEM (lsep ITEM)*       -> rule_away_items
     | robots modal? ("stay" | "keep") ("off" | "away" "from" | "clear" "of") ITEM (lsep ITEM)* -> rule_away_items
     | robots ("is" | "are") state ","? ("so" | "and")? ("dont" | "do" "not") "use" ("it" | "them") -> rule_state
-    | robots ("is" | "are") "not" "to" "be" "used" rscope     -> rule_never
+    | robots (("is" | "are") "not" | "isnt" | "arent") "to" "be" ("used" | "involved" | "employed" | "assigned") rscope -> rule_never
     | robots modal? ("stay" | "keep") ("away" | "clear") from places -> rule_away
     | ("keep" | "leave") robots ("away" | "clear") from places -> rule_away
     | ("keep" | "leave") robots ("out" "of" | "off") places  -> rule_away
@@ -511,6 +513,7 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | ("dont" | "do" "not" | "never" | "avoid") ("use" | "using" | "involve" | "employ" | "assign") robots rscope -> rule_never
     | ("dont" | "do" "not" | "never") "let" robots act? rscope -> rule_never
     | ("exclude" | "skip" | "leave" "out" | "disable" | "ignore" | "bench" | "rest") robots rscope -> rule_never
+    | ("keep" | "leave") robots "out" rscope                  -> rule_never
     | "without" ("using" | "help" "of" | "help" "from")? robots rscope -> rule_never
     | "not" ("with" | "by" | "using") robots rscope          -> rule_never
     | "only" robots rmodal? useact? rscope                   -> rule_only
