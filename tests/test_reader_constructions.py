@@ -69,3 +69,13 @@ def test_robot_rules_said_as_not_to_be_used_not_allowed_left_out_or_any_item(rul
     got = translate(command, BIKES)
     assert got["goal"] == MOVE_PUMPS
     assert sorted(got["constraints"], key=str) == sorted(want, key=str)
+
+
+@pytest.mark.parametrize("command, goal", [
+    ("Repair bench, three pumps please.", {"repair_bench": {"pump": 3}}),
+    ("the back room, 2 helmets and 1 chain", {"back_room": {"helmet": 2, "chain": 1}}),
+    ("Wall hooks, helmets 1, chains 2", {"wall_hooks": {"helmet": 1, "chain": 2}}),
+])
+def test_a_place_then_a_comma_then_counts_reads_as_with_a_colon(command: str, goal: dict) -> None:
+    """"P, N X" is "P: N X" (the place is the topic; the counts are what it should hold)."""
+    assert translate(command, BIKES)["goal"] == goal

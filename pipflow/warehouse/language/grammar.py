@@ -196,13 +196,13 @@ goal: there_be items loc                                  -> g_set
     | loc ","? there_be? items                            -> g_loc_set
     | both? places modal? each? setv each? items left?     -> g_place_set
     | both? places modal? "each" be? items                  -> g_place_set
-    | places ":" items                                     -> g_place_set
+    | places (":" | ",") items                             -> g_place_set
     | places ":" ("add" | "plus") items                     -> g_add_place
     | places ("needs" | "need" | "wants") ("emptying" | "clearing" "out"? | "emptying" "out") ("into" | "onto" | "to") places -> g_empty_into
     | places ("needs" | "need" | "wants") ("emptying" | "clearing" "out"? | "emptying" "out") -> g_empty
     | ("no" | "zero") ihead (lsep ihead)* ("anywhere" | "elsewhere") except_pl -> g_none_except
     | "nothing" "but" ihead (lsep ihead)* loc                -> g_nothing_but
-    | places ":" inum (lsep inum)*                         -> g_place_inum
+    | places (":" | ",") inum (lsep inum)*                 -> g_place_inum
     | places modal? setv items "respectively"               -> g_place_set_resp
     | places "to" setv items                                -> g_place_set
     | putv items loc                                       -> g_set
