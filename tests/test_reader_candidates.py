@@ -78,3 +78,18 @@ def test_a_respelt_reading_is_only_offered_when_the_whole_command_then_reads() -
     """'zorp' is near no word that has a place: no repair is offered for it."""
     offered = _offered("move 2 pumps zorp the back room to the front rack")
     assert not any("read 'zorp'" in c["reading"] for c in offered)
+
+
+def test_could_do_with_n_offers_both_the_count_to_end_with_and_the_count_to_add() -> None:
+    """"P could do with 3 X" where P holds some: 3 in all, or 3 more? Refused, both offered."""
+    goals = [c["goal"] for c in _offered("the front rack could do with 3 helmets")]
+    assert {"front_rack": {"helmet": 3}} in goals and {"front_rack": {"helmet": 5}} in goals
+
+
+def test_a_partial_reading_that_meets_competing_readings_offers_each() -> None:
+    """Words left out, and then a sentence with two readings: each reading is offered, with the
+    words left out named."""
+    offered = _offered("Quick one - the front rack could do with 3 helmets")
+    goals = [c["goal"] for c in offered]
+    assert {"front_rack": {"helmet": 3}} in goals and {"front_rack": {"helmet": 5}} in goals
+    assert all("Quick" in " ".join(c["unread"]) for c in offered)

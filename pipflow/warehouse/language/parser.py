@@ -1214,9 +1214,9 @@ def candidates(command: str, world: dict, exc: TranslationError) -> list[dict]:
         for right in near_words(word, Lexicon(world, keywords())) if word else []:
             repaired = with_word(command, word, right)
             if repaired is not None:
-                _candidate(repaired, world, {}, out, seen, note=f"read '{word}' as '{right}'")
+                _with_choices(repaired, world, {}, out, seen, note=f"read '{word}' as '{right}'")
         for pick in picks[-len(SALVAGE):]:
-            _candidate(command, world, pick, out, seen)
+            _with_choices(command, world, pick, out, seen)
     finally:
         _CANDIDATE_BUDGET["left"] = None
     return out[:MAX_CANDIDATES]
@@ -1227,14 +1227,27 @@ def candidates(command: str, world: dict, exc: TranslationError) -> list[dict]:
 SALVAGE = ("clause", "word", "lead", "sentence")
 
 
-def _candidate(command: str, world: dict, pick: dict, out: list[dict], seen: set[str], note: str = "") -> None:
-    """The command read with one pick, resolved, added to ``out`` unless it fails or repeats a
-    meaning already offered; ``note`` (a repair made to the command) is said in its echo."""
+def _with_choices(command: str, world: dict, pick: dict, out: list[dict], seen: set[str], note: str = "") -> None:
+    """:func:`_candidate`, and where that reading stops at a sentence with competing readings (a
+    :class:`Choice`: "put 3" in all or more?), the reading once with each of them."""
+    error = _candidate(command, world, pick, out, seen, note)
+    sentence = getattr(error, "sentence", None)
+    if isinstance(error, Choice) and sentence is not None and error.key not in (pick.get(sentence) or {}):
+        for option in error.options:
+            _candidate(command, world, {**pick, sentence: {**(pick.get(sentence) or {}), error.key: option}},
+                       out, seen, note)
+
+
+def _candidate(command: str, world: dict, pick: dict, out: list[dict], seen: set[str],
+               note: str = "") -> PipflowError | None:
+    """The command read with one pick, resolved, added to ``out`` unless it fails (the error is
+    returned) or repeats a meaning already offered; ``note`` (a repair made to the command) is
+    said in its echo."""
     try:
         order = _parse(command, world, pick)
         got = resolve(order, world)
-    except PipflowError:
-        return
+    except PipflowError as exc:
+        return exc
     meaning = canonical(got.goal, got.constraints)
     if meaning in seen:
         return
@@ -1351,9 +1364,13 @@ def _parse(command: str, world: dict, picks: dict | None = None) -> dict:
             # (asides.py): they are set aside and said aloud, the rest still needs every word
             error = _fail(exc, lexed, lex) if isinstance(exc, UnexpectedInput) else exc
             error.sentence = index  # type: ignore[attr-defined]  # for the candidates (parse)
+            if salvage and salvage != "sentence":
+                raise error from None  # the partial parse read the sentence without its talk already
             if lexed.trimmed is None:
-                if salvage == "sentence" and len(sentences) > 1:
-                    unread.append(_said(lexed))  # a candidate reading without this sentence
+                if salvage == "sentence" and len(sentences) > 1 and not isinstance(error, Choice):
+                    # a candidate reading without this sentence (one that reads, with competing
+                    # meanings, is offered with each of them instead: never dropped)
+                    unread.append(_said(lexed))
                     continue
                 raise error from None
             try:
@@ -1363,7 +1380,7 @@ def _parse(command: str, world: dict, picks: dict | None = None) -> dict:
                 error = _fail(again, lexed.trimmed, lex) if isinstance(again, UnexpectedInput) else again
                 error.sentence, error.trimmed = index, True  # type: ignore[attr-defined]
                 error.args = (f"{error.args[0]} (set aside: {'; '.join(repr(a) for a in lexed.aside)})",)
-                if salvage == "sentence" and len(sentences) > 1:
+                if salvage == "sentence" and len(sentences) > 1 and not isinstance(error, Choice):
                     unread.append(_said(lexed))
                     continue
                 raise error from None
