@@ -79,3 +79,26 @@ def test_robot_rules_said_as_not_to_be_used_not_allowed_left_out_or_any_item(rul
 def test_a_place_then_a_comma_then_counts_reads_as_with_a_colon(command: str, goal: dict) -> None:
     """"P, N X" is "P: N X" (the place is the topic; the counts are what it should hold)."""
     assert translate(command, BIKES)["goal"] == goal
+
+
+@pytest.mark.parametrize("command, goal", [
+    # keeping one item where it is, said after the clause that names the place, or with its owner
+    ("The front rack should have 1 inner tube, helmets stay as is.", {"front_rack": {"inner_tube": 1, "helmet": 2}}),
+    ("The back room's pumps stay where they are, and it should have 3 inner tubes.",
+     {"back_room": {"pump": 3, "inner_tube": 3}}),
+    # swapping all of two places, each said with its own phrase
+    ("Swap everything on the wall hooks with everything on the repair bench.",
+     {"wall_hooks": {"helmet": 0, "chain": 2}, "repair_bench": {"helmet": 3, "chain": 1}}),
+    ("Swap what's on the wall hooks with what's on the repair bench",
+     {"wall_hooks": {"helmet": 0, "chain": 2}, "repair_bench": {"helmet": 3, "chain": 1}}),
+    # "any X" after a negated "there be" is none of it
+    ("There shouldn't be any helmets left on the front rack.", {"front_rack": {"helmet": 0}}),
+    ("There mustn't be any pumps or inner tubes in the back room", {"back_room": {"pump": 0, "inner_tube": 0}}),
+    # a range said with the item after its first bound
+    ("The wall hooks need at least 2 helmets but no more than 4.", {"wall_hooks": {"helmet": {"at_least": 2, "at_most": 4}}}),
+    # "leave" a place with a count, and "just N"
+    ("Leave the front rack with 2 inner tubes", {"front_rack": {"inner_tube": 2}}),
+    ("Leave just one helmet on the wall hooks", {"wall_hooks": {"helmet": 1}}),
+])
+def test_keep_swap_all_none_left_ranges_and_leave_with(command: str, goal: dict) -> None:
+    assert translate(command, BIKES)["goal"] == goal

@@ -423,6 +423,7 @@ class GoalRules:
         heads = self.sub(node, "ihead")
         if poss:
             places = [str(poss[0].children[0].value)]
+            self.last_places = places  # "P's X stays where it is, and it should get ...": "it" is P
         elif locs:
             places = self.loc(locs[0])[0]
         else:

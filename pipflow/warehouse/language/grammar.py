@@ -54,6 +54,7 @@ items: np (lsep np)*
 
 np: NUM of? ihead                          -> np_count
   | NUM ITEMWORD "of" ITEM                 -> np_count
+  | "just" NUM of? ihead                   -> np_count
   | NUM more of? ihead                     -> np_more
   | ("another" | "an" "extra") NUM of? ihead -> np_more
   | "another" ihead                        -> np_one_more
@@ -82,6 +83,7 @@ np: NUM of? ihead                          -> np_count
   | ("fewer" | "less") "than" NUM of? ihead -> np_below
   | ("somewhere" | "anywhere")? "between" NUM "and" NUM of? ihead -> np_between
   | lower NUM ","? ("but" | "and") upper NUM of? ihead    -> np_between
+  | lower NUM of? ihead ","? ("but" | "and") upper NUM    -> np_between
   | ("somewhere" | "anywhere")? "from" NUM "to" NUM of? ihead -> np_between
   | NUM more "of" ("each" | "every") ITEMWORD? -> np_each_more
   | NUM "to" NUM of? ihead                 -> np_between
@@ -112,6 +114,9 @@ np: NUM of? ihead                          -> np_count
 
 rest_of: "of" (ihead | "them" | "it" | its ihead)
 bare: ihead (lsep ihead)*
+// "there shouldn't be any X left on P": after a negation "any X" is none of it
+any_items: "any" any_none ((lsep | "or") "any"? any_none)*  -> items
+any_none: ihead                                -> np_none
 inum: ihead ":"? NUM
 except_items: ("except" "for"? | "but" | "besides" | "other" "than" | "apart" "from" | "excluding") ihead (lsep ihead)*
 
@@ -191,6 +196,8 @@ to: "to" | "into" | "onto" | "over" "to"
 // ---------------------------------------------------------------- goal statements
 goal: there_be items loc                                  -> g_set
     | there_be items loc "and"? "nothing" "else"          -> g_set_only
+    | ("there" | "theres") ("shouldnt" | "mustnt" | "cant" | "wont" | modal ("not" | "never")) "be" any_items left? loc -> g_set
+    | "leave" places "with" items                          -> g_place_set
     | there_be items left loc                             -> g_set
     | items modal? stay? loc                              -> g_set
     | loc ","? there_be? items                            -> g_loc_set
@@ -329,6 +336,8 @@ goal: there_be items loc                                  -> g_set
     | places modal? ("stay" | "stays" | "remain" | "remains" | "be" "left") as_is  -> g_keep
     | places modal? ("stay" | "stays" | "remain" | "remains") "put" -> g_keep
     | ihead loc modal? ("stay" | "stays" | "remain" | "remains") ("put" | as_is) -> g_keep
+    | posplace ihead modal? ("stay" | "stays" | "remain" | "remains") ("put" | as_is) -> g_keep
+    | ihead (lsep ihead)* modal? ("stay" | "stays" | "remain" | "remains") ("put" | as_is) -> g_keep_its_elided
     | places modal? ("use" | "do" "with") items              -> g_could_use
     | ("top" ("up" | "off") | "fill" "up") places "with" only? ihead only? -> g_fill
     | (putv | addv) items loc on_top                         -> g_add
@@ -348,6 +357,7 @@ goal: there_be items loc                                  -> g_set
     | swapv ("what" | "contents" "of")? places ("hold" | "have" | "contain" | "holds" | "has")? -> g_swap
     | swapv ihead (lsep ihead)* ("between" | "of" | "on") places -> g_swap_items
     | swapv posplace ihead "with" (posplace | places)       -> g_swap_poss
+    | swapv ("everything" | "what" "is" | "contents" | "stock" | "what" "sits") ("on" | "in" | "at" | "of") places "with" ("everything" | "what" "is" | "contents" | "stock" | "what" "sits" | "that" | "those")? ("on" | "in" | "at" | "of") places -> g_swap
     | swapv posplace "and" posplace ihead                  -> g_swap_poss
     | splitv items? even? among places even?                -> g_split
     | splitv bare even? among places even?                  -> g_split
@@ -384,7 +394,8 @@ mult: "double" | "triple" | "quadruple" | "halve"
 swapv: "swap" | "trade" | "exchange" | "switch" | "interchange"
 emptyv: "empty" | "clear" | "clean" "out" | "clear" "out" | "empty" "out"
 emptied: "empty" | "emptied" | "cleared" | "vacant" | "cleaned" "out" | "emptied" "out" | "cleared" "out"
-as_is: "where" ("it" | "they") ("is" | "are") | "as" ("it" | "they") ("is" | "are") | "alone"
+as_is: "where" ("it" | "they") ("is" | "are") | "as" ("it" | "they") ("is" | "are") | "alone" | "as" "is"
+     | "unchanged" | "untouched"
      | "untouched" | "unchanged" | "as" "is" | "way" ("it" | "they") ("is" | "are" | "was" | "were") | "as" ("it" | "they") ("was" | "were")
 
 except_places: ("except" | "but" "not" | "apart" "from" | "other" "than" | "excluding" | "not") except_what? ("up" | "down" | "over" | "out")? ("on" | "in" | "at" | "from") places
