@@ -121,3 +121,19 @@ def test_robots_named_by_a_shared_stem_and_a_label_are_a_group() -> None:
 def test_the_shared_stem_of_robots_said_as_one_is_refused_naming_them() -> None:
     with pytest.raises(TranslationError, match="cart_a, cart_b"):
         translate("The cart should move 2 pumps from the back room to the front rack.", CARTS)
+
+
+@pytest.mark.parametrize("command", [
+    "Tell zip_1 to move 2 pumps from the back room to the front rack.",
+    "can yous get zip_1 to move 2 pumps from the back room to the front rack",
+])
+def test_a_robot_told_to_do_a_move_and_chat_spellings_of_you(command: str) -> None:
+    """"tell R to <move>" is R addressed with the move, as "ask R to" is; "yous" is "you"."""
+    got = translate(command, BIKES)
+    assert got["goal"] == MOVE_PUMPS
+    assert got["constraints"] == [{"only": ["zip_1"], "product": "pump", "from": "back_room", "to": "front_rack"}]
+
+
+def test_em_is_them() -> None:
+    got = translate("Take 2 pumps off the back room and put 'em on the front rack.", BIKES)
+    assert got["goal"] == MOVE_PUMPS

@@ -557,7 +557,7 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
 addressed: robots ("," | ":")? oblig? goal
          | ("can" | "could" | "would" | "will") robots goal
          | robots "," ("our" | "a" | "an" | "my")? (RKIND | RTAG) "," oblig? goal  -> addressed_appos
-         | ("let" | "have" | "get" | "ask") robots "to"? goal
+         | ("let" | "have" | "get" | "ask" | "tell") robots "to"? goal
 scoped_goal: ("using" | "with" | "by") ("only" | "just")? robots ","? goal    -> scoped_only
            | ("use" | "employ") ("only" | "just")? robots ("to" | "for") goal    -> scoped_only
            | "use" ("any" | "all" | "every")? ROBOTWORD? ("except" | "but" | "other" "than" | "besides") robots "to" goal -> scoped_never_before

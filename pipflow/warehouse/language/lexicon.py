@@ -40,7 +40,8 @@ FILLERS |= {"carton", "cartons", "roll", "rolls", "pack", "packs", "packet", "pa
 EXACT_WORDS = {"exactly", "precisely"}
 #: chat spellings of keywords
 SPELLINGS = {"shud": "should", "shld": "should", "u": "you", "r": "are", "wont": "wont", "gonna": "will",
-             "wanna": "want", "lemme": "let", "cuz": "because", "thru": "through", "frm": "from"}
+             "wanna": "want", "lemme": "let", "cuz": "because", "thru": "through", "frm": "from",
+             "em": "them", "yous": "you", "youse": "you"}
 #: fillers the grammar still reads when it has a place for them (it tries the keyword first)
 SOFT_FILLERS = {"of", "just", "right", "away", "now", "today", "currently", "moment", "exactly"}
 FRACTIONS = {"third": 3, "thirds": 3, "quarter": 4, "quarters": 4, "fourth": 4, "fourths": 4,
