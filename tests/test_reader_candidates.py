@@ -93,3 +93,14 @@ def test_a_partial_reading_that_meets_competing_readings_offers_each() -> None:
     goals = [c["goal"] for c in offered]
     assert {"front_rack": {"helmet": 3}} in goals and {"front_rack": {"helmet": 5}} in goals
     assert all("Quick" in " ".join(c["unread"]) for c in offered)
+
+
+def test_a_command_read_again_after_its_world_gained_a_name_sees_the_name() -> None:
+    """The reader remembers the tokens of recent commands (candidates re-read them); a world
+    object changed in place since is read afresh, never through the old names."""
+    import copy
+    world = copy.deepcopy(BIKES)
+    with pytest.raises(TranslationError):
+        understand("put 2 pumps on the loft", world)
+    world["shelves"]["loft"] = {"x": 14, "y": 3, "width": 3, "depth": 2, "capacity": 6, "access": [15, 6]}
+    assert understand("put 2 pumps on the loft", world)["goal"] == {"loft": {"pump": 2}}

@@ -1205,18 +1205,23 @@ def candidates(command: str, world: dict, exc: TranslationError) -> list[dict]:
     out: list[dict] = []
     seen: set[str] = set()
     _CANDIDATE_BUDGET["left"] = CANDIDATE_PARSES
-    try:
-        for pick in picks[:-len(SALVAGE)]:
-            _candidate(command, world, pick, out, seen)
+    word = getattr(exc, "word", None)
+    # the readings to try, in order; the first three that resolve to different meanings are
+    # offered, so the search stops there (what it would find later is never offered)
+    tries: list[Callable[[], None]] = [
+        *(functools.partial(_candidate, command, world, pick, out, seen) for pick in picks[:-len(SALVAGE)]),
         # a word no rule places may be a near miss of a word that has a place: the command read
         # with it respelt, once for each near word, the repair said in the echo
-        word = getattr(exc, "word", None)
-        for right in near_words(word, Lexicon(world, keywords())) if word else []:
-            repaired = with_word(command, word, right)
-            if repaired is not None:
-                _with_choices(repaired, world, {}, out, seen, note=f"read '{word}' as '{right}'")
-        for pick in picks[-len(SALVAGE):]:
-            _with_choices(command, world, pick, out, seen)
+        *(functools.partial(_with_choices, repaired, world, {}, out, seen, note=f"read '{word}' as '{right}'")
+          for right in (near_words(word, _lexed(command, world)[0]) if word else [])
+          for repaired in [with_word(command, word, right)] if repaired is not None),
+        *(functools.partial(_with_choices, command, world, pick, out, seen) for pick in picks[-len(SALVAGE):]),
+    ]
+    try:
+        for attempt in tries:
+            if len(out) >= MAX_CANDIDATES:
+                break
+            attempt()
     finally:
         _CANDIDATE_BUDGET["left"] = None
     return out[:MAX_CANDIDATES]
@@ -1234,6 +1239,8 @@ def _with_choices(command: str, world: dict, pick: dict, out: list[dict], seen: 
     sentence = getattr(error, "sentence", None)
     if isinstance(error, Choice) and sentence is not None and error.key not in (pick.get(sentence) or {}):
         for option in error.options:
+            if len(out) >= MAX_CANDIDATES:
+                return
             _candidate(command, world, {**pick, sentence: {**(pick.get(sentence) or {}), error.key: option}},
                        out, seen, note)
 
@@ -1322,19 +1329,51 @@ def _meaning_of(order: dict, world: dict) -> str | None:
     return canonical(r.goal, r.constraints)
 
 
+#: the lexicon and sentences of recent commands, by the command, the world object and the names
+#: in it (what the lexicon reads of a world; counts are read live from the world): a refusal's
+#: candidate readings re-read the same command up to a dozen times (each with another pick), and
+#: tokenising it took a quarter of a refusal's time. Lexed sentences are never changed in place
+#: (a partial parse builds new ones), so one serves every reading.
+_LEXED: "OrderedDict[tuple, tuple[dict, Lexicon, RobotSelector, list[Lexed]]]" = OrderedDict()
+_LEXED_KEPT = 8
+
+
+def _names_of(world: dict) -> tuple:
+    """What the lexicon reads of a world: its names, and the robots' kinds, tags and skills."""
+    robots = world.get("robots") or {}
+    return (tuple(world.get("shelves") or ()), tuple(world.get("products") or ()),
+            tuple((str(r), repr(v.get("kind")), repr(v.get("tags")), tuple(v.get("skills") or ()))
+                  if isinstance(v, dict) else (str(r),) for r, v in robots.items()))
+
+
+def _lexed(command: str, world: dict) -> tuple[Lexicon, RobotSelector, list[Lexed]]:
+    """(lexicon, robot selector, sentences) of ``command`` in ``world``, remembered for the last
+    :data:`_LEXED_KEPT` commands (the same world object only: a changed world is a new object)."""
+    key = (command, id(world), _names_of(world))
+    hit = _LEXED.get(key)
+    if hit is not None and hit[0] is world:
+        _LEXED.move_to_end(key)
+        return hit[1], hit[2], hit[3]
+    lex = Lexicon(world, keywords())
+    selector = RobotSelector(world, lex.index)
+    sentences = lex.sentences(command)
+    _LEXED[key] = (world, lex, selector, sentences)
+    if len(_LEXED) > _LEXED_KEPT:
+        _LEXED.popitem(last=False)
+    return lex, selector, sentences
+
+
 def _parse(command: str, world: dict, picks: dict | None = None) -> dict:
     """:func:`parse` of one reading of the line breaks. ``picks``: for a sentence (its index), the
     reading a user chose among candidates: ``{"reading": k}``, ``{"scope": ...}``, or ``{"drop":
     [token indexes]}`` (words left out of it); none in an ordinary run."""
     picks = picks or {}
-    lex = Lexicon(world, keywords())
-    selector = RobotSelector(world, lex.index)
+    lex, selector, sentences = _lexed(command, world)
     statements: list[dict] = []
     rules: list[dict] = []
     memory: dict = {}
     set_aside: list[str] = []
     unread: list[str] = []  # words a candidate reading left out (salvage mode only)
-    sentences = lex.sentences(command)
     for index, lexed in enumerate(sentences):
         if not lexed.tokens:
             continue

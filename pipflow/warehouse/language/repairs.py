@@ -29,8 +29,11 @@ def near_words(word: str, lex: Lexicon) -> list[str]:
     vocabulary = ({k for k in lex.keywords if k.isalpha() and len(k) >= 2} | set(NUMBER_WORDS)
                   | {w for w in lex._name_words if w.isalpha()})
     near = []
+    letters = set(low)
     for w in vocabulary:
-        if w == low or abs(len(w) - len(low)) > 2:
+        # each edit adds or removes at most two letters from the set of letters: a cheap test
+        # first, the edit distance only for words that pass it
+        if w == low or abs(len(w) - len(low)) > 2 or len(letters ^ set(w)) > 4:
             continue
         d = distance(low, w)
         if d == 1 or (d == 2 and len(low) >= 5 and w[0] == low[0]):
