@@ -269,12 +269,17 @@ class GoalRules:
         parts = self.clause_parts(node)
         words, nps, plist, each = parts.words, parts.nps, parts.plist, parts.each
         # "P could use / could do with N more X" is a change; without "more" it could be the
-        # count P should end with or the count to bring: refused, not guessed
+        # count P should end with or the count to bring: refused with both readings offered
+        # (``picks["could_use"]``: the user's choice), never guessed
+        choice = self.picks.get("could_use")
         for np in nps:
-            if set(np["amount"]) != {"more"}:
-                raise TranslationError(f"{quote(words)}: 'could use' does not say whether "
-                                       f"{np['words']} is the count to end with or to add "
-                                       f"(say 'N more' or 'should have N')")
+            if set(np["amount"]) != {"more"} and choice is None:
+                raise Choice("could_use", ("set", "add"),
+                             f"{quote(words)}: 'could use' does not say whether {np['words']} is the "
+                             f"count to end with or to add (say 'N more' or 'should have N')")
+        if choice == "add":
+            nps = [{**np, "amount": {"more": np["amount"]["count"]}} if set(np["amount"]) == {"count"} else np
+                   for np in nps]
         self.put(self.place_list(plist[0]), "each" if each else "one", nps, words)
 
     def g_add_place(self, node: Tree) -> None:
@@ -418,6 +423,7 @@ class GoalRules:
         heads = self.sub(node, "ihead")
         if poss:
             places = [str(poss[0].children[0].value)]
+            self.last_places = places  # "P's X stays where it is, and it should get ...": "it" is P
         elif locs:
             places = self.loc(locs[0])[0]
         else:

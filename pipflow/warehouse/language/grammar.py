@@ -54,6 +54,7 @@ items: np (lsep np)*
 
 np: NUM of? ihead                          -> np_count
   | NUM ITEMWORD "of" ITEM                 -> np_count
+  | "just" NUM of? ihead                   -> np_count
   | NUM more of? ihead                     -> np_more
   | ("another" | "an" "extra") NUM of? ihead -> np_more
   | "another" ihead                        -> np_one_more
@@ -82,6 +83,7 @@ np: NUM of? ihead                          -> np_count
   | ("fewer" | "less") "than" NUM of? ihead -> np_below
   | ("somewhere" | "anywhere")? "between" NUM "and" NUM of? ihead -> np_between
   | lower NUM ","? ("but" | "and") upper NUM of? ihead    -> np_between
+  | lower NUM of? ihead ","? ("but" | "and") upper NUM    -> np_between
   | ("somewhere" | "anywhere")? "from" NUM "to" NUM of? ihead -> np_between
   | NUM more "of" ("each" | "every") ITEMWORD? -> np_each_more
   | NUM "to" NUM of? ihead                 -> np_between
@@ -112,6 +114,9 @@ np: NUM of? ihead                          -> np_count
 
 rest_of: "of" (ihead | "them" | "it" | its ihead)
 bare: ihead (lsep ihead)*
+// "there shouldn't be any X left on P": after a negation "any X" is none of it
+any_items: "any" any_none ((lsep | "or") "any"? any_none)*  -> items
+any_none: ihead                                -> np_none
 inum: ihead ":"? NUM
 except_items: ("except" "for"? | "but" | "besides" | "other" "than" | "apart" "from" | "excluding") ihead (lsep ihead)*
 
@@ -191,18 +196,20 @@ to: "to" | "into" | "onto" | "over" "to"
 // ---------------------------------------------------------------- goal statements
 goal: there_be items loc                                  -> g_set
     | there_be items loc "and"? "nothing" "else"          -> g_set_only
+    | ("there" | "theres") ("shouldnt" | "mustnt" | "cant" | "wont" | modal ("not" | "never")) "be" any_items left? loc -> g_set
+    | "leave" places "with" items                          -> g_place_set
     | there_be items left loc                             -> g_set
     | items modal? stay? loc                              -> g_set
     | loc ","? there_be? items                            -> g_loc_set
     | both? places modal? each? setv each? items left?     -> g_place_set
     | both? places modal? "each" be? items                  -> g_place_set
-    | places ":" items                                     -> g_place_set
+    | places (":" | ",") items                             -> g_place_set
     | places ":" ("add" | "plus") items                     -> g_add_place
     | places ("needs" | "need" | "wants") ("emptying" | "clearing" "out"? | "emptying" "out") ("into" | "onto" | "to") places -> g_empty_into
     | places ("needs" | "need" | "wants") ("emptying" | "clearing" "out"? | "emptying" "out") -> g_empty
     | ("no" | "zero") ihead (lsep ihead)* ("anywhere" | "elsewhere") except_pl -> g_none_except
     | "nothing" "but" ihead (lsep ihead)* loc                -> g_nothing_but
-    | places ":" inum (lsep inum)*                         -> g_place_inum
+    | places (":" | ",") inum (lsep inum)*                 -> g_place_inum
     | places modal? setv items "respectively"               -> g_place_set_resp
     | places "to" setv items                                -> g_place_set
     | putv items loc                                       -> g_set
@@ -285,7 +292,9 @@ goal: there_be items loc                                  -> g_set
     | splitv items src even? among places even?              -> g_split_src
     | splitv pitems even? among places even?                 -> g_split_src
     | addv items adv? to places from places                -> g_transfer
-    | addv items to places except_places                   -> g_transfer_except
+    | addv items to places ","? except_places              -> g_transfer_except
+    | items modal? go to places ","? except_places         -> g_transfer_except
+    | items modal? go to places                            -> g_add
     | addv items except_places to places                   -> g_transfer_except
     | items ("on" | "in" | "at" | "from") places modal? go to places -> g_transfer
     | items from places modal? go? to places                -> g_transfer
@@ -327,6 +336,8 @@ goal: there_be items loc                                  -> g_set
     | places modal? ("stay" | "stays" | "remain" | "remains" | "be" "left") as_is  -> g_keep
     | places modal? ("stay" | "stays" | "remain" | "remains") "put" -> g_keep
     | ihead loc modal? ("stay" | "stays" | "remain" | "remains") ("put" | as_is) -> g_keep
+    | posplace ihead modal? ("stay" | "stays" | "remain" | "remains") ("put" | as_is) -> g_keep
+    | ihead (lsep ihead)* modal? ("stay" | "stays" | "remain" | "remains") ("put" | as_is) -> g_keep_its_elided
     | places modal? ("use" | "do" "with") items              -> g_could_use
     | ("top" ("up" | "off") | "fill" "up") places "with" only? ihead only? -> g_fill
     | (putv | addv) items loc on_top                         -> g_add
@@ -346,6 +357,7 @@ goal: there_be items loc                                  -> g_set
     | swapv ("what" | "contents" "of")? places ("hold" | "have" | "contain" | "holds" | "has")? -> g_swap
     | swapv ihead (lsep ihead)* ("between" | "of" | "on") places -> g_swap_items
     | swapv posplace ihead "with" (posplace | places)       -> g_swap_poss
+    | swapv ("everything" | "what" "is" | "contents" | "stock" | "what" "sits") ("on" | "in" | "at" | "of") places "with" ("everything" | "what" "is" | "contents" | "stock" | "what" "sits" | "that" | "those")? ("on" | "in" | "at" | "of") places -> g_swap
     | swapv posplace "and" posplace ihead                  -> g_swap_poss
     | splitv items? even? among places even?                -> g_split
     | splitv bare even? among places even?                  -> g_split
@@ -382,10 +394,11 @@ mult: "double" | "triple" | "quadruple" | "halve"
 swapv: "swap" | "trade" | "exchange" | "switch" | "interchange"
 emptyv: "empty" | "clear" | "clean" "out" | "clear" "out" | "empty" "out"
 emptied: "empty" | "emptied" | "cleared" | "vacant" | "cleaned" "out" | "emptied" "out" | "cleared" "out"
-as_is: "where" ("it" | "they") ("is" | "are") | "as" ("it" | "they") ("is" | "are") | "alone"
+as_is: "where" ("it" | "they") ("is" | "are") | "as" ("it" | "they") ("is" | "are") | "alone" | "as" "is"
+     | "unchanged" | "untouched"
      | "untouched" | "unchanged" | "as" "is" | "way" ("it" | "they") ("is" | "are" | "was" | "were") | "as" ("it" | "they") ("was" | "were")
 
-except_places: ("except" | "but" "not" | "apart" "from" | "other" "than" | "excluding" | "not") except_what? ("on" | "in" | "at" | "from") places
+except_places: ("except" | "but" "not" | "apart" "from" | "other" "than" | "excluding" | "not") except_what? ("up" | "down" | "over" | "out")? ("on" | "in" | "at" | "from") places
              | ("except" | "but" "not" | "excluding" | "not") from places
 except_what: "ones" | "those" | "them" | "what" "is" | "any" | "what" "sits" | "what" "lies" | "ones" "that" ("are" | "sit" | "lie")
 
@@ -439,6 +452,7 @@ rneg: "not" | "never" | "dont" | "doesnt" | "shouldnt" | "mustnt" | "cant" | "ca
     | "isnt" | "arent" | "no" "longer"
 rmodal: "should" | "must" | "shall" | "will" | "may" | "can" | "is" "to" | "are" "to" | "would"
       | "do" | "does" | "is" "allowed" "to" | "are" "allowed" "to" | "ought" "to"
+      | ("allowed" | "permitted") "to"
 oblig: "should" | "must" | "shall" | "will" | "is" "to" | "are" "to" | "has" "to" | "have" "to"
 state: "broken" | "faulty" | "unavailable" | "offline" | "disabled" | "damaged" | "down"
      | "idle" | "unused" | "busy" | "charging" | "malfunctioning" | "out" "of" ("order" | "service")
@@ -461,6 +475,7 @@ robj: ITEM ((lsep | "or" | "nor" | "," "or") ITEM)*       -> ro_items
     | ("it" | "them" | "that" | "those" | "these" | "this")  -> ro_pronoun
     | "for" ITEM (lsep ITEM)*                               -> ro_items
     | "all" ITEM (lsep ITEM)*                               -> ro_items
+    | "any" ITEM ((lsep | "or" | "nor" | "," "or") ITEM)*   -> ro_items
 rwhere: from places                                    -> rw_from
       | from places to places                          -> rw_route
       | ("to" | "into" | "onto" | "towards" | "toward") places -> rw_to
@@ -500,7 +515,7 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | ("keep" | "leave") robots "off" ITEM (lsep ITEM)*       -> rule_away_items
     | robots modal? ("stay" | "keep") ("off" | "away" "from" | "clear" "of") ITEM (lsep ITEM)* -> rule_away_items
     | robots ("is" | "are") state ","? ("so" | "and")? ("dont" | "do" "not") "use" ("it" | "them") -> rule_state
-    | robots ("is" | "are") "not" "to" "be" "used" rscope     -> rule_never
+    | robots (("is" | "are") "not" | "isnt" | "arent") "to" "be" ("used" | "involved" | "employed" | "assigned") rscope -> rule_never
     | robots modal? ("stay" | "keep") ("away" | "clear") from places -> rule_away
     | ("keep" | "leave") robots ("away" | "clear") from places -> rule_away
     | ("keep" | "leave") robots ("out" "of" | "off") places  -> rule_away
@@ -509,6 +524,7 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | ("dont" | "do" "not" | "never" | "avoid") ("use" | "using" | "involve" | "employ" | "assign") robots rscope -> rule_never
     | ("dont" | "do" "not" | "never") "let" robots act? rscope -> rule_never
     | ("exclude" | "skip" | "leave" "out" | "disable" | "ignore" | "bench" | "rest") robots rscope -> rule_never
+    | ("keep" | "leave") robots "out" rscope                  -> rule_never
     | "without" ("using" | "help" "of" | "help" "from")? robots rscope -> rule_never
     | "not" ("with" | "by" | "using") robots rscope          -> rule_never
     | "only" robots rmodal? useact? rscope                   -> rule_only
@@ -541,7 +557,7 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
 addressed: robots ("," | ":")? oblig? goal
          | ("can" | "could" | "would" | "will") robots goal
          | robots "," ("our" | "a" | "an" | "my")? (RKIND | RTAG) "," oblig? goal  -> addressed_appos
-         | ("let" | "have" | "get" | "ask") robots "to"? goal
+         | ("let" | "have" | "get" | "ask" | "tell") robots "to"? goal
 scoped_goal: ("using" | "with" | "by") ("only" | "just")? robots ","? goal    -> scoped_only
            | ("use" | "employ") ("only" | "just")? robots ("to" | "for") goal    -> scoped_only
            | "use" ("any" | "all" | "every")? ROBOTWORD? ("except" | "but" | "other" "than" | "besides") robots "to" goal -> scoped_never_before

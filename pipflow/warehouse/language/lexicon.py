@@ -40,7 +40,8 @@ FILLERS |= {"carton", "cartons", "roll", "rolls", "pack", "packs", "packet", "pa
 EXACT_WORDS = {"exactly", "precisely"}
 #: chat spellings of keywords
 SPELLINGS = {"shud": "should", "shld": "should", "u": "you", "r": "are", "wont": "wont", "gonna": "will",
-             "wanna": "want", "lemme": "let", "cuz": "because", "thru": "through", "frm": "from"}
+             "wanna": "want", "lemme": "let", "cuz": "because", "thru": "through", "frm": "from",
+             "em": "them", "yous": "you", "youse": "you"}
 #: fillers the grammar still reads when it has a place for them (it tries the keyword first)
 SOFT_FILLERS = {"of", "just", "right", "away", "now", "today", "currently", "moment", "exactly"}
 FRACTIONS = {"third": 3, "thirds": 3, "quarter": 4, "quarters": 4, "fourth": 4, "fourths": 4,
@@ -338,8 +339,7 @@ class Lexicon:
         self._name_words |= {w for ws in self.index.stems.values() for w in ws}
         self.aside: list[str] = []
         #: name stems two or more robots share ("tug" of tug1..tug4): groups of the world
-        self.robot_stems = {stem for stem in self.index.stems["robot"] if stem not in KIND_WORDS["robot"]
-                            and sum(1 for n in self.index.names if n.kind == "robot" and n.alpha == stem) >= 2}
+        self.robot_stems = {stem for stem in self.index.robot_groups if stem not in KIND_WORDS["robot"]}
 
     def _known(self, word: str) -> bool:
         return (word in self.keywords or word in FILLERS or word in STOPWORDS
@@ -379,8 +379,7 @@ class Lexicon:
     def group_names(self) -> str:
         """The robot groups of this world, for a refusal of a group word that matches none."""
         parts = [f"kind {k}" for k in sorted(self.kinds)] + [f"tag {t}" for t in sorted(self.tags)]
-        parts += [f"{stem}s ({', '.join(n.name for n in self.index.names if n.kind == 'robot' and n.alpha == stem)})"
-                  for stem in sorted(self.robot_stems)]
+        parts += [f"{stem}s ({', '.join(self.index.robot_groups[stem])})" for stem in sorted(self.robot_stems)]
         return ", ".join(parts) or "none but all robots"
 
     def _joined(self, text: str) -> str:

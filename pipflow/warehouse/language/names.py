@@ -97,6 +97,29 @@ def found_shelves(world: dict) -> list[str]:
     return [str(n) for n in (world.get("shelves") or {})]
 
 
+def name_stem(name: str) -> str | None:
+    """The stem a robot name shares with its siblings: its letters before a number ("tug" of
+    tug3) or before a short label ("skiff" of skiff_a, "cart" of cart-b); None otherwise."""
+    alpha, digits = split_digits(normalize(name))
+    if digits and alpha:
+        return alpha
+    parts = [p for p in re.split(r"[-_\s]+", name.lower()) if p]
+    if len(parts) >= 2 and len(parts[-1]) <= 2 and parts[-1].isalpha():
+        return normalize("".join(parts[:-1]))
+    return None
+
+
+def stem_groups(names: list[str]) -> dict[str, list[str]]:
+    """Stems two or more of ``names`` share (:func:`name_stem`), each with its names: "the tugs"
+    where robots are tug1..tug4, "the skiffs" where they are skiff_a..skiff_c."""
+    groups: dict[str, list[str]] = {}
+    for n in names:
+        stem = name_stem(n)
+        if stem and len(stem) > 2 and stem not in STOPWORDS:
+            groups.setdefault(stem, []).append(n)
+    return {stem: members for stem, members in groups.items() if len(members) >= 2}
+
+
 def _heads(name: str) -> set[str]:
     """The class nouns a place name carries: "bay" of bay3, "cage" of north_cage, "freezer" of
     freezer-a (a short label after the noun), none of a one-word name without a number."""
@@ -182,6 +205,9 @@ class NameIndex:
                     x.kind != "shelf" and x.alpha == head for x in self.names):
                 del self.groups[head]
         self.stems["shelf"] |= set(self.groups)
+        # stems robots share before a number or a short label: "the skiffs" (skiff_a, skiff_b)
+        self.robot_groups = stem_groups([n.name for n in self.names if n.kind == "robot"])
+        self.stems["robot"] |= set(self.robot_groups)
 
         # One word of a name of two or more words that no other name has ("formula" of
         # baby-formula, "inbound" of inbound_dock, "rice" of rice_sack) names that thing: people
@@ -278,8 +304,11 @@ class NameIndex:
             exact = [n for n in self.names if n.alpha == v and n.digits == digits]
             if exact:
                 return Tok("name", text, exact[0].name, exact[0].kind)
-        if not digits and any(v in KIND_WORDS[k] for k in KINDS for v in variants(alpha)):
-            fuzzy = False  # "racks" is the kind word, not a misspelt rack_a (nor a tie of all racks)
+        if not digits and any(v in KIND_WORDS[k] or v in self.groups or v in self.robot_groups
+                              for k in KINDS for v in variants(alpha)):
+            # "racks" is the kind word, not a misspelt rack_a (nor a tie of all racks); "row" of
+            # row-a and row-b is the head noun they share (a group: "every row"), not a tie
+            fuzzy = False
         if fuzzy and alpha not in STOPWORDS and alpha not in self.reserved and alpha:
             scored = []
             for n in self.names:

@@ -31,9 +31,11 @@ from lark.exceptions import UnexpectedInput, UnexpectedToken
 from pipflow.errors import PipflowError, Refusal, TranslationError
 from pipflow.language.characters import line_readings
 from pipflow.language.earley import ListLexer, earley_parser
+from pipflow.language.lookahead import with_lookahead
 from pipflow.warehouse.language.goals import Choice, GoalRules, quote
 from pipflow.warehouse.language.grammar import GRAMMAR, nullable_optionals
 from pipflow.warehouse.language.lexicon import Lexed, Lexicon
+from pipflow.warehouse.language.repairs import near_words, with_word
 from pipflow.language.numbers import NUMBER_WORDS
 from pipflow.language.spelling import normalize
 from pipflow.warehouse.language.resolver import resolve
@@ -80,8 +82,10 @@ RECEIVE_VERBS = {"get", "gets", "receive", "receives", "give"}
 def _all_readings_parser() -> Lark:
     """Earley over the command grammar, keeping every reading (``_ambig`` nodes) so that they
     can be checked to agree. Built once per process (about a second: the one parser a run
-    builds; cached on disk by :mod:`pipflow.language.earley`)."""
-    return earley_parser(nullable_optionals(GRAMMAR), lexer=ListLexer, keep_all_tokens=True, ambiguity="explicit")
+    builds; cached on disk by :mod:`pipflow.language.earley`), predicting with one terminal of
+    lookahead (:mod:`pipflow.language.lookahead`: the same forests, about a sixth of the time)."""
+    return with_lookahead(earley_parser(nullable_optionals(GRAMMAR), lexer=ListLexer, keep_all_tokens=True,
+                                        ambiguity="explicit"))
 
 
 @functools.lru_cache(maxsize=1)
@@ -964,7 +968,7 @@ def _fail(exc: UnexpectedInput, lexed: Lexed, lex: Lexicon) -> TranslationError:
         if prev is not None and prev.kind == "num" and lexed.tokens[k].type == "UNKNOWN":
             error = TranslationError(f"'{prev.text} {word}': cannot tell which product this count is for "
                                      f"(candidates: {lex.index.candidates('product')})")
-            error.unplaced = k  # type: ignore[attr-defined]
+            error.unplaced, error.word = k, word  # type: ignore[attr-defined]
             error.clause = _clause_of(lexed, k)  # type: ignore[attr-defined]
             return error
         where = f"cannot place '{word}' in '{sentence}'"
@@ -972,7 +976,7 @@ def _fail(exc: UnexpectedInput, lexed: Lexed, lex: Lexicon) -> TranslationError:
                                  f"(shelves: {lex.index.candidates('shelf')}; products: "
                                  f"{lex.index.candidates('product')}; robots: {lex.index.candidates('robot')}; "
                                  f"robot groups: {lex.group_names()})")
-        error.unplaced = k  # type: ignore[attr-defined]
+        error.unplaced, error.word = k, word  # type: ignore[attr-defined]
         error.clause = _clause_of(lexed, k)  # type: ignore[attr-defined]
         return error
     else:
@@ -1057,8 +1061,10 @@ _FORESTS: "OrderedDict[tuple, tuple[bool, Any]]" = OrderedDict()
 _FORESTS_KEPT = 256
 #: new sentence parses one refusal may spend on its candidate readings (a parse of a sentence read
 #: before is remembered and free): the candidates of a refused command cost at most this many
-#: parses more than the refusal itself (benchmarks/translator.py measures the time)
-CANDIDATE_PARSES = 3
+#: parses more than the refusal itself. With the lookahead predictor a parse costs a sixth of what
+#: it did, so a refusal may try four partial parses of up to three words each (9 parses) and still
+#: read faster than a344570 (benchmarks/parse_speed.py)
+CANDIDATE_PARSES = 9
 _CANDIDATE_BUDGET: dict[str, int | None] = {"left": None}
 
 
@@ -1179,7 +1185,8 @@ def candidates(command: str, world: dict, exc: TranslationError) -> list[dict]:
     """Up to :data:`MAX_CANDIDATES` readings to offer for a command refused as not understood or
     ambiguous (issue 23: ask rather than refuse), each ``{"reading", "words", "goal",
     "constraints", "order"}``: the competing readings of an ambiguous sentence, and for a word no
-    rule places, the sentence without that word and without its clause. Each is the whole
+    rule places, the sentence without that word, without its clause, without the words that open
+    its clause, and (in a command of several sentences) without the sentence. Each is the whole
     command read with that one choice and resolved against the world; readings that do not
     resolve, or repeat another's meaning, are not offered. Nothing here is acted on: a user (or
     the bench) chooses."""
@@ -1194,41 +1201,76 @@ def candidates(command: str, world: dict, exc: TranslationError) -> list[dict]:
         picks = [{k: {**p, "trimmed": True} for k, p in pick.items()} for pick in picks]
     # partial parses: in every sentence, the words no rule places (or their clauses) left out one
     # after another, the clauses that do parse kept, the words left out named
-    picks += [{"*": {"salvage": "clause"}}, {"*": {"salvage": "word"}}]
+    picks += [{"*": {"salvage": how}} for how in SALVAGE]
     out: list[dict] = []
     seen: set[str] = set()
     _CANDIDATE_BUDGET["left"] = CANDIDATE_PARSES
+    word = getattr(exc, "word", None)
+    # the readings to try, in order; the first three that resolve to different meanings are
+    # offered, so the search stops there (what it would find later is never offered)
+    tries: list[Callable[[], None]] = [
+        *(functools.partial(_candidate, command, world, pick, out, seen) for pick in picks[:-len(SALVAGE)]),
+        # a word no rule places may be a near miss of a word that has a place: the command read
+        # with it respelt, once for each near word, the repair said in the echo
+        *(functools.partial(_with_choices, repaired, world, {}, out, seen, note=f"read '{word}' as '{right}'")
+          for right in (near_words(word, _lexed(command, world)[0]) if word else [])
+          for repaired in [with_word(command, word, right)] if repaired is not None),
+        *(functools.partial(_with_choices, command, world, pick, out, seen) for pick in picks[-len(SALVAGE):]),
+    ]
     try:
-        for pick in picks:
-            _candidate(command, world, pick, out, seen)
+        for attempt in tries:
+            if len(out) >= MAX_CANDIDATES:
+                break
+            attempt()
     finally:
         _CANDIDATE_BUDGET["left"] = None
     return out[:MAX_CANDIDATES]
 
 
-def _candidate(command: str, world: dict, pick: dict, out: list[dict], seen: set[str]) -> None:
-    """The command read with one pick, resolved, added to ``out`` unless it fails or repeats a
-    meaning already offered."""
+#: the partial parses a refusal offers, in this order (:func:`_dropped`; "sentence": a sentence
+#: that does not read left out of a command of several)
+SALVAGE = ("clause", "word", "lead", "sentence")
+
+
+def _with_choices(command: str, world: dict, pick: dict, out: list[dict], seen: set[str], note: str = "") -> None:
+    """:func:`_candidate`, and where that reading stops at a sentence with competing readings (a
+    :class:`Choice`: "put 3" in all or more?), the reading once with each of them."""
+    error = _candidate(command, world, pick, out, seen, note)
+    sentence = getattr(error, "sentence", None)
+    if isinstance(error, Choice) and sentence is not None and error.key not in (pick.get(sentence) or {}):
+        for option in error.options:
+            if len(out) >= MAX_CANDIDATES:
+                return
+            _candidate(command, world, {**pick, sentence: {**(pick.get(sentence) or {}), error.key: option}},
+                       out, seen, note)
+
+
+def _candidate(command: str, world: dict, pick: dict, out: list[dict], seen: set[str],
+               note: str = "") -> PipflowError | None:
+    """The command read with one pick, resolved, added to ``out`` unless it fails (the error is
+    returned) or repeats a meaning already offered; ``note`` (a repair made to the command) is
+    said in its echo."""
     try:
         order = _parse(command, world, pick)
         got = resolve(order, world)
-    except PipflowError:
-        return
+    except PipflowError as exc:
+        return exc
     meaning = canonical(got.goal, got.constraints)
     if meaning in seen:
         return
     seen.add(meaning)
     unread = order.get("unread") or []
-    explanation = list(got.explanation) + ([f"not read: {', '.join(repr(w) for w in unread)}"] if unread else [])
+    explanation = (([note] if note else []) + list(got.explanation)
+                   + ([f"not read: {', '.join(repr(w) for w in unread)}"] if unread else []))
     out.append({"reading": "; ".join(explanation), "explanation": explanation,
                 "goal": got.goal, "constraints": got.constraints, "unread": unread,
                 "words": "; ".join(x["words"] for x in order["statements"] + order["rules"]), "order": order})
 
 
 #: words (or clauses) a partial parse may leave out of one sentence, at most: each costs a parse of
-#: the sentence, and a third one added 1 of 86 refused gold readings to the candidates for 30% more
-#: time on a refusal (benchmarks/language, 2026-12-02)
-MAX_SALVAGED = 2
+#: the sentence (a third one added 1 of 86 refused gold readings to the candidates, 2026-12-02; it
+#: is affordable since parses take a sixth of the time)
+MAX_SALVAGED = 3
 
 
 def _salvage(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict, memory: dict,
@@ -1251,13 +1293,31 @@ def _salvage(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict, m
         k = getattr(error, "unplaced", None)
         if k is None or len(unread) >= MAX_SALVAGED:
             raise error
-        drop = [k] if how == "word" else list(error.clause)  # type: ignore[attr-defined]
+        drop = _dropped(how, k, list(error.clause), lexed)  # type: ignore[attr-defined]
         unread.append(" ".join(lexed.source[j].text for j in drop if j < len(lexed.source)
                                and lexed.tokens[j].type != ",").replace(" zzposs", "'s"))
         lexed = _without(lexed, drop)
         if not lexed.tokens:
             raise error
     raise TranslationError("nothing left to read")
+
+
+def _said(lexed: Lexed) -> str:
+    """A sentence's words as the user wrote them (for an echo)."""
+    return " ".join(t.text for t in lexed.source).replace(" zzposs", "'s")
+
+
+def _dropped(how: str, k: int, clause: list[int], lexed: Lexed) -> list[int]:
+    """The terminals a partial parse leaves out for the word at ``k`` that no rule places: the
+    word ("word"), its clause ("clause"), or the word that opens its clause ("lead": what led the
+    parser astray, as "could" in "could two more X go to P"; again while the next still does not
+    read, up to :data:`MAX_SALVAGED`; the word itself when it opens its clause)."""
+    if how == "word":
+        return [k]
+    if how == "lead":
+        opening = [j for j in clause if j < k and str(lexed.tokens[j].value) not in (",", ":")]
+        return opening[:1] or [k]
+    return clause
 
 
 def _meaning_of(order: dict, world: dict) -> str | None:
@@ -1269,19 +1329,51 @@ def _meaning_of(order: dict, world: dict) -> str | None:
     return canonical(r.goal, r.constraints)
 
 
+#: the lexicon and sentences of recent commands, by the command, the world object and the names
+#: in it (what the lexicon reads of a world; counts are read live from the world): a refusal's
+#: candidate readings re-read the same command up to a dozen times (each with another pick), and
+#: tokenising it took a quarter of a refusal's time. Lexed sentences are never changed in place
+#: (a partial parse builds new ones), so one serves every reading.
+_LEXED: "OrderedDict[tuple, tuple[dict, Lexicon, RobotSelector, list[Lexed]]]" = OrderedDict()
+_LEXED_KEPT = 8
+
+
+def _names_of(world: dict) -> tuple:
+    """What the lexicon reads of a world: its names, and the robots' kinds, tags and skills."""
+    robots = world.get("robots") or {}
+    return (tuple(world.get("shelves") or ()), tuple(world.get("products") or ()),
+            tuple((str(r), repr(v.get("kind")), repr(v.get("tags")), tuple(v.get("skills") or ()))
+                  if isinstance(v, dict) else (str(r),) for r, v in robots.items()))
+
+
+def _lexed(command: str, world: dict) -> tuple[Lexicon, RobotSelector, list[Lexed]]:
+    """(lexicon, robot selector, sentences) of ``command`` in ``world``, remembered for the last
+    :data:`_LEXED_KEPT` commands (the same world object only: a changed world is a new object)."""
+    key = (command, id(world), _names_of(world))
+    hit = _LEXED.get(key)
+    if hit is not None and hit[0] is world:
+        _LEXED.move_to_end(key)
+        return hit[1], hit[2], hit[3]
+    lex = Lexicon(world, keywords())
+    selector = RobotSelector(world, lex.index)
+    sentences = lex.sentences(command)
+    _LEXED[key] = (world, lex, selector, sentences)
+    if len(_LEXED) > _LEXED_KEPT:
+        _LEXED.popitem(last=False)
+    return lex, selector, sentences
+
+
 def _parse(command: str, world: dict, picks: dict | None = None) -> dict:
     """:func:`parse` of one reading of the line breaks. ``picks``: for a sentence (its index), the
     reading a user chose among candidates: ``{"reading": k}``, ``{"scope": ...}``, or ``{"drop":
     [token indexes]}`` (words left out of it); none in an ordinary run."""
     picks = picks or {}
-    lex = Lexicon(world, keywords())
-    selector = RobotSelector(world, lex.index)
+    lex, selector, sentences = _lexed(command, world)
     statements: list[dict] = []
     rules: list[dict] = []
     memory: dict = {}
     set_aside: list[str] = []
     unread: list[str] = []  # words a candidate reading left out (salvage mode only)
-    sentences = lex.sentences(command)
     for index, lexed in enumerate(sentences):
         if not lexed.tokens:
             continue
@@ -1300,7 +1392,7 @@ def _parse(command: str, world: dict, picks: dict | None = None) -> dict:
                                    f"and go on in a new one)")
         salvage = (picks.get("*") or {}).get("salvage")
         try:
-            if salvage:
+            if salvage and salvage != "sentence":
                 reader, left_out = _salvage(lexed.trimmed or lexed, lex, selector, world, memory, pick, salvage)
                 unread += left_out
                 set_aside += list(lexed.aside) if lexed.trimmed is not None else []
@@ -1311,7 +1403,14 @@ def _parse(command: str, world: dict, picks: dict | None = None) -> dict:
             # (asides.py): they are set aside and said aloud, the rest still needs every word
             error = _fail(exc, lexed, lex) if isinstance(exc, UnexpectedInput) else exc
             error.sentence = index  # type: ignore[attr-defined]  # for the candidates (parse)
+            if salvage and salvage != "sentence":
+                raise error from None  # the partial parse read the sentence without its talk already
             if lexed.trimmed is None:
+                if salvage == "sentence" and len(sentences) > 1 and not isinstance(error, Choice):
+                    # a candidate reading without this sentence (one that reads, with competing
+                    # meanings, is offered with each of them instead: never dropped)
+                    unread.append(_said(lexed))
+                    continue
                 raise error from None
             try:
                 reader = _one_meaning(lexed.trimmed, lex, selector, world, memory, pick)
@@ -1320,6 +1419,9 @@ def _parse(command: str, world: dict, picks: dict | None = None) -> dict:
                 error = _fail(again, lexed.trimmed, lex) if isinstance(again, UnexpectedInput) else again
                 error.sentence, error.trimmed = index, True  # type: ignore[attr-defined]
                 error.args = (f"{error.args[0]} (set aside: {'; '.join(repr(a) for a in lexed.aside)})",)
+                if salvage == "sentence" and len(sentences) > 1 and not isinstance(error, Choice):
+                    unread.append(_said(lexed))
+                    continue
                 raise error from None
             set_aside += list(lexed.aside)
         for k, new in reader.updates.items():

@@ -11,7 +11,7 @@ from lark import Token, Tree
 from pipflow.errors import Refusal, TranslationError
 from pipflow.language.spelling import normalize, split_digits
 from pipflow.warehouse.language.lexicon import SUPERLATIVES
-from pipflow.warehouse.language.names import NameIndex
+from pipflow.warehouse.language.names import NameIndex, stem_groups
 
 SUPER_WORDS = set(SUPERLATIVES)
 #: words that make a kind or tag said in the singular mean any or all robots of it
@@ -96,8 +96,7 @@ class RobotSelector:
         kinds = {str(_robot_of(robots, r).get("kind", "")).lower() for r in robots}
         if value.lower() in kinds:
             return {"kind": value}
-        members = [r for r in robots if split_digits(normalize(r))[0] == normalize(value)
-                   and split_digits(normalize(r))[1]]
+        members = stem_groups([str(r) for r in robots]).get(normalize(value), [])
         if not members:
             raise TranslationError(f"'{value}': no robot kind, tag or name stem of this world")
         return {"names": members}
@@ -115,7 +114,7 @@ class RobotSelector:
             return  # plural: "forklifts", "night robots"
         matched = select(sel, self.world, words)
         if len(matched) > 1:
-            what = _what(sel) if "names" not in sel else f"named {value} with a number"
+            what = _what(sel) if "names" not in sel else f"named {value} and a number or label"
             raise TranslationError(f"'{words}': {len(matched)} robots are {what} ({', '.join(matched)}); "
                                    f"cannot tell which one is meant (name it, or say all of them)")
 

@@ -1,0 +1,50 @@
+"""Near-miss words for a refused command's candidate readings: what a word no rule places may
+have been meant as ("fiev" -> five, "sackle" -> shackle, "formla" -> formula).
+
+Why apart from the lexicon's own repair: the lexicon repairs a word only when exactly one
+repair is near (two that compete leave the word unknown and the command refused), because what
+it repairs is acted on. A candidate reading is only offered, and says which word it read as
+which, so here every near word is a reading to offer: the user chooses, or the run refuses.
+"""
+from __future__ import annotations
+
+import re
+
+from pipflow.language.numbers import NUMBER_WORDS
+from pipflow.language.spelling import distance
+from pipflow.warehouse.language.lexicon import Lexicon
+
+#: repairs offered for one word, at most (each costs a reading of the command)
+MAX_REPAIRS = 3
+
+
+def near_words(word: str, lex: Lexicon) -> list[str]:
+    """Grammar words, number words and words of the world's names within one edit of ``word``
+    (a swap of neighbours is one edit), or two for words of five letters or more that keep
+    their first letter; nearest first. None for a word of fewer than three letters, a number or
+    a name of several words."""
+    low = word.lower()
+    if len(low) < 3 or not low.isalpha():
+        return []
+    vocabulary = ({k for k in lex.keywords if k.isalpha() and len(k) >= 2} | set(NUMBER_WORDS)
+                  | {w for w in lex._name_words if w.isalpha()})
+    near = []
+    letters = set(low)
+    for w in vocabulary:
+        # each edit adds or removes at most two letters from the set of letters: a cheap test
+        # first, the edit distance only for words that pass it
+        if w == low or abs(len(w) - len(low)) > 2 or len(letters ^ set(w)) > 4:
+            continue
+        d = distance(low, w)
+        if d == 1 or (d == 2 and len(low) >= 5 and w[0] == low[0]):
+            near.append((d, w))
+    return [w for _, w in sorted(near)][:MAX_REPAIRS]
+
+
+def with_word(command: str, wrong: str, right: str) -> str | None:
+    """``command`` with the word ``wrong`` (as a whole word, any case) written ``right``; None
+    when the command does not contain it as written (it was respelt before it was read)."""
+    pattern = re.compile(rf"(?<![\w-]){re.escape(wrong)}(?![\w-])", re.IGNORECASE)
+    if not pattern.search(command):
+        return None
+    return pattern.sub(right, command)

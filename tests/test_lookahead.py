@@ -1,0 +1,97 @@
+"""The lookahead predictor (pipflow.language.lookahead) changes the work, never the parse: the
+same forest (every reading) and the same error (token and position) as lark's own Earley parser,
+on a small grammar exhaustively and on the warehouse command sets' sentences."""
+from __future__ import annotations
+
+import itertools
+from pathlib import Path
+
+import pytest
+from lark import Lark, Token
+from lark.exceptions import UnexpectedInput
+
+from pipflow.language.earley import ListLexer
+from pipflow.language.lookahead import LookaheadEarley, with_lookahead
+from pipflow.warehouse.language.grammar import GRAMMAR, nullable_optionals
+from pipflow.warehouse.language.lexicon import Lexicon
+from pipflow.warehouse.language.parser import _all_readings_parser, keywords
+from pipflow.warehouse.world import load_tasks
+
+ROOT = Path(__file__).resolve().parent.parent
+
+#: ambiguous (two ways to attach "c"), with empty rules at the start, middle and end, and a rule
+#: whose first symbol is nullable: the cases where a filter on the next terminal could go wrong
+SMALL = r"""
+start: s
+s: pre x post | s C | x x
+x: A | A y | y B | x C x
+y: B? C? | A
+pre: | D
+post: | D | D D
+%declare A B C D
+"""
+
+
+def _parser(grammar: str) -> Lark:
+    return Lark(grammar, parser="earley", lexer=ListLexer, keep_all_tokens=True, ambiguity="explicit")
+
+
+def _outcome(parser: Lark, types: tuple[str, ...]) -> str:
+    tokens = [Token(t, t.lower(), start_pos=k) for k, t in enumerate(types)]
+    try:
+        return str(parser.parse(tokens))
+    except UnexpectedInput as exc:
+        token = getattr(exc, "token", None)
+        return f"{type(exc).__name__} at {getattr(token, 'start_pos', None)}"
+
+
+def test_every_short_input_parses_the_same_with_lookahead():
+    plain, ahead = _parser(SMALL), with_lookahead(_parser(SMALL))
+    assert isinstance(ahead.parser.parser, LookaheadEarley)
+    parsed = 0
+    for n in range(0, 6):
+        for types in itertools.product("ABCD", repeat=n):
+            want = _outcome(plain, types)
+            assert _outcome(ahead, types) == want, types
+            parsed += not want.startswith("Unexpected")
+    assert parsed > 100  # the grammar accepts many of them (ambiguously): the comparison is not vacuous
+
+
+def test_with_lookahead_is_idempotent_and_filters_only_during_a_parse():
+    parser = with_lookahead(_parser(SMALL))
+    assert with_lookahead(parser) is parser
+    inner = parser.parser.parser
+    # outside a parse the predictor's table is lark's own, every rule of each closure
+    plain = _parser(SMALL).parser.parser
+    for symbol, rules in plain.predictions.items():
+        assert [str(r) for r in inner.predictions[symbol]] == [str(r) for r in rules]
+    assert _outcome(parser, ("A", "C", "A")) == _outcome(_parser(SMALL), ("A", "C", "A"))
+
+
+@pytest.mark.parametrize("name", ["warehouse-foodbank.yaml", "warehouse-props.yaml", "warehouse-racks.yaml"])
+def test_command_sentences_parse_the_same_with_lookahead(name):
+    plain = _parser(nullable_optionals(GRAMMAR))
+    ahead = _all_readings_parser()
+    assert isinstance(ahead.parser.parser, LookaheadEarley)
+    loaded = load_tasks(ROOT / "benchmarks" / "language" / name)
+    lex = Lexicon(loaded["world"], keywords())
+    compared = 0
+    for task in loaded["tasks"][::3]:
+        try:
+            sentences = lex.sentences(str(task["command"]))
+        except Exception:  # noqa: BLE001 - refused by the lexicon: nothing reaches the parser
+            continue
+        for lexed in sentences:
+            if not lexed.tokens:
+                continue
+            types = [(t.type, t.value) for t in lexed.tokens]
+            outcomes = []
+            for parser in (plain, ahead):
+                tokens = [Token(t, v, start_pos=k) for k, (t, v) in enumerate(types)]
+                try:
+                    outcomes.append(str(parser.parse(tokens)))
+                except UnexpectedInput as exc:
+                    outcomes.append(f"{type(exc).__name__} at {getattr(getattr(exc, 'token', None), 'start_pos', None)}")
+            assert outcomes[0] == outcomes[1], types
+            compared += 1
+    assert compared >= 10
