@@ -86,9 +86,10 @@ class LookaheadEarley(earley.Parser):
         finally:
             state.types, state.i = outer
 
-    def predict_and_complete(self, i, to_scan, columns, transitives, node_cache):  # type: ignore[no-untyped-def]
+    def predict_and_complete(self, i, *rest):  # type: ignore[no-untyped-def]
+        # lark 1.3 passes a node cache that 1.2 does not: whatever follows the position goes on as given
         self._lookahead.i = i
-        return super().predict_and_complete(i, to_scan, columns, transitives, node_cache)
+        return super().predict_and_complete(i, *rest)
 
 
 def with_lookahead(parser: Lark) -> Lark:
