@@ -25,23 +25,23 @@ start: _sep* item (_sep+ item | _sep* thengap)* _sep*
 _sep: COMMA | END | @AND | @THEN | @BUT
 
 ?item: change | toggle | put | gap | away | trash | chill | request | unwant | ensure | observe | cue | meal | after | reason
-      | tend | notvia | usevia
+      | tend | notvia | usevia | keep | empty | desire | handling
 
-change: _vstate @UP? things @PIECES? via? exception? @HERE?
+change: _vstate @UP? things @PIECES? via? exception? _here?
       | _vstate things @UP via? exception?
       | @V_CLEAN things via? exception?
       | @V_GIVE things @ACT
 _vstate: @V_STATE | @V_OPEN | @V_SHUT | @V_WARM
 via: (@IN | @ON | @WITH | @AT) (place | placeref)
 
-toggle: @V_TOGGLE onoff tthings @HERE?
-      | @V_TOGGLE tthings onoff @HERE?
+toggle: @V_TOGGLE onoff tthings _here?
+      | @V_TOGGLE tthings onoff _here?
       | @V_SHUT off tthings
       | @V_SHUT tthings off
       | @V_TOGGLE typo_off tthings
       | @V_SHUTDOWN tthings
       | _vput tthings on
-      | @V_LIGHT tthings @HERE?
+      | @V_LIGHT tthings _here?
 typo_off: @OF
 tthings: tnp ((COMMA | @AND | COMMA @AND) tnp)*
 tnp: sel (@SWITCHPART | @V_TOGGLE)? where? exception?
@@ -50,23 +50,28 @@ on: @ON
 off: @OFF | @OUT
 
 put: _vput @UP? things source? target? exception?
+   | _vput @UP? things _particle target source?
+   | _vput @UP? things _particle source target?
+   | @SUBJ? (@WANT | @NEED) things target
    | _vput @UP? things target source
    | _vput @OUT things | _vput things @OUT
    | _vput @UP? things source @AND target
    | _vput @UP? things @AWAY? target (@AND | COMMA @AND) things
    | _vput things @AWAY target
    | sthings @SHOULD? (@GOES | @BE) target
+   | @SHOULD sthings (@GOES | @BE) target
    | _vput @AWAY things target
    | @V_LEAVE things target
 _vput: @V_PUT | @V_THROW
+_particle: @OUT | @DOWN | @IN | @UP
 source: @FROM place | @OUT @OF? place | @OFF @OF? place
-target: _prep place | @SOMEWHERE? bare | _prep placeref
+target: _prep place | @SOMEWHERE? bare | _prep placeref | _prep @THEWASH
 placeref: @IT
 _prep: @IN | @ON | @TO | @AT | @BACK @IN | @BACK @ON | @BACK @TO
 place: @THE? noun
 bare: noun
 
-gap: things target
+gap: things _particle? target
    | things onoff
    | things @TOO
 thengap: @THEN things -> gap
@@ -92,26 +97,33 @@ not: @NOT
 state: @ADJ | @V_OPEN | @V_SHUT | @V_CLEAN | @V_WARM | @V_STATE | on | off | @TOGGLED onoff | @V_TOGGLE onoff
 
 after: @ONCE @SUBJ @HAVE? state things
-reason: @IT @IS (@INTENS | @TOO)* @REASON | @SUBJ @IS @REASON
-meal: (@V_MAKE | @V_PREPARE | _vstate) @THE? @MEAL @HERE?
-    | (@V_MAKE | @V_PREPARE) @THE? @V_STATE @HERE?
+reason: @IT @IS (@INTENS | @TOO)* @REASON | @SUBJ @IS @REASON | @REASON
+meal: (@V_MAKE | @V_PREPARE | _vstate) @THE? @MEAL _here?
+    | (@V_MAKE | @V_PREPARE) @THE? @V_STATE _here?
     | @SUBJ? (@WANT | @NEED) @THE? @MEAL
 
 observe: sthings @IS state
+       | sthings @FOULS
 
 cue: @NOBODY @IS? activity (@TO | @ON | @AT)? things? @ANYMORE?
+   | @NOBODY @IS? (@INROOM | _here) @ANYMORE?
    | @SUBJ? @DONOT @NEED things (on | @ANYMORE)?
    | @NOBODY @NEED things @ANYMORE?
    | @SUBJ? @IS? @DONE things @ANYMORE?
    | @SUBJ @HAVE? @FINISHED activity things?
    | sthings @IS @NOT @NEEDED @ANYMORE?
-   | @IT @IS (@INTENS | @TOO)* tempcue @HERE? (@WITH @THAT? things (@GOING | on))?
-   | @IT @IS (@INTENS | @TOO)* tempadj @HERE (@WITH @THAT? things (@GOING | on))?
-   | @SUBJ @IS (@INTENS | @TOO)* (tempcue | tempadj) @HERE?
-   | @IT @IS (@INTENS | @TOO)* lightcue @HERE?
-   | @SUBJ @CANNOT @SEE @HERE?
+   | @IT @IS (@INTENS | @TOO)* tempcue _here? (@WITH @THAT? things (@GOING | on))?
+   | @IT @IS (@INTENS | @TOO)* tempadj _here (@WITH @THAT? things (@GOING | on))?
+   | @SUBJ @IS (@INTENS | @TOO)* (tempcue | tempadj) _here?
+   | @IT @IS (@INTENS | @TOO)* lightcue _here?
+   | @SUBJ @CANNOT @SEE things? _here?
+   | @IT @IS (@INTENS | @TOO)* soundcue _here?
+   | _vput @THE? @MUSIC on | @V_TOGGLE on @THE? @MUSIC | @V_PLAY @THE? @MUSIC | @SUBJ? @WANT @THE? @MUSIC
+   | @SUBJ? @WANT @THE? @HOTDRINK @ANYMORE? | (@V_MAKE | @V_PREPARE) @THE? @HOTDRINK
 activity: @ACTIVITY
 lightcue: @LIGHTCUE
+soundcue: @SOUNDCUE
+_here: @HERE | @ALLOVER
 tempcue: @TEMPCUE
 tempadj: @ADJ
 
@@ -119,7 +131,13 @@ notvia: @NOT via
 usevia: @V_USE @THE? place
 
 tend: @V_TEND @OUT? things | @V_TEND things @OUT
-    | sthings @IS? @MESS
+    | sthings @IS? (@MESS | @ALLOVER) -> mess
+    | @LEFT things (@OUT | @ALLOVER) -> mess
+
+keep: @V_LEAVE things @STAY
+handling: sthings @IS (@INTENS | @TOO)* @HANDLING @FORONE?
+empty: @V_EMPTY @OUT? place target?
+desire: @SUBJ? @WANT @THE? count? adj+ noun
 
 things: np ((COMMA | @AND | COMMA @AND) np)*
       | @BOTH np @AND np

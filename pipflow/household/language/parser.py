@@ -31,9 +31,10 @@ from lark.visitors import CollapseAmbiguities
 from pipflow.errors import TranslationError
 from pipflow.household.language.grammar import NOUN_DUAL, grammar_text
 from pipflow.household.world import members
-from pipflow.household.language.lexicon import (ACTIVITIES, COLD, FILLER, FILLER_TYPO_TARGETS, LIGHT_CATEGORY_WORD, MANNER_OBJECTS,
+from pipflow.household.language.lexicon import (ACTIVITIES, COLD, FILLER, FOUL_WORDS, LAUNDRY, FILLER_TYPO_TARGETS, LIGHT_CATEGORY_WORD, MANNER_OBJECTS,
                                                 MANNERS, MARKS, MEALS, MEASURES, OPPOSITE, ORDER_WORDS, ORDINAL_DETERMINERS,
-                                                PHRASES, PURPOSES, TEMPERATURE_ADJECTIVES, UNIT_DETERMINERS, plurals, words_of)
+                                                PHRASES, PURPOSES, TEMPERATURE_ADJECTIVES, TIME_WORDS, UNIT_DETERMINERS, plurals,
+                                                words_of)
 from pipflow.language.asides import EXCLUSIVITY, FUNCTION_WORDS, NEGATION, clauses, content_free, said
 from pipflow.language.characters import refuse_unread
 from pipflow.language.numbers import read_number
@@ -175,12 +176,26 @@ def known_word(w: str, index: dict, vocab: set[str]) -> bool:
         any(w in key for key in index) or any(w in key for key in FILLER) or bool(read_number([w], 0))
 
 
+#: endings of English inflection: a shared one says nothing of whether two words are one word
+#: misspelt ("trying" and "tidying" share "ing"; what is left, "try" and "tidy", is two edits apart)
+INFLECTIONS = ("ing", "ed", "es", "s")
+
+
+def _stem(known: str, word: str) -> str:
+    """``known`` without an inflectional ending it shares with ``word``: the length that earns a
+    second edit is the stem's, so "starving" is not read as "stacking", nor "trying" as "tidying"."""
+    for end in INFLECTIONS:
+        if known.endswith(end) and word.endswith(end) and len(known) > len(end) + 2:
+            return known[:-len(end)]
+    return known
+
+
 def _typo_of(word: str, vocab: set[str]) -> list[str]:
     """Known words ``word`` may be a misspelling of, closest first: the same first letter and one
     edit (two for words of 7 letters or more; a swap of neighbours is one). "toaster" is not
     "toast", "ones" is not "phones": a guess that names another thing would be a misreading."""
     near = [(distance(word, v), v) for v in vocab if v[0] == word[0] and abs(len(v) - len(word)) <= 2]
-    near = [(d, v) for d, v in near if d <= (1 if len(v) <= 6 else 2)]
+    near = [(d, v) for d, v in near if d <= (1 if len(_stem(v, word)) <= 6 else 2)]
     best = min((d for d, _ in near), default=None)
     return [v for d, v in sorted(near) if d == best]
 
@@ -218,10 +233,16 @@ def _without_manner(words: list[str], notes: list[str]) -> list[str]:
                 out.append(w)   # a sentence's end stays; a comma goes with the clause
             start = k + 1
             continue
+        clause = _without_inner_manner(clause, notes)
+        while len(clause) > 2 and clause[-1] in CLOSING_ORDER_WORDS and clause[-2] not in ("for", "until", "till"):
+            # "bring them to the desk after" ("for later" is a purpose: _without_purpose)
+            notes.append(f"'{clause[-1]}': the order of the steps; the plan decides it")
+            clause = clause[:-1]
         kept = []
         for j, x in enumerate(clause):   # "wash the mug first", "first the mug, then the plate"
             if x in ORDER_WORDS and not (j and clause[j - 1] in ORDINAL_DETERMINERS) and \
-                    not (j + 1 < len(clause) and clause[j + 1] == "of"):
+                    not (j + 1 < len(clause) and clause[j + 1] == "of") and \
+                    not (j + 1 < len(clause) and (x, clause[j + 1]) in TIME_WORDS):
                 notes.append(f"'{x}': the order of the steps; the plan decides it")
                 continue
             kept.append(x)
@@ -230,6 +251,28 @@ def _without_manner(words: list[str], notes: list[str]) -> list[str]:
         start = k + 1
     while out and out[-1] == ",":
         out.pop()
+    return out
+
+
+#: words after which a manner phrase closes what it says ("lift it in together and wash it")
+_MANNER_ENDS = {"and", "then"}
+
+
+def _without_inner_manner(clause: list[str], notes: list[str]) -> list[str]:
+    """A clause that asks something, without a manner phrase (lexicon ``MANNERS``) closing it or
+    one of its parts joined by "and" / "then" ("lift it into the sink together and wash it"):
+    how, not what the home should end like."""
+    out: list[str] = []
+    j = 0
+    while j < len(clause):
+        m = next((m for m in sorted(MANNERS, key=len, reverse=True) if tuple(clause[j:j + len(m)]) == m), None)
+        end = j + len(m) if m else j
+        if m and out and (end == len(clause) or clause[end] in _MANNER_ENDS) and out[-1] not in _MANNER_ENDS:
+            notes.append(f"'{' '.join(m)}' says how the steps run, not what the home should end like")
+            j = end
+            continue
+        out.append(clause[j])
+        j += 1
     return out
 
 
@@ -290,6 +333,16 @@ def _located(tags: list["Tag"], world: dict, notes: list[str]) -> list["Tag"]:
     return out
 
 
+#: lexicon classes of phrases that name the home or a room of it ("in the kitchen", "all over the
+#: flat"): a world name inside one is read as the name
+HOME_CLASSES = {"HERE", "ALLOVER", "INROOM", "THEWASH"}
+
+
+#: words that put a step after the others, closing a clause ("... and bring them to the desk
+#: after", "put it back afterwards"): the order of the steps, which the plan decides
+CLOSING_ORDER_WORDS = {"after", "afterwards", "afterward", "later", "next"}
+
+
 #: the tags a sentence that only restates the order of things has: "first the mug, then the plate"
 _ORDER_ONLY = {"THE", "NOUN", "COMMA", "AND", "THEN"}
 
@@ -316,11 +369,50 @@ def _restated_order(tags: list[Tag], notes: list[str]) -> list[Tag]:
     return out
 
 
+def _demonstratives(tags: list[Tag]) -> list[Tag]:
+    """ "That leftover curry has gone off": "that" opening a clause before a name (or a state word
+    and a name) is a determiner, like "the"; elsewhere it stays a relative ("the lamp that is on")
+    or a conjunction ("make sure that ..."). Done here, not in the grammar: one more determiner
+    there is one more alternative at every noun of every command."""
+    out = list(tags)
+    for k, t in enumerate(out):
+        if t.cls != "THAT" or (k and out[k - 1].cls not in ("END", "COMMA")):
+            continue
+        j = k + 1
+        while j < len(out) and out[j].cls in ("ADJ", "V_WARM", "V_CLEAN"):
+            j += 1
+        if j < len(out) and (out[j].cls == "NOUN" or out[j].cls.endswith(NOUN_DUAL)):
+            out[k] = Tag("THE", t.value, t.words)
+    return out
+
+
+#: words that put what follows them in their sentence under a negation ("nobody is using X or Y")
+_NEGATORS = {"nobody", "noone", "not", "never", "none"}
+
+
+def _or_under_negation(words: list[str], notes: list[str]) -> list[str]:
+    """ "nobody is using the tablet or the radio": under a negation, "or" lists both (neither is
+    used), so it is read as "and". Elsewhere "or" is a choice, which this reader does not make
+    (it stays unread, and is refused)."""
+    out: list[str] = []
+    negated = False
+    for k, w in enumerate(words):
+        if w in (".", "!", "?", ";"):
+            negated = False
+        elif w in _NEGATORS or (w == "no" and k + 1 < len(words) and words[k + 1] == "one"):
+            negated = True
+        elif w in ("or", "nor") and negated:
+            notes.append(f"'{w}' after a negation lists both: read as 'and'")
+            w = "and"
+        out.append(w)
+    return out
+
+
 def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
     """The command as grammar tokens (module docstring, step 1)."""
     notes = notes if notes is not None else []
     index = world_phrases(world)
-    words = _measures(_without_manner(words_of(command), notes), index, notes)
+    words = _or_under_negation(_measures(_without_manner(words_of(command), notes), index, notes), notes)
     vocab = _vocabulary(index)
     # typos: a word known nowhere, close to exactly one known word, is read as that word
     for k, w in enumerate(words):
@@ -349,6 +441,9 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
         num = read_number([x if x not in PUNCT and x.isalnum() else None for x in words], i)
         nw, nl, nf = _match(words, i, index, longest_w), _match(words, i, PHRASES, longest_l), \
             _match(words, i, FILLER, longest_f)
+        if nl > 1 and PHRASES[tuple(words[i:i + nl])][0] in HOME_CLASSES and \
+                any(_match(words, j, index, longest_w) for j in range(i + 1, i + nl)):
+            nl = 1 if (w,) in PHRASES else 0   # "in the kitchen" where the home has a thing named kitchen
         if num is not None and num[1] - i >= max(nw, nl, nf):
             out.append(Tag("NUM", num[0], " ".join(words[i:num[1]])))
             i = num[1]
@@ -371,7 +466,7 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
             cls, value = PHRASES[tuple(words[i:i + n])]
             out.append(Tag(cls, value, text))
         i += n
-    out = _restated_order(_located(out, world, notes), notes)
+    out = _restated_order(_located(_demonstratives(out), world, notes), notes)
     if unknown:
         names = sorted(set(world.get("objects") or {}) | set(world.get("places") or {}))
         error = TranslationError(
@@ -714,6 +809,8 @@ class Builder:
 
     def target(self, node: Tree) -> dict:
         p = self._sub(node, "place") or self._sub(node, "bare")
+        if p is None and self._has(node, "THEWASH"):   # "put the clothes in the wash"
+            return {"words": _words(self.tags, node), "quality": LAUNDRY}
         if p is None:   # "put the apple in it": the place said before
             return {"words": _words(self.tags, node), "pronoun": True}
         out = {**self.noun(self._sub(p, "noun")), "words": _words(self.tags, node)}
@@ -739,6 +836,10 @@ class Builder:
                 st["via"] = self.place(self._sub(via, "place"))
             elif via is not None:   # "heat the pan on it"
                 st["via"] = {"words": _words(self.tags, via), "pronoun": True}
+            elif act is None and [r for r in self.tag_of(verb).nouns if r["kind"] == "place"]:
+                # "microwave the noodles": a verb that is a place of the home says where it happens
+                st["via"] = {"words": self.tag_of(verb).words,
+                             "readings": [dict(r) for r in self.tag_of(verb).nouns if r["kind"] == "place"]}
         elif kind == "toggle" and self._has(node, "V_LIGHT"):   # "light the stove"
             st = {"op": "change", "things": things, "to": "on"}
         elif kind == "toggle":
@@ -787,11 +888,33 @@ class Builder:
                                        f"(its foods end {MEALS[meal]['state']}); say what to do with which things")
             st = {"op": "meal", "meal": meal}
         elif kind == "observe":
-            st = {"op": "observe", "things": things, "is": self.state(self._sub(node, "state"))}
+            state = self._sub(node, "state")
+            st = {"op": "observe", "things": things, "is": self.state(state) if state is not None else "dirty"}
+            said = _words(self.tags, state).split()[-1] if state is not None else ""
+            if state is None or said in FOUL_WORDS:   # "the pizza box is starting to smell", "the mug is minging"
+                st["foul"] = True
         elif kind == "cue":
             st = self.cue(node, things)
-        elif kind == "tend":   # "deal with the dishes", "the bedding is all over the place"
+        elif kind == "tend":   # "deal with the dishes"
             st = {"op": "tend", "things": things}
+        elif kind == "mess":   # "the bedding is all over the place": said, so a later clause may answer it
+            st = {"op": "tend", "things": things, "said": True}
+        elif kind == "handling":   # "the wok is too heavy for one of you": how, for a later clause
+            st = {"op": "handling", "things": things}
+        elif kind == "keep":   # "leave the hoodie where it is"
+            st = {"op": "keep", "things": things}
+        elif kind == "empty":   # "empty the fridge onto the counter": everything in it
+            place = self.place(self._sub(node, "place"))
+            st = {"op": "put", "things": [{"words": f"everything in {place['words']}", "everything": True,
+                                           "from": place}]}
+            if self._sub(node, "target") is not None:
+                st["to"] = self.target(self._sub(node, "target"))
+        elif kind == "desire":   # "I fancy a warm bagel": the thing in the state its adjective names
+            noun = self._sub(node, "noun")
+            adjs = [str(self.tag_of(self._tokens(a)[0]).value) for a in self._subs(node, "adj")]
+            det = [self.tag_of(t).words for t in self._tokens(node) if self._cls(t) == "THE"]
+            sel = {"words": _words(self.tags, noun), "noun": self.noun(noun), **({"det": det[0]} if det else {})}
+            st = {"op": "change", "things": [sel], "to": adjs[-1]}
         else:  # a rule of the grammar without a statement: a bug, not a user error
             raise AssertionError(f"no statement for grammar rule {kind!r}")
         if exc is not None:   # "put all the fruit in the fridge but not the watermelon"
@@ -808,7 +931,7 @@ class Builder:
             to = TEMPERATURE_ADJECTIVES.get(str(t.value)) if warmth.data == "tempadj" else str(t.value)
             if to is None:   # "it is dirty in here": no temperature, no cue
                 raise TranslationError(f"'{t.words}' says nothing of how warm it is")
-            st.update(to=to, cue=f"it is {t.words}", heating=True)
+            st.update(to=to, cue=f"it is {t.words}", heating=True, device="heating")
         elif act is not None:
             word = self.tag_of(self._tokens(act)[0]).words
             st.update(to="off", cue=f"nobody is {word}")
@@ -817,8 +940,15 @@ class Builder:
         elif light is not None:
             t = self.tag_of(self._tokens(light)[0])
             st.update(to=str(t.value), cue=f"it is {t.words}", default=LIGHT_CATEGORY_WORD)
-        elif self._has(node, "SEE"):
-            st.update(to="on", cue="cannot see", default=LIGHT_CATEGORY_WORD)
+        elif self._has(node, "SEE"):   # "I can't read my notes": what cannot be read is the reason
+            st.update(things=[], to="on", cue="cannot see", default=LIGHT_CATEGORY_WORD)
+        elif self._sub(node, "soundcue") is not None:   # "it's too quiet in here"
+            t = self.tag_of(self._tokens(self._sub(node, "soundcue"))[0])
+            st.update(to=str(t.value), cue=f"it is {t.words}", device="sound")
+        elif self._has(node, "MUSIC"):   # "put some music on"
+            st.update(to="on", cue="music wanted", device="sound")
+        elif self._has(node, "HOTDRINK"):   # "could murder a cuppa"
+            st.update(to="on", cue="a hot drink wanted", device="hot drink")
         else:
             st.update(to="off", cue="not needed")
         return st
