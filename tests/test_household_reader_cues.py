@@ -34,12 +34,15 @@ places:
   settle:    {x: 2.5, y: 2.0, width: 1.2, depth: 0.8, access: [3.1, 1.5], properties: [receptacle]}
   candle:    {x: 4.0, y: 2.2, width: 0.2, depth: 0.2, access: [4.3, 1.5], properties: [toggleable], state: {on: false}, categories: [lamps]}
   gramophone: {x: 5.3, y: 2.2, width: 0.5, depth: 0.5, access: [5.0, 1.5], properties: [toggleable], state: {on: false}}
+  tall_cupboard: {x: 6.0, y: 4.2, width: 0.5, depth: 0.5, access: [6.0, 3.6], properties: [receptacle, openable], state: {open: false}}
+  low_cupboard:  {x: 6.0, y: 0.2, width: 0.5, depth: 0.5, access: [6.0, 1.0], properties: [receptacle, openable], state: {open: false}}
   pail:      {x: 5.2, y: 4.2, width: 0.4, depth: 0.4, access: [5.0, 3.6], properties: [garbage], words: [bin]}
 objects:
   tankard:   {in: settle, mass: 1, properties: [pickupable, washable], state: {dirty: true}, categories: [crocks]}
   beaker:    {in: dresser, mass: 1, properties: [pickupable, washable], categories: [crocks]}
   kipper:    {in: larder, mass: 1, properties: [pickupable, heatable], categories: [grub]}
   bap:       {in: larder, mass: 1, properties: [pickupable, heatable, sliceable], categories: [grub]}
+  leftover_stew: {in: settle, mass: 1, properties: [pickupable, heatable], categories: [grub]}
   carton:    {in: settle, mass: 1, properties: [pickupable], categories: [rubbish]}
   shirt:     {in: settle, mass: 1, properties: [pickupable], categories: [togs]}
   sock:      {in: bench, mass: 1, properties: [pickupable], categories: [togs]}
@@ -166,3 +169,26 @@ def test_robustness_of_words_and_marks(croft):
     assert goal("put the bap + the kipper on the bench", croft) == ({"bench": ["bap", "kipper"]}, {"larder": ["closed"]})
     assert goal("Bin the carton \u2014 it's seen better days \u2014 and switch on the candle.", croft) == \
         ({"pail": ["carton"]}, {"candle": ["on"]})
+
+
+def test_a_refusal_offers_the_readings_near_it(croft):
+    """Candidate readings (offered only, never acted on unchosen), each from a general source."""
+    # a word that is the last word of several names: each of them
+    offered = refused_with("Put the shirt in the cupboard.", croft)
+    assert ({"tall_cupboard": ["shirt"]}, {"tall_cupboard": ["closed"]}) in offered
+    assert ({"low_cupboard": ["shirt"]}, {"low_cupboard": ["closed"]}) in offered
+    # a modifier said alone, in the plural
+    assert ({}, {"leftover_stew": ["hot"]}) in refused_with("Heat up the leftovers.", croft)
+    # every word not understood left out at once
+    assert ({}, {"bap": ["sliced"], "larder": ["closed"]}) in refused_with("Slice the bap real quick.", croft)
+    # a known word where the reading stopped, left out
+    assert ({"pail": ["carton"]}, {}) in refused_with("That empty carton on the settle stinks.", croft)
+    # how long, left out ("leave the larder open for five minutes" ends closed: never read so)
+    assert ({}, {"kipper": ["hot"], "larder": ["closed"]}) in refused_with("Heat the kipper for two minutes.", croft)
+    # what a thing left on may need: switched off
+    assert ({}, {"lantern": ["off"]}) in refused_with("The lantern's still on, can you sort that?", croft)
+
+
+def test_thrown_alone_is_away_and_kept_going_is_on(croft):
+    assert goal("Could you chuck the carton?", croft) == ({"pail": ["carton"]}, {})
+    assert goal("Turn the lantern off but keep the wireless going.", croft) == ({}, {"lantern": ["off"], "wireless": ["on"]})

@@ -94,7 +94,7 @@ unwant: @DONOT @V_LEAVE things state
 ensure: @V_MAKE @SURE @THAT? wish ((COMMA | @AND | COMMA @AND) wish)*
 wish: sthings (@IS | @SHOULD @BE) not? state
 not: @NOT
-state: @ADJ | @V_OPEN | @V_SHUT | @V_CLEAN | @V_WARM | @V_STATE | on | off | @TOGGLED onoff | @V_TOGGLE onoff
+state: @ADJ | @V_OPEN | @V_SHUT | @V_CLEAN | @V_WARM | @V_STATE | on | off | @TOGGLED onoff | @V_TOGGLE onoff | @GOING
 
 after: @ONCE @SUBJ @HAVE? state things
 reason: @IT @IS (@INTENS | @TOO)* @REASON | @SUBJ @IS @REASON | @REASON

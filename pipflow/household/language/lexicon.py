@@ -250,7 +250,7 @@ _add("NOBODY", "nobody,no one,noone,none of us")
 _add("INTENS", "very,so,really,quite,rather,extremely,pretty,a bit,a little,way too,much too,far too,getting")
 _add("TOO", "too,as well")
 #: "it's freezing with that fan going": a thing said to be running
-_add("GOING", "going,running,blasting,blaring,whirring,humming")
+_add("GOING", "going,running,blasting,blaring,whirring,humming", "on")
 _add("CANNOT", "can not,could not,cannot")
 _add("SOMEWHERE", "somewhere,some place,someplace")
 #: words for the home itself or a room of it, which no world lists as a place: "in here", "all
@@ -359,6 +359,10 @@ ORDER_OPENERS = {"first", "firstly", "start", "to", "with"}
 ORDER_WORDS = {"first", "firstly", "last", "lastly", "second", "secondly"}
 #: determiners after which "first" is an ordinal ("the first mug")
 ORDINAL_DETERMINERS = {"the", "a", "an", "my", "your", "our", "this", "that", "its", "their", "his", "her"}
+#: how long an action takes ("heat the curry for two minutes"): how, not what the home ends like;
+#: "for" + (about / like / around / a few / a couple of)? + a number + one of these is dropped
+DURATION_UNITS = {"second", "seconds", "sec", "secs", "minute", "minutes", "min", "mins", "hour", "hours", "hr", "hrs"}
+DURATION_HEDGES = {"like", "about", "around", "roughly", "maybe", "a", "few", "couple", "of", "an", "another"}
 #: containers people name an amount by ("a bowl of cherries", "a bag of flour"): no thing of the
 #: home model holds another, so "a bowl of X" is some X; when the home has a thing named by the
 #: container word itself (a bowl), it is refused: the bowl may be meant too

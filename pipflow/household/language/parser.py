@@ -31,7 +31,8 @@ from lark.visitors import CollapseAmbiguities
 from pipflow.errors import TranslationError
 from pipflow.household.language.grammar import NOUN_DUAL, grammar_text
 from pipflow.household.world import members
-from pipflow.household.language.lexicon import (ACTIVITIES, COLD, FILLER, FOUL_WORDS, LAUNDRY, FILLER_TYPO_TARGETS, LIGHT_CATEGORY_WORD, MANNER_OBJECTS,
+from pipflow.household.language.lexicon import (ACTIVITIES, COLD, DURATION_HEDGES, DURATION_UNITS, FILLER, FOUL_WORDS,
+                                                LAUNDRY, FILLER_TYPO_TARGETS, LIGHT_CATEGORY_WORD, MANNER_OBJECTS,
                                                 MANNERS, MARKS, MEALS, MEASURES, OPPOSITE, ORDER_WORDS, ORDINAL_DETERMINERS,
                                                 PHRASES, PURPOSES, TEMPERATURE_ADJECTIVES, TIME_WORDS, UNIT_DETERMINERS, plurals,
                                                 words_of)
@@ -276,6 +277,25 @@ def _without_inner_manner(clause: list[str], notes: list[str]) -> list[str]:
     return out
 
 
+def without_duration(clause: list[str], notes: list[str]) -> list[str]:
+    """Words without how long an action takes ("heat the curry for like two minutes", lexicon
+    ``DURATION_UNITS``). Not done when reading: "leave the fridge open for five minutes" ends with
+    it closed, so a duration is refused; a refusal offers the reading without it as a candidate
+    (:mod:`pipflow.household.language.candidates`), for the user to choose."""
+    for j, w in enumerate(clause):
+        if w != "for":
+            continue
+        k = j + 1
+        while k < len(clause) and clause[k] in DURATION_HEDGES:
+            k += 1
+        num = read_number(clause, k) if k < len(clause) else None
+        end = num[1] if num else (k if k > j + 1 and clause[k - 1] in ("few", "couple", "of") else None)
+        if end is not None and end < len(clause) and clause[end] in DURATION_UNITS:
+            notes.append(f"'{' '.join(clause[j:end + 1])}' says how long, not what the home should end like")
+            return clause[:j] + clause[end + 1:]
+    return clause
+
+
 def _without_purpose(clause: list[str], notes: list[str]) -> list[str]:
     """A clause without its closing purpose ("... for airing", "... for later": lexicon
     ``PURPOSES``, or "for" + an -ing word that is no verb of the lexicon): what for, not what the
@@ -376,6 +396,10 @@ def _demonstratives(tags: list[Tag]) -> list[Tag]:
     there is one more alternative at every noun of every command."""
     out = list(tags)
     for k, t in enumerate(out):
+        if t.cls == "THAT" and k and out[k - 1].cls.startswith("V_") and \
+                (k + 1 == len(out) or out[k + 1].cls in ("END", "COMMA")):
+            out[k] = Tag("IT", t.value, t.words)   # "the hob is still on, can you sort that": the thing said
+            continue
         if t.cls != "THAT" or (k and out[k - 1].cls not in ("END", "COMMA")):
             continue
         j = k + 1
@@ -414,6 +438,7 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
     index = world_phrases(world)
     words = _or_under_negation(_measures(_without_manner(words_of(command), notes), index, notes), notes)
     vocab = _vocabulary(index)
+    said = list(words)   # as typed: a repair that still names nothing is quoted as typed
     # typos: a word known nowhere, close to exactly one known word, is read as that word
     for k, w in enumerate(words):
         if known_word(w, index, vocab) or len(w) < 4:
@@ -452,7 +477,7 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
             i += nf
             continue
         if nw == 0 and nl == 0:
-            unknown.append(w)
+            unknown.append(said[i])
             i += 1
             continue
         n = max(nw, nl)
@@ -613,8 +638,12 @@ def parse(command: str, world: dict, notes: list[str] | None = None) -> list[dic
             readings = _parse(trimmed[0], world, mine)
         except TranslationError as again:
             # what is left after the talk is set aside is what does not read: say that
-            raise TranslationError(f"{again} (set aside: {'; '.join(repr(a) for a in trimmed[1] + trimmed[2])})",
-                                   candidates=again.candidates) from None
+            error = TranslationError(f"{again} (set aside: {'; '.join(repr(a) for a in trimmed[1] + trimmed[2])})",
+                                     candidates=again.candidates)
+            for attr in ("unread", "unplaced", "choices"):   # what candidate readings are built from
+                if hasattr(again, attr):
+                    setattr(error, attr, getattr(again, attr))
+            raise error from None
     notes += mine + ([said(trimmed[1])] if trimmed[1] else []) + [
         f"'{own}' says what the speaker will do: no order for the robots (set aside)" for own in trimmed[2]]
     extra = {**({"set_aside": trimmed[1]} if trimmed[1] else {}), **({"speaker_does": trimmed[2]} if trimmed[2] else {})}
@@ -651,9 +680,14 @@ def _parse(command: str, world: dict, notes: list[str]) -> list[dict]:
             end += 1
         clause = " ".join(t.words for t in tags[start:end + 1])
         here = " ".join(t.words for t in tags[k:min(end + 1, k + 4)])
-        raise TranslationError(f"could not place the words '{here}' in '{clause}': the offline parser reads "
-                               "changes of state, moves, put-aways, trashing and state cues (docs/household.md); "
-                               "a language model may read it") from None
+        error = TranslationError(f"could not place the words '{here}' in '{clause}': the offline parser reads "
+                                 "changes of state, moves, put-aways, trashing and state cues (docs/household.md); "
+                                 "a language model may read it")
+        # for candidate readings: the words where the grammar stopped (and the one before), each
+        # of which a candidate may read the command without
+        error.unplaced = [t.words for t in tags[max(start, k - 1):min(end + 1, k + 3)]  # type: ignore[attr-defined]
+                          if t.cls not in ("END", "COMMA")]
+        raise error from None
     return _orders(tags, tree, command)
 
 
@@ -849,6 +883,9 @@ class Builder:
             subs = self._subs(node, "things") + self._subs(node, "sthings")
             st = {"op": "put", "things": [s for sub in subs for s in self.things(sub)]}
             src, tgt = self._sub(node, "source"), self._sub(node, "target")
+            if src is None and tgt is None and self._has(node, "V_THROW") and len(self._tokens(node)) == 1:
+                # "chuck the crisp packet", "toss the orange": thrown, and said nowhere else, is away
+                st = {"op": "trash", "things": st["things"]}
             if src is not None:
                 st["from"] = self.place(self._sub(src, "place"))
             if tgt is not None:

@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 
 from pipflow.errors import Refusal, TranslationError
 from pipflow.household.language.lexicon import (BIN_KINDS, COLD, DEVICES, INDEFINITE, LAUNDRY, LAUNDRY_PLACES, MASS_NOUNS,
-                                                MEALS, REACHABLE, VIA_PROPERTY, plurals, words_of)
+                                                MEALS, OPPOSITE, REACHABLE, VIA_PROPERTY, plurals, words_of)
 from pipflow.household.language.order import check_order
 from pipflow.household.problem import CONDITIONS
 from pipflow.household.world import entity, initial_state, members
@@ -631,6 +631,19 @@ class Resolver:
             if n in self.world["objects"] and home and "pickupable" in e["properties"]:
                 homes[n] = home[0]
         away = [n for n in names if n in homes and self.world["objects"][n]["in"] != homes[n]]
+        # "the hob's still on, can you sort that": a thing left on or open may need switching off
+        # or closing; that is asked (each offered as a candidate reading), never guessed
+        undo = [OPPOSITE[c] for c in ("on", "open")
+                if names and all(applies(self.world, n, c) and holds_now(self.world, n, c) for n in names)]
+        if not away and self.choose.get(words) in undo:
+            for n in names:
+                self.want(n, self.choose[words], True, words)
+            self.last = names
+            return
+        if not away and undo:
+            raise _choice(TranslationError(f"'{words}': what should be done with {', '.join(names)}? (nothing of "
+                                           f"it is dirty or away from its home; it could be {' or '.join(undo)})"),
+                          words, undo)
         if not away:
             raise TranslationError(f"'{words}': what should be done with {', '.join(names) or 'it'}? "
                                    "(nothing of it is dirty or away from its home); say what to do")
