@@ -155,6 +155,23 @@ def test_how_a_thing_is_handled_is_a_reason(croft):
         translate("The kettle is too heavy.", croft)
 
 
+def test_activities_wished_for_and_disorder_of_places(croft):
+    assert goal("I'd like to read.", croft) == ({}, {"candle": ["on"]})
+    assert goal("It's too dark to study.", croft) == ({}, {"candle": ["on"]})
+    offered = refused_with("I want to listen to music.", croft)   # two sound makers off: asked, each offered
+    assert ({}, {"gramophone": ["on"]}) in offered and ({}, {"wireless": ["on"]}) in offered
+    with pytest.raises(TranslationError, match="no screen"):
+        translate("I want to watch something.", croft)
+    assert goal("There are clothes everywhere.", croft) == ({"hamper": ["shirt", "sock"]}, {})
+    assert goal("The settle is covered in clothes.", croft) == ({"hamper": ["shirt"]}, {})
+    assert goal("I need a clean beaker.", croft) == ({}, {"beaker": ["clean"], "dresser": ["closed"]})
+    assert goal("Can I get a hot drink?", croft) == ({}, {"kettle": ["on"]})
+    # leaving or bedtime alone asks: the lights off, or everything that is on off
+    radio_on = _croft_with(**{"state: {on: false}, words: [radio]": "state: {on: true}, words: [radio]"})
+    offered = refused_with("Time for bed.", radio_on)
+    assert ({}, {"lantern": ["off"]}) in offered and ({}, {"lantern": ["off"], "wireless": ["off"]}) in offered
+
+
 def test_light_cues_and_rooms_the_home_lacks(croft):
     assert goal("It's so dark over here, I can't read.", croft) == ({}, {"candle": ["on"]})
     assert goal("The lantern is on and nobody's in the kitchen.", croft) == ({}, {"lantern": ["off"]})
@@ -165,7 +182,10 @@ def test_light_cues_and_rooms_the_home_lacks(croft):
 
 def test_robustness_of_words_and_marks(croft):
     # a shared ending earns no second typo edit: "starving" is no "stacking", "trying" no "tidying"
-    assert goal("It's much too dark, I'm trying to nap.", croft) == ({}, {"candle": ["on"]})
+    assert goal("It's much too bright, I'm trying to nap.", croft) == ({}, {"lantern": ["off"]})
+    assert goal("I'm trying to get some sleep.", croft) == ({}, {"lantern": ["off"]})
+    with pytest.raises(TranslationError, match="opposite"):   # two cues that disagree: asked
+        translate("It's much too dark, I'm trying to sleep.", croft)
     assert goal("put the bap + the kipper on the bench", croft) == ({"bench": ["bap", "kipper"]}, {"larder": ["closed"]})
     assert goal("Bin the carton \u2014 it's seen better days \u2014 and switch on the candle.", croft) == \
         ({"pail": ["carton"]}, {"candle": ["on"]})

@@ -16,6 +16,15 @@ counts ``candidate_recall``). They are built, in this order of preference, from:
   quantities: :func:`pipflow.language.asides.near_operative`), since dropping one would widen
   what the robots do.
 
+* **a part of a name said alone**: a last word several names share ("the cupboard": each), a
+  modifier in the plural ("the leftovers");
+* **where the reading stopped**: a known word there that names nothing and is not operative, left
+  out ("that *empty* pizza box"); a duration left out ("for two minutes": never read, since "leave
+  the fridge open for five minutes" ends closed); every word not understood left out at once;
+* **the senses of a cue**: a reason of leaving or going to bed said alone offers the lights off and
+  everything that is on off; a thing "dealt with" that is on or open offers it off or closed; a cue
+  that may mean several sound or drink makers offers each (the resolver's choice).
+
 Each candidate is read by the same translator as any command, so it is a reading of this world
 (impossible ones are not offered). The search is bounded (:data:`MAX_TRIES` readings).
 """
@@ -26,7 +35,7 @@ import re
 from typing import Callable
 
 from pipflow.errors import PipflowError, TranslationError
-from pipflow.household.language.lexicon import words_of
+from pipflow.household.language.lexicon import LEAVING_REASONS, words_of
 from pipflow.household.language.parser import _vocabulary, known_word, tag, without_duration, world_phrases
 from pipflow.language.asides import FUNCTION_WORDS, near_operative
 from pipflow.language.spelling import distance
@@ -75,6 +84,33 @@ def _modifier_names(world: dict, at: int = 0) -> dict[str, list[str]]:
                     if full not in names and not any(n.startswith(f"{name}\0") for n in names):
                         names.append(f"{name}\0{full}")
     return {w: [n.split("\0")[1] for n in names] for w, names in out.items()}
+
+
+def _stopped_wordings(words: list[str], index: dict, error: TranslationError) -> list[tuple[str, str, str, dict]]:
+    """Wordings from where the reading stopped, how long an action takes, and a reason said alone
+    (module docstring)."""
+    out: list[tuple[str, str, str, dict]] = []
+    said_how_long: list[str] = []
+    timed = without_duration(words, said_how_long)
+    if said_how_long:   # "heat the curry for two minutes": the end state, without how long
+        out.append((" ".join(timed), f"read without {said_how_long[0].split(' says')[0]} (how long)", " ".join(timed), {}))
+    # a known word where the grammar stopped, that no world name has and that is not operative: the
+    # rest may read whole ("that empty pizza box ... is starting to smell")
+    for phrase in getattr(error, "unplaced", []) or []:
+        ws = phrase.split()
+        if tuple(ws) in index or any(near_operative(x) and x not in FREE_TO_DROP for x in ws):
+            continue
+        at = next((k for k in range(len(words) - len(ws) + 1) if words[k:k + len(ws)] == ws), None)
+        if at is not None:
+            rest = " ".join(words[:at] + words[at + len(ws):])
+            out.append((rest, f"read without '{phrase}' (where the reading stopped)", rest, {}))
+    # a reason of leaving or going to bed, said alone: the lights off, or everything that is on off
+    left = [r for r in getattr(error, "reasons", []) or [] if any(x in r for x in LEAVING_REASONS)]
+    if left:
+        out.append(("it is too bright", f"'{left[0]}' read as the lights off", left[0], {}))
+        out.append(("switch off everything that is on", f"'{left[0]}' read as everything that is on switched off",
+                    left[0], {}))
+    return out
 
 
 def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[str, str, str, dict]]:
@@ -127,10 +163,6 @@ def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[
     for w in unknown:   # "nobody is using the tablet or the radio": a list said with "or"
         if w in JOINERS:
             out.append((swap(w, JOINERS[w]), f"'{w}' read as '{JOINERS[w]}'", swap(w, JOINERS[w]), {}))
-    said_how_long: list[str] = []
-    timed = without_duration(words, said_how_long)
-    if said_how_long:   # "heat the curry for two minutes": the end state, without how long
-        out.append((" ".join(timed), f"read without {said_how_long[0].split(' says')[0]} (how long)", " ".join(timed), {}))
     droppable = [w for w in dict.fromkeys(unknown) if not near_operative(w) and w not in JOINERS]
     if len(droppable) > 1:   # "chop up the cucumber real quick": every word not understood, at once
         rest = " ".join(x for x in words if x not in droppable)
@@ -138,16 +170,7 @@ def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[
     for w in droppable:
         rest = " ".join(x for x in words if x != w)
         out.append((rest, f"read without '{w}' (not understood)", rest, {}))
-    # a known word where the grammar stopped, that no world name has and that is not operative: the
-    # rest may read whole ("that empty pizza box ... is starting to smell")
-    for phrase in getattr(error, "unplaced", []) or []:
-        ws = phrase.split()
-        if tuple(ws) in index or any(near_operative(x) and x not in FREE_TO_DROP for x in ws):
-            continue
-        at = next((k for k in range(len(words) - len(ws) + 1) if words[k:k + len(ws)] == ws), None)
-        if at is not None:
-            rest = " ".join(words[:at] + words[at + len(ws):])
-            out.append((rest, f"read without '{phrase}' (where the reading stopped)", rest, {}))
+    out += _stopped_wordings(words, index, error)
     parts = [p.strip() for p in _CLAUSE_SPLIT.split(command) if p.strip()]
     if len(parts) > 1:
         for part in parts:

@@ -25,7 +25,11 @@ start: _sep* item (_sep+ item | _sep* thengap)* _sep*
 _sep: COMMA | END | @AND | @THEN | @BUT
 
 ?item: change | toggle | put | gap | away | trash | chill | request | unwant | ensure | observe | cue | meal | after | reason
-      | tend | notvia | usevia | keep | empty | desire | handling
+      | tend | notvia | usevia
+      | keep //+ STAY
+      | empty //+ V_EMPTY
+      | desire
+      | handling //+ HANDLING
 
 change: _vstate @UP? things @PIECES? via? exception? _here?
       | _vstate things @UP via? exception?
@@ -52,7 +56,7 @@ off: @OFF | @OUT
 put: _vput @UP? things source? target? exception?
    | _vput @UP? things _particle target source?
    | _vput @UP? things _particle source target?
-   | @SUBJ? (@WANT | @NEED) things target
+   | _wish things target
    | _vput @UP? things target source
    | _vput @OUT things | _vput things @OUT
    | _vput @UP? things source @AND target
@@ -65,13 +69,15 @@ put: _vput @UP? things source? target? exception?
 _vput: @V_PUT | @V_THROW
 _particle: @OUT | @DOWN | @IN | @UP
 source: @FROM place | @OUT @OF? place | @OFF @OF? place
-target: _prep place | @SOMEWHERE? bare | _prep placeref | _prep @THEWASH
+target: _prep place | @SOMEWHERE? bare | _prep placeref
+      | _prep @THEWASH //+ THEWASH
 placeref: @IT
 _prep: @IN | @ON | @TO | @AT | @BACK @IN | @BACK @ON | @BACK @TO
 place: @THE? noun
 bare: noun
 
-gap: things _particle? target
+gap: things target
+   | things _particle target
    | things onoff
    | things @TOO
 thengap: @THEN things -> gap
@@ -94,7 +100,8 @@ unwant: @DONOT @V_LEAVE things state
 ensure: @V_MAKE @SURE @THAT? wish ((COMMA | @AND | COMMA @AND) wish)*
 wish: sthings (@IS | @SHOULD @BE) not? state
 not: @NOT
-state: @ADJ | @V_OPEN | @V_SHUT | @V_CLEAN | @V_WARM | @V_STATE | on | off | @TOGGLED onoff | @V_TOGGLE onoff | @GOING
+state: @ADJ | @V_OPEN | @V_SHUT | @V_CLEAN | @V_WARM | @V_STATE | on | off | @TOGGLED onoff | @V_TOGGLE onoff
+     | @GOING //+ GOING
 
 after: @ONCE @SUBJ @HAVE? state things
 reason: @IT @IS (@INTENS | @TOO)* @REASON | @SUBJ @IS @REASON | @REASON
@@ -102,11 +109,11 @@ meal: (@V_MAKE | @V_PREPARE | _vstate) @THE? @MEAL _here?
     | (@V_MAKE | @V_PREPARE) @THE? @V_STATE _here?
     | @SUBJ? (@WANT | @NEED) @THE? @MEAL
 
-observe: sthings @IS state
-       | sthings @FOULS
+observe: sthings @IS state _here?
+       | sthings @FOULS //+ FOULS
 
 cue: @NOBODY @IS? activity (@TO | @ON | @AT)? things? @ANYMORE?
-   | @NOBODY @IS? (@INROOM | _here) @ANYMORE?
+   | @NOBODY @IS? (@INROOM | _here) @ANYMORE? //+ INROOM ALLOVER
    | @SUBJ? @DONOT @NEED things (on | @ANYMORE)?
    | @NOBODY @NEED things @ANYMORE?
    | @SUBJ? @IS? @DONE things @ANYMORE?
@@ -116,14 +123,25 @@ cue: @NOBODY @IS? activity (@TO | @ON | @AT)? things? @ANYMORE?
    | @IT @IS (@INTENS | @TOO)* tempadj _here (@WITH @THAT? things (@GOING | on))?
    | @SUBJ @IS (@INTENS | @TOO)* (tempcue | tempadj) _here?
    | @IT @IS (@INTENS | @TOO)* lightcue _here?
-   | @SUBJ @CANNOT @SEE things? _here?
-   | @IT @IS (@INTENS | @TOO)* soundcue _here?
-   | _vput @THE? @MUSIC on | @V_TOGGLE on @THE? @MUSIC | @V_PLAY @THE? @MUSIC | @SUBJ? @WANT @THE? @MUSIC
-   | @SUBJ? @WANT @THE? @HOTDRINK @ANYMORE? | (@V_MAKE | @V_PREPARE) @THE? @HOTDRINK
+   | @IT @IS (@INTENS | @TOO)* lightcue _here? _doact //+ DOACT SEE
+   | _wish _doact things? _here? //+ DOACT SEE
+   | @SUBJ @IS? @SLEEPCUE //+ SLEEPCUE
+   | @SUBJ @CANNOT @SEE things? _here? //+ CANNOT
+   | @IT @IS (@INTENS | @TOO)* soundcue _here? //+ SOUNDCUE
+   | _vput _music on //+ MUSIC
+   | @V_TOGGLE on _music //+ MUSIC
+   | @V_PLAY _music //+ MUSIC
+   | _wish _music //+ MUSIC
+   | _wish @THE? @HOTDRINK @ANYMORE? //+ HOTDRINK
+   | (@V_MAKE | @V_PREPARE) @THE? @HOTDRINK //+ HOTDRINK
 activity: @ACTIVITY
 lightcue: @LIGHTCUE
 soundcue: @SOUNDCUE
-_here: @HERE | @ALLOVER
+_wish: @SUBJ? (@WANT | @NEED)
+_doact: @TO (@DOACT | @SEE)
+_music: @THE? @MUSIC
+_here: @HERE
+     | @ALLOVER //+ ALLOVER
 tempcue: @TEMPCUE
 tempadj: @ADJ
 
@@ -131,13 +149,16 @@ notvia: @NOT via
 usevia: @V_USE @THE? place
 
 tend: @V_TEND @OUT? things | @V_TEND things @OUT
-    | sthings @IS? (@MESS | @ALLOVER) -> mess
-    | @LEFT things (@OUT | @ALLOVER) -> mess
+    | sthings @IS? @MESS -> mess
+    | sthings @IS? @ALLOVER -> mess //+ ALLOVER
+    | @LEFT things (@OUT | @ALLOVER) -> mess //+ LEFT
+    | @THERE @IS sthings (@MESS | @ALLOVER) -> mess //+ THERE
+    | (place | @ROOMSAID) @IS @FULLOF things -> mess //+ FULLOF
 
 keep: @V_LEAVE things @STAY
 handling: sthings @IS (@INTENS | @TOO)* @HANDLING @FORONE?
 empty: @V_EMPTY @OUT? place target?
-desire: @SUBJ? @WANT @THE? count? adj+ noun
+desire: _wish @THE? adj+ noun
 
 things: np ((COMMA | @AND | COMMA @AND) np)*
       | @BOTH np @AND np
@@ -170,13 +191,35 @@ def classes() -> list[str]:
     return sorted({cls for cls, _ in PHRASES.values()})
 
 
-def grammar_text(dual: frozenset[str] | None = None) -> str:
+#: marks a line of the rules kept only for a command with a token of one of the classes after it:
+#: an alternative that needs a terminal the command lacks can never match, and every alternative
+#: is work for Earley at every position where it could start (the cues and constructions of issue
+#: 23's second step would cost every command ~1.5x otherwise)
+GATE = "//+"
+
+
+def gated_classes() -> frozenset[str]:
+    """Every class some gated line of the rules needs (:data:`GATE`)."""
+    return frozenset(c for line in _RULES.splitlines() if GATE in line for c in line.split(GATE)[1].split())
+
+
+def grammar_text(dual: frozenset[str] | None = None, present: frozenset[str] | None = None) -> str:
     """The lark grammar: ``@C`` expanded to ``(C | C__NOUN)``, ``NOUN__`` to ``NOUN`` and every
     dual class; the terminals are declared (a custom lexer supplies them). ``dual``: only these
     classes get a ``__NOUN`` twin (the classes whose words are also names of the world at hand):
     each twin is one more alternative wherever a noun may stand, which Earley pays for at every
-    noun position of every command, so a grammar for one world carries only the twins it needs."""
-    text = _RULES
+    noun position of every command, so a grammar for one world carries only the twins it needs.
+    ``present``: only the gated lines (:data:`GATE`) whose classes are among these (the classes of
+    the command at hand); None: every line."""
+    lines = []
+    for line in _RULES.splitlines():
+        if GATE in line:
+            rule, needs = line.split(GATE)
+            if present is not None and not set(needs.split()) & present:
+                continue
+            line = rule.rstrip()
+        lines.append(line)
+    text = "\n".join(lines)
     twins = classes() if dual is None else sorted(dual)
     duals = [c + NOUN_DUAL for c in twins]
     for c in sorted(classes(), key=len, reverse=True):

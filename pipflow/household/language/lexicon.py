@@ -132,6 +132,28 @@ _add("MESS", "all over the place,piling up,piled up,lying around,lying about,lef
 for _w in LIGHT_CUES:
     PHRASES[(_w,)] = ("LIGHTCUE", LIGHT_CUES[_w])
 _add("SEE", "see,read,see anything,read anything")
+#: "I'm trying to sleep", "going to sleep": the lights off (a cue like "it is too bright")
+_add("SLEEPCUE", "trying to sleep,trying to nap,trying to get some sleep,trying to get to sleep,going to sleep,"
+     "want to sleep,need to sleep,off to sleep,having a nap,taking a nap,going to have a nap,sleeping,napping,"
+     "trying to have a nap,want a nap,need a nap")
+#: "I want to watch something", "I'd like to read", "it's too dark to study": an activity wished for
+#: (value: what it needs on: a kind of lexicon ``DEVICES``, or the light category)
+DO_ACTIVITIES = {"watch": "screen", "listen": "sound", "study": "light", "work": "light", "read": "light"}
+for _w, _v in DO_ACTIVITIES.items():
+    if (_w,) not in PHRASES:
+        _add("DOACT", _w, _v)
+_add("DOACT", "watch something,watch telly,watch tv,listen to something,listen to music,do some reading,do some work,"
+     "get some work done,hear something", None)
+for _p in ("watch something", "watch telly", "watch tv"):
+    PHRASES[tuple(_p.split())] = ("DOACT", "screen")
+for _p in ("listen to something", "listen to music", "hear something"):
+    PHRASES[tuple(_p.split())] = ("DOACT", "sound")
+for _p in ("do some reading", "do some work", "get some work done"):
+    PHRASES[tuple(_p.split())] = ("DOACT", "light")
+#: "there are dishes everywhere": an existential opening
+_add("THERE", "there")
+#: "the sink is full of dishes", "the floor is covered in clothes": disorder said of what a place holds
+_add("FULLOF", "full of,covered in,covered with,piled with,piled high with,littered with,stacked with,cluttered with")
 #: "it's too quiet in here" -> the home's sound makers on; "it's too loud" -> the ones on, off
 SOUND_CUES = {"quiet": "on", "silent": "on", "loud": "off", "noisy": "off", "deafening": "off"}
 for _w, _v in SOUND_CUES.items():
@@ -152,7 +174,10 @@ DRINK_MAKERS = ("kettle", "kettles", "coffee machine", "coffee maker", "espresso
                 "percolator", "coffee pot", "bean to cup", "samovar")
 #: the kinds of thing a cue of the room may speak of (cue ``device``): what warms the room, what
 #: plays sound, what makes a hot drink; each read from the world's names and words
-DEVICES = {"heating": ROOM_HEATERS, "sound": SOUND_MAKERS, "hot drink": DRINK_MAKERS}
+#: what shows something to watch
+SCREENS = ("tv", "television", "telly", "projector", "screen", "monitor", "tv set")
+DEVICES = {"heating": ROOM_HEATERS, "sound": SOUND_MAKERS, "hot drink": DRINK_MAKERS, "screen": SCREENS}
+DEVICE_NOUNS = {"heating": "room heater", "sound": "sound maker", "hot drink": "drink maker", "screen": "screen"}
 #: "the mug is minging", "the pizza box is starting to smell": foulness said of a thing. A thing
 #: that washes is washed; food and rubbish (a category named or worded so) go in the bin; any
 #: other thing is asked (docs/household.md, cues)
@@ -217,7 +242,8 @@ _add("SUBJ", "i,we,you")
 #: wishes: "I want X", and what people say for it of food and drink ("I fancy a warm bagel",
 #: "could murder a cuppa", "I'd love a tea", "I'm dying for a coffee")
 _add("WANT", "want,would like,like,wish,d like,prefer,fancy,would love,love,could murder,could kill for,"
-     "am dying for,am craving,crave,would kill for,could do with,could use,am gasping for")
+     "am dying for,am craving,crave,would kill for,could do with,could use,am gasping for,can i get,can i have,"
+     "could i get,could i have,may i have,can we get,can we have,could we have,could we get")
 _add("NEED", "need,needs,wants")
 _add("NEEDED", "needed,necessary,required,in use")
 #: "we are done with the laptop": the thing is not needed (a state cue, like "we do not need")
@@ -234,6 +260,10 @@ _add("GOES", "goes,belongs,belong,lives,live,is meant to live,is meant to go,is 
      "usually lives")
 #: reasons that ask for nothing by themselves ("it is late, turn off the TV"): dropped before a
 #: request, refused alone
+#: reasons of leaving the home or going to bed: alone they ask for nothing two people agree on
+#: (the lights off? everything off?), so they are asked, offering both (docs/household.md, cues)
+LEAVING_REASONS = {"bedtime", "time for bed", "off to bed", "going to bed", "heading to bed", "off out", "going out",
+                   "heading out", "off to work", "going to work", "late", "night time"}
 _add("REASON", "late,bedtime,time for bed,night time,off to bed,going to bed,heading to bed,off out,going out,"
      "heading out,off to work,going to work")
 #: how a thing is to be handled, said of it ("the wok is too heavy for one of you", "the can is
@@ -263,6 +293,7 @@ HOME_WORDS = ("house", "home", "flat", "apartment", "cabin", "boat", "cottage", 
 ROOM_WORDS = ("room", "lounge", "living room", "sitting room", "bedroom", "kitchen", "hall", "hallway", "study",
               "office", "dining room", "bathroom", "floor")
 _add("HERE", "here,in here,over here,over there," + ",".join(f"in the {h},around the {h}" for h in HOME_WORDS))
+_add("ROOMSAID", ",".join(f"the {r},my {r},our {r}" for r in ROOM_WORDS))
 _add("INROOM", ",".join(f"in the {r},in {r}" for r in ROOM_WORDS) + ",at home,home")
 #: "put the clothes in the wash": the home's one laundry place (a place named or worded so)
 _add("THEWASH", "the wash")

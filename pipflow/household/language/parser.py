@@ -29,7 +29,7 @@ from lark.lexer import Lexer
 from lark.visitors import CollapseAmbiguities
 
 from pipflow.errors import TranslationError
-from pipflow.household.language.grammar import NOUN_DUAL, grammar_text
+from pipflow.household.language.grammar import NOUN_DUAL, gated_classes, grammar_text
 from pipflow.household.world import members
 from pipflow.household.language.lexicon import (ACTIVITIES, COLD, DURATION_HEDGES, DURATION_UNITS, FILLER, FOUL_WORDS,
                                                 LAUNDRY, FILLER_TYPO_TARGETS, LIGHT_CATEGORY_WORD, MANNER_OBJECTS,
@@ -41,6 +41,8 @@ from pipflow.language.characters import refuse_unread
 from pipflow.language.numbers import read_number
 from pipflow.language.spelling import distance
 
+#: the classes some gated line of the grammar needs
+GATED = gated_classes()
 #: the most readings of one ambiguous command that are compared (each is resolved); more is
 #: refused, never cut short
 MAX_READINGS = 64
@@ -355,7 +357,7 @@ def _located(tags: list["Tag"], world: dict, notes: list[str]) -> list["Tag"]:
 
 #: lexicon classes of phrases that name the home or a room of it ("in the kitchen", "all over the
 #: flat"): a world name inside one is read as the name
-HOME_CLASSES = {"HERE", "ALLOVER", "INROOM", "THEWASH"}
+HOME_CLASSES = {"HERE", "ALLOVER", "INROOM", "THEWASH", "ROOMSAID"}
 
 
 #: words that put a step after the others, closing a clause ("... and bring them to the desk
@@ -386,6 +388,21 @@ def _restated_order(tags: list[Tag], notes: list[str]) -> list[Tag]:
             out += sentence + tags[k:k + 1]
         named |= names
         start = k + 1
+    return out
+
+
+def _act_before_noun(tags: list[Tag]) -> list[Tag]:
+    """ "I need a clean mug": an action noun ("a clean", "a wash") before a name is a determiner and a
+    state word, not the action ("give it a clean")."""
+    out: list[Tag] = []
+    for k, t in enumerate(tags):
+        nxt = tags[k + 1] if k + 1 < len(tags) else None
+        ws = t.words.split()
+        if t.cls == "ACT" and len(ws) == 2 and nxt is not None and (nxt.cls == "NOUN" or nxt.cls.endswith(NOUN_DUAL)) \
+                and (ws[1],) in PHRASES and PHRASES[(ws[1],)][0] in ("V_CLEAN", "ADJ"):
+            out += [Tag("THE", None, ws[0]), Tag(PHRASES[(ws[1],)][0], PHRASES[(ws[1],)][1], ws[1])]
+            continue
+        out.append(t)
     return out
 
 
@@ -491,7 +508,7 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
             cls, value = PHRASES[tuple(words[i:i + n])]
             out.append(Tag(cls, value, text))
         i += n
-    out = _restated_order(_located(_demonstratives(out), world, notes), notes)
+    out = _restated_order(_located(_demonstratives(_act_before_noun(out)), world, notes), notes)
     if unknown:
         names = sorted(set(world.get("objects") or {}) | set(world.get("places") or {}))
         error = TranslationError(
@@ -516,11 +533,18 @@ class _TagLexer(Lexer):
             yield Token(t.cls, str(k), start_pos=k, end_pos=k + 1)
 
 
-@functools.lru_cache(maxsize=8)
-def _lark(dual: frozenset[str]) -> Lark:
+@functools.lru_cache(maxsize=64)
+def _lark(dual: frozenset[str], present: frozenset[str] | None = None) -> Lark:
     """The Earley parser for commands whose dual tokens (a lexicon word that is also a name of the
-    world) are of the classes ``dual``: one per world in practice (grammar_text says why)."""
-    return Lark(grammar_text(dual), parser="earley", lexer=_TagLexer, ambiguity="explicit")
+    world) are of the classes ``dual``: one per world in practice (grammar_text says why), with the
+    gated lines of the rules for the gated classes ``present`` in the command (None: all)."""
+    return Lark(grammar_text(dual, present), parser="earley", lexer=_TagLexer, ambiguity="explicit")
+
+
+def _parser_for(world: dict, tags: list[Tag]) -> Lark:
+    """The parser for these tags in this world: only the gated rules their classes can use."""
+    present = frozenset(t.cls[:-len(NOUN_DUAL)] if t.cls.endswith(NOUN_DUAL) else t.cls for t in tags)
+    return _lark(_dual_classes(world), present & GATED)
 
 
 def _dual_classes(world: dict) -> frozenset[str]:
@@ -656,12 +680,12 @@ def _parse(command: str, world: dict, notes: list[str]) -> list[dict]:
     if not [t for t in tags if t.cls not in ("END", "COMMA")]:
         raise TranslationError(f"{command.strip()!r} asks for nothing the offline parser can read")
     try:
-        tree = _lark(_dual_classes(world)).parse(tags)
+        tree = _parser_for(world, tags).parse(tags)
     except UnexpectedInput as exc:
         filled = _elided_objects(tags)
         if filled is not None:
             try:
-                tree = _lark(_dual_classes(world)).parse(filled)
+                tree = _parser_for(world, filled).parse(filled)
             except UnexpectedInput:
                 filled = None
         if filled is not None:
@@ -870,10 +894,8 @@ class Builder:
                 st["via"] = self.place(self._sub(via, "place"))
             elif via is not None:   # "heat the pan on it"
                 st["via"] = {"words": _words(self.tags, via), "pronoun": True}
-            elif act is None and [r for r in self.tag_of(verb).nouns if r["kind"] == "place"]:
-                # "microwave the noodles": a verb that is a place of the home says where it happens
-                st["via"] = {"words": self.tag_of(verb).words,
-                             "readings": [dict(r) for r in self.tag_of(verb).nouns if r["kind"] == "place"]}
+            elif act is None and self.verb_place(verb) is not None:   # "microwave the noodles"
+                st["via"] = self.verb_place(verb)
         elif kind == "toggle" and self._has(node, "V_LIGHT"):   # "light the stove"
             st = {"op": "change", "things": things, "to": "on"}
         elif kind == "toggle":
@@ -924,17 +946,40 @@ class Builder:
                 raise TranslationError(f"'{words}': a {meal} is not made by '{verb.words}' "
                                        f"(its foods end {MEALS[meal]['state']}); say what to do with which things")
             st = {"op": "meal", "meal": meal}
-        elif kind == "observe":
+        elif kind == "cue":
+            st = self.cue(node, things)
+        elif kind in ("observe", "tend", "mess", "handling", "keep", "empty", "desire"):
+            st = self.said_of_things(node, kind, things)
+        else:  # a rule of the grammar without a statement: a bug, not a user error
+            raise AssertionError(f"no statement for grammar rule {kind!r}")
+        if exc is not None:   # "put all the fruit in the fridge but not the watermelon"
+            st["except"] = self.things(self._sub(exc, "things"))
+        st["words"] = words
+        return st
+
+    def verb_place(self, verb: Token) -> dict | None:
+        """ "microwave the noodles": a verb that is a place of the home says where the action
+        happens (a noun of the place's readings), else None."""
+        places = [dict(r) for r in self.tag_of(verb).nouns if r["kind"] == "place"]
+        return {"words": self.tag_of(verb).words, "readings": places} if places else None
+
+    def said_of_things(self, node: Tree, kind: str, things: list[dict]) -> dict:
+        """Statements that say something of things: an observation, what they need ("tend"),
+        disorder said ("mess"), how a thing is handled, a thing to stay where it is, a place
+        emptied, a thing wished for in a state."""
+        if kind == "observe":
             state = self._sub(node, "state")
             st = {"op": "observe", "things": things, "is": self.state(state) if state is not None else "dirty"}
             said = _words(self.tags, state).split()[-1] if state is not None else ""
             if state is None or said in FOUL_WORDS:   # "the pizza box is starting to smell", "the mug is minging"
                 st["foul"] = True
-        elif kind == "cue":
-            st = self.cue(node, things)
         elif kind == "tend":   # "deal with the dishes"
             st = {"op": "tend", "things": things}
         elif kind == "mess":   # "the bedding is all over the place": said, so a later clause may answer it
+            place = self._sub(node, "place")
+            if place is not None:   # "the sink is full of dishes": the dishes in the sink
+                where = self.place(place)
+                things = [{**t, "from": t.get("from") or where} for t in things]
             st = {"op": "tend", "things": things, "said": True}
         elif kind == "handling":   # "the wok is too heavy for one of you": how, for a later clause
             st = {"op": "handling", "things": things}
@@ -946,17 +991,12 @@ class Builder:
                                            "from": place}]}
             if self._sub(node, "target") is not None:
                 st["to"] = self.target(self._sub(node, "target"))
-        elif kind == "desire":   # "I fancy a warm bagel": the thing in the state its adjective names
+        else:   # "desire": "I fancy a warm bagel": the thing in the state its adjective names
             noun = self._sub(node, "noun")
             adjs = [str(self.tag_of(self._tokens(a)[0]).value) for a in self._subs(node, "adj")]
             det = [self.tag_of(t).words for t in self._tokens(node) if self._cls(t) == "THE"]
             sel = {"words": _words(self.tags, noun), "noun": self.noun(noun), **({"det": det[0]} if det else {})}
             st = {"op": "change", "things": [sel], "to": adjs[-1]}
-        else:  # a rule of the grammar without a statement: a bug, not a user error
-            raise AssertionError(f"no statement for grammar rule {kind!r}")
-        if exc is not None:   # "put all the fruit in the fridge but not the watermelon"
-            st["except"] = self.things(self._sub(exc, "things"))
-        st["words"] = words
         return st
 
     def cue(self, node: Tree, things: list[dict]) -> dict:
@@ -977,6 +1017,19 @@ class Builder:
         elif light is not None:
             t = self.tag_of(self._tokens(light)[0])
             st.update(to=str(t.value), cue=f"it is {t.words}", default=LIGHT_CATEGORY_WORD)
+        elif self._has(node, "DOACT") or (self._has(node, "SEE") and self._has(node, "TO")):
+            # "I want to watch something": what the activity needs, on; "too dark to study": the light
+            t = next(self.tag_of(x) for x in self._tokens(node) if self._cls(x) in ("DOACT", "SEE"))
+            kind = t.value if self._cls(next(x for x in self._tokens(node) if self.tag_of(x) is t)) == "DOACT" else "light"
+            if kind == "light" or light is not None:
+                st.update(things=[] if light is not None else things, to="on", cue=f"to {t.words}",
+                          **({"default": LIGHT_CATEGORY_WORD} if not things or light is not None else {}))
+            elif things:   # "I want to watch the telly": that thing on
+                st.update(to="on", cue=f"to {t.words}")
+            else:
+                st.update(to="on", cue=f"to {t.words}", device=str(kind))
+        elif self._has(node, "SLEEPCUE"):   # "I'm trying to sleep": the lights off
+            st.update(things=[], to="off", cue="sleep", default=LIGHT_CATEGORY_WORD)
         elif self._has(node, "SEE"):   # "I can't read my notes": what cannot be read is the reason
             st.update(things=[], to="on", cue="cannot see", default=LIGHT_CATEGORY_WORD)
         elif self._sub(node, "soundcue") is not None:   # "it's too quiet in here"
@@ -1035,5 +1088,7 @@ class Builder:
         if refused_place is not None:   # "heat the pie, not in the oven": where then?
             raise TranslationError(f"'{refused_place['words']}': not there, but where? say where (e.g. 'use the hob')")
         if not statements:
-            raise TranslationError(f"{self.command.strip()!r} gives a reason but asks for nothing; say what to do")
+            error = TranslationError(f"{self.command.strip()!r} gives a reason but asks for nothing; say what to do")
+            error.reasons = [_words(self.tags, i) for i in items if i.data == "reason"]  # type: ignore[attr-defined]
+            raise error
         return {"domain": "household", "command": self.command, "statements": statements}

@@ -29,7 +29,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from pipflow.errors import Refusal, TranslationError
-from pipflow.household.language.lexicon import (BIN_KINDS, COLD, DEVICES, INDEFINITE, LAUNDRY, LAUNDRY_PLACES, MASS_NOUNS,
+from pipflow.household.language.lexicon import (BIN_KINDS, COLD, DEVICE_NOUNS, DEVICES, INDEFINITE, LAUNDRY, LAUNDRY_PLACES, MASS_NOUNS,
                                                 MEALS, OPPOSITE, REACHABLE, VIA_PROPERTY, plurals, words_of)
 from pipflow.household.language.order import check_order
 from pipflow.household.problem import CONDITIONS
@@ -569,7 +569,7 @@ class Resolver:
         every = self.devices(kind)
         able = [n for n in every if not holds_now(self.world, n, cond)]
         if not able:
-            raise TranslationError(f"'{words}': which thing? this home has no {kind} maker "
+            raise TranslationError(f"'{words}': which thing? this home has no {DEVICE_NOUNS[kind]} "
                                    f"{'that is ' + ('on' if cond == 'off' else 'off') + ' ' if every else ''}"
                                    f"({', '.join(DEVICES[kind][:4])} that switches); say what to switch")
         if cond == "on" and len(able) > 1:
@@ -614,6 +614,10 @@ class Resolver:
         that need neither, or a need the home cannot meet, are asked, never guessed."""
         named = self.objects(st["things"], words)
         names = [n for n, _ in named]
+        # disorder said of a place ("my desk is a mess") is of the things it holds
+        names = list(dict.fromkeys(o for n in names for o in ([n] if n in self.world["objects"] else
+                                                              [o for o, e in self.world["objects"].items()
+                                                               if e["in"] == n]))) or names
         dirty = [n for n in names if applies(self.world, n, "clean") and holds_now(self.world, n, "dirty")]
         if dirty:
             left = [n for n in names if n not in dirty]
@@ -770,6 +774,11 @@ class Resolver:
     def _apply_cue_defaults(self) -> None:
         """A cue that names nothing means its whole category, unless the command itself asks the
         same state of one of its members (then the cue is only the reason)."""
+        said = {}
+        for cat, cond, words, _ in self.cue_defaults:   # "it's too dark, I'm trying to sleep": which?
+            if cat and said.get(cat, (cond, words))[0] != cond:
+                raise TranslationError(f"'{said[cat][1]}' and '{words}' ask opposite things of the {cat}; say which")
+            said.setdefault(cat, (cond, words))
         for cat, cond, words, names in self.cue_defaults:
             if not cat:   # "we have finished listening, switch off the radio": the reason for a request
                 asked = [n for n, preds in self.goal.state.items()
