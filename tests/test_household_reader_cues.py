@@ -205,6 +205,8 @@ def test_a_refusal_offers_the_readings_near_it(croft):
     assert ({"pail": ["carton"]}, {}) in refused_with("That empty carton on the settle stinks.", croft)
     # how long, left out ("leave the larder open for five minutes" ends closed: never read so)
     assert ({}, {"kipper": ["hot"], "larder": ["closed"]}) in refused_with("Heat the kipper for two minutes.", croft)
+    # never the opposite of what was said: "smells fine" is not read as "smells"
+    assert ({"pail": ["kipper"]}, {"larder": ["closed"]}) not in refused_with("The kipper smells fine.", croft)
     # what a thing left on may need: switched off
     assert ({}, {"lantern": ["off"]}) in refused_with("The lantern's still on, can you sort that?", croft)
 

@@ -50,6 +50,9 @@ JOINERS = {"or": "and", "nor": "and"}
 #: operative words whose loss widens nothing when they describe a thing ("that empty box"): a
 #: candidate may read without them (it is only offered, never acted on unchosen)
 FREE_TO_DROP = {"empty", "full", "whole", "single", "first", "then", "after", "back"}
+#: words that say a thing is all right ("the milk smells fine"): left out, the rest would say the
+#: opposite, so no candidate reads without them
+APPRAISALS = {"fine", "ok", "okay", "good", "nice", "great", "alright", "normal", "perfect", "lovely"}
 #: clause marks of the command (dashes and brackets set a clause off too)
 _CLAUSE_SPLIT = re.compile(r"[,.;:!?()\[\]\u2013\u2014]|\s-\s")
 
@@ -163,7 +166,7 @@ def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[
     for w in unknown:   # "nobody is using the tablet or the radio": a list said with "or"
         if w in JOINERS:
             out.append((swap(w, JOINERS[w]), f"'{w}' read as '{JOINERS[w]}'", swap(w, JOINERS[w]), {}))
-    droppable = [w for w in dict.fromkeys(unknown) if not near_operative(w) and w not in JOINERS]
+    droppable = [w for w in dict.fromkeys(unknown) if not near_operative(w) and w not in JOINERS and w not in APPRAISALS]
     if len(droppable) > 1:   # "chop up the cucumber real quick": every word not understood, at once
         rest = " ".join(x for x in words if x not in droppable)
         out.append((rest, "read without " + ", ".join(f"'{w}'" for w in droppable) + " (not understood)", rest, {}))
