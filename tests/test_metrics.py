@@ -122,7 +122,7 @@ def household_bench(tmp_path_factory):
     return bench(tmp_path_factory.mktemp("household"), [
         {"id": "lamp", **team, "command": "Switch off the floor lamp.", "goal": {"state": {"floorlamp": ["off"]}}},
         {"id": "mug", **team, "feasible": False, "command": "Heat the mug in the microwave."},
-        {"id": "apple", **team, "command": "Put the apple in the fridge together.",
+        {"id": "apple", **team, "command": "Put the apple in the fridge sideways.",   # not understood: refused
          "goal": {"in": {"fridge": ["apple"]}, "state": {"fridge": ["closed"], "microwave": ["closed"]}}},
         # the milk comes out of the closed fridge, which is closed again (the household sets' convention)
         {"id": "two-drinks", **team, "command": "Put two drinks on the desk.",

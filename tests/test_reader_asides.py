@@ -63,9 +63,9 @@ def test_a_content_clause_still_needs_every_word() -> None:
 
 
 def test_household_talk_is_set_aside_and_said() -> None:
-    got = household("Toss the orange in the recycling, it's gone mouldy", STUDIO)
+    got = household("Toss the orange in the recycling, it's seen better days", STUDIO)
     assert got["goal"]["in"] == {"recycling": ["orange"]}
-    assert got["order"]["set_aside"] == ["it is gone mouldy"]
+    assert got["order"]["set_aside"] == ["it is seen better days"]
     assert "set aside" in got["explain"][-1]
     got = household("Morning! I'm off out, turn the radio off", STUDIO)
     assert got["goal"]["state"] == {"radio": ["off"]}

@@ -16,6 +16,15 @@ counts ``candidate_recall``). They are built, in this order of preference, from:
   quantities: :func:`pipflow.language.asides.near_operative`), since dropping one would widen
   what the robots do.
 
+* **a part of a name said alone**: a last word several names share ("the cupboard": each), a
+  modifier in the plural ("the leftovers");
+* **where the reading stopped**: a known word there that names nothing and is not operative, left
+  out ("that *empty* pizza box"); a duration left out ("for two minutes": never read, since "leave
+  the fridge open for five minutes" ends closed); every word not understood left out at once;
+* **the senses of a cue**: a reason of leaving or going to bed said alone offers the lights off and
+  everything that is on off; a thing "dealt with" that is on or open offers it off or closed; a cue
+  that may mean several sound or drink makers offers each (the resolver's choice).
+
 Each candidate is read by the same translator as any command, so it is a reading of this world
 (impossible ones are not offered). The search is bounded (:data:`MAX_TRIES` readings).
 """
@@ -26,8 +35,8 @@ import re
 from typing import Callable
 
 from pipflow.errors import PipflowError, TranslationError
-from pipflow.household.language.lexicon import words_of
-from pipflow.household.language.parser import _vocabulary, tag, world_phrases
+from pipflow.household.language.lexicon import LEAVING_REASONS, words_of
+from pipflow.household.language.parser import _vocabulary, known_word, tag, without_duration, world_phrases
 from pipflow.language.asides import FUNCTION_WORDS, near_operative
 from pipflow.language.spelling import distance
 
@@ -38,6 +47,12 @@ MAX_TRIES = 10
 #: words the reader refuses that join a list, and the joiner a candidate reads them as ("or" is
 #: a choice where the reader refuses it; in "nobody is using X or Y" it lists both)
 JOINERS = {"or": "and", "nor": "and"}
+#: operative words whose loss widens nothing when they describe a thing ("that empty box"): a
+#: candidate may read without them (it is only offered, never acted on unchosen)
+FREE_TO_DROP = {"empty", "full", "whole", "single", "first", "then", "after", "back"}
+#: words that say a thing is all right ("the milk smells fine"): left out, the rest would say the
+#: opposite, so no candidate reads without them
+APPRAISALS = {"fine", "ok", "okay", "good", "nice", "great", "alright", "normal", "perfect", "lovely"}
 #: clause marks of the command (dashes and brackets set a clause off too)
 _CLAUSE_SPLIT = re.compile(r"[,.;:!?()\[\]\u2013\u2014]|\s-\s")
 
@@ -48,18 +63,56 @@ def _goal_key(goal: dict) -> str:
                        "count": goal.get("count") or []}, sort_keys=True)
 
 
-def _modifier_names(world: dict) -> dict[str, list[str]]:
-    """First words of the names of two or more words -> the names of the things they begin
-    ("mobile" -> ["mobile phone"]), for a modifier said alone."""
+def _singulars(word: str) -> list[str]:
+    """Singular spellings a plural may have ("leftovers" -> "leftover", "dishes" -> "dish")."""
+    out = []
+    for end, repl in (("ies", "y"), ("es", ""), ("s", "")):
+        if word.endswith(end) and len(word) > len(end) + 2:
+            out.append(word[:-len(end)] + repl)
+    return out
+
+
+def _modifier_names(world: dict, at: int = 0) -> dict[str, list[str]]:
+    """First words (``at`` 0) or last words (``at`` -1) of the names of two or more words -> one
+    name of each thing they are part of ("mobile" -> ["mobile phone"]; "cupboard" -> ["food
+    cupboard", "wall cupboard"]), for a part of a name said alone."""
     out: dict[str, list[str]] = {}
     for table in (world.get("objects") or {}, world.get("places") or {}):
         for name, e in table.items():
             for phrase in [name] + list(e.get("words") or []):
                 ws = words_of(phrase)
-                if len(ws) >= 2 and ws[0] not in FUNCTION_WORDS:
+                if len(ws) >= 2 and ws[at] not in FUNCTION_WORDS:
                     full = " ".join(ws)
-                    if full not in out.setdefault(ws[0], []):
-                        out[ws[0]].append(full)
+                    names = out.setdefault(ws[at], [])
+                    if full not in names and not any(n.startswith(f"{name}\0") for n in names):
+                        names.append(f"{name}\0{full}")
+    return {w: [n.split("\0")[1] for n in names] for w, names in out.items()}
+
+
+def _stopped_wordings(words: list[str], index: dict, error: TranslationError) -> list[tuple[str, str, str, dict]]:
+    """Wordings from where the reading stopped, how long an action takes, and a reason said alone
+    (module docstring)."""
+    out: list[tuple[str, str, str, dict]] = []
+    said_how_long: list[str] = []
+    timed = without_duration(words, said_how_long)
+    if said_how_long:   # "heat the curry for two minutes": the end state, without how long
+        out.append((" ".join(timed), f"read without {said_how_long[0].split(' says')[0]} (how long)", " ".join(timed), {}))
+    # a known word where the grammar stopped, that no world name has and that is not operative: the
+    # rest may read whole ("that empty pizza box ... is starting to smell")
+    for phrase in getattr(error, "unplaced", []) or []:
+        ws = phrase.split()
+        if tuple(ws) in index or any(near_operative(x) and x not in FREE_TO_DROP for x in ws):
+            continue
+        at = next((k for k in range(len(words) - len(ws) + 1) if words[k:k + len(ws)] == ws), None)
+        if at is not None:
+            rest = " ".join(words[:at] + words[at + len(ws):])
+            out.append((rest, f"read without '{phrase}' (where the reading stopped)", rest, {}))
+    # a reason of leaving or going to bed, said alone: the lights off, or everything that is on off
+    left = [r for r in getattr(error, "reasons", []) or [] if any(x in r for x in LEAVING_REASONS)]
+    if left:
+        out.append(("it is too bright", f"'{left[0]}' read as the lights off", left[0], {}))
+        out.append(("switch off everything that is on", f"'{left[0]}' read as everything that is on switched off",
+                    left[0], {}))
     return out
 
 
@@ -75,11 +128,17 @@ def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[
     index = world_phrases(world)
     vocab = _vocabulary(index)
     modifiers = _modifier_names(world)
+    heads = {w: names for w, names in _modifier_names(world, -1).items() if len(names) > 1}
     try:
         tags = tag(command, world, [])
         unknown: list[str] = []
     except TranslationError as exc:   # the words the tagger could not read (after its own repairs)
         tags, unknown = [], [w for w in getattr(exc, "unread", []) if w in words]
+        # a word the tagger read as a misspelling of a word that names nothing alone ("leftovers"
+        # as "leftover"): the word as said
+        unknown += [x for w in getattr(exc, "unread", []) if w not in words
+                    for x in dict.fromkeys(words) if x not in unknown and x.isalpha() and distance(x, w) <= 2
+                    and not known_word(x, index, vocab)][:1]
     # one edit with any first letter ("vowl" for bowl), two with the same first letter ("tunrpi"):
     # "kettle" is never offered as "bottle"
     near: dict[str, list[tuple[int, str]]] = {
@@ -90,8 +149,12 @@ def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[
 
     for w in unknown:   # one edit first, then a modifier's whole name, then two edits
         out += [(swap(w, v), f"'{w}' read as '{v}'", v, {}) for d, v in near[w] if d == 1]
-    for w in unknown:
-        out += [(swap(w, full), f"'{w}' read as '{full}'", full, {}) for full in modifiers.get(w, [])]
+    for w in unknown:   # "the cupboard" where two things are cupboards: each of them
+        fulls = heads.get(w) or next((heads[s] for s in _singulars(w) if s in heads), [])
+        out += [(swap(w, full), f"'{w}' read as '{full}'", full, {}) for full in fulls]
+    for w in unknown:   # "the leftovers" of leftover_curry: a modifier said alone, in the plural too
+        fulls = modifiers.get(w) or next((modifiers[s] for s in _singulars(w) if s in modifiers), [])
+        out += [(swap(w, full), f"'{w}' read as '{full}'", full, {}) for full in fulls]
     for w in unknown:
         out += [(swap(w, v), f"'{w}' read as '{v}'", v, {}) for d, v in near[w] if d == 2]
     if not unknown:   # "the table lamp" where no lamp is on the table: the thing its last word names
@@ -103,10 +166,14 @@ def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[
     for w in unknown:   # "nobody is using the tablet or the radio": a list said with "or"
         if w in JOINERS:
             out.append((swap(w, JOINERS[w]), f"'{w}' read as '{JOINERS[w]}'", swap(w, JOINERS[w]), {}))
-    for w in unknown:
-        if not near_operative(w) and w not in JOINERS:
-            rest = " ".join(x for x in words if x != w)
-            out.append((rest, f"read without '{w}' (not understood)", rest, {}))
+    droppable = [w for w in dict.fromkeys(unknown) if not near_operative(w) and w not in JOINERS and w not in APPRAISALS]
+    if len(droppable) > 1:   # "chop up the cucumber real quick": every word not understood, at once
+        rest = " ".join(x for x in words if x not in droppable)
+        out.append((rest, "read without " + ", ".join(f"'{w}'" for w in droppable) + " (not understood)", rest, {}))
+    for w in droppable:
+        rest = " ".join(x for x in words if x != w)
+        out.append((rest, f"read without '{w}' (not understood)", rest, {}))
+    out += _stopped_wordings(words, index, error)
     parts = [p.strip() for p in _CLAUSE_SPLIT.split(command) if p.strip()]
     if len(parts) > 1:
         for part in parts:

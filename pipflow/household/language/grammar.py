@@ -26,24 +26,28 @@ _sep: COMMA | END | @AND | @THEN | @BUT
 
 ?item: change | toggle | put | gap | away | trash | chill | request | unwant | ensure | observe | cue | meal | after | reason
       | tend | notvia | usevia
+      | keep //+ STAY
+      | empty //+ V_EMPTY
+      | desire
+      | handling //+ HANDLING
 
-change: _vstate @UP? things @PIECES? via? exception? @HERE?
+change: _vstate @UP? things @PIECES? via? exception? _here?
       | _vstate things @UP via? exception?
       | @V_CLEAN things via? exception?
       | @V_GIVE things @ACT
 _vstate: @V_STATE | @V_OPEN | @V_SHUT | @V_WARM
 via: (@IN | @ON | @WITH | @AT) (place | placeref)
 
-toggle: @V_TOGGLE onoff tthings @HERE?
-      | @V_TOGGLE tthings onoff @HERE?
+toggle: @V_TOGGLE onoff tthings _here?
+      | @V_TOGGLE tthings onoff _here?
       | @V_SHUT off tthings
       | @V_SHUT tthings off
       | @V_TOGGLE typo_off tthings
       | @V_SHUTDOWN tthings
       | _vput tthings on
-      | @V_TOGGLE tthings onoff (@AND | COMMA @AND) tthings @HERE?
+      | @V_TOGGLE tthings onoff (@AND | COMMA @AND) tthings _here?
       | _vput tthings on (@AND | COMMA @AND) tthings
-      | @V_LIGHT tthings @HERE?
+      | @V_LIGHT tthings _here?
 typo_off: @OF
 tthings: tnp ((COMMA | @AND | COMMA @AND) tnp)*
 tnp: sel (@SWITCHPART | @V_TOGGLE)? where? exception?
@@ -52,23 +56,30 @@ on: @ON
 off: @OFF | @OUT
 
 put: _vput @UP? things source? target? exception?
+   | _vput @UP? things _particle target source?
+   | _vput @UP? things _particle source target?
+   | _wish things target
    | _vput @UP? things target source
    | _vput @OUT things | _vput things @OUT
    | _vput @UP? things source @AND target
    | _vput @UP? things @AWAY? target (@AND | COMMA @AND) things
    | _vput things @AWAY target
    | sthings @SHOULD? (@GOES | @BE) target
+   | @SHOULD sthings (@GOES | @BE) target
    | _vput @AWAY things target
    | @V_LEAVE things target
 _vput: @V_PUT | @V_THROW
+_particle: @OUT | @DOWN | @IN | @UP
 source: @FROM place | @OUT @OF? place | @OFF @OF? place
 target: _prep place | @SOMEWHERE? bare | _prep placeref
+      | _prep @THEWASH //+ THEWASH
 placeref: @IT
 _prep: @IN | @ON | @TO | @AT | @BACK @IN | @BACK @ON | @BACK @TO
 place: @THE? noun
 bare: noun
 
 gap: things target
+   | things _particle target
    | things onoff
    | things @TOO
 thengap: @THEN things -> gap
@@ -92,28 +103,47 @@ ensure: @V_MAKE @SURE @THAT? wish ((COMMA | @AND | COMMA @AND) wish)*
 wish: sthings (@IS | @SHOULD @BE) not? state
 not: @NOT
 state: @ADJ | @V_OPEN | @V_SHUT | @V_CLEAN | @V_WARM | @V_STATE | on | off | @TOGGLED onoff | @V_TOGGLE onoff
+     | @GOING //+ GOING
 
 after: @ONCE @SUBJ @HAVE? state things
-reason: @IT @IS (@INTENS | @TOO)* @REASON | @SUBJ @IS @REASON
-meal: (@V_MAKE | @V_PREPARE | _vstate) @THE? @MEAL @HERE?
-    | (@V_MAKE | @V_PREPARE) @THE? @V_STATE @HERE?
+reason: @IT @IS (@INTENS | @TOO)* @REASON | @SUBJ @IS @REASON | @REASON
+meal: (@V_MAKE | @V_PREPARE | _vstate) @THE? @MEAL _here?
+    | (@V_MAKE | @V_PREPARE) @THE? @V_STATE _here?
     | @SUBJ? (@WANT | @NEED) @THE? @MEAL
 
-observe: sthings @IS state
+observe: sthings @IS state _here?
+       | sthings @FOULS //+ FOULS
 
 cue: @NOBODY @IS? activity (@TO | @ON | @AT)? things? @ANYMORE?
+   | @NOBODY @IS? (@INROOM | _here) @ANYMORE? //+ INROOM ALLOVER
    | @SUBJ? @DONOT @NEED things (on | @ANYMORE)?
    | @NOBODY @NEED things @ANYMORE?
    | @SUBJ? @IS? @DONE things @ANYMORE?
    | @SUBJ @HAVE? @FINISHED activity things?
    | sthings @IS @NOT @NEEDED @ANYMORE?
-   | @IT @IS (@INTENS | @TOO)* tempcue @HERE? (@WITH @THAT? things (@GOING | on))?
-   | @IT @IS (@INTENS | @TOO)* tempadj @HERE (@WITH @THAT? things (@GOING | on))?
-   | @SUBJ @IS (@INTENS | @TOO)* (tempcue | tempadj) @HERE?
-   | @IT @IS (@INTENS | @TOO)* lightcue @HERE?
-   | @SUBJ @CANNOT @SEE @HERE?
+   | @IT @IS (@INTENS | @TOO)* tempcue _here? (@WITH @THAT? things (@GOING | on))?
+   | @IT @IS (@INTENS | @TOO)* tempadj _here (@WITH @THAT? things (@GOING | on))?
+   | @SUBJ @IS (@INTENS | @TOO)* (tempcue | tempadj) _here?
+   | @IT @IS (@INTENS | @TOO)* lightcue _here?
+   | @IT @IS (@INTENS | @TOO)* lightcue _here? _doact //+ DOACT SEE
+   | _wish _doact things? _here? //+ DOACT SEE
+   | @SUBJ @IS? @SLEEPCUE //+ SLEEPCUE
+   | @SUBJ @CANNOT @SEE things? _here? //+ CANNOT
+   | @IT @IS (@INTENS | @TOO)* soundcue _here? //+ SOUNDCUE
+   | _vput _music on //+ MUSIC
+   | @V_TOGGLE on _music //+ MUSIC
+   | @V_PLAY _music //+ MUSIC
+   | _wish _music //+ MUSIC
+   | _wish @THE? @HOTDRINK @ANYMORE? //+ HOTDRINK
+   | (@V_MAKE | @V_PREPARE) @THE? @HOTDRINK //+ HOTDRINK
 activity: @ACTIVITY
 lightcue: @LIGHTCUE
+soundcue: @SOUNDCUE
+_wish: @SUBJ? (@WANT | @NEED)
+_doact: @TO (@DOACT | @SEE)
+_music: @THE? @MUSIC
+_here: @HERE
+     | @ALLOVER //+ ALLOVER
 tempcue: @TEMPCUE
 tempadj: @ADJ
 
@@ -121,7 +151,16 @@ notvia: @NOT via
 usevia: @V_USE @THE? place
 
 tend: @V_TEND @OUT? things | @V_TEND things @OUT
-    | sthings @IS? @MESS
+    | sthings @IS? @MESS -> mess
+    | sthings @IS? @ALLOVER -> mess //+ ALLOVER
+    | @LEFT things (@OUT | @ALLOVER) -> mess //+ LEFT
+    | @THERE @IS sthings (@MESS | @ALLOVER) -> mess //+ THERE
+    | (place | @ROOMSAID) @IS @FULLOF things -> mess //+ FULLOF
+
+keep: @V_LEAVE things @STAY
+handling: sthings @IS (@INTENS | @TOO)* @HANDLING @FORONE?
+empty: @V_EMPTY @OUT? place target?
+desire: _wish @THE? adj+ noun
 
 things: np ((COMMA | @AND | COMMA @AND) np)*
       | @BOTH np @AND np
@@ -154,13 +193,35 @@ def classes() -> list[str]:
     return sorted({cls for cls, _ in PHRASES.values()})
 
 
-def grammar_text(dual: frozenset[str] | None = None) -> str:
+#: marks a line of the rules kept only for a command with a token of one of the classes after it:
+#: an alternative that needs a terminal the command lacks can never match, and every alternative
+#: is work for Earley at every position where it could start (the cues and constructions of issue
+#: 23's second step would cost every command ~1.5x otherwise)
+GATE = "//+"
+
+
+def gated_classes() -> frozenset[str]:
+    """Every class some gated line of the rules needs (:data:`GATE`)."""
+    return frozenset(c for line in _RULES.splitlines() if GATE in line for c in line.split(GATE)[1].split())
+
+
+def grammar_text(dual: frozenset[str] | None = None, present: frozenset[str] | None = None) -> str:
     """The lark grammar: ``@C`` expanded to ``(C | C__NOUN)``, ``NOUN__`` to ``NOUN`` and every
     dual class; the terminals are declared (a custom lexer supplies them). ``dual``: only these
     classes get a ``__NOUN`` twin (the classes whose words are also names of the world at hand):
     each twin is one more alternative wherever a noun may stand, which Earley pays for at every
-    noun position of every command, so a grammar for one world carries only the twins it needs."""
-    text = _RULES
+    noun position of every command, so a grammar for one world carries only the twins it needs.
+    ``present``: only the gated lines (:data:`GATE`) whose classes are among these (the classes of
+    the command at hand); None: every line."""
+    lines = []
+    for line in _RULES.splitlines():
+        if GATE in line:
+            rule, needs = line.split(GATE)
+            if present is not None and not set(needs.split()) & present:
+                continue
+            line = rule.rstrip()
+        lines.append(line)
+    text = "\n".join(lines)
     twins = classes() if dual is None else sorted(dual)
     duals = [c + NOUN_DUAL for c in twins]
     for c in sorted(classes(), key=len, reverse=True):

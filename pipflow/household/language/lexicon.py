@@ -80,6 +80,8 @@ _add("V_TOGGLE", "turn,switch,power,flip,flick")
 _add("V_LIGHT", "light,light up", "on")
 #: "chill the juice": into the home's cold place (the category named, or with a word, "cold")
 COLD = "cold"
+#: "put the clothes in the wash": the home's one laundry place (lexicon ``LAUNDRY_PLACES``)
+LAUNDRY = "laundry"
 _add("V_CHILL", "chill,cool,refrigerate,cool down,chill down")
 _add("TOGGLED", "turned,switched,powered")
 #: verbs that mean "off" by themselves ("shut down the tablet"); "turn down" is a volume, not here
@@ -94,7 +96,18 @@ _add("UNIT", "pieces of,bits of,items of")
 #: "a piece of fruit" is a determiner of one (a unit word in the determiner keeps the grammar small)
 UNIT_DETERMINERS = {"a piece of", "a bit of", "an item of"}
 _add("V_PUT", "put,place,move,bring,take,carry,set,transfer,gather,collect,stash,drop,store,stick,pop,lay,"
-     "hang,deliver,fetch,get,pick,relocate,stack,grab,shift,clear,pack")
+     "hang,deliver,fetch,get,pick,relocate,stack,grab,shift,clear,pack,lift,haul,lug,hand,drag,plonk,bung,"
+     "shove,tuck,hoist,ferry,send")
+#: "empty the fridge onto the counter": everything in a place taken, to where the command says
+_add("V_EMPTY", "empty,clear out,unload,unpack")
+#: "put the espresso cup down on the bar": a particle of the move before where it goes
+_add("DOWN", "down")
+#: "leave the hoodie where it is": the thing stays in the place it is in now
+_add("STAY", "where it is,where they are,as it is,as they are,alone,in place,where it was,where they were,"
+     "where you found it,where you found them")
+#: "someone's left the lemon out": disorder said of things, like ``MESS`` (a later clause that
+#: acts on them makes it the reason)
+_add("LEFT", "left,has left,have left,someone has left,somebody has left,someone left,somebody left")
 _add("V_THROW", "throw,toss,chuck")
 _add("V_TRASH", "trash,discard,bin,dump,junk,get rid of,dispose of,throw away,throw out")
 _add("V_TIDY", "tidy,return,clear away")
@@ -118,7 +131,73 @@ _add("MESS", "all over the place,piling up,piled up,lying around,lying about,lef
      "scattered around,strewn about,strewn around,a mess,in a mess,messy,a tip")
 for _w in LIGHT_CUES:
     PHRASES[(_w,)] = ("LIGHTCUE", LIGHT_CUES[_w])
-_add("SEE", "see")
+_add("SEE", "see,read,see anything,read anything")
+#: "I'm trying to sleep", "going to sleep": the lights off (a cue like "it is too bright")
+_add("SLEEPCUE", "trying to sleep,trying to nap,trying to get some sleep,trying to get to sleep,going to sleep,"
+     "want to sleep,need to sleep,off to sleep,having a nap,taking a nap,going to have a nap,sleeping,napping,"
+     "trying to have a nap,want a nap,need a nap")
+#: "I want to watch something", "I'd like to read", "it's too dark to study": an activity wished for
+#: (value: what it needs on: a kind of lexicon ``DEVICES``, or the light category)
+DO_ACTIVITIES = {"watch": "screen", "listen": "sound", "study": "light", "work": "light", "read": "light"}
+for _w, _v in DO_ACTIVITIES.items():
+    if (_w,) not in PHRASES:
+        _add("DOACT", _w, _v)
+_add("DOACT", "watch something,watch telly,watch tv,listen to something,listen to music,do some reading,do some work,"
+     "get some work done,hear something", None)
+for _p in ("watch something", "watch telly", "watch tv"):
+    PHRASES[tuple(_p.split())] = ("DOACT", "screen")
+for _p in ("listen to something", "listen to music", "hear something"):
+    PHRASES[tuple(_p.split())] = ("DOACT", "sound")
+for _p in ("do some reading", "do some work", "get some work done"):
+    PHRASES[tuple(_p.split())] = ("DOACT", "light")
+#: "there are dishes everywhere": an existential opening
+_add("THERE", "there")
+#: "the sink is full of dishes", "the floor is covered in clothes": disorder said of what a place holds
+_add("FULLOF", "full of,covered in,covered with,piled with,piled high with,littered with,stacked with,cluttered with")
+#: "it's too quiet in here" -> the home's sound makers on; "it's too loud" -> the ones on, off
+SOUND_CUES = {"quiet": "on", "silent": "on", "loud": "off", "noisy": "off", "deafening": "off"}
+for _w, _v in SOUND_CUES.items():
+    _add("SOUNDCUE", _w, _v)
+#: what plays sound: a thing that switches and is named or worded so (or a member of a category
+#: so named); "put some music on", "it's too quiet in here"
+SOUND_MAKERS = ("radio", "radios", "speaker", "speakers", "stereo", "record player", "turntable", "music",
+                "hifi", "hi fi", "sound system", "music player", "jukebox", "gramophone", "music system")
+_add("MUSIC", "music,some music,a tune,some tunes,tunes,a song,some songs")
+_add("V_PLAY", "play")
+#: a hot drink wished for ("could murder a cuppa", "I'd love a cup of tea", "make a brew"): the
+#: home's drink makers on (a kettle, a coffee machine); the drink itself is no thing of the home
+HOT_DRINKS = ("cuppa", "cup of tea", "tea", "brew", "coffee", "cup of coffee", "hot drink", "cocoa", "hot chocolate",
+              "mug of tea", "pot of tea", "espresso", "latte", "cappuccino")
+_add("HOTDRINK", ",".join(HOT_DRINKS))
+#: what makes a hot drink: a thing that switches and is named or worded so
+DRINK_MAKERS = ("kettle", "kettles", "coffee machine", "coffee maker", "espresso machine", "teasmade", "urn",
+                "percolator", "coffee pot", "bean to cup", "samovar")
+#: the kinds of thing a cue of the room may speak of (cue ``device``): what warms the room, what
+#: plays sound, what makes a hot drink; each read from the world's names and words
+#: what shows something to watch
+SCREENS = ("tv", "television", "telly", "projector", "screen", "monitor", "tv set")
+DEVICES = {"heating": ROOM_HEATERS, "sound": SOUND_MAKERS, "hot drink": DRINK_MAKERS, "screen": SCREENS}
+DEVICE_NOUNS = {"heating": "room heater", "sound": "sound maker", "hot drink": "drink maker", "screen": "screen"}
+#: "the mug is minging", "the pizza box is starting to smell": foulness said of a thing. A thing
+#: that washes is washed; food and rubbish (a category named or worded so) go in the bin; any
+#: other thing is asked (docs/household.md, cues)
+FOUL_WORDS = {"minging", "smelly", "stinky", "rank", "gross", "disgusting", "rotten", "mouldy", "moldy", "manky",
+              "grotty", "rancid", "putrid", "revolting", "whiffy", "pongy", "skanky", "nasty", "foul", "stale",
+              "sour", "off"}
+for _w in FOUL_WORDS - {"off"}:
+    _add("ADJ", _w, "dirty")
+#: a foul predicate said whole: "the fish smells off", "the scone has gone stale", "it's gone mouldy"
+_add("FOULS", ",".join(
+    [f"{v}{' ' + how if how else ''}" for v in ("smells", "stinks", "reeks", "smell", "stink", "reek", "is smelling",
+                                              "is stinking", "is starting to smell", "is beginning to smell",
+                                              "started to smell", "is starting to stink")
+     for how in ("", "off", "bad", "awful", "funny", "horrible", "terrible")]
+    + [f"{v} {how}" for v in ("has gone", "have gone", "is gone", "are gone", "has turned", "have turned",
+                              "is going", "are going", "went", "gone", "turned")
+       for how in sorted(FOUL_WORDS - {"rank", "gross", "disgusting", "revolting", "nasty", "foul", "grim"}) + ["bad"]]),
+     "dirty")
+#: the words that say a rubbish or food thing is for the bin when it is foul
+BIN_KINDS = ("rubbish", "trash", "garbage", "litter", "waste", "junk", "recycling", "food", "leftovers")
 _add("THE", "the,a,an,my,our,your,its,their,his,her,these,those,this,some")
 _add("THE", "a piece of,a bit of,an item of")
 _add("THAT", "that,which,who")
@@ -148,13 +227,23 @@ _add("AWAY", "away,where it belongs,where they belong,where it goes,where they g
 _add("BACK", "back")
 _add("OF", "of")
 _add("IT", "it,them,they")
+#: "slice the cucumber and leave the slices on the table": what an action made of the things
+#: before is those things
+_add("IT", "the slices,the pieces,the bits,the chunks,the halves,the lot")
 _add("EXCEPT", "except,except for,apart from,other than,besides,excluding,but not")
 _add("NOT", "not")
-_add("IS", "is,are,am,is still,are still")
+#: "is", and the perfect of a state said of a thing ("the console has been on all night", "the
+#: drink has gone warm", "the curry has gone off"): a description, like "is"
+_add("IS", "is,are,am,is still,are still,has been,have been,has gone,have gone,has got,have got,has become,"
+     "has been left,have been left")
 _add("BE", "be,stay,remain,stays,remains,go")
 _add("SHOULD", "should,must,has to,have to,needs to,need to,ought to,got to,can")
 _add("SUBJ", "i,we,you")
-_add("WANT", "want,would like,like,wish,d like,prefer")
+#: wishes: "I want X", and what people say for it of food and drink ("I fancy a warm bagel",
+#: "could murder a cuppa", "I'd love a tea", "I'm dying for a coffee")
+_add("WANT", "want,would like,like,wish,d like,prefer,fancy,would love,love,could murder,could kill for,"
+     "am dying for,am craving,crave,would kill for,could do with,could use,am gasping for,can i get,can i have,"
+     "could i get,could i have,may i have,can we get,can we have,could we have,could we get")
 _add("NEED", "need,needs,wants")
 _add("NEEDED", "needed,necessary,required,in use")
 #: "we are done with the laptop": the thing is not needed (a state cue, like "we do not need")
@@ -165,21 +254,55 @@ _add("HAVE", "have,has")
 #: "once you have washed the pan, put it ...": a clause done first
 _add("ONCE", "once,after,when")
 #: "X goes in P", "X belongs on P": where X should end
-_add("GOES", "goes,belongs,belong")
+_add("GOES", "goes,belongs,belong,lives,live,is meant to live,is meant to go,is meant to be,are meant to live,"
+     "are meant to go,are meant to be,is supposed to live,is supposed to go,is supposed to be,are supposed to go,"
+     "are supposed to be,are supposed to live,should live,should go,should be kept,is kept,are kept,usually goes,"
+     "usually lives")
 #: reasons that ask for nothing by themselves ("it is late, turn off the TV"): dropped before a
 #: request, refused alone
+#: reasons of leaving the home or going to bed: alone they ask for nothing two people agree on
+#: (the lights off? everything off?), so they are asked, offering both (docs/household.md, cues)
+LEAVING_REASONS = {"bedtime", "time for bed", "off to bed", "going to bed", "heading to bed", "off out", "going out",
+                   "heading out", "off to work", "going to work", "late", "night time"}
 _add("REASON", "late,bedtime,time for bed,night time,off to bed,going to bed,heading to bed,off out,going out,"
      "heading out,off to work,going to work")
+#: how a thing is to be handled, said of it ("the wok is too heavy for one of you", "the can is
+#: leaking"): a reason for how the robots work, not an end state of the home; alone it asks nothing
+_add("HANDLING", "heavy,bulky,awkward,fragile,delicate,breakable,slippery,leaking,dripping,broken,cracked,chipped,"
+     "wet,sticky,too big,too heavy,too awkward,quite heavy")
+_add("FORONE", "for one of you,for one robot,for one person,for one,to carry alone,to lift alone,on your own,"
+     "for one of them,to lift on your own,to carry on your own")
+#: exclamations that ask for nothing by themselves ("What a tip.", "Ugh, ..."): reasons
+_add("REASON", "what a mess,what a tip,what a state,what a pigsty,what a dump,ugh,urgh,ew,eww,yuck,blimey")
 _add("DONOT", "do not,does not,did not,no longer,dont")
 _add("ANYMORE", "anymore,any more,any longer,for now,for the night,tonight,right now")
 _add("NOBODY", "nobody,no one,noone,none of us")
 _add("INTENS", "very,so,really,quite,rather,extremely,pretty,a bit,a little,way too,much too,far too,getting")
 _add("TOO", "too,as well")
 #: "it's freezing with that fan going": a thing said to be running
-_add("GOING", "going,running,blasting,blaring,whirring,humming")
+_add("GOING", "going,running,blasting,blaring,whirring,humming", "on")
 _add("CANNOT", "can not,could not,cannot")
 _add("SOMEWHERE", "somewhere,some place,someplace")
-_add("HERE", "here,in here,in the house,in the home,in the flat,in the apartment,around the house,everywhere")
+#: words for the home itself or a room of it, which no world lists as a place: "in here", "all
+#: over the flat", "over here" (where a cue is felt, or a mess lies). A world that has a thing so
+#: named ("kitchen" of a kitchen place) keeps it: the tagger reads its name, not these phrases
+HOME_WORDS = ("house", "home", "flat", "apartment", "cabin", "boat", "cottage", "studio", "loft")
+#: rooms of a home, which no world lists as places: "nobody is in the kitchen" is a cue (what was
+#: observed there off); "turn off the lights in the kitchen" names no part of the home model and is
+#: refused (reading it as "here" would widen the order)
+ROOM_WORDS = ("room", "lounge", "living room", "sitting room", "bedroom", "kitchen", "hall", "hallway", "study",
+              "office", "dining room", "bathroom", "floor")
+_add("HERE", "here,in here,over here,over there," + ",".join(f"in the {h},around the {h}" for h in HOME_WORDS))
+_add("ROOMSAID", ",".join(f"the {r},my {r},our {r}" for r in ROOM_WORDS))
+_add("INROOM", ",".join(f"in the {r},in {r}" for r in ROOM_WORDS) + ",at home,home")
+#: "put the clothes in the wash": the home's one laundry place (a place named or worded so)
+_add("THEWASH", "the wash")
+LAUNDRY_PLACES = ("laundry basket", "washing basket", "laundry", "hamper", "washing machine", "washer",
+                  "laundry bin", "linen basket", "dirty clothes basket", "clothes basket")
+#: "everywhere", "all over (the flat)": where a cue is felt ("lights on everywhere"), or, said of
+#: things, disorder like ``MESS`` ("clothes everywhere", "the cat's toys are all over the flat")
+_add("ALLOVER", "everywhere,all over,everywhere in here," + ",".join(f"all over the {h},everywhere in the {h}"
+                                                                    for h in HOME_WORDS + ROOM_WORDS))
 _add("PIECES", "in half,in two,into pieces,into slices,into cubes,in pieces,in slices,into halves")
 _add("DOOR", "door,doors,lid,lids")
 #: the part of a switching thing that switches it: "turn on the lamp switch" is the lamp
@@ -239,7 +362,18 @@ FILLER = {("please",), ("kindly",), ("just",), ("quickly",), ("now",), ("for", "
           ("do", "not", "forget", "to"), ("remember", "to"), ("make", "sure", "to"), ("you", "can"),
           ("pls",), ("plz",), ("plse",), ("thx",), ("ta",), ("cheers",),
           ("while", "you", "are", "at", "it"), ("when", "you", "get", "a", "chance"), ("when", "you", "can"),
-          ("be", "a", "dear", "and"), ("be", "a", "love", "and"), ("be", "an", "angel", "and"), ("be", "a", "star", "and")}
+          ("be", "a", "dear", "and"), ("be", "a", "love", "and"), ("be", "an", "angel", "and"), ("be", "a", "star", "and"),
+          ("while", "you", "are", "about", "it"), ("while", "you", "are", "there"), ("if", "you", "get", "a", "chance"),
+          ("honestly",), ("seriously",), ("even",), ("actually",),
+          ("the", "two", "of", "you"), ("both", "of", "you"), ("you", "two"), ("you", "both"), ("all", "of", "you"),
+          ("the", "pair", "of", "you"), ("you", "guys"), ("guys",)}
+#: when something happened or for how long, which says nothing of how the home should end
+#: ("the console has been on all night", "last night's dishes"): dropped like politeness
+TIME_WORDS = {("all", "night"), ("all", "day"), ("all", "evening"), ("all", "morning"), ("all", "afternoon"),
+              ("all", "week"), ("for", "hours"), ("for", "ages"), ("for", "days"), ("last", "night"),
+              ("yesterday",), ("this", "morning"), ("earlier",), ("since", "yesterday"), ("since", "breakfast"),
+              ("since", "lunch"), ("since", "dinner"), ("overnight",)}
+FILLER |= TIME_WORDS
 #: how the steps are to be run, not what the home should end like: a goal is the end state, and
 #: the planner and the allocator decide the order and what runs in parallel. A clause made only of
 #: "do" + what it does it to + one of these, or of one of these alone, is read as no condition
@@ -256,6 +390,10 @@ ORDER_OPENERS = {"first", "firstly", "start", "to", "with"}
 ORDER_WORDS = {"first", "firstly", "last", "lastly", "second", "secondly"}
 #: determiners after which "first" is an ordinal ("the first mug")
 ORDINAL_DETERMINERS = {"the", "a", "an", "my", "your", "our", "this", "that", "its", "their", "his", "her"}
+#: how long an action takes ("heat the curry for two minutes"): how, not what the home ends like;
+#: "for" + (about / like / around / a few / a couple of)? + a number + one of these is dropped
+DURATION_UNITS = {"second", "seconds", "sec", "secs", "minute", "minutes", "min", "mins", "hour", "hours", "hr", "hrs"}
+DURATION_HEDGES = {"like", "about", "around", "roughly", "maybe", "a", "few", "couple", "of", "an", "another"}
 #: containers people name an amount by ("a bowl of cherries", "a bag of flour"): no thing of the
 #: home model holds another, so "a bowl of X" is some X; when the home has a thing named by the
 #: container word itself (a bowl), it is refused: the bowl may be meant too
@@ -306,13 +444,17 @@ _STATE_WORDS = sorted({w for w in ADJECTIVES} | {"on", "off"}, key=len, reverse=
 #: reading: sentence and clause punctuation (. ; ! ? end a sentence, the ellipsis too); the
 #: apostrophes of contractions and possessives; "-" and "_" inside names (a space), "-" before a
 #: number (a minus sign: no count); quotes, brackets and dashes (nothing)
-MARKS = frozenset(".,;:!?'\"()[]-_\u2018\u2019\u201c\u201d\u2010\u2011\u2012\u2013\u2014\u2015\u2026")
+MARKS = frozenset("+&.,;:!?'\"()[]-_\u2018\u2019\u201c\u201d\u2010\u2011\u2012\u2013\u2014\u2015\u2026")
 
 
 def normalize(text: str) -> str:
     """Lower case, contractions spelt out ("don't" -> "do not"), hyphens and underscores as
     spaces, so that "desk-lamp", "desk_lamp" and "desk lamp" read alike."""
     t = text.lower().replace("’", "'").replace("\u2026", "...")
+    t = re.sub(r"\s*[+&]\s*", " and ", t)   # "noodles + curry", "salt & pepper"
+    # a dash set off by spaces, or an en or em dash, is a pause, like a comma ("throw it away -
+    # it smells off - and ..."); a hyphen inside a word joins it ("desk-lamp")
+    t = re.sub(r"\s[-\u2010-\u2015]+\s|[\u2013\u2014\u2015]", " , ", t)
     t = re.sub(r"\b(don't|dont)\b", "do not", t)
     t = re.sub(r"\bdoesn't\b", "does not", t)
     t = re.sub(r"\bcan't\b|\bcannot\b", "can not", t)
@@ -323,6 +465,8 @@ def normalize(text: str) -> str:
     t = re.sub(r"'ll\b", " will", t)
     # "the oven's open", "the TV's still on": 's before a state word is "is", not a possessive
     t = re.sub(r"'s(?=\s+(?:still\s+|not\s+|too\s+|very\s+|so\s+)?(?:" + "|".join(_STATE_WORDS) + r")\b)", " is", t)
+    t = re.sub(r"'s(?=\s+(?:been|gone|got|become|left)\b)", " has", t)   # "the console's been on"
+    t = re.sub(r"'s(?=\s+[a-z]{3,}ing\b)", " is", t)   # "the watering can's leaking"
     t = re.sub(r"\b(i|we|you)'d\b", r"\1 would", t)
     t = re.sub(r"\b(we|you|they)'re\b", r"\1 are", t)
     t = re.sub(r"\bi'm\b", "i am", t)

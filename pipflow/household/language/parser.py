@@ -29,16 +29,20 @@ from lark.lexer import Lexer
 from lark.visitors import CollapseAmbiguities
 
 from pipflow.errors import TranslationError
-from pipflow.household.language.grammar import NOUN_DUAL, grammar_text
+from pipflow.household.language.grammar import NOUN_DUAL, gated_classes, grammar_text
 from pipflow.household.world import members
-from pipflow.household.language.lexicon import (ACTIVITIES, COLD, FILLER, FILLER_TYPO_TARGETS, LIGHT_CATEGORY_WORD, MANNER_OBJECTS,
+from pipflow.household.language.lexicon import (ACTIVITIES, COLD, DURATION_HEDGES, DURATION_UNITS, FILLER, FOUL_WORDS,
+                                                LAUNDRY, FILLER_TYPO_TARGETS, LIGHT_CATEGORY_WORD, MANNER_OBJECTS,
                                                 MANNERS, MARKS, MEALS, MEASURES, OPPOSITE, ORDER_WORDS, ORDINAL_DETERMINERS,
-                                                PHRASES, PURPOSES, TEMPERATURE_ADJECTIVES, UNIT_DETERMINERS, plurals, words_of)
+                                                PHRASES, PURPOSES, TEMPERATURE_ADJECTIVES, TIME_WORDS, UNIT_DETERMINERS, plurals,
+                                                words_of)
 from pipflow.language.asides import EXCLUSIVITY, FUNCTION_WORDS, NEGATION, clauses, content_free, said
 from pipflow.language.characters import refuse_unread
 from pipflow.language.numbers import read_number
 from pipflow.language.spelling import distance
 
+#: the classes some gated line of the grammar needs
+GATED = gated_classes()
 #: the most readings of one ambiguous command that are compared (each is resolved); more is
 #: refused, never cut short
 MAX_READINGS = 64
@@ -175,12 +179,26 @@ def known_word(w: str, index: dict, vocab: set[str]) -> bool:
         any(w in key for key in index) or any(w in key for key in FILLER) or bool(read_number([w], 0))
 
 
+#: endings of English inflection: a shared one says nothing of whether two words are one word
+#: misspelt ("trying" and "tidying" share "ing"; what is left, "try" and "tidy", is two edits apart)
+INFLECTIONS = ("ing", "ed", "es", "s")
+
+
+def _stem(known: str, word: str) -> str:
+    """``known`` without an inflectional ending it shares with ``word``: the length that earns a
+    second edit is the stem's, so "starving" is not read as "stacking", nor "trying" as "tidying"."""
+    for end in INFLECTIONS:
+        if known.endswith(end) and word.endswith(end) and len(known) > len(end) + 2:
+            return known[:-len(end)]
+    return known
+
+
 def _typo_of(word: str, vocab: set[str]) -> list[str]:
     """Known words ``word`` may be a misspelling of, closest first: the same first letter and one
     edit (two for words of 7 letters or more; a swap of neighbours is one). "toaster" is not
     "toast", "ones" is not "phones": a guess that names another thing would be a misreading."""
     near = [(distance(word, v), v) for v in vocab if v[0] == word[0] and abs(len(v) - len(word)) <= 2]
-    near = [(d, v) for d, v in near if d <= (1 if len(v) <= 6 else 2)]
+    near = [(d, v) for d, v in near if d <= (1 if len(_stem(v, word)) <= 6 else 2)]
     best = min((d for d, _ in near), default=None)
     return [v for d, v in sorted(near) if d == best]
 
@@ -218,10 +236,16 @@ def _without_manner(words: list[str], notes: list[str]) -> list[str]:
                 out.append(w)   # a sentence's end stays; a comma goes with the clause
             start = k + 1
             continue
+        clause = _without_inner_manner(clause, notes)
+        while len(clause) > 2 and clause[-1] in CLOSING_ORDER_WORDS and clause[-2] not in ("for", "until", "till"):
+            # "bring them to the desk after" ("for later" is a purpose: _without_purpose)
+            notes.append(f"'{clause[-1]}': the order of the steps; the plan decides it")
+            clause = clause[:-1]
         kept = []
         for j, x in enumerate(clause):   # "wash the mug first", "first the mug, then the plate"
             if x in ORDER_WORDS and not (j and clause[j - 1] in ORDINAL_DETERMINERS) and \
-                    not (j + 1 < len(clause) and clause[j + 1] == "of"):
+                    not (j + 1 < len(clause) and clause[j + 1] == "of") and \
+                    not (j + 1 < len(clause) and (x, clause[j + 1]) in TIME_WORDS):
                 notes.append(f"'{x}': the order of the steps; the plan decides it")
                 continue
             kept.append(x)
@@ -231,6 +255,47 @@ def _without_manner(words: list[str], notes: list[str]) -> list[str]:
     while out and out[-1] == ",":
         out.pop()
     return out
+
+
+#: words after which a manner phrase closes what it says ("lift it in together and wash it")
+_MANNER_ENDS = {"and", "then"}
+
+
+def _without_inner_manner(clause: list[str], notes: list[str]) -> list[str]:
+    """A clause that asks something, without a manner phrase (lexicon ``MANNERS``) closing it or
+    one of its parts joined by "and" / "then" ("lift it into the sink together and wash it"):
+    how, not what the home should end like."""
+    out: list[str] = []
+    j = 0
+    while j < len(clause):
+        m = next((m for m in sorted(MANNERS, key=len, reverse=True) if tuple(clause[j:j + len(m)]) == m), None)
+        end = j + len(m) if m else j
+        if m and out and (end == len(clause) or clause[end] in _MANNER_ENDS) and out[-1] not in _MANNER_ENDS:
+            notes.append(f"'{' '.join(m)}' says how the steps run, not what the home should end like")
+            j = end
+            continue
+        out.append(clause[j])
+        j += 1
+    return out
+
+
+def without_duration(clause: list[str], notes: list[str]) -> list[str]:
+    """Words without how long an action takes ("heat the curry for like two minutes", lexicon
+    ``DURATION_UNITS``). Not done when reading: "leave the fridge open for five minutes" ends with
+    it closed, so a duration is refused; a refusal offers the reading without it as a candidate
+    (:mod:`pipflow.household.language.candidates`), for the user to choose."""
+    for j, w in enumerate(clause):
+        if w != "for":
+            continue
+        k = j + 1
+        while k < len(clause) and clause[k] in DURATION_HEDGES:
+            k += 1
+        num = read_number(clause, k) if k < len(clause) else None
+        end = num[1] if num else (k if k > j + 1 and clause[k - 1] in ("few", "couple", "of") else None)
+        if end is not None and end < len(clause) and clause[end] in DURATION_UNITS:
+            notes.append(f"'{' '.join(clause[j:end + 1])}' says how long, not what the home should end like")
+            return clause[:j] + clause[end + 1:]
+    return clause
 
 
 def _without_purpose(clause: list[str], notes: list[str]) -> list[str]:
@@ -290,6 +355,16 @@ def _located(tags: list["Tag"], world: dict, notes: list[str]) -> list["Tag"]:
     return out
 
 
+#: lexicon classes of phrases that name the home or a room of it ("in the kitchen", "all over the
+#: flat"): a world name inside one is read as the name
+HOME_CLASSES = {"HERE", "ALLOVER", "INROOM", "THEWASH", "ROOMSAID"}
+
+
+#: words that put a step after the others, closing a clause ("... and bring them to the desk
+#: after", "put it back afterwards"): the order of the steps, which the plan decides
+CLOSING_ORDER_WORDS = {"after", "afterwards", "afterward", "later", "next"}
+
+
 #: the tags a sentence that only restates the order of things has: "first the mug, then the plate"
 _ORDER_ONLY = {"THE", "NOUN", "COMMA", "AND", "THEN"}
 
@@ -316,12 +391,71 @@ def _restated_order(tags: list[Tag], notes: list[str]) -> list[Tag]:
     return out
 
 
+def _act_before_noun(tags: list[Tag]) -> list[Tag]:
+    """ "I need a clean mug": an action noun ("a clean", "a wash") before a name is a determiner and a
+    state word, not the action ("give it a clean")."""
+    out: list[Tag] = []
+    for k, t in enumerate(tags):
+        nxt = tags[k + 1] if k + 1 < len(tags) else None
+        ws = t.words.split()
+        if t.cls == "ACT" and len(ws) == 2 and nxt is not None and (nxt.cls == "NOUN" or nxt.cls.endswith(NOUN_DUAL)) \
+                and (ws[1],) in PHRASES and PHRASES[(ws[1],)][0] in ("V_CLEAN", "ADJ"):
+            out += [Tag("THE", None, ws[0]), Tag(PHRASES[(ws[1],)][0], PHRASES[(ws[1],)][1], ws[1])]
+            continue
+        out.append(t)
+    return out
+
+
+def _demonstratives(tags: list[Tag]) -> list[Tag]:
+    """ "That leftover curry has gone off": "that" opening a clause before a name (or a state word
+    and a name) is a determiner, like "the"; elsewhere it stays a relative ("the lamp that is on")
+    or a conjunction ("make sure that ..."). Done here, not in the grammar: one more determiner
+    there is one more alternative at every noun of every command."""
+    out = list(tags)
+    for k, t in enumerate(out):
+        if t.cls == "THAT" and k and out[k - 1].cls.startswith("V_") and \
+                (k + 1 == len(out) or out[k + 1].cls in ("END", "COMMA")):
+            out[k] = Tag("IT", t.value, t.words)   # "the hob is still on, can you sort that": the thing said
+            continue
+        if t.cls != "THAT" or (k and out[k - 1].cls not in ("END", "COMMA")):
+            continue
+        j = k + 1
+        while j < len(out) and out[j].cls in ("ADJ", "V_WARM", "V_CLEAN"):
+            j += 1
+        if j < len(out) and (out[j].cls == "NOUN" or out[j].cls.endswith(NOUN_DUAL)):
+            out[k] = Tag("THE", t.value, t.words)
+    return out
+
+
+#: words that put what follows them in their sentence under a negation ("nobody is using X or Y")
+_NEGATORS = {"nobody", "noone", "not", "never", "none"}
+
+
+def _or_under_negation(words: list[str], notes: list[str]) -> list[str]:
+    """ "nobody is using the tablet or the radio": under a negation, "or" lists both (neither is
+    used), so it is read as "and". Elsewhere "or" is a choice, which this reader does not make
+    (it stays unread, and is refused)."""
+    out: list[str] = []
+    negated = False
+    for k, w in enumerate(words):
+        if w in (".", "!", "?", ";"):
+            negated = False
+        elif w in _NEGATORS or (w == "no" and k + 1 < len(words) and words[k + 1] == "one"):
+            negated = True
+        elif w in ("or", "nor") and negated:
+            notes.append(f"'{w}' after a negation lists both: read as 'and'")
+            w = "and"
+        out.append(w)
+    return out
+
+
 def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
     """The command as grammar tokens (module docstring, step 1)."""
     notes = notes if notes is not None else []
     index = world_phrases(world)
-    words = _measures(_without_manner(words_of(command), notes), index, notes)
+    words = _or_under_negation(_measures(_without_manner(words_of(command), notes), index, notes), notes)
     vocab = _vocabulary(index)
+    said = list(words)   # as typed: a repair that still names nothing is quoted as typed
     # typos: a word known nowhere, close to exactly one known word, is read as that word
     for k, w in enumerate(words):
         if known_word(w, index, vocab) or len(w) < 4:
@@ -349,6 +483,9 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
         num = read_number([x if x not in PUNCT and x.isalnum() else None for x in words], i)
         nw, nl, nf = _match(words, i, index, longest_w), _match(words, i, PHRASES, longest_l), \
             _match(words, i, FILLER, longest_f)
+        if nl > 1 and PHRASES[tuple(words[i:i + nl])][0] in HOME_CLASSES and \
+                any(_match(words, j, index, longest_w) for j in range(i + 1, i + nl)):
+            nl = 1 if (w,) in PHRASES else 0   # "in the kitchen" where the home has a thing named kitchen
         if num is not None and num[1] - i >= max(nw, nl, nf):
             out.append(Tag("NUM", num[0], " ".join(words[i:num[1]])))
             i = num[1]
@@ -357,7 +494,7 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
             i += nf
             continue
         if nw == 0 and nl == 0:
-            unknown.append(w)
+            unknown.append(said[i])
             i += 1
             continue
         n = max(nw, nl)
@@ -371,7 +508,7 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
             cls, value = PHRASES[tuple(words[i:i + n])]
             out.append(Tag(cls, value, text))
         i += n
-    out = _restated_order(_located(out, world, notes), notes)
+    out = _restated_order(_located(_demonstratives(_act_before_noun(out)), world, notes), notes)
     if unknown:
         names = sorted(set(world.get("objects") or {}) | set(world.get("places") or {}))
         error = TranslationError(
@@ -396,11 +533,18 @@ class _TagLexer(Lexer):
             yield Token(t.cls, str(k), start_pos=k, end_pos=k + 1)
 
 
-@functools.lru_cache(maxsize=8)
-def _lark(dual: frozenset[str]) -> Lark:
+@functools.lru_cache(maxsize=64)
+def _lark(dual: frozenset[str], present: frozenset[str] | None = None) -> Lark:
     """The Earley parser for commands whose dual tokens (a lexicon word that is also a name of the
-    world) are of the classes ``dual``: one per world in practice (grammar_text says why)."""
-    return Lark(grammar_text(dual), parser="earley", lexer=_TagLexer, ambiguity="explicit")
+    world) are of the classes ``dual``: one per world in practice (grammar_text says why), with the
+    gated lines of the rules for the gated classes ``present`` in the command (None: all)."""
+    return Lark(grammar_text(dual, present), parser="earley", lexer=_TagLexer, ambiguity="explicit")
+
+
+def _parser_for(world: dict, tags: list[Tag]) -> Lark:
+    """The parser for these tags in this world: only the gated rules their classes can use."""
+    present = frozenset(t.cls[:-len(NOUN_DUAL)] if t.cls.endswith(NOUN_DUAL) else t.cls for t in tags)
+    return _lark(_dual_classes(world), present & GATED)
 
 
 def _dual_classes(world: dict) -> frozenset[str]:
@@ -518,8 +662,12 @@ def parse(command: str, world: dict, notes: list[str] | None = None) -> list[dic
             readings = _parse(trimmed[0], world, mine)
         except TranslationError as again:
             # what is left after the talk is set aside is what does not read: say that
-            raise TranslationError(f"{again} (set aside: {'; '.join(repr(a) for a in trimmed[1] + trimmed[2])})",
-                                   candidates=again.candidates) from None
+            error = TranslationError(f"{again} (set aside: {'; '.join(repr(a) for a in trimmed[1] + trimmed[2])})",
+                                     candidates=again.candidates)
+            for attr in ("unread", "unplaced", "choices"):   # what candidate readings are built from
+                if hasattr(again, attr):
+                    setattr(error, attr, getattr(again, attr))
+            raise error from None
     notes += mine + ([said(trimmed[1])] if trimmed[1] else []) + [
         f"'{own}' says what the speaker will do: no order for the robots (set aside)" for own in trimmed[2]]
     extra = {**({"set_aside": trimmed[1]} if trimmed[1] else {}), **({"speaker_does": trimmed[2]} if trimmed[2] else {})}
@@ -532,12 +680,12 @@ def _parse(command: str, world: dict, notes: list[str]) -> list[dict]:
     if not [t for t in tags if t.cls not in ("END", "COMMA")]:
         raise TranslationError(f"{command.strip()!r} asks for nothing the offline parser can read")
     try:
-        tree = _lark(_dual_classes(world)).parse(tags)
+        tree = _parser_for(world, tags).parse(tags)
     except UnexpectedInput as exc:
         filled = _elided_objects(tags)
         if filled is not None:
             try:
-                tree = _lark(_dual_classes(world)).parse(filled)
+                tree = _parser_for(world, filled).parse(filled)
             except UnexpectedInput:
                 filled = None
         if filled is not None:
@@ -556,9 +704,14 @@ def _parse(command: str, world: dict, notes: list[str]) -> list[dict]:
             end += 1
         clause = " ".join(t.words for t in tags[start:end + 1])
         here = " ".join(t.words for t in tags[k:min(end + 1, k + 4)])
-        raise TranslationError(f"could not place the words '{here}' in '{clause}': the offline parser reads "
-                               "changes of state, moves, put-aways, trashing and state cues (docs/household.md); "
-                               "a language model may read it") from None
+        error = TranslationError(f"could not place the words '{here}' in '{clause}': the offline parser reads "
+                                 "changes of state, moves, put-aways, trashing and state cues (docs/household.md); "
+                                 "a language model may read it")
+        # for candidate readings: the words where the grammar stopped (and the one before), each
+        # of which a candidate may read the command without
+        error.unplaced = [t.words for t in tags[max(start, k - 1):min(end + 1, k + 3)]  # type: ignore[attr-defined]
+                          if t.cls not in ("END", "COMMA")]
+        raise error from None
     return _orders(tags, tree, command)
 
 
@@ -714,6 +867,8 @@ class Builder:
 
     def target(self, node: Tree) -> dict:
         p = self._sub(node, "place") or self._sub(node, "bare")
+        if p is None and self._has(node, "THEWASH"):   # "put the clothes in the wash"
+            return {"words": _words(self.tags, node), "quality": LAUNDRY}
         if p is None:   # "put the apple in it": the place said before
             return {"words": _words(self.tags, node), "pronoun": True}
         out = {**self.noun(self._sub(p, "noun")), "words": _words(self.tags, node)}
@@ -739,6 +894,8 @@ class Builder:
                 st["via"] = self.place(self._sub(via, "place"))
             elif via is not None:   # "heat the pan on it"
                 st["via"] = {"words": _words(self.tags, via), "pronoun": True}
+            elif act is None and self.verb_place(verb) is not None:   # "microwave the noodles"
+                st["via"] = self.verb_place(verb)
         elif kind == "toggle" and self._has(node, "V_LIGHT"):   # "light the stove"
             st = {"op": "change", "things": things, "to": "on"}
         elif kind == "toggle":   # "turn the fire on and the kettle": the things after the particle too
@@ -749,6 +906,9 @@ class Builder:
             subs = self._subs(node, "things") + self._subs(node, "sthings")
             st = {"op": "put", "things": [s for sub in subs for s in self.things(sub)]}
             src, tgt = self._sub(node, "source"), self._sub(node, "target")
+            if src is None and tgt is None and self._has(node, "V_THROW") and len(self._tokens(node)) == 1:
+                # "chuck the crisp packet", "toss the orange": thrown, and said nowhere else, is away
+                st = {"op": "trash", "things": st["things"]}
             if src is not None:
                 st["from"] = self.place(self._sub(src, "place"))
             if tgt is not None:
@@ -787,17 +947,57 @@ class Builder:
                 raise TranslationError(f"'{words}': a {meal} is not made by '{verb.words}' "
                                        f"(its foods end {MEALS[meal]['state']}); say what to do with which things")
             st = {"op": "meal", "meal": meal}
-        elif kind == "observe":
-            st = {"op": "observe", "things": things, "is": self.state(self._sub(node, "state"))}
         elif kind == "cue":
             st = self.cue(node, things)
-        elif kind == "tend":   # "deal with the dishes", "the bedding is all over the place"
-            st = {"op": "tend", "things": things}
+        elif kind in ("observe", "tend", "mess", "handling", "keep", "empty", "desire"):
+            st = self.said_of_things(node, kind, things)
         else:  # a rule of the grammar without a statement: a bug, not a user error
             raise AssertionError(f"no statement for grammar rule {kind!r}")
         if exc is not None:   # "put all the fruit in the fridge but not the watermelon"
             st["except"] = self.things(self._sub(exc, "things"))
         st["words"] = words
+        return st
+
+    def verb_place(self, verb: Token) -> dict | None:
+        """ "microwave the noodles": a verb that is a place of the home says where the action
+        happens (a noun of the place's readings), else None."""
+        places = [dict(r) for r in self.tag_of(verb).nouns if r["kind"] == "place"]
+        return {"words": self.tag_of(verb).words, "readings": places} if places else None
+
+    def said_of_things(self, node: Tree, kind: str, things: list[dict]) -> dict:
+        """Statements that say something of things: an observation, what they need ("tend"),
+        disorder said ("mess"), how a thing is handled, a thing to stay where it is, a place
+        emptied, a thing wished for in a state."""
+        if kind == "observe":
+            state = self._sub(node, "state")
+            st = {"op": "observe", "things": things, "is": self.state(state) if state is not None else "dirty"}
+            said = _words(self.tags, state).split()[-1] if state is not None else ""
+            if state is None or said in FOUL_WORDS:   # "the pizza box is starting to smell", "the mug is minging"
+                st["foul"] = True
+        elif kind == "tend":   # "deal with the dishes"
+            st = {"op": "tend", "things": things}
+        elif kind == "mess":   # "the bedding is all over the place": said, so a later clause may answer it
+            place = self._sub(node, "place")
+            if place is not None:   # "the sink is full of dishes": the dishes in the sink
+                where = self.place(place)
+                things = [{**t, "from": t.get("from") or where} for t in things]
+            st = {"op": "tend", "things": things, "said": True}
+        elif kind == "handling":   # "the wok is too heavy for one of you": how, for a later clause
+            st = {"op": "handling", "things": things}
+        elif kind == "keep":   # "leave the hoodie where it is"
+            st = {"op": "keep", "things": things}
+        elif kind == "empty":   # "empty the fridge onto the counter": everything in it
+            place = self.place(self._sub(node, "place"))
+            st = {"op": "put", "things": [{"words": f"everything in {place['words']}", "everything": True,
+                                           "from": place}]}
+            if self._sub(node, "target") is not None:
+                st["to"] = self.target(self._sub(node, "target"))
+        else:   # "desire": "I fancy a warm bagel": the thing in the state its adjective names
+            noun = self._sub(node, "noun")
+            adjs = [str(self.tag_of(self._tokens(a)[0]).value) for a in self._subs(node, "adj")]
+            det = [self.tag_of(t).words for t in self._tokens(node) if self._cls(t) == "THE"]
+            sel = {"words": _words(self.tags, noun), "noun": self.noun(noun), **({"det": det[0]} if det else {})}
+            st = {"op": "change", "things": [sel], "to": adjs[-1]}
         return st
 
     def cue(self, node: Tree, things: list[dict]) -> dict:
@@ -809,7 +1009,7 @@ class Builder:
             to = TEMPERATURE_ADJECTIVES.get(str(t.value)) if warmth.data == "tempadj" else str(t.value)
             if to is None:   # "it is dirty in here": no temperature, no cue
                 raise TranslationError(f"'{t.words}' says nothing of how warm it is")
-            st.update(to=to, cue=f"it is {t.words}", heating=True)
+            st.update(to=to, cue=f"it is {t.words}", heating=True, device="heating")
         elif act is not None:
             word = self.tag_of(self._tokens(act)[0]).words
             st.update(to="off", cue=f"nobody is {word}")
@@ -818,8 +1018,28 @@ class Builder:
         elif light is not None:
             t = self.tag_of(self._tokens(light)[0])
             st.update(to=str(t.value), cue=f"it is {t.words}", default=LIGHT_CATEGORY_WORD)
-        elif self._has(node, "SEE"):
-            st.update(to="on", cue="cannot see", default=LIGHT_CATEGORY_WORD)
+        elif self._has(node, "DOACT") or (self._has(node, "SEE") and self._has(node, "TO")):
+            # "I want to watch something": what the activity needs, on; "too dark to study": the light
+            t = next(self.tag_of(x) for x in self._tokens(node) if self._cls(x) in ("DOACT", "SEE"))
+            kind = t.value if self._cls(next(x for x in self._tokens(node) if self.tag_of(x) is t)) == "DOACT" else "light"
+            if kind == "light" or light is not None:
+                st.update(things=[] if light is not None else things, to="on", cue=f"to {t.words}",
+                          **({"default": LIGHT_CATEGORY_WORD} if not things or light is not None else {}))
+            elif things:   # "I want to watch the telly": that thing on
+                st.update(to="on", cue=f"to {t.words}")
+            else:
+                st.update(to="on", cue=f"to {t.words}", device=str(kind))
+        elif self._has(node, "SLEEPCUE"):   # "I'm trying to sleep": the lights off
+            st.update(things=[], to="off", cue="sleep", default=LIGHT_CATEGORY_WORD)
+        elif self._has(node, "SEE"):   # "I can't read my notes": what cannot be read is the reason
+            st.update(things=[], to="on", cue="cannot see", default=LIGHT_CATEGORY_WORD)
+        elif self._sub(node, "soundcue") is not None:   # "it's too quiet in here"
+            t = self.tag_of(self._tokens(self._sub(node, "soundcue"))[0])
+            st.update(to=str(t.value), cue=f"it is {t.words}", device="sound")
+        elif self._has(node, "MUSIC"):   # "put some music on"
+            st.update(to="on", cue="music wanted", device="sound")
+        elif self._has(node, "HOTDRINK"):   # "could murder a cuppa"
+            st.update(to="on", cue="a hot drink wanted", device="hot drink")
         else:
             st.update(to="off", cue="not needed")
         return st
@@ -869,5 +1089,7 @@ class Builder:
         if refused_place is not None:   # "heat the pie, not in the oven": where then?
             raise TranslationError(f"'{refused_place['words']}': not there, but where? say where (e.g. 'use the hob')")
         if not statements:
-            raise TranslationError(f"{self.command.strip()!r} gives a reason but asks for nothing; say what to do")
+            error = TranslationError(f"{self.command.strip()!r} gives a reason but asks for nothing; say what to do")
+            error.reasons = [_words(self.tags, i) for i in items if i.data == "reason"]  # type: ignore[attr-defined]
+            raise error
         return {"domain": "household", "command": self.command, "statements": statements}

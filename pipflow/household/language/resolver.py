@@ -29,8 +29,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from pipflow.errors import Refusal, TranslationError
-from pipflow.household.language.lexicon import (COLD, INDEFINITE, MASS_NOUNS, MEALS, REACHABLE, ROOM_HEATERS, VIA_PROPERTY,
-                                                plurals, words_of)
+from pipflow.household.language.lexicon import (BIN_KINDS, COLD, DEVICE_NOUNS, DEVICES, INDEFINITE, LAUNDRY, LAUNDRY_PLACES, MASS_NOUNS,
+                                                MEALS, OPPOSITE, REACHABLE, VIA_PROPERTY, plurals, words_of)
 from pipflow.household.language.order import check_order
 from pipflow.household.problem import CONDITIONS
 from pipflow.household.world import entity, initial_state, members
@@ -96,6 +96,9 @@ class Resolver:
         self.cue_defaults: list[tuple[str, str, str, list[str]]] = []   # (category, state, words, members)
         self.via_placed: dict[str, str] = {}                   # objects put where an action happens -> place
         self.said: list[list[str]] = []                        # the things each statement before was about
+        self.mess: list[tuple[dict, str]] = []                 # disorder said of things: (statement, words)
+        self.foul: set[str] = set()                            # words of observations of foulness
+        self.handled: list[tuple[list[str], str]] = []         # how things are to be handled: (names, words)
 
     # selectors -------------------------------------------------------------------------
     def _candidates(self, sel: dict, words: str) -> tuple[list[str], bool]:
@@ -247,6 +250,14 @@ class Resolver:
             if len(set(cold)) != 1:
                 raise TranslationError(f"'{words}': this home has {len(set(cold))} cold places; say where")
             return cold[0]
+        if place.get("quality") == LAUNDRY:   # "put the clothes in the wash": the home's one laundry place
+            wanted = {" ".join(words_of(w)) for w in LAUNDRY_PLACES}
+            found = [p for p, e in self.world["places"].items()
+                     if {" ".join(words_of(w)) for w in [p] + list(e.get("words") or [])} & wanted]
+            if len(found) != 1:
+                raise TranslationError(f"'{words}': this home has {len(found)} places for laundry "
+                                       f"({', '.join(found) or 'no laundry basket or washing machine'}); say where")
+            return found[0]
         if place.get("pronoun"):
             said = [n for n in dict.fromkeys(self.before) if n in self.world["places"]]
             if len(said) != 1:
@@ -295,7 +306,7 @@ class Resolver:
             # it was heated, the table where it ends; the microwave is left as found
             via = self.via_placed.pop(obj)
             self.goal.notes.append(f"{obj} ends in {place} ('{words}'), after '{old[1]}' (the goal is the end "
-                                   f"state: that it is heated in {via} is not part of it)")
+                                   f"state: that it was first in {via}, where the change is done, is not part of it)")
             del self.goal.inside[obj]
             if "openable" in self.world["places"][via]["properties"] and not holds_now(self.world, via, "open"):
                 self.set_state(via, "closed", False, old[1])
@@ -424,14 +435,37 @@ class Resolver:
             for n in names:
                 if CONDITIONS.get(st["is"]) and applies(self.world, n, st["is"]) and not holds_now(self.world, n, st["is"]):
                     self.goal.notes.append(f"'{words}': the world file says {n} is {_describe(self.world, n)}")
+            weather = st["is"] in ("hot", "cold") and all(sel.get("pronoun") for sel in st["things"])
+            if names and set(names) <= set(self.goal.inside) | set(self.goal.state) and not weather:
+                # ("..., it is cold" may be the room: not read as a reason)
+                # "bin the scone, it's gone stale": said after what is done with it, it is the reason
+                self.goal.notes.append(f"'{words}' is the reason for what is done with {', '.join(names)}")
+                self.last = names
+                return
             self.observed.append((names, st["is"], words))
+            if st.get("foul"):
+                self.foul.add(words)
             self.last = names
         elif op == "cue":
             self.cue(st, words)
         elif op == "meal":
             self.meal(st, words)
+        elif op == "tend" and st.get("said"):   # decided at the end: a later clause may answer it
+            self.mess.append((st, words))
+            self.last = [n for n, _ in self.objects(st["things"], words)]
         elif op == "tend":
             self.tend(st, words)
+        elif op == "handling":   # "the wok is too heavy for one of you": the reason for how a later clause is done
+            names = [n for n, _ in self.objects(st["things"], words)]
+            self.handled.append((names, words))
+            self.last = names
+        elif op == "keep":   # "leave the hoodie where it is"
+            named = self.objects(st["things"], words)
+            for n, _ in named:
+                if n not in self.world["objects"]:
+                    raise TranslationError(f"'{words}': {n} is a place; it stays where it is whatever is done")
+                self.put(n, self.world["objects"][n]["in"], words)
+            self.last = [n for n, _ in named]
         else:
             raise TranslationError(f"'{words}': unknown statement {op!r}")
 
@@ -450,8 +484,15 @@ class Resolver:
                 raise TranslationError(f"'{words}': '{st['via']['words']}' does not say how something becomes {cond}")
             if need not in self.world["places"][via]["properties"]:
                 raise Refusal(f"'{words}': {via} cannot make anything {cond}: it is not a {need}")
+        need = VIA_PROPERTY.get(cond)
         for n, explicit in named:
             self.want(n, cond, explicit, words)
+            held = self.goal.inside.get(n)
+            if via is None and held is not None and need and need in self.world["places"][held[0]]["properties"] \
+                    and n not in self.via_placed:
+                # "take the mug to the sink, wash it, then put it away": where it was taken is where
+                # the change happens, so a later move may take it on from there
+                self.via_placed[n] = held[0]
             if via is not None:
                 if n not in self.world["objects"]:
                     raise Refusal(f"'{words}': {n} cannot be moved into {via}")
@@ -503,9 +544,14 @@ class Resolver:
         self.last = [n for n, _ in named] or self.last
 
     def room_heaters(self) -> list[str]:
-        """The things that warm the room (lexicon ``ROOM_HEATERS``): members of a category of the
-        world named or worded so, else things that switch whose name or words are so."""
-        wanted = {" ".join(words_of(w)) for w in ROOM_HEATERS}
+        """The things that warm the room (lexicon ``ROOM_HEATERS``)."""
+        return self.devices("heating")
+
+    def devices(self, kind: str) -> list[str]:
+        """The things of a kind of lexicon ``DEVICES`` (room heaters, sound makers, drink makers):
+        members of a category of the world named or worded so, else things that switch whose
+        name or words are so."""
+        wanted = {" ".join(words_of(w)) for w in DEVICES[kind]}
         cats = [c for c, e in (self.world.get("categories") or {}).items()
                 if {" ".join(words_of(w)) for w in [c] + list((e or {}).get("words") or [])} & wanted]
         found = [n for c in cats for n in members(self.world, c)]
@@ -513,6 +559,30 @@ class Resolver:
             found = [n for n, e in {**self.world["places"], **self.world["objects"]}.items()
                      if {" ".join(words_of(w)) for w in [n] + list(e.get("words") or [])} & wanted]
         return [n for n in dict.fromkeys(found) if applies(self.world, n, "on")]
+
+    def device_cue(self, st: dict, words: str) -> None:
+        """ "it's too quiet in here", "put some music on": the home's sound makers; "could murder a
+        cuppa": its drink makers (lexicon ``DEVICES``). Switching off, every one that is on;
+        switching on, the one that is off when there is one, and several are asked (each offered
+        as a candidate reading), never all at once. None: asked."""
+        kind, cond = st["device"], st["to"]
+        every = self.devices(kind)
+        able = [n for n in every if not holds_now(self.world, n, cond)]
+        if not able:
+            raise TranslationError(f"'{words}': which thing? this home has no {DEVICE_NOUNS[kind]} "
+                                   f"{'that is ' + ('on' if cond == 'off' else 'off') + ' ' if every else ''}"
+                                   f"({', '.join(DEVICES[kind][:4])} that switches); say what to switch")
+        if cond == "on" and len(able) > 1:
+            if self.choose.get(words) in able:
+                able = [self.choose[words]]
+            else:
+                raise _choice(TranslationError(f"'{words}': which one? it could be any of {', '.join(able)}; say "
+                                               "which to switch on"), words, able)
+        self.goal.notes.append(f"'{words}': read as {', '.join(able)} {cond} (the home's {kind} "
+                               "things; docs/household.md, cues)")
+        for n in able:
+            self.want(n, cond, False, words)
+        self.last = able
 
     def warmth(self, st: dict, words: str) -> None:
         """ "it is freezing in here": the room heaters on; "it is roasting in here": the room
@@ -544,6 +614,10 @@ class Resolver:
         that need neither, or a need the home cannot meet, are asked, never guessed."""
         named = self.objects(st["things"], words)
         names = [n for n, _ in named]
+        # disorder said of a place ("my desk is a mess") is of the things it holds
+        names = list(dict.fromkeys(o for n in names for o in ([n] if n in self.world["objects"] else
+                                                              [o for o, e in self.world["objects"].items()
+                                                               if e["in"] == n]))) or names
         dirty = [n for n in names if applies(self.world, n, "clean") and holds_now(self.world, n, "dirty")]
         if dirty:
             left = [n for n in names if n not in dirty]
@@ -561,6 +635,19 @@ class Resolver:
             if n in self.world["objects"] and home and "pickupable" in e["properties"]:
                 homes[n] = home[0]
         away = [n for n in names if n in homes and self.world["objects"][n]["in"] != homes[n]]
+        # "the hob's still on, can you sort that": a thing left on or open may need switching off
+        # or closing; that is asked (each offered as a candidate reading), never guessed
+        undo = [OPPOSITE[c] for c in ("on", "open")
+                if names and all(applies(self.world, n, c) and holds_now(self.world, n, c) for n in names)]
+        if not away and self.choose.get(words) in undo:
+            for n in names:
+                self.want(n, self.choose[words], True, words)
+            self.last = names
+            return
+        if not away and undo:
+            raise _choice(TranslationError(f"'{words}': what should be done with {', '.join(names)}? (nothing of "
+                                           f"it is dirty or away from its home; it could be {' or '.join(undo)})"),
+                          words, undo)
         if not away:
             raise TranslationError(f"'{words}': what should be done with {', '.join(names) or 'it'}? "
                                    "(nothing of it is dirty or away from its home); say what to do")
@@ -573,6 +660,9 @@ class Resolver:
     def cue(self, st: dict, words: str) -> None:
         if st.get("heating"):
             self.warmth(st, words)
+            return
+        if st.get("device"):
+            self.device_cue(st, words)
             return
         cond = st["to"]
         default = st.get("default")
@@ -648,9 +738,47 @@ class Resolver:
                 self.want(n, c, False, words)
         self.last = able
 
+    def _answer_mess(self) -> None:
+        """Disorder said of things ("the clothes are everywhere") is the reason for a clause that
+        acts on them ("..., put them in the basket"); said alone, it asks for what they need
+        (:meth:`tend`)."""
+        acted = set(self.goal.inside) | set(self.goal.state)
+        for st, words in self.mess:
+            names = [n for n, _ in self.objects(st["things"], words)]
+            if names and set(names) <= acted:
+                self.goal.notes.append(f"'{words}' is the reason for what is done with {', '.join(names)}")
+                continue
+            self.tend(st, words)
+
+    def _foul(self, names: list[str], words: str) -> None:
+        """Foulness said and nothing done about it: a thing that washes is washed; food or rubbish
+        (a category named or worded like ``BIN_KINDS``) goes in the home's one bin; anything else
+        is asked."""
+        kinds = {" ".join(words_of(w)) for w in BIN_KINDS}
+        cans = [p for p, e in self.world["places"].items() if "garbage" in e["properties"]]
+        for n in names:
+            cats = entity(self.world, n).get("categories") or []
+            binned = any({" ".join(words_of(w)) for w in [c] + list((self.world["categories"].get(c) or {}).get("words")
+                                                                       or [])} & kinds for c in cats)
+            if applies(self.world, n, "clean"):
+                self.goal.notes.append(f"'{words}': foul, and it washes: read as {n} washed (docs/household.md, cues)")
+                self.want(n, "clean", True, words)
+            elif binned and len(cans) == 1 and n in self.world["objects"]:
+                self.goal.notes.append(f"'{words}': foul {' or '.join(c for c in cats)}: read as {n} thrown away "
+                                       "(docs/household.md, cues)")
+                self.put(n, cans[0], words)
+            else:
+                raise TranslationError(f"'{words}': what should be done with {n}? (it does not wash, and it is no "
+                                       "food or rubbish for the bin); say what to do")
+
     def _apply_cue_defaults(self) -> None:
         """A cue that names nothing means its whole category, unless the command itself asks the
         same state of one of its members (then the cue is only the reason)."""
+        said = {}
+        for cat, cond, words, _ in self.cue_defaults:   # "it's too dark, I'm trying to sleep": which?
+            if cat and said.get(cat, (cond, words))[0] != cond:
+                raise TranslationError(f"'{said[cat][1]}' and '{words}' ask opposite things of the {cat}; say which")
+            said.setdefault(cat, (cond, words))
         for cat, cond, words, names in self.cue_defaults:
             if not cat:   # "we have finished listening, switch off the radio": the reason for a request
                 asked = [n for n, preds in self.goal.state.items()
@@ -682,12 +810,24 @@ class Resolver:
         if self.picked:
             obj, words = next(iter(self.picked.items()))
             raise TranslationError(f"'{words}': where to? name a place for {obj} (e.g. 'in the fridge')")
+        self._answer_mess()
+        acted = set(self.goal.inside) | set(self.goal.state)
+        for names, words in self.handled:
+            if not set(names) & acted:
+                raise TranslationError(f"'{words}' says how {', '.join(names)} is to be handled, but nothing is asked "
+                                       "of it; say what to do")
         for names, state, words in list(self.observed):
+            if words in self.foul and names:
+                self._foul(names, words)
+                self.observed.remove((names, state, words))
+                continue
             if state == "dirty" and names and all(applies(self.world, n, "clean") for n in names):
-                # "the dishes on the table are filthy": dirt that nothing else answers asks for washing
+                # "the dishes on the table are filthy": dirt that nothing else answers asks for washing;
+                # of several things, the ones that are dirty ("last night's dishes are still dirty")
+                dirty = [n for n in names if holds_now(self.world, n, "dirty")] or names
                 self.goal.notes.append(f"'{words}': dirt said and nothing done about it: read as washing "
-                                       f"{', '.join(names)} (docs/household.md, cues)")
-                for n in names:
+                                       f"{', '.join(dirty)} (docs/household.md, cues)")
+                for n in dirty:
                     self.want(n, "clean", True, words)
                 self.observed.remove((names, state, words))
         if self.observed:
