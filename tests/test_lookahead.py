@@ -95,3 +95,36 @@ def test_command_sentences_parse_the_same_with_lookahead(name):
             assert outcomes[0] == outcomes[1], types
             compared += 1
     assert compared >= 10
+
+
+@pytest.mark.parametrize("name", ["household-loft.yaml", "household-studenthouse.yaml", "household-bungalow.yaml"])
+def test_household_commands_parse_the_same_with_lookahead(name):
+    """The household reader's parsers predict with lookahead too: the same forests and errors as
+    lark's plain parser over the same grammar, on a household set's commands."""
+    from pipflow.household.language import parser as household
+    from pipflow.household.language.grammar import grammar_text
+    from pipflow.household.scoring import load_tasks as load_home_tasks
+
+    loaded = load_home_tasks(ROOT / "benchmarks" / "language" / name)
+    world = loaded["world"]
+    compared = 0
+    for task in loaded["tasks"][::2]:
+        try:
+            tags = household.tag(str(task["command"]), world, [])
+        except Exception:  # noqa: BLE001 - refused by the tagger: nothing reaches the parser
+            continue
+        ahead = household._parser_for(world, tags)
+        assert isinstance(ahead.parser.parser, LookaheadEarley)
+        present = frozenset(t.cls[:-len(household.NOUN_DUAL)] if t.cls.endswith(household.NOUN_DUAL) else t.cls
+                            for t in tags) & household.GATED
+        plain = Lark(grammar_text(household._dual_classes(world), present), parser="earley", lexer=ListLexer,
+                     ambiguity="explicit")
+        outcomes = []
+        for parser in (plain, ahead):
+            try:
+                outcomes.append(str(parser.parse(household._terminals(tags))))
+            except UnexpectedInput as exc:
+                outcomes.append(f"{type(exc).__name__} at {getattr(getattr(exc, 'token', None), 'start_pos', None)}")
+        assert outcomes[0] == outcomes[1], task["command"]
+        compared += 1
+    assert compared >= 10

@@ -25,7 +25,6 @@ from typing import Callable
 
 from lark import Lark, Token, Tree
 from lark.exceptions import UnexpectedInput
-from lark.lexer import Lexer
 from lark.visitors import CollapseAmbiguities
 
 from pipflow.errors import TranslationError
@@ -38,6 +37,8 @@ from pipflow.household.language.lexicon import (ACTIVITIES, COLD, DURATION_HEDGE
                                                 words_of)
 from pipflow.language.asides import EXCLUSIVITY, FUNCTION_WORDS, NEGATION, clauses, content_free, said
 from pipflow.language.characters import refuse_unread
+from pipflow.language.earley import ListLexer
+from pipflow.language.lookahead import with_lookahead
 from pipflow.language.numbers import read_number
 from pipflow.language.spelling import distance
 
@@ -522,23 +523,19 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
 # ---------------------------------------------------------------------------------------------
 # parsing
 # ---------------------------------------------------------------------------------------------
-class _TagLexer(Lexer):
-    """Feeds the tagger's tokens to lark; a token's value is its index in the tag list."""
-
-    def __init__(self, conf: object) -> None:  # lark passes its lexer configuration
-        pass
-
-    def lex(self, data: list[Tag]):  # type: ignore[override]
-        for k, t in enumerate(data):
-            yield Token(t.cls, str(k), start_pos=k, end_pos=k + 1)
+def _terminals(tags: list[Tag]) -> list[Token]:
+    """The tagger's tokens as lark's terminals; a token's value is its index in the tag list."""
+    return [Token(t.cls, str(k), start_pos=k, end_pos=k + 1) for k, t in enumerate(tags)]
 
 
 @functools.lru_cache(maxsize=64)
 def _lark(dual: frozenset[str], present: frozenset[str] | None = None) -> Lark:
     """The Earley parser for commands whose dual tokens (a lexicon word that is also a name of the
     world) are of the classes ``dual``: one per world in practice (grammar_text says why), with the
-    gated lines of the rules for the gated classes ``present`` in the command (None: all)."""
-    return Lark(grammar_text(dual, present), parser="earley", lexer=_TagLexer, ambiguity="explicit")
+    gated lines of the rules for the gated classes ``present`` in the command (None: all). It
+    predicts with one terminal of lookahead (:mod:`pipflow.language.lookahead`: the same forests,
+    less work)."""
+    return with_lookahead(Lark(grammar_text(dual, present), parser="earley", lexer=ListLexer, ambiguity="explicit"))
 
 
 def _parser_for(world: dict, tags: list[Tag]) -> Lark:
@@ -653,7 +650,7 @@ def parse(command: str, world: dict, notes: list[str] | None = None) -> list[dic
     notes = notes if notes is not None else []
     try:
         return _parse(command, world, notes)
-    except TranslationError as exc:
+    except TranslationError:
         trimmed = without_asides(command, world)
         if trimmed is None:
             raise
@@ -680,12 +677,12 @@ def _parse(command: str, world: dict, notes: list[str]) -> list[dict]:
     if not [t for t in tags if t.cls not in ("END", "COMMA")]:
         raise TranslationError(f"{command.strip()!r} asks for nothing the offline parser can read")
     try:
-        tree = _parser_for(world, tags).parse(tags)
+        tree = _parser_for(world, tags).parse(_terminals(tags))
     except UnexpectedInput as exc:
         filled = _elided_objects(tags)
         if filled is not None:
             try:
-                tree = _parser_for(world, filled).parse(filled)
+                tree = _parser_for(world, filled).parse(_terminals(filled))
             except UnexpectedInput:
                 filled = None
         if filled is not None:
