@@ -14,8 +14,9 @@ predicted again where it is needed). At the end of the input only the latter. No
 lark's algorithm changes: a rule left out could never have matched the next terminal, so it could
 never have completed or contributed a node, and the forest (every reading, ``_ambig`` nodes
 included) and the errors (the same token, the same position) are the same as without the filter
-(``tests/test_lookahead.py`` checks that on the command sets). On the warehouse command sets the
-Earley parse takes about a sixth of the time (``benchmarks/parse_speed.py``).
+(``tests/test_lookahead.py`` checks that on warehouse and household command sets). On the
+warehouse command sets the Earley parse takes about a sixth of the time
+(``benchmarks/parse_speed.py``); both domains' readers use it.
 
 The filter works through the one attribute lark's predictor reads (``predictions``) and the one
 method it calls per position (``predict_and_complete``); the terminals of the parse in progress
