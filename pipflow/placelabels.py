@@ -38,7 +38,7 @@ def place_labels(places: list[tuple[str, Box]], floor: tuple[float, float], *, l
     boxes = [box for _, box in places]
     written: list[Box] = []
     out = []
-    for (name, box), k in zip(places, range(len(places))):
+    for k, (name, box) in enumerate(places):
         x, y, w, h = box
         n = max(len(name), 1)
         across = min(largest, 0.9 * w / (GLYPH * n), 0.8 * h)
