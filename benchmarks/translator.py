@@ -7,13 +7,18 @@ of ``benchmarks/language/`` and ``benchmarks/warehouse/tasks.yaml``. Each comman
 world as the world loader gives it to the workflow, and is judged (benchmarks/language/README.md):
 
 * ``understood``: goal and robot rules equal the gold (bounds compared exactly: an exact count is
-  not a bound); a refusal of a ``feasible: false`` or ``expect: refuse`` task also counts;
-* ``refused``: a clear, feasible command was refused (a lost command, but nothing moves);
-* ``misread``: a goal or rules different from the gold came out: the robots would have moved
-  wrongly. This is the defect that matters most, so any misread makes the exit status 1;
+  not a bound); for a ``feasible: false`` task, a refusal as impossible (a ``Refusal``, never a
+  reader that could not place a word); for an ``expect: refuse`` task, a refusal to guess (as the
+  bench's ``understood``: README "What the bench's numbers mean");
+* ``refused``: a command refused without being understood (a lost command, but nothing moves):
+  a clear, feasible command refused, an impossible one refused on a word it could not place, an
+  ambiguous one refused as impossible instead of asked;
+* ``misread``: a goal or rules different from the gold came out, or a command the world can do
+  was refused as impossible: a meaning other than the command's was read. This is the defect that
+  matters most, so any misread makes the exit status 1;
 * ``crashed``: an exception that is not one of pipflow's errors (a bug; exit status 1 as well).
 
-``candidate_recall`` (issue 23): of the refused clear, feasible commands, the share whose gold
+``candidate_recall`` (issue 23): of the clear, feasible commands refused as not understood, the share whose gold
 reading is among the candidate readings the refusal offered (``TranslationError.candidates``).
 
 The table is printed per construction (the task's ``construction`` label) and in total. It
@@ -38,7 +43,7 @@ ROOT = Path(__file__).resolve().parent.parent
 if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
-from pipflow.errors import PipflowError, WorldError  # noqa: E402
+from pipflow.errors import PipflowError, Refusal, WorldError  # noqa: E402
 
 LANGUAGE = ROOT / "benchmarks" / "language"
 PAPER_TASKS = ROOT / "benchmarks" / "warehouse" / "tasks.yaml"
@@ -142,8 +147,7 @@ def judge(task: dict, got: dict | None, error: BaseException | None, domain: str
     if error is not None:
         if not isinstance(error, PipflowError):
             return "crashed", f"{type(error).__name__}: {error}"
-        verdict = "understood" if (must_refuse or infeasible) else "refused"
-        return verdict, f"refused: {error}"
+        return _refusal_verdict(must_refuse, infeasible, isinstance(error, Refusal)), f"refused: {error}"
     if must_refuse:
         return "misread", f"guessed {got.get('goal')} {got.get('constraints') or ''} instead of refusing"
     if domain == "household":
@@ -155,6 +159,21 @@ def judge(task: dict, got: dict | None, error: BaseException | None, domain: str
         return "understood", "gold"
     return "misread", (f"got goal {got.get('goal')} rules {got.get('constraints') or []}; "
                        f"gold goal {task.get('goal')} rules {task.get('constraints') or []}")
+
+
+def _refusal_verdict(must_refuse: bool, infeasible: bool, as_impossible: bool) -> str:
+    """The verdict of a refused reading, as the bench's ``understood`` and ``misread`` define it
+    (README "What the bench's numbers mean", :func:`pipflow.meaning.judge`): an impossible command
+    is understood only when it was refused as impossible (a ``Refusal``), never when the reader
+    could not place its words; an ambiguous one only when the reader refused to guess; a command
+    the world can do that is refused as impossible had an impossible meaning read into it."""
+    if must_refuse and infeasible:
+        return "understood"
+    if must_refuse:
+        return "refused" if as_impossible else "understood"
+    if infeasible:
+        return "understood" if as_impossible else "refused"
+    return "misread" if as_impossible else "refused"
 
 
 def read(command: str, world: dict) -> dict:
@@ -179,7 +198,8 @@ def run_file(tasks_path: Path) -> list[Outcome]:
         label = task.get("construction") or task.get("category") or default_label  # household: category
         file = f"{tasks_path.parent.name}/{tasks_path.stem}"
         offered = None
-        if verdict == "refused":
+        clear = task.get("expect") != "refuse" and task.get("feasible", True) is not False
+        if verdict == "refused" and clear:   # a clear, feasible command refused as not understood
             offered = any(judge(task, {"goal": c.get("goal"), "constraints": c.get("constraints")}, None, domain)[0]
                           == "understood" for c in getattr(error, "candidates", None) or [])
         out.append(Outcome(f"{file}/{task['id']}", file, label, verdict, detail, offered))

@@ -290,6 +290,21 @@ def test_judge_verdicts_for_refusals_and_crashes():
     assert judge(ambiguous, {"goal": {"a": {"x": 3}}}, None)[0] == "misread"
 
 
+def test_judge_counts_refusals_as_the_bench_does():
+    """The table's verdicts are the bench's (README "What the bench's numbers mean"): a refusal is
+    understood only for the right reason, and a doable command refused as impossible is misread."""
+    judge = _translator().judge
+    infeasible = {"goal": {"a": {"x": 99}}, "feasible": False}
+    assert judge(infeasible, None, TranslationError("cannot place 'zorp'"))[0] == "refused"
+    ambiguous = {"goal": {}, "expect": "refuse"}
+    assert judge(ambiguous, None, Refusal("over capacity"))[0] == "refused"
+    both = {"goal": {}, "expect": "refuse", "feasible": False}
+    assert judge(both, None, Refusal("over capacity"))[0] == "understood"
+    assert judge(both, None, TranslationError("two ways"))[0] == "understood"
+    clear = {"goal": {"a": {"x": 1}}}
+    assert judge(clear, None, Refusal("a would have to hold 40 units"))[0] == "misread"
+
+
 def _one_task_file(tmp_path: Path, task: dict, world: str = "racks.yaml") -> Path:
     (tmp_path / world).write_text((LANGUAGE / world).read_text(encoding="utf-8"), encoding="utf-8")
     path = tmp_path / "tasks.yaml"
