@@ -295,6 +295,7 @@ goal: there_be items loc                                  -> g_set
     | addv items to places ","? except_places              -> g_transfer_except
     | items modal? go to places ","? except_places         -> g_transfer_except
     | items modal? go to places                            -> g_add
+    | items to places                                      -> g_add
     | addv items except_places to places                   -> g_transfer_except
     | items ("on" | "in" | "at" | "from") places modal? go to places -> g_transfer
     | items from places modal? go? to places                -> g_transfer
