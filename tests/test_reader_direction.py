@@ -13,7 +13,8 @@ from tests.test_reader_candidates import BIKES
 
 
 @pytest.mark.parametrize("command", ["2 inner tubes to the back room", "2 inner tubes onto the back room",
-                                     "morning! 2 inner tubes into the back room please"])
+                                     "morning! 2 inner tubes into the back room please",
+                                     "2x inner tube -> back room"])
 def test_a_count_sent_to_a_place_that_holds_some_is_asked_never_set(command: str) -> None:
     with pytest.raises(TranslationError) as err:
         translate(command, BIKES)            # back_room holds 1 inner tube

@@ -389,7 +389,7 @@ YARD = {
     ("shelf2: 5 product1, 3 product2", HALL, {"shelf2": {"product1": 5, "product2": 3}}),
     ("Set shelf2 to 5 product1", HALL, {"shelf2": {"product1": 5}}),
     ("let shelf 2 have 5 of product1", HALL, {"shelf2": {"product1": 5}}),
-    ("5x product1 -> shelf2", HALL, {"shelf2": {"product1": 5}}),
+    ("5x product1 -> shelf5", HALL, {"shelf5": {"product1": 5}}),   # shelf5 holds none: set = add
     ("put five of product 4 onto shelf two", HALL, {"shelf2": {"product4": 5}}),
     ("we need 5 more product1 at shelf2", HALL, {"shelf2": {"product1": 13}}),
     ("shelf2 needs 3 extra product2", HALL, {"shelf2": {"product2": 8}}),
