@@ -17,6 +17,7 @@ from lark.exceptions import UnexpectedInput, UnexpectedToken
 from pipflow.errors import TranslationError
 from pipflow.language.earley import ListLexer, earley_parser
 from pipflow.language.lookahead import with_lookahead
+from pipflow.language.spelling import normalize
 from pipflow.warehouse.language.grammar import GRAMMAR, nullable_optionals
 from pipflow.warehouse.language.lexicon import Lexed, Lexicon
 
@@ -109,6 +110,14 @@ def failure(exc: UnexpectedInput, lexed: Lexed, lex: Lexicon) -> TranslationErro
         k = exc.token.start_pos
         word = lexed.source[k].text.replace("zzposs", "'s")
         prev = lexed.source[k - 1] if k > 0 else None
+        shared = lex.index.shared_parts.get(normalize(word)) if lexed.tokens[k].type == "UNKNOWN" else None
+        if shared:
+            # a word of several names ("white" of white_case and white_keg) names none alone
+            error = TranslationError(f"'{word}' in '{sentence}' may be any of {', '.join(shared)}: "
+                                     f"nothing is guessed, say which")
+            error.unplaced, error.word = k, word  # type: ignore[attr-defined]
+            error.clause = clause_of(lexed, k)  # type: ignore[attr-defined]
+            return error
         if prev is not None and prev.kind == "num" and lexed.tokens[k].type == "UNKNOWN":
             error = TranslationError(f"'{prev.text} {word}': cannot tell which product this count is for "
                                      f"(candidates: {lex.index.candidates('product')})")

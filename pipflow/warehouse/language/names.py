@@ -214,32 +214,49 @@ class NameIndex:
         # shorten names. A word two names share ("dock" of two docks), a grammar or filler word
         # ("sack", "can"), a kind word, a head several places share or a number word names nothing
         # alone (a group, a word of the grammar, or refused: never a guess between names).
-        owners: dict[str, set[str]] = {}
         by_name = {n.name: n for n in self.names}
 
         def alone(word: str) -> bool:
             return (word not in STOPWORDS and word not in self.reserved and word not in self.forms
                     and word not in NUMBER_WORDS and word not in self.groups
                     and not any(word in KIND_WORDS[k] or word in self.stems[k] for k in KINDS))
+        having: dict[str, set[str]] = {}   # every name with the word, read alone or not
+        readable: set[tuple[str, str]] = set()
         for n in self.names:
             words = [w for w in re.split(r"[-_\s]+", n.name.lower()) if w]
             # robots go by name, kind or tag: a word of a robot's name ("big" of big_lift) is English
             if n.kind == "robot" or len([w for w in words if w.isalpha()]) < 2:
                 continue
             for k, w in enumerate(words):
-                # a product goes by its head noun ("formula" of baby-formula), or by what its
-                # container holds ("rice" of rice_sack, "soup" of soup_can); another modifier names
-                # something else ("oil" is no oil filter, "plants" no plant pots). A place goes by
-                # any word of its own ("inbound" of inbound_dock, "paint" of paint-shop)
-                if n.kind == "product" and k < len(words) - 1 and words[-1] not in CONTAINERS:
+                if not (w.isalpha() and len(w) >= 3 and alone(w)):
                     continue
-                if w.isalpha() and len(w) >= 3 and alone(w):
-                    # the plural only of the last word ("soups" of soup_can is no noun of it)
-                    forms = [w] + ([f for f in plural_forms(w)[:1] if alone(f)] if k == len(words) - 1 else [])
-                    for form in forms:
-                        owners.setdefault(form, set()).add(n.name)
-        self.parts: dict[str, _Name] = {form: by_name[next(iter(names))] for form, names in owners.items()
-                                        if len(names) == 1}
+                # the plural of the last word, and of a product's modifier ("corks" of cork-sack:
+                # the sacks of cork, counted; "tastings" is no noun of tasting_room)
+                plural = k == len(words) - 1 or n.kind == "product"
+                forms = [w] + ([f for f in plural_forms(w)[:1] if alone(f)] if plural else [])
+                # a product goes by its head noun ("formula" of baby-formula), or by what its
+                # container holds ("rice" of rice_sack, "soup" of soup_can); another modifier may
+                # name something else ("oil" is no oil filter, "plants" no plant pots). A place goes
+                # by any word of its own ("inbound" of inbound_dock, "paint" of paint-shop)
+                read = not (n.kind == "product" and k < len(words) - 1 and words[-1] not in CONTAINERS)
+                for form in forms:
+                    having.setdefault(form, set()).add(n.name)
+                    if read:
+                        readable.add((form, n.name))
+        owners = having
+        # a word of exactly one name, read as it where the name may go by that word
+        self.parts: dict[str, _Name] = {form: by_name[next(iter(names))] for form, names in having.items()
+                                        if len(names) == 1 and (form, next(iter(names))) in readable}
+        # a word two or more names have ("milk" of milk_crate and milk-churn, wherever it stands in
+        # them): it names none of them alone, and a command that uses it is refused naming them
+        # all (never the nearest by typo tolerance, never a guess)
+        self.shared_parts: dict[str, list[str]] = {form: sorted(names) for form, names in having.items()
+                                                   if len(names) > 1}
+        # a product's modifier where the head is no container ("oil" of oil-filter): never read as
+        # the product (it may name something else), only offered as a candidate reading's repair
+        self.loose_parts: dict[str, list[str]] = {form: sorted(names) for form, names in having.items()
+                                                  if len(names) == 1 and form not in self.parts
+                                                  and by_name[next(iter(names))].kind == "product"}
 
         self.prefixes = _starts(self.names, by_name, alone, owners)
 
@@ -439,6 +456,11 @@ class NameIndex:
         part = self.parts.get(norm)
         if part is not None:
             return Tok("name", raw[i], part.name, part.kind), i + 1  # "formula" for baby-formula
+        if norm in self.shared_parts or norm in self.loose_parts:
+            # a word of several names ("milk" of milk_crate and milk-churn), or a modifier that may
+            # name something else ("oil" of oil-filter): never read as the nearest name by typo
+            # tolerance ("milks" is no misspelt milk_crate); the command is refused, the names offered
+            return None
         alpha, digits = split_digits(norm)
         found = self.lookup(alpha, digits, raw[i])
         if found is None and norm in self.prefixes:

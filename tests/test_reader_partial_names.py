@@ -1,0 +1,62 @@
+"""A thing named by one word of its name (issue 23, the warehouse reader): the plural of what a
+container holds ("the creams" of cream_tub), a word two names share refused naming both, and a
+modifier that is no container's content ("cheese" of cheese_wheel) only ever offered as a
+candidate reading. Through the real reader, in a world of our own."""
+from __future__ import annotations
+
+import pytest
+
+from pipflow.errors import TranslationError
+from pipflow.warehouse.language.names import NameIndex
+from pipflow.warehouse.language.translator import understand
+
+DAIRY = {
+    "shelves": {
+        "cold_room": {"x": 0, "y": 0, "capacity": 20}, "chill_bay": {"x": 10, "y": 0, "capacity": 20},
+        "dispatch-dock": {"x": 0, "y": 10, "capacity": 20}, "back_yard": {"x": 10, "y": 10, "capacity": 20},
+    },
+    "products": {"cream_tub": {}, "butter-box": {}, "cheese_wheel": {}, "milk_crate": {}, "milk-churn": {},
+                 "one_pack": {}},
+    "stock": {"cold_room": {"cream_tub": 5, "butter-box": 4, "cheese_wheel": 3, "milk_crate": 2, "milk-churn": 2},
+              "chill_bay": {"cream_tub": 1},
+              "dispatch-dock": {"one_pack": 2}},
+    "robots": {"cart1": {"kind": "amr"}, "cart2": {"kind": "amr"}, "heifer": {"kind": "forklift"}},
+}
+
+
+@pytest.mark.parametrize("command, goal", [
+    ("Move 2 of the creams from the cold room to the back yard",
+     {"cold_room": {"cream_tub": 3}, "back_yard": {"cream_tub": 2}}),
+    ("Move 2 creams from the cold room to the back yard",
+     {"cold_room": {"cream_tub": 3}, "back_yard": {"cream_tub": 2}}),
+    ("the back yard should have three butters", {"back_yard": {"butter-box": 3}}),
+    ("the back yard should have 3 of butter", {"back_yard": {"butter-box": 3}}),
+    ("Give the chill bay 2 more creams", {"chill_bay": {"cream_tub": 3}}),
+])
+def test_the_plural_of_what_a_container_holds_names_the_product(command: str, goal: dict) -> None:
+    assert understand(command, DAIRY)["goal"] == goal
+
+
+def test_a_word_two_names_share_is_refused_naming_both() -> None:
+    with pytest.raises(TranslationError, match=r"'milks?'.*may be any of milk-churn, milk_crate.*say which") as err:
+        understand("Move 2 milks from the cold room to the back yard", DAIRY)
+    # each is offered, never one chosen
+    offered = {json for c in err.value.candidates for json in c["goal"] for json in c["goal"][json]}
+    assert {"milk-churn", "milk_crate"} <= offered
+
+
+def test_a_modifier_that_is_no_containers_content_is_only_offered() -> None:
+    """ "cheese" may be cheese_wheel, or cheese of another kind: refused, with the reading offered."""
+    with pytest.raises(TranslationError) as err:
+        understand("Move 2 cheeses from the cold room to the back yard", DAIRY)
+    assert any(c["goal"] == {"cold_room": {"cheese_wheel": 1}, "back_yard": {"cheese_wheel": 2}}
+               and "read 'cheeses' as 'cheese_wheel'" in c["reading"] for c in err.value.candidates)
+
+
+def test_a_number_word_of_a_name_names_nothing_alone() -> None:
+    index = NameIndex(DAIRY)
+    assert "one" not in index.parts and "ones" not in index.parts and "one" not in index.shared_parts
+    assert index.parts["creams"].name == "cream_tub" and "milk" in index.shared_parts
+    # "one" stays a count: "move one of the creams" is one unit of cream_tub
+    assert understand("Move one of the creams from the cold room to the back yard", DAIRY)["goal"] == {
+        "cold_room": {"cream_tub": 4}, "back_yard": {"cream_tub": 1}}
