@@ -60,3 +60,39 @@ def test_a_number_word_of_a_name_names_nothing_alone() -> None:
     # "one" stays a count: "move one of the creams" is one unit of cream_tub
     assert understand("Move one of the creams from the cold room to the back yard", DAIRY)["goal"] == {
         "cold_room": {"cream_tub": 4}, "back_yard": {"cream_tub": 1}}
+
+
+# --- trailing adjuncts of purpose, time or reason (asides.trailing_adjunct) ----------------------
+@pytest.mark.parametrize("command, aside", [
+    ("The chill bay should have 4 cream tubs for afternoon pickup", "for afternoon pickup"),
+    ("The chill bay should have 4 cream tubs before the van turns up", "before the van turns up"),
+    ("The chill bay should have 4 cream tubs by opening time", "by opening time"),
+    ("The chill bay should have 4 cream tubs because of the weather", "because of the weather"),
+    ("The chill bay should have 4 cream tubs for the fete, and keep heifer out of the back yard",
+     "for the fete"),
+])
+def test_a_trailing_adjunct_that_carries_nothing_is_set_aside_and_said(command: str, aside: str) -> None:
+    got = understand(command, DAIRY)
+    assert got["goal"] == {"chill_bay": {"cream_tub": 4}}
+    assert got["order"]["set_aside"] == [aside]
+    assert any("set aside" in line and aside in line for line in got["explanation"])
+
+
+@pytest.mark.parametrize("tail", [
+    "for the amrs",             # a robot kind
+    "for cart1",                # a robot
+    "but not on the back yard",  # negation and a place
+    "by 3 at most",             # a number and a bound
+    "before 2pm",               # a time is a number
+    "for thre days",            # a misspelt number word
+    "for two days",
+    "before that",              # orders the command's own parts
+    "for now only",             # exclusivity
+    "until all are gone",       # a quantity
+    "for the dispatch",         # a word of a place's name
+])
+def test_an_adjunct_with_anything_operative_is_never_set_aside(tail: str) -> None:
+    with pytest.raises(TranslationError):
+        got = understand(f"The chill bay should have 4 cream tubs {tail}", DAIRY)
+        assert tail not in (got["order"].get("set_aside") or [])
+        raise TranslationError("read, but not by setting the adjunct aside")

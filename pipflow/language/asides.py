@@ -102,6 +102,40 @@ def trailing_thanks(words: list[str], content: Callable[[str], bool]) -> int:
     return k
 
 
+#: words that open an adjunct of purpose, time or reason at the end of a clause ("... for afternoon
+#: pickup", "... before the coach turns up", "... by opening time", "... because we're short"): the
+#: adjunct is set aside when nothing after its opening word carries content (:func:`trailing_adjunct`).
+#: "before", "after", "until", "till" and "while" are operative elsewhere (they order things); here
+#: only as the opening word, and never before a pronoun or "then" ("before that" orders the
+#: command's own parts). Not "but", "except", "so", "and", "or", "then": they join or restrict.
+ADJUNCTS = frozenset({"for", "before", "after", "by", "until", "till", "once", "when", "while", "because",
+                      "since", "as", "cause", "cos", "coz", "cuz"})
+#: words after an adjunct's opening word that point back at the order itself ("for this", "before that")
+_BACK = OBJECT_PRONOUNS | {"then", "now", "which"}
+
+
+def trailing_adjunct(words: list[str], content: Callable[[str], bool]) -> int:
+    """How many words at the end of a clause that carries content are an adjunct of purpose, time
+    or reason that carries none ("... on the ramp for afternoon pickup"): it opens with a word of
+    :data:`ADJUNCTS`, and no word after it is operative (:func:`near_operative`, opening words of
+    further adjuncts aside), a number, a name of the world or a content word of the domain
+    (``content``); 0 when there is none. The earliest such opening word is taken (the adjunct may
+    hold several: "for pickup before lunch"); the words before it must still carry content."""
+    for j in range(1, len(words) - 1):
+        if words[j] not in ADJUNCTS or words[j + 1] in _BACK:
+            continue
+        rest = words[j + 1:]
+        if any(content(w) or any(ch.isdigit() for ch in w) or (near_operative(w) and w not in ADJUNCTS)
+               for w in rest):   # "for 2pm collection": a time is a number, never talk
+            continue
+        if any(w in ADJUNCTS and nxt in _BACK for w, nxt in zip(rest, rest[1:] + [""])):
+            continue
+        if not any(content(w) or near_operative(w) for w in words[:j]):
+            return 0   # the clause is talk as a whole, or nothing: judged as a clause
+        return len(words) - j
+    return 0
+
+
 @dataclass(frozen=True)
 class Clause:
     """A stretch of a command between clause marks: its words and where they are."""

@@ -15,7 +15,7 @@ from dataclasses import dataclass, replace
 from lark import Token
 
 from pipflow.errors import InputError, Refusal, TranslationError
-from pipflow.language.asides import FUNCTION_WORDS, Clause, clauses, content_free, trailing_thanks
+from pipflow.language.asides import trailing_adjunct, FUNCTION_WORDS, Clause, clauses, content_free, trailing_thanks
 from pipflow.language.characters import refuse_unread
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS
 from pipflow.language.spelling import distance, normalize, plural_forms, slip, tolerance
@@ -317,6 +317,12 @@ def corrected(toks: list[Tok]) -> list[Tok]:
     return out
 
 
+#: words of time the grammar reads only in its asides ("by tonight", "before lunch"): inside an
+#: adjunct ("... for afternoon pickup", "... by opening time") they say when, nothing the order needs
+TIMES_OF_DAY = frozenset({"morning", "afternoon", "evening", "tonight", "tomorrow", "noon", "lunch", "time",
+                          "later", "today", "oclock", "pm", "am"})
+
+
 class Lexicon:
     """The world's vocabulary for the grammar: names, robot kinds, tags and skills."""
 
@@ -452,12 +458,26 @@ class Lexicon:
         if thanks:   # "... to the dray bay ta": the thanks closing the last clause, without a comma
             end = parts[-1].end
             free.append(Clause(end - thanks, end, parts[-1].words[-thanks:]))
+        inner: set[int] = set()   # the starts of parts of a clause: no clause mark of their own
+        for c in parts:
+            # "... on the ramp for afternoon pickup": an adjunct of purpose, time or reason that
+            # carries nothing, at the end of a clause that does (asides.trailing_adjunct)
+            if c in free:
+                continue
+            said = list(c.words[:len(c.words) - thanks] if c is parts[-1] else c.words)
+            n = trailing_adjunct(said, lambda w: w == "\0" or (w not in TIMES_OF_DAY and self.content(w)))
+            if n:
+                end = c.start + len(said)
+                free.append(Clause(end - n, end, tuple(said[-n:])))
+                inner.add(end - n)
         if not free:
             return cur, []
         drop = {k for c in free for k in range(c.start, c.end)}
-        for c in free:
+        for c in sorted(free, key=lambda c: c.start):
             aside.append(" ".join(t.text for t in cur[c.start:c.end]))
             # the clause mark that set it off goes with it
+            if c.start in inner:
+                continue
             if c.end < len(cur) and cur[c.end].kind == "punct":
                 drop.add(c.end)
             elif c.start > 0 and cur[c.start - 1].kind == "punct":
