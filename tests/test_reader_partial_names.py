@@ -96,3 +96,54 @@ def test_an_adjunct_with_anything_operative_is_never_set_aside(tail: str) -> Non
         got = understand(f"The chill bay should have 4 cream tubs {tail}", DAIRY)
         assert tail not in (got["order"].get("set_aside") or [])
         raise TranslationError("read, but not by setting the adjunct aside")
+
+
+# --- quantifiers and selectors a demanding user expects ------------------------------------------
+EVERYTHING_COLD_TO_YARD = {"cold_room": {"cream_tub": 0, "butter-box": 0, "cheese_wheel": 0, "milk_crate": 0,
+                                         "milk-churn": 0},
+                           "back_yard": {"cream_tub": 5, "butter-box": 4, "cheese_wheel": 3, "milk_crate": 2,
+                                         "milk-churn": 2}}
+
+
+@pytest.mark.parametrize("command, goal", [
+    ("Move the whole lot from the cold room to the back yard", EVERYTHING_COLD_TO_YARD),
+    ("Move everything we stock from the cold room to the back yard", EVERYTHING_COLD_TO_YARD),
+    ("Give the chill bay one more of everything",
+     {"chill_bay": {"cream_tub": 2, "butter-box": 1, "cheese_wheel": 1, "milk_crate": 1, "milk-churn": 1,
+                    "one_pack": 1}}),
+    ("Give the back yard 2 of everything there is",
+     {"back_yard": {"cream_tub": 2, "butter-box": 2, "cheese_wheel": 2, "milk_crate": 2, "milk-churn": 2,
+                    "one_pack": 2}}),
+    ("The chill bay and the back yard should have 2 of the creams each",
+     {"chill_bay": {"cream_tub": 2}, "back_yard": {"cream_tub": 2}}),
+    ("Give the back yard as many of the creams as the cold room has", {"back_yard": {"cream_tub": 5}}),
+    ("Bring all cream tubs to the back yard except one on the cold room",
+     {"chill_bay": {"cream_tub": 0}, "dispatch-dock": {"cream_tub": 0}, "back_yard": {"cream_tub": 5},
+      "cold_room": {"cream_tub": 1}}),
+    ("Move 2 cream tubs from the cold room to the chill bay and the rest of the cold room's cream tubs "
+     "to the back yard", {"cold_room": {"cream_tub": 0}, "chill_bay": {"cream_tub": 3}, "back_yard": {"cream_tub": 3}}),
+])
+def test_quantifiers_people_use_are_read(command: str, goal: dict) -> None:
+    assert understand(command, DAIRY)["goal"] == goal
+
+
+def test_swapping_the_whole_of_a_place_swaps_everything_on_both() -> None:
+    got = understand("Swap the whole of the cold room with the chill bay", DAIRY)["goal"]
+    assert got["chill_bay"]["butter-box"] == 4 and got["cold_room"]["cream_tub"] == 1
+
+
+@pytest.mark.parametrize("command, why", [
+    # "too many" says no count: never a silent guess at how many go
+    ("The cold room's got too many cream tubs", "says no count"),
+    ("The cold room has got too many butters", "says no count"),
+    # the rest of a place nothing was taken from
+    ("Move 2 cream tubs from the cold room to the chill bay and the rest of the chill bay's cream tubs "
+     "to the back yard", "the move before takes from cold_room"),
+    # a place cannot keep one it does not hold
+    ("Bring all cream tubs to the back yard except one on the dispatch dock", "holds 0 cream_tub now"),
+    # "except one" needs all of one product
+    ("Bring 3 cream tubs to the back yard except one on the cold room", "needs all of one product"),
+])
+def test_a_quantifier_without_a_definite_reading_is_refused_with_its_reason(command: str, why: str) -> None:
+    with pytest.raises(TranslationError, match=why):
+        understand(command, DAIRY)

@@ -104,7 +104,7 @@ def without(lexed: Lexed, drop: list[int]) -> Lexed:
 
 
 def failure(exc: UnexpectedInput, lexed: Lexed, lex: Lexicon) -> TranslationError:
-    sentence = " ".join(t.text for t in lexed.source).replace(" zzposs", "'s")
+    sentence = " ".join(t.text for t in lexed.source if t.text).replace(" zzposs", "'s")
     where = ""
     if isinstance(exc, UnexpectedToken) and exc.token.type != "$END":
         k = exc.token.start_pos
@@ -149,4 +149,4 @@ def failure(exc: UnexpectedInput, lexed: Lexed, lex: Lexicon) -> TranslationErro
 
 def said(lexed: Lexed) -> str:
     """A sentence's words as the user wrote them (for an echo)."""
-    return " ".join(t.text for t in lexed.source).replace(" zzposs", "'s")
+    return " ".join(t.text for t in lexed.source if t.text).replace(" zzposs", "'s")

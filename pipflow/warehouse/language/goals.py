@@ -305,6 +305,36 @@ class GoalRules:
 
     g_transfer_except = g_transfer
 
+    def g_transfer_except_count(self, node: Tree) -> None:
+        """ "Bring all X to Q except one on P": every X goes to Q, but P keeps that many of its
+        own (read as P set to N, then the rest of P's X to Q). Refused where P holds fewer than N
+        now (it would be brought there: no "except"), for anything but all of one product, and
+        where P is Q."""
+        parts = self.clause_parts(node)
+        words, nps = parts.words, parts.nps
+        exc = self.sub(node, "except_count")[0]
+        kept = self.place_list(self.sub(exc, "places")[0])
+        nums = [int(t.value) for t in self.toks(exc, "NUM")]
+        n = nums[0] if nums else 1
+        dst = [self.place_list(p) for p in self.sub(node, "places") if p not in self.sub(exc, "places")][0]
+        if len(nps) != 1 or "all" not in nps[0]["amount"] or not nps[0]["items"] \
+                or len(nps[0]["items"].get("names") or []) != 1:
+            raise TranslationError(f"{quote(words)}: 'except {n} on ...' needs all of one product "
+                                   f"('every X to Q except one on P')")
+        item = nps[0]["items"]["names"][0]
+        for p in kept:
+            if p in dst:
+                raise TranslationError(f"{quote(words)}: {p} is where they go; nothing is kept there")
+            if _held(self.lex.world, p, item) < n:
+                raise TranslationError(f"{quote(words)}: {p} holds {_held(self.lex.world, p, item)} {item} now, "
+                                       f"fewer than the {n} it should keep; say what to bring there")
+        self.statements.append(self._transfer_statement(nps[0], None, dst, words, kept))
+        for p in kept:
+            self.statements.append({"op": "set", "places": {"names": [p]}, "items": {"names": [item]},
+                                    "amount": {"count": n}, "words": words})
+            self.statements.append({"op": "transfer", "items": {"names": [item]}, "amount": {"rest": True},
+                                    "from": {"names": [p]}, "to": {"names": dst}, "words": words})
+
     def g_remove(self, node: Tree) -> None:
         parts = self.clause_parts(node)
         words, nps, plist = parts.words, parts.nps, parts.plist

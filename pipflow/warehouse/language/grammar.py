@@ -86,14 +86,17 @@ np: NUM of? ihead                          -> np_count
   | lower NUM of? ihead ","? ("but" | "and") upper NUM    -> np_between
   | ("somewhere" | "anywhere")? "from" NUM "to" NUM of? ihead -> np_between
   | NUM more "of" ("each" | "every") ITEMWORD? -> np_each_more
+  | ("one" more | NUM more) "of" "everything" -> np_each_more
   | NUM "to" NUM of? ihead                 -> np_between
   | vague NUM of? ihead                    -> np_vague
   | vagueq of? ihead                       -> np_vague
+  | "too" ("many" | "much") of? ihead       -> np_too_many
   | NUM "of" ("each" | "every") ITEMWORD?  -> np_each
+  | NUM "of" "everything"                  -> np_each
   | "everything"                           -> np_everything
   | ("everything" | "all" ITEMWORD | "every" ITEMWORD | "all" "goods") except_items -> np_everything
-  | "as" "many" ihead "as" PLACE ("has" | "holds" | "have" | "contains") now? -> np_as_many
-  | "as" "many" ihead "as" PLACE                    -> np_as_many
+  | "as" "many" of? ihead "as" PLACE ("has" | "holds" | "have" | "contains") now? -> np_as_many
+  | "as" "many" of? ihead "as" PLACE                    -> np_as_many
   | "as" "many" ihead "as" ihead (("it" | "they") ("has" | "have" | "holds" | "hold" | "does" | "do"))? now? -> np_as_many_item
   | "same" ("number" | "amount" | "count" | "quantity") "of" ihead "as" ihead -> np_as_many_item
   | "as" "many" ihead? "as" PLACE (lsep PLACE)+ ("has" | "have" | "hold" | "holds" | "contain")? now? together -> np_as_many_total
@@ -112,7 +115,7 @@ np: NUM of? ihead                          -> np_count
   | NUM                                    -> np_bare
   | NUM "of" ("them" | "those" | "these")  -> np_bare
 
-rest_of: "of" (ihead | "them" | "it" | its ihead)
+rest_of: "of" (ihead | "them" | "it" | its ihead | posplace ihead)
 bare: ihead (lsep ihead)*
 // "there shouldn't be any X left on P": after a negation "any X" is none of it
 any_items: "any" any_none ((lsep | "or") "any"? any_none)*  -> items
@@ -159,7 +162,7 @@ modal: "should" | "must" | "shall" | "will" | "would" | "ought" "to" | "oughta" 
      | ("needs" | "need" | "has" | "have" | "got") "to" | ("is" | "are" | "be") "supposed" "to"
      | "supposed" "to" | ("is" | "are") "to" | "to" | "can" | "could" | "may" | "might"
 be: "be" | "is" | "are" | "become" | "becomes" | "end" "up" "with" | "get"
-setv: "has" | "have" | "hold" | "holds" | "store" | "stores" | "stock" | "stocks" | "contain"
+setv: "has" "got" | "have" "got" | "has" | "have" | "hold" | "holds" | "store" | "stores" | "stock" | "stocks" | "contain"
     | "contains" | "get" | "gets" | "keep" | "keeps" | "carry" | "carries" | "house" | "houses"
     | "need" | "needs" | "receive" | "receives" | "end" "up" "with" | "be" "stocked" "with"
     | "ends" "up" "with" | "ends" "with" | "end" "up" "holding" | "ends" "up" "holding"
@@ -202,6 +205,7 @@ goal: there_be items loc                                  -> g_set
     | items modal? stay? loc                              -> g_set
     | loc ","? there_be? items                            -> g_loc_set
     | both? places modal? each? setv each? items left?     -> g_place_set
+    | both? places modal? setv items ("each" | "apiece") left? -> g_place_set
     | both? places modal? "each" be? items                  -> g_place_set
     | places (":" | ",") items                             -> g_place_set
     | places ":" ("add" | "plus") items                     -> g_add_place
@@ -293,6 +297,8 @@ goal: there_be items loc                                  -> g_set
     | splitv pitems even? among places even?                 -> g_split_src
     | addv items adv? to places from places                -> g_transfer
     | addv items to places ","? except_places              -> g_transfer_except
+    | addv items to places ","? except_count               -> g_transfer_except_count
+    | addv items except_count to places                    -> g_transfer_except_count
     | items modal? go to places ","? except_places         -> g_transfer_except
     | items modal? go to places                            -> g_add
     | addv items except_places to places                   -> g_transfer_except
@@ -320,6 +326,7 @@ goal: there_be items loc                                  -> g_set
     | places modal? be "full" "of" only? ihead only?         -> g_fill
     | places modal? "be" "filled" "up"? "with" only? ihead only? -> g_fill
     | "fill" places "up"? "with" only? ihead only?           -> g_fill
+    | ("fill" "up"? | "top" "up" | "pack") "rest" "of" places "up"? "with" only? ihead only? -> g_fill
     | "fill" places ("up" | "to" ("top" | "capacity" | "brim")) "with" only? ihead only? -> g_fill
     | "fill" places "up"? "with" "nothing" "but" ihead       -> g_fill
     | modal? be "full" "of" only? ihead                      -> g_fill_elided
@@ -357,7 +364,7 @@ goal: there_be items loc                                  -> g_set
     | swapv ("what" | "contents" "of")? places ("hold" | "have" | "contain" | "holds" | "has")? -> g_swap
     | swapv ihead (lsep ihead)* ("between" | "of" | "on") places -> g_swap_items
     | swapv posplace ihead "with" (posplace | places)       -> g_swap_poss
-    | swapv ("everything" | "what" "is" | "contents" | "stock" | "what" "sits") ("on" | "in" | "at" | "of") places "with" ("everything" | "what" "is" | "contents" | "stock" | "what" "sits" | "that" | "those")? ("on" | "in" | "at" | "of") places -> g_swap
+    | swapv ("everything" | "what" "is" | "contents" | "stock" | "what" "sits") ("on" | "in" | "at" | "of") places "with" ("everything" | "what" "is" | "contents" | "stock" | "what" "sits" | "that" | "those")? ("on" | "in" | "at" | "of")? places -> g_swap
     | swapv posplace "and" posplace ihead                  -> g_swap_poss
     | splitv items? even? among places even?                -> g_split
     | splitv bare even? among places even?                  -> g_split
@@ -400,6 +407,7 @@ as_is: "where" ("it" | "they") ("is" | "are") | "as" ("it" | "they") ("is" | "ar
 
 except_places: ("except" | "but" "not" | "apart" "from" | "other" "than" | "excluding" | "not") except_what? ("up" | "down" | "over" | "out")? ("on" | "in" | "at" | "from") places
              | ("except" | "but" "not" | "excluding" | "not") from places
+except_count: ("except" | "but" | "apart" "from" | "other" "than" | "excluding" | "leaving") ("one" | NUM) ("of" "them")? ("on" | "in" | "at") places
 except_what: "ones" | "those" | "them" | "what" "is" | "any" | "what" "sits" | "what" "lies" | "ones" "that" ("are" | "sit" | "lie")
 
 // ---------------------------------------------------------------- ellipsis tails

@@ -176,6 +176,39 @@ VERB_LEXICON: dict[str, tuple[str, str]] = {
 }
 
 
+#: phrases of quantity people say for the grammar's own words (issue 23, r6w): "the whole lot" is
+#: everything; "the whole of P" is everything of P; what follows "everything" to say it is the
+#: stock ("everything we stock", "everything there is") says nothing more
+QUANTITY_PHRASES: dict[str, tuple[str, ...]] = {
+    "whole lot": ("everything",), "whole of": ("everything", "of"),
+    "everything we stock": ("everything",), "everything we have": ("everything",),
+    "everything we carry": ("everything",), "everything we hold": ("everything",),
+    "everything we ve got": ("everything",), "everything we got": ("everything",),
+    "everything there is": ("everything",), "everything in stock": ("everything",),
+}
+
+
+def quantity_phrases(toks: list[Tok], keywords: dict[str, str]) -> list[Tok]:
+    """The tokens with each phrase of :data:`QUANTITY_PHRASES` read as its grammar words (longest
+    first; the words as written stay the first token's text)."""
+    phrases = sorted(((tuple(k.split()), v) for k, v in QUANTITY_PHRASES.items() if all(w in keywords for w in v)),
+                     key=lambda x: -len(x[0]))
+    out: list[Tok] = []
+    k = 0
+    while k < len(toks):
+        for words, said in phrases:
+            got = toks[k:k + len(words)]
+            if len(got) == len(words) and all(x.kind == "word" and x.value == w for x, w in zip(got, words)):
+                text = " ".join(x.text for x in got)
+                out += [Tok("word", text if j == 0 else "", w) for j, w in enumerate(said)]
+                k += len(words)
+                break
+        else:
+            out.append(toks[k])
+            k += 1
+    return out
+
+
 def lexicon_verbs(toks: list[Tok], keywords: dict[str, str]) -> list[Tok]:
     """The tokens with each phrase of :data:`VERB_LEXICON` read as its grammar verb (longest
     phrase first; a phrase whose words are already the grammar's, or whose verb the grammar does
@@ -499,7 +532,8 @@ class Lexicon:
                 if typo is not None:
                     t = Tok("word", t.text, typo)
             fixed.append(t)
-        toks = lexicon_verbs(read_counts(_split_hyphens(fixed, self.keywords)), self.keywords)
+        toks = lexicon_verbs(quantity_phrases(read_counts(_split_hyphens(fixed, self.keywords)), self.keywords),
+                             self.keywords)
         toks = corrected_later(without_particles(corrected(toks)))
         out: list[Lexed] = []
         cur: list[Tok] = []
@@ -540,6 +574,9 @@ class Lexicon:
                     term = ("RKIND", stem)
             if term[0] == "POSS" and tokens and tokens[-1].type == "ROBOT" and "is" in self.keywords:
                 term = (self.keywords["is"], "is")  # "Jumbo's the only one ...": a robot's "'s" is "is"
+            elif (term[0] == "POSS" and tokens and tokens[-1].type == "PLACE" and k + 1 < len(toks)
+                  and toks[k + 1].kind == "word" and toks[k + 1].value == "got" and "has" in self.keywords):
+                term = (self.keywords["has"], "has")  # "Cellar B's got ...": a place's "'s got" is "has got"
             tokens.append(Token(term[0], term[1], start_pos=len(tokens)))
             source.append(t)
         return Lexed(tokens, source, frozenset(exact))

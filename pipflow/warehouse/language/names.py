@@ -160,6 +160,50 @@ def _starts(names: list["_Name"], by_name: dict[str, "_Name"], alone: Callable[[
             if len(owners) == 1 and alone(form) and form not in words_of_names}
 
 
+def _word_parts(names: list["_Name"], by_name: dict[str, "_Name"], alone: Callable[[str], bool]) -> tuple[
+        dict[str, set[str]], dict[str, "_Name"], dict[str, list[str]], dict[str, list[str]]]:
+    """The words of the world's multi-word names, read alone: (every name each word belongs to,
+    the words that name one thing, the words several names share, a product's modifiers that are
+    only offered). See :class:`NameIndex`."""
+    having: dict[str, set[str]] = {}   # every name with the word, read alone or not
+    readable: set[tuple[str, str]] = set()
+    for n in names:
+        words = [w for w in re.split(r"[-_\s]+", n.name.lower()) if w]
+        # robots go by name, kind or tag: a word of a robot's name ("big" of big_lift) is English
+        if n.kind == "robot" or len([w for w in words if w.isalpha()]) < 2:
+            continue
+        for k, w in enumerate(words):
+            if not (w.isalpha() and len(w) >= 3 and alone(w)):
+                continue
+            # the plural of the last word, and of a product's modifier ("corks" of cork-sack:
+            # the sacks of cork, counted; "tastings" is no noun of tasting_room)
+            plural = k == len(words) - 1 or n.kind == "product"
+            forms = [w] + ([f for f in plural_forms(w)[:1] if alone(f)] if plural else [])
+            # a product goes by its head noun ("formula" of baby-formula), or by what its
+            # container holds ("rice" of rice_sack, "soup" of soup_can); another modifier may
+            # name something else ("oil" is no oil filter, "plants" no plant pots). A place goes
+            # by any word of its own ("inbound" of inbound_dock, "paint" of paint-shop)
+            read = not (n.kind == "product" and k < len(words) - 1 and words[-1] not in CONTAINERS)
+            for form in forms:
+                having.setdefault(form, set()).add(n.name)
+                if read:
+                    readable.add((form, n.name))
+    # a word of exactly one name, read as it where the name may go by that word
+    parts: dict[str, _Name] = {form: by_name[next(iter(owners))] for form, owners in having.items()
+                 if len(owners) == 1 and (form, next(iter(owners))) in readable}
+    # a word two or more names have ("milk" of milk_crate and milk-churn, wherever it stands in
+    # them): it names none of them alone, and a command that uses it is refused naming them
+    # all (never the nearest by typo tolerance, never a guess)
+    shared: dict[str, list[str]] = {form: sorted(owners) for form, owners in having.items()
+                 if len(owners) > 1}
+    # a product's modifier where the head is no container ("oil" of oil-filter): never read as
+    # the product (it may name something else), only offered as a candidate reading's repair
+    loose: dict[str, list[str]] = {form: sorted(owners) for form, owners in having.items()
+                 if len(owners) == 1 and form not in parts
+                 and by_name[next(iter(owners))].kind == "product"}
+    return having, parts, shared, loose
+
+
 class NameIndex:
     """The world's names by kind, and the rules for deciding which one a word means."""
 
@@ -220,43 +264,7 @@ class NameIndex:
             return (word not in STOPWORDS and word not in self.reserved and word not in self.forms
                     and word not in NUMBER_WORDS and word not in self.groups
                     and not any(word in KIND_WORDS[k] or word in self.stems[k] for k in KINDS))
-        having: dict[str, set[str]] = {}   # every name with the word, read alone or not
-        readable: set[tuple[str, str]] = set()
-        for n in self.names:
-            words = [w for w in re.split(r"[-_\s]+", n.name.lower()) if w]
-            # robots go by name, kind or tag: a word of a robot's name ("big" of big_lift) is English
-            if n.kind == "robot" or len([w for w in words if w.isalpha()]) < 2:
-                continue
-            for k, w in enumerate(words):
-                if not (w.isalpha() and len(w) >= 3 and alone(w)):
-                    continue
-                # the plural of the last word, and of a product's modifier ("corks" of cork-sack:
-                # the sacks of cork, counted; "tastings" is no noun of tasting_room)
-                plural = k == len(words) - 1 or n.kind == "product"
-                forms = [w] + ([f for f in plural_forms(w)[:1] if alone(f)] if plural else [])
-                # a product goes by its head noun ("formula" of baby-formula), or by what its
-                # container holds ("rice" of rice_sack, "soup" of soup_can); another modifier may
-                # name something else ("oil" is no oil filter, "plants" no plant pots). A place goes
-                # by any word of its own ("inbound" of inbound_dock, "paint" of paint-shop)
-                read = not (n.kind == "product" and k < len(words) - 1 and words[-1] not in CONTAINERS)
-                for form in forms:
-                    having.setdefault(form, set()).add(n.name)
-                    if read:
-                        readable.add((form, n.name))
-        owners = having
-        # a word of exactly one name, read as it where the name may go by that word
-        self.parts: dict[str, _Name] = {form: by_name[next(iter(names))] for form, names in having.items()
-                                        if len(names) == 1 and (form, next(iter(names))) in readable}
-        # a word two or more names have ("milk" of milk_crate and milk-churn, wherever it stands in
-        # them): it names none of them alone, and a command that uses it is refused naming them
-        # all (never the nearest by typo tolerance, never a guess)
-        self.shared_parts: dict[str, list[str]] = {form: sorted(names) for form, names in having.items()
-                                                   if len(names) > 1}
-        # a product's modifier where the head is no container ("oil" of oil-filter): never read as
-        # the product (it may name something else), only offered as a candidate reading's repair
-        self.loose_parts: dict[str, list[str]] = {form: sorted(names) for form, names in having.items()
-                                                  if len(names) == 1 and form not in self.parts
-                                                  and by_name[next(iter(names))].kind == "product"}
+        owners, self.parts, self.shared_parts, self.loose_parts = _word_parts(self.names, by_name, alone)
 
         self.prefixes = _starts(self.names, by_name, alone, owners)
 

@@ -80,7 +80,7 @@ def one_meaning(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict
     tree = forest(lexed.tokens)
     if not any(t.data == "_ambig" for t in tree.iter_subtrees()):
         return read_tree(tree, lexed, lex, selector, memory, picks)
-    sentence = " ".join(t.text for t in lexed.source).replace(" zzposs", "'s")
+    sentence = " ".join(t.text for t in lexed.source if t.text).replace(" zzposs", "'s")
     readings: list[tuple[int, SentenceReader, str | None]] = []
     errors: list[tuple[int, PipflowError]] = []
     for k, alt in enumerate(CollapseAmbiguities().transform(tree)):

@@ -121,7 +121,7 @@ class SentenceReader(GoalRules, TailRules, RuleScope, Interpreter):
         pos = [t.start_pos for t in toks if isinstance(t, Token) and t.start_pos is not None]
         if not pos:
             return ""
-        return " ".join(s.text for s in self.lexed.source[min(pos):max(pos) + 1]).replace(" zzposs", "'s")
+        return " ".join(s.text for s in self.lexed.source[min(pos):max(pos) + 1] if s.text).replace(" zzposs", "'s")
 
     def toks(self, node: Tree, kind: str) -> list[Token]:
         return [t for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == kind)]
@@ -168,6 +168,10 @@ class SentenceReader(GoalRules, TailRules, RuleScope, Interpreter):
 
         if kind in ITEMLESS:
             return {"items": None, "amount": ITEMLESS[kind](nums), "words": words}
+        if kind == "np_rest":
+            # "the rest of P's X": whose rest is checked against the statement before (_rest)
+            named = [str(pp.children[0].value) for r in self.sub(node, "rest_of") for pp in self.sub(r, "posplace")]
+            return {**out(AMOUNTS[kind](nums)), **({"rest_of": named} if named else {})}
         if kind in AMOUNTS:
             return out(AMOUNTS[kind](nums))
         if kind == "np_more_than_place":
@@ -195,6 +199,10 @@ class SentenceReader(GoalRules, TailRules, RuleScope, Interpreter):
             raise TranslationError(f"{quote(words)} is a bound, not a count: it is approximate, and "
                                    f"the goal needs an exact count or a firm bound ('at least 5', "
                                    f"'at most 5', 'between 3 and 5')")
+        if kind == "np_too_many":
+            # "P's got too many X": how many should go, or stay, is not said; nothing is guessed
+            raise TranslationError(f"{quote(words)} says no count: say how many there should be "
+                                   f"(e.g. 'no more than 3') or how many to take away")
         if kind in ("np_each_more", "np_each"):
             return out({"more": nums[0]} if kind == "np_each_more" else {"count": nums[0] if nums else 1}, {"all": True})
         if kind == "np_everything":
@@ -531,6 +539,11 @@ class SentenceReader(GoalRules, TailRules, RuleScope, Interpreter):
         items = np["items"] or prev.get("items")
         if not source or not items or "names" not in items:
             raise TranslationError(f"'{np['words']}': the rest of what? (say where it comes from)")
+        if np.get("rest_of") and np["rest_of"] != source:
+            # "the rest of Q's X" after a move from P: nothing was taken from Q, so its rest is
+            # not said (all of Q's? what P has left?)
+            raise TranslationError(f"'{np['words']}': the rest of {', '.join(np['rest_of'])}'s, but the move "
+                                   f"before takes from {', '.join(source)}; say how many")
         if prev["op"] == "set" and self.lexed.tokens and self.lexed.tokens[0].type in ("ITEM", "ITEMWORD"):
             # "tote bags: 1 on P, rest to Q": the sentence is about the item, so "the rest" may be
             # the rest of every tote bag, or of P's; neither is guessed

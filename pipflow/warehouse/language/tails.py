@@ -135,7 +135,8 @@ class TailRules:
         rest_of = self.sub(node, "rest_of")
         heads = [self.ihead(h, words) for r in rest_of for h in self.sub(r, "ihead")]
         np = {"items": {"names": heads} if heads else None, "amount": {"rest": True}, "words": words}
-        self.statements.append(self._rest(places, np))
+        named = [str(pp.children[0].value) for r in rest_of for pp in self.sub(r, "posplace")]
+        self.statements.append(self._rest(places, {**np, "rest_of": named} if named else np))
 
     def t_not_items(self, node: Tree) -> None:
         words = self.words(node)
