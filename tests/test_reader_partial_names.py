@@ -136,6 +136,9 @@ def test_swapping_the_whole_of_a_place_swaps_everything_on_both() -> None:
     # "too many" says no count: never a silent guess at how many go
     ("The cold room's got too many cream tubs", "says no count"),
     ("The cold room has got too many butters", "says no count"),
+    # after the complaint, a move that does not name the place: from there, or from anywhere?
+    ("The cold room has too many cream tubs, move 2 to the chill bay", "from there, or from anywhere"),
+    ("The cold room has too many cream tubs. Move 2 to the chill bay.", "from there, or from anywhere"),
     # the rest of a place nothing was taken from
     ("Move 2 cream tubs from the cold room to the chill bay and the rest of the chill bay's cream tubs "
      "to the back yard", "the move before takes from cold_room"),
@@ -147,3 +150,19 @@ def test_swapping_the_whole_of_a_place_swaps_everything_on_both() -> None:
 def test_a_quantifier_without_a_definite_reading_is_refused_with_its_reason(command: str, why: str) -> None:
     with pytest.raises(TranslationError, match=why):
         understand(command, DAIRY)
+
+
+def test_a_complaint_with_no_count_sets_what_the_instruction_after_it_means() -> None:
+    """ "P has too many X" asks nothing by itself; "take it down to 2" after it is P's X."""
+    assert understand("The cold room has too many cream tubs, take it down to 2", DAIRY)["goal"] == {
+        "cold_room": {"cream_tub": 2}}
+    assert understand("The cold room's got too many cream tubs, move 2 from it to the chill bay", DAIRY)["goal"] == {
+        "cold_room": {"cream_tub": 3}, "chill_bay": {"cream_tub": 3}}
+
+
+def test_halve_them_after_a_complaint_is_the_complaints_item_and_place_only() -> None:
+    assert understand("The cold room's got too many butters. Halve them.", DAIRY)["goal"] == {
+        "cold_room": {"butter-box": 2}}
+    # after a move, "them" could be at either end: refused
+    with pytest.raises(TranslationError, match="which product on which place"):
+        understand("Move 2 cream tubs from the cold room to the back yard. Halve them.", DAIRY)

@@ -9,11 +9,12 @@ from lark.exceptions import UnexpectedInput
 
 from pipflow.errors import TranslationError
 from pipflow.warehouse.language.forest import failure, keywords, said, without
-from pipflow.warehouse.language.goals import Choice
+from pipflow.warehouse.language.goals import Choice, quote
 from pipflow.warehouse.language.lexicon import Lexed, Lexicon
 from pipflow.warehouse.language.readings import one_meaning
 from pipflow.warehouse.language.robots import RobotSelector
 from pipflow.warehouse.language.salvage import salvage as partial
+from pipflow.warehouse.language.sentence import SentenceReader
 
 #: the most terminals one sentence may have: Earley's time grows faster than the length on
 #: ambiguous lists, so a bound per sentence keeps a whole command's parse linear in its length
@@ -62,6 +63,7 @@ def parse_reading(command: str, world: dict, picks: dict | None = None) -> dict:
     memory: dict = {}
     set_aside: list[str] = []
     unread: list[str] = []  # words a candidate reading left out (salvage mode only)
+    observed: list[tuple[str, list[str]]] = []  # complaints with no count ("P has too many X")
     for index, lexed in enumerate(sentences):
         if not lexed.tokens:
             continue
@@ -73,11 +75,7 @@ def parse_reading(command: str, world: dict, picks: dict | None = None) -> dict:
             lexed = without(lexed, pick["drop"])
             if not lexed.tokens:
                 continue
-        if len(lexed.tokens) > MAX_SENTENCE_WORDS:
-            shown = " ".join(t.text for t in lexed.source[:12])
-            raise TranslationError(f"the sentence '{shown} ...' has {len(lexed.tokens)} words; sentences "
-                                   f"are read up to {MAX_SENTENCE_WORDS} words (end it with a full stop "
-                                   f"and go on in a new one)")
+        _not_too_long(lexed)
         salvage = (picks.get("*") or {}).get("salvage")
         try:
             if salvage and salvage != "sentence":
@@ -114,15 +112,46 @@ def parse_reading(command: str, world: dict, picks: dict | None = None) -> dict:
             set_aside += list(lexed.aside)
         for k, new in reader.updates.items():
             statements[k] = new
+        if observed or reader.observed:
+            _about_the_complaint(reader, observed + reader.observed)
         statements += reader.statements
+        observed += reader.observed
         rules += reader.rules
         memory = {"statements": list(statements), "last": list(reader.statements) or memory.get("last", []),
                   "item": reader.last_item, "places": reader.last_places,
-                  "received": reader.received | set(memory.get("received") or ())}
+                  "received": reader.received | set(memory.get("received") or ()),
+                  "observed": list(reader.observed)}
     if not statements and not rules:
-        raise TranslationError(f"found no goal and no robot rule in '{command}' "
-                               f"(shelves: {lex.index.candidates('shelf')}; "
-                               f"products: {lex.index.candidates('product')})")
+        _nothing_asked(command, lex, observed)
     set_aside = lex.aside + set_aside
     return {"command": command, "statements": statements, "rules": rules,
             **({"set_aside": set_aside} if set_aside else {}), **({"unread": unread} if unread else {})}
+
+def _about_the_complaint(reader: SentenceReader, observed: list[tuple[str, list[str]]]) -> None:
+    """After "P has too many X", a statement that does not name P ("move 2 to Q": from P, or from
+    anywhere?) is refused: the complaint suggests P, the words do not say it, nothing is guessed."""
+    words, places = observed[-1]
+    for st in reader.statements:
+        said = set((st.get("places") or {}).get("names") or []) | set((st.get("from") or {}).get("names") or [])
+        if not said & set(places):
+            raise TranslationError(f"{quote(st['words'])} after {quote(words)}: from there, or from "
+                                   f"anywhere? say where the units come from")
+
+
+def _not_too_long(lexed: Lexed) -> None:
+    """A sentence of more than :data:`MAX_SENTENCE_WORDS` terminals is refused (Earley's time)."""
+    if len(lexed.tokens) > MAX_SENTENCE_WORDS:
+        shown = " ".join(t.text for t in lexed.source[:12])
+        raise TranslationError(f"the sentence '{shown} ...' has {len(lexed.tokens)} words; sentences "
+                               f"are read up to {MAX_SENTENCE_WORDS} words (end it with a full stop "
+                               f"and go on in a new one)")
+
+
+def _nothing_asked(command: str, lex: Lexicon, observed: list[tuple[str, list[str]]]) -> None:
+    """A command with no goal and no rule is refused; a complaint alone says it gives no count."""
+    if observed:
+        raise TranslationError(f"{quote(observed[0][0])} says no count: say how many there should be "
+                               f"(e.g. 'no more than 3') or how many to take away")
+    raise TranslationError(f"found no goal and no robot rule in '{command}' "
+                           f"(shelves: {lex.index.candidates('shelf')}; "
+                           f"products: {lex.index.candidates('product')})")

@@ -352,6 +352,19 @@ class GoalRules:
         amount = {"fraction": [1, 2]} if verb == "halve" else {"times": {"double": 2, "triple": 3, "quadruple": 4}[verb]}
         self.put(places, "each", [{"items": {"names": [head]}, "amount": amount, "words": words}], words)
 
+    def g_mult_pronoun(self, node: Tree) -> None:
+        """ "P has too many X. Halve them.": "them" is the X of the complaint just made (the only
+        place a bare pronoun may take its place from: after a move it could be either end)."""
+        words = self.words(node)
+        said = (self.observed or self.prior_observed or [None])[-1]
+        if said is None or not self.last_item or len(self.last_item) != 1:
+            raise TranslationError(f"{quote(words)}: which product on which place? say it "
+                                   f"(e.g. 'halve P's X')")
+        verb = self.first_word(node)
+        amount = {"fraction": [1, 2]} if verb == "halve" else {"times": {"double": 2, "triple": 3, "quadruple": 4}[verb]}
+        self.put(list(said[1]), "each", [{"items": {"names": list(self.last_item)}, "amount": amount,
+                                          "words": words}], words)
+
     def g_keep_part(self, node: Tree) -> None:
         parts = self.clause_parts(node)
         nps, plist = parts.nps, parts.plist

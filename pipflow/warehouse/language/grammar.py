@@ -349,6 +349,7 @@ goal: there_be items loc                                  -> g_set
     | ("top" ("up" | "off") | "fill" "up") places "with" only? ihead only? -> g_fill
     | (putv | addv) items loc on_top                         -> g_add
     | mult "up"? posplace ihead                              -> g_mult
+    | mult ("them" | "it" | "those")                        -> g_mult_pronoun
     | places ("is" | "are") ("light" | "low" | "short" | "running" "low") "on" ihead ","? ("add" | "bring" | "send") NUM more? -> g_light_add
     | ("pack" | "load" | "stock" | "fill") places "up"? "full" "of" only? ihead only? -> g_fill
     | ("cap" | "limit") places ("at" | "to") NUM of? ihead    -> g_ceiling

@@ -98,6 +98,9 @@ class SentenceReader(GoalRules, TailRules, RuleScope, Interpreter):
         # units taken off a place and then shared out ("Move 3 lids from dispatch: 2 to silo 2 and
         # 1 to rack east"): the removal and how many of it are not yet given a destination
         self.budget: dict | None = None
+        # complaints with no count ("P has too many X"): they set the context, and alone ask nothing
+        self.observed: list[tuple[str, list[str]]] = []   # (words, places)
+        self.prior_observed: list[tuple[str, list[str]]] = list(memory.get("observed") or [])
 
     # -- the rules' dispatch -----------------------------------------------------------------
     def __getattr__(self, name: str) -> Any:
@@ -200,9 +203,9 @@ class SentenceReader(GoalRules, TailRules, RuleScope, Interpreter):
                                    f"the goal needs an exact count or a firm bound ('at least 5', "
                                    f"'at most 5', 'between 3 and 5')")
         if kind == "np_too_many":
-            # "P's got too many X": how many should go, or stay, is not said; nothing is guessed
-            raise TranslationError(f"{quote(words)} says no count: say how many there should be "
-                                   f"(e.g. 'no more than 3') or how many to take away")
+            # "P's got too many X": a complaint, no count; it says what "them" / "it" will mean
+            # in the instruction after it ("Halve them", "take it down to 2"), nothing more
+            return out({"observed": True})
         if kind in ("np_each_more", "np_each"):
             return out({"more": nums[0]} if kind == "np_each_more" else {"count": nums[0] if nums else 1}, {"all": True})
         if kind == "np_everything":
@@ -315,6 +318,11 @@ class SentenceReader(GoalRules, TailRules, RuleScope, Interpreter):
             raise TranslationError(
                 f"{quote(words)}: the command does not say whether each of {', '.join(places)} "
                 f"gets these counts or they share them (say 'each', 'respectively' or 'evenly between')")
+        if nps and all(np["amount"].get("observed") for np in nps):
+            # "P has too many X": no goal; P and X are what the next clause's pronoun means
+            self.last_places = places
+            self.observed.append((words, list(places)))
+            return
         for np in nps:
             if add and np["amount"].get("none"):
                 # "bring / move / add no lids to P": nothing goes there, P keeps its lids (it was
