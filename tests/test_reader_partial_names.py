@@ -120,6 +120,9 @@ EVERYTHING_COLD_TO_YARD = {"cold_room": {"cream_tub": 0, "butter-box": 0, "chees
     ("Bring all cream tubs to the back yard except one on the cold room",
      {"chill_bay": {"cream_tub": 0}, "dispatch-dock": {"cream_tub": 0}, "back_yard": {"cream_tub": 5},
       "cold_room": {"cream_tub": 1}}),
+    ("Put all the cream tubs in the back yard except for 1 on the cold room",
+     {"chill_bay": {"cream_tub": 0}, "dispatch-dock": {"cream_tub": 0}, "back_yard": {"cream_tub": 5},
+      "cold_room": {"cream_tub": 1}}),
     ("Move 2 cream tubs from the cold room to the chill bay and the rest of the cold room's cream tubs "
      "to the back yard", {"cold_room": {"cream_tub": 0}, "chill_bay": {"cream_tub": 3}, "back_yard": {"cream_tub": 3}}),
 ])
@@ -166,3 +169,18 @@ def test_halve_them_after_a_complaint_is_the_complaints_item_and_place_only() ->
     # after a move, "them" could be at either end: refused
     with pytest.raises(TranslationError, match="which product on which place"):
         understand("Move 2 cream tubs from the cold room to the back yard. Halve them.", DAIRY)
+
+
+@pytest.mark.parametrize("command, goal", [
+    ("The back yard should have 2 boxes of butter", {"back_yard": {"butter-box": 2}}),
+    ("The back yard should have 2 tubs of cream", {"back_yard": {"cream_tub": 2}}),
+    ("The back yard should have 2 crates of milk", {"back_yard": {"milk_crate": 2}}),
+])
+def test_a_two_word_product_said_head_of_modifier(command: str, goal: dict) -> None:
+    assert understand(command, DAIRY)["goal"] == goal
+
+
+def test_head_of_modifier_that_fits_no_one_product_is_not_read_as_one() -> None:
+    # "wheels of milk": no product is milk_wheel; never cheese_wheel nor a milk product
+    with pytest.raises(TranslationError):
+        understand("The back yard should have 2 wheels of milk", DAIRY)

@@ -316,7 +316,8 @@ class GoalRules:
         kept = self.place_list(self.sub(exc, "places")[0])
         nums = [int(t.value) for t in self.toks(exc, "NUM")]
         n = nums[0] if nums else 1
-        dst = [self.place_list(p) for p in self.sub(node, "places") if p not in self.sub(exc, "places")][0]
+        lists = self.sub(node, "places") + [p for loc in parts.locs for p in self.sub(loc, "places")]
+        dst = [self.place_list(p) for p in lists if p not in self.sub(exc, "places")][0]
         if len(nps) != 1 or "all" not in nps[0]["amount"] or not nps[0]["items"] \
                 or len(nps[0]["items"].get("names") or []) != 1:
             raise TranslationError(f"{quote(words)}: 'except {n} on ...' needs all of one product "

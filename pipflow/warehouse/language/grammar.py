@@ -299,6 +299,7 @@ goal: there_be items loc                                  -> g_set
     | addv items to places ","? except_places              -> g_transfer_except
     | addv items to places ","? except_count               -> g_transfer_except_count
     | addv items except_count to places                    -> g_transfer_except_count
+    | putv items loc ","? except_count                     -> g_transfer_except_count
     | items modal? go to places ","? except_places         -> g_transfer_except
     | items modal? go to places                            -> g_add
     | addv items except_places to places                   -> g_transfer_except
@@ -408,7 +409,7 @@ as_is: "where" ("it" | "they") ("is" | "are") | "as" ("it" | "they") ("is" | "ar
 
 except_places: ("except" | "but" "not" | "apart" "from" | "other" "than" | "excluding" | "not") except_what? ("up" | "down" | "over" | "out")? ("on" | "in" | "at" | "from") places
              | ("except" | "but" "not" | "excluding" | "not") from places
-except_count: ("except" | "but" | "apart" "from" | "other" "than" | "excluding" | "leaving") ("one" | NUM) ("of" "them")? ("on" | "in" | "at") places
+except_count: ("except" "for"? | "but" | "apart" "from" | "other" "than" | "excluding" | "leaving") ("one" | NUM) ("of" "them")? ("on" | "in" | "at") places
 except_what: "ones" | "those" | "them" | "what" "is" | "any" | "what" "sits" | "what" "lies" | "ones" "that" ("are" | "sit" | "lie")
 
 // ---------------------------------------------------------------- ellipsis tails

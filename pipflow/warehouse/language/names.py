@@ -426,6 +426,20 @@ class NameIndex:
                 return Tok("name", " ".join(part), hit.name, hit.kind), i + size
         return None
 
+    def _inverted(self, raw: list[str], i: int) -> Tok | None:
+        """A two-word product said "<head> of <modifier>" ("crates of bottles" for bottle_crate,
+        "sacks of malt" for malt-sack): read only where the two words are exactly the words of one
+        product's name (in the singular or a plural)."""
+        if i + 2 >= len(raw) or raw[i + 1].lower() != "of" or not raw[i].isalpha() or not raw[i + 2].isalpha():
+            return None
+        head, mod = set(variants(normalize(raw[i]))), set(variants(normalize(raw[i + 2])))
+        hits = [n for n in self.names if n.kind == "product" and len(ws := [w for w in re.split(r"[-_\s]+", n.name.lower())
+                                                                       if w]) == 2
+                and ws[1] in head and ws[0] in mod]
+        if len(hits) != 1:
+            return None
+        return Tok("name", " ".join(raw[i:i + 3]), hits[0].name, "product")
+
     def at(self, raw: list[str], i: int) -> tuple[Tok, int] | None:
         """The name or kind word starting at ``raw[i]``, longest reading first."""
         low = raw[i].lower()
@@ -434,6 +448,9 @@ class NameIndex:
             if kind is not None and raw[i + 1].lower() in KIND_WORDS[kind] | self.stems[kind] | {
                     w + "s" for w in self.stems[kind]}:
                 return self.ordinal(kind, ORDINALS[low], f"{raw[i]} {raw[i + 1]}"), i + 2
+        inverted = self._inverted(raw, i)
+        if inverted is not None:
+            return inverted, i + 3
         if i + 2 < len(raw) and raw[i + 1].lower() in NUMBER_MARKS and word_value(raw[i + 2].lower()) is not None:
             alpha, digits = split_digits(normalize(low))
             if not digits and self.kind_of_word(alpha):  # "shelf number 3", "robot no 4"

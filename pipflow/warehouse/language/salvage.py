@@ -6,13 +6,14 @@ from __future__ import annotations
 from lark.exceptions import UnexpectedInput
 
 from pipflow.errors import TranslationError
+from pipflow.language.asides import ADJUNCTS
 from pipflow.warehouse.language.forest import failure, without
 from pipflow.warehouse.language.lexicon import Lexed, Lexicon
 from pipflow.warehouse.language.readings import one_meaning
 from pipflow.warehouse.language.robots import RobotSelector
 from pipflow.warehouse.language.sentence import SentenceReader
 
-SALVAGE = ("clause", "word", "lead", "sentence")
+SALVAGE = ("clause", "word", "tail", "lead", "sentence")
 
 
 MAX_SALVAGED = 3
@@ -54,6 +55,13 @@ def dropped(how: str, k: int, clause: list[int], lexed: Lexed) -> list[int]:
     read, up to :data:`MAX_SALVAGED`; the word itself when it opens its clause)."""
     if how == "word":
         return [k]
+    if how == "tail":
+        # the end of the clause from the word (or from the adjunct's opening word just before it:
+        # "... in it before the coach turns up at eleven"), as if it were an adjunct
+        marks = (",", ":")
+        start = next((j for j in range(k, max(k - 4, clause[0]) - 1, -1)
+                      if str(lexed.source[j].value) in ADJUNCTS), k) if k < len(lexed.source) else k
+        return [j for j in clause if j >= start and str(lexed.tokens[j].value) not in marks]
     if how == "lead":
         opening = [j for j in clause if j < k and str(lexed.tokens[j].value) not in (",", ":")]
         return opening[:1] or [k]
