@@ -184,3 +184,21 @@ def test_head_of_modifier_that_fits_no_one_product_is_not_read_as_one() -> None:
     # "wheels of milk": no product is milk_wheel; never cheese_wheel nor a milk product
     with pytest.raises(TranslationError):
         understand("The back yard should have 2 wheels of milk", DAIRY)
+
+
+def test_a_two_word_name_written_apart_with_one_word_misspelt() -> None:
+    assert understand("Move 2 cream tubs from the cold room to the chil bay", DAIRY)["goal"] == {
+        "cold_room": {"cream_tub": 3}, "chill_bay": {"cream_tub": 3}}
+    assert understand("Move 2 cream tubs from the cold roon to the chill bay", DAIRY)["goal"] == {
+        "cold_room": {"cream_tub": 3}, "chill_bay": {"cream_tub": 3}}
+
+
+def test_a_resumptive_pronoun_after_the_count_is_the_place_itself() -> None:
+    assert understand("The chill bay should have 3 cream tubs on it", DAIRY)["goal"] == {"chill_bay": {"cream_tub": 3}}
+    assert understand("Every place should have at least 1 butter in it", DAIRY)["goal"] == {
+        p: {"butter-box": {"at_least": 1}} for p in ("cold_room", "chill_bay", "dispatch-dock", "back_yard")}
+
+
+def test_only_some_robots_on_this_job_is_the_whole_command() -> None:
+    got = understand("Move 2 cream tubs from the cold room to the chill bay, and only heifer on this job", DAIRY)
+    assert got["constraints"] == [{"only": ["heifer"]}]

@@ -204,7 +204,7 @@ goal: there_be items loc                                  -> g_set
     | there_be items left loc                             -> g_set
     | items modal? stay? loc                              -> g_set
     | loc ","? there_be? items                            -> g_loc_set
-    | both? places modal? each? setv each? items left?     -> g_place_set
+    | both? places modal? each? setv each? items left? resumptive? -> g_place_set
     | both? places modal? setv items ("each" | "apiece") left? -> g_place_set
     | both? places modal? "each" be? items                  -> g_place_set
     | places (":" | ",") items                             -> g_place_set
@@ -409,6 +409,8 @@ as_is: "where" ("it" | "they") ("is" | "are") | "as" ("it" | "they") ("is" | "ar
 
 except_places: ("except" | "but" "not" | "apart" "from" | "other" "than" | "excluding" | "not") except_what? ("up" | "down" | "over" | "out")? ("on" | "in" | "at" | "from") places
              | ("except" | "but" "not" | "excluding" | "not") from places
+// "P should have 3 X on it": the pronoun is P itself
+resumptive: ("on" | "in" | "at" | "inside") ("it" | "them")
 except_count: ("except" "for"? | "but" | "apart" "from" | "other" "than" | "excluding" | "leaving") ("one" | NUM) ("of" "them")? ("on" | "in" | "at") places
 except_what: "ones" | "those" | "them" | "what" "is" | "any" | "what" "sits" | "what" "lies" | "ones" "that" ("are" | "sit" | "lie")
 
@@ -508,6 +510,7 @@ rwhere: from places                                    -> rw_from
       | "ever"                                             -> rw_all
       | "for" ("anything" | "everything" | "any" ("job" | "task" | "work") | "this" ("job" | "task")) -> rw_all
       | "for" "whole" ("job" | "task" | "command" | "order" | "lot" | "thing") -> rw_all
+      | "on" ("this" | "whole")? ("job" | "task")                          -> rw_all
 rscope: robj? rwhere*
 
 rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never

@@ -424,7 +424,31 @@ class NameIndex:
             hit = self.forms.get(normalize("".join(part)))
             if hit is not None:
                 return Tok("name", " ".join(part), hit.name, hit.kind), i + size
-        return None
+        hit = self._misspelt_apart(raw[i:i + 2])
+        return (Tok("name", " ".join(raw[i:i + 2]), hit.name, hit.kind), i + 2) if hit is not None else None
+
+    def _misspelt_apart(self, pair: list[str]) -> "_Name | None":
+        """A two-word name written apart with one of its words misspelt by one edit ("tastng room"
+        for tasting_room), the other right: read only where exactly one name fits, and never from a
+        word of the grammar (``reserved``) or a short word."""
+        if len(pair) < 2 or not all(w.isalpha() for w in pair):
+            return None
+        a, b = (normalize(w) for w in pair)
+        if any(w in self.reserved or w in STOPWORDS or w in NUMBER_WORDS for w in (a, b)):
+            return None
+
+        def near(said: str, word: str) -> bool:
+            return said != word and len(word) >= 4 and said[:1] == word[:1] and distance(said, word) <= 1
+
+        hits = []
+        for n in self.names:
+            words = [w for w in re.split(r"[-_\s]+", n.name.lower()) if w]
+            if n.kind == "robot" or len(words) != 2:
+                continue
+            last = set(variants(b)) & ({words[1]} | set(plural_forms(words[1])))
+            if (a == words[0] and not last and near(b, words[1])) or (last and near(a, words[0])):
+                hits.append(n)
+        return hits[0] if len(hits) == 1 else None
 
     def _inverted(self, raw: list[str], i: int) -> Tok | None:
         """A two-word product said "<head> of <modifier>" ("crates of bottles" for bottle_crate,
