@@ -202,3 +202,18 @@ def test_a_resumptive_pronoun_after_the_count_is_the_place_itself() -> None:
 def test_only_some_robots_on_this_job_is_the_whole_command() -> None:
     got = understand("Move 2 cream tubs from the cold room to the chill bay, and only heifer on this job", DAIRY)
     assert got["constraints"] == [{"only": ["heifer"]}]
+
+
+@pytest.mark.parametrize("command, goal", [
+    ("Give the chill bay 2 cream tubs, on top of what it has got", {"chill_bay": {"cream_tub": 3}}),
+    ("Could the chill bay get one more of each product, on top of what it has",
+     {"chill_bay": {"cream_tub": 2, "butter-box": 1, "cheese_wheel": 1, "milk_crate": 1, "milk-churn": 1,
+                    "one_pack": 1}}),
+    ("Swap cream tubs round between the cold room and the chill bay",
+     {"cold_room": {"cream_tub": 1}, "chill_bay": {"cream_tub": 5}}),
+    ("Swap over the cream tubs on the cold room and the chill bay",
+     {"cold_room": {"cream_tub": 1}, "chill_bay": {"cream_tub": 5}}),
+    ("The chill bay shouldn't have more than 2 cream tubs on it", {"chill_bay": {"cream_tub": {"at_most": 2}}}),
+])
+def test_more_ways_people_say_it(command: str, goal: dict) -> None:
+    assert understand(command, DAIRY)["goal"] == goal

@@ -283,13 +283,17 @@ goal: there_be items loc                                  -> g_set
     | places bneg below NUM of? ihead                        -> g_floor
     | ("make" "sure" | "ensure") that? places bneg below NUM of? ihead -> g_floor
     | ("dont" | "do" "not" | "never") "let" places below NUM of? ihead -> g_floor
-    | places modal? setv items on_top                       -> g_add_place
+    | places modal? setv items ","? on_top                  -> g_add_place
+    | "give" places items ","? on_top                        -> g_add_place
+    | ("can" | "could") places setv items ","? on_top        -> g_add_place
+    | addv items to places ","? on_top                       -> g_add
     | ("dont" | "do" "not" | "never") ("touch" | "move" | "take") ("any" | "anything")? ihead loc? -> g_keep_item
     | ("dont" | "do" "not") emptyv places                    -> g_noop
     | ("dont" | "do" "not" | "never") (putv | addv | "send" | "bring") ("any" | "anything" | "them" | "it" | ihead | "any" "of" ("it" | "them" | "that" | "those"))? loc -> g_no_inflow
     | ("none" "of" ("them" | "it") | "none") modal? go loc  -> g_no_inflow
     | swapv ("what" | "contents" "of" | "loads" "of" | "stock" "of" | "everything" ("on" | "in" | "between" | "of") | "between")? places ("hold" | "have" | "contain" | "holds" | "has")? -> g_swap
     | swapv ihead (lsep ihead)* ("between" | "of" | "on" | "in" | "at") places -> g_swap_items
+    | swapv ("over" | "round" | "around")? ihead (lsep ihead)* ("round" | "around" | "over")? ("between" | "of" | "on" | "in" | "at") places ("round" | "around" | "over")? -> g_swap_items
     | swapv ihead loc "with" (ihead | "ones" | "those")? loc -> g_swap_two
     | places modal? ("swap" | "trade" | "exchange") (("their" | "its") | "what" "they" ("hold" | "have"))? swapwhat -> g_swap_subj
     | swapv ("what" | "contents" "of" | "loads" "of" | "stock" "of")? places ("around" | "round" | "over") -> g_swap
@@ -312,8 +316,8 @@ goal: there_be items loc                                  -> g_set
     | mult "up"? ihead loc                                 -> g_mult
     | (putv | addv) ("them" | "it" | "those" | "these" | "all" "of" "them") adv? loc -> g_pronoun_dest
     | ("clear" | "empty" | "clean") places ("out" | "off")  -> g_empty
-    | places ("shouldnt" | "mustnt" | "cant" | "cannot" | "wont" | modal ("not" | "never")) setv ("more" "than" | "over" | "above") NUM of? ihead -> g_ceiling
-    | places ("shouldnt" | "mustnt" | "cant" | "cannot" | "wont" | modal ("not" | "never")) setv ("fewer" "than" | "less" "than" | "under" | "below") NUM of? ihead -> g_floor
+    | places ("shouldnt" | "mustnt" | "cant" | "cannot" | "wont" | modal ("not" | "never")) setv ("more" "than" | "over" | "above") NUM of? ihead resumptive? -> g_ceiling
+    | places ("shouldnt" | "mustnt" | "cant" | "cannot" | "wont" | modal ("not" | "never")) setv ("fewer" "than" | "less" "than" | "under" | "below") NUM of? ihead resumptive? -> g_floor
     | places modal? "keep" "only"? items                     -> g_keep_part
     | places modal? ("keep" | "retain") its NUM? ihead (lsep its? NUM? ihead)* -> g_keep_its
     | emptyv places                                        -> g_empty
@@ -378,7 +382,7 @@ bneg: modal? ("not" | "never") | "shouldnt" | "mustnt" | "cant" | "cannot" | "do
 above: ("go" | "goes" | "get" | "gets" | "rise" | "rises" | "climb" | "climbs") ("above" | "over" | "past" | "beyond")
      | "exceed" | "exceeds"
 below: ("go" | "goes" | "get" | "gets" | "drop" | "drops" | "fall" | "falls" | "dip" | "dips" | "sink" | "sinks") ("below" | "under" | "beneath")
-on_top: ("on" "top" "of" | "in" "addition" "to" | "besides" | "over" "and" "above") "what" (("it" | "they") ("has" | "have" | "holds" | "hold") now? | "is" "already"? "there")
+on_top: ("on" "top" "of" | "in" "addition" "to" | "besides" | "over" "and" "above") "what" (("it" | "they") ("has" | "have" | "holds" | "hold" | "is" "got" | "has" "got" | "have" "got") now? | ("is" | "s") "already"? "there")
 adv: "over" | "back" | "across" | "along" | "out"
 src: ("in" | "on" | "at" | "from" | "off" | "out" "of" | "of") places
 pitems: frac of? posplace ihead appos?                     -> pi_frac

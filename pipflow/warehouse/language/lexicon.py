@@ -353,7 +353,7 @@ def corrected(toks: list[Tok]) -> list[Tok]:
 #: words of time the grammar reads only in its asides ("by tonight", "before lunch"): inside an
 #: adjunct ("... for afternoon pickup", "... by opening time") they say when, nothing the order needs
 TIMES_OF_DAY = frozenset({"morning", "afternoon", "evening", "tonight", "tomorrow", "noon", "lunch", "time",
-                          "later", "today", "oclock", "pm", "am"})
+                          "later", "today", "oclock", "pm", "am", "end", "day", "week", "weekend", "night"})
 
 
 class Lexicon:
