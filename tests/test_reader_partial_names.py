@@ -217,3 +217,19 @@ def test_only_some_robots_on_this_job_is_the_whole_command() -> None:
 ])
 def test_more_ways_people_say_it(command: str, goal: dict) -> None:
     assert understand(command, DAIRY)["goal"] == goal
+
+
+@pytest.mark.parametrize("command, aside", [
+    ("Don't use cart1, it's getting serviced", "it is getting serviced"),
+    ("Don't use cart1, its wheel is playing up", "its wheel is playing up"),
+])
+def test_a_report_of_what_is_going_on_is_set_aside_though_it_uses_grammar_words(command: str, aside: str) -> None:
+    got = understand(command, DAIRY)
+    assert got["constraints"] == [{"never": ["cart1"]}] and got["order"]["set_aside"] == [aside]
+
+
+@pytest.mark.parametrize("tail", ["they're going to the back yard later", "it's not coming back",
+                                  "it is getting moved to 3", "they're only staying an hour"])
+def test_a_report_with_a_name_a_number_or_an_operative_word_is_never_set_aside(tail: str) -> None:
+    with pytest.raises(TranslationError):
+        understand(f"Move 2 cream tubs from the cold room to the chill bay, {tail}", DAIRY)

@@ -175,8 +175,29 @@ def is_pleasantry(words: Iterable[str], names: Callable[[str], bool]) -> bool:
     return not any(near_operative(w) and w not in ADDRESSEES for w in rest) and not any(names(w) for w in rest)
 
 
+#: forms of "be" after a subject ("it is", "they're" split as "they re")
+_BE = frozenset({"is", "are", "am", "was", "were", "s", "re", "m", "be", "been", "being"})
+#: subjects with "be" already in them ("it's" read as "its", "he's", "they're")
+_SUBJECT_BE = frozenset({"its", "hes", "shes", "theyre", "im", "youre", "thats", "theres"})
+
+
+def is_report(words: Iterable[str], names: Callable[[str], bool]) -> bool:
+    """ "it is getting serviced", "its wheel is playing up", "we're re-laying the floor": a subject,
+    a form of "be" and a verb in -ing (within three words), reporting what is going on: the words of
+    the grammar in it describe, they ask for nothing ("serviced", "wheel"). A name of the world, a
+    number (``names``) or an operative word ("it's not coming", "they're only ...") keeps it in."""
+    ws = [w for w in words if w]
+    if len(ws) < 2 or not (ws[0] in SUBJECTS or ws[0] in _SUBJECT_BE):
+        return False
+    head = ws[:5]
+    has_be = ws[0] in _SUBJECT_BE or any(w in _BE for w in head[1:4])
+    if not has_be or not any(w.endswith("ing") and len(w) > 4 for w in head[1:5]):
+        return False
+    return not any(near_operative(w) or names(w) for w in ws)
+
+
 def content_free(words: Iterable[str], content: Callable[[str], bool],
-                 names: Callable[[str], bool] | None = None) -> bool:
+                 names: Callable[[str], bool] | None = None, reports: bool = False) -> bool:
     """Whether a clause carries nothing an order needs (module doc). ``content(word)`` is the
     domain's test: a name of its world (or close to one), a number, a content word of its lexicon.
     ``names(word)`` (optional; without it apologies and thanks are judged by ``content``): only a
@@ -189,6 +210,8 @@ def content_free(words: Iterable[str], content: Callable[[str], bool],
         return True   # its "all" or "team" is who is greeted, no quantifier or robot group
     if names is not None and is_pleasantry(ws, names):
         return True
+    if reports and names is not None and is_report(ws, names):
+        return True   # "it is getting serviced": a report, whatever grammar words it uses
     if ws[0] in ATTACHING:
         return False  # it modifies the clause before ("..., on the left", "..., and the rest")
     if ws[0] not in SUBJECTS and any(w not in FUNCTION_WORDS and nxt in OBJECT_PRONOUNS

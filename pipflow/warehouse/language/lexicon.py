@@ -486,7 +486,7 @@ class Lexicon:
         aside: list[str] = []
         parts = clauses(words, marks)
         free = [c for c in parts if content_free(c.words, lambda w: w == "\0" or self.content(w),
-                                                 lambda w: w == "\0" or self.names_world(w))]
+                                                 lambda w: w == "\0" or self.names_world(w), reports=True)]
         thanks = trailing_thanks(list(parts[-1].words), self.content) if parts and parts[-1] not in free else 0
         if thanks:   # "... to the dray bay ta": the thanks closing the last clause, without a comma
             end = parts[-1].end
