@@ -204,6 +204,10 @@ def test_only_some_robots_on_this_job_is_the_whole_command() -> None:
     assert got["constraints"] == [{"only": ["heifer"]}]
 
 
+SWAPPED = {"cold_room": {"cream_tub": 1, "butter-box": 0, "cheese_wheel": 0, "milk_crate": 0, "milk-churn": 0},
+           "chill_bay": {"cream_tub": 5, "butter-box": 4, "cheese_wheel": 3, "milk_crate": 2, "milk-churn": 2}}
+
+
 @pytest.mark.parametrize("command, goal", [
     ("Give the chill bay 2 cream tubs, on top of what it has got", {"chill_bay": {"cream_tub": 3}}),
     ("Could the chill bay get one more of each product, on top of what it has",
@@ -214,6 +218,8 @@ def test_only_some_robots_on_this_job_is_the_whole_command() -> None:
     ("Swap over the cream tubs on the cold room and the chill bay",
      {"cold_room": {"cream_tub": 1}, "chill_bay": {"cream_tub": 5}}),
     ("The chill bay shouldn't have more than 2 cream tubs on it", {"chill_bay": {"cream_tub": {"at_most": 2}}}),
+    ("Swap what's on the cold room and the chill bay", SWAPPED),
+    ("Could you switch round everything on the cold room and the chill bay", SWAPPED),
 ])
 def test_more_ways_people_say_it(command: str, goal: dict) -> None:
     assert understand(command, DAIRY)["goal"] == goal

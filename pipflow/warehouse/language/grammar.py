@@ -292,6 +292,7 @@ goal: there_be items loc                                  -> g_set
     | ("dont" | "do" "not" | "never") (putv | addv | "send" | "bring") ("any" | "anything" | "them" | "it" | ihead | "any" "of" ("it" | "them" | "that" | "those"))? loc -> g_no_inflow
     | ("none" "of" ("them" | "it") | "none") modal? go loc  -> g_no_inflow
     | swapv ("what" | "contents" "of" | "loads" "of" | "stock" "of" | "everything" ("on" | "in" | "between" | "of") | "between")? places ("hold" | "have" | "contain" | "holds" | "has")? -> g_swap
+    | swapv ("round" | "around" | "over")? ("what" "is"? ("on" | "in" | "at") | "everything" ("on" | "in" | "between" | "of")) places -> g_swap
     | swapv ihead (lsep ihead)* ("between" | "of" | "on" | "in" | "at") places -> g_swap_items
     | swapv ("over" | "round" | "around")? ihead (lsep ihead)* ("round" | "around" | "over")? ("between" | "of" | "on" | "in" | "at") places ("round" | "around" | "over")? -> g_swap_items
     | swapv ihead loc "with" (ihead | "ones" | "those")? loc -> g_swap_two
