@@ -239,3 +239,15 @@ def test_a_report_of_what_is_going_on_is_set_aside_though_it_uses_grammar_words(
 def test_a_report_with_a_name_a_number_or_an_operative_word_is_never_set_aside(tail: str) -> None:
     with pytest.raises(TranslationError):
         understand(f"Move 2 cream tubs from the cold room to the chill bay, {tail}", DAIRY)
+
+
+def test_all_of_a_product_taken_off_a_place_then_shared_out() -> None:
+    assert understand("Take the cream tubs out of the cold room: 2 to the chill bay, the rest to the back yard",
+                      DAIRY)["goal"] == {"cold_room": {"cream_tub": 0}, "chill_bay": {"cream_tub": 3},
+                                         "back_yard": {"cream_tub": 3}}
+    with pytest.raises(TranslationError, match="only 3 .* left to share"):
+        understand("Take the cream tubs out of the cold room: 2 to the chill bay and 4 to the back yard", DAIRY)
+    # after a statement about that place, "all" would count from the goal so far: refused
+    with pytest.raises(TranslationError, match="cannot tell how the units taken are shared"):
+        understand("Bring 2 cream tubs to the cold room. Take the cream tubs out of the cold room: "
+                   "2 to the chill bay, the rest to the back yard", DAIRY)

@@ -521,11 +521,11 @@ class SentenceReader(GoalRules, TailRules, RuleScope, Interpreter):
         dispatch: 2 to silo 2 and the rest to rack east"): a move from that place, counted against
         what was taken; what is never given a place stays a removal (see :meth:`finish`). It was
         read as a final count for B before: a misreading."""
-        amount = taken["amount"]
-        if set(amount) != {"count"}:
-            raise TranslationError(f"{quote(np['words'])} after {taken['words']!r}: cannot tell how the units "
-                                   f"taken are shared")
         if self.budget is None or self.budget["st"] is not taken:
+            amount = self._taken_count(taken)
+            if amount is None:
+                raise TranslationError(f"{quote(np['words'])} after {taken['words']!r}: cannot tell how the "
+                                       f"units taken are shared")
             at = next(k for k, st in enumerate(self.statements) if st is taken)
             del self.statements[at]
             self.budget = {"st": taken, "left": int(amount["count"])}
@@ -536,6 +536,26 @@ class SentenceReader(GoalRules, TailRules, RuleScope, Interpreter):
         self.budget["left"] = left - n
         return {"op": "transfer", "items": taken["items"], "amount": {"count": n}, "from": taken["from"],
                 "to": {"names": places}, "words": np["words"]}
+
+    def _taken_count(self, taken: dict) -> dict | None:
+        """How many units a removal took, as ``{"count": n}``: its count, or for "all" of one
+        product off one place ("take the red cases out of the barrel hall: 2 to A, the rest to B")
+        what the place holds now, where nothing said before touches that place (else the count
+        would depend on the goal so far: None, refused)."""
+        amount = taken["amount"]
+        if set(amount) == {"count"}:
+            return amount
+        items = (taken.get("items") or {}).get("names") or []
+        source = (taken.get("from") or {}).get("names") or []
+        if not ({"all", "all_held"} & set(amount)) or len(items) != 1 or len(source) != 1 or amount.get("expect"):
+            return None
+        touched = [st for st in self.prior + self.statements if st is not taken and source[0] in (
+            ((st.get("places") or {}).get("names") or []) + ((st.get("from") or {}).get("names") or [])
+            + ((st.get("to") or {}).get("names") or []))]
+        if touched:
+            return None
+        held = int(((self.lex.world.get("stock") or {}).get(source[0]) or {}).get(items[0], 0) or 0)
+        return {"count": held} if held else None
 
     def _rest(self, places: list[str], np: dict) -> dict:
         """ "and the rest to P": what is left at the source of the statement before."""

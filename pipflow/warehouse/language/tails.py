@@ -136,6 +136,10 @@ class TailRules:
         heads = [self.ihead(h, words) for r in rest_of for h in self.sub(r, "ihead")]
         np = {"items": {"names": heads} if heads else None, "amount": {"rest": True}, "words": words}
         named = [str(pp.children[0].value) for r in rest_of for pp in self.sub(r, "posplace")]
+        if self.budget and not heads and not named:
+            # "Take the X off P: 2 to A, the rest to B": the rest of the units taken
+            self.statements.append(self._share(self.budget["st"], places, np, "rest"))
+            return
         self.statements.append(self._rest(places, {**np, "rest_of": named} if named else np))
 
     def t_not_items(self, node: Tree) -> None:
