@@ -251,3 +251,19 @@ def test_all_of_a_product_taken_off_a_place_then_shared_out() -> None:
     with pytest.raises(TranslationError, match="cannot tell how the units taken are shared"):
         understand("Bring 2 cream tubs to the cold room. Take the cream tubs out of the cold room: "
                    "2 to the chill bay, the rest to the back yard", DAIRY)
+
+
+def test_a_place_said_alone_is_what_it_means_in_the_next_sentence() -> None:
+    assert understand("The chill bay. Put 3 butters on it.", DAIRY)["goal"] == {"chill_bay": {"butter-box": 3}}
+    with pytest.raises(TranslationError, match="asks for nothing by itself"):
+        understand("The chill bay.", DAIRY)
+    with pytest.raises(TranslationError, match="from there, or from anywhere"):
+        understand("The chill bay. Move 2 cream tubs to the back yard.", DAIRY)
+
+
+@pytest.mark.parametrize("command", [
+    "Could you shift four cream tubs out of the cold room and into the back yard?",
+    "To the back yard from the cold room, 4 cream tubs please.",
+])
+def test_a_route_said_with_and_or_before_the_object(command: str) -> None:
+    assert understand(command, DAIRY)["goal"] == {"cold_room": {"cream_tub": 1}, "back_yard": {"cream_tub": 4}}

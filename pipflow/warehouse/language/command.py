@@ -150,8 +150,8 @@ def _not_too_long(lexed: Lexed) -> None:
 def _nothing_asked(command: str, lex: Lexicon, observed: list[tuple[str, list[str]]]) -> None:
     """A command with no goal and no rule is refused; a complaint alone says it gives no count."""
     if observed:
-        raise TranslationError(f"{quote(observed[0][0])} says no count: say how many there should be "
-                               f"(e.g. 'no more than 3') or how many to take away")
+        raise TranslationError(f"{quote(observed[0][0])} asks for nothing by itself (it says no count): say "
+                               f"how many there should be (e.g. 'no more than 3') or how many to take away")
     raise TranslationError(f"found no goal and no robot rule in '{command}' "
                            f"(shelves: {lex.index.candidates('shelf')}; "
                            f"products: {lex.index.candidates('product')})")

@@ -208,6 +208,7 @@ goal: there_be items loc                                  -> g_set
     | both? places modal? setv items ("each" | "apiece") left? -> g_place_set
     | both? places modal? "each" be? items                  -> g_place_set
     | places (":" | ",") items                             -> g_place_set
+    | places                                               -> g_topic
     | places ":" ("add" | "plus") items                     -> g_add_place
     | places ("needs" | "need" | "wants") ("emptying" | "clearing" "out"? | "emptying" "out") ("into" | "onto" | "to") places -> g_empty_into
     | places ("needs" | "need" | "wants") ("emptying" | "clearing" "out"? | "emptying" "out") -> g_empty
@@ -248,6 +249,8 @@ goal: there_be items loc                                  -> g_set
     | addv items loc                                      -> g_add
     | refill places "with" items                           -> g_add_place
     | addv items adv? from places adv? to places           -> g_transfer
+    | addv items from places ("and" | "," "and"?) to places -> g_transfer
+    | to places from places ","? items                      -> g_transfer
     | addv items places adv? to places                     -> g_transfer
     | addv items "each" to places                          -> g_add
     | addv items ("with" | "using") robots adv? from places adv? to places -> g_transfer_with
