@@ -274,3 +274,32 @@ def test_a_place_said_alone_is_what_it_means_in_the_next_sentence() -> None:
 ])
 def test_a_route_said_with_and_or_before_the_object(command: str) -> None:
     assert understand(command, DAIRY)["goal"] == {"cold_room": {"cream_tub": 1}, "back_yard": {"cream_tub": 4}}
+
+
+@pytest.mark.parametrize("command, aside", [
+    ("Quick one: the chill bay wants two cream tubs", ["Quick one"]),
+    ("Quick one before the drivers get in: the chill bay wants two cream tubs on it in total",
+     ["Quick one before the drivers get in"]),
+    ("Right then, the chill bay wants two cream tubs", ["Right then"]),
+    ("Sorry to bother you - the chill bay wants two cream tubs", ["Sorry to bother you"]),
+])
+def test_an_opener_is_set_aside_though_its_words_are_operative_elsewhere(command: str, aside: list) -> None:
+    got = understand(command, DAIRY)
+    assert got["goal"] == {"chill_bay": {"cream_tub": 2}} and got["order"]["set_aside"] == aside
+
+
+@pytest.mark.parametrize("command", ["Quick one more: the chill bay wants two cream tubs",
+                                     "Right then not: the chill bay wants two cream tubs"])
+def test_only_a_whole_opener_is_set_aside(command: str) -> None:
+    with pytest.raises(TranslationError):
+        understand(command, DAIRY)
+
+
+@pytest.mark.parametrize("command, goal", [
+    ("can somebody shift 2 cream tubs frm the cold room to the back yard",
+     {"cold_room": {"cream_tub": 3}, "back_yard": {"cream_tub": 2}}),
+    ("Chuck one more cream tub onto the chill bay", {"chill_bay": {"cream_tub": 2}}),
+    ("could two cream tubs go to the back yard?", {"back_yard": {"cream_tub": 2}}),
+])
+def test_requests_put_to_anyone_and_staff_verbs(command: str, goal: dict) -> None:
+    assert understand(command, DAIRY)["goal"] == goal

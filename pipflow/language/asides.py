@@ -66,7 +66,7 @@ FUNCTION_WORDS = frozenset({
     "a", "an", "the", "of", "to", "from", "in", "on", "at", "for", "with", "by", "about", "off", "out", "up",
     "down", "into", "onto", "and", "so", "as", "if", "because", "since", "cause", "cuz", "coz", "well", "oh",
     "ah", "now", "today", "please", "yes", "yeah", "yep", "got", "get", "getting", "go", "going", "gone",
-    "let", "lets", "think", "know", "see", "sure", "right", "really", "very", "still", "already", "yet",
+    "let", "lets", "think", "know", "see", "sure", "right", "really", "bother", "very", "still", "already", "yet",
     "when", "where", "how", "why", "like", "s", "ll", "ve", "d", "re", "m", "t"})
 #: a word followed by one of these is a verb acting on a thing ("recount them"): an instruction
 OBJECT_PRONOUNS = frozenset({"it", "them", "this", "that", "these", "those", "him", "her", "everything"})
@@ -170,7 +170,8 @@ def is_pleasantry(words: Iterable[str], names: Callable[[str], bool]) -> bool:
     if not ws or ws[0] not in PLEASANTRIES:
         return False
     rest = ws[2:] if ws[:2] == ["thank", "you"] else ws[1:]
-    if rest and rest[0] not in ("for", "about", "again", "so", "very", "a", "lot", "all", "everyone", "team", "in"):
+    if rest and rest[0] not in ("for", "about", "again", "so", "very", "a", "lot", "all", "everyone", "team", "in",
+                                "to"):   # "sorry to bother you"
         return False
     return not any(near_operative(w) and w not in ADDRESSEES for w in rest) and not any(names(w) for w in rest)
 
@@ -194,6 +195,18 @@ def is_report(words: Iterable[str], names: Callable[[str], bool]) -> bool:
     if not has_be or not any(w.endswith("ing") and len(w) > 4 for w in head[1:5]):
         return False
     return not any(near_operative(w) or names(w) for w in ws)
+
+
+#: clauses that open a request and say nothing else ("Quick one: ...", "Right then, ...", "Whatever
+#: you do, ..."): whole clauses only, though "one" and "then" are operative elsewhere
+OPENERS = frozenset({("quick", "one"), ("right", "then"), ("ok", "then"), ("okay", "then"), ("right", "so"),
+                     ("whatever", "you", "do"), ("now", "then"), ("so", "then"), ("right", "folks"),
+                     ("quick", "favour"), ("quick", "favor"), ("quick", "job")})
+
+
+def is_opener(words: Iterable[str]) -> bool:
+    """A whole clause that only opens a request ("Quick one", "Right then": :data:`OPENERS`)."""
+    return tuple(w for w in words if w) in OPENERS
 
 
 def content_free(words: Iterable[str], content: Callable[[str], bool],

@@ -123,6 +123,7 @@ def parse_reading(command: str, world: dict, picks: dict | None = None) -> dict:
                   "observed": list(reader.observed)}
     if not statements and not rules:
         _nothing_asked(command, lex, observed)
+    statements = emptied_last(statements)
     set_aside = lex.aside + set_aside
     return {"command": command, "statements": statements, "rules": rules,
             **({"set_aside": set_aside} if set_aside else {}), **({"unread": unread} if unread else {})}
@@ -155,3 +156,19 @@ def _nothing_asked(command: str, lex: Lexicon, observed: list[tuple[str, list[st
     raise TranslationError(f"found no goal and no robot rule in '{command}' "
                            f"(shelves: {lex.index.candidates('shelf')}; "
                            f"products: {lex.index.candidates('product')})")
+
+
+def emptied_last(statements: list[dict]) -> list[dict]:
+    """ "Empty aisle 1. Everything on it goes to aisle 2.": what leaves an emptied place, said in a
+    later sentence, goes first and the emptying after it (else the move would find the place
+    already empty and move nothing: a misreading). The sentence reader does the same inside one
+    sentence (:meth:`RuleScope.finish`)."""
+    out = list(statements)
+    for st in [s for s in statements if s["op"] == "empty"]:
+        emptied = set(st["places"].get("names") or [])
+        k = out.index(st)
+        later = [t for t in out[k + 1:] if t["op"] == "transfer" and emptied & set((t.get("from") or {}).get("names") or [])]
+        if later:
+            out.remove(st)
+            out.insert(out.index(later[-1]) + 1, st)
+    return out

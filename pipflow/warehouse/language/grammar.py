@@ -310,6 +310,7 @@ goal: there_be items loc                                  -> g_set
     | putv items loc ","? except_count                     -> g_transfer_except_count
     | items modal? go to places ","? except_places         -> g_transfer_except
     | items modal? go to places                            -> g_add
+    | ("can" | "could" | "would") items go to places       -> g_add
     | addv items except_places to places                   -> g_transfer_except
     | items ("on" | "in" | "at" | "from") places modal? go to places -> g_transfer
     | items from places modal? go? to places                -> g_transfer
@@ -418,7 +419,7 @@ as_is: "where" ("it" | "they") ("is" | "are") | "as" ("it" | "they") ("is" | "ar
 except_places: ("except" | "but" "not" | "apart" "from" | "other" "than" | "excluding" | "not") except_what? ("up" | "down" | "over" | "out")? ("on" | "in" | "at" | "from") places
              | ("except" | "but" "not" | "excluding" | "not") from places
 // "P should have 3 X on it": the pronoun is P itself
-resumptive: ("on" | "in" | "at" | "inside") ("it" | "them")
+resumptive: ("on" | "in" | "at" | "inside") ("it" | "them") left?
 except_count: ("except" "for"? | "but" | "apart" "from" | "other" "than" | "excluding" | "leaving") ("one" | NUM) ("of" "them")? ("on" | "in" | "at") places
 except_what: "ones" | "those" | "them" | "what" "is" | "any" | "what" "sits" | "what" "lies" | "ones" "that" ("are" | "sit" | "lie")
 

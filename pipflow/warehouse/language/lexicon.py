@@ -15,7 +15,7 @@ from dataclasses import dataclass, replace
 from lark import Token
 
 from pipflow.errors import InputError, Refusal, TranslationError
-from pipflow.language.asides import trailing_adjunct, FUNCTION_WORDS, Clause, clauses, content_free, trailing_thanks
+from pipflow.language.asides import is_opener, trailing_adjunct, FUNCTION_WORDS, Clause, clauses, content_free, trailing_thanks
 from pipflow.language.characters import refuse_unread
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS
 from pipflow.language.spelling import distance, normalize, plural_forms, slip, tolerance
@@ -157,10 +157,10 @@ CORRECTIONS = (("no",), ("sorry",), ("wait",), ("i", "mean"), ("make", "that"), 
 VERB_LEXICON: dict[str, tuple[str, str]] = {
     # placing
     "stow": ("place", "put"), "stash": ("place", "put"), "slot": ("place", "put"), "set down": ("place", "put"),
-    "lay": ("place", "put"), "plonk": ("place", "put"), "shelve": ("place", "put"),
+    "lay": ("place", "put"), "plonk": ("place", "put"), "shelve": ("place", "put"), "bung": ("place", "put"),
     # moving (and the grammar's own: move, bring, send, ship, transfer, carry, haul, shift, cart,
     # ferry, tow, lug, shuttle, wheel, relocate, deliver, stage, restage, fetch, dispatch, bring over, move over)
-    "shove": ("move", "move"), "drag": ("move", "move"), "move across": ("move", "move"),
+    "shove": ("move", "move"), "chuck": ("move", "toss"), "sling": ("move", "toss"), "drag": ("move", "move"), "move across": ("move", "move"),
     "send across": ("move", "send"), "carry over": ("move", "carry"), "bring across": ("move", "bring"),
     # removing (and the grammar's own: remove, unload, withdraw, take away, get rid of, dispose of, throw out)
     "offload": ("remove", "unload"), "off-load": ("remove", "unload"), "pull off": ("remove", "take"),
@@ -207,6 +207,18 @@ def quantity_phrases(toks: list[Tok], keywords: dict[str, str]) -> list[Tok]:
             out.append(toks[k])
             k += 1
     return out
+
+
+#: whom a request is put to, after "can / could / would / will": "can somebody shift ..." is "can you
+#: shift ..." (a request to whoever does it, never a robot's name)
+ANYONE = {"somebody", "someone", "anybody", "anyone"}
+_ASKING = {"can", "could", "would", "will"}
+
+
+def addressed_anyone(toks: list[Tok]) -> list[Tok]:
+    """The tokens with "somebody" (:data:`ANYONE`) after a modal of asking read as "you"."""
+    return [Tok("word", t.text, "you") if t.kind == "word" and t.value in ANYONE and k > 0
+            and toks[k - 1].kind == "word" and toks[k - 1].value in _ASKING else t for k, t in enumerate(toks)]
 
 
 def lexicon_verbs(toks: list[Tok], keywords: dict[str, str]) -> list[Tok]:
@@ -497,12 +509,18 @@ class Lexicon:
             # carries nothing, at the end of a clause that does (asides.trailing_adjunct)
             if c in free:
                 continue
-            said = list(c.words[:len(c.words) - thanks] if c is parts[-1] else c.words)
-            n = trailing_adjunct(said, lambda w: w == "\0" or (w not in TIMES_OF_DAY and self.content(w)))
+            clause = list(c.words[:len(c.words) - thanks] if c is parts[-1] else c.words)
+            n = trailing_adjunct(clause, lambda w: w == "\0" or (w not in TIMES_OF_DAY and self.content(w)))
             if n:
-                end = c.start + len(said)
-                free.append(Clause(end - n, end, tuple(said[-n:])))
+                end = c.start + len(clause)
+                free.append(Clause(end - n, end, tuple(clause[-n:])))
                 inner.add(end - n)
+            # "Quick one: ...", "Quick one before the brewers get in: ...": an opener (with its
+            # adjunct), judged on the words as written (its "one" is read as a count)
+            said = [re.sub(r"[^a-z0-9]", "", x.text.lower()) for x in cur[c.start:c.start + len(clause) - n]]
+            if is_opener(said):
+                free[:] = [f for f in free if not (c.start <= f.start < c.end)] + [c]
+                inner.discard(c.start + len(clause) - n)
         if not free:
             return cur, []
         drop = {k for c in free for k in range(c.start, c.end)}
@@ -532,8 +550,8 @@ class Lexicon:
                 if typo is not None:
                     t = Tok("word", t.text, typo)
             fixed.append(t)
-        toks = lexicon_verbs(quantity_phrases(read_counts(_split_hyphens(fixed, self.keywords)), self.keywords),
-                             self.keywords)
+        toks = lexicon_verbs(quantity_phrases(addressed_anyone(read_counts(_split_hyphens(fixed, self.keywords))),
+                                              self.keywords), self.keywords)
         toks = corrected_later(without_particles(corrected(toks)))
         out: list[Lexed] = []
         cur: list[Tok] = []
