@@ -303,3 +303,10 @@ def test_only_a_whole_opener_is_set_aside(command: str) -> None:
 ])
 def test_requests_put_to_anyone_and_staff_verbs(command: str, goal: dict) -> None:
     assert understand(command, DAIRY)["goal"] == goal
+
+
+def test_what_leaves_an_emptied_place_in_a_later_sentence_goes_first() -> None:
+    """It was read as the emptying, then a move of nothing (the place already empty): a misreading."""
+    got = understand("Empty the cold room. Everything on it goes to the back yard.", DAIRY)["goal"]
+    assert got["back_yard"] == {"cream_tub": 5, "butter-box": 4, "cheese_wheel": 3, "milk_crate": 2, "milk-churn": 2}
+    assert set(got["cold_room"].values()) == {0}
