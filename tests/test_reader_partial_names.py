@@ -310,3 +310,26 @@ def test_what_leaves_an_emptied_place_in_a_later_sentence_goes_first() -> None:
     got = understand("Empty the cold room. Everything on it goes to the back yard.", DAIRY)["goal"]
     assert got["back_yard"] == {"cream_tub": 5, "butter-box": 4, "cheese_wheel": 3, "milk_crate": 2, "milk-churn": 2}
     assert set(got["cold_room"].values()) == {0}
+
+
+@pytest.mark.parametrize("command, goal", [
+    ("Move 2 cream tubs from the cold room to the chill bay and the others to the back yard",
+     {"cold_room": {"cream_tub": 0}, "chill_bay": {"cream_tub": 3}, "back_yard": {"cream_tub": 3}}),
+    ("The cold room has too many cream tubs, take it down to 1. The extras go to the back yard.",
+     {"cold_room": {"cream_tub": 1}, "back_yard": {"cream_tub": 4}}),
+    ("Leave the cold room with just 1 cream tub; the rest of the cream tubs there go to the back yard.",
+     {"cold_room": {"cream_tub": 1}, "back_yard": {"cream_tub": 4}}),
+])
+def test_the_others_the_extras_the_rest_there(command: str, goal: dict) -> None:
+    assert understand(command, DAIRY)["goal"] == goal
+
+
+@pytest.mark.parametrize("command", [
+    # "there" is the chill bay, but the move before takes from the cold room
+    "Move 2 cream tubs from the cold room to the chill bay; the rest of the cream tubs there go to the back yard.",
+    # a sentence about the item: the rest of what it put there, or of every one?
+    "Cream tubs: 1 on the cold room. The rest to the back yard.",
+])
+def test_a_rest_that_could_be_two_things_is_refused(command: str) -> None:
+    with pytest.raises(TranslationError):
+        understand(command, DAIRY)

@@ -120,7 +120,8 @@ def parse_reading(command: str, world: dict, picks: dict | None = None) -> dict:
         memory = {"statements": list(statements), "last": list(reader.statements) or memory.get("last", []),
                   "item": reader.last_item, "places": reader.last_places,
                   "received": reader.received | set(memory.get("received") or ()),
-                  "observed": list(reader.observed)}
+                  "observed": list(reader.observed),
+                  "item_first": bool(lexed.tokens) and lexed.tokens[0].type in ("ITEM", "ITEMWORD")}
     if not statements and not rules:
         _nothing_asked(command, lex, observed)
     statements = emptied_last(statements)

@@ -103,7 +103,7 @@ np: NUM of? ihead                          -> np_count
   | "same" ("number" | "amount" | "count" | "quantity") "of" ihead "as" PLACE (("has" | "holds" | "have" | "contains" | "does") now?)? -> np_as_many
   | ("another" | "one" "more")                      -> np_another
   | "as" "many" "as" PLACE ("has" | "holds" | "have" | "contains") now? -> np_as_many_elided
-  | "rest" rest_of?                        -> np_rest
+  | ("rest" | "others" | "extras" | "remainder") rest_of? -> np_rest
   | "twice" "as" "many" ihead              -> np_twice
   | "twice" "as" "many" ihead "as" ("it" | "they") ("has" | "have" | "holds" | "hold") now? -> np_twice
   | NUM "times" "as" "many" ihead ("as" ("it" | "they") ("has" | "have" | "holds" | "hold") now?)? -> np_ntimes
@@ -115,7 +115,7 @@ np: NUM of? ihead                          -> np_count
   | NUM                                    -> np_bare
   | NUM "of" ("them" | "those" | "these")  -> np_bare
 
-rest_of: "of" (ihead | "them" | "it" | its ihead | posplace ihead)
+rest_of: "of" (ihead | "them" | "it" | its ihead | posplace ihead | ihead "there")
 bare: ihead (lsep ihead)*
 // "there shouldn't be any X left on P": after a negation "any X" is none of it
 any_items: "any" any_none ((lsep | "or") "any"? any_none)*  -> items
@@ -430,7 +430,7 @@ tail: places ("too" | "as" "well" | "also")                 -> t_too
     | items from places                                  -> t_from
     | "so" ("does" | "do" | "should" | "must" | "will") places -> t_too
     | places "with"? items                               -> t_gap
-    | "rest" rest_of? to places                           -> t_rest
+    | ("rest" | "others" | "extras" | "remainder") rest_of? to places -> t_rest
     | "not" ihead (lsep ihead)*                           -> t_not_items
     | ("also" | "same" "for" | "same" "thing" "for") places   -> t_too
     | NUM fewer loc                                      -> t_elided_fewer

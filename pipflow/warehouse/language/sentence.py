@@ -101,6 +101,7 @@ class SentenceReader(GoalRules, TailRules, RuleScope, Interpreter):
         # complaints with no count ("P has too many X"): they set the context, and alone ask nothing
         self.observed: list[tuple[str, list[str]]] = []   # (words, places)
         self.prior_observed: list[tuple[str, list[str]]] = list(memory.get("observed") or [])
+        self.prior_item_first: bool = bool(memory.get("item_first"))  # the sentence before opened with an item
 
     # -- the rules' dispatch -----------------------------------------------------------------
     def __getattr__(self, name: str) -> Any:
@@ -174,6 +175,9 @@ class SentenceReader(GoalRules, TailRules, RuleScope, Interpreter):
         if kind == "np_rest":
             # "the rest of P's X": whose rest is checked against the statement before (_rest)
             named = [str(pp.children[0].value) for r in self.sub(node, "rest_of") for pp in self.sub(r, "posplace")]
+            if any(str(tok.value) == "there" for r in self.sub(node, "rest_of") for tok in r.children
+                   if isinstance(tok, Token)):
+                named = list(self.last_places or ["(no place said)"])   # "the rest of the rice there"
             return {**out(AMOUNTS[kind](nums)), **({"rest_of": named} if named else {})}
         if kind in AMOUNTS:
             return out(AMOUNTS[kind](nums))
@@ -558,8 +562,12 @@ class SentenceReader(GoalRules, TailRules, RuleScope, Interpreter):
         return {"count": held} if held else None
 
     def _rest(self, places: list[str], np: dict) -> dict:
-        """ "and the rest to P": what is left at the source of the statement before."""
-        prev = self.statements[-1] if self.statements else None
+        """ "and the rest to P": what is left at the source of the statement before (in this
+        sentence, or the last of the sentence before: "Take it down to 1. The extras go to P.")."""
+        prev = self.statements[-1] if self.statements else (self.prior_last[-1] if self.prior_last else None)
+        if not self.statements and prev is not None and self.prior_item_first:
+            raise TranslationError(f"'{np['words']}': the rest of what the sentence before put there, or of "
+                                   f"every one in the world? say where it comes from")
         if prev is None:
             raise TranslationError(f"'{np['words']}': the rest of what? (say where it comes from)")
         source = (prev.get("from") or {}).get("names") if prev["op"] == "transfer" else (

@@ -136,6 +136,8 @@ class TailRules:
         heads = [self.ihead(h, words) for r in rest_of for h in self.sub(r, "ihead")]
         np = {"items": {"names": heads} if heads else None, "amount": {"rest": True}, "words": words}
         named = [str(pp.children[0].value) for r in rest_of for pp in self.sub(r, "posplace")]
+        if any(str(tok.value) == "there" for r in rest_of for tok in r.children if hasattr(tok, "type")):
+            named = list(self.last_places or ["(no place said)"])   # "the rest of the rice there"
         if self.budget and not heads and not named:
             # "Take the X off P: 2 to A, the rest to B": the rest of the units taken
             self.statements.append(self._share(self.budget["st"], places, np, "rest"))
