@@ -333,3 +333,12 @@ def test_the_others_the_extras_the_rest_there(command: str, goal: dict) -> None:
 def test_a_rest_that_could_be_two_things_is_refused(command: str) -> None:
     with pytest.raises(TranslationError):
         understand(command, DAIRY)
+
+
+def test_places_a_colon_and_counts_each_with_a_final_count() -> None:
+    assert understand("The chill bay and the back yard: 2 cream tubs each, final count", DAIRY)["goal"] == {
+        "chill_bay": {"cream_tub": 2}, "back_yard": {"cream_tub": 2}}
+    # without "each" the "each" reading is offered, never taken
+    with pytest.raises(TranslationError, match="each of chill_bay, back_yard") as err:
+        understand("The chill bay and the back yard: 2 cream tubs", DAIRY)
+    assert [c["goal"] for c in err.value.candidates] == [{"chill_bay": {"cream_tub": 2}, "back_yard": {"cream_tub": 2}}]

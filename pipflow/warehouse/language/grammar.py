@@ -208,6 +208,8 @@ goal: there_be items loc                                  -> g_set
     | both? places modal? setv items ("each" | "apiece") left? -> g_place_set
     | both? places modal? "each" be? items                  -> g_place_set
     | places (":" | ",") items                             -> g_place_set
+    | places (":" | ",") items ("each" | "apiece") final?  -> g_place_set
+    | places (":" | ",") items final                       -> g_place_set
     | places                                               -> g_topic
     | places ":" ("add" | "plus") items                     -> g_add_place
     | places ("needs" | "need" | "wants") ("emptying" | "clearing" "out"? | "emptying" "out") ("into" | "onto" | "to") places -> g_empty_into
@@ -418,6 +420,8 @@ as_is: "where" ("it" | "they") ("is" | "are") | "as" ("it" | "they") ("is" | "ar
 
 except_places: ("except" | "but" "not" | "apart" "from" | "other" "than" | "excluding" | "not") except_what? ("up" | "down" | "over" | "out")? ("on" | "in" | "at" | "from") places
              | ("except" | "but" "not" | "excluding" | "not") from places
+// ", final count": the count is what the place ends with (no addition)
+final: ","? "final" ("count" | "total" | "figure" | "number")
 // "P should have 3 X on it": the pronoun is P itself
 resumptive: ("on" | "in" | "at" | "inside") ("it" | "them") left?
 except_count: ("except" "for"? | "but" | "apart" "from" | "other" "than" | "excluding" | "leaving") ("one" | NUM) ("of" "them")? ("on" | "in" | "at") places

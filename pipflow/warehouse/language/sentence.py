@@ -29,7 +29,7 @@ from lark.visitors import Interpreter
 from pipflow.errors import TranslationError
 from pipflow.language.numbers import NUMBER_WORDS
 from pipflow.language.spelling import normalize
-from pipflow.warehouse.language.goals import GoalRules, quote
+from pipflow.warehouse.language.goals import Choice, GoalRules, quote
 from pipflow.warehouse.language.lexicon import Lexed, Lexicon
 from pipflow.warehouse.language.robots import RobotSelector
 from pipflow.warehouse.language.rulescope import RuleScope
@@ -319,9 +319,14 @@ class SentenceReader(GoalRules, TailRules, RuleScope, Interpreter):
             mode, self.distributive = "each", False
         if len(places) > 1 and mode != "each" and not all(
                 "none" in np["amount"] for np in nps):
-            raise TranslationError(
-                f"{quote(words)}: the command does not say whether each of {', '.join(places)} "
-                f"gets these counts or they share them (say 'each', 'respectively' or 'evenly between')")
+            if self.picks.get("several") == "each":
+                mode = "each"   # chosen by the user among the candidates
+            else:
+                # each, or shared? The "each" reading is offered (a share would need the split said)
+                raise Choice(
+                    "several", ("each",),
+                    f"{quote(words)}: the command does not say whether each of {', '.join(places)} "
+                    f"gets these counts or they share them (say 'each', 'respectively' or 'evenly between')")
         if nps and all(np["amount"].get("observed") for np in nps):
             # "P has too many X": no goal; P and X are what the next clause's pronoun means
             self.last_places = places
