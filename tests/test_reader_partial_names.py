@@ -342,3 +342,14 @@ def test_places_a_colon_and_counts_each_with_a_final_count() -> None:
     with pytest.raises(TranslationError, match="each of chill_bay, back_yard") as err:
         understand("The chill bay and the back yard: 2 cream tubs", DAIRY)
     assert [c["goal"] for c in err.value.candidates] == [{"chill_bay": {"cream_tub": 2}, "back_yard": {"cream_tub": 2}}]
+
+
+@pytest.mark.parametrize("command, goal, rules", [
+    ("Just heifer today, please. Move 2 cream tubs from the cold room to the chill bay.",
+     {"cold_room": {"cream_tub": 3}, "chill_bay": {"cream_tub": 3}}, [{"only": ["heifer"]}]),
+    ("The cold room to the back yard: all cream tubs", {"cold_room": {"cream_tub": 0}, "back_yard": {"cream_tub": 5}}, []),
+    ("The cold room -> the back yard: 2 cream tubs", {"cold_room": {"cream_tub": 3}, "back_yard": {"cream_tub": 2}}, []),
+])
+def test_just_a_robot_and_a_route_before_its_items(command: str, goal: dict, rules: list) -> None:
+    got = understand(command, DAIRY)
+    assert got["goal"] == goal and got["constraints"] == rules

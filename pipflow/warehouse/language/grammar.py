@@ -253,6 +253,7 @@ goal: there_be items loc                                  -> g_set
     | addv items adv? from places adv? to places           -> g_transfer
     | addv items from places ("and" | "," "and"?) to places -> g_transfer
     | to places from places ","? items                      -> g_transfer
+    | from? places to places (":" | ",") items             -> g_transfer
     | addv items places adv? to places                     -> g_transfer
     | addv items "each" to places                          -> g_add
     | addv items ("with" | "using") robots adv? from places adv? to places -> g_transfer_with
@@ -553,7 +554,7 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | ("keep" | "leave") robots "out" rscope                  -> rule_never
     | "without" ("using" | "help" "of" | "help" "from")? robots rscope -> rule_never
     | "not" ("with" | "by" | "using") robots rscope          -> rule_never
-    | "only" robots rmodal? useact? rscope                   -> rule_only
+    | ("only" | "just") robots rmodal? useact? rscope        -> rule_only
     | "only" robots rmodal? "be" use ("to" act?)? rscope      -> rule_only
     | robots "only" rmodal? useact? rscope                   -> rule_only
     | robots rmodal? "only" useact rscope                    -> rule_only
