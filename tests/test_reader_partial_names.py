@@ -353,3 +353,25 @@ def test_places_a_colon_and_counts_each_with_a_final_count() -> None:
 def test_just_a_robot_and_a_route_before_its_items(command: str, goal: dict, rules: list) -> None:
     got = understand(command, DAIRY)
     assert got["goal"] == goal and got["constraints"] == rules
+
+
+@pytest.mark.parametrize("command, goal", [
+    ("The cold room is overstocked on cream tubs, take 2 off", {"cold_room": {"cream_tub": 3}}),
+    ("The cold room's getting a bit crowded, so take 2 cream tubs off it", {"cold_room": {"cream_tub": 3}}),
+    ("The cold room's getting a bit crowded, so take 2 cream tubs off it: they can go wherever there's room",
+     {"cold_room": {"cream_tub": 3}}),
+    ("The cold room is too full. Get the cream tubs there down to 2.", {"cold_room": {"cream_tub": 2}}),
+])
+def test_a_complaint_about_a_place_is_what_the_instruction_after_it_acts_on(command: str, goal: dict) -> None:
+    assert understand(command, DAIRY)["goal"] == goal
+
+
+@pytest.mark.parametrize("command, why", [
+    ("The cold room is too full.", "asks for nothing by itself"),
+    ("The cold room is too full, move 2 cream tubs to the back yard", "from there, or from anywhere"),
+    ("take 2 off", "off which place"),
+    ("Move 2 cream tubs from the cold room to the back yard, they can go anywhere", "after what"),
+])
+def test_a_complaint_alone_or_not_followed_up_is_refused(command: str, why: str) -> None:
+    with pytest.raises(TranslationError, match=why):
+        understand(command, DAIRY)

@@ -343,6 +343,27 @@ class GoalRules:
         for np in nps:
             self.statements.append(self._transfer_statement(np, source, None, words))
 
+    def g_item_there(self, node: Tree) -> None:
+        """ "Get the soup there down to 2": the place is the one just named (one place only)."""
+        words = self.words(node)
+        if not self.last_places or len(self.last_places) != 1:
+            raise TranslationError(f"{quote(words)}: 'there' is which place? say it")
+        head = self.ihead(self.sub(node, "ihead")[0], words)
+        n = int(self.toks(node, "NUM")[-1].value)
+        self.put(list(self.last_places), "one", [{"items": {"names": [head]}, "amount": {"count": n},
+                                                 "words": words}], words)
+
+    def g_remove_complained(self, node: Tree) -> None:
+        """ "P is overstocked on X, take 2 off": off the place of the complaint just made (in this
+        sentence or the one before); with no complaint, "off" what? refused."""
+        said = (self.observed or self.prior_observed or [None])[-1]
+        words = self.words(node)
+        if said is None:
+            raise TranslationError(f"{quote(words)}: off which place? say it")
+        parts = self.clause_parts(node)
+        for np in parts.nps:
+            self.statements.append(self._transfer_statement(np, list(said[1]), None, words))
+
     def g_mult(self, node: Tree) -> None:
         parts = self.clause_parts(node)
         words, locs = parts.words, parts.locs
@@ -364,6 +385,17 @@ class GoalRules:
         places = self.place_list(self.sub(node, "places")[0])
         if len(places) != 1:
             raise TranslationError(f"{quote(self.words(node))}: which place? (a topic is one place)")
+        self.last_places = places
+        self.observed.append((self.words(node), places))
+
+    def g_complaint(self, node: Tree) -> None:
+        """ "P is overstocked on X", "P's getting a bit crowded": no count, so no goal; P (and X)
+        are what the instruction after it means ("take 2 off", "get the soup there down to 2"),
+        as after "P has too many X" (:meth:`put`: the same checks follow)."""
+        places = self.place_list(self.sub(node, "places")[0])
+        heads = self.sub(node, "ihead")
+        if heads:
+            self.last_item = [self.ihead(heads[0], self.words(node))]
         self.last_places = places
         self.observed.append((self.words(node), places))
 

@@ -208,6 +208,7 @@ goal: there_be items loc                                  -> g_set
     | both? places modal? setv items ("each" | "apiece") left? -> g_place_set
     | both? places modal? "each" be? items                  -> g_place_set
     | places (":" | ",") items                             -> g_place_set
+    | places crowded ("on" ihead)?                         -> g_complaint
     | places (":" | ",") items ("each" | "apiece") final?  -> g_place_set
     | places (":" | ",") items final                       -> g_place_set
     | places                                               -> g_topic
@@ -278,6 +279,7 @@ goal: there_be items loc                                  -> g_set
     | "nothing" modal? ("leaves" | "leave" | go "out" "of" | "be" "taken" "from" | "be" "removed" "from" | "comes" "off" | "come" "off") places -> g_keep
     | ("reduce" | "lower" | "cut" | "drop" | "increase" | "raise" | "bring" | "take" | "get") ihead loc ("down" | "up")? "to" NUM -> g_item_first
     | ("bring" | "take" | "get" | "knock") ihead loc ("down" | "up") "by" NUM -> g_updown
+    | ("bring" | "take" | "get" | "cut" | "lower") ihead "there" ("up" | "down")? "to" NUM -> g_item_there
     | removev pitems ("out" | "away" | "off")?             -> g_remove_src
     | places modal? setv items "too" "many"                  -> g_too_many
     | places place_appos? modal? "lose" items                -> g_lose
@@ -320,6 +322,7 @@ goal: there_be items loc                                  -> g_set
     | items modal? go from places to places                 -> g_transfer
     | bare src modal? go to places                          -> g_transfer_src
     | removev items from places                            -> g_remove
+    | removev items ("off" | "out")                        -> g_remove_complained
     | removev "everything" from places                      -> g_empty
     | mult "up"? ihead loc                                 -> g_mult
     | (putv | addv) ("them" | "it" | "those" | "these" | "all" "of" "them") adv? loc -> g_pronoun_dest
@@ -421,6 +424,13 @@ as_is: "where" ("it" | "they") ("is" | "are") | "as" ("it" | "they") ("is" | "ar
 
 except_places: ("except" | "but" "not" | "apart" "from" | "other" "than" | "excluding" | "not") except_what? ("up" | "down" | "over" | "out")? ("on" | "in" | "at" | "from") places
              | ("except" | "but" "not" | "excluding" | "not") from places
+// "P is overstocked on X", "P's getting a bit crowded", "P is looking bare": a complaint, no count
+crowded: crowdbe crowdhow? crowdstate
+crowdbe: "is" | "s" | "looks" | "is" "looking" | "s" "looking" | "is" "getting" | "s" "getting"
+crowdhow: "too" | "a" "bit" | "very" | "rather" | "quite" | "really" | "way"
+crowdstate: "overstocked" | "full" | "crowded" | "cramped" | "packed" | "rammed" | "overloaded" | "bare"
+          | "understocked" | "overflowing"
+anywhere: ("wherever" | "anywhere") ("you" "like" | "it" "fits" | "they" "fit")?
 // ", final count": the count is what the place ends with (no addition)
 final: ","? "final" ("count" | "total" | "figure" | "number")
 // "P should have 3 X on it": the pronoun is P itself
@@ -436,6 +446,7 @@ tail: places ("too" | "as" "well" | "also")                 -> t_too
     | "so" ("does" | "do" | "should" | "must" | "will") places -> t_too
     | places "with"? items                               -> t_gap
     | ("rest" | "others" | "extras" | "remainder") rest_of? to places -> t_rest
+    | ("they" | "it" | "those" | "these") ("can" | "may" | "could")? ("go" | "goes") anywhere -> t_anywhere
     | "not" ihead (lsep ihead)*                           -> t_not_items
     | ("also" | "same" "for" | "same" "thing" "for") places   -> t_too
     | NUM fewer loc                                      -> t_elided_fewer

@@ -185,6 +185,11 @@ QUANTITY_PHRASES: dict[str, tuple[str, ...]] = {
     "everything we carry": ("everything",), "everything we hold": ("everything",),
     "everything we ve got": ("everything",), "everything we got": ("everything",),
     "everything there is": ("everything",), "everything in stock": ("everything",),
+    # "they can go wherever there's room": anywhere ("room" is no word of the grammar: it is a
+    # word of place names)
+    "wherever there is room": ("wherever",), "wherever there s room": ("wherever",),
+    "wherever theres room": ("wherever",), "wherever there is space": ("wherever",),
+    "anywhere there is room": ("anywhere",), "anywhere there s room": ("anywhere",),
 }
 
 
@@ -198,7 +203,10 @@ def quantity_phrases(toks: list[Tok], keywords: dict[str, str]) -> list[Tok]:
     while k < len(toks):
         for words, said in phrases:
             got = toks[k:k + len(words)]
-            if len(got) == len(words) and all(x.kind == "word" and x.value == w for x, w in zip(got, words)):
+            # a word of the phrase may have been read as a word of a name ("room" of cold_room in
+            # "wherever there's room"): the phrase, said as a whole, is the idiom
+            if len(got) == len(words) and all((x.kind == "word" and x.value == w) or (
+                    j > 0 and x.kind == "name" and x.text.lower() == w) for j, (x, w) in enumerate(zip(got, words))):
                 text = " ".join(x.text for x in got)
                 out += [Tok("word", text if j == 0 else "", w) for j, w in enumerate(said)]
                 k += len(words)
@@ -593,8 +601,11 @@ class Lexicon:
             if term[0] == "POSS" and tokens and tokens[-1].type == "ROBOT" and "is" in self.keywords:
                 term = (self.keywords["is"], "is")  # "Jumbo's the only one ...": a robot's "'s" is "is"
             elif (term[0] == "POSS" and tokens and tokens[-1].type == "PLACE" and k + 1 < len(toks)
-                  and toks[k + 1].kind == "word" and toks[k + 1].value == "got" and "has" in self.keywords):
-                term = (self.keywords["has"], "has")  # "Cellar B's got ...": a place's "'s got" is "has got"
+                  and toks[k + 1].kind == "word" and toks[k + 1].value in ("got", "getting", "looking")):
+                # "Cellar B's got ...": a place's "'s got" is "has got"; "P's getting crowded": "is"
+                said = "has" if toks[k + 1].value == "got" else "is"
+                if said in self.keywords:
+                    term = (self.keywords[said], said)
             tokens.append(Token(term[0], term[1], start_pos=len(tokens)))
             source.append(t)
         return Lexed(tokens, source, frozenset(exact))

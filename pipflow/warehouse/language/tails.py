@@ -144,6 +144,14 @@ class TailRules:
             return
         self.statements.append(self._rest(places, {**np, "rest_of": named} if named else np))
 
+    def t_anywhere(self, node: Tree) -> None:
+        """ "take 2 X off P: they can go wherever there's room": what a removal means already
+        (no destination); after anything else it is refused (where to, then?)."""
+        words = self.words(node)
+        prev = self.statements[-1] if self.statements else None
+        if prev is None or prev["op"] != "transfer" or prev.get("to") is not None:
+            raise TranslationError(f"{quote(words)}: after what? (only units taken off a place may go anywhere)")
+
     def t_not_items(self, node: Tree) -> None:
         words = self.words(node)
         # "Take the widgets off rack C, but not the springs": they stay where they are
