@@ -375,3 +375,12 @@ def test_a_complaint_about_a_place_is_what_the_instruction_after_it_acts_on(comm
 def test_a_complaint_alone_or_not_followed_up_is_refused(command: str, why: str) -> None:
     with pytest.raises(TranslationError, match=why):
         understand(command, DAIRY)
+
+
+def test_too_after_a_whole_move_repeats_nothing() -> None:
+    assert understand("1 cream tub from the cold room to the back yard, and 1 from the chill bay to the back "
+                      "yard too", DAIRY)["goal"] == {"cold_room": {"cream_tub": 4}, "chill_bay": {"cream_tub": 0},
+                                                     "back_yard": {"cream_tub": 2}}
+    # "too" after a place alone is still the ellipsis of the sentence before
+    assert understand("The chill bay should have 2 butters. The back yard too.", DAIRY)["goal"] == {
+        "chill_bay": {"butter-box": 2}, "back_yard": {"butter-box": 2}}

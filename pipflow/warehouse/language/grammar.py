@@ -40,7 +40,7 @@ aside: "instead" "of" NUM | "rather" "than" NUM
      | "by" ("end" | "tonight" | "tomorrow" | "noon" | "morning" | "evening" | "shift" "end")
      | ("at" | "in") "end" | "eventually" | "afterwards" | "later" | "when" "you" "can" | "when" "possible"
      | "i" ("think" | "guess" | "suppose" | "believe") | "i" "have" "a" "plan" | "ok" | "okay"
-     | "thanks" | "thank" "you" | "if" "possible" | "as" "well"
+     | "thanks" | "thank" "you" | "if" "possible" | "as" "well" | "too"
      | "as" "soon" "as" ("possible" | "you" "can") | "urgently" | "if" "you" "can"
      | "when" "you" ("get" "a" "chance" | "have" "time" | "get" "time")
      | ("this" | "before") ("morning" | "afternoon" | "evening" | "shift" "ends"?) | "before" ("lunch" | "noon")
