@@ -384,3 +384,26 @@ def test_too_after_a_whole_move_repeats_nothing() -> None:
     # "too" after a place alone is still the ellipsis of the sentence before
     assert understand("The chill bay should have 2 butters. The back yard too.", DAIRY)["goal"] == {
         "chill_bay": {"butter-box": 2}, "back_yard": {"butter-box": 2}}
+
+
+def test_no_x_left_in_p_and_let_r_do_all_of_it() -> None:
+    got = understand("Before lunch please: no cream tubs left in the cold room, 2 more butters in the chill bay, "
+                     "and let the amrs do all of it", DAIRY)
+    assert got["goal"] == {"cold_room": {"cream_tub": 0}, "chill_bay": {"butter-box": 2}}
+    assert got["constraints"] == [{"only": ["cart1", "cart2"]}]
+
+
+@pytest.mark.parametrize("command, aside", [
+    ("No more than one butter in the cold room, they keep getting soggy", "they keep getting soggy"),
+    ("No more than one butter in the cold room, that order got cut", "that order got cut"),
+])
+def test_remarks_about_a_thing_are_set_aside(command: str, aside: str) -> None:
+    got = understand(command, DAIRY)
+    assert got["goal"] == {"cold_room": {"butter-box": {"at_most": 1}}} and got["order"]["set_aside"] == [aside]
+
+
+@pytest.mark.parametrize("tail", ["that came in today", "that one is broken", "that lot is for the van",
+                                  "that order was for cart1"])
+def test_a_clause_after_that_which_may_narrow_or_name_is_never_set_aside(tail: str) -> None:
+    with pytest.raises(TranslationError):
+        understand(f"Move 2 cream tubs from the cold room to the chill bay, {tail}", DAIRY)

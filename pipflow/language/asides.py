@@ -188,10 +188,15 @@ def is_report(words: Iterable[str], names: Callable[[str], bool]) -> bool:
     the grammar in it describe, they ask for nothing ("serviced", "wheel"). A name of the world, a
     number (``names``) or an operative word ("it's not coming", "they're only ...") keeps it in."""
     ws = [w for w in words if w]
+    if len(ws) >= 3 and ws[0] in ("that", "this") and ws[2] in _BE | {"got", "has", "had"} \
+            and not near_operative(ws[1]) and not names(ws[1]):
+        # "..., that order got cut", "..., this lot's ... ": a remark about a thing (a demonstrative,
+        # a noun, then "be" or "got"); "..., that came in today" (a verb after "that") is no remark
+        return not any(near_operative(w) or names(w) for w in ws)
     if len(ws) < 2 or not (ws[0] in SUBJECTS or ws[0] in _SUBJECT_BE):
         return False
     head = ws[:5]
-    has_be = ws[0] in _SUBJECT_BE or any(w in _BE for w in head[1:4])
+    has_be = ws[0] in _SUBJECT_BE or any(w in _BE | {"keep", "keeps"} for w in head[1:4])
     if not has_be or not any(w.endswith("ing") and len(w) > 4 for w in head[1:5]):
         return False
     return not any(near_operative(w) or names(w) for w in ws)

@@ -203,6 +203,7 @@ goal: there_be items loc                                  -> g_set
     | "leave" places "with" items                          -> g_place_set
     | there_be items left loc                             -> g_set
     | items modal? stay? loc                              -> g_set
+    | items left loc                                      -> g_set
     | loc ","? there_be? items                            -> g_loc_set
     | both? places modal? each? setv each? items left? resumptive? -> g_place_set
     | both? places modal? setv items ("each" | "apiece") left? -> g_place_set
@@ -587,6 +588,7 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | ("except" | "apart" "from" | "other" "than" | "besides") robots ","? ("all" | "every")? ROBOTWORD? ("is" | "are" | modal? ("stay" | "be" | "remain")) state -> rule_only
     | ("except" | "apart" "from" | "other" "than" | "besides") robots ","? ("all" | "every" | "no")? ROBOTWORD? rmodal? rneg useact? rscope -> rule_only
     | robots oblig? "do" ("it" | "that" | "this" | "job" | "task" | "work") -> rule_do_it
+    | ("let" | "have" | "get")? robots oblig? "do" ("all" "of" ("it" | "that" | "this" | "them") | "everything" | "whole" ("job" | "lot" | "thing")) -> rule_only
     | "only" robots (rmodal | oblig)? "do" ("it" | "that" | "this" | "job" | "task" | "work") -> rule_do_it
     | robots ("is" | "are") "only" ("ones" | NUM | ROBOTWORD) ("allowed" "to" | "permitted" "to" | "that" ("may" | "can") | "who" ("may" | "can")) useact? rscope -> rule_only
     | robots ("can" | "may" | "could" | "might") act rscope  -> rule_permission
