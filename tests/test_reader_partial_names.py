@@ -407,3 +407,20 @@ def test_remarks_about_a_thing_are_set_aside(command: str, aside: str) -> None:
 def test_a_clause_after_that_which_may_narrow_or_name_is_never_set_aside(tail: str) -> None:
     with pytest.raises(TranslationError):
         understand(f"Move 2 cream tubs from the cold room to the chill bay, {tail}", DAIRY)
+
+
+def test_a_place_a_colon_an_item_a_colon_a_count() -> None:
+    assert understand("chill bay: butters: four total", DAIRY)["goal"] == {"chill_bay": {"butter-box": 4}}
+    assert understand("chill bay: butters: 4, cream tubs: 2", DAIRY)["goal"] == {
+        "chill_bay": {"butter-box": 4, "cream_tub": 2}}
+
+
+def test_an_optional_colon_and_an_optional_comma_are_two_rules() -> None:
+    """Both were named _opt_kw__, so the grammar's every ':'? read as ','?."""
+    from pipflow.warehouse.language.grammar import nullable_optionals
+
+    made = nullable_optionals('a: "x" ":"? "y"\nb: "x" ","? "y"\n')
+    colon = next(line for line in made.splitlines() if line.startswith("a:")).split()[2]
+    comma = next(line for line in made.splitlines() if line.startswith("b:")).split()[2]
+    assert colon != comma
+    assert f'{colon}: ":" | ' in made and f'{comma}: "," | ' in made

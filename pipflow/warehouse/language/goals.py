@@ -377,11 +377,6 @@ class GoalRules:
     def g_topic(self, node: Tree) -> None:
         """ "Back shed. Pull 3 shackles off it.": a place said alone is what "it" and "there" in the
         next sentence mean; alone in a command it asks for nothing (refused as nothing asked)."""
-        pos = [tok.start_pos for tok in node.scan_values(lambda v: isinstance(v, Token))]
-        if not pos or min(pos) != 0 or max(pos) != len(self.lexed.tokens) - 1:
-            # a place alone is a topic only as a whole sentence ("Back shed."); inside one it is
-            # part of something else ("bay 1 and bay 2 should each ...")
-            raise TranslationError(f"{quote(self.words(node))}: a place alone, inside a sentence")
         places = self.place_list(self.sub(node, "places")[0])
         if len(places) != 1:
             raise TranslationError(f"{quote(self.words(node))}: which place? (a topic is one place)")

@@ -20,6 +20,7 @@ import re
 GRAMMAR = r"""
 start: sentence
 sentence: lead? part aside? (sep part aside?)* sep? aside?
+        | places                                   -> topic_sentence
 lead: ("but" | "and" | "then" | "also" | "so" | "however" | "now" | "oh" | "well" | "next"
       | "finally" | "first" | "afterwards" | "after" "that" | "additionally" | "plus"
       | ("can" | "could" | "would") ("you" | "we") | "you" ("should" | "must" | "can") | "just" | "let" "us"
@@ -120,7 +121,7 @@ bare: ihead (lsep ihead)*
 // "there shouldn't be any X left on P": after a negation "any X" is none of it
 any_items: "any" any_none ((lsep | "or") "any"? any_none)*  -> items
 any_none: ihead                                -> np_none
-inum: ihead ":"? NUM
+inum: ihead ":"? NUM left?
 except_items: ("except" "for"? | "but" | "besides" | "other" "than" | "apart" "from" | "excluding") ihead (lsep ihead)*
 
 ihead: ITEM | ITEMWORD
@@ -212,7 +213,6 @@ goal: there_be items loc                                  -> g_set
     | places crowded ("on" ihead)?                         -> g_complaint
     | places (":" | ",") items ("each" | "apiece") final?  -> g_place_set
     | places (":" | ",") items final                       -> g_place_set
-    | places                                               -> g_topic
     | places ":" ("add" | "plus") items                     -> g_add_place
     | places ("needs" | "need" | "wants") ("emptying" | "clearing" "out"? | "emptying" "out") ("into" | "onto" | "to") places -> g_empty_into
     | places ("needs" | "need" | "wants") ("emptying" | "clearing" "out"? | "emptying" "out") -> g_empty
@@ -622,7 +622,12 @@ def nullable_optionals(grammar: str) -> str:
     def opt(m: re.Match) -> str:
         sym = m.group(1)
         prefix = "kw_" if sym.startswith('"') else ""
-        key = re.sub(r"[^a-z0-9_]", "_", sym.strip('"').lower())
+        said = sym.strip('"').lower()
+        key = re.sub(r"[^a-z0-9_]", "_", said)
+        if key != said:
+            # a mark ("," or ":") has no letters to name it by: the two were one rule, so that
+            # every ":"? of the grammar read as ","? (the name says the literal, in hex)
+            key += "_" + said.encode().hex()
         name = f"_opt_{prefix}{key}"
         made[name] = sym
         return name

@@ -20,6 +20,10 @@ from pipflow.warehouse.language.sentence import SentenceReader
 def read_tree(tree: Tree, lexed: Lexed, lex: Lexicon, selector: RobotSelector, memory: dict,
           picks: dict | None = None) -> SentenceReader:
     reader = SentenceReader(lexed, lex, selector, memory, picks)
+    if tree.children[0].data == "topic_sentence":   # "Back shed." (a place said alone)
+        reader.g_topic(tree.children[0])
+        reader.finish()
+        return reader
     for part in tree.children[0].children:
         if isinstance(part, Tree) and part.data not in ("sep", "lead"):
             reader.part(part)
