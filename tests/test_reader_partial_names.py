@@ -424,3 +424,11 @@ def test_an_optional_colon_and_an_optional_comma_are_two_rules() -> None:
     comma = next(line for line in made.splitlines() if line.startswith("b:")).split()[2]
     assert colon != comma
     assert f'{colon}: ":" | ' in made and f'{comma}: "," | ' in made
+
+
+def test_a_misspelt_word_of_a_name_read_alone() -> None:
+    assert understand("Double the buters on the chill bay", DAIRY)["goal"] == {"chill_bay": {"butter-box": 0}}
+    assert understand("chill bay, cream tubs: just one", DAIRY)["goal"] == {"chill_bay": {"cream_tub": 1}}
+    # a modifier that is only offered stays unread, misspelt or not
+    with pytest.raises(TranslationError):
+        understand("Move 2 chese from the cold room to the back yard", DAIRY)

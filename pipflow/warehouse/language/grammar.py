@@ -121,7 +121,7 @@ bare: ihead (lsep ihead)*
 // "there shouldn't be any X left on P": after a negation "any X" is none of it
 any_items: "any" any_none ((lsep | "or") "any"? any_none)*  -> items
 any_none: ihead                                -> np_none
-inum: ihead ":"? NUM left?
+inum: ihead ":"? "just"? NUM left?
 except_items: ("except" "for"? | "but" | "besides" | "other" "than" | "apart" "from" | "excluding") ihead (lsep ihead)*
 
 ihead: ITEM | ITEMWORD

@@ -427,6 +427,19 @@ class NameIndex:
         hit = self._misspelt_apart(raw[i:i + 2])
         return (Tok("name", " ".join(raw[i:i + 2]), hit.name, hit.kind), i + 2) if hit is not None else None
 
+    def _misspelt_part(self, word: str) -> "_Name | None":
+        """A word of a name read alone (:attr:`parts`) misspelt by one edit, same first letter, five
+        letters or more ("formla" for the formula of baby-formula): read only where exactly one
+        such word is near, it names one thing, and the word is nothing else (no grammar word, no
+        name, no word several names share)."""
+        if (len(word) < 5 or not word.isalpha() or word in self.reserved or word in STOPWORDS
+                or word in self.forms or word in self.shared_parts or word in self.loose_parts
+                or self.lookup(*split_digits(word), word, fuzzy=False) is not None):
+            return None
+        near = {self.parts[p].name: self.parts[p] for p in self.parts
+                if p[:1] == word[:1] and abs(len(p) - len(word)) <= 1 and distance(p, word) <= 1}
+        return next(iter(near.values())) if len(near) == 1 else None
+
     def _misspelt_apart(self, pair: list[str]) -> "_Name | None":
         """A two-word name written apart with one of its words misspelt by one edit ("tastng room"
         for tasting_room), the other right: read only where exactly one name fits, and never from a
@@ -505,6 +518,9 @@ class NameIndex:
         part = self.parts.get(norm)
         if part is not None:
             return Tok("name", raw[i], part.name, part.kind), i + 1  # "formula" for baby-formula
+        near = self._misspelt_part(norm)
+        if near is not None:
+            return Tok("name", raw[i], near.name, near.kind), i + 1  # "formla" for baby-formula
         if norm in self.shared_parts or norm in self.loose_parts:
             # a word of several names ("milk" of milk_crate and milk-churn), or a modifier that may
             # name something else ("oil" of oil-filter): never read as the nearest name by typo
