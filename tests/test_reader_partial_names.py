@@ -432,3 +432,19 @@ def test_a_misspelt_word_of_a_name_read_alone() -> None:
     # a modifier that is only offered stays unread, misspelt or not
     with pytest.raises(TranslationError):
         understand("Move 2 chese from the cold room to the back yard", DAIRY)
+
+
+@pytest.mark.parametrize("command, goal", [
+    ("Knock a cream tub off the cold room, and the same off the chill bay",
+     {"cold_room": {"cream_tub": 4}, "chill_bay": {"cream_tub": 0}}),
+    ("Move 2 butters from the cold room to the chill bay, and the same to the back yard",
+     {"cold_room": {"butter-box": 0}, "chill_bay": {"butter-box": 2}, "back_yard": {"butter-box": 2}}),
+    ("The cold room's cream tubs - make it 2", {"cold_room": {"cream_tub": 2}}),
+])
+def test_the_same_at_another_place_and_make_it_n(command: str, goal: dict) -> None:
+    assert understand(command, DAIRY)["goal"] == goal
+
+
+def test_the_same_with_nothing_before_is_refused() -> None:
+    with pytest.raises(TranslationError):
+        understand("The same off the chill bay", DAIRY)

@@ -353,6 +353,14 @@ class GoalRules:
         self.put(list(self.last_places), "one", [{"items": {"names": [head]}, "amount": {"count": n},
                                                  "words": words}], words)
 
+    def g_poss_make(self, node: Tree) -> None:
+        """ "Row A's brake pads - make it 2": that place's item, set to the count."""
+        words = self.words(node)
+        place = [str(self.sub(node, "posplace")[0].children[0].value)]
+        head = self.ihead(self.sub(node, "ihead")[0], words)
+        n = int(self.toks(node, "NUM")[-1].value)
+        self.put(place, "one", [{"items": {"names": [head]}, "amount": {"count": n}, "words": words}], words)
+
     def g_remove_complained(self, node: Tree) -> None:
         """ "P is overstocked on X, take 2 off": off the place of the complaint just made (in this
         sentence or the one before); with no complaint, "off" what? refused."""

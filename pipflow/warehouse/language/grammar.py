@@ -281,6 +281,7 @@ goal: there_be items loc                                  -> g_set
     | ("reduce" | "lower" | "cut" | "drop" | "increase" | "raise" | "bring" | "take" | "get") ihead loc ("down" | "up")? "to" NUM -> g_item_first
     | ("bring" | "take" | "get" | "knock") ihead loc ("down" | "up") "by" NUM -> g_updown
     | ("bring" | "take" | "get" | "cut" | "lower") ihead "there" ("up" | "down")? "to" NUM -> g_item_there
+    | posplace ihead (":" | ",")? ("make" | "set") ("it" | "them" | "that") ("to" | "at")? NUM -> g_poss_make
     | removev pitems ("out" | "away" | "off")?             -> g_remove_src
     | places modal? setv items "too" "many"                  -> g_too_many
     | places place_appos? modal? "lose" items                -> g_lose
@@ -447,6 +448,7 @@ tail: places ("too" | "as" "well" | "also")                 -> t_too
     | "so" ("does" | "do" | "should" | "must" | "will") places -> t_too
     | places "with"? items                               -> t_gap
     | ("rest" | "others" | "extras" | "remainder") rest_of? to places -> t_rest
+    | "same" ("off" | "from" | "out" "of" | "to" | "on" | "in" | "at" | "for" | "into" | "onto") places -> t_same
     | ("they" | "it" | "those" | "these") ("can" | "may" | "could")? ("go" | "goes") anywhere -> t_anywhere
     | "not" ihead (lsep ihead)*                           -> t_not_items
     | ("also" | "same" "for" | "same" "thing" "for") places   -> t_too

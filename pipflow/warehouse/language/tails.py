@@ -144,6 +144,28 @@ class TailRules:
             return
         self.statements.append(self._rest(places, {**np, "rest_of": named} if named else np))
 
+    def t_same(self, node: Tree) -> None:
+        """ "Knock a brake pad off row A, and the same off row B": the statement before again, at
+        the other place: its source after "off" / "from", its target or its place otherwise
+        (a statement with neither, or one that names several, is refused)."""
+        words = self.words(node)
+        prev = self.statements[-1] if self.statements else None
+        places = self.place_list(self.sub(node, "places")[0])
+        prep = next(str(c.value).lower() for c in node.children if hasattr(c, "type") and str(c.value).lower() != "same")
+        if prev is None:
+            raise TranslationError(f"{quote(words)}: the same as what? nothing said before it")
+        new = dict(prev, words=words)
+        if prev["op"] == "transfer":
+            key = "from" if prep in ("off", "from", "out") else "to"
+            if prev.get(key) is None or "names" not in prev[key]:
+                raise TranslationError(f"{quote(words)}: the same as {prev['words']!r}, but it has no place to change")
+            new[key] = {"names": places}
+        elif "places" in prev and "names" in prev["places"] and prep not in ("off", "from", "out"):
+            new["places"] = {"names": places}
+        else:
+            raise TranslationError(f"{quote(words)}: cannot tell what the same means here")
+        self.statements.append(new)
+
     def t_anywhere(self, node: Tree) -> None:
         """ "take 2 X off P: they can go wherever there's room": what a removal means already
         (no destination); after anything else it is refused (where to, then?)."""
