@@ -448,3 +448,13 @@ def test_the_same_at_another_place_and_make_it_n(command: str, goal: dict) -> No
 def test_the_same_with_nothing_before_is_refused() -> None:
     with pytest.raises(TranslationError):
         understand("The same off the chill bay", DAIRY)
+
+
+def test_a_bound_with_the_item_left_out_and_just_one_of_each() -> None:
+    assert understand("I want at least 2 butters on the chill bay and no more than one in the cold room",
+                      DAIRY)["goal"] == {"chill_bay": {"butter-box": {"at_least": 2}},
+                                         "cold_room": {"butter-box": {"at_most": 1}}}
+    assert understand("I'd like the back yard to have just one of each", DAIRY)["goal"] == {
+        "back_yard": {p: 1 for p in DAIRY["products"]}}
+    with pytest.raises(TranslationError, match="which product"):
+        understand("the chill bay should have no more than 2", DAIRY)

@@ -92,7 +92,7 @@ np: NUM of? ihead                          -> np_count
   | vague NUM of? ihead                    -> np_vague
   | vagueq of? ihead                       -> np_vague
   | "too" ("many" | "much") of? ihead       -> np_too_many
-  | NUM "of" ("each" | "every") ITEMWORD?  -> np_each
+  | "just"? NUM "of" ("each" | "every") ITEMWORD? -> np_each
   | NUM "of" "everything"                  -> np_each
   | "everything"                           -> np_everything
   | ("everything" | "all" ITEMWORD | "every" ITEMWORD | "all" "goods") except_items -> np_everything
@@ -114,6 +114,8 @@ np: NUM of? ihead                          -> np_count
   | ("double" | "triple" | "quadruple") ihead -> np_times
   | "half" of? its? ihead                  -> np_half
   | NUM                                    -> np_bare
+  | upper NUM                              -> np_atmost_bare
+  | lower NUM                              -> np_atleast_bare
   | NUM "of" ("them" | "those" | "these")  -> np_bare
 
 rest_of: "of" (ihead | "them" | "it" | its ihead | posplace ihead | ihead "there")

@@ -53,6 +53,7 @@ AMOUNTS: dict[str, Callable[[list[int]], dict]] = {
 ITEMLESS: dict[str, Callable[[list[int]], dict]] = {
     "np_another": lambda n: {"count": 1}, "np_more_bare": lambda n: {"more": n[0]},
     "np_bare": lambda n: {"count": n[0]},
+    "np_atmost_bare": lambda n: {"at_most": n[0]}, "np_atleast_bare": lambda n: {"at_least": n[0]},
 }
 #: verbs whose object goes somewhere: a destination said later in the sentence is theirs too
 MOVE_VERBS = {"move", "bring", "send", "ship", "transfer", "carry", "haul", "shift", "cart", "ferry", "tow",
