@@ -168,7 +168,11 @@ def emptied_last(statements: list[dict]) -> list[dict]:
     for st in [s for s in statements if s["op"] == "empty"]:
         emptied = set(st["places"].get("names") or [])
         k = out.index(st)
-        later = [t for t in out[k + 1:] if t["op"] == "transfer" and emptied & set((t.get("from") or {}).get("names") or [])]
+        # only a move of all of it somewhere ("everything on it goes to P", "its X to P"): a count
+        # taken after the emptying stays in its place (and is refused: nothing is left to take)
+        later = [t for t in out[k + 1:] if t["op"] == "transfer" and t.get("to")
+                 and {"all", "all_held"} & set(t.get("amount") or {})
+                 and emptied & set((t.get("from") or {}).get("names") or [])]
         if later:
             out.remove(st)
             out.insert(out.index(later[-1]) + 1, st)
