@@ -458,3 +458,13 @@ def test_a_bound_with_the_item_left_out_and_just_one_of_each() -> None:
         "back_yard": {p: 1 for p in DAIRY["products"]}}
     with pytest.raises(TranslationError, match="which product"):
         understand("the chill bay should have no more than 2", DAIRY)
+
+
+@pytest.mark.parametrize("command, goal", [
+    ("Take two - sorry, three - cream tubs off the cold room", {"cold_room": {"cream_tub": 2}}),
+    ("Take two - no - three cream tubs off the cold room", {"cold_room": {"cream_tub": 2}}),
+    ("Is it possible to move 2 cream tubs from the cold room to the back yard",
+     {"cold_room": {"cream_tub": 3}, "back_yard": {"cream_tub": 2}}),
+])
+def test_a_count_corrected_between_dashes_and_a_request_frame(command: str, goal: dict) -> None:
+    assert understand(command, DAIRY)["goal"] == goal

@@ -193,6 +193,29 @@ QUANTITY_PHRASES: dict[str, tuple[str, ...]] = {
 }
 
 
+#: ways of asking that say nothing the order needs, at the start of a sentence: left out, as
+#: "please" is ("Would it be possible to have R bring ...", "Is it possible to move ...")
+REQUEST_FRAMES = (("would", "it", "be", "possible", "to"), ("is", "it", "possible", "to"),
+                  ("would", "you", "mind"), ("do", "you", "mind"), ("any", "chance", "you", "could"),
+                  ("i", "was", "wondering", "if", "you", "could"), ("would", "it", "be", "ok", "to"))
+
+
+def without_request_frames(toks: list[Tok]) -> list[Tok]:
+    """The tokens without a frame of :data:`REQUEST_FRAMES` that opens a sentence."""
+    out: list[Tok] = []
+    k = 0
+    while k < len(toks):
+        start = k == 0 or (toks[k - 1].kind == "punct" and toks[k - 1].value in (".", ";", "!", "?"))
+        hit = next((f for f in REQUEST_FRAMES if start and len(toks) >= k + len(f) and all(
+            x.kind == "word" and x.value == w for x, w in zip(toks[k:k + len(f)], f))), None)
+        if hit:
+            k += len(hit)
+            continue
+        out.append(toks[k])
+        k += 1
+    return out
+
+
 def quantity_phrases(toks: list[Tok], keywords: dict[str, str]) -> list[Tok]:
     """The tokens with each phrase of :data:`QUANTITY_PHRASES` read as its grammar words (longest
     first; the words as written stay the first token's text)."""
@@ -352,18 +375,22 @@ def corrected(toks: list[Tok]) -> list[Tok]:
     i = 0
     while i < len(toks):
         t = toks[i]
-        if t.kind == "num" and i + 1 < len(toks) and toks[i + 1].kind == "punct" and toks[i + 1].value == ",":
+        # set off by commas, or by dashes (read as ":"): "Take two - sorry, three - foam swords"
+        if t.kind == "num" and i + 1 < len(toks) and toks[i + 1].kind == "punct" and toks[i + 1].value in (",", ":"):
+            opened = toks[i + 1].value
             for words in CORRECTIONS:
                 j = i + 2
                 if [str(x.value) for x in toks[j:j + len(words)] if x.kind == "word"] != list(words):
                     continue
                 j += len(words)
-                if j < len(toks) and toks[j].kind == "punct" and toks[j].value == ",":
+                if j < len(toks) and toks[j].kind == "punct" and toks[j].value in (",", opened):
                     j += 1
                 if j < len(toks) and toks[j].kind == "num":
-                    text = " ".join(x.text for x in toks[i:j + 1])
+                    end = j + 1 if (opened == ":" and j + 1 < len(toks) and toks[j + 1].kind == "punct"
+                                    and toks[j + 1].value == ":") else j   # the closing dash goes too
+                    text = " ".join(x.text for x in toks[i:end + 1])
                     t = Tok("num", text, toks[j].value)
-                    i = j
+                    i = end
                     break
         out.append(t)
         i += 1
@@ -558,8 +585,8 @@ class Lexicon:
                 if typo is not None:
                     t = Tok("word", t.text, typo)
             fixed.append(t)
-        toks = lexicon_verbs(quantity_phrases(addressed_anyone(read_counts(_split_hyphens(fixed, self.keywords))),
-                                              self.keywords), self.keywords)
+        toks = lexicon_verbs(quantity_phrases(addressed_anyone(without_request_frames(
+            read_counts(_split_hyphens(fixed, self.keywords)))), self.keywords), self.keywords)
         toks = corrected_later(without_particles(corrected(toks)))
         out: list[Lexed] = []
         cur: list[Tok] = []
