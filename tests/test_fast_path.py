@@ -206,19 +206,19 @@ def test_parser_from_disk_reads_like_a_fresh_one(grammar_cache, monkeypatch):
 
 def test_parsed_command_is_the_same_with_a_loaded_parser(grammar_cache, monkeypatch):
     """The whole reading (order statements and rules), not only the tree."""
-    from pipflow.warehouse.language import parser
+    from pipflow.warehouse.language import forest, parser
 
-    parser._all_readings_parser.cache_clear()
+    forest.all_readings_parser.cache_clear()
     try:
         first = [parser.parse(c, WORLD) for c in COMMANDS[:1] + COMMANDS[3:]]
-        parser._all_readings_parser.cache_clear()
+        forest.all_readings_parser.cache_clear()
         from pipflow.language import earley
 
         monkeypatch.setattr(earley, "_MEMORY", {})
         _no_build(monkeypatch)
         assert [parser.parse(c, WORLD) for c in COMMANDS[:1] + COMMANDS[3:]] == first
     finally:
-        parser._all_readings_parser.cache_clear()  # later tests get the process's own parser back
+        forest.all_readings_parser.cache_clear()  # later tests get the process's own parser back
 
 
 @pytest.mark.parametrize("damage", ["garbage", "flipped byte", "truncated", "empty", "other key"])

@@ -14,7 +14,7 @@ from pipflow.language.earley import ListLexer
 from pipflow.language.lookahead import LookaheadEarley, with_lookahead
 from pipflow.warehouse.language.grammar import GRAMMAR, nullable_optionals
 from pipflow.warehouse.language.lexicon import Lexicon
-from pipflow.warehouse.language.parser import _all_readings_parser, keywords
+from pipflow.warehouse.language.forest import all_readings_parser as _all_readings_parser, keywords
 from pipflow.warehouse.world import load_tasks
 
 ROOT = Path(__file__).resolve().parent.parent

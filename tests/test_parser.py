@@ -267,12 +267,12 @@ def test_misreadings_of_the_issue_are_gone() -> None:
 def test_a_sentence_read_two_ways_that_mean_different_things_is_refused(monkeypatch) -> None:
     """ "from shelf1 to shelf2" parses as one route or as "from" then "to"; both mean one move,
     so the rule is understood. Were the meanings different, nothing would be guessed."""
-    from pipflow.warehouse.language import parser as parser_module
+    from pipflow.warehouse.language import readings as readings_module
 
     command = "robot 3 must not move product1 from shelf1 to shelf2"
     assert got(command)[1] == [{"never": ["robot3"], "product": "product1", "from": "shelf1", "to": "shelf2"}]
     seen = iter(range(1000))
-    monkeypatch.setattr(parser_module, "_meaning", lambda reader, world: str(next(seen)))
+    monkeypatch.setattr(readings_module, "meaning", lambda reader, world: str(next(seen)))
     with pytest.raises(TranslationError, match="can be read in two ways"):
         understand(command, PAPER)
 

@@ -66,7 +66,7 @@ FUNCTION_WORDS = frozenset({
     "a", "an", "the", "of", "to", "from", "in", "on", "at", "for", "with", "by", "about", "off", "out", "up",
     "down", "into", "onto", "and", "so", "as", "if", "because", "since", "cause", "cuz", "coz", "well", "oh",
     "ah", "now", "today", "please", "yes", "yeah", "yep", "got", "get", "getting", "go", "going", "gone",
-    "let", "lets", "think", "know", "see", "sure", "right", "really", "very", "still", "already", "yet",
+    "let", "lets", "think", "know", "see", "sure", "right", "really", "bother", "very", "still", "already", "yet",
     "when", "where", "how", "why", "like", "s", "ll", "ve", "d", "re", "m", "t"})
 #: a word followed by one of these is a verb acting on a thing ("recount them"): an instruction
 OBJECT_PRONOUNS = frozenset({"it", "them", "this", "that", "these", "those", "him", "her", "everything"})
@@ -100,6 +100,40 @@ def trailing_thanks(words: list[str], content: Callable[[str], bool]) -> int:
     if k == 0 or k >= len(words) or any(content(w) for w in words[-k:]):
         return 0
     return k
+
+
+#: words that open an adjunct of purpose, time or reason at the end of a clause ("... for afternoon
+#: pickup", "... before the coach turns up", "... by opening time", "... because we're short"): the
+#: adjunct is set aside when nothing after its opening word carries content (:func:`trailing_adjunct`).
+#: "before", "after", "until", "till" and "while" are operative elsewhere (they order things); here
+#: only as the opening word, and never before a pronoun or "then" ("before that" orders the
+#: command's own parts). Not "but", "except", "so", "and", "or", "then": they join or restrict.
+ADJUNCTS = frozenset({"for", "before", "after", "by", "until", "till", "once", "when", "while", "because",
+                      "since", "as", "cause", "cos", "coz", "cuz"})
+#: words after an adjunct's opening word that point back at the order itself ("for this", "before that")
+_BACK = OBJECT_PRONOUNS | {"then", "now", "which"}
+
+
+def trailing_adjunct(words: list[str], content: Callable[[str], bool]) -> int:
+    """How many words at the end of a clause that carries content are an adjunct of purpose, time
+    or reason that carries none ("... on the ramp for afternoon pickup"): it opens with a word of
+    :data:`ADJUNCTS`, and no word after it is operative (:func:`near_operative`, opening words of
+    further adjuncts aside), a number, a name of the world or a content word of the domain
+    (``content``); 0 when there is none. The earliest such opening word is taken (the adjunct may
+    hold several: "for pickup before lunch"); the words before it must still carry content."""
+    for j in range(1, len(words) - 1):
+        if words[j] not in ADJUNCTS or words[j + 1] in _BACK:
+            continue
+        rest = words[j + 1:]
+        if any(content(w) or any(ch.isdigit() for ch in w) or (near_operative(w) and w not in ADJUNCTS)
+               for w in rest):   # "for 2pm collection": a time is a number, never talk
+            continue
+        if any(w in ADJUNCTS and nxt in _BACK for w, nxt in zip(rest, rest[1:] + [""])):
+            continue
+        if not any(content(w) or near_operative(w) for w in words[:j]):
+            return 0   # the clause is talk as a whole, or nothing: judged as a clause
+        return len(words) - j
+    return 0
 
 
 @dataclass(frozen=True)
@@ -136,13 +170,52 @@ def is_pleasantry(words: Iterable[str], names: Callable[[str], bool]) -> bool:
     if not ws or ws[0] not in PLEASANTRIES:
         return False
     rest = ws[2:] if ws[:2] == ["thank", "you"] else ws[1:]
-    if rest and rest[0] not in ("for", "about", "again", "so", "very", "a", "lot", "all", "everyone", "team", "in"):
+    if rest and rest[0] not in ("for", "about", "again", "so", "very", "a", "lot", "all", "everyone", "team", "in",
+                                "to"):   # "sorry to bother you"
         return False
     return not any(near_operative(w) and w not in ADDRESSEES for w in rest) and not any(names(w) for w in rest)
 
 
+#: forms of "be" after a subject ("it is", "they're" split as "they re")
+_BE = frozenset({"is", "are", "am", "was", "were", "s", "re", "m", "be", "been", "being"})
+#: subjects with "be" already in them ("it's" read as "its", "he's", "they're")
+_SUBJECT_BE = frozenset({"its", "hes", "shes", "theyre", "im", "youre", "thats", "theres"})
+
+
+def is_report(words: Iterable[str], names: Callable[[str], bool]) -> bool:
+    """ "it is getting serviced", "its wheel is playing up", "we're re-laying the floor": a subject,
+    a form of "be" and a verb in -ing (within three words), reporting what is going on: the words of
+    the grammar in it describe, they ask for nothing ("serviced", "wheel"). A name of the world, a
+    number (``names``) or an operative word ("it's not coming", "they're only ...") keeps it in."""
+    ws = [w for w in words if w]
+    if len(ws) >= 3 and ws[0] in ("that", "this") and ws[2] in _BE | {"got", "has", "had"} \
+            and not near_operative(ws[1]) and not names(ws[1]):
+        # "..., that order got cut", "..., this lot's ... ": a remark about a thing (a demonstrative,
+        # a noun, then "be" or "got"); "..., that came in today" (a verb after "that") is no remark
+        return not any(near_operative(w) or names(w) for w in ws)
+    if len(ws) < 2 or not (ws[0] in SUBJECTS or ws[0] in _SUBJECT_BE):
+        return False
+    head = ws[:5]
+    has_be = ws[0] in _SUBJECT_BE or any(w in _BE | {"keep", "keeps"} for w in head[1:4])
+    if not has_be or not any(w.endswith("ing") and len(w) > 4 for w in head[1:5]):
+        return False
+    return not any(near_operative(w) or names(w) for w in ws)
+
+
+#: clauses that open a request and say nothing else ("Quick one: ...", "Right then, ...", "Whatever
+#: you do, ..."): whole clauses only, though "one" and "then" are operative elsewhere
+OPENERS = frozenset({("quick", "one"), ("right", "then"), ("ok", "then"), ("okay", "then"), ("right", "so"),
+                     ("whatever", "you", "do"), ("now", "then"), ("so", "then"), ("right", "folks"),
+                     ("quick", "favour"), ("quick", "favor"), ("quick", "job")})
+
+
+def is_opener(words: Iterable[str]) -> bool:
+    """A whole clause that only opens a request ("Quick one", "Right then": :data:`OPENERS`)."""
+    return tuple(w for w in words if w) in OPENERS
+
+
 def content_free(words: Iterable[str], content: Callable[[str], bool],
-                 names: Callable[[str], bool] | None = None) -> bool:
+                 names: Callable[[str], bool] | None = None, reports: bool = False) -> bool:
     """Whether a clause carries nothing an order needs (module doc). ``content(word)`` is the
     domain's test: a name of its world (or close to one), a number, a content word of its lexicon.
     ``names(word)`` (optional; without it apologies and thanks are judged by ``content``): only a
@@ -155,6 +228,8 @@ def content_free(words: Iterable[str], content: Callable[[str], bool],
         return True   # its "all" or "team" is who is greeted, no quantifier or robot group
     if names is not None and is_pleasantry(ws, names):
         return True
+    if reports and names is not None and is_report(ws, names):
+        return True   # "it is getting serviced": a report, whatever grammar words it uses
     if ws[0] in ATTACHING:
         return False  # it modifies the clause before ("..., on the left", "..., and the rest")
     if ws[0] not in SUBJECTS and any(w not in FUNCTION_WORDS and nxt in OBJECT_PRONOUNS

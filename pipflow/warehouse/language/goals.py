@@ -305,12 +305,72 @@ class GoalRules:
 
     g_transfer_except = g_transfer
 
+    def g_transfer_except_count(self, node: Tree) -> None:
+        """ "Bring all X to Q except one on P": every X goes to Q, but P keeps that many of its
+        own (read as P set to N, then the rest of P's X to Q). Refused where P holds fewer than N
+        now (it would be brought there: no "except"), for anything but all of one product, and
+        where P is Q."""
+        parts = self.clause_parts(node)
+        words, nps = parts.words, parts.nps
+        exc = self.sub(node, "except_count")[0]
+        kept = self.place_list(self.sub(exc, "places")[0])
+        nums = [int(t.value) for t in self.toks(exc, "NUM")]
+        n = nums[0] if nums else 1
+        lists = self.sub(node, "places") + [p for loc in parts.locs for p in self.sub(loc, "places")]
+        dst = [self.place_list(p) for p in lists if p not in self.sub(exc, "places")][0]
+        if len(nps) != 1 or "all" not in nps[0]["amount"] or not nps[0]["items"] \
+                or len(nps[0]["items"].get("names") or []) != 1:
+            raise TranslationError(f"{quote(words)}: 'except {n} on ...' needs all of one product "
+                                   f"('every X to Q except one on P')")
+        item = nps[0]["items"]["names"][0]
+        for p in kept:
+            if p in dst:
+                raise TranslationError(f"{quote(words)}: {p} is where they go; nothing is kept there")
+            if _held(self.lex.world, p, item) < n:
+                raise TranslationError(f"{quote(words)}: {p} holds {_held(self.lex.world, p, item)} {item} now, "
+                                       f"fewer than the {n} it should keep; say what to bring there")
+        self.statements.append(self._transfer_statement(nps[0], None, dst, words, kept))
+        for p in kept:
+            self.statements.append({"op": "set", "places": {"names": [p]}, "items": {"names": [item]},
+                                    "amount": {"count": n}, "words": words})
+            self.statements.append({"op": "transfer", "items": {"names": [item]}, "amount": {"rest": True},
+                                    "from": {"names": [p]}, "to": {"names": dst}, "words": words})
+
     def g_remove(self, node: Tree) -> None:
         parts = self.clause_parts(node)
         words, nps, plist = parts.words, parts.nps, parts.plist
         source = self.place_list(plist[0])
         for np in nps:
             self.statements.append(self._transfer_statement(np, source, None, words))
+
+    def g_item_there(self, node: Tree) -> None:
+        """ "Get the soup there down to 2": the place is the one just named (one place only)."""
+        words = self.words(node)
+        if not self.last_places or len(self.last_places) != 1:
+            raise TranslationError(f"{quote(words)}: 'there' is which place? say it")
+        head = self.ihead(self.sub(node, "ihead")[0], words)
+        n = int(self.toks(node, "NUM")[-1].value)
+        self.put(list(self.last_places), "one", [{"items": {"names": [head]}, "amount": {"count": n},
+                                                 "words": words}], words)
+
+    def g_poss_make(self, node: Tree) -> None:
+        """ "Row A's brake pads - make it 2": that place's item, set to the count."""
+        words = self.words(node)
+        place = [str(self.sub(node, "posplace")[0].children[0].value)]
+        head = self.ihead(self.sub(node, "ihead")[0], words)
+        n = int(self.toks(node, "NUM")[-1].value)
+        self.put(place, "one", [{"items": {"names": [head]}, "amount": {"count": n}, "words": words}], words)
+
+    def g_remove_complained(self, node: Tree) -> None:
+        """ "P is overstocked on X, take 2 off": off the place of the complaint just made (in this
+        sentence or the one before); with no complaint, "off" what? refused."""
+        said = (self.observed or self.prior_observed or [None])[-1]
+        words = self.words(node)
+        if said is None:
+            raise TranslationError(f"{quote(words)}: off which place? say it")
+        parts = self.clause_parts(node)
+        for np in parts.nps:
+            self.statements.append(self._transfer_statement(np, list(said[1]), None, words))
 
     def g_mult(self, node: Tree) -> None:
         parts = self.clause_parts(node)
@@ -321,6 +381,39 @@ class GoalRules:
         places = [str(poss[0].children[0].value)] if poss else self.loc(locs[0])[0]
         amount = {"fraction": [1, 2]} if verb == "halve" else {"times": {"double": 2, "triple": 3, "quadruple": 4}[verb]}
         self.put(places, "each", [{"items": {"names": [head]}, "amount": amount, "words": words}], words)
+
+    def g_topic(self, node: Tree) -> None:
+        """ "Back shed. Pull 3 shackles off it.": a place said alone is what "it" and "there" in the
+        next sentence mean; alone in a command it asks for nothing (refused as nothing asked)."""
+        places = self.place_list(self.sub(node, "places")[0])
+        if len(places) != 1:
+            raise TranslationError(f"{quote(self.words(node))}: which place? (a topic is one place)")
+        self.last_places = places
+        self.observed.append((self.words(node), places))
+
+    def g_complaint(self, node: Tree) -> None:
+        """ "P is overstocked on X", "P's getting a bit crowded": no count, so no goal; P (and X)
+        are what the instruction after it means ("take 2 off", "get the soup there down to 2"),
+        as after "P has too many X" (:meth:`put`: the same checks follow)."""
+        places = self.place_list(self.sub(node, "places")[0])
+        heads = self.sub(node, "ihead")
+        if heads:
+            self.last_item = [self.ihead(heads[0], self.words(node))]
+        self.last_places = places
+        self.observed.append((self.words(node), places))
+
+    def g_mult_pronoun(self, node: Tree) -> None:
+        """ "P has too many X. Halve them.": "them" is the X of the complaint just made (the only
+        place a bare pronoun may take its place from: after a move it could be either end)."""
+        words = self.words(node)
+        said = (self.observed or self.prior_observed or [None])[-1]
+        if said is None or not self.last_item or len(self.last_item) != 1:
+            raise TranslationError(f"{quote(words)}: which product on which place? say it "
+                                   f"(e.g. 'halve P's X')")
+        verb = self.first_word(node)
+        amount = {"fraction": [1, 2]} if verb == "halve" else {"times": {"double": 2, "triple": 3, "quadruple": 4}[verb]}
+        self.put(list(said[1]), "each", [{"items": {"names": list(self.last_item)}, "amount": amount,
+                                          "words": words}], words)
 
     def g_keep_part(self, node: Tree) -> None:
         parts = self.clause_parts(node)

@@ -20,6 +20,7 @@ import re
 GRAMMAR = r"""
 start: sentence
 sentence: lead? part aside? (sep part aside?)* sep? aside?
+        | places                                   -> topic_sentence
 lead: ("but" | "and" | "then" | "also" | "so" | "however" | "now" | "oh" | "well" | "next"
       | "finally" | "first" | "afterwards" | "after" "that" | "additionally" | "plus"
       | ("can" | "could" | "would") ("you" | "we") | "you" ("should" | "must" | "can") | "just" | "let" "us"
@@ -40,7 +41,7 @@ aside: "instead" "of" NUM | "rather" "than" NUM
      | "by" ("end" | "tonight" | "tomorrow" | "noon" | "morning" | "evening" | "shift" "end")
      | ("at" | "in") "end" | "eventually" | "afterwards" | "later" | "when" "you" "can" | "when" "possible"
      | "i" ("think" | "guess" | "suppose" | "believe") | "i" "have" "a" "plan" | "ok" | "okay"
-     | "thanks" | "thank" "you" | "if" "possible" | "as" "well"
+     | "thanks" | "thank" "you" | "if" "possible" | "as" "well" | "too"
      | "as" "soon" "as" ("possible" | "you" "can") | "urgently" | "if" "you" "can"
      | "when" "you" ("get" "a" "chance" | "have" "time" | "get" "time")
      | ("this" | "before") ("morning" | "afternoon" | "evening" | "shift" "ends"?) | "before" ("lunch" | "noon")
@@ -86,21 +87,24 @@ np: NUM of? ihead                          -> np_count
   | lower NUM of? ihead ","? ("but" | "and") upper NUM    -> np_between
   | ("somewhere" | "anywhere")? "from" NUM "to" NUM of? ihead -> np_between
   | NUM more "of" ("each" | "every") ITEMWORD? -> np_each_more
+  | ("one" more | NUM more) "of" "everything" -> np_each_more
   | NUM "to" NUM of? ihead                 -> np_between
   | vague NUM of? ihead                    -> np_vague
   | vagueq of? ihead                       -> np_vague
-  | NUM "of" ("each" | "every") ITEMWORD?  -> np_each
+  | "too" ("many" | "much") of? ihead       -> np_too_many
+  | "just"? NUM "of" ("each" | "every") ITEMWORD? -> np_each
+  | NUM "of" "everything"                  -> np_each
   | "everything"                           -> np_everything
   | ("everything" | "all" ITEMWORD | "every" ITEMWORD | "all" "goods") except_items -> np_everything
-  | "as" "many" ihead "as" PLACE ("has" | "holds" | "have" | "contains") now? -> np_as_many
-  | "as" "many" ihead "as" PLACE                    -> np_as_many
+  | "as" "many" of? ihead "as" PLACE ("has" | "holds" | "have" | "contains") now? -> np_as_many
+  | "as" "many" of? ihead "as" PLACE                    -> np_as_many
   | "as" "many" ihead "as" ihead (("it" | "they") ("has" | "have" | "holds" | "hold" | "does" | "do"))? now? -> np_as_many_item
   | "same" ("number" | "amount" | "count" | "quantity") "of" ihead "as" ihead -> np_as_many_item
   | "as" "many" ihead? "as" PLACE (lsep PLACE)+ ("has" | "have" | "hold" | "holds" | "contain")? now? together -> np_as_many_total
   | "same" ("number" | "amount" | "count" | "quantity") "of" ihead "as" PLACE (("has" | "holds" | "have" | "contains" | "does") now?)? -> np_as_many
   | ("another" | "one" "more")                      -> np_another
   | "as" "many" "as" PLACE ("has" | "holds" | "have" | "contains") now? -> np_as_many_elided
-  | "rest" rest_of?                        -> np_rest
+  | ("rest" | "others" | "extras" | "remainder") rest_of? -> np_rest
   | "twice" "as" "many" ihead              -> np_twice
   | "twice" "as" "many" ihead "as" ("it" | "they") ("has" | "have" | "holds" | "hold") now? -> np_twice
   | NUM "times" "as" "many" ihead ("as" ("it" | "they") ("has" | "have" | "holds" | "hold") now?)? -> np_ntimes
@@ -110,14 +114,16 @@ np: NUM of? ihead                          -> np_count
   | ("double" | "triple" | "quadruple") ihead -> np_times
   | "half" of? its? ihead                  -> np_half
   | NUM                                    -> np_bare
+  | upper NUM                              -> np_atmost_bare
+  | lower NUM                              -> np_atleast_bare
   | NUM "of" ("them" | "those" | "these")  -> np_bare
 
-rest_of: "of" (ihead | "them" | "it" | its ihead)
+rest_of: "of" (ihead | "them" | "it" | its ihead | posplace ihead | ihead "there")
 bare: ihead (lsep ihead)*
 // "there shouldn't be any X left on P": after a negation "any X" is none of it
 any_items: "any" any_none ((lsep | "or") "any"? any_none)*  -> items
 any_none: ihead                                -> np_none
-inum: ihead ":"? NUM
+inum: ihead ":"? "just"? NUM left?
 except_items: ("except" "for"? | "but" | "besides" | "other" "than" | "apart" "from" | "excluding") ihead (lsep ihead)*
 
 ihead: ITEM | ITEMWORD
@@ -159,7 +165,7 @@ modal: "should" | "must" | "shall" | "will" | "would" | "ought" "to" | "oughta" 
      | ("needs" | "need" | "has" | "have" | "got") "to" | ("is" | "are" | "be") "supposed" "to"
      | "supposed" "to" | ("is" | "are") "to" | "to" | "can" | "could" | "may" | "might"
 be: "be" | "is" | "are" | "become" | "becomes" | "end" "up" "with" | "get"
-setv: "has" | "have" | "hold" | "holds" | "store" | "stores" | "stock" | "stocks" | "contain"
+setv: "has" "got" | "have" "got" | "has" | "have" | "hold" | "holds" | "store" | "stores" | "stock" | "stocks" | "contain"
     | "contains" | "get" | "gets" | "keep" | "keeps" | "carry" | "carries" | "house" | "houses"
     | "need" | "needs" | "receive" | "receives" | "end" "up" "with" | "be" "stocked" "with"
     | "ends" "up" "with" | "ends" "with" | "end" "up" "holding" | "ends" "up" "holding"
@@ -200,10 +206,15 @@ goal: there_be items loc                                  -> g_set
     | "leave" places "with" items                          -> g_place_set
     | there_be items left loc                             -> g_set
     | items modal? stay? loc                              -> g_set
+    | items left loc                                      -> g_set
     | loc ","? there_be? items                            -> g_loc_set
-    | both? places modal? each? setv each? items left?     -> g_place_set
+    | both? places modal? each? setv each? items left? resumptive? -> g_place_set
+    | both? places modal? setv items ("each" | "apiece") left? -> g_place_set
     | both? places modal? "each" be? items                  -> g_place_set
     | places (":" | ",") items                             -> g_place_set
+    | places crowded ("on" ihead)?                         -> g_complaint
+    | places (":" | ",") items ("each" | "apiece") final?  -> g_place_set
+    | places (":" | ",") items final                       -> g_place_set
     | places ":" ("add" | "plus") items                     -> g_add_place
     | places ("needs" | "need" | "wants") ("emptying" | "clearing" "out"? | "emptying" "out") ("into" | "onto" | "to") places -> g_empty_into
     | places ("needs" | "need" | "wants") ("emptying" | "clearing" "out"? | "emptying" "out") -> g_empty
@@ -244,6 +255,9 @@ goal: there_be items loc                                  -> g_set
     | addv items loc                                      -> g_add
     | refill places "with" items                           -> g_add_place
     | addv items adv? from places adv? to places           -> g_transfer
+    | addv items from places ("and" | "," "and"?) to places -> g_transfer
+    | to places from places ","? items                      -> g_transfer
+    | from? places to places (":" | ",") items             -> g_transfer
     | addv items places adv? to places                     -> g_transfer
     | addv items "each" to places                          -> g_add
     | addv items ("with" | "using") robots adv? from places adv? to places -> g_transfer_with
@@ -268,6 +282,8 @@ goal: there_be items loc                                  -> g_set
     | "nothing" modal? ("leaves" | "leave" | go "out" "of" | "be" "taken" "from" | "be" "removed" "from" | "comes" "off" | "come" "off") places -> g_keep
     | ("reduce" | "lower" | "cut" | "drop" | "increase" | "raise" | "bring" | "take" | "get") ihead loc ("down" | "up")? "to" NUM -> g_item_first
     | ("bring" | "take" | "get" | "knock") ihead loc ("down" | "up") "by" NUM -> g_updown
+    | ("bring" | "take" | "get" | "cut" | "lower") ihead "there" ("up" | "down")? "to" NUM -> g_item_there
+    | posplace ihead (":" | ",")? ("make" | "set") ("it" | "them" | "that") ("to" | "at")? NUM -> g_poss_make
     | removev pitems ("out" | "away" | "off")?             -> g_remove_src
     | places modal? setv items "too" "many"                  -> g_too_many
     | places place_appos? modal? "lose" items                -> g_lose
@@ -279,13 +295,18 @@ goal: there_be items loc                                  -> g_set
     | places bneg below NUM of? ihead                        -> g_floor
     | ("make" "sure" | "ensure") that? places bneg below NUM of? ihead -> g_floor
     | ("dont" | "do" "not" | "never") "let" places below NUM of? ihead -> g_floor
-    | places modal? setv items on_top                       -> g_add_place
+    | places modal? setv items ","? on_top                  -> g_add_place
+    | "give" places items ","? on_top                        -> g_add_place
+    | ("can" | "could") places setv items ","? on_top        -> g_add_place
+    | addv items to places ","? on_top                       -> g_add
     | ("dont" | "do" "not" | "never") ("touch" | "move" | "take") ("any" | "anything")? ihead loc? -> g_keep_item
     | ("dont" | "do" "not") emptyv places                    -> g_noop
     | ("dont" | "do" "not" | "never") (putv | addv | "send" | "bring") ("any" | "anything" | "them" | "it" | ihead | "any" "of" ("it" | "them" | "that" | "those"))? loc -> g_no_inflow
     | ("none" "of" ("them" | "it") | "none") modal? go loc  -> g_no_inflow
     | swapv ("what" | "contents" "of" | "loads" "of" | "stock" "of" | "everything" ("on" | "in" | "between" | "of") | "between")? places ("hold" | "have" | "contain" | "holds" | "has")? -> g_swap
+    | swapv ("round" | "around" | "over")? ("what" "is"? ("on" | "in" | "at") | "everything" ("on" | "in" | "between" | "of")) places -> g_swap
     | swapv ihead (lsep ihead)* ("between" | "of" | "on" | "in" | "at") places -> g_swap_items
+    | swapv ("over" | "round" | "around")? ihead (lsep ihead)* ("round" | "around" | "over")? ("between" | "of" | "on" | "in" | "at") places ("round" | "around" | "over")? -> g_swap_items
     | swapv ihead loc "with" (ihead | "ones" | "those")? loc -> g_swap_two
     | places modal? ("swap" | "trade" | "exchange") (("their" | "its") | "what" "they" ("hold" | "have"))? swapwhat -> g_swap_subj
     | swapv ("what" | "contents" "of" | "loads" "of" | "stock" "of")? places ("around" | "round" | "over") -> g_swap
@@ -293,21 +314,26 @@ goal: there_be items loc                                  -> g_set
     | splitv pitems even? among places even?                 -> g_split_src
     | addv items adv? to places from places                -> g_transfer
     | addv items to places ","? except_places              -> g_transfer_except
+    | addv items to places ","? except_count               -> g_transfer_except_count
+    | addv items except_count to places                    -> g_transfer_except_count
+    | putv items loc ","? except_count                     -> g_transfer_except_count
     | items modal? go to places ","? except_places         -> g_transfer_except
     | items modal? go to places                            -> g_add
     | items to places                                      -> g_add
+    | ("can" | "could" | "would") items go to places       -> g_add
     | addv items except_places to places                   -> g_transfer_except
     | items ("on" | "in" | "at" | "from") places modal? go to places -> g_transfer
     | items from places modal? go? to places                -> g_transfer
     | items modal? go from places to places                 -> g_transfer
     | bare src modal? go to places                          -> g_transfer_src
     | removev items from places                            -> g_remove
+    | removev items ("off" | "out")                        -> g_remove_complained
     | removev "everything" from places                      -> g_empty
     | mult "up"? ihead loc                                 -> g_mult
     | (putv | addv) ("them" | "it" | "those" | "these" | "all" "of" "them") adv? loc -> g_pronoun_dest
     | ("clear" | "empty" | "clean") places ("out" | "off")  -> g_empty
-    | places ("shouldnt" | "mustnt" | "cant" | "cannot" | "wont" | modal ("not" | "never")) setv ("more" "than" | "over" | "above") NUM of? ihead -> g_ceiling
-    | places ("shouldnt" | "mustnt" | "cant" | "cannot" | "wont" | modal ("not" | "never")) setv ("fewer" "than" | "less" "than" | "under" | "below") NUM of? ihead -> g_floor
+    | places ("shouldnt" | "mustnt" | "cant" | "cannot" | "wont" | modal ("not" | "never")) setv ("more" "than" | "over" | "above") NUM of? ihead resumptive? -> g_ceiling
+    | places ("shouldnt" | "mustnt" | "cant" | "cannot" | "wont" | modal ("not" | "never")) setv ("fewer" "than" | "less" "than" | "under" | "below") NUM of? ihead resumptive? -> g_floor
     | places modal? "keep" "only"? items                     -> g_keep_part
     | places modal? ("keep" | "retain") its NUM? ihead (lsep its? NUM? ihead)* -> g_keep_its
     | emptyv places                                        -> g_empty
@@ -321,6 +347,7 @@ goal: there_be items loc                                  -> g_set
     | places modal? be "full" "of" only? ihead only?         -> g_fill
     | places modal? "be" "filled" "up"? "with" only? ihead only? -> g_fill
     | "fill" places "up"? "with" only? ihead only?           -> g_fill
+    | ("fill" "up"? | "top" "up" | "pack") "rest" "of" places "up"? "with" only? ihead only? -> g_fill
     | "fill" places ("up" | "to" ("top" | "capacity" | "brim")) "with" only? ihead only? -> g_fill
     | "fill" places "up"? "with" "nothing" "but" ihead       -> g_fill
     | modal? be "full" "of" only? ihead                      -> g_fill_elided
@@ -343,6 +370,7 @@ goal: there_be items loc                                  -> g_set
     | ("top" ("up" | "off") | "fill" "up") places "with" only? ihead only? -> g_fill
     | (putv | addv) items loc on_top                         -> g_add
     | mult "up"? posplace ihead                              -> g_mult
+    | mult ("them" | "it" | "those")                        -> g_mult_pronoun
     | places ("is" | "are") ("light" | "low" | "short" | "running" "low") "on" ihead ","? ("add" | "bring" | "send") NUM more? -> g_light_add
     | ("pack" | "load" | "stock" | "fill") places "up"? "full" "of" only? ihead only? -> g_fill
     | ("cap" | "limit") places ("at" | "to") NUM of? ihead    -> g_ceiling
@@ -358,7 +386,7 @@ goal: there_be items loc                                  -> g_set
     | swapv ("what" | "contents" "of")? places ("hold" | "have" | "contain" | "holds" | "has")? -> g_swap
     | swapv ihead (lsep ihead)* ("between" | "of" | "on") places -> g_swap_items
     | swapv posplace ihead "with" (posplace | places)       -> g_swap_poss
-    | swapv ("everything" | "what" "is" | "contents" | "stock" | "what" "sits") ("on" | "in" | "at" | "of") places "with" ("everything" | "what" "is" | "contents" | "stock" | "what" "sits" | "that" | "those")? ("on" | "in" | "at" | "of") places -> g_swap
+    | swapv ("everything" | "what" "is" | "contents" | "stock" | "what" "sits") ("on" | "in" | "at" | "of") places "with" ("everything" | "what" "is" | "contents" | "stock" | "what" "sits" | "that" | "those")? ("on" | "in" | "at" | "of")? places -> g_swap
     | swapv posplace "and" posplace ihead                  -> g_swap_poss
     | splitv items? even? among places even?                -> g_split
     | splitv bare even? among places even?                  -> g_split
@@ -370,7 +398,7 @@ bneg: modal? ("not" | "never") | "shouldnt" | "mustnt" | "cant" | "cannot" | "do
 above: ("go" | "goes" | "get" | "gets" | "rise" | "rises" | "climb" | "climbs") ("above" | "over" | "past" | "beyond")
      | "exceed" | "exceeds"
 below: ("go" | "goes" | "get" | "gets" | "drop" | "drops" | "fall" | "falls" | "dip" | "dips" | "sink" | "sinks") ("below" | "under" | "beneath")
-on_top: ("on" "top" "of" | "in" "addition" "to" | "besides" | "over" "and" "above") "what" (("it" | "they") ("has" | "have" | "holds" | "hold") now? | "is" "already"? "there")
+on_top: ("on" "top" "of" | "in" "addition" "to" | "besides" | "over" "and" "above") "what" (("it" | "they") ("has" | "have" | "holds" | "hold" | "is" "got" | "has" "got" | "have" "got") now? | ("is" | "s") "already"? "there")
 adv: "over" | "back" | "across" | "along" | "out"
 src: ("in" | "on" | "at" | "from" | "off" | "out" "of" | "of") places
 pitems: frac of? posplace ihead appos?                     -> pi_frac
@@ -401,6 +429,18 @@ as_is: "where" ("it" | "they") ("is" | "are") | "as" ("it" | "they") ("is" | "ar
 
 except_places: ("except" | "but" "not" | "apart" "from" | "other" "than" | "excluding" | "not") except_what? ("up" | "down" | "over" | "out")? ("on" | "in" | "at" | "from") places
              | ("except" | "but" "not" | "excluding" | "not") from places
+// "P is overstocked on X", "P's getting a bit crowded", "P is looking bare": a complaint, no count
+crowded: crowdbe crowdhow? crowdstate
+crowdbe: "is" | "s" | "looks" | "is" "looking" | "s" "looking" | "is" "getting" | "s" "getting"
+crowdhow: "too" | "a" "bit" | "very" | "rather" | "quite" | "really" | "way"
+crowdstate: "overstocked" | "full" | "crowded" | "cramped" | "packed" | "rammed" | "overloaded" | "bare"
+          | "understocked" | "overflowing"
+anywhere: ("wherever" | "anywhere") ("you" "like" | "it" "fits" | "they" "fit")?
+// ", final count": the count is what the place ends with (no addition)
+final: ","? "final" ("count" | "total" | "figure" | "number")
+// "P should have 3 X on it": the pronoun is P itself
+resumptive: ("on" | "in" | "at" | "inside") ("it" | "them") left?
+except_count: ("except" "for"? | "but" | "apart" "from" | "other" "than" | "excluding" | "leaving") ("one" | NUM) ("of" "them")? ("on" | "in" | "at") places
 except_what: "ones" | "those" | "them" | "what" "is" | "any" | "what" "sits" | "what" "lies" | "ones" "that" ("are" | "sit" | "lie")
 
 // ---------------------------------------------------------------- ellipsis tails
@@ -410,7 +450,9 @@ tail: places ("too" | "as" "well" | "also")                 -> t_too
     | items from places                                  -> t_from
     | "so" ("does" | "do" | "should" | "must" | "will") places -> t_too
     | places "with"? items                               -> t_gap
-    | "rest" rest_of? to places                           -> t_rest
+    | ("rest" | "others" | "extras" | "remainder") rest_of? to places -> t_rest
+    | "same" ("off" | "from" | "out" "of" | "to" | "on" | "in" | "at" | "for" | "into" | "onto") places -> t_same
+    | ("they" | "it" | "those" | "these") ("can" | "may" | "could")? ("go" | "goes") anywhere -> t_anywhere
     | "not" ihead (lsep ihead)*                           -> t_not_items
     | ("also" | "same" "for" | "same" "thing" "for") places   -> t_too
     | NUM fewer loc                                      -> t_elided_fewer
@@ -499,6 +541,7 @@ rwhere: from places                                    -> rw_from
       | "ever"                                             -> rw_all
       | "for" ("anything" | "everything" | "any" ("job" | "task" | "work") | "this" ("job" | "task")) -> rw_all
       | "for" "whole" ("job" | "task" | "command" | "order" | "lot" | "thing") -> rw_all
+      | "on" ("this" | "whole")? ("job" | "task")                          -> rw_all
 rscope: robj? rwhere*
 
 rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
@@ -528,7 +571,7 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | ("keep" | "leave") robots "out" rscope                  -> rule_never
     | "without" ("using" | "help" "of" | "help" "from")? robots rscope -> rule_never
     | "not" ("with" | "by" | "using") robots rscope          -> rule_never
-    | "only" robots rmodal? useact? rscope                   -> rule_only
+    | ("only" | "just") robots rmodal? useact? rscope        -> rule_only
     | "only" robots rmodal? "be" use ("to" act?)? rscope      -> rule_only
     | robots "only" rmodal? useact? rscope                   -> rule_only
     | robots rmodal? "only" useact rscope                    -> rule_only
@@ -550,6 +593,7 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | ("except" | "apart" "from" | "other" "than" | "besides") robots ","? ("all" | "every")? ROBOTWORD? ("is" | "are" | modal? ("stay" | "be" | "remain")) state -> rule_only
     | ("except" | "apart" "from" | "other" "than" | "besides") robots ","? ("all" | "every" | "no")? ROBOTWORD? rmodal? rneg useact? rscope -> rule_only
     | robots oblig? "do" ("it" | "that" | "this" | "job" | "task" | "work") -> rule_do_it
+    | ("let" | "have" | "get")? robots oblig? "do" ("all" "of" ("it" | "that" | "this" | "them") | "everything" | "whole" ("job" | "lot" | "thing")) -> rule_only
     | "only" robots (rmodal | oblig)? "do" ("it" | "that" | "this" | "job" | "task" | "work") -> rule_do_it
     | robots ("is" | "are") "only" ("ones" | NUM | ROBOTWORD) ("allowed" "to" | "permitted" "to" | "that" ("may" | "can") | "who" ("may" | "can")) useact? rscope -> rule_only
     | robots ("can" | "may" | "could" | "might") act rscope  -> rule_permission
@@ -583,7 +627,12 @@ def nullable_optionals(grammar: str) -> str:
     def opt(m: re.Match) -> str:
         sym = m.group(1)
         prefix = "kw_" if sym.startswith('"') else ""
-        key = re.sub(r"[^a-z0-9_]", "_", sym.strip('"').lower())
+        said = sym.strip('"').lower()
+        key = re.sub(r"[^a-z0-9_]", "_", said)
+        if key != said:
+            # a mark ("," or ":") has no letters to name it by: the two were one rule, so that
+            # every ":"? of the grammar read as ","? (the name says the literal, in hex)
+            key += "_" + said.encode().hex()
         name = f"_opt_{prefix}{key}"
         made[name] = sym
         return name

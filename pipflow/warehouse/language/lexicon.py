@@ -15,7 +15,7 @@ from dataclasses import dataclass, replace
 from lark import Token
 
 from pipflow.errors import InputError, Refusal, TranslationError
-from pipflow.language.asides import FUNCTION_WORDS, Clause, clauses, content_free, trailing_thanks
+from pipflow.language.asides import is_opener, trailing_adjunct, FUNCTION_WORDS, Clause, clauses, content_free, trailing_thanks
 from pipflow.language.characters import refuse_unread
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS
 from pipflow.language.spelling import distance, normalize, plural_forms, slip, tolerance
@@ -157,10 +157,10 @@ CORRECTIONS = (("no",), ("sorry",), ("wait",), ("i", "mean"), ("make", "that"), 
 VERB_LEXICON: dict[str, tuple[str, str]] = {
     # placing
     "stow": ("place", "put"), "stash": ("place", "put"), "slot": ("place", "put"), "set down": ("place", "put"),
-    "lay": ("place", "put"), "plonk": ("place", "put"), "shelve": ("place", "put"),
+    "lay": ("place", "put"), "plonk": ("place", "put"), "shelve": ("place", "put"), "bung": ("place", "put"),
     # moving (and the grammar's own: move, bring, send, ship, transfer, carry, haul, shift, cart,
     # ferry, tow, lug, shuttle, wheel, relocate, deliver, stage, restage, fetch, dispatch, bring over, move over)
-    "shove": ("move", "move"), "drag": ("move", "move"), "move across": ("move", "move"),
+    "shove": ("move", "move"), "chuck": ("move", "toss"), "sling": ("move", "toss"), "drag": ("move", "move"), "move across": ("move", "move"),
     "send across": ("move", "send"), "carry over": ("move", "carry"), "bring across": ("move", "bring"),
     # removing (and the grammar's own: remove, unload, withdraw, take away, get rid of, dispose of, throw out)
     "offload": ("remove", "unload"), "off-load": ("remove", "unload"), "pull off": ("remove", "take"),
@@ -174,6 +174,82 @@ VERB_LEXICON: dict[str, tuple[str, str]] = {
     # emptying (and the grammar's own: empty, clear, clear out, clean out)
     "clear off": ("empty", "clear"), "strip": ("empty", "empty"), "vacate": ("empty", "empty"),
 }
+
+
+#: phrases of quantity people say for the grammar's own words (issue 23, r6w): "the whole lot" is
+#: everything; "the whole of P" is everything of P; what follows "everything" to say it is the
+#: stock ("everything we stock", "everything there is") says nothing more
+QUANTITY_PHRASES: dict[str, tuple[str, ...]] = {
+    "whole lot": ("everything",), "whole of": ("everything", "of"),
+    "everything we stock": ("everything",), "everything we have": ("everything",),
+    "everything we carry": ("everything",), "everything we hold": ("everything",),
+    "everything we ve got": ("everything",), "everything we got": ("everything",),
+    "everything there is": ("everything",), "everything in stock": ("everything",),
+    # "they can go wherever there's room": anywhere ("room" is no word of the grammar: it is a
+    # word of place names)
+    "wherever there is room": ("wherever",), "wherever there s room": ("wherever",),
+    "wherever theres room": ("wherever",), "wherever there is space": ("wherever",),
+    "anywhere there is room": ("anywhere",), "anywhere there s room": ("anywhere",),
+}
+
+
+#: ways of asking that say nothing the order needs, at the start of a sentence: left out, as
+#: "please" is ("Would it be possible to have R bring ...", "Is it possible to move ...")
+REQUEST_FRAMES = (("would", "it", "be", "possible", "to"), ("is", "it", "possible", "to"),
+                  ("would", "you", "mind"), ("do", "you", "mind"), ("any", "chance", "you", "could"),
+                  ("i", "was", "wondering", "if", "you", "could"), ("would", "it", "be", "ok", "to"))
+
+
+def without_request_frames(toks: list[Tok]) -> list[Tok]:
+    """The tokens without a frame of :data:`REQUEST_FRAMES` that opens a sentence."""
+    out: list[Tok] = []
+    k = 0
+    while k < len(toks):
+        start = k == 0 or (toks[k - 1].kind == "punct" and toks[k - 1].value in (".", ";", "!", "?"))
+        hit = next((f for f in REQUEST_FRAMES if start and len(toks) >= k + len(f) and all(
+            x.kind == "word" and x.value == w for x, w in zip(toks[k:k + len(f)], f))), None)
+        if hit:
+            k += len(hit)
+            continue
+        out.append(toks[k])
+        k += 1
+    return out
+
+
+def quantity_phrases(toks: list[Tok], keywords: dict[str, str]) -> list[Tok]:
+    """The tokens with each phrase of :data:`QUANTITY_PHRASES` read as its grammar words (longest
+    first; the words as written stay the first token's text)."""
+    phrases = sorted(((tuple(k.split()), v) for k, v in QUANTITY_PHRASES.items() if all(w in keywords for w in v)),
+                     key=lambda x: -len(x[0]))
+    out: list[Tok] = []
+    k = 0
+    while k < len(toks):
+        for words, said in phrases:
+            got = toks[k:k + len(words)]
+            # a word of the phrase may have been read as a word of a name ("room" of cold_room in
+            # "wherever there's room"): the phrase, said as a whole, is the idiom
+            if len(got) == len(words) and all((x.kind == "word" and x.value == w) or (
+                    j > 0 and x.kind == "name" and x.text.lower() == w) for j, (x, w) in enumerate(zip(got, words))):
+                text = " ".join(x.text for x in got)
+                out += [Tok("word", text if j == 0 else "", w) for j, w in enumerate(said)]
+                k += len(words)
+                break
+        else:
+            out.append(toks[k])
+            k += 1
+    return out
+
+
+#: whom a request is put to, after "can / could / would / will": "can somebody shift ..." is "can you
+#: shift ..." (a request to whoever does it, never a robot's name)
+ANYONE = {"somebody", "someone", "anybody", "anyone"}
+_ASKING = {"can", "could", "would", "will"}
+
+
+def addressed_anyone(toks: list[Tok]) -> list[Tok]:
+    """The tokens with "somebody" (:data:`ANYONE`) after a modal of asking read as "you"."""
+    return [Tok("word", t.text, "you") if t.kind == "word" and t.value in ANYONE and k > 0
+            and toks[k - 1].kind == "word" and toks[k - 1].value in _ASKING else t for k, t in enumerate(toks)]
 
 
 def lexicon_verbs(toks: list[Tok], keywords: dict[str, str]) -> list[Tok]:
@@ -299,22 +375,32 @@ def corrected(toks: list[Tok]) -> list[Tok]:
     i = 0
     while i < len(toks):
         t = toks[i]
-        if t.kind == "num" and i + 1 < len(toks) and toks[i + 1].kind == "punct" and toks[i + 1].value == ",":
+        # set off by commas, or by dashes (read as ":"): "Take two - sorry, three - foam swords"
+        if t.kind == "num" and i + 1 < len(toks) and toks[i + 1].kind == "punct" and toks[i + 1].value in (",", ":"):
+            opened = toks[i + 1].value
             for words in CORRECTIONS:
                 j = i + 2
                 if [str(x.value) for x in toks[j:j + len(words)] if x.kind == "word"] != list(words):
                     continue
                 j += len(words)
-                if j < len(toks) and toks[j].kind == "punct" and toks[j].value == ",":
+                if j < len(toks) and toks[j].kind == "punct" and toks[j].value in (",", opened):
                     j += 1
                 if j < len(toks) and toks[j].kind == "num":
-                    text = " ".join(x.text for x in toks[i:j + 1])
+                    end = j + 1 if (opened == ":" and j + 1 < len(toks) and toks[j + 1].kind == "punct"
+                                    and toks[j + 1].value == ":") else j   # the closing dash goes too
+                    text = " ".join(x.text for x in toks[i:end + 1])
                     t = Tok("num", text, toks[j].value)
-                    i = j
+                    i = end
                     break
         out.append(t)
         i += 1
     return out
+
+
+#: words of time the grammar reads only in its asides ("by tonight", "before lunch"): inside an
+#: adjunct ("... for afternoon pickup", "... by opening time") they say when, nothing the order needs
+TIMES_OF_DAY = frozenset({"morning", "afternoon", "evening", "tonight", "tomorrow", "noon", "lunch", "time",
+                          "later", "today", "oclock", "pm", "am", "end", "day", "week", "weekend", "night"})
 
 
 class Lexicon:
@@ -447,17 +533,37 @@ class Lexicon:
         aside: list[str] = []
         parts = clauses(words, marks)
         free = [c for c in parts if content_free(c.words, lambda w: w == "\0" or self.content(w),
-                                                 lambda w: w == "\0" or self.names_world(w))]
+                                                 lambda w: w == "\0" or self.names_world(w), reports=True)]
         thanks = trailing_thanks(list(parts[-1].words), self.content) if parts and parts[-1] not in free else 0
         if thanks:   # "... to the dray bay ta": the thanks closing the last clause, without a comma
             end = parts[-1].end
             free.append(Clause(end - thanks, end, parts[-1].words[-thanks:]))
+        inner: set[int] = set()   # the starts of parts of a clause: no clause mark of their own
+        for c in parts:
+            # "... on the ramp for afternoon pickup": an adjunct of purpose, time or reason that
+            # carries nothing, at the end of a clause that does (asides.trailing_adjunct)
+            if c in free:
+                continue
+            clause = list(c.words[:len(c.words) - thanks] if c is parts[-1] else c.words)
+            n = trailing_adjunct(clause, lambda w: w == "\0" or (w not in TIMES_OF_DAY and self.content(w)))
+            if n:
+                end = c.start + len(clause)
+                free.append(Clause(end - n, end, tuple(clause[-n:])))
+                inner.add(end - n)
+            # "Quick one: ...", "Quick one before the brewers get in: ...": an opener (with its
+            # adjunct), judged on the words as written (its "one" is read as a count)
+            said = [re.sub(r"[^a-z0-9]", "", x.text.lower()) for x in cur[c.start:c.start + len(clause) - n]]
+            if is_opener(said):
+                free[:] = [f for f in free if not (c.start <= f.start < c.end)] + [c]
+                inner.discard(c.start + len(clause) - n)
         if not free:
             return cur, []
         drop = {k for c in free for k in range(c.start, c.end)}
-        for c in free:
+        for c in sorted(free, key=lambda c: c.start):
             aside.append(" ".join(t.text for t in cur[c.start:c.end]))
             # the clause mark that set it off goes with it
+            if c.start in inner:
+                continue
             if c.end < len(cur) and cur[c.end].kind == "punct":
                 drop.add(c.end)
             elif c.start > 0 and cur[c.start - 1].kind == "punct":
@@ -479,7 +585,8 @@ class Lexicon:
                 if typo is not None:
                     t = Tok("word", t.text, typo)
             fixed.append(t)
-        toks = lexicon_verbs(read_counts(_split_hyphens(fixed, self.keywords)), self.keywords)
+        toks = lexicon_verbs(quantity_phrases(addressed_anyone(without_request_frames(
+            read_counts(_split_hyphens(fixed, self.keywords)))), self.keywords), self.keywords)
         toks = corrected_later(without_particles(corrected(toks)))
         out: list[Lexed] = []
         cur: list[Tok] = []
@@ -520,6 +627,12 @@ class Lexicon:
                     term = ("RKIND", stem)
             if term[0] == "POSS" and tokens and tokens[-1].type == "ROBOT" and "is" in self.keywords:
                 term = (self.keywords["is"], "is")  # "Jumbo's the only one ...": a robot's "'s" is "is"
+            elif (term[0] == "POSS" and tokens and tokens[-1].type == "PLACE" and k + 1 < len(toks)
+                  and toks[k + 1].kind == "word" and toks[k + 1].value in ("got", "getting", "looking")):
+                # "Cellar B's got ...": a place's "'s got" is "has got"; "P's getting crowded": "is"
+                said = "has" if toks[k + 1].value == "got" else "is"
+                if said in self.keywords:
+                    term = (self.keywords[said], said)
             tokens.append(Token(term[0], term[1], start_pos=len(tokens)))
             source.append(t)
         return Lexed(tokens, source, frozenset(exact))

@@ -160,6 +160,50 @@ def _starts(names: list["_Name"], by_name: dict[str, "_Name"], alone: Callable[[
             if len(owners) == 1 and alone(form) and form not in words_of_names}
 
 
+def _word_parts(names: list["_Name"], by_name: dict[str, "_Name"], alone: Callable[[str], bool]) -> tuple[
+        dict[str, set[str]], dict[str, "_Name"], dict[str, list[str]], dict[str, list[str]]]:
+    """The words of the world's multi-word names, read alone: (every name each word belongs to,
+    the words that name one thing, the words several names share, a product's modifiers that are
+    only offered). See :class:`NameIndex`."""
+    having: dict[str, set[str]] = {}   # every name with the word, read alone or not
+    readable: set[tuple[str, str]] = set()
+    for n in names:
+        words = [w for w in re.split(r"[-_\s]+", n.name.lower()) if w]
+        # robots go by name, kind or tag: a word of a robot's name ("big" of big_lift) is English
+        if n.kind == "robot" or len([w for w in words if w.isalpha()]) < 2:
+            continue
+        for k, w in enumerate(words):
+            if not (w.isalpha() and len(w) >= 3 and alone(w)):
+                continue
+            # the plural of the last word, and of a product's modifier ("corks" of cork-sack:
+            # the sacks of cork, counted; "tastings" is no noun of tasting_room)
+            plural = k == len(words) - 1 or n.kind == "product"
+            forms = [w] + ([f for f in plural_forms(w)[:1] if alone(f)] if plural else [])
+            # a product goes by its head noun ("formula" of baby-formula), or by what its
+            # container holds ("rice" of rice_sack, "soup" of soup_can); another modifier may
+            # name something else ("oil" is no oil filter, "plants" no plant pots). A place goes
+            # by any word of its own ("inbound" of inbound_dock, "paint" of paint-shop)
+            read = not (n.kind == "product" and k < len(words) - 1 and words[-1] not in CONTAINERS)
+            for form in forms:
+                having.setdefault(form, set()).add(n.name)
+                if read:
+                    readable.add((form, n.name))
+    # a word of exactly one name, read as it where the name may go by that word
+    parts: dict[str, _Name] = {form: by_name[next(iter(owners))] for form, owners in having.items()
+                 if len(owners) == 1 and (form, next(iter(owners))) in readable}
+    # a word two or more names have ("milk" of milk_crate and milk-churn, wherever it stands in
+    # them): it names none of them alone, and a command that uses it is refused naming them
+    # all (never the nearest by typo tolerance, never a guess)
+    shared: dict[str, list[str]] = {form: sorted(owners) for form, owners in having.items()
+                 if len(owners) > 1}
+    # a product's modifier where the head is no container ("oil" of oil-filter): never read as
+    # the product (it may name something else), only offered as a candidate reading's repair
+    loose: dict[str, list[str]] = {form: sorted(owners) for form, owners in having.items()
+                 if len(owners) == 1 and form not in parts
+                 and by_name[next(iter(owners))].kind == "product"}
+    return having, parts, shared, loose
+
+
 class NameIndex:
     """The world's names by kind, and the rules for deciding which one a word means."""
 
@@ -214,32 +258,13 @@ class NameIndex:
         # shorten names. A word two names share ("dock" of two docks), a grammar or filler word
         # ("sack", "can"), a kind word, a head several places share or a number word names nothing
         # alone (a group, a word of the grammar, or refused: never a guess between names).
-        owners: dict[str, set[str]] = {}
         by_name = {n.name: n for n in self.names}
 
         def alone(word: str) -> bool:
             return (word not in STOPWORDS and word not in self.reserved and word not in self.forms
                     and word not in NUMBER_WORDS and word not in self.groups
                     and not any(word in KIND_WORDS[k] or word in self.stems[k] for k in KINDS))
-        for n in self.names:
-            words = [w for w in re.split(r"[-_\s]+", n.name.lower()) if w]
-            # robots go by name, kind or tag: a word of a robot's name ("big" of big_lift) is English
-            if n.kind == "robot" or len([w for w in words if w.isalpha()]) < 2:
-                continue
-            for k, w in enumerate(words):
-                # a product goes by its head noun ("formula" of baby-formula), or by what its
-                # container holds ("rice" of rice_sack, "soup" of soup_can); another modifier names
-                # something else ("oil" is no oil filter, "plants" no plant pots). A place goes by
-                # any word of its own ("inbound" of inbound_dock, "paint" of paint-shop)
-                if n.kind == "product" and k < len(words) - 1 and words[-1] not in CONTAINERS:
-                    continue
-                if w.isalpha() and len(w) >= 3 and alone(w):
-                    # the plural only of the last word ("soups" of soup_can is no noun of it)
-                    forms = [w] + ([f for f in plural_forms(w)[:1] if alone(f)] if k == len(words) - 1 else [])
-                    for form in forms:
-                        owners.setdefault(form, set()).add(n.name)
-        self.parts: dict[str, _Name] = {form: by_name[next(iter(names))] for form, names in owners.items()
-                                        if len(names) == 1}
+        owners, self.parts, self.shared_parts, self.loose_parts = _word_parts(self.names, by_name, alone)
 
         self.prefixes = _starts(self.names, by_name, alone, owners)
 
@@ -399,7 +424,58 @@ class NameIndex:
             hit = self.forms.get(normalize("".join(part)))
             if hit is not None:
                 return Tok("name", " ".join(part), hit.name, hit.kind), i + size
-        return None
+        hit = self._misspelt_apart(raw[i:i + 2])
+        return (Tok("name", " ".join(raw[i:i + 2]), hit.name, hit.kind), i + 2) if hit is not None else None
+
+    def _misspelt_part(self, word: str) -> "_Name | None":
+        """A word of a name read alone (:attr:`parts`) misspelt by one edit, same first letter, five
+        letters or more ("formla" for the formula of baby-formula): read only where exactly one
+        such word is near, it names one thing, and the word is nothing else (no grammar word, no
+        name, no word several names share)."""
+        if (len(word) < 5 or not word.isalpha() or word in self.reserved or word in STOPWORDS
+                or word in self.forms or word in self.shared_parts or word in self.loose_parts
+                or self.lookup(*split_digits(word), word, fuzzy=False) is not None):
+            return None
+        near = {self.parts[p].name: self.parts[p] for p in self.parts
+                if p[:1] == word[:1] and abs(len(p) - len(word)) <= 1 and distance(p, word) <= 1}
+        return next(iter(near.values())) if len(near) == 1 else None
+
+    def _misspelt_apart(self, pair: list[str]) -> "_Name | None":
+        """A two-word name written apart with one of its words misspelt by one edit ("tastng room"
+        for tasting_room), the other right: read only where exactly one name fits, and never from a
+        word of the grammar (``reserved``) or a short word."""
+        if len(pair) < 2 or not all(w.isalpha() for w in pair):
+            return None
+        a, b = (normalize(w) for w in pair)
+        if any(w in self.reserved or w in STOPWORDS or w in NUMBER_WORDS for w in (a, b)):
+            return None
+
+        def near(said: str, word: str) -> bool:
+            return said != word and len(word) >= 4 and said[:1] == word[:1] and distance(said, word) <= 1
+
+        hits = []
+        for n in self.names:
+            words = [w for w in re.split(r"[-_\s]+", n.name.lower()) if w]
+            if n.kind == "robot" or len(words) != 2:
+                continue
+            last = set(variants(b)) & ({words[1]} | set(plural_forms(words[1])))
+            if (a == words[0] and not last and near(b, words[1])) or (last and near(a, words[0])):
+                hits.append(n)
+        return hits[0] if len(hits) == 1 else None
+
+    def _inverted(self, raw: list[str], i: int) -> Tok | None:
+        """A two-word product said "<head> of <modifier>" ("crates of bottles" for bottle_crate,
+        "sacks of malt" for malt-sack): read only where the two words are exactly the words of one
+        product's name (in the singular or a plural)."""
+        if i + 2 >= len(raw) or raw[i + 1].lower() != "of" or not raw[i].isalpha() or not raw[i + 2].isalpha():
+            return None
+        head, mod = set(variants(normalize(raw[i]))), set(variants(normalize(raw[i + 2])))
+        hits = [n for n in self.names if n.kind == "product" and len(ws := [w for w in re.split(r"[-_\s]+", n.name.lower())
+                                                                       if w]) == 2
+                and ws[1] in head and ws[0] in mod]
+        if len(hits) != 1:
+            return None
+        return Tok("name", " ".join(raw[i:i + 3]), hits[0].name, "product")
 
     def at(self, raw: list[str], i: int) -> tuple[Tok, int] | None:
         """The name or kind word starting at ``raw[i]``, longest reading first."""
@@ -409,6 +485,9 @@ class NameIndex:
             if kind is not None and raw[i + 1].lower() in KIND_WORDS[kind] | self.stems[kind] | {
                     w + "s" for w in self.stems[kind]}:
                 return self.ordinal(kind, ORDINALS[low], f"{raw[i]} {raw[i + 1]}"), i + 2
+        inverted = self._inverted(raw, i)
+        if inverted is not None:
+            return inverted, i + 3
         if i + 2 < len(raw) and raw[i + 1].lower() in NUMBER_MARKS and word_value(raw[i + 2].lower()) is not None:
             alpha, digits = split_digits(normalize(low))
             if not digits and self.kind_of_word(alpha):  # "shelf number 3", "robot no 4"
@@ -439,6 +518,14 @@ class NameIndex:
         part = self.parts.get(norm)
         if part is not None:
             return Tok("name", raw[i], part.name, part.kind), i + 1  # "formula" for baby-formula
+        near = self._misspelt_part(norm)
+        if near is not None:
+            return Tok("name", raw[i], near.name, near.kind), i + 1  # "formla" for baby-formula
+        if norm in self.shared_parts or norm in self.loose_parts:
+            # a word of several names ("milk" of milk_crate and milk-churn), or a modifier that may
+            # name something else ("oil" of oil-filter): never read as the nearest name by typo
+            # tolerance ("milks" is no misspelt milk_crate); the command is refused, the names offered
+            return None
         alpha, digits = split_digits(norm)
         found = self.lookup(alpha, digits, raw[i])
         if found is None and norm in self.prefixes:

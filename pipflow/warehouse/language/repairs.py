@@ -11,7 +11,7 @@ from __future__ import annotations
 import re
 
 from pipflow.language.numbers import NUMBER_WORDS
-from pipflow.language.spelling import distance
+from pipflow.language.spelling import distance, normalize
 from pipflow.warehouse.language.lexicon import Lexicon
 
 #: repairs offered for one word, at most (each costs a reading of the command)
@@ -26,6 +26,12 @@ def near_words(word: str, lex: Lexicon) -> list[str]:
     low = word.lower()
     if len(low) < 3 or not low.isalpha():
         return []
+    # a word of a name that the reader does not read alone: shared by several names ("white" of
+    # white_case and white_keg: each offered), or a product's modifier ("oil" of oil-filter)
+    index = lex.index
+    named = index.shared_parts.get(normalize(low)) or index.loose_parts.get(normalize(low))
+    if named:
+        return list(named)[:MAX_REPAIRS]
     vocabulary = ({k for k in lex.keywords if k.isalpha() and len(k) >= 2} | set(NUMBER_WORDS)
                   | {w for w in lex._name_words if w.isalpha()})
     near = []

@@ -135,7 +135,44 @@ class TailRules:
         rest_of = self.sub(node, "rest_of")
         heads = [self.ihead(h, words) for r in rest_of for h in self.sub(r, "ihead")]
         np = {"items": {"names": heads} if heads else None, "amount": {"rest": True}, "words": words}
-        self.statements.append(self._rest(places, np))
+        named = [str(pp.children[0].value) for r in rest_of for pp in self.sub(r, "posplace")]
+        if any(str(tok.value) == "there" for r in rest_of for tok in r.children if hasattr(tok, "type")):
+            named = list(self.last_places or ["(no place said)"])   # "the rest of the rice there"
+        if self.budget and not heads and not named:
+            # "Take the X off P: 2 to A, the rest to B": the rest of the units taken
+            self.statements.append(self._share(self.budget["st"], places, np, "rest"))
+            return
+        self.statements.append(self._rest(places, {**np, "rest_of": named} if named else np))
+
+    def t_same(self, node: Tree) -> None:
+        """ "Knock a brake pad off row A, and the same off row B": the statement before again, at
+        the other place: its source after "off" / "from", its target or its place otherwise
+        (a statement with neither, or one that names several, is refused)."""
+        words = self.words(node)
+        prev = self.statements[-1] if self.statements else None
+        places = self.place_list(self.sub(node, "places")[0])
+        prep = next(str(c.value).lower() for c in node.children if hasattr(c, "type") and str(c.value).lower() != "same")
+        if prev is None:
+            raise TranslationError(f"{quote(words)}: the same as what? nothing said before it")
+        new = dict(prev, words=words)
+        if prev["op"] == "transfer":
+            key = "from" if prep in ("off", "from", "out") else "to"
+            if prev.get(key) is None or "names" not in prev[key]:
+                raise TranslationError(f"{quote(words)}: the same as {prev['words']!r}, but it has no place to change")
+            new[key] = {"names": places}
+        elif "places" in prev and "names" in prev["places"] and prep not in ("off", "from", "out"):
+            new["places"] = {"names": places}
+        else:
+            raise TranslationError(f"{quote(words)}: cannot tell what the same means here")
+        self.statements.append(new)
+
+    def t_anywhere(self, node: Tree) -> None:
+        """ "take 2 X off P: they can go wherever there's room": what a removal means already
+        (no destination); after anything else it is refused (where to, then?)."""
+        words = self.words(node)
+        prev = self.statements[-1] if self.statements else None
+        if prev is None or prev["op"] != "transfer" or prev.get("to") is not None:
+            raise TranslationError(f"{quote(words)}: after what? (only units taken off a place may go anywhere)")
 
     def t_not_items(self, node: Tree) -> None:
         words = self.words(node)

@@ -1,0 +1,179 @@
+"""One reading of a command: its sentences lexed (remembered for the last few commands), each
+read to its one meaning with what the sentences before it said, the content-free parts set
+aside, and the user's picks applied (a reading chosen among candidates, words left out)."""
+from __future__ import annotations
+
+from collections import OrderedDict
+
+from lark.exceptions import UnexpectedInput
+
+from pipflow.errors import TranslationError
+from pipflow.warehouse.language.forest import failure, keywords, said, without
+from pipflow.warehouse.language.goals import Choice, quote
+from pipflow.warehouse.language.lexicon import Lexed, Lexicon
+from pipflow.warehouse.language.readings import one_meaning
+from pipflow.warehouse.language.robots import RobotSelector
+from pipflow.warehouse.language.salvage import salvage as partial
+from pipflow.warehouse.language.sentence import SentenceReader
+
+#: the most terminals one sentence may have: Earley's time grows faster than the length on
+#: ambiguous lists, so a bound per sentence keeps a whole command's parse linear in its length
+MAX_SENTENCE_WORDS = 120
+
+#: candidate readings re-read the same command up to a dozen times (each with another pick), and
+#: tokenising it took a quarter of a refusal's time. Lexed sentences are never changed in place
+#: (a partial parse builds new ones), so one serves every reading.
+_LEXED: "OrderedDict[tuple, tuple[dict, Lexicon, RobotSelector, list[Lexed]]]" = OrderedDict()
+_LEXED_KEPT = 8
+
+
+def names_of(world: dict) -> tuple:
+    """What the lexicon reads of a world: its names, and the robots' kinds, tags and skills."""
+    robots = world.get("robots") or {}
+    return (tuple(world.get("shelves") or ()), tuple(world.get("products") or ()),
+            tuple((str(r), repr(v.get("kind")), repr(v.get("tags")), tuple(v.get("skills") or ()))
+                  if isinstance(v, dict) else (str(r),) for r, v in robots.items()))
+
+
+def lexed_command(command: str, world: dict) -> tuple[Lexicon, RobotSelector, list[Lexed]]:
+    """(lexicon, robot selector, sentences) of ``command`` in ``world``, remembered for the last
+    :data:`_LEXED_KEPT` commands (the same world object only: a changed world is a new object)."""
+    key = (command, id(world), names_of(world))
+    hit = _LEXED.get(key)
+    if hit is not None and hit[0] is world:
+        _LEXED.move_to_end(key)
+        return hit[1], hit[2], hit[3]
+    lex = Lexicon(world, keywords())
+    selector = RobotSelector(world, lex.index)
+    sentences = lex.sentences(command)
+    _LEXED[key] = (world, lex, selector, sentences)
+    if len(_LEXED) > _LEXED_KEPT:
+        _LEXED.popitem(last=False)
+    return lex, selector, sentences
+
+
+def parse_reading(command: str, world: dict, picks: dict | None = None) -> dict:
+    """:func:`parse` of one reading of the line breaks. ``picks``: for a sentence (its index), the
+    reading a user chose among candidates: ``{"reading": k}``, ``{"scope": ...}``, or ``{"drop":
+    [token indexes]}`` (words left out of it); none in an ordinary run."""
+    picks = picks or {}
+    lex, selector, sentences = lexed_command(command, world)
+    statements: list[dict] = []
+    rules: list[dict] = []
+    memory: dict = {}
+    set_aside: list[str] = []
+    unread: list[str] = []  # words a candidate reading left out (salvage mode only)
+    observed: list[tuple[str, list[str]]] = []  # complaints with no count ("P has too many X")
+    for index, lexed in enumerate(sentences):
+        if not lexed.tokens:
+            continue
+        pick = picks.get(index) or {}
+        if pick.get("trimmed") and lexed.trimmed is not None:
+            set_aside += list(lexed.aside)
+            lexed = lexed.trimmed
+        if pick.get("drop"):
+            lexed = without(lexed, pick["drop"])
+            if not lexed.tokens:
+                continue
+        _not_too_long(lexed)
+        salvage = (picks.get("*") or {}).get("salvage")
+        try:
+            if salvage and salvage != "sentence":
+                reader, left_out = partial(lexed.trimmed or lexed, lex, selector, world, memory, pick, salvage)
+                unread += left_out
+                set_aside += list(lexed.aside) if lexed.trimmed is not None else []
+            else:
+                reader = one_meaning(lexed, lex, selector, world, memory, pick)
+        except (UnexpectedInput, TranslationError) as exc:
+            # the sentence as said does not read; without its content-free clauses it may
+            # (asides.py): they are set aside and said aloud, the rest still needs every word
+            error = failure(exc, lexed, lex) if isinstance(exc, UnexpectedInput) else exc
+            error.sentence = index  # type: ignore[attr-defined]  # for the candidates (parse)
+            if salvage and salvage != "sentence":
+                raise error from None  # the partial parse read the sentence without its talk already
+            if lexed.trimmed is None:
+                if salvage == "sentence" and len(sentences) > 1 and not isinstance(error, Choice):
+                    # a candidate reading without this sentence (one that reads, with competing
+                    # meanings, is offered with each of them instead: never dropped)
+                    unread.append(said(lexed))
+                    continue
+                raise error from None
+            try:
+                reader = one_meaning(lexed.trimmed, lex, selector, world, memory, pick)
+            except (UnexpectedInput, TranslationError) as again:
+                # what is left after the talk is set aside is what does not read: say that
+                error = failure(again, lexed.trimmed, lex) if isinstance(again, UnexpectedInput) else again
+                error.sentence, error.trimmed = index, True  # type: ignore[attr-defined]
+                error.args = (f"{error.args[0]} (set aside: {'; '.join(repr(a) for a in lexed.aside)})",)
+                if salvage == "sentence" and len(sentences) > 1 and not isinstance(error, Choice):
+                    unread.append(said(lexed))
+                    continue
+                raise error from None
+            set_aside += list(lexed.aside)
+        for k, new in reader.updates.items():
+            statements[k] = new
+        if observed or reader.observed:
+            _about_the_complaint(reader, observed + reader.observed)
+        statements += reader.statements
+        observed += reader.observed
+        rules += reader.rules
+        memory = {"statements": list(statements), "last": list(reader.statements) or memory.get("last", []),
+                  "item": reader.last_item, "places": reader.last_places,
+                  "received": reader.received | set(memory.get("received") or ()),
+                  "observed": list(reader.observed),
+                  "item_first": bool(lexed.tokens) and lexed.tokens[0].type in ("ITEM", "ITEMWORD")}
+    if not statements and not rules:
+        _nothing_asked(command, lex, observed)
+    statements = emptied_last(statements)
+    set_aside = lex.aside + set_aside
+    return {"command": command, "statements": statements, "rules": rules,
+            **({"set_aside": set_aside} if set_aside else {}), **({"unread": unread} if unread else {})}
+
+def _about_the_complaint(reader: SentenceReader, observed: list[tuple[str, list[str]]]) -> None:
+    """After "P has too many X", a statement that does not name P ("move 2 to Q": from P, or from
+    anywhere?) is refused: the complaint suggests P, the words do not say it, nothing is guessed."""
+    words, places = observed[-1]
+    for st in reader.statements:
+        said = set((st.get("places") or {}).get("names") or []) | set((st.get("from") or {}).get("names") or [])
+        if not said & set(places):
+            raise TranslationError(f"{quote(st['words'])} after {quote(words)}: from there, or from "
+                                   f"anywhere? say where the units come from")
+
+
+def _not_too_long(lexed: Lexed) -> None:
+    """A sentence of more than :data:`MAX_SENTENCE_WORDS` terminals is refused (Earley's time)."""
+    if len(lexed.tokens) > MAX_SENTENCE_WORDS:
+        shown = " ".join(t.text for t in lexed.source[:12])
+        raise TranslationError(f"the sentence '{shown} ...' has {len(lexed.tokens)} words; sentences "
+                               f"are read up to {MAX_SENTENCE_WORDS} words (end it with a full stop "
+                               f"and go on in a new one)")
+
+
+def _nothing_asked(command: str, lex: Lexicon, observed: list[tuple[str, list[str]]]) -> None:
+    """A command with no goal and no rule is refused; a complaint alone says it gives no count."""
+    if observed:
+        raise TranslationError(f"{quote(observed[0][0])} asks for nothing by itself (it says no count): say "
+                               f"how many there should be (e.g. 'no more than 3') or how many to take away")
+    raise TranslationError(f"found no goal and no robot rule in '{command}' "
+                           f"(shelves: {lex.index.candidates('shelf')}; "
+                           f"products: {lex.index.candidates('product')})")
+
+
+def emptied_last(statements: list[dict]) -> list[dict]:
+    """ "Empty aisle 1. Everything on it goes to aisle 2.": what leaves an emptied place, said in a
+    later sentence, goes first and the emptying after it (else the move would find the place
+    already empty and move nothing: a misreading). The sentence reader does the same inside one
+    sentence (:meth:`RuleScope.finish`)."""
+    out = list(statements)
+    for st in [s for s in statements if s["op"] == "empty"]:
+        emptied = set(st["places"].get("names") or [])
+        k = out.index(st)
+        # only a move of all of it somewhere ("everything on it goes to P", "its X to P"): a count
+        # taken after the emptying stays in its place (and is refused: nothing is left to take)
+        later = [t for t in out[k + 1:] if t["op"] == "transfer" and t.get("to")
+                 and {"all", "all_held"} & set(t.get("amount") or {})
+                 and emptied & set((t.get("from") or {}).get("names") or [])]
+        if later:
+            out.remove(st)
+            out.insert(out.index(later[-1]) + 1, st)
+    return out
