@@ -118,7 +118,7 @@ def parse_reading(command: str, world: dict, picks: dict | None = None) -> dict:
         observed += reader.observed
         rules += reader.rules
         memory = {"statements": list(statements), "last": list(reader.statements) or memory.get("last", []),
-                  "item": reader.last_item, "places": reader.last_places,
+                  "item": reader.last_item, "places": reader.last_places, "named": reader.named_places,
                   "received": reader.received | set(memory.get("received") or ()),
                   "observed": list(reader.observed),
                   "item_first": bool(lexed.tokens) and lexed.tokens[0].type in ("ITEM", "ITEMWORD")}

@@ -93,6 +93,21 @@ def one_meaning(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict
                                    f"say it in shorter sentences")
         try:
             reader = read_tree(alt, lexed, lex, selector, memory, picks)
+        except Choice as exc:
+            if exc.key != "place_it":
+                errors.append((parts(alt), exc))
+                continue
+            # a pronoun that could mean several places is a meaning not yet settled, not a reading
+            # that makes no sense: each place it could mean is a reading of its own, so another
+            # reading of the sentence ("out of it": the job) does not win over it unasked
+            for option in exc.options:
+                try:
+                    reader = read_tree(alt, lexed, lex, selector, memory, {**picks, "place_it": option})
+                except PipflowError as again:
+                    errors.append((parts(alt), again))
+                    continue
+                readings.append((parts(alt), reader, meaning(reader, world)))
+            continue
         except PipflowError as exc:
             errors.append((parts(alt), exc))
             continue

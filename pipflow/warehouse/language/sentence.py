@@ -89,6 +89,10 @@ class SentenceReader(GoalRules, TailRules, RuleScope, Interpreter):
         self.job_pronouns: list[dict] = []  # "for this / for that": the job, or the move just said?
         self.last_item: list[str] | None = memory.get("item")
         self.last_places: list[str] | None = memory.get("places")
+        # the places named aloud in this sentence, in order, and those of the sentence before: what
+        # "it" / "there" as a place can mean (see place_list)
+        self.named_places: list[str] = []
+        self.prior_named: list[str] = list(memory.get("named") or [])
         self.distributive = False  # "every bay", "each of A and B": a count applies to each
         self.before_places: list[str] = []  # the places named before the current part
         self.last_add = False  # whether the last counts came with an add verb (for gapping)
@@ -255,7 +259,7 @@ class SentenceReader(GoalRules, TailRules, RuleScope, Interpreter):
                 if not self.last_places:
                     raise TranslationError(f"{quote(self.words(c))}: no place named before it "
                                            f"(candidates: {self.index.candidates('shelf')})")
-                out.extend(self.last_places)
+                out.extend(self._referent(c))
             elif c.data == "place_all":
                 excl: list[str] = []
                 for e in self.sub(c, "except_pl"):
@@ -273,8 +277,28 @@ class SentenceReader(GoalRules, TailRules, RuleScope, Interpreter):
                 out.extend(str(t.value) for t in self.toks(c, "PLACE"))
                 self.distributive = True
         out = list(dict.fromkeys(out))
+        if not any(isinstance(c, Tree) and c.data == "place_it" for c in node.children):
+            self.named_places += [p for p in out if p not in self.named_places]
         self.last_places = out
         return out
+
+    def _referent(self, node: Tree) -> list[str]:
+        """The place(s) "it" / "there" means: those just named, only where nothing else named in
+        this sentence (or, when it names none, the one before) could be meant. After "out of the
+        fish room and into aisle 6", "only wet-rated robots in there" is either: it was read as the
+        last one named (a misreading); now each is offered (``picks["place_it"]``: the user's
+        choice)."""
+        last = list(self.last_places or [])
+        heard = self.named_places or self.prior_named
+        others = [p for p in heard if p not in last]
+        if not others:
+            return last
+        options = ("+".join(last), *others)
+        choice = self.picks.get("place_it")
+        if choice is not None:
+            return choice.split("+")
+        raise Choice("place_it", options, f"{quote(self.words(node))}: which place is meant: "
+                     f"{' or '.join(o.replace('+', ' and ') for o in options)}? say it")
 
     def _plural_group(self, node: Tree) -> bool:
         """Whether a place word is the plural of a head noun the world's place names share
