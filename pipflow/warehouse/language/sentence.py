@@ -647,10 +647,24 @@ class SentenceReader(GoalRules, TailRules, RuleScope, Interpreter):
             np = {**np, "items": {"names": list(self.last_item)}}
         if set(a) & BOUND_AMOUNTS or set(a) & {"more", "fewer", "times", "as_many_as", "as_many_here"}:
             raise TranslationError(f"{quote(np['words'])}: cannot tell how many units this moves")
+        if source and len(source) > 1 and "count" in a:
+            self._count_from_each(source, a["count"], words)
         src: dict = {"names": source} if source else {"all": True, "except": list(exclude or [])}
         st = {"op": "transfer", "items": np["items"], "amount": a, "from": src,
               "to": {"names": target} if target else None, "words": words}
         return st
+
+    def _count_from_each(self, source: list[str], count: Any, words: str) -> None:
+        """A count taken from several places is taken from each where the words say so ("from
+        each of A and B", "off every bay") or the user chose it; "take 2 X off A and B" may be 2 in
+        all, so it is asked with the "each" reading offered (it was read as 2 from each: a guess).
+        The user's "each" is ``picks["several_from"]``."""
+        if self.distributive or self.picks.get("several_from") == "each":
+            self.distributive = False
+            return
+        raise Choice("several_from", ("each",),
+                     f"{quote(words)}: the command does not say whether {count} come from each of "
+                     f"{', '.join(source)} or {count} in all (say 'from each', or how many from which)")
 
     def transfer(self, node: Tree, nps: list[dict], words: str) -> None:
         exc = self.sub(node, "except_places")
