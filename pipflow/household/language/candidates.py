@@ -36,7 +36,10 @@ from typing import Callable
 
 from pipflow.errors import PipflowError, TranslationError
 from pipflow.household.language.lexicon import LEAVING_REASONS, words_of
-from pipflow.household.language.parser import _vocabulary, known_word, tag, without_duration, world_phrases
+from pipflow.household.language.names import world_phrases
+from pipflow.household.language.rewrites import without_duration
+from pipflow.household.language.tagger import tag
+from pipflow.household.language.typos import known_word, vocabulary
 from pipflow.language.asides import FUNCTION_WORDS, near_operative
 from pipflow.language.spelling import distance
 
@@ -126,7 +129,7 @@ def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[
         out += [(command, f"'{said}' read as {name}", name, {said: name}) for name in names]
     words = words_of(command)
     index = world_phrases(world)
-    vocab = _vocabulary(index)
+    vocab = vocabulary(index)
     modifiers = _modifier_names(world)
     heads = {w: names for w, names in _modifier_names(world, -1).items() if len(names) > 1}
     try:

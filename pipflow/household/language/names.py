@@ -1,0 +1,98 @@
+"""The world's words: every object, place and category name of a home (and its ``words``), with
+plurals, inversions ("bottle of water") and unshared head words ("kettle" of electric_kettle), as
+word sequences -> the things they may name. Read by the tagger, the typo reader, the aside test and
+the candidate readings; kept per world while its names are unchanged."""
+from __future__ import annotations
+
+from pipflow.household.language.lexicon import FILLER, PHRASES, plurals, words_of
+from pipflow.language.asides import FUNCTION_WORDS
+from pipflow.language.numbers import read_number
+
+
+#: the index of the last worlds read: id -> (the world, what its names were, the index); a world
+#: is read many times per command (tagging, the grammar's twins, asides, candidates)
+_INDEXES: dict[int, tuple[dict, tuple, dict]] = {}
+
+
+def _names_key(world: dict) -> tuple:
+    """What :func:`world_phrases` reads of a world, cheaply: a changed name or word is a new index."""
+    return tuple((kind, name, tuple((e or {}).get("words") or ()))
+                 for kind in ("objects", "places", "categories") for name, e in (world.get(kind) or {}).items())
+
+
+def world_phrases(world: dict) -> dict[tuple[str, ...], list[dict]]:
+    """Word sequences -> the world things they name: every object, place and category name and
+    ``words`` entry, with plural forms. A phrase may name several things ("lamp"). Read-only: the
+    index of a world is kept while its names are unchanged."""
+    key = _names_key(world)
+    hit = _INDEXES.get(id(world))
+    if hit is not None and hit[0] is world and hit[1] == key:
+        return hit[2]
+    index = _world_phrases(world)
+    if len(_INDEXES) >= 16:
+        _INDEXES.clear()
+    _INDEXES[id(world)] = (world, key, index)
+    return index
+
+
+def _world_phrases(world: dict) -> dict[tuple[str, ...], list[dict]]:
+    """:func:`world_phrases`, built."""
+    index: dict[tuple[str, ...], list[dict]] = {}
+
+    def add(phrase: str, kind: str, name: str, others: list[str]) -> None:
+        base = words_of(phrase)
+        if not base:
+            return
+        # a listed word is a plural when it is the plural of another listed word ("lamps" beside
+        # "lamp"), or, for a category, ends in s ("school supplies", "electronics")
+        listed_plural = any(" ".join(base) in plurals(" ".join(words_of(o))) for o in others) or \
+            (kind == "category" and base[-1].endswith("s") and not base[-1].endswith("ss"))
+        forms = [(tuple(base), listed_plural)] + [(tuple(words_of(p)), True) for p in plurals(" ".join(base))]
+        if kind == "object" and len(base) == 2 and "of" not in base:
+            # "water bottle" is also "a bottle of water", "bottles of water"
+            forms += [((base[1], "of", base[0]), listed_plural)] + \
+                [((p, "of", base[0]), True) for p in plurals(base[1])]
+        for words, plural in forms:
+            readings = index.setdefault(words, [])
+            reading = {"kind": kind, "name": name, "plural": plural}
+            if not any(r["kind"] == kind and r["name"] == name for r in readings):
+                readings.append(reading)
+
+    for kind, table in (("object", world.get("objects") or {}), ("place", world.get("places") or {})):
+        for name, e in table.items():
+            phrases = [name] + list(e.get("words") or [])
+            for phrase in phrases:
+                add(phrase, kind, name, phrases)
+    for name, c in (world.get("categories") or {}).items():
+        phrases = [name] + list((c or {}).get("words") or [])
+        for phrase in phrases:
+            add(phrase, "category", name, phrases)
+    _add_parts(world, index)
+    return index
+
+
+def _add_parts(world: dict, index: dict[tuple[str, ...], list[dict]]) -> None:
+    """The last word of a thing's name of two or more words, when no other thing's name has it
+    ("kettle" of electric_kettle, "pot" of soup_pot), names that thing: people shorten names to
+    their head noun. A modifier is not read alone ("kitchen" of kitchen_table is no room of the
+    home, "coffee" of coffee_table no drink); a word two things share, a word the index already
+    has, a word of the command lexicon or a function word names nothing alone (never a guess)."""
+    owners: dict[str, set[tuple[str, str]]] = {}
+    heads: set[str] = set()
+    for kind, table in (("object", world.get("objects") or {}), ("place", world.get("places") or {})):
+        for name, e in table.items():
+            for phrase in [name] + list(e.get("words") or []):
+                words = words_of(phrase)
+                for w in words:
+                    owners.setdefault(w, set()).add((kind, name))
+                if len(words) >= 2:
+                    heads.add(words[-1])
+    for w, things in owners.items():
+        if w not in heads or len(things) != 1 or len(w) < 3 or not w.isalpha() or (w,) in index or (w,) in PHRASES \
+                or w in FUNCTION_WORDS or any(w in key for key in FILLER) or read_number([w], 0):
+            continue
+        kind, name = next(iter(things))
+        index[(w,)] = [{"kind": kind, "name": name, "plural": False}]
+        for p in plurals(w):
+            if (p,) not in index and (p,) not in PHRASES and p not in owners:
+                index[(p,)] = [{"kind": kind, "name": name, "plural": True}]

@@ -1,0 +1,95 @@
+"""The tagger's tokens rewritten where a token's class depends on its neighbours, which the grammar
+would otherwise try at every noun of every command: a place word before a name of objects ("the
+table lamp": the lamp on the table), a sentence that only restates an order, an action noun before
+a name ("a clean mug"), "that" as a determiner ("that curry has gone off")."""
+from __future__ import annotations
+
+from pipflow.household.language.grammar import NOUN_DUAL
+from pipflow.household.language.lexicon import PHRASES
+from pipflow.household.language.tokens import Tag
+from pipflow.household.world import members
+
+
+def located(tags: list["Tag"], world: dict, notes: list[str]) -> list["Tag"]:
+    """ "the table lamp" where the home has no "table lamp" but a table and lamps: the lamp that
+    is on the table, when the place word is followed at once by a name of objects and some of
+    them are in that place; the other lamps are not meant. None there: left as said (refused)."""
+    out: list[Tag] = []
+    for t in tags:
+        prev = out[-1] if out else None
+        if t.cls == "NOUN" and prev is not None and prev.cls == "NOUN" and prev.nouns and \
+                all(r["kind"] == "place" for r in prev.nouns):
+            places = {r["name"] for r in prev.nouns}
+            objects = [o for r in t.nouns for o in ([r["name"]] if r["kind"] == "object" else
+                                                     members(world, r["name"]) if r["kind"] == "category" else [])]
+            there = [o for o in dict.fromkeys(objects) if o in world["objects"] and world["objects"][o]["in"] in places]
+            if there:
+                plural = any(r.get("plural") for r in t.nouns)
+                notes.append(f"read '{prev.words} {t.words}' as {', '.join(there)} (in {', '.join(sorted(places))})")
+                out[-1] = Tag("NOUN", None, f"{prev.words} {t.words}",
+                              [{"kind": "object", "name": o, "plural": plural} for o in there])
+                continue
+        out.append(t)
+    return out
+
+
+#: the tags a sentence that only restates the order of things has: "first the mug, then the plate"
+_ORDER_ONLY = {"THE", "NOUN", "COMMA", "AND", "THEN"}
+
+
+def restated_order(tags: list[Tag], notes: list[str]) -> list[Tag]:
+    """The tags without a sentence that only lists things already named, in an order ("wash the
+    mug and the plate: first the mug, then the plate"): the order of the steps, which the plan
+    decides. A sentence that names anything new is kept (and read, or refused)."""
+    out: list[Tag] = []
+    named: set[str] = set()
+    start = 0
+    for k in range(len(tags) + 1):
+        if k < len(tags) and tags[k].cls != "END":
+            continue
+        sentence = tags[start:k]
+        nouns = [t for t in sentence if t.cls == "NOUN" or t.cls.endswith(NOUN_DUAL)]
+        names = {r["name"] for t in nouns for r in t.nouns}
+        if out and nouns and names <= named and all(t.cls in _ORDER_ONLY or t.cls.endswith(NOUN_DUAL) for t in sentence):
+            notes.append(f"'{' '.join(t.words for t in sentence)}': the order of the steps; the plan decides it")
+        else:
+            out += sentence + tags[k:k + 1]
+        named |= names
+        start = k + 1
+    return out
+
+
+def act_before_noun(tags: list[Tag]) -> list[Tag]:
+    """ "I need a clean mug": an action noun ("a clean", "a wash") before a name is a determiner and a
+    state word, not the action ("give it a clean")."""
+    out: list[Tag] = []
+    for k, t in enumerate(tags):
+        nxt = tags[k + 1] if k + 1 < len(tags) else None
+        ws = t.words.split()
+        if t.cls == "ACT" and len(ws) == 2 and nxt is not None and (nxt.cls == "NOUN" or nxt.cls.endswith(NOUN_DUAL)) \
+                and (ws[1],) in PHRASES and PHRASES[(ws[1],)][0] in ("V_CLEAN", "ADJ"):
+            out += [Tag("THE", None, ws[0]), Tag(PHRASES[(ws[1],)][0], PHRASES[(ws[1],)][1], ws[1])]
+            continue
+        out.append(t)
+    return out
+
+
+def demonstratives(tags: list[Tag]) -> list[Tag]:
+    """ "That leftover curry has gone off": "that" opening a clause before a name (or a state word
+    and a name) is a determiner, like "the"; elsewhere it stays a relative ("the lamp that is on")
+    or a conjunction ("make sure that ..."). Done here, not in the grammar: one more determiner
+    there is one more alternative at every noun of every command."""
+    out = list(tags)
+    for k, t in enumerate(out):
+        if t.cls == "THAT" and k and out[k - 1].cls.startswith("V_") and \
+                (k + 1 == len(out) or out[k + 1].cls in ("END", "COMMA")):
+            out[k] = Tag("IT", t.value, t.words)   # "the hob is still on, can you sort that": the thing said
+            continue
+        if t.cls != "THAT" or (k and out[k - 1].cls not in ("END", "COMMA")):
+            continue
+        j = k + 1
+        while j < len(out) and out[j].cls in ("ADJ", "V_WARM", "V_CLEAN"):
+            j += 1
+        if j < len(out) and (out[j].cls == "NOUN" or out[j].cls.endswith(NOUN_DUAL)):
+            out[k] = Tag("THE", t.value, t.words)
+    return out
