@@ -176,6 +176,9 @@ class Builder:
                 st["from"] = self.place(self._sub(src, "place"))
             if tgt is not None:
                 st["to"] = self.target(tgt)
+            was = self._sub(node, "wherewas")
+            if was is not None:   # "put the teacake on the bar where it was": checked against the world
+                st["as_was"] = words_under(self.tags, was)
         elif kind == "gap":   # the verb is elided: "... and the pillow on the bed", "... and the stove on", "... and the cup too"
             st = {"op": "repeat", "things": things}
             if self._sub(node, "target") is not None:
@@ -192,6 +195,8 @@ class Builder:
         elif kind == "request" and self._has(node, "ACT"):   # "the saucepan wants a good scrub"
             act = next(t for t in self._tokens(node) if self._cls(t) == "ACT")
             st = {"op": "change", "things": things, "to": str(self.tag_of(act).value)}
+        elif kind == "once":   # "once they are clean, put them away": a state an earlier step asks
+            st = {"op": "change", "things": things, "to": self.state(self._sub(node, "state")), "once": True}
         elif kind in ("request", "after"):   # "after": "once you have washed the pan, ..." (done first)
             st = {"op": "change", "things": things, "to": self.state(self._sub(node, "state"))}
         elif kind == "unwant":   # "don't leave the fridge open", "the TV shouldn't be on": the other polarity
@@ -299,12 +304,21 @@ class Builder:
         elif self._sub(node, "soundcue") is not None:   # "it's too quiet in here"
             t = self.tag_of(self._tokens(self._sub(node, "soundcue"))[0])
             st.update(to=str(t.value), cue=f"it is {t.words}", device="sound")
+        elif self._has(node, "HEARCUE"):   # "I can't hear myself think (with that radio blaring)"
+            t = next(self.tag_of(x) for x in self._tokens(node) if self._cls(x) == "HEARCUE")
+            st.update(to="off", cue=f"cannot {t.words}", device="sound")
+        elif self._sub(node, "aircue") is not None:   # "it's stuffy in here": a fan on or a window open
+            t = self.tag_of(self._tokens(self._sub(node, "aircue"))[0])
+            st.update(to="on", cue=f"it is {t.words}", device="air")
         elif self._has(node, "MUSIC"):   # "put some music on"
             st.update(to="on", cue="music wanted", device="sound")
         elif self._has(node, "HOTDRINK"):   # "could murder a cuppa"
             st.update(to="on", cue="a hot drink wanted", device="hot drink")
         else:
             st.update(to="off", cue="not needed")
+        room = self._sub(node, "room")
+        if room is not None:   # "it's stuffy out in the conservatory": a room the home model lacks
+            st["room"] = words_under(self.tags, room)
         return st
 
     def where_instead(self, item: Tree, statements: list[dict], refused: dict | None) -> dict | None:

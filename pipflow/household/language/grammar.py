@@ -21,7 +21,7 @@ from __future__ import annotations
 from pipflow.household.language.lexicon import PHRASES
 
 _RULES = r"""
-start: _sep* item (_sep+ item | _sep* thengap)* _sep*
+start: _sep* item (_sep+ item | _sep* thengap | _sep+ once _sep* item)* _sep*
 _sep: COMMA | END | @AND | @THEN | @BUT
 
 ?item: change | toggle | put | gap | away | trash | chill | request | unwant | ensure | observe | cue | meal | after | reason
@@ -48,6 +48,7 @@ toggle: @V_TOGGLE onoff tthings _here?
       | @V_TOGGLE tthings onoff (@AND | COMMA @AND) tthings _here?
       | _vput tthings on (@AND | COMMA @AND) tthings
       | @V_LIGHT tthings _here?
+      | _vput tthings @GOING //+ GOING
 typo_off: @OF
 tthings: tnp ((COMMA | @AND | COMMA @AND) tnp)*
 tnp: sel (@SWITCHPART | @V_TOGGLE)? where? exception?
@@ -68,6 +69,8 @@ put: _vput @UP? things source? target? exception?
    | @SHOULD sthings (@GOES | @BE) target
    | _vput @AWAY things target
    | @V_LEAVE things target
+   | @V_LEAVE things _particle target
+   | _vput @UP? things _particle? target wherewas //+ STAY
 _vput: @V_PUT | @V_THROW
 _particle: @OUT | @DOWN | @IN | @UP
 source: @FROM place | @OUT @OF? place | @OFF @OF? place
@@ -106,6 +109,8 @@ state: @ADJ | @V_OPEN | @V_SHUT | @V_CLEAN | @V_WARM | @V_STATE | on | off | @TO
      | @GOING //+ GOING
 
 after: @ONCE @SUBJ @HAVE? state things
+once: @ONCE sthings @IS state
+wherewas: @STAY
 reason: @IT @IS (@INTENS | @TOO)* @REASON | @SUBJ @IS @REASON | @REASON
 meal: (@V_MAKE | @V_PREPARE | _vstate) @THE? @MEAL _here?
     | (@V_MAKE | @V_PREPARE) @THE? @V_STATE _here?
@@ -130,6 +135,11 @@ cue: @NOBODY @IS? activity (@TO | @ON | @AT)? things? @ANYMORE?
    | @SUBJ @IS? @SLEEPCUE //+ SLEEPCUE
    | @SUBJ @CANNOT @SEE things? _here? //+ CANNOT
    | @IT @IS (@INTENS | @TOO)* soundcue _here? //+ SOUNDCUE
+   | @IT @IS (@INTENS | @TOO)* soundcue _here? @WITH @THAT? things (@GOING | on)? //+ SOUNDCUE
+   | @SUBJ @CANNOT @HEARCUE _here? (@WITH @THAT? things (@GOING | on)?)? //+ HEARCUE
+   | @IT @IS (@INTENS | @TOO)* aircue (_here | room)? //+ AIRCUE
+   | @IT @IS (@INTENS | @TOO)* (tempcue | tempadj | lightcue | soundcue) room //+ INROOM
+   | @SUBJ @IS (@INTENS | @TOO)* (tempcue | tempadj) room //+ INROOM
    | _vput _music on //+ MUSIC
    | @V_TOGGLE on _music //+ MUSIC
    | @V_PLAY _music //+ MUSIC
@@ -139,6 +149,9 @@ cue: @NOBODY @IS? activity (@TO | @ON | @AT)? things? @ANYMORE?
 activity: @ACTIVITY
 lightcue: @LIGHTCUE
 soundcue: @SOUNDCUE
+aircue: @AIRCUE
+hearcue: @HEARCUE
+room: @INROOM
 _wish: @SUBJ? (@WANT | @NEED)
 _doact: @TO (@DOACT | @SEE)
 _music: @THE? @MUSIC
@@ -154,6 +167,9 @@ tend: @V_TEND @OUT? things | @V_TEND things @OUT
     | sthings @IS? @MESS -> mess
     | sthings @IS? @ALLOVER -> mess //+ ALLOVER
     | @LEFT things (@OUT | @ALLOVER) -> mess //+ LEFT
+    | @LEFT things @OUT? (@ON | @IN) place -> mess //+ LEFT
+    | sthings @IS @LYING (@ON | @IN) place -> mess //+ LYING
+    | place @HASGOT things (@ON | @IN) @IT -> mess //+ HASGOT
     | @THERE @IS sthings (@MESS | @ALLOVER) -> mess //+ THERE
     | (place | @ROOMSAID) @IS @FULLOF things -> mess //+ FULLOF
 

@@ -4,7 +4,7 @@ word sequences -> the things they may name. Read by the tagger, the typo reader,
 the candidate readings; kept per world while its names are unchanged."""
 from __future__ import annotations
 
-from pipflow.household.language.lexicon import FILLER, PHRASES, plurals, words_of
+from pipflow.household.language.lexicon import FILLER, FORM_HEADS, PHRASES, plurals, words_of
 from pipflow.language.asides import FUNCTION_WORDS
 from pipflow.language.numbers import read_number
 
@@ -96,3 +96,21 @@ def _add_parts(world: dict, index: dict[tuple[str, ...], list[dict]]) -> None:
         for p in plurals(w):
             if (p,) not in index and (p,) not in PHRASES and p not in owners:
                 index[(p,)] = [{"kind": kind, "name": name, "plural": True}]
+
+
+def named_by_first_word(world: dict, word: str) -> list[str]:
+    """The things of the world a word names as the first word of a two-word name whose last word is
+    a form of it (lexicon ``FORM_HEADS``: "my crossword" of crossword_book), also said in the
+    plural ("the crosswords"); several things: each (the tagger then asks which). Read only for a
+    word the tagger knows nowhere else: a world name or a word of the lexicon always wins."""
+    forms = {word} | {word[:-len(end)] + repl for end, repl in (("ies", "y"), ("es", ""), ("s", ""))
+                      if word.endswith(end) and len(word) > len(end) + 2}
+    out: list[str] = []
+    for table in (world.get("objects") or {}, world.get("places") or {}):
+        for name, e in table.items():
+            for phrase in [name] + list(e.get("words") or []):
+                ws = words_of(phrase)
+                if len(ws) == 2 and ws[0] in forms and ws[1] in FORM_HEADS and ws[0] not in FUNCTION_WORDS \
+                        and name not in out:
+                    out.append(name)
+    return out

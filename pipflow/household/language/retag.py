@@ -5,7 +5,7 @@ a name ("a clean mug"), "that" as a determiner ("that curry has gone off")."""
 from __future__ import annotations
 
 from pipflow.household.language.grammar import NOUN_DUAL
-from pipflow.household.language.lexicon import PHRASES
+from pipflow.household.language.lexicon import GRADED, PHRASES
 from pipflow.household.language.tokens import Tag
 from pipflow.household.world import members
 
@@ -92,4 +92,29 @@ def demonstratives(tags: list[Tag]) -> list[Tag]:
             j += 1
         if j < len(out) and (out[j].cls == "NOUN" or out[j].cls.endswith(NOUN_DUAL)):
             out[k] = Tag("THE", t.value, t.words)
+    return out
+
+
+#: classes of a wish, before which an intensifier of the lexicon ("really") grades the wish only
+_WISHES = {"WANT", "NEED"}
+
+
+def _base(cls: str) -> str:
+    return cls[:-len(NOUN_DUAL)] if cls.endswith(NOUN_DUAL) else cls
+
+
+def without_hedges(tags: list[Tag], notes: list[str]) -> list[Tag]:
+    """The tags without the intensifiers and hedges (lexicon ``HEDGES``) that grade the word after
+    them ("ever so dark", "absolutely freezing", "I could really go for", "the plates are all
+    mucky": lexicon ``GRADED``): how much, not what. A hedge before anything else stays, and is
+    refused unplaced (no word is dropped that could carry what is wanted)."""
+    out: list[Tag] = []
+    for k, t in enumerate(tags):
+        nxt = _base(tags[k + 1].cls) if k + 1 < len(tags) else ""
+        prev = _base(out[-1].cls) if out else ""
+        if (t.cls == "HEDGE" and nxt in GRADED) or (t.cls == "INTENS" and nxt in _WISHES) or \
+                (t.cls == "ALL" and prev == "IS" and nxt == "ADJ"):
+            notes.append(f"'{t.words}' says how much, not what: read as nothing")
+            continue
+        out.append(t)
     return out

@@ -150,3 +150,58 @@ def or_under_negation(words: list[str], notes: list[str]) -> list[str]:
             w = "and"
         out.append(w)
     return out
+
+
+#: "leave them both out", "put them all away": a pronoun with a quantifier after it, as the
+#: quantifier before it ("both of them", "all of them")
+_FLOATED = {("them", "both"): ["both", "of", "them"], ("them", "all"): ["all", "of", "them"],
+            ("it", "all"): ["all", "of", "it"]}
+#: particles of completion after warming ("warm the pie through"): how, not what
+_THROUGH_AFTER = {"warm", "warming", "heat", "heating", "warmed", "heated", "cook", "cooking", "cooked", "reheat",
+                  "reheating", "defrost", "thaw"}
+#: "so bertie can get the plate out": "so" + one word + these opens a clause of what is done
+_ENABLING = {"can", "could", "will", "may"}
+
+
+def particles(words: list[str], names_nothing, notes: list[str]) -> list[str]:
+    """Particles and small constructions read as the grammar's words (docs/household.md):
+    "them both" / "them all" as "both of them" / "all of them"; "through to P" as "to P" (to
+    another room: the home model has none); "warm X through" without "through" (heated all the
+    way: hot); "so W can ..." as "and ..." when W names nothing of the home (a person: who does a
+    step is the plan's choice). ``names_nothing(word)``: the word is no name of the world."""
+    out: list[str] = []
+    k = 0
+    while k < len(words):
+        w = words[k]
+        pair = tuple(words[k:k + 2])
+        if pair in _FLOATED:
+            out += _FLOATED[pair]
+            notes.append(f"'{' '.join(pair)}' read as '{' '.join(_FLOATED[pair])}'")
+            k += 2
+            continue
+        if w == "through" and k + 1 < len(words) and words[k + 1] in ("to", "into", "onto", "in", "on") and out \
+                and out[-1] not in PUNCT:
+            notes.append(f"'through {words[k + 1]}' read as '{words[k + 1]}' (the home model has no rooms to go through)")
+            k += 1
+            continue
+        if w == "through" and any(x in _THROUGH_AFTER for x in _clause_before(out)):
+            notes.append("'through' after warming: heated through, read as hot")
+            k += 1
+            continue
+        if w == "so" and k + 2 < len(words) and words[k + 2] in _ENABLING and names_nothing(words[k + 1]) \
+                and out and out[-1] not in PUNCT:
+            notes.append(f"'so {words[k + 1]} {words[k + 2]}': who does a step is the plan's choice; read as 'and'")
+            out.append("and")
+            k += 3
+            continue
+        out.append(w)
+        k += 1
+    return out
+
+
+def _clause_before(out: list[str]) -> list[str]:
+    """The words of the clause being read (since the last mark)."""
+    k = len(out)
+    while k and out[k - 1] not in PUNCT:
+        k -= 1
+    return out[k:]

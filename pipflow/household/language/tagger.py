@@ -9,9 +9,9 @@ from __future__ import annotations
 from pipflow.errors import TranslationError
 from pipflow.household.language.grammar import NOUN_DUAL
 from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
-from pipflow.household.language.names import world_phrases
-from pipflow.household.language.retag import act_before_noun, demonstratives, located, restated_order
-from pipflow.household.language.rewrites import measures, or_under_negation, without_manner
+from pipflow.household.language.names import named_by_first_word, world_phrases
+from pipflow.household.language.retag import act_before_noun, demonstratives, located, restated_order, without_hedges
+from pipflow.household.language.rewrites import measures, or_under_negation, particles, without_manner
 from pipflow.household.language.tokens import PUNCT, Tag
 from pipflow.household.language.typos import known_word, meaning_of, typo_of, vocabulary
 from pipflow.language.numbers import read_number
@@ -33,8 +33,9 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
     """The command as grammar tokens (module docstring, step 1)."""
     notes = notes if notes is not None else []
     index = world_phrases(world)
-    words = or_under_negation(measures(without_manner(words_of(command), notes), index, notes), notes)
     vocab = vocabulary(index)
+    words = or_under_negation(measures(without_manner(words_of(command), notes), index, notes), notes)
+    words = particles(words, lambda x: x.isalpha() and not known_word(x, index, vocab), notes)
     said = list(words)   # as typed: a repair that still names nothing is quoted as typed
     # typos: a word known nowhere, close to exactly one known word, is read as that word
     for k, w in enumerate(words):
@@ -49,6 +50,7 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
     longest_f = max(len(k) for k in FILLER)
     out: list[Tag] = []
     unknown: list[str] = []
+    shared: dict[str, list[str]] = {}   # a word that is the first word of several things' names
     i = 0
     while i < len(words):
         w = words[i]
@@ -74,7 +76,14 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
             i += nf
             continue
         if nw == 0 and nl == 0:
-            unknown.append(said[i])
+            whole = named_by_first_word(world, w) if w.isalpha() and len(w) >= 3 else []
+            if len(whole) == 1:   # "my crossword" of crossword_book: the one thing it is the form of
+                notes.append(f"read {w!r} as {whole[0]} (the first word of its name)")
+                out.append(Tag("NOUN", None, w, [{"kind": "object" if whole[0] in (world.get("objects") or {})
+                                                  else "place", "name": whole[0], "plural": False}]))
+            else:
+                unknown.append(said[i])
+                shared.update({said[i]: whole} if whole else {})
             i += 1
             continue
         n = max(nw, nl)
@@ -88,12 +97,13 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
             cls, value = PHRASES[tuple(words[i:i + n])]
             out.append(Tag(cls, value, text))
         i += n
-    out = restated_order(located(demonstratives(act_before_noun(out)), world, notes), notes)
+    out = restated_order(located(demonstratives(act_before_noun(without_hedges(out, notes))), world, notes), notes)
     if unknown:
         names = sorted(set(world.get("objects") or {}) | set(world.get("places") or {}))
         error = TranslationError(
             f"{', '.join(repr(u) for u in dict.fromkeys(unknown))} names nothing in this world and is no word the "
-            f"offline parser knows (in {command.strip()!r}); things of this world: {', '.join(names)}")
+            f"offline parser knows (in {command.strip()!r}); things of this world: {', '.join(names)}"
+            + "".join(f"; '{w}' is part of the names of {', '.join(ns)}: say which" for w, ns in shared.items()))
         error.unread = list(dict.fromkeys(unknown))  # type: ignore[attr-defined]  # for candidate readings
         raise error
     return out
