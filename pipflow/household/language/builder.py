@@ -163,22 +163,9 @@ class Builder:
             st = {"op": "change", "things": things, "to": "on"}
         elif kind == "toggle":   # "turn the fire on and the kettle": the things after the particle too
             st = {"op": "change", "things": [t for sub in self._subs(node, "tthings") for t in self.things(sub)],
-                  "to": self.state(node)}
+                  "to": "off" if self._has(node, "DOWN") else self.state(node)}   # "shut everything down"
         elif kind == "put":
-            # "put it in the cabinet along with the bowl": the things after the place go there too
-            subs = self._subs(node, "things") + self._subs(node, "sthings")
-            st = {"op": "put", "things": [s for sub in subs for s in self.things(sub)]}
-            src, tgt = self._sub(node, "source"), self._sub(node, "target")
-            if src is None and tgt is None and self._has(node, "V_THROW") and len(self._tokens(node)) == 1:
-                # "chuck the crisp packet", "toss the orange": thrown, and said nowhere else, is away
-                st = {"op": "trash", "things": st["things"]}
-            if src is not None:
-                st["from"] = self.place(self._sub(src, "place"))
-            if tgt is not None:
-                st["to"] = self.target(tgt)
-            was = self._sub(node, "wherewas")
-            if was is not None:   # "put the teacake on the bar where it was": checked against the world
-                st["as_was"] = words_under(self.tags, was)
+            st = self.move(node)
         elif kind == "gap":   # the verb is elided: "... and the pillow on the bed", "... and the stove on", "... and the cup too"
             st = {"op": "repeat", "things": things}
             if self._sub(node, "target") is not None:
@@ -202,19 +189,7 @@ class Builder:
         elif kind == "unwant":   # "don't leave the fridge open", "the TV shouldn't be on": the other polarity
             st = {"op": "change", "things": things, "to": OPPOSITE[self.state(self._sub(node, "state"))]}
         elif kind == "meal":
-            named = next((t for t in self._tokens(node) if self._cls(t) == "MEAL"), None)
-            if named is None:   # "make some toast": a meal whose word is a verb too
-                said = self.tag_of(next(t for t in self._tokens(node)[1:] if self._cls(t) == "V_STATE")).words
-                if said not in MEALS:
-                    raise TranslationError(f"'{words}': '{said}' is no meal the offline parser knows")
-                meal = said
-            else:
-                meal = str(self.tag_of(named).value)
-            verb = self.tag_of(self._tokens(node)[0])
-            if verb.value is not None and verb.value != MEALS[meal]["state"]:   # "cook breakfast", never "heat a salad"
-                raise TranslationError(f"'{words}': a {meal} is not made by '{verb.words}' "
-                                       f"(its foods end {MEALS[meal]['state']}); say what to do with which things")
-            st = {"op": "meal", "meal": meal}
+            st = self.meal(node, words)
         elif kind == "cue":
             st = self.cue(node, things)
         elif kind in ("observe", "tend", "mess", "handling", "keep", "empty", "desire"):
@@ -224,6 +199,41 @@ class Builder:
         if exc is not None:   # "put all the fruit in the fridge but not the watermelon"
             st["except"] = self.things(self._sub(exc, "things"))
         st["words"] = words
+        return st
+
+    def move(self, node: Tree) -> dict:
+        """A move ("put the mug in the sink"), or a throw said nowhere else (a trash)."""
+        # "put it in the cabinet along with the bowl": the things after the place go there too
+        subs = self._subs(node, "things") + self._subs(node, "sthings")
+        st = {"op": "put", "things": [s for sub in subs for s in self.things(sub)]}
+        src, tgt = self._sub(node, "source"), self._sub(node, "target")
+        if src is None and tgt is None and self._has(node, "V_THROW") and len(self._tokens(node)) == 1:
+            # "chuck the crisp packet", "toss the orange": thrown, and said nowhere else, is away
+            st = {"op": "trash", "things": st["things"]}
+        if src is not None:
+            st["from"] = self.place(self._sub(src, "place"))
+        if tgt is not None:
+            st["to"] = self.target(tgt)
+        was = self._sub(node, "wherewas")
+        if was is not None:   # "put the teacake on the bar where it was": checked against the world
+            st["as_was"] = words_under(self.tags, was)
+        return st
+
+    def meal(self, node: Tree, words: str) -> dict:
+        """A meal named ("make me a salad"), checked against the verb that asks for it."""
+        named = next((t for t in self._tokens(node) if self._cls(t) == "MEAL"), None)
+        if named is None:   # "make some toast": a meal whose word is a verb too
+            said = self.tag_of(next(t for t in self._tokens(node)[1:] if self._cls(t) == "V_STATE")).words
+            if said not in MEALS:
+                raise TranslationError(f"'{words}': '{said}' is no meal the offline parser knows")
+            meal = said
+        else:
+            meal = str(self.tag_of(named).value)
+        verb = self.tag_of(self._tokens(node)[0])
+        if verb.value is not None and verb.value != MEALS[meal]["state"]:   # "cook breakfast", never "heat a salad"
+            raise TranslationError(f"'{words}': a {meal} is not made by '{verb.words}' "
+                                   f"(its foods end {MEALS[meal]['state']}); say what to do with which things")
+        st = {"op": "meal", "meal": meal}
         return st
 
     def verb_place(self, verb: Token) -> dict | None:

@@ -49,6 +49,7 @@ toggle: @V_TOGGLE onoff tthings _here?
       | _vput tthings on (@AND | COMMA @AND) tthings
       | @V_LIGHT tthings _here?
       | _vput tthings @GOING //+ GOING
+      | @V_SHUT tthings @DOWN @ANYMORE? //+ DOWN
 typo_off: @OF
 tthings: tnp ((COMMA | @AND | COMMA @AND) tnp)*
 tnp: sel (@SWITCHPART | @V_TOGGLE)? where? exception?
@@ -70,6 +71,7 @@ put: _vput @UP? things source? target? exception?
    | _vput @AWAY things target
    | @V_LEAVE things target
    | @V_LEAVE things _particle target
+   | @V_TIDY @UP? things target
    | _vput @UP? things _particle? target wherewas //+ STAY
 _vput: @V_PUT | @V_THROW
 _particle: @OUT | @DOWN | @IN | @UP
@@ -157,6 +159,7 @@ _doact: @TO (@DOACT | @SEE)
 _music: @THE? @MUSIC
 _here: @HERE
      | @ALLOVER //+ ALLOVER
+     | @THERE //+ THERE
 tempcue: @TEMPCUE
 tempadj: @ADJ
 

@@ -57,7 +57,7 @@ LIGHT_CATEGORY_WORD = "light"
 TEMPERATURE_CUES = {"freezing": "on", "chilly": "on", "nippy": "on", "perishing": "on", "baltic": "on",
                     "frozen": "on", "roasting": "off", "boiling": "off", "sweltering": "off", "stifling": "off",
                     "baking": "off", "perished": "on", "frozen stiff": "on", "icy": "on", "arctic": "on",
-                    "bitter": "on", "parky": "on", "cold as ice": "on", "like an oven": "off", "like a sauna": "off",
+                    "parky": "on", "cold as ice": "on", "like an oven": "off", "like a sauna": "off",
                     "sweating": "off"}
 #: the adjectives that are temperature cues when said of the room or of a person
 TEMPERATURE_ADJECTIVES = {"cold": "on", "hot": "off", "warm": "off"}
@@ -273,6 +273,11 @@ _add("SUBJ", "i,we,you")
 _add("WANT", "want,would like,like,wish,d like,prefer,fancy,would love,love,could murder,could kill for,"
      "am dying for,am craving,crave,would kill for,could do with,could use,could go for,would go for,could eat,am gasping for,can i get,can i have,"
      "could i get,could i have,may i have,can we get,can we have,could we have,could we get")
+#: a wish graded by a hedge inside it ("I could really go for", "I would just love"): the same wish
+for _k, (_c, _v) in list(PHRASES.items()):
+    if _c == "WANT" and len(_k) >= 2 and _k[0] in ("could", "would", "am"):
+        for _h in ("really", "just", "so", "honestly"):
+            PHRASES.setdefault((_k[0], _h) + _k[1:], (_c, _v))
 _add("NEED", "need,needs,wants")
 _add("NEEDED", "needed,necessary,required,in use")
 #: "we are done with the laptop": the thing is not needed (a state cue, like "we do not need")
@@ -414,7 +419,9 @@ FILLER = {("please",), ("kindly",), ("just",), ("quickly",), ("now",), ("for", "
           ("pls",), ("plz",), ("plse",), ("thx",), ("ta",), ("cheers",),
           ("while", "you", "are", "at", "it"), ("when", "you", "get", "a", "chance"), ("when", "you", "can"),
           ("be", "a", "dear", "and"), ("be", "a", "love", "and"), ("be", "an", "angel", "and"), ("be", "a", "star", "and"),
-          ("while", "you", "are", "about", "it"), ("while", "you", "are", "there"), ("if", "you", "get", "a", "chance"),
+          ("while", "you", "are", "about", "it"), ("while", "you", "are", "there"), ("while", "you", "are", "over", "there"),
+          ("while", "you", "are", "in", "there"), ("while", "you", "are", "up"), ("while", "you", "are", "passing"),
+          ("while", "you", "are", "on", "your", "feet"), ("while", "you", "are", "over", "here"), ("if", "you", "get", "a", "chance"),
           ("honestly",), ("seriously",), ("even",), ("actually",),
           ("the", "two", "of", "you"), ("both", "of", "you"), ("you", "two"), ("you", "both"), ("all", "of", "you"),
           ("the", "pair", "of", "you"), ("you", "guys"), ("guys",)}
@@ -457,7 +464,8 @@ MEASURES = {"bowl", "bowlful", "plate", "plateful", "cup", "glass", "mug", "bag"
 #: "the quilt goes on the table for airing": what for, not what the home should end like: "for" +
 #: a word of no verb of the lexicon in -ing, or one of these, at the end of a clause
 PURPOSES = {("later",), ("tomorrow",), ("the", "morning"), ("the", "weekend"), ("now",), ("safekeeping",),
-            ("safe", "keeping")}
+            ("safe", "keeping"), ("tea",), ("dinner",), ("lunch",), ("supper",), ("breakfast",), ("brunch",),
+            ("guests",), ("the", "guests"), ("visitors",), ("the", "visitors"), ("tonight",), ("the", "party")}
 
 #: filler words a misspelling may be read as ("plese"): only these, long and close to no
 #: content word, so that a misspelt content word is never dropped as politeness

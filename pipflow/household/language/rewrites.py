@@ -4,8 +4,8 @@ minutes", offered only as a candidate), what for ("for later"), amounts of a thi
 cherries"), and "or" under a negation ("nobody is using X or Y"). Each rewrite leaves a note."""
 from __future__ import annotations
 
-from pipflow.household.language.lexicon import (DURATION_HEDGES, DURATION_UNITS, MANNER_OBJECTS, MANNERS, MEASURES,
-                                                ORDER_WORDS, ORDINAL_DETERMINERS, PHRASES, PURPOSES, TIME_WORDS)
+from pipflow.household.language.lexicon import (DURATION_HEDGES, DURATION_UNITS, GRADED, MANNER_OBJECTS, MANNERS,
+                                                MEASURES, ORDER_WORDS, ORDINAL_DETERMINERS, PHRASES, PURPOSES, TIME_WORDS)
 from pipflow.household.language.tokens import PUNCT
 from pipflow.language.numbers import read_number
 
@@ -187,6 +187,18 @@ def particles(words: list[str], names_nothing, notes: list[str]) -> list[str]:
         if w == "through" and any(x in _THROUGH_AFTER for x in _clause_before(out)):
             notes.append("'through' after warming: heated through, read as hot")
             k += 1
+            continue
+        if w == "so" and out and out[-1] == "," and k + 1 < len(words) and words[k + 1] not in ("that", "much", "many") \
+                and PHRASES.get((words[k + 1],), ("",))[0] not in GRADED:
+            # "the melon is too heavy for one of you, so carry it ...": a consequence, a clause of its own
+            notes.append("', so' opens a clause of what is done: read as ','")
+            k += 1
+            continue
+        if w == "for" and out and out[-1] not in PUNCT and k + 1 < len(words) and \
+                (k + 2 == len(words) or words[k + 2] in PUNCT) and names_nothing(words[k + 1]):
+            # "slice the ham for sandwiches": what for, when the word names nothing of the home
+            notes.append(f"'for {words[k + 1]}' says what for, not what the home should end like")
+            k += 2
             continue
         if w == "so" and k + 2 < len(words) and words[k + 2] in _ENABLING and names_nothing(words[k + 1]) \
                 and out and out[-1] not in PUNCT:
