@@ -31,6 +31,7 @@ places:
   armchair:     {x: 5.0, y: 2.5, width: 0.9, depth: 0.9, access: [5.4, 1.9], properties: [receptacle], words: [my chair]}
   bench:        {x: 6.5, y: 2.5, width: 1.2, depth: 0.5, access: [7.1, 1.9], properties: [receptacle]}
   peg_rail:     {x: 7.4, y: 5.0, width: 0.4, depth: 0.3, access: [7.2, 4.4], properties: [receptacle]}
+  ash_pit:      {x: 1.4, y: 0.2, width: 0.5, depth: 0.5, access: [1.6, 1.0], properties: [garbage], words: [bin]}
   games_chest:  {x: 0.2, y: 0.2, width: 0.8, depth: 0.6, access: [0.6, 1.0], properties: [receptacle]}
   wood_burner:  {x: 3.5, y: 0.2, width: 0.8, depth: 0.6, access: [3.9, 1.0], properties: [toggleable], state: {on: false}}
   ceiling_fan:  {x: 4.6, y: 0.2, width: 0.3, depth: 0.3, access: [4.7, 1.0], properties: [toggleable], state: {on: false}}
@@ -183,3 +184,25 @@ def test_disorder_said_of_where_a_thing_lies(chalet):
         {}, {"porringer": ["clean"], "teacup": ["clean"]})
     assert goal("Puzzles are all over the shop, tidy them up would you.", chalet) == (
         {"games_chest": ["chess_book", "chess_set", "sudoku_book"]}, {})
+
+
+def test_small_slips_and_that_after_a_verb(chalet):
+    # two neighbouring letters swapped, one grammar word it can be: read ("adn" is "and")
+    assert goal("Wash the teacup adn the porringer.", chalet) == ({}, {"porringer": ["clean"], "teacup": ["clean"]})
+    # "that" after a verb, before a name, is a determiner
+    assert goal("Bin that porringer.", chalet) == ({"ash_pit": ["porringer"]}, {})
+    # a degree after "'s" makes it "is", never a possessive: "the log basket's too heavy for one of you"
+    assert goal("The log basket's too heavy for one of you, so carry it between you to the bench.", chalet) == (
+        {"bench": ["log_basket"]}, {})
+
+
+def test_new_candidate_sources(chalet):
+    """Readings offered for a refusal (never acted on unchosen), each from a general source."""
+    # a word not understood before a name, left out (with "that" after a verb read as "the")
+    assert ({}, {"porringer": ["clean"], "stereo": ["off"]}) in \
+        offered("Wash that old porringer and switch the stereo off.", chalet)
+    # a phrase of where whose last word names nothing, left out
+    assert ({}, {"standard_lamp": ["on"]}) in offered("It's a bit gloomy over by the harp.", _chalet(**ONE_LAMP_OFF))
+    # a clause that only names a thing, then "it": the thing in place of the pronoun
+    assert ({}, {"broth": ["hot"], "cold_store": ["closed"]}) in \
+        offered("Broth for supper tonight - it just wants warming through.", chalet)

@@ -529,6 +529,9 @@ def normalize(text: str) -> str:
     # (not after a time: "last night's dirty dishes", "yesterday's cold tea" are possessives)
     t = re.sub(r"(?<!night)(?<!day)(?<!week)(?<!morning)(?<!evening)(?<!weekend)"
                r"'s(?=\s+(?:still\s+|not\s+|too\s+|very\s+|so\s+)?(?:" + "|".join(_STATE_WORDS) + r")\b)", " is", t)
+    # "the melon's too heavy", "the room's ever so stuffy": a possessive is never followed by a degree
+    t = re.sub(r"'s(?=\s+(?:too|very|so|really|quite|rather|ever so|absolutely|dead|proper|awfully|far too|way too)\s)",
+               " is", t)
     t = re.sub(r"'s(?=\s+(?:been|gone|got|become|left)\b)", " has", t)   # "the console's been on"
     t = re.sub(r"'s(?=\s+still\s+(?:been|gone|got)\b)", " has", t)   # "the table's still got ..."
     t = re.sub(r"'s(?=\s+[a-z]{3,}ing\b)", " is", t)   # "the watering can's leaking"

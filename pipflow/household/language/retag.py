@@ -85,8 +85,8 @@ def demonstratives(tags: list[Tag]) -> list[Tag]:
                 (k + 1 == len(out) or out[k + 1].cls in ("END", "COMMA")):
             out[k] = Tag("IT", t.value, t.words)   # "the hob is still on, can you sort that": the thing said
             continue
-        if t.cls != "THAT" or (k and out[k - 1].cls not in ("END", "COMMA")):
-            continue
+        if t.cls != "THAT" or (k and out[k - 1].cls not in ("END", "COMMA") and not out[k - 1].cls.startswith("V_")):
+            continue   # "bin that scone": after a verb too, before a name
         j = k + 1
         while j < len(out) and out[j].cls in ("ADJ", "V_WARM", "V_CLEAN"):
             j += 1

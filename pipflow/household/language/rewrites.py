@@ -56,7 +56,7 @@ def without_manner(words: list[str], notes: list[str]) -> list[str]:
 
 
 #: words after which a manner phrase closes what it says ("lift it in together and wash it")
-_MANNER_ENDS = {"and", "then"}
+_MANNER_ENDS = {"and", "then", "to", "into", "onto", "over", "across", "back"}
 
 
 def _without_inner_manner(clause: list[str], notes: list[str]) -> list[str]:

@@ -13,7 +13,7 @@ from pipflow.household.language.names import named_by_first_word, world_phrases
 from pipflow.household.language.retag import act_before_noun, demonstratives, located, restated_order, without_hedges
 from pipflow.household.language.rewrites import measures, or_under_negation, particles, without_manner
 from pipflow.household.language.tokens import PUNCT, Tag
-from pipflow.household.language.typos import known_word, meaning_of, typo_of, vocabulary
+from pipflow.household.language.typos import known_word, meaning_of, transposition_of, typo_of, vocabulary
 from pipflow.language.numbers import read_number
 
 
@@ -29,6 +29,28 @@ def _match(words: list[str], i: int, table: dict, longest: int) -> int:
     return 0
 
 
+def repaired(words: list[str], index: dict, vocab: set[str], notes: list[str]) -> list[str]:
+    """The words with their typos read: a word known nowhere that is two neighbouring letters of
+    exactly one grammar word swapped ("adn"), or close to exactly one known word ("fridgge"), is
+    read as that word (a note says so); two competing repairs: left as typed (refused, offered)."""
+    words = list(words)
+    for k, w in enumerate(words):
+        if known_word(w, index, vocab) or len(w) < 3 or not w.isalpha():
+            continue
+        swapped = transposition_of(w)
+        if len(swapped) == 1 and set(typo_of(w, vocab)) <= set(swapped):
+            notes.append(f"read {w!r} as {swapped[0]!r} (two letters swapped)")
+            words[k] = swapped[0]
+            continue
+        if len(w) < 4:
+            continue
+        close = typo_of(w, vocab)
+        if close and len({meaning_of(c, index) for c in close}) == 1:
+            notes.append(f"read {w!r} as {close[0]!r}")
+            words[k] = close[0]
+    return words
+
+
 def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
     """The command as grammar tokens (module docstring, step 1)."""
     notes = notes if notes is not None else []
@@ -37,14 +59,7 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
     words = or_under_negation(measures(without_manner(words_of(command), notes), index, notes), notes)
     words = particles(words, lambda x: x.isalpha() and not known_word(x, index, vocab), notes)
     said = list(words)   # as typed: a repair that still names nothing is quoted as typed
-    # typos: a word known nowhere, close to exactly one known word, is read as that word
-    for k, w in enumerate(words):
-        if known_word(w, index, vocab) or len(w) < 4:
-            continue
-        close = typo_of(w, vocab)
-        if close and len({meaning_of(c, index) for c in close}) == 1:
-            notes.append(f"read {w!r} as {close[0]!r}")
-            words[k] = close[0]
+    words = repaired(words, index, vocab, notes)
     longest_w = max((len(k) for k in index), default=1)
     longest_l = max(len(k) for k in PHRASES)
     longest_f = max(len(k) for k in FILLER)

@@ -61,3 +61,23 @@ def meaning_of(word: str, world_index: dict) -> str:
     "tomatoes") do not make a typo ambiguous."""
     names = sorted(r["name"] for r in world_index.get((word,), []))
     return f"{names}|{PHRASES.get((word,))}"
+
+
+def _swapped(word: str, known: str) -> bool:
+    """Whether ``word`` is ``known`` with two neighbouring letters swapped ("teh", "adn", "form")."""
+    if len(word) != len(known) or word == known:
+        return False
+    diff = [k for k in range(len(word)) if word[k] != known[k]]
+    return len(diff) == 2 and diff[1] == diff[0] + 1 and word[diff[0]] == known[diff[1]] and \
+        word[diff[1]] == known[diff[0]]
+
+
+#: the words of the grammar (one-word phrases of the lexicon), for :func:`transposition_of`
+_GRAMMAR_WORDS = sorted({k[0] for k in PHRASES if len(k) == 1 and len(k[0]) >= 3})
+
+
+def transposition_of(word: str) -> list[str]:
+    """Words of the grammar (function words too) that ``word`` is a swap of two neighbouring
+    letters of ("teh" -> the, "adn" -> and): a slip of typing fast, which no other spelling is.
+    The tagger reads the word so only when there is exactly one such word."""
+    return [k for k in _GRAMMAR_WORDS if _swapped(word, k)]
