@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import pytest
 
-from pipflow.errors import TranslationError
+from pipflow.errors import PipflowError, TranslationError
 from pipflow.household.language.translator import translate
 from pipflow.household.world import world_from_text
 
@@ -206,3 +206,34 @@ def test_new_candidate_sources(chalet):
     # a clause that only names a thing, then "it": the thing in place of the pronoun
     assert ({}, {"broth": ["hot"], "cold_store": ["closed"]}) in \
         offered("Broth for supper tonight - it just wants warming through.", chalet)
+
+
+#: the chalet with its skylight open
+SKYLIGHT_OPEN = {"properties: [openable], state: {open: false}}": "properties: [openable], state: {open: true}}"}
+
+
+def test_cold_with_a_window_open_asks_heating_or_window(chalet):
+    # two answers two people would not agree on: each offered, neither acted on
+    both = offered("It's freezing in here.", _chalet(**SKYLIGHT_OPEN), match="which")
+    assert ({}, {"wood_burner": ["on"]}) in both and ({}, {"skylight": ["closed"]}) in both
+    # too warm, no heater on, one window closed: the window opened
+    assert goal("It's roasting in here.", chalet) == ({}, {"skylight": ["open"]})
+
+
+def test_how_a_person_is_said_alone_is_asked_with_what_answers_it(chalet):
+    # tired: what is on, off, offered; never acted on unchosen ("ever so" graded it)
+    assert ({}, {"projector": ["off"], "stereo": ["off"]}) in offered("I'm ever so shattered.", chalet)
+    # hungry: a food that heats, offered
+    assert ({}, {"broth": ["hot"], "cold_store": ["closed"]}) in offered("I'm starving.", chalet)
+    # before a request it is the request's reason
+    assert goal("I'm knackered, turn the stereo off.", chalet) == ({}, {"stereo": ["off"]})
+
+
+def test_a_thing_left_in_a_state_or_a_place_is_a_complaint(chalet):
+    assert goal("Someone's left the stereo on again.", chalet) == ({}, {"stereo": ["off"]})
+    assert goal("The dresser has been left open.", chalet) == ({}, {"dresser": ["closed"]})
+    assert goal("The teacup and the porringer have been left on the table.", chalet) == (
+        {}, {"porringer": ["clean"], "teacup": ["clean"]})
+    # left where it is not: refused, saying where it is
+    with pytest.raises(PipflowError, match="scarf is in armchair"):
+        translate("My scarf was left on the bench.", chalet)

@@ -35,7 +35,7 @@ import re
 from typing import Callable
 
 from pipflow.errors import PipflowError, TranslationError
-from pipflow.household.language.lexicon import LEAVING_REASONS, words_of
+from pipflow.household.language.lexicon import HUNGRY, LEAVING_REASONS, NEEDS_OFFERED, words_of
 from pipflow.household.language.names import world_phrases
 from pipflow.household.language.rewrites import without_duration
 from pipflow.household.language.tagger import tag
@@ -119,6 +119,21 @@ def _stopped_wordings(words: list[str], index: dict, error: TranslationError) ->
     return out
 
 
+def _needs(error: TranslationError, world: dict) -> list[tuple[str, str, str, dict]]:
+    """ "I'm shattered", "I'm parched", "I'm starving" said alone: what answers it in this home
+    (lexicon ``NEEDS_OFFERED``; hungry: each food that heats, named), offered, never acted on."""
+    out: list[tuple[str, str, str, dict]] = []
+    for reason in getattr(error, "reasons", []) or []:
+        said = [w for w in NEEDS_OFFERED if f" {w} " in f" {reason} "]
+        for w in said:
+            texts = list(NEEDS_OFFERED[w])
+            if w in HUNGRY:
+                texts += [f"heat up the {' '.join(words_of(n))}" for n, e in (world.get("objects") or {}).items()
+                          if "heatable" in (e.get("properties") or [])][:MAX_CANDIDATES]
+            out += [(t, f"'{reason}' read as '{t}'", reason, {}) for t in texts]
+    return out
+
+
 def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[str, str, str, dict]]:
     """(other wording, how it differs in plain words, the words it rests on, the choice of a
     thing among several it makes), best first."""
@@ -177,6 +192,7 @@ def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[
         rest = " ".join(x for x in words if x != w)
         out.append((rest, f"read without '{w}' (not understood)", rest, {}))
     out += _place_phrases(words, unknown)
+    out += _needs(error, world)
     out += _topics([p.strip() for p in _CLAUSE_SPLIT.split(command) if p.strip()], index)
     out += _stopped_wordings(words, index, error)
     parts = [p.strip() for p in _CLAUSE_SPLIT.split(command) if p.strip()]

@@ -104,6 +104,8 @@ request: @V_LEAVE things state
        | sthings @NEED @ACT
 unwant: @DONOT @V_LEAVE things state
       | sthings @SHOULD @NOT @BE? state
+      | @LEFT things state //+ LEFT
+      | sthings @LEFTAS state //+ LEFTAS
 ensure: @V_MAKE @SURE @THAT? wish ((COMMA | @AND | COMMA @AND) wish)*
 wish: sthings (@IS | @SHOULD @BE) not? state
 not: @NOT
@@ -171,7 +173,7 @@ tend: @V_TEND @OUT? things | @V_TEND things @OUT
     | sthings @IS? @ALLOVER -> mess //+ ALLOVER
     | @LEFT things (@OUT | @ALLOVER) -> mess //+ LEFT
     | @LEFT things @OUT? (@ON | @IN) place -> mess //+ LEFT
-    | sthings @IS @LYING (@ON | @IN) place -> mess //+ LYING
+    | sthings @IS? @LYING (@ON | @IN) place -> mess //+ LYING
     | place @HASGOT things (@ON | @IN) @IT -> mess //+ HASGOT
     | @THERE @IS sthings (@MESS | @ALLOVER) -> mess //+ THERE
     | (place | @ROOMSAID) @IS @FULLOF things -> mess //+ FULLOF

@@ -645,10 +645,7 @@ class Resolver:
         a window (``WINDOWS``) that is closed, open. One such thing: it; several: asked, each
         offered as a candidate reading (a fan and a window are two answers two people would not
         agree on); none: asked."""
-        wanted = {" ".join(words_of(w)) for w in WINDOWS}
-        windows = [n for n, e in {**self.world["places"], **self.world["objects"]}.items()
-                   if {" ".join(words_of(w)) for w in [n] + list(e.get("words") or [])} & wanted
-                   and applies(self.world, n, "open") and not holds_now(self.world, n, "open")]
+        windows = self.windows("closed")
         options = {n: "on" for n in self.devices("air") if not holds_now(self.world, n, "on")}
         options.update({n: "open" for n in windows})
         if not options:
@@ -666,6 +663,29 @@ class Resolver:
         self.goal.notes.append(f"'{words}': read as {n} {options[n]} (the air wants moving; docs/household.md, cues)")
         self.want(n, options[n], False, words)
         self.last = [n]
+
+    def windows(self, now: str) -> list[str]:
+        """The windows of the home (lexicon ``WINDOWS``: a thing that opens, named or worded so) that
+        are ``now`` (open or closed) in the world as it is."""
+        wanted = {" ".join(words_of(w)) for w in WINDOWS}
+        return [n for n, e in {**self.world["places"], **self.world["objects"]}.items()
+                if {" ".join(words_of(w)) for w in [n] + list(e.get("words") or [])} & wanted
+                and applies(self.world, n, "open") and holds_now(self.world, n, now)]
+
+    def _either(self, heaters: list[str], windows: dict[str, str], cond: str, words: str) -> None:
+        """ "it's freezing" with a window open: the heating on, or the window closed; two answers two
+        people would not agree on, so asked (each offered), unless the user chose one."""
+        options = {**({"the heating": cond} if heaters else {}), **windows}
+        pick = self.choose.get(words) if len(options) > 1 else next(iter(options))
+        if pick not in options:
+            raise _choice(TranslationError(f"'{words}': which? {' or '.join(f'{n} {c}' for n, c in options.items())}; "
+                                           "say which"), words, list(options))
+        names = heaters if pick == "the heating" else [pick]
+        self.goal.notes.append(f"'{words}': read as {', '.join(names)} {options[pick]}"
+                               + (" (chosen)" if len(options) > 1 else ""))
+        for n in names:
+            self.want(n, options[pick], False, words)
+        self.last = names
 
     def _room(self, st: dict, names: list[str], words: str) -> None:
         """A cue felt in a room the home model lacks ("out in the conservatory"): the home model has
@@ -693,6 +713,11 @@ class Resolver:
         every = self.room_heaters()
         # a cue asks for a change: a heater already as asked is no condition
         heaters = [n for n in every if not holds_now(self.world, n, cond)]
+        # cold with a window open: the window closed is an answer too (warm with one closed: open)
+        windows = self.windows("open" if cond == "on" else "closed")
+        if windows:
+            self._either(heaters, {w: "closed" if cond == "on" else "open" for w in windows}, cond, words)
+            return
         self._room(st, heaters, words)
         if st.get("room") and len(heaters) > 1:
             heaters = [self.choose[words]]

@@ -118,3 +118,20 @@ def without_hedges(tags: list[Tag], notes: list[str]) -> list[Tag]:
             continue
         out.append(t)
     return out
+
+
+def left_lying(tags: list[Tag]) -> list[Tag]:
+    """ "the dishes have been left on the table": a thing said to have been left in a place is
+    disorder said of it, as "lying on the table" (lexicon ``LYING``); "the fridge has been left
+    open", "the lights were left on": a complaint, asking for the other state (as "someone left
+    the fridge open": the grammar's ``unwant``)."""
+    out = list(tags)
+    for k, t in enumerate(out[:-1]):
+        if t.cls != "IS" or t.words.split()[-1] != "left":
+            continue
+        nxt = _base(out[k + 1].cls)
+        if nxt in ("ON", "IN") and k + 2 < len(out) and out[k + 2].cls not in ("END", "COMMA"):
+            out[k] = Tag("LYING", t.value, t.words)
+        elif nxt in ("ADJ", "ON", "OFF", "V_OPEN", "V_SHUT", "V_CLEAN", "V_WARM"):
+            out[k] = Tag("LEFTAS", t.value, t.words)   # "the fridge has been left open": a complaint
+    return out

@@ -10,7 +10,8 @@ from pipflow.errors import TranslationError
 from pipflow.household.language.grammar import NOUN_DUAL
 from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
 from pipflow.household.language.names import named_by_first_word, world_phrases
-from pipflow.household.language.retag import act_before_noun, demonstratives, located, restated_order, without_hedges
+from pipflow.household.language.retag import (act_before_noun, demonstratives, left_lying, located, restated_order,
+                                              without_hedges)
 from pipflow.household.language.rewrites import measures, or_under_negation, particles, without_manner
 from pipflow.household.language.tokens import PUNCT, Tag
 from pipflow.household.language.typos import known_word, meaning_of, transposition_of, typo_of, vocabulary
@@ -112,7 +113,8 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
             cls, value = PHRASES[tuple(words[i:i + n])]
             out.append(Tag(cls, value, text))
         i += n
-    out = restated_order(located(demonstratives(act_before_noun(without_hedges(out, notes))), world, notes), notes)
+    out = left_lying(without_hedges(out, notes))
+    out = restated_order(located(demonstratives(act_before_noun(out)), world, notes), notes)
     if unknown:
         names = sorted(set(world.get("objects") or {}) | set(world.get("places") or {}))
         error = TranslationError(
