@@ -49,7 +49,7 @@ toggle: @V_TOGGLE onoff tthings _here?
       | _vput tthings on (@AND | COMMA @AND) tthings
       | @V_LIGHT tthings _here?
       | _vput tthings @GOING //+ GOING
-      | @V_SHUT tthings @DOWN @ANYMORE? //+ DOWN
+      | @V_SHUT tthings @DOWN @ANYMORE?
 typo_off: @OF
 tthings: tnp ((COMMA | @AND | COMMA @AND) tnp)*
 tnp: sel (@SWITCHPART | @V_TOGGLE)? where? exception?
