@@ -252,6 +252,9 @@ class Builder:
             said = words_under(self.tags, state).split()[-1] if state is not None else ""
             if state is None or said in FOUL_WORDS:   # "the pizza box is starting to smell", "the mug is minging"
                 st["foul"] = True
+            verb = next((self.tag_of(x).words for x in self._tokens(node) if self._cls(x) == "IS"), "")
+            if st["is"] == "cold" and "gone" in verb.split():   # "my tea has gone cold": cold is what went wrong
+                st["gone"] = True
         elif kind == "tend":   # "deal with the dishes"
             st = {"op": "tend", "things": things}
         elif kind == "mess":   # "the bedding is all over the place": said, so a later clause may answer it
@@ -317,6 +320,16 @@ class Builder:
         elif self._has(node, "HEARCUE"):   # "I can't hear myself think (with that radio blaring)"
             t = next(self.tag_of(x) for x in self._tokens(node) if self._cls(x) == "HEARCUE")
             st.update(to="off", cue=f"cannot {t.words}", device="sound")
+        elif self._sub(node, "closecue") is not None:   # "it's close in here": stuffy; "it's sliced" is nothing
+            t = self.tag_of(self._tokens(self._sub(node, "closecue"))[0])
+            if t.words != "close":
+                raise TranslationError(f"'{t.words}' says nothing of how the room feels")
+            st.update(to="on", cue="it is close", device="air")
+        elif self._has(node, "MORE"):   # "make it warmer in here": the change wished for
+            t = next(self.tag_of(x) for x in self._tokens(node) if self._cls(x) == "MORE")
+            kind, to = t.value
+            st.update(to=to, cue=f"it {t.words}", **({"default": LIGHT_CATEGORY_WORD} if kind == "light" else
+                                                     {"device": kind, **({"heating": True} if kind == "heating" else {})}))
         elif self._sub(node, "aircue") is not None:   # "it's stuffy in here": a fan on or a window open
             t = self.tag_of(self._tokens(self._sub(node, "aircue"))[0])
             st.update(to="on", cue=f"it is {t.words}", device="air")
@@ -327,8 +340,9 @@ class Builder:
         else:
             st.update(to="off", cue="not needed")
         room = self._sub(node, "room")
-        if room is not None:   # "it's stuffy out in the conservatory": a room the home model lacks
-            st["room"] = words_under(self.tags, room)
+        said = next((self.tag_of(x).words for x in self._tokens(node) if self._cls(x) == "ROOMSAID"), None)
+        if room is not None or said:   # "it's stuffy out in the conservatory": a room the home model lacks
+            st["room"] = words_under(self.tags, room) if room is not None else said
         return st
 
     def where_instead(self, item: Tree, statements: list[dict], refused: dict | None) -> dict | None:

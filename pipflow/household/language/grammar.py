@@ -142,6 +142,9 @@ cue: @NOBODY @IS? activity (@TO | @ON | @AT)? things? @ANYMORE?
    | @IT @IS (@INTENS | @TOO)* soundcue _here? @WITH @THAT? things (@GOING | on)? //+ SOUNDCUE
    | @SUBJ @CANNOT @HEARCUE _here? (@WITH @THAT? things (@GOING | on)?)? //+ HEARCUE
    | @IT @IS (@INTENS | @TOO)* aircue (_here | room)? //+ AIRCUE
+   | @IT @IS (@INTENS | @TOO)* closecue (_here | room)
+   | @ROOMSAID @IS (@INTENS | @TOO)* (tempcue | tempadj | lightcue | soundcue | aircue | closecue) //+ ROOMSAID
+   | (@V_MAKE @IT | @SUBJ? @WANT @IT (@TO @BE)? | @SHOULD @IT @BE) (@INTENS | @TOO)* @MORE (_here | room)? //+ MORE
    | @IT @IS (@INTENS | @TOO)* (tempcue | tempadj | lightcue | soundcue) room //+ INROOM
    | @SUBJ @IS (@INTENS | @TOO)* (tempcue | tempadj) room //+ INROOM
    | _vput _music on //+ MUSIC
@@ -154,6 +157,7 @@ activity: @ACTIVITY
 lightcue: @LIGHTCUE
 soundcue: @SOUNDCUE
 aircue: @AIRCUE
+closecue: @V_STATE
 hearcue: @HEARCUE
 room: @INROOM
 _wish: @SUBJ? (@WANT | @NEED)

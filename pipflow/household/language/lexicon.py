@@ -39,10 +39,11 @@ REACHABLE = {"open", "closed", "on", "off", "sliced", "clean", "hot"}
 VIA_PROPERTY = {"hot": "heater", "clean": "sink", "sliced": "receptacle"}
 
 #: the last words of names of two words whose first word is what people call the thing ("my
-#: crossword" of crossword_book, "the jigsaw" of jigsaw_puzzle, "the chess" of chess_set): the
+#: crossword" of crossword_book, "the jigsaw" of jigsaw_puzzle, "the photos" of photo_album): the
 #: thing is a form or a carrier of what its first word names. Other names are not read by their
-#: first word: "the wine" is no wine_glass, "dinner" no dinner_plate, "the phone" no phone_charger
-FORM_HEADS = {"book", "books", "puzzle", "set", "album", "game", "kit", "magazine", "pad", "collection", "board"}
+#: first word: "the wine" is no wine_glass, "dinner" no dinner_plate, "the phone" no phone_charger;
+#: "set", "pad", "board" are not forms ("dinner set", "heating pad", "ironing board")
+FORM_HEADS = {"book", "books", "puzzle", "puzzles", "album", "magazine"}
 #: state cues: activities whose absence means "off"; ``None``: only what the sentence names,
 #: a category word: that category of the world when the sentence names nothing
 ACTIVITIES = {"watching": None, "reading": "light", "using": None, "listening": None, "playing": None,
@@ -58,7 +59,8 @@ TEMPERATURE_CUES = {"freezing": "on", "chilly": "on", "nippy": "on", "perishing"
                     "frozen": "on", "roasting": "off", "boiling": "off", "sweltering": "off", "stifling": "off",
                     "baking": "off", "perished": "on", "frozen stiff": "on", "icy": "on", "arctic": "on",
                     "parky": "on", "cold as ice": "on", "like an oven": "off", "like a sauna": "off",
-                    "sweating": "off"}
+                    "sweating": "off", "shivering": "on", "like a fridge": "on", "like an icebox": "on",
+                    "like a freezer": "on", "like the arctic": "on", "like a furnace": "off"}
 #: the adjectives that are temperature cues when said of the room or of a person
 TEMPERATURE_ADJECTIVES = {"cold": "on", "hot": "off", "warm": "off"}
 #: what warms a room (not food): a thing that switches and is named, or worded, by one of these
@@ -193,6 +195,15 @@ WINDOWS = ("window", "windows", "skylight", "fanlight", "casement", "sash window
 #: make it, else the home's sound makers that are on, off (a cue like "it's too loud")
 _add("HEARCUE", "hear myself think,hear myself speak,hear myself,hear a thing,hear anything,hear the telly,"
      "hear the tv,hear the radio,get any peace,think straight,concentrate", "off")
+#: "make it warmer in here", "can it be a bit brighter": a change wished for (value: the kind of
+#: thing it speaks of and the state it asks of it); only after "make it" / "can it be", never a
+#: description ("it's warmer now" asks nothing)
+COMPARATIVES = {"warmer": ("heating", "on"), "less cold": ("heating", "on"), "cooler": ("heating", "off"),
+                "less hot": ("heating", "off"), "brighter": ("light", "on"), "lighter": ("light", "on"),
+                "darker": ("light", "off"), "quieter": ("sound", "off"), "louder": ("sound", "on"),
+                "less stuffy": ("air", "on"), "fresher": ("air", "on")}
+for _w, _v in COMPARATIVES.items():
+    _add("MORE", _w, _v)
 _add("MUSIC", "music,some music,a tune,some tunes,tunes,a song,some songs")
 _add("V_PLAY", "play")
 #: a hot drink wished for ("could murder a cuppa", "I'd love a cup of tea", "make a brew"): the
@@ -340,7 +351,8 @@ HEDGE_WORDS = tuple(h for h in HEDGES if tuple(h.split()) not in PHRASES)
 _add("HEDGE", ",".join(HEDGE_WORDS))
 #: the token classes a hedge may grade: the hedge before one of them is read as nothing
 GRADED = {"ADJ", "LIGHTCUE", "TEMPCUE", "SOUNDCUE", "AIRCUE", "HANDLING", "WANT", "NEED", "MESS", "ALLOVER", "TOO",
-          "INTENS", "HEDGE", "FOULS", "GOING", "V_CLEAN", "V_WARM", "V_OPEN", "V_SHUT", "HEARCUE", "REASON"}
+          "INTENS", "HEDGE", "FOULS", "GOING", "V_CLEAN", "V_WARM", "V_OPEN", "V_SHUT", "HEARCUE", "REASON", "MORE",
+          "V_STATE"}
 _add("TOO", "too,as well")
 #: "it's freezing with that fan going": a thing said to be running
 _add("GOING", "going,running,blasting,blaring,whirring,humming,blaring away,blasting away,going full blast,"

@@ -98,6 +98,7 @@ class Resolver:
         self.said: list[list[str]] = []                        # the things each statement before was about
         self.mess: list[tuple[dict, str]] = []                 # disorder said of things: (statement, words)
         self.foul: set[str] = set()                            # words of observations of foulness
+        self.gone_cold: set[str] = set()                       # words of "X has gone cold"
         self.handled: list[tuple[list[str], str]] = []         # how things are to be handled: (names, words)
 
     # selectors -------------------------------------------------------------------------
@@ -457,6 +458,8 @@ class Resolver:
             self.observed.append((names, st["is"], words))
             if st.get("foul"):
                 self.foul.add(words)
+            if st.get("gone"):
+                self.gone_cold.add(words)
             self.last = names
         elif op == "cue":
             self.cue(st, words)
@@ -947,6 +950,14 @@ class Resolver:
         for names, state, words in list(self.observed):
             if words in self.foul and names:
                 self._foul(names, words)
+                self.observed.remove((names, state, words))
+                continue
+            if words in self.gone_cold and names and all(applies(self.world, n, "hot") for n in names):
+                # "my tea has gone cold": cold is what went wrong with it, said and not answered: heated
+                self.goal.notes.append(f"'{words}': gone cold and nothing done about it: read as heating "
+                                       f"{', '.join(names)} (docs/household.md, cues)")
+                for n in names:
+                    self.want(n, "hot", True, words)
                 self.observed.remove((names, state, words))
                 continue
             if state == "dirty" and names and all(applies(self.world, n, "clean") for n in names):
