@@ -261,3 +261,11 @@ def test_food_gone_cold_is_heated_and_cold_alone_asks_nothing(chalet):
     for command in ("The broth is cold.", "The scarf has gone cold."):
         with pytest.raises(TranslationError, match="asks for nothing"):
             translate(command, chalet)
+
+
+def test_once_a_thing_is_there_is_when_not_what(chalet):
+    assert goal("Put the stereo on the armchair and switch it off once it's there.", chalet) == (
+        {"armchair": ["stereo"]}, {"stereo": ["off"]})
+    # no step before puts it there: a condition on the home, refused
+    with pytest.raises(TranslationError, match="condition on the home"):
+        translate("Switch the stereo off once it is on the armchair.", chalet)

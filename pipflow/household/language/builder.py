@@ -182,6 +182,10 @@ class Builder:
         elif kind == "request" and self._has(node, "ACT"):   # "the saucepan wants a good scrub"
             act = next(t for t in self._tokens(node) if self._cls(t) == "ACT")
             st = {"op": "change", "things": things, "to": str(self.tag_of(act).value)}
+        elif kind == "onceat":   # "switch the laptop off once it is there": where an earlier step puts it
+            st = {"op": "put", "things": things, "once": True}
+            if self._sub(node, "place") is not None:
+                st["to"] = {**self.place(self._sub(node, "place"))}
         elif kind == "once":   # "once they are clean, put them away": a state an earlier step asks
             st = {"op": "change", "things": things, "to": self.state(self._sub(node, "state")), "once": True}
         elif kind in ("request", "after"):   # "after": "once you have washed the pan, ..." (done first)

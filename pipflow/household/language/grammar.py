@@ -21,7 +21,8 @@ from __future__ import annotations
 from pipflow.household.language.lexicon import PHRASES
 
 _RULES = r"""
-start: _sep* item (_sep+ item | _sep* thengap | _sep+ once _sep* item)* _sep*
+start: _sep* item (_sep+ item | _sep* thengap | _sep+ _when _sep* item | _sep* _when)* _sep*
+_when: once | onceat
 _sep: COMMA | END | @AND | @THEN | @BUT
 
 ?item: change | toggle | put | gap | away | trash | chill | request | unwant | ensure | observe | cue | meal | after | reason
@@ -114,6 +115,7 @@ state: @ADJ | @V_OPEN | @V_SHUT | @V_CLEAN | @V_WARM | @V_STATE | on | off | @TO
 
 after: @ONCE @SUBJ @HAVE? state things
 once: @ONCE sthings @IS state
+onceat: @ONCE sthings @IS (@THERE | (@IN | @ON) place)
 wherewas: @STAY
 reason: @IT @IS (@INTENS | @TOO)* @REASON | @SUBJ @IS @REASON | @REASON
 meal: (@V_MAKE | @V_PREPARE | _vstate) @THE? @MEAL _here?

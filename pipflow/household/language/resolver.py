@@ -532,6 +532,20 @@ class Resolver:
         self.goal.notes.append(f"'{words}': what an earlier step does; the plan orders the steps")
         self.last = [n for n, _ in named]
 
+    def once_there(self, st: dict, words: str) -> None:
+        """ "clear the desk onto the settee, and switch the laptop off once it is there": where an
+        earlier step of the command puts the things is when (the plan's order), no condition; a
+        place no step before puts them in is a condition on the home: refused."""
+        named = [n for n, _ in self.objects(st["things"], words)]
+        place = self.place_of(st["to"], words) if st.get("to") else None
+        unput = [n for n in named if n not in self.goal.inside or (place and self.goal.inside[n][0] != place)]
+        if unput or not named:
+            raise TranslationError(f"'{words}': a condition on the home ({', '.join(unput) or 'it'} "
+                                   f"{'in ' + place if place else 'there'}) that no step before brings about; say "
+                                   "what to do, not when")
+        self.goal.notes.append(f"'{words}': what an earlier step does; the plan orders the steps")
+        self.last = named
+
     def where_it_was(self, names: list[str], place: str, said: str, words: str) -> None:
         """ "put the teacake out on the bar where it was": "where it was" restates the place; "it"
         is what this statement moves or what the statement before was about. Read when one of them
@@ -546,6 +560,9 @@ class Resolver:
         self.goal.notes.append(f"'{said}': {place}, where {', '.join(there)} is now (a restatement of the place)")
 
     def move(self, st: dict, words: str) -> None:
+        if st.get("once"):
+            self.once_there(st, words)
+            return
         counted = [c for c in (self.counted(s) for s in st["things"] if not s.get("pronoun")) if c is not None]
         plain = [s for s in st["things"] if self.counted(s) is None]
         if "from" in st:
