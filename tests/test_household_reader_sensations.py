@@ -269,3 +269,30 @@ def test_once_a_thing_is_there_is_when_not_what(chalet):
     # no step before puts it there: a condition on the home, refused
     with pytest.raises(TranslationError, match="condition on the home"):
         translate("Switch the stereo off once it is on the armchair.", chalet)
+
+
+def test_how_strangers_say_the_room_feels(chalet):
+    fan_only = _chalet(**NO_SKYLIGHT)
+    # an interjection is a pause; "it's" left out; a tag question asks nothing
+    assert goal("Blimey it's cold in here.", chalet) == ({}, {"wood_burner": ["on"]})
+    assert goal("Freezing in here!", chalet) == ({}, {"wood_burner": ["on"]})
+    assert goal("Bit dark in here, isn't it?", _chalet(**ONE_LAMP_OFF)) == ({}, {"standard_lamp": ["on"]})
+    assert goal("It's pitch black in here.", _chalet(**ONE_LAMP_OFF)) == ({}, {"standard_lamp": ["on"]})
+    assert goal("I can barely see a thing.", _chalet(**ONE_LAMP_OFF)) == ({}, {"standard_lamp": ["on"]})
+    # a thing said to be too loud: it off
+    assert goal("That stereo is far too loud.", chalet) == ({}, {"stereo": ["off"]})
+    assert goal("Can we get some air in here?", fan_only) == ({}, {"ceiling_fan": ["on"]})
+    # a cue with nothing to change is the reason for a request of the same state, else asked
+    assert goal("I'm roasting, can you switch the burner off?", chalet) == ({}, {"wood_burner": ["off"]})
+    with pytest.raises(TranslationError, match="no room heater that is on"):
+        translate("It's roasting in here.", fan_only)
+    # disorder said with where it lies; food that needs heating up
+    assert goal("There's dirty crockery all over the table.", chalet) == (
+        {}, {"porringer": ["clean"], "teacup": ["clean"]})
+    assert goal("My broth needs heating up.", chalet) == ({}, {"broth": ["hot"], "cold_store": ["closed"]})
+
+
+def test_a_cue_answered_by_a_request_in_the_command_is_its_reason(chalet):
+    open_skylight = _chalet(**SKYLIGHT_OPEN)
+    assert goal("It's freezing in here, shut the skylight.", open_skylight) == ({}, {"skylight": ["closed"]})
+    assert goal("It's freezing in here, light the wood burner.", open_skylight) == ({}, {"wood_burner": ["on"]})

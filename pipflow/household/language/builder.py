@@ -334,6 +334,8 @@ class Builder:
             kind, to = t.value
             st.update(to=to, cue=f"it {t.words}", **({"default": LIGHT_CATEGORY_WORD} if kind == "light" else
                                                      {"device": kind, **({"heating": True} if kind == "heating" else {})}))
+        elif self._has(node, "FRESHAIR"):   # "can we get some air in here?"
+            st.update(to="on", cue="air wanted", device="air")
         elif self._sub(node, "aircue") is not None:   # "it's stuffy in here": a fan on or a window open
             t = self.tag_of(self._tokens(self._sub(node, "aircue"))[0])
             st.update(to="on", cue=f"it is {t.words}", device="air")

@@ -23,7 +23,7 @@ from pipflow.household.language.lexicon import PHRASES
 _RULES = r"""
 start: _sep* item (_sep+ item | _sep* thengap | _sep+ _when _sep* item | _sep* _when)* _sep*
 _when: once | onceat
-_sep: COMMA | END | @AND | @THEN | @BUT
+_sep: COMMA | END | @AND | @THEN | @BUT | @EXCL
 
 ?item: change | toggle | put | gap | away | trash | chill | request | unwant | ensure | observe | cue | meal | after | reason
       | tend | notvia | usevia
@@ -101,7 +101,7 @@ request: @V_LEAVE things state
        | @V_MAKE things state
        | @SUBJ? (@WANT | @NEED) things (@TO @BE)? state @UP?
        | sthings @SHOULD @BE? state @TOO?
-       | sthings @NEED state
+       | sthings @NEED state @UP?
        | sthings @NEED @ACT
 unwant: @DONOT @V_LEAVE things state
       | sthings @SHOULD @NOT @BE? state
@@ -144,6 +144,9 @@ cue: @NOBODY @IS? activity (@TO | @ON | @AT)? things? @ANYMORE?
    | @IT @IS (@INTENS | @TOO)* soundcue _here? @WITH @THAT? things (@GOING | on)? //+ SOUNDCUE
    | @SUBJ @CANNOT @HEARCUE _here? (@WITH @THAT? things (@GOING | on)?)? //+ HEARCUE
    | @IT @IS (@INTENS | @TOO)* aircue (_here | room)? //+ AIRCUE
+   | sthings @IS (@INTENS | @TOO)* soundcue //+ SOUNDCUE
+   | (_wish | _vput) @FRESHAIR _here? //+ FRESHAIR
+   | @HAVE _music //+ MUSIC
    | @IT @IS (@INTENS | @TOO)* closecue (_here | room)
    | @ROOMSAID @IS (@INTENS | @TOO)* (tempcue | tempadj | lightcue | soundcue | aircue | closecue) //+ ROOMSAID
    | (@V_MAKE @IT | @SUBJ? @WANT @IT (@TO @BE)? | @SHOULD @IT @BE) (@INTENS | @TOO)* @MORE (_here | room)? //+ MORE
@@ -182,6 +185,8 @@ tend: @V_TEND @OUT? things | @V_TEND things @OUT
     | sthings @IS? @LYING (@ON | @IN) place -> mess //+ LYING
     | place @HASGOT things (@ON | @IN) @IT -> mess //+ HASGOT
     | @THERE @IS sthings (@MESS | @ALLOVER) -> mess //+ THERE
+    | @THERE @IS sthings @ALLOVER place -> mess //+ THERE
+    | sthings @IS? @ALLOVER place -> mess //+ ALLOVER
     | (place | @ROOMSAID) @IS @FULLOF things -> mess //+ FULLOF
 
 keep: @V_LEAVE things @STAY

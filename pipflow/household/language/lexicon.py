@@ -49,7 +49,8 @@ FORM_HEADS = {"book", "books", "puzzle", "puzzles", "album", "magazine"}
 ACTIVITIES = {"watching": None, "reading": "light", "using": None, "listening": None, "playing": None,
               "working": None, "looking": None, "studying": "light", "cooking": None}
 #: "it is (too) bright" -> off, "it is dark" -> on; both speak of the world's category "light"
-LIGHT_CUES = {"bright": "off", "sunny": "off", "dark": "on", "gloomy": "on", "dim": "on"}
+LIGHT_CUES = {"bright": "off", "sunny": "off", "dark": "on", "gloomy": "on", "dim": "on", "pitch black": "on",
+              "pitch dark": "on", "murky": "on", "like a cave": "on"}
 LIGHT_CATEGORY_WORD = "light"
 #: "it's freezing in here", "I'm cold": the home's room heaters on; "it's roasting in here": the
 #: room heaters that are on, off. Words that say how warm the *room* is ("cold" and "hot" also
@@ -148,7 +149,7 @@ _add("V_TEND", "deal with,see to,take care of,sort,sort out,handle,attend to,do 
 _add("MESS", "all over the place,piling up,piled up,lying around,lying about,left out,scattered about,"
      "scattered around,strewn about,strewn around,a mess,in a mess,messy,a tip")
 for _w in LIGHT_CUES:
-    PHRASES[(_w,)] = ("LIGHTCUE", LIGHT_CUES[_w])
+    PHRASES[tuple(_w.split())] = ("LIGHTCUE", LIGHT_CUES[_w])
 _add("SEE", "see,read,see anything,read anything")
 #: "I'm trying to sleep", "going to sleep": the lights off (a cue like "it is too bright")
 _add("SLEEPCUE", "trying to sleep,trying to nap,trying to get some sleep,trying to get to sleep,going to sleep,"
@@ -204,6 +205,8 @@ COMPARATIVES = {"warmer": ("heating", "on"), "less cold": ("heating", "on"), "co
                 "less stuffy": ("air", "on"), "fresher": ("air", "on")}
 for _w, _v in COMPARATIVES.items():
     _add("MORE", _w, _v)
+#: "can we get some air in here?": the air wants moving (as "it's stuffy")
+_add("FRESHAIR", "some air,some fresh air,fresh air,a bit of air,a breeze,a bit of a breeze,some air in here")
 _add("MUSIC", "music,some music,a tune,some tunes,tunes,a song,some songs")
 _add("V_PLAY", "play")
 #: a hot drink wished for ("could murder a cuppa", "I'd love a cup of tea", "make a brew"): the
@@ -333,12 +336,15 @@ _add("HANDLING", "heavy,bulky,awkward,fragile,delicate,breakable,slippery,leakin
 _add("FORONE", "for one of you,for one robot,for one person,for one,to carry alone,to lift alone,on your own,"
      "for one of them,to lift on your own,to carry on your own")
 #: exclamations that ask for nothing by themselves ("What a tip.", "Ugh, ..."): reasons
-_add("REASON", "what a mess,what a tip,what a state,what a pigsty,what a dump,ugh,urgh,ew,eww,yuck,blimey,brr,brrr,"
-     "phew,oof,ooh,oh dear,oh,gosh,cor,crikey,what a racket,what a din,what a noise")
+_add("REASON", "what a mess,what a tip,what a state,what a pigsty,what a dump,what a racket,what a din,what a noise")
+#: interjections: they open or close a sentence and say nothing ("Blimey it's cold", "Ugh, ..."): read
+#: as a pause, like a comma (a sentence of nothing else asks for nothing, and is refused)
+_add("EXCL", "ugh,urgh,ew,eww,yuck,blimey,brr,brrr,phew,oof,ooh,oh dear,oh,gosh,cor,crikey,jeez,sheesh,eek,bah")
 _add("DONOT", "do not,does not,did not,no longer,dont")
 _add("ANYMORE", "anymore,any more,any longer,for now,for the night,tonight,right now")
 _add("NOBODY", "nobody,no one,noone,none of us")
-_add("INTENS", "very,so,really,quite,rather,extremely,pretty,a bit,a little,way too,much too,far too,getting")
+_add("INTENS", "very,so,really,quite,rather,extremely,pretty,a bit,a little,way too,much too,far too,getting,bit,"
+     "bit of a,a bit of a")
 #: intensifiers and hedges that grade the word after them and say nothing of what is wanted ("it's
 #: ever so dark", "absolutely freezing", "proper cold", "dead noisy", "I could really go for"): read
 #: as nothing before a word they may grade (a state, a cue, a wish, "too"); anywhere else they are
@@ -357,7 +363,7 @@ _add("TOO", "too,as well")
 #: "it's freezing with that fan going": a thing said to be running
 _add("GOING", "going,running,blasting,blaring,whirring,humming,blaring away,blasting away,going full blast,"
      "humming away,whirring away,droning on,droning away,on full blast,at full blast", "on")
-_add("CANNOT", "can not,could not,cannot")
+_add("CANNOT", "can not,could not,cannot,can barely,can hardly,could barely,could hardly,can scarcely")
 _add("SOMEWHERE", "somewhere,some place,someplace")
 #: words for the home itself or a room of it, which no world lists as a place: "in here", "all
 #: over the flat", "over here" (where a cue is felt, or a mess lies). A world that has a thing so
@@ -557,8 +563,11 @@ def normalize(text: str) -> str:
     t = re.sub(r"(?<!night)(?<!day)(?<!week)(?<!morning)(?<!evening)(?<!weekend)"
                r"'s(?=\s+(?:still\s+|not\s+|too\s+|very\s+|so\s+)?(?:" + "|".join(_STATE_WORDS) + r")\b)", " is", t)
     # "the melon's too heavy", "the room's ever so stuffy": a possessive is never followed by a degree
-    t = re.sub(r"'s(?=\s+(?:too|very|so|really|quite|rather|ever so|absolutely|dead|proper|awfully|far too|way too)\s)",
-               " is", t)
+    t = re.sub(r"'s(?=\s+(?:too|very|so|really|quite|rather|ever so|absolutely|dead|proper|awfully|far too|way too|full|"
+               r"covered|like)\s)", " is", t)
+    # a tag question closing a sentence asks nothing: "bit dark in here, isn't it?"
+    t = re.sub(r",?\s*\b(?:is|isn't|isnt|are|aren't|arent|was|wasn't)\s*(?:n't\s+)?(?:it|they|not it)\s*(?=\?)", " ", t)
+    t = re.sub(r",?\s*\binnit\b", " ", t)
     t = re.sub(r"'s(?=\s+(?:been|gone|got|become|left)\b)", " has", t)   # "the console's been on"
     t = re.sub(r"'s(?=\s+still\s+(?:been|gone|got)\b)", " has", t)   # "the table's still got ..."
     t = re.sub(r"'s(?=\s+[a-z]{3,}ing\b)", " is", t)   # "the watering can's leaking"

@@ -27,6 +27,7 @@ Rules it applies (docs/household.md lists them for users):
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Callable
 
 from pipflow.errors import Refusal, TranslationError
 from pipflow.household.language.lexicon import (BIN_KINDS, COLD, DEVICE_NOUNS, DEVICES, INDEFINITE, LAUNDRY, LAUNDRY_PLACES, MASS_NOUNS,
@@ -44,6 +45,10 @@ def _choice(error: TranslationError, words: str, names: list[str]) -> Translatio
     (:mod:`pipflow.household.language.candidates`)."""
     error.choices = (words, list(names))  # type: ignore[attr-defined]
     return error
+
+
+def _raise(error: Exception) -> None:
+    raise error
 
 
 def holds_now(world: dict, name: str, cond: str) -> bool:
@@ -99,6 +104,8 @@ class Resolver:
         self.mess: list[tuple[dict, str]] = []                 # disorder said of things: (statement, words)
         self.foul: set[str] = set()                            # words of observations of foulness
         self.gone_cold: set[str] = set()                       # words of "X has gone cold"
+        # a cue of warmth decided at the end: (state, words, what to do when no request answers it)
+        self.unanswered: list[tuple[str, str, Callable[[], None]]] = []
         self.handled: list[tuple[list[str], str]] = []         # how things are to be handled: (names, words)
 
     # selectors -------------------------------------------------------------------------
@@ -696,6 +703,11 @@ class Resolver:
         """ "it's freezing" with a window open: the heating on, or the window closed; two answers two
         people would not agree on, so asked (each offered), unless the user chose one."""
         options = {**({"the heating": cond} if heaters else {}), **windows}
+        asked = [n for n, c in windows.items() if any(x.cond == c and x.explicit and x.words != words
+                                                      for x in self.goal.state.get(n, {}).values())]
+        if asked:   # "it's freezing, shut the skylight": the cue is the reason
+            self.goal.notes.append(f"'{words}' is the reason for {', '.join(asked)} {windows[asked[0]]}")
+            return
         pick = self.choose.get(words) if len(options) > 1 else next(iter(options))
         if pick not in options:
             raise _choice(TranslationError(f"'{words}': which? {' or '.join(f'{n} {c}' for n, c in options.items())}; "
@@ -735,16 +747,19 @@ class Resolver:
         heaters = [n for n in every if not holds_now(self.world, n, cond)]
         # cold with a window open: the window closed is an answer too (warm with one closed: open)
         windows = self.windows("open" if cond == "on" else "closed")
-        if windows:
-            self._either(heaters, {w: "closed" if cond == "on" else "open" for w in windows}, cond, words)
+        if windows:   # decided at the end: a request of the heating's state makes the cue its reason
+            answers = {w: "closed" if cond == "on" else "open" for w in windows}
+            self.unanswered.append((cond, words, lambda: self._either(heaters, answers, cond, words)))
             return
         self._room(st, heaters, words)
         if st.get("room") and len(heaters) > 1:
             heaters = [self.choose[words]]
-        if not heaters:
-            raise TranslationError(f"'{words}': which thing? this home has no room heater "
-                                   f"{'that is on ' if cond == 'off' else 'that is off ' if every else ''}(a heater, "
-                                   "radiator, fire or log burner that switches); say what to switch")
+        if not heaters:   # decided at the end: "I'm roasting, switch the fire off" gives the reason
+            why = (f"'{words}': which thing? this home has no room heater "
+                   f"{'that is on ' if cond == 'off' else 'that is off ' if every else ''}(a heater, "
+                   "radiator, fire or log burner that switches); say what to switch")
+            self.unanswered.append((cond, words, lambda: _raise(TranslationError(why))))
+            return
         self.goal.notes.append(f"'{words}': read as the room's heating {cond} ({', '.join(heaters)}; "
                                "docs/household.md, cues)")
         for n in heaters:
@@ -955,6 +970,13 @@ class Resolver:
         for st in order["statements"]:
             self.statement(st)
         self._apply_cue_defaults()
+        for cond, words, otherwise in self.unanswered:   # the reason for a request of the same state, else
+            asked = [n for n, preds in self.goal.state.items()
+                     if any(c.cond == cond and c.explicit and c.words != words for c in preds.values())]
+            if not asked:
+                otherwise()
+                continue
+            self.goal.notes.append(f"'{words}' is the reason for {', '.join(asked)} {cond}")
         if self.picked:
             obj, words = next(iter(self.picked.items()))
             raise TranslationError(f"'{words}': where to? name a place for {obj} (e.g. 'in the fridge')")

@@ -135,3 +135,29 @@ def left_lying(tags: list[Tag]) -> list[Tag]:
         elif nxt in ("ADJ", "ON", "OFF", "V_OPEN", "V_SHUT", "V_CLEAN", "V_WARM"):
             out[k] = Tag("LEFTAS", t.value, t.words)   # "the fridge has been left open": a complaint
     return out
+
+
+#: what a sentence that leaves out "it's" opens with: how much, then how the room feels ("bit dark
+#: in here", "too loud", "freezing in here")
+_FELT = {"INTENS", "TOO", "TEMPCUE", "LIGHTCUE", "SOUNDCUE", "AIRCUE"}
+_CUES = {"TEMPCUE", "LIGHTCUE", "SOUNDCUE", "AIRCUE"}
+
+
+def elided_it_is(tags: list[Tag], notes: list[str]) -> list[Tag]:
+    """ "Bit dark in here", "freezing in here!": a sentence that opens with how the room feels has
+    left out "it's"; read with it (only when a cue word of the room follows)."""
+    out: list[Tag] = []
+    k = 0
+    while k < len(tags):
+        t = tags[k]
+        opens = not out or out[-1].cls in ("END", "COMMA", "EXCL")
+        if opens and t.cls in _FELT:
+            j = k
+            while j < len(tags) and tags[j].cls in ("INTENS", "TOO"):
+                j += 1
+            if j < len(tags) and tags[j].cls in _CUES:
+                notes.append(f"'{' '.join(x.words for x in tags[k:j + 1])}': read as 'it is ...'")
+                out += [Tag("IT", None, "(it)"), Tag("IS", None, "(is)")]
+        out.append(t)
+        k += 1
+    return out

@@ -17,7 +17,7 @@ from pipflow.language.numbers import read_number
 #: lexicon classes of function words: alone in a clause they carry nothing an order needs
 #: (and words that only colour a cue or a time: "for the night", "in here", "late", "really")
 GLUE_CLASSES = {"THE", "THAT", "IT", "IS", "SUBJ", "BE", "HAVE", "SHOULD", "INTENS", "OF", "AT", "IN", "ON", "OFF",
-                "ANYMORE", "REASON", "HERE", "HEDGE",
+                "ANYMORE", "REASON", "HERE", "HEDGE", "EXCL",
                 "OUT", "UP", "TO", "FROM", "WITH", "AND", "SEE", "SURE"}
 #: marks that end a clause, for setting content-free clauses aside
 CLAUSE_MARKS = {",", ".", ";", "!", "?", ":"}

@@ -10,8 +10,8 @@ from pipflow.errors import TranslationError
 from pipflow.household.language.grammar import NOUN_DUAL
 from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
 from pipflow.household.language.names import named_by_first_word, world_phrases
-from pipflow.household.language.retag import (act_before_noun, demonstratives, left_lying, located, restated_order,
-                                              without_hedges)
+from pipflow.household.language.retag import (act_before_noun, demonstratives, elided_it_is, left_lying, located,
+                                              restated_order, without_hedges)
 from pipflow.household.language.rewrites import measures, or_under_negation, particles, without_manner
 from pipflow.household.language.tokens import PUNCT, Tag
 from pipflow.household.language.typos import known_word, meaning_of, transposition_of, typo_of, vocabulary
@@ -113,7 +113,7 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
             cls, value = PHRASES[tuple(words[i:i + n])]
             out.append(Tag(cls, value, text))
         i += n
-    out = left_lying(without_hedges(out, notes))
+    out = elided_it_is(left_lying(without_hedges(out, notes)), notes)
     out = restated_order(located(demonstratives(act_before_noun(out)), world, notes), notes)
     if unknown:
         names = sorted(set(world.get("objects") or {}) | set(world.get("places") or {}))
