@@ -296,3 +296,16 @@ def test_a_cue_answered_by_a_request_in_the_command_is_its_reason(chalet):
     open_skylight = _chalet(**SKYLIGHT_OPEN)
     assert goal("It's freezing in here, shut the skylight.", open_skylight) == ({}, {"skylight": ["closed"]})
     assert goal("It's freezing in here, light the wood burner.", open_skylight) == ({}, {"wood_burner": ["on"]})
+
+
+def test_a_thing_by_the_common_word_of_its_kind(chalet):
+    # "a window" where the window is the skylight; "the heater" where it is the wood burner (never a
+    # typo of "heated"); "the radio" where it is the stereo; "get the fire going / lit"
+    assert goal("Open a window, it's stuffy.", chalet) == ({}, {"skylight": ["open"]})
+    assert goal("Turn the heater on.", chalet) == ({}, {"wood_burner": ["on"]})
+    assert goal("Switch the radio off.", chalet) == ({}, {"stereo": ["off"]})
+    assert goal("Could you get the fire going?", chalet) == ({}, {"wood_burner": ["on"]})
+    assert goal("Get the wood burner lit, would you?", chalet) == ({}, {"wood_burner": ["on"]})
+    # a kind the home has nothing of is still refused, quoted
+    with pytest.raises(TranslationError, match="'kettle'"):
+        translate("Put the kettle on the bench.", chalet)

@@ -361,7 +361,7 @@ GRADED = {"ADJ", "LIGHTCUE", "TEMPCUE", "SOUNDCUE", "AIRCUE", "HANDLING", "WANT"
           "V_STATE"}
 _add("TOO", "too,as well")
 #: "it's freezing with that fan going": a thing said to be running
-_add("GOING", "going,running,blasting,blaring,whirring,humming,blaring away,blasting away,going full blast,"
+_add("GOING", "going,running,blasting,blaring,whirring,humming,lit,on the go,blaring away,blasting away,going full blast,"
      "humming away,whirring away,droning on,droning away,on full blast,at full blast", "on")
 _add("CANNOT", "can not,could not,cannot,can barely,can hardly,could barely,could hardly,can scarcely")
 _add("SOMEWHERE", "somewhere,some place,someplace")

@@ -4,7 +4,7 @@ word sequences -> the things they may name. Read by the tagger, the typo reader,
 the candidate readings; kept per world while its names are unchanged."""
 from __future__ import annotations
 
-from pipflow.household.language.lexicon import FILLER, FORM_HEADS, PHRASES, plurals, words_of
+from pipflow.household.language.lexicon import DEVICES, FILLER, FORM_HEADS, PHRASES, WINDOWS, plurals, words_of
 from pipflow.language.asides import FUNCTION_WORDS
 from pipflow.language.numbers import read_number
 
@@ -114,3 +114,27 @@ def named_by_first_word(world: dict, word: str) -> list[str]:
                         and name not in out:
                     out.append(name)
     return out
+
+
+#: the kinds of thing the lexicon knows by a common word ("the heater", "a window", "the radio"):
+#: the device lists (room heaters, sound makers, drink makers, screens, fans) and windows
+KINDS = tuple(DEVICES.values()) + (WINDOWS,)
+
+
+def things_of_kind(world: dict, word: str) -> tuple[list[str], bool]:
+    """The things of the world of the kind a common word names ("window" -> the skylight, when the
+    skylight is named or worded by a word of the same lexicon list, e.g. "skylight"), and whether
+    the word is a plural. For a word the tagger knows nowhere else: "open a window" in a home whose
+    window is called the skylight. No such thing: empty."""
+    forms = {word: False} | {word[:-len(end)] + repl: True for end, repl in (("ies", "y"), ("es", ""), ("s", ""))
+                             if word.endswith(end) and len(word) > len(end) + 2}
+    for kind in KINDS:
+        phrases = {" ".join(words_of(p)) for p in kind}
+        said = [f for f in forms if f in phrases]
+        if not said:
+            continue
+        found = [n for table in (world.get("objects") or {}, world.get("places") or {}) for n, e in table.items()
+                 if {" ".join(words_of(w)) for w in [n] + list((e or {}).get("words") or [])} & phrases]
+        if found:
+            return list(dict.fromkeys(found)), forms[said[0]]
+    return [], False

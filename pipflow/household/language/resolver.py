@@ -675,6 +675,16 @@ class Resolver:
         windows = self.windows("closed")
         options = {n: "on" for n in self.devices("air") if not holds_now(self.world, n, "on")}
         options.update({n: "open" for n in windows})
+        # decided at the end: "open a window, it's stuffy" asks the window; the cue is its reason
+        self.unanswered.append(("", words, lambda: self._air(st, options, words)))
+
+    def _air(self, st: dict, options: dict[str, str], words: str) -> None:
+        """:meth:`air_cue`, when no request of the command answers the cue."""
+        asked = [n for n, c in options.items() if any(x.cond == c and x.explicit and x.words != words
+                                                      for x in self.goal.state.get(n, {}).values())]
+        if asked:
+            self.goal.notes.append(f"'{words}' is the reason for {', '.join(asked)} {options[asked[0]]}")
+            return
         if not options:
             raise TranslationError(f"'{words}': which thing? this home has no fan that is off or window that is "
                                    "closed; say what to do")

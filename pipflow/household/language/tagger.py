@@ -9,7 +9,7 @@ from __future__ import annotations
 from pipflow.errors import TranslationError
 from pipflow.household.language.grammar import NOUN_DUAL
 from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
-from pipflow.household.language.names import named_by_first_word, world_phrases
+from pipflow.household.language.names import named_by_first_word, things_of_kind, world_phrases
 from pipflow.household.language.retag import (act_before_noun, demonstratives, elided_it_is, left_lying, located,
                                               restated_order, without_hedges)
 from pipflow.household.language.rewrites import measures, or_under_negation, particles, without_manner
@@ -30,13 +30,14 @@ def _match(words: list[str], i: int, table: dict, longest: int) -> int:
     return 0
 
 
-def repaired(words: list[str], index: dict, vocab: set[str], notes: list[str]) -> list[str]:
+def repaired(words: list[str], index: dict, vocab: set[str], notes: list[str], world: dict) -> list[str]:
     """The words with their typos read: a word known nowhere that is two neighbouring letters of
     exactly one grammar word swapped ("adn"), or close to exactly one known word ("fridgge"), is
-    read as that word (a note says so); two competing repairs: left as typed (refused, offered)."""
+    read as that word (a note says so); two competing repairs: left as typed (refused, offered). A
+    word that names a kind of thing of this home ("heater", :func:`things_of_kind`) is no typo."""
     words = list(words)
     for k, w in enumerate(words):
-        if known_word(w, index, vocab) or len(w) < 3 or not w.isalpha():
+        if known_word(w, index, vocab) or len(w) < 3 or not w.isalpha() or things_of_kind(world, w)[0]:
             continue
         swapped = transposition_of(w)
         if len(swapped) == 1 and set(typo_of(w, vocab)) <= set(swapped):
@@ -60,7 +61,7 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
     words = or_under_negation(measures(without_manner(words_of(command), notes), index, notes), notes)
     words = particles(words, lambda x: x.isalpha() and not known_word(x, index, vocab), notes)
     said = list(words)   # as typed: a repair that still names nothing is quoted as typed
-    words = repaired(words, index, vocab, notes)
+    words = repaired(words, index, vocab, notes, world)
     longest_w = max((len(k) for k in index), default=1)
     longest_l = max(len(k) for k in PHRASES)
     longest_f = max(len(k) for k in FILLER)
@@ -92,6 +93,13 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
             i += nf
             continue
         if nw == 0 and nl == 0:
+            kind, plural = things_of_kind(world, w) if w.isalpha() and len(w) >= 3 else ([], False)
+            if kind:   # "open a window" where the window is the skylight: the things of that kind
+                notes.append(f"read {w!r} as {', '.join(kind)} (of its kind)")
+                out.append(Tag("NOUN", None, w, [{"kind": "object" if n in (world.get("objects") or {}) else "place",
+                                                   "name": n, "plural": plural} for n in kind]))
+                i += 1
+                continue
             whole = named_by_first_word(world, w) if w.isalpha() and len(w) >= 3 else []
             if len(whole) == 1:   # "my crossword" of crossword_book: the one thing it is the form of
                 notes.append(f"read {w!r} as {whole[0]} (the first word of its name)")
