@@ -309,3 +309,10 @@ def test_a_thing_by_the_common_word_of_its_kind(chalet):
     # a kind the home has nothing of is still refused, quoted
     with pytest.raises(TranslationError, match="'kettle'"):
         translate("Put the kettle on the bench.", chalet)
+
+
+def test_what_things_need_said_otherwise(chalet):
+    assert goal("The crockery needs doing.", chalet) == ({}, {"porringer": ["clean"], "teacup": ["clean"]})
+    assert goal("The broth could do with warming up.", chalet) == ({}, {"broth": ["hot"], "cold_store": ["closed"]})
+    assert goal("Put the scarf away, it's cluttering up the armchair.", chalet) == ({"peg_rail": ["scarf"]}, {})
+    assert goal("The scarf is cluttering up the armchair.", chalet) == ({"peg_rail": ["scarf"]}, {})

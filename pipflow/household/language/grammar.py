@@ -102,6 +102,7 @@ request: @V_LEAVE things state
        | @SUBJ? (@WANT | @NEED) things (@TO @BE)? state @UP?
        | sthings @SHOULD @BE? state @TOO?
        | sthings @NEED state @UP?
+       | sthings @WANT state @UP?
        | sthings @NEED @ACT
 unwant: @DONOT @V_LEAVE things state
       | sthings @SHOULD @NOT @BE? state
@@ -183,6 +184,8 @@ tend: @V_TEND @OUT? things | @V_TEND things @OUT
     | @LEFT things (@OUT | @ALLOVER) -> mess //+ LEFT
     | @LEFT things @OUT? (@ON | @IN) place -> mess //+ LEFT
     | sthings @IS? @LYING (@ON | @IN) place -> mess //+ LYING
+    | sthings @IS @CLUTTER place -> mess //+ CLUTTER
+    | sthings @NEED @DOING //+ DOING
     | place @HASGOT things (@ON | @IN) @IT -> mess //+ HASGOT
     | @THERE @IS sthings (@MESS | @ALLOVER) -> mess //+ THERE
     | @THERE @IS sthings @ALLOVER place -> mess //+ THERE

@@ -123,6 +123,11 @@ _add("LYING", "lying,left lying,lying there,sitting there")
 #: "the fridge has been left open": a state complained of (a class the tagger gives "has been
 #: left" before a state word: :func:`pipflow.household.language.retag.left_lying`)
 _add("LEFTAS", "left as is")
+#: "the crockery needs doing": what the things need, as "deal with" (lexicon ``V_TEND``)
+_add("DOING", "doing,seeing to,sorting,sorting out,dealing with,attention,some attention")
+#: "the scarf is cluttering up the armchair": a thing said to be in the way somewhere, disorder
+_add("CLUTTER", "cluttering up,cluttering,clogging up,taking up room on,taking up space on,in the way on,"
+     "hogging")
 #: "the table has still got the dirty dishes on it": what a place holds, said as disorder
 _add("HASGOT", "has still got,have still got,still has,still have,still has got,still have got,"
      "still got")
