@@ -35,8 +35,11 @@ import re
 from typing import Callable
 
 from pipflow.errors import PipflowError, TranslationError
-from pipflow.household.language.lexicon import LEAVING_REASONS, words_of
-from pipflow.household.language.parser import _vocabulary, known_word, tag, without_duration, world_phrases
+from pipflow.household.language.lexicon import HUNGRY, LEAVING_REASONS, NEEDS_OFFERED, words_of
+from pipflow.household.language.names import world_phrases
+from pipflow.household.language.rewrites import without_duration
+from pipflow.household.language.tagger import tag
+from pipflow.household.language.typos import known_word, vocabulary
 from pipflow.language.asides import FUNCTION_WORDS, near_operative
 from pipflow.language.spelling import distance
 
@@ -116,6 +119,21 @@ def _stopped_wordings(words: list[str], index: dict, error: TranslationError) ->
     return out
 
 
+def _needs(error: TranslationError, world: dict) -> list[tuple[str, str, str, dict]]:
+    """ "I'm shattered", "I'm parched", "I'm starving" said alone: what answers it in this home
+    (lexicon ``NEEDS_OFFERED``; hungry: each food that heats, named), offered, never acted on."""
+    out: list[tuple[str, str, str, dict]] = []
+    for reason in getattr(error, "reasons", []) or []:
+        said = [w for w in NEEDS_OFFERED if f" {w} " in f" {reason} "]
+        for w in said:
+            texts = list(NEEDS_OFFERED[w])
+            if w in HUNGRY:
+                texts += [f"heat up the {' '.join(words_of(n))}" for n, e in (world.get("objects") or {}).items()
+                          if "heatable" in (e.get("properties") or [])][:MAX_CANDIDATES]
+            out += [(t, f"'{reason}' read as '{t}'", reason, {}) for t in texts]
+    return out
+
+
 def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[str, str, str, dict]]:
     """(other wording, how it differs in plain words, the words it rests on, the choice of a
     thing among several it makes), best first."""
@@ -126,7 +144,7 @@ def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[
         out += [(command, f"'{said}' read as {name}", name, {said: name}) for name in names]
     words = words_of(command)
     index = world_phrases(world)
-    vocab = _vocabulary(index)
+    vocab = vocabulary(index)
     modifiers = _modifier_names(world)
     heads = {w: names for w, names in _modifier_names(world, -1).items() if len(names) > 1}
     try:
@@ -173,6 +191,9 @@ def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[
     for w in droppable:
         rest = " ".join(x for x in words if x != w)
         out.append((rest, f"read without '{w}' (not understood)", rest, {}))
+    out += _place_phrases(words, unknown)
+    out += _needs(error, world)
+    out += _topics([p.strip() for p in _CLAUSE_SPLIT.split(command) if p.strip()], index)
     out += _stopped_wordings(words, index, error)
     parts = [p.strip() for p in _CLAUSE_SPLIT.split(command) if p.strip()]
     if len(parts) > 1:
@@ -181,6 +202,53 @@ def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[
             if ws and not any(near_operative(x) for x in ws):
                 rest = _CLAUSE_SPLIT.sub(" , ", command.replace(part, " ", 1))
                 out.append((rest, f"read without '{' '.join(ws)}' (not understood)", " ".join(words_of(rest)), {}))
+    return out
+
+
+#: words that lead a phrase of where ("over by the piano", "out in the orangery"): a phrase whose
+#: last word names nothing says where a cue is felt, or where a thing is, in words the home lacks
+_WHERE_LEADS = {"by", "over", "near", "beside", "next", "to", "in", "at", "on", "behind", "under", "out", "up", "down",
+                "round", "around", "from"}
+_DETERMINERS = {"the", "a", "an", "my", "our", "your", "that", "this", "his", "her", "their"}
+
+
+def _place_phrases(words: list[str], unknown: list[str]) -> list[tuple[str, str, str, dict]]:
+    """ "it's a bit gloomy over by the piano": a word not understood, with the words of where that
+    lead to it, left out (the rest may read whole). Offered only: the place may change what is meant."""
+    out: list[tuple[str, str, str, dict]] = []
+    for w in dict.fromkeys(unknown):
+        if w not in words:
+            continue
+        end = words.index(w)
+        start = end
+        while start and words[start - 1] in _DETERMINERS:
+            start -= 1
+        lead = start
+        while lead and words[lead - 1] in _WHERE_LEADS:
+            lead -= 1
+        if lead == start or any(near_operative(x) for x in words[start:end + 1]):
+            continue
+        rest = " ".join(words[:lead] + words[end + 1:])
+        phrase = " ".join(words[lead:end + 1])
+        out.append((rest, f"read without '{phrase}' (where, in words this home model lacks)", rest, {}))
+    return out
+
+
+def _topics(parts: list[str], index: dict) -> list[tuple[str, str, str, dict]]:
+    """ "Shepherd's pie for tea tonight - it just wants warming through": a clause that names a thing
+    and reads as nothing else, then a clause about "it": the thing in place of the pronoun."""
+    out: list[tuple[str, str, str, dict]] = []
+    for k in range(len(parts) - 1):
+        ws, nxt = words_of(parts[k]), words_of(parts[k + 1])
+        names = [" ".join(ws[i:j]) for i in range(len(ws)) for j in range(len(ws), i, -1) if tuple(ws[i:j]) in index]
+        pronoun = next((i for i, x in enumerate(nxt) if x in ("it", "they", "them")), None)
+        if not names or pronoun is None or any(near_operative(x) and (x,) not in index for x in ws):
+            continue
+        thing = max(names, key=len)
+        said = nxt[:pronoun] + ["the"] + thing.split() + nxt[pronoun + 1:]
+        rest = " , ".join(" ".join(words_of(p)) for p in parts[:k]) + (" , " if k else "") + " ".join(said) + \
+            "".join(" , " + " ".join(words_of(p)) for p in parts[k + 2:])
+        out.append((rest, f"'{nxt[pronoun]}' read as '{thing}' (the thing the clause before names)", thing, {}))
     return out
 
 

@@ -21,8 +21,9 @@ from __future__ import annotations
 from pipflow.household.language.lexicon import PHRASES
 
 _RULES = r"""
-start: _sep* item (_sep+ item | _sep* thengap)* _sep*
-_sep: COMMA | END | @AND | @THEN | @BUT
+start: _sep* item (_sep+ item | _sep* thengap | _sep+ _when _sep* item | _sep* _when)* _sep*
+_when: once | onceat
+_sep: COMMA | END | @AND | @THEN | @BUT | @EXCL
 
 ?item: change | toggle | put | gap | away | trash | chill | request | unwant | ensure | observe | cue | meal | after | reason
       | tend | notvia | usevia
@@ -48,6 +49,8 @@ toggle: @V_TOGGLE onoff tthings _here?
       | @V_TOGGLE tthings onoff (@AND | COMMA @AND) tthings _here?
       | _vput tthings on (@AND | COMMA @AND) tthings
       | @V_LIGHT tthings _here?
+      | _vput tthings @GOING //+ GOING
+      | @V_SHUT tthings @DOWN @ANYMORE?
 typo_off: @OF
 tthings: tnp ((COMMA | @AND | COMMA @AND) tnp)*
 tnp: sel (@SWITCHPART | @V_TOGGLE)? where? exception?
@@ -68,6 +71,9 @@ put: _vput @UP? things source? target? exception?
    | @SHOULD sthings (@GOES | @BE) target
    | _vput @AWAY things target
    | @V_LEAVE things target
+   | @V_LEAVE things _particle target
+   | @V_TIDY @UP? things target
+   | _vput @UP? things _particle? target wherewas //+ STAY
 _vput: @V_PUT | @V_THROW
 _particle: @OUT | @DOWN | @IN | @UP
 source: @FROM place | @OUT @OF? place | @OFF @OF? place
@@ -95,10 +101,13 @@ request: @V_LEAVE things state
        | @V_MAKE things state
        | @SUBJ? (@WANT | @NEED) things (@TO @BE)? state @UP?
        | sthings @SHOULD @BE? state @TOO?
-       | sthings @NEED state
+       | sthings @NEED state @UP?
+       | sthings @WANT state @UP?
        | sthings @NEED @ACT
 unwant: @DONOT @V_LEAVE things state
       | sthings @SHOULD @NOT @BE? state
+      | @LEFT things state //+ LEFT
+      | sthings @LEFTAS state //+ LEFTAS
 ensure: @V_MAKE @SURE @THAT? wish ((COMMA | @AND | COMMA @AND) wish)*
 wish: sthings (@IS | @SHOULD @BE) not? state
 not: @NOT
@@ -106,6 +115,9 @@ state: @ADJ | @V_OPEN | @V_SHUT | @V_CLEAN | @V_WARM | @V_STATE | on | off | @TO
      | @GOING //+ GOING
 
 after: @ONCE @SUBJ @HAVE? state things
+once: @ONCE sthings @IS state
+onceat: @ONCE sthings @IS (@THERE | (@IN | @ON) place)
+wherewas: @STAY
 reason: @IT @IS (@INTENS | @TOO)* @REASON | @SUBJ @IS @REASON | @REASON
 meal: (@V_MAKE | @V_PREPARE | _vstate) @THE? @MEAL _here?
     | (@V_MAKE | @V_PREPARE) @THE? @V_STATE _here?
@@ -130,6 +142,17 @@ cue: @NOBODY @IS? activity (@TO | @ON | @AT)? things? @ANYMORE?
    | @SUBJ @IS? @SLEEPCUE //+ SLEEPCUE
    | @SUBJ @CANNOT @SEE things? _here? //+ CANNOT
    | @IT @IS (@INTENS | @TOO)* soundcue _here? //+ SOUNDCUE
+   | @IT @IS (@INTENS | @TOO)* soundcue _here? @WITH @THAT? things (@GOING | on)? //+ SOUNDCUE
+   | @SUBJ @CANNOT @HEARCUE _here? (@WITH @THAT? things (@GOING | on)?)? //+ HEARCUE
+   | @IT @IS (@INTENS | @TOO)* aircue (_here | room)? //+ AIRCUE
+   | sthings @IS (@INTENS | @TOO)* soundcue //+ SOUNDCUE
+   | (_wish | _vput) @FRESHAIR _here? //+ FRESHAIR
+   | @HAVE _music //+ MUSIC
+   | @IT @IS (@INTENS | @TOO)* closecue (_here | room)
+   | @ROOMSAID @IS (@INTENS | @TOO)* (tempcue | tempadj | lightcue | soundcue | aircue | closecue) //+ ROOMSAID
+   | (@V_MAKE @IT | @SUBJ? @WANT @IT (@TO @BE)? | @SHOULD @IT @BE) (@INTENS | @TOO)* @MORE (_here | room)? //+ MORE
+   | @IT @IS (@INTENS | @TOO)* (tempcue | tempadj | lightcue | soundcue) room //+ INROOM
+   | @SUBJ @IS (@INTENS | @TOO)* (tempcue | tempadj) room //+ INROOM
    | _vput _music on //+ MUSIC
    | @V_TOGGLE on _music //+ MUSIC
    | @V_PLAY _music //+ MUSIC
@@ -139,11 +162,16 @@ cue: @NOBODY @IS? activity (@TO | @ON | @AT)? things? @ANYMORE?
 activity: @ACTIVITY
 lightcue: @LIGHTCUE
 soundcue: @SOUNDCUE
+aircue: @AIRCUE
+closecue: @V_STATE
+hearcue: @HEARCUE
+room: @INROOM
 _wish: @SUBJ? (@WANT | @NEED)
 _doact: @TO (@DOACT | @SEE)
 _music: @THE? @MUSIC
 _here: @HERE
      | @ALLOVER //+ ALLOVER
+     | @THERE //+ THERE
 tempcue: @TEMPCUE
 tempadj: @ADJ
 
@@ -154,7 +182,14 @@ tend: @V_TEND @OUT? things | @V_TEND things @OUT
     | sthings @IS? @MESS -> mess
     | sthings @IS? @ALLOVER -> mess //+ ALLOVER
     | @LEFT things (@OUT | @ALLOVER) -> mess //+ LEFT
+    | @LEFT things @OUT? (@ON | @IN) place -> mess //+ LEFT
+    | sthings @IS? @LYING (@ON | @IN) place -> mess //+ LYING
+    | sthings @IS @CLUTTER place -> mess //+ CLUTTER
+    | sthings @NEED @DOING //+ DOING
+    | place @HASGOT things (@ON | @IN) @IT -> mess //+ HASGOT
     | @THERE @IS sthings (@MESS | @ALLOVER) -> mess //+ THERE
+    | @THERE @IS sthings @ALLOVER place -> mess //+ THERE
+    | sthings @IS? @ALLOVER place -> mess //+ ALLOVER
     | (place | @ROOMSAID) @IS @FULLOF things -> mess //+ FULLOF
 
 keep: @V_LEAVE things @STAY

@@ -25,7 +25,8 @@ STATE_VERBS = {
 ADJECTIVES = {
     "sliced": "sliced", "chopped": "sliced", "diced": "sliced",
     "clean": "clean", "washed": "clean", "cleaned": "clean", "rinsed": "clean", "dirty": "dirty",
-    "filthy": "dirty", "used": "dirty",
+    "filthy": "dirty", "used": "dirty", "mucky": "dirty", "grubby": "dirty", "grimy": "dirty", "greasy": "dirty",
+    "unwashed": "dirty", "grotty": "dirty",
     "hot": "hot", "warm": "hot", "heated": "hot", "warmed": "hot", "cooked": "hot", "cold": "cold",
     "cool": "cold", "unheated": "cold", "whole": "whole", "unsliced": "whole",
     "open": "open", "opened": "open", "closed": "closed", "shut": "closed",
@@ -37,12 +38,19 @@ REACHABLE = {"open", "closed", "on", "off", "sliced", "clean", "hot"}
 #: in the microwave": the microwave must be a heater)
 VIA_PROPERTY = {"hot": "heater", "clean": "sink", "sliced": "receptacle"}
 
+#: the last words of names of two words whose first word is what people call the thing ("my
+#: crossword" of crossword_book, "the jigsaw" of jigsaw_puzzle, "the photos" of photo_album): the
+#: thing is a form or a carrier of what its first word names. Other names are not read by their
+#: first word: "the wine" is no wine_glass, "dinner" no dinner_plate, "the phone" no phone_charger;
+#: "set", "pad", "board" are not forms ("dinner set", "heating pad", "ironing board")
+FORM_HEADS = {"book", "books", "puzzle", "puzzles", "album", "magazine"}
 #: state cues: activities whose absence means "off"; ``None``: only what the sentence names,
 #: a category word: that category of the world when the sentence names nothing
 ACTIVITIES = {"watching": None, "reading": "light", "using": None, "listening": None, "playing": None,
               "working": None, "looking": None, "studying": "light", "cooking": None}
 #: "it is (too) bright" -> off, "it is dark" -> on; both speak of the world's category "light"
-LIGHT_CUES = {"bright": "off", "sunny": "off", "dark": "on", "gloomy": "on", "dim": "on"}
+LIGHT_CUES = {"bright": "off", "sunny": "off", "dark": "on", "gloomy": "on", "dim": "on", "pitch black": "on",
+              "pitch dark": "on", "murky": "on", "like a cave": "on"}
 LIGHT_CATEGORY_WORD = "light"
 #: "it's freezing in here", "I'm cold": the home's room heaters on; "it's roasting in here": the
 #: room heaters that are on, off. Words that say how warm the *room* is ("cold" and "hot" also
@@ -50,7 +58,10 @@ LIGHT_CATEGORY_WORD = "light"
 #: "I'm cold"; "freezing", "chilly" alone are cues)
 TEMPERATURE_CUES = {"freezing": "on", "chilly": "on", "nippy": "on", "perishing": "on", "baltic": "on",
                     "frozen": "on", "roasting": "off", "boiling": "off", "sweltering": "off", "stifling": "off",
-                    "baking": "off"}
+                    "baking": "off", "perished": "on", "frozen stiff": "on", "icy": "on", "arctic": "on",
+                    "parky": "on", "cold as ice": "on", "like an oven": "off", "like a sauna": "off",
+                    "sweating": "off", "shivering": "on", "like a fridge": "on", "like an icebox": "on",
+                    "like a freezer": "on", "like the arctic": "on", "like a furnace": "off"}
 #: the adjectives that are temperature cues when said of the room or of a person
 TEMPERATURE_ADJECTIVES = {"cold": "on", "hot": "off", "warm": "off"}
 #: what warms a room (not food): a thing that switches and is named, or worded, by one of these
@@ -107,6 +118,19 @@ _add("STAY", "where it is,where they are,as it is,as they are,alone,in place,whe
      "where you found it,where you found them")
 #: "someone's left the lemon out": disorder said of things, like ``MESS`` (a later clause that
 #: acts on them makes it the reason)
+#: "my coat has been lying on the sofa": a thing said to lie about somewhere, disorder like ``MESS``
+_add("LYING", "lying,left lying,lying there,sitting there")
+#: "the fridge has been left open": a state complained of (a class the tagger gives "has been
+#: left" before a state word: :func:`pipflow.household.language.retag.left_lying`)
+_add("LEFTAS", "left as is")
+#: "the crockery needs doing": what the things need, as "deal with" (lexicon ``V_TEND``)
+_add("DOING", "doing,seeing to,sorting,sorting out,dealing with,attention,some attention")
+#: "the scarf is cluttering up the armchair": a thing said to be in the way somewhere, disorder
+_add("CLUTTER", "cluttering up,cluttering,clogging up,taking up room on,taking up space on,in the way on,"
+     "hogging")
+#: "the table has still got the dirty dishes on it": what a place holds, said as disorder
+_add("HASGOT", "has still got,have still got,still has,still have,still has got,still have got,"
+     "still got")
 _add("LEFT", "left,has left,have left,someone has left,somebody has left,someone left,somebody left")
 _add("V_THROW", "throw,toss,chuck")
 _add("V_TRASH", "trash,discard,bin,dump,junk,get rid of,dispose of,throw away,throw out")
@@ -130,7 +154,7 @@ _add("V_TEND", "deal with,see to,take care of,sort,sort out,handle,attend to,do 
 _add("MESS", "all over the place,piling up,piled up,lying around,lying about,left out,scattered about,"
      "scattered around,strewn about,strewn around,a mess,in a mess,messy,a tip")
 for _w in LIGHT_CUES:
-    PHRASES[(_w,)] = ("LIGHTCUE", LIGHT_CUES[_w])
+    PHRASES[tuple(_w.split())] = ("LIGHTCUE", LIGHT_CUES[_w])
 _add("SEE", "see,read,see anything,read anything")
 #: "I'm trying to sleep", "going to sleep": the lights off (a cue like "it is too bright")
 _add("SLEEPCUE", "trying to sleep,trying to nap,trying to get some sleep,trying to get to sleep,going to sleep,"
@@ -162,6 +186,32 @@ for _w, _v in SOUND_CUES.items():
 #: so named); "put some music on", "it's too quiet in here"
 SOUND_MAKERS = ("radio", "radios", "speaker", "speakers", "stereo", "record player", "turntable", "music",
                 "hifi", "hi fi", "sound system", "music player", "jukebox", "gramophone", "music system")
+#: "it's stuffy in here", "it's muggy": the air wants moving: a fan that is off, on, or a window that
+#: is closed, open (resolver ``air_cue``; several such things: asked, each offered)
+AIR_CUES = ("stuffy", "muggy", "airless", "humid", "fuggy", "close and stuffy", "like a greenhouse")
+for _w in AIR_CUES:
+    _add("AIRCUE", _w, "air")
+#: what moves the air when switched on (a thing that switches, named or worded so)
+FANS = ("fan", "fans", "ceiling fan", "desk fan", "pedestal fan", "tower fan", "air conditioner", "air con", "aircon",
+        "air conditioning", "extractor", "extractor fan", "ventilator")
+#: what lets air in when opened (a thing that opens, named or worded so)
+WINDOWS = ("window", "windows", "skylight", "fanlight", "casement", "sash window", "french window", "french windows",
+           "vent", "air vent", "patio door", "back door")
+#: "I can't hear myself think (with that radio blaring)": the noise wants stopping: what is said to
+#: make it, else the home's sound makers that are on, off (a cue like "it's too loud")
+_add("HEARCUE", "hear myself think,hear myself speak,hear myself,hear a thing,hear anything,hear the telly,"
+     "hear the tv,hear the radio,get any peace,think straight,concentrate", "off")
+#: "make it warmer in here", "can it be a bit brighter": a change wished for (value: the kind of
+#: thing it speaks of and the state it asks of it); only after "make it" / "can it be", never a
+#: description ("it's warmer now" asks nothing)
+COMPARATIVES = {"warmer": ("heating", "on"), "less cold": ("heating", "on"), "cooler": ("heating", "off"),
+                "less hot": ("heating", "off"), "brighter": ("light", "on"), "lighter": ("light", "on"),
+                "darker": ("light", "off"), "quieter": ("sound", "off"), "louder": ("sound", "on"),
+                "less stuffy": ("air", "on"), "fresher": ("air", "on")}
+for _w, _v in COMPARATIVES.items():
+    _add("MORE", _w, _v)
+#: "can we get some air in here?": the air wants moving (as "it's stuffy")
+_add("FRESHAIR", "some air,some fresh air,fresh air,a bit of air,a breeze,a bit of a breeze,some air in here")
 _add("MUSIC", "music,some music,a tune,some tunes,tunes,a song,some songs")
 _add("V_PLAY", "play")
 #: a hot drink wished for ("could murder a cuppa", "I'd love a cup of tea", "make a brew"): the
@@ -176,8 +226,9 @@ DRINK_MAKERS = ("kettle", "kettles", "coffee machine", "coffee maker", "espresso
 #: plays sound, what makes a hot drink; each read from the world's names and words
 #: what shows something to watch
 SCREENS = ("tv", "television", "telly", "projector", "screen", "monitor", "tv set")
-DEVICES = {"heating": ROOM_HEATERS, "sound": SOUND_MAKERS, "hot drink": DRINK_MAKERS, "screen": SCREENS}
-DEVICE_NOUNS = {"heating": "room heater", "sound": "sound maker", "hot drink": "drink maker", "screen": "screen"}
+DEVICES = {"heating": ROOM_HEATERS, "sound": SOUND_MAKERS, "hot drink": DRINK_MAKERS, "screen": SCREENS, "air": FANS}
+DEVICE_NOUNS = {"heating": "room heater", "sound": "sound maker", "hot drink": "drink maker", "screen": "screen",
+                "air": "fan or window"}
 #: "the mug is minging", "the pizza box is starting to smell": foulness said of a thing. A thing
 #: that washes is washed; food and rubbish (a category named or worded so) go in the bin; any
 #: other thing is asked (docs/household.md, cues)
@@ -235,15 +286,20 @@ _add("NOT", "not")
 #: "is", and the perfect of a state said of a thing ("the console has been on all night", "the
 #: drink has gone warm", "the curry has gone off"): a description, like "is"
 _add("IS", "is,are,am,is still,are still,has been,have been,has gone,have gone,has got,have got,has become,"
-     "has been left,have been left")
+     "has been left,have been left,was left,were left,is left,are left")
 _add("BE", "be,stay,remain,stays,remains,go")
 _add("SHOULD", "should,must,has to,have to,needs to,need to,ought to,got to,can")
 _add("SUBJ", "i,we,you")
 #: wishes: "I want X", and what people say for it of food and drink ("I fancy a warm bagel",
 #: "could murder a cuppa", "I'd love a tea", "I'm dying for a coffee")
 _add("WANT", "want,would like,like,wish,d like,prefer,fancy,would love,love,could murder,could kill for,"
-     "am dying for,am craving,crave,would kill for,could do with,could use,am gasping for,can i get,can i have,"
+     "am dying for,am craving,crave,would kill for,could do with,could use,could go for,would go for,could eat,am gasping for,can i get,can i have,"
      "could i get,could i have,may i have,can we get,can we have,could we have,could we get")
+#: a wish graded by a hedge inside it ("I could really go for", "I would just love"): the same wish
+for _k, (_c, _v) in list(PHRASES.items()):
+    if _c == "WANT" and len(_k) >= 2 and _k[0] in ("could", "would", "am"):
+        for _h in ("really", "just", "so", "honestly"):
+            PHRASES.setdefault((_k[0], _h) + _k[1:], (_c, _v))
 _add("NEED", "need,needs,wants")
 _add("NEEDED", "needed,necessary,required,in use")
 #: "we are done with the laptop": the thing is not needed (a state cue, like "we do not need")
@@ -266,6 +322,18 @@ LEAVING_REASONS = {"bedtime", "time for bed", "off to bed", "going to bed", "hea
                    "heading out", "off to work", "going to work", "late", "night time"}
 _add("REASON", "late,bedtime,time for bed,night time,off to bed,going to bed,heading to bed,off out,going out,"
      "heading out,off to work,going to work")
+#: how a person is (tired, thirsty, hungry): alone it asks for nothing two people agree on, so it is
+#: asked, offering what answers it in the home (a refusal's candidates: ``NEEDS_OFFERED``); before
+#: a request it is the request's reason ("I'm shattered, turn the telly off")
+TIRED = ("tired", "shattered", "knackered", "exhausted", "worn out", "sleepy", "whacked", "pooped", "done in",
+         "dead on my feet", "ready for bed", "beat")
+THIRSTY = ("thirsty", "parched", "gasping", "dry", "spitting feathers")
+HUNGRY = ("hungry", "starving", "famished", "peckish", "ravenous", "starved")
+_add("REASON", ",".join(TIRED + THIRSTY + HUNGRY))
+#: the candidate readings a need said alone offers (a wording each, read by the translator like any
+#: command, so only what this home can do is offered); "hungry": each food that heats (candidates)
+NEEDS_OFFERED = {**{w: ("it is too bright", "switch off everything that is on") for w in TIRED},
+                 **{w: ("make a cup of tea",) for w in THIRSTY}, **{w: () for w in HUNGRY}}
 #: how a thing is to be handled, said of it ("the wok is too heavy for one of you", "the can is
 #: leaking"): a reason for how the robots work, not an end state of the home; alone it asks nothing
 _add("HANDLING", "heavy,bulky,awkward,fragile,delicate,breakable,slippery,leaking,dripping,broken,cracked,chipped,"
@@ -273,15 +341,34 @@ _add("HANDLING", "heavy,bulky,awkward,fragile,delicate,breakable,slippery,leakin
 _add("FORONE", "for one of you,for one robot,for one person,for one,to carry alone,to lift alone,on your own,"
      "for one of them,to lift on your own,to carry on your own")
 #: exclamations that ask for nothing by themselves ("What a tip.", "Ugh, ..."): reasons
-_add("REASON", "what a mess,what a tip,what a state,what a pigsty,what a dump,ugh,urgh,ew,eww,yuck,blimey")
+_add("REASON", "what a mess,what a tip,what a state,what a pigsty,what a dump,what a racket,what a din,what a noise")
+#: interjections: they open or close a sentence and say nothing ("Blimey it's cold", "Ugh, ..."): read
+#: as a pause, like a comma (a sentence of nothing else asks for nothing, and is refused)
+_add("EXCL", "ugh,urgh,ew,eww,yuck,blimey,brr,brrr,phew,oof,ooh,oh dear,oh,gosh,cor,crikey,jeez,sheesh,eek,bah")
 _add("DONOT", "do not,does not,did not,no longer,dont")
 _add("ANYMORE", "anymore,any more,any longer,for now,for the night,tonight,right now")
 _add("NOBODY", "nobody,no one,noone,none of us")
-_add("INTENS", "very,so,really,quite,rather,extremely,pretty,a bit,a little,way too,much too,far too,getting")
+_add("INTENS", "very,so,really,quite,rather,extremely,pretty,a bit,a little,way too,much too,far too,getting,bit,"
+     "bit of a,a bit of a")
+#: intensifiers and hedges that grade the word after them and say nothing of what is wanted ("it's
+#: ever so dark", "absolutely freezing", "proper cold", "dead noisy", "I could really go for"): read
+#: as nothing before a word they may grade (a state, a cue, a wish, "too"); anywhere else they are
+#: unplaced and refused ("dead" of "the plant is dead" is never dropped: nothing follows it there)
+HEDGES = ("ever so", "ever such a", "absolutely", "proper", "properly", "dead", "awfully", "terribly", "bloody",
+          "utterly", "totally", "a tad", "a touch", "somewhat", "fairly", "a little bit", "a wee bit", "a tiny bit",
+          "incredibly", "so very", "that", "really quite", "just so", "too too", "well", "right",
+          "all")
+HEDGE_WORDS = tuple(h for h in HEDGES if tuple(h.split()) not in PHRASES)
+_add("HEDGE", ",".join(HEDGE_WORDS))
+#: the token classes a hedge may grade: the hedge before one of them is read as nothing
+GRADED = {"ADJ", "LIGHTCUE", "TEMPCUE", "SOUNDCUE", "AIRCUE", "HANDLING", "WANT", "NEED", "MESS", "ALLOVER", "TOO",
+          "INTENS", "HEDGE", "FOULS", "GOING", "V_CLEAN", "V_WARM", "V_OPEN", "V_SHUT", "HEARCUE", "REASON", "MORE",
+          "V_STATE"}
 _add("TOO", "too,as well")
 #: "it's freezing with that fan going": a thing said to be running
-_add("GOING", "going,running,blasting,blaring,whirring,humming", "on")
-_add("CANNOT", "can not,could not,cannot")
+_add("GOING", "going,running,blasting,blaring,whirring,humming,lit,on the go,blaring away,blasting away,going full blast,"
+     "humming away,whirring away,droning on,droning away,on full blast,at full blast", "on")
+_add("CANNOT", "can not,could not,cannot,can barely,can hardly,could barely,could hardly,can scarcely")
 _add("SOMEWHERE", "somewhere,some place,someplace")
 #: words for the home itself or a room of it, which no world lists as a place: "in here", "all
 #: over the flat", "over here" (where a cue is felt, or a mess lies). A world that has a thing so
@@ -291,17 +378,24 @@ HOME_WORDS = ("house", "home", "flat", "apartment", "cabin", "boat", "cottage", 
 #: observed there off); "turn off the lights in the kitchen" names no part of the home model and is
 #: refused (reading it as "here" would widen the order)
 ROOM_WORDS = ("room", "lounge", "living room", "sitting room", "bedroom", "kitchen", "hall", "hallway", "study",
-              "office", "dining room", "bathroom", "floor")
+              "office", "dining room", "bathroom", "floor", "conservatory", "sunroom", "sun room", "utility room",
+              "utility", "porch", "landing", "attic", "cellar", "basement", "garage", "nursery", "playroom", "den",
+              "snug", "parlour", "front room", "back room", "spare room", "box room", "games room", "kitchenette",
+              "lobby", "cloakroom", "laundry room", "scullery", "pantry")
 _add("HERE", "here,in here,over here,over there," + ",".join(f"in the {h},around the {h}" for h in HOME_WORDS))
 _add("ROOMSAID", ",".join(f"the {r},my {r},our {r}" for r in ROOM_WORDS))
 _add("INROOM", ",".join(f"in the {r},in {r}" for r in ROOM_WORDS) + ",at home,home")
+#: a room said with a particle of where ("out in the conservatory", "over in the study", "up in the
+#: attic"): where a cue is felt, as "in the ..." (a room the home model lacks: resolver ``_room``)
+_add("INROOM", ",".join(f"{p} in the {r}" for p in ("out", "over", "up", "down", "back") for r in ROOM_WORDS))
 #: "put the clothes in the wash": the home's one laundry place (a place named or worded so)
 _add("THEWASH", "the wash")
 LAUNDRY_PLACES = ("laundry basket", "washing basket", "laundry", "hamper", "washing machine", "washer",
                   "laundry bin", "linen basket", "dirty clothes basket", "clothes basket")
 #: "everywhere", "all over (the flat)": where a cue is felt ("lights on everywhere"), or, said of
 #: things, disorder like ``MESS`` ("clothes everywhere", "the cat's toys are all over the flat")
-_add("ALLOVER", "everywhere,all over,everywhere in here," + ",".join(f"all over the {h},everywhere in the {h}"
+_add("ALLOVER", "everywhere,all over,everywhere in here,all over the shop,all over the show,all over the gaff,"
+     "all over the joint,here there and everywhere," + ",".join(f"all over the {h},everywhere in the {h}"
                                                                     for h in HOME_WORDS + ROOM_WORDS))
 _add("PIECES", "in half,in two,into pieces,into slices,into cubes,in pieces,in slices,into halves")
 _add("DOOR", "door,doors,lid,lids")
@@ -363,7 +457,9 @@ FILLER = {("please",), ("kindly",), ("just",), ("quickly",), ("now",), ("for", "
           ("pls",), ("plz",), ("plse",), ("thx",), ("ta",), ("cheers",),
           ("while", "you", "are", "at", "it"), ("when", "you", "get", "a", "chance"), ("when", "you", "can"),
           ("be", "a", "dear", "and"), ("be", "a", "love", "and"), ("be", "an", "angel", "and"), ("be", "a", "star", "and"),
-          ("while", "you", "are", "about", "it"), ("while", "you", "are", "there"), ("if", "you", "get", "a", "chance"),
+          ("while", "you", "are", "about", "it"), ("while", "you", "are", "there"), ("while", "you", "are", "over", "there"),
+          ("while", "you", "are", "in", "there"), ("while", "you", "are", "up"), ("while", "you", "are", "passing"),
+          ("while", "you", "are", "on", "your", "feet"), ("while", "you", "are", "over", "here"), ("if", "you", "get", "a", "chance"),
           ("honestly",), ("seriously",), ("even",), ("actually",),
           ("the", "two", "of", "you"), ("both", "of", "you"), ("you", "two"), ("you", "both"), ("all", "of", "you"),
           ("the", "pair", "of", "you"), ("you", "guys"), ("guys",)}
@@ -381,7 +477,10 @@ FILLER |= TIME_WORDS
 MANNERS = {("in", "parallel"), ("at", "the", "same", "time"), ("at", "once"), ("simultaneously",),
            ("in", "any", "order"), ("one", "after", "the", "other"), ("one", "by", "one"), ("in", "turn"),
            ("in", "that", "order"), ("in", "this", "order"), ("in", "order"), ("in", "sequence"),
-           ("together",), ("either", "way")}
+           ("together",), ("either", "way"),
+           # a thing lifted by two: how the robots work (the team decides who), not what the home ends like
+           ("between", "you"), ("between", "you", "both"), ("between", "the", "two", "of", "you"),
+           ("between", "them"), ("between", "the", "pair", "of", "you"), ("as", "a", "team")}
 MANNER_OBJECTS = {("both",), ("them",), ("it",), ("these",), ("those",), ("all",), ("everything",),
                   ("both", "of", "them"), ("all", "of", "them"), ("the", "two"), ("the", "lot"), ()}
 ORDER_OPENERS = {"first", "firstly", "start", "to", "with"}
@@ -403,7 +502,8 @@ MEASURES = {"bowl", "bowlful", "plate", "plateful", "cup", "glass", "mug", "bag"
 #: "the quilt goes on the table for airing": what for, not what the home should end like: "for" +
 #: a word of no verb of the lexicon in -ing, or one of these, at the end of a clause
 PURPOSES = {("later",), ("tomorrow",), ("the", "morning"), ("the", "weekend"), ("now",), ("safekeeping",),
-            ("safe", "keeping")}
+            ("safe", "keeping"), ("tea",), ("dinner",), ("lunch",), ("supper",), ("breakfast",), ("brunch",),
+            ("guests",), ("the", "guests"), ("visitors",), ("the", "visitors"), ("tonight",), ("the", "party")}
 
 #: filler words a misspelling may be read as ("plese"): only these, long and close to no
 #: content word, so that a misspelt content word is never dropped as politeness
@@ -464,8 +564,17 @@ def normalize(text: str) -> str:
     t = re.sub(r"'ve\b", " have", t)
     t = re.sub(r"'ll\b", " will", t)
     # "the oven's open", "the TV's still on": 's before a state word is "is", not a possessive
-    t = re.sub(r"'s(?=\s+(?:still\s+|not\s+|too\s+|very\s+|so\s+)?(?:" + "|".join(_STATE_WORDS) + r")\b)", " is", t)
+    # (not after a time: "last night's dirty dishes", "yesterday's cold tea" are possessives)
+    t = re.sub(r"(?<!night)(?<!day)(?<!week)(?<!morning)(?<!evening)(?<!weekend)"
+               r"'s(?=\s+(?:still\s+|not\s+|too\s+|very\s+|so\s+)?(?:" + "|".join(_STATE_WORDS) + r")\b)", " is", t)
+    # "the melon's too heavy", "the room's ever so stuffy": a possessive is never followed by a degree
+    t = re.sub(r"'s(?=\s+(?:too|very|so|really|quite|rather|ever so|absolutely|dead|proper|awfully|far too|way too|full|"
+               r"covered|like)\s)", " is", t)
+    # a tag question closing a sentence asks nothing: "bit dark in here, isn't it?"
+    t = re.sub(r",?\s*\b(?:is|isn't|isnt|are|aren't|arent|was|wasn't)\s*(?:n't\s+)?(?:it|they|not it)\s*(?=\?)", " ", t)
+    t = re.sub(r",?\s*\binnit\b", " ", t)
     t = re.sub(r"'s(?=\s+(?:been|gone|got|become|left)\b)", " has", t)   # "the console's been on"
+    t = re.sub(r"'s(?=\s+still\s+(?:been|gone|got)\b)", " has", t)   # "the table's still got ..."
     t = re.sub(r"'s(?=\s+[a-z]{3,}ing\b)", " is", t)   # "the watering can's leaking"
     t = re.sub(r"\b(i|we|you)'d\b", r"\1 would", t)
     t = re.sub(r"\b(we|you|they)'re\b", r"\1 are", t)

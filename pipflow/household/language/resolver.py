@@ -27,10 +27,11 @@ Rules it applies (docs/household.md lists them for users):
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Callable
 
 from pipflow.errors import Refusal, TranslationError
 from pipflow.household.language.lexicon import (BIN_KINDS, COLD, DEVICE_NOUNS, DEVICES, INDEFINITE, LAUNDRY, LAUNDRY_PLACES, MASS_NOUNS,
-                                                MEALS, OPPOSITE, REACHABLE, VIA_PROPERTY, plurals, words_of)
+                                                MEALS, OPPOSITE, REACHABLE, VIA_PROPERTY, WINDOWS, plurals, words_of)
 from pipflow.household.language.order import check_order
 from pipflow.household.problem import CONDITIONS
 from pipflow.household.world import entity, initial_state, members
@@ -44,6 +45,10 @@ def _choice(error: TranslationError, words: str, names: list[str]) -> Translatio
     (:mod:`pipflow.household.language.candidates`)."""
     error.choices = (words, list(names))  # type: ignore[attr-defined]
     return error
+
+
+def _raise(error: Exception) -> None:
+    raise error
 
 
 def holds_now(world: dict, name: str, cond: str) -> bool:
@@ -98,6 +103,9 @@ class Resolver:
         self.said: list[list[str]] = []                        # the things each statement before was about
         self.mess: list[tuple[dict, str]] = []                 # disorder said of things: (statement, words)
         self.foul: set[str] = set()                            # words of observations of foulness
+        self.gone_cold: set[str] = set()                       # words of "X has gone cold"
+        # a cue of warmth decided at the end: (state, words, what to do when no request answers it)
+        self.unanswered: list[tuple[str, str, Callable[[], None]]] = []
         self.handled: list[tuple[list[str], str]] = []         # how things are to be handled: (names, words)
 
     # selectors -------------------------------------------------------------------------
@@ -173,6 +181,18 @@ class Resolver:
             if places:
                 self.goal.notes.append(f"'{words}': '{sel['words']}' read as {', '.join(places)}")
                 names = places
+        if sel.get("pronoun") and need and names and not any(need in entity(self.world, n)["properties"] for n in names):
+            # "open the sideboard, get the plate out onto the table, then shut it again": neither the
+            # plate nor the table shuts; the nearest statement before that named exactly one thing
+            # that does is what "it" means (two such things there: left as said, and refused)
+            for said in reversed(self.history):
+                fit = [n for n in dict.fromkeys(said) if need in entity(self.world, n)["properties"]]
+                if len(fit) == 1:
+                    self.goal.notes.append(f"'{words}': '{sel['words']}' read as {fit[0]} (the one thing said before "
+                                           f"that can be {cond or need})")
+                    names = fit
+                if fit:
+                    break
         if sel.get("door") and not all("openable" in entity(self.world, n)["properties"] for n in names):
             raise TranslationError(f"'{words}': '{what}' has no door in this world")
         names = self._narrow(sel, words, names, implicit)
@@ -445,6 +465,8 @@ class Resolver:
             self.observed.append((names, st["is"], words))
             if st.get("foul"):
                 self.foul.add(words)
+            if st.get("gone"):
+                self.gone_cold.add(words)
             self.last = names
         elif op == "cue":
             self.cue(st, words)
@@ -472,6 +494,9 @@ class Resolver:
     def change(self, st: dict, words: str) -> None:
         cond = st["to"]
         named = self.objects(st["things"], words, cond=cond, exceptions=st.get("except"))
+        if st.get("once"):
+            self.once(named, cond, words)
+            return
         self.last_any = [n for n, _ in named]
         for n, _ in named:
             if n in self.picked:   # "pick up the phone and switch it on": the taking was the means
@@ -500,7 +525,51 @@ class Resolver:
                 self.via_placed[n] = via
         self.last = [n for n, _ in named] or self.last
 
+    def once(self, named: list[tuple[str, bool]], cond: str, words: str) -> None:
+        """ "wash the bowl and the mug, and once they are clean put them away": a state that an
+        earlier step of the command asks of the same things is when the next step may start (the
+        plan's order), no condition of its own. A state nothing earlier asks is a condition on the
+        home ("once the TV is off, ..."), which this reader does not make: refused."""
+        pred = CONDITIONS[cond][0]
+        unasked = [n for n, _ in named if (self.goal.state.get(n, {}).get(pred) is None
+                                           or self.goal.state[n][pred].cond != cond)]
+        if unasked or not named:
+            raise TranslationError(f"'{words}': a condition on the home ({', '.join(unasked) or 'it'} {cond}) that "
+                                   "no step before asks for; say what to do, not when")
+        self.goal.notes.append(f"'{words}': what an earlier step does; the plan orders the steps")
+        self.last = [n for n, _ in named]
+
+    def once_there(self, st: dict, words: str) -> None:
+        """ "clear the desk onto the settee, and switch the laptop off once it is there": where an
+        earlier step of the command puts the things is when (the plan's order), no condition; a
+        place no step before puts them in is a condition on the home: refused."""
+        named = [n for n, _ in self.objects(st["things"], words)]
+        place = self.place_of(st["to"], words) if st.get("to") else None
+        unput = [n for n in named if n not in self.goal.inside or (place and self.goal.inside[n][0] != place)]
+        if unput or not named:
+            raise TranslationError(f"'{words}': a condition on the home ({', '.join(unput) or 'it'} "
+                                   f"{'in ' + place if place else 'there'}) that no step before brings about; say "
+                                   "what to do, not when")
+        self.goal.notes.append(f"'{words}': what an earlier step does; the plan orders the steps")
+        self.last = named
+
+    def where_it_was(self, names: list[str], place: str, said: str, words: str) -> None:
+        """ "put the teacake out on the bar where it was": "where it was" restates the place; "it"
+        is what this statement moves or what the statement before was about. Read when one of them
+        is in that place now (a restatement the world confirms), else refused: where it was is then
+        not where the command puts it."""
+        referents = list(dict.fromkeys(names + (self.said[-1] if self.said else [])))
+        there = [n for n in referents if n in self.world["objects"] and self.world["objects"][n]["in"] == place]
+        if not there:
+            was = ", ".join(f"{n} is in {self.world['objects'][n]['in']}" for n in referents
+                            if n in self.world["objects"])
+            raise TranslationError(f"'{words}': '{said}' is not {place} ({was}); say where")
+        self.goal.notes.append(f"'{said}': {place}, where {', '.join(there)} is now (a restatement of the place)")
+
     def move(self, st: dict, words: str) -> None:
+        if st.get("once"):
+            self.once_there(st, words)
+            return
         counted = [c for c in (self.counted(s) for s in st["things"] if not s.get("pronoun")) if c is not None]
         plain = [s for s in st["things"] if self.counted(s) is None]
         if "from" in st:
@@ -537,6 +606,8 @@ class Resolver:
             if len(cats) != 1 or sel.get("state") or sel.get("except") or sel.get("from"):
                 raise TranslationError(f"'{words}': a count of '{sel['words']}' can only name a whole category")
             self.goal.count.append({"category": cats[0], "in": place, "at_least": sel["count"]})
+        if st.get("as_was"):
+            self.where_it_was([n for n, _ in named], place, st["as_was"], words)
         for n, _ in named:
             if n not in self.world["objects"]:
                 raise Refusal(f"'{words}': {n} is not something that can be moved")
@@ -566,8 +637,20 @@ class Resolver:
         switching on, the one that is off when there is one, and several are asked (each offered
         as a candidate reading), never all at once. None: asked."""
         kind, cond = st["device"], st["to"]
+        if st["things"]:   # "I can't hear myself think with that radio blaring": what is named
+            named = self.objects(st["things"], words, cond=cond)
+            for n, explicit in named:
+                self.want(n, cond, explicit, words)
+            self.last = [n for n, _ in named]
+            return
+        if kind == "air":
+            self.air_cue(st, words)
+            return
         every = self.devices(kind)
         able = [n for n in every if not holds_now(self.world, n, cond)]
+        self._room(st, able, words)
+        if st.get("room") and len(able) > 1:
+            able = [self.choose[words]]
         if not able:
             raise TranslationError(f"'{words}': which thing? this home has no {DEVICE_NOUNS[kind]} "
                                    f"{'that is ' + ('on' if cond == 'off' else 'off') + ' ' if every else ''}"
@@ -584,6 +667,81 @@ class Resolver:
             self.want(n, cond, False, words)
         self.last = able
 
+    def air_cue(self, st: dict, words: str) -> None:
+        """ "it's stuffy in here": the air wants moving: a fan (lexicon ``FANS``) that is off, on, or
+        a window (``WINDOWS``) that is closed, open. One such thing: it; several: asked, each
+        offered as a candidate reading (a fan and a window are two answers two people would not
+        agree on); none: asked."""
+        windows = self.windows("closed")
+        options = {n: "on" for n in self.devices("air") if not holds_now(self.world, n, "on")}
+        options.update({n: "open" for n in windows})
+        # decided at the end: "open a window, it's stuffy" asks the window; the cue is its reason
+        self.unanswered.append(("", words, lambda: self._air(st, options, words)))
+
+    def _air(self, st: dict, options: dict[str, str], words: str) -> None:
+        """:meth:`air_cue`, when no request of the command answers the cue."""
+        asked = [n for n, c in options.items() if any(x.cond == c and x.explicit and x.words != words
+                                                      for x in self.goal.state.get(n, {}).values())]
+        if asked:
+            self.goal.notes.append(f"'{words}' is the reason for {', '.join(asked)} {options[asked[0]]}")
+            return
+        if not options:
+            raise TranslationError(f"'{words}': which thing? this home has no fan that is off or window that is "
+                                   "closed; say what to do")
+        names = list(options)
+        self._room(st, names, words)
+        if len(names) > 1:
+            if self.choose.get(words) in options:
+                names = [self.choose[words]]
+            else:
+                raise _choice(TranslationError(f"'{words}': which? it could be {' or '.join(f'{n} {options[n]}' for n in names)}; "
+                                               "say which"), words, names)
+        n = names[0]
+        self.goal.notes.append(f"'{words}': read as {n} {options[n]} (the air wants moving; docs/household.md, cues)")
+        self.want(n, options[n], False, words)
+        self.last = [n]
+
+    def windows(self, now: str) -> list[str]:
+        """The windows of the home (lexicon ``WINDOWS``: a thing that opens, named or worded so) that
+        are ``now`` (open or closed) in the world as it is."""
+        wanted = {" ".join(words_of(w)) for w in WINDOWS}
+        return [n for n, e in {**self.world["places"], **self.world["objects"]}.items()
+                if {" ".join(words_of(w)) for w in [n] + list(e.get("words") or [])} & wanted
+                and applies(self.world, n, "open") and holds_now(self.world, n, now)]
+
+    def _either(self, heaters: list[str], windows: dict[str, str], cond: str, words: str) -> None:
+        """ "it's freezing" with a window open: the heating on, or the window closed; two answers two
+        people would not agree on, so asked (each offered), unless the user chose one."""
+        options = {**({"the heating": cond} if heaters else {}), **windows}
+        asked = [n for n, c in windows.items() if any(x.cond == c and x.explicit and x.words != words
+                                                      for x in self.goal.state.get(n, {}).values())]
+        if asked:   # "it's freezing, shut the skylight": the cue is the reason
+            self.goal.notes.append(f"'{words}' is the reason for {', '.join(asked)} {windows[asked[0]]}")
+            return
+        pick = self.choose.get(words) if len(options) > 1 else next(iter(options))
+        if pick not in options:
+            raise _choice(TranslationError(f"'{words}': which? {' or '.join(f'{n} {c}' for n, c in options.items())}; "
+                                           "say which"), words, list(options))
+        names = heaters if pick == "the heating" else [pick]
+        self.goal.notes.append(f"'{words}': read as {', '.join(names)} {options[pick]}"
+                               + (" (chosen)" if len(options) > 1 else ""))
+        for n in names:
+            self.want(n, options[pick], False, words)
+        self.last = names
+
+    def _room(self, st: dict, names: list[str], words: str) -> None:
+        """A cue felt in a room the home model lacks ("out in the conservatory"): the home model has
+        no rooms, so the room is read only when it cannot change which thing is meant (one thing
+        fits); several: asked, each offered, naming the room (never all of them, never one)."""
+        room = st.get("room")
+        if not room:
+            return
+        if len(names) > 1 and self.choose.get(words) not in names:
+            raise _choice(TranslationError(f"'{words}': this home model has no rooms, so '{room}' cannot say which "
+                                           f"of {', '.join(names)} is meant; say which"), words, names)
+        if names:
+            self.goal.notes.append(f"'{room}': the home model has no rooms; the one thing that fits is meant")
+
     def warmth(self, st: dict, words: str) -> None:
         """ "it is freezing in here": the room heaters on; "it is roasting in here": the room
         heaters that are on, off. Things the sentence names are what it speaks of ("it is freezing
@@ -597,10 +755,21 @@ class Resolver:
         every = self.room_heaters()
         # a cue asks for a change: a heater already as asked is no condition
         heaters = [n for n in every if not holds_now(self.world, n, cond)]
-        if not heaters:
-            raise TranslationError(f"'{words}': which thing? this home has no room heater "
-                                   f"{'that is on ' if cond == 'off' else 'that is off ' if every else ''}(a heater, "
-                                   "radiator, fire or log burner that switches); say what to switch")
+        # cold with a window open: the window closed is an answer too (warm with one closed: open)
+        windows = self.windows("open" if cond == "on" else "closed")
+        if windows:   # decided at the end: a request of the heating's state makes the cue its reason
+            answers = {w: "closed" if cond == "on" else "open" for w in windows}
+            self.unanswered.append((cond, words, lambda: self._either(heaters, answers, cond, words)))
+            return
+        self._room(st, heaters, words)
+        if st.get("room") and len(heaters) > 1:
+            heaters = [self.choose[words]]
+        if not heaters:   # decided at the end: "I'm roasting, switch the fire off" gives the reason
+            why = (f"'{words}': which thing? this home has no room heater "
+                   f"{'that is on ' if cond == 'off' else 'that is off ' if every else ''}(a heater, "
+                   "radiator, fire or log burner that switches); say what to switch")
+            self.unanswered.append((cond, words, lambda: _raise(TranslationError(why))))
+            return
         self.goal.notes.append(f"'{words}': read as the room's heating {cond} ({', '.join(heaters)}; "
                                "docs/household.md, cues)")
         for n in heaters:
@@ -688,6 +857,10 @@ class Resolver:
             named = [(n, False) for n in members(self.world, cats[0]) if applies(self.world, n, cond)]
             if not named:
                 raise Refusal(f"'{words}': nothing of the {cats[0]} category can be switched {cond}")
+            if st.get("room"):   # "it's gloomy in the study": which light, when the home has no rooms?
+                fit = [n for n, _ in named if not holds_now(self.world, n, cond)]
+                self._room(st, fit, words)
+                named = [(n, False) for n in ([self.choose[words]] if len(fit) > 1 else fit)] or named
             # decided at the end: "it is getting dark, turn on the floor lamp" gives the reason
             # for a request, it does not ask for every light
             self.cue_defaults.append((cats[0], cond, words, [n for n, _ in named]))
@@ -807,6 +980,13 @@ class Resolver:
         for st in order["statements"]:
             self.statement(st)
         self._apply_cue_defaults()
+        for cond, words, otherwise in self.unanswered:   # the reason for a request of the same state, else
+            asked = [n for n, preds in self.goal.state.items()
+                     if any(c.cond == cond and c.explicit and c.words != words for c in preds.values())]
+            if not asked:
+                otherwise()
+                continue
+            self.goal.notes.append(f"'{words}' is the reason for {', '.join(asked)} {cond}")
         if self.picked:
             obj, words = next(iter(self.picked.items()))
             raise TranslationError(f"'{words}': where to? name a place for {obj} (e.g. 'in the fridge')")
@@ -819,6 +999,14 @@ class Resolver:
         for names, state, words in list(self.observed):
             if words in self.foul and names:
                 self._foul(names, words)
+                self.observed.remove((names, state, words))
+                continue
+            if words in self.gone_cold and names and all(applies(self.world, n, "hot") for n in names):
+                # "my tea has gone cold": cold is what went wrong with it, said and not answered: heated
+                self.goal.notes.append(f"'{words}': gone cold and nothing done about it: read as heating "
+                                       f"{', '.join(names)} (docs/household.md, cues)")
+                for n in names:
+                    self.want(n, "hot", True, words)
                 self.observed.remove((names, state, words))
                 continue
             if state == "dirty" and names and all(applies(self.world, n, "clean") for n in names):

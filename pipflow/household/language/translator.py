@@ -87,17 +87,18 @@ def _understand(command: str, world: dict, choose: dict[str, str] | None = None)
     notes: list[str] = []
     readings = parse(command, world, notes)
     meant: dict[str, tuple[dict, dict]] = {}
-    first_error: Exception | None = None
+    errors: list[Exception] = []
     for order in readings:
         try:
             out = resolve(order, world, choose)
         except (TranslationError, Refusal) as exc:
-            first_error = first_error or exc
+            errors.append(exc)
             continue
         meant.setdefault(_key(out["goal"]), (order, out))
     if not meant:
-        assert first_error is not None
-        raise first_error
+        # no reading resolves: the one that got as far as asking which thing is meant says most
+        # (its choices become the candidate readings), else the first
+        raise next((e for e in errors if getattr(e, "choices", None)), errors[0])
     if len(meant) > 1:
         # coordination before gapping: "chop the carrot and the onion on the worktop" is one
         # clause about both, not "chop the carrot" and "(chop) the onion on the worktop"

@@ -1,0 +1,140 @@
+"""The world's words: every object, place and category name of a home (and its ``words``), with
+plurals, inversions ("bottle of water") and unshared head words ("kettle" of electric_kettle), as
+word sequences -> the things they may name. Read by the tagger, the typo reader, the aside test and
+the candidate readings; kept per world while its names are unchanged."""
+from __future__ import annotations
+
+from pipflow.household.language.lexicon import DEVICES, FILLER, FORM_HEADS, PHRASES, WINDOWS, plurals, words_of
+from pipflow.language.asides import FUNCTION_WORDS
+from pipflow.language.numbers import read_number
+
+
+#: the index of the last worlds read: id -> (the world, what its names were, the index); a world
+#: is read many times per command (tagging, the grammar's twins, asides, candidates)
+_INDEXES: dict[int, tuple[dict, tuple, dict]] = {}
+
+
+def _names_key(world: dict) -> tuple:
+    """What :func:`world_phrases` reads of a world, cheaply: a changed name or word is a new index."""
+    return tuple((kind, name, tuple((e or {}).get("words") or ()))
+                 for kind in ("objects", "places", "categories") for name, e in (world.get(kind) or {}).items())
+
+
+def world_phrases(world: dict) -> dict[tuple[str, ...], list[dict]]:
+    """Word sequences -> the world things they name: every object, place and category name and
+    ``words`` entry, with plural forms. A phrase may name several things ("lamp"). Read-only: the
+    index of a world is kept while its names are unchanged."""
+    key = _names_key(world)
+    hit = _INDEXES.get(id(world))
+    if hit is not None and hit[0] is world and hit[1] == key:
+        return hit[2]
+    index = _world_phrases(world)
+    if len(_INDEXES) >= 16:
+        _INDEXES.clear()
+    _INDEXES[id(world)] = (world, key, index)
+    return index
+
+
+def _world_phrases(world: dict) -> dict[tuple[str, ...], list[dict]]:
+    """:func:`world_phrases`, built."""
+    index: dict[tuple[str, ...], list[dict]] = {}
+
+    def add(phrase: str, kind: str, name: str, others: list[str]) -> None:
+        base = words_of(phrase)
+        if not base:
+            return
+        # a listed word is a plural when it is the plural of another listed word ("lamps" beside
+        # "lamp"), or, for a category, ends in s ("school supplies", "electronics")
+        listed_plural = any(" ".join(base) in plurals(" ".join(words_of(o))) for o in others) or \
+            (kind == "category" and base[-1].endswith("s") and not base[-1].endswith("ss"))
+        forms = [(tuple(base), listed_plural)] + [(tuple(words_of(p)), True) for p in plurals(" ".join(base))]
+        if kind == "object" and len(base) == 2 and "of" not in base:
+            # "water bottle" is also "a bottle of water", "bottles of water"
+            forms += [((base[1], "of", base[0]), listed_plural)] + \
+                [((p, "of", base[0]), True) for p in plurals(base[1])]
+        for words, plural in forms:
+            readings = index.setdefault(words, [])
+            reading = {"kind": kind, "name": name, "plural": plural}
+            if not any(r["kind"] == kind and r["name"] == name for r in readings):
+                readings.append(reading)
+
+    for kind, table in (("object", world.get("objects") or {}), ("place", world.get("places") or {})):
+        for name, e in table.items():
+            phrases = [name] + list(e.get("words") or [])
+            for phrase in phrases:
+                add(phrase, kind, name, phrases)
+    for name, c in (world.get("categories") or {}).items():
+        phrases = [name] + list((c or {}).get("words") or [])
+        for phrase in phrases:
+            add(phrase, "category", name, phrases)
+    _add_parts(world, index)
+    return index
+
+
+def _add_parts(world: dict, index: dict[tuple[str, ...], list[dict]]) -> None:
+    """The last word of a thing's name of two or more words, when no other thing's name has it
+    ("kettle" of electric_kettle, "pot" of soup_pot), names that thing: people shorten names to
+    their head noun. A modifier is not read alone ("kitchen" of kitchen_table is no room of the
+    home, "coffee" of coffee_table no drink); a word two things share, a word the index already
+    has, a word of the command lexicon or a function word names nothing alone (never a guess)."""
+    owners: dict[str, set[tuple[str, str]]] = {}
+    heads: set[str] = set()
+    for kind, table in (("object", world.get("objects") or {}), ("place", world.get("places") or {})):
+        for name, e in table.items():
+            for phrase in [name] + list(e.get("words") or []):
+                words = words_of(phrase)
+                for w in words:
+                    owners.setdefault(w, set()).add((kind, name))
+                if len(words) >= 2:
+                    heads.add(words[-1])
+    for w, things in owners.items():
+        if w not in heads or len(things) != 1 or len(w) < 3 or not w.isalpha() or (w,) in index or (w,) in PHRASES \
+                or w in FUNCTION_WORDS or any(w in key for key in FILLER) or read_number([w], 0):
+            continue
+        kind, name = next(iter(things))
+        index[(w,)] = [{"kind": kind, "name": name, "plural": False}]
+        for p in plurals(w):
+            if (p,) not in index and (p,) not in PHRASES and p not in owners:
+                index[(p,)] = [{"kind": kind, "name": name, "plural": True}]
+
+
+def named_by_first_word(world: dict, word: str) -> list[str]:
+    """The things of the world a word names as the first word of a two-word name whose last word is
+    a form of it (lexicon ``FORM_HEADS``: "my crossword" of crossword_book), also said in the
+    plural ("the crosswords"); several things: each (the tagger then asks which). Read only for a
+    word the tagger knows nowhere else: a world name or a word of the lexicon always wins."""
+    forms = {word} | {word[:-len(end)] + repl for end, repl in (("ies", "y"), ("es", ""), ("s", ""))
+                      if word.endswith(end) and len(word) > len(end) + 2}
+    out: list[str] = []
+    for table in (world.get("objects") or {}, world.get("places") or {}):
+        for name, e in table.items():
+            for phrase in [name] + list(e.get("words") or []):
+                ws = words_of(phrase)
+                if len(ws) == 2 and ws[0] in forms and ws[1] in FORM_HEADS and ws[0] not in FUNCTION_WORDS \
+                        and name not in out:
+                    out.append(name)
+    return out
+
+
+#: the kinds of thing the lexicon knows by a common word ("the heater", "a window", "the radio"):
+#: the device lists (room heaters, sound makers, drink makers, screens, fans) and windows
+KINDS = tuple(DEVICES.values()) + (WINDOWS,)
+
+
+def things_of_kind(world: dict, word: str) -> tuple[list[str], bool]:
+    """The things of the world of the kind a common word names ("window" -> the skylight, when the
+    skylight is named or worded by a word of the same lexicon list, e.g. "skylight"), and whether
+    the word is a plural. For a word the tagger knows nowhere else: "open a window" in a home whose
+    window is called the skylight. No such thing: empty."""
+    forms = {word: False} | {word[:-len(end)] + repl: True for end, repl in (("ies", "y"), ("es", ""), ("s", ""))
+                             if word.endswith(end) and len(word) > len(end) + 2}
+    for kind in KINDS:
+        phrases = {" ".join(words_of(p)) for p in kind}
+        said = [f for f in forms if f in phrases]
+        if not said:
+            continue
+        found = [n for table in (world.get("objects") or {}, world.get("places") or {}) for n, e in table.items()
+                 if {" ".join(words_of(w)) for w in [n] + list((e or {}).get("words") or [])} & phrases]
+        if found:
+            return list(dict.fromkeys(found)), forms[said[0]]
+    return [], False

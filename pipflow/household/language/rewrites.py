@@ -1,0 +1,219 @@
+"""The command's words rewritten before tagging, where a word-level rule says what the grammar need
+not: how the steps run ("do both in parallel", "first", "afterwards"), how long ("for two
+minutes", offered only as a candidate), what for ("for later"), amounts of a thing ("a bowl of
+cherries"), and "or" under a negation ("nobody is using X or Y"). Each rewrite leaves a note."""
+from __future__ import annotations
+
+from pipflow.household.language.lexicon import (DURATION_HEDGES, DURATION_UNITS, GRADED, MANNER_OBJECTS, MANNERS,
+                                                MEASURES, ORDER_WORDS, ORDINAL_DETERMINERS, PHRASES, PURPOSES, TIME_WORDS)
+from pipflow.household.language.tokens import PUNCT
+from pipflow.language.numbers import read_number
+
+
+#: words that put a step after the others, closing a clause ("... and bring them to the desk
+#: after", "put it back afterwards"): the order of the steps, which the plan decides
+CLOSING_ORDER_WORDS = {"after", "afterwards", "afterward", "later", "next"}
+
+
+def without_manner(words: list[str], notes: list[str]) -> list[str]:
+    """The words without what says how the steps run, not what the home ends like (lexicon
+    ``MANNERS``): a clause "do both in parallel", "one after the other", and "first" opening a
+    clause ("first the mug, then the plate"). A note says what was read so."""
+    out: list[str] = []
+    start = 0
+    for k, w in enumerate(words + ["."]):
+        if w not in PUNCT:
+            continue
+        clause = words[start:k]
+        body = clause[1:] if clause[:1] == ["do"] else clause
+        manner = next((m for m in MANNERS if len(m) <= len(body) and tuple(body[len(body) - len(m):]) == m), None)
+        if clause and manner is not None and tuple(body[:len(body) - len(manner)]) in MANNER_OBJECTS:
+            notes.append(f"'{' '.join(clause)}' says how the steps run, not what the home should end like; "
+                         "the plan decides the order")
+            if k < len(words) and w != "," and out and out[-1] not in PUNCT:
+                out.append(w)   # a sentence's end stays; a comma goes with the clause
+            start = k + 1
+            continue
+        clause = _without_inner_manner(clause, notes)
+        while len(clause) > 2 and clause[-1] in CLOSING_ORDER_WORDS and clause[-2] not in ("for", "until", "till"):
+            # "bring them to the desk after" ("for later" is a purpose: _without_purpose)
+            notes.append(f"'{clause[-1]}': the order of the steps; the plan decides it")
+            clause = clause[:-1]
+        kept = []
+        for j, x in enumerate(clause):   # "wash the mug first", "first the mug, then the plate"
+            if x in ORDER_WORDS and not (j and clause[j - 1] in ORDINAL_DETERMINERS) and \
+                    not (j + 1 < len(clause) and clause[j + 1] == "of") and \
+                    not (j + 1 < len(clause) and (x, clause[j + 1]) in TIME_WORDS):
+                notes.append(f"'{x}': the order of the steps; the plan decides it")
+                continue
+            kept.append(x)
+        clause = _without_purpose(kept, notes)
+        out += clause + ([w] if k < len(words) else [])
+        start = k + 1
+    while out and out[-1] == ",":
+        out.pop()
+    return out
+
+
+#: words after which a manner phrase closes what it says ("lift it in together and wash it")
+_MANNER_ENDS = {"and", "then", "to", "into", "onto", "over", "across", "back"}
+
+
+def _without_inner_manner(clause: list[str], notes: list[str]) -> list[str]:
+    """A clause that asks something, without a manner phrase (lexicon ``MANNERS``) closing it or
+    one of its parts joined by "and" / "then" ("lift it into the sink together and wash it"):
+    how, not what the home should end like."""
+    out: list[str] = []
+    j = 0
+    while j < len(clause):
+        m = next((m for m in sorted(MANNERS, key=len, reverse=True) if tuple(clause[j:j + len(m)]) == m), None)
+        end = j + len(m) if m else j
+        if m and out and (end == len(clause) or clause[end] in _MANNER_ENDS) and out[-1] not in _MANNER_ENDS:
+            notes.append(f"'{' '.join(m)}' says how the steps run, not what the home should end like")
+            j = end
+            continue
+        out.append(clause[j])
+        j += 1
+    return out
+
+
+def without_duration(clause: list[str], notes: list[str]) -> list[str]:
+    """Words without how long an action takes ("heat the curry for like two minutes", lexicon
+    ``DURATION_UNITS``). Not done when reading: "leave the fridge open for five minutes" ends with
+    it closed, so a duration is refused; a refusal offers the reading without it as a candidate
+    (:mod:`pipflow.household.language.candidates`), for the user to choose."""
+    for j, w in enumerate(clause):
+        if w != "for":
+            continue
+        k = j + 1
+        while k < len(clause) and clause[k] in DURATION_HEDGES:
+            k += 1
+        num = read_number(clause, k) if k < len(clause) else None
+        end = num[1] if num else (k if k > j + 1 and clause[k - 1] in ("few", "couple", "of") else None)
+        if end is not None and end < len(clause) and clause[end] in DURATION_UNITS:
+            notes.append(f"'{' '.join(clause[j:end + 1])}' says how long, not what the home should end like")
+            return clause[:j] + clause[end + 1:]
+    return clause
+
+
+def _without_purpose(clause: list[str], notes: list[str]) -> list[str]:
+    """A clause without its closing purpose ("... for airing", "... for later": lexicon
+    ``PURPOSES``, or "for" + an -ing word that is no verb of the lexicon): what for, not what the
+    home should end like. "for washing" (a verb the home can do) is kept, and refused: it may ask
+    for the washing too."""
+    for n in (1, 2):
+        if len(clause) > n + 1 and clause[-n - 1] == "for":
+            tail = tuple(clause[-n:])
+            if tail in PURPOSES or (n == 1 and tail[0].endswith("ing") and len(tail[0]) > 5
+                                    and not any(tail[0] in key for key in PHRASES)):
+                notes.append(f"'for {' '.join(tail)}' says what for, not what the home should end like")
+                return clause[:-n - 1]
+    return clause
+
+
+def measures(words: list[str], index: dict, notes: list[str]) -> list[str]:
+    """ "a bowl of cherries" as "some cherries" (lexicon ``MEASURES``), unless the home has a thing
+    named by the container word (then it stays, and is refused: the bowl may be meant too)."""
+    out: list[str] = []
+    k = 0
+    while k < len(words):
+        w = words[k]
+        if w in ("a", "an", "one") and k + 3 < len(words) and words[k + 2] == "of" and \
+                (words[k + 1] in MEASURES or words[k + 1] + "s" in MEASURES or words[k + 1].rstrip("s") in MEASURES) \
+                and (words[k + 1],) not in index and words[k + 3] not in PUNCT:
+            notes.append(f"'{w} {words[k + 1]} of' read as 'some' (an amount of what follows, not a thing of the home)")
+            out.append("some")
+            k += 3
+            continue
+        out.append(w)
+        k += 1
+    return out
+
+
+#: words that put what follows them in their sentence under a negation ("nobody is using X or Y")
+_NEGATORS = {"nobody", "noone", "not", "never", "none"}
+
+
+def or_under_negation(words: list[str], notes: list[str]) -> list[str]:
+    """ "nobody is using the tablet or the radio": under a negation, "or" lists both (neither is
+    used), so it is read as "and". Elsewhere "or" is a choice, which this reader does not make
+    (it stays unread, and is refused)."""
+    out: list[str] = []
+    negated = False
+    for k, w in enumerate(words):
+        if w in (".", "!", "?", ";"):
+            negated = False
+        elif w in _NEGATORS or (w == "no" and k + 1 < len(words) and words[k + 1] == "one"):
+            negated = True
+        elif w in ("or", "nor") and negated:
+            notes.append(f"'{w}' after a negation lists both: read as 'and'")
+            w = "and"
+        out.append(w)
+    return out
+
+
+#: "leave them both out", "put them all away": a pronoun with a quantifier after it, as the
+#: quantifier before it ("both of them", "all of them")
+_FLOATED = {("them", "both"): ["both", "of", "them"], ("them", "all"): ["all", "of", "them"],
+            ("it", "all"): ["all", "of", "it"]}
+#: particles of completion after warming ("warm the pie through"): how, not what
+_THROUGH_AFTER = {"warm", "warming", "heat", "heating", "warmed", "heated", "cook", "cooking", "cooked", "reheat",
+                  "reheating", "defrost", "thaw"}
+#: "so bertie can get the plate out": "so" + one word + these opens a clause of what is done
+_ENABLING = {"can", "could", "will", "may"}
+
+
+def particles(words: list[str], names_nothing, notes: list[str]) -> list[str]:
+    """Particles and small constructions read as the grammar's words (docs/household.md):
+    "them both" / "them all" as "both of them" / "all of them"; "through to P" as "to P" (to
+    another room: the home model has none); "warm X through" without "through" (heated all the
+    way: hot); "so W can ..." as "and ..." when W names nothing of the home (a person: who does a
+    step is the plan's choice). ``names_nothing(word)``: the word is no name of the world."""
+    out: list[str] = []
+    k = 0
+    while k < len(words):
+        w = words[k]
+        pair = tuple(words[k:k + 2])
+        if pair in _FLOATED:
+            out += _FLOATED[pair]
+            notes.append(f"'{' '.join(pair)}' read as '{' '.join(_FLOATED[pair])}'")
+            k += 2
+            continue
+        if w == "through" and k + 1 < len(words) and words[k + 1] in ("to", "into", "onto", "in", "on") and out \
+                and out[-1] not in PUNCT:
+            notes.append(f"'through {words[k + 1]}' read as '{words[k + 1]}' (the home model has no rooms to go through)")
+            k += 1
+            continue
+        if w == "through" and any(x in _THROUGH_AFTER for x in _clause_before(out)):
+            notes.append("'through' after warming: heated through, read as hot")
+            k += 1
+            continue
+        if w == "so" and out and out[-1] == "," and k + 1 < len(words) and words[k + 1] not in ("that", "much", "many") \
+                and PHRASES.get((words[k + 1],), ("",))[0] not in GRADED:
+            # "the melon is too heavy for one of you, so carry it ...": a consequence, a clause of its own
+            notes.append("', so' opens a clause of what is done: read as ','")
+            k += 1
+            continue
+        if w == "for" and out and out[-1] not in PUNCT and k + 1 < len(words) and \
+                (k + 2 == len(words) or words[k + 2] in PUNCT) and names_nothing(words[k + 1]):
+            # "slice the ham for sandwiches": what for, when the word names nothing of the home
+            notes.append(f"'for {words[k + 1]}' says what for, not what the home should end like")
+            k += 2
+            continue
+        if w == "so" and k + 2 < len(words) and words[k + 2] in _ENABLING and names_nothing(words[k + 1]) \
+                and out and out[-1] not in PUNCT:
+            notes.append(f"'so {words[k + 1]} {words[k + 2]}': who does a step is the plan's choice; read as 'and'")
+            out.append("and")
+            k += 3
+            continue
+        out.append(w)
+        k += 1
+    return out
+
+
+def _clause_before(out: list[str]) -> list[str]:
+    """The words of the clause being read (since the last mark)."""
+    k = len(out)
+    while k and out[k - 1] not in PUNCT:
+        k -= 1
+    return out[k:]

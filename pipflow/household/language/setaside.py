@@ -1,0 +1,95 @@
+"""Talk set aside: the clauses of a command that name nothing of the world, have no number and no
+operative word (greetings, thanks, asides: :mod:`pipflow.language.asides`), and the clauses that
+say what the speaker will do ("I'll grab the milk myself"). The parser reads a command again
+without them when it does not read as said."""
+from __future__ import annotations
+
+import re
+from typing import Callable
+
+from pipflow.household.language.lexicon import FILLER_TYPO_TARGETS, PHRASES, words_of
+from pipflow.household.language.names import world_phrases
+from pipflow.household.language.typos import typo_of, vocabulary
+from pipflow.language.asides import EXCLUSIVITY, FUNCTION_WORDS, NEGATION, clauses, content_free
+from pipflow.language.numbers import read_number
+
+
+#: lexicon classes of function words: alone in a clause they carry nothing an order needs
+#: (and words that only colour a cue or a time: "for the night", "in here", "late", "really")
+GLUE_CLASSES = {"THE", "THAT", "IT", "IS", "SUBJ", "BE", "HAVE", "SHOULD", "INTENS", "OF", "AT", "IN", "ON", "OFF",
+                "ANYMORE", "REASON", "HERE", "HEDGE", "EXCL",
+                "OUT", "UP", "TO", "FROM", "WITH", "AND", "SEE", "SURE"}
+#: marks that end a clause, for setting content-free clauses aside
+CLAUSE_MARKS = {",", ".", ";", "!", "?", ":"}
+
+
+def _content(world: dict) -> Callable[[str], bool]:
+    """The test :func:`pipflow.language.asides.content_free` asks of each word: a word of a
+    world name (or a misspelling of one, or of a content word of the lexicon), a number, or a
+    lexicon word that is no function word ("put", "off" with a verb is content by the verb)."""
+    index = world_phrases(world)
+    # the words that name something alone: a one-word name and the head (last word) of a longer
+    # one; a modifier alone names nothing ("mooring" of mooring_line in "we're mooring up"), and
+    # "of" of "bottle of water" is no name
+    world_words = {k[-1] for k in index if "of" not in k} | {k[0] for k in index if "of" in k}
+    world_words = {w for w in world_words if (w,) in index} - FUNCTION_WORDS
+    lexicon_words = {w for k, (cls, _) in PHRASES.items() if cls not in GLUE_CLASSES for w in k} - FUNCTION_WORDS
+    vocab = {w for w in vocabulary(index) if w in world_words or w in lexicon_words or w in FILLER_TYPO_TARGETS}
+
+    def content(w: str) -> bool:
+        if w in world_words or w in lexicon_words or w.isdigit() or read_number([w], 0):
+            return True
+        if w in FUNCTION_WORDS:
+            return False
+        return len(w) >= 4 and bool(typo_of(w, vocab))
+    return content
+
+
+#: how a clause opens when it says what the speaker will do ("I'll grab the milk myself", "I'm
+#: about to unpack the shopping"): no order for the robots
+SPEAKER_OPENERS = (("i", "will"), ("we", "will"), ("i", "am", "about", "to"), ("we", "are", "about", "to"),
+                   ("i", "am", "going", "to"), ("we", "are", "going", "to"), ("i", "shall"), ("we", "shall"))
+#: verbs after such an opener that make it a wish, not the speaker's doing ("I'll need the oven on",
+#: "I'll take the tea in the cabin", "I'm going to want ..."): never set aside
+WISH_VERBS = {"need", "want", "like", "have", "take", "be", "wish", "prefer", "love"}
+
+
+def speaker_doing(words: tuple[str, ...]) -> bool:
+    """Whether a clause says what the speaker will do ("I'll grab the milk myself"): it opens with
+    :data:`SPEAKER_OPENERS`, its verb is no wish (:data:`WISH_VERBS`) and it has no negation or
+    exclusivity ("I'll not ...", "I'll only ..."), which would bear on what the robots do."""
+    for opener in SPEAKER_OPENERS:
+        if words[:len(opener)] == opener and len(words) > len(opener):
+            rest = words[len(opener):]
+            return rest[0] not in WISH_VERBS and not any(w in NEGATION or w in EXCLUSIVITY for w in rest)
+    return False
+
+
+#: marks that set a part of a sentence off like commas: dashes, brackets
+_PARENTHESES = re.compile(r"\s[-\u2010-\u2015]+\s|[\u2013\u2014\u2015()\[\]]")
+
+
+def without_asides(command: str, world: dict) -> tuple[str, list[str], list[str]] | None:
+    """The command without its content-free clauses (:mod:`pipflow.language.asides`) and its
+    clauses that say what the speaker will do (:func:`speaker_doing`): (the rest, the words of
+    the first, the words of the second), or None when it has none (or nothing else). Dashes and
+    brackets set a clause off as commas do ("throw the fish away - it smells off - and ...")."""
+    words = words_of(_PARENTHESES.sub(" , ", command))
+    content = _content(world)
+    free = [c for c in clauses(words, CLAUSE_MARKS) if content_free(c.words, content)]
+    own = [c for c in clauses(words, CLAUSE_MARKS) if c not in free and speaker_doing(c.words)]
+    if not free and not own:
+        return None
+    drop = {k for c in free + own for k in range(c.start, c.end)}
+    kept = [w for k, w in enumerate(words) if k not in drop]
+    # a clause mark left with nothing before it in its sentence goes too
+    out: list[str] = []
+    for w in kept:
+        if w in CLAUSE_MARKS and (not out or out[-1] in CLAUSE_MARKS):
+            if w not in (",", ":") and out:
+                out[-1] = w
+            continue
+        out.append(w)
+    if not [w for w in out if w not in CLAUSE_MARKS]:
+        return None
+    return " ".join(out), [" ".join(c.words) for c in free], [" ".join(c.words) for c in own]

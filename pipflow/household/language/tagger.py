@@ -1,0 +1,134 @@
+"""Tagging (step 1 of :mod:`pipflow.household.language.parser`): a command's words become the
+grammar's tokens: the world's names (longest match, with plurals, typo-tolerant: "fridgge" reads as
+"fridge" and a note says so), numbers, and the closed lexicon of
+:mod:`pipflow.household.language.lexicon`. A word in neither is a :class:`TranslationError` that
+quotes it: nothing is skipped silently (politeness words such as "please" carry no content and are
+listed in the lexicon)."""
+from __future__ import annotations
+
+from pipflow.errors import TranslationError
+from pipflow.household.language.grammar import NOUN_DUAL
+from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
+from pipflow.household.language.names import named_by_first_word, things_of_kind, world_phrases
+from pipflow.household.language.retag import (act_before_noun, demonstratives, elided_it_is, left_lying, located,
+                                              restated_order, without_hedges)
+from pipflow.household.language.rewrites import measures, or_under_negation, particles, without_manner
+from pipflow.household.language.tokens import PUNCT, Tag
+from pipflow.household.language.typos import known_word, meaning_of, transposition_of, typo_of, vocabulary
+from pipflow.language.numbers import read_number
+
+
+#: lexicon classes of phrases that name the home or a room of it ("in the kitchen", "all over the
+#: flat"): a world name inside one is read as the name
+HOME_CLASSES = {"HERE", "ALLOVER", "INROOM", "THEWASH", "ROOMSAID"}
+
+
+def _match(words: list[str], i: int, table: dict, longest: int) -> int:
+    for n in range(min(longest, len(words) - i), 0, -1):
+        if tuple(words[i:i + n]) in table:
+            return n
+    return 0
+
+
+def repaired(words: list[str], index: dict, vocab: set[str], notes: list[str], world: dict) -> list[str]:
+    """The words with their typos read: a word known nowhere that is two neighbouring letters of
+    exactly one grammar word swapped ("adn"), or close to exactly one known word ("fridgge"), is
+    read as that word (a note says so); two competing repairs: left as typed (refused, offered). A
+    word that names a kind of thing of this home ("heater", :func:`things_of_kind`) is no typo."""
+    words = list(words)
+    for k, w in enumerate(words):
+        if known_word(w, index, vocab) or len(w) < 3 or not w.isalpha() or things_of_kind(world, w)[0]:
+            continue
+        swapped = transposition_of(w)
+        if len(swapped) == 1 and set(typo_of(w, vocab)) <= set(swapped):
+            notes.append(f"read {w!r} as {swapped[0]!r} (two letters swapped)")
+            words[k] = swapped[0]
+            continue
+        if len(w) < 4:
+            continue
+        close = typo_of(w, vocab)
+        if close and len({meaning_of(c, index) for c in close}) == 1:
+            notes.append(f"read {w!r} as {close[0]!r}")
+            words[k] = close[0]
+    return words
+
+
+def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
+    """The command as grammar tokens (module docstring, step 1)."""
+    notes = notes if notes is not None else []
+    index = world_phrases(world)
+    vocab = vocabulary(index)
+    words = or_under_negation(measures(without_manner(words_of(command), notes), index, notes), notes)
+    words = particles(words, lambda x: x.isalpha() and not known_word(x, index, vocab), notes)
+    said = list(words)   # as typed: a repair that still names nothing is quoted as typed
+    words = repaired(words, index, vocab, notes, world)
+    longest_w = max((len(k) for k in index), default=1)
+    longest_l = max(len(k) for k in PHRASES)
+    longest_f = max(len(k) for k in FILLER)
+    out: list[Tag] = []
+    unknown: list[str] = []
+    shared: dict[str, list[str]] = {}   # a word that is the first word of several things' names
+    i = 0
+    while i < len(words):
+        w = words[i]
+        if w in PUNCT:
+            out.append(Tag(PUNCT[w], w, w))
+            i += 1
+            continue
+        if w[0] == "-" or not w.isalnum():   # "-2", "3.5": no count of things; refused, never read as 2
+            unknown.append(w)
+            i += 1
+            continue
+        num = read_number([x if x not in PUNCT and x.isalnum() else None for x in words], i)
+        nw, nl, nf = _match(words, i, index, longest_w), _match(words, i, PHRASES, longest_l), \
+            _match(words, i, FILLER, longest_f)
+        if nl > 1 and PHRASES[tuple(words[i:i + nl])][0] in HOME_CLASSES and \
+                any(_match(words, j, index, longest_w) for j in range(i + 1, i + nl)):
+            nl = 1 if (w,) in PHRASES else 0   # "in the kitchen" where the home has a thing named kitchen
+        if num is not None and num[1] - i >= max(nw, nl, nf):
+            out.append(Tag("NUM", num[0], " ".join(words[i:num[1]])))
+            i = num[1]
+            continue
+        if nf and nf > max(nw, nl):
+            i += nf
+            continue
+        if nw == 0 and nl == 0:
+            kind, plural = things_of_kind(world, w) if w.isalpha() and len(w) >= 3 else ([], False)
+            if kind:   # "open a window" where the window is the skylight: the things of that kind
+                notes.append(f"read {w!r} as {', '.join(kind)} (of its kind)")
+                out.append(Tag("NOUN", None, w, [{"kind": "object" if n in (world.get("objects") or {}) else "place",
+                                                   "name": n, "plural": plural} for n in kind]))
+                i += 1
+                continue
+            whole = named_by_first_word(world, w) if w.isalpha() and len(w) >= 3 else []
+            if len(whole) == 1:   # "my crossword" of crossword_book: the one thing it is the form of
+                notes.append(f"read {w!r} as {whole[0]} (the first word of its name)")
+                out.append(Tag("NOUN", None, w, [{"kind": "object" if whole[0] in (world.get("objects") or {})
+                                                  else "place", "name": whole[0], "plural": False}]))
+            else:
+                unknown.append(said[i])
+                shared.update({said[i]: whole} if whole else {})
+            i += 1
+            continue
+        n = max(nw, nl)
+        text = " ".join(words[i:i + n])
+        if nw == n and nl == n:
+            cls, value = PHRASES[tuple(words[i:i + n])]
+            out.append(Tag(cls + NOUN_DUAL, value, text, index[tuple(words[i:i + n])]))
+        elif nw == n:
+            out.append(Tag("NOUN", None, text, index[tuple(words[i:i + n])]))
+        else:
+            cls, value = PHRASES[tuple(words[i:i + n])]
+            out.append(Tag(cls, value, text))
+        i += n
+    out = elided_it_is(left_lying(without_hedges(out, notes)), notes)
+    out = restated_order(located(demonstratives(act_before_noun(out)), world, notes), notes)
+    if unknown:
+        names = sorted(set(world.get("objects") or {}) | set(world.get("places") or {}))
+        error = TranslationError(
+            f"{', '.join(repr(u) for u in dict.fromkeys(unknown))} names nothing in this world and is no word the "
+            f"offline parser knows (in {command.strip()!r}); things of this world: {', '.join(names)}"
+            + "".join(f"; '{w}' is part of the names of {', '.join(ns)}: say which" for w, ns in shared.items()))
+        error.unread = list(dict.fromkeys(unknown))  # type: ignore[attr-defined]  # for candidate readings
+        raise error
+    return out
