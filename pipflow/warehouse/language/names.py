@@ -204,6 +204,44 @@ def _word_parts(names: list["_Name"], by_name: dict[str, "_Name"], alone: Callab
     return having, parts, shared, loose
 
 
+def _contents(names: list["_Name"]) -> dict[str, "_Name | None"]:
+    """What a container product of three or more words holds, said in its own words: "dog food"
+    of dog_food_sack ("4 of dog food", "the dog food"), as one word of a two-word name is read
+    alone ("rice" of rice_sack). Keyed by the words run together; None where two products hold
+    the same (refused, never a guess)."""
+    out: dict[str, _Name | None] = {}
+    for n in names:
+        words = [w for w in re.split(r"[-_\s]+", n.name.lower()) if w]
+        if n.kind != "product" or len(words) < 3 or words[-1] not in CONTAINERS or not all(
+                w.isalpha() for w in words):
+            continue
+        held = "".join(words[:-1])
+        out[held] = None if held in out else n
+    return out
+
+
+#: words after which a place is said ("to dispatch", "off dispatch"), and words that may follow a
+#: place said there; a grammar verb that is a word of one place's name is that place only between
+#: the two ("from dispatch to intake", "in dispatch."), never before a count ("to dispatch 3 X")
+PLACE_PREPOSITIONS = {"to", "into", "onto", "in", "on", "at", "from", "off", "inside"}
+AFTER_A_PLACE = {"to", "into", "onto", "from", "and", "or", "but", "please", "though", "then", "now",
+                 "too", "by", "for", "today", "tonight", "first", "asap", "instead"}
+
+
+def _verb_places(names: list["_Name"], reserved: set[str]) -> dict[str, "_Name"]:
+    """Words of one place's name that the grammar also reads as a verb ("dispatch" of
+    dispatch_cage, "return" of return_bay): read as that place only where a place stands (see
+    :data:`PLACE_PREPOSITIONS`); a word of two names is never read."""
+    owners: dict[str, list[_Name]] = {}
+    for n in names:
+        words = [w for w in re.split(r"[-_\s]+", n.name.lower()) if w]
+        for w in set(words):
+            owners.setdefault(w, []).append(n)
+    return {w: ns[0] for w, ns in owners.items()
+            if w in reserved and len(w) >= 4 and len(ns) == 1 and ns[0].kind == "shelf"
+            and len([x for x in re.split(r"[-_\s]+", ns[0].name) if x]) >= 2}
+
+
 class NameIndex:
     """The world's names by kind, and the rules for deciding which one a word means."""
 
@@ -267,6 +305,8 @@ class NameIndex:
         owners, self.parts, self.shared_parts, self.loose_parts = _word_parts(self.names, by_name, alone)
 
         self.prefixes = _starts(self.names, by_name, alone, owners)
+        self.contents = _contents(self.names)
+        self.verb_places = _verb_places(self.names, self.reserved)
 
     def group(self, word: str) -> list[str] | None:
         """The places a plural or class word selects ("cages" -> the places whose head is cage).
@@ -421,7 +461,7 @@ class NameIndex:
                 continue
             if any(word_value(w.lower()) is not None for w in part[1:]):
                 continue
-            hit = self.forms.get(normalize("".join(part)))
+            hit = self.forms.get(normalize("".join(part))) or self.contents.get(normalize("".join(part)))
             if hit is not None:
                 return Tok("name", " ".join(part), hit.name, hit.kind), i + size
         hit = self._misspelt_apart(raw[i:i + 2])
@@ -531,6 +571,10 @@ class NameIndex:
         if found is None and norm in self.prefixes:
             short = self.prefixes[norm]
             found = Tok("name", raw[i], short.name, short.kind)  # "mezz" for mezzanine
+        if found is None and norm in self.verb_places and i > 0 and raw[i - 1].lower() in PLACE_PREPOSITIONS and (
+                i + 1 == len(raw) or not raw[i + 1][0].isalnum() or raw[i + 1].lower() in AFTER_A_PLACE):
+            place = self.verb_places[norm]
+            found = Tok("name", raw[i], place.name, place.kind)   # "from dispatch to intake"
         return (found, i + 1) if found is not None else None
 
 
