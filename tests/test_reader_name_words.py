@@ -18,8 +18,8 @@ GARDEN = {
         "front_till": {"x": 20, "y": 14, "width": 6, "depth": 2, "capacity": 10, "access": [23, 13]},
     },
     "products": {"bird_seed_bag": {"color": "yellow"}, "lawn_feed_box": {"color": "green"},
-                 "trowel": {"color": "gray"}},
-    "stock": {"potting_shed": {"bird_seed_bag": 4, "lawn_feed_box": 2}, "return_bay": {"trowel": 3, "bird_seed_bag": 1},
+                 "trowel": {"color": "gray"}, "seed_tray": {"color": "black"}},
+    "stock": {"potting_shed": {"bird_seed_bag": 4, "lawn_feed_box": 2, "seed_tray": 3}, "return_bay": {"trowel": 3, "bird_seed_bag": 1},
               "front_till": {"lawn_feed_box": 1}},
     "robots": {"mule": {"kind": "forklift", "start": [1, 8], "skills": {"carry": 3}},
                "wren": {"kind": "amr", "start": [15, 8], "skills": {"carry": 1}}},
@@ -53,3 +53,8 @@ def test_a_place_by_a_word_that_is_also_a_verb_where_a_place_stands(command: str
 
 def test_the_verb_before_a_count_stays_a_verb() -> None:
     assert translate("return 2 trowels to the potting shed", GARDEN)["goal"] == {"potting_shed": {"trowel": 2}}
+
+
+def test_a_two_word_name_in_the_plural_with_two_letters_swapped() -> None:
+    """"seed trasy": one edit (a swap) from the plural "trays", two from "tray"."""
+    assert translate("Take 2 seed trasy off the potting shed", GARDEN)["goal"] == {"potting_shed": {"seed_tray": 1}}

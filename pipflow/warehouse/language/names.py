@@ -499,7 +499,8 @@ class NameIndex:
             if n.kind == "robot" or len(words) != 2:
                 continue
             last = set(variants(b)) & ({words[1]} | set(plural_forms(words[1])))
-            if (a == words[0] and not last and near(b, words[1])) or (last and near(a, words[0])):
+            plural_near = any(near(b, w) for w in [words[1], *plural_forms(words[1])])   # "chew tyos"
+            if (a == words[0] and not last and plural_near) or (last and near(a, words[0])):
                 hits.append(n)
         return hits[0] if len(hits) == 1 else None
 
