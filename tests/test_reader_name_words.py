@@ -56,5 +56,5 @@ def test_the_verb_before_a_count_stays_a_verb() -> None:
 
 
 def test_a_two_word_name_in_the_plural_with_two_letters_swapped() -> None:
-    """"seed trasy": one edit (a swap) from the plural "trays", two from "tray"."""
-    assert translate("Take 2 seed trasy off the potting shed", GARDEN)["goal"] == {"potting_shed": {"seed_tray": 1}}
+    """"seed tarys": one edit (a swap) from the plural "trays", two from "tray"."""
+    assert translate("Take 2 seed tarys off the potting shed", GARDEN)["goal"] == {"potting_shed": {"seed_tray": 1}}
