@@ -51,6 +51,15 @@ def test_a_place_by_a_word_that_is_also_a_verb_where_a_place_stands(command: str
     assert translate(command, GARDEN)["goal"] == goal
 
 
+@pytest.mark.parametrize("command, goal", [
+    ("Return should have 2 trowels", {"return_bay": {"trowel": 2}}),
+    ("The front till needs 2 trowels and return wants 1 more lawn feed box",
+     {"front_till": {"trowel": 2}, "return_bay": {"lawn_feed_box": 1}}),
+])
+def test_a_place_by_a_verb_word_as_the_subject(command: str, goal: dict) -> None:
+    assert translate(command, GARDEN)["goal"] == goal
+
+
 def test_the_verb_before_a_count_stays_a_verb() -> None:
     assert translate("return 2 trowels to the potting shed", GARDEN)["goal"] == {"potting_shed": {"trowel": 2}}
 

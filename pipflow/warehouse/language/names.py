@@ -226,12 +226,16 @@ def _contents(names: list["_Name"]) -> dict[str, "_Name | None"]:
 PLACE_PREPOSITIONS = {"to", "into", "onto", "in", "on", "at", "from", "off", "inside"}
 AFTER_A_PLACE = {"to", "into", "onto", "from", "and", "or", "but", "please", "though", "then", "now",
                  "too", "by", "for", "today", "tonight", "first", "asap", "instead"}
+#: words after which such a word is a place as the subject ("dispatch should have 5 X", "...
+#: and dispatch wants 3 more"): a verb of the grammar is never followed by one of them
+PLACE_SUBJECT_VERBS = {"should", "shouldnt", "needs", "wants", "has", "hasnt", "is", "isnt", "must",
+                       "mustnt", "gets", "ought", "will", "wont"}
 
 
 def _verb_places(names: list["_Name"], reserved: set[str]) -> dict[str, "_Name"]:
     """Words of one place's name that the grammar also reads as a verb ("dispatch" of
     dispatch_cage, "return" of return_bay): read as that place only where a place stands (see
-    :data:`PLACE_PREPOSITIONS`); a word of two names is never read."""
+    :data:`PLACE_PREPOSITIONS`, :data:`PLACE_SUBJECT_VERBS`); a word of two names is never read."""
     owners: dict[str, list[_Name]] = {}
     for n in names:
         words = [w for w in re.split(r"[-_\s]+", n.name.lower()) if w]
@@ -572,8 +576,10 @@ class NameIndex:
         if found is None and norm in self.prefixes:
             short = self.prefixes[norm]
             found = Tok("name", raw[i], short.name, short.kind)  # "mezz" for mezzanine
-        if found is None and norm in self.verb_places and i > 0 and raw[i - 1].lower() in PLACE_PREPOSITIONS and (
-                i + 1 == len(raw) or not raw[i + 1][0].isalnum() or raw[i + 1].lower() in AFTER_A_PLACE):
+        after = raw[i + 1].lower().replace("'", "").replace("’", "") if i + 1 < len(raw) else ""
+        where = i > 0 and raw[i - 1].lower() in PLACE_PREPOSITIONS and (
+            not after or not after[0].isalnum() or after in AFTER_A_PLACE)
+        if found is None and norm in self.verb_places and (where or after in PLACE_SUBJECT_VERBS):
             place = self.verb_places[norm]
             found = Tok("name", raw[i], place.name, place.kind)   # "from dispatch to intake"
         return (found, i + 1) if found is not None else None
