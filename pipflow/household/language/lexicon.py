@@ -44,6 +44,14 @@ VIA_PROPERTY = {"hot": "heater", "clean": "sink", "sliced": "receptacle"}
 #: first word: "the wine" is no wine_glass, "dinner" no dinner_plate, "the phone" no phone_charger;
 #: "set", "pad", "board" are not forms ("dinner set", "heating pad", "ironing board")
 FORM_HEADS = {"book", "books", "puzzle", "puzzles", "album", "magazine"}
+#: words that name a kind of thing as well as a thing's name: "stove" of a "camping stove" is as
+#: much the range or the oven of the same kitchen. Such a word read alone (as the head of one
+#: thing's name) names that thing only where no other thing of the home is of the kind (its
+#: name or words have one of the kind's words); else it names none of them (asked, never a guess)
+KIND_WORDS = {
+    "stove": {"stove", "oven", "range", "cooker", "hob", "burner", "primus", "aga", "grill"},
+    "cooker": {"stove", "oven", "range", "cooker", "hob", "burner", "primus", "aga", "grill"},
+}
 #: state cues: activities whose absence means "off"; ``None``: only what the sentence names,
 #: a category word: that category of the world when the sentence names nothing
 ACTIVITIES = {"watching": None, "reading": "light", "using": None, "listening": None, "playing": None,

@@ -4,7 +4,8 @@ word sequences -> the things they may name. Read by the tagger, the typo reader,
 the candidate readings; kept per world while its names are unchanged."""
 from __future__ import annotations
 
-from pipflow.household.language.lexicon import DEVICES, FILLER, FORM_HEADS, PHRASES, WINDOWS, plurals, words_of
+from pipflow.household.language.lexicon import (DEVICES, FILLER, FORM_HEADS, KIND_WORDS, PHRASES, WINDOWS, plurals,
+                                                words_of)
 from pipflow.language.asides import FUNCTION_WORDS
 from pipflow.language.numbers import read_number
 
@@ -76,7 +77,9 @@ def _add_parts(world: dict, index: dict[tuple[str, ...], list[dict]]) -> None:
     ("kettle" of electric_kettle, "pot" of soup_pot), names that thing: people shorten names to
     their head noun. A modifier is not read alone ("kitchen" of kitchen_table is no room of the
     home, "coffee" of coffee_table no drink); a word two things share, a word the index already
-    has, a word of the command lexicon or a function word names nothing alone (never a guess)."""
+    has, a word of the command lexicon or a function word names nothing alone (never a guess), nor
+    does a kind word another thing of the home is of ("stove" beside a range: lexicon
+    ``KIND_WORDS``)."""
     owners: dict[str, set[tuple[str, str]]] = {}
     heads: set[str] = set()
     for kind, table in (("object", world.get("objects") or {}), ("place", world.get("places") or {})):
@@ -92,6 +95,8 @@ def _add_parts(world: dict, index: dict[tuple[str, ...], list[dict]]) -> None:
                 or w in FUNCTION_WORDS or any(w in key for key in FILLER) or read_number([w], 0):
             continue
         kind, name = next(iter(things))
+        if any(thing != (kind, name) for k in KIND_WORDS.get(w, ()) for thing in owners.get(k, ())):
+            continue   # "stove" of a camping stove, where the home has a range too: either
         index[(w,)] = [{"kind": kind, "name": name, "plural": False}]
         for p in plurals(w):
             if (p,) not in index and (p,) not in PHRASES and p not in owners:
@@ -128,6 +133,12 @@ def things_of_kind(world: dict, word: str) -> tuple[list[str], bool]:
     window is called the skylight. No such thing: empty."""
     forms = {word: False} | {word[:-len(end)] + repl: True for end, repl in (("ies", "y"), ("es", ""), ("s", ""))
                              if word.endswith(end) and len(word) > len(end) + 2}
+    for said, members in KIND_WORDS.items():   # "the stove": the range and the camping stove, asked
+        if said in forms:
+            found = [n for table in (world.get("objects") or {}, world.get("places") or {}) for n, e in table.items()
+                     if {w for p in [n] + list((e or {}).get("words") or []) for w in words_of(p)} & members]
+            if found:
+                return found, forms[said]
     for kind in KINDS:
         phrases = {" ".join(words_of(p)) for p in kind}
         said = [f for f in forms if f in phrases]
