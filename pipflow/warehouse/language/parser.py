@@ -1,21 +1,10 @@
 """The offline parser: a command and a world in, an order (:mod:`pipflow.warehouse.language.order`) out.
 
-It parses each sentence with lark's Earley parser over the grammar of
-:mod:`pipflow.warehouse.language.grammar`, whose lexicon is the world's names (:mod:`lexicon`), and reads
-the tree into statements and robot rules (a goal clause by the method of its rule:
-:mod:`pipflow.warehouse.language.goals`). It does no arithmetic against the stock: relative
-amounts, "except", "the rest", swaps and ellipsis stay symbolic for the resolver
-(:mod:`pipflow.warehouse.language.resolver`). What it does resolve is the sentence's own structure:
+Each sentence is parsed with lark's Earley parser over the grammar of
+:mod:`pipflow.warehouse.language.grammar` and read into statements and robot rules; what is
+resolved here and what is left to the resolver is said in :mod:`sentence`. A word the grammar
+cannot place is a :class:`TranslationError` that quotes it.
 
-* coordination with ellipsis: "four product1 to shelf2 and three to shelf3, taking them from
-  shelf1" (the item and the source are shared), "shelf2 to hold 6 product3, and shelf4 too";
-* a robot addressed by name ("Robot 5, bring two product1 to shelf2") or a rule that follows a
-  goal in its sentence with no scope of its own: the rule governs that goal's one product and
-  its one place or one move (several products or places leave the field open);
-* several places: "each"/"both"/"apiece" repeat a count, "respectively" pairs counts and
-  places in order; a count for a list of places with neither is refused (each, or a total?).
-
-A word the grammar cannot place is a :class:`TranslationError` that quotes it.
 The command is read in modules of one job each: :mod:`forest` (Earley over a sentence's
 terminals), :mod:`sentence` (a tree read into statements, with :mod:`goals`, :mod:`tails` and
 :mod:`rulescope`), :mod:`readings` (a sentence's readings compared), :mod:`command` (a command's
