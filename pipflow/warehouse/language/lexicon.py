@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, replace
+from typing import Any, Callable
 
 from lark import Token
 
@@ -216,28 +217,42 @@ def without_request_frames(toks: list[Tok]) -> list[Tok]:
     return out
 
 
-def quantity_phrases(toks: list[Tok], keywords: dict[str, str]) -> list[Tok]:
-    """The tokens with each phrase of :data:`QUANTITY_PHRASES` read as its grammar words (longest
-    first; the words as written stay the first token's text)."""
-    phrases = sorted(((tuple(k.split()), v) for k, v in QUANTITY_PHRASES.items() if all(w in keywords for w in v)),
-                     key=lambda x: -len(x[0]))
+def _replace_phrases(toks: list[Tok], phrases: list[tuple[tuple[str, ...], Any]],
+                     said_as: Callable[[list[Tok], tuple[str, ...], Any], list[Tok] | None]) -> list[Tok]:
+    """The tokens with each phrase (longest first) that ``said_as`` accepts at a position replaced
+    by the tokens it returns (None: the phrase does not stand there)."""
     out: list[Tok] = []
     k = 0
     while k < len(toks):
-        for words, said in phrases:
+        for words, value in phrases:
             got = toks[k:k + len(words)]
-            # a word of the phrase may have been read as a word of a name ("room" of cold_room in
-            # "wherever there's room"): the phrase, said as a whole, is the idiom
-            if len(got) == len(words) and all((x.kind == "word" and x.value == w) or (
-                    j > 0 and x.kind == "name" and x.text.lower() == w) for j, (x, w) in enumerate(zip(got, words))):
-                text = " ".join(x.text for x in got)
-                out += [Tok("word", text if j == 0 else "", w) for j, w in enumerate(said)]
+            new = said_as(got, words, value) if len(got) == len(words) else None
+            if new is not None:
+                out += new
                 k += len(words)
                 break
         else:
             out.append(toks[k])
             k += 1
     return out
+
+
+def quantity_phrases(toks: list[Tok], keywords: dict[str, str]) -> list[Tok]:
+    """The tokens with each phrase of :data:`QUANTITY_PHRASES` read as its grammar words (longest
+    first; the words as written stay the first token's text)."""
+    phrases = sorted(((tuple(k.split()), v) for k, v in QUANTITY_PHRASES.items() if all(w in keywords for w in v)),
+                     key=lambda x: -len(x[0]))
+
+    def said_as(got: list[Tok], words: tuple[str, ...], said: Any) -> list[Tok] | None:
+        # a word of the phrase may have been read as a word of a name ("room" of cold_room in
+        # "wherever there's room"): the phrase, said as a whole, is the idiom
+        if not all((x.kind == "word" and x.value == w) or (j > 0 and x.kind == "name" and x.text.lower() == w)
+                   for j, (x, w) in enumerate(zip(got, words))):
+            return None
+        text = " ".join(x.text for x in got)
+        return [Tok("word", text if j == 0 else "", w) for j, w in enumerate(said)]
+
+    return _replace_phrases(toks, phrases, said_as)
 
 
 #: whom a request is put to, after "can / could / would / will": "can somebody shift ..." is "can you
@@ -258,20 +273,14 @@ def lexicon_verbs(toks: list[Tok], keywords: dict[str, str]) -> list[Tok]:
     not have, is left alone). The verb's words as written stay its text."""
     phrases = sorted(((tuple(k.split()), v[1]) for k, v in VERB_LEXICON.items() if v[1] in keywords),
                      key=lambda x: -len(x[0]))
-    out: list[Tok] = []
-    k = 0
-    while k < len(toks):
-        for words, verb in phrases:
-            got = toks[k:k + len(words)]
-            if (len(got) == len(words) and all(x.kind == "word" and x.value == w for x, w in zip(got, words))
-                    and not (len(words) == 1 and words[0] in keywords)):
-                out.append(Tok("word", " ".join(x.text for x in got), verb))
-                k += len(words)
-                break
-        else:
-            out.append(toks[k])
-            k += 1
-    return out
+
+    def said_as(got: list[Tok], words: tuple[str, ...], verb: Any) -> list[Tok] | None:
+        if not all(x.kind == "word" and x.value == w for x, w in zip(got, words)) or (
+                len(words) == 1 and words[0] in keywords):
+            return None
+        return [Tok("word", " ".join(x.text for x in got), verb)]
+
+    return _replace_phrases(toks, phrases, said_as)
 
 
 #: words that take back what was just said ("no wait, make that 3", "sorry, I meant 4")
