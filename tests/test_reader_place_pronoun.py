@@ -41,3 +41,4 @@ def test_there_after_a_move_between_two_places_is_asked_with_each_offered(comman
 def test_there_with_one_place_named_is_that_place(command: str) -> None:
     reading = translate(command, BIKES)
     assert _rules(reading) == [{"never": AMRS, "from": "repair_bench"}, {"never": AMRS, "to": "repair_bench"}]
+

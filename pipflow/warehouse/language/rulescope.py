@@ -69,10 +69,16 @@ class RuleScope:
         # "Using only robot 5, move ...", "... without robot 3": an instrument of the sentence's
         # goal, as a pronoun would be
         instrument = self.first_word(node) in ("using", "with", "by", "without")
-        self.scoped(base, scope[0] if scope else node, instrument)  # scope words may sit on the rule itself
+        said = words.lower().split()
+        # "cart1 can't go / drive to P": it cannot be at P, so takes nothing from it either (as
+        # "keep cart1 away from P"; it was also read as "never delivers to P": asked, one echo)
+        visit = kind == "rule_never" and any(w in ("go", "drive") and k + 1 < len(said) and said[k + 1] in (
+            "to", "into") for k, w in enumerate(said))
+        self.scoped(base, scope[0] if scope else node, instrument, visit)  # scope words may sit on the rule itself
 
-    def scoped(self, base: dict, scope: Tree | None, pronoun: bool = False) -> None:
-        """One rule per product and place the scope names; none named: bound to the sentence."""
+    def scoped(self, base: dict, scope: Tree | None, pronoun: bool = False, visit: bool = False) -> None:
+        """One rule per product and place the scope names; none named: bound to the sentence.
+        ``visit``: a place the robots go to is one they are at (from and to)."""
         products: list[str] = []
         places: list[dict] = []
         unscoped_all = False
@@ -96,7 +102,8 @@ class RuleScope:
                 elif c.data == "rw_from":
                     places += [{"from": p} for p in self.place_list((self.sub(c, "places") or [c])[0])]
                 elif c.data == "rw_to":
-                    places += [{"to": p} for p in self.place_list((self.sub(c, "places") or [c])[0])]
+                    for p in self.place_list((self.sub(c, "places") or [c])[0]):
+                        places += [{"from": p, "at": True}, {"to": p, "at": True}] if visit else [{"to": p}]
                 elif c.data == "rw_at":
                     for p in self.place_list((self.sub(c, "places") or [c])[0]):
                         places += [{"from": p, "at": True}, {"to": p, "at": True}]
