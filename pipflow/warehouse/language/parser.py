@@ -18,6 +18,7 @@ from pipflow.language.characters import line_readings
 from pipflow.warehouse.language.candidates import candidates
 from pipflow.warehouse.language.command import parse_reading
 from pipflow.warehouse.language.forest import keywords
+from pipflow.warehouse.language.goals import Choice
 from pipflow.warehouse.language.readings import canonical, meaning_of
 
 __all__ = ["parse", "candidates", "canonical", "keywords"]
@@ -32,7 +33,8 @@ def parse(command: str, world: dict) -> dict:
 
     A line break ends a sentence; a command whose lines only make sense joined (a sentence
     wrapped onto the next line) is read joined, and one that makes sense both ways with two
-    different meanings is refused, quoting both (:func:`pipflow.language.characters.line_readings`).
+    different meanings (or one way with several of its own: a sentence asked) is refused, quoting
+    both (:func:`pipflow.language.characters.line_readings`).
     """
     readings = line_readings(command)
     if len(readings) == 1:
@@ -50,20 +52,33 @@ def parse(command: str, world: dict) -> dict:
         first = parse_reading(broken, world)
     except (TranslationError, Refusal) as exc:
         try:
-            return {**parse_reading(joined, world), "command": command}
+            second = parse_reading(joined, world)
         except (TranslationError, Refusal):
             raise exc from None
+        if isinstance(exc, Choice):   # read as sentences it has meanings of its own: asked there
+            raise _either_way(broken, f"{exc.args[0]}", _words(second)) from None
+        return {**second, "command": command}
     try:
         second = parse_reading(joined, world)
+    except Choice as exc:
+        raise _either_way(broken, _words(first), f"{exc.args[0]}") from None
     except (TranslationError, Refusal):
         return {**first, "command": command}
     a, b = meaning_of(first, world), meaning_of(second, world)
     if b is not None and a != b:
         if a is None:
             return {**second, "command": command}
-        wa = "; ".join(s["words"] for s in first["statements"] + first["rules"])
-        wb = "; ".join(s["words"] for s in second["statements"] + second["rules"])
-        raise TranslationError(f"the line breaks of '{broken}' can end sentences ('{wa}') or continue them "
-                               f"('{wb}'), and the two readings ask for different things; nothing is guessed: "
-                               f"end each sentence with a full stop")
+        raise _either_way(broken, _words(first), _words(second))
     return {**first, "command": command}
+
+
+def _words(order: dict) -> str:
+    return "; ".join(s["words"] for s in order["statements"] + order["rules"])
+
+
+def _either_way(broken: str, as_sentences: str, joined: str) -> TranslationError:
+    """A command whose line breaks may end sentences or continue them, read with different
+    meanings (or, one way, with several of its own): nothing is guessed."""
+    return TranslationError(f"the line breaks of '{broken}' can end sentences ('{as_sentences}') or continue "
+                            f"them ('{joined}'), and the two readings ask for different things; nothing is "
+                            f"guessed: end each sentence with a full stop")
