@@ -182,12 +182,39 @@ _BE = frozenset({"is", "are", "am", "was", "were", "s", "re", "m", "be", "been",
 _SUBJECT_BE = frozenset({"its", "hes", "shes", "theyre", "im", "youre", "thats", "theres"})
 
 
+#: verbs of wanting, modals and "please": a clause with one asks for something ("we want it
+#: cleared", "they must go in the cooler", "I'd like it emptied"), so it is never a report
+ASKING = frozenset({"want", "wants", "wanted", "need", "needs", "needed", "like", "wish", "would", "should",
+                    "must", "shall", "will", "can", "could", "ought", "gotta", "let", "lets", "d", "ll", "please",
+                    "sure", "mind", "have", "has", "got", "wanna", "needa", "hafta"})
+#: words of time that may come before a report's subject ("tomorrow we wash it with vinegar")
+WHEN = frozenset({"today", "tomorrow", "tonight", "yesterday", "later", "earlier", "lately", "recently"})
+
+
+def is_statement(words: Iterable[str], names: Callable[[str], bool]) -> bool:
+    """ "..., he make a strange noise", "..., tomorrow we wash it with vinegar", "..., they are ripe
+    now": a clause whose subject is a pronoun other than "you" (after a word of time, if any) says
+    what is or will be so; it asks for nothing (an order to the robots is an imperative, or is said
+    to "you"). The words of the grammar in it describe ("make", "wash"). Kept in, and read, when it
+    names anything of the world or a number (``names``), holds an operative word, or a word of
+    wanting or a modal (:data:`ASKING`: "we want it cleared", "they must go in salt")."""
+    ws = [w for w in words if w]
+    while ws and ws[0] in WHEN:
+        ws = ws[1:]
+    if len(ws) < 2 or ws[0] not in (SUBJECTS | _SUBJECT_BE) - {"there", "theres", "youre"}:
+        return False
+    return not any(near_operative(w) or names(w) or w in ASKING for w in ws)
+
+
 def is_report(words: Iterable[str], names: Callable[[str], bool]) -> bool:
     """ "it is getting serviced", "its wheel is playing up", "we're re-laying the floor": a subject,
     a form of "be" and a verb in -ing (within three words), reporting what is going on: the words of
     the grammar in it describe, they ask for nothing ("serviced", "wheel"). A name of the world, a
-    number (``names``) or an operative word ("it's not coming", "they're only ...") keeps it in."""
+    number (``names``) or an operative word ("it's not coming", "they're only ...") keeps it in.
+    Any other statement of a pronoun subject: :func:`is_statement`."""
     ws = [w for w in words if w]
+    if is_statement(ws, names):
+        return True
     if len(ws) >= 3 and ws[0] in ("that", "this") and ws[2] in _BE | {"got", "has", "had"} \
             and not near_operative(ws[1]) and not names(ws[1]):
         # "..., that order got cut", "..., this lot's ... ": a remark about a thing (a demonstrative,

@@ -559,6 +559,29 @@ class GoalRules:
             self.statements.append({"op": "distribute", "places": {"names": places}, "items": items,
                                     "amount": a, "words": words})
 
+    def g_split_pronoun(self, node: Tree) -> None:
+        """ "Take 4 X off P and split them evenly between Q and R": the move still open (taken, not
+        yet delivered) is shared out from where it was taken, as "Split 4 X from P between Q and
+        R"; as "move them to Q" (:meth:`g_pronoun_dest`), only a move without a destination, in
+        this sentence or the one before, gives "them" its meaning."""
+        parts = self.clause_parts(node, bare=True)
+        words, plist = parts.words, parts.plist
+        places = self.place_list(plist[-1])
+
+        def shared(st: dict) -> dict:
+            return {"op": "distribute", "places": {"names": places}, "items": st["items"], "amount": st["amount"],
+                    "from": st["from"], "words": f"{st['words']}, {words}"}
+
+        open_moves = [k for k, st in enumerate(self.statements) if st["op"] == "transfer" and not st.get("to")]
+        for k in open_moves:
+            self.statements[k] = shared(self.statements[k])
+        if not open_moves:
+            for k, st in enumerate(self.prior):
+                if st["op"] == "transfer" and not st.get("to"):
+                    self.updates[k] = shared(st)
+        if not open_moves and not self.updates:
+            raise TranslationError(f"{quote(words)}: 'them' of what? nothing was taken before it")
+
     def g_each(self, node: Tree) -> None:
         parts = self.clause_parts(node)
         words, locs = parts.words, parts.locs
@@ -638,17 +661,31 @@ class GoalRules:
         else:
             places = self.loc(locs[0])[0]
             head = self.ihead(self.sub(node, "ihead")[0], words)
+        self.statements.append(self._goal_statement(places, {"items": {"names": [head]}, "amount": self._cut(node),
+                                                              "words": words}, False))
+
+    def _cut(self, node: Tree) -> dict:
+        """What "cut by a third / by half / in half / by 2" leaves: a fraction of the count now, or
+        fewer by a count."""
         fr = self.sub(node, "frac")
         if fr:
             den = int(self.toks(fr[0], "FRAC")[0].value)
             num = int(self.toks(fr[0], "NUM")[0].value) if self.toks(fr[0], "NUM") else 1
-            amount = {"fraction": [den - num, den]}
-        elif any(isinstance(c, Token) and c.value == "half" for c in node.children):
-            amount = {"fraction": [1, 2]}
-        else:
-            amount = {"fewer": int(self.toks(node, "NUM")[-1].value)}
-        self.statements.append(self._goal_statement(places, {"items": {"names": [head]}, "amount": amount,
-                                                              "words": words}, False))
+            return {"fraction": [den - num, den]}
+        if any(isinstance(c, Token) and c.value == "half" for c in node.children):
+            return {"fraction": [1, 2]}
+        return {"fewer": int(self.toks(node, "NUM")[-1].value)}
+
+    def g_cut_pronoun(self, node: Tree) -> None:
+        """ "P's got too many X. Cut them by a fifth.": "them" is the X of the complaint just made,
+        as in "halve them" (:meth:`g_mult_pronoun`); nothing else gives a bare pronoun its place."""
+        words = self.words(node)
+        said = (self.observed or self.prior_observed or [None])[-1]
+        if said is None or not self.last_item or len(self.last_item) != 1:
+            raise TranslationError(f"{quote(words)}: which product on which place? say it "
+                                   f"(e.g. 'cut P's X by a third')")
+        self.put(list(said[1]), "each", [{"items": {"names": list(self.last_item)}, "amount": self._cut(node),
+                                          "words": words}], words)
 
     def g_keep_its(self, node: Tree) -> None:
         parts = self.clause_parts(node, bare=True)

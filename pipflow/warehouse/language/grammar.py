@@ -184,7 +184,7 @@ removev: "remove" | "take" | "unload" | "pull" | "withdraw" | "clear" | "get" | 
        | "get" "rid" "of" | "dispose" "of" | "throw" "out" | "take" "away" | "knock" | "grab" | "send" | "ship"
 splitv: "split" | "divide" | "distribute" | "share" | "spread" | "spread" "out" | "share" "out"
 among: "between" | "among" | "amongst" | "across" | "over"
-even: "evenly" | "equally" | "fairly" | "in" "equal" ("parts" | "shares") | ","? "same" "amount" "each"
+even: "evenly" | "equally" | "equal" | "fairly" | "in" "equal" ("parts" | "shares") | ","? "same" "amount" "each"
     | ","? "same" "number" "each" | ","? "equal" ("amounts" | "shares" | "parts")
 want: ("i" | "we") ("want" | "would" "like" | "like" | "need" | "wish") | "id" "like" | "wed" "like"
     | "give" | "make"
@@ -289,10 +289,13 @@ goal: there_be items loc                                  -> g_set
     | places place_appos? modal? "lose" items                -> g_lose
     | places ("is" | "are") ("short" ("by" | "of")? items | items "short" | "missing" items)  -> g_short
     | places ("is" | "are") ("over" "by" items | items "over")            -> g_too_many
-    | ("cut" | "reduce") (ihead loc | pitem_plain) ("by" (frac | "half" | NUM) | "in" "half")  -> g_cut
+    | ("cut" | "reduce") (ihead loc | pitem_plain) "down"? ("by" (frac | "half" | NUM) | "in" "half")  -> g_cut
+    | ("cut" | "reduce") ("them" | "it" | "those") "down"? ("by" (frac | "half" | NUM) | "in" "half")  -> g_cut_pronoun
     | refill places "with" ihead ("until" ("it" | "they") ("is" | "are") "full" | "to" ("capacity" | "top")) -> g_fill
     | ("keep" | "hold") places ("to" | "at")? items           -> g_place_set
     | places bneg below NUM of? ihead                        -> g_floor
+    | places "never" ("under" | "below" | ("fewer" | "less") "than") NUM of? ihead -> g_floor
+    | places "never" ("over" | "above" | "more" "than") NUM of? ihead -> g_ceiling
     | ("make" "sure" | "ensure") that? places bneg below NUM of? ihead -> g_floor
     | ("dont" | "do" "not" | "never") "let" places below NUM of? ihead -> g_floor
     | places modal? setv items ","? on_top                  -> g_add_place
@@ -331,7 +334,7 @@ goal: there_be items loc                                  -> g_set
     | removev "everything" from places                      -> g_empty
     | mult "up"? ihead loc                                 -> g_mult
     | (putv | addv) ("them" | "it" | "those" | "these" | "all" "of" "them") adv? loc -> g_pronoun_dest
-    | ("clear" | "empty" | "clean") places ("out" | "off")  -> g_empty
+    | ("clear" | "empty" | "clean") places "right"? ("out" | "off")  -> g_empty
     | places ("shouldnt" | "mustnt" | "cant" | "cannot" | "wont" | modal ("not" | "never")) setv ("more" "than" | "over" | "above") NUM of? ihead resumptive? -> g_ceiling
     | places ("shouldnt" | "mustnt" | "cant" | "cannot" | "wont" | modal ("not" | "never")) setv ("fewer" "than" | "less" "than" | "under" | "below") NUM of? ihead resumptive? -> g_floor
     | places modal? "keep" "only"? items                     -> g_keep_part
@@ -376,6 +379,7 @@ goal: there_be items loc                                  -> g_set
     | ("cap" | "limit") places ("at" | "to") NUM of? ihead    -> g_ceiling
     | ("keep" | "hold") pitem_plain ("somewhere" | "anywhere")? "between" NUM ("and" | "to") NUM -> g_poss_bound
     | ("keep" | "hold") pitem_plain (lower | upper) NUM       -> g_poss_bound
+    | pitem_plain ":"? lower NUM ","? ("and" | "but")? upper NUM -> g_poss_bound
     | places modal? "match" posplace ihead ("count" | "number" | "level" | "total")? -> g_match
     | places place_appos? modal? ("give" | "pass" | "hand" "over" | "hand") items ("to" | "over" "to") places -> g_give
     | ("bring" | "take" | "get" | "cut" | "reduce" | "lower" | "raise" | "increase" | "drop") pitem_plain ("down" | "up")? "to" NUM -> g_item_first
@@ -390,6 +394,7 @@ goal: there_be items loc                                  -> g_set
     | swapv posplace "and" posplace ihead                  -> g_swap_poss
     | splitv items? even? among places even?                -> g_split
     | splitv bare even? among places even?                  -> g_split
+    | splitv ("them" | "those" | "these" | "it" | "all" "of" "them") even? among places even? -> g_split_pronoun
     | "put" items even? among places even?                  -> g_split
 
 // "must not go above 3", "never drops under 2", "doesn't exceed 5": a ceiling or a floor
@@ -472,13 +477,13 @@ rgroup: (all | "a" | "an" | "any")? (RKIND | RTAG)        -> r_kind
       | all? ROBOTWORD ("tagged" | "labelled" | "labeled" | "marked") (RTAG | RKIND) -> r_kind
       | all? (RTAG | RKIND) ROBOTWORD                      -> r_kind
       | all? (RTAG | RKIND) ("shift" | "crew" | "team" | "squad") ROBOTWORD? -> r_kind
-      | all? ROBOTWORD "that" able? skillv NUM ("or" "more" | "or" "above" | "plus") -> r_skill_min
-      | all? ROBOTWORD "that" able? skillv ("at" "least" | "no" "less" "than" | "no" "fewer" "than") NUM -> r_skill_min
-      | all? ROBOTWORD "that" able? skillv NUM "or" ("less" | "fewer" | "below") -> r_skill_max
-      | all? ROBOTWORD "that" able? skillv ("at" "most" | "no" "more" "than") NUM -> r_skill_max
+      | all? ROBOTWORD ("that" | "who") able? skillv NUM ("or" "more" | "or" "above" | "plus") -> r_skill_min
+      | all? ROBOTWORD ("that" | "who") able? skillv ("at" "least" | "no" "less" "than" | "no" "fewer" "than") NUM -> r_skill_min
+      | all? ROBOTWORD ("that" | "who") able? skillv NUM "or" ("less" | "fewer" | "below") -> r_skill_max
+      | all? ROBOTWORD ("that" | "who") able? skillv ("at" "most" | "no" "more" "than") NUM -> r_skill_max
       | all? ROBOTWORD ("with" | "whose") skillv ("is" | "of")? ("at" "least" NUM | NUM ("or" "more" | "or" "above" | "plus")) -> r_skill_min
       | all? ROBOTWORD ("with" | "whose") skillv ("is" | "of")? ("at" "most" NUM | NUM "or" ("less" | "fewer" | "below")) -> r_skill_max
-      | all? ROBOTWORD ("carrying" | "lifting" | "with" skillv | "that" able? skillv | "whose" skillv "is") cmp -> r_skill_cmp
+      | all? ROBOTWORD ("carrying" | "lifting" | "with" skillv | ("that" | "who") able? skillv | "whose" skillv "is") cmp -> r_skill_cmp
       | SUPER ROBOTWORD?                                  -> r_super
       | NUM "of" SUPER ROBOTWORD                           -> r_super
 all: "all"
@@ -501,8 +506,8 @@ state: "broken" | "faulty" | "unavailable" | "offline" | "disabled" | "damaged" 
      | "idle" | "unused" | "busy" | "charging" | "malfunctioning" | "out" "of" ("order" | "service")
      | "out-of-service" | "under" "maintenance" | "in" "maintenance" | "off" "limits" | "spare"
      | "not" "working" | "not" "available" | "excluded" | "off" | "parked" | "benched" | "resting"
-     | "off" "duty" | "on" "break" | "not" "allowed" | "banned" | "forbidden" | "off" "this"? ("job" | "task" | "one")
-     | "out" "of" "this"? ("job" | "task" | "one" | "work") | "out" "of" "it"
+     | "off" "duty" | "on" "break" | "not" "allowed" | "banned" | "forbidden" | "off" "this"? ("job" | "task")
+     | "off" "this" NUM | "out" "of" "this" NUM | "out" "of" "this"? ("job" | "task" | "work") | "out" "of" "it"
      | ("down" | "out" | "off" | "in") "for" ("maintenance" | "repairs" | "repair" | "service" | "charging" | "inspection")
 use: "use" | "used" | "using" | "employ" | "employed" | "assign" | "assigned" | "involve" | "involved"
    | "work" | "help" | "be" "used" | "be" "involved" | "be" "employed" | "be" "assigned" | "participate"
@@ -542,6 +547,7 @@ rwhere: from places                                    -> rw_from
       | "for" ("anything" | "everything" | "any" ("job" | "task" | "work") | "this" ("job" | "task")) -> rw_all
       | "for" "whole" ("job" | "task" | "command" | "order" | "lot" | "thing") -> rw_all
       | "on" ("this" | "whole")? ("job" | "task")                          -> rw_all
+      | ("on" | "for") "this" NUM                                           -> rw_all
 rscope: robj? rwhere*
 
 rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
@@ -550,6 +556,7 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | robots rmodal? rneg ("enter" | "visit" | "approach" | "access" | "go" "near" | "go" "into" | "go" "to" | "come" "near") places -> rule_away
     | robots ("is" | "are") "only" ("ones" | NUM | ROBOTWORD | RKIND | RTAG) ("allowed" | "permitted") rwhere+ -> rule_only
     | robots modal? ("stay" | "stays" | "remain" | "remains") state -> rule_state
+    | robots modal? ("sit" | "sits") ("this" (NUM | "job" | "task" | "round") | "it") "out" -> rule_state
     | ("dont" | "do" "not" | "never") act robots rscope       -> rule_never
     | ("use" | "employ") robots "only" rscope                 -> rule_only
     | "no" robots ("on" "this" (NUM | "job" | "task"))? rscope -> rule_never

@@ -119,6 +119,19 @@ def check_text(command: str) -> str:
     return re.sub(r"\b([A-Za-z0-9_-]+)['\u2019]s\b", _possessive, text)
 
 
+def noun_adjuncts(toks: list[Tok]) -> list[Tok]:
+    """A place name right before a product name is a noun adjunct, said as a possessive ("the
+    north cave truckles", "one third of south cave truckles" = north cave's truckles): the
+    possessive mark is put between them (with no text, so echoes quote the words as said)."""
+    out: list[Tok] = []
+    for k, t in enumerate(toks):
+        out.append(t)
+        nxt = toks[k + 1] if k + 1 < len(toks) else None
+        if t.kind == "name" and t.of == "shelf" and nxt is not None and nxt.kind == "name" and nxt.of == "product":
+            out.append(Tok("word", "", POSS_MARK))
+    return out
+
+
 def _possessive(m: re.Match) -> str:
     word = m.group(1)
     if word.lower() in IS_CONTRACTIONS:
@@ -377,30 +390,44 @@ def _split_hyphens(toks: list[Tok], keywords: dict[str, str]) -> list[Tok]:
 
 
 def corrected(toks: list[Tok]) -> list[Tok]:
-    """A count taken back and replaced ("5, no, 6 bolts") is the second count, its source words
-    all of the span; the first is never read. Only a count right after a correction word set off
-    by a comma counts: "2, no bolts" is left to the grammar."""
+    """A count taken back and replaced ("5, no, 6 bolts", "Send 5 logs, no wait, 4 logs from P")
+    is the second count, its source words all of the span; the first is never read. Only a count
+    right after correction words set off by a comma counts ("2, no bolts" is left to the grammar);
+    a product said with the first count stays the product of the second, and one said with the
+    second must be the same."""
     out: list[Tok] = []
     i = 0
     while i < len(toks):
         t = toks[i]
+        k = i + 1
+        named = toks[k] if t.kind == "num" and k < len(toks) and toks[k].kind == "name" and toks[k].of == "product" else None
+        k += named is not None
         # set off by commas, or by dashes (read as ":"): "Take two - sorry, three - foam swords"
-        if t.kind == "num" and i + 1 < len(toks) and toks[i + 1].kind == "punct" and toks[i + 1].value in (",", ":"):
-            opened = toks[i + 1].value
-            for words in CORRECTIONS:
-                j = i + 2
-                if [str(x.value) for x in toks[j:j + len(words)] if x.kind == "word"] != list(words):
-                    continue
-                j += len(words)
-                if j < len(toks) and toks[j].kind == "punct" and toks[j].value in (",", opened):
-                    j += 1
-                if j < len(toks) and toks[j].kind == "num":
-                    end = j + 1 if (opened == ":" and j + 1 < len(toks) and toks[j + 1].kind == "punct"
-                                    and toks[j + 1].value == ":") else j   # the closing dash goes too
-                    text = " ".join(x.text for x in toks[i:end + 1])
-                    t = Tok("num", text, toks[j].value)
-                    i = end
+        if t.kind == "num" and k < len(toks) and toks[k].kind == "punct" and toks[k].value in (",", ":"):
+            opened = toks[k].value
+            j = k + 1
+            took_back = False
+            while True:   # "no", "no wait", "no sorry, make that"
+                comma = took_back and j < len(toks) and toks[j].kind == "punct" and toks[j].value == ","
+                at = j + comma
+                words = next((w for w in CORRECTIONS
+                              if [str(x.value) for x in toks[at:at + len(w)] if x.kind == "word"] == list(w)), None)
+                if words is None:
                     break
+                took_back, j = True, at + len(words)
+            if took_back and j < len(toks) and toks[j].kind == "punct" and toks[j].value in (",", opened):
+                j += 1
+            said = toks[j + 1] if j + 1 < len(toks) and toks[j + 1].kind == "name" and toks[j + 1].of == "product" else None
+            if took_back and j < len(toks) and toks[j].kind == "num" and not (
+                    named is not None and said is not None and said.value != named.value):
+                end = j + 1 if (opened == ":" and j + 1 < len(toks) and toks[j + 1].kind == "punct"
+                                and toks[j + 1].value == ":") else j   # the closing dash goes too
+                text = " ".join(x.text for x in toks[i:end + 1])
+                out.append(Tok("num", text, toks[j].value))
+                if named is not None and said is None:
+                    out.append(Tok("name", "", named.value, named.of))   # its words are the count's
+                i = end + 1
+                continue
         out.append(t)
         i += 1
     return out
@@ -585,7 +612,7 @@ class Lexicon:
         (:meth:`content`) is set aside: not returned, its words kept in :attr:`aside`; a sentence
         with some content-free clauses carries its reading without them as ``trimmed``."""
         text = self._joined(check_text(command))
-        toks = recognize(text, self.index)
+        toks = noun_adjuncts(recognize(text, self.index))
         fixed = []
         for t in toks:
             if t.kind == "word" and not self._known(str(t.value)) and self._group(t.text) is None:

@@ -160,11 +160,13 @@ def _starts(names: list["_Name"], by_name: dict[str, "_Name"], alone: Callable[[
             if len(owners) == 1 and alone(form) and form not in words_of_names}
 
 
-def _word_parts(names: list["_Name"], by_name: dict[str, "_Name"], alone: Callable[[str], bool]) -> tuple[
+def _word_parts(names: list["_Name"], by_name: dict[str, "_Name"], alone: Callable[[str], bool],
+                english: Callable[[str], bool]) -> tuple[
         dict[str, set[str]], dict[str, "_Name"], dict[str, list[str]], dict[str, list[str]]]:
     """The words of the world's multi-word names, read alone: (every name each word belongs to,
     the words that name one thing, the words several names share, a product's modifiers that are
-    only offered). See :class:`NameIndex`."""
+    only offered). ``english``: a word the grammar reads (a verb), whose plural may still be a name.
+    See :class:`NameIndex`."""
     having: dict[str, set[str]] = {}   # every name with the word, read alone or not
     readable: set[tuple[str, str]] = set()
     for n in names:
@@ -173,12 +175,14 @@ def _word_parts(names: list["_Name"], by_name: dict[str, "_Name"], alone: Callab
         if n.kind == "robot" or len([w for w in words if w.isalpha()]) < 2:
             continue
         for k, w in enumerate(words):
-            if not (w.isalpha() and len(w) >= 3 and alone(w)):
+            if not (w.isalpha() and len(w) >= 3 and (alone(w) or english(w))):
                 continue
             # the plural of the last word, and of a product's modifier ("corks" of cork-sack:
-            # the sacks of cork, counted; "tastings" is no noun of tasting_room)
+            # the sacks of cork, counted; "tastings" is no noun of tasting_room). A word the
+            # grammar reads ("wheel", "round": verbs) is no name, but its plural may be one
+            # ("wheels" of cheddar_wheel): each form is read alone only when it is no grammar word
             plural = k == len(words) - 1 or n.kind == "product"
-            forms = [w] + ([f for f in plural_forms(w)[:1] if alone(f)] if plural else [])
+            forms = [f for f in [w] + (plural_forms(w)[:1] if plural else []) if alone(f)]
             # a product goes by its head noun ("formula" of baby-formula), or by what its
             # container holds ("rice" of rice_sack, "soup" of soup_can); another modifier may
             # name something else ("oil" is no oil filter, "plants" no plant pots). A place goes
@@ -302,11 +306,14 @@ class NameIndex:
         # alone (a group, a word of the grammar, or refused: never a guess between names).
         by_name = {n.name: n for n in self.names}
 
+        def english(word: str) -> bool:   # a word of the grammar (a verb: "wheel", "round"), only that
+            return word in self.reserved and word not in STOPWORDS and word not in NUMBER_WORDS
+
         def alone(word: str) -> bool:
             return (word not in STOPWORDS and word not in self.reserved and word not in self.forms
                     and word not in NUMBER_WORDS and word not in self.groups
                     and not any(word in KIND_WORDS[k] or word in self.stems[k] for k in KINDS))
-        owners, self.parts, self.shared_parts, self.loose_parts = _word_parts(self.names, by_name, alone)
+        owners, self.parts, self.shared_parts, self.loose_parts = _word_parts(self.names, by_name, alone, english)
 
         self.prefixes = _starts(self.names, by_name, alone, owners)
         self.contents = _contents(self.names)
@@ -468,7 +475,7 @@ class NameIndex:
             hit = self.forms.get(normalize("".join(part))) or self.contents.get(normalize("".join(part)))
             if hit is not None:
                 return Tok("name", " ".join(part), hit.name, hit.kind), i + size
-        hit = self._misspelt_apart(raw[i:i + 2])
+        hit = self._misspelt_apart(raw[i:i + 2]) or self._shortened_apart(raw[i:i + 2])
         return (Tok("name", " ".join(raw[i:i + 2]), hit.name, hit.kind), i + 2) if hit is not None else None
 
     def _misspelt_part(self, word: str) -> "_Name | None":
@@ -505,6 +512,27 @@ class NameIndex:
             last = set(variants(b)) & ({words[1]} | set(plural_forms(words[1])))
             plural_near = any(near(b, w) for w in [words[1], *plural_forms(words[1])])   # "chew tyos"
             if (a == words[0] and not last and plural_near) or (last and near(a, words[0])):
+                hits.append(n)
+        return hits[0] if len(hits) == 1 else None
+
+    def _shortened_apart(self, pair: list[str]) -> "_Name | None":
+        """A two-word place or product written apart with its first word cut short and its second
+        as it is ("mag A" for magazine_a, "disp cage" for dispatch_cage): the short word is the
+        start, three letters or more and two or more short, of the name's first word, and no
+        word of the grammar or a name. Read only where exactly one name fits (with magazine_a
+        and magazine_b, "mag" alone fits neither, "mag B" one)."""
+        if len(pair) < 2 or not all(w.isalnum() for w in pair):
+            return None
+        a, b = pair[0].lower(), normalize(pair[1])
+        if (not a.isalpha() or len(a) < 3 or a in self.reserved or a in STOPWORDS or a in NUMBER_WORDS
+                or a in self.forms):
+            return None
+        hits = []
+        for n in self.names:
+            words = [w for w in re.split(r"[-_\s]+", n.name.lower()) if w]
+            if n.kind == "robot" or len(words) != 2 or len(a) > len(words[0]) - 2:
+                continue
+            if words[0].startswith(a) and b in {words[1], *plural_forms(words[1])}:
                 hits.append(n)
         return hits[0] if len(hits) == 1 else None
 

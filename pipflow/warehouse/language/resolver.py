@@ -383,15 +383,36 @@ def _check_feasible(st: _State) -> None:
             raise Refusal(f"the goal needs {total} {i} in all, but the world has only {have}")
 
 
+def _covers(rule: dict, statements: list[dict]) -> bool:
+    """Whether a scoped rule's scope takes in every statement of the order: each a move of its
+    product from its ``from`` to its ``to`` (then the same rule said for the whole command, "Have
+    R bring 1 X from A to B. Just R on this one.", restates it)."""
+    def one(sel: dict | None) -> str | None:
+        names = (sel or {}).get("names") or []
+        return names[0] if len(names) == 1 and not (sel or {}).get("all") else None
+    return bool(statements) and all(
+        s.get("op") == "transfer" and all(rule.get(k) in (None, one(s.get(f)))
+                                          for k, f in (("product", "items"), ("from", "from"), ("to", "to")))
+        for s in statements)
+
+
 def _rules(order: dict, world: dict, lines: list[str]) -> list[dict]:
     out: list[dict] = []
+    resolved = []
     for r in order.get("rules") or []:
         words = r.get("words", "")
-        names = select(r["robots"], world, words)
-        item: dict = {r["mode"]: names}
+        item: dict = {r["mode"]: select(r["robots"], world, words)}
         for k in ("product", "from", "to"):
             if r.get(k):
                 item[k] = r[k]
+        resolved.append((r, item))
+    scoped = [item for _, item in resolved if set(item) - {"only", "never"}
+              and _covers(item, order.get("statements") or [])]
+    for r, item in resolved:
+        words = r.get("words", "")
+        names = item[r["mode"]]
+        if len(item) == 1 and any(s.get(r["mode"]) == names for s in scoped):
+            continue  # the whole command's rule restates a rule whose scope is the whole command
         if item not in out:
             out.append(item)
             scope = " ".join(f"{k} {item[k]}" for k in ("product", "from", "to") if k in item) or "any move"

@@ -1,0 +1,46 @@
+"""Plain and non-native English for bounds, corrections and robot skills: "P never under 6 X",
+"P X: not less than 3, not more than 5", "Send 5 X, no wait, 4 X from P to Q", "robots who
+carry 3 or more", "split them equal". Each was refused on a word."""
+from __future__ import annotations
+
+import pytest
+
+from pipflow.errors import TranslationError
+from pipflow.warehouse.language.translator import translate
+from tests.tannery_world import TANNERY
+
+# tannery stock: drying_loft {cart_wheel 6, belt_round 2}, vat_east {cart_wheel 1, dye_drum 4},
+# vat_west {belt_round 5}, finishing_table {dye_drum 1}
+
+
+@pytest.mark.parametrize("command, amount", [
+    ("Vat west never under 3 belt rounds", {"at_least": 3}),
+    ("Vat west never below 3 belt rounds", {"at_least": 3}),
+    ("Vat west never more than 4 belt rounds", {"at_most": 4}),
+    ("Vat west belt rounds: not less than 3, not more than 4", {"at_least": 3, "at_most": 4}),
+])
+def test_bounds_said_plainly(command: str, amount: dict) -> None:
+    assert translate(command, TANNERY)["goal"] == {"vat_west": {"belt_round": amount}}
+
+
+@pytest.mark.parametrize("command", ["Send 5 dye drums, no wait, 3 dye drums from vat east to the finishing table",
+                                     "Send 5 dye drums, no wait, 3 from vat east to the finishing table",
+                                     "Send 5 dye drums - no sorry, make that 3 - from vat east to the finishing table"])
+def test_a_count_taken_back_with_its_product_is_the_new_count(command: str) -> None:
+    assert translate(command, TANNERY)["goal"] == {"vat_east": {"dye_drum": 1}, "finishing_table": {"dye_drum": 4}}
+
+
+def test_a_correction_that_names_another_product_is_refused() -> None:
+    with pytest.raises(TranslationError):
+        translate("Send 5 dye drums, no wait, 3 belt rounds from vat east to the finishing table", TANNERY)
+
+
+def test_robots_who_carry() -> None:
+    got = translate("Move 2 cart wheels from the drying loft to vat west using only robots who carry 2 or more", TANNERY)
+    assert got["constraints"] == [{"only": ["mule1", "mule2", "crane"], "product": "cart_wheel",
+                                   "from": "drying_loft", "to": "vat_west"}]
+
+
+def test_split_them_equal() -> None:
+    got = translate("Take 4 cart wheels off the drying loft and split them equal between vat east and vat west", TANNERY)
+    assert got["goal"] == {"drying_loft": {"cart_wheel": 2}, "vat_east": {"cart_wheel": 3}, "vat_west": {"cart_wheel": 2}}

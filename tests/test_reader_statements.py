@@ -1,0 +1,46 @@
+"""A clause that states what is so, its subject a pronoun other than "you" ("..., he makes a
+strange noise", "..., tomorrow we wash it with vinegar", "..., they are ripe now"), asks for
+nothing: it is set aside and said aloud, like a greeting. One that names anything of the world,
+holds a number or an operative word, or wants or must something ("we want it cleared", "they
+must go to shelf3") is never set aside: it is read, or the command refused."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+import yaml
+
+from pipflow.errors import TranslationError
+from pipflow.language.asides import is_statement
+from pipflow.warehouse.language.translator import understand
+
+ROOT = Path(__file__).resolve().parent.parent
+PAPER = yaml.safe_load((ROOT / "benchmarks" / "warehouse" / "world.yaml").read_text())
+# paper stock: shelf1 {p1 10, p2 2, p3 3}, shelf2 {p1 8, p2 5, p3 6, p4 2}
+
+
+@pytest.mark.parametrize("tail", ["tomorrow we wash it with vinegar", "they are ripe now",
+                                  "she makes a strange noise", "we clean it on fridays"])
+def test_a_statement_after_the_order_is_set_aside_and_said(tail: str) -> None:
+    got = understand(f"Take 2 product1 off shelf2, {tail}", PAPER)
+    assert got["goal"] == {"shelf2": {"product1": 6}}
+    assert got["order"]["set_aside"] == [tail]
+
+
+@pytest.mark.parametrize("tail", ["they go to shelf3", "it takes 2 more", "they must not go back",
+                                  "we only want one", "it should be empty after"])
+def test_a_statement_with_content_is_never_set_aside(tail: str) -> None:
+    try:
+        got = understand(f"Take 2 product1 off shelf2, {tail}", PAPER)
+    except TranslationError:
+        return
+    assert tail not in (got["order"].get("set_aside") or [])
+
+
+@pytest.mark.parametrize("words, statement", [
+    ("he make a strange noise", True), ("tomorrow we wash it with vinegar", True),
+    ("we want it cleared", False), ("they must go in the cooler", False), ("you move them", False),
+    ("there is no room", False), ("it is 3 deep", False), ("they never fit", False), ("empty it", False),
+])
+def test_what_a_statement_is(words: str, statement: bool) -> None:
+    assert is_statement(words.split(), lambda w: any(ch.isdigit() for ch in w)) is statement
