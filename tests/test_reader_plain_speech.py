@@ -44,3 +44,19 @@ def test_robots_who_carry() -> None:
 def test_split_them_equal() -> None:
     got = translate("Take 4 cart wheels off the drying loft and split them equal between vat east and vat west", TANNERY)
     assert got["goal"] == {"drying_loft": {"cart_wheel": 2}, "vat_east": {"cart_wheel": 3}, "vat_west": {"cart_wheel": 2}}
+
+
+@pytest.mark.parametrize("command", ["Vat west, no more than 4 belt rounds in there",
+                                     "Vat west: no more than 4 belt rounds in it"])
+def test_a_fronted_place_said_again_by_a_pronoun(command: str) -> None:
+    assert translate(command, TANNERY)["goal"] == {"vat_west": {"belt_round": {"at_most": 4}}}
+
+
+@pytest.mark.parametrize("command", ["Mules only on belt rounds", "Only the mules on belt rounds"])
+def test_robots_only_on_a_product_is_a_rule_scoped_to_it(command: str) -> None:
+    assert translate(command, TANNERY)["constraints"] == [{"only": ["mule1", "mule2"], "product": "belt_round"}]
+
+
+def test_robots_are_not_to_handle_a_product() -> None:
+    assert translate("The mules aren't to handle dye drums", TANNERY)["constraints"] == [
+        {"never": ["mule1", "mule2"], "product": "dye_drum"}]

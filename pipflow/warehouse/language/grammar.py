@@ -211,6 +211,7 @@ goal: there_be items loc                                  -> g_set
     | both? places modal? each? setv each? items left? resumptive? -> g_place_set
     | both? places modal? setv items ("each" | "apiece") left? -> g_place_set
     | both? places modal? "each" be? items                  -> g_place_set
+    | places (":" | ",") items resumptive                  -> g_place_set
     | places (":" | ",") items                             -> g_place_set
     | places crowded ("on" ihead)?                         -> g_complaint
     | places (":" | ",") items ("each" | "apiece") final?  -> g_place_set
@@ -444,7 +445,7 @@ anywhere: ("wherever" | "anywhere") ("you" "like" | "it" "fits" | "they" "fit")?
 // ", final count": the count is what the place ends with (no addition)
 final: ","? "final" ("count" | "total" | "figure" | "number")
 // "P should have 3 X on it": the pronoun is P itself
-resumptive: ("on" | "in" | "at" | "inside") ("it" | "them") left?
+resumptive: ("on" | "in" | "at" | "inside") ("it" | "them" | "there") left?
 except_count: ("except" "for"? | "but" | "apart" "from" | "other" "than" | "excluding" | "leaving") ("one" | NUM) ("of" "them")? ("on" | "in" | "at") places
 except_what: "ones" | "those" | "them" | "what" "is" | "any" | "what" "sits" | "what" "lies" | "ones" "that" ("are" | "sit" | "lie")
 
@@ -521,7 +522,7 @@ useact: use | act
 robj: ITEM ((lsep | "or" | "nor" | "," "or") ITEM)*       -> ro_items
     | ("anything" | "everything" | "any" ITEMWORD | ITEMWORD | "goods" | "stuff" | "things" | "all" ITEMWORD) -> ro_any
     | ("it" | "them" | "that" | "those" | "these" | "this")  -> ro_pronoun
-    | "for" ITEM (lsep ITEM)*                               -> ro_items
+    | ("for" | "on") ITEM (lsep ITEM)*                      -> ro_items
     | "all" ITEM (lsep ITEM)*                               -> ro_items
     | "any" ITEM ((lsep | "or" | "nor" | "," "or") ITEM)*   -> ro_items
 rwhere: from places                                    -> rw_from
@@ -567,6 +568,7 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | robots modal? ("stay" | "keep") ("off" | "away" "from" | "clear" "of") ITEM (lsep ITEM)* -> rule_away_items
     | robots ("is" | "are") state ","? ("so" | "and")? ("dont" | "do" "not") "use" ("it" | "them") -> rule_state
     | robots (("is" | "are") "not" | "isnt" | "arent") "to" "be" ("used" | "involved" | "employed" | "assigned") rscope -> rule_never
+    | robots (("is" | "are") "not" | "isnt" | "arent") "to" act rscope -> rule_never
     | robots modal? ("stay" | "keep") ("away" | "clear") from places -> rule_away
     | ("keep" | "leave") robots ("away" | "clear") from places -> rule_away
     | ("keep" | "leave") robots ("out" "of" | "off") places  -> rule_away
