@@ -39,3 +39,17 @@ def test_a_whole_command_rule_over_two_moves_stays_a_rule_of_its_own() -> None:
                     "from vat west to the drying loft. Just flea on this one.", TANNERY)
     assert sorted(got["constraints"], key=len) == [
         {"only": ["flea"]}, {"only": ["flea"], "product": "dye_drum", "from": "vat_east", "to": "finishing_table"}]
+
+
+@pytest.mark.parametrize("command", [
+    "Move 2 belt rounds from vat west to vat east, 1 dye drum from vat east to the finishing table, and keep flea out of it",
+    "Move 2 belt rounds from vat west to vat east. Keep flea out of it."])
+def test_keep_a_robot_out_of_it_is_the_job_never_a_place(command: str) -> None:
+    """"out of it" is the idiom for the job; read as a place "it" stands for, it had been asked
+    with one place per candidate, and the job's reading was never offered."""
+    assert translate(command, TANNERY)["constraints"] == [{"never": ["flea"]}]
+
+
+def test_keep_a_robot_out_of_a_named_place_is_that_place() -> None:
+    assert translate("Keep flea out of vat east", TANNERY)["constraints"] == [
+        {"never": ["flea"], "from": "vat_east"}, {"never": ["flea"], "to": "vat_east"}]

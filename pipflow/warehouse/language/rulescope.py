@@ -61,6 +61,10 @@ class RuleScope:
                 self.rules.append({**base, "product": str(t.value)})
             return
         if kind == "rule_away":
+            if words.lower().split()[-3:] == ["out", "of", "it"]:
+                # "keep beetle out of it": the idiom is the job, never a place "it" stands for
+                self.rules.append(base)
+                return
             for p in self.place_list(self.sub(node, "places")[0]):
                 self.rules.append({**base, "from": p})
                 self.rules.append({**base, "to": p})
