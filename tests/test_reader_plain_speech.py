@@ -60,3 +60,23 @@ def test_robots_only_on_a_product_is_a_rule_scoped_to_it(command: str) -> None:
 def test_robots_are_not_to_handle_a_product() -> None:
     assert translate("The mules aren't to handle dye drums", TANNERY)["constraints"] == [
         {"never": ["mule1", "mule2"], "product": "dye_drum"}]
+
+
+@pytest.mark.parametrize("command", ["The drying loft's cart wheels should come down to 2",
+                                     "the cart wheels on the drying loft should go down to 2"])
+def test_a_count_that_comes_down_to_n_is_set_to_n(command: str) -> None:
+    assert translate(command, TANNERY)["goal"] == {"drying_loft": {"cart_wheel": 2}}
+
+
+def test_leave_it_be_keeps_it_as_it_is() -> None:
+    got = translate("Leave the drying loft's belt rounds be and move 1 dye drum from vat east to vat west", TANNERY)
+    assert got["goal"] == {"drying_loft": {"belt_round": 2}, "vat_east": {"dye_drum": 3}, "vat_west": {"dye_drum": 1}}
+
+
+def test_restock_a_place_with_units_from_another_is_a_move() -> None:
+    got = translate("Restock the finishing table with 2 dye drums from vat east", TANNERY)
+    assert got["goal"] == {"vat_east": {"dye_drum": 2}, "finishing_table": {"dye_drum": 3}}
+
+
+def test_i_want_a_place_holding_n() -> None:
+    assert translate("I want vat west holding 3 belt rounds", TANNERY)["goal"] == {"vat_west": {"belt_round": 3}}

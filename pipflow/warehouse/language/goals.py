@@ -305,6 +305,14 @@ class GoalRules:
 
     g_transfer_except = g_transfer
 
+    def g_refill_from(self, node: Tree) -> None:
+        """ "Restock P with 2 X from Q": the units come from Q to P, a move (as "bring 2 X from Q
+        to P"): the place restocked is named first, the source after "from"."""
+        parts = self.clause_parts(node)
+        dst, src = (self.place_list(p) for p in self.sub(node, "places")[:2])
+        for np in parts.nps:
+            self.statements.append(self._transfer_statement(np, src, dst, parts.words))
+
     def g_transfer_except_count(self, node: Tree) -> None:
         """ "Bring all X to Q except one on P": every X goes to Q, but P keeps that many of its
         own (read as P set to N, then the rest of P's X to Q). Refused where P holds fewer than N

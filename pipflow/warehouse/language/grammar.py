@@ -254,6 +254,7 @@ goal: there_be items loc                                  -> g_set
     | splitv bare src even? among places even?              -> g_split_src
     | addv items to places each?                             -> g_add
     | addv items loc                                      -> g_add
+    | refill places "with" items from places               -> g_refill_from
     | refill places "with" items                           -> g_add_place
     | addv items adv? from places adv? to places           -> g_transfer
     | addv items from places ("and" | "," "and"?) to places -> g_transfer
@@ -280,6 +281,7 @@ goal: there_be items loc                                  -> g_set
     | removev items ("away" | "out" | "off") src           -> g_remove_src
     | ("get" | "have") items go from places to places       -> g_transfer
     | want places "to"? "be"? emptied                      -> g_empty
+    | want places ("holding" | "having" | "with") items       -> g_place_set
     | "nothing" modal? ("leaves" | "leave" | go "out" "of" | "be" "taken" "from" | "be" "removed" "from" | "comes" "off" | "come" "off") places -> g_keep
     | ("reduce" | "lower" | "cut" | "drop" | "increase" | "raise" | "bring" | "take" | "get") ihead loc ("down" | "up")? "to" NUM -> g_item_first
     | ("bring" | "take" | "get" | "knock") ihead loc ("down" | "up") "by" NUM -> g_updown
@@ -384,6 +386,9 @@ goal: there_be items loc                                  -> g_set
     | places modal? "match" posplace ihead ("count" | "number" | "level" | "total")? -> g_match
     | places place_appos? modal? ("give" | "pass" | "hand" "over" | "hand") items ("to" | "over" "to") places -> g_give
     | ("bring" | "take" | "get" | "cut" | "reduce" | "lower" | "raise" | "increase" | "drop") pitem_plain ("down" | "up")? "to" NUM -> g_item_first
+    // "east bench's pots should come down to 1", "the pots on east bench should go up to 5"
+    | pitem_plain modal? ("come" | "go" | "get") ("down" | "up") "to" NUM -> g_item_first
+    | ihead loc modal? ("come" | "go" | "get") ("down" | "up") "to" NUM -> g_item_first
     | ("leave" | "keep") its ihead (lsep ihead)* as_is?        -> g_keep_its_elided
     | ("make" | "set" | "bring" | "get" | "have") posplace ihead ("count" | "number" | "level" | "stock" | "total")? ("equal" "to" | "to" | "same" "as" | "match" | "equal") posplace ihead? -> g_equal_poss
     | putv "as" "many" ihead loc "as" ("there" ("are" | "is") | "sit" | "are") ("on" | "in" | "at") PLACE ((lsep) PLACE)* together? -> g_as_many_there
@@ -429,7 +434,7 @@ mult: "double" | "triple" | "quadruple" | "halve"
 swapv: "swap" | "trade" | "exchange" | "switch" | "interchange"
 emptyv: "empty" | "clear" | "clean" "out" | "clear" "out" | "empty" "out"
 emptied: "empty" | "emptied" | "cleared" | "vacant" | "cleaned" "out" | "emptied" "out" | "cleared" "out"
-as_is: "where" ("it" | "they") ("is" | "are") | "as" ("it" | "they") ("is" | "are") | "alone" | "as" "is"
+as_is: "where" ("it" | "they") ("is" | "are") | "as" ("it" | "they") ("is" | "are") | "alone" | "as" "is" | "be"
      | "unchanged" | "untouched"
      | "untouched" | "unchanged" | "as" "is" | "way" ("it" | "they") ("is" | "are" | "was" | "were") | "as" ("it" | "they") ("was" | "were")
 
