@@ -80,3 +80,18 @@ def test_restock_a_place_with_units_from_another_is_a_move() -> None:
 
 def test_i_want_a_place_holding_n() -> None:
     assert translate("I want vat west holding 3 belt rounds", TANNERY)["goal"] == {"vat_west": {"belt_round": 3}}
+
+
+@pytest.mark.parametrize("command, goal", [
+    ("The belt rounds on vat west, move them to vat east", {"vat_west": {"belt_round": 0}, "vat_east": {"belt_round": 5}}),
+    ("4 cart wheels of the drying loft, split them evenly between vat east and vat west",
+     {"drying_loft": {"cart_wheel": 2}, "vat_east": {"cart_wheel": 3}, "vat_west": {"cart_wheel": 2}}),
+    ("Drying loft wheels, halve them", {"drying_loft": {"cart_wheel": 3}}),
+])
+def test_a_fronted_topic_taken_up_by_a_pronoun(command: str, goal: dict) -> None:
+    assert translate(command, TANNERY)["goal"] == goal
+
+
+def test_a_sentence_that_reads_as_said_is_not_rearranged() -> None:
+    """"P's X - make it 2" reads as said (set to 2); the topic is moved only where it does not."""
+    assert translate("The drying loft's cart wheels - make it 2", TANNERY)["goal"] == {"drying_loft": {"cart_wheel": 2}}

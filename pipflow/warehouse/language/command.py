@@ -52,6 +52,22 @@ def lexed_command(command: str, world: dict) -> tuple[Lexicon, RobotSelector, li
     return lex, selector, sentences
 
 
+def _dislocated(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict, memory: dict,
+                pick: dict) -> tuple[SentenceReader, list[str]] | None:
+    """A sentence that does not read as said, read with its fronted topic where its pronoun stands
+    ("The wheels on P, double them": :func:`lexicon.left_dislocated`), with or without its
+    content-free clauses; the reader and the clauses set aside, or None where neither reads."""
+    moved = lexed.dislocated
+    for form, talk in ((moved, []), (moved.trimmed if moved else None, list(moved.aside) if moved else [])):
+        if form is None:
+            continue
+        try:
+            return one_meaning(form, lex, selector, world, memory, pick), talk
+        except (UnexpectedInput, TranslationError):
+            continue
+    return None
+
+
 def parse_reading(command: str, world: dict, picks: dict | None = None) -> dict:
     """:func:`parse` of one reading of the line breaks. ``picks``: for a sentence (its index), the
     reading a user chose among candidates: ``{"reading": k}``, ``{"scope": ...}``, or ``{"drop":
@@ -91,25 +107,30 @@ def parse_reading(command: str, world: dict, picks: dict | None = None) -> dict:
             error.sentence = index  # type: ignore[attr-defined]  # for the candidates (parse)
             if salvage and salvage != "sentence":
                 raise error from None  # the partial parse read the sentence without its talk already
-            if lexed.trimmed is None:
+            moved = None if isinstance(error, Choice) else _dislocated(lexed, lex, selector, world, memory, pick)
+            if moved is not None:
+                reader, talk = moved
+                set_aside += talk
+            elif lexed.trimmed is None:
                 if salvage == "sentence" and len(sentences) > 1 and not isinstance(error, Choice):
                     # a candidate reading without this sentence (one that reads, with competing
                     # meanings, is offered with each of them instead: never dropped)
                     unread.append(said(lexed))
                     continue
                 raise error from None
-            try:
-                reader = one_meaning(lexed.trimmed, lex, selector, world, memory, pick)
-            except (UnexpectedInput, TranslationError) as again:
-                # what is left after the talk is set aside is what does not read: say that
-                error = failure(again, lexed.trimmed, lex) if isinstance(again, UnexpectedInput) else again
-                error.sentence, error.trimmed = index, True  # type: ignore[attr-defined]
-                error.args = (f"{error.args[0]} (set aside: {'; '.join(repr(a) for a in lexed.aside)})",)
-                if salvage == "sentence" and len(sentences) > 1 and not isinstance(error, Choice):
-                    unread.append(said(lexed))
-                    continue
-                raise error from None
-            set_aside += list(lexed.aside)
+            else:
+                try:
+                    reader = one_meaning(lexed.trimmed, lex, selector, world, memory, pick)
+                except (UnexpectedInput, TranslationError) as again:
+                    # what is left after the talk is set aside is what does not read: say that
+                    error = failure(again, lexed.trimmed, lex) if isinstance(again, UnexpectedInput) else again
+                    error.sentence, error.trimmed = index, True  # type: ignore[attr-defined]
+                    error.args = (f"{error.args[0]} (set aside: {'; '.join(repr(a) for a in lexed.aside)})",)
+                    if salvage == "sentence" and len(sentences) > 1 and not isinstance(error, Choice):
+                        unread.append(said(lexed))
+                        continue
+                    raise error from None
+                set_aside += list(lexed.aside)
         for k, new in reader.updates.items():
             statements[k] = new
         if observed or reader.observed:

@@ -80,6 +80,9 @@ class Lexed:
     trimmed: "Lexed | None" = None
     #: the words of those clauses, for the echo
     aside: tuple[str, ...] = ()
+    #: the sentence with a fronted topic put where its pronoun stands (:func:`left_dislocated`),
+    #: read when the sentence as said does not parse; None when it has no such topic
+    dislocated: "Lexed | None" = None
 
 
 def check_text(command: str) -> str:
@@ -130,6 +133,49 @@ def noun_adjuncts(toks: list[Tok]) -> list[Tok]:
         if t.kind == "name" and t.of == "shelf" and nxt is not None and nxt.kind == "name" and nxt.of == "product":
             out.append(Tok("word", "", POSS_MARK))
     return out
+
+
+#: what may open a fronted topic ("the wheels on P, ...", "6 logs of P, ...", "all the X on P, ...")
+_TOPIC_OPENERS = frozenset({"the", "those", "these", "all"})
+#: prepositions that tie a fronted topic's product to its place ("X of P", "X on P")
+_TOPIC_PREPOSITIONS = frozenset({"of", "on", "in", "at", "from"})
+
+
+def _topic_length(toks: list[Tok], k: int) -> int:
+    """How many tokens from ``k`` make a fronted topic that names a product and its place: "[the |
+    N] X [of | on | in | at | from] [the] P", "P ['s] X", or "[N] X" alone; 0 when they do not."""
+    j = k
+    while j < len(toks) and toks[j].kind == "word" and toks[j].value in _TOPIC_OPENERS:
+        j += 1
+    if j < len(toks) and toks[j].kind == "num":
+        j += 1
+    if j + 1 < len(toks) and toks[j].kind == "name" and toks[j].of == "shelf":
+        j += 1 + (toks[j + 1].kind == "word" and toks[j + 1].value == POSS_MARK)
+        return j + 1 - k if j < len(toks) and toks[j].kind == "name" and toks[j].of == "product" else 0
+    if not (j < len(toks) and toks[j].kind == "name" and toks[j].of == "product"):
+        return 0
+    j += 1
+    if j < len(toks) and toks[j].kind == "word" and toks[j].value in _TOPIC_PREPOSITIONS:
+        at = j + 1 + (j + 1 < len(toks) and toks[j + 1].kind == "word" and toks[j + 1].value == "the")
+        if at < len(toks) and toks[at].kind == "name" and toks[at].of == "shelf":
+            j = at + 1
+    return j - k
+
+
+def left_dislocated(toks: list[Tok]) -> list[Tok]:
+    """A sentence whose topic is said first and taken up by a pronoun ("The wheels on wax bench,
+    double them", "6 logs of brine room, divide them between A and B"), with the topic put where
+    the pronoun stands. Only where the sentence opens with the topic, a comma follows, and
+    exactly one "them" / "it" / "those" comes after it; any other sentence is returned as it is.
+    Read only when the sentence as said does not parse (``Lexed.dislocated``)."""
+    n = _topic_length(toks, 0)
+    if not n or n >= len(toks) or not (toks[n].kind == "punct" and toks[n].value in (",", ":")):
+        return toks
+    pronouns = [j for j in range(n + 1, len(toks)) if toks[j].kind == "word" and toks[j].value in ("them", "it", "those")]
+    if len(pronouns) != 1:
+        return toks
+    at = pronouns[0]
+    return toks[n + 1:at] + toks[:n] + toks[at + 1:]
 
 
 def _possessive(m: re.Match) -> str:
@@ -630,18 +676,26 @@ class Lexicon:
         for t in toks + [Tok("punct", ".", ".")]:
             if t.kind == "punct" and t.value in (".", ";", "!", "?"):
                 if cur:
-                    keep, aside = self._clauses(cur)
-                    if not [x for x in keep if x.kind != "punct"]:
+                    said = self._sentence(cur)
+                    if said is None:
                         self.aside.append(" ".join(x.text for x in cur))
-                    elif aside:
-                        trimmed = self._terminals(keep)
-                        out.append(replace(self._terminals(cur), trimmed=trimmed, aside=tuple(aside)))
                     else:
-                        out.append(self._terminals(cur))
+                        moved = left_dislocated(cur)
+                        out.append(said if moved == cur else replace(said, dislocated=self._sentence(moved)))
                 cur = []
             else:
                 cur.append(t)
         return out
+
+    def _sentence(self, cur: list[Tok]) -> Lexed | None:
+        """A sentence's terminals, with its reading without content-free clauses (``trimmed``);
+        None when it is nothing but such clauses (it is set aside whole)."""
+        keep, aside = self._clauses(cur)
+        if not [x for x in keep if x.kind != "punct"]:
+            return None
+        if aside:
+            return replace(self._terminals(cur), trimmed=self._terminals(keep), aside=tuple(aside))
+        return self._terminals(cur)
 
     def _terminals(self, toks: list[Tok]) -> Lexed:
         tokens: list[Token] = []
