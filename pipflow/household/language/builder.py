@@ -8,7 +8,7 @@ from lark import Token, Tree
 
 from pipflow.errors import TranslationError
 from pipflow.household.language.grammar import NOUN_DUAL
-from pipflow.household.language.lexicon import (ACTIVITIES, COLD, FOUL_WORDS, LAUNDRY, LIGHT_CATEGORY_WORD, MEALS, OPPOSITE,
+from pipflow.household.language.lexicon import (ACTION_PARTICIPLES, ACTIVITIES, COLD, FOUL_WORDS, LAUNDRY, LIGHT_CATEGORY_WORD, MEALS, OPPOSITE,
                                                 TEMPERATURE_ADJECTIVES, UNIT_DETERMINERS)
 from pipflow.household.language.tokens import Tag
 
@@ -187,7 +187,10 @@ class Builder:
             if self._sub(node, "place") is not None:
                 st["to"] = {**self.place(self._sub(node, "place"))}
         elif kind == "once":   # "once they are clean, put them away": a state an earlier step asks
-            st = {"op": "change", "things": things, "to": self.state(self._sub(node, "state")), "once": True}
+            state = self._sub(node, "state")
+            st = {"op": "change", "things": things, "to": self.state(state)}
+            if words_under(self.tags, state) not in ACTION_PARTICIPLES:   # "once the mug is washed": done first
+                st["once"] = True
         elif kind in ("request", "after"):   # "after": "once you have washed the pan, ..." (done first)
             st = {"op": "change", "things": things, "to": self.state(self._sub(node, "state"))}
         elif kind == "unwant":   # "don't leave the fridge open", "the TV shouldn't be on": the other polarity

@@ -21,7 +21,7 @@ from __future__ import annotations
 from pipflow.household.language.lexicon import PHRASES
 
 _RULES = r"""
-start: _sep* item (_sep+ item | _sep* thengap | _sep+ _when _sep* item | _sep* _when)* _sep*
+start: _sep* (_when _sep*)? item (_sep+ item | _sep* thengap | _sep+ _when _sep* item | _sep* _when)* _sep*
 _when: once | onceat
 _sep: COMMA | END | @AND | @THEN | @BUT | @EXCL
 
