@@ -100,3 +100,24 @@ def test_gone_all_soft_is_food_gone_off(bothy):
 def test_awful_grades_a_cue(bothy):
     g = goal("It's awful dim in here.", bothy)
     assert g["state"]["lantern"] == ["on"]
+
+
+def test_an_exchange_spelled_out_after_a_colon_is_that_spelling_out(bothy):
+    g = goal("Swap the pear and the porringer over: pear on the settle, porringer on the dresser.", bothy)
+    assert g["in"] == {"settle": ["pear"], "dresser": ["porringer"]}
+    # an exchange not spelled out (or only half) is refused: where each goes is not said
+    for said in ("Swap the pear and the porringer over.", "Swap the pear and the porringer over: pear on the settle."):
+        with pytest.raises(TranslationError):
+            translate(said, bothy)
+
+
+def test_it_takes_two_is_how_a_thing_is_handled(bothy):
+    g = goal("Put the peat creel on the ingle. It takes two to lift.", bothy)
+    assert g["in"] == {"ingle": ["peat_creel"]}
+    with pytest.raises(TranslationError):   # said alone it asks nothing
+        translate("The peat creel takes two.", bothy)
+
+
+def test_ye_is_you_and_a_closing_eh_asks_nothing(bothy):
+    g = goal("Could ye wash the porringer, eh?", bothy)
+    assert g["state"] == {"porringer": ["clean"]}

@@ -1,7 +1,8 @@
 """Colloquial phrases read as the grammar's words before tagging, each by a rule of English that
 holds in any home (docs/household.md, "colloquial phrases"): "an' all" closing a clause is
 "too"; "the pair of them" is "both of them"; "all" between a verb of becoming and the word after
-it is a degree ("it's gone all soft"); "when it's done" after a step is "then". Each rewrite
+it is a degree ("it's gone all soft"); "when it's done" after a step is "then"; an exchange
+spelled out after a colon is that spelling out. Each rewrite
 leaves a note, so the echo says what was read so."""
 from __future__ import annotations
 
@@ -25,8 +26,41 @@ _BACK = {"it", "they", "that", "this", "those", "these"}
 _COPULA = {("is",), ("are",), ("has", "been"), ("have", "been")}
 
 
+#: verbs of an exchange, and the particles that may close one ("swap the mug and the jug over")
+_SWAPS = {"swap", "exchange", "switch"}
+_SWAP_PARTICLES = {"over", "round", "around", "about"}
+#: words of the things of an exchange that need not be said again after the colon
+_SWAP_GLUE = {"the", "a", "an", "my", "our", "your", "and", ","} | _SWAP_PARTICLES
+
+
+def spelled_out_swap(words: list[str], notes: list[str]) -> list[str]:
+    """ "swap the mug and the jug over: mug in the cupboard, jug in the fridge": an exchange whose
+    sentence spells out after a colon where each thing goes is read as that spelling out ("put the
+    mug in the cupboard, jug in the fridge"); every word of the things swapped must be said again
+    after the colon, else the words stay as said (an exchange alone is refused: where each goes is
+    not said)."""
+    out: list[str] = []
+    k = 0
+    while k < len(words):
+        start = k == 0 or words[k - 1] in (".", "!", "?", ";")
+        colon = next((j for j in range(k, len(words)) if words[j] in PUNCT and words[j] != ","), None)
+        if start and words[k] in _SWAPS and colon is not None and words[colon] == ":" and colon > k + 1:
+            swapped = [w for w in words[k + 1:colon] if w not in _SWAP_GLUE]
+            end = next((j for j in range(colon + 1, len(words)) if words[j] in (".", "!", "?", ";")), len(words))
+            told = set(words[colon + 1:end])
+            if swapped and all(w in told for w in swapped) and len(swapped) >= 2:
+                notes.append(f"'{' '.join(words[k:colon])}' is spelled out after the colon: read as where each goes")
+                out.append("put")
+                k = colon + 1
+                continue
+        out.append(words[k])
+        k += 1
+    return out
+
+
 def colloquial(words: list[str], notes: list[str]) -> list[str]:
     """The words with the colloquial phrases of the module docstring read as the grammar's words."""
+    words = spelled_out_swap(words, notes)
     out: list[str] = []
     k = 0
     while k < len(words):

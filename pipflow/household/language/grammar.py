@@ -30,7 +30,7 @@ _sep: COMMA | END | @AND | @THEN | @BUT | @EXCL
       | keep //+ STAY
       | empty //+ V_EMPTY
       | desire
-      | handling //+ HANDLING
+      | handling //+ HANDLING TAKESTWO
 
 change: _vstate @UP? things @PIECES? via? exception? _here?
       | _vstate things @UP via? exception?
@@ -194,6 +194,7 @@ tend: @V_TEND @OUT? things | @V_TEND things @OUT
 
 keep: @V_LEAVE things @STAY
 handling: sthings @IS (@INTENS | @TOO)* @HANDLING @FORONE?
+        | sthings @TAKESTWO //+ TAKESTWO
 empty: @V_EMPTY @OUT? place target?
 desire: _wish @THE? adj+ noun
 

@@ -355,6 +355,10 @@ NEEDS_OFFERED = {**{w: ("it is too bright", "switch off everything that is on") 
 #: leaking"): a reason for how the robots work, not an end state of the home; alone it asks nothing
 _add("HANDLING", "heavy,bulky,awkward,fragile,delicate,breakable,slippery,leaking,dripping,broken,cracked,chipped,"
      "wet,sticky,too big,too heavy,too awkward,quite heavy")
+#: "it takes two to lift", "the trunk needs two of you": the same, said as how many it takes
+_add("TAKESTWO", ",".join(f"{v} two{how}" for v in ("takes", "needs", "take", "need")
+                          for how in (" to lift", " to carry", " to move", " people", " of you", " robots"))
+     + ",takes two,is a two person job,is a two man job,is a two robot job,is a job for two")
 #: "it's a heavy one", "it's an awkward one": the same, said of the thing as "a ... one"
 _add("HANDLING", ",".join(f"{'an' if w[0] in 'aeiou' else 'a'} {w} one" for w in
                           ("heavy", "bulky", "awkward", "fragile", "delicate", "slippery")))
@@ -598,6 +602,8 @@ def normalize(text: str) -> str:
     # a tag question closing a sentence asks nothing: "bit dark in here, isn't it?"
     t = re.sub(r",?\s*\b(?:is|isn't|isnt|are|aren't|arent|was|wasn't)\s*(?:n't\s+)?(?:it|they|not it)\s*(?=\?)", " ", t)
     t = re.sub(r",?\s*\binnit\b", " ", t)
+    t = re.sub(r",?\s*\beh\b(?=\s*(?:[?.!]|$))", " ", t)   # "sort it out, eh?": a tag that asks nothing
+    t = re.sub(r"\bye\b", "you", t)   # "could ye ...": the older and dialect "you"
     t = re.sub(r"'s(?=\s+(?:been|gone|got|become|left)\b)", " has", t)   # "the console's been on"
     t = re.sub(r"'s(?=\s+still\s+(?:been|gone|got)\b)", " has", t)   # "the table's still got ..."
     t = re.sub(r"'s(?=\s+[a-z]{3,}ing\b)", " is", t)   # "the watering can's leaking"
