@@ -8,7 +8,7 @@ from lark import Token, Tree
 
 from pipflow.errors import TranslationError
 from pipflow.household.language.grammar import NOUN_DUAL
-from pipflow.household.language.lexicon import (ACTION_PARTICIPLES, ACTIVITIES, COLD, FOUL_WORDS, LAUNDRY, LIGHT_CATEGORY_WORD, MEALS, OPPOSITE,
+from pipflow.household.language.lexicon import (ACTION_PARTICIPLES, ACTIVITIES, COLD, FOUL_WORDS, LAUNDRY, LIGHT_CATEGORY_WORD, MEALS, NEARNESS, OPPOSITE,
                                                 TEMPERATURE_ADJECTIVES, UNIT_DETERMINERS)
 from pipflow.household.language.tokens import Tag
 
@@ -306,6 +306,13 @@ class Builder:
         elif light is not None:
             t = self.tag_of(self._tokens(light)[0])
             st.update(to=str(t.value), cue=f"it is {t.words}", default=LIGHT_CATEGORY_WORD)
+            near = self._sub(node, "near")
+            if near is not None:   # "it's dark over by the sofa": the light nearest the sofa
+                said = [self.tag_of(x).words for x in self._tokens(near) if self._cls(x) == "NEAR"]
+                if not set(said) <= NEARNESS:
+                    raise TranslationError(f"'{' '.join(said)}': a light cue says where it is felt by 'by' or "
+                                           "'near' a place; say which light")
+                st["near"] = self.place(self._sub(near, "place"))
         elif self._has(node, "DOACT") or (self._has(node, "SEE") and self._has(node, "TO")):
             # "I want to watch something": what the activity needs, on; "too dark to study": the light
             t = next(self.tag_of(x) for x in self._tokens(node) if self._cls(x) in ("DOACT", "SEE"))

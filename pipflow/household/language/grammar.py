@@ -137,6 +137,7 @@ cue: @NOBODY @IS? activity (@TO | @ON | @AT)? things? @ANYMORE?
    | @IT @IS (@INTENS | @TOO)* tempadj _here (@WITH @THAT? things (@GOING | on))?
    | @SUBJ @IS (@INTENS | @TOO)* (tempcue | tempadj) _here?
    | @IT @IS (@INTENS | @TOO)* lightcue _here?
+   | @IT @IS (@INTENS | @TOO)* lightcue near //+ NEAR
    | @IT @IS (@INTENS | @TOO)* lightcue _here? _doact //+ DOACT SEE
    | _wish _doact things? _here? //+ DOACT SEE
    | @SUBJ @IS? @SLEEPCUE //+ SLEEPCUE
@@ -161,6 +162,7 @@ cue: @NOBODY @IS? activity (@TO | @ON | @AT)? things? @ANYMORE?
    | (@V_MAKE | @V_PREPARE) @THE? @HOTDRINK //+ HOTDRINK
 activity: @ACTIVITY
 lightcue: @LIGHTCUE
+near: @NEAR+ place
 soundcue: @SOUNDCUE
 aircue: @AIRCUE
 closecue: @V_STATE

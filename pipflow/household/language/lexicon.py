@@ -284,6 +284,9 @@ _add("AT", "at")
 #: spatial relations the home model has no place for ("next to the fridge" is not in it): a
 #: class the grammar never uses, so a command with one is refused, quoting it
 _add("NEAR", "next to,beside,near,by,behind,under,underneath,below,above,in front of,on top of,over,between,around")
+#: the words of NEAR that say a light cue is felt close to a place ("dark over by the sofa"); the
+#: others ("under", "behind", "between") say where, not near what, and are refused in a cue
+NEARNESS = {"by", "near", "next to", "beside", "over", "around"}
 _add("WITH", "with")
 _add("FROM", "from,out of,off of")
 _add("OUT", "out")
