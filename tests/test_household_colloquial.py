@@ -36,6 +36,7 @@ objects:
   peat_creel: {in: settle, mass: 3, properties: [pickupable]}
   wireless:  {in: dresser, mass: 1, properties: [pickupable, toggleable], state: {on: false}}
   lantern:   {in: dresser, mass: 1, properties: [pickupable, toggleable], state: {on: false}, categories: [lamps]}
+  kettle:    {in: dresser, mass: 1, properties: [pickupable, toggleable], state: {on: false}}
 robots:
   r1: {start: [1.0, 1.0], skills: {pickup: 3, open: 1, toggle: 1, slice: 1, wash: 1, heat: 1}}
   r2: {start: [3.0, 1.0], skills: {pickup: 3, open: 1, toggle: 1, slice: 1, wash: 1, heat: 1}}
@@ -116,8 +117,22 @@ def test_it_takes_two_is_how_a_thing_is_handled(bothy):
     assert g["in"] == {"ingle": ["peat_creel"]}
     with pytest.raises(TranslationError):   # said alone it asks nothing
         translate("The peat creel takes two.", bothy)
+    # its words make no aside content: "we've got people coming round" is still talk set aside
+    g = goal("Put the pear on the dresser, we've got people coming round.", bothy)
+    assert g["in"] == {"dresser": ["pear"]}
 
 
 def test_ye_is_you_and_a_closing_eh_asks_nothing(bothy):
     g = goal("Could ye wash the porringer, eh?", bothy)
     assert g["state"] == {"porringer": ["clean"]}
+
+
+def test_a_purpose_with_a_possessive_or_a_drink_is_what_for(bothy):
+    assert goal("Warm the turnip for my supper.", bothy)["state"]["turnip"] == ["hot"]
+    assert goal("Switch the wireless on for our tea.", bothy)["state"] == {"wireless": ["on"]}
+    assert goal("Heat the herring for hot chocolates.", bothy)["state"]["herring"] == ["hot"]
+    # after a wish, "for" + a drink is what is wished for, no purpose
+    assert goal("I'm dying for a cuppa.", bothy)["state"] == {"kettle": ["on"]}
+    # "for" + a thing of the home may say where or whom: refused, never dropped
+    with pytest.raises(TranslationError):
+        translate("Heat the turnip for the settle.", bothy)
