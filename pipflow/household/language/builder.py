@@ -8,7 +8,7 @@ from lark import Token, Tree
 
 from pipflow.errors import TranslationError
 from pipflow.household.language.grammar import NOUN_DUAL
-from pipflow.household.language.lexicon import (ACTIVITIES, COLD, FOUL_WORDS, LAUNDRY, LIGHT_CATEGORY_WORD, MEALS, OPPOSITE,
+from pipflow.household.language.lexicon import (ACTION_PARTICIPLES, ACTIVITIES, COLD, FOUL_WORDS, LAUNDRY, LIGHT_CATEGORY_WORD, MEALS, NEARNESS, OPPOSITE,
                                                 TEMPERATURE_ADJECTIVES, UNIT_DETERMINERS)
 from pipflow.household.language.tokens import Tag
 
@@ -187,7 +187,10 @@ class Builder:
             if self._sub(node, "place") is not None:
                 st["to"] = {**self.place(self._sub(node, "place"))}
         elif kind == "once":   # "once they are clean, put them away": a state an earlier step asks
-            st = {"op": "change", "things": things, "to": self.state(self._sub(node, "state")), "once": True}
+            state = self._sub(node, "state")
+            st = {"op": "change", "things": things, "to": self.state(state)}
+            if words_under(self.tags, state) not in ACTION_PARTICIPLES:   # "once the mug is washed": done first
+                st["once"] = True
         elif kind in ("request", "after"):   # "after": "once you have washed the pan, ..." (done first)
             st = {"op": "change", "things": things, "to": self.state(self._sub(node, "state"))}
         elif kind == "unwant":   # "don't leave the fridge open", "the TV shouldn't be on": the other polarity
@@ -303,6 +306,13 @@ class Builder:
         elif light is not None:
             t = self.tag_of(self._tokens(light)[0])
             st.update(to=str(t.value), cue=f"it is {t.words}", default=LIGHT_CATEGORY_WORD)
+            near = self._sub(node, "near")
+            if near is not None:   # "it's dark over by the sofa": the light nearest the sofa
+                said = [self.tag_of(x).words for x in self._tokens(near) if self._cls(x) == "NEAR"]
+                if not set(said) <= NEARNESS:
+                    raise TranslationError(f"'{' '.join(said)}': a light cue says where it is felt by 'by' or "
+                                           "'near' a place; say which light")
+                st["near"] = self.place(self._sub(near, "place"))
         elif self._has(node, "DOACT") or (self._has(node, "SEE") and self._has(node, "TO")):
             # "I want to watch something": what the activity needs, on; "too dark to study": the light
             t = next(self.tag_of(x) for x in self._tokens(node) if self._cls(x) in ("DOACT", "SEE"))

@@ -21,7 +21,7 @@ from __future__ import annotations
 from pipflow.household.language.lexicon import PHRASES
 
 _RULES = r"""
-start: _sep* item (_sep+ item | _sep* thengap | _sep+ _when _sep* item | _sep* _when)* _sep*
+start: _sep* (_when _sep*)? item (_sep+ item | _sep* thengap | _sep+ _when _sep* item | _sep* _when)* _sep*
 _when: once | onceat
 _sep: COMMA | END | @AND | @THEN | @BUT | @EXCL
 
@@ -30,7 +30,7 @@ _sep: COMMA | END | @AND | @THEN | @BUT | @EXCL
       | keep //+ STAY
       | empty //+ V_EMPTY
       | desire
-      | handling //+ HANDLING
+      | handling //+ HANDLING TAKESTWO
 
 change: _vstate @UP? things @PIECES? via? exception? _here?
       | _vstate things @UP via? exception?
@@ -137,6 +137,7 @@ cue: @NOBODY @IS? activity (@TO | @ON | @AT)? things? @ANYMORE?
    | @IT @IS (@INTENS | @TOO)* tempadj _here (@WITH @THAT? things (@GOING | on))?
    | @SUBJ @IS (@INTENS | @TOO)* (tempcue | tempadj) _here?
    | @IT @IS (@INTENS | @TOO)* lightcue _here?
+   | @IT @IS (@INTENS | @TOO)* lightcue near //+ NEAR
    | @IT @IS (@INTENS | @TOO)* lightcue _here? _doact //+ DOACT SEE
    | _wish _doact things? _here? //+ DOACT SEE
    | @SUBJ @IS? @SLEEPCUE //+ SLEEPCUE
@@ -161,6 +162,7 @@ cue: @NOBODY @IS? activity (@TO | @ON | @AT)? things? @ANYMORE?
    | (@V_MAKE | @V_PREPARE) @THE? @HOTDRINK //+ HOTDRINK
 activity: @ACTIVITY
 lightcue: @LIGHTCUE
+near: @NEAR+ place
 soundcue: @SOUNDCUE
 aircue: @AIRCUE
 closecue: @V_STATE
@@ -194,6 +196,7 @@ tend: @V_TEND @OUT? things | @V_TEND things @OUT
 
 keep: @V_LEAVE things @STAY
 handling: sthings @IS (@INTENS | @TOO)* @HANDLING @FORONE?
+        | sthings @TAKESTWO //+ TAKESTWO
 empty: @V_EMPTY @OUT? place target?
 desire: _wish @THE? adj+ noun
 

@@ -31,6 +31,11 @@ ADJECTIVES = {
     "cool": "cold", "unheated": "cold", "whole": "whole", "unsliced": "whole",
     "open": "open", "opened": "open", "closed": "closed", "shut": "closed",
 }
+#: participles of the verbs above that are no adjective of their own: "once the mug is washed"
+#: says the washing is done first (as "once you have washed it"), while "once the mug is clean"
+#: or "once the fridge is closed" is a condition on the home (refused)
+ACTION_PARTICIPLES = {"washed", "cleaned", "rinsed", "scrubbed", "wiped", "sliced", "chopped", "diced", "halved",
+                      "heated", "warmed", "cooked", "reheated", "baked", "boiled", "fried", "toasted", "opened"}
 #: conditions a plan can reach from the other polarity (the domain's actions); the others
 #: (``dirty``, ``cold``, ``whole``) only select, or are kept where they already hold
 REACHABLE = {"open", "closed", "on", "off", "sliced", "clean", "hot"}
@@ -243,6 +248,9 @@ DEVICE_NOUNS = {"heating": "room heater", "sound": "sound maker", "hot drink": "
 FOUL_WORDS = {"minging", "smelly", "stinky", "rank", "gross", "disgusting", "rotten", "mouldy", "moldy", "manky",
               "grotty", "rancid", "putrid", "revolting", "whiffy", "pongy", "skanky", "nasty", "foul", "stale",
               "sour", "off"}
+#: what food turns when it is past eating, said only after a verb of becoming ("the orange has
+#: gone soft", "it's gone all mushy"): alone they are no state ("a soft cushion"), so no adjective
+GONE_OFF = {"soft", "mushy", "squishy", "wrinkly", "slimy", "furry", "soggy", "limp", "brown", "black"}
 for _w in FOUL_WORDS - {"off"}:
     _add("ADJ", _w, "dirty")
 #: a foul predicate said whole: "the fish smells off", "the scone has gone stale", "it's gone mouldy"
@@ -253,7 +261,8 @@ _add("FOULS", ",".join(
      for how in ("", "off", "bad", "awful", "funny", "horrible", "terrible")]
     + [f"{v} {how}" for v in ("has gone", "have gone", "is gone", "are gone", "has turned", "have turned",
                               "is going", "are going", "went", "gone", "turned")
-       for how in sorted(FOUL_WORDS - {"rank", "gross", "disgusting", "revolting", "nasty", "foul", "grim"}) + ["bad"]]),
+       for how in sorted(FOUL_WORDS - {"rank", "gross", "disgusting", "revolting", "nasty", "foul", "grim"}) + ["bad"]
+       + sorted(GONE_OFF)]),
      "dirty")
 #: the words that say a rubbish or food thing is for the bin when it is foul
 BIN_KINDS = ("rubbish", "trash", "garbage", "litter", "waste", "junk", "recycling", "food", "leftovers")
@@ -275,6 +284,9 @@ _add("AT", "at")
 #: spatial relations the home model has no place for ("next to the fridge" is not in it): a
 #: class the grammar never uses, so a command with one is refused, quoting it
 _add("NEAR", "next to,beside,near,by,behind,under,underneath,below,above,in front of,on top of,over,between,around")
+#: the words of NEAR that say a light cue is felt close to a place ("dark over by the sofa"); the
+#: others ("under", "behind", "between") say where, not near what, and are refused in a cue
+NEARNESS = {"by", "near", "next to", "beside", "over", "around"}
 _add("WITH", "with")
 _add("FROM", "from,out of,off of")
 _add("OUT", "out")
@@ -346,6 +358,14 @@ NEEDS_OFFERED = {**{w: ("it is too bright", "switch off everything that is on") 
 #: leaking"): a reason for how the robots work, not an end state of the home; alone it asks nothing
 _add("HANDLING", "heavy,bulky,awkward,fragile,delicate,breakable,slippery,leaking,dripping,broken,cracked,chipped,"
      "wet,sticky,too big,too heavy,too awkward,quite heavy")
+#: "it takes two to lift", "the trunk needs two of you": the same, said as how many it takes
+#: (only words of lifting: a word such as "people" here would make "we've got people coming
+#: round" content, and no longer talk to set aside)
+_add("TAKESTWO", ",".join(f"{v} two{how}" for v in ("takes", "needs", "take", "need")
+                          for how in (" to lift", " to carry", " to move", " of you", "")))
+#: "it's a heavy one", "it's an awkward one": the same, said of the thing as "a ... one"
+_add("HANDLING", ",".join(f"{'an' if w[0] in 'aeiou' else 'a'} {w} one" for w in
+                          ("heavy", "bulky", "awkward", "fragile", "delicate", "slippery")))
 _add("FORONE", "for one of you,for one robot,for one person,for one,to carry alone,to lift alone,on your own,"
      "for one of them,to lift on your own,to carry on your own")
 #: exclamations that ask for nothing by themselves ("What a tip.", "Ugh, ..."): reasons
@@ -362,7 +382,7 @@ _add("INTENS", "very,so,really,quite,rather,extremely,pretty,a bit,a little,way 
 #: ever so dark", "absolutely freezing", "proper cold", "dead noisy", "I could really go for"): read
 #: as nothing before a word they may grade (a state, a cue, a wish, "too"); anywhere else they are
 #: unplaced and refused ("dead" of "the plant is dead" is never dropped: nothing follows it there)
-HEDGES = ("ever so", "ever such a", "absolutely", "proper", "properly", "dead", "awfully", "terribly", "bloody",
+HEDGES = ("ever so", "ever such a", "absolutely", "proper", "properly", "dead", "awfully", "awful", "terribly", "bloody",
           "utterly", "totally", "a tad", "a touch", "somewhat", "fairly", "a little bit", "a wee bit", "a tiny bit",
           "incredibly", "so very", "that", "really quite", "just so", "too too", "well", "right",
           "all")
@@ -471,6 +491,11 @@ FILLER = {("please",), ("kindly",), ("just",), ("quickly",), ("now",), ("for", "
           ("honestly",), ("seriously",), ("even",), ("actually",),
           ("the", "two", "of", "you"), ("both", "of", "you"), ("you", "two"), ("you", "both"), ("all", "of", "you"),
           ("the", "pair", "of", "you"), ("you", "guys"), ("guys",)}
+#: who of the team is asked ("can one of you open the larder, and someone else light the fire",
+#: "two of you lift the sack"): who does a step is the plan's choice, so the words are framing,
+#: like "someone" above; a thing lifted by two is the team's way of working, not an end state
+FILLER |= {tuple(f"{ask} {who}".split()) for ask in ("", "can", "could", "will", "would")
+           for who in ("one of you", "two of you", "someone else", "somebody else", "one of the robots")}
 #: when something happened or for how long, which says nothing of how the home should end
 #: ("the console has been on all night", "last night's dishes"): dropped like politeness
 TIME_WORDS = {("all", "night"), ("all", "day"), ("all", "evening"), ("all", "morning"), ("all", "afternoon"),
@@ -581,6 +606,8 @@ def normalize(text: str) -> str:
     # a tag question closing a sentence asks nothing: "bit dark in here, isn't it?"
     t = re.sub(r",?\s*\b(?:is|isn't|isnt|are|aren't|arent|was|wasn't)\s*(?:n't\s+)?(?:it|they|not it)\s*(?=\?)", " ", t)
     t = re.sub(r",?\s*\binnit\b", " ", t)
+    t = re.sub(r",?\s*\beh\b(?=\s*(?:[?.!]|$))", " ", t)   # "sort it out, eh?": a tag that asks nothing
+    t = re.sub(r"\bye\b", "you", t)   # "could ye ...": the older and dialect "you"
     t = re.sub(r"'s(?=\s+(?:been|gone|got|become|left)\b)", " has", t)   # "the console's been on"
     t = re.sub(r"'s(?=\s+still\s+(?:been|gone|got)\b)", " has", t)   # "the table's still got ..."
     t = re.sub(r"'s(?=\s+[a-z]{3,}ing\b)", " is", t)   # "the watering can's leaking"

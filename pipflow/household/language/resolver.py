@@ -32,6 +32,7 @@ from typing import Callable
 from pipflow.errors import Refusal, TranslationError
 from pipflow.household.language.lexicon import (BIN_KINDS, COLD, DEVICE_NOUNS, DEVICES, INDEFINITE, LAUNDRY, LAUNDRY_PLACES, MASS_NOUNS,
                                                 MEALS, OPPOSITE, REACHABLE, VIA_PROPERTY, WINDOWS, plurals, words_of)
+from pipflow.household.language.nearness import nearest
 from pipflow.household.language.order import check_order
 from pipflow.household.problem import CONDITIONS
 from pipflow.household.world import entity, initial_state, members
@@ -742,6 +743,25 @@ class Resolver:
         if names:
             self.goal.notes.append(f"'{room}': the home model has no rooms; the one thing that fits is meant")
 
+    def _near(self, st: dict, names: list[str], cond: str, words: str) -> None:
+        """A light cue felt by a place ("it's dark over by the sofa"): the one light nearest that
+        place (:mod:`pipflow.household.language.nearness`); two as near: asked, each offered; the
+        nearest already as the cue asks: refused (the cue asks for a change, and a light further
+        away is not what was said)."""
+        place = self.place_of(st["near"], words)
+        close = nearest(self.world, names, place)
+        if len(close) > 1 and self.choose.get(words) in close:
+            close = [self.choose[words]]
+        if len(close) > 1:
+            raise _choice(TranslationError(f"'{words}': {', '.join(close)} are as near {place}; say which"),
+                          words, close)
+        if holds_now(self.world, close[0], cond):
+            raise TranslationError(f"'{words}': {close[0]}, the light nearest {place}, is {cond} already; "
+                                   "say what to do")
+        self.goal.notes.append(f"'{words}': read as {close[0]} {cond} (the light nearest {place})")
+        self.want(close[0], cond, False, words)
+        self.last = close
+
     def warmth(self, st: dict, words: str) -> None:
         """ "it is freezing in here": the room heaters on; "it is roasting in here": the room
         heaters that are on, off. Things the sentence names are what it speaks of ("it is freezing
@@ -857,6 +877,9 @@ class Resolver:
             named = [(n, False) for n in members(self.world, cats[0]) if applies(self.world, n, cond)]
             if not named:
                 raise Refusal(f"'{words}': nothing of the {cats[0]} category can be switched {cond}")
+            if st.get("near"):   # "it's dark over by the sofa": the one light nearest the sofa
+                self._near(st, [n for n, _ in named], cond, words)
+                return
             if st.get("room"):   # "it's gloomy in the study": which light, when the home has no rooms?
                 fit = [n for n, _ in named if not holds_now(self.world, n, cond)]
                 self._room(st, fit, words)

@@ -4,7 +4,7 @@ minutes", offered only as a candidate), what for ("for later"), amounts of a thi
 cherries"), and "or" under a negation ("nobody is using X or Y"). Each rewrite leaves a note."""
 from __future__ import annotations
 
-from pipflow.household.language.lexicon import (DURATION_HEDGES, DURATION_UNITS, GRADED, MANNER_OBJECTS, MANNERS,
+from pipflow.household.language.lexicon import (DURATION_HEDGES, DURATION_UNITS, GRADED, HOT_DRINKS, MANNER_OBJECTS, MANNERS, MEALS,
                                                 MEASURES, ORDER_WORDS, ORDINAL_DETERMINERS, PHRASES, PURPOSES, TIME_WORDS)
 from pipflow.household.language.tokens import PUNCT
 from pipflow.language.numbers import read_number
@@ -194,11 +194,13 @@ def particles(words: list[str], names_nothing, notes: list[str]) -> list[str]:
             notes.append("', so' opens a clause of what is done: read as ','")
             k += 1
             continue
-        if w == "for" and out and out[-1] not in PUNCT and k + 1 < len(words) and \
-                (k + 2 == len(words) or words[k + 2] in PUNCT) and names_nothing(words[k + 1]):
-            # "slice the ham for sandwiches": what for, when the word names nothing of the home
-            notes.append(f"'for {words[k + 1]}' says what for, not what the home should end like")
-            k += 2
+        n = _purpose(words, k, names_nothing) if w == "for" and out and out[-1] not in PUNCT \
+            and not _wish_before(out) else 0
+        if n:
+            # "slice the ham for sandwiches", "warm the milk for my cocoa": what for, when the words
+            # name nothing of the home (or a drink or a meal, which no home model holds)
+            notes.append(f"'{' '.join(words[k:k + n])}' says what for, not what the home should end like")
+            k += n
             continue
         if w == "so" and k + 2 < len(words) and words[k + 2] in _ENABLING and names_nothing(words[k + 1]) \
                 and out and out[-1] not in PUNCT:
@@ -209,6 +211,37 @@ def particles(words: list[str], names_nothing, notes: list[str]) -> list[str]:
         out.append(w)
         k += 1
     return out
+
+
+#: possessives and determiners a purpose may open with ("for my cocoa", "for our supper")
+_PURPOSE_DETERMINERS = {"the", "my", "our", "your", "his", "her", "their", "a", "some"}
+#: what a purpose may name though the lexicon knows it: a hot drink or a meal, in the singular
+#: or the plural ("for hot chocolates"), which no home model holds as a thing
+_CONSUMED = {tuple(p.split()) for p in HOT_DRINKS + tuple(MEALS)} | {
+    tuple(p.split()[:-1] + [p.split()[-1] + "s"]) for p in HOT_DRINKS + tuple(MEALS)}
+
+
+def _wish_before(out: list[str]) -> bool:
+    """Whether the words before a "for" end a wish that takes it ("I'm dying for", "could kill
+    for", "gasping for": lexicon ``WANT``): what follows is what is wished for, no purpose."""
+    return any(PHRASES.get(tuple(out[-n:]) + ("for",), ("",))[0] == "WANT" for n in range(1, min(4, len(out)) + 1))
+
+
+def _purpose(words: list[str], k: int, names_nothing) -> int:
+    """How many words at ``k`` ("for") close the clause as a purpose: "for" + a possessive or
+    determiner (optional) + one word that names nothing of the home, or a hot drink or a meal
+    (:data:`_CONSUMED`); 0 when they do not (a name of the home after "for" may be meant)."""
+    j = k + 1
+    if j < len(words) and words[j] in _PURPOSE_DETERMINERS:
+        j += 1
+    for end in range(j + 1, min(j + 4, len(words) + 1)):
+        if end < len(words) and words[end] not in PUNCT:
+            continue
+        said = tuple(words[j:end])
+        if said in _CONSUMED or (len(said) == 1 and names_nothing(said[0])):
+            return end - k
+        break
+    return 0
 
 
 def _clause_before(out: list[str]) -> list[str]:

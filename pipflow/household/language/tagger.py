@@ -7,6 +7,7 @@ listed in the lexicon)."""
 from __future__ import annotations
 
 from pipflow.errors import TranslationError
+from pipflow.household.language.colloquial import colloquial
 from pipflow.household.language.grammar import NOUN_DUAL
 from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
 from pipflow.household.language.names import named_by_first_word, things_of_kind, world_phrases
@@ -58,7 +59,8 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
     notes = notes if notes is not None else []
     index = world_phrases(world)
     vocab = vocabulary(index)
-    words = or_under_negation(measures(without_manner(words_of(command), notes), index, notes), notes)
+    words = or_under_negation(measures(without_manner(colloquial(words_of(command), notes), notes), index, notes),
+                              notes)
     words = particles(words, lambda x: x.isalpha() and not known_word(x, index, vocab), notes)
     said = list(words)   # as typed: a repair that still names nothing is quoted as typed
     words = repaired(words, index, vocab, notes, world)

@@ -1,0 +1,107 @@
+"""Colloquial phrases read as the grammar's words before tagging, each by a rule of English that
+holds in any home (docs/household.md, "colloquial phrases"): "an' all" closing a clause is
+"too"; "the pair of them" is "both of them"; "all" between a verb of becoming and the word after
+it is a degree ("it's gone all soft"); "when it's done" after a step is "then"; an exchange
+spelled out after a colon is that spelling out. Each rewrite
+leaves a note, so the echo says what was read so."""
+from __future__ import annotations
+
+from pipflow.household.language.tokens import PUNCT
+
+#: "and the torch an' all": a thing added to what the clause before did ("too"); only closing a
+#: clause ("and all the mugs" opens a noun phrase and stays)
+_ALSO = {("an", "all"): ["too"], ("and", "all"): ["too"]}
+#: "slice the pair of them": the two things before, as "both of them" (which asks when they are
+#: not exactly two)
+_PAIR = {("the", "pair", "of", "them"): ["both", "of", "them"], ("the", "two", "of", "them"): ["both", "of", "them"],
+         ("the", "pair"): ["both"]}
+#: verbs of becoming, after which "all" grades the word that follows ("gone all soft", "getting
+#: all dusty"), not a quantity of things
+BECOMING = {"gone", "going", "went", "turned", "turning", "turns", "got", "getting", "gets", "looks", "looking"}
+#: "when it's done", "once that's ready": the step before is finished, the order of the steps
+#: (which the plan decides); the pronoun points back, so a command that opens with it is refused
+_DONE = {"done", "ready", "finished"}
+_WHEN = {"when", "once", "after"}
+_BACK = {"it", "they", "that", "this", "those", "these"}
+_COPULA = {("is",), ("are",), ("has", "been"), ("have", "been")}
+
+
+#: verbs of an exchange, and the particles that may close one ("swap the mug and the jug over")
+_SWAPS = {"swap", "exchange", "switch"}
+_SWAP_PARTICLES = {"over", "round", "around", "about"}
+#: words of the things of an exchange that need not be said again after the colon
+_SWAP_GLUE = {"the", "a", "an", "my", "our", "your", "and", ","} | _SWAP_PARTICLES
+
+
+def spelled_out_swap(words: list[str], notes: list[str]) -> list[str]:
+    """ "swap the mug and the jug over: mug in the cupboard, jug in the fridge": an exchange whose
+    sentence spells out after a colon where each thing goes is read as that spelling out ("put the
+    mug in the cupboard, jug in the fridge"); every word of the things swapped must be said again
+    after the colon, else the words stay as said (an exchange alone is refused: where each goes is
+    not said)."""
+    out: list[str] = []
+    k = 0
+    while k < len(words):
+        start = k == 0 or words[k - 1] in (".", "!", "?", ";")
+        colon = next((j for j in range(k, len(words)) if words[j] in PUNCT and words[j] != ","), None)
+        if start and words[k] in _SWAPS and colon is not None and words[colon] == ":" and colon > k + 1:
+            swapped = [w for w in words[k + 1:colon] if w not in _SWAP_GLUE]
+            end = next((j for j in range(colon + 1, len(words)) if words[j] in (".", "!", "?", ";")), len(words))
+            told = set(words[colon + 1:end])
+            if swapped and all(w in told for w in swapped) and len(swapped) >= 2:
+                notes.append(f"'{' '.join(words[k:colon])}' is spelled out after the colon: read as where each goes")
+                out.append("put")
+                k = colon + 1
+                continue
+        out.append(words[k])
+        k += 1
+    return out
+
+
+def colloquial(words: list[str], notes: list[str]) -> list[str]:
+    """The words with the colloquial phrases of the module docstring read as the grammar's words."""
+    words = spelled_out_swap(words, notes)
+    out: list[str] = []
+    k = 0
+    while k < len(words):
+        pair = tuple(words[k:k + 2])
+        after = words[k + 2] if k + 2 < len(words) else "."
+        if pair in _ALSO and after in PUNCT and out and out[-1] not in PUNCT:
+            notes.append(f"'{' '.join(pair)}' closing a clause read as 'too'")
+            out += _ALSO[pair]
+            k += 2
+            continue
+        four = tuple(words[k:k + 4])
+        pairs = four if four in _PAIR else pair if pair in _PAIR and after in PUNCT else None
+        if pairs is not None and out and out[-1] not in PUNCT:
+            notes.append(f"'{' '.join(pairs)}' read as '{' '.join(_PAIR[pairs])}'")
+            out += _PAIR[pairs]
+            k += len(pairs)
+            continue
+        if words[k] == "all" and out and out[-1] in BECOMING and k + 1 < len(words) and words[k + 1] not in PUNCT \
+                and (k + 2 == len(words) or words[k + 2] in PUNCT):
+            notes.append(f"'{out[-1]} all {words[k + 1]}': 'all' grades '{words[k + 1]}' (no quantity of things)")
+            k += 1
+            continue
+        done = _when_done(words, k)
+        if done and any(w not in PUNCT and w not in ("and", "then") for w in out):
+            notes.append(f"'{' '.join(words[k:k + done])}': when the step before is done, the order of the steps; "
+                         "read as 'then'")
+            out.append("then")
+            k += done
+            continue
+        out.append(words[k])
+        k += 1
+    return out
+
+
+def _when_done(words: list[str], k: int) -> int:
+    """How many words at ``k`` say "when it is done" ("once that's ready", "after they've been
+    cooked"), 0 when they do not."""
+    if words[k] not in _WHEN or k + 1 >= len(words) or words[k + 1] not in _BACK:
+        return 0
+    for cop in _COPULA:
+        j = k + 2 + len(cop)
+        if tuple(words[k + 2:j]) == cop and j < len(words) and words[j] in _DONE:
+            return j + 1 - k
+    return 0
