@@ -326,7 +326,8 @@ def _held_out_tasks():
 def test_held_out_sets_are_never_misread(w, task):
     """The held-out sets are measured, not fitted: a refusal is allowed (it is counted by
     benchmarks/translator.py), a goal other than the gold never is, and a command whose right
-    answer is a refusal is never given a goal."""
+    answer is a refusal is never given a goal (one impossible only for its team has its literal
+    goal written, and may be read as that)."""
     from pipflow.household.language.translator import translate
 
     # a held-out set's author may not see the construction labels (they would read the other
@@ -336,7 +337,10 @@ def test_held_out_sets_are_never_misread(w, task):
         got = translate(task["command"], w)
     except (TranslationError, Refusal):
         return
-    assert task["feasible"] is not False and task["expect"] != "refuse", f"{task['id']}: {got['goal']}"
+    assert task["expect"] != "refuse", f"{task['id']}: {got['goal']}"
+    # impossible for its team, not in its words ("You two, warm the kippers" for a pair that can
+    # only lift): the gold writes the literal goal for the allocator to refuse, as in the warehouse
+    assert task["feasible"] is not False or task.get("goal"), f"{task['id']}: {got['goal']}"
     assert _norm(got["goal"]) == _norm(task["goal"])
 
 
