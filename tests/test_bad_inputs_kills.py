@@ -57,9 +57,16 @@ def pipflow(cwd: Path, *args, timeout: float = 300) -> subprocess.CompletedProce
                           env=clean_env(PIPFLOW_CACHE_DIR=str(cwd / "stepcache")))
 
 
+def _default_signals() -> None:
+    """In the child: SIGTERM and SIGHUP at their default action, whatever the test runner was
+    started with (under ``nohup`` SIGHUP is ignored, and a run leaves an ignored signal alone)."""
+    for sig in (signal.SIGTERM, signal.SIGHUP):
+        signal.signal(sig, signal.SIG_DFL)
+
+
 def start(cwd: Path, *args) -> subprocess.Popen:
     return subprocess.Popen(command(*args), cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                            env=clean_env(PIPFLOW_CACHE_DIR=str(cwd / "stepcache")))
+                            env=clean_env(PIPFLOW_CACHE_DIR=str(cwd / "stepcache")), preexec_fn=_default_signals)
 
 
 def wait_for(condition, timeout: float = 120, what: str = "") -> None:
