@@ -44,3 +44,36 @@ def test_a_statement_with_content_is_never_set_aside(tail: str) -> None:
 ])
 def test_what_a_statement_is(words: str, statement: bool) -> None:
     assert is_statement(words.split(), lambda w: any(ch.isdigit() for ch in w)) is statement
+
+
+@pytest.mark.parametrize("tail", ["the auditors are in", "her wheel's squeaking", "the kids keep climbing on it"])
+def test_a_statement_with_a_noun_subject_is_set_aside(tail: str) -> None:
+    got = understand(f"Take 2 product1 off shelf2, {tail}", PAPER)
+    assert got["goal"] == {"shelf2": {"product1": 6}}
+    assert len(got["order"]["set_aside"]) == 1
+
+
+def test_a_statement_about_robots_is_never_set_aside() -> None:
+    """"the strongest robot is busy" may be a rule said as a fact: read or refused, never dropped."""
+    with pytest.raises(TranslationError):
+        understand("Take 2 product1 off shelf2, the strongest robot is busy", PAPER)
+
+
+@pytest.mark.parametrize("command", ["Shelf2 needs 3 more product1 before we open at nine",
+                                     "Shelf2 needs 3 more product1 before the van comes at 10am",
+                                     "Shelf2 needs 3 more product1 until the van comes"])
+def test_a_clause_of_time_with_a_time_of_day_is_set_aside(command: str) -> None:
+    got = understand(command, PAPER)
+    assert got["goal"] == {"shelf2": {"product1": 11}}
+    assert got["order"]["set_aside"]
+
+
+@pytest.mark.parametrize("command", ["Shelf2 needs 3 more product1 before 4 go to shelf3",
+                                     "Shelf2 needs 3 more product1 before you move them",
+                                     "Shelf2 needs 3 more product1 before shelf1 is emptied"])
+def test_a_clause_of_time_with_a_count_a_name_or_an_order_is_never_set_aside(command: str) -> None:
+    try:
+        got = understand(command, PAPER)
+    except TranslationError:
+        return
+    assert not got["order"].get("set_aside")

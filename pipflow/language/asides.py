@@ -28,6 +28,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Callable, Iterable
 
+from pipflow.language.numbers import NUMBER_WORDS
 from pipflow.language.spelling import slip
 
 NEGATION = {"no", "not", "never", "nothing", "none", "nobody", "noone", "neither", "nor", "without", "dont",
@@ -110,22 +111,55 @@ def trailing_thanks(words: list[str], content: Callable[[str], bool]) -> int:
 #: command's own parts). Not "but", "except", "so", "and", "or", "then": they join or restrict.
 ADJUNCTS = frozenset({"for", "before", "after", "by", "until", "till", "once", "when", "while", "because",
                       "since", "as", "cause", "cos", "coz", "cuz"})
+#: adjunct openings of time, in which "at nine" or "10am" is a time of day, never a count
+TEMPORAL = frozenset({"before", "after", "until", "till", "when", "once", "while"})
+#: the robots, addressed: a clause of time said to them orders the work ("before you move them")
+_YOU = frozenset({"you", "your", "u", "ya", "ye", "yous", "youse"})
+#: words that make a number a time of day
+CLOCK = frozenset({"am", "pm", "oclock"})
+
+
+def without_clock_times(words: list[str]) -> list[str]:
+    """The words of a temporal adjunct without its times of day ("we open at nine", "the van
+    comes at 10 am"): a number after "at", or before or with "am" / "pm" / "o'clock"."""
+    def number(w: str) -> bool:
+        return w.isdigit() or w in NUMBER_WORDS or (w[:-2].isdigit() and w[-2:] in CLOCK)
+    out = []
+    for k, w in enumerate(words):
+        before, after = (words[k - 1] if k else ""), (words[k + 1] if k + 1 < len(words) else "")
+        if w in CLOCK or (number(w) and (before == "at" or after in CLOCK or w[-2:] in CLOCK)):
+            continue
+        out.append(w)
+    return out
+
+
 #: words after an adjunct's opening word that point back at the order itself ("for this", "before that")
 _BACK = OBJECT_PRONOUNS | {"then", "now", "which"}
 
 
-def trailing_adjunct(words: list[str], content: Callable[[str], bool]) -> int:
+def trailing_adjunct(words: list[str], content: Callable[[str], bool],
+                     names: Callable[[str], bool] | None = None) -> int:
     """How many words at the end of a clause that carries content are an adjunct of purpose, time
     or reason that carries none ("... on the ramp for afternoon pickup"): it opens with a word of
     :data:`ADJUNCTS`, and no word after it is operative (:func:`near_operative`, opening words of
     further adjuncts aside), a number, a name of the world or a content word of the domain
     (``content``); 0 when there is none. The earliest such opening word is taken (the adjunct may
-    hold several: "for pickup before lunch"); the words before it must still carry content."""
+    hold several: "for pickup before lunch"); the words before it must still carry content.
+
+    A clause of time ("before the van comes at ten", "until we open"): its times of day are no
+    counts (:func:`without_clock_times`), and with ``names`` (only names of the world and
+    numbers) its verbs may be words of the grammar ("comes"), since they say when, unless it is
+    said to the robots or about the order's things ("before you ...", "after it ...")."""
     for j in range(1, len(words) - 1):
         if words[j] not in ADJUNCTS or words[j + 1] in _BACK:
             continue
         rest = words[j + 1:]
-        if any(content(w) or any(ch.isdigit() for ch in w) or (near_operative(w) and w not in ADJUNCTS)
+        carries = content
+        if words[j] in TEMPORAL:
+            rest = without_clock_times(rest)   # "before we open at nine": a time, no count
+            if names is not None and not (set(rest) & (OBJECT_PRONOUNS | _YOU)):
+                carries = names
+        if any(carries(w) or any(ch.isdigit() for ch in w) or (near_operative(w) and w not in ADJUNCTS)
                for w in rest):   # "for 2pm collection": a time is a number, never talk
             continue
         if any(w in ADJUNCTS and nxt in _BACK for w, nxt in zip(rest, rest[1:] + [""])):
@@ -191,19 +225,36 @@ ASKING = frozenset({"want", "wants", "wanted", "need", "needs", "needed", "like"
 WHEN = frozenset({"today", "tomorrow", "tonight", "yesterday", "later", "earlier", "lately", "recently"})
 
 
+#: words that open a noun phrase subject ("the auditors are in", "her wheel's squeaking")
+DETERMINERS = frozenset({"the", "a", "an", "her", "his", "their", "my", "our", "your"})
+#: finite verbs a noun phrase subject is followed by in a statement ("... are in", "... keep drumming")
+FINITE = frozenset({"is", "are", "was", "were", "s", "re", "keep", "keeps", "has", "have", "had"})
+#: words for robots in general: a statement about them ("the strongest robot is busy") may be a
+#: rule said as a fact, so it is never set aside
+ROBOT_WORDS = frozenset({"robot", "robots", "bot", "bots", "agent", "agents", "strongest", "weakest", "fastest",
+                         "slowest", "biggest", "smallest", "heaviest", "lightest"})
+
+
 def is_statement(words: Iterable[str], names: Callable[[str], bool]) -> bool:
-    """ "..., he make a strange noise", "..., tomorrow we wash it with vinegar", "..., they are ripe
-    now": a clause whose subject is a pronoun other than "you" (after a word of time, if any) says
-    what is or will be so; it asks for nothing (an order to the robots is an imperative, or is said
-    to "you"). The words of the grammar in it describe ("make", "wash"). Kept in, and read, when it
-    names anything of the world or a number (``names``), holds an operative word, or a word of
-    wanting or a modal (:data:`ASKING`: "we want it cleared", "they must go in salt")."""
+    """ "..., he make a strange noise", "..., tomorrow we wash it with vinegar", "..., the auditors
+    are in", "..., her wheel's squeaking": a clause whose subject is a pronoun other than "you", or
+    a noun phrase followed by "is / are / keep / has" within three words (after a word of time, if
+    any), says what is or will be so; it asks for nothing (an order to the robots is an imperative,
+    or is said to "you"). The words of the grammar in it describe ("make", "wash", "keep"). Kept in,
+    and read, when it names anything of the world or a number (``names``), holds an operative word,
+    a word of wanting or a modal (:data:`ASKING`: "we want it cleared", "they must go in salt") or a
+    word for robots (:data:`ROBOT_WORDS`: "the strongest robot is busy" is a rule)."""
     ws = [w for w in words if w]
     while ws and ws[0] in WHEN:
         ws = ws[1:]
-    if len(ws) < 2 or ws[0] not in (SUBJECTS | _SUBJECT_BE) - {"there", "theres", "youre"}:
+    if len(ws) < 2:
         return False
-    return not any(near_operative(w) or names(w) or w in ASKING for w in ws)
+    pronoun = ws[0] in (SUBJECTS | _SUBJECT_BE) - {"there", "theres", "youre"}
+    noun = ws[0] not in FINITE and ws[0] not in FUNCTION_WORDS - DETERMINERS and any(
+        w in FINITE or (w.endswith("ing") and len(w) > 4 and ws[0] in DETERMINERS) for w in ws[1:4])
+    if not (pronoun or noun):
+        return False
+    return not any(near_operative(w) or names(w) or w in ASKING or w in ROBOT_WORDS for w in ws)
 
 
 def is_report(words: Iterable[str], names: Callable[[str], bool]) -> bool:

@@ -577,7 +577,7 @@ class Lexicon:
         name is never talk)."""
         if word in self.keywords and word not in FUNCTION_WORDS:
             return True
-        if word in NUMBER_WORDS or word in FRACTIONS or word in SUPERLATIVES or word in self.skills:
+        if word.isdigit() or word in NUMBER_WORDS or word in FRACTIONS or word in SUPERLATIVES or word in self.skills:
             return True
         if self._group(word) is not None:
             return True
@@ -594,7 +594,7 @@ class Lexicon:
         """Whether a word of a clause names something of this world or a count: a world name, a
         robot kind or tag, a number word, or a word within a typo's reach of a name's word (the
         test a pleasantry's words must pass: :func:`pipflow.language.asides.is_pleasantry`)."""
-        if word in NUMBER_WORDS or word in FRACTIONS or self._group(word) is not None:
+        if word.isdigit() or word in NUMBER_WORDS or word in FRACTIONS or self._group(word) is not None:
             return True
         if word in FUNCTION_WORDS or word in FILLERS or word in self.keywords:
             return False  # "for" is no misspelt "four"
@@ -608,8 +608,11 @@ class Lexicon:
         marks = {",", ":", "(", ")"}
         # the words as written (a greeting's "lads" is no misspelt "loads"); a word that a repair
         # would make a grammar word is content (:meth:`content`)
+        # a count said in one word keeps it (a time of day in an adjunct, "at nine", is no count:
+        # asides.without_clock_times); a digit or number word is content everywhere else
         words = [str(t.value) if t.kind == "punct" and t.value in marks else
-                 (re.sub(r"[^a-z0-9]", "", t.text.lower()) or str(t.value) if t.kind == "word" else "\0")
+                 (re.sub(r"[^a-z0-9]", "", t.text.lower()) or str(t.value) if t.kind == "word" else
+                  t.text.lower() if t.kind == "num" and re.fullmatch(r"[a-z]+|[0-9]+", t.text.lower()) else "\0")
                  for t in cur]
         keep: list[Tok] = []
         aside: list[str] = []
@@ -627,7 +630,8 @@ class Lexicon:
             if c in free:
                 continue
             clause = list(c.words[:len(c.words) - thanks] if c is parts[-1] else c.words)
-            n = trailing_adjunct(clause, lambda w: w == "\0" or (w not in TIMES_OF_DAY and self.content(w)))
+            n = trailing_adjunct(clause, lambda w: w == "\0" or (w not in TIMES_OF_DAY and self.content(w)),
+                                 lambda w: w == "\0" or (w not in TIMES_OF_DAY and self.names_world(w)))
             if n:
                 end = c.start + len(clause)
                 free.append(Clause(end - n, end, tuple(clause[-n:])))
