@@ -377,6 +377,7 @@ goal: there_be items loc                                  -> g_set
     | (putv | addv) items loc on_top                         -> g_add
     | mult "up"? posplace ihead                              -> g_mult
     | mult ("them" | "it" | "those")                        -> g_mult_pronoun
+    | ("lose" | "remove" | "take" "away" | "take" "off" | "get" "rid" "of") (frac | "half" | NUM) "of" ("them" | "those" | "it") -> g_cut_pronoun
     | places ("is" | "are") ("light" | "low" | "short" | "running" "low") "on" ihead ","? ("add" | "bring" | "send") NUM more? -> g_light_add
     | ("pack" | "load" | "stock" | "fill") places "up"? "full" "of" only? ihead only? -> g_fill
     | ("cap" | "limit") places ("at" | "to") NUM of? ihead    -> g_ceiling
@@ -489,10 +490,10 @@ rgroup: (all | "a" | "an" | "any")? (RKIND | RTAG)        -> r_kind
       | all? ROBOTWORD ("that" | "who") able? skillv ("at" "most" | "no" "more" "than") NUM -> r_skill_max
       | all? ROBOTWORD ("with" | "whose") skillv ("is" | "of")? ("at" "least" NUM | NUM ("or" "more" | "or" "above" | "plus")) -> r_skill_min
       | all? ROBOTWORD ("with" | "whose") skillv ("is" | "of")? ("at" "most" NUM | NUM "or" ("less" | "fewer" | "below")) -> r_skill_max
-      | all? ROBOTWORD ("carrying" | "lifting" | "with" skillv | ("that" | "who") able? skillv | "whose" skillv "is") cmp -> r_skill_cmp
+      | all? ROBOTWORD ("carrying" | "lifting" | "with" skillv | ("that" | "who") able? skillv | "whose" skillv "is") cmp per_trip? -> r_skill_cmp
       | SUPER ROBOTWORD?                                  -> r_super
       | NUM "of" SUPER ROBOTWORD                           -> r_super
-all: "all"
+all: "all" | "any" | "every"
 cmp: ("at" "least" | "no" "less" "than" | "no" "fewer" "than" | "not" "less" "than") NUM -> cmp_min
    | NUM ("or" "more" | "or" "above" | "plus" | "or" "higher")  -> cmp_min
    | ("more" | "greater" | "higher") "than" NUM                  -> cmp_above
@@ -500,6 +501,7 @@ cmp: ("at" "least" | "no" "less" "than" | "no" "fewer" "than" | "not" "less" "th
    | ("at" "most" | "no" "more" "than" | "not" "more" "than") NUM -> cmp_max
    | NUM "or" ("less" | "fewer" | "below" | "lower")             -> cmp_max
 able: "can" | "may"
+per_trip: "at" "a" "time" | "per" "trip" | "a" "trip" | "in" "one" "go"
 skillv: SKILL | "carry" | "carries" | "lift" | "lifts" | "move" | "moves" | "handle" | "handles"
 
 rneg: "not" | "never" | "dont" | "doesnt" | "shouldnt" | "mustnt" | "cant" | "cannot" | "wont"
@@ -516,6 +518,7 @@ state: "broken" | "faulty" | "unavailable" | "offline" | "disabled" | "damaged" 
      | "off" "this" NUM | "out" "of" "this" NUM | "out" "of" "this"? ("job" | "task" | "work") | "out" "of" "it"
      | ("down" | "out" | "off" | "in") "for" ("maintenance" | "repairs" | "repair" | "service" | "charging" | "inspection")
 use: "use" | "used" | "using" | "employ" | "employed" | "assign" | "assigned" | "involve" | "involved"
+   | "moving" | "carrying" | "handling" | "shifting"
    | "work" | "help" | "be" "used" | "be" "involved" | "be" "employed" | "be" "assigned" | "participate"
 act: "move" | "moves" | "carry" | "carries" | "touch" | "touches" | "take" | "takes" | "deliver" | "send" | "sends"
    | "delivers" | "handle" | "handles" | "bring" | "brings" | "transport" | "transports" | "ship"
@@ -525,7 +528,7 @@ act: "move" | "moves" | "carry" | "carries" | "touch" | "touches" | "take" | "ta
 useact: use | act
 
 robj: ITEM ((lsep | "or" | "nor" | "," "or") ITEM)*       -> ro_items
-    | ("anything" | "everything" | "any" ITEMWORD | ITEMWORD | "goods" | "stuff" | "things" | "all" ITEMWORD) -> ro_any
+    | ("anything" | "everything" | "any" ITEMWORD | ITEMWORD | "goods" | "stuff" | "things" | "stock" | "all" ITEMWORD) -> ro_any
     | ("it" | "them" | "that" | "those" | "these" | "this")  -> ro_pronoun
     | ("for" | "on") ITEM (lsep ITEM)*                      -> ro_items
     | "all" ITEM (lsep ITEM)*                               -> ro_items
@@ -609,6 +612,10 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | robots oblig? "do" ("it" | "that" | "this" | "job" | "task" | "work") -> rule_do_it
     | ("let" | "have" | "get")? robots oblig? "do" ("all" "of" ("it" | "that" | "this" | "them") | "everything" | "whole" ("job" | "lot" | "thing")) -> rule_only
     | "only" robots (rmodal | oblig)? "do" ("it" | "that" | "this" | "job" | "task" | "work") -> rule_do_it
+    // "Get the strongest robot on it: ...": on the job, the whole command (as "on this one");
+    // "get R to do it" is "have R do it"
+    | ("get" | "put") robots "on" ("it" | "this" (NUM | "job" | "task")?) -> rule_only
+    | "get" robots "to" "do" ("it" | "this" | "that")         -> rule_do_it
     | robots ("is" | "are") "only" ("ones" | NUM | ROBOTWORD) ("allowed" "to" | "permitted" "to" | "that" ("may" | "can") | "who" ("may" | "can")) useact? rscope -> rule_only
     | robots ("can" | "may" | "could" | "might") act rscope  -> rule_permission
 

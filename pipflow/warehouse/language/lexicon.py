@@ -492,7 +492,8 @@ class Lexicon:
         self.world = world
         self.keywords = keywords  # keyword text -> terminal name
         # the grammar's own words are English, never a misspelt name ("haul" is no hauler1)
-        self.index = NameIndex(world, reserved={k for k in keywords if k.isalpha()} | FILLERS)
+        # superlatives are words of robot rules, never a misspelt name ("strongest" is no string_set)
+        self.index = NameIndex(world, reserved={k for k in keywords if k.isalpha()} | FILLERS | set(SUPERLATIVES))
         robots = world.get("robots") or {}
         self.kinds = {str(r.get("kind")).lower() for r in robots.values()
                       if isinstance(r, dict) and r.get("kind")}

@@ -120,6 +120,20 @@ def stem_groups(names: list[str]) -> dict[str, list[str]]:
     return {stem: members for stem, members in groups.items() if len(members) >= 2}
 
 
+def _robot_labels(world: dict) -> set[str]:
+    """The robots' kinds and tags and their plurals ("dolly", "dollies"): words of groups, never
+    read as a misspelt name ("dollies" is no typo of the robot dottie: it read "only the
+    dollies" as "only dottie")."""
+    out: set[str] = set()
+    for robot in (world.get("robots") or {}).values():
+        labels = [robot.get("kind")] + list(robot.get("tags") or []) if isinstance(robot, dict) else []
+        for label in labels:
+            if label:
+                word = normalize(str(label))
+                out |= {word, *plural_forms(word)}
+    return out
+
+
 def _heads(name: str) -> set[str]:
     """The class nouns a place name carries: "bay" of bay3, "cage" of north_cage, "freezer" of
     freezer-a (a short label after the noun), none of a one-word name without a number."""
@@ -258,7 +272,7 @@ class NameIndex:
         self.by_kind: dict[str, list[str]] = {}
         # words the command grammar reads as English ("haul", "stick", "knock"): a misspelling is
         # never guessed from one of them, or "Haul three" would become a robot hauler3
-        self.reserved = set(reserved)
+        self.reserved = set(reserved) | _robot_labels(world)
         for kind in KINDS:
             found = list((world.get(WORLD_KEYS[kind]) or {}).keys())
             self.by_kind[kind] = [str(n) for n in found]
