@@ -95,3 +95,25 @@ def test_a_fronted_topic_taken_up_by_a_pronoun(command: str, goal: dict) -> None
 def test_a_sentence_that_reads_as_said_is_not_rearranged() -> None:
     """"P's X - make it 2" reads as said (set to 2); the topic is moved only where it does not."""
     assert translate("The drying loft's cart wheels - make it 2", TANNERY)["goal"] == {"drying_loft": {"cart_wheel": 2}}
+
+
+def test_a_product_called_by_what_its_container_holds() -> None:
+    """"strings" of string_spool: a spool (like a set, kit, reel or roll) holds what it is named for."""
+    from tests.test_reader_group_words import SHOP
+    got = translate("Move 3 strings from the rod rack to the till counter", SHOP)
+    assert got["goal"] == {"rod_rack": {"string_spool": 5}, "till_counter": {"string_spool": 4}}
+
+
+def test_except_what_is_sitting_on_a_place() -> None:
+    got = translate("Move all the belt rounds to vat east except what's sitting on the drying loft", TANNERY)
+    assert got["goal"] == {"vat_east": {"belt_round": 5}, "drying_loft": {"belt_round": 2}, "vat_west": {"belt_round": 0},
+                           "finishing_table": {"belt_round": 0}}
+
+
+def test_a_list_announced_is_talk() -> None:
+    got = translate("Two things: vat east should have 2 belt rounds, and 1 dye drum from vat east to vat west", TANNERY)
+    assert got["goal"] == {"vat_east": {"belt_round": 2, "dye_drum": 3}, "vat_west": {"dye_drum": 1}}
+
+
+def test_a_place_is_to_hold() -> None:
+    assert translate("Vat west's to hold 3 belt rounds", TANNERY)["goal"] == {"vat_west": {"belt_round": 3}}

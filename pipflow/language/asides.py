@@ -284,7 +284,9 @@ def is_report(words: Iterable[str], names: Callable[[str], bool]) -> bool:
 #: you do, ..."): whole clauses only, though "one" and "then" are operative elsewhere
 OPENERS = frozenset({("quick", "one"), ("right", "then"), ("ok", "then"), ("okay", "then"), ("right", "so"),
                      ("whatever", "you", "do"), ("now", "then"), ("so", "then"), ("right", "folks"),
-                     ("quick", "favour"), ("quick", "favor"), ("quick", "job")})
+                     ("quick", "favour"), ("quick", "favor"), ("quick", "job"), ("two", "things"),
+                     ("three", "things"), ("couple", "of", "things"), ("a", "couple", "of", "things"),
+                     ("few", "things"), ("a", "few", "things"), ("couple", "things")})
 
 
 def is_opener(words: Iterable[str]) -> bool:

@@ -454,6 +454,7 @@ final: ","? "final" ("count" | "total" | "figure" | "number")
 resumptive: ("on" | "in" | "at" | "inside") ("it" | "them" | "there") left?
 except_count: ("except" "for"? | "but" | "apart" "from" | "other" "than" | "excluding" | "leaving") ("one" | NUM) ("of" "them")? ("on" | "in" | "at") places
 except_what: "ones" | "those" | "them" | "what" "is" | "any" | "what" "sits" | "what" "lies" | "ones" "that" ("are" | "sit" | "lie")
+           | ("what" | "whatever") ("is" | "s") ("sitting" | "lying" | "left" | "stored" | "kept")
 
 // ---------------------------------------------------------------- ellipsis tails
 tail: places ("too" | "as" "well" | "also")                 -> t_too

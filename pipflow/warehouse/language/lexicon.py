@@ -125,11 +125,15 @@ def check_text(command: str) -> str:
 def noun_adjuncts(toks: list[Tok]) -> list[Tok]:
     """A place name right before a product name is a noun adjunct, said as a possessive ("the
     north cave truckles", "one third of south cave truckles" = north cave's truckles): the
-    possessive mark is put between them (with no text, so echoes quote the words as said)."""
+    possessive mark is put between them (with no text, so echoes quote the words as said). A
+    name's "'s" before "to" is "is" ("Showroom's to hold 10 X"): nothing is possessed there."""
     out: list[Tok] = []
     for k, t in enumerate(toks):
-        out.append(t)
         nxt = toks[k + 1] if k + 1 < len(toks) else None
+        if (t.kind == "word" and t.value == POSS_MARK and k and toks[k - 1].kind == "name" and nxt is not None
+                and nxt.kind == "word" and nxt.value == "to"):
+            t = Tok("word", t.text, "is")   # "Showroom's to hold 10 X": is to, no possessive
+        out.append(t)
         if t.kind == "name" and t.of == "shelf" and nxt is not None and nxt.kind == "name" and nxt.of == "product":
             out.append(Tok("word", "", POSS_MARK))
     return out

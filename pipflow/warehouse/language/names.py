@@ -55,7 +55,8 @@ STOPWORDS: set[str] = {
 #: container nouns: a product named "<content> <container>" (rice_sack, soup_can) may be called by
 #: its content alone
 CONTAINERS = {"sack", "can", "bag", "box", "tin", "jar", "bottle", "carton", "crate", "case", "pack", "packet",
-              "tub", "drum", "tote", "pallet", "keg", "barrel", "bucket", "pail", "cask", "basket", "tray"}
+              "tub", "drum", "tote", "pallet", "keg", "barrel", "bucket", "pail", "cask", "basket", "tray",
+              "set", "kit", "bundle", "reel", "spool", "roll", "pouch", "sleeve"}
 NUMBER_MARKS = {"number", "no", "nr", "num", "#"}
 ORDINALS: dict[str, int] = {
     w: k for k, w in enumerate(
