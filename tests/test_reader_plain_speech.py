@@ -117,3 +117,31 @@ def test_a_list_announced_is_talk() -> None:
 
 def test_a_place_is_to_hold() -> None:
     assert translate("Vat west's to hold 3 belt rounds", TANNERY)["goal"] == {"vat_west": {"belt_round": 3}}
+
+
+def test_a_list_line_that_opens_the_command_sets_the_count() -> None:
+    assert translate("Vat west 3 belt rounds, drying loft 1.", TANNERY)["goal"] == {
+        "vat_west": {"belt_round": 3}, "drying_loft": {"belt_round": 1}}
+
+
+def test_a_list_line_after_another_sentence_is_still_asked() -> None:
+    """After "Add 2 X to P." a bare "Q 3." may continue the adding: never read as a set."""
+    with pytest.raises(TranslationError):
+        translate("Add 2 belt rounds to vat east. Drying loft 3.", TANNERY)
+
+
+@pytest.mark.parametrize("command", ["Every location in here should end up with one dye drum",
+                                     "Every location in the building should end up with one dye drum"])
+def test_every_place_in_the_building_is_every_place(command: str) -> None:
+    assert translate(command, TANNERY)["goal"] == {p: {"dye_drum": 1} for p in TANNERY["shelves"]}
+
+
+def test_swap_round_everything_on_them() -> None:
+    got = translate("Swap vat east and vat west round, everything on them", TANNERY)
+    assert got["goal"] == {"vat_east": {"cart_wheel": 0, "belt_round": 5, "dye_drum": 0},
+                           "vat_west": {"cart_wheel": 1, "belt_round": 0, "dye_drum": 4}}
+
+
+def test_could_do_with_on_top_of_what_it_has_adds() -> None:
+    got = translate("The finishing table could do with one of each, on top of what's already there", TANNERY)
+    assert got["goal"] == {"finishing_table": {"cart_wheel": 1, "belt_round": 1, "dye_drum": 2}}

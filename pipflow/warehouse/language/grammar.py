@@ -68,7 +68,7 @@ np: NUM of? ihead                          -> np_count
   | NUM of? ihead fewer                    -> np_fewer
   | ("a" | "an") ihead                     -> np_one
   | ("a" | "an") more ihead               -> np_one_more
-  | ("all" | "every") of? ihead            -> np_all
+  | ("all" | "every") of? ihead within?   -> np_all
   | "all" of? its ihead                    -> np_all
   | ("no" | "none" "of" | "zero") ihead    -> np_none
   | frac of? its? ihead                    -> np_frac
@@ -146,7 +146,7 @@ place: PLACE                                -> place_name
      | PLACEWORD                            -> place_word
      | ("it" | "there")                     -> place_it
      | PLACE PLACEWORD                      -> place_name
-     | ("every" | "each" | "all") (PLACEWORD | "place" | "places")  -> place_all
+     | ("every" | "each" | "all") (PLACEWORD | "place" | "places") within?  -> place_all
      | ("every" | "each" | "all") (PLACEWORD | "place" | "places") except_pl -> place_all
      | "all" "of" "them"                    -> place_all
      | "all" NUM (PLACEWORD | "places")     -> place_all_n
@@ -155,6 +155,8 @@ except_pl: ("except" | "but" | "besides" | "other" "than" | "apart" "from" | "ex
 posplace: PLACE POSS
 prep: "in" | "on" | "at" | "into" | "onto" | "inside" | "within" | "to" | "in" "to" | "on" "to"
 each: "each" | "apiece" | "both" | "every" NUM
+// "every fish tank in the building", "every location in here": the whole world, said again
+within: ("in" | "across" | "throughout") ("building" | "here" | "warehouse" | "shed" | "site" | "store") | "on" "site"
 loc: prep places                            -> loc
    | prep ("each" "of" | "both" | "both" "of" | "all" "of" | "every" NUM "of") places -> loc_each
    | prep places each                       -> loc_each
@@ -316,6 +318,8 @@ goal: there_be items loc                                  -> g_set
     | swapv ihead loc "with" (ihead | "ones" | "those")? loc -> g_swap_two
     | places modal? ("swap" | "trade" | "exchange") (("their" | "its") | "what" "they" ("hold" | "have"))? swapwhat -> g_swap_subj
     | swapv ("what" | "contents" "of" | "loads" "of" | "stock" "of")? places ("around" | "round" | "over") -> g_swap
+    // "Swap aisle 5 and aisle 6 round, everything on them": the whole contents, said again
+    | swapv ("whole" | "whole" "contents" "of")? places ("around" | "round" | "over")? ","? ("everything" | "all") ("on" | "in" | "of") ("them" | "both") -> g_swap
     | splitv items src even? among places even?              -> g_split_src
     | splitv pitems even? among places even?                 -> g_split_src
     | addv items adv? to places from places                -> g_transfer
@@ -372,6 +376,7 @@ goal: there_be items loc                                  -> g_set
     | ihead loc modal? ("stay" | "stays" | "remain" | "remains") ("put" | as_is) -> g_keep
     | posplace ihead modal? ("stay" | "stays" | "remain" | "remains") ("put" | as_is) -> g_keep
     | ihead (lsep ihead)* modal? ("stay" | "stays" | "remain" | "remains") ("put" | as_is) -> g_keep_its_elided
+    | places modal? ("use" | "do" "with") items ","? on_top   -> g_add_place
     | places modal? ("use" | "do" "with") items              -> g_could_use
     | ("top" ("up" | "off") | "fill" "up") places "with" only? ihead only? -> g_fill
     | (putv | addv) items loc on_top                         -> g_add
@@ -410,7 +415,7 @@ bneg: modal? ("not" | "never") | "shouldnt" | "mustnt" | "cant" | "cannot" | "do
 above: ("go" | "goes" | "get" | "gets" | "rise" | "rises" | "climb" | "climbs") ("above" | "over" | "past" | "beyond")
      | "exceed" | "exceeds"
 below: ("go" | "goes" | "get" | "gets" | "drop" | "drops" | "fall" | "falls" | "dip" | "dips" | "sink" | "sinks") ("below" | "under" | "beneath")
-on_top: ("on" "top" "of" | "in" "addition" "to" | "besides" | "over" "and" "above") "what" (("it" | "they") ("has" | "have" | "holds" | "hold" | "is" "got" | "has" "got" | "have" "got") now? | ("is" | "s") "already"? "there")
+on_top: ("on" "top" "of" | "in" "addition" "to" | "besides" | "over" "and" "above") "what" (("it" | "they") ("has" | "have" | "holds" | "hold" | "is" "got" | "has" "got" | "have" "got" | "s" "got") now? | ("is" | "s") "already"? "there")
 adv: "over" | "back" | "across" | "along" | "out"
 src: ("in" | "on" | "at" | "from" | "off" | "out" "of" | "of") places
 pitems: frac of? posplace ihead appos?                     -> pi_frac

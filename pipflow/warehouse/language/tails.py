@@ -80,6 +80,12 @@ class TailRules:
         # "Rack A should have 9 widgets and rack B 6 gears", "..., staging 8": the verb is shared
         places = self.place_list(self.sub(node, "places")[0])
         prev = [st for st in self.statements if st["op"] in ("set", "change", "bound")]
+        if not prev and not self.statements and not self.prior:
+            # "Quay door 5 mooring lines, back shed 3": a list line that opens the command says
+            # what the place should hold, as "P: 5 X" does (the clauses after it continue it)
+            for np in self.nps(self.sub(node, "items")[0]):
+                self.statements.append(self._goal_statement(places, np, False))
+            return
         if not prev:
             raise TranslationError(f"{quote(words)}: nothing said before it that it continues")
         # the verb is what is shared: "add 3 to A, B 2" adds, "A should have ..., B 2" sets
