@@ -145,3 +145,13 @@ def test_swap_round_everything_on_them() -> None:
 def test_could_do_with_on_top_of_what_it_has_adds() -> None:
     got = translate("The finishing table could do with one of each, on top of what's already there", TANNERY)
     assert got["goal"] == {"finishing_table": {"cart_wheel": 1, "belt_round": 1, "dye_drum": 2}}
+
+
+@pytest.mark.parametrize("command", ["While you're at it, move 1 dye drum from vat east to vat west",
+                                     "hiya, while ur at it move 1 dye drum from vat east to vat west"])
+def test_while_you_are_at_it_says_nothing_more(command: str) -> None:
+    assert translate(command, TANNERY)["goal"] == {"vat_east": {"dye_drum": 3}, "vat_west": {"dye_drum": 1}}
+
+
+def test_a_place_that_could_take_another_n() -> None:
+    assert translate("Vat west could take another 2 dye drums", TANNERY)["goal"] == {"vat_west": {"dye_drum": 2}}

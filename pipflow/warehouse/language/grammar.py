@@ -377,6 +377,8 @@ goal: there_be items loc                                  -> g_set
     | posplace ihead modal? ("stay" | "stays" | "remain" | "remains") ("put" | as_is) -> g_keep
     | ihead (lsep ihead)* modal? ("stay" | "stays" | "remain" | "remains") ("put" | as_is) -> g_keep_its_elided
     | places modal? ("use" | "do" "with") items ","? on_top   -> g_add_place
+    // "the fuse room could take another 2 packs": room for more, said of the place
+    | places ("could" | "can" | "will") "take" ("another" | "an" "extra") items -> g_add_place
     | places modal? ("use" | "do" "with") items              -> g_could_use
     | ("top" ("up" | "off") | "fill" "up") places "with" only? ihead only? -> g_fill
     | (putv | addv) items loc on_top                         -> g_add

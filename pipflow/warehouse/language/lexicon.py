@@ -261,19 +261,25 @@ QUANTITY_PHRASES: dict[str, tuple[str, ...]] = {
 #: "please" is ("Would it be possible to have R bring ...", "Is it possible to move ...")
 REQUEST_FRAMES = (("would", "it", "be", "possible", "to"), ("is", "it", "possible", "to"),
                   ("would", "you", "mind"), ("do", "you", "mind"), ("any", "chance", "you", "could"),
-                  ("i", "was", "wondering", "if", "you", "could"), ("would", "it", "be", "ok", "to"))
+                  ("i", "was", "wondering", "if", "you", "could"), ("would", "it", "be", "ok", "to"),
+                  # "while you're at it, ...": the order goes on, nothing more is said
+                  ("while", "youre", "at", "it"), ("while", "you", "are", "at", "it"), ("while", "ur", "at", "it"),
+                  ("whilst", "youre", "at", "it"), ("whilst", "you", "are", "at", "it"))
 
 
 def without_request_frames(toks: list[Tok]) -> list[Tok]:
-    """The tokens without a frame of :data:`REQUEST_FRAMES` that opens a sentence."""
+    """The tokens without a frame of :data:`REQUEST_FRAMES` that opens a sentence or a clause
+    ("Hi, while you're at it, ...")."""
     out: list[Tok] = []
     k = 0
     while k < len(toks):
-        start = k == 0 or (toks[k - 1].kind == "punct" and toks[k - 1].value in (".", ";", "!", "?"))
+        start = k == 0 or (toks[k - 1].kind == "punct" and toks[k - 1].value in (".", ";", "!", "?", ",", ":"))
         hit = next((f for f in REQUEST_FRAMES if start and len(toks) >= k + len(f) and all(
             x.kind == "word" and x.value == w for x, w in zip(toks[k:k + len(f)], f))), None)
         if hit:
             k += len(hit)
+            if k < len(toks) and toks[k].kind == "punct" and toks[k].value == ",":
+                k += 1   # the comma that set the frame off goes with it
             continue
         out.append(toks[k])
         k += 1
