@@ -77,3 +77,20 @@ def test_a_clause_of_time_with_a_count_a_name_or_an_order_is_never_set_aside(com
     except TranslationError:
         return
     assert not got["order"].get("set_aside")
+
+
+def test_a_reason_that_opens_the_sentence_before_so_is_set_aside() -> None:
+    got = understand("We're doing a sale on shelf4 this afternoon, so move 2 product2 from shelf2 to shelf1", PAPER)
+    assert got["goal"] == {"shelf2": {"product2": 3}, "shelf1": {"product2": 4}}
+    assert len(got["order"]["set_aside"]) == 2   # the reason and its "so"
+
+
+@pytest.mark.parametrize("command", ["We're closing shelf4 tomorrow, so clear it out",
+                                     "We're not using shelf4 today, so move 2 product2 from shelf2 to shelf1",
+                                     "We're expecting 3 pallets on shelf4, so move 2 product2 from shelf2 to shelf1"])
+def test_a_reason_the_order_points_back_to_or_with_a_count_or_a_negation_is_kept(command: str) -> None:
+    try:
+        got = understand(command, PAPER)
+    except TranslationError:
+        return
+    assert not got["order"].get("set_aside")

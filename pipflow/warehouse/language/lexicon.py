@@ -16,7 +16,8 @@ from typing import Any, Callable
 from lark import Token
 
 from pipflow.errors import InputError, Refusal, TranslationError
-from pipflow.language.asides import is_opener, trailing_adjunct, FUNCTION_WORDS, Clause, clauses, content_free, trailing_thanks
+from pipflow.language.asides import (FUNCTION_WORDS, Clause, clauses, content_free, is_opener, is_report, trailing_adjunct,
+                                     trailing_thanks)
 from pipflow.language.characters import refuse_unread
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS
 from pipflow.language.spelling import distance, normalize, plural_forms, slip, tolerance
@@ -120,6 +121,27 @@ def check_text(command: str) -> str:
         raise TranslationError(f"'{word.group(0) if word else m.group(0)}': the symbol "
                                f"'{m.group(0)}' is not read in commands; write it in words")
     return re.sub(r"\b([A-Za-z0-9_-]+)['\u2019]s\b", _possessive, text)
+
+
+#: words that point back at something said before them: a reason that names what they point at
+#: ("We're closing aisle 2, so clear it out") is no reason to set aside
+BACK_REFERENCES = frozenset({"it", "its", "them", "their", "there", "those", "these", "that", "this", "em"})
+
+
+def leading_reason(words: list[str], parts: list[Clause], free: list[Clause]) -> list[Clause]:
+    """The reason that opens a sentence and is followed by "so" ("We're doing a stock count on bay
+    9 this afternoon, so get 3 paperbacks ..."): a report of what is going on (a subject, "be", a
+    verb in -ing: :func:`asides.is_report`) that may name places and products, with "so" after
+    it; both are set aside. Never with a count or an operative word in it, nor where the order
+    after it points back with a pronoun or "there" (whatever it names is what "it" means)."""
+    if len(parts) < 2 or parts[0] in free or parts[1].words[:1] != ("so",):
+        return []
+    if not is_report(parts[0].words, lambda w: w != "\0" and (w.isdigit() or w in NUMBER_WORDS)):
+        return []
+    if any(w in BACK_REFERENCES for c in parts[1:] for w in c.words):
+        return []
+    so = parts[1]
+    return [parts[0], Clause(so.start, so.start + 1, ("so",))]
 
 
 def noun_adjuncts(toks: list[Tok]) -> list[Tok]:
@@ -630,6 +652,7 @@ class Lexicon:
         parts = clauses(words, marks)
         free = [c for c in parts if content_free(c.words, lambda w: w == "\0" or self.content(w),
                                                  lambda w: w == "\0" or self.names_world(w), reports=True)]
+        free += leading_reason(words, parts, free)
         thanks = trailing_thanks(list(parts[-1].words), self.content) if parts and parts[-1] not in free else 0
         if thanks:   # "... to the dray bay ta": the thanks closing the last clause, without a comma
             end = parts[-1].end
