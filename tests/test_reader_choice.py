@@ -64,7 +64,8 @@ def test_pipflow_run_on_a_terminal_asks_which_reading(tmp_path: Path) -> None:
 
 def test_the_bench_reports_candidate_recall(tmp_path: Path) -> None:
     """Of the clear, feasible commands refused as not understood, the share whose gold reading
-    was among the candidates: here one of two (the first offers it, the second offers nothing)."""
+    was among the candidates: here one of two (the first offers it; the second offers only the
+    reading without "Blorp", a bound of at most 4, which is not the gold)."""
     from pipflow.experiments.benchmarking import BenchConfig, run_bench
 
     fixture = Path(__file__).resolve().parent / "fixtures" / "bench"
@@ -75,7 +76,7 @@ tasks:
     command: "There should be 4 product1 in shelf2 pronto."
     goal: {{shelf2: {{product1: 4}}}}
   - id: not-offered
-    command: "Blorp shelf2 with 4 product1."
+    command: "Blorp shelf2 up to 4 product1."
     goal: {{shelf2: {{product1: 4}}}}
   - id: read
     command: "There should be 4 product1 in shelf2."

@@ -160,14 +160,16 @@ def test_a_verb_outside_the_lexicon_is_never_guessed(verb: str) -> None:
 
 # -- issue 23, point 4: candidate readings from partial parses ----------------------------------
 def test_a_refusal_offers_the_clauses_that_parse_and_names_the_words_left_out() -> None:
-    """A reason clause that names a place sinks the command (it carries content); the candidate
-    built from the clause that parses is offered, with the words it did not read named."""
+    """A reason before "so" is set aside (it names a place, but what it names is no part of the
+    order); "first" is operative, so the command is refused on it, and the candidate built from
+    what parses is offered, naming the word it did not read and the reason it set aside."""
     with pytest.raises(TranslationError) as err:
         understand("We're doing an audit on bin 5 this week, so move 2 reams from bin 4 to bin 5 first please", SHOP)
     offered = [c for c in err.value.candidates if c["goal"] == MOVE_2]
     assert offered, err.value.candidates
-    assert any("audit" in w for w in offered[0]["unread"])
-    assert "not read" in offered[0]["reading"] and "audit" in offered[0]["reading"]
+    assert offered[0]["unread"] == ["first"]
+    assert "not read: 'first'" in offered[0]["reading"] and "set aside" in offered[0]["reading"]
+    assert "audit" in offered[0]["reading"]
     assert len(err.value.candidates) <= 3
 
 

@@ -28,7 +28,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Callable, Iterable
 
-from pipflow.language.numbers import NUMBER_WORDS
 from pipflow.language.spelling import slip
 
 NEGATION = {"no", "not", "never", "nothing", "none", "nobody", "noone", "neither", "nor", "without", "dont",
@@ -111,28 +110,10 @@ def trailing_thanks(words: list[str], content: Callable[[str], bool]) -> int:
 #: command's own parts). Not "but", "except", "so", "and", "or", "then": they join or restrict.
 ADJUNCTS = frozenset({"for", "before", "after", "by", "until", "till", "once", "when", "while", "because",
                       "since", "as", "cause", "cos", "coz", "cuz"})
-#: adjunct openings of time, in which "at nine" or "10am" is a time of day, never a count
+#: adjunct openings of time: what follows says when ("before the van comes"), its verb describes
 TEMPORAL = frozenset({"before", "after", "until", "till", "when", "once", "while"})
 #: the robots, addressed: a clause of time said to them orders the work ("before you move them")
 _YOU = frozenset({"you", "your", "u", "ya", "ye", "yous", "youse"})
-#: words that make a number a time of day
-CLOCK = frozenset({"am", "pm", "oclock"})
-
-
-def without_clock_times(words: list[str]) -> list[str]:
-    """The words of a temporal adjunct without its times of day ("we open at nine", "the van
-    comes at 10 am"): a number after "at", or before or with "am" / "pm" / "o'clock"."""
-    def number(w: str) -> bool:
-        return w.isdigit() or w in NUMBER_WORDS or (w[:-2].isdigit() and w[-2:] in CLOCK)
-    out = []
-    for k, w in enumerate(words):
-        before, after = (words[k - 1] if k else ""), (words[k + 1] if k + 1 < len(words) else "")
-        if w in CLOCK or (number(w) and (before == "at" or after in CLOCK or w[-2:] in CLOCK)):
-            continue
-        out.append(w)
-    return out
-
-
 #: words after an adjunct's opening word that point back at the order itself ("for this", "before that")
 _BACK = OBJECT_PRONOUNS | {"then", "now", "which"}
 
@@ -146,19 +127,17 @@ def trailing_adjunct(words: list[str], content: Callable[[str], bool],
     (``content``); 0 when there is none. The earliest such opening word is taken (the adjunct may
     hold several: "for pickup before lunch"); the words before it must still carry content.
 
-    A clause of time ("before the van comes at ten", "until we open"): its times of day are no
-    counts (:func:`without_clock_times`), and with ``names`` (only names of the world and
-    numbers) its verbs may be words of the grammar ("comes"), since they say when, unless it is
-    said to the robots or about the order's things ("before you ...", "after it ...")."""
+    A clause of time ("before the van comes", "until we open"): with ``names`` (only names of the
+    world and numbers) its verbs may be words of the grammar ("comes"), since they say when,
+    unless it is said to the robots or about the order's things ("before you ...", "after it
+    ..."). A time of day is a number ("before 2pm", "at nine"): never set aside."""
     for j in range(1, len(words) - 1):
         if words[j] not in ADJUNCTS or words[j + 1] in _BACK:
             continue
         rest = words[j + 1:]
         carries = content
-        if words[j] in TEMPORAL:
-            rest = without_clock_times(rest)   # "before we open at nine": a time, no count
-            if names is not None and not (set(rest) & (OBJECT_PRONOUNS | _YOU)):
-                carries = names
+        if words[j] in TEMPORAL and names is not None and not (set(rest) & (OBJECT_PRONOUNS | _YOU)):
+            carries = names
         if any(carries(w) or any(ch.isdigit() for ch in w) or (near_operative(w) and w not in ADJUNCTS)
                for w in rest):   # "for 2pm collection": a time is a number, never talk
             continue
@@ -332,5 +311,27 @@ def clauses(words: list[str], marks: set[str]) -> list[Clause]:
 
 def said(parts: list[str]) -> str:
     """The echo line of what was set aside."""
-    return ("set aside, not read (names nothing of the world, no number, no operative word): "
+    return ("set aside, not read (it asks for nothing: no number, no operative word): "
             + "; ".join(f"'{p}'" for p in parts))
+
+
+#: words that point back at something said before them: a reason that names what they point at
+#: ("We're closing aisle 2, so clear it out") is no reason to set aside
+BACK_REFERENCES = frozenset({"it", "its", "them", "their", "there", "those", "these", "that", "this", "em"})
+
+
+def leading_reason(parts: list[Clause], free: list[Clause], counts: Callable[[str], bool]) -> list[Clause]:
+    """The reason that opens a sentence and is followed by "so" ("We're doing a stock count on bay
+    9 this afternoon, so get 3 paperbacks ..."): a report of what is going on (a subject, "be", a
+    verb in -ing: :func:`is_report`) that may name places and products, with "so" after
+    it; both are set aside. Never with a count (``counts``: the domain's test, which lets the
+    world's names pass) or an operative word in it, nor where the order after it points back with
+    a pronoun or "there" (whatever it names is what "it" means)."""
+    if len(parts) < 2 or parts[0] in free or parts[1].words[:1] != ("so",):
+        return []
+    if not is_report(parts[0].words, counts):
+        return []
+    if any(w in BACK_REFERENCES for c in parts[1:] for w in c.words):
+        return []
+    so = parts[1]
+    return [parts[0], Clause(so.start, so.start + 1, ("so",))]

@@ -7,6 +7,7 @@ import functools
 from typing import Callable
 
 from pipflow.errors import PipflowError, TranslationError
+from pipflow.language.asides import said
 from pipflow.warehouse.language.command import lexed_command, parse_reading
 from pipflow.warehouse.language.forest import CANDIDATE_BUDGET, CANDIDATE_PARSES
 from pipflow.warehouse.language.goals import Choice
@@ -91,8 +92,10 @@ def candidate(command: str, world: dict, pick: dict, out: list[dict], seen: set[
         return
     seen.add(meaning)
     unread = order.get("unread") or []
+    aside = order.get("set_aside") or []
     explanation = (([note] if note else []) + list(got.explanation)
-                   + ([f"not read: {', '.join(repr(w) for w in unread)}"] if unread else []))
+                   + ([f"not read: {', '.join(repr(w) for w in unread)}"] if unread else [])
+                   + ([said(aside)] if aside else []))
     out.append({"reading": "; ".join(explanation), "explanation": explanation,
                 "goal": got.goal, "constraints": got.constraints, "unread": unread,
                 "words": "; ".join(x["words"] for x in order["statements"] + order["rules"]), "order": order})

@@ -55,7 +55,7 @@ def lexed_command(command: str, world: dict) -> tuple[Lexicon, RobotSelector, li
 def _dislocated(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict, memory: dict,
                 pick: dict) -> tuple[SentenceReader, list[str]] | None:
     """A sentence that does not read as said, read with its fronted topic where its pronoun stands
-    ("The wheels on P, double them": :func:`lexicon.left_dislocated`), with or without its
+    ("The wheels on P, double them": :func:`wordorder.left_dislocated`), with or without its
     content-free clauses; the reader and the clauses set aside, or None where neither reads."""
     moved = lexed.dislocated
     for form, talk in ((moved, []), (moved.trimmed if moved else None, list(moved.aside) if moved else [])):

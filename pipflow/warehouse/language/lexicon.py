@@ -16,12 +16,13 @@ from typing import Any, Callable
 from lark import Token
 
 from pipflow.errors import InputError, Refusal, TranslationError
-from pipflow.language.asides import (FUNCTION_WORDS, Clause, clauses, content_free, is_opener, is_report, trailing_adjunct,
-                                     trailing_thanks)
+from pipflow.language.asides import (FUNCTION_WORDS, Clause, clauses, content_free, is_opener, leading_reason,
+                                     trailing_adjunct, trailing_thanks)
 from pipflow.language.characters import refuse_unread
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS
 from pipflow.language.spelling import distance, normalize, plural_forms, slip, tolerance
-from pipflow.warehouse.language.names import KIND_WORDS, STOPWORDS, NameIndex, Tok, read_counts, recognize
+from pipflow.warehouse.language.names import KIND_WORDS, POSS_MARK, STOPWORDS, NameIndex, Tok, read_counts, recognize
+from pipflow.warehouse.language.wordorder import left_dislocated, noun_adjuncts
 
 #: no user writes a longer command; past this the parser would only be asked to burn time
 MAX_COMMAND_CHARS = 4000
@@ -53,7 +54,8 @@ SUPERLATIVES = {"strongest": "max", "biggest": "max", "largest": "max", "heavies
                 "weakest": "min", "smallest": "min", "lightest": "min"}
 #: contractions whose "'s" is "is" ("it's"), not a possessive
 IS_CONTRACTIONS = {"it", "that", "there", "what", "here", "who", "he", "she"}
-POSS_MARK = "zzposs"
+#: what a name, kind word ("\0") or count ("\1") stands as in the words a clause is judged on
+_HELD = ("\0", "\1")
 _BAD_SYMBOLS = re.compile(r"[\^*=+%$<>~|\\{}@/&`\u00d7]")
 #: the marks this reader reads besides ASCII letters, digits and white space (see
 #: :mod:`pipflow.language.characters`), each with its reading: sentence and clause punctuation;
@@ -81,7 +83,7 @@ class Lexed:
     trimmed: "Lexed | None" = None
     #: the words of those clauses, for the echo
     aside: tuple[str, ...] = ()
-    #: the sentence with a fronted topic put where its pronoun stands (:func:`left_dislocated`),
+    #: the sentence with a fronted topic put where its pronoun stands (:func:`wordorder.left_dislocated`),
     #: read when the sentence as said does not parse; None when it has no such topic
     dislocated: "Lexed | None" = None
 
@@ -121,87 +123,6 @@ def check_text(command: str) -> str:
         raise TranslationError(f"'{word.group(0) if word else m.group(0)}': the symbol "
                                f"'{m.group(0)}' is not read in commands; write it in words")
     return re.sub(r"\b([A-Za-z0-9_-]+)['\u2019]s\b", _possessive, text)
-
-
-#: words that point back at something said before them: a reason that names what they point at
-#: ("We're closing aisle 2, so clear it out") is no reason to set aside
-BACK_REFERENCES = frozenset({"it", "its", "them", "their", "there", "those", "these", "that", "this", "em"})
-
-
-def leading_reason(words: list[str], parts: list[Clause], free: list[Clause]) -> list[Clause]:
-    """The reason that opens a sentence and is followed by "so" ("We're doing a stock count on bay
-    9 this afternoon, so get 3 paperbacks ..."): a report of what is going on (a subject, "be", a
-    verb in -ing: :func:`asides.is_report`) that may name places and products, with "so" after
-    it; both are set aside. Never with a count or an operative word in it, nor where the order
-    after it points back with a pronoun or "there" (whatever it names is what "it" means)."""
-    if len(parts) < 2 or parts[0] in free or parts[1].words[:1] != ("so",):
-        return []
-    if not is_report(parts[0].words, lambda w: w != "\0" and (w.isdigit() or w in NUMBER_WORDS)):
-        return []
-    if any(w in BACK_REFERENCES for c in parts[1:] for w in c.words):
-        return []
-    so = parts[1]
-    return [parts[0], Clause(so.start, so.start + 1, ("so",))]
-
-
-def noun_adjuncts(toks: list[Tok]) -> list[Tok]:
-    """A place name right before a product name is a noun adjunct, said as a possessive ("the
-    north cave truckles", "one third of south cave truckles" = north cave's truckles): the
-    possessive mark is put between them (with no text, so echoes quote the words as said). A
-    name's "'s" before "to" is "is" ("Showroom's to hold 10 X"): nothing is possessed there."""
-    out: list[Tok] = []
-    for k, t in enumerate(toks):
-        nxt = toks[k + 1] if k + 1 < len(toks) else None
-        if (t.kind == "word" and t.value == POSS_MARK and k and toks[k - 1].kind == "name" and nxt is not None
-                and nxt.kind == "word" and nxt.value == "to"):
-            t = Tok("word", t.text, "is")   # "Showroom's to hold 10 X": is to, no possessive
-        out.append(t)
-        if t.kind == "name" and t.of == "shelf" and nxt is not None and nxt.kind == "name" and nxt.of == "product":
-            out.append(Tok("word", "", POSS_MARK))
-    return out
-
-
-#: what may open a fronted topic ("the wheels on P, ...", "6 logs of P, ...", "all the X on P, ...")
-_TOPIC_OPENERS = frozenset({"the", "those", "these", "all"})
-#: prepositions that tie a fronted topic's product to its place ("X of P", "X on P")
-_TOPIC_PREPOSITIONS = frozenset({"of", "on", "in", "at", "from"})
-
-
-def _topic_length(toks: list[Tok], k: int) -> int:
-    """How many tokens from ``k`` make a fronted topic that names a product and its place: "[the |
-    N] X [of | on | in | at | from] [the] P", "P ['s] X", or "[N] X" alone; 0 when they do not."""
-    j = k
-    while j < len(toks) and toks[j].kind == "word" and toks[j].value in _TOPIC_OPENERS:
-        j += 1
-    if j < len(toks) and toks[j].kind == "num":
-        j += 1
-    if j + 1 < len(toks) and toks[j].kind == "name" and toks[j].of == "shelf":
-        j += 1 + (toks[j + 1].kind == "word" and toks[j + 1].value == POSS_MARK)
-        return j + 1 - k if j < len(toks) and toks[j].kind == "name" and toks[j].of == "product" else 0
-    if not (j < len(toks) and toks[j].kind == "name" and toks[j].of == "product"):
-        return 0
-    j += 1
-    if j < len(toks) and toks[j].kind == "word" and toks[j].value in _TOPIC_PREPOSITIONS:
-        at = j + 1 + (j + 1 < len(toks) and toks[j + 1].kind == "word" and toks[j + 1].value == "the")
-        if at < len(toks) and toks[at].kind == "name" and toks[at].of == "shelf":
-            j = at + 1
-    return j - k
-
-
-def left_dislocated(toks: list[Tok]) -> list[Tok]:
-    """A sentence whose topic is said first and taken up by a pronoun ("The wheels on wax bench,
-    double them", "6 logs of brine room, divide them between A and B"), with the topic put where
-    the pronoun stands. Only where the sentence opens with the topic, a comma follows, and
-    exactly one "them" / "it" / "those" comes after it; any other sentence is returned as it is.
-    Read only when the sentence as said does not parse (``Lexed.dislocated``)."""
-    n = _topic_length(toks, 0)
-    if not n or n >= len(toks) or not (toks[n].kind == "punct" and toks[n].value in (",", ":")):
-        return toks
-    pronouns = [j for j in range(n + 1, len(toks)) if toks[j].kind == "word" and toks[j].value in ("them", "it", "those")]
-    if len(pronouns) != 1:
-        return toks
-    at = pronouns[0]
-    return toks[n + 1:at] + toks[:n] + toks[at + 1:]
 
 
 def _possessive(m: re.Match) -> str:
@@ -641,18 +562,18 @@ class Lexicon:
         marks = {",", ":", "(", ")"}
         # the words as written (a greeting's "lads" is no misspelt "loads"); a word that a repair
         # would make a grammar word is content (:meth:`content`)
-        # a count said in one word keeps it (a time of day in an adjunct, "at nine", is no count:
-        # asides.without_clock_times); a digit or number word is content everywhere else
+        # a name, kind word or count stands as "\0" (a count as "\1": a reason may name places,
+        # never hold a count: asides.leading_reason); both are content by themselves
         words = [str(t.value) if t.kind == "punct" and t.value in marks else
                  (re.sub(r"[^a-z0-9]", "", t.text.lower()) or str(t.value) if t.kind == "word" else
-                  t.text.lower() if t.kind == "num" and re.fullmatch(r"[a-z]+|[0-9]+", t.text.lower()) else "\0")
+                  "\1" if t.kind == "num" else "\0")
                  for t in cur]
         keep: list[Tok] = []
         aside: list[str] = []
         parts = clauses(words, marks)
-        free = [c for c in parts if content_free(c.words, lambda w: w == "\0" or self.content(w),
-                                                 lambda w: w == "\0" or self.names_world(w), reports=True)]
-        free += leading_reason(words, parts, free)
+        free = [c for c in parts if content_free(c.words, lambda w: w in _HELD or self.content(w),
+                                                 lambda w: w in _HELD or self.names_world(w), reports=True)]
+        free += leading_reason(parts, free, lambda w: w == "\1" or w.isdigit() or w in NUMBER_WORDS)
         thanks = trailing_thanks(list(parts[-1].words), self.content) if parts and parts[-1] not in free else 0
         if thanks:   # "... to the dray bay ta": the thanks closing the last clause, without a comma
             end = parts[-1].end
@@ -664,8 +585,8 @@ class Lexicon:
             if c in free:
                 continue
             clause = list(c.words[:len(c.words) - thanks] if c is parts[-1] else c.words)
-            n = trailing_adjunct(clause, lambda w: w == "\0" or (w not in TIMES_OF_DAY and self.content(w)),
-                                 lambda w: w == "\0" or (w not in TIMES_OF_DAY and self.names_world(w)))
+            n = trailing_adjunct(clause, lambda w: w in _HELD or (w not in TIMES_OF_DAY and self.content(w)),
+                                 lambda w: w in _HELD or (w not in TIMES_OF_DAY and self.names_world(w)))
             if n:
                 end = c.start + len(clause)
                 free.append(Clause(end - n, end, tuple(clause[-n:])))

@@ -19,6 +19,8 @@ from pipflow.errors import TranslationError
 from pipflow.language.numbers import NUMBER_WORDS, read_number, word_value
 from pipflow.language.spelling import distance, normalize, plural_forms, split_digits, tolerance, variants
 
+#: the possessive "'s" as the lexer marks it ("rack A's" -> "rack A zzposs")
+POSS_MARK = "zzposs"
 KINDS: tuple[str, ...] = ("shelf", "product", "robot")
 WORLD_KEYS: dict[str, str] = {"shelf": "shelves", "product": "products", "robot": "robots"}
 # English words for a kind, on top of the stems the world's own names share ("bin" of bin7).

@@ -1,0 +1,67 @@
+"""Word order people use that the grammar reads in another order: a place name used as a noun
+adjunct ("the north cave truckles": north cave's truckles), and a topic said first and taken up by
+a pronoun ("The wheels on P, double them"). Each is a rewrite of a sentence's tokens; the second is
+read only where the sentence as said does not parse (``Lexed.dislocated``)."""
+from __future__ import annotations
+
+from pipflow.warehouse.language.names import POSS_MARK, Tok
+
+
+def noun_adjuncts(toks: list[Tok]) -> list[Tok]:
+    """A place name right before a product name is a noun adjunct, said as a possessive ("the
+    north cave truckles", "one third of south cave truckles" = north cave's truckles): the
+    possessive mark is put between them (with no text, so echoes quote the words as said). A
+    name's "'s" before "to" is "is" ("Showroom's to hold 10 X"): nothing is possessed there."""
+    out: list[Tok] = []
+    for k, t in enumerate(toks):
+        nxt = toks[k + 1] if k + 1 < len(toks) else None
+        if (t.kind == "word" and t.value == POSS_MARK and k and toks[k - 1].kind == "name" and nxt is not None
+                and nxt.kind == "word" and nxt.value == "to"):
+            t = Tok("word", t.text, "is")   # "Showroom's to hold 10 X": is to, no possessive
+        out.append(t)
+        if t.kind == "name" and t.of == "shelf" and nxt is not None and nxt.kind == "name" and nxt.of == "product":
+            out.append(Tok("word", "", POSS_MARK))
+    return out
+
+
+#: what may open a fronted topic ("the wheels on P, ...", "6 logs of P, ...", "all the X on P, ...")
+_TOPIC_OPENERS = frozenset({"the", "those", "these", "all"})
+#: prepositions that tie a fronted topic's product to its place ("X of P", "X on P")
+_TOPIC_PREPOSITIONS = frozenset({"of", "on", "in", "at", "from"})
+
+
+def _topic_length(toks: list[Tok], k: int) -> int:
+    """How many tokens from ``k`` make a fronted topic that names a product and its place: "[the |
+    N] X [of | on | in | at | from] [the] P", "P ['s] X", or "[N] X" alone; 0 when they do not."""
+    j = k
+    while j < len(toks) and toks[j].kind == "word" and toks[j].value in _TOPIC_OPENERS:
+        j += 1
+    if j < len(toks) and toks[j].kind == "num":
+        j += 1
+    if j + 1 < len(toks) and toks[j].kind == "name" and toks[j].of == "shelf":
+        j += 1 + (toks[j + 1].kind == "word" and toks[j + 1].value == POSS_MARK)
+        return j + 1 - k if j < len(toks) and toks[j].kind == "name" and toks[j].of == "product" else 0
+    if not (j < len(toks) and toks[j].kind == "name" and toks[j].of == "product"):
+        return 0
+    j += 1
+    if j < len(toks) and toks[j].kind == "word" and toks[j].value in _TOPIC_PREPOSITIONS:
+        at = j + 1 + (j + 1 < len(toks) and toks[j + 1].kind == "word" and toks[j + 1].value == "the")
+        if at < len(toks) and toks[at].kind == "name" and toks[at].of == "shelf":
+            j = at + 1
+    return j - k
+
+
+def left_dislocated(toks: list[Tok]) -> list[Tok]:
+    """A sentence whose topic is said first and taken up by a pronoun ("The wheels on wax bench,
+    double them", "6 logs of brine room, divide them between A and B"), with the topic put where
+    the pronoun stands. Only where the sentence opens with the topic, a comma follows, and
+    exactly one "them" / "it" / "those" comes after it; any other sentence is returned as it is.
+    Read only when the sentence as said does not parse (``Lexed.dislocated``)."""
+    n = _topic_length(toks, 0)
+    if not n or n >= len(toks) or not (toks[n].kind == "punct" and toks[n].value in (",", ":")):
+        return toks
+    pronouns = [j for j in range(n + 1, len(toks)) if toks[j].kind == "word" and toks[j].value in ("them", "it", "those")]
+    if len(pronouns) != 1:
+        return toks
+    at = pronouns[0]
+    return toks[n + 1:at] + toks[:n] + toks[at + 1:]
