@@ -68,6 +68,30 @@ def _dislocated(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict
     return None
 
 
+def _second_reading(lexed: Lexed, error: TranslationError, lex: Lexicon, selector: RobotSelector, world: dict,
+                    memory: dict, pick: dict, droppable: bool) -> tuple[SentenceReader, list[str]] | None:
+    """A sentence that does not read as said, read again: with its fronted topic where its pronoun
+    stands (:func:`_dislocated`), else without its content-free clauses (``trimmed``: they are set
+    aside and said aloud, the rest still needs every word). The reader and the words set aside;
+    None where the sentence may be left out instead (``droppable``: a candidate reading without
+    it, never for competing meanings); else the error that says what does not read is raised."""
+    moved = None if isinstance(error, Choice) else _dislocated(lexed, lex, selector, world, memory, pick)
+    if moved is not None:
+        return moved
+    if lexed.trimmed is not None:
+        try:
+            return one_meaning(lexed.trimmed, lex, selector, world, memory, pick), list(lexed.aside)
+        except (UnexpectedInput, TranslationError) as again:
+            # what is left after the talk is set aside is what does not read: say that
+            trimmed = failure(again, lexed.trimmed, lex) if isinstance(again, UnexpectedInput) else again
+            trimmed.sentence, trimmed.trimmed = error.sentence, True  # type: ignore[attr-defined]
+            trimmed.args = (f"{trimmed.args[0]} (set aside: {'; '.join(repr(a) for a in lexed.aside)})",)
+            error = trimmed
+    if droppable and not isinstance(error, Choice):
+        return None
+    raise error from None
+
+
 def parse_reading(command: str, world: dict, picks: dict | None = None) -> dict:
     """:func:`parse` of one reading of the line breaks. ``picks``: for a sentence (its index), the
     reading a user chose among candidates: ``{"reading": k}``, ``{"scope": ...}``, or ``{"drop":
@@ -101,36 +125,20 @@ def parse_reading(command: str, world: dict, picks: dict | None = None) -> dict:
             else:
                 reader = one_meaning(lexed, lex, selector, world, memory, pick)
         except (UnexpectedInput, TranslationError) as exc:
-            # the sentence as said does not read; without its content-free clauses it may
-            # (asides.py): they are set aside and said aloud, the rest still needs every word
+            # the sentence as said does not read; read again it may (_second_reading)
             error = failure(exc, lexed, lex) if isinstance(exc, UnexpectedInput) else exc
             error.sentence = index  # type: ignore[attr-defined]  # for the candidates (parse)
             if salvage and salvage != "sentence":
                 raise error from None  # the partial parse read the sentence without its talk already
-            moved = None if isinstance(error, Choice) else _dislocated(lexed, lex, selector, world, memory, pick)
-            if moved is not None:
-                reader, talk = moved
-                set_aside += talk
-            elif lexed.trimmed is None:
-                if salvage == "sentence" and len(sentences) > 1 and not isinstance(error, Choice):
-                    # a candidate reading without this sentence (one that reads, with competing
-                    # meanings, is offered with each of them instead: never dropped)
-                    unread.append(said(lexed))
-                    continue
-                raise error from None
-            else:
-                try:
-                    reader = one_meaning(lexed.trimmed, lex, selector, world, memory, pick)
-                except (UnexpectedInput, TranslationError) as again:
-                    # what is left after the talk is set aside is what does not read: say that
-                    error = failure(again, lexed.trimmed, lex) if isinstance(again, UnexpectedInput) else again
-                    error.sentence, error.trimmed = index, True  # type: ignore[attr-defined]
-                    error.args = (f"{error.args[0]} (set aside: {'; '.join(repr(a) for a in lexed.aside)})",)
-                    if salvage == "sentence" and len(sentences) > 1 and not isinstance(error, Choice):
-                        unread.append(said(lexed))
-                        continue
-                    raise error from None
-                set_aside += list(lexed.aside)
+            again = _second_reading(lexed, error, lex, selector, world, memory, pick,
+                                    droppable=salvage == "sentence" and len(sentences) > 1)
+            if again is None:
+                # a candidate reading without this sentence (one that reads, with competing
+                # meanings, is offered with each of them instead: never dropped)
+                unread.append(said(lexed))
+                continue
+            reader, talk = again
+            set_aside += talk
         for k, new in reader.updates.items():
             statements[k] = new
         if observed or reader.observed:
