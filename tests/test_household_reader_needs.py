@@ -121,7 +121,9 @@ def test_what_the_speaker_will_do_is_set_aside_and_said(bothy):
     assert got["order"]["speaker_does"] == ["i will grab the plum myself"]
     assert any("what the speaker will do" in line for line in got["explain"])
     # a wish is no doing of the speaker's, and negation or "only" bear on the robots: never set aside
-    for tail in ("I'll need the turnip hot.", "I'll not touch the plum.", "I'll only wash the jug."):
+    # (the wish is read as one: "I'll need X hot" is "I need X hot", tests/test_household_homely.py)
+    assert translate("Open the icebox. I'll need the turnip hot.", bothy)["goal"]["state"]["turnip"] == ["hot"]
+    for tail in ("I'll not touch the plum.", "I'll only wash the jug."):
         with pytest.raises(TranslationError):
             translate(f"Open the icebox. {tail}", bothy)
 

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from pipflow.errors import TranslationError
 from pipflow.household.language.colloquial import colloquial
+from pipflow.household.language.dialect import them_as_those
 from pipflow.household.language.grammar import NOUN_DUAL
 from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
 from pipflow.household.language.names import named_by_first_word, things_of_kind, world_phrases
@@ -61,6 +62,7 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
     vocab = vocabulary(index)
     words = or_under_negation(measures(without_manner(colloquial(words_of(command), notes), notes), index, notes),
                               notes)
+    words = them_as_those(words, index, notes)
     words = particles(words, lambda x: x.isalpha() and not known_word(x, index, vocab), notes)
     said = list(words)   # as typed: a repair that still names nothing is quoted as typed
     words = repaired(words, index, vocab, notes, world)

@@ -1,0 +1,97 @@
+"""Issue 23, household reader: homely English of any home, in a croft of our own (names no
+benchmark uses): endearments and praise closing a request ("there's a love", "good lad"), "mind
+you" before a verb, a wish said with "will" ("I'll want the lamp lit"), the colours of mould ("it's
+gone green"), dialect "them" before a noun ("them mugs"), "putting back where they live", and a
+place after an elided "throw away" (where the things are, or where they go?). Each is read right;
+the look-alikes that say something else stay refused."""
+from __future__ import annotations
+
+import pytest
+
+from pipflow.errors import TranslationError
+from pipflow.household.language.translator import translate
+from pipflow.household.world import world_from_text
+
+CROFT = """
+domain: household
+name: croft
+floor: {width: 7, height: 5}
+categories:
+  crockery: {words: [crockery, pots], home: press}
+  grub: {words: [food]}
+places:
+  press:     {x: 0.2, y: 4.0, width: 0.8, depth: 0.8, access: [0.6, 3.5], properties: [receptacle, openable], state: {open: false}}
+  girnal:    {x: 1.4, y: 4.2, width: 0.8, depth: 0.6, access: [2.1, 3.6], properties: [receptacle, openable], state: {open: false}}
+  trough:    {x: 0.2, y: 2.0, width: 0.7, depth: 0.7, access: [1.2, 2.3], properties: [receptacle, sink]}
+  board:     {x: 2.5, y: 2.0, width: 1.2, depth: 0.8, access: [3.1, 1.5], properties: [receptacle]}
+  cold_shelf: {x: 6.0, y: 4.2, width: 0.5, depth: 0.5, access: [6.0, 3.6], properties: [receptacle, openable], state: {open: false}, words: [cold]}
+  ash_pail:  {x: 5.2, y: 4.2, width: 0.4, depth: 0.4, access: [5.0, 3.6], properties: [garbage], words: [bin]}
+objects:
+  horn_mug:  {in: board, mass: 1, properties: [pickupable, washable], state: {dirty: true}, categories: [crockery]}
+  quaich:    {in: board, mass: 1, properties: [pickupable, washable], state: {dirty: true}, categories: [crockery]}
+  bannock:   {in: girnal, mass: 1, properties: [pickupable, sliceable], categories: [grub]}
+  crowdie:   {in: board, mass: 1, properties: [pickupable]}
+  buttermilk: {in: board, mass: 1, properties: [pickupable]}
+  tilley_lamp: {in: board, mass: 1, properties: [pickupable, toggleable], state: {on: false}}
+robots:
+  r1: {start: [1.0, 1.0], skills: {pickup: 3, open: 1, toggle: 1, slice: 1, wash: 1, heat: 1}}
+  r2: {start: [3.0, 1.0], skills: {pickup: 3, open: 1, toggle: 1, slice: 1, wash: 1, heat: 1}}
+"""
+
+
+@pytest.fixture(scope="module")
+def croft() -> dict:
+    return world_from_text(CROFT, "croft.yaml")
+
+
+def goal(command: str, world: dict) -> dict:
+    return translate(command, world)["goal"]
+
+
+def test_an_endearment_or_praise_closing_a_request_carries_nothing(croft):
+    for said in ("Put the buttermilk in the cold shelf, there's a love.",
+                 "Put the buttermilk in the cold shelf, there's a good lad.",
+                 "Good lass, put the buttermilk in the cold shelf."):
+        assert goal(said, croft)["in"] == {"cold_shelf": ["buttermilk"]}, said
+
+
+def test_mind_you_before_a_verb_is_make_sure_you(croft):
+    g = goal("Slice the bannock, and mind you shut the girnal after.", croft)
+    assert g["state"]["bannock"] == ["sliced"] and g["state"]["girnal"] == ["closed"]
+
+
+def test_a_wish_said_with_will_is_the_wish(croft):
+    assert goal("I'll want the tilley lamp lit.", croft)["state"] == {"tilley_lamp": ["on"]}
+    # "will" before any other verb is no wish: refused, never read
+    with pytest.raises(TranslationError):
+        translate("I'll light the tilley lamp.", croft)
+
+
+def test_gone_green_is_a_foul_thing(croft):
+    # said alone, of food: foul, so for the bin (as "it's gone mouldy")
+    assert goal("The bannock's gone green.", croft)["in"] == {"ash_pail": ["bannock"]}
+    assert goal("Bin the bannock, it's gone green.", croft)["in"] == {"ash_pail": ["bannock"]}
+
+
+def test_dialect_them_before_a_noun_is_those(croft):
+    assert goal("Wash them horn mugs.", croft)["state"] == {"horn_mug": ["clean"]}
+    # a pronoun "them" stays a pronoun (nothing said before it: refused)
+    with pytest.raises(TranslationError):
+        translate("Wash them.", croft)
+    # after a verb of two objects "them" may be who it is for: refused, not guessed
+    with pytest.raises(TranslationError):
+        translate("Bring them horn mugs to the board.", croft)
+
+
+def test_putting_back_where_they_live_is_away(croft):
+    g = goal("Put the quaich back where it lives.", croft)
+    assert g["in"] == {"press": ["quaich"]}
+
+
+def test_a_place_after_an_elided_throw_away(croft):
+    # already there: the place says which thing is thrown away
+    g = goal("Throw the crowdie away, and the bannock in the girnal.", croft)
+    assert sorted(g["in"]["ash_pail"]) == ["bannock", "crowdie"]
+    # not there: thrown away too, or put there? asked, never a guess
+    with pytest.raises(TranslationError):
+        translate("Throw the crowdie away, and the buttermilk in the girnal.", croft)
