@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import pytest
 
-from pipflow.errors import TranslationError
+from pipflow.errors import Refusal, TranslationError
 from pipflow.household.language.translator import translate
 from pipflow.household.world import world_from_text
 
@@ -25,6 +25,8 @@ places:
   trough:    {x: 0.2, y: 2.0, width: 0.7, depth: 0.7, access: [1.2, 2.3], properties: [receptacle, sink]}
   board:     {x: 2.5, y: 2.0, width: 1.2, depth: 0.8, access: [3.1, 1.5], properties: [receptacle]}
   cold_shelf: {x: 6.0, y: 4.2, width: 0.5, depth: 0.5, access: [6.0, 3.6], properties: [receptacle, openable], state: {open: false}, words: [cold]}
+  meal_box:  {x: 3.5, y: 0.3, width: 0.6, depth: 0.5, access: [3.5, 0.9], properties: [receptacle, openable], state: {open: false}}
+  peat_box:  {x: 4.5, y: 0.3, width: 0.6, depth: 0.5, access: [4.5, 0.9], properties: [receptacle, openable], state: {open: false}}
   ash_pail:  {x: 5.2, y: 4.2, width: 0.4, depth: 0.4, access: [5.0, 3.6], properties: [garbage], words: [bin]}
 objects:
   horn_mug:  {in: board, mass: 1, properties: [pickupable, washable], state: {dirty: true}, categories: [crockery]}
@@ -32,6 +34,7 @@ objects:
   bannock:   {in: girnal, mass: 1, properties: [pickupable, sliceable], categories: [grub]}
   crowdie:   {in: board, mass: 1, properties: [pickupable]}
   buttermilk: {in: board, mass: 1, properties: [pickupable]}
+  oatcake:   {in: meal_box, mass: 1, properties: [pickupable, sliceable]}
   tilley_lamp: {in: board, mass: 1, properties: [pickupable, toggleable], state: {on: false}}
 robots:
   r1: {start: [1.0, 1.0], skills: {pickup: 3, open: 1, toggle: 1, slice: 1, wash: 1, heat: 1}}
@@ -95,3 +98,44 @@ def test_a_place_after_an_elided_throw_away(croft):
     # not there: thrown away too, or put there? asked, never a guess
     with pytest.raises(TranslationError):
         translate("Throw the crowdie away, and the buttermilk in the girnal.", croft)
+
+
+def test_a_machine_the_home_lacks_asked_of_is_impossible(croft):
+    for said in ("Switch on the dishwasher.", "Slice the bannock and run the dishwasher.",
+                 "Put the quaich in the dishwasher.", "Could you put the toaster on?"):
+        with pytest.raises(Refusal):
+            translate(said, croft)
+    # spoken of, not asked of, or under a negation: no impossibility, refused as words not placed
+    for said in ("The dishwasher's broken, wash the quaich.", "Wash the quaich, because the dishwasher is broken.",
+                 "Put the quaich in the trough, not the dishwasher."):
+        with pytest.raises(TranslationError):
+            translate(said, croft)
+
+
+def test_a_slip_of_the_before_a_name_is_the(croft):
+    for said in ("Wash teh horn mug.", "Wash tht horn mug.", "Wash hte horn mug."):
+        assert goal(said, croft)["state"] == {"horn_mug": ["clean"]}, said
+    # not before a name, or a word of its own: never read as "the"
+    with pytest.raises(TranslationError):
+        translate("Put teh in the trough.", croft)
+    with pytest.raises(TranslationError):
+        translate("Wash what horn mug.", croft)
+
+
+def test_a_thing_named_again_by_the_head_of_its_name(croft):
+    g = goal("Take the oatcake out of the meal box onto the board, and shut the box after.", croft)
+    assert g["in"] == {"board": ["oatcake"]} and g["state"]["meal_box"] == ["closed"]
+    # nothing said before it, or two things said that it could be: refused, never guessed
+    with pytest.raises(TranslationError):
+        translate("Open the box.", croft)
+    with pytest.raises(TranslationError):
+        translate("Open the meal box and the peat box, then close the box.", croft)
+
+
+def test_a_self_correction_replaces_the_noun_phrase_before_it(croft):
+    g = goal("Put the quaich, sorry, the horn mug on the board.", croft)
+    assert g["in"] == {"board": ["horn_mug"]}
+    g = goal("Put the horn mug in the girnal, I mean the press.", croft)
+    assert g["in"] == {"press": ["horn_mug"]}
+    # an apology opening the command is talk, set aside
+    assert goal("Sorry, put the horn mug on the board.", croft)["in"] == {"board": ["horn_mug"]}
