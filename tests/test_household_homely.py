@@ -139,3 +139,17 @@ def test_a_self_correction_replaces_the_noun_phrase_before_it(croft):
     assert g["in"] == {"press": ["horn_mug"]}
     # an apology opening the command is talk, set aside
     assert goal("Sorry, put the horn mug on the board.", croft)["in"] == {"board": ["horn_mug"]}
+
+
+CHEST = CROFT.replace("  tilley_lamp: {in: board,", "  hand_torch: {in: peat_box, mass: 1, properties: [pickupable, toggleable], "
+                      "state: {on: false}, categories: [lamps]}\n  tilley_lamp: {in: board,").replace(
+    "  crockery: {words", "  lamps: {words: [lamps, lights]}\n  crockery: {words")
+
+
+def test_lights_out_does_not_list_the_box_of_a_light_already_off():
+    croft = world_from_text(CHEST, "croft.yaml")
+    g = goal("I'm away to my bed. Lights out.", croft)
+    assert g["state"] == {"hand_torch": ["off"]}   # already off: the peat box is never opened
+    # a light that must be switched inside a closed box: the box is closed again
+    g = goal("Switch the hand torch on.", croft)
+    assert g["state"] == {"hand_torch": ["on"], "peat_box": ["closed"]}

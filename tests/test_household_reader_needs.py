@@ -276,7 +276,9 @@ def test_a_refusal_offers_readings_from_repairs_and_the_parts_that_parse(bothy):
     assert ({}, {"lamp": ["on"]}) in _goals(cands)
     # a list said with "or" (under a negation it is read as both: test_or_under_a_negation_lists_both)
     cands = offered("Switch off the lantern or the wireless.", bothy)
-    assert ({}, {"lantern": ["off"], "wireless": ["off"], "dresser": ["closed"]}) in _goals(cands)
+    # (the wireless is already off: the dresser that holds it need not be opened, so it is not
+    # listed closed again: benchmarks/README.md, tests/test_household_homely.py)
+    assert ({}, {"lantern": ["off"], "wireless": ["off"]}) in _goals(cands)
     # the choice a singular asks for: each thing it could be
     cands = offered("Turn on the lamp.", lamps(bothy))
     assert sorted(_goals(cands), key=str) == [({}, {"lamp": ["on"]}), ({}, {"lantern": ["on"]})]

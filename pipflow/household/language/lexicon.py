@@ -347,8 +347,10 @@ _add("GOES", "goes,belongs,belong,lives,live,is meant to live,is meant to go,is 
 #: (the lights off? everything off?), so they are asked, offering both (docs/household.md, cues)
 LEAVING_REASONS = {"bedtime", "time for bed", "off to bed", "going to bed", "heading to bed", "off out", "going out",
                    "heading out", "off to work", "going to work", "late", "night time"}
-_add("REASON", "late,bedtime,time for bed,night time,off to bed,going to bed,heading to bed,off out,going out,"
-     "heading out,off to work,going to work")
+#: "off to my bed", "away to my bed" (Scots and northern English: "away" is "off"), "off up to bed"
+LEAVING_REASONS |= {f"{go} to {whose}bed" for go in ("off", "away", "going", "heading", "off up", "away up")
+                    for whose in ("", "my ", "our ")}
+_add("REASON", ",".join(sorted(LEAVING_REASONS)))
 #: how a person is (tired, thirsty, hungry): alone it asks for nothing two people agree on, so it is
 #: asked, offering what answers it in the home (a refusal's candidates: ``NEEDS_OFFERED``); before
 #: a request it is the request's reason ("I'm shattered, turn the telly off")
