@@ -18,9 +18,9 @@ from pipflow.language.asides import NEGATION
 #: a home is called by: "kettle", "oven", "heater", "telly", "radio" are not here, for people call
 #: an urn, a range, a stove, a monitor or a stereo so (the home's own words, or the kinds of
 #: lexicon ``KIND_WORDS``, say which), and a refusal as impossible of a thing the home has would
-#: be a misreading
-MACHINES = frozenset({"dishwasher", "dishwashers", "microwave", "toaster", "dryer", "tumbledryer", "hoover",
-                      "washer", "dehumidifier", "humidifier", "blender", "extractor"})
+#: be a misreading; nor "washer", "dryer", "hoover", "extractor", "blender", which people say for
+#: a washing machine, a tumble drier, a vacuum, a cooker hood or a food processor
+MACHINES = frozenset({"dishwasher", "dishwashers", "microwave", "toaster", "dehumidifier", "humidifier"})
 #: words that name a thing after them
 _DETERMINERS = {"the", "my", "our", "your", "a", "an", "that", "this"}
 #: words that end a clause
