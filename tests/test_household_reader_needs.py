@@ -121,7 +121,9 @@ def test_what_the_speaker_will_do_is_set_aside_and_said(bothy):
     assert got["order"]["speaker_does"] == ["i will grab the plum myself"]
     assert any("what the speaker will do" in line for line in got["explain"])
     # a wish is no doing of the speaker's, and negation or "only" bear on the robots: never set aside
-    for tail in ("I'll need the turnip hot.", "I'll not touch the plum.", "I'll only wash the jug."):
+    # (the wish is read as one: "I'll need X hot" is "I need X hot", tests/test_household_homely.py)
+    assert translate("Open the icebox. I'll need the turnip hot.", bothy)["goal"]["state"]["turnip"] == ["hot"]
+    for tail in ("I'll not touch the plum.", "I'll only wash the jug."):
         with pytest.raises(TranslationError):
             translate(f"Open the icebox. {tail}", bothy)
 
@@ -274,7 +276,9 @@ def test_a_refusal_offers_readings_from_repairs_and_the_parts_that_parse(bothy):
     assert ({}, {"lamp": ["on"]}) in _goals(cands)
     # a list said with "or" (under a negation it is read as both: test_or_under_a_negation_lists_both)
     cands = offered("Switch off the lantern or the wireless.", bothy)
-    assert ({}, {"lantern": ["off"], "wireless": ["off"], "dresser": ["closed"]}) in _goals(cands)
+    # (the wireless is already off: the dresser that holds it need not be opened, so it is not
+    # listed closed again: benchmarks/README.md, tests/test_household_homely.py)
+    assert ({}, {"lantern": ["off"], "wireless": ["off"]}) in _goals(cands)
     # the choice a singular asks for: each thing it could be
     cands = offered("Turn on the lamp.", lamps(bothy))
     assert sorted(_goals(cands), key=str) == [({}, {"lamp": ["on"]}), ({}, {"lantern": ["on"]})]

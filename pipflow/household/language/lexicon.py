@@ -250,7 +250,9 @@ FOUL_WORDS = {"minging", "smelly", "stinky", "rank", "gross", "disgusting", "rot
               "sour", "off"}
 #: what food turns when it is past eating, said only after a verb of becoming ("the orange has
 #: gone soft", "it's gone all mushy"): alone they are no state ("a soft cushion"), so no adjective
-GONE_OFF = {"soft", "mushy", "squishy", "wrinkly", "slimy", "furry", "soggy", "limp", "brown", "black"}
+GONE_OFF = {"soft", "mushy", "squishy", "wrinkly", "slimy", "furry", "soggy", "limp", "brown", "black",
+            # the colours of mould ("the bread's gone green", "the cheese has gone blue")
+            "green", "blue", "fuzzy"}
 for _w in FOUL_WORDS - {"off"}:
     _add("ADJ", _w, "dirty")
 #: a foul predicate said whole: "the fish smells off", "the scone has gone stale", "it's gone mouldy"
@@ -294,7 +296,8 @@ _add("OFF", "off")
 _add("UP", "up")
 _add("AWAY", "away,where it belongs,where they belong,where it goes,where they go,where it lives,where they live,"
      "away where it belongs,away where they belong,away where it goes,away where they go,in its place,in their place,in their places,back in its place,"
-     "back in their place,back where it belongs,back where they belong")
+     "back in their place,back where it belongs,back where they belong,back where it lives,back where they live,"
+     "back where it goes,back where they go")
 _add("BACK", "back")
 _add("OF", "of")
 _add("IT", "it,them,they")
@@ -321,6 +324,10 @@ for _k, (_c, _v) in list(PHRASES.items()):
         for _h in ("really", "just", "so", "honestly"):
             PHRASES.setdefault((_k[0], _h) + _k[1:], (_c, _v))
 _add("NEED", "need,needs,wants")
+#: a wish said of the time to come ("I'll want my hottie in with me", "we'll need the lamp lit"):
+#: the same wish; "will" before any other verb is no wish, and is not read
+_add("WANT", "will want,shall want,will be wanting")
+_add("NEED", "will need,shall need,will be needing")
 _add("NEEDED", "needed,necessary,required,in use")
 #: "we are done with the laptop": the thing is not needed (a state cue, like "we do not need")
 _add("DONE", "done with,finished with,through with")
@@ -340,8 +347,10 @@ _add("GOES", "goes,belongs,belong,lives,live,is meant to live,is meant to go,is 
 #: (the lights off? everything off?), so they are asked, offering both (docs/household.md, cues)
 LEAVING_REASONS = {"bedtime", "time for bed", "off to bed", "going to bed", "heading to bed", "off out", "going out",
                    "heading out", "off to work", "going to work", "late", "night time"}
-_add("REASON", "late,bedtime,time for bed,night time,off to bed,going to bed,heading to bed,off out,going out,"
-     "heading out,off to work,going to work")
+#: "off to my bed", "away to my bed" (Scots and northern English: "away" is "off"), "off up to bed"
+LEAVING_REASONS |= {f"{go} to {whose}bed" for go in ("off", "away", "going", "heading", "off up", "away up")
+                    for whose in ("", "my ", "our ")}
+_add("REASON", ",".join(sorted(LEAVING_REASONS)))
 #: how a person is (tired, thirsty, hungry): alone it asks for nothing two people agree on, so it is
 #: asked, offering what answers it in the home (a refusal's candidates: ``NEEDS_OFFERED``); before
 #: a request it is the request's reason ("I'm shattered, turn the telly off")
@@ -491,6 +500,14 @@ FILLER = {("please",), ("kindly",), ("just",), ("quickly",), ("now",), ("for", "
           ("honestly",), ("seriously",), ("even",), ("actually",),
           ("the", "two", "of", "you"), ("both", "of", "you"), ("you", "two"), ("you", "both"), ("all", "of", "you"),
           ("the", "pair", "of", "you"), ("you", "guys"), ("guys",)}
+#: endearments and praise that close or open a request ("..., there's a love", "..., there's a good
+#: girl", "good lad, ..."): said to the one asked, they carry nothing; "mind you" / "mind and"
+#: before a verb is "make sure you" (northern and Scots English: "and mind you shut the door after")
+ENDEARMENTS = ("love", "dear", "pet", "duck", "darling", "sweetheart", "treasure", "angel", "star", "gem")
+PRAISED = ("girl", "boy", "lad", "lass", "lassie", "laddie")
+FILLER |= {("there", "is", "a", w) for w in ENDEARMENTS} | {("there", "is", "my", w) for w in ENDEARMENTS} \
+    | {("there", "is", "a", "good", w) for w in PRAISED} | {("good", w) for w in PRAISED} \
+    | {("mind", "you"), ("mind", "and"), ("make", "sure", "you")}
 #: who of the team is asked ("can one of you open the larder, and someone else light the fire",
 #: "two of you lift the sack"): who does a step is the plan's choice, so the words are framing,
 #: like "someone" above; a thing lifted by two is the team's way of working, not an end state

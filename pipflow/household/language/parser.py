@@ -30,6 +30,7 @@ from lark.visitors import CollapseAmbiguities
 from pipflow.errors import TranslationError
 from pipflow.household.language.builder import Builder
 from pipflow.household.language.grammar import NOUN_DUAL, gated_classes, grammar_text
+from pipflow.household.language.lacking import lacking
 from pipflow.household.language.lexicon import MARKS, PHRASES
 from pipflow.household.language.names import world_phrases
 from pipflow.household.language.setaside import without_asides
@@ -58,6 +59,17 @@ def parse(command: str, world: dict, notes: list[str] | None = None) -> list[dic
         raise TranslationError("the command is empty")
     refuse_unread(command, MARKS)   # a character this reader does not read is refused, never skipped
     notes = notes if notes is not None else []
+    try:
+        return _parse_with_asides(command, world, notes)
+    except TranslationError as exc:
+        impossible = lacking(command, exc)   # "switch on the dishwasher" where there is none
+        if impossible is not None:
+            raise impossible from None
+        raise
+
+
+def _parse_with_asides(command: str, world: dict, notes: list[str]) -> list[dict]:
+    """:func:`parse` of the command as said, else without the talk it sets aside."""
     try:
         return _parse(command, world, notes)
     except TranslationError:

@@ -407,9 +407,24 @@ class Resolver:
             if to is None:
                 raise TranslationError(f"'{words}': where to? name a place (e.g. 'in the fridge')")
             return {**out, "op": "put", "to": to}
+        if "to" in st and prev["op"] == "trash":
+            return self._trash_gap(st, out)
         if "to" in st:
             return {**out, "op": "put", "to": st["to"]}
         return {**out, "op": prev["op"]}
+
+    def _trash_gap(self, st: dict, out: dict) -> dict:
+        """ "throw the chip paper away, and the stale bread in the larder": after a throwing away,
+        the place of an elided verb's things says where they are (thrown away too) or where they
+        go (put there). Where every thing is already in that place a move would do nothing, so the
+        place says which things are meant; else the two readings differ and it is asked."""
+        words = st["words"]
+        place = self.place_of(st["to"], words)
+        named = [n for n, _ in self.objects(st["things"], words)]
+        if named and all(self.world["objects"].get(n, {}).get("in") == place for n in named):
+            self.goal.notes.append(f"'{words}': already in {place}, so the place says which things are thrown away")
+            return {**out, "op": "trash"}
+        raise TranslationError(f"'{words}': thrown away too, or put in {place}? say which")
 
     def statement(self, st: dict) -> None:
         if st["op"] == "repeat":

@@ -8,6 +8,9 @@ from __future__ import annotations
 
 from pipflow.errors import TranslationError
 from pipflow.household.language.colloquial import colloquial
+from pipflow.household.language.corrections import corrected
+from pipflow.household.language.dialect import them_as_those
+from pipflow.household.language.headwords import named_again
 from pipflow.household.language.grammar import NOUN_DUAL
 from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
 from pipflow.household.language.names import named_by_first_word, things_of_kind, world_phrases
@@ -15,7 +18,8 @@ from pipflow.household.language.retag import (act_before_noun, demonstratives, e
                                               restated_order, without_hedges)
 from pipflow.household.language.rewrites import measures, or_under_negation, particles, without_manner
 from pipflow.household.language.tokens import PUNCT, Tag
-from pipflow.household.language.typos import known_word, meaning_of, transposition_of, typo_of, vocabulary
+from pipflow.household.language.typos import (determiner_slip, known_word, meaning_of, transposition_of, typo_of,
+                                              vocabulary)
 from pipflow.language.numbers import read_number
 
 
@@ -37,8 +41,14 @@ def repaired(words: list[str], index: dict, vocab: set[str], notes: list[str], w
     read as that word (a note says so); two competing repairs: left as typed (refused, offered). A
     word that names a kind of thing of this home ("heater", :func:`things_of_kind`) is no typo."""
     words = list(words)
+    firsts = {key[0] for key in index}   # the first words of the names of the home
     for k, w in enumerate(words):
         if known_word(w, index, vocab) or len(w) < 3 or not w.isalpha() or things_of_kind(world, w)[0]:
+            continue
+        slip = determiner_slip(w, k + 1 < len(words) and words[k + 1] in firsts)
+        if slip is not None:   # "wash teh wine glass": only a determiner fits before a name
+            notes.append(f"read {w!r} as {slip!r} (a determiner before a name)")
+            words[k] = slip
             continue
         swapped = transposition_of(w)
         if len(swapped) == 1 and set(typo_of(w, vocab)) <= set(swapped):
@@ -59,8 +69,9 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
     notes = notes if notes is not None else []
     index = world_phrases(world)
     vocab = vocabulary(index)
-    words = or_under_negation(measures(without_manner(colloquial(words_of(command), notes), notes), index, notes),
+    words = or_under_negation(measures(without_manner(colloquial(corrected(words_of(command), notes), notes), notes), index, notes),
                               notes)
+    words = named_again(them_as_those(words, index, notes), index, notes)
     words = particles(words, lambda x: x.isalpha() and not known_word(x, index, vocab), notes)
     said = list(words)   # as typed: a repair that still names nothing is quoted as typed
     words = repaired(words, index, vocab, notes, world)

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from pipflow.household.language.lexicon import FILLER, FILLER_TYPO_TARGETS, PHRASES
 from pipflow.household.language.tokens import PUNCT
+from pipflow.language.asides import FUNCTION_WORDS
 from pipflow.language.numbers import read_number
 from pipflow.language.spelling import distance
 
@@ -81,3 +82,20 @@ def transposition_of(word: str) -> list[str]:
     letters of ("teh" -> the, "adn" -> and): a slip of typing fast, which no other spelling is.
     The tagger reads the word so only when there is exactly one such word."""
     return [k for k in _GRAMMAR_WORDS if _swapped(word, k)]
+
+
+#: the definite determiners: before the name of a thing each picks that thing ("the", "that" or
+#: "this" bun is the one bun named)
+DEFINITE = ("the", "that", "this")
+
+
+def determiner_slip(word: str, before_name: bool) -> str | None:
+    """ "teh", "tht", "hte" before the name of a thing: one slip (an edit, or a swap of neighbours)
+    from a definite determiner (:data:`DEFINITE`), read as "the". Between a verb and a name only a
+    determiner fits, and the definite ones pick the same thing, so "teh" is not "tea" there
+    ("wash teh wine glass"); elsewhere the word is left to the other repairs. None when it is no
+    such slip."""
+    if not before_name or len(word) > 5 or not word.isalpha() or word in FUNCTION_WORDS or word.isdigit():
+        return None   # "what mug", "she": words of their own, never a slip
+    near = [d for d in DEFINITE if (word[0] == "t" and distance(word, d) <= 1) or _swapped(word, d)]
+    return "the" if near else None
