@@ -321,6 +321,10 @@ class Resolver:
             have[pred] = _Condition(cond, explicit, words)
 
     def put(self, obj: str, place: str, words: str) -> None:
+        if obj not in self.world["objects"]:
+            # "something's gone off in the fridge, get rid of it": what "it" names there is the
+            # fridge, a fixture of the home; what is meant is not said (it crashed: KeyError)
+            raise TranslationError(f"'{words}': {obj} is part of the home, no thing to move; say which thing")
         old = self.goal.inside.get(obj)
         if old is not None and old[0] != place and self.via_placed.get(obj) == old[0]:
             # "heat the egg in the microwave, then bring it to the table": the microwave is where
