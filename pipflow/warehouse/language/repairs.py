@@ -9,6 +9,7 @@ which, so here every near word is a reading to offer: the user chooses, or the r
 from __future__ import annotations
 
 import re
+from os.path import commonprefix
 
 from pipflow.language.numbers import NUMBER_WORDS
 from pipflow.language.spelling import distance, normalize
@@ -48,16 +49,9 @@ def near_words(word: str, lex: Lexicon) -> list[str]:
     # a word of a name said short ("mag" of magazine, "disp" of dispatch) or by another ending
     # ("hardbacks" for hardcover): a name word it starts, or one that shares its first four
     # letters and half the word; after the near misses, the longest shared start first
-    shared = sorted(((-len(_common_start(low, w)), w) for w in lex._name_words if w.isalpha() and w not in found
-                     and (w.startswith(low) or len(_common_start(low, w)) >= max(4, len(low) // 2))), key=lambda x: x)
+    shared = sorted((-len(commonprefix([low, w])), w) for w in lex._name_words if w.isalpha() and w not in found
+                    and (w.startswith(low) or len(commonprefix([low, w])) >= max(4, len(low) // 2)))
     return (found + [w for _, w in shared])[:MAX_REPAIRS]
-
-
-def _common_start(a: str, b: str) -> str:
-    n = 0
-    while n < min(len(a), len(b)) and a[n] == b[n]:
-        n += 1
-    return a[:n]
 
 
 def with_word(command: str, wrong: str, right: str) -> str | None:
