@@ -137,11 +137,18 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
     out = elided_it_is(left_lying(without_hedges(out, notes)), notes)
     out = restated_order(located(demonstratives(act_before_noun(out)), world, notes), notes)
     if unknown:
-        names = sorted(set(world.get("objects") or {}) | set(world.get("places") or {}))
-        error = TranslationError(
-            f"{', '.join(repr(u) for u in dict.fromkeys(unknown))} names nothing in this world and is no word the "
-            f"offline parser knows (in {command.strip()!r}); things of this world: {', '.join(names)}"
-            + "".join(f"; '{w}' is part of the names of {', '.join(ns)}: say which" for w, ns in shared.items()))
-        error.unread = list(dict.fromkeys(unknown))  # type: ignore[attr-defined]  # for candidate readings
-        raise error
+        raise _unplaced(command, world, unknown, shared)
     return out
+
+
+def _unplaced(command: str, world: dict, unknown: list[str], shared: dict[str, list[str]]) -> TranslationError:
+    """The refusal of a command with words the reader could not place: quoting them, listing the
+    world's things, and saying which things a word is part of the names of; the words are kept
+    (``unread``) for the candidate readings."""
+    names = sorted(set(world.get("objects") or {}) | set(world.get("places") or {}))
+    error = TranslationError(
+        f"{', '.join(repr(u) for u in dict.fromkeys(unknown))} names nothing in this world and is no word the "
+        f"offline parser knows (in {command.strip()!r}); things of this world: {', '.join(names)}"
+        + "".join(f"; '{w}' is part of the names of {', '.join(ns)}: say which" for w, ns in shared.items()))
+    error.unread = list(dict.fromkeys(unknown))  # type: ignore[attr-defined]  # for candidate readings
+    return error
