@@ -321,8 +321,8 @@ BACK_REFERENCES = frozenset({"it", "its", "them", "their", "there", "those", "th
 
 
 def leading_reason(parts: list[Clause], free: list[Clause], counts: Callable[[str], bool]) -> list[Clause]:
-    """The reason that opens a sentence and is followed by "so" ("We're doing a stock count on bay
-    9 this afternoon, so get 3 paperbacks ..."): a report of what is going on (a subject, "be", a
+    """The reason that opens a sentence and is followed by "so" ("We're doing a sale on bay 9 this
+    afternoon, so get 3 paperbacks ..."): a report of what is going on (a subject, "be", a
     verb in -ing: :func:`is_report`) that may name places and products, with "so" after
     it; both are set aside. Never with a count (``counts``: the domain's test, which lets the
     world's names pass) or an operative word in it, nor where the order after it points back with

@@ -58,7 +58,9 @@ def _dislocated(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict
     ("The wheels on P, double them": :func:`wordorder.left_dislocated`), with or without its
     content-free clauses; the reader and the clauses set aside, or None where neither reads."""
     moved = lexed.dislocated
-    for form, talk in ((moved, []), (moved.trimmed if moved else None, list(moved.aside) if moved else [])):
+    if moved is None:
+        return None
+    for form, talk in ((moved, []), (moved.trimmed, list(moved.aside))):
         if form is None:
             continue
         try:

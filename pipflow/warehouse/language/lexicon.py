@@ -531,7 +531,7 @@ class Lexicon:
         name is never talk)."""
         if word in self.keywords and word not in FUNCTION_WORDS:
             return True
-        if word.isdigit() or word in NUMBER_WORDS or word in FRACTIONS or word in SUPERLATIVES or word in self.skills:
+        if word in NUMBER_WORDS or word in FRACTIONS or word in SUPERLATIVES or word in self.skills:
             return True
         if self._group(word) is not None:
             return True
@@ -548,7 +548,7 @@ class Lexicon:
         """Whether a word of a clause names something of this world or a count: a world name, a
         robot kind or tag, a number word, or a word within a typo's reach of a name's word (the
         test a pleasantry's words must pass: :func:`pipflow.language.asides.is_pleasantry`)."""
-        if word.isdigit() or word in NUMBER_WORDS or word in FRACTIONS or self._group(word) is not None:
+        if word in NUMBER_WORDS or word in FRACTIONS or self._group(word) is not None:
             return True
         if word in FUNCTION_WORDS or word in FILLERS or word in self.keywords:
             return False  # "for" is no misspelt "four"
@@ -573,7 +573,7 @@ class Lexicon:
         parts = clauses(words, marks)
         free = [c for c in parts if content_free(c.words, lambda w: w in _HELD or self.content(w),
                                                  lambda w: w in _HELD or self.names_world(w), reports=True)]
-        free += leading_reason(parts, free, lambda w: w == "\1" or w.isdigit() or w in NUMBER_WORDS)
+        free += leading_reason(parts, free, lambda w: w == "\1" or w in NUMBER_WORDS)
         thanks = trailing_thanks(list(parts[-1].words), self.content) if parts and parts[-1] not in free else 0
         if thanks:   # "... to the dray bay ta": the thanks closing the last clause, without a comma
             end = parts[-1].end
