@@ -197,6 +197,11 @@ class Resolver:
         if sel.get("door") and not all("openable" in entity(self.world, n)["properties"] for n in names):
             raise TranslationError(f"'{words}': '{what}' has no door in this world")
         names = self._narrow(sel, words, names, implicit)
+        if not implicit and len(names) == 1 and "count" not in sel and self._plural_of_one(sel, names[0]):
+            # "the pans are filthy" where one thing is called a pan: the plural says more than one
+            # is meant, and which others is a guess (the casserole? the wok?)
+            raise TranslationError(f"'{words}': '{what}' is plural, but only {names[0]} is called so in this "
+                                   f"world; say which things")
         if implicit and need and "count" not in sel:
             fit = [n for n in names if need in entity(self.world, n)["properties"]]
             if not fit:
@@ -232,6 +237,23 @@ class Resolver:
         if not names:
             raise Refusal(f"'{words}': nothing in this world is '{what}'")
         return names, implicit
+
+    def _plural_of_one(self, sel: dict, name: str) -> bool:
+        """Whether a selector names one thing in the plural of a one-word kind word that is not
+        its name ("the pans" for frying_pan, whose words list "pan": the casserole may be a pan
+        too), and the thing is no food (named in the plural for one portion). The plural of a
+        thing's name or of a longer word for it ("them horn mugs", "the jugs of water") means it."""
+        noun = sel.get("noun") or {}
+        readings = noun.get("readings") or []
+        if not readings or not all(r.get("plural") for r in readings) or sel.get("all") or sel.get("everything"):
+            return False
+        e = entity(self.world, name)
+        if {"sliceable", "heatable"} & set(e.get("properties") or ()):
+            return False
+        said, own = noun.get("words", ""), " ".join(words_of(name))
+        listed = {" ".join(words_of(x)) for x in e.get("words") or []}
+        kinds = [w for w in listed if " " not in w and w != own]
+        return said not in listed | {own} and any(said in plurals(k) for k in kinds)
 
     def _narrow(self, sel: dict, words: str, names: list[str], implicit: bool) -> list[str]:
         """The names a selector keeps of ``names`` by where they are ("from"), their states and

@@ -117,7 +117,18 @@ def _understand(command: str, world: dict, choose: dict[str, str] | None = None)
     if not meant:
         # no reading resolves: the one that got as far as asking which thing is meant says most
         # (its choices become the candidate readings), else the first
-        raise next((e for e in errors if getattr(e, "choices", None)), errors[0])
+        asking = next((e for e in errors if getattr(e, "choices", None)), None)
+        if asking is not None:
+            raise asking
+        impossible = [e for e in errors if isinstance(e, Refusal)]
+        if impossible and len(impossible) < len(errors):
+            # one reading is impossible, another is not understood ("..., and the dolls house in
+            # the toy box": the dolls house that is in the box, or (put) the dolls house in the
+            # box): the command is impossible only if the first is what was meant, so it is asked
+            raise TranslationError(f"{command.strip()!r} is impossible if read one way ({impossible[0]}), "
+                                   f"and another reading is not understood "
+                                   f"({next(e for e in errors if not isinstance(e, Refusal))}); say it in other words")
+        raise errors[0]
     if len(meant) > 1:
         # coordination before gapping: "chop the carrot and the onion on the worktop" is one
         # clause about both, not "chop the carrot" and "(chop) the onion on the worktop"
