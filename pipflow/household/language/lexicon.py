@@ -499,7 +499,7 @@ FILLER = {("please",), ("kindly",), ("just",), ("quickly",), ("now",), ("for", "
           ("while", "you", "are", "on", "your", "feet"), ("while", "you", "are", "over", "here"), ("if", "you", "get", "a", "chance"),
           ("honestly",), ("seriously",), ("even",), ("actually",),
           ("the", "two", "of", "you"), ("both", "of", "you"), ("you", "two"), ("you", "both"), ("all", "of", "you"),
-          ("the", "pair", "of", "you"), ("you", "guys"), ("guys",)}
+          ("the", "pair", "of", "you"), ("you", "guys"), ("guys",), ("hang", "on"), ("hold", "on")}
 #: endearments and praise that close or open a request ("..., there's a love", "..., there's a good
 #: girl", "good lad, ..."): said to the one asked, they carry nothing; "mind you" / "mind and"
 #: before a verb is "make sure you" (northern and Scots English: "and mind you shut the door after")
@@ -554,6 +554,11 @@ MEASURES = {"bowl", "bowlful", "plate", "plateful", "cup", "glass", "mug", "bag"
 PURPOSES = {("later",), ("tomorrow",), ("the", "morning"), ("the", "weekend"), ("now",), ("safekeeping",),
             ("safe", "keeping"), ("tea",), ("dinner",), ("lunch",), ("supper",), ("breakfast",), ("brunch",),
             ("guests",), ("the", "guests"), ("visitors",), ("the", "visitors"), ("tonight",), ("the", "party")}
+#: words a purpose or its beneficiary is made of, in any order ("for tea tonight", "for my
+#: breakfast", "for the little one", "for the kids"): meals, times and people who are no robot
+PURPOSE_WORDS = {"later", "tomorrow", "morning", "weekend", "tonight", "today", "tea", "dinner", "lunch", "supper",
+                 "breakfast", "brunch", "guests", "visitors", "party", "kids", "children", "baby", "little", "wee",
+                 "one", "ones", "sandwich", "sandwiches", "school", "work", "bed", "bedtime"}
 
 #: filler words a misspelling may be read as ("plese"): only these, long and close to no
 #: content word, so that a misspelt content word is never dropped as politeness
@@ -625,6 +630,19 @@ def normalize(text: str) -> str:
     t = re.sub(r",?\s*\binnit\b", " ", t)
     t = re.sub(r",?\s*\beh\b(?=\s*(?:[?.!]|$))", " ", t)   # "sort it out, eh?": a tag that asks nothing
     t = re.sub(r"\bye\b", "you", t)   # "could ye ...": the older and dialect "you"
+    # texting and typing without apostrophes: "can u", "theyre", "itll", "isnt", "gonna"
+    t = re.sub(r"\bu\b", "you", t)
+    t = re.sub(r"\bur\b", "your", t)
+    t = re.sub(r"\b(they|you|we)re\b", r"\1 are", t)
+    t = re.sub(r"\b(it|that|there|what)ll\b", r"\1 will", t)
+    t = re.sub(r"\b(that|there|what)s\b", r"\1 is", t)
+    t = re.sub(r"\bim\b", "i am", t)
+    t = re.sub(r"\bive\b", "i have", t)
+    t = re.sub(r"\b(is|are|was|were|does|did|has|have|could|would|should)nt\b", r"\1 not", t)
+    t = re.sub(r"\bcant\b", "can not", t)
+    t = re.sub(r"\bgonna\b", "going to", t)
+    t = re.sub(r"\bwanna\b", "want to", t)
+    t = re.sub(r"\bgotta\b", "have to", t)
     t = re.sub(r"'s(?=\s+(?:been|gone|got|become|left)\b)", " has", t)   # "the console's been on"
     t = re.sub(r"'s(?=\s+still\s+(?:been|gone|got)\b)", " has", t)   # "the table's still got ..."
     t = re.sub(r"'s(?=\s+[a-z]{3,}ing\b)", " is", t)   # "the watering can's leaking"

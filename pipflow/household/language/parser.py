@@ -78,18 +78,21 @@ def _parse_with_asides(command: str, world: dict, notes: list[str]) -> list[dict
             raise
         mine: list[str] = []
         try:
-            readings = _parse(trimmed[0], world, mine)
+            readings = _parse(trimmed.rest, world, mine)
         except TranslationError as again:
             # what is left after the talk is set aside is what does not read: say that
-            error = TranslationError(f"{again} (set aside: {'; '.join(repr(a) for a in trimmed[1] + trimmed[2])})",
+            error = TranslationError(f"{again} (set aside: "
+                                     + "; ".join([repr(a) for a in trimmed.free + trimmed.own] + trimmed.restated) + ")",
                                      candidates=again.candidates)
             for attr in ("unread", "unplaced", "choices"):   # what candidate readings are built from
                 if hasattr(again, attr):
                     setattr(error, attr, getattr(again, attr))
             raise error from None
-    notes += mine + ([said(trimmed[1])] if trimmed[1] else []) + [
-        f"'{own}' says what the speaker will do: no order for the robots (set aside)" for own in trimmed[2]]
-    extra = {**({"set_aside": trimmed[1]} if trimmed[1] else {}), **({"speaker_does": trimmed[2]} if trimmed[2] else {})}
+    notes += mine + ([said(trimmed.free)] if trimmed.free else []) + [
+        f"'{own}' says what the speaker will do: no order for the robots (set aside)" for own in trimmed.own] + [
+        f"{r} says where a thing is, as this home has it: set aside" for r in trimmed.restated]
+    extra = {**({"set_aside": trimmed.free} if trimmed.free else {}), **({"speaker_does": trimmed.own} if trimmed.own else {}),
+             **({"restated": trimmed.restated} if trimmed.restated else {})}
     return [{**r, **extra} for r in readings]
 
 
@@ -150,8 +153,9 @@ def _elided_objects(tags: list[Tag]) -> list[Tag] | None:
     for k, t in enumerate(tags):
         out.append(t)
         named_before = any(x.cls == "NOUN" or x.cls.endswith(NOUN_DUAL) for x in tags[:k])
-        if (t.cls in DROPPED_OBJECT_VERBS and k + 1 < len(tags) and tags[k + 1].cls in DESTINATIONS
-                and named_before):
+        # the destination must name where: "hang on" (wait) drops no object
+        if (t.cls in DROPPED_OBJECT_VERBS and k + 2 < len(tags) and tags[k + 1].cls in DESTINATIONS
+                and tags[k + 2].cls not in ("END", "COMMA") and named_before):
             out.append(Tag("IT", None, "(it)"))
             changed = True
     return out if changed else None

@@ -5,7 +5,8 @@ cherries"), and "or" under a negation ("nobody is using X or Y"). Each rewrite l
 from __future__ import annotations
 
 from pipflow.household.language.lexicon import (DURATION_HEDGES, DURATION_UNITS, GRADED, HOT_DRINKS, MANNER_OBJECTS, MANNERS, MEALS,
-                                                MEASURES, ORDER_WORDS, ORDINAL_DETERMINERS, PHRASES, PURPOSES, TIME_WORDS)
+                                                MEASURES, ORDER_WORDS, ORDINAL_DETERMINERS, PHRASES, PURPOSE_WORDS, PURPOSES,
+                                                TIME_WORDS)
 from pipflow.household.language.tokens import PUNCT
 from pipflow.language.numbers import read_number
 
@@ -96,16 +97,22 @@ def without_duration(clause: list[str], notes: list[str]) -> list[str]:
     return clause
 
 
+#: whose a purpose is ("for my breakfast", "for the little one")
+BENEFICIARY_DETERMINERS = {"the", "my", "our", "your", "his", "her", "their"}
+
+
 def _without_purpose(clause: list[str], notes: list[str]) -> list[str]:
     """A clause without its closing purpose ("... for airing", "... for later": lexicon
-    ``PURPOSES``, or "for" + an -ing word that is no verb of the lexicon): what for, not what the
+    ``PURPOSES``, words of ``PURPOSE_WORDS`` after a possessive or none ("for tea tonight", "for
+    the little one"), or "for" + an -ing word that is no verb of the lexicon): what for, not what the
     home should end like. "for washing" (a verb the home can do) is kept, and refused: it may ask
     for the washing too."""
-    for n in (1, 2):
+    for n in (1, 2, 3, 4):
         if len(clause) > n + 1 and clause[-n - 1] == "for":
             tail = tuple(clause[-n:])
-            if tail in PURPOSES or (n == 1 and tail[0].endswith("ing") and len(tail[0]) > 5
-                                    and not any(tail[0] in key for key in PHRASES)):
+            whom = tail[1:] if tail[0] in BENEFICIARY_DETERMINERS else tail
+            if tail in PURPOSES or (whom and all(w in PURPOSE_WORDS for w in whom)) or \
+                    (n == 1 and tail[0].endswith("ing") and len(tail[0]) > 5 and not any(tail[0] in key for key in PHRASES)):
                 notes.append(f"'for {' '.join(tail)}' says what for, not what the home should end like")
                 return clause[:-n - 1]
     return clause

@@ -5,10 +5,11 @@ without them when it does not read as said."""
 from __future__ import annotations
 
 import re
-from typing import Callable
+from typing import Callable, NamedTuple
 
 from pipflow.household.language.lexicon import FILLER_TYPO_TARGETS, PHRASES, words_of
 from pipflow.household.language.names import world_phrases
+from pipflow.household.language.restated import restates_location
 from pipflow.household.language.typos import typo_of, vocabulary
 from pipflow.language.asides import EXCLUSIVITY, FUNCTION_WORDS, NEGATION, clauses, content_free
 from pipflow.language.numbers import read_number
@@ -49,6 +50,10 @@ def _content(world: dict) -> Callable[[str], bool]:
 #: about to unpack the shopping"): no order for the robots
 SPEAKER_OPENERS = (("i", "will"), ("we", "will"), ("i", "am", "about", "to"), ("we", "are", "about", "to"),
                    ("i", "am", "going", "to"), ("we", "are", "going", "to"), ("i", "shall"), ("we", "shall"))
+#: what the speaker will do as the purpose of an order ("bring the lobster pot in so I can mend
+#: it"): "so" (+ "that") + one of these; it ends the order's clause like a comma
+PURPOSE_OPENERS = tuple(("so",) + that + who for that in ((), ("that",))
+                        for who in (("i", "can"), ("we", "can"), ("i", "could"), ("we", "could")))
 #: verbs after such an opener that make it a wish, not the speaker's doing ("I'll need the oven on",
 #: "I'll take the tea in the cabin", "I'm going to want ..."): never set aside
 WISH_VERBS = {"need", "want", "like", "have", "take", "be", "wish", "prefer", "love"}
@@ -58,7 +63,7 @@ def speaker_doing(words: tuple[str, ...]) -> bool:
     """Whether a clause says what the speaker will do ("I'll grab the milk myself"): it opens with
     :data:`SPEAKER_OPENERS`, its verb is no wish (:data:`WISH_VERBS`) and it has no negation or
     exclusivity ("I'll not ...", "I'll only ..."), which would bear on what the robots do."""
-    for opener in SPEAKER_OPENERS:
+    for opener in SPEAKER_OPENERS + PURPOSE_OPENERS:
         if words[:len(opener)] == opener and len(words) > len(opener):
             rest = words[len(opener):]
             return rest[0] not in WISH_VERBS and not any(w in NEGATION or w in EXCLUSIVITY for w in rest)
@@ -69,18 +74,45 @@ def speaker_doing(words: tuple[str, ...]) -> bool:
 _PARENTHESES = re.compile(r"\s[-\u2010-\u2015]+\s|[\u2013\u2014\u2015()\[\]]")
 
 
-def without_asides(command: str, world: dict) -> tuple[str, list[str], list[str]] | None:
-    """The command without its content-free clauses (:mod:`pipflow.language.asides`) and its
-    clauses that say what the speaker will do (:func:`speaker_doing`): (the rest, the words of
-    the first, the words of the second), or None when it has none (or nothing else). Dashes and
-    brackets set a clause off as commas do ("throw the fish away - it smells off - and ...")."""
-    words = words_of(_PARENTHESES.sub(" , ", command))
+def _purposes_apart(words: list[str]) -> list[str]:
+    """The words with a comma before a purpose that says what the speaker will do ("... so I
+    can mend it": :data:`PURPOSE_OPENERS`), so that it is a clause of its own."""
+    out: list[str] = []
+    for k, w in enumerate(words):
+        if w == "so" and out and out[-1] not in CLAUSE_MARKS:
+            end = next((j for j in range(k, len(words)) if words[j] in CLAUSE_MARKS), len(words))
+            if speaker_doing(tuple(words[k:end])):
+                out.append(",")
+        out.append(w)
+    return out
+
+
+class Trimmed(NamedTuple):
+    """A command without the talk :func:`without_asides` sets aside, and that talk."""
+
+    rest: str
+    free: list[str]        # content-free clauses
+    own: list[str]         # what the speaker will do
+    restated: list[str]    # where a thing is, as the world has it (:mod:`.restated`)
+
+
+def without_asides(command: str, world: dict) -> Trimmed | None:
+    """The command without its content-free clauses (:mod:`pipflow.language.asides`), its
+    clauses that say what the speaker will do (:func:`speaker_doing`) and those that say where a
+    thing already is (:func:`pipflow.household.language.restated.restates_location`), or None
+    when it has none (or nothing else). Dashes and brackets set a clause off as commas do
+    ("throw the fish away - it smells off - and ..."). A first clause is never a restatement."""
+    words = _purposes_apart(words_of(_PARENTHESES.sub(" , ", command)))
     content = _content(world)
     free = [c for c in clauses(words, CLAUSE_MARKS) if content_free(c.words, content)]
-    own = [c for c in clauses(words, CLAUSE_MARKS) if c not in free and speaker_doing(c.words)]
-    if not free and not own:
+    parts = clauses(words, CLAUSE_MARKS)
+    own = [c for c in parts if c not in free and speaker_doing(c.words)]
+    known = [(c, restates_location(c.words, [b.words for b in parts[:k]], world)) for k, c in enumerate(parts)
+             if k and c not in free and c not in own]
+    known = [(c, what) for c, what in known if what]
+    if not free and not own and not known:
         return None
-    drop = {k for c in free + own for k in range(c.start, c.end)}
+    drop = {k for c in free + own + [c for c, _ in known] for k in range(c.start, c.end)}
     kept = [w for k, w in enumerate(words) if k not in drop]
     # a clause mark left with nothing before it in its sentence goes too
     out: list[str] = []
@@ -92,4 +124,5 @@ def without_asides(command: str, world: dict) -> tuple[str, list[str], list[str]
         out.append(w)
     if not [w for w in out if w not in CLAUSE_MARKS]:
         return None
-    return " ".join(out), [" ".join(c.words) for c in free], [" ".join(c.words) for c in own]
+    return Trimmed(" ".join(out), [" ".join(c.words) for c in free], [" ".join(c.words) for c in own],
+                   [f"'{' '.join(c.words)}' ({what} now)" for c, what in known])

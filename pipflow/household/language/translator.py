@@ -212,6 +212,8 @@ def _translate(command: str, world: dict, choose: dict[str, str] | None = None) 
     own = meaning["order"].get("speaker_does") or []
     return {"goal": goal, "concrete": resolve_counts(world, goal), "order": meaning["order"],
             "explain": meaning["explain"] + ([said(aside)] if aside else [])
-            + [f"set aside, not read (what the speaker will do, no order for the robots): '{o}'" for o in own],
+            + [f"set aside, not read (what the speaker will do, no order for the robots): '{o}'" for o in own]
+            + [f"set aside, not read (where a thing is, as this home has it): {r}"
+               for r in meaning["order"].get("restated") or []],
             "notes": meaning["notes"],
             "words": meaning["words"]}

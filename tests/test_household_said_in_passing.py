@@ -1,0 +1,94 @@
+"""Issue 23, household: what people say in passing around an order, in a croft of our own (names
+no benchmark uses). Each is read, or set aside and echoed, only where it changes nothing; where it
+could, the command is still asked about.
+
+* where a thing already is ("heat the stew, it's in the larder"): set aside when the home agrees,
+  kept (and so asked) when it does not;
+* a purpose that says what the speaker will do ("... so I can mend it");
+* whom or what a thing is for ("for the little one", "for tea tonight");
+* texting and apostrophe-less spellings ("can u", "theyre", "isnt");
+* "hang on" (wait) is no "hang it on"."""
+from __future__ import annotations
+
+import pytest
+
+from pipflow.errors import Refusal, TranslationError
+from pipflow.household.language.lexicon import normalize
+from pipflow.household.language.translator import translate
+from pipflow.household.world import world_from_text
+
+CROFT = """
+domain: household
+name: croft
+floor: {width: 6, height: 5}
+places:
+  range:   {x: 0.2, y: 4.0, width: 0.8, depth: 0.8, access: [0.6, 3.5], properties: [receptacle, heater, toggleable], state: {on: false}}
+  larder:  {x: 4.2, y: 0.2, width: 1.0, depth: 0.5, access: [4.7, 1.0], properties: [receptacle, openable], state: {open: false}}
+  settle:  {x: 2.5, y: 2.0, width: 1.2, depth: 0.8, access: [3.1, 1.5], properties: [receptacle], words: [bench]}
+  creel:   {x: 5.2, y: 4.2, width: 0.4, depth: 0.4, access: [5.0, 3.6], properties: [garbage], words: [bin]}
+  lamp:    {x: 4.0, y: 2.2, width: 0.2, depth: 0.2, access: [4.3, 1.5], properties: [toggleable], state: {on: false}}
+objects:
+  stew:    {in: larder, mass: 1, properties: [pickupable, heatable]}
+  oatmeal: {in: larder, mass: 1, properties: [pickupable, heatable]}
+  peel:    {in: settle, mass: 1, properties: [pickupable]}
+  net:     {in: settle, mass: 1, properties: [pickupable]}
+robots:
+  r1: {start: [1.0, 1.0], skills: {pickup: 1, open: 1, toggle: 1, slice: 1, wash: 1, heat: 1}}
+"""
+
+
+@pytest.fixture(scope="module")
+def croft() -> dict:
+    return world_from_text(CROFT, "croft.yaml")
+
+
+def test_where_a_thing_is_said_as_the_home_has_it_is_set_aside_and_echoed(croft):
+    out = translate("Heat the stew up, it's in the larder", croft)
+    assert out["goal"]["state"] == {"stew": ["hot"], "larder": ["closed"]}
+    assert any("where a thing is" in line and "stew in larder" in line for line in out["explain"])
+
+
+def test_where_a_thing_is_said_by_its_name_is_set_aside(croft):
+    out = translate("Bin the peel - peel is on the bench - and switch the lamp on", croft)
+    assert out["goal"]["in"] == {"creel": ["peel"]} and out["goal"]["state"] == {"lamp": ["on"]}
+
+
+def test_where_a_thing_is_said_against_the_home_is_not_set_aside(croft):
+    # the stew is in the larder: a speaker who says otherwise may mean another thing
+    with pytest.raises((TranslationError, Refusal)):
+        translate("Heat the stew up, it's on the bench", croft)
+
+
+def test_a_purpose_saying_what_the_speaker_will_do_is_set_aside(croft):
+    out = translate("Bring the net to the bench so I can mend it, and switch the lamp on", croft)
+    assert out["goal"]["in"] == {"settle": ["net"]} and out["goal"]["state"] == {"lamp": ["on"]}
+    assert any("speaker will do" in line for line in out["explain"])
+
+
+def test_a_purpose_with_a_negation_is_never_set_aside(croft):
+    with pytest.raises(TranslationError):
+        translate("Bring the net to the bench so I can not trip on it", croft)
+
+
+@pytest.mark.parametrize("purpose", ["for the little one", "for tea tonight", "for my breakfast"])
+def test_whom_or_what_a_thing_is_for_is_no_part_of_the_goal(croft, purpose):
+    assert translate(f"Heat the oatmeal {purpose}", croft)["goal"]["state"]["oatmeal"] == ["hot"]
+
+
+def test_a_purpose_naming_a_thing_of_the_home_is_kept(croft):
+    # "for the stew" names a thing: it may say where the oatmeal goes, so it is not dropped
+    with pytest.raises(TranslationError):
+        translate("Heat the oatmeal for the stew", croft)
+
+
+@pytest.mark.parametrize("typed,read", [("can u heat it", "can you heat it"), ("theyre cold", "they are cold"),
+                                        ("it isnt on", "it is not on"), ("i cant see", "i can not see"),
+                                        ("thats it", "that is it"), ("im cold", "i am cold")])
+def test_texting_and_apostrophe_less_spellings_are_read_as_written_out(typed, read):
+    assert normalize(typed) == read
+
+
+def test_hang_on_is_a_pause_not_an_order(croft):
+    out = translate("Heat the stew - hang on - and bin the peel", croft)
+    assert out["goal"]["state"].get("range") is None and out["goal"]["state"]["stew"] == ["hot"]
+    assert out["goal"]["in"] == {"creel": ["peel"]}
