@@ -94,3 +94,25 @@ def test_a_reason_the_order_points_back_to_or_with_a_count_or_a_negation_is_kept
     except TranslationError:
         return
     assert not got["order"].get("set_aside")
+
+
+@pytest.mark.parametrize("command", ["Shelf2 should end up with 6 product1 for the Hadleys order",
+                                     "Shelf2 should end up with 6 product1 because the delivery is due"])
+def test_a_purpose_or_reason_is_set_aside_though_it_holds_grammar_words(command: str) -> None:
+    """"order" and "delivery" are words of the grammar; after "for" or "because" they say what
+    for, and order nothing."""
+    got = understand(command, PAPER)
+    assert got["goal"] == {"shelf2": {"product1": 6}}
+    assert got["order"]["set_aside"]
+
+
+@pytest.mark.parametrize("command", ["Shelf2 should end up with 6 product1 for shelf3",
+                                     "Shelf2 should end up with 6 product1 for 2 of them",
+                                     "Shelf2 should end up with 6 product1 for every order",
+                                     "Shelf2 should end up with 6 product1 because you move them"])
+def test_a_purpose_with_a_name_a_count_an_operative_word_or_the_robots_is_never_set_aside(command: str) -> None:
+    try:
+        got = understand(command, PAPER)
+    except TranslationError:
+        return
+    assert not got["order"].get("set_aside")

@@ -112,6 +112,9 @@ ADJUNCTS = frozenset({"for", "before", "after", "by", "until", "till", "once", "
                       "since", "as", "cause", "cos", "coz", "cuz"})
 #: adjunct openings of time: what follows says when ("before the van comes"), its verb describes
 TEMPORAL = frozenset({"before", "after", "until", "till", "when", "once", "while"})
+#: adjunct openings of purpose and reason: what follows says what for ("for the Hadleys order"), and
+#: a word of the grammar in it ("order", "delivery") orders nothing
+PURPOSIVE = frozenset({"for", "because", "cause", "cos", "coz", "cuz"})
 #: the robots, addressed: a clause of time said to them orders the work ("before you move them")
 _YOU = frozenset({"you", "your", "u", "ya", "ye", "yous", "youse"})
 #: words after an adjunct's opening word that point back at the order itself ("for this", "before that")
@@ -127,8 +130,9 @@ def trailing_adjunct(words: list[str], content: Callable[[str], bool],
     (``content``); 0 when there is none. The earliest such opening word is taken (the adjunct may
     hold several: "for pickup before lunch"); the words before it must still carry content.
 
-    A clause of time ("before the van comes", "until we open"): with ``names`` (only names of the
-    world and numbers) its verbs may be words of the grammar ("comes"), since they say when,
+    A clause of time or purpose ("before the van comes", "until we open", "for the Hadleys order"):
+    with ``names`` (only names of the world and numbers) its words may be words of the grammar
+    ("comes", "order"), since they say when or what for,
     unless it is said to the robots or about the order's things ("before you ...", "after it
     ..."). A time of day is a number ("before 2pm", "at nine"): never set aside."""
     for j in range(1, len(words) - 1):
@@ -136,7 +140,7 @@ def trailing_adjunct(words: list[str], content: Callable[[str], bool],
             continue
         rest = words[j + 1:]
         carries = content
-        if words[j] in TEMPORAL and names is not None and not (set(rest) & (OBJECT_PRONOUNS | _YOU)):
+        if words[j] in TEMPORAL | PURPOSIVE and names is not None and not (set(rest) & (OBJECT_PRONOUNS | _YOU)):
             carries = names
         if any(carries(w) or any(ch.isdigit() for ch in w) or (near_operative(w) and w not in ADJUNCTS)
                for w in rest):   # "for 2pm collection": a time is a number, never talk

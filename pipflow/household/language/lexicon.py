@@ -558,7 +558,7 @@ PURPOSES = {("later",), ("tomorrow",), ("the", "morning"), ("the", "weekend"), (
 #: breakfast", "for the little one", "for the kids"): meals, times and people who are no robot
 PURPOSE_WORDS = {"later", "tomorrow", "morning", "weekend", "tonight", "today", "tea", "dinner", "lunch", "supper",
                  "breakfast", "brunch", "guests", "visitors", "party", "kids", "children", "baby", "little", "wee",
-                 "one", "ones", "sandwich", "sandwiches", "school", "work", "bed", "bedtime"}
+                 "one", "ones", "sandwich", "sandwiches"}
 
 #: filler words a misspelling may be read as ("plese"): only these, long and close to no
 #: content word, so that a misspelt content word is never dropped as politeness

@@ -585,8 +585,11 @@ class Lexicon:
             if c in free:
                 continue
             clause = list(c.words[:len(c.words) - thanks] if c is parts[-1] else c.words)
+            # an adjunct of time or purpose may hold words of the grammar, never a word of a name
+            # ("for the dispatch" of dispatch-dock, though "dispatch" is a verb of the grammar too)
             n = trailing_adjunct(clause, lambda w: w in _HELD or (w not in TIMES_OF_DAY and self.content(w)),
-                                 lambda w: w in _HELD or (w not in TIMES_OF_DAY and self.names_world(w)))
+                                 lambda w: w in _HELD or (w not in TIMES_OF_DAY and (
+                                     self.names_world(w) or (w in self._name_words and w not in FUNCTION_WORDS))))
             if n:
                 end = c.start + len(clause)
                 free.append(Clause(end - n, end, tuple(clause[-n:])))
