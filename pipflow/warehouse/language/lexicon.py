@@ -22,7 +22,7 @@ from pipflow.language.characters import refuse_unread
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS
 from pipflow.language.spelling import distance, normalize, plural_forms, slip, tolerance
 from pipflow.warehouse.language.names import KIND_WORDS, POSS_MARK, STOPWORDS, NameIndex, Tok, read_counts, recognize
-from pipflow.warehouse.language.wordorder import left_dislocated, noun_adjuncts
+from pipflow.warehouse.language.wordorder import left_dislocated, noun_adjuncts, numbered_siblings
 
 #: no user writes a longer command; past this the parser would only be asked to burn time
 MAX_COMMAND_CHARS = 4000
@@ -460,6 +460,9 @@ class Lexicon:
                             if len(w) >= 3} | {w for ws in KIND_WORDS.values() for w in ws}
         self._name_words |= {w for ws in self.index.stems.values() for w in ws}
         self.aside: list[str] = []
+        #: numbered places by letters + digits ("dock2" -> dock2, "bay9" of "bay_9" -> bay_9)
+        self._numbered_places = {n.alpha + str(int(n.digits)): n.name for n in self.index.names
+                                 if n.kind == "shelf" and n.digits}
         #: name stems two or more robots share ("tug" of tug1..tug4): groups of the world
         self.robot_stems = {stem for stem in self.index.robot_groups if stem not in KIND_WORDS["robot"]}
 
@@ -620,7 +623,7 @@ class Lexicon:
         (:meth:`content`) is set aside: not returned, its words kept in :attr:`aside`; a sentence
         with some content-free clauses carries its reading without them as ``trimmed``."""
         text = self._joined(check_text(command))
-        toks = noun_adjuncts(recognize(text, self.index))
+        toks = noun_adjuncts(numbered_siblings(recognize(text, self.index), self._numbered_places))
         fixed = []
         for t in toks:
             if t.kind == "word" and not self._known(str(t.value)) and self._group(t.text) is None:

@@ -1,8 +1,11 @@
 """Word order people use that the grammar reads in another order: a place name used as a noun
 adjunct ("the north cave truckles": north cave's truckles), and a topic said first and taken up by
-a pronoun ("The wheels on P, double them"). Each is a rewrite of a sentence's tokens; the second is
+a pronoun ("The wheels on P, double them"), and a numbered place's sibling said by its number
+("between dock 1 and 2"). Each is a rewrite of a sentence's tokens; the second is
 read only where the sentence as said does not parse (``Lexed.dislocated``)."""
 from __future__ import annotations
+
+import re
 
 from pipflow.warehouse.language.names import POSS_MARK, Tok
 
@@ -21,6 +24,33 @@ def noun_adjuncts(toks: list[Tok]) -> list[Tok]:
         out.append(t)
         if t.kind == "name" and t.of == "shelf" and nxt is not None and nxt.kind == "name" and nxt.of == "product":
             out.append(Tok("word", "", POSS_MARK))
+    return out
+
+
+#: what may follow "dock 1 and 2" for the 2 to be dock2: the end of the clause, or words that ask
+#: for a share ("between dock 1 and 2 evenly"); before anything else the number may be a count
+_AFTER_SIBLING = frozenset({"evenly", "equally", "each", "both", "too"})
+
+
+def numbered_siblings(toks: list[Tok], names: dict[str, str]) -> list[Tok]:
+    """A bare number after a numbered place and "and" / "or" / "&" is the sibling place of that
+    number ("between dock 1 and 2" = dock1 and dock2), when the world has it and the number ends
+    the clause (or a share word follows: :data:`_AFTER_SIBLING`); ``names``: a place's
+    letters + digits ("dock2") -> its name. Elsewhere the number stays a count ("4 to dock 1 and 2
+    to dock 2")."""
+    out = list(toks)
+    for k in range(len(out) - 2):
+        place, conj, num = out[k], out[k + 1], out[k + 2]
+        if not (place.kind == "name" and place.of == "shelf" and conj.kind == "word"
+                and conj.value in ("and", "or", "&") and num.kind == "word" and str(num.value).isdigit()):
+            continue
+        nxt = out[k + 3] if k + 3 < len(out) else None
+        if nxt is not None and not (nxt.kind == "punct" or (nxt.kind == "word" and nxt.value in _AFTER_SIBLING)):
+            continue
+        stem = re.sub(r"\d+$", "", re.sub(r"[^a-z0-9]", "", str(place.value).lower()))
+        sibling = names.get(stem + str(int(num.value)))
+        if sibling is not None and stem and stem != str(place.value).lower():
+            out[k + 2] = Tok("name", num.text, sibling, of="shelf")
     return out
 
 
