@@ -25,9 +25,16 @@ def test_bounds_said_plainly(command: str, amount: dict) -> None:
 
 @pytest.mark.parametrize("command", ["Send 5 dye drums, no wait, 3 dye drums from vat east to the finishing table",
                                      "Send 5 dye drums, no wait, 3 from vat east to the finishing table",
-                                     "Send 5 dye drums - no sorry, make that 3 - from vat east to the finishing table"])
+                                     "Send 5 dye drums - no sorry, make that 3 - from vat east to the finishing table",
+                                     "Send 5, no sorry 3, dye drums from vat east to the finishing table"])
 def test_a_count_taken_back_with_its_product_is_the_new_count(command: str) -> None:
     assert translate(command, TANNERY)["goal"] == {"vat_east": {"dye_drum": 1}, "finishing_table": {"dye_drum": 4}}
+
+
+def test_a_count_corrected_before_a_product_with_a_comma_after_is_still_a_count_to_finish() -> None:
+    """"Send 5, no sorry 3, to the table": no product follows the correction, nothing is guessed."""
+    with pytest.raises(TranslationError):
+        translate("Send 5, no sorry 3, to the finishing table", TANNERY)
 
 
 def test_a_correction_that_names_another_product_is_refused() -> None:

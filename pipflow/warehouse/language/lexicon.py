@@ -419,8 +419,11 @@ def corrected(toks: list[Tok]) -> list[Tok]:
             said = toks[j + 1] if j + 1 < len(toks) and toks[j + 1].kind == "name" and toks[j + 1].of == "product" else None
             if took_back and j < len(toks) and toks[j].kind == "num" and not (
                     named is not None and said is not None and said.value != named.value):
-                end = j + 1 if (opened == ":" and j + 1 < len(toks) and toks[j + 1].kind == "punct"
-                                and toks[j + 1].value == ":") else j   # the closing dash goes too
+                closing = j + 1 < len(toks) and toks[j + 1].kind == "punct" and toks[j + 1].value == opened
+                # the closing dash goes too, and a closing comma before the product ("Send 5, no
+                # sorry 4, seed trays from ...": the correction set off on both sides)
+                end = j + 1 if closing and (opened == ":" or (
+                    named is None and j + 2 < len(toks) and toks[j + 2].kind == "name" and toks[j + 2].of == "product")) else j
                 text = " ".join(x.text for x in toks[i:end + 1])
                 out.append(Tok("num", text, toks[j].value))
                 if named is not None and said is None:
