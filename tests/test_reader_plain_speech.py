@@ -162,3 +162,9 @@ def test_while_you_are_at_it_says_nothing_more(command: str) -> None:
 
 def test_a_place_that_could_take_another_n() -> None:
     assert translate("Vat west could take another 2 dye drums", TANNERY)["goal"] == {"vat_west": {"dye_drum": 2}}
+
+
+def test_a_place_brought_to_a_count_without_a_verb() -> None:
+    """"vat west to 3 belt rounds, drying loft to 1": a set, the second with its product elided."""
+    got = translate("vat west to 3 belt rounds, drying loft to 1", TANNERY)
+    assert got["goal"] == {"vat_west": {"belt_round": 3}, "drying_loft": {"belt_round": 1}}

@@ -226,6 +226,8 @@ goal: there_be items loc                                  -> g_set
     | places (":" | ",") inum (lsep inum)*                 -> g_place_inum
     | places modal? setv items "respectively"               -> g_place_set_resp
     | places "to" setv items                                -> g_place_set
+    // "canopy to 8 trays, dock 1 to 4": a place brought to a count, said without a verb
+    | places "to" items                                     -> g_place_set
     | putv items loc                                       -> g_set
     | putv items "each" loc                                -> g_set
     | want places "to"? setv items                          -> g_place_set
