@@ -7,7 +7,10 @@ could, the command is still asked about.
 * a purpose that says what the speaker will do ("... so I can mend it");
 * whom or what a thing is for ("for the little one", "for tea tonight");
 * texting and apostrophe-less spellings ("can u", "theyre", "isnt");
-* "hang on" (wait) is no "hang it on"."""
+* "hang on" (wait) is no "hang it on";
+* what a thing is left somewhere for ("on the settle to dry"), and where the speaker is ("down
+  here": the home);
+* rubbish lying about goes in the home's one bin; food lying about is not thrown out."""
 from __future__ import annotations
 
 import pytest
@@ -21,6 +24,9 @@ CROFT = """
 domain: household
 name: croft
 floor: {width: 6, height: 5}
+categories:
+  litter: {words: [rubbish]}
+  provisions: {words: [food], home: larder}
 places:
   range:   {x: 0.2, y: 4.0, width: 0.8, depth: 0.8, access: [0.6, 3.5], properties: [receptacle, heater, toggleable], state: {on: false}}
   larder:  {x: 4.2, y: 0.2, width: 1.0, depth: 0.5, access: [4.7, 1.0], properties: [receptacle, openable], state: {open: false}}
@@ -30,7 +36,10 @@ places:
 objects:
   stew:    {in: larder, mass: 1, properties: [pickupable, heatable]}
   oatmeal: {in: larder, mass: 1, properties: [pickupable, heatable]}
-  peel:    {in: settle, mass: 1, properties: [pickupable]}
+  peel:    {in: settle, mass: 1, properties: [pickupable], categories: [litter]}
+  wrapper: {in: range, mass: 1, properties: [pickupable], categories: [litter]}
+  bannock: {in: settle, mass: 1, properties: [pickupable], categories: [provisions]}
+  cloth:   {in: settle, mass: 1, properties: [pickupable, washable], state: {dirty: true}}
   net:     {in: settle, mass: 1, properties: [pickupable]}
 robots:
   r1: {start: [1.0, 1.0], skills: {pickup: 1, open: 1, toggle: 1, slice: 1, wash: 1, heat: 1}}
@@ -92,3 +101,29 @@ def test_hang_on_is_a_pause_not_an_order(croft):
     out = translate("Heat the stew - hang on - and bin the peel", croft)
     assert out["goal"]["state"].get("range") is None and out["goal"]["state"]["stew"] == ["hot"]
     assert out["goal"]["in"] == {"creel": ["peel"]}
+
+
+def test_rubbish_lying_about_goes_in_the_one_bin(croft):
+    assert _goal_in("There's rubbish all over the place", croft) == {"creel": ["peel", "wrapper"]}
+
+
+def test_food_lying_about_is_never_thrown_out(croft):
+    try:
+        got = _goal_in("There's food all over the settle", croft)
+    except TranslationError:
+        return
+    assert "creel" not in got
+
+
+def test_what_a_thing_is_left_somewhere_for_is_no_part_of_the_goal(croft):
+    g = translate("Wash the cloth and put it on the settle to dry", croft)["goal"]
+    assert g["in"] == {"settle": ["cloth"]} and g["state"]["cloth"] == ["clean"]
+
+
+def test_down_here_is_where_the_speaker_is(croft):
+    g = translate("Don't leave anything running down here", croft)["goal"]
+    assert g["state"] == {"range": ["off"], "lamp": ["off"]}
+
+
+def _goal_in(command: str, world: dict) -> dict:
+    return {p: sorted(v) for p, v in translate(command, world)["goal"].get("in", {}).items() if v}

@@ -268,6 +268,8 @@ _add("FOULS", ",".join(
      "dirty")
 #: the words that say a rubbish or food thing is for the bin when it is foul
 BIN_KINDS = ("rubbish", "trash", "garbage", "litter", "waste", "junk", "recycling", "food", "leftovers")
+#: the kinds of BIN_KINDS that are never kept: lying about, they go in the bin (food is put away)
+RUBBISH_KINDS = ("rubbish", "trash", "garbage", "litter", "waste", "junk")
 _add("THE", "the,a,an,my,our,your,its,their,his,her,these,those,this,some")
 _add("THE", "a piece of,a bit of,an item of")
 _add("THAT", "that,which,who")
@@ -518,7 +520,10 @@ FILLER |= {tuple(f"{ask} {who}".split()) for ask in ("", "can", "could", "will",
 TIME_WORDS = {("all", "night"), ("all", "day"), ("all", "evening"), ("all", "morning"), ("all", "afternoon"),
               ("all", "week"), ("for", "hours"), ("for", "ages"), ("for", "days"), ("last", "night"),
               ("yesterday",), ("this", "morning"), ("earlier",), ("since", "yesterday"), ("since", "breakfast"),
-              ("since", "lunch"), ("since", "dinner"), ("overnight",)}
+              ("since", "lunch"), ("since", "dinner"), ("overnight",), ("later", "on"),
+              ("from", "last", "night"), ("this", "evening"), ("this", "afternoon"), ("today",),
+              # where the speaker is ("don't leave anything running down here"): the whole home
+              ("down", "here"), ("up", "here")}
 FILLER |= TIME_WORDS
 #: how the steps are to be run, not what the home should end like: a goal is the end state, and
 #: the planner and the allocator decide the order and what runs in parallel. A clause made only of
@@ -559,6 +564,9 @@ PURPOSES = {("later",), ("tomorrow",), ("the", "morning"), ("the", "weekend"), (
 PURPOSE_WORDS = {"later", "tomorrow", "morning", "weekend", "tonight", "today", "tea", "dinner", "lunch", "supper",
                  "breakfast", "brunch", "guests", "visitors", "party", "kids", "children", "baby", "little", "wee",
                  "one", "ones", "sandwich", "sandwiches"}
+
+#: "put it on the worktop to dry": what a thing is left somewhere for, which no robot does
+PURPOSE_INFINITIVES = {"dry", "cool", "air", "soak", "defrost", "thaw", "drain", "rest", "settle"}
 
 #: filler words a misspelling may be read as ("plese"): only these, long and close to no
 #: content word, so that a misspelt content word is never dropped as politeness

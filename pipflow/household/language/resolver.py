@@ -31,7 +31,8 @@ from typing import Callable
 
 from pipflow.errors import Refusal, TranslationError
 from pipflow.household.language.lexicon import (BIN_KINDS, COLD, DEVICE_NOUNS, DEVICES, INDEFINITE, LAUNDRY, LAUNDRY_PLACES, MASS_NOUNS,
-                                                MEALS, OPPOSITE, REACHABLE, VIA_PROPERTY, WINDOWS, plurals, words_of)
+                                                MEALS, OPPOSITE, REACHABLE, RUBBISH_KINDS, VIA_PROPERTY, WINDOWS, plurals,
+                                                words_of)
 from pipflow.household.language.nearness import nearest
 from pipflow.household.language.order import check_order
 from pipflow.household.problem import CONDITIONS
@@ -878,6 +879,14 @@ class Resolver:
             raise _choice(TranslationError(f"'{words}': what should be done with {', '.join(names)}? (nothing of "
                                            f"it is dirty or away from its home; it could be {' or '.join(undo)})"),
                           words, undo)
+        cans = [p for p, e in self.world["places"].items() if "garbage" in e["properties"]]
+        if not away and names and len(cans) == 1 and all(self._rubbish(n) for n in names):
+            # "there's rubbish all over the lounge": rubbish lying about goes in the home's one bin
+            self.goal.notes.append(f"'{words}': rubbish lying about: read as {', '.join(names)} thrown away")
+            for n in names:
+                self.put(n, cans[0], words)
+            self.last = names
+            return
         if not away:
             raise TranslationError(f"'{words}': what should be done with {', '.join(names) or 'it'}? "
                                    "(nothing of it is dirty or away from its home); say what to do")
@@ -986,6 +995,15 @@ class Resolver:
                 self.goal.notes.append(f"'{words}' is the reason for what is done with {', '.join(names)}")
                 continue
             self.tend(st, words)
+
+    def _rubbish(self, name: str) -> bool:
+        """Whether a thing is rubbish: an object that picks up, of a category named or worded as
+        rubbish (``RUBBISH_KINDS``: not food, which may be put away rather than thrown out)."""
+        e = entity(self.world, name)
+        kinds = {" ".join(words_of(w)) for w in RUBBISH_KINDS}
+        return name in self.world["objects"] and "pickupable" in e["properties"] and any(
+            {" ".join(words_of(w)) for w in [c] + list((self.world["categories"].get(c) or {}).get("words") or [])} & kinds
+            for c in e.get("categories") or [])
 
     def _foul(self, names: list[str], words: str) -> None:
         """Foulness said and nothing done about it: a thing that washes is washed; food or rubbish

@@ -5,7 +5,7 @@ cherries"), and "or" under a negation ("nobody is using X or Y"). Each rewrite l
 from __future__ import annotations
 
 from pipflow.household.language.lexicon import (DURATION_HEDGES, DURATION_UNITS, GRADED, HOT_DRINKS, MANNER_OBJECTS, MANNERS, MEALS,
-                                                MEASURES, ORDER_WORDS, ORDINAL_DETERMINERS, PHRASES, PURPOSE_WORDS, PURPOSES,
+                                                MEASURES, ORDER_WORDS, ORDINAL_DETERMINERS, PHRASES, PURPOSE_INFINITIVES, PURPOSE_WORDS, PURPOSES,
                                                 TIME_WORDS)
 from pipflow.household.language.tokens import PUNCT
 from pipflow.language.numbers import read_number
@@ -104,9 +104,13 @@ BENEFICIARY_DETERMINERS = {"the", "my", "our", "your", "his", "her", "their"}
 def _without_purpose(clause: list[str], notes: list[str]) -> list[str]:
     """A clause without its closing purpose ("... for airing", "... for later": lexicon
     ``PURPOSES``, words of ``PURPOSE_WORDS`` after a possessive or none ("for tea tonight", "for
-    the little one"), or "for" + an -ing word that is no verb of the lexicon): what for, not what the
+    the little one"), "for" + an -ing word that is no verb of the lexicon, or "to" + a verb of
+    ``PURPOSE_INFINITIVES``: "to dry"): what for, not what the
     home should end like. "for washing" (a verb the home can do) is kept, and refused: it may ask
     for the washing too."""
+    if len(clause) > 3 and clause[-2] == "to" and clause[-1] in PURPOSE_INFINITIVES:
+        notes.append(f"'to {clause[-1]}' says what for, not what the home should end like")
+        return clause[:-2]
     for n in (1, 2, 3, 4):
         if len(clause) > n + 1 and clause[-n - 1] == "for":
             tail = tuple(clause[-n:])
