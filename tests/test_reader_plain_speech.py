@@ -168,3 +168,18 @@ def test_a_place_brought_to_a_count_without_a_verb() -> None:
     """"vat west to 3 belt rounds, drying loft to 1": a set, the second with its product elided."""
     got = translate("vat west to 3 belt rounds, drying loft to 1", TANNERY)
     assert got["goal"] == {"vat_west": {"belt_round": 3}, "drying_loft": {"belt_round": 1}}
+
+
+@pytest.mark.parametrize("command", ["Need 2 dye drums moving from vat east to the finishing table",
+                                     "We need 2 dye drums taking to the finishing table from vat east"])
+def test_a_move_said_as_a_need(command: str) -> None:
+    assert translate(command, TANNERY)["goal"] == {"vat_east": {"dye_drum": 2}, "finishing_table": {"dye_drum": 3}}
+
+
+def test_sort_it_so_opens_the_order() -> None:
+    assert translate("Sort it so vat west has 3 belt rounds", TANNERY)["goal"] == {"vat_west": {"belt_round": 3}}
+
+
+def test_sort_it_so_with_nothing_after_is_no_order() -> None:
+    with pytest.raises(TranslationError):
+        translate("Sort it so.", TANNERY)

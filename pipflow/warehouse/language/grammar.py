@@ -199,6 +199,7 @@ go: "go" | "goes" | "move" | "moves" | "be" "moved" | "be" "sent" | "be" "taken"
   | "be" "transferred" | "be" "shipped" | "be" "relocated" | "be" "carried" | "be" "delivered"
   | "end" "up" | "travel" | "be" "put" | "moved" | "sent" | "taken" | "brought" | "delivered" | "shifted"
 from: "from" | "out" "of" | "off" | "off" "of"
+moving: "moving" | "moved" | "shifting" | "shifted" | "taking" | "taken" | "bringing" | "brought" | "sending" | "sent"
 to: "to" | "into" | "onto" | "over" "to"
 
 // ---------------------------------------------------------------- goal statements
@@ -337,6 +338,9 @@ goal: there_be items loc                                  -> g_set
     | items ("on" | "in" | "at" | "from") places modal? go to places -> g_transfer
     | items from places modal? go? to places                -> g_transfer
     | items modal? go from places to places                 -> g_transfer
+    // "Need 2 lawn feed moving from dock 1 to dock 2", "we want 3 X taking to P from Q"
+    | (("i" | "we")? ("need" | "want") | "needs" | "wants") items moving from places to places -> g_transfer
+    | (("i" | "we")? ("need" | "want") | "needs" | "wants") items moving to places from places -> g_transfer
     | bare src modal? go to places                          -> g_transfer_src
     | removev items from places                            -> g_remove
     | removev items ("off" | "out")                        -> g_remove_complained

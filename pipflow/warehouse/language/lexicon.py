@@ -207,7 +207,15 @@ REQUEST_FRAMES = (("would", "it", "be", "possible", "to"), ("is", "it", "possibl
                   ("i", "was", "wondering", "if", "you", "could"), ("would", "it", "be", "ok", "to"),
                   # "while you're at it, ...": the order goes on, nothing more is said
                   ("while", "youre", "at", "it"), ("while", "you", "are", "at", "it"), ("while", "ur", "at", "it"),
-                  ("whilst", "youre", "at", "it"), ("whilst", "you", "are", "at", "it"))
+                  ("whilst", "youre", "at", "it"), ("whilst", "you", "are", "at", "it"),
+                  # "sort it so dock 1 has 6 X": the clause after "so" is the order
+                  ("sort", "it", "out", "so", "that"), ("sort", "it", "out", "so"), ("sort", "it", "so", "that"),
+                  ("sort", "it", "so"), ("arrange", "it", "so", "that"), ("arrange", "it", "so"),
+                  ("see", "to", "it", "that"))
+
+
+#: the words of the frames, spelt right ("sort" is no slip of "short")
+FRAME_WORDS = frozenset(w for f in REQUEST_FRAMES for w in f)
 
 
 def without_request_frames(toks: list[Tok]) -> list[Tok]:
@@ -470,7 +478,7 @@ class Lexicon:
         self.robot_stems = {stem for stem in self.index.robot_groups if stem not in KIND_WORDS["robot"]}
 
     def _known(self, word: str) -> bool:
-        return (word in self.keywords or word in FILLERS or word in STOPWORDS
+        return (word in self.keywords or word in FILLERS or word in STOPWORDS or word in FRAME_WORDS
                 or word in NUMBER_WORDS or word in FRACTIONS or word in SUPERLATIVES)
 
     def _keyword_typo(self, word: str) -> str | None:
