@@ -20,7 +20,8 @@ PAPER = yaml.safe_load((ROOT / "benchmarks" / "warehouse" / "world.yaml").read_t
 
 
 @pytest.mark.parametrize("tail", ["tomorrow we wash it with vinegar", "they are ripe now",
-                                  "she makes a strange noise", "we clean it on fridays"])
+                                  "she makes a strange noise", "we clean it on fridays",
+                                  "he's still got a dodgy wheel"])
 def test_a_statement_after_the_order_is_set_aside_and_said(tail: str) -> None:
     got = understand(f"Take 2 product1 off shelf2, {tail}", PAPER)
     assert got["goal"] == {"shelf2": {"product1": 6}}
@@ -28,7 +29,8 @@ def test_a_statement_after_the_order_is_set_aside_and_said(tail: str) -> None:
 
 
 @pytest.mark.parametrize("tail", ["they go to shelf3", "it takes 2 more", "they must not go back",
-                                  "we only want one", "it should be empty after"])
+                                  "we only want one", "it should be empty after", "it has to go back",
+                                  "they've got to be moved"])
 def test_a_statement_with_content_is_never_set_aside(tail: str) -> None:
     try:
         got = understand(f"Take 2 product1 off shelf2, {tail}", PAPER)

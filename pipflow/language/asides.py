@@ -225,7 +225,8 @@ def is_statement(words: Iterable[str], names: Callable[[str], bool]) -> bool:
     any), says what is or will be so; it asks for nothing (an order to the robots is an imperative,
     or is said to "you"). The words of the grammar in it describe ("make", "wash", "keep"). Kept in,
     and read, when it names anything of the world or a number (``names``), holds an operative word,
-    a word of wanting or a modal (:data:`ASKING`: "we want it cleared", "they must go in salt") or a
+    a word of wanting or a modal (:data:`ASKING`: "we want it cleared", "they must go in salt", "it
+    has to go"; "has" and "got" alone say what someone has) or a
     word for robots (:data:`ROBOT_WORDS`: "the strongest robot is busy" is a rule)."""
     ws = [w for w in words if w]
     while ws and ws[0] in WHEN:
@@ -237,7 +238,19 @@ def is_statement(words: Iterable[str], names: Callable[[str], bool]) -> bool:
         w in FINITE or (w.endswith("ing") and len(w) > 4 and ws[0] in DETERMINERS) for w in ws[1:4])
     if not (pronoun or noun):
         return False
-    return not any(near_operative(w) or names(w) or w in ASKING or w in ROBOT_WORDS for w in ws)
+    return not any(near_operative(w) or names(w) or _asks(ws, k) or w in ROBOT_WORDS for k, w in enumerate(ws))
+
+
+#: words of :data:`ASKING` that ask only before "to" ("has to go", "got to have"); elsewhere they
+#: say what someone has ("he's still got a dodgy wheel")
+_HAVING = frozenset({"have", "has", "got"})
+
+
+def _asks(ws: list[str], k: int) -> bool:
+    """Whether the word at ``k`` is a word of wanting or a modal (:data:`ASKING`)."""
+    if ws[k] in _HAVING:
+        return k + 1 < len(ws) and ws[k + 1] == "to"
+    return ws[k] in ASKING
 
 
 def is_report(words: Iterable[str], names: Callable[[str], bool]) -> bool:
