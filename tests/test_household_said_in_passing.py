@@ -127,3 +127,13 @@ def test_down_here_is_where_the_speaker_is(croft):
 
 def _goal_in(command: str, world: dict) -> dict:
     return {p: sorted(v) for p, v in translate(command, world)["goal"].get("in", {}).items() if v}
+
+
+@pytest.mark.parametrize("command", ["Could you get the oatmeal heated?", "Have the oatmeal heated and bin the peel"])
+def test_get_or_have_a_thing_done_to(croft, command):
+    assert translate(command, croft)["goal"]["state"]["oatmeal"] == ["hot"]
+
+
+def test_a_participle_inside_the_phrase_is_no_order(croft):
+    with pytest.raises((TranslationError, Refusal)):
+        translate("Get the heated oatmeal", croft)

@@ -174,6 +174,32 @@ _THROUGH_AFTER = {"warm", "warming", "heat", "heating", "warmed", "heated", "coo
 _ENABLING = {"can", "could", "will", "may"}
 
 
+#: "get the avocado sliced", "have the pans washed": a thing and what should be done to it, said
+#: with "get" / "have" (participle -> the verb of the lexicon that does it)
+CAUSED = {"sliced": "slice", "chopped": "chop", "diced": "dice", "washed": "wash", "cleaned": "clean",
+          "scrubbed": "scrub", "rinsed": "rinse", "heated": "heat", "warmed": "warm", "cooked": "cook",
+          "toasted": "toast"}
+#: what may end the clause of such a participle
+_CLAUSE_ENDS = set(PUNCT) | {"and", "then", "please"}
+
+
+def caused(words: list[str], notes: list[str]) -> list[str]:
+    """ "get the avocado sliced" as "slice the avocado" (:data:`CAUSED`): "get" or "have", then at
+    most five words of no clause mark, then the participle closing the clause. A participle
+    inside the phrase ("get the sliced bread") is no such thing."""
+    out = list(words)
+    for i, w in enumerate(words):
+        if w not in ("get", "have") or (i and words[i - 1] not in _CLAUSE_ENDS | {"you", "u", "someone", "to"}):
+            continue
+        for j in range(i + 2, min(i + 7, len(words))):
+            if words[j] in PUNCT:
+                break
+            if words[j] in CAUSED and (j + 1 == len(words) or words[j + 1] in _CLAUSE_ENDS):
+                notes.append(f"'{w} {' '.join(words[i + 1:j + 1])}' read as '{CAUSED[words[j]]} {' '.join(words[i + 1:j])}'")
+                return out[:i] + [CAUSED[words[j]]] + out[i + 1:j] + caused(out[j + 1:], notes)
+    return out
+
+
 def particles(words: list[str], names_nothing, notes: list[str]) -> list[str]:
     """Particles and small constructions read as the grammar's words (docs/household.md):
     "them both" / "them all" as "both of them" / "all of them"; "through to P" as "to P" (to
