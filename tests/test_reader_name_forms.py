@@ -50,3 +50,22 @@ def test_a_word_sharing_a_names_start_is_offered_as_that_name() -> None:
     with pytest.raises(TranslationError) as err:
         translate("Put 2 belting on the drying loft", TANNERY)
     assert {"drying_loft": {"belt_round": 4}} in [c["goal"] for c in err.value.candidates]
+
+
+def test_an_unknown_word_before_the_last_word_of_one_name_is_offered_as_that_name() -> None:
+    """"the top loft" where the one loft is drying_loft: refused ("top" may name a loft the world
+    has not), with the reading as drying_loft offered first."""
+    with pytest.raises(TranslationError) as err:
+        translate("Move 2 cart wheels from the top loft to the finishing table", TANNERY)
+    offered = err.value.candidates
+    assert offered and offered[0]["goal"] == {"drying_loft": {"cart_wheel": 4}, "finishing_table": {"cart_wheel": 2}}
+    assert "read 'top loft' as 'drying loft'" in offered[0]["reading"]
+
+
+def test_an_unknown_word_before_a_word_two_names_end_with_offers_neither() -> None:
+    # with a hay loft beside the drying loft, "the top loft" may be either: neither is offered as it
+    world = {**TANNERY, "shelves": {**TANNERY["shelves"],
+                                    "hay_loft": {"x": 20, "y": 3, "width": 4, "depth": 2, "capacity": 10, "access": [22, 6]}}}
+    with pytest.raises(TranslationError) as err:
+        translate("Move 2 cart wheels from the top loft to the finishing table", world)
+    assert all("read 'top loft'" not in c["reading"] for c in err.value.candidates)
