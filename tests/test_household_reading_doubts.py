@@ -4,6 +4,8 @@
   skillet is called a pan) says more than one thing is meant; which others is a guess, so it is
   asked. A thing whose own name is plural ("the dominoes"), and food, which is named in the
   plural for one portion ("slice the leeks"), are read as said.
+* A name that opens with "the" ("the side", the settle's word) never takes the words of a longer
+  name ("the side table").
 * A command whose readings all fail, one as impossible and another as not understood ("..., and
   the rocking horse in the toy box": the rocking horse that is in the box, or (put) the rocking
   horse in the box), is asked, never refused as impossible: it is impossible only if the first
@@ -28,7 +30,8 @@ places:
   range:     {x: 0.2, y: 4.0, width: 0.8, depth: 0.8, access: [0.6, 3.5], properties: [receptacle, heater, toggleable], state: {on: false}}
   basin:     {x: 0.2, y: 2.0, width: 0.7, depth: 0.7, access: [1.2, 2.3], properties: [receptacle, sink]}
   dresser:   {x: 0.2, y: 0.2, width: 1.0, depth: 0.5, access: [0.7, 1.0], properties: [receptacle]}
-  settle:    {x: 2.5, y: 2.0, width: 1.2, depth: 0.8, access: [3.1, 1.5], properties: [receptacle], words: [bench]}
+  settle:    {x: 2.5, y: 2.0, width: 1.2, depth: 0.8, access: [3.1, 1.5], properties: [receptacle], words: [bench, the side]}
+  side_table: {x: 1.5, y: 1.0, width: 0.5, depth: 0.5, access: [1.5, 1.6], properties: [receptacle], words: [side table]}
   toy_chest: {x: 4.2, y: 0.2, width: 1.0, depth: 0.5, access: [4.7, 1.0], properties: [receptacle, openable], state: {open: false}, words: [toy box]}
   lamp:      {x: 4.0, y: 2.2, width: 0.2, depth: 0.2, access: [4.3, 1.5], properties: [toggleable], state: {on: true}}
 objects:
@@ -83,3 +86,9 @@ def test_an_impossible_reading_beside_one_not_understood_is_asked(croft):
 def test_a_command_with_only_the_impossible_reading_is_refused_as_impossible(croft):
     with pytest.raises(Refusal, match="nothing of"):
         translate("The skillet in the basin needs washing.", croft)
+
+
+def test_a_name_covering_more_words_wins_over_one_that_opens_with_the(croft):
+    # "the side" is the settle, "side table" the side table: "the side table" is the side table
+    assert _goal("Put the dominoes on the side table", croft)["in"] == {"side_table": ["dominoes"]}
+    assert _goal("Put the dominoes on the side", croft)["in"] == {"settle": ["dominoes"]}

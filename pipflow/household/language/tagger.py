@@ -99,6 +99,9 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
         if nl > 1 and PHRASES[tuple(words[i:i + nl])][0] in HOME_CLASSES and \
                 any(_match(words, j, index, longest_w) for j in range(i + 1, i + nl)):
             nl = 1 if (w,) in PHRASES else 0   # "in the kitchen" where the home has a thing named kitchen
+        if nw > 1 and (w,) in PHRASES and 1 + _match(words, i + 1, index, longest_w) > nw:
+            # "the side table" where "the side" names the worktop: the name that covers more words
+            nw = 0
         if num is not None and num[1] - i >= max(nw, nl, nf):
             out.append(Tag("NUM", num[0], " ".join(words[i:num[1]])))
             i = num[1]
