@@ -137,3 +137,13 @@ def test_get_or_have_a_thing_done_to(croft, command):
 def test_a_participle_inside_the_phrase_is_no_order(croft):
     with pytest.raises((TranslationError, Refusal)):
         translate("Get the heated oatmeal", croft)
+
+
+@pytest.mark.parametrize("command", ["The net needs moving to the bench", "The net wants shifting from the settle to the larder"])
+def test_a_move_said_as_what_a_thing_needs(croft, command):
+    place = "settle" if "bench" in command else "larder"
+    assert translate(command, croft)["goal"]["in"] == {place: ["net"]}
+
+
+def test_a_purpose_before_a_closing_tag(croft):
+    assert translate("Heat the oatmeal for my breakfast would you", croft)["goal"]["state"]["oatmeal"] == ["hot"]

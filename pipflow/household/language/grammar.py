@@ -70,6 +70,7 @@ put: _vput @UP? things source? target? exception?
    | sthings @SHOULD? (@GOES | @BE) target
    | @SHOULD sthings (@GOES | @BE) target
    | _vput @AWAY things target
+   | sthings (@NEED | @WANT) @V_PUT source? target source?
    | @V_LEAVE things target
    | @V_LEAVE things _particle target
    | @V_TIDY @UP? things target

@@ -521,7 +521,8 @@ TIME_WORDS = {("all", "night"), ("all", "day"), ("all", "evening"), ("all", "mor
               ("all", "week"), ("for", "hours"), ("for", "ages"), ("for", "days"), ("last", "night"),
               ("yesterday",), ("this", "morning"), ("earlier",), ("since", "yesterday"), ("since", "breakfast"),
               ("since", "lunch"), ("since", "dinner"), ("overnight",), ("later", "on"),
-              ("from", "last", "night"), ("this", "evening"), ("this", "afternoon"), ("today",),
+              ("from", "last", "night"), ("since", "last", "night"), ("this", "evening"), ("this", "afternoon"),
+              ("today",),
               # where the speaker is ("don't leave anything running down here"): the whole home
               ("down", "here"), ("up", "here")}
 FILLER |= TIME_WORDS
@@ -566,7 +567,7 @@ PURPOSE_WORDS = {"later", "tomorrow", "morning", "weekend", "tonight", "today", 
                  "one", "ones", "sandwich", "sandwiches"}
 
 #: "put it on the worktop to dry": what a thing is left somewhere for, which no robot does
-PURPOSE_INFINITIVES = {"dry", "cool", "air", "soak", "defrost", "thaw", "drain", "rest", "settle"}
+PURPOSE_INFINITIVES = {"dry", "cool", "air", "soak", "defrost", "thaw", "drain", "rest", "settle", "soften"}
 
 #: filler words a misspelling may be read as ("plese"): only these, long and close to no
 #: content word, so that a misspelt content word is never dropped as politeness

@@ -97,6 +97,8 @@ def without_duration(clause: list[str], notes: list[str]) -> list[str]:
     return clause
 
 
+#: a request's closing tag, after which a purpose may still close the clause before it
+CLOSING_TAGS = (("would", "you"), ("will", "you"), ("could", "you"), ("please",), ("thanks",), ("ta",), ("pls",))
 #: whose a purpose is ("for my breakfast", "for the little one")
 BENEFICIARY_DETERMINERS = {"the", "my", "our", "your", "his", "her", "their"}
 
@@ -108,6 +110,9 @@ def _without_purpose(clause: list[str], notes: list[str]) -> list[str]:
     ``PURPOSE_INFINITIVES``: "to dry"): what for, not what the
     home should end like. "for washing" (a verb the home can do) is kept, and refused: it may ask
     for the washing too."""
+    tag = next((len(t) for t in CLOSING_TAGS if tuple(clause[-len(t):]) == t and len(clause) > len(t) + 2), 0)
+    if tag:   # "heat the pasty for my lunch would you": the purpose before a closing tag
+        return _without_purpose(clause[:-tag], notes) + clause[-tag:]
     if len(clause) > 3 and clause[-2] == "to" and clause[-1] in PURPOSE_INFINITIVES:
         notes.append(f"'to {clause[-1]}' says what for, not what the home should end like")
         return clause[:-2]
