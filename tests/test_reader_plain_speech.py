@@ -183,3 +183,22 @@ def test_sort_it_so_opens_the_order() -> None:
 def test_sort_it_so_with_nothing_after_is_no_order() -> None:
     with pytest.raises(TranslationError):
         translate("Sort it so.", TANNERY)
+
+
+@pytest.mark.parametrize("rule", ["Only robots with a cold pass", "Only robots that have a cold pass",
+                                  "Only robots with cold_pass"])
+def test_robots_said_to_carry_a_tag(rule: str) -> None:
+    world = {**TANNERY, "robots": {**TANNERY["robots"],
+                                   "crane": {**TANNERY["robots"]["crane"], "tags": ["cold_pass"]}}}
+    got = translate(f"Move 2 dye drums from vat east to the finishing table. {rule}.", world)
+    assert got["constraints"] == [{"only": ["crane"]}]
+
+
+@pytest.mark.parametrize("command", ["vat west: no belt rounds by end of shift",
+                                     "vat west: no belt rounds by the end of the day please"])
+def test_a_deadline_said_with_by_is_set_aside(command: str) -> None:
+    assert translate(command, TANNERY)["goal"] == {"vat_west": {"belt_round": 0}}
+
+
+def test_by_with_a_count_or_a_fraction_is_read() -> None:
+    assert translate("Cut vat west's belt rounds by a fifth", TANNERY)["goal"] == {"vat_west": {"belt_round": 4}}

@@ -111,7 +111,7 @@ def trailing_thanks(words: list[str], content: Callable[[str], bool]) -> int:
 ADJUNCTS = frozenset({"for", "before", "after", "by", "until", "till", "once", "when", "while", "because",
                       "since", "as", "cause", "cos", "coz", "cuz"})
 #: adjunct openings of time: what follows says when ("before the van comes"), its verb describes
-TEMPORAL = frozenset({"before", "after", "until", "till", "when", "once", "while"})
+TEMPORAL = frozenset({"before", "after", "until", "till", "when", "once", "while", "by"})
 #: adjunct openings of purpose and reason: what follows says what for ("for the Hadleys order"), and
 #: a word of the grammar in it ("order", "delivery") orders nothing
 PURPOSIVE = frozenset({"for", "because", "cause", "cos", "coz", "cuz"})

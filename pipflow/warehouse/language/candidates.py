@@ -45,15 +45,15 @@ def candidates(command: str, world: dict, exc: TranslationError) -> list[dict]:
     # offered, so the search stops there (what it would find later is never offered)
     tries: list[Callable[[], None]] = [
         *(functools.partial(candidate, command, world, pick, out, seen) for pick in picks[:-len(SALVAGE)]),
-        # an unknown word before the last word of one name ("the big rack": high_rack)
-        *(functools.partial(with_choices, with_phrase(command, wrong, right), world, {}, out, seen,
-                            note=f"read '{wrong}' as '{right}'")
-          for wrong, right in (by_head_word(command, word, lexed_command(command, world)[0]) if word else [])),
         # a word no rule places may be a near miss of a word that has a place: the command read
         # with it respelt, once for each near word, the repair said in the echo
         *(functools.partial(with_choices, repaired, world, {}, out, seen, note=f"read '{word}' as '{right}'")
           for right in (near_words(word, lexed_command(command, world)[0]) if word else [])
           for repaired in [with_word(command, word, right)] if repaired is not None),
+        # an unknown word before the last word of one name ("the big rack": high_rack)
+        *(functools.partial(with_choices, with_phrase(command, wrong, right), world, {}, out, seen,
+                            note=f"read '{wrong}' as '{right}'")
+          for wrong, right in (by_head_word(command, word, lexed_command(command, world)[0]) if word else [])),
         *(functools.partial(with_choices, command, world, pick, out, seen) for pick in picks[-len(SALVAGE):]),
     ]
     try:
