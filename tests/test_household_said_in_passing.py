@@ -147,3 +147,14 @@ def test_a_move_said_as_what_a_thing_needs(croft, command):
 
 def test_a_purpose_before_a_closing_tag(croft):
     assert translate("Heat the oatmeal for my breakfast would you", croft)["goal"]["state"]["oatmeal"] == ["hot"]
+
+
+def test_a_thing_put_in_a_heater_to_warm_is_heated(croft):
+    g = translate("Pop the oatmeal on the range to warm through", croft)["goal"]
+    assert g["in"] == {"range": ["oatmeal"]} and g["state"]["oatmeal"] == ["hot"]
+
+
+@pytest.mark.parametrize("command", ["I think I've left the lamp on!", "I left the lamp on"])
+def test_what_the_speaker_left_on_is_switched_off(croft, command):
+    lit = world_from_text(CROFT.replace("state: {on: false}}\nobjects", "state: {on: true}}\nobjects"), "croft.yaml")
+    assert translate(command, lit)["goal"]["state"] == {"lamp": ["off"]}

@@ -144,7 +144,8 @@ _add("CLUTTER", "cluttering up,cluttering,clogging up,taking up room on,taking u
 #: "the table has still got the dirty dishes on it": what a place holds, said as disorder
 _add("HASGOT", "has still got,have still got,still has,still have,still has got,still have got,"
      "still got")
-_add("LEFT", "left,has left,have left,someone has left,somebody has left,someone left,somebody left")
+_add("LEFT", "left,has left,have left,someone has left,somebody has left,someone left,somebody left,"
+     "i have left,i left,we have left,we left,i think i have left,i think i left,i think we have left")
 _add("V_THROW", "throw,toss,chuck")
 _add("V_TRASH", "trash,discard,bin,dump,junk,get rid of,dispose of,throw away,throw out")
 _add("V_TIDY", "tidy,return,clear away")

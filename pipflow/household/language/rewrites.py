@@ -205,6 +205,30 @@ def caused(words: list[str], notes: list[str]) -> list[str]:
     return out
 
 
+#: what a thing is put in a heater for, said as a purpose ("pop it in the microwave to warm through")
+_HEAT_PURPOSES = {"warm", "heat"}
+
+
+def heat_purpose(words: list[str], notes: list[str]) -> list[str]:
+    """ "pop the loaf in the oven to warm (up / through)" as "... and warm it (through)": the
+    purpose is the heating asked for (the thing ends hot), closing a clause that puts it somewhere."""
+    out: list[str] = []
+    k = 0
+    while k < len(words):
+        w = words[k]
+        nxt = words[k + 1] if k + 1 < len(words) else None
+        after = k + 2 + (k + 2 < len(words) and words[k + 2] in ("up", "through"))
+        if w == "to" and nxt in _HEAT_PURPOSES and out and out[-1] not in _CLAUSE_ENDS \
+                and (after >= len(words) or words[after] in _CLAUSE_ENDS):
+            notes.append(f"'to {' '.join(words[k + 1:after])}' read as 'and {nxt} it'")
+            out += ["and", nxt, "it"] + (["through"] if after > k + 2 else [])
+            k = after
+            continue
+        out.append(w)
+        k += 1
+    return out
+
+
 def particles(words: list[str], names_nothing, notes: list[str]) -> list[str]:
     """Particles and small constructions read as the grammar's words (docs/household.md):
     "them both" / "them all" as "both of them" / "all of them"; "through to P" as "to P" (to

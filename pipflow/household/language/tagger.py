@@ -16,7 +16,7 @@ from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
 from pipflow.household.language.names import named_by_first_word, things_of_kind, world_phrases
 from pipflow.household.language.retag import (act_before_noun, demonstratives, elided_it_is, left_lying, located,
                                               restated_order, without_hedges)
-from pipflow.household.language.rewrites import caused, measures, or_under_negation, particles, without_manner
+from pipflow.household.language.rewrites import caused, heat_purpose, measures, or_under_negation, particles, without_manner
 from pipflow.household.language.tokens import PUNCT, Tag
 from pipflow.household.language.typos import (determiner_slip, known_word, meaning_of, transposition_of, typo_of,
                                               vocabulary)
@@ -71,7 +71,7 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
     vocab = vocabulary(index)
     words = or_under_negation(measures(without_manner(colloquial(corrected(words_of(command), notes), notes), notes), index, notes),
                               notes)
-    words = caused(words, notes)
+    words = heat_purpose(caused(words, notes), notes)
     words = named_again(them_as_those(words, index, notes), index, notes)
     words = particles(words, lambda x: x.isalpha() and not known_word(x, index, vocab), notes)
     said = list(words)   # as typed: a repair that still names nothing is quoted as typed
