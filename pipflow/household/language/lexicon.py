@@ -612,6 +612,13 @@ _STATE_WORDS = sorted({w for w in ADJECTIVES} | {"on", "off"}, key=len, reverse=
 MARKS = frozenset("+&.,;:!?'\"()[]-_\u2018\u2019\u201c\u201d\u2010\u2011\u2012\u2013\u2014\u2015\u2026")
 
 
+#: texting and typing without apostrophes ("can u", "theyre", "itll", "isnt", "gonna"), written out
+_TYPED = ((r"\bu\b", "you"), (r"\bur\b", "your"), (r"\b(they|you|we)re\b", r"\1 are"),
+          (r"\b(it|that|there|what)ll\b", r"\1 will"), (r"\b(that|there|what)s\b", r"\1 is"), (r"\bim\b", "i am"),
+          (r"\bive\b", "i have"), (r"\b(is|are|was|were|does|did|has|have|could|would|should)nt\b", r"\1 not"),
+          (r"\bcant\b", "can not"), (r"\bgonna\b", "going to"), (r"\bwanna\b", "want to"), (r"\bgotta\b", "have to"))
+
+
 def normalize(text: str) -> str:
     """Lower case, contractions spelt out ("don't" -> "do not"), hyphens and underscores as
     spaces, so that "desk-lamp", "desk_lamp" and "desk lamp" read alike."""
@@ -640,19 +647,8 @@ def normalize(text: str) -> str:
     t = re.sub(r",?\s*\binnit\b", " ", t)
     t = re.sub(r",?\s*\beh\b(?=\s*(?:[?.!]|$))", " ", t)   # "sort it out, eh?": a tag that asks nothing
     t = re.sub(r"\bye\b", "you", t)   # "could ye ...": the older and dialect "you"
-    # texting and typing without apostrophes: "can u", "theyre", "itll", "isnt", "gonna"
-    t = re.sub(r"\bu\b", "you", t)
-    t = re.sub(r"\bur\b", "your", t)
-    t = re.sub(r"\b(they|you|we)re\b", r"\1 are", t)
-    t = re.sub(r"\b(it|that|there|what)ll\b", r"\1 will", t)
-    t = re.sub(r"\b(that|there|what)s\b", r"\1 is", t)
-    t = re.sub(r"\bim\b", "i am", t)
-    t = re.sub(r"\bive\b", "i have", t)
-    t = re.sub(r"\b(is|are|was|were|does|did|has|have|could|would|should)nt\b", r"\1 not", t)
-    t = re.sub(r"\bcant\b", "can not", t)
-    t = re.sub(r"\bgonna\b", "going to", t)
-    t = re.sub(r"\bwanna\b", "want to", t)
-    t = re.sub(r"\bgotta\b", "have to", t)
+    for typed, written in _TYPED:
+        t = re.sub(typed, written, t)
     t = re.sub(r"'s(?=\s+(?:been|gone|got|become|left)\b)", " has", t)   # "the console's been on"
     t = re.sub(r"'s(?=\s+still\s+(?:been|gone|got)\b)", " has", t)   # "the table's still got ..."
     t = re.sub(r"'s(?=\s+[a-z]{3,}ing\b)", " is", t)   # "the watering can's leaking"

@@ -5,8 +5,8 @@ cherries"), and "or" under a negation ("nobody is using X or Y"). Each rewrite l
 from __future__ import annotations
 
 from pipflow.household.language.lexicon import (DURATION_HEDGES, DURATION_UNITS, GRADED, HOT_DRINKS, MANNER_OBJECTS, MANNERS, MEALS,
-                                                MEASURES, ORDER_WORDS, ORDINAL_DETERMINERS, PHRASES, PURPOSE_INFINITIVES, PURPOSE_WORDS, PURPOSES,
-                                                TIME_WORDS)
+                                                MEASURES, ORDER_WORDS, ORDINAL_DETERMINERS, PHRASES, PURPOSE_INFINITIVES,
+                                                PURPOSE_WORDS, PURPOSES, TIME_WORDS)
 from pipflow.household.language.tokens import PUNCT
 from pipflow.language.numbers import read_number
 

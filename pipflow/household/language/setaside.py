@@ -104,8 +104,8 @@ def without_asides(command: str, world: dict) -> Trimmed | None:
     ("throw the fish away - it smells off - and ..."). A first clause is never a restatement."""
     words = _purposes_apart(words_of(_PARENTHESES.sub(" , ", command)))
     content = _content(world)
-    free = [c for c in clauses(words, CLAUSE_MARKS) if content_free(c.words, content)]
     parts = clauses(words, CLAUSE_MARKS)
+    free = [c for c in parts if content_free(c.words, content)]
     own = [c for c in parts if c not in free and speaker_doing(c.words)]
     known = [(c, restates_location(c.words, [b.words for b in parts[:k]], world)) for k, c in enumerate(parts)
              if k and c not in free and c not in own]
