@@ -486,7 +486,7 @@ class Resolver:
                 self.put(n, homes[0], words)
             self.last = [n for n, _ in named]
         elif op == "trash":
-            cans = [p for p, e in self.world["places"].items() if "garbage" in e["properties"]]
+            cans = self._garbage()
             if len(cans) != 1:
                 raise TranslationError(f"'{words}': the world has {len(cans)} garbage places; say which")
             named = self.objects(st["things"], words, prop="pickupable")
@@ -879,9 +879,12 @@ class Resolver:
             raise _choice(TranslationError(f"'{words}': what should be done with {', '.join(names)}? (nothing of "
                                            f"it is dirty or away from its home; it could be {' or '.join(undo)})"),
                           words, undo)
-        cans = [p for p, e in self.world["places"].items() if "garbage" in e["properties"]]
-        if not away and names and len(cans) == 1 and all(self._rubbish(n) for n in names):
-            # "there's rubbish all over the lounge": rubbish lying about goes in the home's one bin
+        cans = self._garbage()
+        if not away and names and len(cans) == 1 and all(
+                n in self.world["objects"] and "pickupable" in entity(self.world, n)["properties"]
+                and self._of_kinds(n, RUBBISH_KINDS) for n in names):
+            # "there's rubbish all over the lounge": rubbish lying about (an object that picks up, of
+            # a category of RUBBISH_KINDS: never food, which may be put away) goes in the one bin
             self.goal.notes.append(f"'{words}': rubbish lying about: read as {', '.join(names)} thrown away")
             for n in names:
                 self.put(n, cans[0], words)
@@ -996,25 +999,24 @@ class Resolver:
                 continue
             self.tend(st, words)
 
-    def _rubbish(self, name: str) -> bool:
-        """Whether a thing is rubbish: an object that picks up, of a category named or worded as
-        rubbish (``RUBBISH_KINDS``: not food, which may be put away rather than thrown out)."""
-        e = entity(self.world, name)
-        kinds = {" ".join(words_of(w)) for w in RUBBISH_KINDS}
-        return name in self.world["objects"] and "pickupable" in e["properties"] and any(
-            {" ".join(words_of(w)) for w in [c] + list((self.world["categories"].get(c) or {}).get("words") or [])} & kinds
-            for c in e.get("categories") or [])
+    def _garbage(self) -> list[str]:
+        """The home's garbage places (the bin a thing thrown away goes in)."""
+        return [p for p, e in self.world["places"].items() if "garbage" in e["properties"]]
+
+    def _of_kinds(self, name: str, kinds: tuple[str, ...]) -> bool:
+        """Whether a thing is of a category named or worded as one of ``kinds`` ("rubbish", "food")."""
+        said = {" ".join(words_of(w)) for w in kinds}
+        return any({" ".join(words_of(w)) for w in [c] + list((self.world["categories"].get(c) or {}).get("words") or [])}
+                   & said for c in entity(self.world, name).get("categories") or [])
 
     def _foul(self, names: list[str], words: str) -> None:
         """Foulness said and nothing done about it: a thing that washes is washed; food or rubbish
         (a category named or worded like ``BIN_KINDS``) goes in the home's one bin; anything else
         is asked."""
-        kinds = {" ".join(words_of(w)) for w in BIN_KINDS}
-        cans = [p for p, e in self.world["places"].items() if "garbage" in e["properties"]]
+        cans = self._garbage()
         for n in names:
             cats = entity(self.world, n).get("categories") or []
-            binned = any({" ".join(words_of(w)) for w in [c] + list((self.world["categories"].get(c) or {}).get("words")
-                                                                       or [])} & kinds for c in cats)
+            binned = self._of_kinds(n, BIN_KINDS)
             if applies(self.world, n, "clean"):
                 self.goal.notes.append(f"'{words}': foul, and it washes: read as {n} washed (docs/household.md, cues)")
                 self.want(n, "clean", True, words)

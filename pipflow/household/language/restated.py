@@ -54,7 +54,7 @@ def restates_location(clause: tuple[str, ...], before: list[tuple[str, ...]], wo
     if not be:
         return None
     subject, rest = clause[:be], list(clause[be + 1:])
-    while len(rest) > 1 and rest[0] in STILL and rest[1] not in DETERMINERS | {"the"}:
+    while len(rest) > 1 and rest[0] in STILL and rest[1] not in DETERMINERS:
         rest = rest[1:]
     if len(rest) < 2 or rest[0] not in AT:
         return None
