@@ -54,6 +54,33 @@ def interrupt_signals() -> Iterator[None]:
             signal.signal(signum, previous)
 
 
+@contextlib.contextmanager
+def held() -> Iterator[None]:
+    """Within the block, Ctrl-C, SIGTERM and SIGHUP wait: one that arrives is raised as the block
+    ends, as it would have been raised inside it.
+
+    Why: some work must be done whole or not at all. A bench moves a finished run's record into
+    ``records/`` and then writes the row that refers to it; an interrupt between the two left a
+    record no row named, and ``--resume`` ran that task again beside it. Only signals that raise
+    (a Python handler) are held; an ignored one, or one with its default action, is left alone."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    arrived: list[int] = []
+    previous = {}
+    for signum in (signal.SIGINT, *SIGNALS):
+        handler = signal.getsignal(signum)
+        if callable(handler):
+            previous[signum] = signal.signal(signum, lambda n, _frame: arrived.append(n))
+    try:
+        yield
+    finally:
+        for signum, handler in previous.items():
+            signal.signal(signum, handler)
+    if arrived:
+        previous[arrived[0]](arrived[0], None)
+
+
 def exit_code(err: KeyboardInterrupt) -> int:
     """130 for Ctrl-C, 128 + N for signal N."""
     return 128 + (err.signum if isinstance(err, Interrupted) else int(signal.SIGINT))

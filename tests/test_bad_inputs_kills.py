@@ -291,3 +291,46 @@ def test_an_interrupt_that_lands_while_a_record_folder_is_opened_is_the_interrup
     monkeypatch.undo()
     assert landed  # the interrupt did land inside the walk
     assert write_file(tmp_path / "run" / "steps" / "spin" / "outputs.json", b"{}", root=tmp_path).read_bytes() == b"{}"
+
+
+@pytest.mark.parametrize("signum", [signal.SIGTERM, signal.SIGINT])
+def test_a_signal_inside_held_work_waits_for_its_end(signum):
+    """Work inside ``held()`` is done whole: the signal is raised as the block ends, as the same
+    interrupt it would have been inside it."""
+    from pipflow.engine.interrupts import Interrupted, held, interrupt_signals
+
+    done: list[str] = []
+    with pytest.raises(KeyboardInterrupt) as caught:
+        with interrupt_signals():
+            with held():
+                os.kill(os.getpid(), signum)
+                time.sleep(0.05)  # Python runs the handler between bytecodes: here, if it were not held
+                done.append("after the signal")
+            done.append("after the block")
+    assert done == ["after the signal"]
+    assert isinstance(caught.value, Interrupted) == (signum == signal.SIGTERM)
+
+
+def test_an_interrupt_between_a_records_move_and_its_row_keeps_both(tmp_path, monkeypatch):
+    """Seen in CI under load: SIGTERM landed after a finished run's record had moved to
+    ``records/`` and before its row was written, so ``--resume`` ran the task again and left a
+    record that no row named. The move and the row are now one step an interrupt waits for."""
+    from pipflow.engine.interrupts import interrupt_signals
+    from pipflow.experiments import benchmarking
+
+    monkeypatch.setenv("PIPFLOW_CACHE_DIR", str(tmp_path / "c"))
+    real_move = benchmarking._finished_record
+
+    def move_then_signal(out: Path, row: dict) -> None:
+        real_move(out, row)
+        os.kill(os.getpid(), signal.SIGTERM)
+        time.sleep(0.05)
+
+    monkeypatch.setattr(benchmarking, "_finished_record", move_then_signal)
+    out = tmp_path / "out"
+    config = benchmarking.BenchConfig(tasks_file=tasks_with_ids(tmp_path, ["a", "b"]), out=out)
+    with pytest.raises(KeyboardInterrupt), interrupt_signals():
+        benchmarking.run_bench(config, progress=False)
+    rows = [json.loads(p.read_text()) for p in rows_of(out)]
+    assert len(rows) == 1
+    assert [Path(r["run_dir"]).name for r in rows] == [p.name for p in (out / "records").iterdir()]

@@ -41,7 +41,7 @@ from pathlib import Path
 from typing import Any
 
 from pipflow.engine.cliargs import key_values
-from pipflow.engine.interrupts import interrupt_signals
+from pipflow.engine.interrupts import held, interrupt_signals
 from pipflow.engine.locks import FolderLock, writer_alive
 from pipflow.engine.progress import CountProgress
 from pipflow.engine.registry import default_registry
@@ -462,8 +462,9 @@ def _execute(backend, todo: list[RunSpec], done: dict, out: Path, progress: bool
             done[key] = row
             if row.get("status") != "lost":  # a backend failure is not stored: --resume reruns it
                 try:
-                    _finished_record(out, row)
-                    write_json(row_path(out, key), row, root=out)
+                    with held():  # the record moves and its row is written, or neither (an interrupt waits)
+                        _finished_record(out, row)
+                        write_json(row_path(out, key), row, root=out)
                 except DiskError as err:
                     raise DiskError(f"{err}; the bench stopped (the rows stored before are kept: `pipflow bench ... "
                                     f"--out {out} --resume` continues once there is space)", err.path, err.errno) from None
