@@ -93,3 +93,43 @@ def slip(word: str, target: str) -> bool:
         return False
     short, long_ = (a, b) if len(a) < len(b) else (b, a)
     return any(long_[:k] + long_[k + 1:] == short for k in range(len(long_)))
+
+
+#: one English word with two accepted spellings (British and American, or old and new), where no
+#: rule of endings covers the pair; each pair is the same word, never two words that look alike
+_SPELLING_PAIRS = (("despatch", "dispatch"), ("grey", "gray"), ("tyre", "tire"), ("kerb", "curb"),
+                   ("aluminium", "aluminum"), ("programme", "program"), ("plough", "plow"),
+                   ("mould", "mold"), ("doughnut", "donut"), ("pyjamas", "pajamas"),
+                   ("jewellery", "jewelry"), ("manoeuvre", "maneuver"), ("sceptic", "skeptic"),
+                   ("moustache", "mustache"), ("cosy", "cozy"), ("storey", "story"), ("sulphur", "sulfur"),
+                   ("yoghurt", "yogurt"), ("yoghourt", "yogurt"), ("whisky", "whiskey"), ("axe", "ax"),
+                   ("pallette", "pallet"), ("licence", "license"), ("defence", "defense"))
+_OTHER: dict[str, set[str]] = {}
+for _a, _b in _SPELLING_PAIRS:
+    _OTHER.setdefault(_a, set()).add(_b)
+    _OTHER.setdefault(_b, set()).add(_a)
+
+#: endings spelt two ways (British, American): "colour", "centre", "organise", "catalogue",
+#: "travelled"; only after enough letters that the ending is a suffix ("four", "acre", "rise" are not)
+_ENDINGS = ((r"(?<=[a-z]{2})our$", "or"), (r"(?<=[a-z]{2}[^aeiou])re$", "er"), (r"(?<=[a-z]{3})ise$", "ize"),
+            (r"(?<=[a-z]{3})isation$", "ization"), (r"(?<=[a-z]{3})yse$", "yze"), (r"(?<=[a-z]{3})ogue$", "og"),
+            (r"(?<=[a-z]{3}[aeiou])lled$", "led"), (r"(?<=[a-z]{3}[aeiou])lling$", "ling"))
+
+
+def other_spellings(word: str) -> set[str]:
+    """The other accepted spellings of an English word ("despatch" -> "dispatch", "colour" ->
+    "color", "center" -> "centre"): the same word, so a name spelt one way is the name spelt the
+    other. Why not typo tolerance: the other spelling is often a word of its own ("dispatch" is a
+    verb too), and a real word is never repaired into a name; a spelling is no repair."""
+    word = word.lower()
+    out = set(_OTHER.get(word, ()))
+    for british, american in _ENDINGS:
+        if re.search(british, word):
+            out.add(re.sub(british, american, word))
+        back = british.replace("$", "").split(")")[-1]
+        if word.endswith(american) and len(word) >= len(american) + 3:
+            candidate = word[: -len(american)] + back
+            if re.search(british, candidate):
+                out.add(candidate)
+    out.discard(word)
+    return out

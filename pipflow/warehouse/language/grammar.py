@@ -146,8 +146,8 @@ place: PLACE                                -> place_name
      | PLACEWORD                            -> place_word
      | ("it" | "there")                     -> place_it
      | PLACE PLACEWORD                      -> place_name
-     | ("every" | "each" | "all") (PLACEWORD | "place" | "places") within?  -> place_all
-     | ("every" | "each" | "all") (PLACEWORD | "place" | "places") except_pl -> place_all
+     | ("every" | "each" | "all") (PLACEWORD | PLACE_VERB | "places") within?  -> place_all
+     | ("every" | "each" | "all") (PLACEWORD | PLACE_VERB | "places") except_pl -> place_all
      | "all" "of" "them"                    -> place_all
      | "all" NUM (PLACEWORD | "places")     -> place_all_n
      | "each" "of" place (lsep place)*       -> place_each
@@ -174,7 +174,7 @@ setv: "has" "got" | "have" "got" | "has" | "have" | "hold" | "holds" | "store" |
     | ("end" | "ends" | "finish" | "finishes") "shift" "with"
     | "be" "filled" "with" | "be" "loaded" "with" | "hold" "onto" | "be" "holding" | "is" "holding"
     | "end" "with" | "want" | "wants" | "be" "left" "with" | "be" "at" | "is" "at" | "are" "at"
-putv: "put" | "place" | "store" | "stock" | "set" | "leave" | "get" | "keep" | "park"
+putv: "put" | PLACE_VERB | "store" | "stock" | "set" | "leave" | "get" | "keep" | "park"
     | "make" "sure" "there" ("is" | "are") | "ensure" "there" ("is" | "are")
 addv: "add" | "bring" | "deliver" | "send" | "ship" | "move" | "transfer" | "carry" | "shift" | "throw" | "toss"
     | "load" | "drop" | "stick" | "pop" | "stack"
@@ -538,7 +538,7 @@ use: "use" | "used" | "using" | "employ" | "employed" | "assign" | "assigned" | 
    | "work" | "help" | "be" "used" | "be" "involved" | "be" "employed" | "be" "assigned" | "participate"
 act: "move" | "moves" | "carry" | "carries" | "touch" | "touches" | "take" | "takes" | "deliver" | "send" | "sends"
    | "delivers" | "handle" | "handles" | "bring" | "brings" | "transport" | "transports" | "ship"
-   | "put" | "place" | "load" | "unload" | "work" "on" | "pick" "up" | "fetch" | "help" "with"
+   | "put" | PLACE_VERB | "load" | "unload" | "work" "on" | "pick" "up" | "fetch" | "help" "with"
    | "be" "used" "to" act | "be" "used" "for" | use "to" act | "go" | "drive" | "serve" | "supply"
    | "stock" | "restock" | "remove"
 useact: use | act
@@ -647,6 +647,10 @@ scoped_goal: ("using" | "with" | "by") ("only" | "just")? robots ","? goal    ->
            | goal ("using" | "with" | "by") robots ("only" | "alone")             -> scoped_only_after
            | goal ("without" ("using" | "help" "of")? | "but" "not" "with" | "not" "using") robots -> scoped_never_after
 
+// the word "place" has a terminal of its own: written as a string it would be named PLACE by lark,
+// the terminal of a world's place, and any place's name would then read as the verb ("shelf1 4
+// product1 to shelf2" as "place 4 product1 to shelf2", the first place dropped)
+PLACE_VERB: "place"
 %declare NUM ITEM ITEMWORD PLACE PLACEWORD ROBOT ROBOTWORD RKIND RTAG SKILL SUPER FRAC POSS UNKNOWN
 """
 

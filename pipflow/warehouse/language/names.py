@@ -17,7 +17,8 @@ from typing import Callable
 
 from pipflow.errors import TranslationError
 from pipflow.language.numbers import NUMBER_WORDS, read_number, word_value
-from pipflow.language.spelling import distance, normalize, plural_forms, split_digits, tolerance, variants
+from pipflow.language.spelling import (distance, normalize, other_spellings, plural_forms, split_digits, tolerance,
+                                      variants)
 
 #: the possessive "'s" as the lexer marks it ("rack A's" -> "rack A zzposs")
 POSS_MARK = "zzposs"
@@ -246,7 +247,8 @@ def _contents(names: list["_Name"]) -> dict[str, "_Name | None"]:
 #: the two ("from dispatch to intake", "in dispatch."), never before a count ("to dispatch 3 X")
 PLACE_PREPOSITIONS = {"to", "into", "onto", "in", "on", "at", "from", "off", "inside"}
 AFTER_A_PLACE = {"to", "into", "onto", "from", "and", "or", "but", "please", "though", "then", "now",
-                 "too", "by", "for", "today", "tonight", "first", "asap", "instead"}
+                 "too", "by", "for", "today", "tonight", "first", "asap", "instead", "except", "using", "only",
+                 "as", "so", "because", "before", "after", "until", "while", "when", "if", "unless"}
 #: words after which such a word is a place as the subject ("dispatch should have 5 X", "...
 #: and dispatch wants 3 more"): a verb of the grammar is never followed by one of them
 PLACE_SUBJECT_VERBS = {"should", "shouldnt", "needs", "wants", "has", "hasnt", "is", "isnt", "must",
@@ -265,6 +267,18 @@ def _verb_places(names: list["_Name"], reserved: set[str]) -> dict[str, "_Name"]
     return {w: ns[0] for w, ns in owners.items()
             if w in reserved and len(w) >= 4 and len(ns) == 1 and ns[0].kind == "shelf"
             and len([x for x in re.split(r"[-_\s]+", ns[0].name) if x]) >= 2}
+
+
+def _spelt_otherwise(n: "_Name") -> set[str]:
+    """The normal forms of a name with one of its words in another accepted spelling, and their
+    plurals ("despatch" -> "dispatch", "dispatches")."""
+    words = [w for w in re.split(r"[-_\s]+", n.name.lower()) if w]
+    out: set[str] = set()
+    for k, word in enumerate(words):
+        for other in other_spellings(word):
+            form = normalize("".join(words[:k] + [other] + words[k + 1:]))
+            out |= {form, *plural_forms(form)}
+    return out
 
 
 class NameIndex:
@@ -291,6 +305,17 @@ class NameIndex:
                         self.forms[form] = None  # two names share this plural: neither gets it
                     continue
                 self.forms[form] = n
+        # a name spelt the other accepted way ("dispatch" for despatch, "tire bay" for tyre_bay) is
+        # that name, as its own spelling is (spelling.other_spellings); never one another name has
+        # (a word of the grammar spelt so, "dispatch" the verb, is that place only where a place
+        # stands, as a verb in a place's name is: verb_places)
+        taken = set(self.forms)
+        spelt_as_verbs: dict[str, _Name | None] = {}
+        for n in self.names:
+            for form in _spelt_otherwise(n):
+                into = spelt_as_verbs if form in self.reserved else self.forms
+                if form not in taken:
+                    into[form] = None if form in into and into[form] is not n else n
         # Stems the world's own names share ("bin" of bin7) forgive misspellings; the English
         # kind words must be spelled right, or "gets" would pass for a misspelt "agents".
         # A stem must be a real word: "a" of A1 or "r" of r7 would turn the article "a" or a
@@ -335,6 +360,8 @@ class NameIndex:
         self.prefixes = _starts(self.names, by_name, alone, owners)
         self.contents = _contents(self.names)
         self.verb_places = _verb_places(self.names, self.reserved)
+        self.verb_places.update({w: n for w, n in spelt_as_verbs.items()
+                                 if n is not None and n.kind == "shelf" and w not in self.verb_places})
 
     def group(self, word: str) -> list[str] | None:
         """The places a plural or class word selects ("cages" -> the places whose head is cage).
