@@ -102,7 +102,7 @@ def test_goal_constructions(command: str, goal: dict) -> None:
 
 @pytest.mark.parametrize("command,goal,rules", [
     ("Take 3 product1 from shelf1. Put them on shelf2.", {"shelf1": {"product1": 7}, "shelf2": {"product1": 11}}, []),
-    ("Shelf 2 needs 4 product3. Shelf 4 too.", {"shelf2": {"product3": 4}, "shelf4": {"product3": 4}}, []),
+    ("Shelf 2 should have 4 product3. Shelf 4 too.", {"shelf2": {"product3": 4}, "shelf4": {"product3": 4}}, []),
     ("Empty shelf3. Robot 4 should do it.", {"shelf3": {"product1": 0, "product2": 0, "product3": 0, "product4": 0}},
      [{"only": ["robot4"], "from": "shelf3"}]),
 ])

@@ -89,15 +89,28 @@ ADDRESSEES = frozenset({"all", "everyone", "everybody", "team", "folks", "guys",
 
 #: a thanks that can close an order without a comma before it ("... to bay 2 ta")
 THANKS = frozenset({"thanks", "ta", "cheers", "thx", "ty", "tyvm", "thankyou"})
+#: who an order is said to, or a tag that closes it, without a comma before it ("... on dispatch
+#: please mate", "... forklifts only mind", "... thanks lads"): never a word that is operative
+CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "boss", "love", "pet", "hun",
+                     "mind", "yeah", "eh", "cheers", "ta", "thanks", "thx", "ty", "tyvm", "thankyou"})
 
 
 def trailing_thanks(words: list[str], content: Callable[[str], bool]) -> int:
-    """How many words at the end of a clause are a thanks said without a comma ("... to bay 2
-    ta", "... thank you"): they are set aside like a thanks set off by one. 0 when there is none,
-    when the thanks is the whole clause (then the clause itself is talk), or when its word
-    carries content in this domain (a name that happens to be "ta")."""
-    k = 2 if words[-2:] == ["thank", "you"] else 1 if words and words[-1] in THANKS else 0
-    if k == 0 or k >= len(words) or any(content(w) for w in words[-k:]):
+    """How many words at the end of a clause are a thanks or a closing word said without a comma
+    ("... to bay 2 ta", "... thank you", "... please mate", "... only mind"): they are set aside
+    like a thanks set off by one. 0 when there is none, when it is the whole clause (then the
+    clause itself is talk), or when a word of it carries content in this domain (a name that
+    happens to be "ta") or is operative."""
+    k = 0
+    while k < len(words):
+        if words[len(words) - k - 2:len(words) - k] == ["thank", "you"] and k + 2 <= len(words):
+            k += 2
+        elif words[len(words) - k - 1] in CLOSERS:
+            k += 1
+        else:
+            break
+    if k == 0 or k >= len(words) or any(content(w) or (w not in THANKS and w not in ("thank", "you")
+                                                       and near_operative(w)) for w in words[-k:]):
         return 0
     return k
 
@@ -274,6 +287,32 @@ def is_report(words: Iterable[str], names: Callable[[str], bool]) -> bool:
     if not has_be or not any(w.endswith("ing") and len(w) > 4 for w in head[1:5]):
         return False
     return not any(near_operative(w) or names(w) for w in ws)
+
+
+#: words that open a statement said after an order without a comma between them ("... its
+#: starting to bow", "... hes got a flat tyre", "... his forks are playing up", "... theres
+#: customers about"): a subject pronoun (not "it", which is an object as often) or a possessive
+STATEMENT_OPENERS = frozenset((SUBJECTS | _SUBJECT_BE | {"his", "her", "their", "our", "my"}) - {"it", "there"})
+
+
+def unmarked_statement(words: list[str], names: Callable[[str], bool]) -> int:
+    """How many words at the end of a clause are a statement run on without a comma, as people
+    dictating or typing fast do ("take 2 slabs off the a frame theyre sticking out into the
+    aisle"): the longest tail that opens with a :data:`STATEMENT_OPENERS` word after at least two
+    words of the order and is a report or a statement (:func:`is_report`: no name, number,
+    operative word or word of wanting in it). 0 when there is none."""
+    for k in range(2, len(words) - 1):
+        if words[k] in STATEMENT_OPENERS and (is_report(words[k:], names) or _existential(words[k:], names)):
+            return len(words) - k
+    return 0
+
+
+def _existential(ws: list[str], names: Callable[[str], bool]) -> bool:
+    """ "theres customers about", "there are lads working": what there is, with no name, number,
+    operative word or word of wanting in it."""
+    if not (ws[0] == "theres" or ws[:2] in (["there", "is"], ["there", "are"], ["there", "s"])):
+        return False
+    return not any(near_operative(w) or names(w) or _asks(ws, k) or w in ROBOT_WORDS for k, w in enumerate(ws))
 
 
 #: clauses that open a request and say nothing else ("Quick one: ...", "Right then, ...", "Whatever

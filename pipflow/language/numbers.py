@@ -30,6 +30,8 @@ ADDITIVE = {"plus": 1, "minus": -1}
 #: the most words one count may span ("two thousand three hundred and forty five plus ...")
 WINDOW = 24
 MULTIPLICATIVE = {"times", "multiplied", "divided"}
+#: "3 lots of 5", "two batches of six": N groups of M is N times M (read only when M is a count)
+GROUPS_OF = frozenset({"lots", "batches", "sets"})
 
 NUMBER_WORDS = set(UNITS) | set(TENS) | set(SCALES) | set(COLLECTIVES) | set(ADDITIVE) | {
     "times", "multiplied", "divided", "half", "dozens", "pairs", "couples", "trios", "quartets",
@@ -184,6 +186,8 @@ def read_number(words: Sequence[str | None], start: int) -> tuple[int, int] | No
             op, nxt = w, k + 1
         elif w == "times":
             op, nxt = "times", k + 1
+        elif w in GROUPS_OF and p.get(k + 1) == "of":   # "3 lots of 5": a product, when a count follows
+            op, nxt = "times", k + 2
         elif w in ("multiplied", "divided") and p.get(k + 1) == "by":
             op, nxt = w, k + 2
         else:

@@ -125,6 +125,7 @@ meal: (@V_MAKE | @V_PREPARE | _vstate) @THE? @MEAL _here?
     | @SUBJ? (@WANT | @NEED) @THE? @MEAL
 
 observe: sthings @IS state _here?
+       | sthings _here @IS state
        | sthings @FOULS //+ FOULS
 
 cue: @NOBODY @IS? activity (@TO | @ON | @AT)? things? @ANYMORE?

@@ -167,6 +167,11 @@ _add("V_TEND", "deal with,see to,take care of,sort,sort out,handle,attend to,do 
 #: that they need what "deal with" reads
 _add("MESS", "all over the place,piling up,piled up,lying around,lying about,left out,scattered about,"
      "scattered around,strewn about,strewn around,a mess,in a mess,messy,a tip")
+#: "an absolute tip", "a right state", "a bit of a pigsty": a word for disorder, as strong as said
+_add("MESS", ",".join(f"{article} {strength}{noun}" for noun in ("tip", "mess", "pigsty", "bombsite", "state", "shambles")
+                      for article, strength in (("a", ""), ("a", "complete "), ("a", "total "), ("a", "right "),
+                                                ("a", "proper "), ("a", "real "), ("an", "absolute "),
+                                                ("a", "bit of a "), ("in", "a "))))
 for _w in LIGHT_CUES:
     PHRASES[tuple(_w.split())] = ("LIGHTCUE", LIGHT_CUES[_w])
 _add("SEE", "see,read,see anything,read anything")
@@ -422,7 +427,9 @@ ROOM_WORDS = ("room", "lounge", "living room", "sitting room", "bedroom", "kitch
               "utility", "porch", "landing", "attic", "cellar", "basement", "garage", "nursery", "playroom", "den",
               "snug", "parlour", "front room", "back room", "spare room", "box room", "games room", "kitchenette",
               "lobby", "cloakroom", "laundry room", "scullery", "pantry")
-_add("HERE", "here,in here,over here,over there," + ",".join(f"in the {h},around the {h}" for h in HOME_WORDS))
+_add("HERE", "here,in here,over here,over there," + ",".join(f"in the {h},around the {h}" for h in HOME_WORDS)
+     + "," + ",".join(f"{at} {whose} {h}" for h in HOME_WORDS + ("place",) for at in ("in", "around")
+                      for whose in ("this", "my", "our")))
 _add("ROOMSAID", ",".join(f"the {r},my {r},our {r}" for r in ROOM_WORDS))
 _add("INROOM", ",".join(f"in the {r},in {r}" for r in ROOM_WORDS) + ",at home,home")
 #: a room said with a particle of where ("out in the conservatory", "over in the study", "up in the
@@ -511,6 +518,10 @@ PRAISED = ("girl", "boy", "lad", "lass", "lassie", "laddie")
 FILLER |= {("there", "is", "a", w) for w in ENDEARMENTS} | {("there", "is", "my", w) for w in ENDEARMENTS} \
     | {("there", "is", "a", "good", w) for w in PRAISED} | {("good", w) for w in PRAISED} \
     | {("mind", "you"), ("mind", "and"), ("make", "sure", "you")}
+#: thanks said to the ones asked ("Thanks loves", "cheers pets", "ta darling") and the kisses that
+#: sign a message off ("... in my bed x", "xx"): said to the robots, they carry nothing
+FILLER |= {(thanks, w) for thanks in ("thanks", "cheers", "ta") for e in ENDEARMENTS for w in (e, e + "s")} \
+    | {("thank", "you", w) for e in ENDEARMENTS for w in (e, e + "s")} | {("x",), ("xx",), ("xxx",)}
 #: who of the team is asked ("can one of you open the larder, and someone else light the fire",
 #: "two of you lift the sack"): who does a step is the plan's choice, so the words are framing,
 #: like "someone" above; a thing lifted by two is the team's way of working, not an end state
@@ -649,7 +660,13 @@ def normalize(text: str) -> str:
     t = re.sub(r"\bye\b", "you", t)   # "could ye ...": the older and dialect "you"
     for typed, written in _TYPED:
         t = re.sub(typed, written, t)
+    # "its freezing in here", "its a tip": "it's" typed without its apostrophe, where a clause opens
+    # and a word that never follows the possessive comes next ("its lid" stays a possessive)
+    t = re.sub(r"(^|[.,;!?]\s*|\b(?:and|but|so|cos|because)\s+)its(?=\s+(?:so|too|very|really|quite|a|an|getting|"
+               r"gone|been|still|not|[a-z]+ing|[a-z]+ed|" + "|".join(_STATE_WORDS) + r")\b)", r"\1it is", t)
     t = re.sub(r"'s(?=\s+(?:been|gone|got|become|left)\b)", " has", t)   # "the console's been on"
+    # "the pan's still sat on the stove", "the mug's in the sink": where a thing is, "is"
+    t = re.sub(r"'s(?=\s+(?:still\s+|just\s+|already\s+)?(?:sat|sitting|lying|stood|standing|in|on|inside)\s)", " is", t)
     t = re.sub(r"'s(?=\s+still\s+(?:been|gone|got)\b)", " has", t)   # "the table's still got ..."
     t = re.sub(r"'s(?=\s+[a-z]{3,}ing\b)", " is", t)   # "the watering can's leaking"
     t = re.sub(r"\b(i|we|you)'d\b", r"\1 would", t)

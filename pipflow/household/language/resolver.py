@@ -30,9 +30,9 @@ from dataclasses import dataclass, field
 from typing import Callable
 
 from pipflow.errors import Refusal, TranslationError
-from pipflow.household.language.lexicon import (BIN_KINDS, COLD, DEVICE_NOUNS, DEVICES, INDEFINITE, LAUNDRY, LAUNDRY_PLACES, MASS_NOUNS,
-                                                MEALS, OPPOSITE, REACHABLE, RUBBISH_KINDS, VIA_PROPERTY, WINDOWS, plurals,
-                                                words_of)
+from pipflow.household.language.lexicon import (BIN_KINDS, COLD, DEVICE_NOUNS, DEVICES, DRINK_MAKERS, INDEFINITE, LAUNDRY,
+                                                LAUNDRY_PLACES, MASS_NOUNS, MEALS, OPPOSITE, REACHABLE, RUBBISH_KINDS,
+                                                VIA_PROPERTY, WINDOWS, plurals, words_of)
 from pipflow.household.language.nearness import nearest
 from pipflow.household.language.order import check_order
 from pipflow.household.problem import CONDITIONS
@@ -690,6 +690,8 @@ class Resolver:
             self.air_cue(st, words)
             return
         every = self.devices(kind)
+        if kind == "hot drink" and cond == "on" and not every and self._stovetop_kettle(words):
+            return
         able = [n for n in every if not holds_now(self.world, n, cond)]
         self._room(st, able, words)
         if st.get("room") and len(able) > 1:
@@ -709,6 +711,25 @@ class Resolver:
         for n in able:
             self.want(n, cond, False, words)
         self.last = able
+
+    def _stovetop_kettle(self, words: str) -> bool:
+        """A hot drink wished for where no drink maker switches, but one heats (a kettle put on a
+        stove): that one hot. True when read; several such are asked, none leaves the caller's
+        refusal."""
+        wanted = {" ".join(words_of(w)) for w in DRINK_MAKERS}
+        heated = [n for n, e in self.world["objects"].items()
+                  if {" ".join(words_of(w)) for w in [n] + list(e.get("words") or [])} & wanted
+                  and applies(self.world, n, "hot")]
+        if not heated:
+            return False
+        if len(heated) > 1:
+            raise _choice(TranslationError(f"'{words}': which one? it could be any of {', '.join(heated)}; "
+                                           "say which to heat"), words, heated)
+        self.goal.notes.append(f"'{words}': read as {heated[0]} hot (a drink maker that heats, none that "
+                               "switches; docs/household.md, cues)")
+        self.want(heated[0], "hot", False, words)
+        self.last = heated
+        return True
 
     def air_cue(self, st: dict, words: str) -> None:
         """ "it's stuffy in here": the air wants moving: a fan (lexicon ``FANS``) that is off, on, or

@@ -47,6 +47,33 @@ def _exactly(words: tuple[str, ...], index: dict, kind: str) -> list[str]:
     return [r["name"] for r in index.get(tuple(words), []) if r["kind"] == kind]
 
 
+#: words of time that may close a restating clause ("... on the stove from yesterday")
+SINCE = {"from", "since", "yesterday", "last", "night", "this", "morning", "earlier", "all", "day", "today",
+         "tonight", "again", "week", "lunch", "breakfast", "dinner", "tea"}
+
+
+def _place(words: list[str], index: dict) -> list[str]:
+    """The place a phrase names as a whole, allowing a closing phrase of time ("the stove from
+    yesterday")."""
+    for end in range(len(words), 0, -1):
+        if all(w in SINCE for w in words[end:]):
+            found = _exactly(tuple(words[:end]), index, "place")
+            if found:
+                return found
+    return []
+
+
+def leading_subject(clause: tuple[str, ...], world: dict) -> tuple[str, ...] | None:
+    """The words naming the thing of a first clause that says where that thing is, as the world
+    has it ("the frying pan is still sat on the stove, can you get it washed"): the next clause's
+    "it" means it. None when the clause is no such restatement (its subject a pronoun, or the
+    world disagrees)."""
+    be = next((k for k, w in enumerate(clause) if w in BE), None)
+    if not be or (be == 1 and clause[0] in PRONOUNS) or restates_location(clause, [], world) is None:
+        return None
+    return clause[:be]
+
+
 def restates_location(clause: tuple[str, ...], before: list[tuple[str, ...]], world: dict) -> str | None:
     """What a clause restates ("curry is in fridge"), when it says where a thing is and the world
     agrees (module docstring); None otherwise. ``before``: the clauses before it, in order."""
@@ -59,7 +86,7 @@ def restates_location(clause: tuple[str, ...], before: list[tuple[str, ...]], wo
     if len(rest) < 2 or rest[0] not in AT:
         return None
     index = world_phrases(world)
-    place = _exactly(tuple(rest[1:]), index, "place")
+    place = _place(rest[1:], index)
     if len(place) != 1:
         return None
     if len(subject) == 1 and subject[0] in PRONOUNS:

@@ -9,7 +9,7 @@ from typing import Callable, NamedTuple
 
 from pipflow.household.language.lexicon import FILLER_TYPO_TARGETS, PHRASES, words_of
 from pipflow.household.language.names import world_phrases
-from pipflow.household.language.restated import restates_location
+from pipflow.household.language.restated import leading_subject, restates_location
 from pipflow.household.language.typos import typo_of, vocabulary
 from pipflow.language.asides import EXCLUSIVITY, FUNCTION_WORDS, NEGATION, clauses, content_free
 from pipflow.language.numbers import read_number
@@ -96,6 +96,24 @@ class Trimmed(NamedTuple):
     restated: list[str]    # where a thing is, as the world has it (:mod:`.restated`)
 
 
+def _topic_restated(words: list[str], parts: list, world: dict) -> tuple[list[str], list, list]:
+    """A first clause that says where a thing is, as the world has it, followed by a clause that
+    takes it up with "it" / "them" ("the frying pan is on the stove, wash it"): the thing's words
+    stand for the pronoun, and the first clause is set aside as a restatement. (words, clauses,
+    [(the first clause, what it restates)]); unchanged where there is no such pair."""
+    if len(parts) < 2:
+        return words, parts, []
+    subject = leading_subject(parts[0].words, world)
+    second = parts[1]
+    at = next((k for k, w in enumerate(second.words) if w in ("it", "them")), None)
+    if subject is None or at is None or sum(w in ("it", "them") for w in second.words) != 1:
+        return words, parts, []
+    k = second.start + at
+    words = words[:k] + list(subject) + words[k + 1:]
+    said = (parts[0], f"{' '.join(subject)} where it is")
+    return words, clauses(words, CLAUSE_MARKS), [said]
+
+
 def without_asides(command: str, world: dict) -> Trimmed | None:
     """The command without its content-free clauses (:mod:`pipflow.language.asides`), its
     clauses that say what the speaker will do (:func:`speaker_doing`) and those that say where a
@@ -105,11 +123,12 @@ def without_asides(command: str, world: dict) -> Trimmed | None:
     words = _purposes_apart(words_of(_PARENTHESES.sub(" , ", command)))
     content = _content(world)
     parts = clauses(words, CLAUSE_MARKS)
+    words, parts, topic = _topic_restated(words, parts, world)
     free = [c for c in parts if content_free(c.words, content)]
     own = [c for c in parts if c not in free and speaker_doing(c.words)]
     known = [(c, restates_location(c.words, [b.words for b in parts[:k]], world)) for k, c in enumerate(parts)
              if k and c not in free and c not in own]
-    known = [(c, what) for c, what in known if what]
+    known = [(c, what) for c, what in known if what] + topic
     if not free and not own and not known:
         return None
     drop = {k for c in free + own + [c for c, _ in known] for k in range(c.start, c.end)}

@@ -40,6 +40,10 @@ class Choice(TranslationError):
 #: verbs of placing whose count is a final count or a delivery, as the place holds the item or not:
 #: "put 2 X on P" where P holds none is 2 either way; where P holds some, 2 in all or 2 more?
 PLACING_VERBS = {"put", "place", "stick", "pop", "park", "store", "stock"}
+#: "P needs N X" says what P lacks as often as what it should end with: asked where P holds some X
+NEEDING_VERBS = {"need", "needs"}
+#: words that make such a count a final one ("in total", "in all", "altogether", "final count")
+FINAL_WORDS = {"total", "all", "altogether", "final", "overall"}
 
 
 @dataclass
@@ -105,7 +109,7 @@ class GoalRules:
             self.statements.append({"op": "nothing_else", "places": {"names": places},
                                     "words": "nothing else"})
 
-    def _put_adds(self, places: list[str], nps: list[dict], words: str, mode: str = "one") -> bool:
+    def _put_adds(self, places: list[str], nps: list[dict], words: str, mode: str = "one", said: str = "put") -> bool:
         """Whether "put N X on P" is a delivery: where P holds none of X it does not matter (a final
         count, as read before); where P holds some, "put" says neither "in all" nor "more", so
         the sentence is refused with both readings offered (``picks["put"]``: the user's choice)."""
@@ -123,7 +127,7 @@ class GoalRules:
             p, np = held[0]
             n = np["amount"]["count"]
             raise Choice("put", ("set", "add"),
-                         f"{quote(words)}: {p} already holds some; 'put {n}' can mean {n} there in all or "
+                         f"{quote(words)}: {p} already holds some; '{said} {n}' can mean {n} there in all or "
                          f"{n} more; nothing is guessed: say '{n} in all' or '{n} more'")
         return choice == "add"
 
@@ -138,7 +142,13 @@ class GoalRules:
         for ap in self.sub(node, "place_appos"):
             self.apposition(places, self.nps(self.sub(ap, "items")[0]), self.words(ap))
         self._receive_is_clear(node, places, nps, words)
-        self.put(places, "each" if each else "one", nps, words)
+        # "P needs N X" where P holds some: N in all or N more, as "put N" (benchmarks/language README, 2)
+        setv = self.sub(node, "setv")
+        said = self.first_word(setv[0]) if setv else ""
+        final = bool(FINAL_WORDS & set(words.lower().split()))   # "needs 10 in total": said in all
+        add = (said in NEEDING_VERBS and not each and not final and len(places) == 1
+               and self._put_adds(places, nps, words, said=said))
+        self.put(places, "each" if each else "one", nps, words, add=add)
 
     def g_place_set_resp(self, node: Tree) -> None:
         parts = self.clause_parts(node)

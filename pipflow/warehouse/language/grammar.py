@@ -19,9 +19,9 @@ import re
 
 GRAMMAR = r"""
 start: sentence
-sentence: lead? part aside? (sep part aside?)* sep? aside?
+sentence: lead? part aside? (sep part aside?)* (sep | bare_only)? aside?
         | places                                   -> topic_sentence
-lead: ("but" | "and" | "then" | "also" | "so" | "however" | "now" | "oh" | "well" | "next"
+lead: ("but" | "and" | "then" | "also" | "so" | "however" | "now" | "oh" | "well" | "next" | "right" | "ok" | "okay" | "alright"
       | "finally" | "first" | "afterwards" | "after" "that" | "additionally" | "plus"
       | ("can" | "could" | "would") ("you" | "we") | "you" ("should" | "must" | "can") | "just" | "let" "us"
       | ("team" | "guys" | "folks" | "people" | "crew") ",") ("," | ":")?
@@ -96,19 +96,19 @@ np: NUM of? ihead                          -> np_count
   | NUM "of" "everything"                  -> np_each
   | "everything"                           -> np_everything
   | ("everything" | "all" ITEMWORD | "every" ITEMWORD | "all" "goods") except_items -> np_everything
-  | "as" "many" of? ihead "as" PLACE ("has" | "holds" | "have" | "contains") now? -> np_as_many
+  | "as" "many" of? ihead "as" PLACE ("has" "got"? | "got" | "holds" | "have" | "contains") now? -> np_as_many
   | "as" "many" of? ihead "as" PLACE                    -> np_as_many
   | "as" "many" ihead "as" ihead (("it" | "they") ("has" | "have" | "holds" | "hold" | "does" | "do"))? now? -> np_as_many_item
   | "same" ("number" | "amount" | "count" | "quantity") "of" ihead "as" ihead -> np_as_many_item
-  | "as" "many" ihead? "as" PLACE (lsep PLACE)+ ("has" | "have" | "hold" | "holds" | "contain")? now? together -> np_as_many_total
-  | "same" ("number" | "amount" | "count" | "quantity") "of" ihead "as" PLACE (("has" | "holds" | "have" | "contains" | "does") now?)? -> np_as_many
+  | "as" "many" ihead? "as" PLACE (lsep PLACE)+ ("has" "got"? | "got" | "have" | "hold" | "holds" | "contain")? now? together -> np_as_many_total
+  | "same" ("number" | "amount" | "count" | "quantity") "of" ihead "as" PLACE (("has" "got"? | "got" | "holds" | "have" | "contains" | "does") now?)? -> np_as_many
   | ("another" | "one" "more")                      -> np_another
-  | "as" "many" "as" PLACE ("has" | "holds" | "have" | "contains") now? -> np_as_many_elided
+  | "as" "many" "as" PLACE ("has" "got"? | "got" | "holds" | "have" | "contains") now? -> np_as_many_elided
   | ("rest" | "others" | "extras" | "remainder") rest_of? -> np_rest
   | "twice" "as" "many" ihead              -> np_twice
   | "twice" "as" "many" ihead "as" ("it" | "they") ("has" | "have" | "holds" | "hold") now? -> np_twice
   | NUM "times" "as" "many" ihead ("as" ("it" | "they") ("has" | "have" | "holds" | "hold") now?)? -> np_ntimes
-  | ("twice" | NUM "times") "as" "many" ihead "as" PLACE ("has" | "holds" | "have" | "contains") now? -> np_times_as_many
+  | ("twice" | NUM "times") "as" "many" ihead "as" PLACE ("has" "got"? | "got" | "holds" | "have" | "contains") now? -> np_times_as_many
   | lower NUM more of? ihead               -> np_atleast_more
   | "all" NUM of? ihead                    -> np_all_n
   | ("double" | "triple" | "quadruple") ihead -> np_times
@@ -156,7 +156,7 @@ posplace: PLACE POSS
 prep: "in" | "on" | "at" | "into" | "onto" | "inside" | "within" | "to" | "in" "to" | "on" "to"
 each: "each" | "apiece" | "both" | "every" NUM
 // "every fish tank in the building", "every location in here": the whole world, said again
-within: ("in" | "across" | "throughout") ("building" | "here" | "warehouse" | "shed" | "site" | "store") | "on" "site"
+within: ("in" | "across" | "throughout") ("building" | "here" | "warehouse" | "shed" | "site" | "store" | "yard" | "depot") | "on" "site"
 loc: prep places                            -> loc
    | prep ("each" "of" | "both" | "both" "of" | "all" "of" | "every" NUM "of") places -> loc_each
    | prep places each                       -> loc_each
@@ -634,6 +634,10 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | "get" robots "to" "do" ("it" | "this" | "that")         -> rule_do_it
     | robots ("is" | "are") "only" ("ones" | NUM | ROBOTWORD) ("allowed" "to" | "permitted" "to" | "that" ("may" | "can") | "who" ("may" | "can")) useact? rscope -> rule_only
     | robots ("can" | "may" | "could" | "might") act rscope  -> rule_permission
+
+// "... to the counter forklifts only": a rule closing the sentence without a comma, for the whole
+// command as "..., forklifts only" is
+bare_only: robots ("only" | "alone")                        -> rule_only
 
 // "Titan should put 5 kegs on outbound", "Titan, bring two kegs to outbound"
 addressed: robots ("," | ":")? oblig? goal

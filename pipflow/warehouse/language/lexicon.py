@@ -17,7 +17,7 @@ from lark import Token
 
 from pipflow.errors import InputError, Refusal, TranslationError
 from pipflow.language.asides import (FUNCTION_WORDS, Clause, clauses, content_free, is_opener, leading_reason,
-                                     trailing_adjunct, trailing_thanks)
+                                     trailing_adjunct, trailing_thanks, unmarked_statement)
 from pipflow.language.characters import refuse_unread
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS
 from pipflow.language.spelling import distance, normalize, plural_forms, slip, tolerance
@@ -122,6 +122,7 @@ def check_text(command: str) -> str:
         word = re.search(r"\S*" + re.escape(m.group(0)) + r"\S*", text)
         raise TranslationError(f"'{word.group(0) if word else m.group(0)}': the symbol "
                                f"'{m.group(0)}' is not read in commands; write it in words")
+    text = re.sub(r"\bwhats\b", "what is", text, flags=re.IGNORECASE)  # "what's" typed without its apostrophe
     return re.sub(r"\b([A-Za-z0-9_-]+)['\u2019]s\b", _possessive, text)
 
 
@@ -145,6 +146,9 @@ def _number_typo(word: str) -> str | None:
 
 #: words that take back the count before them: "5, no, 6", "3, sorry, 4", "2, I mean 3"
 CORRECTIONS = (("no",), ("sorry",), ("wait",), ("i", "mean"), ("make", "that"), ("or", "rather"), ("rather",))
+#: a taking back said without a comma after the count must hold one of these ("5 no sorry 6"),
+#: never only "no" ("5 no 6" says nothing clear)
+UNMARKED_TAKE_BACK = frozenset({"sorry", "wait", "oops"})
 
 
 #: The verb lexicon (issue 23, point 2; docs/language.md "Verbs"): each verb or phrasal verb of
@@ -409,10 +413,13 @@ def corrected(toks: list[Tok]) -> list[Tok]:
         k = i + 1
         named = toks[k] if t.kind == "num" and k < len(toks) and toks[k].kind == "name" and toks[k].of == "product" else None
         k += named is not None
-        # set off by commas, or by dashes (read as ":"): "Take two - sorry, three - foam swords"
-        if t.kind == "num" and k < len(toks) and toks[k].kind == "punct" and toks[k].value in (",", ":"):
-            opened = toks[k].value
-            j = k + 1
+        # set off by commas, or by dashes (read as ":"): "Take two - sorry, three - foam swords";
+        # or said straight on, as dictated, with an apology in it: "move 5 no sorry 6 of sand"
+        unmarked = (t.kind == "num" and named is None and k + 1 < len(toks) and toks[k].kind == "word"
+                    and any(x.kind == "word" and x.value in UNMARKED_TAKE_BACK for x in toks[k:k + 2]))
+        if t.kind == "num" and k < len(toks) and (unmarked or (toks[k].kind == "punct" and toks[k].value in (",", ":"))):
+            opened = toks[k].value if toks[k].kind == "punct" else None
+            j = k + 1 - unmarked
             took_back = False
             while True:   # "no", "no wait", "no sorry, make that"
                 comma = took_back and j < len(toks) and toks[j].kind == "punct" and toks[j].value == ","
@@ -449,6 +456,12 @@ TIMES_OF_DAY = frozenset({"morning", "afternoon", "evening", "tonight", "tomorro
                           "later", "today", "oclock", "pm", "am", "end", "day", "week", "weekend", "night"})
 
 
+def _clock(toks: list[Tok], k: int) -> bool:
+    """Whether the count at ``k`` is a time of day ("the 2 o'clock wagon", "by 3pm"): a time, no count."""
+    after = [re.sub(r"[^a-z]", "", t.text.lower()) for t in toks[k + 1:k + 3] if t.kind == "word"]
+    return bool(after) and (after[0] in ("oclock", "pm", "am") or after[:2] == ["o", "clock"])
+
+
 class Lexicon:
     """The world's vocabulary for the grammar: names, robot kinds, tags and skills."""
 
@@ -470,6 +483,8 @@ class Lexicon:
                             for w in [n.alpha + n.digits, n.alpha] + re.split(r"[-_\s]+", n.name.lower())
                             if len(w) >= 3} | {w for ws in KIND_WORDS.values() for w in ws}
         self._name_words |= {w for ws in self.index.stems.values() for w in ws}
+        #: the same without the English kind words ("bay", "bot"), which are never misspelt
+        self._own_name_words = self._name_words - {w for ws in KIND_WORDS.values() for w in ws}
         self.aside: list[str] = []
         #: numbered places by letters + digits ("dock2" -> dock2, "bay9" of "bay_9" -> bay_9)
         self._numbered_places = {n.alpha + str(int(n.digits)): n.name for n in self.index.names
@@ -570,6 +585,18 @@ class Lexicon:
             return True
         return any(distance(word, w) <= max(1, tolerance(len(w))) for w in self._name_words)
 
+    def names_closely(self, word: str) -> bool:
+        """:meth:`names_world` with only a slip of one edit from a word of the world's own names
+        (same first letter, five letters or more), for a statement run on without a comma
+        (:func:`pipflow.language.asides.unmarked_statement`): its ordinary words ("flat", "forks",
+        "bow") are two edits from a name or one from a kind word, and it is judged word by word."""
+        if word in NUMBER_WORDS or word in FRACTIONS or self._group(word) is not None or _number_typo(word):
+            return True
+        if word in FUNCTION_WORDS or word in FILLERS or word in self.keywords:
+            return False
+        return word in self._name_words or any(
+            len(w) >= 5 and w[:1] == word[:1] and distance(word, w) <= 1 for w in self._own_name_words)
+
     def _clauses(self, cur: list[Tok]) -> tuple[list[Tok], list[str]]:
         """The sentence's tokens without its content-free clauses (split at commas and colons),
         and the words of those. A name, count or kind word is content by itself."""
@@ -580,15 +607,16 @@ class Lexicon:
         # never hold a count: asides.leading_reason); both are content by themselves
         words = [str(t.value) if t.kind == "punct" and t.value in marks else
                  (re.sub(r"[^a-z0-9]", "", t.text.lower()) or str(t.value) if t.kind == "word" else
-                  "\1" if t.kind == "num" else "\0")
-                 for t in cur]
+                  "oclock" if t.kind == "num" and _clock(cur, k) else "\1" if t.kind == "num" else "\0")
+                 for k, t in enumerate(cur)]
         keep: list[Tok] = []
         aside: list[str] = []
         parts = clauses(words, marks)
         free = [c for c in parts if content_free(c.words, lambda w: w in _HELD or self.content(w),
                                                  lambda w: w in _HELD or self.names_world(w), reports=True)]
         free += leading_reason(parts, free, lambda w: w == "\1" or w in NUMBER_WORDS)
-        thanks = trailing_thanks(list(parts[-1].words), self.content) if parts and parts[-1] not in free else 0
+        thanks = trailing_thanks(list(parts[-1].words), lambda w: w in _HELD or self.names_world(w)) \
+            if parts and parts[-1] not in free else 0
         if thanks:   # "... to the dray bay ta": the thanks closing the last clause, without a comma
             end = parts[-1].end
             free.append(Clause(end - thanks, end, parts[-1].words[-thanks:]))
@@ -599,6 +627,13 @@ class Lexicon:
             if c in free:
                 continue
             clause = list(c.words[:len(c.words) - thanks] if c is parts[-1] else c.words)
+            # "... dont use flint hes got a flat tyre": a statement run on without a comma
+            n = unmarked_statement(clause, lambda w: w in _HELD or self.names_closely(w))
+            if n:
+                end = c.start + len(clause)
+                free.append(Clause(end - n, end, tuple(clause[-n:])))
+                inner.add(end - n)
+                clause = clause[:-n]
             # an adjunct of time or purpose may hold words of the grammar, never a word of a name
             # ("for the dispatch" of dispatch-dock, though "dispatch" is a verb of the grammar too)
             n = trailing_adjunct(clause, lambda w: w in _HELD or (w not in TIMES_OF_DAY and self.content(w)),
@@ -633,7 +668,8 @@ class Lexicon:
         """The command's sentences as terminals (split at . ; ! ?). A sentence with no content
         (:meth:`content`) is set aside: not returned, its words kept in :attr:`aside`; a sentence
         with some content-free clauses carries its reading without them as ``trimmed``."""
-        text = self._joined(check_text(command))
+        # a time written as one word ("3pm", "10am", "2oclock") is the count and its word, as "3 pm" is
+        text = re.sub(r"\b(\d{1,2})(am|pm|oclock)\b", r"\1 \2", self._joined(check_text(command)), flags=re.IGNORECASE)
         toks = noun_adjuncts(numbered_siblings(recognize(text, self.index), self._numbered_places))
         fixed = []
         for t in toks:

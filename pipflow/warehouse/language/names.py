@@ -435,7 +435,7 @@ class NameIndex:
                 if n.digits != digits:
                     continue
                 d = min(distance(v, n.alpha) for v in variants(alpha))
-                if d <= tolerance(len(n.alpha)) and alpha[:1] == n.alpha[:1]:
+                if d <= tolerance(min(len(n.alpha), len(alpha))) and alpha[:1] == n.alpha[:1]:
                     scored.append((d, n))
             if scored:
                 best = min(d for d, _ in scored)
