@@ -15,6 +15,7 @@ else that escapes is a bug in pipflow and is shown with its traceback.
     ├── StepError                     exit 1   a step failed while running
     │   ├── PlanningError                      planner could not solve (time-out, engine error)
     │   ├── AllocationError                    no feasible coalition for a subtask
+    │   │   └── TeamLacksSkill   (also a Refusal) no robot allowed has a skill a subtask needs: exit 3
     │   ├── LLMError                           provider call failed after retries
     │   ├── AnswerFormatError                  a model's answer is not in the form its method reads
     │   └── TranslationError                   the offline translator cannot resolve the command
@@ -155,5 +156,15 @@ class TranslationError(StepError):
 
 class Refusal(PipflowError):
     """The command cannot be satisfied in this world; the message says why."""
+
+    exit_code = 3
+
+
+class TeamLacksSkill(AllocationError, Refusal):
+    """A subtask needs a skill that no robot the command may use has at all ("pickup: the whole
+    team has 0"): no plan and no solver can do it with this team, so the command is refused as
+    impossible (exit 3, a refused run), as the household benchmark's tasks impossible only for
+    their team expect. Still an :class:`AllocationError`, so a re-allocation after a fault
+    handles it as one."""
 
     exit_code = 3

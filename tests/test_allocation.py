@@ -8,7 +8,7 @@ import yaml
 from pipflow import StepContext
 from pipflow.team.allocation import (Linear, allocate, brute_force, first_stage_fast, solve_lexicographic,
                                 solve_naive)
-from pipflow.errors import AllocationError, InputError
+from pipflow.errors import AllocationError, InputError, Refusal, TeamLacksSkill
 
 FIX = Path(__file__).parent / "fixtures" / "robot"
 WORLD = yaml.safe_load((FIX / "world.yaml").read_text())
@@ -152,6 +152,21 @@ def test_infeasible_names_subtask_skill_and_rules():
     assert "r4 excluded by rule #1" in msg and "r3 excluded by rule #2" in msg
     with pytest.raises(AllocationError, match="linear constraints"):
         allocate(g, WORLD, linear=[{"robots": "all", "sense": "<=", "rhs": 1}])
+
+
+def test_a_skill_no_allowed_robot_has_is_a_refusal_of_the_command():
+    """Short of carry (some robots carry, too little): a failed allocation. No allowed robot has
+    the skill at all: the command cannot be done by this team, a refusal (exit 3) that is still
+    an AllocationError for a re-allocation after a fault."""
+    g = graph(node("s1", "shelfA", "shelfC", "red", 6))
+    with pytest.raises(AllocationError) as short:
+        allocate(g, WORLD, constraints=[{"never": ["r4"], "product": "red"}, {"only": ["r0", "r1", "r2", "r4"],
+                                                                                "from": "shelfA"}])
+    assert not isinstance(short.value, Refusal)
+    with pytest.raises(TeamLacksSkill) as none:
+        allocate(g, WORLD, constraints=[{"only": ["r0"]}, {"never": ["r0"], "product": "red"}])
+    assert isinstance(none.value, AllocationError) and isinstance(none.value, Refusal)
+    assert none.value.exit_code == 3 and "the whole team has" in str(none.value)
 
 
 def test_bad_rules_are_input_errors():

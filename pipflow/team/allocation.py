@@ -40,7 +40,7 @@ from typing import Any
 
 import numpy as np
 
-from pipflow.errors import AllocationError, InputError
+from pipflow.errors import AllocationError, InputError, TeamLacksSkill
 from pipflow.team.nearest import nearest_costs, straight_bounds
 from pipflow.team.scheduling import DEFAULT_COST, Standing, Timeline, check_cost, predecessors
 
@@ -519,7 +519,8 @@ def explain_infeasible(node: dict, robots, skills, Q, Y, allowed, why, lin: list
                f"linear constraints leave no coalition: {'; '.join(L.label for L in lin)}")
     if excluded:
         msg += f". Excluded: {excluded}"
-    return AllocationError(msg)
+    lacking = [skills[u] for u in range(len(skills)) if Y[u] > 1e-9 and have[u] <= 1e-9]
+    return TeamLacksSkill(msg) if lacking else AllocationError(msg)
 
 
 METHODS = ("scip", "naive", "greedy", "blind")
