@@ -45,7 +45,7 @@ def test_a_word_whose_ending_is_no_suffix_has_no_other_spelling(word: str) -> No
 @pytest.mark.parametrize("command, goal", [
     ("Move 2 gray tiles from the center bay to dispatch", {"centre_bay": {"grey_tile": 4}, "despatch": {"grey_tile": 4}}),
     ("the tire rack should have 1 color tin", {"tyre_rack": {"colour_tin": 1}}),
-    ("dispatch needs 5 grey tiles", {"despatch": {"grey_tile": 5}}),
+    ("dispatch should have 5 grey tiles", {"despatch": {"grey_tile": 5}}),
     ("move the 2 grey tiles off dispatch onto the tyre rack",
      {"despatch": {"grey_tile": 0}, "tyre_rack": {"grey_tile": 2}}),
 ])
@@ -67,3 +67,16 @@ def test_a_place_name_never_reads_as_the_verb_place() -> None:
     assert translate("place 2 colour tins onto the despatch", TILES)["goal"] == {"despatch": {"colour_tin": 2}}
     declared = next(line for line in GRAMMAR.splitlines() if line.startswith("%declare")).split()[1:]
     assert not {name for name in keywords().values()} & set(declared), "a keyword shares a world terminal's name"
+
+
+@pytest.mark.parametrize("command, goal", [
+    ("the centre bay and dispatch should both have 4 grey tiles", {"centre_bay": {"grey_tile": 4}, "despatch": {"grey_tile": 4}}),
+    ("dispatch and the tyre rack should both have 2 grey tiles", {"despatch": {"grey_tile": 2}, "tyre_rack": {"grey_tile": 2}}),
+])
+def test_the_verb_spelt_as_a_place_is_the_place_in_a_list_of_places(command: str, goal: dict) -> None:
+    assert translate(command, TILES)["goal"] == goal
+
+
+def test_the_verb_after_and_with_what_it_sends_stays_a_verb() -> None:
+    got = translate("move 1 colour tin to the centre bay and dispatch 2 grey tiles to the tyre rack", TILES)
+    assert got["goal"] == {"centre_bay": {"colour_tin": 2}, "tyre_rack": {"grey_tile": 2}}

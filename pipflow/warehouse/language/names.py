@@ -706,7 +706,28 @@ def recognize(command: str, index: NameIndex) -> list[Tok]:
             continue
         toks.append(Tok("word", t, t.lower()))
         i += 1
-    return [t for t in toks if t is not None]
+    return _listed_verb_places([t for t in toks if t is not None], index)
+
+
+def _listed_verb_places(toks: list[Tok], index: NameIndex) -> list[Tok]:
+    """A word of the grammar that is one place's word (:attr:`NameIndex.verb_places`: "dispatch")
+    listed with other places ("the canopy and dispatch", "dispatch, canopy and the counter"): that
+    place. A verb never stands between "and" / "or" / a comma and a place's name."""
+    out = list(toks)
+    joins = {"and", "or", ","}
+    for k, t in enumerate(out):
+        if t.kind != "word" or t.value not in index.verb_places:
+            continue
+        nxt = out[k + 1] if k + 1 < len(out) else None
+        if nxt is not None and nxt.kind != "punct" and str(nxt.value) not in AFTER_A_PLACE | PLACE_SUBJECT_VERBS:
+            continue   # "... and dispatch 3 X to P": the verb, with what it sends after it
+        before = out[k - 2] if k >= 2 and str(out[k - 1].value) in joins else None
+        after = next((x for x in out[k + 2:k + 4] if str(x.value) != "the"), None) \
+            if k + 2 < len(out) and str(out[k + 1].value) in joins else None
+        if any(x is not None and x.kind == "name" and x.of == "shelf" for x in (before, after)):
+            place = index.verb_places[str(t.value)]
+            out[k] = Tok("name", t.text, place.name, place.kind)
+    return out
 
 
 def read_counts(toks: list[Tok]) -> list[Tok]:
