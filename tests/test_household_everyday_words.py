@@ -90,3 +90,19 @@ def test_where_a_thing_is_said_first_against_the_home_is_asked(shieling) -> None
     """The pan is on the stove, not the hearth: the clause is kept, and the command is asked."""
     with pytest.raises(TranslationError):
         translate("the pan is on the hearth, wash it", shieling)
+
+
+@pytest.mark.parametrize("command", ["put the pan in the sink - no wait sorry, on the hearth",
+                                     "put the pan in the sink, no sorry, on the hearth, I need it tonight"])
+def test_a_place_taken_back_is_the_place_said_after(shieling, command: str) -> None:
+    assert translate(command, shieling)["goal"]["in"] == {"hearth": ["pan"]}
+
+
+def test_a_bare_no_takes_nothing_back(shieling) -> None:
+    with pytest.raises(TranslationError):
+        translate("put the pan in the sink, no, on the hearth", shieling)
+
+
+def test_the_speaker_needing_it_is_a_reason_but_a_state_is_an_order(shieling) -> None:
+    assert translate("put the pan on the hearth, I need it later", shieling)["goal"]["in"] == {"hearth": ["pan"]}
+    assert translate("put the pan on the hearth, I need it washed", shieling)["goal"]["state"] == {"pan": ["clean"]}

@@ -33,7 +33,9 @@ MOVE_TWO = {"long_rack": {"plank": 7}, "saw_bench": {"plank": 3}}
 
 
 @pytest.mark.parametrize("tail", ["theyre sticking out into the aisle", "its starting to sag",
-                                  "his forks are playing up", "theres customers about"])
+                                  "his forks are playing up", "theres customers about",
+                                  "lads are relaying concrete under there this afternoon",
+                                  "the lads are waiting"])
 def test_a_statement_run_on_without_a_comma_is_set_aside_and_said(tail: str) -> None:
     got = understand(f"move 2 planks from the long rack to the saw bench {tail}", YARD)
     assert got["goal"] == MOVE_TWO and got["constraints"] == []

@@ -251,7 +251,20 @@ def is_statement(words: Iterable[str], names: Callable[[str], bool]) -> bool:
         w in FINITE or (w.endswith("ing") and len(w) > 4 and ws[0] in DETERMINERS) for w in ws[1:4])
     if not (pronoun or noun):
         return False
-    return not any(near_operative(w) or names(w) or _asks(ws, k) or w in ROBOT_WORDS for k, w in enumerate(ws))
+    return not any(_operative_at(ws, k) or names(w) or _asks(ws, k) or w in ROBOT_WORDS for k, w in enumerate(ws))
+
+
+#: words that say where, not how many, before "there" / "here" ("the lads are relaying concrete
+#: under there", "it's over here"): no bound in a statement
+_WHERE_BEFORE_THERE = frozenset({"under", "over", "above", "below", "beyond"})
+
+
+def _operative_at(ws: list[str], k: int) -> bool:
+    """:func:`near_operative` of the word at ``k``, except a word of :data:`_WHERE_BEFORE_THERE`
+    before "there" or "here"."""
+    if ws[k] in _WHERE_BEFORE_THERE and k + 1 < len(ws) and ws[k + 1] in ("there", "here"):
+        return False
+    return near_operative(ws[k])
 
 
 #: words of :data:`ASKING` that ask only before "to" ("has to go", "got to have"); elsewhere they
@@ -286,7 +299,7 @@ def is_report(words: Iterable[str], names: Callable[[str], bool]) -> bool:
     has_be = ws[0] in _SUBJECT_BE or any(w in _BE | {"keep", "keeps"} for w in head[1:4])
     if not has_be or not any(w.endswith("ing") and len(w) > 4 for w in head[1:5]):
         return False
-    return not any(near_operative(w) or names(w) for w in ws)
+    return not any(_operative_at(ws, k) or names(w) for k, w in enumerate(ws))
 
 
 #: words that open a statement said after an order without a comma between them ("... its
@@ -302,9 +315,25 @@ def unmarked_statement(words: list[str], names: Callable[[str], bool]) -> int:
     words of the order and is a report or a statement (:func:`is_report`: no name, number,
     operative word or word of wanting in it). 0 when there is none."""
     for k in range(2, len(words) - 1):
-        if words[k] in STATEMENT_OPENERS and (is_report(words[k:], names) or _existential(words[k:], names)):
+        if _opens_statement(words, k) and (is_report(words[k:], names) or _existential(words[k:], names)):
             return len(words) - k
     return 0
+
+
+def _opens_statement(words: list[str], k: int) -> bool:
+    """Whether a statement may open at ``k``: a :data:`STATEMENT_OPENERS` word, or a noun said as
+    its subject ("... out lads are relaying concrete"): a word of no function, followed by a form
+    of "be", after a word that opens no noun phrase; or a determiner before such a noun ("the lads
+    are ...")."""
+    if words[k] in STATEMENT_OPENERS:
+        return True
+    noun = k + 1 < len(words) and words[k + 1] in ("are", "is", "were", "was") and words[k].isalpha() \
+        and words[k] not in FUNCTION_WORDS and not near_operative(words[k])
+    if noun:
+        return words[k - 1] not in DETERMINERS
+    return words[k] in ("the", "my", "our", "his", "her", "their") and k + 2 < len(words) \
+        and words[k + 2] in ("are", "is", "were", "was") and words[k + 1].isalpha() \
+        and words[k + 1] not in FUNCTION_WORDS and not near_operative(words[k + 1])
 
 
 def _existential(ws: list[str], names: Callable[[str], bool]) -> bool:

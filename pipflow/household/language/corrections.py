@@ -4,14 +4,20 @@ last noun phrase before it (docs/household.md, "homely English"). Without this, 
 talk set aside and both things would be read (a misreading).
 
 Only between commas (or a comma before and a determiner after), only when the words after the
-marker open with a determiner and the clause before has one; "no" is never a marker here (it
-is a negation, operative)."""
+marker open with a determiner and the clause before has one, or open with a preposition of place
+and the clause before has one (the place is taken back: "put the scrubs in the sink - no wait
+sorry, on the boot bench"); "no" alone is never a marker here (it is a negation, operative), only
+with "wait" or "sorry"."""
 from __future__ import annotations
 
 from pipflow.household.language.tokens import PUNCT
 
 #: words that take back the noun phrase just said
-MARKERS = (("sorry", "i", "mean"), ("or", "rather"), ("i", "mean"), ("i", "meant"), ("sorry",), ("rather",))
+MARKERS = (("no", "wait", "sorry"), ("no", "sorry", "i", "mean"), ("sorry", "i", "mean"), ("no", "wait"), ("no", "sorry"),
+           ("wait", "sorry"), ("sorry", "no"), ("or", "rather"), ("i", "mean"), ("i", "meant"), ("sorry",), ("rather",))
+#: words that open where a thing goes: a correction that opens with one takes back the place said
+#: last ("in the sink - no wait sorry, on the boot bench")
+PLACE_PREPOSITIONS = {"in", "on", "into", "onto", "inside", "to", "under"}
 #: words that open a noun phrase
 DETERMINERS = {"the", "a", "an", "my", "our", "your", "that", "this", "those", "these", "some", "his", "her"}
 
@@ -25,8 +31,9 @@ def corrected(words: list[str], notes: list[str]) -> list[str]:
         marker = next((m for m in MARKERS if k and words[k - 1] == "," and tuple(words[k:k + len(m)]) == m), None)
         if marker is not None:
             after = k + len(marker) + (1 if k + len(marker) < len(words) and words[k + len(marker)] == "," else 0)
-            start = _last_determiner(out[:-1])
-            if after < len(words) and words[after] in DETERMINERS and start is not None:
+            place = after < len(words) and words[after] in PLACE_PREPOSITIONS
+            start = _last_preposition(out[:-1]) if place else _last_determiner(out[:-1])
+            if after < len(words) and (place or words[after] in DETERMINERS) and start is not None:
                 taken = " ".join(out[start:-1])
                 notes.append(f"'{taken}, {' '.join(marker)}': a self-correction; read as what follows it")
                 out = out[:start]
@@ -35,6 +42,16 @@ def corrected(words: list[str], notes: list[str]) -> list[str]:
         out.append(words[k])
         k += 1
     return out
+
+
+def _last_preposition(words: list[str]) -> int | None:
+    """Where the last place phrase of the clause being read opens (its preposition), or None."""
+    for j in range(len(words) - 1, -1, -1):
+        if words[j] in PUNCT:
+            return None
+        if words[j] in PLACE_PREPOSITIONS:
+            return j
+    return None
 
 
 def _last_determiner(words: list[str]) -> int | None:

@@ -7,7 +7,7 @@ from __future__ import annotations
 import re
 from typing import Callable, NamedTuple
 
-from pipflow.household.language.lexicon import FILLER_TYPO_TARGETS, PHRASES, words_of
+from pipflow.household.language.lexicon import FILLER_TYPO_TARGETS, PHRASES, PURPOSE_WORDS, words_of
 from pipflow.household.language.names import world_phrases
 from pipflow.household.language.restated import leading_subject, restates_location
 from pipflow.household.language.typos import typo_of, vocabulary
@@ -67,6 +67,24 @@ def speaker_doing(words: tuple[str, ...]) -> bool:
         if words[:len(opener)] == opener and len(words) > len(opener):
             rest = words[len(opener):]
             return rest[0] not in WISH_VERBS and not any(w in NEGATION or w in EXCLUSIVITY for w in rest)
+    return speaker_needing(words)
+
+
+#: "I need them tonight", "we'll want it later": the speaker needing what the order is about, said
+#: after the order as its reason; only a pronoun and words of time may follow the verb ("I need
+#: them washed" asks for a state, and is read)
+NEEDING = (("i", "need"), ("i", "will", "need"), ("we", "need"), ("we", "will", "need"), ("i", "want"),
+           ("i", "will", "want"), ("i", "am", "going", "to", "need"))
+
+
+def speaker_needing(words: tuple[str, ...]) -> bool:
+    """Whether a clause says the speaker needs what the order is about (:data:`NEEDING`)."""
+    for opener in NEEDING:
+        rest = words[len(opener):]
+        if words[:len(opener)] == opener and rest and rest[0] in ("it", "them", "those", "these") and all(
+                w in PURPOSE_WORDS or w in ("later", "on", "for", "in", "the", "a", "bit", "while", "first", "thing")
+                for w in rest[1:]):
+            return True
     return False
 
 

@@ -590,11 +590,11 @@ class Lexicon:
         (same first letter, five letters or more), for a statement run on without a comma
         (:func:`pipflow.language.asides.unmarked_statement`): its ordinary words ("flat", "forks",
         "bow") are two edits from a name or one from a kind word, and it is judged word by word."""
-        if word in NUMBER_WORDS or word in FRACTIONS or self._group(word) is not None or _number_typo(word):
+        if word in NUMBER_WORDS or word in FRACTIONS or self._group(word) is not None:
             return True
         if word in FUNCTION_WORDS or word in FILLERS or word in self.keywords:
-            return False
-        return word in self._name_words or any(
+            return False   # "there" is no misspelt "three"
+        return _number_typo(word) is not None or word in self._name_words or any(
             len(w) >= 5 and w[:1] == word[:1] and distance(word, w) <= 1 for w in self._own_name_words)
 
     def _clauses(self, cur: list[Tok]) -> tuple[list[Tok], list[str]]:
