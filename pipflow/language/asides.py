@@ -315,9 +315,19 @@ def unmarked_statement(words: list[str], names: Callable[[str], bool]) -> int:
     words of the order and is a report or a statement (:func:`is_report`: no name, number,
     operative word or word of wanting in it). 0 when there is none."""
     for k in range(2, len(words) - 1):
+        joined = words[k - 1] in _JOINED or words[k - 1] in ADJUNCTS
+        if words[k - 1] in _JOINING:
+            continue   # "... so that the lads are ...": a part of the sentence before
         if _opens_statement(words, k) and (is_report(words[k:], names) or _existential(words[k:], names)):
-            return len(words) - k
+            return len(words) - k + joined   # "... and his forks are playing up": the "and" too
     return 0
+
+
+#: words after which a clause is a part of the sentence before, never a statement run on
+_JOINING = frozenset({"that", "so", "if", "than", "where", "which", "who", "whether", "or"})
+#: words that join a statement to the order and go with it ("... because the delivery is due",
+#: "... and his forks are playing up"), as an adjunct's first word does ("... while we sort it")
+_JOINED = frozenset({"and", "but", "because", "cos", "coz", "cause", "as", "since"})
 
 
 def _opens_statement(words: list[str], k: int) -> bool:

@@ -37,6 +37,18 @@ def distance(a: str, b: str) -> int:
     return prev[len(b)]
 
 
+#: letters spelt two ways for one sound ("alfa" and "alpha")
+_SOUNDS = (("ph", "f"),)
+
+
+def sounded(word: str) -> str:
+    """A word with letters that spell one sound written one way (:data:`_SOUNDS`), for comparing
+    a name spelt by ear with the world's spelling."""
+    for written, said in _SOUNDS:
+        word = word.replace(written, said)
+    return word
+
+
 def tolerance(length: int) -> int:
     """Edits allowed against a stem of this length: none for very short words, 2 from 5 letters."""
     return 0 if length <= 2 else 1 if length <= 4 else 2

@@ -652,8 +652,8 @@ scoped_goal: ("using" | "with" | "by") ("only" | "just")? robots ","? goal    ->
            | goal ("without" ("using" | "help" "of")? | "but" "not" "with" | "not" "using") robots -> scoped_never_after
 
 // the word "place" has a terminal of its own: written as a string it would be named PLACE by lark,
-// the terminal of a world's place, and any place's name would then read as the verb ("shelf1 4
-// product1 to shelf2" as "place 4 product1 to shelf2", the first place dropped)
+// the terminal of a world's place, and any place's name would then read as the verb ("rack A 4
+// bolts to rack B" as "place 4 bolts to rack B", the first place dropped)
 PLACE_VERB: "place"
 %declare NUM ITEM ITEMWORD PLACE PLACEWORD ROBOT ROBOTWORD RKIND RTAG SKILL SUPER FRAC POSS UNKNOWN
 """

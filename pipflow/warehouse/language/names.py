@@ -17,8 +17,8 @@ from typing import Callable
 
 from pipflow.errors import TranslationError
 from pipflow.language.numbers import NUMBER_WORDS, read_number, word_value
-from pipflow.language.spelling import (distance, normalize, other_spellings, plural_forms, split_digits, tolerance,
-                                      variants)
+from pipflow.language.spelling import (distance, normalize, other_spellings, plural_forms, sounded, split_digits,
+                                      tolerance, variants)
 
 #: the possessive "'s" as the lexer marks it ("rack A's" -> "rack A zzposs")
 POSS_MARK = "zzposs"
@@ -434,7 +434,9 @@ class NameIndex:
             for n in self.names:
                 if n.digits != digits:
                     continue
-                d = min(distance(v, n.alpha) for v in variants(alpha))
+                # a word's edits are counted against the shorter of the two ("flat" is no flint),
+                # and a spelling by sound costs nothing ("alfa" for alpha)
+                d = min(min(distance(v, n.alpha), distance(sounded(v), sounded(n.alpha))) for v in variants(alpha))
                 if d <= tolerance(min(len(n.alpha), len(alpha))) and alpha[:1] == n.alpha[:1]:
                     scored.append((d, n))
             if scored:
