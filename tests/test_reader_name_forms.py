@@ -69,3 +69,33 @@ def test_an_unknown_word_before_a_word_two_names_end_with_offers_neither() -> No
     with pytest.raises(TranslationError) as err:
         translate("Move 2 cart wheels from the top loft to the finishing table", world)
     assert all("read 'top loft'" not in c["reading"] for c in err.value.candidates)
+
+
+#: a cold store, a world no benchmark uses: two numbered rooms named by letters and a number
+COLD = {
+    "name": "coldstore",
+    "floor": {"width": 30, "height": 20},
+    "shelves": {
+        "freeze1": {"x": 2, "y": 14, "width": 4, "depth": 2, "capacity": 20, "access": [4, 13]},
+        "freeze2": {"x": 10, "y": 14, "width": 4, "depth": 2, "capacity": 20, "access": [12, 13]},
+        "pack_line": {"x": 20, "y": 4, "width": 6, "depth": 2, "capacity": 12, "access": [23, 6]},
+    },
+    "products": {"peas": {"color": "green"}},
+    "stock": {"freeze1": {"peas": 6}, "freeze2": {"peas": 2}},
+    "robots": {"yeti": {"start": [1, 8], "skills": {"carry": 3}}},
+}
+
+
+@pytest.mark.parametrize("command, goal", [
+    ("move 2 peas from freeze room 1 to the pack line", {"freeze1": {"peas": 4}, "pack_line": {"peas": 2}}),
+    ("freeze store two should have 5 peas", {"freeze2": {"peas": 5}}),
+])
+def test_a_numbered_place_said_with_a_place_noun_before_its_number(command: str, goal: dict) -> None:
+    assert translate(command, COLD)["goal"] == goal
+
+
+@pytest.mark.parametrize("command", ["move 2 peas from freeze room 3 to the pack line",     # no such place
+                                     "move 2 peas from freeze thing 1 to the pack line"])   # no place noun
+def test_a_place_noun_never_makes_a_place_the_world_has_not(command: str) -> None:
+    with pytest.raises(TranslationError):
+        translate(command, COLD)

@@ -242,6 +242,9 @@ def _contents(names: list["_Name"]) -> dict[str, "_Name | None"]:
     return out
 
 
+#: nouns for a place said between a numbered place's letters and its number ("chill room 1")
+PLACE_NOUNS = KIND_WORDS["shelf"] | {"room", "rooms", "store", "cage", "line", "shed", "hall", "unit", "pen", "lane",
+                                     "aisle", "bench", "dock", "cell", "chamber", "vault", "section", "row"}
 #: words after which a place is said ("to dispatch", "off dispatch"), and words that may follow a
 #: place said there; a grammar verb that is a word of one place's name is that place only between
 #: the two ("from dispatch to intake", "in dispatch."), never before a count ("to dispatch 3 X")
@@ -508,6 +511,21 @@ class NameIndex:
             j -= 1
         return out, j
 
+    def _with_place_noun(self, raw: list[str], i: int) -> Tok | None:
+        """A numbered place said with a place noun between its letters and its number ("chill
+        room 1" for chill1, "cold store two" for cold2): read only where the letters and the
+        number name exactly one place, the noun is a word for a place (:data:`PLACE_NOUNS`), and
+        the letters with the noun name nothing else."""
+        if i + 2 >= len(raw) or raw[i + 1].lower() not in PLACE_NOUNS:
+            return None
+        alpha, digits = split_digits(normalize(raw[i]))
+        n = word_value(raw[i + 2].lower())
+        if digits or not alpha or n is None or alpha in STOPWORDS or normalize(raw[i] + raw[i + 1]) in self.forms:
+            return None
+        hits = [x for x in self.names if x.kind == "shelf" and x.alpha == alpha and x.digits
+                and int(x.digits) == n]
+        return Tok("name", " ".join(raw[i:i + 3]), hits[0].name, "shelf") if len(hits) == 1 else None
+
     def written_apart(self, raw: list[str], i: int) -> tuple[Tok, int] | None:
         """A name of two or three words starting at ``raw[i]``, in any of its spellings and
         plurals ("cable spools" for cable_spool, "paint shop" for paint-shop); the longest wins.
@@ -614,6 +632,9 @@ class NameIndex:
                                     " ".join(raw[i:i + 3]))
                 if found is not None:
                     return found, i + 3
+        found = self._with_place_noun(raw, i)
+        if found is not None:
+            return found, i + 3
         if i + 1 < len(raw) and _TOKEN.fullmatch(raw[i + 1]) and raw[i + 1][0].isalnum():
             nxt = raw[i + 1].lower()
             text = f"{raw[i]} {raw[i + 1]}"
