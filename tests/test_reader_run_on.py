@@ -102,3 +102,17 @@ def test_a_rule_closing_the_sentence_without_a_comma_holds_for_the_whole_command
 ])
 def test_phrases_typed_or_said_loosely(command: str, goal: dict) -> None:
     assert translate(command, YARD)["goal"] == goal
+
+
+def test_a_greeting_that_opens_with_a_kind_word_and_a_time_said_in_a_statement() -> None:
+    """"Good" is a kind word of products ("goods"), and "before" orders things elsewhere; "Good
+    morning team!" is a greeting and "the truck is coming before lunch" says when."""
+    got = understand("Good morning team! move 2 planks from the long rack to the saw bench, "
+                     "the truck is coming before lunch", YARD)
+    assert got["goal"] == MOVE_TWO
+    assert got["order"]["set_aside"] == ["Good morning team", "the truck is coming before lunch"]
+
+
+def test_before_a_move_in_a_statement_is_still_operative() -> None:
+    with pytest.raises(TranslationError):
+        translate("move 2 planks from the long rack to the saw bench, the truck is coming before you move them", YARD)

@@ -259,10 +259,20 @@ def is_statement(words: Iterable[str], names: Callable[[str], bool]) -> bool:
 _WHERE_BEFORE_THERE = frozenset({"under", "over", "above", "below", "beyond"})
 
 
+#: times of day and days, after which "before" / "after" / "until" say when, ordering nothing of
+#: the order ("the truck is coming before lunch")
+TIMES_SAID = frozenset({"lunch", "lunchtime", "noon", "midday", "midnight", "tonight", "tomorrow", "morning",
+                        "afternoon", "evening", "dinner", "breakfast", "teatime", "closing", "monday", "tuesday",
+                        "wednesday", "thursday", "friday", "saturday", "sunday", "weekend"})
+
+
 def _operative_at(ws: list[str], k: int) -> bool:
     """:func:`near_operative` of the word at ``k``, except a word of :data:`_WHERE_BEFORE_THERE`
-    before "there" or "here"."""
-    if ws[k] in _WHERE_BEFORE_THERE and k + 1 < len(ws) and ws[k + 1] in ("there", "here"):
+    before "there" or "here", and a word of :data:`TEMPORAL` before a time (:data:`TIMES_SAID`)."""
+    nxt = ws[k + 1] if k + 1 < len(ws) else None
+    if ws[k] in _WHERE_BEFORE_THERE and nxt in ("there", "here"):
+        return False
+    if ws[k] in TEMPORAL and nxt in TIMES_SAID:
         return False
     return near_operative(ws[k])
 

@@ -605,8 +605,10 @@ class Lexicon:
         # would make a grammar word is content (:meth:`content`)
         # a name, kind word or count stands as "\0" (a count as "\1": a reason may name places,
         # never hold a count: asides.leading_reason); both are content by themselves
+        # (a kind word keeps its text: "good" of goods opens "Good morning team"; it is content by
+        # the names test all the same)
         words = [str(t.value) if t.kind == "punct" and t.value in marks else
-                 (re.sub(r"[^a-z0-9]", "", t.text.lower()) or str(t.value) if t.kind == "word" else
+                 (re.sub(r"[^a-z0-9]", "", t.text.lower()) or str(t.value) if t.kind in ("word", "kind") else
                   "oclock" if t.kind == "num" and _clock(cur, k) else "\1" if t.kind == "num" else "\0")
                  for k, t in enumerate(cur)]
         keep: list[Tok] = []
