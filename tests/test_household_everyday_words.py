@@ -106,3 +106,20 @@ def test_a_bare_no_takes_nothing_back(shieling) -> None:
 def test_the_speaker_needing_it_is_a_reason_but_a_state_is_an_order(shieling) -> None:
     assert translate("put the pan on the hearth, I need it later", shieling)["goal"]["in"] == {"hearth": ["pan"]}
     assert translate("put the pan on the hearth, I need it washed", shieling)["goal"]["state"] == {"pan": ["clean"]}
+
+
+@pytest.mark.parametrize("command", ["wash Rosie's mug", "could you give Alfie's mug a proper wash",
+                                     "give the mug a good scrub"])
+def test_whose_a_thing_is_and_giving_it_a_wash(shieling, command: str) -> None:
+    """A person's name as whose the thing is picks nothing out (the home's one mug); "give X a
+    (proper) wash" is "wash X"."""
+    assert translate(command, shieling)["goal"]["state"] == {"tin_mug": ["clean"]}
+
+
+def test_a_name_before_what_is_no_thing_is_left_as_said() -> None:
+    """"Someone's left ..." ("has"), "It's ...": no thing of the home follows, so nothing is rewritten."""
+    from pipflow.household.language.tagger import owners_as_the
+    home = world_from_text(SHIELING, "shieling.yaml")
+    for said in ("Someone's left the pan on the stove", "It's cold in here", "Alfie's sandwiches"):
+        assert owners_as_the(said, home, []) == said
+    assert owners_as_the("Rosie's mug is dirty", home, []) == "the mug is dirty"

@@ -34,7 +34,7 @@ from pipflow.household.language.lacking import lacking
 from pipflow.household.language.lexicon import MARKS, PHRASES
 from pipflow.household.language.names import world_phrases
 from pipflow.household.language.setaside import without_asides
-from pipflow.household.language.tagger import tag
+from pipflow.household.language.tagger import owners_as_the, tag
 from pipflow.household.language.tokens import Tag
 from pipflow.language.asides import said
 from pipflow.language.characters import refuse_unread
@@ -59,6 +59,7 @@ def parse(command: str, world: dict, notes: list[str] | None = None) -> list[dic
         raise TranslationError("the command is empty")
     refuse_unread(command, MARKS)   # a character this reader does not read is refused, never skipped
     notes = notes if notes is not None else []
+    command = owners_as_the(command, world, notes)
     try:
         return _parse_with_asides(command, world, notes)
     except TranslationError as exc:

@@ -205,6 +205,34 @@ def caused(words: list[str], notes: list[str]) -> list[str]:
     return out
 
 
+#: what a thing is given ("give the pan a wash"): the verb that does it
+GIVEN = {"wash": "wash", "clean": "wash", "scrub": "wash", "rinse": "wash", "wipe": "wash", "warm": "warm",
+         "heat": "heat", "chop": "slice", "slice": "slice"}
+#: how much of it, said between "a" and the noun ("a proper wash", "a good scrub")
+_HOW_MUCH = {"good", "proper", "quick", "thorough", "decent", "little", "bit", "of", "a", "nice", "real"}
+
+
+def given(words: list[str], notes: list[str]) -> list[str]:
+    """ "give the sippy cup a proper wash" as "wash the sippy cup" (:data:`GIVEN`): "give", at most
+    five words of no clause mark, then "a", words of :data:`_HOW_MUCH`, and the noun closing the
+    clause."""
+    for i, w in enumerate(words):
+        if w != "give":
+            continue
+        for j in range(i + 2, min(i + 8, len(words))):
+            if words[j] in PUNCT:
+                break
+            if words[j] != "a":
+                continue
+            k = j + 1
+            while k < len(words) and words[k] in _HOW_MUCH:
+                k += 1
+            if k < len(words) and words[k] in GIVEN and (k + 1 == len(words) or words[k + 1] in _CLAUSE_ENDS):
+                notes.append(f"'{' '.join(words[i:k + 1])}' read as '{GIVEN[words[k]]} {' '.join(words[i + 1:j])}'")
+                return words[:i] + [GIVEN[words[k]]] + words[i + 1:j] + given(words[k + 1:], notes)
+    return list(words)
+
+
 #: what a thing is put in a heater for, said as a purpose ("pop it in the microwave to warm through")
 _HEAT_PURPOSES = {"warm", "heat"}
 

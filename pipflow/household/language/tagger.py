@@ -6,7 +6,10 @@ quotes it: nothing is skipped silently (politeness words such as "please" carry 
 listed in the lexicon)."""
 from __future__ import annotations
 
+import re
+
 from pipflow.errors import TranslationError
+from pipflow.language.asides import FUNCTION_WORDS
 from pipflow.household.language.colloquial import colloquial
 from pipflow.household.language.corrections import corrected
 from pipflow.household.language.dialect import them_as_those
@@ -16,7 +19,8 @@ from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
 from pipflow.household.language.names import named_by_first_word, things_of_kind, world_phrases
 from pipflow.household.language.retag import (act_before_noun, demonstratives, elided_it_is, left_lying, located,
                                               restated_order, without_hedges)
-from pipflow.household.language.rewrites import caused, heat_purpose, measures, or_under_negation, particles, without_manner
+from pipflow.household.language.rewrites import (caused, given, heat_purpose, measures, or_under_negation, particles,
+                                                 without_manner)
 from pipflow.household.language.tokens import PUNCT, Tag
 from pipflow.household.language.typos import (determiner_slip, known_word, meaning_of, transposition_of, typo_of,
                                               vocabulary)
@@ -64,6 +68,27 @@ def repaired(words: list[str], index: dict, vocab: set[str], notes: list[str], w
     return words
 
 
+def owners_as_the(command: str, world: dict, notes: list[str]) -> str:
+    """A person's name said as whose a thing is ("Rosie's sippy cup", "put Alfie's wellies
+    away"): a capitalised word with "'s" before the first word of a thing of the home, that is no
+    word of this home or of the reader, stands as "the": which thing is meant is the home's one
+    such thing, or it is asked.
+    The home does not know who owns what, so the owner picks nothing out."""
+    index = world_phrases(world)
+
+    def owner(m: re.Match) -> str:
+        word, after = m.group(1).lower(), m.group(2).lower()
+        if word in FUNCTION_WORDS or (word,) in PHRASES or any(key[:2] == (word, after) for key in index) or (
+                (word,) in index and not any(len(key) > 1 and key[0] == word for key in index)) \
+                or not any(key[0] == after for key in index):
+            # "It's", a word of the reader, a name of the home said so ("Rosie's cup"), or no thing
+            # of the home after it ("Someone's left ...": "has")
+            return m.group(0)
+        notes.append(f"'{m.group(1)}'s' says whose it is: read as 'the'")
+        return "the " + m.group(2)
+    return re.sub(r"(?<![\w'’])([A-Z][a-z]+)['’]s\s+([A-Za-z]+)", owner, command)
+
+
 def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
     """The command as grammar tokens (module docstring, step 1)."""
     notes = notes if notes is not None else []
@@ -71,7 +96,7 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
     vocab = vocabulary(index)
     words = or_under_negation(measures(without_manner(colloquial(corrected(words_of(command), notes), notes), notes), index, notes),
                               notes)
-    words = heat_purpose(caused(words, notes), notes)
+    words = heat_purpose(caused(given(words, notes), notes), notes)
     words = named_again(them_as_those(words, index, notes), index, notes)
     words = particles(words, lambda x: x.isalpha() and not known_word(x, index, vocab), notes)
     said = list(words)   # as typed: a repair that still names nothing is quoted as typed
