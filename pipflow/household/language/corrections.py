@@ -32,7 +32,7 @@ def corrected(words: list[str], notes: list[str]) -> list[str]:
         if marker is not None:
             after = k + len(marker) + (1 if k + len(marker) < len(words) and words[k + len(marker)] == "," else 0)
             place = after < len(words) and words[after] in PLACE_PREPOSITIONS
-            start = _last_preposition(out[:-1]) if place else _last_determiner(out[:-1])
+            start = _last_opened_by(out[:-1], PLACE_PREPOSITIONS if place else DETERMINERS)
             if after < len(words) and (place or words[after] in DETERMINERS) and start is not None:
                 taken = " ".join(out[start:-1])
                 notes.append(f"'{taken}, {' '.join(marker)}': a self-correction; read as what follows it")
@@ -44,21 +44,12 @@ def corrected(words: list[str], notes: list[str]) -> list[str]:
     return out
 
 
-def _last_preposition(words: list[str]) -> int | None:
-    """Where the last place phrase of the clause being read opens (its preposition), or None."""
+def _last_opened_by(words: list[str], openers: set[str]) -> int | None:
+    """Where the last phrase of the clause being read opens (its determiner, or its preposition of
+    place), or None."""
     for j in range(len(words) - 1, -1, -1):
         if words[j] in PUNCT:
             return None
-        if words[j] in PLACE_PREPOSITIONS:
-            return j
-    return None
-
-
-def _last_determiner(words: list[str]) -> int | None:
-    """Where the last noun phrase of the clause being read opens (its determiner), or None."""
-    for j in range(len(words) - 1, -1, -1):
-        if words[j] in PUNCT:
-            return None
-        if words[j] in DETERMINERS:
+        if words[j] in openers:
             return j
     return None
