@@ -101,14 +101,10 @@ def trailing_thanks(words: list[str], content: Callable[[str], bool]) -> int:
     like a thanks set off by one. 0 when there is none, when it is the whole clause (then the
     clause itself is talk), or when a word of it carries content in this domain (a name that
     happens to be "ta") or is operative."""
-    k = 0
-    while k < len(words):
-        if words[len(words) - k - 2:len(words) - k] == ["thank", "you"] and k + 2 <= len(words):
-            k += 2
-        elif words[len(words) - k - 1] in CLOSERS:
-            k += 1
-        else:
-            break
+    rest, k = list(words), 0
+    while rest and (rest[-2:] == ["thank", "you"] or rest[-1] in CLOSERS):
+        n = 2 if rest[-2:] == ["thank", "you"] else 1
+        rest, k = rest[:-n], k + n
     if k == 0 or k >= len(words) or any(content(w) or (w not in THANKS and w not in ("thank", "you")
                                                        and near_operative(w)) for w in words[-k:]):
         return 0
@@ -251,6 +247,12 @@ def is_statement(words: Iterable[str], names: Callable[[str], bool]) -> bool:
         w in FINITE or (w.endswith("ing") and len(w) > 4 and ws[0] in DETERMINERS) for w in ws[1:4])
     if not (pronoun or noun):
         return False
+    return _asks_nothing(ws, names)
+
+
+def _asks_nothing(ws: list[str], names: Callable[[str], bool]) -> bool:
+    """No operative word (:func:`_operative_at`), name, number, word of wanting or word for robots
+    in a statement: it says what is so, and asks for nothing."""
     return not any(_operative_at(ws, k) or names(w) or _asks(ws, k) or w in ROBOT_WORDS for k, w in enumerate(ws))
 
 
@@ -345,23 +347,22 @@ def _opens_statement(words: list[str], k: int) -> bool:
     its subject ("... out lads are relaying concrete"): a word of no function, followed by a form
     of "be", after a word that opens no noun phrase; or a determiner before such a noun ("the lads
     are ...")."""
+    def subject(j: int) -> bool:   # a noun of no function, then a form of "be"
+        return j + 1 < len(words) and words[j + 1] in ("are", "is", "were", "was") and words[j].isalpha() \
+            and words[j] not in FUNCTION_WORDS and not near_operative(words[j])
+
     if words[k] in STATEMENT_OPENERS:
         return True
-    noun = k + 1 < len(words) and words[k + 1] in ("are", "is", "were", "was") and words[k].isalpha() \
-        and words[k] not in FUNCTION_WORDS and not near_operative(words[k])
-    if noun:
+    if subject(k):
         return words[k - 1] not in DETERMINERS
-    return words[k] in ("the", "my", "our", "his", "her", "their") and k + 2 < len(words) \
-        and words[k + 2] in ("are", "is", "were", "was") and words[k + 1].isalpha() \
-        and words[k + 1] not in FUNCTION_WORDS and not near_operative(words[k + 1])
+    return words[k] in ("the", "my", "our", "his", "her", "their") and subject(k + 1)
 
 
 def _existential(ws: list[str], names: Callable[[str], bool]) -> bool:
     """ "theres customers about", "there are lads working": what there is, with no name, number,
     operative word or word of wanting in it."""
-    if not (ws[0] == "theres" or ws[:2] in (["there", "is"], ["there", "are"], ["there", "s"])):
-        return False
-    return not any(near_operative(w) or names(w) or _asks(ws, k) or w in ROBOT_WORDS for k, w in enumerate(ws))
+    return (ws[0] == "theres" or ws[:2] in (["there", "is"], ["there", "are"], ["there", "s"])) \
+        and _asks_nothing(ws, names)
 
 
 #: clauses that open a request and say nothing else ("Quick one: ...", "Right then, ...", "Whatever

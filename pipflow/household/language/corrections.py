@@ -13,8 +13,9 @@ from __future__ import annotations
 from pipflow.household.language.tokens import PUNCT
 
 #: words that take back the noun phrase just said
-MARKERS = (("no", "wait", "sorry"), ("no", "sorry", "i", "mean"), ("sorry", "i", "mean"), ("no", "wait"), ("no", "sorry"),
-           ("wait", "sorry"), ("sorry", "no"), ("or", "rather"), ("i", "mean"), ("i", "meant"), ("sorry",), ("rather",))
+MARKERS = (("no", "wait", "sorry"), ("no", "sorry", "i", "mean"), ("sorry", "i", "mean"), ("no", "wait"),
+           ("no", "sorry"), ("wait", "sorry"), ("sorry", "no"), ("or", "rather"), ("i", "mean"), ("i", "meant"),
+           ("sorry",), ("rather",))
 #: words that open where a thing goes: a correction that opens with one takes back the place said
 #: last ("in the sink - no wait sorry, on the boot bench")
 PLACE_PREPOSITIONS = {"in", "on", "into", "onto", "inside", "to", "under"}
