@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 from typing import Callable
 
 from pipflow.errors import Refusal, TranslationError
-from pipflow.household.language.lexicon import (BIN_KINDS, COLD, DEVICE_NOUNS, DEVICES, DRINK_MAKERS, INDEFINITE, LAUNDRY,
+from pipflow.household.language.lexicon import (BIN_KINDS, COLD, DEVICE_NOUNS, DEVICES, INDEFINITE, LAUNDRY,
                                                 LAUNDRY_PLACES, MASS_NOUNS, MEALS, OPPOSITE, REACHABLE, RUBBISH_KINDS,
                                                 VIA_PROPERTY, WINDOWS, plurals, words_of)
 from pipflow.household.language.nearness import nearest
@@ -661,10 +661,10 @@ class Resolver:
         """The things that warm the room (lexicon ``ROOM_HEATERS``)."""
         return self.devices("heating")
 
-    def devices(self, kind: str) -> list[str]:
+    def devices(self, kind: str, cond: str = "on") -> list[str]:
         """The things of a kind of lexicon ``DEVICES`` (room heaters, sound makers, drink makers):
-        members of a category of the world named or worded so, else things that switch whose
-        name or words are so."""
+        members of a category of the world named or worded so, else things whose name or words
+        are so; only those that can be ``cond`` (switched on; "hot": a kettle that heats)."""
         wanted = {" ".join(words_of(w)) for w in DEVICES[kind]}
         cats = [c for c, e in (self.world.get("categories") or {}).items()
                 if {" ".join(words_of(w)) for w in [c] + list((e or {}).get("words") or [])} & wanted]
@@ -672,7 +672,7 @@ class Resolver:
         if not found:
             found = [n for n, e in {**self.world["places"], **self.world["objects"]}.items()
                      if {" ".join(words_of(w)) for w in [n] + list(e.get("words") or [])} & wanted]
-        return [n for n in dict.fromkeys(found) if applies(self.world, n, "on")]
+        return [n for n in dict.fromkeys(found) if applies(self.world, n, cond)]
 
     def device_cue(self, st: dict, words: str) -> None:
         """ "it's too quiet in here", "put some music on": the home's sound makers; "could murder a
@@ -716,10 +716,7 @@ class Resolver:
         """A hot drink wished for where no drink maker switches, but one heats (a kettle put on a
         stove): that one hot. True when read; several such are asked, none leaves the caller's
         refusal."""
-        wanted = {" ".join(words_of(w)) for w in DRINK_MAKERS}
-        heated = [n for n, e in self.world["objects"].items()
-                  if {" ".join(words_of(w)) for w in [n] + list(e.get("words") or [])} & wanted
-                  and applies(self.world, n, "hot")]
+        heated = self.devices("hot drink", cond="hot")
         if not heated:
             return False
         if len(heated) > 1:

@@ -573,29 +573,25 @@ class Lexicon:
             return True
         return any(distance(word, w) <= max(1, tolerance(len(w))) for w in self._name_words)
 
-    def names_world(self, word: str) -> bool:
+    def names_world(self, word: str, closely: bool = False) -> bool:
         """Whether a word of a clause names something of this world or a count: a world name, a
         robot kind or tag, a number word, or a word within a typo's reach of a name's word (the
-        test a pleasantry's words must pass: :func:`pipflow.language.asides.is_pleasantry`)."""
-        if word in NUMBER_WORDS or word in FRACTIONS or self._group(word) is not None:
-            return True
-        if word in FUNCTION_WORDS or word in FILLERS or word in self.keywords:
-            return False  # "for" is no misspelt "four"
-        if _number_typo(word):
-            return True
-        return any(distance(word, w) <= max(1, tolerance(len(w))) for w in self._name_words)
+        test a pleasantry's words must pass: :func:`pipflow.language.asides.is_pleasantry`).
 
-    def names_closely(self, word: str) -> bool:
-        """:meth:`names_world` with only a slip of one edit from a word of the world's own names
-        (same first letter, five letters or more), for a statement run on without a comma
+        ``closely``: only a slip of one edit from a word of the world's own names (same first
+        letter, five letters or more), for a statement run on without a comma
         (:func:`pipflow.language.asides.unmarked_statement`): its ordinary words ("flat", "forks",
         "bow") are two edits from a name or one from a kind word, and it is judged word by word."""
         if word in NUMBER_WORDS or word in FRACTIONS or self._group(word) is not None:
             return True
         if word in FUNCTION_WORDS or word in FILLERS or word in self.keywords:
-            return False   # "there" is no misspelt "three"
-        return _number_typo(word) is not None or word in self._name_words or any(
-            len(w) >= 5 and w[:1] == word[:1] and distance(word, w) <= 1 for w in self._own_name_words)
+            return False  # "for" is no misspelt "four", "there" none of "three"
+        if _number_typo(word):
+            return True
+        if closely:
+            return word in self._name_words or any(
+                len(w) >= 5 and w[:1] == word[:1] and distance(word, w) <= 1 for w in self._own_name_words)
+        return any(distance(word, w) <= max(1, tolerance(len(w))) for w in self._name_words)
 
     def _clauses(self, cur: list[Tok]) -> tuple[list[Tok], list[str]]:
         """The sentence's tokens without its content-free clauses (split at commas and colons),
@@ -630,7 +626,7 @@ class Lexicon:
                 continue
             clause = list(c.words[:len(c.words) - thanks] if c is parts[-1] else c.words)
             # "... dont use flint hes got a flat tyre": a statement run on without a comma
-            n = unmarked_statement(clause, lambda w: w in _HELD or self.names_closely(w))
+            n = unmarked_statement(clause, lambda w: w in _HELD or self.names_world(w, closely=True))
             if n:
                 end = c.start + len(clause)
                 free.append(Clause(end - n, end, tuple(clause[-n:])))
