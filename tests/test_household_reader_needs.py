@@ -322,3 +322,38 @@ def test_a_world_whose_names_change_is_read_with_its_new_names(bothy):
     assert goal("Turn on the lamp.", home) == ({}, {"lamp": ["on"]})
     home["places"]["lamp"]["words"] = ["glowstick"]
     assert goal("Turn on the glowstick.", home) == ({}, {"lamp": ["on"]})
+
+
+def test_a_candidate_may_take_two_changes(bothy):
+    """A wording that still does not read is worded again from its own refusal: a misspelling two
+    edits away repaired, then a clause of talk left out. Each change is said in the echo; with
+    one change at a time neither reads."""
+    command = "Slice the tunrpi, we're lantrn spotting."
+    cands = offered(command, bothy)
+    assert ({}, {"turnip": ["sliced"]}) in _goals(cands)
+    two = next(c for c in cands if _goals([c])[0] == ({}, {"turnip": ["sliced"]}))
+    assert "'tunrpi' read as 'turnip'" in two["reading"] and "read without 'we are lantrn spotting'" in two["reading"]
+
+
+def test_robots_addressed_by_name_are_offered_without_their_names(bothy):
+    """The household order has no robot rules: "Moss, wash the jug, and Wren, you slice the turnip"
+    is refused (reading the names away would drop who the speaker chose), and offered without the
+    names, the echo saying who does what is left to the team."""
+    named = world_from_text(BOTHY.replace("  r1:", "  moss:").replace("  r2:", "  wren:"), "bothy.yaml")
+    for command in ("Moss, wash the jug, and Wren, you slice the turnip.",
+                    "Wash the jug, then Moss can slice the turnip."):
+        cands = offered(command, named)
+        assert ({}, {"jug": ["clean"], "turnip": ["sliced"]}) in _goals(cands)
+        assert "robots named" in cands[0]["reading"] and "left to the team" in cands[0]["reading"]
+    # a robot named like a thing of the home is that thing, not an address
+    lamp_named = world_from_text(BOTHY.replace("  r1:", "  lantern:"), "bothy.yaml")
+    assert not any("robots named" in c["reading"] for c in offered("Lantern, wash the jug blorp.", lamp_named))
+
+
+def test_the_words_of_a_command_are_a_fresh_list_each_time():
+    """words_of is kept between calls (reading time); a caller that changes its list must not change
+    the next caller's."""
+    from pipflow.household.language.lexicon import words_of
+    first = words_of("Wash the jug, it's grubby.")
+    first.append("blorp")
+    assert words_of("Wash the jug, it's grubby.") == ["wash", "the", "jug", ",", "it", "is", "grubby", "."]

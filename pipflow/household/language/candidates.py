@@ -34,7 +34,7 @@ import json
 import re
 from typing import Callable
 
-from pipflow.errors import PipflowError, TranslationError
+from pipflow.errors import PipflowError, Refusal, TranslationError
 from pipflow.household.language.lexicon import HUNGRY, LEAVING_REASONS, NEEDS_OFFERED, words_of
 from pipflow.household.language.names import world_phrases
 from pipflow.household.language.rewrites import without_duration
@@ -46,7 +46,9 @@ from pipflow.language.spelling import distance
 #: at most this many candidate readings are offered
 MAX_CANDIDATES = 3
 #: at most this many other wordings are read while looking for them
-MAX_TRIES = 10
+MAX_TRIES = 16
+#: at most this many changes make one wording (a repair, then a word left out, ...)
+MAX_CHANGES = 3
 #: words the reader refuses that join a list, and the joiner a candidate reads them as ("or" is
 #: a choice where the reader refuses it; in "nobody is using X or Y" it lists both)
 JOINERS = {"or": "and", "nor": "and"}
@@ -165,6 +167,8 @@ def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[
     def swap(w: str, by: str) -> str:
         return " ".join(by if x == w else x for x in words)
 
+    out += _robots_addressed(command, world, index)
+
     for w in unknown:   # one edit first, then a modifier's whole name, then two edits
         out += [(swap(w, v), f"'{w}' read as '{v}'", v, {}) for d, v in near[w] if d == 1]
     for w in unknown:   # "the cupboard" where two things are cupboards: each of them
@@ -234,6 +238,32 @@ def _place_phrases(words: list[str], unknown: list[str]) -> list[tuple[str, str,
     return out
 
 
+#: words after a robot's name that make it the one addressed ("Ladle, you slice it", "then Ladle
+#: can give it a scrub"): left out with the name
+_ADDRESSED_BY = r"(?:,\s*)?(?:(?:you|can|will|could|would|please|love|dear)\b[\s,]*)*"
+
+
+def _robots_addressed(command: str, world: dict, index: dict) -> list[tuple[str, str, str, dict]]:
+    """ "Clover, fetch the bread, and Ladle, you slice it": the household order has no robot rules,
+    so the reader refuses a command that says who does what. Offered: the command without the
+    robots' names (and the "you", "can" or "will" that follow one), the echo saying that who does
+    what is left to the team's allocation. A name that is also a thing of the home is left alone."""
+    names = [r.lower() for r in (world.get("robots") or {}) if tuple(words_of(r)) not in index]
+    if not names:
+        return []
+    # "zip_1" said "zip 1" or "zip-1"
+    one = "(?:" + "|".join(re.escape(n).replace("_", "[ _-]?") for n in sorted(names, key=len, reverse=True)) + ")"
+    pattern = re.compile(rf"\b{one}(?:\s*(?:,|and|&)\s*{one})*\b\s*{_ADDRESSED_BY}", re.IGNORECASE)
+    said = [m.group(0) for m in pattern.finditer(command)]
+    if not said:
+        return []
+    rest = re.sub(r"\s*,(\s*,)+", ",", pattern.sub(" ", command)).strip(" ,")
+    who = sorted({n for n in names if any(re.search(rf"\b{re.escape(n).replace('_', '[ _-]?')}\b", m, re.IGNORECASE)
+                                          for m in said)})
+    return [(rest, "read without the robots named (" + ", ".join(who) + "): who does what is left to the team",
+             " ".join(who), {})]
+
+
 def _topics(parts: list[str], index: dict) -> list[tuple[str, str, str, dict]]:
     """ "Shepherd's pie for tea tonight - it just wants warming through": a clause that names a thing
     and reads as nothing else, then a clause about "it": the thing in place of the pronoun."""
@@ -256,22 +286,44 @@ def candidate_readings(command: str, world: dict, error: TranslationError,
                        read: Callable[[str, dict, dict], dict]) -> list[dict]:
     """Up to :data:`MAX_CANDIDATES` readings to offer for a refused command (module docstring),
     after those the error already offers. ``read(text, world, choose)`` is the translator without
-    candidates (a wording that does not read is skipped, never offered)."""
+    candidates (a wording that does not read is skipped, never offered).
+
+    A wording that is still not understood is worded again from its own refusal, up to
+    :data:`MAX_CHANGES` changes in all ("draning" read as "draining", then "to dry" where the
+    reading stopped left out): one change at a time often leaves the next word in the way. The
+    search is breadth first (every wording of one change before any of two), so the fewest
+    changes are offered first, and bounded by :data:`MAX_TRIES` readings."""
     offered = list(error.candidates)
     seen = {_goal_key(c.get("goal") or {}) for c in offered}
+    tried: set[tuple[str, str]] = set()
     tries = 0
-    for text, how, rests_on, choose in _wordings(command, world, error):
-        if len(offered) >= MAX_CANDIDATES or tries >= MAX_TRIES:
-            break
-        tries += 1
-        try:
-            got = read(text, world, choose)
-        except PipflowError:
-            continue
-        key = _goal_key(got["goal"])
-        if key in seen or not any(got["goal"].get(k) for k in ("in", "state", "count")):
-            continue
-        seen.add(key)
-        offered.append({"reading": f"{how}: " + "; ".join(got["explain"]), "goal": got["goal"],
-                        "order": got["order"], "words": rests_on})
+    # (wording, its refusal, how it differs so far, the words it rests on so far, its choices, changes)
+    frontier: list[tuple[str, TranslationError, list[str], list[str], dict, int]] = [(command, error, [], [], {}, 0)]
+    while frontier and len(offered) < MAX_CANDIDATES and tries < MAX_TRIES:
+        said, refusal, hows, rests, chosen, changes = frontier.pop(0)
+        for text, how, rests_on, choose in _wordings(said, world, refusal):
+            if len(offered) >= MAX_CANDIDATES or tries >= MAX_TRIES:
+                break
+            choose = {**chosen, **choose}
+            key = (text, json.dumps(choose, sort_keys=True))
+            if key in tried:
+                continue
+            tried.add(key)
+            tries += 1
+            try:
+                got = read(text, world, choose)
+            except Refusal:   # impossible as worded: never offered, never worded again
+                continue
+            except TranslationError as exc:
+                if changes + 1 < MAX_CHANGES:
+                    frontier.append((text, exc, hows + [how], rests + [rests_on], choose, changes + 1))
+                continue
+            except PipflowError:
+                continue
+            key_goal = _goal_key(got["goal"])
+            if key_goal in seen or not any(got["goal"].get(k) for k in ("in", "state", "count")):
+                continue
+            seen.add(key_goal)
+            offered.append({"reading": "; ".join(hows + [how]) + ": " + "; ".join(got["explain"]), "goal": got["goal"],
+                            "order": got["order"], "words": "; ".join(rests + [rests_on])})
     return offered[:MAX_CANDIDATES]

@@ -10,6 +10,7 @@ them for users. A word in neither half is never skipped: the parser refuses and 
 """
 from __future__ import annotations
 
+import functools
 import re
 
 #: verbs asking for a state (value: the goal condition); "open", "shut", "clean", "warm" have
@@ -682,7 +683,15 @@ def normalize(text: str) -> str:
 def words_of(text: str) -> list[str]:
     """Tokens: words, numbers and the punctuation that separates clauses. A signed or decimal
     number ("-2", "3.5") stays one token, which no count reads: it is refused, never read as 2."""
-    return re.findall(r"-?\d+(?:[.,]\d+)?|[a-z]+|[.,;!?:]", normalize(text))
+    return list(_tokens(text))
+
+
+@functools.lru_cache(maxsize=8192)
+def _tokens(text: str) -> tuple[str, ...]:
+    """:func:`words_of`, kept: the names of a home's things are split into words again and again
+    (every name index and every candidate reading), and :func:`normalize` is some forty regular
+    expressions."""
+    return tuple(re.findall(r"-?\d+(?:[.,]\d+)?|[a-z]+|[.,;!?:]", normalize(text)))
 
 
 def plurals(phrase: str) -> list[str]:

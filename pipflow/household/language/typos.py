@@ -17,11 +17,16 @@ CONTENT_CLASSES = {"V_STATE", "V_OPEN", "V_SHUT", "V_CLEAN", "V_WARM", "V_TOGGLE
                    "TEMPCUE", "V_TEND"}
 
 
+#: the lexicon's one-word content words, and every word of its phrases and fillers (the lexicon is
+#: complete once imported; these are asked of every word of every reading)
+_CONTENT_WORDS = frozenset(w for k, (cls, _) in PHRASES.items() if cls in CONTENT_CLASSES and len(k) == 1 for w in k)
+_LEXICON_WORDS = frozenset(w for key in PHRASES for w in key) | frozenset(w for key in FILLER for w in key)
+
+
 def vocabulary(world_index: dict) -> set[str]:
     """Words a misspelt word may be read as: the world's words, the lexicon's content words and
     the few politeness words of ``FILLER_TYPO_TARGETS`` ("plese")."""
-    vocab = {w for k, (cls, _) in PHRASES.items() if cls in CONTENT_CLASSES and len(k) == 1 for w in k}
-    vocab |= FILLER_TYPO_TARGETS
+    vocab = set(_CONTENT_WORDS) | FILLER_TYPO_TARGETS
     vocab |= {w for k in world_index for w in k}
     return {w for w in vocab if len(w) >= 3}
 
@@ -29,8 +34,8 @@ def vocabulary(world_index: dict) -> set[str]:
 def known_word(w: str, index: dict, vocab: set[str]) -> bool:
     """Whether the tagger reads ``w`` as it is: a word of the world, of the lexicon, of the
     politeness list, a number or a mark."""
-    return w in vocab or w in PUNCT or w.isdigit() or any(w in key for key in PHRASES) or \
-        any(w in key for key in index) or any(w in key for key in FILLER) or bool(read_number([w], 0))
+    return w in vocab or w in PUNCT or w.isdigit() or w in _LEXICON_WORDS or \
+        any(w in key for key in index) or bool(read_number([w], 0))
 
 
 #: endings of English inflection: a shared one says nothing of whether two words are one word

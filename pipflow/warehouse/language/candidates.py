@@ -41,20 +41,24 @@ def candidates(command: str, world: dict, exc: TranslationError) -> list[dict]:
     seen: set[str] = set()
     CANDIDATE_BUDGET["left"] = CANDIDATE_PARSES
     word = getattr(exc, "word", None)
+    lexed = lexed_command(command, world)[0] if word else None
+    # a word no rule places may be a near miss of a word that has a place: the command read with
+    # it respelt, once for each near word, the repair said in the echo; and an unknown word before
+    # the last word of one name ("the big rack": high_rack)
+    repaired = [(text, f"read '{word}' as '{right}'") for right in (near_words(word, lexed) if word else [])
+                for text in [with_word(command, word, right)] if text is not None]
+    repaired += [(with_phrase(command, wrong, right), f"read '{wrong}' as '{right}'")
+                 for wrong, right in (by_head_word(command, word, lexed) if word else [])]
+    salvages = picks[-len(SALVAGE):]
     # the readings to try, in order; the first three that resolve to different meanings are
     # offered, so the search stops there (what it would find later is never offered)
     tries: list[Callable[[], None]] = [
         *(functools.partial(candidate, command, world, pick, out, seen) for pick in picks[:-len(SALVAGE)]),
-        # a word no rule places may be a near miss of a word that has a place: the command read
-        # with it respelt, once for each near word, the repair said in the echo
-        *(functools.partial(with_choices, repaired, world, {}, out, seen, note=f"read '{word}' as '{right}'")
-          for right in (near_words(word, lexed_command(command, world)[0]) if word else [])
-          for repaired in [with_word(command, word, right)] if repaired is not None),
-        # an unknown word before the last word of one name ("the big rack": high_rack)
-        *(functools.partial(with_choices, with_phrase(command, wrong, right), world, {}, out, seen,
-                            note=f"read '{wrong}' as '{right}'")
-          for wrong, right in (by_head_word(command, word, lexed_command(command, world)[0]) if word else [])),
-        *(functools.partial(with_choices, command, world, pick, out, seen) for pick in picks[-len(SALVAGE):]),
+        *(functools.partial(with_choices, text, world, {}, out, seen, note=note) for text, note in repaired),
+        *(functools.partial(with_choices, command, world, pick, out, seen) for pick in salvages),
+        # a repair that leaves another word in the way: the repaired command's partial parses
+        *(functools.partial(with_choices, text, world, pick, out, seen, note=note)
+          for text, note in repaired for pick in salvages),
     ]
     try:
         for attempt in tries:
@@ -65,8 +69,6 @@ def candidates(command: str, world: dict, exc: TranslationError) -> list[dict]:
         CANDIDATE_BUDGET["left"] = None
     return out[:MAX_CANDIDATES]
 
-
-#: the partial parses a refusal offers, in this order (:func:`_dropped`; "sentence": a sentence
 
 def with_choices(command: str, world: dict, pick: dict, out: list[dict], seen: set[str], note: str = "") -> None:
     """:func:`_candidate`, and where that reading stops at a sentence with competing readings (a
@@ -103,6 +105,3 @@ def candidate(command: str, world: dict, pick: dict, out: list[dict], seen: set[
     out.append({"reading": "; ".join(explanation), "explanation": explanation,
                 "goal": got.goal, "constraints": got.constraints, "unread": unread,
                 "words": "; ".join(x["words"] for x in order["statements"] + order["rules"]), "order": order})
-
-
-#: words (or clauses) a partial parse may leave out of one sentence, at most: each costs a parse of
