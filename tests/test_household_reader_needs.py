@@ -357,3 +357,23 @@ def test_the_words_of_a_command_are_a_fresh_list_each_time():
     first = words_of("Wash the jug, it's grubby.")
     first.append("blorp")
     assert words_of("Wash the jug, it's grubby.") == ["wash", "the", "jug", ",", "it", "is", "grubby", "."]
+
+
+def test_a_later_change_never_takes_out_a_word_an_earlier_one_put_in(bothy, monkeypatch):
+    """ "The jug smells fine": were "fine" repaired to a word the reading then stops at, leaving
+    that word out would drop "fine" in two changes, which no single change may do (the rest says
+    the opposite). The first wording is forced here; the search must not build on it that way."""
+    from pipflow.household.language import candidates
+
+    real = candidates._wordings
+
+    def forced(said, world, error):
+        if "fine" in said:
+            return [("the jug smells fix .", "'fine' read as 'fix'", "fix", {})]
+        return real(said, world, error)
+
+    assert goal("The jug smells.", bothy) == ({}, {"jug": ["clean"]})   # what dropping it would read
+    monkeypatch.setattr(candidates, "_wordings", forced)
+    assert ({}, {"jug": ["clean"]}) not in _goals(offered("The jug smells fine.", bothy))
+    monkeypatch.setattr(candidates, "_wordings", real)
+    assert not offered("The jug smells fine.", bothy)   # "fine" is an appraisal: never repaired, never dropped

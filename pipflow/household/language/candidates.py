@@ -32,6 +32,7 @@ from __future__ import annotations
 
 import json
 import re
+from collections import Counter
 from typing import Callable
 
 from pipflow.errors import PipflowError, Refusal, TranslationError
@@ -163,13 +164,13 @@ def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[
     # "kettle" is never offered as "bottle"
     near: dict[str, list[tuple[int, str]]] = {
         w: sorted((d, v) for d, v in ((distance(w, v), v) for v in vocab if len(w) >= 4 and abs(len(v) - len(w)) <= 2)
-                  if d == 1 or (d == 2 and v[0] == w[0]))[:3] for w in unknown}
+                  if d == 1 or (d == 2 and v[0] == w[0]))[:3] for w in unknown if w not in APPRAISALS}
     def swap(w: str, by: str) -> str:
         return " ".join(by if x == w else x for x in words)
 
     out += _robots_addressed(command, world, index)
 
-    for w in unknown:   # one edit first, then a modifier's whole name, then two edits
+    for w in near:   # one edit first, then a modifier's whole name, then two edits
         out += [(swap(w, v), f"'{w}' read as '{v}'", v, {}) for d, v in near[w] if d == 1]
     for w in unknown:   # "the cupboard" where two things are cupboards: each of them
         fulls = heads.get(w) or next((heads[s] for s in _singulars(w) if s in heads), [])
@@ -177,7 +178,7 @@ def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[
     for w in unknown:   # "the leftovers" of leftover_curry: a modifier said alone, in the plural too
         fulls = modifiers.get(w) or next((modifiers[s] for s in _singulars(w) if s in modifiers), [])
         out += [(swap(w, full), f"'{w}' read as '{full}'", full, {}) for full in fulls]
-    for w in unknown:
+    for w in near:
         out += [(swap(w, v), f"'{w}' read as '{v}'", v, {}) for d, v in near[w] if d == 2]
     if not unknown:   # "the table lamp" where no lamp is on the table: the thing its last word names
         text = " ".join(words)
@@ -292,18 +293,26 @@ def candidate_readings(command: str, world: dict, error: TranslationError,
     :data:`MAX_CHANGES` changes in all ("draning" read as "draining", then "to dry" where the
     reading stopped left out): one change at a time often leaves the next word in the way. The
     search is breadth first (every wording of one change before any of two), so the fewest
-    changes are offered first, and bounded by :data:`MAX_TRIES` readings."""
+    changes are offered first, and bounded by :data:`MAX_TRIES` readings. A word one change puts in
+    is never taken out by a later one: "fine" read as "fix" and then "fix" left out would drop the
+    word that said the opposite, which no single change may do."""
     offered = list(error.candidates)
     seen = {_goal_key(c.get("goal") or {}) for c in offered}
     tried: set[tuple[str, str]] = set()
     tries = 0
-    # (wording, its refusal, how it differs so far, the words it rests on so far, its choices, changes)
-    frontier: list[tuple[str, TranslationError, list[str], list[str], dict, int]] = [(command, error, [], [], {}, 0)]
+    # (wording, its refusal, how it differs so far, the words it rests on so far, its choices,
+    # changes, the words the changes put in)
+    frontier: list[tuple[str, TranslationError, list[str], list[str], dict, int, Counter]] = \
+        [(command, error, [], [], {}, 0, Counter())]
     while frontier and len(offered) < MAX_CANDIDATES and tries < MAX_TRIES:
-        said, refusal, hows, rests, chosen, changes = frontier.pop(0)
+        said, refusal, hows, rests, chosen, changes, put_in = frontier.pop(0)
+        said_words = Counter(words_of(said))
         for text, how, rests_on, choose in _wordings(said, world, refusal):
             if len(offered) >= MAX_CANDIDATES or tries >= MAX_TRIES:
                 break
+            text_words = Counter(words_of(text))
+            if any(text_words[w] < said_words[w] for w in put_in):
+                continue
             choose = {**chosen, **choose}
             key = (text, json.dumps(choose, sort_keys=True))
             if key in tried:
@@ -316,7 +325,8 @@ def candidate_readings(command: str, world: dict, error: TranslationError,
                 continue
             except TranslationError as exc:
                 if changes + 1 < MAX_CHANGES:
-                    frontier.append((text, exc, hows + [how], rests + [rests_on], choose, changes + 1))
+                    frontier.append((text, exc, hows + [how], rests + [rests_on], choose, changes + 1,
+                                     put_in + (text_words - said_words)))
                 continue
             except PipflowError:
                 continue

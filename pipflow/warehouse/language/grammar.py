@@ -198,7 +198,8 @@ there_be: ("there" | "theyre" | "their" | "theres") (modal? "be" | "is" | "are")
 go: "go" | "goes" | "move" | "moves" | "be" "moved" | "be" "sent" | "be" "taken" | "be" "brought"
   | "be" "transferred" | "be" "shipped" | "be" "relocated" | "be" "carried" | "be" "delivered"
   | "end" "up" | "travel" | "be" "put" | "moved" | "sent" | "taken" | "brought" | "delivered" | "shifted"
-from: "from" | "out" "of" | "off" | "off" "of"
+// "take 4 wallets out the cage": "out" alone says from, as "out of" does
+from: "from" | "out" "of" | "out" | "off" | "off" "of"
 moving: "moving" | "moved" | "shifting" | "shifted" | "taking" | "taken" | "bringing" | "brought" | "sending" | "sent"
 to: "to" | "into" | "onto" | "over" "to"
 
@@ -337,6 +338,8 @@ goal: there_be items loc                                  -> g_set
     | addv items except_places to places                   -> g_transfer_except
     | items ("on" | "in" | "at" | "from") places modal? go to places -> g_transfer
     | items from places modal? go? to places                -> g_transfer
+    // said without "from": "3 satchels top rack to despatch"
+    | items places to places                                -> g_transfer
     | items modal? go from places to places                 -> g_transfer
     // "Need 2 lawn feed moving from dock 1 to dock 2", "we want 3 X taking to P from Q"
     | (("i" | "we")? ("need" | "want") | "needs" | "wants") items moving from places to places -> g_transfer
@@ -403,6 +406,8 @@ goal: there_be items loc                                  -> g_set
     // "east bench's pots should come down to 1", "the pots on east bench should go up to 5"
     | pitem_plain modal? ("come" | "go" | "get") ("down" | "up") "to" NUM -> g_item_first
     | ihead loc modal? ("come" | "go" | "get") ("down" | "up") "to" NUM -> g_item_first
+    // said without a verb: "belts on despatch down to 1" ("up to N" alone is a bound, so not here)
+    | (pitem_plain | ihead loc) "down" "to" NUM              -> g_item_first
     | ("leave" | "keep") its ihead (lsep ihead)* as_is?        -> g_keep_its_elided
     | ("make" | "set" | "bring" | "get" | "have") posplace ihead ("count" | "number" | "level" | "stock" | "total")? ("equal" "to" | "to" | "same" "as" | "match" | "equal") posplace ihead? -> g_equal_poss
     | putv "as" "many" ihead loc "as" ("there" ("are" | "is") | "sit" | "are") ("on" | "in" | "at") PLACE ((lsep) PLACE)* together? -> g_as_many_there
@@ -425,7 +430,7 @@ above: ("go" | "goes" | "get" | "gets" | "rise" | "rises" | "climb" | "climbs") 
 below: ("go" | "goes" | "get" | "gets" | "drop" | "drops" | "fall" | "falls" | "dip" | "dips" | "sink" | "sinks") ("below" | "under" | "beneath")
 on_top: ("on" "top" "of" | "in" "addition" "to" | "besides" | "over" "and" "above") "what" (("it" | "they") ("has" | "have" | "holds" | "hold" | "is" "got" | "has" "got" | "have" "got" | "s" "got") now? | ("is" | "s") "already"? "there")
 adv: "over" | "back" | "across" | "along" | "out"
-src: ("in" | "on" | "at" | "from" | "off" | "out" "of" | "of") places
+src: ("in" | "on" | "at" | "from" | "off" | "out" "of" | "out" | "of") places
 pitems: frac of? posplace ihead appos?                     -> pi_frac
       | "half" of? posplace ihead appos?                   -> pi_frac
       | NUM of? posplace ihead appos?                      -> pi_count
@@ -507,7 +512,8 @@ rgroup: (all | "a" | "an" | "any")? (RKIND | RTAG)        -> r_kind
       | all? ROBOTWORD ("with" | "whose") skillv ("is" | "of")? ("at" "least" NUM | NUM ("or" "more" | "or" "above" | "plus")) -> r_skill_min
       | all? ROBOTWORD ("with" | "whose") skillv ("is" | "of")? ("at" "most" NUM | NUM "or" ("less" | "fewer" | "below")) -> r_skill_max
       | all? ROBOTWORD ("carrying" | "lifting" | "with" skillv | ("that" | "who") able? skillv | "whose" skillv "is") cmp per_trip? -> r_skill_cmp
-      | SUPER ROBOTWORD?                                  -> r_super
+      // "the weakest one": "one" is lexed as NUM; the reader takes it only when the word is "one"
+      | SUPER (ROBOTWORD | NUM)?                           -> r_super
       | NUM "of" SUPER ROBOTWORD                           -> r_super
 all: "all" | "any" | "every"
 cmp: ("at" "least" | "no" "less" "than" | "no" "fewer" "than" | "not" "less" "than") NUM -> cmp_min

@@ -82,6 +82,10 @@ class RobotSelector:
             return {"skill": skill, "at_most": n - 1}
         if node.data == "r_super":
             t = next(v for v in vals if v.type == "SUPER")
+            after = words.lower().split()
+            k = next((i for i, w in enumerate(after) if w in SUPER_WORDS), len(after))
+            if vals[-1].type == "NUM" and vals[0].type == "SUPER" and after[k + 1:k + 2] != ["one"]:
+                raise TranslationError(f"'{words}': a number after '{after[k]}' is not a group of robots")
             sel = {"extreme": str(t.value), "skill": self._skill([], words)}
             self._check_tie(sel, vals, words)
             return sel

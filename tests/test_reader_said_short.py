@@ -1,0 +1,65 @@
+"""Moves and counts said short, as a team leader types them between jobs (issue 23's eleventh
+round): "out" for "out of", a move without "from", a count brought "down to" N without a verb,
+and "the weakest one". Each was refused on a word; none may be read wider than it was said."""
+from __future__ import annotations
+
+import copy
+
+import pytest
+
+from pipflow.errors import TranslationError
+from pipflow.warehouse.language.translator import translate
+from tests.tannery_world import TANNERY
+
+# tannery stock: drying_loft {cart_wheel 6, belt_round 2}, vat_east {cart_wheel 1, dye_drum 4},
+# vat_west {belt_round 5}, finishing_table {dye_drum 1}; carry: crane 4, mule1 2, mule2 2, flea 1
+
+TWO_FROM_THE_LOFT = {"drying_loft": {"cart_wheel": 4}, "vat_west": {"cart_wheel": 2}}
+
+
+@pytest.mark.parametrize("command", ["take 2 cart wheels out the drying loft and drop them at vat west",
+                                     "2 cart wheels drying loft to vat west",
+                                     "move 2 cart wheels drying loft to vat west"])
+def test_a_move_said_without_from(command: str) -> None:
+    assert translate(command, TANNERY)["goal"] == TWO_FROM_THE_LOFT
+
+
+def test_moves_said_without_from_in_a_list() -> None:
+    got = translate("2 cart wheels drying loft to vat west and 1 vat west to vat east", TANNERY)
+    assert got["goal"] == {"drying_loft": {"cart_wheel": 4}, "vat_west": {"cart_wheel": 1}, "vat_east": {"cart_wheel": 2}}
+
+
+def test_out_alone_still_needs_a_destination() -> None:
+    with pytest.raises(TranslationError, match="where these go"):
+        translate("2 cart wheels out the drying loft", TANNERY)
+
+
+@pytest.mark.parametrize("command", ["belt rounds on vat west down to 2", "vat west belt rounds down to 2"])
+def test_down_to_without_a_verb_sets_the_count(command: str) -> None:
+    assert translate(command, TANNERY)["goal"] == {"vat_west": {"belt_round": 2}}
+
+
+@pytest.mark.parametrize("command", ["belt rounds on vat west up to 2",   # "up to N" alone is a bound, not read here
+                                     "belt rounds on vat west down 2"])   # down by 2, or to 2? not guessed
+def test_up_to_and_down_without_to_are_not_read_as_a_count(command: str) -> None:
+    with pytest.raises(TranslationError):
+        translate(command, TANNERY)
+
+
+def test_the_weakest_one_is_the_one_weakest_robot() -> None:
+    got = translate("2 cart wheels from drying loft to vat west, leave the weakest one out of it", TANNERY)
+    assert got["goal"] == TWO_FROM_THE_LOFT
+    assert got["constraints"] == [{"never": ["flea"]}]
+    assert translate("2 cart wheels from drying loft to vat west, only the strongest one", TANNERY)["constraints"][0]["only"] == ["crane"]
+
+
+def test_the_weakest_one_where_three_tie_is_asked() -> None:
+    tie = copy.deepcopy(TANNERY)
+    tie["robots"]["flea"]["skills"]["carry"] = 2
+    with pytest.raises(TranslationError, match="3 robots tie"):
+        translate("2 cart wheels from drying loft to vat west, leave the weakest one out of it", tie)
+
+
+def test_a_number_after_strongest_other_than_one_is_refused() -> None:
+    with pytest.raises(TranslationError, match="a number after 'strongest'"):
+        translate("2 cart wheels from drying loft to vat west, only the strongest 2", TANNERY)
