@@ -377,3 +377,38 @@ def test_a_later_change_never_takes_out_a_word_an_earlier_one_put_in(bothy, monk
     assert ({}, {"jug": ["clean"]}) not in _goals(offered("The jug smells fine.", bothy))
     monkeypatch.setattr(candidates, "_wordings", real)
     assert not offered("The jug smells fine.", bothy)   # "fine" is an appraisal: never repaired, never dropped
+
+
+def test_where_the_speaker_is_is_where_me_is(bothy):
+    """ "I'm sat at the trestle, bring me the turnip": the home model has no person; the clause
+    that says where the speaker is gives "me" a place, and is said in the notes. Without a "bring
+    me" after it, or with more in it than where, the clause is not read so."""
+    assert goal("I'm sat at the trestle, bring me the turnip.", bothy) == ({"trestle": ["turnip"]}, {})
+    assert goal("I'm at the trestle, fetch me the turnip and the plum, and wash the jug.", bothy) == \
+        ({"trestle": ["plum", "turnip"]}, {"jug": ["clean"]})
+    notes = translate("I'm just sitting at the trestle, can you bring me the turnip?", bothy)["notes"]
+    assert any("where you are" in n for n in notes), notes
+    for command in ("I'm at the trestle, bring the turnip.",            # no "me": not guessed to be there
+                    "I'm at the trestle with a cold, bring me the turnip."):   # more than where
+        with pytest.raises(TranslationError):
+            translate(command, bothy)
+
+
+def test_a_step_closed_by_when_it_is_done_is_the_order_of_the_steps(bothy):
+    assert goal("Wash the jug and put it in the dresser when it's done.", bothy) == \
+        ({"dresser": ["jug"]}, {"dresser": ["closed"], "jug": ["clean"]})
+    assert goal("Wash the jug and put it in the dresser once you're finished.", bothy) == \
+        ({"dresser": ["jug"]}, {"dresser": ["closed"], "jug": ["clean"]})
+
+
+def test_sat_and_stood_say_where_a_thing_lies_about(bothy):
+    for verb in ("sat", "sitting", "stood"):
+        assert goal(f"The turnip's been {verb} out on the bench all day. Put it back in the larder.", bothy) == \
+            ({"larder": ["turnip"]}, {"larder": ["closed"]})
+
+
+def test_what_the_speaker_will_have_it_with_is_set_aside(bothy):
+    assert goal("Slice the turnip, I'll have it with my tea.", bothy) == ({}, {"turnip": ["sliced"]})
+    # a wish with no pronoun is a wish: not set aside
+    with pytest.raises(TranslationError):
+        translate("Slice the turnip, I'll have the plum with it.", bothy)

@@ -133,7 +133,9 @@ _add("STAY", "where it is,where they are,as it is,as they are,alone,in place,whe
 #: "someone's left the lemon out": disorder said of things, like ``MESS`` (a later clause that
 #: acts on them makes it the reason)
 #: "my coat has been lying on the sofa": a thing said to lie about somewhere, disorder like ``MESS``
-_add("LYING", "lying,left lying,lying there,sitting there")
+#: (British "sat", "stood": "the butter's been sat out on the table"; "out" before where it is)
+_add("LYING", "lying,left lying,lying there,sitting there,sitting,sat,sat there,stood,stood there,standing there,"
+     "lying out,sitting out,sat out,stood out,standing out,left sitting,left sat,left standing,left stood")
 #: "the fridge has been left open": a state complained of (a class the tagger gives "has been
 #: left" before a state word: :func:`pipflow.household.language.retag.left_lying`)
 _add("LEFTAS", "left as is")

@@ -59,14 +59,24 @@ PURPOSE_OPENERS = tuple(("so",) + that + who for that in ((), ("that",))
 WISH_VERBS = {"need", "want", "like", "have", "take", "be", "wish", "prefer", "love"}
 
 
+#: what the speaker will have what the order makes with, or for ("I'll have it with my tea"):
+#: a wish verb with a pronoun, then one of these, is the speaker's use of it, no wish
+USE_LINKS = {"with", "for", "at", "in", "by"}
+
+
 def speaker_doing(words: tuple[str, ...]) -> bool:
     """Whether a clause says what the speaker will do ("I'll grab the milk myself"): it opens with
     :data:`SPEAKER_OPENERS`, its verb is no wish (:data:`WISH_VERBS`) and it has no negation or
-    exclusivity ("I'll not ...", "I'll only ..."), which would bear on what the robots do."""
+    exclusivity ("I'll not ...", "I'll only ..."), which would bear on what the robots do. A wish
+    verb taking a pronoun and then how or when the speaker uses it ("I'll have it with my tea",
+    "we'll have them for supper") is the speaker's doing too: "it" is what the order is about."""
     for opener in SPEAKER_OPENERS + PURPOSE_OPENERS:
         if words[:len(opener)] == opener and len(words) > len(opener):
             rest = words[len(opener):]
-            return rest[0] not in WISH_VERBS and not any(w in NEGATION or w in EXCLUSIVITY for w in rest)
+            if any(w in NEGATION or w in EXCLUSIVITY for w in rest):
+                return False
+            using = len(rest) > 3 and rest[0] in ("have", "take") and rest[1] in ("it", "them") and rest[2] in USE_LINKS
+            return rest[0] not in WISH_VERBS or using
     return speaker_needing(words)
 
 

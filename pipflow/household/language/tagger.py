@@ -24,6 +24,7 @@ from pipflow.household.language.rewrites import (caused, given, heat_purpose, me
 from pipflow.household.language.tokens import PUNCT, Tag
 from pipflow.household.language.typos import (determiner_slip, known_word, meaning_of, transposition_of, typo_of,
                                               vocabulary)
+from pipflow.household.language.whereabouts import me_as_where_the_speaker_is
 from pipflow.language.numbers import read_number
 
 
@@ -96,7 +97,7 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
     vocab = vocabulary(index)
     words = or_under_negation(measures(without_manner(colloquial(corrected(words_of(command), notes), notes), notes), index, notes),
                               notes)
-    words = heat_purpose(caused(given(words, notes), notes), notes)
+    words = heat_purpose(caused(given(me_as_where_the_speaker_is(words, index, notes), notes), notes), notes)
     words = named_again(them_as_those(words, index, notes), index, notes)
     words = particles(words, lambda x: x.isalpha() and not known_word(x, index, vocab), notes)
     said = list(words)   # as typed: a repair that still names nothing is quoted as typed
