@@ -399,6 +399,18 @@ def test_a_step_closed_by_when_it_is_done_is_the_order_of_the_steps(bothy):
         ({"dresser": ["jug"]}, {"dresser": ["closed"], "jug": ["clean"]})
     assert goal("Wash the jug and put it in the dresser once you're finished.", bothy) == \
         ({"dresser": ["jug"]}, {"dresser": ["closed"], "jug": ["clean"]})
+    assert goal("Wash the jug and put it in the dresser when its done.", bothy) == \
+        ({"dresser": ["jug"]}, {"dresser": ["closed"], "jug": ["clean"]})
+
+
+def test_that_before_how_the_room_is_is_a_degree(bothy):
+    """ "It's that dark in here": "so dark"; "wash the jug, is that dirty?" has "that" as a subject."""
+    assert goal("It's that dark in here.", bothy) == goal("It's so dark in here.", bothy)
+    assert goal("It's that dark in here.", bothy)[1] == {"lamp": ["on"]}
+    notes = translate("It's that dark in here.", bothy)["notes"]
+    assert any("'that' grades 'dark'" in n for n in notes), notes
+    with pytest.raises(TranslationError):
+        translate("Wash the jug, is that dirty?", bothy)
 
 
 def test_sat_and_stood_say_where_a_thing_lies_about(bothy):

@@ -6,6 +6,7 @@ spelled out after a colon is that spelling out. Each rewrite
 leaves a note, so the echo says what was read so."""
 from __future__ import annotations
 
+from pipflow.household.language.lexicon import PHRASES
 from pipflow.household.language.tokens import PUNCT
 
 #: "and the torch an' all": a thing added to what the clause before did ("too"); only closing a
@@ -22,8 +23,23 @@ BECOMING = {"gone", "going", "went", "turned", "turning", "turns", "got", "getti
 #: (which the plan decides); the pronoun points back, so a command that opens with it is refused
 _DONE = {"done", "ready", "finished"}
 _WHEN = {"when", "once", "after"}
-_BACK = {"it", "they", "that", "this", "those", "these"}
-_COPULA = {("is",), ("are",), ("has", "been"), ("have", "been")}
+_BACK = {"it", "they", "that", "this", "those", "these", "you"}
+_COPULA = {("is",), ("are",), ("has", "been"), ("have", "been"), ("have",)}
+#: the pronoun and its copula typed as one word ("when its done", "once youre finished")
+_BACK_IS = {"its", "thats", "theyre", "youre"}
+
+
+#: "it's that dark in here", "the soup's that cold": "that" before how a thing or the room is,
+#: after a copula that has a subject before it, is a degree ("so"); "wash the mug, is that dirty?"
+#: (the copula opens the clause: "that" is its subject) stays
+_DEGREE_AFTER = {"is", "are", "was", "were", "been", "getting", "gone"}
+_DEGREE_OF = {"ADJ", "LIGHTCUE", "TEMPCUE", "SOUNDCUE", "AIRCUE"}
+
+
+def _that_as_degree(words: list[str], k: int, out: list[str]) -> bool:
+    """Whether "that" at ``k`` grades the word after it (:data:`_DEGREE_AFTER`)."""
+    return words[k] == "that" and len(out) >= 2 and out[-1] in _DEGREE_AFTER and out[-2] not in PUNCT \
+        and k + 1 < len(words) and PHRASES.get((words[k + 1],), ("",))[0] in _DEGREE_OF
 
 
 #: verbs of an exchange, and the particles that may close one ("swap the mug and the jug over")
@@ -83,6 +99,11 @@ def colloquial(words: list[str], notes: list[str]) -> list[str]:
             notes.append(f"'{out[-1]} all {words[k + 1]}': 'all' grades '{words[k + 1]}' (no quantity of things)")
             k += 1
             continue
+        if _that_as_degree(words, k, out):
+            notes.append(f"'that {words[k + 1]}': 'that' grades '{words[k + 1]}', read as 'so'")
+            out.append("so")
+            k += 1
+            continue
         done = _when_done(words, k)
         if done and any(w not in PUNCT and w not in ("and", "then") for w in out):
             notes.append(f"'{' '.join(words[k:k + done])}': when the step before is done, the order of the steps; "
@@ -98,7 +119,11 @@ def colloquial(words: list[str], notes: list[str]) -> list[str]:
 def _when_done(words: list[str], k: int) -> int:
     """How many words at ``k`` say "when it is done" ("once that's ready", "after they've been
     cooked"), 0 when they do not."""
-    if words[k] not in _WHEN or k + 1 >= len(words) or words[k + 1] not in _BACK:
+    if words[k] not in _WHEN or k + 1 >= len(words):
+        return 0
+    if words[k + 1] in _BACK_IS:
+        return 3 if k + 2 < len(words) and words[k + 2] in _DONE else 0
+    if words[k + 1] not in _BACK:
         return 0
     for cop in _COPULA:
         j = k + 2 + len(cop)

@@ -14,12 +14,6 @@ from pipflow.language.numbers import read_number
 #: words that put a step after the others, closing a clause ("... and bring them to the desk
 #: after", "put it back afterwards"): the order of the steps, which the plan decides
 CLOSING_ORDER_WORDS = {"after", "afterwards", "afterward", "later", "next"}
-#: "... put it away in the press when it's done": a clause closed by when the step before is
-#: over says the order of the steps, as "after" does (the plan decides it)
-CLOSING_ORDER_PHRASES = {(when,) + who + (over,) for when in ("when", "once")
-                         for who in (("it", "is"), ("its",), ("it", "has", "been"), ("that", "is"), ("thats",),
-                                     ("they", "are"), ("theyre",), ("you", "are"), ("youre",), ("you", "have"))
-                         for over in ("done", "finished")}
 
 
 def without_manner(words: list[str], notes: list[str]) -> list[str]:
@@ -42,16 +36,10 @@ def without_manner(words: list[str], notes: list[str]) -> list[str]:
             start = k + 1
             continue
         clause = _without_inner_manner(clause, notes)
-        while True:
-            said = next((p for p in CLOSING_ORDER_PHRASES if len(clause) > len(p) + 1
-                         and tuple(clause[-len(p):]) == p), None)
-            if said is None and len(clause) > 2 and clause[-1] in CLOSING_ORDER_WORDS \
-                    and clause[-2] not in ("for", "until", "till"):
-                said = (clause[-1],)   # "bring them to the desk after" ("for later" is a purpose)
-            if said is None:
-                break
-            notes.append(f"'{' '.join(said)}': the order of the steps; the plan decides it")
-            clause = clause[:-len(said)]
+        while len(clause) > 2 and clause[-1] in CLOSING_ORDER_WORDS and clause[-2] not in ("for", "until", "till"):
+            # "bring them to the desk after" ("for later" is a purpose: _without_purpose)
+            notes.append(f"'{clause[-1]}': the order of the steps; the plan decides it")
+            clause = clause[:-1]
         kept = []
         for j, x in enumerate(clause):   # "wash the mug first", "first the mug, then the plate"
             if x in ORDER_WORDS and not (j and clause[j - 1] in ORDINAL_DETERMINERS) and \
