@@ -424,3 +424,16 @@ def test_what_the_speaker_will_have_it_with_is_set_aside(bothy):
     # a wish with no pronoun is a wish: not set aside
     with pytest.raises(TranslationError):
         translate("Slice the turnip, I'll have the plum with it.", bothy)
+
+
+def test_a_place_that_cannot_wash_but_holds_the_thing_says_which(bothy):
+    """ "wash the jug on the trestle": the trestle is no sink, and the jug is on it: it says which
+    jug (as "the jug that is on the trestle"), not where it is washed. A thing not there is still
+    refused as impossible there; a sink is still where."""
+    assert goal("Wash the jug on the trestle.", bothy) == ({}, {"jug": ["clean"]})
+    assert goal("Wash the crocks on the trestle and put them in the dresser.", bothy) == \
+        ({"dresser": ["jug", "platter"]}, {"dresser": ["closed"], "jug": ["clean"], "platter": ["clean"]})
+    assert any("says which" in n for n in translate("Wash the jug on the trestle.", bothy)["notes"])
+    with pytest.raises(Refusal, match="not a sink"):
+        translate("Wash the beaker on the trestle.", bothy)   # the beaker is on the bench
+    assert goal("Wash the jug in the basin.", bothy) == ({"basin": ["jug"]}, {"jug": ["clean"]})

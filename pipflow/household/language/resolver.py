@@ -29,7 +29,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Callable
 
-from pipflow.errors import Refusal, TranslationError
+from pipflow.errors import PipflowError, Refusal, TranslationError
 from pipflow.household.language.lexicon import (BIN_KINDS, COLD, DEVICE_NOUNS, DEVICES, INDEFINITE, LAUNDRY,
                                                 LAUNDRY_PLACES, MASS_NOUNS, MEALS, OPPOSITE, REACHABLE, RUBBISH_KINDS,
                                                 VIA_PROPERTY, WINDOWS, plurals, words_of)
@@ -536,6 +536,7 @@ class Resolver:
 
     def change(self, st: dict, words: str) -> None:
         cond = st["to"]
+        st = self._via_as_where_things_are(st, words)
         named = self.objects(st["things"], words, cond=cond, exceptions=st.get("except"))
         if st.get("once"):
             self.once(named, cond, words)
@@ -567,6 +568,28 @@ class Resolver:
                 self.put(n, via, words)
                 self.via_placed[n] = via
         self.last = [n for n, _ in named] or self.last
+
+    def _via_as_where_things_are(self, st: dict, words: str) -> dict:
+        """ "wash the plate on the coffee table": a place that cannot make the things so (no sink)
+        but holds them now says which ones, as "the plate that is on the coffee table" does; the
+        statement without its "via", the place moved to the things' words. Anything else is left
+        for :meth:`change` to refuse (the place cannot make anything so)."""
+        need = VIA_PROPERTY.get(st["to"])
+        if not isinstance(st.get("via"), dict) or st["via"].get("pronoun") or need is None:
+            return st
+        via = self.place_of(st["via"], words)
+        if need in self.world["places"][via]["properties"] or any(t.get("from") for t in st["things"]):
+            return st
+        things = [{**t, "from": st["via"]} for t in st["things"]]
+        try:
+            named = self.objects(things, words, cond=st["to"], exceptions=st.get("except"))
+        except PipflowError:
+            return st
+        if not named:
+            return st
+        self.goal.notes.append(f"'{st['via']['words']}' says which: where {', '.join(n for n, _ in named)} "
+                               f"{'is' if len(named) == 1 else 'are'} now, not where {'it becomes' if len(named) == 1 else 'they become'} {st['to']}")
+        return {k: v for k, v in st.items() if k != "via"} | {"things": things}
 
     def once(self, named: list[tuple[str, bool]], cond: str, words: str) -> None:
         """ "wash the bowl and the mug, and once they are clean put them away": a state that an
