@@ -63,3 +63,25 @@ def test_the_weakest_one_where_three_tie_is_asked() -> None:
 def test_a_number_after_strongest_other_than_one_is_refused() -> None:
     with pytest.raises(TranslationError, match="a number after 'strongest'"):
         translate("2 cart wheels from drying loft to vat west, only the strongest 2", TANNERY)
+
+
+def _with_packing(extra_dock: bool = False) -> dict:
+    """The tannery with its finishing table called "packing" (a one-word place), and a place
+    called "dock" when asked."""
+    world = copy.deepcopy(TANNERY)
+    world["shelves"]["packing"] = world["shelves"].pop("finishing_table")
+    world["stock"]["packing"] = world["stock"].pop("finishing_table")
+    if extra_dock:
+        world["shelves"]["dock"] = {"x": 20, "y": 3, "width": 4, "depth": 2, "capacity": 10, "access": [22, 6]}
+    return world
+
+
+@pytest.mark.parametrize("said", ["packing staging", "the packing area", "packing zone", "the packing dock"])
+def test_a_noun_for_a_place_after_a_place_name_is_that_place(said: str) -> None:
+    got = translate(f"move 2 dye drums from vat east to {said}", _with_packing())
+    assert got["goal"] == {"vat_east": {"dye_drum": 2}, "packing": {"dye_drum": 3}}
+
+
+def test_a_noun_that_names_a_place_of_its_own_is_not_read_into_the_name_before_it() -> None:
+    with pytest.raises(TranslationError):
+        translate("move 2 dye drums from vat east to the packing dock", _with_packing(extra_dock=True))

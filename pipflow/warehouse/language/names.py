@@ -245,6 +245,9 @@ def _contents(names: list["_Name"]) -> dict[str, "_Name | None"]:
 #: nouns for a place said between a numbered place's letters and its number ("chill room 1")
 PLACE_NOUNS = KIND_WORDS["shelf"] | {"room", "rooms", "store", "cage", "line", "shed", "hall", "unit", "pen", "lane",
                                      "aisle", "bench", "dock", "cell", "chamber", "vault", "section", "row"}
+#: nouns said after a place's whole name that add nothing ("Outbound staging", "the receiving
+#: area"): read with it as the place (:meth:`NameIndex._place_noun_after`)
+SAID_AFTER_A_PLACE = {"staging", "area", "zone", "location", "bay"}
 #: words after which a place is said ("to dispatch", "off dispatch"), and words that may follow a
 #: place said there; a grammar verb that is a word of one place's name is that place only between
 #: the two ("from dispatch to intake", "in dispatch."), never before a count ("to dispatch 3 X")
@@ -526,6 +529,18 @@ class NameIndex:
                 and int(x.digits) == n]
         return Tok("name", " ".join(raw[i:i + 3]), hits[0].name, "shelf") if len(hits) == 1 else None
 
+    def _place_noun_after(self, whole: "_Name", raw: list[str], i: int) -> bool:
+        """Whether a place's whole name at ``raw[i]`` is followed by a noun for a place that the
+        world does not have as a word of its own ("Outbound staging", "the receiving area" for
+        outbound, receiving): read as the place. Not where the noun names or is part of another
+        name ("outbound dock" where a dock is a place), nor where the two words are a name."""
+        if whole.kind != "shelf" or i + 1 >= len(raw):
+            return False
+        noun = raw[i + 1].lower()
+        if noun not in PLACE_NOUNS | SAID_AFTER_A_PLACE:
+            return False
+        return not any(normalize(x) in self.forms or normalize(x) in self.parts for x in (noun, raw[i] + raw[i + 1]))
+
     def written_apart(self, raw: list[str], i: int) -> tuple[Tok, int] | None:
         """A name of two or three words starting at ``raw[i]``, in any of its spellings and
         plurals ("cable spools" for cable_spool, "paint shop" for paint-shop); the longest wins.
@@ -654,6 +669,8 @@ class NameIndex:
             return None
         whole = self.forms.get(norm)
         if whole is not None and not (norm != whole.alpha + whole.digits and low in STOPWORDS):
+            if self._place_noun_after(whole, raw, i):   # "Outbound staging" for outbound
+                return Tok("name", f"{raw[i]} {raw[i + 1]}", whole.name, whole.kind), i + 2
             return Tok("name", raw[i], whole.name, whole.kind), i + 1  # "sku-220s", "label_rolls"
         part = self.parts.get(norm)
         if part is not None:
