@@ -85,3 +85,23 @@ def test_a_noun_for_a_place_after_a_place_name_is_that_place(said: str) -> None:
 def test_a_noun_that_names_a_place_of_its_own_is_not_read_into_the_name_before_it() -> None:
     with pytest.raises(TranslationError):
         translate("move 2 dye drums from vat east to the packing dock", _with_packing(extra_dock=True))
+
+
+@pytest.mark.parametrize("command", [
+    "At your earliest convenience, please move 2 dye drums from vat east to the finishing table.",
+    "Please move 2 dye drums from vat east to the finishing table at your earliest convenience.",
+    "Move 2 dye drums from vat east to the finishing table when you have a moment.",
+    "Move 2 dye drums from vat east to the finishing table when youve got a sec",
+    "Per our discussion this morning, move 2 dye drums from vat east to the finishing table.",
+])
+def test_courtesies_of_time_and_what_the_order_follows_are_set_aside(command: str) -> None:
+    assert translate(command, TANNERY)["goal"] == {"vat_east": {"dye_drum": 2}, "finishing_table": {"dye_drum": 3}}
+
+
+@pytest.mark.parametrize("command", [
+    "Per trip, move 2 dye drums from vat east to the finishing table",          # a rate, not what the order follows
+    "Per our plan only crane, move 2 dye drums from vat east to the finishing table",   # an operative word in it
+])
+def test_per_is_set_aside_only_before_whose_and_with_nothing_operative(command: str) -> None:
+    with pytest.raises(TranslationError):
+        translate(command, TANNERY)

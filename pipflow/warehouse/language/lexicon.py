@@ -16,7 +16,7 @@ from typing import Any, Callable
 from lark import Token
 
 from pipflow.errors import InputError, Refusal, TranslationError
-from pipflow.language.asides import (FUNCTION_WORDS, Clause, clauses, content_free, is_opener, leading_reason,
+from pipflow.language.asides import (FUNCTION_WORDS, OPERATIVE, Clause, clauses, content_free, is_opener, leading_reason,
                                      trailing_adjunct, trailing_thanks, unmarked_statement)
 from pipflow.language.characters import refuse_unread
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS
@@ -218,8 +218,20 @@ REQUEST_FRAMES = (("would", "it", "be", "possible", "to"), ("is", "it", "possibl
                   ("see", "to", "it", "that"))
 
 
+#: when the robots may do it, said as a courtesy ("at your earliest convenience", "when you have a
+#: moment", "as soon as possible"): no time the plan can keep, set aside wherever it stands
+COURTESY_TIMES = tuple(sorted(
+    {("at", "your", "earliest", "convenience"), ("at", "your", "convenience"), ("as", "soon", "as", "possible"),
+     ("as", "soon", "as", "you", "can"), ("asap",), ("when", "convenient"), ("when", "you", "can")}
+    | {(when,) + have + ("a", moment) for when in ("when", "whenever")
+       for have in (("you", "have"), ("you", "get"), ("youve", "got"), ("you", "have", "got"), ("you", "ve", "got"))
+       for moment in ("moment", "minute", "min", "sec", "second", "chance")}, key=len, reverse=True))
+#: "Per our discussion this morning, ...": a clause that says what the order follows opens with
+#: "per" and one of these (never "per trip", a rate)
+_PER_WHOSE = {"our", "your", "the", "my", "his", "her", "their", "this", "that", "yesterdays", "todays"}
+
 #: the words of the frames, spelt right ("sort" is no slip of "short")
-FRAME_WORDS = frozenset(w for f in REQUEST_FRAMES for w in f)
+FRAME_WORDS = frozenset(w for f in REQUEST_FRAMES + COURTESY_TIMES for w in f)
 
 
 def without_request_frames(toks: list[Tok]) -> list[Tok]:
@@ -231,14 +243,35 @@ def without_request_frames(toks: list[Tok]) -> list[Tok]:
         start = k == 0 or (toks[k - 1].kind == "punct" and toks[k - 1].value in (".", ";", "!", "?", ",", ":"))
         hit = next((f for f in REQUEST_FRAMES if start and len(toks) >= k + len(f) and all(
             x.kind == "word" and x.value == w for x, w in zip(toks[k:k + len(f)], f))), None)
-        if hit:
-            k += len(hit)
+        courtesy = next((f for f in COURTESY_TIMES if len(toks) >= k + len(f) and all(
+            x.kind == "word" and x.value == w for x, w in zip(toks[k:k + len(f)], f))), None)
+        if hit or courtesy:
+            k += len(hit or courtesy)
             if k < len(toks) and toks[k].kind == "punct" and toks[k].value == ",":
                 k += 1   # the comma that set the frame off goes with it
+            continue
+        per = _per_clause(toks, k) if start else 0
+        if per:
+            k += per
             continue
         out.append(toks[k])
         k += 1
     return out
+
+
+def _per_clause(toks: list[Tok], k: int) -> int:
+    """How many tokens at ``k`` are a clause that says what the order follows ("Per our discussion
+    this morning," "per the revised plan,"): "per", a word of :data:`_PER_WHOSE`, then words only
+    (no name, count or robot word) up to a comma, which goes with it; 0 otherwise."""
+    if k + 2 >= len(toks) or toks[k].kind != "word" or toks[k].value != "per" or \
+            toks[k + 1].kind != "word" or toks[k + 1].value not in _PER_WHOSE:
+        return 0
+    for j in range(k + 2, len(toks)):
+        if toks[j].kind == "punct":
+            return j + 1 - k if toks[j].value == "," else 0
+        if toks[j].kind != "word" or toks[j].value in OPERATIVE:
+            return 0
+    return 0
 
 
 def _replace_phrases(toks: list[Tok], phrases: list[tuple[tuple[str, ...], Any]],
