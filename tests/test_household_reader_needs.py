@@ -437,3 +437,32 @@ def test_a_place_that_cannot_wash_but_holds_the_thing_says_which(bothy):
     with pytest.raises(Refusal, match="not a sink"):
         translate("Wash the beaker on the trestle.", bothy)   # the beaker is on the bench
     assert goal("Wash the jug in the basin.", bothy) == ({"basin": ["jug"]}, {"jug": ["clean"]})
+
+
+def test_texting_words_grade_or_frame_nothing(bothy):
+    for command in ("wash the jug real quick lol", "can u wash the jug rn", "literally just wash the jug pls"):
+        assert goal(command, bothy) == ({}, {"jug": ["clean"]}), command
+    assert goal("it's kinda dark in here", bothy)[1] == {"lamp": ["on"]}
+    assert goal("it's super dark in here", bothy)[1] == {"lamp": ["on"]}
+
+
+def test_an_owner_typed_in_lower_case_is_one_the_homes_names_use(bothy):
+    """ "wash ewan's jug": lower case, an owner only where a name of the home says "ewan's ..."."""
+    home = world_from_text(BOTHY.replace("words: [table, trestle table]", "words: [table, trestle table, ewan's table]"),
+                           "bothy.yaml")
+    assert goal("wash ewan's jug", home) == ({}, {"jug": ["clean"]})
+    assert goal("Wash Ewan's jug", home) == ({}, {"jug": ["clean"]})
+    with pytest.raises(TranslationError, match="'bob'"):
+        translate("wash bob's jug", home)
+
+
+def test_a_word_of_a_place_and_a_category_said_as_lying_in_a_place_is_the_category(bothy):
+    """ "there's rubbish all over the trestle" where "rubbish" is also a word of the pail: no place
+    lies in another, so it is the rubbish."""
+    home = world_from_text(
+        BOTHY.replace("words: [bin]}", "words: [bin, rubbish]}")
+        .replace("  fruit: {words: [fruit], home: bench}", "  fruit: {words: [fruit], home: bench}\n  rubbish: {words: [rubbish]}")
+        .replace("objects:\n", "objects:\n  wrapper:  {in: trestle, mass: 1, properties: [pickupable], categories: [rubbish]}\n"),
+        "bothy.yaml")
+    assert goal("There's rubbish all over the trestle.", home) == ({"pail": ["wrapper"]}, {})
+    assert goal("Put the jug in the rubbish.", home) == ({"pail": ["jug"]}, {})   # where a thing goes: the pail

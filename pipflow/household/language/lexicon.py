@@ -405,7 +405,7 @@ _add("INTENS", "very,so,really,quite,rather,extremely,pretty,a bit,a little,way 
 HEDGES = ("ever so", "ever such a", "absolutely", "proper", "properly", "dead", "awfully", "awful", "terribly", "bloody",
           "utterly", "totally", "a tad", "a touch", "somewhat", "fairly", "a little bit", "a wee bit", "a tiny bit",
           "incredibly", "so very", "that", "really quite", "just so", "too too", "well", "right",
-          "all")
+          "all", "super", "kinda", "kind of", "sorta", "sort of", "hella")
 HEDGE_WORDS = tuple(h for h in HEDGES if tuple(h.split()) not in PHRASES)
 _add("HEDGE", ",".join(HEDGE_WORDS))
 #: the token classes a hedge may grade: the hedge before one of them is read as nothing
@@ -512,7 +512,10 @@ FILLER = {("please",), ("kindly",), ("just",), ("quickly",), ("now",), ("for", "
           ("while", "you", "are", "on", "your", "feet"), ("while", "you", "are", "over", "here"), ("if", "you", "get", "a", "chance"),
           ("honestly",), ("seriously",), ("even",), ("actually",),
           ("the", "two", "of", "you"), ("both", "of", "you"), ("you", "two"), ("you", "both"), ("all", "of", "you"),
-          ("the", "pair", "of", "you"), ("you", "guys"), ("guys",), ("hang", "on"), ("hold", "on")}
+          ("the", "pair", "of", "you"), ("you", "guys"), ("guys",), ("hang", "on"), ("hold", "on"),
+          # texting: laughter, "right now", "real quick", and words of emphasis that grade nothing
+          ("lol",), ("lmao",), ("haha",), ("hahaha",), ("rn",), ("right", "now"), ("real", "quick"),
+          ("literally",), ("tbh",), ("btw",), ("omg",), ("ugh",), ("ngl",)}
 #: endearments and praise that close or open a request ("..., there's a love", "..., there's a good
 #: girl", "good lad, ..."): said to the one asked, they carry nothing; "mind you" / "mind and"
 #: before a verb is "make sure you" (northern and Scots English: "and mind you shut the door after")

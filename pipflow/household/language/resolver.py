@@ -151,6 +151,11 @@ class Resolver:
                                    "(e.g. 'everything on the sofa', 'everything that is on')")
         readings = sel["noun"]["readings"]
         named = [r for r in readings if r["kind"] in ("object", "place")]
+        if named and "from" in sel and all(r["kind"] == "place" for r in named) and \
+                any(r["kind"] == "category" for r in readings):
+            # "there's trash all over the coffee table" where "trash" is the trash can and the
+            # rubbish: no place lies in another, so the word is the category
+            named = []
         if named:
             return list(dict.fromkeys(r["name"] for r in named)), False
         out: list[str] = []

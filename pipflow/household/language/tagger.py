@@ -74,11 +74,16 @@ def owners_as_the(command: str, world: dict, notes: list[str]) -> str:
     away"): a capitalised word with "'s" before the first word of a thing of the home, that is no
     word of this home or of the reader, stands as "the": which thing is meant is the home's one
     such thing, or it is asked.
-    The home does not know who owns what, so the owner picks nothing out."""
+    The home does not know who owns what, so the owner picks nothing out. Typed in lower case
+    ("jordan's mug"), the name is an owner only where the home's own names use it ("jordan's
+    desk"): any lower-case word before "'s" is not a name."""
     index = world_phrases(world)
+    owners = {key[0] for key in index if len(key) > 1}
 
     def owner(m: re.Match) -> str:
         word, after = m.group(1).lower(), m.group(2).lower()
+        if m.group(1)[0].islower() and word not in owners:
+            return m.group(0)
         if word in FUNCTION_WORDS or (word,) in PHRASES or any(key[:2] == (word, after) for key in index) or (
                 (word,) in index and not any(len(key) > 1 and key[0] == word for key in index)) \
                 or not any(key[0] == after for key in index):
@@ -87,7 +92,7 @@ def owners_as_the(command: str, world: dict, notes: list[str]) -> str:
             return m.group(0)
         notes.append(f"'{m.group(1)}'s' says whose it is: read as 'the'")
         return "the " + m.group(2)
-    return re.sub(r"(?<![\w'’])([A-Z][a-z]+)['’]s\s+([A-Za-z]+)", owner, command)
+    return re.sub(r"(?<![\w'’])([A-Za-z][a-z]+)['’]s\s+([A-Za-z]+)", owner, command)
 
 
 def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
