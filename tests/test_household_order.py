@@ -75,7 +75,9 @@ def test_heating_in_a_named_heater_keeps_the_thing_there(world):
     assert goal_of("Warm up the bread in the microwave.", world) == \
         ({"microwave": ["bread"]}, {"bread": ["hot"], "microwave": ["closed"]}, [])
     with pytest.raises(Refusal, match="not a heater"):
-        goal_of("Heat the egg in the fridge.", world)
+        goal_of("Heat the bread in the fridge.", world)   # the bread is not in the fridge
+    # the egg is: "the egg in the fridge" says which egg, not where it is heated
+    assert goal_of("Heat the egg in the fridge.", world) == ({}, {"egg": ["hot"], "fridge": ["closed"]}, [])
     with pytest.raises(Refusal, match="not a sink"):
         goal_of("Wash the mug in the microwave.", world)
 

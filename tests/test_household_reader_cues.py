@@ -108,8 +108,8 @@ def test_the_room_too_quiet_or_too_loud_and_a_hot_drink(croft):
 
 
 def test_wishes_for_food_and_a_place(croft):
-    assert goal("I fancy a warm bap.", croft) == ({}, {"bap": ["hot"], "larder": ["closed"]})
-    assert goal("I'm starving, heat the kipper.", croft) == ({}, {"kipper": ["hot"], "larder": ["closed"]})
+    assert goal("I fancy a warm bap.", croft) == ({}, {"bap": ["hot"], "larder": ["closed"], "microwave": ["closed"]})
+    assert goal("I'm starving, heat the kipper.", croft) == ({}, {"kipper": ["hot"], "larder": ["closed"], "microwave": ["closed"]})
     assert goal("need the shirt on the bench", croft) == ({"bench": ["shirt"]}, {})
     assert goal("My kipper has gone warm, can it go in the larder?", croft) == ({"larder": ["kipper"]}, {"larder": ["closed"]})
 
@@ -198,13 +198,13 @@ def test_a_refusal_offers_the_readings_near_it(croft):
     assert ({"tall_cupboard": ["shirt"]}, {"tall_cupboard": ["closed"]}) in offered
     assert ({"low_cupboard": ["shirt"]}, {"low_cupboard": ["closed"]}) in offered
     # a modifier said alone, in the plural
-    assert ({}, {"leftover_stew": ["hot"]}) in refused_with("Heat up the leftovers.", croft)
+    assert ({}, {"leftover_stew": ["hot"], "microwave": ["closed"]}) in refused_with("Heat up the leftovers.", croft)
     # every word not understood left out at once
-    assert ({}, {"bap": ["sliced"], "larder": ["closed"]}) in refused_with("Slice the bap real quick.", croft)
+    assert ({}, {"bap": ["sliced"], "larder": ["closed"]}) in refused_with("Slice the bap sharpish pronto.", croft)
     # a known word where the reading stopped, left out
     assert ({"pail": ["carton"]}, {}) in refused_with("That empty carton on the settle stinks.", croft)
     # how long, left out ("leave the larder open for five minutes" ends closed: never read so)
-    assert ({}, {"kipper": ["hot"], "larder": ["closed"]}) in refused_with("Heat the kipper for two minutes.", croft)
+    assert ({}, {"kipper": ["hot"], "larder": ["closed"], "microwave": ["closed"]}) in refused_with("Heat the kipper for two minutes.", croft)
     # never the opposite of what was said: "smells fine" is not read as "smells"
     assert ({"pail": ["kipper"]}, {"larder": ["closed"]}) not in refused_with("The kipper smells fine.", croft)
     # what a thing left on may need: switched off

@@ -466,3 +466,25 @@ def test_a_word_of_a_place_and_a_category_said_as_lying_in_a_place_is_the_catego
         "bothy.yaml")
     assert goal("There's rubbish all over the trestle.", home) == ({"pail": ["wrapper"]}, {})
     assert goal("Put the jug in the rubbish.", home) == ({"pail": ["jug"]}, {})   # where a thing goes: the pail
+
+
+def test_what_the_speaker_is_busy_with_and_when_is_talk(bothy):
+    """ "she's got a call at 2", "I'm eating between meetings", "gonna make tea after this call",
+    "we're done for the day": about people, no order; a time of day or how long is no count."""
+    for command in ("Slice the turnip, she's got a call at 2.", "Slice the turnip, I'm eating between meetings.",
+                    "Slice the turnip, gonna make tea after this call.", "We're done for the day, slice the turnip.",
+                    "Slice the turnip, she has a meeting at 10."):
+        assert goal(command, bothy) == ({}, {"turnip": ["sliced"]}), command
+    # a count is no time: "2 mugs" is never set aside; "I'm not eating" has a negation in it
+    for command in ("Slice the turnip, she's got 2 calls.", "Slice the turnip, I'm not eating it."):
+        with pytest.raises(TranslationError):
+            translate(command, bothy)
+
+
+def test_the_only_heater_when_it_opens_is_closed_again(bothy):
+    """A thing heated where the command does not say, in a home whose one heater opens: the plan
+    opens it to put the thing in, so it is listed closed again, as a fridge is."""
+    oven = world_from_text(BOTHY.replace("properties: [receptacle, heater, toggleable], state: {on: false}}",
+                                         "properties: [receptacle, heater, openable], state: {open: false}}"), "bothy.yaml")
+    assert goal("Heat the turnip.", oven) == ({}, {"griddle": ["closed"], "turnip": ["hot"]})
+    assert goal("Heat the turnip.", bothy) == ({}, {"turnip": ["hot"]})   # a griddle that does not open

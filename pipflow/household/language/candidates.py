@@ -190,7 +190,7 @@ def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[
         if w in JOINERS:
             out.append((swap(w, JOINERS[w]), f"'{w}' read as '{JOINERS[w]}'", swap(w, JOINERS[w]), {}))
     droppable = [w for w in dict.fromkeys(unknown) if not near_operative(w) and w not in JOINERS and w not in APPRAISALS]
-    if len(droppable) > 1:   # "chop up the cucumber real quick": every word not understood, at once
+    if len(droppable) > 1:   # "chop up the cucumber sharpish pronto": every word not understood, at once
         rest = " ".join(x for x in words if x not in droppable)
         out.append((rest, "read without " + ", ".join(f"'{w}'" for w in droppable) + " (not understood)", rest, {}))
     for w in droppable:

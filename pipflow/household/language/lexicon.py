@@ -357,7 +357,10 @@ _add("GOES", "goes,belongs,belong,lives,live,is meant to live,is meant to go,is 
 #: reasons of leaving the home or going to bed: alone they ask for nothing two people agree on
 #: (the lights off? everything off?), so they are asked, offering both (docs/household.md, cues)
 LEAVING_REASONS = {"bedtime", "time for bed", "off to bed", "going to bed", "heading to bed", "off out", "going out",
-                   "heading out", "off to work", "going to work", "late", "night time"}
+                   "heading out", "off to work", "going to work", "late", "night time",
+                   # the working day over: "we're done for the day", "logging off"
+                   "done for the day", "finished for the day", "off for the day", "done with work",
+                   "finished work", "logging off", "clocking off", "signing off"}
 #: "off to my bed", "away to my bed" (Scots and northern English: "away" is "off"), "off up to bed"
 LEAVING_REASONS |= {f"{go} to {whose}bed" for go in ("off", "away", "going", "heading", "off up", "away up")
                     for whose in ("", "my ", "our ")}

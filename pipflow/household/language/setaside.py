@@ -7,7 +7,7 @@ from __future__ import annotations
 import re
 from typing import Callable, NamedTuple
 
-from pipflow.household.language.lexicon import FILLER_TYPO_TARGETS, PHRASES, PURPOSE_WORDS, words_of
+from pipflow.household.language.lexicon import DURATION_UNITS, FILLER_TYPO_TARGETS, PHRASES, PURPOSE_WORDS, words_of
 from pipflow.household.language.names import world_phrases
 from pipflow.household.language.restated import leading_subject, restates_location
 from pipflow.household.language.typos import typo_of, vocabulary
@@ -49,7 +49,12 @@ def _content(world: dict) -> Callable[[str], bool]:
 #: how a clause opens when it says what the speaker will do ("I'll grab the milk myself", "I'm
 #: about to unpack the shopping"): no order for the robots
 SPEAKER_OPENERS = (("i", "will"), ("we", "will"), ("i", "am", "about", "to"), ("we", "are", "about", "to"),
-                   ("i", "am", "going", "to"), ("we", "are", "going", "to"), ("i", "shall"), ("we", "shall"))
+                   ("i", "am", "going", "to"), ("we", "are", "going", "to"), ("i", "shall"), ("we", "shall"),
+                   # "gonna make tea after this call": "I'm" left out
+                   ("going", "to"))
+#: what the speaker is doing now ("I'm eating between meetings"): "I am" / "we are" and a word
+#: in -ing that is no word of the lexicon ("I'm starving", "I'm leaving" are cues and reasons)
+SPEAKER_NOW = (("i", "am"), ("we", "are"))
 #: what the speaker will do as the purpose of an order ("bring the lobster pot in so I can mend
 #: it"): "so" (+ "that") + one of these; it ends the order's clause like a comma
 PURPOSE_OPENERS = tuple(("so",) + that + who for that in ((), ("that",))
@@ -77,7 +82,39 @@ def speaker_doing(words: tuple[str, ...]) -> bool:
                 return False
             using = len(rest) > 3 and rest[0] in ("have", "take") and rest[1] in ("it", "them") and rest[2] in USE_LINKS
             return rest[0] not in WISH_VERBS or using
-    return speaker_needing(words)
+    return speaker_needing(words) or speaker_busy(words)
+
+
+def speaker_busy(words: tuple[str, ...]) -> bool:
+    """Whether a clause says what the speaker is busy with now (:data:`SPEAKER_NOW`): no order for
+    the robots, and nothing operative in it."""
+    for opener in SPEAKER_NOW:
+        rest = words[len(opener):]
+        if words[:len(opener)] == opener and rest and rest[0].endswith("ing") and len(rest[0]) > 5 \
+                and (rest[0],) not in PHRASES and not any(w in NEGATION or w in EXCLUSIVITY for w in rest):
+            return True
+    return False
+
+
+#: words before a number that make it a time of day ("a call at 2", "back by 6"), and after it
+#: ("10 am", "15 min"): a time is no count of things, so a clause may still be talk
+_TIME_BEFORE = {"at", "by", "until", "till", "before", "after", "around", "about"}
+_TIME_AFTER = {"am", "pm", "oclock", "o"} | DURATION_UNITS
+
+
+def _without_times(words: tuple[str, ...]) -> tuple[str, ...]:
+    """The words with each number that says a time or how long left out (:data:`_TIME_BEFORE`,
+    :data:`_TIME_AFTER`; a time of day is at most 12, or 24 with am/pm or a duration after it)."""
+    out = list(words)
+    for k, w in enumerate(words):
+        n = read_number([w], 0)
+        value = n[0] if n else None
+        if not isinstance(value, int):
+            continue
+        after = words[k + 1] if k + 1 < len(words) else ""
+        if after in _TIME_AFTER or (k and words[k - 1] in _TIME_BEFORE and 0 < value <= 12):
+            out[k] = ""
+    return tuple(out)
 
 
 #: "I need them tonight", "we'll want it later": the speaker needing what the order is about, said
@@ -152,7 +189,7 @@ def without_asides(command: str, world: dict) -> Trimmed | None:
     content = _content(world)
     parts = clauses(words, CLAUSE_MARKS)
     words, parts, topic = _topic_restated(words, parts, world)
-    free = [c for c in parts if content_free(c.words, content)]
+    free = [c for c in parts if content_free(_without_times(c.words), content)]
     own = [c for c in parts if c not in free and speaker_doing(c.words)]
     known = [(c, restates_location(c.words, [b.words for b in parts[:k]], world)) for k, c in enumerate(parts)
              if k and c not in free and c not in own]

@@ -40,6 +40,12 @@ def _leave_closed(world: dict, goal: dict) -> None:
                      if o in moved or not all(_already(world, o, c) for c in conds)]
     touched |= {world["objects"][o]["in"] for o in named if o in world["objects"]}
     touched |= {c["in"] for c in goal.get("count", [])}
+    # a thing heated where the command does not say: when the home has one heater and it opens,
+    # the plan opens it to put the thing in
+    heaters = [p for p, e in world["places"].items() if "heater" in e["properties"]]
+    if len(heaters) == 1 and any("hot" in conds and o in world["objects"] and not world["objects"][o].get("state", {}).get("hot")
+                                 for o, conds in goal.get("state", {}).items()):
+        touched.add(heaters[0])
     for p in sorted(touched, key=list(world["places"]).index):
         e = world["places"][p]
         if "openable" in e["properties"] and not e["state"].get("open") and p not in goal["state"]:
