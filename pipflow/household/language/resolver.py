@@ -592,8 +592,10 @@ class Resolver:
             return st
         if not named:
             return st
+        one = len(named) == 1
         self.goal.notes.append(f"'{st['via']['words']}' says which: where {', '.join(n for n, _ in named)} "
-                               f"{'is' if len(named) == 1 else 'are'} now, not where {'it becomes' if len(named) == 1 else 'they become'} {st['to']}")
+                               f"{'is' if one else 'are'} now, not where {'it becomes' if one else 'they become'} "
+                               f"{st['to']}")
         return {k: v for k, v in st.items() if k != "via"} | {"things": things}
 
     def once(self, named: list[tuple[str, bool]], cond: str, words: str) -> None:

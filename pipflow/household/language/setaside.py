@@ -80,7 +80,8 @@ def speaker_doing(words: tuple[str, ...]) -> bool:
             rest = words[len(opener):]
             if any(w in NEGATION or w in EXCLUSIVITY for w in rest):
                 return False
-            using = len(rest) > 3 and rest[0] in ("have", "take") and rest[1] in ("it", "them") and rest[2] in USE_LINKS
+            using = len(rest) > 3 and rest[0] in ("have", "take") and rest[1] in ("it", "them") \
+                and rest[2] in USE_LINKS
             return rest[0] not in WISH_VERBS or using
     return speaker_needing(words) or speaker_busy(words)
 

@@ -43,8 +43,9 @@ def _leave_closed(world: dict, goal: dict) -> None:
     # a thing heated where the command does not say: when the home has one heater and it opens,
     # the plan opens it to put the thing in
     heaters = [p for p, e in world["places"].items() if "heater" in e["properties"]]
-    if len(heaters) == 1 and any("hot" in conds and o in world["objects"] and not world["objects"][o].get("state", {}).get("hot")
-                                 for o, conds in goal.get("state", {}).items()):
+    heated = [o for o, conds in goal.get("state", {}).items()
+              if "hot" in conds and o in world["objects"] and not world["objects"][o].get("state", {}).get("hot")]
+    if len(heaters) == 1 and heated:
         touched.add(heaters[0])
     for p in sorted(touched, key=list(world["places"]).index):
         e = world["places"][p]
