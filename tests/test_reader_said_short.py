@@ -105,3 +105,24 @@ def test_courtesies_of_time_and_what_the_order_follows_are_set_aside(command: st
 def test_per_is_set_aside_only_before_whose_and_with_nothing_operative(command: str) -> None:
     with pytest.raises(TranslationError):
         translate(command, TANNERY)
+
+
+@pytest.mark.parametrize("command", [
+    "Please move 2 dye drums from vat east to the finishing table overnight.",
+    "Please move 2 dye drums from vat east to the finishing table ahead of the audit.",
+])
+def test_a_time_said_after_the_order_is_set_aside(command: str) -> None:
+    assert translate(command, TANNERY)["goal"] == {"vat_east": {"dye_drum": 2}, "finishing_table": {"dye_drum": 3}}
+
+
+def test_office_phrasings_of_the_grammars_own_words() -> None:
+    """ "with the exception of" is except; "in their entirety" adds nothing to a swap of all;
+    "at any given time" adds nothing to a bound; "maintain" keeps."""
+    assert translate("Move all of the cart wheels to vat west, with the exception of those on vat east.", TANNERY)["goal"] == \
+        translate("Move all of the cart wheels to vat west, except those on vat east.", TANNERY)["goal"]
+    assert translate("Swap vat east and vat west in their entirety.", TANNERY)["goal"] == \
+        translate("Swap vat east and vat west.", TANNERY)["goal"]
+    assert translate("Vat west should have no more than 4 belt rounds at any given time.", TANNERY)["goal"] == \
+        {"vat_west": {"belt_round": {"at_most": 4}}}
+    assert translate("Maintain between 2 and 4 belt rounds at vat west.", TANNERY)["goal"] == \
+        {"vat_west": {"belt_round": {"at_least": 2, "at_most": 4}}}

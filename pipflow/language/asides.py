@@ -118,9 +118,10 @@ def trailing_thanks(words: list[str], content: Callable[[str], bool]) -> int:
 #: only as the opening word, and never before a pronoun or "then" ("before that" orders the
 #: command's own parts). Not "but", "except", "so", "and", "or", "then": they join or restrict.
 ADJUNCTS = frozenset({"for", "before", "after", "by", "until", "till", "once", "when", "while", "because",
-                      "since", "as", "cause", "cos", "coz", "cuz"})
-#: adjunct openings of time: what follows says when ("before the van comes"), its verb describes
-TEMPORAL = frozenset({"before", "after", "until", "till", "when", "once", "while", "by"})
+                      "since", "as", "cause", "cos", "coz", "cuz", "ahead"})
+#: adjunct openings of time: what follows says when ("before the van comes", "ahead of the count"),
+#: its verb describes
+TEMPORAL = frozenset({"before", "after", "until", "till", "when", "once", "while", "by", "ahead"})
 #: adjunct openings of purpose and reason: what follows says what for ("for the Hadleys order"), and
 #: a word of the grammar in it ("order", "delivery") orders nothing
 PURPOSIVE = frozenset({"for", "because", "cause", "cos", "coz", "cuz"})

@@ -33,7 +33,7 @@ FILLERS = {"the", "please", "kindly", "units", "unit", "pieces", "piece", "boxes
            "crate", "cases", "case", "pcs", "pallets", "pallet", "x", "exactly", "precisely",
            "actually", "really", "hey", "um", "uh", "ok,", "just", "right", "away", "quickly",
            "now", "today", "currently", "sku", "skus", "of", "moment", "pls", "plz", "asap", "thx",
-           "completely", "entirely", "immediately", "soon", "tonight", "thanks"}
+           "completely", "entirely", "immediately", "soon", "tonight", "thanks", "overnight"}
 #: packaging and measure nouns: "5 cartons of tape", "2 rolls of shrink wrap" count the item after
 #: "of". A world that names a product so ("carton") recognises it as that product first.
 FILLERS |= {"carton", "cartons", "roll", "rolls", "pack", "packs", "packet", "packets", "bundle",
@@ -179,6 +179,7 @@ VERB_LEXICON: dict[str, tuple[str, str]] = {
     "clear away": ("remove", "remove"),
     # keeping (and the grammar's own: keep, leave, retain, hold)
     "hang on to": ("keep", "keep"), "hold on to": ("keep", "keep"), "hang onto": ("keep", "keep"),
+    "maintain": ("keep", "keep"),
     # gathering (and the grammar's own: gather, consolidate, collect)
     "round up": ("gather", "gather"), "bring together": ("gather", "gather"),
     "centralise": ("gather", "consolidate"), "centralize": ("gather", "consolidate"),
@@ -201,6 +202,12 @@ QUANTITY_PHRASES: dict[str, tuple[str, ...]] = {
     "wherever there is room": ("wherever",), "wherever there s room": ("wherever",),
     "wherever theres room": ("wherever",), "wherever there is space": ("wherever",),
     "anywhere there is room": ("anywhere",), "anywhere there s room": ("anywhere",),
+    # "with the exception of those at the pick face": except
+    "with the exception of": ("except",), "with exception of": ("except",),
+    # "swap P and Q in their entirety": all of it, which the grammar's reading already is
+    "in their entirety": (), "in its entirety": (),
+    # "no more than 3 at any given time": a bound holds at the end too, which is what a goal fixes
+    "at any given time": (), "at any one time": (), "at all times": (),
 }
 
 
@@ -303,7 +310,8 @@ def quantity_phrases(toks: list[Tok], keywords: dict[str, str]) -> list[Tok]:
     def said_as(got: list[Tok], words: tuple[str, ...], said: Any) -> list[Tok] | None:
         # a word of the phrase may have been read as a word of a name ("room" of cold_room in
         # "wherever there's room"): the phrase, said as a whole, is the idiom
-        if not all((x.kind == "word" and x.value == w) or (j > 0 and x.kind == "name" and x.text.lower() == w)
+        # and a word the typo repair read as another ("given" as "give"): the phrase as written
+        if not all((x.kind == "word" and w in (x.value, x.text.lower())) or (j > 0 and x.kind == "name" and x.text.lower() == w)
                    for j, (x, w) in enumerate(zip(got, words))):
             return None
         text = " ".join(x.text for x in got)
