@@ -488,3 +488,25 @@ def test_the_only_heater_when_it_opens_is_closed_again(bothy):
                                          "properties: [receptacle, heater, openable], state: {open: false}}"), "bothy.yaml")
     assert goal("Heat the turnip.", oven) == ({}, {"griddle": ["closed"], "turnip": ["hot"]})
     assert goal("Heat the turnip.", bothy) == ({}, {"turnip": ["hot"]})   # a griddle that does not open
+
+
+def test_the_plural_of_a_shared_last_word_is_all_of_them(bothy):
+    """ "wash both jugs" where a milk jug and a water jug are the home's jugs (a jug rack has the
+    word too, as a modifier): both; "the jug" alone is asked."""
+    home = world_from_text(BOTHY.replace("  jug:      {in: trestle,", "  milk_jug: {in: trestle,")
+                           .replace("  beaker:   {in: bench,", "  water_jug: {in: bench,")
+                           .replace("words: [table, trestle table]", "words: [table, trestle table, jug rack]"),
+                           "bothy.yaml")
+    assert goal("Wash both jugs.", home) == ({}, {"milk_jug": ["clean"], "water_jug": ["clean"]})
+    assert goal("Wash the jugs.", home) == ({}, {"milk_jug": ["clean"], "water_jug": ["clean"]})
+    with pytest.raises(TranslationError):
+        translate("Wash the jug.", home)
+
+
+def test_a_device_started_is_switched_on(bothy):
+    # (the wireless is in the dresser, which is opened for it and closed again)
+    assert goal("Start the wireless.", bothy) == ({}, {"wireless": ["on"], "dresser": ["closed"]})
+    assert goal("Wash the jug, then fire up the wireless.", bothy) == \
+        ({}, {"jug": ["clean"], "wireless": ["on"], "dresser": ["closed"]})
+    with pytest.raises(Refusal):
+        translate("Start the jug.", bothy)

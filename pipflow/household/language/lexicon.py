@@ -103,6 +103,8 @@ for _w, _c in ADJECTIVES.items():
 _add("V_TOGGLE", "turn,switch,power,flip,flick")
 #: "light the stove", "light the fire": a thing that burns or shines is switched on
 _add("V_LIGHT", "light,light up", "on")
+#: "start the coffee maker", "fire up the laptop": a device started is switched on (read as "light" is)
+_add("V_LIGHT", "start,start up,fire up,boot up", "on")
 #: "chill the juice": into the home's cold place (the category named, or with a word, "cold")
 COLD = "cold"
 #: "put the clothes in the wash": the home's one laundry place (lexicon ``LAUNDRY_PLACES``)

@@ -79,9 +79,13 @@ def _add_parts(world: dict, index: dict[tuple[str, ...], list[dict]]) -> None:
     home, "coffee" of coffee_table no drink); a word two things share, a word the index already
     has, a word of the command lexicon or a function word names nothing alone (never a guess), nor
     does a kind word another thing of the home is of ("stove" beside a range: lexicon
-    ``KIND_WORDS``)."""
+    ``KIND_WORDS``).
+
+    The plural of a last word that several things share names all of them ("both laptops" of
+    maya_laptop and jordan_laptop, though a laptop charger has the word too, as a modifier; "the
+    desks"): the singular stays unread (which one is asked)."""
     owners: dict[str, set[tuple[str, str]]] = {}
-    heads: set[str] = set()
+    heads: dict[str, set[tuple[str, str]]] = {}
     for kind, table in (("object", world.get("objects") or {}), ("place", world.get("places") or {})):
         for name, e in table.items():
             for phrase in [name] + list(e.get("words") or []):
@@ -89,7 +93,14 @@ def _add_parts(world: dict, index: dict[tuple[str, ...], list[dict]]) -> None:
                 for w in words:
                     owners.setdefault(w, set()).add((kind, name))
                 if len(words) >= 2:
-                    heads.add(words[-1])
+                    heads.setdefault(words[-1], set()).add((kind, name))
+    for w, things in heads.items():
+        if len(things) < 2 or len(w) < 3 or not w.isalpha() or (w,) in index \
+                or (w,) in PHRASES or w in FUNCTION_WORDS:
+            continue
+        for p in plurals(w):
+            if p != w and (p,) not in index and (p,) not in PHRASES and p not in owners:
+                index[(p,)] = [{"kind": kind, "name": name, "plural": True} for kind, name in sorted(things)]
     for w, things in owners.items():
         if w not in heads or len(things) != 1 or len(w) < 3 or not w.isalpha() or (w,) in index or (w,) in PHRASES \
                 or w in FUNCTION_WORDS or any(w in key for key in FILLER) or read_number([w], 0):
