@@ -510,3 +510,16 @@ def test_a_device_started_is_switched_on(bothy):
         ({}, {"jug": ["clean"], "wireless": ["on"], "dresser": ["closed"]})
     with pytest.raises(Refusal):
         translate("Start the jug.", bothy)
+
+
+def test_scots_negatives_and_thon(bothy):
+    """ "cannae", "wasnae", "no'" are "can not", "was not", "not"; "thon" is "that": "no" without
+    its apostrophe stays the quantifier."""
+    from pipflow.household.language.lexicon import words_of
+    assert words_of("I cannae see, it wasnae me, I'm no' sleeping, thon jug, no jugs") == \
+        ["i", "can", "not", "see", ",", "it", "was", "not", "me", ",", "i", "am", "not", "sleeping", ",",
+         "that", "jug", ",", "no", "jugs"]
+    assert goal("Wash thon jug on the trestle.", bothy) == ({}, {"jug": ["clean"]})
+    # a negated order is refused, never read without its negation: "dinnae" is "do not"
+    with pytest.raises(TranslationError, match="in 'do not turn on the lamp'"):
+        translate("Dinnae turn on the lamp.", bothy)

@@ -669,6 +669,12 @@ def normalize(text: str) -> str:
     t = re.sub(r",?\s*\binnit\b", " ", t)
     t = re.sub(r",?\s*\beh\b(?=\s*(?:[?.!]|$))", " ", t)   # "sort it out, eh?": a tag that asks nothing
     t = re.sub(r"\bye\b", "you", t)   # "could ye ...": the older and dialect "you"
+    # Scots negatives: "I cannae see", "it wasnae me", "I'm no' sleeping" ("no" with its apostrophe)
+    t = re.sub(r"\b(can|do|does|did|is|was|are|were|could|would|should|will|have|has|had|must)nae\b", r"\1 not", t)
+    t = re.sub(r"\bdinnae\b", "do not", t)
+    t = re.sub(r"\bdisnae\b", "does not", t)
+    t = re.sub(r"\bno'(?=\s|$)", "not", t)
+    t = re.sub(r"\bthon\b", "that", t)   # "thon frying pan": Scots "that"
     for typed, written in _TYPED:
         t = re.sub(typed, written, t)
     # "its freezing in here", "its a tip": "it's" typed without its apostrophe, where a clause opens
