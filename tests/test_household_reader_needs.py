@@ -523,3 +523,10 @@ def test_scots_negatives_and_thon(bothy):
     # a negated order is refused, never read without its negation: "dinnae" is "do not"
     with pytest.raises(TranslationError, match="in 'do not turn on the lamp'"):
         translate("Dinnae turn on the lamp.", bothy)
+
+
+def test_a_filler_closing_a_clause_does_not_hide_after(bothy):
+    assert goal("Put the swede on the bench, and close the larder after lol", bothy) == \
+        ({"bench": ["swede"]}, {"larder": ["closed"]})
+    assert goal("Slice the turnip and close the larder after please", bothy) == \
+        ({}, {"turnip": ["sliced"], "larder": ["closed"]})

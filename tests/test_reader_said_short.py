@@ -126,3 +126,9 @@ def test_office_phrasings_of_the_grammars_own_words() -> None:
         {"vat_west": {"belt_round": {"at_most": 4}}}
     assert translate("Maintain between 2 and 4 belt rounds at vat west.", TANNERY)["goal"] == \
         {"vat_west": {"belt_round": {"at_least": 2, "at_most": 4}}}
+
+
+def test_a_noun_for_a_place_with_a_number_after_it_is_not_read_into_the_name() -> None:
+    """ "the packing dock 2": "dock 2" may be a place of its own; never read as packing."""
+    with pytest.raises(TranslationError):
+        translate("move 2 dye drums from vat east to the packing dock 2", _with_packing())

@@ -4,8 +4,8 @@ minutes", offered only as a candidate), what for ("for later"), amounts of a thi
 cherries"), and "or" under a negation ("nobody is using X or Y"). Each rewrite leaves a note."""
 from __future__ import annotations
 
-from pipflow.household.language.lexicon import (DURATION_HEDGES, DURATION_UNITS, GRADED, HOT_DRINKS, MANNER_OBJECTS, MANNERS, MEALS,
-                                                MEASURES, ORDER_WORDS, ORDINAL_DETERMINERS, PHRASES, PURPOSE_INFINITIVES,
+from pipflow.household.language.lexicon import (DURATION_HEDGES, DURATION_UNITS, FILLER, GRADED, HOT_DRINKS, MANNER_OBJECTS,
+                                                MANNERS, MEALS, MEASURES, ORDER_WORDS, ORDINAL_DETERMINERS, PHRASES, PURPOSE_INFINITIVES,
                                                 PURPOSE_WORDS, PURPOSES, TIME_WORDS)
 from pipflow.household.language.tokens import PUNCT
 from pipflow.language.numbers import read_number
@@ -36,10 +36,14 @@ def without_manner(words: list[str], notes: list[str]) -> list[str]:
             start = k + 1
             continue
         clause = _without_inner_manner(clause, notes)
+        # "close the pantry after lol": a filler closing the clause does not hide the word before it
+        said_last = next((j for j in range(len(clause), 0, -1) if (clause[j - 1],) not in FILLER), 0)
+        clause, closing = clause[:said_last], clause[said_last:]
         while len(clause) > 2 and clause[-1] in CLOSING_ORDER_WORDS and clause[-2] not in ("for", "until", "till"):
             # "bring them to the desk after" ("for later" is a purpose: _without_purpose)
             notes.append(f"'{clause[-1]}': the order of the steps; the plan decides it")
             clause = clause[:-1]
+        clause += closing
         kept = []
         for j, x in enumerate(clause):   # "wash the mug first", "first the mug, then the plate"
             if x in ORDER_WORDS and not (j and clause[j - 1] in ORDINAL_DETERMINERS) and \

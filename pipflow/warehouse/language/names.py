@@ -533,12 +533,15 @@ class NameIndex:
         """Whether a place's whole name at ``raw[i]`` is followed by a noun for a place that the
         world does not have as a word of its own ("Outbound staging", "the receiving area" for
         outbound, receiving): read as the place. Not where the noun names or is part of another
-        name ("outbound dock" where a dock is a place), nor where the two words are a name."""
+        name ("outbound dock" where a dock is a place), where a number follows it ("outbound dock
+        2"), nor where the two words are a name."""
         if whole.kind != "shelf" or i + 1 >= len(raw):
             return False
         noun = raw[i + 1].lower()
         if noun not in PLACE_NOUNS | SAID_AFTER_A_PLACE:
             return False
+        if i + 2 < len(raw) and word_value(raw[i + 2].lower()) is not None:
+            return False   # "outbound dock 2": the noun and its number may name a place of their own
         return not any(normalize(x) in self.forms or normalize(x) in self.parts for x in (noun, raw[i] + raw[i + 1]))
 
     def written_apart(self, raw: list[str], i: int) -> tuple[Tok, int] | None:
