@@ -436,6 +436,9 @@ def test_a_place_that_cannot_wash_but_holds_the_thing_says_which(bothy):
     assert any("says which" in n for n in translate("Wash the jug on the trestle.", bothy)["notes"])
     with pytest.raises(Refusal, match="not a sink"):
         translate("Wash the beaker on the trestle.", bothy)   # the beaker is on the bench
+    # the things are read once: what the echo says of an exception is said once
+    notes = translate("Wash the crocks on the trestle, but not the beaker.", bothy)["notes"]
+    assert sum("'the beaker' was not asked for" in n for n in notes) == 1, notes
     assert goal("Wash the jug in the basin.", bothy) == ({"basin": ["jug"]}, {"jug": ["clean"]})
 
 

@@ -541,8 +541,9 @@ class Resolver:
 
     def change(self, st: dict, words: str) -> None:
         cond = st["to"]
-        st = self._via_as_where_things_are(st, words)
-        named = self.objects(st["things"], words, cond=cond, exceptions=st.get("except"))
+        st, named = self._via_as_where_things_are(st, words)
+        if named is None:
+            named = self.objects(st["things"], words, cond=cond, exceptions=st.get("except"))
         if st.get("once"):
             self.once(named, cond, words)
             return
@@ -574,29 +575,30 @@ class Resolver:
                 self.via_placed[n] = via
         self.last = [n for n, _ in named] or self.last
 
-    def _via_as_where_things_are(self, st: dict, words: str) -> dict:
+    def _via_as_where_things_are(self, st: dict, words: str) -> tuple[dict, list[tuple[str, bool]] | None]:
         """ "wash the plate on the coffee table": a place that cannot make the things so (no sink)
-        but holds them now says which ones, as "the plate that is on the coffee table" does; the
-        statement without its "via", the place moved to the things' words. Anything else is left
-        for :meth:`change` to refuse (the place cannot make anything so)."""
+        but holds them now says which ones, as "the plate that is on the coffee table" does: (the
+        statement without its "via", the place moved to the things' words; the things it names).
+        Anything else is (the statement, None), left for :meth:`change` to read and refuse (the
+        place cannot make anything so)."""
         need = VIA_PROPERTY.get(st["to"])
         if not isinstance(st.get("via"), dict) or st["via"].get("pronoun") or need is None:
-            return st
+            return st, None
         via = self.place_of(st["via"], words)
         if need in self.world["places"][via]["properties"] or any(t.get("from") for t in st["things"]):
-            return st
+            return st, None
         things = [{**t, "from": st["via"]} for t in st["things"]]
         try:
             named = self.objects(things, words, cond=st["to"], exceptions=st.get("except"))
         except PipflowError:
-            return st
+            return st, None
         if not named:
-            return st
+            return st, None
         one = len(named) == 1
         self.goal.notes.append(f"'{st['via']['words']}' says which: where {', '.join(n for n, _ in named)} "
                                f"{'is' if one else 'are'} now, not where {'it becomes' if one else 'they become'} "
                                f"{st['to']}")
-        return {k: v for k, v in st.items() if k != "via"} | {"things": things}
+        return {k: v for k, v in st.items() if k != "via"} | {"things": things}, named
 
     def once(self, named: list[tuple[str, bool]], cond: str, words: str) -> None:
         """ "wash the bowl and the mug, and once they are clean put them away": a state that an

@@ -39,11 +39,10 @@ aside: "instead" "of" NUM | "rather" "than" NUM
      | "now" | "right" "now" | "right" "away" | "tonight" | "at" "once" | "for" "now"
      | "no" "more" | "no" "less" | "no" "more" ","? "no" "less" | "not" "more" | "not" "one" "more"
      | "by" ("end" | "tonight" | "tomorrow" | "noon" | "morning" | "evening" | "shift" "end")
-     | ("at" | "in") "end" | "eventually" | "afterwards" | "later" | "when" "you" "can" | "when" "possible"
+     | ("at" | "in") "end" | "eventually" | "afterwards" | "later"
      | "i" ("think" | "guess" | "suppose" | "believe") | "i" "have" "a" "plan" | "ok" | "okay"
      | "thanks" | "thank" "you" | "if" "possible" | "as" "well" | "too"
-     | "as" "soon" "as" ("possible" | "you" "can") | "urgently" | "if" "you" "can"
-     | "when" "you" ("get" "a" "chance" | "have" "time" | "get" "time")
+     | "urgently" | "if" "you" "can"
      | ("this" | "before") ("morning" | "afternoon" | "evening" | "shift" "ends"?) | "before" ("lunch" | "noon")
      | "tomorrow" | "first" "thing" | "before" "end" "of" "shift"
      | "by" NUM ("pm" | "am" | "oclock" | "o" "clock")?

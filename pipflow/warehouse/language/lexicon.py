@@ -226,10 +226,12 @@ REQUEST_FRAMES = (("would", "it", "be", "possible", "to"), ("is", "it", "possibl
 
 
 #: when the robots may do it, said as a courtesy ("at your earliest convenience", "when you have a
-#: moment", "as soon as possible"): no time the plan can keep, set aside wherever it stands
+#: moment", "as soon as possible"): no time the plan can keep, set aside wherever it stands (one
+#: list: the grammar has no aside of its own for these; "asap" is a filler)
 COURTESY_TIMES = tuple(sorted(
     {("at", "your", "earliest", "convenience"), ("at", "your", "convenience"), ("as", "soon", "as", "possible"),
-     ("as", "soon", "as", "you", "can"), ("asap",), ("when", "convenient"), ("when", "you", "can")}
+     ("as", "soon", "as", "you", "can"), ("when", "convenient"), ("when", "possible"), ("when", "you", "can"),
+     ("when", "you", "have", "time"), ("when", "you", "get", "time")}
     | {(when,) + have + ("a", moment) for when in ("when", "whenever")
        for have in (("you", "have"), ("you", "get"), ("youve", "got"), ("you", "have", "got"), ("you", "ve", "got"))
        for moment in ("moment", "minute", "min", "sec", "second", "chance")}, key=len, reverse=True))
@@ -311,7 +313,8 @@ def quantity_phrases(toks: list[Tok], keywords: dict[str, str]) -> list[Tok]:
         # a word of the phrase may have been read as a word of a name ("room" of cold_room in
         # "wherever there's room"): the phrase, said as a whole, is the idiom
         # and a word the typo repair read as another ("given" as "give"): the phrase as written
-        if not all((x.kind == "word" and w in (x.value, x.text.lower())) or (j > 0 and x.kind == "name" and x.text.lower() == w)
+        if not all((x.kind == "word" and w in (x.value, x.text.lower()))
+                   or (j > 0 and x.kind == "name" and x.text.lower() == w)
                    for j, (x, w) in enumerate(zip(got, words))):
             return None
         text = " ".join(x.text for x in got)

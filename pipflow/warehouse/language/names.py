@@ -248,6 +248,7 @@ PLACE_NOUNS = KIND_WORDS["shelf"] | {"room", "rooms", "store", "cage", "line", "
 #: nouns said after a place's whole name that add nothing ("Outbound staging", "the receiving
 #: area"): read with it as the place (:meth:`NameIndex._place_noun_after`)
 SAID_AFTER_A_PLACE = {"staging", "area", "zone", "location", "bay"}
+_NOUNS_AFTER_A_NAME = PLACE_NOUNS | SAID_AFTER_A_PLACE
 #: words after which a place is said ("to dispatch", "off dispatch"), and words that may follow a
 #: place said there; a grammar verb that is a word of one place's name is that place only between
 #: the two ("from dispatch to intake", "in dispatch."), never before a count ("to dispatch 3 X")
@@ -538,7 +539,7 @@ class NameIndex:
         if whole.kind != "shelf" or i + 1 >= len(raw):
             return False
         noun = raw[i + 1].lower()
-        if noun not in PLACE_NOUNS | SAID_AFTER_A_PLACE:
+        if noun not in _NOUNS_AFTER_A_NAME:
             return False
         if i + 2 < len(raw) and word_value(raw[i + 2].lower()) is not None:
             return False   # "outbound dock 2": the noun and its number may name a place of their own

@@ -82,10 +82,9 @@ class RobotSelector:
             return {"skill": skill, "at_most": n - 1}
         if node.data == "r_super":
             t = next(v for v in vals if v.type == "SUPER")
-            after = words.lower().split()
-            k = next((i for i, w in enumerate(after) if w in SUPER_WORDS), len(after))
-            if vals[-1].type == "NUM" and vals[0].type == "SUPER" and after[k + 1:k + 2] != ["one"]:
-                raise TranslationError(f"'{words}': a number after '{after[k]}' is not a group of robots")
+            said, noun = _superlative_and_noun(words)
+            if vals[-1].type == "NUM" and vals[0].type == "SUPER" and noun != "one":
+                raise TranslationError(f"'{words}': a number after '{said}' is not a group of robots")
             sel = {"extreme": str(t.value), "skill": self._skill([], words)}
             self._check_tie(sel, vals, words)
             return sel
@@ -127,9 +126,7 @@ class RobotSelector:
         that all of them are meant); "the two strongest robots" must be as many as tie."""
         tied = select(sel, self.world, words)
         nums = [int(v.value) for v in vals if v.type == "NUM"]
-        after = words.lower().split()
-        k = next((i for i, w in enumerate(after) if w in SUPER_WORDS), len(after))
-        noun = after[k + 1] if k + 1 < len(after) else ""
+        _, noun = _superlative_and_noun(words)
         plural = noun.endswith("s") and noun not in ("bus",)
         want = nums[0] if nums else (None if plural else 1)
         if want is not None and want != len(tied):
@@ -232,3 +229,11 @@ def select(selector: dict, world: dict, words: str = "") -> list[str]:
     if not out:
         raise Refusal(f"'{words}': this world has no robot {what}")
     return out
+
+
+def _superlative_and_noun(words: str) -> tuple[str, str]:
+    """The superlative as said ("strongest") and the word after it ("robots", "one", ""), of the
+    words of a robot group."""
+    said = words.lower().split()
+    k = next((i for i, w in enumerate(said) if w in SUPER_WORDS), len(said))
+    return (said[k] if k < len(said) else ""), (said[k + 1] if k + 1 < len(said) else "")
