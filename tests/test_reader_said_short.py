@@ -8,7 +8,7 @@ import copy
 import pytest
 
 from pipflow.errors import TranslationError
-from pipflow.warehouse.language.translator import translate
+from pipflow.warehouse.language.translator import translate, understand
 from tests.tannery_world import TANNERY
 
 # tannery stock: drying_loft {cart_wheel 6, belt_round 2}, vat_east {cart_wheel 1, dye_drum 4},
@@ -87,15 +87,22 @@ def test_a_noun_that_names_a_place_of_its_own_is_not_read_into_the_name_before_i
         translate("move 2 dye drums from vat east to the packing dock", _with_packing(extra_dock=True))
 
 
-@pytest.mark.parametrize("command", [
-    "At your earliest convenience, please move 2 dye drums from vat east to the finishing table.",
-    "Please move 2 dye drums from vat east to the finishing table at your earliest convenience.",
-    "Move 2 dye drums from vat east to the finishing table when you have a moment.",
-    "Move 2 dye drums from vat east to the finishing table when youve got a sec",
-    "Per our discussion this morning, move 2 dye drums from vat east to the finishing table.",
+@pytest.mark.parametrize(("command", "courtesy"), [
+    ("At your earliest convenience, please move 2 dye drums from vat east to the finishing table.",
+     "At your earliest convenience"),
+    ("Please move 2 dye drums from vat east to the finishing table at your earliest convenience.",
+     "at your earliest convenience"),
+    ("Move 2 dye drums from vat east to the finishing table when you have a moment.", "when you have a moment"),
+    ("Move 2 dye drums from vat east to the finishing table when youve got a sec", "when youve got a sec"),
+    ("Per our discussion this morning, move 2 dye drums from vat east to the finishing table.",
+     "Per our discussion this morning"),
 ])
-def test_courtesies_of_time_and_what_the_order_follows_are_set_aside(command: str) -> None:
-    assert translate(command, TANNERY)["goal"] == {"vat_east": {"dye_drum": 2}, "finishing_table": {"dye_drum": 3}}
+def test_courtesies_of_time_and_what_the_order_follows_are_set_aside_and_said(command: str, courtesy: str) -> None:
+    """They read like a time or a reason the plan would keep: the echo says they were not kept."""
+    got = understand(command, TANNERY)
+    assert got["goal"] == {"vat_east": {"dye_drum": 2}, "finishing_table": {"dye_drum": 3}}
+    aside = [line for line in got["explanation"] if line.startswith("set aside")]
+    assert len(aside) == 1 and f"'{courtesy}'" in aside[0] and "lease" not in aside[0]
 
 
 @pytest.mark.parametrize("command", [

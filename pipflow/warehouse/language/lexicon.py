@@ -243,10 +243,13 @@ _PER_WHOSE = {"our", "your", "the", "my", "his", "her", "their", "this", "that",
 FRAME_WORDS = frozenset(w for f in REQUEST_FRAMES + COURTESY_TIMES for w in f)
 
 
-def without_request_frames(toks: list[Tok]) -> list[Tok]:
+def without_request_frames(toks: list[Tok]) -> tuple[list[Tok], list[str]]:
     """The tokens without a frame of :data:`REQUEST_FRAMES` that opens a sentence or a clause
-    ("Hi, while you're at it, ...")."""
+    ("Hi, while you're at it, ..."), a courtesy of time or a "Per ...," clause; with the words of
+    the courtesies and "Per" clauses, as said, for the echo (they read like a time or a reason, so
+    the user is told they were not kept; a request frame only asks)."""
     out: list[Tok] = []
+    aside: list[str] = []
     k = 0
     while k < len(toks):
         start = k == 0 or (toks[k - 1].kind == "punct" and toks[k - 1].value in (".", ";", "!", "?", ",", ":"))
@@ -254,18 +257,19 @@ def without_request_frames(toks: list[Tok]) -> list[Tok]:
             x.kind == "word" and x.value == w for x, w in zip(toks[k:k + len(f)], f))), None)
         courtesy = next((f for f in COURTESY_TIMES if len(toks) >= k + len(f) and all(
             x.kind == "word" and x.value == w for x, w in zip(toks[k:k + len(f)], f))), None)
-        if hit or courtesy:
-            k += len(hit or courtesy)
+        size = len(hit or courtesy or ()) or (_per_clause(toks, k) if start else 0)
+        if size:
+            if not hit:
+                aside.append(" ".join(t.text for t in toks[k:k + size] if t.kind == "word"))
+            k += size
+            if not courtesy and not hit:
+                continue   # a "Per" clause took its comma
             if k < len(toks) and toks[k].kind == "punct" and toks[k].value == ",":
                 k += 1   # the comma that set the frame off goes with it
             continue
-        per = _per_clause(toks, k) if start else 0
-        if per:
-            k += per
-            continue
         out.append(toks[k])
         k += 1
-    return out
+    return out, aside
 
 
 def _per_clause(toks: list[Tok], k: int) -> int:
@@ -721,12 +725,12 @@ class Lexicon:
                 if typo is not None:
                     t = Tok("word", t.text, typo)
             fixed.append(t)
-        toks = lexicon_verbs(quantity_phrases(addressed_anyone(without_request_frames(
-            read_counts(_split_hyphens(fixed, self.keywords)))), self.keywords), self.keywords)
+        toks, framed = without_request_frames(read_counts(_split_hyphens(fixed, self.keywords)))
+        toks = lexicon_verbs(quantity_phrases(addressed_anyone(toks), self.keywords), self.keywords)
         toks = corrected_later(without_particles(corrected(toks)))
         out: list[Lexed] = []
         cur: list[Tok] = []
-        self.aside: list[str] = []
+        self.aside: list[str] = framed
         for t in toks + [Tok("punct", ".", ".")]:
             if t.kind == "punct" and t.value in (".", ";", "!", "?"):
                 if cur:
