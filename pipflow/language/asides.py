@@ -375,6 +375,13 @@ OPENERS = frozenset({("quick", "one"), ("right", "then"), ("ok", "then"), ("okay
                      ("few", "things"), ("a", "few", "things"), ("couple", "things")})
 
 
+#: whole clauses that close a message and say nothing else ("that's all for now", "that's it"):
+#: their "all" and "it" point at what was said, no quantity or thing
+CLOSINGS = frozenset({(*that, *rest, *later) for that in (("thats",), ("that", "is"), ("that", "s"))
+                      for rest in (("all",), ("it",), ("everything",))
+                      for later in ((), ("for", "now"), ("for", "today"), ("for", "tonight"), ("then",))})
+
+
 def is_opener(words: Iterable[str]) -> bool:
     """A whole clause that only opens a request ("Quick one", "Right then": :data:`OPENERS`)."""
     return tuple(w for w in words if w) in OPENERS
@@ -390,7 +397,7 @@ def content_free(words: Iterable[str], content: Callable[[str], bool],
     ws = [w for w in words if w]
     if not ws:
         return True
-    if is_greeting(ws):
+    if is_greeting(ws) or tuple(ws) in CLOSINGS:
         return True   # its "all" or "team" is who is greeted, no quantifier or robot group
     if names is not None and is_pleasantry(ws, names):
         return True

@@ -14,6 +14,7 @@ from pipflow.warehouse.language.goals import Choice
 from pipflow.warehouse.language.readings import MAX_CANDIDATES, canonical
 from pipflow.warehouse.language.repairs import by_head_word, near_words, with_phrase, with_word
 from pipflow.warehouse.language.resolver import resolve
+from pipflow.warehouse.language.runon import RunOnChoice
 from pipflow.warehouse.language.salvage import SALVAGE
 
 def candidates(command: str, world: dict, exc: TranslationError) -> list[dict]:
@@ -26,8 +27,10 @@ def candidates(command: str, world: dict, exc: TranslationError) -> list[dict]:
     resolve, or repeat another's meaning, are not offered. Nothing here is acted on: a user (or
     the bench) chooses."""
     sentence = getattr(exc, "sentence", None)
-    if sentence is None:
-        picks: list[dict] = []
+    if isinstance(exc, RunOnChoice):
+        picks: list[dict] = [{"*": {"stops": stops}} for stops in exc.stops]
+    elif sentence is None:
+        picks = []
     elif isinstance(exc, Choice):
         picks = [{sentence: {exc.key: option}} for option in exc.options]
     else:

@@ -35,17 +35,23 @@ def names_of(world: dict) -> tuple:
                   if isinstance(v, dict) else (str(r),) for r, v in robots.items()))
 
 
-def lexed_command(command: str, world: dict) -> tuple[Lexicon, RobotSelector, list[Lexed]]:
-    """(lexicon, robot selector, sentences) of ``command`` in ``world``, remembered for the last
-    :data:`_LEXED_KEPT` commands (the same world object only: a changed world is a new object)."""
-    key = (command, id(world), names_of(world))
+def lexed_command(command: str, world: dict, stops: frozenset[int] = frozenset()
+                  ) -> tuple[Lexicon, RobotSelector, list[Lexed]]:
+    """(lexicon, robot selector, sentences) of ``command`` in ``world`` (with a stop before each
+    recognised token at ``stops``: :mod:`runon`), remembered for the last :data:`_LEXED_KEPT`
+    commands (the same world object only: a changed world is a new object)."""
+    key = (command, stops, id(world), names_of(world))
     hit = _LEXED.get(key)
     if hit is not None and hit[0] is world:
         _LEXED.move_to_end(key)
         return hit[1], hit[2], hit[3]
-    lex = Lexicon(world, keywords())
-    selector = RobotSelector(world, lex.index)
-    sentences = lex.sentences(command)
+    if stops:
+        lex, selector, _ = lexed_command(command, world)
+        lex, sentences = lex.stopped(stops)
+    else:
+        lex = Lexicon(world, keywords())
+        selector = RobotSelector(world, lex.index)
+        sentences = lex.sentences(command)
     _LEXED[key] = (world, lex, selector, sentences)
     if len(_LEXED) > _LEXED_KEPT:
         _LEXED.popitem(last=False)
@@ -87,6 +93,7 @@ def _second_reading(lexed: Lexed, error: TranslationError, lex: Lexicon, selecto
             # what is left after the talk is set aside is what does not read: say that
             trimmed = failure(again, lexed.trimmed, lex) if isinstance(again, UnexpectedInput) else again
             trimmed.sentence, trimmed.trimmed = error.sentence, True  # type: ignore[attr-defined]
+            _locate(trimmed, lexed.trimmed, lex)
             trimmed.args = (f"{trimmed.args[0]} (set aside: {'; '.join(repr(a) for a in lexed.aside)})",)
             error = trimmed
     if droppable and not isinstance(error, Choice):
@@ -99,7 +106,8 @@ def parse_reading(command: str, world: dict, picks: dict | None = None) -> dict:
     reading a user chose among candidates: ``{"reading": k}``, ``{"scope": ...}``, or ``{"drop":
     [token indexes]}`` (words left out of it); none in an ordinary run."""
     picks = picks or {}
-    lex, selector, sentences = lexed_command(command, world)
+    stops = frozenset((picks.get("*") or {}).get("stops") or ())
+    lex, selector, sentences = lexed_command(command, world, stops)
     statements: list[dict] = []
     rules: list[dict] = []
     memory: dict = {}
@@ -130,6 +138,7 @@ def parse_reading(command: str, world: dict, picks: dict | None = None) -> dict:
             # the sentence as said does not read; read again it may (_second_reading)
             error = failure(exc, lexed, lex) if isinstance(exc, UnexpectedInput) else exc
             error.sentence = index  # type: ignore[attr-defined]  # for the candidates (parse)
+            _locate(error, lexed, lex)
             if salvage and salvage != "sentence":
                 raise error from None  # the partial parse read the sentence without its talk already
             again = _second_reading(lexed, error, lex, selector, world, memory, pick,
@@ -141,6 +150,10 @@ def parse_reading(command: str, world: dict, picks: dict | None = None) -> dict:
                 continue
             reader, talk = again
             set_aside += talk
+        if stops and not (reader.statements or reader.rules or reader.updates):
+            # a stop put into a command said without them (runon) must end a sentence that asks for
+            # something: "... from roll store too / cutting room" is no reading of a move
+            raise TranslationError(f"'{said(lexed)}' asks for nothing by itself")
         for k, new in reader.updates.items():
             statements[k] = new
         if observed or reader.observed:
@@ -159,6 +172,16 @@ def parse_reading(command: str, world: dict, picks: dict | None = None) -> dict:
     set_aside = lex.aside + set_aside
     return {"command": command, "statements": statements, "rules": rules,
             **({"set_aside": set_aside} if set_aside else {}), **({"unread": unread} if unread else {})}
+
+def _locate(error: TranslationError, lexed: Lexed, lex: Lexicon) -> None:
+    """Where the sentence that does not read stands among the command's recognised tokens
+    (``span``, None where its words were made anew) and where its word that no rule places does
+    (``at``; None where it ends before it reads): where a stop may be put (:mod:`runon`)."""
+    first, last = (lex.position(lexed.source[0]), lex.position(lexed.source[-1])) if lexed.source else (None, None)
+    k = getattr(error, "unplaced", None)
+    error.span = (first, last + 1) if first is not None and last is not None else None  # type: ignore[attr-defined]
+    error.at = lex.position(lexed.source[k]) if k is not None and k < len(lexed.source) else None  # type: ignore[attr-defined]
+
 
 def _about_the_complaint(reader: SentenceReader, observed: list[tuple[str, list[str]]]) -> None:
     """After "P has too many X", a statement that does not name P ("move 2 to Q": from P, or from

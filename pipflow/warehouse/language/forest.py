@@ -12,6 +12,9 @@ from collections import OrderedDict
 from typing import Any
 
 from lark import Lark, Token, Tree
+from lark.common import ParserConf
+from lark.grammar import NonTerminal, Rule
+from lark.parsers.grammar_analysis import GrammarAnalyzer
 from lark.exceptions import UnexpectedInput, UnexpectedToken
 
 from pipflow.errors import TranslationError
@@ -30,6 +33,18 @@ def all_readings_parser() -> Lark:
     lookahead (:mod:`pipflow.language.lookahead`: the same forests, about a sixth of the time)."""
     return with_lookahead(earley_parser(nullable_optionals(GRAMMAR), lexer=ListLexer, keep_all_tokens=True,
                                         ambiguity="explicit"))
+
+
+@functools.lru_cache(maxsize=1)
+def sentence_edges() -> tuple[frozenset[str], frozenset[str]]:
+    """The terminals a sentence may open with and those it may end with (lark's FIRST sets of the
+    grammar and of the grammar read backwards): where a stop may stand (:mod:`runon`)."""
+    parser = all_readings_parser()
+    start = NonTerminal(parser.options.start[0])
+    backwards = [Rule(r.origin, list(reversed(r.expansion)), r.order, r.alias, r.options) for r in parser.rules]
+    first, last = (GrammarAnalyzer(ParserConf(rules, None, parser.options.start)).FIRST[start]
+                   for rules in (parser.rules, backwards))
+    return frozenset(t.name for t in first), frozenset(t.name for t in last)
 
 
 @functools.lru_cache(maxsize=1)
@@ -104,6 +119,14 @@ def without(lexed: Lexed, drop: list[int]) -> Lexed:
 
 
 def failure(exc: UnexpectedInput, lexed: Lexed, lex: Lexicon) -> TranslationError:
+    """The parse error said in words (``unread``: no rule of the grammar reads the sentence, as
+    opposed to a sentence read and refused for what it means)."""
+    error = _failure(exc, lexed, lex)
+    error.unread = True  # type: ignore[attr-defined]
+    return error
+
+
+def _failure(exc: UnexpectedInput, lexed: Lexed, lex: Lexicon) -> TranslationError:
     sentence = " ".join(t.text for t in lexed.source if t.text).replace(" zzposs", "'s")
     where = ""
     if isinstance(exc, UnexpectedToken) and exc.token.type != "$END":

@@ -231,7 +231,7 @@ goal: there_be items loc                                  -> g_set
     | places "to" items                                     -> g_place_set
     | putv items loc                                       -> g_set
     | putv items "each" loc                                -> g_set
-    | want places "to"? setv items                          -> g_place_set
+    | want places "to"? setv items resumptive?              -> g_place_set
     | "set" places "to" items                               -> g_place_set
     | "set" ihead loc "to" NUM                              -> g_item_first
     | ihead loc? ":" NUM loc?                               -> g_item_first
@@ -452,7 +452,7 @@ mult: "double" | "triple" | "quadruple" | "halve"
 swapv: "swap" | "trade" | "exchange" | "switch" | "interchange"
 emptyv: "empty" | "clear" | "clean" "out" | "clear" "out" | "empty" "out"
 emptied: "empty" | "emptied" | "cleared" | "vacant" | "cleaned" "out" | "emptied" "out" | "cleared" "out"
-as_is: "where" ("it" | "they") ("is" | "are") | "as" ("it" | "they") ("is" | "are") | "alone" | "as" "is" | "be"
+as_is: "where" ("it" | "they") ("is" | "are") | ("as" | "how") ("it" | "they") ("is" | "are") | "alone" | "as" "is" | "be"
      | "unchanged" | "untouched"
      | "untouched" | "unchanged" | "as" "is" | "way" ("it" | "they") ("is" | "are" | "was" | "were") | "as" ("it" | "they") ("was" | "were")
 

@@ -9,6 +9,8 @@ the grammar nor a filler stays an unknown terminal, so the parser refuses it by 
 """
 from __future__ import annotations
 
+import copy
+
 import re
 from dataclasses import dataclass, replace
 from typing import Any, Callable
@@ -22,7 +24,7 @@ from pipflow.language.characters import refuse_unread
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS
 from pipflow.language.spelling import distance, normalize, plural_forms, slip, tolerance
 from pipflow.warehouse.language.names import KIND_WORDS, POSS_MARK, STOPWORDS, NameIndex, Tok, read_counts, recognize
-from pipflow.warehouse.language.wordorder import left_dislocated, noun_adjuncts, numbered_siblings
+from pipflow.warehouse.language.wordorder import left_dislocated, noun_adjuncts, numbered_siblings, unmarked_lists
 
 #: no user writes a longer command; past this the parser would only be asked to burn time
 MAX_COMMAND_CHARS = 4000
@@ -448,6 +450,18 @@ def _split_hyphens(toks: list[Tok], keywords: dict[str, str]) -> list[Tok]:
     return out
 
 
+def _spoken_no(toks: list[Tok], k: int) -> bool:
+    """Whether a bare "no" at ``k``, after a count, takes it back as said aloud: before a
+    restatement ("four no make that five") or a count said in words ("six no seven", as dictated).
+    "5 no 3" stays unread: written "no" before digits may abbreviate "number" ("No. 3")."""
+    if toks[k].value != "no" or k + 1 >= len(toks):
+        return False
+    after = toks[k + 1]
+    if after.kind == "num":
+        return not any(c.isdigit() for c in after.text)
+    return any([str(x.value) for x in toks[k + 1:k + 1 + len(w)] if x.kind == "word"] == list(w) for w in RESTATE)
+
+
 def corrected(toks: list[Tok]) -> list[Tok]:
     """A count taken back and replaced ("5, no, 6 bolts", "Send 5 logs, no wait, 4 logs from P")
     is the second count, its source words all of the span; the first is never read. Only a count
@@ -464,7 +478,8 @@ def corrected(toks: list[Tok]) -> list[Tok]:
         # set off by commas, or by dashes (read as ":"): "Take two - sorry, three - foam swords";
         # or said straight on, as dictated, with an apology in it: "move 5 no sorry 6 of sand"
         unmarked = (t.kind == "num" and named is None and k + 1 < len(toks) and toks[k].kind == "word"
-                    and any(x.kind == "word" and x.value in UNMARKED_TAKE_BACK for x in toks[k:k + 2]))
+                    and (any(x.kind == "word" and x.value in UNMARKED_TAKE_BACK for x in toks[k:k + 2])
+                         or _spoken_no(toks, k)))
         if t.kind == "num" and k < len(toks) and (unmarked or (toks[k].kind == "punct" and toks[k].value in (",", ":"))):
             opened = toks[k].value if toks[k].kind == "punct" else None
             j = k + 1 - unmarked
@@ -710,13 +725,15 @@ class Lexicon:
         keep = [t for k, t in enumerate(cur) if k not in drop]
         return keep, aside
 
-    def sentences(self, command: str) -> list[Lexed]:
-        """The command's sentences as terminals (split at . ; ! ?). A sentence with no content
-        (:meth:`content`) is set aside: not returned, its words kept in :attr:`aside`; a sentence
-        with some content-free clauses carries its reading without them as ``trimmed``."""
+    def sentences(self, command: str, stops: frozenset[int] = frozenset()) -> list[Lexed]:
+        """The command's sentences as terminals (split at . ; ! ?, and before the recognised
+        tokens at ``stops``: a command said without stops read with them, :mod:`runon`). A
+        sentence with no content (:meth:`content`) is set aside: not returned, its words kept in
+        :attr:`aside`; a sentence with some content-free clauses carries its reading without them
+        as ``trimmed``. :attr:`tokens` keeps the recognised tokens, :meth:`position` finds one."""
         # a time written as one word ("3pm", "10am", "2oclock") is the count and its word, as "3 pm" is
         text = re.sub(r"\b(\d{1,2})(am|pm|oclock)\b", r"\1 \2", self._joined(check_text(command)), flags=re.IGNORECASE)
-        toks = noun_adjuncts(numbered_siblings(recognize(text, self.index), self._numbered_places))
+        toks = noun_adjuncts(unmarked_lists(numbered_siblings(recognize(text, self.index), self._numbered_places)))
         fixed = []
         for t in toks:
             if t.kind == "word" and not self._known(str(t.value)) and self._group(t.text) is None:
@@ -728,11 +745,24 @@ class Lexicon:
         toks, framed = without_request_frames(read_counts(_split_hyphens(fixed, self.keywords)))
         toks = lexicon_verbs(quantity_phrases(addressed_anyone(toks), self.keywords), self.keywords)
         toks = corrected_later(without_particles(corrected(toks)))
+        self._framed = framed
+        return self._split(toks, stops)
+
+    def stopped(self, stops: frozenset[int]) -> tuple["Lexicon", list[Lexed]]:
+        """A copy of this lexicon with the command it lexed last split again with ``stops``
+        (:meth:`sentences` with them, without recognising its words again)."""
+        other = copy.copy(self)
+        return other, other._split(self.tokens, stops)
+
+    def _split(self, toks: list[Tok], stops: frozenset[int]) -> list[Lexed]:
+        """The recognised tokens split into sentences (:meth:`sentences`)."""
         out: list[Lexed] = []
         cur: list[Tok] = []
-        self.aside: list[str] = framed
-        for t in toks + [Tok("punct", ".", ".")]:
-            if t.kind == "punct" and t.value in (".", ";", "!", "?"):
+        self.aside: list[str] = list(self._framed)
+        self.tokens = toks
+        self._positions = {id(t): k for k, t in enumerate(toks)}
+        for k, t in enumerate(toks + [Tok("punct", ".", ".")]):
+            if k in stops or (t.kind == "punct" and t.value in (".", ";", "!", "?")):
                 if cur:
                     said = self._sentence(cur)
                     if said is None:
@@ -741,9 +771,17 @@ class Lexicon:
                         moved = left_dislocated(cur)
                         out.append(said if moved == cur else replace(said, dislocated=self._sentence(moved)))
                 cur = []
-            else:
+            if not (t.kind == "punct" and t.value in (".", ";", "!", "?")):
                 cur.append(t)
         return out
+
+    def position(self, tok: Tok) -> int | None:
+        """Where a token of the last command lexed stands among its recognised tokens."""
+        return self._positions.get(id(tok))
+
+    def talk(self, toks: list[Tok]) -> bool:
+        """Whether recognised tokens said as a sentence ask for nothing (it would be set aside)."""
+        return self._sentence(toks) is None
 
     def _sentence(self, cur: list[Tok]) -> Lexed | None:
         """A sentence's terminals, with its reading without content-free clauses (``trimmed``);
@@ -761,7 +799,7 @@ class Lexicon:
         exact: set[int] = set()
         said_exactly = False
         for k, t in enumerate(toks):
-            term = self._terminal(t)
+            term = self.terminal(t)
             if term is None:
                 said_exactly = t.kind == "word" and str(t.value) in EXACT_WORDS
                 continue
@@ -785,7 +823,9 @@ class Lexicon:
             source.append(t)
         return Lexed(tokens, source, frozenset(exact))
 
-    def _terminal(self, t: Tok) -> tuple[str, object] | None:
+    def terminal(self, t: Tok) -> tuple[str, object] | None:
+        """The grammar terminal a recognised token reads as (None: a filler, or a mark that
+        carries nothing)."""
         if t.kind == "num":
             return "NUM", t.value
         if t.kind == "name":

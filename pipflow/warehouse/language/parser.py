@@ -20,6 +20,7 @@ from pipflow.warehouse.language.command import parse_reading
 from pipflow.warehouse.language.forest import keywords
 from pipflow.warehouse.language.goals import Choice
 from pipflow.warehouse.language.readings import canonical, meaning_of
+from pipflow.warehouse.language.runon import RunOnChoice, with_stops
 
 __all__ = ["parse", "candidates", "canonical", "keywords"]
 
@@ -41,12 +42,18 @@ def parse(command: str, world: dict) -> dict:
         try:
             return {**parse_reading(readings[0], world), "command": command}
         except TranslationError as exc:
+            try:
+                read = None if isinstance(exc, Choice) else with_stops(readings[0], world, exc)
+            except RunOnChoice as either:
+                exc, read = either, None
+            if read is not None:
+                return {**read, "command": command}
             exc.candidates = candidates(readings[0], world, exc)
             if exc.candidates:
                 exc.args = (f"{exc.args[0]}. Did you mean: " + "; or ".join(
                     f"({k}) {c['reading']} [from '{c['words']}']" for k, c in enumerate(exc.candidates, 1))
                     + "? Say it so, or choose one",)
-            raise
+            raise exc from None
     broken, joined = readings
     try:
         first = parse_reading(broken, world)

@@ -521,8 +521,8 @@ class SentenceReader(GoalRules, TailRules, RuleScope, Interpreter):
     def _gap_after_more(self, nps: list[dict], places: list[str]) -> None:
         """ "Put 2 more lids on A and 1 on B", "A gets 2 more lids, B 3": is B's count one more or
         one in all? The words do not say; where B holds some now the two differ and nothing is
-        guessed (B's final count was read)."""
-        prev = self.statements[-1] if self.statements else None
+        guessed (B's final count was read). The same after a stop: "... 2 more lids on A. 1 on B"."""
+        prev = self.statements[-1] if self.statements else (self.prior_last[-1] if self.prior_last else None)
         if prev is None or prev["op"] != "change" or "more" not in (prev.get("amount") or {}):
             return
         stock = self.lex.world.get("stock") or {}

@@ -1,7 +1,7 @@
 """Word order people use that the grammar reads in another order: a place name used as a noun
 adjunct ("the north cave truckles": north cave's truckles), and a topic said first and taken up by
-a pronoun ("The wheels on P, double them"), and a numbered place's sibling said by its number
-("between dock 1 and 2"). Each is a rewrite of a sentence's tokens; the second is
+a pronoun ("The wheels on P, double them"), a numbered place's sibling said by its number
+("between dock 1 and 2"), and a list said without its commas. Each is a rewrite of a sentence's tokens; the second is
 read only where the sentence as said does not parse (``Lexed.dislocated``)."""
 from __future__ import annotations
 
@@ -24,6 +24,27 @@ def noun_adjuncts(toks: list[Tok]) -> list[Tok]:
         out.append(t)
         if t.kind == "name" and t.of == "shelf" and nxt is not None and nxt.kind == "name" and nxt.of == "product":
             out.append(Tok("word", "", POSS_MARK))
+    return out
+
+
+def unmarked_lists(toks: list[Tok]) -> list[Tok]:
+    """Names of one kind said one after another, the last joined by "and" / "or", are a list said
+    without its commas, as dictation writes it ("between mezzanine overflow and cage"): the commas
+    are put in. Two names side by side with no "and" after them are left as said (no list)."""
+    out: list[Tok] = []
+    k = 0
+    while k < len(toks):
+        run = k
+        while run + 1 < len(toks) and toks[run].kind == toks[run + 1].kind == "name" and toks[run].of == toks[run + 1].of:
+            run += 1
+        last = run + 2 + (run + 2 < len(toks) and toks[run + 2].kind == "word" and toks[run + 2].value == "the")
+        closed = (last < len(toks) and toks[run + 1].kind == "word" and toks[run + 1].value in ("and", "or")
+                  and toks[last].kind == "name" and toks[last].of == toks[run].of)
+        for j in range(k, run + 1):
+            out.append(toks[j])
+            if closed and j < run:
+                out.append(Tok("punct", "", ","))
+        k = run + 1
     return out
 
 
