@@ -533,3 +533,39 @@ def test_a_filler_closing_a_clause_does_not_hide_after(bothy):
         ({"bench": ["swede"]}, {"larder": ["closed"]})
     assert goal("Slice the turnip and close the larder after please", bothy) == \
         ({}, {"turnip": ["sliced"], "larder": ["closed"]})
+
+
+def _same(command: str, with_it: str, world: dict) -> tuple[dict, dict]:
+    """The goal of a command, asserted equal to that of its wording with "it" said."""
+    got = goal(command, world)
+    assert got == goal(with_it, world)
+    return got
+
+
+def test_a_clause_that_leaves_out_it_is_read_as_with_it(bothy):
+    """Pro-drop (as speakers of Polish, Spanish or Italian write English): a clause opening with
+    "is" and what is said of it is read as "it is ..." would be: a cue, a reason, talk set aside."""
+    radio = world_from_text(BOTHY.replace(
+        "wireless: {in: dresser, mass: 1, properties: [pickupable, toggleable], state: {on: false}}",
+        "radio:    {in: bench, mass: 1, properties: [pickupable, toggleable], state: {on: true}}"), "bothy.yaml")
+    assert _same("Turn off the radio, is too loud, and switch on the lamp.",
+                 "Turn off the radio, it's too loud, and switch on the lamp.", radio) == \
+        ({}, {"radio": ["off"], "lamp": ["on"]})
+    assert _same("Is getting dark, put all lights on.", "It's getting dark, put all lights on.", bothy) == \
+        ({}, {"lamp": ["on"], "lantern": ["on"]})
+    assert _same("Wash the crockery, is all dirty.", "Wash the crockery, it's all dirty.", bothy) == \
+        ({}, {"jug": ["clean"], "platter": ["clean"], "beaker": ["clean"]})
+    assert _same("Put the plum in the icebox, is for dinner.", "Put the plum in the icebox, it's for dinner.",
+                 bothy) == ({"icebox": ["plum"]}, {"icebox": ["closed"]})
+    assert _same("Is freezing in here.", "It's freezing in here.", bothy) == ({}, {"wood_stove": ["on"]})
+    # refused where "it is" is: the room or the plum?
+    with pytest.raises(TranslationError):
+        goal("Put the plum in the icebox, is cold.", bothy)
+    # asked, or "is" before a subject: a question, never a clause without its subject
+    with pytest.raises(TranslationError):
+        goal("Is too loud?", radio)
+    with pytest.raises(TranslationError):
+        goal("Is getting dark?", bothy)
+    with pytest.raises(TranslationError):
+        goal("Is the lamp on, switch it off.", bothy)
+

@@ -7,7 +7,7 @@ from __future__ import annotations
 from lark import Token, Tree
 
 from pipflow.errors import TranslationError
-from pipflow.household.language.grammar import NOUN_DUAL
+from pipflow.household.language.grammar import base_class
 from pipflow.household.language.lexicon import (ACTION_PARTICIPLES, ACTIVITIES, COLD, FOUL_WORDS, LAUNDRY, LIGHT_CATEGORY_WORD, MEALS, NEARNESS, OPPOSITE,
                                                 TEMPERATURE_ADJECTIVES, UNIT_DETERMINERS)
 from pipflow.household.language.tokens import Tag
@@ -32,7 +32,7 @@ class Builder:
         return self.tags[int(tok)]
 
     def _cls(self, tok: Token) -> str:
-        return tok.type[:-len(NOUN_DUAL)] if tok.type.endswith(NOUN_DUAL) else tok.type
+        return base_class(tok.type)
 
     def _tokens(self, node: Tree | Token) -> list[Token]:
         if isinstance(node, Token):

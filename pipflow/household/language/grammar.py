@@ -228,6 +228,12 @@ noun: NOUN__
 NOUN_DUAL = "__NOUN"
 
 
+def base_class(cls: str) -> str:
+    """The lexicon class of a token class: a dual class (a lexicon word that is also a name of the
+    world, ``V_TRASH__NOUN``) without its twin mark."""
+    return cls[:-len(NOUN_DUAL)] if cls.endswith(NOUN_DUAL) else cls
+
+
 def classes() -> list[str]:
     """Every token class of the lexicon (plus the punctuation and number classes)."""
     return sorted({cls for cls, _ in PHRASES.values()})

@@ -4,7 +4,7 @@ table lamp": the lamp on the table), a sentence that only restates an order, an 
 a name ("a clean mug"), "that" as a determiner ("that curry has gone off")."""
 from __future__ import annotations
 
-from pipflow.household.language.grammar import NOUN_DUAL
+from pipflow.household.language.grammar import NOUN_DUAL, base_class
 from pipflow.household.language.lexicon import GRADED, PHRASES
 from pipflow.household.language.tokens import Tag
 from pipflow.household.world import members
@@ -99,10 +99,6 @@ def demonstratives(tags: list[Tag]) -> list[Tag]:
 _WISHES = {"WANT", "NEED"}
 
 
-def _base(cls: str) -> str:
-    return cls[:-len(NOUN_DUAL)] if cls.endswith(NOUN_DUAL) else cls
-
-
 def without_hedges(tags: list[Tag], notes: list[str]) -> list[Tag]:
     """The tags without the intensifiers and hedges (lexicon ``HEDGES``) that grade the word after
     them ("ever so dark", "absolutely freezing", "I could really go for", "the plates are all
@@ -110,8 +106,8 @@ def without_hedges(tags: list[Tag], notes: list[str]) -> list[Tag]:
     refused unplaced (no word is dropped that could carry what is wanted)."""
     out: list[Tag] = []
     for k, t in enumerate(tags):
-        nxt = _base(tags[k + 1].cls) if k + 1 < len(tags) else ""
-        prev = _base(out[-1].cls) if out else ""
+        nxt = base_class(tags[k + 1].cls) if k + 1 < len(tags) else ""
+        prev = base_class(out[-1].cls) if out else ""
         if (t.cls == "HEDGE" and nxt in GRADED) or (t.cls == "INTENS" and nxt in _WISHES) or \
                 (t.cls == "ALL" and prev == "IS" and nxt == "ADJ"):
             notes.append(f"'{t.words}' says how much, not what: read as nothing")
@@ -129,7 +125,7 @@ def left_lying(tags: list[Tag]) -> list[Tag]:
     for k, t in enumerate(out[:-1]):
         if t.cls != "IS" or t.words.split()[-1] != "left":
             continue
-        nxt = _base(out[k + 1].cls)
+        nxt = base_class(out[k + 1].cls)
         if nxt in ("ON", "IN") and k + 2 < len(out) and out[k + 2].cls not in ("END", "COMMA"):
             out[k] = Tag("LYING", t.value, t.words)
         elif nxt in ("ADJ", "ON", "OFF", "V_OPEN", "V_SHUT", "V_CLEAN", "V_WARM"):
@@ -141,23 +137,52 @@ def left_lying(tags: list[Tag]) -> list[Tag]:
 #: in here", "too loud", "freezing in here")
 _FELT = {"INTENS", "TOO", "TEMPCUE", "LIGHTCUE", "SOUNDCUE", "AIRCUE"}
 _CUES = {"TEMPCUE", "LIGHTCUE", "SOUNDCUE", "AIRCUE"}
+#: what may open the subject of a clause: after "is", one of these makes it a question ("is the
+#: kettle on"), never a clause that left its subject out
+_SUBJECT_OPENERS = {"THE", "NOUN", "IT", "THAT", "THERE", "SUBJ", "NUM"}
+
+
+def _opens_clause(out: list[Tag]) -> bool:
+    return not out or out[-1].cls in ("END", "COMMA", "EXCL")
+
+
+def _asked(tags: list[Tag], k: int) -> bool:
+    """Whether the sentence of tag ``k`` ends with a question mark."""
+    end = next((t for t in tags[k:] if t.cls == "END"), None)
+    return end is not None and end.words == "?"
+
+
+def _subject_dropped(tags: list[Tag], k: int) -> bool:
+    """ "Turn off the radio, is too loud", "is getting dark, put the lights on": a clause that
+    opens with "is" (pro-drop, as speakers of Polish, Spanish or Italian write English) and goes on
+    with what is said of it has left out "it"; a sentence asked ("is the kettle on?", "is it
+    cold?") or "is" before the opening of a subject is a question, never read so."""
+    t = tags[k]
+    nxt = base_class(tags[k + 1].cls) if k + 1 < len(tags) else "END"
+    return t.cls == "IS" and t.words.split()[0] == "is" and nxt not in _SUBJECT_OPENERS | {"END", "COMMA"} \
+        and not tags[k + 1].cls.endswith(NOUN_DUAL) and not _asked(tags, k)
 
 
 def elided_it_is(tags: list[Tag], notes: list[str]) -> list[Tag]:
     """ "Bit dark in here", "freezing in here!": a sentence that opens with how the room feels has
-    left out "it's"; read with it (only when a cue word of the room follows)."""
+    left out "it's"; read with it (only when a cue word of the room follows). A clause that opens
+    with "is" and what is said of it ("..., is too loud", :func:`_subject_dropped`) has left out
+    "it": read with it, and so as "it is ..." would be (a reason, a cue, or talk set aside)."""
     out: list[Tag] = []
     k = 0
     while k < len(tags):
         t = tags[k]
-        opens = not out or out[-1].cls in ("END", "COMMA", "EXCL")
-        if opens and t.cls in _FELT:
+        if _opens_clause(out) and t.cls in _FELT:
             j = k
             while j < len(tags) and tags[j].cls in ("INTENS", "TOO"):
                 j += 1
             if j < len(tags) and tags[j].cls in _CUES:
                 notes.append(f"'{' '.join(x.words for x in tags[k:j + 1])}': read as 'it is ...'")
                 out += [Tag("IT", None, "(it)"), Tag("IS", None, "(is)")]
+        elif _opens_clause(out) and _subject_dropped(tags, k):
+            end = next((j for j in range(k, len(tags)) if tags[j].cls in ("END", "COMMA")), len(tags))
+            notes.append(f"'{' '.join(x.words for x in tags[k:end])}' leaves its subject out: read as 'it {t.words} ...'")
+            out.append(Tag("IT", None, "(it)"))
         out.append(t)
         k += 1
     return out
