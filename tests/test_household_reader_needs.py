@@ -569,3 +569,27 @@ def test_a_clause_that_leaves_out_it_is_read_as_with_it(bothy):
     with pytest.raises(TranslationError):
         goal("Is the lamp on, switch it off.", bothy)
 
+
+def test_a_thing_named_before_its_verb_is_its_object(bothy):
+    """Topic first (free word order: "butter put in fridge"): a noun phrase of the home opening a
+    clause, then a verb that lacks its object, is that verb's object; with a pronoun taking it up
+    ("the jug, wash it") too."""
+    assert goal("Plum put in icebox please. And lamp switch on.", bothy) == \
+        ({"icebox": ["plum"]}, {"lamp": ["on"], "icebox": ["closed"]})
+    assert goal("Wash the jug and the platter, and lantern switch off.", bothy) == \
+        ({}, {"jug": ["clean"], "platter": ["clean"], "lantern": ["off"]})
+    assert goal("The veg from the bench put where it belongs.", bothy) == \
+        ({"larder": ["turnip"]}, {"larder": ["closed"]})
+    assert goal("Turnip and plum take out from bench and put on trestle.", bothy) == \
+        ({"trestle": ["plum", "turnip"]}, {})
+    assert goal("The jug and the platter, wash them.", bothy) == ({}, {"jug": ["clean"], "platter": ["clean"]})
+    assert goal("Switch the lamp on and plum put back on trestle.", bothy) == ({"trestle": ["plum"]}, {"lamp": ["on"]})
+    # after a name, the words may go on the list of the clause before: asked, never picked
+    for said in ("Wash the jug and the platter put in the basin.", "Wash the jug, the platter put in the basin."):
+        with pytest.raises(TranslationError):
+            goal(said, bothy)
+    # a verb that has its object, or that is an adjective too, takes nothing fronted
+    for said in ("Jug clean.", "Icebox open.", "The plum put the jug in the basin.", "The jug on the trestle wash."):
+        with pytest.raises(TranslationError):
+            goal(said, bothy)
+

@@ -16,12 +16,15 @@ Compositional, in three steps, and never by word position:
    Which objects a selector means, and whether the request is possible, is the resolver's job
    (:mod:`pipflow.household.language.resolver`), not the parser's.
 
-A command that does not read as said is read again without the talk :mod:`~.setaside` finds.
+A command that does not read as said is read again with a verb's object left out read as "it",
+and with things named before their verb (:mod:`~.fronted`) read after it; and without the talk
+:mod:`~.setaside` finds.
 """
 from __future__ import annotations
 
 import functools
 import json
+from typing import Iterator
 
 from lark import Lark, Token, Tree
 from lark.exceptions import UnexpectedInput
@@ -29,7 +32,8 @@ from lark.visitors import CollapseAmbiguities
 
 from pipflow.errors import TranslationError
 from pipflow.household.language.builder import Builder
-from pipflow.household.language.grammar import NOUN_DUAL, gated_classes, grammar_text
+from pipflow.household.language.fronted import fronted_objects
+from pipflow.household.language.grammar import NOUN_DUAL, base_class, gated_classes, grammar_text
 from pipflow.household.language.lacking import lacking
 from pipflow.household.language.lexicon import MARKS, PHRASES
 from pipflow.household.language.names import world_phrases
@@ -105,18 +109,13 @@ def _parse(command: str, world: dict, notes: list[str]) -> list[dict]:
     try:
         tree = _parser_for(world, tags).parse(_terminals(tags))
     except UnexpectedInput as exc:
-        filled = _elided_objects(tags)
-        if filled is not None:
+        for repaired, said in _repairs(tags):
             try:
-                tree = _parser_for(world, filled).parse(_terminals(filled))
+                tree = _parser_for(world, repaired).parse(_terminals(repaired))
             except UnexpectedInput:
-                filled = None
-        if filled is not None:
-            notes.append("a verb with its object left out ('" + "', '".join(
-                f"{tags[k].words} {tags[k + 1].words}" for k in range(len(tags) - 1)
-                if tags[k].cls in DROPPED_OBJECT_VERBS and tags[k + 1].cls in DESTINATIONS)
-                + "') read as 'it': the thing named before")
-            return _orders(filled, tree, command)
+                continue
+            notes += said
+            return _orders(repaired, tree, command)
         k = getattr(exc, "pos_in_stream", None)
         k = k if isinstance(k, int) and 0 <= k < len(tags) else len(tags) - 1
         start = k
@@ -142,6 +141,31 @@ def _parse(command: str, world: dict, notes: list[str]) -> list[dict]:
 #: drops the object "it" (the thing named before), as people do after naming it
 DROPPED_OBJECT_VERBS = {"V_PUT", "V_THROW"}
 DESTINATIONS = {"IN", "ON"}
+
+
+def _repairs(tags: list[Tag]) -> Iterator[tuple[list[Tag], list[str]]]:
+    """The tags of a command that does not parse as said, worded as the grammar's English, each
+    with the notes that say so, in this order (the first that parses is read): a verb's object
+    left out read as "it" (:func:`_elided_objects`); things named before their verb moved after
+    it (:mod:`~.fronted`); both ("soup and cheese take out of the fridge and put on the table")."""
+    elided = _elided_objects(tags)
+    if elided is not None:
+        yield elided, [_elided_note(tags)]
+    fronted = fronted_objects(tags)
+    if fronted is not None:
+        moved, words = fronted
+        said = ["'" + "', '".join(words) + "': the thing named before its verb, read after it"]
+        yield moved, said
+        both = _elided_objects(moved)
+        if both is not None:
+            yield both, said + [_elided_note(moved)]
+
+
+def _elided_note(tags: list[Tag]) -> str:
+    return ("a verb with its object left out ('" + "', '".join(
+        f"{tags[k].words} {tags[k + 1].words}" for k in range(len(tags) - 1)
+        if tags[k].cls in DROPPED_OBJECT_VERBS and tags[k + 1].cls in DESTINATIONS)
+        + "') read as 'it': the thing named before")
 
 
 def _elided_objects(tags: list[Tag]) -> list[Tag] | None:
@@ -195,7 +219,7 @@ def _lark(dual: frozenset[str], present: frozenset[str] | None = None) -> Lark:
 
 def _parser_for(world: dict, tags: list[Tag]) -> Lark:
     """The parser for these tags in this world: only the gated rules their classes can use."""
-    present = frozenset(t.cls[:-len(NOUN_DUAL)] if t.cls.endswith(NOUN_DUAL) else t.cls for t in tags)
+    present = frozenset(base_class(t.cls) for t in tags)
     return _lark(_dual_classes(world), present & GATED)
 
 

@@ -1,0 +1,102 @@
+"""Things named before their verb (topic first): "butter put in fridge", "kettle switch on", "the
+veg from the worktop put where it belongs", and with a pronoun taking the thing up, "the mug, wash
+it" (left dislocation).
+
+Speakers of languages whose word order is free (Polish, Russian, and topic-first speech in any
+language) name the thing first and then say what to do with it; in English the object follows its
+verb. The grammar reads only that order, so a command that does not parse as said is tried again
+(:mod:`~pipflow.household.language.parser`) with the things moved after the verb. Only where the
+reading is one two people would agree on:
+
+* the fronted words are a noun phrase of the home and nothing else (names of the home,
+  determiners, quantities, state adjectives, "and", "from <place>"), ending in a name;
+* they open a sentence, or a clause after ", and", or after a comma or "and" that does not follow
+  a name (after one, the words could go on the clause before's list of things: "wash the jug and
+  the plum put in the bowl" is refused);
+* the verb comes at once after them, is one that takes a thing (and is no adjective as well:
+  "jug clean" may say how the jug is), and lacks its object: what follows it is a particle, a
+  place word or the clause's end, never a thing; with a pronoun, the clause is only the thing and
+  a comma, and the pronoun is "it" or "them" at once after the verb.
+
+Anything else is left as said, and refused as before.
+"""
+from __future__ import annotations
+
+from pipflow.household.language.grammar import NOUN_DUAL, base_class
+from pipflow.household.language.tokens import Tag
+
+#: classes of the words of a noun phrase of the home ("all the dirty cups and the plate from the
+#: table")
+PHRASE = {"THE", "NOUN", "ADJ", "ALL", "EVERY", "BOTH", "NUM", "OF", "AND", "COMMA", "FROM"}
+#: what a noun phrase may open with besides a name
+OPENERS = {"THE", "ALL", "EVERY", "BOTH", "NUM", "ADJ"}
+#: verbs that take a thing as their object, and are no adjective too ("clean", "open", "shut",
+#: "warm" after a thing say how it is)
+VERBS = {"V_PUT", "V_THROW", "V_TOGGLE", "V_STATE", "V_TRASH", "V_CHILL", "V_TIDY", "V_LIGHT", "V_SHUTDOWN"}
+#: what may follow a verb whose object was fronted: a particle, a word of where, the clause's end
+LACKING = {"ON", "OFF", "OUT", "IN", "TO", "AT", "BACK", "AWAY", "UP", "DOWN", "FROM", "SOMEWHERE",
+           "END", "COMMA", "AND", "THEN"}
+#: what ends the clause before: a fronted phrase opens a clause after one of these
+BREAKS = {"END", "EXCL"}
+JOINS = {"COMMA", "AND", "THEN"}
+
+
+def _named(t: Tag) -> bool:
+    return t.cls == "NOUN" or t.cls.endswith(NOUN_DUAL)
+
+
+def _opens(tags: list[Tag], k: int) -> bool:
+    """Whether a fronted phrase may open at ``k`` (module docstring): a sentence's start, after
+    ", and" (or ". And"), or after a comma or "and" that does not follow a name."""
+    if k == 0 or tags[k - 1].cls in BREAKS:
+        return True
+    if tags[k - 1].cls not in JOINS:
+        return False
+    before = tags[k - 2] if k >= 2 else None
+    if before is None or before.cls in BREAKS or (before.cls == "COMMA" and tags[k - 1].cls != "COMMA"):
+        return True
+    return not _named(before)
+
+
+def _phrase_end(tags: list[Tag], k: int) -> int | None:
+    """The end of the noun phrase of the home that opens at ``k`` (its last word a name), or None."""
+    end = None
+    j = k
+    while j < len(tags) and (base_class(tags[j].cls) in PHRASE or _named(tags[j])):
+        if _named(tags[j]):
+            end = j + 1
+        j += 1
+    if end is None or not (_named(tags[k]) or tags[k].cls in OPENERS):
+        return None
+    return end
+
+
+def _lacks_object(tags: list[Tag], v: int) -> bool:
+    return v + 1 >= len(tags) or tags[v + 1].cls in LACKING
+
+
+def fronted_objects(tags: list[Tag]) -> tuple[list[Tag], list[str]] | None:
+    """The tags with each thing named before its verb moved after the verb, and the words moved
+    ("butter put" read as "put butter"); None when there is none (module docstring)."""
+    out = list(tags)
+    moved: list[str] = []
+    k = 0
+    while k < len(out):
+        end = _phrase_end(out, k) if _opens(out, k) else None
+        if end is None:
+            k += 1
+            continue
+        phrase = out[k:end]
+        words = " ".join(t.words for t in phrase)
+        v = end
+        if v < len(out) and out[v].cls in VERBS and _lacks_object(out, v):
+            out[k:v + 1] = [out[v]] + phrase
+            moved.append(f"{words} {out[k].words}")
+        elif (v + 2 < len(out) and out[v].cls == "COMMA" and out[v + 1].cls in VERBS and out[v + 2].cls == "IT"
+              and out[v + 2].words in ("it", "them") and (k == 0 or out[k - 1].cls in BREAKS)
+              and _lacks_object(out, v + 2)):
+            # "the mug, wash it": the pronoun stands for the thing named before
+            moved.append(f"{words}, {out[v + 1].words} {out[v + 2].words}")
+            out[k:v + 3] = [out[v + 1]] + phrase
+        k = end
+    return (out, moved) if moved else None
