@@ -593,3 +593,11 @@ def test_a_thing_named_before_its_verb_is_its_object(bothy):
         with pytest.raises(TranslationError):
             goal(said, bothy)
 
+
+def test_a_thing_not_needed_that_the_command_acts_on_is_the_reason(bothy):
+    """ "Put the veg away, I don't need it today": said of things the command already acts on and
+    that cannot be switched off, not needing them is the reason, never an impossible switch."""
+    assert goal("Put the plum in the icebox, I don't need it.", bothy) == ({"icebox": ["plum"]}, {"icebox": ["closed"]})
+    assert goal("Turn the lamp off, I don't need it.", bothy) == ({}, {"lamp": ["off"]})
+    with pytest.raises(Refusal):   # said alone, it still asks for the impossible
+        goal("I don't need the plum.", bothy)

@@ -969,6 +969,13 @@ class Resolver:
         if st["things"]:
             named = self.objects(st["things"], words, cond=cond)
             said = {n for n, _ in named}   # "the TV is on but nobody is watching it": the cue answers it
+            if said and said <= set(self.goal.inside) | set(self.goal.state) and \
+                    not any(applies(self.world, n, cond) for n in said):
+                # "put the veg away, I don't need it today": of things the command already acts on
+                # and that cannot be switched so, the cue is the reason for what is done with them
+                self.goal.notes.append(f"'{words}' is the reason for what is done with {', '.join(sorted(said))}")
+                self.last = sorted(said)
+                return
             self.observed = [o for o in self.observed if not set(o[0]) <= said]
         elif fits:
             named = [(n, True) for names, _, _ in fits for n in names]
