@@ -112,3 +112,16 @@ def test_a_bare_count_after_n_more_is_asked_with_a_stop_or_without(command: str)
     or put in, does not make it either (it was read as 1 in all after a full stop: a misreading)."""
     with pytest.raises(TranslationError):
         translate(command, TANNERY)
+
+
+@pytest.mark.parametrize("command, goal", [
+    ("move won dye drum from vat east to the finishing table", {"vat_east": {"dye_drum": 3}, "finishing_table": {"dye_drum": 2}}),
+    ("take for dye drums off vat east", {"vat_east": {"dye_drum": 0}}),
+])
+def test_a_number_misheard_as_a_word_is_offered_never_read(command: str, goal: dict) -> None:
+    """ "won", "for", "ate" as a recogniser writes a count said aloud: a candidate reading that says
+    which word it read as which; the command itself is refused."""
+    with pytest.raises(TranslationError) as err:
+        parse(command, TANNERY)
+    offered = [c for c in err.value.candidates if c["goal"] == goal]
+    assert offered and offered[0]["reading"].startswith("read '")

@@ -17,22 +17,26 @@ from pipflow.warehouse.language.lexicon import Lexicon
 
 #: repairs offered for one word, at most (each costs a reading of the command)
 MAX_REPAIRS = 3
+#: words a speech recogniser writes for a number word said aloud ("send ate reams", "add won more",
+#: "move for zips"): offered as that number where the word is one no rule places, never read so
+HOMOPHONES = {"ate": "eight", "won": "one", "for": "four", "fore": "four", "to": "two", "too": "two"}
 
 
 def near_words(word: str, lex: Lexicon) -> list[str]:
     """Grammar words, number words and words of the world's names within one edit of ``word``
     (a swap of neighbours is one edit), or two for words of five letters or more that keep
-    their first letter; nearest first. None for a word of fewer than three letters, a number or
-    a name of several words."""
+    their first letter; nearest first; a number word it sounds like first (:data:`HOMOPHONES`).
+    None for a word of fewer than three letters, a number or a name of several words."""
     low = word.lower()
+    sounds = [HOMOPHONES[low]] if low in HOMOPHONES else []
     if len(low) < 3 or not low.isalpha():
-        return []
+        return sounds
     # a word of a name that the reader does not read alone: shared by several names ("white" of
     # white_case and white_keg: each offered), or a product's modifier ("oil" of oil-filter)
     index = lex.index
     named = index.shared_parts.get(normalize(low)) or index.loose_parts.get(normalize(low))
     if named:
-        return list(named)[:MAX_REPAIRS]
+        return (sounds + list(named))[:MAX_REPAIRS]
     vocabulary = ({k for k in lex.keywords if k.isalpha() and len(k) >= 2} | set(NUMBER_WORDS)
                   | {w for w in lex._name_words if w.isalpha()})
     near = []
@@ -51,7 +55,7 @@ def near_words(word: str, lex: Lexicon) -> list[str]:
     # letters and half the word; after the near misses, the longest shared start first
     shared = sorted((-len(commonprefix([low, w])), w) for w in lex._name_words if w.isalpha() and w not in found
                     and (w.startswith(low) or len(commonprefix([low, w])) >= max(4, len(low) // 2)))
-    return (found + [w for _, w in shared])[:MAX_REPAIRS]
+    return (sounds + [w for w in found + [w for _, w in shared] if w not in sounds])[:MAX_REPAIRS]
 
 
 def with_word(command: str, wrong: str, right: str) -> str | None:
