@@ -125,3 +125,9 @@ def test_a_number_misheard_as_a_word_is_offered_never_read(command: str, goal: d
         parse(command, TANNERY)
     offered = [c for c in err.value.candidates if c["goal"] == goal]
     assert offered and offered[0]["reading"].startswith("read '")
+
+
+def test_should_be_sitting_at_is_a_final_count_and_is_sitting_at_no_new_wish() -> None:
+    assert translate("vat west should be sitting at 3 belt rounds", TANNERY)["goal"] == {"vat_west": {"belt_round": 3}}
+    with pytest.raises(TranslationError):
+        translate("vat west is sitting at 3 belt rounds", TANNERY)   # a report of the stock, not asked

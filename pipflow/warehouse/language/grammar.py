@@ -172,7 +172,7 @@ setv: "has" "got" | "have" "got" | "has" | "have" | "hold" | "holds" | "store" |
     | "ends" "up" "with" | "ends" "with" | "end" "up" "holding" | "ends" "up" "holding"
     | ("end" | "ends" | "finish" | "finishes") "shift" "with"
     | "be" "filled" "with" | "be" "loaded" "with" | "hold" "onto" | "be" "holding" | "is" "holding"
-    | "end" "with" | "want" | "wants" | "be" "left" "with" | "be" "at" | "is" "at" | "are" "at"
+    | "end" "with" | "want" | "wants" | "be" "left" "with" | "be" ("sitting" | "standing")? "at" | "is" "at" | "are" "at"
 putv: "put" | PLACE_VERB | "store" | "stock" | "set" | "leave" | "get" | "keep" | "park"
     | "make" "sure" "there" ("is" | "are") | "ensure" "there" ("is" | "are")
 addv: "add" | "bring" | "deliver" | "send" | "ship" | "move" | "transfer" | "carry" | "shift" | "throw" | "toss"
