@@ -173,6 +173,7 @@ def parse_reading(command: str, world: dict, picks: dict | None = None) -> dict:
     return {"command": command, "statements": statements, "rules": rules,
             **({"set_aside": set_aside} if set_aside else {}), **({"unread": unread} if unread else {})}
 
+
 def _locate(error: TranslationError, lexed: Lexed, lex: Lexicon) -> None:
     """Where the sentence that does not read stands among the command's recognised tokens
     (``span``, None where its words were made anew) and where its word that no rule places does

@@ -13,9 +13,9 @@ from typing import Any
 
 from lark import Lark, Token, Tree
 from lark.common import ParserConf
+from lark.exceptions import UnexpectedInput, UnexpectedToken
 from lark.grammar import NonTerminal, Rule
 from lark.parsers.grammar_analysis import GrammarAnalyzer
-from lark.exceptions import UnexpectedInput, UnexpectedToken
 
 from pipflow.errors import TranslationError
 from pipflow.language.earley import ListLexer, earley_parser

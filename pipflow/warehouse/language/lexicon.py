@@ -10,7 +10,6 @@ the grammar nor a filler stays an unknown terminal, so the parser refuses it by 
 from __future__ import annotations
 
 import copy
-
 import re
 from dataclasses import dataclass, replace
 from typing import Any, Callable

@@ -35,7 +35,9 @@ def parse(command: str, world: dict) -> dict:
     A line break ends a sentence; a command whose lines only make sense joined (a sentence
     wrapped onto the next line) is read joined, and one that makes sense both ways with two
     different meanings (or one way with several of its own: a sentence asked) is refused, quoting
-    both (:func:`pipflow.language.characters.line_readings`).
+    both (:func:`pipflow.language.characters.line_readings`). A sentence no rule reads may be
+    several said without stops: read again with stops put in (:mod:`runon`), else refused with
+    candidate readings (:mod:`candidates`).
     """
     readings = line_readings(command)
     if len(readings) == 1:
@@ -43,7 +45,7 @@ def parse(command: str, world: dict) -> dict:
             return {**parse_reading(readings[0], world), "command": command}
         except TranslationError as exc:
             try:
-                read = None if isinstance(exc, Choice) else with_stops(readings[0], world, exc)
+                read = with_stops(readings[0], world, exc)   # only a sentence no rule reads
             except RunOnChoice as either:
                 exc, read = either, None
             if read is not None:

@@ -6,7 +6,7 @@ Where a sentence does not read, the word no rule places may open a sentence of i
 command is read again with a stop before it, or before one of the words in front of it (the
 sentence said before the stop must read by itself), and again where the rest still does not read,
 up to :data:`MAX_STOPS` stops. A part after a stop that asks for nothing ("thats all for now",
-"stuff walks") is set aside as a sentence of talk always is, and said. Every word of every other
+"would ya") is set aside as a sentence of talk always is, and said. Every word of every other
 part is placed, as in any sentence. The readings found are compared: one meaning is the reading
 (echoed with its stops); readings that ask for different things are refused with each offered,
 and nothing is guessed."""
