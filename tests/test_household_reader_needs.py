@@ -568,6 +568,12 @@ def test_a_clause_that_leaves_out_it_is_read_as_with_it(bothy):
         goal("Is getting dark?", bothy)
     with pytest.raises(TranslationError):
         goal("Is the lamp on, switch it off.", bothy)
+    # after "when" / "once", a step closed: the clause opens there too
+    assert _same("Slice the turnip and when is sliced, put it on the trestle.",
+                 "Slice the turnip and when it is sliced, put it on the trestle.", bothy) == \
+        ({"trestle": ["turnip"]}, {"turnip": ["sliced"]})
+    with pytest.raises(TranslationError):
+        goal("When is the jug clean, put it in the dresser.", bothy)
 
 
 def test_a_thing_named_before_its_verb_is_its_object(bothy):

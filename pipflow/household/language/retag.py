@@ -143,7 +143,9 @@ _SUBJECT_OPENERS = {"THE", "NOUN", "IT", "THAT", "THERE", "SUBJ", "NUM"}
 
 
 def _opens_clause(out: list[Tag]) -> bool:
-    return not out or out[-1].cls in ("END", "COMMA", "EXCL")
+    """Whether the next tag opens a clause: at a sentence's start, after a comma, or after "when",
+    "once", "after" (a step closed: "when is sliced, put it on the table")."""
+    return not out or out[-1].cls in ("END", "COMMA", "EXCL", "ONCE")
 
 
 def _asked(tags: list[Tag], k: int) -> bool:
