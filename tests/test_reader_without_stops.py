@@ -131,3 +131,8 @@ def test_should_be_sitting_at_is_a_final_count_and_is_sitting_at_no_new_wish() -
     assert translate("vat west should be sitting at 3 belt rounds", TANNERY)["goal"] == {"vat_west": {"belt_round": 3}}
     with pytest.raises(TranslationError):
         translate("vat west is sitting at 3 belt rounds", TANNERY)   # a report of the stock, not asked
+
+
+@pytest.mark.parametrize("tail", ["far as itll go", "as far as it will go", ", as much as it takes", "as much as will fit"])
+def test_a_fill_said_to_go_as_far_as_it_can_is_a_fill(tail: str) -> None:
+    assert translate(f"fill vat west up with cart wheels {tail}", TANNERY)["goal"] == {"vat_west": {"cart_wheel": 7}}

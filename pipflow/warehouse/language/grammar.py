@@ -364,7 +364,7 @@ goal: there_be items loc                                  -> g_set
     | ("i" | "we") ("dont" | "do" "not") ("want" | "need") ("any" | "anything")? ihead (lsep ihead)* left? loc -> g_none_in
     | places modal? be "full" "of" only? ihead only?         -> g_fill
     | places modal? "be" "filled" "up"? "with" only? ihead only? -> g_fill
-    | "fill" places "up"? "with" only? ihead only?           -> g_fill
+    | "fill" places "up"? "with" only? ihead only? as_far?   -> g_fill
     | ("fill" "up"? | "top" "up" | "pack") "rest" "of" places "up"? "with" only? ihead only? -> g_fill
     | "fill" places ("up" | "to" ("top" | "capacity" | "brim")) "with" only? ihead only? -> g_fill
     | "fill" places "up"? "with" "nothing" "but" ihead       -> g_fill
@@ -452,6 +452,9 @@ mult: "double" | "triple" | "quadruple" | "halve"
 swapv: "swap" | "trade" | "exchange" | "switch" | "interchange"
 emptyv: "empty" | "clear" | "clean" "out" | "clear" "out" | "empty" "out"
 emptied: "empty" | "emptied" | "cleared" | "vacant" | "cleaned" "out" | "emptied" "out" | "cleared" "out"
+// "fill P up with X (as) far as it'll go / as much as it takes / as much as will fit": to capacity
+as_far: ","? ("as"? "far" "as" (("it" | "they") ("will" | "can")? | "itll" | "theyll") ("go" | "goes")
+        | "as" "much" "as" ("it" "takes" | "will" "fit" | "fits" | "it" ("will" | "can") "take" | "it" "holds"))
 as_is: "where" ("it" | "they") ("is" | "are") | ("as" | "how") ("it" | "they") ("is" | "are") | "alone" | "as" "is" | "be"
      | "unchanged" | "untouched"
      | "untouched" | "unchanged" | "as" "is" | "way" ("it" | "they") ("is" | "are" | "was" | "were") | "as" ("it" | "they") ("was" | "were")
