@@ -136,3 +136,15 @@ def test_should_be_sitting_at_is_a_final_count_and_is_sitting_at_no_new_wish() -
 @pytest.mark.parametrize("tail", ["far as itll go", "as far as it will go", ", as much as it takes", "as much as will fit"])
 def test_a_fill_said_to_go_as_far_as_it_can_is_a_fill(tail: str) -> None:
     assert translate(f"fill vat west up with cart wheels {tail}", TANNERY)["goal"] == {"vat_west": {"cart_wheel": 7}}
+
+
+@pytest.mark.parametrize("said", ["whatevers", "whatever's", "whatever is", "whatever"])
+def test_swap_with_whatever_is_on_a_place(said: str) -> None:
+    assert translate(f"swap everything on vat east with {said} on vat west", TANNERY)["goal"] == \
+        translate("swap vat east and vat west", TANNERY)["goal"]
+
+
+def test_a_filler_before_a_stop_is_echoed_with_the_sentence_after_it() -> None:
+    got = understand("swap everything on vat east with whatever is on vat west the whole lot", TANNERY)
+    assert got["explanation"][0] == ("said without stops, read as: 'swap everything on vat east with whatever is "
+                                     "on vat west' / 'the whole lot'")

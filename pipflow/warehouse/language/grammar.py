@@ -414,7 +414,7 @@ goal: there_be items loc                                  -> g_set
     | swapv ("what" | "contents" "of")? places ("hold" | "have" | "contain" | "holds" | "has")? -> g_swap
     | swapv ihead (lsep ihead)* ("between" | "of" | "on") places -> g_swap_items
     | swapv posplace ihead "with" (posplace | places)       -> g_swap_poss
-    | swapv ("everything" | "what" "is" | "contents" | "stock" | "what" "sits") ("on" | "in" | "at" | "of") places "with" ("everything" | "what" "is" | "contents" | "stock" | "what" "sits" | "that" | "those")? ("on" | "in" | "at" | "of")? places -> g_swap
+    | swapv ("everything" | "what" "is" | "contents" | "stock" | "what" "sits") ("on" | "in" | "at" | "of") places "with" ("everything" | "what" "is" | "whatever" "is"? | "contents" | "stock" | "what" "sits" | "that" | "those")? ("on" | "in" | "at" | "of")? places -> g_swap
     | swapv posplace "and" posplace ihead                  -> g_swap_poss
     | splitv items? even? among places even?                -> g_split
     | splitv bare even? among places even?                  -> g_split

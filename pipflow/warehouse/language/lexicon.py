@@ -45,7 +45,9 @@ EXACT_WORDS = {"exactly", "precisely"}
 #: chat spellings of keywords
 SPELLINGS = {"shud": "should", "shld": "should", "u": "you", "r": "are", "wont": "wont", "gonna": "will",
              "wanna": "want", "lemme": "let", "cuz": "because", "thru": "through", "frm": "from",
-             "em": "them", "yous": "you", "youse": "you"}
+             "em": "them", "yous": "you", "youse": "you",
+             # "whatever's on P" typed or transcribed without its apostrophe: its "'s" is "is"
+             "whatevers": "whatever"}
 #: fillers the grammar still reads when it has a place for them (it tries the keyword first)
 SOFT_FILLERS = {"of", "just", "right", "away", "now", "today", "currently", "moment", "exactly"}
 FRACTIONS = {"third": 3, "thirds": 3, "quarter": 4, "quarters": 4, "fourth": 4, "fourths": 4,
@@ -54,7 +56,7 @@ FRACTIONS = {"third": 3, "thirds": 3, "quarter": 4, "quarters": 4, "fourth": 4, 
 SUPERLATIVES = {"strongest": "max", "biggest": "max", "largest": "max", "heaviest": "max",
                 "weakest": "min", "smallest": "min", "lightest": "min"}
 #: contractions whose "'s" is "is" ("it's"), not a possessive
-IS_CONTRACTIONS = {"it", "that", "there", "what", "here", "who", "he", "she"}
+IS_CONTRACTIONS = {"it", "that", "there", "what", "whatever", "here", "who", "he", "she"}
 #: what a name, kind word ("\0") or count ("\1") stands as in the words a clause is judged on
 _HELD = ("\0", "\1")
 _BAD_SYMBOLS = re.compile(r"[\^*=+%$<>~|\\{}@/&`\u00d7]")

@@ -91,16 +91,20 @@ def _may_stop(lex: Lexicon, start: int, stop: int, end: int) -> bool:
 
 
 def _read_as(command: str, world: dict, stops: frozenset[int], order: dict) -> dict:
-    """The order with the sentences the command was read as, for the echo."""
-    tokens = lexed_command(command, world, stops)[0].tokens
-    parts, cur = [], []
-    for k, t in enumerate(tokens):
-        if k in stops and cur:
-            parts.append(" ".join(cur))
-            cur = []
-        cur.append(t.text)
-    parts.append(" ".join(cur))
-    return {**order, "read_as": [p.replace(" zzposs", "'s") for p in parts if p]}
+    """The order with the sentences the command was read as, for the echo (a filler before a stop
+    is said with the sentence after it: "... on overflow / the whole lot")."""
+    lex = lexed_command(command, world, stops)[0]
+    parts: list[list[str]] = [[]]
+    for k, t in enumerate(lex.tokens):
+        if k in stops and parts[-1]:
+            moved = len(parts[-1])
+            while moved > 1 and lex.terminal(lex.tokens[k - len(parts[-1]) + moved - 1]) is None:
+                moved -= 1
+            parts[-1], rest = parts[-1][:moved], parts[-1][moved:]
+            parts.append(rest)
+        parts[-1].append(t.text)
+    said = [" ".join(p).replace(" zzposs", "'s").strip(" ,:") for p in parts]
+    return {**order, "read_as": [p for p in said if p]}
 
 
 class RunOnChoice(TranslationError):
