@@ -607,3 +607,52 @@ def test_a_thing_not_needed_that_the_command_acts_on_is_the_reason(bothy):
     assert goal("Turn the lamp off, I don't need it.", bothy) == ({}, {"lamp": ["off"]})
     with pytest.raises(Refusal):   # said alone, it still asks for the impossible
         goal("I don't need the plum.", bothy)
+
+
+def test_a_third_person_somewhere_is_where_him_is(bothy):
+    """ "Father Tom is at the trestle, bring him the plum": as for "me", where a person is said to
+    be gives "him" / "her" / the person's name a place (pipflow/household/language/people.py); a
+    lower-case name only after a title ("for father tom"). Where the words do not say where the
+    person is, the command is refused saying so, never guessed; two persons at two places, or a
+    thing named that already lies on the place said, are refused too."""
+    assert goal("Father Tom is at the trestle, bring him his wireless.", bothy) == \
+        ({"trestle": ["wireless"]}, {"dresser": ["closed"]})
+    assert goal("Bring the plum to Mrs Patel at the trestle.", bothy) == ({"trestle": ["plum"]}, {})
+    assert goal("plum bring for uncle bert, he is at trestle.", bothy) == ({"trestle": ["plum"]}, {})
+    assert goal("give him beaker at trestle", bothy) == ({"trestle": ["beaker"]}, {})
+    assert goal("Hand Auntie Jo the plum, she's on the bench.", bothy) == ({"bench": ["plum"]}, {})
+    assert goal("The baby sits the whole day at the trestle. Bring her the plum.", bothy) == ({"trestle": ["plum"]}, {})
+    notes = translate("Father Tom is sleeping at the trestle, bring him the plum.", bothy)["notes"]
+    assert any("where they are" in n for n in notes) and any("'him'" in n for n in notes), notes
+    for command in ("Bring the plum to Grandad.",                      # where he is is not said
+                    "Bring Grandad the plum.",
+                    "give him jug at trestle",                         # the jug is at the trestle: which jug
+                    "Give him the crocks on the trestle.",             # some crocks are there: which
+                    "She is at the bench and he is at the trestle, bring him the plum.",   # two places
+                    "Father Tom is at the trestle, he wants the plum."):   # a wish about him: no order read
+        with pytest.raises(TranslationError):
+            translate(command, bothy)
+    with pytest.raises(TranslationError, match="is not said"):
+        translate("Bring the plum to Grandad.", bothy)
+
+
+def test_what_is_for_a_person_and_talk_about_them_is_set_aside(bothy):
+    """ "slice the turnip for Father Tom", "switch on the lamp for him", "wash the beaker, I need it
+    for sugar" (no sugar in the bothy): who or what it is for is set aside, said in the notes;
+    "he can't sleep", "Father Tom always forgets": talk about a person, set aside. A clause about
+    a person that may ask something ("he wants it warm", "she is cold") is never set aside, and a
+    purpose that names a thing of the home stays (refused)."""
+    assert goal("Slice turnip for Father Tom.", bothy) == ({}, {"turnip": ["sliced"]})
+    assert goal("Switch on the lamp for him.", bothy) == ({}, {"lamp": ["on"]})
+    assert goal("Slice the turnip for Father Tom and wash the jug.", bothy) == \
+        ({}, {"turnip": ["sliced"], "jug": ["clean"]})
+    assert goal("Wash the beaker, I need it for sugar.", bothy) == ({}, {"beaker": ["clean"]})
+    assert goal("Father Tom always forgets. Switch on the lamp.", bothy) == ({}, {"lamp": ["on"]})
+    assert goal("He can't sleep, switch on the lamp.", bothy) == ({}, {"lamp": ["on"]})
+    notes = translate("Mrs Patel is sleeping, switch on the lamp.", bothy)["notes"]
+    assert any("talk about someone" in n for n in notes), notes
+    for command in ("Wash the jug, he wants it warm.", "She is cold, switch on the lamp.",
+                    "Switch on the lamp, he can't see.", "Slice the turnip for Father Tom and the baby.",
+                    "Slice the turnip for the plum.", "Father Tom is sleeping."):
+        with pytest.raises(TranslationError):
+            translate(command, bothy)

@@ -37,6 +37,7 @@ from pipflow.household.language.grammar import NOUN_DUAL, base_class, gated_clas
 from pipflow.household.language.lacking import lacking
 from pipflow.household.language.lexicon import MARKS, PHRASES
 from pipflow.household.language.names import world_phrases
+from pipflow.household.language.people import about_people
 from pipflow.household.language.setaside import without_asides
 from pipflow.household.language.tagger import owners_as_the, tag
 from pipflow.household.language.tokens import Tag
@@ -65,12 +66,36 @@ def parse(command: str, world: dict, notes: list[str] | None = None) -> list[dic
     notes = notes if notes is not None else []
     command = owners_as_the(command, world, notes)
     try:
-        return _parse_with_asides(command, world, notes)
+        return _parse_with_people(command, world, notes)
     except TranslationError as exc:
         impossible = lacking(command, exc)   # "switch on the dishwasher" where there is none
         if impossible is not None:
             raise impossible from None
         raise
+
+
+def _parse_with_people(command: str, world: dict, notes: list[str]) -> list[dict]:
+    """:func:`parse` of the command as said, else with its third persons read (:mod:`~.people`:
+    where they are, what is for them, talk about them). When that does not read either, the
+    command's own refusal stands (a person's place not said is refused as such)."""
+    first: list[str] = []
+    try:
+        readings = _parse_with_asides(command, world, first)
+    except TranslationError as exc:
+        notes += first
+        mine: list[str] = []
+        read = about_people(command, world, mine)   # refused where a person's place is not said
+        if read is None:
+            raise
+        try:
+            readings = _parse_with_asides(read, world, mine)
+        except TranslationError:
+            raise exc from None
+        del notes[len(notes) - len(first):]   # the notes of the reading that failed
+        notes += mine
+        return readings
+    notes += first
+    return readings
 
 
 def _parse_with_asides(command: str, world: dict, notes: list[str]) -> list[dict]:

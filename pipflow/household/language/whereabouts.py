@@ -23,7 +23,7 @@ DETERMINERS = {"my", "the", "our", "to"}
 BRING = {"bring", "fetch", "get", "hand", "pass", "carry"}
 
 
-def _clause_end(words: list[str], k: int) -> int:
+def clause_end(words: list[str], k: int) -> int:
     """Where the clause at ``k`` ends: a mark, or "and" / "then" before a verb of the lexicon."""
     for j in range(k, len(words)):
         if words[j] in PUNCT:
@@ -39,18 +39,25 @@ def _speaker_place(words: list[str], i: int, index: dict) -> tuple[int, list[str
     speaker is, or None."""
     if words[i:i + 2] != ["i", "am"] or (i and words[i - 1] not in PUNCT and words[i - 1] not in ("and", "so")):
         return None
-    j = i + 2
-    while j < len(words) and words[j] in POSTURE:
+    return place_said(words, i + 2, index)
+
+
+def place_said(words: list[str], j: int, index: dict, posture: frozenset[str] = frozenset(POSTURE)) \
+        -> tuple[int, list[str]] | None:
+    """(end of the clause, the words of the place) where the words from ``j`` on are only where
+    someone is: words of ``posture``, a preposition of place, a place of the home, to the clause's
+    end; else None. Shared by "I am ..." here and a third person's whereabouts (:mod:`.people`)."""
+    while j < len(words) and words[j] in posture:
         j += 1
     if j >= len(words) or words[j] not in AT:
         return None
     k = j + 1
     while k < len(words) and words[k] in DETERMINERS:
         k += 1
-    n = max((n for n in range(1, 5) if any(r["kind"] == "place" for r in index.get(tuple(words[k:k + n]), []))),
-            default=0)
+    n = max((n for n in range(1, min(5, len(words) - k + 1))   # a place that ends the command too
+             if any(r["kind"] == "place" for r in index.get(tuple(words[k:k + n]), []))), default=0)
     end = k + n
-    while end < len(words) and words[end] in POSTURE:
+    while end < len(words) and words[end] in posture:
         end += 1
     if not n or (end < len(words) and words[end] not in PUNCT and words[end] != "and"):
         return None
@@ -72,7 +79,7 @@ def me_as_where_the_speaker_is(words: list[str], index: dict, notes: list[str]) 
         k = 0
         while k < len(after):
             if after[k] in BRING and after[k + 1:k + 2] == ["me"]:
-                stop = _clause_end(after, k + 2)
+                stop = clause_end(after, k + 2)
                 out += [after[k]] + after[k + 2:stop] + ["to", "the"] + place
                 k = stop
                 continue

@@ -1,0 +1,252 @@
+"""Third persons in a command: where they are, what is for them, and talk about them.
+
+The home model has no people, so "bring Grandad his tea" has no place to go. A carer's commands
+talk about the person cared for all the time ("Father Tom is in the armchair, bring him his
+medicines", "he can't sleep", "boil an egg for Mrs Patel"). This module reads such a command
+again, as :mod:`.whereabouts` does for "me":
+
+1. a clause that is only where a person is ("Father Tom is in the armchair", "he sits the whole
+   day in the armchair") is set aside and gives that person a place; "bring / give <person> X",
+   "bring X to / for <person>" and "... <person> on the P" are then "bring X to the P". Where the
+   command does not say where the person is, it is refused saying so: never guessed. Two persons
+   said at two places leave the command as it was (refused).
+2. "for <person>" elsewhere ("switch on the lamp for him"), and "for" + words that name nothing of
+   the home closing a clause ("slice the onion for soup"), is what for: set aside, said in the notes.
+   A purpose that names a thing of the home stays, to be read or refused.
+3. a clause whose subject is a person and which names nothing of the home and no number ("Father
+   Tom is sleeping", "he can't sleep") is talk about them: set aside, said in the notes.
+
+Who is a person (never a word of the home's names or of the reader's lexicon, nor a typo of one):
+"he", "she", "him" (and "her" after a verb of bringing, "for" or "to"); a kinship word alone
+("Grandad", "Nan", "the baby": :data:`KIN`), with a capitalised name after it or not ("Grandad
+Jones"); a title with a name after it ("Father Tom", "Mrs Patel", typed in lower case too:
+"father tom": after a title, a word of no name of the home and of no lexicon is the name); a
+capitalised word (or run of them) that is nobody's word ("Tom"). A lower-case word alone is never
+a name: "tom" may be a typo, "for tom" is at most a purpose.
+
+The parser tries this only when a command does not read as said, so nothing that read before
+reads otherwise; the rewritten command must still read whole, every word placed.
+"""
+from __future__ import annotations
+
+import re
+from pipflow.errors import TranslationError
+from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
+from pipflow.household.language.names import world_phrases
+from pipflow.household.language.tokens import PUNCT
+from pipflow.household.language.typos import typo_of, vocabulary
+from pipflow.household.language.whereabouts import BRING, POSTURE, clause_end, place_said
+from pipflow.language.asides import FUNCTION_WORDS
+
+#: titles before a name ("Father Tom", "Mrs Patel", "Auntie Jo"; "father tom" typed in lower case)
+TITLES = {"father", "mrs", "mr", "ms", "miss", "dr", "doctor", "auntie", "aunty", "aunt", "uncle", "sister",
+          "brother", "nurse", "lady", "sir"}
+#: words that name a person alone ("bring Grandad his tea", "the baby is asleep")
+KIN = {"grandad", "granddad", "grandpa", "grandma", "granny", "gran", "nan", "nana", "nanna", "grandmother",
+       "grandfather", "baby"}
+#: pronouns that are a person; "her" only where an object is ("bring her the tea"); "them" and
+#: "they" are left to things ("put them away")
+PERSON_PRONOUNS = {"he", "she", "him"}
+#: verbs that take a person as where the thing goes ("give him the tea")
+TO_PERSON = BRING | {"give", "take"}
+#: words that take up a thing ("he wants it warm"): a clause with one is about the thing, never talk
+THING_WORDS = {"it", "them", "those", "these", "this", "that", "one", "ones"}
+#: lexicon classes that ask something of the home (a verb, a wish, a state, a cue of warmth, light,
+#: sound or air): a clause about a person with one may ask for it, so it is never set aside
+#: ("he wants the heating on", "she is cold"); a sleeping person is talk ("Father Tom is sleeping")
+ASKING = {"NEED", "WANT", "ADJ", "SEE", "TEMPCUE", "LIGHTCUE", "SOUNDCUE", "AIRCUE", "HEARCUE", "TOO", "NEAR"}
+#: "give him the tea" is bringing it to where he is: the verb the grammar reads with "to P"
+GIVE_AS = {"give": "bring"}
+#: verbs that say a person is somewhere ("he sits in the armchair", "Tom's in bed")
+BEING = {"is", "sits", "sat", "lies", "stays", "was"}
+#: words between such a verb and where: posture and how long ("he sits the whole day in the armchair")
+THIRD_POSTURE = frozenset(POSTURE | {"the", "whole", "day", "always", "usually", "mostly", "morning", "afternoon",
+                                      "sleeping", "asleep", "dozing", "napping", "resting"})
+
+
+class _Reader:
+    """The words of one command, with who in it is a person (module docstring)."""
+
+    def __init__(self, command: str, world: dict) -> None:
+        self.words = words_of(command)
+        self.capitalised = {w.lower() for w in re.findall(r"(?<![\w'’])[A-Z][a-z]+", command)}
+        self.index = world_phrases(world)
+        self.world = world
+        self.home = {w for key in self.index for w in key}
+        self.lexicon = {w for key in PHRASES for w in key} | {w for key in FILLER for w in key} | FUNCTION_WORDS
+        self.vocab = vocabulary(self.index)
+
+    def known(self, w: str, typos: bool = True) -> bool:
+        """Whether a word is a word of the home's names, of the lexicon or its fillers, a function
+        word, or (``typos``) a typo of a word of the home: no person's name."""
+        return w in self.home or w in self.lexicon or (typos and len(w) >= 4 and bool(typo_of(w, self.vocab)))
+
+    def person(self, k: int, objective: bool = False) -> int:
+        """How many words from ``k`` name a person (0: none); ``objective``: where "her" is one."""
+        words = self.words
+        w = words[k] if k < len(words) else ""
+        if w in PERSON_PRONOUNS or (objective and w == "her"):
+            return 1
+        if w == "the" and k + 1 < len(words) and words[k + 1] in KIN and not self.known(words[k + 1]):
+            return 2
+        if w in TITLES and w not in self.home and k + 1 < len(words) and words[k + 1].isalpha() \
+                and not self.known(words[k + 1], typos=False):
+            return 2 + self._capitalised_run(k + 2)
+        if w in KIN and not self.known(w):
+            return 1 + self._capitalised_run(k + 1)
+        return self._capitalised_run(k)
+
+    def _capitalised_run(self, k: int) -> int:
+        """How many capitalised words from ``k`` are nobody's word ("Tom", "Patel")."""
+        n = 0
+        while k + n < len(self.words) and self.words[k + n] in self.capitalised and not self.known(self.words[k + n]):
+            n += 1
+        return n
+
+    def clause_end(self, k: int) -> int:
+        return next((j for j in range(k, len(self.words)) if self.words[j] in PUNCT), len(self.words))
+
+    def clause_start(self, k: int) -> bool:
+        return k == 0 or self.words[k - 1] in PUNCT or self.words[k - 1] in ("and", "so", "but")
+
+    def whereabouts(self) -> tuple[list[tuple[int, int]], list[str] | None, bool]:
+        """The clauses that are only where a person is ((start, end) each), the place they say
+        (None: none), and whether they say two different places."""
+        spans, places = [], []
+        for i in range(len(self.words)):
+            n = self.person(i) if self.clause_start(i) else 0
+            if not n or i + n >= len(self.words):
+                continue
+            # "he's at the trestle" is read without its "is"
+            found = place_said(self.words, i + n + (self.words[i + n] in BEING), self.index, THIRD_POSTURE)
+            if found is not None:
+                spans.append((i, found[0]))
+                places.append(found[1])
+        distinct = {tuple(p) for p in places}
+        return spans, (places[0] if places else None), len(distinct) > 1
+
+    def talk(self, i: int) -> int:
+        """The end of a clause at ``i`` that is talk about a person (module docstring, 3), or 0."""
+        n = self.person(i) if self.clause_start(i) else 0
+        if not n:
+            return 0
+        end = self.clause_end(i)
+        rest = self.words[i + n:end]
+        if not rest or any(w in self.home or w.isdigit() or w in THING_WORDS or _asks(w) for w in rest):
+            return 0
+        return end
+
+
+def _asks(word: str) -> bool:
+    """Whether a word may ask something of the home in a clause about a person (:data:`ASKING`)."""
+    cls = str(PHRASES.get((word,), ("",))[0])
+    return cls.startswith("V_") or cls in ASKING
+
+
+def about_people(command: str, world: dict, notes: list[str]) -> str | None:
+    """The command with its third persons read (module docstring), or None where it has none to
+    read. TranslationError where a thing is to be brought to a person whose place is not said."""
+    r = _Reader(command, world)
+    words = r.words
+    spans, place, two = r.whereabouts()
+    if two:
+        return None
+    said: list[str] = []
+    dropped = {k for a, b in spans for k in range(a, b)}
+    for a, b in spans:
+        said.append(f"'{' '.join(words[a:b])}': where they are; read as the {' '.join(place or [])}")
+    out: list[str] = []
+    changed = bool(spans)
+    verb_at = -1      # where the clause's verb of bringing is, in ``out``
+    k = 0
+    while k < len(words):
+        if k in dropped:
+            k += 1
+            continue
+        w = words[k]
+        if w in PUNCT:
+            verb_at = -1
+        elif w in TO_PERSON:
+            verb_at = len(out)
+        if w in TO_PERSON and r.person(k + 1, objective=True):
+            n = r.person(k + 1, objective=True)
+            end = r.clause_end(k + 1 + n)
+            there = _said_there(r, k + 1 + n, end) or (place, end, end)
+            if there[0] is None:
+                raise _nowhere(words[k + 1:k + 1 + n], command)
+            out += [GIVE_AS.get(w, w)] + words[k + 1 + n:there[1]] + ["to", "the"] + there[0]
+            said.append(f"'{' '.join(words[k + 1:k + 1 + n])}' read as where the {' '.join(there[0])} is")
+            changed, k = True, end
+            continue
+        n = r.person(k + 1, objective=True) if w in ("to", "for") else 0
+        if n and verb_at >= 0:
+            end = r.clause_end(k + 1 + n)
+            there = _said_there(r, k + 1 + n, end) or (place, k + 1 + n, k + 1 + n)
+            if there[0] is None:
+                raise _nowhere(words[k + 1:k + 1 + n], command)
+            out += ["to", "the"] + there[0]
+            said.append(f"'{' '.join(words[k + 1:k + 1 + n])}' read as where the {' '.join(there[0])} is")
+            changed, k = True, there[2]
+            continue
+        if n and w == "for" and clause_end(words, k + 1 + n) == k + 1 + n:   # "... for him, and ..."
+            said.append(f"'for {' '.join(words[k + 1:k + 1 + n])}': who it is for (set aside)")
+            changed, k = True, k + 1 + n
+            continue
+        if w == "for" and out and out[-1] not in PUNCT:
+            dish = _purpose(r, k + 1)
+            if dish:
+                said.append(f"'for {' '.join(words[k + 1:dish])}': what it is for, nothing of this home (set aside)")
+                changed, k = True, dish
+                continue
+        end = r.talk(k)
+        if end:
+            said.append(f"'{' '.join(words[k:end])}': talk about someone, no order (set aside)")
+            changed, k = True, end
+            continue
+        out.append(w)
+        k += 1
+    if not changed:
+        return None
+    cleaned: list[str] = []
+    for w in out:   # a clause mark left with nothing before it in its sentence goes
+        if w in PUNCT and (not cleaned or cleaned[-1] in PUNCT):
+            continue
+        cleaned.append(w)
+    while cleaned and cleaned[0] in ("and", "so", "but"):
+        cleaned.pop(0)
+    notes += said
+    return " ".join(cleaned)
+
+
+def _said_there(r: _Reader, k: int, end: int) -> tuple[list[str], int, int] | None:
+    """(the place, where its preposition is, the clause's end) of "on / in / at [the] P" closing
+    the clause from ``k`` to ``end`` ("give him the tea on the armchair"), or None. None too where
+    the words before it may pick things out by that place: a thing named that lies there ("give
+    him the jug on the trestle" where the jug is: which jug, not where he is), or a name of
+    anything but one object (a category: some of its things may lie there)."""
+    objects = r.world.get("objects") or {}
+    for j in range(k, end):
+        found = place_said(r.words, j, r.index, frozenset())
+        if found is None or found[0] != end:
+            continue
+        places = {ref["name"] for ref in r.index.get(tuple(found[1]), []) if ref["kind"] == "place"}
+        named = [ref for a in range(k, j) for b in range(a + 1, j + 1) for ref in r.index.get(tuple(r.words[a:b]), [])]
+        if any(ref["kind"] != "object" or objects[ref["name"]].get("in") in places for ref in named):
+            return None
+        return found[1], j, end
+    return None
+
+
+def _purpose(r: _Reader, k: int) -> int:
+    """The end of "for" + [a determiner] + one or two words that name nothing of the home or the
+    lexicon, closing a clause at ``k`` ("for soup", "for sugar"), or 0."""
+    j = k + (k < len(r.words) and r.words[k] in ("a", "the", "his", "her", "my", "some"))
+    end = r.clause_end(j)
+    if not 0 < end - j <= 2 or any(r.known(w) or not w.isalpha() for w in r.words[j:end]):
+        return 0
+    return end
+
+
+def _nowhere(person: list[str], command: str) -> TranslationError:
+    return TranslationError(f"where {' '.join(person)!r} is is not said in {command.strip()!r}: say where to "
+                            "bring it (the home knows no people)")
