@@ -30,6 +30,7 @@ reads otherwise; the rewritten command must still read whole, every word placed.
 from __future__ import annotations
 
 import re
+
 from pipflow.errors import TranslationError
 from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
 from pipflow.household.language.names import world_phrases
