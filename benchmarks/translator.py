@@ -44,6 +44,7 @@ if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
 from pipflow.errors import PipflowError, Refusal, WorldError  # noqa: E402
+from pipflow.warehouse.meaning import goal_difference  # noqa: E402
 
 LANGUAGE = ROOT / "benchmarks" / "language"
 PAPER_TASKS = ROOT / "benchmarks" / "warehouse" / "tasks.yaml"
@@ -140,8 +141,12 @@ def rules(constraints: list[dict] | None) -> list[str]:
     return sorted(out)
 
 
-def judge(task: dict, got: dict | None, error: BaseException | None, domain: str = "warehouse") -> tuple[str, str]:
-    """(verdict, detail) of one reading: ``got`` is the reading's output, ``error`` what it raised."""
+def judge(task: dict, got: dict | None, error: BaseException | None, domain: str = "warehouse",
+          world: dict | None = None) -> tuple[str, str]:
+    """(verdict, detail) of one reading: ``got`` is the reading's output, ``error`` what it raised.
+    With the ``world``, warehouse goals are compared as the bench compares them, by the final
+    stocks they accept (:func:`pipflow.warehouse.meaning.goal_difference`: zeros that conservation
+    implies may be listed or not); without it, as written."""
     must_refuse = task.get("expect") == "refuse"
     infeasible = task.get("feasible", True) is False
     if error is not None:
@@ -153,8 +158,9 @@ def judge(task: dict, got: dict | None, error: BaseException | None, domain: str
     if domain == "household":
         same = household_goal(got.get("goal")) == household_goal(task.get("goal"))
     else:
-        same = (warehouse_goal(got.get("goal")) == warehouse_goal(task.get("goal"))
-                and rules(got.get("constraints")) == rules(task.get("constraints")))
+        goals = (goal_difference(world, task.get("goal"), got.get("goal")) is None if world is not None
+                 else warehouse_goal(got.get("goal")) == warehouse_goal(task.get("goal")))
+        same = goals and rules(got.get("constraints")) == rules(task.get("constraints"))
     if same:
         return "understood", "gold"
     return "misread", (f"got goal {got.get('goal')} rules {got.get('constraints') or []}; "
@@ -194,13 +200,13 @@ def run_file(tasks_path: Path) -> list[Outcome]:
             got = read(task["command"], world)
         except Exception as exc:  # judged: pipflow errors are refusals, anything else a crash
             error = exc
-        verdict, detail = judge(task, got, error, domain)
+        verdict, detail = judge(task, got, error, domain, world)
         label = task.get("construction") or task.get("category") or default_label  # household: category
         file = f"{tasks_path.parent.name}/{tasks_path.stem}"
         offered = None
         clear = task.get("expect") != "refuse" and task.get("feasible", True) is not False
         if verdict == "refused" and clear:   # a clear, feasible command refused as not understood
-            offered = any(judge(task, {"goal": c.get("goal"), "constraints": c.get("constraints")}, None, domain)[0]
+            offered = any(judge(task, {"goal": c.get("goal"), "constraints": c.get("constraints")}, None, domain, world)[0]
                           == "understood" for c in getattr(error, "candidates", None) or [])
         out.append(Outcome(f"{file}/{task['id']}", file, label, verdict, detail, offered))
     return out

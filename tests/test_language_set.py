@@ -276,6 +276,21 @@ def test_judge_compares_bounds_exactly_and_rules_as_sets():
     assert judge(point, {"goal": {"a": {"x": True}}}, None)[0] == "misread"
 
 
+def test_judge_with_the_world_compares_goals_by_the_stocks_they_accept_as_the_bench_does():
+    """ "All the fleece to the loft": the loft holding every unit implies 0 elsewhere, listed or
+    not; a 0 the gold leaves open (a place that could end up with some) is another meaning."""
+    judge = _translator().judge
+    world = {"shelves": {"loft": {"capacity": 20}, "shed": {"capacity": 20}, "dock": {"capacity": 20}},
+             "products": {"fleece": {}, "bale": {}},
+             "stock": {"loft": {"fleece": 1}, "shed": {"fleece": 2, "bale": 3}, "dock": {"bale": 1}}}
+    task = {"goal": {"loft": {"fleece": 3}}}
+    zeros = {"goal": {"loft": {"fleece": 3}, "shed": {"fleece": 0}, "dock": {"fleece": 0}}}
+    assert judge(task, zeros, None, "warehouse", world)[0] == "understood"
+    assert judge(task, zeros, None)[0] == "misread"          # as written, without the world
+    open_zero = {"goal": {"loft": {"fleece": 3}, "dock": {"bale": 0}}}
+    assert judge(task, open_zero, None, "warehouse", world)[0] == "misread"
+
+
 def test_judge_verdicts_for_refusals_and_crashes():
     judge = _translator().judge
     clear = {"goal": {"a": {"x": 1}}}
