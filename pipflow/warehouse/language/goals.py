@@ -28,6 +28,13 @@ def quote(words: str) -> str:
     return f"'{words}'"
 
 
+class Asked(TranslationError):
+    """A sentence read with two meanings the words do not choose between, refused with the
+    question ("1 more or 1 in all?"), with no option the reader can be told to pick. Like a
+    :class:`Choice`, it makes a line break that may end the sentence or go on an ambiguity of the
+    command (:func:`pipflow.warehouse.language.parser.parse`)."""
+
+
 class Choice(TranslationError):
     """A sentence with several readings that ask for different things: which one is ``key``'s
     option; the parser offers each as a candidate reading (never picks one itself)."""

@@ -18,7 +18,7 @@ from pipflow.language.characters import line_readings
 from pipflow.warehouse.language.candidates import candidates
 from pipflow.warehouse.language.command import parse_reading
 from pipflow.warehouse.language.forest import keywords
-from pipflow.warehouse.language.goals import Choice
+from pipflow.warehouse.language.goals import Asked, Choice
 from pipflow.warehouse.language.readings import canonical, meaning_of
 from pipflow.warehouse.language.runon import RunOnChoice, with_stops
 
@@ -64,7 +64,7 @@ def parse(command: str, world: dict) -> dict:
             second = parse_reading(joined, world)
         except (TranslationError, Refusal):
             raise exc from None
-        if isinstance(exc, Choice):   # read as sentences it has meanings of its own: asked there
+        if isinstance(exc, (Choice, Asked)):   # read as sentences it has meanings of its own: asked there
             raise _either_way(broken, f"{exc.args[0]}", _words(second)) from None
         return {**second, "command": command}
     try:

@@ -10,7 +10,7 @@ from lark.visitors import CollapseAmbiguities
 
 from pipflow.errors import PipflowError, TranslationError
 from pipflow.warehouse.language.forest import forest
-from pipflow.warehouse.language.goals import Choice
+from pipflow.warehouse.language.goals import Asked, Choice
 from pipflow.warehouse.language.lexicon import Lexed, Lexicon
 from pipflow.warehouse.language.resolver import resolve
 from pipflow.warehouse.language.robots import RobotSelector
@@ -75,7 +75,8 @@ def one_meaning(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict
                  picks: dict | None = None) -> SentenceReader:
     """Read a sentence in every way the grammar allows, and keep its meaning only if there is one.
 
-    Readings that make no sense (an error, or nothing that resolves) are not meanings. Of the
+    Readings that make no sense (an error, or nothing that resolves) are not meanings; a reading
+    that is itself asked (:class:`Asked`: "1 more or 1 in all?") is the sentence's question. Of the
     rest, all must ask for the same goal and rules, or the sentence is refused with two of
     them: the grammar's preferences never choose between meanings silently. The reading kept
     is the one with the fewest, longest parts.
@@ -93,6 +94,8 @@ def one_meaning(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict
                                    f"say it in shorter sentences")
         try:
             reader = read_tree(alt, lexed, lex, selector, memory, picks)
+        except Asked:
+            raise   # a reading with two meanings of its own: the other readings must not win unasked
         except Choice as exc:
             if exc.key != "place_it":
                 errors.append((parts(alt), exc))

@@ -29,7 +29,7 @@ from lark.visitors import Interpreter
 from pipflow.errors import TranslationError
 from pipflow.language.numbers import NUMBER_WORDS
 from pipflow.language.spelling import normalize
-from pipflow.warehouse.language.goals import Choice, GoalRules, quote
+from pipflow.warehouse.language.goals import Asked, Choice, GoalRules, quote
 from pipflow.warehouse.language.lexicon import Lexed, Lexicon
 from pipflow.warehouse.language.robots import RobotSelector
 from pipflow.warehouse.language.rulescope import RuleScope
@@ -530,7 +530,7 @@ class SentenceReader(GoalRules, TailRules, RuleScope, Interpreter):
             items = (np["items"] or prev.get("items") or {}).get("names") or []
             if set(np["amount"]) == {"count"} and any(
                     int((stock.get(p) or {}).get(i, 0) or 0) for p in places for i in items):
-                raise TranslationError(f"{quote(np['words'])} after {prev['words']!r}: cannot tell whether it is "
+                raise Asked(f"{quote(np['words'])} after {prev['words']!r}: cannot tell whether it is "
                                        f"{np['words']} more or {np['words']} in all (say 'more' or 'in all')")
 
     def _shared_destination(self) -> None:
