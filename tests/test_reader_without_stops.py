@@ -31,7 +31,7 @@ def test_a_rule_said_before_an_order_without_a_stop_holds_for_the_command() -> N
     assert got["goal"] == TWO_DRUMS and got["constraints"] == [{"only": ["crane"]}]
 
 
-@pytest.mark.parametrize("tail", ["thats all for now", "would ya", "thats it"])
+@pytest.mark.parametrize("tail", ["thats all for now", "thats it", "cheers mate"])
 def test_talk_run_on_after_an_order_is_set_aside_and_said(tail: str) -> None:
     got = understand(f"move 2 dye drums from vat east to the finishing table {tail}", TANNERY)
     assert got["goal"] == TWO_DRUMS
@@ -145,6 +145,14 @@ def test_swap_with_whatever_is_on_a_place(said: str) -> None:
 
 
 def test_a_filler_before_a_stop_is_echoed_with_the_sentence_after_it() -> None:
-    got = understand("swap everything on vat east with whatever is on vat west the whole lot", TANNERY)
+    got = understand("swap everything on vat east with whatever is on vat west please thats all", TANNERY)
     assert got["explanation"][0] == ("said without stops, read as: 'swap everything on vat east with whatever is "
-                                     "on vat west' / 'the whole lot'")
+                                     "on vat west' / 'please thats all'")
+
+
+@pytest.mark.parametrize("tail", ["pronto", "and the blorp", "5", "the whole lot"])
+def test_a_part_that_is_no_talk_by_what_it_is_is_never_set_aside_by_a_stop(tail: str) -> None:
+    """Words no rule reads that lack content are not talk for that alone: a stop put in sets a part
+    aside only when it is a greeting, a closing, thanks or a statement with its subject."""
+    with pytest.raises(TranslationError):
+        translate(f"move 2 dye drums from vat east to the finishing table {tail}", TANNERY)

@@ -387,6 +387,16 @@ def is_opener(words: Iterable[str]) -> bool:
     return tuple(w for w in words if w) in OPENERS
 
 
+def said_talk(words: Iterable[str], names: Callable[[str], bool]) -> bool:
+    """Whether words are talk by what they are, not only by lacking content: a greeting, a closing
+    ("that's all for now"), thanks or an apology, or a statement with its subject ("hes getting his
+    forks looked at"). A part of a command said without stops may be set aside only so: "pronto"
+    or "and the blorp" lack content too, yet could be words of the order no rule reads."""
+    ws = [w for w in words if w]
+    return bool(ws) and (is_greeting(ws) or tuple(ws) in CLOSINGS or is_pleasantry(ws, names)
+                         or is_statement(ws, names) or is_report(ws, names))
+
+
 def content_free(words: Iterable[str], content: Callable[[str], bool],
                  names: Callable[[str], bool] | None = None, reports: bool = False) -> bool:
     """Whether a clause carries nothing an order needs (module doc). ``content(word)`` is the

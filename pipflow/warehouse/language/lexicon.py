@@ -18,7 +18,7 @@ from lark import Token
 
 from pipflow.errors import InputError, Refusal, TranslationError
 from pipflow.language.asides import (FUNCTION_WORDS, OPERATIVE, Clause, clauses, content_free, is_opener, leading_reason,
-                                     trailing_adjunct, trailing_thanks, unmarked_statement)
+                                     said_talk, trailing_adjunct, trailing_thanks, unmarked_statement)
 from pipflow.language.characters import refuse_unread
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS
 from pipflow.language.spelling import distance, normalize, plural_forms, slip, tolerance
@@ -762,19 +762,30 @@ class Lexicon:
         self.aside: list[str] = list(self._framed)
         self.tokens = toks
         self._positions = {id(t): k for k, t in enumerate(toks)}
+        stopped = False   # whether the sentence being read was opened by a stop put in (runon)
         for k, t in enumerate(toks + [Tok("punct", ".", ".")]):
             if k in stops or (t.kind == "punct" and t.value in (".", ";", "!", "?")):
                 if cur:
                     said = self._sentence(cur)
+                    if said is None and (stopped or k in stops) and not self._said_talk(cur):
+                        said = self._terminals(cur)   # no talk by what it is: it must read
                     if said is None:
                         self.aside.append(" ".join(x.text for x in cur))
                     else:
                         moved = left_dislocated(cur)
                         out.append(said if moved == cur else replace(said, dislocated=self._sentence(moved)))
                 cur = []
+                stopped = k in stops
             if not (t.kind == "punct" and t.value in (".", ";", "!", "?")):
                 cur.append(t)
         return out
+
+    def _said_talk(self, cur: list[Tok]) -> bool:
+        """:func:`pipflow.language.asides.said_talk` of recognised tokens, judged on the words as
+        written (a name, count or kind word is content: no talk)."""
+        if any(t.kind in ("name", "num", "kind") for t in cur):
+            return False
+        return said_talk([re.sub(r"[^a-z0-9]", "", t.text.lower()) for t in cur if t.kind == "word"], self.names_world)
 
     def position(self, tok: Tok) -> int | None:
         """Where a token of the last command lexed stands among its recognised tokens."""

@@ -21,6 +21,9 @@ from pipflow.warehouse.language.readings import meaning_of
 #: words that join what comes after them to what came before: no stop after them ("put 2 more on
 #: P and / 1 on Q" would read the 1 without the "more" it shares)
 JOINING = frozenset({"and", "or", "but", "then", "so", "nor", "plus", "than", "as", "with", ","})
+#: words that go on the sentence before them, never open one: where a move goes ("move 2 X from P
+#: / to Q" would read a move to anywhere), and "of"
+GOING_ON = frozenset({"to", "into", "onto", "of"})
 #: the most stops put into one command
 MAX_STOPS = 3
 #: the most readings tried: each is a parse of the whole command, paid only by a command refused
@@ -86,7 +89,11 @@ def _may_stop(lex: Lexicon, start: int, stop: int, end: int) -> bool:
     before = [k for k in kinds[:stop - start] if k]
     after = [k for k in kinds[stop - start:] if k]
     joined = str(lex.tokens[stop - 1].value) in JOINING
-    return bool(before and after) and not joined and before[-1] in ends and (
+    # never before a count or a word that attaches to what came before ("... 3 more X / 5", "... on
+    # P / 1 on Q", "move 2 X from P / to Q 5"): a bare count, or a part that shares the words before
+    # it, would be read as a sentence of its own
+    attached = next((str(t.value) for t in lex.tokens[stop:end] if lex.terminal(t) is not None), "") in GOING_ON
+    return bool(before and after) and not joined and not attached and after[0] != "NUM" and before[-1] in ends and (
         after[0] in opens or after[0] == "UNKNOWN" or lex.talk(lex.tokens[stop:end]))
 
 
