@@ -37,12 +37,18 @@ def test_groups_of_a_count_in_a_command() -> None:
 
 @pytest.mark.parametrize("command", ["move 5 no sorry 3 planks from the long rack to the saw bench",
                                      "move 5 sorry 3 planks from the long rack to the saw bench",
-                                     "move 5 no wait 3 planks from the long rack to the saw bench"])
+                                     "move 5 no wait 3 planks from the long rack to the saw bench",
+                                     # aloud, as dictated (twelfth round): "no" before a count in
+                                     # words, or before a restatement
+                                     "move five no three planks from the long rack to the saw bench",
+                                     "move 5 no make that 3 planks from the long rack to the saw bench",
+                                     "move five no i mean three planks from the long rack to the saw bench"])
 def test_a_count_taken_back_without_a_comma_is_the_second(command: str) -> None:
     assert translate(command, YARD)["goal"] == {"long_rack": {"plank": 6}, "saw_bench": {"plank": 4}}
 
 
-def test_a_bare_no_between_two_counts_is_no_taking_back() -> None:
+def test_a_bare_no_between_two_counts_in_digits_is_no_taking_back() -> None:
+    """Written, "no" before digits may abbreviate "number" ("No. 3")."""
     with pytest.raises(TranslationError):
         translate("move 5 no 3 planks from the long rack to the saw bench", YARD)
 

@@ -104,7 +104,9 @@ def _second_reading(lexed: Lexed, error: TranslationError, lex: Lexicon, selecto
 def parse_reading(command: str, world: dict, picks: dict | None = None) -> dict:
     """:func:`parse` of one reading of the line breaks. ``picks``: for a sentence (its index), the
     reading a user chose among candidates: ``{"reading": k}``, ``{"scope": ...}``, or ``{"drop":
-    [token indexes]}`` (words left out of it); none in an ordinary run."""
+    [token indexes]}`` (words left out of it); none in an ordinary run. ``picks["*"]``: for the
+    whole command, ``salvage`` (a partial parse) or ``stops`` (recognised tokens a stop is put
+    before: :mod:`runon`)."""
     picks = picks or {}
     stops = frozenset((picks.get("*") or {}).get("stops") or ())
     lex, selector, sentences = lexed_command(command, world, stops)

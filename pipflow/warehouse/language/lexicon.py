@@ -767,7 +767,7 @@ class Lexicon:
             if k in stops or (t.kind == "punct" and t.value in (".", ";", "!", "?")):
                 if cur:
                     said = self._sentence(cur)
-                    if said is None and (stopped or k in stops) and not self._said_talk(cur):
+                    if said is None and (stopped or k in stops) and not self.talk(cur):
                         said = self._terminals(cur)   # no talk by what it is: it must read
                     if said is None:
                         self.aside.append(" ".join(x.text for x in cur))
@@ -780,20 +780,18 @@ class Lexicon:
                 cur.append(t)
         return out
 
-    def _said_talk(self, cur: list[Tok]) -> bool:
-        """:func:`pipflow.language.asides.said_talk` of recognised tokens, judged on the words as
-        written (a name, count or kind word is content: no talk)."""
-        if any(t.kind in ("name", "num", "kind") for t in cur):
-            return False
-        return said_talk([re.sub(r"[^a-z0-9]", "", t.text.lower()) for t in cur if t.kind == "word"], self.names_world)
-
     def position(self, tok: Tok) -> int | None:
         """Where a token of the last command lexed stands among its recognised tokens."""
         return self._positions.get(id(tok))
 
     def talk(self, toks: list[Tok]) -> bool:
-        """Whether recognised tokens said as a sentence ask for nothing (it would be set aside)."""
-        return self._sentence(toks) is None
+        """Whether recognised tokens are talk by what they are, as a part of a command said without
+        stops must be to be set aside (:func:`pipflow.language.asides.said_talk`, judged on the
+        words as written; a name, count or kind word is content), and ask for nothing."""
+        if any(t.kind in ("name", "num", "kind") for t in toks):
+            return False
+        words = [re.sub(r"[^a-z0-9]", "", t.text.lower()) for t in toks if t.kind == "word"]
+        return said_talk(words, self.names_world) and self._sentence(toks) is None
 
     def _sentence(self, cur: list[Tok]) -> Lexed | None:
         """A sentence's terminals, with its reading without content-free clauses (``trimmed``);

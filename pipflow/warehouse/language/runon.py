@@ -5,8 +5,8 @@ reams", "forklifts only on this one move ten reams from bulk to dock".
 Where a sentence does not read, the word no rule places may open a sentence of its own: the
 command is read again with a stop before it, or before one of the words in front of it (the
 sentence said before the stop must read by itself), and again where the rest still does not read,
-up to :data:`MAX_STOPS` stops. A part after a stop that asks for nothing ("thats all for now",
-"would ya") is set aside as a sentence of talk always is, and said. Every word of every other
+up to :data:`MAX_STOPS` stops. A part a stop makes that is talk by what it is ("thats all for now",
+"cheers mate": :meth:`Lexicon.talk`) is set aside, and said. Every word of every other
 part is placed, as in any sentence. The readings found are compared: one meaning is the reading
 (echoed with its stops); readings that ask for different things are refused with each offered,
 and nothing is guessed."""
@@ -98,19 +98,17 @@ def _may_stop(lex: Lexicon, start: int, stop: int, end: int) -> bool:
 
 
 def _read_as(command: str, world: dict, stops: frozenset[int], order: dict) -> dict:
-    """The order with the sentences the command was read as, for the echo (a filler before a stop
-    is said with the sentence after it: "... on overflow / the whole lot")."""
+    """The order with the sentences the command was read as, for the echo (fillers before a stop
+    are said with the sentence after it: "... on vat west / please thats all")."""
     lex = lexed_command(command, world, stops)[0]
-    parts: list[list[str]] = [[]]
-    for k, t in enumerate(lex.tokens):
-        if k in stops and parts[-1]:
-            moved = len(parts[-1])
-            while moved > 1 and lex.terminal(lex.tokens[k - len(parts[-1]) + moved - 1]) is None:
-                moved -= 1
-            parts[-1], rest = parts[-1][:moved], parts[-1][moved:]
-            parts.append(rest)
-        parts[-1].append(t.text)
-    said = [" ".join(p).replace(" zzposs", "'s").strip(" ,:") for p in parts]
+    cuts = [0]
+    for stop in sorted(stops):
+        while stop - 1 > cuts[-1] and lex.terminal(lex.tokens[stop - 1]) is None:
+            stop -= 1
+        cuts.append(stop)
+    cuts.append(len(lex.tokens))
+    said = [" ".join(t.text for t in lex.tokens[a:b]).replace(" zzposs", "'s").strip(" ,:")
+            for a, b in zip(cuts, cuts[1:])]
     return {**order, "read_as": [p for p in said if p]}
 
 
