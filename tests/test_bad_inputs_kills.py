@@ -48,6 +48,11 @@ outputs:
 """
 
 
+# A first bench that cannot end while the test runs its second: 10 tasks x 40 seeds, one at a time
+# (10 runs had all ended on a fast machine before the second process started, and it was let in).
+LONG_BENCH = ("--jobs", "1", "--seeds", "40")
+
+
 def command(*args) -> list[str]:
     return [sys.executable, "-m", "pipflow.engine.cli", *map(str, args)]
 
@@ -204,7 +209,7 @@ def test_a_killed_bench_leaves_no_worker_and_no_orphan_record(tmp_path, sig):
 
 def test_a_second_bench_into_the_same_folder_is_refused(tmp_path):
     out = tmp_path / "out"
-    first = start(tmp_path, "bench", TASKS, "--jobs", "1", "--out", out, "-q")
+    first = start(tmp_path, "bench", TASKS, *LONG_BENCH, "--out", out, "-q")
     try:
         wait_for(lambda: any((out / ".running").glob("*/run.json")) or any((out / "records").glob("*/run.json")),
                  what="the first bench to be running")
@@ -226,7 +231,7 @@ def test_a_second_bench_through_the_api_is_refused(tmp_path, monkeypatch):
     from pipflow.errors import UserError
 
     out = tmp_path / "out"
-    first = start(tmp_path, "bench", TASKS, "--jobs", "1", "--out", out, "-q")
+    first = start(tmp_path, "bench", TASKS, *LONG_BENCH, "--out", out, "-q")
     try:
         wait_for(lambda: any((out / ".running").glob("*/run.json")) or any((out / "records").glob("*/run.json")),
                  what="the first bench to be running")
