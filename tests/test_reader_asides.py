@@ -330,3 +330,130 @@ def test_household_a_function_word_of_a_name_is_no_content_and_the_error_is_what
 def test_an_unknown_verb_on_a_thing_is_an_instruction_never_talk() -> None:
     with pytest.raises(TranslationError, match="recount"):
         understand("Shelf2 needs 3 more product1, recount them", PAPER)
+
+
+@pytest.mark.parametrize("command", [
+    "Hornet, move 2 product1 from shelf1 to shelf2",
+    "Hi Hornet, move 2 product1 from shelf1 to shelf2",
+    "Thanks Hornet: move 2 product1 from shelf1 to shelf2",
+    "Move 2 product1 from shelf1 to shelf2, Hornet",
+])
+def test_warehouse_a_robot_the_world_lacks_addressed_by_name_is_refused(command: str) -> None:
+    """Said alone, a word that is no interjection or addressee is someone addressed by name: a
+    robot the world lacks is asked to do it, so no robot there may (it had been set aside as talk
+    and the move given to any robot)."""
+    with pytest.raises(TranslationError, match="Hornet"):
+        understand(command, PAPER)
+
+
+@pytest.mark.parametrize("opener", ["Brr", "Separately", "Right", "Morning, loves", "Ugh"])
+def test_warehouse_interjections_said_alone_are_still_talk(opener: str) -> None:
+    got = understand(f"{opener}, move 2 product1 from shelf1 to shelf2", PAPER)
+    assert got["goal"] == {"shelf1": {"product1": 8}, "shelf2": {"product1": 10}}
+    assert not got["constraints"]
+
+
+def test_warehouse_a_robot_of_the_world_addressed_is_asked_to_do_it() -> None:
+    got = understand("robot4, move 2 product1 from shelf1 to shelf2", PAPER)
+    assert [c["only"] for c in got["constraints"]] == [["robot4"]]
+
+
+def test_household_a_robot_addressed_by_name_must_be_one_of_the_home() -> None:
+    with pytest.raises(TranslationError, match="(?i)hornet"):
+        household("Hornet, turn the radio off", STUDIO)
+    assert household("Ada, turn the radio off", STUDIO)["goal"]["state"] == {"radio": ["off"]}
+    assert household("Trio, turn the radio off", STUDIO)["goal"]["state"] == {"radio": ["off"]}
+
+
+@pytest.mark.parametrize("tail, aside", [
+    ("he is covered in grease", "he is covered in grease"),          # "grease" is no slip of "areas"
+    ("boss reckons customers like seeing samples", "boss reckons customers like seeing samples"),
+    ("theyve been scuffing the floor", "theyve been scuffing the floor"),  # no slip of "shelve"
+])
+def test_warehouse_a_common_word_near_a_name_is_no_slip_of_it(tail: str, aside: str) -> None:
+    """A word people write as itself is not taken for a misspelt name because it is one or two
+    edits from one ("grease" from "areas", "boss" from "bots"): the clause is talk."""
+    got = understand(f"Shelf2 needs 3 more product1, {tail}", PAPER)
+    assert got["goal"] == {"shelf2": {"product1": 11}}
+    assert got["order"]["set_aside"] == [aside]
+
+
+def test_warehouse_a_slip_of_a_name_that_is_no_common_word_still_keeps_its_clause() -> None:
+    with pytest.raises(TranslationError):
+        understand("Shelf2 needs 3 more product1, the shlef", PAPER)
+
+
+@pytest.mark.parametrize("command, goal", [
+    ("Dear team, ensure shelf2 is having 11 product1", {"shelf2": {"product1": 11}}),
+    ("shelf1 and shelf2 should both be having 3 product4", {"shelf1": {"product4": 3}, "shelf2": {"product4": 3}}),
+    ("shelf1 should have as many product3 as shelf2 is having now", {"shelf1": {"product3": 6}}),
+])
+def test_warehouse_the_progressive_of_have_is_have(command: str, goal: dict) -> None:
+    """"P is having N X" (Indian English and others) is "P has N X"; a letter opens "Dear team"."""
+    assert understand(command, PAPER)["goal"] == goal
+
+
+@pytest.mark.parametrize("command, aside", [
+    ("As per the fire officer, shelf1 should have no more than 5 product1", "As per the fire officer"),
+    ("Shelf1 should have no more than 5 product1, as per safety rules", "as per safety rules"),
+])
+def test_warehouse_an_as_per_clause_says_what_the_order_follows(command: str, aside: str) -> None:
+    got = understand(command, PAPER)
+    assert got["goal"] == {"shelf1": {"product1": {"at_most": 5}}}
+    assert got["order"]["set_aside"] == [aside]
+
+
+def test_warehouse_an_as_per_clause_with_a_name_or_count_is_read() -> None:
+    for command in ("As per shelf3, move 2 product1 from shelf1 to shelf2",
+                    "As per 2 shelves, move 2 product1 from shelf1 to shelf2"):
+        with pytest.raises(TranslationError):
+            understand(command, PAPER)
+
+
+def test_warehouse_a_common_word_is_never_read_as_a_misspelt_number() -> None:
+    """"fire" is one edit from "five", "tree" from "three": words written as themselves, never a
+    count ("fiv" and "thre" are slips, and are read)."""
+    for word in ("fire", "tree"):
+        with pytest.raises(TranslationError, match=word):
+            understand(f"Move {word} product1 from shelf1 to shelf2", PAPER)
+    assert understand("Move fiv product1 from shelf1 to shelf2", PAPER)["goal"]["shelf2"] == {"product1": 13}
+
+
+def test_a_letters_signature_is_the_writer_never_an_addressee() -> None:
+    """"Regards, Ramesh" closes a letter: the writer signs. "Thanks, Ramesh" may thank a robot
+    by name, so it is still refused where the world has no Ramesh."""
+    got = understand("Move 2 product1 from shelf1 to shelf2. Kind regards, Ramesh", PAPER)
+    assert got["goal"] == {"shelf1": {"product1": 8}, "shelf2": {"product1": 10}}
+    assert got["order"]["set_aside"] == ["Kind regards , Ramesh"]
+    with pytest.raises(TranslationError, match="Ramesh"):
+        understand("Move 2 product1 from shelf1 to shelf2. Thanks, Ramesh", PAPER)
+    with pytest.raises(TranslationError, match="Ramesh"):
+        understand("Regards, Ramesh, move 2 product1 from shelf1 to shelf2", PAPER)
+    assert household("Turn the radio off. Regards, Tom", STUDIO)["goal"]["state"] == {"radio": ["off"]}
+
+
+@pytest.mark.parametrize("command, aside", [
+    ("Move 2 product1 from shelf1 to shelf2 would ya", ["would ya"]),
+    ("Move 2 product1 from shelf1 to shelf2 could you, its raining", ["could you", "its raining"]),
+])
+def test_warehouse_a_request_tag_after_the_order_is_set_aside(command: str, aside: list[str]) -> None:
+    got = understand(command, PAPER)
+    assert got["goal"] == {"shelf1": {"product1": 8}, "shelf2": {"product1": 10}}
+    assert got["order"]["set_aside"] == aside
+
+
+def test_warehouse_a_request_tag_never_hides_a_word_of_the_order() -> None:
+    with pytest.raises(TranslationError):
+        understand("Move 2 product1 from shelf1 to shelf2 would you not", PAPER)
+
+
+@pytest.mark.parametrize("command, aside", [
+    ("As discussed in the morning meeting, move 2 product1 from shelf1 to shelf2", ["As discussed in the morning meeting"]),
+    ("As agreed, move 2 product1 from shelf1 to shelf2", ["As agreed"]),
+    ("Move 2 product1 from shelf1 to shelf2 at the earliest", ["at the earliest"]),
+    ("Move 2 product1 from shelf1 to shelf2, urgent basis", ["urgent basis"]),
+])
+def test_warehouse_office_phrasings_of_what_the_order_follows_and_when(command: str, aside: list[str]) -> None:
+    got = understand(command, PAPER)
+    assert got["goal"] == {"shelf1": {"product1": 8}, "shelf2": {"product1": 10}}
+    assert got["order"]["set_aside"] == aside

@@ -53,3 +53,14 @@ def test_keep_a_robot_out_of_it_is_the_job_never_a_place(command: str) -> None:
 def test_keep_a_robot_out_of_a_named_place_is_that_place() -> None:
     assert translate("Keep flea out of vat east", TANNERY)["constraints"] == [
         {"never": ["flea"], "from": "vat_east"}, {"never": ["flea"], "to": "vat_east"}]
+
+
+@pytest.mark.parametrize("command, rule", [
+    (f"Move {MOVE}. The mules not to be used", {"never": ["mule1", "mule2"]}),
+    (f"Move {MOVE}. Only the gantry to be used", {"only": ["crane"]}),
+])
+def test_a_rule_said_as_a_notice_without_its_is(command: str, rule: dict) -> None:
+    """"Queenie not to be used", "Only tuggers to be used": a notice's "is" / "are" left out."""
+    got = translate(command, TANNERY)
+    assert got["goal"] == GOAL
+    assert got["constraints"] == [rule]

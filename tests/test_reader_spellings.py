@@ -80,3 +80,13 @@ def test_the_verb_spelt_as_a_place_is_the_place_in_a_list_of_places(command: str
 def test_the_verb_after_and_with_what_it_sends_stays_a_verb() -> None:
     got = translate("move 1 colour tin to the centre bay and dispatch 2 grey tiles to the tyre rack", TILES)
     assert got["goal"] == {"centre_bay": {"colour_tin": 2}, "tyre_rack": {"grey_tile": 2}}
+
+
+@pytest.mark.parametrize("command", [
+    "Take 2 grey tiles outta the centre bay and over to despatch",
+    "Take 2 grey tiles out of the centre bay and over to despatch",
+])
+def test_two_words_run_together_as_said_are_those_words(command: str) -> None:
+    """"outta" is "out of" (as "gotta" is "got to"): read as the two words."""
+    got = translate(command, TILES)
+    assert got["goal"] == {"centre_bay": {"grey_tile": 4}, "despatch": {"grey_tile": 4}}

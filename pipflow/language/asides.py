@@ -71,7 +71,7 @@ FUNCTION_WORDS = frozenset({
 #: a word followed by one of these is a verb acting on a thing ("recount them"): an instruction
 OBJECT_PRONOUNS = frozenset({"it", "them", "this", "that", "these", "those", "him", "her", "everything"})
 #: words that open a greeting or a thanks; with nothing after them but addressees, the clause is talk
-GREETINGS = frozenset({"hi", "hello", "hey", "hiya", "heya", "howdy", "morning", "afternoon", "evening", "good",
+GREETINGS = frozenset({"hi", "hello", "hey", "hiya", "heya", "howdy", "morning", "afternoon", "evening", "good", "dear",
                        "greetings", "yo", "cheers", "thanks", "thank", "ta", "thx", "ok", "okay", "alright"})
 #: words that open an apology or a thanks for something ("sorry for the late ask", "thanks for
 #: earlier"): what follows "for" / "about" is what one is sorry or thankful for, not an order
@@ -84,7 +84,9 @@ SUBJECTS = frozenset({"i", "im", "ive", "we", "were", "weve", "he", "hes", "she"
 #: who a greeting is said to ("Morning all", "Hi team")
 ADDRESSEES = frozenset({"all", "everyone", "everybody", "team", "folks", "guys", "gang", "lads", "people",
                         "there", "you", "mate", "mates", "yall", "crew", "robots", "bots", "y", "again", "so",
-                        "much", "very", "a", "lot", "in", "advance"})
+                        "much", "very", "a", "lot", "in", "advance", "love", "loves", "dear", "dears", "darling",
+                        "pet", "hun", "honey", "sweetie", "chaps", "pal", "pals", "buddy", "boys", "girls", "ladies",
+                        "gents", "gentlemen", "kids", "sir", "madam", "friends", "colleagues", "staff", "squad"})
 
 
 #: a thanks that can close an order without a comma before it ("... to bay 2 ta")
@@ -95,17 +97,24 @@ CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "
                      "mind", "yeah", "eh", "cheers", "ta", "thanks", "thx", "ty", "tyvm", "thankyou"})
 
 
+#: a request tag after an order ("... over to the shed would ya", "... could you"): it asks
+#: nothing more than the order does
+REQUEST_TAGS = frozenset((modal, you) for modal in ("would", "could", "will", "can", "wont")
+                         for you in ("you", "ya", "u", "yous"))
+
+
 def trailing_thanks(words: list[str], content: Callable[[str], bool]) -> int:
-    """How many words at the end of a clause are a thanks or a closing word said without a comma
-    ("... to bay 2 ta", "... thank you", "... please mate", "... only mind"): they are set aside
-    like a thanks set off by one. 0 when there is none, when it is the whole clause (then the
-    clause itself is talk), or when a word of it carries content in this domain (a name that
-    happens to be "ta") or is operative."""
+    """How many words at the end of a clause are a thanks, a closing word or a request tag said
+    without a comma ("... to bay 2 ta", "... thank you", "... please mate", "... only mind", "...
+    would ya"): they are set aside like a thanks set off by one. 0 when there is none, when it is
+    the whole clause (then the clause itself is talk), or when a word of it carries content in
+    this domain (a name that happens to be "ta") or is operative."""
     rest, k = list(words), 0
-    while rest and (rest[-2:] == ["thank", "you"] or rest[-1] in CLOSERS):
-        n = 2 if rest[-2:] == ["thank", "you"] else 1
+    while rest and (rest[-2:] == ["thank", "you"] or tuple(rest[-2:]) in REQUEST_TAGS or rest[-1] in CLOSERS):
+        n = 2 if rest[-2:] == ["thank", "you"] or tuple(rest[-2:]) in REQUEST_TAGS else 1
         rest, k = rest[:-n], k + n
-    if k == 0 or k >= len(words) or any(content(w) or (w not in THANKS and w not in ("thank", "you")
+    said = {w for tag in REQUEST_TAGS for w in tag} | {"thank", "you"}
+    if k == 0 or k >= len(words) or any(content(w) or (w not in THANKS and w not in said
                                                        and near_operative(w)) for w in words[-k:]):
         return 0
     return k
@@ -397,16 +406,72 @@ def said_talk(words: Iterable[str], names: Callable[[str], bool]) -> bool:
                          or is_statement(ws, names) or is_report(ws, names))
 
 
+#: words said alone as a clause that address no one: interjections, exclamations, words of urgency
+#: and of signposting ("Right, ...", "Brr, ...", "Urgent: ...", "..., cheers"). Any other word said
+#: alone is taken for someone addressed by name (:func:`addressee`)
+INTERJECTIONS = frozenset({
+    "right", "righto", "rightio", "ok", "okay", "alright", "aright", "oh", "ah", "ahh", "aha", "um", "umm", "uh",
+    "er", "erm", "hmm", "hm", "ugh", "urgh", "argh", "brr", "brrr", "shh", "ach", "och", "oi", "oy", "phew",
+    "whoops", "oops", "gosh", "golly", "jeez", "geez", "blimey", "crikey", "strewth", "cor", "wow", "meh", "lol",
+    "haha", "sigh", "look", "listen", "well", "so", "now", "anyway", "anyways", "honestly", "seriously",
+    "basically", "sure", "yes", "yeah", "yep", "yup", "please", "pls", "plz", "kindly", "urgent", "urgently",
+    "quick", "quickly", "asap", "pronto", "reminder", "update", "important", "note", "fyi", "btw", "ps", "nb",
+    "sorry", "cheers", "thanks", "ta", "thx", "ty", "hello", "hi", "hey", "hiya", "heya", "howdy", "yo", "gday",
+    "morning", "mornin", "afternoon", "arvo", "evening", "night", "goodnight", "bye", "ciao", "later",
+    # adverbs that signpost the message ("Separately, ...", "Ideally, ...")
+    "separately", "additionally", "meanwhile", "finally", "lastly", "firstly", "secondly", "thirdly", "however",
+    "incidentally", "ideally", "hopefully", "obviously", "frankly", "personally", "apparently", "unfortunately",
+    "fortunately", "luckily", "sadly", "importantly", "actually", "regardless", "sincerely", "regards",
+    # how to do it, said alone ("and - careful - the rocking horse"): a manner, no one addressed
+    "careful", "carefully", "gently", "slowly", "quietly", "steady", "easy", "gingerly", "safely"})
+
+
+def addressee(words: list[str]) -> str | None:
+    """Who a clause addresses by name ("Hornet, move ...", "..., Hornet", "Hi Hornet, ..."): its
+    one word, or the word after a greeting or thanks, when that word is no interjection, addressee
+    or function word; None when the clause is no such address."""
+    if len(words) == 2 and words[0] in GREETINGS | PLEASANTRIES:
+        words = words[1:]
+    if len(words) != 1:
+        return None
+    word = words[0]
+    if word.isalpha() and word not in INTERJECTIONS | GREETINGS | ADDRESSEES | CLOSERS | PLEASANTRIES \
+            and word not in FUNCTION_WORDS and word not in OPERATIVE:
+        return word
+    return None
+
+
+#: words that close a letter before its writer's name ("Regards, Ramesh", "Yours sincerely, Tom"):
+#: only letters close so; "thanks" and "cheers" may be said to a robot by name, and are not here
+SIGN_OFFS = frozenset({"regards", "rgds", "sincerely", "faithfully", "truly", "yours", "best", "warmly", "wishes"})
+
+
+def signature(before: Iterable[str], words: Iterable[str]) -> bool:
+    """Whether a clause that addresses a name (:func:`addressee`) is a letter's signature: the last
+    clause, after one that ends with a sign-off word ("Regards, Ramesh"). The writer signs; no one
+    is asked to do anything."""
+    said = [w for w in before if w]
+    ws = [w for w in words if w]
+    return bool(said) and said[-1] in SIGN_OFFS and len(ws) == 1 and addressee(ws) is not None
+
+
 def content_free(words: Iterable[str], content: Callable[[str], bool],
-                 names: Callable[[str], bool] | None = None, reports: bool = False) -> bool:
+                 names: Callable[[str], bool] | None = None, reports: bool = False,
+                 robot: Callable[[str], bool] = lambda w: False) -> bool:
     """Whether a clause carries nothing an order needs (module doc). ``content(word)`` is the
     domain's test: a name of its world (or close to one), a number, a content word of its lexicon.
     ``names(word)`` (optional; without it apologies and thanks are judged by ``content``): only a
     name of the world or a number, for a pleasantry (:func:`is_pleasantry`), whose grammar words
-    are what it is for."""
+    are what it is for. ``robot(word)``: whether a word names a robot (or team) of the world. A
+    clause that addresses one by name (:func:`addressee`) is talk in a domain whose orders are for
+    the team; addressed to a name the world lacks, it is never talk: a robot that is not there is
+    asked to do it, and the command must be refused, not given to the robots there are."""
     ws = [w for w in words if w]
     if not ws:
         return True
+    name = addressee(ws)
+    if name is not None:
+        return robot(name)   # "Hornet, ...": set aside only when it names a robot of the world
     if is_greeting(ws) or tuple(ws) in CLOSINGS:
         return True   # its "all" or "team" is who is greeted, no quantifier or robot group
     if names is not None and is_pleasantry(ws, names):

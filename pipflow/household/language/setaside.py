@@ -11,7 +11,7 @@ from pipflow.household.language.lexicon import DURATION_UNITS, FILLER_TYPO_TARGE
 from pipflow.household.language.names import world_phrases
 from pipflow.household.language.restated import leading_subject, restates_location
 from pipflow.household.language.typos import typo_of, vocabulary
-from pipflow.language.asides import EXCLUSIVITY, FUNCTION_WORDS, NEGATION, clauses, content_free
+from pipflow.language.asides import EXCLUSIVITY, FUNCTION_WORDS, NEGATION, clauses, content_free, signature
 from pipflow.language.numbers import read_number
 
 
@@ -190,7 +190,10 @@ def without_asides(command: str, world: dict) -> Trimmed | None:
     content = _content(world)
     parts = clauses(words, CLAUSE_MARKS)
     words, parts, topic = _topic_restated(words, parts, world)
-    free = [c for c in parts if content_free(_without_times(c.words), content)]
+    robots = {str(r).lower() for key in ("robots", "teams") for r in world.get(key) or {}}   # who may be addressed
+    free = [c for c in parts if content_free(_without_times(c.words), content, robot=robots.__contains__)]
+    if len(parts) > 1 and parts[-1] not in free and signature(parts[-2].words, parts[-1].words):
+        free.append(parts[-1])   # "Regards, Tom": the writer's name
     own = [c for c in parts if c not in free and speaker_doing(c.words)]
     known = [(c, restates_location(c.words, [b.words for b in parts[:k]], world)) for k, c in enumerate(parts)
              if k and c not in free and c not in own]

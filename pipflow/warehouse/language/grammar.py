@@ -600,6 +600,9 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | robots modal? ("stay" | "keep") ("off" | "away" "from" | "clear" "of") ITEM (lsep ITEM)* -> rule_away_items
     | robots ("is" | "are") state ","? ("so" | "and")? ("dont" | "do" "not") "use" ("it" | "them") -> rule_state
     | robots (("is" | "are") "not" | "isnt" | "arent") "to" "be" ("used" | "involved" | "employed" | "assigned") rscope -> rule_never
+    // a notice, its "is" left out: "Queenie not to be used", "Only tuggers to be used"
+    | robots "not" "to" "be" ("used" | "involved" | "employed" | "assigned") rscope -> rule_never
+    | ("only" | "just") robots "to" "be" ("used" | "involved" | "employed" | "assigned") rscope -> rule_only
     | robots (("is" | "are") "not" | "isnt" | "arent") "to" act rscope -> rule_never
     | robots modal? ("stay" | "keep") ("away" | "clear") from places -> rule_away
     | ("keep" | "leave") robots ("away" | "clear") from places -> rule_away

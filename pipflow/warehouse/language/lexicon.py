@@ -18,8 +18,9 @@ from lark import Token
 
 from pipflow.errors import InputError, Refusal, TranslationError
 from pipflow.language.asides import (FUNCTION_WORDS, OPERATIVE, Clause, clauses, content_free, is_opener, leading_reason,
-                                     said_talk, trailing_adjunct, trailing_thanks, unmarked_statement)
+                                     said_talk, signature, trailing_adjunct, trailing_thanks, unmarked_statement)
 from pipflow.language.characters import refuse_unread
+from pipflow.language.english import common_word
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS
 from pipflow.language.spelling import distance, normalize, plural_forms, slip, tolerance
 from pipflow.warehouse.language.names import KIND_WORDS, POSS_MARK, STOPWORDS, NameIndex, Tok, read_counts, recognize
@@ -48,6 +49,10 @@ SPELLINGS = {"shud": "should", "shld": "should", "u": "you", "r": "are", "wont":
              "em": "them", "yous": "you", "youse": "you",
              # "whatever's on P" typed or transcribed without its apostrophe: its "'s" is "is"
              "whatevers": "whatever"}
+#: spellings of two words run together as said ("outta the shed", "offa the rack"): read as the
+#: two words (the first keeps the text as written, the second has none of its own)
+RUN_TOGETHER = {"outta": ("out", "of"), "offa": ("off", "of"), "outa": ("out", "of"), "inna": ("in", "a"),
+                "gotta": ("got", "to"), "hafta": ("have", "to"), "hasta": ("has", "to"), "oughta": ("ought", "to")}
 #: fillers the grammar still reads when it has a place for them (it tries the keyword first)
 SOFT_FILLERS = {"of", "just", "right", "away", "now", "today", "currently", "moment", "exactly"}
 FRACTIONS = {"third": 3, "thirds": 3, "quarter": 4, "quarters": 4, "fourth": 4, "fourths": 4,
@@ -234,13 +239,19 @@ REQUEST_FRAMES = (("would", "it", "be", "possible", "to"), ("is", "it", "possibl
 COURTESY_TIMES = tuple(sorted(
     {("at", "your", "earliest", "convenience"), ("at", "your", "convenience"), ("as", "soon", "as", "possible"),
      ("as", "soon", "as", "you", "can"), ("when", "convenient"), ("when", "possible"), ("when", "you", "can"),
-     ("when", "you", "have", "time"), ("when", "you", "get", "time")}
+     ("when", "you", "have", "time"), ("when", "you", "get", "time"), ("at", "the", "earliest"),
+     ("at", "earliest"), ("on", "priority"), ("on", "a", "priority", "basis"), ("on", "priority", "basis"),
+     ("on", "an", "urgent", "basis"), ("on", "urgent", "basis"), ("urgent", "basis")}
     | {(when,) + have + ("a", moment) for when in ("when", "whenever")
        for have in (("you", "have"), ("you", "get"), ("youve", "got"), ("you", "have", "got"), ("you", "ve", "got"))
        for moment in ("moment", "minute", "min", "sec", "second", "chance")}, key=len, reverse=True))
 #: "Per our discussion this morning, ...": a clause that says what the order follows opens with
 #: "per" and one of these (never "per trip", a rate)
 _PER_WHOSE = {"our", "your", "the", "my", "his", "her", "their", "this", "that", "yesterdays", "todays"}
+#: "As discussed in the meeting, ...", "As agreed, ...": a clause that says what the order follows
+#: opens with "as" and one of these, or with "as per"
+_AS_SAID = {"per", "discussed", "agreed", "mentioned", "requested", "arranged", "planned", "promised", "usual",
+            "always", "instructed", "advised", "informed"}
 
 #: the words of the frames, spelt right ("sort" is no slip of "short")
 FRAME_WORDS = frozenset(w for f in REQUEST_FRAMES + COURTESY_TIMES for w in f)
@@ -277,17 +288,26 @@ def without_request_frames(toks: list[Tok]) -> tuple[list[Tok], list[str]]:
 
 def _per_clause(toks: list[Tok], k: int) -> int:
     """How many tokens at ``k`` are a clause that says what the order follows ("Per our discussion
-    this morning," "per the revised plan,"): "per", a word of :data:`_PER_WHOSE`, then words only
-    (no name, count or robot word) up to a comma, which goes with it; 0 otherwise."""
-    if k + 2 >= len(toks) or toks[k].kind != "word" or toks[k].value != "per" or \
-            toks[k + 1].kind != "word" or toks[k + 1].value not in _PER_WHOSE:
+    this morning," "per the revised plan,", "As per fire NOC,", "..., as per safety SOP.", "As
+    discussed in the meeting,"): "per" and a word of :data:`_PER_WHOSE`, or "as" and a word of
+    :data:`_AS_SAID` ("as per" is never a rate), then words only (no name, count, robot word or
+    operative word) up to a comma, which goes with it, or, after "as ...", up to the end of the
+    sentence; 0 otherwise."""
+    def word(j: int, *values: str) -> bool:
+        return j < len(toks) and toks[j].kind == "word" and (not values or toks[j].value in values)
+
+    as_per = word(k, "as") and word(k + 1, *_AS_SAID)
+    if not as_per and not (word(k, "per") and word(k + 1, *_PER_WHOSE)):
         return 0
-    for j in range(k + 2, len(toks)):
+    body = k + 2 if as_per and toks[k + 1].value == "per" or not as_per else k + 1
+    for j in range(body, len(toks)):
         if toks[j].kind == "punct":
-            return j + 1 - k if toks[j].value == "," else 0
+            if toks[j].value == "," and j > body:
+                return j + 1 - k
+            return j - k if as_per and j > body and toks[j].value in (".", ";", "!", "?") else 0
         if toks[j].kind != "word" or toks[j].value in OPERATIVE:
             return 0
-    return 0
+    return len(toks) - k if as_per and len(toks) > body else 0
 
 
 def _replace_phrases(toks: list[Tok], phrases: list[tuple[tuple[str, ...], Any]],
@@ -448,6 +468,25 @@ def _split_hyphens(toks: list[Tok], keywords: dict[str, str]) -> list[Tok]:
             out.append(t)
             continue
         out += [Tok("word", p, p) for p in parts]
+    return out
+
+
+#: "is having", "are having", "be having": the progressive of "have" said of what a place holds, as
+#: in Indian and some other Englishes ("Showroom is having 6 jars"): it means "has" / "have"
+_HAVING = {"is": "has", "s": "has", "are": "have", "be": "have"}
+
+
+def stative_having(toks: list[Tok]) -> list[Tok]:
+    """"P is having N X" as "P has N X", "should both be having" as "should both have" (one
+    token, its text the words said); "having" after anything else is left to the grammar ("with
+    P having 3 X")."""
+    out: list[Tok] = []
+    for t in toks:
+        if t.kind == "word" and t.value == "having" and out and out[-1].kind == "word" and out[-1].value in _HAVING:
+            be = out.pop()
+            out.append(Tok("word", f"{be.text} {t.text}", _HAVING[str(be.value)]))
+            continue
+        out.append(t)
     return out
 
 
@@ -630,12 +669,21 @@ class Lexicon:
             return True
         if word in FUNCTION_WORDS or word in FILLERS:
             return False  # "for" is no misspelt "four", "to" none of "two" (as in names_world)
-        if _number_typo(word) is not None:
+        if _number_typo(word) is not None and not common_word(word):   # "footy" is no "forty"
             return True
         repaired = SPELLINGS.get(word) or self._keyword_typo(word)
         if repaired is not None and repaired not in FUNCTION_WORDS:
             return True
-        return any(distance(word, w) <= max(1, tolerance(len(w))) for w in self._name_words)
+        return self._near_name(word)
+
+    def _near_name(self, word: str) -> bool:
+        """Whether a word is within a typo's reach of a word of the world's names and may be a slip
+        of it: a common English word written as itself ("big" near "bin", "left" near "loft") is
+        none (:func:`pipflow.language.english.common_word`)."""
+        if word in self._name_words:
+            return True
+        return any(distance(word, w) <= max(1, tolerance(len(w))) for w in self._name_words) \
+            and not common_word(word)
 
     def names_world(self, word: str, closely: bool = False) -> bool:
         """Whether a word of a clause names something of this world or a count: a world name, a
@@ -650,12 +698,12 @@ class Lexicon:
             return True
         if word in FUNCTION_WORDS or word in FILLERS or word in self.keywords:
             return False  # "for" is no misspelt "four", "there" none of "three"
-        if _number_typo(word):
+        if _number_typo(word) and not common_word(word):
             return True
         if closely:
             return word in self._name_words or any(
                 len(w) >= 5 and w[:1] == word[:1] and distance(word, w) <= 1 for w in self._own_name_words)
-        return any(distance(word, w) <= max(1, tolerance(len(w))) for w in self._name_words)
+        return self._near_name(word)
 
     def _clauses(self, cur: list[Tok]) -> tuple[list[Tok], list[str]]:
         """The sentence's tokens without its content-free clauses (split at commas and colons),
@@ -677,18 +725,21 @@ class Lexicon:
         free = [c for c in parts if content_free(c.words, lambda w: w in _HELD or self.content(w),
                                                  lambda w: w in _HELD or self.names_world(w), reports=True)]
         free += leading_reason(parts, free, lambda w: w == "\1" or w in NUMBER_WORDS)
-        thanks = trailing_thanks(list(parts[-1].words), lambda w: w in _HELD or self.names_world(w)) \
-            if parts and parts[-1] not in free else 0
-        if thanks:   # "... to the dray bay ta": the thanks closing the last clause, without a comma
-            end = parts[-1].end
-            free.append(Clause(end - thanks, end, parts[-1].words[-thanks:]))
+        if len(parts) > 1 and parts[-1] not in free and signature(parts[-2].words, parts[-1].words):
+            free.append(parts[-1])   # "Regards, Ramesh": the writer's name
+        # "... to the dray bay ta", "... over to the shed would ya, pissing down": a thanks or a
+        # request tag closing the last clause that is no talk, without a comma
+        last = next((c for c in reversed(parts) if c not in free), None)
+        thanks = trailing_thanks(list(last.words), lambda w: w in _HELD or self.names_world(w)) if last else 0
+        if thanks:
+            free.append(Clause(last.end - thanks, last.end, last.words[-thanks:]))
         inner: set[int] = set()   # the starts of parts of a clause: no clause mark of their own
         for c in parts:
             # "... on the ramp for afternoon pickup": an adjunct of purpose, time or reason that
             # carries nothing, at the end of a clause that does (asides.trailing_adjunct)
             if c in free:
                 continue
-            clause = list(c.words[:len(c.words) - thanks] if c is parts[-1] else c.words)
+            clause = list(c.words[:len(c.words) - thanks] if c is last else c.words)
             # "... dont use flint hes got a flat tyre": a statement run on without a comma
             n = unmarked_statement(clause, lambda w: w in _HELD or self.names_world(w, closely=True))
             if n:
@@ -739,12 +790,19 @@ class Lexicon:
         for t in toks:
             if t.kind == "word" and not self._known(str(t.value)) and self._group(t.text) is None:
                 word = str(t.value)
-                typo = SPELLINGS.get(word) or _number_typo(word) or self._keyword_typo(word)
+                # a common word is never a misspelt number ("fire" is no "five", "tree" no "three")
+                number = _number_typo(word)
+                typo = SPELLINGS.get(word) or (number if number and not common_word(word) else None) \
+                    or self._keyword_typo(word)
                 if typo is not None:
                     t = Tok("word", t.text, typo)
+            if t.kind == "word" and str(t.value) in RUN_TOGETHER and not self._known(str(t.value)):
+                first, second = RUN_TOGETHER[str(t.value)]
+                fixed += [Tok("word", t.text, first), Tok("word", "", second)]
+                continue
             fixed.append(t)
         toks, framed = without_request_frames(read_counts(_split_hyphens(fixed, self.keywords)))
-        toks = lexicon_verbs(quantity_phrases(addressed_anyone(toks), self.keywords), self.keywords)
+        toks = lexicon_verbs(quantity_phrases(addressed_anyone(stative_having(toks)), self.keywords), self.keywords)
         toks = corrected_later(without_particles(corrected(toks)))
         self._framed = framed
         return self._split(toks, stops)

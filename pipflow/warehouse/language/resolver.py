@@ -62,6 +62,7 @@ class _State:
         self.lines: list[str] = []
         self.fills: list[dict] = []
         self.before_set: dict[tuple[str, str], int] = {}  # the count before a command fixed it
+        self.changed_by: dict[tuple[str, str], str] = {}  # the words that last changed a count
 
     def cur(self, place: str, item: str) -> int:
         return self.counts.get((place, item), stock(self.world, place, item))
@@ -91,6 +92,8 @@ class _State:
         if absolute:
             self.fixed[key] = words
             self.before_set.setdefault(key, before)
+        if value != before:
+            self.changed_by[key] = words
         self.counts[key] = value
         self.lines.append(f"{place} {item}: {before} now, {step} -> {value}, from '{words}'")
 
@@ -296,8 +299,14 @@ def _keep(st: _State, s: dict) -> None:
         for i in items:
             if s.get("inflow_only"):
                 st.bound(p, i, None, st.cur(p, i), words)
-            else:
-                st.put(p, i, st.cur(p, i), "kept", words, True)
+                continue
+            now = stock(st.world, p, i)
+            if st.cur(p, i) != now and (p, i) in st.changed_by:
+                # "Move everything from P to Q. Don't touch the pears": kept as they are, or moved?
+                raise TranslationError(f"'{words}' keeps {i} on {p} as it is ({now}), but "
+                                       f"'{st.changed_by[(p, i)]}' changes it to {st.cur(p, i)}: "
+                                       f"cannot tell which is meant")
+            st.put(p, i, now, "kept", words, True)
 
 
 def _distribute(st: _State, s: dict) -> None:

@@ -187,6 +187,10 @@ class TailRules:
         prev = self.statements[-1] if self.statements else None
         if prev is None:
             raise TranslationError(f"{quote(words)}: nothing said before it that it excepts")
+        items = prev.get("items") or {}
+        if items.get("all"):
+            # "Move everything from P to Q but not the pears", "Empty P, not the pears": excepted
+            prev["items"] = {**items, "except": list(dict.fromkeys((items.get("except") or []) + heads))}
         places = (prev.get("from") or prev.get("places") or {}).get("names")
         if not places:
             raise TranslationError(f"{quote(words)}: cannot tell where they stay")

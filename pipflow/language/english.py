@@ -1,0 +1,44 @@
+"""Common English words, for telling a word written as itself from a slip of a name.
+
+A word one or two edits from a name of the world is taken for a misspelt name, so a clause that
+holds one is never talk to set aside ("..., the shlef"). But ordinary words are often that close
+to a name: "big" to "bin", "boss" to "bots", "left" to "loft", "grease" to "areas". A word people
+write often as itself is no slip of a name; the test is a frequency list of English as written
+(pyspellchecker's, from subtitles and the web), not a list we keep. The list is loaded on first
+use: a command whose every word is placed never needs it.
+"""
+from __future__ import annotations
+
+import functools
+
+#: how often a word must occur in the list (of some 10^9 words) to count as written as itself:
+#: slips ("shlef", "fourty", "olny") and rare coinages stay below it, "tho" (262) and "arvo"
+#: (50) are on either side
+COMMON = 100
+
+
+#: contractions as people type them without the apostrophe ("theyve", "hes"): the list has them
+#: only with it
+CONTRACTIONS = frozenset(f"{who}{tail}" for who, tails in (
+    ("i", ("m", "ve", "ll", "d")), ("you", ("re", "ve", "ll", "d")), ("we", ("re", "ve", "ll", "d")),
+    ("they", ("re", "ve", "ll", "d")), ("he", ("s", "ll", "d")), ("she", ("s", "ll", "d")),
+    ("it", ("s", "ll", "d")), ("that", ("s", "ll", "d")), ("there", ("s", "re", "ll", "d")),
+    ("who", ("s", "ll", "d", "ve")), ("what", ("s", "ll", "d", "ve")))
+    for tail in tails) | frozenset(f"{verb}nt" for verb in (
+        "is", "are", "was", "were", "do", "does", "did", "have", "has", "had", "could", "would", "should",
+        "must", "need", "ca", "wo", "ai", "might"))
+
+
+@functools.cache
+def _frequencies() -> object:
+    from spellchecker import SpellChecker  # deferred on purpose: a second's load, rarely needed
+    return SpellChecker(language="en", distance=1).word_frequency
+
+
+def common_word(word: str) -> bool:
+    """Whether a lower-case word is a common English word as written (:data:`COMMON`), or a
+    contraction typed without its apostrophe (:data:`CONTRACTIONS`)."""
+    if word in CONTRACTIONS:
+        return True
+    frequencies = _frequencies()
+    return word in frequencies and frequencies[word] >= COMMON
