@@ -457,3 +457,16 @@ def test_warehouse_office_phrasings_of_what_the_order_follows_and_when(command: 
     got = understand(command, PAPER)
     assert got["goal"] == {"shelf1": {"product1": 8}, "shelf2": {"product1": 10}}
     assert got["order"]["set_aside"] == aside
+
+
+@pytest.mark.parametrize("tail", ["the labels got mixed up it seems", "spinners cleaned us out", "the truck came early"])
+def test_warehouse_a_noun_and_a_verb_in_the_past_report_what_happened(tail: str) -> None:
+    got = understand(f"Shelf2 needs 3 more product1, {tail}", PAPER)
+    assert got["goal"] == {"shelf2": {"product1": 11}}
+    assert got["order"]["set_aside"] == [tail]
+
+
+@pytest.mark.parametrize("tail", ["stack cleaned ones", "move cleaned stuff", "boxes moved to the back"])
+def test_warehouse_an_order_or_a_report_that_picks_things_out_is_never_set_aside(tail: str) -> None:
+    with pytest.raises(TranslationError):
+        understand(f"Shelf2 needs 3 more product1, {tail}", PAPER)

@@ -255,9 +255,27 @@ def is_statement(words: Iterable[str], names: Callable[[str], bool]) -> bool:
     pronoun = ws[0] in (SUBJECTS | _SUBJECT_BE) - {"there", "theres", "youre"}
     noun = ws[0] not in FINITE and ws[0] not in FUNCTION_WORDS - DETERMINERS and any(
         w in FINITE or (w.endswith("ing") and len(w) > 4 and ws[0] in DETERMINERS) for w in ws[1:4])
-    if not (pronoun or noun):
+    if not (pronoun or noun or _past_of_a_noun(ws)):
         return False
     return _asks_nothing(ws, names)
+
+
+#: verbs in the past tense that do not end in "-ed" ("the labels got mixed up", "the truck came")
+PAST_FORMS = frozenset({"got", "came", "went", "broke", "fell", "ran", "said", "left", "took", "made", "did",
+                        "forgot", "told", "gave", "saw", "knew", "thought", "brought", "bought", "wore", "tore"})
+
+
+def _past_of_a_noun(ws: list[str]) -> bool:
+    """ "spinners cleaned us out", "the labels got mixed up", "the truck came early": a noun said
+    as a subject (after a determiner, or a plural: an order opens with its verb, never a plural)
+    and then a verb in the past tense, which reports what happened."""
+    k = 1 if ws[0] in DETERMINERS else 0
+    if len(ws) < k + 2:
+        return False
+    noun, verb = ws[k], ws[k + 1]
+    subject = noun.isalpha() and noun not in FUNCTION_WORDS and (k == 1 or (noun.endswith("s") and len(noun) > 3
+                                                                         and not noun.endswith("ss")))
+    return subject and (verb in PAST_FORMS or (verb.endswith("ed") and len(verb) > 4))
 
 
 def _asks_nothing(ws: list[str], names: Callable[[str], bool]) -> bool:
