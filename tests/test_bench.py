@@ -465,3 +465,23 @@ def test_a_refusal_to_guess_is_a_success_where_the_task_expects_one(tmp_path):
     by_id = {t["id"]: t for t in results["tasks"]}
     assert by_id["vague"]["sr"] == 1.0 and by_id["vague"]["understood"] == 1.0
     assert by_id["clear"]["sr"] == 0.0  # it ran: not the refusal the task asks for
+
+
+def test_a_reading_asked_as_a_choice_is_a_refusal_to_guess_and_its_offers_count(tmp_path):
+    """A refusal that asks which reading is meant (a ``Choice``, a subclass of
+    TranslationError) is the reader refusing to guess: where the task expects a refusal it is
+    understood and a success (it had been scored "not refused"), and where the command is clear
+    its offered readings count in ``candidate_recall`` (they had been left out)."""
+    world = Path(__file__).resolve().parents[1] / "benchmarks" / "warehouse" / "world.yaml"
+    tasks = tmp_path / "tasks.yaml"
+    tasks.write_text(f"world: {world}\ntasks:\n"
+                     "  - {id: shared, command: 'shelf1 and shelf2 should have 6 product4 in total', goal: {},"
+                     " expect: refuse}\n"
+                     "  - {id: each, command: 'Move 2 product1 from shelf1 and shelf2 to shelf3',"
+                     " goal: {shelf1: {product1: 8}, shelf2: {product1: 6}, shelf3: {product1: 9}}}\n")
+    results = run_bench(BenchConfig(tasks_file=tasks, seeds=1, jobs=1, out=tmp_path / "out", use_cache=False),
+                        progress=False)
+    by_id = {t["id"]: t for t in results["tasks"]}
+    assert by_id["shared"]["understood"] == 1.0 and by_id["shared"]["sr"] == 1.0
+    assert by_id["each"]["understood"] == 0.0 and by_id["each"]["misread"] == 0
+    assert results["summary"]["candidate_recall"] == 1.0

@@ -18,7 +18,7 @@ from pipflow.engine.expr import resolve
 from pipflow.engine.runner import run_workflow
 from pipflow.engine.status import RunStatus
 from pipflow.engine.store import read_json
-from pipflow.errors import UserError
+from pipflow.errors import Refusal, TranslationError, UserError
 from pipflow.experiments.benchdomains import domain_named
 from pipflow.experiments.faultstats import fault_columns
 from pipflow.meaning import misread_executed
@@ -53,6 +53,7 @@ def run_one(spec: RunSpec) -> dict:
     inputs = {"command": task["command"], "world": spec.world_path, "seed": spec.seed,
               **(task.get("inputs") or {}), **spec.inputs}  # per-task inputs (a robot team, say)
     refusal = error = None
+    kind: str | None = None   # the error's kind as the verdict reads it (judged_kind)
     outputs: dict = {}
     offered: list = []
     try:
@@ -61,6 +62,7 @@ def run_one(spec: RunSpec) -> dict:
         row["status"], row["run_dir"] = RunStatus(result.status).value, str(result.run_dir)
         row["error_kind"] = type(result.exception).__name__ if result.exception is not None else None
         row["user_error"] = isinstance(result.exception, UserError)
+        kind = judged_kind(result.exception)
         outputs = result.outputs or {}
         offered = result.candidates
         if result.status is RunStatus.REFUSED:
@@ -72,7 +74,8 @@ def run_one(spec: RunSpec) -> dict:
     except Exception as err:  # an invalid workflow or input: the run never started
         row["status"], error = "error", f"{type(err).__name__}: {err}"
         row["error_kind"], row["user_error"] = type(err).__name__, isinstance(err, UserError)
-    if ambiguous(task) and error is not None and row.get("error_kind") == NOT_UNDERSTOOD:
+        kind = judged_kind(err)
+    if ambiguous(task) and error is not None and kind == NOT_UNDERSTOOD:
         refusal, error = error, None  # the right answer to an ambiguous command: refuse, quoting the words
     domain = domain_named(task.get("domain"))
     if row["status"] != RunStatus.SUCCEEDED and row.get("run_dir") and spec.inputs.get("faults"):
@@ -95,6 +98,7 @@ def run_one(spec: RunSpec) -> dict:
                  f"failed (a fallback is accepted only where the bench does not name the planner)")
         row.update(domain.score_bench_run(spec.world_path, task, {}, None, error))
         row["status"], row["error_kind"] = "failed", "PlannerFallback"
+        kind = "PlannerFallback"
     if row.get("run_dir") and not writes_goal(Path(row["run_dir"])):  # a baseline: it plans without a goal
         judged = {"understood": None, "misread": None, "understanding": "not measured: the workflow writes no goal"}
     elif row["status"] == RunStatus.SUCCEEDED and "goal" in read and read["goal"] is None:
@@ -102,20 +106,33 @@ def run_one(spec: RunSpec) -> dict:
         # there is no reading to compare with the gold, only the outcome (SR)
         judged = {"understood": None, "misread": None, "understanding": "not measured: the run states no goal"}
     else:
-        judged = domain.understand(task, read, row["status"], row.get("error_kind"), world_path=spec.world_path)
+        judged = domain.understand(task, read, row["status"], kind, world_path=spec.world_path)
     row.update(judged if judged is not None else
                {"understood": None, "misread": None, "understanding": "not measured for this domain"})
     row["misread_executed"] = misread_executed(row.get("misread"), row.get("executed"))
-    row["candidate_hit"] = _candidate_hit(domain, task, spec.world_path, row, offered)
+    row["candidate_hit"] = _candidate_hit(domain, task, spec.world_path, row, kind, offered)
     row["seconds"] = round(time.perf_counter() - started, 3)
     return row
 
 
-def _candidate_hit(domain: Any, task: dict, world_path: str, row: dict, offered: list) -> bool | None:
+def judged_kind(exc: BaseException | None) -> str | None:
+    """An error's kind as a run's verdict reads it: every :class:`TranslationError` is
+    :data:`NOT_UNDERSTOOD`, whatever its class (a reading asked as a ``Choice``, a command said
+    without stops that reads two ways): the reader refused to guess. Other errors by their class
+    name (``Refusal``: refused as impossible)."""
+    if exc is None:
+        return None
+    if isinstance(exc, TranslationError) and not isinstance(exc, Refusal):
+        return NOT_UNDERSTOOD
+    return type(exc).__name__
+
+
+def _candidate_hit(domain: Any, task: dict, world_path: str, row: dict, kind: str | None,
+                   offered: list) -> bool | None:
     """For a clear, feasible command the reader refused as not understood: whether the task's
     gold reading is among the candidate readings the refusal offered (issue 23's
     ``candidate_recall``); None for every other run."""
-    if (row.get("status") == "succeeded" or row.get("error_kind") != NOT_UNDERSTOOD
+    if (row.get("status") == "succeeded" or kind != NOT_UNDERSTOOD
             or task.get("expect") == "refuse" or task.get("feasible") is False):
         return None
     for c in offered:
