@@ -101,6 +101,8 @@ CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "
 #: nothing more than the order does
 REQUEST_TAGS = frozenset((modal, you) for modal in ("would", "could", "will", "can", "wont")
                          for you in ("you", "ya", "u", "yous"))
+#: the words of a thanks or a request tag, which are no operative words there
+_TAG_WORDS = frozenset(w for tag in REQUEST_TAGS for w in tag) | {"thank", "you"}
 
 
 def trailing_thanks(words: list[str], content: Callable[[str], bool]) -> int:
@@ -113,8 +115,7 @@ def trailing_thanks(words: list[str], content: Callable[[str], bool]) -> int:
     while rest and (rest[-2:] == ["thank", "you"] or tuple(rest[-2:]) in REQUEST_TAGS or rest[-1] in CLOSERS):
         n = 2 if rest[-2:] == ["thank", "you"] or tuple(rest[-2:]) in REQUEST_TAGS else 1
         rest, k = rest[:-n], k + n
-    said = {w for tag in REQUEST_TAGS for w in tag} | {"thank", "you"}
-    if k == 0 or k >= len(words) or any(content(w) or (w not in THANKS and w not in said
+    if k == 0 or k >= len(words) or any(content(w) or (w not in THANKS and w not in _TAG_WORDS
                                                        and near_operative(w)) for w in words[-k:]):
         return 0
     return k

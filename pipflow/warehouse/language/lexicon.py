@@ -51,8 +51,7 @@ SPELLINGS = {"shud": "should", "shld": "should", "u": "you", "r": "are", "wont":
              "whatevers": "whatever"}
 #: spellings of two words run together as said ("outta the shed", "offa the rack"): read as the
 #: two words (the first keeps the text as written, the second has none of its own)
-RUN_TOGETHER = {"outta": ("out", "of"), "offa": ("off", "of"), "outa": ("out", "of"), "inna": ("in", "a"),
-                "gotta": ("got", "to"), "hafta": ("have", "to"), "hasta": ("has", "to"), "oughta": ("ought", "to")}
+RUN_TOGETHER = {"outta": ("out", "of"), "outa": ("out", "of"), "offa": ("off", "of"), "hafta": ("have", "to")}
 #: fillers the grammar still reads when it has a place for them (it tries the keyword first)
 SOFT_FILLERS = {"of", "just", "right", "away", "now", "today", "currently", "moment", "exactly"}
 FRACTIONS = {"third": 3, "thirds": 3, "quarter": 4, "quarters": 4, "fourth": 4, "fourths": 4,
@@ -299,7 +298,8 @@ def _per_clause(toks: list[Tok], k: int) -> int:
     as_per = word(k, "as") and word(k + 1, *_AS_SAID)
     if not as_per and not (word(k, "per") and word(k + 1, *_PER_WHOSE)):
         return 0
-    body = k + 2 if as_per and toks[k + 1].value == "per" or not as_per else k + 1
+    # the words said after "per our" / "as per", or after "as discussed" (which may end there)
+    body = k + 1 if as_per and toks[k + 1].value != "per" else k + 2
     for j in range(body, len(toks)):
         if toks[j].kind == "punct":
             if toks[j].value == "," and j > body:

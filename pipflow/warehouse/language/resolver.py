@@ -301,7 +301,7 @@ def _keep(st: _State, s: dict) -> None:
                 st.bound(p, i, None, st.cur(p, i), words)
                 continue
             now = stock(st.world, p, i)
-            if st.cur(p, i) != now and (p, i) in st.changed_by:
+            if st.cur(p, i) != now:
                 # "Move everything from P to Q. Don't touch the pears": kept as they are, or moved?
                 raise TranslationError(f"'{words}' keeps {i} on {p} as it is ({now}), but "
                                        f"'{st.changed_by[(p, i)]}' changes it to {st.cur(p, i)}: "
