@@ -450,19 +450,25 @@ def test_the_goal_of_a_run_that_did_not_finish_is_read_from_its_record(local_ben
     assert recorded_outputs(tmp_path / "nowhere", ("goal",)) == {}
 
 
+def _paper_bench(tmp_path: Path, *tasks: str) -> tuple[dict, dict]:
+    """A one-seed bench of tasks (YAML flow mappings) in the paper's world: the results and the
+    task rows by id."""
+    world = Path(__file__).resolve().parents[1] / "benchmarks" / "warehouse" / "world.yaml"
+    path = tmp_path / "tasks.yaml"
+    path.write_text(f"world: {world}\ntasks:\n" + "".join(f"  - {t}\n" for t in tasks))
+    results = run_bench(BenchConfig(tasks_file=path, seeds=1, jobs=1, out=tmp_path / "out", use_cache=False),
+                        progress=False)
+    return results, {t["id"]: t for t in results["tasks"]}
+
+
 def test_a_refusal_to_guess_is_a_success_where_the_task_expects_one(tmp_path):
     """``expect: refuse`` marks a command a correct system refuses to guess at: its refusal
     (a TranslationError quoting the words) scores SR 1 and understood 1; executing a guess
     would score 0."""
-    world = Path(__file__).resolve().parents[1] / "benchmarks" / "warehouse" / "world.yaml"
-    tasks = tmp_path / "tasks.yaml"
-    tasks.write_text(f"world: {world}\ntasks:\n"
-                     "  - {id: vague, command: 'put some product1 on shelf2', goal: {}, expect: refuse}\n"
-                     "  - {id: clear, command: 'put 3 product4 on shelf1', goal: {shelf1: {product4: 3}},"
-                     " expect: refuse}\n")
-    results = run_bench(BenchConfig(tasks_file=tasks, seeds=1, jobs=1, out=tmp_path / "out", use_cache=False),
-                        progress=False)
-    by_id = {t["id"]: t for t in results["tasks"]}
+    results, by_id = _paper_bench(tmp_path,
+                                  "{id: vague, command: 'put some product1 on shelf2', goal: {}, expect: refuse}",
+                                  "{id: clear, command: 'put 3 product4 on shelf1', goal: {shelf1: {product4: 3}},"
+                                  " expect: refuse}")
     assert by_id["vague"]["sr"] == 1.0 and by_id["vague"]["understood"] == 1.0
     assert by_id["clear"]["sr"] == 0.0  # it ran: not the refusal the task asks for
 
@@ -472,16 +478,11 @@ def test_a_reading_asked_as_a_choice_is_a_refusal_to_guess_and_its_offers_count(
     TranslationError) is the reader refusing to guess: where the task expects a refusal it is
     understood and a success (it had been scored "not refused"), and where the command is clear
     its offered readings count in ``candidate_recall`` (they had been left out)."""
-    world = Path(__file__).resolve().parents[1] / "benchmarks" / "warehouse" / "world.yaml"
-    tasks = tmp_path / "tasks.yaml"
-    tasks.write_text(f"world: {world}\ntasks:\n"
-                     "  - {id: shared, command: 'shelf1 and shelf2 should have 6 product4 in total', goal: {},"
-                     " expect: refuse}\n"
-                     "  - {id: each, command: 'Move 2 product1 from shelf1 and shelf2 to shelf3',"
-                     " goal: {shelf1: {product1: 8}, shelf2: {product1: 6}, shelf3: {product1: 9}}}\n")
-    results = run_bench(BenchConfig(tasks_file=tasks, seeds=1, jobs=1, out=tmp_path / "out", use_cache=False),
-                        progress=False)
-    by_id = {t["id"]: t for t in results["tasks"]}
+    results, by_id = _paper_bench(tmp_path,
+                                  "{id: shared, command: 'shelf1 and shelf2 should have 6 product4 in total',"
+                                  " goal: {}, expect: refuse}",
+                                  "{id: each, command: 'Move 2 product1 from shelf1 and shelf2 to shelf3',"
+                                  " goal: {shelf1: {product1: 8}, shelf2: {product1: 6}, shelf3: {product1: 9}}}")
     assert by_id["shared"]["understood"] == 1.0 and by_id["shared"]["sr"] == 1.0
     assert by_id["each"]["understood"] == 0.0 and by_id["each"]["misread"] == 0
     assert results["summary"]["candidate_recall"] == 1.0

@@ -143,12 +143,14 @@ def _possessive(m: re.Match) -> str:
 
 
 def _number_typo(word: str) -> str | None:
-    """The number word a misspelt word means ("thre" -> three), when exactly one is 1 edit away."""
+    """The number word a misspelt word means ("thre" -> three), when exactly one is 1 edit away
+    and the word is no common word written as itself ("fire" is no "five", "footy" no "forty":
+    :func:`pipflow.language.english.common_word`, consulted only for a near miss)."""
     if len(word) < 3 or not word.isalpha():
         return None
     cands = [w for w in list(UNITS) + list(TENS) + ["dozen", "hundred", "thousand"]
              if len(w) >= 3 and w[0] == word[0] and distance(word, w) <= 1]
-    return cands[0] if len(cands) == 1 else None
+    return cands[0] if len(cands) == 1 and not common_word(word) else None
 
 
 #: words that take back the count before them: "5, no, 6", "3, sorry, 4", "2, I mean 3"
@@ -669,7 +671,7 @@ class Lexicon:
             return True
         if word in FUNCTION_WORDS or word in FILLERS:
             return False  # "for" is no misspelt "four", "to" none of "two" (as in names_world)
-        if _number_typo(word) is not None and not common_word(word):   # "footy" is no "forty"
+        if _number_typo(word) is not None:
             return True
         repaired = SPELLINGS.get(word) or self._keyword_typo(word)
         if repaired is not None and repaired not in FUNCTION_WORDS:
@@ -698,7 +700,7 @@ class Lexicon:
             return True
         if word in FUNCTION_WORDS or word in FILLERS or word in self.keywords:
             return False  # "for" is no misspelt "four", "there" none of "three"
-        if _number_typo(word) and not common_word(word):
+        if _number_typo(word):
             return True
         if closely:
             return word in self._name_words or any(
@@ -790,10 +792,7 @@ class Lexicon:
         for t in toks:
             if t.kind == "word" and not self._known(str(t.value)) and self._group(t.text) is None:
                 word = str(t.value)
-                # a common word is never a misspelt number ("fire" is no "five", "tree" no "three")
-                number = _number_typo(word)
-                typo = SPELLINGS.get(word) or (number if number and not common_word(word) else None) \
-                    or self._keyword_typo(word)
+                typo = SPELLINGS.get(word) or _number_typo(word) or self._keyword_typo(word)
                 if typo is not None:
                     t = Tok("word", t.text, typo)
             if t.kind == "word" and str(t.value) in RUN_TOGETHER and not self._known(str(t.value)):
