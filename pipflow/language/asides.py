@@ -297,13 +297,21 @@ TIMES_SAID = frozenset({"lunch", "lunchtime", "noon", "midday", "midnight", "ton
                         "wednesday", "thursday", "friday", "saturday", "sunday", "weekend"})
 
 
+#: spans of time after "all" ("it's been on all night", "all the time"): how long, no quantity
+DURATIONS = frozenset({"day", "night", "week", "weekend", "month", "year", "morning", "afternoon", "evening",
+                       "summer", "winter", "time"})
+
+
 def _operative_at(ws: list[str], k: int) -> bool:
     """:func:`near_operative` of the word at ``k``, except a word of :data:`_WHERE_BEFORE_THERE`
-    before "there" or "here", and a word of :data:`TEMPORAL` before a time (:data:`TIMES_SAID`)."""
+    before "there" or "here", a word of :data:`TEMPORAL` before a time (:data:`TIMES_SAID`), and
+    "all" before a span of time (:data:`DURATIONS`: "all night", "all the time")."""
     nxt = ws[k + 1] if k + 1 < len(ws) else None
     if ws[k] in _WHERE_BEFORE_THERE and nxt in ("there", "here"):
         return False
     if ws[k] in TEMPORAL and nxt in TIMES_SAID:
+        return False
+    if ws[k] == "all" and (nxt in DURATIONS or (nxt == "the" and k + 2 < len(ws) and ws[k + 2] in DURATIONS)):
         return False
     return near_operative(ws[k])
 
@@ -502,7 +510,7 @@ def content_free(words: Iterable[str], content: Callable[[str], bool],
     if ws[0] not in SUBJECTS and any(w not in FUNCTION_WORDS and nxt in OBJECT_PRONOUNS
                                      for w, nxt in zip(ws, ws[1:])):
         return False  # "..., recount them": an instruction about a thing, in a verb not read
-    return not any(near_operative(w) or content(w) for w in ws)
+    return not any(_operative_at(ws, k) or content(w) for k, w in enumerate(ws))
 
 
 def clauses(words: list[str], marks: set[str]) -> list[Clause]:

@@ -10,6 +10,7 @@ use: a command whose every word is placed never needs it.
 from __future__ import annotations
 
 import functools
+import re
 
 #: how often a word must occur in the list (of some 10^9 words) to count as written as itself:
 #: slips ("shlef", "fourty", "olny") and rare coinages stay below it, "tho" (262) and "arvo"
@@ -42,3 +43,27 @@ def common_word(word: str) -> bool:
         return True
     frequencies = _frequencies()
     return word in frequencies and frequencies[word] >= COMMON
+
+
+#: "in'" for "ing" as it is said ("burnin'", "settin'", "nothin'"): the apostrophe marks the
+#: dropped g, and the word with it must be a common English word ("cabin'" is no "cabing")
+_DROPPED_G = re.compile(r"\b([A-Za-z]{2,}in)['\u2019](?=[\s.,;:!?]|$)")
+#: spoken forms whose apostrophe marks what is left out, read as written out in full
+_SPOKEN = ((re.compile(r"(?<![A-Za-z])['\u2019]em\b", re.IGNORECASE), "them"),
+           (re.compile(r"\by['\u2019]all\b", re.IGNORECASE), "you all"),
+           (re.compile(r"\bain['\u2019]?t(?=\s+(?:got|been|had|done|seen)\b)", re.IGNORECASE), "has not"),
+           (re.compile(r"\bain['\u2019]t\b", re.IGNORECASE), "is not"))
+
+
+def spoken_forms(text: str) -> str:
+    """The text with the spoken forms an apostrophe marks written out ("burnin'" -> "burning",
+    "'em" -> "them", "y'all" -> "you all", "ain't" -> "is not"). Only the apostrophe tells
+    them: "in" without one ("cabin", "basin") is never touched."""
+    def g(m: re.Match) -> str:
+        word = m.group(1) + "g"
+        return word if common_word(word.lower()) else m.group(0)
+    if "in'" in text or "in\u2019" in text:
+        text = _DROPPED_G.sub(g, text)
+    for pattern, written in _SPOKEN:
+        text = pattern.sub(written, text)
+    return text

@@ -13,6 +13,8 @@ from __future__ import annotations
 import functools
 import re
 
+from pipflow.language.english import spoken_forms
+
 #: verbs asking for a state (value: the goal condition); "open", "shut", "clean", "warm" have
 #: classes of their own because they are adjectives too, or start a phrasal verb ("clean up")
 STATE_VERBS = {
@@ -644,7 +646,7 @@ _TYPED = ((r"\bu\b", "you"), (r"\bur\b", "your"), (r"\b(they|you|we)re\b", r"\1 
 def normalize(text: str) -> str:
     """Lower case, contractions spelt out ("don't" -> "do not"), hyphens and underscores as
     spaces, so that "desk-lamp", "desk_lamp" and "desk lamp" read alike."""
-    t = text.lower().replace("’", "'").replace("\u2026", "...")
+    t = spoken_forms(text.replace("’", "'")).lower().replace("\u2026", "...")   # "burnin'", "'em"
     t = re.sub(r"\s*[+&]\s*", " and ", t)   # "noodles + curry", "salt & pepper"
     # a dash set off by spaces, or an en or em dash, is a pause, like a comma ("throw it away -
     # it smells off - and ..."); a hyphen inside a word joins it ("desk-lamp")
@@ -653,7 +655,8 @@ def normalize(text: str) -> str:
     t = re.sub(r"\bdoesn't\b", "does not", t)
     t = re.sub(r"\bcan't\b|\bcannot\b", "can not", t)
     t = re.sub(r"\bwon't\b", "will not", t)
-    t = re.sub(r"\b(it|that|there|what|who)'s\b", r"\1 is", t)
+    # "it's" is "it is", except before a participle: "it's been on all night" is "it has been"
+    t = re.sub(r"\b(it|that|there|what|who)'s\b(?!\s+(?:been|gone|got|become)\b)", r"\1 is", t)
     t = re.sub(r"\blet's\b", "let us", t)
     t = re.sub(r"'ve\b", " have", t)
     t = re.sub(r"'ll\b", " will", t)
@@ -686,6 +689,7 @@ def normalize(text: str) -> str:
     t = re.sub(r"'s(?=\s+(?:still\s+|just\s+|already\s+)?(?:sat|sitting|lying|stood|standing|in|on|inside)\s)", " is", t)
     t = re.sub(r"'s(?=\s+still\s+(?:been|gone|got)\b)", " has", t)   # "the table's still got ..."
     t = re.sub(r"'s(?=\s+[a-z]{3,}ing\b)", " is", t)   # "the watering can's leaking"
+    t = re.sub(r"'s(?=\s+(?:still|already)\s+[a-z]{3,}ing\b)", " is", t)   # "the porch light's still burning"
     t = re.sub(r"\b(i|we|you)'d\b", r"\1 would", t)
     t = re.sub(r"\b(we|you|they)'re\b", r"\1 are", t)
     t = re.sub(r"\bi'm\b", "i am", t)

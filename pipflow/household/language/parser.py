@@ -32,6 +32,7 @@ from lark.visitors import CollapseAmbiguities
 
 from pipflow.errors import TranslationError
 from pipflow.household.language.builder import Builder
+from pipflow.household.language.conditions import conditions_read
 from pipflow.household.language.fronted import fronted_objects
 from pipflow.household.language.grammar import NOUN_DUAL, base_class, gated_classes, grammar_text
 from pipflow.household.language.lacking import lacking
@@ -65,6 +66,7 @@ def parse(command: str, world: dict, notes: list[str] | None = None) -> list[dic
     refuse_unread(command, MARKS)   # a character this reader does not read is refused, never skipped
     notes = notes if notes is not None else []
     command = owners_as_the(command, world, notes)
+    command = conditions_read(command, world, notes)   # "if the lamp is on, switch it off"
     try:
         return _parse_with_people(command, world, notes)
     except TranslationError as exc:

@@ -22,6 +22,7 @@ from pipflow.language.asides import (FUNCTION_WORDS, OPERATIVE, Clause, clauses,
 from pipflow.language.characters import refuse_unread
 from pipflow.language.english import common_word
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS
+from pipflow.language.radio import transmission
 from pipflow.language.spelling import distance, normalize, plural_forms, slip, tolerance
 from pipflow.warehouse.language.names import KIND_WORDS, POSS_MARK, STOPWORDS, NameIndex, Tok, read_counts, recognize
 from pipflow.warehouse.language.wordorder import left_dislocated, noun_adjuncts, numbered_siblings, unmarked_lists
@@ -591,6 +592,7 @@ class Lexicon:
         #: the same without the English kind words ("bay", "bot"), which are never misspelt
         self._own_name_words = self._name_words - {w for ws in KIND_WORDS.values() for w in ws}
         self.aside: list[str] = []
+        self._robots = {str(r).lower() for r in robots}
         #: numbered places by letters + digits ("dock2" -> dock2, "bay9" of "bay_9" -> bay_9)
         self._numbered_places = {n.alpha + str(int(n.digits)): n.name for n in self.index.names
                                  if n.kind == "shelf" and n.digits}
@@ -785,6 +787,10 @@ class Lexicon:
         sentence with no content (:meth:`content`) is set aside: not returned, its words kept in
         :attr:`aside`; a sentence with some content-free clauses carries its reading without them
         as ``trimmed``. :attr:`tokens` keeps the recognised tokens, :meth:`position` finds one."""
+        radio = transmission(command, self._names_exactly, lambda w: w in self._robots,
+                             lambda w: w.isdigit() or w in NUMBER_WORDS)
+        if radio is not None:   # "Yard control to all units. ... Over.": the voice procedure set aside
+            command = radio.text
         # a time written as one word ("3pm", "10am", "2oclock") is the count and its word, as "3 pm" is
         text = re.sub(r"\b(\d{1,2})(am|pm|oclock)\b", r"\1 \2", self._joined(check_text(command)), flags=re.IGNORECASE)
         toks = noun_adjuncts(unmarked_lists(numbered_siblings(recognize(text, self.index), self._numbered_places)))
@@ -803,8 +809,12 @@ class Lexicon:
         toks, framed = without_request_frames(read_counts(_split_hyphens(fixed, self.keywords)))
         toks = lexicon_verbs(quantity_phrases(addressed_anyone(stative_having(toks)), self.keywords), self.keywords)
         toks = corrected_later(without_particles(corrected(toks)))
-        self._framed = framed
+        self._framed = (radio.aside if radio is not None else []) + framed
         return self._split(toks, stops)
+
+    def _names_exactly(self, word: str) -> bool:
+        """Whether a word is a word of the world's names, a robot kind or tag, as written."""
+        return word in self._name_words or self._group(word) is not None
 
     def stopped(self, stops: frozenset[int]) -> tuple["Lexicon", list[Lexed]]:
         """A copy of this lexicon with the command it lexed last split again with ``stops``
