@@ -111,3 +111,24 @@ def test_a_place_of_the_world_is_no_station() -> None:
         understand("Base to all units. Move 3 crates from quay to shed. Over.", world)
     assert understand("Harbour control to all units. Move 3 crates from quay to base. Over.", world)["goal"] == \
         {"quay": {"crate": 11}, "base": {"crate": 3}}
+
+
+@pytest.mark.parametrize("command, goal, rules", [
+    # "she" for a place, as trades say it
+    ("Move 3 crates from quay to shed and leave the ramp as she is.",
+     {"quay": {"crate": 11}, "shed": {"crate": 5}, "ramp": {"crate": 0, "barrel": 1}}, []),
+    ("Shed wants 12 crates all told.", {"shed": {"crate": 12}}, []),
+    ("Move 3 crates from quay to shed and keep moth well away from the ramp.",
+     {"quay": {"crate": 11}, "shed": {"crate": 5}},
+     [{"never": ["moth"], "from": "ramp"}, {"never": ["moth"], "to": "ramp"}]),
+])
+def test_trade_idioms_read_as_their_plain_words(command: str, goal: dict, rules: list) -> None:
+    got = understand(command, TERMINAL)
+    assert got["goal"] == goal
+    assert (got.get("constraints") or []) == rules
+
+
+def test_she_of_a_person_is_not_read_as_a_place() -> None:
+    """Only "as she is" / "what she has" are idioms of a thing; "she" elsewhere stays unread."""
+    with pytest.raises(TranslationError):
+        understand("Move 3 crates from quay to shed, she has to take them.", TERMINAL)

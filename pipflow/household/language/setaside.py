@@ -191,7 +191,8 @@ def without_asides(command: str, world: dict) -> Trimmed | None:
     parts = clauses(words, CLAUSE_MARKS)
     words, parts, topic = _topic_restated(words, parts, world)
     robots = {str(r).lower() for key in ("robots", "teams") for r in world.get(key) or {}}   # who may be addressed
-    free = [c for c in parts if content_free(_without_times(c.words), content, robot=robots.__contains__)]
+    free = [c for c in parts if content_free(_without_times(c.words), content, content, reports=True,
+                                             robot=robots.__contains__)]
     if len(parts) > 1 and parts[-1] not in free and signature(parts[-2].words, parts[-1].words):
         free.append(parts[-1])   # "Regards, Tom": the writer's name
     own = [c for c in parts if c not in free and speaker_doing(c.words)]

@@ -53,6 +53,11 @@ SPELLINGS = {"shud": "should", "shld": "should", "u": "you", "r": "are", "wont":
 #: spellings of two words run together as said ("outta the shed", "offa the rack"): read as the
 #: two words (the first keeps the text as written, the second has none of its own)
 RUN_TOGETHER = {"outta": ("out", "of"), "outa": ("out", "of"), "offa": ("off", "of"), "hafta": ("have", "to")}
+#: idioms read as the plain words the grammar has: "leave it as she is" ("she" for a place or a
+#: load, as trades say), "all told" (in total), "keep it well away from P" (away from)
+IDIOMS = ((re.compile(r"\b(as|what)\s+she(?=\s+(?:is|was|stands|has)\b|['\u2019]s\b)", re.IGNORECASE), r"\1 it"),
+          (re.compile(r"\ball\s+told\b", re.IGNORECASE), "in total"),
+          (re.compile(r"\bwell\s+(?=away\s+from\b|clear\s+of\b)", re.IGNORECASE), ""))
 #: fillers the grammar still reads when it has a place for them (it tries the keyword first)
 SOFT_FILLERS = {"of", "just", "right", "away", "now", "today", "currently", "moment", "exactly"}
 FRACTIONS = {"third": 3, "thirds": 3, "quarter": 4, "quarters": 4, "fourth": 4, "fourths": 4,
@@ -791,6 +796,8 @@ class Lexicon:
                              lambda w: w.isdigit() or w in NUMBER_WORDS)
         if radio is not None:   # "Yard control to all units. ... Over.": the voice procedure set aside
             command = radio.text
+        for idiom, plain in IDIOMS:
+            command = idiom.sub(plain, command)
         # a time written as one word ("3pm", "10am", "2oclock") is the count and its word, as "3 pm" is
         text = re.sub(r"\b(\d{1,2})(am|pm|oclock)\b", r"\1 \2", self._joined(check_text(command)), flags=re.IGNORECASE)
         toks = noun_adjuncts(unmarked_lists(numbered_siblings(recognize(text, self.index), self._numbered_places)))
