@@ -52,7 +52,7 @@ _DROPPED_G = re.compile(r"\b([A-Za-z]{2,}in)['\u2019](?=[\s.,;:!?]|$)")
 _SPOKEN = ((re.compile(r"(?<![A-Za-z])['\u2019]em\b", re.IGNORECASE), "them"),
            (re.compile(r"\by['\u2019]all\b", re.IGNORECASE), "you all"),
            (re.compile(r"\bain['\u2019]?t(?=\s+(?:got|been|had|done|seen)\b)", re.IGNORECASE), "has not"),
-           (re.compile(r"\bain['\u2019]t\b", re.IGNORECASE), "is not"))
+           (re.compile(r"\bain['\u2019]?t\b", re.IGNORECASE), "is not"))
 
 
 def spoken_forms(text: str) -> str:
