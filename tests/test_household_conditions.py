@@ -99,3 +99,15 @@ def test_spoken_forms_read_in_a_command() -> None:
         {"in": {"pantry": ["teacup", "glass"]}, "state": {"teacup": ["clean"], "glass": ["clean"], "pantry": ["closed"]}}
     # "it's been" is "it has been", and "all night" is how long, no quantity: talk set aside
     assert _goal("Switch the radio off, it's been on all night.") == {"state": {"radio": ["off"]}}
+
+
+@pytest.mark.parametrize("command, goal", [
+    # "on" / "off" opening a clause as its verb (West African, South Asian English)
+    ("On the radio.", {"state": {"radio": ["on"]}}),
+    ("Abeg off the radio, and off the reading light.", {"state": {"radio": ["off"], "reading_light": ["off"]}}),
+    ("If the radio is on, off it.", {"state": {"radio": ["off"]}}),
+    # before a place, "on" / "off" stay where things are
+    ("Put the juice on the worktop.", {"in": {"worktop": ["juice"]}, "state": {"icebox": ["closed"]}}),
+])
+def test_on_and_off_as_verbs_switch_only_what_switches(command: str, goal: dict) -> None:
+    assert _goal(command) == goal

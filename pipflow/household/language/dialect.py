@@ -40,14 +40,7 @@ def cut_as_switch(words: list[str], world: dict, index: dict, notes: list[str]) 
     "off" and then such a thing ("cut off the fan"): a knife is never "cut ... on", and what
     switches is no thing to slice. A thing that does not switch keeps "cut" as slicing."""
     def switches(k: int) -> int:
-        """The index after a phrase at ``k`` naming only things that switch, else 0."""
-        for end in range(min(len(words), k + 5), k, -1):
-            things = index.get(tuple(words[k:end])) or []
-            entries = [(world.get("objects") or {}).get(t["name"]) or (world.get("places") or {}).get(t["name"]) or {}
-                       for t in things if t["kind"] in ("object", "place")]
-            if entries and all("toggleable" in (e.get("properties") or []) for e in entries):
-                return end
-        return 0
+        return _switching_phrase(words, k, world, index)
     out = list(words)
     for k, w in enumerate(words):
         if w != "cut":
@@ -64,3 +57,41 @@ def cut_as_switch(words: list[str], world: dict, index: dict, notes: list[str]) 
             out[k] = "switch"
             notes.append(f"'cut ... {words[end]}' read as 'switch ... {words[end]}' (dialect)")
     return out
+
+
+#: words after which a clause may open with "on" / "off" as its verb
+_OPENERS = set(PUNCT) | {"and", "then", "please", "kindly", "abeg", "biko", "just", "also", "pls"}
+_DETERMINERS = {"the", "that", "this", "my", "those", "these", "all"}
+
+
+def on_off_as_verbs(words: list[str], world: dict, index: dict, notes: list[str]) -> list[str]:
+    """The words with "switch" put before "on" / "off" that open a clause as its verb, as West
+    African and South Asian English say it ("on the corridor light", "abeg off the fan", "off it"):
+    only before a thing that switches (or "it" / "them"), so "on the table" and "off the shelf"
+    stay places."""
+    out: list[str] = []
+    for k, w in enumerate(words):
+        before = out[-1] if out else "."
+        if w in _SWITCH_PARTICLES and before in _OPENERS:
+            j = k + 1
+            while j < len(words) and words[j] in _DETERMINERS:
+                j += 1
+            pronoun = j == k + 1 and words[j:j + 1] in (["it"], ["them"])
+            if pronoun or _switching_phrase(words, j, world, index):
+                out.append("switch")
+                notes.append(f"'{w} {' '.join(words[k + 1:j + 1])}' read as 'switch {w} ...' (dialect)")
+        out.append(w)
+    return out
+
+
+def _switching_phrase(words: list[str], k: int, world: dict, index: dict) -> int:
+    """The index after a phrase at ``k`` that names only things that switch, else 0."""
+    for end in range(min(len(words), k + 5), k, -1):
+        things = index.get(tuple(words[k:end])) or []
+        entries = [(world.get("objects") or {}).get(t["name"]) or (world.get("places") or {}).get(t["name"]) or {}
+                   for t in things if t["kind"] in ("object", "place")]
+        if entries and all("toggleable" in (e.get("properties") or []) for e in entries):
+            return end
+        if things:
+            return 0
+    return 0

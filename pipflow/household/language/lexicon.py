@@ -502,7 +502,7 @@ MASS_NOUNS = {"fruit", "food", "bedding", "cutlery", "stationery", "lighting", "
 INDEFINITE = {"a", "an", "a piece of", "a bit of", "an item of"}
 
 #: politeness and framing words that carry no content; dropped before parsing (listed in docs)
-FILLER = {("please",), ("kindly",), ("just",), ("quickly",), ("now",), ("for", "me"), ("for", "us"), ("could", "you"),
+FILLER = {("please",), ("kindly",), ("abeg",), ("biko",), ("just",), ("quickly",), ("now",), ("for", "me"), ("for", "us"), ("could", "you"),
           ("can", "you"), ("would", "you"), ("will", "you"), ("i", "need", "you", "to"), ("i", "want", "you", "to"),
           ("we", "need", "you", "to"), ("go", "ahead", "and"), ("go", "and"), ("hey",), ("robots",), ("team",),
           ("thanks",), ("thank", "you"), ("right", "away"), ("let", "us"), ("lets",), ("let", "s"),

@@ -12,7 +12,7 @@ from pipflow.errors import TranslationError
 from pipflow.language.asides import FUNCTION_WORDS
 from pipflow.household.language.colloquial import colloquial
 from pipflow.household.language.corrections import corrected
-from pipflow.household.language.dialect import cut_as_switch, them_as_those
+from pipflow.household.language.dialect import cut_as_switch, on_off_as_verbs, them_as_those
 from pipflow.household.language.headwords import named_again
 from pipflow.household.language.grammar import NOUN_DUAL
 from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
@@ -103,7 +103,8 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
     words = or_under_negation(measures(without_manner(colloquial(corrected(words_of(command), notes), notes), notes), index, notes),
                               notes)
     words = heat_purpose(caused(given(me_as_where_the_speaker_is(words, index, notes), notes), notes), notes)
-    words = named_again(them_as_those(cut_as_switch(words, world, index, notes), index, notes), index, notes)
+    words = on_off_as_verbs(cut_as_switch(words, world, index, notes), world, index, notes)
+    words = named_again(them_as_those(words, index, notes), index, notes)
     words = particles(words, lambda x: x.isalpha() and not known_word(x, index, vocab), notes)
     said = list(words)   # as typed: a repair that still names nothing is quoted as typed
     words = repaired(words, index, vocab, notes, world)

@@ -47,7 +47,7 @@ EXACT_WORDS = {"exactly", "precisely"}
 #: chat spellings of keywords
 SPELLINGS = {"shud": "should", "shld": "should", "u": "you", "r": "are", "wont": "wont", "gonna": "will",
              "wanna": "want", "lemme": "let", "cuz": "because", "thru": "through", "frm": "from",
-             "em": "them", "yous": "you", "youse": "you",
+             "em": "them", "yous": "you", "youse": "you", "dun": "dont", "hv": "have",
              # "whatever's on P" typed or transcribed without its apostrophe: its "'s" is "is"
              "whatevers": "whatever"}
 #: spellings of two words run together as said ("outta the shed", "offa the rack"): read as the
@@ -58,6 +58,15 @@ RUN_TOGETHER = {"outta": ("out", "of"), "outa": ("out", "of"), "offa": ("off", "
 IDIOMS = ((re.compile(r"\b(as|what)\s+she(?=\s+(?:is|was|stands|has)\b|['\u2019]s\b)", re.IGNORECASE), r"\1 it"),
           (re.compile(r"\ball\s+told\b", re.IGNORECASE), "in total"),
           (re.compile(r"\bwell\s+(?=away\s+from\b|clear\s+of\b)", re.IGNORECASE), ""))
+#: discourse particles of Singapore and Malaysian English, closing a clause ("add 4 more lah",
+#: "botak off today ah,"): they colour the clause, they say nothing of the order
+PARTICLES = ("lah", "leh", "lor", "hor", "meh", "liao", "sia", "ah")
+_PARTICLE = re.compile(r"\s+(?:" + "|".join(PARTICLES) + r")\b(?=\s*(?:[.,;:!?()]|$))", re.IGNORECASE)
+#: a tag that asks whether the order can be done, closing it ("take 5 off can", "... can or not?",
+#: "... ok?"): it asks nothing more than the order does
+_CAN_TAG = re.compile(r"\s*,?\s+(?:can\s+or\s+not|can|ok|okay)\s*(?:\?+|(?=[.,;:!]|$))", re.IGNORECASE)
+#: "go and shift 6 router ...", "the weakest one go and bring ...": "go and" before a verb adds nothing
+_GO_AND = re.compile(r"\bgo\s+and\s+(?=[a-z])", re.IGNORECASE)
 #: fillers the grammar still reads when it has a place for them (it tries the keyword first)
 SOFT_FILLERS = {"of", "just", "right", "away", "now", "today", "currently", "moment", "exactly"}
 FRACTIONS = {"third": 3, "thirds": 3, "quarter": 4, "quarters": 4, "fourth": 4, "fourths": 4,
@@ -798,6 +807,7 @@ class Lexicon:
             command = radio.text
         for idiom, plain in IDIOMS:
             command = idiom.sub(plain, command)
+        command = self._chat_said_plainly(command)
         # a time written as one word ("3pm", "10am", "2oclock") is the count and its word, as "3 pm" is
         text = re.sub(r"\b(\d{1,2})(am|pm|oclock)\b", r"\1 \2", self._joined(check_text(command)), flags=re.IGNORECASE)
         toks = noun_adjuncts(unmarked_lists(numbered_siblings(recognize(text, self.index), self._numbered_places)))
@@ -818,6 +828,23 @@ class Lexicon:
         toks = corrected_later(without_particles(corrected(toks)))
         self._framed = (radio.aside if radio is not None else []) + framed
         return self._split(toks, stops)
+
+    def _chat_said_plainly(self, command: str) -> str:
+        """Chat forms read as the plain words the grammar has (Singapore English and chat
+        generally): clause-closing particles (:data:`PARTICLES`) and "can" / "ok" / "can or
+        not" tags left out, "go and <verb>" as the verb, "<item> go <place>" as "to <place>",
+        "<place> got" as "has". A word of the world's names is never taken for one ("can" of
+        soup_can, a place called "ok")."""
+        def unless_named(m: re.Match) -> str:
+            return m.group(0) if any(self._names_exactly(w) for w in re.findall(r"[a-z]+", m.group(0).lower())) else ""
+        command = _CAN_TAG.sub(lambda m: "." if "?" in m.group(0) and not unless_named(m) else unless_named(m), command)
+        command = _PARTICLE.sub(unless_named, command)
+        command = _GO_AND.sub("", command)
+        places = "|".join(re.escape(str(p)) for p in sorted(self.world.get("shelves") or {}, key=len, reverse=True))
+        if places:
+            command = re.sub(rf"\bgo\s+(?=(?:the\s+)?(?:{places})\b)", "to ", command, flags=re.IGNORECASE)
+            command = re.sub(rf"\b({places})\s+got\b", r"\1 has", command, flags=re.IGNORECASE)
+        return command
 
     def _names_exactly(self, word: str) -> bool:
         """Whether a word is a word of the world's names, a robot kind or tag, as written."""
