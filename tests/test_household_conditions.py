@@ -111,3 +111,13 @@ def test_spoken_forms_read_in_a_command() -> None:
 ])
 def test_on_and_off_as_verbs_switch_only_what_switches(command: str, goal: dict) -> None:
     assert _goal(command) == goal
+
+
+def test_a_container_switched_on_is_still_closed_again() -> None:
+    """First measurement of pair W: "stick the apple in the oven and turn it on" left the oven's
+    door open, because the goal already said something of the oven (on). Its switch says nothing
+    of its door: a closed container the plan opens is closed again."""
+    gatehouse = load_world(ROOT / "benchmarks" / "language" / "household-gatehouse-world.yaml")   # a switching oven
+    got = translate("Put the carrot in the oven and turn it on.", gatehouse)["goal"]
+    assert got["in"] == {"oven": ["carrot"]}
+    assert sorted(got["state"]["oven"]) == ["closed", "on"]

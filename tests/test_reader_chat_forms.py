@@ -46,3 +46,21 @@ def test_a_particle_inside_a_clause_stays_unread() -> None:
     """Only a particle closing a clause is left out: "ah" inside one must still be placed."""
     with pytest.raises(TranslationError):
         understand("Move ah 3 crates from quay to shed", TERMINAL)
+
+
+def test_a_common_word_is_no_slip_of_a_name_that_is_no_word() -> None:
+    """First measurement of pair W: "Use just the pallet jacks ..." in a world without pallet jacks
+    read "jacks" as a slip of the robot jacu, and the bench executed it. A common English word
+    as written is a slip only of a name that is a word too, spelt another way ("dispatch" of
+    despatch); an uncommon slip ("jaku") still reads as the name."""
+    world = copy.deepcopy(TERMINAL)
+    world["robots"]["jacu"] = world["robots"].pop("wasp")
+    world["shelves"]["despatch"] = world["shelves"].pop("ramp")
+    world["stock"]["despatch"] = world["stock"].pop("ramp")
+    with pytest.raises(TranslationError, match="jacks"):
+        understand("Use just the jacks to move 2 crates from quay to shed", world)
+    for said in ("jacu", "jaku"):
+        got = understand(f"Use only {said} to move 2 crates from quay to shed", world)
+        assert got["constraints"][0]["only"] == ["jacu"]
+    assert understand("Move 2 crates from quay to dispatch", world)["goal"] == \
+        {"quay": {"crate": 12}, "despatch": {"crate": 2}}

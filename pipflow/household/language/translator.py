@@ -49,8 +49,10 @@ def _leave_closed(world: dict, goal: dict) -> None:
         touched.add(heaters[0])
     for p in sorted(touched, key=list(world["places"]).index):
         e = world["places"][p]
-        if "openable" in e["properties"] and not e["state"].get("open") and p not in goal["state"]:
-            goal["state"][p] = ["closed"]
+        said = goal["state"].get(p, [])
+        # "put the apple in the oven and turn it on": its switch says nothing of its door
+        if "openable" in e["properties"] and not e["state"].get("open") and not {"open", "closed"} & set(said):
+            goal["state"][p] = said + ["closed"]
 
 
 #: switch and door conditions: (the state key, the value that makes the condition hold)

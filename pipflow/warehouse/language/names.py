@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from typing import Callable
 
 from pipflow.errors import TranslationError
+from pipflow.language.english import common_word
 from pipflow.language.numbers import NUMBER_WORDS, read_number, word_value
 from pipflow.language.spelling import (distance, normalize, other_spellings, plural_forms, sounded, split_digits,
                                       tolerance, variants)
@@ -446,6 +447,11 @@ class NameIndex:
                 d = min(min(distance(v, n.alpha), distance(sounded(v), sounded(n.alpha))) for v in variants(alpha))
                 if d <= tolerance(min(len(n.alpha), len(alpha))) and alpha[:1] == n.alpha[:1]:
                     scored.append((d, n))
+            if scored and common_word(alpha.lower()):
+                # a common English word as written ("jacks", "forks") is no slip of a name that is
+                # no English word ("jacu"): only of one that is, spelt another way ("dispatch" of
+                # despatch)
+                scored = [(d, n) for d, n in scored if d == 0 or common_word(n.alpha.lower())]
             if scored:
                 best = min(d for d, _ in scored)
                 top = [n for d, n in scored if d == best]
