@@ -121,3 +121,12 @@ def test_a_container_switched_on_is_still_closed_again() -> None:
     got = translate("Put the carrot in the oven and turn it on.", gatehouse)["goal"]
     assert got["in"] == {"oven": ["carrot"]}
     assert sorted(got["state"]["oven"]) == ["closed", "on"]
+
+
+def test_on_before_a_thing_that_switches_and_holds_things_is_a_verb_only_at_the_head() -> None:
+    """A hob switches and holds pans: "..., and on the hob" may say where the thing before goes,
+    so there "on" is no verb (the command is refused, not read as switching the hob on)."""
+    gatehouse = load_world(ROOT / "benchmarks" / "language" / "household-gatehouse-world.yaml")
+    assert translate("On the hob.", gatehouse)["goal"]["state"] == {"hob": ["on"]}
+    with pytest.raises(TranslationError):
+        translate("Put the peas in the saucepan, and on the hob.", gatehouse)

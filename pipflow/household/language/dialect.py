@@ -60,7 +60,9 @@ def cut_as_switch(words: list[str], world: dict, index: dict, notes: list[str]) 
 
 
 #: words after which a clause may open with "on" / "off" as its verb
-_OPENERS = set(PUNCT) | {"and", "then", "please", "kindly", "abeg", "biko", "just", "also", "pls"}
+_POLITE = {"please", "kindly", "abeg", "biko", "pls"}
+_ENDS = {w for w, cls in PUNCT.items() if cls == "END"}
+_OPENERS = set(PUNCT) | _POLITE | {"and", "then", "just", "also"}
 _DETERMINERS = {"the", "that", "this", "my", "those", "these", "all"}
 
 
@@ -77,20 +79,26 @@ def on_off_as_verbs(words: list[str], world: dict, index: dict, notes: list[str]
             while j < len(words) and words[j] in _DETERMINERS:
                 j += 1
             pronoun = j == k + 1 and words[j:j + 1] in (["it"], ["them"])
-            if pronoun or _switching_phrase(words, j, world, index):
+            # a thing that switches and holds things (a hob) after "and" or a comma may be where
+            # the thing before goes ("put the pan in the sink, and on the hob ..."): only at the
+            # head of a sentence or after a "please" is its "on" a verb
+            heading = before in _ENDS or before in _POLITE
+            if pronoun or _switching_phrase(words, j, world, index, receptacles=heading):
                 out.append("switch")
                 notes.append(f"'{w} {' '.join(words[k + 1:j + 1])}' read as 'switch {w} ...' (dialect)")
         out.append(w)
     return out
 
 
-def _switching_phrase(words: list[str], k: int, world: dict, index: dict) -> int:
-    """The index after a phrase at ``k`` that names only things that switch, else 0."""
+def _switching_phrase(words: list[str], k: int, world: dict, index: dict, receptacles: bool = True) -> int:
+    """The index after a phrase at ``k`` that names only things that switch (and hold nothing,
+    unless ``receptacles``), else 0."""
     for end in range(min(len(words), k + 5), k, -1):
         things = index.get(tuple(words[k:end])) or []
         entries = [(world.get("objects") or {}).get(t["name"]) or (world.get("places") or {}).get(t["name"]) or {}
                    for t in things if t["kind"] in ("object", "place")]
-        if entries and all("toggleable" in (e.get("properties") or []) for e in entries):
+        if entries and all("toggleable" in (e.get("properties") or []) and (
+                receptacles or "receptacle" not in (e.get("properties") or [])) for e in entries):
             return end
         if things:
             return 0
