@@ -6,6 +6,9 @@ to a name: "big" to "bin", "boss" to "bots", "left" to "loft", "grease" to "area
 write often as itself is no slip of a name; the test is a frequency list of English as written
 (pyspellchecker's, from subtitles and the web), not a list we keep. The list is loaded on first
 use: a command whose every word is placed never needs it.
+
+Spoken forms whose apostrophe marks what is left out ("burnin'", "'em", "ain't") are written out
+here too (:func:`spoken_forms`): whether "burnin'" is "burning" is whether that is common English.
 """
 from __future__ import annotations
 

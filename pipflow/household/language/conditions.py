@@ -20,6 +20,7 @@ from typing import NamedTuple
 from pipflow.errors import TranslationError
 from pipflow.household.language.lexicon import words_of
 from pipflow.household.language.names import world_phrases
+from pipflow.household.language.restated import AT, BE, DETERMINERS
 
 #: state words of a condition -> (the state key, the value that makes it hold)
 STATES = {"on": ("on", True), "off": ("on", False), "open": ("open", True), "closed": ("open", False),
@@ -31,7 +32,8 @@ STATES = {"on": ("on", True), "off": ("on", False), "open": ("open", True), "clo
 NEEDS = {"on": "toggleable", "open": "openable", "dirty": "washable", "hot": "heatable", "sliced": "sliceable"}
 #: words between the thing and its state that say nothing of it ("is still on", "is already off")
 _HEDGES = {"still", "already", "currently", "now", "left", "been", "switched", "turned"}
-_DETERMINERS = {"the", "my", "that", "this", "your", "our", "his", "her", "their", "them", "those", "these"}
+#: words before a thing's name; "them" too, as dialect says it ("if them socks are dirty")
+_DETERMINERS = DETERMINERS | {"them"}
 _PRONOUNS = {"it", "them"}
 _ENDS = {".", "!", "?", ";"}
 #: how an order on the other branch of the last condition opens
@@ -142,7 +144,7 @@ def _condition(words: list[str], world: dict, before: list[str] | None = None) -
     if found is None:
         return None
     thing_words, name, k = found
-    if words[k:k + 1] not in (["is"], ["are"]):
+    if not words[k:k + 1] or words[k] not in BE:
         return None
     k += 1
     while k < len(words) and words[k] in _HEDGES:
@@ -156,7 +158,7 @@ def _condition(words: list[str], world: dict, before: list[str] | None = None) -
             return None   # "if the cup is on": a state it cannot be in is no condition read here
         holds = bool((entry.get("state") or {}).get(key, False)) == value
         k += 1
-    elif words[k:k + 1] in (["in"], ["on"], ["inside"]) and name in (world.get("objects") or {}):
+    elif words[k:k + 1] and words[k] in AT and name in (world.get("objects") or {}):
         place = _thing(words, k + 2 if words[k + 1:k + 2] and words[k + 1] in _DETERMINERS else k + 1, world)
         if place is None or place[1] not in (world.get("places") or {}):
             return None

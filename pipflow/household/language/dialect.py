@@ -4,6 +4,7 @@ demonstrative "those" ("them tea things want washing", northern and Scots Englis
 what was read so."""
 from __future__ import annotations
 
+from pipflow.household.language.restated import DETERMINERS
 from pipflow.household.language.tokens import PUNCT
 
 #: verbs that take two objects ("bring them tea", "get them cups": for them): after one, "them"
@@ -28,6 +29,8 @@ def them_as_those(words: list[str], index: dict, notes: list[str]) -> list[str]:
     return out
 
 
+#: words before the name of a thing that switches ("off all the lights")
+_DETERMINERS = DETERMINERS | {"all"}
 #: the particles that make "cut" a switch ("cut the light off", "cut on the fan": American South)
 _SWITCH_PARTICLES = {"on", "off"}
 #: what may follow "cut X on" for it to be a switch: the clause ends there
@@ -39,31 +42,34 @@ def cut_as_switch(words: list[str], world: dict, index: dict, notes: list[str]) 
     then "on" or "off" follow it ("cut that kitchen light off", "cut it on first"), or "on" /
     "off" and then such a thing ("cut off the fan"): a knife is never "cut ... on", and what
     switches is no thing to slice. A thing that does not switch keeps "cut" as slicing."""
-    def switches(k: int) -> int:
-        return _switching_phrase(words, k, world, index)
     out = list(words)
     for k, w in enumerate(words):
-        if w != "cut":
+        if w != "cut" or k + 1 >= len(words):
             continue
-        j = k + 1 + (words[k + 1:k + 2] in (["the"], ["that"], ["this"], ["my"], ["those"], ["them"]))
-        if words[k + 1:k + 2] and words[k + 1] in _SWITCH_PARTICLES:   # "cut off the fan"
-            j = k + 2 + (words[k + 2:k + 3] in (["the"], ["that"], ["my"], ["all"]))
-            end = switches(j) and k + 1
+        if words[k + 1] in _SWITCH_PARTICLES:   # "cut off the fan"
+            particle = k + 1 if _switching_phrase(words, _after_determiners(words, k + 2), world, index) else 0
         else:   # "cut the light off", "cut it on": the particle ends the clause ("cut it on the board" slices)
-            end = k + 2 if words[k + 1:k + 2] in (["it"], ["them"]) else switches(j)
-            if end and words[end + 1:end + 2] and words[end + 1] not in _CLAUSE_END:
-                end = 0
-        if end and words[end:end + 1] and words[end] in _SWITCH_PARTICLES:
+            end = k + 2 if words[k + 1] in ("it", "them") else \
+                _switching_phrase(words, _after_determiners(words, k + 1), world, index)
+            ends_clause = end + 1 >= len(words) or words[end + 1] in _CLAUSE_END
+            particle = end if end and words[end:end + 1] and words[end] in _SWITCH_PARTICLES and ends_clause else 0
+        if particle:
             out[k] = "switch"
-            notes.append(f"'cut ... {words[end]}' read as 'switch ... {words[end]}' (dialect)")
+            notes.append(f"'cut ... {words[particle]}' read as 'switch ... {words[particle]}' (dialect)")
     return out
+
+
+def _after_determiners(words: list[str], k: int) -> int:
+    """The index of the first word at or after ``k`` that is no determiner ("the", "that", "all")."""
+    while k < len(words) and words[k] in _DETERMINERS:
+        k += 1
+    return k
 
 
 #: words after which a clause may open with "on" / "off" as its verb
 _POLITE = {"please", "kindly", "abeg", "biko", "pls"}
 _ENDS = {w for w, cls in PUNCT.items() if cls == "END"}
 _OPENERS = set(PUNCT) | _POLITE | {"and", "then", "just", "also"}
-_DETERMINERS = {"the", "that", "this", "my", "those", "these", "all"}
 
 
 def on_off_as_verbs(words: list[str], world: dict, index: dict, notes: list[str]) -> list[str]:
@@ -75,9 +81,7 @@ def on_off_as_verbs(words: list[str], world: dict, index: dict, notes: list[str]
     for k, w in enumerate(words):
         before = out[-1] if out else "."
         if w in _SWITCH_PARTICLES and before in _OPENERS:
-            j = k + 1
-            while j < len(words) and words[j] in _DETERMINERS:
-                j += 1
+            j = _after_determiners(words, k + 1)
             pronoun = j == k + 1 and words[j:j + 1] in (["it"], ["them"])
             # a thing that switches and holds things (a hob) after "and" or a comma may be where
             # the thing before goes ("put the pan in the sink, and on the hob ..."): only at the

@@ -607,6 +607,9 @@ class Lexicon:
         self._own_name_words = self._name_words - {w for ws in KIND_WORDS.values() for w in ws}
         self.aside: list[str] = []
         self._robots = {str(r).lower() for r in robots}
+        #: the places, as a pattern, for the chat forms that name one (:meth:`_chat_said_plainly`)
+        shelves = sorted(map(str, world.get("shelves") or {}), key=len, reverse=True)
+        self._places = "|".join(map(re.escape, shelves)) or None
         #: numbered places by letters + digits ("dock2" -> dock2, "bay9" of "bay_9" -> bay_9)
         self._numbered_places = {n.alpha + str(int(n.digits)): n.name for n in self.index.names
                                  if n.kind == "shelf" and n.digits}
@@ -832,18 +835,18 @@ class Lexicon:
     def _chat_said_plainly(self, command: str) -> str:
         """Chat forms read as the plain words the grammar has (Singapore English and chat
         generally): clause-closing particles (:data:`PARTICLES`) and "can" / "ok" / "can or
-        not" tags left out, "go and <verb>" as the verb, "<item> go <place>" as "to <place>",
-        "<place> got" as "has". A word of the world's names is never taken for one ("can" of
-        soup_can, a place called "ok")."""
-        def unless_named(m: re.Match) -> str:
-            return m.group(0) if any(self._names_exactly(w) for w in re.findall(r"[a-z]+", m.group(0).lower())) else ""
-        command = _CAN_TAG.sub(lambda m: "." if "?" in m.group(0) and not unless_named(m) else unless_named(m), command)
-        command = _PARTICLE.sub(unless_named, command)
+        not" tags left out (a tag asked with "?" ends the sentence), "go and <verb>" as the verb,
+        "<item> go <place>" as "to <place>", "<place> got" as "has". A word of the world's names
+        is never taken for a particle or a tag ("can" of soup_can, a place called "ok")."""
+        def left_out(m: re.Match) -> str:
+            if any(self._names_exactly(w) for w in re.findall(r"[a-z]+", m.group(0).lower())):
+                return m.group(0)
+            return "." if "?" in m.group(0) else ""
+        command = _PARTICLE.sub(left_out, _CAN_TAG.sub(left_out, command))
         command = _GO_AND.sub("", command)
-        places = "|".join(re.escape(str(p)) for p in sorted(self.world.get("shelves") or {}, key=len, reverse=True))
-        if places:
-            command = re.sub(rf"\bgo\s+(?=(?:the\s+)?(?:{places})\b)", "to ", command, flags=re.IGNORECASE)
-            command = re.sub(rf"\b({places})\s+got\b", r"\1 has", command, flags=re.IGNORECASE)
+        if self._places is not None:
+            command = re.sub(rf"\bgo\s+(?=(?:the\s+)?(?:{self._places})\b)", "to ", command, flags=re.IGNORECASE)
+            command = re.sub(rf"\b({self._places})\s+got\b", r"\1 has", command, flags=re.IGNORECASE)
         return command
 
     def _names_exactly(self, word: str) -> bool:
