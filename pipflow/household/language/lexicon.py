@@ -115,6 +115,8 @@ _add("V_CHILL", "chill,cool,refrigerate,cool down,chill down")
 _add("TOGGLED", "turned,switched,powered")
 #: verbs that mean "off" by themselves ("shut down the tablet"); "turn down" is a volume, not here
 _add("V_SHUTDOWN", "shut down,power down", "off")
+#: "close over the bread bin" (Irish and Scots English): closed, as "close" is
+_add("V_STATE", "close over,shut over", "closed")
 #: "give the pot a scrub": the noun of an action that cleans (value: the condition)
 _add("V_GIVE", "give")
 _add("ACT", "a scrub,a wash,a rinse,a wipe,a clean,a good scrub,a good wash,a good clean,a quick rinse,"
@@ -509,6 +511,8 @@ FILLER = {("please",), ("kindly",), ("abeg",), ("biko",), ("just",), ("quickly",
           ("for", "me", "please"), ("me",), ("ok",), ("okay",), ("already",), ("again",),
           ("can", "someone"), ("could", "someone"), ("someone",), ("somebody",), ("can", "somebody"),
           ("us",), ("would", "you", "mind"), ("do", "you", "mind"), ("would", "you", "please"),
+          # Hiberno-English "would you ever ...": a request, as "would you" is
+          ("would", "you", "ever"),
           ("could", "you", "please"), ("if", "you", "would"), ("if", "you", "could"),
           ("do", "not", "forget", "to"), ("remember", "to"), ("make", "sure", "to"), ("you", "can"),
           ("pls",), ("plz",), ("plse",), ("thx",), ("ta",), ("cheers",),
@@ -550,6 +554,12 @@ TIME_WORDS = {("all", "night"), ("all", "day"), ("all", "evening"), ("all", "mor
               ("today",),
               # where the speaker is ("don't leave anything running down here"): the whole home
               ("down", "here"), ("up", "here")}
+#: "since" a time of day, a meal or a day ("it's been sitting in the sink since the morning",
+#: "there's grease on it since Sunday"): when it began, which says nothing of how the home should end
+SINCE_TIMES = ("morning", "afternoon", "evening", "breakfast", "lunch", "dinner", "tea", "supper", "weekend",
+               "monday", "tuesday", "wednesday", "thursday", "friday", "saturday", "sunday")
+TIME_WORDS |= {("since", w) for w in SINCE_TIMES} | {("since", "the", w) for w in SINCE_TIMES} \
+    | {("since", "last", w) for w in SINCE_TIMES + ("week", "night")}
 FILLER |= TIME_WORDS
 #: how the steps are to be run, not what the home should end like: a goal is the end state, and
 #: the planner and the allocator decide the order and what runs in parallel. A clause made only of

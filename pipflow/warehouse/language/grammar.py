@@ -170,7 +170,7 @@ setv: "has" "got" | "have" "got" | "has" | "have" | "hold" | "holds" | "store" |
     | "contains" | "get" | "gets" | "keep" | "keeps" | "carry" | "carries" | "house" | "houses"
     | "need" | "needs" | "receive" | "receives" | "end" "up" "with" | "be" "stocked" "with"
     | "ends" "up" "with" | "ends" "with" | "end" "up" "holding" | "ends" "up" "holding"
-    | ("end" | "ends" | "finish" | "finishes") "shift" "with"
+    | ("end" | "ends" | "finish" | "finishes") "shift" "with" | "finish" "with" | "finishes" "with"
     | "be" "filled" "with" | "be" "loaded" "with" | "hold" "onto" | "be" "holding" | "is" "holding"
     | "end" "with" | "want" | "wants" | "be" "left" "with" | "be" ("sitting" | "standing")? "at" | "is" "at" | "are" "at"
 putv: "put" | PLACE_VERB | "store" | "stock" | "set" | "leave" | "get" | "keep" | "park"
@@ -239,7 +239,11 @@ goal: there_be items loc                                  -> g_set
     | ("make" | "have") ihead loc? ("equal" "to" | "be" | "equal" | "total") NUM loc? -> g_item_first
     | refill places ("so" that? | "until") ("it" | "they") setv items -> g_place_set
     | refill places "to" items                                -> g_place_set
-    | ("bring" | "take" | "top" "up" | "top" | "raise" | "fill" | "get" | "lower" | "cut") places ("up" | "down")? "to" items -> g_place_set
+    | ("bring" | "take" | "top" "up" | "top" | "raise" | "fill" | "get" | "lower" | "cut" | "bump" | "drop" | "knock"
+       | "push" | "boost" | "pull" | "run") places ("up" | "down")? "to" items -> g_place_set
+    // "picking needs topping up to 10 chains", "the cage wants bringing down to 4 packs"
+    | places ("needs" | "need" | "wants" | "want") ("topping" | "bringing" | "filling" | "taking" | "getting"
+       | "bumping") ("up" | "down")? "to" items -> g_place_set
     | ("can" | "could") places setv items                   -> g_place_set
     | emptyv pitems ("into" | "onto" | "to") places          -> g_transfer_src
     | want items go from places to places                   -> g_transfer
@@ -454,7 +458,9 @@ emptyv: "empty" | "clear" | "clean" "out" | "clear" "out" | "empty" "out"
 emptied: "empty" | "emptied" | "cleared" | "vacant" | "cleaned" "out" | "emptied" "out" | "cleared" "out"
 // "fill P up with X (as) far as it'll go / as much as it takes / as much as will fit": to capacity
 as_far: ","? ("as"? "far" "as" (("it" | "they") ("will" | "can")? | "itll" | "theyll") ("go" | "goes")
-        | "as" "much" "as" ("it" "takes" | "will" "fit" | "fits" | "it" ("will" | "can") "take" | "it" "holds"))
+        | "as" "much" "as" ("it" "takes" | "will" "fit" | "fits" | "it" ("will" | "can") "take" | "it" "holds")
+        // "fill P with X up to the top", "... until top", "... to the brim", "... till full"
+        | "up"? ("to" | "until" | "till") ("top" | "brim" | "capacity" | "full" | "it" ("is" | "s") "full"))
 as_is: "where" ("it" | "they") ("is" | "are") | ("as" | "how") ("it" | "they") ("is" | "are") | "alone" | "as" "is" | "be"
      | "unchanged" | "untouched"
      | "untouched" | "unchanged" | "as" "is" | "way" ("it" | "they") ("is" | "are" | "was" | "were") | "as" ("it" | "they") ("was" | "were")
@@ -661,6 +667,8 @@ scoped_goal: ("using" | "with" | "by") ("only" | "just")? robots ","? goal    ->
            | goal ("using" | "with" | "by") ("only" | "just")? robots           -> scoped_only_after
            | goal ("using" | "with" | "by") robots ("only" | "alone")             -> scoped_only_after
            | goal ("without" ("using" | "help" "of")? | "but" "not" "with" | "not" "using") robots -> scoped_never_after
+           // "move 3 saddles to P, but not jacu", "..., not jacu though": the move without that robot
+           | goal ","? "but"? "not" robots "though"?                 -> scoped_never_after
 
 // the word "place" has a terminal of its own: written as a string it would be named PLACE by lark,
 // the terminal of a world's place, and any place's name would then read as the verb ("rack A 4

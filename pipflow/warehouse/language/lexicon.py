@@ -47,7 +47,7 @@ EXACT_WORDS = {"exactly", "precisely"}
 #: chat spellings of keywords
 SPELLINGS = {"shud": "should", "shld": "should", "u": "you", "r": "are", "wont": "wont", "gonna": "will",
              "wanna": "want", "lemme": "let", "cuz": "because", "thru": "through", "frm": "from",
-             "em": "them", "yous": "you", "youse": "you", "dun": "dont", "hv": "have",
+             "em": "them", "yous": "you", "youse": "you", "ya": "you", "yer": "your", "dun": "dont", "hv": "have",
              # "whatever's on P" typed or transcribed without its apostrophe: its "'s" is "is"
              "whatevers": "whatever"}
 #: spellings of two words run together as said ("outta the shed", "offa the rack"): read as the
@@ -58,6 +58,18 @@ RUN_TOGETHER = {"outta": ("out", "of"), "outa": ("out", "of"), "offa": ("off", "
 IDIOMS = ((re.compile(r"\b(as|what)\s+she(?=\s+(?:is|was|stands|has)\b|['\u2019]s\b)", re.IGNORECASE), r"\1 it"),
           (re.compile(r"\ball\s+told\b", re.IGNORECASE), "in total"),
           (re.compile(r"\bwell\s+(?=away\s+from\b|clear\s+of\b)", re.IGNORECASE), ""))
+_NUMBER = r"(?:\d+|" + "|".join(sorted(NUMBER_WORDS, key=len, reverse=True)) + r")\b"
+#: the order of words of a speaker whose first language puts them so (Portuguese and Spanish
+#: "mais 4", "mais de 4", "o dobro de", "longe de"), read as English puts them: "add more 4 tubes"
+#: is "add 4 more tubes", "no more of 4" is "no more than 4", "the double of the saddles" is
+#: "double the saddles", "stay away of P" is "stay away from P". Each reads a number or a place
+#: word after it as before: nothing here adds a count or a name.
+WORD_ORDER = ((re.compile(rf"\bmore\s+({_NUMBER})(?!\s*(?:than|%|percent))", re.IGNORECASE), r"\1 more"),
+              (re.compile(rf"\b(more|less|fewer)\s+of\s+(?={_NUMBER})", re.IGNORECASE), r"\1 than "),
+              (re.compile(r"\b(?:the\s+)?(double|triple)\s+of\b", re.IGNORECASE), r"\1"),
+              (re.compile(r"\baway\s+of\b", re.IGNORECASE), "away from"),
+              # "fill P up to the top": the article of "the top" / "the brim" says nothing
+              (re.compile(r"\b(to|until|till)\s+the\s+(top|brim)\b", re.IGNORECASE), r"\1 \2"))
 #: discourse particles of Singapore and Malaysian English, closing a clause ("add 4 more lah",
 #: "botak off today ah,"): they colour the clause, they say nothing of the order
 PARTICLES = ("lah", "leh", "lor", "hor", "meh", "liao", "sia", "ah")
@@ -193,9 +205,10 @@ VERB_LEXICON: dict[str, tuple[str, str]] = {
     # placing
     "stow": ("place", "put"), "stash": ("place", "put"), "slot": ("place", "put"), "set down": ("place", "put"),
     "lay": ("place", "put"), "plonk": ("place", "put"), "shelve": ("place", "put"), "bung": ("place", "put"),
+    "whack": ("place", "put"), "slap": ("place", "put"),
     # moving (and the grammar's own: move, bring, send, ship, transfer, carry, haul, shift, cart,
     # ferry, tow, lug, shuttle, wheel, relocate, deliver, stage, restage, fetch, dispatch, bring over, move over)
-    "shove": ("move", "move"), "chuck": ("move", "toss"), "sling": ("move", "toss"), "drag": ("move", "move"), "move across": ("move", "move"),
+    "shove": ("move", "move"), "chuck": ("move", "toss"), "sling": ("move", "toss"), "lob": ("move", "toss"), "drag": ("move", "move"), "move across": ("move", "move"),
     "send across": ("move", "send"), "carry over": ("move", "carry"), "bring across": ("move", "bring"),
     # removing (and the grammar's own: remove, unload, withdraw, take away, get rid of, dispose of, throw out)
     "offload": ("remove", "unload"), "off-load": ("remove", "unload"), "pull off": ("remove", "take"),
@@ -419,6 +432,30 @@ def without_particles(toks: list[Tok]) -> list[Tok]:
                     and nxt.of == "shelf"):
                 continue
         out.append(t)
+    return out
+
+
+#: grammar verbs that put what was taken somewhere (the verb lexicon's words are read as these)
+_PUTTING = frozenset({"put", "drop", "stick", "pop", "leave", "stack", "dump", "load", "toss", "bring", "take",
+                      "move", "send", "shift", "carry", "throw", "stock", "store", "park"})
+
+
+def dropped_object(toks: list[Tok]) -> list[Tok]:
+    """ "take 4 chains from P and put in Q": a putting verb that opens a clause joined by "and" /
+    "then" and has a place right after its preposition, but no object, after a clause that
+    counted something. Its object is what was taken, as if said "put them"; "them" then finds
+    what it stands for as it always does (and is refused where it finds nothing)."""
+    out: list[Tok] = []
+    for k, t in enumerate(toks):
+        out.append(t)
+        if not (t.kind == "word" and t.value in _PUTTING and k > 1 and k + 2 < len(toks)):
+            continue
+        joined = toks[k - 1].value in ("and", "then")
+        prep = toks[k + 1]
+        place = toks[k + 3] if toks[k + 2].value == "the" and k + 3 < len(toks) else toks[k + 2]
+        if (joined and prep.kind == "word" and prep.value in _PLACE_PREPOSITIONS - {"from", "off"}
+                and place.kind == "name" and place.of == "shelf" and any(x.kind == "num" for x in toks[:k])):
+            out.append(Tok("word", "", "them"))
     return out
 
 
@@ -808,7 +845,7 @@ class Lexicon:
                              lambda w: w.isdigit() or w in NUMBER_WORDS)
         if radio is not None:   # "Yard control to all units. ... Over.": the voice procedure set aside
             command = radio.text
-        for idiom, plain in IDIOMS:
+        for idiom, plain in IDIOMS + WORD_ORDER:
             command = idiom.sub(plain, command)
         command = self._chat_said_plainly(command)
         # a time written as one word ("3pm", "10am", "2oclock") is the count and its word, as "3 pm" is
@@ -828,7 +865,7 @@ class Lexicon:
             fixed.append(t)
         toks, framed = without_request_frames(read_counts(_split_hyphens(fixed, self.keywords)))
         toks = lexicon_verbs(quantity_phrases(addressed_anyone(stative_having(toks)), self.keywords), self.keywords)
-        toks = corrected_later(without_particles(corrected(toks)))
+        toks = dropped_object(corrected_later(without_particles(corrected(toks))))
         self._framed = (radio.aside if radio is not None else []) + framed
         return self._split(toks, stops)
 

@@ -20,17 +20,26 @@ MAX_REPAIRS = 3
 #: words a speech recogniser writes for a number word said aloud ("send ate reams", "add won more",
 #: "move for zips"): offered as that number where the word is one no rule places, never read so
 HOMOPHONES = {"ate": "eight", "won": "one", "for": "four", "fore": "four", "to": "two", "too": "two"}
+#: prepositions people put for one another, in a second language above all ("take 4 of the
+#: mezzanine" for from, "bring 2 from returns for picking" for to, "divide them for P and Q" for
+#: between): where a preposition is the word no rule places, the command read with each of these
+#: in its place is offered, most likely first (never acted on unchosen)
+PREPOSITION_SWAPS = {"of": ("from", "on", "in"), "for": ("to", "between", "on"), "in": ("into", "on", "at"),
+                     "on": ("in", "to", "onto"), "at": ("on", "in", "to"), "to": ("on", "in", "from"),
+                     "from": ("of", "off", "on"), "into": ("to", "in"), "onto": ("to", "on"), "with": ("to", "of")}
 
 
 def near_words(word: str, lex: Lexicon) -> list[str]:
     """Grammar words, number words and words of the world's names within one edit of ``word``
     (a swap of neighbours is one edit), or two for words of five letters or more that keep
-    their first letter; nearest first; a number word it sounds like first (:data:`HOMOPHONES`).
+    their first letter; nearest first; a number word it sounds like first (:data:`HOMOPHONES`),
+    then the prepositions put for it (:data:`PREPOSITION_SWAPS`).
     None for a word of fewer than three letters, a number or a name of several words."""
     low = word.lower()
     sounds = [HOMOPHONES[low]] if low in HOMOPHONES else []
-    if len(low) < 3 or not low.isalpha():
-        return sounds
+    sounds += PREPOSITION_SWAPS.get(low, ())
+    if len(low) < 3 or not low.isalpha() or low in PREPOSITION_SWAPS:
+        return sounds[:MAX_REPAIRS]
     # a word of a name that the reader does not read alone: shared by several names ("white" of
     # white_case and white_keg: each offered), or a product's modifier ("oil" of oil-filter)
     index = lex.index
