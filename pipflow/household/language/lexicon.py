@@ -513,6 +513,11 @@ FILLER = {("please",), ("kindly",), ("abeg",), ("biko",), ("just",), ("quickly",
           ("us",), ("would", "you", "mind"), ("do", "you", "mind"), ("would", "you", "please"),
           # Hiberno-English "would you ever ...": a request, as "would you" is
           ("would", "you", "ever"),
+          # Indian English: "do one thing, ..." opens a request, "..., na?" closes one, "what to
+          # do" sighs; "on the dining table itself" stresses the place it follows
+          ("do", "one", "thing"), ("na",), ("what", "to", "do"), ("itself",),
+          # how a step is done, not how the home should end ("wash it nicely", "close it properly")
+          ("nicely",), ("properly",), ("carefully",), ("gently",), ("thoroughly",), ("neatly",),
           ("could", "you", "please"), ("if", "you", "would"), ("if", "you", "could"),
           ("do", "not", "forget", "to"), ("remember", "to"), ("make", "sure", "to"), ("you", "can"),
           ("pls",), ("plz",), ("plse",), ("thx",), ("ta",), ("cheers",),
@@ -550,7 +555,7 @@ TIME_WORDS = {("all", "night"), ("all", "day"), ("all", "evening"), ("all", "mor
               ("all", "week"), ("for", "hours"), ("for", "ages"), ("for", "days"), ("last", "night"),
               ("yesterday",), ("this", "morning"), ("earlier",), ("since", "yesterday"), ("since", "breakfast"),
               ("since", "lunch"), ("since", "dinner"), ("overnight",), ("later", "on"),
-              ("from", "last", "night"), ("since", "last", "night"), ("this", "evening"), ("this", "afternoon"),
+              ("from", "last", "night"), ("since", "last", "night"), ("from", "yesterday"), ("this", "evening"), ("this", "afternoon"),
               ("today",),
               # where the speaker is ("don't leave anything running down here"): the whole home
               ("down", "here"), ("up", "here")}

@@ -69,13 +69,34 @@ WISH_VERBS = {"need", "want", "like", "have", "take", "be", "wish", "prefer", "l
 USE_LINKS = {"with", "for", "at", "in", "by"}
 
 
+#: who else may be said to be about to do something ("she'll make the sabzi after her class", "my
+#: wife will cook later", "madam will make bhurji"): what another person will do is no order for
+#: the robots. "they" is left out: it is as often the robots, or things
+OTHER_PEOPLE = {"he", "she"}
+FAMILY = {"wife", "husband", "son", "daughter", "mum", "mom", "mother", "dad", "father", "sister", "brother",
+          "maid", "madam", "grandson", "granddaughter", "neighbour", "neighbor"}
+#: how such a clause goes on after its subject
+OTHERS_OPENERS = (("will",), ("shall",), ("is", "going", "to"), ("is", "about", "to"))
+
+
+def _other_person(words: tuple[str, ...]) -> int:
+    """How many words of a clause's opening name another person (:data:`OTHER_PEOPLE`, "my
+    wife", "madam"), 0 if none."""
+    if words[:1] and (words[0] in OTHER_PEOPLE or words[0] in FAMILY):
+        return 1
+    return 2 if len(words) > 1 and words[0] in ("my", "our", "the") and words[1] in FAMILY else 0
+
+
 def speaker_doing(words: tuple[str, ...]) -> bool:
-    """Whether a clause says what the speaker will do ("I'll grab the milk myself"): it opens with
+    """Whether a clause says what the speaker, or another person (:data:`OTHERS_OPENERS`), will
+    do ("I'll grab the milk myself", "she'll make the sabzi later"): it opens with
     :data:`SPEAKER_OPENERS`, its verb is no wish (:data:`WISH_VERBS`) and it has no negation or
     exclusivity ("I'll not ...", "I'll only ..."), which would bear on what the robots do. A wish
     verb taking a pronoun and then how or when the speaker uses it ("I'll have it with my tea",
     "we'll have them for supper") is the speaker's doing too: "it" is what the order is about."""
-    for opener in SPEAKER_OPENERS + PURPOSE_OPENERS:
+    who = _other_person(words)
+    openers = [tuple(words[:who]) + o for o in OTHERS_OPENERS] if who else []
+    for opener in list(SPEAKER_OPENERS + PURPOSE_OPENERS) + openers:
         if words[:len(opener)] == opener and len(words) > len(opener):
             rest = words[len(opener):]
             if any(w in NEGATION or w in EXCLUSIVITY for w in rest):

@@ -173,6 +173,7 @@ def parse_reading(command: str, world: dict, picks: dict | None = None) -> dict:
     statements = emptied_last(statements)
     set_aside = lex.aside + set_aside
     return {"command": command, "statements": statements, "rules": rules,
+            **({"corrected": list(lex.corrected)} if lex.corrected else {}),
             **({"set_aside": set_aside} if set_aside else {}), **({"unread": unread} if unread else {})}
 
 

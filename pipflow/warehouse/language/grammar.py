@@ -298,6 +298,8 @@ goal: there_be items loc                                  -> g_set
     | posplace ihead (":" | ",")? ("make" | "set") ("it" | "them" | "that") ("to" | "at")? NUM -> g_poss_make
     | removev pitems ("out" | "away" | "off")?             -> g_remove_src
     | places modal? setv items "too" "many"                  -> g_too_many
+    // "bunker has 4 malt too many, pull them off": the removal said again
+    | places modal? setv items "too" "many" ","? ("so" | "and")? removev ("them" | "those" | "it") ("off" | "out" | "away")? -> g_too_many
     | places place_appos? modal? "lose" items                -> g_lose
     | places ("is" | "are") ("short" ("by" | "of")? items | items "short" | "missing" items)  -> g_short
     | places ("is" | "are") ("over" "by" items | items "over")            -> g_too_many
@@ -611,6 +613,7 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | ("only" | "just") robots "to" "be" ("used" | "involved" | "employed" | "assigned") rscope -> rule_only
     | robots (("is" | "are") "not" | "isnt" | "arent") "to" act rscope -> rule_never
     | robots modal? ("stay" | "keep") ("away" | "clear") from places -> rule_away
+    | robots modal? ("stay" | "keep" | "keeps" | "stays") ("off" | "out" "of") places -> rule_away
     | ("keep" | "leave") robots ("away" | "clear") from places -> rule_away
     | ("keep" | "leave") robots ("out" "of" | "off") places  -> rule_away
     | ("keep" | "leave") robots state                        -> rule_state

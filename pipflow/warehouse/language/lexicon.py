@@ -19,6 +19,7 @@ from lark import Token
 from pipflow.errors import InputError, Refusal, TranslationError
 from pipflow.language.asides import (FUNCTION_WORDS, OPERATIVE, Clause, clauses, content_free, is_opener, leading_reason,
                                      said_talk, signature, trailing_adjunct, trailing_thanks, unmarked_statement)
+from pipflow.language.asterisk import star_corrections
 from pipflow.language.characters import refuse_unread
 from pipflow.language.english import common_word
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS
@@ -32,7 +33,7 @@ MAX_COMMAND_CHARS = 4000
 #: digits in one count; a shelf never holds a trillion units, and huge numbers are a typo or an attack
 MAX_DIGITS = 9
 #: words that carry no meaning of their own in a command
-FILLERS = {"the", "please", "kindly", "units", "unit", "pieces", "piece", "boxes", "box", "crates",
+FILLERS = {"the", "please", "kindly", "units", "unit", "pieces", "piece", "boxes", "box", "crates", "oi", "oy",
            "crate", "cases", "case", "pcs", "pallets", "pallet", "x", "exactly", "precisely",
            "actually", "really", "hey", "um", "uh", "ok,", "just", "right", "away", "quickly",
            "now", "today", "currently", "sku", "skus", "of", "moment", "pls", "plz", "asap", "thx",
@@ -47,9 +48,12 @@ EXACT_WORDS = {"exactly", "precisely"}
 #: chat spellings of keywords
 SPELLINGS = {"shud": "should", "shld": "should", "u": "you", "r": "are", "wont": "wont", "gonna": "will",
              "wanna": "want", "lemme": "let", "cuz": "because", "thru": "through", "frm": "from",
-             "em": "them", "yous": "you", "youse": "you", "ya": "you", "yer": "your", "dun": "dont", "hv": "have",
+             "em": "them", "yous": "you", "youse": "you", "ya": "you", "yer": "your", "atm": "now", "dun": "dont", "hv": "have",
              # "whatever's on P" typed or transcribed without its apostrophe: its "'s" is "is"
              "whatevers": "whatever"}
+#: texting's one-letter words, as typed in lower case ("mezz n dock", "end up w a dozen"); a capital
+#: "N" or "W" is more often north or west ("N cage"), and is left alone
+LETTER_WORDS = {"n": "and", "w": "with"}
 #: spellings of two words run together as said ("outta the shed", "offa the rack"): read as the
 #: two words (the first keeps the text as written, the second has none of its own)
 RUN_TOGETHER = {"outta": ("out", "of"), "outa": ("out", "of"), "offa": ("off", "of"), "hafta": ("have", "to")}
@@ -57,7 +61,11 @@ RUN_TOGETHER = {"outta": ("out", "of"), "outa": ("out", "of"), "offa": ("off", "
 #: load, as trades say), "all told" (in total), "keep it well away from P" (away from)
 IDIOMS = ((re.compile(r"\b(as|what)\s+she(?=\s+(?:is|was|stands|has)\b|['\u2019]s\b)", re.IGNORECASE), r"\1 it"),
           (re.compile(r"\ball\s+told\b", re.IGNORECASE), "in total"),
-          (re.compile(r"\bwell\s+(?=away\s+from\b|clear\s+of\b)", re.IGNORECASE), ""))
+          (re.compile(r"\bwell\s+(?=away\s+from\b|clear\s+of\b)", re.IGNORECASE), ""),
+          # "can one of yous shift ...": anyone of the team, as "can someone" is
+          (re.compile(r"\bone\s+of\s+(?:you|yous|youse|ya|you\s+guys|you\s+lot)\b", re.IGNORECASE), "someone"),
+          # "..., no worries", "no rush": a pleasantry; what follows it is read as ever
+          (re.compile(r"\bno\s+(?:worries|worry|wukkas|rush|hurry|stress|probs|problem|problemo)\b", re.IGNORECASE), "thanks"))
 _NUMBER = r"(?:\d+|" + "|".join(sorted(NUMBER_WORDS, key=len, reverse=True)) + r")\b"
 #: the order of words of a speaker whose first language puts them so (Portuguese and Spanish
 #: "mais 4", "mais de 4", "o dobro de", "longe de"), read as English puts them: "add more 4 tubes"
@@ -643,6 +651,7 @@ class Lexicon:
         #: the same without the English kind words ("bay", "bot"), which are never misspelt
         self._own_name_words = self._name_words - {w for ws in KIND_WORDS.values() for w in ws}
         self.aside: list[str] = []
+        self.corrected: list[str] = []   # "*word" corrections made (asterisk.star_corrections)
         self._robots = {str(r).lower() for r in robots}
         #: the places, as a pattern, for the chat forms that name one (:meth:`_chat_said_plainly`)
         shelves = sorted(map(str, world.get("shelves") or {}), key=len, reverse=True)
@@ -847,6 +856,8 @@ class Lexicon:
             command = radio.text
         for idiom, plain in IDIOMS + WORD_ORDER:
             command = idiom.sub(plain, command)
+        # "... 3 cowboys ... *carboys": a texted correction made, and said
+        command, starred = star_corrections(command, lambda w: w.isdigit() or w in NUMBER_WORDS)
         command = self._chat_said_plainly(command)
         # a time written as one word ("3pm", "10am", "2oclock") is the count and its word, as "3 pm" is
         text = re.sub(r"\b(\d{1,2})(am|pm|oclock)\b", r"\1 \2", self._joined(check_text(command)), flags=re.IGNORECASE)
@@ -855,7 +866,8 @@ class Lexicon:
         for t in toks:
             if t.kind == "word" and not self._known(str(t.value)) and self._group(t.text) is None:
                 word = str(t.value)
-                typo = SPELLINGS.get(word) or _number_typo(word) or self._keyword_typo(word)
+                typo = (SPELLINGS.get(word) or (LETTER_WORDS.get(t.text) if t.text in LETTER_WORDS else None)
+                        or _number_typo(word) or self._keyword_typo(word))
                 if typo is not None:
                     t = Tok("word", t.text, typo)
             if t.kind == "word" and str(t.value) in RUN_TOGETHER and not self._known(str(t.value)):
@@ -867,6 +879,7 @@ class Lexicon:
         toks = lexicon_verbs(quantity_phrases(addressed_anyone(stative_having(toks)), self.keywords), self.keywords)
         toks = dropped_object(corrected_later(without_particles(corrected(toks))))
         self._framed = (radio.aside if radio is not None else []) + framed
+        self.corrected = starred
         return self._split(toks, stops)
 
     def _chat_said_plainly(self, command: str) -> str:
@@ -883,7 +896,8 @@ class Lexicon:
         command = _GO_AND.sub("", command)
         if self._places is not None:
             command = re.sub(rf"\bgo\s+(?=(?:the\s+)?(?:{self._places})\b)", "to ", command, flags=re.IGNORECASE)
-            command = re.sub(rf"\b({self._places})\s+got\b", r"\1 has", command, flags=re.IGNORECASE)
+            # "bunker got", and "bunkers got" typed for "bunker's got"
+            command = re.sub(rf"\b({self._places})s?\s+got\b", r"\1 has", command, flags=re.IGNORECASE)
         return command
 
     def _names_exactly(self, word: str) -> bool:

@@ -23,7 +23,7 @@ def understand(command: str, world: dict, check: bool = True) -> dict[str, Any]:
     validate_order(order)
     resolved = resolve(order, world, check)
     explanation = (([f"said without stops, read as: {' / '.join(repr(p) for p in order['read_as'])}"]
-                    if order.get("read_as") else []) + resolved.explanation
+                    if order.get("read_as") else []) + list(order.get("corrected") or []) + resolved.explanation
                    + ([said(order["set_aside"])] if order.get("set_aside") else []))
     return {"order": order, "goal": resolved.goal, "constraints": resolved.constraints,
             "explanation": explanation}
