@@ -34,6 +34,7 @@ MAX_COMMAND_CHARS = 4000
 MAX_DIGITS = 9
 #: words that carry no meaning of their own in a command
 FILLERS = {"the", "please", "kindly", "units", "unit", "pieces", "piece", "boxes", "box", "crates", "oi", "oy",
+           "qty", "fyi",
            "crate", "cases", "case", "pcs", "pallets", "pallet", "x", "exactly", "precisely",
            "actually", "really", "hey", "um", "uh", "ok,", "just", "right", "away", "quickly",
            "now", "today", "currently", "sku", "skus", "of", "moment", "pls", "plz", "asap", "thx",
@@ -42,7 +43,7 @@ FILLERS = {"the", "please", "kindly", "units", "unit", "pieces", "piece", "boxes
 #: "of". A world that names a product so ("carton") recognises it as that product first.
 FILLERS |= {"carton", "cartons", "roll", "rolls", "pack", "packs", "packet", "packets", "bundle",
             "bundles", "bag", "bags", "tub", "tubs", "bottle", "bottles", "reel", "reels", "tote",
-            "totes", "drum", "drums", "tin", "tins", "jar", "jars", "sack", "sacks", "crates"}
+            "totes", "drum", "drums", "tin", "tins", "jar", "jars", "sack", "sacks", "crates", "jug", "jugs"}
 #: fillers that make the count after them a final count
 EXACT_WORDS = {"exactly", "precisely"}
 #: chat spellings of keywords
@@ -65,7 +66,11 @@ IDIOMS = ((re.compile(r"\b(as|what)\s+she(?=\s+(?:is|was|stands|has)\b|['\u2019]
           # "can one of yous shift ...": anyone of the team, as "can someone" is
           (re.compile(r"\bone\s+of\s+(?:you|yous|youse|ya|you\s+guys|you\s+lot)\b", re.IGNORECASE), "someone"),
           # "..., no worries", "no rush": a pleasantry; what follows it is read as ever
-          (re.compile(r"\bno\s+(?:worries|worry|wukkas|rush|hurry|stress|probs|problem|problemo)\b", re.IGNORECASE), "thanks"))
+          (re.compile(r"\bno\s+(?:worries|worry|wukkas|rush|hurry|stress|probs|problem|problemo)\b", re.IGNORECASE), "thanks"),
+          # office shorthand: "w/" is with; "by EOD" (end of day, of business) is when, which a goal
+          # does not fix
+          (re.compile(r"(?<![\w/])w/(?=\s|[a-z])", re.IGNORECASE), "with "),
+          (re.compile(r"\s*\b(?:by|before|until|till)\s+(?:EOD|COB|EOB)\b", re.IGNORECASE), ""))
 _NUMBER = r"(?:\d+|" + "|".join(sorted(NUMBER_WORDS, key=len, reverse=True)) + r")\b"
 #: the order of words of a speaker whose first language puts them so (Portuguese and Spanish
 #: "mais 4", "mais de 4", "o dobro de", "longe de"), read as English puts them: "add more 4 tubes"

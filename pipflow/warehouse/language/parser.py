@@ -13,8 +13,11 @@ offers). This module is the face: :func:`parse`.
 """
 from __future__ import annotations
 
+import re
+
 from pipflow.errors import Refusal, TranslationError
 from pipflow.language.characters import line_readings
+from pipflow.language.mail import without_mail_form
 from pipflow.warehouse.language.candidates import candidates
 from pipflow.warehouse.language.command import parse_reading
 from pipflow.warehouse.language.forest import keywords
@@ -37,8 +40,22 @@ def parse(command: str, world: dict) -> dict:
     different meanings (or one way with several of its own: a sentence asked) is refused, quoting
     both (:func:`pipflow.language.characters.line_readings`). A sentence no rule reads may be
     several said without stops: read again with stops put in (:mod:`runon`), else refused with
-    candidate readings (:mod:`candidates`).
+    candidate readings (:mod:`candidates`). An e-mail's subject line (when it asks for nothing) and
+    list markers are its form: left out first, the subject said as set aside (:mod:`pipflow.language.mail`).
     """
+    names = frozenset(w for key in ("shelves", "products", "robots") for name in world.get(key) or {}
+                      for w in re.split(r"[^a-z0-9]+", str(name).lower()) if w)
+    names |= frozenset(str(r.get(k) or "").lower() for r in (world.get("robots") or {}).values() for k in ("kind",))
+    names |= frozenset(str(t).lower() for r in (world.get("robots") or {}).values() for t in r.get("tags") or [])
+    text, headed = without_mail_form(command, names)
+    order = _parse(text, world)
+    if headed:
+        order["set_aside"] = headed + list(order.get("set_aside") or [])
+    return {**order, "command": command}
+
+
+def _parse(command: str, world: dict) -> dict:
+    """:func:`parse` of a command without its mail form."""
     readings = line_readings(command)
     if len(readings) == 1:
         try:
