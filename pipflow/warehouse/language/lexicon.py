@@ -34,7 +34,7 @@ MAX_COMMAND_CHARS = 4000
 MAX_DIGITS = 9
 #: words that carry no meaning of their own in a command
 FILLERS = {"the", "please", "kindly", "units", "unit", "pieces", "piece", "boxes", "box", "crates", "oi", "oy",
-           "qty", "fyi",
+           "qty", "fyi", "aye", "ken", "och",
            "crate", "cases", "case", "pcs", "pallets", "pallet", "x", "exactly", "precisely",
            "actually", "really", "hey", "um", "uh", "ok,", "just", "right", "away", "quickly",
            "now", "today", "currently", "sku", "skus", "of", "moment", "pls", "plz", "asap", "thx",
@@ -52,6 +52,14 @@ SPELLINGS = {"shud": "should", "shld": "should", "u": "you", "r": "are", "wont":
              "em": "them", "yous": "you", "youse": "you", "ya": "you", "yer": "your", "atm": "now", "dun": "dont", "hv": "have",
              # "whatever's on P" typed or transcribed without its apostrophe: its "'s" is "is"
              "whatevers": "whatever"}
+#: Scots spellings of the grammar's own words ("shift 5 corks fae pend tae steading", "take 2 aff
+#: vault", "dinnae touch it"), read only where the word is no word of the world's names
+SCOTS = {"fae": "from", "frae": "from", "tae": "to", "aff": "off", "oot": "out", "doon": "down", "wi": "with",
+         "ower": "over", "ontae": "onto", "intae": "into", "oantae": "onto", "nae": "no", "mair": "more",
+         "dinnae": "dont", "dinna": "dont", "cannae": "cant", "canna": "cant", "wullnae": "wont", "willnae": "wont",
+         "shouldnae": "shouldnt", "roon": "round", "whit": "what", "fower": "four", "twa": "two", "aw": "all",
+         "awa": "away", "efter": "after", "gonnae": "will", "ye": "you", "ma": "my", "bar": "except"}
+SPELLINGS |= SCOTS
 #: texting's one-letter words, as typed in lower case ("mezz n dock", "end up w a dozen"); a capital
 #: "N" or "W" is more often north or west ("N cage"), and is left alone
 LETTER_WORDS = {"n": "and", "w": "with"}
@@ -70,6 +78,8 @@ IDIOMS = ((re.compile(r"\b(as|what)\s+she(?=\s+(?:is|was|stands|has)\b|['\u2019]
           # office shorthand: "w/" is with; "by EOD" (end of day, of business) is when, which a goal
           # does not fix
           (re.compile(r"(?<![\w/])w/(?=\s|[a-z])", re.IGNORECASE), "with "),
+          # Scots "the now": now
+          (re.compile(r"\bthe\s+now\b", re.IGNORECASE), "now"),
           (re.compile(r"\s*\b(?:by|before|until|till)\s+(?:EOD|COB|EOB)\b", re.IGNORECASE), ""))
 _NUMBER = r"(?:\d+|" + "|".join(sorted(NUMBER_WORDS, key=len, reverse=True)) + r")\b"
 #: the order of words of a speaker whose first language puts them so (Portuguese and Spanish

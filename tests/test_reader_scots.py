@@ -1,0 +1,39 @@
+"""Issue 23's nineteenth round, from pair Z's first measurement (a Glasgow supervisor dictating):
+Scots spellings of the grammar's own words ("fae", "tae", "aff", "oot", "wi", "ower", "dinnae", "nae
+mair", "bar" for except), "aye", "ken", "the now", read only where the word is no word of the
+world's names. Through the real warehouse reader, in the ferry terminal of our own."""
+from __future__ import annotations
+
+import copy
+
+import pytest
+
+from pipflow.warehouse.language.translator import understand
+from tests.terminal_world import TERMINAL
+
+
+@pytest.mark.parametrize("command, goal", [
+    # quay has 14 crates and 5 barrels, shed 2 crates and 6 barrels, ramp 1 barrel
+    ("shift 5 crates fae quay tae shed", {"quay": {"crate": 9}, "shed": {"crate": 7}}),
+    ("aye take 2 barrels aff shed the now ken", {"shed": {"barrel": 4}}),
+    ("ramp should end up wi 3 barrels", {"ramp": {"barrel": 3}}),
+    ("move 4 crates fae quay ower tae ramp", {"quay": {"crate": 10}, "ramp": {"crate": 4}}),
+    ("i want nae mair than 4 crates on shed", {"shed": {"crate": {"at_most": 4}}}),
+])
+def test_scots_spellings_read_as_the_grammar_words(command: str, goal: dict) -> None:
+    assert understand(command, TERMINAL)["goal"] == goal
+
+
+def test_dinnae_is_a_negation_never_dropped() -> None:
+    got = understand("move 3 crates fae quay tae shed and dinnae use titan", TERMINAL)
+    assert {"never": ["titan"]} in got["constraints"] or any(
+        c.get("never") == ["titan"] for c in got["constraints"])
+
+
+def test_a_name_of_the_world_is_never_read_as_scots() -> None:
+    """A place called "tae" is that place, never "to"."""
+    world = copy.deepcopy(TERMINAL)
+    world["shelves"]["tae"] = world["shelves"].pop("ramp")
+    world["stock"]["tae"] = world["stock"].pop("ramp")
+    got = understand("move 2 barrels from shed to tae", world)
+    assert got["goal"] == {"shed": {"barrel": 4}, "tae": {"barrel": 3}}
