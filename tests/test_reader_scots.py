@@ -15,7 +15,7 @@ from tests.terminal_world import TERMINAL
 @pytest.mark.parametrize("command, goal", [
     # quay has 14 crates and 5 barrels, shed 2 crates and 6 barrels, ramp 1 barrel
     ("shift 5 crates fae quay tae shed", {"quay": {"crate": 9}, "shed": {"crate": 7}}),
-    ("aye take 2 barrels aff shed the now ken", {"shed": {"barrel": 4}}),
+    ("aye take 2 barrels aff shed the now, ken", {"shed": {"barrel": 4}}),
     ("ramp should end up wi 3 barrels", {"ramp": {"barrel": 3}}),
     ("move 4 crates fae quay ower tae ramp", {"quay": {"crate": 10}, "ramp": {"crate": 4}}),
     ("i want nae mair than 4 crates on shed", {"shed": {"crate": {"at_most": 4}}}),

@@ -57,8 +57,7 @@ SPELLINGS = {"shud": "should", "shld": "should", "u": "you", "r": "are", "wont":
 SCOTS = {"fae": "from", "frae": "from", "tae": "to", "aff": "off", "oot": "out", "doon": "down", "wi": "with",
          "ower": "over", "ontae": "onto", "intae": "into", "oantae": "onto", "nae": "no", "mair": "more",
          "dinnae": "dont", "dinna": "dont", "cannae": "cant", "canna": "cant", "wullnae": "wont", "willnae": "wont",
-         "shouldnae": "shouldnt", "roon": "round", "whit": "what", "fower": "four", "twa": "two", "aw": "all",
-         "awa": "away", "efter": "after", "gonnae": "will", "ye": "you", "ma": "my", "bar": "except"}
+         "shouldnae": "shouldnt", "roon": "round", "whit": "what", "fower": "four", "twa": "two", "awa": "away", "efter": "after", "gonnae": "will", "ye": "you", "ma": "my", "bar": "except"}
 SPELLINGS |= SCOTS
 #: texting's one-letter words, as typed in lower case ("mezz n dock", "end up w a dozen"); a capital
 #: "N" or "W" is more often north or west ("N cage"), and is left alone
@@ -78,9 +77,9 @@ IDIOMS = ((re.compile(r"\b(as|what)\s+she(?=\s+(?:is|was|stands|has)\b|['\u2019]
           # office shorthand: "w/" is with; "by EOD" (end of day, of business) is when, which a goal
           # does not fix
           (re.compile(r"(?<![\w/])w/(?=\s|[a-z])", re.IGNORECASE), "with "),
-          # Scots "the now": now
-          (re.compile(r"\bthe\s+now\b", re.IGNORECASE), "now"),
-          (re.compile(r"\s*\b(?:by|before|until|till)\s+(?:EOD|COB|EOB)\b", re.IGNORECASE), ""))
+          (re.compile(r"\s*\b(?:by|before|until|till)\s+(?:EOD|COB|EOB)\b", re.IGNORECASE), ""),
+          # Scots "the now" closing a clause ("I'm busy the now"): now ("the now empty bay" is untouched)
+          (re.compile(r"\bthe\s+now\b(?=\s*(?:[.,;:!?]|$))", re.IGNORECASE), "now"))
 _NUMBER = r"(?:\d+|" + "|".join(sorted(NUMBER_WORDS, key=len, reverse=True)) + r")\b"
 #: the order of words of a speaker whose first language puts them so (Portuguese and Spanish
 #: "mais 4", "mais de 4", "o dobro de", "longe de"), read as English puts them: "add more 4 tubes"
