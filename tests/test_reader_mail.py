@@ -50,3 +50,11 @@ def test_a_robot_named_at_the_end_is_no_signature() -> None:
     assert text == "move 3 crates to shed - Titan" and aside == []
     text, aside = without_mail_form("move 3 crates to shed\n\nDeb", frozenset({"titan"}))
     assert text == "move 3 crates to shed" and aside == ["signed: Deb"]
+
+
+def test_a_closing_line_with_an_operative_word_is_no_signature() -> None:
+    """ "Not Bob" after a blank line is a rule about a robot the world may lack: read (and
+    refused), never set aside as the sender's name."""
+    assert without_mail_form("move 3 crates to shed\n\nNot Bob", frozenset())[1] == []
+    with pytest.raises(TranslationError):
+        understand("Move 3 crates from quay to shed\n\nNot Bob", TERMINAL)

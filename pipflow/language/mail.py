@@ -9,7 +9,8 @@ forklift" bears on what the robots do, so it is read, and refused if it does not
 markers at the start of a line are left out; each item stays a line, so a sentence of its own. A
 greeting line that names only who is asked ("Team,", "Hi all,") and the sender's name signing the
 mail off (after a blank line, a closing line such as "Thx," or a dash: "Deb", "-D", "Thx - Deb")
-are set aside too; a name that is a word of the world's names (a robot called so) never is.
+are set aside too; a name that is a word of the world's names (a robot called so), or that holds
+an operative word ("Not Bob"), never is.
 """
 from __future__ import annotations
 
@@ -53,7 +54,9 @@ def without_mail_form(text: str, names: frozenset[str] = frozenset()) -> tuple[s
         aside.append(m.group("line"))
         text = text[m.end():]
     m = _SIGNATURE.search(text)
-    if m is not None and not {w.lower() for w in m.group("name").split()} & names and text[:m.start()].strip():
+    signed = {w.lower() for w in m.group("name").split()} if m is not None else set()
+    # "Not Bob", "Only Ox": an operative word or a name of the world is no sender's name
+    if m is not None and not signed & (names | OPERATIVE) and text[:m.start()].strip():
         aside.append(f"signed: {m.group('name')}")
         text = text[:m.start()]
     return _MARKER.sub(r"\1", text), aside
