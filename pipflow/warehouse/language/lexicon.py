@@ -880,8 +880,8 @@ class Lexicon:
         for t in toks:
             if t.kind == "word" and not self._known(str(t.value)) and self._group(t.text) is None:
                 word = str(t.value)
-                typo = (SPELLINGS.get(word) or (LETTER_WORDS.get(t.text) if t.text in LETTER_WORDS else None)
-                        or _number_typo(word) or self._keyword_typo(word))
+                typo = (SPELLINGS.get(word) or LETTER_WORDS.get(t.text) or _number_typo(word)
+                        or self._keyword_typo(word))
                 if typo is not None:
                     t = Tok("word", t.text, typo)
             if t.kind == "word" and str(t.value) in RUN_TOGETHER and not self._known(str(t.value)):

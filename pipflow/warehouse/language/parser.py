@@ -43,15 +43,19 @@ def parse(command: str, world: dict) -> dict:
     candidate readings (:mod:`candidates`). An e-mail's subject line (when it asks for nothing) and
     list markers are its form: left out first, the subject said as set aside (:mod:`pipflow.language.mail`).
     """
-    names = frozenset(w for key in ("shelves", "products", "robots") for name in world.get(key) or {}
-                      for w in re.split(r"[^a-z0-9]+", str(name).lower()) if w)
-    names |= frozenset(str(r.get(k) or "").lower() for r in (world.get("robots") or {}).values() for k in ("kind",))
-    names |= frozenset(str(t).lower() for r in (world.get("robots") or {}).values() for t in r.get("tags") or [])
-    text, headed = without_mail_form(command, names)
+    text, headed = without_mail_form(command, _name_words(world))
     order = _parse(text, world)
     if headed:
         order["set_aside"] = headed + list(order.get("set_aside") or [])
     return {**order, "command": command}
+
+
+def _name_words(world: dict) -> frozenset[str]:
+    """The words of the world's place, product and robot names, robot kinds and tags, in lower case."""
+    robots = (world.get("robots") or {}).values()
+    names = [str(n) for key in ("shelves", "products", "robots") for n in world.get(key) or {}]
+    names += [str(r.get("kind") or "") for r in robots] + [str(t) for r in robots for t in r.get("tags") or []]
+    return frozenset(w for n in names for w in re.split(r"[^a-z0-9]+", n.lower()) if w)
 
 
 def _parse(command: str, world: dict) -> dict:
