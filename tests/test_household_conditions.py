@@ -12,14 +12,9 @@ from pipflow.errors import TranslationError
 from pipflow.household.language.translator import translate
 from pipflow.household.world import load_world
 from pipflow.language.english import spoken_forms
+from tests.studio_world import STUDIO, studio_goal
 
 ROOT = Path(__file__).resolve().parent.parent
-STUDIO = load_world(ROOT / "benchmarks" / "language" / "household-studio-world.yaml")
-
-
-def _goal(command: str) -> dict:
-    got = translate(command, STUDIO)["goal"]
-    return {k: v for k, v in got.items() if v}
 
 
 def test_the_world_is_as_these_tests_assume() -> None:
@@ -47,7 +42,7 @@ def test_the_world_is_as_these_tests_assume() -> None:
      {"in": {"icebox": ["juice"]}, "state": {"icebox": ["closed"]}}),
 ])
 def test_an_order_on_a_condition_is_read_as_the_home_is_now(command: str, goal: dict) -> None:
-    assert _goal(command) == goal
+    assert studio_goal(command) == goal
     notes = translate(command, STUDIO)["notes"]
     assert any("holds now" in n or "does not hold now" in n for n in notes)   # said in the echo
 
@@ -78,7 +73,7 @@ def test_a_condition_that_cannot_be_decided_or_leaves_nothing_is_refused(command
     ("Take the banana and cut it on the worktop.", {"in": {"worktop": ["banana"]}, "state": {"banana": ["sliced"]}}),
 ])
 def test_cut_on_or_off_switches_only_what_switches(command: str, goal: dict) -> None:
-    assert _goal(command) == goal
+    assert studio_goal(command) == goal
 
 
 @pytest.mark.parametrize("said, written", [
@@ -95,10 +90,10 @@ def test_spoken_forms_an_apostrophe_marks_are_written_out(said: str, written: st
 
 
 def test_spoken_forms_read_in_a_command() -> None:
-    assert _goal("Wash the teacup and the glass and put 'em in the pantry.") == \
+    assert studio_goal("Wash the teacup and the glass and put 'em in the pantry.") == \
         {"in": {"pantry": ["teacup", "glass"]}, "state": {"teacup": ["clean"], "glass": ["clean"], "pantry": ["closed"]}}
     # "it's been" is "it has been", and "all night" is how long, no quantity: talk set aside
-    assert _goal("Switch the radio off, it's been on all night.") == {"state": {"radio": ["off"]}}
+    assert studio_goal("Switch the radio off, it's been on all night.") == {"state": {"radio": ["off"]}}
 
 
 @pytest.mark.parametrize("command, goal", [
@@ -110,7 +105,7 @@ def test_spoken_forms_read_in_a_command() -> None:
     ("Put the juice on the worktop.", {"in": {"worktop": ["juice"]}, "state": {"icebox": ["closed"]}}),
 ])
 def test_on_and_off_as_verbs_switch_only_what_switches(command: str, goal: dict) -> None:
-    assert _goal(command) == goal
+    assert studio_goal(command) == goal
 
 
 def test_a_container_switched_on_is_still_closed_again() -> None:

@@ -8,18 +8,13 @@ not <robot>"; prepositions put for one another, offered as candidate readings; a
 own (the ferry terminal; the studio flat)."""
 from __future__ import annotations
 
-from pathlib import Path
-
 import pytest
 
 from pipflow.errors import TranslationError
 from pipflow.household.language.translator import translate
-from pipflow.household.world import load_world
 from pipflow.warehouse.language.translator import understand
+from tests.studio_world import STUDIO, studio_goal
 from tests.terminal_world import TERMINAL
-
-ROOT = Path(__file__).resolve().parent.parent
-STUDIO = load_world(ROOT / "benchmarks" / "language" / "household-studio-world.yaml")
 
 
 @pytest.mark.parametrize("command, goal", [
@@ -86,12 +81,11 @@ def test_a_preposition_put_for_another_is_offered_never_acted_on() -> None:
      {"in": {"icebox": ["juice"]}, "state": {"icebox": ["closed"]}}),
 ])
 def test_household_requests_and_times_said_in_passing(command: str, goal: dict) -> None:
-    got = translate(command, STUDIO)["goal"]
-    assert {k: v for k, v in got.items() if v} == goal
+    assert studio_goal(command) == goal
 
 
 def test_close_over_closes() -> None:
-    got = translate("open the pantry and then close over the icebox", STUDIO)["goal"]
+    got = studio_goal("open the pantry and then close over the icebox")
     assert got["state"]["icebox"] == ["closed"] and got["state"]["pantry"] == ["open"]
 
 

@@ -7,18 +7,13 @@ another person will do ("she'll make the sabzi later"). Through the real readers
 own (the ferry terminal; the studio flat)."""
 from __future__ import annotations
 
-from pathlib import Path
-
 import pytest
 
 from pipflow.errors import TranslationError
 from pipflow.household.language.translator import translate
-from pipflow.household.world import load_world
 from pipflow.warehouse.language.translator import understand
+from tests.studio_world import STUDIO, studio_goal
 from tests.terminal_world import TERMINAL
-
-ROOT = Path(__file__).resolve().parent.parent
-STUDIO = load_world(ROOT / "benchmarks" / "language" / "household-studio-world.yaml")
 
 
 @pytest.mark.parametrize("command, goal", [
@@ -72,11 +67,6 @@ def test_robots_told_to_stay_off_a_place() -> None:
     assert {"never": ["moth", "wasp"], "from": "ramp"} in got["constraints"]
 
 
-def _goal(command: str) -> dict:
-    got = translate(command, STUDIO)["goal"]
-    return {k: v for k, v in got.items() if v}
-
-
 @pytest.mark.parametrize("command, goal", [
     ("Do one thing, put the juice in the icebox itself, na.",
      {"in": {"icebox": ["juice"]}, "state": {"icebox": ["closed"]}}),
@@ -87,7 +77,7 @@ def _goal(command: str) -> dict:
      {"in": {"icebox": ["juice"]}, "state": {"icebox": ["closed"]}}),
 ])
 def test_household_indian_english_and_what_others_will_do(command: str, goal: dict) -> None:
-    assert _goal(command) == goal
+    assert studio_goal(command) == goal
 
 
 @pytest.mark.parametrize("command", ["put the juice in the icebox, she will not drink it",

@@ -12,9 +12,8 @@ before it, and words that take a slip back): then it goes with the asterisk word
 from __future__ import annotations
 
 import re
-from typing import Callable
-
 from pipflow.errors import TranslationError
+from pipflow.language.numbers import is_number
 from pipflow.language.spelling import distance
 
 #: an asterisk opening a word, at the start of the command, of a line or of a sentence, or after a space
@@ -24,7 +23,7 @@ _WORD = re.compile(r"[A-Za-z0-9][\w'-]*")
 TAKE_BACK = frozenset({"sorry", "oops", "i", "mean", "meant", "my", "bad", "that", "is", "should", "be", "it", "s"})
 
 
-def star_corrections(text: str, is_number: Callable[[str], bool]) -> tuple[str, list[str]]:
+def star_corrections(text: str) -> tuple[str, list[str]]:
     """``text`` with each "*word" correction made (the word it corrects replaced, the asterisk
     word removed) and what was read so, one note each. Raises :class:`TranslationError` when it
     is not clear which word a correction corrects."""

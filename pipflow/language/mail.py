@@ -17,7 +17,7 @@ from __future__ import annotations
 import re
 
 from pipflow.language.asides import OPERATIVE
-from pipflow.language.numbers import NUMBER_WORDS
+from pipflow.language.numbers import is_number
 
 #: the subject line heading a mail, with any "RE:" / "FW:" before or after "Subject:"
 _SUBJECT = re.compile(r"\A\s*(?:(?:re|fw|fwd)\s*:\s*)*subject\s*:[ \t]*(?P<topic>[^\n]*)(?:\n|\Z)", re.IGNORECASE)
@@ -44,7 +44,7 @@ def without_mail_form(text: str, names: frozenset[str] = frozenset()) -> tuple[s
     if m is not None:
         topic = m.group("topic").strip()
         words = [w.lower() for w in re.findall(r"[A-Za-z0-9']+", topic)]
-        if not any(w.isdigit() or w in NUMBER_WORDS or w.strip("'") in OPERATIVE for w in words):
+        if not any(is_number(w) or w.strip("'") in OPERATIVE for w in words):
             aside.append(f"subject line: {topic}" if topic else "subject line")
             text = text[m.end():]
         else:

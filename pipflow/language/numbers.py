@@ -39,6 +39,11 @@ NUMBER_WORDS = set(UNITS) | set(TENS) | set(SCALES) | set(COLLECTIVES) | set(ADD
 }
 
 
+def is_number(word: str) -> bool:
+    """Whether a word (in lower case) is a count as written: digits, or a word of a number."""
+    return word.isdigit() or word in NUMBER_WORDS
+
+
 def _collective(word: str, plural_ok: bool) -> int | None:
     """The count a collective noun stands for ("trio" -> 3); plurals only after a count."""
     if word in COLLECTIVES:

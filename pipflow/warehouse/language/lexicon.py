@@ -22,7 +22,7 @@ from pipflow.language.asides import (FUNCTION_WORDS, OPERATIVE, Clause, clauses,
 from pipflow.language.asterisk import star_corrections
 from pipflow.language.characters import refuse_unread
 from pipflow.language.english import common_word
-from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS
+from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS, is_number
 from pipflow.language.radio import transmission
 from pipflow.language.spelling import distance, normalize, plural_forms, slip, tolerance
 from pipflow.warehouse.language.names import KIND_WORDS, POSS_MARK, STOPWORDS, NameIndex, Tok, read_counts, recognize
@@ -864,14 +864,13 @@ class Lexicon:
         sentence with no content (:meth:`content`) is set aside: not returned, its words kept in
         :attr:`aside`; a sentence with some content-free clauses carries its reading without them
         as ``trimmed``. :attr:`tokens` keeps the recognised tokens, :meth:`position` finds one."""
-        radio = transmission(command, self._names_exactly, lambda w: w in self._robots,
-                             lambda w: w.isdigit() or w in NUMBER_WORDS)
+        radio = transmission(command, self._names_exactly, lambda w: w in self._robots, is_number)
         if radio is not None:   # "Yard control to all units. ... Over.": the voice procedure set aside
             command = radio.text
         for idiom, plain in IDIOMS + WORD_ORDER:
             command = idiom.sub(plain, command)
         # "... 3 cowboys ... *carboys": a texted correction made, and said
-        command, starred = star_corrections(command, lambda w: w.isdigit() or w in NUMBER_WORDS)
+        command, starred = star_corrections(command)
         command = self._chat_said_plainly(command)
         # a time written as one word ("3pm", "10am", "2oclock") is the count and its word, as "3 pm" is
         text = re.sub(r"\b(\d{1,2})(am|pm|oclock)\b", r"\1 \2", self._joined(check_text(command)), flags=re.IGNORECASE)
