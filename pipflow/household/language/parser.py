@@ -102,9 +102,11 @@ def _parse_with_people(command: str, world: dict, notes: list[str]) -> list[dict
 
 def _parse_with_asides(command: str, world: dict, notes: list[str]) -> list[dict]:
     """:func:`parse` of the command as said, else without the talk it sets aside."""
+    said_before = len(notes)
     try:
         return _parse(command, world, notes)
     except TranslationError:
+        del notes[said_before:]   # what the reading that failed noted is no part of the echo
         trimmed = without_asides(command, world)
         if trimmed is None:
             raise

@@ -11,7 +11,8 @@ from pipflow.household.language.lexicon import DURATION_UNITS, FILLER_TYPO_TARGE
 from pipflow.household.language.names import world_phrases
 from pipflow.household.language.restated import leading_subject, restates_location
 from pipflow.household.language.typos import typo_of, vocabulary
-from pipflow.language.asides import EXCLUSIVITY, FUNCTION_WORDS, NEGATION, clauses, content_free, signature
+from pipflow.language.asides import (BOUNDS, EXCLUSIVITY, FUNCTION_WORDS, NEGATION, QUANTITIES, SELECTION, clauses,
+                                     content_free, signature)
 from pipflow.language.numbers import read_number
 
 
@@ -174,6 +175,66 @@ def _purposes_apart(words: list[str]) -> list[str]:
     return out
 
 
+#: lexicon classes a remark may not hold: the cues, wishes and needs a vague command is read from
+#: ("I'm freezing", "we want some music", "I need a cuppa"), the states a thing is asked to be in
+#: ("dirty", "hot") and what says how a thing is to be handled
+CUE_CLASSES = {"ADJ", "AIRCUE", "CLUTTER", "DOACT", "ACTIVITY", "FOULS", "FRESHAIR", "FULLOF", "HANDLING",
+               "HEARCUE", "HOTDRINK", "LIGHTCUE", "MEAL", "MESS", "MORE", "MUSIC", "NEED", "NEEDED", "SHOULD",
+               "SLEEPCUE", "SOUNDCUE", "TEMPCUE", "WANT", "TAKESTWO", "FORONE", "GOING", "LYING", "LEFT", "STAY",
+               "EVERYTHING", "ALLOVER", "HERE", "INROOM", "ROOMSAID", "SOMEWHERE", "AWAY", "GOES", "DONE",
+               "FINISHED", "TOGGLED", "SEE", "V_USE", "NOBODY", "DONOT", "CANNOT", "EXCEPT", "EVERY", "ALL", "BOTH"}
+#: who a remark is about, opening it: the speaker, another person, something the speaker has
+REMARK_SUBJECTS = {"i", "im", "we", "he", "she", "my", "our", "his", "her"}
+#: words that point back at what an order is about, or at a place: a clause with one may say
+#: what that thing must be ("it should be hot", "leave them there"), so it is never a remark
+POINTING = {"it", "its", "them", "they", "their", "there", "here", "those", "these", "that", "this", "one", "ones",
+            "em", "thing", "things", "stuff"}
+#: words that bear on what the robots do, in any clause (:mod:`pipflow.language.asides`)
+_BEARING = NEGATION | EXCLUSIVITY | BOUNDS | QUANTITIES | SELECTION
+
+
+#: what follows a name that opens a remark ("Pastor Jones is coming", "Shanice a come", "the
+#: twins are coming round"): a verb of being or an auxiliary, so the name is its subject
+SUBJECT_LINKS = {"is", "are", "was", "were", "will", "would", "has", "have", "had", "can", "could", "a", "s",
+                 "ll", "d", "re", "ve"}
+
+
+def _remark(world: dict) -> Callable[[tuple[str, ...]], bool]:
+    """The test of a remark: a clause about the speaker or other people ("my granddaughter is
+    coming for lunch after service", "Pastor Jones is coming by at 4"), talk though it has words of
+    the lexicon ("coming", "after") that :func:`content_free` counts. It opens with its subject:
+    :data:`REMARK_SUBJECTS`, or one or two words that are no word of the world, the lexicon or a
+    misspelling of one (a name: "the twins", "pastor jones") with a verb of being or an auxiliary
+    after them (:data:`SUBJECT_LINKS`), so that a verb the reader lacks ("frob the ...") is never
+    taken for a name. It names nothing of the world (nor a misspelling of it), has no number but a
+    time, no word that bears on an order (negation, exclusivity, bounds, quantities), no word that
+    points back (:data:`POINTING`) and no word of the cues, wishes and states a vague command is
+    read from (:data:`CUE_CLASSES`)."""
+    index = world_phrases(world)
+    world_words = {w for k in index for w in k} - FUNCTION_WORDS
+    vocab = {w for w in vocabulary(index) if w in world_words}
+    cue_words = {w for k, (cls, _) in PHRASES.items() if cls in CUE_CLASSES for w in k} - FUNCTION_WORDS
+    content = _content(world)
+    lexicon = {w for k in PHRASES for w in k}
+
+    def names(w: str) -> bool:
+        return w in world_words or (len(w) >= 4 and bool(typo_of(w, vocab)))
+
+    def a_name(w: str) -> bool:
+        return not (w in FUNCTION_WORDS or w in lexicon or content(w))
+
+    def remark(words: tuple[str, ...]) -> bool:
+        ws = [w for w in _without_times(words) if w]
+        while ws and ws[0] in ("and", "cause", "because", "cos", "coz", "cuz", "as", "since"):
+            ws = ws[1:]
+        subject = ws[1:] if ws[:1] in (["the"], ["a"], ["an"]) else ws
+        opens = bool(ws) and ws[0] in REMARK_SUBJECTS or any(
+            all(a_name(w) for w in subject[:n]) and subject[n:n + 1] and subject[n] in SUBJECT_LINKS for n in (1, 2))
+        return opens and not any(w in _BEARING or w in POINTING or w in cue_words or names(w) or w.isdigit()
+                                 or read_number([w], 0) for w in ws)
+    return remark
+
+
 class Trimmed(NamedTuple):
     """A command without the talk :func:`without_asides` sets aside, and that talk."""
 
@@ -212,8 +273,9 @@ def without_asides(command: str, world: dict) -> Trimmed | None:
     parts = clauses(words, CLAUSE_MARKS)
     words, parts, topic = _topic_restated(words, parts, world)
     robots = {str(r).lower() for key in ("robots", "teams") for r in world.get(key) or {}}   # who may be addressed
+    remark = _remark(world)
     free = [c for c in parts if content_free(_without_times(c.words), content, content, reports=True,
-                                             robot=robots.__contains__)]
+                                             robot=robots.__contains__) or remark(c.words)]
     if len(parts) > 1 and parts[-1] not in free and signature(parts[-2].words, parts[-1].words):
         free.append(parts[-1])   # "Regards, Tom": the writer's name
     own = [c for c in parts if c not in free and speaker_doing(c.words)]

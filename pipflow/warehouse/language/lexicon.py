@@ -94,8 +94,18 @@ WORD_ORDER = ((re.compile(rf"\bmore\s+({_NUMBER})(?!\s*(?:than|%|percent))", re.
               (re.compile(r"\b(to|until|till)\s+the\s+(top|brim)\b", re.IGNORECASE), r"\1 \2"))
 #: discourse particles of Singapore and Malaysian English, closing a clause ("add 4 more lah",
 #: "botak off today ah,"): they colour the clause, they say nothing of the order
-PARTICLES = ("lah", "leh", "lor", "hor", "meh", "liao", "sia", "ah")
+PARTICLES = ("lah", "leh", "lor", "hor", "meh", "liao", "sia", "ah", "ha")
 _PARTICLE = re.compile(r"\s+(?:" + "|".join(PARTICLES) + r")\b(?=\s*(?:[.,;:!?()]|$))", re.IGNORECASE)
+#: Tagalog's honorific and softening particles in Taglish ("move po 3 X", "add naman 2 X"), said
+#: anywhere in a clause: politeness, nothing of the order
+TAGALOG_PARTICLES = ("po", "naman")
+_TAGALOG_PARTICLE = re.compile(r"\s*\b(?:" + "|".join(TAGALOG_PARTICLES) + r")\b", re.IGNORECASE)
+#: Tagalog's object marker before a count ("transfer ng 3 X": transfer 3 X)
+_TAGALOG_MARKER = re.compile(rf"\bng\s+(?={_NUMBER})", re.IGNORECASE)
+#: Tagalog's request prefixes on an English verb ("paki-move", "pakiempty", "pa-add", "i-transfer",
+#: and "pa move" opening a clause): please <verb>; read so only when the verb is a word the grammar
+#: knows (:meth:`Lexicon._chat_said_plainly`)
+_TAGALOG_REQUEST = re.compile(r"\b(?:paki-?\s*|pa-\s*|i-\s*|(?:^|(?<=[.,;:!?]))\s*pa\s+)(?=([a-z]+))", re.IGNORECASE)
 #: a tag that asks whether the order can be done, closing it ("take 5 off can", "... can or not?",
 #: "... ok?"): it asks nothing more than the order does
 _CAN_TAG = re.compile(r"\s*,?\s+(?:can\s+or\s+not|can|ok|okay)\s*(?:\?+|(?=[.,;:!]|$))", re.IGNORECASE)
@@ -662,6 +672,8 @@ class Lexicon:
                             for w in [n.alpha + n.digits, n.alpha] + re.split(r"[-_\s]+", n.name.lower())
                             if len(w) >= 3} | {w for ws in KIND_WORDS.values() for w in ws}
         self._name_words |= {w for ws in self.index.stems.values() for w in ws}
+        #: the names as written, short ones too ("po", "ok"), which no particle or tag may swallow
+        self._whole_names = {n.name.lower() for n in self.index.names}
         #: the same without the English kind words ("bay", "bot"), which are never misspelt
         self._own_name_words = self._name_words - {w for ws in KIND_WORDS.values() for w in ws}
         self.aside: list[str] = []
@@ -898,14 +910,21 @@ class Lexicon:
     def _chat_said_plainly(self, command: str) -> str:
         """Chat forms read as the plain words the grammar has (Singapore English and chat
         generally): clause-closing particles (:data:`PARTICLES`) and "can" / "ok" / "can or
-        not" tags left out (a tag asked with "?" ends the sentence), "go and <verb>" as the verb,
+        not" tags left out (a tag asked with "?" ends the sentence), Taglish's particles
+        (:data:`TAGALOG_PARTICLES`) and request prefixes on a verb the grammar knows ("paki-move":
+        move) left out, "go and <verb>" as the verb,
         "<item> go <place>" as "to <place>", "<place> got" as "has". A word of the world's names
         is never taken for a particle or a tag ("can" of soup_can, a place called "ok")."""
         def left_out(m: re.Match) -> str:
             if any(self._names_exactly(w) for w in re.findall(r"[a-z]+", m.group(0).lower())):
                 return m.group(0)
             return "." if "?" in m.group(0) else ""
+        def unprefixed(m: re.Match) -> str:
+            verb = m.group(1).lower()
+            return "" if verb in self.keywords or verb in VERB_LEXICON else m.group(0)
         command = _PARTICLE.sub(left_out, _CAN_TAG.sub(left_out, command))
+        command = _TAGALOG_PARTICLE.sub(left_out, _TAGALOG_REQUEST.sub(unprefixed, command))
+        command = _TAGALOG_MARKER.sub(left_out, command)
         command = _GO_AND.sub("", command)
         if self._places is not None:
             command = re.sub(rf"\bgo\s+(?=(?:the\s+)?(?:{self._places})\b)", "to ", command, flags=re.IGNORECASE)
@@ -915,7 +934,7 @@ class Lexicon:
 
     def _names_exactly(self, word: str) -> bool:
         """Whether a word is a word of the world's names, a robot kind or tag, as written."""
-        return word in self._name_words or self._group(word) is not None
+        return word in self._name_words or word in self._whole_names or self._group(word) is not None
 
     def stopped(self, stops: frozenset[int]) -> tuple["Lexicon", list[Lexed]]:
         """A copy of this lexicon with the command it lexed last split again with ``stops``

@@ -1,0 +1,58 @@
+"""Issue 23's twentieth round, from pair AA's first measurement (a grandmother in Birmingham whose
+orders come with news of her family and her church): a remark about people ("my sister is coming
+for dinner after her class", "the neighbours are coming round after church") is talk, set aside
+and said, though it has words the lexicon knows ("coming", "after"). Anything that could bear on
+the order keeps it read, and so refused here: a name of the home, a count, a negation, a word that
+points back at the thing ordered, a cue or a wish a vague command is read from. Through the real
+household reader, in the studio flat."""
+from __future__ import annotations
+
+import pytest
+
+from pipflow.errors import TranslationError
+from pipflow.household.language.translator import translate
+from tests.studio_world import STUDIO
+
+
+@pytest.mark.parametrize("command, remark", [
+    ("turn off the radio. my sister is coming for dinner after her class.",
+     "my sister is coming for dinner after her class"),
+    ("turn off the radio. the neighbours are coming round after church", "the neighbours are coming round after church"),
+    ("and the twins are coming round after church, turn off the radio", "and the twins are coming round after church"),
+])
+def test_a_remark_about_people_is_set_aside_and_said(command: str, remark: str) -> None:
+    got = translate(command, STUDIO)
+    assert {k: v for k, v in got["goal"].items() if v} == {"state": {"radio": ["off"]}}
+    assert got["order"]["set_aside"] == [remark]
+    assert any(remark in note for note in got["notes"])
+
+
+@pytest.mark.parametrize("command", [
+    "turn off the radio. my sister is coming for the teacup",       # a thing of the home
+    "turn off the radio. my sister is coming with 2 friends",       # a count
+    "turn off the radio. my sister is not coming",                  # a negation
+    "turn off the radio. my sister wants it hot",                   # points back, and a state
+    "turn off the radio. my sister finds the place dark",           # a cue of light
+    "turn off the radio. my sister wants everything off",           # a quantity
+])
+def test_what_could_bear_on_the_order_is_never_a_remark(command: str) -> None:
+    with pytest.raises(TranslationError):
+        translate(command, STUDIO)
+
+
+def test_an_order_without_a_name_of_the_home_is_no_remark() -> None:
+    """A clause that opens with a verb is an order ("tidy up after her class"), read or refused,
+    never set aside as talk."""
+    try:
+        got = translate("turn off the radio. tidy up after her class", STUDIO)
+    except TranslationError:
+        return
+    assert not got["order"].get("set_aside")
+
+
+def test_the_echo_keeps_no_note_of_a_reading_that_failed() -> None:
+    """The command is read whole first; when that fails and it is read again without its talk, the
+    echo says only what the reading that stands noted."""
+    got = translate("wash the teacup, pastor jones is coming by at 4", STUDIO)
+    assert got["order"]["set_aside"] == ["pastor jones is coming by at 4"]
+    assert not any("leaves its subject out" in note for note in got["notes"])
