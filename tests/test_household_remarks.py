@@ -56,3 +56,28 @@ def test_the_echo_keeps_no_note_of_a_reading_that_failed() -> None:
     got = translate("wash the teacup, pastor jones is coming by at 4", STUDIO)
     assert got["order"]["set_aside"] == ["pastor jones is coming by at 4"]
     assert not any("leaves its subject out" in note for note in got["notes"])
+
+
+@pytest.mark.parametrize("command, goal", [
+    # said aloud: hesitations, "em" for them, "like" hedging after a preposition
+    ("um turn off the radio uh please", {"state": {"radio": ["off"]}}),
+    ("wash the teacup and put em in the sink", None),
+    ("put the teacup in like the sink", {"in": {"basin": ["teacup"]}}),
+])
+def test_speech_fillers_read_as_the_order(command: str, goal: dict | None) -> None:
+    got = {k: v for k, v in translate(command, STUDIO)["goal"].items() if v}
+    if goal is None:
+        goal = {k: v for k, v in translate(command.replace(" em ", " it "), STUDIO)["goal"].items() if v}
+    assert got == goal
+
+
+def test_a_condition_after_and_governs_only_what_follows_it() -> None:
+    """'wash the teacup and if the radio is still on turn it off': the wash unconditionally, the
+    radio on the condition, which holds in the studio (the radio is on)."""
+    got = translate("wash the teacup and if the radio is still on turn it off", STUDIO)
+    goal = {k: v for k, v in got["goal"].items() if v}
+    assert goal == {k: v for k, v in translate("wash the teacup. turn off the radio", STUDIO)["goal"].items() if v}
+    assert any("holds now" in n for n in got["notes"])
+    got = translate("wash the teacup and if the radio is off turn it on", STUDIO)
+    assert {k: v for k, v in got["goal"].items() if v} == \
+        {k: v for k, v in translate("wash the teacup", STUDIO)["goal"].items() if v}

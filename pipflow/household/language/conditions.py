@@ -65,7 +65,7 @@ def conditions_read(command: str, world: dict, notes: list[str]) -> str:
     out: list[list[str]] = []
     last: Condition | None = None
     changed = False
-    for sentence in (s for s in sentences if s):
+    for sentence in (part for s in sentences if s for part in _at_later_condition(s, world)):
         read = _conditional(sentence, world, last)
         if read is None:
             out.append(sentence)
@@ -91,6 +91,22 @@ def conditions_read(command: str, world: dict, notes: list[str]) -> str:
     if not [w for w in left if w not in _ENDS and w != ","]:
         raise TranslationError(f"{command.strip()!r} asks nothing now: " + "; ".join(notes[-2:]))
     return " ".join(left)
+
+
+def _at_later_condition(sentence: list[str], world: dict) -> list[list[str]]:
+    """The sentence split where a condition opens a later part of it ("put the pills away and if
+    the telly's still on, switch it off"): what comes before is said without condition, what
+    follows on it, as two sentences would say. Only where "and" or a comma comes before "if" and
+    a condition of the home reads after it with an order after that; else the sentence as it is."""
+    for k in range(2, len(sentence) - 1):
+        if sentence[k] != "if" or sentence[k - 1] not in ("and", ","):
+            continue
+        read = _condition(sentence[k + 1:], world)
+        if read is not None and [w for w in sentence[k + 1 + read[1]:] if w not in (",", "then", *_ENDS)]:
+            first = sentence[:k - 1]
+            first = first[:-1] if first[-1:] == [","] else first
+            return [first + ["."], sentence[k:]]
+    return [sentence]
 
 
 def _conditional(sentence: list[str], world: dict, last: Condition | None) -> tuple[Condition, list[str]] | None:

@@ -504,7 +504,8 @@ MASS_NOUNS = {"fruit", "food", "bedding", "cutlery", "stationery", "lighting", "
 INDEFINITE = {"a", "an", "a piece of", "a bit of", "an item of"}
 
 #: politeness and framing words that carry no content; dropped before parsing (listed in docs)
-FILLER = {("please",), ("kindly",), ("abeg",), ("biko",), ("just",), ("quickly",), ("now",), ("for", "me"), ("for", "us"), ("could", "you"),
+FILLER = {("um",), ("umm",), ("uh",), ("uhh",), ("uhm",), ("er",), ("erm",),   # hesitations, said aloud
+          ("please",), ("kindly",), ("abeg",), ("biko",), ("just",), ("quickly",), ("now",), ("for", "me"), ("for", "us"), ("could", "you"),
           ("can", "you"), ("would", "you"), ("will", "you"), ("i", "need", "you", "to"), ("i", "want", "you", "to"),
           ("we", "need", "you", "to"), ("go", "ahead", "and"), ("go", "and"), ("hey",), ("robots",), ("team",),
           ("thanks",), ("thank", "you"), ("right", "away"), ("let", "us"), ("lets",), ("let", "s"),
@@ -655,7 +656,10 @@ MARKS = frozenset("+&.,;:!?'\"()[]-_\u2018\u2019\u201c\u201d\u2010\u2011\u2012\u
 _TYPED = ((r"\bu\b", "you"), (r"\bur\b", "your"), (r"\b(they|you|we)re\b", r"\1 are"),
           (r"\b(it|that|there|what)ll\b", r"\1 will"), (r"\b(that|there|what)s\b", r"\1 is"), (r"\bim\b", "i am"),
           (r"\bive\b", "i have"), (r"\b(is|are|was|were|does|did|has|have|could|would|should)nt\b", r"\1 not"),
-          (r"\bcant\b", "can not"), (r"\bgonna\b", "going to"), (r"\bwanna\b", "want to"), (r"\bgotta\b", "have to"))
+          (r"\bcant\b", "can not"), (r"\bgonna\b", "going to"), (r"\bwanna\b", "want to"), (r"\bgotta\b", "have to"),
+          # speech: "em" for them ("stick em in the oven"), and "like" hedging after a preposition
+          # ("at like four", "in like ten minutes")
+          (r"\bem\b", "them"), (r"\b(at|in|for|about|around|by)\s+like\b", r"\1"))
 
 
 def normalize(text: str) -> str:

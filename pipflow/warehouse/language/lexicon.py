@@ -34,7 +34,7 @@ MAX_COMMAND_CHARS = 4000
 MAX_DIGITS = 9
 #: words that carry no meaning of their own in a command
 FILLERS = {"the", "please", "kindly", "units", "unit", "pieces", "piece", "boxes", "box", "crates", "oi", "oy",
-           "qty", "fyi", "aye", "ken", "och",
+           "qty", "fyi", "aye", "ken", "och", "prio", "graag", "toch",
            "crate", "cases", "case", "pcs", "pallets", "pallet", "x", "exactly", "precisely",
            "actually", "really", "hey", "um", "uh", "ok,", "just", "right", "away", "quickly",
            "now", "today", "currently", "sku", "skus", "of", "moment", "pls", "plz", "asap", "thx",
@@ -79,7 +79,16 @@ IDIOMS = ((re.compile(r"\b(as|what)\s+she(?=\s+(?:is|was|stands|has)\b|['\u2019]
           (re.compile(r"(?<![\w/])w/(?=\s|[a-z])", re.IGNORECASE), "with "),
           (re.compile(r"\s*\b(?:by|before|until|till)\s+(?:EOD|COB|EOB)\b", re.IGNORECASE), ""),
           # Scots "the now" closing a clause ("I'm busy the now"): now ("the now empty bay" is untouched)
-          (re.compile(r"\bthe\s+now\b(?=\s*(?:[.,;:!?]|$))", re.IGNORECASE), "now"))
+          (re.compile(r"\bthe\s+now\b(?=\s*(?:[.,;:!?]|$))", re.IGNORECASE), "now"),
+          # Dutch English "for the rest (all) to P" (voor de rest): the rest; "all the rest", "the
+          # rest all": the rest, which is all of it already
+          (re.compile(r"\b(?:for\s+)?the\s+rest\s+all\b|\ball\s+the\s+rest\b|\bfor\s+the\s+rest\b", re.IGNORECASE), "the rest"),
+          # "(on top of what's there)" after "more" / "extra" in its sentence: in addition, which
+          # those words say already
+          (re.compile(r"\b((?:more|extra|additional)\b[^.;!?\n]*?),?\s*on\s+top\s+of\s+what(?:['\u2019]s|\s+is)\s+"
+                      r"(?:there|on\s+it)\b", re.IGNORECASE), r"\1"),
+          # "fill P with X, as far as it goes": to the limit, which "fill" says
+          (re.compile(r",?\s*\bas\s+far\s+as\s+(?:it|they)\s+(?:goes|go|will\s+go|can\s+go)\b", re.IGNORECASE), ""))
 _NUMBER = r"(?:\d+|" + "|".join(sorted(NUMBER_WORDS, key=len, reverse=True)) + r")\b"
 #: the order of words of a speaker whose first language puts them so (Portuguese and Spanish
 #: "mais 4", "mais de 4", "o dobro de", "longe de"), read as English puts them: "add more 4 tubes"
@@ -90,6 +99,8 @@ WORD_ORDER = ((re.compile(rf"\bmore\s+({_NUMBER})(?!\s*(?:than|%|percent))", re.
               (re.compile(rf"\b(more|less|fewer)\s+of\s+(?={_NUMBER})", re.IGNORECASE), r"\1 than "),
               (re.compile(r"\b(?:the\s+)?(double|triple)\s+of\b", re.IGNORECASE), r"\1"),
               (re.compile(r"\baway\s+of\b", re.IGNORECASE), "away from"),
+              # "P has 4 X too much" (Dutch "te veel", German "zu viel"): too many
+              (re.compile(rf"\b({_NUMBER}\s+[a-z]+\s+)too\s+much\b", re.IGNORECASE), r"\1too many"),
               # "fill P up to the top": the article of "the top" / "the brim" says nothing
               (re.compile(r"\b(to|until|till)\s+the\s+(top|brim)\b", re.IGNORECASE), r"\1 \2"))
 #: discourse particles of Singapore and Malaysian English, closing a clause ("add 4 more lah",
