@@ -81,3 +81,18 @@ def test_a_condition_after_and_governs_only_what_follows_it() -> None:
     got = translate("wash the teacup and if the radio is off turn it on", STUDIO)
     assert {k: v for k, v in got["goal"].items() if v} == \
         {k: v for k, v in translate("wash the teacup", STUDIO)["goal"].items() if v}
+
+
+def test_i_mean_opening_a_sentence_takes_back_the_place() -> None:
+    """Issue 23's twenty-second round: "put the teacup in the sink. I mean in the icebox!" puts it
+    in the icebox; "I mean it." takes nothing back."""
+    got = translate("put the teacup in the sink. I mean in the icebox!", STUDIO)
+    assert got["goal"]["in"] == {"icebox": ["teacup"]}
+    got = translate("put the teacup in the sink. I mean it.", STUDIO)
+    assert got["goal"]["in"] == {"basin": ["teacup"]}
+
+
+def test_new_zealand_thanks_and_approval_carry_nothing() -> None:
+    plain = {k: v for k, v in translate("wash the teacup", STUDIO)["goal"].items() if v}
+    for command in ("wash the teacup. Thanks heaps, sweet as", "wash the teacup, ka pai"):
+        assert {k: v for k, v in translate(command, STUDIO)["goal"].items() if v} == plain

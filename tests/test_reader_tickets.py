@@ -60,3 +60,23 @@ def test_dutch_english_reads_as_the_order(command: str, goal: dict) -> None:
 def test_too_much_without_a_count_still_asks_how_many() -> None:
     with pytest.raises(TranslationError, match="how many"):
         understand("too much barrels on shed", TERMINAL)
+
+
+@pytest.mark.parametrize("command, goal", [
+    # issue 23's twenty-second round, from pair CC (a Chicago shift manager's notebook)
+    ("Go ahead and move 3 crates from quay to shed", {"quay": {"crate": 11}, "shed": {"crate": 5}}),
+    ("I'd like to see 4 crates on ramp", {"ramp": {"crate": 4}}),
+])
+def test_careful_american_english_reads_as_the_order(command: str, goal: dict) -> None:
+    assert understand(command, TERMINAL)["goal"] == goal
+
+
+def test_none_of_a_group_to_be_used_keeps_them_off() -> None:
+    got = understand("move 3 crates from quay to shed. None of the forklifts are to be used", TERMINAL)
+    forklifts = sorted(r for r, v in TERMINAL["robots"].items() if v.get("kind") == "forklift")
+    assert forklifts and got["constraints"] == [{"never": forklifts}]
+
+
+def test_none_of_all_robots_to_be_used_is_refused() -> None:
+    with pytest.raises(TranslationError):
+        understand("move 3 crates from quay to shed. None of the robots are to be used", TERMINAL)

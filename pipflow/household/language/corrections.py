@@ -3,7 +3,8 @@
 last noun phrase before it (docs/household.md, "homely English"). Without this, the marker is
 talk set aside and both things would be read (a misreading).
 
-Only between commas (or a comma before and a determiner after), only when the words after the
+Only between commas (or a comma before and a determiner after; or, for "I mean", "no wait",
+after a sentence's end: :data:`ACROSS_SENTENCES`), only when the words after the
 marker open with a determiner and the clause before has one, or open with a preposition of place
 and the clause before has one (the place is taken back: "put the scrubs in the sink - no wait
 sorry, on the boot bench"); "no" alone is never a marker here (it is a negation, operative), only
@@ -16,6 +17,13 @@ from pipflow.household.language.tokens import PUNCT
 MARKERS = (("no", "wait", "sorry"), ("no", "sorry", "i", "mean"), ("sorry", "i", "mean"), ("no", "wait"),
            ("no", "sorry"), ("wait", "sorry"), ("sorry", "no"), ("or", "rather"), ("i", "mean"), ("i", "meant"),
            ("sorry",), ("rather",))
+#: markers that take back what was said even across a sentence's end ("put my slippers in the
+#: wardrobe. I mean on the shoe rack!"); "sorry" or "rather" alone opening a sentence may begin
+#: anything, so only these
+ACROSS_SENTENCES = {("i", "mean"), ("i", "meant"), ("no", "wait"), ("no", "wait", "sorry"), ("sorry", "i", "mean"),
+                    ("no", "sorry", "i", "mean")}
+#: the marks a sentence ends with
+_ENDS = {".", "!", "?", ";"}
 #: words that open where a thing goes: a correction that opens with one takes back the place said
 #: last ("in the sink - no wait sorry, on the boot bench")
 PLACE_PREPOSITIONS = {"in", "on", "into", "onto", "inside", "to", "under"}
@@ -29,7 +37,8 @@ def corrected(words: list[str], notes: list[str]) -> list[str]:
     out: list[str] = []
     k = 0
     while k < len(words):
-        marker = next((m for m in MARKERS if k and words[k - 1] == "," and tuple(words[k:k + len(m)]) == m), None)
+        marker = next((m for m in MARKERS if k and (words[k - 1] == "," or words[k - 1] in _ENDS and m in ACROSS_SENTENCES)
+                       and tuple(words[k:k + len(m)]) == m), None)
         if marker is not None:
             after = k + len(marker) + (1 if k + len(marker) < len(words) and words[k + len(marker)] == "," else 0)
             place = after < len(words) and words[after] in PLACE_PREPOSITIONS

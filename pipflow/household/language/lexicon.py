@@ -505,6 +505,8 @@ INDEFINITE = {"a", "an", "a piece of", "a bit of", "an item of"}
 
 #: politeness and framing words that carry no content; dropped before parsing (listed in docs)
 FILLER = {("um",), ("umm",), ("uh",), ("uhh",), ("uhm",), ("er",), ("erm",),   # hesitations, said aloud
+          # New Zealand and Australian thanks and approval ("Thanks heaps", "Sweet as", "ka pai")
+          ("thanks", "heaps"), ("cheers", "heaps"), ("sweet", "as"), ("ka", "pai"),
           ("please",), ("kindly",), ("abeg",), ("biko",), ("just",), ("quickly",), ("now",), ("for", "me"), ("for", "us"), ("could", "you"),
           ("can", "you"), ("would", "you"), ("will", "you"), ("i", "need", "you", "to"), ("i", "want", "you", "to"),
           ("we", "need", "you", "to"), ("go", "ahead", "and"), ("go", "and"), ("hey",), ("robots",), ("team",),

@@ -87,6 +87,12 @@ IDIOMS = ((re.compile(r"\b(as|what)\s+she(?=\s+(?:is|was|stands|has)\b|['\u2019]
           # those words say already
           (re.compile(r"\b((?:more|extra|additional)\b[^.;!?\n]*?),?\s*on\s+top\s+of\s+what(?:['\u2019]s|\s+is)\s+"
                       r"(?:there|on\s+it)\b", re.IGNORECASE), r"\1"),
+          # "I'd like to see 12 X on P", "I want to see ...": what the speaker wants there
+          (re.compile(r"\b(want|like|need)\s+to\s+see\b", re.IGNORECASE), r"\1"),
+          # "none of the night shift robots are to be used": do not use them (the negation kept, said
+          # as the grammar has it; "the AMRs are not to be used" it reads as said)
+          (re.compile(r"\bnone\s+of\s+((?:the\s+)?[a-z_ ]+?)\s+(?:are|is)\s+to\s+be\s+used\b", re.IGNORECASE),
+           r"dont use \1"),
           # "fill P with X, as far as it goes": to the limit, which "fill" says
           (re.compile(r",?\s*\bas\s+far\s+as\s+(?:it|they)\s+(?:goes|go|will\s+go|can\s+go)\b", re.IGNORECASE), ""))
 _NUMBER = r"(?:\d+|" + "|".join(sorted(NUMBER_WORDS, key=len, reverse=True)) + r")\b"
@@ -120,8 +126,9 @@ _TAGALOG_REQUEST = re.compile(r"\b(?:paki-?\s*|pa-\s*|i-\s*|(?:^|(?<=[.,;:!?]))\
 #: a tag that asks whether the order can be done, closing it ("take 5 off can", "... can or not?",
 #: "... ok?"): it asks nothing more than the order does
 _CAN_TAG = re.compile(r"\s*,?\s+(?:can\s+or\s+not|can|ok|okay)\s*(?:\?+|(?=[.,;:!]|$))", re.IGNORECASE)
-#: "go and shift 6 router ...", "the weakest one go and bring ...": "go and" before a verb adds nothing
-_GO_AND = re.compile(r"\bgo\s+and\s+(?=[a-z])", re.IGNORECASE)
+#: "go and shift 6 router ...", "the weakest one go and bring ...", "go ahead and move ...": "go
+#: (ahead) and" before a verb adds nothing
+_GO_AND = re.compile(r"\bgo\s+(?:ahead\s+)?and\s+(?=[a-z])", re.IGNORECASE)
 #: fillers the grammar still reads when it has a place for them (it tries the keyword first)
 SOFT_FILLERS = {"of", "just", "right", "away", "now", "today", "currently", "moment", "exactly"}
 FRACTIONS = {"third": 3, "thirds": 3, "quarter": 4, "quarters": 4, "fourth": 4, "fourths": 4,
