@@ -198,15 +198,23 @@ def is_greeting(words: Iterable[str]) -> bool:
     return bool(ws) and ws[0] in GREETINGS and all(w in ADDRESSEES or w in GREETINGS for w in ws[1:])
 
 
+#: how warmly thanks are said ("thank you ever so much", "thanks very much"): no quantity of anything
+_WARMLY = (("ever", "so", "much"), ("so", "much"), ("very", "much"))
+
+
 def is_pleasantry(words: Iterable[str], names: Callable[[str], bool]) -> bool:
-    """ "sorry for the late ask", "thanks for earlier", "thank you so much": an apology or thanks,
+    """ "sorry for the late ask", "thanks for earlier", "thank you ever so much", "many thanks in
+    advance": an apology or thanks,
     then only what it is for. Words of the grammar may follow ("ask", "earlier"): they say what
     one is sorry for, not what to do; a name of the world, a number (``names``) or an operative
     word may not ("thanks, and not on bay 2" is no pleasantry)."""
     ws = [w for w in words if w]
+    ws = ws[1:] if ws[:1] == ["and"] or ws[:2] == ["many", "thanks"] else ws   # "and sorry for ...", "many thanks"
     if not ws or ws[0] not in PLEASANTRIES:
         return False
     rest = ws[2:] if ws[:2] == ["thank", "you"] else ws[1:]
+    warmly = next((w for w in _WARMLY if rest[:len(w)] == list(w)), ())
+    rest = rest[len(warmly):]
     if rest and rest[0] not in ("for", "about", "again", "so", "very", "a", "lot", "all", "everyone", "team", "in",
                                 "to"):   # "sorry to bother you"
         return False

@@ -12,7 +12,7 @@ from __future__ import annotations
 import copy
 import re
 from dataclasses import dataclass, replace
-from typing import Any, Callable
+from typing import Any, Callable, Collection
 
 from lark import Token
 
@@ -309,7 +309,24 @@ REQUEST_FRAMES = (("would", "it", "be", "possible", "to"), ("is", "it", "possibl
                   # "sort it so dock 1 has 6 X": the clause after "so" is the order
                   ("sort", "it", "out", "so", "that"), ("sort", "it", "out", "so"), ("sort", "it", "so", "that"),
                   ("sort", "it", "so"), ("arrange", "it", "so", "that"), ("arrange", "it", "so"),
-                  ("see", "to", "it", "that"))
+                  ("see", "to", "it", "that"),
+                  # the hedged and over-polite ways of asking ("Could I trouble you to ...", "Would you
+                  # be so kind as to ...", "Could you possibly ...")
+                  ("would", "it", "be", "possible", "for", "you", "to"), ("is", "it", "possible", "for", "you", "to"),
+                  ("i", "was", "wondering", "whether", "you", "could"), ("i", "was", "wondering", "whether", "you", "might"),
+                  ("i", "was", "wondering", "if", "you", "might"), ("i", "was", "hoping", "you", "could"),
+                  ("could", "i", "trouble", "you", "to"), ("could", "i", "ask", "you", "to"), ("might", "i", "ask", "you", "to"),
+                  ("would", "you", "be", "able", "to"), ("could", "you", "be", "so", "kind", "as", "to"),
+                  ("would", "you", "be", "so", "kind", "as", "to"), ("could", "you", "possibly"),
+                  ("would", "you", "possibly"), ("can", "you", "possibly"), ("would", "you", "mind", "terribly"))
+REQUEST_FRAMES = tuple(sorted(REQUEST_FRAMES, key=len, reverse=True))   # the longest said is the frame
+#: frames after which the verb comes as "-ing" ("would you mind moving ..."): read as the verb
+GERUND_FRAMES = {("would", "you", "mind"), ("do", "you", "mind"), ("would", "you", "mind", "terribly")}
+#: frames that ask for a place to end up so ("Would it be possible for receiving to end up with 12
+#: X", "I was wondering whether loadout might hold ..."), with the word that links the place to what
+#: it should do: read as "<place> should ..."
+SUBJECT_FRAMES = {("would", "it", "be", "possible", "for"): ("to",), ("is", "it", "possible", "for"): ("to",),
+                  ("i", "was", "wondering", "whether"): ("might", "could"), ("i", "was", "wondering", "if"): ("might", "could")}
 
 
 #: when the robots may do it, said as a courtesy ("at your earliest convenience", "when you have a
@@ -320,10 +337,17 @@ COURTESY_TIMES = tuple(sorted(
      ("as", "soon", "as", "you", "can"), ("when", "convenient"), ("when", "possible"), ("when", "you", "can"),
      ("when", "you", "have", "time"), ("when", "you", "get", "time"), ("at", "the", "earliest"),
      ("at", "earliest"), ("on", "priority"), ("on", "a", "priority", "basis"), ("on", "priority", "basis"),
-     ("on", "an", "urgent", "basis"), ("on", "urgent", "basis"), ("urgent", "basis")}
+     ("on", "an", "urgent", "basis"), ("on", "urgent", "basis"), ("urgent", "basis"),
+     # "if it isn't too much trouble", "if at all possible": asked politely, no condition of the world
+     ("if", "at", "all", "possible"), ("if", "possible"), ("if", "it", "is", "no", "bother"),
+     ("if", "it", "is", "no", "trouble"), ("if", "its", "no", "bother"), ("if", "its", "no", "trouble")}
+    | {("if", *it, *neg, "too", "much", trouble) for it in (("it",), ("its",)) for neg in (("is", "not"), ("isnt",), ("not",))
+       for trouble in ("trouble", "bother")}
     | {(when,) + have + ("a", moment) for when in ("when", "whenever")
        for have in (("you", "have"), ("you", "get"), ("youve", "got"), ("you", "have", "got"), ("you", "ve", "got"))
-       for moment in ("moment", "minute", "min", "sec", "second", "chance")}, key=len, reverse=True))
+       for moment in ("moment", "minute", "min", "sec", "second", "chance")}
+    | {(when, "you", "have", "a", "spare", moment) for when in ("when", "whenever") for moment in ("moment", "minute")},
+    key=len, reverse=True))
 #: "Per our discussion this morning, ...": a clause that says what the order follows opens with
 #: "per" and one of these (never "per trip", a rate)
 _PER_WHOSE = {"our", "your", "the", "my", "his", "her", "their", "this", "that", "yesterdays", "todays"}
@@ -336,18 +360,59 @@ _AS_SAID = {"per", "discussed", "agreed", "mentioned", "requested", "arranged", 
 FRAME_WORDS = frozenset(w for f in REQUEST_FRAMES + COURTESY_TIMES for w in f)
 
 
-def without_request_frames(toks: list[Tok]) -> tuple[list[Tok], list[str]]:
+def _said_at(toks: list[Tok], k: int, words: tuple[str, ...]) -> bool:
+    """Whether the words at ``k`` are ``words``."""
+    return len(toks) >= k + len(words) and all(x.kind == "word" and x.value == w for x, w in zip(toks[k:], words))
+
+
+def _base_verb(word: str, verbs: Collection[str]) -> str | None:
+    """The verb of :data:`verbs` that ``word`` is the "-ing" form of ("moving", "swapping",
+    "bringing"), or None."""
+    if not word.endswith("ing"):
+        return None
+    stem = word[:-3]
+    return next((v for v in (stem, stem + "e", stem[:-1]) if v in verbs and len(v) > 1), None)
+
+
+def _subject_framed(toks: list[Tok], k: int) -> list[Tok] | None:
+    """The tokens of a sentence opened at ``k`` by a frame of :data:`SUBJECT_FRAMES`, read as
+    "<place> should ...", or None: the words between the frame and its link word must name a
+    place and hold no mark."""
+    for frame, links in SUBJECT_FRAMES.items():
+        if not _said_at(toks, k, frame):
+            continue
+        j = k + len(frame)
+        at = next((i for i in range(j + 1, min(j + 7, len(toks))) if toks[i].kind == "word" and toks[i].value in links), None)
+        subject = toks[j:at] if at is not None else []
+        if subject and all(t.kind != "punct" for t in subject) and any(t.kind == "name" for t in subject):
+            return [*subject, Tok("word", toks[at].text, "should")]
+    return None
+
+
+def without_request_frames(toks: list[Tok], verbs: Collection[str] = ()) -> tuple[list[Tok], list[str]]:
     """The tokens without a frame of :data:`REQUEST_FRAMES` that opens a sentence or a clause
     ("Hi, while you're at it, ..."), a courtesy of time or a "Per ...," clause; with the words of
     the courtesies and "Per" clauses, as said, for the echo (they read like a time or a reason, so
-    the user is told they were not kept; a request frame only asks)."""
+    the user is told they were not kept; a request frame only asks). After a frame of
+    :data:`GERUND_FRAMES` a verb of ``verbs`` said with "-ing" is the verb; a frame of
+    :data:`SUBJECT_FRAMES` is read as "<place> should"."""
     out: list[Tok] = []
     aside: list[str] = []
     k = 0
     while k < len(toks):
         start = k == 0 or (toks[k - 1].kind == "punct" and toks[k - 1].value in (".", ";", "!", "?", ",", ":"))
-        hit = next((f for f in REQUEST_FRAMES if start and len(toks) >= k + len(f) and all(
-            x.kind == "word" and x.value == w for x, w in zip(toks[k:k + len(f)], f))), None)
+        hit = next((f for f in REQUEST_FRAMES if start and _said_at(toks, k, f)), None)
+        if hit in GERUND_FRAMES and k + len(hit) < len(toks) and toks[k + len(hit)].kind == "word":
+            verb = _base_verb(str(toks[k + len(hit)].value), verbs)
+            if verb is not None:
+                out.append(Tok("word", toks[k + len(hit)].text, verb))
+                k += len(hit) + 1
+                continue
+        subject = _subject_framed(toks, k) if start and hit is None else None
+        if subject is not None:
+            out += subject
+            k += len(subject) + next(len(f) for f in SUBJECT_FRAMES if _said_at(toks, k, f))
+            continue
         courtesy = next((f for f in COURTESY_TIMES if len(toks) >= k + len(f) and all(
             x.kind == "word" and x.value == w for x, w in zip(toks[k:k + len(f)], f))), None)
         size = len(hit or courtesy or ()) or (_per_clause(toks, k) if start else 0)
@@ -677,7 +742,7 @@ class Lexicon:
         self.keywords = keywords  # keyword text -> terminal name
         # the grammar's own words are English, never a misspelt name ("haul" is no hauler1)
         # superlatives are words of robot rules, never a misspelt name ("strongest" is no string_set)
-        self.index = NameIndex(world, reserved={k for k in keywords if k.isalpha()} | FILLERS | set(SUPERLATIVES))
+        self.index = NameIndex(world, reserved={k for k in keywords if k.isalpha()} | FILLERS | set(SUPERLATIVES) | FRAME_WORDS)
         robots = world.get("robots") or {}
         self.kinds = {str(r.get("kind")).lower() for r in robots.values()
                       if isinstance(r, dict) and r.get("kind")}
@@ -918,7 +983,8 @@ class Lexicon:
                 fixed += [Tok("word", t.text, first), Tok("word", "", second)]
                 continue
             fixed.append(t)
-        toks, framed = without_request_frames(read_counts(_split_hyphens(fixed, self.keywords)))
+        toks, framed = without_request_frames(read_counts(_split_hyphens(fixed, self.keywords)),
+                                              {w for w in self.keywords if " " not in w} | set(VERB_LEXICON))
         toks = lexicon_verbs(quantity_phrases(addressed_anyone(stative_having(toks)), self.keywords), self.keywords)
         toks = dropped_object(corrected_later(without_particles(corrected(toks))))
         self._framed = (radio.aside if radio is not None else []) + framed
