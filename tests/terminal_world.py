@@ -1,5 +1,8 @@
 """A ferry terminal of our own for reader tests: three places, two products, four robots (titan
 the only strongest, moth and wasp tie as weakest)."""
+from __future__ import annotations
+
+import copy
 
 TERMINAL = {
     "floor": {"width": 30, "height": 20},
@@ -17,3 +20,12 @@ TERMINAL = {
         "wasp": {"start": [28, 18], "skills": {"carry": 1}, "kind": "amr", "tags": []},
     },
 }
+
+
+def with_ramp_called(name: str) -> dict:
+    """The terminal with its ramp renamed ``name`` (stock and all): for tests that a word the
+    reader would otherwise drop or respell ("tae", "po") stays the name of a place."""
+    world = copy.deepcopy(TERMINAL)
+    world["shelves"][name] = world["shelves"].pop("ramp")
+    world["stock"][name] = world["stock"].pop("ramp")
+    return world

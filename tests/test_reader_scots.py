@@ -4,12 +4,10 @@ mair", "bar" for except), "aye", "ken", "the now", read only where the word is n
 world's names. Through the real warehouse reader, in the ferry terminal of our own."""
 from __future__ import annotations
 
-import copy
-
 import pytest
 
 from pipflow.warehouse.language.translator import understand
-from tests.terminal_world import TERMINAL
+from tests.terminal_world import TERMINAL, with_ramp_called
 
 
 @pytest.mark.parametrize("command, goal", [
@@ -31,8 +29,5 @@ def test_dinnae_is_a_negation_never_dropped() -> None:
 
 def test_a_name_of_the_world_is_never_read_as_scots() -> None:
     """A place called "tae" is that place, never "to"."""
-    world = copy.deepcopy(TERMINAL)
-    world["shelves"]["tae"] = world["shelves"].pop("ramp")
-    world["stock"]["tae"] = world["stock"].pop("ramp")
-    got = understand("move 2 barrels from shed to tae", world)
+    got = understand("move 2 barrels from shed to tae", with_ramp_called("tae"))
     assert got["goal"] == {"shed": {"barrel": 4}, "tae": {"barrel": 3}}

@@ -6,13 +6,11 @@ Tagalog's own verbs stay unknown, so a command built on one is refused. Through 
 warehouse reader, in the ferry terminal of our own."""
 from __future__ import annotations
 
-import copy
-
 import pytest
 
 from pipflow.errors import TranslationError
 from pipflow.warehouse.language.translator import understand
-from tests.terminal_world import TERMINAL
+from tests.terminal_world import TERMINAL, with_ramp_called
 
 
 @pytest.mark.parametrize("command, goal", [
@@ -43,8 +41,5 @@ def test_a_verb_the_grammar_lacks_is_refused_with_or_without_a_prefix(command: s
 
 def test_a_name_of_the_world_is_never_read_as_a_particle() -> None:
     """A place called "po" is that place."""
-    world = copy.deepcopy(TERMINAL)
-    world["shelves"]["po"] = world["shelves"].pop("ramp")
-    world["stock"]["po"] = world["stock"].pop("ramp")
-    got = understand("move 2 barrels from shed to po", world)
+    got = understand("move 2 barrels from shed to po", with_ramp_called("po"))
     assert got["goal"] == {"shed": {"barrel": 4}, "po": {"barrel": 3}}

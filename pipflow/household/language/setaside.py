@@ -199,7 +199,7 @@ SUBJECT_LINKS = {"is", "are", "was", "were", "will", "would", "has", "have", "ha
                  "ll", "d", "re", "ve"}
 
 
-def _remark(world: dict) -> Callable[[tuple[str, ...]], bool]:
+def _remark(world: dict, content: Callable[[str], bool]) -> Callable[[tuple[str, ...]], bool]:
     """The test of a remark: a clause about the speaker or other people ("my granddaughter is
     coming for lunch after service", "Pastor Jones is coming by at 4"), talk though it has words of
     the lexicon ("coming", "after") that :func:`content_free` counts. It opens with its subject:
@@ -209,12 +209,12 @@ def _remark(world: dict) -> Callable[[tuple[str, ...]], bool]:
     taken for a name. It names nothing of the world (nor a misspelling of it), has no number but a
     time, no word that bears on an order (negation, exclusivity, bounds, quantities), no word that
     points back (:data:`POINTING`) and no word of the cues, wishes and states a vague command is
-    read from (:data:`CUE_CLASSES`)."""
+    read from (:data:`CUE_CLASSES`). ``content``: :func:`_content` of the world, made once by the
+    caller."""
     index = world_phrases(world)
     world_words = {w for k in index for w in k} - FUNCTION_WORDS
     vocab = {w for w in vocabulary(index) if w in world_words}
     cue_words = {w for k, (cls, _) in PHRASES.items() if cls in CUE_CLASSES for w in k} - FUNCTION_WORDS
-    content = _content(world)
     lexicon = {w for k in PHRASES for w in k}
 
     def names(w: str) -> bool:
@@ -273,7 +273,7 @@ def without_asides(command: str, world: dict) -> Trimmed | None:
     parts = clauses(words, CLAUSE_MARKS)
     words, parts, topic = _topic_restated(words, parts, world)
     robots = {str(r).lower() for key in ("robots", "teams") for r in world.get(key) or {}}   # who may be addressed
-    remark = _remark(world)
+    remark = _remark(world, content)
     free = [c for c in parts if content_free(_without_times(c.words), content, content, reports=True,
                                              robot=robots.__contains__) or remark(c.words)]
     if len(parts) > 1 and parts[-1] not in free and signature(parts[-2].words, parts[-1].words):
