@@ -15,13 +15,13 @@ from cli_entry import PIPFLOW
 
 REPO = Path(__file__).resolve().parent.parent
 
-COMMAND = "Send 2 product1 from shelf1 to shelf2 pronto"   # 'pronto' is placed by no rule
+COMMAND = "Send 2 product1 from shelf1 to shelf2 yonder"   # 'yonder' is placed by no rule
 GOAL = {"shelf1": {"product1": 8}, "shelf2": {"product1": 10}}
 
 
 def test_the_api_and_the_record_keep_the_candidates_and_reading_runs_one(tmp_path: Path) -> None:
     refused = pipflow.run("warehouse", command=COMMAND, runs_dir=tmp_path)
-    assert refused.status == "failed" and "pronto" in (refused.error or "")
+    assert refused.status == "failed" and "yonder" in (refused.error or "")
     assert [c["goal"] for c in refused.candidates] == [GOAL]
     record = json.loads((refused.record / "run.json").read_text())
     assert [c["goal"] for c in record["candidates"]] == [GOAL]
@@ -73,7 +73,7 @@ def test_the_bench_reports_candidate_recall(tmp_path: Path) -> None:
     tasks.write_text(f"""world: {fixture / 'world.yaml'}
 tasks:
   - id: offered
-    command: "There should be 4 product1 in shelf2 pronto."
+    command: "There should be 4 product1 in shelf2 yonder."
     goal: {{shelf2: {{product1: 4}}}}
   - id: not-offered
     command: "Blorp shelf2 up to 4 product1."

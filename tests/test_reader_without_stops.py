@@ -138,7 +138,7 @@ def test_a_filler_before_a_stop_is_echoed_with_the_sentence_after_it() -> None:
                                      "on vat west' / 'please thats all'")
 
 
-@pytest.mark.parametrize("tail", ["pronto", "and the blorp", "5", "the whole lot"])
+@pytest.mark.parametrize("tail", ["yonder", "and the blorp", "5", "the whole lot"])
 def test_a_part_that_is_no_talk_by_what_it_is_is_never_set_aside_by_a_stop(tail: str) -> None:
     """Words no rule reads that lack content are not talk for that alone: a stop put in sets a part
     aside only when it is a greeting, a closing, thanks or a statement with its subject."""

@@ -168,18 +168,21 @@ def _condition(words: list[str], world: dict, before: list[str] | None = None) -
     negated = words[k:k + 1] == ["not"]
     k += negated
     entry = (world.get("objects") or {}).get(name) or (world.get("places") or {}).get(name) or {}
-    if k < len(words) and words[k] in STATES:
+    # "on" / "in" followed by a place is where the thing is ("if the laptop is on the couch"), never
+    # its switch; without a place after it, "on" is the state ("if the laptop is still on")
+    place = None
+    if words[k:k + 1] and words[k] in AT and name in (world.get("objects") or {}):
+        place = _thing(words, k + 2 if words[k + 1:k + 2] and words[k + 1] in _DETERMINERS else k + 1, world)
+        place = place if place is not None and place[1] in (world.get("places") or {}) else None
+    if place is not None:
+        holds = entry.get("in") == place[1]
+        k = place[2]
+    elif k < len(words) and words[k] in STATES:
         key, value = STATES[words[k]]
         if NEEDS[key] not in (entry.get("properties") or []):
             return None   # "if the cup is on": a state it cannot be in is no condition read here
         holds = bool((entry.get("state") or {}).get(key, False)) == value
         k += 1
-    elif words[k:k + 1] and words[k] in AT and name in (world.get("objects") or {}):
-        place = _thing(words, k + 2 if words[k + 1:k + 2] and words[k + 1] in _DETERMINERS else k + 1, world)
-        if place is None or place[1] not in (world.get("places") or {}):
-            return None
-        holds = entry.get("in") == place[1]
-        k = place[2]
     else:
         return None
     return Condition(thing_words, name, holds != negated, "if " + " ".join(words[:k])), k

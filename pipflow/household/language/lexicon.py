@@ -534,7 +534,7 @@ FILLER = {("um",), ("umm",), ("uh",), ("uhh",), ("uhm",), ("er",), ("erm",),   #
           ("the", "pair", "of", "you"), ("you", "guys"), ("guys",), ("hang", "on"), ("hold", "on"),
           # texting: laughter, "right now", "real quick", and words of emphasis that grade nothing
           ("lol",), ("lmao",), ("haha",), ("hahaha",), ("rn",), ("right", "now"), ("real", "quick"),
-          ("literally",), ("tbh",), ("btw",), ("omg",), ("ugh",), ("ngl",)}
+          ("literally",), ("tbh",), ("btw",), ("fyi",), ("omg",), ("ugh",), ("ngl",)}
 #: endearments and praise that close or open a request ("..., there's a love", "..., there's a good
 #: girl", "good lad, ..."): said to the one asked, they carry nothing; "mind you" / "mind and"
 #: before a verb is "make sure you" (northern and Scots English: "and mind you shut the door after")
@@ -644,6 +644,16 @@ for (_k, (_c, _v)) in list(PHRASES.items()):
 
 #: the words that name a state, after which "'s" is "is" (normalize)
 _STATE_WORDS = sorted({w for w in ADJECTIVES} | {"on", "off"}, key=len, reverse=True)
+
+
+#: an arrow typed or drawn ("->", "=>", "-->", "\u2192"): "to" between a thing and a place, "then"
+#: after a clause ("tv on? -> turn it off"); an arrow that reads neither way is refused as a symbol
+ARROW = re.compile(r"\s*(?:-+>|=+>|[\u2192\u27f6\u2794\u279c\u21d2])\s*")
+
+
+def arrows_said_as(command: str, word: str) -> str:
+    """The command with each arrow said as ``word``."""
+    return ARROW.sub(f" {word} ", command)
 
 
 #: the marks this reader reads besides ASCII letters, digits and white space (every other

@@ -36,7 +36,7 @@ from pipflow.household.language.conditions import conditions_read
 from pipflow.household.language.fronted import fronted_objects
 from pipflow.household.language.grammar import NOUN_DUAL, base_class, gated_classes, grammar_text
 from pipflow.household.language.lacking import lacking
-from pipflow.household.language.lexicon import MARKS, PHRASES
+from pipflow.household.language.lexicon import ARROW, MARKS, PHRASES, arrows_said_as
 from pipflow.household.language.names import world_phrases
 from pipflow.household.language.people import about_people
 from pipflow.household.language.setaside import without_asides
@@ -63,8 +63,28 @@ def parse(command: str, world: dict, notes: list[str] | None = None) -> list[dic
     notes and in each order's ``set_aside``. Every other clause still needs every word placed."""
     if not isinstance(command, str) or not command.strip():
         raise TranslationError("the command is empty")
-    refuse_unread(command, MARKS)   # a character this reader does not read is refused, never skipped
     notes = notes if notes is not None else []
+    if not ARROW.search(command):
+        return _parse_said(command, world, notes)
+    # "bowl + wine glass -> dishwasher": an arrow says "to"; after a clause that says what to do
+    # or asks ("tv on? -> turn it off"), it says "then". The reading with "to" is tried first.
+    # A reading refused as impossible (Refusal) is not read again.
+    first: TranslationError | None = None
+    for said_as in ("to", ", then"):
+        mine: list[str] = []
+        try:
+            readings = _parse_said(arrows_said_as(command, said_as), world, mine)
+        except TranslationError as exc:
+            first = first or exc
+            continue
+        notes += mine
+        return readings
+    raise first
+
+
+def _parse_said(command: str, world: dict, notes: list[str]) -> list[dict]:
+    """:func:`parse` of a command whose arrows are said in words."""
+    refuse_unread(command, MARKS)   # a character this reader does not read is refused, never skipped
     command = owners_as_the(command, world, notes)
     command = conditions_read(command, world, notes)   # "if the lamp is on, switch it off"
     try:

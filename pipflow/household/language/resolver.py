@@ -111,8 +111,9 @@ class Resolver:
         self.handled: list[tuple[list[str], str]] = []         # how things are to be handled: (names, words)
 
     # selectors -------------------------------------------------------------------------
-    def _candidates(self, sel: dict, words: str) -> tuple[list[str], bool]:
-        """Names a selector's noun may mean, and whether they come from a category (implicit)."""
+    def _candidates(self, sel: dict, words: str, prop: str | None = None) -> tuple[list[str], bool]:
+        """Names a selector's noun may mean, and whether they come from a category (implicit);
+        ``prop``: what the statement will ask of them."""
         if sel.get("ones"):
             raise TranslationError(f"'{words}': '{sel['words']}' of what? (name the things)")
         if sel.get("door") and "noun" not in sel:
@@ -151,10 +152,10 @@ class Resolver:
                                    "(e.g. 'everything on the sofa', 'everything that is on')")
         readings = sel["noun"]["readings"]
         named = [r for r in readings if r["kind"] in ("object", "place")]
-        if named and "from" in sel and all(r["kind"] == "place" for r in named) and \
+        if named and ("from" in sel or prop == "pickupable") and all(r["kind"] == "place" for r in named) and \
                 any(r["kind"] == "category" for r in readings):
             # "there's trash all over the coffee table" where "trash" is the trash can and the
-            # rubbish: no place lies in another, so the word is the category
+            # rubbish: no place lies in another, and no place is carried, so the word is the category
             named = []
         if named:
             return list(dict.fromkeys(r["name"] for r in named)), False
@@ -171,7 +172,7 @@ class Resolver:
             # everything" or "put everything in the fridge" without a place or state is asked)
             names, implicit = list(self.world["objects"]) + list(self.world["places"]), True
         else:
-            names, implicit = self._candidates(sel, words)
+            names, implicit = self._candidates(sel, words, prop)
         what = sel["words"]
         if sel.get("unit") and not implicit:   # "a piece of bread": no piece is a thing of the home model
             raise TranslationError(f"'{words}': '{what}': pieces of one thing are not things of this home; "

@@ -348,3 +348,57 @@ def _clause_before(out: list[str]) -> list[str]:
     while k and out[k - 1] not in PUNCT:
         k -= 1
     return out[k:]
+
+
+#: "wherever they live / belong / go": a thing's home, as "where they belong" says
+_WHEREVER = ({"wherever"}, {"they", "it"}, {"live", "lives", "belong", "belongs", "go", "goes"})
+#: verbs that already say where a clause's things go
+_PUTTING = {"put", "move", "take", "bring", "get", "stick", "pop", "return", "carry", "place", "stash"}
+
+
+def wherever_they_belong(words: list[str], notes: list[str]) -> list[str]:
+    """ "shoes to wherever they live" (an arrow, or a clause with no verb) and "put the clothes
+    wherever they belong" are "put them where they belong": the things' home. A note says so."""
+    out: list[str] = []
+    start = 0
+    k = 0
+    while k < len(words):
+        w = words[k]
+        if w in PUNCT:
+            out.append(w)
+            start = len(out)
+            k += 1
+            continue
+        at = k + (words[k] == "to")
+        if all(at + j < len(words) and words[at + j] in s for j, s in enumerate(_WHEREVER)):
+            clause = out[start:]
+            if clause and clause[0] not in _PUTTING:
+                out[start:start] = ["put"]
+            out += ["where", "they", "belong"]
+            notes.append(f"'{' '.join(words[k:at + 3])}': where they belong (their home)")
+            k = at + 3
+            continue
+        out.append(w)
+        k += 1
+    return out
+
+
+#: "close whatever you opened (after)": what is done anyway
+_OPENED = (("close", "shut"), ("whatever", "everything", "anything", "what"), ("you",), ("opened", "open"))
+
+
+def closed_again(words: list[str], notes: list[str]) -> list[str]:
+    """The words without "close / shut whatever you opened (after, afterwards)": a container a plan
+    opens is closed again anyway (benchmarks/README.md), so the clause asks for nothing more. A
+    note says so. Anything else said in it keeps the clause read."""
+    for k in range(len(words)):
+        if all(k + j < len(words) and words[k + j] in s for j, s in enumerate(_OPENED)):
+            end = k + len(_OPENED)
+            end += words[end:end + 1] in (["up"],)
+            end += words[end:end + 1] in (["after"], ["afterwards"])
+            if (k == 0 or words[k - 1] in PUNCT or words[k - 1] in ("and", "then")) and (end == len(words) or words[end] in PUNCT):
+                notes.append(f"'{' '.join(words[k:end])}': a container a plan opens is closed again anyway")
+                start = k - 1 if k and words[k - 1] in ("and", "then") else k
+                return closed_again(words[:start] + words[end:], notes)
+    return words
+

@@ -19,8 +19,8 @@ from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
 from pipflow.household.language.names import named_by_first_word, things_of_kind, world_phrases
 from pipflow.household.language.retag import (act_before_noun, demonstratives, elided_it_is, left_lying, located,
                                               restated_order, without_hedges)
-from pipflow.household.language.rewrites import (caused, given, heat_purpose, measures, or_under_negation, particles,
-                                                 without_manner)
+from pipflow.household.language.rewrites import (caused, closed_again, given, heat_purpose, measures, or_under_negation,
+                                                 particles, wherever_they_belong, without_manner)
 from pipflow.household.language.tokens import PUNCT, Tag
 from pipflow.household.language.typos import (determiner_slip, known_word, meaning_of, transposition_of, typo_of,
                                               vocabulary)
@@ -103,6 +103,7 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
     words = or_under_negation(measures(without_manner(colloquial(corrected(words_of(command), notes), notes), notes), index, notes),
                               notes)
     words = heat_purpose(caused(given(me_as_where_the_speaker_is(words, index, notes), notes), notes), notes)
+    words = closed_again(wherever_they_belong(words, notes), notes)
     words = on_off_as_verbs(cut_as_switch(words, world, index, notes), world, index, notes)
     words = named_again(them_as_those(words, index, notes), index, notes)
     words = particles(words, lambda x: x.isalpha() and not known_word(x, index, vocab), notes)

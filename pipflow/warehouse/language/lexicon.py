@@ -38,7 +38,8 @@ FILLERS = {"the", "please", "kindly", "units", "unit", "pieces", "piece", "boxes
            "crate", "cases", "case", "pcs", "pallets", "pallet", "x", "exactly", "precisely",
            "actually", "really", "hey", "um", "uh", "ok,", "just", "right", "away", "quickly",
            "now", "today", "currently", "sku", "skus", "of", "moment", "pls", "plz", "asap", "thx",
-           "completely", "entirely", "immediately", "soon", "tonight", "thanks", "overnight"}
+           "completely", "entirely", "immediately", "soon", "tonight", "thanks", "overnight",
+           "sharpish", "pronto", "promptly", "swiftly"}
 #: packaging and measure nouns: "5 cartons of tape", "2 rolls of shrink wrap" count the item after
 #: "of". A world that names a product so ("carton") recognises it as that product first.
 FILLERS |= {"carton", "cartons", "roll", "rolls", "pack", "packs", "packet", "packets", "bundle",
@@ -65,6 +66,8 @@ LETTER_WORDS = {"n": "and", "w": "with"}
 #: spellings of two words run together as said ("outta the shed", "offa the rack"): read as the
 #: two words (the first keeps the text as written, the second has none of its own)
 RUN_TOGETHER = {"outta": ("out", "of"), "outa": ("out", "of"), "offa": ("off", "of"), "hafta": ("have", "to")}
+#: a count said in digits or words
+_NUMBER = r"(?:\d+|" + "|".join(sorted(NUMBER_WORDS, key=len, reverse=True)) + r")\b"
 #: idioms read as the plain words the grammar has: "leave it as she is" ("she" for a place or a
 #: load, as trades say), "all told" (in total), "keep it well away from P" (away from)
 IDIOMS = ((re.compile(r"\b(as|what)\s+she(?=\s+(?:is|was|stands|has)\b|['\u2019]s\b)", re.IGNORECASE), r"\1 it"),
@@ -86,7 +89,13 @@ IDIOMS = ((re.compile(r"\b(as|what)\s+she(?=\s+(?:is|was|stands|has)\b|['\u2019]
           # "(on top of what's there)" after "more" / "extra" in its sentence: in addition, which
           # those words say already
           (re.compile(r"\b((?:more|extra|additional)\b[^.;!?\n]*?),?\s*on\s+top\s+of\s+what(?:['\u2019]s|\s+is)\s+"
-                      r"(?:there|on\s+it)\b", re.IGNORECASE), r"\1"),
+                      r"(?:already\s+)?(?:there|on\s+it)\b", re.IGNORECASE), r"\1"),
+          # "one of each on P, on top of what's (already) there": one more of each (convention 7)
+          (re.compile(r"\bone\s+of\s+each\b([^.;!?\n]*?),?\s*on\s+top\s+of\s+what(?:['\u2019]s|\s+is)\s+"
+                      r"(?:already\s+)?(?:there|on\s+it)\b", re.IGNORECASE), r"one more of each\1"),
+          # "except those on P": the ones on P
+          (re.compile(r"\b(except|bar|but|apart\s+from|other\s+than)\s+those\s+(?=(?:on|in|at|from)\b)", re.IGNORECASE),
+           r"\1 the ones "),
           # "I'd like to see 12 X on P", "I want to see ...": what the speaker wants there
           (re.compile(r"\b(want|like|need)\s+to\s+see\b", re.IGNORECASE), r"\1"),
           # "none of the night shift robots are to be used": do not use them (the negation kept, said
@@ -94,8 +103,49 @@ IDIOMS = ((re.compile(r"\b(as|what)\s+she(?=\s+(?:is|was|stands|has)\b|['\u2019]
           (re.compile(r"\bnone\s+of\s+((?:the\s+)?[a-z_ ]+?)\s+(?:are|is)\s+to\s+be\s+used\b", re.IGNORECASE),
            r"dont use \1"),
           # "fill P with X, as far as it goes": to the limit, which "fill" says
-          (re.compile(r",?\s*\bas\s+far\s+as\s+(?:it|they)\s+(?:goes|go|will\s+go|can\s+go)\b", re.IGNORECASE), ""))
-_NUMBER = r"(?:\d+|" + "|".join(sorted(NUMBER_WORDS, key=len, reverse=True)) + r")\b"
+          (re.compile(r",?\s*\bas\s+far\s+as\s+(?:it|they)\s+(?:goes|go|will\s+go|can\s+go)\b", re.IGNORECASE), ""),
+          # "fill P up with X, as many as it'll take": the limit again, said after a fill only (elsewhere
+          # "as many as" is a count, read as said)
+          (re.compile(r"\b(fill\b[^.;!?\n]*?),?\s*as\s+(?:many|much)\s+as\s+(?:it|they)\s*(?:['\u2019]?ll|will|can|ll)?\s+"
+                      r"(?:take|hold|fit|go)\b", re.IGNORECASE), r"\1"),
+          (re.compile(r"\b(fill\b[^.;!?\n]*?),?\s*as\s+(?:many|much)\s+as\s+itll\s+(?:take|hold|fit|go)\b", re.IGNORECASE), r"\1"),
+          # a sentence "All the X into P" says no verb: a move, as the same words after "move" are (never
+          # before a count: "every shelf to 4 X" is a final count)
+          (re.compile(rf"(^|[.;!?]\s+)((?:all|every)\s+(?:of\s+)?(?:the\s+)?[a-z][a-z0-9_-]*\s+(?:to|into|onto|over\s+to)\s+)"
+                      rf"(?!(?:{_NUMBER}|\d))", re.IGNORECASE), r"\1move \2"),
+          # "P has at least 5 X on." closing its sentence: on it
+          (re.compile(r"\b(has|have|got|holds?)\b([^.;!?\n]*?\d[^.;!?\n]*?)\s+on(?=\s*(?:[.;!?]|$))", re.IGNORECASE), r"\1\2 on it"),
+          # "at the minute", "at the mo" (British): now
+          (re.compile(r"\bat\s+(?:the\s+)?(?:minute|mo)\b", re.IGNORECASE), "now"),
+          # "at the very least 3": at least ("at the very most": at most)
+          (re.compile(r"\bat\s+(?:the\s+)?very\s+(least|most)\b", re.IGNORECASE), r"at \1"),
+          # "..., not fussed where", "I'm not bothered which": the speaker leaves open what the
+          # command leaves open; it fixes nothing, and is left out ("don't mind which" likewise)
+          (re.compile(r"[,;]?\s*\b(?:(?:i\s*['\u2019]?m|im|i\s+am)\s+)?not\s+(?:fussed|bothered|mithered|picky|particular)"
+                      r"\s+(?:where|which|what|how|who|about\s+which)\b", re.IGNORECASE), ""),
+          (re.compile(r"[,;]?\s*\bi\s+(?:don['\u2019]?t|do\s+not)\s+mind\s+(?:where|which|how|who)\b", re.IGNORECASE), ""),
+          # "..., no excuses": insisting, no content
+          (re.compile(r"[,;]?\s*\bno\s+(?:excuses|messing(?:\s+about|\s+around)?|arguments)\b", re.IGNORECASE), ""),
+          # "forklifts only on this lot (job, run)" and bare "on this": "on this one", the job
+          (re.compile(r"\bonly\s+on\s+this(?:\s+(?:lot|job|run|batch))?(?!\s+one\b)\b", re.IGNORECASE), "only on this one"),
+          # northern "an' all" closing a clause: as well
+          (re.compile(r"\ban['\u2019]?\s+all\b(?=\s*(?:[.,;:!?]|$))", re.IGNORECASE), "as well"),
+          # "every shelf in the place": every shelf (the place, the building: the whole store)
+          (re.compile(r"\b(every|each|all(?:\s+the)?)\s+([a-z]+)\s+in\s+the\s+(?:place|building|warehouse|shed|site)\b",
+                      re.IGNORECASE), r"\1 \2"),
+          # "all them flatpacks", "both those racks": the demonstrative after "all" / "both" is "the"
+          # (never before a preposition or a link word: "all those on P" is left as said)
+          (re.compile(r"\b(all|both)\s+(?:them|those|these)\s+(?!(?:on|in|at|from|to|of|off|over|out|up|down|that|which|there|"
+                      r"here|and|or|but|with|for|are|is|were|was|will|should|must|can|go|going)\b)(?=[a-z])", re.IGNORECASE), r"\1 the "),
+          # "share X out (even) between P and Q": the particle of "share out" says what "share" says;
+          # "even" before "between" is "evenly"
+          (re.compile(r"\b((?:share|split|divide|spread|dish|parcel)\b[^.;!?\n]*?)\s+out\s+(?=(?:even|evenly|equally|between|"
+                      r"among|amongst|across|over)\b)", re.IGNORECASE), r"\1 "),
+          (re.compile(r"\beven\s+(?=(?:between|among|amongst|across)\b)", re.IGNORECASE), "evenly "),
+          # "and despatch (the) same", "same for despatch": the elided statement again, as "too" says
+          (re.compile(r"\band\s+([a-z][a-z0-9_-]*)\s+(?:the\s+)?same\b(?=\s*(?:[.,;:!?]|$))", re.IGNORECASE), r"and \1 too"),
+          (re.compile(r"[.,;]\s*(?:and\s+)?(?:the\s+)?same\s+(?:for|with|goes\s+for)\s+([a-z][a-z0-9_-]*)\b(?=\s*(?:[.,;:!?]|$))",
+                      re.IGNORECASE), r", and \1 too"))
 #: the order of words of a speaker whose first language puts them so (Portuguese and Spanish
 #: "mais 4", "mais de 4", "o dobro de", "longe de"), read as English puts them: "add more 4 tubes"
 #: is "add 4 more tubes", "no more of 4" is "no more than 4", "the double of the saddles" is
@@ -105,6 +155,10 @@ WORD_ORDER = ((re.compile(rf"\bmore\s+({_NUMBER})(?!\s*(?:than|%|percent))", re.
               (re.compile(rf"\b(more|less|fewer)\s+of\s+(?={_NUMBER})", re.IGNORECASE), r"\1 than "),
               (re.compile(r"\b(?:the\s+)?(double|triple)\s+of\b", re.IGNORECASE), r"\1"),
               (re.compile(r"\baway\s+of\b", re.IGNORECASE), "away from"),
+              # "a dozen less two": minus, between two amounts only ("2 less than" is read as said)
+              (re.compile(rf"\b({_NUMBER})\s+less\s+(?={_NUMBER})", re.IGNORECASE), r"\1 minus "),
+              # "give us / give me 4 more X on P": the more wanted there ("give" alone names no place)
+              (re.compile(rf"\bgive\s+(?:us|me)\s+(?=(?:{_NUMBER})\s+(?:more|extra)\b)", re.IGNORECASE), ""),
               # "P has 4 X too much" (Dutch "te veel", German "zu viel"): too many
               (re.compile(rf"\b({_NUMBER}\s+[a-z]+\s+)too\s+much\b", re.IGNORECASE), r"\1too many"),
               # "fill P up to the top": the article of "the top" / "the brim" says nothing
@@ -372,6 +426,37 @@ def _base_verb(word: str, verbs: Collection[str]) -> str | None:
         return None
     stem = word[:-3]
     return next((v for v in (stem, stem + "e", stem[:-1]) if v in verbs and len(v) > 1), None)
+
+
+#: "P wants / needs <verb>ing ...": the verb said of its object ("intake's totes want moving to
+#: cage", "dock 2 needs emptying"); British English, and general with "need"
+_NEEDING = frozenset({"need", "needs", "want", "wants"})
+#: the most words of the object said before :data:`_NEEDING`
+_MOST_SUBJECT = 8
+
+
+def needs_doing(toks: list[Tok], verbs: Collection[str]) -> list[Tok]:
+    """The tokens with each clause "<object> needs <verb>ing <rest>" read as "<verb> <object>
+    <rest>", where the object opens the clause, names something of the world and holds no mark,
+    and "<verb>ing" is the "-ing" form of a verb of ``verbs``. Nothing is added: the same words in
+    the order of an order ("P needs emptying" is "empty P")."""
+    out: list[Tok] = []
+    start, k = 0, 0
+    while k < len(toks):
+        t = toks[k]
+        subject = out[start:]
+        if (t.kind == "word" and t.value in _NEEDING and k + 1 < len(toks) and toks[k + 1].kind == "word"
+                and 0 < len(subject) <= _MOST_SUBJECT and any(x.kind == "name" for x in subject)):
+            verb = _base_verb(str(toks[k + 1].value), verbs)
+            if verb is not None:
+                out[start:] = [Tok("word", toks[k + 1].text, verb), *subject]
+                k += 2
+                continue
+        out.append(t)
+        if t.kind == "punct":
+            start = len(out)
+        k += 1
+    return out
 
 
 def _subject_framed(toks: list[Tok], k: int) -> list[Tok] | None:
@@ -985,6 +1070,7 @@ class Lexicon:
             fixed.append(t)
         toks, framed = without_request_frames(read_counts(_split_hyphens(fixed, self.keywords)),
                                               {w for w in self.keywords if " " not in w} | set(VERB_LEXICON))
+        toks = needs_doing(toks, {w for w in self.keywords if " " not in w} | set(VERB_LEXICON))
         toks = lexicon_verbs(quantity_phrases(addressed_anyone(stative_having(toks)), self.keywords), self.keywords)
         toks = dropped_object(corrected_later(without_particles(corrected(toks))))
         self._framed = (radio.aside if radio is not None else []) + framed
