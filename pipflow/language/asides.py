@@ -72,11 +72,13 @@ FUNCTION_WORDS = frozenset({
 OBJECT_PRONOUNS = frozenset({"it", "them", "this", "that", "these", "those", "him", "her", "everything"})
 #: words that open a greeting or a thanks; with nothing after them but addressees, the clause is talk
 GREETINGS = frozenset({"hi", "hello", "hey", "hiya", "heya", "howdy", "morning", "afternoon", "evening", "good", "dear",
-                       "greetings", "yo", "cheers", "thanks", "thank", "ta", "thx", "ok", "okay", "alright"})
+                       "greetings", "yo", "cheers", "thanks", "thank", "ta", "thx", "ok", "okay", "alright",
+                       # South African greetings ("Howzit team", "Sawubona team", "Molo all")
+                       "howzit", "sawubona", "molo", "dumela", "heita"})
 #: words that open an apology or a thanks for something ("sorry for the late ask", "thanks for
 #: earlier"): what follows "for" / "about" is what one is sorry or thankful for, not an order
 PLEASANTRIES = frozenset({"sorry", "apologies", "apologise", "apologize", "pardon", "thanks", "thank", "thx",
-                          "ta", "cheers", "ty", "grateful", "appreciate", "appreciated"})
+                          "ta", "cheers", "ty", "grateful", "appreciate", "appreciated", "dankie"})
 #: words that open a statement about someone or something ("she's been dropping them", "it's broken"):
 #: a verb acting on a pronoun after them reports what happened, it asks for nothing
 SUBJECTS = frozenset({"i", "im", "ive", "we", "were", "weve", "he", "hes", "she", "shes", "it", "its", "they",
@@ -90,11 +92,12 @@ ADDRESSEES = frozenset({"all", "everyone", "everybody", "team", "folks", "guys",
 
 
 #: a thanks that can close an order without a comma before it ("... to bay 2 ta")
-THANKS = frozenset({"thanks", "ta", "cheers", "thx", "ty", "tyvm", "thankyou"})
+THANKS = frozenset({"thanks", "ta", "cheers", "thx", "ty", "tyvm", "thankyou", "dankie"})
 #: who an order is said to, or a tag that closes it, without a comma before it ("... on dispatch
 #: please mate", "... forklifts only mind", "... thanks lads"): never a word that is operative
 CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "boss", "love", "pet", "hun",
-                     "mind", "yeah", "eh", "cheers", "ta", "thanks", "thx", "ty", "tyvm", "thankyou"})
+                     "mind", "yeah", "eh", "cheers", "ta", "thanks", "thx", "ty", "tyvm", "thankyou", "dankie",
+                     "man", "bru", "boet", "chale"})
 
 
 #: a request tag after an order ("... over to the shed would ya", "... could you"): it asks
@@ -187,8 +190,8 @@ def near_operative(word: str) -> bool:
     "olny", "exept", "onlu"): a misspelt "not" or "only" must never be read as talk."""
     if word in OPERATIVE:
         return True
-    if word in FUNCTION_WORDS:   # a word in its own right: "the" is no slip of "then", "on" none of "no"
-        return False
+    if word in FUNCTION_WORDS or word in INTERJECTIONS:   # a word in its own right: "the" is no slip of
+        return False                                      # "then", "on" none of "no", "shame" none of "same"
     return len(word) >= 3 and any(slip(word, o) for o in OPERATIVE if len(o) >= 3)
 
 
@@ -263,7 +266,7 @@ def is_statement(words: Iterable[str], names: Callable[[str], bool]) -> bool:
         return False
     pronoun = ws[0] in (SUBJECTS | _SUBJECT_BE) - {"there", "theres", "youre"}
     noun = ws[0] not in FINITE and ws[0] not in FUNCTION_WORDS - DETERMINERS and any(
-        w in FINITE or (w.endswith("ing") and len(w) > 4 and ws[0] in DETERMINERS) for w in ws[1:4])
+        w in FINITE or (w.endswith("ing") and len(w) > 4 and ws[0] in DETERMINERS) for w in ws[1:5])
     if not (pronoun or noun or _past_of_a_noun(ws)):
         return False
     return _asks_nothing(ws, names)
@@ -289,7 +292,11 @@ def _past_of_a_noun(ws: list[str]) -> bool:
 
 def _asks_nothing(ws: list[str], names: Callable[[str], bool]) -> bool:
     """No operative word (:func:`_operative_at`), name, number, word of wanting or word for robots
-    in a statement: it says what is so, and asks for nothing."""
+    in a statement: it says what is so, and asks for nothing. An "again" closing it says that what
+    it reports happened once more ("the truck is late again"), no repeat of an order."""
+    while len(ws) > 2 and ws[-1] in INTERJECTIONS:   # "... late again eish"
+        ws = ws[:-1]
+    ws = ws[:-1] if len(ws) > 2 and ws[-1] == "again" else ws
     return not any(_operative_at(ws, k) or names(w) or _asks(ws, k) or w in ROBOT_WORDS for k, w in enumerate(ws))
 
 
@@ -310,6 +317,12 @@ DURATIONS = frozenset({"day", "night", "week", "weekend", "month", "year", "morn
                        "summer", "winter", "time"})
 
 
+def _just_now(ws: list[str], k: int) -> bool:
+    """Whether the word at ``k`` is the "just" of "just now", a time (South African: later; British:
+    a moment ago), neither "only" nor a word of a domain's grammar."""
+    return ws[k] == "just" and k + 1 < len(ws) and ws[k + 1] == "now"
+
+
 def _operative_at(ws: list[str], k: int) -> bool:
     """:func:`near_operative` of the word at ``k``, except a word of :data:`_WHERE_BEFORE_THERE`
     before "there" or "here", a word of :data:`TEMPORAL` before a time (:data:`TIMES_SAID`), and
@@ -318,6 +331,8 @@ def _operative_at(ws: list[str], k: int) -> bool:
     if ws[k] in _WHERE_BEFORE_THERE and nxt in ("there", "here"):
         return False
     if ws[k] in TEMPORAL and nxt in TIMES_SAID:
+        return False
+    if _just_now(ws, k):
         return False
     if ws[k] == "all" and (nxt in DURATIONS or (nxt == "the" and k + 2 < len(ws) and ws[k + 2] in DURATIONS)):
         return False
@@ -426,6 +441,13 @@ CLOSINGS = frozenset({(*that, *rest, *later) for that in (("thats",), ("that", "
                       for later in ((), ("for", "now"), ("for", "today"), ("for", "tonight"), ("then",))})
 
 
+#: whole clauses that only urge the order said before them ("..., sort it out", "get it done"):
+#: their "it" is that order, no thing
+URGINGS = frozenset({("sort", "it", "out"), ("sort", "it"), ("sort", "that", "out"), ("sort", "it", "out", "now"),
+                     ("get", "it", "sorted"), ("get", "it", "done"), ("get", "that", "done"), ("make", "it", "happen"),
+                     ("see", "to", "it"), ("chop", "chop")})
+
+
 def is_opener(words: Iterable[str]) -> bool:
     """A whole clause that only opens a request ("Quick one", "Right then": :data:`OPENERS`)."""
     return tuple(w for w in words if w) in OPENERS
@@ -458,7 +480,11 @@ INTERJECTIONS = frozenset({
     "incidentally", "ideally", "hopefully", "obviously", "frankly", "personally", "apparently", "unfortunately",
     "fortunately", "luckily", "sadly", "importantly", "actually", "regardless", "sincerely", "regards",
     # how to do it, said alone ("and - careful - the rocking horse"): a manner, no one addressed
-    "careful", "carefully", "gently", "slowly", "quietly", "steady", "easy", "gingerly", "safely"})
+    "careful", "carefully", "gently", "slowly", "quietly", "steady", "easy", "gingerly", "safely",
+    # South African and West African English ("eish", "ag", "ja", "yebo", "hayibo", "shame" for
+    # sympathy, "lekker"; Ghanaian "chale", "ei", "abi")
+    "eish", "ag", "ja", "yebo", "hayibo", "haibo", "jislaaik", "lekker", "shame", "sho", "chale", "ei", "eii",
+    "abi", "ehe"})
 
 
 def addressee(words: list[str]) -> str | None:
@@ -507,7 +533,7 @@ def content_free(words: Iterable[str], content: Callable[[str], bool],
     name = addressee(ws)
     if name is not None:
         return robot(name)   # "Hornet, ...": set aside only when it names a robot of the world
-    if is_greeting(ws) or tuple(ws) in CLOSINGS:
+    if is_greeting(ws) or tuple(ws) in CLOSINGS or tuple(ws) in URGINGS:
         return True   # its "all" or "team" is who is greeted, no quantifier or robot group
     if names is not None and is_pleasantry(ws, names):
         return True
@@ -518,7 +544,7 @@ def content_free(words: Iterable[str], content: Callable[[str], bool],
     if ws[0] not in SUBJECTS and any(w not in FUNCTION_WORDS and nxt in OBJECT_PRONOUNS
                                      for w, nxt in zip(ws, ws[1:])):
         return False  # "..., recount them": an instruction about a thing, in a verb not read
-    return not any(_operative_at(ws, k) or content(w) for k, w in enumerate(ws))
+    return not any(_operative_at(ws, k) or (content(w) and not _just_now(ws, k)) for k, w in enumerate(ws))
 
 
 def clauses(words: list[str], marks: set[str]) -> list[Clause]:

@@ -122,6 +122,39 @@ def _ascii_spelling(word: str) -> str | None:
     return spelled if spelled != word else None
 
 
+#: pictographs that say how the writer feels and nothing else: faces, hands and gestures, hearts
+#: (ranges of code points; a food, a number in a box, an arrow or a tick is none: those could say
+#: what to move or how many, and stay refused as symbols)
+_EXPRESSION_RANGES = ((0x1F600, 0x1F64F),   # emoticons: faces and gestures ("🙄", "🙏")
+                      (0x1F910, 0x1F92F),   # supplemental faces and hands ("🤦", "🤞")
+                      (0x1F930, 0x1F93A),   # people gesturing ("🤷")
+                      (0x1F970, 0x1F97A),   # faces ("🥲", "🥵")
+                      (0x1F9D0, 0x1F9D0),   # face with monocle
+                      (0x1F44A, 0x1F450),   # hands ("👍", "👌", "👏")
+                      (0x1F4AA, 0x1F4AA),   # flexed biceps
+                      (0x1F590, 0x1F596),   # raised hands
+                      (0x1F493, 0x1F49F),   # hearts
+                      (0x2763, 0x2764),     # heart marks
+                      (0x2639, 0x263A))     # frowning and smiling face
+#: what may follow such a pictograph within it: skin tones, the joiner, a variation selector, and
+#: the gender signs that a joiner adds ("🤦‍♂️")
+_EXPRESSION_PARTS = "\U0001F3FB-\U0001F3FF\u200d\ufe0f\u2640\u2642"
+_EXPRESSION = re.compile("(?:[" + "".join(f"{chr(a)}-{chr(b)}" for a, b in _EXPRESSION_RANGES)
+                         + "][" + _EXPRESSION_PARTS + "]*)+")
+
+
+def without_expressions(command: str) -> tuple[str, list[str]]:
+    """The command with its pictographs of feeling (faces, hands, hearts: :data:`_EXPRESSION_RANGES`)
+    read as the end of a sentence, and those pictographs, to be said as set aside. People end a
+    message or a sentence with one ("dispatch is short again 🙄 send 4 more"); it holds no count,
+    name or word of an order. Every other character outside the alphabet is still refused
+    (:func:`refuse_unread`)."""
+    found = _EXPRESSION.findall(command)
+    if not found:
+        return command, []
+    return _EXPRESSION.sub(" . ", command), found
+
+
 def line_readings(command: str) -> list[str]:
     """The readings of a command's line breaks: ``[command]`` when no line break is inside it;
     otherwise the command with each break read as the end of a sentence (first) and, as a second

@@ -20,6 +20,10 @@ def words_under(tags: list[Tag], node: Tree | Token) -> str:
     return " ".join(tags[k].words for k in idx)
 
 
+
+#: what a thing left so keeps besides its place: its states ("leave the cooler alone": still dirty)
+AS_IS = {"alone", "as it is", "as they are"}
+
 class Builder:
     """One parse tree -> one order (``schemas/household_order.schema.json``)."""
 
@@ -272,8 +276,9 @@ class Builder:
             st = {"op": "tend", "things": things, "said": True}
         elif kind == "handling":   # "the wok is too heavy for one of you": how, for a later clause
             st = {"op": "handling", "things": things}
-        elif kind == "keep":   # "leave the hoodie where it is"
-            st = {"op": "keep", "things": things}
+        elif kind == "keep":   # "leave the hoodie where it is"; "leave it alone", "don't touch it": as it is too
+            stay = next((self.tag_of(x).words for x in self._tokens(node) if self._cls(x) == "STAY"), "")
+            st = {"op": "keep", "things": things, "as_is": self._has(node, "V_TOUCH") or stay in AS_IS}
         elif kind == "empty":   # "empty the fridge onto the counter": everything in it
             place = self.place(self._sub(node, "place"))
             st = {"op": "put", "things": [{"words": f"everything in {place['words']}", "everything": True,

@@ -74,6 +74,16 @@ def spelled_out_swap(words: list[str], notes: list[str]) -> list[str]:
     return out
 
 
+#: particles that close a clause for emphasis in West African English ("do it fast o", "close the
+#: fridge back o", "thank you oo"): only before a stop or a comma, where no word of an order stands
+_CLOSING_PARTICLES = {"o", "oo", "ooo"}
+
+
+def _after(words: list[str], k: int) -> str:
+    """The word after ``k``, or "." at the end."""
+    return words[k + 1] if k + 1 < len(words) else "."
+
+
 def colloquial(words: list[str], notes: list[str]) -> list[str]:
     """The words with the colloquial phrases of the module docstring read as the grammar's words."""
     words = spelled_out_swap(words, notes)
@@ -85,6 +95,15 @@ def colloquial(words: list[str], notes: list[str]) -> list[str]:
         if pair in _ALSO and after in PUNCT and out and out[-1] not in PUNCT:
             notes.append(f"'{' '.join(pair)}' closing a clause read as 'too'")
             out += _ALSO[pair]
+            k += 2
+            continue
+        if words[k] in _CLOSING_PARTICLES and _after(words, k) in PUNCT and out and out[-1] not in PUNCT:
+            notes.append(f"'{words[k]}' closing a clause: a particle of emphasis (West African English), no word of the order")
+            k += 1
+            continue
+        if pair[:1] == pair[1:] and PHRASES.get(pair[:1], ("",))[0] == "ADJ" and out and out[-1] not in PUNCT:
+            notes.append(f"'{' '.join(pair)}': the state said twice for emphasis, read once")
+            out.append(words[k])
             k += 2
             continue
         four = tuple(words[k:k + 4])

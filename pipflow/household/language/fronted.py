@@ -100,3 +100,30 @@ def fronted_objects(tags: list[Tag]) -> tuple[list[Tag], list[str]] | None:
             out[k:v + 3] = [out[v + 1]] + phrase
         k = end
     return (out, moved) if moved else None
+
+
+def topic_too(tags: list[Tag]) -> tuple[list[Tag], list[str]]:
+    """The tags without the "too" of a thing named first, as well as the things before, whose verb
+    comes later in its sentence with a pronoun for it: "The school bag too, it's on the settee,
+    take it to the study desk" is the school bag, taken to the desk; not the verb before said again
+    for it ("close the school bag"), which the clause's own verb contradicts. Only where a clause of
+    that sentence opens with a verb that takes a thing, right after a comma, and "it" or "them"
+    follows the verb at once; with "then" or "and" before it the clause is a further step, and
+    "too" keeps its reading. Returns the tags and a note for each "too" so read."""
+    out = list(tags)
+    said: list[str] = []
+    k = 0
+    while k < len(out):
+        end = _phrase_end(out, k) if (k == 0 or out[k - 1].cls in BREAKS) else None
+        if end is None or end + 1 >= len(out) or out[end].cls != "TOO" or out[end + 1].cls != "COMMA":
+            k += 1
+            continue
+        stop = next((j for j in range(end + 2, len(out)) if out[j].cls in BREAKS), len(out))
+        verb = next((j for j in range(end + 1, stop - 2) if out[j].cls == "COMMA" and out[j + 1].cls in VERBS
+                     and out[j + 2].cls == "IT" and out[j + 2].words in ("it", "them")), None)
+        if verb is not None:
+            said.append(f"'{' '.join(t.words for t in out[k:end + 1])}, ... {out[verb + 1].words} "
+                        f"{out[verb + 2].words}': the thing named first, with its own verb later ('too': as well)")
+            del out[end]
+        k = end
+    return out, said

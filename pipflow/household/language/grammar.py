@@ -27,7 +27,7 @@ _sep: COMMA | END | @AND | @THEN | @BUT | @EXCL
 
 ?item: change | toggle | put | gap | away | trash | chill | request | unwant | ensure | observe | cue | meal | after | reason
       | tend | notvia | usevia
-      | keep //+ STAY
+      | keep //+ STAY V_TOUCH
       | empty //+ V_EMPTY
       | desire
       | handling //+ HANDLING TAKESTWO
@@ -197,6 +197,7 @@ tend: @V_TEND @OUT? things | @V_TEND things @OUT
     | (place | @ROOMSAID) @IS @FULLOF things -> mess //+ FULLOF
 
 keep: @V_LEAVE things @STAY
+    | @DONOT @V_TOUCH things
 handling: sthings @IS (@INTENS | @TOO)* @HANDLING @FORONE?
         | sthings @TAKESTWO //+ TAKESTWO
 empty: @V_EMPTY @OUT? place target?

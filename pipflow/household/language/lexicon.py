@@ -159,6 +159,8 @@ _add("V_THROW", "throw,toss,chuck")
 _add("V_TRASH", "trash,discard,bin,dump,junk,get rid of,dispose of,throw away,throw out")
 _add("V_TIDY", "tidy,return,clear away")
 _add("V_LEAVE", "leave,keep")
+#: "don't touch my cooler": the thing stays as and where it is, as "leave it alone" says
+_add("V_TOUCH", "touch,disturb,mess with,fiddle with")
 _add("V_MAKE", "make")
 #: "heat the pie, not in the oven, use the hob": the place an action happens, said after it
 _add("V_USE", "use,do it in,do it on")
@@ -534,7 +536,10 @@ FILLER = {("um",), ("umm",), ("uh",), ("uhh",), ("uhm",), ("er",), ("erm",),   #
           ("the", "pair", "of", "you"), ("you", "guys"), ("guys",), ("hang", "on"), ("hold", "on"),
           # texting: laughter, "right now", "real quick", and words of emphasis that grade nothing
           ("lol",), ("lmao",), ("haha",), ("hahaha",), ("rn",), ("right", "now"), ("real", "quick"),
-          ("literally",), ("tbh",), ("btw",), ("fyi",), ("omg",), ("ugh",), ("ngl",)}
+          ("literally",), ("tbh",), ("btw",), ("fyi",), ("omg",), ("ugh",), ("ngl",),
+          # Ghanaian and South African English exclamations and Twi "please" ("Ei the sink!", "Chale
+          # ...", "..., abi?", "mepa wo kyew", "yoo": all right), said beside the request
+          ("ei",), ("eii",), ("chale",), ("abi",), ("yoo",), ("mepa", "wo", "kyew"), ("eish",), ("hayibo",)}
 #: endearments and praise that close or open a request ("..., there's a love", "..., there's a good
 #: girl", "good lad, ..."): said to the one asked, they carry nothing; "mind you" / "mind and"
 #: before a verb is "make sure you" (northern and Scots English: "and mind you shut the door after")

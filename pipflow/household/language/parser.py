@@ -33,7 +33,7 @@ from lark.visitors import CollapseAmbiguities
 from pipflow.errors import TranslationError
 from pipflow.household.language.builder import Builder
 from pipflow.household.language.conditions import conditions_read
-from pipflow.household.language.fronted import fronted_objects
+from pipflow.household.language.fronted import fronted_objects, topic_too
 from pipflow.household.language.grammar import NOUN_DUAL, base_class, gated_classes, grammar_text
 from pipflow.household.language.lacking import lacking
 from pipflow.household.language.lexicon import ARROW, MARKS, PHRASES, arrows_said_as
@@ -43,7 +43,7 @@ from pipflow.household.language.setaside import without_asides
 from pipflow.household.language.tagger import owners_as_the, tag
 from pipflow.household.language.tokens import Tag
 from pipflow.language.asides import said
-from pipflow.language.characters import refuse_unread
+from pipflow.language.characters import refuse_unread, without_expressions
 from pipflow.language.earley import ListLexer
 from pipflow.language.lookahead import with_lookahead
 
@@ -84,6 +84,10 @@ def parse(command: str, world: dict, notes: list[str] | None = None) -> list[dic
 
 def _parse_said(command: str, world: dict, notes: list[str]) -> list[dict]:
     """:func:`parse` of a command whose arrows are said in words."""
+    # "... before Nana wakes 🙏": a face or a gesture ends a sentence, and is said as set aside
+    command, feelings = without_expressions(command)
+    if feelings:
+        notes.append(said(feelings))
     refuse_unread(command, MARKS)   # a character this reader does not read is refused, never skipped
     command = owners_as_the(command, world, notes)
     command = conditions_read(command, world, notes)   # "if the lamp is on, switch it off"
@@ -152,7 +156,8 @@ def _parse_with_asides(command: str, world: dict, notes: list[str]) -> list[dict
 
 def _parse(command: str, world: dict, notes: list[str]) -> list[dict]:
     """:func:`parse` of the command as said."""
-    tags = tag(command, world, notes)
+    tags, topics = topic_too(tag(command, world, notes))
+    notes += topics
     if not [t for t in tags if t.cls not in ("END", "COMMA")]:
         raise TranslationError(f"{command.strip()!r} asks for nothing the offline parser can read")
     try:

@@ -349,6 +349,18 @@ class Resolver:
         if old is None or old.cond != cond or (explicit and not old.explicit):
             have[pred] = _Condition(cond, explicit, words)
 
+    def keep_states(self, name: str, words: str) -> None:
+        """The states the world file writes for a thing, held as they are now ("don't touch my
+        cooler": it stays dirty); a state it leaves unwritten is no part of what was said."""
+        written = (self.world["objects"][name].get("state") or {})
+        for cond, (pred, _, _) in CONDITIONS.items():
+            if _FLAG[pred] in written and applies(self.world, name, cond) and holds_now(self.world, name, cond):
+                old = self.goal.state.get(name, {}).get(pred)
+                if old is not None and old.cond != cond and old.explicit:
+                    raise TranslationError(f"the command asks for {name} to be {old.cond} ('{old.words}') "
+                                           f"and left as it is, {cond} ('{words}')")
+                self.set_state(name, cond, True, words)
+
     def put(self, obj: str, place: str, words: str) -> None:
         if obj not in self.world["objects"]:
             # "something's gone off in the fridge, get rid of it": what "it" names there is the
@@ -536,6 +548,8 @@ class Resolver:
                 if n not in self.world["objects"]:
                     raise TranslationError(f"'{words}': {n} is a place; it stays where it is whatever is done")
                 self.put(n, self.world["objects"][n]["in"], words)
+                if st.get("as_is"):
+                    self.keep_states(n, words)
             self.last = [n for n, _ in named]
         else:
             raise TranslationError(f"'{words}': unknown statement {op!r}")

@@ -20,7 +20,7 @@ from pipflow.errors import InputError, Refusal, TranslationError
 from pipflow.language.asides import (FUNCTION_WORDS, OPERATIVE, Clause, clauses, content_free, is_opener, leading_reason,
                                      said_talk, signature, trailing_adjunct, trailing_thanks, unmarked_statement)
 from pipflow.language.asterisk import star_corrections
-from pipflow.language.characters import refuse_unread
+from pipflow.language.characters import refuse_unread, without_expressions
 from pipflow.language.english import common_word
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS, is_number
 from pipflow.language.radio import transmission
@@ -39,7 +39,9 @@ FILLERS = {"the", "please", "kindly", "units", "unit", "pieces", "piece", "boxes
            "actually", "really", "hey", "um", "uh", "ok,", "just", "right", "away", "quickly",
            "now", "today", "currently", "sku", "skus", "of", "moment", "pls", "plz", "asap", "thx",
            "completely", "entirely", "immediately", "soon", "tonight", "thanks", "overnight",
-           "sharpish", "pronto", "promptly", "swiftly"}
+           "sharpish", "pronto", "promptly", "swiftly",
+           # South African interjections, said anywhere in a sentence ("ag the cage is packed", "ja so swap")
+           "eish", "ag", "ja", "yebo", "hayibo", "haibo", "jislaaik"}
 #: packaging and measure nouns: "5 cartons of tape", "2 rolls of shrink wrap" count the item after
 #: "of". A world that names a product so ("carton") recognises it as that product first.
 FILLERS |= {"carton", "cartons", "roll", "rolls", "pack", "packs", "packet", "packets", "bundle",
@@ -115,6 +117,10 @@ IDIOMS = ((re.compile(r"\b(as|what)\s+she(?=\s+(?:is|was|stands|has)\b|['\u2019]
                       rf"(?!(?:{_NUMBER}|\d))", re.IGNORECASE), r"\1move \2"),
           # "P has at least 5 X on." closing its sentence: on it
           (re.compile(r"\b(has|have|got|holds?)\b([^.;!?\n]*?\d[^.;!?\n]*?)\s+on(?=\s*(?:[.;!?]|$))", re.IGNORECASE), r"\1\2 on it"),
+          # South African "sharp sharp" (all right, goodbye, quickly): no content
+          (re.compile(r"[,;]?\s*\bsharp\s+sharp\b", re.IGNORECASE), ""),
+          # "just now", "now now" closing a clause (South African: later, soon): a time, as "now" is
+          (re.compile(r"\b(?:just|now)\s+now\b(?=\s*(?:[.,;:!?]|$))", re.IGNORECASE), "now"),
           # "at the minute", "at the mo" (British): now
           (re.compile(r"\bat\s+(?:the\s+)?(?:minute|mo)\b", re.IGNORECASE), "now"),
           # "at the very least 3": at least ("at the very most": at most)
@@ -145,7 +151,19 @@ IDIOMS = ((re.compile(r"\b(as|what)\s+she(?=\s+(?:is|was|stands|has)\b|['\u2019]
           # "and despatch (the) same", "same for despatch": the elided statement again, as "too" says
           (re.compile(r"\band\s+([a-z][a-z0-9_-]*)\s+(?:the\s+)?same\b(?=\s*(?:[.,;:!?]|$))", re.IGNORECASE), r"and \1 too"),
           (re.compile(r"[.,;]\s*(?:and\s+)?(?:the\s+)?same\s+(?:for|with|goes\s+for)\s+([a-z][a-z0-9_-]*)\b(?=\s*(?:[.,;:!?]|$))",
-                      re.IGNORECASE), r", and \1 too"))
+                      re.IGNORECASE), r", and \1 too"),
+          # "as many X as it has Y": the place said already; "as many X as Y" on it ("as many X as it
+          # has now" is twice its own count, read as said)
+          (re.compile(r"\b(as\s+(?:many|much)\s+[a-z][a-z0-9_-]*\s+as)\s+(?:it|she)\s+(?:has|holds|got|has\s+got)\b"
+                      r"(?=\s+(?!(?:now|today|currently|right|at|already|there|here|on|in|of|to)\b)[a-z])", re.IGNORECASE),
+           r"\1"),
+          # "check P, it needs ...": look at P; "it" is P, the sentence says what P needs
+          (re.compile(r"(^|[.;!?]\s*)check\s+(?:on\s+)?((?:the\s+)?[a-z][a-z0-9_ -]{0,24}?)(?:\s*,?\s*(?:pls|please|plz))?\s*,\s*"
+                      r"(?:it|she)\b(?=\s*(?:is|has|needs|should|must|shld)\b)", re.IGNORECASE), r"\1\2"),
+          # "swap P and Q, the whole lot, everything (on them)": a whole swap, which "swap P and Q" is
+          (re.compile(r"\b(swap\s[^.,;!?\n]*?\band\s[^.,;!?\n]*?)\s*[,.:]\s*(?:(?:the\s+)?whole\s+lot|everything|all\s+of\s+it)"
+                      r"(?:\s*,\s*(?:(?:the\s+)?whole\s+lot|everything|all\s+of\s+it))*(?:\s+on\s+(?:them|both|there))?"
+                      r"(?=\s*(?:[.;!?]|$))", re.IGNORECASE), r"\1"))
 #: the order of words of a speaker whose first language puts them so (Portuguese and Spanish
 #: "mais 4", "mais de 4", "o dobro de", "longe de"), read as English puts them: "add more 4 tubes"
 #: is "add 4 more tubes", "no more of 4" is "no more than 4", "the double of the saddles" is
@@ -456,6 +474,29 @@ def needs_doing(toks: list[Tok], verbs: Collection[str]) -> list[Tok]:
         if t.kind == "punct":
             start = len(out)
         k += 1
+    return out
+
+
+#: words that open a sentence with the place things come from, before the verb ("from rack B send 2
+#: X to P", "off the cage take 3 X")
+_SOURCES = frozenset({"from", "off"})
+
+
+def fronted_source(toks: list[Tok], verbs: Collection[str]) -> list[Tok]:
+    """The tokens with a comma after a source fronted without one: a sentence opened by "from" or
+    "off" and one place, then a verb of ``verbs`` ("from rack B send 2 rooibos to the cage"), reads
+    as "from rack B, send ...", which the grammar reads as it reads a fronted source said with its
+    comma. Nothing is added but the comma."""
+    def word(j: int, words: Collection[str]) -> bool:
+        return 0 <= j < len(toks) and toks[j].kind == "word" and toks[j].value in words
+
+    out: list[Tok] = []
+    for k, t in enumerate(toks):
+        out.append(t)
+        j = k - 2 if word(k - 1, ("the",)) else k - 1   # "from the cage"
+        if (t.kind == "name" and t.of == "shelf" and word(j, _SOURCES) and (j == 0 or toks[j - 1].kind == "punct")
+                and word(k + 1, verbs)):
+            out.append(Tok("punct", ",", ","))
     return out
 
 
@@ -1047,6 +1088,8 @@ class Lexicon:
         radio = transmission(command, self._names_exactly, lambda w: w in self._robots, is_number)
         if radio is not None:   # "Yard control to all units. ... Over.": the voice procedure set aside
             command = radio.text
+        # "... short again 🙄 send 4 more": a face or a gesture ends a sentence, and is said as set aside
+        command, feelings = without_expressions(command)
         for idiom, plain in IDIOMS + WORD_ORDER:
             command = idiom.sub(plain, command)
         # "... 3 cowboys ... *carboys": a texted correction made, and said
@@ -1068,12 +1111,12 @@ class Lexicon:
                 fixed += [Tok("word", t.text, first), Tok("word", "", second)]
                 continue
             fixed.append(t)
-        toks, framed = without_request_frames(read_counts(_split_hyphens(fixed, self.keywords)),
-                                              {w for w in self.keywords if " " not in w} | set(VERB_LEXICON))
-        toks = needs_doing(toks, {w for w in self.keywords if " " not in w} | set(VERB_LEXICON))
+        verbs = {w for w in self.keywords if " " not in w} | set(VERB_LEXICON)
+        toks, framed = without_request_frames(read_counts(_split_hyphens(fixed, self.keywords)), verbs)
+        toks = fronted_source(needs_doing(toks, verbs), verbs)
         toks = lexicon_verbs(quantity_phrases(addressed_anyone(stative_having(toks)), self.keywords), self.keywords)
         toks = dropped_object(corrected_later(without_particles(corrected(toks))))
-        self._framed = (radio.aside if radio is not None else []) + framed
+        self._framed = (radio.aside if radio is not None else []) + feelings + framed
         self.corrected = starred
         return self._split(toks, stops)
 
