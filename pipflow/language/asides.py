@@ -267,7 +267,7 @@ def is_statement(words: Iterable[str], names: Callable[[str], bool]) -> bool:
     pronoun = ws[0] in (SUBJECTS | _SUBJECT_BE) - {"there", "theres", "youre"}
     noun = ws[0] not in FINITE and ws[0] not in FUNCTION_WORDS - DETERMINERS and any(
         w in FINITE or (w.endswith("ing") and len(w) > 4 and ws[0] in DETERMINERS) for w in ws[1:5])
-    if not (pronoun or noun or _past_of_a_noun(ws)):
+    if not (pronoun or noun or _past_of_a_noun(ws) or _bare_progressive(ws)):
         return False
     return _asks_nothing(ws, names)
 
@@ -275,6 +275,22 @@ def is_statement(words: Iterable[str], names: Callable[[str], bool]) -> bool:
 #: verbs in the past tense that do not end in "-ed" ("the labels got mixed up", "the truck came")
 PAST_FORMS = frozenset({"got", "came", "went", "broke", "fell", "ran", "said", "left", "took", "made", "did",
                         "forgot", "told", "gave", "saw", "knew", "thought", "brought", "bought", "wore", "tore"})
+
+
+#: verbs that take an "-ing" word after them as their object ("stop sending", "keep moving"): an
+#: order, never a noun said with what it is doing
+_ING_TAKERS = frozenset({"stop", "quit", "avoid", "keep", "start", "finish", "try", "begin", "continue", "resume",
+                         "consider", "mind", "go", "get", "need", "needs", "want", "wants", "like", "love", "hate",
+                         "prevent", "risk", "delay", "postpone", "practise", "practice", "imagine", "enjoy"})
+
+
+def _bare_progressive(ws: list[str]) -> bool:
+    """ "truck coming at 4 pm", "Shoprite collecting just now": a noun and a verb in -ing with no
+    "is" between (as South African and Indian English drop it), reporting what is going on. Never
+    with a pronoun object in the clause ("stop sending them") or after a verb that takes an -ing
+    object (:data:`_ING_TAKERS`)."""
+    return (len(ws) >= 2 and ws[0].isalpha() and ws[0] not in FUNCTION_WORDS and ws[0] not in _ING_TAKERS
+            and ws[1].endswith("ing") and len(ws[1]) > 4 and not set(ws) & OBJECT_PRONOUNS)
 
 
 def _past_of_a_noun(ws: list[str]) -> bool:
@@ -285,9 +301,17 @@ def _past_of_a_noun(ws: list[str]) -> bool:
     if len(ws) < k + 2:
         return False
     noun, verb = ws[k], ws[k + 1]
+    if k == 0 and len(ws) >= 3 and noun.isalpha() and noun not in FUNCTION_WORDS and ws[1].isalpha() \
+            and ws[1] not in FUNCTION_WORDS and _past(ws[2]):
+        return True   # a noun of two words: "Ceat vehicle reached early"
     subject = noun.isalpha() and noun not in FUNCTION_WORDS and (k == 1 or (noun.endswith("s") and len(noun) > 3
                                                                          and not noun.endswith("ss")))
-    return subject and (verb in PAST_FORMS or (verb.endswith("ed") and len(verb) > 4))
+    return subject and _past(verb)
+
+
+def _past(word: str) -> bool:
+    """A verb in the past tense: of :data:`PAST_FORMS`, or in "-ed" (five letters or more)."""
+    return word in PAST_FORMS or (word.endswith("ed") and len(word) > 4)
 
 
 def _asks_nothing(ws: list[str], names: Callable[[str], bool]) -> bool:
@@ -431,7 +455,15 @@ OPENERS = frozenset({("quick", "one"), ("right", "then"), ("ok", "then"), ("okay
                      ("whatever", "you", "do"), ("now", "then"), ("so", "then"), ("right", "folks"),
                      ("quick", "favour"), ("quick", "favor"), ("quick", "job"), ("two", "things"),
                      ("three", "things"), ("couple", "of", "things"), ("a", "couple", "of", "things"),
-                     ("few", "things"), ("a", "few", "things"), ("couple", "things")})
+                     ("few", "things"), ("a", "few", "things"), ("couple", "things"),
+                     # a heading before a list ("Today's plan: 1) ... 2) ...")
+                     ("today", "s", "plan"), ("todays", "plan"), ("the", "plan"), ("plan", "for", "today"),
+                     ("today", "s", "tasks"), ("todays", "tasks"), ("tasks", "for", "today"), ("to", "do"),
+                     ("todo",), ("to", "do", "list"),
+                     # what the order follows from ("As discussed on call: ...", "As per our discussion, ...")
+                     ("as", "discussed"), ("as", "discussed", "on", "call"), ("as", "discussed", "earlier"),
+                     ("as", "agreed"), ("as", "per", "discussion"), ("as", "per", "our", "discussion"),
+                     ("as", "per", "the", "plan"), ("as", "per", "plan")})
 
 
 #: whole clauses that close a message and say nothing else ("that's all for now", "that's it"):
@@ -445,7 +477,27 @@ CLOSINGS = frozenset({(*that, *rest, *later) for that in (("thats",), ("that", "
 #: their "it" is that order, no thing
 URGINGS = frozenset({("sort", "it", "out"), ("sort", "it"), ("sort", "that", "out"), ("sort", "it", "out", "now"),
                      ("get", "it", "sorted"), ("get", "it", "done"), ("get", "that", "done"), ("make", "it", "happen"),
-                     ("see", "to", "it"), ("chop", "chop")})
+                     ("see", "to", "it"), ("chop", "chop"), ("do", "the", "needful"), ("do", "needful"),
+                     # asking to be told when it is done: a reply, nothing to do to the stock
+                     ("revert", "back"), ("revert",), ("let", "me", "know"), ("update", "me"), ("keep", "me", "posted"),
+                     ("report", "back"), ("confirm", "back")})
+#: words that may open or close an urging without changing it ("pls do the needful", "revert back
+#: once done")
+_URGING_COURTESY = frozenset({"pls", "please", "kindly", "plz", "asap"})
+_URGING_ENDS = (("once", "done"), ("when", "done"), ("once", "completed"), ("after", "completion"), ("asap",))
+
+
+def is_urging(words: Iterable[str]) -> bool:
+    """A whole clause that only urges the order on or asks to hear back (:data:`URGINGS`), with
+    "please" or "kindly" before it and "once done" after it, if any."""
+    ws = [w for w in words if w]
+    while ws and ws[0] in _URGING_COURTESY:
+        ws = ws[1:]
+    for end in _URGING_ENDS:
+        if len(ws) > len(end) and tuple(ws[-len(end):]) == end:
+            ws = ws[:-len(end)]
+            break
+    return tuple(ws) in URGINGS
 
 
 def is_opener(words: Iterable[str]) -> bool:
@@ -484,7 +536,9 @@ INTERJECTIONS = frozenset({
     # South African and West African English ("eish", "ag", "ja", "yebo", "hayibo", "shame" for
     # sympathy, "lekker"; Ghanaian "chale", "ei", "abi")
     "eish", "ag", "ja", "yebo", "hayibo", "haibo", "jislaaik", "lekker", "shame", "sho", "chale", "ei", "eii",
-    "abi", "ehe"})
+    "abi", "ehe",
+    # Indian English: Hindi and Tamil assent and urging ("Achha, take 3 ...", "Seri, ten tyres ...")
+    "achha", "acha", "accha", "seri", "haan", "ji", "jaldi", "arre", "arey"})
 
 
 def addressee(words: list[str]) -> str | None:
@@ -533,7 +587,7 @@ def content_free(words: Iterable[str], content: Callable[[str], bool],
     name = addressee(ws)
     if name is not None:
         return robot(name)   # "Hornet, ...": set aside only when it names a robot of the world
-    if is_greeting(ws) or tuple(ws) in CLOSINGS or tuple(ws) in URGINGS:
+    if is_greeting(ws) or tuple(ws) in CLOSINGS or is_urging(ws):
         return True   # its "all" or "team" is who is greeted, no quantifier or robot group
     if names is not None and is_pleasantry(ws, names):
         return True

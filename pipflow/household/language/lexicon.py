@@ -694,6 +694,7 @@ def normalize(text: str) -> str:
     # "it's" is "it is", except before a participle: "it's been on all night" is "it has been"
     t = re.sub(r"\b(it|that|there|what|who)'s\b(?!\s+(?:been|gone|got|become)\b)", r"\1 is", t)
     t = re.sub(r"\blet's\b", "let us", t)
+    t = re.sub(r"(?<![\w'])'?t(is|was)\b", r"it \1", t)   # Irish and archaic "'tis", "'twas": it is, it was
     t = re.sub(r"'ve\b", " have", t)
     t = re.sub(r"'ll\b", " will", t)
     # "the oven's open", "the TV's still on": 's before a state word is "is", not a possessive

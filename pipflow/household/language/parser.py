@@ -44,6 +44,7 @@ from pipflow.household.language.tagger import owners_as_the, tag
 from pipflow.household.language.tokens import Tag
 from pipflow.language.asides import said
 from pipflow.language.characters import refuse_unread, without_expressions
+from pipflow.language.listing import inline_numbering
 from pipflow.language.earley import ListLexer
 from pipflow.language.lookahead import with_lookahead
 
@@ -85,7 +86,7 @@ def parse(command: str, world: dict, notes: list[str] | None = None) -> list[dic
 def _parse_said(command: str, world: dict, notes: list[str]) -> list[dict]:
     """:func:`parse` of a command whose arrows are said in words."""
     # "... before Nana wakes 🙏": a face or a gesture ends a sentence, and is said as set aside
-    command, feelings = without_expressions(command)
+    command, feelings = without_expressions(inline_numbering(command))   # "1) ... 2) ...": a job each
     if feelings:
         notes.append(said(feelings))
     refuse_unread(command, MARKS)   # a character this reader does not read is refused, never skipped

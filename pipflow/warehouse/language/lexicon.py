@@ -26,6 +26,8 @@ from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS, is_number
 from pipflow.language.radio import transmission
 from pipflow.language.spelling import distance, normalize, plural_forms, slip, tolerance
 from pipflow.warehouse.language.names import KIND_WORDS, POSS_MARK, STOPWORDS, NameIndex, Tok, read_counts, recognize
+from pipflow.warehouse.language.reordered import (base_verb, fronted_source, item_as_subject, needs_doing, said_at,
+                                                to_be_done)
 from pipflow.warehouse.language.wordorder import left_dislocated, noun_adjuncts, numbered_siblings, unmarked_lists
 
 #: no user writes a longer command; past this the parser would only be asked to burn time
@@ -41,7 +43,10 @@ FILLERS = {"the", "please", "kindly", "units", "unit", "pieces", "piece", "boxes
            "completely", "entirely", "immediately", "soon", "tonight", "thanks", "overnight",
            "sharpish", "pronto", "promptly", "swiftly",
            # South African interjections, said anywhere in a sentence ("ag the cage is packed", "ja so swap")
-           "eish", "ag", "ja", "yebo", "hayibo", "haibo", "jislaaik"}
+           "eish", "ag", "ja", "yebo", "hayibo", "haibo", "jislaaik",
+           # Indian English: "6 nos" (numbers: units), "at 3 pm itself" (emphasis), "Meanwhile move ...",
+           # and Hindi and Tamil assent said anywhere ("Achha take 3 ...")
+           "nos", "itself", "meanwhile", "additionally", "achha", "acha", "accha", "seri", "haan", "jaldi"}
 #: packaging and measure nouns: "5 cartons of tape", "2 rolls of shrink wrap" count the item after
 #: "of". A world that names a product so ("carton") recognises it as that product first.
 FILLERS |= {"carton", "cartons", "roll", "rolls", "pack", "packs", "packet", "packets", "bundle",
@@ -119,6 +124,12 @@ IDIOMS = ((re.compile(r"\b(as|what)\s+she(?=\s+(?:is|was|stands|has)\b|['\u2019]
           (re.compile(r"\b(has|have|got|holds?)\b([^.;!?\n]*?\d[^.;!?\n]*?)\s+on(?=\s*(?:[.;!?]|$))", re.IGNORECASE), r"\1\2 on it"),
           # South African "sharp sharp" (all right, goodbye, quickly): no content
           (re.compile(r"[,;]?\s*\bsharp\s+sharp\b", re.IGNORECASE), ""),
+          # "between 4 to 6" (Indian English): between 4 and 6; "b/w": between; "&": and
+          (re.compile(rf"\bbetween\s+({_NUMBER})\s+to\s+(?={_NUMBER})", re.IGNORECASE), r"between \1 and "),
+          (re.compile(r"(?<![\w/])b/w(?=\s)", re.IGNORECASE), "between"),
+          (re.compile(r"\s*&\s*"), " and "),
+          # "3 to dispatch and remaining to bay 2": the rest
+          (re.compile(r"\b(and|,)\s+(?:the\s+)?remaining\s+(?=(?:to|into|onto|in|on|at)\b)", re.IGNORECASE), r"\1 the rest "),
           # "just now", "now now" closing a clause (South African: later, soon): a time, as "now" is
           (re.compile(r"\b(?:just|now)\s+now\b(?=\s*(?:[.,;:!?]|$))", re.IGNORECASE), "now"),
           # "at the minute", "at the mo" (British): now
@@ -432,80 +443,12 @@ _AS_SAID = {"per", "discussed", "agreed", "mentioned", "requested", "arranged", 
 FRAME_WORDS = frozenset(w for f in REQUEST_FRAMES + COURTESY_TIMES for w in f)
 
 
-def _said_at(toks: list[Tok], k: int, words: tuple[str, ...]) -> bool:
-    """Whether the words at ``k`` are ``words``."""
-    return len(toks) >= k + len(words) and all(x.kind == "word" and x.value == w for x, w in zip(toks[k:], words))
-
-
-def _base_verb(word: str, verbs: Collection[str]) -> str | None:
-    """The verb of :data:`verbs` that ``word`` is the "-ing" form of ("moving", "swapping",
-    "bringing"), or None."""
-    if not word.endswith("ing"):
-        return None
-    stem = word[:-3]
-    return next((v for v in (stem, stem + "e", stem[:-1]) if v in verbs and len(v) > 1), None)
-
-
-#: "P wants / needs <verb>ing ...": the verb said of its object ("intake's totes want moving to
-#: cage", "dock 2 needs emptying"); British English, and general with "need"
-_NEEDING = frozenset({"need", "needs", "want", "wants"})
-#: the most words of the object said before :data:`_NEEDING`
-_MOST_SUBJECT = 8
-
-
-def needs_doing(toks: list[Tok], verbs: Collection[str]) -> list[Tok]:
-    """The tokens with each clause "<object> needs <verb>ing <rest>" read as "<verb> <object>
-    <rest>", where the object opens the clause, names something of the world and holds no mark,
-    and "<verb>ing" is the "-ing" form of a verb of ``verbs``. Nothing is added: the same words in
-    the order of an order ("P needs emptying" is "empty P")."""
-    out: list[Tok] = []
-    start, k = 0, 0
-    while k < len(toks):
-        t = toks[k]
-        subject = out[start:]
-        if (t.kind == "word" and t.value in _NEEDING and k + 1 < len(toks) and toks[k + 1].kind == "word"
-                and 0 < len(subject) <= _MOST_SUBJECT and any(x.kind == "name" for x in subject)):
-            verb = _base_verb(str(toks[k + 1].value), verbs)
-            if verb is not None:
-                out[start:] = [Tok("word", toks[k + 1].text, verb), *subject]
-                k += 2
-                continue
-        out.append(t)
-        if t.kind == "punct":
-            start = len(out)
-        k += 1
-    return out
-
-
-#: words that open a sentence with the place things come from, before the verb ("from rack B send 2
-#: X to P", "off the cage take 3 X")
-_SOURCES = frozenset({"from", "off"})
-
-
-def fronted_source(toks: list[Tok], verbs: Collection[str]) -> list[Tok]:
-    """The tokens with a comma after a source fronted without one: a sentence opened by "from" or
-    "off" and one place, then a verb of ``verbs`` ("from rack B send 2 rooibos to the cage"), reads
-    as "from rack B, send ...", which the grammar reads as it reads a fronted source said with its
-    comma. Nothing is added but the comma."""
-    def word(j: int, words: Collection[str]) -> bool:
-        return 0 <= j < len(toks) and toks[j].kind == "word" and toks[j].value in words
-
-    out: list[Tok] = []
-    for k, t in enumerate(toks):
-        out.append(t)
-        j = k - 2 if word(k - 1, ("the",)) else k - 1   # "from the cage"
-        if (t.kind == "name" and t.of == "shelf" and word(j, _SOURCES) and (j == 0 or toks[j - 1].kind == "punct")
-                and word(k + 1, verbs)):
-            out.append(Tok("punct", ",", ","))
-    return out
-
-
 def _subject_framed(toks: list[Tok], k: int) -> list[Tok] | None:
     """The tokens of a sentence opened at ``k`` by a frame of :data:`SUBJECT_FRAMES`, read as
     "<place> should ...", or None: the words between the frame and its link word must name a
     place and hold no mark."""
     for frame, links in SUBJECT_FRAMES.items():
-        if not _said_at(toks, k, frame):
+        if not said_at(toks, k, frame):
             continue
         j = k + len(frame)
         at = next((i for i in range(j + 1, min(j + 7, len(toks))) if toks[i].kind == "word" and toks[i].value in links), None)
@@ -527,9 +470,9 @@ def without_request_frames(toks: list[Tok], verbs: Collection[str] = ()) -> tupl
     k = 0
     while k < len(toks):
         start = k == 0 or (toks[k - 1].kind == "punct" and toks[k - 1].value in (".", ";", "!", "?", ",", ":"))
-        hit = next((f for f in REQUEST_FRAMES if start and _said_at(toks, k, f)), None)
+        hit = next((f for f in REQUEST_FRAMES if start and said_at(toks, k, f)), None)
         if hit in GERUND_FRAMES and k + len(hit) < len(toks) and toks[k + len(hit)].kind == "word":
-            verb = _base_verb(str(toks[k + len(hit)].value), verbs)
+            verb = base_verb(str(toks[k + len(hit)].value), verbs)
             if verb is not None:
                 out.append(Tok("word", toks[k + len(hit)].text, verb))
                 k += len(hit) + 1
@@ -537,7 +480,7 @@ def without_request_frames(toks: list[Tok], verbs: Collection[str] = ()) -> tupl
         subject = _subject_framed(toks, k) if start and hit is None else None
         if subject is not None:
             out += subject
-            k += len(subject) + next(len(f) for f in SUBJECT_FRAMES if _said_at(toks, k, f))
+            k += len(subject) + next(len(f) for f in SUBJECT_FRAMES if said_at(toks, k, f))
             continue
         courtesy = next((f for f in COURTESY_TIMES if len(toks) >= k + len(f) and all(
             x.kind == "word" and x.value == w for x, w in zip(toks[k:k + len(f)], f))), None)
@@ -1018,6 +961,7 @@ class Lexicon:
         # (a kind word keeps its text: "good" of goods opens "Good morning team"; it is content by
         # the names test all the same)
         words = [str(t.value) if t.kind == "punct" and t.value in marks else
+                 "s" if t.kind == "word" and t.value == POSS_MARK else   # "Today's plan": the 's is no content
                  (re.sub(r"[^a-z0-9]", "", t.text.lower()) or str(t.value) if t.kind in ("word", "kind") else
                   "oclock" if t.kind == "num" and _clock(cur, k) else "\1" if t.kind == "num" else "\0")
                  for k, t in enumerate(cur)]
@@ -1113,7 +1057,7 @@ class Lexicon:
             fixed.append(t)
         verbs = {w for w in self.keywords if " " not in w} | set(VERB_LEXICON)
         toks, framed = without_request_frames(read_counts(_split_hyphens(fixed, self.keywords)), verbs)
-        toks = fronted_source(needs_doing(toks, verbs), verbs)
+        toks = item_as_subject(fronted_source(to_be_done(needs_doing(toks, verbs), verbs), verbs))
         toks = lexicon_verbs(quantity_phrases(addressed_anyone(stative_having(toks)), self.keywords), self.keywords)
         toks = dropped_object(corrected_later(without_particles(corrected(toks))))
         self._framed = (radio.aside if radio is not None else []) + feelings + framed

@@ -754,7 +754,7 @@ def recognize(command: str, index: NameIndex) -> list[Tok]:
             toks.append(found[0])
             i = found[1]
             continue
-        toks.append(Tok("word", t, t.lower()))
+        toks.append(Tok("word", "'s" if t == POSS_MARK else t, t.lower()))   # the mark is quoted as written
         i += 1
     return _listed_verb_places([t for t in toks if t is not None], index)
 

@@ -17,6 +17,7 @@ import re
 
 from pipflow.errors import Refusal, TranslationError
 from pipflow.language.characters import line_readings
+from pipflow.language.listing import inline_numbering
 from pipflow.language.mail import without_mail_form
 from pipflow.warehouse.language.candidates import candidates
 from pipflow.warehouse.language.command import parse_reading
@@ -43,7 +44,8 @@ def parse(command: str, world: dict) -> dict:
     candidate readings (:mod:`candidates`). An e-mail's subject line (when it asks for nothing) and
     list markers are its form: left out first, the subject said as set aside (:mod:`pipflow.language.mail`).
     """
-    text, headed = without_mail_form(command, _name_words(world))
+    # "Today's plan: 1) ... 2) ...": each number opens a job (before a line's own list marker is read)
+    text, headed = without_mail_form(inline_numbering(command), _name_words(world))
     order = _parse(text, world)
     if headed:
         order["set_aside"] = headed + list(order.get("set_aside") or [])

@@ -1,0 +1,214 @@
+"""Clauses said in another order than the grammar's, read in its order: the same words moved,
+nothing guessed.
+
+"P needs emptying" (the verb said of its object), "bay 3 to be emptied" (the passive of an order,
+as office English writes it), "bay 2 gearbox should be 5" (the item as the subject of a wanted
+count), "from rack B send 2 X to P" (a source said first without its comma). Each rewrite fires
+only where its object opens the clause and names something of the world, and otherwise leaves the
+tokens as they were, so the sentence is read, or refused, as said."""
+from __future__ import annotations
+
+from typing import Collection
+
+from pipflow.warehouse.language.names import POSS_MARK, Tok
+
+
+def said_at(toks: list[Tok], k: int, words: tuple[str, ...]) -> bool:
+    """Whether the words at ``k`` are ``words``."""
+    return len(toks) >= k + len(words) and all(x.kind == "word" and x.value == w for x, w in zip(toks[k:], words))
+
+
+def base_verb(word: str, verbs: Collection[str]) -> str | None:
+    """The verb of :data:`verbs` that ``word`` is the "-ing" form of ("moving", "swapping",
+    "bringing"), or None."""
+    if not word.endswith("ing"):
+        return None
+    stem = word[:-3]
+    return next((v for v in (stem, stem + "e", stem[:-1]) if v in verbs and len(v) > 1), None)
+
+
+#: "P wants / needs <verb>ing ...": the verb said of its object ("intake's totes want moving to
+#: cage", "dock 2 needs emptying"); British English, and general with "need"
+_NEEDING = frozenset({"need", "needs", "want", "wants"})
+#: the most words of the object said before :data:`_NEEDING`
+_MOST_SUBJECT = 8
+
+
+def needs_doing(toks: list[Tok], verbs: Collection[str]) -> list[Tok]:
+    """The tokens with each clause "<object> needs <verb>ing <rest>" read as "<verb> <object>
+    <rest>", where the object opens the clause, names something of the world and holds no mark,
+    and "<verb>ing" is the "-ing" form of a verb of ``verbs``. Nothing is added: the same words in
+    the order of an order ("P needs emptying" is "empty P")."""
+    out: list[Tok] = []
+    start, k = 0, 0
+    while k < len(toks):
+        t = toks[k]
+        subject = out[start:]
+        if (t.kind == "word" and t.value in _NEEDING and k + 1 < len(toks) and toks[k + 1].kind == "word"
+                and 0 < len(subject) <= _MOST_SUBJECT and any(x.kind == "name" for x in subject)):
+            verb = base_verb(str(toks[k + 1].value), verbs)
+            if verb is not None:
+                out[start:] = [Tok("word", toks[k + 1].text, verb), *subject]
+                k += 2
+                continue
+        out.append(t)
+        if t.kind == "punct":
+            start = len(out)
+        k += 1
+    return out
+
+
+#: words that join a clause to the one before and stay before its verb ("but P is to be left")
+_CLAUSE_JOINS = frozenset({"but", "and", "then", "so", "or", "also", "plus"})
+#: negations before "to be" ("R not to be used", "R isn't to be involved")
+_NEGATIONS = frozenset({"not", "isnt", "arent", "wasnt", "werent"})
+#: words before "to be" that make it no passive of an order but a modal the grammar reads
+_MODAL_OF_PASSIVE = frozenset({"needs", "need", "has", "have", "must", "should", "will", "ought", "got", "wants", "want"})
+#: past participles that do not end in "-ed" ("sent", "taken"), with their verbs
+_IRREGULAR_PARTICIPLES = {"sent": "send", "taken": "take", "brought": "bring", "kept": "keep", "put": "put",
+                          "given": "give", "got": "get", "gotten": "get", "held": "hold", "left": "leave",
+                          "split": "split", "spread": "spread", "shut": "shut", "stuck": "stick", "cleared": "clear"}
+
+
+def _verb_of_participle(word: str, verbs: Collection[str]) -> str | None:
+    """The verb of ``verbs`` that ``word`` is the past participle of ("shifted", "emptied",
+    "doubled", "swapped", "sent"), or None."""
+    if word in _IRREGULAR_PARTICIPLES:
+        verb = _IRREGULAR_PARTICIPLES[word]
+        return verb if verb in verbs else None
+    if not word.endswith("ed") or len(word) < 5:
+        return None
+    stem = word[:-2]
+    candidates = (stem, word[:-1], stem[:-1] + "y" if stem.endswith("i") else "", stem[:-1] if stem[-1:] == stem[-2:-1] else "")
+    return next((v for v in candidates if v and v in verbs), None)
+
+
+def to_be_done(toks: list[Tok], verbs: Collection[str]) -> list[Tok]:
+    """The tokens with each clause "<object> (is / are) (not) to be <verb>ed <rest>" read as
+    "(don't) <verb> <object> <rest>": the passive of an order, as office English writes it ("half
+    of the tyres in bay 1 to be shifted to bay 2", "bay 3 to be emptied", "bhavani not to be
+    used"). As for :func:`needs_doing`, the object opens the clause, names something of the world
+    and holds no mark, and the participle is of a verb of ``verbs``; nothing is added but "don't"
+    where "not" was said.
+    "<object> to be (made / kept at) N" is "<object> should be N", a count wanted (read by
+    :func:`item_as_subject`)."""
+    out: list[Tok] = []
+    start, k = 0, 0
+    while k < len(toks):
+        t = toks[k]
+        lead = start
+        while lead < len(out) and out[lead].kind == "word" and out[lead].value in _CLAUSE_JOINS:
+            lead += 1   # "..., but showroom is to be left as it is": the "but" stays before the verb
+        subject = out[lead:]
+        negated = bool(subject) and subject[-1].kind == "word" and subject[-1].value in _NEGATIONS
+        body = subject[:-1] if negated else subject
+        while body and body[-1].kind == "word" and body[-1].value in ("is", "are"):
+            body = body[:-1]
+        if body and body[-1].kind == "word" and body[-1].value in _MODAL_OF_PASSIVE:
+            body = []   # "P needs to be emptied", "P has to be cleared": the grammar reads these as said
+        named = 0 < len(body) <= _MOST_SUBJECT and any(x.kind == "name" for x in body)
+        count_at = k + 2 + (k + 2 < len(toks) and toks[k + 2].kind == "word" and toks[k + 2].value == "made") \
+            + (said_at(toks, k + 2, ("kept", "at")) * 2)
+        if named and not negated and said_at(toks, k, ("to", "be")) and count_at < len(toks) and toks[count_at].kind == "num":
+            # "radiators in bay 3 to be (made / kept at) 10": the count wanted, as "should be 10" says
+            out += [Tok("word", "to be", "should"), Tok("word", "", "be")]
+            k = count_at
+            continue
+        if said_at(toks, k, ("to", "be")) and k + 2 < len(toks) and toks[k + 2].kind == "word" and named:
+            verb = _verb_of_participle(toks[k + 2].text.lower(), verbs)   # as typed: a repair may have respelt it
+            if verb is not None:
+                head = [Tok("word", "not", "dont")] if negated else []
+                out[lead:] = [*head, Tok("word", toks[k + 2].text, verb), *body]
+                k += 3
+                continue
+        out.append(t)
+        if t.kind == "punct":
+            start = len(out)
+        k += 1
+    return out
+
+
+#: words after "<place> <item>" that name its count ("bay 3 battery stock should ...")
+_STOCK_WORDS = frozenset({"stock", "count", "qty", "quantity", "level", "levels", "inventory"})
+#: modals of a wanted count, and the verbs after them that say where it ends
+_WANTING_MODALS = frozenset({"should", "must", "shall", "shld", "shud"})
+_ENDING_VERBS = frozenset({"be", "go", "drop", "fall", "stay", "remain", "dip", "get"})
+
+
+def item_as_subject(toks: list[Tok]) -> list[Tok]:
+    """The tokens with a clause whose subject is an item on a place ("bay 2 gearbox should be
+    between 4 to 6", "the tyres on bay 1 should be 10", "bay 3 battery stock should not go below
+    6") read with the place as its subject and the item after the amount ("bay 2 should have
+    between 4 and 6 gearbox", "bay 3 should not go below 6 battery"), as the grammar reads a
+    wanted count. Only where the clause says a number after the verb and names no other item;
+    "be" becomes "have"; a stock word ("stock", "count") and "on" / "in" / "at" between item and
+    place are left out."""
+    out: list[Tok] = []
+    k = 0
+    while k < len(toks):
+        opens = k == 0 or toks[k - 1].kind == "punct"
+        end = next((j for j in range(k, len(toks)) if toks[j].kind == "punct"), len(toks))
+        clause = toks[k:end]
+        said = _item_subject(clause) if opens else None
+        if said is None:
+            out.append(toks[k])
+            k += 1
+            continue
+        out += said
+        k = end
+    return out
+
+
+def _item_subject(clause: list[Tok]) -> list[Tok] | None:
+    """:func:`item_as_subject` of one clause, or None when it is no such clause."""
+    def name(j: int, of: str) -> bool:
+        return j < len(clause) and clause[j].kind == "name" and clause[j].of == of
+
+    def word(j: int, words: Collection[str]) -> bool:
+        return j < len(clause) and clause[j].kind == "word" and clause[j].value in words
+
+    j = 1 if word(0, ("the",)) else 0
+    poss = 1 if word(j + 1, (POSS_MARK,)) else 0   # "bay 2 gearbox" is read as "bay 2's gearbox"
+    if name(j, "shelf") and name(j + 1 + poss, "product"):
+        place, item, j = clause[j], clause[j + 1 + poss], j + 2 + poss
+    elif name(j, "product") and word(j + 1, ("on", "in", "at")) and name(j + 2, "shelf"):
+        item, place, j = clause[j], clause[j + 2], j + 3
+    else:
+        return None
+    j += word(j, _STOCK_WORDS)
+    if not word(j, _WANTING_MODALS):
+        return None
+    modal, j = clause[j], j + 1
+    negation = [clause[j]] if word(j, ("not",)) else []
+    j += len(negation)
+    if not word(j, _ENDING_VERBS):
+        return None
+    verb = clause[j]
+    rest = clause[j + 1:]
+    if not any(x.kind == "num" for x in rest) or any(x.kind == "name" and x.of == "product" for x in rest):
+        return None
+    verb = Tok("word", verb.text, "have") if verb.value == "be" else verb
+    return [place, modal, *negation, verb, *rest, item]
+
+
+#: words that open a sentence with the place things come from, before the verb ("from rack B send 2
+#: X to P", "off the cage take 3 X")
+_SOURCES = frozenset({"from", "off"})
+
+
+def fronted_source(toks: list[Tok], verbs: Collection[str]) -> list[Tok]:
+    """The tokens with a comma after a source fronted without one: a sentence opened by "from" or
+    "off" and one place, then a verb of ``verbs`` ("from rack B send 2 rooibos to the cage"), reads
+    as "from rack B, send ...", which the grammar reads as it reads a fronted source said with its
+    comma. Nothing is added but the comma."""
+    def word(j: int, words: Collection[str]) -> bool:
+        return 0 <= j < len(toks) and toks[j].kind == "word" and toks[j].value in words
+
+    out: list[Tok] = []
+    for k, t in enumerate(toks):
+        out.append(t)
+        j = k - 2 if word(k - 1, ("the",)) else k - 1   # "from the cage"
+        if (t.kind == "name" and t.of == "shelf" and word(j, _SOURCES) and (j == 0 or toks[j - 1].kind == "punct")
+                and word(k + 1, verbs)):
+            out.append(Tok("punct", ",", ","))
+    return out
