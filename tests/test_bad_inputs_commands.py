@@ -55,7 +55,7 @@ UNREAD = {
     "greek look-alike in a shelf": ("sh\u03bflf2 holds 3 product1", "sh\u03bflf2", "GREEK SMALL LETTER OMICRON"),
     "an accented letter": ("shelf2 holds 3 prodüct1", "prodüct1", "LATIN SMALL LETTER U WITH DIAERESIS"),
     "an emoji": ("shelf2 holds 3 product1 \U0001f4e6", "\U0001f4e6", "PACKAGE"),
-    "an ampersand": ("shelf2 holds 3 product1 & 2 product3", "&", "symbol '&'"),
+    "an at sign": ("shelf2 holds 3 product1 @ 2 product3", "@", "symbol '@'"),
     "a slash": ("Move 3/4 of product1 from shelf1 to shelf2", "3/4", "symbol '/'"),
 }
 

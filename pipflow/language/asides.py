@@ -78,7 +78,7 @@ GREETINGS = frozenset({"hi", "hello", "hey", "hiya", "heya", "howdy", "morning",
 #: words that open an apology or a thanks for something ("sorry for the late ask", "thanks for
 #: earlier"): what follows "for" / "about" is what one is sorry or thankful for, not an order
 PLEASANTRIES = frozenset({"sorry", "apologies", "apologise", "apologize", "pardon", "thanks", "thank", "thx",
-                          "ta", "cheers", "ty", "grateful", "appreciate", "appreciated", "dankie"})
+                          "ta", "cheers", "ty", "grateful", "appreciate", "appreciated", "dankie", "diolch"})
 #: words that open a statement about someone or something ("she's been dropping them", "it's broken"):
 #: a verb acting on a pronoun after them reports what happened, it asks for nothing
 SUBJECTS = frozenset({"i", "im", "ive", "we", "were", "weve", "he", "hes", "she", "shes", "it", "its", "they",
@@ -88,22 +88,24 @@ ADDRESSEES = frozenset({"all", "everyone", "everybody", "team", "folks", "guys",
                         "there", "you", "mate", "mates", "yall", "crew", "robots", "bots", "y", "again", "so",
                         "much", "very", "a", "lot", "in", "advance", "love", "loves", "dear", "dears", "darling",
                         "pet", "hun", "honey", "sweetie", "chaps", "pal", "pals", "buddy", "boys", "girls", "ladies",
-                        "gents", "gentlemen", "kids", "sir", "madam", "friends", "colleagues", "staff", "squad"})
+                        "gents", "gentlemen", "kids", "sir", "madam", "friends", "colleagues", "staff", "squad",
+                        # Welsh English ("Morning bud", "Alright butt")
+                        "bud", "butt", "butty", "bach"})
 
 
 #: a thanks that can close an order without a comma before it ("... to bay 2 ta")
-THANKS = frozenset({"thanks", "ta", "cheers", "thx", "ty", "tyvm", "thankyou", "dankie"})
+THANKS = frozenset({"thanks", "ta", "cheers", "thx", "ty", "tyvm", "thankyou", "dankie", "diolch"})
 #: who an order is said to, or a tag that closes it, without a comma before it ("... on dispatch
 #: please mate", "... forklifts only mind", "... thanks lads"): never a word that is operative
 CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "boss", "love", "pet", "hun",
                      "mind", "yeah", "eh", "cheers", "ta", "thanks", "thx", "ty", "tyvm", "thankyou", "dankie",
-                     "man", "bru", "boet", "chale"})
+                     "man", "bru", "boet", "chale", "bud", "butt", "butty", "bach", "diolch"})
 
 
 #: a request tag after an order ("... over to the shed would ya", "... could you"): it asks
 #: nothing more than the order does
 REQUEST_TAGS = frozenset((modal, you) for modal in ("would", "could", "will", "can", "wont")
-                         for you in ("you", "ya", "u", "yous"))
+                         for you in ("you", "ya", "u", "yous")) | {("isnt", "it")}   # Welsh English's tag on anything
 #: the words of a thanks or a request tag, which are no operative words there
 _TAG_WORDS = frozenset(w for tag in REQUEST_TAGS for w in tag) | {"thank", "you"}
 

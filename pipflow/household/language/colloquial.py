@@ -74,6 +74,19 @@ def spelled_out_swap(words: list[str], notes: list[str]) -> list[str]:
     return out
 
 
+#: verbs after which "back" says "again" ("close back the fridge", "shut the door back"), never
+#: where a thing goes ("put it back" stays as said)
+_CLOSING_VERBS = {"close", "shut", "lock"}
+
+
+def _clause_verb(out: list[str]) -> str:
+    """The first word of the clause being read (after the last mark): its verb, in an order."""
+    k = len(out)
+    while k and out[k - 1] not in PUNCT:
+        k -= 1
+    return out[k] if k < len(out) else ""
+
+
 #: particles that close a clause for emphasis in West African English ("do it fast o", "close the
 #: fridge back o", "thank you oo"): only before a stop or a comma, where no word of an order stands
 _CLOSING_PARTICLES = {"o", "oo", "ooo"}
@@ -96,6 +109,15 @@ def colloquial(words: list[str], notes: list[str]) -> list[str]:
             notes.append(f"'{' '.join(pair)}' closing a clause read as 'too'")
             out += _ALSO[pair]
             k += 2
+            continue
+        if words[k] == "back" and out and out[-1] in _CLOSING_VERBS:
+            # "close back the washing machine", "close it back" (Malaysian, West African English): close it again
+            notes.append(f"'{out[-1]} back': {out[-1]} it again")
+            k += 1
+            continue
+        if words[k] == "back" and _after(words, k) in PUNCT and _clause_verb(out) in _CLOSING_VERBS:
+            notes.append(f"'{_clause_verb(out)} ... back': {_clause_verb(out)} it again")
+            k += 1
             continue
         if words[k] in _CLOSING_PARTICLES and _after(words, k) in PUNCT and out and out[-1] not in PUNCT:
             notes.append(f"'{words[k]}' closing a clause: a particle of emphasis (West African English), no word of the order")

@@ -539,7 +539,11 @@ FILLER = {("um",), ("umm",), ("uh",), ("uhh",), ("uhm",), ("er",), ("erm",),   #
           ("literally",), ("tbh",), ("btw",), ("fyi",), ("omg",), ("ugh",), ("ngl",),
           # Ghanaian and South African English exclamations and Twi "please" ("Ei the sink!", "Chale
           # ...", "..., abi?", "mepa wo kyew", "yoo": all right), said beside the request
-          ("ei",), ("eii",), ("chale",), ("abi",), ("yoo",), ("mepa", "wo", "kyew"), ("eish",), ("hayibo",)}
+          ("ei",), ("eii",), ("chale",), ("abi",), ("yoo",), ("mepa", "wo", "kyew"), ("eish",), ("hayibo",),
+          # Malaysian and Singapore English particles and exclamations ("wash them lah", "aiyo so
+          # messy", "alamak"), "tq" (thank you), and "later" / "still", which say when, not what
+          ("lah",), ("leh",), ("lor",), ("meh",), ("hor",), ("aiyo",), ("aiyoh",), ("aiya",), ("alamak",), ("wah",),
+          ("eh",), ("tq",), ("later",), ("still",)}
 #: endearments and praise that close or open a request ("..., there's a love", "..., there's a good
 #: girl", "good lad, ..."): said to the one asked, they carry nothing; "mind you" / "mind and"
 #: before a verb is "make sure you" (northern and Scots English: "and mind you shut the door after")

@@ -10,6 +10,7 @@ import re
 
 from pipflow.errors import TranslationError
 from pipflow.language.asides import FUNCTION_WORDS
+from pipflow.language.english import common_word
 from pipflow.household.language.colloquial import colloquial
 from pipflow.household.language.corrections import corrected
 from pipflow.household.language.dialect import cut_as_switch, on_off_as_verbs, them_as_those
@@ -63,6 +64,8 @@ def repaired(words: list[str], index: dict, vocab: set[str], notes: list[str], w
         if len(w) < 4:
             continue
         close = typo_of(w, vocab)
+        if close and common_word(w) and any(c in key and c not in (w + "s", w + "es") for c in close for key in index):
+            continue   # a common English word as written ("ripe") is no slip of a thing's name ("rice"), only its plural
         if close and len({meaning_of(c, index) for c in close}) == 1:
             notes.append(f"read {w!r} as {close[0]!r}")
             words[k] = close[0]
@@ -95,18 +98,24 @@ def owners_as_the(command: str, world: dict, notes: list[str]) -> str:
     return re.sub(r"(?<![\w'’])([A-Za-z][a-z]+)['’]s\s+([A-Za-z]+)", owner, command)
 
 
-def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
-    """The command as grammar tokens (module docstring, step 1)."""
-    notes = notes if notes is not None else []
-    index = world_phrases(world)
-    vocab = vocabulary(index)
+def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: list[str]) -> list[str]:
+    """The command's words with its colloquial forms, constructions and particles read as the
+    grammar's words (each rewrite notes what it read)."""
     words = or_under_negation(measures(without_manner(colloquial(corrected(words_of(command), notes), notes), notes), index, notes),
                               notes)
     words = heat_purpose(caused(given(me_as_where_the_speaker_is(words, index, notes), notes), notes), notes)
     words = closed_again(wherever_they_belong(words, notes), notes)
     words = on_off_as_verbs(cut_as_switch(words, world, index, notes), world, index, notes)
     words = named_again(them_as_those(words, index, notes), index, notes)
-    words = particles(words, lambda x: x.isalpha() and not known_word(x, index, vocab), notes)
+    return particles(words, lambda x: x.isalpha() and not known_word(x, index, vocab), notes)
+
+
+def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
+    """The command as grammar tokens (module docstring, step 1)."""
+    notes = notes if notes is not None else []
+    index = world_phrases(world)
+    vocab = vocabulary(index)
+    words = _rewritten(command, world, index, vocab, notes)
     said = list(words)   # as typed: a repair that still names nothing is quoted as typed
     words = repaired(words, index, vocab, notes, world)
     longest_w = max((len(k) for k in index), default=1)

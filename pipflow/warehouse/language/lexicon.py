@@ -46,12 +46,15 @@ FILLERS = {"the", "please", "kindly", "units", "unit", "pieces", "piece", "boxes
            "eish", "ag", "ja", "yebo", "hayibo", "haibo", "jislaaik",
            # Indian English: "6 nos" (numbers: units), "at 3 pm itself" (emphasis), "Meanwhile move ...",
            # and Hindi and Tamil assent said anywhere ("Achha take 3 ...")
-           "nos", "itself", "meanwhile", "additionally", "achha", "acha", "accha", "seri", "haan", "jaldi"}
+           "nos", "itself", "meanwhile", "additionally", "achha", "acha", "accha", "seri", "haan", "jaldi",
+           # Welsh English: "tidy" (good, proper) closing an order
+           "tidy"}
 #: packaging and measure nouns: "5 cartons of tape", "2 rolls of shrink wrap" count the item after
 #: "of". A world that names a product so ("carton") recognises it as that product first.
 FILLERS |= {"carton", "cartons", "roll", "rolls", "pack", "packs", "packet", "packets", "bundle",
             "bundles", "bag", "bags", "tub", "tubs", "bottle", "bottles", "reel", "reels", "tote",
-            "totes", "drum", "drums", "tin", "tins", "jar", "jars", "sack", "sacks", "crates", "jug", "jugs"}
+            "totes", "drum", "drums", "tin", "tins", "jar", "jars", "sack", "sacks", "crates", "jug", "jugs",
+            "sheet", "sheets", "length", "lengths", "coil", "coils"}
 #: fillers that make the count after them a final count
 EXACT_WORDS = {"exactly", "precisely"}
 #: chat spellings of keywords
@@ -803,6 +806,18 @@ def _clock(toks: list[Tok], k: int) -> bool:
     return bool(after) and (after[0] in ("oclock", "pm", "am") or after[:2] == ["o", "clock"])
 
 
+def by_as_at(toks: list[Tok]) -> list[Tok]:
+    """The tokens with "by" before a place read as "at" (Welsh English: "the plasterboard by the
+    counter", "what's by the van bay"): where the place is, as "at" says. Only right before a
+    place's name (or "the" and one); "by 5pm", "by a third" and "by hand" are left as said."""
+    out = list(toks)
+    for k, t in enumerate(toks):
+        j = k + 2 if k + 1 < len(toks) and toks[k + 1].kind == "word" and toks[k + 1].value == "the" else k + 1
+        if t.kind == "word" and t.value == "by" and j < len(toks) and toks[j].kind == "name" and toks[j].of == "shelf":
+            out[k] = Tok("word", t.text, "at")
+    return out
+
+
 class Lexicon:
     """The world's vocabulary for the grammar: names, robot kinds, tags and skills."""
 
@@ -1057,7 +1072,7 @@ class Lexicon:
             fixed.append(t)
         verbs = {w for w in self.keywords if " " not in w} | set(VERB_LEXICON)
         toks, framed = without_request_frames(read_counts(_split_hyphens(fixed, self.keywords)), verbs)
-        toks = item_as_subject(fronted_source(to_be_done(needs_doing(toks, verbs), verbs), verbs))
+        toks = item_as_subject(fronted_source(to_be_done(needs_doing(by_as_at(toks), verbs), verbs), verbs))
         toks = lexicon_verbs(quantity_phrases(addressed_anyone(stative_having(toks)), self.keywords), self.keywords)
         toks = dropped_object(corrected_later(without_particles(corrected(toks))))
         self._framed = (radio.aside if radio is not None else []) + feelings + framed

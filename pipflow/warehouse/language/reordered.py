@@ -131,7 +131,8 @@ def to_be_done(toks: list[Tok], verbs: Collection[str]) -> list[Tok]:
 #: words after "<place> <item>" that name its count ("bay 3 battery stock should ...")
 _STOCK_WORDS = frozenset({"stock", "count", "qty", "quantity", "level", "levels", "inventory"})
 #: modals of a wanted count, and the verbs after them that say where it ends
-_WANTING_MODALS = frozenset({"should", "must", "shall", "shld", "shud"})
+_NEGATED_MODALS = frozenset({"shouldnt", "mustnt"})
+_WANTING_MODALS = frozenset({"should", "must", "shall", "shld", "shud"}) | _NEGATED_MODALS
 _ENDING_VERBS = frozenset({"be", "go", "drop", "fall", "stay", "remain", "dip", "get"})
 
 
@@ -181,6 +182,8 @@ def _item_subject(clause: list[Tok]) -> list[Tok] | None:
     modal, j = clause[j], j + 1
     negation = [clause[j]] if word(j, ("not",)) else []
     j += len(negation)
+    if modal.value in _NEGATED_MODALS:   # "shouldnt drop below 5": "should not"
+        modal, negation = Tok("word", modal.text, "should"), [Tok("word", "", "not")]
     if not word(j, _ENDING_VERBS):
         return None
     verb = clause[j]
@@ -188,7 +191,8 @@ def _item_subject(clause: list[Tok]) -> list[Tok] | None:
     if not any(x.kind == "num" for x in rest) or any(x.kind == "name" and x.of == "product" for x in rest):
         return None
     verb = Tok("word", verb.text, "have") if verb.value == "be" else verb
-    return [place, modal, *negation, verb, *rest, item]
+    last = max(j for j, x in enumerate(rest) if x.kind == "num") + 1   # the item right after the amount
+    return [place, modal, *negation, verb, *rest[:last], item, *rest[last:]]
 
 
 #: words that open a sentence with the place things come from, before the verb ("from rack B send 2
