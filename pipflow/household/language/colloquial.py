@@ -79,12 +79,16 @@ def spelled_out_swap(words: list[str], notes: list[str]) -> list[str]:
 _CLOSING_VERBS = {"close", "shut", "lock"}
 
 
-def _clause_verb(out: list[str]) -> str:
-    """The first word of the clause being read (after the last mark): its verb, in an order."""
+def _closed_back(out: list[str], after: str) -> str:
+    """The verb of closing a "back" says "again" of, or "": the word right before it ("close back
+    the X"), or, where "back" ends its clause, the clause's first word ("close the X back")."""
+    if out and out[-1] in _CLOSING_VERBS:
+        return out[-1]
     k = len(out)
     while k and out[k - 1] not in PUNCT:
         k -= 1
-    return out[k] if k < len(out) else ""
+    first = out[k] if k < len(out) else ""
+    return first if after in PUNCT and first in _CLOSING_VERBS else ""
 
 
 #: particles that close a clause for emphasis in West African English ("do it fast o", "close the
@@ -110,13 +114,9 @@ def colloquial(words: list[str], notes: list[str]) -> list[str]:
             out += _ALSO[pair]
             k += 2
             continue
-        if words[k] == "back" and out and out[-1] in _CLOSING_VERBS:
-            # "close back the washing machine", "close it back" (Malaysian, West African English): close it again
-            notes.append(f"'{out[-1]} back': {out[-1]} it again")
-            k += 1
-            continue
-        if words[k] == "back" and _after(words, k) in PUNCT and _clause_verb(out) in _CLOSING_VERBS:
-            notes.append(f"'{_clause_verb(out)} ... back': {_clause_verb(out)} it again")
+        if words[k] == "back" and (verb := _closed_back(out, _after(words, k))):
+            # "close back the washing machine", "close the fridge back" (Malaysian, West African English): close it again
+            notes.append(f"'{verb} ... back': {verb} it again")
             k += 1
             continue
         if words[k] in _CLOSING_PARTICLES and _after(words, k) in PUNCT and out and out[-1] not in PUNCT:

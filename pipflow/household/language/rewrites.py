@@ -350,6 +350,11 @@ def _clause_before(out: list[str]) -> list[str]:
     return out[k:]
 
 
+def _said_as(words: list[str], k: int, shape: tuple[set[str] | tuple[str, ...], ...]) -> bool:
+    """Whether the words from ``k`` on are one of each of ``shape``'s word sets, in order."""
+    return all(k + j < len(words) and words[k + j] in s for j, s in enumerate(shape))
+
+
 #: "wherever they live / belong / go": a thing's home, as "where they belong" says
 _WHEREVER = ({"wherever"}, {"they", "it"}, {"live", "lives", "belong", "belongs", "go", "goes"})
 #: verbs that already say where a clause's things go
@@ -370,7 +375,7 @@ def wherever_they_belong(words: list[str], notes: list[str]) -> list[str]:
             k += 1
             continue
         at = k + (words[k] == "to")
-        if all(at + j < len(words) and words[at + j] in s for j, s in enumerate(_WHEREVER)):
+        if _said_as(words, at, _WHEREVER):
             clause = out[start:]
             if clause and clause[0] not in _PUTTING:
                 out[start:start] = ["put"]
@@ -392,7 +397,7 @@ def closed_again(words: list[str], notes: list[str]) -> list[str]:
     opens is closed again anyway (benchmarks/README.md), so the clause asks for nothing more. A
     note says so. Anything else said in it keeps the clause read."""
     for k in range(len(words)):
-        if all(k + j < len(words) and words[k + j] in s for j, s in enumerate(_OPENED)):
+        if _said_as(words, k, _OPENED):
             end = k + len(_OPENED)
             end += words[end:end + 1] in (["up"],)
             end += words[end:end + 1] in (["after"], ["afterwards"])

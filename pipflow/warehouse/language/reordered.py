@@ -8,7 +8,7 @@ only where its object opens the clause and names something of the world, and oth
 tokens as they were, so the sentence is read, or refused, as said."""
 from __future__ import annotations
 
-from typing import Collection
+from typing import Callable, Collection
 
 from pipflow.warehouse.language.names import POSS_MARK, Tok
 
@@ -16,6 +16,16 @@ from pipflow.warehouse.language.names import POSS_MARK, Tok
 def said_at(toks: list[Tok], k: int, words: tuple[str, ...]) -> bool:
     """Whether the words at ``k`` are ``words``."""
     return len(toks) >= k + len(words) and all(x.kind == "word" and x.value == w for x, w in zip(toks[k:], words))
+
+
+def _word_in(toks: list[Tok], k: int, words: Collection[str]) -> bool:
+    """Whether there is a token at ``k`` and it is a word of ``words``."""
+    return 0 <= k < len(toks) and toks[k].kind == "word" and toks[k].value in words
+
+
+def _name_at(toks: list[Tok], k: int, of: str) -> bool:
+    """Whether there is a token at ``k`` and it names a thing of kind ``of`` ("shelf", "product")."""
+    return 0 <= k < len(toks) and toks[k].kind == "name" and toks[k].of == of
 
 
 def base_verb(word: str, verbs: Collection[str]) -> str | None:
@@ -34,28 +44,43 @@ _NEEDING = frozenset({"need", "needs", "want", "wants"})
 _MOST_SUBJECT = 8
 
 
+def _each_clause(toks: list[Tok], rewrite: Callable[[list[Tok], int], tuple[list[Tok], int] | None]) -> list[Tok]:
+    """The tokens with each clause rewritten where ``rewrite(clause, k)`` says so: ``clause`` is the
+    clause read so far (the tokens since the last mark), ``k`` the position of the next token; it
+    returns the clause's new tokens and how many tokens from ``k`` on they take in, or None."""
+    out: list[Tok] = []
+    start, k = 0, 0
+    while k < len(toks):
+        said = rewrite(out[start:], k)
+        if said is not None:
+            out[start:], taken = said
+            k += taken
+            continue
+        out.append(toks[k])
+        if toks[k].kind == "punct":
+            start = len(out)
+        k += 1
+    return out
+
+
+def _names_an_object(subject: list[Tok]) -> bool:
+    """Whether words before a verb may be its object: a few words, one of them a name of the world."""
+    return 0 < len(subject) <= _MOST_SUBJECT and any(x.kind == "name" for x in subject)
+
+
 def needs_doing(toks: list[Tok], verbs: Collection[str]) -> list[Tok]:
     """The tokens with each clause "<object> needs <verb>ing <rest>" read as "<verb> <object>
     <rest>", where the object opens the clause, names something of the world and holds no mark,
     and "<verb>ing" is the "-ing" form of a verb of ``verbs``. Nothing is added: the same words in
     the order of an order ("P needs emptying" is "empty P")."""
-    out: list[Tok] = []
-    start, k = 0, 0
-    while k < len(toks):
-        t = toks[k]
-        subject = out[start:]
-        if (t.kind == "word" and t.value in _NEEDING and k + 1 < len(toks) and toks[k + 1].kind == "word"
-                and 0 < len(subject) <= _MOST_SUBJECT and any(x.kind == "name" for x in subject)):
-            verb = base_verb(str(toks[k + 1].value), verbs)
-            if verb is not None:
-                out[start:] = [Tok("word", toks[k + 1].text, verb), *subject]
-                k += 2
-                continue
-        out.append(t)
-        if t.kind == "punct":
-            start = len(out)
-        k += 1
-    return out
+    def rewrite(subject: list[Tok], k: int) -> tuple[list[Tok], int] | None:
+        if not (_word_in(toks, k, _NEEDING) and k + 1 < len(toks) and toks[k + 1].kind == "word"
+                and _names_an_object(subject)):
+            return None
+        verb = base_verb(str(toks[k + 1].value), verbs)
+        return ([Tok("word", toks[k + 1].text, verb), *subject], 2) if verb is not None else None
+
+    return _each_clause(toks, rewrite)
 
 
 #: words that join a clause to the one before and stay before its verb ("but P is to be left")
@@ -92,40 +117,31 @@ def to_be_done(toks: list[Tok], verbs: Collection[str]) -> list[Tok]:
     where "not" was said.
     "<object> to be (made / kept at) N" is "<object> should be N", a count wanted (read by
     :func:`item_as_subject`)."""
-    out: list[Tok] = []
-    start, k = 0, 0
-    while k < len(toks):
-        t = toks[k]
-        lead = start
-        while lead < len(out) and out[lead].kind == "word" and out[lead].value in _CLAUSE_JOINS:
-            lead += 1   # "..., but showroom is to be left as it is": the "but" stays before the verb
-        subject = out[lead:]
-        negated = bool(subject) and subject[-1].kind == "word" and subject[-1].value in _NEGATIONS
-        body = subject[:-1] if negated else subject
+    def rewrite(clause: list[Tok], k: int) -> tuple[list[Tok], int] | None:
+        if not said_at(toks, k, ("to", "be")):
+            return None
+        joins = 0
+        while joins < len(clause) and clause[joins].kind == "word" and clause[joins].value in _CLAUSE_JOINS:
+            joins += 1   # "..., but showroom is to be left as it is": the "but" stays before the verb
+        head, body = clause[:joins], clause[joins:]
+        negated = bool(body) and body[-1].kind == "word" and body[-1].value in _NEGATIONS
+        body = body[:-1] if negated else body
         while body and body[-1].kind == "word" and body[-1].value in ("is", "are"):
             body = body[:-1]
-        if body and body[-1].kind == "word" and body[-1].value in _MODAL_OF_PASSIVE:
-            body = []   # "P needs to be emptied", "P has to be cleared": the grammar reads these as said
-        named = 0 < len(body) <= _MOST_SUBJECT and any(x.kind == "name" for x in body)
-        count_at = k + 2 + (k + 2 < len(toks) and toks[k + 2].kind == "word" and toks[k + 2].value == "made") \
-            + (said_at(toks, k + 2, ("kept", "at")) * 2)
-        if named and not negated and said_at(toks, k, ("to", "be")) and count_at < len(toks) and toks[count_at].kind == "num":
+        if not _names_an_object(body) or (body[-1].kind == "word" and body[-1].value in _MODAL_OF_PASSIVE):
+            return None   # "P needs to be emptied", "P has to be cleared": the grammar reads these as said
+        count = k + 2 + (1 if said_at(toks, k + 2, ("made",)) else 2 if said_at(toks, k + 2, ("kept", "at")) else 0)
+        if not negated and count < len(toks) and toks[count].kind == "num":
             # "radiators in bay 3 to be (made / kept at) 10": the count wanted, as "should be 10" says
-            out += [Tok("word", "to be", "should"), Tok("word", "", "be")]
-            k = count_at
-            continue
-        if said_at(toks, k, ("to", "be")) and k + 2 < len(toks) and toks[k + 2].kind == "word" and named:
-            verb = _verb_of_participle(toks[k + 2].text.lower(), verbs)   # as typed: a repair may have respelt it
-            if verb is not None:
-                head = [Tok("word", "not", "dont")] if negated else []
-                out[lead:] = [*head, Tok("word", toks[k + 2].text, verb), *body]
-                k += 3
-                continue
-        out.append(t)
-        if t.kind == "punct":
-            start = len(out)
-        k += 1
-    return out
+            return [*clause, Tok("word", "to be", "should"), Tok("word", "", "be")], count - k
+        # the participle as typed: a repair may have respelt it ("doubled" as "double")
+        verb = _verb_of_participle(toks[k + 2].text.lower(), verbs) if k + 2 < len(toks) and toks[k + 2].kind == "word" else None
+        if verb is None:
+            return None
+        dont = [Tok("word", "not", "dont")] if negated else []
+        return [*head, *dont, Tok("word", toks[k + 2].text, verb), *body], 3
+
+    return _each_clause(toks, rewrite)
 
 
 #: words after "<place> <item>" that name its count ("bay 3 battery stock should ...")
@@ -162,36 +178,30 @@ def item_as_subject(toks: list[Tok]) -> list[Tok]:
 
 def _item_subject(clause: list[Tok]) -> list[Tok] | None:
     """:func:`item_as_subject` of one clause, or None when it is no such clause."""
-    def name(j: int, of: str) -> bool:
-        return j < len(clause) and clause[j].kind == "name" and clause[j].of == of
-
-    def word(j: int, words: Collection[str]) -> bool:
-        return j < len(clause) and clause[j].kind == "word" and clause[j].value in words
-
-    j = 1 if word(0, ("the",)) else 0
-    poss = 1 if word(j + 1, (POSS_MARK,)) else 0   # "bay 2 gearbox" is read as "bay 2's gearbox"
-    if name(j, "shelf") and name(j + 1 + poss, "product"):
+    j = 1 if _word_in(clause, 0, ("the",)) else 0
+    poss = 1 if _word_in(clause, j + 1, (POSS_MARK,)) else 0   # "bay 2 gearbox" is read as "bay 2's gearbox"
+    if _name_at(clause, j, "shelf") and _name_at(clause, j + 1 + poss, "product"):
         place, item, j = clause[j], clause[j + 1 + poss], j + 2 + poss
-    elif name(j, "product") and word(j + 1, ("on", "in", "at")) and name(j + 2, "shelf"):
+    elif _name_at(clause, j, "product") and _word_in(clause, j + 1, ("on", "in", "at")) and _name_at(clause, j + 2, "shelf"):
         item, place, j = clause[j], clause[j + 2], j + 3
     else:
         return None
-    j += word(j, _STOCK_WORDS)
-    if not word(j, _WANTING_MODALS):
+    j += _word_in(clause, j, _STOCK_WORDS)
+    if not _word_in(clause, j, _WANTING_MODALS):
         return None
     modal, j = clause[j], j + 1
-    negation = [clause[j]] if word(j, ("not",)) else []
+    negation = [clause[j]] if _word_in(clause, j, ("not",)) else []
     j += len(negation)
     if modal.value in _NEGATED_MODALS:   # "shouldnt drop below 5": "should not"
         modal, negation = Tok("word", modal.text, "should"), [Tok("word", "", "not")]
-    if not word(j, _ENDING_VERBS):
+    if not _word_in(clause, j, _ENDING_VERBS):
         return None
     verb = clause[j]
     rest = clause[j + 1:]
     if not any(x.kind == "num" for x in rest) or any(x.kind == "name" and x.of == "product" for x in rest):
         return None
     verb = Tok("word", verb.text, "have") if verb.value == "be" else verb
-    last = max(j for j, x in enumerate(rest) if x.kind == "num") + 1   # the item right after the amount
+    last = max(n for n, x in enumerate(rest) if x.kind == "num") + 1   # the item right after the amount
     return [place, modal, *negation, verb, *rest[:last], item, *rest[last:]]
 
 
@@ -205,14 +215,11 @@ def fronted_source(toks: list[Tok], verbs: Collection[str]) -> list[Tok]:
     "off" and one place, then a verb of ``verbs`` ("from rack B send 2 rooibos to the cage"), reads
     as "from rack B, send ...", which the grammar reads as it reads a fronted source said with its
     comma. Nothing is added but the comma."""
-    def word(j: int, words: Collection[str]) -> bool:
-        return 0 <= j < len(toks) and toks[j].kind == "word" and toks[j].value in words
-
     out: list[Tok] = []
     for k, t in enumerate(toks):
         out.append(t)
-        j = k - 2 if word(k - 1, ("the",)) else k - 1   # "from the cage"
-        if (t.kind == "name" and t.of == "shelf" and word(j, _SOURCES) and (j == 0 or toks[j - 1].kind == "punct")
-                and word(k + 1, verbs)):
+        j = k - 2 if _word_in(toks, k - 1, ("the",)) else k - 1   # "from the cage"
+        if (_name_at(toks, k, "shelf") and _word_in(toks, j, _SOURCES) and (j == 0 or toks[j - 1].kind == "punct")
+                and _word_in(toks, k + 1, verbs)):
             out.append(Tok("punct", ",", ","))
     return out
