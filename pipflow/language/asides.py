@@ -74,11 +74,13 @@ OBJECT_PRONOUNS = frozenset({"it", "them", "this", "that", "these", "those", "hi
 GREETINGS = frozenset({"hi", "hello", "hey", "hiya", "heya", "howdy", "morning", "afternoon", "evening", "good", "dear",
                        "greetings", "yo", "cheers", "thanks", "thank", "ta", "thx", "ok", "okay", "alright",
                        # South African greetings ("Howzit team", "Sawubona team", "Molo all")
-                       "howzit", "sawubona", "molo", "dumela", "heita"})
+                       "howzit", "sawubona", "molo", "dumela", "heita",
+                       # French, said in English chat ("Bonjour l'équipe", "Salut tout le monde": with its addressee)
+                       "bonjour", "salut", "merci"})
 #: words that open an apology or a thanks for something ("sorry for the late ask", "thanks for
 #: earlier"): what follows "for" / "about" is what one is sorry or thankful for, not an order
 PLEASANTRIES = frozenset({"sorry", "apologies", "apologise", "apologize", "pardon", "thanks", "thank", "thx",
-                          "ta", "cheers", "ty", "grateful", "appreciate", "appreciated", "dankie", "diolch"})
+                          "ta", "cheers", "ty", "grateful", "appreciate", "appreciated", "dankie", "diolch", "merci"})
 #: words that open a statement about someone or something ("she's been dropping them", "it's broken"):
 #: a verb acting on a pronoun after them reports what happened, it asks for nothing
 SUBJECTS = frozenset({"i", "im", "ive", "we", "were", "weve", "he", "hes", "she", "shes", "it", "its", "they",
@@ -94,12 +96,12 @@ ADDRESSEES = frozenset({"all", "everyone", "everybody", "team", "folks", "guys",
 
 
 #: a thanks that can close an order without a comma before it ("... to bay 2 ta")
-THANKS = frozenset({"thanks", "ta", "cheers", "thx", "ty", "tyvm", "thankyou", "dankie", "diolch"})
+THANKS = frozenset({"thanks", "ta", "cheers", "thx", "ty", "tyvm", "thankyou", "dankie", "diolch", "merci"})
 #: who an order is said to, or a tag that closes it, without a comma before it ("... on dispatch
 #: please mate", "... forklifts only mind", "... thanks lads"): never a word that is operative
 CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "boss", "love", "pet", "hun",
                      "mind", "yeah", "eh", "cheers", "ta", "thanks", "thx", "ty", "tyvm", "thankyou", "dankie",
-                     "man", "bru", "boet", "chale", "bud", "butt", "butty", "bach", "diolch"})
+                     "man", "bru", "boet", "chale", "bud", "butt", "butty", "bach", "diolch", "merci", "svp", "stp"})
 
 
 #: a request tag after an order ("... over to the shed would ya", "... could you"): it asks

@@ -18,7 +18,14 @@ The principle, for every reader:
   Devanagari ``३``), superscripts, fractions and fullwidth forms (``３``, ``ｓｈｅｌｆ２``) are
   refused like any other character outside the alphabet. For a fullwidth form or an accented
   letter the message shows the ASCII spelling the user probably meant, as a suggestion: the
-  reader never reads it so by itself.
+  reader never reads it so by itself (but see accented talk, below).
+* **An accented word is read only as talk.** A word whose only characters outside the alphabet
+  are accented Latin letters ("Québec", "là", "Montréal-Nord": a letter and combining accents, by
+  Unicode's canonical decomposition) is spelled without its accents when no part of it, spelled
+  so, is a word the reader reads (:func:`accents_folded`). It can then only be set aside as talk,
+  or be quoted in a refusal; the echo says how it was spelled. A word that would read as one of
+  the reader's words ("à" as "a", "café" where a place is called cafe) is refused as before: an
+  accent may make it another word, and the reader never guesses which.
 * **Typography the readers already read stays read**: curly apostrophes and quotes, dashes and
   the minus sign, the arrow for "to", the multiplication sign for "x", the ellipsis, and any
   white space (a no-break space is a space). Those are in each reader's list with their reading.
@@ -31,6 +38,7 @@ from __future__ import annotations
 
 import re
 import unicodedata
+from typing import Callable
 
 from pipflow.errors import TranslationError
 
@@ -120,6 +128,48 @@ def _ascii_spelling(word: str) -> str | None:
         out.append(base)
     spelled = "".join(out)
     return spelled if spelled != word else None
+
+
+def _unaccented(word: str) -> str | None:
+    """The word without the accents of its Latin letters ("Québec" -> "Quebec"); None when it has
+    none, or a character outside the alphabet that is no accented Latin letter (a fullwidth form,
+    "ø", "ß", another script)."""
+    if word.isascii():
+        return None
+    out = []
+    for ch in word:
+        decomposition = unicodedata.decomposition(ch)
+        if ch.isascii():
+            out.append(ch)
+        elif decomposition and not decomposition.startswith("<") and unicodedata.category(ch)[0] == "L":
+            base = "".join(c for c in unicodedata.normalize("NFD", ch) if not unicodedata.combining(c))
+            if not (base.isascii() and base.isalpha()):
+                return None
+            out.append(base)
+        else:
+            return None
+    return "".join(out)
+
+
+def accents_folded(command: str, reads: Callable[[str], bool]) -> tuple[str, list[str]]:
+    """The command with each accented word that can only be talk spelled without its accents, and
+    a note for each (module docstring). ``reads(word)``: whether the reader reads a lower-case
+    word of ASCII letters as one of its own (a world name, a grammar word, a number, or a typo
+    of one of them); a word with any such part stays as written, to be refused by
+    :func:`refuse_unread`. ``reads`` is asked only when the command has an accented word."""
+    notes: list[str] = []
+
+    def fold(m: re.Match) -> str:
+        word = m.group(0)
+        plain = _unaccented(word)
+        if plain is None or any(reads(part) for part in re.findall(r"[a-z]+", plain.lower())):
+            return word
+        notes.append(f"'{word}' read as '{plain}' (spelled without its accents; no word this reader reads, "
+                     f"so it can only be talk)")
+        return plain
+    if command.isascii():
+        return command, []
+    return re.sub(r"\S+", fold, command), notes
 
 
 #: pictographs that say how the writer feels and nothing else: faces, hands and gestures, hearts

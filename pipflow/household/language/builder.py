@@ -168,6 +168,8 @@ class Builder:
         elif kind == "toggle":   # "turn the fire on and the kettle": the things after the particle too
             st = {"op": "change", "things": [t for sub in self._subs(node, "tthings") for t in self.things(sub)],
                   "to": "off" if self._has(node, "DOWN") else self.state(node)}   # "shut everything down"
+            if self._has(node, "V_PUT"):
+                st["phrasal"] = True   # "put (on) the radio (on)": switched on only if it has a switch
         elif kind == "put":
             st = self.move(node)
         elif kind == "gap":   # the verb is elided: "... and the pillow on the bed", "... and the stove on", "... and the cup too"
@@ -372,7 +374,17 @@ class Builder:
         place still waiting for its replacement (None once said)."""
         if item.data == "notvia":
             via = self._sub(item, "via")
-            return {"words": words_under(self.tags, item), "place": self.place(self._sub(via, "place"))}
+            refused_now = {"words": words_under(self.tags, item), "place": self.place(self._sub(via, "place"))}
+            last = statements[-1] if statements else None
+            said = (last.get("via") or (last.get("to") if last.get("op") == "put" else None)) if last else None
+            if refused is None and isinstance(said, dict) and said.get("readings"):
+                # "heat the kugel in the microwave, not on the stove": a place already said, and
+                # another said not to use; the goal keeps the one said, which rules out the other
+                if {r["name"] for r in said["readings"]} & {r["name"] for r in refused_now["place"]["readings"]}:
+                    raise TranslationError(f"'{last['words']}' and '{refused_now['words']}' name the same place")
+                last["words"] += " , " + refused_now["words"]
+                return None
+            return refused_now
         last = statements[-1] if statements else None
         if last is None or last.get("op") != "change":
             raise TranslationError(f"'{words_under(self.tags, item)}': use it for what? (no action before it)")

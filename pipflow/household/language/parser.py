@@ -39,11 +39,11 @@ from pipflow.household.language.lacking import lacking
 from pipflow.household.language.lexicon import ARROW, MARKS, PHRASES, arrows_said_as
 from pipflow.household.language.names import world_phrases
 from pipflow.household.language.people import about_people
-from pipflow.household.language.setaside import without_asides
+from pipflow.household.language.setaside import reads_as_word, without_asides
 from pipflow.household.language.tagger import owners_as_the, tag
 from pipflow.household.language.tokens import Tag
 from pipflow.language.asides import said
-from pipflow.language.characters import refuse_unread, without_expressions
+from pipflow.language.characters import accents_folded, refuse_unread, without_expressions
 from pipflow.language.listing import inline_numbering
 from pipflow.language.earley import ListLexer
 from pipflow.language.lookahead import with_lookahead
@@ -89,6 +89,9 @@ def _parse_said(command: str, world: dict, notes: list[str]) -> list[dict]:
     command, feelings = without_expressions(inline_numbering(command))   # "1) ... 2) ...": a job each
     if feelings:
         notes.append(said(feelings))
+    if not command.isascii():   # "the Québec cousins are coming": an accented word that can only be talk
+        command, accented = accents_folded(command, reads_as_word(world))
+        notes += accented
     refuse_unread(command, MARKS)   # a character this reader does not read is refused, never skipped
     command = owners_as_the(command, world, notes)
     command = conditions_read(command, world, notes)   # "if the lamp is on, switch it off"

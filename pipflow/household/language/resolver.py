@@ -576,6 +576,9 @@ class Resolver:
                 raise Refusal(f"'{words}': {via} cannot make anything {cond}: it is not a {need}")
         need = VIA_PROPERTY.get(cond)
         for n, explicit in named:
+            if st.get("phrasal") and not applies(self.world, n, cond):
+                # "put on the afghan" is no switching: wearing it, or covering someone, is not read
+                raise TranslationError(f"'{words}': {n} has no switch, and 'put on' is read only as switching on")
             self.want(n, cond, explicit, words)
             held = self.goal.inside.get(n)
             if via is None and held is not None and need and need in self.world["places"][held[0]]["properties"] \

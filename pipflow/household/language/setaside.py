@@ -47,6 +47,15 @@ def _content(world: dict) -> Callable[[str], bool]:
     return content
 
 
+def reads_as_word(world: dict) -> Callable[[str], bool]:
+    """Whether this reader reads a word as one of its own in this world: a word of the lexicon
+    (grammar words too), a word of a world name, a number, or a misspelling of one (what an
+    accented word may never be read as: :func:`pipflow.language.characters.accents_folded`)."""
+    content = _content(world)
+    lexicon = {w for k in PHRASES for w in k}
+    return lambda w: w in lexicon or content(w)
+
+
 #: how a clause opens when it says what the speaker will do ("I'll grab the milk myself", "I'm
 #: about to unpack the shopping"): no order for the robots
 SPEAKER_OPENERS = (("i", "will"), ("we", "will"), ("i", "am", "about", "to"), ("we", "are", "about", "to"),

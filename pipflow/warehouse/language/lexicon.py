@@ -20,7 +20,7 @@ from pipflow.errors import InputError, Refusal, TranslationError
 from pipflow.language.asides import (FUNCTION_WORDS, OPERATIVE, Clause, clauses, content_free, is_opener, leading_reason,
                                      said_talk, signature, trailing_adjunct, trailing_thanks, unmarked_statement)
 from pipflow.language.asterisk import star_corrections
-from pipflow.language.characters import refuse_unread, without_expressions
+from pipflow.language.characters import accents_folded, refuse_unread, without_expressions
 from pipflow.language.english import common_word
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS, is_number
 from pipflow.language.radio import transmission
@@ -48,7 +48,9 @@ FILLERS = {"the", "please", "kindly", "units", "unit", "pieces", "piece", "boxes
            # and Hindi and Tamil assent said anywhere ("Achha take 3 ...")
            "nos", "itself", "meanwhile", "additionally", "achha", "acha", "accha", "seri", "haan", "jaldi",
            # Welsh English: "tidy" (good, proper) closing an order
-           "tidy"}
+           "tidy",
+           # French politeness said in English chat ("move 3 ... svp", "merci")
+           "svp", "stp", "merci"}
 #: packaging and measure nouns: "5 cartons of tape", "2 rolls of shrink wrap" count the item after
 #: "of". A world that names a product so ("carton") recognises it as that product first.
 FILLERS |= {"carton", "cartons", "roll", "rolls", "pack", "packs", "packet", "packets", "bundle",
@@ -405,7 +407,14 @@ REQUEST_FRAMES = (("would", "it", "be", "possible", "to"), ("is", "it", "possibl
                   ("would", "you", "be", "able", "to"), ("could", "you", "be", "so", "kind", "as", "to"),
                   ("would", "you", "be", "so", "kind", "as", "to"), ("could", "you", "possibly"),
                   ("would", "you", "possibly"), ("can", "you", "possibly"), ("would", "you", "mind", "terribly"))
-REQUEST_FRAMES = tuple(sorted(REQUEST_FRAMES, key=len, reverse=True))   # the longest said is the frame
+#: a want of the speaker's that the robots do it ("I want you to ...", "we need you to ..."), and its
+#: calque from French, Spanish or Italian ("I want that you ..."): request frames of words the
+#: grammar has anyway ("u" is "you" by then), so none of them is reserved as a frame word
+WANT_FRAMES = tuple((who, want) + rest for who in ("i", "we") for want in ("want", "need")
+                    for rest in (("you", "to"), ("that", "you"))) + \
+    (("i", "would", "like", "you", "to"), ("we", "would", "like", "you", "to"), ("id", "like", "you", "to"))
+FRAME_WORDS_OF_ASKING = frozenset(w for f in REQUEST_FRAMES for w in f)
+REQUEST_FRAMES = tuple(sorted(REQUEST_FRAMES + WANT_FRAMES, key=len, reverse=True))   # the longest said is the frame
 #: frames after which the verb comes as "-ing" ("would you mind moving ..."): read as the verb
 GERUND_FRAMES = {("would", "you", "mind"), ("do", "you", "mind"), ("would", "you", "mind", "terribly")}
 #: frames that ask for a place to end up so ("Would it be possible for receiving to end up with 12
@@ -443,7 +452,7 @@ _AS_SAID = {"per", "discussed", "agreed", "mentioned", "requested", "arranged", 
             "always", "instructed", "advised", "informed"}
 
 #: the words of the frames, spelt right ("sort" is no slip of "short")
-FRAME_WORDS = frozenset(w for f in REQUEST_FRAMES + COURTESY_TIMES for w in f)
+FRAME_WORDS = FRAME_WORDS_OF_ASKING | frozenset(w for f in COURTESY_TIMES for w in f)
 
 
 def _subject_framed(toks: list[Tok], k: int) -> list[Tok] | None:
@@ -859,6 +868,12 @@ class Lexicon:
         return (word in self.keywords or word in FILLERS or word in STOPWORDS or word in FRAME_WORDS
                 or word in NUMBER_WORDS or word in FRACTIONS or word in SUPERLATIVES)
 
+    def _reads(self, word: str) -> bool:
+        """Whether a word is one this reader reads as its own: a grammar word, a filler, a number, a
+        name of the world or a robot, or a slip of one (what an accented word may never be read as:
+        :func:`pipflow.language.characters.accents_folded`)."""
+        return self._known(word) or word in self._robots or self.content(word) or self.names_world(word)
+
     def _keyword_typo(self, word: str) -> str | None:
         """The keyword a misspelt word means ("shuld" -> should, "mvoe" -> move, "form" -> from):
         one edit with the same first letter for words of five letters or more, or one slip of the
@@ -965,6 +980,19 @@ class Lexicon:
                 len(w) >= 5 and w[:1] == word[:1] and distance(word, w) <= 1 for w in self._own_name_words)
         return self._near_name(word)
 
+    def _label(self, toks: list[Tok], k: int) -> bool:
+        """Whether the number at ``k`` is part of a label, no count: "door 3", "truck 14", "PO
+        4471", "TN 09 BQ 4471". It is written in digits ("Quick one before ..." counts), it follows
+        a word that is no word of this reader (a grammar word, filler, number or name of the world,
+        or a slip of one: "bay 12" where places are bay1..bay4 stays a count), and no item follows."""
+        before = toks[k - 1] if k else None
+        if not toks[k].text.isdigit() or before is None or before.kind != "word":
+            return False
+        if not str(before.value).isalpha() or self._reads(str(before.value)):
+            return False
+        after = toks[k + 1] if k + 1 < len(toks) else None
+        return after is None or after.kind in ("punct", "word")
+
     def _clauses(self, cur: list[Tok]) -> tuple[list[Tok], list[str]]:
         """The sentence's tokens without its content-free clauses (split at commas and colons),
         and the words of those. A name, count or kind word is content by itself."""
@@ -972,13 +1000,15 @@ class Lexicon:
         # the words as written (a greeting's "lads" is no misspelt "loads"); a word that a repair
         # would make a grammar word is content (:meth:`content`)
         # a name, kind word or count stands as "\0" (a count as "\1": a reason may name places,
-        # never hold a count: asides.leading_reason); both are content by themselves
+        # never hold a count: asides.leading_reason); both are content by themselves; a number that
+        # labels something of the talk ("truck 14": :meth:`_label`) stands as "\2", no content
         # (a kind word keeps its text: "good" of goods opens "Good morning team"; it is content by
         # the names test all the same)
         words = [str(t.value) if t.kind == "punct" and t.value in marks else
                  "s" if t.kind == "word" and t.value == POSS_MARK else   # "Today's plan": the 's is no content
                  (re.sub(r"[^a-z0-9]", "", t.text.lower()) or str(t.value) if t.kind in ("word", "kind") else
-                  "oclock" if t.kind == "num" and _clock(cur, k) else "\1" if t.kind == "num" else "\0")
+                  "oclock" if t.kind == "num" and _clock(cur, k) else "\2" if t.kind == "num" and self._label(cur, k)
+                  else "\1" if t.kind == "num" else "\0")
                  for k, t in enumerate(cur)]
         keep: list[Tok] = []
         aside: list[str] = []
@@ -1044,6 +1074,8 @@ class Lexicon:
         sentence with no content (:meth:`content`) is set aside: not returned, its words kept in
         :attr:`aside`; a sentence with some content-free clauses carries its reading without them
         as ``trimmed``. :attr:`tokens` keeps the recognised tokens, :meth:`position` finds one."""
+        # "the truck from Québec is late": an accented word that can only be talk, spelled without accents
+        command, accented = accents_folded(command, self._reads)
         radio = transmission(command, self._names_exactly, lambda w: w in self._robots, is_number)
         if radio is not None:   # "Yard control to all units. ... Over.": the voice procedure set aside
             command = radio.text
@@ -1054,8 +1086,10 @@ class Lexicon:
         # "... 3 cowboys ... *carboys": a texted correction made, and said
         command, starred = star_corrections(command)
         command = self._chat_said_plainly(command)
-        # a time written as one word ("3pm", "10am", "2oclock") is the count and its word, as "3 pm" is
+        # a time written as one word ("3pm", "10am", "2oclock") is the count and its word, as "3 pm" is;
+        # the 24-hour clock written the French way ("at 15h", "3h30") is one too
         text = re.sub(r"\b(\d{1,2})(am|pm|oclock)\b", r"\1 \2", self._joined(check_text(command)), flags=re.IGNORECASE)
+        text = re.sub(r"\b([01]?\d|2[0-4])h(?:[0-5]\d)?\b", r"\1 oclock", text, flags=re.IGNORECASE)
         toks = noun_adjuncts(unmarked_lists(numbered_siblings(recognize(text, self.index), self._numbered_places)))
         fixed = []
         for t in toks:
@@ -1076,7 +1110,7 @@ class Lexicon:
         toks = lexicon_verbs(quantity_phrases(addressed_anyone(stative_having(toks)), self.keywords), self.keywords)
         toks = dropped_object(corrected_later(without_particles(corrected(toks))))
         self._framed = (radio.aside if radio is not None else []) + feelings + framed
-        self.corrected = starred
+        self.corrected = accented + starred
         return self._split(toks, stops)
 
     def _chat_said_plainly(self, command: str) -> str:
