@@ -89,6 +89,8 @@ def test_a_number_that_labels_talk_is_no_count(command: str, talk: str) -> None:
 
 @pytest.mark.parametrize("command, world", [
     ("move 3 crates from quay to shed, truck 4 crates", TERMINAL),   # an item after it: a count
+    ("move 3 crates from quay to shed, trailer 4 pallets", TERMINAL),   # a unit after it: a count
+    ("move 3 crates from quay to shed, we are expecting 4", TERMINAL),   # after a verb: a count
     ("move 3 crates from quay to shed, dock 2 is late", with_ramp_called("dock1")),   # a word of a name
 ])
 def test_a_number_after_a_word_of_the_world_or_before_an_item_stays_a_count(command: str, world: dict) -> None:

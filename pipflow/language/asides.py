@@ -92,7 +92,9 @@ ADDRESSEES = frozenset({"all", "everyone", "everybody", "team", "folks", "guys",
                         "pet", "hun", "honey", "sweetie", "chaps", "pal", "pals", "buddy", "boys", "girls", "ladies",
                         "gents", "gentlemen", "kids", "sir", "madam", "friends", "colleagues", "staff", "squad",
                         # Welsh English ("Morning bud", "Alright butt")
-                        "bud", "butt", "butty", "bach"})
+                        "bud", "butt", "butty", "bach",
+                        # Nigerian English and Pidgin ("Good morning una": you all; "oga": boss)
+                        "una", "oga", "ogas"})
 
 
 #: a thanks that can close an order without a comma before it ("... to bay 2 ta")

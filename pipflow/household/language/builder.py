@@ -169,7 +169,7 @@ class Builder:
             st = {"op": "change", "things": [t for sub in self._subs(node, "tthings") for t in self.things(sub)],
                   "to": "off" if self._has(node, "DOWN") else self.state(node)}   # "shut everything down"
             if self._has(node, "V_PUT"):
-                st["phrasal"] = True   # "put (on) the radio (on)": switched on only if it has a switch
+                st["phrasal"] = True   # "put the radio on": switched on only if it has a switch
         elif kind == "put":
             st = self.move(node)
         elif kind == "gap":   # the verb is elided: "... and the pillow on the bed", "... and the stove on", "... and the cup too"

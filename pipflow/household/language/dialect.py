@@ -59,6 +59,20 @@ def cut_as_switch(words: list[str], world: dict, index: dict, notes: list[str]) 
     return out
 
 
+def put_on_as_switch(words: list[str], world: dict, index: dict, notes: list[str]) -> list[str]:
+    """The words with "put" read as "switch" where "on" or "off" and then a thing that switches
+    follow it ("put on the radio", "put off the fan" as Indian and Nigerian English say it):
+    "put the radio on" is read already, and "put on the sweater" (no switch) or "put on the
+    trestle" (a place, with its thing said before) keep "put" as placing. A note says so."""
+    out = list(words)
+    for k, w in enumerate(words):
+        if w == "put" and k + 1 < len(words) and words[k + 1] in _SWITCH_PARTICLES \
+                and _switching_phrase(words, _after_determiners(words, k + 2), world, index):
+            out[k] = "switch"
+            notes.append(f"'put {words[k + 1]}' read as 'switch {words[k + 1]}'")
+    return out
+
+
 def _after_determiners(words: list[str], k: int) -> int:
     """The index of the first word at or after ``k`` that is no determiner ("the", "that", "all")."""
     while k < len(words) and words[k] in _DETERMINERS:

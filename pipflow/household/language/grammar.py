@@ -46,7 +46,6 @@ toggle: @V_TOGGLE onoff tthings _here?
       | @V_TOGGLE typo_off tthings
       | @V_SHUTDOWN tthings
       | _vput tthings on
-      | _vput on tthings
       | @V_TOGGLE tthings onoff (@AND | COMMA @AND) tthings _here?
       | _vput tthings on (@AND | COMMA @AND) tthings
       | @V_LIGHT tthings _here?

@@ -537,6 +537,7 @@ FILLER = {("um",), ("umm",), ("uh",), ("uhh",), ("uhm",), ("er",), ("erm",),   #
           # texting: laughter, "right now", "real quick", and words of emphasis that grade nothing
           ("lol",), ("lmao",), ("haha",), ("hahaha",), ("rn",), ("right", "now"), ("real", "quick"),
           ("literally",), ("tbh",), ("btw",), ("fyi",), ("omg",), ("ugh",), ("ngl",),
+          ("tho",), ("ty",), ("tysm",), ("lowkey",),
           # Ghanaian and South African English exclamations and Twi "please" ("Ei the sink!", "Chale
           # ...", "..., abi?", "mepa wo kyew", "yoo": all right), said beside the request
           ("ei",), ("eii",), ("chale",), ("abi",), ("yoo",), ("mepa", "wo", "kyew"), ("eish",), ("hayibo",),
@@ -674,7 +675,11 @@ MARKS = frozenset("+&.,;:!?'\"()[]-_\u2018\u2019\u201c\u201d\u2010\u2011\u2012\u
 
 
 #: texting and typing without apostrophes ("can u", "theyre", "itll", "isnt", "gonna"), written out
-_TYPED = ((r"\bu\b", "you"), (r"\bur\b", "your"), (r"\b(they|you|we)re\b", r"\1 are"),
+_TYPED = ((r"\bu\b", "you"),
+          # "ur" before where or how one is ("while ur there", "when ur done") is "you are", else "your"
+          (r"\bur\s+(?=(?:there|here|up|done|passing|over|in|out|back|home|at|finished)\b)", "you are "),
+          (r"\bur\b", "your"), (r"\br\b", "are"), (r"\bw\b(?=\s+(?:the|a|an|my|your|her|his|it|them)\b)", "with"),
+          (r"\b(?:tmrw|tmr|tmrrw|2moro|2morrow)\b", "tomorrow"), (r"\b(they|you|we)re\b", r"\1 are"),
           (r"\b(it|that|there|what)ll\b", r"\1 will"), (r"\b(that|there|what)s\b", r"\1 is"), (r"\bim\b", "i am"),
           (r"\bive\b", "i have"), (r"\b(is|are|was|were|does|did|has|have|could|would|should)nt\b", r"\1 not"),
           (r"\bcant\b", "can not"), (r"\bgonna\b", "going to"), (r"\bwanna\b", "want to"), (r"\bgotta\b", "have to"),
@@ -687,6 +692,9 @@ def normalize(text: str) -> str:
     """Lower case, contractions spelt out ("don't" -> "do not"), hyphens and underscores as
     spaces, so that "desk-lamp", "desk_lamp" and "desk lamp" read alike."""
     t = spoken_forms(text.replace("’", "'")).lower().replace("\u2026", "...")   # "burnin'", "'em"
+    # a letter typed three times or more is stretched for feeling ("sooo hot", "pleaseee"): no
+    # English word has one, so it is read once
+    t = re.sub(r"([a-z])\1{2,}", r"\1", t)
     t = re.sub(r"\s*[+&]\s*", " and ", t)   # "noodles + curry", "salt & pepper"
     # a dash set off by spaces, or an en or em dash, is a pause, like a comma ("throw it away -
     # it smells off - and ..."); a hyphen inside a word joins it ("desk-lamp")

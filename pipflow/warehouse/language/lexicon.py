@@ -50,13 +50,17 @@ FILLERS = {"the", "please", "kindly", "units", "unit", "pieces", "piece", "boxes
            # Welsh English: "tidy" (good, proper) closing an order
            "tidy",
            # French politeness said in English chat ("move 3 ... svp", "merci")
-           "svp", "stp", "merci"}
+           "svp", "stp", "merci",
+           # Nigerian English and Pidgin "please" ("Abeg add 5 ...", "biko"), said anywhere
+           "abeg", "biko"}
 #: packaging and measure nouns: "5 cartons of tape", "2 rolls of shrink wrap" count the item after
 #: "of". A world that names a product so ("carton") recognises it as that product first.
 FILLERS |= {"carton", "cartons", "roll", "rolls", "pack", "packs", "packet", "packets", "bundle",
             "bundles", "bag", "bags", "tub", "tubs", "bottle", "bottles", "reel", "reels", "tote",
             "totes", "drum", "drums", "tin", "tins", "jar", "jars", "sack", "sacks", "crates", "jug", "jugs",
-            "sheet", "sheets", "length", "lengths", "coil", "coils"}
+            "sheet", "sheets", "length", "lengths", "coil", "coils",
+            # the logistics abbreviations ("4 ctns", "2 plts")
+            "ctn", "ctns", "plt", "plts"}
 #: fillers that make the count after them a final count
 EXACT_WORDS = {"exactly", "precisely"}
 #: chat spellings of keywords
@@ -349,7 +353,7 @@ VERB_LEXICON: dict[str, tuple[str, str]] = {
     "shove": ("move", "move"), "chuck": ("move", "toss"), "sling": ("move", "toss"), "lob": ("move", "toss"), "drag": ("move", "move"), "move across": ("move", "move"),
     "send across": ("move", "send"), "carry over": ("move", "carry"), "bring across": ("move", "bring"),
     # removing (and the grammar's own: remove, unload, withdraw, take away, get rid of, dispose of, throw out)
-    "offload": ("remove", "unload"), "off-load": ("remove", "unload"), "pull off": ("remove", "take"),
+    "offload": ("remove", "unload"), "off-load": ("remove", "unload"), "off load": ("remove", "unload"), "pull off": ("remove", "take"),
     "pull out": ("remove", "take"), "take off": ("remove", "take"), "take out": ("remove", "take"),
     "clear away": ("remove", "remove"),
     # keeping (and the grammar's own: keep, leave, retain, hold)
@@ -982,16 +986,18 @@ class Lexicon:
 
     def _label(self, toks: list[Tok], k: int) -> bool:
         """Whether the number at ``k`` is part of a label, no count: "door 3", "truck 14", "PO
-        4471", "TN 09 BQ 4471". It is written in digits ("Quick one before ..." counts), it follows
-        a word that is no word of this reader (a grammar word, filler, number or name of the world,
-        or a slip of one: "bay 12" where places are bay1..bay4 stays a count), and no item follows."""
+        4471", "TN 09 BQ 4471". It is written in digits ("Quick one before ..." counts); it follows
+        a noun that is no word of this reader (a grammar word, filler, number or name of the world,
+        or a slip of one: "bay 12" where places are bay1..bay4 stays a count), never a verb form
+        ("expecting 3" counts); and no item or unit follows it ("3 pallets" counts)."""
         before = toks[k - 1] if k else None
         if not toks[k].text.isdigit() or before is None or before.kind != "word":
             return False
-        if not str(before.value).isalpha() or self._reads(str(before.value)):
+        word = str(before.value)
+        if not word.isalpha() or word.endswith(("ing", "ed")) or self._reads(word):
             return False
         after = toks[k + 1] if k + 1 < len(toks) else None
-        return after is None or after.kind in ("punct", "word")
+        return after is None or after.kind == "punct" or (after.kind == "word" and str(after.value) not in FILLERS)
 
     def _clauses(self, cur: list[Tok]) -> tuple[list[Tok], list[str]]:
         """The sentence's tokens without its content-free clauses (split at commas and colons),
