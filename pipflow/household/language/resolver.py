@@ -577,7 +577,7 @@ class Resolver:
         need = VIA_PROPERTY.get(cond)
         for n, explicit in named:
             if st.get("phrasal") and not applies(self.world, n, cond):
-                # "put on the afghan" is no switching: wearing it, or covering someone, is not read
+                # "put the afghan on" is no switching: wearing it, or covering someone, is not read
                 raise TranslationError(f"'{words}': {n} has no switch, and 'put on' is read only as switching on")
             self.want(n, cond, explicit, words)
             held = self.goal.inside.get(n)
