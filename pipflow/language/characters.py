@@ -106,49 +106,30 @@ def _numeric(ch: str) -> bool:
     return True
 
 
-def _ascii_spelling(word: str) -> str | None:
+def _ascii_spelling(word: str, widths: bool = True) -> str | None:
     """The ASCII spelling of a word whose only foreign characters are fullwidth or halfwidth
     forms or accented letters (``ｓｈｅｌｆ２`` -> ``shelf2``, ``prodüct1`` -> ``product1``), for a
-    suggestion; None when any character would change meaning (superscripts, fractions, other
-    scripts' digits: their compatibility forms are not the same character)."""
+    suggestion; None when it has none, or when any character would change meaning (superscripts,
+    fractions, other scripts' digits: their compatibility forms are not the same character).
+    ``widths=False``: accented Latin letters only ("Québec" -> "Quebec"; a fullwidth form, "ø",
+    "ß" or a sign with an accent gives None), the spelling :func:`accents_folded` may read."""
     out = []
     for ch in word:
         if ch.isascii():
             out.append(ch)
             continue
         decomposition = unicodedata.decomposition(ch)
-        if decomposition.startswith(("<wide>", "<narrow>")):
+        if widths and decomposition.startswith(("<wide>", "<narrow>")):
             base = unicodedata.normalize("NFKC", ch)
-        elif decomposition and not decomposition.startswith("<"):  # canonical: a letter and accents
-            base = "".join(c for c in unicodedata.normalize("NFD", ch) if not unicodedata.combining(c))
+        elif decomposition and not decomposition.startswith("<") and (widths or unicodedata.category(ch)[0] == "L"):
+            base = "".join(c for c in unicodedata.normalize("NFD", ch) if not unicodedata.combining(c))  # accents
         else:
             return None
-        if not base.isascii():
+        if not base.isascii() or not (widths or base.isalpha()):
             return None
         out.append(base)
     spelled = "".join(out)
     return spelled if spelled != word else None
-
-
-def _unaccented(word: str) -> str | None:
-    """The word without the accents of its Latin letters ("Québec" -> "Quebec"); None when it has
-    none, or a character outside the alphabet that is no accented Latin letter (a fullwidth form,
-    "ø", "ß", another script)."""
-    if word.isascii():
-        return None
-    out = []
-    for ch in word:
-        decomposition = unicodedata.decomposition(ch)
-        if ch.isascii():
-            out.append(ch)
-        elif decomposition and not decomposition.startswith("<") and unicodedata.category(ch)[0] == "L":
-            base = "".join(c for c in unicodedata.normalize("NFD", ch) if not unicodedata.combining(c))
-            if not (base.isascii() and base.isalpha()):
-                return None
-            out.append(base)
-        else:
-            return None
-    return "".join(out)
 
 
 def accents_folded(command: str, reads: Callable[[str], bool]) -> tuple[str, list[str]]:
@@ -161,7 +142,7 @@ def accents_folded(command: str, reads: Callable[[str], bool]) -> tuple[str, lis
 
     def fold(m: re.Match) -> str:
         word = m.group(0)
-        plain = _unaccented(word)
+        plain = _ascii_spelling(word, widths=False)
         if plain is None or any(reads(part) for part in re.findall(r"[a-z]+", plain.lower())):
             return word
         notes.append(f"'{word}' read as '{plain}' (spelled without its accents; no word this reader reads, "

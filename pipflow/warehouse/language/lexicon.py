@@ -417,7 +417,6 @@ REQUEST_FRAMES = (("would", "it", "be", "possible", "to"), ("is", "it", "possibl
 WANT_FRAMES = tuple((who, want) + rest for who in ("i", "we") for want in ("want", "need")
                     for rest in (("you", "to"), ("that", "you"))) + \
     (("i", "would", "like", "you", "to"), ("we", "would", "like", "you", "to"), ("id", "like", "you", "to"))
-FRAME_WORDS_OF_ASKING = frozenset(w for f in REQUEST_FRAMES for w in f)
 REQUEST_FRAMES = tuple(sorted(REQUEST_FRAMES + WANT_FRAMES, key=len, reverse=True))   # the longest said is the frame
 #: frames after which the verb comes as "-ing" ("would you mind moving ..."): read as the verb
 GERUND_FRAMES = {("would", "you", "mind"), ("do", "you", "mind"), ("would", "you", "mind", "terribly")}
@@ -456,7 +455,7 @@ _AS_SAID = {"per", "discussed", "agreed", "mentioned", "requested", "arranged", 
             "always", "instructed", "advised", "informed"}
 
 #: the words of the frames, spelt right ("sort" is no slip of "short")
-FRAME_WORDS = FRAME_WORDS_OF_ASKING | frozenset(w for f in COURTESY_TIMES for w in f)
+FRAME_WORDS = frozenset(w for f in REQUEST_FRAMES + COURTESY_TIMES if f not in WANT_FRAMES for w in f)
 
 
 def _subject_framed(toks: list[Tok], k: int) -> list[Tok] | None:
