@@ -322,22 +322,22 @@ def test_a_signal_inside_held_work_waits_for_its_end(signum):
     assert isinstance(caught.value, Interrupted) == (signum == signal.SIGTERM)
 
 
-def test_an_interrupt_between_a_records_move_and_its_row_keeps_both(tmp_path, monkeypatch):
-    """Seen in CI under load: SIGTERM landed after a finished run's record had moved to
-    ``records/`` and before its row was written, so ``--resume`` ran the task again and left a
-    record that no row named. The move and the row are now one step an interrupt waits for."""
+def test_an_interrupt_between_a_row_and_its_records_move_keeps_both(tmp_path, monkeypatch):
+    """Seen in CI under load: SIGTERM landed between a finished run's two steps (its row and its
+    record's move to ``records/``), so ``--resume`` ran the task again and left a record that no
+    row named. The two are one step an interrupt waits for."""
     from pipflow.engine.interrupts import interrupt_signals
     from pipflow.experiments import benchmarking
 
     monkeypatch.setenv("PIPFLOW_CACHE_DIR", str(tmp_path / "c"))
-    real_move = benchmarking._finished_record
+    real_write = benchmarking.write_json
 
-    def move_then_signal(out: Path, row: dict) -> None:
-        real_move(out, row)
+    def write_then_signal(path, data, **kw) -> None:
+        real_write(path, data, **kw)
         os.kill(os.getpid(), signal.SIGTERM)
         time.sleep(0.05)
 
-    monkeypatch.setattr(benchmarking, "_finished_record", move_then_signal)
+    monkeypatch.setattr(benchmarking, "write_json", write_then_signal)
     out = tmp_path / "out"
     config = benchmarking.BenchConfig(tasks_file=tasks_with_ids(tmp_path, ["a", "b"]), out=out)
     with pytest.raises(KeyboardInterrupt), interrupt_signals():
@@ -345,3 +345,50 @@ def test_an_interrupt_between_a_records_move_and_its_row_keeps_both(tmp_path, mo
     rows = [json.loads(p.read_text()) for p in rows_of(out)]
     assert len(rows) == 1
     assert [Path(r["run_dir"]).name for r in rows] == [p.name for p in (out / "records").iterdir()]
+
+
+#: a bench, through the API, that SIGKILLs itself just before or just after its first row is
+#: written: where no signal handler can wait, in the middle of a finished run's two steps
+KILLED_AT_ROW = """\
+import os, signal, sys
+from pathlib import Path
+from pipflow.experiments import benchmarking
+
+when = sys.argv[3]
+real_write = benchmarking.write_json
+
+def write_and_die(path, data, **kw):
+    if when == "before":
+        os.kill(os.getpid(), signal.SIGKILL)
+    real_write(path, data, **kw)
+    os.kill(os.getpid(), signal.SIGKILL)
+
+benchmarking.write_json = write_and_die
+benchmarking.run_bench(benchmarking.BenchConfig(tasks_file=Path(sys.argv[1]), out=Path(sys.argv[2]), jobs=1),
+                       progress=False)
+"""
+
+
+@pytest.mark.parametrize("when", ["before", "after"])
+def test_a_bench_killed_at_its_first_row_resumes_to_one_record_per_row(tmp_path, when):
+    """SIGKILL cannot be held off, so a bench can die between storing a row and moving its
+    record. In CI that left a record without a row, kept beside the rerun's by ``--resume``
+    (a kill just before the row, in the old order: move, then row). A kill just after the row
+    leaves a row whose record is not yet in ``records/``: the resumed bench finishes the move."""
+    tasks = tasks_with_ids(tmp_path, ["a", "b", "c"])
+    out = tmp_path / "out"
+    script = tmp_path / "killed.py"
+    script.write_text(KILLED_AT_ROW)
+    killed = subprocess.run([sys.executable, str(script), str(tasks), str(out), when], cwd=tmp_path,
+                            capture_output=True, text=True, timeout=300,
+                            env=clean_env(PIPFLOW_CACHE_DIR=str(tmp_path / "stepcache"), PYTHONPATH=str(REPO)))
+    assert killed.returncode == -signal.SIGKILL, killed.stderr
+    assert len(rows_of(out)) == (1 if when == "after" else 0)
+    done = pipflow(tmp_path, "bench", tasks, "--jobs", "1", "--out", out, "-q", "--resume")
+    assert done.returncode == 0, done.stderr
+    rows = json.loads((out / "runs.json").read_text())
+    assert len(rows) == 3
+    assert sorted(Path(r["run_dir"]).name for r in rows) == sorted(p.name for p in (out / "records").iterdir()), \
+        "a record without a row (a killed run's) or a row without its record"
+    assert all((Path(r["run_dir"]) / "run.json").is_file() for r in rows)
+    assert not (out / ".running").exists()

@@ -150,9 +150,10 @@ def read_row(out: Path, key: tuple[str, str, int]) -> dict | None:
         return None
 
 
-#: where runs write their records while they run; a record moves to ``OUT/records/`` when its row
-#: is stored, so a killed bench leaves no record that no row refers to (what it left here is
-#: removed when the next bench into the same folder starts)
+#: where runs write their records while they run; a record moves to ``OUT/records/`` just after its
+#: row (which names the record's place there) is stored, so a killed bench leaves no record that no
+#: row refers to. When the next bench into the same folder starts, a record whose row is stored
+#: finishes its move, and the records of unfinished runs are removed (those runs run again).
 RUNNING = ".running"
 
 
@@ -377,31 +378,67 @@ def fresh_out(root: Path = Path("bench-out"), label: str = "") -> Path:
 
 
 def _clear_unfinished(out: Path) -> None:
-    """Remove the records of runs a killed bench left unfinished (they have no row; those runs
-    run again). Only records no live process holds: this bench holds the folder's lock, so any
-    other writer is a worker its killed bench left behind."""
+    """Finish the moves a killed bench left undone, then remove the records of runs it left
+    unfinished (they have no row; those runs run again). Only records no live process holds: this
+    bench holds the folder's lock, so any other writer is a worker its killed bench left behind."""
     running = out / RUNNING
     if not running.is_dir() or running.is_symlink():
         return
+    stored = _stored_record_names(out)
     for record in running.iterdir():
-        if record.is_dir() and not record.is_symlink() and writer_alive(record) is not True:
+        if not record.is_dir() or record.is_symlink() or writer_alive(record) is True:
+            continue
+        if record.name in stored and not (out / "records" / record.name).exists():
+            _move_record(out, record)  # its row is stored: a kill came between the row and the move
+        else:
             shutil.rmtree(record, ignore_errors=True)
 
 
-def _finished_record(out: Path, row: dict) -> None:
-    """Move a finished run's record from ``OUT/.running`` into ``OUT/records`` (just before its
-    row is stored, which then refers to it)."""
+def _stored_record_names(out: Path) -> set[str]:
+    """The names of the records that stored rows refer to in ``OUT/records``."""
+    names: set[str] = set()
+    for path in (out / "runs").glob("*/*/*.json"):
+        try:
+            run_dir = read_json(path).get("run_dir")
+        except (OSError, ValueError, AttributeError):
+            continue
+        if run_dir and Path(str(run_dir)).parent == out / "records":
+            names.add(Path(str(run_dir)).name)
+    return names
+
+
+def _record_target(out: Path, row: dict) -> tuple[Path, Path] | None:
+    """Where a finished run's record is (in ``OUT/.running``) and where it goes (``OUT/records``);
+    None for a run without a record there."""
     run_dir = row.get("run_dir")
     if not run_dir:
-        return
+        return None
     source = Path(str(run_dir))
     if source.parent != out / RUNNING or not source.is_dir():
-        return
+        return None
+    return source, out / "records" / source.name
+
+
+def _move_record(out: Path, source: Path) -> None:
+    """Move a finished run's record from ``OUT/.running`` into ``OUT/records``."""
     target = out / "records" / source.name
     make_dirs(target.parent, root=out)
     with writing(target, "moving a run record to"):
         os.replace(source, target)
-    row["run_dir"] = str(target)
+
+
+def _store_row(out: Path, key: tuple, row: dict) -> None:
+    """Store a finished run's row, then move its record to where the row says it is. A kill
+    between the two leaves a stored row whose record is still in ``OUT/.running``, which the next
+    bench moves (:func:`_clear_unfinished`); the other order left a record no row referred to,
+    which ``--resume`` could not tell from a killed run's and kept beside the rerun's."""
+    move = _record_target(out, row)
+    if move is not None:
+        make_dirs(move[1].parent, root=out)
+        row["run_dir"] = str(move[1])
+    write_json(row_path(out, key), row, root=out)
+    if move is not None:
+        _move_record(out, move[0])
 
 
 def _resumable(out: Path, specs: list[RunSpec]) -> dict[tuple, dict]:
@@ -462,9 +499,8 @@ def _execute(backend, todo: list[RunSpec], done: dict, out: Path, progress: bool
             done[key] = row
             if row.get("status") != "lost":  # a backend failure is not stored: --resume reruns it
                 try:
-                    with held():  # the record moves and its row is written, or neither (an interrupt waits)
-                        _finished_record(out, row)
-                        write_json(row_path(out, key), row, root=out)
+                    with held():  # the row is written and its record moves, or neither (an interrupt waits)
+                        _store_row(out, key, row)
                 except DiskError as err:
                     raise DiskError(f"{err}; the bench stopped (the rows stored before are kept: `pipflow bench ... "
                                     f"--out {out} --resume` continues once there is space)", err.path, err.errno) from None
