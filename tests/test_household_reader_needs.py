@@ -329,12 +329,14 @@ def test_a_world_whose_names_change_is_read_with_its_new_names(bothy):
 def test_a_candidate_may_take_two_changes(bothy):
     """A wording that still does not read is worded again from its own refusal: a misspelling two
     edits away repaired, then a clause of talk left out. Each change is said in the echo; with
-    one change at a time neither reads."""
-    command = "Slice the tunrpi, we're lantrn spotting."
+    one change at a time neither reads. (Where the clause holds a word not understood as well,
+    "we're lantrn spotting", the repaired wording is not read: it keeps that word, and such
+    wordings are refused the same way.)"""
+    command = "Slice the tunrpi, the lantern is dim."
     cands = offered(command, bothy)
     assert ({}, {"turnip": ["sliced"]}) in _goals(cands)
     two = next(c for c in cands if _goals([c])[0] == ({}, {"turnip": ["sliced"]}))
-    assert "'tunrpi' read as 'turnip'" in two["reading"] and "read without 'we are lantrn spotting'" in two["reading"]
+    assert "'tunrpi' read as 'turnip'" in two["reading"] and "read without 'the lantern is dim'" in two["reading"]
 
 
 def test_robots_addressed_by_name_are_offered_without_their_names(bothy):
@@ -658,3 +660,27 @@ def test_what_is_for_a_person_and_talk_about_them_is_set_aside(bothy):
                     "Slice the turnip for the plum.", "Father Tom is sleeping."):
         with pytest.raises(TranslationError):
             translate(command, bothy)
+
+
+def test_the_candidate_search_reads_no_wording_that_keeps_a_word_its_refusal_could_not_read(bothy):
+    """A wording that still holds a word the reader could not read is refused the same way, and
+    reading such wordings was half of what a refusal cost: the search does not read them, and
+    spends its bounded readings on the others (the repair is still found)."""
+    from pipflow.household.language import candidates
+    from pipflow.household.language.translator import _translate
+
+    command = "Slice the tunrpi, and wash the jug, we're off."
+    with pytest.raises(TranslationError) as refused:
+        _translate(command, bothy)
+    assert "tunrpi" in refused.value.unread
+    read: list[str] = []
+
+    def reading(text, world, choose):
+        read.append(text)
+        return _translate(text, world, choose)
+
+    cands = candidates.candidate_readings(command, bothy, refused.value, reading)
+    assert read
+    for text in read:
+        assert "tunrpi" not in text.split(), text
+    assert ({}, {"turnip": ["sliced"], "jug": ["clean"]}) in _goals(cands)

@@ -76,11 +76,14 @@ GREETINGS = frozenset({"hi", "hello", "hey", "hiya", "heya", "howdy", "morning",
                        # South African greetings ("Howzit team", "Sawubona team", "Molo all")
                        "howzit", "sawubona", "molo", "dumela", "heita",
                        # French, said in English chat ("Bonjour l'équipe", "Salut tout le monde": with its addressee)
-                       "bonjour", "salut", "merci"})
+                       "bonjour", "salut", "merci",
+                       # Swahili and Sheng, said in Kenyan English ("Sasa team", "Sawa team": OK, "Asante")
+                       "sasa", "sawa", "poa", "jambo", "habari", "mambo", "niaje", "asante", "asanteni"})
 #: words that open an apology or a thanks for something ("sorry for the late ask", "thanks for
 #: earlier"): what follows "for" / "about" is what one is sorry or thankful for, not an order
 PLEASANTRIES = frozenset({"sorry", "apologies", "apologise", "apologize", "pardon", "thanks", "thank", "thx",
-                          "ta", "cheers", "ty", "grateful", "appreciate", "appreciated", "dankie", "diolch", "merci"})
+                          "ta", "cheers", "ty", "grateful", "appreciate", "appreciated", "dankie", "diolch", "merci",
+                          "asante", "asanteni"})
 #: words that open a statement about someone or something ("she's been dropping them", "it's broken"):
 #: a verb acting on a pronoun after them reports what happened, it asks for nothing
 SUBJECTS = frozenset({"i", "im", "ive", "we", "were", "weve", "he", "hes", "she", "shes", "it", "its", "they",
@@ -94,16 +97,20 @@ ADDRESSEES = frozenset({"all", "everyone", "everybody", "team", "folks", "guys",
                         # Welsh English ("Morning bud", "Alright butt")
                         "bud", "butt", "butty", "bach",
                         # Nigerian English and Pidgin ("Good morning una": you all; "oga": boss)
-                        "una", "oga", "ogas"})
+                        "una", "oga", "ogas",
+                        # Kenyan English and Sheng ("Sawa wasee": OK guys; "mzee": elder, sir)
+                        "boss", "wasee", "mzee"})
 
 
 #: a thanks that can close an order without a comma before it ("... to bay 2 ta")
-THANKS = frozenset({"thanks", "ta", "cheers", "thx", "ty", "tyvm", "thankyou", "dankie", "diolch", "merci"})
+THANKS = frozenset({"thanks", "ta", "cheers", "thx", "ty", "tyvm", "thankyou", "dankie", "diolch", "merci", "asante",
+                    "asanteni"})
 #: who an order is said to, or a tag that closes it, without a comma before it ("... on dispatch
 #: please mate", "... forklifts only mind", "... thanks lads"): never a word that is operative
 CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "boss", "love", "pet", "hun",
                      "mind", "yeah", "eh", "cheers", "ta", "thanks", "thx", "ty", "tyvm", "thankyou", "dankie",
-                     "man", "bru", "boet", "chale", "bud", "butt", "butty", "bach", "diolch", "merci", "svp", "stp"})
+                     "man", "bru", "boet", "chale", "bud", "butt", "butty", "bach", "diolch", "merci", "svp", "stp",
+                     "asante", "asanteni", "bana", "mzee"})
 
 
 #: a request tag after an order ("... over to the shed would ya", "... could you"): it asks
@@ -366,7 +373,21 @@ def _operative_at(ws: list[str], k: int) -> bool:
         return False
     if ws[k] == "all" and (nxt in DURATIONS or (nxt == "the" and k + 2 < len(ws) and ws[k + 2] in DURATIONS)):
         return False
+    if _the_same_as_subject(ws, k):
+        return False
     return near_operative(ws[k])
+
+
+def _the_same_as_subject(ws: list[str], k: int) -> bool:
+    """ "..., the same is blocking the roller door", "..., the same has a battery issue": "the
+    same" opening a report is the thing just named (Kenyan and Indian English), no repetition. Only
+    before "is/are/was/were" and a verb in -ing, or "has/had" not followed by "to": "the same goes
+    for bay 2" or "the same is needed on shelf 2" repeat an order, and stay operative."""
+    if ws[k] != "same" or k != 1 or ws[0] != "the" or len(ws) < 4:
+        return False
+    verb, after = ws[2], ws[3]
+    return (verb in ("is", "are", "was", "were") and after.endswith("ing") and len(after) > 4) or \
+        (verb in ("has", "had") and after != "to")
 
 
 #: words of :data:`ASKING` that ask only before "to" ("has to go", "got to have"); elsewhere they

@@ -295,7 +295,11 @@ def candidate_readings(command: str, world: dict, error: TranslationError,
     search is breadth first (every wording of one change before any of two), so the fewest
     changes are offered first, and bounded by :data:`MAX_TRIES` readings. A word one change puts in
     is never taken out by a later one: "fine" read as "fix" and then "fix" left out would drop the
-    word that said the opposite, which no single change may do."""
+    word that said the opposite, which no single change may do. A wording that still holds a word
+    its refusal could not read (no name, no word of the reader) is not read: it would be refused
+    the same way (over the household sets, 9 of 1779 such wordings read, against 63 of 1104
+    others), and reading them cost half of the search. (Wording again, unread, one that mends one
+    of two such words cost four times the whole search and found fewer golds.)"""
     offered = list(error.candidates)
     seen = {_goal_key(c.get("goal") or {}) for c in offered}
     tried: set[tuple[str, str]] = set()
@@ -307,6 +311,7 @@ def candidate_readings(command: str, world: dict, error: TranslationError,
     while frontier and len(offered) < MAX_CANDIDATES and tries < MAX_TRIES:
         said, refusal, hows, rests, chosen, changes, put_in = frontier.pop(0)
         said_words = Counter(words_of(said))
+        unread = set(getattr(refusal, "unread", None) or ())
         for text, how, rests_on, choose in _wordings(said, world, refusal):
             if len(offered) >= MAX_CANDIDATES or tries >= MAX_TRIES:
                 break
@@ -318,6 +323,8 @@ def candidate_readings(command: str, world: dict, error: TranslationError,
             if key in tried:
                 continue
             tried.add(key)
+            if unread & text_words.keys():   # refused the same way: not read
+                continue
             tries += 1
             try:
                 got = read(text, world, choose)

@@ -275,10 +275,26 @@ def _lark(dual: frozenset[str], present: frozenset[str] | None = None) -> Lark:
     return with_lookahead(Lark(grammar_text(dual, present), parser="earley", lexer=ListLexer, ambiguity="explicit"))
 
 
+#: the gated class sets a parser was built for, per set of dual classes (newest last): a later
+#: command whose gated classes are among one of them reuses that parser
+_BUILT: dict[frozenset[str], list[frozenset[str]]] = {}
+
+
 def _parser_for(world: dict, tags: list[Tag]) -> Lark:
-    """The parser for these tags in this world: only the gated rules their classes can use."""
-    present = frozenset(base_class(t.cls) for t in tags)
-    return _lark(_dual_classes(world), present & GATED)
+    """The parser for these tags in this world: only the gated rules their classes can use, or a
+    parser already built with more of them. A gated line whose classes the command lacks can never
+    match, so the readings are the same; and a build costs about as much as reading forty
+    commands, where the few more lines cost each reading a little (the wordings the candidate
+    search reads are mostly the command with words left out: the command's parser serves them)."""
+    dual = _dual_classes(world)
+    needed = frozenset(base_class(t.cls) for t in tags) & GATED
+    built = _BUILT.setdefault(dual, [])
+    present = min((p for p in built if needed <= p), key=len, default=None)
+    if present is None:
+        present = needed
+        built.append(needed)
+        del built[:-_lark.cache_info().maxsize]
+    return _lark(dual, present)
 
 
 def _dual_classes(world: dict) -> frozenset[str]:

@@ -38,6 +38,7 @@ sep.-1: "," | "and" | "," "and" | "but" | "," "but" | "while" | "," "while" | "w
 aside: "instead" "of" NUM | "rather" "than" NUM
      | "now" | "right" "now" | "right" "away" | "tonight" | "at" "once" | "for" "now"
      | "no" "more" | "no" "less" | "no" "more" ","? "no" "less" | "not" "more" | "not" "one" "more"
+     | "not" "more" ","? "not" "less"
      | "by" ("end" | "tonight" | "tomorrow" | "noon" | "morning" | "evening" | "shift" "end")
      | ("at" | "in") "end" | "eventually" | "afterwards" | "later"
      | "i" ("think" | "guess" | "suppose" | "believe") | "i" "have" "a" "plan" | "ok" | "okay"

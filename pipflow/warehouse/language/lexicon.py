@@ -52,7 +52,10 @@ FILLERS = {"the", "please", "kindly", "units", "unit", "pieces", "piece", "boxes
            # French politeness said in English chat ("move 3 ... svp", "merci")
            "svp", "stp", "merci",
            # Nigerian English and Pidgin "please" ("Abeg add 5 ...", "biko"), said anywhere
-           "abeg", "biko"}
+           "abeg", "biko",
+           # Swahili and Sheng said in Kenyan English ("Clear packing kabisa": completely, "haraka":
+           # quickly, "tafadhali": please, "bana": man, "sasa": now)
+           "kabisa", "haraka", "tafadhali", "bana", "sasa"}
 #: packaging and measure nouns: "5 cartons of tape", "2 rolls of shrink wrap" count the item after
 #: "of". A world that names a product so ("carton") recognises it as that product first.
 FILLERS |= {"carton", "cartons", "roll", "rolls", "pack", "packs", "packet", "packets", "bundle",
