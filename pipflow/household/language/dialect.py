@@ -73,6 +73,47 @@ def put_on_as_switch(words: list[str], world: dict, index: dict, notes: list[str
     return out
 
 
+#: "open the light", "close the aircon" (Philippine and South Asian English): switch on, off
+_OPEN_CLOSE = {"open": "on", "close": "off"}
+
+
+def open_close_as_switch(words: list[str], world: dict, index: dict, notes: list[str]) -> list[str]:
+    """The words with "open" / "close" read as "switch on" / "switch off" before a phrase that
+    names only things that switch and cannot be opened in this home ("close all the lights",
+    "open the aircon", as Philippine and South Asian English say it): of such a thing, opening
+    and closing can mean nothing else. Before a thing that opens ("close the fridge", "open the
+    washing machine", which may switch too) they keep their meaning. A note says so."""
+    out: list[str] = []
+    for k, w in enumerate(words):
+        if w in _OPEN_CLOSE and _switch_only_phrase(words, _after_determiners(words, k + 1), world, index):
+            out += ["switch", _OPEN_CLOSE[w]]
+            notes.append(f"'{w}' read as 'switch {_OPEN_CLOSE[w]}' (of a thing that switches and does not open)")
+        else:
+            out.append(w)
+    return out
+
+
+def _switch_only_phrase(words: list[str], k: int, world: dict, index: dict) -> bool:
+    """Whether the phrase at ``k`` names things (or a category of things) that all switch and
+    none of which opens."""
+    tables = [world.get("objects") or {}, world.get("places") or {}]
+    for end in range(min(len(words), k + 5), k, -1):
+        things = index.get(tuple(words[k:end])) or []
+        if not things:
+            continue
+        entries = []
+        for t in things:
+            if t["kind"] in ("object", "place"):
+                entries += [table[t["name"]] for table in tables if t["name"] in table]
+            elif t["kind"] == "category":
+                entries += [e for table in tables for e in table.values() if t["name"] in (e.get("categories") or [])]
+            else:
+                return False
+        return bool(entries) and all("toggleable" in (e.get("properties") or []) and
+                                     "openable" not in (e.get("properties") or []) for e in entries)
+    return False
+
+
 def _after_determiners(words: list[str], k: int) -> int:
     """The index of the first word at or after ``k`` that is no determiner ("the", "that", "all")."""
     while k < len(words) and words[k] in _DETERMINERS:

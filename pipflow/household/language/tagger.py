@@ -13,7 +13,8 @@ from pipflow.language.asides import FUNCTION_WORDS
 from pipflow.language.english import common_word
 from pipflow.household.language.colloquial import colloquial
 from pipflow.household.language.corrections import corrected
-from pipflow.household.language.dialect import cut_as_switch, on_off_as_verbs, put_on_as_switch, them_as_those
+from pipflow.household.language.dialect import (cut_as_switch, on_off_as_verbs, open_close_as_switch, put_on_as_switch,
+                                                them_as_those)
 from pipflow.household.language.headwords import named_again
 from pipflow.household.language.grammar import NOUN_DUAL
 from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
@@ -107,6 +108,7 @@ def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: l
     words = closed_again(wherever_they_belong(words, notes), notes)
     words = on_off_as_verbs(put_on_as_switch(cut_as_switch(words, world, index, notes), world, index, notes), world,
                             index, notes)
+    words = open_close_as_switch(words, world, index, notes)
     words = named_again(them_as_those(words, index, notes), index, notes)
     return particles(words, lambda x: x.isalpha() and not known_word(x, index, vocab), notes)
 
