@@ -198,12 +198,19 @@ def test_a_killed_bench_leaves_no_worker_and_no_orphan_record(tmp_path, sig):
         if proc.poll() is None:
             proc.kill()
             proc.communicate()
-    done = pipflow(tmp_path, "bench", TASKS, "--jobs", "2", "--out", out, "-q", "--resume")
+    assert_resumes_to_one_record_per_row(tmp_path, TASKS, out, runs=10, jobs=2)
+
+
+def assert_resumes_to_one_record_per_row(tmp_path: Path, tasks: Path, out: Path, runs: int, jobs: int) -> None:
+    """``--resume`` of a killed bench ends with every run's row, each naming its own whole record
+    in ``records/``, no record without a row, and nothing left running."""
+    done = pipflow(tmp_path, "bench", tasks, "--jobs", jobs, "--out", out, "-q", "--resume")
     assert done.returncode == 0, done.stderr
     rows = json.loads((out / "runs.json").read_text())
-    assert len(rows) == 10
+    assert len(rows) == runs
     assert sorted(Path(r["run_dir"]).name for r in rows) == sorted(p.name for p in (out / "records").iterdir()), \
         "a record without a row (a killed run's) or a row without its record"
+    assert all((Path(r["run_dir"]) / "run.json").is_file() for r in rows)
     assert not (out / ".running").exists()
 
 
@@ -384,11 +391,4 @@ def test_a_bench_killed_at_its_first_row_resumes_to_one_record_per_row(tmp_path,
                             env=clean_env(PIPFLOW_CACHE_DIR=str(tmp_path / "stepcache"), PYTHONPATH=str(REPO)))
     assert killed.returncode == -signal.SIGKILL, killed.stderr
     assert len(rows_of(out)) == (1 if when == "after" else 0)
-    done = pipflow(tmp_path, "bench", tasks, "--jobs", "1", "--out", out, "-q", "--resume")
-    assert done.returncode == 0, done.stderr
-    rows = json.loads((out / "runs.json").read_text())
-    assert len(rows) == 3
-    assert sorted(Path(r["run_dir"]).name for r in rows) == sorted(p.name for p in (out / "records").iterdir()), \
-        "a record without a row (a killed run's) or a row without its record"
-    assert all((Path(r["run_dir"]) / "run.json").is_file() for r in rows)
-    assert not (out / ".running").exists()
+    assert_resumes_to_one_record_per_row(tmp_path, tasks, out, runs=3, jobs=1)

@@ -19,7 +19,7 @@ MOVE = {"quay": {"crate": 11}, "shed": {"crate": 5}}
     "Sawa wasee. Move 3 crates from quay to shed. Asante",
     "Move 3 crates from quay to shed haraka tafadhali",
     "move 3 crates from quay to shed bana",
-    "Move 3 crates from quay to shed, asante mzee",
+    "Poa, move 3 crates from quay to shed asante mzee",
 ])
 def test_kenyan_english_read_as_the_order_it_says(command: str) -> None:
     assert understand(command, TERMINAL)["goal"] == MOVE

@@ -407,16 +407,11 @@ def _stored_record_names(out: Path) -> set[str]:
     return names
 
 
-def _record_target(out: Path, row: dict) -> tuple[Path, Path] | None:
-    """Where a finished run's record is (in ``OUT/.running``) and where it goes (``OUT/records``);
-    None for a run without a record there."""
+def _running_record(out: Path, row: dict) -> Path | None:
+    """A finished run's record in ``OUT/.running``, or None for a run without a record there."""
     run_dir = row.get("run_dir")
-    if not run_dir:
-        return None
-    source = Path(str(run_dir))
-    if source.parent != out / RUNNING or not source.is_dir():
-        return None
-    return source, out / "records" / source.name
+    source = Path(str(run_dir)) if run_dir else None
+    return source if source is not None and source.parent == out / RUNNING and source.is_dir() else None
 
 
 def _move_record(out: Path, source: Path) -> None:
@@ -432,13 +427,12 @@ def _store_row(out: Path, key: tuple, row: dict) -> None:
     between the two leaves a stored row whose record is still in ``OUT/.running``, which the next
     bench moves (:func:`_clear_unfinished`); the other order left a record no row referred to,
     which ``--resume`` could not tell from a killed run's and kept beside the rerun's."""
-    move = _record_target(out, row)
-    if move is not None:
-        make_dirs(move[1].parent, root=out)
-        row["run_dir"] = str(move[1])
+    source = _running_record(out, row)
+    if source is not None:
+        row["run_dir"] = str(out / "records" / source.name)
     write_json(row_path(out, key), row, root=out)
-    if move is not None:
-        _move_record(out, move[0])
+    if source is not None:
+        _move_record(out, source)
 
 
 def _resumable(out: Path, specs: list[RunSpec]) -> dict[tuple, dict]:
