@@ -13,6 +13,8 @@ from pathlib import Path
 
 import pytest
 import yaml
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from pipflow.errors import Refusal, TranslationError
 from pipflow.language.spelling import distance
@@ -145,6 +147,25 @@ def test_not_a_single_number(text: str) -> None:
 def test_distance_counts_swaps_once() -> None:
     assert distance("prodcut", "product") == 1
     assert distance("shelve", "shelf") == 2
+    assert distance("ca", "abc") == 3   # a swapped pair is not edited again (not 2, as Damerau's)
+
+
+def _swaps_once(a: str, b: str) -> int:
+    """The definition, spelt out: the fewest insertions, deletions, substitutions and swaps of
+    neighbours, no part edited twice (a dynamic programme over prefixes)."""
+    d = [[i + j if i * j == 0 else 0 for j in range(len(b) + 1)] for i in range(len(a) + 1)]
+    for i in range(1, len(a) + 1):
+        for j in range(1, len(b) + 1):
+            d[i][j] = min(d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1]))
+            if i > 1 and j > 1 and a[i - 1] == b[j - 2] and a[i - 2] == b[j - 1]:
+                d[i][j] = min(d[i][j], d[i - 2][j - 2] + 1)
+    return d[len(a)][len(b)]
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.text("abcde", max_size=8), st.text("abcde", max_size=8))
+def test_distance_is_the_swaps_once_edit_distance(a: str, b: str) -> None:
+    assert distance(a, b) == _swaps_once(a, b)
 
 
 # -- clause structure --------------------------------------------------------------------------
