@@ -28,7 +28,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Callable, Iterable
 
-from pipflow.language.spelling import slip
+from pipflow.language.spelling import Slips
 
 NEGATION = {"no", "not", "never", "nothing", "none", "nobody", "noone", "neither", "nor", "without", "dont",
             "doesnt", "didnt", "cant", "cannot", "wont", "shouldnt", "mustnt", "isnt", "arent", "nowhere",
@@ -198,6 +198,10 @@ class Clause:
     words: tuple[str, ...]
 
 
+#: the operative words of three letters or more, for finding a slip of one by lookup
+_OPERATIVE_SLIPS = Slips(o for o in OPERATIVE if len(o) >= 3)
+
+
 def near_operative(word: str) -> bool:
     """An operative word, or one slip from one (:func:`pipflow.language.spelling.slip`: "nto",
     "olny", "exept", "onlu"): a misspelt "not" or "only" must never be read as talk."""
@@ -205,7 +209,7 @@ def near_operative(word: str) -> bool:
         return True
     if word in FUNCTION_WORDS or word in INTERJECTIONS:   # a word in its own right: "the" is no slip of
         return False                                      # "then", "on" none of "no", "shame" none of "same"
-    return len(word) >= 3 and any(slip(word, o) for o in OPERATIVE if len(o) >= 3)
+    return len(word) >= 3 and bool(_OPERATIVE_SLIPS.of(word))
 
 
 def is_greeting(words: Iterable[str]) -> bool:

@@ -10,6 +10,7 @@ a domain has, and when a near-match is a guess to refuse, stay with the domain's
 from __future__ import annotations
 
 import re
+from collections.abc import Iterable
 
 from rapidfuzz.distance import OSA
 
@@ -101,6 +102,38 @@ def slip(word: str, target: str) -> bool:
         return False
     short, long_ = (a, b) if len(a) < len(b) else (b, a)
     return any(long_[:k] + long_[k + 1:] == short for k in range(len(long_)))
+
+
+class Slips:
+    """The targets a word is one slip from (:func:`slip`), found by lookup instead of comparing the
+    word with every target: the reader asks this of every word it does not know, against every
+    grammar word, and the comparisons were a tenth of the reading time of a refused command."""
+
+    def __init__(self, targets: Iterable[str]) -> None:
+        self._same: dict[str, set[str]] = {}      # a swap of neighbours, or a key next to it
+        self._dropped: dict[str, set[str]] = {}   # a letter left out (targets of four letters or more)
+        self._long: set[str] = set()              # targets a letter may be doubled into
+        for t in set(targets):
+            for k in range(len(t)):
+                if k + 1 < len(t):
+                    self._add(self._same, t[:k] + t[k + 1] + t[k] + t[k + 2:], t)
+                for c in KEY_NEIGHBOURS.get(t[k], ()):
+                    self._add(self._same, t[:k] + c + t[k + 1:], t)
+                if len(t) >= 4:
+                    self._add(self._dropped, t[:k] + t[k + 1:], t)
+            if len(t) >= 4:
+                self._long.add(t)
+
+    @staticmethod
+    def _add(table: dict[str, set[str]], variant: str, target: str) -> None:
+        table.setdefault(variant, set()).add(target)
+
+    def of(self, word: str) -> set[str]:
+        """The targets ``word`` is one slip from: ``{t for t in targets if slip(word, t)}``."""
+        out = self._same.get(word, set()) | self._dropped.get(word, set())
+        out |= {d for d in (word[:k] + word[k + 1:] for k in range(len(word))) if d in self._long}
+        out.discard(word)
+        return out
 
 
 #: one English word with two accepted spellings (British and American, or old and new), where no

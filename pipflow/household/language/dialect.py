@@ -4,6 +4,7 @@ demonstrative "those" ("them tea things want washing", northern and Scots Englis
 what was read so."""
 from __future__ import annotations
 
+from pipflow.household.language.names import first_words
 from pipflow.household.language.restated import DETERMINERS
 from pipflow.household.language.tokens import PUNCT
 
@@ -17,7 +18,7 @@ def them_as_those(words: list[str], index: dict, notes: list[str]) -> list[str]:
     """The words with "them" read as "those" where a name of the home follows it at once ("wash
     them mugs", "them tea things on the table"): as a pronoun, "them" is never followed by a noun.
     ``index``: the world's phrases (:func:`pipflow.household.language.names.world_phrases`)."""
-    firsts = {k[0] for k in index}
+    firsts = first_words(index)
     out: list[str] = []
     for k, w in enumerate(words):
         nxt = words[k + 1] if k + 1 < len(words) else "."

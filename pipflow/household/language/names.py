@@ -4,6 +4,9 @@ word sequences -> the things they may name. Read by the tagger, the typo reader,
 the candidate readings; kept per world while its names are unchanged."""
 from __future__ import annotations
 
+import functools
+from typing import Callable, TypeVar
+
 from pipflow.household.language.lexicon import (DEVICES, FILLER, FORM_HEADS, KIND_WORDS, PHRASES, WINDOWS, plurals,
                                                 words_of)
 from pipflow.language.asides import FUNCTION_WORDS
@@ -13,6 +16,45 @@ from pipflow.language.numbers import read_number
 #: the index of the last worlds read: id -> (the world, what its names were, the index); a world
 #: is read many times per command (tagging, the grammar's twins, asides, candidates)
 _INDEXES: dict[int, tuple[dict, tuple, dict]] = {}
+_KEPT = 16   # indexes (and facts of an index) kept at once
+
+T = TypeVar("T")
+
+
+def per_index(fact: Callable[[dict], T]) -> Callable[[dict], T]:
+    """``fact(index)`` computed once per index of :func:`world_phrases` (an index is read-only, and
+    one object per world while the world's names are unchanged): the words of the home, the
+    longest name, the vocabulary of typos are asked of every word of every reading, and a refused
+    command is read dozens of times while its candidates are sought."""
+    memo: dict[int, tuple[dict, T]] = {}
+
+    @functools.wraps(fact)
+    def of(index: dict) -> T:
+        hit = memo.get(id(index))
+        if hit is None or hit[0] is not index:   # the index is kept in the memo: its id is not reused
+            if len(memo) >= _KEPT:
+                memo.clear()
+            hit = memo[id(index)] = (index, fact(index))
+        return hit[1]
+    return of
+
+
+@per_index
+def home_words(index: dict) -> frozenset[str]:
+    """Every word of every name of the home."""
+    return frozenset(w for k in index for w in k)
+
+
+@per_index
+def first_words(index: dict) -> frozenset[str]:
+    """The first words of the names of the home."""
+    return frozenset(k[0] for k in index)
+
+
+@per_index
+def longest_name(index: dict) -> int:
+    """The most words a name of the home has."""
+    return max((len(k) for k in index), default=1)
 
 
 def _names_key(world: dict) -> tuple:
@@ -30,7 +72,7 @@ def world_phrases(world: dict) -> dict[tuple[str, ...], list[dict]]:
     if hit is not None and hit[0] is world and hit[1] == key:
         return hit[2]
     index = _world_phrases(world)
-    if len(_INDEXES) >= 16:
+    if len(_INDEXES) >= _KEPT:
         _INDEXES.clear()
     _INDEXES[id(world)] = (world, key, index)
     return index
@@ -121,15 +163,29 @@ def named_by_first_word(world: dict, word: str) -> list[str]:
     word the tagger knows nowhere else: a world name or a word of the lexicon always wins."""
     forms = {word} | {word[:-len(end)] + repl for end, repl in (("ies", "y"), ("es", ""), ("s", ""))
                       if word.endswith(end) and len(word) > len(end) + 2}
-    out: list[str] = []
-    for table in (world.get("objects") or {}, world.get("places") or {}):
-        for name, e in table.items():
-            for phrase in [name] + list(e.get("words") or []):
-                ws = words_of(phrase)
-                if len(ws) == 2 and ws[0] in forms and ws[1] in FORM_HEADS and ws[0] not in FUNCTION_WORDS \
-                        and name not in out:
-                    out.append(name)
-    return out
+    return [name for name, firsts in _form_named(world) if firsts & forms]
+
+
+def _form_named(world: dict) -> list[tuple[str, frozenset[str]]]:
+    """The objects and places with a two-word name (or ``words`` entry) whose last word is a form
+    (``FORM_HEADS``), each with the first words of those names, in the world's order: made once
+    per index, as the world's names are."""
+    index = world_phrases(world)
+    hit = _FORM_NAMED.get(id(index))
+    if hit is None or hit[0] is not index:
+        firsts: dict[str, frozenset[str]] = {}
+        for table in (world.get("objects") or {}, world.get("places") or {}):
+            for name, e in table.items():
+                firsts[name] = firsts.get(name, frozenset()) | frozenset(
+                    ws[0] for ws in (words_of(p) for p in [name] + list((e or {}).get("words") or []))
+                    if len(ws) == 2 and ws[1] in FORM_HEADS and ws[0] not in FUNCTION_WORDS)
+        if len(_FORM_NAMED) >= _KEPT:
+            _FORM_NAMED.clear()
+        hit = _FORM_NAMED[id(index)] = (index, [(n, f) for n, f in firsts.items() if f])
+    return hit[1]
+
+
+_FORM_NAMED: dict[int, tuple[dict, list[tuple[str, frozenset[str]]]]] = {}
 
 
 #: the kinds of thing the lexicon knows by a common word ("the heater", "a window", "the radio"):

@@ -33,7 +33,7 @@ import re
 
 from pipflow.errors import TranslationError
 from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
-from pipflow.household.language.names import world_phrases
+from pipflow.household.language.names import home_words, world_phrases
 from pipflow.household.language.tokens import PUNCT
 from pipflow.household.language.typos import typo_of, vocabulary
 from pipflow.household.language.whereabouts import BRING, POSTURE, clause_end, place_said
@@ -65,6 +65,10 @@ THIRD_POSTURE = frozenset(POSTURE | {"the", "whole", "day", "always", "usually",
                                       "sleeping", "asleep", "dozing", "napping", "resting"})
 
 
+#: every word of the lexicon's phrases and fillers, and the function words
+_LEXICON = frozenset(w for key in PHRASES for w in key) | frozenset(w for key in FILLER for w in key) | FUNCTION_WORDS
+
+
 class _Reader:
     """The words of one command, with who in it is a person (module docstring)."""
 
@@ -73,14 +77,13 @@ class _Reader:
         self.capitalised = {w.lower() for w in re.findall(r"(?<![\w'’])[A-Z][a-z]+", command)}
         self.index = world_phrases(world)
         self.world = world
-        self.home = {w for key in self.index for w in key}
-        self.lexicon = {w for key in PHRASES for w in key} | {w for key in FILLER for w in key} | FUNCTION_WORDS
+        self.home = home_words(self.index)
         self.vocab = vocabulary(self.index)
 
     def known(self, w: str, typos: bool = True) -> bool:
         """Whether a word is a word of the home's names, of the lexicon or its fillers, a function
         word, or (``typos``) a typo of a word of the home: no person's name."""
-        return w in self.home or w in self.lexicon or (typos and len(w) >= 4 and bool(typo_of(w, self.vocab)))
+        return w in self.home or w in _LEXICON or (typos and len(w) >= 4 and bool(typo_of(w, self.vocab)))
 
     def person(self, k: int, objective: bool = False) -> int:
         """How many words from ``k`` name a person (0: none); ``objective``: where "her" is one."""

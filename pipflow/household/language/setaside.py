@@ -8,7 +8,7 @@ import re
 from typing import Callable, NamedTuple
 
 from pipflow.household.language.lexicon import DURATION_UNITS, FILLER_TYPO_TARGETS, PHRASES, PURPOSE_WORDS, words_of
-from pipflow.household.language.names import world_phrases
+from pipflow.household.language.names import home_words, per_index, world_phrases
 from pipflow.household.language.restated import leading_subject, restates_location
 from pipflow.household.language.typos import typo_of, vocabulary
 from pipflow.language.asides import (BOUNDS, EXCLUSIVITY, FUNCTION_WORDS, NEGATION, QUANTITIES, SELECTION, clauses,
@@ -25,21 +25,31 @@ GLUE_CLASSES = {"THE", "THAT", "IT", "IS", "SUBJ", "BE", "HAVE", "SHOULD", "INTE
 CLAUSE_MARKS = {",", ".", ";", "!", "?", ":"}
 
 
+#: the lexicon's words that are no glue and no function word: content wherever they are said
+_LEXICON_CONTENT = frozenset(w for k, (cls, _) in PHRASES.items() if cls not in GLUE_CLASSES for w in k) - FUNCTION_WORDS
+
+
+@per_index
+def _naming_words(index: dict) -> tuple[frozenset[str], frozenset[str]]:
+    """The words that name something of the home alone, and the words a misspelt content word may
+    be read as (:func:`_content`). A one-word name and the head (last word) of a longer one name
+    alone; a modifier alone names nothing ("mooring" of mooring_line in "we're mooring up"), and
+    "of" of "bottle of water" is no name."""
+    heads = {k[-1] for k in index if "of" not in k} | {k[0] for k in index if "of" in k}
+    world_words = frozenset(w for w in heads if (w,) in index) - FUNCTION_WORDS
+    vocab = frozenset(w for w in vocabulary(index)
+                      if w in world_words or w in _LEXICON_CONTENT or w in FILLER_TYPO_TARGETS)
+    return world_words, vocab
+
+
 def _content(world: dict) -> Callable[[str], bool]:
     """The test :func:`pipflow.language.asides.content_free` asks of each word: a word of a
     world name (or a misspelling of one, or of a content word of the lexicon), a number, or a
     lexicon word that is no function word ("put", "off" with a verb is content by the verb)."""
-    index = world_phrases(world)
-    # the words that name something alone: a one-word name and the head (last word) of a longer
-    # one; a modifier alone names nothing ("mooring" of mooring_line in "we're mooring up"), and
-    # "of" of "bottle of water" is no name
-    world_words = {k[-1] for k in index if "of" not in k} | {k[0] for k in index if "of" in k}
-    world_words = {w for w in world_words if (w,) in index} - FUNCTION_WORDS
-    lexicon_words = {w for k, (cls, _) in PHRASES.items() if cls not in GLUE_CLASSES for w in k} - FUNCTION_WORDS
-    vocab = {w for w in vocabulary(index) if w in world_words or w in lexicon_words or w in FILLER_TYPO_TARGETS}
+    world_words, vocab = _naming_words(world_phrases(world))
 
     def content(w: str) -> bool:
-        if w in world_words or w in lexicon_words or w.isdigit() or read_number([w], 0):
+        if w in world_words or w in _LEXICON_CONTENT or w.isdigit() or read_number([w], 0):
             return True
         if w in FUNCTION_WORDS:
             return False
@@ -208,6 +218,18 @@ SUBJECT_LINKS = {"is", "are", "was", "were", "will", "would", "has", "have", "ha
                  "ll", "d", "re", "ve"}
 
 
+#: the words of the cues, wishes and states a vague command is read from; every word of the lexicon
+_CUE_WORDS = frozenset(w for k, (cls, _) in PHRASES.items() if cls in CUE_CLASSES for w in k) - FUNCTION_WORDS
+_PHRASE_WORDS = frozenset(w for k in PHRASES for w in k)
+
+
+@per_index
+def _home_vocabulary(index: dict) -> tuple[frozenset[str], frozenset[str]]:
+    """The words of the home's names (no function word), and those a typo may be read as."""
+    world_words = home_words(index) - FUNCTION_WORDS
+    return world_words, frozenset(w for w in vocabulary(index) if w in world_words)
+
+
 def _remark(world: dict, content: Callable[[str], bool]) -> Callable[[tuple[str, ...]], bool]:
     """The test of a remark: a clause about the speaker or other people ("my granddaughter is
     coming for lunch after service", "Pastor Jones is coming by at 4"), talk though it has words of
@@ -220,17 +242,13 @@ def _remark(world: dict, content: Callable[[str], bool]) -> Callable[[tuple[str,
     points back (:data:`POINTING`) and no word of the cues, wishes and states a vague command is
     read from (:data:`CUE_CLASSES`). ``content``: :func:`_content` of the world, made once by the
     caller."""
-    index = world_phrases(world)
-    world_words = {w for k in index for w in k} - FUNCTION_WORDS
-    vocab = {w for w in vocabulary(index) if w in world_words}
-    cue_words = {w for k, (cls, _) in PHRASES.items() if cls in CUE_CLASSES for w in k} - FUNCTION_WORDS
-    lexicon = {w for k in PHRASES for w in k}
+    world_words, vocab = _home_vocabulary(world_phrases(world))
 
     def names(w: str) -> bool:
         return w in world_words or (len(w) >= 4 and bool(typo_of(w, vocab)))
 
     def a_name(w: str) -> bool:
-        return not (w in FUNCTION_WORDS or w in lexicon or content(w))
+        return not (w in FUNCTION_WORDS or w in _PHRASE_WORDS or content(w))
 
     def remark(words: tuple[str, ...]) -> bool:
         ws = [w for w in _without_times(words) if w]
@@ -239,7 +257,7 @@ def _remark(world: dict, content: Callable[[str], bool]) -> Callable[[tuple[str,
         subject = ws[1:] if ws[:1] in (["the"], ["a"], ["an"]) else ws
         opens = bool(ws) and ws[0] in REMARK_SUBJECTS or any(
             all(a_name(w) for w in subject[:n]) and subject[n:n + 1] and subject[n] in SUBJECT_LINKS for n in (1, 2))
-        return opens and not any(w in _BEARING or w in POINTING or w in cue_words or names(w) or w.isdigit()
+        return opens and not any(w in _BEARING or w in POINTING or w in _CUE_WORDS or names(w) or w.isdigit()
                                  or read_number([w], 0) for w in ws)
     return remark
 

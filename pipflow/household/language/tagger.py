@@ -18,7 +18,8 @@ from pipflow.household.language.dialect import (cut_as_switch, on_off_as_verbs, 
 from pipflow.household.language.headwords import named_again
 from pipflow.household.language.grammar import NOUN_DUAL
 from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
-from pipflow.household.language.names import named_by_first_word, things_of_kind, world_phrases
+from pipflow.household.language.names import (first_words, longest_name, named_by_first_word, things_of_kind,
+                                              world_phrases)
 from pipflow.household.language.retag import (act_before_noun, demonstratives, elided_it_is, left_lying, located,
                                               restated_order, without_hedges)
 from pipflow.household.language.rewrites import (caused, closed_again, given, heat_purpose, measures, or_under_negation,
@@ -48,7 +49,7 @@ def repaired(words: list[str], index: dict, vocab: set[str], notes: list[str], w
     read as that word (a note says so); two competing repairs: left as typed (refused, offered). A
     word that names a kind of thing of this home ("heater", :func:`things_of_kind`) is no typo."""
     words = list(words)
-    firsts = {key[0] for key in index}   # the first words of the names of the home
+    firsts = first_words(index)
     for k, w in enumerate(words):
         if known_word(w, index, vocab) or len(w) < 3 or not w.isalpha() or things_of_kind(world, w)[0]:
             continue
@@ -113,6 +114,11 @@ def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: l
     return particles(words, lambda x: x.isalpha() and not known_word(x, index, vocab), notes)
 
 
+#: the most words a phrase and a filler of the lexicon have
+_LONGEST_PHRASE = max(len(k) for k in PHRASES)
+_LONGEST_FILLER = max(len(k) for k in FILLER)
+
+
 def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
     """The command as grammar tokens (module docstring, step 1)."""
     notes = notes if notes is not None else []
@@ -121,9 +127,7 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
     words = _rewritten(command, world, index, vocab, notes)
     said = list(words)   # as typed: a repair that still names nothing is quoted as typed
     words = repaired(words, index, vocab, notes, world)
-    longest_w = max((len(k) for k in index), default=1)
-    longest_l = max(len(k) for k in PHRASES)
-    longest_f = max(len(k) for k in FILLER)
+    longest_w = longest_name(index)
     out: list[Tag] = []
     unknown: list[str] = []
     shared: dict[str, list[str]] = {}   # a word that is the first word of several things' names
@@ -139,8 +143,8 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
             i += 1
             continue
         num = read_number([x if x not in PUNCT and x.isalnum() else None for x in words], i)
-        nw, nl, nf = _match(words, i, index, longest_w), _match(words, i, PHRASES, longest_l), \
-            _match(words, i, FILLER, longest_f)
+        nw, nl, nf = _match(words, i, index, longest_w), _match(words, i, PHRASES, _LONGEST_PHRASE), \
+            _match(words, i, FILLER, _LONGEST_FILLER)
         if nl > 1 and PHRASES[tuple(words[i:i + nl])][0] in HOME_CLASSES and \
                 any(_match(words, j, index, longest_w) for j in range(i + 1, i + nl)):
             nl = 1 if (w,) in PHRASES else 0   # "in the kitchen" where the home has a thing named kitchen

@@ -4,6 +4,7 @@ never made: one edit (two for long stems), the same first letter, content words 
 from __future__ import annotations
 
 from pipflow.household.language.lexicon import FILLER, FILLER_TYPO_TARGETS, PHRASES
+from pipflow.household.language.names import home_words, per_index
 from pipflow.household.language.tokens import PUNCT
 from pipflow.language.asides import FUNCTION_WORDS
 from pipflow.language.numbers import read_number
@@ -23,19 +24,18 @@ _CONTENT_WORDS = frozenset(w for k, (cls, _) in PHRASES.items() if cls in CONTEN
 _LEXICON_WORDS = frozenset(w for key in PHRASES for w in key) | frozenset(w for key in FILLER for w in key)
 
 
-def vocabulary(world_index: dict) -> set[str]:
+@per_index
+def vocabulary(world_index: dict) -> frozenset[str]:
     """Words a misspelt word may be read as: the world's words, the lexicon's content words and
     the few politeness words of ``FILLER_TYPO_TARGETS`` ("plese")."""
-    vocab = set(_CONTENT_WORDS) | FILLER_TYPO_TARGETS
-    vocab |= {w for k in world_index for w in k}
-    return {w for w in vocab if len(w) >= 3}
+    return frozenset(w for w in _CONTENT_WORDS | FILLER_TYPO_TARGETS | home_words(world_index) if len(w) >= 3)
 
 
-def known_word(w: str, index: dict, vocab: set[str]) -> bool:
+def known_word(w: str, index: dict, vocab: frozenset[str]) -> bool:
     """Whether the tagger reads ``w`` as it is: a word of the world, of the lexicon, of the
     politeness list, a number or a mark."""
     return w in vocab or w in PUNCT or w.isdigit() or w in _LEXICON_WORDS or \
-        any(w in key for key in index) or bool(read_number([w], 0))
+        w in home_words(index) or bool(read_number([w], 0))
 
 
 #: endings of English inflection: a shared one says nothing of whether two words are one word
@@ -78,15 +78,24 @@ def _swapped(word: str, known: str) -> bool:
         word[diff[1]] == known[diff[0]]
 
 
-#: the words of the grammar (one-word phrases of the lexicon), for :func:`transposition_of`
-_GRAMMAR_WORDS = sorted({k[0] for k in PHRASES if len(k) == 1 and len(k[0]) >= 3})
+def _swaps(word: str) -> set[str]:
+    """Every spelling of ``word`` with two neighbouring (different) letters swapped."""
+    return {word[:k] + word[k + 1] + word[k] + word[k + 2:] for k in range(len(word) - 1) if word[k] != word[k + 1]}
+
+
+#: the words of the grammar (one-word phrases of the lexicon), by each of their swapped spellings,
+#: for :func:`transposition_of`
+_GRAMMAR_SWAPS: dict[str, list[str]] = {}
+for _k in sorted({k[0] for k in PHRASES if len(k) == 1 and len(k[0]) >= 3}):
+    for _v in _swaps(_k):
+        _GRAMMAR_SWAPS.setdefault(_v, []).append(_k)
 
 
 def transposition_of(word: str) -> list[str]:
     """Words of the grammar (function words too) that ``word`` is a swap of two neighbouring
     letters of ("teh" -> the, "adn" -> and): a slip of typing fast, which no other spelling is.
     The tagger reads the word so only when there is exactly one such word."""
-    return [k for k in _GRAMMAR_WORDS if _swapped(word, k)]
+    return list(_GRAMMAR_SWAPS.get(word, ()))
 
 
 #: the definite determiners: before the name of a thing each picks that thing ("the", "that" or
