@@ -325,6 +325,36 @@ def test_old_parsers_are_pruned_and_other_files_kept(grammar_cache, monkeypatch)
     assert not old_tmp.exists() and new_tmp.exists() and (grammar_cache / "notes.txt").exists()
 
 
+def test_a_parser_loaded_again_outlives_one_written_later_but_not_used(grammar_cache, monkeypatch):
+    """Pruning keeps the parsers in use: loading one from disk counts as using it, so a world's
+    parser read by every run is not pushed out by parsers built once for other worlds."""
+    import os
+
+    from lark import Token
+
+    from pipflow.language import earley
+
+    monkeypatch.setattr(earley, "KEEP", 2)
+    grammars = [f"start: A{i}\n%declare A{i}\n" for i in range(3)]
+
+    def entry(text: str):
+        key = earley.parser_key(text, {"parser": "earley", "lexer": earley.ListLexer})
+        return grammar_cache / f"{key}.earley"
+
+    earley.earley_parser(grammars[0], lexer=earley.ListLexer)
+    earley.earley_parser(grammars[1], lexer=earley.ListLexer)
+    os.utime(entry(grammars[0]), (1000, 1000))   # the first written long before the second
+    os.utime(entry(grammars[1]), (2000, 2000))
+    monkeypatch.setattr(earley, "_MEMORY", {})    # a new process: the first comes from disk
+    built, build = [], earley._build
+    monkeypatch.setattr(earley, "_build", lambda text, options: built.append(text) or build(text, options))
+    assert earley.earley_parser(grammars[0], lexer=earley.ListLexer).parse([Token("A0", "x")])
+    earley.earley_parser(grammars[2], lexer=earley.ListLexer)
+    assert built == [grammars[2]]
+    assert entry(grammars[0]).exists() and entry(grammars[2]).exists()
+    assert not entry(grammars[1]).exists()
+
+
 def test_a_parser_file_others_may_write_is_not_loaded(grammar_cache, monkeypatch):
     """Unpickling runs code: a file writable by the group or others is rebuilt, not loaded."""
     from pipflow.language import earley

@@ -65,7 +65,7 @@ _DIRECTORY = getattr(os, "O_DIRECTORY", 0)
 _NOFOLLOW = getattr(os, "O_NOFOLLOW", 0)
 _CLOEXEC = getattr(os, "O_CLOEXEC", 0)
 _NONBLOCK = getattr(os, "O_NONBLOCK", 0)
-KEEP = 8  # parsers kept on disk (grammars in use, and a few recent edits of them)
+KEEP = 32  # parsers kept on disk (the warehouse's, one per household world's dual classes, recent edits)
 
 _MEMORY: dict[str, Lark] = {}  # key -> parser built or loaded by this process
 _LOCK = threading.Lock()  # one build per key, even when steps run in threads
@@ -161,6 +161,8 @@ def _load(folder: Path, key: str) -> Lark | None:
             if not (stat.S_ISREG(info.st_mode) and _own(info)):
                 return None
             raw = fh.read()
+            if os.utime in os.supports_fd:
+                os.utime(fh.fileno())   # in use: the newest are kept (:func:`_prune`)
     except OSError:
         return None
     finally:
@@ -268,7 +270,8 @@ def _store(folder: Path, key: str, parser: Lark) -> None:
 
 
 def _prune(dir_fd: int) -> None:
-    """Keep the :data:`KEEP` newest parsers (each grammar edit makes a new key, ~0.8 MB) and
+    """Keep the :data:`KEEP` parsers written or loaded last (each grammar edit makes a new key;
+    0.3-0.8 MB each) and
     remove temporary files a crashed writer left more than an hour ago; only this cache's names
     (links among them are removed as links)."""
     names = os.listdir(dir_fd)

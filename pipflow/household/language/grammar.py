@@ -27,10 +27,10 @@ _sep: COMMA | END | @AND | @THEN | @BUT | @EXCL
 
 ?item: change | toggle | put | gap | away | trash | chill | request | unwant | ensure | observe | cue | meal | after | reason
       | tend | notvia | usevia
-      | keep //+ STAY V_TOUCH
-      | empty //+ V_EMPTY
+      | keep
+      | empty
       | desire
-      | handling //+ HANDLING TAKESTWO
+      | handling
 
 change: _vstate @UP? things @PIECES? via? exception? _here?
       | _vstate things @UP via? exception?
@@ -49,7 +49,7 @@ toggle: @V_TOGGLE onoff tthings _here?
       | @V_TOGGLE tthings onoff (@AND | COMMA @AND) tthings _here?
       | _vput tthings on (@AND | COMMA @AND) tthings
       | @V_LIGHT tthings _here?
-      | _vput tthings @GOING //+ GOING
+      | _vput tthings @GOING
       | @V_SHUT tthings @DOWN @ANYMORE?
 typo_off: @OF
 tthings: tnp ((COMMA | @AND | COMMA @AND) tnp)*
@@ -74,12 +74,12 @@ put: _vput @UP? things source? target? exception?
    | @V_LEAVE things target
    | @V_LEAVE things _particle target
    | @V_TIDY @UP? things target
-   | _vput @UP? things _particle? target wherewas //+ STAY
+   | _vput @UP? things _particle? target wherewas
 _vput: @V_PUT | @V_THROW
 _particle: @OUT | @DOWN | @IN | @UP
 source: @FROM place | @OUT @OF? place | @OFF @OF? place
 target: _prep place | @SOMEWHERE? bare | _prep placeref
-      | _prep @THEWASH //+ THEWASH
+      | _prep @THEWASH
 placeref: @IT
 _prep: @IN | @ON | @TO | @AT | @BACK @IN | @BACK @ON | @BACK @TO
 place: @THE? noun
@@ -107,13 +107,13 @@ request: @V_LEAVE things state
        | sthings @NEED @ACT
 unwant: @DONOT @V_LEAVE things state
       | sthings @SHOULD @NOT @BE? state
-      | @LEFT things state //+ LEFT
-      | sthings @LEFTAS state //+ LEFTAS
+      | @LEFT things state
+      | sthings @LEFTAS state
 ensure: @V_MAKE @SURE @THAT? wish ((COMMA | @AND | COMMA @AND) wish)*
 wish: sthings (@IS | @SHOULD @BE) not? state
 not: @NOT
 state: @ADJ | @V_OPEN | @V_SHUT | @V_CLEAN | @V_WARM | @V_STATE | on | off | @TOGGLED onoff | @V_TOGGLE onoff
-     | @GOING //+ GOING
+     | @GOING
 
 after: @ONCE @SUBJ @HAVE? state things
 once: @ONCE sthings @IS state
@@ -126,10 +126,10 @@ meal: (@V_MAKE | @V_PREPARE | _vstate) @THE? @MEAL _here?
 
 observe: sthings @IS state _here?
        | sthings _here @IS state
-       | sthings @FOULS //+ FOULS
+       | sthings @FOULS
 
 cue: @NOBODY @IS? activity (@TO | @ON | @AT)? things? @ANYMORE?
-   | @NOBODY @IS? (@INROOM | _here) @ANYMORE? //+ INROOM ALLOVER
+   | @NOBODY @IS? (@INROOM | _here) @ANYMORE?
    | @SUBJ? @DONOT @NEED things (on | @ANYMORE)?
    | @NOBODY @NEED things @ANYMORE?
    | @SUBJ? @IS? @DONE things @ANYMORE?
@@ -139,29 +139,29 @@ cue: @NOBODY @IS? activity (@TO | @ON | @AT)? things? @ANYMORE?
    | @IT @IS (@INTENS | @TOO)* tempadj _here (@WITH @THAT? things (@GOING | on))?
    | @SUBJ @IS (@INTENS | @TOO)* (tempcue | tempadj) _here?
    | @IT @IS (@INTENS | @TOO)* lightcue _here?
-   | @IT @IS (@INTENS | @TOO)* lightcue near //+ NEAR
-   | @IT @IS (@INTENS | @TOO)* lightcue _here? _doact //+ DOACT SEE
-   | _wish _doact things? _here? //+ DOACT SEE
-   | @SUBJ @IS? @SLEEPCUE //+ SLEEPCUE
-   | @SUBJ @CANNOT @SEE things? _here? //+ CANNOT
-   | @IT @IS (@INTENS | @TOO)* soundcue _here? //+ SOUNDCUE
-   | @IT @IS (@INTENS | @TOO)* soundcue _here? @WITH @THAT? things (@GOING | on)? //+ SOUNDCUE
-   | @SUBJ @CANNOT @HEARCUE _here? (@WITH @THAT? things (@GOING | on)?)? //+ HEARCUE
-   | @IT @IS (@INTENS | @TOO)* aircue (_here | room)? //+ AIRCUE
-   | sthings @IS (@INTENS | @TOO)* soundcue //+ SOUNDCUE
-   | (_wish | _vput) @FRESHAIR _here? //+ FRESHAIR
-   | @HAVE _music //+ MUSIC
+   | @IT @IS (@INTENS | @TOO)* lightcue near
+   | @IT @IS (@INTENS | @TOO)* lightcue _here? _doact
+   | _wish _doact things? _here?
+   | @SUBJ @IS? @SLEEPCUE
+   | @SUBJ @CANNOT @SEE things? _here?
+   | @IT @IS (@INTENS | @TOO)* soundcue _here?
+   | @IT @IS (@INTENS | @TOO)* soundcue _here? @WITH @THAT? things (@GOING | on)?
+   | @SUBJ @CANNOT @HEARCUE _here? (@WITH @THAT? things (@GOING | on)?)?
+   | @IT @IS (@INTENS | @TOO)* aircue (_here | room)?
+   | sthings @IS (@INTENS | @TOO)* soundcue
+   | (_wish | _vput) @FRESHAIR _here?
+   | @HAVE _music
    | @IT @IS (@INTENS | @TOO)* closecue (_here | room)
-   | @ROOMSAID @IS (@INTENS | @TOO)* (tempcue | tempadj | lightcue | soundcue | aircue | closecue) //+ ROOMSAID
-   | (@V_MAKE @IT | @SUBJ? @WANT @IT (@TO @BE)? | @SHOULD @IT @BE) (@INTENS | @TOO)* @MORE (_here | room)? //+ MORE
-   | @IT @IS (@INTENS | @TOO)* (tempcue | tempadj | lightcue | soundcue) room //+ INROOM
-   | @SUBJ @IS (@INTENS | @TOO)* (tempcue | tempadj) room //+ INROOM
-   | _vput _music on //+ MUSIC
-   | @V_TOGGLE on _music //+ MUSIC
-   | @V_PLAY _music //+ MUSIC
-   | _wish _music //+ MUSIC
-   | _wish @THE? @HOTDRINK @ANYMORE? //+ HOTDRINK
-   | (@V_MAKE | @V_PREPARE) @THE? @HOTDRINK //+ HOTDRINK
+   | @ROOMSAID @IS (@INTENS | @TOO)* (tempcue | tempadj | lightcue | soundcue | aircue | closecue)
+   | (@V_MAKE @IT | @SUBJ? @WANT @IT (@TO @BE)? | @SHOULD @IT @BE) (@INTENS | @TOO)* @MORE (_here | room)?
+   | @IT @IS (@INTENS | @TOO)* (tempcue | tempadj | lightcue | soundcue) room
+   | @SUBJ @IS (@INTENS | @TOO)* (tempcue | tempadj) room
+   | _vput _music on
+   | @V_TOGGLE on _music
+   | @V_PLAY _music
+   | _wish _music
+   | _wish @THE? @HOTDRINK @ANYMORE?
+   | (@V_MAKE | @V_PREPARE) @THE? @HOTDRINK
 activity: @ACTIVITY
 lightcue: @LIGHTCUE
 near: @NEAR+ place
@@ -174,8 +174,8 @@ _wish: @SUBJ? (@WANT | @NEED)
 _doact: @TO (@DOACT | @SEE)
 _music: @THE? @MUSIC
 _here: @HERE
-     | @ALLOVER //+ ALLOVER
-     | @THERE //+ THERE
+     | @ALLOVER
+     | @THERE
 tempcue: @TEMPCUE
 tempadj: @ADJ
 
@@ -184,22 +184,22 @@ usevia: @V_USE @THE? place
 
 tend: @V_TEND @OUT? things | @V_TEND things @OUT
     | sthings @IS? @MESS -> mess
-    | sthings @IS? @ALLOVER -> mess //+ ALLOVER
-    | @LEFT things (@OUT | @ALLOVER) -> mess //+ LEFT
-    | @LEFT things @OUT? (@ON | @IN) place -> mess //+ LEFT
-    | sthings @IS? @LYING (@ON | @IN) place -> mess //+ LYING
-    | sthings @IS @CLUTTER place -> mess //+ CLUTTER
-    | sthings @NEED @DOING //+ DOING
-    | place @HASGOT things (@ON | @IN) @IT -> mess //+ HASGOT
-    | @THERE @IS sthings (@MESS | @ALLOVER) -> mess //+ THERE
-    | @THERE @IS sthings @ALLOVER place -> mess //+ THERE
-    | sthings @IS? @ALLOVER place -> mess //+ ALLOVER
-    | (place | @ROOMSAID) @IS @FULLOF things -> mess //+ FULLOF
+    | sthings @IS? @ALLOVER -> mess
+    | @LEFT things (@OUT | @ALLOVER) -> mess
+    | @LEFT things @OUT? (@ON | @IN) place -> mess
+    | sthings @IS? @LYING (@ON | @IN) place -> mess
+    | sthings @IS @CLUTTER place -> mess
+    | sthings @NEED @DOING
+    | place @HASGOT things (@ON | @IN) @IT -> mess
+    | @THERE @IS sthings (@MESS | @ALLOVER) -> mess
+    | @THERE @IS sthings @ALLOVER place -> mess
+    | sthings @IS? @ALLOVER place -> mess
+    | (place | @ROOMSAID) @IS @FULLOF things -> mess
 
 keep: @V_LEAVE things @STAY
     | @DONOT @V_TOUCH things
 handling: sthings @IS (@INTENS | @TOO)* @HANDLING @FORONE?
-        | sthings @TAKESTWO //+ TAKESTWO
+        | sthings @TAKESTWO
 empty: @V_EMPTY @OUT? place target?
 desire: _wish @THE? adj+ noun
 
@@ -240,35 +240,13 @@ def classes() -> list[str]:
     return sorted({cls for cls, _ in PHRASES.values()})
 
 
-#: marks a line of the rules kept only for a command with a token of one of the classes after it:
-#: an alternative that needs a terminal the command lacks can never match, and every alternative
-#: is work for Earley at every position where it could start (the cues and constructions of issue
-#: 23's second step would cost every command ~1.5x otherwise)
-GATE = "//+"
-
-
-def gated_classes() -> frozenset[str]:
-    """Every class some gated line of the rules needs (:data:`GATE`)."""
-    return frozenset(c for line in _RULES.splitlines() if GATE in line for c in line.split(GATE)[1].split())
-
-
-def grammar_text(dual: frozenset[str] | None = None, present: frozenset[str] | None = None) -> str:
+def grammar_text(dual: frozenset[str] | None = None) -> str:
     """The lark grammar: ``@C`` expanded to ``(C | C__NOUN)``, ``NOUN__`` to ``NOUN`` and every
     dual class; the terminals are declared (a custom lexer supplies them). ``dual``: only these
     classes get a ``__NOUN`` twin (the classes whose words are also names of the world at hand):
     each twin is one more alternative wherever a noun may stand, which Earley pays for at every
-    noun position of every command, so a grammar for one world carries only the twins it needs.
-    ``present``: only the gated lines (:data:`GATE`) whose classes are among these (the classes of
-    the command at hand); None: every line."""
-    lines = []
-    for line in _RULES.splitlines():
-        if GATE in line:
-            rule, needs = line.split(GATE)
-            if present is not None and not set(needs.split()) & present:
-                continue
-            line = rule.rstrip()
-        lines.append(line)
-    text = "\n".join(lines)
+    noun position of every command, so a grammar for one world carries only the twins it needs."""
+    text = _RULES
     twins = classes() if dual is None else sorted(dual)
     duals = [c + NOUN_DUAL for c in twins]
     for c in sorted(classes(), key=len, reverse=True):

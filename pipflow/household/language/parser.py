@@ -34,7 +34,7 @@ from pipflow.errors import TranslationError
 from pipflow.household.language.builder import Builder
 from pipflow.household.language.conditions import conditions_read
 from pipflow.household.language.fronted import fronted_objects, topic_too
-from pipflow.household.language.grammar import NOUN_DUAL, base_class, gated_classes, grammar_text
+from pipflow.household.language.grammar import NOUN_DUAL, grammar_text
 from pipflow.household.language.lacking import lacking
 from pipflow.household.language.lexicon import ARROW, MARKS, PHRASES, arrows_said_as
 from pipflow.household.language.names import world_phrases
@@ -45,11 +45,9 @@ from pipflow.household.language.tokens import Tag
 from pipflow.language.asides import said
 from pipflow.language.characters import accents_folded, refuse_unread, without_expressions
 from pipflow.language.listing import inline_numbering
-from pipflow.language.earley import ListLexer
+from pipflow.language.earley import ListLexer, earley_parser
 from pipflow.language.lookahead import with_lookahead
 
-#: the classes some gated line of the grammar needs
-GATED = gated_classes()
 #: the most readings of one ambiguous command that are compared (each is resolved); more is
 #: refused, never cut short
 MAX_READINGS = 64
@@ -165,11 +163,11 @@ def _parse(command: str, world: dict, notes: list[str]) -> list[dict]:
     if not [t for t in tags if t.cls not in ("END", "COMMA")]:
         raise TranslationError(f"{command.strip()!r} asks for nothing the offline parser can read")
     try:
-        tree = _parser_for(world, tags).parse(_terminals(tags))
+        tree = _parser_for(world).parse(_terminals(tags))
     except UnexpectedInput as exc:
         for repaired, said in _repairs(tags):
             try:
-                tree = _parser_for(world, repaired).parse(_terminals(repaired))
+                tree = _parser_for(world).parse(_terminals(repaired))
             except UnexpectedInput:
                 continue
             notes += said
@@ -265,36 +263,19 @@ def _terminals(tags: list[Tag]) -> list[Token]:
     return [Token(t.cls, str(k), start_pos=k, end_pos=k + 1) for k, t in enumerate(tags)]
 
 
-@functools.lru_cache(maxsize=64)
-def _lark(dual: frozenset[str], present: frozenset[str] | None = None) -> Lark:
+@functools.lru_cache(maxsize=16)
+def _lark(dual: frozenset[str]) -> Lark:
     """The Earley parser for commands whose dual tokens (a lexicon word that is also a name of the
-    world) are of the classes ``dual``: one per world in practice (grammar_text says why), with the
-    gated lines of the rules for the gated classes ``present`` in the command (None: all). It
-    predicts with one terminal of lookahead (:mod:`pipflow.language.lookahead`: the same forests,
-    less work)."""
-    return with_lookahead(Lark(grammar_text(dual, present), parser="earley", lexer=ListLexer, ambiguity="explicit"))
+    world) are of the classes ``dual``: one per world in practice (grammar_text says why). Built
+    once, then loaded from the disk cache (:mod:`pipflow.language.earley`: a build costs about as
+    much as reading forty commands, and every ``pipflow run`` is a new process); it predicts with
+    one terminal of lookahead (:mod:`pipflow.language.lookahead`: the same forests, less work)."""
+    return with_lookahead(earley_parser(grammar_text(dual), lexer=ListLexer, ambiguity="explicit"))
 
 
-#: the gated class sets a parser was built for, per set of dual classes (newest last): a later
-#: command whose gated classes are among one of them reuses that parser
-_BUILT: dict[frozenset[str], list[frozenset[str]]] = {}
-
-
-def _parser_for(world: dict, tags: list[Tag]) -> Lark:
-    """The parser for these tags in this world: only the gated rules their classes can use, or a
-    parser already built with more of them. A gated line whose classes the command lacks can never
-    match, so the readings are the same; and a build costs about as much as reading forty
-    commands, where the few more lines cost each reading a little (the wordings the candidate
-    search reads are mostly the command with words left out: the command's parser serves them)."""
-    dual = _dual_classes(world)
-    needed = frozenset(base_class(t.cls) for t in tags) & GATED
-    built = _BUILT.setdefault(dual, [])
-    present = min((p for p in built if needed <= p), key=len, default=None)
-    if present is None:
-        present = needed
-        built.append(needed)
-        del built[:-_lark.cache_info().maxsize]
-    return _lark(dual, present)
+def _parser_for(world: dict) -> Lark:
+    """The parser for commands in this world."""
+    return _lark(_dual_classes(world))
 
 
 def _dual_classes(world: dict) -> frozenset[str]:
