@@ -7,6 +7,7 @@ reject, so a phrase that is not a number never becomes one by accident.
 """
 from __future__ import annotations
 
+import functools
 from collections.abc import Sequence
 
 UNITS: dict[str, int] = {
@@ -227,3 +228,10 @@ def _evaluate(values: list[int], ops: list[str]) -> int | None:
             signs.append(ADDITIVE[op])
     result = sum(s * v for s, v in zip(signs, sums))
     return result if result >= 0 else None
+
+
+@functools.lru_cache(maxsize=8192)
+def reads_as_count(word: str) -> bool:
+    """Whether one word alone is read as a count (:func:`read_number` of that word): the readers
+    ask it of every word of every wording of a refused command."""
+    return read_number([word], 0) is not None

@@ -37,7 +37,7 @@ from typing import Callable
 
 from pipflow.errors import PipflowError, Refusal, TranslationError
 from pipflow.household.language.lexicon import HUNGRY, LEAVING_REASONS, NEEDS_OFFERED, words_of
-from pipflow.household.language.names import world_phrases
+from pipflow.household.language.names import per_world, world_phrases
 from pipflow.household.language.rewrites import without_duration
 from pipflow.household.language.tagger import tag
 from pipflow.household.language.typos import known_word, vocabulary
@@ -78,10 +78,23 @@ def _singulars(word: str) -> list[str]:
     return out
 
 
-def _modifier_names(world: dict, at: int = 0) -> dict[str, list[str]]:
-    """First words (``at`` 0) or last words (``at`` -1) of the names of two or more words -> one
-    name of each thing they are part of ("mobile" -> ["mobile phone"]; "cupboard" -> ["food
-    cupboard", "wall cupboard"]), for a part of a name said alone."""
+@per_world
+def _first_word_names(world: dict) -> dict[str, list[str]]:
+    """First words of the names of two or more words -> one name of each thing they are part of
+    ("mobile" -> ["mobile phone"]), for a modifier said alone."""
+    return _part_names(world, 0)
+
+
+@per_world
+def _last_word_names(world: dict) -> dict[str, list[str]]:
+    """Last words of the names of two or more words -> one name of each thing they are part of
+    ("cupboard" -> ["food cupboard", "wall cupboard"]), for a head word said alone."""
+    return _part_names(world, -1)
+
+
+def _part_names(world: dict, at: int) -> dict[str, list[str]]:
+    """The words at ``at`` (0 first, -1 last) of the names of two or more words -> one name of
+    each thing they are part of."""
     out: dict[str, list[str]] = {}
     for table in (world.get("objects") or {}, world.get("places") or {}):
         for name, e in table.items():
@@ -148,8 +161,8 @@ def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[
     words = words_of(command)
     index = world_phrases(world)
     vocab = vocabulary(index)
-    modifiers = _modifier_names(world)
-    heads = {w: names for w, names in _modifier_names(world, -1).items() if len(names) > 1}
+    modifiers = _first_word_names(world)
+    heads = {w: names for w, names in _last_word_names(world).items() if len(names) > 1}
     try:
         tags = tag(command, world, [])
         unknown: list[str] = []

@@ -7,10 +7,21 @@ and only when the names said before that end in it are of exactly one thing; els
 left as said (refused, never guessed)."""
 from __future__ import annotations
 
+from pipflow.household.language.names import per_index
 from pipflow.household.language.tokens import PUNCT
 
 #: determiners that point back at a thing said before
 _DEFINITE = {"the", "that", "this"}
+
+
+@per_index
+def _names_by_last_word(index: dict) -> dict[str, list[tuple[str, ...]]]:
+    """The home's names of two or more words, by their last word."""
+    out: dict[str, list[tuple[str, ...]]] = {}
+    for key in index:
+        if len(key) > 1:
+            out.setdefault(key[-1], []).append(key)
+    return out
 
 
 def named_again(words: list[str], index: dict, notes: list[str]) -> list[str]:
@@ -21,7 +32,7 @@ def named_again(words: list[str], index: dict, notes: list[str]) -> list[str]:
     for k, w in enumerate(words):
         if k and words[k - 1] in _DEFINITE and w not in PUNCT and (w,) not in index \
                 and (k + 1 == len(words) or (words[k + 1],) not in index):
-            said = {key for key in index if len(key) > 1 and key[-1] == w and _said_in(key, words[:k - 1])}
+            said = {key for key in _names_by_last_word(index).get(w, ()) if _said_in(key, words[:k - 1])}
             things = {tuple(sorted(r["name"] for r in index[key])) for key in said}
             if len(things) == 1:
                 key = max(said, key=len)

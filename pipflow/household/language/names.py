@@ -39,6 +39,23 @@ def per_index(fact: Callable[[dict], T]) -> Callable[[dict], T]:
     return of
 
 
+def per_world(fact: Callable[[dict], T]) -> Callable[[dict], T]:
+    """``fact(world)`` of a world's names and ``words`` alone (what :func:`world_phrases` reads),
+    computed once per index of the world, as :func:`per_index` does."""
+    memo: dict[int, tuple[dict, T]] = {}
+
+    @functools.wraps(fact)
+    def of(world: dict) -> T:
+        index = world_phrases(world)
+        hit = memo.get(id(index))
+        if hit is None or hit[0] is not index:
+            if len(memo) >= _KEPT:
+                memo.clear()
+            hit = memo[id(index)] = (index, fact(world))
+        return hit[1]
+    return of
+
+
 @per_index
 def home_words(index: dict) -> frozenset[str]:
     """Every word of every name of the home."""
@@ -166,26 +183,17 @@ def named_by_first_word(world: dict, word: str) -> list[str]:
     return [name for name, firsts in _form_named(world) if firsts & forms]
 
 
+@per_world
 def _form_named(world: dict) -> list[tuple[str, frozenset[str]]]:
     """The objects and places with a two-word name (or ``words`` entry) whose last word is a form
-    (``FORM_HEADS``), each with the first words of those names, in the world's order: made once
-    per index, as the world's names are."""
-    index = world_phrases(world)
-    hit = _FORM_NAMED.get(id(index))
-    if hit is None or hit[0] is not index:
-        firsts: dict[str, frozenset[str]] = {}
-        for table in (world.get("objects") or {}, world.get("places") or {}):
-            for name, e in table.items():
-                firsts[name] = firsts.get(name, frozenset()) | frozenset(
-                    ws[0] for ws in (words_of(p) for p in [name] + list((e or {}).get("words") or []))
-                    if len(ws) == 2 and ws[1] in FORM_HEADS and ws[0] not in FUNCTION_WORDS)
-        if len(_FORM_NAMED) >= _KEPT:
-            _FORM_NAMED.clear()
-        hit = _FORM_NAMED[id(index)] = (index, [(n, f) for n, f in firsts.items() if f])
-    return hit[1]
-
-
-_FORM_NAMED: dict[int, tuple[dict, list[tuple[str, frozenset[str]]]]] = {}
+    (``FORM_HEADS``), each with the first words of those names, in the world's order."""
+    firsts: dict[str, frozenset[str]] = {}
+    for table in (world.get("objects") or {}, world.get("places") or {}):
+        for name, e in table.items():
+            firsts[name] = firsts.get(name, frozenset()) | frozenset(
+                ws[0] for ws in (words_of(p) for p in [name] + list((e or {}).get("words") or []))
+                if len(ws) == 2 and ws[1] in FORM_HEADS and ws[0] not in FUNCTION_WORDS)
+    return [(n, f) for n, f in firsts.items() if f]
 
 
 #: the kinds of thing the lexicon knows by a common word ("the heater", "a window", "the radio"):

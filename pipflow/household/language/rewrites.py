@@ -64,6 +64,10 @@ def without_manner(words: list[str], notes: list[str]) -> list[str]:
 _MANNER_ENDS = {"and", "then", "to", "into", "onto", "over", "across", "back"}
 
 
+#: the manner phrases, the longest first (a longer phrase wins where two start at one word)
+_MANNERS_LONGEST_FIRST = sorted(MANNERS, key=len, reverse=True)
+
+
 def _without_inner_manner(clause: list[str], notes: list[str]) -> list[str]:
     """A clause that asks something, without a manner phrase (lexicon ``MANNERS``) closing it or
     one of its parts joined by "and" / "then" ("lift it into the sink together and wash it"):
@@ -71,7 +75,7 @@ def _without_inner_manner(clause: list[str], notes: list[str]) -> list[str]:
     out: list[str] = []
     j = 0
     while j < len(clause):
-        m = next((m for m in sorted(MANNERS, key=len, reverse=True) if tuple(clause[j:j + len(m)]) == m), None)
+        m = next((m for m in _MANNERS_LONGEST_FIRST if tuple(clause[j:j + len(m)]) == m), None)
         end = j + len(m) if m else j
         if m and out and (end == len(clause) or clause[end] in _MANNER_ENDS) and out[-1] not in _MANNER_ENDS:
             notes.append(f"'{' '.join(m)}' says how the steps run, not what the home should end like")

@@ -13,7 +13,7 @@ from pipflow.household.language.restated import leading_subject, restates_locati
 from pipflow.household.language.typos import typo_of, vocabulary
 from pipflow.language.asides import (BOUNDS, EXCLUSIVITY, FUNCTION_WORDS, NEGATION, QUANTITIES, SELECTION, clauses,
                                      content_free, signature)
-from pipflow.language.numbers import read_number
+from pipflow.language.numbers import read_number, reads_as_count
 
 
 #: lexicon classes of function words: alone in a clause they carry nothing an order needs
@@ -49,7 +49,7 @@ def _content(world: dict) -> Callable[[str], bool]:
     world_words, vocab = _naming_words(world_phrases(world))
 
     def content(w: str) -> bool:
-        if w in world_words or w in _LEXICON_CONTENT or w.isdigit() or read_number([w], 0):
+        if w in world_words or w in _LEXICON_CONTENT or w.isdigit() or reads_as_count(w):
             return True
         if w in FUNCTION_WORDS:
             return False
@@ -258,7 +258,7 @@ def _remark(world: dict, content: Callable[[str], bool]) -> Callable[[tuple[str,
         opens = bool(ws) and ws[0] in REMARK_SUBJECTS or any(
             all(a_name(w) for w in subject[:n]) and subject[n:n + 1] and subject[n] in SUBJECT_LINKS for n in (1, 2))
         return opens and not any(w in _BEARING or w in POINTING or w in _CUE_WORDS or names(w) or w.isdigit()
-                                 or read_number([w], 0) for w in ws)
+                                 or reads_as_count(w) for w in ws)
     return remark
 
 

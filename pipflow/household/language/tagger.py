@@ -18,8 +18,8 @@ from pipflow.household.language.dialect import (cut_as_switch, on_off_as_verbs, 
 from pipflow.household.language.headwords import named_again
 from pipflow.household.language.grammar import NOUN_DUAL
 from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
-from pipflow.household.language.names import (first_words, longest_name, named_by_first_word, things_of_kind,
-                                              world_phrases)
+from pipflow.household.language.names import (first_words, longest_name, named_by_first_word, per_index,
+                                              things_of_kind, world_phrases)
 from pipflow.household.language.retag import (act_before_noun, demonstratives, elided_it_is, left_lying, located,
                                               restated_order, without_hedges)
 from pipflow.household.language.rewrites import (caused, closed_again, given, heat_purpose, measures, or_under_negation,
@@ -74,6 +74,12 @@ def repaired(words: list[str], index: dict, vocab: set[str], notes: list[str], w
     return words
 
 
+@per_index
+def _first_words_of_long_names(index: dict) -> frozenset[str]:
+    """The first words of the home's names of two or more words ("jordan" of jordan's desk)."""
+    return frozenset(key[0] for key in index if len(key) > 1)
+
+
 def owners_as_the(command: str, world: dict, notes: list[str]) -> str:
     """A person's name said as whose a thing is ("Rosie's sippy cup", "put Alfie's wellies
     away"): a capitalised word with "'s" before the first word of a thing of the home, that is no
@@ -83,7 +89,7 @@ def owners_as_the(command: str, world: dict, notes: list[str]) -> str:
     ("jordan's mug"), the name is an owner only where the home's own names use it ("jordan's
     desk"): any lower-case word before "'s" is not a name."""
     index = world_phrases(world)
-    owners = {key[0] for key in index if len(key) > 1}
+    owners = _first_words_of_long_names(index)
 
     def owner(m: re.Match) -> str:
         word, after = m.group(1).lower(), m.group(2).lower()

@@ -7,7 +7,7 @@ from pipflow.household.language.lexicon import FILLER, FILLER_TYPO_TARGETS, PHRA
 from pipflow.household.language.names import home_words, per_index
 from pipflow.household.language.tokens import PUNCT
 from pipflow.language.asides import FUNCTION_WORDS
-from pipflow.language.numbers import read_number
+from pipflow.language.numbers import reads_as_count
 from pipflow.language.spelling import distance
 
 
@@ -35,7 +35,7 @@ def known_word(w: str, index: dict, vocab: frozenset[str]) -> bool:
     """Whether the tagger reads ``w`` as it is: a word of the world, of the lexicon, of the
     politeness list, a number or a mark."""
     return w in vocab or w in PUNCT or w.isdigit() or w in _LEXICON_WORDS or \
-        w in home_words(index) or bool(read_number([w], 0))
+        w in home_words(index) or reads_as_count(w)
 
 
 #: endings of English inflection: a shared one says nothing of whether two words are one word
