@@ -90,5 +90,11 @@ def test_close_over_closes() -> None:
 
 
 def test_since_an_event_that_is_no_time_is_still_refused() -> None:
+    """Only "since" a time is when something began; in an order, "since the party" is not read. A
+    remark of its own that names nothing of the home ("it has been out since the party") is set
+    aside whatever it says (round 32: "party" is an English word, no slip of "pantry")."""
     with pytest.raises(TranslationError, match="since"):
-        translate("put the juice in the icebox, it has been out since the party", STUDIO)
+        translate("put the juice in the icebox since the party", STUDIO)
+    got = translate("put the juice in the icebox, it has been out since the party", STUDIO)
+    assert got["goal"]["in"] == {"icebox": ["juice"]}
+    assert any("set aside" in line and "since the party" in line for line in got["explain"])

@@ -99,18 +99,20 @@ ADDRESSEES = frozenset({"all", "everyone", "everybody", "team", "folks", "guys",
                         # Nigerian English and Pidgin ("Good morning una": you all; "oga": boss)
                         "una", "oga", "ogas",
                         # Kenyan English and Sheng ("Sawa wasee": OK guys; "mzee": elder, sir)
-                        "boss", "wasee", "mzee"})
+                        "boss", "wasee", "mzee",
+                        # Mexican Spanish ("oye jefe", "gracias muchachos")
+                        "jefe", "compa", "compas", "muchachos"})
 
 
 #: a thanks that can close an order without a comma before it ("... to bay 2 ta")
 THANKS = frozenset({"thanks", "ta", "cheers", "thx", "ty", "tyvm", "thankyou", "dankie", "diolch", "merci", "asante",
-                    "asanteni"})
+                    "asanteni", "gracias"})
 #: who an order is said to, or a tag that closes it, without a comma before it ("... on dispatch
 #: please mate", "... forklifts only mind", "... thanks lads"): never a word that is operative
 CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "boss", "love", "pet", "hun",
                      "mind", "yeah", "eh", "cheers", "ta", "thanks", "thx", "ty", "tyvm", "thankyou", "dankie",
                      "man", "bru", "boet", "chale", "bud", "butt", "butty", "bach", "diolch", "merci", "svp", "stp",
-                     "asante", "asanteni", "bana", "mzee"})
+                     "asante", "asanteni", "bana", "mzee", "gracias", "jefe"})
 
 
 #: a request tag after an order ("... over to the shed would ya", "... could you"): it asks
@@ -323,7 +325,24 @@ def _past_of_a_noun(ws: list[str]) -> bool:
         return True   # a noun of two words: "Ceat vehicle reached early"
     subject = noun.isalpha() and noun not in FUNCTION_WORDS and (k == 1 or (noun.endswith("s") and len(noun) > 3
                                                                          and not noun.endswith("ss")))
-    return subject and _past(verb)
+    return (subject and _past(verb)) or _placed_noun_past(ws, k)
+
+
+#: prepositions that say where a noun is or comes from, after the noun ("customer in Laredo")
+_NOUN_PLACES = frozenset({"in", "from", "at", "of", "near"})
+
+
+def _placed_noun_past(ws: list[str], k: int) -> bool:
+    """ "customer in Laredo rejected them", "the truck from Saltillo arrived early": a noun, where
+    it is or comes from (a preposition and one or two words, an article allowed), then a verb in
+    the past tense: a report of what happened, as people writing English as a second language say
+    it without an article. An order opens with its verb, never with a noun and where it is."""
+    noun = ws[k]
+    if not (noun.isalpha() and noun not in FUNCTION_WORDS and len(ws) > k + 3 and ws[k + 1] in _NOUN_PLACES):
+        return False
+    words = [w for w in ws[k + 2:k + 5] if w not in DETERMINERS]
+    return any(_past(words[j]) and all(w.isalpha() and w not in FUNCTION_WORDS for w in words[:j])
+               for j in (1, 2) if j < len(words))
 
 
 def _past(word: str) -> bool:
@@ -568,6 +587,9 @@ INTERJECTIONS = frozenset({
     # sympathy, "lekker"; Ghanaian "chale", "ei", "abi")
     "eish", "ag", "ja", "yebo", "hayibo", "haibo", "jislaaik", "lekker", "shame", "sho", "chale", "ei", "eii",
     "abi", "ehe",
+    # Mexican Spanish opening an English order ("Oye, ...", "Bueno, ...": hey, well; "porfa": please;
+    # "ahorita": right now; "ya": already; "órale", "ándale": come on)
+    "oye", "oiga", "bueno", "pues", "porfa", "porfavor", "ahorita", "ya", "orale", "andale", "mira",
     # Indian English: Hindi and Tamil assent and urging ("Achha, take 3 ...", "Seri, ten tyres ...")
     "achha", "acha", "accha", "seri", "haan", "ji", "jaldi", "arre", "arey"})
 

@@ -685,7 +685,9 @@ _TYPED = ((r"\bu\b", "you"),
           (r"\bcant\b", "can not"), (r"\bgonna\b", "going to"), (r"\bwanna\b", "want to"), (r"\bgotta\b", "have to"),
           # speech: "em" for them ("stick em in the oven"), and "like" hedging after a preposition
           # ("at like four", "in like ten minutes")
-          (r"\bem\b", "them"), (r"\b(at|in|for|about|around|by)\s+like\b", r"\1"))
+          (r"\bem\b", "them"), (r"\b(at|in|for|about|around|by)\s+like\b", r"\1"),
+          # "would ya", "can ya" (you, after a verb that asks); "outa", "outta" (out of)
+          (r"\b(would|could|will|can|wont|do|did)\s+ya\b", r"\1 you"), (r"\bout(?:t?a)\b", "out of"))
 
 
 def normalize(text: str) -> str:

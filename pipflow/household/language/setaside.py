@@ -13,6 +13,7 @@ from pipflow.household.language.restated import leading_subject, restates_locati
 from pipflow.household.language.typos import typo_of, vocabulary
 from pipflow.language.asides import (BOUNDS, EXCLUSIVITY, FUNCTION_WORDS, NEGATION, QUANTITIES, SELECTION, clauses,
                                      content_free, signature)
+from pipflow.language.english import common_word
 from pipflow.language.numbers import read_number, reads_as_count
 
 
@@ -42,18 +43,28 @@ def _naming_words(index: dict) -> tuple[frozenset[str], frozenset[str]]:
     return world_words, vocab
 
 
+def _misspelt(w: str, vocab: frozenset[str], home: frozenset[str]) -> bool:
+    """Whether ``w`` is read as a slip of a word of ``vocab``: a common English word as written is
+    not, unless it is a word of the home's names ("sore" is no "store", "party" no "pantry":
+    :func:`pipflow.language.english.common_word`), so a remark made of everyday words may be set
+    aside, as in the warehouse; "rack" of the shoe rack is judged as before."""
+    return len(w) >= 4 and (w in home or not common_word(w)) and bool(typo_of(w, vocab))
+
+
 def _content(world: dict) -> Callable[[str], bool]:
     """The test :func:`pipflow.language.asides.content_free` asks of each word: a word of a
     world name (or a misspelling of one, or of a content word of the lexicon), a number, or a
     lexicon word that is no function word ("put", "off" with a verb is content by the verb)."""
-    world_words, vocab = _naming_words(world_phrases(world))
+    index = world_phrases(world)
+    world_words, vocab = _naming_words(index)
+    home = home_words(index)
 
     def content(w: str) -> bool:
         if w in world_words or w in _LEXICON_CONTENT or w.isdigit() or reads_as_count(w):
             return True
         if w in FUNCTION_WORDS:
             return False
-        return len(w) >= 4 and bool(typo_of(w, vocab))
+        return _misspelt(w, vocab, home)
     return content
 
 
@@ -242,10 +253,12 @@ def _remark(world: dict, content: Callable[[str], bool]) -> Callable[[tuple[str,
     points back (:data:`POINTING`) and no word of the cues, wishes and states a vague command is
     read from (:data:`CUE_CLASSES`). ``content``: :func:`_content` of the world, made once by the
     caller."""
-    world_words, vocab = _home_vocabulary(world_phrases(world))
+    index = world_phrases(world)
+    world_words, vocab = _home_vocabulary(index)
+    home = home_words(index)
 
     def names(w: str) -> bool:
-        return w in world_words or (len(w) >= 4 and bool(typo_of(w, vocab)))
+        return w in world_words or _misspelt(w, vocab, home)
 
     def a_name(w: str) -> bool:
         return not (w in FUNCTION_WORDS or w in _PHRASE_WORDS or content(w))

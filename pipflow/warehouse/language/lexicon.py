@@ -55,7 +55,10 @@ FILLERS = {"the", "please", "kindly", "units", "unit", "pieces", "piece", "boxes
            "abeg", "biko",
            # Swahili and Sheng said in Kenyan English ("Clear packing kabisa": completely, "haraka":
            # quickly, "tafadhali": please, "bana": man, "sasa": now)
-           "kabisa", "haraka", "tafadhali", "bana", "sasa"}
+           "kabisa", "haraka", "tafadhali", "bana", "sasa",
+           # Mexican Spanish said in English orders ("porfa move ...", "ahorita put ...", "oye, ..."):
+           # please, right now, hey, then, well, come on ("ya" is "you" in "can ya": SPELLINGS)
+           "porfa", "porfavor", "ahorita", "oye", "luego", "pues", "bueno", "orale", "andale"}
 #: packaging and measure nouns: "5 cartons of tape", "2 rolls of shrink wrap" count the item after
 #: "of". A world that names a product so ("carton") recognises it as that product first.
 FILLERS |= {"carton", "cartons", "roll", "rolls", "pack", "packs", "packet", "packets", "bundle",
@@ -77,7 +80,8 @@ SPELLINGS = {"shud": "should", "shld": "should", "u": "you", "r": "are", "wont":
 SCOTS = {"fae": "from", "frae": "from", "tae": "to", "aff": "off", "oot": "out", "doon": "down", "wi": "with",
          "ower": "over", "ontae": "onto", "intae": "into", "oantae": "onto", "nae": "no", "mair": "more",
          "dinnae": "dont", "dinna": "dont", "cannae": "cant", "canna": "cant", "wullnae": "wont", "willnae": "wont",
-         "shouldnae": "shouldnt", "roon": "round", "whit": "what", "fower": "four", "twa": "two", "awa": "away", "efter": "after", "gonnae": "will", "ye": "you", "ma": "my", "bar": "except"}
+         "shouldnae": "shouldnt", "disnae": "doesnt", "mustnae": "mustnt", "hae": "have", "nane": "none",
+         "roon": "round", "whit": "what", "fower": "four", "twa": "two", "awa": "away", "efter": "after", "gonnae": "will", "ye": "you", "ma": "my", "bar": "except"}
 SPELLINGS |= SCOTS
 #: texting's one-letter words, as typed in lower case ("mezz n dock", "end up w a dozen"); a capital
 #: "N" or "W" is more often north or west ("N cage"), and is left alone
@@ -192,10 +196,20 @@ IDIOMS = ((re.compile(r"\b(as|what)\s+she(?=\s+(?:is|was|stands|has)\b|['\u2019]
 #: is "add 4 more tubes", "no more of 4" is "no more than 4", "the double of the saddles" is
 #: "double the saddles", "stay away of P" is "stay away from P". Each reads a number or a place
 #: word after it as before: nothing here adds a count or a name.
+#: verbs a modal may stand before with a stray "to" ("must to have"), for :data:`WORD_ORDER`
+_BARE_VERBS = "|".join(("be", "have", "hold", "keep", "stay", "remain", "contain", "store", "get", "go", "end", "take",
+                        "move", "put", "bring", "carry", "touch", "enter", "use", "handle", "leave", "send", "fill",
+                        "empty", "swap"))
 WORD_ORDER = ((re.compile(rf"\bmore\s+({_NUMBER})(?!\s*(?:than|%|percent))", re.IGNORECASE), r"\1 more"),
               (re.compile(rf"\b(more|less|fewer)\s+of\s+(?={_NUMBER})", re.IGNORECASE), r"\1 than "),
               (re.compile(r"\b(?:the\s+)?(double|triple)\s+of\b", re.IGNORECASE), r"\1"),
               (re.compile(r"\baway\s+of\b", re.IGNORECASE), "away from"),
+              # "except ones of rack 3" (Spanish "los de"): the ones on it
+              (re.compile(r"\bones\s+of\b", re.IGNORECASE), "ones on"),
+              # "5 alternators each one" (Spanish "cada uno") closing a clause: each
+              (re.compile(r"\beach\s+one\b(?=\s*(?:[.,;:!?]|$))", re.IGNORECASE), "each"),
+              # "rack 3 stays like it is": as it is
+              (re.compile(r"\blike\s+(it|they)\s+(is|are|was|were)\b", re.IGNORECASE), r"as \1 \2"),
               # "a dozen less two": minus, between two amounts only ("2 less than" is read as said)
               (re.compile(rf"\b({_NUMBER})\s+less\s+(?={_NUMBER})", re.IGNORECASE), r"\1 minus "),
               # "give us / give me 4 more X on P": the more wanted there ("give" alone names no place)
@@ -203,7 +217,11 @@ WORD_ORDER = ((re.compile(rf"\bmore\s+({_NUMBER})(?!\s*(?:than|%|percent))", re.
               # "P has 4 X too much" (Dutch "te veel", German "zu viel"): too many
               (re.compile(rf"\b({_NUMBER}\s+[a-z]+\s+)too\s+much\b", re.IGNORECASE), r"\1too many"),
               # "fill P up to the top": the article of "the top" / "the brim" says nothing
-              (re.compile(r"\b(to|until|till)\s+the\s+(top|brim)\b", re.IGNORECASE), r"\1 \2"))
+              (re.compile(r"\b(to|until|till)\s+the\s+(top|brim)\b", re.IGNORECASE), r"\1 \2"),
+              # "P must to have 12 X" (Spanish "debe de tener", Portuguese "deve de"): a modal takes the
+              # bare verb, so the "to" between them says nothing
+              (re.compile(rf"\b(must|should|shall|can|could|would)\s+to\s+(?=(?:not\s+)?(?:{_BARE_VERBS})\b)",
+                          re.IGNORECASE), r"\1 "))
 #: discourse particles of Singapore and Malaysian English, closing a clause ("add 4 more lah",
 #: "botak off today ah,"): they colour the clause, they say nothing of the order
 PARTICLES = ("lah", "leh", "lor", "hor", "meh", "liao", "sia", "ah", "ha")
@@ -841,7 +859,10 @@ class Lexicon:
         self.keywords = keywords  # keyword text -> terminal name
         # the grammar's own words are English, never a misspelt name ("haul" is no hauler1)
         # superlatives are words of robot rules, never a misspelt name ("strongest" is no string_set)
-        self.index = NameIndex(world, reserved={k for k in keywords if k.isalpha()} | FILLERS | set(SUPERLATIVES) | FRAME_WORDS)
+        # another spelling of a grammar word said alone is that word, never a misspelt name ("tae",
+        # to, is no slip of a robot "tam"; a name spelt so exactly is still that name)
+        self.index = NameIndex(world, reserved={k for k in keywords if k.isalpha()} | FILLERS | set(SUPERLATIVES)
+                               | FRAME_WORDS, respelt=set(SPELLINGS))
         robots = world.get("robots") or {}
         self.kinds = {str(r.get("kind")).lower() for r in robots.values()
                       if isinstance(r, dict) and r.get("kind")}

@@ -292,12 +292,16 @@ def _spelt_otherwise(n: "_Name") -> set[str]:
 class NameIndex:
     """The world's names by kind, and the rules for deciding which one a word means."""
 
-    def __init__(self, world: dict, reserved: set[str] | frozenset[str] = frozenset()):
+    def __init__(self, world: dict, reserved: set[str] | frozenset[str] = frozenset(),
+                 respelt: set[str] | frozenset[str] = frozenset()):
         self.names: list[_Name] = []
         self.by_kind: dict[str, list[str]] = {}
         # words the command grammar reads as English ("haul", "stick", "knock"): a misspelling is
         # never guessed from one of them, or "Haul three" would become a robot hauler3
         self.reserved = set(reserved) | _robot_labels(world)
+        # another spelling of a grammar word ("tae", to): said alone it is never a misspelt
+        # one-word name ("tam"); as a word of a longer name it may be ("cold roon")
+        self.respelt = frozenset(respelt)
         for kind in KINDS:
             found = list((world.get(WORLD_KEYS[kind]) or {}).keys())
             self.by_kind[kind] = [str(n) for n in found]
@@ -437,7 +441,7 @@ class NameIndex:
             # "racks" is the kind word, not a misspelt rack_a (nor a tie of all racks); "row" of
             # row-a and row-b is the head noun they share (a group: "every row"), not a tie
             fuzzy = False
-        if fuzzy and alpha not in STOPWORDS and alpha not in self.reserved and alpha:
+        if fuzzy and alpha not in STOPWORDS and alpha not in self.reserved and alpha not in self.respelt and alpha:
             scored = []
             for n in self.names:
                 if n.digits != digits:
