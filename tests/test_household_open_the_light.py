@@ -40,3 +40,19 @@ def test_open_and_close_keep_their_meaning_for_a_thing_that_opens(bothy):
 def test_a_thing_that_neither_opens_nor_switches_is_still_impossible_to_open(bothy):
     with pytest.raises(Refusal):
         goal("open the jug", bothy)
+
+
+@pytest.mark.parametrize("command,state", [
+    # round 32: a list that names a thing that opens and one that only switches, each read by what it is
+    ("close the icebox and the lamp", {"icebox": ["closed"], "lamp": ["off"]}),
+    ("close the lamp and the icebox", {"lamp": ["off"], "icebox": ["closed"]}),
+    ("open the dresser, the wood stove and the icebox", {"dresser": ["open"], "wood_stove": ["on"],
+                                                         "icebox": ["open"]}),
+])
+def test_a_list_of_things_that_open_and_things_that_switch_is_read_item_by_item(bothy, command, state):
+    assert goal(command, bothy) == ({}, state)
+
+
+def test_a_list_with_a_thing_that_neither_opens_nor_switches_is_still_impossible(bothy):
+    with pytest.raises(Refusal):
+        goal("close the lamp and the jug", bothy)

@@ -83,20 +83,55 @@ def open_close_as_switch(words: list[str], world: dict, index: dict, notes: list
     names only things that switch and cannot be opened in this home ("close all the lights",
     "open the aircon", as Philippine and South Asian English say it): of such a thing, opening
     and closing can mean nothing else. Before a thing that opens ("close the fridge", "open the
-    washing machine", which may switch too) they keep their meaning. A note says so."""
+    washing machine", which may switch too) they keep their meaning. In a list that names both
+    ("close the ref and the tv"), each item is read by what it is: "close the ref and switch off
+    the tv". A note says so."""
     out: list[str] = []
-    for k, w in enumerate(words):
-        if w in _OPEN_CLOSE and _switch_only_phrase(words, _after_determiners(words, k + 1), world, index):
+    k = 0
+    while k < len(words):
+        w = words[k]
+        items = _listed(words, k + 1, world, index) if w in _OPEN_CLOSE else []
+        kinds = {switch_only for _, _, switch_only in items}
+        if items and kinds == {True}:
             out += ["switch", _OPEN_CLOSE[w]]
             notes.append(f"'{w}' read as 'switch {_OPEN_CLOSE[w]}' (of a thing that switches and does not open)")
+        elif len(kinds) == 2:   # each item with the verb its thing takes
+            said = {True: ["switch", _OPEN_CLOSE[w]], False: [w]}
+            for n, (start, end, switch_only) in enumerate(items):
+                if n:
+                    out += words[items[n - 1][1]:start]   # the joiner
+                out += (said[switch_only] if n == 0 or switch_only != items[n - 1][2] else []) + words[start:end]
+            notes.append(f"'{w}' read item by item: 'switch {_OPEN_CLOSE[w]}' of the things that switch and do "
+                         f"not open, '{w}' of the others")
+            k = items[-1][1]
+            continue
         else:
             out.append(w)
+        k += 1
     return out
 
 
-def _switch_only_phrase(words: list[str], k: int, world: dict, index: dict) -> bool:
-    """Whether the phrase at ``k`` names things (or a category of things) that all switch and
-    none of which opens."""
+def _listed(words: list[str], k: int, world: dict, index: dict) -> list[tuple[int, int, bool]]:
+    """The things named from ``k`` on as a list ("the ref and the tv", "the fan, the lamp and the
+    window"): each item's first word (after the joiner), the end of its name, and whether it
+    switches and cannot be opened. The list ends before a joiner followed by what names nothing;
+    empty when the phrase at ``k`` names nothing."""
+    items: list[tuple[int, int, bool]] = []
+    start = k
+    while True:
+        end, switch_only = _named(words, _after_determiners(words, start), world, index)
+        if end is None:   # the list ends before what names nothing ("... and go to bed")
+            return items
+        items.append((start, end, switch_only))
+        if end < len(words) and words[end] in ("and", ","):
+            start = end + 1 + (end + 1 < len(words) and words[end] == "," and words[end + 1] == "and")
+            continue
+        return items
+
+
+def _named(words: list[str], k: int, world: dict, index: dict) -> tuple[int | None, bool]:
+    """The end of the longest name at ``k`` and whether all it names switch and none opens (None
+    when no name of an object, place or category stands there)."""
     tables = [world.get("objects") or {}, world.get("places") or {}]
     for end in range(min(len(words), k + 5), k, -1):
         things = index.get(tuple(words[k:end])) or []
@@ -109,10 +144,12 @@ def _switch_only_phrase(words: list[str], k: int, world: dict, index: dict) -> b
             elif t["kind"] == "category":
                 entries += [e for table in tables for e in table.values() if t["name"] in (e.get("categories") or [])]
             else:
-                return False
-        return bool(entries) and all("toggleable" in (e.get("properties") or []) and
-                                     "openable" not in (e.get("properties") or []) for e in entries)
-    return False
+                return None, False
+        if not entries:
+            return None, False
+        return end, all("toggleable" in (e.get("properties") or []) and
+                        "openable" not in (e.get("properties") or []) for e in entries)
+    return None, False
 
 
 def _after_determiners(words: list[str], k: int) -> int:
