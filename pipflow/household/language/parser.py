@@ -24,7 +24,8 @@ from __future__ import annotations
 
 import functools
 import json
-from typing import Iterator
+from collections import OrderedDict
+from typing import Any, Iterator
 
 from lark import Lark, Token, Tree
 from lark.exceptions import UnexpectedInput
@@ -37,7 +38,7 @@ from pipflow.household.language.fronted import fronted_objects, topic_too
 from pipflow.household.language.grammar import NOUN_DUAL, grammar_text
 from pipflow.household.language.lacking import lacking
 from pipflow.household.language.lexicon import ARROW, MARKS, PHRASES, arrows_said_as
-from pipflow.household.language.names import world_phrases
+from pipflow.household.language.names import per_index, world_phrases
 from pipflow.household.language.people import about_people
 from pipflow.household.language.setaside import reads_as_word, without_asides
 from pipflow.household.language.tagger import owners_as_the, tag
@@ -163,11 +164,11 @@ def _parse(command: str, world: dict, notes: list[str]) -> list[dict]:
     if not [t for t in tags if t.cls not in ("END", "COMMA")]:
         raise TranslationError(f"{command.strip()!r} asks for nothing the offline parser can read")
     try:
-        tree = _parser_for(world).parse(_terminals(tags))
+        tree = _forest(world, tags)
     except UnexpectedInput as exc:
         for repaired, said in _repairs(tags):
             try:
-                tree = _parser_for(world).parse(_terminals(repaired))
+                tree = _forest(world, repaired)
             except UnexpectedInput:
                 continue
             notes += said
@@ -258,6 +259,34 @@ def _orders(tags: list[Tag], tree: Tree, command: str) -> list[dict]:
     return readings
 
 
+#: the Earley forests (or parse errors) of the last tag sequences read, by the world's dual classes
+#: (its parser) and the sequence's classes: a refused command's candidate wordings often give a
+#: sequence read before (a word put for another of its class). Readers only read a forest
+#: (CollapseAmbiguities and the Builder make new trees), so one forest serves every wording.
+_FORESTS: OrderedDict[tuple[frozenset[str], tuple[str, ...]], tuple[bool, Any]] = OrderedDict()
+_FORESTS_KEPT = 256
+
+
+def _forest(world: dict, tags: list[Tag]) -> Tree:
+    """The parse forest of the tags in this world, or the parse error it raised (remembered)."""
+    dual = _dual_classes(world)
+    key = (dual, tuple(t.cls for t in tags))
+    hit = _FORESTS.get(key)
+    if hit is None:
+        try:
+            hit = (True, _lark(dual).parse(_terminals(tags)))
+        except UnexpectedInput as exc:
+            hit = (False, exc)
+        _FORESTS[key] = hit
+        if len(_FORESTS) > _FORESTS_KEPT:
+            _FORESTS.popitem(last=False)
+    else:
+        _FORESTS.move_to_end(key)
+    if not hit[0]:
+        raise hit[1]
+    return hit[1]
+
+
 def _terminals(tags: list[Tag]) -> list[Token]:
     """The tagger's tokens as lark's terminals; a token's value is its index in the tag list."""
     return [Token(t.cls, str(k), start_pos=k, end_pos=k + 1) for k, t in enumerate(tags)]
@@ -280,5 +309,9 @@ def _parser_for(world: dict) -> Lark:
 
 def _dual_classes(world: dict) -> frozenset[str]:
     """The lexicon classes whose phrases are also names of this world ("trash", "microwave")."""
-    index = world_phrases(world)
+    return _dual_of(world_phrases(world))
+
+
+@per_index
+def _dual_of(index: dict) -> frozenset[str]:
     return frozenset(PHRASES[k][0] for k in index if k in PHRASES)
