@@ -17,7 +17,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from pipflow.errors import Refusal, TranslationError
-from pipflow.language.spelling import distance
+from pipflow.language.spelling import Slips, distance, slip
 from pipflow.language.numbers import read_number
 from pipflow.warehouse.language.resolver import split_evenly
 from pipflow.warehouse.language.translator import translate
@@ -166,6 +166,26 @@ def _swaps_once(a: str, b: str) -> int:
 @given(st.text("abcde", max_size=8), st.text("abcde", max_size=8))
 def test_distance_is_the_swaps_once_edit_distance(a: str, b: str) -> None:
     assert distance(a, b) == _swaps_once(a, b)
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(st.text("qwasz", min_size=1, max_size=6), min_size=1, max_size=8), st.data())
+def test_slips_by_lookup_are_the_slips_word_by_word(targets: list[str], data) -> None:
+    """``Slips`` finds by lookup exactly the targets :func:`slip` accepts one by one (keys next to
+    each other, swaps, a letter dropped or doubled), for words made from a target by one edit."""
+    word = list(data.draw(st.sampled_from(targets)))
+    k = data.draw(st.integers(0, len(word)))
+    edit = data.draw(st.sampled_from(["swap", "drop", "add", "replace", "none"]))
+    if edit == "swap" and k + 1 < len(word):
+        word[k], word[k + 1] = word[k + 1], word[k]
+    elif edit == "drop" and k < len(word):
+        del word[k]
+    elif edit == "add":
+        word.insert(k, data.draw(st.sampled_from("qwaszx")))
+    elif edit == "replace" and k < len(word):
+        word[k] = data.draw(st.sampled_from("qwaszx"))
+    said = "".join(word)
+    assert Slips(targets).of(said) == {t for t in targets if slip(said, t)}
 
 
 # -- clause structure --------------------------------------------------------------------------

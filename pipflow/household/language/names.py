@@ -30,12 +30,7 @@ def per_index(fact: Callable[[dict], T]) -> Callable[[dict], T]:
 
     @functools.wraps(fact)
     def of(index: dict) -> T:
-        hit = memo.get(id(index))
-        if hit is None or hit[0] is not index:   # the index is kept in the memo: its id is not reused
-            if len(memo) >= _KEPT:
-                memo.clear()
-            hit = memo[id(index)] = (index, fact(index))
-        return hit[1]
+        return _kept(memo, index, lambda: fact(index))
     return of
 
 
@@ -46,14 +41,19 @@ def per_world(fact: Callable[[dict], T]) -> Callable[[dict], T]:
 
     @functools.wraps(fact)
     def of(world: dict) -> T:
-        index = world_phrases(world)
-        hit = memo.get(id(index))
-        if hit is None or hit[0] is not index:
-            if len(memo) >= _KEPT:
-                memo.clear()
-            hit = memo[id(index)] = (index, fact(world))
-        return hit[1]
+        return _kept(memo, world_phrases(world), lambda: fact(world))
     return of
+
+
+def _kept(memo: dict[int, tuple[dict, T]], index: dict, make: Callable[[], T]) -> T:
+    """The memo's fact for this index, made if it has none (the index is kept in the memo with its
+    fact, so its id is not reused by another while the entry stands)."""
+    hit = memo.get(id(index))
+    if hit is None or hit[0] is not index:
+        if len(memo) >= _KEPT:
+            memo.clear()
+        hit = memo[id(index)] = (index, make())
+    return hit[1]
 
 
 @per_index
