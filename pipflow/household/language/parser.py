@@ -24,8 +24,7 @@ from __future__ import annotations
 
 import functools
 import json
-from collections import OrderedDict
-from typing import Any, Iterator
+from typing import Iterator
 
 from lark import Lark, Token, Tree
 from lark.exceptions import UnexpectedInput
@@ -164,11 +163,11 @@ def _parse(command: str, world: dict, notes: list[str]) -> list[dict]:
     if not [t for t in tags if t.cls not in ("END", "COMMA")]:
         raise TranslationError(f"{command.strip()!r} asks for nothing the offline parser can read")
     try:
-        tree = _forest(world, tags)
+        tree = _parser_for(world).parse(_terminals(tags))
     except UnexpectedInput as exc:
         for repaired, said in _repairs(tags):
             try:
-                tree = _forest(world, repaired)
+                tree = _parser_for(world).parse(_terminals(repaired))
             except UnexpectedInput:
                 continue
             notes += said
@@ -257,34 +256,6 @@ def _orders(tags: list[Tag], tree: Tree, command: str) -> list[dict]:
             seen.add(key)
             readings.append(order)
     return readings
-
-
-#: the Earley forests (or parse errors) of the last tag sequences read, by the world's dual classes
-#: (its parser) and the sequence's classes: a refused command's candidate wordings often give a
-#: sequence read before (a word put for another of its class). Readers only read a forest
-#: (CollapseAmbiguities and the Builder make new trees), so one forest serves every wording.
-_FORESTS: OrderedDict[tuple[frozenset[str], tuple[str, ...]], tuple[bool, Any]] = OrderedDict()
-_FORESTS_KEPT = 256
-
-
-def _forest(world: dict, tags: list[Tag]) -> Tree:
-    """The parse forest of the tags in this world, or the parse error it raised (remembered)."""
-    dual = _dual_classes(world)
-    key = (dual, tuple(t.cls for t in tags))
-    hit = _FORESTS.get(key)
-    if hit is None:
-        try:
-            hit = (True, _lark(dual).parse(_terminals(tags)))
-        except UnexpectedInput as exc:
-            hit = (False, exc)
-        _FORESTS[key] = hit
-        if len(_FORESTS) > _FORESTS_KEPT:
-            _FORESTS.popitem(last=False)
-    else:
-        _FORESTS.move_to_end(key)
-    if not hit[0]:
-        raise hit[1]
-    return hit[1]
 
 
 def _terminals(tags: list[Tag]) -> list[Token]:
