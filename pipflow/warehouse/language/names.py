@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
-from typing import Callable
+from typing import Callable, Collection
 
 from pipflow.errors import TranslationError
 from pipflow.language.english import common_word
@@ -290,18 +290,17 @@ def _spelt_otherwise(n: "_Name") -> set[str]:
 
 
 class NameIndex:
-    """The world's names by kind, and the rules for deciding which one a word means."""
+    """The world's names by kind, and the rules for deciding which one a word means. ``respelt``:
+    other spellings of grammar words ("tae", to), never a misspelt one-word name ("tam") said
+    alone; as a word of a longer name one may be ("cold roon")."""
 
-    def __init__(self, world: dict, reserved: set[str] | frozenset[str] = frozenset(),
-                 respelt: set[str] | frozenset[str] = frozenset()):
+    def __init__(self, world: dict, reserved: Collection[str] = frozenset(), respelt: Collection[str] = frozenset()):
         self.names: list[_Name] = []
         self.by_kind: dict[str, list[str]] = {}
         # words the command grammar reads as English ("haul", "stick", "knock"): a misspelling is
         # never guessed from one of them, or "Haul three" would become a robot hauler3
         self.reserved = set(reserved) | _robot_labels(world)
-        # another spelling of a grammar word ("tae", to): said alone it is never a misspelt
-        # one-word name ("tam"); as a word of a longer name it may be ("cold roon")
-        self.respelt = frozenset(respelt)
+        self.respelt = frozenset(respelt)   # spellings of grammar words ("tae"): never a fuzzy one-word name
         for kind in KINDS:
             found = list((world.get(WORLD_KEYS[kind]) or {}).keys())
             self.by_kind[kind] = [str(n) for n in found]
