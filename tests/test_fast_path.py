@@ -158,7 +158,8 @@ def grammar_cache(tmp_path, monkeypatch):
 
 def _command_parser():
     from pipflow.language import earley
-    from pipflow.warehouse.language.grammar import GRAMMAR, nullable_optionals
+    from pipflow.language.optionals import nullable_optionals
+    from pipflow.warehouse.language.grammar import GRAMMAR
 
     return earley.earley_parser(nullable_optionals(GRAMMAR), lexer=earley.ListLexer, keep_all_tokens=True,
                                 ambiguity="explicit")

@@ -417,7 +417,7 @@ def test_a_place_a_colon_an_item_a_colon_a_count() -> None:
 
 def test_an_optional_colon_and_an_optional_comma_are_two_rules() -> None:
     """Both were named _opt_kw__, so the grammar's every ':'? read as ','?."""
-    from pipflow.warehouse.language.grammar import nullable_optionals
+    from pipflow.language.optionals import nullable_optionals
 
     made = nullable_optionals('a: "x" ":"? "y"\nb: "x" ","? "y"\n')
     colon = next(line for line in made.splitlines() if line.startswith("a:")).split()[2]

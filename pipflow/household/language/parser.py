@@ -47,6 +47,7 @@ from pipflow.language.characters import accents_folded, refuse_unread, without_e
 from pipflow.language.listing import inline_numbering
 from pipflow.language.earley import ListLexer, earley_parser
 from pipflow.language.lookahead import with_lookahead
+from pipflow.language.optionals import nullable_optionals
 
 #: the most readings of one ambiguous command that are compared (each is resolved); more is
 #: refused, never cut short
@@ -269,8 +270,11 @@ def _lark(dual: frozenset[str]) -> Lark:
     world) are of the classes ``dual``: one per world in practice (grammar_text says why). Built
     once, then loaded from the disk cache (:mod:`pipflow.language.earley`: a build costs about as
     much as reading forty commands, and every ``pipflow run`` is a new process); it predicts with
-    one terminal of lookahead (:mod:`pipflow.language.lookahead`: the same forests, less work)."""
-    return with_lookahead(earley_parser(grammar_text(dual), lexer=ListLexer, ambiguity="explicit"))
+    one terminal of lookahead (:mod:`pipflow.language.lookahead`: the same forests, less work), over
+    the grammar with its optional words as nullable rules (:mod:`pipflow.language.optionals`: the
+    same readings, a third less time reading)."""
+    return with_lookahead(earley_parser(nullable_optionals(grammar_text(dual)), lexer=ListLexer,
+                                        ambiguity="explicit"))
 
 
 def _parser_for(world: dict) -> Lark:

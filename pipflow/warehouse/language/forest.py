@@ -20,8 +20,9 @@ from lark.parsers.grammar_analysis import GrammarAnalyzer
 from pipflow.errors import TranslationError
 from pipflow.language.earley import ListLexer, earley_parser
 from pipflow.language.lookahead import with_lookahead
+from pipflow.language.optionals import nullable_optionals
 from pipflow.language.spelling import normalize
-from pipflow.warehouse.language.grammar import GRAMMAR, nullable_optionals
+from pipflow.warehouse.language.grammar import GRAMMAR
 from pipflow.warehouse.language.lexicon import Lexed, Lexicon
 
 
