@@ -13,6 +13,9 @@ world as the world loader gives it to the workflow, and is judged (benchmarks/la
 * ``refused``: a command refused without being understood (a lost command, but nothing moves):
   a clear, feasible command refused, an impossible one refused on a word it could not place, an
   ambiguous one refused as impossible instead of asked;
+* an impossible command whose gold writes no goal (household: "no goal needed") and that the
+  reader read into one is counted ``refused``: not credited, not blamed; the bench, which has the
+  team and the planner, judges whether it was refused as impossible;
 * ``misread``: a goal or rules different from the gold came out, or a command the world can do
   was refused as impossible: a meaning other than the command's was read. This is the defect that
   matters most, so any misread makes the exit status 1;
@@ -45,6 +48,7 @@ if str(ROOT) not in sys.path:
 
 from pipflow.errors import PipflowError, Refusal, WorldError  # noqa: E402
 from pipflow.warehouse.meaning import goal_difference  # noqa: E402
+from pipflow.values import states_goal  # noqa: E402
 
 LANGUAGE = ROOT / "benchmarks" / "language"
 PAPER_TASKS = ROOT / "benchmarks" / "warehouse" / "tasks.yaml"
@@ -155,6 +159,10 @@ def judge(task: dict, got: dict | None, error: BaseException | None, domain: str
         return _refusal_verdict(must_refuse, infeasible, isinstance(error, Refusal)), f"refused: {error}"
     if must_refuse:
         return "misread", f"guessed {got.get('goal')} {got.get('constraints') or ''} instead of refusing"
+    if infeasible and not states_goal(task):
+        # an impossible command whose gold writes no goal: nothing to compare the reading with, and
+        # only the whole pipeline (the team, the planner) refuses it: not credited, not blamed
+        return "refused", f"read as {got.get('goal')}; the gold writes no goal to compare (the bench judges it)"
     if domain == "household":
         same = household_goal(got.get("goal")) == household_goal(task.get("goal"))
     else:

@@ -26,7 +26,7 @@ import json
 from typing import Any, Callable, Iterable, Mapping
 
 from pipflow.engine.status import RunStatus
-from pipflow.values import NOT_UNDERSTOOD, REFUSED_AS_IMPOSSIBLE, ambiguous, impossible
+from pipflow.values import NOT_UNDERSTOOD, REFUSED_AS_IMPOSSIBLE, ambiguous, impossible, states_goal
 
 #: the stand-in for every value of a field that no rule names
 OTHER = "(any other)"
@@ -160,7 +160,7 @@ def judge(task: Mapping[str, Any], outputs: Mapping[str, Any], status: str, erro
         if unclear:
             return {"understood": False, "misread": False,
                     "understanding": "not understood (the reader could not place its words), so not refused as impossible"}
-        wrong = reading() if has_goal and task.get("goal") is not None else None
+        wrong = reading() if has_goal and states_goal(task) else None
         if refused:
             return {"understood": wrong is None, "misread": wrong is not None,
                     "understanding": "refused as impossible, as it should be" if wrong is None

@@ -50,6 +50,15 @@ def impossible(task: Mapping[str, Any]) -> bool:
     return task.get("feasible", True) is False
 
 
+def states_goal(task: Mapping[str, Any]) -> bool:
+    """Whether the task writes down what its command asks: a goal with something in it. An impossible
+    command's goal may be left out or empty ("no goal needed"; ``{}`` when the literal goal cannot
+    be written): then there is nothing to compare a reading with, and an empty goal is never what
+    a command asks (it would hold already)."""
+    goal = task.get("goal")
+    return isinstance(goal, Mapping) and any(bool(v) for v in goal.values())
+
+
 def ambiguous(task: Mapping[str, Any]) -> bool:
     """The task says its command can be read more than one way (``expect: refuse``): the right
     answer is a refusal to guess, quoting the words."""

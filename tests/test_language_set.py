@@ -320,6 +320,18 @@ def test_judge_counts_refusals_as_the_bench_does():
     assert judge(clear, None, Refusal("a would have to hold 40 units"))[0] == "misread"
 
 
+@pytest.mark.parametrize("gold", [{}, {"in": {}, "state": {}}])
+def test_judge_neither_credits_nor_blames_a_reading_of_an_impossible_command_without_a_goal(gold):
+    """A household `feasible: false` task needs no goal: a reading of it cannot be compared with
+    anything, and only the pipeline (team, planner) can refuse it as impossible. It was counted a
+    misreading ("wash my crocs" read right, for a team that cannot wash)."""
+    judge = _translator().judge
+    task = {"goal": gold, "feasible": False}
+    read = {"goal": {"in": {}, "state": {"crocs": ["clean"]}}}
+    assert judge(task, read, None, domain="household")[0] == "refused"
+    assert judge(task, None, Refusal("no robot of the team can wash"), domain="household")[0] == "understood"
+
+
 def _one_task_file(tmp_path: Path, task: dict, world: str = "racks.yaml") -> Path:
     (tmp_path / world).write_text((LANGUAGE / world).read_text(encoding="utf-8"), encoding="utf-8")
     path = tmp_path / "tasks.yaml"

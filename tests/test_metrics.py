@@ -288,3 +288,25 @@ def test_older_records_are_read_in_todays_names_and_never_resumed_into_a_new_tab
     with pytest.raises(UserError, match="the metrics' definitions before they were versioned -> 2"):
         run_bench(BenchConfig(tasks_file=folder / "tasks.yaml", seeds=1, jobs=1, out=out, use_cache=False,
                               resume=True), progress=False)
+
+
+@pytest.mark.parametrize("gold", [None, {}, {"in": {}, "state": {}}])
+def test_an_impossible_command_whose_gold_writes_no_goal_is_understood_when_refused_as_impossible(gold):
+    """ "no goal needed" for an impossible household task (benchmarks/README.md): the run that read
+    "wash my crocs" and was refused as impossible (no robot of the team can wash) understood it.
+    An empty goal was compared as if the command asked for nothing, and the run counted misread."""
+    from pipflow.meaning import judge
+    from pipflow.values import REFUSED_AS_IMPOSSIBLE
+
+    task = {"id": "crocs", "command": "give my crocs a wash", "feasible": False}
+    if gold is not None:
+        task["goal"] = gold
+    differs = lambda gold, run: "differs"   # noqa: E731 - any comparison made would find a difference
+    verdict = judge(task, {"goal": {"state": {"crocs": ["clean"]}}}, "refused", REFUSED_AS_IMPOSSIBLE,
+                    goal_difference=differs, rule_difference=lambda a, b: None)
+    assert verdict["understood"] is True and verdict["misread"] is False
+    # a goal that is written is still compared: another impossible meaning is a misreading
+    task["goal"] = {"state": {"sofa": ["clean"]}}
+    verdict = judge(task, {"goal": {"state": {"crocs": ["clean"]}}}, "refused", REFUSED_AS_IMPOSSIBLE,
+                    goal_difference=differs, rule_difference=lambda a, b: None)
+    assert verdict["misread"] is True

@@ -478,16 +478,20 @@ _JOINED = frozenset({"and", "but", "because", "cos", "coz", "cause", "as", "sinc
 
 def _opens_statement(words: list[str], k: int) -> bool:
     """Whether a statement may open at ``k``: a :data:`STATEMENT_OPENERS` word, or a noun said as
-    its subject ("... out lads are relaying concrete"): a word of no function, followed by a form
-    of "be", after a word that opens no noun phrase; or a determiner before such a noun ("the lads
-    are ...")."""
+    its subject ("... out lads are relaying concrete", "... would ya doreen had a fit"): a word of
+    no function, followed by a form of "be" or a verb in the past tense, after a word that opens no
+    noun phrase; or a determiner before such a noun ("the lads are ...")."""
     def subject(j: int) -> bool:   # a noun of no function, then a form of "be"
         return j + 1 < len(words) and words[j + 1] in ("are", "is", "were", "was") and words[j].isalpha() \
             and words[j] not in FUNCTION_WORDS and not near_operative(words[j])
 
+    def reporting(j: int) -> bool:   # a noun or a name of no function, then a verb in the past tense
+        return j + 1 < len(words) and words[j].isalpha() and words[j] not in FUNCTION_WORDS \
+            and not near_operative(words[j]) and (_past(words[j + 1]) or words[j + 1] in ("had", "has"))
+
     if words[k] in STATEMENT_OPENERS:
         return True
-    if subject(k):
+    if subject(k) or reporting(k):   # "... would ya doreen had a fit", "... the truck came late"
         return words[k - 1] not in DETERMINERS
     return words[k] in ("the", "my", "our", "his", "her", "their") and subject(k + 1)
 
@@ -520,7 +524,11 @@ OPENERS = frozenset({("quick", "one"), ("right", "then"), ("ok", "then"), ("okay
 #: their "all" and "it" point at what was said, no quantity or thing
 CLOSINGS = frozenset({(*that, *rest, *later) for that in (("thats",), ("that", "is"), ("that", "s"))
                       for rest in (("all",), ("it",), ("everything",))
-                      for later in ((), ("for", "now"), ("for", "today"), ("for", "tonight"), ("then",))})
+                      for later in ((), ("for", "now"), ("for", "today"), ("for", "tonight"), ("then",))}) | {
+    # how things are, said in passing ("on the bus now, all grand", "... . sound"): "all" is everything
+    # being fine, no quantity; Irish and British "grand" and "sound" are fine and thanks
+    ("all", "good"), ("all", "grand"), ("all", "fine"), ("its", "all", "good"), ("all", "good", "here"),
+    ("grand",), ("sound",), ("grand", "job"), ("sound", "job"), ("nice", "one"), ("legend",)}
 
 
 #: whole clauses that only urge the order said before them ("..., sort it out", "get it done"):
@@ -637,6 +645,8 @@ def content_free(words: Iterable[str], content: Callable[[str], bool],
     ws = [w for w in words if w]
     if not ws:
         return True
+    if tuple(ws) in CLOSINGS and not any(content(w) for w in ws):
+        return True   # "..., all grand", "... . sound": said in passing, no one addressed
     name = addressee(ws)
     if name is not None:
         return robot(name)   # "Hornet, ...": set aside only when it names a robot of the world

@@ -687,7 +687,9 @@ _TYPED = ((r"\bu\b", "you"),
           # ("at like four", "in like ten minutes")
           (r"\bem\b", "them"), (r"\b(at|in|for|about|around|by)\s+like\b", r"\1"),
           # "would ya", "can ya" (you, after a verb that asks); "outa", "outta" (out of)
-          (r"\b(would|could|will|can|wont|do|did)\s+ya\b", r"\1 you"), (r"\bout(?:t?a)\b", "out of"))
+          (r"\b(would|could|will|can|wont|do|did)\s+ya\b", r"\1 you"), (r"\bout(?:t?a)\b", "out of"),
+          # texting "b4" (before); Irish and Scots "ye" (you, said to more than one: "can ye wash it")
+          (r"\bb4\b", "before"), (r"\bye\b", "you"))
 
 
 def normalize(text: str) -> str:

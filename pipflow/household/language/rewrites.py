@@ -411,3 +411,35 @@ def closed_again(words: list[str], notes: list[str]) -> list[str]:
                 return closed_again(words[:start] + words[end:], notes)
     return words
 
+
+
+#: what says "that again, for another thing" ("same for the saucepan", "do the same with the bowl")
+_SAME = (("same",), ("the", "same"), ("do", "the", "same"), ("same", "again"), ("same", "goes"),
+         ("the", "same", "goes"), ("ditto",))
+#: the marks and words a clause of its own may open after
+_SAME_AFTER = {".", ",", ";", "!", "?"}
+
+
+def same_for(words: list[str], notes: list[str]) -> list[str]:
+    """ "give the pan a scrub. same for the saucepan": the clause before, again, for the thing
+    named, as "..., and the saucepan too" says it. Only a clause of its own (after a mark, "and" or
+    "then" allowed before it) that is nothing but the "same" words, "for" / "with" and the thing,
+    after a clause: "the same for the plates, only into the press" says more, and stays unread."""
+    out: list[str] = []
+    k = 0
+    while k < len(words):
+        start = k + (1 if k < len(words) and words[k] in ("and", "then") else 0)
+        same = next((s for s in sorted(_SAME, key=len, reverse=True) if tuple(words[start:start + len(s)]) == s), None)
+        opens = k > 0 and words[k - 1] in _SAME_AFTER and any(w not in PUNCT for w in out)
+        if same is not None and opens and start + len(same) < len(words) and words[start + len(same)] in ("for", "with"):
+            thing = start + len(same) + 1
+            end = next((j for j in range(thing, len(words)) if words[j] in PUNCT), len(words))
+            if end > thing and (end == len(words) or words[end] in (".", "!", ";")):
+                notes.append(f"'{' '.join(words[k:end])}': the clause before, again, for {' '.join(words[thing:end])}")
+                out = out[:-1] + [","] if out[-1] in _SAME_AFTER else out
+                out += ["and"] + words[thing:end] + ["too"]
+                k = end
+                continue
+        out.append(words[k])
+        k += 1
+    return out

@@ -11,8 +11,9 @@ from pipflow.household.language.lexicon import DURATION_UNITS, FILLER_TYPO_TARGE
 from pipflow.household.language.names import home_words, per_index, world_phrases
 from pipflow.household.language.restated import leading_subject, restates_location
 from pipflow.household.language.typos import typo_of, vocabulary
-from pipflow.language.asides import (BOUNDS, EXCLUSIVITY, FUNCTION_WORDS, NEGATION, QUANTITIES, SELECTION, clauses,
-                                     content_free, signature)
+from pipflow.language.asides import (BOUNDS, EXCLUSIVITY, FUNCTION_WORDS, NEGATION, QUANTITIES, SELECTION, Clause,
+                                     clauses, content_free, signature, trailing_adjunct, trailing_thanks,
+                                     unmarked_statement)
 from pipflow.language.english import common_word
 from pipflow.language.numbers import read_number, reads_as_count
 
@@ -241,6 +242,39 @@ def _home_vocabulary(index: dict) -> tuple[frozenset[str], frozenset[str]]:
     return world_words, frozenset(w for w in vocabulary(index) if w in world_words)
 
 
+def _names(world: dict) -> Callable[[str], bool]:
+    """Whether a word names something of the home (a word of a name, or a misspelling of one) or
+    is a number: what a statement or an adjunct of talk may never hold."""
+    index = world_phrases(world)
+    world_words, vocab = _home_vocabulary(index)
+    home = home_words(index)
+    return lambda w: w in world_words or w.isdigit() or reads_as_count(w) or _misspelt(w, vocab, home)
+
+
+def run_on_talk(parts: list[Clause], kept: list[Clause], content: Callable[[str], bool],
+                names: Callable[[str], bool]) -> list[Clause]:
+    """Talk said at the end of a clause that carries an order, without a comma between, as people
+    dictating do ("hang it in the closet would ya doreen had a fit", "put the bread away before the
+    cat gets at it"): a thanks or request tag closing the last clause, a statement run on
+    (:func:`pipflow.language.asides.unmarked_statement`: no name, number or operative word in it),
+    then an adjunct of time, purpose or reason that names nothing of the home
+    (:func:`pipflow.language.asides.trailing_adjunct`). The same tests as the warehouse's, on the
+    clauses not already set aside (``kept``)."""
+    out: list[Clause] = []
+    last = kept[-1] if kept else None
+    for c in kept:
+        words = list(c.words)
+        while True:   # a thanks may close the order before a statement: "... would ya doreen had a fit"
+            n = (trailing_thanks(words, names) if c is last else 0) or unmarked_statement(words, names) \
+                or trailing_adjunct(words, content, names)
+            if not n:
+                break
+            end = c.start + len(words)
+            out.append(Clause(end - n, end, tuple(words[-n:])))
+            words = words[:-n]
+    return out
+
+
 def _remark(world: dict, content: Callable[[str], bool]) -> Callable[[tuple[str, ...]], bool]:
     """The test of a remark: a clause about the speaker or other people ("my granddaughter is
     coming for lunch after service", "Pastor Jones is coming by at 4"), talk though it has words of
@@ -322,6 +356,8 @@ def without_asides(command: str, world: dict) -> Trimmed | None:
     known = [(c, restates_location(c.words, [b.words for b in parts[:k]], world)) for k, c in enumerate(parts)
              if k and c not in free and c not in own]
     known = [(c, what) for c, what in known if what] + topic
+    taken = set(free) | set(own) | {c for c, _ in known}
+    free += run_on_talk(parts, [c for c in parts if c not in taken], content, _names(world))
     if not free and not own and not known:
         return None
     drop = {k for c in free + own + [c for c, _ in known] for k in range(c.start, c.end)}

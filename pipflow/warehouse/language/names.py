@@ -18,7 +18,7 @@ from typing import Callable, Collection
 from pipflow.errors import TranslationError
 from pipflow.language.english import common_word
 from pipflow.language.numbers import NUMBER_WORDS, read_number, word_value
-from pipflow.language.spelling import (distance, normalize, other_spellings, plural_forms, sounded, split_digits,
+from pipflow.language.spelling import (Slips, distance, normalize, other_spellings, plural_forms, sounded, split_digits,
                                       tolerance, variants)
 
 #: the possessive "'s" as the lexer marks it ("rack A's" -> "rack A zzposs")
@@ -177,6 +177,56 @@ def _starts(names: list["_Name"], by_name: dict[str, "_Name"], alone: Callable[[
                     starts.setdefault(w[:size], set()).add(n.name)
     return {form: by_name[next(iter(owners))] for form, owners in starts.items()
             if len(owners) == 1 and alone(form) and form not in words_of_names}
+
+
+class _Shortenings:
+    """A name's word shortened the way people shorten names on a shop floor: the start of a word
+    (:func:`_starts`: "mezz" of mezzanine), or its first letter and then some of its other letters
+    in order ("inb" of inbound, "shz" of shiraz, "lgr" of lager).
+
+    Read as that name only where nothing else reads the word, and only when it is such a
+    shortening of one word of exactly one place or product, has three letters or more, is two or
+    more short of that word, and is no common English word, no word of the grammar and no whole
+    word of a name: "car" is never cardboard, and "shr" names neither shiraz nor sherry. Nor is it
+    one slip from a word the reader knows (``known``: the grammar's words, numbers;
+    :func:`pipflow.language.spelling.slip`): "thre" is a misspelt "three", never theatre_cart. Checked when a word reaches it, and remembered."""
+
+    def __init__(self, names: list["_Name"], alone: Callable[[str], bool], words_of_names: Collection[str],
+                 known: Collection[str], prefixes: dict[str, "_Name"]):
+        self._words = [(w, n) for n in names if n.kind != "robot"
+                       for w in re.split(r"[-_\s]+", n.name.lower()) if w.isalpha() and len(w) >= 5]
+        self._alone = alone
+        self._taken = words_of_names
+        self._known = known
+        self._prefixes = prefixes   # the start of a word (:func:`_starts`), read first
+        self._slips: Slips | None = None   # of the known words, made when first needed
+        self._found: dict[str, _Name | None] = {}
+
+    def __call__(self, form: str) -> "_Name | None":
+        if form not in self._found:
+            self._found[form] = self._of(form)
+        return self._found[form]
+
+    def _of(self, form: str) -> "_Name | None":
+        if len(form) < 3 or not form.isalpha():
+            return None
+        if self._slips is None:
+            self._slips = Slips(w for w in self._known if w.isalpha())
+        if self._slips.of(form):
+            return None
+        if form in self._prefixes:
+            return self._prefixes[form]
+        if form in self._taken or not self._alone(form) or common_word(form):
+            return None
+        owners = {n.name: n for w, n in self._words
+                  if w[0] == form[0] and len(form) <= len(w) - 2 and _in_order(form[1:], w[1:])}
+        return next(iter(owners.values())) if len(owners) == 1 else None
+
+
+def _in_order(letters: str, word: str) -> bool:
+    """Whether the letters occur in the word in this order (not necessarily together)."""
+    rest = iter(word)
+    return all(letter in rest for letter in letters)
 
 
 def _word_parts(names: list["_Name"], by_name: dict[str, "_Name"], alone: Callable[[str], bool],
@@ -368,7 +418,8 @@ class NameIndex:
                     and not any(word in KIND_WORDS[k] or word in self.stems[k] for k in KINDS))
         owners, self.parts, self.shared_parts, self.loose_parts = _word_parts(self.names, by_name, alone, english)
 
-        self.prefixes = _starts(self.names, by_name, alone, owners)
+        self.shortened = _Shortenings(self.names, alone, owners, self.reserved | STOPWORDS,
+                                      _starts(self.names, by_name, alone, owners))
         self.contents = _contents(self.names)
         self.verb_places = _verb_places(self.names, self.reserved)
         self.verb_places.update({w: n for w, n in spelt_as_verbs.items()
@@ -698,9 +749,9 @@ class NameIndex:
             return None
         alpha, digits = split_digits(norm)
         found = self.lookup(alpha, digits, raw[i])
-        if found is None and norm in self.prefixes:
-            short = self.prefixes[norm]
-            found = Tok("name", raw[i], short.name, short.kind)  # "mezz" for mezzanine
+        short = self.shortened(norm) if found is None else None
+        if short is not None:
+            found = Tok("name", raw[i], short.name, short.kind)  # "mezz" for mezzanine, "shz" for shiraz
         after = raw[i + 1].lower().replace("'", "").replace("’", "") if i + 1 < len(raw) else ""
         where = i > 0 and raw[i - 1].lower() in PLACE_PREPOSITIONS and (
             not after or not after[0].isalnum() or after in AFTER_A_PLACE)

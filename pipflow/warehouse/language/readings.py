@@ -125,9 +125,10 @@ def one_meaning(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict
         (_, a, _), (_, b, _) = meant[0], next(x for x in meant if x[2] != meant[0][2])
         wa = "; ".join(s["words"] for s in a.statements + a.rules)
         wb = "; ".join(s["words"] for s in b.statements + b.rules)
+        which = f"'{wa}' or '{wb}'" if wa != wb else f"'{wa}' says two things"  # the candidates show what
         raise Choice("reading", tuple(range(min(len(distinct), MAX_CANDIDATES))),
                       f"'{sentence}' can be read in two ways that ask for different things "
-                      f"('{wa}' or '{wb}'); nothing is guessed: say it another way")
+                      f"({which}); nothing is guessed: say it another way")
     return min(meant or readings, key=lambda x: x[0])[1]
 
 def meaning_of(order: dict, world: dict) -> str | None:
