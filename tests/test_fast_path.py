@@ -247,6 +247,22 @@ def test_a_damaged_cache_file_is_rebuilt(grammar_cache, monkeypatch, damage):
     assert not list(grammar_cache.glob(".tmp-*"))
 
 
+def test_a_parser_is_kept_out_of_the_garbage_collectors_sweeps(grammar_cache):
+    """A parser lives as long as the process: its objects are frozen (``gc.freeze``), so the
+    collections that reading commands sets off do not walk them again and again."""
+    import gc
+
+    from pipflow.language import earley
+
+    gc.unfreeze()
+    try:
+        parser = earley.earley_parser('start: "a" b\nb: "b" | "c"\n')
+        assert gc.get_freeze_count() > 0
+        assert parser.parse("ab")   # a frozen parser reads as ever
+    finally:
+        gc.unfreeze()
+
+
 def test_another_grammar_or_option_is_another_entry(grammar_cache):
     from lark import Token
 

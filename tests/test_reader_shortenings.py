@@ -93,3 +93,27 @@ def test_a_count_taken_back_after_two_counts_is_refused() -> None:
 ])
 def test_make_it_with_more_after_the_count_is_an_order(command: str, plain: str) -> None:
     assert goal(command) == goal(plain)
+
+
+def test_a_prefix_that_is_a_slip_of_a_verb_is_still_the_name() -> None:
+    """ "disp" is "dips" with two letters swapped, a verb of the grammar, but no word the reader
+    ever takes for a name: where a place is, it is the dispatch (it was refused)."""
+    world = {**TEA, "shelves": {("dispatch" if p == "outbound" else p): s for p, s in TEA["shelves"].items()}}
+    world["stock"] = {("dispatch" if p == "outbound" else p): row for p, row in TEA["stock"].items()}
+    assert understand("move 2 darjeeling from receiving to disp", world)["goal"] == \
+        understand("move 2 darjeeling from receiving to dispatch", world)["goal"]
+
+
+def test_a_common_word_is_never_a_name_it_only_sounds_like() -> None:
+    """ "cheers" closing a message was read as a misspelt "cider" (alike by sound; both English
+    words), and the command refused for want of a place."""
+    world = {**TEA, "products": {("cider" if p == "chamomile" else p): v for p, v in TEA["products"].items()}}
+    world["stock"] = {p: {("cider" if k == "chamomile" else k): n for k, n in row.items()} for p, row in TEA["stock"].items()}
+    assert understand("move 2 cinnamon from receiving to blending. cheers mate", world)["goal"] == \
+        understand("move 2 cinnamon from receiving to blending", world)["goal"]
+
+
+def test_about_a_time_of_day_is_that_time_never_a_count() -> None:
+    assert goal("blending shld have 9 chamomile by 7ish pls") == goal("blending should have 9 chamomile")
+    with pytest.raises(TranslationError):   # "by 7ish" says when, so the cut says no amount
+        understand("cut the chamomile on blending by 7ish", TEA)

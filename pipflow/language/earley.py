@@ -124,6 +124,10 @@ def earley_parser(grammar: str, **options: Any) -> Lark:
                 if folder:
                     _store(folder, key, parser)
             _MEMORY[key] = parser
+            # the parser is ~10^5 objects that live as long as the process: out of the garbage
+            # collector's sweeps, which otherwise walk all of them again and again while commands
+            # are read (about a tenth of the reading time of the household sets)
+            gc.freeze()
         return parser
 
 

@@ -1119,6 +1119,10 @@ class Lexicon:
         # the 24-hour clock written the French way ("at 15h", "3h30") is one too
         text = re.sub(r"\b(\d{1,2})(am|pm|oclock)\b", r"\1 \2", self._joined(check_text(command)), flags=re.IGNORECASE)
         text = re.sub(r"\b([01]?\d|2[0-4])h(?:[0-5]\d)?\b", r"\1 oclock", text, flags=re.IGNORECASE)
+        # "by 7ish": about a time of day, after a word that says when; read as "by 7 o'clock", never as
+        # a count ("cut the cider by 7ish" is no cut by 7)
+        text = re.sub(r"\b(by|at|around|before|after|until|till)\s+(\d{1,2})ish\b", r"\1 \2 oclock", text,
+                      flags=re.IGNORECASE)
         toks = noun_adjuncts(unmarked_lists(numbered_siblings(recognize(text, self.index), self._numbered_places)))
         fixed = []
         for t in toks:

@@ -188,8 +188,9 @@ class _Shortenings:
     shortening of one word of exactly one place or product, has three letters or more, is two or
     more short of that word, and is no common English word, no word of the grammar and no whole
     word of a name: "car" is never cardboard, and "shr" names neither shiraz nor sherry. Nor is it
-    one slip from a word the reader knows (``known``: the grammar's words, numbers;
-    :func:`pipflow.language.spelling.slip`): "thre" is a misspelt "three", never theatre_cart. Checked when a word reaches it, and remembered."""
+    one slip from a word the reader never takes for a name (``known``: its grammar and filler
+    words, numbers; :func:`pipflow.language.spelling.slip`): "thre" is a misspelt "three", never
+    theatre_cart ("disp" may still be dispatch, though "dips" is a verb the grammar knows). Checked when a word reaches it, and remembered."""
 
     def __init__(self, names: list["_Name"], alone: Callable[[str], bool], words_of_names: Collection[str],
                  known: Collection[str], prefixes: dict[str, "_Name"]):
@@ -418,7 +419,7 @@ class NameIndex:
                     and not any(word in KIND_WORDS[k] or word in self.stems[k] for k in KINDS))
         owners, self.parts, self.shared_parts, self.loose_parts = _word_parts(self.names, by_name, alone, english)
 
-        self.shortened = _Shortenings(self.names, alone, owners, self.reserved | STOPWORDS,
+        self.shortened = _Shortenings(self.names, alone, owners, STOPWORDS,
                                       _starts(self.names, by_name, alone, owners))
         self.contents = _contents(self.names)
         self.verb_places = _verb_places(self.names, self.reserved)
@@ -504,8 +505,10 @@ class NameIndex:
             if scored and common_word(alpha.lower()):
                 # a common English word as written ("jacks", "forks") is no slip of a name that is
                 # no English word ("jacu"): only of one that is, spelt another way ("dispatch" of
-                # despatch)
-                scored = [(d, n) for d, n in scored if d == 0 or common_word(n.alpha.lower())]
+                # despatch: one letter apart), never of another word that sounds alike ("cheers"
+                # is no cider)
+                scored = [(d, n) for d, n in scored if d == 0 or (
+                    common_word(n.alpha.lower()) and min(distance(v, n.alpha) for v in variants(alpha)) <= 1)]
             if scored:
                 best = min(d for d, _ in scored)
                 top = [n for d, n in scored if d == best]
