@@ -702,3 +702,8 @@ def leading_reason(parts: list[Clause], free: list[Clause], counts: Callable[[st
         return []
     so = parts[1]
     return [parts[0], Clause(so.start, so.start + 1, ("so",))]
+
+
+#: words the reader knows as talk (greetings, thanks, closers, apologies, interjections): said as
+#: written, never a misspelt name of the world ("cheers" is no cider)
+TALK = frozenset(GREETINGS | THANKS | CLOSERS | PLEASANTRIES | INTERJECTIONS)

@@ -18,6 +18,8 @@ from pipflow.language.spelling import distance
 
 #: an asterisk opening a word, at the start of the command, of a line or of a sentence, or after a space
 _STAR = re.compile(r"(?:^|(?<=[\s.!?]))([*\u2217])([A-Za-z0-9][\w'-]*)")
+#: where a sentence ends
+_SENTENCE_END = re.compile(r"[.!?;]+")
 #: the mark a count corrected in words is written with (:func:`said_as_star`), so the note quotes the words
 _SAID = "\u2217"
 _WORD = re.compile(r"[A-Za-z0-9][\w'-]*")
@@ -63,6 +65,10 @@ def star_corrections(text: str) -> tuple[str, list[str]]:
         words = list(_WORD.finditer(before))
         if is_number(right.lower()):
             targets = [w for w in words if is_number(w.group(0).lower())]
+            if m.group(1) == _SAID and len(targets) > 1:
+                # said, it takes back the count just said: the one of the sentence before, if one
+                last = max((s.end() for s in _SENTENCE_END.finditer(before.rstrip(" .!?;,"))), default=0)
+                targets = [w for w in targets if w.start() >= last]
         else:
             near = [(distance(w.group(0).lower(), right.lower()), w) for w in words
                     if w.group(0).lower() != right.lower() and not is_number(w.group(0).lower())]

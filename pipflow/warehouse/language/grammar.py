@@ -412,6 +412,8 @@ goal: there_be items loc                                  -> g_set
     | ihead loc modal? ("come" | "go" | "get") ("down" | "up") "to" NUM -> g_item_first
     // said without a verb: "belts on despatch down to 1" ("up to N" alone is a bound, so not here)
     | (pitem_plain | ihead loc) "down" "to" NUM              -> g_item_first
+    // "cider on pick face to 6", "pick face cider to 6": the count it should come to, without a verb
+    | (pitem_plain | ihead loc) "to" NUM                     -> g_item_first
     | ("leave" | "keep") its ihead (lsep ihead)* as_is?        -> g_keep_its_elided
     | ("make" | "set" | "bring" | "get" | "have") posplace ihead ("count" | "number" | "level" | "stock" | "total")? ("equal" "to" | "to" | "same" "as" | "match" | "equal") posplace ihead? -> g_equal_poss
     | putv "as" "many" ihead loc "as" ("there" ("are" | "is") | "sit" | "are") ("on" | "in" | "at") PLACE ((lsep) PLACE)* together? -> g_as_many_there

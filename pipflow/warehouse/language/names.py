@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from typing import Callable, Collection
 
 from pipflow.errors import TranslationError
+from pipflow.language.asides import TALK
 from pipflow.language.english import common_word
 from pipflow.language.numbers import NUMBER_WORDS, read_number, word_value
 from pipflow.language.spelling import (Slips, distance, normalize, other_spellings, plural_forms, sounded, split_digits,
@@ -492,7 +493,8 @@ class NameIndex:
             # "racks" is the kind word, not a misspelt rack_a (nor a tie of all racks); "row" of
             # row-a and row-b is the head noun they share (a group: "every row"), not a tie
             fuzzy = False
-        if fuzzy and alpha not in STOPWORDS and alpha not in self.reserved and alpha not in self.respelt and alpha:
+        if fuzzy and alpha not in STOPWORDS and alpha not in self.reserved and alpha not in self.respelt \
+                and alpha not in TALK and alpha:   # "cheers" is talk, never a misspelt cider
             scored = []
             for n in self.names:
                 if n.digits != digits:
@@ -505,10 +507,8 @@ class NameIndex:
             if scored and common_word(alpha.lower()):
                 # a common English word as written ("jacks", "forks") is no slip of a name that is
                 # no English word ("jacu"): only of one that is, spelt another way ("dispatch" of
-                # despatch: one letter apart), never of another word that sounds alike ("cheers"
-                # is no cider)
-                scored = [(d, n) for d, n in scored if d == 0 or (
-                    common_word(n.alpha.lower()) and min(distance(v, n.alpha) for v in variants(alpha)) <= 1)]
+                # despatch, "ballots" of ballast)
+                scored = [(d, n) for d, n in scored if d == 0 or common_word(n.alpha.lower())]
             if scored:
                 best = min(d for d, _ in scored)
                 top = [n for d, n in scored if d == best]

@@ -1,8 +1,8 @@
-"""Issue 23, from pair NN's first measurement (a beverage warehouse supervisor texting from his
-phone): names shortened the way staff say them on the floor ("inb" for inbound, "shz" for
-shiraz) read as the one name they can shorten, and a count taken back in words ("8 lager.. yeah
-nah make it 9") read as the texted "*9" it is. Through the real warehouse reader, in a tea
-warehouse of our own."""
+"""Issue 23, from pair NN's first measurement (a beverage warehouse supervisor in Adelaide texting
+from his phone): names shortened the way staff say them on the floor ("inb" for inbound, "shz"
+for shiraz) read as the one name they can shorten; a count taken back in words ("8 lager.. yeah
+nah make it 9") read as the texted "*9" it is; "by 7ish"; "cheers" never a misspelt name; "X on
+P to N" without a verb. Through the real warehouse reader, in a tea warehouse of our own."""
 from __future__ import annotations
 
 import pytest
@@ -104,9 +104,9 @@ def test_a_prefix_that_is_a_slip_of_a_verb_is_still_the_name() -> None:
         understand("move 2 darjeeling from receiving to dispatch", world)["goal"]
 
 
-def test_a_common_word_is_never_a_name_it_only_sounds_like() -> None:
-    """ "cheers" closing a message was read as a misspelt "cider" (alike by sound; both English
-    words), and the command refused for want of a place."""
+def test_a_word_of_talk_is_never_a_misspelt_name() -> None:
+    """ "cheers" closing a message was read as a misspelt "cider" ("cheer" is two letters from
+    it, and both are English words), and the command refused for want of a place."""
     world = {**TEA, "products": {("cider" if p == "chamomile" else p): v for p, v in TEA["products"].items()}}
     world["stock"] = {p: {("cider" if k == "chamomile" else k): n for k, n in row.items()} for p, row in TEA["stock"].items()}
     assert understand("move 2 cinnamon from receiving to blending. cheers mate", world)["goal"] == \
@@ -117,3 +117,22 @@ def test_about_a_time_of_day_is_that_time_never_a_count() -> None:
     assert goal("blending shld have 9 chamomile by 7ish pls") == goal("blending should have 9 chamomile")
     with pytest.raises(TranslationError):   # "by 7ish" says when, so the cut says no amount
         understand("cut the chamomile on blending by 7ish", TEA)
+
+
+def test_a_count_taken_back_in_words_is_the_one_of_the_sentence_just_said() -> None:
+    """Said, "make that 1" takes back the count just said, though earlier sentences hold others
+    (typed, "*1" must still be clear from all of them)."""
+    said = "blending to have 8 chamomile. take 2 darjeeling off blending.. nah make that 1"
+    assert goal(said) == goal("blending to have 8 chamomile. take 1 darjeeling off blending")
+    with pytest.raises(TranslationError, match="corrects"):
+        understand("blending to have 8 chamomile. take 2 darjeeling off blending. *1", TEA)
+
+
+@pytest.mark.parametrize("said, plain", [
+    ("chamomile on blending to 9", "get chamomile on blending to 9"),
+    ("blending chamomile to 9", "get chamomile on blending to 9"),
+    ("peppermint on outbound to 1 and chamomile on blending to 9",
+     "get peppermint on outbound to 1 and get chamomile on blending to 9"),
+])
+def test_a_thing_on_a_place_to_a_count_without_a_verb(said: str, plain: str) -> None:
+    assert goal(said) == goal(plain)
