@@ -52,7 +52,7 @@ def test_the_shortening_is_said_in_the_echo_as_the_name() -> None:
 
 @pytest.mark.parametrize("command", [
     "move 2 cao from receiving to blending",   # chamomile or cinnamon: both have c, a, o in order
-    "move 2 cam from receiving to blending",   # a word of English (a camera), never a shortening
+    "move 2 den from receiving to blending",   # d, e, n of darjeeling, but a word of English
 ])
 def test_a_shortening_of_two_names_or_a_word_of_english_is_refused(command: str) -> None:
     with pytest.raises(TranslationError):

@@ -11,6 +11,7 @@ The spelling rules any domain's reader shares (normal form, edit distance, plura
 """
 from __future__ import annotations
 
+import functools
 import re
 from dataclasses import dataclass
 from typing import Callable, Collection
@@ -189,19 +190,17 @@ class _Shortenings:
     shortening of one word of exactly one place or product, has three letters or more, is two or
     more short of that word, and is no common English word, no word of the grammar and no whole
     word of a name: "car" is never cardboard, and "shr" names neither shiraz nor sherry. Nor is it
-    one slip from a word the reader never takes for a name (``known``: its grammar and filler
-    words, numbers; :func:`pipflow.language.spelling.slip`): "thre" is a misspelt "three", never
+    one slip from a word the reader never takes for a name (:data:`STOPWORDS`: its grammar and
+    filler words, numbers; :func:`pipflow.language.spelling.slip`): "thre" is a misspelt "three", never
     theatre_cart ("disp" may still be dispatch, though "dips" is a verb the grammar knows). Checked when a word reaches it, and remembered."""
 
     def __init__(self, names: list["_Name"], alone: Callable[[str], bool], words_of_names: Collection[str],
-                 known: Collection[str], prefixes: dict[str, "_Name"]):
+                 prefixes: dict[str, "_Name"]):
         self._words = [(w, n) for n in names if n.kind != "robot"
                        for w in re.split(r"[-_\s]+", n.name.lower()) if w.isalpha() and len(w) >= 5]
         self._alone = alone
         self._taken = words_of_names
-        self._known = known
         self._prefixes = prefixes   # the start of a word (:func:`_starts`), read first
-        self._slips: Slips | None = None   # of the known words, made when first needed
         self._found: dict[str, _Name | None] = {}
 
     def __call__(self, form: str) -> "_Name | None":
@@ -212,9 +211,7 @@ class _Shortenings:
     def _of(self, form: str) -> "_Name | None":
         if len(form) < 3 or not form.isalpha():
             return None
-        if self._slips is None:
-            self._slips = Slips(w for w in self._known if w.isalpha())
-        if self._slips.of(form):
+        if _stopword_slips().of(form):
             return None
         if form in self._prefixes:
             return self._prefixes[form]
@@ -223,6 +220,12 @@ class _Shortenings:
         owners = {n.name: n for w, n in self._words
                   if w[0] == form[0] and len(form) <= len(w) - 2 and _in_order(form[1:], w[1:])}
         return next(iter(owners.values())) if len(owners) == 1 else None
+
+
+@functools.cache
+def _stopword_slips() -> Slips:
+    """The slips of :data:`STOPWORDS`, made once per process (a lookup table of ~10^5 entries)."""
+    return Slips(w for w in STOPWORDS if w.isalpha())
 
 
 def _in_order(letters: str, word: str) -> bool:
@@ -420,8 +423,7 @@ class NameIndex:
                     and not any(word in KIND_WORDS[k] or word in self.stems[k] for k in KINDS))
         owners, self.parts, self.shared_parts, self.loose_parts = _word_parts(self.names, by_name, alone, english)
 
-        self.shortened = _Shortenings(self.names, alone, owners, STOPWORDS,
-                                      _starts(self.names, by_name, alone, owners))
+        self.shortened = _Shortenings(self.names, alone, owners, _starts(self.names, by_name, alone, owners))
         self.contents = _contents(self.names)
         self.verb_places = _verb_places(self.names, self.reserved)
         self.verb_places.update({w: n for w, n in spelt_as_verbs.items()
