@@ -413,10 +413,11 @@ def closed_again(words: list[str], notes: list[str]) -> list[str]:
 
 
 
-#: what says "that again, for another thing" ("same for the saucepan", "do the same with the bowl")
-_SAME = (("same",), ("the", "same"), ("do", "the", "same"), ("same", "again"), ("same", "goes"),
-         ("the", "same", "goes"), ("ditto",))
-#: the marks and words a clause of its own may open after
+#: what says "that again, for another thing" ("same for the saucepan", "do the same with the bowl"),
+#: longest first
+_SAME = sorted((("same",), ("the", "same"), ("do", "the", "same"), ("same", "again"), ("same", "goes"),
+                ("the", "same", "goes"), ("ditto",)), key=len, reverse=True)
+#: the marks a clause of its own may open after
 _SAME_AFTER = {".", ",", ";", "!", "?"}
 
 
@@ -428,18 +429,28 @@ def same_for(words: list[str], notes: list[str]) -> list[str]:
     out: list[str] = []
     k = 0
     while k < len(words):
-        start = k + (1 if k < len(words) and words[k] in ("and", "then") else 0)
-        same = next((s for s in sorted(_SAME, key=len, reverse=True) if tuple(words[start:start + len(s)]) == s), None)
-        opens = k > 0 and words[k - 1] in _SAME_AFTER and any(w not in PUNCT for w in out)
-        if same is not None and opens and start + len(same) < len(words) and words[start + len(same)] in ("for", "with"):
-            thing = start + len(same) + 1
-            end = next((j for j in range(thing, len(words)) if words[j] in PUNCT), len(words))
-            if end > thing and (end == len(words) or words[end] in (".", "!", ";")):
-                notes.append(f"'{' '.join(words[k:end])}': the clause before, again, for {' '.join(words[thing:end])}")
-                out = out[:-1] + [","] if out[-1] in _SAME_AFTER else out
-                out += ["and"] + words[thing:end] + ["too"]
-                k = end
-                continue
+        after_a_clause = k > 0 and words[k - 1] in _SAME_AFTER and any(w not in PUNCT for w in out)
+        end = _same_for_at(words, k) if after_a_clause else None
+        if end is not None:
+            thing = words[end[0]:end[1]]
+            notes.append(f"'{' '.join(words[k:end[1]])}': the clause before, again, for {' '.join(thing)}")
+            out = out[:-1] + [","] + ["and"] + thing + ["too"]
+            k = end[1]
+            continue
         out.append(words[k])
         k += 1
     return out
+
+
+def _same_for_at(words: list[str], k: int) -> tuple[int, int] | None:
+    """Where the thing of a "same for X" clause opening at ``k`` starts and ends (the end of its
+    sentence), or None when no such clause opens there."""
+    start = k + (1 if words[k] in ("and", "then") else 0)
+    same = next((s for s in _SAME if tuple(words[start:start + len(s)]) == s), None)
+    if same is None or start + len(same) >= len(words) or words[start + len(same)] not in ("for", "with"):
+        return None
+    thing = start + len(same) + 1
+    end = next((j for j in range(thing, len(words)) if words[j] in PUNCT), len(words))
+    if end == thing or (end < len(words) and words[end] not in (".", "!", ";")):
+        return None
+    return thing, end

@@ -251,8 +251,7 @@ def _names(world: dict) -> Callable[[str], bool]:
     return lambda w: w in world_words or w.isdigit() or reads_as_count(w) or _misspelt(w, vocab, home)
 
 
-def run_on_talk(parts: list[Clause], kept: list[Clause], content: Callable[[str], bool],
-                names: Callable[[str], bool]) -> list[Clause]:
+def run_on_talk(kept: list[Clause], content: Callable[[str], bool], names: Callable[[str], bool]) -> list[Clause]:
     """Talk said at the end of a clause that carries an order, without a comma between, as people
     dictating do ("hang it in the closet would ya doreen had a fit", "put the bread away before the
     cat gets at it"): a thanks or request tag closing the last clause, a statement run on
@@ -357,7 +356,7 @@ def without_asides(command: str, world: dict) -> Trimmed | None:
              if k and c not in free and c not in own]
     known = [(c, what) for c, what in known if what] + topic
     taken = set(free) | set(own) | {c for c, _ in known}
-    free += run_on_talk(parts, [c for c in parts if c not in taken], content, _names(world))
+    free += run_on_talk([c for c in parts if c not in taken], content, _names(world))
     if not free and not own and not known:
         return None
     drop = {k for c in free + own + [c for c, _ in known] for k in range(c.start, c.end)}

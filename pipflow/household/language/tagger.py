@@ -109,8 +109,8 @@ def owners_as_the(command: str, world: dict, notes: list[str]) -> str:
 def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: list[str]) -> list[str]:
     """The command's words with its colloquial forms, constructions and particles read as the
     grammar's words (each rewrite notes what it read)."""
-    words = or_under_negation(measures(without_manner(same_for(colloquial(corrected(words_of(command), notes), notes), notes),
-                                                      notes), index, notes), notes)
+    words = same_for(colloquial(corrected(words_of(command), notes), notes), notes)
+    words = or_under_negation(measures(without_manner(words, notes), index, notes), notes)
     words = heat_purpose(caused(given(me_as_where_the_speaker_is(words, index, notes), notes), notes), notes)
     words = closed_again(wherever_they_belong(words, notes), notes)
     words = on_off_as_verbs(put_on_as_switch(cut_as_switch(words, world, index, notes), world, index, notes), world,

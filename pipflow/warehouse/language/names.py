@@ -191,8 +191,9 @@ class _Shortenings:
     more short of that word, and is no common English word, no word of the grammar and no whole
     word of a name: "car" is never cardboard, and "shr" names neither shiraz nor sherry. Nor is it
     one slip from a word the reader never takes for a name (:data:`STOPWORDS`: its grammar and
-    filler words, numbers; :func:`pipflow.language.spelling.slip`): "thre" is a misspelt "three", never
-    theatre_cart ("disp" may still be dispatch, though "dips" is a verb the grammar knows). Checked when a word reaches it, and remembered."""
+    filler words, numbers; :func:`pipflow.language.spelling.slip`): "thre" is a misspelt "three",
+    never a thresher ("disp" may still be dispatch, though "dips" is a verb the grammar knows).
+    Checked when a word reaches it, and remembered."""
 
     def __init__(self, names: list["_Name"], alone: Callable[[str], bool], words_of_names: Collection[str],
                  prefixes: dict[str, "_Name"]):
