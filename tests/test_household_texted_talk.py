@@ -55,3 +55,10 @@ def test_a_statement_run_on_after_a_request_tag_is_set_aside() -> None:
 def test_a_run_on_statement_with_content_is_not_set_aside(said: str) -> None:
     with pytest.raises(TranslationError):
         translate(said, STUDIO)
+
+
+def test_who_an_order_is_for_is_talk_but_a_purpose_with_a_verb_is_not() -> None:
+    assert studio_goal("put the juice on the coffee table for me n my boy") == \
+        studio_goal("put the juice on the coffee table")
+    with pytest.raises(TranslationError):   # "for washing" may ask for the washing
+        translate("put the teacup in the basin for washing", STUDIO)

@@ -17,58 +17,23 @@ from pipflow.language.numbers import is_number
 from pipflow.language.spelling import distance
 
 #: an asterisk opening a word, at the start of the command, of a line or of a sentence, or after a space
-_STAR = re.compile(r"(?:^|(?<=[\s.!?]))([*\u2217])([A-Za-z0-9][\w'-]*)")
-#: where a sentence ends
-_SENTENCE_END = re.compile(r"[.!?;]+")
-#: the mark a count corrected in words is written with (:func:`said_as_star`), so the note quotes the words
-_SAID = "\u2217"
+_STAR = re.compile(r"(?:^|(?<=[\s.!?]))\*([A-Za-z0-9][\w'-]*)")
 _WORD = re.compile(r"[A-Za-z0-9][\w'-]*")
 #: words that take a slip back, said with a correction said again ("sorry, 6 carboys")
 TAKE_BACK = frozenset({"sorry", "oops", "i", "mean", "meant", "my", "bad", "that", "is", "should", "be", "it", "s"})
 
 
-#: a count taken back in words ("... 8 lager. yeah nah, make it 9", "..., no make that 1"): a sentence
-#: after another (or a clause after a comma, with a word that takes the count back), that ends
-#: with the count ("Make it 3 pallets in the cold room" is an order)
-_MAKE_IT = re.compile(r"(?P<lead>[.!?;,])(?P<space>\s*)(?P<back>(?:(?:yeah\s+)?nah|no|nope|sorry|oops|actually"
-                      r"|wait|i\s+mean)[\s,]+)?make\s+(?:it|that)\s+(?P<count>[A-Za-z0-9]+)\b(?=\s*(?:[.!?;,]|$))",
-                      re.IGNORECASE)
-
-
-def said_as_star(text: str) -> tuple[str, list[str]]:
-    """A count corrected in words, written as the texted correction it is: "8 lager.. yeah nah make
-    it 9" is "8 lager.. *9", so the one count before it gives way (and two or more are refused,
-    as for "*9"). Only a number after "make it / that", and after a comma only with a word that
-    takes it back ("no", "nah", "sorry", "actually", "wait", "I mean"): "..., make it 9" alone
-    may be an order of its own. Also returns the words of each, in order, for the notes."""
-    words: list[str] = []
-
-    def star(m: re.Match) -> str:
-        if not is_number(m.group("count").lower()) or (m.group("lead") == "," and not m.group("back")):
-            return m.group(0)
-        words.append(" ".join(m.group(0).lstrip(".!?;,").split()))
-        return f"{m.group('lead')}{m.group('space') or ' '}{_SAID}{m.group('count')}"
-    return _MAKE_IT.sub(star, text), words
-
-
 def star_corrections(text: str) -> tuple[str, list[str]]:
     """``text`` with each "*word" correction made (the word it corrects replaced, the asterisk
-    word removed) and what was read so, one note each; a count corrected in words
-    (:func:`said_as_star`) too. Raises :class:`TranslationError` when it is not clear which word a
-    correction corrects."""
-    text, spoken = said_as_star(text)
+    word removed) and what was read so, one note each. Raises :class:`TranslationError` when it
+    is not clear which word a correction corrects."""
     notes: list[str] = []
     while (m := _STAR.search(text)) is not None:
-        right = m.group(2)
-        shown = spoken.pop(0) if m.group(1) == _SAID else f"*{right}"
+        right = m.group(1)
         before = text[:m.start()]
         words = list(_WORD.finditer(before))
         if is_number(right.lower()):
             targets = [w for w in words if is_number(w.group(0).lower())]
-            if m.group(1) == _SAID and len(targets) > 1:
-                # said, it takes back the count just said: the one of the sentence before, if one
-                last = max((s.end() for s in _SENTENCE_END.finditer(before.rstrip(" .!?;,"))), default=0)
-                targets = [w for w in targets if w.start() >= last]
         else:
             near = [(distance(w.group(0).lower(), right.lower()), w) for w in words
                     if w.group(0).lower() != right.lower() and not is_number(w.group(0).lower())]
@@ -77,11 +42,11 @@ def star_corrections(text: str) -> tuple[str, list[str]]:
             targets = [w for d, w in near if d == best <= limit]
         if len(targets) != 1:
             raise TranslationError(
-                f"cannot tell which word '{shown}' corrects"
+                f"cannot tell which word '*{right}' corrects"
                 + (f" ({', '.join(repr(w.group(0)) for w in targets)} are as near)" if targets else
                    " (no word before it is near it)") + ": say the command again with the word put right")
         wrong = targets[0]
-        notes.append(f"'{shown}': read '{wrong.group(0)}' as '{right}'")
+        notes.append(f"'*{right}': read '{wrong.group(0)}' as '{right}'")
         after = text[m.end():]
         line = re.match(r"[^\n]*", after).group(0)
         said = {w.lower() for w in _WORD.findall(before)} | {right.lower()}

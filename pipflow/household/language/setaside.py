@@ -256,22 +256,37 @@ def run_on_talk(kept: list[Clause], content: Callable[[str], bool], names: Calla
     dictating do ("hang it in the closet would ya doreen had a fit", "put the bread away before the
     cat gets at it"): a thanks or request tag closing the last clause, a statement run on
     (:func:`pipflow.language.asides.unmarked_statement`: no name, number or operative word in it),
-    then an adjunct of time, purpose or reason that names nothing of the home
-    (:func:`pipflow.language.asides.trailing_adjunct`). The same tests as the warehouse's, on the
-    clauses not already set aside (``kept``)."""
+    then an adjunct of time or reason that names nothing of the home
+    (:func:`pipflow.language.asides.trailing_adjunct`; a purpose said with a verb and "since" are
+    this reader's own: :func:`_adjunct`). The warehouse's tests, on the clauses not already set
+    aside (``kept``)."""
     out: list[Clause] = []
     last = kept[-1] if kept else None
     for c in kept:
         words = list(c.words)
         while True:   # a thanks may close the order before a statement: "... would ya doreen had a fit"
             n = (trailing_thanks(words, names) if c is last else 0) or unmarked_statement(words, names) \
-                or trailing_adjunct(words, content, names)
+                or _adjunct(words, content, names)
             if not n:
                 break
             end = c.start + len(words)
             out.append(Clause(end - n, end, tuple(words[-n:])))
             words = words[:-n]
     return out
+
+
+def _adjunct(words: list[str], content: Callable[[str], bool], names: Callable[[str], bool]) -> int:
+    """:func:`pipflow.language.asides.trailing_adjunct`, but never what this reader reads by rules
+    of its own: a purpose said with a verb ("for washing" may ask for the washing: :mod:`.rewrites`;
+    "for me and my boy" says who for, and is talk) and "since" (a time when something began: "since
+    the party" in an order is refused)."""
+    n = trailing_adjunct(words, content, names)
+    if not n:
+        return 0
+    opening, rest = words[-n], words[-n + 1:]
+    if opening == "since" or (opening == "for" and any(w.endswith("ing") and len(w) > 4 for w in rest[:2])):
+        return 0
+    return n
 
 
 def _remark(world: dict, content: Callable[[str], bool]) -> Callable[[tuple[str, ...]], bool]:

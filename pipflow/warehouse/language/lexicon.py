@@ -628,8 +628,10 @@ def lexicon_verbs(toks: list[Tok], keywords: dict[str, str]) -> list[Tok]:
     return _replace_phrases(toks, phrases, said_as)
 
 
-#: words that take back what was just said ("no wait, make that 3", "sorry, I meant 4")
-TAKE_BACK = {"no", "wait", "sorry", "oops", "actually", "hmm", "erm", "nope", "correction", "scratch", "that"}
+#: words that take back what was just said ("no wait, make that 3", "sorry, I meant 4", "yeah nah, make
+#: it 9": Australian "no")
+TAKE_BACK = {"no", "wait", "sorry", "oops", "actually", "hmm", "erm", "nope", "correction", "scratch", "that", "nah",
+             "yeah"}
 #: the words that then say the new count
 RESTATE = (("make", "that"), ("make", "it"), ("i", "mean"), ("i", "meant"), ("i", "meant", "to", "say"),
            ("or", "rather"), ("rather",))
@@ -681,17 +683,20 @@ def dropped_object(toks: list[Tok]) -> list[Tok]:
 
 def corrected_later(toks: list[Tok]) -> list[Tok]:
     """A count taken back at the end of its sentence ("Move 2 X from P to Q, no wait, make that 3";
-    "..., sorry, I meant 3"): the sentence's one count becomes the new one and the taking back is
-    no part of the order. Where the sentence has several counts, which one is taken back is not
-    said: the words stay, and the sentence is refused on them."""
+    "..., sorry, I meant 3"), or in a sentence of its own that says nothing else ("8 lager to
+    dispatch.. yeah nah make it 9"): the one count of the sentence taken back becomes the new one,
+    and the taking back is no part of the order. Where that sentence has several counts, which one
+    is taken back is not said: the words stay, and the command is refused on them."""
     ends = {".", ";", "!", "?"}
     out = list(toks)
     k = 0
     while k < len(out):
         t = out[k]
-        if not (t.kind == "punct" and t.value in (",", ":")):
+        if not (t.kind == "punct" and t.value in {",", ":"} | ends) or (t.value in ends and k + 1 < len(out)
+                                                                      and out[k + 1].kind == "punct"):
             k += 1
             continue
+        after_end = t.value in ends   # a sentence of its own: only with words that take back or restate
         j = k + 1
         took_back = False
         while j < len(out) and out[j].kind == "word" and out[j].value in TAKE_BACK:
@@ -715,6 +720,8 @@ def corrected_later(toks: list[Tok]) -> list[Tok]:
             k += 1
             continue
         start = k
+        while after_end and start > 0 and out[start - 1].kind == "punct" and out[start - 1].value in ends:
+            start -= 1   # "..": the sentence before both marks
         while start > 0 and not (out[start - 1].kind == "punct" and out[start - 1].value in ends):
             start -= 1
         counts = [m for m in range(start, k) if out[m].kind == "num"]
