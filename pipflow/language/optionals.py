@@ -1,10 +1,8 @@
-"""Optional symbols of a lark grammar as nullable rules: what makes Earley over a command grammar fast.
+"""Optional symbols of a lark grammar as nullable rules, for both domains' Earley parsers.
 
-Why: lark expands every ``x?`` into two alternatives of its production, so a production with
-five optional words becomes 32, and Earley carries every one of them at every word. Both
-domains' command grammars are written with many optional words; each parser is built from the
-grammar as :func:`nullable_optionals` rewrites it. The readings are the same (the rules it adds
-are inlined by lark); ``tests/test_optionals.py`` checks that on household sets.
+Why a module of its own: the warehouse's and the household's command grammars are both written
+with many optional words, and both parsers are built from the grammar as
+:func:`nullable_optionals` rewrites it (the same readings: ``tests/test_optionals.py``).
 """
 from __future__ import annotations
 

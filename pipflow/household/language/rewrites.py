@@ -412,7 +412,6 @@ def closed_again(words: list[str], notes: list[str]) -> list[str]:
     return words
 
 
-
 #: what says "that again, for another thing" ("same for the saucepan", "do the same with the bowl"),
 #: longest first
 _SAME = sorted((("same",), ("the", "same"), ("do", "the", "same"), ("same", "again"), ("same", "goes"),
@@ -434,7 +433,7 @@ def same_for(words: list[str], notes: list[str]) -> list[str]:
         if end is not None:
             thing = words[end[0]:end[1]]
             notes.append(f"'{' '.join(words[k:end[1]])}': the clause before, again, for {' '.join(thing)}")
-            out = out[:-1] + [","] + ["and"] + thing + ["too"]
+            out = out[:-1] + [",", "and", *thing, "too"]
             k = end[1]
             continue
         out.append(words[k])
