@@ -541,6 +541,14 @@ FILLER = {("um",), ("umm",), ("uh",), ("uhh",), ("uhm",), ("er",), ("erm",),   #
           # Ghanaian and South African English exclamations and Twi "please" ("Ei the sink!", "Chale
           # ...", "..., abi?", "mepa wo kyew", "yoo": all right), said beside the request
           ("ei",), ("eii",), ("chale",), ("abi",), ("yoo",), ("mepa", "wo", "kyew"), ("eish",), ("hayibo",),
+          # South African English and Afrikaans beside the request ("ag, put the ...", "ja, and wash
+          # ...", "nee man", "shame" for sympathy, "jislaaik"): no content
+          ("ag",), ("ag", "man"), ("ag", "no"), ("ja",), ("ja", "nee"), ("nee", "man"), ("shame",), ("jislaaik",),
+          ("yebo",),
+          # the team told or asked, by the one who talks to the assistant ("tell the robots to put
+          # ..."): the request itself
+          *((verb, who, "to") for verb in ("tell", "ask", "get") for who in ("them", "everyone")),
+          *((verb, "the", who, "to") for verb in ("tell", "ask", "get") for who in ("robots", "robot", "team", "bots")),
           # Malaysian and Singapore English particles and exclamations ("wash them lah", "aiyo so
           # messy", "alamak"), "tq" (thank you), and "later" / "still", which say when, not what
           ("lah",), ("leh",), ("lor",), ("meh",), ("hor",), ("aiyo",), ("aiyoh",), ("aiya",), ("alamak",), ("wah",),

@@ -423,8 +423,9 @@ _SAME_AFTER = {".", ",", ";", "!", "?"}
 def same_for(words: list[str], notes: list[str]) -> list[str]:
     """ "give the pan a scrub. same for the saucepan": the clause before, again, for the thing
     named, as "..., and the saucepan too" says it. Only a clause of its own (after a mark, "and" or
-    "then" allowed before it) that is nothing but the "same" words, "for" / "with" and the thing,
-    after a clause: "the same for the plates, only into the press" says more, and stays unread."""
+    "then" allowed before it) that is nothing but the "same" words, "for" / "with" and the thing, up
+    to the sentence's end or a "then" that opens the next order, after a clause: "the same for the
+    plates, only into the press" says more, and stays unread."""
     out: list[str] = []
     k = 0
     while k < len(words):
@@ -449,7 +450,10 @@ def _same_for_at(words: list[str], k: int) -> tuple[int, int] | None:
     if same is None or start + len(same) >= len(words) or words[start + len(same)] not in ("for", "with"):
         return None
     thing = start + len(same) + 1
-    end = next((j for j in range(thing, len(words)) if words[j] in PUNCT), len(words))
-    if end == thing or (end < len(words) and words[end] not in (".", "!", ";")):
+    # its sentence ends it, or "then" opening the next order ("... same with the knife and then
+    # put it away")
+    end = next((j for j in range(thing, len(words)) if words[j] in PUNCT or words[j] == "then"
+                or words[j:j + 2] == ["and", "then"]), len(words))
+    if end == thing or (end < len(words) and words[end] not in (".", "!", ";", "then", "and")):
         return None
     return thing, end

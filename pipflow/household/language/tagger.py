@@ -86,14 +86,19 @@ def owners_as_the(command: str, world: dict, notes: list[str]) -> str:
     word of this home or of the reader, stands as "the": which thing is meant is the home's one
     such thing, or it is asked.
     The home does not know who owns what, so the owner picks nothing out. Typed in lower case
-    ("jordan's mug"), the name is an owner only where the home's own names use it ("jordan's
-    desk"): any lower-case word before "'s" is not a name."""
+    ("jordan's mug"; speech to text writes no capitals), the name is an owner where the home's
+    own names use it ("jordan's desk"), or where it is no English word and no word of this home
+    or of the reader, nor a slip of one ("xander's cars"): "the dog's bowl" says no owner."""
     index = world_phrases(world)
     owners = _first_words_of_long_names(index)
+    vocab = vocabulary(index)
+
+    def unknown(word: str) -> bool:   # no English word, no word of this home or of the reader
+        return not (common_word(word) or known_word(word, index, vocab) or typo_of(word, vocab))
 
     def owner(m: re.Match) -> str:
         word, after = m.group(1).lower(), m.group(2).lower()
-        if m.group(1)[0].islower() and word not in owners:
+        if m.group(1)[0].islower() and word not in owners and not unknown(word):
             return m.group(0)
         if word in FUNCTION_WORDS or (word,) in PHRASES or any(key[:2] == (word, after) for key in index) or (
                 (word,) in index and not any(len(key) > 1 and key[0] == word for key in index)) \
@@ -103,7 +108,11 @@ def owners_as_the(command: str, world: dict, notes: list[str]) -> str:
             return m.group(0)
         notes.append(f"'{m.group(1)}'s' says whose it is: read as 'the'")
         return "the " + m.group(2)
-    return re.sub(r"(?<![\w'’])([A-Za-z][a-z]+)['’]s\s+([A-Za-z]+)", owner, command)
+    command = re.sub(r"(?<![\w'’])([A-Za-z][a-z]+)['’]s\s+([A-Za-z]+)", owner, command)
+    # the apostrophe unwritten ("johans beers", speech to text): only where neither the word nor
+    # the word without its "s" is known
+    return re.sub(r"(?<![\w'’])([A-Za-z][a-z]+)s\s+([A-Za-z]+)",
+                  lambda m: owner(m) if unknown(m.group(0).split()[0].lower()) else m.group(0), command)
 
 
 def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: list[str]) -> list[str]:

@@ -386,6 +386,27 @@ class GoalRules:
         n = int(self.toks(node, "NUM")[-1].value)
         self.put(place, "one", [{"items": {"names": [head]}, "amount": {"count": n}, "words": words}], words)
 
+    def _poss_amount(self, node: Tree, amount: str) -> None:
+        """ "OB connector max 4", "bay 1 nuts take away 3": the place and the item said first (read
+        as that place's item), then what to do with its count."""
+        words = self.words(node)
+        place = [str(self.sub(node, "posplace")[0].children[0].value)]
+        head = self.ihead(self.sub(node, "ihead")[0], words)
+        n = int(self.toks(node, "NUM")[-1].value)
+        self.put(place, "one", [{"items": {"names": [head]}, "amount": {amount: n}, "words": words}], words)
+
+    def g_poss_ceiling(self, node: Tree) -> None:
+        self._poss_amount(node, "at_most")
+
+    def g_poss_floor(self, node: Tree) -> None:
+        self._poss_amount(node, "at_least")
+
+    def g_poss_fewer(self, node: Tree) -> None:
+        self._poss_amount(node, "fewer")
+
+    def g_poss_more(self, node: Tree) -> None:
+        self._poss_amount(node, "more")
+
     def g_remove_complained(self, node: Tree) -> None:
         """ "P is overstocked on X, take 2 off": off the place of the complaint just made (in this
         sentence or the one before); with no complaint, "off" what? refused."""

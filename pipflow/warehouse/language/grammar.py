@@ -15,6 +15,8 @@ Every other terminal is an English keyword written in quotes below. Filler words
 """
 from __future__ import annotations
 
+import re
+
 GRAMMAR = r"""
 start: sentence
 sentence: lead? part aside? (sep part aside?)* (sep | bare_only)? aside?
@@ -213,6 +215,7 @@ goal: there_be items loc                                  -> g_set
     | both? places modal? each? setv each? items left? resumptive? -> g_place_set
     | both? places modal? setv items ("each" | "apiece") left? -> g_place_set
     | both? places modal? "each" be? items                  -> g_place_set
+    | places ("both" | "each") modal? setv items              -> g_place_set
     | places (":" | ",") items resumptive                  -> g_place_set
     | places (":" | ",") items                             -> g_place_set
     | places crowded ("on" ihead)?                         -> g_complaint
@@ -307,6 +310,14 @@ goal: there_be items loc                                  -> g_set
     | refill places "with" ihead ("until" ("it" | "they") ("is" | "are") "full" | "to" ("capacity" | "top")) -> g_fill
     | ("keep" | "hold") places ("to" | "at")? items           -> g_place_set
     | places bneg below NUM of? ihead                        -> g_floor
+    // the place and the item said first, what to do with them after ("OB connector max 4 only",
+    // "kitting resistor cannot lower than 5", "dock 2 bolts take away 3", "bay 1 nuts add 2")
+    | posplace ihead ":"? (upper NUM | NUM ("max" | "maximum" | "tops")) "only"? -> g_poss_ceiling
+    | posplace ihead ":"? (lower NUM | NUM ("min" | "minimum"))              -> g_poss_floor
+    | posplace ihead bneg (below | ("be" | "go" | "get" | "drop" | "fall")? (("lower" | "less" | "fewer") "than" | "below" | "under")) NUM -> g_poss_floor
+    | posplace ihead bneg (above | ("be" | "go" | "get")? (("higher" | "more") "than" | "above" | "over")) NUM -> g_poss_ceiling
+    | posplace ihead ":"? ("remove" | "take" "away" | "take" "out" | "take" "off" | "minus" | "less") NUM -> g_poss_fewer
+    | posplace ihead ":"? ("add" | "plus" | "add" "another") NUM more?        -> g_poss_more
     | places "never" ("under" | "below" | ("fewer" | "less") "than") NUM of? ihead -> g_floor
     | places "never" ("over" | "above" | "more" "than") NUM of? ihead -> g_ceiling
     | ("make" "sure" | "ensure") that? places bneg below NUM of? ihead -> g_floor
@@ -680,3 +691,26 @@ scoped_goal: ("using" | "with" | "by") ("only" | "just")? robots ","? goal    ->
 PLACE_VERB: "place"
 %declare NUM ITEM ITEMWORD PLACE PLACEWORD ROBOT ROBOTWORD RKIND RTAG SKILL SUPER FRAC POSS UNKNOWN
 """
+
+
+def _aside_only_words(grammar: str) -> frozenset[str]:
+    """Words the grammar reads only as an aside or a sentence's lead ("morning", "tonight",
+    "thanks", "guys"): said in a remark, they are no content of an order. Words that order what is
+    said around them ("if", "before", "first", "once") are left out: they may open a condition."""
+    rules: dict[str, set[str]] = {}
+    rule = ""
+    for line in grammar.splitlines():
+        head = re.match(r"^\??([a-z_]+)(?:\.-?\d+)?\s*:", line)
+        if head:
+            rule = head.group(1)
+        if rule and not line.strip().startswith("//"):
+            for word in re.findall(r'"([a-z]+)"', line.split("->")[0]):
+                rules.setdefault(word, set()).add(rule)
+    return frozenset(w for w, used in rules.items() if used <= {"aside", "lead"}) - _ORDERING
+
+
+#: aside words that may order what is said around them ("if possible", "before noon", "first")
+_ORDERING = frozenset({"if", "before", "after", "first", "once", "finally", "additionally", "afterwards", "possible",
+                       "plan", "us", "o", "clock"})
+#: words the grammar reads only as an aside or a lead (:func:`_aside_only_words`)
+ASIDE_ONLY = _aside_only_words(GRAMMAR)

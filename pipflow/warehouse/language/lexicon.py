@@ -25,7 +25,8 @@ from pipflow.language.english import common_word
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS, is_number
 from pipflow.language.radio import transmission
 from pipflow.language.spelling import distance, normalize, plural_forms, slip, tolerance
-from pipflow.warehouse.language.names import KIND_WORDS, POSS_MARK, STOPWORDS, NameIndex, Tok, read_counts, recognize
+from pipflow.warehouse.language.grammar import ASIDE_ONLY
+from pipflow.warehouse.language.names import CONTAINERS, KIND_WORDS, POSS_MARK, STOPWORDS, NameIndex, Tok, read_counts, recognize
 from pipflow.warehouse.language.reordered import (base_verb, fronted_source, item_as_subject, needs_doing, said_at,
                                                 to_be_done)
 from pipflow.warehouse.language.wordorder import left_dislocated, noun_adjuncts, numbered_siblings, unmarked_lists
@@ -61,12 +62,13 @@ FILLERS = {"the", "please", "kindly", "units", "unit", "pieces", "piece", "boxes
            "porfa", "porfavor", "ahorita", "oye", "luego", "pues", "bueno", "orale", "andale"}
 #: packaging and measure nouns: "5 cartons of tape", "2 rolls of shrink wrap" count the item after
 #: "of". A world that names a product so ("carton") recognises it as that product first.
-FILLERS |= {"carton", "cartons", "roll", "rolls", "pack", "packs", "packet", "packets", "bundle",
-            "bundles", "bag", "bags", "tub", "tubs", "bottle", "bottles", "reel", "reels", "tote",
-            "totes", "drum", "drums", "tin", "tins", "jar", "jars", "sack", "sacks", "crates", "jug", "jugs",
-            "sheet", "sheets", "length", "lengths", "coil", "coils",
-            # the logistics abbreviations ("4 ctns", "2 plts")
-            "ctn", "ctns", "plt", "plts"}
+UNIT_WORDS = {"carton", "cartons", "roll", "rolls", "pack", "packs", "packet", "packets", "bundle",
+              "bundles", "bag", "bags", "tub", "tubs", "bottle", "bottles", "reel", "reels", "tote",
+              "totes", "drum", "drums", "tin", "tins", "jar", "jars", "sack", "sacks", "crates", "jug", "jugs",
+              "sheet", "sheets", "length", "lengths", "coil", "coils", "tray", "trays", "pc",
+              # the logistics abbreviations ("4 ctns", "2 plts")
+              "ctn", "ctns", "plt", "plts"}
+FILLERS |= UNIT_WORDS
 #: fillers that make the count after them a final count
 EXACT_WORDS = {"exactly", "precisely"}
 #: chat spellings of keywords
@@ -222,9 +224,10 @@ WORD_ORDER = ((re.compile(rf"\bmore\s+({_NUMBER})(?!\s*(?:than|%|percent))", re.
               # bare verb, so the "to" between them says nothing
               (re.compile(rf"\b(must|should|shall|can|could|would)\s+to\s+(?=(?:not\s+)?(?:{_BARE_VERBS})\b)",
                           re.IGNORECASE), r"\1 "))
-#: discourse particles of Singapore and Malaysian English, closing a clause ("add 4 more lah",
-#: "botak off today ah,"): they colour the clause, they say nothing of the order
-PARTICLES = ("lah", "leh", "lor", "hor", "meh", "liao", "sia", "ah", "ha")
+#: discourse particles of Singapore, Malaysian and Hong Kong English, closing a clause ("add 4
+#: more lah", "botak off today ah,", "kitting make it 8 la", "dun touch rack B ar"): they colour
+#: the clause, they say nothing of the order
+PARTICLES = ("lah", "leh", "lor", "hor", "meh", "liao", "sia", "ah", "ha", "la", "ar", "wor", "lo", "ga", "mah")
 _PARTICLE = re.compile(r"\s+(?:" + "|".join(PARTICLES) + r")\b(?=\s*(?:[.,;:!?()]|$))", re.IGNORECASE)
 #: Tagalog's honorific and softening particles in Taglish ("move po 3 X", "add naman 2 X"), said
 #: anywhere in a clause: politeness, nothing of the order
@@ -238,7 +241,7 @@ _TAGALOG_MARKER = re.compile(rf"\bng\s+(?={_NUMBER})", re.IGNORECASE)
 _TAGALOG_REQUEST = re.compile(r"\b(?:paki-?\s*|pa-\s*|i-\s*|(?:^|(?<=[.,;:!?]))\s*pa\s+)(?=([a-z]+))", re.IGNORECASE)
 #: a tag that asks whether the order can be done, closing it ("take 5 off can", "... can or not?",
 #: "... ok?"): it asks nothing more than the order does
-_CAN_TAG = re.compile(r"\s*,?\s+(?:can\s+or\s+not|can|ok|okay)\s*(?:\?+|(?=[.,;:!]|$))", re.IGNORECASE)
+_CAN_TAG = re.compile(r"\s*,?\s+(?:can\s+or\s+not|can(?:\s+help)?|ok|okay)\s*(?:\?+|(?=[.,;:!]|$))", re.IGNORECASE)
 #: "go and shift 6 router ...", "the weakest one go and bring ...", "go ahead and move ...": "go
 #: (ahead) and" before a verb adds nothing
 _GO_AND = re.compile(r"\bgo\s+(?:ahead\s+)?and\s+(?=[a-z])", re.IGNORECASE)
@@ -321,6 +324,21 @@ def check_text(command: str) -> str:
                                f"'{m.group(0)}' is not read in commands; write it in words")
     text = re.sub(r"\bwhats\b", "what is", text, flags=re.IGNORECASE)  # "what's" typed without its apostrophe
     return re.sub(r"\b([A-Za-z0-9_-]+)['\u2019]s\b", _possessive, text)
+
+
+def _name_words(world: dict) -> set[str]:
+    """The words of the world's place and product names, and their plurals ("tray", "trays" of
+    seed_tray), but for a product named by what its container holds and the container
+    (dog_food_sack: "4 sacks of dog food", :func:`pipflow.warehouse.language.names._contents`)."""
+    out: set[str] = set()
+    for key in ("shelves", "products"):
+        for name in world.get(key) or {}:
+            words = [w for w in re.split(r"[-_\s]+", str(name).lower()) if w.isalpha()]
+            if len(words) >= 3 and words[-1] in CONTAINERS:
+                continue   # "sacks of dog food" of dog_food_sack: its container is still a unit
+            for w in words:
+                out |= {w, *plural_forms(w)}
+    return out
 
 
 def _possessive(m: re.Match) -> str:
@@ -423,6 +441,11 @@ REQUEST_FRAMES = (("would", "it", "be", "possible", "to"), ("is", "it", "possibl
                   ("sort", "it", "out", "so", "that"), ("sort", "it", "out", "so"), ("sort", "it", "so", "that"),
                   ("sort", "it", "so"), ("arrange", "it", "so", "that"), ("arrange", "it", "so"),
                   ("see", "to", "it", "that"),
+                  # Hong Kong and Singapore English "can help (to) move ...", "pls help move ...",
+                  # "help to move ...": asking for the verb that follows
+                  ("can", "help", "to"), ("can", "help"), ("help", "to"), ("help",),
+                  # "pls arrange for OB to have 10 X", "arrange OB to have 10 X": the order follows
+                  ("arrange", "for"), ("arrange",),
                   # the hedged and over-polite ways of asking ("Could I trouble you to ...", "Would you
                   # be so kind as to ...", "Could you possibly ...")
                   ("would", "it", "be", "possible", "for", "you", "to"), ("is", "it", "possible", "for", "you", "to"),
@@ -494,6 +517,14 @@ def _subject_framed(toks: list[Tok], k: int) -> list[Tok] | None:
     return None
 
 
+#: words of asking that may stand before a request frame ("pls help move ...")
+_COURTESIES = {"pls", "plz", "please", "kindly"}
+
+
+def _opens_clause(toks: list[Tok], k: int) -> bool:
+    return k == 0 or (toks[k - 1].kind == "punct" and toks[k - 1].value in (".", ";", "!", "?", ",", ":"))
+
+
 def without_request_frames(toks: list[Tok], verbs: Collection[str] = ()) -> tuple[list[Tok], list[str]]:
     """The tokens without a frame of :data:`REQUEST_FRAMES` that opens a sentence or a clause
     ("Hi, while you're at it, ..."), a courtesy of time or a "Per ...," clause; with the words of
@@ -505,7 +536,8 @@ def without_request_frames(toks: list[Tok], verbs: Collection[str] = ()) -> tupl
     aside: list[str] = []
     k = 0
     while k < len(toks):
-        start = k == 0 or (toks[k - 1].kind == "punct" and toks[k - 1].value in (".", ";", "!", "?", ",", ":"))
+        start = _opens_clause(toks, k) or (toks[k - 1].kind == "word" and toks[k - 1].value in _COURTESIES
+                                           and _opens_clause(toks, k - 1))   # "pls help move ..."
         hit = next((f for f in REQUEST_FRAMES if start and said_at(toks, k, f)), None)
         if hit in GERUND_FRAMES and k + len(hit) < len(toks) and toks[k + len(hit)].kind == "word":
             verb = base_verb(str(toks[k + len(hit)].value), verbs)
@@ -868,8 +900,11 @@ class Lexicon:
         # superlatives are words of robot rules, never a misspelt name ("strongest" is no string_set)
         # another spelling of a grammar word said alone is that word, never a misspelt name ("tae",
         # to, is no slip of a robot "tam"; a name spelt so exactly is still that name)
-        self.index = NameIndex(world, reserved={k for k in keywords if k.isalpha()} | FILLERS | set(SUPERLATIVES)
-                               | FRAME_WORDS, respelt=set(SPELLINGS))
+        # a packaging word that is a word of one of the world's names ("trays" of seed_tray) is that
+        # name's word there, not a unit
+        self.index = NameIndex(world, reserved={k for k in keywords if k.isalpha()} | set(SUPERLATIVES)
+                               | (FILLERS - UNIT_WORDS) | (UNIT_WORDS - _name_words(world)) | FRAME_WORDS,
+                               respelt=set(SPELLINGS))
         robots = world.get("robots") or {}
         self.kinds = {str(r.get("kind")).lower() for r in robots.values()
                       if isinstance(r, dict) and r.get("kind")}
@@ -970,8 +1005,8 @@ class Lexicon:
         a grammar word that is no function word, a number or fraction word, a robot kind, tag,
         skill or superlative, or a word within a typo's reach of a name of the world (a misspelt
         name is never talk)."""
-        if word in self.keywords and word not in FUNCTION_WORDS:
-            return True
+        if word in self.keywords and word not in FUNCTION_WORDS and word not in ASIDE_ONLY:
+            return True   # "morning", "tonight": a grammar word of asides only is no content
         if word in NUMBER_WORDS or word in FRACTIONS or word in SUPERLATIVES or word in self.skills:
             return True
         if self._group(word) is not None:
@@ -982,7 +1017,7 @@ class Lexicon:
             return True
         repaired = SPELLINGS.get(word) or self._keyword_typo(word)
         if repaired is not None and repaired not in FUNCTION_WORDS:
-            return True
+            return repaired not in ASIDE_ONLY   # "tmr": tomorrow
         return self._near_name(word)
 
     def _near_name(self, word: str) -> bool:

@@ -298,13 +298,36 @@ def _contents(names: list["_Name"]) -> dict[str, "_Name | None"]:
         out[held] = None if held in out else n
     return out
 
+def _compound_parts(word: str) -> list[list[str]]:
+    """The ways a one-word name splits into two common English words ("outbound": out + bound,
+    "drycab": dry + cab), each of two letters or more."""
+    return [[word[:k], word[k:]] for k in range(2, len(word) - 1)
+            if common_word(word[:k]) and common_word(word[k:])]
+
+
+def _initials(names: list["_Name"]) -> dict[str, "_Name | None"]:
+    """A place or product said by the initials of its words, in capitals, as floors shorten names
+    ("OB" of outbound, "PF" of pickface, "CS" of cold_store): the initials of the words of a name
+    of two or more words, or of the two English words a one-word name is made of. Keyed by the
+    lower-case initials; None where two names have the same (refused, never a guess)."""
+    out: dict[str, _Name | None] = {}
+    for n in names:
+        if n.kind == "robot":
+            continue
+        words = [w for w in re.split(r"[-_\s]+", n.name.lower()) if w.isalpha()]
+        splits = [words] if len(words) >= 2 else _compound_parts(words[0]) if words else []
+        for parts in splits:
+            key = "".join(w[0] for w in parts)
+            out[key] = None if key in out and out[key] is not n else n
+    return out
+
 
 #: nouns for a place said between a numbered place's letters and its number ("chill room 1")
 PLACE_NOUNS = KIND_WORDS["shelf"] | {"room", "rooms", "store", "cage", "line", "shed", "hall", "unit", "pen", "lane",
                                      "aisle", "bench", "dock", "cell", "chamber", "vault", "section", "row"}
 #: nouns said after a place's whole name that add nothing ("Outbound staging", "the receiving
 #: area"): read with it as the place (:meth:`NameIndex._place_noun_after`)
-SAID_AFTER_A_PLACE = {"staging", "area", "zone", "location", "bay"}
+SAID_AFTER_A_PLACE = {"staging", "area", "zone", "location", "bay", "table", "station", "cabinet", "counter", "desk"}
 _NOUNS_AFTER_A_NAME = PLACE_NOUNS | SAID_AFTER_A_PLACE
 #: words after which a place is said ("to dispatch", "off dispatch"), and words that may follow a
 #: place said there; a grammar verb that is a word of one place's name is that place only between
@@ -426,6 +449,8 @@ class NameIndex:
 
         self.shortened = _Shortenings(self.names, alone, owners, _starts(self.names, by_name, alone, owners))
         self.contents = _contents(self.names)
+        self.initials = {k: n for k, n in _initials(self.names).items()
+                         if n is not None and k not in STOPWORDS and k not in self.reserved and k not in self.forms}
         self.verb_places = _verb_places(self.names, self.reserved)
         self.verb_places.update({w: n for w, n in spelt_as_verbs.items()
                                  if n is not None and n.kind == "shelf" and w not in self.verb_places})
@@ -758,6 +783,9 @@ class NameIndex:
         short = self.shortened(norm) if found is None else None
         if short is not None:
             found = Tok("name", raw[i], short.name, short.kind)  # "mezz" for mezzanine, "shz" for shiraz
+        if found is None and raw[i].isalpha() and raw[i].isupper() and 2 <= len(raw[i]) <= 4 and norm in self.initials:
+            said = self.initials[norm]   # "OB" for outbound: initials, said in capitals
+            found = Tok("name", raw[i], said.name, said.kind)
         after = raw[i + 1].lower().replace("'", "").replace("’", "") if i + 1 < len(raw) else ""
         where = i > 0 and raw[i - 1].lower() in PLACE_PREPOSITIONS and (
             not after or not after[0].isalnum() or after in AFTER_A_PLACE)
