@@ -305,11 +305,12 @@ def _compound_parts(word: str) -> list[list[str]]:
             if common_word(word[:k]) and common_word(word[k:])]
 
 
-def _initials(names: list["_Name"]) -> dict[str, "_Name | None"]:
+def _initials(names: list["_Name"], taken: Collection[str]) -> dict[str, "_Name"]:
     """A place or product said by the initials of its words, in capitals, as floors shorten names
     ("OB" of outbound, "PF" of pickface, "CS" of cold_store): the initials of the words of a name
     of two or more words, or of the two English words a one-word name is made of. Keyed by the
-    lower-case initials; None where two names have the same (refused, never a guess)."""
+    lower-case initials; never initials two names have (refused, never a guess) nor a word of
+    ``taken`` (the grammar's and filler words, the world's own spellings)."""
     out: dict[str, _Name | None] = {}
     for n in names:
         if n.kind == "robot":
@@ -319,7 +320,7 @@ def _initials(names: list["_Name"]) -> dict[str, "_Name | None"]:
         for parts in splits:
             key = "".join(w[0] for w in parts)
             out[key] = None if key in out and out[key] is not n else n
-    return out
+    return {k: n for k, n in out.items() if n is not None and k not in taken}
 
 
 #: nouns for a place said between a numbered place's letters and its number ("chill room 1")
@@ -449,8 +450,7 @@ class NameIndex:
 
         self.shortened = _Shortenings(self.names, alone, owners, _starts(self.names, by_name, alone, owners))
         self.contents = _contents(self.names)
-        self.initials = {k: n for k, n in _initials(self.names).items()
-                         if n is not None and k not in STOPWORDS and k not in self.reserved and k not in self.forms}
+        self.initials = _initials(self.names, STOPWORDS | self.reserved | set(self.forms))
         self.verb_places = _verb_places(self.names, self.reserved)
         self.verb_places.update({w: n for w, n in spelt_as_verbs.items()
                                  if n is not None and n.kind == "shelf" and w not in self.verb_places})
