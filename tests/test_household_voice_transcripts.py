@@ -6,9 +6,11 @@ its apostrophe ("xander's novel", "johans novel"). Through the real household re
 studio flat."""
 from __future__ import annotations
 
+import copy
+
 import pytest
 
-from pipflow.errors import TranslationError
+from pipflow.errors import Refusal, TranslationError
 from pipflow.household.language.translator import translate
 from tests.studio_world import STUDIO, studio_goal
 
@@ -49,3 +51,61 @@ def test_an_english_word_before_a_thing_is_never_taken_for_its_owner(said: str) 
 ])
 def test_the_same_for_a_thing_then_another_order(said: str) -> None:
     assert studio_goal(said) == studio_goal("wash the teacup and the glass and then put the novel on the nightstand")
+
+
+def test_a_purpose_before_and_is_what_for_as_at_a_clause_end() -> None:
+    """ "heat the leftovers for lunch and then slice the carrot", said without a comma."""
+    assert studio_goal("heat the leftovers for lunch and then slice the carrot") == \
+        studio_goal("heat the leftovers, and then slice the carrot")
+
+
+@pytest.mark.parametrize("said", [
+    "xander is at rugby so put the novel on the nightstand",
+    "put the novel on the nightstand and xander is at rugby",
+])
+def test_a_remark_about_someone_joined_without_a_mark_is_set_aside(said: str) -> None:
+    got = translate(said, STUDIO)
+    assert {k: v for k, v in got["goal"].items() if v} == studio_goal(PLAIN)
+    assert any("xander is at rugby" in line for line in got["explain"])
+
+
+def test_a_joined_remark_between_two_orders_keeps_both_orders() -> None:
+    assert studio_goal("put the novel on the nightstand but xander is at rugby and turn off the radio") == \
+        studio_goal("put the novel on the nightstand and turn off the radio")
+
+
+@pytest.mark.parametrize("said", [
+    "put the novel on the nightstand and xander is not at rugby",     # a negation may bear on the order
+    "put the novel on the nightstand and xander is on the armchair",  # names a place of the home
+])
+def test_a_joined_clause_that_may_bear_on_the_order_is_never_set_aside(said: str) -> None:
+    with pytest.raises(TranslationError):
+        translate(said, STUDIO)
+
+
+
+def _with_lounge_light() -> dict:
+    """The studio with a light named for its room ("lounge light") and toys to put away."""
+    home = copy.deepcopy(STUDIO)
+    home["places"]["loungelight"] = {**home["places"]["overhead_light"], "words": ["lounge light", "the light in the lounge"]}
+    home["places"]["toybox"] = {**home["places"]["armchair"], "words": ["toy box"]}
+    home["categories"]["toy"] = {"words": ["toys", "the kids' toys", "the toys"], "home": "toybox"}
+    home["objects"]["lego"] = {"in": "armchair", "mass": 1, "properties": ["pickupable"], "categories": ["toy"]}
+    return home
+
+
+def test_things_said_to_be_in_something_that_holds_nothing_are_not_understood_never_impossible() -> None:
+    """ "the lounge is full of the kids toys" where "lounge" names only the lounge light, which
+    holds nothing: a reading gone wrong is asked about, never refused as an impossible order."""
+    with pytest.raises(TranslationError) as caught:
+        translate("the lounge is full of the kids toys", _with_lounge_light())
+    assert not isinstance(caught.value, Refusal)
+
+
+def test_a_word_heard_wrong_is_offered_as_the_word_that_sounds_alike_never_read_as_it() -> None:
+    """ "slice the kerrit": three edits from carrot, the same sounds: offered, not acted on."""
+    with pytest.raises(TranslationError) as caught:
+        translate("slice the kerrit", STUDIO)
+    offered = caught.value.candidates
+    assert [c["goal"]["state"] for c in offered] == [{"carrot": ["sliced"]}]
+    assert "said alike" in offered[0]["reading"]

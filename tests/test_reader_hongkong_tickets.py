@@ -119,3 +119,17 @@ def test_a_remark_of_aside_words_only_is_set_aside() -> None:
     """ "morning", "tonight", "later": words the grammar reads only as asides are no content."""
     got = understand("Stocktake guys later tonight. dock should have 6 flour", STORE)
     assert got["goal"] == {"dock": {"flour": 6}}
+
+
+@pytest.mark.parametrize("said", [
+    "Ive been asked to get dock up to 6 flour",
+    "I've been told to get dock up to 6 flour",
+    "we were asked to get dock up to 6 flour",
+])
+def test_a_request_passed_on_is_the_request(said: str) -> None:
+    assert goal(said) == {"dock": {"flour": 6}}
+
+
+def test_a_rule_passed_on_is_the_rule() -> None:
+    got = understand("Ive been told that only forklifts are to be used. move 3 flour from backroom to dock", STORE)
+    assert got["constraints"] == understand("only forklifts. move 3 flour from backroom to dock", STORE)["constraints"]

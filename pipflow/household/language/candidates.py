@@ -9,8 +9,10 @@ counts ``candidate_recall``). They are built, in this order of preference, from:
   the command with each of them named;
 * **repairs of a word the reader does not know**: a misspelling one edit away with another first
   letter, or two edits away with the same one (the reader itself repairs only one edit, same
-  first letter, one meaning: "tunrpi" is offered as turnip, "kettle" never as bottle); a
-  modifier said alone ("the mobile" of mobile_phone) read as its thing's whole name;
+  first letter, one meaning: "tunrpi" is offered as turnip, "kettle" never as bottle); a word
+  speech to text heard wrong, offered as a word of the home that sounds the same ("cattle" as
+  kettle: the same Metaphone code, :func:`_said_alike`); a modifier said alone ("the mobile" of
+  mobile_phone) read as its thing's whole name;
 * **the parts that did parse**: the command without one word it could not place, or without one
   clause, when that word or clause has no operative word (negation, only/except, bounds,
   quantities: :func:`pipflow.language.asides.near_operative`), since dropping one would widen
@@ -34,6 +36,8 @@ import json
 import re
 from collections import Counter
 from typing import Callable
+
+from jellyfish import metaphone
 
 from pipflow.errors import PipflowError, Refusal, TranslationError
 from pipflow.household.language.lexicon import HUNGRY, LEAVING_REASONS, NEEDS_OFFERED, words_of
@@ -106,6 +110,18 @@ def _part_names(world: dict, at: int) -> dict[str, list[str]]:
                     if full not in names and not any(n.startswith(f"{name}\0") for n in names):
                         names.append(f"{name}\0{full}")
     return {w: [n.split("\0")[1] for n in names] for w, names in out.items()}
+
+
+def _said_alike(word: str, vocab: set[str]) -> list[str]:
+    """Words of this home that sound like ``word`` (the same Metaphone code of two sounds or more;
+    four letters or more, so "hit" is never "hot"), at most :data:`MAX_CANDIDATES`: what speech to
+    text may have heard wrong ("cattle" for kettle, "bucky" for bakkie)."""
+    if len(word) < 4 or not word.isalpha():
+        return []
+    code = metaphone(word)
+    if len(code) < 2:
+        return []
+    return sorted(v for v in vocab if v != word and len(v) >= 4 and v.isalpha() and metaphone(v) == code)[:MAX_CANDIDATES]
 
 
 def _stopped_wordings(words: list[str], index: dict, error: TranslationError) -> list[tuple[str, str, str, dict]]:
@@ -183,8 +199,10 @@ def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[
 
     out += _robots_addressed(command, world, index)
 
-    for w in near:   # one edit first, then a modifier's whole name, then two edits
+    for w in near:   # one edit first, then a word said alike, a modifier's whole name, two edits
         out += [(swap(w, v), f"'{w}' read as '{v}'", v, {}) for d, v in near[w] if d == 1]
+    for w in unknown:   # "put the cattle on": speech to text's word for one that sounds the same
+        out += [(swap(w, v), f"'{w}' read as '{v}' (said alike)", v, {}) for v in _said_alike(w, vocab)]
     for w in unknown:   # "the cupboard" where two things are cupboards: each of them
         fulls = heads.get(w) or next((heads[s] for s in _singulars(w) if s in heads), [])
         out += [(swap(w, full), f"'{w}' read as '{full}'", full, {}) for full in fulls]

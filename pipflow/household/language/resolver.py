@@ -269,6 +269,11 @@ class Resolver:
         if "from" in sel:
             place = self.place_of(sel["from"], words)
             there = [n for n in names if n in self.world["objects"] and self.world["objects"][n]["in"] == place]
+            if not there and not _holds_things(self.world, place):
+                # "the lounge is full of toys" where "lounge" names only the lounge light: a thing
+                # that holds nothing was read as where, a reading gone wrong, never an impossible order
+                raise TranslationError(f"'{words}': {place} holds nothing, so '{what}' cannot be in it; "
+                                       "say where they are")
             if not there:
                 where = ", ".join(f"{n} is in {self.world['objects'][n]['in']}" for n in names if n in self.world["objects"])
                 raise Refusal(f"'{words}': nothing of '{what}' is in {place}" + (f" ({where})" if where and not implicit else ""))
@@ -1204,3 +1209,9 @@ def resolve(order: dict, world: dict, choose: dict[str, str] | None = None) -> d
     Refusal or TranslationError otherwise. ``choose``: words that name several things -> the
     one meant (a candidate reading the refusal offers; never set by the reader itself)."""
     return Resolver(world, choose).resolve(check_order(order))
+
+
+def _holds_things(world: dict, place: str) -> bool:
+    """Whether things can lie in a place of the home (a receptacle, a sink or the garbage)."""
+    props = set((world.get("places") or {}).get(place, {}).get("properties") or ())
+    return bool(props & {"receptacle", "sink", "garbage"})

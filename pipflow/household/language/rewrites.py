@@ -52,7 +52,7 @@ def without_manner(words: list[str], notes: list[str]) -> list[str]:
                 notes.append(f"'{x}': the order of the steps; the plan decides it")
                 continue
             kept.append(x)
-        clause = _without_purpose(kept, notes)
+        clause = _without_inner_purposes(kept, notes)
         out += clause + ([w] if k < len(words) else [])
         start = k + 1
     while out and out[-1] == ",":
@@ -109,6 +109,18 @@ def without_duration(clause: list[str], notes: list[str]) -> list[str]:
 CLOSING_TAGS = (("would", "you"), ("will", "you"), ("could", "you"), ("please",), ("thanks",), ("ta",), ("pls",))
 #: whose a purpose is ("for my breakfast", "for the little one")
 BENEFICIARY_DETERMINERS = {"the", "my", "our", "your", "his", "her", "their"}
+
+
+def _without_inner_purposes(clause: list[str], notes: list[str]) -> list[str]:
+    """:func:`_without_purpose` at the end of the clause and before each "and" / "then" in it:
+    speech to text writes no commas ("warm up the stew for lunch and slice the tomato")."""
+    out: list[str] = []
+    start = 0
+    for j, x in enumerate(clause + ["and"]):
+        if x in ("and", "then") and j > start:
+            out += _without_purpose(clause[start:j], notes) + clause[j:j + 1]
+            start = j + 1
+    return out
 
 
 def _without_purpose(clause: list[str], notes: list[str]) -> list[str]:

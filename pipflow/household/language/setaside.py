@@ -350,6 +350,26 @@ def _topic_restated(words: list[str], parts: list, world: dict) -> tuple[list[st
     return words, clauses(words, CLAUSE_MARKS), [said]
 
 
+#: words that join a remark to an order without a mark ("johan is coming home and his beers are
+#: still warm in the pantry"), as speech to text writes it
+_JOINERS = ("and", "so", "but")
+
+
+def remarks_joined(kept: list[Clause], remark: Callable[[tuple[str, ...]], bool]) -> list[Clause]:
+    """The remarks (:func:`_remark`) joined to a clause with "and", "so" or "but" and no mark:
+    each stretch of a clause from its start or a joiner to the next joiner or its end that is a
+    remark by itself, set aside with its joiner (the one after it, for a remark that opens the
+    clause), where something else of the clause is left."""
+    out: list[Clause] = []
+    for c in kept:
+        cuts = [0] + [j for j, w in enumerate(c.words) if w in _JOINERS and j] + [len(c.words)]
+        for a, b in zip(cuts, cuts[1:]):
+            if b - a < len(c.words) and remark(c.words[a + (a > 0):b]):
+                b += a == 0   # a remark first goes with the joiner after it ("xander is out so ...")
+                out.append(Clause(c.start + a, c.start + b, c.words[a:b]))
+    return out
+
+
 def without_asides(command: str, world: dict) -> Trimmed | None:
     """The command without its content-free clauses (:mod:`pipflow.language.asides`), its
     clauses that say what the speaker will do (:func:`speaker_doing`) and those that say where a
@@ -372,6 +392,7 @@ def without_asides(command: str, world: dict) -> Trimmed | None:
     known = [(c, what) for c, what in known if what] + topic
     taken = set(free) | set(own) | {c for c, _ in known}
     free += run_on_talk([c for c in parts if c not in taken], content, _names(world))
+    free += remarks_joined([c for c in parts if c not in taken and c not in free], remark)
     if not free and not own and not known:
         return None
     drop = {k for c in free + own + [c for c, _ in known] for k in range(c.start, c.end)}

@@ -446,6 +446,12 @@ REQUEST_FRAMES = (("would", "it", "be", "possible", "to"), ("is", "it", "possibl
                   ("can", "help", "to"), ("can", "help"), ("help", "to"), ("help",),
                   # "pls arrange for OB to have 10 X", "arrange OB to have 10 X": the order follows
                   ("arrange", "for"), ("arrange",),
+                  # a request passed on ("I've been asked to get returns up to 20", "I've been told
+                  # only tuggers are to be used"): what follows is the order
+                  *((*who, "been", said, *rest) for who in (("ive",), ("i", "have"), ("weve",), ("we", "have"))
+                    for said in ("asked", "told") for rest in (("to",), ("that",), ())),
+                  *((*who, said, *rest) for who in (("i", "was"), ("we", "were")) for said in ("asked", "told")
+                    for rest in (("to",), ("that",))),
                   # the hedged and over-polite ways of asking ("Could I trouble you to ...", "Would you
                   # be so kind as to ...", "Could you possibly ...")
                   ("would", "it", "be", "possible", "for", "you", "to"), ("is", "it", "possible", "for", "you", "to"),
