@@ -109,3 +109,17 @@ def test_a_word_heard_wrong_is_offered_as_the_word_that_sounds_alike_never_read_
     offered = caught.value.candidates
     assert [c["goal"]["state"] for c in offered] == [{"carrot": ["sliced"]}]
     assert "said alike" in offered[0]["reading"]
+
+
+@pytest.mark.parametrize("said", ["wash the teacup from lunch", "the teacup is still dirty from sunday, wash it"])
+def test_from_a_meal_or_a_day_says_when_not_where(said: str) -> None:
+    assert studio_goal(said) == studio_goal("wash the teacup")
+
+
+@pytest.mark.parametrize("said", ["the teacup is still dirty so wash it", "the teacup is still dirty, so wash it"])
+def test_so_before_an_order_joins_its_reason_to_it(said: str) -> None:
+    assert studio_goal(said) == studio_goal("wash the teacup")
+
+
+def test_so_as_a_degree_is_no_clause_mark() -> None:
+    assert studio_goal("the radio is so loud") == studio_goal("the radio is too loud")

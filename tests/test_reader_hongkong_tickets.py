@@ -133,3 +133,12 @@ def test_a_request_passed_on_is_the_request(said: str) -> None:
 def test_a_rule_passed_on_is_the_rule() -> None:
     got = understand("Ive been told that only forklifts are to be used. move 3 flour from backroom to dock", STORE)
     assert got["constraints"] == understand("only forklifts. move 3 flour from backroom to dock", STORE)["constraints"]
+
+
+@pytest.mark.parametrize("said, plain", [
+    ("3 flour from packing put back backroom", "move 3 flour from packing to backroom"),
+    ("all yeast put back to cold_store except the ones on backroom",
+     "all yeast go to cold_store except the ones on backroom"),
+])
+def test_put_back_after_the_things_and_before_a_place_is_where_they_go(said: str, plain: str) -> None:
+    assert goal(said) == goal(plain)

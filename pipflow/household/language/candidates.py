@@ -199,10 +199,8 @@ def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[
 
     out += _robots_addressed(command, world, index)
 
-    for w in near:   # one edit first, then a word said alike, a modifier's whole name, two edits
+    for w in near:   # one edit first, then a modifier's whole name, then two edits
         out += [(swap(w, v), f"'{w}' read as '{v}'", v, {}) for d, v in near[w] if d == 1]
-    for w in unknown:   # "put the cattle on": speech to text's word for one that sounds the same
-        out += [(swap(w, v), f"'{w}' read as '{v}' (said alike)", v, {}) for v in _said_alike(w, vocab)]
     for w in unknown:   # "the cupboard" where two things are cupboards: each of them
         fulls = heads.get(w) or next((heads[s] for s in _singulars(w) if s in heads), [])
         out += [(swap(w, full), f"'{w}' read as '{full}'", full, {}) for full in fulls]
@@ -238,6 +236,9 @@ def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[
             if ws and not any(near_operative(x) for x in ws):
                 rest = _CLAUSE_SPLIT.sub(" , ", command.replace(part, " ", 1))
                 out.append((rest, f"read without '{' '.join(ws)}' (not understood)", " ".join(words_of(rest)), {}))
+    for w in unknown:   # "put the cattle on": speech to text's word for one that sounds the same (last: it
+        # must not take the tries of the wordings above, which find more)
+        out += [(swap(w, v), f"'{w}' read as '{v}' (said alike)", v, {}) for v in _said_alike(w, vocab)]
     return out
 
 

@@ -580,12 +580,14 @@ TIME_WORDS = {("all", "night"), ("all", "day"), ("all", "evening"), ("all", "mor
               ("today",),
               # where the speaker is ("don't leave anything running down here"): the whole home
               ("down", "here"), ("up", "here")}
-#: "since" a time of day, a meal or a day ("it's been sitting in the sink since the morning",
-#: "there's grease on it since Sunday"): when it began, which says nothing of how the home should end
+#: "since" or "from" a time of day, a meal or a day ("it's been sitting in the sink since the
+#: morning", "there's grease on it since Sunday", "still dirty from lunch"): when it began, which
+#: says nothing of how the home should end ("from the tea" may be where a teabag comes from)
 SINCE_TIMES = ("morning", "afternoon", "evening", "breakfast", "lunch", "dinner", "tea", "supper", "weekend",
                "monday", "tuesday", "wednesday", "thursday", "friday", "saturday", "sunday")
-TIME_WORDS |= {("since", w) for w in SINCE_TIMES} | {("since", "the", w) for w in SINCE_TIMES} \
-    | {("since", "last", w) for w in SINCE_TIMES + ("week", "night")}
+TIME_WORDS |= {(since, *the, w) for since in ("since", "from") for the in ((), ("the",)) for w in SINCE_TIMES
+               if since == "since" or w != "tea"} \
+    | {(since, "last", w) for since in ("since", "from") for w in SINCE_TIMES + ("week", "night")}
 FILLER |= TIME_WORDS
 #: how the steps are to be run, not what the home should end like: a goal is the end state, and
 #: the planner and the allocator decide the order and what runs in parallel. A clause made only of

@@ -469,3 +469,19 @@ def _same_for_at(words: list[str], k: int) -> tuple[int, int] | None:
     if end == thing or (end < len(words) and words[end] not in (".", "!", ";", "then", "and")):
         return None
     return thing, end
+
+
+def so_before_an_order(words: list[str], notes: list[str]) -> list[str]:
+    """ "the pan is still dirty so wash it": "so" before a verb of the lexicon joins a reason to
+    the order it leads to; read as a clause mark (the reason is then read as the order's topic or
+    cue, as "the pan is dirty, wash it" is)."""
+    out: list[str] = []
+    for k, w in enumerate(words):
+        verb = k + 1 < len(words) and str(PHRASES.get((words[k + 1],), ("",))[0]).startswith("V")
+        if w == "so" and verb and out and out[-1] not in ("and", "but", "or"):
+            if out[-1] not in PUNCT:
+                out.append(",")
+            notes.append(f"'so {words[k + 1]}': the order the words before it lead to")
+            continue
+        out.append(w)
+    return out

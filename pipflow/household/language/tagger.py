@@ -23,7 +23,8 @@ from pipflow.household.language.names import (first_words, longest_name, named_b
 from pipflow.household.language.retag import (act_before_noun, demonstratives, elided_it_is, left_lying, located,
                                               restated_order, without_hedges)
 from pipflow.household.language.rewrites import (caused, closed_again, given, heat_purpose, measures, or_under_negation,
-                                                 particles, same_for, wherever_they_belong, without_manner)
+                                                 particles, same_for, so_before_an_order, wherever_they_belong,
+                                                 without_manner)
 from pipflow.household.language.tokens import PUNCT, Tag
 from pipflow.household.language.typos import (determiner_slip, known_word, meaning_of, transposition_of, typo_of,
                                               vocabulary)
@@ -118,7 +119,7 @@ def owners_as_the(command: str, world: dict, notes: list[str]) -> str:
 def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: list[str]) -> list[str]:
     """The command's words with its colloquial forms, constructions and particles read as the
     grammar's words (each rewrite notes what it read)."""
-    words = same_for(colloquial(corrected(words_of(command), notes), notes), notes)
+    words = so_before_an_order(same_for(colloquial(corrected(words_of(command), notes), notes), notes), notes)
     words = or_under_negation(measures(without_manner(words, notes), index, notes), notes)
     words = heat_purpose(caused(given(me_as_where_the_speaker_is(words, index, notes), notes), notes), notes)
     words = closed_again(wherever_they_belong(words, notes), notes)

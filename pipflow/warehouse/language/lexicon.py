@@ -695,6 +695,26 @@ def without_particles(toks: list[Tok]) -> list[Tok]:
     return out
 
 
+def put_back_after_its_object(toks: list[Tok]) -> list[Tok]:
+    """ "6 ctn connector from OB put back rack B", "all resistor put back to rack A": the things
+    said first, then "put back" and the place (with or without "to"), as "... go to rack B" says
+    it. Only after something said before it (never "put back 3 X ..."), and before a place."""
+    out: list[Tok] = []
+    k = 0
+    while k < len(toks):
+        t = toks[k]
+        at = k + 2 + (k + 2 < len(toks) and toks[k + 2].kind == "word" and toks[k + 2].value in ("to", "into", "in"))
+        if (t.kind == "word" and t.value == "put" and out and out[-1].kind in ("name", "num")
+                and k + 1 < len(toks) and toks[k + 1].kind == "word" and toks[k + 1].value == "back"
+                and at < len(toks) and toks[at].kind == "name" and toks[at].of == "shelf"):
+            out += [Tok("word", "put", "go"), Tok("word", "back", "to")]
+            k = at
+            continue
+        out.append(t)
+        k += 1
+    return out
+
+
 #: grammar verbs that put what was taken somewhere (the verb lexicon's words are read as these)
 _PUTTING = frozenset({"put", "drop", "stick", "pop", "leave", "stack", "dump", "load", "toss", "bring", "take",
                       "move", "send", "shift", "carry", "throw", "stock", "store", "park"})
@@ -1189,7 +1209,7 @@ class Lexicon:
         toks, framed = without_request_frames(read_counts(_split_hyphens(fixed, self.keywords)), verbs)
         toks = item_as_subject(fronted_source(to_be_done(needs_doing(by_as_at(toks), verbs), verbs), verbs))
         toks = lexicon_verbs(quantity_phrases(addressed_anyone(stative_having(toks)), self.keywords), self.keywords)
-        toks = dropped_object(corrected_later(without_particles(corrected(toks))))
+        toks = dropped_object(corrected_later(without_particles(put_back_after_its_object(corrected(toks)))))
         self._framed = (radio.aside if radio is not None else []) + feelings + framed
         self.corrected = accented + starred
         return self._split(toks, stops)
