@@ -123,3 +123,18 @@ def test_so_before_an_order_joins_its_reason_to_it(said: str) -> None:
 
 def test_so_as_a_degree_is_no_clause_mark() -> None:
     assert studio_goal("the radio is so loud") == studio_goal("the radio is too loud")
+
+
+def test_so_opening_a_sentence_says_nothing() -> None:
+    assert studio_goal("so put the novel on the nightstand") == studio_goal(PLAIN)
+
+
+@pytest.mark.parametrize("said", ["put the juice in the icebox so it is cold",
+                                  "put the juice in the icebox so that it stays cold"])
+def test_so_and_the_result_after_an_order_is_what_for(said: str) -> None:
+    assert studio_goal(said) == studio_goal("put the juice in the icebox")
+
+
+def test_a_result_with_a_negation_is_never_set_aside() -> None:
+    with pytest.raises(TranslationError):
+        translate("put the juice in the icebox so it is not warm", STUDIO)

@@ -142,3 +142,20 @@ def test_a_rule_passed_on_is_the_rule() -> None:
 ])
 def test_put_back_after_the_things_and_before_a_place_is_where_they_go(said: str, plain: str) -> None:
     assert goal(said) == goal(plain)
+
+
+@pytest.mark.parametrize("said", ["backroom flour: 3 to dock, rest to packing", "backroom flour 3 to dock, rest to packing"])
+def test_counts_sent_on_from_a_place_and_item_said_first(said: str) -> None:
+    assert goal(said) == goal("move 3 flour from backroom to dock, rest to packing")
+
+
+def test_robots_of_a_tag_are_the_tag_s_robots() -> None:
+    tagged = copy.deepcopy(STORE)
+    tagged["robots"]["mule"]["tags"] = ["night_shift"]
+    tagged["robots"]["ox"] = {"start": [5, 1], "skills": {"carry": 3}, "kind": "forklift", "tags": ["night_shift"]}
+    assert understand("move 3 flour from backroom to dock, robots of night_shift only", tagged)["constraints"] == \
+        understand("move 3 flour from backroom to dock, night_shift robots only", tagged)["constraints"]
+
+
+def test_at_the_end_of_the_day_is_when() -> None:
+    assert goal("dock must have 6 flour at end of day") == {"dock": {"flour": 6}}

@@ -8,6 +8,7 @@ from pipflow.household.language.lexicon import (DURATION_HEDGES, DURATION_UNITS,
                                                 MANNERS, MEALS, MEASURES, ORDER_WORDS, ORDINAL_DETERMINERS, PHRASES, PURPOSE_INFINITIVES,
                                                 PURPOSE_WORDS, PURPOSES, TIME_WORDS)
 from pipflow.household.language.tokens import PUNCT
+from pipflow.language.asides import near_operative
 from pipflow.language.numbers import read_number
 
 
@@ -471,17 +472,38 @@ def _same_for_at(words: list[str], k: int) -> tuple[int, int] | None:
     return thing, end
 
 
+#: the pronouns and verbs of being of a result said after "so" ("so they are cold")
+_RESULT_SUBJECTS = {"it", "they", "its", "theyre", "that"}
+_RESULT_BE = {"is", "are", "s", "stays", "stay", "keeps", "keep", "will", "gets", "get"}
+
+
 def so_before_an_order(words: list[str], notes: list[str]) -> list[str]:
-    """ "the pan is still dirty so wash it": "so" before a verb of the lexicon joins a reason to
-    the order it leads to; read as a clause mark (the reason is then read as the order's topic or
-    cue, as "the pan is dirty, wash it" is)."""
+    """ "so" as speech joins clauses: opening a sentence it says nothing ("so grab my hoodie ...");
+    before a verb of the lexicon it joins a reason to the order it leads to, read as a clause mark
+    ("the pan is still dirty so wash it": the reason is then the order's topic or cue, as "the pan
+    is dirty, wash it" is); "so (that) it is / they are ..." closing a clause after an order is
+    what the order is for ("put the wine in the fridge so they are cold"), set aside."""
     out: list[str] = []
-    for k, w in enumerate(words):
-        verb = k + 1 < len(words) and str(PHRASES.get((words[k + 1],), ("",))[0]).startswith("V")
-        if w == "so" and verb and out and out[-1] not in ("and", "but", "or"):
-            if out[-1] not in PUNCT:
-                out.append(",")
-            notes.append(f"'so {words[k + 1]}': the order the words before it lead to")
+    k = 0
+    while k < len(words):
+        w, nxt = words[k], words[k + 1] if k + 1 < len(words) else ""
+        if w != "so" or out[-1:] in (["and"], ["but"], ["or"]):
+            out.append(w)
+            k += 1
             continue
-        out.append(w)
+        result = k + 1 + (nxt == "that")
+        end = next((j for j in range(k + 1, len(words)) if words[j] in PUNCT), len(words))
+        if not out or out[-1] in (".", "!", "?", ";"):
+            notes.append("'so' opening a sentence says nothing of the order")
+        elif str(PHRASES.get((nxt,), ("",))[0]).startswith("V"):
+            out += [] if out[-1] in PUNCT else [","]
+            notes.append(f"'so {nxt}': the order the words before it lead to")
+        elif out[-1] not in PUNCT and result + 1 < end and words[result] in _RESULT_SUBJECTS \
+                and words[result + 1] in _RESULT_BE and not any(near_operative(x) for x in words[k + 1:end]):
+            notes.append(f"'{' '.join(words[k:end])}' says what for, not what the home should end like")
+            k = end
+            continue
+        else:
+            out.append(w)
+        k += 1
     return out

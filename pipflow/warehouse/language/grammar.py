@@ -523,6 +523,8 @@ robot: ROBOTWORD? ROBOT                                   -> r_name
 rnum: NUM                                                 -> r_number
 rgroup: (all | "a" | "an" | "any")? (RKIND | RTAG)        -> r_kind
       | all? ROBOTWORD ("tagged" | "labelled" | "labeled" | "marked") (RTAG | RKIND) -> r_kind
+      // "robots of night_shift" (Spanish and Portuguese "robôs do turno"): the tag's robots
+      | all? ROBOTWORD ("of" | "from") (RTAG | RKIND)      -> r_kind
       // "robots with a cage pass", "robots that have a cold rating": a tag they carry
       | all? ROBOTWORD ("with" | ("that" | "who") ("have" | "hold" | "carry")) ("a" | "an")? RTAG -> r_kind
       | all? (RTAG | RKIND) ROBOTWORD                      -> r_kind

@@ -140,6 +140,10 @@ IDIOMS = ((re.compile(r"\b(as|what)\s+she(?=\s+(?:is|was|stands|has)\b|['\u2019]
                       rf"(?!(?:{_NUMBER}|\d))", re.IGNORECASE), r"\1move \2"),
           # "P has at least 5 X on." closing its sentence: on it
           (re.compile(r"\b(has|have|got|holds?)\b([^.;!?\n]*?\d[^.;!?\n]*?)\s+on(?=\s*(?:[.;!?]|$))", re.IGNORECASE), r"\1\2 on it"),
+          # "at (the) end of (the) day / shift": by the end, an aside the grammar has (its words
+          # "day", "night" stay fillers and words of tags: "night shift robots")
+          (re.compile(r"\b(?:at|by|before|for)\s+(?:the\s+)?end\s+of\s+(?:the\s+)?(?:day|shift|night|week)\b",
+                      re.IGNORECASE), "by end"),
           # South African "sharp sharp" (all right, goodbye, quickly): no content
           (re.compile(r"[,;]?\s*\bsharp\s+sharp\b", re.IGNORECASE), ""),
           # "between 4 to 6" (Indian English): between 4 and 6; "b/w": between; "&": and
@@ -715,6 +719,29 @@ def put_back_after_its_object(toks: list[Tok]) -> list[Tok]:
     return out
 
 
+def counts_sent_from_a_topic(toks: list[Tok]) -> list[Tok]:
+    """ "bunker carboys: 2 to counter and rest to mezz", "rack B resistor 5 to kitting, rest go
+    OB": a place and an item said first, then counts sent on from there; read as "move 2 carboys
+    from bunker to counter and rest to mezz". Only at a sentence's start, with a count and "to"
+    right after the item."""
+    k = 0
+    out: list[Tok] = []
+    while k < len(toks):
+        opens = not out or (out[-1].kind == "punct" and out[-1].value in (".", ";", "!", "?"))
+        colon = k + 3 < len(toks) and toks[k + 3].kind == "punct" and toks[k + 3].value == ":"
+        n = k + 3 + colon
+        if (opens and n + 1 < len(toks) and toks[k].kind == "name" and toks[k].of == "shelf"
+                and toks[k + 1].kind == "word" and toks[k + 1].value == POSS_MARK
+                and toks[k + 2].kind == "name" and toks[k + 2].of == "product"
+                and toks[n].kind == "num" and toks[n + 1].kind == "word" and toks[n + 1].value == "to"):
+            out += [Tok("word", "", "move"), toks[n], toks[k + 2], Tok("word", "", "from"), toks[k]]
+            k = n + 1
+            continue
+        out.append(toks[k])
+        k += 1
+    return out
+
+
 #: grammar verbs that put what was taken somewhere (the verb lexicon's words are read as these)
 _PUTTING = frozenset({"put", "drop", "stick", "pop", "leave", "stack", "dump", "load", "toss", "bring", "take",
                       "move", "send", "shift", "carry", "throw", "stock", "store", "park"})
@@ -1209,7 +1236,8 @@ class Lexicon:
         toks, framed = without_request_frames(read_counts(_split_hyphens(fixed, self.keywords)), verbs)
         toks = item_as_subject(fronted_source(to_be_done(needs_doing(by_as_at(toks), verbs), verbs), verbs))
         toks = lexicon_verbs(quantity_phrases(addressed_anyone(stative_having(toks)), self.keywords), self.keywords)
-        toks = dropped_object(corrected_later(without_particles(put_back_after_its_object(corrected(toks)))))
+        toks = put_back_after_its_object(counts_sent_from_a_topic(corrected(toks)))
+        toks = dropped_object(corrected_later(without_particles(toks)))
         self._framed = (radio.aside if radio is not None else []) + feelings + framed
         self.corrected = accented + starred
         return self._split(toks, stops)

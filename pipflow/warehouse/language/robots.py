@@ -111,7 +111,8 @@ class RobotSelector:
         said = [w for w in words.lower().replace("-", " ").split() if w.isalpha()]
         if not said or set(said) & GROUP_WORDS:
             return
-        noun = said[-1]
+        # "robots of night_shift": the noun before "of" is the one said in the plural or not
+        noun = said[said.index("of") - 1] if "of" in said[1:] else said[-1]
         value = said_as if said_as is not None else str(next(iter(sel.values())))
         if noun.endswith("s") and noun != normalize(value).replace(" ", ""):
             return  # plural: "forklifts", "night robots"
