@@ -138,3 +138,9 @@ def test_so_and_the_result_after_an_order_is_what_for(said: str) -> None:
 def test_a_result_with_a_negation_is_never_set_aside() -> None:
     with pytest.raises(TranslationError):
         translate("put the juice in the icebox so it is not warm", STUDIO)
+
+
+@pytest.mark.parametrize("said", ["the teacup is still standing on the coffee table since breakfast",
+                                  "the teacup is still filthy from sunday lekker"])
+def test_standing_is_left_lying_and_lekker_says_nothing(said: str) -> None:
+    assert studio_goal(said) == studio_goal("wash the teacup")

@@ -141,7 +141,7 @@ _add("STAY", "where it is,where they are,as it is,as they are,alone,in place,whe
 #: "my coat has been lying on the sofa": a thing said to lie about somewhere, disorder like ``MESS``
 #: (British "sat", "stood": "the butter's been sat out on the table"; "out" before where it is)
 _add("LYING", "lying,left lying,lying there,sitting there,sitting,sat,sat there,stood,stood there,standing there,"
-     "lying out,sitting out,sat out,stood out,standing out,left sitting,left sat,left standing,left stood")
+     "lying out,sitting out,sat out,stood out,standing out,left sitting,left sat,left standing,left stood,standing")
 #: "the fridge has been left open": a state complained of (a class the tagger gives "has been
 #: left" before a state word: :func:`pipflow.household.language.retag.left_lying`)
 _add("LEFTAS", "left as is")
@@ -544,7 +544,7 @@ FILLER = {("um",), ("umm",), ("uh",), ("uhh",), ("uhm",), ("er",), ("erm",),   #
           # South African English and Afrikaans beside the request ("ag, put the ...", "ja, and wash
           # ...", "nee man", "shame" for sympathy, "jislaaik"): no content
           ("ag",), ("ag", "man"), ("ag", "no"), ("ja",), ("ja", "nee"), ("nee", "man"), ("shame",), ("jislaaik",),
-          ("yebo",),
+          ("yebo",), ("lekker",),
           # the team told or asked, by the one who talks to the assistant ("tell the robots to put
           # ..."): the request itself
           *((verb, who, "to") for verb in ("tell", "ask", "get") for who in ("them", "everyone")),
