@@ -159,3 +159,18 @@ def test_robots_of_a_tag_are_the_tag_s_robots() -> None:
 
 def test_at_the_end_of_the_day_is_when() -> None:
     assert goal("dock must have 6 flour at end of day") == {"dock": {"flour": 6}}
+
+
+def test_tag_ones_and_robot_can_carry_are_robot_groups() -> None:
+    tagged = copy.deepcopy(STORE)
+    tagged["robots"]["mule"]["tags"] = ["esd_safe"]
+    move = "move 3 flour from backroom to dock"
+    assert understand(f"{move}, use esd_safe ones only", tagged)["constraints"] == \
+        understand(f"{move}, esd_safe robots only", tagged)["constraints"]
+    assert understand(f"{move}. Only robot can carry 3 or above", tagged)["constraints"] == \
+        understand(f"{move}. only robots that can carry 3 or more", tagged)["constraints"]
+
+
+def test_a_robot_said_first_then_dont_use_is_never_that_robot() -> None:
+    got = understand("mule dun use. move 3 flour from backroom to dock", STORE)
+    assert got["constraints"] == understand("dont use mule. move 3 flour from backroom to dock", STORE)["constraints"]

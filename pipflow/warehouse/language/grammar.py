@@ -527,9 +527,9 @@ rgroup: (all | "a" | "an" | "any")? (RKIND | RTAG)        -> r_kind
       | all? ROBOTWORD ("of" | "from") (RTAG | RKIND)      -> r_kind
       // "robots with a cage pass", "robots that have a cold rating": a tag they carry
       | all? ROBOTWORD ("with" | ("that" | "who") ("have" | "hold" | "carry")) ("a" | "an")? RTAG -> r_kind
-      | all? (RTAG | RKIND) ROBOTWORD                      -> r_kind
+      | all? (RTAG | RKIND) (ROBOTWORD | "ones")           -> r_kind
       | all? (RTAG | RKIND) ("shift" | "crew" | "team" | "squad") ROBOTWORD? -> r_kind
-      | all? ROBOTWORD ("that" | "who") able? skillv NUM ("or" "more" | "or" "above" | "plus") -> r_skill_min
+      | all? ROBOTWORD ("that" | "who")? able? skillv NUM ("or" "more" | "or" "above" | "plus") -> r_skill_min
       | all? ROBOTWORD ("that" | "who") able? skillv ("at" "least" | "no" "less" "than" | "no" "fewer" "than") NUM -> r_skill_min
       | all? ROBOTWORD ("that" | "who") able? skillv NUM "or" ("less" | "fewer" | "below") -> r_skill_max
       | all? ROBOTWORD ("that" | "who") able? skillv ("at" "most" | "no" "more" "than") NUM -> r_skill_max
@@ -624,6 +624,8 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | robots (("is" | "are") "not" | "isnt" | "arent") "to" "be" ("used" | "involved" | "employed" | "assigned") rscope -> rule_never
     // a notice, its "is" left out: "Queenie not to be used", "Only tuggers to be used"
     | robots "not" "to" "be" ("used" | "involved" | "employed" | "assigned") rscope -> rule_never
+    // the robot said first, then "don't use" (Hong Kong and Singapore English: "fork 2 dun use")
+    | robots ("dont" | "do" "not" | "no" | "cannot" | "cant") ("use" | "used" | "to" "use") rscope -> rule_never
     | ("only" | "just") robots "to" "be" ("used" | "involved" | "employed" | "assigned") rscope -> rule_only
     | robots (("is" | "are") "not" | "isnt" | "arent") "to" act rscope -> rule_never
     | robots modal? ("stay" | "keep") ("away" | "clear") from places -> rule_away

@@ -26,7 +26,8 @@ from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS, is_number
 from pipflow.language.radio import transmission
 from pipflow.language.spelling import distance, normalize, plural_forms, slip, tolerance
 from pipflow.warehouse.language.grammar import ASIDE_ONLY
-from pipflow.warehouse.language.names import CONTAINERS, KIND_WORDS, POSS_MARK, STOPWORDS, NameIndex, Tok, read_counts, recognize
+from pipflow.warehouse.language.names import (CONTAINERS, KIND_WORDS, POSS_MARK, STOPWORDS, NameIndex, Tok, read_counts,
+                                              recognize)
 from pipflow.warehouse.language.reordered import (base_verb, fronted_source, item_as_subject, needs_doing, said_at,
                                                 to_be_done)
 from pipflow.warehouse.language.wordorder import left_dislocated, noun_adjuncts, numbered_siblings, unmarked_lists
@@ -532,6 +533,7 @@ _COURTESIES = {"pls", "plz", "please", "kindly"}
 
 
 def _opens_clause(toks: list[Tok], k: int) -> bool:
+    """Whether the token at ``k`` opens a sentence or a clause (a request frame is said there)."""
     return k == 0 or (toks[k - 1].kind == "punct" and toks[k - 1].value in (".", ";", "!", "?", ",", ":"))
 
 

@@ -298,6 +298,7 @@ def _contents(names: list["_Name"]) -> dict[str, "_Name | None"]:
         out[held] = None if held in out else n
     return out
 
+
 def _compound_parts(word: str) -> list[list[str]]:
     """The ways a one-word name splits into two common English words ("outbound": out + bound,
     "drycab": dry + cab), each of two letters or more."""
