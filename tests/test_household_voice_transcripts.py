@@ -144,3 +144,11 @@ def test_a_result_with_a_negation_is_never_set_aside() -> None:
                                   "the teacup is still filthy from sunday lekker"])
 def test_standing_is_left_lying_and_lekker_says_nothing(said: str) -> None:
     assert studio_goal(said) == studio_goal("wash the teacup")
+
+
+def test_so_before_a_verb_without_an_object_is_a_degree() -> None:
+    """ "it's ever so close in here": "close" is a verb of the lexicon, but nothing follows it."""
+    assert studio_goal("the teacup is still dirty so wash it") == studio_goal("wash the teacup")
+    with pytest.raises(TranslationError) as caught:
+        translate("the radio is ever so close in here", STUDIO)
+    assert "describes the home but asks for nothing" in str(caught.value)   # read whole, as said

@@ -472,6 +472,10 @@ def _same_for_at(words: list[str], k: int) -> tuple[int, int] | None:
     return thing, end
 
 
+#: words an order's object opens with: "so" before a verb and one of these is an order ("so wash
+#: it", "so close the door"); "ever so close in here" is a degree
+_OBJECT_OPENERS = {"the", "it", "them", "my", "your", "his", "her", "our", "their", "that", "this", "those", "these",
+                   "a", "an", "some", "all", "both", "everything", "up", "down", "off", "on", "out", "away"}
 #: the pronouns and verbs of being of a result said after "so" ("so they are cold")
 _RESULT_SUBJECTS = {"it", "they", "its", "theyre", "that"}
 _RESULT_BE = {"is", "are", "s", "stays", "stay", "keeps", "keep", "will", "gets", "get"}
@@ -479,10 +483,11 @@ _RESULT_BE = {"is", "are", "s", "stays", "stay", "keeps", "keep", "will", "gets"
 
 def so_before_an_order(words: list[str], notes: list[str]) -> list[str]:
     """ "so" as speech joins clauses: opening a sentence it says nothing ("so grab my hoodie ...");
-    before a verb of the lexicon it joins a reason to the order it leads to, read as a clause mark
-    ("the pan is still dirty so wash it": the reason is then the order's topic or cue, as "the pan
-    is dirty, wash it" is); "so (that) it is / they are ..." closing a clause after an order is
-    what the order is for ("put the wine in the fridge so they are cold"), set aside."""
+    before a verb of the lexicon and its object it joins a reason to the order it leads to, read as
+    a clause mark ("the pan is still dirty so wash it": the reason is then the order's topic or
+    cue, as "the pan is dirty, wash it" is; "ever so close in here" is a degree); "so (that) it is
+    / they are ..." closing a clause after an order is what the order is for ("put the wine in the
+    fridge so they are cold"), set aside."""
     out: list[str] = []
     k = 0
     while k < len(words):
@@ -495,7 +500,8 @@ def so_before_an_order(words: list[str], notes: list[str]) -> list[str]:
         end = next((j for j in range(k + 1, len(words)) if words[j] in PUNCT), len(words))
         if not out or out[-1] in (".", "!", "?", ";"):
             notes.append("'so' opening a sentence says nothing of the order")
-        elif str(PHRASES.get((nxt,), ("",))[0]).startswith("V"):
+        elif str(PHRASES.get((nxt,), ("",))[0]).startswith("V") and words[k + 2:k + 3] and \
+                words[k + 2] in _OBJECT_OPENERS:
             out += [] if out[-1] in PUNCT else [","]
             notes.append(f"'so {nxt}': the order the words before it lead to")
         elif out[-1] not in PUNCT and result + 1 < end and words[result] in _RESULT_SUBJECTS \
