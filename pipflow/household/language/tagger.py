@@ -113,7 +113,7 @@ def owners_as_the(command: str, world: dict, notes: list[str]) -> str:
     # the apostrophe unwritten ("johans beers", speech to text): only where neither the word nor
     # the word without its "s" is known
     return re.sub(r"(?<![\w'’])([A-Za-z][a-z]+)s\s+([A-Za-z]+)",
-                  lambda m: owner(m) if unknown(m.group(0).split()[0].lower()) else m.group(0), command)
+                  lambda m: owner(m) if unknown(m.group(1).lower() + "s") else m.group(0), command)
 
 
 def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: list[str]) -> list[str]:

@@ -380,15 +380,11 @@ class GoalRules:
 
     def g_poss_make(self, node: Tree) -> None:
         """ "Row A's brake pads - make it 2": that place's item, set to the count."""
-        words = self.words(node)
-        place = [str(self.sub(node, "posplace")[0].children[0].value)]
-        head = self.ihead(self.sub(node, "ihead")[0], words)
-        n = int(self.toks(node, "NUM")[-1].value)
-        self.put(place, "one", [{"items": {"names": [head]}, "amount": {"count": n}, "words": words}], words)
+        self._poss_amount(node, "count")
 
     def _poss_amount(self, node: Tree, amount: str) -> None:
-        """ "OB connector max 4", "bay 1 nuts take away 3": the place and the item said first (read
-        as that place's item), then what to do with its count."""
+        """ "OB connector max 4", "bay 1 nuts take away 3", "Row A's brake pads - make it 2": the
+        place and the item said first (read as that place's item), then what to do with its count."""
         words = self.words(node)
         place = [str(self.sub(node, "posplace")[0].children[0].value)]
         head = self.ihead(self.sub(node, "ihead")[0], words)
