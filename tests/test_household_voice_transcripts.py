@@ -152,3 +152,32 @@ def test_so_before_a_verb_without_an_object_is_a_degree() -> None:
     with pytest.raises(TranslationError) as caught:
         translate("the radio is ever so close in here", STUDIO)
     assert "describes the home but asks for nothing" in str(caught.value)   # read whole, as said
+
+
+@pytest.mark.parametrize("said", [
+    "wash the teacup on the coffee table, and the glass too",
+    "wash the teacup on the coffee table and the glass too",
+])
+def test_a_place_that_said_which_things_is_not_repeated_with_an_elided_verb(said: str) -> None:
+    """ "wash the pan on the stove, and the mug too": the stove says which pan (it cannot wash);
+    the mug is washed too, not refused as impossible because the stove cannot wash it."""
+    assert studio_goal(said) == studio_goal("wash the teacup and the glass")
+
+
+def test_every_part_that_holds_a_word_not_understood_is_left_out_at_once_in_a_candidate() -> None:
+    """A remark with two words the home lacks ("grandpa", "was") beside an order in its sentence:
+    offered without that clause (the order of its sentence kept), the part said in the echo."""
+    with pytest.raises(TranslationError) as caught:
+        translate("wash the teacup, grandpa was at it again with his tea. and put the novel on the nightstand", STUDIO)
+    offered = caught.value.candidates
+    assert offered[0]["goal"]["state"] == {"teacup": ["clean"]}
+    assert offered[0]["goal"]["in"] == {"nightstand": ["novel"]}
+    assert "read without 'grandpa was at it again with his tea'" in offered[0]["reading"]
+
+
+@pytest.mark.parametrize("said", ["put the novel on the nightstand, the grandchildren never tidy a thing",
+                                  "put the novel on the nightstand, not the grandchildren's things"])
+def test_a_part_that_says_no_or_never_is_never_left_out_of_a_candidate(said: str) -> None:
+    with pytest.raises(TranslationError) as caught:
+        translate(said, STUDIO)
+    assert not any(c["goal"].get("in") == {"nightstand": ["novel"]} for c in caught.value.candidates)

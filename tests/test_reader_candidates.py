@@ -105,3 +105,13 @@ def test_a_command_read_again_after_its_world_gained_a_name_sees_the_name() -> N
         understand("put 2 pumps on the loft", world)
     world["shelves"]["loft"] = {"x": 14, "y": 3, "width": 3, "depth": 2, "capacity": 6, "access": [15, 6]}
     assert understand("put 2 pumps on the loft", world)["goal"] == {"loft": {"pump": 2}}
+
+
+def test_a_sentence_whose_clause_does_not_read_is_offered_with_another_sentence_left_out() -> None:
+    """Two sentences, neither reads whole: the first without its talking clause ("we need space")
+    and the second left out (no rule places its words) make one candidate, both named."""
+    offered = _offered("Move 2 inner tubes from the front rack to the wall hooks, we need space for the van. "
+                       "Ta ever so kindly squire.")
+    hit = [c for c in offered if c["goal"] == {"front_rack": {"inner_tube": 3}, "wall_hooks": {"inner_tube": 2}}]
+    assert hit, offered
+    assert hit[0]["unread"] == [", we need space", "Ta ever so squire"]

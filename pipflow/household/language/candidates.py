@@ -45,13 +45,13 @@ from pipflow.household.language.names import per_world, world_phrases
 from pipflow.household.language.rewrites import without_duration
 from pipflow.household.language.tagger import tag
 from pipflow.household.language.typos import known_word, vocabulary
-from pipflow.language.asides import FUNCTION_WORDS, near_operative
+from pipflow.language.asides import BOUNDS, EXCLUSIVITY, FUNCTION_WORDS, NEGATION, near_operative
 from pipflow.language.spelling import distance
 
 #: at most this many candidate readings are offered
 MAX_CANDIDATES = 3
 #: at most this many other wordings are read while looking for them
-MAX_TRIES = 16
+MAX_TRIES = 18
 #: at most this many changes make one wording (a repair, then a word left out, ...)
 MAX_CHANGES = 3
 #: words the reader refuses that join a list, and the joiner a candidate reads them as ("or" is
@@ -65,6 +65,11 @@ FREE_TO_DROP = {"empty", "full", "whole", "single", "first", "then", "after", "b
 APPRAISALS = {"fine", "ok", "okay", "good", "nice", "great", "alright", "normal", "perfect", "lovely"}
 #: clause marks of the command (dashes and brackets set a clause off too)
 _CLAUSE_SPLIT = re.compile(r"[,.;:!?()\[\]\u2013\u2014]|\s-\s")
+#: where a sentence ends (its mark kept with it) or a line breaks
+_SENTENCE_SPLIT = re.compile(r"(?<=[.!?])\s+|\n")
+#: words that narrow what is asked (no, only, except, bounds): a part that holds one is never left
+#: out of a candidate reading, which would then ask for more than was said
+_NARROWING = NEGATION | EXCLUSIVITY | BOUNDS
 
 
 def _goal_key(goal: dict) -> str:
@@ -230,6 +235,7 @@ def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[
     out += _topics([p.strip() for p in _CLAUSE_SPLIT.split(command) if p.strip()], index)
     out += _stopped_wordings(words, index, error)
     parts = [p.strip() for p in _CLAUSE_SPLIT.split(command) if p.strip()]
+    out += _without_unread_parts(command, parts, unknown)
     if len(parts) > 1:
         for part in parts:
             ws = words_of(part)
@@ -239,6 +245,23 @@ def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[
     for w in unknown:   # "put the cattle on": speech to text's word for one that sounds the same (last: it
         # must not take the tries of the wordings above, which find more)
         out += [(swap(w, v), f"'{w}' read as '{v}' (said alike)", v, {}) for v in _said_alike(w, vocab)]
+    return out
+
+
+def _without_unread_parts(command: str, clauses: list[str], unknown: list[str]) -> list[tuple[str, str, str, dict]]:
+    """ "Open the toy trunk, put the doll inside. Whole week the grandchildren's things are lying
+    everywhere.": the command without every clause, then without every sentence, that holds a word
+    not understood, at once (one at a time, the others' words would still be in the way). A part
+    that says no, only, except or a bound is kept: dropped, the rest would ask for more."""
+    unread = set(unknown)
+    out: list[tuple[str, str, str, dict]] = []
+    for parts, joiner in ((clauses, " , "), ([p.strip() for p in _SENTENCE_SPLIT.split(command) if p.strip()], " ")):
+        dropped = [p for p in parts if set(words_of(p)) & unread and not set(words_of(p)) & _NARROWING]
+        if not dropped or len(dropped) == len(parts):
+            continue
+        rest = joiner.join(p for p in parts if p not in dropped)
+        said = "; ".join(p.strip(" .!?") for p in dropped)
+        out.append((rest, f"read without '{said}' (not understood)", " ".join(words_of(rest)), {}))
     return out
 
 

@@ -564,6 +564,8 @@ class Resolver:
         st, named = self._via_as_where_things_are(st, words)
         if named is None:
             named = self.objects(st["things"], words, cond=cond, exceptions=st.get("except"))
+        else:   # the place said which things: a verb elided after this clause repeats no place
+            self.previous = st
         if st.get("once"):
             self.once(named, cond, words)
             return

@@ -142,7 +142,12 @@ def parse_reading(command: str, world: dict, picks: dict | None = None) -> dict:
             error.sentence = index  # type: ignore[attr-defined]  # for the candidates (parse)
             _locate(error, lexed, lex)
             if salvage and salvage != "sentence":
-                raise error from None  # the partial parse read the sentence without its talk already
+                # the partial parse read the sentence without its talk already; in a command of
+                # several sentences, the others' partial parses are offered without this one
+                if len(sentences) > 1 and not isinstance(error, Choice):
+                    unread.append(said(lexed))
+                    continue
+                raise error from None
             again = _second_reading(lexed, error, lex, selector, world, memory, pick,
                                     droppable=salvage == "sentence" and len(sentences) > 1)
             if again is None:
