@@ -96,6 +96,8 @@ ADDRESSEES = frozenset({"all", "everyone", "everybody", "team", "folks", "guys",
                         "gents", "gentlemen", "kids", "sir", "madam", "friends", "colleagues", "staff", "squad",
                         # Welsh English ("Morning bud", "Alright butt")
                         "bud", "butt", "butty", "bach",
+                        # Scots and northern English ("Morning son", "ta hen"), and the young's "bro"
+                        "son", "hen", "sunshine", "bro", "bruv", "dude",
                         # Nigerian English and Pidgin ("Good morning una": you all; "oga": boss)
                         "una", "oga", "ogas",
                         # Kenyan English and Sheng ("Sawa wasee": OK guys; "mzee": elder, sir)
@@ -110,6 +112,7 @@ THANKS = frozenset({"thanks", "ta", "cheers", "thx", "ty", "tyvm", "thankyou", "
 #: who an order is said to, or a tag that closes it, without a comma before it ("... on dispatch
 #: please mate", "... forklifts only mind", "... thanks lads"): never a word that is operative
 CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "boss", "love", "pet", "hun",
+                     "son", "hen", "sunshine", "buddy", "bro", "bruv", "dude",
                      "mind", "yeah", "eh", "cheers", "ta", "thanks", "thx", "ty", "tyvm", "thankyou", "dankie",
                      "man", "bru", "boet", "chale", "bud", "butt", "butty", "bach", "diolch", "merci", "svp", "stp",
                      "asante", "asanteni", "bana", "mzee", "gracias", "jefe"})
@@ -146,10 +149,10 @@ def trailing_thanks(words: list[str], content: Callable[[str], bool]) -> int:
 #: only as the opening word, and never before a pronoun or "then" ("before that" orders the
 #: command's own parts). Not "but", "except", "so", "and", "or", "then": they join or restrict.
 ADJUNCTS = frozenset({"for", "before", "after", "by", "until", "till", "once", "when", "while", "because",
-                      "since", "as", "cause", "cos", "coz", "cuz", "ahead"})
+                      "since", "as", "cause", "cos", "coz", "cuz", "ahead", "b4"})
 #: adjunct openings of time: what follows says when ("before the van comes", "ahead of the count"),
 #: its verb describes
-TEMPORAL = frozenset({"before", "after", "until", "till", "when", "once", "while", "by", "ahead"})
+TEMPORAL = frozenset({"before", "after", "until", "till", "when", "once", "while", "by", "ahead", "b4"})   # "b4": texted
 #: adjunct openings of purpose and reason: what follows says what for ("for the Hadleys order"), and
 #: a word of the grammar in it ("order", "delivery") orders nothing
 PURPOSIVE = frozenset({"for", "because", "cause", "cos", "coz", "cuz"})

@@ -135,6 +135,7 @@ def semantic_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
 
     robots = data.get("robots") if isinstance(data.get("robots"), dict) else {}
     out += robot_label_diagnostics(data, locate)
+    out += declared_word_diagnostics(data, locate)
     grid = FootprintGrid(geo)  # a robot's start against the shelves near it, not every shelf
     for rname, robot in robots.items():
         start = robot.get("start") if isinstance(robot, dict) else None
@@ -150,18 +151,45 @@ def semantic_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
     return out
 
 
+def declared_word_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
+    """A word the file declares for a thing (``words``) that another thing is named or declared by:
+    the reader could never tell which is meant, so the file is refused where it says so."""
+    owner: dict[str, str] = {}
+    for key in ("shelves", "products", "robots"):
+        for name in (data.get(key) or {}) if isinstance(data.get(key), dict) else ():
+            owner.setdefault(re.sub(r"[^a-z0-9]", "", str(name).lower()), str(name))
+    out: list[Diagnostic] = []
+    for key in ("shelves", "products", "robots"):
+        table = data.get(key) if isinstance(data.get(key), dict) else {}
+        for name, entry in table.items():
+            words = entry.get("words") if isinstance(entry, dict) else None
+            for k, word in enumerate(words if isinstance(words, list) else []):
+                form = re.sub(r"[^a-z0-9]", "", str(word).lower())
+                other = owner.setdefault(form, str(name)) if form else str(name)
+                if other != str(name):
+                    out.append(Diagnostic(locate((key, name, "words", k)),
+                                          f"{word!r} is said of {name!r} and of {other!r}: a word of one thing only"))
+    return out
+
+
 def normalize_robot(robot: dict) -> dict:
     """A robot as later steps see it: ``{start, skills, kind, tags}``; ``kind`` None and ``tags``
     [] when the file gives none, so that consumers never test for the keys."""
     return {"start": list(robot["start"]), "skills": dict(robot["skills"]),
-            "kind": robot.get("kind"), "tags": list(robot.get("tags") or [])}
+            "kind": robot.get("kind"), "tags": list(robot.get("tags") or []), **_words(robot)}
+
+
+def _words(entry: dict) -> dict:
+    """``{"words": [...]}`` where the file says what people call the thing (the offline reader's
+    vocabulary), else nothing: a world without them is the same dict as before they existed."""
+    return {"words": [str(w) for w in entry["words"]]} if entry.get("words") else {}
 
 
 def normalize_world(data: dict, path: Path) -> dict:
     """The world dict of docs/architecture.md: every shelf in ``stock``, zero counts omitted."""
     shelves = {
         name: {"x": s["x"], "y": s["y"], "width": s["width"], "depth": s["depth"],
-               "capacity": s["capacity"], "access": list(s["access"])}
+               "capacity": s["capacity"], "access": list(s["access"]), **_words(s)}
         for name, s in data["shelves"].items()
     }
     stock = {name: {} for name in shelves}

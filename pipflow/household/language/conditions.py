@@ -38,7 +38,9 @@ _PRONOUNS = {"it", "them"}
 _ENDS = {".", "!", "?", ";"}
 #: how an order on the other branch of the last condition opens
 _ELSE = (("if", "not"), ("if", "it", "is", "not"), ("if", "they", "are", "not"), ("otherwise",), ("else",),
-         ("if", "it", "does", "not"), ("if", "not", "then"))
+         ("if", "it", "does", "not"), ("if", "not", "then"),
+         # Scots "no" for not ("if its no, hang it up")
+         ("if", "no"), ("if", "it", "is", "no"), ("if", "its", "no"), ("if", "they", "are", "no"))
 
 
 class Condition(NamedTuple):
@@ -113,6 +115,8 @@ def _conditional(sentence: list[str], world: dict, last: Condition | None) -> tu
     """(the condition, the order) of a sentence that is an order on a condition, else None."""
     end = sentence[-1:] if sentence[-1] in _ENDS else []
     body = sentence[:-1] if end else sentence
+    while body[:1] in (["and"], ["but"], ["oh"], ["so"]) and "if" in body[1:3]:   # "And if the fire's on, ..."
+        body = body[1:]
     for opener in _ELSE:
         if last is not None and tuple(body[:len(opener)]) == opener:
             rest = body[len(opener):]

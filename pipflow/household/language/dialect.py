@@ -4,9 +4,51 @@ demonstrative "those" ("them tea things want washing", northern and Scots Englis
 what was read so."""
 from __future__ import annotations
 
+from typing import Callable
+
 from pipflow.household.language.names import first_words
 from pipflow.household.language.restated import DETERMINERS
 from pipflow.household.language.tokens import PUNCT
+from pipflow.language.scots import SCOTS
+
+#: Scots words the household reader leaves alone: English words with another meaning at home ("a bar
+#: of soap", "ma" for mother, "whit") and "ye", read already (lexicon.normalize)
+_SCOTS_ALSO_ENGLISH = {"bar", "ma", "whit", "ye"}
+#: the grammar's negatives, written out as the household reader writes them ("dont" -> "do not")
+_WRITTEN_OUT = {"dont": "do not", "cant": "can not", "wont": "will not", "doesnt": "does not",
+                "shouldnt": "should not", "mustnt": "must not"}
+#: words after Scots "aw" that make it "all" ("aw the lights", "aw my stuff")
+_ALL_OF = DETERMINERS | {"them", "these", "those", "o", "of"}
+
+
+def scots_as_english(words: list[str], known: Callable[[str], bool], notes: list[str]) -> list[str]:
+    """The words with Scots words read as English (:data:`pipflow.language.scots.SCOTS`: "switch
+    aff the telly", "bring my specs ben", "that yin as well") where the word is no word of the home
+    or of the reader (``known``); "aw" is "all" before what it quantifies ("aw the lights") and
+    "too" after "an" at a clause's end ("the big sheet an aw"); "the morn" is tomorrow."""
+    out: list[str] = []
+    k = 0
+    while k < len(words):
+        w, nxt = words[k], (words[k + 1] if k + 1 < len(words) else ".")
+        if w == "the" and nxt == "morn":
+            out.append("tomorrow")
+            k += 2
+            continue
+        if w in ("an", "and") and nxt == "aw" and (k + 2 >= len(words) or words[k + 2] in PUNCT):
+            notes.append("'an aw' read as 'too' (Scots)")
+            out.append("too")
+            k += 2
+            continue
+        said = "all" if w == "aw" and nxt in _ALL_OF and not known(w) else \
+            SCOTS.get(w) if w not in _SCOTS_ALSO_ENGLISH and not known(w) else None
+        if said is not None:
+            notes.append(f"'{w}' read as '{said}' (Scots)")
+            out += _WRITTEN_OUT.get(said, said).split()
+        else:
+            out.append(w)
+        k += 1
+    return out
+
 
 #: verbs that take two objects ("bring them tea", "get them cups": for them): after one, "them"
 #: may be who the thing is for, so it is not read as "those" (the command is refused, not guessed)
@@ -63,14 +105,20 @@ def cut_as_switch(words: list[str], world: dict, index: dict, notes: list[str]) 
 def put_on_as_switch(words: list[str], world: dict, index: dict, notes: list[str]) -> list[str]:
     """The words with "put" read as "switch" where "on" or "off" and then a thing that switches
     follow it ("put on the radio", "put off the fan" as Indian and Nigerian English say it):
-    "put the radio on" is read already, and "put on the sweater" (no switch) or "put on the
-    trestle" (a place, with its thing said before) keep "put" as placing. A note says so."""
+    "put the radio on" is read already, "put the telly off" (the clause ending there) is switching
+    it off too, and "put on the sweater" (no switch) or "put on the trestle" (a place, with its
+    thing said before) keep "put" as placing. A note says so."""
     out = list(words)
     for k, w in enumerate(words):
         if w == "put" and k + 1 < len(words) and words[k + 1] in _SWITCH_PARTICLES \
                 and _switching_phrase(words, _after_determiners(words, k + 2), world, index):
             out[k] = "switch"
             notes.append(f"'put {words[k + 1]}' read as 'switch {words[k + 1]}'")
+        elif w in ("put", "putting") and k + 1 < len(words):   # "put the telly off": nothing is put off a telly
+            end = _switching_phrase(words, _after_determiners(words, k + 1), world, index)
+            if end and words[end:end + 1] == ["off"] and (end + 1 >= len(words) or words[end + 1] in _CLAUSE_END):
+                out[k] = "switch" if w == "put" else "switching"
+                notes.append("'put ... off' read as 'switch ... off'")
     return out
 
 

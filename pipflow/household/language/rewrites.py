@@ -280,8 +280,8 @@ def heat_purpose(words: list[str], notes: list[str]) -> list[str]:
 
 def particles(words: list[str], names_nothing, notes: list[str]) -> list[str]:
     """Particles and small constructions read as the grammar's words (docs/household.md):
-    "them both" / "them all" as "both of them" / "all of them"; "through to P" as "to P" (to
-    another room: the home model has none); "warm X through" without "through" (heated all the
+    "them both" / "them all" as "both of them" / "all of them"; "through to P" as "to P" and
+    "through from P" as "from P" (to or from another room: the home model has none); "warm X through" without "through" (heated all the
     way: hot); "so W can ..." as "and ..." when W names nothing of the home (a person: who does a
     step is the plan's choice). ``names_nothing(word)``: the word is no name of the world."""
     out: list[str] = []
@@ -294,7 +294,7 @@ def particles(words: list[str], names_nothing, notes: list[str]) -> list[str]:
             notes.append(f"'{' '.join(pair)}' read as '{' '.join(_FLOATED[pair])}'")
             k += 2
             continue
-        if w == "through" and k + 1 < len(words) and words[k + 1] in ("to", "into", "onto", "in", "on") and out \
+        if w == "through" and k + 1 < len(words) and words[k + 1] in ("to", "into", "onto", "in", "on", "from") and out \
                 and out[-1] not in PUNCT:
             notes.append(f"'through {words[k + 1]}' read as '{words[k + 1]}' (the home model has no rooms to go through)")
             k += 1

@@ -14,7 +14,7 @@ from pipflow.language.english import common_word
 from pipflow.household.language.colloquial import colloquial
 from pipflow.household.language.corrections import corrected
 from pipflow.household.language.dialect import (cut_as_switch, on_off_as_verbs, open_close_as_switch, put_on_as_switch,
-                                                them_as_those)
+                                                scots_as_english, them_as_those)
 from pipflow.household.language.headwords import named_again
 from pipflow.household.language.grammar import NOUN_DUAL
 from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
@@ -119,7 +119,8 @@ def owners_as_the(command: str, world: dict, notes: list[str]) -> str:
 def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: list[str]) -> list[str]:
     """The command's words with its colloquial forms, constructions and particles read as the
     grammar's words (each rewrite notes what it read)."""
-    words = so_before_an_order(same_for(colloquial(corrected(words_of(command), notes), notes), notes), notes)
+    words = scots_as_english(words_of(command), lambda w: known_word(w, index, vocab), notes)
+    words = so_before_an_order(same_for(colloquial(corrected(words, notes), notes), notes), notes)
     words = or_under_negation(measures(without_manner(words, notes), index, notes), notes)
     words = heat_purpose(caused(given(me_as_where_the_speaker_is(words, index, notes), notes), notes), notes)
     words = closed_again(wherever_they_belong(words, notes), notes)

@@ -28,11 +28,14 @@ _LEXED_KEPT = 8
 
 
 def names_of(world: dict) -> tuple:
-    """What the lexicon reads of a world: its names, and the robots' kinds, tags and skills."""
+    """What the lexicon reads of a world: its names and the words declared for them, and the
+    robots' kinds, tags and skills."""
     robots = world.get("robots") or {}
+    declared = tuple((key, str(n), repr(e.get("words"))) for key in ("shelves", "products", "robots")
+                     for n, e in (world.get(key) or {}).items() if isinstance(e, dict) and e.get("words"))
     return (tuple(world.get("shelves") or ()), tuple(world.get("products") or ()),
             tuple((str(r), repr(v.get("kind")), repr(v.get("tags")), tuple(v.get("skills") or ()))
-                  if isinstance(v, dict) else (str(r),) for r, v in robots.items()))
+                  if isinstance(v, dict) else (str(r),) for r, v in robots.items()), declared)
 
 
 def lexed_command(command: str, world: dict, stops: frozenset[int] = frozenset()

@@ -164,7 +164,7 @@ loc: prep places                            -> loc
 
 // ---------------------------------------------------------------- verbs
 modal: "should" | "must" | "shall" | "will" | "would" | "ought" "to" | "oughta" | "gotta"
-     | ("needs" | "need" | "has" | "have" | "got") "to" | ("is" | "are" | "be") "supposed" "to"
+     | ("needs" | "need" | "wants" | "want" | "has" | "have" | "got") "to" | ("is" | "are" | "be") "supposed" "to"
      | "supposed" "to" | ("is" | "are") "to" | "to" | "can" | "could" | "may" | "might"
 be: "be" | "is" | "are" | "become" | "becomes" | "end" "up" "with" | "get"
 setv: "has" "got" | "have" "got" | "has" | "have" | "hold" | "holds" | "store" | "stores" | "stock" | "stocks" | "contain"
@@ -355,6 +355,7 @@ goal: there_be items loc                                  -> g_set
     | items from places modal? go? to places                -> g_transfer
     // said without "from": "3 satchels top rack to despatch"
     | items places to places                                -> g_transfer
+    | items "," "from"? places to places                    -> g_transfer
     | items modal? go from places to places                 -> g_transfer
     // "Need 2 lawn feed moving from dock 1 to dock 2", "we want 3 X taking to P from Q"
     | (("i" | "we")? ("need" | "want") | "needs" | "wants") items moving from places to places -> g_transfer

@@ -24,6 +24,7 @@ from pipflow.language.characters import accents_folded, refuse_unread, without_e
 from pipflow.language.english import common_word
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS, is_number
 from pipflow.language.radio import transmission
+from pipflow.language.scots import SCOTS
 from pipflow.language.spelling import distance, normalize, plural_forms, slip, tolerance
 from pipflow.warehouse.language.grammar import ASIDE_ONLY
 from pipflow.warehouse.language.names import (CONTAINERS, KIND_WORDS, POSS_MARK, STOPWORDS, NameIndex, Tok, read_counts,
@@ -44,6 +45,8 @@ FILLERS = {"the", "please", "kindly", "units", "unit", "pieces", "piece", "boxes
            "now", "today", "currently", "sku", "skus", "of", "moment", "pls", "plz", "asap", "thx",
            "completely", "entirely", "immediately", "soon", "tonight", "thanks", "overnight",
            "sharpish", "pronto", "promptly", "swiftly",
+           # a sentence adverb that only turns to the next thing ("Anyway send 6 ...")
+           "anyway", "anyways",
            # South African interjections, said anywhere in a sentence ("ag the cage is packed", "ja so swap")
            "eish", "ag", "ja", "yebo", "hayibo", "haibo", "jislaaik",
            # Indian English: "6 nos" (numbers: units), "at 3 pm itself" (emphasis), "Meanwhile move ...",
@@ -76,15 +79,11 @@ EXACT_WORDS = {"exactly", "precisely"}
 SPELLINGS = {"shud": "should", "shld": "should", "u": "you", "r": "are", "wont": "wont", "gonna": "will",
              "wanna": "want", "lemme": "let", "cuz": "because", "thru": "through", "frm": "from",
              "em": "them", "yous": "you", "youse": "you", "ya": "you", "yer": "your", "atm": "now", "dun": "dont", "hv": "have",
+             "b4": "before", "tmrw": "tomorrow", "tmr": "tomorrow", "2moro": "tomorrow",
              # "whatever's on P" typed or transcribed without its apostrophe: its "'s" is "is"
              "whatevers": "whatever"}
 #: Scots spellings of the grammar's own words ("shift 5 corks fae pend tae steading", "take 2 aff
 #: vault", "dinnae touch it"), read only where the word is no word of the world's names
-SCOTS = {"fae": "from", "frae": "from", "tae": "to", "aff": "off", "oot": "out", "doon": "down", "wi": "with",
-         "ower": "over", "ontae": "onto", "intae": "into", "oantae": "onto", "nae": "no", "mair": "more",
-         "dinnae": "dont", "dinna": "dont", "cannae": "cant", "canna": "cant", "wullnae": "wont", "willnae": "wont",
-         "shouldnae": "shouldnt", "disnae": "doesnt", "mustnae": "mustnt", "hae": "have", "nane": "none",
-         "roon": "round", "whit": "what", "fower": "four", "twa": "two", "awa": "away", "efter": "after", "gonnae": "will", "ye": "you", "ma": "my", "bar": "except"}
 SPELLINGS |= SCOTS
 #: texting's one-letter words, as typed in lower case ("mezz n dock", "end up w a dozen"); a capital
 #: "N" or "W" is more often north or west ("N cage"), and is left alone
@@ -466,12 +465,15 @@ REQUEST_FRAMES = (("would", "it", "be", "possible", "to"), ("is", "it", "possibl
                   ("would", "you", "be", "able", "to"), ("could", "you", "be", "so", "kind", "as", "to"),
                   ("would", "you", "be", "so", "kind", "as", "to"), ("could", "you", "possibly"),
                   ("would", "you", "possibly"), ("can", "you", "possibly"), ("would", "you", "mind", "terribly"))
-#: a want of the speaker's that the robots do it ("I want you to ...", "we need you to ..."), and its
-#: calque from French, Spanish or Italian ("I want that you ..."): request frames of words the
+#: a want of the speaker's that the robots do it ("I want you to ...", "we need you to ...", or with
+#: the team as the speaker's "we": "we need to move ..."), and its calque from French, Spanish or
+#: Italian ("I want that you ..."): request frames of words the
 #: grammar has anyway ("u" is "you" by then), so none of them is reserved as a frame word
 WANT_FRAMES = tuple((who, want) + rest for who in ("i", "we") for want in ("want", "need")
                     for rest in (("you", "to"), ("that", "you"))) + \
-    (("i", "would", "like", "you", "to"), ("we", "would", "like", "you", "to"), ("id", "like", "you", "to"))
+    (("i", "would", "like", "you", "to"), ("we", "would", "like", "you", "to"), ("id", "like", "you", "to")) + \
+    tuple((who,) + want + ("to",) for who in ("i", "we") for want in (("want",), ("need",), ("would", "like"))) + \
+    (("id", "like", "to"),)
 REQUEST_FRAMES = tuple(sorted(REQUEST_FRAMES + WANT_FRAMES, key=len, reverse=True))   # the longest said is the frame
 #: frames after which the verb comes as "-ing" ("would you mind moving ..."): read as the verb
 GERUND_FRAMES = {("would", "you", "mind"), ("do", "you", "mind"), ("would", "you", "mind", "terribly")}

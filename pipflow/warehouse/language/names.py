@@ -358,6 +358,19 @@ def _verb_places(names: list["_Name"], reserved: set[str]) -> dict[str, "_Name"]
             and len([x for x in re.split(r"[-_\s]+", ns[0].name) if x]) >= 2}
 
 
+def _declared(world: dict, names: list["_Name"]) -> dict["_Name", set[str]]:
+    """The normal forms of the words each name's entry declares (``words``: the world's own
+    vocabulary, "back row", "Big Red", "rads"), and their plurals."""
+    out: dict[_Name, set[str]] = {}
+    for n in names:
+        entry = (world.get(WORLD_KEYS[n.kind]) or {}).get(n.name)
+        for phrase in (entry.get("words") or []) if isinstance(entry, dict) else []:
+            form = normalize(str(phrase))
+            if form:
+                out.setdefault(n, set()).update({form, *plural_forms(form)})
+    return out
+
+
 def _spelt_otherwise(n: "_Name") -> set[str]:
     """The normal forms of a name with one of its words in another accepted spelling, and their
     plurals ("despatch" -> "dispatch", "dispatches")."""
@@ -403,6 +416,16 @@ class NameIndex:
         # stands, as a verb in a place's name is: verb_places)
         taken = set(self.forms)
         spelt_as_verbs: dict[str, _Name | None] = {}
+        # what the world says people call a thing ("words": "trade counter" for counter, "rads" for
+        # radiator), and their plurals, as its own spellings are: one word two things are called
+        # is neither's (refused, the names offered); one the grammar has names a place only where
+        # a place stands, as a verb in a place's name does (verb_places)
+        for n, forms in _declared(world, self.names).items():
+            for form in forms:
+                into = spelt_as_verbs if form in self.reserved else self.forms
+                if form not in taken:
+                    into[form] = None if form in into and into[form] is not n else n
+        taken = set(self.forms)
         for n in self.names:
             for form in _spelt_otherwise(n):
                 into = spelt_as_verbs if form in self.reserved else self.forms

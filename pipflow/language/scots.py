@@ -1,0 +1,17 @@
+"""Scots spellings of everyday English words, as typed or said in Scotland ("take 2 aff the rack",
+"bring it ben", "switch aff aw the lights", "fae the bedside table"): each read as the English
+word, by both readers, only where the word is no word of the world's names (a place called "the
+Ben" stays that place) and, in the household reader, no English word itself."""
+from __future__ import annotations
+
+#: Scots word -> the English word the grammars have
+SCOTS = {"fae": "from", "frae": "from", "tae": "to", "aff": "off", "oot": "out", "doon": "down", "wi": "with",
+         "ower": "over", "ontae": "onto", "intae": "into", "oantae": "onto", "nae": "no", "mair": "more",
+         "dinnae": "dont", "dinna": "dont", "cannae": "cant", "canna": "cant", "wullnae": "wont", "willnae": "wont",
+         "shouldnae": "shouldnt", "disnae": "doesnt", "mustnae": "mustnt", "hae": "have", "nane": "none",
+         "roon": "round", "whit": "what", "fower": "four", "twa": "two", "awa": "away", "efter": "after",
+         "gonnae": "will", "ye": "you", "ma": "my", "bar": "except",
+         # "bring my specs ben (the room)": through (to the other room); "that yin": that one
+         "ben": "through", "yin": "one", "yins": "ones", "naebody": "nobody", "naw": "no", "wid": "would",
+         "dae": "do", "masel": "myself", "auld": "old", "windae": "window", "hing": "hang", "hoose": "house",
+         "anaw": "too", "aye": "yes"}

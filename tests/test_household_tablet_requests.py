@@ -1,0 +1,63 @@
+"""Issue 23, from pair PP's household set (a retired Glaswegian typing to the house robots on a
+tablet): Scots words read as the English the grammar has ("aff", "oot", "fae", "tae", "aw the
+lights", "ben", "an aw"), "son" said to the one asked, "when you get a minute" and "if it's no
+bother" framing a request, "put the radio off" as switching it off, "through from P" as "from
+P". A thing of the home called by a Scots word stays that thing. Through the real household
+reader, in the studio flat."""
+from __future__ import annotations
+
+import copy
+
+import pytest
+
+from pipflow.household.language.translator import translate
+from tests.studio_world import STUDIO, studio_goal
+
+MOVE = "bring the novel from the coffee table to the nightstand"
+
+
+@pytest.mark.parametrize("said, plain", [
+    ("switch the radio aff", "switch the radio off"),
+    ("bring the novel fae the coffee table tae the nightstand", MOVE),
+    ("bring the novel through fae the coffee table to the nightstand", MOVE),
+    ("bring the novel ben to the nightstand", "bring the novel to the nightstand"),
+    ("switch aff aw the lights", "switch off all the lights"),
+    ("wash the teacup. the glass an aw", "wash the teacup. the glass too"),
+    ("take the sweater oot the armchair and put it in the wardrobe", "take the sweater out of the armchair and put it in the wardrobe"),
+])
+def test_scots_words_are_read_as_the_english_the_grammar_has(said: str, plain: str) -> None:
+    assert studio_goal(said) == studio_goal(plain)
+
+
+@pytest.mark.parametrize("said", [
+    "morning son. switch the radio off",
+    "switch the radio off please son",
+    "when you get a minute would you switch the radio off",
+    "if it's no bother switch the radio off",
+    "put the radio off",
+    "would you mind putting the radio off",
+])
+def test_the_ways_he_asks_are_the_request(said: str) -> None:
+    assert studio_goal(said) == studio_goal("switch the radio off")
+
+
+def test_putting_a_thing_off_a_place_is_still_a_move() -> None:
+    assert studio_goal("put the novel off the coffee table onto the nightstand") == studio_goal(MOVE)
+
+
+def test_a_thing_of_the_home_called_by_a_scots_word_stays_that_thing() -> None:
+    """A place the home calls "the ben" (a back room): "put the scarf in the ben" puts it there."""
+    home = copy.deepcopy(STUDIO)
+    home["places"]["wardrobe"]["words"] = list(home["places"]["wardrobe"].get("words") or []) + ["ben"]
+    assert translate("put the scarf in the ben", home)["goal"]["in"] == {"wardrobe": ["scarf"]}
+
+
+def test_a_condition_opening_a_sentence_after_and_is_read_on_the_home_as_it_is() -> None:
+    """The tablet is on in the studio: "and if the tablet is on switch it off" is done."""
+    assert studio_goal("switch the radio off. and if the tablet is on switch it off") == \
+        studio_goal("switch the radio off and switch the tablet off")
+
+
+def test_scots_if_no_is_the_other_branch() -> None:
+    """The teacup is dirty: "if it's clean ..." is not done, "if its no, wash it" is."""
+    assert studio_goal("if the teacup is clean put it in the pantry. if its no wash it") == studio_goal("wash the teacup")
