@@ -10,6 +10,8 @@ import copy
 
 import pytest
 
+from pipflow.errors import TranslationError
+from pipflow.household.language.lexicon import normalize
 from pipflow.household.language.translator import translate
 from tests.studio_world import STUDIO, studio_goal
 
@@ -61,3 +63,25 @@ def test_a_condition_opening_a_sentence_after_and_is_read_on_the_home_as_it_is()
 def test_scots_if_no_is_the_other_branch() -> None:
     """The teacup is dirty: "if it's clean ..." is not done, "if its no, wash it" is."""
     assert studio_goal("if the teacup is clean put it in the pantry. if its no wash it") == studio_goal("wash the teacup")
+
+
+def test_aw_night_says_how_long_and_son_after_please_is_said_to_the_robots() -> None:
+    assert studio_goal("the radio has been on aw night, switch it off please son") == studio_goal("switch the radio off")
+
+
+def test_son_alone_before_a_thing_is_never_dropped() -> None:
+    """ "my son's novel": whose novel, not a word said to the robots; not read as the novel."""
+    with pytest.raises(TranslationError):
+        translate("put my son's novel on the nightstand", STUDIO)
+
+
+@pytest.mark.parametrize("said", ["wash the teacup its on the coffee table", "wash the teacup it's on the coffee table"])
+def test_where_a_thing_lies_typed_without_a_mark_is_a_clause_of_its_own(said: str) -> None:
+    assert studio_goal(said) == studio_goal("wash the teacup, it's on the coffee table")
+
+
+@pytest.mark.parametrize("said", ["leave the novel where it is on the coffee table",
+                                  "put the novel down and it's on the nightstand", "put the novel in its box"])
+def test_no_clause_is_cut_where_a_word_joins_it_or_its_is_whose(said: str) -> None:
+    """ "where it is on ...", "and it's on ...": a joining word leads the clause; "its box" is whose."""
+    assert "," not in normalize(said)

@@ -17,8 +17,9 @@ _SCOTS_ALSO_ENGLISH = {"bar", "ma", "whit", "ye"}
 #: the grammar's negatives, written out as the household reader writes them ("dont" -> "do not")
 _WRITTEN_OUT = {"dont": "do not", "cant": "can not", "wont": "will not", "doesnt": "does not",
                 "shouldnt": "should not", "mustnt": "must not"}
-#: words after Scots "aw" that make it "all" ("aw the lights", "aw my stuff")
-_ALL_OF = DETERMINERS | {"them", "these", "those", "o", "of"}
+#: words after Scots "aw" that make it "all" ("aw the lights", "aw my stuff", "aw night")
+_ALL_OF = DETERMINERS | {"them", "these", "those", "o", "of", "night", "day", "morning", "afternoon", "evening",
+                         "week", "weekend"}
 
 
 def scots_as_english(words: list[str], known: Callable[[str], bool], notes: list[str]) -> list[str]:

@@ -569,6 +569,11 @@ FILLER |= {("there", "is", "a", w) for w in ENDEARMENTS} | {("there", "is", "my"
 #: sign a message off ("... in my bed x", "xx"): said to the robots, they carry nothing
 FILLER |= {(thanks, w) for thanks in ("thanks", "cheers", "ta") for e in ENDEARMENTS for w in (e, e + "s")} \
     | {("thank", "you", w) for e in ENDEARMENTS for w in (e, e + "s")} | {("x",), ("xx",), ("xxx",)}
+#: the one asked, named after a word said to them ("please son", "ta hen", "morning pal"): nothing
+#: asked; alone, such a word may be someone's ("my son's bike"), so only after one of these
+ADDRESSED = ENDEARMENTS + ("son", "hen", "mate", "pal", "sunshine", "bro", "dude", "buddy")
+FILLER |= {(said, who) for said in ("please", "pls", "plz", "thanks", "cheers", "ta", "morning", "hiya", "hello", "hi")
+           for who in ADDRESSED}
 #: who of the team is asked ("can one of you open the larder, and someone else light the fire",
 #: "two of you lift the sack"): who does a step is the plan's choice, so the words are framing,
 #: like "someone" above; a thing lifted by two is the team's way of working, not an end state
@@ -706,6 +711,24 @@ _TYPED = ((r"\bu\b", "you"),
           (r"\bb4\b", "before"), (r"\bye\b", "you"))
 
 
+#: "wash my bowl its in the sink", typed without a mark: "it is" / "they are" (or "its" typed for
+#: "it's") before where a thing lies opens a clause of its own, said apart with a comma; never after
+#: a word that joins it to what comes before ("leave it where it is on ...", "and it's on ...")
+_LOCATED_RUN_ON = re.compile(r"\b([a-z]+)\s+(it\s+is|it's|its|they\s+are|they're|theyre)\s+(?=(?:still\s+|just\s+|"
+                             r"already\s+|now\s+)?(?:in|on|at|under|inside|by|beside|sitting|lying)\b)")
+_JOINING = frozenset({"where", "wherever", "what", "whatever", "that", "if", "when", "whether", "because", "as", "so",
+                      "and", "but", "or", "since", "while", "once", "until", "till", "cos", "think", "see", "know",
+                      "sure", "say", "said", "because", "unless", "though", "although"})
+
+
+def _located_said_apart(m: re.Match) -> str:
+    """:data:`_LOCATED_RUN_ON`'s clause, with a comma before it unless a joining word leads to it."""
+    before, said = m.group(1), m.group(2)
+    if before in _JOINING:
+        return m.group(0)
+    return f"{before} , {'it is' if said.startswith('it') else 'they are'} "
+
+
 def normalize(text: str) -> str:
     """Lower case, contractions spelt out ("don't" -> "do not"), hyphens and underscores as
     spaces, so that "desk-lamp", "desk_lamp" and "desk lamp" read alike."""
@@ -747,6 +770,7 @@ def normalize(text: str) -> str:
     t = re.sub(r"\bthon\b", "that", t)   # "thon frying pan": Scots "that"
     for typed, written in _TYPED:
         t = re.sub(typed, written, t)
+    t = _LOCATED_RUN_ON.sub(_located_said_apart, t)
     # "its freezing in here", "its a tip": "it's" typed without its apostrophe, where a clause opens
     # and a word that never follows the possessive comes next ("its lid" stays a possessive)
     t = re.sub(r"(^|[.,;!?]\s*|\b(?:and|but|so|cos|because)\s+)its(?=\s+(?:so|too|very|really|quite|a|an|getting|"

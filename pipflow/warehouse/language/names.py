@@ -410,27 +410,7 @@ class NameIndex:
                         self.forms[form] = None  # two names share this plural: neither gets it
                     continue
                 self.forms[form] = n
-        # a name spelt the other accepted way ("dispatch" for despatch, "tire bay" for tyre_bay) is
-        # that name, as its own spelling is (spelling.other_spellings); never one another name has
-        # (a word of the grammar spelt so, "dispatch" the verb, is that place only where a place
-        # stands, as a verb in a place's name is: verb_places)
-        taken = set(self.forms)
-        spelt_as_verbs: dict[str, _Name | None] = {}
-        # what the world says people call a thing ("words": "trade counter" for counter, "rads" for
-        # radiator), and their plurals, as its own spellings are: one word two things are called
-        # is neither's (refused, the names offered); one the grammar has names a place only where
-        # a place stands, as a verb in a place's name does (verb_places)
-        for n, forms in _declared(world, self.names).items():
-            for form in forms:
-                into = spelt_as_verbs if form in self.reserved else self.forms
-                if form not in taken:
-                    into[form] = None if form in into and into[form] is not n else n
-        taken = set(self.forms)
-        for n in self.names:
-            for form in _spelt_otherwise(n):
-                into = spelt_as_verbs if form in self.reserved else self.forms
-                if form not in taken:
-                    into[form] = None if form in into and into[form] is not n else n
+        spelt_as_verbs = self._other_forms(world)
         # Stems the world's own names share ("bin" of bin7) forgive misspellings; the English
         # kind words must be spelled right, or "gets" would pass for a misspelt "agents".
         # A stem must be a real word: "a" of A1 or "r" of r7 would turn the article "a" or a
@@ -478,6 +458,23 @@ class NameIndex:
         self.verb_places = _verb_places(self.names, self.reserved)
         self.verb_places.update({w: n for w, n in spelt_as_verbs.items()
                                  if n is not None and n.kind == "shelf" and w not in self.verb_places})
+
+    def _other_forms(self, world: dict) -> dict[str, "_Name | None"]:
+        """Add to :attr:`forms` the other forms of each name, and return those that are words of
+        the grammar (a place only where a place stands: verb_places). First what the world says
+        people call a thing ("words": "trade counter" for counter, "rads" for radiator), then a name
+        spelt the other accepted way ("dispatch" for despatch, "tire bay" for tyre_bay:
+        spelling.other_spellings); each with its plurals, never a form a name already has, and
+        one two names would have is neither's (refused, the names offered)."""
+        spelt_as_verbs: dict[str, _Name | None] = {}
+        for forms_of in (_declared(world, self.names), {n: _spelt_otherwise(n) for n in self.names}):
+            taken = set(self.forms)
+            for n, forms in forms_of.items():
+                for form in forms:
+                    into = spelt_as_verbs if form in self.reserved else self.forms
+                    if form not in taken:
+                        into[form] = None if form in into and into[form] is not n else n
+        return spelt_as_verbs
 
     def group(self, word: str) -> list[str] | None:
         """The places a plural or class word selects ("cages" -> the places whose head is cage).
