@@ -57,3 +57,12 @@ def test_b4_says_when_and_is_never_a_name_or_a_count() -> None:
 def test_we_need_to_does_not_make_a_remark_an_order() -> None:
     with pytest.raises(TranslationError):
         understand("we need to talk about the yard", CENTRE)
+
+
+def test_an_unknown_word_before_a_one_word_name_is_offered_without_it_never_read() -> None:
+    """ "the front tills" where the world's only tills are "tills": offered as the tills, asked."""
+    with pytest.raises(TranslationError) as caught:
+        understand("move 1 bark from the polytunnel to the front tills", CENTRE)
+    offered = caught.value.candidates
+    assert offered[0]["goal"] == {"polytunnel": {"bark": 1}, "tills": {"bark": 2}}
+    assert "read 'front tills' as 'tills'" in offered[0]["reading"]

@@ -77,15 +77,15 @@ def with_word(command: str, wrong: str, right: str) -> str | None:
 
 
 def by_head_word(command: str, word: str, lex: Lexicon) -> list[tuple[str, str]]:
-    """ "the big rack" where the world's one rack is high_rack: an unknown word right before the
-    last word of exactly one name of several words, as (the two words as written, that name's
-    words). Only offered: "big" may name a rack the world does not have."""
+    """ "the big rack" where the world's one rack is high_rack, "the trade counter" where it is
+    counter: an unknown word right before the last word of exactly one name (or the whole of a
+    one-word name), as (the two words as written, that name's words). Only offered: "big" may
+    name a rack the world does not have."""
     m = re.search(rf"(?<![\w-])({re.escape(word)})\s+([A-Za-z]+)(?![\w-])", command, re.IGNORECASE)
     if m is None:
         return []
     head = normalize(m.group(2))
-    owners = [n.name for n in lex.index.names
-              if len(parts := re.split(r"[-_\s]+", n.name.lower())) > 1 and parts[-1] == head]
+    owners = [n.name for n in lex.index.names if re.split(r"[-_\s]+", n.name.lower())[-1] == head]
     if len(owners) != 1 or normalize(word) in re.split(r"[-_\s]+", owners[0].lower()):
         return []
     return [(m.group(0), re.sub(r"[-_]+", " ", owners[0]))]
