@@ -85,3 +85,17 @@ def test_where_a_thing_lies_typed_without_a_mark_is_a_clause_of_its_own(said: st
 def test_no_clause_is_cut_where_a_word_joins_it_or_its_is_whose(said: str) -> None:
     """ "where it is on ...", "and it's on ...": a joining word leads the clause; "its box" is whose."""
     assert "," not in normalize(said)
+
+
+@pytest.mark.parametrize("said", ["open the wardrobe, put the scarf inside and close it again",
+                                  "open the wardrobe and put the scarf in and close it again"])
+def test_a_particle_without_its_place_is_in_the_thing_just_named(said: str) -> None:
+    assert studio_goal(said) == studio_goal("open the wardrobe, put the scarf in it and close it again")
+
+
+
+@pytest.mark.parametrize("said", ["put the novel on the coffee table, no, hold on, the nightstand",
+                                  "put the novel in the wardrobe, hang on, on the nightstand",
+                                  "put the novel in the wardrobe. no hold on, on the nightstand"])
+def test_hold_on_takes_back_what_was_just_said(said: str) -> None:
+    assert studio_goal(said) == studio_goal("put the novel on the nightstand")

@@ -8,7 +8,7 @@ after a sentence's end: :data:`ACROSS_SENTENCES`), only when the words after the
 marker open with a determiner and the clause before has one, or open with a preposition of place
 and the clause before has one (the place is taken back: "put the scrubs in the sink - no wait
 sorry, on the boot bench"); "no" alone is never a marker here (it is a negation, operative), only
-with "wait" or "sorry"."""
+with "wait", "sorry", "hold on" or "hang on"."""
 from __future__ import annotations
 
 from pipflow.household.language.tokens import PUNCT
@@ -16,12 +16,15 @@ from pipflow.household.language.tokens import PUNCT
 #: words that take back the noun phrase just said
 MARKERS = (("no", "wait", "sorry"), ("no", "sorry", "i", "mean"), ("sorry", "i", "mean"), ("no", "wait"),
            ("no", "sorry"), ("wait", "sorry"), ("sorry", "no"), ("or", "rather"), ("i", "mean"), ("i", "meant"),
-           ("sorry",), ("rather",))
+           ("sorry",), ("rather",),
+           # "no, hold on", "hang on": the speaker stops and says it again
+           *((*no, hold, "on") for no in ((), ("no",), ("no", ",")) for hold in ("hold", "hang")))
 #: markers that take back what was said even across a sentence's end ("put my slippers in the
 #: wardrobe. I mean on the shoe rack!"); "sorry" or "rather" alone opening a sentence may begin
 #: anything, so only these
 ACROSS_SENTENCES = {("i", "mean"), ("i", "meant"), ("no", "wait"), ("no", "wait", "sorry"), ("sorry", "i", "mean"),
-                    ("no", "sorry", "i", "mean")}
+                    ("no", "sorry", "i", "mean"), ("no", "hold", "on"), ("no", "hang", "on"), ("no", ",", "hold", "on"),
+                    ("no", ",", "hang", "on")}
 #: the marks a sentence ends with
 _ENDS = {".", "!", "?", ";"}
 #: words that open where a thing goes: a correction that opens with one takes back the place said

@@ -317,6 +317,13 @@ def particles(words: list[str], names_nothing, notes: list[str]) -> list[str]:
             notes.append(f"'{' '.join(words[k:k + n])}' says what for, not what the home should end like")
             k += n
             continue
+        if w in ("inside", "in") and (k + 1 >= len(words) or words[k + 1] in _AFTER_A_PARTICLE) \
+                and any(x in _PLACING for x in _clause_before(out)) and out[-1] not in _PLACING:
+            # "open the trunk, put the doll inside and close it": in the thing just named or opened
+            notes.append(f"'put ... {w}' read as 'put ... in it'")
+            out += ["in", "it"]
+            k += 1
+            continue
         if w == "so" and k + 2 < len(words) and words[k + 2] in _ENABLING and names_nothing(words[k + 1]) \
                 and out and out[-1] not in PUNCT:
             notes.append(f"'so {words[k + 1]} {words[k + 2]}': who does a step is the plan's choice; read as 'and'")
@@ -328,6 +335,10 @@ def particles(words: list[str], names_nothing, notes: list[str]) -> list[str]:
     return out
 
 
+#: verbs that place a thing ("put the doll inside"), and what may follow a
+#: particle said without its place (the clause ends)
+_PLACING = {"put", "pop", "stick", "place", "throw", "chuck", "toss", "drop", "pack", "tuck", "shove", "lay"}
+_AFTER_A_PARTICLE = set(PUNCT) | {"and", "then", "too", "please", "now", "for", "again"}
 #: possessives and determiners a purpose may open with ("for my cocoa", "for our supper")
 _PURPOSE_DETERMINERS = {"the", "my", "our", "your", "his", "her", "their", "a", "some"}
 #: what a purpose may name though the lexicon knows it: a hot drink or a meal, in the singular
