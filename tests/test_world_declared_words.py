@@ -9,6 +9,7 @@ import pytest
 import yaml
 
 from pipflow.errors import TranslationError, WorldError
+from pipflow.language.prompting import render
 from pipflow.warehouse.language.translator import understand
 from pipflow.warehouse.world import world_from_text
 
@@ -73,3 +74,16 @@ def test_a_declared_word_of_the_grammar_names_the_shelf_only_where_a_shelf_stand
                                                                                         "gate": {"batten": 4}}
     assert understand("dispatch 1 batten from the gate to the counter", world)["goal"] == {"gate": {"batten": 2},
                                                                                             "counter": {"batten": 3}}
+
+
+def test_a_model_is_told_the_declared_words_and_a_world_without_them_is_prompted_as_before(tmp_path) -> None:
+    """The language model path reads the same world: its prompt says what things are called; the
+    paper's world (no words) renders the facts exactly as before the words existed."""
+    (tmp_path / "facts.j2").write_text('{% import "_warehouse_common.j2" as c %}{{ c.facts(world) }}')
+    said = render(str(tmp_path / "facts.j2"), {"world": _world(YARD)})[0]["content"]
+    assert "What people here call them: counter: trade counter; lean_to: the shed out back; " \
+           "decking: deck board; bigred: the old girl." in said
+    bare = {**YARD, "shelves": {k: {f: v for f, v in s.items() if f != "words"} for k, s in YARD["shelves"].items()},
+            "products": {k: {"color": p["color"]} for k, p in YARD["products"].items()},
+            "robots": {k: {f: v for f, v in r.items() if f != "words"} for k, r in YARD["robots"].items()}}
+    assert "call them" not in render(str(tmp_path / "facts.j2"), {"world": _world(bare)})[0]["content"]
