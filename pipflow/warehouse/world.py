@@ -24,6 +24,7 @@ from typing import Any
 from pipflow.errors import Diagnostic, Location, TaskFileError
 from pipflow.floorplan import FootprintGrid, layout_diagnostics, on_floor
 from pipflow.goalcounts import is_bound, value_problems
+from pipflow.language.spelling import normalize
 from pipflow.suggest import did_you_mean
 from pipflow.taskdomain import Facts
 from pipflow.worldfile import (LIMITS_VARIABLE, Locate, checked_yaml, duplicate_diagnostics, is_point, load_schema,
@@ -157,14 +158,14 @@ def declared_word_diagnostics(data: dict, locate: Locate) -> list[Diagnostic]:
     owner: dict[str, str] = {}
     for key in ("shelves", "products", "robots"):
         for name in (data.get(key) or {}) if isinstance(data.get(key), dict) else ():
-            owner.setdefault(re.sub(r"[^a-z0-9]", "", str(name).lower()), str(name))
+            owner.setdefault(normalize(str(name)), str(name))
     out: list[Diagnostic] = []
     for key in ("shelves", "products", "robots"):
         table = data.get(key) if isinstance(data.get(key), dict) else {}
         for name, entry in table.items():
             words = entry.get("words") if isinstance(entry, dict) else None
             for k, word in enumerate(words if isinstance(words, list) else []):
-                form = re.sub(r"[^a-z0-9]", "", str(word).lower())
+                form = normalize(str(word))
                 other = owner.setdefault(form, str(name)) if form else str(name)
                 if other != str(name):
                     out.append(Diagnostic(locate((key, name, "words", k)),

@@ -718,7 +718,7 @@ _LOCATED_RUN_ON = re.compile(r"\b([a-z]+)\s+(it\s+is|it's|its|they\s+are|they're
                              r"already\s+|now\s+)?(?:in|on|at|under|inside|by|beside|sitting|lying)\b)")
 _JOINING = frozenset({"where", "wherever", "what", "whatever", "that", "if", "when", "whether", "because", "as", "so",
                       "and", "but", "or", "since", "while", "once", "until", "till", "cos", "think", "see", "know",
-                      "sure", "say", "said", "because", "unless", "though", "although"})
+                      "sure", "say", "said", "unless", "though", "although"})
 
 
 def _located_said_apart(m: re.Match) -> str:

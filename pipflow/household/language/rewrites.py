@@ -281,9 +281,11 @@ def heat_purpose(words: list[str], notes: list[str]) -> list[str]:
 def particles(words: list[str], names_nothing, notes: list[str]) -> list[str]:
     """Particles and small constructions read as the grammar's words (docs/household.md):
     "them both" / "them all" as "both of them" / "all of them"; "through to P" as "to P" and
-    "through from P" as "from P" (to or from another room: the home model has none); "warm X through" without "through" (heated all the
-    way: hot); "so W can ..." as "and ..." when W names nothing of the home (a person: who does a
-    step is the plan's choice). ``names_nothing(word)``: the word is no name of the world."""
+    "through from P" as "from P" (to or from another room: the home model has none); "warm X
+    through" without "through" (heated all the way: hot); "put X inside" (or "in") ending its
+    clause as "put X in it"; "so W can ..." as "and ..." when W names nothing of the home (a
+    person: who does a step is the plan's choice). ``names_nothing(word)``: the word is no name of
+    the world."""
     out: list[str] = []
     k = 0
     while k < len(words):
@@ -335,9 +337,9 @@ def particles(words: list[str], names_nothing, notes: list[str]) -> list[str]:
     return out
 
 
-#: verbs that place a thing ("put the doll inside"), and what may follow a
-#: particle said without its place (the clause ends)
+#: verbs that place a thing ("put the doll inside")
 _PLACING = {"put", "pop", "stick", "place", "throw", "chuck", "toss", "drop", "pack", "tuck", "shove", "lay"}
+#: what may follow a particle said without its place: its clause ends there
 _AFTER_A_PARTICLE = set(PUNCT) | {"and", "then", "too", "please", "now", "for", "again"}
 #: possessives and determiners a purpose may open with ("for my cocoa", "for our supper")
 _PURPOSE_DETERMINERS = {"the", "my", "our", "your", "his", "her", "their", "a", "some"}

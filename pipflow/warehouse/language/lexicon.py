@@ -82,8 +82,9 @@ SPELLINGS = {"shud": "should", "shld": "should", "u": "you", "r": "are", "wont":
              "b4": "before", "tmrw": "tomorrow", "tmr": "tomorrow", "2moro": "tomorrow",
              # "whatever's on P" typed or transcribed without its apostrophe: its "'s" is "is"
              "whatevers": "whatever"}
-#: Scots spellings of the grammar's own words ("shift 5 corks fae pend tae steading", "take 2 aff
-#: vault", "dinnae touch it"), read only where the word is no word of the world's names
+#: Scots spellings of the grammar's own words (shared with the household reader: "shift 5 corks fae
+#: pend tae steading", "take 2 aff vault", "dinnae touch it"), read only where the word is no word
+#: of the world's names
 SPELLINGS |= SCOTS
 #: texting's one-letter words, as typed in lower case ("mezz n dock", "end up w a dozen"); a capital
 #: "N" or "W" is more often north or west ("N cage"), and is left alone
@@ -467,8 +468,8 @@ REQUEST_FRAMES = (("would", "it", "be", "possible", "to"), ("is", "it", "possibl
                   ("would", "you", "possibly"), ("can", "you", "possibly"), ("would", "you", "mind", "terribly"))
 #: a want of the speaker's that the robots do it ("I want you to ...", "we need you to ...", or with
 #: the team as the speaker's "we": "we need to move ..."), and its calque from French, Spanish or
-#: Italian ("I want that you ..."): request frames of words the
-#: grammar has anyway ("u" is "you" by then), so none of them is reserved as a frame word
+#: Italian ("I want that you ..."): request frames of words the grammar has anyway ("u" is "you" by
+#: then), so none of them is reserved as a frame word
 WANT_FRAMES = tuple((who, want) + rest for who in ("i", "we") for want in ("want", "need")
                     for rest in (("you", "to"), ("that", "you"))) + \
     (("i", "would", "like", "you", "to"), ("we", "would", "like", "you", "to"), ("id", "like", "you", "to")) + \
