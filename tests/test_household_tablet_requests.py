@@ -96,6 +96,8 @@ def test_a_particle_without_its_place_is_in_the_thing_just_named(said: str) -> N
 
 @pytest.mark.parametrize("said", ["put the novel on the coffee table, no, hold on, the nightstand",
                                   "put the novel in the wardrobe, hang on, on the nightstand",
-                                  "put the novel in the wardrobe. no hold on, on the nightstand"])
-def test_hold_on_takes_back_what_was_just_said(said: str) -> None:
+                                  "put the novel in the wardrobe. no hold on, on the nightstand",
+                                  "put the novel on the coffee table... no, no, sorry, on the nightstand",
+                                  "put the novel on the coffee table, no no wait, the nightstand"])
+def test_hold_on_and_no_said_twice_take_back_what_was_just_said(said: str) -> None:
     assert studio_goal(said) == studio_goal("put the novel on the nightstand")

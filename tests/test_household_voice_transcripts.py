@@ -181,3 +181,12 @@ def test_a_part_that_says_no_or_never_is_never_left_out_of_a_candidate(said: str
     with pytest.raises(TranslationError) as caught:
         translate(said, STUDIO)
     assert not any(c["goal"].get("in") == {"nightstand": ["novel"]} for c in caught.value.candidates)
+
+
+def test_a_no_the_speaker_says_of_themselves_may_be_left_out_of_a_candidate_an_only_may_not() -> None:
+    with pytest.raises(TranslationError) as caught:
+        translate("wash the teacup. I do not want the grandchildren moaning", STUDIO)
+    assert [c["goal"]["state"] for c in caught.value.candidates] == [{"teacup": ["clean"]}]
+    with pytest.raises(TranslationError) as caught:
+        translate("wash the teacup. I only want the grandchildren moaning", STUDIO)
+    assert not caught.value.candidates

@@ -65,6 +65,12 @@ FREE_TO_DROP = {"empty", "full", "whole", "single", "first", "then", "after", "b
 APPRAISALS = {"fine", "ok", "okay", "good", "nice", "great", "alright", "normal", "perfect", "lovely"}
 #: clause marks of the command (dashes and brackets set a clause off too)
 _CLAUSE_SPLIT = re.compile(r"[,.;:!?()\[\]\u2013\u2014]|\s-\s")
+def _about_the_speaker(words: list[str]) -> bool:
+    """A part that opens with the speaker as its subject ("i do not want ...", "we can not ..."),
+    with no only, except or bound in it: what it denies is the speaker's, not the robots' work."""
+    return words[:1] in (["i"], ["we"]) and not set(words) & (EXCLUSIVITY | BOUNDS)
+
+
 #: where a sentence ends (its mark kept with it) or a line breaks
 _SENTENCE_SPLIT = re.compile(r"(?<=[.!?])\s+|\n")
 #: words that narrow what is asked (no, only, except, bounds): a part that holds one is never left
@@ -252,11 +258,14 @@ def _without_unread_parts(command: str, clauses: list[str], unknown: list[str]) 
     """ "Open the toy trunk, put the doll inside. Whole week the grandchildren's things are lying
     everywhere.": the command without every clause, then without every sentence, that holds a word
     not understood, at once (one at a time, the others' words would still be in the way). A part
-    that says no, only, except or a bound is kept: dropped, the rest would ask for more."""
+    that says no, only, except or a bound is kept: dropped, the rest would ask for more; but a
+    "no" the speaker says of themselves ("I don't want to burn the place down", "I can't even
+    walk") narrows nothing the robots do."""
     unread = set(unknown)
     out: list[tuple[str, str, str, dict]] = []
     for parts, joiner in ((clauses, " , "), ([p.strip() for p in _SENTENCE_SPLIT.split(command) if p.strip()], " ")):
-        dropped = [p for p in parts if set(words_of(p)) & unread and not set(words_of(p)) & _NARROWING]
+        dropped = [p for p in parts if set(words_of(p)) & unread and (not set(words_of(p)) & _NARROWING
+                                                                       or _about_the_speaker(words_of(p)))]
         if not dropped or len(dropped) == len(parts):
             continue
         rest = joiner.join(p for p in parts if p not in dropped)

@@ -18,13 +18,14 @@ MARKERS = (("no", "wait", "sorry"), ("no", "sorry", "i", "mean"), ("sorry", "i",
            ("no", "sorry"), ("wait", "sorry"), ("sorry", "no"), ("or", "rather"), ("i", "mean"), ("i", "meant"),
            ("sorry",), ("rather",),
            # "no, hold on", "hang on": the speaker stops and says it again
-           *((*no, hold, "on") for no in ((), ("no",), ("no", ",")) for hold in ("hold", "hang")))
+           *((*no, hold, "on") for no in ((), ("no",)) for hold in ("hold", "hang")))
 #: markers that take back what was said even across a sentence's end ("put my slippers in the
 #: wardrobe. I mean on the shoe rack!"); "sorry" or "rather" alone opening a sentence may begin
 #: anything, so only these
 ACROSS_SENTENCES = {("i", "mean"), ("i", "meant"), ("no", "wait"), ("no", "wait", "sorry"), ("sorry", "i", "mean"),
-                    ("no", "sorry", "i", "mean"), ("no", "hold", "on"), ("no", "hang", "on"), ("no", ",", "hold", "on"),
-                    ("no", ",", "hang", "on")}
+                    ("no", "sorry", "i", "mean"), ("no", "hold", "on"), ("no", "hang", "on"), ("no", "sorry")}
+#: the words after "no" that make it a marker
+_AFTER_NO = {m[1] for m in MARKERS if m[:1] == ("no",) and len(m) > 1 and m[1] != ","}
 #: the marks a sentence ends with
 _ENDS = {".", "!", "?", ";"}
 #: words that open where a thing goes: a correction that opens with one takes back the place said
@@ -37,6 +38,7 @@ DETERMINERS = {"the", "a", "an", "my", "our", "your", "that", "this", "those", "
 def corrected(words: list[str], notes: list[str]) -> list[str]:
     """The words with each self-correction (module docstring) made: the noun phrase before the
     marker, from its determiner to the comma, gives way to the words after the marker."""
+    words = _no_said_once(words)
     out: list[str] = []
     k = 0
     while k < len(words):
@@ -45,15 +47,32 @@ def corrected(words: list[str], notes: list[str]) -> list[str]:
         if marker is not None:
             after = k + len(marker) + (1 if k + len(marker) < len(words) and words[k + len(marker)] == "," else 0)
             place = after < len(words) and words[after] in PLACE_PREPOSITIONS
-            start = _last_opened_by(out[:-1], PLACE_PREPOSITIONS if place else DETERMINERS)
+            said = len(out)
+            while said and out[said - 1] in PUNCT:   # the marks before the marker ("... no, sorry")
+                said -= 1
+            start = _last_opened_by(out[:said], PLACE_PREPOSITIONS if place else DETERMINERS)
             if after < len(words) and (place or words[after] in DETERMINERS) and start is not None:
-                taken = " ".join(out[start:-1])
+                taken = " ".join(out[start:said])
                 notes.append(f"'{taken}, {' '.join(marker)}': a self-correction; read as what follows it")
                 out = out[:start]
                 k = after
                 continue
         out.append(words[k])
         k += 1
+    return out
+
+
+def _no_said_once(words: list[str]) -> list[str]:
+    """ "no, no, sorry, on the dressing table", "no no wait": a "no" said again is one "no", and a
+    comma between it and the word that makes it a marker ("no, sorry") is none."""
+    out: list[str] = []
+    for w in words:
+        if w == "no" and (out[-1:] == ["no"] or out[-2:] == ["no", ","]):
+            out = out[:-1] if out[-1] == "," else out
+            continue
+        if w in _AFTER_NO and out[-2:] == ["no", ","]:
+            out = out[:-1]
+        out.append(w)
     return out
 
 
