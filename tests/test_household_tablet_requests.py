@@ -101,3 +101,17 @@ def test_a_particle_without_its_place_is_in_the_thing_just_named(said: str) -> N
                                   "put the novel on the coffee table, no no wait, the nightstand"])
 def test_hold_on_and_no_said_twice_take_back_what_was_just_said(said: str) -> None:
     assert studio_goal(said) == studio_goal("put the novel on the nightstand")
+
+
+@pytest.mark.parametrize("said", ["put the juice on the coffee table next to the teacup",
+                                  "put the juice out on the coffee table, beside the novel",
+                                  "put the juice down beside the novel"])
+def test_beside_a_thing_is_where_that_thing_lies(said: str) -> None:
+    assert studio_goal(said) == studio_goal("put the juice on the coffee table")
+
+
+@pytest.mark.parametrize("said", ["put the juice on the nightstand beside the teacup",   # the teacup is elsewhere
+                                  "put the juice on the coffee table beside the worktop"])  # a place: no thing in it
+def test_beside_what_is_elsewhere_or_a_place_is_never_read_away(said: str) -> None:
+    with pytest.raises(TranslationError):
+        translate(said, STUDIO)

@@ -11,6 +11,7 @@ import re
 from pipflow.errors import TranslationError
 from pipflow.language.asides import FUNCTION_WORDS
 from pipflow.language.english import common_word
+from pipflow.household.language.beside import beside_as_where
 from pipflow.household.language.colloquial import colloquial
 from pipflow.household.language.corrections import corrected
 from pipflow.household.language.dialect import (cut_as_switch, on_off_as_verbs, open_close_as_switch, put_on_as_switch,
@@ -127,7 +128,7 @@ def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: l
     words = on_off_as_verbs(put_on_as_switch(cut_as_switch(words, world, index, notes), world, index, notes), world,
                             index, notes)
     words = open_close_as_switch(words, world, index, notes)
-    words = named_again(them_as_those(words, index, notes), index, notes)
+    words = beside_as_where(named_again(them_as_those(words, index, notes), index, notes), world, index, notes)
     return particles(words, lambda x: x.isalpha() and not known_word(x, index, vocab), notes)
 
 
