@@ -115,3 +115,20 @@ def test_beside_a_thing_is_where_that_thing_lies(said: str) -> None:
 def test_beside_what_is_elsewhere_or_a_place_is_never_read_away(said: str) -> None:
     with pytest.raises(TranslationError):
         translate(said, STUDIO)
+
+
+@pytest.mark.parametrize("said", ["put the scarf in the wardrobe, it will get dusty",
+                                  "put the scarf in the wardrobe, and they'll be round soon"])
+def test_what_will_happen_by_itself_is_a_reason_set_aside(said: str) -> None:
+    assert studio_goal(said) == studio_goal("put the scarf in the wardrobe")
+
+
+@pytest.mark.parametrize("said", ["put the teacup in the pantry, it will not fit the drawer",   # a no
+                                  "put the teacup in the pantry, it will need washing",          # asks
+                                  "put the teacup in the pantry, it'll be cold for you"])         # said to them
+def test_a_prediction_that_bears_on_the_order_is_never_set_aside(said: str) -> None:
+    try:
+        got = studio_goal(said)
+    except TranslationError:
+        return
+    assert got != studio_goal("put the teacup in the pantry")   # "need washing": washed too

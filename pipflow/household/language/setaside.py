@@ -289,6 +289,27 @@ def _adjunct(words: list[str], content: Callable[[str], bool], names: Callable[[
     return n
 
 
+#: the subjects of what a thing will do by itself ("it'll turn", "they'll be going up to bed")
+_PREDICTED = {"it", "they", "that", "this", "she", "he"}
+#: words after "will" that ask for something ("it will need washing", "it will want a wipe")
+_ASKS = {"need", "needs", "want", "wants", "have", "has", "must", "should", "got"}
+
+
+def prediction(words: tuple[str, ...], names: Callable[[str], bool]) -> bool:
+    """ "..., it'll turn", "the cricket will be starting": what will happen by itself, said as a
+    reason; talk, set aside. A clause of it, they, that (or a person) and "will", and after it no
+    name of the home, no number, no "you", no word that bears on an order or asks ("it will need
+    washing" asks)."""
+    ws = list(words)
+    while ws[:1] and ws[0] in ("and", "so", "cos", "because", "or"):   # "..., and it'll turn"
+        ws = ws[1:]
+    if len(ws) < 3 or ws[0] not in _PREDICTED or ws[1] not in ("will", "ll"):
+        return False
+    rest = ws[2:]
+    return not any(names(w) or w in ("you", "your") or w in _ASKS or any(ch.isdigit() for ch in w)
+                   or w in _BEARING for w in rest)
+
+
 def _remark(world: dict, content: Callable[[str], bool]) -> Callable[[tuple[str, ...]], bool]:
     """The test of a remark: a clause about the speaker or other people ("my granddaughter is
     coming for lunch after service", "Pastor Jones is coming by at 4"), talk though it has words of
@@ -393,6 +414,7 @@ def without_asides(command: str, world: dict) -> Trimmed | None:
     taken = set(free) | set(own) | {c for c, _ in known}
     free += run_on_talk([c for c in parts if c not in taken], content, _names(world))
     free += remarks_joined([c for c in parts if c not in taken and c not in free], remark)
+    free += [c for c in parts if c not in taken and c not in free and prediction(c.words, _names(world))]
     if not free and not own and not known:
         return None
     drop = {k for c in free + own + [c for c, _ in known] for k in range(c.start, c.end)}
