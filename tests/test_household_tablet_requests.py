@@ -124,11 +124,13 @@ def test_what_will_happen_by_itself_is_a_reason_set_aside(said: str) -> None:
 
 
 @pytest.mark.parametrize("said", ["put the teacup in the pantry, it will not fit the drawer",   # a no
-                                  "put the teacup in the pantry, it will need washing",          # asks
                                   "put the teacup in the pantry, it'll be cold for you"])         # said to them
 def test_a_prediction_that_bears_on_the_order_is_never_set_aside(said: str) -> None:
-    try:
-        got = studio_goal(said)
-    except TranslationError:
-        return
-    assert got != studio_goal("put the teacup in the pantry")   # "need washing": washed too
+    with pytest.raises(TranslationError):
+        translate(said, STUDIO)
+
+
+def test_a_prediction_that_asks_is_read_as_the_ask() -> None:
+    """ "it will need washing": the teacup is washed too, not set aside as talk."""
+    assert studio_goal("put the teacup in the pantry, it will need washing") == \
+        studio_goal("wash the teacup and put it in the pantry")

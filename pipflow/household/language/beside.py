@@ -8,12 +8,16 @@ that thing's place. A thing that lies nowhere (a place: "beside the fridge") or 
 than the one said leaves the words as they are, to be refused: nothing is guessed."""
 from __future__ import annotations
 
-from pipflow.household.language.tokens import PUNCT
+from pipflow.household.language.lexicon import words_of
+from pipflow.household.language.names import longest_name
+from pipflow.household.language.restated import DETERMINERS
+from pipflow.household.language.rewrites import PLACING, clause_before
 
 #: how "beside" is said: the words, longest first
 _BESIDE = (("next", "to"), ("beside",), ("by",), ("alongside",))
-#: words before the name of a thing
-_DETERMINERS = {"the", "my", "his", "her", "our", "their", "your", "that", "this"}
+#: verbs after which "beside <thing>" says where a thing goes: those that place it, and setting or
+#: leaving it ("leave the juice beside the novel")
+_GOES = PLACING | {"set", "leave"}
 #: prepositions of a place a thing is put in or on
 _ONTO = {"on", "onto", "in", "into"}
 
@@ -22,7 +26,7 @@ def beside_as_where(words: list[str], world: dict, index: dict, notes: list[str]
     """The words with each "beside / next to <thing>" read as above (module docstring). ``index``:
     the world's phrases (:func:`pipflow.household.language.names.world_phrases`)."""
     objects = world.get("objects") or {}
-    longest = max((len(k) for k in index), default=1)
+    longest = longest_name(index)
     out: list[str] = []
     k = 0
     while k < len(words):
@@ -38,9 +42,9 @@ def beside_as_where(words: list[str], world: dict, index: dict, notes: list[str]
         if before == where:   # "on the table beside the butter": the table says it all
             notes.append(f"'{' '.join(words[k:end])}': {name} is in {where}; the home model has no spot "
                          f"within a place, so it says nothing more")
-        elif before is None and _placing(out):   # "put his biscuits out beside the bowl"
+        elif before is None and _GOES & set(clause_before(out)):   # "put his biscuits out beside the bowl"
             notes.append(f"'{' '.join(words[k:end])}' read as in {where}, where {name} is")
-            out += ["in", *where.replace("_", " ").split()]
+            out += ["in", *words_of(where)]
         else:
             out.append(words[k])
             k += 1
@@ -51,7 +55,7 @@ def beside_as_where(words: list[str], world: dict, index: dict, notes: list[str]
 
 def _thing_at(words: list[str], i: int, index: dict, longest: int, objects: dict) -> tuple[str, int] | None:
     """(the one object the phrase at ``i`` names, where the phrase ends), else None."""
-    while i < len(words) and words[i] in _DETERMINERS:
+    while i < len(words) and words[i] in DETERMINERS:
         i += 1
     for n in range(min(longest, len(words) - i), 0, -1):
         readings = index.get(tuple(words[i:i + n]))
@@ -74,7 +78,7 @@ def _place_before(out: list[str], index: dict, longest: int) -> str | None:
         if not readings:
             continue
         start = end - n
-        while start and out[start - 1] in _DETERMINERS:
+        while start and out[start - 1] in DETERMINERS:
             start -= 1
         names = {r["name"] for r in readings if r.get("kind") == "place"}
         if start and out[start - 1] in _ONTO and len(names) == 1:
@@ -82,10 +86,3 @@ def _place_before(out: list[str], index: dict, longest: int) -> str | None:
         return None
     return None
 
-
-def _placing(out: list[str]) -> bool:
-    """Whether the clause being read places something ("put", "pop", "set" ... before)."""
-    k = len(out)
-    while k and out[k - 1] not in PUNCT:
-        k -= 1
-    return any(w in ("put", "pop", "set", "place", "leave", "lay", "stick") for w in out[k:])

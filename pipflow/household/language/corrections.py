@@ -25,7 +25,7 @@ MARKERS = (("no", "wait", "sorry"), ("no", "sorry", "i", "mean"), ("sorry", "i",
 ACROSS_SENTENCES = {("i", "mean"), ("i", "meant"), ("no", "wait"), ("no", "wait", "sorry"), ("sorry", "i", "mean"),
                     ("no", "sorry", "i", "mean"), ("no", "hold", "on"), ("no", "hang", "on"), ("no", "sorry")}
 #: the words after "no" that make it a marker
-_AFTER_NO = {m[1] for m in MARKERS if m[:1] == ("no",) and len(m) > 1 and m[1] != ","}
+_AFTER_NO = {m[1] for m in MARKERS if m[:1] == ("no",) and len(m) > 1}
 #: the marks a sentence ends with
 _ENDS = {".", "!", "?", ";"}
 #: words that open where a thing goes: a correction that opens with one takes back the place said

@@ -301,7 +301,7 @@ def particles(words: list[str], names_nothing, notes: list[str]) -> list[str]:
             notes.append(f"'through {words[k + 1]}' read as '{words[k + 1]}' (the home model has no rooms to go through)")
             k += 1
             continue
-        if w == "through" and any(x in _THROUGH_AFTER for x in _clause_before(out)):
+        if w == "through" and any(x in _THROUGH_AFTER for x in clause_before(out)):
             notes.append("'through' after warming: heated through, read as hot")
             k += 1
             continue
@@ -320,7 +320,7 @@ def particles(words: list[str], names_nothing, notes: list[str]) -> list[str]:
             k += n
             continue
         if w in ("inside", "in") and (k + 1 >= len(words) or words[k + 1] in _AFTER_A_PARTICLE) \
-                and any(x in _PLACING for x in _clause_before(out)) and out[-1] not in _PLACING:
+                and any(x in PLACING for x in clause_before(out)) and out[-1] not in PLACING:
             # "open the trunk, put the doll inside and close it": in the thing just named or opened
             notes.append(f"'put ... {w}' read as 'put ... in it'")
             out += ["in", "it"]
@@ -338,7 +338,7 @@ def particles(words: list[str], names_nothing, notes: list[str]) -> list[str]:
 
 
 #: verbs that place a thing ("put the doll inside")
-_PLACING = {"put", "pop", "stick", "place", "throw", "chuck", "toss", "drop", "pack", "tuck", "shove", "lay"}
+PLACING = {"put", "pop", "stick", "place", "throw", "chuck", "toss", "drop", "pack", "tuck", "shove", "lay"}
 #: what may follow a particle said without its place: its clause ends there
 _AFTER_A_PARTICLE = set(PUNCT) | {"and", "then", "too", "please", "now", "for", "again"}
 #: possessives and determiners a purpose may open with ("for my cocoa", "for our supper")
@@ -372,7 +372,7 @@ def _purpose(words: list[str], k: int, names_nothing) -> int:
     return 0
 
 
-def _clause_before(out: list[str]) -> list[str]:
+def clause_before(out: list[str]) -> list[str]:
     """The words of the clause being read (since the last mark)."""
     k = len(out)
     while k and out[k - 1] not in PUNCT:

@@ -412,9 +412,10 @@ def without_asides(command: str, world: dict) -> Trimmed | None:
              if k and c not in free and c not in own]
     known = [(c, what) for c, what in known if what] + topic
     taken = set(free) | set(own) | {c for c, _ in known}
-    free += run_on_talk([c for c in parts if c not in taken], content, _names(world))
+    names = _names(world)
+    free += run_on_talk([c for c in parts if c not in taken], content, names)
     free += remarks_joined([c for c in parts if c not in taken and c not in free], remark)
-    free += [c for c in parts if c not in taken and c not in free and prediction(c.words, _names(world))]
+    free += [c for c in parts if c not in taken and c not in free and prediction(c.words, names)]
     if not free and not own and not known:
         return None
     drop = {k for c in free + own + [c for c, _ in known] for k in range(c.start, c.end)}
