@@ -32,7 +32,9 @@ from pipflow.language.spelling import Slips
 
 NEGATION = {"no", "not", "never", "nothing", "none", "nobody", "noone", "neither", "nor", "without", "dont",
             "doesnt", "didnt", "cant", "cannot", "wont", "shouldnt", "mustnt", "isnt", "arent", "nowhere",
-            "n't", "nope"}
+            "n't", "nope",
+            # northern English and Scots "nowt" (nothing): "gaffer does nowt tonight"
+            "nowt", "naught"}
 EXCLUSIVITY = {"only", "except", "excepting", "but", "besides", "apart", "unless", "instead", "alone", "solely",
                "exclusively", "else", "just", "other", "otherwise", "rather"}
 BOUNDS = {"least", "most", "max", "maximum", "min", "minimum", "more", "fewer", "less", "above", "below",
@@ -160,6 +162,8 @@ PURPOSIVE = frozenset({"for", "because", "cause", "cos", "coz", "cuz"})
 _YOU = frozenset({"you", "your", "u", "ya", "ye", "yous", "youse"})
 #: words after an adjunct's opening word that point back at the order itself ("for this", "before that")
 _BACK = OBJECT_PRONOUNS | {"then", "now", "which"}
+#: of those, the ones that pick out what follows them when something does ("for that pickup")
+_DEMONSTRATIVES = frozenset({"that", "this", "those", "these"})
 
 
 def trailing_adjunct(words: list[str], content: Callable[[str], bool],
@@ -177,9 +181,11 @@ def trailing_adjunct(words: list[str], content: Callable[[str], bool],
     unless it is said to the robots or about the order's things ("before you ...", "after it
     ..."). A time of day is a number ("before 2pm", "at nine"): never set aside."""
     for j in range(1, len(words) - 1):
-        if words[j] not in ADJUNCTS or words[j + 1] in _BACK:
+        # "before that": the order itself; "before that truck gets here": "that" picks the truck
+        picks = words[j + 1] in _DEMONSTRATIVES and j + 2 < len(words)
+        if words[j] not in ADJUNCTS or (words[j + 1] in _BACK and not picks):
             continue
-        rest = words[j + 1:]
+        rest = words[j + 2:] if picks else words[j + 1:]
         carries = content
         if words[j] in TEMPORAL | PURPOSIVE and names is not None and not (set(rest) & (OBJECT_PRONOUNS | _YOU)):
             carries = names

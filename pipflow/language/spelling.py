@@ -149,6 +149,9 @@ _OTHER: dict[str, set[str]] = {}
 for _a, _b in _SPELLING_PAIRS:
     _OTHER.setdefault(_a, set()).add(_b)
     _OTHER.setdefault(_b, set()).add(_a)
+#: a word of a place's name and the word of the same sound speech to text writes for it ("isle
+#: twelve" for aisle 12): one way only, so a world's "isle" is never read as an aisle
+_OTHER.setdefault("aisle", set()).add("isle")
 
 #: endings spelt two ways (British, American): "colour", "centre", "organise", "catalogue",
 #: "travelled"; only after enough letters that the ending is a suffix ("four", "acre", "rise" are not)

@@ -9,7 +9,8 @@ verb. The grammar reads only that order, so a command that does not parse as sai
 reading is one two people would agree on:
 
 * the fronted words are a noun phrase of the home and nothing else (names of the home,
-  determiners, quantities, state adjectives, "and", "from <place>"), ending in a name;
+  determiners, quantities, state adjectives, "and", "from <place>", "on / in / at <place>" after a
+  name), ending in a name, and "also" or "too" may stand between them and the verb;
 * they open a sentence, or a clause after ", and", or after a comma or "and" that does not follow
   a name (after one, the words could go on the clause before's list of things: "wash the jug and
   the plum put in the bowl" is refused);
@@ -32,7 +33,13 @@ PHRASE = {"THE", "NOUN", "ADJ", "ALL", "EVERY", "BOTH", "NUM", "OF", "AND", "COM
 OPENERS = {"THE", "ALL", "EVERY", "BOTH", "NUM", "ADJ"}
 #: verbs that take a thing as their object, and are no adjective too ("clean", "open", "shut",
 #: "warm" after a thing say how it is)
-VERBS = {"V_PUT", "V_THROW", "V_TOGGLE", "V_STATE", "V_TRASH", "V_CHILL", "V_TIDY", "V_LIGHT", "V_SHUTDOWN"}
+VERBS = {"V_PUT", "V_THROW", "V_TOGGLE", "V_STATE", "V_TRASH", "V_CHILL", "V_TIDY", "V_LIGHT", "V_SHUTDOWN",
+         # "papa dumbbell keep in the bomb shelter" (Singapore English "keep": put away)
+         "V_LEAVE"}
+#: where a thing of the fronted phrase lies, after its name ("the mug on the coffee table wash")
+WHERE = {"ON", "IN", "AT"}
+#: "as well" between the fronted phrase and its verb ("the mug also wash"): said after the thing
+AS_WELL = {"also", "too"}
 #: what may follow a verb whose object was fronted: a particle, a word of where, the clause's end
 LACKING = {"ON", "OFF", "OUT", "IN", "TO", "AT", "BACK", "AWAY", "UP", "DOWN", "FROM", "SOMEWHERE",
            "END", "COMMA", "AND", "THEN"}
@@ -62,7 +69,14 @@ def _phrase_end(tags: list[Tag], k: int) -> int | None:
     """The end of the noun phrase of the home that opens at ``k`` (its last word a name), or None."""
     end = None
     j = k
-    while j < len(tags) and (base_class(tags[j].cls) in PHRASE or _named(tags[j])):
+    while j < len(tags):
+        if end is not None and tags[j].cls in WHERE:   # "the mug on the coffee table wash"
+            at = j + 1 + (j + 1 < len(tags) and tags[j + 1].cls == "THE")
+            if at < len(tags) and _named(tags[at]):
+                j = at
+                continue
+        if not (base_class(tags[j].cls) in PHRASE or _named(tags[j])):
+            break
         if _named(tags[j]):
             end = j + 1
         j += 1
@@ -88,10 +102,11 @@ def fronted_objects(tags: list[Tag]) -> tuple[list[Tag], list[str]] | None:
             continue
         phrase = out[k:end]
         words = " ".join(t.words for t in phrase)
-        v = end
+        also = end < len(out) and out[end].words in AS_WELL   # "the mug also wash": as well
+        v = end + also
         if v < len(out) and out[v].cls in VERBS and _lacks_object(out, v):
-            out[k:v + 1] = [out[v]] + phrase
-            moved.append(f"{words} {out[k].words}")
+            out[k:v + 1] = [out[v]] + phrase + out[end:end + also]
+            moved.append(f"{' '.join(t.words for t in out[k + 1:v + 1])} {out[k].words}")
         elif (v + 2 < len(out) and out[v].cls == "COMMA" and out[v + 1].cls in VERBS and out[v + 2].cls == "IT"
               and out[v + 2].words in ("it", "them") and (k == 0 or out[k - 1].cls in BREAKS)
               and _lacks_object(out, v + 2)):

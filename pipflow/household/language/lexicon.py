@@ -556,7 +556,11 @@ FILLER = {("um",), ("umm",), ("uh",), ("uhh",), ("uhm",), ("er",), ("erm",),   #
           # Malaysian and Singapore English particles and exclamations ("wash them lah", "aiyo so
           # messy", "alamak"), "tq" (thank you), and "later" / "still", which say when, not what
           ("lah",), ("leh",), ("lor",), ("meh",), ("hor",), ("aiyo",), ("aiyoh",), ("aiya",), ("alamak",), ("wah",),
-          ("eh",), ("tq",), ("later",), ("still",)}
+          ("eh",), ("tq",), ("later",), ("still",),
+          # and their ways of asking: "can help (me) wash ...", "... or not", "... can already", "can or
+          # not": the request itself
+          ("can", "help", "me"), ("can", "help"), ("help", "me", "to"), ("or", "not"), ("can", "already"),
+          ("can", "or", "not")}
 #: endearments and praise that close or open a request ("..., there's a love", "..., there's a good
 #: girl", "good lad, ..."): said to the one asked, they carry nothing; "mind you" / "mind and"
 #: before a verb is "make sure you" (northern and Scots English: "and mind you shut the door after")

@@ -21,7 +21,8 @@ Who is a person (never a word of the home's names or of the reader's lexicon, no
 ("Grandad", "Nan", "the baby": :data:`KIN`), with a capitalised name after it or not ("Grandad
 Jones"); a title with a name after it ("Father Tom", "Mrs Patel", typed in lower case too:
 "father tom": after a title, a word of no name of the home and of no lexicon is the name); a
-capitalised word (or run of them) that is nobody's word ("Tom"). A lower-case word alone is never
+capitalised word (or run of them) that is nobody's word ("Tom"); who the home's own words say owns
+a thing ("papa" of "papa's mug", "ah ma" of "ah ma's bed": :func:`owners`), in lower case too. A lower-case word alone is never
 a name: "tom" may be a typo, "for tom" is at most a purpose.
 
 The parser tries this only when a command does not read as said, so nothing that read before
@@ -33,7 +34,7 @@ import re
 
 from pipflow.errors import TranslationError
 from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
-from pipflow.household.language.names import home_words, world_phrases
+from pipflow.household.language.names import home_words, per_world, world_phrases
 from pipflow.household.language.tokens import PUNCT
 from pipflow.household.language.typos import typo_of, vocabulary
 from pipflow.household.language.whereabouts import BRING, POSTURE, clause_end, place_said
@@ -65,6 +66,28 @@ THIRD_POSTURE = frozenset(POSTURE | {"the", "whole", "day", "always", "usually",
                                       "sleeping", "asleep", "dozing", "napping", "resting"})
 
 
+#: what a thing's own word says is someone's ("jun hao's bag", "ah ma's bed", "the kids' aircon")
+_OWNER = re.compile(r"^(?:the\s+)?(.+?)(?:['\u2019]s|(?<=s)['\u2019])\s")
+
+
+@per_world
+def owners(world: dict) -> dict[tuple[str, ...], list[tuple[str, ...]]]:
+    """The people of the home as its own words name them, who own its things ("papa's mug", "ah
+    ma's bed", "jun hao's bag": papa, ah ma, jun hao), each with the names of the home that open
+    with their words ("ah ma bed"), where those words name a thing and no person. A thing of the
+    home is never an owner ("the fridge's door")."""
+    index = world_phrases(world)
+    found: set[tuple[str, ...]] = set()
+    for table in (world.get("places") or {}, world.get("objects") or {}):
+        for entry in table.values():
+            for phrase in (entry.get("words") or []) if isinstance(entry, dict) else []:
+                m = _OWNER.match(str(phrase).strip().lower() + " ")
+                who = tuple(words_of(m.group(1))) if m else ()
+                if who and who not in index:
+                    found.add(who)
+    return {who: [key for key in index if len(key) > len(who) and key[:len(who)] == who] for who in found}
+
+
 #: every word of the lexicon's phrases and fillers, and the function words
 _LEXICON = frozenset(w for key in PHRASES for w in key) | frozenset(w for key in FILLER for w in key) | FUNCTION_WORDS
 
@@ -79,6 +102,7 @@ class _Reader:
         self.world = world
         self.home = home_words(self.index)
         self.vocab = vocabulary(self.index)
+        self.owners = owners(world)
 
     def known(self, w: str, typos: bool = True) -> bool:
         """Whether a word is a word of the home's names, of the lexicon or its fillers, a function
@@ -91,6 +115,9 @@ class _Reader:
         w = words[k] if k < len(words) else ""
         if w in PERSON_PRONOUNS or (objective and w == "her"):
             return 1
+        owner = self._owner(k)
+        if owner:
+            return owner
         if w == "the" and k + 1 < len(words) and words[k + 1] in KIN and not self.known(words[k + 1]):
             return 2
         if w in TITLES and w not in self.home and k + 1 < len(words) and words[k + 1].isalpha() \
@@ -99,6 +126,15 @@ class _Reader:
         if w in KIN and not self.known(w):
             return 1 + self._capitalised_run(k + 1)
         return self._capitalised_run(k)
+
+    def _owner(self, k: int) -> int:
+        """How many words from ``k`` name one of the home's people by its own words (:func:`owners`),
+        where they are not the start of a thing's name ("ah ma bed")."""
+        for who, names in sorted(self.owners.items(), key=lambda item: -len(item[0])):
+            if tuple(self.words[k:k + len(who)]) == who and not any(
+                    tuple(self.words[k:k + len(name)]) == name for name in names):
+                return len(who)
+        return 0
 
     def _capitalised_run(self, k: int) -> int:
         """How many capitalised words from ``k`` are nobody's word ("Tom", "Patel")."""

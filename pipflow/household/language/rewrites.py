@@ -456,21 +456,48 @@ def same_for(words: list[str], notes: list[str]) -> list[str]:
     k = 0
     while k < len(words):
         after_a_clause = k > 0 and words[k - 1] in _SAME_AFTER and any(w not in PUNCT for w in out)
-        end = _same_for_at(words, k) if after_a_clause else None
+        end = (_same_for_at(words, k) or _same_after(words, k)) if after_a_clause else None
         if end is not None:
             thing = words[end[0]:end[1]]
-            notes.append(f"'{' '.join(words[k:end[1]])}': the clause before, again, for {' '.join(thing)}")
+            notes.append(f"'{' '.join(words[k:end[2]])}': the clause before, again, for {' '.join(thing)}")
             out = out[:-1] + [",", "and", *thing, "too"]
-            k = end[1]
+            k = end[2]
             continue
         out.append(words[k])
         k += 1
     return out
 
 
-def _same_for_at(words: list[str], k: int) -> tuple[int, int] | None:
+def _same_after(words: list[str], k: int) -> tuple[int, int, int] | None:
+    """ "the tau kwa also same", "the saucepan the same (lah)": the thing first, then "(also /
+    too) (the) same" closing its sentence; where the thing's words start and end and where the
+    clause ends, or None."""
+    start = k + (1 if words[k] in ("and", "then") else 0)
+    end = next((j for j in range(start, len(words)) if words[j] in PUNCT), len(words))
+    said = end
+    while said > start and words[said - 1] in _CLOSING_PARTICLES:
+        said -= 1
+    tail = next((n for n in (3, 2, 1) if said - n > start and tuple(words[said - n:said]) in _SAME_AFTER_THING), 0)
+    if not tail or (end < len(words) and words[end] not in (".", "!", ";")) or said - tail - start > 5:
+        return None
+    return start, said - tail, end
+
+
+#: what says "that again" after the thing ("the tau kwa also same", "the pan the same")
+_SAME_AFTER_THING = {("same",), ("the", "same"), ("also", "same"), ("too", "same"), ("also", "the", "same"),
+                     ("same", "too"), ("same", "also")}
+#: particles and thanks that may close such a clause ("the tau kwa also same lor")
+_CLOSING_PARTICLES = {"lah", "leh", "lor", "ah", "hor", "meh", "pls", "please", "ok", "okay", "thanks"}
+
+
+#: what says "that again" after the thing ("the tau kwa also same", "the pan the same")
+_SAME_AFTER_THING = {("same",), ("the", "same"), ("also", "same"), ("too", "same"), ("also", "the", "same"),
+                     ("same", "too"), ("same", "also"), ("as", "well")}
+
+
+def _same_for_at(words: list[str], k: int) -> tuple[int, int, int] | None:
     """Where the thing of a "same for X" clause opening at ``k`` starts and ends (the end of its
-    sentence), or None when no such clause opens there."""
+    sentence, twice: the clause ends there too), or None when no such clause opens there."""
     start = k + (1 if words[k] in ("and", "then") else 0)
     same = next((s for s in _SAME if tuple(words[start:start + len(s)]) == s), None)
     if same is None or start + len(same) >= len(words) or words[start + len(same)] not in ("for", "with"):
@@ -482,7 +509,7 @@ def _same_for_at(words: list[str], k: int) -> tuple[int, int] | None:
                 or words[j:j + 2] == ["and", "then"]), len(words))
     if end == thing or (end < len(words) and words[end] not in (".", "!", ";", "then", "and")):
         return None
-    return thing, end
+    return thing, end, end
 
 
 #: words an order's object opens with: "so" before a verb and one of these is an order ("so wash

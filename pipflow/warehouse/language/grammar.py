@@ -251,7 +251,9 @@ goal: there_be items loc                                  -> g_set
     | want items go from places to places                   -> g_transfer
     | want items go to places from places                   -> g_transfer
     | places modal? each? ("get" | "come" | "go" | "drop" | "fall" | "rise" | "climb") ("up" | "down")? "to" items -> g_place_set
-    | places modal? "only" setv items                      -> g_place_set
+    | places modal? "be" "down" "to" items                   -> g_place_set
+    | places modal? "only" setv items resumptive?          -> g_place_set
+    | places modal? setv "only" items resumptive?          -> g_place_set
     | pitems modal? go to places appos?                    -> g_transfer_src
     | want items loc                                       -> g_set
     | (places ":")? ("increase" | "raise" | "up" | "bump" "up" | "boost") ihead loc? "by" NUM -> g_raise

@@ -17,8 +17,9 @@ from typing import Any, Callable, Collection
 from lark import Token
 
 from pipflow.errors import InputError, Refusal, TranslationError
-from pipflow.language.asides import (FUNCTION_WORDS, OPERATIVE, Clause, clauses, content_free, is_opener, leading_reason,
-                                     said_talk, signature, trailing_adjunct, trailing_thanks, unmarked_statement)
+from pipflow.language.asides import (FUNCTION_WORDS, OPERATIVE, SUBJECTS, Clause, clauses, content_free, is_opener,
+                                     leading_reason, said_talk, signature, trailing_adjunct, trailing_thanks,
+                                     unmarked_statement)
 from pipflow.language.asterisk import star_corrections
 from pipflow.language.characters import accents_folded, refuse_unread, without_expressions
 from pipflow.language.english import common_word
@@ -31,6 +32,7 @@ from pipflow.warehouse.language.names import (CONTAINERS, KIND_WORDS, POSS_MARK,
                                               recognize)
 from pipflow.warehouse.language.reordered import (base_verb, fronted_source, item_as_subject, needs_doing, said_at,
                                                 to_be_done)
+from pipflow.warehouse.language.transcripts import counts_heard_alike, places_taken_back, them_as_determiner
 from pipflow.warehouse.language.wordorder import left_dislocated, noun_adjuncts, numbered_siblings, unmarked_lists
 
 #: no user writes a longer command; past this the parser would only be asked to burn time
@@ -94,6 +96,9 @@ LETTER_WORDS = {"n": "and", "w": "with"}
 RUN_TOGETHER = {"outta": ("out", "of"), "outa": ("out", "of"), "offa": ("off", "of"), "hafta": ("have", "to")}
 #: a count said in digits or words
 _NUMBER = r"(?:\d+|" + "|".join(sorted(NUMBER_WORDS, key=len, reverse=True)) + r")\b"
+#: "3 X for each of the 4 trucks": a count for each of several (:meth:`Lexicon._times_for_each`)
+_FOR_EACH_OF = re.compile(rf"\b({_NUMBER})\s+((?:[a-z][a-z0-9_-]*\s+){{1,3}}?)for\s+each\s+of\s+(?:the\s+|those\s+|these\s+)?"
+                          rf"({_NUMBER})\s+([a-z]+)\b", re.IGNORECASE)
 #: idioms read as the plain words the grammar has: "leave it as she is" ("she" for a place or a
 #: load, as trades say), "all told" (in total), "keep it well away from P" (away from)
 IDIOMS = ((re.compile(r"\b(as|what)\s+she(?=\s+(?:is|was|stands|has)\b|['\u2019]s\b)", re.IGNORECASE), r"\1 it"),
@@ -122,6 +127,31 @@ IDIOMS = ((re.compile(r"\b(as|what)\s+she(?=\s+(?:is|was|stands|has)\b|['\u2019]
           # "except those on P": the ones on P
           (re.compile(r"\b(except|bar|but|apart\s+from|other\s+than)\s+those\s+(?=(?:on|in|at|from)\b)", re.IGNORECASE),
            r"\1 the ones "),
+          # Southern and spoken American English, as a headset's transcript writes it: "y'all" or
+          # "you all" said to the team before the order ("listen up y'all", "y'all might could
+          # swap ..."), "might could" a double modal (could), "real quick" (soon), "lemme see" a
+          # pause to think, "let me get" / "can I get" asking for it, "don't nobody but R" (nobody but)
+          (re.compile(r"\blisten\s+up\b\s*,?", re.IGNORECASE), ""),
+          (re.compile(r"(^|[.;!?,:]\s*|\b(?:okay|ok|alright|so|and|then|now)\s+)(?:y['\u2019]?all|you\s+all)\b\s*,?\s*"
+                      r"(?:(?:might\s+)?(?:could|can)\s+|need\s+to\s+|gotta\s+)?", re.IGNORECASE), r"\1"),
+          (re.compile(r"\bmight\s+(?=(?:could|can|should|would)\b)", re.IGNORECASE), ""),
+          (re.compile(r"\b(?:real|right)\s+(?:quick|fast)\b", re.IGNORECASE), ""),
+          (re.compile(r",?\s*\b(?:lemme|let\s+me|let['\u2019]?s)\s+(?:see|think)\b\s*,?", re.IGNORECASE), " "),
+          (re.compile(r"\b(?:lemme|let\s+me|can\s+i|could\s+i)\s+get\b", re.IGNORECASE), "get"),
+          (re.compile(r"\b(?:do\s*n['\u2019]?t|do\s+not|ai\s*n['\u2019]?t)\s+(?=nobody\s+but\b)", re.IGNORECASE), ""),
+          # negative concord: "I don't want no more than 3 X on P" is at most 3 ("no fewer than": at least)
+          (re.compile(r"\b(?:i|we)\s+(?:do\s*n['\u2019]?t|do\s+not)\s+want\s+(?:no\s+)?(more|fewer|less)\s+than\b",
+                      re.IGNORECASE), lambda m: "i want at " + ("most" if m.group(1).lower() == "more" else "least")),
+          # "get 6 X slotted on P", "get em put away in P": the order is the move ("get" a causative)
+          (re.compile(r"\b(get\b[^.;!?\n]*?)\s+(?:slotted|staged|moved|stocked|put\s+away|sent|brought|taken|shifted|"
+                      r"carried|dropped|parked|put)\s+(?=(?:on|onto|to|into|in|at|over|up|down)\b)", re.IGNORECASE), r"\1 "),
+          # "3 X sitting on P", "the fans stacked in P": where they are, said of the things
+          (re.compile(r"\b(?:sitting|sat|lying|laying|stacked|stored)\s+(?=(?:on|in|at)\b)", re.IGNORECASE), ""),
+          # "take 6 X from P on over to Q": over to Q
+          (re.compile(r"\bon\s+over\s+(?=to\b)", re.IGNORECASE), "over "),
+          # "put em away on aisle 14", "put away 5 X on P": put them there (a warehouse keeps no homes)
+          (re.compile(r"\bput\s+(them|em|it|those)\s+away\s+(?=(?:on|onto|in|into|at|over)\b)", re.IGNORECASE), r"put \1 "),
+          (re.compile(r"\bput\s+away\b(?=[^.;!?\n]*?\b(?:on|onto|in|into|at)\b)", re.IGNORECASE), "put"),
           # "I'd like to see 12 X on P", "I want to see ...": what the speaker wants there
           (re.compile(r"\b(want|like|need)\s+to\s+see\b", re.IGNORECASE), r"\1"),
           # "none of the night shift robots are to be used": do not use them (the negation kept, said
@@ -171,8 +201,15 @@ IDIOMS = ((re.compile(r"\b(as|what)\s+she(?=\s+(?:is|was|stands|has)\b|['\u2019]
           # northern "an' all" closing a clause: as well
           (re.compile(r"\ban['\u2019]?\s+all\b(?=\s*(?:[.,;:!?]|$))", re.IGNORECASE), "as well"),
           # "every shelf in the place": every shelf (the place, the building: the whole store)
-          (re.compile(r"\b(every|each|all(?:\s+the)?)\s+([a-z]+)\s+in\s+the\s+(?:place|building|warehouse|shed|site)\b",
-                      re.IGNORECASE), r"\1 \2"),
+          (re.compile(r"\b(every|each|all(?:\s+the)?)\s+([a-z]+)\s+(?:in\s+the\s+(?:place|building|warehouse|shed|site)|"
+                      r"on\s+the\s+floor)\b", re.IGNORECASE), r"\1 \2"),
+          # "all the vacs we got", "every X we have": all of them
+          (re.compile(r"\b((?:every|each|all(?:\s+the)?)\s+[a-z]+)\s+(?:we|you)\s+(?:got|have|['\u2019]?ve\s+got)\b",
+                      re.IGNORECASE), r"\1"),
+          # a count taken back as dictated, with no comma ("five fans no scratch that make it seven"):
+          # the comma the taking back is heard with
+          (re.compile(r"(?<=[a-z0-9])(?<!\bno)\s+((?:no\s+)?(?:wait|scratch\s+that|sorry|hold\s+on)\b[\s,]*(?:no\s+)?"
+                      r"(?:make\s+(?:it|that)|i\s+mean|i\s+meant)\b)", re.IGNORECASE), r", \1"),
           # "all them flatpacks", "both those racks": the demonstrative after "all" / "both" is "the"
           # (never before a preposition or a link word: "all those on P" is left as said)
           (re.compile(r"\b(all|both)\s+(?:them|those|these)\s+(?!(?:on|in|at|from|to|of|off|over|out|up|down|that|which|there|"
@@ -367,7 +404,7 @@ def _number_typo(word: str) -> str | None:
 
 
 #: words that take back the count before them: "5, no, 6", "3, sorry, 4", "2, I mean 3"
-CORRECTIONS = (("no",), ("sorry",), ("wait",), ("i", "mean"), ("make", "that"), ("or", "rather"), ("rather",))
+CORRECTIONS = (("no",), ("sorry",), ("wait",), ("i", "mean"), ("make", "that"), ("make", "it"), ("or", "rather"), ("rather",))
 #: a taking back said without a comma after the count must hold one of these ("5 no sorry 6"),
 #: never only "no" ("5 no 6" says nothing clear)
 UNMARKED_TAKE_BACK = frozenset({"sorry", "wait", "oops"})
@@ -728,11 +765,19 @@ def counts_sent_from_a_topic(toks: list[Tok]) -> list[Tok]:
     """ "bunker carboys: 2 to counter and rest to mezz", "rack B resistor 5 to kitting, rest go
     OB": a place and an item said first, then counts sent on from there; read as "move 2 carboys
     from bunker to counter and rest to mezz". Only at a sentence's start, with a count and "to"
-    right after the item."""
+    right after the item; so too "out of P, 4 X to Q ..." (or "from P ..."), said without a verb."""
     k = 0
     out: list[Tok] = []
     while k < len(toks):
         opens = not out or (out[-1].kind == "punct" and out[-1].value in (".", ";", "!", "?"))
+        led = (out and out[-1].kind == "word" and out[-1].value in ("okay", "ok", "so", "alright", "now", "then")
+               and (len(out) == 1 or out[-2].kind == "punct" and out[-2].value in (".", ";", "!", "?")))
+        sent = _sent_out_of(toks, k) if opens or led else None
+        if sent is not None:   # "out of high bay, 4 fryers to aisle 12 and the rest to ..."
+            place, n = sent
+            out += [Tok("word", "", "move"), toks[n], toks[n + 1], Tok("word", "", "from"), toks[place]]
+            k = n + 2
+            continue
         colon = k + 3 < len(toks) and toks[k + 3].kind == "punct" and toks[k + 3].value == ":"
         n = k + 3 + colon
         if (opens and n + 1 < len(toks) and toks[k].kind == "name" and toks[k].of == "shelf"
@@ -745,6 +790,21 @@ def counts_sent_from_a_topic(toks: list[Tok]) -> list[Tok]:
         out.append(toks[k])
         k += 1
     return out
+
+
+def _sent_out_of(toks: list[Tok], k: int) -> tuple[int, int] | None:
+    """(where the place is, where the count is) of "out of [the] P [,] N X to" at ``toks[k]``."""
+    words = [str(t.value) if t.kind == "word" else None for t in toks[k:k + 3]]
+    j = k + 2 if words[:2] == ["out", "of"] else k + 1 if words[:1] == ["from"] else None
+    if j is None:
+        return None
+    j += j < len(toks) and toks[j].kind == "word" and toks[j].value == "the"
+    n = j + 1 + (j + 1 < len(toks) and toks[j + 1].kind == "punct" and toks[j + 1].value == ",")
+    if (n + 2 < len(toks) and toks[j].kind == "name" and toks[j].of == "shelf" and toks[n].kind == "num"
+            and toks[n + 1].kind == "name" and toks[n + 1].of == "product"
+            and toks[n + 2].kind == "word" and toks[n + 2].value == "to"):
+        return j, n
+    return None
 
 
 #: grammar verbs that put what was taken somewhere (the verb lexicon's words are read as these)
@@ -1238,7 +1298,8 @@ class Lexicon:
                 continue
             fixed.append(t)
         verbs = {w for w in self.keywords if " " not in w} | set(VERB_LEXICON)
-        toks, framed = without_request_frames(read_counts(_split_hyphens(fixed, self.keywords)), verbs)
+        toks = them_as_determiner(counts_heard_alike(read_counts(_split_hyphens(fixed, self.keywords))))
+        toks, framed = without_request_frames(places_taken_back(toks), verbs)
         toks = item_as_subject(fronted_source(to_be_done(needs_doing(by_as_at(toks), verbs), verbs), verbs))
         toks = lexicon_verbs(quantity_phrases(addressed_anyone(stative_having(toks)), self.keywords), self.keywords)
         toks = put_back_after_its_object(counts_sent_from_a_topic(corrected(toks)))
@@ -1266,11 +1327,24 @@ class Lexicon:
         command = _TAGALOG_PARTICLE.sub(left_out, _TAGALOG_REQUEST.sub(unprefixed, command))
         command = _TAGALOG_MARKER.sub(left_out, command)
         command = _GO_AND.sub("", command)
+        command = _FOR_EACH_OF.sub(self._times_for_each, command)
         if self._places is not None:
             command = re.sub(rf"\bgo\s+(?=(?:the\s+)?(?:{self._places})\b)", "to ", command, flags=re.IGNORECASE)
             # "bunker got", and "bunkers got" typed for "bunker's got"
             command = re.sub(rf"\b({self._places})s?\s+got\b", r"\1 has", command, flags=re.IGNORECASE)
         return command
+
+    def _times_for_each(self, m: re.Match) -> str:
+        """ "three fryers for each of the four trucks": three times four fryers, where what there
+        are four of is no name or kind word of the world (then it says where they go: left as said)."""
+        said = m.group(4).lower()
+        try:
+            kind = self.index.kind_of_word(normalize(said))
+        except TranslationError:   # it could name several kinds: a word of the world either way
+            kind = "several"
+        if self._names_exactly(said) or kind is not None or self.index.group(said) is not None:
+            return m.group(0)
+        return f"{m.group(1)} times {m.group(3)} {m.group(2)}"
 
     def _names_exactly(self, word: str) -> bool:
         """Whether a word is a word of the world's names, a robot kind or tag, as written."""
@@ -1294,8 +1368,8 @@ class Lexicon:
             if k in stops or (t.kind == "punct" and t.value in (".", ";", "!", "?")):
                 if cur:
                     said = self._sentence(cur)
-                    if said is None and (stopped or k in stops) and not self.talk(cur):
-                        said = self._terminals(cur)   # no talk by what it is: it must read
+                    if said is None and (stopped or k in stops) and not (self.talk(cur) or self._remark(cur)):
+                        said = self._terminals(cur)   # neither talk nor a remark: it must read
                     if said is None:
                         self.aside.append(" ".join(x.text for x in cur))
                     else:
@@ -1306,6 +1380,19 @@ class Lexicon:
             if not (t.kind == "punct" and t.value in (".", ";", "!", "?")):
                 cur.append(t)
         return out
+
+    def _remark(self, toks: list[Tok]) -> bool:
+        """Whether a part of a command said without stops that asks for nothing (:meth:`_sentence`
+        is None for it) is a remark of its own, as a stop put before it may make it: it opens
+        with a subject ("they been breaking") or with a word no rule knows and goes on for two
+        words more ("fire marshal been on us about that"). A part that opens with a word of the
+        grammar ("up there ...", "does ...") is the end of the sentence before it: never set aside."""
+        words = [t for t in toks if t.kind == "word"]
+        said = [t for t in words if self.terminal(t) is not None]   # "the fire marshal ...": from "fire"
+        if not said or len(words) < len(toks):
+            return False
+        first = re.sub(r"[^a-z]", "", said[0].text.lower())
+        return first in SUBJECTS or (self.terminal(said[0]) or ("",))[0] == "UNKNOWN" and len(said) >= 3
 
     def position(self, tok: Tok) -> int | None:
         """Where a token of the last command lexed stands among its recognised tokens."""

@@ -19,7 +19,7 @@ from typing import Callable, Collection
 from pipflow.errors import TranslationError
 from pipflow.language.asides import TALK
 from pipflow.language.english import common_word
-from pipflow.language.numbers import NUMBER_WORDS, read_number, word_value
+from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS, read_number, word_value
 from pipflow.language.spelling import (Slips, distance, normalize, other_spellings, plural_forms, sounded, split_digits,
                                       tolerance, variants)
 
@@ -371,6 +371,29 @@ def _declared(world: dict, names: list["_Name"]) -> dict["_Name", set[str]]:
     return out
 
 
+def _two_word_sayings(world: dict, names: list["_Name"]) -> list[tuple[list[str], "_Name"]]:
+    """The two words of each place's or product's name of two words, and of each two-word word
+    the world declares for one ("receiving dock" for receiving): what a slip in one of them
+    (:meth:`NameIndex._misspelt_apart`) is measured against."""
+    out = []
+    for n in names:
+        if n.kind == "robot":
+            continue
+        entry = (world.get(WORLD_KEYS[n.kind]) or {}).get(n.name)
+        declared = [str(p) for p in entry.get("words") or []] if isinstance(entry, dict) else []
+        for phrase in [n.name, *declared]:
+            words = [w for w in re.split(r"[-_\s]+", phrase.lower()) if w]
+            if len(words) == 2:
+                out.append((words, n))
+    return out
+
+
+@functools.lru_cache(maxsize=4096)
+def _spellings(alpha: str) -> frozenset[str]:
+    """The letters of a name and their other accepted spellings ("isle" of aisle12: "isle twelve")."""
+    return frozenset({alpha, *other_spellings(alpha)})
+
+
 def _spelt_otherwise(n: "_Name") -> set[str]:
     """The normal forms of a name with one of its words in another accepted spelling, and their
     plurals ("despatch" -> "dispatch", "dispatches")."""
@@ -411,6 +434,7 @@ class NameIndex:
                     continue
                 self.forms[form] = n
         spelt_as_verbs = self._other_forms(world)
+        self.said_apart = _two_word_sayings(world, self.names)
         # Stems the world's own names share ("bin" of bin7) forgive misspellings; the English
         # kind words must be spelled right, or "gets" would pass for a misspelt "agents".
         # A stem must be a real word: "a" of A1 or "r" of r7 would turn the article "a" or a
@@ -518,7 +542,7 @@ class NameIndex:
 
     def kind_of_word(self, alpha: str) -> str | None:
         """The kind a bare word names ("shelves", "prodcut" -> product), if any."""
-        hits = set()
+        hits, near = set(), set()
         for kind in KINDS:
             for v in variants(alpha):
                 if v in KIND_WORDS[kind] or v in self.stems[kind]:
@@ -526,7 +550,8 @@ class NameIndex:
                 elif alpha not in STOPWORDS and alpha not in self.reserved and any(
                         v[:1] == stem[:1] and distance(v, stem) <= tolerance(len(stem))
                         for stem in self.stems[kind]):
-                    hits.add(kind)
+                    near.add(kind)
+        hits = hits or near   # "racks" is the kind word rack, though one edit from robots "reach1"...
         if len(hits) > 1:
             raise TranslationError(f"{_quote(alpha)} could name a {' or a '.join(sorted(hits))}")
         return hits.pop() if hits else None
@@ -534,7 +559,7 @@ class NameIndex:
     def lookup(self, alpha: str, digits: str, text: str, fuzzy: bool = True) -> Tok | None:
         """Resolve letters + number to a name or a kind word; raise when it cannot be told."""
         for v in variants(alpha):
-            exact = [n for n in self.names if n.alpha == v and n.digits == digits]
+            exact = [n for n in self.names if n.digits == digits and v in _spellings(n.alpha)]
             if exact:
                 return Tok("name", text, exact[0].name, exact[0].kind)
         if not digits and any(v in KIND_WORDS[k] or v in self.groups or v in self.robot_groups
@@ -687,8 +712,9 @@ class NameIndex:
         return next(iter(near.values())) if len(near) == 1 else None
 
     def _misspelt_apart(self, pair: list[str]) -> "_Name | None":
-        """A two-word name written apart with one of its words misspelt by one edit ("tastng room"
-        for tasting_room), the other right: read only where exactly one name fits, and never from a
+        """A two-word name written apart, or a two-word word the world declares for it, with one of
+        its words misspelt or misheard by one edit ("tastng room" for tasting_room, "receiving duck"
+        for the receiving dock), the other right: read only where exactly one name fits, and never from a
         word of the grammar (``reserved``) or a short word."""
         if len(pair) < 2 or not all(w.isalpha() for w in pair):
             return None
@@ -700,13 +726,10 @@ class NameIndex:
             return said != word and len(word) >= 4 and said[:1] == word[:1] and distance(said, word) <= 1
 
         hits = []
-        for n in self.names:
-            words = [w for w in re.split(r"[-_\s]+", n.name.lower()) if w]
-            if n.kind == "robot" or len(words) != 2:
-                continue
+        for words, n in self.said_apart:
             last = set(variants(b)) & ({words[1]} | set(plural_forms(words[1])))
             plural_near = any(near(b, w) for w in [words[1], *plural_forms(words[1])])   # "chew tyos"
-            if (a == words[0] and not last and plural_near) or (last and near(a, words[0])):
+            if ((a == words[0] and not last and plural_near) or (last and near(a, words[0]))) and n not in hits:
                 hits.append(n)
         return hits[0] if len(hits) == 1 else None
 
@@ -745,9 +768,28 @@ class NameIndex:
             return None
         return Tok("name", " ".join(raw[i:i + 3]), hits[0].name, "product")
 
+    def _tens_and_units(self, raw: list[str], i: int) -> Tok | None:
+        """ "door twenty two" for door22: a name whose number is said as tens and units, in two
+        words (speech to text writes "twenty two", not "twenty-two"). Only a name the world has is
+        read so; otherwise "door twenty" and a count "two" are left to the shorter reading."""
+        if i + 2 >= len(raw) or raw[i + 1].lower() not in TENS or not 0 < UNITS.get(raw[i + 2].lower(), 0) < 10:
+            return None
+        alpha, digits = split_digits(normalize(raw[i].lower()))
+        if digits or not alpha or self._unnumbered_class(alpha):
+            return None
+        number = TENS[raw[i + 1].lower()] + UNITS[raw[i + 2].lower()]
+        for v in variants(alpha):
+            exact = [n for n in self.names if n.alpha == v and n.digits == str(number)]
+            if exact:
+                return Tok("name", " ".join(raw[i:i + 3]), exact[0].name, exact[0].kind)
+        return None
+
     def at(self, raw: list[str], i: int) -> tuple[Tok, int] | None:
         """The name or kind word starting at ``raw[i]``, longest reading first."""
         low = raw[i].lower()
+        spoken = self._tens_and_units(raw, i)
+        if spoken is not None:
+            return spoken, i + 3
         if low in ORDINALS and i + 1 < len(raw) and raw[i + 1][0].isalpha():
             kind = self.kind_of_word(normalize(raw[i + 1]))
             if kind is not None and raw[i + 1].lower() in KIND_WORDS[kind] | self.stems[kind] | {
