@@ -10,7 +10,7 @@ import copy
 
 import pytest
 
-from pipflow.errors import TranslationError
+from pipflow.errors import Refusal, TranslationError
 from pipflow.household.language.translator import translate
 from tests.studio_world import STUDIO
 
@@ -81,3 +81,22 @@ def test_that_again_with_more_said_stays_unread() -> None:
 @pytest.mark.parametrize("said", ["can help me wash the teacup or not", "can help wash the teacup, can already"])
 def test_the_ways_she_asks_are_the_request(said: str) -> None:
     assert _goal(said) == _goal("wash the teacup")
+
+
+def test_a_verb_with_its_object_left_out_before_back_and_a_place() -> None:
+    """ "wash the teacup and the glass, then put back on the low table": both, as "put them back"."""
+    assert _goal("wash the teacup and the glass, then put back on the low table") == \
+        _goal("wash the teacup and the glass, then put them back on the low table")
+
+
+def test_what_is_thrown_away_may_say_where_it_lies() -> None:
+    assert _goal("throw away the soda on the low table")["in"] == {"recycling": ["soda"]}
+    with pytest.raises(Refusal):   # no soda lies in the closet: refused as said, never another thing thrown
+        translate("throw away the soda in the closet", HOME)
+
+
+def test_one_of_the_homes_people_before_a_things_name_says_whose_it_is() -> None:
+    """ "dad teacup" (no "'s"): the teacup; "mei ling" before words that name nothing stays unread."""
+    assert _goal("wash dad teacup") == _goal("wash the teacup")
+    with pytest.raises(TranslationError):
+        translate("wash mei ling trainers", HOME)

@@ -96,7 +96,7 @@ away: @V_PUT @AWAY things | @V_PUT things @AWAY | @V_PUT things @BACK | @V_PUT @
     | @V_TIDY things @AWAY | @V_TIDY @AWAY things
 
 chill: @V_CHILL things
-trash: @V_TRASH things | @V_THROW @AWAY things | @V_THROW things @AWAY | @V_THROW things @OUT
+trash: @V_TRASH sthings | @V_THROW @AWAY sthings | @V_THROW things @AWAY | @V_THROW things @OUT
 
 request: @V_LEAVE things state
        | @V_MAKE things state

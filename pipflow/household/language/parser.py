@@ -218,10 +218,17 @@ def _repairs(tags: list[Tag]) -> Iterator[tuple[list[Tag], list[str]]]:
             yield both, said + [_elided_note(moved)]
 
 
+def _destination_at(tags: list[Tag], k: int) -> bool:
+    """Whether a destination opens at ``tags[k]``: "in", "on", or "back" before one ("then put back
+    in the fridge")."""
+    return k < len(tags) and (tags[k].cls in DESTINATIONS or (
+        tags[k].cls == "BACK" and k + 1 < len(tags) and tags[k + 1].cls in DESTINATIONS | {"TO"}))
+
+
 def _elided_note(tags: list[Tag]) -> str:
     return ("a verb with its object left out ('" + "', '".join(
         f"{tags[k].words} {tags[k + 1].words}" for k in range(len(tags) - 1)
-        if tags[k].cls in DROPPED_OBJECT_VERBS and tags[k + 1].cls in DESTINATIONS)
+        if tags[k].cls in DROPPED_OBJECT_VERBS and _destination_at(tags, k + 1))
         + "') read as 'it': the thing named before")
 
 
@@ -236,7 +243,7 @@ def _elided_objects(tags: list[Tag]) -> list[Tag] | None:
         out.append(t)
         named_before = any(x.cls == "NOUN" or x.cls.endswith(NOUN_DUAL) for x in tags[:k])
         # the destination must name where: "hang on" (wait) drops no object
-        if (t.cls in DROPPED_OBJECT_VERBS and k + 2 < len(tags) and tags[k + 1].cls in DESTINATIONS
+        if (t.cls in DROPPED_OBJECT_VERBS and k + 2 < len(tags) and _destination_at(tags, k + 1)
                 and tags[k + 2].cls not in ("END", "COMMA") and named_before):
             out.append(Tag("IT", None, "(it)"))
             changed = True

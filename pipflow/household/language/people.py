@@ -88,6 +88,26 @@ def owners(world: dict) -> dict[tuple[str, ...], list[tuple[str, ...]]]:
     return {who: [key for key in index if len(key) > len(who) and key[:len(who)] == who] for who in found}
 
 
+def owners_before_names(words: list[str], world: dict, notes: list[str]) -> list[str]:
+    """ "papa office shirts", "jun hao school bag": one of the home's people (:func:`owners`) said
+    before a thing's name without "'s" says whose it is, read as "the", as "Rosie's cup" is
+    (:func:`~.tagger.owners_as_the`): which thing is meant is the home's one such thing, or it is
+    asked. Never where the owner's words with what follows are a name of the home themselves ("ah
+    ma bed"), nor before words that name nothing ("for ah ma lunch")."""
+    index = world_phrases(world)
+    out = list(words)
+    k = 0
+    while k < len(out):
+        who = next((w for w, names in sorted(owners(world).items(), key=lambda item: -len(item[0]))
+                    if tuple(out[k:k + len(w)]) == w and not any(tuple(out[k:k + len(n)]) == n for n in names)), None)
+        after = k + len(who) if who else k
+        if who and any(tuple(out[after:after + n]) in index for n in (1, 2, 3)):
+            notes.append(f"'{' '.join(who)}' says whose it is: read as 'the'")
+            out[k:after] = [] if k and out[k - 1] in ("the", "my", "our", "his", "her") else ["the"]
+        k += 1
+    return out
+
+
 #: every word of the lexicon's phrases and fillers, and the function words
 _LEXICON = frozenset(w for key in PHRASES for w in key) | frozenset(w for key in FILLER for w in key) | FUNCTION_WORDS
 

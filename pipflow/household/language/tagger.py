@@ -21,6 +21,7 @@ from pipflow.household.language.grammar import NOUN_DUAL
 from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
 from pipflow.household.language.names import (first_words, longest_name, named_by_first_word, per_index,
                                               things_of_kind, world_phrases)
+from pipflow.household.language.people import owners_before_names
 from pipflow.household.language.retag import (act_before_noun, demonstratives, elided_it_is, left_lying, located,
                                               restated_order, without_hedges)
 from pipflow.household.language.roomnames import where_as_name
@@ -122,7 +123,7 @@ def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: l
     """The command's words with its colloquial forms, constructions and particles read as the
     grammar's words (each rewrite notes what it read)."""
     words = scots_as_english(words_of(command), lambda w: known_word(w, index, vocab), notes)
-    words = where_as_name(words, index, notes)
+    words = owners_before_names(where_as_name(words, index, notes), world, notes)
     words = so_before_an_order(same_for(colloquial(corrected(words, notes), notes), notes), notes)
     words = or_under_negation(measures(without_manner(words, notes), index, notes), notes)
     words = heat_purpose(caused(given(me_as_where_the_speaker_is(words, index, notes), notes), notes), notes)

@@ -135,7 +135,8 @@ IDIOMS = ((re.compile(r"\b(as|what)\s+she(?=\s+(?:is|was|stands|has)\b|['\u2019]
           (re.compile(r"(^|[.;!?,:]\s*|\b(?:okay|ok|alright|so|and|then|now)\s+)(?:y['\u2019]?all|you\s+all)\b\s*,?\s*"
                       r"(?:(?:might\s+)?(?:could|can)\s+|need\s+to\s+|gotta\s+)?", re.IGNORECASE), r"\1"),
           (re.compile(r"\bmight\s+(?=(?:could|can|should|would)\b)", re.IGNORECASE), ""),
-          (re.compile(r"\b(?:real|right)\s+(?:quick|fast)\b", re.IGNORECASE), ""),
+          (re.compile(r"\s*\b(?:real|right)\s+(?:quick|fast)\b(?=\s*(?:[.,;:!?]|$|(?:and|then|so|please|pls)\b))",
+                      re.IGNORECASE), ""),
           (re.compile(r",?\s*\b(?:lemme|let\s+me|let['\u2019]?s)\s+(?:see|think)\b\s*,?", re.IGNORECASE), " "),
           (re.compile(r"\b(?:lemme|let\s+me|can\s+i|could\s+i)\s+get\b", re.IGNORECASE), "get"),
           (re.compile(r"\b(?:do\s*n['\u2019]?t|do\s+not|ai\s*n['\u2019]?t)\s+(?=nobody\s+but\b)", re.IGNORECASE), ""),
@@ -143,7 +144,7 @@ IDIOMS = ((re.compile(r"\b(as|what)\s+she(?=\s+(?:is|was|stands|has)\b|['\u2019]
           (re.compile(r"\b(?:i|we)\s+(?:do\s*n['\u2019]?t|do\s+not)\s+want\s+(?:no\s+)?(more|fewer|less)\s+than\b",
                       re.IGNORECASE), lambda m: "i want at " + ("most" if m.group(1).lower() == "more" else "least")),
           # "get 6 X slotted on P", "get em put away in P": the order is the move ("get" a causative)
-          (re.compile(r"\b(get\b[^.;!?\n]*?)\s+(?:slotted|staged|moved|stocked|put\s+away|sent|brought|taken|shifted|"
+          (re.compile(r"\b(get\b(?:(?!\b(?:and|then)\b)[^.;!?\n,])*?)\s+(?:slotted|staged|moved|stocked|put\s+away|sent|brought|taken|shifted|"
                       r"carried|dropped|parked|put)\s+(?=(?:on|onto|to|into|in|at|over|up|down)\b)", re.IGNORECASE), r"\1 "),
           # "3 X sitting on P", "the fans stacked in P": where they are, said of the things
           (re.compile(r"\b(?:sitting|sat|lying|laying|stacked|stored)\s+(?=(?:on|in|at)\b)", re.IGNORECASE), ""),
@@ -151,7 +152,8 @@ IDIOMS = ((re.compile(r"\b(as|what)\s+she(?=\s+(?:is|was|stands|has)\b|['\u2019]
           (re.compile(r"\bon\s+over\s+(?=to\b)", re.IGNORECASE), "over "),
           # "put em away on aisle 14", "put away 5 X on P": put them there (a warehouse keeps no homes)
           (re.compile(r"\bput\s+(them|em|it|those)\s+away\s+(?=(?:on|onto|in|into|at|over)\b)", re.IGNORECASE), r"put \1 "),
-          (re.compile(r"\bput\s+away\b(?=[^.;!?\n]*?\b(?:on|onto|in|into|at)\b)", re.IGNORECASE), "put"),
+          (re.compile(r"\bput\s+away\b(?=(?:(?!\b(?:and|then)\b)[^.;!?\n,])*?\b(?:on|onto|in|into|at)\b)", re.IGNORECASE),
+           "put"),
           # "I'd like to see 12 X on P", "I want to see ...": what the speaker wants there
           (re.compile(r"\b(want|like|need)\s+to\s+see\b", re.IGNORECASE), r"\1"),
           # "none of the night shift robots are to be used": do not use them (the negation kept, said
