@@ -100,3 +100,80 @@ def test_one_of_the_homes_people_before_a_things_name_says_whose_it_is() -> None
     assert _goal("wash dad teacup") == _goal("wash the teacup")
     with pytest.raises(TranslationError):
         translate("wash mei ling trainers", HOME)
+
+
+@pytest.mark.parametrize("said, plain", [
+    ("the teacup dirty already", "the teacup is dirty"),
+    ("wash the glass, the teacup dirty", "wash the glass, the teacup is dirty"),
+])
+def test_a_thing_and_what_it_is_like_without_is(said: str, plain: str) -> None:
+    assert _goal(said) == _goal(plain)
+
+
+def test_without_is_a_verb_after_a_thing_is_no_description() -> None:
+    """ "the teacup clean": "clean" is a verb as well; nothing is read into it."""
+    with pytest.raises(TranslationError):
+        translate("the teacup clean", HOME)
+
+
+def test_a_condition_with_its_is_left_out() -> None:
+    """The radio is on in the studio: "if the radio still on, off it" switches it off; "if the
+    radio off, ..." does not hold, so nothing of it is done."""
+    assert _goal("if the radio still on, off it pls") == _goal("switch the radio off")
+    assert _goal("if the radio off, on it. wash the teacup") == _goal("wash the teacup")
+
+
+def _with_fans(heater_on: bool = False) -> dict:
+    """The studio with two fans the home's words place ("living room fan", "bedroom fan"), both
+    off, and, if asked, a heater that is on."""
+    home = copy.deepcopy(HOME)
+    fan = {"y": 5.85, "width": 0.3, "depth": 0.1, "properties": ["toggleable"], "state": {"on": False}}
+    home["places"]["ceiling_fan"] = {**fan, "x": 3.0, "access": [3.1, 5.3], "words": ["living room fan"]}
+    home["places"]["desk_fan"] = {**fan, "x": 7.0, "access": [7.1, 5.3], "words": ["bedroom fan"]}
+    if heater_on:
+        home["places"]["heater"] = {**fan, "x": 6.0, "access": [6.1, 5.3], "state": {"on": True},
+                                    "words": ["radiator"]}
+    return home
+
+
+def test_too_warm_in_a_room_the_homes_words_name_is_that_rooms_fan_on() -> None:
+    assert translate("so hot in the living room", _with_fans())["goal"]["state"] == {"ceiling_fan": ["on"]}
+    assert translate("it's stuffy in the bedroom", _with_fans())["goal"]["state"] == {"desk_fan": ["on"]}
+
+
+def test_too_warm_without_a_room_is_asked_with_each_fan_offered() -> None:
+    with pytest.raises(TranslationError) as caught:
+        translate("it is roasting in here", _with_fans())
+    offered = [c["goal"]["state"] for c in caught.value.candidates]
+    assert {"ceiling_fan": ["on"]} in offered and {"desk_fan": ["on"]} in offered
+
+
+def test_too_warm_with_a_heater_on_is_still_the_heater_off() -> None:
+    assert translate("it is roasting in here", _with_fans(heater_on=True))["goal"]["state"] == {"heater": ["off"]}
+
+
+@pytest.mark.parametrize("said, plain", [
+    ("take the juice out of the fridge put on the counter", "take the juice out of the fridge, then put it on the counter"),
+    ("wash the teacup put it on the low table", "wash the teacup, then put it on the low table"),
+])
+def test_a_step_said_after_a_place_without_and(said: str, plain: str) -> None:
+    assert _goal(said) == _goal(plain)
+
+
+@pytest.mark.parametrize("said, plain", [
+    ("take the juice out of the fridge, put at the counter", "take the juice out of the fridge, put it on the counter"),
+    ("the novel don't anyhow touch ah", "don't touch the novel"),
+    ("the novel don't touch", "don't touch the novel"),
+])
+def test_more_of_the_ways_she_says_it(said: str, plain: str) -> None:
+    assert _goal(said) == _goal(plain)
+
+
+def test_a_second_cue_without_a_room_is_the_reason_for_the_one_said_with_its_room() -> None:
+    """ "so dark in the kitchen, I can't see the novel": the kitchen's light on, not every light."""
+    home = copy.deepcopy(HOME)
+    home["places"]["overhead_light"]["state"] = {"on": False}
+    home["objects"]["reading_light"]["state"] = {"on": False}
+    assert translate("so dark in the kitchen, i cannot see the novel", home)["goal"]["state"] == {
+        "overhead_light": ["on"]}
+    assert set(translate("i cannot see the novel", home)["goal"]["state"]) == {"overhead_light", "reading_light"}

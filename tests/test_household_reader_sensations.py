@@ -73,6 +73,9 @@ def chalet() -> dict:
 #: the chalet with its skylight taken out: the fan is the one thing that moves the air
 NO_SKYLIGHT = {"  skylight:     {x: 5.6, y: 0.2, width: 0.6, depth: 0.2, access: [5.9, 1.0], properties: [openable], "
                "state: {open: false}}\n": ""}
+#: the chalet with its ceiling fan taken out
+NO_FAN = {"  ceiling_fan:  {x: 4.6, y: 0.2, width: 0.3, depth: 0.3, access: [4.7, 1.0], properties: [toggleable], "
+          "state: {on: false}}\n": ""}
 #: the chalet with its anglepoise on: the standard lamp is the one light that is off
 ONE_LAMP_OFF = {"access: [7.3, 1.0], properties: [toggleable], state: {on: false}":
                 "access: [7.3, 1.0], properties: [toggleable], state: {on: true}"}
@@ -284,8 +287,12 @@ def test_how_strangers_say_the_room_feels(chalet):
     assert goal("Can we get some air in here?", fan_only) == ({}, {"ceiling_fan": ["on"]})
     # a cue with nothing to change is the reason for a request of the same state, else asked
     assert goal("I'm roasting, can you switch the burner off?", chalet) == ({}, {"wood_burner": ["off"]})
+    # too warm with no heater on and no window: the fan, as the air cue reads it; with no fan either,
+    # asked
+    assert goal("It's roasting in here.", fan_only) == ({}, {"ceiling_fan": ["on"]})
+    no_fan = _chalet(**NO_SKYLIGHT, **NO_FAN)
     with pytest.raises(TranslationError, match="no room heater that is on"):
-        translate("It's roasting in here.", fan_only)
+        translate("It's roasting in here.", no_fan)
     # disorder said with where it lies; food that needs heating up
     assert goal("There's dirty crockery all over the table.", chalet) == (
         {}, {"porringer": ["clean"], "teacup": ["clean"]})

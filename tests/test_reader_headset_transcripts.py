@@ -1,6 +1,6 @@
 """Issue 23, from pair QQ's warehouse set (a night-shift lead whose orders reach the robots as a
 headset's speech-to-text transcript, in Southern American English): numbers heard as words
-("for" four, "too" two), a name's number said in words ("dock thirty one"), a place taken back
+("for" four, "too" two: offered, never read), a name's number said in words ("dock thirty one"), a place taken back
 ("to dock 31 no wait to the cage"), "them" before a name, "y'all", "might could", "lemme see",
 a homophone of a place word ("isle"), a word a world declares misheard by one letter, negative
 concord, remarks run on without a stop, and what stays refused. In a world of our own (a parcel
@@ -39,7 +39,6 @@ def _goal(said: str) -> dict:
 
 @pytest.mark.parametrize("said", [
     "move 4 kettles from aisle 7 to dock thirty one",
-    "move for cases of kettles from aisle seven to dock 31",
     "move four kettles from aisle 7 to the cage no wait to dock 31",
     "move 4 kettles from isle seven to dock 31",
     "y'all might could move 4 kettles from aisle 7 to dock 31 real quick",
@@ -49,11 +48,13 @@ def test_a_move_as_the_headset_writes_it(said: str) -> None:
     assert _goal(said) == {"aisle7": {"kettle": 0}, "dock31": {"kettle": 10}}
 
 
-def test_a_count_heard_as_a_word_is_read_only_before_what_is_counted() -> None:
-    """ "too toasters" after "and" is two; "to" before a place stays "to"."""
-    assert _goal("move 1 heater and too toasters from aisle 9 to the cage") == {
-        "aisle9": {"heater": 0, "toaster": 6}, "cage": {"heater": 1, "toaster": 2}}
-    assert _goal("aisle 9 should only have to toasters on it") == {"aisle9": {"toaster": 2}}
+def test_a_count_heard_as_a_word_is_offered_never_read() -> None:
+    """A count is never guessed from the word a transcriber wrote for it ("for"): the command is
+    refused, the reading with the number offered, saying which word it read as which."""
+    with pytest.raises(TranslationError) as caught:
+        understand("move for cases of kettles from aisle seven to dock 31", HUB)
+    goal = {"aisle7": {"kettle": 0}, "dock31": {"kettle": 10}}
+    assert any(c["goal"] == goal and c["reading"].startswith("read '") for c in caught.value.candidates)
 
 
 def test_them_before_a_name_is_those_and_the_pronoun_stays_a_pronoun() -> None:
@@ -135,3 +136,12 @@ def test_a_place_that_needs_to_be_down_to_a_count_is_set_to_it_and_up_to_stays_u
     assert _goal("aisle 9 needs to be down to four toasters") == {"aisle9": {"toaster": 4}}
     with pytest.raises(TranslationError):
         understand("aisle 9 needs to be up to twenty toasters", HUB)
+
+
+def test_the_topic_said_first_with_its_count_as_an_apposition() -> None:
+    """ "the heaters on aisle 7, all nine of them, move em ...": all of them, checked against the
+    world; a count the place does not hold is asked, never read as a part."""
+    assert _goal("the heaters on aisle 7, all nine of them, move it to the cage") == {
+        "aisle7": {"heater": 0}, "cage": {"heater": 9}}
+    with pytest.raises(TranslationError):
+        understand("the heaters on aisle 7, all six of them, move it to the cage", HUB)

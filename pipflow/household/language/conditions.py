@@ -164,9 +164,10 @@ def _condition(words: list[str], world: dict, before: list[str] | None = None) -
     if found is None:
         return None
     thing_words, name, k = found
-    if not words[k:k + 1] or words[k] not in BE:
-        return None
-    k += 1
+    if words[k:k + 1] and words[k] in BE:
+        k += 1
+    elif not (words[k:k + 1] and (words[k] in _HEDGES or words[k] in STATES)):
+        return None   # "is" may be left out ("if the water heater still on"), nothing else
     while k < len(words) and words[k] in _HEDGES:
         k += 1
     negated = words[k:k + 1] == ["not"]

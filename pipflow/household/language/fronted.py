@@ -10,7 +10,8 @@ reading is one two people would agree on:
 
 * the fronted words are a noun phrase of the home and nothing else (names of the home,
   determiners, quantities, state adjectives, "and", "from <place>", "on / in / at <place>" after a
-  name), ending in a name, and "also" or "too" may stand between them and the verb;
+  name), ending in a name, and "also" or "too" may stand between them and the verb, or "don't"
+  before a verb that keeps a thing as it is ("the luggage don't touch");
 * they open a sentence, or a clause after ", and", or after a comma or "and" that does not follow
   a name (after one, the words could go on the clause before's list of things: "wash the jug and
   the plum put in the bowl" is refused);
@@ -36,6 +37,8 @@ OPENERS = {"THE", "ALL", "EVERY", "BOTH", "NUM", "ADJ"}
 VERBS = {"V_PUT", "V_THROW", "V_TOGGLE", "V_STATE", "V_TRASH", "V_CHILL", "V_TIDY", "V_LIGHT", "V_SHUTDOWN",
          # "papa dumbbell keep in the bomb shelter" (Singapore English "keep": put away)
          "V_LEAVE"}
+#: verbs that, said with "don't", keep a thing as it is ("the luggage don't touch")
+NEGATED_VERBS = {"V_TOUCH", "V_LEAVE"}
 #: where a thing of the fronted phrase lies, after its name ("the mug on the coffee table wash")
 WHERE = {"ON", "IN", "AT"}
 #: "as well" between the fronted phrase and its verb ("the mug also wash"): said after the thing
@@ -104,9 +107,13 @@ def fronted_objects(tags: list[Tag]) -> tuple[list[Tag], list[str]] | None:
         words = " ".join(t.words for t in phrase)
         also = end < len(out) and out[end].words in AS_WELL   # "the mug also wash": as well
         v = end + also
-        if v < len(out) and out[v].cls in VERBS and _lacks_object(out, v):
-            out[k:v + 1] = [out[v]] + phrase + out[end:end + also]
-            moved.append(f"{' '.join(t.words for t in out[k + 1:v + 1])} {out[k].words}")
+        negated = v < len(out) and out[v].cls == "DONOT"      # "the luggage don't touch"
+        v += negated
+        takes = v < len(out) and (out[v].cls in VERBS or (negated and out[v].cls in NEGATED_VERBS))
+        if takes and _lacks_object(out, v):
+            said = " ".join(t.words for t in out[k:v + 1])
+            out[k:v + 1] = out[v - negated:v + 1] + phrase + out[end:end + also]
+            moved.append(said)
         elif (v + 2 < len(out) and out[v].cls == "COMMA" and out[v + 1].cls in VERBS and out[v + 2].cls == "IT"
               and out[v + 2].words in ("it", "them") and (k == 0 or out[k - 1].cls in BREAKS)
               and _lacks_object(out, v + 2)):

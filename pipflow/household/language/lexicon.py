@@ -523,6 +523,8 @@ FILLER = {("um",), ("umm",), ("uh",), ("uhh",), ("uhm",), ("er",), ("erm",),   #
           ("do", "one", "thing"), ("na",), ("what", "to", "do"), ("itself",),
           # how a step is done, not how the home should end ("wash it nicely", "close it properly")
           ("nicely",), ("properly",), ("carefully",), ("gently",), ("thoroughly",), ("neatly",),
+          # Singapore English "anyhow" (carelessly: "don't anyhow touch"), a manner as "carefully" is
+          ("anyhow",),
           ("could", "you", "please"), ("if", "you", "would"), ("if", "you", "could"),
           ("do", "not", "forget", "to"), ("remember", "to"), ("make", "sure", "to"), ("you", "can"),
           ("pls",), ("plz",), ("plse",), ("thx",), ("ta",), ("cheers",),

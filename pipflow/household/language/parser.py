@@ -197,14 +197,16 @@ def _parse(command: str, world: dict, notes: list[str]) -> list[dict]:
 #: verbs whose object goes somewhere, and the words that say where: "then put in the fridge"
 #: drops the object "it" (the thing named before), as people do after naming it
 DROPPED_OBJECT_VERBS = {"V_PUT", "V_THROW"}
-DESTINATIONS = {"IN", "ON"}
+DESTINATIONS = {"IN", "ON", "AT"}
 
 
 def _repairs(tags: list[Tag]) -> Iterator[tuple[list[Tag], list[str]]]:
     """The tags of a command that does not parse as said, worded as the grammar's English, each
     with the notes that say so, in this order (the first that parses is read): a verb's object
-    left out read as "it" (:func:`_elided_objects`); things named before their verb moved after
-    it (:mod:`~.fronted`); both ("soup and cheese take out of the fridge and put on the table")."""
+    left out read as "it" (:func:`_elided_objects`); things named before their verb moved after it
+    (:mod:`~.fronted`); both ("soup and cheese take out of the fridge and put on the table"); a
+    verb said after a place with no joiner as a step of its own (:func:`_serial_verbs`), and with
+    its object left out."""
     elided = _elided_objects(tags)
     if elided is not None:
         yield elided, [_elided_note(tags)]
@@ -216,6 +218,13 @@ def _repairs(tags: list[Tag]) -> Iterator[tuple[list[Tag], list[str]]]:
         both = _elided_objects(moved)
         if both is not None:
             yield both, said + [_elided_note(moved)]
+    serial = _serial_verbs(tags)
+    if serial is not None:
+        said = ["a verb said after a place with no 'and' or comma before it: read as a step of its own"]
+        yield serial, said
+        both = _elided_objects(serial)
+        if both is not None:
+            yield both, said + [_elided_note(serial)]
 
 
 def _destination_at(tags: list[Tag], k: int) -> bool:
@@ -223,6 +232,47 @@ def _destination_at(tags: list[Tag], k: int) -> bool:
     in the fridge")."""
     return k < len(tags) and (tags[k].cls in DESTINATIONS or (
         tags[k].cls == "BACK" and k + 1 < len(tags) and tags[k + 1].cls in DESTINATIONS | {"TO"}))
+
+
+def _is_name(t: Tag) -> bool:
+    return t.cls == "NOUN" or t.cls.endswith(NOUN_DUAL)
+
+
+#: prepositions of a place a step may end on ("from the fridge", "on the table")
+_PLACE_PREPOSITIONS = {"FROM", "IN", "ON", "AT", "TO", "OUT", "OFF", "OF"}
+
+
+def _ends_with_a_place(out: list[Tag]) -> bool:
+    """Whether the tags end with a preposition and a name ("... from [the] fridge"): a place, never
+    a thing that could go on a list ("wash the jug and the platter put in the basin" stays asked)."""
+    k = len(out) - 1
+    if k < 1 or not _is_name(out[k]):
+        return False
+    k -= out[k - 1].cls == "THE"
+    return k >= 1 and out[k - 1].cls in _PLACE_PREPOSITIONS
+
+
+def _serial_verbs(tags: list[Tag]) -> list[Tag] | None:
+    """ "take out the chicken wings from the fridge put on the counter": a verb of putting or
+    throwing said straight after a place (a preposition and a name), or after any name with its own
+    object ("wash the mug put it on the rack"), in a sentence that has had a verb already, opens a
+    step of its own, as if a comma stood before it; None when there is no such verb. Tried only
+    when the command does not parse as said."""
+    out: list[Tag] = []
+    verb_before = False
+    changed = False
+    for k, t in enumerate(tags):
+        if t.cls in ("END", "EXCL"):
+            verb_before = False
+        # after a name that is no place, only a verb with its own object ("wash the mug put it on
+        # the rack"): one without could take the name as its object too
+        own_object = k + 1 < len(tags) and tags[k + 1].cls == "IT" and bool(out) and _is_name(out[-1])
+        if t.cls in DROPPED_OBJECT_VERBS and verb_before and (_ends_with_a_place(out) or own_object):
+            out.append(Tag("COMMA", None, ","))
+            changed = True
+        verb_before = verb_before or t.cls.startswith("V_")
+        out.append(t)
+    return out if changed else None
 
 
 def _elided_note(tags: list[Tag]) -> str:
@@ -241,10 +291,11 @@ def _elided_objects(tags: list[Tag]) -> list[Tag] | None:
     changed = False
     for k, t in enumerate(tags):
         out.append(t)
-        named_before = any(x.cls == "NOUN" or x.cls.endswith(NOUN_DUAL) for x in tags[:k])
-        # the destination must name where: "hang on" (wait) drops no object
+        named_before = any(_is_name(x) for x in tags[:k])
+        # the destination must name where: "hang on" (wait) drops no object; a name right before the
+        # verb is its object said first ("and plum put back on the trestle": :mod:`~.fronted`)
         if (t.cls in DROPPED_OBJECT_VERBS and k + 2 < len(tags) and _destination_at(tags, k + 1)
-                and tags[k + 2].cls not in ("END", "COMMA") and named_before):
+                and tags[k + 2].cls not in ("END", "COMMA") and named_before and not _is_name(tags[k - 1])):
             out.append(Tag("IT", None, "(it)"))
             changed = True
     return out if changed else None

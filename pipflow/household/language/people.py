@@ -22,8 +22,8 @@ Who is a person (never a word of the home's names or of the reader's lexicon, no
 Jones"); a title with a name after it ("Father Tom", "Mrs Patel", typed in lower case too:
 "father tom": after a title, a word of no name of the home and of no lexicon is the name); a
 capitalised word (or run of them) that is nobody's word ("Tom"); who the home's own words say owns
-a thing ("papa" of "papa's mug", "ah ma" of "ah ma's bed": :func:`owners`), in lower case too. A lower-case word alone is never
-a name: "tom" may be a typo, "for tom" is at most a purpose.
+a thing ("papa" of "papa's mug", "ah ma" of "ah ma's bed": :func:`owners`), in lower case too. Any
+other lower-case word alone is never a name: "tom" may be a typo, "for tom" is at most a purpose.
 
 The parser tries this only when a command does not read as said, so nothing that read before
 reads otherwise; the rewritten command must still read whole, every word placed.
@@ -95,17 +95,25 @@ def owners_before_names(words: list[str], world: dict, notes: list[str]) -> list
     asked. Never where the owner's words with what follows are a name of the home themselves ("ah
     ma bed"), nor before words that name nothing ("for ah ma lunch")."""
     index = world_phrases(world)
+    people = owners(world)
     out = list(words)
     k = 0
     while k < len(out):
-        who = next((w for w, names in sorted(owners(world).items(), key=lambda item: -len(item[0]))
-                    if tuple(out[k:k + len(w)]) == w and not any(tuple(out[k:k + len(n)]) == n for n in names)), None)
-        after = k + len(who) if who else k
-        if who and any(tuple(out[after:after + n]) in index for n in (1, 2, 3)):
-            notes.append(f"'{' '.join(who)}' says whose it is: read as 'the'")
-            out[k:after] = [] if k and out[k - 1] in ("the", "my", "our", "his", "her") else ["the"]
+        n = owner_at(out, k, people)
+        if n and any(tuple(out[k + n:k + n + m]) in index for m in (1, 2, 3)):
+            notes.append(f"'{' '.join(out[k:k + n])}' says whose it is: read as 'the'")
+            out[k:k + n] = [] if k and out[k - 1] in ("the", "my", "our", "his", "her") else ["the"]
         k += 1
     return out
+
+
+def owner_at(words: list[str], k: int, people: dict[tuple[str, ...], list[tuple[str, ...]]]) -> int:
+    """How many words from ``k`` name one of the home's people (``people``: :func:`owners`), where
+    they are not the start of a thing's name ("ah ma bed"); 0 where none does."""
+    for who, names in sorted(people.items(), key=lambda item: -len(item[0])):
+        if tuple(words[k:k + len(who)]) == who and not any(tuple(words[k:k + len(name)]) == name for name in names):
+            return len(who)
+    return 0
 
 
 #: every word of the lexicon's phrases and fillers, and the function words
@@ -135,7 +143,7 @@ class _Reader:
         w = words[k] if k < len(words) else ""
         if w in PERSON_PRONOUNS or (objective and w == "her"):
             return 1
-        owner = self._owner(k)
+        owner = owner_at(words, k, self.owners)
         if owner:
             return owner
         if w == "the" and k + 1 < len(words) and words[k + 1] in KIN and not self.known(words[k + 1]):
@@ -146,15 +154,6 @@ class _Reader:
         if w in KIN and not self.known(w):
             return 1 + self._capitalised_run(k + 1)
         return self._capitalised_run(k)
-
-    def _owner(self, k: int) -> int:
-        """How many words from ``k`` name one of the home's people by its own words (:func:`owners`),
-        where they are not the start of a thing's name ("ah ma bed")."""
-        for who, names in sorted(self.owners.items(), key=lambda item: -len(item[0])):
-            if tuple(self.words[k:k + len(who)]) == who and not any(
-                    tuple(self.words[k:k + len(name)]) == name for name in names):
-                return len(who)
-        return 0
 
     def _capitalised_run(self, k: int) -> int:
         """How many capitalised words from ``k`` are nobody's word ("Tom", "Patel")."""

@@ -41,6 +41,10 @@ from pipflow.household.world import entity, initial_state, members
 _FLAG = {"is-open": "open", "is-on": "on", "dirty": "dirty", "sliced": "sliced", "hot": "hot"}
 
 
+#: the words that lead a room said as where a cue is felt ("out in the conservatory", "in our lounge")
+_ROOM_LEADS = {"out", "over", "up", "down", "back", "in", "the", "my", "our"}
+
+
 def _choice(error: TranslationError, words: str, names: list[str]) -> TranslationError:
     """The error with what it asks to choose among: ``choices`` = (the words that name several
     things, their names), from which the refusal's candidate readings are built
@@ -100,7 +104,8 @@ class Resolver:
         self.last_any: list[str] = []                          # everything the statement before named
         self.before: list[str] = []                            # what "in it" may mean in this statement
         self.history: list[list[str]] = []                     # what each statement before named, in order
-        self.cue_defaults: list[tuple[str, str, str, list[str]]] = []   # (category, state, words, members)
+        # (category, state, words, members, whether a room said where)
+        self.cue_defaults: list[tuple[str, str, str, list[str], bool]] = []
         self.via_placed: dict[str, str] = {}                   # objects put where an action happens -> place
         self.said: list[list[str]] = []                        # the things each statement before was about
         self.mess: list[tuple[dict, str]] = []                 # disorder said of things: (statement, words)
@@ -850,15 +855,31 @@ class Resolver:
     def _room(self, st: dict, names: list[str], words: str) -> None:
         """A cue felt in a room the home model lacks ("out in the conservatory"): the home model has
         no rooms, so the room is read only when it cannot change which thing is meant (one thing
-        fits); several: asked, each offered, naming the room (never all of them, never one)."""
+        fits), or when the home's words place one of ``names`` there (``names`` is narrowed to it,
+        in place); several: asked, each offered, naming the room (never all of them, never one)."""
         room = st.get("room")
         if not room:
+            return
+        called = self._called_after(room, names)
+        if len(called) == 1:   # "the fan in the living room" where the home calls one "living room fan"
+            self.goal.notes.append(f"'{room}': the one of them the home's words place there ({called[0]})")
+            names[:] = called
             return
         if len(names) > 1 and self.choose.get(words) not in names:
             raise _choice(TranslationError(f"'{words}': this home model has no rooms, so '{room}' cannot say which "
                                            f"of {', '.join(names)} is meant; say which"), words, names)
         if names:
             self.goal.notes.append(f"'{room}': the home model has no rooms; the one thing that fits is meant")
+
+    def _called_after(self, room: str, names: list[str]) -> list[str]:
+        """Of ``names``, those whose name or words open with the room's words ("living room fan" for
+        "in the living room", "kids' room aircon" for "out in the kids room"): the home model has no
+        rooms, but its words may say where a thing is."""
+        said = words_of(room)
+        while said and said[0] in _ROOM_LEADS:
+            said = said[1:]
+        return [n for n in names if said and any(words_of(w)[:len(said)] == said
+                                                 for w in [n] + list(entity(self.world, n).get("words") or []))]
 
     def _near(self, st: dict, names: list[str], cond: str, words: str) -> None:
         """A light cue felt by a place ("it's dark over by the sofa"): the one light nearest that
@@ -894,6 +915,12 @@ class Resolver:
         heaters = [n for n in every if not holds_now(self.world, n, cond)]
         # cold with a window open: the window closed is an answer too (warm with one closed: open)
         windows = self.windows("open" if cond == "on" else "closed")
+        fans = [n for n in self.devices("air") if not holds_now(self.world, n, "on")]
+        if cond == "off" and not heaters and not windows and fans:
+            # too warm, no heater on and no window to open, in a home with fans or air
+            # conditioners: one that is off, on, as "it's stuffy" asks
+            self.air_cue(st, words)
+            return
         if windows:   # decided at the end: a request of the heating's state makes the cue its reason
             answers = {w: "closed" if cond == "on" else "open" for w in windows}
             self.unanswered.append((cond, words, lambda: self._either(heaters, answers, cond, words)))
@@ -1007,7 +1034,7 @@ class Resolver:
             self.observed = [o for o in self.observed if o not in fits]
         else:
             if not cats:   # decided at the end: the reason for a request the command makes, or asked
-                self.cue_defaults.append(("", cond, words, []))
+                self.cue_defaults.append(("", cond, words, [], False))
                 return
             named = [(n, False) for n in members(self.world, cats[0]) if applies(self.world, n, cond)]
             if not named:
@@ -1021,7 +1048,7 @@ class Resolver:
                 named = [(n, False) for n in ([self.choose[words]] if len(fit) > 1 else fit)] or named
             # decided at the end: "it is getting dark, turn on the floor lamp" gives the reason
             # for a request, it does not ask for every light
-            self.cue_defaults.append((cats[0], cond, words, [n for n, _ in named]))
+            self.cue_defaults.append((cats[0], cond, words, [n for n, _ in named], bool(st.get("room"))))
             self.last = [n for n, _ in named]
             return
         for n, explicit in named:
@@ -1114,11 +1141,17 @@ class Resolver:
         """A cue that names nothing means its whole category, unless the command itself asks the
         same state of one of its members (then the cue is only the reason)."""
         said = {}
-        for cat, cond, words, _ in self.cue_defaults:   # "it's too dark, I'm trying to sleep": which?
+        for cat, cond, words, *_ in self.cue_defaults:   # "it's too dark, I'm trying to sleep": which?
             if cat and said.get(cat, (cond, words))[0] != cond:
                 raise TranslationError(f"'{said[cat][1]}' and '{words}' ask opposite things of the {cat}; say which")
             said.setdefault(cat, (cond, words))
-        for cat, cond, words, names in self.cue_defaults:
+        # "so dark in the hall, I can't see the paper": the cue said with a room says where; the other
+        # is its reason, not a request for every member
+        roomed = {(cat, cond): names for cat, cond, _, names, room in self.cue_defaults if room and cat}
+        for cat, cond, words, names, room in self.cue_defaults:
+            if not room and (cat, cond) in roomed:
+                self.goal.notes.append(f"'{words}' is the reason for {', '.join(roomed[cat, cond])} {cond}")
+                continue
             if not cat:   # "we have finished listening, switch off the radio": the reason for a request
                 asked = [n for n, preds in self.goal.state.items()
                          if any(c.cond == cond and c.explicit and c.words != words for c in preds.values())]

@@ -5,7 +5,7 @@ a name ("a clean mug"), "that" as a determiner ("that curry has gone off")."""
 from __future__ import annotations
 
 from pipflow.household.language.grammar import NOUN_DUAL, base_class
-from pipflow.household.language.lexicon import GRADED, PHRASES
+from pipflow.household.language.lexicon import GRADED, PHRASES, TEMPERATURE_ADJECTIVES
 from pipflow.household.language.tokens import Tag
 from pipflow.household.world import members
 
@@ -165,6 +165,35 @@ def _subject_dropped(tags: list[Tag], k: int) -> bool:
         and not tags[k + 1].cls.endswith(NOUN_DUAL) and not _asked(tags, k)
 
 
+#: what may stand before the thing of a clause whose "is" is left out ("the rice cold")
+_BEFORE_THE_THING = {"THE"}
+
+
+def copula_dropped(tags: list[Tag], notes: list[str]) -> list[Tag]:
+    """ "mochi's bowl smelly already", "the rice cold": a clause that is only a thing of the home and
+    what it is like has left out "is", as Singapore and Malaysian English, and many a text, say it;
+    read with it, and so as "the bowl is smelly" would be (a cue, or a description that asks for
+    nothing). Only a clause of nothing else: one name, then one word of state, then the clause's end."""
+    out: list[Tag] = []
+    for k, t in enumerate(tags):
+        out.append(t)
+        start = len(out) - 1
+        while start > 0 and out[start - 1].cls in _BEFORE_THE_THING:
+            start -= 1
+        if (t.cls == "NOUN" and _opens_clause(out[:start]) and k + 1 < len(tags) and tags[k + 1].cls == "ADJ"
+                and (k + 2 == len(tags) or tags[k + 2].cls in ("END", "COMMA", "EXCL"))):
+            notes.append(f"'{t.words} {tags[k + 1].words}': read as '{t.words} is {tags[k + 1].words}'")
+            out.append(Tag("IS", None, "(is)"))
+    return out
+
+
+def _warmth_felt(tags: list[Tag], k: int) -> bool:
+    """ "hot in the living room", "so cold in here": a word of warmth said of where it is felt (a
+    room or "here" after it), which is how the room feels, not a thing's state."""
+    return (k + 1 < len(tags) and tags[k].cls == "ADJ" and tags[k].words in TEMPERATURE_ADJECTIVES
+            and tags[k + 1].cls in ("HERE", "INROOM"))
+
+
 def elided_it_is(tags: list[Tag], notes: list[str]) -> list[Tag]:
     """ "Bit dark in here", "freezing in here!": a sentence that opens with how the room feels has
     left out "it's"; read with it (only when a cue word of the room follows). A clause that opens
@@ -174,11 +203,11 @@ def elided_it_is(tags: list[Tag], notes: list[str]) -> list[Tag]:
     k = 0
     while k < len(tags):
         t = tags[k]
-        if _opens_clause(out) and t.cls in _FELT:
+        if _opens_clause(out) and (t.cls in _FELT or _warmth_felt(tags, k)):
             j = k
             while j < len(tags) and tags[j].cls in ("INTENS", "TOO"):
                 j += 1
-            if j < len(tags) and tags[j].cls in _CUES:
+            if j < len(tags) and (tags[j].cls in _CUES or _warmth_felt(tags, j)):
                 notes.append(f"'{' '.join(x.words for x in tags[k:j + 1])}': read as 'it is ...'")
                 out += [Tag("IT", None, "(it)"), Tag("IS", None, "(is)")]
         elif _opens_clause(out) and _subject_dropped(tags, k):

@@ -280,7 +280,8 @@ def heat_purpose(words: list[str], notes: list[str]) -> list[str]:
 
 def particles(words: list[str], names_nothing, notes: list[str]) -> list[str]:
     """Particles and small constructions read as the grammar's words (docs/household.md):
-    "them both" / "them all" as "both of them" / "all of them"; "through to P" as "to P" and
+    "them both" / "them all" as "both of them" / "all of them"; "ah" closing a clause left out (a
+    particle, as "lah"); "through to P" as "to P" and
     "through from P" as "from P" (to or from another room: the home model has none); "warm X
     through" without "through" (heated all the way: hot); "put X inside" (or "in") ending its
     clause as "put X in it"; "so W can ..." as "and ..." when W names nothing of the home (a
@@ -295,6 +296,11 @@ def particles(words: list[str], names_nothing, notes: list[str]) -> list[str]:
             out += _FLOATED[pair]
             notes.append(f"'{' '.join(pair)}' read as '{' '.join(_FLOATED[pair])}'")
             k += 2
+            continue
+        if w == "ah" and out and out[-1] not in PUNCT and (k + 1 == len(words) or words[k + 1] in PUNCT):
+            # Singapore and Malaysian English "ah" closing a clause ("don't touch ah"), a particle as
+            # "lah" is; "ah ma" (a person) goes on, and is left alone
+            k += 1
             continue
         if w == "through" and k + 1 < len(words) and words[k + 1] in ("to", "into", "onto", "in", "on", "from") and out \
                 and out[-1] not in PUNCT:

@@ -22,12 +22,12 @@ from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
 from pipflow.household.language.names import (first_words, longest_name, named_by_first_word, per_index,
                                               things_of_kind, world_phrases)
 from pipflow.household.language.people import owners_before_names
-from pipflow.household.language.retag import (act_before_noun, demonstratives, elided_it_is, left_lying, located,
-                                              restated_order, without_hedges)
-from pipflow.household.language.roomnames import where_as_name
+from pipflow.household.language.retag import (act_before_noun, copula_dropped, demonstratives, elided_it_is, left_lying,
+                                              located, restated_order, without_hedges)
 from pipflow.household.language.rewrites import (caused, closed_again, given, heat_purpose, measures, or_under_negation,
                                                  particles, same_for, so_before_an_order, wherever_they_belong,
                                                  without_manner)
+from pipflow.household.language.roomnames import where_as_name
 from pipflow.household.language.tokens import PUNCT, Tag
 from pipflow.household.language.typos import (determiner_slip, known_word, meaning_of, transposition_of, typo_of,
                                               vocabulary)
@@ -208,7 +208,7 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
             cls, value = PHRASES[tuple(words[i:i + n])]
             out.append(Tag(cls, value, text))
         i += n
-    out = elided_it_is(left_lying(without_hedges(out, notes)), notes)
+    out = elided_it_is(copula_dropped(left_lying(without_hedges(out, notes)), notes), notes)
     out = restated_order(located(demonstratives(act_before_noun(out)), world, notes), notes)
     if unknown:
         raise _unplaced(command, world, unknown, shared)

@@ -32,7 +32,7 @@ from pipflow.warehouse.language.names import (CONTAINERS, KIND_WORDS, POSS_MARK,
                                               recognize)
 from pipflow.warehouse.language.reordered import (base_verb, fronted_source, item_as_subject, needs_doing, said_at,
                                                 to_be_done)
-from pipflow.warehouse.language.transcripts import counts_heard_alike, places_taken_back, them_as_determiner
+from pipflow.warehouse.language.transcripts import places_taken_back, them_as_determiner
 from pipflow.warehouse.language.wordorder import left_dislocated, noun_adjuncts, numbered_siblings, unmarked_lists
 
 #: no user writes a longer command; past this the parser would only be asked to burn time
@@ -147,7 +147,9 @@ IDIOMS = ((re.compile(r"\b(as|what)\s+she(?=\s+(?:is|was|stands|has)\b|['\u2019]
           (re.compile(r"\b(get\b(?:(?!\b(?:and|then)\b)[^.;!?\n,])*?)\s+(?:slotted|staged|moved|stocked|put\s+away|sent|brought|taken|shifted|"
                       r"carried|dropped|parked|put)\s+(?=(?:on|onto|to|into|in|at|over|up|down)\b)", re.IGNORECASE), r"\1 "),
           # "3 X sitting on P", "the fans stacked in P": where they are, said of the things
-          (re.compile(r"\b(?:sitting|sat|lying|laying|stacked|stored)\s+(?=(?:on|in|at)\b)", re.IGNORECASE), ""),
+          # (never after "is" / "be": "P is sitting at 3 X" reports the stock, "should be sitting at" asks it)
+          (re.compile(r"(?<!\bis\s)(?<!\bare\s)(?<!\bbe\s)(?<!\bwas\s)(?<!\bbeen\s)"
+                      r"\b(?:sitting|sat|lying|laying|stacked|stored)\s+(?=(?:on|in|at)\b)", re.IGNORECASE), ""),
           # "take 6 X from P on over to Q": over to Q
           (re.compile(r"\bon\s+over\s+(?=to\b)", re.IGNORECASE), "over "),
           # "put em away on aisle 14", "put away 5 X on P": put them there (a warehouse keeps no homes)
@@ -1300,7 +1302,7 @@ class Lexicon:
                 continue
             fixed.append(t)
         verbs = {w for w in self.keywords if " " not in w} | set(VERB_LEXICON)
-        toks = them_as_determiner(counts_heard_alike(read_counts(_split_hyphens(fixed, self.keywords))))
+        toks = them_as_determiner(read_counts(_split_hyphens(fixed, self.keywords)))
         toks, framed = without_request_frames(places_taken_back(toks), verbs)
         toks = item_as_subject(fronted_source(to_be_done(needs_doing(by_as_at(toks), verbs), verbs), verbs))
         toks = lexicon_verbs(quantity_phrases(addressed_anyone(stative_having(toks)), self.keywords), self.keywords)

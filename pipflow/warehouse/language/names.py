@@ -559,7 +559,8 @@ class NameIndex:
     def lookup(self, alpha: str, digits: str, text: str, fuzzy: bool = True) -> Tok | None:
         """Resolve letters + number to a name or a kind word; raise when it cannot be told."""
         for v in variants(alpha):
-            exact = [n for n in self.names if n.digits == digits and v in _spellings(n.alpha)]
+            # another spelling only with a number ("isle 12"): alone, "dispatch" may be the verb
+            exact = [n for n in self.names if n.digits == digits and (v == n.alpha or digits and v in _spellings(n.alpha))]
             if exact:
                 return Tok("name", text, exact[0].name, exact[0].kind)
         if not digits and any(v in KIND_WORDS[k] or v in self.groups or v in self.robot_groups

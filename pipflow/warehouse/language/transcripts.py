@@ -1,25 +1,17 @@
 """What speech to text writes for a spoken order, read as what was said (issue 23).
 
-A lead who talks to the team through a headset reaches it as the transcriber heard her: a count
-written as the word that sounds like it ("move for cases of litter": four; "and too crock pots":
-two), a place said and taken back at once ("to door 22 no wait to the cage"), and the spoken
-"them" of "them crock pots" (those). Each is read only where nothing else can stand: a word heard
-for a count only between a verb of moving (or "and", "have") and what is counted; a place taken
-back only with a word that takes back ("wait", "sorry", "scratch that") and a place of the same
-kind of preposition after it; "them" only before a name, never as the pronoun ("send them to P").
+A lead who talks to the team through a headset reaches it as the transcriber heard her: a place
+said and taken back at once ("to door 22 no wait to the cage"), and the spoken "them" of "them
+crock pots" (those). Each is read only where nothing else can stand: a place taken back only with a
+word that takes back ("wait", "sorry", "scratch that") and a place of the same kind of preposition
+after it; "them" only before a name, never as the pronoun ("send them to P"). A count written as a
+word that sounds like it ("move for cases": four) is never read so: it is offered as a candidate
+reading (:data:`~.repairs.HOMOPHONES`), since a count is what must never be guessed.
 """
 from __future__ import annotations
 
 from pipflow.warehouse.language.names import Tok
 
-#: words of a unit said between a count and what it counts ("for cases of litter")
-_UNITS = frozenset({"cases", "case", "cartons", "carton", "totes", "tote", "bags", "bag", "boxes", "box", "pallets",
-                    "pallet", "packs", "pack", "units", "unit", "pieces", "piece", "crates", "crate"})
-#: words a transcriber writes for a count said aloud, and the count
-HEARD_AS_COUNTS = {"for": 4, "fore": 4, "to": 2, "too": 2}
-#: words after which a count is due ("move _ fryers", "and _ crock pots", "should only have _ vacs")
-_BEFORE_A_COUNT = frozenset({"move", "bring", "send", "take", "get", "put", "shift", "carry", "grab", "pull", "stage",
-                             "slot", "drop", "stack", "load", "ship", "and", "have", "has", "got", "need", "needs"})
 #: words that take back what was just said; one of them must be said for a place to be taken back
 #: ("no" alone may open a rule: "to P, no robots from Q")
 _TAKING_BACK = frozenset({"wait", "sorry", "scratch", "actually", "oops", "correction"})
@@ -27,26 +19,6 @@ _TAKE_BACK_WORDS = _TAKING_BACK | {"no", "that", "i", "mean", "meant", "hold", "
 #: prepositions of a destination, and of a source: a place is taken back by one of its own kind
 _TO = frozenset({"to", "into", "onto"})
 _FROM = frozenset({"from", "off"})
-
-
-def _product(toks: list[Tok], k: int) -> bool:
-    """Whether a product is named at ``toks[k]`` (after "of": "for cases of litter")."""
-    while k < len(toks) and toks[k].kind == "word" and toks[k].value in _UNITS:
-        k += 1
-    if k < len(toks) and toks[k].kind == "word" and toks[k].value == "of":
-        k += 1
-    return k < len(toks) and toks[k].kind == "name" and toks[k].of == "product"
-
-
-def counts_heard_alike(toks: list[Tok]) -> list[Tok]:
-    """ "move for cases of litter", "two of fryers and too crock pots", "should only have to vacs":
-    a word that sounds like a count, where a count is due and a product follows, is that count."""
-    out = list(toks)
-    for k, t in enumerate(out):
-        if (t.kind == "word" and t.value in HEARD_AS_COUNTS and k > 0 and out[k - 1].kind == "word"
-                and out[k - 1].value in _BEFORE_A_COUNT and _product(out, k + 1)):
-            out[k] = Tok("num", t.text, HEARD_AS_COUNTS[str(t.value)])
-    return out
 
 
 def them_as_determiner(toks: list[Tok]) -> list[Tok]:

@@ -111,8 +111,25 @@ def left_dislocated(toks: list[Tok]) -> list[Tok]:
     n = _topic_length(toks, 0)
     if not n or n >= len(toks) or not (toks[n].kind == "punct" and toks[n].value in (",", ":")):
         return toks
-    pronouns = [j for j in range(n + 1, len(toks)) if toks[j].kind == "word" and toks[j].value in ("them", "it", "those")]
+    # "The litter on high bay, all fifteen of it, move it to door 22": the count said of the topic
+    # goes with it, as "move the litter on high bay, all fifteen of it, to door 22" says it
+    said = _apposition_end(toks, n + 1)
+    topic = toks[:n] + (toks[n:said] if said else [])
+    start = said or n + 1
+    pronouns = [j for j in range(start, len(toks)) if toks[j].kind == "word" and toks[j].value in ("them", "it", "those")]
     if len(pronouns) != 1:
         return toks
     at = pronouns[0]
-    return toks[n + 1:at] + toks[:n] + toks[at + 1:]
+    return toks[start:at] + topic + toks[at + 1:]
+
+
+def _apposition_end(toks: list[Tok], k: int) -> int:
+    """The index after "all [N] [of it / of them] ," opening at ``k`` (its closing comma kept with
+    it), or 0 where none opens there."""
+    words = [str(t.value) if t.kind in ("word", "punct") else t.kind for t in toks[k:k + 6]]
+    if words[:1] not in (["all"], ["both"]):
+        return 0
+    j = 1 + (words[1:2] == ["num"])
+    j += j > 1 and words[j + 1:j + 3] in (["of", "it"], ["of", "them"])   # a unit between: "all 15 bags of it"
+    j += 2 if words[j:j + 2] in (["of", "it"], ["of", "them"]) else 0
+    return k + j + 1 if j > 1 and words[j:j + 1] == [","] else 0
