@@ -48,12 +48,18 @@ def test_a_move_as_the_headset_writes_it(said: str) -> None:
     assert _goal(said) == {"aisle7": {"kettle": 0}, "dock31": {"kettle": 10}}
 
 
-def test_a_count_heard_as_a_word_is_offered_never_read() -> None:
-    """A count is never guessed from the word a transcriber wrote for it ("for"): the command is
-    refused, the reading with the number offered, saying which word it read as which."""
+@pytest.mark.parametrize("said, goal", [
+    ("move for cases of kettles from aisle seven to dock 31", {"aisle7": {"kettle": 0}, "dock31": {"kettle": 10}}),
+    # "too" reads as "also" to the grammar, so the word no rule places is "toasters": offered still
+    ("move 1 heater and too toasters from aisle 9 to the cage",
+     {"aisle9": {"heater": 0, "toaster": 6}, "cage": {"heater": 1, "toaster": 2}}),
+    ("aisle 9 should only have to toasters on it", {"aisle9": {"toaster": 2}}),
+])
+def test_a_count_heard_as_a_word_is_offered_never_read(said: str, goal: dict) -> None:
+    """A count is never guessed from the word a transcriber wrote for it ("for", "too", "to"): the
+    command is refused, the reading with the number offered, saying which word it read as which."""
     with pytest.raises(TranslationError) as caught:
-        understand("move for cases of kettles from aisle seven to dock 31", HUB)
-    goal = {"aisle7": {"kettle": 0}, "dock31": {"kettle": 10}}
+        understand(said, HUB)
     assert any(c["goal"] == goal and c["reading"].startswith("read '") for c in caught.value.candidates)
 
 

@@ -12,7 +12,7 @@ from pipflow.warehouse.language.command import lexed_command, parse_reading
 from pipflow.warehouse.language.forest import CANDIDATE_BUDGET, CANDIDATE_PARSES
 from pipflow.warehouse.language.goals import Choice
 from pipflow.warehouse.language.readings import MAX_CANDIDATES, canonical
-from pipflow.warehouse.language.repairs import by_head_word, near_words, with_phrase, with_word
+from pipflow.warehouse.language.repairs import by_head_word, heard_counts, near_words, with_phrase, with_word
 from pipflow.warehouse.language.resolver import resolve
 from pipflow.warehouse.language.runon import RunOnChoice
 from pipflow.warehouse.language.salvage import SALVAGE
@@ -45,11 +45,14 @@ def candidates(command: str, world: dict, exc: TranslationError) -> list[dict]:
     CANDIDATE_BUDGET["left"] = CANDIDATE_PARSES
     word = getattr(exc, "word", None)
     lexed = lexed_command(command, world)[0] if word else None
-    # a word no rule places may be a near miss of a word that has a place: the command read with
-    # it respelt, once for each near word, the repair said in the echo; and an unknown word before
+    # a count a recogniser wrote as a word, before what is counted ("too crock pots"); a word no
+    # rule places may be a near miss of a word that has a place: the command read with it
+    # respelt, once for each near word, the repair said in the echo; and an unknown word before
     # the last word of one name ("the big rack": high_rack)
-    repaired = [(text, f"read '{word}' as '{right}'") for right in (near_words(word, lexed) if word else [])
-                for text in [with_word(command, word, right)] if text is not None]
+    repaired = [(with_phrase(command, wrong, right), f"read '{wrong}' as '{right}'")
+                for wrong, right in (heard_counts(lexed) if word else []) if wrong in command]
+    repaired += [(text, f"read '{word}' as '{right}'") for right in (near_words(word, lexed) if word else [])
+                 for text in [with_word(command, word, right)] if text is not None]
     repaired += [(with_phrase(command, wrong, right), f"read '{wrong}' as '{right}'")
                  for wrong, right in (by_head_word(command, word, lexed) if word else [])]
     salvages = picks[-len(SALVAGE):]
