@@ -551,7 +551,7 @@ class NameIndex:
                         v[:1] == stem[:1] and distance(v, stem) <= tolerance(len(stem))
                         for stem in self.stems[kind]):
                     near.add(kind)
-        hits = hits or near   # "racks" is the kind word rack, though one edit from robots "reach1"...
+        hits = hits or near   # a kind word as said wins over a near miss of a stem ("racks", robots reach1, reach2)
         if len(hits) > 1:
             raise TranslationError(f"{_quote(alpha)} could name a {' or a '.join(sorted(hits))}")
         return hits.pop() if hits else None
