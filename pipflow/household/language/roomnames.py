@@ -9,10 +9,10 @@ left as said ("the plate in the sink" stays the plate that lies in the sink).
 """
 from __future__ import annotations
 
+from pipflow.household.language.restated import DETERMINERS
+
 #: prepositions that say where a thing is
 _WHERE = frozenset({"in", "at", "on", "from"})
-#: words before the where that say no more than "the" ("in our kitchen", "in the kids room")
-_OWNERS = frozenset({"the", "our", "my", "their", "his", "her", "your"})
 #: the most words of the thing, and of its where
 _LONGEST = 3
 
@@ -33,7 +33,7 @@ def where_as_name(words: list[str], index: dict, notes: list[str]) -> list[str]:
         if out[k] not in _WHERE:
             k += 1
             continue
-        j = k + 1 + (k + 1 < len(out) and out[k + 1] in _OWNERS)
+        j = k + 1 + (k + 1 < len(out) and out[k + 1] in DETERMINERS)   # "in our kitchen": the kitchen
         # a name of the home that opens the where is said whole ("from the coffee table" is no
         # "coffee" where a coffee mug is)
         whole = max((n for n in range(1, _LONGEST + 3) if tuple(out[j:j + n]) in index), default=0)

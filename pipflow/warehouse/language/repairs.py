@@ -91,14 +91,9 @@ def by_head_word(command: str, word: str, lex: Lexicon) -> list[tuple[str, str]]
     return [(m.group(0), re.sub(r"[-_]+", " ", owners[0]))]
 
 
-#: words of a unit said between a count and what it counts ("for cases of litter")
-_UNITS = frozenset({"cases", "case", "cartons", "carton", "totes", "tote", "bags", "bag", "boxes", "box", "pallets",
-                    "pallet", "packs", "pack", "units", "unit", "of"})
-
-
 def heard_counts(lex: Lexicon) -> list[tuple[str, str]]:
     """ "move for cases of litter", "and too crock pots": a word a recogniser writes for a count
-    (:data:`HOMOPHONES`) right before what is counted (a product, after unit words), as (the
+    (:data:`HOMOPHONES`) right before what is counted (a product, after fillers), as (the
     words as written, the same with the number): offered, never read, wherever the grammar put
     the word ("too" may have read as "also")."""
     toks = lex.tokens
@@ -107,7 +102,8 @@ def heard_counts(lex: Lexicon) -> list[tuple[str, str]]:
         if t.kind != "word" or str(t.value) not in HOMOPHONES or t.text.lower() not in HOMOPHONES:
             continue
         j = k + 1
-        while j < len(toks) and toks[j].kind == "word" and str(toks[j].value) in _UNITS:
+        # unit words and "of" between ("for cases of litter"): what the grammar reads as nothing
+        while j < len(toks) and toks[j].kind == "word" and (lex.terminal(toks[j]) is None or toks[j].value == "of"):
             j += 1
         if j < len(toks) and toks[j].kind == "name" and toks[j].of == "product":
             said = " ".join(x.text for x in toks[k:j + 1])
