@@ -28,6 +28,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Callable, Iterable
 
+from pipflow.language.english import common_word
+from pipflow.language.numbers import NUMBER_WORDS
 from pipflow.language.spelling import Slips
 
 NEGATION = {"no", "not", "never", "nothing", "none", "nobody", "noone", "neither", "nor", "without", "dont",
@@ -220,7 +222,12 @@ def near_operative(word: str) -> bool:
         return True
     if word in FUNCTION_WORDS or word in INTERJECTIONS:   # a word in its own right: "the" is no slip of
         return False                                      # "then", "on" none of "no", "shame" none of "same"
-    return len(word) >= 3 and bool(_OPERATIVE_SLIPS.of(word))
+    slips = _OPERATIVE_SLIPS.of(word) if len(word) >= 3 else set()
+    # a common word written as itself ("big") is no slip of a quantity ("bit"); a slip that would
+    # say no, only or except is always taken as one ("nit", "nor" for "not")
+    if slips and common_word(word) and not slips & (NEGATION | EXCLUSIVITY):
+        return False
+    return bool(slips)
 
 
 def is_greeting(words: Iterable[str]) -> bool:
@@ -279,10 +286,12 @@ ROBOT_WORDS = frozenset({"robot", "robots", "bot", "bots", "agent", "agents", "s
 
 def is_statement(words: Iterable[str], names: Callable[[str], bool]) -> bool:
     """ "..., he make a strange noise", "..., tomorrow we wash it with vinegar", "..., the auditors
-    are in", "..., her wheel's squeaking": a clause whose subject is a pronoun other than "you", or
-    a noun phrase followed by "is / are / keep / has" within three words (after a word of time, if
-    any), says what is or will be so; it asks for nothing (an order to the robots is an imperative,
-    or is said to "you"). The words of the grammar in it describe ("make", "wash", "keep"). Kept in,
+    are in", "..., her wheel's squeaking", "..., is broken": a clause whose subject is a pronoun
+    other than "you", a noun phrase followed by "is / are / keep / has" within three words (after a
+    word of time, if any), a noun with a verb that lacks its -s (:data:`_BARE_VERBS`), or no
+    subject at all before "is / are / was / were", says what is or will be so; it asks for nothing
+    (an order to the robots is an imperative, or is said to "you"). The words of the grammar in it
+    describe ("make", "wash", "keep"). Kept in,
     and read, when it names anything of the world or a number (``names``), holds an operative word,
     a word of wanting or a modal (:data:`ASKING`: "we want it cleared", "they must go in salt", "it
     has to go"; "has" and "got" alone say what someone has) or a
@@ -295,9 +304,19 @@ def is_statement(words: Iterable[str], names: Callable[[str], bool]) -> bool:
     pronoun = ws[0] in (SUBJECTS | _SUBJECT_BE) - {"there", "theres", "youre"}
     noun = ws[0] not in FINITE and ws[0] not in FUNCTION_WORDS - DETERMINERS and any(
         w in FINITE or (w.endswith("ing") and len(w) > 4 and ws[0] in DETERMINERS) for w in ws[1:5])
-    if not (pronoun or noun or _past_of_a_noun(ws) or _bare_progressive(ws)):
+    # "..., is broken": its subject left out, as Polish, Spanish and Italian speakers leave it
+    dropped = ws[0] in ("is", "are", "was", "were") and ws[1] not in ("there", "it", "this", "that")
+    # "..., service come Monday", "..., auditor from customer come": a noun and a verb without its -s
+    bare = any(w in _BARE_VERBS for w in ws[1:4]) and ws[0] not in FUNCTION_WORDS and ws[0] not in _BARE_VERBS
+    if not (pronoun or noun or dropped or bare or _past_of_a_noun(ws) or _bare_progressive(ws)):
         return False
     return _asks_nothing(ws, names)
+
+
+#: verbs a noun subject may have without the -s of the third person, as learners of English say
+#: them ("the driver come at 6", "the customer want it so"): a statement, never an order
+_BARE_VERBS = frozenset({"come", "go", "arrive", "say", "send", "wait", "call", "ask", "complain", "order",
+                         "check", "count", "know", "think", "want", "like", "leave"})
 
 
 #: verbs in the past tense that do not end in "-ed" ("the labels got mixed up", "the truck came")
@@ -384,6 +403,23 @@ TIMES_SAID = frozenset({"lunch", "lunchtime", "noon", "midday", "midnight", "ton
 #: spans of time after "all" ("it's been on all night", "all the time"): how long, no quantity
 DURATIONS = frozenset({"day", "night", "week", "weekend", "month", "year", "morning", "afternoon", "evening",
                        "summer", "winter", "time"})
+
+
+#: units of time after a number ("waiting 40 min", "in 20 minutes"): how long, never a count of things
+TIME_UNITS = frozenset({"min", "mins", "minute", "minutes", "sec", "secs", "second", "seconds", "h", "hr", "hrs",
+                        "hour", "hours", "day", "days", "week", "weeks"})
+
+
+def _duration_at(ws: list[str], k: int) -> bool:
+    """Whether the word at ``k`` is the number or the unit of a span of time ("40 min")."""
+    if ws[k] in TIME_UNITS:
+        return k > 0 and _count_word(ws[k - 1])
+    return k + 1 < len(ws) and ws[k + 1] in TIME_UNITS and _count_word(ws[k])
+
+
+def _count_word(w: str) -> bool:
+    """A number in digits or words, or a reader's stand-in for one (the warehouse reader's marks)."""
+    return w.isdigit() or w in NUMBER_WORDS or w in ("\1", "\2")
 
 
 def _just_now(ws: list[str], k: int) -> bool:
@@ -652,6 +688,7 @@ def content_free(words: Iterable[str], content: Callable[[str], bool],
     the team; addressed to a name the world lacks, it is never talk: a robot that is not there is
     asked to do it, and the command must be refused, not given to the robots there are."""
     ws = [w for w in words if w]
+    ws = [w for k, w in enumerate(ws) if not _duration_at(ws, k)]   # "in 20 minutes": how long, no count
     if not ws:
         return True
     if tuple(ws) in CLOSINGS and not any(content(w) for w in ws):

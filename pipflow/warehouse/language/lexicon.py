@@ -30,7 +30,8 @@ from pipflow.language.spelling import distance, normalize, plural_forms, slip, t
 from pipflow.warehouse.language.grammar import ASIDE_ONLY
 from pipflow.warehouse.language.names import (CONTAINERS, KIND_WORDS, POSS_MARK, STOPWORDS, NameIndex, Tok, read_counts,
                                               recognize)
-from pipflow.warehouse.language.reordered import (base_verb, fronted_source, item_as_subject, needs_doing, said_at,
+from pipflow.warehouse.language.reordered import (base_verb, count_after_item, fronted_source, item_as_subject,
+                                                needs_doing, object_before_verb, on_as_to, place_must_be, said_at,
                                                 to_be_done)
 from pipflow.warehouse.language.transcripts import places_taken_back, them_as_determiner
 from pipflow.warehouse.language.wordorder import left_dislocated, noun_adjuncts, numbered_siblings, unmarked_lists
@@ -101,7 +102,48 @@ _FOR_EACH_OF = re.compile(rf"\b({_NUMBER})\s+((?:[a-z][a-z0-9_-]*\s+){{1,3}}?)fo
                           rf"({_NUMBER})\s+([a-z]+)\b", re.IGNORECASE)
 #: idioms read as the plain words the grammar has: "leave it as she is" ("she" for a place or a
 #: load, as trades say), "all told" (in total), "keep it well away from P" (away from)
-IDIOMS = ((re.compile(r"\b(as|what)\s+she(?=\s+(?:is|was|stands|has)\b|['\u2019]s\b)", re.IGNORECASE), r"\1 it"),
+IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before a word in lower case or a
+          # digit ends no sentence (before a capital it may: "must be 10 pal. Only day shift robots")
+          (re.compile(r"\b(pal|pall|pals|plt|plts|pcs|pc|ctn|ctns|min|max|approx|qty)\.(?=\s+(?-i:[a-z0-9])|,)",
+                      re.IGNORECASE), r"\1"),
+          # "EUR pal.", "6 pal water": pallets (a unit word; "pal" alone elsewhere may be a friend)
+          (re.compile(r"\b(?:eur|euro)\.?\s+(?=pal)", re.IGNORECASE), ""),
+          (re.compile(rf"\b({_NUMBER}|more|less|dozen)\s+pal(?:l|s|ls)?\b", re.IGNORECASE), r"\1 pallets"),
+          # "please to move 5 X" (a learner's "please" with the infinitive): please move
+          (re.compile(r"\b(please|pls|plz|kindly)\s+to\s+(?=[a-z])", re.IGNORECASE), r"\1 "),
+          # "P is need 4 more X": needs
+          (re.compile(rf"\b(?:is|are)\s+need(?:ed)?\s+(?=(?:{_NUMBER}|more|at\s+least|minimum)\b)", re.IGNORECASE),
+           "needs "),
+          # "returns make completely empty", "X on P make double" (the thing first, then "make" and what
+          # it becomes, as Polish and Russian say it): make P empty, double X on P
+          (re.compile(r"(^|[.;!?,:]\s+|\s-\s)([a-z][^.;!?,:]*?)\s+make\s+(?:[a-z]+ly\s+)?(empty|full)\b", re.IGNORECASE),
+           r"\1make \2 \3"),
+          (re.compile(r"(^|[.;!?,:]\s+|\s-\s)([a-z][^.;!?,:]*?)\s+make\s+(double|triple|half)\b", re.IGNORECASE),
+           r"\1\3 \2"),
+          # "minimum 6, not less", "maximum 5, not more": the bound said again
+          (re.compile(r"\b((?:minimum|at\s+least)\s+\d+[^.;!?\n]*?)\s*,?\s*not\s+less\b", re.IGNORECASE), r"\1"),
+          (re.compile(r"\b((?:maximum|at\s+most)\s+\d+[^.;!?\n]*?)\s*,?\s*not\s+more\b", re.IGNORECASE), r"\1"),
+          # "from 2 till 3 X there": between 2 and 3 (a number after "from" is no place)
+          (re.compile(r"\bfrom\s+(\d+)\s+(?:till|until|til|to)\s+(\d+)\b", re.IGNORECASE), r"between \1 and \2"),
+          # "ramp 1 and ramp 2 - swap everything between them": the places said first
+          (re.compile(r"(^|[.;!?]\s*)([a-z][a-z0-9 ]*?\s+and\s+[a-z][a-z0-9 ]*?)\s*[-:]\s+(swap|switch|exchange)\s+"
+                      r"(everything|all)\s+between\s+them\b", re.IGNORECASE), r"\1\3 \4 between \2"),
+          # "divide 8 X equal for P and Q": evenly between them
+          (re.compile(r"\b(divide|split|distribute|share)\b([^.;!?\n]*?)\s+equal(?:ly)?\s+(?:for|on|to|among|between)\s+",
+                      re.IGNORECASE), r"\1\2 evenly between "),
+          # "from rack B take a third of the X away": take it away from rack B
+          (re.compile(r"(^|[.;!?]\s*)from\s+([a-z][a-z0-9 ]*?)\s*,?\s+(take|remove|clear)\s+([^.;!?,\n]+?)\s+(away|off|out)\b",
+                      re.IGNORECASE), r"\1\3 \4 \5 from \2"),
+          # "3 more X on P, on Q also": the same for Q
+          (re.compile(r",\s*(?:and\s+)?(?:on|at|in|for)\s+([a-z][^.;!?,\n]*?)\s+(?:also|too|as\s+well)\b(?=\s*(?:[.;!?,]|$))",
+                      re.IGNORECASE), r", same for \1"),
+          # "X on P and Q - 4 on each (one)": 4 X on each of P and Q
+          (re.compile(r"(^|[.;!?]\s*)([a-z][a-z0-9_-]*)\s+(?:on|in|at)\s+([a-z][a-z0-9 ]*?\s+and\s+[a-z][a-z0-9 ]*?)\s*[-:]\s*"
+                      r"(\d+)\s+(?:pallets\s+|pcs\s+)?(?:on|in|at)\s+each(?:\s+one)?\b", re.IGNORECASE), r"\1\4 \2 on each of \3"),
+          # "min. 2", "max 5": at least, at most (never "40 min", which is minutes)
+          (re.compile(r"\bmin\.?\s+(?=\d)", re.IGNORECASE), "minimum "),
+          (re.compile(r"\bmax\.?\s+(?=\d)", re.IGNORECASE), "maximum "),
+          (re.compile(r"\b(as|what)\s+she(?=\s+(?:is|was|stands|has)\b|['\u2019]s\b)", re.IGNORECASE), r"\1 it"),
           (re.compile(r"\ball\s+told\b", re.IGNORECASE), "in total"),
           (re.compile(r"\bwell\s+(?=away\s+from\b|clear\s+of\b)", re.IGNORECASE), ""),
           # "can one of yous shift ...": anyone of the team, as "can someone" is
@@ -116,7 +158,7 @@ IDIOMS = ((re.compile(r"\b(as|what)\s+she(?=\s+(?:is|was|stands|has)\b|['\u2019]
           (re.compile(r"\bthe\s+now\b(?=\s*(?:[.,;:!?]|$))", re.IGNORECASE), "now"),
           # Dutch English "for the rest (all) to P" (voor de rest): the rest; "all the rest", "the
           # rest all": the rest, which is all of it already
-          (re.compile(r"\b(?:for\s+)?the\s+rest\s+all\b|\ball\s+the\s+rest\b|\bfor\s+the\s+rest\b", re.IGNORECASE), "the rest"),
+          (re.compile(r"\b(?:for\s+)?the\s+rest\s+all\b|\ball\s+(?:the\s+)?rest\b|\bfor\s+the\s+rest\b", re.IGNORECASE), "the rest"),
           # "(on top of what's there)" after "more" / "extra" in its sentence: in addition, which
           # those words say already
           (re.compile(r"\b((?:more|extra|additional)\b[^.;!?\n]*?),?\s*on\s+top\s+of\s+what(?:['\u2019]s|\s+is)\s+"
@@ -125,7 +167,7 @@ IDIOMS = ((re.compile(r"\b(as|what)\s+she(?=\s+(?:is|was|stands|has)\b|['\u2019]
           (re.compile(r"\bone\s+of\s+each\b([^.;!?\n]*?),?\s*on\s+top\s+of\s+what(?:['\u2019]s|\s+is)\s+"
                       r"(?:already\s+)?(?:there|on\s+it)\b", re.IGNORECASE), r"one more of each\1"),
           # "except those on P": the ones on P
-          (re.compile(r"\b(except|bar|but|apart\s+from|other\s+than)\s+those\s+(?=(?:on|in|at|from)\b)", re.IGNORECASE),
+          (re.compile(r"\b(except|bar|but|apart\s+from|other\s+than)\s+(?:those|this|that)\s+(?=(?:on|in|at|from)\b)", re.IGNORECASE),
            r"\1 the ones "),
           # Southern and spoken American English, as a headset's transcript writes it: "y'all" or
           # "you all" said to the team before the order ("listen up y'all", "y'all might could
@@ -346,6 +388,9 @@ def check_text(command: str) -> str:
     # a minus sign binds only when attached to its number ("-5"); a dash set apart by spaces is
     # punctuation ("Cross dock - 2 sku-220", "bin 4 \u2013 3 bolts"), read like a colon
     # (the minus sign U+2212 is never punctuation)
+    # before "and" / "then" / "but" it joins two orders, as a comma does ("... to returns - and tug2 ...")
+    command = re.sub(r"(?<=\S)\s+[-\u2013\u2012\u2010\u2011\u2014\u2015]+\s+(?=(?:and|then|but)\b)", " , ", command,
+                     flags=re.IGNORECASE)
     command = re.sub(r"(?<=\S)\s+[-\u2013\u2012\u2010\u2011\u2014\u2015]+\s+(?=\S)", " : ", command)
     command = re.sub(r"[\u2014\u2015]+", " ", command)  # an em dash between two words: a space (as always)
     m = re.search(r"(?:^|(?<=[\s(:,;]))[-\u2212\u2013\u2012\u2010]\s*(\d[\d,.]*)", command)
@@ -1137,7 +1182,9 @@ class Lexicon:
             return False  # "for" is no misspelt "four", "to" none of "two" (as in names_world)
         if _number_typo(word) is not None:
             return True
-        repaired = SPELLINGS.get(word) or self._keyword_typo(word)
+        # a common word written as itself is no slip of a grammar word ("driver" no "drive"), as it
+        # is none of a number (_number_typo) or of a name (_near_name)
+        repaired = SPELLINGS.get(word) or (None if common_word(word) else self._keyword_typo(word))
         if repaired is not None and repaired not in FUNCTION_WORDS:
             return repaired not in ASIDE_ONLY   # "tmr": tomorrow
         return self._near_name(word)
@@ -1283,6 +1330,9 @@ class Lexicon:
         # the 24-hour clock written the French way ("at 15h", "3h30") is one too
         text = re.sub(r"\b(\d{1,2})(am|pm|oclock)\b", r"\1 \2", self._joined(check_text(command)), flags=re.IGNORECASE)
         text = re.sub(r"\b([01]?\d|2[0-4])h(?:[0-5]\d)?\b", r"\1 oclock", text, flags=re.IGNORECASE)
+        # and "14:00", "2:30 PM": a time of day (its minutes and half of the day are no count)
+        text = re.sub(r"\b([01]?\d|2[0-4]):[0-5]\d(?:\s*(?:am|pm|a\.m\.|p\.m\.)(?![a-z]))?", r"\1 oclock", text,
+                      flags=re.IGNORECASE)
         # "by 7ish": about a time of day, after a word that says when; read as "by 7 o'clock", never as
         # a count ("cut the cider by 7ish" is no cut by 7)
         text = re.sub(r"\b(by|at|around|before|after|until|till)\s+(\d{1,2})ish\b", r"\1 \2 oclock", text,
@@ -1305,6 +1355,7 @@ class Lexicon:
         toks = them_as_determiner(read_counts(_split_hyphens(fixed, self.keywords)))
         toks, framed = without_request_frames(places_taken_back(toks), verbs)
         toks = item_as_subject(fronted_source(to_be_done(needs_doing(by_as_at(toks), verbs), verbs), verbs))
+        toks = on_as_to(object_before_verb(count_after_item(place_must_be(toks))))
         toks = lexicon_verbs(quantity_phrases(addressed_anyone(stative_having(toks)), self.keywords), self.keywords)
         toks = put_back_after_its_object(counts_sent_from_a_topic(corrected(toks)))
         toks = dropped_object(corrected_later(without_particles(toks)))

@@ -223,3 +223,190 @@ def fronted_source(toks: list[Tok], verbs: Collection[str]) -> list[Tok]:
                 and _word_in(toks, k + 1, verbs)):
             out.append(Tok("punct", ",", ","))
     return out
+
+
+#: verbs of moving things whose object may be said before them ("all charcoal bring to ramp 2")
+_MOVING = frozenset({"move", "bring", "send", "take", "put", "carry", "shift", "transfer", "deliver", "ship",
+                     "stage", "haul", "fetch", "dispatch", "relocate", "ferry", "cart", "shuttle", "divide", "split",
+                     "distribute"})
+#: verbs that keep a place as it is, said with "dont" after it ("rack B dont touch")
+_KEEPING = frozenset({"touch", "use"})
+#: what may follow a verb whose object was said first: where to, or the clause's end
+_AFTER_VERB = frozenset({"to", "on", "onto", "into", "in", "over", "back", "across", "up", "down", "evenly",
+                         "equally"})
+#: words of a noun phrase of things ("half of the water", "all charcoal", "4 of them")
+_PHRASE_WORDS = frozenset({"all", "the", "of", "half", "them", "those", "these", "every", "each", "rest"})
+_NEGATIONS = frozenset({"dont", "never", "not"})
+#: unit words said after a count ("5 pcs", "4 pallets"): no thing of their own
+_UNITS = frozenset({"pallets", "pallet", "pcs", "pc", "units", "unit", "pieces", "cases", "boxes", "cartons", "ctn",
+                    "ctns", "plt", "plts"})
+#: words that open a clause after its comma ("..., but rack B dont touch")
+_JOINS = frozenset({"but", "and", "then", "so"})
+
+
+def _object_phrase(clause: list[Tok]) -> int:
+    """How many tokens open the clause as a noun phrase of things: counts, names of products, the
+    words of :data:`_PHRASE_WORDS`, and "from" / "on" / "in" / "at" a place ("half of water from rack
+    A"); 0 where none does, or where it names no product and says no "them"."""
+    j = 0
+    while j < len(clause):
+        t = clause[j]
+        if t.kind == "num" or _name_at(clause, j, "product") or _word_in(clause, j, _PHRASE_WORDS | _UNITS):
+            j += 1
+        elif _word_in(clause, j, ("from", "on", "in", "at")) and _name_at(clause, j + 1, "shelf") and j:
+            j += 2
+        else:
+            break
+    things = any(_name_at(clause, n, "product") or _word_in(clause, n, ("them", "those", "these")) for n in range(j))
+    return j if things else 0
+
+
+def object_before_verb(toks: list[Tok]) -> list[Tok]:
+    """The tokens with a clause that names its things before their verb read in the grammar's order,
+    as speakers of languages of free word order say it: "all charcoal bring to ramp 2 except ..." is
+    "bring all charcoal to ramp 2 except ...", "half of water from rack A bring on ramp 2" is "bring
+    half of water from rack A on ramp 2"; a place said before "dont touch" / "dont use" ("rack B dont
+    touch") is "dont touch rack B". Only at a clause's start, with the verb right after the things
+    (or after "dont" / "never") and no object after the verb (where to follows, or the clause
+    ends); a clause opens after a mark, or after "but" / "and" / "then" / "so" right after one.
+    Anything else is left as said."""
+    out: list[Tok] = []
+    k = 0
+    while k < len(toks):
+        if k and toks[k - 1].kind != "punct" and not (_word_in(toks, k - 1, _JOINS) and (
+                k == 1 or toks[k - 2].kind == "punct")):
+            out.append(toks[k])
+            k += 1
+            continue
+        end = next((j for j in range(k, len(toks)) if toks[j].kind == "punct"), len(toks))
+        clause = toks[k:end]
+        n = _object_phrase(clause)
+        negated = 0
+        if n == 0 and _name_at(clause, 0, "shelf") and _word_in(clause, 1, _NEGATIONS) and _word_in(clause, 2, _KEEPING):
+            n, negated = 1, 1
+        else:
+            negated = 1 if n and _word_in(clause, n, _NEGATIONS) else 0
+        v = n + negated
+        verbs = _KEEPING if _name_at(clause, 0, "shelf") and n == 1 else _MOVING
+        if n and _word_in(clause, v, verbs) and (v + 1 == len(clause) or _word_in(clause, v + 1, _AFTER_VERB)):
+            out += clause[n:v + 1] + clause[:n] + clause[v + 1:]
+            k = end
+            continue
+        out.append(toks[k])
+        k += 1
+    return out
+
+
+def on_as_to(toks: list[Tok]) -> list[Tok]:
+    """The tokens with "on" read as "to" where a clause moves things from (or off) a place it names
+    and then says "on" another place ("bring half of water from rack A on ramp 2": to ramp 2, as "na" says
+    it in Polish and "на" in Russian); only after the source, with a verb of moving before it. Where
+    no source is said "on P" may say where the things are, and is left as said."""
+    out = list(toks)
+    start = 0
+    for k in range(len(toks) + 1):
+        if k < len(toks) and toks[k].kind != "punct":
+            continue
+        moving = source = False
+        for j in range(start, k):
+            if _word_in(out, j, _MOVING):
+                moving = True
+            elif _word_in(out, j, ("from", "off")) and _name_at(out, j + 1, "shelf"):
+                source = moving
+            elif source and _word_in(out, j, ("on",)) and _name_at(out, j + 1, "shelf"):
+                out[j] = Tok("word", out[j].text, "to")
+        start = k + 1
+    return out
+
+
+def _clause_opens(toks: list[Tok], k: int) -> bool:
+    """Whether a clause opens at ``k``: the start, after a mark, or after "and" / "but" / "then" /
+    "so" right after one."""
+    return k == 0 or toks[k - 1].kind == "punct" or (
+        _word_in(toks, k - 1, _JOINS) and (k == 1 or toks[k - 2].kind == "punct"))
+
+
+def count_after_item(toks: list[Tok]) -> list[Tok]:
+    """The tokens with the count said after what it counts read before it, as learners of English
+    order it (the thing first, then how many): "charcoal 5 from rack B to ramp 2" is "5 charcoal from
+    rack B ...", "rack B water 5 to ramp 1" is "5 water from rack B to ramp 1" (the place said first
+    is where they come from only where "to" follows the count), "from rack B detergent: 4 to ramp 2"
+    is "from rack B, 4 detergent to ramp 2", "from rack A 2 detergent to returns" is "2 detergent
+    from rack A to returns"; and "3 juice more on ramp 1" is "3 more juice ...".
+    Only at a clause's start, with one product and one count; anything else is left as said."""
+    out: list[Tok] = []
+    k = 0
+    while k < len(toks):
+        if _clause_opens(toks, k):
+            said = _item_count(toks, k)
+            if said is not None:
+                words, taken = said
+                out += words
+                k += taken
+                continue
+        if toks[k].kind == "num" and _name_at(toks, k + 1, "product") and _word_in(toks, k + 2, ("more",)):
+            out += [toks[k], toks[k + 2], toks[k + 1]]
+            k += 3
+            continue
+        out.append(toks[k])
+        k += 1
+    return out
+
+
+def _item_count(toks: list[Tok], k: int) -> tuple[list[Tok], int] | None:
+    """:func:`count_after_item` at a clause opening at ``k``: the tokens said instead and how many
+    they replace, or None."""
+    j = k
+    source: list[Tok] = []
+    if _word_in(toks, j, ("from",)) and _name_at(toks, j + 1, "shelf"):
+        source, j = toks[j:j + 2], j + 2
+    elif _name_at(toks, j, "shelf"):
+        source, j = [Tok("word", "", "from"), toks[j]], j + 1
+    j += _word_in(toks, j, (POSS_MARK,))   # "rack B water": read as "rack B's water"
+    if _name_at(toks, j, "shelf") or toks[k].kind == "name" and not _name_at(toks, j, "product"):
+        return None
+    if source and toks[j].kind == "num" and _name_at(toks, j + 1, "product") and source[0].text:
+        # "from rack A 2 detergent to returns": the source said first, without its comma
+        end = j + 2 + _word_in(toks, j + 2, _UNITS)
+        return ([*toks[j:j + 2], *source], end - k) if _word_in(toks, end, ("to",)) else None
+    if not _name_at(toks, j, "product"):
+        return None
+    item = toks[j]
+    # a colon only after a source ("from rack B detergent: 4 to ..."); "tote bags: 1 on the mezz, rest
+    # to packing" says a topic whose rest is asked about, and is left as said
+    colon = 1 if source and source[0].text and j + 1 < len(toks) and toks[j + 1].kind == "punct" \
+        and toks[j + 1].value == ":" else 0
+    n = j + 1 + colon
+    if n >= len(toks) or toks[n].kind != "num":
+        return None
+    n += _word_in(toks, n + 1, _UNITS)   # "5 pcs", "4 pal.": the unit goes
+    to = _word_in(toks, n + 1, ("to", "on", "onto", "into"))
+    if source and not (to or _word_in(toks, n + 1, ("from",))):
+        return None          # "rack A juice 5": the place's own count, read as said
+    if source and source[0].text == "" and not to:
+        return None
+    count = toks[j + 1 + colon]
+    if source and not source[0].text:        # the place said first: "5 water from rack B to ..."
+        return [count, item, *source], n + 1 - k
+    if source:                               # "from rack B detergent: 4": the source stays first
+        return [*source, Tok("punct", ",", ","), count, item], n + 1 - k
+    return [count, item], n + 1 - k
+
+
+def place_must_be(toks: list[Tok]) -> list[Tok]:
+    """The tokens with "(on) rack A must be 15 water" read as "rack A must have 15 water", as
+    speakers of languages that say what is on a place with "be" order it ("na regale musi być"):
+    only at a clause's start, a place (after "on" / "in" / "at" or not), "must" or "should", "be"
+    and a count."""
+    out: list[Tok] = []
+    k = 0
+    while k < len(toks):
+        j = k + _word_in(toks, k, ("on", "in", "at"))
+        if (_clause_opens(toks, k) and _name_at(toks, j, "shelf") and _word_in(toks, j + 1, ("must", "should"))
+                and _word_in(toks, j + 2, ("be",)) and j + 3 < len(toks) and toks[j + 3].kind == "num"):
+            out += [toks[j], toks[j + 1], Tok("word", toks[j + 2].text, "have")]
+            k = j + 3
+            continue
+        out.append(toks[k])
+        k += 1
+    return out

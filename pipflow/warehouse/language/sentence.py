@@ -610,9 +610,11 @@ class SentenceReader(GoalRules, TailRules, RuleScope, Interpreter):
             # not said (all of Q's? what P has left?)
             raise TranslationError(f"'{np['words']}': the rest of {', '.join(np['rest_of'])}'s, but the move "
                                    f"before takes from {', '.join(source)}; say how many")
-        if prev["op"] == "set" and self.lexed.tokens and self.lexed.tokens[0].type in ("ITEM", "ITEMWORD"):
-            # "tote bags: 1 on P, rest to Q": the sentence is about the item, so "the rest" may be
-            # the rest of every tote bag, or of P's; neither is guessed
+        toks = self.lexed.tokens
+        if prev["op"] == "set" and toks and (toks[0].type in ("ITEM", "ITEMWORD") or (
+                toks[0].type == "NUM" and len(toks) > 1 and toks[1].type in ("ITEM", "ITEMWORD"))):
+            # "tote bags: 1 on P, rest to Q", "1 tote bag on P, rest to Q": the sentence is about the
+            # item, so "the rest" may be the rest of every tote bag, or of P's; neither is guessed
             raise TranslationError(f"'{np['words']}': the rest of {', '.join(source)}'s, or of every one in the "
                                    f"world? say where it comes from")
         return {"op": "transfer", "items": items, "amount": {"rest": True}, "from": {"names": source},
