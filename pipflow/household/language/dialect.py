@@ -229,7 +229,9 @@ def on_off_as_verbs(words: list[str], world: dict, index: dict, notes: list[str]
             # the thing before goes ("put the pan in the sink, and on the hob ..."): only at the
             # head of a sentence or after a "please" is its "on" a verb
             heading = before in _ENDS or before in _POLITE
-            if pronoun or _switching_phrase(words, j, world, index, receptacles=heading):
+            # a name may open with a determiner ("our water heater")
+            if pronoun or any(_switching_phrase(words, i, world, index, receptacles=heading)
+                              for i in range(k + 1, j + 1)):
                 out.append("switch")
                 notes.append(f"'{w} {' '.join(words[k + 1:j + 1])}' read as 'switch {w} ...' (dialect)")
         out.append(w)
@@ -249,3 +251,51 @@ def _switching_phrase(words: list[str], k: int, world: dict, index: dict, recept
         if things:
             return 0
     return 0
+
+
+#: verbs whose "in" before the thing says indoors ("bring in the washing")
+_BRING_IN = {"bring", "take", "carry", "fetch", "get"}
+
+
+def bring_in(words: list[str], index: dict, notes: list[str]) -> list[str]:
+    """The words without the "in" of "bring in the orchid from the balcony": before things that are
+    only objects of the home (never a place: "take in the fridge" is left as said), "in" says
+    indoors, and the home model has no outdoors; where the thing goes is still to be said ("bring
+    in the orchid": where to? is asked, as for "bring the orchid")."""
+    out = list(words)
+    k = 0
+    while k + 2 < len(out):
+        if out[k] in _BRING_IN and out[k + 1] == "in":
+            j = _after_determiners(out, k + 2)
+            refs = next((index[tuple(out[j:e])] for e in range(min(len(out), j + 5), j, -1)
+                         if tuple(out[j:e]) in index), [])
+            if refs and all(ref["kind"] == "object" for ref in refs):
+                notes.append(f"'{out[k]} in' says indoors (the home model has no outdoors): read as '{out[k]}'")
+                del out[k + 1]
+        k += 1
+    return out
+
+
+#: verbs of switching whose particle may stand after the things ("turn all the lights off")
+_SWITCH_VERBS = {"turn", "switch", "flip", "flick"}
+#: words a clause's verb may follow ("pls turn ...", "and turn ...")
+_BEFORE_VERB = {"and", "then", "pls", "please", "can", "u", "you"}
+#: what opens an exception after the things ("except", "but not", "apart from")
+_EXCEPT_OPENERS = (("except",), ("but", "not"), ("apart", "from"), ("other", "than"), ("bar",))
+
+
+def particle_before_exception(words: list[str], notes: list[str]) -> list[str]:
+    """The words with the "on" / "off" of "turn all the lights off except the verandah one" said
+    right after its verb ("turn off all the lights except ..."), where the grammar reads the
+    exception: only where a verb of switching opens the clause, "on" / "off" follows its things
+    and an exception follows the particle at once."""
+    out = list(words)
+    for k, w in enumerate(out):
+        if w not in _SWITCH_VERBS or (k and out[k - 1] not in PUNCT and out[k - 1] not in _BEFORE_VERB):
+            continue
+        end = next((j for j in range(k + 1, len(out)) if out[j] in PUNCT), len(out))
+        p = next((j for j in range(k + 2, end) if out[j] in ("on", "off")), None)
+        if p is not None and any(tuple(out[p + 1:p + 1 + len(o)]) == o for o in _EXCEPT_OPENERS):
+            notes.append(f"'{w} ... {out[p]} except' read as '{w} {out[p]} ... except'")
+            out[k + 1:p + 1] = [out[p]] + out[k + 1:p]
+    return out

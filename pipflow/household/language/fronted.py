@@ -10,7 +10,7 @@ reading is one two people would agree on:
 
 * the fronted words are a noun phrase of the home and nothing else (names of the home,
   determiners, quantities, state adjectives, "and", "from <place>", "on / in / at <place>" after a
-  name), ending in a name, and "also" or "too" may stand between them and the verb, or "don't"
+  name, or "there" after it), ending in a name, and "also" or "too" may stand between them and the verb, or "don't"
   before a verb that keeps a thing as it is ("the luggage don't touch");
 * they open a sentence, or a clause after ", and", or after a comma or "and" that does not follow
   a name (after one, the words could go on the clause before's list of things: "wash the jug and
@@ -78,6 +78,9 @@ def _phrase_end(tags: list[Tag], k: int) -> int | None:
             if at < len(tags) and _named(tags[at]):
                 j = at
                 continue
+        if end == j and tags[j].cls == "THERE":   # "the mug there also wash": where the place said before is
+            end = j = j + 1
+            continue
         if not (base_class(tags[j].cls) in PHRASE or _named(tags[j])):
             break
         if _named(tags[j]):

@@ -446,6 +446,8 @@ _add("HERE", "here,in here,over here,over there," + ",".join(f"in the {h},around
                       for whose in ("this", "my", "our")))
 _add("ROOMSAID", ",".join(f"the {r},my {r},our {r}" for r in ROOM_WORDS))
 _add("INROOM", ",".join(f"in the {r},in {r}" for r in ROOM_WORDS) + ",at home,home")
+#: "freezing in my room": whose room it is (resolver ``_called_after``: the home's "my heater")
+_add("INROOM", ",".join(f"in {whose} {r}" for r in ("room", "bedroom") for whose in ("my", "our")))
 #: a room said with a particle of where ("out in the conservatory", "over in the study", "up in the
 #: attic"): where a cue is felt, as "in the ..." (a room the home model lacks: resolver ``_room``)
 _add("INROOM", ",".join(f"{p} in the {r}" for p in ("out", "over", "up", "down", "back") for r in ROOM_WORDS))

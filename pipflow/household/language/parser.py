@@ -206,7 +206,7 @@ def _repairs(tags: list[Tag]) -> Iterator[tuple[list[Tag], list[str]]]:
     left out read as "it" (:func:`_elided_objects`); things named before their verb moved after it
     (:mod:`~.fronted`); both ("soup and cheese take out of the fridge and put on the table"); a
     verb said after a place with no joiner as a step of its own (:func:`_serial_verbs`), and with
-    its object left out."""
+    its object left out; both of the last two at once."""
     elided = _elided_objects(tags)
     if elided is not None:
         yield elided, [_elided_note(tags)]
@@ -221,6 +221,14 @@ def _repairs(tags: list[Tag]) -> Iterator[tuple[list[Tag], list[str]]]:
     serial = _serial_verbs(tags)
     if serial is not None:
         said = ["a verb said after a place with no 'and' or comma before it: read as a step of its own"]
+        yield serial, said
+        both = _elided_objects(serial)
+        if both is not None:
+            yield both, said + [_elided_note(serial)]
+    if fronted is not None and (serial := _serial_verbs(fronted[0])) is not None:
+        # "bring the orchid from the balcony put on the table, then the dumbbell keep in the shelter"
+        said = ["'" + "', '".join(fronted[1]) + "': the thing named before its verb, read after it",
+                "a verb said after a place with no 'and' or comma before it: read as a step of its own"]
         yield serial, said
         both = _elided_objects(serial)
         if both is not None:

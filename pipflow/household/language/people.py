@@ -35,10 +35,11 @@ import re
 from pipflow.errors import TranslationError
 from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
 from pipflow.household.language.names import home_words, per_world, world_phrases
+from pipflow.household.language.rewrites import CLOSING_PARTICLES, CONSUMED
 from pipflow.household.language.tokens import PUNCT
 from pipflow.household.language.typos import typo_of, vocabulary
 from pipflow.household.language.whereabouts import BRING, POSTURE, clause_end, place_said
-from pipflow.language.asides import FUNCTION_WORDS
+from pipflow.language.asides import FUNCTION_WORDS, TIME_UNITS, near_operative
 
 #: titles before a name ("Father Tom", "Mrs Patel", "Auntie Jo"; "father tom" typed in lower case)
 TITLES = {"father", "mrs", "mr", "ms", "miss", "dr", "doctor", "auntie", "aunty", "aunt", "uncle", "sister",
@@ -48,7 +49,9 @@ KIN = {"grandad", "granddad", "grandpa", "grandma", "granny", "gran", "nan", "na
        "grandfather", "baby"}
 #: pronouns that are a person; "her" only where an object is ("bring her the tea"); "them" and
 #: "they" are left to things ("put them away")
-PERSON_PRONOUNS = {"he", "she", "him"}
+PERSON_PRONOUNS = {"he", "she", "him", "hes", "shes"}   # "hes": he's, typed without its apostrophe
+#: pronouns that can only be a clause's subject
+_SUBJECT_PRONOUNS = frozenset({"he", "she", "hes", "shes"})
 #: verbs that take a person as where the thing goes ("give him the tea")
 TO_PERSON = BRING | {"give", "take"}
 #: words that take up a thing ("he wants it warm"): a clause with one is about the thing, never talk
@@ -107,11 +110,53 @@ def owners_before_names(words: list[str], world: dict, notes: list[str]) -> list
     return out
 
 
+#: pronouns that say whose a thing is
+_POSSESSIVE_PRONOUNS = frozenset({"his", "her", "their"})
+
+
+def pronouns_as_owners(words: list[str], world: dict, notes: list[str]) -> list[str]:
+    """ "wash kais lunchbox and put his footy on his bed": "his" / "her" / "their" before a thing
+    is one of the home's people said before it in the command (:func:`owners`) where exactly one of
+    them owns a thing so named by the home's own words ("kai's footy", "kai's bed"); anything else
+    is left as said ("his bed" where no one was named, or where two of those named have a bed)."""
+    if not _POSSESSIVE_PRONOUNS & set(words):
+        return words
+    index = world_phrases(world)
+    people = owners(world)
+    out = list(words)
+    named: list[tuple[str, ...]] = []
+    k = 0
+    while k < len(out):
+        n = owner_at(out, k, people)
+        if n:
+            who = tuple(out[k:k + n])
+            named.append(next((w for w in people if w == who or w[:-1] + (w[-1] + "s",) == who), who))
+            k += n
+            continue
+        if out[k] in _POSSESSIVE_PRONOUNS:
+            things = {(who, m) for who in set(named) for m in (3, 2, 1)
+                      if tuple(who) + tuple(out[k + 1:k + 1 + m]) in index and k + m < len(out)}
+            longest = max((m for _, m in things), default=0)
+            whose = {who for who, m in things if m == longest}
+            if len(whose) == 1:
+                who = next(iter(whose))
+                notes.append(f"'{out[k]} {' '.join(out[k + 1:k + 1 + longest])}' read as {' '.join(who)}'s")
+                out[k:k + 1] = list(who)
+                k += len(who)
+                continue
+        k += 1
+    return out
+
+
 def owner_at(words: list[str], k: int, people: dict[tuple[str, ...], list[tuple[str, ...]]]) -> int:
-    """How many words from ``k`` name one of the home's people (``people``: :func:`owners`), where
-    they are not the start of a thing's name ("ah ma bed"); 0 where none does."""
+    """How many words from ``k`` name one of the home's people (``people``: :func:`owners`), also
+    with the "s" of a possessive typed without its apostrophe ("kais"), where they are not the
+    start of a thing's name ("ah ma bed", "kais bed"); 0 where none does."""
     for who, names in sorted(people.items(), key=lambda item: -len(item[0])):
-        if tuple(words[k:k + len(who)]) == who and not any(tuple(words[k:k + len(name)]) == name for name in names):
+        said = tuple(words[k:k + len(who)])
+        # "kais ipad", "mums mug": the "'s" typed without its apostrophe
+        if (said == who or said == who[:-1] + (who[-1] + "s",)) and not any(
+                tuple(words[k:k + len(name)]) == name for name in names):
             return len(who)
     return 0
 
@@ -162,6 +207,16 @@ class _Reader:
             n += 1
         return n
 
+    def _keeps(self, rest: list[str], j: int) -> bool:
+        """Whether the word at ``j`` of a clause about a person keeps the clause in: a word of the
+        home's names (a function word in one, "fold up chairs", names nothing by itself), a number
+        (of minutes or hours it says when: "she's up in 10 min"), a word taking up a thing, or one
+        that may ask something (no "shift" of work: "up from night shift")."""
+        w = rest[j]
+        timed = w.isdigit() and j + 1 < len(rest) and rest[j + 1] in TIME_UNITS
+        return ((w in self.home and w not in FUNCTION_WORDS) or (w.isdigit() and not timed)
+                or w in THING_WORDS or (_asks(w) and not _work_shift(rest, j)))
+
     def clause_end(self, k: int) -> int:
         return next((j for j in range(k, len(self.words)) if self.words[j] in PUNCT), len(self.words))
 
@@ -186,14 +241,23 @@ class _Reader:
 
     def talk(self, i: int) -> int:
         """The end of a clause at ``i`` that is talk about a person (module docstring, 3), or 0."""
-        n = self.person(i) if self.clause_start(i) else 0
+        # "he" and "she" open a clause of their own wherever they stand ("... in the lounge shes always cold")
+        n = self.person(i) if self.clause_start(i) or self.words[i] in _SUBJECT_PRONOUNS else 0
         if not n:
             return 0
         end = self.clause_end(i)
         rest = self.words[i + n:end]
-        if not rest or any(w in self.home or w.isdigit() or w in THING_WORDS or _asks(w) for w in rest):
+        if not rest or any(self._keeps(rest, j) for j in range(len(rest))):
             return 0
         return end
+
+
+#: words before "shift" that make it a spell of work ("up from night shift"), no verb of moving
+_SHIFTS = frozenset({"night", "day", "late", "early", "morning", "evening", "double", "back", "long", "afternoon"})
+
+
+def _work_shift(words: list[str], j: int) -> bool:
+    return words[j] in ("shift", "shifts") and j > 0 and words[j - 1] in _SHIFTS
 
 
 def _asks(word: str) -> bool:
@@ -297,13 +361,25 @@ def _said_there(r: _Reader, k: int, end: int) -> tuple[list[str], int, int] | No
 
 
 def _purpose(r: _Reader, k: int) -> int:
-    """The end of "for" + [a determiner] + one or two words that name nothing of the home or the
-    lexicon, closing a clause at ``k`` ("for soup", "for sugar"), or 0."""
+    """The end of "for" + [a determiner, or one of the home's people] + one or two words that name
+    nothing of the home or the lexicon, closing a clause at ``k`` ("for soup", "for sugar", "for ah
+    ma lunch pls": a particle or "please" may close the clause after them), or 0."""
     j = k + (k < len(r.words) and r.words[k] in ("a", "the", "his", "her", "my", "some"))
+    j = j if j > k else k + owner_at(r.words, k, r.owners)
     end = r.clause_end(j)
-    if not 0 < end - j <= 2 or any(r.known(w) or not w.isalpha() for w in r.words[j:end]):
+    while end > j and r.words[end - 1] in CLOSING_PARTICLES:
+        end -= 1
+    if tuple(r.words[j:end]) in CONSUMED:   # "for his cocoa": a meal or a hot drink
+        return end
+    # after one of the home's people, a word of the reader's may say what for ("for ah ma lunch")
+    # where the words are no name of the home and no operative word
+    owned = j > k and r.words[k] not in ("a", "the", "some")
+    said = r.words[j:end]
+    if not 0 < len(said) <= 2 or not all(w.isalpha() for w in said):
         return 0
-    return end
+    if owned:
+        return 0 if tuple(said) in r.index or any(near_operative(w) for w in said) else end
+    return 0 if any(r.known(w) for w in said) else end
 
 
 def _nowhere(person: list[str], command: str) -> TranslationError:

@@ -45,6 +45,19 @@ _FLAG = {"is-open": "open", "is-on": "on", "dirty": "dirty", "sliced": "sliced",
 _ROOM_LEADS = {"out", "over", "up", "down", "back", "in", "the", "my", "our"}
 
 
+def _room_said(room: str) -> list[str]:
+    """The words of a room said with a cue, without the words that lead to it; "in my room" is
+    "my" (what the home calls mine: "my heater")."""
+    said = words_of(room)
+    while said and said[0] in _ROOM_LEADS - {"my", "our"}:
+        said = said[1:]
+    if len(said) == 2 and said[0] in ("my", "our") and said[1] in ("room", "bedroom"):
+        return said[:1]
+    while said and said[0] in _ROOM_LEADS:
+        said = said[1:]
+    return said
+
+
 def _choice(error: TranslationError, words: str, names: list[str]) -> TranslationError:
     """The error with what it asks to choose among: ``choices`` = (the words that name several
     things, their names), from which the refusal's candidate readings are built
@@ -865,6 +878,9 @@ class Resolver:
             self.goal.notes.append(f"'{room}': the one of them the home's words place there ({called[0]})")
             names[:] = called
             return
+        if _room_said(room)[:1] in (["my"], ["our"]):   # whose room: never some other room's thing
+            raise TranslationError(f"'{words}': none of {', '.join(names) or 'the things that fit'} is called "
+                                   f"'{_room_said(room)[0]} ...' in this home, so '{room}' does not say which; say which")
         if len(names) > 1 and self.choose.get(words) not in names:
             raise _choice(TranslationError(f"'{words}': this home model has no rooms, so '{room}' cannot say which "
                                            f"of {', '.join(names)} is meant; say which"), words, names)
@@ -873,11 +889,9 @@ class Resolver:
 
     def _called_after(self, room: str, names: list[str]) -> list[str]:
         """Of ``names``, those whose name or words open with the room's words ("living room fan" for
-        "in the living room", "kids' room aircon" for "out in the kids room"): the home model has no
-        rooms, but its words may say where a thing is."""
-        said = words_of(room)
-        while said and said[0] in _ROOM_LEADS:
-            said = said[1:]
+        "in the living room", "kids' room aircon" for "out in the kids room", "my heater" for "in
+        my room"): the home model has no rooms, but its words may say where a thing is."""
+        said = _room_said(room)
         return [n for n in names if said and any(words_of(w)[:len(said)] == said
                                                  for w in [n] + list(entity(self.world, n).get("words") or []))]
 

@@ -351,7 +351,7 @@ _AFTER_A_PARTICLE = set(PUNCT) | {"and", "then", "too", "please", "now", "for", 
 _PURPOSE_DETERMINERS = {"the", "my", "our", "your", "his", "her", "their", "a", "some"}
 #: what a purpose may name though the lexicon knows it: a hot drink or a meal, in the singular
 #: or the plural ("for hot chocolates"), which no home model holds as a thing
-_CONSUMED = {tuple(p.split()) for p in HOT_DRINKS + tuple(MEALS)} | {
+CONSUMED = {tuple(p.split()) for p in HOT_DRINKS + tuple(MEALS)} | {
     tuple(p.split()[:-1] + [p.split()[-1] + "s"]) for p in HOT_DRINKS + tuple(MEALS)}
 
 
@@ -364,7 +364,7 @@ def _wish_before(out: list[str]) -> bool:
 def _purpose(words: list[str], k: int, names_nothing) -> int:
     """How many words at ``k`` ("for") close the clause as a purpose: "for" + a possessive or
     determiner (optional) + one word that names nothing of the home, or a hot drink or a meal
-    (:data:`_CONSUMED`); 0 when they do not (a name of the home after "for" may be meant)."""
+    (:data:`CONSUMED`); 0 when they do not (a name of the home after "for" may be meant)."""
     j = k + 1
     if j < len(words) and words[j] in _PURPOSE_DETERMINERS:
         j += 1
@@ -372,7 +372,7 @@ def _purpose(words: list[str], k: int, names_nothing) -> int:
         if end < len(words) and words[end] not in PUNCT:
             continue
         said = tuple(words[j:end])
-        if said in _CONSUMED or (len(said) == 1 and names_nothing(said[0])):
+        if said in CONSUMED or (len(said) == 1 and names_nothing(said[0])):
             return end - k
         break
     return 0
@@ -481,7 +481,7 @@ def _same_after(words: list[str], k: int) -> tuple[int, int, int] | None:
     start = k + (1 if words[k] in ("and", "then") else 0)
     end = next((j for j in range(start, len(words)) if words[j] in PUNCT), len(words))
     said = end
-    while said > start and words[said - 1] in _CLOSING_PARTICLES:
+    while said > start and words[said - 1] in CLOSING_PARTICLES:
         said -= 1
     tail = next((n for n in (3, 2, 1) if said - n > start and tuple(words[said - n:said]) in _SAME_AFTER_THING), 0)
     if not tail or (end < len(words) and words[end] not in (".", "!", ";")) or said - tail - start > 5:
@@ -489,11 +489,8 @@ def _same_after(words: list[str], k: int) -> tuple[int, int, int] | None:
     return start, said - tail, end
 
 
-#: what says "that again" after the thing ("the tau kwa also same", "the pan the same")
-_SAME_AFTER_THING = {("same",), ("the", "same"), ("also", "same"), ("too", "same"), ("also", "the", "same"),
-                     ("same", "too"), ("same", "also")}
 #: particles and thanks that may close such a clause ("the tau kwa also same lor")
-_CLOSING_PARTICLES = {"lah", "leh", "lor", "ah", "hor", "meh", "pls", "please", "ok", "okay", "thanks"}
+CLOSING_PARTICLES = {"lah", "leh", "lor", "ah", "hor", "meh", "pls", "please", "ok", "okay", "thanks"}
 
 
 #: what says "that again" after the thing ("the tau kwa also same", "the pan the same")

@@ -6,15 +6,25 @@ The home model has no rooms: a room lives only in the words of the things in it.
 a phrase of where after it ("in the kitchen") is its word with the where before it ("kitchen
 light"), read so only where that word is the home's name of exactly one thing; anything else is
 left as said ("the plate in the sink" stays the plate that lies in the sink).
+
+A where said with whose room it is ("the water heater in our toilet", "the fan in ah ma's room")
+is the thing the home calls by the owner and the thing ("our water heater", "ah ma's fan"), where
+that is one thing, and the room's words are in another of its names ("master toilet water heater")
+or are only "room" or "bedroom".
 """
 from __future__ import annotations
 
+from pipflow.household.language.people import owner_at
 from pipflow.household.language.restated import DETERMINERS
 
 #: prepositions that say where a thing is
 _WHERE = frozenset({"in", "at", "on", "from"})
 #: the most words of the thing, and of its where
 _LONGEST = 3
+#: words that say whose room it is
+_POSSESSIVES = frozenset({"my", "our", "your", "his", "her"})
+#: words of a room that say no more than whose it is ("ah ma's room")
+_ANY_ROOM = frozenset({("room",), ("bedroom",)})
 
 
 def _one_thing(index: dict, words: list[str]) -> bool:
@@ -24,9 +34,27 @@ def _one_thing(index: dict, words: list[str]) -> bool:
     return len({ref["name"] for ref in refs}) == 1 and not any(ref.get("plural") for ref in refs)
 
 
-def where_as_name(words: list[str], index: dict, notes: list[str]) -> list[str]:
-    """The words with each "<thing> in <where>" that the home names as "<where> <thing>" said so
-    (module docstring). ``index``: the home's phrases (:func:`~.names.world_phrases`)."""
+def _owned_room(out: list[str], k: int, a: int, e: int, index: dict, people: dict) -> tuple[list[str], int] | None:
+    """The home's name and the where's end for "<thing> in <owner> <room>" (module docstring), the
+    thing ``out[a:e]``; or None."""
+    n = 1 if k + 1 < len(out) and out[k + 1] in _POSSESSIVES else owner_at(out, k + 1, people)
+    name = out[k + 1:k + 1 + n] + out[a:e]
+    if not n or not _one_thing(index, name):
+        return None
+    thing = index[tuple(name)][0]["name"]
+    others = [key for key, refs in index.items() if any(ref["name"] == thing for ref in refs)]
+    for m in (2, 1):
+        room = tuple(out[k + 1 + n:k + 1 + n + m])
+        if len(room) == m and (room in _ANY_ROOM or any(
+                any(key[i:i + m] == room for i in range(len(key))) for key in others)):
+            return name, k + 1 + n + m
+    return None
+
+
+def where_as_name(words: list[str], index: dict, notes: list[str], people: dict | None = None) -> list[str]:
+    """The words with each "<thing> in <where>" that the home names as "<where> <thing>", or as
+    "<owner> <thing>", said so (module docstring). ``index``: the home's phrases
+    (:func:`~.names.world_phrases`); ``people``: its owners (:func:`~.people.owners`)."""
     out = list(words)
     k = 1
     while k < len(out):
@@ -37,21 +65,28 @@ def where_as_name(words: list[str], index: dict, notes: list[str]) -> list[str]:
         # a name of the home that opens the where is said whole ("from the coffee table" is no
         # "coffee" where a coffee mug is)
         whole = max((n for n in range(1, _LONGEST + 3) if tuple(out[j:j + n]) in index), default=0)
+        # "turn the heater on in the lounge": the switch's particle between the thing and its where
+        e = k - 1 if out[k] == "in" and out[k - 1] in ("on", "off") else k
         found = None
-        for a in range(max(0, k - _LONGEST), k):   # the longest thing first
-            thing = out[a:k]
+        for a in range(max(0, e - _LONGEST), e):   # the longest thing first
+            owned = _owned_room(out, k, a, e, index, people or {})
+            if owned:
+                found = (a, owned[1], owned[0])
+                break
+            thing = out[a:e]
             for m in range(min(len(out), j + _LONGEST), max(j, j + whole - 1), -1):   # the longest where first
                 if _one_thing(index, out[j:m] + thing):
-                    found = (a, m)
+                    found = (a, m, out[j:m] + thing)
                     break
             if found:
                 break
         if found is None:
             k += 1
             continue
-        a, m = found
-        name = out[j:m] + out[a:k]
-        notes.append(f"'{' '.join(out[a:m])}' read as the {' '.join(name)} (the home's word for it)")
-        out[a:m] = name
-        k = a + len(name)
+        a, m, name = found
+        if name[0] in _POSSESSIVES and a and out[a - 1] == "the":   # "the water heater in our toilet"
+            a -= 1
+        notes.append(f"'{' '.join(out[a:m])}' read as the {' '.join(name + out[e:k])} (the home's word for it)")
+        out[a:m] = name + out[e:k]
+        k = a + len(name) + k - e
     return out

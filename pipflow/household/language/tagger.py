@@ -14,19 +14,21 @@ from pipflow.language.english import common_word
 from pipflow.household.language.beside import beside_as_where
 from pipflow.household.language.colloquial import colloquial
 from pipflow.household.language.corrections import corrected
-from pipflow.household.language.dialect import (cut_as_switch, on_off_as_verbs, open_close_as_switch, put_on_as_switch,
+from pipflow.household.language.dialect import (bring_in, cut_as_switch, on_off_as_verbs, open_close_as_switch,
+                                                particle_before_exception, put_on_as_switch,
                                                 scots_as_english, them_as_those)
 from pipflow.household.language.headwords import named_again
 from pipflow.household.language.grammar import NOUN_DUAL
 from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
 from pipflow.household.language.names import (first_words, longest_name, named_by_first_word, per_index,
                                               things_of_kind, world_phrases)
-from pipflow.household.language.people import owners_before_names
+from pipflow.household.language.people import owners, owners_before_names, pronouns_as_owners
 from pipflow.household.language.retag import (act_before_noun, copula_dropped, demonstratives, elided_it_is, left_lying,
                                               located, restated_order, without_hedges)
 from pipflow.household.language.rewrites import (caused, closed_again, given, heat_purpose, measures, or_under_negation,
                                                  particles, same_for, so_before_an_order, wherever_they_belong,
                                                  without_manner)
+from pipflow.household.language.ones import one_as_kind
 from pipflow.household.language.roomnames import where_as_name
 from pipflow.household.language.tokens import PUNCT, Tag
 from pipflow.household.language.typos import (determiner_slip, known_word, meaning_of, transposition_of, typo_of,
@@ -123,14 +125,15 @@ def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: l
     """The command's words with its colloquial forms, constructions and particles read as the
     grammar's words (each rewrite notes what it read)."""
     words = scots_as_english(words_of(command), lambda w: known_word(w, index, vocab), notes)
-    words = owners_before_names(where_as_name(words, index, notes), world, notes)
+    words = where_as_name(one_as_kind(words, world, index, notes), index, notes, owners(world))
+    words = owners_before_names(pronouns_as_owners(words, world, notes), world, notes)
     words = so_before_an_order(same_for(colloquial(corrected(words, notes), notes), notes), notes)
     words = or_under_negation(measures(without_manner(words, notes), index, notes), notes)
     words = heat_purpose(caused(given(me_as_where_the_speaker_is(words, index, notes), notes), notes), notes)
     words = closed_again(wherever_they_belong(words, notes), notes)
     words = on_off_as_verbs(put_on_as_switch(cut_as_switch(words, world, index, notes), world, index, notes), world,
                             index, notes)
-    words = open_close_as_switch(words, world, index, notes)
+    words = bring_in(open_close_as_switch(particle_before_exception(words, notes), world, index, notes), index, notes)
     words = beside_as_where(named_again(them_as_those(words, index, notes), index, notes), world, index, notes)
     return particles(words, lambda x: x.isalpha() and not known_word(x, index, vocab), notes)
 

@@ -128,9 +128,10 @@ IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before
           # "ramp 1 and ramp 2 - swap everything between them": the places said first
           (re.compile(r"(^|[.;!?]\s*)([a-z][a-z0-9 ]*?\s+and\s+[a-z][a-z0-9 ]*?)\s*[-:]\s+(swap|switch|exchange)\s+"
                       r"(everything|all)\s+between\s+them\b", re.IGNORECASE), r"\1\3 \4 between \2"),
-          # "divide 8 X equal for P and Q": evenly between them
-          (re.compile(r"\b(divide|split|distribute|share)\b([^.;!?\n]*?)\s+equal(?:ly)?\s+(?:for|on|to|among|between)\s+",
-                      re.IGNORECASE), r"\1\2 evenly between "),
+          # "divide 8 X equal between P and Q": evenly ("equal for P and Q" puts a preposition for another:
+          # offered, never read, by the candidates' repairs)
+          (re.compile(r"\b(divide|split|distribute|share)\b([^.;!?\n]*?)\s+equal\s+(?=(?:among|between)\b)",
+                      re.IGNORECASE), r"\1\2 evenly "),
           # "from rack B take a third of the X away": take it away from rack B
           (re.compile(r"(^|[.;!?]\s*)from\s+([a-z][a-z0-9 ]*?)\s*,?\s+(take|remove|clear)\s+([^.;!?,\n]+?)\s+(away|off|out)\b",
                       re.IGNORECASE), r"\1\3 \4 \5 from \2"),

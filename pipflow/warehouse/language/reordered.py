@@ -231,12 +231,13 @@ _MOVING = frozenset({"move", "bring", "send", "take", "put", "carry", "shift", "
                      "distribute"})
 #: verbs that keep a place as it is, said with "dont" after it ("rack B dont touch")
 _KEEPING = frozenset({"touch", "use"})
-#: what may follow a verb whose object was said first: where to, or the clause's end
-_AFTER_VERB = frozenset({"to", "on", "onto", "into", "in", "over", "back", "across", "up", "down", "evenly",
-                         "equally"})
+#: what may follow a verb whose object was said first: where to, or the clause's end ("put back"
+#: after its things is read by the lexicon's put_back_after_its_object)
+_AFTER_VERB = frozenset({"to", "on", "onto", "into", "in", "over", "across", "up", "down", "evenly", "equally",
+                         "equal"})
 #: words of a noun phrase of things ("half of the water", "all charcoal", "4 of them")
 _PHRASE_WORDS = frozenset({"all", "the", "of", "half", "them", "those", "these", "every", "each", "rest"})
-_NEGATIONS = frozenset({"dont", "never", "not"})
+_SAID_NOT = frozenset({"dont", "never", "not"})
 #: unit words said after a count ("5 pcs", "4 pallets"): no thing of their own
 _UNITS = frozenset({"pallets", "pallet", "pcs", "pc", "units", "unit", "pieces", "cases", "boxes", "cartons", "ctn",
                     "ctns", "plt", "plts"})
@@ -282,10 +283,10 @@ def object_before_verb(toks: list[Tok]) -> list[Tok]:
         clause = toks[k:end]
         n = _object_phrase(clause)
         negated = 0
-        if n == 0 and _name_at(clause, 0, "shelf") and _word_in(clause, 1, _NEGATIONS) and _word_in(clause, 2, _KEEPING):
+        if n == 0 and _name_at(clause, 0, "shelf") and _word_in(clause, 1, _SAID_NOT) and _word_in(clause, 2, _KEEPING):
             n, negated = 1, 1
         else:
-            negated = 1 if n and _word_in(clause, n, _NEGATIONS) else 0
+            negated = 1 if n and _word_in(clause, n, _SAID_NOT) else 0
         v = n + negated
         verbs = _KEEPING if _name_at(clause, 0, "shelf") and n == 1 else _MOVING
         if n and _word_in(clause, v, verbs) and (v + 1 == len(clause) or _word_in(clause, v + 1, _AFTER_VERB)):
