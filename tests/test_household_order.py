@@ -120,10 +120,11 @@ def test_chilling_means_the_homes_cold_place(world):
 
 
 def test_exceptions_and_overrides(world):
+    # the excepted thing is left alone: where it is, as its world entry writes (benchmarks/README.md)
     assert goal_of("Switch off all the lights except the desk lamp.", world) == \
-        ({}, {"floorlamp": ["off"], "lightswitch": ["off"]}, [])
+        ({"desk": ["desklamp"]}, {"desklamp": ["on"], "floorlamp": ["off"], "lightswitch": ["off"]}, [])
     assert goal_of("Put all the fruit in the fridge but not the watermelon.", world) == \
-        ({"fridge": ["apple"]}, {"fridge": ["closed"]}, [])
+        ({"diningtable": ["watermelon"], "fridge": ["apple"]}, {"fridge": ["closed"]}, [])
     assert goal_of("Switch off the lights but leave the desk lamp on.", world) == \
         ({}, {"desklamp": ["on"], "floorlamp": ["off"], "lightswitch": ["off"]}, [])
     with pytest.raises(TranslationError, match="is not one of"):
@@ -562,7 +563,9 @@ def test_probe_d_causes(cottage):
         ({}, {"lantern": ["off"], "tablet": ["off"], "wireless": ["off"], "hob": ["off"]}, [])
     with pytest.raises(TranslationError, match="needs a place or a state"):
         goal_of("Wash everything.", cottage)
-    assert goal_of("Wash the tumbler, but not the saucepan.", cottage) == ({}, {"tumbler": ["clean"]}, [])
+    got = goal_of("Wash the tumbler, but not the saucepan.", cottage)
+    # nothing is done to the saucepan: it is left alone where it is (benchmarks/README.md)
+    assert got[0] == {"hob": ["saucepan"]} and got[1]["tumbler"] == ["clean"] and "clean" not in got[1].get("saucepan", [])
     with pytest.raises(TranslationError, match="is not one of"):
         goal_of("Switch off the lamps except the tablet.", cottage)
 

@@ -299,7 +299,8 @@ def test_no_candidate_drops_an_operative_word(bothy):
         for c in offered(command, bothy):
             assert c["goal"]["state"] != {"jug": ["clean"], "platter": ["clean"]}, c["reading"]
     # two letters of "not" swapped, no other word it can be: read as "not", never dropped
-    assert goal("Wash the jug but nto the platter.", bothy) == ({}, {"jug": ["clean"]})
+    got = goal("Wash the jug but nto the platter.", bothy)
+    assert got[1]["jug"] == ["clean"] and "clean" not in got[1].get("platter", [])
 
 
 def test_where_an_action_happens_said_after_it(bothy):

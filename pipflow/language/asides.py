@@ -82,7 +82,9 @@ GREETINGS = frozenset({"hi", "hello", "hey", "hiya", "heya", "howdy", "morning",
                        # French, said in English chat ("Bonjour l'équipe", "Salut tout le monde": with its addressee)
                        "bonjour", "salut", "merci",
                        # Swahili and Sheng, said in Kenyan English ("Sasa team", "Sawa team": OK, "Asante")
-                       "sasa", "sawa", "poa", "jambo", "habari", "mambo", "niaje", "asante", "asanteni"})
+                       "sasa", "sawa", "poa", "jambo", "habari", "mambo", "niaje", "asante", "asanteni",
+                       # Polish, said in English chat ("OK, dzięki": thanks; "cześć": hi)
+                       "dzieki", "dziekuje", "czesc"})
 #: words that open an apology or a thanks for something ("sorry for the late ask", "thanks for
 #: earlier"): what follows "for" / "about" is what one is sorry or thankful for, not an order
 PLEASANTRIES = frozenset({"sorry", "apologies", "apologise", "apologize", "pardon", "thanks", "thank", "thx",
@@ -112,7 +114,7 @@ ADDRESSEES = frozenset({"all", "everyone", "everybody", "team", "folks", "guys",
 
 #: a thanks that can close an order without a comma before it ("... to bay 2 ta")
 THANKS = frozenset({"thanks", "ta", "cheers", "thx", "ty", "tyvm", "thankyou", "dankie", "diolch", "merci", "asante",
-                    "asanteni", "gracias"})
+                    "asanteni", "gracias", "dzieki", "dziekuje"})
 #: who an order is said to, or a tag that closes it, without a comma before it ("... on dispatch
 #: please mate", "... forklifts only mind", "... thanks lads"): never a word that is operative
 CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "boss", "love", "pet", "hun",

@@ -99,7 +99,7 @@ def owners_before_names(words: list[str], world: dict, notes: list[str]) -> list
     ma bed"), nor before words that name nothing ("for ah ma lunch")."""
     index = world_phrases(world)
     people = owners(world)
-    out = list(words)
+    out = owner_s_as_name(words, world)
     k = 0
     while k < len(out):
         n = owner_at(out, k, people)
@@ -127,11 +127,10 @@ def pronouns_as_owners(words: list[str], world: dict, notes: list[str]) -> list[
     named: list[tuple[str, ...]] = []
     k = 0
     while k < len(out):
-        n = owner_at(out, k, people)
-        if n:
-            who = tuple(out[k:k + n])
-            named.append(next((w for w in people if w == who or w[:-1] + (w[-1] + "s",) == who), who))
-            k += n
+        who = owner_said(out, k, people)
+        if who is not None:
+            named.append(who)
+            k += len(who)
             continue
         if out[k] in _POSSESSIVE_PRONOUNS:
             things = {(who, m) for who in set(named) for m in (3, 2, 1)
@@ -152,13 +151,38 @@ def owner_at(words: list[str], k: int, people: dict[tuple[str, ...], list[tuple[
     """How many words from ``k`` name one of the home's people (``people``: :func:`owners`), also
     with the "s" of a possessive typed without its apostrophe ("kais"), where they are not the
     start of a thing's name ("ah ma bed", "kais bed"); 0 where none does."""
-    for who, names in sorted(people.items(), key=lambda item: -len(item[0])):
+    who = owner_said(words, k, people)
+    if who is None:
+        return 0
+    meant = list(who) + words[k + len(who):]
+    return 0 if any(tuple(meant[:len(name)]) == name for name in people[who]) else len(who)
+
+
+def owner_said(words: list[str], k: int,
+               people: dict[tuple[str, ...], list[tuple[str, ...]]]) -> tuple[str, ...] | None:
+    """The one of the home's people whose words stand at ``k``, also with the "s" of a possessive
+    typed without its apostrophe ("kais ipad", "mums mug"), the longest first; None where none."""
+    for who in sorted(people, key=len, reverse=True):
         said = tuple(words[k:k + len(who)])
-        # "kais ipad", "mums mug": the "'s" typed without its apostrophe
-        if (said == who or said == who[:-1] + (who[-1] + "s",)) and not any(
-                tuple(words[k:k + len(name)]) == name for name in names):
-            return len(who)
-    return 0
+        if said == who or said == who[:-1] + (who[-1] + "s",):
+            return who
+    return None
+
+
+def owner_s_as_name(words: list[str], world: dict) -> list[str]:
+    """The words with an owner's "s" typed without its apostrophe taken off where the owner and
+    what follows are a name of the home ("mochis bowl" where the home says "mochi's bowl": the
+    bowl so named, not any bowl)."""
+    index = world_phrases(world)
+    people = owners(world)
+    out = list(words)
+    for k, w in enumerate(out):
+        for who in people:
+            n = len(who)
+            if tuple(out[k:k + n]) == who[:-1] + (who[-1] + "s",) and any(
+                    tuple(list(who) + out[k + n:k + n + m]) in index for m in (1, 2, 3)):
+                out[k + n - 1] = who[-1]
+    return out
 
 
 #: every word of the lexicon's phrases and fillers, and the function words

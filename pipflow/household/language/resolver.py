@@ -127,6 +127,7 @@ class Resolver:
         # a cue of warmth decided at the end: (state, words, what to do when no request answers it)
         self.unanswered: list[tuple[str, str, Callable[[], None]]] = []
         self.handled: list[tuple[list[str], str]] = []         # how things are to be handled: (names, words)
+        self.excepted: list[tuple[list[str], str]] = []        # things left out of a selection: (names, words)
 
     # selectors -------------------------------------------------------------------------
     def _candidates(self, sel: dict, words: str, prop: str | None = None) -> tuple[list[str], bool]:
@@ -312,6 +313,8 @@ class Resolver:
             if missing:
                 raise TranslationError(f"'{words}': '{ex['words']}' is not one of '{what}'")
             names = [n for n in names if n not in out]
+            if not ex.get("ones"):
+                self.excepted.append((out, words))
         return names
 
     def place_of(self, place: dict, words: str) -> str:
@@ -447,6 +450,7 @@ class Resolver:
                                                  for c in ex.get("state") or [])]
             else:
                 gone, _ = self.select(ex, words)
+                self.excepted.append((gone, words))
             if gone and not set(gone) & {n for n, _ in out}:
                 # "wash the teacup and the glass, but not the saucer": a reminder of what not to do
                 self.goal.notes.append(f"'{words}': '{ex['words']}' was not asked for; nothing is done to it")
@@ -1189,9 +1193,24 @@ class Resolver:
             for n in names:
                 self.want(n, cond, False, words)
 
+    def _hold_excepted(self) -> None:
+        """A thing left out of a selection ("all the toys except the footy", "all the lights except
+        the porch one") is left alone: where it is and as its world entry writes, as "don't touch
+        it" is (benchmarks/README.md); unless another part of the command asks something of it."""
+        for names, words in self.excepted:
+            for n in names:
+                if n in self.goal.inside or self.goal.state.get(n):
+                    continue
+                if n in self.world["objects"]:
+                    self.put(n, self.world["objects"][n]["in"], words)
+                    self.keep_states(n, words)
+                elif "toggleable" in (self.world["places"][n].get("properties") or []):
+                    self.set_state(n, "on" if holds_now(self.world, n, "on") else "off", False, words)
+
     def resolve(self, order: dict) -> dict:
         for st in order["statements"]:
             self.statement(st)
+        self._hold_excepted()
         self._apply_cue_defaults()
         for cond, words, otherwise in self.unanswered:   # the reason for a request of the same state, else
             asked = [n for n, preds in self.goal.state.items()

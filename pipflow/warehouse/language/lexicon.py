@@ -141,6 +141,10 @@ IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before
           # "X on P and Q - 4 on each (one)": 4 X on each of P and Q
           (re.compile(r"(^|[.;!?]\s*)([a-z][a-z0-9_-]*)\s+(?:on|in|at)\s+([a-z][a-z0-9 ]*?\s+and\s+[a-z][a-z0-9 ]*?)\s*[-:]\s*"
                       r"(\d+)\s+(?:pallets\s+|pcs\s+)?(?:on|in|at)\s+each(?:\s+one)?\b", re.IGNORECASE), r"\1\4 \2 on each of \3"),
+          # "robots what can carry 4": that (a relative "what", as learners and some dialects say it)
+          (re.compile(r"\b([a-z]+s)\s+what\s+(?=(?:can|could|are|is|have|has|will)\b)", re.IGNORECASE), r"\1 that "),
+          # "fill P full with X": fill P with X
+          (re.compile(r"\b(fill\s+[^.;!?,\n]+?)\s+full\s+(?=with\b)", re.IGNORECASE), r"\1 "),
           # "min. 2", "max 5": at least, at most (never "40 min", which is minutes)
           (re.compile(r"\bmin\.?\s+(?=\d)", re.IGNORECASE), "minimum "),
           (re.compile(r"\bmax\.?\s+(?=\d)", re.IGNORECASE), "maximum "),
