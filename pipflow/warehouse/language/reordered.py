@@ -274,8 +274,7 @@ def object_before_verb(toks: list[Tok]) -> list[Tok]:
     out: list[Tok] = []
     k = 0
     while k < len(toks):
-        if k and toks[k - 1].kind != "punct" and not (_word_in(toks, k - 1, _JOINS) and (
-                k == 1 or toks[k - 2].kind == "punct")):
+        if not _clause_opens(toks, k):
             out.append(toks[k])
             k += 1
             continue
@@ -357,41 +356,32 @@ def count_after_item(toks: list[Tok]) -> list[Tok]:
 def _item_count(toks: list[Tok], k: int) -> tuple[list[Tok], int] | None:
     """:func:`count_after_item` at a clause opening at ``k``: the tokens said instead and how many
     they replace, or None."""
-    j = k
-    source: list[Tok] = []
-    if _word_in(toks, j, ("from",)) and _name_at(toks, j + 1, "shelf"):
-        source, j = toks[j:j + 2], j + 2
-    elif _name_at(toks, j, "shelf"):
-        source, j = [Tok("word", "", "from"), toks[j]], j + 1
+    said_from = _word_in(toks, k, ("from",)) and _name_at(toks, k + 1, "shelf")
+    place = toks[k + 1] if said_from else toks[k] if _name_at(toks, k, "shelf") else None
+    j = k + (2 if said_from else 1 if place is not None else 0)
+    # a source said first; one said without "from" gets it, unsaid (no text of its own)
+    source = [toks[k] if said_from else Tok("word", "", "from"), place] if place is not None else []
     j += _word_in(toks, j, (POSS_MARK,))   # "rack B water": read as "rack B's water"
-    if _name_at(toks, j, "shelf") or toks[k].kind == "name" and not _name_at(toks, j, "product"):
-        return None
-    if source and toks[j].kind == "num" and _name_at(toks, j + 1, "product") and source[0].text:
+    if said_from and j + 1 < len(toks) and toks[j].kind == "num" and _name_at(toks, j + 1, "product"):
         # "from rack A 2 detergent to returns": the source said first, without its comma
         end = j + 2 + _word_in(toks, j + 2, _UNITS)
         return ([*toks[j:j + 2], *source], end - k) if _word_in(toks, end, ("to",)) else None
     if not _name_at(toks, j, "product"):
         return None
     item = toks[j]
-    # a colon only after a source ("from rack B detergent: 4 to ..."); "tote bags: 1 on the mezz, rest
-    # to packing" says a topic whose rest is asked about, and is left as said
-    colon = 1 if source and source[0].text and j + 1 < len(toks) and toks[j + 1].kind == "punct" \
-        and toks[j + 1].value == ":" else 0
+    # a colon only after "from P" ("from rack B detergent: 4 to ..."); "tote bags: 1 on the mezz,
+    # rest to packing" says a topic whose rest is asked about, and is left as said
+    colon = 1 if said_from and j + 1 < len(toks) and toks[j + 1].kind == "punct" and toks[j + 1].value == ":" else 0
     n = j + 1 + colon
     if n >= len(toks) or toks[n].kind != "num":
         return None
+    count = toks[n]
     n += _word_in(toks, n + 1, _UNITS)   # "5 pcs", "4 pal.": the unit goes
-    to = _word_in(toks, n + 1, ("to", "on", "onto", "into"))
-    if source and not (to or _word_in(toks, n + 1, ("from",))):
+    if source and not _word_in(toks, n + 1, ("to", "on", "onto", "into")):
         return None          # "rack A juice 5": the place's own count, read as said
-    if source and source[0].text == "" and not to:
-        return None
-    count = toks[j + 1 + colon]
-    if source and not source[0].text:        # the place said first: "5 water from rack B to ..."
-        return [count, item, *source], n + 1 - k
-    if source:                               # "from rack B detergent: 4": the source stays first
+    if said_from:            # "from rack B detergent: 4 to ...": the source stays first
         return [*source, Tok("punct", ",", ","), count, item], n + 1 - k
-    return [count, item], n + 1 - k
+    return [count, item, *source], n + 1 - k   # "5 water from rack B to ...", "5 charcoal from ..."
 
 
 def place_must_be(toks: list[Tok]) -> list[Tok]:
