@@ -62,6 +62,13 @@ def home_words(index: dict) -> frozenset[str]:
     return frozenset(w for k in index for w in k)
 
 
+def one_thing(index: dict, words: list[str]) -> bool:
+    """Whether the words are the home's name of one thing, said in the singular ("the lights in the
+    kitchen" may be every light there)."""
+    refs = index.get(tuple(words), [])
+    return len({ref["name"] for ref in refs}) == 1 and not any(ref.get("plural") for ref in refs)
+
+
 @per_index
 def first_words(index: dict) -> frozenset[str]:
     """The first words of the names of the home."""

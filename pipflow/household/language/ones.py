@@ -12,6 +12,7 @@ else is left as said ("the other one", "the blue one" where nothing is called bl
 """
 from __future__ import annotations
 
+from pipflow.household.language.names import one_thing
 from pipflow.household.language.people import owner_at, owners
 from pipflow.household.language.tokens import PUNCT
 
@@ -27,11 +28,6 @@ _CLOSING = frozenset({"and", "then", "too", "also", "pls", "please", "lah", "leh
 def _kinds(index: dict) -> frozenset[tuple[str, ...]]:
     """The last one or two words of the home's longer names ("umbrella", "water heater")."""
     return frozenset(key[-n:] for key in index for n in (1, 2) if len(key) > n)
-
-
-def _one_thing(index: dict, words: list[str]) -> bool:
-    refs = index.get(tuple(words), [])
-    return len({ref["name"] for ref in refs}) == 1 and not any(ref.get("plural") for ref in refs)
 
 
 def _kinds_before(words: list[str], end: int, kinds: frozenset) -> list[tuple[int, int, tuple[str, ...]]]:
@@ -54,7 +50,7 @@ def _the_thing(index: dict, said: list[str], spans: list[tuple[int, int, tuple[s
     named = {}
     for _, _, kind in spans:
         name = said + list(kind)
-        if _one_thing(index, name):
+        if one_thing(index, name):
             named.setdefault(index[tuple(name)][0]["name"], kind)
     return next(iter(named.values())) if len(named) == 1 else None
 
@@ -102,8 +98,8 @@ def _owner_one(out: list[str], k: int, index: dict, kinds: frozenset, people: di
         if k + 1 < len(out) and out[k + 1] not in PUNCT and out[k + 1] not in _CLOSING:
             return 0
         # the apposition is of the name said last ("the cup and the saucer, dad one": the saucer)
-        last = next((e for e in range(a - 2, -1, -1) if any(tuple(out[e - n + 1:e + 1]) in index
-                                                            for n in (1, 2, 3) if e - n + 1 >= 0)), None)
+        last = next((e for e in range(a - 2, -1, -1) if any(tuple(out[e - m + 1:e + 1]) in index
+                                                            for m in (1, 2, 3) if e - m + 1 >= 0)), None)
         spans = [span for span in _kinds_before(out, a - 1, kinds) if span[1] == last + 1] if last is not None else []
         kind = _the_thing(index, out[a:k], spans)
         if not kind:

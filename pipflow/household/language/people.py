@@ -176,7 +176,7 @@ def owner_s_as_name(words: list[str], world: dict) -> list[str]:
     index = world_phrases(world)
     people = owners(world)
     out = list(words)
-    for k, w in enumerate(out):
+    for k in range(len(out)):
         for who in people:
             n = len(who)
             if tuple(out[k:k + n]) == who[:-1] + (who[-1] + "s",) and any(

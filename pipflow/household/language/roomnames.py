@@ -14,6 +14,7 @@ or are only "room" or "bedroom".
 """
 from __future__ import annotations
 
+from pipflow.household.language.names import one_thing
 from pipflow.household.language.people import owner_at
 from pipflow.household.language.restated import DETERMINERS
 
@@ -27,19 +28,12 @@ _POSSESSIVES = frozenset({"my", "our", "your", "his", "her"})
 _ANY_ROOM = frozenset({("room",), ("bedroom",)})
 
 
-def _one_thing(index: dict, words: list[str]) -> bool:
-    """Whether the words are the home's name of one thing, said in the singular ("the lights in the
-    kitchen" may be every light there: left as said, and asked)."""
-    refs = index.get(tuple(words), [])
-    return len({ref["name"] for ref in refs}) == 1 and not any(ref.get("plural") for ref in refs)
-
-
 def _owned_room(out: list[str], k: int, a: int, e: int, index: dict, people: dict) -> tuple[list[str], int] | None:
     """The home's name and the where's end for "<thing> in <owner> <room>" (module docstring), the
     thing ``out[a:e]``; or None."""
     n = 1 if k + 1 < len(out) and out[k + 1] in _POSSESSIVES else owner_at(out, k + 1, people)
     name = out[k + 1:k + 1 + n] + out[a:e]
-    if not n or not _one_thing(index, name):
+    if not n or not one_thing(index, name):
         return None
     thing = index[tuple(name)][0]["name"]
     others = [key for key, refs in index.items() if any(ref["name"] == thing for ref in refs)]
@@ -75,7 +69,7 @@ def where_as_name(words: list[str], index: dict, notes: list[str], people: dict 
                 break
             thing = out[a:e]
             for m in range(min(len(out), j + _LONGEST), max(j, j + whole - 1), -1):   # the longest where first
-                if _one_thing(index, out[j:m] + thing):
+                if one_thing(index, out[j:m] + thing):
                     found = (a, m, out[j:m] + thing)
                     break
             if found:
