@@ -90,6 +90,8 @@ def test_a_remark_with_a_span_of_time_or_no_subject_is_set_aside(said: str) -> N
     "move 2 cider from bay A to gate 2, driver wants 3 perry",
     # an operative word keeps it in
     "move 2 cider from bay A to gate 2, is not for gate 1",
+    # an order after "please" is no remark whose verb lacks its -s
+    "move 2 cider from bay A to gate 2, please send back",
     # "rack A juice 5" says no move: the place said first is no source without "to"
     "bay A cider 5",
     # "on" without a source may say where the things are: not read as "to"

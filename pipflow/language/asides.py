@@ -309,7 +309,7 @@ def is_statement(words: Iterable[str], names: Callable[[str], bool]) -> bool:
     # "..., is broken": its subject left out, as Polish, Spanish and Italian speakers leave it
     dropped = ws[0] in ("is", "are", "was", "were") and ws[1] not in ("there", "it", "this", "that")
     # "..., service come Monday", "..., auditor from customer come": a noun and a verb without its -s
-    bare = any(w in _BARE_VERBS for w in ws[1:4]) and ws[0] not in FUNCTION_WORDS and ws[0] not in _BARE_VERBS
+    bare = any(w in _BARE_VERBS for w in ws[1:4]) and ws[0] not in FUNCTION_WORDS | _BARE_VERBS | _BEFORE_ORDERS
     if not (pronoun or noun or dropped or bare or _past_of_a_noun(ws) or _bare_progressive(ws)):
         return False
     return _asks_nothing(ws, names)
@@ -407,12 +407,17 @@ DURATIONS = frozenset({"day", "night", "week", "weekend", "month", "year", "morn
                        "summer", "winter", "time"})
 
 
+#: words an order may open with before its verb ("please send ...", "just go ..."): never a subject
+_BEFORE_ORDERS = frozenset({"please", "pls", "plz", "kindly", "just", "also", "then", "now", "so", "and", "quickly",
+                            "u", "you", "ya", "yall", "guys", "team", "everyone", "somebody", "someone"})
+
+
 #: units of time after a number ("waiting 40 min", "in 20 minutes"): how long, never a count of things
 TIME_UNITS = frozenset({"min", "mins", "minute", "minutes", "sec", "secs", "second", "seconds", "h", "hr", "hrs",
                         "hour", "hours", "day", "days", "week", "weeks"})
 
 
-def _duration_at(ws: list[str], k: int) -> bool:
+def duration_at(ws: list[str], k: int) -> bool:
     """Whether the word at ``k`` is the number or the unit of a span of time ("40 min")."""
     if ws[k] in TIME_UNITS:
         return k > 0 and _count_word(ws[k - 1])
@@ -690,7 +695,7 @@ def content_free(words: Iterable[str], content: Callable[[str], bool],
     the team; addressed to a name the world lacks, it is never talk: a robot that is not there is
     asked to do it, and the command must be refused, not given to the robots there are."""
     ws = [w for w in words if w]
-    ws = [w for k, w in enumerate(ws) if not _duration_at(ws, k)]   # "in 20 minutes": how long, no count
+    ws = [w for k, w in enumerate(ws) if not duration_at(ws, k)]   # "in 20 minutes": how long, no count
     if not ws:
         return True
     if tuple(ws) in CLOSINGS and not any(content(w) for w in ws):

@@ -39,7 +39,7 @@ from pipflow.household.language.rewrites import CLOSING_PARTICLES, CONSUMED
 from pipflow.household.language.tokens import PUNCT
 from pipflow.household.language.typos import typo_of, vocabulary
 from pipflow.household.language.whereabouts import BRING, POSTURE, clause_end, place_said
-from pipflow.language.asides import FUNCTION_WORDS, TIME_UNITS, near_operative
+from pipflow.language.asides import FUNCTION_WORDS, duration_at, near_operative
 
 #: titles before a name ("Father Tom", "Mrs Patel", "Auntie Jo"; "father tom" typed in lower case)
 TITLES = {"father", "mrs", "mr", "ms", "miss", "dr", "doctor", "auntie", "aunty", "aunt", "uncle", "sister",
@@ -237,8 +237,7 @@ class _Reader:
         (of minutes or hours it says when: "she's up in 10 min"), a word taking up a thing, or one
         that may ask something (no "shift" of work: "up from night shift")."""
         w = rest[j]
-        timed = w.isdigit() and j + 1 < len(rest) and rest[j + 1] in TIME_UNITS
-        return ((w in self.home and w not in FUNCTION_WORDS) or (w.isdigit() and not timed)
+        return ((w in self.home and w not in FUNCTION_WORDS) or (w.isdigit() and not duration_at(rest, j))
                 or w in THING_WORDS or (_asks(w) and not _work_shift(rest, j)))
 
     def clause_end(self, k: int) -> int:
