@@ -281,7 +281,6 @@ def object_before_verb(toks: list[Tok]) -> list[Tok]:
         end = next((j for j in range(k, len(toks)) if toks[j].kind == "punct"), len(toks))
         clause = toks[k:end]
         n = _object_phrase(clause)
-        negated = 0
         if n == 0 and _name_at(clause, 0, "shelf") and _word_in(clause, 1, _SAID_NOT) and _word_in(clause, 2, _KEEPING):
             n, negated = 1, 1
         else:
