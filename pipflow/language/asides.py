@@ -84,7 +84,9 @@ GREETINGS = frozenset({"hi", "hello", "hey", "hiya", "heya", "howdy", "morning",
                        # Swahili and Sheng, said in Kenyan English ("Sasa team", "Sawa team": OK, "Asante")
                        "sasa", "sawa", "poa", "jambo", "habari", "mambo", "niaje", "asante", "asanteni",
                        # Polish, said in English chat ("OK, dzięki": thanks; "cześć": hi)
-                       "dzieki", "dziekuje", "czesc"})
+                       "dzieki", "dziekuje", "czesc",
+                       # Brazilian Portuguese ("bom dia pessoal": good morning, folks; "oi", "olá": hi)
+                       "oi", "ola", "bom", "boa"})
 #: words that open an apology or a thanks for something ("sorry for the late ask", "thanks for
 #: earlier"): what follows "for" / "about" is what one is sorry or thankful for, not an order
 PLEASANTRIES = frozenset({"sorry", "apologies", "apologise", "apologize", "pardon", "thanks", "thank", "thx",
@@ -109,19 +111,28 @@ ADDRESSEES = frozenset({"all", "everyone", "everybody", "team", "folks", "guys",
                         # Kenyan English and Sheng ("Sawa wasee": OK guys; "mzee": elder, sir)
                         "boss", "wasee", "mzee",
                         # Mexican Spanish ("oye jefe", "gracias muchachos")
-                        "jefe", "compa", "compas", "muchachos"})
+                        "jefe", "compa", "compas", "muchachos",
+                        # Brazilian Portuguese ("bom dia pessoal", "boa noite galera": the day, the night, folks)
+                        "dia", "tarde", "noite", "pessoal", "galera", "gente",
+                        # Gulf Arabic, said in English on a floor in the Gulf ("habibi": my dear)
+                        "habibi", "habibti"})
 
 
 #: a thanks that can close an order without a comma before it ("... to bay 2 ta")
 THANKS = frozenset({"thanks", "ta", "cheers", "thx", "ty", "tyvm", "thankyou", "dankie", "diolch", "merci", "asante",
-                    "asanteni", "gracias", "dzieki", "dziekuje"})
+                    "asanteni", "gracias", "dzieki", "dziekuje", "obrigada", "obrigado", "brigada", "brigado", "valeu",
+                    "vlw"})
 #: who an order is said to, or a tag that closes it, without a comma before it ("... on dispatch
 #: please mate", "... forklifts only mind", "... thanks lads"): never a word that is operative
 CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "boss", "love", "pet", "hun",
                      "son", "hen", "sunshine", "buddy", "bro", "bruv", "dude",
                      "mind", "yeah", "eh", "cheers", "ta", "thanks", "thx", "ty", "tyvm", "thankyou", "dankie",
                      "man", "bru", "boet", "chale", "bud", "butt", "butty", "bach", "diolch", "merci", "svp", "stp",
-                     "asante", "asanteni", "bana", "mzee", "gracias", "jefe"})
+                     "asante", "asanteni", "bana", "mzee", "gracias", "jefe",
+                     # Brazilian Portuguese: thanks, "OK?" ("..., beleza?"), laughter
+                     "obrigada", "obrigado", "valeu", "vlw", "beleza", "blz", "rsrs", "kkk", "kkkk", "kkkkk",
+                     # Gulf Arabic ("..., yalla habibi", "..., inshallah", "khalas": done)
+                     "habibi", "habibti", "yalla", "inshallah", "khalas", "shukran"})
 
 
 #: a request tag after an order ("... over to the shed would ya", "... could you"): it asks
@@ -580,7 +591,9 @@ CLOSINGS = frozenset({(*that, *rest, *later) for that in (("thats",), ("that", "
     # how things are, said in passing ("on the bus now, all grand", "... . sound"): "all" is everything
     # being fine, no quantity; Irish and British "grand" and "sound" are fine and thanks
     ("all", "good"), ("all", "grand"), ("all", "fine"), ("its", "all", "good"), ("all", "good", "here"),
-    ("grand",), ("sound",), ("grand", "job"), ("sound", "job"), ("nice", "one"), ("legend",)}
+    ("grand",), ("sound",), ("grand", "job"), ("sound", "job"), ("nice", "one"), ("legend",),
+    # a letter's closing ("With kind regards, Ingrid"; the name after it is the signature)
+    *((*w, *r, "regards") for w in ((), ("with",)) for r in ((), ("kind",), ("best",), ("warm",), ("many",)))}
 
 
 #: whole clauses that only urge the order said before them ("..., sort it out", "get it done"):
@@ -651,7 +664,13 @@ INTERJECTIONS = frozenset({
     # "ahorita": right now; "ya": already; "órale", "ándale": come on)
     "oye", "oiga", "bueno", "pues", "porfa", "porfavor", "ahorita", "ya", "orale", "andale", "mira",
     # Indian English: Hindi and Tamil assent and urging ("Achha, take 3 ...", "Seri, ten tyres ...")
-    "achha", "acha", "accha", "seri", "haan", "ji", "jaldi", "arre", "arey"})
+    "achha", "acha", "accha", "seri", "haan", "ji", "jaldi", "arre", "arey",
+    # Brazilian Portuguese: "OK", "right?", laughter typed ("kkkk", "rsrs"), "quickly" ("rapidinho")
+    "beleza", "blz", "rsrs", "kkk", "kkkk", "kkkkk", "rapidinho", "atencao",
+    # Gulf Arabic ("Yalla, ...": come on; "inshallah", "mashallah", "wallah"; "khalas": done)
+    "yalla", "inshallah", "mashallah", "wallah", "khalas", "shukran",
+    # a signpost of urgency ("Attention! swap ...")
+    "attention"})
 
 
 def addressee(words: list[str]) -> str | None:
@@ -676,11 +695,12 @@ SIGN_OFFS = frozenset({"regards", "rgds", "sincerely", "faithfully", "truly", "y
 
 def signature(before: Iterable[str], words: Iterable[str]) -> bool:
     """Whether a clause that addresses a name (:func:`addressee`) is a letter's signature: the last
-    clause, after one that ends with a sign-off word ("Regards, Ramesh"). The writer signs; no one
-    is asked to do anything."""
+    clause, after one that ends with a sign-off word ("Regards, Ramesh", "With kind regards,
+    Ingrid Thode": a first name and a family name). The writer signs; no one is asked to do
+    anything."""
     said = [w for w in before if w]
     ws = [w for w in words if w]
-    return bool(said) and said[-1] in SIGN_OFFS and len(ws) == 1 and addressee(ws) is not None
+    return bool(said) and said[-1] in SIGN_OFFS and len(ws) in (1, 2) and all(addressee([w]) is not None for w in ws)
 
 
 def content_free(words: Iterable[str], content: Callable[[str], bool],

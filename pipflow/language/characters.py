@@ -26,6 +26,10 @@ The principle, for every reader:
   or be quoted in a refusal; the echo says how it was spelled. A word that would read as one of
   the reader's words ("à" as "a", "café" where a place is called cafe) is refused as before: an
   accent may make it another word, and the reader never guesses which.
+* **A world's own spelling is no guess.** A word the world declares with accents for one of its
+  things ("açaí" for acai, "câmara 1" for chamber1) is read as that thing
+  (:func:`declared_spellings`), before the rule above; another accent on the same word is not
+  declared, and stays under it.
 * **Typography the readers already read stays read**: curly apostrophes and quotes, dashes and
   the minus sign, the arrow for "to", the multiplication sign for "x", the ellipsis, and any
   white space (a no-break space is a space). Those are in each reader's list with their reading.
@@ -151,6 +155,38 @@ def accents_folded(command: str, reads: Callable[[str], bool]) -> tuple[str, lis
     if command.isascii():
         return command, []
     return re.sub(r"\S+", fold, command), notes
+
+
+def non_ascii_words(world: dict, kinds: tuple[str, ...]) -> dict[str, str]:
+    """The words a world declares for its things with letters outside the alphabet ("açaí" for
+    acai, "câmara 1" for chamber1), lower case and composed (NFC), -> the thing's name: what
+    :func:`declared_spellings` reads. ``kinds``: the world's sections of named things."""
+    out: dict[str, str] = {}
+    for kind in kinds:
+        for name, entry in (world.get(kind) or {}).items():
+            for word in (entry.get("words") or []) if isinstance(entry, dict) else []:
+                if isinstance(word, str) and not word.isascii():
+                    out[unicodedata.normalize("NFC", word).lower()] = str(name)
+    return out
+
+
+def declared_spellings(command: str, declared: dict[str, str]) -> tuple[str, list[str]]:
+    """The command with each spelling the world itself declares with letters outside the alphabet
+    (:func:`non_ascii_words`) written as the name it declares it for, and a note for each. The
+    world's own spelling is no guess, so the accent rule of this module (an accented word is read
+    only as talk) does not bear on it; every other accented word stays under that rule. The
+    command is composed first (NFC: canonical, so no character changes meaning), so an accent
+    typed as a combining mark matches too."""
+    if command.isascii() or not declared:
+        return command, []
+    notes: list[str] = []
+    text = unicodedata.normalize("NFC", command)
+    for spelled in sorted(declared, key=len, reverse=True):
+        def name(m: re.Match, spelled: str = spelled) -> str:
+            notes.append(f"'{m.group(0)}' read as {declared[spelled]} (a spelling this world declares)")
+            return declared[spelled]
+        text = re.sub(r"(?<!\w)" + re.escape(spelled) + r"(?!\w)", name, text, flags=re.IGNORECASE)
+    return text, notes
 
 
 #: pictographs that say how the writer feels and nothing else: faces, hands and gestures, hearts

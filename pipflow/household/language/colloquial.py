@@ -29,6 +29,12 @@ _COPULA = {("is",), ("are",), ("has", "been"), ("have", "been"), ("have",)}
 _BACK_IS = {"its", "thats", "theyre", "youre"}
 
 
+#: "first take out the bedsheet, only after that put the uniform in", "after that only" (Indian
+#: English puts "only" after what it stresses): the order of the steps, as "then"
+_ONLY_THEN = {("only", "after", "that"), ("after", "that", "only"), ("only", "after", "this"),
+              ("after", "this", "only"), ("only", "then"), ("then", "only")}
+
+
 #: "it's that dark in here", "the soup's that cold": "that" before how a thing or the room is,
 #: after a copula that has a subject before it, is a degree ("so"); "wash the mug, is that dirty?"
 #: (the copula opens the clause: "that" is its subject) stays
@@ -101,9 +107,55 @@ def _after(words: list[str], k: int) -> str:
     return words[k + 1] if k + 1 < len(words) else "."
 
 
+#: what "only X" is said to do after a selection of all, where German says "nur X nicht" / "nur X
+#: bleibt an": "all the fruit in the fridge, only the banana not" (except the banana)
+_STAYS = {"stays", "stay", "remains", "remain"}
+_KEPT_STATES = {"on", "off", "open", "closed", "shut"}
+
+
+def only_not_as_except(words: list[str], notes: list[str]) -> list[str]:
+    """The words with ", only X not" and ", only X stays on" after a clause that selects "all" read
+    as ", except X" and ", except X, leave X on": the one thing left out of the selection (German
+    "nur X nicht", "nur X bleibt an"). Only closing a clause, X at most five words with no mark,
+    number or operative word of its own; anywhere else "only" is read as it always is."""
+    out: list[str] = []
+    k = 0
+    while k < len(words):
+        end = next((j for j in range(k + 2, min(k + 8, len(words) + 1)) if j == len(words) or words[j] in PUNCT),
+                   None) if words[k] == "only" and out[-1:] == [","] else None
+        said = words[k + 1:end] if end is not None else []
+        opened = len(out) - 1 - next((j for j, w in enumerate(reversed(out[:-1])) if w in PUNCT and w != ","),
+                                     len(out) - 1)
+        if said and "all" in out[opened:]:
+            thing, tail = (said[:-1], []) if said[-1] == "not" else \
+                (said[:-2], [",", "leave", *said[:-2], said[-1]]) if len(said) > 2 and said[-2] in _STAYS \
+                and said[-1] in _KEPT_STATES else ([], [])
+            if thing and all(w.isalpha() and w not in ("not", "no", "only", "all", "every") for w in thing):
+                notes.append(f"'only {' '.join(said)}' after a selection of all: read as 'except {' '.join(thing)}'")
+                out[-1:] = ["except", *thing, *tail]   # the comma goes: the exception closes the selection
+                k = end
+                continue
+        out.append(words[k])
+        k += 1
+    return out
+
+
+#: "nobody watches", "no one reads" (the simple present, as German and other languages say "is
+#: watching"): the activity cue, as "nobody is watching" is
+_NOBODY = {"nobody", "noone"}
+_SIMPLE_ACTIVITIES = {"watches": "watching", "reads": "reading", "uses": "using", "listens": "listening",
+                      "plays": "playing", "works": "working", "looks": "looking", "studies": "studying",
+                      "cooks": "cooking"}
+
+
+def _nobody_does(words: list[str], k: int, out: list[str]) -> bool:
+    """Whether ``words[k]`` is an activity in the simple present after "nobody" / "no one"."""
+    return words[k] in _SIMPLE_ACTIVITIES and (out[-1:] and out[-1] in _NOBODY or out[-2:] == ["no", "one"])
+
+
 def colloquial(words: list[str], notes: list[str]) -> list[str]:
     """The words with the colloquial phrases of the module docstring read as the grammar's words."""
-    words = spelled_out_swap(words, notes)
+    words = only_not_as_except(spelled_out_swap(words, notes), notes)
     out: list[str] = []
     k = 0
     while k < len(words):
@@ -145,10 +197,15 @@ def colloquial(words: list[str], notes: list[str]) -> list[str]:
             out.append("so")
             k += 1
             continue
-        done = _when_done(words, k)
+        if _nobody_does(words, k, out):
+            notes.append(f"'{words[k]}' after nobody read as 'is {_SIMPLE_ACTIVITIES[words[k]]}'")
+            out += ["is", _SIMPLE_ACTIVITIES[words[k]]]
+            k += 1
+            continue
+        # "when it's done", "only after that": the order of the steps, after a step
+        done = _when_done(words, k) or next((n for n in (3, 2) if tuple(words[k:k + n]) in _ONLY_THEN), 0)
         if done and any(w not in PUNCT and w not in ("and", "then") for w in out):
-            notes.append(f"'{' '.join(words[k:k + done])}': when the step before is done, the order of the steps; "
-                         "read as 'then'")
+            notes.append(f"'{' '.join(words[k:k + done])}': the next step once the one before is done; read as 'then'")
             out.append("then")
             k += done
             continue

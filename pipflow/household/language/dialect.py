@@ -123,6 +123,61 @@ def put_on_as_switch(words: list[str], world: dict, index: dict, notes: list[str
     return out
 
 
+#: "make the light out", "make the kettle on", "the washing machine make on" (German "mach ... an /
+#: aus"): switch on, off
+_MAKE_PARTICLES = {"on": "on", "off": "off", "out": "off"}
+#: what may follow the particle of "make ... out" ("make all the lights out except the lamp")
+_MAKE_CLOSES = _CLAUSE_END | {"except", "but", "apart"}
+
+
+def make_as_switch(words: list[str], world: dict, index: dict, notes: list[str]) -> list[str]:
+    """The words with "make" read as "switch" where it is said with "on", "off" or "out" and a
+    phrase that names only things that switch, in any of German's orders ("make the light out",
+    "make out the light", "the washing machine make on": switch on the washing machine), the
+    particle closing the clause where it comes after the thing: what switches cannot be "made"
+    anything else. "out" is "off". "make the bed", "make the tea" and "make it warm" keep their
+    meaning. A note says so."""
+    out = list(words)
+    k = 0
+    while k < len(out) - 1:
+        said = out[k + 1]
+        closes = k + 2 == len(out) or out[k + 2] in _MAKE_CLOSES
+        end = _switching_name(out, _after_determiners(out, k + 1), world, index)
+        if out[k] != "make":
+            k += 1
+            continue
+        if said in _MAKE_PARTICLES and _switching_name(out, _after_determiners(out, k + 2), world, index):
+            out[k:k + 2] = ["switch", _MAKE_PARTICLES[said]]   # "make out the light"
+        elif said in _MAKE_PARTICLES and closes and (start := _switching_before(out, k, world, index)) is not None:
+            out[start:k + 2] = ["switch", _MAKE_PARTICLES[said]] + out[start:k]   # "the washing machine make on"
+        elif end and out[end:end + 1] and out[end] in _MAKE_PARTICLES and (
+                end + 1 >= len(out) or out[end + 1] in _MAKE_CLOSES):
+            said = out[end]
+            out[k], out[end] = "switch", _MAKE_PARTICLES[said]   # "make the light out"
+        else:
+            k += 1
+            continue
+        notes.append(f"'make ... {said}' read as 'switch ... {_MAKE_PARTICLES[said]}' (German 'machen ... an / aus')")
+        k += 1
+    return out
+
+
+def _switching_before(words: list[str], k: int, world: dict, index: dict) -> int | None:
+    """Where the clause before ``k`` opens, when all of it (after "and", "then" or a mark) is a
+    phrase naming only things that switch ("..., and the washing machine make on"); else None."""
+    start = k
+    while start and words[start - 1] not in _CLAUSE_END:
+        start -= 1
+    return start if start < k and _switching_name(words, _after_determiners(words, start), world, index) == k else None
+
+
+def _switching_name(words: list[str], k: int, world: dict, index: dict) -> int:
+    """The index after a name at ``k`` of things that switch: a category ("the lights") whose
+    members switch and none opens, or things that switch (:func:`_switching_phrase`); else 0."""
+    end, switch_only = _named(words, k, world, index)
+    return end if end is not None and switch_only else _switching_phrase(words, k, world, index)
+
+
 #: "open the light", "close the aircon" (Philippine and South Asian English): switch on, off
 _OPEN_CLOSE = {"open": "on", "close": "off"}
 

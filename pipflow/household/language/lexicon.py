@@ -536,6 +536,9 @@ FILLER = {("um",), ("umm",), ("uh",), ("uhh",), ("uhm",), ("er",), ("erm",),   #
           *((*whether, "no", "bother") for whether in (("if", "it", "is"), ("if", "its"))),
           *((*whether, "not", "too", "much", "bother") for whether in (("if", "it", "is"), ("if", "its"))),
           ("be", "a", "dear", "and"), ("be", "a", "love", "and"), ("be", "an", "angel", "and"), ("be", "a", "star", "and"),
+          # formal requests ("would you be so kind as to ...", German "so nett sein und": "be so kind and")
+          ("be", "so", "kind", "as", "to"), ("be", "so", "kind", "and"), ("be", "so", "good", "as", "to"),
+          ("be", "so", "good", "and"), ("kindly", "be", "so", "kind", "as", "to"),
           ("while", "you", "are", "about", "it"), ("while", "you", "are", "there"), ("while", "you", "are", "over", "there"),
           ("while", "you", "are", "in", "there"), ("while", "you", "are", "up"), ("while", "you", "are", "passing"),
           ("while", "you", "are", "on", "your", "feet"), ("while", "you", "are", "over", "here"), ("if", "you", "get", "a", "chance"),

@@ -9,6 +9,8 @@ two kinds said before would each name a thing, it is left as said. "the <words> 
 (:func:`~.people.owners`), says whose the thing just named is ("the mug, papa one": papa's mug).
 Each only where the result is the home's name of exactly one thing said in the singular; anything
 else is left as said ("the other one", "the blue one" where nothing is called blue: refused).
+"the one in <where>" is "the <kind> in <where>" where one kind only was said before, and the where
+says which (:mod:`~.roomnames`).
 """
 from __future__ import annotations
 
@@ -68,7 +70,8 @@ def one_as_kind(words: list[str], world: dict, index: dict, notes: list[str]) ->
         if out[k] != "one" or (k + 1 < len(out) and (out[k + 1] in starts or out[k + 1].isdigit())):
             k += 1
             continue
-        done = _the_words_one(out, k, index, kinds, notes) or _owner_one(out, k, index, kinds, people, notes)
+        done = _the_words_one(out, k, index, kinds, notes) or _owner_one(out, k, index, kinds, people, notes) \
+            or _the_one_where(out, k, kinds, notes)
         k = done if done else k + 1
     return out
 
@@ -86,6 +89,25 @@ def _the_words_one(out: list[str], k: int, index: dict, kinds: frozenset, notes:
             return k + len(kind)
         return 0
     return 0
+
+
+#: prepositions of where after "the one" ("the one in Amma's room")
+_WHERE = frozenset({"in", "at", "on", "from", "by", "near"})
+
+
+def _the_one_where(out: list[str], k: int, kinds: frozenset, notes: list[str]) -> int:
+    """ "all the fans except the one in Amma's room" -> "the fan in Amma's room" in place, where
+    one kind only was said before (which thing that is, the where decides after:
+    :mod:`~.roomnames`; the position after it, or 0."""
+    if out[k - 1] != "the" or k + 1 >= len(out) or out[k + 1] not in _WHERE:
+        return 0
+    said = {kind for _, _, kind in _kinds_before(out, k - 1, kinds) if not set(kind) & _NOT_WHICH}
+    if len(said) != 1:
+        return 0
+    kind = list(next(iter(said)))
+    notes.append(f"'the one {out[k + 1]} ...' read as the {' '.join(kind)} {out[k + 1]} ...")
+    out[k:k + 1] = kind
+    return k + len(kind)
 
 
 def _owner_one(out: list[str], k: int, index: dict, kinds: frozenset, people: dict, notes: list[str]) -> int:

@@ -43,7 +43,8 @@ from pipflow.household.language.setaside import reads_as_word, without_asides
 from pipflow.household.language.tagger import owners_as_the, tag
 from pipflow.household.language.tokens import Tag
 from pipflow.language.asides import said
-from pipflow.language.characters import accents_folded, refuse_unread, without_expressions
+from pipflow.language.characters import (accents_folded, declared_spellings, non_ascii_words, refuse_unread,
+                                         without_expressions)
 from pipflow.language.listing import inline_numbering
 from pipflow.language.earley import ListLexer, earley_parser
 from pipflow.language.lookahead import with_lookahead
@@ -89,8 +90,9 @@ def _parse_said(command: str, world: dict, notes: list[str]) -> list[dict]:
     if feelings:
         notes.append(said(feelings))
     if not command.isascii():   # "the Québec cousins are coming": an accented word that can only be talk
+        command, declared = declared_spellings(command, non_ascii_words(world, ("places", "objects")))
         command, accented = accents_folded(command, reads_as_word(world))
-        notes += accented
+        notes += declared + accented
     refuse_unread(command, MARKS)   # a character this reader does not read is refused, never skipped
     command = owners_as_the(command, world, notes)
     command = conditions_read(command, world, notes)   # "if the lamp is on, switch it off"
@@ -195,8 +197,9 @@ def _parse(command: str, world: dict, notes: list[str]) -> list[dict]:
 
 
 #: verbs whose object goes somewhere, and the words that say where: "then put in the fridge"
-#: drops the object "it" (the thing named before), as people do after naming it
-DROPPED_OBJECT_VERBS = {"V_PUT", "V_THROW"}
+#: drops the object "it" (the thing named before), as people do after naming it; "keep in the
+#: vessel stand" (Indian English "keep": put) with the leaving verbs
+DROPPED_OBJECT_VERBS = {"V_PUT", "V_THROW", "V_LEAVE"}
 DESTINATIONS = {"IN", "ON", "AT"}
 
 

@@ -31,8 +31,8 @@ from typing import Callable
 
 from pipflow.errors import PipflowError, Refusal, TranslationError
 from pipflow.household.language.lexicon import (BIN_KINDS, COLD, DEVICE_NOUNS, DEVICES, INDEFINITE, LAUNDRY,
-                                                LAUNDRY_PLACES, MASS_NOUNS, MEALS, OPPOSITE, REACHABLE, RUBBISH_KINDS,
-                                                VIA_PROPERTY, WINDOWS, plurals, words_of)
+                                                LAUNDRY_PLACES, LIGHT_CATEGORY_WORD, MASS_NOUNS, MEALS, OPPOSITE,
+                                                REACHABLE, RUBBISH_KINDS, VIA_PROPERTY, WINDOWS, plurals, words_of)
 from pipflow.household.language.nearness import nearest
 from pipflow.household.language.order import check_order
 from pipflow.household.problem import CONDITIONS
@@ -119,6 +119,7 @@ class Resolver:
         self.history: list[list[str]] = []                     # what each statement before named, in order
         # (category, state, words, members, whether a room said where)
         self.cue_defaults: list[tuple[str, str, str, list[str], bool]] = []
+        self.wanting_light: set[str] = set()                   # words of a cue for light, said of no place
         self.via_placed: dict[str, str] = {}                   # objects put where an action happens -> place
         self.said: list[list[str]] = []                        # the things each statement before was about
         self.mess: list[tuple[dict, str]] = []                 # disorder said of things: (statement, words)
@@ -1064,6 +1065,8 @@ class Resolver:
                 fit = [n for n, _ in named if not holds_now(self.world, n, cond)]
                 self._room(st, fit, words)
                 named = [(n, False) for n in ([self.choose[words]] if len(fit) > 1 else fit)] or named
+            if default == LIGHT_CATEGORY_WORD and cond == "on" and not st.get("room"):
+                self.wanting_light.add(words)
             # decided at the end: "it is getting dark, turn on the floor lamp" gives the reason
             # for a request, it does not ask for every light
             self.cue_defaults.append((cats[0], cond, words, [n for n, _ in named], bool(st.get("room"))))
@@ -1188,10 +1191,25 @@ class Resolver:
             names = [n for n in names if n not in already]
             if not names:
                 raise TranslationError(f"'{words}': every {cat} is {cond} already; say what to do")
+            if words in self.wanting_light and len(names) > 1:
+                if any(c.cond == cond and c.words != words for n in names for c in self.goal.state.get(n, {}).values()):
+                    # "is getting dark already, put all lights on": the reason for what is asked
+                    self.goal.notes.append(f"'{words}' is the reason for what is asked of the {cat}")
+                    continue
+                names = self._light_here(names, words)
             self.goal.notes.append(f"'{words}': read as every {cat} {cond} ({', '.join(names)})"
                                    + (f"; {', '.join(already)} {cond} already" if already else ""))
             for n in names:
                 self.want(n, cond, False, words)
+
+    def _light_here(self, names: list[str], words: str) -> list[str]:
+        """ "it's so dark in here": light where the speaker is, which the command does not say and the
+        home model cannot know; with one light off that one is meant, with several it is asked, each
+        offered (never every light of the home: docs/household.md, cues)."""
+        if self.choose.get(words) in names:
+            return [self.choose[words]]
+        raise _choice(TranslationError(f"'{words}': {', '.join(names)} are off, and '{words}' does not say where "
+                                       "light is wanted; say which"), words, names)
 
     def _hold_excepted(self) -> None:
         """A thing left out of a selection ("all the toys except the footy", "all the lights except

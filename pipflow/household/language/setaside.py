@@ -11,6 +11,7 @@ from pipflow.household.language.lexicon import DURATION_UNITS, FILLER_TYPO_TARGE
 from pipflow.household.language.names import home_words, per_index, world_phrases
 from pipflow.household.language.restated import leading_subject, restates_location
 from pipflow.household.language.typos import typo_of, vocabulary
+from pipflow.household.language.unseen import unseen
 from pipflow.language.asides import (BOUNDS, EXCLUSIVITY, FUNCTION_WORDS, NEGATION, QUANTITIES, SELECTION, Clause,
                                      clauses, content_free, signature, trailing_adjunct, trailing_thanks,
                                      unmarked_statement)
@@ -195,9 +196,12 @@ _PARENTHESES = re.compile(r"\s[-\u2010-\u2015]+\s|[\u2013\u2014\u2015()\[\]]")
 
 def _purposes_apart(words: list[str]) -> list[str]:
     """The words with a comma before a purpose that says what the speaker will do ("... so I
-    can mend it": :data:`PURPOSE_OPENERS`), so that it is a clause of its own."""
+    can mend it": :data:`PURPOSE_OPENERS`), and before "otherwise", so that each is a clause of
+    its own (what "otherwise" opens is judged there: :func:`prediction`)."""
     out: list[str] = []
     for k, w in enumerate(words):
+        if w == "otherwise" and out and out[-1] not in CLAUSE_MARKS:   # "... otherwise she will forget"
+            out.append(",")
         if w == "so" and out and out[-1] not in CLAUSE_MARKS:
             end = next((j for j in range(k, len(words)) if words[j] in CLAUSE_MARKS), len(words))
             if speaker_doing(tuple(words[k:end])):
@@ -301,7 +305,7 @@ def prediction(words: tuple[str, ...], names: Callable[[str], bool]) -> bool:
     name of the home, no number, no "you", no word that bears on an order or asks ("it will need
     washing" asks)."""
     ws = list(words)
-    while ws[:1] and ws[0] in ("and", "so", "cos", "because", "or"):   # "..., and it'll turn"
+    while ws[:1] and ws[0] in ("and", "so", "cos", "because", "or", "otherwise", "else"):   # "..., and it'll turn"
         ws = ws[1:]
     if len(ws) < 3 or ws[0] not in _PREDICTED or ws[1] not in ("will", "ll"):
         return False
@@ -416,6 +420,7 @@ def without_asides(command: str, world: dict) -> Trimmed | None:
     free += run_on_talk([c for c in parts if c not in taken], content, names)
     free += remarks_joined([c for c in parts if c not in taken and c not in free], remark)
     free += [c for c in parts if c not in taken and c not in free and prediction(c.words, names)]
+    free += unseen([c for c in parts if c not in taken and c not in free], names)
     if not free and not own and not known:
         return None
     drop = {k for c in free + own + [c for c, _ in known] for k in range(c.start, c.end)}

@@ -14,8 +14,8 @@ from pipflow.language.english import common_word
 from pipflow.household.language.beside import beside_as_where
 from pipflow.household.language.colloquial import colloquial
 from pipflow.household.language.corrections import corrected
-from pipflow.household.language.dialect import (bring_in, cut_as_switch, on_off_as_verbs, open_close_as_switch,
-                                                particle_before_exception, put_on_as_switch,
+from pipflow.household.language.dialect import (bring_in, cut_as_switch, make_as_switch, on_off_as_verbs,
+                                                open_close_as_switch, particle_before_exception, put_on_as_switch,
                                                 scots_as_english, them_as_those)
 from pipflow.household.language.headwords import named_again
 from pipflow.household.language.grammar import NOUN_DUAL
@@ -131,8 +131,8 @@ def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: l
     words = or_under_negation(measures(without_manner(words, notes), index, notes), notes)
     words = heat_purpose(caused(given(me_as_where_the_speaker_is(words, index, notes), notes), notes), notes)
     words = closed_again(wherever_they_belong(words, notes), notes)
-    words = on_off_as_verbs(put_on_as_switch(cut_as_switch(words, world, index, notes), world, index, notes), world,
-                            index, notes)
+    words = make_as_switch(cut_as_switch(words, world, index, notes), world, index, notes)
+    words = on_off_as_verbs(put_on_as_switch(words, world, index, notes), world, index, notes)
     words = bring_in(open_close_as_switch(particle_before_exception(words, notes), world, index, notes), index, notes)
     words = beside_as_where(named_again(them_as_those(words, index, notes), index, notes), world, index, notes)
     return particles(words, lambda x: x.isalpha() and not known_word(x, index, vocab), notes)

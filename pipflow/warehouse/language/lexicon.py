@@ -21,7 +21,8 @@ from pipflow.language.asides import (FUNCTION_WORDS, OPERATIVE, SUBJECTS, Clause
                                      leading_reason, said_talk, signature, trailing_adjunct, trailing_thanks,
                                      unmarked_statement)
 from pipflow.language.asterisk import star_corrections
-from pipflow.language.characters import accents_folded, refuse_unread, without_expressions
+from pipflow.language.characters import (accents_folded, declared_spellings, non_ascii_words, refuse_unread,
+                                         without_expressions)
 from pipflow.language.english import common_word
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS, is_number
 from pipflow.language.radio import transmission
@@ -30,9 +31,9 @@ from pipflow.language.spelling import distance, normalize, plural_forms, slip, t
 from pipflow.warehouse.language.grammar import ASIDE_ONLY
 from pipflow.warehouse.language.names import (CONTAINERS, KIND_WORDS, POSS_MARK, STOPWORDS, NameIndex, Tok, read_counts,
                                               recognize)
-from pipflow.warehouse.language.reordered import (base_verb, count_after_item, fronted_source, item_as_subject,
-                                                needs_doing, object_before_verb, on_as_to, place_must_be, said_at,
-                                                to_be_done)
+from pipflow.warehouse.language.reordered import (base_verb, count_after_item, destination_first, fronted_source,
+                                                item_as_subject, needs_doing, object_before_verb, on_as_to, place_first,
+                                                place_must_be, said_at, to_be_done)
 from pipflow.warehouse.language.transcripts import places_taken_back, them_as_determiner
 from pipflow.warehouse.language.wordorder import left_dislocated, noun_adjuncts, numbered_siblings, unmarked_lists
 
@@ -73,8 +74,8 @@ UNIT_WORDS = {"carton", "cartons", "roll", "rolls", "pack", "packs", "packet", "
               "bundles", "bag", "bags", "tub", "tubs", "bottle", "bottles", "reel", "reels", "tote",
               "totes", "drum", "drums", "tin", "tins", "jar", "jars", "sack", "sacks", "crates", "jug", "jugs",
               "sheet", "sheets", "length", "lengths", "coil", "coils", "tray", "trays", "pc",
-              # the logistics abbreviations ("4 ctns", "2 plts")
-              "ctn", "ctns", "plt", "plts"}
+              # the logistics abbreviations ("4 ctns", "2 plts"; "cx", Portuguese caixa and Spanish caja: box)
+              "ctn", "ctns", "plt", "plts", "cx", "cxs"}
 FILLERS |= UNIT_WORDS
 #: fillers that make the count after them a final count
 EXACT_WORDS = {"exactly", "precisely"}
@@ -109,6 +110,15 @@ IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before
           # "EUR pal.", "6 pal water": pallets (a unit word; "pal" alone elsewhere may be a friend)
           (re.compile(r"\b(?:eur|euro)\.?\s+(?=pal)", re.IGNORECASE), ""),
           (re.compile(rf"\b({_NUMBER}|more|less|dozen)\s+pal(?:l|s|ls)?\b", re.IGNORECASE), r"\1 pallets"),
+          # chat's slashed abbreviations: "w/o" without, "w/" with, "b/c" because, "p/" (Portuguese and
+          # Spanish "para") for; any other slash is still refused as a symbol
+          (re.compile(r"(?<![\w/])w/o(?![\w/])", re.IGNORECASE), "without"),
+          (re.compile(r"(?<![\w/])w/(?=\s*[a-z0-9])", re.IGNORECASE), "with "),
+          (re.compile(r"(?<![\w/])b/c(?![\w/])", re.IGNORECASE), "because"),
+          (re.compile(r"(?<![\w/])p/(?=\s*[a-z0-9])", re.IGNORECASE), "for "),
+          # "robots that carry 5 and up / and above": or more (never before where to: "5 and up to P")
+          (re.compile(r"\b(\d+)\s+and\s+(?:up|upwards|above|over)\b(?!\s+(?:to|the|into|onto|on|in)\b)",
+                      re.IGNORECASE), r"\1 or more"),
           # "please to move 5 X" (a learner's "please" with the infinitive): please move
           (re.compile(r"\b(please|pls|plz|kindly)\s+to\s+(?=[a-z])", re.IGNORECASE), r"\1 "),
           # "P is need 4 more X": needs
@@ -316,7 +326,22 @@ WORD_ORDER = ((re.compile(rf"\bmore\s+({_NUMBER})(?!\s*(?:than|%|percent))", re.
               # "P must to have 12 X" (Spanish "debe de tener", Portuguese "deve de"): a modal takes the
               # bare verb, so the "to" between them says nothing
               (re.compile(rf"\b(must|should|shall|can|could|would)\s+to\s+(?=(?:not\s+)?(?:{_BARE_VERBS})\b)",
-                          re.IGNORECASE), r"\1 "))
+                          re.IGNORECASE), r"\1 "),
+              # "P must stay with 6 X" (Portuguese "ficar com", Spanish "quedarse con"): must have; "P cannot
+              # stay with less than 8 X": must have at least 8
+              (re.compile(rf"\b(?:can\s*not|cannot|cant|can't|must\s+not|mustnt)\s+(?:stay|remain|be|end)\s+with\s+"
+                          rf"(?:less|fewer)\s+than\s+(?={_NUMBER}\b)", re.IGNORECASE), "must have at least "),
+              (re.compile(rf"\b(must|should|has\s+to|have\s+to)\s+(?:stay|remain)\s+with\s+(?={_NUMBER}\b)",
+                          re.IGNORECASE), r"\1 have "),
+              # "swap P and Q, everything" (the places first, then what): everything between them
+              (re.compile(r"\b(swap|switch|exchange)\s+([a-z][a-z0-9 ]*?\s+and\s+[a-z][a-z0-9 ]*?)\s*,\s*"
+                          r"(everything|all)\b(?=\s*(?:[.,;:!?]|$))", re.IGNORECASE), r"\1 \3 between \2"),
+              # "divide 8 X between P and Q, half half" (Portuguese "meio a meio"): evenly
+              (re.compile(r"\b((?:divide|split|share)\b[^.;!?\n]*?\s+between\s+[^.;!?\n]+?)\s*,?\s*half\s+(?:and\s+)?half\b",
+                          re.IGNORECASE), r"\1 evenly"),
+              # "(the) robots must (to) take 6 X ...": an order said of the robots is an order to them
+              (re.compile(r"(^|[.;!?]\s*)(?:the\s+)?(?:robots|bots)\s+(?:must|should|have\s+to|need\s+to)\s+(?:to\s+)?"
+                          r"(?=(?:take|move|bring|carry|send|put)\b)", re.IGNORECASE), r"\1"))
 #: discourse particles of Singapore, Malaysian and Hong Kong English, closing a clause ("add 4
 #: more lah", "botak off today ah,", "kitting make it 8 la", "dun touch rack B ar"): they colour
 #: the clause, they say nothing of the order
@@ -1096,6 +1121,8 @@ class Lexicon:
         self.aside: list[str] = []
         self.corrected: list[str] = []   # "*word" corrections made (asterisk.star_corrections)
         self._robots = {str(r).lower() for r in robots}
+        #: the world's own spellings with accents ("açaí" for acai), read as the names they are
+        self._declared = non_ascii_words(world, ("shelves", "products", "robots"))
         #: the places, as a pattern, for the chat forms that name one (:meth:`_chat_said_plainly`)
         shelves = sorted(map(str, world.get("shelves") or {}), key=len, reverse=True)
         self._places = "|".join(map(re.escape, shelves)) or None
@@ -1320,6 +1347,7 @@ class Lexicon:
         :attr:`aside`; a sentence with some content-free clauses carries its reading without them
         as ``trimmed``. :attr:`tokens` keeps the recognised tokens, :meth:`position` finds one."""
         # "the truck from Québec is late": an accented word that can only be talk, spelled without accents
+        command, declared = declared_spellings(command, self._declared)
         command, accented = accents_folded(command, self._reads)
         radio = transmission(command, self._names_exactly, lambda w: w in self._robots, is_number)
         if radio is not None:   # "Yard control to all units. ... Over.": the voice procedure set aside
@@ -1360,12 +1388,12 @@ class Lexicon:
         toks = them_as_determiner(read_counts(_split_hyphens(fixed, self.keywords)))
         toks, framed = without_request_frames(places_taken_back(toks), verbs)
         toks = item_as_subject(fronted_source(to_be_done(needs_doing(by_as_at(toks), verbs), verbs), verbs))
-        toks = on_as_to(object_before_verb(count_after_item(place_must_be(toks))))
+        toks = on_as_to(object_before_verb(place_first(count_after_item(destination_first(place_must_be(toks))))))
         toks = lexicon_verbs(quantity_phrases(addressed_anyone(stative_having(toks)), self.keywords), self.keywords)
         toks = put_back_after_its_object(counts_sent_from_a_topic(corrected(toks)))
         toks = dropped_object(corrected_later(without_particles(toks)))
         self._framed = (radio.aside if radio is not None else []) + feelings + framed
-        self.corrected = accented + starred
+        self.corrected = declared + accented + starred
         return self._split(toks, stops)
 
     def _chat_said_plainly(self, command: str) -> str:

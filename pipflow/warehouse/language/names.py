@@ -686,11 +686,16 @@ class NameIndex:
     def written_apart(self, raw: list[str], i: int) -> tuple[Tok, int] | None:
         """A name of two or three words starting at ``raw[i]``, in any of its spellings and
         plurals ("cable spools" for cable_spool, "paint shop" for paint-shop); the longest wins.
-        Words that are numbers after the first are left to the count reader."""
+        Words that are numbers after the first are left to the count reader, but for the number
+        that ends a numbered place's name as the world declares it ("loading bay 3" for bay3: its
+        number, in digits, as "bay 3" is read)."""
         for size in (3, 2):
             part = raw[i:i + size]
             if len(part) < size or not all(_TOKEN.fullmatch(w) and w[0].isalnum() for w in part):
                 continue
+            numbered = self._declared_number(part)
+            if numbered is not None:
+                return Tok("name", " ".join(part), numbered.name, numbered.kind), i + size
             if any(word_value(w.lower()) is not None for w in part[1:]):
                 continue
             hit = self.forms.get(normalize("".join(part))) or self.contents.get(normalize("".join(part)))
@@ -698,6 +703,15 @@ class NameIndex:
                 return Tok("name", " ".join(part), hit.name, hit.kind), i + size
         hit = self._misspelt_apart(raw[i:i + 2]) or self._shortened_apart(raw[i:i + 2])
         return (Tok("name", " ".join(raw[i:i + 2]), hit.name, hit.kind), i + 2) if hit is not None else None
+
+    def _declared_number(self, part: list[str]) -> "_Name | None":
+        """The place whose declared word is ``part`` with its last word a number in digits that is
+        the place's own ("loading bay 3" for bay3), the other words no number."""
+        if not part[-1].isdigit() or any(word_value(w.lower()) is not None for w in part[:-1]):
+            return None
+        hit = self.forms.get(normalize("".join(part)))
+        return hit if hit is not None and hit.kind == "shelf" and hit.digits \
+            and int(hit.digits) == int(part[-1]) else None
 
     def _misspelt_part(self, word: str) -> "_Name | None":
         """A word of a name read alone (:attr:`parts`) misspelt by one edit, same first letter, five

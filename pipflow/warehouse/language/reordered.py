@@ -28,6 +28,24 @@ def _name_at(toks: list[Tok], k: int, of: str) -> bool:
     return 0 <= k < len(toks) and toks[k].kind == "name" and toks[k].of == of
 
 
+def each_clause(toks: list[Tok], rewrite: Callable[[list[Tok]], list[Tok] | None],
+                opens: Callable[[list[Tok], int], bool]) -> list[Tok]:
+    """The tokens with ``rewrite`` applied to each clause (from where ``opens`` says one opens to
+    the next mark) it rewrites; every other token as said."""
+    out: list[Tok] = []
+    k = 0
+    while k < len(toks):
+        end = next((j for j in range(k, len(toks)) if toks[j].kind == "punct"), len(toks))
+        said = rewrite(toks[k:end]) if opens(toks, k) else None
+        if said is None:
+            out.append(toks[k])
+            k += 1
+            continue
+        out += said
+        k = end
+    return out
+
+
 def base_verb(word: str, verbs: Collection[str]) -> str | None:
     """The verb of :data:`verbs` that ``word`` is the "-ing" form of ("moving", "swapping",
     "bringing"), or None."""
@@ -160,20 +178,7 @@ def item_as_subject(toks: list[Tok]) -> list[Tok]:
     wanted count. Only where the clause says a number after the verb and names no other item;
     "be" becomes "have"; a stock word ("stock", "count") and "on" / "in" / "at" between item and
     place are left out."""
-    out: list[Tok] = []
-    k = 0
-    while k < len(toks):
-        opens = k == 0 or toks[k - 1].kind == "punct"
-        end = next((j for j in range(k, len(toks)) if toks[j].kind == "punct"), len(toks))
-        clause = toks[k:end]
-        said = _item_subject(clause) if opens else None
-        if said is None:
-            out.append(toks[k])
-            k += 1
-            continue
-        out += said
-        k = end
-    return out
+    return each_clause(toks, _item_subject, lambda ts, k: k == 0 or ts[k - 1].kind == "punct")
 
 
 def _item_subject(clause: list[Tok]) -> list[Tok] | None:
@@ -240,7 +245,7 @@ _PHRASE_WORDS = frozenset({"all", "the", "of", "half", "them", "those", "these",
 _SAID_NOT = frozenset({"dont", "never", "not"})
 #: unit words said after a count ("5 pcs", "4 pallets"): no thing of their own
 _UNITS = frozenset({"pallets", "pallet", "pcs", "pc", "units", "unit", "pieces", "cases", "boxes", "cartons", "ctn",
-                    "ctns", "plt", "plts"})
+                    "ctns", "plt", "plts", "cx", "cxs"})
 #: words that open a clause after its comma ("..., but rack B dont touch")
 _JOINS = frozenset({"but", "and", "then", "so"})
 
@@ -294,6 +299,65 @@ def object_before_verb(toks: list[Tok]) -> list[Tok]:
         out.append(toks[k])
         k += 1
     return out
+
+
+#: verbs that change what a place holds, said after the place and its things ("bay 5 chargers
+#: double it", "zone A dates reduce by a quarter", "QC area clear everything")
+_CHANGING = frozenset({"double", "triple", "halve", "reduce", "cut", "increase", "empty", "clear"})
+#: a pronoun taking up what was said first ("... double it"), or all of a place ("clear everything")
+_RESUMING = frozenset({"it", "them"})
+_EVERYTHING = frozenset({"everything", "anything", "all"})
+
+
+def place_first(toks: list[Tok]) -> list[Tok]:
+    """The tokens with a clause that names a place (and its things) before the verb read in the
+    grammar's order: "bay 5 chargers double it" is "double chargers on bay 5", "zone A dates reduce
+    by a quarter" is "reduce dates on zone A by a quarter", "zone A dates send to bay 3" is "send
+    dates from zone A to bay 3", "zone B chargers dont touch" is "dont touch chargers on zone B"; "QC
+    area clear everything" is "clear QC area", "zone B dont touch anything" is "dont touch zone B".
+    Only at a clause's start, the place first, then its products (no count: a count is read by
+    :func:`count_after_item`; nor one after a verb of moving), then the verb; a pronoun after the
+    verb is what was said first. Anything else is left as said."""
+    return each_clause(toks, _place_first, _clause_opens)
+
+
+def _place_first(clause: list[Tok]) -> list[Tok] | None:
+    """:func:`place_first` of one clause, or None."""
+    if not _name_at(clause, 0, "shelf"):
+        return None
+    j = 1 + _word_in(clause, 1, (POSS_MARK,))   # "zone A dates": zone A's dates
+    while _name_at(clause, j, "product") or (_word_in(clause, j, ("and",)) and _name_at(clause, j + 1, "product")):
+        j += 1
+    v = j + _word_in(clause, j, _SAID_NOT)
+    rest = clause[v + 1:]
+    place, things = clause[:1], [t for t in clause[1:j] if t.value != POSS_MARK]
+    moving = _word_in(clause, v, _MOVING)
+    if things and (_word_in(clause, v, _CHANGING | _KEEPING) or moving and not any(t.kind == "num" for t in rest)):
+        # a count after a verb of moving is read by the rules of a count said late ("OB connector
+        # take away 10 ctn")
+        rest = rest[1:] if _word_in(rest, 0, _RESUMING) else rest
+        join = "from" if moving else "on"
+        return clause[j:v + 1] + things + [Tok("word", join, join)] + place + rest
+    if not things and _word_in(clause, v, _CHANGING | _KEEPING) and len(rest) == 1 and _word_in(rest, 0, _EVERYTHING):
+        return clause[j:v + 1] + place
+    return None
+
+
+def destination_first(toks: list[Tok]) -> list[Tok]:
+    """The tokens with where to said right after a verb of moving, before the count ("put in dock 2 8
+    chicken from chamber 2", as Portuguese and Spanish may order it: "pôr na doca 2 oito frangos") read
+    as "put 8 chicken from chamber 2 to dock 2": only at a clause's start, the verb, "in" / "on" /
+    "to" / "into" and a place, then a count; anything else is left as said."""
+    return each_clause(toks, _destination_first, _clause_opens)
+
+
+def _destination_first(clause: list[Tok]) -> list[Tok] | None:
+    """:func:`destination_first` of one clause, or None."""
+    p = 2 + _word_in(clause, 2, ("the",))   # "put in the dock 2 8 ..."
+    if _word_in(clause, 0, _MOVING) and _word_in(clause, 1, ("in", "on", "to", "into")) \
+            and _name_at(clause, p, "shelf") and len(clause) > p + 2 and clause[p + 1].kind == "num":
+        return clause[:1] + clause[p + 1:] + [Tok("word", "to", "to")] + clause[p:p + 1]
+    return None
 
 
 def on_as_to(toks: list[Tok]) -> list[Tok]:
