@@ -124,20 +124,30 @@ def only_not_as_except(words: list[str], notes: list[str]) -> list[str]:
         end = next((j for j in range(k + 2, min(k + 8, len(words) + 1)) if j == len(words) or words[j] in PUNCT),
                    None) if words[k] == "only" and out[-1:] == [","] else None
         said = words[k + 1:end] if end is not None else []
-        opened = len(out) - 1 - next((j for j, w in enumerate(reversed(out[:-1])) if w in PUNCT and w != ","),
-                                     len(out) - 1)
-        if said and "all" in out[opened:]:
-            thing, tail = (said[:-1], []) if said[-1] == "not" else \
-                (said[:-2], [",", "leave", *said[:-2], said[-1]]) if len(said) > 2 and said[-2] in _STAYS \
-                and said[-1] in _KEPT_STATES else ([], [])
-            if thing and all(w.isalpha() and w not in ("not", "no", "only", "all", "every") for w in thing):
-                notes.append(f"'only {' '.join(said)}' after a selection of all: read as 'except {' '.join(thing)}'")
-                out[-1:] = ["except", *thing, *tail]   # the comma goes: the exception closes the selection
-                k = end
-                continue
+        opened = max((j + 1 for j, w in enumerate(out) if w in PUNCT and w != ","), default=0) if said else 0
+        thing, tail = _left_out(said) if said and "all" in out[opened:] else ([], [])
+        if thing:
+            notes.append(f"'only {' '.join(said)}' after a selection of all: read as 'except {' '.join(thing)}'")
+            out[-1:] = ["except", *thing, *tail]   # the comma goes: the exception closes the selection
+            k = end
+            continue
         out.append(words[k])
         k += 1
     return out
+
+
+def _left_out(said: list[str]) -> tuple[list[str], list[str]]:
+    """What ``said`` ("the saucer not", "the lamp stays on") leaves out, and what it asks of it after
+    (", leave the lamp on"); ([], []) where it is no such phrase or holds an operative word."""
+    if said[-1:] == ["not"]:
+        thing, tail = said[:-1], []
+    elif len(said) > 2 and said[-2] in _STAYS and said[-1] in _KEPT_STATES:
+        thing, tail = said[:-2], [",", "leave", *said[:-2], said[-1]]
+    else:
+        return [], []
+    if not thing or not all(w.isalpha() and w not in ("not", "no", "only", "all", "every") for w in thing):
+        return [], []
+    return thing, tail
 
 
 #: "nobody watches", "no one reads" (the simple present, as German and other languages say "is

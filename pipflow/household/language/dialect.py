@@ -138,14 +138,10 @@ def make_as_switch(words: list[str], world: dict, index: dict, notes: list[str])
     anything else. "out" is "off". "make the bed", "make the tea" and "make it warm" keep their
     meaning. A note says so."""
     out = list(words)
-    k = 0
-    while k < len(out) - 1:
-        said = out[k + 1]
-        closes = k + 2 == len(out) or out[k + 2] in _MAKE_CLOSES
+    for k in [k for k, w in enumerate(words) if w == "make"]:   # each rewrite keeps the words' number
+        said = out[k + 1] if k + 1 < len(out) else "."
+        closes = k + 2 >= len(out) or out[k + 2] in _MAKE_CLOSES
         end = _switching_name(out, _after_determiners(out, k + 1), world, index)
-        if out[k] != "make":
-            k += 1
-            continue
         if said in _MAKE_PARTICLES and _switching_name(out, _after_determiners(out, k + 2), world, index):
             out[k:k + 2] = ["switch", _MAKE_PARTICLES[said]]   # "make out the light"
         elif said in _MAKE_PARTICLES and closes and (start := _switching_before(out, k, world, index)) is not None:
@@ -155,10 +151,8 @@ def make_as_switch(words: list[str], world: dict, index: dict, notes: list[str])
             said = out[end]
             out[k], out[end] = "switch", _MAKE_PARTICLES[said]   # "make the light out"
         else:
-            k += 1
             continue
         notes.append(f"'make ... {said}' read as 'switch ... {_MAKE_PARTICLES[said]}' (German 'machen ... an / aus')")
-        k += 1
     return out
 
 

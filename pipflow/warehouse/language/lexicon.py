@@ -337,8 +337,8 @@ WORD_ORDER = ((re.compile(rf"\bmore\s+({_NUMBER})(?!\s*(?:than|%|percent))", re.
               (re.compile(r"\b(swap|switch|exchange)\s+([a-z][a-z0-9 ]*?\s+and\s+[a-z][a-z0-9 ]*?)\s*,\s*"
                           r"(everything|all)\b(?=\s*(?:[.,;:!?]|$))", re.IGNORECASE), r"\1 \3 between \2"),
               # "divide 8 X between P and Q, half half" (Portuguese "meio a meio"): evenly
-              (re.compile(r"\b((?:divide|split|share)\b[^.;!?\n]*?\s+between\s+[^.;!?\n]+?)\s*,?\s*half\s+(?:and\s+)?half\b",
-                          re.IGNORECASE), r"\1 evenly"),
+              (re.compile(r"\b((?:divide|split|share)\b[^.;!?\n]*?\s+between\s+[^.;!?\n]+?)"
+                          r"\s*,?\s*half\s+(?:and\s+)?half\b", re.IGNORECASE), r"\1 evenly"),
               # "(the) robots must (to) take 6 X ...": an order said of the robots is an order to them
               (re.compile(r"(^|[.;!?]\s*)(?:the\s+)?(?:robots|bots)\s+(?:must|should|have\s+to|need\s+to)\s+(?:to\s+)?"
                           r"(?=(?:take|move|bring|carry|send|put)\b)", re.IGNORECASE), r"\1"))
