@@ -58,6 +58,7 @@ def _read(said: str) -> dict:
     ("take 2 guava off room 2, the client cancelled rsrs vlw", "take 2 guava off room2"),
     ("yalla, move 2 mango from room 1 to bay 4 inshallah", "move 2 mango from room1 to bay4"),
     ("move 2 mango from room 1 to bay 4, beleza?", "move 2 mango from room1 to bay4"),
+    ("Anh em, move 2 mango from room 1 to bay 4 nha", "move 2 mango from room1 to bay4"),
 ])
 def test_said_as_the_floor_writes_it(said: str, plain: str) -> None:
     assert _read(said)["goal"] == _read(plain)["goal"]

@@ -1,9 +1,11 @@
 """Issue 23, from pair SS's warehouse set (a supervisor in Dubai who names the place first, then its
 stock, then what to do): "bay 5 chargers double it", "zone A dates reduce by one quarter", "zone A
 dates send to bay 3", "zone B chargers dont touch", "QC area clear everything", "zone B dont touch
-anything"; where to said before the count ("put in the bay 3 4 filters from zone A", pair TT's
-Portuguese order); and "robots that carry 5 and up" (or more). In a world of our own (a spares depot),
-through the real reader; each rule with what stays as said or refused."""
+anything", "bay 3 belts make 5 total", "zone B add 2 pads more", "zone A send 3 filters back to
+bay 3" (pair UU's Vietnamese English, after its first measurement); where to said before the
+count ("put in the bay 3 4 filters from zone A", pair TT's Portuguese order); and "robots that
+carry 5 and up" (or more). In a world of our own (a spares depot), through the real reader; each
+rule with what stays as said or refused."""
 from __future__ import annotations
 
 import pytest
@@ -40,8 +42,13 @@ def _read(said: str) -> dict:
     ("zone A filters and belts send to bay 3", "send the filters and the belts from zone A to bay 3"),
     ("zone B pads dont touch", "dont touch the pads on zone B"),
     ("QC area clear everything", "clear the QC area"),
-    ("move 2 belts from zone A to bay 3, zone B dont touch anything", "move 2 belts from zone A to bay 3, dont touch zone B"),
+    ("move 2 belts from zone A to bay 3, zone B dont touch anything",
+     "move 2 belts from zone A to bay 3, dont touch zone B"),
     ("put in the bay 3 4 filters from zone A", "move 4 filters from zone A to bay 3"),
+    ("bay 3 belts make 5 total", "bay 3 should have 5 belts"),
+    ("zone B pads make 4", "zone B should have 4 pads"),
+    ("zone B add 2 pads more", "add 2 more pads to zone B"),
+    ("zone A send 3 filters back to bay 3", "send 3 filters from zone A back to bay 3"),
     ("move 4 filters from zone A to bay 3 using only robots that carry 5 and up",
      "move 4 filters from zone A to bay 3 using only robots that carry 5 or more"),
 ])
@@ -55,6 +62,8 @@ def test_the_place_said_first(said: str, plain: str) -> None:
     "double it zone A filters",            # the verb first: no place said first
     "zone A clear the belts",              # an object after the verb that is no "everything"
     "put in bay 3 the filters from zone A",   # where to first, but no count after it
+    "zone A dont send 3 filters to bay 3",    # a negation: never moved about
+    "bay 3 belts make more",                  # "make" without a count
 ])
 def test_what_stays_refused(said: str) -> None:
     with pytest.raises(TranslationError):

@@ -86,7 +86,9 @@ GREETINGS = frozenset({"hi", "hello", "hey", "hiya", "heya", "howdy", "morning",
                        # Polish, said in English chat ("OK, dzięki": thanks; "cześć": hi)
                        "dzieki", "dziekuje", "czesc",
                        # Brazilian Portuguese ("bom dia pessoal": good morning, folks; "oi", "olá": hi)
-                       "oi", "ola", "bom", "boa"})
+                       "oi", "ola", "bom", "boa",
+                       # Vietnamese ("anh em": brothers, the team, said to it; "chao": hello)
+                       "anh", "chao"})
 #: words that open an apology or a thanks for something ("sorry for the late ask", "thanks for
 #: earlier"): what follows "for" / "about" is what one is sorry or thankful for, not an order
 PLEASANTRIES = frozenset({"sorry", "apologies", "apologise", "apologize", "pardon", "thanks", "thank", "thx",
@@ -115,7 +117,9 @@ ADDRESSEES = frozenset({"all", "everyone", "everybody", "team", "folks", "guys",
                         # Brazilian Portuguese ("bom dia pessoal", "boa noite galera": the day, the night, folks)
                         "dia", "tarde", "noite", "pessoal", "galera", "gente",
                         # Gulf Arabic, said in English on a floor in the Gulf ("habibi": my dear)
-                        "habibi", "habibti"})
+                        "habibi", "habibti",
+                        # Vietnamese ("anh em", "cac ban": you all)
+                        "em", "cac", "ban"})
 
 
 #: a thanks that can close an order without a comma before it ("... to bay 2 ta")
@@ -132,7 +136,9 @@ CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "
                      # Brazilian Portuguese: thanks, "OK?" ("..., beleza?"), laughter
                      "obrigada", "obrigado", "valeu", "vlw", "beleza", "blz", "rsrs", "kkk", "kkkk", "kkkkk",
                      # Gulf Arabic ("..., yalla habibi", "..., inshallah", "khalas": done)
-                     "habibi", "habibti", "yalla", "inshallah", "khalas", "shukran"})
+                     "habibi", "habibti", "yalla", "inshallah", "khalas", "shukran",
+                     # Vietnamese particles closing a request ("..., nha", "... nhé": OK?, please)
+                     "nha", "nhe", "nhen"})
 
 
 #: a request tag after an order ("... over to the shed would ya", "... could you"): it asks
@@ -669,6 +675,8 @@ INTERJECTIONS = frozenset({
     "beleza", "blz", "rsrs", "kkk", "kkkk", "kkkkk", "rapidinho", "atencao",
     # Gulf Arabic ("Yalla, ...": come on; "inshallah", "mashallah", "wallah"; "khalas": done)
     "yalla", "inshallah", "mashallah", "wallah", "khalas", "shukran",
+    # Vietnamese particles ("nha", "nhé": OK?, please)
+    "nha", "nhe", "nhen",
     # a signpost of urgency ("Attention! swap ...")
     "attention"})
 

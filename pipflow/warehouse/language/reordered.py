@@ -314,8 +314,11 @@ def place_first(toks: list[Tok]) -> list[Tok]:
     grammar's order: "bay 5 chargers double it" is "double chargers on bay 5", "zone A dates reduce
     by a quarter" is "reduce dates on zone A by a quarter", "zone A dates send to bay 3" is "send
     dates from zone A to bay 3", "zone B chargers dont touch" is "dont touch chargers on zone B"; "QC
-    area clear everything" is "clear QC area", "zone B dont touch anything" is "dont touch zone B".
-    Only at a clause's start, the place first, then its products (no count: a count is read by
+    area clear everything" is "clear QC area", "zone B dont touch anything" is "dont touch zone B";
+    "rack 1 LCD make 40 total" is "rack 1 should have 40 LCD"; "shipping add 5 cable more" is "add 5
+    cable more to shipping", "rack 1 send ten cable back to receiving" is "send ten cable back to
+    receiving from rack 1" (a count after the verb, and where to with a verb of moving). Only at a
+    clause's start, the place first, then its products (no count: a count is read by
     :func:`count_after_item`; nor one after a verb of moving), then the verb; a pronoun after the
     verb is what was said first. Anything else is left as said."""
     return each_clause(toks, _place_first, _clause_opens)
@@ -328,7 +331,8 @@ def _place_first(clause: list[Tok]) -> list[Tok] | None:
     j = 1 + _word_in(clause, 1, (POSS_MARK,))   # "zone A dates": zone A's dates
     while _name_at(clause, j, "product") or (_word_in(clause, j, ("and",)) and _name_at(clause, j + 1, "product")):
         j += 1
-    v = j + _word_in(clause, j, _SAID_NOT)
+    negated = _word_in(clause, j, _SAID_NOT)
+    v = j + negated
     rest = clause[v + 1:]
     place, things = clause[:1], [t for t in clause[1:j] if t.value != POSS_MARK]
     moving = _word_in(clause, v, _MOVING)
@@ -340,6 +344,16 @@ def _place_first(clause: list[Tok]) -> list[Tok] | None:
         return clause[j:v + 1] + things + [Tok("word", join, join)] + place + rest
     if not things and _word_in(clause, v, _CHANGING | _KEEPING) and len(rest) == 1 and _word_in(rest, 0, _EVERYTHING):
         return clause[j:v + 1] + place
+    if things and _word_in(clause, v, ("make",)) and rest[:1] and rest[0].kind == "num" and (
+            len(rest) == 1 or len(rest) == 2 and _word_in(rest, 1, ("total",))):
+        # "rack 1 LCD make 40 total": rack 1 should have 40 LCD
+        return place + [Tok("word", "should", "should"), Tok("word", "have", "have"), rest[0]] + things
+    if not things and not negated and any(t.kind == "num" for t in rest):
+        if _word_in(clause, v, ("add",)):    # "shipping add 5 cable more": add them to shipping
+            return clause[v:v + 1] + rest + [Tok("word", "to", "to")] + place
+        if moving and any(_word_in(rest, n, ("to",)) for n in range(len(rest))):
+            # "rack 1 send ten cable back to receiving": from rack 1
+            return clause[v:v + 1] + rest + [Tok("word", "from", "from")] + place
     return None
 
 
