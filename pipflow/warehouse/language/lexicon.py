@@ -292,10 +292,11 @@ IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before
           # "check P, it needs ...": look at P; "it" is P, the sentence says what P needs
           (re.compile(r"(^|[.;!?]\s*)check\s+(?:on\s+)?((?:the\s+)?[a-z][a-z0-9_ -]{0,24}?)(?:\s*,?\s*(?:pls|please|plz))?\s*,\s*"
                       r"(?:it|she)\b(?=\s*(?:is|has|needs|should|must|shld)\b)", re.IGNORECASE), r"\1\2"),
-          # "swap P and Q, the whole lot, everything (on them)": a whole swap, which "swap P and Q" is
-          (re.compile(r"\b(swap\s[^.,;!?\n]*?\band\s[^.,;!?\n]*?)\s*[,.:]\s*(?:(?:the\s+)?whole\s+lot|everything|all\s+of\s+it)"
-                      r"(?:\s*,\s*(?:(?:the\s+)?whole\s+lot|everything|all\s+of\s+it))*(?:\s+on\s+(?:them|both|there))?"
-                      r"(?=\s*(?:[.;!?]|$))", re.IGNORECASE), r"\1"))
+          # "swap P and Q, the whole lot, everything (on them)", "swap P and Q, everything, the trucks
+          # changed doors": a whole swap, which "swap P and Q" is
+          (re.compile(r"\b(swap\s[^.,;!?\n]*?\band\s[^.,;!?\n]*?)\s*[,.:]\s*(?:(?:the\s+)?whole\s+lot|everything|all"
+                      r"(?:\s+of\s+it)?)(?:\s*,\s*(?:(?:the\s+)?whole\s+lot|everything|all\s+of\s+it))*"
+                      r"(?:\s+on\s+(?:them|both|there))?(?=\s*(?:[.,;!?]|$))", re.IGNORECASE), r"\1"))
 #: the order of words of a speaker whose first language puts them so (Portuguese and Spanish
 #: "mais 4", "mais de 4", "o dobro de", "longe de"), read as English puts them: "add more 4 tubes"
 #: is "add 4 more tubes", "no more of 4" is "no more than 4", "the double of the saddles" is
@@ -333,15 +334,14 @@ WORD_ORDER = ((re.compile(rf"\bmore\s+({_NUMBER})(?!\s*(?:than|%|percent))", re.
                           rf"(?:less|fewer)\s+than\s+(?={_NUMBER}\b)", re.IGNORECASE), "must have at least "),
               (re.compile(rf"\b(must|should|has\s+to|have\s+to)\s+(?:stay|remain)\s+with\s+(?={_NUMBER}\b)",
                           re.IGNORECASE), r"\1 have "),
-              # "swap P and Q, everything" (the places first, then what): everything between them
-              (re.compile(r"\b(swap|switch|exchange)\s+([a-z][a-z0-9 ]*?\s+and\s+[a-z][a-z0-9 ]*?)\s*,\s*"
-                          r"(everything|all)\b(?=\s*(?:[.,;:!?]|$))", re.IGNORECASE), r"\1 \3 between \2"),
               # "divide 8 X between P and Q, half half" (Portuguese "meio a meio"): evenly
               (re.compile(r"\b((?:divide|split|share)\b[^.;!?\n]*?\s+between\s+[^.;!?\n]+?)"
                           r"\s*,?\s*half\s+(?:and\s+)?half\b", re.IGNORECASE), r"\1 evenly"),
-              # "(the) robots must (to) take 6 X ...": an order said of the robots is an order to them
+              # "(the) robots must (to) take 6 X ...": an order said of the robots is an order to them (a
+              # text rule: "robots" is read as the robots' group before request frames are)
               (re.compile(r"(^|[.;!?]\s*)(?:the\s+)?(?:robots|bots)\s+(?:must|should|have\s+to|need\s+to)\s+(?:to\s+)?"
                           r"(?=(?:take|move|bring|carry|send|put)\b)", re.IGNORECASE), r"\1"))
+
 #: discourse particles of Singapore, Malaysian and Hong Kong English, closing a clause ("add 4
 #: more lah", "botak off today ah,", "kitting make it 8 la", "dun touch rack B ar"): they colour
 #: the clause, they say nothing of the order
