@@ -48,6 +48,15 @@ def test_a_list_numbered_inline_is_a_job_per_number() -> None:
     assert got["goal"] == {"shed": {"crate": 4, "barrel": 4}} and got["constraints"] == [{"never": ["moth"]}]
     got = understand("1) move 3 crates from quay to shed 2) dont use moth", TERMINAL)
     assert got["goal"] == MOVE and got["constraints"] == [{"never": ["moth"]}]
+    # numbered with a slash, as Vietnamese and French lists are, one job a line or not
+    got = understand("1/ move 3 crates from quay to shed\n2/ dont use moth", TERMINAL)
+    assert got["goal"] == MOVE and got["constraints"] == [{"never": ["moth"]}]
+
+
+def test_a_slash_between_numbers_is_no_list() -> None:
+    """ "1/2 of the crates": a fraction, refused as a symbol as before; never a list number."""
+    with pytest.raises(TranslationError, match="'/'"):
+        understand("move 1/2 of the crates from quay to shed", TERMINAL)
 
 
 def test_numbers_out_of_order_are_no_list() -> None:

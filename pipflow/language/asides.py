@@ -137,14 +137,18 @@ CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "
                      "obrigada", "obrigado", "valeu", "vlw", "beleza", "blz", "rsrs", "kkk", "kkkk", "kkkkk",
                      # Gulf Arabic ("..., yalla habibi", "..., inshallah", "khalas": done)
                      "habibi", "habibti", "yalla", "inshallah", "khalas", "shukran",
-                     # Vietnamese particles closing a request ("..., nha", "... nhé": OK?, please)
-                     "nha", "nhe", "nhen"})
+                     # Vietnamese particles closing a request ("..., nha", "... nhé": OK?, please), and
+                     # "giúp anh" (help me: said by an older brother), "giúp tôi", "giúp mình"
+                     "nha", "nhe", "nhen", "giup", "anh", "toi", "minh",
+                     # Turkish ("..., hadi": come on; "acil": urgent; "abi", "hocam": said to the reader)
+                     "hadi", "acil", "abi", "abla", "hocam", "tamam", "bakalim", "insallah"})
 
 
 #: a request tag after an order ("... over to the shed would ya", "... could you"): it asks
 #: nothing more than the order does
 REQUEST_TAGS = frozenset((modal, you) for modal in ("would", "could", "will", "can", "wont")
-                         for you in ("you", "ya", "u", "yous")) | {("isnt", "it")}   # Welsh English's tag on anything
+                         for you in ("you", "ya", "u", "yous")) | {("isnt", "it")} \
+    | {(you, "hear") for you in ("you", "ya", "yuh", "yu")}   # Welsh English's tag on anything; Jamaican "yuh hear?"
 #: the words of a thanks or a request tag, which are no operative words there
 _TAG_WORDS = frozenset(w for tag in REQUEST_TAGS for w in tag) | {"thank", "you"}
 
@@ -159,10 +163,17 @@ def trailing_thanks(words: list[str], content: Callable[[str], bool]) -> int:
     while rest and (rest[-2:] == ["thank", "you"] or tuple(rest[-2:]) in REQUEST_TAGS or rest[-1] in CLOSERS):
         n = 2 if rest[-2:] == ["thank", "you"] or tuple(rest[-2:]) in REQUEST_TAGS else 1
         rest, k = rest[:-n], k + n
-    if k == 0 or k >= len(words) or any(content(w) or (w not in THANKS and w not in _TAG_WORDS
-                                                       and near_operative(w)) for w in words[-k:]):
+    said = words[-k:] if k else []
+    if k == 0 or k >= len(words) or any(content(w) or (w not in THANKS and w not in _TAG_WORDS and near_operative(w)
+                                                       and not _inside_talk(said, n)) for n, w in enumerate(said)):
         return 0
     return k
+
+
+def _inside_talk(run: list[str], n: int) -> bool:
+    """Whether the closing word at ``n`` of ``run`` has after it a closing word that is no slip of
+    an operative word ("giúp anh nhé": "anh" looks like "and", but "nhé" after it makes the run talk)."""
+    return any(w in CLOSERS and not near_operative(w) for w in run[n + 1:])
 
 
 #: words that open an adjunct of purpose, time or reason at the end of a clause ("... for afternoon
@@ -677,6 +688,11 @@ INTERJECTIONS = frozenset({
     "yalla", "inshallah", "mashallah", "wallah", "khalas", "shukran",
     # Vietnamese particles ("nha", "nhé": OK?, please)
     "nha", "nhe", "nhen",
+    # Turkish ("hocam", "abi": to whoever reads; "hadi": come on; "acil": urgent; "tamam": OK;
+    # "bakalım": let's see; "kolay gelsin": may it go easy; "günaydın": good morning)
+    "hocam", "abi", "abla", "hadi", "acil", "tamam", "bakalim", "kolay", "gelsin", "gunaydin", "insallah",
+    # Korean chat: a cheer ("Fighting!", "hwaiting"), dismay ("aigoo"), "really" ("jinjja"), laughter ("kk")
+    "fighting", "hwaiting", "aigoo", "aigo", "jinjja", "omo", "kk",
     # a signpost of urgency ("Attention! swap ...")
     "attention"})
 

@@ -30,6 +30,8 @@ The principle, for every reader:
   things ("açaí" for acai, "câmara 1" for chamber1) is read as that thing
   (:func:`declared_spellings`), before the rule above; another accent on the same word is not
   declared, and stays under it.
+* **The Turkish keyboard's i is i** ("ı", "İ": :func:`turkish_i`): on that keyboard they are the
+  letter i typed where English types it, not an accent; the word is read with "i".
 * **Typography the readers already read stays read**: curly apostrophes and quotes, dashes and
   the minus sign, the arrow for "to", the multiplication sign for "x", the ellipsis, and any
   white space (a no-break space is a space). Those are in each reader's list with their reading.
@@ -157,6 +159,30 @@ def accents_folded(command: str, reads: Callable[[str], bool]) -> tuple[str, lis
     return re.sub(r"\S+", fold, command), notes
 
 
+#: the letters of a Turkish keyboard that stand for the English "i" and "I": its dotless "ı" and
+#: dotted capital "İ" are Turkish's own case pair of i, typed where an English keyboard types i / I
+_TURKISH_I = {"\u0131": "i", "\u0130": "I"}
+
+
+def turkish_i(command: str) -> tuple[str, list[str]]:
+    """The command with the Turkish keyboard's "ı" and "İ" read as "i" and "I" ("dıspatch",
+    "fıve", "İnbound": dispatch, five, Inbound), and a note for each word so read. Not an accent
+    taken off: on that keyboard they are the letter i itself (Turkish pairs "ı" with "I" and "i"
+    with "İ"), so the word has one reading. Run after :func:`declared_spellings` (a world may
+    declare a word with them), before :func:`accents_folded` ("Günaydın" then folds as talk)."""
+    if command.isascii() or not any(ch in command for ch in _TURKISH_I):
+        return command, []
+    notes: list[str] = []
+
+    def read(m: re.Match) -> str:
+        word = m.group(0)
+        plain = "".join(_TURKISH_I.get(ch, ch) for ch in word)
+        if plain != word:
+            notes.append(f"'{word}' read as '{plain}' (the Turkish keyboard's i)")
+        return plain
+    return re.sub(r"\S+", read, command), notes
+
+
 def non_ascii_words(world: dict, kinds: tuple[str, ...]) -> dict[str, str]:
     """The words a world declares for its things with letters outside the alphabet ("açaí" for
     acai, "câmara 1" for chamber1), lower case and composed (NFC), -> the thing's name: what
@@ -206,20 +232,29 @@ _EXPRESSION_RANGES = ((0x1F600, 0x1F64F),   # emoticons: faces and gestures ("�
 #: what may follow such a pictograph within it: skin tones, the joiner, a variation selector, and
 #: the gender signs that a joiner adds ("🤦‍♂️")
 _EXPRESSION_PARTS = "\U0001F3FB-\U0001F3FF\u200d\ufe0f\u2640\u2642"
+#: Korean chat's laughter and tears, typed as repeated jamo ("ㅋㅋ", "ㅎㅎ", "ㅠㅠ", "ㅜㅜ"): a run of
+#: two or more; one jamo alone may be a typo of a word, and stays refused
+_JAMO_FEELINGS = "\u314b\u314e\u315c\u3160"
 _EXPRESSION = re.compile("(?:[" + "".join(f"{chr(a)}-{chr(b)}" for a, b in _EXPRESSION_RANGES)
-                         + "][" + _EXPRESSION_PARTS + "]*)+")
+                         + "][" + _EXPRESSION_PARTS + "]*)+"
+                         + f"|[{_JAMO_FEELINGS}]{{2,}}")
+#: a tilde that draws out the word it closes ("Thank you~", "please~~"), as East Asian chat types
+#: a friendly tone: only after a letter and before a space, a mark or the end; "2~3" (a range) and
+#: a tilde before a word stay refused
+_DRAWN_OUT = re.compile(r"(?<=[A-Za-z])~+(?=[\s.,!?;:]|$)")
 
 
 def without_expressions(command: str) -> tuple[str, list[str]]:
-    """The command with its pictographs of feeling (faces, hands, hearts: :data:`_EXPRESSION_RANGES`)
-    read as the end of a sentence, and those pictographs, to be said as set aside. People end a
+    """The command with its pictographs of feeling (faces, hands, hearts: :data:`_EXPRESSION_RANGES`;
+    Korean jamo of laughter and tears, "ㅋㅋ", "ㅠㅠ") read as the end of a sentence, a tilde drawing
+    out a word ("you~") left out, and those marks, to be said as set aside. People end a
     message or a sentence with one ("dispatch is short again 🙄 send 4 more"); it holds no count,
     name or word of an order. Every other character outside the alphabet is still refused
     (:func:`refuse_unread`)."""
-    found = _EXPRESSION.findall(command)
+    found = _EXPRESSION.findall(command) + _DRAWN_OUT.findall(command)
     if not found:
         return command, []
-    return _EXPRESSION.sub(" . ", command), found
+    return _DRAWN_OUT.sub("", _EXPRESSION.sub(" . ", command)), found
 
 
 def line_readings(command: str) -> list[str]:

@@ -22,6 +22,9 @@ BECOMING = {"gone", "going", "went", "turned", "turning", "turns", "got", "getti
 #: "when it's done", "once that's ready": the step before is finished, the order of the steps
 #: (which the plan decides); the pronoun points back, so a command that opens with it is refused
 _DONE = {"done", "ready", "finished"}
+#: states a step makes, which "when it <state>" (the copula left out, as Caribbean and African
+#: American English say it) waits for: "heat it up, an when it hot put it on the table"
+_MADE = {"hot", "clean", "warm", "dry", "cooked", "washed", "sliced"}
 _WHEN = {"when", "once", "after"}
 _BACK = {"it", "they", "that", "this", "those", "these", "you"}
 _COPULA = {("is",), ("are",), ("has", "been"), ("have", "been"), ("have",)}
@@ -100,6 +103,8 @@ def _closed_back(out: list[str], after: str) -> str:
 #: particles that close a clause for emphasis in West African English ("do it fast o", "close the
 #: fridge back o", "thank you oo"): only before a stop or a comma, where no word of an order stands
 _CLOSING_PARTICLES = {"o", "oo", "ooo"}
+#: "you hear?" closing a sentence
+_HEAR_TAGS = {(you, "hear") for you in ("you", "ya", "yuh", "yu")}
 
 
 def _after(words: list[str], k: int) -> str:
@@ -181,6 +186,11 @@ def colloquial(words: list[str], notes: list[str]) -> list[str]:
             notes.append(f"'{verb} ... back': {verb} it again")
             k += 1
             continue
+        if pair in _HEAR_TAGS and after in PUNCT and out:
+            # "..., yuh hear?" (Jamaican, Southern US English): a tag asking for assent, no order
+            notes.append(f"'{' '.join(pair)}' closing a sentence: a tag asking for assent, no word of the order")
+            k += 2
+            continue
         if words[k] in _CLOSING_PARTICLES and _after(words, k) in PUNCT and out and out[-1] not in PUNCT:
             notes.append(f"'{words[k]}' closing a clause: a particle of emphasis (West African English), no word of the order")
             k += 1
@@ -212,8 +222,9 @@ def colloquial(words: list[str], notes: list[str]) -> list[str]:
             out += ["is", _SIMPLE_ACTIVITIES[words[k]]]
             k += 1
             continue
-        # "when it's done", "only after that": the order of the steps, after a step
-        done = _when_done(words, k) or next((n for n in (3, 2) if tuple(words[k:k + n]) in _ONLY_THEN), 0)
+        # "when it's done", "only after that", "after washing,": the order of the steps, after a step
+        done = _when_done(words, k) or next((n for n in (3, 2) if tuple(words[k:k + n]) in _ONLY_THEN), 0) \
+            or _after_doing(words, k, out)
         if done and any(w not in PUNCT and w not in ("and", "then") for w in out):
             notes.append(f"'{' '.join(words[k:k + done])}': the next step once the one before is done; read as 'then'")
             out.append("then")
@@ -222,6 +233,17 @@ def colloquial(words: list[str], notes: list[str]) -> list[str]:
         out.append(words[k])
         k += 1
     return out
+
+
+def _after_doing(words: list[str], k: int, said: list[str]) -> int:
+    """2 where the words at ``k`` are "after" and the "-ing" form of a verb said before in the
+    command, then a mark ("wash the pan and the spoons. After washing, spoons put in the cupboard"):
+    after that step, as "then"; 0 otherwise (a verb not said before may be a new step: "after
+    drying, fold it" is left as said)."""
+    if words[k] != "after" or k + 2 >= len(words) or words[k + 2] not in PUNCT or not words[k + 1].endswith("ing"):
+        return 0
+    stem = words[k + 1][:-3]
+    return 2 if any(v in said for v in (stem, stem + "e", stem[:-1]) if len(v) > 1) else 0
 
 
 def _when_done(words: list[str], k: int) -> int:
@@ -237,4 +259,7 @@ def _when_done(words: list[str], k: int) -> int:
         j = k + 2 + len(cop)
         if tuple(words[k + 2:j]) == cop and j < len(words) and words[j] in _DONE:
             return j + 1 - k
+    j = k + 2   # "when it hot den put it ...", "when it clean put it back": the copula left out
+    if j < len(words) and words[j] in _DONE | _MADE and words[k + 1] in ("it", "they"):
+        return j + 1 - k + (j + 1 < len(words) and words[j + 1] == "then")
     return 0

@@ -18,6 +18,7 @@ from __future__ import annotations
 from typing import NamedTuple
 
 from pipflow.errors import TranslationError
+from pipflow.household.language.dialect import patois_in_home
 from pipflow.household.language.lexicon import words_of
 from pipflow.household.language.names import world_phrases
 from pipflow.household.language.restated import AT, BE, DETERMINERS
@@ -59,6 +60,8 @@ def conditions_read(command: str, world: dict, notes: list[str]) -> str:
     words = words_of(command)
     if "if" not in words and "otherwise" not in words:
         return command
+    patois: list[str] = []   # "if di stove on, turn it off": the condition read in English
+    words = patois_in_home(words, world_phrases(world), patois)
     sentences: list[list[str]] = [[]]
     for w in words:
         sentences[-1].append(w)
@@ -89,6 +92,7 @@ def conditions_read(command: str, world: dict, notes: list[str]) -> str:
             notes.append(f"'{condition.said}' {state} now: '{said}' is not done")
     if not changed:
         return command
+    notes[:0] = patois
     left = [w for s in out for w in s]
     if not [w for w in left if w not in _ENDS and w != ","]:
         raise TranslationError(f"{command.strip()!r} asks nothing now: " + "; ".join(notes[-2:]))

@@ -41,6 +41,10 @@ VERBS = {"V_PUT", "V_THROW", "V_TOGGLE", "V_STATE", "V_TRASH", "V_CHILL", "V_TID
 NEGATED_VERBS = {"V_TOUCH", "V_LEAVE"}
 #: where a thing of the fronted phrase lies, after its name ("the mug on the coffee table wash")
 WHERE = {"ON", "IN", "AT"}
+#: verbs that move a thing, and the words after them that say where to ("the doll on the sofa take to
+#: her bed": where it lies is where it comes from)
+MOVING = {"V_PUT", "V_THROW", "V_LEAVE"}
+TARGETS = {"TO", "IN", "ON", "INTO", "ONTO"}
 #: "as well" between the fronted phrase and its verb ("the mug also wash"): said after the thing
 AS_WELL = {"also", "too"}
 #: what may follow a verb whose object was fronted: a particle, a word of where, the clause's end
@@ -95,6 +99,16 @@ def _lacks_object(tags: list[Tag], v: int) -> bool:
     return v + 1 >= len(tags) or tags[v + 1].cls in LACKING
 
 
+def _where_as_source(phrase: list[Tag]) -> list[Tag]:
+    """The phrase with where its things lie ("the doll on the sofa") said as where they come from
+    ("from the sofa"), for a verb of moving with where to after it ("the doll on the sofa take to
+    her bed": take the doll from the sofa to her bed); where is only the last place of the phrase."""
+    k = max((j for j, t in enumerate(phrase) if t.cls in WHERE), default=None)
+    if k is None or not any(_named(t) for t in phrase[:k]):
+        return phrase
+    return phrase[:k] + [Tag("FROM", None, phrase[k].words)] + phrase[k + 1:]
+
+
 def fronted_objects(tags: list[Tag]) -> tuple[list[Tag], list[str]] | None:
     """The tags with each thing named before its verb moved after the verb, and the words moved
     ("butter put" read as "put butter"); None when there is none (module docstring)."""
@@ -115,6 +129,8 @@ def fronted_objects(tags: list[Tag]) -> tuple[list[Tag], list[str]] | None:
         takes = v < len(out) and (out[v].cls in VERBS or (negated and out[v].cls in NEGATED_VERBS))
         if takes and _lacks_object(out, v):
             said = " ".join(t.words for t in out[k:v + 1])
+            if out[v].cls in MOVING and v + 1 < len(out) and out[v + 1].cls in TARGETS:
+                phrase = _where_as_source(phrase)
             out[k:v + 1] = out[v - negated:v + 1] + phrase + out[end:end + also]
             moved.append(said)
         elif (v + 2 < len(out) and out[v].cls == "COMMA" and out[v + 1].cls in VERBS and out[v + 2].cls == "IT"

@@ -32,7 +32,7 @@ _sep: COMMA | END | @AND | @THEN | @BUT | @EXCL
       | desire
       | handling
 
-change: _vstate @UP? things @PIECES? via? exception? _here?
+change: _vstate (@UP | @OUT)? things @PIECES? via? exception? _here?
       | _vstate things @UP via? exception?
       | @V_CLEAN things via? exception?
       | @V_GIVE things @ACT

@@ -43,7 +43,7 @@ from pipflow.household.language.setaside import reads_as_word, without_asides
 from pipflow.household.language.tagger import owners_as_the, tag
 from pipflow.household.language.tokens import Tag
 from pipflow.language.asides import said
-from pipflow.language.characters import (accents_folded, declared_spellings, non_ascii_words, refuse_unread,
+from pipflow.language.characters import (accents_folded, declared_spellings, non_ascii_words, refuse_unread, turkish_i,
                                          without_expressions)
 from pipflow.language.listing import inline_numbering
 from pipflow.language.earley import ListLexer, earley_parser
@@ -91,6 +91,8 @@ def _parse_said(command: str, world: dict, notes: list[str]) -> list[dict]:
         notes.append(said(feelings))
     if not command.isascii():   # "the Québec cousins are coming": an accented word that can only be talk
         command, declared = declared_spellings(command, non_ascii_words(world, ("places", "objects")))
+        command, keyboard = turkish_i(command)
+        declared += keyboard
         command, accented = accents_folded(command, reads_as_word(world))
         notes += declared + accented
     refuse_unread(command, MARKS)   # a character this reader does not read is refused, never skipped

@@ -33,6 +33,7 @@ from __future__ import annotations
 import re
 
 from pipflow.errors import TranslationError
+from pipflow.household.language.dialect import TWO_OBJECT_VERBS
 from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
 from pipflow.household.language.names import home_words, per_world, world_phrases
 from pipflow.household.language.rewrites import CLOSING_PARTICLES, CONSUMED
@@ -40,13 +41,16 @@ from pipflow.household.language.tokens import PUNCT
 from pipflow.household.language.typos import typo_of, vocabulary
 from pipflow.household.language.whereabouts import BRING, POSTURE, clause_end, place_said
 from pipflow.language.asides import FUNCTION_WORDS, duration_at, near_operative
+from pipflow.language.english import common_word
 
 #: titles before a name ("Father Tom", "Mrs Patel", "Auntie Jo"; "father tom" typed in lower case)
 TITLES = {"father", "mrs", "mr", "ms", "miss", "dr", "doctor", "auntie", "aunty", "aunt", "uncle", "sister",
           "brother", "nurse", "lady", "sir"}
 #: words that name a person alone ("bring Grandad his tea", "the baby is asleep")
 KIN = {"grandad", "granddad", "grandpa", "grandma", "granny", "gran", "nan", "nana", "nanna", "grandmother",
-       "grandfather", "baby"}
+       "grandfather", "baby", "husband", "hubby", "wife", "son", "daughter", "grandson", "granddaughter",
+       "mum", "mom", "mummy", "mommy", "dad", "daddy", "children", "kids", "grandchildren", "grandkids",
+       "pickney", "pickneys"}
 #: pronouns that are a person; "her" only where an object is ("bring her the tea"); "them" and
 #: "they" are left to things ("put them away")
 PERSON_PRONOUNS = {"he", "she", "him", "hes", "shes"}   # "hes": he's, typed without its apostrophe
@@ -76,19 +80,35 @@ _OWNER = re.compile(r"^(?:the\s+)?(.+?)(?:['\u2019]s|(?<=s)['\u2019])\s")
 @per_world
 def owners(world: dict) -> dict[tuple[str, ...], list[tuple[str, ...]]]:
     """The people of the home as its own words name them, who own its things ("papa's mug", "ah
-    ma's bed", "jun hao's bag": papa, ah ma, jun hao), each with the names of the home that open
+    ma's bed", "jun hao's bag": papa, ah ma, jun hao; also without "'s": :func:`_owner_unmarked`), each with the names of the home that open
     with their words ("ah ma bed"), where those words name a thing and no person. A thing of the
     home is never an owner ("the fridge's door")."""
     index = world_phrases(world)
     found: set[tuple[str, ...]] = set()
+    unmarked: dict[tuple[str, ...], set[str]] = {}
     for table in (world.get("places") or {}, world.get("objects") or {}):
-        for entry in table.values():
+        for name, entry in table.items():
             for phrase in (entry.get("words") or []) if isinstance(entry, dict) else []:
                 m = _OWNER.match(str(phrase).strip().lower() + " ")
                 who = tuple(words_of(m.group(1))) if m else ()
                 if who and who not in index:
                     found.add(who)
+                elif not m and (kin := _owner_unmarked(str(phrase).strip())):
+                    unmarked.setdefault(kin, set()).add(name)
+    # an owner said without "'s": a kinship word, or a name (no English word) that opens the names
+    # of two things or more ("minjun bed", "minjun tumbler"); a word before one thing's name is as
+    # likely its make or its character ("elsa doll"), and an English word its kind ("winter ibul")
+    found |= {who for who, things in unmarked.items() if who not in index and (
+        who[0] in KIN or len(things) > 1 and not common_word(who[0]) and (who[0],) not in PHRASES)}
     return {who: [key for key in index if len(key) > len(who) and key[:len(who)] == who] for who in found}
+
+
+def _owner_unmarked(phrase: str) -> tuple[str, ...]:
+    """Who may own the thing a home's word names without "'s" ("minjun bed", "husband desk"): its
+    first word where more words follow, a word of letters (the caller keeps only names and kinship
+    words); () for a phrase of one word."""
+    words = phrase.lower().split()
+    return (words[0],) if len(words) > 1 and words[0].isalpha() else ()
 
 
 def owners_before_names(words: list[str], world: dict, notes: list[str]) -> list[str]:
@@ -143,8 +163,23 @@ def pronouns_as_owners(words: list[str], world: dict, notes: list[str]) -> list[
                 out[k:k + 1] = list(who)
                 k += len(who)
                 continue
+            if not whose and _owned_by_none(out, k, index, people):
+                # "her mood lamp" where the home has one mood lamp and no one's: whose says nothing
+                notes.append(f"'{out[k]}' before '{out[k + 1]}...': no one's own in this home; read as 'the'")
+                out[k] = "the"
         k += 1
     return out
+
+
+def _owned_by_none(words: list[str], k: int, index: dict, people: dict[tuple[str, ...], list[tuple[str, ...]]]) -> bool:
+    """Whether the possessive at ``k`` stands before a name of the home (one to three words) that no
+    one of the home owns by its words ("her mood lamp", where no "seoyeon mood lamp" is named), and
+    not after a verb that takes a person ("give her tea": to her)."""
+    if k and words[k - 1] in TWO_OBJECT_VERBS:
+        return False
+    said = next((tuple(words[k + 1:k + 1 + m]) for m in (3, 2, 1) if tuple(words[k + 1:k + 1 + m]) in index
+                 and k + m < len(words)), None)
+    return said is not None and not any(tuple(who) + said in index for who in people)
 
 
 def owner_at(words: list[str], k: int, people: dict[tuple[str, ...], list[tuple[str, ...]]]) -> int:

@@ -434,6 +434,17 @@ class Resolver:
             return {**sel, "count": 1}
         return None
 
+    def _the_counted(self, sel: dict, names: list[str], words: str, need: str | None) -> list[str]:
+        """ "wash the two plates": "the" with a count names every one of the things so called (that
+        the clause can act on), as many as said; where there are more or fewer, which is asked."""
+        if need:
+            req = CONDITIONS[need][2] if need in CONDITIONS else need
+            names = [n for n in names if req in entity(self.world, n)["properties"]]
+        if len(names) != sel["count"]:
+            raise TranslationError(f"'{words}': '{sel['words']}' asks for {sel['count']} of {len(names)} things "
+                                   f"called so ({', '.join(names) or 'none'}); say which")
+        return names
+
     def objects(self, things: list[dict], words: str, *, cond: str | None = None, prop: str | None = None,
                 exceptions: list[dict] | None = None) -> list[tuple[str, bool]]:
         """(name, named explicitly?) of every thing the selectors mean, less the exceptions said
@@ -441,6 +452,8 @@ class Resolver:
         out: list[tuple[str, bool]] = []
         for sel in things:
             names, implicit = self.select(sel, words, cond=cond, prop=prop)
+            if "count" in sel and implicit and sel.get("det") == "the":
+                names, implicit = self._the_counted(sel, names, words, cond or prop), False
             if "count" in sel and implicit:
                 raise TranslationError(f"'{words}': a count of '{sel['noun']['words']}' only makes sense with a "
                                        "place to gather them")

@@ -483,10 +483,16 @@ def _same_after(words: list[str], k: int) -> tuple[int, int, int] | None:
     said = end
     while said > start and words[said - 1] in CLOSING_PARTICLES:
         said -= 1
+    comma = 0
+    if said == end and end + 2 < len(words) and words[end] == "," and tuple(words[end + 1:end + 3]) in _SAME_AFTER_THING:
+        # "jaden bag on the settee, same thing": the "same" set off by a comma
+        comma = 1
+        words = words[:end] + words[end + 1:]
+        said = end = next((j for j in range(end, len(words)) if words[j] in PUNCT), len(words))
     tail = next((n for n in (3, 2, 1) if said - n > start and tuple(words[said - n:said]) in _SAME_AFTER_THING), 0)
     if not tail or (end < len(words) and words[end] not in (".", "!", ";")) or said - tail - start > 5:
         return None
-    return start, said - tail, end
+    return start, said - tail, end + comma
 
 
 #: particles and thanks that may close such a clause ("the tau kwa also same lor")
@@ -495,7 +501,8 @@ CLOSING_PARTICLES = {"lah", "leh", "lor", "ah", "hor", "meh", "pls", "please", "
 
 #: what says "that again" after the thing ("the tau kwa also same", "the pan the same")
 _SAME_AFTER_THING = {("same",), ("the", "same"), ("also", "same"), ("too", "same"), ("also", "the", "same"),
-                     ("same", "too"), ("same", "also"), ("as", "well")}
+                     ("same", "too"), ("same", "also"), ("as", "well"), ("same", "thing"), ("the", "same", "thing"),
+                     ("same", "same")}
 
 
 def _same_for_at(words: list[str], k: int) -> tuple[int, int, int] | None:

@@ -16,7 +16,7 @@ from pipflow.household.language.colloquial import colloquial
 from pipflow.household.language.corrections import corrected
 from pipflow.household.language.dialect import (bring_in, cut_as_switch, make_as_switch, on_off_as_verbs,
                                                 open_close_as_switch, particle_before_exception, put_on_as_switch,
-                                                scots_as_english, them_as_those)
+                                                patois_in_home, scots_as_english, them_as_those)
 from pipflow.household.language.headwords import named_again
 from pipflow.household.language.grammar import NOUN_DUAL
 from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
@@ -124,7 +124,8 @@ def owners_as_the(command: str, world: dict, notes: list[str]) -> str:
 def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: list[str]) -> list[str]:
     """The command's words with its colloquial forms, constructions and particles read as the
     grammar's words (each rewrite notes what it read)."""
-    words = scots_as_english(words_of(command), lambda w: known_word(w, index, vocab), notes)
+    words = patois_in_home(words_of(command), index, notes)
+    words = scots_as_english(words, lambda w: known_word(w, index, vocab), notes)
     words = where_as_name(one_as_kind(words, world, index, notes), index, notes, owners(world))
     words = owners_before_names(pronouns_as_owners(words, world, notes), world, notes)
     words = so_before_an_order(same_for(colloquial(corrected(words, notes), notes), notes), notes)

@@ -309,7 +309,7 @@ class GoalRules:
         parts = self.clause_parts(node)
         words, nps = parts.words, parts.nps
         robots_node = self.sub(node, "robots")[0]
-        sel = self.robots.read(robots_node, self.words(robots_node))
+        sel = self.robots.read(robots_node, self.robots_said(robots_node))
         self.transfer(node, nps, words)
         base = {"mode": "only", "robots": sel, "words": words}
         self.bind.append(base)

@@ -500,7 +500,7 @@ except_what: "ones" | "those" | "them" | "what" "is" | "any" | "what" "sits" | "
            | ("what" | "whatever") ("is" | "s") ("sitting" | "lying" | "left" | "stored" | "kept")
 
 // ---------------------------------------------------------------- ellipsis tails
-tail: places ("too" | "as" "well" | "also")                 -> t_too
+tail: places ("too" | "as" "well" | "also" | "same" "same"?) -> t_too
     | ("not" | "instead" "of" | "rather" "than") NUM       -> t_noop
     | "not" ("to" | "into" | "onto") places                 -> t_not_to
     | items from places                                  -> t_from

@@ -21,7 +21,7 @@ from pipflow.language.asides import (FUNCTION_WORDS, OPERATIVE, SUBJECTS, Clause
                                      leading_reason, said_talk, signature, trailing_adjunct, trailing_thanks,
                                      unmarked_statement)
 from pipflow.language.asterisk import star_corrections
-from pipflow.language.characters import (accents_folded, declared_spellings, non_ascii_words, refuse_unread,
+from pipflow.language.characters import (accents_folded, declared_spellings, non_ascii_words, refuse_unread, turkish_i,
                                          without_expressions)
 from pipflow.language.english import common_word
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS, is_number
@@ -33,7 +33,7 @@ from pipflow.warehouse.language.names import (CONTAINERS, KIND_WORDS, POSS_MARK,
                                               recognize)
 from pipflow.warehouse.language.reordered import (base_verb, count_after_item, destination_first, fronted_source,
                                                 item_as_subject, needs_doing, object_before_verb, on_as_to, place_first,
-                                                place_must_be, said_at, to_be_done)
+                                                place_must_be, said_at, to_be_done, topic_first, verb_last)
 from pipflow.warehouse.language.transcripts import places_taken_back, them_as_determiner
 from pipflow.warehouse.language.wordorder import left_dislocated, noun_adjuncts, numbered_siblings, unmarked_lists
 
@@ -42,6 +42,8 @@ MAX_COMMAND_CHARS = 4000
 #: digits in one count; a shelf never holds a trillion units, and huge numbers are a typo or an attack
 MAX_DIGITS = 9
 #: words that carry no meaning of their own in a command
+#: determiners that make a robot kind or tag said in the singular one robot ("the AGV", "our forklift")
+DEFINITE = frozenset({"the", "this", "that", "our", "your", "my", "their"})
 FILLERS = {"the", "please", "kindly", "units", "unit", "pieces", "piece", "boxes", "box", "crates", "oi", "oy",
            "qty", "fyi", "aye", "ken", "och", "prio", "graag", "toch",
            "crate", "cases", "case", "pcs", "pallets", "pallet", "x", "exactly", "precisely",
@@ -75,7 +77,9 @@ UNIT_WORDS = {"carton", "cartons", "roll", "rolls", "pack", "packs", "packet", "
               "totes", "drum", "drums", "tin", "tins", "jar", "jars", "sack", "sacks", "crates", "jug", "jugs",
               "sheet", "sheets", "length", "lengths", "coil", "coils", "tray", "trays", "pc",
               # the logistics abbreviations ("4 ctns", "2 plts"; "cx", Portuguese caixa and Spanish caja: box)
-              "ctn", "ctns", "plt", "plts", "cx", "cxs"}
+              "ctn", "ctns", "plt", "plts", "cx", "cxs",
+              # Turkish "koli" (carton), "palet"
+              "koli", "palet"}
 FILLERS |= UNIT_WORDS
 #: fillers that make the count after them a final count
 EXACT_WORDS = {"exactly", "precisely"}
@@ -444,7 +448,47 @@ def check_text(command: str) -> str:
         raise TranslationError(f"'{word.group(0) if word else m.group(0)}': the symbol "
                                f"'{m.group(0)}' is not read in commands; write it in words")
     text = re.sub(r"\bwhats\b", "what is", text, flags=re.IGNORECASE)  # "what's" typed without its apostrophe
+    text = re.sub(r"\b([A-Za-z0-9_-]+)['\u2019](" + "|".join(_CASE_SUFFIXES) + r")\b",
+                  lambda m: f"{m.group(1)} {_CASE_MARKS[_CASE_SUFFIXES[m.group(2).lower()]]}", text, flags=re.IGNORECASE)
     return re.sub(r"\b([A-Za-z0-9_-]+)['\u2019]s\b", _possessive, text)
+
+
+#: Turkish case endings set off from a name by an apostrophe, as Turkish writes them after proper
+#: nouns ("Rack A'dan": from rack A, "Rack B'ye": to rack B, "sevkiyat'ta": at sevkiyat), with the
+#: preposition each says; read by :func:`case_endings` where the name is a place of the world
+_CASE_SUFFIXES = {**dict.fromkeys(("dan", "den", "tan", "ten"), "from"), **dict.fromkeys(("ya", "ye", "a", "e"), "to"),
+                  **dict.fromkeys(("da", "de", "ta", "te"), "at")}
+_CASE_MARKS = {"from": "zzcasefrom", "to": "zzcaseto", "at": "zzcaseat"}
+
+
+def this_job_announced(toks: list[Tok]) -> list[Tok]:
+    """The tokens with "for this" before a colon read as "for this job" ("Use only tuggers for this:
+    the 6 tubes go to picking"): the colon announces the job the rule is for, as "for this one:"
+    does; "for this" elsewhere keeps its reading (the move just said, or asked)."""
+    out: list[Tok] = []
+    for k, t in enumerate(toks):
+        out.append(t)
+        if (t.kind == "word" and t.value == "this" and k and toks[k - 1].kind == "word" and toks[k - 1].value == "for"
+                and k + 1 < len(toks) and toks[k + 1].kind == "punct" and toks[k + 1].value == ":"):
+            out.append(Tok("word", "", "job"))
+    return out
+
+
+def case_endings(toks: list[Tok]) -> list[Tok]:
+    """The tokens with a Turkish case ending after a place ("Rack A'dan 4 silecek take out", "Rack
+    B'ye nobody goes") read as the preposition it is, before the place: "from rack A", "to rack B",
+    "at P". After anything else the ending is kept as written, and refused where it is unread."""
+    marks = {mark: prep for prep, mark in _CASE_MARKS.items()}
+    out: list[Tok] = []
+    for t in toks:
+        prep = marks.get(str(t.value)) if t.kind == "word" else None
+        if prep is None:
+            out.append(t)
+        elif out and out[-1].kind == "name" and out[-1].of == "shelf":
+            out[-1:] = [Tok("word", prep, prep), out[-1]]
+        else:
+            out.append(Tok("word", "'" + prep, "'" + prep))
+    return out
 
 
 def _name_words(world: dict) -> set[str]:
@@ -565,6 +609,9 @@ REQUEST_FRAMES = (("would", "it", "be", "possible", "to"), ("is", "it", "possibl
                   # Hong Kong and Singapore English "can help (to) move ...", "pls help move ...",
                   # "help to move ...": asking for the verb that follows
                   ("can", "help", "to"), ("can", "help"), ("help", "to"), ("help",),
+                  # "please help me move ...", "can you help me (to) ...": the same, with who is helped
+                  *((*ask, "help", who, *to) for ask in ((), ("can",), ("can", "you"), ("could", "you"))
+                    for who in ("me", "us") for to in (("to",), ())),
                   # "pls arrange for OB to have 10 X", "arrange OB to have 10 X": the order follows
                   ("arrange", "for"), ("arrange",),
                   # a request passed on ("I've been asked to get returns up to 20", "I've been told
@@ -895,10 +942,13 @@ def dropped_object(toks: list[Tok]) -> list[Tok]:
     """ "take 4 chains from P and put in Q": a putting verb that opens a clause joined by "and" /
     "then" and has a place right after its preposition, but no object, after a clause that
     counted something. Its object is what was taken, as if said "put them"; "them" then finds
-    what it stands for as it always does (and is refused where it finds nothing)."""
+    what it stands for as it always does (and is refused where it finds nothing). Also "dont
+    touch" alone after a clause that keeps a place (:func:`_touch_alone`): "dont touch it"."""
     out: list[Tok] = []
     for k, t in enumerate(toks):
         out.append(t)
+        if _touch_alone(toks, k):
+            out.append(Tok("word", "", "it"))
         if not (t.kind == "word" and t.value in _PUTTING and k > 1 and k + 2 < len(toks)):
             continue
         joined = toks[k - 1].value in ("and", "then")
@@ -908,6 +958,19 @@ def dropped_object(toks: list[Tok]) -> list[Tok]:
                 and place.kind == "name" and place.of == "shelf" and any(x.kind == "num" for x in toks[:k])):
             out.append(Tok("word", "", "them"))
     return out
+
+
+def _touch_alone(toks: list[Tok], k: int) -> bool:
+    """Whether ``toks[k]`` is the "touch" of a clause that is only "dont touch", said right after a
+    clause that keeps a place as it is ("shipping keep as it is, dont touch": don't touch it, the
+    place kept); "it" then finds what it stands for as it always does."""
+    def word(j: int, *values: str) -> bool:
+        return 0 <= j < len(toks) and toks[j].kind == "word" and toks[j].value in values
+    if not (word(k, "touch") and word(k - 1, "dont") and k >= 3 and toks[k - 2].kind == "punct"
+            and (k + 1 == len(toks) or toks[k + 1].kind == "punct")):
+        return False
+    start = max((j for j in range(k - 2) if toks[j].kind == "punct"), default=-1) + 1
+    return word(start, "keep", "leave")
 
 
 def corrected_later(toks: list[Tok]) -> list[Tok]:
@@ -1092,6 +1155,9 @@ class Lexicon:
 
     def __init__(self, world: dict, keywords: dict[str, str]):
         self.world = world
+        #: robot kinds, tags and name stems said after "the" / "our" / ... in the command read last
+        #: (:meth:`_definite_groups`), normalized: "the forklift" is one robot, "forklift" the kind
+        self.definite_said: set[str] = set()
         self.keywords = keywords  # keyword text -> terminal name
         # the grammar's own words are English, never a misspelt name ("haul" is no hauler1)
         # superlatives are words of robot rules, never a misspelt name ("strongest" is no string_set)
@@ -1187,6 +1253,16 @@ class Lexicon:
                 text = re.sub(r"\b" + r"[\s_-]+".join(map(re.escape, parts)) + r"(e?s)?\b",
                               lambda m: label.replace(" ", "_") + (m.group(1) or ""), text, flags=re.IGNORECASE)
         return text
+
+    def _definite_groups(self, toks: list[Tok]) -> list[Tok]:
+        """The tokens as they are, noting in :attr:`definite_said` each robot kind, tag or name stem
+        said after "the", "this", "our", ...: the determiner is a filler the grammar drops, but it
+        says one robot is meant where the kind said bare ("forklift only") is the kind
+        (:meth:`~.robots.RobotSelector._check_one`). A word said both ways counts as said with it."""
+        self.definite_said = {normalize(nxt.text) for t, nxt in zip(toks, toks[1:])
+                              if t.kind == "word" and str(t.value) in DEFINITE and nxt.kind in ("word", "kind") and nxt.text
+                              and (self._group(nxt.text) is not None or self.robot_stem(nxt.text) is not None)}
+        return toks
 
     def _group(self, text: str) -> tuple[str, str] | None:
         """("RKIND", kind) or ("RTAG", tag) when the word names robots by kind or tag."""
@@ -1348,6 +1424,8 @@ class Lexicon:
         as ``trimmed``. :attr:`tokens` keeps the recognised tokens, :meth:`position` finds one."""
         # "the truck from Québec is late": an accented word that can only be talk, spelled without accents
         command, declared = declared_spellings(command, self._declared)
+        command, keyboard = turkish_i(command)
+        declared += keyboard
         command, accented = accents_folded(command, self._reads)
         radio = transmission(command, self._names_exactly, lambda w: w in self._robots, is_number)
         if radio is not None:   # "Yard control to all units. ... Over.": the voice procedure set aside
@@ -1385,10 +1463,12 @@ class Lexicon:
                 continue
             fixed.append(t)
         verbs = {w for w in self.keywords if " " not in w} | set(VERB_LEXICON)
-        toks = them_as_determiner(read_counts(_split_hyphens(fixed, self.keywords)))
+        toks = self._definite_groups(them_as_determiner(read_counts(_split_hyphens(
+            this_job_announced(case_endings(fixed)), self.keywords))))
         toks, framed = without_request_frames(places_taken_back(toks), verbs)
         toks = item_as_subject(fronted_source(to_be_done(needs_doing(by_as_at(toks), verbs), verbs), verbs))
-        toks = on_as_to(object_before_verb(place_first(count_after_item(destination_first(place_must_be(toks))))))
+        toks = on_as_to(object_before_verb(topic_first(place_first(count_after_item(destination_first(
+            place_must_be(verb_last(toks))))))))
         toks = lexicon_verbs(quantity_phrases(addressed_anyone(stative_having(toks)), self.keywords), self.keywords)
         toks = put_back_after_its_object(counts_sent_from_a_topic(corrected(toks)))
         toks = dropped_object(corrected_later(without_particles(toks)))

@@ -304,6 +304,9 @@ def object_before_verb(toks: list[Tok]) -> list[Tok]:
 #: verbs that change what a place holds, said after the place and its things ("bay 5 chargers
 #: double it", "zone A dates reduce by a quarter", "QC area clear everything")
 _CHANGING = frozenset({"double", "triple", "halve", "reduce", "cut", "increase", "empty", "clear"})
+#: words after such a verb that add nothing to it: "make" / "do" said last, as Turkish closes a verb
+#: with "yap" ("rack B silecek double make"), and when ("rack A dont touch today")
+_SAID_LAST = frozenset({"make", "do", "today", "now", "tonight"})
 #: a pronoun taking up what was said first ("... double it"), or all of a place ("clear everything")
 _RESUMING = frozenset({"it", "them"})
 _EVERYTHING = frozenset({"everything", "anything", "all"})
@@ -315,7 +318,8 @@ def place_first(toks: list[Tok]) -> list[Tok]:
     by a quarter" is "reduce dates on zone A by a quarter", "zone A dates send to bay 3" is "send
     dates from zone A to bay 3", "zone B chargers dont touch" is "dont touch chargers on zone B"; "QC
     area clear everything" is "clear QC area", "zone B dont touch anything" is "dont touch zone B";
-    "rack 1 LCD make 40 total" is "rack 1 should have 40 LCD"; "shipping add 5 cable more" is "add 5
+    "shipping keep as it is" is "keep shipping as it is";
+    "rack 1 LCD make 40 (box) total" and "rack 2 pin total 30 box" are "rack 1 should have 40 LCD"; "shipping add 5 cable more" is "add 5
     cable more to shipping", "rack 1 send ten cable back to receiving" is "send ten cable back to
     receiving from rack 1" (a count after the verb, and where to with a verb of moving). Only at a
     clause's start, the place first, then its products (no count: a count is read by
@@ -334,6 +338,10 @@ def _place_first(clause: list[Tok]) -> list[Tok] | None:
     negated = _word_in(clause, j, _SAID_NOT)
     v = j + negated
     rest = clause[v + 1:]
+    said_last = _word_in(clause, v, _CHANGING | _KEEPING) and bool(rest) and all(
+        _word_in(rest, n, _SAID_LAST) for n in range(len(rest)))
+    if said_last:   # "rack B silecek double make" (Turkish "yap"), "rack A dont touch today"
+        rest = []
     place, things = clause[:1], [t for t in clause[1:j] if t.value != POSS_MARK]
     moving = _word_in(clause, v, _MOVING)
     if things and (_word_in(clause, v, _CHANGING | _KEEPING) or moving and not any(t.kind == "num" for t in rest)):
@@ -344,16 +352,25 @@ def _place_first(clause: list[Tok]) -> list[Tok] | None:
         return clause[j:v + 1] + things + [Tok("word", join, join)] + place + rest
     if not things and _word_in(clause, v, _CHANGING | _KEEPING) and len(rest) == 1 and _word_in(rest, 0, _EVERYTHING):
         return clause[j:v + 1] + place
-    if things and _word_in(clause, v, ("make",)) and rest[:1] and rest[0].kind == "num" and (
-            len(rest) == 1 or len(rest) == 2 and _word_in(rest, 1, ("total",))):
-        # "rack 1 LCD make 40 total": rack 1 should have 40 LCD
-        return place + [Tok("word", "should", "should"), Tok("word", "have", "have"), rest[0]] + things
+    if not things and not negated and _word_in(clause, v, ("fill",)) and _word_in(rest, 0, ("with", "up")):
+        return clause[v:v + 1] + place + rest   # "mezzanine fill with silecek": fill mezzanine with silecek
+    if not things and not negated and _word_in(clause, v, ("keep", "leave")) and rest \
+            and not any(t.kind in ("num", "name") for t in rest):
+        # "shipping keep as it is", "rack 1 leave as is": keep shipping as it is
+        return clause[v:v + 1] + place + rest
+    if things and not negated and _word_in(clause, v, ("make", "total")) and rest[:1] and rest[0].kind == "num":
+        # "rack 1 LCD make 40 (box) (total)", "rack 2 pin total 30 box": rack 1 should have 40 LCD
+        k = 1 + _word_in(rest, 1, _TOPIC_UNITS)
+        k += _word_in(rest, k, ("total",))
+        return place + [Tok("word", "should", "should"), Tok("word", "have", "have"), rest[0]] + things + rest[k:]
     if not things and not negated and any(t.kind == "num" for t in rest):
         if _word_in(clause, v, ("add",)):    # "shipping add 5 cable more": add them to shipping
             return clause[v:v + 1] + rest + [Tok("word", "to", "to")] + place
         if moving and any(_word_in(rest, n, ("to",)) for n in range(len(rest))):
             # "rack 1 send ten cable back to receiving": from rack 1
             return clause[v:v + 1] + rest + [Tok("word", "from", "from")] + place
+    if said_last and not things:   # "asma kat empty make", "rack A dont touch today": as said without them
+        return clause[v:v + 1] + place if not negated else clause[:v + 1]
     return None
 
 
@@ -478,3 +495,184 @@ def place_must_be(toks: list[Tok]) -> list[Tok]:
         out.append(toks[k])
         k += 1
     return out
+
+
+#: unit words after a count in a topic said first ("9 box", "2 pallet"): no thing of their own
+_TOPIC_UNITS = _UNITS | {"box", "boxes", "carton", "cartons", "pack", "packs", "crate", "crates", "koli", "palet"}
+#: where a place said in a topic stands: "LCD from rack 1", "LCD at shipping", "pin in rack 1"
+_TOPIC_PLACE_WORDS = frozenset({"from", "at", "in", "on"})
+#: what may say where to after a verb of moving ("to", "back to", "into"; "back iqc": back to iqc)
+_WHERE_TO = frozenset({"to", "into", "onto"})
+
+
+def topic_first(toks: list[Tok]) -> list[Tok]:
+    """The tokens with a clause that says its things, their place and their count before a verb of
+    moving read in the grammar's order, as speakers of topic-first languages (Vietnamese, Chinese,
+    Korean, Turkish) order it: "6 cable receiving bring to shipping" is "bring 6 cable from
+    receiving to shipping", "rack 2 sac 9 box move to receiving" is "move 9 sac from rack 2 to
+    receiving", "LCD from rack 1 send 4 box to shipping" is "send 4 LCD from rack 1 to shipping",
+    "3 box LCD NG area bring back iqc" is "bring 3 LCD from NG area back to iqc"; and "LCD at
+    shipping double it" is "double LCD on shipping" (a verb that changes what a place holds); "iqc
+    and NG area swap the cable" is "swap the cable between iqc and NG area".
+    Only at a clause's start, with one product, one place (where the things are) and at most one
+    count, before the verb or right after it; a verb of moving must then say where to. Anything
+    else is left as said."""
+    return each_clause(toks, _topic_first, _clause_opens)
+
+
+#: verbs of exchanging what two places hold ("iqc and NG area swap the cable")
+_SWAPPING = frozenset({"swap", "exchange", "switch", "interchange"})
+
+
+def _two_places_swap(clause: list[Tok]) -> list[Tok] | None:
+    """ "iqc and NG area swap the cable (only)" as "swap the cable between iqc and NG area", "rack 1
+    and rack 2 swap everything" as "swap everything between rack 1 and rack 2": the two places
+    first, then the verb and one product (or everything); "only" after the product says no more
+    than the swap of that product does, and goes."""
+    if not (_name_at(clause, 0, "shelf") and _word_in(clause, 1, ("and",)) and _name_at(clause, 2, "shelf")
+            and _word_in(clause, 3, _SWAPPING)):
+        return None
+    rest = clause[4:]
+    rest = rest[1:] if _word_in(rest, 0, ("the",)) else rest
+    return _swap_of(clause[3], rest, clause[:3])
+
+
+def _swap_said_after(clause: list[Tok]) -> list[Tok] | None:
+    """ "iade and sevkiyat akü swap", "rack A and rack B everything change places": the two places,
+    then the product (or everything), then the verb ("swap", "change places") closing the clause."""
+    if not (_name_at(clause, 0, "shelf") and _word_in(clause, 1, ("and",)) and _name_at(clause, 2, "shelf")):
+        return None
+    clause = [t for t in clause if t.value not in (POSS_MARK, "please")]   # "sevkiyat akü": sevkiyat's akü
+    end = len(clause) - (2 if said_at(clause, len(clause) - 2, ("change", "places")) else 1)
+    if end < 4 or not (end == len(clause) - 2 or _word_in(clause, end, _SWAPPING)):
+        return None
+    verb = Tok("word", " ".join(t.text for t in clause[end:]), "swap")
+    return _swap_of(verb, clause[3:end], clause[:3])
+
+
+def _swap_of(verb: Tok, rest: list[Tok], places: list[Tok]) -> list[Tok] | None:
+    """"<verb> <the product or everything> between <the two places>", from what was said of it."""
+    if len(rest) == 2 and _name_at(rest, 0, "product") and _word_in(rest, 1, ("only",)):
+        rest = rest[:1]
+    if not (len(rest) == 1 and (_name_at(rest, 0, "product") or _word_in(rest, 0, _EVERYTHING))):
+        return None
+    what = rest[0] if rest[0].kind == "name" else Tok("word", rest[0].text, "everything")
+    return [verb, what, Tok("word", "between", "between"), *places]
+
+
+def _topic_first(clause: list[Tok]) -> list[Tok] | None:
+    """:func:`topic_first` of one clause, or None."""
+    swapped = _two_places_swap(clause) or _swap_said_after(clause)
+    if swapped is not None:
+        return swapped
+    products: list[Tok] = []
+    places: list[Tok] = []
+    counts: list[Tok] = []
+    j = 0
+    while j < len(clause):
+        if _name_at(clause, j, "product"):
+            products.append(clause[j])
+        elif _name_at(clause, j, "shelf"):
+            places.append(clause[j])
+        elif _word_in(clause, j, _TOPIC_PLACE_WORDS) and _name_at(clause, j + 1, "shelf") and j:
+            places.append(clause[j + 1])
+            j += 1
+        elif clause[j].kind == "num":
+            counts.append(clause[j])
+            j += _word_in(clause, j + 1, _TOPIC_UNITS)
+        elif not _word_in(clause, j, (POSS_MARK, "the")):
+            break
+        j += 1
+    if len(products) != 1 or len(places) != 1 or len(counts) > 1 or j == len(clause):
+        return None
+    verb, rest = clause[j], clause[j + 1:]
+    if _word_in(clause, j, _CHANGING) and not counts:
+        rest = rest[1:] if _word_in(rest, 0, _RESUMING) else rest
+        return [verb, *products, Tok("word", "on", "on"), *places, *rest]
+    if not _word_in(clause, j, _MOVING - {"divide", "split", "distribute"}):
+        return None
+    if rest and rest[0].kind == "num":   # "LCD from rack 1 send 4 box to shipping"
+        if counts:
+            return None
+        counts, rest = [rest[0]], rest[1 + _word_in(rest, 1, _TOPIC_UNITS):]
+    back = _word_in(rest, 0, ("back",))
+    if back and _word_in(clause, j, ("put",)):
+        return None   # "X from P put back Q": read by the lexicon's put_back_after_its_object
+    if back and _name_at(rest, 1, "shelf"):   # "bring back iqc": back to iqc
+        rest = [rest[0], Tok("word", "", "to"), *rest[1:]]
+    if not (_word_in(rest, back, _WHERE_TO) and _name_at(rest, back + 1, "shelf")):
+        return None
+    if any(t.kind == "num" for t in rest):
+        return None
+    return [verb, *counts, *products, Tok("word", "from", "from"), *places, *rest]
+
+
+#: modals and verbs that close a clause of a wanted count said verb last ("Rack A 10 oil filter
+#: should be", "Sevkiyat 25 akü must have", "Rack B balata maximum 3 should stay")
+_LAST_MODALS = frozenset({"should", "must", "shall"})
+_LAST_VERBS = frozenset({"be", "have", "stay", "remain"})
+#: words that may stand in such a clause's middle besides its count and product: bounds and sums
+_AMOUNT_WORDS = frozenset({"minimum", "maximum", "min", "max", "at", "least", "most", "between", "and", "more",
+                           "less", "fewer", "than", "times", "double", "triple", "half", "the", "only", "exactly"})
+#: the words before "place" that make it every place ("every place minimum 2 X must be")
+_EVERY = frozenset({"every", "each", "all"})
+_PLACE_WORDS = frozenset({"place", "places", "location", "locations", "shelf", "shelves", "rack", "racks"})
+
+
+def verb_last(toks: list[Tok]) -> list[Tok]:
+    """The tokens with a clause said verb last, as Turkish, Korean and Japanese order it, read in the
+    grammar's order: a wanted count, "Rack A 10 oil filter should be", "Dispatch minimum 8 akü must
+    be", "Sevkiyat 25 akü must have", "Rack B balata maximum 3 should stay", "Every place minimum 2
+    akü must be", as "<place> should have <amount> <product>"; a verb of moving said last after
+    where to, "5 koli hava filtresi from rack B to dispatch carry", "rack B 6 oil filter to sevkiyat
+    take", as said before where to (then read by :func:`topic_first`). Only at a clause's start,
+    with one place and one product and nothing else but amounts; anything else is left as said."""
+    return each_clause(toks, _verb_last, _clause_opens)
+
+
+def _verb_last(clause: list[Tok]) -> list[Tok] | None:
+    """:func:`verb_last` of one clause, or None."""
+    if len(clause) < 3:
+        return None
+    removed = _removed_last(clause)
+    if removed is not None:
+        return removed
+    if _word_in(clause, len(clause) - 1, _MOVING) and not any(_word_in(clause, j, _MOVING) for j in range(len(clause) - 1)):
+        to = max((j for j in range(len(clause) - 2) if _word_in(clause, j, _WHERE_TO)), default=None)
+        if to is None or to + 3 != len(clause) or not _name_at(clause, to + 1, "shelf"):
+            return None
+        return clause[:to] + clause[-1:] + clause[to:to + 2]
+    last = len(clause) - 1
+    k = last - 1 if _word_in(clause, last, _LAST_VERBS) and _word_in(clause, last - 1, _LAST_MODALS) else \
+        last if _word_in(clause, last, _LAST_MODALS) else None
+    if k is None:
+        return None
+    if _name_at(clause, 0, "shelf"):
+        place, j = clause[:1], 1
+    elif _word_in(clause, 0, _EVERY) and _word_in(clause, 1, _PLACE_WORDS):
+        place, j = clause[:2], 2
+    else:
+        return None
+    middle = [t for t in clause[j:k] if t.value != POSS_MARK]   # "Rack B balata": rack B's balata
+    products = [t for t in middle if _name_at([t], 0, "product")]
+    if len(products) != 1 or not any(t.kind == "num" for t in middle) or not all(
+            t.kind == "num" or t is products[0] or _word_in([t], 0, _AMOUNT_WORDS | _TOPIC_UNITS) for t in middle):
+        return None
+    amount = [t for t in middle if t is not products[0]]
+    return [*place, Tok("word", clause[k].text, "should"), Tok("word", "", "have"), *amount, products[0]]
+
+
+def _removed_last(clause: list[Tok]) -> list[Tok] | None:
+    """ "Rack B 10 hava filtresi take out", "rack A 4 silecek take away": a place, a count and a
+    product, then "take out" / "take away" / "remove" closing the clause, as "take out 10 hava
+    filtresi from rack B"; None for anything else."""
+    n = 2 if said_at(clause, len(clause) - 2, ("take", "out")) or said_at(clause, len(clause) - 2, ("take", "away")) \
+        else 1 if _word_in(clause, len(clause) - 1, ("remove",)) else 0
+    topic = [t for t in clause[:len(clause) - n] if t.value != POSS_MARK and not _word_in([t], 0, _TOPIC_UNITS)]
+    topic = topic[1:] if _word_in(topic, 0, ("from",)) else topic   # "Rack A'dan 4 silecek take out": from rack A
+    if not n or len(topic) != 3 or not _name_at(topic, 0, "shelf"):
+        return None
+    count, item = (topic[1], topic[2]) if topic[1].kind == "num" else (topic[2], topic[1])
+    if count.kind != "num" or not _name_at([item], 0, "product"):
+        return None
+    return [*clause[len(clause) - n:], count, item, Tok("word", "from", "from"), topic[0]]

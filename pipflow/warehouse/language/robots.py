@@ -10,7 +10,7 @@ from lark import Token, Tree
 
 from pipflow.errors import Refusal, TranslationError
 from pipflow.language.spelling import normalize, split_digits
-from pipflow.warehouse.language.lexicon import SUPERLATIVES
+from pipflow.warehouse.language.lexicon import DEFINITE, SUPERLATIVES
 from pipflow.warehouse.language.names import NameIndex, stem_groups
 
 SUPER_WORDS = set(SUPERLATIVES)
@@ -105,12 +105,15 @@ class RobotSelector:
         return {"names": members}
 
     def _check_one(self, sel: dict, words: str, said_as: str | None = None) -> None:
-        """ "the AGV" (a kind or tag said in the singular, with no "all" / "any" / "a") names one
-        robot: where the world has several of it, which one is not guessed (nor that all are
-        meant); "the AGVs", "any AGV", "AGV crew" are the group."""
-        said = [w for w in words.lower().replace("-", " ").split() if w.isalpha()]
-        if not said or set(said) & GROUP_WORDS:
-            return
+        """ "the AGV" (a kind or tag said in the singular after "the", "this", "our", ..., with no
+        "all" / "any" / "a") names one robot: where the world has several of it, which one is not
+        guessed (nor that all are meant); "the AGVs", "any AGV", "AGV crew" are the group, and so is
+        a kind said bare, with no determiner ("forklift only", "AMR dont touch LCD"), as a sign or a
+        learner of English without plurals says it. ``words`` holds the determiner said before the
+        group (:meth:`~.lexicon.Lexicon._definite_groups`)."""
+        said = [w for w in words.lower().replace("-", " ").replace("_", " ").split() if w.isalpha()]
+        if not said or set(said) & GROUP_WORDS or not set(said) & DEFINITE:
+            return   # "forklift only", "AMR dont touch LCD": a kind said bare is the kind, as on a sign
         # "robots of night_shift": the noun before "of" is the one said in the plural or not
         noun = said[said.index("of") - 1] if "of" in said[1:] else said[-1]
         value = said_as if said_as is not None else str(next(iter(sel.values())))

@@ -37,7 +37,7 @@ class RuleScope:
         robots_node = self.sub(node, "robots")
         if not robots_node:
             raise TranslationError(f"{quote(words)}: names no robot")
-        sel = self.robots.read(robots_node[0], self.words(robots_node[0]))
+        sel = self.robots.read(robots_node[0], self.robots_said(robots_node[0]))
         if kind == "rule_permission":
             raise TranslationError(f"cannot tell whether {quote(words)} requires or forbids the robots "
                                    f"(a permission restricts nothing: say 'only ...' or '... must not ...')")

@@ -132,6 +132,17 @@ class SentenceReader(GoalRules, TailRules, RuleScope, Interpreter):
             return ""
         return " ".join(s.text for s in self.lexed.source[min(pos):max(pos) + 1] if s.text).replace(" zzposs", "'s")
 
+    def robots_said(self, node: Tree, addressed: bool = False) -> str:
+        """The words of a group of robots, with "the" before them where a determiner was said ("the
+        forklift": :attr:`~.lexicon.Lexicon.definite_said`), which the grammar drops: "the
+        forklift" is one robot, "forklift" alone, as on a sign, the kind. Robots ``addressed``
+        ("Tugger, take 4 X ...") are called as one calls a person: a kind said so in the singular
+        is one robot, as with "the"."""
+        said = self.words(node)
+        definite = addressed or bool(said) and (normalize(said) in self.lex.definite_said
+                                                or normalize(said.split()[0]) in self.lex.definite_said)
+        return ("the " if definite else "") + said
+
     def toks(self, node: Tree, kind: str) -> list[Token]:
         return [t for t in node.scan_values(lambda v: isinstance(v, Token) and v.type == kind)]
 
@@ -743,7 +754,7 @@ class SentenceReader(GoalRules, TailRules, RuleScope, Interpreter):
             return
         elif d == "addressed_appos":
             robots_node = self.sub(node, "robots")[0]
-            sel = self.robots.read(robots_node, self.words(robots_node))
+            sel = self.robots.read(robots_node, self.robots_said(robots_node, addressed=True))
             said = [t for t in self.toks_any(node) if t.type in ("RKIND", "RTAG")][0]
             self.robots.check_apposition(sel, said.type, str(said.value), self.words(node))
             goal = next(c for c in node.children if isinstance(c, Tree) and c.data.startswith("g_"))
@@ -751,14 +762,14 @@ class SentenceReader(GoalRules, TailRules, RuleScope, Interpreter):
             self._rule_for(sel, "only", [], self.words(node))
         elif d == "addressed":
             robots_node = self.sub(node, "robots")[0]
-            sel = self.robots.read(robots_node, self.words(robots_node))
+            sel = self.robots.read(robots_node, self.robots_said(robots_node, addressed=True))
             before = len(self.statements)
             goal = next(c for c in node.children if isinstance(c, Tree) and c.data.startswith("g_"))
             self.visit(goal)
             self._rule_for(sel, "only", self.statements[before:], self.words(node))
         elif d in ("scoped_only", "scoped_only_after", "scoped_never_after", "scoped_never_before"):
             robots_node = self.sub(node, "robots")[0]
-            sel = self.robots.read(robots_node, self.words(robots_node))
+            sel = self.robots.read(robots_node, self.robots_said(robots_node))
             goal = next(c for c in node.children if isinstance(c, Tree) and c.data.startswith("g_"))
             self.visit(goal)
             mode = "never" if d in ("scoped_never_after", "scoped_never_before") else "only"

@@ -1,0 +1,22 @@
+"""Jamaican Creole (patois) function words, as typed in Jamaica and its diaspora ("put di sorrel
+pon di table", "tek it outa di freezer", "di plate dem", "mi need fi pack it"): each read as the
+English word the grammars have. Read only in a command that uses at least two of them
+(:data:`MARKERS`) or one that is no English word (:data:`STRONG_MARKERS`), so a single "den" or
+"dat" in English stays as typed, and only where the word is no name of the world's things alone."""
+from __future__ import annotations
+
+#: patois word -> the English word(s); "mi", "dem", "fi", "him" depend on what follows (the reader)
+PATOIS = {"di": "the", "de": "the", "pon": "on", "inna": "in", "ina": "in", "eena": "in", "outa": "out of",
+          "offa": "off", "den": "then", "dat": "that", "dis": "this", "tek": "take", "yuh": "you", "unu": "you",
+          "nuh": "do not", "nah": "not", "cyaan": "can not", "caan": "can not", "ting": "thing", "tings": "things",
+          "everyting": "everything", "anyting": "anything", "nutten": "nothing", "likkle": "little", "seh": "say",
+          "wid": "with", "bout": "about", "cause": "because", "fimi": "for me"}
+#: words that show a command is in patois: two different ones and the map applies
+MARKERS = frozenset({"di", "pon", "inna", "dem", "fi", "mi", "nuh", "tek", "weh", "deh", "cyaan", "yuh", "dat",
+                     "den", "outa", "tings", "ting", "unu"})
+#: markers that are no English word: one of them alone is enough ("put it back pon him study desk")
+STRONG_MARKERS = frozenset({"pon", "inna", "cyaan", "outa", "tek", "yuh", "nuh", "fi", "unu", "weh"})
+#: words after "fi" that make it "for" (who or what for: "fi mi", "fi di children"); before
+#: anything else "fi" is "to" ("mi need fi pack it")
+FOR_WHOM = frozenset({"mi", "di", "de", "dem", "him", "yuh", "unu", "we", "she", "he", "dat", "dis", "me", "the",
+                      "my", "her", "his", "them", "you"})
