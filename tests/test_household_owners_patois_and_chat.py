@@ -4,7 +4,7 @@ on sofa take to his bed"), a thing's place said with it before its verb (where i
 Korean chat's "ㅠㅠ", "ㅋㅋ", "please~" and "Fighting!", "after washing," (then), Jamaican Creole's
 function words ("tek di cup outa di sink", "di plate dem", "mi cup", "pon"), "yuh hear?", "wash
 out", "the two plates" where the home has two, "when it hot" (the copula left out) and a
-condition said in Creole. In a house of our own, through the real reader; each rule with what
+condition said in Creole; a number written into a word (Arabizi, pair WW) is refused. In a house of our own, through the real reader; each rule with what
 stays refused."""
 from __future__ import annotations
 
@@ -89,3 +89,15 @@ def test_read_as_the_plain_order(house: dict, said: str, plain: str) -> None:
 def test_what_stays_refused(house: dict, said: str) -> None:
     with pytest.raises(PipflowError):
         translate(said, house)
+
+
+@pytest.mark.parametrize("said", ["wash the cup 5alas", "7oto the cup 3al table", "wash the cup e5salo"])
+def test_a_number_written_into_a_word_is_never_a_count(house: dict, said: str) -> None:
+    """Arabizi writes digits for letters ("3al": on, "5alas": done); split from its word, the digit
+    would be read as a count of what follows. Refused, quoting the word."""
+    with pytest.raises(PipflowError, match="number written into a word"):
+        translate(said, house)
+
+
+def test_a_time_or_ordinal_written_with_its_number_is_no_such_word(house: dict) -> None:
+    assert goal("wash the cup, guests come at 8pm", house) == goal("wash the cup", house)

@@ -6,7 +6,9 @@ places before a swap ("rack A and rack B cable swap", "... everything change pla
 case endings ("Rack A'dan", "rack B'ye"), the Turkish keyboard's "ı" and "İ", a robot kind said
 bare as a kind ("forklift only") but never when a robot is called by it ("Tugger, ..."), "for
 this:" before the job it announces, "please help me ...", "total N", "P same same", "P keep as it
-is, dont touch". In a world of our own (a phone-parts depot), through the real reader; each rule
+is, dont touch"; and, from pair WW's Russian English (after its first measurement), "on" / "in" for
+where to, "P do empty", "in P is need", "change by places", Cyrillic letters drawn as Latin ones.
+In a world of our own (a phone-parts depot), through the real reader; each rule
 with what stays as said or refused."""
 from __future__ import annotations
 
@@ -62,6 +64,11 @@ def _same(said: str, plain: str) -> None:
      "move 2 cable from intake to rack B, keep outbound as it is"),
     ("please help me move 3 cable from intake to outbound", "move 3 cable from intake to outbound"),
     ("move 3 cable from intake to outbound giup anh nhé", "move 3 cable from intake to outbound"),
+    ("rack A cable half of them send to outbound", "send half of the cable from rack A to outbound"),
+    ("intake cable all to rack B", "move all the cable from intake to rack B"),
+    ("From intake 4 cable and 2 adapter to outbound", "move 4 cable and 2 adapter from intake to outbound"),
+    ("10 box cable from rack A divide equally between intake and outbound",
+     "divide 10 cable from rack A evenly between intake and outbound"),
 ])
 def test_the_topic_said_first(said: str, plain: str) -> None:
     _same(said, plain)
@@ -75,6 +82,9 @@ def test_the_topic_said_first(said: str, plain: str) -> None:
     ("rack B screen maximum 2 should stay", "rack B should have at most 2 screen"),
     ("hold area screen between 1 and 2 box should be", "the hold area should have between 1 and 2 screen"),
     ("every place minimum 1 adapter must be", "every place should have at least 1 adapter"),
+    ("hold area screen maximum 2 box only", "the hold area should have at most 2 screen"),
+    ("all location adapter not over 9 box", "every place should have at most 9 adapter"),
+    ("rack A cable between 10 and 12 box is ok", "rack A should have between 10 and 12 cable"),
     ("5 koli cable from rack A to outbound carry", "carry 5 cable from rack A to outbound"),
     ("rack B 4 screen to outbound take", "take 4 screen from rack B to outbound"),
     ("rack B 4 screen take out", "take 4 screen out of rack B"),
@@ -87,6 +97,26 @@ def test_the_topic_said_first(said: str, plain: str) -> None:
     ("3 adapter rack B'ye send", "send 3 adapter to rack B"),
 ])
 def test_the_verb_said_last(said: str, plain: str) -> None:
+    _same(said, plain)
+
+
+@pytest.mark.parametrize("said, plain", [
+    # Russian "на" / "в" for where to, with or without a verb of moving
+    ("Move 2 screen from rack A in the hold area", "move 2 screen from rack A to the hold area"),
+    ("fk1, 5 cable from intake on outbound", "fk1, move 5 cable from intake to outbound"),
+    ("4 cable and 2 adapter from intake on outbound", "move 4 cable and 2 adapter from intake to outbound"),
+    ("one third of cable from rack A bring down on outbound", "bring a third of the cable from rack A to outbound"),
+    ("davai intake 4 more cable", "intake should have 4 more cable"),
+    ("On outbound must be 10 korobok cable", "outbound should have 10 cable"),
+    ("adapter on rack B not less than 8 must be", "rack B should have at least 8 adapter"),
+    ("hold area do empty", "empty the hold area"),
+    ("hold area fill full with screen", "fill the hold area with screen"),
+    ("In rack B is need 4 cable more", "rack B needs 4 more cable"),
+    ("intake and outbound change by places", "swap everything between intake and outbound"),
+    # Cyrillic letters drawn as Latin ones, typed with the layout left on Cyrillic
+    ("move 2 сable from intake to оutbound", "move 2 cable from intake to outbound"),
+])
+def test_russian_english(said: str, plain: str) -> None:
     _same(said, plain)
 
 
@@ -115,10 +145,15 @@ def test_for_this_before_a_colon_is_the_job() -> None:
     "move 2 cable from intake to outbound with the tugger",
     "rack A 4 cable 2 screen should be",                              # two products: not this rule's
     "rack A 10 cable should not be",                                  # a negation is never moved about
+    "rack A cable over 12",                                           # a bound the other way: not guessed
+    "rack A cable 12 only",                                           # no bound word: not a wanted count here
     "rack A cable take out",                                          # no count: how many is not said
     "4 cable rack A rack B move to outbound",                         # two places before the verb
     "move 2 cable from intake to outbound, Ali'nin",                  # a case ending after no place
     "2~3 cable from intake to outbound",                              # a tilde between counts: a range
+    "move 2 кабель from intake to outbound",                          # a word in Cyrillic: no Latin twin
+    "intake and outbound swap",                                       # what is swapped is not said
+    "split two cable between each of the two shelves",                # no place named: refused, never a crash
 ])
 def test_what_stays_refused(said: str) -> None:
     with pytest.raises(PipflowError):

@@ -141,7 +141,9 @@ CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "
                      # "giúp anh" (help me: said by an older brother), "giúp tôi", "giúp mình"
                      "nha", "nhe", "nhen", "giup", "anh", "toi", "minh",
                      # Turkish ("..., hadi": come on; "acil": urgent; "abi", "hocam": said to the reader)
-                     "hadi", "acil", "abi", "abla", "hocam", "tamam", "bakalim", "insallah"})
+                     "hadi", "acil", "abi", "abla", "hocam", "tamam", "bakalim", "insallah",
+                     # Russian in Latin letters ("..., davai": come on; "bratan": bro; "spasibo": thanks)
+                     "davai", "bratan", "spasibo", "srochno"})
 
 
 #: a request tag after an order ("... over to the shed would ya", "... could you"): it asks
@@ -691,6 +693,9 @@ INTERJECTIONS = frozenset({
     # Turkish ("hocam", "abi": to whoever reads; "hadi": come on; "acil": urgent; "tamam": OK;
     # "bakalım": let's see; "kolay gelsin": may it go easy; "günaydın": good morning)
     "hocam", "abi", "abla", "hadi", "acil", "tamam", "bakalim", "kolay", "gelsin", "gunaydin", "insallah",
+    # Russian typed in Latin letters ("davai": come on; "srochno": urgent; "koroche": in short; "nu":
+    # well; "bratan": bro; "normalno": fine; "ladno": OK; "spasibo": thanks; "privet": hi; "poka": bye)
+    "davai", "srochno", "koroche", "nu", "bratan", "normalno", "ladno", "spasibo", "privet", "poka",
     # Korean chat: a cheer ("Fighting!", "hwaiting"), dismay ("aigoo"), "really" ("jinjja"), laughter ("kk")
     "fighting", "hwaiting", "aigoo", "aigo", "jinjja", "omo", "kk",
     # a signpost of urgency ("Attention! swap ...")

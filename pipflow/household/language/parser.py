@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import functools
 import json
+import re
 from typing import Iterator
 
 from lark import Lark, Token, Tree
@@ -43,8 +44,8 @@ from pipflow.household.language.setaside import reads_as_word, without_asides
 from pipflow.household.language.tagger import owners_as_the, tag
 from pipflow.household.language.tokens import Tag
 from pipflow.language.asides import said
-from pipflow.language.characters import (accents_folded, declared_spellings, non_ascii_words, refuse_unread, turkish_i,
-                                         without_expressions)
+from pipflow.language.characters import (accents_folded, cyrillic_twins, declared_spellings, non_ascii_words,
+                                         refuse_unread, turkish_i, without_expressions)
 from pipflow.language.listing import inline_numbering
 from pipflow.language.earley import ListLexer, earley_parser
 from pipflow.language.lookahead import with_lookahead
@@ -92,10 +93,12 @@ def _parse_said(command: str, world: dict, notes: list[str]) -> list[dict]:
     if not command.isascii():   # "the Québec cousins are coming": an accented word that can only be talk
         command, declared = declared_spellings(command, non_ascii_words(world, ("places", "objects")))
         command, keyboard = turkish_i(command)
-        declared += keyboard
+        command, twins = cyrillic_twins(command)
+        declared += keyboard + twins
         command, accented = accents_folded(command, reads_as_word(world))
         notes += declared + accented
     refuse_unread(command, MARKS)   # a character this reader does not read is refused, never skipped
+    refuse_digits_in_words(command)
     command = owners_as_the(command, world, notes)
     command = conditions_read(command, world, notes)   # "if the lamp is on, switch it off"
     try:
@@ -105,6 +108,24 @@ def _parse_said(command: str, world: dict, notes: list[str]) -> list[dict]:
         if impossible is not None:
             raise impossible from None
         raise
+
+
+#: what may follow a number written together with it: a time of day, an ordinal, a duration, a unit
+_NUMBER_SUFFIXES = {"am", "pm", "st", "nd", "rd", "th", "h", "hr", "hrs", "min", "mins", "s", "x", "kg", "g", "ml",
+                    "l", "cm", "mm", "m", "ish"}
+_GLUED = re.compile(r"(?<![A-Za-z0-9])(\d+)([A-Za-z]+[A-Za-z0-9]*)")
+
+
+def refuse_digits_in_words(command: str) -> None:
+    """Refuse a command with a number written into a word ("3ala", "7oto", "e5salo": Arabizi, where
+    digits stand for letters): the reader splits words from numbers, and would read the digit as a
+    count of what follows; never a guess. A time, an ordinal or a unit written with its number
+    ("8pm", "2nd", "2x") is no such word."""
+    glued = [m.group(0) for m in _GLUED.finditer(command) if m.group(2).lower() not in _NUMBER_SUFFIXES]
+    glued += [w for w in re.findall(r"\b[A-Za-z]+\d+[A-Za-z]+\w*\b", command)]
+    if glued:
+        raise TranslationError(f"{', '.join(repr(w) for w in dict.fromkeys(glued))}: a number written into a word "
+                               "is never read as a count; write the number apart from the word, or the word in letters")
 
 
 def _parse_with_people(command: str, world: dict, notes: list[str]) -> list[dict]:

@@ -17,12 +17,13 @@ from typing import Any, Callable, Collection
 from lark import Token
 
 from pipflow.errors import InputError, Refusal, TranslationError
-from pipflow.language.asides import (FUNCTION_WORDS, OPERATIVE, SUBJECTS, Clause, clauses, content_free, is_opener,
+from pipflow.language.asides import (ADDRESSEES, FUNCTION_WORDS, GREETINGS, INTERJECTIONS, OPERATIVE, SUBJECTS, Clause,
+                                     clauses, content_free, is_opener,
                                      leading_reason, said_talk, signature, trailing_adjunct, trailing_thanks,
                                      unmarked_statement)
 from pipflow.language.asterisk import star_corrections
-from pipflow.language.characters import (accents_folded, declared_spellings, non_ascii_words, refuse_unread, turkish_i,
-                                         without_expressions)
+from pipflow.language.characters import (accents_folded, cyrillic_twins, declared_spellings, non_ascii_words,
+                                         refuse_unread, turkish_i, without_expressions)
 from pipflow.language.english import common_word
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS, is_number
 from pipflow.language.radio import transmission
@@ -78,8 +79,8 @@ UNIT_WORDS = {"carton", "cartons", "roll", "rolls", "pack", "packs", "packet", "
               "sheet", "sheets", "length", "lengths", "coil", "coils", "tray", "trays", "pc",
               # the logistics abbreviations ("4 ctns", "2 plts"; "cx", Portuguese caixa and Spanish caja: box)
               "ctn", "ctns", "plt", "plts", "cx", "cxs",
-              # Turkish "koli" (carton), "palet"
-              "koli", "palet"}
+              # Turkish "koli" (carton), "palet"; Russian "korobka" (box, "5 korobok", "2 korobki"), "sht" (pieces)
+              "koli", "palet", "korobka", "korobki", "korobok", "sht"}
 FILLERS |= UNIT_WORDS
 #: fillers that make the count after them a final count
 EXACT_WORDS = {"exactly", "precisely"}
@@ -1264,6 +1265,24 @@ class Lexicon:
                               and (self._group(nxt.text) is not None or self.robot_stem(nxt.text) is not None)}
         return toks
 
+    def _interjection_set_off(self, toks: list[Tok]) -> list[Tok]:
+        """The tokens with a comma after an interjection that opens a sentence without one ("davai
+        komplektovka 4 more smes", "yalla move 3 X ..."): as "Davai, ..." it is talk, set aside as
+        ever. Only a word of no other language's talk that is no English word ("night robots", "no
+        wait" keep their readings), no greeting (said with its addressee: "morning team"), no word of
+        the grammar, no verb and no operative word."""
+        out: list[Tok] = []
+        for k, t in enumerate(toks):
+            out.append(t)
+            opens = k == 0 or (toks[k - 1].kind == "punct" and toks[k - 1].value in (".", ";", "!", "?", ":"))
+            word = str(t.value)
+            if (opens and t.kind == "word" and word in INTERJECTIONS and word not in GREETINGS and not common_word(word)
+                    and word not in self.keywords and word not in VERB_LEXICON and word not in OPERATIVE
+                    and k + 1 < len(toks) and toks[k + 1].kind != "punct"
+                    and not (toks[k + 1].kind == "word" and toks[k + 1].value in ADDRESSEES)):
+                out.append(Tok("punct", ",", ","))
+        return out
+
     def _group(self, text: str) -> tuple[str, str] | None:
         """("RKIND", kind) or ("RTAG", tag) when the word names robots by kind or tag."""
         low = normalize(text)
@@ -1425,7 +1444,8 @@ class Lexicon:
         # "the truck from Québec is late": an accented word that can only be talk, spelled without accents
         command, declared = declared_spellings(command, self._declared)
         command, keyboard = turkish_i(command)
-        declared += keyboard
+        command, twins = cyrillic_twins(command)
+        declared += keyboard + twins
         command, accented = accents_folded(command, self._reads)
         radio = transmission(command, self._names_exactly, lambda w: w in self._robots, is_number)
         if radio is not None:   # "Yard control to all units. ... Over.": the voice procedure set aside
@@ -1464,7 +1484,7 @@ class Lexicon:
             fixed.append(t)
         verbs = {w for w in self.keywords if " " not in w} | set(VERB_LEXICON)
         toks = self._definite_groups(them_as_determiner(read_counts(_split_hyphens(
-            this_job_announced(case_endings(fixed)), self.keywords))))
+            this_job_announced(case_endings(self._interjection_set_off(fixed))), self.keywords))))
         toks, framed = without_request_frames(places_taken_back(toks), verbs)
         toks = item_as_subject(fronted_source(to_be_done(needs_doing(by_as_at(toks), verbs), verbs), verbs))
         toks = on_as_to(object_before_verb(topic_first(place_first(count_after_item(destination_first(

@@ -219,15 +219,31 @@ def fronted_source(toks: list[Tok], verbs: Collection[str]) -> list[Tok]:
     """The tokens with a comma after a source fronted without one: a sentence opened by "from" or
     "off" and one place, then a verb of ``verbs`` ("from rack B send 2 rooibos to the cage"), reads
     as "from rack B, send ...", which the grammar reads as it reads a fronted source said with its
-    comma. Nothing is added but the comma."""
+    comma. Nothing is added but the comma. So also before two counted things or more ("From
+    inbound 4 akü and 4 silecek to dispatch"; one is moved by :func:`count_after_item`)."""
     out: list[Tok] = []
     for k, t in enumerate(toks):
         out.append(t)
         j = k - 2 if _word_in(toks, k - 1, ("the",)) else k - 1   # "from the cage"
         if (_name_at(toks, k, "shelf") and _word_in(toks, j, _SOURCES) and (j == 0 or toks[j - 1].kind == "punct")
-                and _word_in(toks, k + 1, verbs)):
+                and (_word_in(toks, k + 1, verbs) or _counted_things(toks, k + 1) > 1)):
             out.append(Tok("punct", ",", ","))
     return out
+
+
+def _counted_things(toks: list[Tok], k: int) -> int:
+    """How many "<count> (<unit>) <product>" follow one another from ``k``, joined by "and" or a
+    comma ("4 akü and 4 silecek")."""
+    n = 0
+    while k + 1 < len(toks) and toks[k].kind == "num":
+        k += 1 + _word_in(toks, k + 1, _UNITS)
+        if not _name_at(toks, k, "product"):
+            break
+        n, k = n + 1, k + 1
+        if not (_word_in(toks, k, ("and",)) or (k < len(toks) and toks[k].kind == "punct" and toks[k].value == ",")):
+            break
+        k += 1
+    return n
 
 
 #: verbs of moving things whose object may be said before them ("all charcoal bring to ramp 2")
@@ -241,11 +257,13 @@ _KEEPING = frozenset({"touch", "use"})
 _AFTER_VERB = frozenset({"to", "on", "onto", "into", "in", "over", "across", "up", "down", "evenly", "equally",
                          "equal"})
 #: words of a noun phrase of things ("half of the water", "all charcoal", "4 of them")
-_PHRASE_WORDS = frozenset({"all", "the", "of", "half", "them", "those", "these", "every", "each", "rest"})
+_PHRASE_WORDS = frozenset({"all", "the", "of", "half", "them", "those", "these", "every", "each", "rest", "third",
+                           "thirds", "quarter", "quarters"})
 _SAID_NOT = frozenset({"dont", "never", "not"})
 #: unit words said after a count ("5 pcs", "4 pallets"): no thing of their own
-_UNITS = frozenset({"pallets", "pallet", "pcs", "pc", "units", "unit", "pieces", "cases", "boxes", "cartons", "ctn",
-                    "ctns", "plt", "plts", "cx", "cxs"})
+_UNITS = frozenset({"pallets", "pallet", "pcs", "pc", "units", "unit", "pieces", "cases", "box", "boxes", "carton",
+                    "cartons", "ctn", "ctns", "plt", "plts", "cx", "cxs", "pack", "packs", "crate", "crates", "koli",
+                    "palet", "korobka", "korobki", "korobok", "sht"})
 #: words that open a clause after its comma ("..., but rack B dont touch")
 _JOINS = frozenset({"but", "and", "then", "so"})
 
@@ -306,7 +324,7 @@ def object_before_verb(toks: list[Tok]) -> list[Tok]:
 _CHANGING = frozenset({"double", "triple", "halve", "reduce", "cut", "increase", "empty", "clear"})
 #: words after such a verb that add nothing to it: "make" / "do" said last, as Turkish closes a verb
 #: with "yap" ("rack B silecek double make"), and when ("rack A dont touch today")
-_SAID_LAST = frozenset({"make", "do", "today", "now", "tonight"})
+_SAID_LAST = frozenset({"make", "do", "today", "now", "tonight", "please"})
 #: a pronoun taking up what was said first ("... double it"), or all of a place ("clear everything")
 _RESUMING = frozenset({"it", "them"})
 _EVERYTHING = frozenset({"everything", "anything", "all"})
@@ -338,6 +356,10 @@ def _place_first(clause: list[Tok]) -> list[Tok] | None:
     negated = _word_in(clause, j, _SAID_NOT)
     v = j + negated
     rest = clause[v + 1:]
+    done = _word_in(clause, v, ("do", "make")) and _word_in(clause, v + 1, _CHANGING)
+    if done:   # "vozvrat do empty" (Russian "сделать пустым"): empty it
+        clause = clause[:v] + clause[v + 1:]
+        rest = clause[v + 1:]
     said_last = _word_in(clause, v, _CHANGING | _KEEPING) and bool(rest) and all(
         _word_in(rest, n, _SAID_LAST) for n in range(len(rest)))
     if said_last:   # "rack B silecek double make" (Turkish "yap"), "rack A dont touch today"
@@ -352,15 +374,17 @@ def _place_first(clause: list[Tok]) -> list[Tok] | None:
         return clause[j:v + 1] + things + [Tok("word", join, join)] + place + rest
     if not things and _word_in(clause, v, _CHANGING | _KEEPING) and len(rest) == 1 and _word_in(rest, 0, _EVERYTHING):
         return clause[j:v + 1] + place
-    if not things and not negated and _word_in(clause, v, ("fill",)) and _word_in(rest, 0, ("with", "up")):
-        return clause[v:v + 1] + place + rest   # "mezzanine fill with silecek": fill mezzanine with silecek
+    if not things and not negated and _word_in(clause, v, ("fill",)) and _word_in(rest, _word_in(rest, 0, ("full",)),
+                                                                                   ("with", "up")):
+        # "mezzanine fill with silecek", "karantin fill full with X": fill it with X
+        return clause[v:v + 1] + place + rest[_word_in(rest, 0, ("full",)):]
     if not things and not negated and _word_in(clause, v, ("keep", "leave")) and rest \
             and not any(t.kind in ("num", "name") for t in rest):
         # "shipping keep as it is", "rack 1 leave as is": keep shipping as it is
         return clause[v:v + 1] + place + rest
     if things and not negated and _word_in(clause, v, ("make", "total")) and rest[:1] and rest[0].kind == "num":
         # "rack 1 LCD make 40 (box) (total)", "rack 2 pin total 30 box": rack 1 should have 40 LCD
-        k = 1 + _word_in(rest, 1, _TOPIC_UNITS)
+        k = 1 + _word_in(rest, 1, _UNITS)
         k += _word_in(rest, k, ("total",))
         return place + [Tok("word", "should", "should"), Tok("word", "have", "have"), rest[0]] + things + rest[k:]
     if not things and not negated and any(t.kind == "num" for t in rest):
@@ -369,7 +393,8 @@ def _place_first(clause: list[Tok]) -> list[Tok] | None:
         if moving and any(_word_in(rest, n, ("to",)) for n in range(len(rest))):
             # "rack 1 send ten cable back to receiving": from rack 1
             return clause[v:v + 1] + rest + [Tok("word", "from", "from")] + place
-    if said_last and not things:   # "asma kat empty make", "rack A dont touch today": as said without them
+    if (said_last or done and not rest) and not things:
+        # "asma kat empty make", "vozvrat do empty", "rack A dont touch today": as said without them
         return clause[v:v + 1] + place if not negated else clause[:v + 1]
     return None
 
@@ -392,25 +417,35 @@ def _destination_first(clause: list[Tok]) -> list[Tok] | None:
 
 
 def on_as_to(toks: list[Tok]) -> list[Tok]:
-    """The tokens with "on" read as "to" where a clause moves things from (or off) a place it names
-    and then says "on" another place ("bring half of water from rack A on ramp 2": to ramp 2, as "na" says
-    it in Polish and "на" in Russian); only after the source, with a verb of moving before it. Where
-    no source is said "on P" may say where the things are, and is left as said."""
+    """The tokens with "on" (and "in", "into") read as "to" where a clause moves things from (or off)
+    a place it names and then says "on" another place ("bring half of water from rack A on ramp 2":
+    to ramp 2, as "na" says it in Polish and "на", "в" in Russian; "move 4 X from P in Q"); only
+    after the source, with a verb of moving before it or, in a clause that counts things and says no
+    verb, none ("5 ibuprofen from komplektovka on otgruzka"). Where no source is said "on P" may say
+    where the things are, and is left as said."""
     out = list(toks)
     start = 0
     for k in range(len(toks) + 1):
         if k < len(toks) and toks[k].kind != "punct":
             continue
-        moving = source = False
+        moving = counted = source = False
         for j in range(start, k):
             if _word_in(out, j, _MOVING):
                 moving = True
+            elif out[j].kind == "num" or _name_at(out, j, "product"):
+                counted = True
             elif _word_in(out, j, ("from", "off")) and _name_at(out, j + 1, "shelf"):
-                source = moving
-            elif source and _word_in(out, j, ("on",)) and _name_at(out, j + 1, "shelf"):
+                # with a verb of moving, or none said ("5 ibuprofen from komplektovka on otgruzka")
+                source = moving or (counted and not any(_word_in(out, n, _VERBS_SAID) for n in range(start, k)))
+            elif source and _word_in(out, j, ("on", "in", "into")) and _name_at(out, j + 1 + _word_in(out, j + 1, ("the",)),
+                                                                               "shelf"):
                 out[j] = Tok("word", out[j].text, "to")
         start = k + 1
     return out
+
+
+#: verbs that make a clause no bare move ("5 X from P on Q" with none of them is one)
+_VERBS_SAID = frozenset({"put", "leave", "keep", "count", "check", "have", "has", "is", "are", "be", "stay", "stays"})
 
 
 def _clause_opens(toks: list[Tok], k: int) -> bool:
@@ -482,7 +517,7 @@ def place_must_be(toks: list[Tok]) -> list[Tok]:
     """The tokens with "(on) rack A must be 15 water" read as "rack A must have 15 water", as
     speakers of languages that say what is on a place with "be" order it ("na regale musi być"):
     only at a clause's start, a place (after "on" / "in" / "at" or not), "must" or "should", "be"
-    and a count."""
+    and a count. "in P needs ..." is "P needs ..." (the place the subject, its preposition left out)."""
     out: list[Tok] = []
     k = 0
     while k < len(toks):
@@ -492,13 +527,18 @@ def place_must_be(toks: list[Tok]) -> list[Tok]:
             out += [toks[j], toks[j + 1], Tok("word", toks[j + 2].text, "have")]
             k = j + 3
             continue
+        if _clause_opens(toks, k) and j > k and _name_at(toks, j, "shelf") and _word_in(toks, j + 1, _PLACE_VERBS):
+            k = j   # "in karantin needs 4 more X" ("в карантине нужно"): karantin needs
+            continue
         out.append(toks[k])
         k += 1
     return out
 
 
-#: unit words after a count in a topic said first ("9 box", "2 pallet"): no thing of their own
-_TOPIC_UNITS = _UNITS | {"box", "boxes", "carton", "cartons", "pack", "packs", "crate", "crates", "koli", "palet"}
+#: verbs a place said first with "in" / "on" may have as its subject ("in P needs 4 X")
+_PLACE_VERBS = frozenset({"needs", "need", "wants", "has", "have", "gets", "holds"})
+
+
 #: where a place said in a topic stands: "LCD from rack 1", "LCD at shipping", "pin in rack 1"
 _TOPIC_PLACE_WORDS = frozenset({"from", "at", "in", "on"})
 #: what may say where to after a verb of moving ("to", "back to", "into"; "back iqc": back to iqc)
@@ -512,12 +552,19 @@ def topic_first(toks: list[Tok]) -> list[Tok]:
     receiving to shipping", "rack 2 sac 9 box move to receiving" is "move 9 sac from rack 2 to
     receiving", "LCD from rack 1 send 4 box to shipping" is "send 4 LCD from rack 1 to shipping",
     "3 box LCD NG area bring back iqc" is "bring 3 LCD from NG area back to iqc"; and "LCD at
-    shipping double it" is "double LCD on shipping" (a verb that changes what a place holds); "iqc
+    shipping double it" is "double LCD on shipping" (a verb that changes what a place holds); "mal
+    kabul akü all to rack A" (no verb said) is "move all akü from mal kabul to rack A"; "iqc
     and NG area swap the cable" is "swap the cable between iqc and NG area".
     Only at a clause's start, with one product, one place (where the things are) and at most one
     count, before the verb or right after it; a verb of moving must then say where to. Anything
     else is left as said."""
-    return each_clause(toks, _topic_first, _clause_opens)
+    toks = each_clause(toks, _topic_first, _clause_opens)
+    return each_clause(toks, lambda clause: _topic_first(clause, verbless=True), _sentence_opens)
+
+
+def _sentence_opens(toks: list[Tok], k: int) -> bool:
+    """Whether a sentence opens at ``k``: the start, or after . ; ! ? or a colon (a list's line)."""
+    return k == 0 or (toks[k - 1].kind == "punct" and toks[k - 1].value in (".", ";", "!", "?", ":"))
 
 
 #: verbs of exchanging what two places hold ("iqc and NG area swap the cable")
@@ -538,16 +585,20 @@ def _two_places_swap(clause: list[Tok]) -> list[Tok] | None:
 
 
 def _swap_said_after(clause: list[Tok]) -> list[Tok] | None:
-    """ "iade and sevkiyat akü swap", "rack A and rack B everything change places": the two places,
-    then the product (or everything), then the verb ("swap", "change places") closing the clause."""
+    """ "iade and sevkiyat akü swap", "rack A and rack B everything change places", "P and Q change by
+    places": the two places, then the product (or everything, or nothing: all they hold), then the
+    verb ("swap", "change (by) places") closing the clause."""
     if not (_name_at(clause, 0, "shelf") and _word_in(clause, 1, ("and",)) and _name_at(clause, 2, "shelf")):
         return None
     clause = [t for t in clause if t.value not in (POSS_MARK, "please")]   # "sevkiyat akü": sevkiyat's akü
-    end = len(clause) - (2 if said_at(clause, len(clause) - 2, ("change", "places")) else 1)
-    if end < 4 or not (end == len(clause) - 2 or _word_in(clause, end, _SWAPPING)):
+    said = next((n for n, words in ((3, ("change", "by", "places")), (2, ("change", "places")))
+                 if said_at(clause, len(clause) - n, words)), 0)
+    end = len(clause) - (said or 1)
+    if end < 3 or not (said or _word_in(clause, end, _SWAPPING)) or (end == 3 and not said):
         return None
     verb = Tok("word", " ".join(t.text for t in clause[end:]), "swap")
-    return _swap_of(verb, clause[3:end], clause[:3])
+    # "P and Q change by places" (Russian "поменять местами"): all they hold
+    return _swap_of(verb, clause[3:end] or [Tok("word", "", "everything")], clause[:3])
 
 
 def _swap_of(verb: Tok, rest: list[Tok], places: list[Tok]) -> list[Tok] | None:
@@ -560,18 +611,23 @@ def _swap_of(verb: Tok, rest: list[Tok], places: list[Tok]) -> list[Tok] | None:
     return [verb, what, Tok("word", "between", "between"), *places]
 
 
-def _topic_first(clause: list[Tok]) -> list[Tok] | None:
-    """:func:`topic_first` of one clause, or None."""
+def _topic_first(clause: list[Tok], verbless: bool = False) -> list[Tok] | None:
+    """:func:`topic_first` of one clause, or None; ``verbless``: the clause says no verb, and opens
+    a sentence (after a comma it may take a count back: "Send 5 logs, no wait, 4 logs from ...")."""
     swapped = _two_places_swap(clause) or _swap_said_after(clause)
     if swapped is not None:
         return swapped
     products: list[Tok] = []
     places: list[Tok] = []
     counts: list[Tok] = []
+    share: list[Tok] = []   # "half of them", "all of them": how much of it, said as the count
     j = 0
     while j < len(clause):
         if _name_at(clause, j, "product"):
             products.append(clause[j])
+        elif _word_in(clause, j, _SHARES) and not share:
+            share = [clause[j]]
+            j += 2 if _word_in(clause, j + 1, ("of",)) and _word_in(clause, j + 2, ("them", "it", "those")) else 0
         elif _name_at(clause, j, "shelf"):
             places.append(clause[j])
         elif _word_in(clause, j, _TOPIC_PLACE_WORDS) and _name_at(clause, j + 1, "shelf") and j:
@@ -579,22 +635,30 @@ def _topic_first(clause: list[Tok]) -> list[Tok] | None:
             j += 1
         elif clause[j].kind == "num":
             counts.append(clause[j])
-            j += _word_in(clause, j + 1, _TOPIC_UNITS)
+            j += _word_in(clause, j + 1, _UNITS)
         elif not _word_in(clause, j, (POSS_MARK, "the")):
             break
         j += 1
-    if len(products) != 1 or len(places) != 1 or len(counts) > 1 or j == len(clause):
+    if len(products) != 1 or len(places) != 1 or len(counts) + bool(share) > 1 or j == len(clause):
         return None
+    if share:   # "rack A balata half of them send to sevkiyat": half of the balata
+        counts = share + ([Tok("word", "", "of")] if share[0].value != "all" else [])
     verb, rest = clause[j], clause[j + 1:]
+    if verbless != (_word_in(clause, j, ("to",)) and _name_at(clause, j + 1, "shelf")):
+        return None
+    if verbless:
+        verb, rest = Tok("word", "", "move"), clause[j:]   # "mal kabul akü all to rack A": no verb said
     if _word_in(clause, j, _CHANGING) and not counts:
         rest = rest[1:] if _word_in(rest, 0, _RESUMING) else rest
         return [verb, *products, Tok("word", "on", "on"), *places, *rest]
-    if not _word_in(clause, j, _MOVING - {"divide", "split", "distribute"}):
+    if not _word_in([verb], 0, _MOVING - {"divide", "split", "distribute"}):
         return None
+    if _word_in(clause, j, _CHANGING) and share:
+        return None   # "rack A balata half of them double": not this rule's
     if rest and rest[0].kind == "num":   # "LCD from rack 1 send 4 box to shipping"
         if counts:
             return None
-        counts, rest = [rest[0]], rest[1 + _word_in(rest, 1, _TOPIC_UNITS):]
+        counts, rest = [rest[0]], rest[1 + _word_in(rest, 1, _UNITS):]
     back = _word_in(rest, 0, ("back",))
     if back and _word_in(clause, j, ("put",)):
         return None   # "X from P put back Q": read by the lexicon's put_back_after_its_object
@@ -607,6 +671,8 @@ def _topic_first(clause: list[Tok]) -> list[Tok] | None:
     return [verb, *counts, *products, Tok("word", "from", "from"), *places, *rest]
 
 
+#: how much of a thing said in a topic in place of a count ("rack A balata half of them to P send")
+_SHARES = frozenset({"half", "quarter", "third", "all"})
 #: modals and verbs that close a clause of a wanted count said verb last ("Rack A 10 oil filter
 #: should be", "Sevkiyat 25 akü must have", "Rack B balata maximum 3 should stay")
 _LAST_MODALS = frozenset({"should", "must", "shall"})
@@ -645,21 +711,60 @@ def _verb_last(clause: list[Tok]) -> list[Tok] | None:
     last = len(clause) - 1
     k = last - 1 if _word_in(clause, last, _LAST_VERBS) and _word_in(clause, last - 1, _LAST_MODALS) else \
         last if _word_in(clause, last, _LAST_MODALS) else None
-    if k is None:
-        return None
+    bound_only = k is None
+    if bound_only:   # "NG area LCD maximum 2 box only", "rack 1 cable between 10 and 12 box is ok": no verb
+        k = len(clause) - next((n for n, said in ((2, ("is", "ok")), (1, ("ok",)), (1, ("is",)), (1, ("only",)), (0, ()))
+                                if said_at(clause, len(clause) - n, said)), 0)
+        clause = [*clause[:k], Tok("word", "", "should")]
+    if _name_at(clause, 0, "product") and _word_in(clause, 1, ("on", "in", "at")) and _name_at(clause, 2, "shelf"):
+        # "shampoo on otgruzka not less than 8 must be": the product first, then where it is
+        clause, k = [clause[2], clause[0], *clause[3:]], k - 1
     if _name_at(clause, 0, "shelf"):
         place, j = clause[:1], 1
-    elif _word_in(clause, 0, _EVERY) and _word_in(clause, 1, _PLACE_WORDS):
+    elif _word_in(clause, 0, _EVERY) and len(clause) > 1 and clause[1].kind in ("word", "kind") \
+            and clause[1].text.lower() in _PLACE_WORDS:   # "every place", "all location" (a kind word)
         place, j = clause[:2], 2
     else:
         return None
     middle = [t for t in clause[j:k] if t.value != POSS_MARK]   # "Rack B balata": rack B's balata
     products = [t for t in middle if _name_at([t], 0, "product")]
     if len(products) != 1 or not any(t.kind == "num" for t in middle) or not all(
-            t.kind == "num" or t is products[0] or _word_in([t], 0, _AMOUNT_WORDS | _TOPIC_UNITS) for t in middle):
+            t.kind == "num" or t is products[0] or _word_in([t], 0, _AMOUNT_WORDS | _UNITS | {"not", "over", "under", "below"})
+            for t in middle):
         return None
     amount = [t for t in middle if t is not products[0]]
+    amount = _not_over_as_at_most(amount)
+    if amount is None or bound_only and not any(_word_in([t], 0, _BOUND_WORDS) for t in amount):
+        return None
     return [*place, Tok("word", clause[k].text, "should"), Tok("word", "", "have"), *amount, products[0]]
+
+
+#: words of a bound: a clause said without a verb states a wanted count only with one of them
+_BOUND_WORDS = frozenset({"minimum", "maximum", "min", "max", "least", "most", "between"})
+
+
+#: a bound said with "not": how many words, the words, and the bound it is
+_NOT_BOUNDS = ((2, ("not", "over"), "most"), (3, ("not", "more", "than"), "most"), (3, ("not", "less", "than"), "least"),
+               (3, ("not", "fewer", "than"), "least"), (2, ("not", "under"), "least"), (2, ("not", "below"), "least"))
+
+
+def _not_over_as_at_most(amount: list[Tok]) -> list[Tok] | None:
+    """The amount with "not over N" and "not more than N" read as "at most N", "not less than N" as
+    "at least N" ("all location sac not over 15 box", "not less than 8 must be"); None where "over"
+    or "not" is said otherwise (a bound the other way is not guessed)."""
+    out: list[Tok] = []
+    k = 0
+    while k < len(amount):
+        said = next(((n, bound) for n, words, bound in _NOT_BOUNDS if said_at(amount, k, words)), None)
+        if said is not None:   # "not over 15", "not less than 8": at most 15, at least 8
+            out += [Tok("word", amount[k].text, "at"), Tok("word", "", said[1])]
+            k += said[0]
+            continue
+        if _word_in(amount, k, ("not", "over")):
+            return None
+        out.append(amount[k])
+        k += 1
+    return out
 
 
 def _removed_last(clause: list[Tok]) -> list[Tok] | None:
@@ -668,7 +773,7 @@ def _removed_last(clause: list[Tok]) -> list[Tok] | None:
     filtresi from rack B"; None for anything else."""
     n = 2 if said_at(clause, len(clause) - 2, ("take", "out")) or said_at(clause, len(clause) - 2, ("take", "away")) \
         else 1 if _word_in(clause, len(clause) - 1, ("remove",)) else 0
-    topic = [t for t in clause[:len(clause) - n] if t.value != POSS_MARK and not _word_in([t], 0, _TOPIC_UNITS)]
+    topic = [t for t in clause[:len(clause) - n] if t.value != POSS_MARK and not _word_in([t], 0, _UNITS)]
     topic = topic[1:] if _word_in(topic, 0, ("from",)) else topic   # "Rack A'dan 4 silecek take out": from rack A
     if not n or len(topic) != 3 or not _name_at(topic, 0, "shelf"):
         return None

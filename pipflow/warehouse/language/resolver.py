@@ -316,6 +316,8 @@ def _distribute(st: _State, s: dict) -> None:
     st.check_names(sources, [], words)
     if len(sources) > 1:
         raise TranslationError(f"'{words}': cannot tell which of {', '.join(sources)} the shares come from")
+    if not places:   # "split two heaters between each of the two aisles": no place named to share between
+        raise TranslationError(f"'{words}': names no place to share between; name them")
     for i in items:
         if sources:
             src = sources[0]
