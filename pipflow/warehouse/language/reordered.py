@@ -653,8 +653,6 @@ def _topic_first(clause: list[Tok], verbless: bool = False) -> list[Tok] | None:
         return [verb, *products, Tok("word", "on", "on"), *places, *rest]
     if not _word_in([verb], 0, _MOVING - {"divide", "split", "distribute"}):
         return None
-    if _word_in(clause, j, _CHANGING) and share:
-        return None   # "rack A balata half of them double": not this rule's
     if rest and rest[0].kind == "num":   # "LCD from rack 1 send 4 box to shipping"
         if counts:
             return None
@@ -733,7 +731,7 @@ def _verb_last(clause: list[Tok]) -> list[Tok] | None:
             for t in middle):
         return None
     amount = [t for t in middle if t is not products[0]]
-    amount = _not_over_as_at_most(amount)
+    amount = _bounds_said_with_not(amount)
     if amount is None or bound_only and not any(_word_in([t], 0, _BOUND_WORDS) for t in amount):
         return None
     return [*place, Tok("word", clause[k].text, "should"), Tok("word", "", "have"), *amount, products[0]]
@@ -748,7 +746,7 @@ _NOT_BOUNDS = ((2, ("not", "over"), "most"), (3, ("not", "more", "than"), "most"
                (3, ("not", "fewer", "than"), "least"), (2, ("not", "under"), "least"), (2, ("not", "below"), "least"))
 
 
-def _not_over_as_at_most(amount: list[Tok]) -> list[Tok] | None:
+def _bounds_said_with_not(amount: list[Tok]) -> list[Tok] | None:
     """The amount with "not over N" and "not more than N" read as "at most N", "not less than N" as
     "at least N" ("all location sac not over 15 box", "not less than 8 must be"); None where "over"
     or "not" is said otherwise (a bound the other way is not guessed)."""
