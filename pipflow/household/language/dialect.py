@@ -33,8 +33,8 @@ def patois_as_english(words: list[str], known: Callable[[str], bool], noun: Call
     the plates), "those" before one, else "them"; "fi" is "for" before who or what for, else "to";
     "weh deh" is "that is" ("di spoon weh deh inna di sink"); "come" between a thing and a verb of
     putting ("bring mi specs come put pon di chair") is "and"."""
-    said = {w for w in words if not known(w)}
-    if len(MARKERS & said) < 2 and not STRONG_MARKERS & said:
+    unknown = {w for w in words if not known(w)}
+    if len(MARKERS & unknown) < 2 and not STRONG_MARKERS & unknown:
         return words
     out: list[str] = []
     for k, w in enumerate(words):
@@ -45,7 +45,7 @@ def patois_as_english(words: list[str], known: Callable[[str], bool], noun: Call
         if w == "mi":
             said = "my" if noun(nxt) else "me" if out and out[-1] in _BEFORE_ME else "i"
         elif w == "him":
-            said = "his" if noun(nxt) else "him"
+            said = "his" if noun(nxt) else None
         elif w == "dem" and out and (noun(out[-1]) or out[-1] in _PLURAL_AFTER):
             plural = next((out[-1] + end for end in ("s", "es") if noun(out[-1] + end)), None)
             notes.append(f"'{out[-1]} dem' read as '{plural or out[-1]}' (Jamaican Creole: a plural)")
@@ -68,7 +68,7 @@ def patois_as_english(words: list[str], known: Callable[[str], bool], noun: Call
         if said is None:
             out.append(w)
             continue
-        notes.append(f"'{w}' read as '{said or '(a plural)'}' (Jamaican Creole)")
+        notes.append(f"'{w}' read as '{said}' (Jamaican Creole)")
         out += said.split()
     return out
 
