@@ -31,9 +31,9 @@ The principle, for every reader:
   (:func:`declared_spellings`), before the rule above; another accent on the same word is not
   declared, and stays under it.
 * **The Turkish keyboard's i is i** ("ı", "İ": :func:`turkish_i`): on that keyboard they are the
-  letter i typed where English types it, not an accent; the word is read with "i". Likewise a
-  word of Latin letters with a Cyrillic letter drawn the same ("сitramon": :func:`cyrillic_twins`)
-  is read with the Latin letter; a word in Cyrillic stays refused.
+  letter i typed where English types it, not an accent; the word is read with "i". A letter of
+  another script drawn like a Latin one (Cyrillic "с" in "сitramon", Greek "ο") is not: it is
+  refused as any other character, as the tests of bad inputs hold.
 * **Typography the readers already read stays read**: curly apostrophes and quotes, dashes and
   the minus sign, the arrow for "to", the multiplication sign for "x", the ellipsis, and any
   white space (a no-break space is a space). Those are in each reader's list with their reading.
@@ -181,32 +181,6 @@ def turkish_i(command: str) -> tuple[str, list[str]]:
         plain = "".join(_TURKISH_I.get(ch, ch) for ch in word)
         if plain != word:
             notes.append(f"'{word}' read as '{plain}' (the Turkish keyboard's i)")
-        return plain
-    return re.sub(r"\S+", read, command), notes
-
-
-#: Cyrillic letters drawn as Latin ones, typed when the keyboard stays on the Cyrillic layout for a
-#: key or two ("сitramon", "оtgruzka": their first letters Cyrillic): identical shapes only
-_CYRILLIC_TWINS = dict(zip("аеорсухіјѕАВЕКМНОРСТХУІЈЅ", "aeopcyxijsABEKMHOPCTXYIJS"))
-
-
-def cyrillic_twins(command: str) -> tuple[str, list[str]]:
-    """The command with each word that mixes Latin letters with Cyrillic letters drawn as Latin
-    ones (:data:`_CYRILLIC_TWINS`) written with the Latin letters, and a note for each: the layout
-    was switched for part of the word, which has one reading. A word with no Latin letter, or with
-    any other Cyrillic letter, is left to be refused ("холодильник", "сток")."""
-    if command.isascii():
-        return command, []
-    notes: list[str] = []
-
-    def read(m: re.Match) -> str:
-        word = m.group(0)
-        if not any(ch in _CYRILLIC_TWINS for ch in word) or not any(ch in WORD_CHARS and ch.isalpha() for ch in word):
-            return word
-        if any(not ch.isascii() and ch not in _CYRILLIC_TWINS for ch in word):
-            return word
-        plain = "".join(_CYRILLIC_TWINS.get(ch, ch) for ch in word)
-        notes.append(f"'{word}' read as '{plain}' (Cyrillic letters drawn as Latin ones)")
         return plain
     return re.sub(r"\S+", read, command), notes
 

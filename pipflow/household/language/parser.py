@@ -44,8 +44,8 @@ from pipflow.household.language.setaside import reads_as_word, without_asides
 from pipflow.household.language.tagger import owners_as_the, tag
 from pipflow.household.language.tokens import Tag
 from pipflow.language.asides import said
-from pipflow.language.characters import (accents_folded, cyrillic_twins, declared_spellings, non_ascii_words,
-                                         refuse_unread, turkish_i, without_expressions)
+from pipflow.language.characters import (accents_folded, declared_spellings, non_ascii_words, refuse_unread, turkish_i,
+                                         without_expressions)
 from pipflow.language.listing import inline_numbering
 from pipflow.language.earley import ListLexer, earley_parser
 from pipflow.language.lookahead import with_lookahead
@@ -93,8 +93,7 @@ def _parse_said(command: str, world: dict, notes: list[str]) -> list[dict]:
     if not command.isascii():   # "the Québec cousins are coming": an accented word that can only be talk
         command, declared = declared_spellings(command, non_ascii_words(world, ("places", "objects")))
         command, keyboard = turkish_i(command)
-        command, twins = cyrillic_twins(command)
-        declared += keyboard + twins
+        declared += keyboard
         command, accented = accents_folded(command, reads_as_word(world))
         notes += declared + accented
     refuse_unread(command, MARKS)   # a character this reader does not read is refused, never skipped

@@ -22,8 +22,8 @@ from pipflow.language.asides import (ADDRESSEES, FUNCTION_WORDS, GREETINGS, INTE
                                      leading_reason, said_talk, signature, trailing_adjunct, trailing_thanks,
                                      unmarked_statement)
 from pipflow.language.asterisk import star_corrections
-from pipflow.language.characters import (accents_folded, cyrillic_twins, declared_spellings, non_ascii_words,
-                                         refuse_unread, turkish_i, without_expressions)
+from pipflow.language.characters import (accents_folded, declared_spellings, non_ascii_words, refuse_unread, turkish_i,
+                                         without_expressions)
 from pipflow.language.english import common_word
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS, is_number
 from pipflow.language.radio import transmission
@@ -1444,8 +1444,7 @@ class Lexicon:
         # "the truck from Québec is late": an accented word that can only be talk, spelled without accents
         command, declared = declared_spellings(command, self._declared)
         command, keyboard = turkish_i(command)
-        command, twins = cyrillic_twins(command)
-        declared += keyboard + twins
+        declared += keyboard
         command, accented = accents_folded(command, self._reads)
         radio = transmission(command, self._names_exactly, lambda w: w in self._robots, is_number)
         if radio is not None:   # "Yard control to all units. ... Over.": the voice procedure set aside
