@@ -62,7 +62,7 @@ def one_as_kind(words: list[str], world: dict, index: dict, notes: list[str]) ->
     docstring). ``index``: the home's phrases (:func:`~.names.world_phrases`)."""
     if "one" not in words:
         return words
-    kinds, people = _kinds(index), owners(world)
+    kinds, people = _kinds(index), owners(world, words)
     starts = {key[0] for key in index}
     out = list(words)
     k = 1

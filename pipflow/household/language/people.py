@@ -77,10 +77,25 @@ THIRD_POSTURE = frozenset(POSTURE | {"the", "whole", "day", "always", "usually",
 _OWNER = re.compile(r"^(?:the\s+)?(.+?)(?:['\u2019]s|(?<=s)['\u2019])\s")
 
 
+def owners(world: dict, words: list[str]) -> dict[tuple[str, ...], list[tuple[str, ...]]]:
+    """The home's people (:func:`_owner_candidates`) for a command of ``words``: a name said
+    without "'s" ("minjun bed") counts only where the command says it and it is no common English
+    word ("kitchen" of "kitchen sink", "kitchen table" is none). The English word list is asked
+    only then: loading it costs a second and some 16 MB, which most commands never need."""
+    people, named = _owner_candidates(world)
+    if not named:
+        return people
+    said = set(words)
+    return {who: names for who, names in people.items()
+            if who not in named or (who[0] in said and not common_word(who[0]))}
+
+
 @per_world
-def owners(world: dict) -> dict[tuple[str, ...], list[tuple[str, ...]]]:
+def _owner_candidates(world: dict) -> tuple[dict[tuple[str, ...], list[tuple[str, ...]]],
+                                           frozenset[tuple[str, ...]]]:
     """The people of the home as its own words name them, who own its things ("papa's mug", "ah
-    ma's bed", "jun hao's bag": papa, ah ma, jun hao; also without "'s": :func:`_owner_unmarked`), each with the names of the home that open
+    ma's bed", "jun hao's bag": papa, ah ma, jun hao; also without "'s": :func:`_owner_unmarked`), and
+    of those the names said without "'s", which :func:`owners` checks against English words; each with the names of the home that open
     with their words ("ah ma bed"), where those words name a thing and no person. A thing of the
     home is never an owner ("the fridge's door")."""
     index = world_phrases(world)
@@ -98,9 +113,11 @@ def owners(world: dict) -> dict[tuple[str, ...], list[tuple[str, ...]]]:
     # an owner said without "'s": a kinship word, or a name (no English word) that opens the names
     # of two things or more ("minjun bed", "minjun tumbler"); a word before one thing's name is as
     # likely its make or its character ("elsa doll"), and an English word its kind ("winter ibul")
-    found |= {who for who, things in unmarked.items() if who not in index and (
-        who[0] in KIN or len(things) > 1 and not common_word(who[0]) and (who[0],) not in PHRASES)}
-    return {who: [key for key in index if len(key) > len(who) and key[:len(who)] == who] for who in found}
+    found |= {who for who, things in unmarked.items() if who not in index and who[0] in KIN}
+    named = frozenset(who for who, things in unmarked.items() if who not in index and who[0] not in KIN
+                      and len(things) > 1 and (who[0],) not in PHRASES)   # checked as English by :func:`owners`
+    return {who: [key for key in index if len(key) > len(who) and key[:len(who)] == who]
+            for who in found | named}, named
 
 
 def _owner_unmarked(phrase: str) -> tuple[str, ...]:
@@ -118,7 +135,7 @@ def owners_before_names(words: list[str], world: dict, notes: list[str]) -> list
     asked. Never where the owner's words with what follows are a name of the home themselves ("ah
     ma bed"), nor before words that name nothing ("for ah ma lunch")."""
     index = world_phrases(world)
-    people = owners(world)
+    people = owners(world, words)
     out = owner_s_as_name(words, world)
     k = 0
     while k < len(out):
@@ -142,7 +159,7 @@ def pronouns_as_owners(words: list[str], world: dict, notes: list[str]) -> list[
     if not _POSSESSIVE_PRONOUNS & set(words):
         return words
     index = world_phrases(world)
-    people = owners(world)
+    people = owners(world, words)
     out = list(words)
     named: list[tuple[str, ...]] = []
     k = 0
@@ -209,7 +226,7 @@ def owner_s_as_name(words: list[str], world: dict) -> list[str]:
     what follows are a name of the home ("mochis bowl" where the home says "mochi's bowl": the
     bowl so named, not any bowl)."""
     index = world_phrases(world)
-    people = owners(world)
+    people = owners(world, words)
     out = list(words)
     for k in range(len(out)):
         for who in people:
@@ -234,7 +251,7 @@ class _Reader:
         self.world = world
         self.home = home_words(self.index)
         self.vocab = vocabulary(self.index)
-        self.owners = owners(world)
+        self.owners = owners(world, self.words)
 
     def known(self, w: str, typos: bool = True) -> bool:
         """Whether a word is a word of the home's names, of the lexicon or its fillers, a function

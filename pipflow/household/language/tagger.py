@@ -126,7 +126,7 @@ def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: l
     grammar's words (each rewrite notes what it read)."""
     words = patois_in_home(words_of(command), index, notes)
     words = scots_as_english(words, lambda w: known_word(w, index, vocab), notes)
-    words = where_as_name(one_as_kind(words, world, index, notes), index, notes, owners(world))
+    words = where_as_name(one_as_kind(words, world, index, notes), index, notes, owners(world, words))
     words = owners_before_names(pronouns_as_owners(words, world, notes), world, notes)
     words = so_before_an_order(same_for(colloquial(corrected(words, notes), notes), notes), notes)
     words = or_under_negation(measures(without_manner(words, notes), index, notes), notes)
