@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import pytest
 
-from pipflow.errors import TranslationError
+from pipflow.errors import Refusal, TranslationError
 from pipflow.language.spelling import other_spellings
 from pipflow.warehouse.language.forest import keywords
 from pipflow.warehouse.language.grammar import GRAMMAR
@@ -61,8 +61,10 @@ def test_the_verb_spelt_as_a_place_stays_a_verb_where_no_place_stands() -> None:
 def test_a_place_name_never_reads_as_the_verb_place() -> None:
     """Written as a string in the grammar, "place" was named PLACE by lark, the terminal of a
     world's place: "despatch 2 grey tiles to the centre bay" read as "place 2 grey tiles to the
-    centre bay" (set to 2), the first place dropped without a word."""
-    with pytest.raises(TranslationError):
+    centre bay" (set to 2), the first place dropped without a word. Said with no verb, the place
+    said first is where the tiles come from (issue 23's reading by roles), never dropped: the tyre
+    rack holds none, so the move is refused as impossible."""
+    with pytest.raises(Refusal, match="from tyre_rack, which holds 0"):
         translate("tyre rack 2 grey tiles to the centre bay", TILES)
     assert translate("place 2 colour tins onto the despatch", TILES)["goal"] == {"despatch": {"colour_tin": 2}}
     declared = next(line for line in GRAMMAR.splitlines() if line.startswith("%declare")).split()[1:]

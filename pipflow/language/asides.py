@@ -87,6 +87,9 @@ GREETINGS = frozenset({"hi", "hello", "hey", "hiya", "heya", "howdy", "morning",
                        "dzieki", "dziekuje", "czesc",
                        # Brazilian Portuguese ("bom dia pessoal": good morning, folks; "oi", "olá": hi)
                        "oi", "ola", "bom", "boa",
+                       # Japanese ("Ohayo gozaimasu": good morning; "otsukaresama": thanks for the work)
+                       "ohayo", "ohayou", "gozaimasu", "otsukaresama", "otsukare", "konnichiwa", "arigato",
+                       "arigatou",
                        # Vietnamese ("anh em": brothers, the team, said to it; "chao": hello)
                        "anh", "chao"})
 #: words that open an apology or a thanks for something ("sorry for the late ask", "thanks for
@@ -135,6 +138,7 @@ CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "
                      "asante", "asanteni", "bana", "mzee", "gracias", "jefe",
                      # Brazilian Portuguese: thanks, "OK?" ("..., beleza?"), laughter
                      "obrigada", "obrigado", "valeu", "vlw", "beleza", "blz", "rsrs", "kkk", "kkkk", "kkkkk",
+                     "valew", "galera", "pessoal", "rapidinho", "agora", "pfv", "pf",
                      # Gulf Arabic ("..., yalla habibi", "..., inshallah", "khalas": done)
                      "habibi", "habibti", "yalla", "inshallah", "khalas", "shukran",
                      # Vietnamese particles closing a request ("..., nha", "... nhé": OK?, please), and
@@ -143,7 +147,13 @@ CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "
                      # Turkish ("..., hadi": come on; "acil": urgent; "abi", "hocam": said to the reader)
                      "hadi", "acil", "abi", "abla", "hocam", "tamam", "bakalim", "insallah",
                      # Russian in Latin letters ("..., davai": come on; "bratan": bro; "spasibo": thanks)
-                     "davai", "bratan", "spasibo", "srochno"})
+                     "davai", "bratan", "spasibo", "srochno",
+                     # Japanese ("..., hai": yes; "arigato": thanks; "sumimasen": excuse me)
+                     "hai", "arigato", "arigatou", "sumimasen",
+                     # Colombian Spanish ("..., parce": mate; "..., listo?": OK?)
+                     "parce", "parcero", "listo",
+                     # Québec French ("..., câline": darn; "..., tsé": you know; "..., genre": like)
+                     "caline", "tse", "genre"})
 
 
 #: a request tag after an order ("... over to the shed would ya", "... could you"): it asks
@@ -686,6 +696,8 @@ INTERJECTIONS = frozenset({
     "achha", "acha", "accha", "seri", "haan", "ji", "jaldi", "arre", "arey",
     # Brazilian Portuguese: "OK", "right?", laughter typed ("kkkk", "rsrs"), "quickly" ("rapidinho")
     "beleza", "blz", "rsrs", "kkk", "kkkk", "kkkkk", "rapidinho", "atencao",
+    # and "galera", "pessoal" (folks) opening a message with no comma ("galera I want ..."); "agora": now
+    "galera", "pessoal", "agora",
     # Gulf Arabic ("Yalla, ...": come on; "inshallah", "mashallah", "wallah"; "khalas": done)
     "yalla", "inshallah", "mashallah", "wallah", "khalas", "shukran",
     # Vietnamese particles ("nha", "nhé": OK?, please)
@@ -696,6 +708,12 @@ INTERJECTIONS = frozenset({
     # Russian typed in Latin letters ("davai": come on; "srochno": urgent; "koroche": in short; "nu":
     # well; "bratan": bro; "normalno": fine; "ladno": OK; "spasibo": thanks; "privet": hi; "poka": bye)
     "davai", "srochno", "koroche", "nu", "bratan", "normalno", "ladno", "spasibo", "privet", "poka",
+    # Japanese ("Sumimasen, ...": excuse me; "hai": yes; "ano": um; "ohayo": good morning)
+    "sumimasen", "hai", "ano", "ohayo", "ohayou", "otsukaresama", "otsukare", "arigato", "arigatou",
+    # Colombian Spanish ("Ay, ...", "parce": mate; "listo": ready, OK; "dale": go on; "uy")
+    "ay", "uy", "parce", "parcero", "listo", "dale",
+    # Québec French ("Bon, ...": well; "genre": like; "tsé": you know; "câline": darn; "voyons": come on)
+    "bon", "genre", "tse", "caline", "voyons", "coudonc",
     # Korean chat: a cheer ("Fighting!", "hwaiting"), dismay ("aigoo"), "really" ("jinjja"), laughter ("kk")
     "fighting", "hwaiting", "aigoo", "aigo", "jinjja", "omo", "kk",
     # a signpost of urgency ("Attention! swap ...")

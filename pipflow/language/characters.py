@@ -188,13 +188,26 @@ def turkish_i(command: str) -> tuple[str, list[str]]:
 def non_ascii_words(world: dict, kinds: tuple[str, ...]) -> dict[str, str]:
     """The words a world declares for its things with letters outside the alphabet ("açaí" for
     acai, "câmara 1" for chamber1), lower case and composed (NFC), -> the thing's name: what
-    :func:`declared_spellings` reads. ``kinds``: the world's sections of named things."""
+    :func:`declared_spellings` reads. ``kinds``: the world's sections of named things. A word of
+    such a spelling that the world also writes without its accents, as a name or in another word
+    ("sofía" in "bed of sofía" beside "bed of sofia"; "sartén" for sarten), is declared on its own
+    -> that spelling: the world says the two are one word, so "the room of Sofía" reads as well."""
     out: dict[str, str] = {}
+    plain: set[str] = set()   # the words of the world's names and words spelled in the alphabet
     for kind in kinds:
         for name, entry in (world.get(kind) or {}).items():
+            plain.add(str(name).lower())
             for word in (entry.get("words") or []) if isinstance(entry, dict) else []:
                 if isinstance(word, str) and not word.isascii():
                     out[unicodedata.normalize("NFC", word).lower()] = str(name)
+                elif isinstance(word, str):
+                    plain.update(word.lower().split())
+    for spelled in list(out):
+        # a word the world spells both ways ("bed of sofía", "bed of sofia"): that accent is its own
+        for part in spelled.split():
+            folded = _ascii_spelling(part, widths=False)
+            if folded is not None and folded != part and folded in plain:
+                out.setdefault(part, folded)
     return out
 
 
@@ -211,9 +224,11 @@ def declared_spellings(command: str, declared: dict[str, str]) -> tuple[str, lis
     text = unicodedata.normalize("NFC", command)
     for spelled in sorted(declared, key=len, reverse=True):
         def name(m: re.Match, spelled: str = spelled) -> str:
-            notes.append(f"'{m.group(0)}' read as {declared[spelled]} (a spelling this world declares)")
-            return declared[spelled]
-        text = re.sub(r"(?<!\w)" + re.escape(spelled) + r"(?!\w)", name, text, flags=re.IGNORECASE)
+            said = declared[spelled] + m.group(0)[len(spelled):]
+            notes.append(f"'{m.group(0)}' read as {said} (a spelling this world declares)")
+            return said
+        plural = "(?:e?s)?" if " " not in spelled else ""   # "almojábanas": the declared word's plural
+        text = re.sub(r"(?<!\w)" + re.escape(spelled) + plural + r"(?!\w)", name, text, flags=re.IGNORECASE)
     return text, notes
 
 

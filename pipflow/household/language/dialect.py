@@ -10,8 +10,13 @@ from pipflow.household.language.names import first_words, home_words
 from pipflow.household.language.restated import DETERMINERS
 from pipflow.household.language.tokens import PUNCT
 from pipflow.language.patois import FOR_WHOM, MARKERS, PATOIS, STRONG_MARKERS
+from pipflow.language.quebec import QUEBEC
 from pipflow.language.scots import SCOTS
 
+#: Québec French words said in English at home: the shared ones and the verbs of chores ("ferme the
+#: TV": close, so off; "réchauffe the soup": heat)
+_QUEBEC = QUEBEC | {"ferme": "close", "fermer": "close", "ouvre": "open", "ouvrir": "open", "rechauffe": "heat",
+                    "rechauffer": "heat", "lave": "wash", "laver": "wash"}
 #: Scots words the household reader leaves alone: English words with another meaning at home ("a bar
 #: of soap", "ma" for mother, "whit") and "ye", read already (lexicon.normalize)
 _SCOTS_ALSO_ENGLISH = {"bar", "ma", "whit", "ye"}
@@ -93,13 +98,19 @@ def scots_as_english(words: list[str], known: Callable[[str], bool], notes: list
     """The words with Scots words read as English (:data:`pipflow.language.scots.SCOTS`: "switch
     aff the telly", "bring my specs ben", "that yin as well") where the word is no word of the home
     or of the reader (``known``); "aw" is "all" before what it quantifies ("aw the lights") and
-    "too" after "an" at a clause's end ("the big sheet an aw"); "the morn" is tomorrow."""
+    "too" after "an" at a clause's end ("the big sheet an aw"); "the morn" is tomorrow. Québec
+    French words said so are read as English too (:data:`_QUEBEC`: "pis" then, "ferme" close,
+    "réchauffe" heat), and "por favor" is "please"."""
     out: list[str] = []
     k = 0
     while k < len(words):
         w, nxt = words[k], (words[k + 1] if k + 1 < len(words) else ".")
         if w == "the" and nxt == "morn":
             out.append("tomorrow")
+            k += 2
+            continue
+        if w == "por" and nxt in ("favor", "favour") and not known(w):   # Spanish and Portuguese "please"
+            out.append("please")
             k += 2
             continue
         if w in ("an", "and") and nxt == "aw" and (k + 2 >= len(words) or words[k + 2] in PUNCT):
@@ -109,7 +120,11 @@ def scots_as_english(words: list[str], known: Callable[[str], bool], notes: list
             continue
         said = "all" if w == "aw" and nxt in _ALL_OF and not known(w) else \
             SCOTS.get(w) if w not in _SCOTS_ALSO_ENGLISH and not known(w) else None
-        if said is not None:
+        french = _QUEBEC.get(w) if said is None and not known(w) else None
+        if french is not None:   # "wash the pan pis put it away", "ferme the TV"
+            notes.append(f"'{w}' read as '{french}' (Québec French)")
+            out.append(french)
+        elif said is not None:
             notes.append(f"'{w}' read as '{said}' (Scots)")
             out += _WRITTEN_OUT.get(said, said).split()
         else:
@@ -174,7 +189,8 @@ def put_on_as_switch(words: list[str], world: dict, index: dict, notes: list[str
     """The words with "put" read as "switch" where "on" or "off" and then a thing that switches
     follow it ("put on the radio", "put off the fan" as Indian and Nigerian English say it):
     "put the radio on" is read already, "put the telly off" (the clause ending there) is switching
-    it off too, and "put on the sweater" (no switch) or "put on the trestle" (a place, with its
+    it off too, "put the light" (a fixed thing that switches, no place said; Spanish "poner la
+    luz") is switching it on, and "put on the sweater" (no switch) or "put on the trestle" (a place, with its
     thing said before) keep "put" as placing. A note says so."""
     out = list(words)
     for k, w in enumerate(words):
@@ -187,7 +203,21 @@ def put_on_as_switch(words: list[str], world: dict, index: dict, notes: list[str
             if end and words[end:end + 1] == ["off"] and (end + 1 >= len(words) or words[end + 1] in _CLAUSE_END):
                 out[k] = "switch" if w == "put" else "switching"
                 notes.append("'put ... off' read as 'switch ... off'")
+            elif w == "put" and end and (end >= len(words) or words[end] in _CLAUSE_END | {","}) \
+                    and _fixed(words[_after_determiners(words, k + 1):end], world, index):
+                # "put the light of the dining": Spanish and Italian "poner / mettere la luce"
+                out[k:k + 1] = ["switch", "on"]
+                notes.append("'put' read as 'switch on' (of a fixed thing that switches, with no place said)")
     return out
+
+
+def _fixed(name: list[str], world: dict, index: dict) -> bool:
+    """Whether the words name only things that stay where they are (none may be picked up)."""
+    things = index.get(tuple(name)) or []
+    entries = [(world.get("objects") or {}).get(t["name"]) or (world.get("places") or {}).get(t["name"]) or {}
+               for t in things if t["kind"] in ("object", "place")]
+    return bool(entries) and len(entries) == len(things) and not any(
+        "pickupable" in (e.get("properties") or []) for e in entries)
 
 
 #: "make the light out", "make the kettle on", "the washing machine make on" (German "mach ... an /

@@ -14,6 +14,7 @@ from pipflow.language.english import common_word
 from pipflow.household.language.beside import beside_as_where
 from pipflow.household.language.colloquial import colloquial
 from pipflow.household.language.corrections import corrected
+from pipflow.household.language.romance import adjective_after, of_as_where
 from pipflow.household.language.dialect import (bring_in, cut_as_switch, make_as_switch, on_off_as_verbs,
                                                 open_close_as_switch, particle_before_exception, put_on_as_switch,
                                                 patois_in_home, scots_as_english, them_as_those)
@@ -126,6 +127,7 @@ def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: l
     grammar's words (each rewrite notes what it read)."""
     words = patois_in_home(words_of(command), index, notes)
     words = scots_as_english(words, lambda w: known_word(w, index, vocab), notes)
+    words = of_as_where(adjective_after(words, index, notes), world, index, notes)
     words = where_as_name(one_as_kind(words, world, index, notes), index, notes, owners(world, words))
     words = owners_before_names(pronouns_as_owners(words, world, notes), world, notes)
     words = so_before_an_order(same_for(colloquial(corrected(words, notes), notes), notes), notes)

@@ -127,12 +127,20 @@ def failure(exc: UnexpectedInput, lexed: Lexed, lex: Lexicon) -> TranslationErro
     return error
 
 
+def _said_near(lexed: Lexed, k: int) -> str:
+    """The word said where the reader's own word at ``k`` stands (one it put in, unsaid: the "from"
+    of "rack A X 6 to P"), so that a refusal quotes the user's words."""
+    after = [t.text for t in lexed.source[k + 1:] if t.text]
+    before = [t.text for t in lexed.source[:k] if t.text]
+    return (after or before[-1:] or [""])[0]
+
+
 def _failure(exc: UnexpectedInput, lexed: Lexed, lex: Lexicon) -> TranslationError:
     sentence = " ".join(t.text for t in lexed.source if t.text).replace(" zzposs", "'s")
     where = ""
     if isinstance(exc, UnexpectedToken) and exc.token.type != "$END":
         k = exc.token.start_pos
-        word = lexed.source[k].text.replace("zzposs", "'s")
+        word = lexed.source[k].text.replace("zzposs", "'s") or _said_near(lexed, k)
         prev = lexed.source[k - 1] if k > 0 else None
         shared = lex.index.shared_parts.get(normalize(word)) if lexed.tokens[k].type == "UNKNOWN" else None
         if shared:

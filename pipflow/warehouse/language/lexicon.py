@@ -17,8 +17,8 @@ from typing import Any, Callable, Collection
 from lark import Token
 
 from pipflow.errors import InputError, Refusal, TranslationError
-from pipflow.language.asides import (ADDRESSEES, FUNCTION_WORDS, GREETINGS, INTERJECTIONS, OPERATIVE, SUBJECTS, Clause,
-                                     clauses, content_free, is_opener,
+from pipflow.language.asides import (ADDRESSEES, CLOSERS, FUNCTION_WORDS, GREETINGS, INTERJECTIONS, OPERATIVE,
+                                     SUBJECTS, Clause, clauses, content_free, is_opener,
                                      leading_reason, said_talk, signature, trailing_adjunct, trailing_thanks,
                                      unmarked_statement)
 from pipflow.language.asterisk import star_corrections
@@ -27,11 +27,13 @@ from pipflow.language.characters import (accents_folded, declared_spellings, non
 from pipflow.language.english import common_word
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS, is_number
 from pipflow.language.radio import transmission
+from pipflow.language.quebec import QUEBEC
 from pipflow.language.scots import SCOTS
 from pipflow.language.spelling import distance, normalize, plural_forms, slip, tolerance
 from pipflow.warehouse.language.grammar import ASIDE_ONLY
-from pipflow.warehouse.language.names import (CONTAINERS, KIND_WORDS, POSS_MARK, STOPWORDS, NameIndex, Tok, read_counts,
-                                              recognize)
+from pipflow.warehouse.language.names import (CONTAINERS, KIND_WORDS, PACKAGING_WORDS, POSS_MARK, STOPWORDS,
+                                              NameIndex, Tok, read_counts, recognize)
+from pipflow.warehouse.language.roles import read_by_roles
 from pipflow.warehouse.language.reordered import (base_verb, count_after_item, destination_first, fronted_source,
                                                 item_as_subject, needs_doing, object_before_verb, on_as_to, place_first,
                                                 place_must_be, said_at, to_be_done, topic_first, verb_last)
@@ -71,17 +73,9 @@ FILLERS = {"the", "please", "kindly", "units", "unit", "pieces", "piece", "boxes
            # Mexican Spanish said in English orders ("porfa move ...", "ahorita put ...", "oye, ..."):
            # please, right now, hey, then, well, come on ("ya" is "you" in "can ya": SPELLINGS)
            "porfa", "porfavor", "ahorita", "oye", "luego", "pues", "bueno", "orale", "andale"}
-#: packaging and measure nouns: "5 cartons of tape", "2 rolls of shrink wrap" count the item after
-#: "of". A world that names a product so ("carton") recognises it as that product first.
-UNIT_WORDS = {"carton", "cartons", "roll", "rolls", "pack", "packs", "packet", "packets", "bundle",
-              "bundles", "bag", "bags", "tub", "tubs", "bottle", "bottles", "reel", "reels", "tote",
-              "totes", "drum", "drums", "tin", "tins", "jar", "jars", "sack", "sacks", "crates", "jug", "jugs",
-              "sheet", "sheets", "length", "lengths", "coil", "coils", "tray", "trays", "pc",
-              # the logistics abbreviations ("4 ctns", "2 plts"; "cx", Portuguese caixa and Spanish caja: box)
-              "ctn", "ctns", "plt", "plts", "cx", "cxs",
-              # Turkish "koli" (carton), "palet"; Russian "korobka" (box, "5 korobok", "2 korobki"), "sht" (pieces)
-              "koli", "palet", "korobka", "korobki", "korobok", "sht"}
-FILLERS |= UNIT_WORDS
+#: words of talk of our lists: never a slip of a name ("hai" is no "hat")
+_TALK_WORDS = INTERJECTIONS | CLOSERS
+FILLERS |= PACKAGING_WORDS
 #: fillers that make the count after them a final count
 EXACT_WORDS = {"exactly", "precisely"}
 #: chat spellings of keywords
@@ -95,6 +89,8 @@ SPELLINGS = {"shud": "should", "shld": "should", "u": "you", "r": "are", "wont":
 #: pend tae steading", "take 2 aff vault", "dinnae touch it"), read only where the word is no word
 #: of the world's names
 SPELLINGS |= SCOTS
+#: and Québec French words said in English ("move 4 X to P pis empty Q": then), as at home
+SPELLINGS |= QUEBEC
 #: texting's one-letter words, as typed in lower case ("mezz n dock", "end up w a dozen"); a capital
 #: "N" or "W" is more often north or west ("N cage"), and is left alone
 LETTER_WORDS = {"n": "and", "w": "with"}
@@ -112,6 +108,8 @@ IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before
           # digit ends no sentence (before a capital it may: "must be 10 pal. Only day shift robots")
           (re.compile(r"\b(pal|pall|pals|plt|plts|pcs|pc|ctn|ctns|min|max|approx|qty)\.(?=\s+(?-i:[a-z0-9])|,)",
                       re.IGNORECASE), r"\1"),
+          # Spanish and Portuguese "please" ("por favor", "por favour"), said in English orders
+          (re.compile(r"\bpor\s+(?:favor|favour)\b", re.IGNORECASE), "please"),
           # "EUR pal.", "6 pal water": pallets (a unit word; "pal" alone elsewhere may be a friend)
           (re.compile(r"\b(?:eur|euro)\.?\s+(?=pal)", re.IGNORECASE), ""),
           (re.compile(rf"\b({_NUMBER}|more|less|dozen)\s+pal(?:l|s|ls)?\b", re.IGNORECASE), r"\1 pallets"),
@@ -350,12 +348,19 @@ WORD_ORDER = ((re.compile(rf"\bmore\s+({_NUMBER})(?!\s*(?:than|%|percent))", re.
 #: discourse particles of Singapore, Malaysian and Hong Kong English, closing a clause ("add 4
 #: more lah", "botak off today ah,", "kitting make it 8 la", "dun touch rack B ar"): they colour
 #: the clause, they say nothing of the order
-PARTICLES = ("lah", "leh", "lor", "hor", "meh", "liao", "sia", "ah", "ha", "la", "ar", "wor", "lo", "ga", "mah")
+PARTICLES = ("lah", "leh", "lor", "hor", "meh", "liao", "sia", "ah", "ha", "la", "ar", "wor", "lo", "ga", "mah",
+             # Japanese's closing "ne" and "yo" ("yoroshiku ne": OK?)
+             "ne", "yo")
 _PARTICLE = re.compile(r"\s+(?:" + "|".join(PARTICLES) + r")\b(?=\s*(?:[.,;:!?()]|$))", re.IGNORECASE)
 #: Tagalog's honorific and softening particles in Taglish ("move po 3 X", "add naman 2 X"), said
 #: anywhere in a clause: politeness, nothing of the order
 TAGALOG_PARTICLES = ("po", "naman")
 _TAGALOG_PARTICLE = re.compile(r"\s*\b(?:" + "|".join(TAGALOG_PARTICLES) + r")\b", re.IGNORECASE)
+#: Japanese politeness said in English orders ("... please move, onegaishimasu", "yoroshiku ne",
+#: "OK desu", "..., hai"): please, thank you in advance, the copula, yes; nothing of the order
+_JAPANESE_POLITE = re.compile(r"\s*\b(?:onegai\s*shimasu|onegai|yoroshiku|kudasai|desu|hai)\b", re.IGNORECASE)
+#: Japanese honorifics on a name ("Gonta-kun", "Tanaka-san"): the one named
+_HONORIFIC = re.compile(r"\b([a-z][a-z0-9]*)-(?:san|kun|chan|sama)\b", re.IGNORECASE)
 #: Tagalog's object marker before a count ("transfer ng 3 X": transfer 3 X)
 _TAGALOG_MARKER = re.compile(rf"\bng\s+(?={_NUMBER})", re.IGNORECASE)
 #: Tagalog's request prefixes on an English verb ("paki-move", "pakiempty", "pa-add", "i-transfer",
@@ -465,14 +470,27 @@ _CASE_MARKS = {"from": "zzcasefrom", "to": "zzcaseto", "at": "zzcaseat"}
 def this_job_announced(toks: list[Tok]) -> list[Tok]:
     """The tokens with "for this" before a colon read as "for this job" ("Use only tuggers for this:
     the 6 tubes go to picking"): the colon announces the job the rule is for, as "for this one:"
-    does; "for this" elsewhere keeps its reading (the move just said, or asked)."""
+    does; "in this (one)" before a colon is "for this (one)" (Portuguese "nisso", "nessa"); "for
+    this" elsewhere keeps its reading (the move just said, or asked)."""
     out: list[Tok] = []
     for k, t in enumerate(toks):
         out.append(t)
-        if (t.kind == "word" and t.value == "this" and k and toks[k - 1].kind == "word" and toks[k - 1].value == "for"
-                and k + 1 < len(toks) and toks[k + 1].kind == "punct" and toks[k + 1].value == ":"):
-            out.append(Tok("word", "", "job"))
+        colon = k + 1 < len(toks) and toks[k + 1].kind == "punct" and toks[k + 1].value == ":"
+        if t.kind == "word" and t.value == "this" and colon and k and toks[k - 1].kind == "word" \
+                and toks[k - 1].value in ("for", "in"):
+            out[-2:] = [Tok("word", toks[k - 1].text, "for"), t, Tok("word", "", "job")]
+        elif t.kind == "word" and t.value == "one" and colon and k > 1 and said_at(toks, k - 2, ("in", "this")):
+            out[-3] = Tok("word", toks[k - 2].text, "for")   # "in this one:" (Portuguese "nessa"): for this one
     return out
+
+
+def topic_marked(toks: list[Tok]) -> list[Tok]:
+    """The tokens without Japanese's topic particle "wa" after a name of the world ("kenpin area wa
+    bearing maximum 1 case", "Motor wa every place all collect to B rack"): it marks what the
+    sentence is about, which the name already is. Elsewhere "wa" is kept, and refused unread."""
+    return [t for k, t in enumerate(toks) if not (
+        t.kind == "word" and t.value == "wa" and k and toks[k - 1].kind in ("name", "kind")
+        and k + 1 < len(toks) and toks[k + 1].kind != "punct")]
 
 
 def case_endings(toks: list[Tok]) -> list[Tok]:
@@ -557,6 +575,8 @@ VERB_LEXICON: dict[str, tuple[str, str]] = {
     # ferry, tow, lug, shuttle, wheel, relocate, deliver, stage, restage, fetch, dispatch, bring over, move over)
     "shove": ("move", "move"), "chuck": ("move", "toss"), "sling": ("move", "toss"), "lob": ("move", "toss"), "drag": ("move", "move"), "move across": ("move", "move"),
     "send across": ("move", "send"), "carry over": ("move", "carry"), "bring across": ("move", "bring"),
+    # "push 5 X from P to Q" (a pallet pushed or pulled along; Portuguese "puxar": pull)
+    "push": ("move", "move"), "pull": ("move", "move"),
     # removing (and the grammar's own: remove, unload, withdraw, take away, get rid of, dispose of, throw out)
     "offload": ("remove", "unload"), "off-load": ("remove", "unload"), "off load": ("remove", "unload"), "pull off": ("remove", "take"),
     "pull out": ("remove", "take"), "take off": ("remove", "take"), "take out": ("remove", "take"),
@@ -1167,7 +1187,7 @@ class Lexicon:
         # a packaging word that is a word of one of the world's names ("trays" of seed_tray) is that
         # name's word there, not a unit
         self.index = NameIndex(world, reserved={k for k in keywords if k.isalpha()} | set(SUPERLATIVES)
-                               | (FILLERS - UNIT_WORDS) | (UNIT_WORDS - _name_words(world)) | FRAME_WORDS,
+                               | (FILLERS - PACKAGING_WORDS) | (PACKAGING_WORDS - _name_words(world)) | FRAME_WORDS,
                                respelt=set(SPELLINGS))
         robots = world.get("robots") or {}
         self.kinds = {str(r.get("kind")).lower() for r in robots.values()
@@ -1318,10 +1338,12 @@ class Lexicon:
 
     def _near_name(self, word: str) -> bool:
         """Whether a word is within a typo's reach of a word of the world's names and may be a slip
-        of it: a common English word written as itself ("big" near "bin", "left" near "loft") is
-        none (:func:`pipflow.language.english.common_word`)."""
+        of it: a common English word written as itself ("big" near "bin", "left" near "loft"), or a
+        word of talk of our lists, is none (:func:`pipflow.language.english.common_word`)."""
         if word in self._name_words:
             return True
+        if word in _TALK_WORDS:   # "hai" (Japanese: yes) is no slip of a name
+            return False
         return any(distance(word, w) <= max(1, tolerance(len(w))) for w in self._name_words) \
             and not common_word(word)
 
@@ -1483,11 +1505,11 @@ class Lexicon:
             fixed.append(t)
         verbs = {w for w in self.keywords if " " not in w} | set(VERB_LEXICON)
         toks = self._definite_groups(them_as_determiner(read_counts(_split_hyphens(
-            this_job_announced(case_endings(self._interjection_set_off(fixed))), self.keywords))))
+            this_job_announced(case_endings(topic_marked(self._interjection_set_off(fixed)))), self.keywords))))
         toks, framed = without_request_frames(places_taken_back(toks), verbs)
         toks = item_as_subject(fronted_source(to_be_done(needs_doing(by_as_at(toks), verbs), verbs), verbs))
         toks = on_as_to(object_before_verb(topic_first(place_first(count_after_item(destination_first(
-            place_must_be(verb_last(toks))))))))
+            place_must_be(verb_last(read_by_roles(toks)))))))))
         toks = lexicon_verbs(quantity_phrases(addressed_anyone(stative_having(toks)), self.keywords), self.keywords)
         toks = put_back_after_its_object(counts_sent_from_a_topic(corrected(toks)))
         toks = dropped_object(corrected_later(without_particles(toks)))
@@ -1513,6 +1535,9 @@ class Lexicon:
         command = _PARTICLE.sub(left_out, _CAN_TAG.sub(left_out, command))
         command = _TAGALOG_PARTICLE.sub(left_out, _TAGALOG_REQUEST.sub(unprefixed, command))
         command = _TAGALOG_MARKER.sub(left_out, command)
+        command = _JAPANESE_POLITE.sub(left_out, command)
+        command = re.sub(r"(^|[.!?;:\n])(\s*),", r"\1\2", command)   # "Hai, move ...": no comma opens a sentence
+        command = _HONORIFIC.sub(lambda m: m.group(0) if self._names_exactly(m.group(0).lower()) else m.group(1), command)
         command = _GO_AND.sub("", command)
         command = _FOR_EACH_OF.sub(self._times_for_each, command)
         if self._places is not None:

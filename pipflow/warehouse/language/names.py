@@ -63,6 +63,20 @@ STOPWORDS: set[str] = {
 CONTAINERS = {"sack", "can", "bag", "box", "tin", "jar", "bottle", "carton", "crate", "case", "pack", "packet",
               "tub", "drum", "tote", "pallet", "keg", "barrel", "bucket", "pail", "cask", "basket", "tray",
               "set", "kit", "bundle", "reel", "spool", "roll", "pouch", "sleeve"}
+#: packaging and measure nouns: "5 cartons of tape", "2 rolls of shrink wrap" count the item after
+#: "of". A world that names a product so ("carton") recognises it as that product first.
+PACKAGING_WORDS = frozenset({
+    "carton", "cartons", "roll", "rolls", "pack", "packs", "packet", "packets", "bundle", "bundles", "bag", "bags",
+    "tub", "tubs", "bottle", "bottles", "reel", "reels", "tote", "totes", "drum", "drums", "tin", "tins", "jar",
+    "jars", "sack", "sacks", "crates", "jug", "jugs", "sheet", "sheets", "length", "lengths", "coil", "coils",
+    "tray", "trays", "pc",
+    # the logistics abbreviations ("4 ctns", "2 plts"; "cx", Portuguese caixa and Spanish caja: box)
+    "ctn", "ctns", "plt", "plts", "cx", "cxs",
+    # Turkish "koli" (carton), "palet"; Russian "korobka" (box, "5 korobok", "2 korobki"), "sht" (pieces)
+    "koli", "palet", "korobka", "korobki", "korobok", "sht"})
+#: every word said after a count for its unit ("5 pcs", "4 pallets", "6 case"): no thing of its own
+COUNT_UNITS = PACKAGING_WORDS | {"units", "unit", "pieces", "piece", "boxes", "box", "crate", "crates", "case",
+                                 "cases", "pcs", "pallets", "pallet"}
 NUMBER_MARKS = {"number", "no", "nr", "num", "#"}
 ORDINALS: dict[str, int] = {
     w: k for k, w in enumerate(

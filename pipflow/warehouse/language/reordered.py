@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from typing import Callable, Collection
 
-from pipflow.warehouse.language.names import POSS_MARK, Tok
+from pipflow.warehouse.language.names import COUNT_UNITS, POSS_MARK, Tok
 
 
 def said_at(toks: list[Tok], k: int, words: tuple[str, ...]) -> bool:
@@ -261,9 +261,8 @@ _PHRASE_WORDS = frozenset({"all", "the", "of", "half", "them", "those", "these",
                            "thirds", "quarter", "quarters"})
 _SAID_NOT = frozenset({"dont", "never", "not"})
 #: unit words said after a count ("5 pcs", "4 pallets"): no thing of their own
-_UNITS = frozenset({"pallets", "pallet", "pcs", "pc", "units", "unit", "pieces", "cases", "box", "boxes", "carton",
-                    "cartons", "ctn", "ctns", "plt", "plts", "cx", "cxs", "pack", "packs", "crate", "crates", "koli",
-                    "palet", "korobka", "korobki", "korobok", "sht"})
+_UNITS = COUNT_UNITS
+
 #: words that open a clause after its comma ("..., but rack B dont touch")
 _JOINS = frozenset({"but", "and", "then", "so"})
 
