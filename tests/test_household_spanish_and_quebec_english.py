@@ -67,6 +67,13 @@ def goal(command: str, world: dict) -> dict:
     ("Bon. take the blanket to the table, tsé", "take the blanket to the table"),
     ("take the blanket to the table por favor", "take the blanket to the table"),
     ("Ay, take the blanket to the table, listo?", "take the blanket to the table"),
+    ("Allora, take the blanket to the table. Grazie", "take the blanket to the table"),
+    # a setting given to a thing that switches ("put the oven at 180": Italian "metti il forno a 180")
+    ("put the light of the hall at 3", "switch on the light of the hall"),
+    ("set the light of the hall to 20 degrees", "switch on the light of the hall"),
+    # a thing named first and taken up by "it" at once after its verb, with no comma ("il frigo chiudilo")
+    ("the blanket take it to the table", "take the blanket to the table"),
+    ("The light of the hall switch it on", "switch on the light of the hall"),
     # where a thing is, said with "of" (Spanish "de")
     ("take the blanket of the sofa to the bed of zoe", "take the blanket from the sofa to the bed of zoe"),
     ("the blanket of the sofa to the table", "take the blanket from the sofa to the table"),
@@ -110,3 +117,8 @@ def test_an_adjective_the_verb_may_make_so_stays_after_the_thing(house: dict) ->
     except PipflowError:
         return
     assert got != goal("wash the clean mugs on the table", house)
+
+
+def test_a_setting_of_what_does_not_switch_is_no_switching(house: dict) -> None:
+    with pytest.raises(PipflowError):
+        translate("put the blanket at 3", house)

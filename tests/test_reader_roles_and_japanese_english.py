@@ -6,7 +6,9 @@ out", "rack A chain total 10 case should be", "is missing 6 tyre on rack B"), th
 swap said first with a comma ("inbound and dock, saddle only exchange"), Japanese politeness and
 honorifics ("onegaishimasu", "yoroshiku ne", "OK desu", "Taro-kun, ..."), the topic particle "wa",
 "push" as a verb of moving, "in this one:" before the job it announces, "galera" opening a
-message, and Québec French's "pis" (then) from pair YY's household writer. In a world of our own (a bicycle-parts depot), through the real reader; each rule with what
+message, and Québec French's "pis" (then) from pair YY's household writer; and, from pair ZZ's
+Indonesian English (after its first measurement), the closing "ya" ("... ya pak"; "would ya" stays
+a request tag), "tolong", "dus", "minimal", "take 2 off". In a world of our own (a bicycle-parts depot), through the real reader; each rule with what
 stays as said or refused."""
 from __future__ import annotations
 
@@ -112,6 +114,12 @@ def test_english_order_is_read_by_the_grammar_as_before() -> None:
     ("move 2 tyre from inbound to dock rapidinho pfv", "move 2 tyre from inbound to dock"),
     ("move 2 tyre from inbound to dock pis empty rack A", "move 2 tyre from inbound to dock, then empty rack A"),
     ("move 2 tyre from inbound to dock por favor", "move 2 tyre from inbound to dock"),
+    # Indonesian English (pair ZZ): the closing "ya" ("ya pak", "ya kak"), "tolong", "dus", "minimal"
+    ("kak tolong add 6 dus chain to dock ya", "add 6 chain to dock"),
+    ("move 5 chain from inbound to dock ya pak. makasih", "move 5 chain from inbound to dock"),
+    ("dock tyre minimal 4 ya bu", "dock should have at least 4 tyre"),
+    ("dock tyre take 2 off ya", "take 2 tyre off dock"),
+    ("pagi pak, siap. move 5 chain from inbound to dock wkwk", "move 5 chain from inbound to dock"),
 ])
 def test_japanese_and_brazilian_talk_and_forms(said: str, plain: str) -> None:
     _same(said, plain)
@@ -125,3 +133,7 @@ def test_an_honorific_on_a_robot_is_that_robot_only() -> None:
 def test_wa_after_no_name_stays_unread() -> None:
     with pytest.raises(PipflowError, match="wa"):
         _read("move wa 3 chain from inbound to dock")
+
+
+def test_would_ya_stays_a_request_tag() -> None:
+    _same("move 5 chain from inbound to dock would ya", "move 5 chain from inbound to dock")

@@ -87,6 +87,8 @@ GREETINGS = frozenset({"hi", "hello", "hey", "hiya", "heya", "howdy", "morning",
                        "dzieki", "dziekuje", "czesc",
                        # Brazilian Portuguese ("bom dia pessoal": good morning, folks; "oi", "olá": hi)
                        "oi", "ola", "bom", "boa",
+                       # Indonesian ("pagi pak": morning; "selamat pagi")
+                       "pagi", "selamat",
                        # Japanese ("Ohayo gozaimasu": good morning; "otsukaresama": thanks for the work)
                        "ohayo", "ohayou", "gozaimasu", "otsukaresama", "otsukare", "konnichiwa", "arigato",
                        "arigatou",
@@ -150,6 +152,10 @@ CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "
                      "davai", "bratan", "spasibo", "srochno",
                      # Japanese ("..., hai": yes; "arigato": thanks; "sumimasen": excuse me)
                      "hai", "arigato", "arigatou", "sumimasen",
+                     # Italian ("..., grazie": thanks; "subito": at once; "dai": come on; "mannaggia": dismay)
+                     "grazie", "subito", "dai", "mannaggia", "allora",
+                     # Indonesian ("..., makasih": thanks; "wkwk": laughter; "pak", "kak", "bu": to the reader)
+                     "makasih", "wkwk", "wkwkwk", "pak", "kak", "bu", "siap",
                      # Colombian Spanish ("..., parce": mate; "..., listo?": OK?)
                      "parce", "parcero", "listo",
                      # Québec French ("..., câline": darn; "..., tsé": you know; "..., genre": like)
@@ -710,6 +716,11 @@ INTERJECTIONS = frozenset({
     "davai", "srochno", "koroche", "nu", "bratan", "normalno", "ladno", "spasibo", "privet", "poka",
     # Japanese ("Sumimasen, ...": excuse me; "hai": yes; "ano": um; "ohayo": good morning)
     "sumimasen", "hai", "ano", "ohayo", "ohayou", "otsukaresama", "otsukare", "arigato", "arigatou",
+    # Italian and Neapolitan ("Allora, ...": so; "dai": come on; "uè": hey; "subito": at once; "mannaggia",
+    # "madonna": dismay; "jamme": let's go; "ecco": there)
+    "allora", "dai", "ue", "subito", "mannaggia", "jamme", "ecco", "grazie", "prego", "basta", "va", "bene",
+    # Indonesian ("Pak, ...", "kak", "bu": to whoever reads; "siap": ready; "wkwk": laughter; "oke", "sip": OK)
+    "pak", "bu", "kak", "mas", "mbak", "siap", "wkwk", "wkwkwk", "oke", "sip", "makasih",
     # Colombian Spanish ("Ay, ...", "parce": mate; "listo": ready, OK; "dale": go on; "uy")
     "ay", "uy", "parce", "parcero", "listo", "dale",
     # Québec French ("Bon, ...": well; "genre": like; "tsé": you know; "câline": darn; "voyons": come on)

@@ -211,6 +211,34 @@ def put_on_as_switch(words: list[str], world: dict, index: dict, notes: list[str
     return out
 
 
+#: units said after a setting's number ("put the oven at 180 degrees", "at 22 gradi")
+_SETTING_UNITS = {"degrees", "degree", "gradi", "c", "celsius"}
+
+
+def setting_as_switch(words: list[str], world: dict, index: dict, notes: list[str]) -> list[str]:
+    """The words with "put / set / turn <a thing that switches> at / to <number>" ("put the oven at
+    180", "set the aircon to 22 degrees": Italian "metti il forno a 180") read as switching it on: a
+    setting is given to a thing that is on, and the home model has on and off, no dial. Only where
+    the clause ends after the number (and its unit)."""
+    out: list[str] = []
+    k = 0
+    while k < len(words):
+        w = words[k]
+        end = _switching_phrase(words, _after_determiners(words, k + 1), world, index) \
+            if w in ("put", "set", "turn") else 0
+        at = end + 1 if end and words[end:end + 1] in (["at"], ["to"]) else 0
+        stop = at + 1 + (at + 1 < len(words) and words[at + 1] in _SETTING_UNITS) if at and words[at:at + 1] \
+            and words[at].isdigit() else 0
+        if stop and (stop >= len(words) or words[stop] in _CLAUSE_END | {","}):
+            out += ["switch", "on"] + words[k + 1:end]
+            notes.append(f"'{' '.join(words[k:stop])}' read as switching it on (a setting is given to what is on)")
+            k = stop
+            continue
+        out.append(w)
+        k += 1
+    return out
+
+
 def _fixed(name: list[str], world: dict, index: dict) -> bool:
     """Whether the words name only things that stay where they are (none may be picked up)."""
     things = index.get(tuple(name)) or []

@@ -18,7 +18,8 @@ reading is one two people would agree on:
 * the verb comes at once after them, is one that takes a thing (and is no adjective as well:
   "jug clean" may say how the jug is), and lacks its object: what follows it is a particle, a
   place word or the clause's end, never a thing; with a pronoun, the clause is only the thing and
-  a comma, and the pronoun is "it" or "them" at once after the verb.
+  a comma (or nothing: "the frigo close it", Italian "il frigo chiudilo"), and the pronoun is "it" or
+  "them" at once after the verb, the thing opening its sentence.
 
 Anything else is left as said, and refused as before.
 """
@@ -133,6 +134,15 @@ def fronted_objects(tags: list[Tag]) -> tuple[list[Tag], list[str]] | None:
                 phrase = _where_as_source(phrase)
             out[k:v + 1] = out[v - negated:v + 1] + phrase + out[end:end + also]
             moved.append(said)
+        elif (takes and not negated and not also and v + 1 < len(out) and out[v + 1].cls == "IT"
+              and out[v + 1].words in ("it", "them") and (k == 0 or out[k - 1].cls in BREAKS)
+              and _lacks_object(out, v + 1)):
+            # "The frigo close it after", "the pallone bring it to his bed" (Italian "il frigo chiudilo"):
+            # the pronoun at once after the verb stands for the thing named first, as with a comma
+            moved.append(f"{words} {out[v].words} {out[v + 1].words}")
+            if out[v].cls in MOVING and v + 2 < len(out) and out[v + 2].cls in TARGETS:
+                phrase = _where_as_source(phrase)
+            out[k:v + 2] = [out[v]] + phrase
         elif (v + 2 < len(out) and out[v].cls == "COMMA" and out[v + 1].cls in VERBS and out[v + 2].cls == "IT"
               and out[v + 2].words in ("it", "them") and (k == 0 or out[k - 1].cls in BREAKS)
               and _lacks_object(out, v + 2)):

@@ -14,10 +14,9 @@ from pipflow.language.english import common_word
 from pipflow.household.language.beside import beside_as_where
 from pipflow.household.language.colloquial import colloquial
 from pipflow.household.language.corrections import corrected
-from pipflow.household.language.romance import adjective_after, of_as_where
 from pipflow.household.language.dialect import (bring_in, cut_as_switch, make_as_switch, on_off_as_verbs,
-                                                open_close_as_switch, particle_before_exception, put_on_as_switch,
-                                                patois_in_home, scots_as_english, them_as_those)
+                                                open_close_as_switch, particle_before_exception, patois_in_home,
+                                                put_on_as_switch, scots_as_english, setting_as_switch, them_as_those)
 from pipflow.household.language.headwords import named_again
 from pipflow.household.language.grammar import NOUN_DUAL
 from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
@@ -30,6 +29,7 @@ from pipflow.household.language.rewrites import (caused, closed_again, given, he
                                                  particles, same_for, so_before_an_order, wherever_they_belong,
                                                  without_manner)
 from pipflow.household.language.ones import one_as_kind
+from pipflow.household.language.romance import adjective_after, of_as_where
 from pipflow.household.language.roomnames import where_as_name
 from pipflow.household.language.tokens import PUNCT, Tag
 from pipflow.household.language.typos import (determiner_slip, known_word, meaning_of, transposition_of, typo_of,
@@ -135,7 +135,8 @@ def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: l
     words = heat_purpose(caused(given(me_as_where_the_speaker_is(words, index, notes), notes), notes), notes)
     words = closed_again(wherever_they_belong(words, notes), notes)
     words = make_as_switch(cut_as_switch(words, world, index, notes), world, index, notes)
-    words = on_off_as_verbs(put_on_as_switch(words, world, index, notes), world, index, notes)
+    words = on_off_as_verbs(put_on_as_switch(setting_as_switch(words, world, index, notes), world, index, notes),
+                            world, index, notes)
     words = bring_in(open_close_as_switch(particle_before_exception(words, notes), world, index, notes), index, notes)
     words = beside_as_where(named_again(them_as_those(words, index, notes), index, notes), world, index, notes)
     return particles(words, lambda x: x.isalpha() and not known_word(x, index, vocab), notes)

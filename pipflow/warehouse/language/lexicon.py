@@ -359,6 +359,14 @@ _TAGALOG_PARTICLE = re.compile(r"\s*\b(?:" + "|".join(TAGALOG_PARTICLES) + r")\b
 #: Japanese politeness said in English orders ("... please move, onegaishimasu", "yoroshiku ne",
 #: "OK desu", "..., hai"): please, thank you in advance, the copula, yes; nothing of the order
 _JAPANESE_POLITE = re.compile(r"\s*\b(?:onegai\s*shimasu|onegai|yoroshiku|kudasai|desu|hai)\b", re.IGNORECASE)
+#: Indonesian's closing "ya" ("... to promo ya", "... ya pak", "ya kak": OK?, said to the reader),
+#: never after a request tag's modal ("... would ya": you)
+_INDONESIAN_YA = re.compile(r"(?<!would)(?<!could)(?<!will)(?<!can)(?<!wont)(?<!thank)\s+ya"
+                            r"(?:\s+(?:pak|bu|kak|mas|mbak|bos|gan))?\b(?=\s*(?:[.,;:!?()]|$))", re.IGNORECASE)
+#: Indonesian "tolong", "mohon" (please) before an order
+_INDONESIAN_PLEASE = re.compile(r"\b(?:tolong|mohon)\b", re.IGNORECASE)
+#: "minimal 10", "maksimal 8" (Indonesian, Dutch "minimaal"): at least, at most, before a count
+_MINIMAL = re.compile(r"\b(minimal|maksimal|maximal)(?=\s+\d)", re.IGNORECASE)
 #: Japanese honorifics on a name ("Gonta-kun", "Tanaka-san"): the one named
 _HONORIFIC = re.compile(r"\b([a-z][a-z0-9]*)-(?:san|kun|chan|sama)\b", re.IGNORECASE)
 #: Tagalog's object marker before a count ("transfer ng 3 X": transfer 3 X)
@@ -1535,7 +1543,10 @@ class Lexicon:
         command = _PARTICLE.sub(left_out, _CAN_TAG.sub(left_out, command))
         command = _TAGALOG_PARTICLE.sub(left_out, _TAGALOG_REQUEST.sub(unprefixed, command))
         command = _TAGALOG_MARKER.sub(left_out, command)
-        command = _JAPANESE_POLITE.sub(left_out, command)
+        command = _JAPANESE_POLITE.sub(left_out, _INDONESIAN_YA.sub(left_out, command))
+        command = _INDONESIAN_PLEASE.sub(lambda m: m.group(0) if self._names_exactly(m.group(0).lower()) else "please",
+                                         command)
+        command = _MINIMAL.sub(lambda m: "minimum" if m.group(1).lower() == "minimal" else "maximum", command)
         command = re.sub(r"(^|[.!?;:\n])(\s*),", r"\1\2", command)   # "Hai, move ...": no comma opens a sentence
         command = _HONORIFIC.sub(lambda m: m.group(0) if self._names_exactly(m.group(0).lower()) else m.group(1), command)
         command = _GO_AND.sub("", command)

@@ -265,6 +265,9 @@ def _parts(span: list[Tok]) -> _Said | None:
             said.joined = True
         elif word == "both":
             said.both = True
+        elif word in ("off", "out", "away") and said.amounts and said.amounts[-1][0] == part - 1 \
+                and [(op, v.value) for op, v in said.verbs] == [("move", "take")]:
+            said.verbs = [("remove", said.verbs[0][1])]   # "pickface sabun take 2 off": take 2 out
         elif word == "more" and said.amounts and said.amounts[-1][0] == part - 1:
             said.verbs.append(("add", t))
         elif phrase is not None:
