@@ -68,6 +68,8 @@ def goal(command: str, world: dict) -> dict:
     ("take the blanket to the table por favor", "take the blanket to the table"),
     ("Ay, take the blanket to the table, listo?", "take the blanket to the table"),
     ("Allora, take the blanket to the table. Grazie", "take the blanket to the table"),
+    ("Ela, take the blanket to the table, efharisto", "take the blanket to the table"),
+    ("Re paidia, take the blanket to the table. Endaxi?", "take the blanket to the table"),
     # a setting given to a thing that switches ("put the oven at 180": Italian "metti il forno a 180")
     ("put the light of the hall at 3", "switch on the light of the hall"),
     ("set the light of the hall to 20 degrees", "switch on the light of the hall"),

@@ -8,7 +8,8 @@ honorifics ("onegaishimasu", "yoroshiku ne", "OK desu", "Taro-kun, ..."), the to
 "push" as a verb of moving, "in this one:" before the job it announces, "galera" opening a
 message, and Québec French's "pis" (then) from pair YY's household writer; and, from pair ZZ's
 Indonesian English (after its first measurement), the closing "ya" ("... ya pak"; "would ya" stays
-a request tag), "tolong", "dus", "minimal", "take 2 off". In a world of our own (a bicycle-parts depot), through the real reader; each rule with what
+a request tag), "tolong", "dus", "minimal", "take 2 off"; and from pair AA's Flemish English, "aub",
+"dank u", "stuks", "st." and Flemish talk. In a world of our own (a bicycle-parts depot), through the real reader; each rule with what
 stays as said or refused."""
 from __future__ import annotations
 
@@ -120,6 +121,11 @@ def test_english_order_is_read_by_the_grammar_as_before() -> None:
     ("dock tyre minimal 4 ya bu", "dock should have at least 4 tyre"),
     ("dock tyre take 2 off ya", "take 2 tyre off dock"),
     ("pagi pak, siap. move 5 chain from inbound to dock wkwk", "move 5 chain from inbound to dock"),
+    # Flemish English (pair AA): "aub" / "a.u.b." (please), "dank u", "ff", "seffens", "allez", "stuks", "st."
+    ("ff 4 chain from inbound to dock aub", "move 4 chain from inbound to dock"),
+    ("empty rack A a.u.b.", "empty rack A"),
+    ("Allez, move 2 st. chain from inbound to dock, seffens. dank u", "move 2 chain from inbound to dock"),
+    ("move 4 stuks chain from inbound to dock", "move 4 chain from inbound to dock"),
 ])
 def test_japanese_and_brazilian_talk_and_forms(said: str, plain: str) -> None:
     _same(said, plain)

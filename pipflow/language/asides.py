@@ -87,6 +87,8 @@ GREETINGS = frozenset({"hi", "hello", "hey", "hiya", "heya", "howdy", "morning",
                        "dzieki", "dziekuje", "czesc",
                        # Brazilian Portuguese ("bom dia pessoal": good morning, folks; "oi", "olá": hi)
                        "oi", "ola", "bom", "boa",
+                       # Greek ("Re paidia": hey, kids; "kalimera")
+                       "re", "kalimera", "kalispera",
                        # Indonesian ("pagi pak": morning; "selamat pagi")
                        "pagi", "selamat",
                        # Japanese ("Ohayo gozaimasu": good morning; "otsukaresama": thanks for the work)
@@ -123,6 +125,8 @@ ADDRESSEES = frozenset({"all", "everyone", "everybody", "team", "folks", "guys",
                         "dia", "tarde", "noite", "pessoal", "galera", "gente",
                         # Gulf Arabic, said in English on a floor in the Gulf ("habibi": my dear)
                         "habibi", "habibti",
+                        # Greek ("re paidia": kids)
+                        "paidia",
                         # Vietnamese ("anh em", "cac ban": you all)
                         "em", "cac", "ban"})
 
@@ -152,6 +156,10 @@ CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "
                      "davai", "bratan", "spasibo", "srochno",
                      # Japanese ("..., hai": yes; "arigato": thanks; "sumimasen": excuse me)
                      "hai", "arigato", "arigatou", "sumimasen",
+                     # Greek ("..., efharisto": thanks; "endaxi?": OK?; "parakalo": please)
+                     "efharisto", "efcharisto", "endaxi", "entaxi", "parakalo",
+                     # Flemish ("..., seffens": right away; "dank u", "merci": thanks; "amai", "voilà")
+                     "seffens", "amai", "voila", "allez",
                      # Italian ("..., grazie": thanks; "subito": at once; "dai": come on; "mannaggia": dismay)
                      "grazie", "subito", "dai", "mannaggia", "allora",
                      # Indonesian ("..., makasih": thanks; "wkwk": laughter; "pak", "kak", "bu": to the reader)
@@ -716,6 +724,12 @@ INTERJECTIONS = frozenset({
     "davai", "srochno", "koroche", "nu", "bratan", "normalno", "ladno", "spasibo", "privet", "poka",
     # Japanese ("Sumimasen, ...": excuse me; "hai": yes; "ano": um; "ohayo": good morning)
     "sumimasen", "hai", "ano", "ohayo", "ohayou", "otsukaresama", "otsukare", "arigato", "arigatou",
+    # Greek in Latin letters ("Ela, ...": come on; "kalimera": good morning; "endaxi": OK; "efharisto":
+    # thanks; "parakalo": please)
+    "ela", "kalimera", "kalispera", "endaxi", "entaxi", "efharisto", "efcharisto", "parakalo", "oriste",
+    # Flemish ("Allez, ...": come on; "amai": wow; "voilà"; "seffens": right away; "ff": just a moment;
+    # "goeiemorgen": good morning; "dank u": thank you)
+    "allez", "amai", "voila", "seffens", "ff", "goeiemorgen", "goedemorgen", "dank", "merci",
     # Italian and Neapolitan ("Allora, ...": so; "dai": come on; "uè": hey; "subito": at once; "mannaggia",
     # "madonna": dismay; "jamme": let's go; "ecco": there)
     "allora", "dai", "ue", "subito", "mannaggia", "jamme", "ecco", "grazie", "prego", "basta", "va", "bene",

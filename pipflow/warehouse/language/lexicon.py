@@ -106,8 +106,11 @@ _FOR_EACH_OF = re.compile(rf"\b({_NUMBER})\s+((?:[a-z][a-z0-9_-]*\s+){{1,3}}?)fo
 #: load, as trades say), "all told" (in total), "keep it well away from P" (away from)
 IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before a word in lower case or a
           # digit ends no sentence (before a capital it may: "must be 10 pal. Only day shift robots")
-          (re.compile(r"\b(pal|pall|pals|plt|plts|pcs|pc|ctn|ctns|min|max|approx|qty)\.(?=\s+(?-i:[a-z0-9])|,)",
+          (re.compile(r"\b(pal|pall|pals|plt|plts|pcs|pc|ctn|ctns|min|max|approx|qty|st)\.(?=\s+(?-i:[a-z0-9])|,)",
                       re.IGNORECASE), r"\1"),
+          # Dutch "a.u.b." / "aub" (alstublieft: please) and "dank u" (thank you), said in English orders
+          (re.compile(r"(?<![\w.])a\.?u\.?b\.?(?![\w])", re.IGNORECASE), "please"),
+          (re.compile(r"\bdank\s+u\b", re.IGNORECASE), "thanks"),
           # Spanish and Portuguese "please" ("por favor", "por favour"), said in English orders
           (re.compile(r"\bpor\s+(?:favor|favour)\b", re.IGNORECASE), "please"),
           # "EUR pal.", "6 pal water": pallets (a unit word; "pal" alone elsewhere may be a friend)
