@@ -190,8 +190,8 @@ def put_on_as_switch(words: list[str], world: dict, index: dict, notes: list[str
     follow it ("put on the radio", "put off the fan" as Indian and Nigerian English say it):
     "put the radio on" is read already, "put the telly off" (the clause ending there) is switching
     it off too, "put the light" (a fixed thing that switches, no place said; Spanish "poner la
-    luz") is switching it on, and "put on the sweater" (no switch) or "put on the trestle" (a place, with its
-    thing said before) keep "put" as placing. A note says so."""
+    luz") is switching it on, and "put on the sweater" (no switch) or "put on the trestle" (a
+    place, with its thing said before) keep "put" as placing. A note says so."""
     out = list(words)
     for k, w in enumerate(words):
         if w == "put" and k + 1 < len(words) and words[k + 1] in _SWITCH_PARTICLES \

@@ -1,19 +1,18 @@
 """Noun phrases said in the order of Spanish, Portuguese, French and Italian.
 
-Where a thing is, said with "of" as those languages say it ("the dishes of
-the dining table", "the ruana of the sofa to our bed": "los platos de la mesa", "la ruana del
-sofá"): the place a thing lies in or on, named after it with "of", read as the where English says.
-In a move that then says where to ("to" after the place, or "in" / "on" after a verb of moving),
-the place is where the thing comes from ("take the ruana of the sofa to our bed": from the sofa);
-elsewhere it is where the thing is ("wash the dishes of the dining
-table": in it). Only after a name of a thing or a category of the home and before a place that
-holds things, and never inside a name the home itself has ("the bed of sofia", "the light of the
-dining"): "the ruana of my mother" (a person) keeps its "of".
+Where a thing is, said with "of" as those languages say it ("the dishes of the dining table", "the
+ruana of the sofa to our bed": "los platos de la mesa", "la ruana del sofá"): the place a thing lies
+in or on, named after it with "of", read as the where English says. In a move that then says where
+to ("to" after the place, or "in" / "on" after a verb of moving), the place is where the thing comes
+from ("take the ruana of the sofa to our bed": from the sofa); elsewhere it is where the thing is
+("wash the dishes of the dining table": on it). Only after a name of a thing or a category of the
+home and before a place that holds things, and never inside a name the home itself has ("the bed of
+sofia", "the light of the dining"): "the ruana of my mother" (a person) keeps its "of".
 
 An adjective of colour or of dirt said after the thing ("the dishes dirty of the table", "the towels
 white in the line": "los platos sucios") is read before it, where English says it, only where a
 where or a relative clause follows it in the noun phrase, and never where the clause's verb could
-make the thing so or keeps it so ("wash the plates clean in the sink", "leave the cups dirty"):
+make the thing so or keep it so ("wash the plates clean in the sink", "leave the cups dirty"):
 there the adjective may be what the verb does, and it stays as said."""
 from __future__ import annotations
 
