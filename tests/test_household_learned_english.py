@@ -12,6 +12,7 @@ import pytest
 from pipflow.errors import TranslationError
 from pipflow.household.language.translator import translate
 from pipflow.household.world import world_from_text
+from tests.readings import household_goal as goal
 
 FLAT = """
 domain: household
@@ -44,10 +45,6 @@ robots:
 @pytest.fixture(scope="module")
 def flat() -> dict:
     return world_from_text(FLAT, "learned-flat.yaml")
-
-
-def goal(command: str, world: dict) -> dict:
-    return {k: v for k, v in translate(command, world)["goal"].items() if v}
 
 
 @pytest.mark.parametrize("said, plain", [

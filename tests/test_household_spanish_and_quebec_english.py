@@ -18,6 +18,7 @@ import pytest
 from pipflow.errors import PipflowError
 from pipflow.household.language.translator import translate
 from pipflow.household.world import world_from_text
+from tests.readings import household_goal as goal
 
 HOUSE = """
 domain: household
@@ -47,10 +48,6 @@ robots:
 @pytest.fixture(scope="module")
 def house() -> dict:
     return world_from_text(HOUSE, "accents-house.yaml")
-
-
-def goal(command: str, world: dict) -> dict:
-    return {k: v for k, v in translate(command, world)["goal"].items() if v}
 
 
 @pytest.mark.parametrize("said, plain", [

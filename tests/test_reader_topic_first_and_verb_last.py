@@ -17,6 +17,7 @@ import pytest
 
 from pipflow.errors import PipflowError
 from pipflow.warehouse.language.translator import understand
+from tests.readings import assert_warehouse_alike
 
 DEPOT = {
     "name": "partsdepot",
@@ -44,9 +45,7 @@ def _read(said: str) -> dict:
 
 
 def _same(said: str, plain: str) -> None:
-    got, want = _read(said), _read(plain)
-    assert got["goal"] == want["goal"]
-    assert got.get("constraints") == want.get("constraints")
+    assert_warehouse_alike(said, plain, DEPOT)
 
 
 @pytest.mark.parametrize("said, plain", [

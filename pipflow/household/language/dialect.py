@@ -98,19 +98,13 @@ def scots_as_english(words: list[str], known: Callable[[str], bool], notes: list
     """The words with Scots words read as English (:data:`pipflow.language.scots.SCOTS`: "switch
     aff the telly", "bring my specs ben", "that yin as well") where the word is no word of the home
     or of the reader (``known``); "aw" is "all" before what it quantifies ("aw the lights") and
-    "too" after "an" at a clause's end ("the big sheet an aw"); "the morn" is tomorrow. Québec
-    French words said so are read as English too (:data:`_QUEBEC`: "pis" then, "ferme" close,
-    "réchauffe" heat), and "por favor" is "please"."""
+    "too" after "an" at a clause's end ("the big sheet an aw"); "the morn" is tomorrow."""
     out: list[str] = []
     k = 0
     while k < len(words):
         w, nxt = words[k], (words[k + 1] if k + 1 < len(words) else ".")
         if w == "the" and nxt == "morn":
             out.append("tomorrow")
-            k += 2
-            continue
-        if w == "por" and nxt in ("favor", "favour") and not known(w):   # Spanish and Portuguese "please"
-            out.append("please")
             k += 2
             continue
         if w in ("an", "and") and nxt == "aw" and (k + 2 >= len(words) or words[k + 2] in PUNCT):
@@ -120,15 +114,31 @@ def scots_as_english(words: list[str], known: Callable[[str], bool], notes: list
             continue
         said = "all" if w == "aw" and nxt in _ALL_OF and not known(w) else \
             SCOTS.get(w) if w not in _SCOTS_ALSO_ENGLISH and not known(w) else None
-        french = _QUEBEC.get(w) if said is None and not known(w) else None
-        if french is not None:   # "wash the pan pis put it away", "ferme the TV"
-            notes.append(f"'{w}' read as '{french}' (Québec French)")
-            out.append(french)
-        elif said is not None:
+        if said is not None:
             notes.append(f"'{w}' read as '{said}' (Scots)")
             out += _WRITTEN_OUT.get(said, said).split()
         else:
             out.append(w)
+        k += 1
+    return out
+
+
+def romance_words_as_english(words: list[str], known: Callable[[str], bool], notes: list[str]) -> list[str]:
+    """The words with Québec French words said in English read as English (:data:`_QUEBEC`: "wash
+    the pan pis put it away", "ferme the TV", "réchauffe the soup") and Spanish and Portuguese "por
+    favor" as "please", where the word is no word of the home or of the reader (``known``)."""
+    out: list[str] = []
+    k = 0
+    while k < len(words):
+        w, nxt = words[k], (words[k + 1] if k + 1 < len(words) else ".")
+        if w == "por" and nxt in ("favor", "favour") and not known(w):
+            out.append("please")
+            k += 2
+            continue
+        said = _QUEBEC.get(w) if not known(w) else None
+        if said is not None:
+            notes.append(f"'{w}' read as '{said}' (Québec French)")
+        out.append(said or w)
         k += 1
     return out
 

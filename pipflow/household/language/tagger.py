@@ -16,7 +16,8 @@ from pipflow.household.language.colloquial import colloquial
 from pipflow.household.language.corrections import corrected
 from pipflow.household.language.dialect import (bring_in, cut_as_switch, make_as_switch, on_off_as_verbs,
                                                 open_close_as_switch, particle_before_exception, patois_in_home,
-                                                put_on_as_switch, scots_as_english, setting_as_switch, them_as_those)
+                                                put_on_as_switch, romance_words_as_english, scots_as_english,
+                                                setting_as_switch, them_as_those)
 from pipflow.household.language.headwords import named_again
 from pipflow.household.language.grammar import NOUN_DUAL
 from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
@@ -126,7 +127,11 @@ def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: l
     """The command's words with its colloquial forms, constructions and particles read as the
     grammar's words (each rewrite notes what it read)."""
     words = patois_in_home(words_of(command), index, notes)
-    words = scots_as_english(words, lambda w: known_word(w, index, vocab), notes)
+
+    def known(word: str) -> bool:   # a word of the home or of the reader
+        return known_word(word, index, vocab)
+
+    words = romance_words_as_english(scots_as_english(words, known, notes), known, notes)
     words = of_as_where(adjective_after(words, index, notes), world, index, notes)
     words = where_as_name(one_as_kind(words, world, index, notes), index, notes, owners(world, words))
     words = owners_before_names(pronouns_as_owners(words, world, notes), world, notes)
