@@ -18,6 +18,16 @@ included) and the errors (the same token, the same position) are the same as wit
 warehouse command sets the Earley parse takes about a sixth of the time
 (``benchmarks/parse_speed.py``); both domains' readers use it.
 
+A parse that fails is remembered by the terminals it read up to and including the one it failed
+on (:class:`_DeadPrefixes`): the Earley sets up to a position depend on the terminals up to it
+and on nothing after it (the predictor here looks at the terminal at its own position, never
+further), so any later input that begins with those terminals fails on the same terminal with the
+same expected terminals, and is refused at once without parsing. The candidate readings of a
+refused command try many wordings that keep the words up to where it stopped: in the household
+sets about six failures in ten are such repeats. Only the error's ``token``, position, ``expected``
+and ``state`` are given again (``considered_rules`` would keep the failed parse's items alive; no
+caller reads it). Unexpected ends of input depend on the whole input and are not remembered.
+
 The filter works through the one attribute lark's predictor reads (``predictions``) and the one
 method it calls per position (``predict_and_complete``); the terminals of the parse in progress
 are kept per thread, so one parser serves parallel steps. Only parsers whose lexer hands over a
@@ -29,7 +39,11 @@ import threading
 from typing import Any
 
 from lark import Lark
+from lark.exceptions import UnexpectedToken
 from lark.parsers import earley
+
+#: failed prefixes kept per parser (about 60 bytes a terminal); all are forgotten when full
+DEAD_PREFIXES_KEPT = 4096
 
 
 class _Predictions:
@@ -73,17 +87,61 @@ def _can_begin(parser: earley.Parser, rule: Any, terminal: str | None) -> bool:
     return True
 
 
+class _DeadPrefixes:
+    """Terminal sequences known to fail, each with what its error said (see the module)."""
+
+    def __init__(self) -> None:
+        self._errors: dict[tuple, tuple[int, Any, Any]] = {}   # (start, *types[:k + 1]) -> (k, expected, state)
+        self._lengths: set[int] = set()
+        self._lock = threading.Lock()
+
+    def error_for(self, start: Any, tokens: list) -> UnexpectedToken | None:
+        """The error a parse of ``tokens`` would end in, if a remembered prefix begins them."""
+        types = tuple(token.type for token in tokens)
+        with self._lock:
+            lengths = sorted(self._lengths)
+        for length in lengths:
+            if length > len(types):
+                break
+            known = self._errors.get((start, *types[:length]))
+            if known is not None:
+                k, expected, state = known
+                return UnexpectedToken(tokens[k], set(expected), state=state)
+        return None
+
+    def remember(self, start: Any, tokens: list, error: UnexpectedToken) -> None:
+        """Keep the prefix up to the terminal ``error`` failed on (one of ``tokens``)."""
+        k = next((i for i, token in enumerate(tokens) if token is error.token), None)
+        if k is None:
+            return
+        with self._lock:
+            if len(self._errors) >= DEAD_PREFIXES_KEPT:
+                self._errors.clear()
+                self._lengths.clear()
+            self._errors[(start, *(token.type for token in tokens[:k + 1]))] = (k, frozenset(error.expected), error.state)
+            self._lengths.add(k + 1)
+
+
 class LookaheadEarley(earley.Parser):
-    """lark's Earley parser whose predictor looks at the next terminal (see the module)."""
+    """lark's Earley parser whose predictor looks at the next terminal, and which refuses at once
+    an input that begins like one that failed (see the module)."""
 
     _lookahead: threading.local
+    _dead: _DeadPrefixes
 
     def parse(self, lexer: Any, start: Any) -> Any:  # noqa: D102 - lark's own signature
+        tokens = list(lexer.lex(None))
+        known = self._dead.error_for(start, tokens)
+        if known is not None:
+            raise known
         state = self._lookahead
         outer = (getattr(state, "types", None), getattr(state, "i", 0))
-        state.types, state.i = [token.type for token in lexer.lex(None)], 0
+        state.types, state.i = [token.type for token in tokens], 0
         try:
             return super().parse(lexer, start)
+        except UnexpectedToken as error:
+            self._dead.remember(start, tokens, error)
+            raise
         finally:
             state.types, state.i = outer
 
@@ -105,5 +163,6 @@ def with_lookahead(parser: Lark) -> Lark:
     every = inner.predictions
     inner.__class__ = LookaheadEarley
     inner._lookahead = threading.local()
+    inner._dead = _DeadPrefixes()
     inner.predictions = _Predictions(inner, every)
     return parser

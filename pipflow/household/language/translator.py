@@ -19,6 +19,7 @@ import json
 
 from pipflow.errors import Refusal, TranslationError
 from pipflow.household.language.candidates import candidate_readings
+from pipflow.household.language.names import held
 from pipflow.household.language.parser import parse
 from pipflow.household.language.resolver import resolve
 from pipflow.household.world import members
@@ -198,13 +199,14 @@ def translate(command: str, world: dict) -> dict:
 
     A command refused as not understood carries up to three candidate readings
     (:mod:`pipflow.household.language.candidates`); none is acted on unchosen."""
-    try:
-        return _translate(command, world)
-    except TranslationError as exc:
-        offered = candidate_readings(command, world, exc, _translate)
-        if len(offered) == len(exc.candidates):
-            raise
-        raise TranslationError(str(exc), candidates=offered) from None
+    with held(world):   # the world's names stay as they are while the command is read
+        try:
+            return _translate(command, world)
+        except TranslationError as exc:
+            offered = candidate_readings(command, world, exc, _translate)
+            if len(offered) == len(exc.candidates):
+                raise
+            raise TranslationError(str(exc), candidates=offered) from None
 
 
 def _translate(command: str, world: dict, choose: dict[str, str] | None = None) -> dict:
