@@ -58,6 +58,48 @@ def test_every_short_input_parses_the_same_with_lookahead():
     assert parsed > 100  # the grammar accepts many of them (ambiguously): the comparison is not vacuous
 
 
+def _error(parser: Lark, types: tuple[str, ...]) -> tuple | None:
+    """What a failed parse says (its class, the position and the text of its token, the expected
+    terminals), or None when it parses."""
+    tokens = [Token(t, f"{t.lower()}{k}", start_pos=k) for k, t in enumerate(types)]
+    try:
+        parser.parse(tokens)
+    except UnexpectedInput as exc:
+        token = getattr(exc, "token", None)
+        return (type(exc).__name__, getattr(token, "start_pos", None), str(token),
+                sorted(getattr(exc, "expected", None) or ()))
+    return None
+
+
+class _Forgetful:
+    """A memory of failures that remembers nothing: the lookahead parser as it was before it."""
+
+    def error_for(self, start, tokens):
+        return None
+
+    def remember(self, start, tokens, error):
+        pass
+
+
+def test_an_input_that_begins_like_a_failed_one_fails_alike_without_parsing(monkeypatch):
+    plain, ahead = with_lookahead(_parser(SMALL)), with_lookahead(_parser(SMALL))
+    plain.parser.parser._dead = _Forgetful()
+    inputs = [types for n in range(1, 6) for types in itertools.product("ABCD", repeat=n)]
+    # the longer inputs first, then again the other way round: each failure is met both before
+    # and after the failures that share its beginning
+    for types in sorted(inputs, key=len, reverse=True) + inputs:
+        assert _error(ahead, types) == _error(plain, types), types
+    dead = ahead.parser.parser._dead
+    assert dead._errors, "no failure was remembered"
+    # a remembered beginning is answered without running lark's parser at all
+    failing = next(types for types in inputs if (_error(plain, types) or ("",))[0] == "UnexpectedToken")
+    longer = failing + ("A", "B")
+    want = _error(plain, longer)
+    monkeypatch.setattr(LookaheadEarley.__mro__[1], "parse", lambda *a, **k: pytest.fail("parsed again"))
+    assert _error(ahead, longer) == want
+    assert want[1] < len(failing)
+
+
 def test_with_lookahead_is_idempotent_and_filters_only_during_a_parse():
     parser = with_lookahead(_parser(SMALL))
     assert with_lookahead(parser) is parser
