@@ -132,7 +132,7 @@ ADDRESSEES = frozenset({"all", "everyone", "everybody", "team", "folks", "guys",
 
 
 #: a thanks that can close an order without a comma before it ("... to bay 2 ta")
-THANKS = frozenset({"thanks", "ta", "cheers", "thx", "ty", "tyvm", "thankyou", "dankie", "diolch", "merci", "asante",
+THANKS = frozenset({"thanks", "ta", "cheers", "xiexie", "thx", "ty", "tyvm", "thankyou", "dankie", "diolch", "merci", "asante",
                     "asanteni", "gracias", "dzieki", "dziekuje", "obrigada", "obrigado", "brigada", "brigado", "valeu",
                     "vlw"})
 #: who an order is said to, or a tag that closes it, without a comma before it ("... on dispatch
@@ -167,7 +167,10 @@ CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "
                      # Colombian Spanish ("..., parce": mate; "..., listo?": OK?)
                      "parce", "parcero", "listo",
                      # Québec French ("..., câline": darn; "..., tsé": you know; "..., genre": like)
-                     "caline", "tse", "genre"})
+                     "caline", "tse", "genre",
+                     # Mandarin in pinyin ("..., xie xie": thanks; "hao de": OK; "mei wenti": no problem;
+                     # "kuai dian": hurry)
+                     "xie", "xiexie", "hao", "de", "mei", "wenti", "kuai", "dian"})
 
 
 #: a request tag after an order ("... over to the shed would ya", "... could you"): it asks
@@ -741,6 +744,8 @@ INTERJECTIONS = frozenset({
     "bon", "genre", "tse", "caline", "voyons", "coudonc",
     # Korean chat: a cheer ("Fighting!", "hwaiting"), dismay ("aigoo"), "really" ("jinjja"), laughter ("kk")
     "fighting", "hwaiting", "aigoo", "aigo", "jinjja", "omo", "kk",
+    # Mandarin in pinyin ("Kuai dian, ...": hurry; "aiya": dismay; "hao de": OK; "xie xie": thanks)
+    "kuai", "dian", "aiya", "aiyo", "aiyah", "hao", "xie", "xiexie", "mei", "wenti",
     # a signpost of urgency ("Attention! swap ...")
     "attention"})
 

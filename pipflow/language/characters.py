@@ -252,9 +252,13 @@ _EXPRESSION_PARTS = "\U0001F3FB-\U0001F3FF\u200d\ufe0f\u2640\u2642"
 #: Korean chat's laughter and tears, typed as repeated jamo ("ㅋㅋ", "ㅎㅎ", "ㅠㅠ", "ㅜㅜ"): a run of
 #: two or more; one jamo alone may be a typo of a word, and stays refused
 _JAMO_FEELINGS = "\u314b\u314e\u315c\u3160"
+#: faces typed in ASCII (":)", ":-(", ";)", ":D", ":P", ":'(", "^^", "^_^", "T_T", ">_<", "xD"), each
+#: a word of its own (white space or a mark of a sentence's end around it): "10:30" and "(see 8)"
+#: are none, and "<3" is left to the refusal of "<" (it may say less than 3)
+_ASCII_FACES = r"(?<!\S)(?:[:;=]'?-?[()DPpOo/|]+|\^[_-]?\^|T[_.]T|>_<|[xX]D+)(?=\s|[.,!?]|$)"
 _EXPRESSION = re.compile("(?:[" + "".join(f"{chr(a)}-{chr(b)}" for a, b in _EXPRESSION_RANGES)
                          + "][" + _EXPRESSION_PARTS + "]*)+"
-                         + f"|[{_JAMO_FEELINGS}]{{2,}}")
+                         + f"|[{_JAMO_FEELINGS}]{{2,}}|" + _ASCII_FACES)
 #: a tilde that draws out the word it closes ("Thank you~", "please~~"), as East Asian chat types
 #: a friendly tone: only after a letter and before a space, a mark or the end; "2~3" (a range) and
 #: a tilde before a word stay refused
@@ -263,7 +267,7 @@ _DRAWN_OUT = re.compile(r"(?<=[A-Za-z])~+(?=[\s.,!?;:]|$)")
 
 def without_expressions(command: str) -> tuple[str, list[str]]:
     """The command with its pictographs of feeling (faces, hands, hearts: :data:`_EXPRESSION_RANGES`;
-    Korean jamo of laughter and tears, "ㅋㅋ", "ㅠㅠ") read as the end of a sentence, a tilde drawing
+    Korean jamo of laughter and tears, "ㅋㅋ", "ㅠㅠ"; faces typed in ASCII, ":)") read as the end of a sentence, a tilde drawing
     out a word ("you~") left out, and those marks, to be said as set aside. People end a
     message or a sentence with one ("dispatch is short again 🙄 send 4 more"); it holds no count,
     name or word of an order. Every other character outside the alphabet is still refused

@@ -280,7 +280,8 @@ class Builder:
             st = {"op": "handling", "things": things}
         elif kind == "keep":   # "leave the hoodie where it is"; "leave it alone", "don't touch it": as it is too
             stay = next((self.tag_of(x).words for x in self._tokens(node) if self._cls(x) == "STAY"), "")
-            st = {"op": "keep", "things": things, "as_is": self._has(node, "V_TOUCH") or stay in AS_IS}
+            st = {"op": "keep", "things": things, "as_is": self._has(node, "V_TOUCH") or stay in AS_IS,
+                  **({"there": True} if self._has(node, "THERE") else {})}
         elif kind == "empty":   # "empty the fridge onto the counter": everything in it
             place = self.place(self._sub(node, "place"))
             st = {"op": "put", "things": [{"words": f"everything in {place['words']}", "everything": True,

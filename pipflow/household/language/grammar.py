@@ -197,6 +197,7 @@ tend: @V_TEND @OUT? things | @V_TEND things @OUT
     | (place | @ROOMSAID) @IS @FULLOF things -> mess
 
 keep: @V_LEAVE things @STAY
+    | @V_LEAVE things @THERE
     | @DONOT @V_TOUCH things
 handling: sthings @IS (@INTENS | @TOO)* @HANDLING @FORONE?
         | sthings @TAKESTWO

@@ -511,6 +511,9 @@ INDEFINITE = {"a", "an", "a piece of", "a bit of", "an item of"}
 FILLER = {("um",), ("umm",), ("uh",), ("uhh",), ("uhm",), ("er",), ("erm",),   # hesitations, said aloud
           # New Zealand and Australian thanks and approval ("Thanks heaps", "Sweet as", "ka pai")
           ("thanks", "heaps"), ("cheers", "heaps"), ("sweet", "as"), ("ka", "pai"),
+          # Nigerian Pidgin and Yoruba: "oya" (come on), "sha" (anyway), "jare" (do), "ehn", "ehen",
+          # "na wa" (wow), "shey" / "shebi" opening a yes-no question ("Shey the gen is on?": is it?)
+          ("oya",), ("sha",), ("jare",), ("ehn",), ("ehen",), ("na", "wa"), ("shey",), ("shebi",),
           ("please",), ("kindly",), ("abeg",), ("biko",), ("just",), ("quickly",), ("now",), ("for", "me"), ("for", "us"), ("could", "you"),
           ("can", "you"), ("would", "you"), ("will", "you"), ("i", "need", "you", "to"), ("i", "want", "you", "to"),
           ("we", "need", "you", "to"), ("go", "ahead", "and"), ("go", "and"), ("hey",), ("robots",), ("team",),
@@ -619,7 +622,10 @@ MANNERS = {("in", "parallel"), ("at", "the", "same", "time"), ("at", "once"), ("
            ("together",), ("either", "way"),
            # a thing lifted by two: how the robots work (the team decides who), not what the home ends like
            ("between", "you"), ("between", "you", "both"), ("between", "the", "two", "of", "you"),
-           ("between", "them"), ("between", "the", "pair", "of", "you"), ("as", "a", "team")}
+           ("between", "them"), ("between", "the", "pair", "of", "you"), ("as", "a", "team"),
+           # how fast ("do it quick quick", West African English doubles a word to stress it)
+           ("quick",), ("quick", "quick"), ("fast",), ("fast", "fast"), ("sharp", "sharp"), ("quickly",),
+           ("real", "quick"), ("real", "fast"), ("really", "quick"), ("really", "fast")}
 MANNER_OBJECTS = {("both",), ("them",), ("it",), ("these",), ("those",), ("all",), ("everything",),
                   ("both", "of", "them"), ("all", "of", "them"), ("the", "two"), ("the", "lot"), ()}
 ORDER_OPENERS = {"first", "firstly", "start", "to", "with"}

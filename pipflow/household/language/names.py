@@ -170,7 +170,8 @@ def _add_parts(world: dict, index: dict[tuple[str, ...], list[dict]]) -> None:
 
     The plural of a last word that several things share names all of them ("both laptops" of
     maya_laptop and jordan_laptop, though a laptop charger has the word too, as a modifier; "the
-    desks"): the singular stays unread (which one is asked)."""
+    desks"), and so do things whose own name ends in that plural ("the plates" of big_plate,
+    side_plate and good_plates): the singular stays unread (which one is asked)."""
     owners: dict[str, set[tuple[str, str]]] = {}
     heads: dict[str, set[tuple[str, str]]] = {}
     for kind, table in (("object", world.get("objects") or {}), ("place", world.get("places") or {})):
@@ -186,8 +187,12 @@ def _add_parts(world: dict, index: dict[tuple[str, ...], list[dict]]) -> None:
                 or (w,) in PHRASES or w in FUNCTION_WORDS:
             continue
         for p in plurals(w):
-            if p != w and (p,) not in index and (p,) not in PHRASES and p not in owners:
-                index[(p,)] = [{"kind": kind, "name": name, "plural": True} for kind, name in sorted(things)]
+            # a thing named in the plural by that word ("good plates" beside "big plate" and "side
+            # plate"): one of them, not the only one "plates" names
+            plural_heads = heads.get(p, set()) if owners.get(p) == heads.get(p) else None
+            if p != w and (p,) not in index and (p,) not in PHRASES and (p not in owners or plural_heads):
+                index[(p,)] = [{"kind": kind, "name": name, "plural": True}
+                               for kind, name in sorted(things | (plural_heads or set()))]
     for w, things in owners.items():
         if w not in heads or len(things) != 1 or len(w) < 3 or not w.isalpha() or (w,) in index or (w,) in PHRASES \
                 or w in FUNCTION_WORDS or any(w in key for key in FILLER) or read_number([w], 0):

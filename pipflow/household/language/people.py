@@ -149,31 +149,63 @@ def owners_before_names(words: list[str], world: dict, notes: list[str]) -> list
 
 #: pronouns that say whose a thing is
 _POSSESSIVE_PRONOUNS = frozenset({"his", "her", "their"})
+#: words that begin a new clause, after which the people named before it are no longer its own
+_CLAUSE_BOUNDS = frozenset({",", ".", ";", "!", "?", "then", "but"})
+
+
+#: possessives a thing's owner is said by, before "own" ("his own bed", "my own cup")
+_OWN_AFTER = frozenset({"his", "her", "their", "my", "our", "your", "its"})
+
+
+def own_as_owned(words: list[str], world: dict, notes: list[str]) -> list[str]:
+    """ "Tunde's own plate", "his own bed": "own" after a possessive or one of the home's people
+    stresses whose the thing is and says nothing more; the words without it (a note says so)."""
+    if "own" not in words:
+        return words
+    people = owners(world, words)
+    out: list[str] = []
+    for k, w in enumerate(words):
+        if w == "own" and k and k + 1 < len(words) and (
+                words[k - 1] in _OWN_AFTER
+                or any(owner_said(words, k - len(who), people) == who for who in people if k >= len(who))):
+            notes.append(f"'{words[k - 1]} own': 'own' stresses whose it is (read as '{words[k - 1]}')")
+            continue
+        out.append(w)
+    return out
 
 
 def pronouns_as_owners(words: list[str], world: dict, notes: list[str]) -> list[str]:
     """ "wash kais lunchbox and put his footy on his bed": "his" / "her" / "their" before a thing
     is one of the home's people said before it in the command (:func:`owners`) where exactly one of
-    them owns a thing so named by the home's own words ("kai's footy", "kai's bed"); anything else
-    is left as said ("his bed" where no one was named, or where two of those named have a bed)."""
+    them owns a thing so named by the home's own words ("kai's footy", "kai's bed"), or where
+    exactly one of those who do is named in its own clause ("Tolu's uniform on her bed, Tunde's
+    jersey on his bed"); anything else is left as said ("his bed" where no one was named, or where
+    two of those named have a bed and its clause names neither or both)."""
     if not _POSSESSIVE_PRONOUNS & set(words):
         return words
     index = world_phrases(world)
     people = owners(world, words)
     out = list(words)
     named: list[tuple[str, ...]] = []
+    in_clause: list[tuple[str, ...]] = []   # the people named since the clause began
     k = 0
     while k < len(out):
         who = owner_said(out, k, people)
         if who is not None:
             named.append(who)
+            in_clause.append(who)
             k += len(who)
             continue
+        if out[k] in _CLAUSE_BOUNDS:
+            in_clause = []
         if out[k] in _POSSESSIVE_PRONOUNS:
             things = {(who, m) for who in set(named) for m in (3, 2, 1)
                       if tuple(who) + tuple(out[k + 1:k + 1 + m]) in index and k + m < len(out)}
             longest = max((m for _, m in things), default=0)
             whose = {who for who, m in things if m == longest}
+            if len(whose) > 1 and len(whose & set(in_clause)) == 1:
+                # "Tolu's uniform on her bed, Tunde's jersey on his bed": the one of them its own clause names
+                whose &= set(in_clause)
             if len(whose) == 1:
                 who = next(iter(whose))
                 notes.append(f"'{out[k]} {' '.join(out[k + 1:k + 1 + longest])}' read as {' '.join(who)}'s")

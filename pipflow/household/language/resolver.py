@@ -588,6 +588,8 @@ class Resolver:
             for n, _ in named:
                 if n not in self.world["objects"]:
                     raise TranslationError(f"'{words}': {n} is a place; it stays where it is whatever is done")
+                if st.get("there") and n in self.goal.inside:
+                    continue   # "put the fish in the freezer and leave it there": where the command puts it
                 self.put(n, self.world["objects"][n]["in"], words)
                 if st.get("as_is"):
                     self.keep_states(n, words)

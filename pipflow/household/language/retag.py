@@ -75,8 +75,8 @@ def act_before_noun(tags: list[Tag]) -> list[Tag]:
 
 
 def demonstratives(tags: list[Tag]) -> list[Tag]:
-    """ "That leftover curry has gone off": "that" opening a clause before a name (or a state word
-    and a name) is a determiner, like "the"; elsewhere it stays a relative ("the lamp that is on")
+    """ "That leftover curry has gone off": "that" opening a clause, or after a verb or "and", before
+    a name (or a state word and a name) is a determiner, like "the"; elsewhere it stays a relative ("the lamp that is on")
     or a conjunction ("make sure that ..."). Done here, not in the grammar: one more determiner
     there is one more alternative at every noun of every command."""
     out = list(tags)
@@ -85,8 +85,8 @@ def demonstratives(tags: list[Tag]) -> list[Tag]:
                 (k + 1 == len(out) or out[k + 1].cls in ("END", "COMMA")):
             out[k] = Tag("IT", t.value, t.words)   # "the hob is still on, can you sort that": the thing said
             continue
-        if t.cls != "THAT" or (k and out[k - 1].cls not in ("END", "COMMA") and not out[k - 1].cls.startswith("V_")):
-            continue   # "bin that scone": after a verb too, before a name
+        if t.cls != "THAT" or (k and out[k - 1].cls not in ("END", "COMMA", "AND") and not out[k - 1].cls.startswith("V_")):
+            continue   # "bin that scone": after a verb too, before a name; "the cup and that pan"
         j = k + 1
         while j < len(out) and out[j].cls in ("ADJ", "V_WARM", "V_CLEAN"):
             j += 1

@@ -28,7 +28,8 @@ def without_manner(words: list[str], notes: list[str]) -> list[str]:
             continue
         clause = words[start:k]
         body = clause[1:] if clause[:1] == ["do"] else clause
-        manner = next((m for m in MANNERS if len(m) <= len(body) and tuple(body[len(body) - len(m):]) == m), None)
+        manner = next((m for m in _MANNERS_LONGEST_FIRST if len(m) <= len(body) and tuple(body[len(body) - len(m):]) == m),
+                      None)
         if clause and manner is not None and tuple(body[:len(body) - len(manner)]) in MANNER_OBJECTS:
             notes.append(f"'{' '.join(clause)}' says how the steps run, not what the home should end like; "
                          "the plan decides the order")

@@ -23,7 +23,7 @@ from pipflow.household.language.grammar import NOUN_DUAL
 from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
 from pipflow.household.language.names import (first_words, longest_name, named_by_first_word, per_index,
                                               things_of_kind, world_phrases)
-from pipflow.household.language.people import owners, owners_before_names, pronouns_as_owners
+from pipflow.household.language.people import owners, owners_before_names, own_as_owned, pronouns_as_owners
 from pipflow.household.language.retag import (act_before_noun, copula_dropped, demonstratives, elided_it_is, left_lying,
                                               located, restated_order, without_hedges)
 from pipflow.household.language.rewrites import (caused, closed_again, given, heat_purpose, measures, or_under_negation,
@@ -134,7 +134,7 @@ def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: l
     words = romance_words_as_english(scots_as_english(words, known, notes), known, notes)
     words = of_as_where(adjective_after(words, index, notes), world, index, notes)
     words = where_as_name(one_as_kind(words, world, index, notes), index, notes, owners(world, words))
-    words = owners_before_names(pronouns_as_owners(words, world, notes), world, notes)
+    words = owners_before_names(pronouns_as_owners(own_as_owned(words, world, notes), world, notes), world, notes)
     words = so_before_an_order(same_for(colloquial(corrected(words, notes), notes), notes), notes)
     words = or_under_negation(measures(without_manner(words, notes), index, notes), notes)
     words = heat_purpose(caused(given(me_as_where_the_speaker_is(words, index, notes), notes), notes), notes)

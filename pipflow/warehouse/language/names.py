@@ -69,7 +69,7 @@ PACKAGING_WORDS = frozenset({
     "carton", "cartons", "roll", "rolls", "pack", "packs", "packet", "packets", "bundle", "bundles", "bag", "bags",
     "tub", "tubs", "bottle", "bottles", "reel", "reels", "tote", "totes", "drum", "drums", "tin", "tins", "jar",
     "jars", "sack", "sacks", "crates", "jug", "jugs", "sheet", "sheets", "length", "lengths", "coil", "coils",
-    "tray", "trays", "pc",
+    "tray", "trays", "pc", "spool", "spools", "pail", "pails", "bucket", "buckets",
     # the logistics abbreviations ("4 ctns", "2 plts"; "cx", Portuguese caixa and Spanish caja: box)
     "ctn", "ctns", "plt", "plts", "cx", "cxs",
     # Turkish "koli" (carton), "palet"; Russian "korobka" (box, "5 korobok", "2 korobki"), "sht" (pieces)

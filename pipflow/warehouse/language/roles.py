@@ -22,16 +22,20 @@ _FROM = frozenset({"from", "off"})
 _TO = frozenset({"to", "into", "onto"})
 _AT = frozenset({"at", "in", "on"})
 #: words that carry nothing of the order in such a span ("wa": Japanese's topic particle)
-_FILLERS = frozenset({"please", "the", "wa", POSS_MARK, "now", "today"})
+_FILLERS = frozenset({"please", "pls", "plz", "kindly", "the", "wa", POSS_MARK, "now", "today"})
 #: verbs of moving things from one place to another
 _MOVING = frozenset({"move", "bring", "send", "take", "carry", "transfer", "shift", "deliver", "relocate",
                      "ferry", "haul", "shuttle", "put"})
 #: words said for taking things out of a place, longest first
-_REMOVING = (("take", "out"), ("take", "away"), ("remove",))
+_REMOVING = (("take", "out"), ("take", "away"), ("remove",), ("cut",))
 #: words said for what a place lacks ("is missing 6 X on B", Portuguese "está faltando"): add it
 _LACKING = (("is", "missing"), ("are", "missing"), ("missing",))
 #: words said for the count a place should end with ("should be", "total N")
-_SETTING = (("should", "be"), ("must", "be"), ("should", "have"), ("must", "have"), ("total",))
+_SETTING = (("should", "be"), ("must", "be"), ("should", "have"), ("must", "have"), ("make", "it", "total"),
+            ("make", "total"), ("make", "it"), ("make",), ("total",))
+#: what the speaker thinks of how much a place holds, said right after the thing ("rack A resistor
+#: reel too many, take 6 off"): the reason for the order that follows, which says the count
+_APPRAISALS = (("too", "many"), ("too", "much"), ("very", "many"), ("very", "much"))
 #: verbs that change what a place holds of a thing, said with no count
 _CHANGING = frozenset({"double", "triple", "halve"})
 #: verbs that take everything out of a place
@@ -195,8 +199,8 @@ def _paired(said: _Said) -> bool:
     False where that is not one way."""
     if said.everything:
         return not said.products and not said.amounts
-    if not said.products:
-        return False
+    if not said.products:   # "packing clear": a place emptied needs no thing named
+        return not said.amounts and [op for op, _ in said.verbs] == ["empty"]
     if len(said.products) == 1:
         if len(said.amounts) > 1:
             return False
@@ -231,6 +235,12 @@ def _parts(span: list[Tok]) -> _Said | None:
             said.bare.append(t)
         elif t.kind == "name" and t.of == "product":
             said.products.append((part, t))
+            # "connector ctn", "connector ctn 4": the thing's unit said after it, with its count or none
+            k += _word_in(span, k + 1, COUNT_UNITS)
+        elif said.products and said.products[-1][0] == part - 1 and not said.amounts \
+                and any(said_at(span, k, words) for words in _APPRAISALS):
+            k += 2   # "resistor reel too many": why, not how many (no count said before it)
+            continue
         elif word in _FROM and nxt_place:
             said.sources.append(span[at])
             said.marks[id(span[at])] = t
@@ -266,8 +276,9 @@ def _parts(span: list[Tok]) -> _Said | None:
         elif word == "both":
             said.both = True
         elif word in ("off", "out", "away") and said.amounts and said.amounts[-1][0] == part - 1 \
-                and [(op, v.value) for op, v in said.verbs] == [("move", "take")]:
-            said.verbs = [("remove", said.verbs[0][1])]   # "pickface sabun take 2 off": take 2 out
+                and [(op, v.value) for op, v in said.verbs] in ([("move", "take")], [("remove", "cut")]):
+            # "pickface sabun take 2 off": take 2 out; "cut one third away"
+            said.verbs = [("remove", said.verbs[0][1])]
         elif word == "more" and said.amounts and said.amounts[-1][0] == part - 1:
             said.verbs.append(("add", t))
         elif phrase is not None:

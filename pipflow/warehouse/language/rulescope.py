@@ -163,7 +163,9 @@ class RuleScope:
         if self.budget and self.budget["left"]:  # units taken and not all shared out: still taken off
             self.statements.append({**self.budget["st"], "amount": {"count": self.budget["left"]}})
         self._shared_destination()
-        if self.pending_source and not any(st["op"] == "transfer" for st in self.statements):
+        if self.pending_source and not any(st["op"] == "transfer" and (st.get("from") or {}).get("names") == self.pending_source
+                                           for st in self.statements):
+            # "From P, move 2 X from Q to R": the moves say their own source; P would be dropped unread
             raise TranslationError(f"'from {', '.join(self.pending_source)}': nothing in the sentence is taken from there")
         # "Empty rack D and put its valves on rack B": what leaves the place goes first, then
         # the rest of it is emptied (else the move would find the place already empty)
