@@ -9,8 +9,16 @@ move that says its own source is refused, never dropped (it was: a misreading). 
 and Yoruba talk ("oya", "sha", "shey", "na wa o"), "do it quick quick", "that" after "and" as a
 determiner, "his own bed", "her bed" of the one its clause names, "leave X there" (where it is, or where the command puts it), and "the plates" naming
 every plate where one thing is called "good plates". Worlds of our own, through the real reader;
-each rule with what stays as said or refused."""
+And from pair CC's Thai English (after its first measurement): the polite particles "na", "ka",
+"krub", "jaa" closing a clause (several at once: "na ka"), "kor" (please), Thai talk ("kob khun",
+"mai pen rai", "reo reo"), "reduce" as a removal read by roles ("reduce to 2" stays a count
+wanted), the judgement anywhere before the verb ("X in P too much, ..."), and a count wanted again
+in the next clause ("P X make it 6, and Q Y 7"); and from its Turkish English, "open" / "close"
+after a thing that switches and does not open ("Deniz's lamp close please"), a fronted thing
+before "leave where it is" / "leave there", "After close the oven" (then). Each rule with what stays as said or refused."""
 from __future__ import annotations
+
+import copy
 
 import pytest
 
@@ -55,6 +63,16 @@ def _same(said: str, plain: str) -> None:
     ("rack A bolt 6 to intake xie xie", "move 6 bolt from rack A to intake"),
     ("rack A bolt 6 to intake, hao de :)", "move 6 bolt from rack A to intake"),
     ("kuai dian, rack A bolt 6 to intake ^^", "move 6 bolt from rack A to intake"),
+    # pair CC's Thai English
+    ("rack A bolt 6 to intake na ka", "move 6 bolt from rack A to intake"),
+    ("Kor add 5 bolt to outbound na", "add 5 bolt to outbound"),
+    ("intake washer too many already, take 3 out", "take 3 washer out of intake"),
+    ("bolt in rack A too much, reduce half ka", "take away half of the bolt from rack A"),
+    ("rack A bolt reduce 2", "take 2 bolt out of rack A"),
+    ("rack A bolt reduce to 2", "rack A should have 2 bolt"),
+    ("outbound washer make it 6 ka, and rack B bolt 7", "outbound should have 6 washer, rack B should have 7 bolt"),
+    ("outbound washer make it 6, rack B 7 bolt", "outbound should have 6 washer, rack B should have 7 bolt"),
+    ("Good morning na ka. rack A bolt 6 to intake, mai pen rai", "move 6 bolt from rack A to intake"),
 ])
 def test_chinese_english_orders_read_as_their_plain_english(said: str, plain: str) -> None:
     _same(said, plain)
@@ -65,6 +83,8 @@ def test_chinese_english_orders_read_as_their_plain_english(said: str, plain: st
     "rack A bolt 6 too many, take off",         # the count judged is no count to take
     "rack A and rack B clear bolt",             # two places: never read by roles
     "na ge forklift move 5 bolt to outbound",  # "that forklift": one of two, not guessed
+    "outbound washer make it 6, and rack B bolt",  # a count wanted again needs its count
+    "move 3 bolt from intake to outbound, rack B bolt 7",  # only a count wanted is repeated so
 ])
 def test_what_roles_cannot_place_stays_refused(said: str) -> None:
     with pytest.raises(PipflowError):
@@ -94,11 +114,14 @@ floor: {width: 14, height: 8}
 places:
   sink:      {x: 1.0, y: 1.0, width: 1.0, depth: 0.6, access: [1.5, 1.8], properties: [receptacle, sink]}
   table:     {x: 7.5, y: 1.0, width: 1.5, depth: 0.9, access: [8.2, 2.2], properties: [receptacle], words: [dining]}
-  cabinet:   {x: 11.0, y: 1.0, width: 1.0, depth: 0.5, access: [11.5, 1.8], properties: [receptacle]}
+  cabinet:   {x: 11.0, y: 1.0, width: 1.0, depth: 0.5, access: [11.5, 1.8], properties: [receptacle, openable],
+              state: {open: false}}
   storeroom: {x: 11.0, y: 5.0, width: 2.0, depth: 1.0, access: [12.0, 4.5], properties: [receptacle], words: [store]}
   counter:   {x: 4.0, y: 5.0, width: 2.0, depth: 0.6, access: [5.0, 4.4], properties: [receptacle]}
   ada_bed:   {x: 1.0, y: 6.5, width: 1.5, depth: 1.0, access: [1.5, 5.8], properties: [receptacle], words: [Ada's bed]}
   obi_bed:   {x: 3.5, y: 6.5, width: 1.5, depth: 1.0, access: [3.5, 5.8], properties: [receptacle], words: [Obi's bed]}
+  lamp:      {x: 10.0, y: 6.5, width: 0.3, depth: 0.3, access: [10.0, 5.8], properties: [toggleable], state: {on: true},
+              words: [Obi's lamp]}
   fan:       {x: 8.0, y: 6.0, width: 0.3, depth: 0.3, access: [8.0, 5.4], properties: [toggleable], state: {on: true}}
 objects:
   big_plate:   {in: table, mass: 1, properties: [pickupable, washable], state: {dirty: true}, words: [big plate]}
@@ -132,6 +155,12 @@ def house() -> dict:
     ("put Obi's jersey on his own bed", "put Obi's jersey on Obi's bed"),
     ("put Ada's uniform on her bed, Obi's jersey on his bed",
      "put Ada's uniform on Ada's bed, Obi's jersey on Obi's bed"),
+    # pair CC's Turkish English: the verb after its thing, "after" before a verb
+    ("Obi's lamp close please", "switch off Obi's lamp"),
+    ("the fan and Obi's lamp close", "switch off the fan and Obi's lamp"),
+    ("the palm oil leave where it is", "leave the palm oil where it is"),
+    ("the palm oil leave there", "leave the palm oil where it is"),
+    ("take the rice to the counter. After switch off the fan", "take the rice to the counter, then switch off the fan"),
 ])
 def test_nigerian_english_reads_as_its_plain_english(house: dict, said: str, plain: str) -> None:
     assert goal(said, house) == goal(plain, house)
@@ -141,6 +170,13 @@ def test_the_plural_of_a_shared_head_names_every_thing_of_it(house: dict) -> Non
     # "good plates" is one thing, but "the plates" are all three, not it alone
     assert set(goal("wash the plates", house)["state"]) >= {"big_plate", "side_plate", "good_plates"}
     assert set(goal("take the good plates to the table", house)["in"]["table"]) == {"good_plates"}
+
+
+def test_close_after_a_thing_that_opens_keeps_its_meaning(house: dict) -> None:
+    # the cabinet does not switch: "close" stays closing it, never switching
+    with pytest.raises(PipflowError):
+        translate("Obi's lamp close the cabinet", house)
+    assert goal("the cabinet close please", house) == goal("close the cabinet", house)
 
 
 def test_whose_bed_stays_unread_where_its_clause_names_both_owners(house: dict) -> None:
@@ -153,3 +189,12 @@ def test_leave_it_there_before_the_move_is_refused_not_guessed(house: dict) -> N
     # said first, "there" is where it is: the later move contradicts it
     with pytest.raises(PipflowError):
         translate("leave the palm oil there and put it on the counter", house)
+
+
+def test_a_word_added_to_the_home_between_commands_is_read(house: dict) -> None:
+    # the index of names is held fixed while one command is read, never across commands
+    home = copy.deepcopy(house)
+    with pytest.raises(PipflowError):
+        translate("take the groundnut oil to the counter", home)
+    home["objects"]["palm_oil"]["words"] = ["palm oil", "groundnut oil"]
+    assert goal("take the groundnut oil to the counter", home) == {"in": {"counter": ["palm_oil"]}}

@@ -170,7 +170,10 @@ CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "
                      "caline", "tse", "genre",
                      # Mandarin in pinyin ("..., xie xie": thanks; "hao de": OK; "mei wenti": no problem;
                      # "kuai dian": hurry)
-                     "xie", "xiexie", "hao", "de", "mei", "wenti", "kuai", "dian"})
+                     "xie", "xiexie", "hao", "de", "mei", "wenti", "kuai", "dian",
+                     # Thai ("..., kob khun ka": thank you; "jing jing": really; "na", "ka", "krub": polite
+                     # particles)
+                     "kob", "khun", "jing", "na", "ka", "kha", "krub", "khrub", "krap", "khrap", "jaa"})
 
 
 #: a request tag after an order ("... over to the shed would ya", "... could you"): it asks
@@ -746,6 +749,9 @@ INTERJECTIONS = frozenset({
     "fighting", "hwaiting", "aigoo", "aigo", "jinjja", "omo", "kk",
     # Mandarin in pinyin ("Kuai dian, ...": hurry; "aiya": dismay; "hao de": OK; "xie xie": thanks)
     "kuai", "dian", "aiya", "aiyo", "aiyah", "hao", "xie", "xiexie", "mei", "wenti",
+    # Thai ("Sawasdee ka, ...": hello; "kob khun": thank you; "jing jing": really; "mai pen rai": never
+    # mind; "reo reo": quickly; "na ka", "krub": polite particles)
+    "sawasdee", "sawatdee", "kob", "khun", "jing", "reo", "ka", "kha", "krub", "khrub", "krap", "khrap", "jaa",
     # a signpost of urgency ("Attention! swap ...")
     "attention"})
 

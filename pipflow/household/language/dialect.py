@@ -325,7 +325,12 @@ def open_close_as_switch(words: list[str], world: dict, index: dict, notes: list
         w = words[k]
         items = _listed(words, k + 1, world, index) if w in _OPEN_CLOSE else []
         kinds = {switch_only for _, _, switch_only in items}
-        if items and kinds == {True}:
+        if w in _OPEN_CLOSE and not items and _switches_said_before(words, k, world, index):
+            # "Deniz's lamp close please" (the verb after its thing, Turkish and Korean order)
+            out += ["switch", _OPEN_CLOSE[w]]
+            notes.append(f"'{w}' read as 'switch {_OPEN_CLOSE[w]}' (of a thing that switches and does not open, "
+                         "named before it)")
+        elif items and kinds == {True}:
             out += ["switch", _OPEN_CLOSE[w]]
             notes.append(f"'{w}' read as 'switch {_OPEN_CLOSE[w]}' (of a thing that switches and does not open)")
         elif len(kinds) == 2:   # each item with the verb its thing takes
@@ -342,6 +347,24 @@ def open_close_as_switch(words: list[str], world: dict, index: dict, notes: list
             out.append(w)
         k += 1
     return out
+
+
+#: what may close a clause after its verb ("the lamp close please", "the tv close, ...")
+_CLAUSE_ENDS = {",", ".", ";", "!", "?", "please", "pls", "and", "then", "also", "too", "now"}
+
+
+def _switches_said_before(words: list[str], k: int, world: dict, index: dict) -> bool:
+    """Whether the clause before ``k`` is only a list of things that switch and cannot be opened
+    (:func:`_listed`), and the clause ends after the word at ``k``."""
+    if k + 1 < len(words) and words[k + 1] not in _CLAUSE_ENDS:
+        return False
+    start = k
+    while start and words[start - 1] not in (",", ".", ";", "!", "?", "then"):
+        start -= 1
+    while start < k and words[start] in ("please", "pls", "and"):
+        start += 1
+    items = _listed(words, start, world, index) if start < k else []
+    return bool(items) and items[-1][1] == k and all(switch_only for _, _, switch_only in items)
 
 
 def _listed(words: list[str], k: int, world: dict, index: dict) -> list[tuple[int, int, bool]]:

@@ -50,7 +50,9 @@ TARGETS = {"TO", "IN", "ON", "INTO", "ONTO"}
 AS_WELL = {"also", "too"}
 #: what may follow a verb whose object was fronted: a particle, a word of where, the clause's end
 LACKING = {"ON", "OFF", "OUT", "IN", "TO", "AT", "BACK", "AWAY", "UP", "DOWN", "FROM", "SOMEWHERE",
-           "END", "COMMA", "AND", "THEN"}
+           "END", "COMMA", "AND", "THEN",
+           # "the lemon tree leave where it is", "the towels leave there"
+           "STAY", "THERE"}
 #: what ends the clause before: a fronted phrase opens a clause after one of these
 BREAKS = {"END", "EXCL"}
 JOINS = {"COMMA", "AND", "THEN"}

@@ -37,6 +37,11 @@ def without_manner(words: list[str], notes: list[str]) -> list[str]:
                 out.append(w)   # a sentence's end stays; a comma goes with the clause
             start = k + 1
             continue
+        if len(clause) > 1 and clause[0] in ("after", "afterwards") and (clause[1],) in PHRASES \
+                and PHRASES[(clause[1],)][0].startswith("V_"):
+            # "After close the oven" (Turkish "sonra kapat"): then; the order of the steps
+            notes.append(f"'{clause[0]}' before '{clause[1]}': the order of the steps; the plan decides it")
+            clause = clause[1:]
         clause = _without_inner_manner(clause, notes)
         # "close the pantry after lol": a filler closing the clause does not hide the word before it
         said_last = next((j for j in range(len(clause), 0, -1) if (clause[j - 1],) not in FILLER), 0)

@@ -72,7 +72,9 @@ FILLERS = {"the", "please", "kindly", "units", "unit", "pieces", "piece", "boxes
            "kabisa", "haraka", "tafadhali", "bana", "sasa",
            # Mexican Spanish said in English orders ("porfa move ...", "ahorita put ...", "oye, ..."):
            # please, right now, hey, then, well, come on ("ya" is "you" in "can ya": SPELLINGS)
-           "porfa", "porfavor", "ahorita", "oye", "luego", "pues", "bueno", "orale", "andale"}
+           "porfa", "porfavor", "ahorita", "oye", "luego", "pues", "bueno", "orale", "andale",
+           # Thai said in English orders ("Kor add 5 ...": may I have, please; "reo reo": quickly)
+           "kor", "reo"}
 #: words of talk of our lists: never a slip of a name ("hai" is no "hat")
 _TALK_WORDS = INTERJECTIONS | CLOSERS
 FILLERS |= PACKAGING_WORDS
@@ -353,8 +355,11 @@ WORD_ORDER = ((re.compile(rf"\bmore\s+({_NUMBER})(?!\s*(?:than|%|percent))", re.
 #: the clause, they say nothing of the order
 PARTICLES = ("lah", "leh", "lor", "hor", "meh", "liao", "sia", "ah", "ha", "la", "ar", "wor", "lo", "ga", "mah",
              # Japanese's closing "ne" and "yo" ("yoroshiku ne": OK?)
-             "ne", "yo")
-_PARTICLE = re.compile(r"\s+(?:" + "|".join(PARTICLES) + r")\b(?=\s*(?:[.,;:!?()]|$))", re.IGNORECASE)
+             "ne", "yo",
+             # Thai's polite and softening particles ("... to pickface na", "... ka", "na ka", "krub",
+             # "jaa"): the speaker's manners, nothing of the order
+             "na", "ka", "kha", "krub", "khrub", "krap", "khrap", "jaa", "ja", "naka")
+_PARTICLE = re.compile(r"(?:\s+(?:" + "|".join(PARTICLES) + r")\b)+(?=\s*(?:[.,;:!?()]|$))", re.IGNORECASE)
 #: Tagalog's honorific and softening particles in Taglish ("move po 3 X", "add naman 2 X"), said
 #: anywhere in a clause: politeness, nothing of the order
 TAGALOG_PARTICLES = ("po", "naman")

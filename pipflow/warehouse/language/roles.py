@@ -27,7 +27,7 @@ _FILLERS = frozenset({"please", "pls", "plz", "kindly", "the", "wa", POSS_MARK, 
 _MOVING = frozenset({"move", "bring", "send", "take", "carry", "transfer", "shift", "deliver", "relocate",
                      "ferry", "haul", "shuttle", "put"})
 #: words said for taking things out of a place, longest first
-_REMOVING = (("take", "out"), ("take", "away"), ("remove",), ("cut",))
+_REMOVING = (("take", "out"), ("take", "away"), ("remove",), ("cut",), ("reduce",))
 #: words said for what a place lacks ("is missing 6 X on B", Portuguese "está faltando"): add it
 _LACKING = (("is", "missing"), ("are", "missing"), ("missing",))
 #: words said for the count a place should end with ("should be", "total N")
@@ -93,16 +93,38 @@ def _sentence(sentence: list[Tok]) -> list[Tok]:
     out: list[Tok] = []
     k = 0
     said_before = False
+    wanted = False   # the clause before was read by roles as a count wanted
     while k <= len(sentence):
         end = next((j for j in range(k, len(sentence)) if sentence[j].kind == "punct"), len(sentence))
         clause = sentence[k:end]
         read = _read(clause, verbless=not said_before) if clause else None
+        if read is None and wanted:
+            read = _wanted_again(clause)
+        wanted = read is not None and _wants(read)
         out += clause if read is None else read
         said_before = said_before or any(t.kind == "num" or t.kind == "name" and t.of == "product" for t in clause)
         if end < len(sentence):
             out.append(sentence[end])
         k = end + 1
     return out
+
+
+def _wants(read: list[Tok]) -> bool:
+    """Whether a span read by roles says the count a place should have."""
+    return len(read) > 2 and read[1].value == "should" and read[2].value == "have"
+
+
+def _wanted_again(clause: list[Tok]) -> list[Tok] | None:
+    """ "dispatch fish sauce make it 6, and pickface snack 7": after a count wanted, a clause of one
+    place, one product and one count (in either order, "and" before it or not) wants that count
+    there too (the verb is shared, as the grammar reads "P should have 6 X, Q 7")."""
+    words = clause[1:] if clause and clause[0].kind == "word" and clause[0].value == "and" else clause
+    said = _parts(words)
+    if said is None or said.verbs or said.sources or said.targets or len(said.bare) != 1 or not _paired(said) \
+            or len(said.items) != 1 or not said.items[0][0] or said.items[0][0][0].kind != "num":
+        return None
+    return clause[:len(clause) - len(words)] + [said.bare[0], Tok("word", "", "should"), Tok("word", "", "have"),
+                                                *_things(said)]
 
 
 def _names_a_count_twice(sentence: list[Tok]) -> bool:
@@ -237,9 +259,11 @@ def _parts(span: list[Tok]) -> _Said | None:
             said.products.append((part, t))
             # "connector ctn", "connector ctn 4": the thing's unit said after it, with its count or none
             k += _word_in(span, k + 1, COUNT_UNITS)
-        elif said.products and said.products[-1][0] == part - 1 and not said.amounts \
+        elif said.products and not said.amounts and not said.verbs \
                 and any(said_at(span, k, words) for words in _APPRAISALS):
-            k += 2   # "resistor reel too many": why, not how many (no count said before it)
+            # "resistor reel too many (already)", "fish sauce in reserve too much": why, not how many
+            # (no count and no verb said before it)
+            k += 2 + _word_in(span, k + 2, frozenset({"already"}))
             continue
         elif word in _FROM and nxt_place:
             said.sources.append(span[at])
