@@ -173,7 +173,9 @@ CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "
                      "xie", "xiexie", "hao", "de", "mei", "wenti", "kuai", "dian",
                      # Thai ("..., kob khun ka": thank you; "jing jing": really; "na", "ka", "krub": polite
                      # particles)
-                     "kob", "khun", "jing", "na", "ka", "kha", "krub", "khrub", "krap", "khrap", "jaa"})
+                     "kob", "khun", "jing", "na", "ka", "kha", "krub", "khrub", "krap", "khrap", "jaa",
+                     # German ("..., bitte": please; "danke": thanks; "genau": exactly; "los": go)
+                     "bitte", "danke", "genau", "jawohl", "los", "schnell"})
 
 
 #: a request tag after an order ("... over to the shed would ya", "... could you"): it asks
@@ -752,6 +754,8 @@ INTERJECTIONS = frozenset({
     # Thai ("Sawasdee ka, ...": hello; "kob khun": thank you; "jing jing": really; "mai pen rai": never
     # mind; "reo reo": quickly; "na ka", "krub": polite particles)
     "sawasdee", "sawatdee", "kob", "khun", "jing", "reo", "ka", "kha", "krub", "khrub", "krap", "khrap", "jaa",
+    # German ("Genau.", "Jawohl.", "Los!", "Danke.", "Bitte, ...", "Moin", "Servus")
+    "genau", "jawohl", "los", "danke", "bitte", "moin", "servus", "schnell",
     # a signpost of urgency ("Attention! swap ...")
     "attention"})
 

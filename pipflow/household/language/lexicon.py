@@ -514,6 +514,8 @@ FILLER = {("um",), ("umm",), ("uh",), ("uhh",), ("uhm",), ("er",), ("erm",),   #
           # Nigerian Pidgin and Yoruba: "oya" (come on), "sha" (anyway), "jare" (do), "ehn", "ehen",
           # "na wa" (wow), "shey" / "shebi" opening a yes-no question ("Shey the gen is on?": is it?)
           ("oya",), ("sha",), ("jare",), ("ehn",), ("ehen",), ("na", "wa"), ("shey",), ("shebi",),
+          # Vietnamese ("troi oi": oh my; "da": yes; "nha", "nhe": OK?, please)
+          ("troi", "oi"), ("da",), ("nha",), ("nhe",),
           ("please",), ("kindly",), ("abeg",), ("biko",), ("just",), ("quickly",), ("now",), ("for", "me"), ("for", "us"), ("could", "you"),
           ("can", "you"), ("would", "you"), ("will", "you"), ("i", "need", "you", "to"), ("i", "want", "you", "to"),
           ("we", "need", "you", "to"), ("go", "ahead", "and"), ("go", "and"), ("hey",), ("robots",), ("team",),

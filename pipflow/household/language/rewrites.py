@@ -284,6 +284,11 @@ def heat_purpose(words: list[str], notes: list[str]) -> list[str]:
     return out
 
 
+#: particles that close a clause and say nothing of the order: Singapore English "ah", Vietnamese
+#: "a", "nha", "nhe" (politeness, OK?)
+_CLOSING_PARTICLES = {"ah", "a", "nha", "nhe"}
+
+
 def particles(words: list[str], names_nothing, notes: list[str]) -> list[str]:
     """Particles and small constructions read as the grammar's words (docs/household.md):
     "them both" / "them all" as "both of them" / "all of them"; "ah" closing a clause left out (a
@@ -303,9 +308,10 @@ def particles(words: list[str], names_nothing, notes: list[str]) -> list[str]:
             notes.append(f"'{' '.join(pair)}' read as '{' '.join(_FLOATED[pair])}'")
             k += 2
             continue
-        if w == "ah" and out and out[-1] not in PUNCT and (k + 1 == len(words) or words[k + 1] in PUNCT):
+        if w in _CLOSING_PARTICLES and out and out[-1] not in PUNCT and (k + 1 == len(words) or words[k + 1] in PUNCT):
             # Singapore and Malaysian English "ah" closing a clause ("don't touch ah"), a particle as
-            # "lah" is; "ah ma" (a person) goes on, and is left alone
+            # "lah" is; "ah ma" (a person) goes on, and is left alone. Vietnamese "a" (politeness:
+            # "... in the cupboard a"): an article never closes a clause
             k += 1
             continue
         if w == "through" and k + 1 < len(words) and words[k + 1] in ("to", "into", "onto", "in", "on", "from") and out \

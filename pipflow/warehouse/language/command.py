@@ -79,6 +79,21 @@ def _dislocated(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict
     return None
 
 
+def _counted_topic(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict, memory: dict,
+                   pick: dict) -> SentenceReader:
+    """ "The 12 coils in the Hochregal, bring 4 of them to the Versand": things named first with
+    their count, then taken up by a pronoun, are what the pronoun says; read as said, the first
+    clause would be a count wanted there and "4 of them" a count added with no place it comes from
+    (a misreading). So the sentence is read only with the topic where its pronoun stands
+    (:func:`_dislocated`), and refused where that does not read."""
+    moved = _dislocated(lexed, lex, selector, world, memory, pick)
+    if moved is None or moved[1]:
+        raise TranslationError(f"'{' '.join(t.text for t in lexed.source if t.text)}': the things named first with "
+                               "their count are taken up by a pronoun; read with them in its place the sentence "
+                               "does not read, so nothing is guessed")
+    return moved[0]
+
+
 def _second_reading(lexed: Lexed, error: TranslationError, lex: Lexicon, selector: RobotSelector, world: dict,
                     memory: dict, pick: dict, droppable: bool) -> tuple[SentenceReader, list[str]] | None:
     """A sentence that does not read as said, read again: with its fronted topic where its pronoun
@@ -139,6 +154,8 @@ def parse_reading(command: str, world: dict, picks: dict | None = None) -> dict:
                 set_aside += list(lexed.aside) if lexed.trimmed is not None else []
             else:
                 reader = one_meaning(lexed, lex, selector, world, memory, pick)
+                if lexed.dislocated is not None and lexed.tokens[0].type == "NUM":
+                    reader = _counted_topic(lexed, lex, selector, world, memory, pick)
         except (UnexpectedInput, TranslationError) as exc:
             # the sentence as said does not read; read again it may (_second_reading)
             error = failure(exc, lexed, lex) if isinstance(exc, UnexpectedInput) else exc

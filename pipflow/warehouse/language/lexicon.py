@@ -74,7 +74,9 @@ FILLERS = {"the", "please", "kindly", "units", "unit", "pieces", "piece", "boxes
            # please, right now, hey, then, well, come on ("ya" is "you" in "can ya": SPELLINGS)
            "porfa", "porfavor", "ahorita", "oye", "luego", "pues", "bueno", "orale", "andale",
            # Thai said in English orders ("Kor add 5 ...": may I have, please; "reo reo": quickly)
-           "kor", "reo"}
+           "kor", "reo",
+           # German said in English orders ("bitte": please; "schnell": quickly; "danke": thanks)
+           "bitte", "schnell", "danke"}
 #: words of talk of our lists: never a slip of a name ("hai" is no "hat")
 _TALK_WORDS = INTERJECTIONS | CLOSERS
 FILLERS |= PACKAGING_WORDS
@@ -110,6 +112,16 @@ IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before
           # digit ends no sentence (before a capital it may: "must be 10 pal. Only day shift robots")
           (re.compile(r"\b(pal|pall|pals|plt|plts|pcs|pc|ctn|ctns|min|max|approx|qty|st)\.(?=\s+(?-i:[a-z0-9])|,)",
                       re.IGNORECASE), r"\1"),
+          # German "5 Stk. Kugellager" (Stück: pieces): the unit's full stop before what it counts, which
+          # German writes with a capital, ends no sentence
+          (re.compile(rf"\b({_NUMBER})\s+(stk|stck)\.(?=\s+[A-Za-z])", re.IGNORECASE), r"\1 \2"),
+          # "must have at the end 16", "... each 7 crates at the end." (German "am Ende"): finally, the
+          # count wanted; never before "of" ("at the end of the aisle" is a where this reader lacks)
+          (re.compile(rf"\s*\bat\s+the\s+end\b(?=\s+(?:{_NUMBER})\b|\s*[.,;!?]|\s*$)", re.IGNORECASE), ""),
+          # "bring me 4 crates of valves" (German "bring mir"): to whom, said before the count
+          (re.compile(rf"\b(bring|send|get)\s+me\s+(?=(?:{_NUMBER})\b)", re.IGNORECASE), r"\1 "),
+          # "Please be so kind and exchange ..." (German "sei so gut und"): please
+          (re.compile(r"\b(?:please\s+)?be\s+so\s+kind\s+(?:and|to)\s+", re.IGNORECASE), "please "),
           # Dutch "a.u.b." / "aub" (alstublieft: please) and "dank u" (thank you), said in English orders
           (re.compile(r"(?<![\w.])a\.?u\.?b\.?(?![\w])", re.IGNORECASE), "please"),
           (re.compile(r"\bdank\s+u\b", re.IGNORECASE), "thanks"),

@@ -75,7 +75,9 @@ PACKAGING_WORDS = frozenset({
     # Turkish "koli" (carton), "palet"; Russian "korobka" (box, "5 korobok", "2 korobki"), "sht" (pieces)
     "koli", "palet", "korobka", "korobki", "korobok", "sht",
     # Indonesian "dus" (a carton); Dutch "stuks", "st." (pieces)
-    "dus", "stuks", "stuk", "st"})
+    "dus", "stuks", "stuk", "st",
+    # German "Stk." (Stück: pieces), "Palette(n)", "Kiste(n)" (crates)
+    "stk", "stck", "palette", "paletten", "kiste", "kisten"})
 #: every word said after a count for its unit ("5 pcs", "4 pallets", "6 case"): no thing of its own
 COUNT_UNITS = PACKAGING_WORDS | {"units", "unit", "pieces", "piece", "boxes", "box", "crate", "crates", "case",
                                  "cases", "pcs", "pallets", "pallet"}
