@@ -19,7 +19,8 @@ before "leave where it is" / "leave there", "After close the oven" (then); and f
 before a capitalised noun, "Paletten", "at the end" (finally), "bring me", "be so kind and", and
 counted things taken up by a pronoun ("The 12 coils in P, bring 4 of them to Q": refused, never a
 count wanted there; it was read so, a misreading); and from its Vietnamese English, "a", "nha",
-"nhe" closing a clause and "troi oi". Each rule with what stays as said or refused."""
+"nhe" closing a clause and "troi oi"; and from pair EE, Spanish talk ("hola", "venga", "vale"),
+"bales", Japanese "ne", "yo" closing a clause and "mou", "arigatou", "onegai". Each rule with what stays as said or refused."""
 from __future__ import annotations
 
 import copy
@@ -85,6 +86,9 @@ def _same(said: str, plain: str) -> None:
     ("Please be so kind and swap the springs between rack A and rack B. Genau.",
      "swap the spring between rack A and rack B"),
     ("4 Paletten bolt from rack A to outbound, schnell schnell", "move 4 bolt from rack A to outbound"),
+    # pair EE's Spanish English
+    ("Hola, rack A should have 5 of bolts", "rack A should have 5 bolt"),
+    ("Venga, move 3 bales of bolts from rack A to outbound, vale?", "move 3 bolt from rack A to outbound"),
 ])
 def test_chinese_english_orders_read_as_their_plain_english(said: str, plain: str) -> None:
     _same(said, plain)
@@ -189,6 +193,9 @@ def house() -> dict:
     ("wash the frying pan, after that put it on the counter a", "wash the frying pan, then put it on the counter"),
     ("take the rice to the counter nha", "take the rice to the counter"),
     ("Troi oi, take the rice to the counter", "take the rice to the counter"),
+    # pair EE's Japanese English
+    ("switch off the fan ne", "switch off the fan"),
+    ("Mou, take the rice to the counter yo. Arigatou", "take the rice to the counter"),
 ])
 def test_nigerian_english_reads_as_its_plain_english(house: dict, said: str, plain: str) -> None:
     assert goal(said, house) == goal(plain, house)

@@ -175,7 +175,9 @@ CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "
                      # particles)
                      "kob", "khun", "jing", "na", "ka", "kha", "krub", "khrub", "krap", "khrap", "jaa",
                      # German ("..., bitte": please; "danke": thanks; "genau": exactly; "los": go)
-                     "bitte", "danke", "genau", "jawohl", "los", "schnell"})
+                     "bitte", "danke", "genau", "jawohl", "los", "schnell",
+                     # Spain's Spanish ("..., vale?": OK?; "venga": come on; "tío": mate)
+                     "vale", "venga", "tio", "tia", "hombre", "ostras"})
 
 
 #: a request tag after an order ("... over to the shed would ya", "... could you"): it asks
@@ -756,6 +758,8 @@ INTERJECTIONS = frozenset({
     "sawasdee", "sawatdee", "kob", "khun", "jing", "reo", "ka", "kha", "krub", "khrub", "krap", "khrap", "jaa",
     # German ("Genau.", "Jawohl.", "Los!", "Danke.", "Bitte, ...", "Moin", "Servus")
     "genau", "jawohl", "los", "danke", "bitte", "moin", "servus", "schnell",
+    # Spain's Spanish ("Hola, ...", "Venga, ...": come on; "vale": OK; "tío": mate; "ostras": wow)
+    "hola", "venga", "vale", "tio", "tia", "hombre", "ostras",
     # a signpost of urgency ("Attention! swap ...")
     "attention"})
 

@@ -516,6 +516,8 @@ FILLER = {("um",), ("umm",), ("uh",), ("uhh",), ("uhm",), ("er",), ("erm",),   #
           ("oya",), ("sha",), ("jare",), ("ehn",), ("ehen",), ("na", "wa"), ("shey",), ("shebi",),
           # Vietnamese ("troi oi": oh my; "da": yes; "nha", "nhe": OK?, please)
           ("troi", "oi"), ("da",), ("nha",), ("nhe",),
+          # Japanese ("onegai (shimasu)": please; "arigatou": thanks; "mou": ugh; "haa": a sigh)
+          ("onegai",), ("onegaishimasu",), ("onegai", "shimasu"), ("arigatou",), ("arigato",), ("mou",), ("haa",),
           ("please",), ("kindly",), ("abeg",), ("biko",), ("just",), ("quickly",), ("now",), ("for", "me"), ("for", "us"), ("could", "you"),
           ("can", "you"), ("would", "you"), ("will", "you"), ("i", "need", "you", "to"), ("i", "want", "you", "to"),
           ("we", "need", "you", "to"), ("go", "ahead", "and"), ("go", "and"), ("hey",), ("robots",), ("team",),

@@ -79,6 +79,16 @@ def _dislocated(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict
     return None
 
 
+def _as_said(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict, memory: dict,
+             pick: dict) -> SentenceReader:
+    """The sentence's one meaning as said (:func:`one_meaning`), but a sentence that opens with
+    counted things taken up by a pronoun only with them where the pronoun stands (:func:`_counted_topic`)."""
+    reader = one_meaning(lexed, lex, selector, world, memory, pick)
+    if lexed.dislocated is not None and lexed.tokens[0].type == "NUM":
+        return _counted_topic(lexed, lex, selector, world, memory, pick)
+    return reader
+
+
 def _counted_topic(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict, memory: dict,
                    pick: dict) -> SentenceReader:
     """ "The 12 coils in the Hochregal, bring 4 of them to the Versand": things named first with
@@ -153,9 +163,7 @@ def parse_reading(command: str, world: dict, picks: dict | None = None) -> dict:
                 unread += left_out
                 set_aside += list(lexed.aside) if lexed.trimmed is not None else []
             else:
-                reader = one_meaning(lexed, lex, selector, world, memory, pick)
-                if lexed.dislocated is not None and lexed.tokens[0].type == "NUM":
-                    reader = _counted_topic(lexed, lex, selector, world, memory, pick)
+                reader = _as_said(lexed, lex, selector, world, memory, pick)
         except (UnexpectedInput, TranslationError) as exc:
             # the sentence as said does not read; read again it may (_second_reading)
             error = failure(exc, lexed, lex) if isinstance(exc, UnexpectedInput) else exc

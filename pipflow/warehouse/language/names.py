@@ -77,7 +77,9 @@ PACKAGING_WORDS = frozenset({
     # Indonesian "dus" (a carton); Dutch "stuks", "st." (pieces)
     "dus", "stuks", "stuk", "st",
     # German "Stk." (Stück: pieces), "Palette(n)", "Kiste(n)" (crates)
-    "stk", "stck", "palette", "paletten", "kiste", "kisten"})
+    "stk", "stck", "palette", "paletten", "kiste", "kisten",
+    # bales (of textiles, "3 bales of t-shirts")
+    "bale", "bales"})
 #: every word said after a count for its unit ("5 pcs", "4 pallets", "6 case"): no thing of its own
 COUNT_UNITS = PACKAGING_WORDS | {"units", "unit", "pieces", "piece", "boxes", "box", "crate", "crates", "case",
                                  "cases", "pcs", "pallets", "pallet"}
