@@ -117,7 +117,9 @@ def test_a_fronted_source_is_never_dropped_for_the_moves_own_source() -> None:
 
 
 @pytest.mark.parametrize("said", ["The 12 bolts in rack A, bring 4 of them to outbound",
-                                  "The 9 bolts in rack A, bring 4 of them to outbound"])
+                                  "The 9 bolts in rack A, bring 4 of them to outbound",
+                                  # read without its talk, the sentence is the same one
+                                  "The 12 bolts in rack A, bring 4 of them to outbound, cheers mate"])
 def test_counted_things_taken_up_by_a_pronoun_are_never_a_count_wanted(said: str) -> None:
     # pair DD's first measurement: read as "rack A should have 12 bolts" and "outbound gets 4 more"
     # (a misreading); with the things where "them" stands it does not read, so it is refused

@@ -285,8 +285,8 @@ def heat_purpose(words: list[str], notes: list[str]) -> list[str]:
 
 
 #: particles that close a clause and say nothing of the order: Singapore English "ah", Vietnamese
-#: "a", "nha", "nhe" (politeness, OK?), Japanese "ne", "yo"
-_CLOSING_PARTICLES = {"ah", "a", "nha", "nhe", "ne", "yo"}
+#: "a" (politeness), Japanese "ne", "yo" ("nha", "nhe" are fillers anywhere: lexicon ``FILLER``)
+_CLOSING_PARTICLES = {"ah", "a", "ne", "yo"}
 
 
 def particles(words: list[str], names_nothing, notes: list[str]) -> list[str]:

@@ -82,11 +82,11 @@ def _dislocated(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict
 def _as_said(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict, memory: dict,
              pick: dict) -> SentenceReader:
     """The sentence's one meaning as said (:func:`one_meaning`), but a sentence that opens with
-    counted things taken up by a pronoun only with them where the pronoun stands (:func:`_counted_topic`)."""
-    reader = one_meaning(lexed, lex, selector, world, memory, pick)
+    counted things taken up by a pronoun only with them where the pronoun stands (:func:`_counted_topic`);
+    so also read without its talk (:func:`_second_reading`)."""
     if lexed.dislocated is not None and lexed.tokens[0].type == "NUM":
         return _counted_topic(lexed, lex, selector, world, memory, pick)
-    return reader
+    return one_meaning(lexed, lex, selector, world, memory, pick)
 
 
 def _counted_topic(lexed: Lexed, lex: Lexicon, selector: RobotSelector, world: dict, memory: dict,
@@ -116,7 +116,7 @@ def _second_reading(lexed: Lexed, error: TranslationError, lex: Lexicon, selecto
         return moved
     if lexed.trimmed is not None:
         try:
-            return one_meaning(lexed.trimmed, lex, selector, world, memory, pick), list(lexed.aside)
+            return _as_said(lexed.trimmed, lex, selector, world, memory, pick), list(lexed.aside)
         except (UnexpectedInput, TranslationError) as again:
             # what is left after the talk is set aside is what does not read: say that
             trimmed = failure(again, lexed.trimmed, lex) if isinstance(again, UnexpectedInput) else again

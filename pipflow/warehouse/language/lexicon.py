@@ -1616,8 +1616,7 @@ class Lexicon:
                     if said is None:
                         self.aside.append(" ".join(x.text for x in cur))
                     else:
-                        moved = left_dislocated(cur)
-                        out.append(said if moved == cur else replace(said, dislocated=self._sentence(moved)))
+                        out.append(self._with_topic_moved(said, cur))
                 cur = []
                 stopped = k in stops
             if not (t.kind == "punct" and t.value in (".", ";", "!", "?")):
@@ -1657,8 +1656,16 @@ class Lexicon:
         if not [x for x in keep if x.kind != "punct"]:
             return None
         if aside:
-            return replace(self._terminals(cur), trimmed=self._terminals(keep), aside=tuple(aside))
+            return replace(self._terminals(cur), trimmed=self._with_topic_moved(self._terminals(keep), keep),
+                           aside=tuple(aside))
         return self._terminals(cur)
+
+    def _with_topic_moved(self, said: Lexed, toks: list[Tok]) -> Lexed:
+        """The sentence with its reading where a fronted topic stands where its pronoun does
+        (``dislocated``: :func:`wordorder.left_dislocated`), when it has one; its reading without
+        talk (``trimmed``) gets its own."""
+        moved = left_dislocated(toks)
+        return said if moved == toks else replace(said, dislocated=self._sentence(moved))
 
     def _terminals(self, toks: list[Tok]) -> Lexed:
         tokens: list[Token] = []
