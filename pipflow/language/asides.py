@@ -95,7 +95,13 @@ GREETINGS = frozenset({"hi", "hello", "hey", "hiya", "heya", "howdy", "morning",
                        "ohayo", "ohayou", "gozaimasu", "otsukaresama", "otsukare", "konnichiwa", "arigato",
                        "arigatou",
                        # Vietnamese ("anh em": brothers, the team, said to it; "chao": hello)
-                       "anh", "chao"})
+                       "anh", "chao",
+                       # Urdu and Punjabi, said in Pakistani English ("AoA team": assalam-o-alaikum; "Jumma
+                       # Mubarak everyone": a blessed Friday; "Eid Mubarak")
+                       "aoa", "salam", "salaam", "assalam", "assalamualaikum", "asalamualaikum", "walaikum",
+                       "jumma", "eid", "mubarak",
+                       # Jamaican ("Wah gwaan unu": what's going on, you all)
+                       "wah", "wha", "gwaan"})
 #: words that open an apology or a thanks for something ("sorry for the late ask", "thanks for
 #: earlier"): what follows "for" / "about" is what one is sorry or thankful for, not an order
 PLEASANTRIES = frozenset({"sorry", "apologies", "apologise", "apologize", "pardon", "thanks", "thank", "thx",
@@ -128,13 +134,19 @@ ADDRESSEES = frozenset({"all", "everyone", "everybody", "team", "folks", "guys",
                         # Greek ("re paidia": kids)
                         "paidia",
                         # Vietnamese ("anh em", "cac ban": you all)
-                        "em", "cac", "ban"})
+                        "em", "cac", "ban",
+                        # Urdu ("AoA bhai": brother; "ji": the polite particle; "sahab", "janab": sir; "yaar": mate)
+                        "bhai", "bhaiya", "ji", "sahab", "sahib", "janab", "yaar",
+                        # Jamaican ("Morning unu": you all; "bredda": brother; "mi bredren": friends)
+                        "unu", "bredda", "breddah", "bredren", "sistren", "yute"})
 
 
 #: a thanks that can close an order without a comma before it ("... to bay 2 ta")
 THANKS = frozenset({"thanks", "ta", "cheers", "xiexie", "thx", "ty", "tyvm", "thankyou", "dankie", "diolch", "merci", "asante",
                     "asanteni", "gracias", "dzieki", "dziekuje", "obrigada", "obrigado", "brigada", "brigado", "valeu",
-                    "vlw"})
+                    "vlw",
+                    # Urdu ("..., shukriya": thank you; "jazakallah": God reward you); Jamaican "tanks"
+                    "shukriya", "shukria", "jazakallah", "tanks"})
 #: who an order is said to, or a tag that closes it, without a comma before it ("... on dispatch
 #: please mate", "... forklifts only mind", "... thanks lads"): never a word that is operative
 CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "boss", "love", "pet", "hun",
@@ -177,7 +189,12 @@ CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "
                      # German ("..., bitte": please; "danke": thanks; "genau": exactly; "los": go)
                      "bitte", "danke", "genau", "jawohl", "los", "schnell",
                      # Spain's Spanish ("..., vale?": OK?; "venga": come on; "tío": mate)
-                     "vale", "venga", "tio", "tia", "hombre", "ostras"})
+                     "vale", "venga", "tio", "tia", "hombre", "ostras",
+                     # Urdu ("..., yaar": mate; "ji": the polite particle; "shukriya": thanks; "inshallah")
+                     "yaar", "ji", "shukriya", "shukria", "jazakallah", "inshallah", "inshaallah",
+                     # Jamaican ("..., bless": take care; "respect"; "seen?": understood?; "eeh": OK?;
+                     # "tanks": thanks)
+                     "bless", "respect", "seen", "eeh", "tanks"})
 
 
 #: a request tag after an order ("... over to the shed would ya", "... could you"): it asks
@@ -514,6 +531,8 @@ def _operative_at(ws: list[str], k: int) -> bool:
         return False
     if _the_same_as_subject(ws, k):
         return False
+    if k == 0 and ws[0] in ("those", "these") and nxt in ("are", "were", "re", "is") and len(ws) > 2:
+        return False   # "..., those are booked for the other party": the subject of a report, no selection
     return near_operative(ws[k])
 
 
@@ -623,9 +642,7 @@ def _existential(ws: list[str], names: Callable[[str], bool]) -> bool:
 #: you do, ..."): whole clauses only, though "one" and "then" are operative elsewhere
 OPENERS = frozenset({("quick", "one"), ("right", "then"), ("ok", "then"), ("okay", "then"), ("right", "so"),
                      ("whatever", "you", "do"), ("now", "then"), ("so", "then"), ("right", "folks"),
-                     ("quick", "favour"), ("quick", "favor"), ("quick", "job"), ("two", "things"),
-                     ("three", "things"), ("couple", "of", "things"), ("a", "couple", "of", "things"),
-                     ("few", "things"), ("a", "few", "things"), ("couple", "things"),
+                     ("quick", "favour"), ("quick", "favor"), ("quick", "job"),
                      # a heading before a list ("Today's plan: 1) ... 2) ...")
                      ("today", "s", "plan"), ("todays", "plan"), ("the", "plan"), ("plan", "for", "today"),
                      ("today", "s", "tasks"), ("todays", "tasks"), ("tasks", "for", "today"), ("to", "do"),
@@ -633,7 +650,14 @@ OPENERS = frozenset({("quick", "one"), ("right", "then"), ("ok", "then"), ("okay
                      # what the order follows from ("As discussed on call: ...", "As per our discussion, ...")
                      ("as", "discussed"), ("as", "discussed", "on", "call"), ("as", "discussed", "earlier"),
                      ("as", "agreed"), ("as", "per", "discussion"), ("as", "per", "our", "discussion"),
-                     ("as", "per", "the", "plan"), ("as", "per", "plan")})
+                     ("as", "per", "the", "plan"), ("as", "per", "plan")}) | frozenset(
+    # a count of what is to come ("Two things:", "3 jobs plz:", "a couple of tasks for you:",
+    # Jamaican "two ting:"): it announces the list, it is no count of anything
+    (*many, what, *courtesy)
+    for many in (("two",), ("three",), ("four",), ("five",), ("2",), ("3",), ("4",), ("5",), ("couple", "of"),
+                 ("a", "couple", "of"), ("few",), ("a", "few",), ("couple",))
+    for what in ("things", "jobs", "tasks", "requests", "points", "ting", "tings", "thing")
+    for courtesy in ((), ("plz",), ("pls",), ("please",), ("for", "you"), ("today",)))
 
 
 #: whole clauses that close a message and say nothing else ("that's all for now", "that's it"):
@@ -760,6 +784,12 @@ INTERJECTIONS = frozenset({
     "genau", "jawohl", "los", "danke", "bitte", "moin", "servus", "schnell",
     # Spain's Spanish ("Hola, ...", "Venga, ...": come on; "vale": OK; "tío": mate; "ostras": wow)
     "hola", "venga", "vale", "tio", "tia", "hombre", "ostras",
+    # Urdu and Punjabi ("Yaar, ...": mate; "theek hai": fine; "acha": OK; "chalo": come on; "inshallah",
+    # "mashallah", "alhamdulillah"; "shukriya": thanks)
+    "yaar", "theek", "thik", "acha", "achha", "accha", "chalo", "inshallah", "inshaallah", "mashallah",
+    "alhamdulillah", "shukriya", "shukria", "jazakallah",
+    # Jamaican ("Lawd, ...", "cho": annoyance; "eeh": OK?; "irie": all is well; "bless", "respect", "seen")
+    "lawd", "cho", "choh", "eeh", "irie", "bless", "respect", "seen", "gwaan", "tanks",
     # a signpost of urgency ("Attention! swap ...")
     "attention"})
 

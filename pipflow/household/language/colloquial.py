@@ -6,7 +6,7 @@ spelled out after a colon is that spelling out. Each rewrite
 leaves a note, so the echo says what was read so."""
 from __future__ import annotations
 
-from pipflow.household.language.lexicon import PHRASES
+from pipflow.household.language.lexicon import FILLER, HOME_WORDS, LIGHT_CUES, PHRASES, TEMPERATURE_CUES
 from pipflow.household.language.tokens import PUNCT
 
 #: "and the torch an' all": a thing added to what the clause before did ("too"); only closing a
@@ -168,9 +168,41 @@ def _nobody_does(words: list[str], k: int, out: list[str]) -> bool:
     return words[k] in _SIMPLE_ACTIVITIES and (out[-1:] and out[-1] in _NOBODY or out[-2:] == ["no", "one"])
 
 
+#: words of how it feels in a room ("the place is dark", "di place hot"), said of the home itself
+_FELT = {w for w in (*LIGHT_CUES, *TEMPERATURE_CUES) if " " not in w} | {"hot", "cold", "warm"}
+#: words between the home and how it feels in it ("the place is too hot", "the flat feels cold")
+_FEELS = {"is", "s", "feels", "feel", "getting", "gets", "so", "too", "very", "really", "well"}
+
+
+def the_place_as_here(words: list[str], notes: list[str]) -> list[str]:
+    """ "the place is dark", "di place hot" (the copula left out), "this flat feels cold": how it
+    feels in the home, said of the home, read as "it is ... in here", the cue the grammar has. Only
+    the home's own words (``HOME_WORDS``, "place") at a clause's start (after talk: "Lawd di place
+    hot"); a room or a thing keeps its reading."""
+    out: list[str] = []
+    k = 0
+    while k < len(words):
+        start = not out or out[-1] in PUNCT or out[-1] in ("and", "but") or (out[-1],) in FILLER
+        if start and words[k] in ("the", "this", "dis", "dat", "that") and k + 1 < len(words) \
+                and words[k + 1] in (*HOME_WORDS, "place"):
+            j = k + 2
+            while j < len(words) and words[j] in _FEELS:
+                j += 1
+            if j < len(words) and words[j] in _FELT:
+                said = ["it", "is", *(w for w in words[k + 2:j] if w not in ("is", "s", "feels", "feel", "gets")),
+                        words[j], "in", "here"]
+                notes.append(f"'{' '.join(words[k:j + 1])}' read as '{' '.join(said)}'")
+                out += said
+                k = j + 1
+                continue
+        out.append(words[k])
+        k += 1
+    return out
+
+
 def colloquial(words: list[str], notes: list[str]) -> list[str]:
     """The words with the colloquial phrases of the module docstring read as the grammar's words."""
-    words = only_not_as_except(spelled_out_swap(words, notes), notes)
+    words = the_place_as_here(only_not_as_except(spelled_out_swap(words, notes), notes), notes)
     out: list[str] = []
     k = 0
     while k < len(words):

@@ -36,7 +36,7 @@ def patois_as_english(words: list[str], known: Callable[[str], bool], noun: Call
     ...; "mi" is "my" before a word of a thing's name (``noun``), "me" after a verb or a preposition,
     else "I"; "him" is "his" before such a word; "dem" after a thing is its plural ("di plate dem":
     the plates), "those" before one, else "them"; "fi" is "for" before who or what for, else "to";
-    "weh deh" is "that is" ("di spoon weh deh inna di sink"); "come" between a thing and a verb of
+    "weh deh" is "that is" ("di spoon weh deh inna di sink"), "weh" elsewhere "where"; "come" between a thing and a verb of
     putting ("bring mi specs come put pon di chair") is "and"."""
     unknown = {w for w in words if not known(w)}
     if len(MARKERS & unknown) < 2 and not STRONG_MARKERS & unknown:
@@ -52,7 +52,8 @@ def patois_as_english(words: list[str], known: Callable[[str], bool], noun: Call
         elif w == "him":
             said = "his" if noun(nxt) else None
         elif w == "dem" and out and (noun(out[-1]) or out[-1] in _PLURAL_AFTER):
-            plural = next((out[-1] + end for end in ("s", "es") if noun(out[-1] + end)), None)
+            plural = out[-1] if out[-1].endswith("s") and noun(out[-1]) else \
+                next((out[-1] + end for end in ("s", "es") if noun(out[-1] + end)), None)   # "boots dem": boots
             notes.append(f"'{out[-1]} dem' read as '{plural or out[-1]}' (Jamaican Creole: a plural)")
             out[-1] = plural or out[-1]
             continue
@@ -62,6 +63,12 @@ def patois_as_english(words: list[str], known: Callable[[str], bool], noun: Call
             said = "for" if nxt in FOR_WHOM or noun(nxt) else "to"
         elif w == "weh" and nxt == "deh":
             said = "that"
+        elif w == "weh":   # "put it back weh it belong": where
+            said = "where"
+        elif w == "belong" and out and out[-1] == "it":   # no "-s" in the third person
+            said = "belongs"
+        elif w == "lef":   # "lef it pon di counter": leave; "di pickney dem lef dem toys": left
+            said = "leave" if not out or out[-1] in PUNCT or out[-1] in _BEFORE_AN_ORDER else "left"
         elif w == "deh":
             said = "is" if out and out[-1] == "that" else "there"
         elif w == "come" and nxt in _PUTTING and out and out[-1] not in PUNCT:
@@ -69,7 +76,7 @@ def patois_as_english(words: list[str], known: Callable[[str], bool], noun: Call
         elif w == "an" and nxt not in PUNCT and nxt[:1] not in "aeiou":
             said = "and"
         else:
-            said = PATOIS.get(w)
+            said = PATOIS.get(w) or _PATOIS_AT_HOME.get(w)
         if said is None:
             out.append(w)
             continue
@@ -89,7 +96,12 @@ def patois_in_home(words: list[str], index: dict, notes: list[str]) -> list[str]
 _PLURAL_AFTER = {"things", "thing", "ones", "children", "pickney", "kids", "grandchildren", "clothes"}
 #: words after which "mi" is "me" (an object: "bring mi", "fi mi", "pon mi")
 _BEFORE_ME = {"for", "to", "on", "in", "with", "from", "bring", "give", "pass", "show", "tell", "help", "let",
-              "make", "get", "call", "wake", "of"}
+              "make", "get", "call", "wake", "of", "hear", "see"}
+#: patois words of the home's states ("it dutty", "wash di dutty plate dem")
+_PATOIS_AT_HOME = {"dutty": "dirty"}
+#: words after which a verb is an order ("an lef it", "please lef it"), not a report of what was done
+_BEFORE_AN_ORDER = {"and", "then", "to", "please", "just", "so", "can", "could", "will", "would", "not", "do",
+                    "dont"}   # never "you": "unu lef it open again" is what was done, no order
 #: verbs of putting that may follow a serial "come" ("carry it come put it pon di counter")
 _PUTTING = {"put", "lay", "set", "rest", "leave", "place"}
 

@@ -103,6 +103,9 @@ for _w, _c in ADJECTIVES.items():
     if tuple(_w.split()) not in PHRASES:
         _add("ADJ", _w, _c)
 _add("V_TOGGLE", "turn,switch,power,flip,flick")
+#: "wash off the boots", "wipe down the counter": the thing washed (the particle says no place)
+_add("V_STATE", ",".join(p for p in ("wash off", "rinse off", "scrub off", "wipe off", "wipe down", "scrub down")
+                         if tuple(p.split()) not in PHRASES), "clean")
 #: "light the stove", "light the fire": a thing that burns or shines is switched on
 _add("V_LIGHT", "light,light up", "on")
 #: "start the coffee maker", "fire up the laptop": a device started is switched on (read as "light" is)
@@ -518,6 +521,11 @@ FILLER = {("um",), ("umm",), ("uh",), ("uhh",), ("uhm",), ("er",), ("erm",),   #
           ("troi", "oi"), ("da",), ("nha",), ("nhe",),
           # Japanese ("onegai (shimasu)": please; "arigatou": thanks; "mou": ugh; "haa": a sigh)
           ("onegai",), ("onegaishimasu",), ("onegai", "shimasu"), ("arigatou",), ("arigato",), ("mou",), ("haa",),
+          # Jamaican ("Lawd", "cho": dismay; "eeh", "seen?": OK?, understood?; "irie", "bless", "respect",
+          # "tanks" closing; "beg yuh": please; "yuh hear (mi)?": you hear?; said after the patois is read
+          # as English, so no patois word is made a word of the reader here)
+          ("lawd",), ("cho",), ("eeh",), ("seen",), ("irie",), ("bless",), ("respect",), ("tanks",), ("gwaan",),
+          ("beg", "you"), ("you", "hear"), ("you", "hear", "me"),
           ("please",), ("kindly",), ("abeg",), ("biko",), ("just",), ("quickly",), ("now",), ("for", "me"), ("for", "us"), ("could", "you"),
           ("can", "you"), ("would", "you"), ("will", "you"), ("i", "need", "you", "to"), ("i", "want", "you", "to"),
           ("we", "need", "you", "to"), ("go", "ahead", "and"), ("go", "and"), ("hey",), ("robots",), ("team",),

@@ -50,7 +50,7 @@ TITLES = {"father", "mrs", "mr", "ms", "miss", "dr", "doctor", "auntie", "aunty"
 KIN = {"grandad", "granddad", "grandpa", "grandma", "granny", "gran", "nan", "nana", "nanna", "grandmother",
        "grandfather", "baby", "husband", "hubby", "wife", "son", "daughter", "grandson", "granddaughter",
        "mum", "mom", "mummy", "mommy", "dad", "daddy", "children", "kids", "grandchildren", "grandkids",
-       "pickney", "pickneys"}
+       "pickney", "pickneys", "grandpickney", "grandpickneys"}
 #: pronouns that are a person; "her" only where an object is ("bring her the tea"); "them" and
 #: "they" are left to things ("put them away")
 PERSON_PRONOUNS = {"he", "she", "him", "hes", "shes"}   # "hes": he's, typed without its apostrophe
@@ -103,7 +103,9 @@ def _owner_candidates(world: dict) -> tuple[dict[tuple[str, ...], list[tuple[str
     unmarked: dict[tuple[str, ...], set[str]] = {}
     for table in (world.get("places") or {}, world.get("objects") or {}):
         for name, entry in table.items():
-            for phrase in (entry.get("words") or []) if isinstance(entry, dict) else []:
+            # the thing's own name too ("dwayne_boots", "dwayne_khaki": Dwayne's, said "dwayne boots")
+            said = (entry.get("words") or []) if isinstance(entry, dict) else []
+            for phrase in [*said, name.replace("_", " ")]:
                 m = _OWNER.match(str(phrase).strip().lower() + " ")
                 who = tuple(words_of(m.group(1))) if m else ()
                 if who and who not in index:

@@ -13,7 +13,7 @@ from pipflow.household.language.restated import leading_subject, restates_locati
 from pipflow.household.language.typos import typo_of, vocabulary
 from pipflow.household.language.unseen import unseen
 from pipflow.language.asides import (BOUNDS, EXCLUSIVITY, FUNCTION_WORDS, NEGATION, QUANTITIES, SELECTION, Clause,
-                                     clauses, content_free, signature, trailing_adjunct, trailing_thanks,
+                                     clauses, content_free, is_opener, signature, trailing_adjunct, trailing_thanks,
                                      unmarked_statement)
 from pipflow.language.english import common_word
 from pipflow.language.numbers import read_number, reads_as_count
@@ -408,7 +408,8 @@ def without_asides(command: str, world: dict) -> Trimmed | None:
     robots = {str(r).lower() for key in ("robots", "teams") for r in world.get(key) or {}}   # who may be addressed
     remark = _remark(world, content)
     free = [c for c in parts if content_free(_without_times(c.words), content, content, reports=True,
-                                             robot=robots.__contains__) or remark(c.words)]
+                                             robot=robots.__contains__) or remark(c.words)
+            or (c is parts[0] and is_opener(c.words))]   # "Two things: ...", "Quick one, ..."
     if len(parts) > 1 and parts[-1] not in free and signature(parts[-2].words, parts[-1].words):
         free.append(parts[-1])   # "Regards, Tom": the writer's name
     own = [c for c in parts if c not in free and speaker_doing(c.words)]

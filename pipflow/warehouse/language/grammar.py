@@ -195,7 +195,8 @@ want: ("i" | "we") ("want" | "would" "like" | "like" | "need" | "wish") | "id" "
 that: "that"
 there_be: ("there" | "theyre" | "their" | "theres") (modal? "be" | "is" | "are") | "make" "it"
         | "theres" | ("we" | "i") modal? ("need" | "want" | "require" | "needs")
-go: "go" | "goes" | "move" | "moves" | "be" "moved" | "be" "sent" | "be" "taken" | "be" "brought"
+// "9 bags should come to staging": where they go, seen from there
+go: "go" | "goes" | "come" | "comes" | "move" | "moves" | "be" "moved" | "be" "sent" | "be" "taken" | "be" "brought"
   | "be" "transferred" | "be" "shipped" | "be" "relocated" | "be" "carried" | "be" "delivered"
   | "end" "up" | "travel" | "be" "put" | "moved" | "sent" | "taken" | "brought" | "delivered" | "shifted"
 // "take 4 wallets out the cage": "out" alone says from, as "out of" does
@@ -320,8 +321,8 @@ goal: there_be items loc                                  -> g_set
     | posplace ihead bneg (above | ("be" | "go" | "get")? (("higher" | "more") "than" | "above" | "over")) NUM -> g_poss_ceiling
     | posplace ihead ":"? ("remove" | "take" "away" | "take" "out" | "take" "off" | "minus" | "less") NUM -> g_poss_fewer
     | posplace ihead ":"? ("add" | "plus" | "add" "another") NUM more?        -> g_poss_more
-    | places "never" ("under" | "below" | ("fewer" | "less") "than") NUM of? ihead -> g_floor
-    | places "never" ("over" | "above" | "more" "than") NUM of? ihead -> g_ceiling
+    | places "never" never_has? ("under" | "below" | ("fewer" | "less") "than") NUM of? ihead -> g_floor
+    | places "never" never_has? ("over" | "above" | "more" "than") NUM of? ihead -> g_ceiling
     | ("make" "sure" | "ensure") that? places bneg below NUM of? ihead -> g_floor
     | ("dont" | "do" "not" | "never") "let" places below NUM of? ihead -> g_floor
     | places modal? setv items ","? on_top                  -> g_add_place
@@ -376,6 +377,8 @@ goal: there_be items loc                                  -> g_set
     | emptyv places                                        -> g_empty
     | places modal? be? emptied                            -> g_empty
     | places modal? "hold" "nothing"                        -> g_empty
+    // "nothing should remain on P", "nothing (is) to be left in P": P holds nothing at the end
+    | "nothing" (modal | "is" "to" | "to")? ("remain" | "remains" | "be" "left" | "stay" | "stays") ("on" | "in" | "at") places -> g_empty
     | places (modal ("not" | "never") | "shouldnt" | "mustnt" | "cant" | "cannot") ("have" | "hold" | "contain" | "keep") ("any" | "anything")? ihead (lsep ihead)* left? -> g_none_of
     | emptyv ihead from places                              -> g_empty_item
     | emptyv pitem_plain                                     -> g_empty_item
@@ -443,6 +446,8 @@ goal: there_be items loc                                  -> g_set
     | "put" items even? among places even?                  -> g_split
 
 // "must not go above 3", "never drops under 2", "doesn't exceed 5": a ceiling or a floor
+// "dock never has less than 15 X": what a place holds, said in the present
+never_has: "has" | "holds" | "gets" | "contains" | "keeps"
 bneg: modal? ("not" | "never") | "shouldnt" | "mustnt" | "cant" | "cannot" | "doesnt" | "does" "not"
     | "wont" | "will" "not" | "never"
 above: ("go" | "goes" | "get" | "gets" | "rise" | "rises" | "climb" | "climbs") ("above" | "over" | "past" | "beyond")

@@ -153,6 +153,20 @@ IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before
           # "minimum 6, not less", "maximum 5, not more": the bound said again
           (re.compile(r"\b((?:minimum|at\s+least)\s+\d+[^.;!?\n]*?)\s*,?\s*not\s+less\b", re.IGNORECASE), r"\1"),
           (re.compile(r"\b((?:maximum|at\s+most)\s+\d+[^.;!?\n]*?)\s*,?\s*not\s+more\b", re.IGNORECASE), r"\1"),
+          # "between 10 and 14 bags on staging, not less not more", "12 exactly, no more no less": the
+          # count or bounds said before, said again (after a number in the same sentence only)
+          (re.compile(r"\b(\d+[^.;!?\n]*?)\s*,?\s*(?:not|no)\s+(?:less|fewer|more)\s*,?\s*(?:and\s+|or\s+|,\s*)?"
+                      r"(?:not|no)\s+(?:less|fewer|more)\b", re.IGNORECASE), r"\1"),
+          # "Robots that carry less than 4 should not do any of this", "Dont use Sher for any of it": no
+          # part of the command's work, a rule for all of it
+          (re.compile(r"\b(should|must|may|can|shall)\s*(?:not|n't)\s+do\s+any\s+of\s+(?:this|it|that|these|them)\b",
+                      re.IGNORECASE), r"\1 not be used"),
+          (re.compile(r"\b(shouldnt|mustnt|cant)\s+do\s+any\s+of\s+(?:this|it|that|these|them)\b", re.IGNORECASE),
+           r"\1 be used"),
+          (re.compile(r"\b(use|using)\s+([^.,;:!?]{1,40}?)\s+for\s+any\s+of\s+(?:this|it|that|these|them)\b",
+                      re.IGNORECASE), r"\1 \2"),
+          # "mezz should hold 15 X, rack 2 also same" (Pakistani and Indian English): the same, too
+          (re.compile(r"\b(?:also\s+(?:the\s+)?same|same\s+also)(?=\s*(?:[.,;!?]|$))", re.IGNORECASE), "the same"),
           # "from 2 till 3 X there": between 2 and 3 (a number after "from" is no place)
           (re.compile(r"\bfrom\s+(\d+)\s+(?:till|until|til|to)\s+(\d+)\b", re.IGNORECASE), r"between \1 and \2"),
           # "ramp 1 and ramp 2 - swap everything between them": the places said first
@@ -493,6 +507,10 @@ def check_text(command: str) -> str:
 _CASE_SUFFIXES = {**dict.fromkeys(("dan", "den", "tan", "ten"), "from"), **dict.fromkeys(("ya", "ye", "a", "e"), "to"),
                   **dict.fromkeys(("da", "de", "ta", "te"), "at")}
 _CASE_MARKS = {"from": "zzcasefrom", "to": "zzcaseto", "at": "zzcaseat"}
+#: Urdu and Hindi postpositions said after a place in English orders ("rack 1 se 9 bags to
+#: staging": from rack 1; "dock tak": up to the dock; "rack 2 pe": on rack 2), read as the
+#: preposition before it by :func:`case_endings`; after anything else they stay as written
+_POSTPOSITIONS = {"se": "from", "ko": "to", "tak": "to", "pe": "at", "par": "at", "mein": "at"}
 
 
 def this_job_announced(toks: list[Tok]) -> list[Tok]:
@@ -523,15 +541,24 @@ def topic_marked(toks: list[Tok]) -> list[Tok]:
 
 def case_endings(toks: list[Tok]) -> list[Tok]:
     """The tokens with a Turkish case ending after a place ("Rack A'dan 4 silecek take out", "Rack
-    B'ye nobody goes") read as the preposition it is, before the place: "from rack A", "to rack B",
-    "at P". After anything else the ending is kept as written, and refused where it is unread."""
+    B'ye nobody goes") or an Urdu postposition ("rack 1 se 9 bags ...", :data:`_POSTPOSITIONS`)
+    read as the preposition it is, before the place: "from rack A", "to rack B", "at P". After
+    anything else the ending is kept as written, and refused where it is unread."""
     marks = {mark: prep for prep, mark in _CASE_MARKS.items()}
     out: list[Tok] = []
-    for t in toks:
+    for k, t in enumerate(toks):
+        place = bool(out) and out[-1].kind == "name" and out[-1].of == "shelf"
         prep = marks.get(str(t.value)) if t.kind == "word" else None
-        if prep is None:
+        if prep is None and place and t.kind == "word" and str(t.value) in _POSTPOSITIONS:
+            # "rack 1 se 9 bags ...": the count after the place is set off as a fronted source's is
+            # ("from rack 1, 9 bags ..."), never read as the place's number
+            after = str(toks[k + 1].value) if k + 1 < len(toks) else ""
+            counted = after.isdigit() or after in NUMBER_WORDS
+            out[-1:] = [Tok("word", _POSTPOSITIONS[str(t.value)], _POSTPOSITIONS[str(t.value)]), out[-1]] \
+                + ([Tok("punct", ",", ",")] if counted else [])
+        elif prep is None:
             out.append(t)
-        elif out and out[-1].kind == "name" and out[-1].of == "shelf":
+        elif place:
             out[-1:] = [Tok("word", prep, prep), out[-1]]
         else:
             out.append(Tok("word", "'" + prep, "'" + prep))
@@ -953,18 +980,38 @@ def counts_sent_from_a_topic(toks: list[Tok]) -> list[Tok]:
             out += [Tok("word", "", "move"), toks[n], toks[n + 1], Tok("word", "", "from"), toks[place]]
             k = n + 2
             continue
-        colon = k + 3 < len(toks) and toks[k + 3].kind == "punct" and toks[k + 3].value == ":"
-        n = k + 3 + colon
-        if (opens and n + 1 < len(toks) and toks[k].kind == "name" and toks[k].of == "shelf"
-                and toks[k + 1].kind == "word" and toks[k + 1].value == POSS_MARK
-                and toks[k + 2].kind == "name" and toks[k + 2].of == "product"
-                and toks[n].kind == "num" and toks[n + 1].kind == "word" and toks[n + 1].value == "to"):
-            out += [Tok("word", "", "move"), toks[n], toks[k + 2], Tok("word", "", "from"), toks[k]]
+        topic = _topic_sent_on(toks, k) if opens else None
+        if topic is not None:
+            place, item, n = topic
+            out += [Tok("word", "", "move"), toks[n], toks[item], Tok("word", "", "from"), toks[place]]
             k = n + 1
             continue
         out.append(toks[k])
         k += 1
     return out
+
+
+def _topic_sent_on(toks: list[Tok], k: int) -> tuple[int, int, int] | None:
+    """(where the place is, where the item is, where the count is) of a place and an item said
+    first and a count sent on "to" somewhere, at ``toks[k]``: "[from] P's X [:|,] N to", "[the] X
+    (from | on | in | at) [the] P [:|,] N to"; None where the sentence does not open so."""
+    def at(j: int, kind: str, of: str | None = None, *values: str) -> bool:
+        return j < len(toks) and toks[j].kind == kind and (of is None or toks[j].of == of) \
+            and (not values or toks[j].value in values)
+    j = k + at(k, "word", None, "from")
+    if at(j, "name", "shelf") and at(j + 1, "word", None, POSS_MARK) and at(j + 2, "name", "product"):
+        place, item, j = j, j + 2, j + 3
+    else:
+        j = k + at(k, "word", None, "the")
+        if not (at(j, "name", "product") and at(j + 1, "word", None, "from", "on", "in", "at")):
+            return None
+        item, j = j, j + 2
+        j += at(j, "word", None, "the")
+        if not at(j, "name", "shelf"):
+            return None
+        place, j = j, j + 1
+    j += at(j, "punct", None, ":", ",")
+    return (place, item, j) if at(j, "num") and at(j + 1, "word", None, "to") else None
 
 
 def _sent_out_of(toks: list[Tok], k: int) -> tuple[int, int] | None:

@@ -211,8 +211,12 @@ def _transfer(st: _State, s: dict) -> None:
                                f"{', '.join(target)} (say 'each' or 'evenly between')")
     src_sel = s.get("from") or {}
     sources = _names(src_sel, st.places)
-    if "names" not in src_sel:
-        sources = [p for p in sources if p not in target]
+    if sources and set(sources) <= set(target):
+        # "the rest upstairs to the mezz" where "upstairs" is also the mezzanine's word: a move
+        # from a place to itself asks for nothing, so a word was read as the wrong role
+        raise TranslationError(f"'{words}' would move things from {sources[0]} to {sources[0]} itself: "
+                               f"cannot tell where they come from")
+    sources = [p for p in sources if p not in target]   # "every place to rack B": the others
     st.check_names(sources + target, [], words)
     item_sel = s.get("items") or {}
     for src in sources:
