@@ -4,7 +4,7 @@ on sofa take to his bed"), a thing's place said with it before its verb (where i
 Korean chat's "ㅠㅠ", "ㅋㅋ", "please~" and "Fighting!", "after washing," (then), Jamaican Creole's
 function words ("tek di cup outa di sink", "di plate dem", "mi cup", "pon"), "yuh hear?", "wash
 out", "the two plates" where the home has two, "when it hot" (the copula left out) and a
-condition said in Creole; a number written into a word (Arabizi, pair WW) is refused. In a house of our own, through the real reader; each rule with what
+condition said in Creole; a number written into a word (Arabizi, pair WW) is never a count. In a house of our own, through the real reader; each rule with what
 stays refused."""
 from __future__ import annotations
 
@@ -88,12 +88,22 @@ def test_what_stays_refused(house: dict, said: str) -> None:
         translate(said, house)
 
 
-@pytest.mark.parametrize("said", ["wash the cup 5alas", "7oto the cup 3al table", "wash the cup e5salo"])
-def test_a_number_written_into_a_word_is_never_a_count(house: dict, said: str) -> None:
+@pytest.mark.parametrize("said, word", [("7oto the cup 3al table", "hoto"), ("wash the cup e5salo", "ekhsalo")])
+def test_a_number_written_into_a_word_is_never_a_count(house: dict, said: str, word: str) -> None:
     """Arabizi writes digits for letters ("3al": on, "5alas": done); split from its word, the digit
-    would be read as a count of what follows. Refused, quoting the word."""
-    with pytest.raises(PipflowError, match="number written into a word"):
+    would be read as a count of what follows. Since pair GG the word is spelt in letters first
+    (:mod:`pipflow.language.arabizi`): a word no lexicon knows is refused, quoted as spelt, and no
+    count is read."""
+    with pytest.raises(PipflowError, match=word):
         translate(said, house)
+
+
+def test_arabizi_talk_spelt_in_letters_is_talk(house: dict) -> None:
+    """ "ma3lesh" (maalesh: never mind) spelt in letters is the talk it is; "5alas" stays refused:
+    its letters are an English word ("alas"), so the 5 may be a count glued to it."""
+    assert goal("wash the cup ma3lesh", house) == goal("wash the cup", house)
+    with pytest.raises(PipflowError, match="number written into a word"):
+        translate("wash the cup 5alas", house)
 
 
 def test_a_time_or_ordinal_written_with_its_number_is_no_such_word(house: dict) -> None:

@@ -101,7 +101,9 @@ GREETINGS = frozenset({"hi", "hello", "hey", "hiya", "heya", "howdy", "morning",
                        "aoa", "salam", "salaam", "assalam", "assalamualaikum", "asalamualaikum", "walaikum",
                        "jumma", "eid", "mubarak",
                        # Jamaican ("Wah gwaan unu": what's going on, you all)
-                       "wah", "wha", "gwaan"})
+                       "wah", "wha", "gwaan",
+                       # Romanian ("Buna seara, ...": good evening; "salut baieti": hi, lads)
+                       "buna", "seara", "ziua", "dimineata", "noapte"})
 #: words that open an apology or a thanks for something ("sorry for the late ask", "thanks for
 #: earlier"): what follows "for" / "about" is what one is sorry or thankful for, not an order
 PLEASANTRIES = frozenset({"sorry", "apologies", "apologise", "apologize", "pardon", "thanks", "thank", "thx",
@@ -138,7 +140,9 @@ ADDRESSEES = frozenset({"all", "everyone", "everybody", "team", "folks", "guys",
                         # Urdu ("AoA bhai": brother; "ji": the polite particle; "sahab", "janab": sir; "yaar": mate)
                         "bhai", "bhaiya", "ji", "sahab", "sahib", "janab", "yaar",
                         # Jamaican ("Morning unu": you all; "bredda": brother; "mi bredren": friends)
-                        "unu", "bredda", "breddah", "bredren", "sistren", "yute"})
+                        "unu", "bredda", "breddah", "bredren", "sistren", "yute",
+                        # Romanian ("frate": bro; "baieti", "baietii": lads; "bre": hey you; "colegi": colleagues)
+                        "frate", "fratilor", "baieti", "baietii", "bre", "colegi"})
 
 
 #: a thanks that can close an order without a comma before it ("... to bay 2 ta")
@@ -146,7 +150,11 @@ THANKS = frozenset({"thanks", "ta", "cheers", "xiexie", "thx", "ty", "tyvm", "th
                     "asanteni", "gracias", "dzieki", "dziekuje", "obrigada", "obrigado", "brigada", "brigado", "valeu",
                     "vlw",
                     # Urdu ("..., shukriya": thank you; "jazakallah": God reward you); Jamaican "tanks"
-                    "shukriya", "shukria", "jazakallah", "tanks"})
+                    "shukriya", "shukria", "jazakallah", "tanks",
+                    # Romanian ("mersi": thanks; "multumesc": thank you)
+                    "mersi", "multumesc", "multam",
+                    # Egyptian Arabic ("shokran": thanks)
+                    "shokran", "shukran"})
 #: who an order is said to, or a tag that closes it, without a comma before it ("... on dispatch
 #: please mate", "... forklifts only mind", "... thanks lads"): never a word that is operative
 CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "boss", "love", "pet", "hun",
@@ -194,7 +202,9 @@ CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "
                      "yaar", "ji", "shukriya", "shukria", "jazakallah", "inshallah", "inshaallah",
                      # Jamaican ("..., bless": take care; "respect"; "seen?": understood?; "eeh": OK?;
                      # "tanks": thanks)
-                     "bless", "respect", "seen", "eeh", "tanks"})
+                     "bless", "respect", "seen", "eeh", "tanks",
+                     # Romanian ("..., gata": done, that's it; "mersi": thanks; "frate", "bre": mate; "pa": bye)
+                     "gata", "mersi", "multumesc", "frate", "bre", "pa"})
 
 
 #: a request tag after an order ("... over to the shed would ya", "... could you"): it asks
@@ -790,6 +800,9 @@ INTERJECTIONS = frozenset({
     "alhamdulillah", "shukriya", "shukria", "jazakallah",
     # Jamaican ("Lawd, ...", "cho": annoyance; "eeh": OK?; "irie": all is well; "bless", "respect", "seen")
     "lawd", "cho", "choh", "eeh", "irie", "bless", "respect", "seen", "gwaan", "tanks",
+    # Romanian ("Hai, ...": come on; "gata": done; "bine": fine; "deci": so; "adica": that is; "doamne":
+    # God; "mersi": thanks; "frate", "bre": mate)
+    "hai", "haide", "gata", "bine", "deci", "adica", "doamne", "mersi", "multumesc", "frate", "bre", "pa",
     # a signpost of urgency ("Attention! swap ...")
     "attention"})
 

@@ -85,6 +85,32 @@ def patois_as_english(words: list[str], known: Callable[[str], bool], noun: Call
     return out
 
 
+#: Egyptian and Levantine Arabic words said in English at home, read as the English word ("put el
+#: mug in el sink", "3ashan Teta", "hot awi"): the article, "because", "very", "tomorrow", "now"
+_ARABIC = {"el": "the", "il": "the", "aashan": "because", "ashan": "because", "alashan": "because",
+           "bokra": "tomorrow", "delwaqty": "now",
+           # how it feels ("el gaw 7ar": the air is hot; "bard": cold; "dalma": dark)
+           "gaw": "place", "har": "hot", "bard": "cold", "dalma": "dark"}
+
+
+def arabic_as_english(words: list[str], known: Callable[[str], bool], notes: list[str]) -> list[str]:
+    """The words with Arabic words said in English read as English (:data:`_ARABIC`), each only
+    where it is no name of the home alone (``known``), in a command that says one of them; there "w"
+    (Arabic "and", written on the next word in Arabic script) is "and"."""
+    arabic = any(w in _ARABIC and not known(w) for w in words)
+    out: list[str] = []
+    for k, w in enumerate(words):
+        said = None if known(w) or not arabic else _ARABIC.get(w)
+        if w == "w" and arabic:
+            said = "and"
+        if said is None:
+            out.append(w)
+            continue
+        notes.append(f"'{w}' read as '{said}' (Arabic)")
+        out += said.split()
+    return out
+
+
 def patois_in_home(words: list[str], index: dict, notes: list[str]) -> list[str]:
     """:func:`patois_as_english` with the home's names (``index``: the world's phrases) saying which
     words are its things' names alone (never read as patois) and which may be part of one."""

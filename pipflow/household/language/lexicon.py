@@ -526,6 +526,11 @@ FILLER = {("um",), ("umm",), ("uh",), ("uhh",), ("uhm",), ("er",), ("erm",),   #
           # as English, so no patois word is made a word of the reader here)
           ("lawd",), ("cho",), ("eeh",), ("seen",), ("irie",), ("bless",), ("respect",), ("tanks",), ("gwaan",),
           ("beg", "you"), ("you", "hear"), ("you", "hear", "me"),
+          # Egyptian Arabic, typed in Latin letters ("yaani": I mean; "maalesh": never mind; "khalas": done,
+          # enough; "yalla": come on; "mashi": OK; "ya rab": o Lord; "habibi": dear), spelt without digits
+          # (pipflow.language.arabizi)
+          ("yaani",), ("maalesh",), ("khalas",), ("yalla",), ("mashi",), ("ya", "rab"), ("ya", "habibi"),
+          ("habibi",), ("habibti",), ("inshallah",), ("shokran",), ("merci",), ("ya", "salam"), ("ya", "nhar", "abyad"), ("awi",), ("awy",),
           ("please",), ("kindly",), ("abeg",), ("biko",), ("just",), ("quickly",), ("now",), ("for", "me"), ("for", "us"), ("could", "you"),
           ("can", "you"), ("would", "you"), ("will", "you"), ("i", "need", "you", "to"), ("i", "want", "you", "to"),
           ("we", "need", "you", "to"), ("go", "ahead", "and"), ("go", "and"), ("hey",), ("robots",), ("team",),

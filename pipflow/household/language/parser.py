@@ -43,9 +43,11 @@ from pipflow.household.language.people import about_people
 from pipflow.household.language.setaside import reads_as_word, without_asides
 from pipflow.household.language.tagger import owners_as_the, tag
 from pipflow.household.language.tokens import Tag
+from pipflow.language.arabizi import spelt_in_letters
 from pipflow.language.asides import said
 from pipflow.language.characters import (accents_folded, declared_spellings, non_ascii_words, refuse_unread, turkish_i,
                                          without_expressions)
+from pipflow.language.english import common_word
 from pipflow.language.listing import inline_numbering
 from pipflow.language.earley import ListLexer, earley_parser
 from pipflow.language.lookahead import with_lookahead
@@ -97,6 +99,7 @@ def _parse_said(command: str, world: dict, notes: list[str]) -> list[dict]:
         command, accented = accents_folded(command, reads_as_word(world))
         notes += declared + accented
     refuse_unread(command, MARKS)   # a character this reader does not read is refused, never skipped
+    command = spelt_in_letters(command, _english_or_read(world), notes)   # "ya3ni", "el gaw 7ar"
     refuse_digits_in_words(command)
     command = owners_as_the(command, world, notes)
     command = conditions_read(command, world, notes)   # "if the lamp is on, switch it off"
@@ -113,6 +116,13 @@ def _parse_said(command: str, world: dict, notes: list[str]) -> list[dict]:
 _NUMBER_SUFFIXES = {"am", "pm", "st", "nd", "rd", "th", "h", "hr", "hrs", "min", "mins", "s", "x", "kg", "g", "ml",
                     "l", "cm", "mm", "m", "ish"}
 _GLUED = re.compile(r"(?<![A-Za-z0-9])(\d+)([A-Za-z]+[A-Za-z0-9]*)")
+
+
+def _english_or_read(world: dict):
+    """Whether a word is one this reader or this home reads, a unit said with a number, or an
+    English word of three letters or more: a digit glued to it is a count, never Arabizi."""
+    reads = reads_as_word(world)
+    return lambda w: w in _NUMBER_SUFFIXES or reads(w) or (len(w) >= 3 and common_word(w))
 
 
 def refuse_digits_in_words(command: str) -> None:

@@ -16,6 +16,7 @@ from pipflow.household.language.colloquial import colloquial
 from pipflow.household.language.corrections import corrected
 from pipflow.household.language.dialect import (bring_in, cut_as_switch, make_as_switch, on_off_as_verbs,
                                                 open_close_as_switch, particle_before_exception, patois_in_home,
+                                                arabic_as_english,
                                                 put_on_as_switch, romance_words_as_english, scots_as_english,
                                                 setting_as_switch, them_as_those)
 from pipflow.household.language.headwords import named_again
@@ -131,6 +132,7 @@ def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: l
     def known(word: str) -> bool:   # a word of the home or of the reader
         return known_word(word, index, vocab)
 
+    words = arabic_as_english(words, lambda w: (w,) in index, notes)   # a name alone keeps its meaning
     words = romance_words_as_english(scots_as_english(words, known, notes), known, notes)
     words = of_as_where(adjective_after(words, index, notes), world, index, notes)
     words = where_as_name(one_as_kind(words, world, index, notes), index, notes, owners(world, words))

@@ -297,6 +297,9 @@ goal: there_be items loc                                  -> g_set
     | want places "to"? "be"? emptied                      -> g_empty
     | want places ("holding" | "having" | "with") items       -> g_place_set
     | "nothing" modal? ("leaves" | "leave" | go "out" "of" | "be" "taken" "from" | "be" "removed" "from" | "comes" "off" | "come" "off") places -> g_keep
+    // "nobody touches rack 3", "rack 3 nobody touches tonight": it stays as it is
+    | ("nobody" | "noone" | "no" "one") modal? ("touches" | "touch") places -> g_keep
+    | places ","? ("nobody" | "noone" | "no" "one") modal? ("touches" | "touch") -> g_keep
     | ("reduce" | "lower" | "cut" | "drop" | "increase" | "raise" | "bring" | "take" | "get") ihead loc ("down" | "up")? "to" NUM -> g_item_first
     | ("bring" | "take" | "get" | "knock") ihead loc ("down" | "up") "by" NUM -> g_updown
     | ("bring" | "take" | "get" | "cut" | "lower") ihead "there" ("up" | "down")? "to" NUM -> g_item_there

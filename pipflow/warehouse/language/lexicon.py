@@ -125,6 +125,8 @@ IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before
           # Dutch "a.u.b." / "aub" (alstublieft: please) and "dank u" (thank you), said in English orders
           (re.compile(r"(?<![\w.])a\.?u\.?b\.?(?![\w])", re.IGNORECASE), "please"),
           (re.compile(r"\bdank\s+u\b", re.IGNORECASE), "thanks"),
+          # Romanian "please" ("te rog", "va rog"), said in English orders
+          (re.compile(r"\b(?:te|va)\s+rog\b", re.IGNORECASE), "please"),
           # Spanish and Portuguese "please" ("por favor", "por favour"), said in English orders
           (re.compile(r"\bpor\s+(?:favor|favour)\b", re.IGNORECASE), "please"),
           # "EUR pal.", "6 pal water": pallets (a unit word; "pal" alone elsewhere may be a friend)

@@ -79,7 +79,9 @@ PACKAGING_WORDS = frozenset({
     # German "Stk." (Stück: pieces), "Palette(n)", "Kiste(n)" (crates)
     "stk", "stck", "palette", "paletten", "kiste", "kisten",
     # bales (of textiles, "3 bales of t-shirts")
-    "bale", "bales"})
+    "bale", "bales",
+    # pallets said the French and Romanian way ("20 palettes of flour"; Romanian "paleti", "palete")
+    "palettes", "paleti", "palete"})
 #: every word said after a count for its unit ("5 pcs", "4 pallets", "6 case"): no thing of its own
 COUNT_UNITS = PACKAGING_WORDS | {"units", "unit", "pieces", "piece", "boxes", "box", "crate", "crates", "case",
                                  "cases", "pcs", "pallets", "pallet"}
@@ -850,7 +852,11 @@ class NameIndex:
             n = word_value(nxt)
             if not digits and alpha and n is not None and not self._unnumbered_class(alpha) and (
                     alpha not in STOPWORDS or self.kind_of_word(alpha)):
-                found = self.lookup(alpha, str(n), text)
+                # a word the world declares for a place ("rack 2" for raft2) before a kind word and
+                # its number, which would look for a place numbered so and find none
+                declared = self.forms.get(alpha + str(n))
+                found = Tok("name", text, declared.name, declared.kind) if declared is not None else \
+                    self.lookup(alpha, str(n), text)
                 if found is not None:
                     return found, i + 2
             if not n:  # a name written apart ("cold store", "rack a", "label rolls"): no typos
