@@ -60,6 +60,7 @@ def _same(said: str, plain: str) -> None:
     ("Keep between 4 and 6 nut on outbound, not less not more", "outbound should have between 4 and 6 nut"),
     ("outbound should have 6 nut, no more no less", "outbound should have 6 nut"),
     ("outbound should hold 5 bolts, intake also same", "outbound and intake should each have 5 bolt"),
+    ("outbound should hold 5 bolts, intake the same also", "outbound and intake should each have 5 bolt"),
     ("Two jobs plz: empty outbound, and double the nut on rack A", "empty outbound, and double the nut on rack A"),
     ("Double the nut on rack A. Robots that carry less than 4 should not do any of this",
      "Double the nut on rack A. Don't use robots that carry less than 4"),

@@ -99,7 +99,7 @@ def arabic_as_english(words: list[str], known: Callable[[str], bool], notes: lis
     (Arabic "and", written on the next word in Arabic script) is "and"."""
     arabic = any(w in _ARABIC and not known(w) for w in words)
     out: list[str] = []
-    for k, w in enumerate(words):
+    for w in words:
         said = None if known(w) or not arabic else _ARABIC.get(w)
         if w == "w" and arabic:
             said = "and"

@@ -25,7 +25,7 @@ from __future__ import annotations
 import functools
 import json
 import re
-from typing import Iterator
+from typing import Callable, Iterator
 
 from lark import Lark, Token, Tree
 from lark.exceptions import UnexpectedInput
@@ -118,7 +118,7 @@ _NUMBER_SUFFIXES = {"am", "pm", "st", "nd", "rd", "th", "h", "hr", "hrs", "min",
 _GLUED = re.compile(r"(?<![A-Za-z0-9])(\d+)([A-Za-z]+[A-Za-z0-9]*)")
 
 
-def _english_or_read(world: dict):
+def _english_or_read(world: dict) -> Callable[[str], bool]:
     """Whether a word is one this reader or this home reads, a unit said with a number, or an
     English word of three letters or more: a digit glued to it is a count, never Arabizi."""
     reads = reads_as_word(world)

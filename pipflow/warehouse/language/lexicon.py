@@ -168,7 +168,8 @@ IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before
           (re.compile(r"\b(use|using)\s+([^.,;:!?]{1,40}?)\s+for\s+any\s+of\s+(?:this|it|that|these|them)\b",
                       re.IGNORECASE), r"\1 \2"),
           # "mezz should hold 15 X, rack 2 also same" (Pakistani and Indian English): the same, too
-          (re.compile(r"\b(?:also\s+(?:the\s+)?same|same\s+also)(?=\s*(?:[.,;!?]|$))", re.IGNORECASE), "the same"),
+          (re.compile(r"\b(?:the\s+)?(?:also\s+(?:the\s+)?same|same\s+also)(?=\s*(?:[.,;!?]|$))", re.IGNORECASE),
+           "the same"),
           # "from 2 till 3 X there": between 2 and 3 (a number after "from" is no place)
           (re.compile(r"\bfrom\s+(\d+)\s+(?:till|until|til|to)\s+(\d+)\b", re.IGNORECASE), r"between \1 and \2"),
           # "ramp 1 and ramp 2 - swap everything between them": the places said first
