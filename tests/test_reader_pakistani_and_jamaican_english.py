@@ -110,7 +110,8 @@ places:
   fridge:  {x: 11.0, y: 1.0, width: 1.0, depth: 0.8, access: [11.5, 2.0], properties: [receptacle, openable],
             state: {open: false}}
   tv:      {x: 10.0, y: 6.5, width: 0.3, depth: 0.3, access: [10.0, 5.8], properties: [toggleable], state: {on: true}}
-  fan:     {x: 8.0, y: 6.0, width: 0.3, depth: 0.3, access: [8.0, 5.4], properties: [toggleable], state: {on: false}}
+  fan:     {x: 8.0, y: 6.0, width: 0.3, depth: 0.3, access: [8.0, 5.4], properties: [toggleable], state: {on: false},
+            words: [big fan, living room fan]}
   hamper:  {x: 1.0, y: 6.5, width: 0.6, depth: 0.6, access: [1.5, 5.8], properties: [receptacle]}
 objects:
   boots:   {in: table, mass: 1, properties: [pickupable, washable], state: {dirty: true}, words: [football boots]}
@@ -138,6 +139,8 @@ def house() -> dict:
     ("wipe down the enamel cup", "wash the enamel cup"),
     ("Two ting: wash out di enamel cup, an close di fridge", "wash the enamel cup and close the fridge"),
     ("Two things: wash the enamel cup, and close the fridge", "wash the enamel cup and close the fridge"),
+    # the where names the thing again: "the big fan" is the living room fan
+    ("Tun on di big fan inna di living room", "switch on the fan"),
 ])
 def test_jamaican_english_reads_as_its_plain_english(house: dict, said: str, plain: str) -> None:
     assert goal(said, house) == goal(plain, house)

@@ -78,9 +78,27 @@ def where_as_name(words: list[str], index: dict, notes: list[str], people: dict 
             k += 1
             continue
         a, m, name = found
+        whole = _said_whole(out, a, e, name, index)
+        if whole is not None:   # "the big fan in the living room": the big fan, which is the living room fan
+            notes.append(f"'{' '.join(out[whole:m])}' read as the {' '.join(out[whole:e])} (the where names it again)")
+            out[whole:m] = out[whole:e] + out[e:k]   # what follows the where now stands at k
+            continue
         if name[0] in _POSSESSIVES and a and out[a - 1] == "the":   # "the water heater in our toilet"
             a -= 1
         notes.append(f"'{' '.join(out[a:m])}' read as the {' '.join(name + out[e:k])} (the home's word for it)")
         out[a:m] = name + out[e:k]
         k = a + len(name) + k - e
     return out
+
+
+def _said_whole(out: list[str], a: int, e: int, name: list[str], index: dict) -> int | None:
+    """Where a longer name of the same thing opens before the thing's last words ``out[a:e]``
+    ("the *big fan* in the living room", where the home calls its ceiling fan both "big fan" and
+    "living room fan"): the where then names it again, and is left out; None where no such name
+    is said (the where picks the thing out, and is read as its name)."""
+    meant = {ref["name"] for ref in index.get(tuple(name), [])}
+    for start in range(max(0, e - _LONGEST), a):
+        said = out[start:e]
+        if one_thing(index, said) and {ref["name"] for ref in index[tuple(said)]} == meant:
+            return start
+    return None
