@@ -77,16 +77,23 @@ def patois_as_english(words: list[str], known: Callable[[str], bool], noun: Call
             said = "and"
         else:
             said = PATOIS.get(w) or _PATOIS_AT_HOME.get(w)
-        if said is None:
-            out.append(w)
-            continue
-        notes.append(f"'{w}' read as '{said}' (Jamaican Creole)")
-        out += said.split()
+        _said_as(out, w, said, "Jamaican Creole", notes)
     return out
 
 
+def _said_as(out: list[str], word: str, said: str | None, language: str, notes: list[str]) -> None:
+    """Add ``word`` to ``out`` read as the English ``said`` (noted, with its ``language``), or as it
+    is where ``said`` is None."""
+    if said is None:
+        out.append(word)
+        return
+    notes.append(f"'{word}' read as '{said}' ({language})")
+    out += said.split()
+
+
 #: Egyptian and Levantine Arabic words said in English at home, read as the English word ("put el
-#: mug in el sink", "3ashan Teta", "hot awi"): the article, "because", "very", "tomorrow", "now"
+#: mug in el sink", "3ashan Teta", "el gaw 7ar"): the article, "because", "tomorrow", "now", the feel
+#: of the air ("awi", very, is a filler: lexicon ``FILLER``)
 _ARABIC = {"el": "the", "il": "the", "aashan": "because", "ashan": "because", "alashan": "because",
            "bokra": "tomorrow", "delwaqty": "now",
            # how it feels ("el gaw 7ar": the air is hot; "bard": cold; "dalma": dark)
@@ -103,11 +110,7 @@ def arabic_as_english(words: list[str], known: Callable[[str], bool], notes: lis
         said = None if known(w) or not arabic else _ARABIC.get(w)
         if w == "w" and arabic:
             said = "and"
-        if said is None:
-            out.append(w)
-            continue
-        notes.append(f"'{w}' read as '{said}' (Arabic)")
-        out += said.split()
+        _said_as(out, w, said, "Arabic", notes)
     return out
 
 

@@ -99,7 +99,8 @@ def _parse_said(command: str, world: dict, notes: list[str]) -> list[dict]:
         command, accented = accents_folded(command, reads_as_word(world))
         notes += declared + accented
     refuse_unread(command, MARKS)   # a character this reader does not read is refused, never skipped
-    command = spelt_in_letters(command, _english_or_read(world), notes)   # "ya3ni", "el gaw 7ar"
+    if _LETTER_BY_DIGIT.search(command):   # "ya3ni", "el gaw 7ar" (the home's words are read only then)
+        command = spelt_in_letters(command, _english_or_read(world), notes)
     refuse_digits_in_words(command)
     command = owners_as_the(command, world, notes)
     command = conditions_read(command, world, notes)   # "if the lamp is on, switch it off"
@@ -116,6 +117,8 @@ def _parse_said(command: str, world: dict, notes: list[str]) -> list[dict]:
 _NUMBER_SUFFIXES = {"am", "pm", "st", "nd", "rd", "th", "h", "hr", "hrs", "min", "mins", "s", "x", "kg", "g", "ml",
                     "l", "cm", "mm", "m", "ish"}
 _GLUED = re.compile(r"(?<![A-Za-z0-9])(\d+)([A-Za-z]+[A-Za-z0-9]*)")
+#: a letter and a digit side by side: where Arabizi may be written
+_LETTER_BY_DIGIT = re.compile(r"[A-Za-z]\d|\d[A-Za-z]")
 
 
 def _english_or_read(world: dict) -> Callable[[str], bool]:

@@ -161,10 +161,8 @@ IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before
                       r"(?:not|no)\s+(?:less|fewer|more)\b", re.IGNORECASE), r"\1"),
           # "Robots that carry less than 4 should not do any of this", "Dont use Sher for any of it": no
           # part of the command's work, a rule for all of it
-          (re.compile(r"\b(should|must|may|can|shall)\s*(?:not|n't)\s+do\s+any\s+of\s+(?:this|it|that|these|them)\b",
+          (re.compile(r"\b(should|must|may|can|shall)(?:\s*not|n'?t|'?t)\s+do\s+any\s+of\s+(?:this|it|that|these|them)\b",
                       re.IGNORECASE), r"\1 not be used"),
-          (re.compile(r"\b(shouldnt|mustnt|cant)\s+do\s+any\s+of\s+(?:this|it|that|these|them)\b", re.IGNORECASE),
-           r"\1 be used"),
           (re.compile(r"\b(use|using)\s+([^.,;:!?]{1,40}?)\s+for\s+any\s+of\s+(?:this|it|that|these|them)\b",
                       re.IGNORECASE), r"\1 \2"),
           # "mezz should hold 15 X, rack 2 also same" (Pakistani and Indian English): the same, too
@@ -555,8 +553,7 @@ def case_endings(toks: list[Tok]) -> list[Tok]:
         if prep is None and place and t.kind == "word" and str(t.value) in _POSTPOSITIONS:
             # "rack 1 se 9 bags ...": the count after the place is set off as a fronted source's is
             # ("from rack 1, 9 bags ..."), never read as the place's number
-            after = str(toks[k + 1].value) if k + 1 < len(toks) else ""
-            counted = after.isdigit() or after in NUMBER_WORDS
+            counted = k + 1 < len(toks) and is_number(str(toks[k + 1].value))
             out[-1:] = [Tok("word", _POSTPOSITIONS[str(t.value)], _POSTPOSITIONS[str(t.value)]), out[-1]] \
                 + ([Tok("punct", ",", ",")] if counted else [])
         elif prep is None:

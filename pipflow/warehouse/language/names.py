@@ -585,6 +585,11 @@ class NameIndex:
             exact = [n for n in self.names if n.digits == digits and (v == n.alpha or digits and v in _spellings(n.alpha))]
             if exact:
                 return Tok("name", text, exact[0].name, exact[0].kind)
+        # a word the world declares in the shape of a word and a number ("rack 2" for raft2): that
+        # name, before a kind word and a number look for a place numbered so and find none
+        declared = self.forms.get(alpha + digits) if digits else None
+        if declared is not None:
+            return Tok("name", text, declared.name, declared.kind)
         if not digits and any(v in KIND_WORDS[k] or v in self.groups or v in self.robot_groups
                               for k in KINDS for v in variants(alpha)):
             # "racks" is the kind word, not a misspelt rack_a (nor a tie of all racks); "row" of
@@ -852,11 +857,7 @@ class NameIndex:
             n = word_value(nxt)
             if not digits and alpha and n is not None and not self._unnumbered_class(alpha) and (
                     alpha not in STOPWORDS or self.kind_of_word(alpha)):
-                # a word the world declares for a place ("rack 2" for raft2) before a kind word and
-                # its number, which would look for a place numbered so and find none
-                declared = self.forms.get(alpha + str(n))
-                found = Tok("name", text, declared.name, declared.kind) if declared is not None else \
-                    self.lookup(alpha, str(n), text)
+                found = self.lookup(alpha, str(n), text)
                 if found is not None:
                     return found, i + 2
             if not n:  # a name written apart ("cold store", "rack a", "label rolls"): no typos
