@@ -147,7 +147,7 @@ def test_the_verb_lexicon_maps_each_verb_to_its_operation(command: str, goal: di
 def test_every_lexicon_verb_names_an_operation_and_a_grammar_verb() -> None:
     from pipflow.warehouse.language.lexicon import VERB_LEXICON
     from pipflow.warehouse.language.parser import keywords
-    ops = {"place", "move", "remove", "keep", "gather", "empty"}
+    ops = {"place", "move", "remove", "keep", "gather", "empty", "fill"}
     for phrase, (op, verb) in VERB_LEXICON.items():
         assert op in ops and verb in keywords(), phrase
 

@@ -142,7 +142,9 @@ ADDRESSEES = frozenset({"all", "everyone", "everybody", "team", "folks", "guys",
                         # Jamaican ("Morning unu": you all; "bredda": brother; "mi bredren": friends)
                         "unu", "bredda", "breddah", "bredren", "sistren", "yute",
                         # Romanian ("frate": bro; "baieti", "baietii": lads; "bre": hey you; "colegi": colleagues)
-                        "frate", "fratilor", "baieti", "baietii", "bre", "colegi"})
+                        "frate", "fratilor", "baieti", "baietii", "bre", "colegi",
+                        # European Portuguese ("Bom dia pá": mate; "malta": folks)
+                        "pa", "malta"})
 
 
 #: a thanks that can close an order without a comma before it ("... to bay 2 ta")
@@ -293,6 +295,36 @@ def trailing_adjunct(words: list[str], content: Callable[[str], bool],
             return 0   # the clause is talk as a whole, or nothing: judged as a clause
         return len(words) - j
     return 0
+
+
+#: the speaker, whose wish may follow a fronted purpose ("for the Lidl order I need ...")
+_SPEAKER = frozenset({"i", "we", "im", "id", "ill", "ive"})
+
+
+def leading_adjunct(words: list[str], content: Callable[[str], bool], names: Callable[[str], bool]) -> int:
+    """How many words open a clause as a purpose that carries nothing: "for the order of Pingo Doce
+    I need ...", "For the Auchan the dock takes ...", "For the inventory: ..." (a client or an
+    occasion said first, as Portuguese and Spanish front "para"). It is "for", then words none of
+    which is operative, a number, a name of the world (``names``: the words of the grammar may say
+    what for: "order", "count") or a pronoun that points at the order's things or the robots, up to
+    the first name of the world (with the determiner before it) or the speaker ("I", "we"); the
+    words after it must carry content (``content``). The whole clause when no such word comes: a
+    heading set off by its mark. 0 when the clause opens otherwise."""
+    if len(words) < 2 or words[0] != "for":
+        return 0
+    j = 1
+    while j < len(words) and not names(words[j]) and words[j] not in _SPEAKER:
+        j += 1
+    while 1 < j < len(words) and words[j - 1] in DETERMINERS:
+        j -= 1
+    said = words[1:j]
+    if not said or said[0] in _BACK or any(
+            names(w) or any(ch.isdigit() for ch in w) or w in _YOU or w in OBJECT_PRONOUNS or near_operative(w)
+            for w in said):
+        return 0
+    if j < len(words) and not any(content(w) or near_operative(w) for w in words[j:]):
+        return 0
+    return j
 
 
 @dataclass(frozen=True)
@@ -541,9 +573,27 @@ def _operative_at(ws: list[str], k: int) -> bool:
         return False
     if _the_same_as_subject(ws, k):
         return False
+    if _degree_at(ws, k):
+        return False
     if k == 0 and ws[0] in ("those", "these") and nxt in ("are", "were", "re", "is") and len(ws) > 2:
         return False   # "..., those are booked for the other party": the subject of a report, no selection
     return near_operative(ws[k])
+
+
+#: words "too" says the degree of, that are operative alone ("too much", "too full")
+_DEGREED = frozenset({"much", "many", "few", "little", "full", "empty"})
+
+
+def _degree_at(ws: list[str], k: int) -> bool:
+    """Whether the word at ``k`` is the "too" of a degree ("is too full there", "too heavy for
+    them", "too much there": a reason, no "also") or the word it grades ("much" of "too much").
+    "too" closing a clause, or before "please" or a thanks ("this too please"), is "also"."""
+    if k and ws[k - 1] == "too" and ws[k] in _DEGREED:
+        return True
+    nxt = ws[k + 1] if k + 1 < len(ws) else ""
+    return ws[k] == "too" and (nxt in _DEGREED or (
+        nxt.isalpha() and common_word(nxt) and nxt not in FUNCTION_WORDS | CLOSERS | THANKS | PLEASANTRIES
+        and nxt not in INTERJECTIONS and nxt not in ("please", "pls", "plz")))
 
 
 def _the_same_as_subject(ws: list[str], k: int) -> bool:
@@ -756,6 +806,9 @@ INTERJECTIONS = frozenset({
     "beleza", "blz", "rsrs", "kkk", "kkkk", "kkkkk", "rapidinho", "atencao",
     # and "galera", "pessoal" (folks) opening a message with no comma ("galera I want ..."); "agora": now
     "galera", "pessoal", "agora",
+    # European Portuguese ("Olha, ...": look; "Então, ...": so; "pronto": right, done; "vá": go on; "pá":
+    # mate; "já está": done; "ai ai"; "obrigado": thanks)
+    "olha", "olhe", "entao", "pronto", "va", "ja", "esta", "ai", "obrigado", "obrigada",
     # Gulf Arabic ("Yalla, ...": come on; "inshallah", "mashallah", "wallah"; "khalas": done)
     "yalla", "inshallah", "mashallah", "wallah", "khalas", "shukran",
     # Vietnamese particles ("nha", "nhé": OK?, please)

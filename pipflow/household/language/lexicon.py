@@ -531,6 +531,12 @@ FILLER = {("um",), ("umm",), ("uh",), ("uhh",), ("uhm",), ("er",), ("erm",),   #
           # (pipflow.language.arabizi)
           ("yaani",), ("maalesh",), ("khalas",), ("yalla",), ("mashi",), ("ya", "rab"), ("ya", "habibi"),
           ("habibi",), ("habibti",), ("inshallah",), ("shokran",), ("merci",), ("ya", "salam"), ("ya", "nhar", "abyad"), ("awi",), ("awy",),
+          # Amharic, typed in Latin letters ("ishi": OK; "bejih", "ebakih": please; "amesegnalehu": thank
+          # you; "selam", "tena yistilign": hello; "ere", "wey", "inji": oh, well; "yene konjo": my dear;
+          # "egziabher yimesgen": thank God; "chigir yelem": no problem; "betam": very)
+          ("ishi",), ("eshi",), ("bejih",), ("bejh",), ("ebakih",), ("ebakish",), ("ebakachu",), ("amesegnalehu",),
+          ("amesegnalew",), ("selam",), ("tena", "yistilign"), ("tenayistilign",), ("ere",), ("wey",), ("inji",),
+          ("yene", "konjo"), ("egziabher", "yimesgen"), ("chigir", "yelem"), ("betam",),
           ("please",), ("kindly",), ("abeg",), ("biko",), ("just",), ("quickly",), ("now",), ("for", "me"), ("for", "us"), ("could", "you"),
           ("can", "you"), ("would", "you"), ("will", "you"), ("i", "need", "you", "to"), ("i", "want", "you", "to"),
           ("we", "need", "you", "to"), ("go", "ahead", "and"), ("go", "and"), ("hey",), ("robots",), ("team",),

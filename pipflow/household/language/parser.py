@@ -35,6 +35,7 @@ from pipflow.errors import TranslationError
 from pipflow.household.language.builder import Builder
 from pipflow.household.language.conditions import conditions_read
 from pipflow.household.language.fronted import fronted_objects, topic_too
+from pipflow.household.language.gendered import things_called_him
 from pipflow.household.language.grammar import NOUN_DUAL, grammar_text
 from pipflow.household.language.lacking import lacking
 from pipflow.household.language.lexicon import ARROW, MARKS, PHRASES, arrows_said_as
@@ -104,6 +105,7 @@ def _parse_said(command: str, world: dict, notes: list[str]) -> list[dict]:
     refuse_digits_in_words(command)
     command = owners_as_the(command, world, notes)
     command = conditions_read(command, world, notes)   # "if the lamp is on, switch it off"
+    command = things_called_him(command, world, notes)   # "the veranda light is on, off him"
     try:
         return _parse_with_people(command, world, notes)
     except TranslationError as exc:

@@ -31,6 +31,7 @@ reads otherwise; the rewritten command must still read whole, every word placed.
 from __future__ import annotations
 
 import re
+from typing import Collection
 
 from pipflow.errors import TranslationError
 from pipflow.household.language.dialect import TWO_OBJECT_VERBS
@@ -67,10 +68,12 @@ ASKING = {"NEED", "WANT", "ADJ", "SEE", "TEMPCUE", "LIGHTCUE", "SOUNDCUE", "AIRC
 #: "give him the tea" is bringing it to where he is: the verb the grammar reads with "to P"
 GIVE_AS = {"give": "bring"}
 #: verbs that say a person is somewhere ("he sits in the armchair", "Tom's in bed")
-BEING = {"is", "sits", "sat", "lies", "stays", "was"}
-#: words between such a verb and where: posture and how long ("he sits the whole day in the armchair")
+BEING = {"is", "are", "sits", "sit", "sat", "lies", "stays", "was", "were"}
+#: words between such a verb and where: posture, how long, and what a person does there that takes no
+#: object ("he sits the whole day in the armchair", "Abiye is reading in the salon")
 THIRD_POSTURE = frozenset(POSTURE | {"the", "whole", "day", "always", "usually", "mostly", "morning", "afternoon",
-                                      "sleeping", "asleep", "dozing", "napping", "resting"})
+                                      "sleeping", "asleep", "dozing", "napping", "resting", "reading", "studying",
+                                      "working", "praying", "waiting", "sweating", "relaxing", "playing", "awake"})
 
 
 #: what a thing's own word says is someone's ("jun hao's bag", "ah ma's bed", "the kids' aircon")
@@ -303,6 +306,8 @@ class _Reader:
             return owner
         if w == "the" and k + 1 < len(words) and words[k + 1] in KIN and not self.known(words[k + 1]):
             return 2
+        if w == "the" and owner_at(words, k + 1, self.owners):   # "the twins" of "the twins' desk"
+            return 1 + owner_at(words, k + 1, self.owners)
         if w in TITLES and w not in self.home and k + 1 < len(words) and words[k + 1].isalpha() \
                 and not self.known(words[k + 1], typos=False):
             return 2 + self._capitalised_run(k + 2)
@@ -373,6 +378,13 @@ def _asks(word: str) -> bool:
     """Whether a word may ask something of the home in a clause about a person (:data:`ASKING`)."""
     cls = str(PHRASES.get((word,), ("",))[0])
     return cls.startswith("V_") or cls in ASKING
+
+
+def person_named(command: str, world: dict, but: Collection[str] = frozenset()) -> bool:
+    """Whether the command names a person (module docstring: who is a person), the words of
+    ``but`` aside."""
+    r = _Reader(command, world)
+    return any(w not in but and r.person(k) for k, w in enumerate(r.words))
 
 
 def about_people(command: str, world: dict, notes: list[str]) -> str | None:

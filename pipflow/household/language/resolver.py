@@ -299,6 +299,8 @@ class Resolver:
                 raise Refusal(f"'{words}': nothing of '{what}' is in {place}" + (f" ({where})" if where and not implicit else ""))
             names = there
         for st in sel.get("state") or []:
+            if st == "whole" and not any(applies(self.world, n, st) for n in names):
+                continue   # "the whole veranda", "the whole house": all of it, of things that are never sliced
             ok = [n for n in names if applies(self.world, n, st) and holds_now(self.world, n, st)]
             if not ok:
                 now = "; ".join(f"{n} is {_describe(self.world, n)}" for n in names[:4])

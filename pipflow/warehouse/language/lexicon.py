@@ -18,7 +18,7 @@ from lark import Token
 
 from pipflow.errors import InputError, Refusal, TranslationError
 from pipflow.language.asides import (ADDRESSEES, CLOSERS, FUNCTION_WORDS, GREETINGS, INTERJECTIONS, OPERATIVE,
-                                     SUBJECTS, Clause, clauses, content_free, is_opener,
+                                     SUBJECTS, Clause, clauses, content_free, is_opener, leading_adjunct,
                                      leading_reason, said_talk, signature, trailing_adjunct, trailing_thanks,
                                      unmarked_statement)
 from pipflow.language.asterisk import star_corrections
@@ -34,9 +34,10 @@ from pipflow.warehouse.language.grammar import ASIDE_ONLY
 from pipflow.warehouse.language.names import (CONTAINERS, KIND_WORDS, PACKAGING_WORDS, POSS_MARK, STOPWORDS,
                                               NameIndex, Tok, read_counts, recognize)
 from pipflow.warehouse.language.roles import read_by_roles
-from pipflow.warehouse.language.reordered import (base_verb, count_after_item, destination_first, fronted_source,
-                                                item_as_subject, needs_doing, object_before_verb, on_as_to, place_first,
-                                                place_must_be, said_at, to_be_done, topic_first, verb_last)
+from pipflow.warehouse.language.reordered import (base_verb, by_as_among, count_after_item, destination_first,
+                                                fronted_source, item_as_subject, needs_doing, object_before_verb,
+                                                of_as_from, on_as_to, place_as_it, place_first, place_must_be, said_at,
+                                                source_after_verb, to_be_done, topic_first, verb_last)
 from pipflow.warehouse.language.transcripts import places_taken_back, them_as_determiner
 from pipflow.warehouse.language.wordorder import left_dislocated, noun_adjuncts, numbered_siblings, unmarked_lists
 
@@ -127,8 +128,13 @@ IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before
           (re.compile(r"\bdank\s+u\b", re.IGNORECASE), "thanks"),
           # Romanian "please" ("te rog", "va rog"), said in English orders
           (re.compile(r"\b(?:te|va)\s+rog\b", re.IGNORECASE), "please"),
-          # Spanish and Portuguese "please" ("por favor", "por favour"), said in English orders
-          (re.compile(r"\bpor\s+(?:favor|favour)\b", re.IGNORECASE), "please"),
+          # Spanish and Portuguese "please" ("por favor", "por favour", "(se) faz favor"), said in English orders
+          (re.compile(r"\b(?:por|(?:se\s+)?faz)\s+(?:favor|favour)\b", re.IGNORECASE), "please"),
+          # "until is full": the subject left out, as Portuguese, Spanish and Romanian leave it ("até estar cheia")
+          (re.compile(r"\b(until|till)\s+is\s+full\b", re.IGNORECASE), r"\1 full"),
+          # Portuguese dozens ("uma dúzia de", "meia dúzia de": a dozen, half a dozen), accents left out
+          (re.compile(r"\b(?:(uma)|(meia))\s+duzias?(?:\s+de)?\b", re.IGNORECASE),
+           lambda m: "12" if m.group(1) else "6"),
           # "EUR pal.", "6 pal water": pallets (a unit word; "pal" alone elsewhere may be a friend)
           (re.compile(r"\b(?:eur|euro)\.?\s+(?=pal)", re.IGNORECASE), ""),
           (re.compile(rf"\b({_NUMBER}|more|less|dozen)\s+pal(?:l|s|ls)?\b", re.IGNORECASE), r"\1 pallets"),
@@ -621,13 +627,15 @@ UNMARKED_TAKE_BACK = frozenset({"sorry", "wait", "oops"})
 #:   keep   - a place or count left as it is ("hang on to")
 #:   gather - every unit of an item brought to one place ("round up", "consolidate")
 #:   empty  - a place cleared of everything ("clear out", "clean out")
+#:   fill   - a place filled up with an item ("complete P with X")
 VERB_LEXICON: dict[str, tuple[str, str]] = {
     # placing
     "stow": ("place", "put"), "stash": ("place", "put"), "slot": ("place", "put"), "set down": ("place", "put"),
     "lay": ("place", "put"), "plonk": ("place", "put"), "shelve": ("place", "put"), "bung": ("place", "put"),
     "whack": ("place", "put"), "slap": ("place", "put"),
     # moving (and the grammar's own: move, bring, send, ship, transfer, carry, haul, shift, cart,
-    # ferry, tow, lug, shuttle, wheel, relocate, deliver, stage, restage, fetch, dispatch, bring over, move over)
+    # ferry, tow, lug, shuttle, wheel, relocate, deliver, stage, restage, fetch, dispatch, pass, bring over,
+    # move over)
     "shove": ("move", "move"), "chuck": ("move", "toss"), "sling": ("move", "toss"), "lob": ("move", "toss"), "drag": ("move", "move"), "move across": ("move", "move"),
     "send across": ("move", "send"), "carry over": ("move", "carry"), "bring across": ("move", "bring"),
     # "push 5 X from P to Q" (a pallet pushed or pulled along; Portuguese "puxar": pull)
@@ -644,6 +652,9 @@ VERB_LEXICON: dict[str, tuple[str, str]] = {
     "centralise": ("gather", "consolidate"), "centralize": ("gather", "consolidate"),
     # emptying (and the grammar's own: empty, clear, clear out, clean out)
     "clear off": ("empty", "clear"), "strip": ("empty", "empty"), "vacate": ("empty", "empty"),
+    # filling (and the grammar's own: fill, fill up, top up): "complete P with X" (Portuguese and
+    # Spanish "completar": make up to full)
+    "complete": ("fill", "fill"),
 }
 
 
@@ -1246,6 +1257,25 @@ def by_as_at(toks: list[Tok]) -> list[Tok]:
     return out
 
 
+def _set_off(cur: list[Tok], free: list[Clause], inner: set[int]) -> tuple[list[Tok], list[str]]:
+    """The tokens without the parts ``free`` sets aside, each with the clause mark that set it off
+    (none for a part that starts at one of ``inner``: a part of a clause has no mark of its own),
+    and the words of those parts."""
+    if not free:
+        return cur, []
+    drop = {k for c in free for k in range(c.start, c.end)}
+    aside: list[str] = []
+    for c in sorted(free, key=lambda c: c.start):
+        aside.append(" ".join(t.text for t in cur[c.start:c.end]))
+        if c.start in inner:
+            continue
+        if c.end < len(cur) and cur[c.end].kind == "punct":
+            drop.add(c.end)
+        elif c.start > 0 and cur[c.start - 1].kind == "punct":
+            drop.add(c.start - 1)
+    return [t for k, t in enumerate(cur) if k not in drop], aside
+
+
 class Lexicon:
     """The world's vocabulary for the grammar: names, robot kinds, tags and skills."""
 
@@ -1474,27 +1504,39 @@ class Lexicon:
                   "oclock" if t.kind == "num" and _clock(cur, k) else "\2" if t.kind == "num" and self._label(cur, k)
                   else "\1" if t.kind == "num" else "\0")
                  for k, t in enumerate(cur)]
-        keep: list[Tok] = []
-        aside: list[str] = []
         parts = clauses(words, marks)
         free = [c for c in parts if content_free(c.words, lambda w: w in _HELD or self.content(w),
                                                  lambda w: w in _HELD or self.names_world(w), reports=True)]
         free += leading_reason(parts, free, lambda w: w == "\1" or w in NUMBER_WORDS)
         if len(parts) > 1 and parts[-1] not in free and signature(parts[-2].words, parts[-1].words):
             free.append(parts[-1])   # "Regards, Ramesh": the writer's name
-        # "... to the dray bay ta", "... over to the shed would ya, pissing down": a thanks or a
-        # request tag closing the last clause that is no talk, without a comma
-        last = next((c for c in reversed(parts) if c not in free), None)
-        thanks = trailing_thanks(list(last.words), lambda w: w in _HELD or self.names_world(w)) if last else 0
-        if thanks:
-            free.append(Clause(last.end - thanks, last.end, last.words[-thanks:]))
+        # "... to the dray bay ta", "... over to the shed would ya, pissing down", "take 3 X out of
+        # P pá, they ...": a thanks, a closing word or a request tag closing a clause that is no
+        # talk, without a comma
         inner: set[int] = set()   # the starts of parts of a clause: no clause mark of their own
+        closing: dict[Clause, int] = {}
+        for c in [c for c in parts if c not in free]:
+            closing[c] = trailing_thanks(list(c.words), lambda w: w in _HELD or self.names_world(w))
+            if closing[c]:
+                free.append(Clause(c.end - closing[c], c.end, c.words[-closing[c]:]))
+                if c is not parts[-1]:
+                    inner.add(c.end - closing[c])
         for c in parts:
             # "... on the ramp for afternoon pickup": an adjunct of purpose, time or reason that
             # carries nothing, at the end of a clause that does (asides.trailing_adjunct)
             if c in free:
                 continue
-            clause = list(c.words[:len(c.words) - thanks] if c is last else c.words)
+            clause = list(c.words[:len(c.words) - closing.get(c, 0)])
+            # "For the Auchan the cais takes ...", "For the inventory: ...": a purpose said first
+            # (asides.leading_adjunct), the whole clause where it is a heading
+            lead = leading_adjunct(clause, lambda w: w in _HELD or self.content(w),
+                                   lambda w: w in _HELD or self.names_world(w))
+            if lead == len(clause):
+                free.append(c)
+                continue
+            if lead:
+                free.append(Clause(c.start, c.start + lead, tuple(clause[:lead])))
+                inner.add(c.start)
             # "... dont use flint hes got a flat tyre": a statement run on without a comma
             n = unmarked_statement(clause, lambda w: w in _HELD or self.names_world(w, closely=True))
             if n:
@@ -1517,20 +1559,7 @@ class Lexicon:
             if is_opener(said):
                 free[:] = [f for f in free if not (c.start <= f.start < c.end)] + [c]
                 inner.discard(c.start + len(clause) - n)
-        if not free:
-            return cur, []
-        drop = {k for c in free for k in range(c.start, c.end)}
-        for c in sorted(free, key=lambda c: c.start):
-            aside.append(" ".join(t.text for t in cur[c.start:c.end]))
-            # the clause mark that set it off goes with it
-            if c.start in inner:
-                continue
-            if c.end < len(cur) and cur[c.end].kind == "punct":
-                drop.add(c.end)
-            elif c.start > 0 and cur[c.start - 1].kind == "punct":
-                drop.add(c.start - 1)
-        keep = [t for k, t in enumerate(cur) if k not in drop]
-        return keep, aside
+        return _set_off(cur, free, inner)
 
     def sentences(self, command: str, stops: frozenset[int] = frozenset()) -> list[Lexed]:
         """The command's sentences as terminals (split at . ; ! ?, and before the recognised
@@ -1582,7 +1611,7 @@ class Lexicon:
         toks = self._definite_groups(them_as_determiner(read_counts(_split_hyphens(
             this_job_announced(case_endings(topic_marked(self._interjection_set_off(fixed)))), self.keywords))))
         toks, framed = without_request_frames(places_taken_back(toks), verbs)
-        toks = item_as_subject(fronted_source(to_be_done(needs_doing(by_as_at(toks), verbs), verbs), verbs))
+        toks = item_as_subject(fronted_source(to_be_done(needs_doing(source_after_verb(of_as_from(place_as_it(by_as_at(by_as_among(toks))))), verbs), verbs), verbs))
         toks = on_as_to(object_before_verb(topic_first(place_first(count_after_item(destination_first(
             place_must_be(verb_last(read_by_roles(toks)))))))))
         toks = lexicon_verbs(quantity_phrases(addressed_anyone(stative_having(toks)), self.keywords), self.keywords)

@@ -82,6 +82,8 @@ PACKAGING_WORDS = frozenset({
     "bale", "bales",
     # pallets said the French and Romanian way ("20 palettes of flour"; Romanian "paleti", "palete")
     "palettes", "paleti", "palete"})
+#: each of them in the English plural too, as it is typed in English orders ("10 palets", "3 kolis")
+PACKAGING_WORDS |= {w + "s" for w in PACKAGING_WORDS if w.isalpha() and len(w) >= 4 and not w.endswith("s")}
 #: every word said after a count for its unit ("5 pcs", "4 pallets", "6 case"): no thing of its own
 COUNT_UNITS = PACKAGING_WORDS | {"units", "unit", "pieces", "piece", "boxes", "box", "crate", "crates", "case",
                                  "cases", "pcs", "pallets", "pallet"}
@@ -723,9 +725,11 @@ class NameIndex:
             numbered = self._declared_number(part)
             if numbered is not None:
                 return Tok("name", " ".join(part), numbered.name, numbered.kind), i + size
+            hit = self.forms.get(normalize("".join(part)))
             if any(word_value(w.lower()) is not None for w in part[1:]):
-                continue
-            hit = self.forms.get(normalize("".join(part))) or self.contents.get(normalize("".join(part)))
+                if hit is None:   # a number word in a name the world has ("estante tres") is that name
+                    continue
+            hit = hit or self.contents.get(normalize("".join(part)))
             if hit is not None:
                 return Tok("name", " ".join(part), hit.name, hit.kind), i + size
         hit = self._misspelt_apart(raw[i:i + 2]) or self._shortened_apart(raw[i:i + 2])
@@ -856,11 +860,13 @@ class NameIndex:
             alpha, digits = split_digits(normalize(low))
             n = word_value(nxt)
             if not digits and alpha and n is not None and not self._unnumbered_class(alpha) and (
-                    alpha not in STOPWORDS or self.kind_of_word(alpha)):
+                    alpha not in STOPWORDS or self.kind_of_word(alpha)) and normalize(low + nxt) not in self.forms:
                 found = self.lookup(alpha, str(n), text)
                 if found is not None:
                     return found, i + 2
-            if not n:  # a name written apart ("cold store", "rack a", "label rolls"): no typos
+            # a name written apart ("cold store", "rack a", "label rolls"): no typos; with a number
+            # word only as a word the world declares ("estante tres")
+            if not n or normalize(low + nxt) in self.forms:
                 found = self.written_apart(raw, i)
                 if found is not None:
                     return found

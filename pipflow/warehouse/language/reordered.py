@@ -231,12 +231,32 @@ def fronted_source(toks: list[Tok], verbs: Collection[str]) -> list[Tok]:
     return out
 
 
+def source_after_verb(toks: list[Tok]) -> list[Tok]:
+    """The tokens with a source said between a verb of moving and its counted things ("take from
+    rack 3 4 rice and 2 soap to P", as Portuguese and Spanish order it) read as the source fronted
+    with its comma: "from rack 3, take 4 rice and 2 soap to P". Only where the verb opens its
+    clause and a count of a product follows the place; the words are only moved."""
+    out: list[Tok] = []
+    k = 0
+    while k < len(toks):
+        j = k + 3 if _word_in(toks, k + 2, ("the",)) else k + 2   # "take from the cais ..."
+        if (_word_in(toks, k, _MOVING) and (k == 0 or toks[k - 1].kind == "punct") and _word_in(toks, k + 1, _SOURCES)
+                and _name_at(toks, j, "shelf") and _counted_things(toks, j + 1)):
+            out += toks[k + 1:j + 1] + [Tok("punct", ",", ","), toks[k]]
+            k = j + 1
+            continue
+        out.append(toks[k])
+        k += 1
+    return out
+
+
 def _counted_things(toks: list[Tok], k: int) -> int:
-    """How many "<count> (<unit>) <product>" follow one another from ``k``, joined by "and" or a
+    """How many "<count> (<unit>) (of) <product>" follow one another from ``k``, joined by "and" or a
     comma ("4 akü and 4 silecek")."""
     n = 0
     while k + 1 < len(toks) and toks[k].kind == "num":
         k += 1 + _word_in(toks, k + 1, _UNITS)
+        k += _word_in(toks, k, ("of",))   # "4 (pallets) of rice"
         if not _name_at(toks, k, "product"):
             break
         n, k = n + 1, k + 1
@@ -301,6 +321,8 @@ def object_before_verb(toks: list[Tok]) -> list[Tok]:
             k += 1
             continue
         end = next((j for j in range(k, len(toks)) if toks[j].kind == "punct"), len(toks))
+        if _word_in(toks, k, ("the",)) and _name_at(toks, k + 1, "shelf") and _word_in(toks, k + 2, _SAID_NOT):
+            k += 1   # "the rack B dont touch": the place's article says nothing here
         clause = toks[k:end]
         n = _object_phrase(clause)
         if n == 0 and _name_at(clause, 0, "shelf") and _word_in(clause, 1, _SAID_NOT) and _word_in(clause, 2, _KEEPING):
@@ -443,6 +465,43 @@ def on_as_to(toks: list[Tok]) -> list[Tok]:
     return out
 
 
+#: verbs of sharing things out among places ("divide them by P, Q and R")
+_SHARING = frozenset({"split", "divide", "distribute", "share", "spread"})
+
+
+def by_as_among(toks: list[Tok]) -> list[Tok]:
+    """The tokens with "by" before a place read as "among" in a clause that shares things out
+    ("divide them equal by the cais, the expedicao and the quarentena": Portuguese and Spanish
+    "por", Romanian "pe"); "divide by 2" and "by 5pm" name no place and are left as said."""
+    out = list(toks)
+    start = 0
+    for k, t in enumerate(toks):
+        if t.kind == "punct" and t.value in (".", ";", "!", "?"):
+            start = k + 1
+        elif _word_in(toks, k, ("by",)) and _name_at(toks, k + 1 + _word_in(toks, k + 1, ("the",)), "shelf") \
+                and any(_word_in(toks, j, _SHARING) for j in range(start, k)):
+            out[k] = Tok("word", t.text, "among")
+    return out
+
+
+def of_as_from(toks: list[Tok]) -> list[Tok]:
+    """The tokens with "of" read as "from" between a product and a place ("the arroz of the estante
+    um", "half of the azeite of rack 1": the product there, as "de" says it in Portuguese, Spanish
+    and Romanian); "from" is how the grammar says where things are taken from, "on" where its
+    clause swaps them ("swap the arroz of rack 1 with the arroz of rack 3")."""
+    out = list(toks)
+    start = 0
+    for k in range(1, len(toks) - 1):
+        if toks[k].kind == "punct":
+            start = k + 1
+        elif _name_at(toks, k - 1, "product") and _word_in(toks, k, ("of",)) \
+                and _name_at(toks, k + 1 + _word_in(toks, k + 1, ("the",)), "shelf"):
+            end = next((j for j in range(k, len(toks)) if toks[j].kind == "punct"), len(toks))
+            swaps = any(_word_in(toks, j, _SWAPPING) for j in range(start, end))
+            out[k] = Tok("word", toks[k].text, "on" if swaps else "from")
+    return out
+
+
 #: verbs that make a clause no bare move ("5 X from P on Q" with none of them is one)
 _VERBS_SAID = frozenset({"put", "leave", "keep", "count", "check", "have", "has", "is", "are", "be", "stay", "stays"})
 
@@ -528,6 +587,30 @@ def place_must_be(toks: list[Tok]) -> list[Tok]:
             continue
         if _clause_opens(toks, k) and j > k and _name_at(toks, j, "shelf") and _word_in(toks, j + 1, _PLACE_VERBS):
             k = j   # "in karantin needs 4 more X" ("в карантине нужно"): karantin needs
+            continue
+        out.append(toks[k])
+        k += 1
+    return out
+
+
+#: verbs whose object is a place: a place said first as a topic may be their "it" ("the dock, empty it")
+_PLACE_OBJECT_VERBS = frozenset({"empty", "clear", "fill", "complete", "top", "clean", "restock", "refill"})
+
+
+def place_as_it(toks: list[Tok]) -> list[Tok]:
+    """The tokens with a place said first as a topic, set off by a comma or colon, and then "it"
+    after a verb whose object is a place ("the quarentena, complete it with arroz", "dock: empty
+    it"), read as that verb of the place ("complete the quarentena with arroz"). Only where the
+    topic is the place alone and "it" is the verb's object."""
+    out: list[Tok] = []
+    k = 0
+    while k < len(toks):
+        j = k + _word_in(toks, k, ("the",))
+        if (_clause_opens(toks, k) and _name_at(toks, j, "shelf") and j + 3 < len(toks)
+                and toks[j + 1].kind == "punct" and toks[j + 1].value in (",", ":")
+                and _word_in(toks, j + 2, _PLACE_OBJECT_VERBS) and _word_in(toks, j + 3, ("it",))):
+            out += [toks[j + 2], toks[j]]
+            k = j + 4
             continue
         out.append(toks[k])
         k += 1
