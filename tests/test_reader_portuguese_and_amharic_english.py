@@ -64,6 +64,15 @@ def test_what_the_rules_do_not_cover_stays_refused(said: str) -> None:
         understand(said, STORE)
 
 
+def test_too_of_a_degree_is_a_reason_and_too_closing_a_clause_is_also() -> None:
+    """ "..., is too full there" says why (set aside, as a reason that names nothing); "this too
+    please" says also, and stays operative: refused, never dropped."""
+    assert_warehouse_alike("take 2 palets of arroz out of the dock, is too full there", "remove 2 rice from cais",
+                           STORE)
+    with pytest.raises(PipflowError):
+        understand("take 2 palets of arroz out of the dock, and this too please", STORE)
+
+
 def test_of_a_place_after_a_count_is_no_source() -> None:
     """ "of" is read as where only between a product and a place: "2 of the dock" says no product."""
     with pytest.raises(PipflowError):
@@ -89,6 +98,8 @@ objects:
   cup:     {in: salon, mass: 1, properties: [pickupable, washable], state: {dirty: true}}
   lamp:    {in: counter, mass: 1, properties: [toggleable], state: {on: true}, words: [kitchen light],
             categories: [lights]}
+  fan:     {in: counter, mass: 3, properties: [toggleable], state: {on: false}, words: [kitchen fan]}
+  salon_fan: {in: salon, mass: 3, properties: [toggleable], state: {on: false}}
   salon_light: {in: salon, mass: 1, properties: [toggleable], state: {on: false}, categories: [lights]}
   radio:   {in: desk, mass: 1, properties: [pickupable, toggleable], state: {on: false}}
 robots:
@@ -129,6 +140,23 @@ def test_a_person_doing_something_somewhere_says_where_they_are(house: dict) -> 
     assert want == {"state": {"salon_light": ["on"]}}
     assert goal("Grandad is reading in the salon, it is so dark", house) == want
     assert goal("the twins are in the salon, it is so dark", house) == want
+
+
+@pytest.mark.parametrize("said, plain", [
+    ("it is so hot in the salon", "switch on the salon fan"),
+    ("it's stuffy in the salon", "switch on the salon fan"),
+    ("it is too hot on the kitchen counter", "switch on the kitchen fan"),
+    ("it is so dark in the salon", "switch on the salon light"),
+    # felt where a person is, said before it
+    ("Grandad is reading in the salon and it is so hot", "switch on the salon fan"),
+])
+def test_a_cue_felt_at_a_place_is_the_thing_nearest_it(house: dict, said: str, plain: str) -> None:
+    assert goal(said, house) == goal(plain, house)
+
+
+def test_a_cue_with_no_place_and_two_fans_is_asked(house: dict) -> None:
+    with pytest.raises(TranslationError, match="which"):
+        goal("it is stuffy in here", house)
 
 
 def test_the_whole_of_a_place_is_no_unsliced_thing(house: dict) -> None:

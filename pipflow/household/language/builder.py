@@ -367,6 +367,9 @@ class Builder:
         said = next((self.tag_of(x).words for x in self._tokens(node) if self._cls(x) == "ROOMSAID"), None)
         if room is not None or said:   # "it's stuffy out in the conservatory": a room the home model lacks
             st["room"] = words_under(self.tags, room) if room is not None else said
+        inplace = self._sub(node, "inplace")
+        if inplace is not None:   # "it's so hot in the salon", the salon a place of the home: what is nearest it
+            st["near"] = self.place(self._sub(inplace, "place"))
         return st
 
     def where_instead(self, item: Tree, statements: list[dict], refused: dict | None) -> dict | None:

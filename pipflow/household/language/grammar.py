@@ -155,6 +155,7 @@ cue: @NOBODY @IS? activity (@TO | @ON | @AT)? things? @ANYMORE?
    | @ROOMSAID @IS (@INTENS | @TOO)* (tempcue | tempadj | lightcue | soundcue | aircue | closecue)
    | (@V_MAKE @IT | @SUBJ? @WANT @IT (@TO @BE)? | @SHOULD @IT @BE) (@INTENS | @TOO)* @MORE (_here | room)?
    | @IT @IS (@INTENS | @TOO)* (tempcue | tempadj | lightcue | soundcue) room
+   | @IT @IS (@INTENS | @TOO)* (tempcue | tempadj | lightcue | aircue) inplace
    | @SUBJ @IS (@INTENS | @TOO)* (tempcue | tempadj) room
    | _vput _music on
    | @V_TOGGLE on _music
@@ -170,6 +171,7 @@ aircue: @AIRCUE
 closecue: @V_STATE
 hearcue: @HEARCUE
 room: @INROOM
+inplace: (@IN | @AT | @ON) @THE? place
 _wish: @SUBJ? (@WANT | @NEED)
 _doact: @TO (@DOACT | @SEE)
 _music: @THE? @MUSIC

@@ -35,7 +35,8 @@ from typing import Collection
 
 from pipflow.errors import TranslationError
 from pipflow.household.language.dialect import TWO_OBJECT_VERBS
-from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
+from pipflow.household.language.lexicon import (AIR_CUES, FILLER, LIGHT_CUES, PHRASES, TEMPERATURE_ADJECTIVES,
+                                                TEMPERATURE_CUES, words_of)
 from pipflow.household.language.names import home_words, per_world, world_phrases
 from pipflow.household.language.rewrites import CLOSING_PARTICLES, CONSUMED
 from pipflow.household.language.tokens import PUNCT
@@ -458,8 +459,32 @@ def about_people(command: str, world: dict, notes: list[str]) -> str | None:
         cleaned.append(w)
     while cleaned and cleaned[0] in ("and", "so", "but"):
         cleaned.pop(0)
+    if spans and place:
+        cleaned = _felt_where_they_are(cleaned, place)
     notes += said
     return " ".join(cleaned)
+
+
+#: one-word cues of how a room feels ("dark", "hot", "stuffy")
+_FELT = frozenset(w for w in [*LIGHT_CUES, *TEMPERATURE_CUES, *TEMPERATURE_ADJECTIVES, *AIR_CUES] if " " not in w)
+#: words between "it is" and such a cue ("it is so very hot")
+_DEGREE = frozenset({"so", "too", "very", "really", "quite", "a", "bit", "little", "getting", "rather", "awfully"})
+
+
+def _felt_where_they_are(words: list[str], place: list[str]) -> list[str]:
+    """ "Abiye is in the salon and it is so hot": a cue said as "it is ..." with no where, in a
+    command that says where the person is, is felt where they are: "in the salon" said after it."""
+    out: list[str] = []
+    for k, w in enumerate(words):
+        out.append(w)
+        ends = k + 1 == len(words) or words[k + 1] in PUNCT or words[k + 1] in ("and", "so", "but", "then")
+        if w in _FELT and ends:
+            j = k - 1
+            while j >= 0 and words[j] in _DEGREE:
+                j -= 1
+            if j >= 1 and words[j] in ("is", "s") and words[j - 1] == "it":
+                out += ["in", "the"] + place
+    return out
 
 
 def _said_there(r: _Reader, k: int, end: int) -> tuple[list[str], int, int] | None:

@@ -761,14 +761,16 @@ class Resolver:
     def devices(self, kind: str, cond: str = "on") -> list[str]:
         """The things of a kind of lexicon ``DEVICES`` (room heaters, sound makers, drink makers):
         members of a category of the world named or worded so, else things whose name or words
-        are so; only those that can be ``cond`` (switched on; "hot": a kettle that heats)."""
+        are so or end so ("salon fan", "kids' room aircon": what is said before the kind word says
+        where, or which); only those that can be ``cond`` (switched on; "hot": a kettle that heats)."""
         wanted = {" ".join(words_of(w)) for w in DEVICES[kind]}
         cats = [c for c, e in (self.world.get("categories") or {}).items()
                 if {" ".join(words_of(w)) for w in [c] + list((e or {}).get("words") or [])} & wanted]
         found = [n for c in cats for n in members(self.world, c)]
         if not found:
             found = [n for n, e in {**self.world["places"], **self.world["objects"]}.items()
-                     if {" ".join(words_of(w)) for w in [n] + list(e.get("words") or [])} & wanted]
+                     if any(said in wanted or any(said.endswith(f" {w}") for w in wanted)
+                            for said in {" ".join(words_of(w)) for w in [n] + list(e.get("words") or [])})]
         return [n for n in dict.fromkeys(found) if applies(self.world, n, cond)]
 
     def device_cue(self, st: dict, words: str) -> None:
@@ -848,6 +850,8 @@ class Resolver:
                                    "closed; say what to do")
         names = list(options)
         self._room(st, names, words)
+        if st.get("near") and len(names) > 1:   # "it's stuffy in the salon": what is nearest it
+            names = nearest(self.world, names, self.place_of(st["near"], words))
         if len(names) > 1:
             if self.choose.get(words) in options:
                 names = [self.choose[words]]
@@ -962,6 +966,8 @@ class Resolver:
             self.unanswered.append((cond, words, lambda: self._either(heaters, answers, cond, words)))
             return
         self._room(st, heaters, words)
+        if st.get("near") and len(heaters) > 1:   # "it's freezing in the study": the heater nearest it
+            heaters = nearest(self.world, heaters, self.place_of(st["near"], words))
         if st.get("room") and len(heaters) > 1:
             heaters = [self.choose[words]]
         if not heaters:   # decided at the end: "I'm roasting, switch the fire off" gives the reason
