@@ -102,6 +102,7 @@ objects:
   salon_fan: {in: salon, mass: 3, properties: [toggleable], state: {on: false}}
   salon_light: {in: salon, mass: 1, properties: [toggleable], state: {on: false}, categories: [lights]}
   radio:   {in: desk, mass: 1, properties: [pickupable, toggleable], state: {on: false}}
+  book:    {in: salon, mass: 1, properties: [pickupable]}
 robots:
   r1: {start: [1.0, 3.0], skills: {pickup: 1, open: 1, toggle: 1, slice: 1, wash: 1, heat: 1}}
 """
@@ -118,6 +119,7 @@ def house() -> dict:
     ("the pot is on the counter since morning, put him in the frij", "put the pot in the fridge"),
     ("ishi, wash the cup bejih. amesegnalehu", "wash the cup"),
     ("selam! the pot is betam dirty, wash it", "wash the pot"),
+    ("open the fridge, put the pot in it, then close it back", "open the fridge, put the pot in it, then close it"),
 ])
 def test_him_for_a_thing_and_amharic_talk_read_as_plain_english(house: dict, said: str, plain: str) -> None:
     assert goal(said, house) == goal(plain, house)
@@ -139,6 +141,7 @@ def test_a_person_doing_something_somewhere_says_where_they_are(house: dict) -> 
     want = goal("Grandad is in the salon, it is so dark", house)
     assert want == {"state": {"salon_light": ["on"]}}
     assert goal("Grandad is reading in the salon, it is so dark", house) == want
+    assert goal("Grandad is reading the book in the salon, it is so dark", house) == want
     assert goal("the twins are in the salon, it is so dark", house) == want
 
 

@@ -77,6 +77,8 @@ THIRD_POSTURE = frozenset(POSTURE | {"the", "whole", "day", "always", "usually",
                                       "working", "praying", "waiting", "sweating", "relaxing", "playing", "awake"})
 
 
+#: what a person does with a thing where they are ("Abiye is reading the gazeta in the salon")
+DOING = frozenset({"reading", "watching", "using", "eating", "drinking", "playing"})
 #: what a thing's own word says is someone's ("jun hao's bag", "ah ma's bed", "the kids' aircon")
 _OWNER = re.compile(r"^(?:the\s+)?(.+?)(?:['\u2019]s|(?<=s)['\u2019])\s")
 
@@ -347,12 +349,30 @@ class _Reader:
             if not n or i + n >= len(self.words):
                 continue
             # "he's at the trestle" is read without its "is"
-            found = place_said(self.words, i + n + (self.words[i + n] in BEING), self.index, THIRD_POSTURE)
+            j = i + n + (self.words[i + n] in BEING)
+            found = place_said(self.words, j, self.index, THIRD_POSTURE) or \
+                place_said(self.words, self._past_what_they_do(j), self.index, THIRD_POSTURE)
             if found is not None:
                 spans.append((i, found[0]))
                 places.append(found[1])
         distinct = {tuple(p) for p in places}
         return spans, (places[0] if places else None), len(distinct) > 1
+
+    def _past_what_they_do(self, j: int) -> int:
+        """Where the words after what a person does with a thing end ("reading the gazeta", "watching
+        the telly": a thing of the home that they read or watch is no order about it), from ``j``;
+        ``j`` where the clause says no such doing."""
+        k = j
+        while k < len(self.words) and self.words[k] in THIRD_POSTURE and self.words[k] not in DOING:
+            k += 1
+        if k >= len(self.words) or self.words[k] not in DOING:
+            return j
+        k += 1
+        while k < len(self.words) and self.words[k] in ("the", "his", "her", "their", "a", "some"):
+            k += 1
+        n = max((m for m in range(1, 4)
+                 if any(r["kind"] == "object" for r in self.index.get(tuple(self.words[k:k + m]), []))), default=0)
+        return k + n if n else j
 
     def talk(self, i: int) -> int:
         """The end of a clause at ``i`` that is talk about a person (module docstring, 3), or 0."""

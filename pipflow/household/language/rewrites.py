@@ -456,6 +456,23 @@ def closed_again(words: list[str], notes: list[str]) -> list[str]:
     return words
 
 
+#: verbs of closing that "back" may follow as "again" ("close it back": Nigerian, Indian and
+#: Ethiopian English)
+_CLOSING = frozenset({"close", "shut", "lock", "cover"})
+
+
+def closed_back(words: list[str], notes: list[str]) -> list[str]:
+    """The words with "back" after "close / shut / lock / cover it (them)" left out: "close it back"
+    is closing it again, which closing it is; "put it back" and "bring them back" keep theirs."""
+    out: list[str] = []
+    for k, w in enumerate(words):
+        if w == "back" and k >= 2 and words[k - 1] in ("it", "them") and words[k - 2] in _CLOSING:
+            notes.append(f"'{' '.join(words[k - 2:k + 1])}': closing it again, read as closing it")
+            continue
+        out.append(w)
+    return out
+
+
 #: what says "that again, for another thing" ("same for the saucepan", "do the same with the bowl"),
 #: longest first
 _SAME = sorted((("same",), ("the", "same"), ("do", "the", "same"), ("same", "again"), ("same", "goes"),

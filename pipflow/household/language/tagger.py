@@ -26,9 +26,9 @@ from pipflow.household.language.names import (first_words, longest_name, named_b
 from pipflow.household.language.people import owners, owners_before_names, own_as_owned, pronouns_as_owners
 from pipflow.household.language.retag import (act_before_noun, copula_dropped, demonstratives, elided_it_is, left_lying,
                                               located, restated_order, without_hedges)
-from pipflow.household.language.rewrites import (caused, closed_again, given, heat_purpose, measures, or_under_negation,
-                                                 particles, same_for, so_before_an_order, wherever_they_belong,
-                                                 without_manner)
+from pipflow.household.language.rewrites import (caused, closed_again, closed_back, given, heat_purpose, measures,
+                                                 or_under_negation, particles, same_for, so_before_an_order,
+                                                 wherever_they_belong, without_manner)
 from pipflow.household.language.ones import one_as_kind
 from pipflow.household.language.romance import adjective_after, of_as_where
 from pipflow.household.language.roomnames import where_as_name
@@ -139,7 +139,7 @@ def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: l
     words = so_before_an_order(same_for(colloquial(corrected(words, notes), notes), notes), notes)
     words = or_under_negation(measures(without_manner(words, notes), index, notes), notes)
     words = heat_purpose(caused(given(me_as_where_the_speaker_is(words, index, notes), notes), notes), notes)
-    words = closed_again(wherever_they_belong(words, notes), notes)
+    words = closed_back(closed_again(wherever_they_belong(words, notes), notes), notes)
     words = make_as_switch(cut_as_switch(words, world, index, notes), world, index, notes)
     words = on_off_as_verbs(put_on_as_switch(setting_as_switch(words, world, index, notes), world, index, notes),
                             world, index, notes)
