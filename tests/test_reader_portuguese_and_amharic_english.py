@@ -47,6 +47,9 @@ STORE = {
     ("divide 6 palets of arroz from zona tres by bay four and the dock", "split 6 rice from hall2 between hall1 and cais"),
     ("send 2 palets of azeite to the dock, but the zona tres dont touch", "send 2 oil to cais and keep hall2 as it is"),
     ("bring 4 palets of arroz to bay four pa, there is space there", "bring 4 rice to hall1"),
+    ("the dock and bay four, each one with 5 palets of azeite", "cais and hall1 should each have 5 oil"),
+    ("Olha, bay four and zona tres, 2 palets of arroz less in each", "remove 2 rice from each of hall1 and hall2"),
+    ("the dock and zona tres, 1 palet of arroz more in each", "add 1 rice to each of cais and hall2"),
 ])
 def test_portuguese_english_orders_read_as_their_plain_english(said: str, plain: str) -> None:
     assert_warehouse_alike(said, plain, STORE)
@@ -58,6 +61,8 @@ def test_portuguese_english_orders_read_as_their_plain_english(said: str, plain:
     "For 2 clients the dock has to hold 9 palets of arroz",
     # a number word after a place's own word, where the world declares no such word: never that place
     "move 4 palets of arroz from zona dois to the dock",
+    # places listed and then something other than what each gets: left as said
+    "bay four and zona tres, 2 palets of arroz less",
 ])
 def test_what_the_rules_do_not_cover_stays_refused(said: str) -> None:
     with pytest.raises(PipflowError):

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from typing import Callable, Collection
 
+from pipflow.language.asides import INTERJECTIONS
 from pipflow.warehouse.language.names import COUNT_UNITS, POSS_MARK, Tok
 
 
@@ -482,6 +483,61 @@ def by_as_among(toks: list[Tok]) -> list[Tok]:
                 and any(_word_in(toks, j, _SHARING) for j in range(start, k)):
             out[k] = Tok("word", t.text, "among")
     return out
+
+
+def _place_list(toks: list[Tok], k: int) -> int:
+    """Where a list of two places or more said from ``k`` ends ("the rack 1 and the rack 2", "P, Q
+    and R"), or ``k`` where none is said there."""
+    j, names = k, 0
+    while True:
+        j += _word_in(toks, j, ("the",))
+        if not _name_at(toks, j, "shelf"):
+            return k
+        j, names = j + 1, names + 1
+        joined = _word_in(toks, j, ("and",)) or (j < len(toks) and toks[j].kind == "punct" and toks[j].value == ",")
+        if joined and (_name_at(toks, j + 1, "shelf") or _word_in(toks, j + 1, ("the",))):
+            j += 1
+            continue
+        return j if names > 1 else k
+
+
+def places_then_each(toks: list[Tok]) -> list[Tok]:
+    """The tokens with places listed first and then what each gets read in the grammar's order:
+    "P and Q, each (one) with 25 X" is "P and Q should each have 25 X"; "P and Q, 2 X less (more)
+    in each" is "remove (add) 2 X from (to) each of P and Q". Only at a sentence's start and where
+    the clause after the comma is only that."""
+    out: list[Tok] = []
+    start = 0
+    for k in range(len(toks) + 1):
+        if k == len(toks) or (toks[k].kind == "punct" and toks[k].value in (".", ";", "!", "?")):
+            out += _places_then_each(toks[start:k]) + toks[k:k + 1]
+            start = k + 1
+    return out
+
+
+def _places_then_each(toks: list[Tok]) -> list[Tok]:
+    """:func:`places_then_each` of one sentence (after a word of talk set off by a comma: "Olha, ...")."""
+    k = 2 if len(toks) > 2 and _word_in(toks, 0, INTERJECTIONS) and toks[1].kind == "punct" else 0
+    j = _place_list(toks, k)
+    if j == k or not (j < len(toks) and toks[j].kind == "punct" and toks[j].value == ","):
+        return toks
+    places, rest = toks[k:j], toks[j + 1:]
+    end = next((n for n, t in enumerate(rest) if t.kind == "punct"), len(rest))
+    clause, after = rest[:end], rest[end:]
+    if _word_in(clause, 0, ("each",)):
+        w = 1 + (len(clause) > 1 and clause[1].text.lower() == "one")   # "each one": a count, as tokens go
+        if _word_in(clause, w, ("with",)) and _counted_things(clause, w + 1):
+            said = [Tok("word", "", "should"), Tok("word", "", "each"), Tok("word", clause[w].text, "have")]
+            return toks[:k] + places + said + clause[w + 1:] + after
+    n = _counted_things(clause, 0)
+    j = next((m for m in range(len(clause)) if _word_in(clause, m, ("less", "more"))), -1)
+    if n and j > 0 and _word_in(clause, j + 1, ("in", "on", "at")) and _word_in(clause, j + 2, ("each",)) \
+            and j + 3 == len(clause):
+        less = clause[j].value == "less"
+        verb = Tok("word", clause[j].text, "remove" if less else "add")
+        to = [Tok("word", clause[j + 1].text, "from" if less else "to"), Tok("word", "each", "each"), Tok("word", "", "of")]
+        return toks[:k] + [verb] + clause[:j] + to + places + after
+    return toks
 
 
 def of_as_from(toks: list[Tok]) -> list[Tok]:
