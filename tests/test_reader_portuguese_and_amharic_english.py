@@ -134,6 +134,8 @@ def test_him_for_a_thing_and_amharic_talk_read_as_plain_english(house: dict, sai
     # a person named in the command: "him" after a verb of handling may be them, never a thing
     "Dawit is on the salon, take him to the fridge",
     "the baby is sleepy, the pot is on the counter, put him in the frij",
+    # "on him" that is no verb is a where, and may be a person's
+    "take the cup to the desk and put the book on him",
 ])
 def test_him_where_a_person_may_be_meant_is_never_a_thing(house: dict, said: str) -> None:
     with pytest.raises(PipflowError):

@@ -6,8 +6,9 @@ languages) carry it into English: a lamp or a pot is "he". The reader takes "him
 (:mod:`.people`), and a person's place is asked for or the command refused. Here "him" is read as
 "it" only where it cannot be a person:
 
-* after a verb whose object is only ever a thing (switching, opening, closing, cooking, cutting:
-  :data:`THING_VERBS`), or before "on" / "off" after "switch", "turn" or "put" ("switch him off");
+* after a verb whose object is only ever a thing (opening, closing, cooking, cutting:
+  :data:`THING_VERBS`), after "on" / "off" said as a verb opening a clause ("..., off him please"),
+  or before "on" / "off" after "switch", "turn" or "put" ("switch him off");
 * after a verb of handling (:data:`HANDLING`: put, take, leave, lift ...), which a child may be the
   object of, only in a command that names no person at all (no name, no kinship word, no owner of
   a thing of the home, no "he" or "she").
@@ -21,10 +22,16 @@ import re
 
 from pipflow.household.language.people import person_named
 
-#: verbs whose object is only ever a thing: "off him", "close him", "heat him"
-THING_VERBS = frozenset({"off", "on", "open", "close", "shut", "heat", "warm", "reheat", "microwave", "boil", "fry",
-                         "cook", "slice", "cut", "chop", "dice", "peel", "grate", "toast", "defrost", "chill", "freeze",
-                         "plug", "unplug", "lock", "unlock", "dim", "empty", "fill", "refill", "rinse"})
+#: verbs whose object is only ever a thing: "close him", "heat him" ("warm him up" and "lock him in"
+#: may be said of a child, and are not here)
+THING_VERBS = frozenset({"open", "close", "shut", "heat", "reheat", "microwave", "boil", "fry", "cook", "slice", "cut",
+                         "chop", "dice", "peel", "grate", "toast", "defrost", "chill", "freeze", "plug", "unplug", "dim",
+                         "empty", "fill", "refill", "rinse"})
+#: "on" and "off" said as verbs ("off him please"): only opening a clause ("put the blanket on him"
+#: is a where, and may be a person)
+SWITCH_WORDS = frozenset({"on", "off"})
+#: what may stand before a clause's first word
+_CLAUSE_OPENS = re.compile(r"(?:^|[,.;:!?]|(?:and|then|please|pls|now|also|so))\s*$", re.IGNORECASE)
 #: verbs that take "him" and a particle of switching ("switch him off", "turn him on", "put him on")
 SWITCHING = frozenset({"switch", "turn", "put"})
 #: verbs of handling, which may have a person as their object ("lift him", "put him to bed")
@@ -42,7 +49,9 @@ def things_called_him(command: str, world: dict, notes: list[str]) -> str:
 
     def thing(m: re.Match) -> str:
         verb, particle = m.group(1).lower(), (m.group(2) or "").strip().lower()
-        if verb in THING_VERBS or (verb in SWITCHING and particle) or (verb in HANDLING and nobody):
+        opens = bool(_CLAUSE_OPENS.search(command[:m.start()]))
+        if verb in THING_VERBS or (verb in SWITCH_WORDS and opens) or (verb in SWITCHING and particle) \
+                or (verb in HANDLING and nobody):
             said.append(f"{m.group(1)} him")
             return f"{m.group(1)} it"
         return m.group(0)
