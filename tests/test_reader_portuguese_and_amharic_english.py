@@ -44,7 +44,8 @@ STORE = {
     ("meia duzia de palets of arroz from zona tres to the dock se faz favor", "move 6 rice from hall2 to cais"),
     ("the dock, complete it with arroz until is full", "fill cais with rice"),
     ("push 3 palets of azeite out of bay four", "remove 3 oil from hall1"),
-    ("divide 6 palets of arroz from zona tres by bay four and the dock", "split 6 rice from hall2 between hall1 and cais"),
+    ("divide 6 palets of arroz from zona tres by bay four and the dock",
+     "split 6 rice from hall2 between hall1 and cais"),
     ("send 2 palets of azeite to the dock, but the zona tres dont touch", "send 2 oil to cais and keep hall2 as it is"),
     ("bring 4 palets of arroz to bay four pa, there is space there", "bring 4 rice to hall1"),
     ("the dock and bay four, each one with 5 palets of azeite", "cais and hall1 should each have 5 oil"),
@@ -90,7 +91,8 @@ name: compound house
 floor: {width: 16, height: 10}
 places:
   sink:    {x: 1.0, y: 1.0, width: 1.0, depth: 0.6, access: [1.5, 1.8], properties: [receptacle, sink]}
-  counter: {x: 3.0, y: 1.0, width: 1.5, depth: 0.6, access: [3.7, 1.8], properties: [receptacle], words: [kitchen counter]}
+  counter: {x: 3.0, y: 1.0, width: 1.5, depth: 0.6, access: [3.7, 1.8], properties: [receptacle],
+            words: [kitchen counter]}
   fridge:  {x: 6.0, y: 1.0, width: 1.0, depth: 0.8, access: [6.5, 2.0], properties: [receptacle, openable],
             state: {open: false}, words: [frij]}
   salon:   {x: 12.0, y: 7.0, width: 2.0, depth: 1.0, access: [13.0, 6.5], properties: [receptacle], words: [salon]}

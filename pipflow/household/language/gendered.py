@@ -24,9 +24,9 @@ from pipflow.household.language.people import person_named
 
 #: verbs whose object is only ever a thing: "close him", "heat him" ("warm him up" and "lock him in"
 #: may be said of a child, and are not here)
-THING_VERBS = frozenset({"open", "close", "shut", "heat", "reheat", "microwave", "boil", "fry", "cook", "slice", "cut",
-                         "chop", "dice", "peel", "grate", "toast", "defrost", "chill", "freeze", "plug", "unplug", "dim",
-                         "empty", "fill", "refill", "rinse"})
+THING_VERBS = frozenset({"open", "close", "shut", "heat", "reheat", "microwave", "boil", "fry", "cook", "slice",
+                         "cut", "chop", "dice", "peel", "grate", "toast", "defrost", "chill", "freeze", "plug",
+                         "unplug", "dim", "empty", "fill", "refill", "rinse"})
 #: "on" and "off" said as verbs ("off him please"): only opening a clause ("put the blanket on him"
 #: is a where, and may be a person)
 SWITCH_WORDS = frozenset({"on", "off"})

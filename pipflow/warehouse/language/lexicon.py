@@ -36,9 +36,9 @@ from pipflow.warehouse.language.names import (CONTAINERS, KIND_WORDS, PACKAGING_
 from pipflow.warehouse.language.roles import read_by_roles
 from pipflow.warehouse.language.reordered import (base_verb, by_as_among, count_after_item, destination_first,
                                                 fronted_source, item_as_subject, needs_doing, object_before_verb,
-                                                of_as_from, on_as_to, place_as_it, place_first, place_must_be, places_then_each,
-                                                said_at,
-                                                source_after_verb, to_be_done, topic_first, verb_last)
+                                                of_as_from, on_as_to, place_as_it, place_first, place_must_be,
+                                                places_then_each, said_at, source_after_verb, to_be_done,
+                                                topic_first, verb_last)
 from pipflow.warehouse.language.transcripts import places_taken_back, them_as_determiner
 from pipflow.warehouse.language.wordorder import left_dislocated, noun_adjuncts, numbered_siblings, unmarked_lists
 
@@ -1612,7 +1612,9 @@ class Lexicon:
         toks = self._definite_groups(them_as_determiner(read_counts(_split_hyphens(
             this_job_announced(case_endings(topic_marked(self._interjection_set_off(fixed)))), self.keywords))))
         toks, framed = without_request_frames(places_taken_back(toks), verbs)
-        toks = item_as_subject(fronted_source(to_be_done(needs_doing(source_after_verb(of_as_from(place_as_it(by_as_at(by_as_among(places_then_each(toks)))))), verbs), verbs), verbs))
+        toks = places_then_each(by_as_among(toks))   # before "by" is read as "at"
+        toks = source_after_verb(of_as_from(place_as_it(by_as_at(toks))))
+        toks = item_as_subject(fronted_source(to_be_done(needs_doing(toks, verbs), verbs), verbs))
         toks = on_as_to(object_before_verb(topic_first(place_first(count_after_item(destination_first(
             place_must_be(verb_last(read_by_roles(toks)))))))))
         toks = lexicon_verbs(quantity_phrases(addressed_anyone(stative_having(toks)), self.keywords), self.keywords)

@@ -535,7 +535,8 @@ def _places_then_each(toks: list[Tok]) -> list[Tok]:
             and j + 3 == len(clause):
         less = clause[j].value == "less"
         verb = Tok("word", clause[j].text, "remove" if less else "add")
-        to = [Tok("word", clause[j + 1].text, "from" if less else "to"), Tok("word", "each", "each"), Tok("word", "", "of")]
+        to = [Tok("word", clause[j + 1].text, "from" if less else "to"), Tok("word", "each", "each"),
+              Tok("word", "", "of")]
         return toks[:k] + [verb] + clause[:j] + to + places + after
     return toks
 
