@@ -1,6 +1,6 @@
 """Issue 23, from pair HH's sets (a receiving supervisor near Lisbon writing Portuguese English, an
-engineer in Addis Ababa writing English with Amharic in Latin letters), after their first
-measurement. Warehouse: the English plural of a unit word known in the singular ("palets"); a word
+engineer in Addis Ababa writing English with Amharic in Latin letters) and pair II's warehouse set
+(a shift lead in Gothenburg writing Swedish English), after their first measurements. Warehouse: the English plural of a unit word known in the singular ("palets"); a word
 the world declares for a place with a number word in it ("zona tres"); a purpose said first ("For
 the Sonae the dock has to hold ...", "For the inventory: ..."); "the X of P" for the X on P; a source
 said between the verb and its things; "pass" and "push" as verbs of moving; "complete P with X";
@@ -54,6 +54,23 @@ STORE = {
 ])
 def test_portuguese_english_orders_read_as_their_plain_english(said: str, plain: str) -> None:
     assert_warehouse_alike(said, plain, STORE)
+
+
+@pytest.mark.parametrize("said, plain", [
+    # pair II's Swedish English: "pall" / "pallar" and other languages' pallets are units; Swedish talk
+    ("Hej! move 3 pallar arroz from bay four to the dock, tack", "move 3 rice from hall1 to cais"),
+    ("Hej again. 2 bancali of azeite from zona tres to bay four", "move 2 oil from hall2 to hall1"),
+    ("Okej, the dock should have 9 pallar of arroz", "cais should have 9 rice"),
+    ("Nja, move 1 pall arroz to bay four", "move 1 rice to hall1"),
+])
+def test_swedish_english_orders_read_as_their_plain_english(said: str, plain: str) -> None:
+    assert_warehouse_alike(said, plain, STORE)
+
+
+def test_again_after_an_order_is_still_operative() -> None:
+    """ "Hej again" greets a second time; "move ... again" repeats an order, and is refused unread."""
+    with pytest.raises(PipflowError):
+        understand("Hej! move 3 pallar arroz from bay four to the dock again", STORE)
 
 
 @pytest.mark.parametrize("said", [

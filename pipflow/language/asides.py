@@ -87,6 +87,8 @@ GREETINGS = frozenset({"hi", "hello", "hey", "hiya", "heya", "howdy", "morning",
                        "dzieki", "dziekuje", "czesc",
                        # Brazilian Portuguese ("bom dia pessoal": good morning, folks; "oi", "olá": hi)
                        "oi", "ola", "bom", "boa",
+                       # Swedish ("hej", "hejsan", "tjena", "hallå": hi)
+                       "hej", "hejsan", "tjena", "halla",
                        # Greek ("Re paidia": hey, kids; "kalimera")
                        "re", "kalimera", "kalispera",
                        # Indonesian ("pagi pak": morning; "selamat pagi")
@@ -156,7 +158,9 @@ THANKS = frozenset({"thanks", "ta", "cheers", "xiexie", "thx", "ty", "tyvm", "th
                     # Romanian ("mersi": thanks; "multumesc": thank you)
                     "mersi", "multumesc", "multam",
                     # Egyptian Arabic ("shokran": thanks)
-                    "shokran", "shukran"})
+                    "shokran", "shukran",
+                    # Swedish ("tack", "tack så mycket": thanks)
+                    "tack", "tackar"})
 #: who an order is said to, or a tag that closes it, without a comma before it ("... on dispatch
 #: please mate", "... forklifts only mind", "... thanks lads"): never a word that is operative
 CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "boss", "love", "pet", "hun",
@@ -206,7 +210,9 @@ CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "
                      # "tanks": thanks)
                      "bless", "respect", "seen", "eeh", "tanks",
                      # Romanian ("..., gata": done, that's it; "mersi": thanks; "frate", "bre": mate; "pa": bye)
-                     "gata", "mersi", "multumesc", "frate", "bre", "pa"})
+                     "gata", "mersi", "multumesc", "frate", "bre", "pa",
+                     # Swedish ("..., tack": thanks; "hej då", "hejdå": bye)
+                     "tack", "hejda"})
 
 
 #: a request tag after an order ("... over to the shed would ya", "... could you"): it asks
@@ -356,9 +362,11 @@ def near_operative(word: str) -> bool:
 
 
 def is_greeting(words: Iterable[str]) -> bool:
-    """ "Morning all", "hi team", "thanks so much": a greeting word, then only addressees."""
+    """ "Morning all", "hi team", "thanks so much", "hej again": a greeting word, then only
+    addressees (and "again" last: greeted a second time, nothing done again)."""
     ws = [w for w in words if w]
-    return bool(ws) and ws[0] in GREETINGS and all(w in ADDRESSEES or w in GREETINGS for w in ws[1:])
+    rest = ws[1:-1] if len(ws) > 1 and ws[-1] == "again" else ws[1:]
+    return bool(ws) and ws[0] in GREETINGS and all(w in ADDRESSEES or w in GREETINGS for w in rest)
 
 
 #: how warmly thanks are said ("thank you ever so much", "thanks very much"): no quantity of anything
@@ -809,6 +817,9 @@ INTERJECTIONS = frozenset({
     # European Portuguese ("Olha, ...": look; "Então, ...": so; "pronto": right, done; "vá": go on; "pá":
     # mate; "já está": done; "ai ai"; "obrigado": thanks)
     "olha", "olhe", "entao", "pronto", "va", "ja", "esta", "ai", "obrigado", "obrigada",
+    # Swedish ("Hej, ...", "Okej, ...", "Nja, ...": well, not quite; "Jaha, ...": I see; "precis":
+    # exactly; "alltså": so, I mean; "tack": thanks)
+    "hej", "hejsan", "tjena", "halla", "okej", "nja", "jaha", "precis", "alltsa", "tack",
     # Gulf Arabic ("Yalla, ...": come on; "inshallah", "mashallah", "wallah"; "khalas": done)
     "yalla", "inshallah", "mashallah", "wallah", "khalas", "shukran",
     # Vietnamese particles ("nha", "nhé": OK?, please)

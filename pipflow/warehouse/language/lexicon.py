@@ -131,6 +131,8 @@ IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before
           (re.compile(r"\b(?:te|va)\s+rog\b", re.IGNORECASE), "please"),
           # Spanish and Portuguese "please" ("por favor", "por favour", "(se) faz favor"), said in English orders
           (re.compile(r"\b(?:por|(?:se\s+)?faz)\s+(?:favor|favour)\b", re.IGNORECASE), "please"),
+          # "kl 06", "kl. 14:30" (Swedish and Norwegian "klockan": at o'clock): a time of day, no count
+          (re.compile(r"\bkl\.?\s*(\d{1,2})(?:[:.]\d{2})?\b", re.IGNORECASE), r"\1 oclock"),
           # "until is full": the subject left out, as Portuguese, Spanish and Romanian leave it ("até estar cheia")
           (re.compile(r"\b(until|till)\s+is\s+full\b", re.IGNORECASE), r"\1 full"),
           # Portuguese dozens ("uma dúzia de", "meia dúzia de": a dozen, half a dozen), accents left out

@@ -81,7 +81,11 @@ PACKAGING_WORDS = frozenset({
     # bales (of textiles, "3 bales of t-shirts")
     "bale", "bales",
     # pallets said the French and Romanian way ("20 palettes of flour"; Romanian "paleti", "palete")
-    "palettes", "paleti", "palete"})
+    "palettes", "paleti", "palete",
+    # Swedish, Norwegian and Danish pallets and packages ("3 pallar kaffe", "2 kolli"); Italian
+    # "bancale", "bancali"; Polish and Czech "palety"; Spanish "paletas"
+    "pall", "pallar", "pallarna", "paller", "pallene", "kolli", "kollin", "kartong", "kartonger", "bancale",
+    "bancali", "paleta", "palety", "paletas"})
 #: each of them in the English plural too, as it is typed in English orders ("10 palets", "3 kolis")
 PACKAGING_WORDS |= {w + "s" for w in PACKAGING_WORDS if w.isalpha() and len(w) >= 4 and not w.endswith("s")}
 #: every word said after a count for its unit ("5 pcs", "4 pallets", "6 case"): no thing of its own
