@@ -78,7 +78,7 @@ def test_again_after_an_order_is_still_operative() -> None:
     "For this one the dock has to hold 9 palets of arroz",
     "For 2 clients the dock has to hold 9 palets of arroz",
     # a number word after a place's own word, where the world declares no such word: never that place
-    "move 4 palets of arroz from zona dois to the dock",
+    "move 4 palets of arroz from zona cinco to the dock",
     # places listed and then something other than what each gets: left as said
     "bay four and zona tres, 2 palets of arroz less",
 ])
