@@ -51,19 +51,13 @@ STORE = {
     ("the dock and bay four, each one with 5 palets of azeite", "cais and hall1 should each have 5 oil"),
     ("Olha, bay four and zona tres, 2 palets of arroz less in each", "remove 2 rice from each of hall1 and hall2"),
     ("the dock and zona tres, 1 palet of arroz more in each", "add 1 rice to each of cais and hall2"),
-])
-def test_portuguese_english_orders_read_as_their_plain_english(said: str, plain: str) -> None:
-    assert_warehouse_alike(said, plain, STORE)
-
-
-@pytest.mark.parametrize("said, plain", [
     # pair II's Swedish English: "pall" / "pallar" and other languages' pallets are units; Swedish talk
     ("Hej! move 3 pallar arroz from bay four to the dock, tack", "move 3 rice from hall1 to cais"),
     ("Hej again. 2 bancali of azeite from zona tres to bay four", "move 2 oil from hall2 to hall1"),
     ("Okej, the dock should have 9 pallar of arroz", "cais should have 9 rice"),
     ("Nja, move 1 pall arroz to bay four", "move 1 rice to hall1"),
 ])
-def test_swedish_english_orders_read_as_their_plain_english(said: str, plain: str) -> None:
+def test_portuguese_and_swedish_english_orders_read_as_their_plain_english(said: str, plain: str) -> None:
     assert_warehouse_alike(said, plain, STORE)
 
 

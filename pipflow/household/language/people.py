@@ -487,8 +487,9 @@ def about_people(command: str, world: dict, notes: list[str]) -> str | None:
 
 #: one-word cues of how a room feels ("dark", "hot", "stuffy")
 _FELT = frozenset(w for w in [*LIGHT_CUES, *TEMPERATURE_CUES, *TEMPERATURE_ADJECTIVES, *AIR_CUES] if " " not in w)
-#: words between "it is" and such a cue ("it is so very hot")
-_DEGREE = frozenset({"so", "too", "very", "really", "quite", "a", "bit", "little", "getting", "rather", "awfully"})
+#: words between "it is" and such a cue ("it is so very hot", "it is a bit dark"): the lexicon's
+#: intensifiers and "too", word by word
+_DEGREE = frozenset(w for phrase, (cls, _) in PHRASES.items() if cls in ("INTENS", "TOO") for w in phrase)
 
 
 def _felt_where_they_are(words: list[str], place: list[str]) -> list[str]:
