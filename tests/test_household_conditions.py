@@ -21,25 +21,28 @@ def test_the_world_is_as_these_tests_assume() -> None:
     assert STUDIO["places"]["radio"]["state"]["on"] is True
     assert STUDIO["objects"]["teacup"]["state"]["dirty"] is True
     assert STUDIO["objects"]["teacup"]["in"] != "basin"
+    # the juice already lies in the shut icebox: putting it there opens nothing, so the goal asks
+    # nothing of the icebox's door (benchmarks/README.md: only a container the plan must open)
+    assert STUDIO["objects"]["juice"]["in"] == "icebox"
 
 
 @pytest.mark.parametrize("command, goal", [
     # the condition holds: the order is read, "it" is the thing of the condition
     ("If the radio is on, switch it off.", {"state": {"radio": ["off"]}}),
     ("if the radio's still on switch it off and put the juice in the icebox",
-     {"in": {"icebox": ["juice"]}, "state": {"radio": ["off"], "icebox": ["closed"]}}),
+     {"in": {"icebox": ["juice"]}, "state": {"radio": ["off"]}}),
     ("Switch the radio off if it's on.", {"state": {"radio": ["off"]}}),
     ("If the teacup is dirty, wash it, then put it in the pantry.",
      {"in": {"pantry": ["teacup"]}, "state": {"teacup": ["clean"], "pantry": ["closed"]}}),
     ("If the radio is not off, switch it off.", {"state": {"radio": ["off"]}}),
     # it does not hold: that sentence is not done, the others are
     ("If the radio is off, switch it on. Put the juice in the icebox.",
-     {"in": {"icebox": ["juice"]}, "state": {"icebox": ["closed"]}}),
+     {"in": {"icebox": ["juice"]}}),
     # "if not" reads the last condition the other way
     ("If the radio is off, switch it on. If not, put the juice in the icebox.",
-     {"in": {"icebox": ["juice"]}, "state": {"icebox": ["closed"]}}),
+     {"in": {"icebox": ["juice"]}}),
     ("If the radio is on, put the juice in the icebox. Otherwise, switch it on.",
-     {"in": {"icebox": ["juice"]}, "state": {"icebox": ["closed"]}}),
+     {"in": {"icebox": ["juice"]}}),
 ])
 def test_an_order_on_a_condition_is_read_as_the_home_is_now(command: str, goal: dict) -> None:
     assert studio_goal(command) == goal
@@ -67,7 +70,7 @@ def test_a_condition_that_cannot_be_decided_or_leaves_nothing_is_refused(command
     ("Cut the radio off.", {"state": {"radio": ["off"]}}),
     ("cut off the radio", {"state": {"radio": ["off"]}}),
     ("Cut the reading light on and put the juice in the icebox.",
-     {"in": {"icebox": ["juice"]}, "state": {"reading_light": ["on"], "icebox": ["closed"]}}),
+     {"in": {"icebox": ["juice"]}, "state": {"reading_light": ["on"]}}),
     # what does not switch is still cut with a knife
     ("Cut the banana.", {"state": {"banana": ["sliced"]}}),
     ("Take the banana and cut it on the worktop.", {"in": {"worktop": ["banana"]}, "state": {"banana": ["sliced"]}}),

@@ -75,12 +75,15 @@ def test_food_named_in_the_plural_is_read(croft):
     assert _goal("Slice the leeks", croft)["state"] == {"leek": ["sliced"]}
 
 
-def test_an_impossible_reading_beside_one_not_understood_is_asked(croft):
+def test_an_impossible_reading_beside_one_that_reads_is_the_one_that_reads(croft):
+    """ "..., and the rocking horse in the toy box" after a switch: switching off the rocking horse
+    that is in the box is impossible; the verb left out is a move, as no place switches a thing
+    off (it was not understood, and the command asked). Where the other reading is still not
+    understood, the command is asked, never refused as impossible: the language set's
+    drumcondra nn2-c06 and terrace-v07 (refused, none misread, tests/test_language_set.py)."""
     command = "Switch the lamp off, and - careful - the rocking horse in the toy box, it's heavy"
-    with pytest.raises(TranslationError) as caught:
-        translate(command, croft)
-    assert not isinstance(caught.value, Refusal)
-    assert "impossible if read one way" in str(caught.value)
+    assert _goal(command, croft) == {"in": {"toy_chest": ["rocking_horse"]},
+                                     "state": {"lamp": ["off"], "toy_chest": ["closed"]}}
 
 
 def test_a_command_with_only_the_impossible_reading_is_refused_as_impossible(croft):

@@ -68,13 +68,14 @@ def test_robots_told_to_stay_off_a_place() -> None:
 
 
 @pytest.mark.parametrize("command, goal", [
+    # (the juice already lies in the shut icebox: nothing opens it, so its door is no condition)
     ("Do one thing, put the juice in the icebox itself, na.",
-     {"in": {"icebox": ["juice"]}, "state": {"icebox": ["closed"]}}),
+     {"in": {"icebox": ["juice"]}}),
     ("wash the teacup nicely", {"state": {"teacup": ["clean"]}}),
     ("put the juice in the icebox, she will drink it after her class",
-     {"in": {"icebox": ["juice"]}, "state": {"icebox": ["closed"]}}),
+     {"in": {"icebox": ["juice"]}}),
     ("put the juice in the icebox. My wife will make the tea later.",
-     {"in": {"icebox": ["juice"]}, "state": {"icebox": ["closed"]}}),
+     {"in": {"icebox": ["juice"]}}),
 ])
 def test_household_indian_english_and_what_others_will_do(command: str, goal: dict) -> None:
     assert studio_goal(command) == goal

@@ -105,7 +105,9 @@ GREETINGS = frozenset({"hi", "hello", "hey", "hiya", "heya", "howdy", "morning",
                        # Jamaican ("Wah gwaan unu": what's going on, you all)
                        "wah", "wha", "gwaan",
                        # Romanian ("Buna seara, ...": good evening; "salut baieti": hi, lads)
-                       "buna", "seara", "ziua", "dimineata", "noapte"})
+                       "buna", "seara", "ziua", "dimineata", "noapte",
+                       # Australian ("G'day team", "Gday all")
+                       "gday", "gidday"})
 #: words that open an apology or a thanks for something ("sorry for the late ask", "thanks for
 #: earlier"): what follows "for" / "about" is what one is sorry or thankful for, not an order
 PLEASANTRIES = frozenset({"sorry", "apologies", "apologise", "apologize", "pardon", "thanks", "thank", "thx",
@@ -530,7 +532,9 @@ _WHERE_BEFORE_THERE = frozenset({"under", "over", "above", "below", "beyond"})
 #: the order ("the truck is coming before lunch")
 TIMES_SAID = frozenset({"lunch", "lunchtime", "noon", "midday", "midnight", "tonight", "tomorrow", "morning",
                         "afternoon", "evening", "dinner", "breakfast", "teatime", "closing", "monday", "tuesday",
-                        "wednesday", "thursday", "friday", "saturday", "sunday", "weekend"})
+                        "wednesday", "thursday", "friday", "saturday", "sunday", "weekend",
+                        # breaks of a shift: Australian "smoko", Swedish "fika"
+                        "smoko", "fika", "break", "lunchbreak", "brekkie"})
 
 
 #: spans of time after "all" ("it's been on all night", "all the time"): how long, no quantity
@@ -737,6 +741,13 @@ CLOSINGS = frozenset({(*that, *rest, *later) for that in (("thats",), ("that", "
     # being fine, no quantity; Irish and British "grand" and "sound" are fine and thanks
     ("all", "good"), ("all", "grand"), ("all", "fine"), ("its", "all", "good"), ("all", "good", "here"),
     ("grand",), ("sound",), ("grand", "job"), ("sound", "job"), ("nice", "one"), ("legend",),
+    # Australian: it is no trouble, it will be fine ("..., too easy", "no worries", "she'll be right")
+    ("too", "easy"), ("no", "worries"), ("no", "wucking", "furries"), ("she", "ll", "be", "right"),
+    ("shell", "be", "right"), ("sweet", "as"), ("good", "on", "ya"), ("all", "sweet"),
+    # that is enough, said after the order ("..., reckon that'll do", "..., that should do it")
+    *((*r, *t, *d) for r in ((), ("reckon",), ("i", "reckon"), ("think",), ("i", "think"))
+      for t in (("thatll",), ("that", "ll"), ("that", "will"), ("that", "should"))
+      for d in (("do",), ("do", "it"), ("do", "the", "trick"))),
     # a letter's closing ("With kind regards, Ingrid"; the name after it is the signature)
     *((*w, *r, "regards") for w in ((), ("with",)) for r in ((), ("kind",), ("best",), ("warm",), ("many",)))}
 
@@ -927,12 +938,41 @@ def content_free(words: Iterable[str], content: Callable[[str], bool],
         return True
     if reports and names is not None and is_report(ws, names):
         return True   # "it is getting serviced": a report, whatever grammar words it uses
-    if ws[0] in ATTACHING:
+    if ws[0] in ATTACHING and not _it_is(ws):
         return False  # it modifies the clause before ("..., on the left", "..., and the rest")
-    if ws[0] not in SUBJECTS and any(w not in FUNCTION_WORDS and nxt in OBJECT_PRONOUNS
-                                     for w, nxt in zip(ws, ws[1:])):
+    if ws[0] not in SUBJECTS and any(w not in FUNCTION_WORDS and nxt in OBJECT_PRONOUNS and not _this_time(ws, k + 1)
+                                     for k, (w, nxt) in enumerate(zip(ws, ws[1:]))):
         return False  # "..., recount them": an instruction about a thing, in a verb not read
     return not any(_operative_at(ws, k) or (content(w) and not _just_now(ws, k)) for k, w in enumerate(ws))
+
+
+#: words after "its" that make it "it's" typed without its apostrophe ("its friday", "its a mess",
+#: "its not urgent"), not the possessive that attaches a clause ("..., its top shelf")
+_AFTER_IT_IS = frozenset({"a", "an", "the", "not", "so", "too", "very", "just", "all", "still", "been", "ok", "okay",
+                          "fine", "only", "already", "getting", "gonna", "going", "always", "never", "probably"})
+
+
+#: spans of time a demonstrative may point at ("this week", "that arvo"): when, no thing
+_SPANS = frozenset(TIMES_SAID | {"week", "month", "year", "time", "shift", "arvo", "season", "summer", "winter",
+                                 "spring", "autumn", "fall", "quarter", "day", "night", "once"})
+
+
+def _this_time(ws: list[str], k: int) -> bool:
+    """Whether the word at ``k`` is a demonstrative before a span of time ("orders this week"):
+    it says when, no object of a verb."""
+    return ws[k] in _DEMONSTRATIVES and k + 1 < len(ws) and ws[k + 1] in _SPANS
+
+
+def _it_is(ws: list[str]) -> bool:
+    """Whether a clause opening with "its" is "it's" said without its apostrophe: a word of
+    :data:`_AFTER_IT_IS` or a time (:data:`TIMES_SAID`) after it, or a verb of "be" or a modal
+    later in the clause ("its friday and the pub will be chockers")."""
+    return ws[0] == "its" and len(ws) > 1 and (ws[1] in _AFTER_IT_IS or ws[1] in TIMES_SAID
+                                               or any(w in _BE or w in _MODALS for w in ws[2:]))
+
+
+#: modal verbs: a clause with one says what will or may be, no noun phrase alone
+_MODALS = frozenset({"will", "would", "can", "could", "should", "shall", "might", "may", "must", "wont", "cant"})
 
 
 def clauses(words: list[str], marks: set[str]) -> list[Clause]:

@@ -185,6 +185,15 @@ def turkish_i(command: str) -> tuple[str, list[str]]:
     return re.sub(r"\S+", read, command), notes
 
 
+def digit_words(world: dict, kinds: tuple[str, ...]) -> dict[str, str]:
+    """The words a world declares for its things with a digit among their letters ("fa7m",
+    "man2ouche": Arabic typed in Latin letters), lower case, -> the thing's name: what
+    :func:`declared_spellings` reads, before any digit of them could be taken for a count."""
+    return {word.lower(): str(name) for kind in kinds for name, entry in (world.get(kind) or {}).items()
+            for word in ((entry.get("words") or []) if isinstance(entry, dict) else [])
+            if isinstance(word, str) and word.isascii() and re.search(r"[A-Za-z]\d|\d[A-Za-z]", word)}
+
+
 def non_ascii_words(world: dict, kinds: tuple[str, ...]) -> dict[str, str]:
     """The words a world declares for its things with letters outside the alphabet ("açaí" for
     acai, "câmara 1" for chamber1), lower case and composed (NFC), -> the thing's name: what
@@ -213,12 +222,13 @@ def non_ascii_words(world: dict, kinds: tuple[str, ...]) -> dict[str, str]:
 
 def declared_spellings(command: str, declared: dict[str, str]) -> tuple[str, list[str]]:
     """The command with each spelling the world itself declares with letters outside the alphabet
-    (:func:`non_ascii_words`) written as the name it declares it for, and a note for each. The
-    world's own spelling is no guess, so the accent rule of this module (an accented word is read
-    only as talk) does not bear on it; every other accented word stays under that rule. The
-    command is composed first (NFC: canonical, so no character changes meaning), so an accent
-    typed as a combining mark matches too."""
-    if command.isascii() or not declared:
+    (:func:`non_ascii_words`), or with digits among its letters (:func:`digit_words`: "fa7m"),
+    written as the name it declares it for, and a note for each. The world's own spelling is no
+    guess, so the accent rule of this module (an accented word is read only as talk) and the
+    refusal of a number written into a word do not bear on it; every other such word stays under
+    those rules. The command is composed first (NFC: canonical, so no character changes meaning),
+    so an accent typed as a combining mark matches too."""
+    if not declared or (command.isascii() and not any(ch.isdigit() for w in declared for ch in w)):
         return command, []
     notes: list[str] = []
     text = unicodedata.normalize("NFC", command)
@@ -245,6 +255,8 @@ _EXPRESSION_RANGES = ((0x1F600, 0x1F64F),   # emoticons: faces and gestures ("�
                       (0x1F590, 0x1F596),   # raised hands
                       (0x1F493, 0x1F49F),   # hearts
                       (0x2763, 0x2764),     # heart marks
+                      (0x1F389, 0x1F38A),   # party popper, confetti ball ("🎉": joy)
+                      (0x2728, 0x2728),     # sparkles
                       (0x2639, 0x263A))     # frowning and smiling face
 #: what may follow such a pictograph within it: skin tones, the joiner, a variation selector, and
 #: the gender signs that a joiner adds ("🤦‍♂️")

@@ -39,7 +39,7 @@ _GREETING = re.compile(r"\A\s*(?P<line>(?:(?:hi|hello|hey|dear|good\s+morning|mo
 CLOSINGS = r"(?i:thanks|thx|thank\s+you|cheers|regards|best|ta|many\s+thanks|best\s+regards|kind\s+regards)"
 #: the sender's name closing the mail: after a blank line, a closing line or a dash
 _SIGNATURE = re.compile(
-    r"(?:\n[ \t]*\n|\n[ \t]*" + CLOSINGS + r"[ \t]*[,!.]*[ \t]*\n|[ \t,!.]*\n?[ \t]*[-\u2013\u2014]+)[ \t]*"
+    r"(?:\n[ \t]*\n|\n[ \t]*" + CLOSINGS + r"[ \t]*[,!.]*[ \t]*\n|[ \t,!.]*\n?[ \t]*(?<![A-Za-z0-9])[-\u2013\u2014]+)[ \t]*"
     r"(?P<name>[A-Z][a-z]{0,15}(?:[ \t]+[A-Z][a-z]{0,15})?)[ \t]*\.?\s*\Z")
 
 

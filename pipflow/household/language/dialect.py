@@ -104,10 +104,11 @@ def arabic_as_english(words: list[str], known: Callable[[str], bool], notes: lis
     """The words with Arabic words said in English read as English (:data:`_ARABIC`), each only
     where it is no name of the home alone (``known``), in a command that says one of them; there "w"
     (Arabic "and", written on the next word in Arabic script) is "and"."""
-    arabic = any(w in _ARABIC and not known(w) for w in words)
+    french = {k for k, w in enumerate(words) if w == "il" and k and words[k - 1] == "s"}   # "s'il te plait"
+    arabic = any(w in _ARABIC and not known(w) and k not in french for k, w in enumerate(words))
     out: list[str] = []
-    for w in words:
-        said = None if known(w) or not arabic else _ARABIC.get(w)
+    for k, w in enumerate(words):
+        said = None if known(w) or not arabic or k in french else _ARABIC.get(w)
         if w == "w" and arabic:
             said = "and"
         _said_as(out, w, said, "Arabic", notes)

@@ -259,6 +259,11 @@ DRINK_MAKERS = ("kettle", "kettles", "coffee machine", "coffee maker", "espresso
 #: plays sound, what makes a hot drink; each read from the world's names and words
 #: what shows something to watch
 SCREENS = ("tv", "television", "telly", "projector", "screen", "monitor", "tv set")
+#: what lights a room, where the world has no category of lights: a light cue ("the salon is too
+#: dark") is of the things that switch and are named or worded so ("salon light", "lustre")
+LIGHTS = ("light", "lights", "lamp", "lamps", "chandelier", "lustre", "bulb", "lantern", "sconce", "spotlight",
+          "spotlights", "downlight", "downlights", "floor lamp", "desk lamp", "ceiling light", "tube light",
+          "tubelight")
 DEVICES = {"heating": ROOM_HEATERS, "sound": SOUND_MAKERS, "hot drink": DRINK_MAKERS, "screen": SCREENS, "air": FANS}
 DEVICE_NOUNS = {"heating": "room heater", "sound": "sound maker", "hot drink": "drink maker", "screen": "screen",
                 "air": "fan or window"}
@@ -300,7 +305,7 @@ _add("EVERYTHING", "everything,all things,all the things,anything")
 _add("THING", "thing,things,stuff,items,objects")
 _add("AND", "and,as well as,plus,along with,n")
 _add("THEN", "then,after that,afterwards,next,finally,and then,also")
-_add("BUT", "but")
+_add("BUT", "but,bas")   # Levantine Arabic "bas": but
 _add("IN", "in,into,inside,inside of,within")
 _add("ON", "on,onto,upon")
 _add("TO", "to,over to,back to")
@@ -428,7 +433,7 @@ GRADED = {"ADJ", "LIGHTCUE", "TEMPCUE", "SOUNDCUE", "AIRCUE", "HANDLING", "WANT"
           "V_STATE"}
 _add("TOO", "too,as well")
 #: "it's freezing with that fan going": a thing said to be running
-_add("GOING", "going,running,blasting,blaring,whirring,humming,lit,on the go,blaring away,blasting away,going full blast,"
+_add("GOING", "going,running,blasting,blaring,whirring,humming,lit,burning,on the go,blaring away,blasting away,going full blast,"
      "humming away,whirring away,droning on,droning away,on full blast,at full blast", "on")
 _add("CANNOT", "can not,could not,cannot,can barely,can hardly,could barely,could hardly,can scarcely")
 _add("SOMEWHERE", "somewhere,some place,someplace")
@@ -443,7 +448,9 @@ ROOM_WORDS = ("room", "lounge", "living room", "sitting room", "bedroom", "kitch
               "office", "dining room", "bathroom", "floor", "conservatory", "sunroom", "sun room", "utility room",
               "utility", "porch", "landing", "attic", "cellar", "basement", "garage", "nursery", "playroom", "den",
               "snug", "parlour", "front room", "back room", "spare room", "box room", "games room", "kitchenette",
-              "lobby", "cloakroom", "laundry room", "scullery", "pantry")
+              "lobby", "cloakroom", "laundry room", "scullery", "pantry",
+              # French and Levantine "salon" (the living room), and rooms said in other Englishes
+              "salon", "toilet", "washroom", "lounge room", "family room", "tv room", "guest room", "kids room")
 _add("HERE", "here,in here,over here,over there," + ",".join(f"in the {h},around the {h}" for h in HOME_WORDS)
      + "," + ",".join(f"{at} {whose} {h}" for h in HOME_WORDS + ("place",) for at in ("in", "around")
                       for whose in ("this", "my", "our")))
@@ -531,6 +538,12 @@ FILLER = {("um",), ("umm",), ("uh",), ("uhh",), ("uhm",), ("er",), ("erm",),   #
           # (pipflow.language.arabizi)
           ("yaani",), ("maalesh",), ("khalas",), ("yalla",), ("mashi",), ("ya", "rab"), ("ya", "habibi"),
           ("habibi",), ("habibti",), ("inshallah",), ("shokran",), ("merci",), ("ya", "salam"), ("ya", "nhar", "abyad"), ("awi",), ("awy",),
+          # Lebanese Arabic and French, typed in Latin letters ("yaane": I mean; "tayyeb": OK; "hala2": now;
+          # "ba2a": then, come on; "ktir": very; "shway": a bit; "bref": anyway; "s'il te plait": please;
+          # "ca va": all right?), the digits spelt as letters (pipflow.language.arabizi)
+          ("yaane",), ("yaaneh",), ("tayyeb",), ("tayeb",), ("hala",), ("halla",), ("baa",), ("ktir",), ("kteer",),
+          ("shway",), ("shwayy",), ("bref",), ("s", "il", "te", "plait"), ("s", "il", "vous", "plait"), ("stp",),
+          ("ca", "va"), ("bonjour",), ("habibte",), ("yislamo",), ("yeslamo",), ("allah", "yekhalik"),
           # Amharic, typed in Latin letters ("ishi": OK; "bejih", "ebakih": please; "amesegnalehu": thank
           # you; "selam", "tena yistilign": hello; "ere", "wey", "inji": oh, well; "yene konjo": my dear;
           # "egziabher yimesgen": thank God; "chigir yelem": no problem; "betam": very)
@@ -624,6 +637,8 @@ TIME_WORDS = {("all", "night"), ("all", "day"), ("all", "evening"), ("all", "mor
               ("since", "lunch"), ("since", "dinner"), ("overnight",), ("later", "on"),
               ("from", "last", "night"), ("since", "last", "night"), ("from", "yesterday"), ("this", "evening"), ("this", "afternoon"),
               ("today",),
+              # what happened before, said as the reason ("don't leave it open like last time")
+              ("like", "last", "time"), ("like", "the", "last", "time"), ("as", "last", "time"), ("last", "time"),
               # where the speaker is ("don't leave anything running down here"): the whole home
               ("down", "here"), ("up", "here")}
 #: "since" or "from" a time of day, a meal or a day ("it's been sitting in the sink since the

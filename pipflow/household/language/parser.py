@@ -46,8 +46,8 @@ from pipflow.household.language.tagger import owners_as_the, tag
 from pipflow.household.language.tokens import Tag
 from pipflow.language.arabizi import spelt_in_letters
 from pipflow.language.asides import said
-from pipflow.language.characters import (accents_folded, declared_spellings, non_ascii_words, refuse_unread, turkish_i,
-                                         without_expressions)
+from pipflow.language.characters import (accents_folded, declared_spellings, digit_words, non_ascii_words,
+                                         refuse_unread, turkish_i, without_expressions)
 from pipflow.language.english import common_word
 from pipflow.language.listing import inline_numbering
 from pipflow.language.earley import ListLexer, earley_parser
@@ -100,6 +100,8 @@ def _parse_said(command: str, world: dict, notes: list[str]) -> list[dict]:
         command, accented = accents_folded(command, reads_as_word(world))
         notes += declared + accented
     refuse_unread(command, MARKS)   # a character this reader does not read is refused, never skipped
+    command, spelt = declared_spellings(command, digit_words(world, ("places", "objects")))   # "the old fa7m"
+    notes += spelt
     if _LETTER_BY_DIGIT.search(command):   # "ya3ni", "el gaw 7ar" (the home's words are read only then)
         command = spelt_in_letters(command, _english_or_read(world), notes)
     refuse_digits_in_words(command)

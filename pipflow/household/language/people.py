@@ -35,8 +35,8 @@ from typing import Collection
 
 from pipflow.errors import TranslationError
 from pipflow.household.language.dialect import TWO_OBJECT_VERBS
-from pipflow.household.language.lexicon import (AIR_CUES, FILLER, LIGHT_CUES, PHRASES, TEMPERATURE_ADJECTIVES,
-                                                TEMPERATURE_CUES, words_of)
+from pipflow.household.language.lexicon import (AIR_CUES, FILLER, LIGHT_CUES, PHRASES, PURPOSE_WORDS,
+                                                TEMPERATURE_ADJECTIVES, TEMPERATURE_CUES, words_of)
 from pipflow.household.language.names import home_words, per_world, world_phrases
 from pipflow.household.language.rewrites import CLOSING_PARTICLES, CONSUMED
 from pipflow.household.language.tokens import PUNCT
@@ -122,8 +122,10 @@ def _owner_candidates(world: dict) -> tuple[dict[tuple[str, ...], list[tuple[str
     # of two things or more ("minjun bed", "minjun tumbler"); a word before one thing's name is as
     # likely its make or its character ("elsa doll"), and an English word its kind ("winter ibul")
     found |= {who for who, things in unmarked.items() if who not in index and who[0] in KIN}
+    # (checked as English by :func:`owners`; a name the home's words also say with "'s", "Baba's
+    # glasses", is a person whatever it is in English)
     named = frozenset(who for who, things in unmarked.items() if who not in index and who[0] not in KIN
-                      and len(things) > 1 and (who[0],) not in PHRASES)   # checked as English by :func:`owners`
+                      and who not in found and len(things) > 1 and (who[0],) not in PHRASES)
     return {who: [key for key in index if len(key) > len(who) and key[:len(who)] == who]
             for who in found | named}, named
 
@@ -214,7 +216,11 @@ def pronouns_as_owners(words: list[str], world: dict, notes: list[str]) -> list[
             if len(whose) > 1 and len(whose & set(in_clause)) == 1:
                 # "Tolu's uniform on her bed, Tunde's jersey on his bed": the one of them its own clause names
                 whose &= set(in_clause)
-            if len(whose) == 1:
+            if len(whose) == 1 and _said_whole(out, k, next(iter(whose)), longest, index):
+                # "baba glasses to his table de nuit": the home's longer name of that same thing follows
+                notes.append(f"'{out[k]}' before '{out[k + 1]}...': whose it is, as the home's name says; read as 'the'")
+                out[k] = "the"
+            elif len(whose) == 1:
                 who = next(iter(whose))
                 notes.append(f"'{out[k]} {' '.join(out[k + 1:k + 1 + longest])}' read as {' '.join(who)}'s")
                 out[k:k + 1] = list(who)
@@ -226,6 +232,18 @@ def pronouns_as_owners(words: list[str], world: dict, notes: list[str]) -> list[
                 out[k] = "the"
         k += 1
     return out
+
+
+def _said_whole(words: list[str], k: int, who: tuple[str, ...], owned: int, index: dict) -> bool:
+    """Whether the possessive at ``k`` stands before a longer name of the home than the ``owned``
+    words its owner ``who`` is said with, and both name the same things ("his table de nuit",
+    where the home calls the thing "baba table" and "table de nuit")."""
+    longer = next((tuple(words[k + 1:k + 1 + m]) for m in (3, 2) if m > owned and k + m < len(words)
+                   and tuple(words[k + 1:k + 1 + m]) in index), None)
+    if longer is None:
+        return False
+    things = {ref["name"] for ref in index[longer]}
+    return things == {ref["name"] for ref in index[tuple(who) + tuple(words[k + 1:k + 1 + owned])]}
 
 
 def _owned_by_none(words: list[str], k: int, index: dict, people: dict[tuple[str, ...], list[tuple[str, ...]]]) -> bool:
@@ -457,6 +475,11 @@ def about_people(command: str, world: dict, notes: list[str]) -> str | None:
             said.append(f"'for {' '.join(words[k + 1:k + 1 + n])}': who it is for (set aside)")
             changed, k = True, k + 1 + n
             continue
+        first = _said_first_for(words, k, n) if n and w == "for" and (not out or out[-1] in PUNCT) else 0
+        if first:   # "For Baba's dinner, cut the tomatoes", "for baba cut the tomatoes"
+            said.append(f"'{' '.join(words[k:first])}': who it is for, said first (set aside)")
+            changed, k = True, first
+            continue
         if w == "for" and out and out[-1] not in PUNCT:
             dish = _purpose(r, k + 1)
             if dish:
@@ -525,6 +548,20 @@ def _said_there(r: _Reader, k: int, end: int) -> tuple[list[str], int, int] | No
             return None
         return found[1], j, end
     return None
+
+
+def _said_first_for(words: list[str], k: int, n: int) -> int:
+    """The end of "for" + a person (``n`` words) + "'s" and words of a purpose (lexicon
+    ``PURPOSE_WORDS``: "dinner", "breakfast") opening a clause, where a mark or a verb of the
+    lexicon follows; 0 otherwise."""
+    j = k + 1 + n
+    if j < len(words) and words[j] == "s":
+        j += 1
+    while j < len(words) and words[j] in PURPOSE_WORDS:
+        j += 1
+    if j < len(words) and (words[j] in PUNCT or str(PHRASES.get((words[j],), ("",))[0]).startswith("V_")):
+        return j + (words[j] == ",")
+    return 0
 
 
 def _purpose(r: _Reader, k: int) -> int:

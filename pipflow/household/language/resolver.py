@@ -31,8 +31,9 @@ from typing import Callable
 
 from pipflow.errors import PipflowError, Refusal, TranslationError
 from pipflow.household.language.lexicon import (BIN_KINDS, COLD, DEVICE_NOUNS, DEVICES, INDEFINITE, LAUNDRY,
-                                                LAUNDRY_PLACES, LIGHT_CATEGORY_WORD, MASS_NOUNS, MEALS, OPPOSITE,
-                                                REACHABLE, RUBBISH_KINDS, VIA_PROPERTY, WINDOWS, plurals, words_of)
+                                                LAUNDRY_PLACES, LIGHT_CATEGORY_WORD, LIGHTS, MASS_NOUNS, MEALS, OPPOSITE,
+                                                REACHABLE, ROOM_WORDS, RUBBISH_KINDS, VIA_PROPERTY, WINDOWS, plurals,
+                                                words_of)
 from pipflow.household.language.nearness import nearest
 from pipflow.household.language.order import check_order
 from pipflow.household.problem import CONDITIONS
@@ -43,6 +44,10 @@ _FLAG = {"is-open": "open", "is-on": "on", "dirty": "dirty", "sliced": "sliced",
 
 #: the words that lead a room said as where a cue is felt ("out in the conservatory", "in our lounge")
 _ROOM_LEADS = {"out", "over", "up", "down", "back", "in", "the", "my", "our"}
+
+
+#: the rooms of a home in words (lexicon ``ROOM_WORDS``), longest first
+_ROOMS = sorted((words_of(r) for r in ROOM_WORDS), key=len, reverse=True)
 
 
 def _room_said(room: str) -> list[str]:
@@ -78,6 +83,17 @@ def holds_now(world: dict, name: str, cond: str) -> bool:
 
 def applies(world: dict, name: str, cond: str) -> bool:
     return CONDITIONS[cond][2] in entity(world, name)["properties"]
+
+
+#: prepositions that say only where a thing goes, never where a change is made ("to the counter")
+_DESTINATIONS = {"to", "into", "onto", "towards", "toward"}
+
+
+def _moved_to(target: dict, cond: str) -> bool:
+    """Whether an elided verb after a change of state to ``cond`` is a move to ``target``: no
+    place makes a thing so ("open", "on"), or the place is said with a preposition of
+    destination only ("wash the pot, the cup to the desk")."""
+    return VIA_PROPERTY.get(cond) is None or (target.get("words", "").split() or [""])[0] in _DESTINATIONS
 
 
 def _describe(world: dict, name: str) -> str:
@@ -487,6 +503,10 @@ class Resolver:
             if "to" in st:
                 return {**out, "op": "put", "to": st["to"]}
             raise TranslationError(f"'{words}': which action? (nothing before it to repeat)")
+        if prev["op"] == "change" and "to" in st and _moved_to(st["to"], prev["to"]):
+            # "open the fridge, the pot to the counter": no place makes a thing open, and "to" says
+            # where a thing goes; the elided verb is a move
+            return {**out, "op": "put", "to": st["to"]}
         if prev["op"] == "change":
             via = st.get("to") or prev.get("via")
             return {**out, "op": "change", "to": prev["to"], **({"via": via} if via else {})}
@@ -766,12 +786,16 @@ class Resolver:
         wanted = {" ".join(words_of(w)) for w in DEVICES[kind]}
         cats = [c for c, e in (self.world.get("categories") or {}).items()
                 if {" ".join(words_of(w)) for w in [c] + list((e or {}).get("words") or [])} & wanted]
-        found = [n for c in cats for n in members(self.world, c)]
-        if not found:
-            found = [n for n, e in {**self.world["places"], **self.world["objects"]}.items()
-                     if any(said in wanted or any(said.endswith(f" {w}") for w in wanted)
-                            for said in {" ".join(words_of(w)) for w in [n] + list(e.get("words") or [])})]
+        found = [n for c in cats for n in members(self.world, c)] or self.called(DEVICES[kind])
         return [n for n in dict.fromkeys(found) if applies(self.world, n, cond)]
+
+    def called(self, kind_words: tuple[str, ...]) -> list[str]:
+        """The things whose name or words are one of ``kind_words`` or end with one ("salon fan",
+        "kids' room aircon": what is said before the kind word says where, or which)."""
+        wanted = {" ".join(words_of(w)) for w in kind_words}
+        return [n for n, e in {**self.world["places"], **self.world["objects"]}.items()
+                if any(said in wanted or any(said.endswith(f" {w}") for w in wanted)
+                       for said in {" ".join(words_of(w)) for w in [n] + list(e.get("words") or [])})]
 
     def device_cue(self, st: dict, words: str) -> None:
         """ "it's too quiet in here", "put some music on": the home's sound makers; "could murder a
@@ -904,6 +928,11 @@ class Resolver:
             self.goal.notes.append(f"'{room}': the one of them the home's words place there ({called[0]})")
             names[:] = called
             return
+        elsewhere = [n for n in names if self._called_in_another_room(n, room)]
+        if names and len(elsewhere) == len(names):   # "the kitchen is too dark" where only the salon light is off
+            raise TranslationError(f"'{words}': the home's words place {', '.join(names)} in another room than "
+                                   f"'{room}', and nothing called '{' '.join(_room_said(room))} ...' fits; "
+                                   "say what to switch")
         if _room_said(room)[:1] in (["my"], ["our"]):   # whose room: never some other room's thing
             raise TranslationError(f"'{words}': none of {', '.join(names) or 'the things that fit'} is called "
                                    f"'{_room_said(room)[0]} ...' in this home, so '{room}' does not say which; say which")
@@ -912,6 +941,16 @@ class Resolver:
                                            f"of {', '.join(names)} is meant; say which"), words, names)
         if names:
             self.goal.notes.append(f"'{room}': the home model has no rooms; the one thing that fits is meant")
+
+    def _called_in_another_room(self, name: str, room: str) -> bool:
+        """Whether the home's words for a thing open with a room other than ``room`` ("salon light"
+        where the kitchen is said)."""
+        said = _room_said(room)
+        for w in [name] + list(entity(self.world, name).get("words") or []):
+            opening = words_of(w)
+            if any(opening[:len(r)] == r and r != said for r in _ROOMS):
+                return True
+        return False
 
     def _called_after(self, room: str, names: list[str]) -> list[str]:
         """Of ``names``, those whose name or words open with the room's words ("living room fan" for
@@ -1075,12 +1114,16 @@ class Resolver:
             named = [(n, True) for names, _, _ in fits for n in names]
             self.observed = [o for o in self.observed if o not in fits]
         else:
-            if not cats:   # decided at the end: the reason for a request the command makes, or asked
+            # a home with no category of lights: its things named or worded as lights ("salon light")
+            group = members(self.world, cats[0]) if cats else \
+                self.called(LIGHTS) if default == LIGHT_CATEGORY_WORD else []
+            if not group:   # decided at the end: the reason for a request the command makes, or asked
                 self.cue_defaults.append(("", cond, words, [], False))
                 return
-            named = [(n, False) for n in members(self.world, cats[0]) if applies(self.world, n, cond)]
+            cat = cats[0] if cats else default
+            named = [(n, False) for n in group if applies(self.world, n, cond)]
             if not named:
-                raise Refusal(f"'{words}': nothing of the {cats[0]} category can be switched {cond}")
+                raise Refusal(f"'{words}': nothing of the {cat} category can be switched {cond}")
             if st.get("near"):   # "it's dark over by the sofa": the one light nearest the sofa
                 self._near(st, [n for n, _ in named], cond, words)
                 return
@@ -1092,7 +1135,7 @@ class Resolver:
                 self.wanting_light.add(words)
             # decided at the end: "it is getting dark, turn on the floor lamp" gives the reason
             # for a request, it does not ask for every light
-            self.cue_defaults.append((cats[0], cond, words, [n for n, _ in named], bool(st.get("room"))))
+            self.cue_defaults.append((cat, cond, words, [n for n, _ in named], bool(st.get("room"))))
             self.last = [n for n, _ in named]
             return
         for n, explicit in named:

@@ -119,15 +119,31 @@ BENEFICIARY_DETERMINERS = {"the", "my", "our", "your", "his", "her", "their"}
 
 
 def _without_inner_purposes(clause: list[str], notes: list[str]) -> list[str]:
-    """:func:`_without_purpose` at the end of the clause and before each "and" / "then" in it:
+    """:func:`_without_purpose` at the end of the clause and before each "and", "then" or "but" in it:
     speech to text writes no commas ("warm up the stew for lunch and slice the tomato")."""
     out: list[str] = []
     start = 0
     for j, x in enumerate(clause + ["and"]):
-        if x in ("and", "then") and j > start:
+        if PHRASES.get((x,), ("",))[0] in ("AND", "THEN", "BUT") and j > start:
             out += _without_purpose(clause[start:j], notes) + clause[j:j + 1]
             start = j + 1
     return out
+
+
+def _leading_purpose(clause: list[str]) -> int:
+    """How many words open the clause as a purpose said first: "for" and words of
+    ``PURPOSE_WORDS`` (after a possessive or none), the whole clause or up to a verb of the
+    lexicon; 0 where it opens otherwise."""
+    if len(clause) < 2 or clause[0] != "for":
+        return 0
+    j = 2 if clause[1] in BENEFICIARY_DETERMINERS else 1
+    while j < len(clause) and clause[j] in PURPOSE_WORDS:
+        j += 1
+    if j == 1 or clause[j - 1] not in PURPOSE_WORDS:
+        return 0
+    if j == len(clause) or str(PHRASES.get((clause[j],), ("",))[0]).startswith("V_"):
+        return j
+    return 0
 
 
 def _without_purpose(clause: list[str], notes: list[str]) -> list[str]:
@@ -137,6 +153,10 @@ def _without_purpose(clause: list[str], notes: list[str]) -> list[str]:
     ``PURPOSE_INFINITIVES``: "to dry"): what for, not what the
     home should end like. "for washing" (a verb the home can do) is kept, and refused: it may ask
     for the washing too."""
+    lead = _leading_purpose(clause)
+    if lead:   # "For dinner, cut the tomatoes", "for the kids heat the pasties": what for, said first
+        notes.append(f"'{' '.join(clause[:lead])}' says what for, not what the home should end like")
+        return _without_purpose(clause[lead:], notes) if lead < len(clause) else []
     tag = next((len(t) for t in CLOSING_TAGS if tuple(clause[-len(t):]) == t and len(clause) > len(t) + 2), 0)
     if tag:   # "heat the pasty for my lunch would you": the purpose before a closing tag
         return _without_purpose(clause[:-tag], notes) + clause[-tag:]

@@ -7,14 +7,15 @@ from __future__ import annotations
 import re
 from typing import Callable, NamedTuple
 
-from pipflow.household.language.lexicon import DURATION_UNITS, FILLER_TYPO_TARGETS, PHRASES, PURPOSE_WORDS, words_of
+from pipflow.household.language.lexicon import (DURATION_UNITS, FILLER, FILLER_TYPO_TARGETS, PHRASES, PURPOSE_WORDS,
+                                                words_of)
 from pipflow.household.language.names import home_words, per_index, world_phrases
 from pipflow.household.language.restated import leading_subject, restates_location
 from pipflow.household.language.typos import typo_of, vocabulary
 from pipflow.household.language.unseen import unseen
-from pipflow.language.asides import (BOUNDS, EXCLUSIVITY, FUNCTION_WORDS, NEGATION, QUANTITIES, SELECTION, Clause,
-                                     clauses, content_free, is_opener, signature, trailing_adjunct, trailing_thanks,
-                                     unmarked_statement)
+from pipflow.language.asides import (BOUNDS, EXCLUSIVITY, FUNCTION_WORDS, NEGATION, OPERATIVE, QUANTITIES, SELECTION,
+                                     PLEASANTRIES, THANKS, Clause, clauses, content_free, is_opener, near_operative,
+                                     signature, trailing_adjunct, trailing_thanks, unmarked_statement)
 from pipflow.language.english import common_word
 from pipflow.language.numbers import read_number, reads_as_count
 
@@ -155,6 +156,14 @@ def speaker_busy(words: tuple[str, ...]) -> bool:
 #: ("10 am", "15 min"): a time is no count of things, so a clause may still be talk
 _TIME_BEFORE = {"at", "by", "until", "till", "before", "after", "around", "about"}
 _TIME_AFTER = {"am", "pm", "oclock", "o"} | DURATION_UNITS
+
+
+def _without_talk(words: tuple[str, ...]) -> tuple[str, ...]:
+    """The words with each word of talk the parser drops (lexicon ``FILLER``: "khalas", "yalla")
+    left out, so that what is said around it is judged as said ("Khalas, that's all"); never an
+    operative word ("again", "just"), nor a thanks the talk tests read with its words ("thanks very much")."""
+    return tuple("" if (w,) in FILLER and w not in OPERATIVE | THANKS | PLEASANTRIES and not near_operative(w) else w
+                 for w in words)
 
 
 def _without_times(words: tuple[str, ...]) -> tuple[str, ...]:
@@ -407,7 +416,7 @@ def without_asides(command: str, world: dict) -> Trimmed | None:
     words, parts, topic = _topic_restated(words, parts, world)
     robots = {str(r).lower() for key in ("robots", "teams") for r in world.get(key) or {}}   # who may be addressed
     remark = _remark(world, content)
-    free = [c for c in parts if content_free(_without_times(c.words), content, content, reports=True,
+    free = [c for c in parts if content_free(_without_talk(_without_times(c.words)), content, content, reports=True,
                                              robot=robots.__contains__) or remark(c.words)
             or (c is parts[0] and is_opener(c.words))]   # "Two things: ...", "Quick one, ..."
     if len(parts) > 1 and parts[-1] not in free and signature(parts[-2].words, parts[-1].words):

@@ -23,13 +23,18 @@ DETERMINERS = {"my", "the", "our", "to"}
 BRING = {"bring", "fetch", "get", "hand", "pass", "carry"}
 
 
+#: words that open a negated order after a joining word ("... but do not touch the labneh")
+_NEGATED_ORDER = frozenset({"do", "dont", "never", "not", "please"})
+
+
 def clause_end(words: list[str], k: int) -> int:
-    """Where the clause at ``k`` ends: a mark, or "and" / "then" before a verb of the lexicon."""
+    """Where the clause at ``k`` ends: a mark, or a joining word ("and", "then", "but" and their
+    synonyms of the lexicon) before a verb of the lexicon or a negated order."""
     for j in range(k, len(words)):
         if words[j] in PUNCT:
             return j
-        if words[j] in ("and", "then") and j + 1 < len(words) and \
-                str(PHRASES.get((words[j + 1],), ("",))[0]).startswith("V"):
+        if PHRASES.get((words[j],), ("",))[0] in ("AND", "THEN", "BUT") and j + 1 < len(words) and (
+                str(PHRASES.get((words[j + 1],), ("",))[0]).startswith("V") or words[j + 1] in _NEGATED_ORDER):
             return j
     return len(words)
 

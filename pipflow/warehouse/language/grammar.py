@@ -21,10 +21,11 @@ GRAMMAR = r"""
 start: sentence
 sentence: lead? part aside? (sep part aside?)* (sep | bare_only)? aside?
         | places                                   -> topic_sentence
-lead: ("but" | "and" | "then" | "also" | "so" | "however" | "now" | "oh" | "well" | "next" | "right" | "ok" | "okay" | "alright"
+// "And can you bring ...": a word that joins the sentence on, then a way of asking
+lead: ("but" | "and" | "then" | "also" | "so" | "however" | "now" | "tonight" | "oh" | "well" | "next" | "right" | "ok" | "okay" | "alright"
       | "finally" | "first" | "afterwards" | "after" "that" | "additionally" | "plus"
-      | ("can" | "could" | "would") ("you" | "we") | "you" ("should" | "must" | "can") | "just" | "let" "us"
-      | ("team" | "guys" | "folks" | "people" | "crew") ",") ("," | ":")?
+      | ("team" | "guys" | "folks" | "people" | "crew") ",") ("," | ":")? (("can" | "could" | "would") ("you" | "we") | "you" ("should" | "must" | "can") | "just" | "let" "us")?
+    | (("can" | "could" | "would") ("you" | "we") | "you" ("should" | "must" | "can") | "just" | "let" "us") ("," | ":")?
 
 // a separator costs: of two readings, the one with fewer, longer parts wins
 // ("only alpha and charlie may carry bolts" is one rule, not "only alpha" and a second clause)
@@ -164,6 +165,8 @@ loc: prep places                            -> loc
 
 // ---------------------------------------------------------------- verbs
 modal: "should" | "must" | "shall" | "will" | "would" | "ought" "to" | "oughta" | "gotta"
+     // "P's gotta hold 65 X", "P has got to have 6 X": has to
+     | POSS? "gotta" | (POSS | "has" | "have") "got" "to"
      | ("needs" | "need" | "wants" | "want" | "has" | "have" | "got") "to" | ("is" | "are" | "be") "supposed" "to"
      | "supposed" "to" | ("is" | "are") "to" | "to" | "can" | "could" | "may" | "might"
 be: "be" | "is" | "are" | "become" | "becomes" | "end" "up" "with" | "get"
@@ -345,6 +348,8 @@ goal: there_be items loc                                  -> g_set
     | swapv ("what" | "contents" "of" | "loads" "of" | "stock" "of")? places ("around" | "round" | "over") -> g_swap
     // "Swap aisle 5 and aisle 6 round, everything on them": the whole contents, said again
     | swapv ("whole" | "whole" "contents" "of")? places ("around" | "round" | "over")? ","? ("everything" | "all") ("on" | "in" | "of") ("them" | "both") -> g_swap
+    // "swap P with Q (, everything on them)": the two places' contents
+    | swapv ("what" | "contents" "of" | "stock" "of")? places "with" places (","? ("everything" | "all") ("on" | "in" | "of") ("them" | "both"))? -> g_swap
     | splitv items src even? among places even?              -> g_split_src
     | splitv pitems even? among places even?                 -> g_split_src
     | addv items adv? to places from places                -> g_transfer

@@ -90,7 +90,9 @@ SPELLINGS = {"shud": "should", "shld": "should", "u": "you", "r": "are", "wont":
              "em": "them", "yous": "you", "youse": "you", "ya": "you", "yer": "your", "atm": "now", "dun": "dont", "hv": "have",
              "b4": "before", "tmrw": "tomorrow", "tmr": "tomorrow", "2moro": "tomorrow",
              # "whatever's on P" typed or transcribed without its apostrophe: its "'s" is "is"
-             "whatevers": "whatever"}
+             "whatevers": "whatever",
+             # "leave P as is tho": though
+             "tho": "though", "altho": "although"}
 #: Scots spellings of the grammar's own words (shared with the household reader: "shift 5 corks fae
 #: pend tae steading", "take 2 aff vault", "dinnae touch it"), read only where the word is no word
 #: of the world's names
@@ -425,8 +427,6 @@ _CAN_TAG = re.compile(r"\s*,?\s+(?:can\s+or\s+not|can(?:\s+help)?|ok|okay)\s*(?:
 #: "go and shift 6 router ...", "the weakest one go and bring ...", "go ahead and move ...": "go
 #: (ahead) and" before a verb adds nothing
 _GO_AND = re.compile(r"\bgo\s+(?:ahead\s+)?and\s+(?=[a-z])", re.IGNORECASE)
-#: fillers the grammar still reads when it has a place for them (it tries the keyword first)
-SOFT_FILLERS = {"of", "just", "right", "away", "now", "today", "currently", "moment", "exactly"}
 FRACTIONS = {"third": 3, "thirds": 3, "quarter": 4, "quarters": 4, "fourth": 4, "fourths": 4,
              "fifth": 5, "fifths": 5, "sixth": 6, "sixths": 6, "eighth": 8, "eighths": 8,
              "tenth": 10, "tenths": 10}
@@ -508,7 +508,8 @@ def check_text(command: str) -> str:
     text = re.sub(r"\bwhats\b", "what is", text, flags=re.IGNORECASE)  # "what's" typed without its apostrophe
     text = re.sub(r"\b([A-Za-z0-9_-]+)['\u2019](" + "|".join(_CASE_SUFFIXES) + r")\b",
                   lambda m: f"{m.group(1)} {_CASE_MARKS[_CASE_SUFFIXES[m.group(2).lower()]]}", text, flags=re.IGNORECASE)
-    return re.sub(r"\b([A-Za-z0-9_-]+)['\u2019]s\b", _possessive, text)
+    # "the dock 's got": the mark typed apart from its word is the same mark
+    return re.sub(r"\b([A-Za-z0-9_-]+)[ \t]?['\u2019]s\b", _possessive, text)
 
 
 #: Turkish case endings set off from a name by an apostrophe, as Turkish writes them after proper
@@ -681,6 +682,9 @@ QUANTITY_PHRASES: dict[str, tuple[str, ...]] = {
     "in their entirety": (), "in its entirety": (),
     # "no more than 3 at any given time": a bound holds at the end too, which is what a goal fixes
     "at any given time": (), "at any one time": (), "at all times": (),
+    # "P shouldn't drop below 20 X all night": so too ("all" is no quantity of a span of time)
+    "all night": (), "all day": (), "all shift": (), "all week": (), "all the time": (),
+    "all night long": (), "all day long": (),
 }
 
 
@@ -900,16 +904,43 @@ def quantity_phrases(toks: list[Tok], keywords: dict[str, str]) -> list[Tok]:
     return _replace_phrases(toks, phrases, said_as)
 
 
+def whole_places(toks: list[Tok]) -> list[Tok]:
+    """The tokens with "whole" or "entire" before a place's name read as the place ("clear the
+    whole damages bay out", "swap entire P with Q"): a place is named whole already; the words as
+    written stay the name's text."""
+    out: list[Tok] = []
+    for k, t in enumerate(toks):
+        if out and out[-1].kind == "word" and out[-1].value in ("whole", "entire") and t.kind == "name" \
+                and t.of == "shelf":
+            t = Tok("name", f"{out.pop().text} {t.text}", t.value, t.of)
+        out.append(t)
+    return out
+
+
 #: whom a request is put to, after "can / could / would / will": "can somebody shift ..." is "can you
 #: shift ..." (a request to whoever does it, never a robot's name)
 ANYONE = {"somebody", "someone", "anybody", "anyone"}
 _ASKING = {"can", "could", "would", "will"}
 
 
-def addressed_anyone(toks: list[Tok]) -> list[Tok]:
-    """The tokens with "somebody" (:data:`ANYONE`) after a modal of asking read as "you"."""
-    return [Tok("word", t.text, "you") if t.kind == "word" and t.value in ANYONE and k > 0
-            and toks[k - 1].kind == "word" and toks[k - 1].value in _ASKING else t for k, t in enumerate(toks)]
+def addressed_anyone(toks: list[Tok], verbs: Collection[str]) -> list[Tok]:
+    """The tokens with "somebody" (:data:`ANYONE`) after a modal of asking read as "you", and
+    left out where it opens a clause before a verb of ``verbs`` ("And someone bring 6 X to P":
+    whoever is asked, which the allocation decides)."""
+    out: list[Tok] = []
+    for k, t in enumerate(toks):
+        if t.kind == "word" and t.value in ANYONE and k + 1 < len(toks) and toks[k + 1].kind == "word" \
+                and toks[k + 1].value in verbs and (_opens_clause(toks, k) or (
+                    toks[k - 1].kind == "word" and toks[k - 1].value in _JOINING)):
+            continue
+        asked = t.kind == "word" and t.value in ANYONE and k > 0 and toks[k - 1].kind == "word" \
+            and toks[k - 1].value in _ASKING
+        out.append(Tok("word", t.text, "you") if asked else t)
+    return out
+
+
+#: words that join a clause on before its subject ("and someone bring ...")
+_JOINING = {"and", "so", "then", "but", "also", "plus"}
 
 
 def lexicon_verbs(toks: list[Tok], keywords: dict[str, str]) -> list[Tok]:
@@ -1171,6 +1202,17 @@ def stative_having(toks: list[Tok]) -> list[Tok]:
             continue
         out.append(t)
     return out
+
+
+#: words after which "'s" is "is", never a possessive ("the weakest bot's not to go near P",
+#: "bazza's off tonight", "the dock's out of X")
+_IS_BEFORE = frozenset({"not", "to", "never", "allowed", "gonna", "going", "off", "down", "broken", "busy", "out"})
+
+
+def is_contracted(toks: list[Tok]) -> list[Tok]:
+    """The tokens with "'s" read as "is" before a word of :data:`_IS_BEFORE` (its text kept)."""
+    return [Tok("word", t.text, "is") if t.kind == "word" and t.value == POSS_MARK and k + 1 < len(toks)
+            and toks[k + 1].kind == "word" and toks[k + 1].value in _IS_BEFORE else t for k, t in enumerate(toks)]
 
 
 def _spoken_no(toks: list[Tok], k: int) -> bool:
@@ -1619,7 +1661,7 @@ class Lexicon:
         toks = item_as_subject(fronted_source(to_be_done(needs_doing(toks, verbs), verbs), verbs))
         toks = on_as_to(object_before_verb(topic_first(place_first(count_after_item(destination_first(
             place_must_be(verb_last(read_by_roles(toks)))))))))
-        toks = lexicon_verbs(quantity_phrases(addressed_anyone(stative_having(toks)), self.keywords), self.keywords)
+        toks = lexicon_verbs(whole_places(quantity_phrases(addressed_anyone(stative_having(is_contracted(toks)), verbs), self.keywords)), self.keywords)
         toks = put_back_after_its_object(counts_sent_from_a_topic(corrected(toks)))
         toks = dropped_object(corrected_later(without_particles(toks)))
         self._framed = (radio.aside if radio is not None else []) + feelings + framed

@@ -687,11 +687,14 @@ class SentenceReader(GoalRules, TailRules, RuleScope, Interpreter):
         dst: list[str] | None = None
         exclude: list[str] = []
         prev = None
+        each = False   # "to each of P and Q": the count goes to each
         for c in kids:
             if isinstance(c, Tree) and c.data == "places":
                 names = self.place_list(c)
                 if prev == "to":
                     dst = names
+                    each = any(isinstance(p, Tree) and p.data in ("place_each", "place_all", "place_all_n")
+                               for p in c.children)
                 else:
                     src = names
             elif isinstance(c, Tree) and c.data == "from":
@@ -709,6 +712,11 @@ class SentenceReader(GoalRules, TailRules, RuleScope, Interpreter):
             if exc and not ({"all", "all_held", "fraction"} & set(np["amount"])):
                 raise TranslationError(f"{quote(words)}: 'except' needs all of a product "
                                        f"('every keg ... except the ones on staging')")
+            if each and len(dst) > 1 and "count" in np["amount"] and len(src or []) <= 1:
+                # "send 3 X from S to each of P, Q and R": 3 to each, all from S
+                self.distributive = False
+                self.statements += [self._transfer_statement(np, src, [p], words, exclude) for p in dst]
+                continue
             self.statements.append(self._transfer_statement(np, src, dst, words, exclude))
 
     def swap(self, node: Tree, words: str) -> None:

@@ -57,18 +57,22 @@ class TailRules:
         words = self.words(node)
         source = self.place_list(self.sub(node, "places")[0])
         changed = False
-        for k, s in enumerate(self.statements):
+        out: list[dict] = []
+        for s in self.statements:
             if s["op"] == "change" and "more" in s["amount"]:
-                self.statements[k] = {"op": "transfer", "items": s["items"],
-                                      "amount": {"count": s["amount"]["more"]}, "from": {"names": source},
-                                      "to": s["places"], "words": f"{s['words']}, {words}"}
+                # a change adds to each of its places ("3 X to each of P and Q"): each gets them from there
+                each = [{"names": [p]} for p in s["places"]["names"]] if s["places"].get("names") else [s["places"]]
+                out += [{"op": "transfer", "items": s["items"], "amount": {"count": s["amount"]["more"]},
+                         "from": {"names": source}, "to": to, "words": f"{s['words']}, {words}"} for to in each]
                 changed = True
             elif s["op"] == "set" and "count" in s["amount"]:
                 # "four product1 to shelf2, taking them from shelf1": the four come from there
-                self.statements[k] = {"op": "transfer", "items": s["items"], "amount": s["amount"],
-                                      "from": {"names": source}, "to": s["places"],
-                                      "words": f"{s['words']}, {words}"}
+                out.append({"op": "transfer", "items": s["items"], "amount": s["amount"], "from": {"names": source},
+                            "to": s["places"], "words": f"{s['words']}, {words}"})
                 changed = True
+            else:
+                out.append(s)
+        self.statements[:] = out
         if not changed and not self.statements:
             self.pending_source = source  # "From shelf 4, move 5 product4 to shelf 1"
             return
