@@ -128,6 +128,7 @@ def flat() -> dict:
     # a move said without its verb, after a change no place makes or with "to"
     ("open the fridge, the milk to the counter", "open the fridge and put the milk on the counter"),
     ("wash the mug, the cup to the desk", "wash the mug and put the cup on the desk"),
+    ("heat the pie, the tomato from the counter on the desk", "heat the pie and put the tomato on the desk"),
     ("the kitchen light is burning, switch it off", "switch off the kitchen light"),
     # a light cue where the home has no category of lights: the things named as lights
     ("the lounge is too dark", "switch on the lounge light"),

@@ -148,7 +148,9 @@ ADDRESSEES = frozenset({"all", "everyone", "everybody", "team", "folks", "guys",
                         # Romanian ("frate": bro; "baieti", "baietii": lads; "bre": hey you; "colegi": colleagues)
                         "frate", "fratilor", "baieti", "baietii", "bre", "colegi",
                         # European Portuguese ("Bom dia pá": mate; "malta": folks)
-                        "pa", "malta"})
+                        "pa", "malta",
+                        # Malay ("Abang, ...": brother; "bang", "kak": sister; "encik", "tuan": sir; "adik")
+                        "abang", "bang", "encik", "tuan", "adik"})
 
 
 #: a thanks that can close an order without a comma before it ("... to bay 2 ta")
@@ -572,8 +574,9 @@ def _just_now(ws: list[str], k: int) -> bool:
 
 def _operative_at(ws: list[str], k: int) -> bool:
     """:func:`near_operative` of the word at ``k``, except a word of :data:`_WHERE_BEFORE_THERE`
-    before "there" or "here", a word of :data:`TEMPORAL` before a time (:data:`TIMES_SAID`), and
-    "all" before a span of time (:data:`DURATIONS`: "all night", "all the time")."""
+    before "there" or "here", a word of :data:`TEMPORAL` before a time (:data:`TIMES_SAID`),
+    "all" before a span of time (:data:`DURATIONS`: "all night", "all the time"), and "last" or
+    "next" before one (:data:`_SPANS`: "last week", "last time")."""
     nxt = ws[k + 1] if k + 1 < len(ws) else None
     if ws[k] in _WHERE_BEFORE_THERE and nxt in ("there", "here"):
         return False
@@ -582,6 +585,8 @@ def _operative_at(ws: list[str], k: int) -> bool:
     if _just_now(ws, k):
         return False
     if ws[k] == "all" and (nxt in DURATIONS or (nxt == "the" and k + 2 < len(ws) and ws[k + 2] in DURATIONS)):
+        return False
+    if ws[k] in ("last", "next") and nxt in _SPANS:   # "last week it hit the fence": when, no selection
         return False
     if _the_same_as_subject(ws, k):
         return False
@@ -862,6 +867,8 @@ INTERJECTIONS = frozenset({
     "fighting", "hwaiting", "aigoo", "aigo", "jinjja", "omo", "kk",
     # Mandarin in pinyin ("Kuai dian, ...": hurry; "aiya": dismay; "hao de": OK; "xie xie": thanks)
     "kuai", "dian", "aiya", "aiyo", "aiyah", "hao", "xie", "xiexie", "mei", "wenti",
+    # Malaysian English ("Alamak, ...", "aiyoh": dismay; "walao": wow; "paiseh": sorry; "wah")
+    "alamak", "aiyoh", "aiseh", "walao", "wah", "paiseh", "adoi", "aduh",
     # Thai ("Sawasdee ka, ...": hello; "kob khun": thank you; "jing jing": really; "mai pen rai": never
     # mind; "reo reo": quickly; "na ka", "krub": polite particles)
     "sawasdee", "sawatdee", "kob", "khun", "jing", "reo", "ka", "kha", "krub", "khrub", "krap", "khrap", "jaa",
@@ -940,8 +947,8 @@ def content_free(words: Iterable[str], content: Callable[[str], bool],
         return True   # "it is getting serviced": a report, whatever grammar words it uses
     if ws[0] in ATTACHING and not _it_is(ws):
         return False  # it modifies the clause before ("..., on the left", "..., and the rest")
-    if ws[0] not in SUBJECTS and any(w not in FUNCTION_WORDS and nxt in OBJECT_PRONOUNS and not _this_time(ws, k + 1)
-                                     for k, (w, nxt) in enumerate(zip(ws, ws[1:]))):
+    if ws[0] not in SUBJECTS and any(w not in FUNCTION_WORDS and w not in _SPANS and nxt in OBJECT_PRONOUNS
+                                     and not _this_time(ws, k + 1) for k, (w, nxt) in enumerate(zip(ws, ws[1:]))):
         return False  # "..., recount them": an instruction about a thing, in a verb not read
     return not any(_operative_at(ws, k) or (content(w) and not _just_now(ws, k)) for k, w in enumerate(ws))
 

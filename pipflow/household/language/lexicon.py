@@ -544,6 +544,12 @@ FILLER = {("um",), ("umm",), ("uh",), ("uhh",), ("uhm",), ("er",), ("erm",),   #
           ("yaane",), ("yaaneh",), ("tayyeb",), ("tayeb",), ("hala",), ("halla",), ("baa",), ("ktir",), ("kteer",),
           ("shway",), ("shwayy",), ("bref",), ("s", "il", "te", "plait"), ("s", "il", "vous", "plait"), ("stp",),
           ("ca", "va"), ("bonjour",), ("habibte",), ("yislamo",), ("yeslamo",), ("allah", "yekhalik"),
+          # Persian, typed in Latin letters ("lotfan": please; "mamnoon", "merci": thanks; "kheyli": very;
+          # "khob": well; "zood": quick; "azizam", "joon": dear; "ghorbanet beram": a loving please;
+          # "bebakhshid": sorry; "akhey", "vay": oh; "khasteh nabashid": well done)
+          ("lotfan",), ("mamnoon",), ("mamnun",), ("kheyli",), ("khob",), ("zood",), ("azizam",), ("joon",),
+          ("ghorbanet", "beram"), ("ghorboonet", "beram"), ("bebakhshid",), ("akhey",), ("vay",), ("hatman",),
+          ("khasteh", "nabashid"), ("dastet", "dard", "nakone"), ("yani",),
           # Amharic, typed in Latin letters ("ishi": OK; "bejih", "ebakih": please; "amesegnalehu": thank
           # you; "selam", "tena yistilign": hello; "ere", "wey", "inji": oh, well; "yene konjo": my dear;
           # "egziabher yimesgen": thank God; "chigir yelem": no problem; "betam": very)

@@ -47,12 +47,20 @@ from pipflow.language.english import common_word
 
 #: titles before a name ("Father Tom", "Mrs Patel", "Auntie Jo"; "father tom" typed in lower case)
 TITLES = {"father", "mrs", "mr", "ms", "miss", "dr", "doctor", "auntie", "aunty", "aunt", "uncle", "sister",
-          "brother", "nurse", "lady", "sir"}
+          "brother", "nurse", "lady", "sir",
+          # aunts and uncles said in other languages ("Khaleh Mahin", "Tante Ria", "Tia Lupe", "Teyze")
+          "khaleh", "khale", "ammeh", "amme", "amoo", "amu", "dayi", "tante", "tia", "tio", "zia", "zio",
+          "teyze", "amca", "khala", "khalti", "ammo"}
 #: words that name a person alone ("bring Grandad his tea", "the baby is asleep")
 KIN = {"grandad", "granddad", "grandpa", "grandma", "granny", "gran", "nan", "nana", "nanna", "grandmother",
        "grandfather", "baby", "husband", "hubby", "wife", "son", "daughter", "grandson", "granddaughter",
        "mum", "mom", "mummy", "mommy", "dad", "daddy", "children", "kids", "grandchildren", "grandkids",
-       "pickney", "pickneys", "grandpickney", "grandpickneys"}
+       "pickney", "pickneys", "grandpickney", "grandpickneys",
+       # the same said in the family's other language ("Maman is sleeping", "bring Jeddo his tea")
+       "maman", "mamani", "madar", "pedar", "baba", "mama", "papa", "jeddo", "teta", "dadi", "dada", "nani",
+       "abuela", "abuelo", "abuelita", "abuelito", "oma", "opa", "nonna", "nonno", "yaya", "babcia", "dziadek",
+       "bibi", "ammi", "abbu", "amma", "appa", "lola", "lolo", "nanay", "tatay", "ouma", "oupa", "gogo",
+       "bubbe", "zayde", "anneanne", "babaanne", "dede", "halmeoni", "harabeoji"}
 #: pronouns that are a person; "her" only where an object is ("bring her the tea"); "them" and
 #: "they" are left to things ("put them away")
 PERSON_PRONOUNS = {"he", "she", "him", "hes", "shes"}   # "hes": he's, typed without its apostrophe

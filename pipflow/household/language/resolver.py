@@ -503,9 +503,12 @@ class Resolver:
             if "to" in st:
                 return {**out, "op": "put", "to": st["to"]}
             raise TranslationError(f"'{words}': which action? (nothing before it to repeat)")
-        if prev["op"] == "change" and "to" in st and _moved_to(st["to"], prev["to"]):
+        if prev["op"] == "change" and "to" in st and (_moved_to(st["to"], prev["to"]) or (
+                any(t.get("from") for t in st["things"]) and not self._makes(st["to"], prev["to"], words))):
             # "open the fridge, the pot to the counter": no place makes a thing open, and "to" says
-            # where a thing goes; the elided verb is a move
+            # where a thing goes; "warm the bread, the yoghurt from the fridge on the table": a thing
+            # said with where it comes from, to a place that heats nothing; the elided verb is a move
+            # ("wash the cup on my desk": the desk says which cup)
             return {**out, "op": "put", "to": st["to"]}
         if prev["op"] == "change":
             via = st.get("to") or prev.get("via")
@@ -520,6 +523,15 @@ class Resolver:
         if "to" in st:
             return {**out, "op": "put", "to": st["to"]}
         return {**out, "op": prev["op"]}
+
+    def _makes(self, target: dict, cond: str, words: str) -> bool:
+        """Whether the place said makes a thing ``cond`` (a heater heats, a sink washes); True
+        where it names no one place (then the change reading is left to refuse or ask)."""
+        try:
+            place = self.place_of(target, words)
+        except TranslationError:
+            return True
+        return VIA_PROPERTY[cond] in self.world["places"].get(place, {}).get("properties", [])
 
     def _trash_gap(self, st: dict, out: dict) -> dict:
         """ "throw the chip paper away, and the stale bread in the larder": after a throwing away,

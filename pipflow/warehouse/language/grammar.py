@@ -408,6 +408,8 @@ goal: there_be items loc                                  -> g_set
     | "leave" ihead loc as_is                               -> g_keep
     | ("leave" | "keep") places as_is                       -> g_keep
     | ("dont" | "do" "not") "touch" places                  -> g_keep
+    // "dont touch anything at P": P kept as it is
+    | ("dont" | "do" "not" | "never") ("touch" | "move") "anything" ("at" | "on" | "in" | "from") places -> g_keep
     | ("dont" | "do" "not" | "never") ("take" | "remove" | "move" | "pull") ("anything" | "any" ihead) ("off" | "from" | "out" "of") places -> g_keep
     | places modal? ("stay" | "stays" | "remain" | "remains" | "be" "left") as_is  -> g_keep
     | places modal? ("stay" | "stays" | "remain" | "remains") "put" -> g_keep
@@ -734,3 +736,9 @@ _ORDERING = frozenset({"if", "before", "after", "first", "once", "finally", "add
                        "plan", "us", "o", "clock"})
 #: words the grammar reads only as an aside or a lead (:func:`_aside_only_words`)
 ASIDE_ONLY = _aside_only_words(GRAMMAR)
+#: the grammar's verbs of an order: the words of its verb rules, and the verbs that open an order
+#: of their own ("fill", "double", "halve", "keep")
+ORDER_VERBS = frozenset(w for line in GRAMMAR.splitlines()
+                        if re.match(r"^(put|add|remove|split|swap|empty)v\s*:", line)
+                        for w in re.findall(r'"([a-z]+)"', line) if w != "out") | {
+    "fill", "double", "triple", "halve", "keep", "leave", "top", "give", "make", "get", "restock", "replenish"}

@@ -30,7 +30,7 @@ from pipflow.language.radio import transmission
 from pipflow.language.quebec import QUEBEC
 from pipflow.language.scots import SCOTS
 from pipflow.language.spelling import distance, normalize, plural_forms, slip, tolerance
-from pipflow.warehouse.language.grammar import ASIDE_ONLY
+from pipflow.warehouse.language.grammar import ASIDE_ONLY, ORDER_VERBS
 from pipflow.warehouse.language.names import (CONTAINERS, KIND_WORDS, PACKAGING_WORDS, POSS_MARK, STOPWORDS,
                                               NameIndex, Tok, read_counts, recognize)
 from pipflow.warehouse.language.roles import read_by_roles
@@ -92,7 +92,9 @@ SPELLINGS = {"shud": "should", "shld": "should", "u": "you", "r": "are", "wont":
              # "whatever's on P" typed or transcribed without its apostrophe: its "'s" is "is"
              "whatevers": "whatever",
              # "leave P as is tho": though
-             "tho": "though", "altho": "although"}
+             "tho": "though", "altho": "although",
+             # Malay and Indonesian "jangan": don't ("Jangan touch anything at mezz")
+             "jangan": "dont"}
 #: Scots spellings of the grammar's own words (shared with the household reader: "shift 5 corks fae
 #: pend tae steading", "take 2 aff vault", "dinnae touch it"), read only where the word is no word
 #: of the world's names
@@ -723,12 +725,12 @@ REQUEST_FRAMES = (("would", "it", "be", "possible", "to"), ("is", "it", "possibl
                   ("would", "you", "be", "able", "to"), ("could", "you", "be", "so", "kind", "as", "to"),
                   ("would", "you", "be", "so", "kind", "as", "to"), ("could", "you", "possibly"),
                   ("would", "you", "possibly"), ("can", "you", "possibly"), ("would", "you", "mind", "terribly"))
-#: a want of the speaker's that the robots do it ("I want you to ...", "we need you to ...", or with
-#: the team as the speaker's "we": "we need to move ..."), and its calque from French, Spanish or
+#: a want of the speaker's that the robots do it ("I want you to ...", "we need you to ...", "Need you
+#: all to ...", or with the team as the speaker's "we": "we need to move ..."), and its calque from French, Spanish or
 #: Italian ("I want that you ..."): request frames of words the grammar has anyway ("u" is "you" by
 #: then), so none of them is reserved as a frame word
-WANT_FRAMES = tuple((who, want) + rest for who in ("i", "we") for want in ("want", "need")
-                    for rest in (("you", "to"), ("that", "you"))) + \
+WANT_FRAMES = tuple((*who, want) + rest for who in (("i",), ("we",), ()) for want in ("want", "need")
+                    for rest in (("you", "to"), ("you", "all", "to"), ("that", "you"))) + \
     (("i", "would", "like", "you", "to"), ("we", "would", "like", "you", "to"), ("id", "like", "you", "to")) + \
     tuple((who,) + want + ("to",) for who in ("i", "we") for want in (("want",), ("need",), ("would", "like"))) + \
     (("id", "like", "to"),)
@@ -936,6 +938,40 @@ def addressed_anyone(toks: list[Tok], verbs: Collection[str]) -> list[Tok]:
         asked = t.kind == "word" and t.value in ANYONE and k > 0 and toks[k - 1].kind == "word" \
             and toks[k - 1].value in _ASKING
         out.append(Tok("word", t.text, "you") if asked else t)
+    return out
+
+
+#: words of address that may open an order without a comma ("Boss send 15 X to P", "abang move ..."):
+#: who is asked, never a word that counts or selects
+_ADDRESSED = frozenset(w for w in ADDRESSEES | CLOSERS if w.isalpha() and w not in OPERATIVE
+                       and w not in FUNCTION_WORDS and len(w) > 2)
+
+
+def asked_plainly(toks: list[Tok]) -> list[Tok]:
+    """The tokens without the words that only ask, where an order follows: a word of address
+    opening a sentence before a verb of an order (grammar ``ORDER_VERBS``, the verb lexicon: "Boss
+    send 15 X to P"), "can" opening a clause before one ("can add 6 more X to P or not": Malaysian
+    and Singapore English), and the "or not" closing such a question."""
+    verbs = ORDER_VERBS | set(VERB_LEXICON)
+    out: list[Tok] = []
+    asking = False
+    k = 0
+    while k < len(toks):
+        t, nxt = toks[k], toks[k + 1] if k + 1 < len(toks) else None
+        before_verb = nxt is not None and nxt.kind == "word" and nxt.value in verbs
+        opens_sentence = k == 0 or toks[k - 1].value in (".", "!", "?")
+        if t.kind == "word" and before_verb and _opens_clause(toks, k) and (
+                (t.value in _ADDRESSED and opens_sentence) or t.value == "can"):
+            asking = asking or t.value == "can"
+            k += 1
+            continue
+        if asking and t.kind == "word" and t.value == "or" and nxt is not None and nxt.kind == "word" \
+                and nxt.value == "not" and (k + 2 == len(toks) or toks[k + 2].kind == "punct"):
+            asking = False
+            k += 2   # "or not": a question's tag
+            continue
+        out.append(t)
+        k += 1
     return out
 
 
@@ -1661,7 +1697,8 @@ class Lexicon:
         toks = item_as_subject(fronted_source(to_be_done(needs_doing(toks, verbs), verbs), verbs))
         toks = on_as_to(object_before_verb(topic_first(place_first(count_after_item(destination_first(
             place_must_be(verb_last(read_by_roles(toks)))))))))
-        toks = lexicon_verbs(whole_places(quantity_phrases(addressed_anyone(stative_having(is_contracted(toks)), verbs), self.keywords)), self.keywords)
+        toks = addressed_anyone(stative_having(is_contracted(asked_plainly(toks))), verbs)
+        toks = lexicon_verbs(whole_places(quantity_phrases(toks, self.keywords)), self.keywords)
         toks = put_back_after_its_object(counts_sent_from_a_topic(corrected(toks)))
         toks = dropped_object(corrected_later(without_particles(toks)))
         self._framed = (radio.aside if radio is not None else []) + feelings + framed
