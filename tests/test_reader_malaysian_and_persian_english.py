@@ -11,10 +11,9 @@ from __future__ import annotations
 import pytest
 
 from pipflow.errors import PipflowError
-from pipflow.household.world import world_from_text
 from pipflow.warehouse.language.translator import understand
 from tests.readings import assert_warehouse_alike, household_goal as goal
-from tests.test_reader_australian_and_levantine_english import FLAT, YARD
+from tests.test_reader_australian_and_levantine_english import YARD, flat  # noqa: F401 (a fixture)
 
 
 @pytest.mark.parametrize("said, plain", [
@@ -46,17 +45,11 @@ def test_what_the_rules_do_not_cover_stays_refused(said: str) -> None:
         understand(said, YARD)
 
 
-@pytest.fixture(scope="module")
-def flat() -> dict:
-    return world_from_text(FLAT, "achrafieh-flat.yaml")
-
-
 @pytest.mark.parametrize("said, plain", [
     ("salam azizam , lotfan wash the mug , mamnoon", "wash the mug"),
     ("khob, cut the tomato zood", "cut the tomato"),
     ("maman is sleeping, switch off the kitchen light", "switch off the kitchen light"),
     ("khaleh mahin is sleeping, switch off the kitchen light", "switch off the kitchen light"),
-    ("heat the pie, the tomato from the counter on the desk", "heat the pie and put the tomato on the desk"),
 ])
 def test_persian_english_reads_as_its_plain_english(flat: dict, said: str, plain: str) -> None:
     assert goal(said, flat) == goal(plain, flat)

@@ -925,10 +925,11 @@ ANYONE = {"somebody", "someone", "anybody", "anyone"}
 _ASKING = {"can", "could", "would", "will"}
 
 
-def addressed_anyone(toks: list[Tok], verbs: Collection[str]) -> list[Tok]:
+def addressed_anyone(toks: list[Tok]) -> list[Tok]:
     """The tokens with "somebody" (:data:`ANYONE`) after a modal of asking read as "you", and
-    left out where it opens a clause before a verb of ``verbs`` ("And someone bring 6 X to P":
-    whoever is asked, which the allocation decides)."""
+    left out where it opens a clause before a verb of an order (:data:`_ORDER_VERBS`: "And someone
+    bring 6 X to P": whoever is asked, which the allocation decides)."""
+    verbs = _ORDER_VERBS
     out: list[Tok] = []
     for k, t in enumerate(toks):
         if t.kind == "word" and t.value in ANYONE and k + 1 < len(toks) and toks[k + 1].kind == "word" \
@@ -941,6 +942,9 @@ def addressed_anyone(toks: list[Tok], verbs: Collection[str]) -> list[Tok]:
     return out
 
 
+#: the verbs that open an order: the grammar's and the verb lexicon's (never a pronoun or another
+#: grammar word: "can you ...", "someone moved ..." open none)
+_ORDER_VERBS = ORDER_VERBS | frozenset(VERB_LEXICON)
 #: words of address that may open an order without a comma ("Boss send 15 X to P", "abang move ..."):
 #: who is asked, never a word that counts or selects
 _ADDRESSED = frozenset(w for w in ADDRESSEES | CLOSERS if w.isalpha() and w not in OPERATIVE
@@ -952,7 +956,7 @@ def asked_plainly(toks: list[Tok]) -> list[Tok]:
     opening a sentence before a verb of an order (grammar ``ORDER_VERBS``, the verb lexicon: "Boss
     send 15 X to P"), "can" opening a clause before one ("can add 6 more X to P or not": Malaysian
     and Singapore English), and the "or not" closing such a question."""
-    verbs = ORDER_VERBS | set(VERB_LEXICON)
+    verbs = _ORDER_VERBS
     out: list[Tok] = []
     asking = False
     k = 0
@@ -1697,7 +1701,7 @@ class Lexicon:
         toks = item_as_subject(fronted_source(to_be_done(needs_doing(toks, verbs), verbs), verbs))
         toks = on_as_to(object_before_verb(topic_first(place_first(count_after_item(destination_first(
             place_must_be(verb_last(read_by_roles(toks)))))))))
-        toks = addressed_anyone(stative_having(is_contracted(asked_plainly(toks))), verbs)
+        toks = addressed_anyone(stative_having(is_contracted(asked_plainly(toks))))
         toks = lexicon_verbs(whole_places(quantity_phrases(toks, self.keywords)), self.keywords)
         toks = put_back_after_its_object(counts_sent_from_a_topic(corrected(toks)))
         toks = dropped_object(corrected_later(without_particles(toks)))
