@@ -575,7 +575,8 @@ def _just_now(ws: list[str], k: int) -> bool:
 def _operative_at(ws: list[str], k: int) -> bool:
     """:func:`near_operative` of the word at ``k``, except a word of :data:`_WHERE_BEFORE_THERE`
     before "there" or "here", a word of :data:`TEMPORAL` before a time (:data:`TIMES_SAID`),
-    "all" before a span of time (:data:`DURATIONS`: "all night", "all the time"), and "last" or
+    "all" before a span of time (:data:`DURATIONS`: "all night", "all the time") or "over" ("all
+    over the floor": everywhere), and "last" or
     "next" before one (:data:`_SPANS`: "last week", "last time")."""
     nxt = ws[k + 1] if k + 1 < len(ws) else None
     if ws[k] in _WHERE_BEFORE_THERE and nxt in ("there", "here"):
@@ -586,6 +587,8 @@ def _operative_at(ws: list[str], k: int) -> bool:
         return False
     if ws[k] == "all" and (nxt in DURATIONS or (nxt == "the" and k + 2 < len(ws) and ws[k + 2] in DURATIONS)):
         return False
+    if _all_over(ws, k):
+        return False
     if ws[k] in ("last", "next") and nxt in _SPANS:   # "last week it hit the fence": when, no selection
         return False
     if _the_same_as_subject(ws, k):
@@ -594,7 +597,35 @@ def _operative_at(ws: list[str], k: int) -> bool:
         return False
     if k == 0 and ws[0] in ("those", "these") and nxt in ("are", "were", "re", "is") and len(ws) > 2:
         return False   # "..., those are booked for the other party": the subject of a report, no selection
+    if k < _demonstrative_subject(ws):
+        return False   # "..., that one bruk", "..., those dent up": said of the things just named
     return near_operative(ws[k])
+
+
+def _all_over(ws: list[str], k: int) -> bool:
+    """Whether the word at ``k`` is of "all over" ("grease all over my phone": everywhere on it),
+    neither a quantity nor a bound."""
+    return (ws[k] == "all" and k + 1 < len(ws) and ws[k + 1] == "over") or (ws[k] == "over" and k > 0 and ws[k - 1] == "all")
+
+
+#: what a demonstrative opening a report may be said with ("that one", "those ones")
+_ONES = frozenset({"one", "ones"})
+#: words that make a clause after a demonstrative an order's tail, never a report of its state
+#: ("..., those as well", "..., that one too", "..., those please")
+_TAIL_WORDS = frozenset({"well", "too", "also", "aswell", "please", "pls", "plz", "again", "instead", "first", "then",
+                         "now", "later"})
+
+
+def _demonstrative_subject(ws: list[str]) -> int:
+    """How many words open ``ws`` as the subject of what is said of the things just named ("...,
+    that one bruk", "..., those dent up", "..., this one is cracked": a demonstrative, with "one" or
+    "ones"), with a word of their state after it and no word of an order's tail (:data:`_TAIL_WORDS`);
+    0 where none does. The words after it are judged as any clause's."""
+    n = 2 if len(ws) > 1 and ws[0] in ("that", "this", "those", "these") and ws[1] in _ONES else \
+        1 if ws and ws[0] in ("those", "these") else 0
+    rest = [w for w in ws[n:] if w not in _BE]
+    said = bool(rest) and any(w.isalpha() and w not in FUNCTION_WORDS for w in rest) and not set(rest) & _TAIL_WORDS
+    return n if said else 0
 
 
 #: words "too" says the degree of, that are operative alone ("too much", "too full")
@@ -945,12 +976,14 @@ def content_free(words: Iterable[str], content: Callable[[str], bool],
         return True
     if reports and names is not None and is_report(ws, names):
         return True   # "it is getting serviced": a report, whatever grammar words it uses
-    if ws[0] in ATTACHING and not _it_is(ws):
+    subject = _demonstrative_subject(ws)
+    if ws[0] in ATTACHING and not _it_is(ws) and not subject:
         return False  # it modifies the clause before ("..., on the left", "..., and the rest")
     if ws[0] not in SUBJECTS and any(w not in FUNCTION_WORDS and w not in _SPANS and nxt in OBJECT_PRONOUNS
                                      and not _this_time(ws, k + 1) for k, (w, nxt) in enumerate(zip(ws, ws[1:]))):
         return False  # "..., recount them": an instruction about a thing, in a verb not read
-    return not any(_operative_at(ws, k) or (content(w) and not _just_now(ws, k)) for k, w in enumerate(ws))
+    return not any(_operative_at(ws, k) or (content(w) and not _just_now(ws, k) and not _all_over(ws, k)
+                                            and k >= subject) for k, w in enumerate(ws))
 
 
 #: words after "its" that make it "it's" typed without its apostrophe ("its friday", "its a mess",

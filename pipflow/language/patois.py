@@ -5,6 +5,8 @@ English word the grammars have. Read only in a command that uses at least two of
 "dat" in English stays as typed, and only where the word is no name of the world's things alone."""
 from __future__ import annotations
 
+from typing import Callable
+
 #: patois word -> the English word(s); "mi", "dem", "fi", "him" depend on what follows (the reader)
 PATOIS = {"di": "the", "de": "the", "pon": "on", "inna": "in", "ina": "in", "eena": "in", "outa": "out of",
           "offa": "off", "den": "then", "dat": "that", "dis": "this", "tek": "take", "yuh": "you", "unu": "you",
@@ -20,10 +22,82 @@ MARKERS = frozenset({"di", "pon", "inna", "dem", "fi", "mi", "nuh", "tek", "weh"
                      "den", "outa", "tings", "ting", "unu", "tun", "lef", "mek", "outta", "dutty", "gi", "haffi",
                      "soh", "waan", "smaddy", "an"})
 #: markers that are no English word: one of them alone is enough ("put it back pon him study desk",
-#: "tun off di TV")
-STRONG_MARKERS = frozenset({"di", "pon", "inna", "cyaan", "outa", "tek", "yuh", "nuh", "fi", "unu", "weh", "lef", "mek",
+#: "tun off di TV", "mi want 40 X in P", "shift 6 of dem over")
+STRONG_MARKERS = frozenset({"mi", "dem", "di", "pon", "inna", "cyaan", "outa", "tek", "yuh", "nuh", "fi", "unu", "weh", "lef", "mek",
                             "outta", "dutty", "haffi", "soh", "waan", "smaddy"})
 #: words after "fi" that make it "for" (who or what for: "fi mi", "fi di children"); before
 #: anything else "fi" is "to" ("mi need fi pack it")
 FOR_WHOM = frozenset({"mi", "di", "de", "dem", "him", "yuh", "unu", "we", "she", "he", "dat", "dis", "me", "the",
                       "my", "her", "his", "them", "you"})
+
+#: words that "dem" after them makes plural besides the world's ("di school tings dem", "di children dem")
+PLURAL_AFTER = frozenset({"things", "thing", "ones", "children", "pickney", "kids", "grandchildren", "clothes"})
+#: words after which "mi" is "me" (an object: "bring mi", "fi mi", "pon mi")
+_BEFORE_ME = frozenset({"for", "to", "on", "in", "with", "from", "bring", "give", "pass", "show", "tell", "help", "let",
+                        "make", "get", "call", "wake", "of", "hear", "see"})
+#: patois words of states ("it dutty", "wash di dutty plate dem")
+_STATES = {"dutty": "dirty"}
+#: words after which a verb is an order ("an lef it", "please lef it"), not a report of what was done
+_BEFORE_AN_ORDER = frozenset({"and", "then", "to", "please", "just", "so", "can", "could", "will", "would", "not", "do",
+                              "dont"})   # never "you": "unu lef it open again" is what was done, no order
+#: verbs of putting that may follow a serial "come" ("carry it come put it pon di counter")
+_PUTTING = frozenset({"put", "lay", "set", "rest", "leave", "place"})
+#: subjects after which "fi" before a verb is "should" ("yuh fi take 4 ...", "staging fi hold 5 ...");
+#: after a verb of wanting or needing it is "to" ("mi need fi pack it")
+_SUBJECTS = frozenset({"yuh", "you", "unu", "mi", "i", "we", "wi", "him", "he", "she", "dem", "they", "it"})
+#: where a clause ends
+_ENDS = frozenset({",", ".", ";", ":", "!", "?"})
+
+#: a stand-in for "dem" after a thing: its plural, no word of its own (the caller makes the thing plural)
+PLURAL = ""
+
+
+def english_of(words: list[str], known: Callable[[str], bool], noun: Callable[[str], bool]) -> list[str | None]:
+    """The English of each word of a command in Jamaican Creole (None: read as typed), in a command
+    that uses two of :data:`MARKERS` or more, or one of :data:`STRONG_MARKERS`; never of a word that
+    is a name of the world's things alone (``known``). "mi" is "my" before a word of a thing's name
+    (``noun``), "me" after a verb or a preposition, else "I"; "him" is "his" before such a word;
+    "dem" after a thing is its plural (:data:`PLURAL`: "di plate dem", the plates), "those" before
+    one, else "them"; "fi" is "for" before who or what for, "should" after a subject ("yuh fi take
+    it", "staging fi hold 5"), else "to" ("mi need fi pack it"); "weh deh" is "that is", "weh"
+    elsewhere "where"; "come" between a thing and a verb of putting ("bring mi specs come put pon di
+    chair") is "and"."""
+    unknown = {w for w in words if not known(w)}
+    out: list[str | None] = [None] * len(words)
+    if len(MARKERS & unknown) < 2 and not STRONG_MARKERS & unknown:
+        return out
+    for k, w in enumerate(words):
+        if known(w):
+            continue
+        said_before = out[k - 1] if k and out[k - 1] else words[k - 1] if k else "."
+        before = said_before.split()[-1]   # the word before, as read ("pon mi": on me)
+        nxt = words[k + 1] if k + 1 < len(words) else "."
+        if w == "mi":
+            said = "my" if noun(nxt) else "me" if k and before in _BEFORE_ME else "i"
+        elif w == "him":
+            said = "his" if noun(nxt) else None
+        elif w == "dem" and k and (noun(before) or before in PLURAL_AFTER):
+            said = PLURAL
+        elif w == "dem":
+            said = "those" if noun(nxt) else "them"
+        elif w == "fi":
+            said = "for" if nxt in FOR_WHOM or noun(nxt) else \
+                "should" if k and (before in _SUBJECTS or noun(before)) and nxt not in _ENDS else "to"
+        elif w == "weh" and nxt == "deh":
+            said = "that"
+        elif w == "weh":   # "put it back weh it belong": where
+            said = "where"
+        elif w == "belong" and before == "it":   # no "-s" in the third person
+            said = "belongs"
+        elif w == "lef":   # "lef it pon di counter": leave; "di pickney dem lef dem toys": left
+            said = "leave" if not k or before in _ENDS or before in _BEFORE_AN_ORDER else "left"
+        elif w == "deh":
+            said = "is" if before == "that" else "there"
+        elif w == "come" and nxt in _PUTTING and k and before not in _ENDS:
+            said = "and"
+        elif w == "an" and nxt not in _ENDS and nxt[:1] not in "aeiou":
+            said = "and"
+        else:
+            said = PATOIS.get(w) or _STATES.get(w)
+        out[k] = said
+    return out

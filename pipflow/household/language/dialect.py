@@ -9,7 +9,7 @@ from typing import Callable
 from pipflow.household.language.names import first_words, home_words
 from pipflow.household.language.restated import DETERMINERS
 from pipflow.household.language.tokens import PUNCT
-from pipflow.language.patois import FOR_WHOM, MARKERS, PATOIS, STRONG_MARKERS
+from pipflow.language.patois import PLURAL, english_of
 from pipflow.language.quebec import QUEBEC
 from pipflow.language.scots import SCOTS
 
@@ -30,53 +30,17 @@ _ALL_OF = DETERMINERS | {"them", "these", "those", "o", "of", "night", "day", "m
 
 def patois_as_english(words: list[str], known: Callable[[str], bool], noun: Callable[[str], bool],
                       notes: list[str]) -> list[str]:
-    """The words with Jamaican Creole function words read as English (:mod:`pipflow.language.patois`)
-    in a command that uses two of them or more (or one that is no English word), each only where it
-    is no name of a thing of the home alone (``known``): "di" the, "pon" on, "inna" in, "tek" take,
-    ...; "mi" is "my" before a word of a thing's name (``noun``), "me" after a verb or a preposition,
-    else "I"; "him" is "his" before such a word; "dem" after a thing is its plural ("di plate dem":
-    the plates), "those" before one, else "them"; "fi" is "for" before who or what for, else "to";
-    "weh deh" is "that is" ("di spoon weh deh inna di sink"), "weh" elsewhere "where"; "come" between a thing and a verb of
-    putting ("bring mi specs come put pon di chair") is "and"."""
-    unknown = {w for w in words if not known(w)}
-    if len(MARKERS & unknown) < 2 and not STRONG_MARKERS & unknown:
-        return words
+    """The words with Jamaican Creole function words read as English
+    (:func:`pipflow.language.patois.english_of`), each only where it is no name of a thing of the
+    home alone (``known``); "dem" after a thing (``noun``) is its plural ("di plate dem": the plates)."""
     out: list[str] = []
-    for k, w in enumerate(words):
-        nxt = words[k + 1] if k + 1 < len(words) else "."
-        if known(w):
-            out.append(w)
-            continue
-        if w == "mi":
-            said = "my" if noun(nxt) else "me" if out and out[-1] in _BEFORE_ME else "i"
-        elif w == "him":
-            said = "his" if noun(nxt) else None
-        elif w == "dem" and out and (noun(out[-1]) or out[-1] in _PLURAL_AFTER):
+    for w, said in zip(words, english_of(words, known, noun)):
+        if said == PLURAL and out:
             plural = out[-1] if out[-1].endswith("s") and noun(out[-1]) else \
                 next((out[-1] + end for end in ("s", "es") if noun(out[-1] + end)), None)   # "boots dem": boots
             notes.append(f"'{out[-1]} dem' read as '{plural or out[-1]}' (Jamaican Creole: a plural)")
             out[-1] = plural or out[-1]
             continue
-        elif w == "dem":
-            said = "those" if noun(nxt) else "them"
-        elif w == "fi":
-            said = "for" if nxt in FOR_WHOM or noun(nxt) else "to"
-        elif w == "weh" and nxt == "deh":
-            said = "that"
-        elif w == "weh":   # "put it back weh it belong": where
-            said = "where"
-        elif w == "belong" and out and out[-1] == "it":   # no "-s" in the third person
-            said = "belongs"
-        elif w == "lef":   # "lef it pon di counter": leave; "di pickney dem lef dem toys": left
-            said = "leave" if not out or out[-1] in PUNCT or out[-1] in _BEFORE_AN_ORDER else "left"
-        elif w == "deh":
-            said = "is" if out and out[-1] == "that" else "there"
-        elif w == "come" and nxt in _PUTTING and out and out[-1] not in PUNCT:
-            said = "and"
-        elif w == "an" and nxt not in PUNCT and nxt[:1] not in "aeiou":
-            said = "and"
-        else:
-            said = PATOIS.get(w) or _PATOIS_AT_HOME.get(w)
         _said_as(out, w, said, "Jamaican Creole", notes)
     return out
 
@@ -120,20 +84,6 @@ def patois_in_home(words: list[str], index: dict, notes: list[str]) -> list[str]
     words are its things' names alone (never read as patois) and which may be part of one."""
     home = home_words(index)
     return patois_as_english(words, lambda w: (w,) in index, lambda w: w in home, notes)
-
-
-#: words that "dem" after them makes plural besides the home's ("di school tings dem", "di children dem")
-_PLURAL_AFTER = {"things", "thing", "ones", "children", "pickney", "kids", "grandchildren", "clothes"}
-#: words after which "mi" is "me" (an object: "bring mi", "fi mi", "pon mi")
-_BEFORE_ME = {"for", "to", "on", "in", "with", "from", "bring", "give", "pass", "show", "tell", "help", "let",
-              "make", "get", "call", "wake", "of", "hear", "see"}
-#: patois words of the home's states ("it dutty", "wash di dutty plate dem")
-_PATOIS_AT_HOME = {"dutty": "dirty"}
-#: words after which a verb is an order ("an lef it", "please lef it"), not a report of what was done
-_BEFORE_AN_ORDER = {"and", "then", "to", "please", "just", "so", "can", "could", "will", "would", "not", "do",
-                    "dont"}   # never "you": "unu lef it open again" is what was done, no order
-#: verbs of putting that may follow a serial "come" ("carry it come put it pon di counter")
-_PUTTING = {"put", "lay", "set", "rest", "leave", "place"}
 
 
 def scots_as_english(words: list[str], known: Callable[[str], bool], notes: list[str]) -> list[str]:

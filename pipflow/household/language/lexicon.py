@@ -556,6 +556,10 @@ FILLER = {("um",), ("umm",), ("uh",), ("uhh",), ("uhm",), ("er",), ("erm",),   #
           ("ishi",), ("eshi",), ("bejih",), ("bejh",), ("ebakih",), ("ebakish",), ("ebakachu",), ("amesegnalehu",),
           ("amesegnalew",), ("selam",), ("tena", "yistilign"), ("tenayistilign",), ("ere",), ("wey",), ("inji",),
           ("yene", "konjo"), ("egziabher", "yimesgen"), ("chigir", "yelem"), ("betam",),
+          # and as others type them ("tenastelign": hello; "ameseginalehu": thank you; "ebakachihu":
+          # please, to several; "wey gud": oh my; "gobez": well done; "yikirta": sorry; "tolo": quick)
+          ("tenastelign",), ("tenastilign",), ("ameseginalehu",), ("ameseginalew",), ("ebakachihu",), ("ebakachuh",),
+          ("wey", "gud"), ("gobez",), ("gobeze",), ("yikirta",), ("yiqirta",), ("tolo",), ("tolo", "tolo"),
           ("please",), ("kindly",), ("abeg",), ("biko",), ("just",), ("quickly",), ("now",), ("for", "me"), ("for", "us"), ("could", "you"),
           ("can", "you"), ("would", "you"), ("will", "you"), ("i", "need", "you", "to"), ("i", "want", "you", "to"),
           ("we", "need", "you", "to"), ("go", "ahead", "and"), ("go", "and"), ("hey",), ("robots",), ("team",),

@@ -694,7 +694,8 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
 bare_only: robots ("only" | "alone")                        -> rule_only
 
 // "Titan should put 5 kegs on outbound", "Titan, bring two kegs to outbound"
-addressed: robots ("," | ":")? oblig? goal
+// "Ziggy, you should take 4 X ...": the robot addressed, then "you" (and what it is to do)
+addressed: robots ("," | ":")? ("you" oblig? | oblig)? goal
          | ("can" | "could" | "would" | "will") robots goal
          | robots "," ("our" | "a" | "an" | "my")? (RKIND | RTAG) "," oblig? goal  -> addressed_appos
          | ("let" | "have" | "get" | "ask" | "tell") robots "to"? goal

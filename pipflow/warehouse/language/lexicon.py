@@ -26,6 +26,7 @@ from pipflow.language.characters import (accents_folded, declared_spellings, non
                                          without_expressions)
 from pipflow.language.english import common_word
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS, is_number
+from pipflow.language.patois import PLURAL, english_of
 from pipflow.language.radio import transmission
 from pipflow.language.quebec import QUEBEC
 from pipflow.language.scots import SCOTS
@@ -438,6 +439,13 @@ SUPERLATIVES = {"strongest": "max", "biggest": "max", "largest": "max", "heavies
 IS_CONTRACTIONS = {"it", "that", "there", "what", "whatever", "here", "who", "he", "she"}
 #: what a name, kind word ("\0") or count ("\1") stands as in the words a clause is judged on
 _HELD = ("\0", "\1")
+
+
+def _one_of_these(toks: list[Tok], k: int) -> bool:
+    """Whether the count at ``k`` is the "one" of "that one", "this one" (a thing pointed at, no count:
+    "..., that one bruk")."""
+    return toks[k].text.lower() == "one" and k > 0 and toks[k - 1].kind == "word" \
+        and str(toks[k - 1].value) in ("that", "this")
 _BAD_SYMBOLS = re.compile(r"[\^*=+%$<>~|\\{}@/&`\u00d7]")
 #: the marks this reader reads besides ASCII letters, digits and white space (see
 #: :mod:`pipflow.language.characters`), each with its reading: sentence and clause punctuation;
@@ -1409,6 +1417,26 @@ class Lexicon:
         #: name stems two or more robots share ("tug" of tug1..tug4): groups of the world
         self.robot_stems = {stem for stem in self.index.robot_groups if stem not in KIND_WORDS["robot"]}
 
+    def _patois_read(self, toks: list[Tok]) -> list[Tok]:
+        """The tokens with Jamaican Creole words read as English (:func:`pipflow.language.patois.english_of`:
+        "mi want 40 X in P", "yuh fi take 4 X", "shift 6 of dem", "him battery weak"), each keeping
+        the text it was said in; a name of the world is never read so, and "dem" after one (its
+        plural) is left out. A word of no grammar, verb or function is taken for a thing ("mi
+        phone": my)."""
+        said = [str(t.value) if t.kind == "word" else "\0" if t.kind in ("name", "shelf", "kind") else t.text
+                for t in toks]
+        english = english_of(said, lambda w: w == "\0",
+                             lambda w: w == "\0" or (w.isalpha() and w not in self.keywords and w not in VERB_LEXICON
+                                                     and w not in FUNCTION_WORDS and w not in FILLERS))
+        out: list[Tok] = []
+        for t, read in zip(toks, english):
+            if read is None:
+                out.append(t)
+            elif read != PLURAL:
+                first, *rest = read.split()
+                out += [Tok("word", t.text, first)] + [Tok("word", "", x) for x in rest]
+        return out
+
     def _known(self, word: str) -> bool:
         return (word in self.keywords or word in FILLERS or word in STOPWORDS or word in FRAME_WORDS
                 or word in NUMBER_WORDS or word in FRACTIONS or word in SUPERLATIVES)
@@ -1587,6 +1615,7 @@ class Lexicon:
                  "s" if t.kind == "word" and t.value == POSS_MARK else   # "Today's plan": the 's is no content
                  (re.sub(r"[^a-z0-9]", "", t.text.lower()) or str(t.value) if t.kind in ("word", "kind") else
                   "oclock" if t.kind == "num" and _clock(cur, k) else "\2" if t.kind == "num" and self._label(cur, k)
+                  else "one" if t.kind == "num" and _one_of_these(cur, k)
                   else "\1" if t.kind == "num" else "\0")
                  for k, t in enumerate(cur)]
         parts = clauses(words, marks)
@@ -1680,7 +1709,7 @@ class Lexicon:
                       flags=re.IGNORECASE)
         toks = noun_adjuncts(unmarked_lists(numbered_siblings(recognize(text, self.index), self._numbered_places)))
         fixed = []
-        for t in toks:
+        for t in self._patois_read(toks):
             if t.kind == "word" and not self._known(str(t.value)) and self._group(t.text) is None:
                 word = str(t.value)
                 typo = (SPELLINGS.get(word) or LETTER_WORDS.get(t.text) or _number_typo(word)

@@ -1,0 +1,71 @@
+"""Issue 23, from pair LL's sets (a shift supervisor by the Kingston Freezone writing Jamaican English
+with Patois words, an architect in Addis Ababa writing English with Amharic in Latin letters), after
+their first measurements. Warehouse: the Jamaican Creole function words the household reader read
+("mi", "dem", "fi", "yuh", "pon": :func:`pipflow.language.patois.english_of`) read by the warehouse
+reader too, "fi" after a subject as "should"; a robot addressed, then "you (should)"; remarks of
+"all over" and of a demonstrative's state ("that one bruk", "those dent up"). Household: Amharic
+talk as others type it. The worlds of the Australian and Levantine tests, through the real readers;
+each rule with what stays as said or refused."""
+from __future__ import annotations
+
+import pytest
+
+from pipflow.errors import PipflowError
+from pipflow.language.patois import english_of
+from pipflow.warehouse.language.translator import understand
+from tests.readings import assert_warehouse_alike, household_goal as goal
+from tests.test_reader_australian_and_levantine_english import YARD, flat  # noqa: F401 (a fixture)
+
+
+@pytest.mark.parametrize("said, plain", [
+    ("mi want 12 cider at pick face", "pick face should have 12 cider"),
+    ("pick face fi hold 5 cider", "pick face should hold 5 cider"),
+    ("fork1 , yuh fi take 2 cider from grog cage to pick face", "fork1 take 2 cider from cage to face"),
+    ("fork1, you should take 2 cider from grog cage to pick face", "fork1 take 2 cider from cage to face"),
+    ("fork1, you take 2 cider from grog cage to pick face", "fork1 take 2 cider from cage to face"),
+    ("take grog cage 's cider , all 10 of dem , to pick face", "move all cider from cage to face"),
+    ("move every cider to pick face except the one on the loading dock , that one bruk",
+     "move every cider to pick face except the one on dock"),
+    ("add 2 cider to the loading dock , those dent up", "add 2 cider to dock"),
+    ("add 2 cider to the loading dock , this one is cracked", "add 2 cider to dock"),
+    ("add 2 cider to the loading dock , grease all over mi phone", "add 2 cider to dock"),
+])
+def test_jamaican_english_orders_read_as_their_plain_english(said: str, plain: str) -> None:
+    assert_warehouse_alike(said, plain, YARD)
+
+
+@pytest.mark.parametrize("said", [
+    # a demonstrative with a word of an order's tail still asks something of it
+    "add 2 cider to the loading dock , that one too",
+    "add 2 cider to the loading dock , those as well",
+    # "all over" a place of the world names it
+    "add 2 cider to the loading dock , grease all over the pick face",
+    # a demonstrative with a place of the world after it says which
+    "move every cider to pick face except the one on the loading dock , that one on grog cage",
+])
+def test_what_the_rules_do_not_cover_stays_refused(said: str) -> None:
+    with pytest.raises(PipflowError):
+        understand(said, YARD)
+
+
+def test_patois_is_read_only_where_the_command_shows_it() -> None:
+    """One word that English has too ("den", "an") reads as typed; a word that names a thing of the
+    world is never read as patois; "fi" is "for" before whom, "to" after a verb of needing."""
+    def read(text: str, names: frozenset[str] = frozenset()) -> list[str]:
+        words = text.split()
+        said = english_of(words, lambda w: w in names, lambda w: w in names)
+        return [w if s is None else s for w, s in zip(words, said)]
+    assert read("go to the den and wait") == ["go", "to", "the", "den", "and", "wait"]
+    assert read("mi need fi pack it") == ["i", "need", "to", "pack", "it"]
+    assert read("bring it fi mi") == ["bring", "it", "for", "me"]
+    assert read("yuh fi take it") == ["you", "should", "take", "it"]
+    assert read("put di mi pon di shelf", frozenset({"mi", "shelf"})) == ["put", "the", "mi", "on", "the", "shelf"]
+
+
+@pytest.mark.parametrize("said, plain", [
+    ("tenastelign! wash the mug ameseginalehu", "wash the mug"),
+    ("wey gud, cut the tomato tolo", "cut the tomato"),
+    ("ebakachihu , wash the mug . yikirta", "wash the mug"),
+])
+def test_amharic_english_reads_as_its_plain_english(flat: dict, said: str, plain: str) -> None:
+    assert goal(said, flat) == goal(plain, flat)
