@@ -69,3 +69,62 @@ def test_patois_is_read_only_where_the_command_shows_it() -> None:
 ])
 def test_amharic_english_reads_as_its_plain_english(flat: dict, said: str, plain: str) -> None:
     assert goal(said, flat) == goal(plain, flat)
+
+
+@pytest.mark.parametrize("said, plain", [
+    # a source kept out of a move: it keeps what it has of the things moved
+    ("Send 2 cider to pick face but nothing from grog cage", "send 2 cider to pick face, and grog cage should have 10 cider"),
+    ("send 2 cider to pick face , not from the grog cage", "send 2 cider to pick face, and grog cage should have 10 cider"),
+    # a product a robot must not go near, and "let only" before the robots
+    ("add 2 cider to the loading dock , and amr1 must not go near bikkie at all",
+     "add 2 cider to dock, amr1 must not touch biscuit"),
+    ("let only fork1 handle the cider. move 2 cider from grog cage to pick face",
+     "only fork1 may move cider. move 2 cider from cage to face"),
+    # robots addressed, then told to stay off the job
+    ("add 2 cider to the loading dock. amr1 , stay off this job", "add 2 cider to dock. dont use amr1"),
+    ("add 2 cider to the loading dock. forklifts stay out of this one", "add 2 cider to dock. dont use fork1"),
+    # a noun of several words, its last a plural, with a verb in -ing and no "is": a report
+    ("Friday fish fry orders coming in nuff , add 2 cider to the loading dock", "add 2 cider to dock"),
+])
+def test_more_orders_of_pair_ll_read_as_their_plain_english(said: str, plain: str) -> None:
+    assert_warehouse_alike(said, plain, YARD)
+
+
+@pytest.mark.parametrize("said", [
+    # the source kept out is the one the move is from: which is meant is asked
+    "move 2 cider from grog cage to pick face but nothing from grog cage",
+    # a report of several words whose last is no plural may be an order in a verb not read
+    "add 2 cider to the loading dock , keep cases moving",
+])
+def test_more_of_what_stays_refused(said: str) -> None:
+    with pytest.raises(PipflowError):
+        understand(said, YARD)
+
+
+@pytest.mark.parametrize("said, plain", [
+    # a thing said first, then the verb, "on" / "off" and the pronoun
+    ("the kitchen light, switch off it", "switch off the kitchen light"),
+    ("the lounge light, switch on it", "switch on the lounge light"),
+    # things said first, taken up by "both", "all three", "them all", "all of them"
+    ("the mug and the cup, wash both", "wash the mug and the cup"),
+    ("the mug and the cup, wash them all", "wash the mug and the cup"),
+    ("the mug, the cup and the tomato, put all three on the desk", "put the mug, the cup and the tomato on the desk"),
+    # a kinship word with "'s" says whose a thing is, with the determiner before it
+    ("put my husband's mug on the desk", "put the mug on the desk"),
+    # a thing "sitting" on a place, and a machine "going", in a condition
+    ("if the pie is still sitting on the counter, heat it in the oven", "heat the pie in the oven"),
+    ("if the kitchen light is going, switch it off", "switch off the kitchen light"),
+])
+def test_household_orders_of_pair_ll_read_as_their_plain_english(flat: dict, said: str, plain: str) -> None:
+    assert goal(said, flat) == goal(plain, flat)
+
+
+@pytest.mark.parametrize("said", [
+    # "all three" of two things: the count does not match
+    "the mug and the cup, wash all three",
+    # a condition that does not hold asks nothing
+    "if the pie is sitting on the desk, heat it in the oven",
+])
+def test_household_what_stays_refused(flat: dict, said: str) -> None:
+    with pytest.raises(PipflowError):
+        goal(said, flat)

@@ -469,12 +469,21 @@ _ING_TAKERS = frozenset({"stop", "quit", "avoid", "keep", "start", "finish", "tr
 
 
 def _bare_progressive(ws: list[str]) -> bool:
-    """ "truck coming at 4 pm", "Shoprite collecting just now": a noun and a verb in -ing with no
-    "is" between (as South African and Indian English drop it), reporting what is going on. Never
+    """ "truck coming at 4 pm", "Shoprite collecting just now", "Friday fish fry orders coming in":
+    a noun (of several words, the last a plural) and a verb in -ing with no "is" between (as South
+    African, Indian and Jamaican English drop it), reporting what is going on. Never
     with a pronoun object in the clause ("stop sending them") or after a verb that takes an -ing
     object (:data:`_ING_TAKERS`)."""
-    return (len(ws) >= 2 and ws[0].isalpha() and ws[0] not in FUNCTION_WORDS and ws[0] not in _ING_TAKERS
-            and ws[1].endswith("ing") and len(ws[1]) > 4 and not set(ws) & OBJECT_PRONOUNS)
+    if set(ws) & OBJECT_PRONOUNS:
+        return False
+    for j in range(1, min(len(ws), 5)):
+        if not (ws[j - 1].isalpha() and ws[j - 1] not in FUNCTION_WORDS and ws[j - 1] not in _ING_TAKERS):
+            return False
+        if ws[j].endswith("ing") and len(ws[j]) > 4:
+            # a noun of several words only where its last is a plural ("fish fry orders coming in"):
+            # an order opens with its verb, never with a plural
+            return j == 1 or (ws[j - 1].endswith("s") and not ws[j - 1].endswith("ss") and len(ws[j - 1]) > 3)
+    return False
 
 
 def _past_of_a_noun(ws: list[str]) -> bool:

@@ -5,7 +5,7 @@ English word the grammars have. Read only in a command that uses at least two of
 "dat" in English stays as typed, and only where the word is no name of the world's things alone."""
 from __future__ import annotations
 
-from typing import Callable
+from typing import Callable, Mapping
 
 #: patois word -> the English word(s); "mi", "dem", "fi", "him" depend on what follows (the reader)
 PATOIS = {"di": "the", "de": "the", "pon": "on", "inna": "in", "ina": "in", "eena": "in", "outa": "out of",
@@ -35,8 +35,6 @@ PLURAL_AFTER = frozenset({"things", "thing", "ones", "children", "pickney", "kid
 #: words after which "mi" is "me" (an object: "bring mi", "fi mi", "pon mi")
 _BEFORE_ME = frozenset({"for", "to", "on", "in", "with", "from", "bring", "give", "pass", "show", "tell", "help", "let",
                         "make", "get", "call", "wake", "of", "hear", "see"})
-#: patois words of states ("it dutty", "wash di dutty plate dem")
-_STATES = {"dutty": "dirty"}
 #: words after which a verb is an order ("an lef it", "please lef it"), not a report of what was done
 _BEFORE_AN_ORDER = frozenset({"and", "then", "to", "please", "just", "so", "can", "could", "will", "would", "not", "do",
                               "dont"})   # never "you": "unu lef it open again" is what was done, no order
@@ -52,7 +50,8 @@ _ENDS = frozenset({",", ".", ";", ":", "!", "?"})
 PLURAL = ""
 
 
-def english_of(words: list[str], known: Callable[[str], bool], noun: Callable[[str], bool]) -> list[str | None]:
+def english_of(words: list[str], known: Callable[[str], bool], noun: Callable[[str], bool],
+               domain: Mapping[str, str] | None = None) -> list[str | None]:
     """The English of each word of a command in Jamaican Creole (None: read as typed), in a command
     that uses two of :data:`MARKERS` or more, or one of :data:`STRONG_MARKERS`; never of a word that
     is a name of the world's things alone (``known``). "mi" is "my" before a word of a thing's name
@@ -61,7 +60,7 @@ def english_of(words: list[str], known: Callable[[str], bool], noun: Callable[[s
     one, else "them"; "fi" is "for" before who or what for, "should" after a subject ("yuh fi take
     it", "staging fi hold 5"), else "to" ("mi need fi pack it"); "weh deh" is "that is", "weh"
     elsewhere "where"; "come" between a thing and a verb of putting ("bring mi specs come put pon di
-    chair") is "and"."""
+    chair") is "and". ``domain``: patois words of a domain's own ("dutty" of the home), read so too."""
     unknown = {w for w in words if not known(w)}
     out: list[str | None] = [None] * len(words)
     if len(MARKERS & unknown) < 2 and not STRONG_MARKERS & unknown:
@@ -98,6 +97,6 @@ def english_of(words: list[str], known: Callable[[str], bool], noun: Callable[[s
         elif w == "an" and nxt not in _ENDS and nxt[:1] not in "aeiou":
             said = "and"
         else:
-            said = PATOIS.get(w) or _STATES.get(w)
+            said = PATOIS.get(w) or (domain or {}).get(w)
         out[k] = said
     return out

@@ -27,12 +27,14 @@ from pipflow.household.language.restated import AT, BE, DETERMINERS
 STATES = {"on": ("on", True), "off": ("on", False), "open": ("open", True), "closed": ("open", False),
           "shut": ("open", False), "dirty": ("dirty", True), "clean": ("dirty", False), "hot": ("hot", True),
           "warm": ("hot", True), "cold": ("hot", False), "sliced": ("sliced", True), "whole": ("sliced", False),
-          # a light or a fire "still burning", a lamp "lit", a machine "running": on
-          "burning": ("on", True), "lit": ("on", True), "running": ("on", True)}
+          # a light or a fire "still burning", a lamp "lit", a machine "running" or "going": on
+          "burning": ("on", True), "lit": ("on", True), "running": ("on", True), "going": ("on", True)}
 #: the property a thing needs for a state key to be read of it
 NEEDS = {"on": "toggleable", "open": "openable", "dirty": "washable", "hot": "heatable", "sliced": "sliceable"}
 #: words between the thing and its state that say nothing of it ("is still on", "is already off")
 _HEDGES = {"still", "already", "currently", "now", "left", "been", "switched", "turned"}
+#: how a thing stands where it is, before that place ("if the pot is still sitting on the cooker")
+_POSTURES = {"sitting", "lying", "standing", "sat", "sits", "lies", "stands", "hanging", "waiting"}
 #: words before a thing's name; "them" too, as dialect says it ("if them socks are dirty")
 _DETERMINERS = DETERMINERS | {"them"}
 _PRONOUNS = {"it", "them"}
@@ -170,9 +172,10 @@ def _condition(words: list[str], world: dict, before: list[str] | None = None) -
     thing_words, name, k = found
     if words[k:k + 1] and words[k] in BE:
         k += 1
-    elif not (words[k:k + 1] and (words[k] in _HEDGES or words[k] in STATES)):
+    elif not (words[k:k + 1] and (words[k] in _HEDGES or words[k] in STATES or words[k] in _POSTURES)):
         return None   # "is" may be left out ("if the water heater still on"), nothing else
-    while k < len(words) and words[k] in _HEDGES:
+    while k < len(words) and (words[k] in _HEDGES or (words[k] in _POSTURES and words[k + 1:k + 2]
+                                                      and words[k + 1] in AT)):
         k += 1
     negated = words[k:k + 1] == ["not"]
     k += negated

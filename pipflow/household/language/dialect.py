@@ -34,7 +34,7 @@ def patois_as_english(words: list[str], known: Callable[[str], bool], noun: Call
     (:func:`pipflow.language.patois.english_of`), each only where it is no name of a thing of the
     home alone (``known``); "dem" after a thing (``noun``) is its plural ("di plate dem": the plates)."""
     out: list[str] = []
-    for w, said in zip(words, english_of(words, known, noun)):
+    for w, said in zip(words, english_of(words, known, noun, _PATOIS_AT_HOME)):
         if said == PLURAL and out:
             plural = out[-1] if out[-1].endswith("s") and noun(out[-1]) else \
                 next((out[-1] + end for end in ("s", "es") if noun(out[-1] + end)), None)   # "boots dem": boots
@@ -43,6 +43,10 @@ def patois_as_english(words: list[str], known: Callable[[str], bool], noun: Call
             continue
         _said_as(out, w, said, "Jamaican Creole", notes)
     return out
+
+
+#: patois words of the home's states ("it dutty", "wash di dutty plate dem")
+_PATOIS_AT_HOME = {"dutty": "dirty"}
 
 
 def _said_as(out: list[str], word: str, said: str | None, language: str, notes: list[str]) -> None:

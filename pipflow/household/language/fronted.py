@@ -19,7 +19,8 @@ reading is one two people would agree on:
   "jug clean" may say how the jug is), and lacks its object: what follows it is a particle, a
   place word or the clause's end, never a thing; with a pronoun, the clause is only the thing and
   a comma (or nothing: "the frigo close it", Italian "il frigo chiudilo"), and the pronoun is "it" or
-  "them" at once after the verb, the thing opening its sentence.
+  "them" at once after the verb (or after "on" / "off": "the radio, switch on it"), the thing
+  opening its sentence.
 
 Anything else is left as said, and refused as before.
 """
@@ -55,6 +56,8 @@ LACKING = {"ON", "OFF", "OUT", "IN", "TO", "AT", "BACK", "AWAY", "UP", "DOWN", "
            "STAY", "THERE"}
 #: what ends the clause before: a fronted phrase opens a clause after one of these
 BREAKS = {"END", "EXCL"}
+#: particles of switching that may stand before a pronoun ("switch on it")
+_TURNED = {"ON", "OFF"}
 JOINS = {"COMMA", "AND", "THEN"}
 
 
@@ -96,6 +99,24 @@ def _phrase_end(tags: list[Tag], k: int) -> int | None:
     if end is None or not (_named(tags[k]) or tags[k].cls in OPENERS):
         return None
     return end
+
+
+def _resumed(tags: list[Tag], j: int, phrase: list[Tag]) -> int:
+    """How many tags from ``j`` take up the things of ``phrase`` again ("it", "them", "them all",
+    "all of them", "both" of two things, "all three" of three); 0 where none do."""
+    said = [t.words for t in tags[j:j + 3]]
+    named = sum(_named(t) for t in phrase)
+    if said[:3] == ["all", "of", "them"]:
+        return 3
+    if said[:2] == ["them", "all"]:
+        return 2
+    if said[:1] in (["it"], ["them"]) and tags[j].cls == "IT":
+        return 1
+    if said[:1] == ["both"] and named == 2:
+        return 1
+    if said[:1] == ["all"] and len(tags) > j + 1 and tags[j + 1].cls == "NUM" and tags[j + 1].value == named:
+        return 2
+    return 0
 
 
 def _lacks_object(tags: list[Tag], v: int) -> bool:
@@ -145,12 +166,19 @@ def fronted_objects(tags: list[Tag]) -> tuple[list[Tag], list[str]] | None:
             if out[v].cls in MOVING and v + 2 < len(out) and out[v + 2].cls in TARGETS:
                 phrase = _where_as_source(phrase)
             out[k:v + 2] = [out[v]] + phrase
-        elif (v + 2 < len(out) and out[v].cls == "COMMA" and out[v + 1].cls in VERBS and out[v + 2].cls == "IT"
-              and out[v + 2].words in ("it", "them") and (k == 0 or out[k - 1].cls in BREAKS)
-              and _lacks_object(out, v + 2)):
-            # "the mug, wash it": the pronoun stands for the thing named before
-            moved.append(f"{words}, {out[v + 1].words} {out[v + 2].words}")
-            out[k:v + 3] = [out[v + 1]] + phrase
+        elif (v + 2 < len(out) and out[v].cls == "COMMA" and out[v + 1].cls in VERBS
+              and (n := _resumed(out, v + 2, phrase)) and (k == 0 or out[k - 1].cls in BREAKS)
+              and _lacks_object(out, v + 1 + n)):
+            # "the mug, wash it", "the mug and the plate, wash both": the pronoun stands for the
+            # things named before
+            moved.append(f"{words}, {out[v + 1].words} " + " ".join(t.words for t in out[v + 2:v + 2 + n]))
+            out[k:v + 2 + n] = [out[v + 1]] + phrase
+        elif (v + 3 < len(out) and out[v].cls == "COMMA" and out[v + 1].cls in VERBS and out[v + 2].cls in _TURNED
+              and out[v + 3].cls == "IT" and out[v + 3].words in ("it", "them") and (k == 0 or out[k - 1].cls in BREAKS)
+              and _lacks_object(out, v + 3)):
+            # "the radio, switch on it": the particle said before the pronoun, as learners say it
+            moved.append(f"{words}, {out[v + 1].words} {out[v + 2].words} {out[v + 3].words}")
+            out[k:v + 4] = [out[v + 1], out[v + 2]] + phrase
         k = end
     return (out, moved) if moved else None
 

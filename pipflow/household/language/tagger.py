@@ -23,7 +23,7 @@ from pipflow.household.language.grammar import NOUN_DUAL
 from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
 from pipflow.household.language.names import (first_words, longest_name, named_by_first_word, per_index,
                                               things_of_kind, world_phrases)
-from pipflow.household.language.people import owners, owners_before_names, own_as_owned, pronouns_as_owners
+from pipflow.household.language.people import KIN, owners, owners_before_names, own_as_owned, pronouns_as_owners
 from pipflow.household.language.retag import (act_before_noun, copula_dropped, demonstratives, elided_it_is, left_lying,
                                               located, restated_order, without_hedges)
 from pipflow.household.language.rewrites import (caused, closed_again, closed_back, given, heat_purpose, measures,
@@ -96,7 +96,8 @@ def owners_as_the(command: str, world: dict, notes: list[str]) -> str:
     The home does not know who owns what, so the owner picks nothing out. Typed in lower case
     ("jordan's mug"; speech to text writes no capitals), the name is an owner where the home's
     own names use it ("jordan's desk"), or where it is no English word and no word of this home
-    or of the reader, nor a slip of one ("xander's cars"): "the dog's bowl" says no owner."""
+    or of the reader, nor a slip of one ("xander's cars"), or a word of kin ("my husband's shirt",
+    :data:`~.people.KIN`): "the dog's bowl" says no owner."""
     index = world_phrases(world)
     owners = _first_words_of_long_names(index)
     vocab = vocabulary(index)
@@ -106,7 +107,7 @@ def owners_as_the(command: str, world: dict, notes: list[str]) -> str:
 
     def owner(m: re.Match) -> str:
         word, after = m.group(1).lower(), m.group(2).lower()
-        if m.group(1)[0].islower() and word not in owners and not unknown(word):
+        if m.group(1)[0].islower() and word not in owners and word not in KIN and not unknown(word):
             return m.group(0)
         if word in FUNCTION_WORDS or (word,) in PHRASES or any(key[:2] == (word, after) for key in index) or (
                 (word,) in index and not any(len(key) > 1 and key[0] == word for key in index)) \
@@ -115,12 +116,19 @@ def owners_as_the(command: str, world: dict, notes: list[str]) -> str:
             # of the home after it ("Someone's left ...": "has")
             return m.group(0)
         notes.append(f"'{m.group(1)}'s' says whose it is: read as 'the'")
-        return "the " + m.group(2)
+        return _OWNED + m.group(2)
     command = re.sub(r"(?<![\w'’])([A-Za-z][a-z]+)['’]s\s+([A-Za-z]+)", owner, command)
     # the apostrophe unwritten ("johans beers", speech to text): only where neither the word nor
     # the word without its "s" is known
-    return re.sub(r"(?<![\w'’])([A-Za-z][a-z]+)s\s+([A-Za-z]+)",
-                  lambda m: owner(m) if unknown(m.group(1).lower() + "s") else m.group(0), command)
+    command = re.sub(r"(?<![\w'’])([A-Za-z][a-z]+)s\s+([A-Za-z]+)",
+                     lambda m: owner(m) if unknown(m.group(1).lower() + "s") else m.group(0), command)
+    # "my husband's shirt": the determiner before the owner goes with it
+    command = re.sub(r"\b(?:my|our|your|his|her|their|the)\s+" + _OWNED, _OWNED, command, flags=re.IGNORECASE)
+    return command.replace(_OWNED, "the ")
+
+
+#: what an owner said with "'s" stands as, until the determiner before it is dropped
+_OWNED = "\0the "
 
 
 def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: list[str]) -> list[str]:

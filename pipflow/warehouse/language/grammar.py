@@ -518,6 +518,7 @@ except_what: "ones" | "those" | "them" | "what" "is" | "any" | "what" "sits" | "
 tail: places ("too" | "as" "well" | "also" | "same" "same"?) -> t_too
     | ("not" | "instead" "of" | "rather" "than") NUM       -> t_noop
     | "not" ("to" | "into" | "onto") places                 -> t_not_to
+    | ("not" | "nothing" | "none") ("from" | "out" "of" | "off") places -> t_not_from
     | items from places                                  -> t_from
     | "so" ("does" | "do" | "should" | "must" | "will") places -> t_too
     | places "with"? items                               -> t_gap
@@ -629,15 +630,19 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | robots rmodal? rneg ("enter" | "visit" | "approach" | "access" | "go" "near" | "go" "into" | "go" "to" | "come" "near") places -> rule_away
     | robots ("is" | "are") "only" ("ones" | NUM | ROBOTWORD | RKIND | RTAG) ("allowed" | "permitted") rwhere+ -> rule_only
     | robots modal? ("stay" | "stays" | "remain" | "remains") state -> rule_state
+    // "robots that carry less than 3, stay off this job": the robots addressed sit the job out
+    | robots ","? modal? ("stay" | "keep") ("off" | "out" "of" | "away" "from" | "clear" "of") "this" ("job" | "task" | "order" | NUM) -> rule_state
     | robots modal? ("sit" | "sits") ("this" (NUM | "job" | "task" | "round") | "it") "out" -> rule_state
     | ("dont" | "do" "not" | "never") act robots rscope       -> rule_never
     | ("use" | "employ") robots "only" rscope                 -> rule_only
     | "no" robots ("on" "this" (NUM | "job" | "task"))? rscope -> rule_never
     | "nothing" ("leaves" | "goes" "out" "of" | "comes" "off" | "comes" "out" "of" | "may" "leave" | "should" "leave") places ("on" | "by" | "with" | "using") robots -> rule_never_from
-    | ("let" | "have") robots act rscope                     -> rule_only
+    | ("let" | "have") ("only" | "just")? robots act rscope -> rule_only
     | ("keep" | "leave") robots ("away" | "clear") from ITEM (lsep ITEM)* -> rule_away_items
     | ("keep" | "leave") robots "off" ITEM (lsep ITEM)*       -> rule_away_items
     | robots modal? ("stay" | "keep") ("off" | "away" "from" | "clear" "of") ITEM (lsep ITEM)* -> rule_away_items
+    // "the weakest robot must not go near rum (at all)": keeps off the product
+    | robots (rmodal? rneg | ("arent" | "isnt" | ("are" | "is") "not") "to") ("go" "near" | "come" "near" | "approach") ITEM (lsep ITEM)* ("at" "all")? -> rule_away_items
     | robots ("is" | "are") state ","? ("so" | "and")? ("dont" | "do" "not") "use" ("it" | "them") -> rule_state
     | robots (("is" | "are") "not" | "isnt" | "arent") "to" "be" ("used" | "involved" | "employed" | "assigned") rscope -> rule_never
     // a notice, its "is" left out: "Queenie not to be used", "Only tuggers to be used"

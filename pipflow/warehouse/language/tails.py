@@ -108,6 +108,16 @@ class TailRules:
         self.statements.append({"op": "keep", "places": {"names": places}, "items": {"names": list(dict.fromkeys(moved))},
                                 "inflow_only": False, "words": words})
 
+    def t_not_from(self, node: Tree) -> None:
+        words = self.words(node)
+        # "Send 10 X to staging but nothing from the cooler": the cooler keeps what it has of them
+        places = self.place_list(self.sub(node, "places")[0])
+        moved = [n for st in self.statements for n in (st.get("items") or {}).get("names", [])]
+        if not moved:
+            raise TranslationError(f"{quote(words)}: not what? nothing is moved before it")
+        self.statements.append({"op": "keep", "places": {"names": places}, "items": {"names": list(dict.fromkeys(moved))},
+                                "inflow_only": False, "words": words})
+
     def t_noop(self, node: Tree) -> None:
         """"4 valves, not 5": a correction that restates what was said (nothing to add)."""
 
