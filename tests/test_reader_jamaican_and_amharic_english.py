@@ -80,6 +80,13 @@ def test_amharic_english_reads_as_its_plain_english(flat: dict, said: str, plain
      "add 2 cider to dock, amr1 must not touch biscuit"),
     ("let only fork1 handle the cider. move 2 cider from grog cage to pick face",
      "only fork1 may move cider. move 2 cider from cage to face"),
+    ("send 2 cider to pick face , none of them should come out of the grog cage",
+     "send 2 cider to pick face, and grog cage should have 10 cider"),
+    ("add 8 cider to the loading dock , but AMRs arent to go near bikkie", "add 8 cider to dock, amr1 must not touch biscuit"),
+    # "P needs N X added": N more; "send (the) extra / excess to Q": the rest
+    ("the loading dock needs 6 cider added", "add 6 cider to dock"),
+    ("bring grog cage down to 4 cider and send the excess to pick face",
+     "bring grog cage down to 4 cider and send the rest to pick face"),
     # robots addressed, then told to stay off the job
     ("add 2 cider to the loading dock. amr1 , stay off this job", "add 2 cider to dock. dont use amr1"),
     ("add 2 cider to the loading dock. forklifts stay out of this one", "add 2 cider to dock. dont use fork1"),

@@ -105,7 +105,7 @@ np: NUM of? ihead                          -> np_count
   | "same" ("number" | "amount" | "count" | "quantity") "of" ihead "as" PLACE (("has" "got"? | "got" | "holds" | "have" | "contains" | "does") now?)? -> np_as_many
   | ("another" | "one" "more")                      -> np_another
   | "as" "many" "as" PLACE ("has" "got"? | "got" | "holds" | "have" | "contains") now? -> np_as_many_elided
-  | ("rest" | "others" | "extras" | "remainder") rest_of? -> np_rest
+  | ("rest" | "others" | "extras" | "extra" | "excess" | "surplus" | "remainder") rest_of? -> np_rest
   | "twice" "as" "many" ihead              -> np_twice
   | "twice" "as" "many" ihead "as" ("it" | "they") ("has" | "have" | "holds" | "hold") now? -> np_twice
   | NUM "times" "as" "many" ihead ("as" ("it" | "they") ("has" | "have" | "holds" | "hold") now?)? -> np_ntimes
@@ -270,6 +270,8 @@ goal: there_be items loc                                  -> g_set
     | removev bare src                                     -> g_remove_src
     | splitv bare src even? among places even?              -> g_split_src
     | addv items to places each?                             -> g_add
+    // "Dock needs 6 ackee added": the count added to it
+    | places modal? ("needs" | "need" | "wants" | "want" | "gets" | "get") items ("added" | "adding") -> g_add
     | addv items loc                                      -> g_add
     | refill places "with" items from places               -> g_refill_from
     | refill places "with" items                           -> g_add_place
@@ -518,11 +520,11 @@ except_what: "ones" | "those" | "them" | "what" "is" | "any" | "what" "sits" | "
 tail: places ("too" | "as" "well" | "also" | "same" "same"?) -> t_too
     | ("not" | "instead" "of" | "rather" "than") NUM       -> t_noop
     | "not" ("to" | "into" | "onto") places                 -> t_not_to
-    | ("not" | "nothing" | "none") ("from" | "out" "of" | "off") places -> t_not_from
+    | ("not" | "nothing" | "none" ("of" ("them" | "it" | "those" | "these"))?) (modal? ("come" | "comes"))? ("from" | "out" "of" | "off") places -> t_not_from
     | items from places                                  -> t_from
     | "so" ("does" | "do" | "should" | "must" | "will") places -> t_too
     | places "with"? items                               -> t_gap
-    | ("rest" | "others" | "extras" | "remainder") rest_of? to places -> t_rest
+    | ("rest" | "others" | "extras" | "extra" | "excess" | "surplus" | "remainder") rest_of? to places -> t_rest
     | "same" ("off" | "from" | "out" "of" | "to" | "on" | "in" | "at" | "for" | "into" | "onto") places -> t_same
     | ("they" | "it" | "those" | "these") ("can" | "may" | "could")? ("go" | "goes") anywhere -> t_anywhere
     | "not" ihead (lsep ihead)*                           -> t_not_items
