@@ -70,9 +70,12 @@ def test_aw_night_says_how_long_and_son_after_please_is_said_to_the_robots() -> 
 
 
 def test_son_alone_before_a_thing_is_never_dropped() -> None:
-    """ "my son's novel": whose novel, not a word said to the robots; not read as the novel."""
-    with pytest.raises(TranslationError):
-        translate("put my son's novel on the nightstand", STUDIO)
+    """ "my son's novel": whose novel, not a word said to the robots. A kinship word with "'s" says
+    whose a thing is, as a name does ("Rosie's novel"): the novel of the home, and the echo says so
+    (pair LL's round; before it, the command was refused)."""
+    got = translate("put my son's novel on the nightstand", STUDIO)
+    assert got["goal"] == translate("put the novel on the nightstand", STUDIO)["goal"]
+    assert any("says whose it is" in note for note in got["notes"])
 
 
 @pytest.mark.parametrize("said", ["wash the teacup its on the coffee table", "wash the teacup it's on the coffee table"])
