@@ -150,7 +150,9 @@ ADDRESSEES = frozenset({"all", "everyone", "everybody", "team", "folks", "guys",
                         # European Portuguese ("Bom dia pá": mate; "malta": folks)
                         "pa", "malta",
                         # Malay ("Abang, ...": brother; "bang", "kak": sister; "encik", "tuan": sir; "adik")
-                        "abang", "bang", "encik", "tuan", "adik"})
+                        "abang", "bang", "encik", "tuan", "adik",
+                        # Sinhala ("machan": mate; "malli": younger brother; "akka": older sister)
+                        "machan", "machang", "malli", "akka"})
 
 
 #: a thanks that can close an order without a comma before it ("... to bay 2 ta")
@@ -172,6 +174,8 @@ CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "
                      "mind", "yeah", "eh", "cheers", "ta", "thanks", "thx", "ty", "tyvm", "thankyou", "dankie",
                      "man", "bru", "boet", "chale", "bud", "butt", "butty", "bach", "diolch", "merci", "svp", "stp",
                      "asante", "asanteni", "bana", "mzee", "gracias", "jefe",
+                     # Sri Lankan English ("..., machan"; "... to P already": at once, no report)
+                     "machan", "machang", "already",
                      # Brazilian Portuguese: thanks, "OK?" ("..., beleza?"), laughter
                      "obrigada", "obrigado", "valeu", "vlw", "beleza", "blz", "rsrs", "kkk", "kkkk", "kkkkk",
                      "valew", "galera", "pessoal", "rapidinho", "agora", "pfv", "pf",
@@ -909,6 +913,9 @@ INTERJECTIONS = frozenset({
     "kuai", "dian", "aiya", "aiyo", "aiyah", "hao", "xie", "xiexie", "mei", "wenti",
     # Malaysian English ("Alamak, ...", "aiyoh": dismay; "walao": wow; "paiseh": sorry; "wah")
     "alamak", "aiyoh", "aiseh", "walao", "wah", "paiseh", "adoi", "aduh",
+    # Sinhala in Latin letters ("Aney, ...": oh, please; "apoi": dismay; "hari": OK; "isthuthi": thanks;
+    # "ayubowan": hello)
+    "aney", "anee", "apoi", "hari", "harida", "isthuthi", "istuti", "ayubowan",
     # Thai ("Sawasdee ka, ...": hello; "kob khun": thank you; "jing jing": really; "mai pen rai": never
     # mind; "reo reo": quickly; "na ka", "krub": polite particles)
     "sawasdee", "sawatdee", "kob", "khun", "jing", "reo", "ka", "kha", "krub", "khrub", "krap", "khrap", "jaa",

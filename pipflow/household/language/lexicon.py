@@ -30,6 +30,8 @@ ADJECTIVES = {
     "clean": "clean", "washed": "clean", "cleaned": "clean", "rinsed": "clean", "dirty": "dirty",
     "filthy": "dirty", "used": "dirty", "mucky": "dirty", "grubby": "dirty", "grimy": "dirty", "greasy": "dirty",
     "unwashed": "dirty", "grotty": "dirty",
+    # said in the family's other language ("the sufuria is chafu": Swahili; "kasif": Persian)
+    "chafu": "dirty", "kasif": "dirty", "baridi": "cold", "sard": "cold",
     "hot": "hot", "warm": "hot", "heated": "hot", "warmed": "hot", "cooked": "hot", "cold": "cold",
     "cool": "cold", "unheated": "cold", "whole": "whole", "unsliced": "whole",
     "open": "open", "opened": "open", "closed": "closed", "shut": "closed",
@@ -558,6 +560,10 @@ FILLER = {("um",), ("umm",), ("uh",), ("uhh",), ("uhm",), ("er",), ("erm",),   #
           ("yene", "konjo"), ("egziabher", "yimesgen"), ("chigir", "yelem"), ("betam",),
           # and as others type them ("tenastelign": hello; "ameseginalehu": thank you; "ebakachihu":
           # please, to several; "wey gud": oh my; "gobez": well done; "yikirta": sorry; "tolo": quick)
+          # Swahili ("tafadhali": please; "asante": thanks; "haraka": quick; "sawa": OK; "pole": sorry;
+          # "jamani": come on, oh dear; "kweli": truly; "kabisa": completely; "sana": very)
+          ("tafadhali",), ("asante",), ("asanteni",), ("asante", "sana"), ("haraka",), ("sawa",), ("pole",),
+          ("pole", "sana"), ("jamani",), ("kweli",), ("kabisa",), ("sana",), ("mambo",), ("habari",), ("karibu",),
           ("tenastelign",), ("tenastilign",), ("ameseginalehu",), ("ameseginalew",), ("ebakachihu",), ("ebakachuh",),
           ("wey", "gud"), ("gobez",), ("gobeze",), ("yikirta",), ("yiqirta",), ("tolo",), ("tolo", "tolo"),
           ("please",), ("kindly",), ("abeg",), ("biko",), ("just",), ("quickly",), ("now",), ("for", "me"), ("for", "us"), ("could", "you"),

@@ -478,6 +478,7 @@ pitem_plain: posplace ihead
 place_appos: "," ("which" | "that" | "it" | "they") ("has" | "have" | "holds" | "hold" | "already" "has") items now? ","
            | "," ("with" | "holding" | "having") its? items now? ","
 appos: ","? ("all" | "both") (NUM ("of" ("them" | "it"))? | "of" ("them" | "it")) ","?
+     | "," "both" ","                                   // "P's X, both, to Q": the two there
 swapwhat: ihead (lsep ihead)* | "everything" ("they" ("hold" | "have"))? | "contents" | "loads" | "stock" | "places" | "goods" | "items"
 stay: be | "be" "left" | "remain" | "be" "kept" | "sit" | "stay" | "lie" | "go" | "be" "placed" | "be" "stored" | "belong" | "end" "up"
 both: "both"

@@ -73,6 +73,8 @@ FILLERS = {"the", "please", "kindly", "units", "unit", "pieces", "piece", "boxes
            # Swahili and Sheng said in Kenyan English ("Clear packing kabisa": completely, "haraka":
            # quickly, "tafadhali": please, "bana": man, "sasa": now)
            "kabisa", "haraka", "tafadhali", "bana", "sasa",
+           # Sinhala said in Sri Lankan English orders ("ikmanata": quickly)
+           "ikmanata", "ikmanin",
            # Mexican Spanish said in English orders ("porfa move ...", "ahorita put ...", "oye, ..."):
            # please, right now, hey, then, well, come on ("ya" is "you" in "can ya": SPELLINGS)
            "porfa", "porfavor", "ahorita", "oye", "luego", "pues", "bueno", "orale", "andale",

@@ -493,8 +493,8 @@ class SentenceReader(GoalRules, TailRules, RuleScope, Interpreter):
                 self.last_item = [head]
                 amount: dict = {"all": True}
                 appos = self.sub(node, "appos")
-                if appos and self.toks(appos[0], "NUM"):
-                    amount["expect"] = int(self.toks(appos[0], "NUM")[0].value)
+                if appos and _expected(self, appos[0]) is not None:
+                    amount["expect"] = _expected(self, appos[0])
                 out.append({"items": {"names": [head]}, "amount": amount, "words": words})
         return out
 
@@ -510,9 +510,7 @@ class SentenceReader(GoalRules, TailRules, RuleScope, Interpreter):
         head = self.ihead(self.sub(node, "ihead")[0], words)
         self.last_item = [head]
         appos = self.sub(node, "appos")
-        expect = None
-        if appos and self.toks(appos[0], "NUM"):
-            expect = int(self.toks(appos[0], "NUM")[0].value)
+        expect = _expected(self, appos[0]) if appos else None
         if node.data == "pi_frac":
             fr = self.sub(node, "frac")
             if not fr:
@@ -787,3 +785,11 @@ class SentenceReader(GoalRules, TailRules, RuleScope, Interpreter):
         else:
             raise TranslationError(f"{quote(self.words(node))}: cannot read this")
 
+
+
+def _expected(reader: SentenceReader, appos: Tree) -> int | None:
+    """The count an apposition says the things come to ("all 5 of them": 5; "both": 2), or None
+    where it says none ("all of them")."""
+    if reader.toks(appos, "NUM"):
+        return int(reader.toks(appos, "NUM")[0].value)
+    return 2 if "both" in reader.words(appos).lower().split() else None
