@@ -618,7 +618,8 @@ def _operative_at(ws: list[str], k: int) -> bool:
 def _all_over(ws: list[str], k: int) -> bool:
     """Whether the word at ``k`` is of "all over" ("grease all over my phone": everywhere on it),
     neither a quantity nor a bound."""
-    return (ws[k] == "all" and k + 1 < len(ws) and ws[k + 1] == "over") or (ws[k] == "over" and k > 0 and ws[k - 1] == "all")
+    return (ws[k] == "all" and k + 1 < len(ws) and ws[k + 1] == "over") or \
+        (ws[k] == "over" and k > 0 and ws[k - 1] == "all")
 
 
 #: what a demonstrative opening a report may be said with ("that one", "those ones")

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from typing import Callable, Mapping
 
-#: patois word -> the English word(s); "mi", "dem", "fi", "him" depend on what follows (the reader)
+#: patois word -> the English word(s); "mi", "dem", "fi", "him" depend on what follows (:func:`english_of`)
 PATOIS = {"di": "the", "de": "the", "pon": "on", "inna": "in", "ina": "in", "eena": "in", "outa": "out of",
           "offa": "off", "den": "then", "dat": "that", "dis": "this", "tek": "take", "yuh": "you", "unu": "you",
           "nuh": "do not", "nah": "not", "cyaan": "can not", "caan": "can not", "ting": "thing", "tings": "things",
@@ -23,15 +23,15 @@ MARKERS = frozenset({"di", "pon", "inna", "dem", "fi", "mi", "nuh", "tek", "weh"
                      "soh", "waan", "smaddy", "an"})
 #: markers that are no English word: one of them alone is enough ("put it back pon him study desk",
 #: "tun off di TV", "mi want 40 X in P", "shift 6 of dem over")
-STRONG_MARKERS = frozenset({"mi", "dem", "di", "pon", "inna", "cyaan", "outa", "tek", "yuh", "nuh", "fi", "unu", "weh", "lef", "mek",
-                            "outta", "dutty", "haffi", "soh", "waan", "smaddy"})
+STRONG_MARKERS = frozenset({"mi", "dem", "di", "pon", "inna", "cyaan", "outa", "tek", "yuh", "nuh", "fi", "unu", "weh",
+                            "lef", "mek", "outta", "dutty", "haffi", "soh", "waan", "smaddy"})
 #: words after "fi" that make it "for" (who or what for: "fi mi", "fi di children"); before
 #: anything else "fi" is "to" ("mi need fi pack it")
 FOR_WHOM = frozenset({"mi", "di", "de", "dem", "him", "yuh", "unu", "we", "she", "he", "dat", "dis", "me", "the",
                       "my", "her", "his", "them", "you"})
 
 #: words that "dem" after them makes plural besides the world's ("di school tings dem", "di children dem")
-PLURAL_AFTER = frozenset({"things", "thing", "ones", "children", "pickney", "kids", "grandchildren", "clothes"})
+_PLURAL_AFTER = frozenset({"things", "thing", "ones", "children", "pickney", "kids", "grandchildren", "clothes"})
 #: words after which "mi" is "me" (an object: "bring mi", "fi mi", "pon mi")
 _BEFORE_ME = frozenset({"for", "to", "on", "in", "with", "from", "bring", "give", "pass", "show", "tell", "help", "let",
                         "make", "get", "call", "wake", "of", "hear", "see"})
@@ -75,7 +75,7 @@ def english_of(words: list[str], known: Callable[[str], bool], noun: Callable[[s
             said = "my" if noun(nxt) else "me" if k and before in _BEFORE_ME else "i"
         elif w == "him":
             said = "his" if noun(nxt) else None
-        elif w == "dem" and k and (noun(before) or before in PLURAL_AFTER):
+        elif w == "dem" and k and (noun(before) or before in _PLURAL_AFTER):
             said = PLURAL
         elif w == "dem":
             said = "those" if noun(nxt) else "them"
