@@ -21,6 +21,10 @@ from tests.test_reader_australian_and_levantine_english import YARD, flat  # noq
     ("machan bring 2 bikkie to the loading dock", "bring 2 biscuit to dock"),
     ("swap cider on grog cage and pick face machan", "swap cider on cage and face"),
     ("Send one more of each product to the loading dock already", "add one more of each product to dock"),
+    # "fully" after "clear P"; "do it" closing an order urges it; "need N X at P" (who needs left out)
+    ("Clear the loading dock fully", "empty dock"),
+    ("pick face should have 6 cider , do it", "pick face should have 6 cider"),
+    ("need 6 cider at pick face", "pick face should have 6 cider"),
     # "both": the two there (the loading dock holds 2 cider)
     ("Take the loading dock 's cider , both , to pick face", "move all cider from dock to face"),
 ])
@@ -33,6 +37,8 @@ def test_sri_lankan_english_orders_read_as_their_plain_english(said: str, plain:
     "Take grog cage 's cider , both , to pick face",
     # a word of address before no verb is no order
     "machan 3 cider from grog cage to pick face",
+    # "do it" with more than an urging is an order in a verb not read
+    "send 2 cider to pick face , do it twice",
 ])
 def test_what_the_rules_do_not_cover_stays_refused(said: str) -> None:
     with pytest.raises(PipflowError):
@@ -57,3 +63,18 @@ def test_a_state_said_in_the_other_language_selects_as_the_english_does(flat: di
         goal("heat the hot pie", flat)
     with pytest.raises(PipflowError):
         goal("wash the chafu pie", flat)   # the pie is not dirty (nor washable): no such pie
+
+
+@pytest.mark.parametrize("said", [
+    "need 2 cider at the loading dock , cheers. leave whats already in there as it is",
+    "add 2 cider to the loading dock , leave what is in there as it is",
+])
+def test_an_order_with_is_in_it_is_never_set_aside_as_a_report(said: str) -> None:
+    """ "leave what is in there as it is" opens as an order (a verb, then what it acts on): its "is"
+    is no report's, so it is never set aside; read, it keeps the dock's biscuits, else it is refused.
+    Set aside, the robots would be free to move them (the widening the issue forbids)."""
+    try:
+        got = understand(said, YARD)
+    except PipflowError:
+        return
+    assert (got["goal"].get("dock") or {}).get("biscuit") == 3

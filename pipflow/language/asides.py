@@ -807,6 +807,7 @@ CLOSINGS = frozenset({(*that, *rest, *later) for that in (("thats",), ("that", "
 URGINGS = frozenset({("sort", "it", "out"), ("sort", "it"), ("sort", "that", "out"), ("sort", "it", "out", "now"),
                      ("get", "it", "sorted"), ("get", "it", "done"), ("get", "that", "done"), ("make", "it", "happen"),
                      ("see", "to", "it"), ("chop", "chop"), ("do", "the", "needful"), ("do", "needful"),
+                     ("do", "it"), ("just", "do", "it"), ("do", "it", "now"),
                      # asking to be told when it is done: a reply, nothing to do to the stock
                      ("revert", "back"), ("revert",), ("let", "me", "know"), ("update", "me"), ("keep", "me", "posted"),
                      ("report", "back"), ("confirm", "back")})
@@ -991,7 +992,7 @@ def content_free(words: Iterable[str], content: Callable[[str], bool],
         return True   # its "all" or "team" is who is greeted, no quantifier or robot group
     if names is not None and is_pleasantry(ws, names):
         return True
-    if reports and names is not None and is_report(ws, names):
+    if reports and names is not None and is_report(ws, names) and not _order_opening(ws, content, names):
         return True   # "it is getting serviced": a report, whatever grammar words it uses
     subject = _demonstrative_subject(ws)
     if ws[0] in ATTACHING and not _it_is(ws) and not subject:
@@ -1018,6 +1019,18 @@ def _this_time(ws: list[str], k: int) -> bool:
     """Whether the word at ``k`` is a demonstrative before a span of time ("orders this week"):
     it says when, no object of a verb."""
     return ws[k] in _DEMONSTRATIVES and k + 1 < len(ws) and ws[k + 1] in _SPANS
+
+
+#: words that open what a verb of an order acts on ("leave what is in there as it is", "keep the rest")
+_OBJECT_OPENERS = frozenset(DETERMINERS | OBJECT_PRONOUNS | {"what", "whatever", "all", "every", "everything", "any",
+                                                             "anything", "some", "each"})
+
+
+def _order_opening(ws: list[str], content: Callable[[str], bool], names: Callable[[str], bool]) -> bool:
+    """Whether a clause opens as an order does: a word of the domain's grammar that names nothing of
+    the world, then what it acts on ("leave what is already in there as it is"). Its "is" is no
+    report's: the clause asks for something, and is never set aside as a report."""
+    return len(ws) > 1 and content(ws[0]) and not names(ws[0]) and ws[1] in _OBJECT_OPENERS
 
 
 def _it_is(ws: list[str]) -> bool:

@@ -197,7 +197,7 @@ want: ("i" | "we") ("want" | "would" "like" | "like" | "need" | "wish") | "id" "
     | "i" "want" "it" "so" that?
 that: "that"
 there_be: ("there" | "theyre" | "their" | "theres") (modal? "be" | "is" | "are") | "make" "it"
-        | "theres" | ("we" | "i") modal? ("need" | "want" | "require" | "needs")
+        | "theres" | ("we" | "i") modal? ("need" | "want" | "require" | "needs") | "need"
 // "9 bags should come to staging": where they go, seen from there
 go: "go" | "goes" | "come" | "comes" | "move" | "moves" | "be" "moved" | "be" "sent" | "be" "taken" | "be" "brought"
   | "be" "transferred" | "be" "shipped" | "be" "relocated" | "be" "carried" | "be" "delivered"

@@ -55,7 +55,7 @@ FILLERS = {"the", "please", "kindly", "units", "unit", "pieces", "piece", "boxes
            "crate", "cases", "case", "pcs", "pallets", "pallet", "x", "exactly", "precisely",
            "actually", "really", "hey", "um", "uh", "ok,", "just", "right", "away", "quickly",
            "now", "today", "currently", "sku", "skus", "of", "moment", "pls", "plz", "asap", "thx",
-           "completely", "entirely", "immediately", "soon", "tonight", "thanks", "overnight",
+           "completely", "entirely", "fully", "totally", "immediately", "soon", "tonight", "thanks", "overnight",
            "sharpish", "pronto", "promptly", "swiftly",
            # a sentence adverb that only turns to the next thing ("Anyway send 6 ...")
            "anyway", "anyways",
