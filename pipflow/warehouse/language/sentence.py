@@ -493,8 +493,9 @@ class SentenceReader(GoalRules, TailRules, RuleScope, Interpreter):
                 self.last_item = [head]
                 amount: dict = {"all": True}
                 appos = self.sub(node, "appos")
-                if appos and _expected(self, appos[0]) is not None:
-                    amount["expect"] = _expected(self, appos[0])
+                expect = _expected(self, appos[0]) if appos else None
+                if expect is not None:
+                    amount["expect"] = expect
                 out.append({"items": {"names": [head]}, "amount": amount, "words": words})
         return out
 

@@ -99,18 +99,16 @@ class TailRules:
             self.statements.append(self._goal_statement(places, np, self.last_add))
 
     def t_not_to(self, node: Tree) -> None:
-        words = self.words(node)
-        # "Move trays out of freezer A, but not to pick face": pick face keeps what it has of them
-        places = self.place_list(self.sub(node, "places")[0])
-        moved = [n for st in self.statements for n in (st.get("items") or {}).get("names", [])]
-        if not moved:
-            raise TranslationError(f"{quote(words)}: not what? nothing is moved before it")
-        self.statements.append({"op": "keep", "places": {"names": places}, "items": {"names": list(dict.fromkeys(moved))},
-                                "inflow_only": False, "words": words})
+        """ "Move trays out of freezer A, but not to pick face": pick face keeps what it has of them."""
+        self._keeps_what_is_moved(node)
 
     def t_not_from(self, node: Tree) -> None:
+        """ "Send 10 X to staging but nothing from the cooler": the cooler keeps what it has of them."""
+        self._keeps_what_is_moved(node)
+
+    def _keeps_what_is_moved(self, node: Tree) -> None:
+        """The places of ``node`` keep what they have of the things moved before it."""
         words = self.words(node)
-        # "Send 10 X to staging but nothing from the cooler": the cooler keeps what it has of them
         places = self.place_list(self.sub(node, "places")[0])
         moved = [n for st in self.statements for n in (st.get("items") or {}).get("names", [])]
         if not moved:
