@@ -3,8 +3,11 @@ with Patois words, an architect in Addis Ababa writing English with Amharic in L
 their first measurements. Warehouse: the Jamaican Creole function words the household reader read
 ("mi", "dem", "fi", "yuh", "pon": :func:`pipflow.language.patois.english_of`) read by the warehouse
 reader too, "fi" after a subject as "should"; a robot addressed, then "you (should)"; remarks of
-"all over" and of a demonstrative's state ("that one bruk", "those dent up"). Household: Amharic
-talk as others type it. The worlds of the Australian and Levantine tests, through the real readers;
+"all over" and of a demonstrative's state ("that one bruk", "those dent up"); "nothing / none of
+them from P" keeps P's stock; "R must not go near X", "let only R handle X", "stay off this job";
+"P needs N X added", "send the excess"; a plural noun and a verb in -ing as a report. Household:
+Amharic talk as others type it; things said first taken up by "both", "all three", "switch on it";
+a kinship word with "'s" says whose; a condition's thing "sitting" on its place. The worlds of the Australian and Levantine tests, through the real readers;
 each rule with what stays as said or refused."""
 from __future__ import annotations
 

@@ -1,7 +1,8 @@
 """Issue 23, from pair MM's sets (a shift supervisor at the Katunayake export zone writing Sri Lankan
 English with Sinhala words, a bank manager in Dar es Salaam writing English with Swahili), after
 their first measurements. Warehouse: Sinhala words of address and talk ("machan", "aney", "hari",
-"ikmanata"), "already" closing an order, "both" as an apposition (the two there). Household: Swahili
+"ikmanata"), "already", "fully" and "do it" closing an order, "need N X at P", "both" as an
+apposition (the two there), and an order with "is" in it never set aside as a report. Household: Swahili
 talk ("tafadhali", "sawa", "jamani", "kweli") and the home's states said in the family's other
 language ("chafu", "kasif": dirty; "baridi", "sard": cold). The worlds of the Australian and
 Levantine tests, through the real readers; each rule with what stays as said or refused."""

@@ -610,7 +610,7 @@ def _operative_at(ws: list[str], k: int) -> bool:
         return False
     if k == 0 and ws[0] in ("those", "these") and nxt in ("are", "were", "re", "is") and len(ws) > 2:
         return False   # "..., those are booked for the other party": the subject of a report, no selection
-    if k < _demonstrative_subject(ws):
+    if k < 2 and k < _demonstrative_subject(ws):   # the subject is at most "that one"
         return False   # "..., that one bruk", "..., those dent up": said of the things just named
     return near_operative(ws[k])
 
