@@ -650,8 +650,9 @@ def test_what_is_for_a_person_and_talk_about_them_is_set_aside(bothy):
     """ "slice the turnip for Father Tom", "switch on the lamp for him", "wash the beaker, I need it
     for sugar" (no sugar in the bothy): who or what it is for is set aside, said in the notes;
     "he can't sleep", "Father Tom always forgets": talk about a person, set aside. A clause about
-    a person that may ask something ("he wants it warm", "she is cold") is never set aside, and a
-    purpose that names a thing of the home stays (refused)."""
+    a person that may ask something ("he wants it warm", "she is cold", "he can't see") is never set
+    aside: it is their need, passed on by the speaker (read as "I want it warm", "I am cold", "I
+    can't see", said in the notes), and a purpose that names a thing of the home stays (refused)."""
     assert goal("Slice turnip for Father Tom.", bothy) == ({}, {"turnip": ["sliced"]})
     assert goal("Switch on the lamp for him.", bothy) == ({}, {"lamp": ["on"]})
     assert goal("Slice the turnip for Father Tom and wash the jug.", bothy) == \
@@ -661,9 +662,14 @@ def test_what_is_for_a_person_and_talk_about_them_is_set_aside(bothy):
     assert goal("He can't sleep, switch on the lamp.", bothy) == ({}, {"lamp": ["on"]})
     notes = translate("Mrs Patel is sleeping, switch on the lamp.", bothy)["notes"]
     assert any("talk about someone" in n for n in notes), notes
-    for command in ("Wash the jug, he wants it warm.", "She is cold, switch on the lamp.",
-                    "Switch on the lamp, he can't see.", "Slice the turnip for Father Tom and the baby.",
-                    "Slice the turnip for the plum.", "Father Tom is sleeping."):
+    assert goal("Switch on the lamp, he can't see.", bothy) == goal("Switch on the lamp, I can't see.", bothy)
+    assert goal("She is cold, switch on the lamp.", bothy) == goal("I am cold, switch on the lamp.", bothy)
+    notes = translate("Switch on the lamp, he can't see.", bothy)["notes"]
+    assert any("'he can' read as 'i can'" in n for n in notes), notes
+    with pytest.raises(Refusal, match="jug cannot be hot"):   # the jug is not heatable: asked the impossible
+        translate("Wash the jug, he wants it warm.", bothy)
+    for command in ("Slice the turnip for Father Tom and the baby.", "Slice the turnip for the plum.",
+                    "Father Tom is sleeping."):
         with pytest.raises(TranslationError):
             translate(command, bothy)
 

@@ -159,7 +159,10 @@ def _parse_with_people(command: str, world: dict, notes: list[str]) -> list[dict
             raise
         try:
             readings = _parse_with_asides(read, world, mine)
-        except TranslationError:
+        except TranslationError as again:
+            # the command as said is refused; the wording with its people read is where candidate
+            # readings start too (it may stop only at a choice of which thing is meant)
+            exc.reworded = (read, again, mine)
             raise exc from None
         del notes[len(notes) - len(first):]   # the notes of the reading that failed
         notes += mine

@@ -82,7 +82,8 @@ BEING = {"is", "are", "sits", "sit", "sat", "lies", "stays", "was", "were"}
 #: object ("he sits the whole day in the armchair", "Abiye is reading in the salon")
 THIRD_POSTURE = frozenset(POSTURE | {"the", "whole", "day", "always", "usually", "mostly", "morning", "afternoon",
                                       "sleeping", "asleep", "dozing", "napping", "resting", "reading", "studying",
-                                      "working", "praying", "waiting", "sweating", "relaxing", "playing", "awake"})
+                                      "working", "praying", "waiting", "sweating", "relaxing", "playing", "awake",
+                                      "staying", "lounging", "chilling", "today", "tonight"})
 
 
 #: what a person does with a thing where they are ("Abiye is reading the gazeta in the salon")
@@ -378,8 +379,8 @@ class _Reader:
             j = i + n + (self.words[i + n] in BEING)
             found = place_said(self.words, j, self.index, THIRD_POSTURE) or \
                 place_said(self.words, self._past_what_they_do(j), self.index, THIRD_POSTURE)
-            if found is not None:
-                spans.append((i, found[0]))
+            if found is not None:   # "... so she is on the sofa": the joiner goes with the clause
+                spans.append((i - (i > 0 and self.words[i - 1] in ("and", "so", "but")), found[0]))
                 places.append(found[1])
         distinct = {tuple(p) for p in places}
         return spans, (places[0] if places else None), len(distinct) > 1
@@ -400,17 +401,38 @@ class _Reader:
                  if any(r["kind"] == "object" for r in self.index.get(tuple(self.words[k:k + m]), []))), default=0)
         return k + n if n else j
 
-    def talk(self, i: int) -> int:
-        """The end of a clause at ``i`` that is talk about a person (module docstring, 3), or 0."""
+    def talk(self, i: int, stop: int | None = None) -> int:
+        """The end of a clause at ``i`` that is talk about a person (module docstring, 3), or 0;
+        ``stop``: where the clause ends at the latest (a clause of where someone is begins there)."""
         # "he" and "she" open a clause of their own wherever they stand ("... in the lounge shes always cold")
         n = self.person(i) if self.clause_start(i) or self.words[i] in _SUBJECT_PRONOUNS else 0
         if not n:
             return 0
-        end = self.clause_end(i)
+        end = min(self.clause_end(i), stop if stop is not None and stop > i else len(self.words))
         rest = self.words[i + n:end]
         if not rest or any(self._keeps(rest, j) for j in range(len(rest))):
             return 0
         return end
+
+    def need_passed_on(self, i: int) -> tuple[int, str] | None:
+        """(how many words name the person, the speaker's verb) where a person at ``i`` is the
+        subject of a clause that may ask something (:func:`_asks`: "Bibi can't read", "he wants
+        the fan on", "Neema is cold") and a verb of :data:`AS_SPEAKER` follows them: the home
+        knows no people, so their need is read as the speaker's, said in the notes. None
+        elsewhere, and where the clause says where someone is (set aside before)."""
+        n = self.person(i) if self.clause_start(i) or self.words[i] in _SUBJECT_PRONOUNS else 0
+        if not n or i + n >= len(self.words) or self.words[i + n] not in AS_SPEAKER:
+            return None
+        rest = self.words[i + n:self.clause_end(i)]
+        if not any(_asks(w) and not _work_shift(rest, j) for j, w in enumerate(rest)):
+            return None
+        return n, AS_SPEAKER[self.words[i + n]]
+
+
+#: verbs after a person whose need the speaker passes on, and the speaker's form of each
+AS_SPEAKER = {"wants": "want", "needs": "need", "is": "am", "feels": "feel", "can": "can", "cannot": "cannot",
+              "could": "could", "does": "do", "would": "would", "likes": "like", "has": "have",
+              "hes": "am", "shes": "am"}
 
 
 #: words before "shift" that make it a spell of work ("up from night shift"), no verb of moving
@@ -449,6 +471,7 @@ def about_people(command: str, world: dict, notes: list[str]) -> str | None:
     out: list[str] = []
     changed = bool(spans)
     verb_at = -1      # where the clause's verb of bringing is, in ``out``
+    brought = False   # whether the sentence has a verb of bringing so far (a list of things may follow it)
     k = 0
     while k < len(words):
         if k in dropped:
@@ -457,9 +480,11 @@ def about_people(command: str, world: dict, notes: list[str]) -> str | None:
         w = words[k]
         if w in PUNCT:
             verb_at = -1
+            brought = brought and PUNCT[w] != "END"
         elif w in TO_PERSON:
             verb_at = len(out)
-        if w in TO_PERSON and r.person(k + 1, objective=True):
+            brought = True
+        if w in TO_PERSON and r.person(k + 1, objective=True) and not _her_own(r, k + 1, out):
             n = r.person(k + 1, objective=True)
             end = r.clause_end(k + 1 + n)
             there = _said_there(r, k + 1 + n, end) or (place, end, end)
@@ -470,6 +495,16 @@ def about_people(command: str, world: dict, notes: list[str]) -> str | None:
             changed, k = True, end
             continue
         n = r.person(k + 1, objective=True) if w in ("to", "for") else 0
+        aside = _for_whom_end(r, k, n) if w == "for" and verb_at >= 0 and _destination_said(r, out, verb_at) else 0
+        if aside:   # "bring them back to the table for him (to eat)": the place is said; who for is an aside
+            said.append(f"'{' '.join(words[k:aside])}': who it is for (set aside)")
+            changed, k = True, aside
+            continue
+        if w == "there" and brought and spans and place and r.clause_end(k + 1) == k + 1:
+            out += ["to", "the"] + place   # "Bibi is on the sofa. Bring her glasses there"
+            said.append(f"'there' read as the {' '.join(place)}, where they are")
+            changed, k = True, k + 1
+            continue
         if n and verb_at >= 0:
             end = r.clause_end(k + 1 + n)
             there = _said_there(r, k + 1 + n, end) or (place, k + 1 + n, k + 1 + n)
@@ -494,10 +529,17 @@ def about_people(command: str, world: dict, notes: list[str]) -> str | None:
                 said.append(f"'for {' '.join(words[k + 1:dish])}': what it is for, nothing of this home (set aside)")
                 changed, k = True, dish
                 continue
-        end = r.talk(k)
+        end = r.talk(k, next((a for a, _ in spans if a > k), None))
         if end:
             said.append(f"'{' '.join(words[k:end])}': talk about someone, no order (set aside)")
             changed, k = True, end
+            continue
+        speaker = r.need_passed_on(k)
+        if speaker:   # "Bibi can't read", "he wants the fan on": their need, passed on by the speaker
+            n, verb = speaker
+            out += ["i", verb]
+            said.append(f"'{' '.join(words[k:k + n + 1])}' read as '{'i ' + verb}': their need, passed on")
+            changed, k = True, k + n + 1
             continue
         out.append(w)
         k += 1
@@ -556,6 +598,72 @@ def _said_there(r: _Reader, k: int, end: int) -> tuple[list[str], int, int] | No
             return None
         return found[1], j, end
     return None
+
+
+#: words before "back" that say someone comes back ("when he's back", "once she gets back")
+_COMES = frozenset({"is", "s", "are", "he", "she", "they", "hes", "shes", "gets", "get", "comes", "come"})
+#: words after which a sentence goes on to another order
+_SENTENCE_GOES_ON = frozenset({".", "!", "?", ";", "but", "then", "so"})
+#: words after which "on" or "in" says where a thing goes
+_PUT_BEFORE = frozenset({"put", "place", "set", "leave", "keep", "it", "them", "back"})
+#: prepositions that say where a thing brought goes
+_DESTINATION = frozenset({"to", "into", "onto"})
+
+
+def _destination_said(r: _Reader, out: list[str], verb_at: int) -> bool:
+    """Whether the clause read so far (``out`` from its verb of bringing at ``verb_at``) says where
+    the thing goes: "to", "into" or "onto" and a place of the home ("bring them back to the table"),
+    or "on" / "in" after a verb of putting or what is put ("put it on the counter")."""
+    for j in range(verb_at + 1, len(out)):
+        # "on" / "in" after what is put ("put it on the counter", "them back in the box"); after a
+        # thing's name it may say which thing ("the tea on the tray")
+        if out[j] in _DESTINATION or out[j] in ("on", "in") and out[j - 1] in _PUT_BEFORE:
+            k = j + 1
+            while k < len(out) and out[k] in ("the", "my", "our", "his", "her", "their"):
+                k += 1
+            if any(ref["kind"] == "place" for n in range(1, 5) for ref in r.index.get(tuple(out[k:k + n]), [])) \
+                    or out[k:k + 1] and out[k] in _place_heads(r.world):   # "back to the table" said before
+                return True
+    return False
+
+
+@per_world
+def _place_heads(world: dict) -> frozenset[str]:
+    """The last words of the names of the home's places ("table" of "dining table")."""
+    return frozenset(key[-1] for key, refs in world_phrases(world).items() if any(r["kind"] == "place" for r in refs))
+
+
+def _her_own(r: _Reader, k: int, out: list[str]) -> bool:
+    """ "bring her glasses there", "take her mug to the sink": "her" before a thing's name, in a
+    clause that says where the thing goes ("there", "to P"), is whose the thing is, not whom it is
+    brought to."""
+    if r.words[k] != "her" or k + 1 >= len(r.words) or r.words[k + 1] in PUNCT:
+        return False
+    # the things listed ("her knee cream, her glasses and her book there") to where the sentence
+    # goes on to another order
+    end = k + 1
+    while end < len(r.words) and r.words[end] not in _SENTENCE_GOES_ON:
+        end += 1
+    rest = r.words[k + 1:end]
+    return "there" in rest or _destination_said(r, ["bring"] + rest, 0)
+
+
+def _for_whom_end(r: _Reader, k: int, n: int) -> int:
+    """The end of "for" + a person (``n`` words) at ``k`` closing its clause, or with "to" and what
+    they will do after it to the clause's end where those words name nothing of the home, hold no
+    number and no operative word ("for Baba to connect when he is back"); 0 otherwise ("for Rose to
+    put in the oven" is an order of its own, left to be read or refused)."""
+    if not n:
+        return 0
+    j = k + 1 + n
+    end = r.clause_end(j)
+    if j == end:
+        return j
+    rest = r.words[j:end]
+    # "back" of someone coming back ("when he is back") is no order to put a thing back
+    operative = [w for i, w in enumerate(rest) if near_operative(w) and not (w == "back" and rest[i - 1:i] and rest[i - 1] in _COMES)]
+    named = [w for w in rest if not w.isalpha() or (w in r.home and w not in FUNCTION_WORDS)]
+    return end if rest[0] == "to" and not operative and not named else 0
 
 
 def _said_first_for(words: list[str], k: int, n: int) -> int:

@@ -3,7 +3,7 @@ politeness words) a word known nowhere may be a slip of. A guess that could name
 never made: one edit (two for long stems), the same first letter, content words only."""
 from __future__ import annotations
 
-from pipflow.household.language.lexicon import FILLER, FILLER_TYPO_TARGETS, PHRASES
+from pipflow.household.language.lexicon import FILLER, FILLER_TYPO_TARGETS, PHRASES, STATES_SAID_OTHERWISE
 from pipflow.household.language.names import home_words, per_index
 from pipflow.household.language.tokens import PUNCT
 from pipflow.language.asides import FUNCTION_WORDS
@@ -28,7 +28,8 @@ _LEXICON_WORDS = frozenset(w for key in PHRASES for w in key) | frozenset(w for 
 def vocabulary(world_index: dict) -> frozenset[str]:
     """Words a misspelt word may be read as: the world's words, the lexicon's content words and
     the few politeness words of ``FILLER_TYPO_TARGETS`` ("plese")."""
-    return frozenset(w for w in _CONTENT_WORDS | FILLER_TYPO_TARGETS | home_words(world_index) if len(w) >= 3)
+    return frozenset(w for w in (_CONTENT_WORDS - STATES_SAID_OTHERWISE.keys()) | FILLER_TYPO_TARGETS
+                     | home_words(world_index) if len(w) >= 3)
 
 
 def known_word(w: str, index: dict, vocab: frozenset[str]) -> bool:

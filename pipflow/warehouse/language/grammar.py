@@ -365,7 +365,7 @@ goal: there_be items loc                                  -> g_set
     | ("can" | "could" | "would") items go to places       -> g_add
     | addv items except_places to places                   -> g_transfer_except
     | items ("on" | "in" | "at" | "from") places modal? go to places -> g_transfer
-    | items from places modal? go? to places                -> g_transfer
+    | items from places modal? go? adv? to places           -> g_transfer
     // said without "from": "3 satchels top rack to despatch"
     | items places to places                                -> g_transfer
     | items "," "from"? places to places                    -> g_transfer
@@ -490,7 +490,7 @@ refill: "restock" | "refill" | "replenish" | "top" "up" | "top" "off" | "supply"
 mult: "double" | "triple" | "quadruple" | "halve"
 swapv: "swap" | "trade" | "exchange" | "switch" | "interchange"
 emptyv: "empty" | "clear" | "clean" "out" | "clear" "out" | "empty" "out"
-emptied: "empty" | "emptied" | "cleared" | "vacant" | "cleaned" "out" | "emptied" "out" | "cleared" "out"
+emptied: "empty" | "emptied" | "cleared" | "clear" | "vacant" | "cleaned" "out" | "emptied" "out" | "cleared" "out"
 // "fill P up with X (as) far as it'll go / as much as it takes / as much as will fit": to capacity
 as_far: ","? ("as"? "far" "as" (("it" | "they") ("will" | "can")? | "itll" | "theyll") ("go" | "goes")
         | "as" "much" "as" ("it" "takes" | "will" "fit" | "fits" | "it" ("will" | "can") "take" | "it" "holds")
@@ -514,7 +514,7 @@ final: ","? "final" ("count" | "total" | "figure" | "number")
 // "P should have 3 X on it": the pronoun is P itself
 resumptive: ("on" | "in" | "at" | "inside") ("it" | "them" | "there") left?
 except_count: ("except" "for"? | "but" | "apart" "from" | "other" "than" | "excluding" | "leaving") ("one" | NUM) ("of" "them")? ("on" | "in" | "at") places
-except_what: "ones" | "those" | "them" | "what" "is" | "any" | "what" "sits" | "what" "lies" | "ones" "that" ("are" | "sit" | "lie")
+except_what: "ones" | "those" | "them" | ("what" | "whatever") "is" | "any" | "what" "sits" | "what" "lies" | "ones" "that" ("are" | "sit" | "lie")
            | ("what" | "whatever") ("is" | "s") ("sitting" | "lying" | "left" | "stored" | "kept")
 
 // ---------------------------------------------------------------- ellipsis tails
@@ -705,6 +705,8 @@ bare_only: robots ("only" | "alone")                        -> rule_only
 // "Ziggy, you should take 4 X ...": the robot addressed, then "you" (and what it is to do)
 addressed: robots ("," | ":")? ("you" oblig? | oblig)? goal
          | ("can" | "could" | "would" | "will") robots goal
+         // "Ruru, can you take 6 lamb ...": the robot addressed, then asked
+         | robots ("," | ":") ("can" | "could" | "would" | "will") "you" goal
          | robots "," ("our" | "a" | "an" | "my")? (RKIND | RTAG) "," oblig? goal  -> addressed_appos
          | ("let" | "have" | "get" | "ask" | "tell") robots "to"? goal
 scoped_goal: ("using" | "with" | "by") ("only" | "just")? robots ","? goal    -> scoped_only

@@ -91,7 +91,7 @@ EXACT_WORDS = {"exactly", "precisely"}
 SPELLINGS = {"shud": "should", "shld": "should", "u": "you", "r": "are", "wont": "wont", "gonna": "will",
              "wanna": "want", "lemme": "let", "cuz": "because", "thru": "through", "frm": "from",
              "em": "them", "yous": "you", "youse": "you", "ya": "you", "yer": "your", "atm": "now", "dun": "dont", "hv": "have",
-             "b4": "before", "tmrw": "tomorrow", "tmr": "tomorrow", "2moro": "tomorrow",
+             "b4": "before", "rn": "now", "tmrw": "tomorrow", "tmr": "tomorrow", "2moro": "tomorrow",
              # "whatever's on P" typed or transcribed without its apostrophe: its "'s" is "is"
              "whatevers": "whatever",
              # "leave P as is tho": though
@@ -305,11 +305,16 @@ IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before
           # command leaves open; it fixes nothing, and is left out ("don't mind which" likewise)
           (re.compile(r"[,;]?\s*\b(?:(?:i\s*['\u2019]?m|im|i\s+am)\s+)?not\s+(?:fussed|bothered|mithered|picky|particular)"
                       r"\s+(?:where|which|what|how|who|about\s+which)\b", re.IGNORECASE), ""),
-          (re.compile(r"[,;]?\s*\bi\s+(?:don['\u2019]?t|do\s+not)\s+mind\s+(?:where|which|how|who)\b", re.IGNORECASE), ""),
+          (re.compile(r"[,;]?\s*\b(?:i\s+)?(?:don['\u2019]?t|do\s+not)\s+mind\s+(?:where|which|how|who)(?:\s+(?:from|to))?\b",
+                      re.IGNORECASE), ""),
+          # "get 3 X onto the dock from wherever": where from is left open, as it is unsaid
+          (re.compile(r"\s*\bfrom\s+wherever\b(?!\s+(?:is|it|they|there|you|we))", re.IGNORECASE), ""),
           # "..., no excuses": insisting, no content
           (re.compile(r"[,;]?\s*\bno\s+(?:excuses|messing(?:\s+about|\s+around)?|arguments)\b", re.IGNORECASE), ""),
           # "forklifts only on this lot (job, run)" and bare "on this": "on this one", the job
           (re.compile(r"\bonly\s+on\s+this(?:\s+(?:lot|job|run|batch))?(?!\s+one\b)\b", re.IGNORECASE), "only on this one"),
+          # "Only robots that carry 5 or more on this": a rule opened by "only", closed by "on this"
+          (re.compile(r"(\bonly\b[^.;:!?,]*?\bon\s+this)(?=\s*(?:[.,;:!?]|$))", re.IGNORECASE), r"\1 one"),
           # northern "an' all" closing a clause: as well
           (re.compile(r"\ban['\u2019]?\s+all\b(?=\s*(?:[.,;:!?]|$))", re.IGNORECASE), "as well"),
           # "every shelf in the place": every shelf (the place, the building: the whole store)
@@ -761,6 +766,8 @@ COURTESY_TIMES = tuple(sorted(
     {("at", "your", "earliest", "convenience"), ("at", "your", "convenience"), ("as", "soon", "as", "possible"),
      ("as", "soon", "as", "you", "can"), ("when", "convenient"), ("when", "possible"), ("when", "you", "can"),
      ("when", "you", "have", "time"), ("when", "you", "get", "time"), ("at", "the", "earliest"),
+     # "when ur free", "whenever you're free": when the robot has no other job, no condition of the world
+     *((when, *you, "free") for when in ("when", "whenever") for you in (("you", "are"), ("youre",), ("ur",))),
      ("at", "earliest"), ("on", "priority"), ("on", "a", "priority", "basis"), ("on", "priority", "basis"),
      ("on", "an", "urgent", "basis"), ("on", "urgent", "basis"), ("urgent", "basis"),
      # "if it isn't too much trouble", "if at all possible": asked politely, no condition of the world
