@@ -176,6 +176,8 @@ CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "
                      "asante", "asanteni", "bana", "mzee", "gracias", "jefe",
                      # Sri Lankan English ("..., machan"; "... to P already": at once, no report)
                      "machan", "machang", "already",
+                     # Irish English ("..., deadly": great; "..., sound": fine; "..., grma": thanks)
+                     "deadly", "sound", "grma", "slainte",
                      # Brazilian Portuguese: thanks, "OK?" ("..., beleza?"), laughter
                      "obrigada", "obrigado", "valeu", "vlw", "beleza", "blz", "rsrs", "kkk", "kkkk", "kkkkk",
                      "valew", "galera", "pessoal", "rapidinho", "agora", "pfv", "pf",
@@ -918,6 +920,8 @@ INTERJECTIONS = frozenset({
     # Sinhala in Latin letters ("Aney, ...": oh, please; "apoi": dismay; "hari": OK; "isthuthi": thanks;
     # "ayubowan": hello)
     "aney", "anee", "apoi", "hari", "harida", "isthuthi", "istuti", "ayubowan",
+    # Irish ("Dia duit": hello; "a chara": friend; "GRMA": thanks; "sláinte": cheers; "slán": bye)
+    "dia", "duit", "chara", "grma", "slainte", "slan",
     # Thai ("Sawasdee ka, ...": hello; "kob khun": thank you; "jing jing": really; "mai pen rai": never
     # mind; "reo reo": quickly; "na ka", "krub": polite particles)
     "sawasdee", "sawatdee", "kob", "khun", "jing", "reo", "ka", "kha", "krub", "khrub", "krap", "khrap", "jaa",

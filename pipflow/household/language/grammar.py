@@ -124,7 +124,7 @@ meal: (@V_MAKE | @V_PREPARE | _vstate) @THE? @MEAL _here?
     | (@V_MAKE | @V_PREPARE) @THE? @V_STATE _here?
     | @SUBJ? (@WANT | @NEED) @THE? @MEAL
 
-observe: sthings @IS state _here?
+observe: sthings @IS @INTENS* state _here?
        | sthings _here @IS state
        | sthings @FOULS
 

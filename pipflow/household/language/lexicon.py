@@ -42,6 +42,8 @@ STATES_SAID_OTHERWISE = {
     "chafu": "dirty", "kasif": "dirty", "baridi": "cold", "sard": "cold",
     "sucio": "dirty", "sucia": "dirty", "sucios": "dirty", "sucias": "dirty", "limpio": "clean", "limpia": "clean",
     "caliente": "hot",
+    # Punjabi and Hindi ("the cup is so ganda", "the basement is too garam")
+    "garam": "hot", "thanda": "cold", "thandi": "cold", "ganda": "dirty", "gandi": "dirty", "saaf": "clean",
 }
 ADJECTIVES.update(STATES_SAID_OTHERWISE)
 #: participles of the verbs above that are no adjective of their own: "once the mug is washed"
@@ -578,6 +580,10 @@ FILLER = {("um",), ("umm",), ("uh",), ("uhh",), ("uhm",), ("er",), ("erm",),   #
           ("porfa",), ("porfavor",), ("por", "favor"), ("gracias",), ("muchas", "gracias"), ("ahorita",),
           ("andale",), ("orale",), ("oye",), ("bueno",), ("ay",), ("ay", "ay", "ay"), ("pobrecita",), ("pobrecito",),
           ("mija",), ("mijo",), ("buenos", "dias"), ("buenas", "tardes"), ("buenas", "noches"), ("gracias", "mija"),
+          # Punjabi and Hindi as Punjabi-Canadian families type them ("sat sri akal": hello; "ji": the
+          # polite particle; "acha": OK; "haye": oh; "chalo": come on; "theek hai": all right; "beta": child)
+          ("sat", "sri", "akal"), ("ji",), ("acha",), ("achha",), ("haye",), ("hai", "hai"), ("chalo",), ("theek", "hai"),
+          ("thik", "hai"), ("haanji",), ("haan", "ji"), ("beta",), ("yaar",), ("jaldi",), ("jaldi", "jaldi"),
           ("tenastelign",), ("tenastilign",), ("ameseginalehu",), ("ameseginalew",), ("ebakachihu",), ("ebakachuh",),
           ("wey", "gud"), ("gobez",), ("gobeze",), ("yikirta",), ("yiqirta",), ("tolo",), ("tolo", "tolo"),
           ("please",), ("kindly",), ("abeg",), ("biko",), ("just",), ("quickly",), ("now",), ("for", "me"), ("for", "us"), ("could", "you"),

@@ -414,6 +414,17 @@ class _Reader:
             return 0
         return end
 
+    def whose_pronoun(self, k: int) -> tuple[str, ...] | None:
+        """The person a possessive pronoun at ``k`` stands for ("his side table" where the home
+        says "Bauji's side table"): the one person the command names whose words, put before the
+        words after the pronoun, make a name of the home that those words alone are not; None where
+        no person, or more than one, does so."""
+        said = {who for j in range(len(self.words)) for who in [owner_said(self.words, j, self.owners)] if who}
+        after = self.words[k + 1:k + 5]
+        whose = {who for who in said for n in range(1, len(after) + 1)
+                 if who + tuple(after[:n]) in self.index and tuple(after[:n]) not in self.index}
+        return next(iter(whose)) if len(whose) == 1 else None
+
     def need_passed_on(self, i: int) -> tuple[int, str] | None:
         """(how many words name the person, the speaker's verb) where a person at ``i`` is the
         subject of a clause that may ask something (:func:`_asks`: "Bibi can't read", "he wants
@@ -429,6 +440,8 @@ class _Reader:
         return n, AS_SPEAKER[self.words[i + n]]
 
 
+#: pronouns that say whose a thing is
+_POSSESSIVE_PRONOUNS = frozenset({"his", "her", "their"})
 #: verbs after a person whose need the speaker passes on, and the speaker's form of each
 AS_SPEAKER = {"wants": "want", "needs": "need", "is": "am", "feels": "feel", "can": "can", "cannot": "cannot",
               "could": "could", "does": "do", "would": "would", "likes": "like", "has": "have",
@@ -484,6 +497,12 @@ def about_people(command: str, world: dict, notes: list[str]) -> str | None:
         elif w in TO_PERSON:
             verb_at = len(out)
             brought = True
+        whose = r.whose_pronoun(k) if w in _POSSESSIVE_PRONOUNS else None
+        if whose:   # "Bauji's knee is paining. Bring his stick to his side table": Bauji's side table
+            out += list(whose)
+            said.append(f"'{w} {words[k + 1]}' read as {' '.join(whose)}'s (the one person said whose it can be)")
+            changed, k = True, k + 1
+            continue
         if w in TO_PERSON and r.person(k + 1, objective=True) and not _her_own(r, k + 1, out):
             n = r.person(k + 1, objective=True)
             end = r.clause_end(k + 1 + n)
@@ -494,7 +513,8 @@ def about_people(command: str, world: dict, notes: list[str]) -> str | None:
             said.append(f"'{' '.join(words[k + 1:k + 1 + n])}' read as where the {' '.join(there[0])} is")
             changed, k = True, end
             continue
-        n = r.person(k + 1, objective=True) if w in ("to", "for") else 0
+        # "to her bedside table": "her" before a name of the home is whose it is, no person
+        n = r.person(k + 1, objective=True) if w in ("to", "for") and not _her_before_a_name(r, k + 1) else 0
         aside = _for_whom_end(r, k, n) if w == "for" and verb_at >= 0 and _destination_said(r, out, verb_at) else 0
         if aside:   # "bring them back to the table for him (to eat)": the place is said; who for is an aside
             said.append(f"'{' '.join(words[k:aside])}': who it is for (set aside)")
@@ -621,16 +641,25 @@ def _destination_said(r: _Reader, out: list[str], verb_at: int) -> bool:
             k = j + 1
             while k < len(out) and out[k] in ("the", "my", "our", "his", "her", "their"):
                 k += 1
-            if any(ref["kind"] == "place" for n in range(1, 5) for ref in r.index.get(tuple(out[k:k + n]), [])) \
-                    or out[k:k + 1] and out[k] in _place_heads(r.world):   # "back to the table" said before
+            # a place's name, or its last words ("back to the table" said before, "to her side
+            # table" of "Bauji's side table")
+            if any(tuple(out[k:k + n]) in _place_tails(r.world) for n in range(1, 5)):
                 return True
     return False
 
 
 @per_world
-def _place_heads(world: dict) -> frozenset[str]:
-    """The last words of the names of the home's places ("table" of "dining table")."""
-    return frozenset(key[-1] for key, refs in world_phrases(world).items() if any(r["kind"] == "place" for r in refs))
+def _place_tails(world: dict) -> frozenset[tuple[str, ...]]:
+    """The names of the home's places and their last words ("dining table", "table")."""
+    return frozenset(key[i:] for key, refs in world_phrases(world).items() if any(r["kind"] == "place" for r in refs)
+                     for i in range(len(key)))
+
+
+def _her_before_a_name(r: _Reader, k: int) -> bool:
+    """Whether "her" at ``k`` stands before a name of the home or its last words ("her bedside table")."""
+    return r.words[k:k + 1] == ["her"] and any(tuple(r.words[k + 1:k + 1 + n]) in r.index
+                                               or tuple(r.words[k + 1:k + 1 + n]) in _place_tails(r.world)
+                                               for n in range(1, 5))
 
 
 def _her_own(r: _Reader, k: int, out: list[str]) -> bool:

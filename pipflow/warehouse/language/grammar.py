@@ -359,7 +359,7 @@ goal: there_be items loc                                  -> g_set
     | addv items to places ","? except_count               -> g_transfer_except_count
     | addv items except_count to places                    -> g_transfer_except_count
     | putv items loc ","? except_count                     -> g_transfer_except_count
-    | items modal? go to places ","? except_places         -> g_transfer_except
+    | items modal? go? to places ","? except_places        -> g_transfer_except
     | items modal? go to places                            -> g_add
     | items to places                                      -> g_add
     | ("can" | "could" | "would") items go to places       -> g_add

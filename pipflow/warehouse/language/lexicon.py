@@ -91,7 +91,9 @@ EXACT_WORDS = {"exactly", "precisely"}
 SPELLINGS = {"shud": "should", "shld": "should", "u": "you", "r": "are", "wont": "wont", "gonna": "will",
              "wanna": "want", "lemme": "let", "cuz": "because", "thru": "through", "frm": "from",
              "em": "them", "yous": "you", "youse": "you", "ya": "you", "yer": "your", "atm": "now", "dun": "dont", "hv": "have",
-             "b4": "before", "rn": "now", "tmrw": "tomorrow", "tmr": "tomorrow", "2moro": "tomorrow",
+             "b4": "before", "rn": "now", "tmrw": "tomorrow",
+             # Irish English "ye" (you, to several), "giz" (give us: get us)
+             "ye": "you", "giz": "get", "tmr": "tomorrow", "2moro": "tomorrow",
              # "whatever's on P" typed or transcribed without its apostrophe: its "'s" is "is"
              "whatevers": "whatever",
              # "leave P as is tho": though
@@ -308,13 +310,26 @@ IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before
           (re.compile(r"[,;]?\s*\b(?:i\s+)?(?:don['\u2019]?t|do\s+not)\s+mind\s+(?:where|which|how|who)(?:\s+(?:from|to))?\b",
                       re.IGNORECASE), ""),
           # "get 3 X onto the dock from wherever": where from is left open, as it is unsaid
-          (re.compile(r"\s*\bfrom\s+wherever\b(?!\s+(?:is|it|they|there|you|we))", re.IGNORECASE), ""),
+          (re.compile(r"[,;]?\s*\bfrom\s+wherever\b(?!\s+(?:is|it|they|there|you|we))", re.IGNORECASE), ""),
           # "..., no excuses": insisting, no content
           (re.compile(r"[,;]?\s*\bno\s+(?:excuses|messing(?:\s+about|\s+around)?|arguments)\b", re.IGNORECASE), ""),
           # "forklifts only on this lot (job, run)" and bare "on this": "on this one", the job
           (re.compile(r"\bonly\s+on\s+this(?:\s+(?:lot|job|run|batch))?(?!\s+one\b)\b", re.IGNORECASE), "only on this one"),
           # "Only robots that carry 5 or more on this": a rule opened by "only", closed by "on this"
           (re.compile(r"(\bonly\b[^.;:!?,]*?\bon\s+this)(?=\s*(?:[.,;:!?]|$))", re.IGNORECASE), r"\1 one"),
+          # Irish "go raibh (míle) maith agat / agaibh" (thank you), "mo bhuachaill" (my lad), "grand job",
+          # and "so it is" closing a clause (said for stress): no content
+          (re.compile(r"[,;]?\s*\bgo\s+raibh\s+(?:mile\s+)?maith\s+(?:agat|agaibh)\b", re.IGNORECASE), ""),
+          (re.compile(r"[,;]?\s*\bmo\s+bhuachaill\b", re.IGNORECASE), ""),
+          (re.compile(r"[,;]?\s*\bgrand\s+job\b", re.IGNORECASE), ""),
+          # "..., good girl" (good lad, good man) closing an order: praise of who is addressed
+          (re.compile(r"[,;]?\s*\bgood\s+(?:girl|boy|lad|lass|man|woman)\b(?=\s*(?:[.,;:!?]|$))", re.IGNORECASE), ""),
+          (re.compile(r"[,;]?\s*\bso\s+it\s+is\b(?=\s*(?:[.,;:!?]|$))", re.IGNORECASE), ""),
+          # "... goods out (driver took the wrong lane), the cage ...": a closing bracket before a comma
+          # is that comma (two marks in a row would stand where an aside was set aside)
+          (re.compile(r"\)\s*(?=[,;])"), " "),
+          # "... to the dock instead": the order replaces another, closing "instead" adds nothing
+          (re.compile(r"\s+\binstead\b(?=\s*(?:[.,;:!?]|$))", re.IGNORECASE), ""),
           # northern "an' all" closing a clause: as well
           (re.compile(r"\ban['\u2019]?\s+all\b(?=\s*(?:[.,;:!?]|$))", re.IGNORECASE), "as well"),
           # "every shelf in the place": every shelf (the place, the building: the whole store)
