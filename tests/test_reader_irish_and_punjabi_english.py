@@ -1,7 +1,7 @@
 """Issue 23, from pair OO's sets (an early-shift supervisor in Ballycoolin writing Irish English with
 Irish words, a pharmacist in Brampton writing Punjabi-Canadian English), after their first
 measurements. Warehouse: Irish talk ("dia duit", "a chara", "GRMA", "go raibh maith agat", "mo
-bhuachaill", "sláinte", "slán"), Dublin words ("giz": give us, "ye", "deadly", "sound", "grand
+bhuachaill", "sláinte", "slán"), Dublin words ("giz": give us, "ye", "deadly", "grand
 job", "so it is"), "instead" closing an order, "every X to P except the ones in Q" without a verb,
 and a bracketed remark before a comma. Household: Punjabi and Hindi talk ("sat sri akal", "ji",
 "acha", "haye", "chalo", "theek hai", "beta", "yaar", "jaldi") and states ("garam": hot, "thanda":

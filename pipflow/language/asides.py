@@ -176,8 +176,8 @@ CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "
                      "asante", "asanteni", "bana", "mzee", "gracias", "jefe",
                      # Sri Lankan English ("..., machan"; "... to P already": at once, no report)
                      "machan", "machang", "already",
-                     # Irish English ("..., deadly": great; "..., sound": fine; "..., grma": thanks)
-                     "deadly", "sound", "grma", "slainte",
+                     # Irish English ("..., deadly": great; "..., grma": thanks)
+                     "deadly", "grma", "slainte",
                      # Brazilian Portuguese: thanks, "OK?" ("..., beleza?"), laughter
                      "obrigada", "obrigado", "valeu", "vlw", "beleza", "blz", "rsrs", "kkk", "kkkk", "kkkkk",
                      "valew", "galera", "pessoal", "rapidinho", "agora", "pfv", "pf",
