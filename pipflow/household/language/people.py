@@ -477,10 +477,8 @@ def about_people(command: str, world: dict, notes: list[str]) -> str | None:
     spans, place, two = r.whereabouts()
     if two:
         return None
-    said: list[str] = []
+    said = [f"'{' '.join(words[a:b])}': where they are; read as the {' '.join(place or [])}" for a, b in spans]
     dropped = {k for a, b in spans for k in range(a, b)}
-    for a, b in spans:
-        said.append(f"'{' '.join(words[a:b])}': where they are; read as the {' '.join(place or [])}")
     out: list[str] = []
     changed = bool(spans)
     verb_at = -1      # where the clause's verb of bringing is, in ``out``
@@ -497,10 +495,10 @@ def about_people(command: str, world: dict, notes: list[str]) -> str | None:
         elif w in TO_PERSON:
             verb_at = len(out)
             brought = True
-        whose = r.whose_pronoun(k) if w in _POSSESSIVE_PRONOUNS else None
-        if whose:   # "Bauji's knee is paining. Bring his stick to his side table": Bauji's side table
-            out += list(whose)
-            said.append(f"'{w} {words[k + 1]}' read as {' '.join(whose)}'s (the one person said whose it can be)")
+        read = _pronoun_read(r, k, brought and bool(spans), place)
+        if read:   # "his side table" (Bauji's side table), "bring her glasses there" (where she is)
+            out += read[0]
+            said.append(read[1])
             changed, k = True, k + 1
             continue
         if w in TO_PERSON and r.person(k + 1, objective=True) and not _her_own(r, k + 1, out):
@@ -520,11 +518,6 @@ def about_people(command: str, world: dict, notes: list[str]) -> str | None:
             said.append(f"'{' '.join(words[k:aside])}': who it is for (set aside)")
             changed, k = True, aside
             continue
-        if w == "there" and brought and spans and place and r.clause_end(k + 1) == k + 1:
-            out += ["to", "the"] + place   # "Bibi is on the sofa. Bring her glasses there"
-            said.append(f"'there' read as the {' '.join(place)}, where they are")
-            changed, k = True, k + 1
-            continue
         if n and verb_at >= 0:
             end = r.clause_end(k + 1 + n)
             there = _said_there(r, k + 1 + n, end) or (place, k + 1 + n, k + 1 + n)
@@ -534,21 +527,11 @@ def about_people(command: str, world: dict, notes: list[str]) -> str | None:
             said.append(f"'{' '.join(words[k + 1:k + 1 + n])}' read as where the {' '.join(there[0])} is")
             changed, k = True, there[2]
             continue
-        if n and w == "for" and clause_end(words, k + 1 + n) == k + 1 + n:   # "... for him, and ..."
-            said.append(f"'for {' '.join(words[k + 1:k + 1 + n])}': who it is for (set aside)")
-            changed, k = True, k + 1 + n
+        aside = _for_aside(r, k, n, out) if w == "for" else None
+        if aside:   # "... for him, and ...", "For Baba's dinner, cut ...", "slice the onion for soup"
+            said.append(aside[1])
+            changed, k = True, aside[0]
             continue
-        first = _said_first_for(words, k, n) if n and w == "for" and (not out or out[-1] in PUNCT) else 0
-        if first:   # "For Baba's dinner, cut the tomatoes", "for baba cut the tomatoes"
-            said.append(f"'{' '.join(words[k:first])}': who it is for, said first (set aside)")
-            changed, k = True, first
-            continue
-        if w == "for" and out and out[-1] not in PUNCT:
-            dish = _purpose(r, k + 1)
-            if dish:
-                said.append(f"'for {' '.join(words[k + 1:dish])}': what it is for, nothing of this home (set aside)")
-                changed, k = True, dish
-                continue
         end = r.talk(k, next((a for a, _ in spans if a > k), None))
         if end:
             said.append(f"'{' '.join(words[k:end])}': talk about someone, no order (set aside)")
@@ -556,26 +539,60 @@ def about_people(command: str, world: dict, notes: list[str]) -> str | None:
             continue
         speaker = r.need_passed_on(k)
         if speaker:   # "Bibi can't read", "he wants the fan on": their need, passed on by the speaker
-            n, verb = speaker
-            out += ["i", verb]
-            said.append(f"'{' '.join(words[k:k + n + 1])}' read as '{'i ' + verb}': their need, passed on")
-            changed, k = True, k + n + 1
+            out += ["i", speaker[1]]
+            said.append(f"'{' '.join(words[k:k + speaker[0] + 1])}' read as 'i {speaker[1]}': their need, passed on")
+            changed, k = True, k + speaker[0] + 1
             continue
         out.append(w)
         k += 1
     if not changed:
         return None
+    notes += said
+    return " ".join(_tidied(out, place if spans else None))
+
+
+def _tidied(out: list[str], place: list[str] | None) -> list[str]:
+    """The words read with a clause mark left with nothing before it in its sentence, and a
+    joining word left first, taken out; a cue of how it feels is felt at ``place`` (where the
+    person said is), if any."""
     cleaned: list[str] = []
-    for w in out:   # a clause mark left with nothing before it in its sentence goes
+    for w in out:
         if w in PUNCT and (not cleaned or cleaned[-1] in PUNCT):
             continue
         cleaned.append(w)
     while cleaned and cleaned[0] in ("and", "so", "but"):
         cleaned.pop(0)
-    if spans and place:
-        cleaned = _felt_where_they_are(cleaned, place)
-    notes += said
-    return " ".join(cleaned)
+    return _felt_where_they_are(cleaned, place) if place else cleaned
+
+
+def _pronoun_read(r: _Reader, k: int, brought_to_someone: bool, place: list[str] | None) \
+        -> tuple[list[str], str] | None:
+    """(the words read, the note) for a possessive pronoun that stands for the one person said
+    whose it can be (:meth:`_Reader.whose_pronoun`), or for "there" closing a clause of bringing
+    in a command that says where a person is (``brought_to_someone``): their ``place``."""
+    w = r.words[k]
+    whose = r.whose_pronoun(k) if w in _POSSESSIVE_PRONOUNS else None
+    if whose:
+        return list(whose), f"'{w} {r.words[k + 1]}' read as {' '.join(whose)}'s (the one person said whose it can be)"
+    if w == "there" and brought_to_someone and place and r.clause_end(k + 1) == k + 1:
+        return ["to", "the"] + place, f"'there' read as the {' '.join(place)}, where they are"
+    return None
+
+
+def _for_aside(r: _Reader, k: int, n: int, out: list[str]) -> tuple[int, str] | None:
+    """(where it ends, the note) of "for" at ``k`` set aside: "for <person>" closing a clause
+    (``n``: the person's words), "for <person>('s dinner)" opening one, or what it is for, naming
+    nothing of this home (:func:`_purpose`); None otherwise."""
+    words = r.words
+    if n and clause_end(words, k + 1 + n) == k + 1 + n:   # "... for him, and ..."
+        return k + 1 + n, f"'for {' '.join(words[k + 1:k + 1 + n])}': who it is for (set aside)"
+    first = _said_first_for(words, k, n) if n and (not out or out[-1] in PUNCT) else 0
+    if first:   # "For Baba's dinner, cut the tomatoes", "for baba cut the tomatoes"
+        return first, f"'{' '.join(words[k:first])}': who it is for, said first (set aside)"
+    dish = _purpose(r, k + 1) if out and out[-1] not in PUNCT else 0
+    if dish:
+        return dish, f"'for {' '.join(words[k + 1:dish])}': what it is for, nothing of this home (set aside)"
+    return None
 
 
 #: one-word cues of how a room feels ("dark", "hot", "stuffy")
