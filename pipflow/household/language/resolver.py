@@ -510,12 +510,13 @@ class Resolver:
             # said with where it comes from, to a place that heats nothing; the elided verb is a move
             # ("wash the cup on my desk": the desk says which cup)
             return {**out, "op": "put", "to": st["to"]}
-        if prev["op"] == "change" and "to" in st and prev.get("via") and self._only_a_destination(st, prev["to"], words):
+        place = self._only_a_destination(st, prev["to"], words) if prev["op"] == "change" and "to" in st \
+            and prev.get("via") else None
+        if place:
             # "heat the tortillas on the comal, and the tortillero on the mesa": the change was made
             # at a place of its own, this place makes nothing so, and the things are not there:
             # heated there is impossible, moved there is likely; which is asked, never refused as
             # impossible nor guessed
-            place = self.place_of(st["to"], words)
             raise TranslationError(f"'{words}': made {prev['to']} too, or put in {place}? ({place} makes nothing "
                                    f"{prev['to']}); say which")
         if prev["op"] == "change":
@@ -541,18 +542,18 @@ class Resolver:
             return True
         return VIA_PROPERTY[cond] in self.world["places"].get(place, {}).get("properties", [])
 
-    def _only_a_destination(self, st: dict, cond: str, words: str) -> bool:
-        """Whether the place of an elided verb's things, after a change to ``cond``, can only say
-        where they go: the place makes nothing ``cond`` and none of the things named lies there
-        (where one does, the place may say which things are meant: "wash the cup on my desk")."""
+    def _only_a_destination(self, st: dict, cond: str, words: str) -> str | None:
+        """The place of an elided verb's things, after a change to ``cond``, where it can only say
+        where they go: it makes nothing ``cond`` and none of the things named lies there (where one
+        does, the place may say which things are meant: "wash the cup on my desk"); else None."""
         if self._makes(st["to"], cond, words):
-            return False
+            return None
         place = self.place_of(st["to"], words)
         try:
             named = [n for n, _ in self.objects(st["things"], words)]
         except TranslationError:
-            return False
-        return bool(named) and all(self.world["objects"].get(n, {}).get("in") != place for n in named)
+            return None
+        return place if named and all(self.world["objects"].get(n, {}).get("in") != place for n in named) else None
 
     def _trash_gap(self, st: dict, out: dict) -> dict:
         """ "throw the chip paper away, and the stale bread in the larder": after a throwing away,

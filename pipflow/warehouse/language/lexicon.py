@@ -317,14 +317,13 @@ IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before
           (re.compile(r"\bonly\s+on\s+this(?:\s+(?:lot|job|run|batch))?(?!\s+one\b)\b", re.IGNORECASE), "only on this one"),
           # "Only robots that carry 5 or more on this": a rule opened by "only", closed by "on this"
           (re.compile(r"(\bonly\b[^.;:!?,]*?\bon\s+this)(?=\s*(?:[.,;:!?]|$))", re.IGNORECASE), r"\1 one"),
-          # Irish "go raibh (míle) maith agat / agaibh" (thank you), "mo bhuachaill" (my lad), "grand job",
-          # and "so it is" closing a clause (said for stress): no content
-          (re.compile(r"[,;]?\s*\bgo\s+raibh\s+(?:mile\s+)?maith\s+(?:agat|agaibh)\b", re.IGNORECASE), ""),
-          (re.compile(r"[,;]?\s*\bmo\s+bhuachaill\b", re.IGNORECASE), ""),
-          (re.compile(r"[,;]?\s*\bgrand\s+job\b", re.IGNORECASE), ""),
-          # "..., good girl" (good lad, good man) closing an order: praise of who is addressed
-          (re.compile(r"[,;]?\s*\bgood\s+(?:girl|boy|lad|lass|man|woman)\b(?=\s*(?:[.,;:!?]|$))", re.IGNORECASE), ""),
-          (re.compile(r"[,;]?\s*\bso\s+it\s+is\b(?=\s*(?:[.,;:!?]|$))", re.IGNORECASE), ""),
+          # Irish "go raibh (míle) maith agat / agaibh" (thank you), "mo bhuachaill" (my lad), "grand job":
+          # no content anywhere; "so it is" (said for stress) and "good girl" (lad, man: praise of who is
+          # addressed) only closing a clause
+          (re.compile(r"[,;]?\s*\b(?:go\s+raibh\s+(?:mile\s+)?maith\s+(?:agat|agaibh)|mo\s+bhuachaill|grand\s+job)\b",
+                      re.IGNORECASE), ""),
+          (re.compile(r"[,;]?\s*\b(?:so\s+it\s+is|good\s+(?:girl|boy|lad|lass|man|woman))\b(?=\s*(?:[.,;:!?]|$))",
+                      re.IGNORECASE), ""),
           # "... goods out (driver took the wrong lane), the cage ...": a closing bracket before a comma
           # is that comma (two marks in a row would stand where an aside was set aside)
           (re.compile(r"\)\s*(?=[,;])"), " "),
