@@ -42,6 +42,9 @@ NUMBER_WORDS = set(UNITS) | set(TENS) | set(SCALES) | set(COLLECTIVES) | set(ADD
     "times", "multiplied", "divided", "half", "dozens", "pairs", "couples", "trios", "quartets",
     "quintets", "sextets", "septets", "octets", "nonets", "scores", "bakers",
 }
+#: the words a count can begin with (besides digits): the readers ask :func:`read_number` at every
+#: word of every wording they try, and almost none begins one
+_FIRST_WORDS = frozenset(UNITS) | frozenset(TENS) | frozenset(COLLECTIVES) | {"a", "an", "half"}
 
 
 def is_number(word: str) -> bool:
@@ -184,6 +187,11 @@ def read_number(words: Sequence[str | None], start: int) -> tuple[int, int] | No
     with the usual precedence; a division that leaves a remainder is not a count, so it is not
     read as one.
     """
+    if start >= len(words) or words[start] is None:
+        return None
+    head = next((piece for piece in words[start].split("-") if piece), "")
+    if not (head.isdigit() or head in _FIRST_WORDS):
+        return None
     p = _Parts(words, start)
     first = _term(p, 0)
     if first is None:

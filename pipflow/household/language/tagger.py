@@ -6,7 +6,11 @@ quotes it: nothing is skipped silently (politeness words such as "please" carry 
 listed in the lexicon)."""
 from __future__ import annotations
 
+import contextlib
+import copy
 import re
+from contextvars import ContextVar
+from typing import Iterator
 
 from pipflow.errors import TranslationError
 from pipflow.language.asides import FUNCTION_WORDS
@@ -161,9 +165,47 @@ _LONGEST_PHRASE = max(len(k) for k in PHRASES)
 _LONGEST_FILLER = max(len(k) for k in FILLER)
 
 
+#: (the world, wording -> (its tags, what tagging it noted, its refusal)) while one command is read
+_KEPT: ContextVar[tuple[dict, dict[str, tuple[list[Tag] | None, list[str], TranslationError | None]]] | None] = \
+    ContextVar("household_tags_kept", default=None)
+
+
+@contextlib.contextmanager
+def tags_kept(world: dict) -> Iterator[None]:
+    """While one command is read, each wording of it is tagged once: the parser tags a wording
+    with and without its asides and people, and the candidate search comes back to wordings it
+    has tagged (over people-heavy household sets a fifth of the tagging repeated one done before)."""
+    token = _KEPT.set((world, {}))
+    try:
+        yield
+    finally:
+        _KEPT.reset(token)
+
+
 def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
-    """The command as grammar tokens (module docstring, step 1)."""
+    """The command as grammar tokens (module docstring, step 1); inside :func:`tags_kept`, a
+    wording tagged before answers as it did then (its notes said again, its refusal raised anew)."""
     notes = notes if notes is not None else []
+    kept = _KEPT.get()
+    if kept is None or kept[0] is not world:
+        return _tag(command, world, notes)
+    if command not in kept[1]:
+        said: list[str] = []
+        try:
+            kept[1][command] = (_tag(command, world, said), said, None)
+        except TranslationError as exc:
+            kept[1][command] = (None, said, exc)
+    tags, said, refusal = kept[1][command]
+    notes.extend(said)
+    if refusal is not None:   # anew: a reader may add to a refusal (its candidates, its rewording)
+        again = copy.copy(refusal)
+        again.__dict__.update({k: list(v) for k, v in vars(refusal).items() if isinstance(v, list)})
+        raise again
+    return list(tags or [])
+
+
+def _tag(command: str, world: dict, notes: list[str]) -> list[Tag]:
+    """:func:`tag`, done."""
     index = world_phrases(world)
     vocab = vocabulary(index)
     words = _rewritten(command, world, index, vocab, notes)
@@ -173,6 +215,7 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
     out: list[Tag] = []
     unknown: list[str] = []
     shared: dict[str, list[str]] = {}   # a word that is the first word of several things' names
+    countable = [x if x not in PUNCT and x.isalnum() else None for x in words]   # a count runs across neither
     i = 0
     while i < len(words):
         w = words[i]
@@ -184,7 +227,7 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
             unknown.append(w)
             i += 1
             continue
-        num = read_number([x if x not in PUNCT and x.isalnum() else None for x in words], i)
+        num = read_number(countable, i)
         nw, nl, nf = _match(words, i, index, longest_w), _match(words, i, PHRASES, _LONGEST_PHRASE), \
             _match(words, i, FILLER, _LONGEST_FILLER)
         if nl > 1 and PHRASES[tuple(words[i:i + nl])][0] in HOME_CLASSES and \

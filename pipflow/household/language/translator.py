@@ -22,6 +22,7 @@ from pipflow.household.language.candidates import candidate_readings
 from pipflow.household.language.names import held
 from pipflow.household.language.parser import parse
 from pipflow.household.language.resolver import resolve
+from pipflow.household.language.tagger import tags_kept
 from pipflow.household.world import members
 from pipflow.language.asides import said
 from pipflow.language.characters import line_readings
@@ -202,7 +203,7 @@ def translate(command: str, world: dict) -> dict:
 
     A command refused as not understood carries up to three candidate readings
     (:mod:`pipflow.household.language.candidates`); none is acted on unchosen."""
-    with held(world):   # the world's names stay as they are while the command is read
+    with held(world), tags_kept(world):   # the world's names stay as they are while the command is read
         try:
             return _translate(command, world)
         except TranslationError as exc:
