@@ -107,7 +107,9 @@ GREETINGS = frozenset({"hi", "hello", "hey", "hiya", "heya", "howdy", "morning",
                        # Romanian ("Buna seara, ...": good evening; "salut baieti": hi, lads)
                        "buna", "seara", "ziua", "dimineata", "noapte",
                        # Australian ("G'day team", "Gday all")
-                       "gday", "gidday"})
+                       "gday", "gidday",
+                       # Maltese ("Bongu", "Bonġu": good morning; "bonswa": good evening; "grazzi": thanks)
+                       "bongu", "bonswa", "grazzi"})
 #: words that open an apology or a thanks for something ("sorry for the late ask", "thanks for
 #: earlier"): what follows "for" / "about" is what one is sorry or thankful for, not an order
 PLEASANTRIES = frozenset({"sorry", "apologies", "apologise", "apologize", "pardon", "thanks", "thank", "thx",
@@ -166,7 +168,9 @@ THANKS = frozenset({"thanks", "ta", "cheers", "xiexie", "thx", "ty", "tyvm", "th
                     # Egyptian Arabic ("shokran": thanks)
                     "shokran", "shukran",
                     # Swedish ("tack", "tack så mycket": thanks)
-                    "tack", "tackar"})
+                    "tack", "tackar",
+                    # Maltese ("grazzi": thanks)
+                    "grazzi"})
 #: who an order is said to, or a tag that closes it, without a comma before it ("... on dispatch
 #: please mate", "... forklifts only mind", "... thanks lads"): never a word that is operative
 CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "boss", "love", "pet", "hun",
@@ -178,6 +182,8 @@ CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "
                      "machan", "machang", "already",
                      # Irish English ("..., deadly": great; "..., grma": thanks)
                      "deadly", "grma", "slainte",
+                     # Maltese ("..., grazzi": thanks; "ċaw", "saħħa": bye; "ħabib": friend; "insomma": anyway)
+                     "grazzi", "caw", "sahha", "habib", "habiba", "insomma",
                      # Brazilian Portuguese: thanks, "OK?" ("..., beleza?"), laughter
                      "obrigada", "obrigado", "valeu", "vlw", "beleza", "blz", "rsrs", "kkk", "kkkk", "kkkkk",
                      "valew", "galera", "pessoal", "rapidinho", "agora", "pfv", "pf",
@@ -922,6 +928,11 @@ INTERJECTIONS = frozenset({
     "aney", "anee", "apoi", "hari", "harida", "isthuthi", "istuti", "ayubowan",
     # Irish ("Dia duit": hello; "a chara": friend; "GRMA": thanks; "sláinte": cheers; "slán": bye)
     "dia", "duit", "chara", "grma", "slainte", "slan",
+    # Maltese ("Bongu": good morning; "bonswa": good evening; "mela", "allura": so; "insomma": anyway; "iva":
+    # yes; "ħabib": friend; "għaġġla": hurry; "ejja": come on; "grazzi": thanks; "ċaw", "saħħa": bye;
+    # "prosit": well done), spelt without their letters' dots and strokes (:mod:`.characters`)
+    "bongu", "bonswa", "mela", "allura", "insomma", "iva", "habib", "habiba", "ghaggla", "ejja", "grazzi", "caw",
+    "sahha", "prosit",
     # Thai ("Sawasdee ka, ...": hello; "kob khun": thank you; "jing jing": really; "mai pen rai": never
     # mind; "reo reo": quickly; "na ka", "krub": polite particles)
     "sawasdee", "sawatdee", "kob", "khun", "jing", "reo", "ka", "kha", "krub", "khrub", "krap", "khrap", "jaa",

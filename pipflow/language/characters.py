@@ -21,7 +21,8 @@ The principle, for every reader:
   reader never reads it so by itself (but see accented talk, below).
 * **An accented word is read only as talk.** A word whose only characters outside the alphabet
   are accented Latin letters ("Québec", "là", "Montréal-Nord": a letter and combining accents, by
-  Unicode's canonical decomposition) is spelled without its accents when no part of it, spelled
+  Unicode's canonical decomposition; or a letter with a stroke, "ħ", "ł", "ø", which Unicode keeps
+  whole) is spelled without its accents when no part of it, spelled
   so, is a word the reader reads (:func:`accents_folded`). It can then only be set aside as talk,
   or be quoted in a refusal; the echo says how it was spelled. A word that would read as one of
   the reader's words ("à" as "a", "café" where a place is called cafe) is refused as before: an
@@ -114,20 +115,30 @@ def _numeric(ch: str) -> bool:
     return True
 
 
+#: Latin letters with a stroke or a slash, which Unicode does not decompose into a letter and an
+#: accent (Maltese "ħ", Polish "ł", Croatian "đ", Danish "ø"): each spelt as its letter without the
+#: stroke, as those languages' speakers spell them on a keyboard without it ("habib", "zloty")
+_STROKED = {"\u0127": "h", "\u0126": "H", "\u0142": "l", "\u0141": "L", "\u0111": "d", "\u0110": "D",
+            "\u00f8": "o", "\u00d8": "O", "\u0167": "t", "\u0166": "T", "\u0180": "b", "\u0268": "i"}
+
+
 def _ascii_spelling(word: str, widths: bool = True) -> str | None:
     """The ASCII spelling of a word whose only foreign characters are fullwidth or halfwidth
     forms or accented letters (``ｓｈｅｌｆ２`` -> ``shelf2``, ``prodüct1`` -> ``product1``), for a
     suggestion; None when it has none, or when any character would change meaning (superscripts,
     fractions, other scripts' digits: their compatibility forms are not the same character).
-    ``widths=False``: accented Latin letters only ("Québec" -> "Quebec"; a fullwidth form, "ø",
-    "ß" or a sign with an accent gives None), the spelling :func:`accents_folded` may read."""
+    ``widths=False``: accented and stroked Latin letters only ("Québec" -> "Quebec", "ħabib" ->
+    "habib"; a fullwidth form, "ß" or a sign with an accent gives None), the spelling
+    :func:`accents_folded` may read."""
     out = []
     for ch in word:
         if ch.isascii():
             out.append(ch)
             continue
         decomposition = unicodedata.decomposition(ch)
-        if widths and decomposition.startswith(("<wide>", "<narrow>")):
+        if ch in _STROKED:
+            base = _STROKED[ch]
+        elif widths and decomposition.startswith(("<wide>", "<narrow>")):
             base = unicodedata.normalize("NFKC", ch)
         elif decomposition and not decomposition.startswith("<") and (widths or unicodedata.category(ch)[0] == "L"):
             base = "".join(c for c in unicodedata.normalize("NFD", ch) if not unicodedata.combining(c))  # accents

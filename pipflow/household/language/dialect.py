@@ -6,9 +6,11 @@ from __future__ import annotations
 
 from typing import Callable
 
+from pipflow.household.language.lexicon import PHRASES
 from pipflow.household.language.names import first_words, home_words
 from pipflow.household.language.restated import DETERMINERS
 from pipflow.household.language.tokens import PUNCT
+from pipflow.language import pidgin
 from pipflow.language.patois import PLURAL, english_of
 from pipflow.language.quebec import QUEBEC
 from pipflow.language.scots import SCOTS
@@ -88,6 +90,24 @@ def patois_in_home(words: list[str], index: dict, notes: list[str]) -> list[str]
     words are its things' names alone (never read as patois) and which may be part of one."""
     home = home_words(index)
     return patois_as_english(words, lambda w: (w,) in index, lambda w: w in home, notes)
+
+
+#: verbs of the home's chores that "um" after them makes "them" of besides the grammar's own
+#: (Hawai'i Pidgin: "open um up", "start um", "shake um out", "iron um")
+_PIDGIN_VERBS = frozenset({"open", "start", "shake", "iron", "leave", "throw", "toss", "take", "warm", "forget", "keep",
+                           "grab", "shut", "fold", "hang", "plug", "give", "pass", "check", "air", "soak"})
+
+
+def pidgin_in_home(words: list[str], index: dict, notes: list[str]) -> list[str]:
+    """The words with Hawai'i Pidgin read as English (:func:`pipflow.language.pidgin.english_of`),
+    never a word that names a thing of the home alone; a verb is a verb of the grammar's orders or
+    of :data:`_PIDGIN_VERBS`."""
+    def verb(w: str) -> bool:
+        return w in _PIDGIN_VERBS or str((PHRASES.get((w,)) or ("",))[0]).startswith("V_")
+    out: list[str] = []
+    for w, said in zip(words, pidgin.english_of(words, lambda w: (w,) in index, verb)):
+        _said_as(out, w, said, "Hawai'i Pidgin", notes)
+    return out
 
 
 def scots_as_english(words: list[str], known: Callable[[str], bool], notes: list[str]) -> list[str]:

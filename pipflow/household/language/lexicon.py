@@ -584,6 +584,10 @@ FILLER = {("um",), ("umm",), ("uh",), ("uhh",), ("uhm",), ("er",), ("erm",),   #
           # polite particle; "acha": OK; "haye": oh; "chalo": come on; "theek hai": all right; "beta": child)
           ("sat", "sri", "akal"), ("ji",), ("acha",), ("achha",), ("haye",), ("hai", "hai"), ("chalo",), ("theek", "hai"),
           ("thik", "hai"), ("haanji",), ("haan", "ji"), ("beta",), ("yaar",), ("jaldi",), ("jaldi", "jaldi"),
+          # Hawaiian and Hawai'i Pidgin talk ("mahalo (nui)": thank you (very much); "aloha"; "shoots": OK;
+          # "brah", "bruddah": mate; "k" for OK); its words of the grammar: :mod:`pipflow.language.pidgin`
+          ("mahalo",), ("mahalo", "nui"), ("mahalo", "nui", "loa"), ("aloha",), ("shoots",), ("brah",), ("bruddah",),
+          ("k",),
           ("tenastelign",), ("tenastilign",), ("ameseginalehu",), ("ameseginalew",), ("ebakachihu",), ("ebakachuh",),
           ("wey", "gud"), ("gobez",), ("gobeze",), ("yikirta",), ("yiqirta",), ("tolo",), ("tolo", "tolo"),
           ("please",), ("kindly",), ("abeg",), ("biko",), ("just",), ("quickly",), ("now",), ("for", "me"), ("for", "us"), ("could", "you"),
@@ -599,7 +603,7 @@ FILLER = {("um",), ("umm",), ("uh",), ("uhh",), ("uhm",), ("er",), ("erm",),   #
           # do" sighs; "on the dining table itself" stresses the place it follows
           ("do", "one", "thing"), ("na",), ("what", "to", "do"), ("itself",),
           # how a step is done, not how the home should end ("wash it nicely", "close it properly")
-          ("nicely",), ("properly",), ("carefully",), ("gently",), ("thoroughly",), ("neatly",),
+          ("nicely",), ("properly",), ("carefully",), ("gently",), ("thoroughly",), ("neatly",), ("tight",), ("tightly",),
           # Singapore English "anyhow" (carelessly: "don't anyhow touch"), a manner as "carefully" is
           ("anyhow",),
           ("could", "you", "please"), ("if", "you", "would"), ("if", "you", "could"),
@@ -785,7 +789,7 @@ MARKS = frozenset("+&.,;:!?'\"()[]-_\u2018\u2019\u201c\u201d\u2010\u2011\u2012\u
 
 
 #: texting and typing without apostrophes ("can u", "theyre", "itll", "isnt", "gonna"), written out
-_TYPED = ((r"\bu\b", "you"),
+_TYPED = ((r"(?<!['\u2019])\bu\b", "you"),   # never the "u" of "pa'u" (Hawaiian: a glottal stop written in the word)
           # "ur" before where or how one is ("while ur there", "when ur done") is "you are", else "your"
           (r"\bur\s+(?=(?:there|here|up|done|passing|over|in|out|back|home|at|finished)\b)", "you are "),
           (r"\bur\b", "your"), (r"\br\b", "are"), (r"\bw\b(?=\s+(?:the|a|an|my|your|her|his|it|them)\b)", "with"),

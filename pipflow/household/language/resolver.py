@@ -521,6 +521,10 @@ class Resolver:
                                    f"{prev['to']}); say which")
         if prev["op"] == "change":
             via = st.get("to") or prev.get("via")
+            if "to" not in st and via and self._via_said_which(prev, st, words):
+                raise TranslationError(f"'{words}': made {prev['to']} in {self.place_of(via, words)} too, or only "
+                                       f"made {prev['to']}? ('{prev['words']}': the things already lie there, so the "
+                                       "place may say which were meant); say which")
             return {**out, "op": "change", "to": prev["to"], **({"via": via} if via else {})}
         if prev["op"] == "put":
             to = st.get("to") or prev.get("to")
@@ -554,6 +558,20 @@ class Resolver:
         except TranslationError:
             return None
         return place if named and all(self.world["objects"].get(n, {}).get("in") != place for n in named) else None
+
+    def _via_said_which(self, prev: dict, st: dict, words: str) -> bool:
+        """ "wash the bowl in the sink and the mug too", the bowl in the sink already: "in the sink"
+        may say where the washing is done, or which bowl is meant; the two readings differ for the
+        gap's things where they lie elsewhere (put in the sink, or only washed)."""
+        try:
+            place = self.place_of(prev["via"], prev["words"])
+            before = [n for n, _ in self.objects(prev["things"], prev["words"])]
+            now = [n for n, _ in self.objects(st["things"], words)]
+        except TranslationError:
+            return False
+        lies = self.world["objects"]
+        return bool(before and now) and all(lies.get(n, {}).get("in") == place for n in before) and \
+            any(lies.get(n, {}).get("in") != place for n in now)
 
     def _trash_gap(self, st: dict, out: dict) -> dict:
         """ "throw the chip paper away, and the stale bread in the larder": after a throwing away,

@@ -551,7 +551,7 @@ CLOSING_PARTICLES = {"lah", "leh", "lor", "ah", "hor", "meh", "pls", "please", "
 #: what says "that again" after the thing ("the tau kwa also same", "the pan the same")
 _SAME_AFTER_THING = {("same",), ("the", "same"), ("also", "same"), ("too", "same"), ("also", "the", "same"),
                      ("same", "too"), ("same", "also"), ("as", "well"), ("same", "thing"), ("the", "same", "thing"),
-                     ("same", "same")}
+                     ("same", "same"), ("same", "way"), ("the", "same", "way")}
 
 
 def _same_for_at(words: list[str], k: int) -> tuple[int, int, int] | None:

@@ -203,7 +203,8 @@ def parse_reading(command: str, world: dict, picks: dict | None = None) -> dict:
                   "item_first": bool(lexed.tokens) and lexed.tokens[0].type in ("ITEM", "ITEMWORD")}
     if not statements and not rules:
         _nothing_asked(command, lex, observed)
-    statements = emptied_last(statements)
+    # "final" marks a count said place first while a source after it may still come; no part of the order
+    statements = [{k: v for k, v in st.items() if k != "final"} for st in emptied_last(statements)]
     set_aside = lex.aside + set_aside
     return {"command": command, "statements": statements, "rules": rules,
             **({"corrected": list(lex.corrected)} if lex.corrected else {}),

@@ -155,7 +155,11 @@ class GoalRules:
         final = bool(FINAL_WORDS & set(words.lower().split()))   # "needs 10 in total": said in all
         add = (said in NEEDING_VERBS and not each and not final and len(places) == 1
                and self._put_adds(places, nps, words, said=said))
+        start = len(self.statements)
         self.put(places, "each" if each else "one", nps, words, add=add)
+        for st in self.statements[start:]:
+            if st["op"] == "set":   # the place first, then its count: in all, whatever a source said after it
+                st["final"] = True
 
     def g_place_set_resp(self, node: Tree) -> None:
         parts = self.clause_parts(node)

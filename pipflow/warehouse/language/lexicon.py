@@ -94,6 +94,8 @@ SPELLINGS = {"shud": "should", "shld": "should", "u": "you", "r": "are", "wont":
              "b4": "before", "rn": "now", "tmrw": "tomorrow",
              # Irish English "ye" (you, to several), "giz" (give us: get us)
              "ye": "you", "giz": "get", "tmr": "tomorrow", "2moro": "tomorrow",
+             # "k" typed alone for OK ("k shift 7 X to P")
+             "k": "ok",
              # "whatever's on P" typed or transcribed without its apostrophe: its "'s" is "is"
              "whatevers": "whatever",
              # "leave P as is tho": though
@@ -114,6 +116,8 @@ LETTER_WORDS = {"n": "and", "w": "with"}
 RUN_TOGETHER = {"outta": ("out", "of"), "outa": ("out", "of"), "offa": ("off", "of"), "hafta": ("have", "to")}
 #: a count said in digits or words
 _NUMBER = r"(?:\d+|" + "|".join(sorted(NUMBER_WORDS, key=len, reverse=True)) + r")\b"
+#: a word of a robot's name or group ("the night shift ones"): no word that joins or ends a clause
+_ROBOT_WORD = r"(?!(?:and|then|so|but|or|to|from|on|in|into|at|of|while|because|cos|with)\b)[a-z][a-z0-9_]*"
 #: "3 X for each of the 4 trucks": a count for each of several (:meth:`Lexicon._times_for_each`)
 _FOR_EACH_OF = re.compile(rf"\b({_NUMBER})\s+((?:[a-z][a-z0-9_-]*\s+){{1,3}}?)for\s+each\s+of\s+(?:the\s+|those\s+|these\s+)?"
                           rf"({_NUMBER})\s+([a-z]+)\b", re.IGNORECASE)
@@ -324,6 +328,29 @@ IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before
                       re.IGNORECASE), ""),
           (re.compile(r"[,;]?\s*\b(?:so\s+it\s+is|good\s+(?:girl|boy|lad|lass|man|woman))\b(?=\s*(?:[.,;:!?]|$))",
                       re.IGNORECASE), ""),
+          # Maltese "jekk jogħġbok" (please, spelt without its dots and strokes, and as often typed)
+          # and the tag "mhux hekk?" (isn't it?) closing a clause: no content
+          (re.compile(r"\bjekk\s+j(?:o|u)?g?h?g?h?bok\b", re.IGNORECASE), "please"),
+          (re.compile(r"[,;]?\s*\bmhux\s+hekk\b(?=\s*(?:[.,;:!?]|$))", re.IGNORECASE), ""),
+          # "max 10 X from now on", "going forward": the goal holds when the work is done, which adds nothing
+          (re.compile(r"[,;]?\s*\b(?:from\s+now\s+on|going\s+forward|from\s+here\s+on(?:\s+in)?)\b(?=\s*(?:[.,;:!?]|$))",
+                      re.IGNORECASE), ""),
+          # "one more of each in P, on top of what's in there (already)": "more" says it already
+          (re.compile(r"(\bmore\b[^.;!?]*?)[,;]?\s*\bon\s+top\s+of\s+what(?:\s+is|['\u2019]?s)\s+(?:already\s+)?"
+                      r"(?:(?:in|on)\s+)?(?:there|it)(?:\s+already)?\b", re.IGNORECASE), r"\1"),
+          # "bring all the X to P, every single tin": "all" says it already
+          (re.compile(r"(\ball\b[^.;!?]*?)[,;]?\s*\bevery\s+single(?:\s+(?:one|[a-z]+))?(?=\s*(?:[.,;:!?]|$))",
+                      re.IGNORECASE), r"\1"),
+          # "move 10 X off P, wherever there's space": where to is left open, as it is unsaid
+          (re.compile(r"[,;]?\s*\bwherever\s+there(?:\s+is|['\u2019]?s)\s+(?:space|room)\b", re.IGNORECASE), ""),
+          # "the night shift ones stay on charge": those robots are not used
+          (re.compile(rf"\b((?:the\s+)?{_ROBOT_WORD}(?:\s+{_ROBOT_WORD}){{0,2}})\s+(?:stays?|remains?)\s+on\s+(?:the\s+)?"
+                      r"(?:charge|charger|charging)\b", re.IGNORECASE), r"dont use \1"),
+          # Maltese "le" (no) said twice before a count, taking one back ("10 X to P, le le, 8"), as "no no"
+          (re.compile(rf",\s*le(?:\s*,?\s*le)+\s*(?=,?\s*(?:{_NUMBER}|\d))", re.IGNORECASE), ", no no "),
+          # "P should come to N X", "must come to": a count P ends with, as "should be" says
+          (re.compile(rf"\b(should|must|has\s+to|have\s+to|needs?\s+to)\s+come\s+to\b(?=\s+(?:(?:a|an)\s+)?(?:{_NUMBER}|\d))",
+                      re.IGNORECASE), r"\1 be"),
           # "... goods out (driver took the wrong lane), the cage ...": a closing bracket before a comma
           # is that comma (two marks in a row would stand where an aside was set aside)
           (re.compile(r"\)\s*(?=[,;])"), " "),

@@ -246,6 +246,8 @@ def _transfer(st: _State, s: dict) -> None:
             elif "fraction" in a:
                 num, den = a["fraction"]
                 n = _fraction(have, num, den, words, f"{i} on {src}")
+            elif "up_to" in a:
+                n = _missing(st, a, target, sources, i, words)
             else:
                 raise TranslationError(f"'{words}': cannot tell how many {i} to move")
             if n > have:
@@ -262,6 +264,19 @@ def _transfer(st: _State, s: dict) -> None:
         for src in sources:
             if st.cur(src, i) > 0:
                 st.put(src, i, st.cur(src, i), "left where it is (except)", words, False)
+
+
+def _missing(st: _State, a: dict, target: list[str], sources: list[str], item: str, words: str) -> int:
+    """ "get staging to 10 X, taking them from rack 2": what the one target lacks of its count in all,
+    moved from the one source (a count already over it is asked: moving none there would not bring it
+    down)."""
+    if len(target) != 1 or len(sources) != 1:
+        raise TranslationError(f"'{words}': the command does not say which place gives what to which")
+    now, want = st.cur(target[0], item), int(a["up_to"])
+    if now > want:
+        raise TranslationError(f"'{words}': {target[0]} holds {now} {item}, more than {want}; taking them from "
+                               f"{sources[0]} cannot bring it down: say where the extra go")
+    return want - now
 
 
 def _swap(st: _State, s: dict) -> None:

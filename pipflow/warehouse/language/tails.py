@@ -66,8 +66,10 @@ class TailRules:
                          "from": {"names": source}, "to": to, "words": f"{s['words']}, {words}"} for to in each]
                 changed = True
             elif s["op"] == "set" and "count" in s["amount"]:
-                # "four product1 to shelf2, taking them from shelf1": the four come from there
-                out.append({"op": "transfer", "items": s["items"], "amount": s["amount"], "from": {"names": source},
+                # "four product1 to shelf2, taking them from shelf1": the four come from there; "get
+                # shelf2 to 4 product1, taking them from shelf1": 4 there in all, what is missing from there
+                amount = {"up_to": s["amount"]["count"]} if s.get("final") else s["amount"]
+                out.append({"op": "transfer", "items": s["items"], "amount": amount, "from": {"names": source},
                             "to": s["places"], "words": f"{s['words']}, {words}"})
                 changed = True
             else:
