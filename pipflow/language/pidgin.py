@@ -18,7 +18,7 @@ from typing import Callable
 PIDGIN = {"da": "the", "fo": "for", "wit": "with", "dat": "that", "dis": "this", "mo": "more", "afta": "after",
           "bumbye": "later", "dem": "them"}
 #: words that show a command is in Pidgin: two different ones and the words are read so
-MARKERS = frozenset(PIDGIN) | {"stay", "um", "kine", "pau", "brah", "li'dat", "lidat", "buggah", "shoots"}
+MARKERS = frozenset(PIDGIN) | {"stay", "um", "kine", "pau", "brah", "lidat", "buggah", "shoots"}
 #: markers that are no English word: one alone is enough ("da" before a word: Vietnamese "da", yes,
 #: stands alone before a comma, :func:`english_of`)
 STRONG_MARKERS = frozenset({"da", "fo", "bumbye", "buggah", "lidat", "afta"})
