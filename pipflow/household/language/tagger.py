@@ -7,7 +7,6 @@ listed in the lexicon)."""
 from __future__ import annotations
 
 import contextlib
-import copy
 import re
 from contextvars import ContextVar
 from typing import Iterator
@@ -197,11 +196,19 @@ def tag(command: str, world: dict, notes: list[str] | None = None) -> list[Tag]:
             kept[1][command] = (None, said, exc)
     tags, said, refusal = kept[1][command]
     notes.extend(said)
-    if refusal is not None:   # anew: a reader may add to a refusal (its candidates, its rewording)
-        again = copy.copy(refusal)
-        again.__dict__.update({k: list(v) for k, v in vars(refusal).items() if isinstance(v, list)})
-        raise again
+    if refusal is not None:
+        raise _anew(refusal)
     return list(tags or [])
+
+
+def _anew(refusal: TranslationError) -> TranslationError:
+    """A kept refusal as a new one, with a dictionary and lists of its own: a reader may add to a
+    refusal (its candidates, its rewording). Not :func:`copy.copy`: with ``distributed`` imported,
+    tblib registers a reducer for every exception class, and its copies share one ``__dict__``."""
+    again = type(refusal).__new__(type(refusal), *refusal.args)
+    again.args = refusal.args
+    again.__dict__.update({k: list(v) if isinstance(v, list) else v for k, v in vars(refusal).items()})
+    return again
 
 
 def _tag(command: str, world: dict, notes: list[str]) -> list[Tag]:
