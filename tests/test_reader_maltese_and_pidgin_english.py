@@ -82,6 +82,14 @@ def test_pidgin_reads_as_its_plain_english(flat: dict, said: str, plain: str) ->
     assert goal(said, flat) == goal(plain, flat)
 
 
+def test_pidgin_words_read_are_said_in_the_notes_once(flat: dict) -> None:
+    """The echo says how each Pidgin word was read; "no can" is one reading, "can not"."""
+    notes: list[str] = []
+    tag("da cup, no can wash um fo me", flat, notes)
+    assert "'no' read as 'can not' (Hawai'i Pidgin)" in notes and "'fo' read as 'for' (Hawai'i Pidgin)" in notes
+    assert not any(note.startswith("'can'") for note in notes)
+
+
 def test_english_stay_and_um_keep_their_english_readings(flat: dict) -> None:
     """Without Pidgin markers, "stay" is the verb of keeping and "um" a hesitation; with them, "can
     stay" is still the verb."""

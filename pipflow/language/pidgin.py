@@ -38,6 +38,8 @@ _ALREADY = frozenset({"again", "already", "still"})
 _BEFORE_THEM = frozenset({"of", "with", "without", "for", "on", "in", "from", "to", "at", "by", "fo", "wit"})
 #: verbs after "no" for which "no" is "do not" besides the domain's (``verb``)
 _NO_VERBS = frozenset({"like", "need", "want", "forget", "touch", "eat", "go", "move", "let", "use", "throw", "leave"})
+#: a word read together with the one before it ("no can": "can not"), which has none of its own
+SAID_BEFORE = ""
 #: where a clause ends
 _ENDS = frozenset({",", ".", ";", ":", "!", "?"})
 
@@ -46,7 +48,7 @@ def english_of(words: list[str], known: Callable[[str], bool], verb: Callable[[s
     """The English of each word of a command in Hawai'i Pidgin (None: read as typed), in a command
     that uses two of :data:`MARKERS` or one of :data:`STRONG_MARKERS`; never of a word that is a
     name of the world's things alone (``known``). ``verb(word)``: whether a word is a verb of the
-    domain's orders (module docstring)."""
+    domain's orders (module docstring); :data:`SAID_BEFORE` for a word read with the one before it."""
     said = {w for w in words if not known(w)}
     out: list[str | None] = [None] * len(words)
     if len(MARKERS & said) < 2 and not STRONG_MARKERS & said:
@@ -60,9 +62,8 @@ def english_of(words: list[str], known: Callable[[str], bool], verb: Callable[[s
             out[k] = "is" if _is_stay(words, k) else None
         elif w == "um":
             out[k] = "them" if k and (verb(before) or before in _BEFORE_THEM) else None
-        elif w == "no" and nxt == "can":
-            out[k] = "can"   # "no can get up": the "can" after it is read as "not"
-            out[k + 1] = "not"
+        elif w == "no" and nxt == "can":   # "no can get up"
+            out[k], out[k + 1] = "can not", SAID_BEFORE
         elif w == "no" and (verb(nxt) or nxt in _NO_VERBS):
             out[k] = "do not"
         elif w == "da" and nxt in _ENDS:   # "da," alone is no article (Vietnamese "da": yes)

@@ -92,10 +92,9 @@ def patois_in_home(words: list[str], index: dict, notes: list[str]) -> list[str]
     return patois_as_english(words, lambda w: (w,) in index, lambda w: w in home, notes)
 
 
-#: verbs of the home's chores that "um" after them makes "them" of besides the grammar's own
-#: (Hawai'i Pidgin: "open um up", "start um", "shake um out", "iron um")
-_PIDGIN_VERBS = frozenset({"open", "start", "shake", "iron", "leave", "throw", "toss", "take", "warm", "forget", "keep",
-                           "grab", "shut", "fold", "hang", "plug", "give", "pass", "check", "air", "soak"})
+#: verbs that "um" after them makes "them" of besides the grammar's own ("open um up", "start um":
+#: lexicon ``PHRASES``; "shake um out", "iron um", "no forget um": these)
+_PIDGIN_VERBS = frozenset({"shake", "iron", "forget", "fold", "plug", "pass", "check", "air", "soak"})
 
 
 def pidgin_in_home(words: list[str], index: dict, notes: list[str]) -> list[str]:
@@ -106,7 +105,8 @@ def pidgin_in_home(words: list[str], index: dict, notes: list[str]) -> list[str]
         return w in _PIDGIN_VERBS or str((PHRASES.get((w,)) or ("",))[0]).startswith("V_")
     out: list[str] = []
     for w, said in zip(words, pidgin.english_of(words, lambda w: (w,) in index, verb)):
-        _said_as(out, w, said, "Hawai'i Pidgin", notes)
+        if said != pidgin.SAID_BEFORE:
+            _said_as(out, w, said, "Hawai'i Pidgin", notes)
     return out
 
 
