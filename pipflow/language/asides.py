@@ -182,6 +182,8 @@ CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "
                      "machan", "machang", "already",
                      # Irish English ("..., deadly": great; "..., grma": thanks)
                      "deadly", "grma", "slainte",
+                     # Cajun English ("..., cher", "chère", "sha": dear; "podna": partner)
+                     "cher", "chere", "sha", "podna",
                      # Maltese ("..., grazzi": thanks; "ċaw", "saħħa": bye; "ħabib": friend; "insomma": anyway)
                      "grazzi", "caw", "sahha", "habib", "habiba", "insomma",
                      # Brazilian Portuguese: thanks, "OK?" ("..., beleza?"), laughter
@@ -933,6 +935,8 @@ INTERJECTIONS = frozenset({
     # "prosit": well done), spelt without their letters' dots and strokes (:mod:`.characters`)
     "bongu", "bonswa", "mela", "allura", "insomma", "iva", "habib", "habiba", "ghaggla", "ejja", "grazzi", "caw",
     "sahha", "prosit",
+    # Cajun English ("cher", "chère", "sha": dear; "podna": partner; "ayee": surprise)
+    "cher", "chere", "sha", "podna", "ayee", "ayyee",
     # Thai ("Sawasdee ka, ...": hello; "kob khun": thank you; "jing jing": really; "mai pen rai": never
     # mind; "reo reo": quickly; "na ka", "krub": polite particles)
     "sawasdee", "sawatdee", "kob", "khun", "jing", "reo", "ka", "kha", "krub", "khrub", "krap", "khrap", "jaa",

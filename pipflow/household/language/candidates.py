@@ -248,6 +248,7 @@ def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[
             if ws and not any(near_operative(x) for x in ws):
                 rest = _CLAUSE_SPLIT.sub(" , ", command.replace(part, " ", 1))
                 out.append((rest, f"read without '{' '.join(ws)}' (not understood)", " ".join(words_of(rest)), {}))
+    out += _without_tails(words)
     for w in unknown:   # "put the cattle on": speech to text's word for one that sounds the same (last: it
         # must not take the tries of the wordings above, which find more)
         out += [(swap(w, v), f"'{w}' read as '{v}' (said alike)", v, {}) for v in _said_alike(w, vocab)]
@@ -271,6 +272,37 @@ def _without_unread_parts(command: str, clauses: list[str], unknown: list[str]) 
         rest = joiner.join(p for p in parts if p not in dropped)
         said = "; ".join(p.strip(" .!?") for p in dropped)
         out.append((rest, f"read without '{said}' (not understood)", " ".join(words_of(rest)), {}))
+    return out
+
+
+#: words that open what a thing is for or why ("... on the table for the scones", "... so it's
+#: soft", "... before the rain comes", "... because ..."): a tail of the clause the order is in
+_TAIL_LEADS = {"for", "so", "before", "because", "cause", "cos", "coz", "since", "as"}
+#: where such a tail ends: the clause's end, or a word that joins the next order to it
+_TAIL_ENDS = {",", ".", ";", ":", "!", "?", "and", "then", "but"}
+
+
+def _without_tails(words: list[str]) -> list[tuple[str, str, str, dict]]:
+    """ "put the butter out on the table so it's soft for the scones", "bring the doll in off the
+    step before the rain comes": the command without what an order is for or why, said after it
+    in words the reader does not place; all such tails at once, then each alone. A tail that says
+    no, only, except or a bound is kept (dropped, the rest would ask for more). Offered only: why
+    a thing is done may change what is meant."""
+    tails: list[tuple[int, int]] = []
+    k = 1
+    while k < len(words):
+        if words[k] in _TAIL_LEADS and words[k - 1] not in _TAIL_ENDS:
+            end = next((j for j in range(k + 1, len(words)) if words[j] in _TAIL_ENDS), len(words))
+            if end > k + 1 and not set(words[k:end]) & _NARROWING:
+                tails.append((k, end))
+            k = end
+        k += 1
+    out: list[tuple[str, str, str, dict]] = []
+    for chosen in ([tails] if len(tails) > 1 else []) + [[t] for t in tails]:
+        cut = {i for a, b in chosen for i in range(a, b)}
+        rest = " ".join(w for i, w in enumerate(words) if i not in cut)
+        said = "; ".join(" ".join(words[a:b]) for a, b in chosen)
+        out.append((rest, f"read without '{said}' (what for, or why)", rest, {}))
     return out
 
 

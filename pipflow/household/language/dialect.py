@@ -159,6 +159,55 @@ def romance_words_as_english(words: list[str], known: Callable[[str], bool], not
     return out
 
 
+#: words that tell "some" before them is "very" ("tis some cold", "me cup is some dirty"): how a
+#: thing or the air is, never a thing of the home (those are checked against the home's names)
+_SOME_AS_VERY = frozenset({"cold", "hot", "warm", "dirty", "heavy", "dark", "wet", "soft", "full", "filthy", "messy",
+                           "sticky", "greasy", "mucky", "chilly", "freezing", "mild", "stuffy", "cluttered", "loud",
+                           "bright", "big", "small", "late", "tired", "hungry", "starved", "foul", "smelly", "gross"})
+#: what may close the clause after "some" + how ("some cold today", "some heavy so ...")
+_AFTER_HOW = frozenset(PUNCT) | {"and", "so", "today", "tonight", "now", "out", "in", "here", "there", "again",
+                                 "too", "but", "then", "already", "still"}
+#: where the thing "me" owns is taken, after a verb that may also take who it is for
+_WHERE_TO = frozenset({"to", "into", "onto", "on", "in", "over", "back"})
+
+
+def newfoundland_as_english(words: list[str], index: dict, notes: list[str]) -> list[str]:
+    """Newfoundland (and Irish, Scots, northern English) forms read as English, never a word that
+    names a thing of the home alone: "me" before a thing of the home (an adjective between) is
+    "my" ("wash me cup", "me good afghan"); after a verb that may take who a thing is for ("bring
+    me knitting") only where the clause then says where it goes, so "me" as "for me" and as "my"
+    move it alike; "some" before how a thing or the air is, with no thing after it, is "very"
+    ("tis some cold"); "is after" + a verb in -ing is the "after" perfect ("I'm after washing
+    it": I have just washed it), read as "is" + the verb (what was just done is said as a remark)."""
+    firsts = first_words(index)
+    out: list[str] = []
+    for k, w in enumerate(words):
+        nxt = words[k + 1] if k + 1 < len(words) else "."
+        before = out[-1] if out else "."
+        if w == "me" and (w,) not in index:
+            j = k + 1
+            while j < len(words) and words[j] not in firsts and words[j] in _SOME_AS_VERY | {"good", "old", "new",
+                                                                                            "best", "little"}:
+                j += 1
+            rest = words[j + 1:k + 9]
+            clause = rest[:next((i for i, x in enumerate(rest) if x in PUNCT), len(rest))]
+            if (j < len(words) and words[j] in firsts
+                    and (before not in TWO_OBJECT_VERBS or any(x in _WHERE_TO for x in clause))):
+                notes.append(f"'me {words[j]}' read as 'my {words[j]}' (dialect)")
+                w = "my"
+        elif w == "some" and nxt in _SOME_AS_VERY and (nxt,) not in index:
+            after = words[k + 2] if k + 2 < len(words) else "."
+            if after in _AFTER_HOW:
+                notes.append(f"'some {nxt}' read as 'very {nxt}' (dialect)")
+                continue
+        elif (w == "after" and before in {"is", "are", "am", "s", "m", "re", "was", "were"}
+              and nxt.endswith("ing") and len(nxt) > 4 and (nxt,) not in index):
+            notes.append(f"'{before} after {nxt}' read as '{before} {nxt}' (dialect: just done)")
+            continue
+        out.append(w)
+    return out
+
+
 #: verbs that take two objects ("bring them tea", "get them cups": for them): after one, "them"
 #: may be who the thing is for, so it is not read as "those" (the command is refused, not guessed)
 TWO_OBJECT_VERBS = {"give", "bring", "get", "fetch", "hand", "pass", "make", "send", "take", "show", "buy", "pour",

@@ -588,6 +588,9 @@ FILLER = {("um",), ("umm",), ("uh",), ("uhh",), ("uhm",), ("er",), ("erm",),   #
           # "brah", "bruddah": mate; "k" for OK); its words of the grammar: :mod:`pipflow.language.pidgin`
           ("mahalo",), ("mahalo", "nui"), ("mahalo", "nui", "loa"), ("aloha",), ("shoots",), ("brah",), ("bruddah",),
           ("k",),
+          # Newfoundland English talk ("luh": look; "b'y": boy, said to anyone; "yes b'y"; "where ye to?":
+          # how are you, where are you)
+          ("luh",), ("b", "y"), ("yes", "b", "y"), ("where", "you", "to"),
           ("tenastelign",), ("tenastilign",), ("ameseginalehu",), ("ameseginalew",), ("ebakachihu",), ("ebakachuh",),
           ("wey", "gud"), ("gobez",), ("gobeze",), ("yikirta",), ("yiqirta",), ("tolo",), ("tolo", "tolo"),
           ("please",), ("kindly",), ("abeg",), ("biko",), ("just",), ("quickly",), ("now",), ("for", "me"), ("for", "us"), ("could", "you"),

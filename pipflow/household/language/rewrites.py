@@ -281,12 +281,14 @@ def given(words: list[str], notes: list[str]) -> list[str]:
 
 
 #: what a thing is put in a heater for, said as a purpose ("pop it in the microwave to warm through")
-_HEAT_PURPOSES = {"warm", "heat"}
+#: verbs of heating said as what a thing is put in a heater for ("in the oven to cook")
+_HEAT_PURPOSES = {"warm", "heat", "cook", "bake", "fry", "toast"}
 
 
 def heat_purpose(words: list[str], notes: list[str]) -> list[str]:
     """ "pop the loaf in the oven to warm (up / through)" as "... and warm it (through)": the
-    purpose is the heating asked for (the thing ends hot), closing a clause that puts it somewhere."""
+    purpose is the heating asked for (the thing ends hot), closing a clause that puts it somewhere
+    (or before what it is for: "in the oven to cook for supper")."""
     out: list[str] = []
     k = 0
     while k < len(words):
@@ -294,7 +296,7 @@ def heat_purpose(words: list[str], notes: list[str]) -> list[str]:
         nxt = words[k + 1] if k + 1 < len(words) else None
         after = k + 2 + (k + 2 < len(words) and words[k + 2] in ("up", "through"))
         if w == "to" and nxt in _HEAT_PURPOSES and out and out[-1] not in _CLAUSE_ENDS \
-                and (after >= len(words) or words[after] in _CLAUSE_ENDS):
+                and (after >= len(words) or words[after] in _CLAUSE_ENDS or words[after] == "for"):
             notes.append(f"'to {' '.join(words[k + 1:after])}' read as 'and {nxt} it'")
             out += ["and", nxt, "it"] + (["through"] if after > k + 2 else [])
             k = after

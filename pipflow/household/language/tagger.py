@@ -19,7 +19,7 @@ from pipflow.household.language.colloquial import colloquial
 from pipflow.household.language.corrections import corrected
 from pipflow.household.language.dialect import (arabic_as_english, bring_in, cut_as_switch, make_as_switch,
                                                 on_off_as_verbs, open_close_as_switch, particle_before_exception,
-                                                patois_in_home, pidgin_in_home, put_on_as_switch, romance_words_as_english,
+                                                newfoundland_as_english, patois_in_home, pidgin_in_home, put_on_as_switch, romance_words_as_english,
                                                 scots_as_english, setting_as_switch, them_as_those)
 from pipflow.household.language.headwords import named_again
 from pipflow.household.language.grammar import NOUN_DUAL
@@ -138,6 +138,7 @@ def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: l
     """The command's words with its colloquial forms, constructions and particles read as the
     grammar's words (each rewrite notes what it read)."""
     words = pidgin_in_home(patois_in_home(words_of(command), index, notes), index, notes)
+    words = newfoundland_as_english(words, index, notes)
 
     def known(word: str) -> bool:   # a word of the home or of the reader
         return known_word(word, index, vocab)

@@ -191,6 +191,11 @@ def parse_reading(command: str, world: dict, picks: dict | None = None) -> dict:
             raise TranslationError(f"'{said(lexed)}' asks for nothing by itself")
         for k, new in reader.updates.items():
             statements[k] = new
+        # "P too many X" said without a verb reaches a count with no count: a complaint, as "P has
+        # too many X" is (it was refused as an order the schema rejects)
+        for st in [st for st in reader.statements if (st.get("amount") or {}).get("observed")]:
+            reader.statements.remove(st)
+            reader.observed.append((st["words"], list(st["places"]["names"])))
         if observed or reader.observed:
             _about_the_complaint(reader, observed + reader.observed)
         statements += reader.statements

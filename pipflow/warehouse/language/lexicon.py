@@ -101,7 +101,9 @@ SPELLINGS = {"shud": "should", "shld": "should", "u": "you", "r": "are", "wont":
              # "leave P as is tho": though
              "tho": "though", "altho": "although",
              # Malay and Indonesian "jangan": don't ("Jangan touch anything at mezz")
-             "jangan": "dont"}
+             "jangan": "dont",
+             # "th" said as "d" (Cajun, Caribbean, West African English): "dat", "dis", "dem", "dey", "dese"
+             "dat": "that", "dis": "this", "dem": "them", "dey": "they", "dese": "these"}
 #: Scots spellings of the grammar's own words (shared with the household reader: "shift 5 corks fae
 #: pend tae steading", "take 2 aff vault", "dinnae touch it"), read only where the word is no word
 #: of the world's names
@@ -121,6 +123,15 @@ _ROBOT_WORD = r"(?!(?:and|then|so|but|or|to|from|on|in|into|at|of|while|because|
 #: "3 X for each of the 4 trucks": a count for each of several (:meth:`Lexicon._times_for_each`)
 _FOR_EACH_OF = re.compile(rf"\b({_NUMBER})\s+((?:[a-z][a-z0-9_-]*\s+){{1,3}}?)for\s+each\s+of\s+(?:the\s+|those\s+|these\s+)?"
                           rf"({_NUMBER})\s+([a-z]+)\b", re.IGNORECASE)
+#: what a second negative after a negated verb repeats (negative concord)
+_CONCORD = {"nothing": "anything", "none": "any", "nobody": "anybody", "no": "any"}
+#: verbs "out" completes ("clear out the dock"): there "out the" is no "out of the"
+_OUT_VERBS = frozenset({"clean", "clear", "empty", "take", "get", "sort", "lay", "put", "pull", "carry", "bring", "move",
+                        "send", "ship", "throw", "chuck", "pick", "check", "hand", "roll", "wheel", "cart", "haul",
+                        "find", "figure", "work", "set", "sweep", "muck", "tidy", "even", "spread", "share", "split",
+                        "dish", "parcel", "give", "pass", "kick", "toss", "turf", "bin", "load", "unload", "fill",
+                        "tip", "dump", "hang", "cut", "cross", "run", "max", "thin", "weed", "ship", "shift", "lift",
+                        "fish", "dig", "hook", "drag", "tow", "ferry", "bring", "shove", "push", "slide", "wipe"})
 #: idioms read as the plain words the grammar has: "leave it as she is" ("she" for a place or a
 #: load, as trades say), "all told" (in total), "keep it well away from P" (away from)
 IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before a word in lower case or a
@@ -257,6 +268,48 @@ IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before
           # negative concord: "I don't want no more than 3 X on P" is at most 3 ("no fewer than": at least)
           (re.compile(r"\b(?:i|we)\s+(?:do\s*n['\u2019]?t|do\s+not)\s+want\s+(?:no\s+)?(more|fewer|less)\s+than\b",
                       re.IGNORECASE), lambda m: "i want at " + ("most" if m.group(1).lower() == "more" else "least")),
+          # negative concord after a verb that places or takes ("don't touch nothing in P", "don't put
+          # none on P", "don't move nothing off P"): the second negative repeats the first. Never
+          # after "leave", "keep", "let" or "want", where "don't leave P with no X" may mean the opposite
+          (re.compile(r"\b((?:do\s*n['\u2019]?t|do\s+not|never|ca\s*n['\u2019]?t|cannot|wo\s*n['\u2019]?t)\s+"
+                      r"(?:touch|put|move|send|take|bring|use|load|ship|stack|store|carry|shift|drop|pull|place|"
+                      r"park|stage|give)\s+)(nothing|none|nobody|no)\b", re.IGNORECASE),
+           lambda m: m.group(1) + _CONCORD[m.group(2).lower()]),
+          # Cajun English: "mais" (well) opening a sentence ("Mais, bring twelve ..."; never before a
+          # count, where a Portuguese speaker's "mais 4" is "4 more": WORD_ORDER), "ah non" (oh no)
+          (re.compile(rf"(^|[.;!?:]\s*)mais\b(?!\s+(?:de\s+)?{_NUMBER})\s*,?\s*", re.IGNORECASE), r"\1"),
+          # "Ah non, ...", "Oh no!" opening a sentence: dismay, not a negation of anything (after a count,
+          # "oh no, 12" still takes the count back)
+          (re.compile(r"(^|[.;!?]\s*)(?:ah|oh|aw)\s+(?:non|no)\s*[,!.]+\s*", re.IGNORECASE), r"\1"),
+          # "Okay, last thing: ...", "one more thing, ...": a signpost opening a sentence
+          (re.compile(r"(^|[.;!?]\s*)(?:(?:ok|okay|and|so|oh)\s*,?\s*)?(?:one\s+)?(?:last|final|more|other)\s+thing\s*[,:.!-]+\s*",
+                      re.IGNORECASE), r"\1"),
+          # "out the back shed", "keep R out the cold room": out of, except after a verb it completes
+          # ("clear out the dock", "lay out the pallets")
+          (re.compile(r"\b([a-z][a-z0-9_'-]*)\s+out\s+(?=the\b)", re.IGNORECASE),
+           lambda m: m.group(0) if m.group(1).lower() in _OUT_VERBS else m.group(1) + " out of "),
+          # "pass by P and grab 3 X", "swing by P and pick up ...": what is taken, taken from P
+          (re.compile(r"\b(?:pass|stop|swing|drop|come|go)\s+(?:by|past)\s+((?:the\s+)?[a-z][a-z0-9 _-]*?)\s+and\s+"
+                      r"(grab|get|pick\s+up|take|collect|fetch)\s+([^.,;!?]+?)(?=\s*(?:[.,;!?]|$))", re.IGNORECASE),
+           r"\2 \3 from \1"),
+          # "... out of P. Put it wherever(, but ...)": where to is left open, as it is unsaid
+          (re.compile(r"[.;!]?\s*(?:and\s+)?(?:put|stick|take|send)\s+(?:it|them|em|those)\s+(?:wherever|anywhere)"
+                      r"(?:\s+you\s+(?:want|like))?(?=\s*(?:[,.;!]|$))", re.IGNORECASE), ""),
+          # "put as many X on P as Q has (now)": as many X as Q has, on P (the grammar's order)
+          (re.compile(r"\bas\s+(many|much)\s+([a-z][a-z0-9 _-]*?)\s+((?:on|onto|to|into|in|at)\s+[a-z][a-z0-9 _-]*?)\s+as\s+"
+                      r"([a-z][a-z0-9 _-]*?)\s+(has\s+got|has|holds|got|have)((?:\s+(?:right\s+)?now)?)(?=\s*(?:[.,;!?]|$))",
+                      re.IGNORECASE), r"as \1 \2 as \4 \5\6 \3"),
+          # "split 8 X from P evenly to Q and R" ("equally into", "evenly over"): evenly between them
+          (re.compile(r"\b((?:split|divide|distribute|share|spread)\b[^.;!?]*?)\s+(?:evenly|equally)\s+"
+                      r"(?:to|into|over|across|among|amongst)\s+", re.IGNORECASE), r"\1 evenly between "),
+          # "the MCU only ESD robots can touch", "coils only the strongest robot may carry": the
+          # thing said first, the rule about it after: "only <robots> can touch <thing>"
+          (re.compile(r"(^|[.;!?,:]\s*)((?:the\s+)?[a-z][a-z0-9_-]*(?:\s+[a-z][a-z0-9_-]*){0,2})\s+only\s+"
+                      r"((?:the\s+)?[a-z][a-z0-9_-]*(?:\s+[a-z][a-z0-9_-]*){0,2})\s+(can|may|should|must|will)\s+"
+                      r"(touch|carry|move|handle|take|lift)(?=\s*(?:[.,;!?]|$))", re.IGNORECASE), r"\1only \3 \4 \5 \2"),
+          # "bring the X on P down to 10", "get P's X down to 4": a final count, as "to 10" says
+          (re.compile(rf"\b((?:bring|get|take|knock|cut)\b[^.;!?]*?)\s+down\s+to\s+(?=(?:a\s+|an\s+)?{_NUMBER})",
+                      re.IGNORECASE), r"\1 to "),
           # "get 6 X slotted on P", "get em put away in P": the order is the move ("get" a causative)
           (re.compile(r"\b(get\b(?:(?!\b(?:and|then)\b)[^.;!?\n,])*?)\s+(?:slotted|staged|moved|stocked|put\s+away|sent|brought|taken|shifted|"
                       r"carried|dropped|parked|put)\s+(?=(?:on|onto|to|into|in|at|over|up|down)\b)", re.IGNORECASE), r"\1 "),
@@ -315,12 +368,21 @@ IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before
                       re.IGNORECASE), ""),
           # "get 3 X onto the dock from wherever": where from is left open, as it is unsaid
           (re.compile(r"[,;]?\s*\bfrom\s+wherever\b(?!\s+(?:is|it|they|there|you|we))", re.IGNORECASE), ""),
+          # "..., don't ask me why": no content (an idiom: no negation of anything said)
+          (re.compile(r"[,;]?\s*\b(?:do\s*n['\u2019]?t|do\s+not)\s+ask\s+(?:me\s+)?(?:why|how\s+come)\b", re.IGNORECASE), ""),
           # "..., no excuses": insisting, no content
           (re.compile(r"[,;]?\s*\bno\s+(?:excuses|messing(?:\s+about|\s+around)?|arguments)\b", re.IGNORECASE), ""),
           # "forklifts only on this lot (job, run)" and bare "on this": "on this one", the job
           (re.compile(r"\bonly\s+on\s+this(?:\s+(?:lot|job|run|batch))?(?!\s+one\b)\b", re.IGNORECASE), "only on this one"),
-          # "Only robots that carry 5 or more on this": a rule opened by "only", closed by "on this"
-          (re.compile(r"(\bonly\b[^.;:!?,]*?\bon\s+this)(?=\s*(?:[.,;:!?]|$))", re.IGNORECASE), r"\1 one"),
+          # "Only robots that carry 5 or more on this" ("on that", "on dat"): a rule opened by "only",
+          # closed by "on this"
+          (re.compile(r"(\bonly\b[^.;:!?,]*?\bon\s+)(?:this|that|dis|dat)(?=\s*(?:[.,;:!?]|$))", re.IGNORECASE),
+           r"\1this one"),
+          (re.compile(r"(\bonly\b[^.;:!?,]*?\bon\s+)(?:that|dis|dat)(?=\s+one\b)", re.IGNORECASE), r"\1this"),
+          # "the boss wants P to have N", "the customer wants ...": a wish passed on is the order
+          (re.compile(r"(^|[.;!?]\s*)(?:the\s+)?(?:boss|manager|gaffer|supervisor|office|customer|client|he|she|they)\s+"
+                      r"wants?\s+(?=(?:the\s+)?[a-z][a-z0-9 _-]*?\s+to\s+(?:have|hold|be|get|end\s+up|stay|keep)\b)",
+                      re.IGNORECASE), r"\1i want "),
           # Irish "go raibh (míle) maith agat / agaibh" (thank you), "mo bhuachaill" (my lad), "grand job":
           # no content anywhere; "so it is" (said for stress) and "good girl" (lad, man: praise of who is
           # addressed) only closing a clause
@@ -1459,8 +1521,10 @@ class Lexicon:
         #: the world's own spellings with accents ("açaí" for acai), read as the names they are
         self._declared = non_ascii_words(world, ("shelves", "products", "robots"))
         #: the places, as a pattern, for the chat forms that name one (:meth:`_chat_said_plainly`)
-        shelves = sorted(map(str, world.get("shelves") or {}), key=len, reverse=True)
-        self._places = "|".join(map(re.escape, shelves)) or None
+        #: with the words the world gives them ("the cold aisle got 8": the cold aisle has 8)
+        shelves = sorted({str(w) for name, shelf in (world.get("shelves") or {}).items()
+                          for w in [name, *((shelf or {}).get("words") or [])]}, key=len, reverse=True)
+        self._places = "|".join(re.escape(w).replace(r"\ ", r"\s+") for w in shelves) or None
         #: numbered places by letters + digits ("dock2" -> dock2, "bay9" of "bay_9" -> bay_9)
         self._numbered_places = {n.alpha + str(int(n.digits)): n.name for n in self.index.names
                                  if n.kind == "shelf" and n.digits}
