@@ -191,13 +191,7 @@ def parse_reading(command: str, world: dict, picks: dict | None = None) -> dict:
             raise TranslationError(f"'{said(lexed)}' asks for nothing by itself")
         for k, new in reader.updates.items():
             statements[k] = new
-        # "P too many X" said without a verb reaches a count with no count: a complaint, as "P has
-        # too many X" is (it was refused as an order the schema rejects)
-        for st in [st for st in reader.statements if (st.get("amount") or {}).get("observed")]:
-            reader.statements.remove(st)
-            reader.observed.append((st["words"], list(st["places"]["names"])))
-        if observed or reader.observed:
-            _about_the_complaint(reader, observed + reader.observed)
+        _complaints(reader, observed)
         statements += reader.statements
         observed += reader.observed
         rules += reader.rules
@@ -224,6 +218,18 @@ def _locate(error: TranslationError, lexed: Lexed, lex: Lexicon) -> None:
     k = getattr(error, "unplaced", None)
     error.span = (first, last + 1) if first is not None and last is not None else None  # type: ignore[attr-defined]
     error.at = lex.position(lexed.source[k]) if k is not None and k < len(lexed.source) else None  # type: ignore[attr-defined]
+
+
+def _complaints(reader: SentenceReader, observed: list[tuple[str, list[str]]]) -> None:
+    """The sentence's complaints ("P has too many X") with the command's before it, read with what
+    follows them (:func:`_about_the_complaint`). "P too many X" said without a verb reaches the
+    statements as a count with no count: it is the same complaint (it was refused as an order the
+    schema rejects)."""
+    for st in [st for st in reader.statements if (st.get("amount") or {}).get("observed")]:
+        reader.statements.remove(st)
+        reader.observed.append((st["words"], list(st["places"]["names"])))
+    if observed or reader.observed:
+        _about_the_complaint(reader, observed + reader.observed)
 
 
 def _about_the_complaint(reader: SentenceReader, observed: list[tuple[str, list[str]]]) -> None:
