@@ -307,9 +307,6 @@ IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before
           (re.compile(r"(^|[.;!?,:]\s*)((?:the\s+)?[a-z][a-z0-9_-]*(?:\s+[a-z][a-z0-9_-]*){0,2})\s+only\s+"
                       r"((?:the\s+)?[a-z][a-z0-9_-]*(?:\s+[a-z][a-z0-9_-]*){0,2})\s+(can|may|should|must|will)\s+"
                       r"(touch|carry|move|handle|take|lift)(?=\s*(?:[.,;!?]|$))", re.IGNORECASE), r"\1only \3 \4 \5 \2"),
-          # "bring the X on P down to 10", "get P's X down to 4": a final count, as "to 10" says
-          (re.compile(rf"\b((?:bring|get|take|knock|cut)\b[^.;!?]*?)\s+down\s+to\s+(?=(?:a\s+|an\s+)?{_NUMBER})",
-                      re.IGNORECASE), r"\1 to "),
           # "get 6 X slotted on P", "get em put away in P": the order is the move ("get" a causative)
           (re.compile(r"\b(get\b(?:(?!\b(?:and|then)\b)[^.;!?\n,])*?)\s+(?:slotted|staged|moved|stocked|put\s+away|sent|brought|taken|shifted|"
                       r"carried|dropped|parked|put)\s+(?=(?:on|onto|to|into|in|at|over|up|down)\b)", re.IGNORECASE), r"\1 "),
