@@ -280,8 +280,8 @@ def given(words: list[str], notes: list[str]) -> list[str]:
     return list(words)
 
 
-#: what a thing is put in a heater for, said as a purpose ("pop it in the microwave to warm through")
-#: verbs of heating said as what a thing is put in a heater for ("in the oven to cook")
+#: what a thing is put in a heater for, said as a purpose ("pop it in the microwave to warm through",
+#: "in the oven to cook")
 _HEAT_PURPOSES = {"warm", "heat", "cook", "bake", "fry", "toast"}
 
 

@@ -130,8 +130,8 @@ _OUT_VERBS = frozenset({"clean", "clear", "empty", "take", "get", "sort", "lay",
                         "send", "ship", "throw", "chuck", "pick", "check", "hand", "roll", "wheel", "cart", "haul",
                         "find", "figure", "work", "set", "sweep", "muck", "tidy", "even", "spread", "share", "split",
                         "dish", "parcel", "give", "pass", "kick", "toss", "turf", "bin", "load", "unload", "fill",
-                        "tip", "dump", "hang", "cut", "cross", "run", "max", "thin", "weed", "ship", "shift", "lift",
-                        "fish", "dig", "hook", "drag", "tow", "ferry", "bring", "shove", "push", "slide", "wipe"})
+                        "tip", "dump", "hang", "cut", "cross", "run", "max", "thin", "weed", "shift", "lift", "fish",
+                        "dig", "hook", "drag", "tow", "ferry", "shove", "push", "slide", "wipe"})
 #: idioms read as the plain words the grammar has: "leave it as she is" ("she" for a place or a
 #: load, as trades say), "all told" (in total), "keep it well away from P" (away from)
 IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before a word in lower case or a
