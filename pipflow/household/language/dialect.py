@@ -167,6 +167,8 @@ _SOME_AS_VERY = frozenset({"cold", "hot", "warm", "dirty", "heavy", "dark", "wet
 #: what may close the clause after "some" + how ("some cold today", "some heavy so ...")
 _AFTER_HOW = frozenset(PUNCT) | {"and", "so", "today", "tonight", "now", "out", "in", "here", "there", "again",
                                  "too", "but", "then", "already", "still"}
+#: words that may stand between "me" and the thing it owns ("me good afghan", "me old cup")
+_BEFORE_A_THING = _SOME_AS_VERY | {"good", "old", "new", "best", "little"}
 #: where the thing "me" owns is taken, after a verb that may also take who it is for
 _WHERE_TO = frozenset({"to", "into", "onto", "on", "in", "over", "back"})
 
@@ -186,8 +188,7 @@ def newfoundland_as_english(words: list[str], index: dict, notes: list[str]) -> 
         before = out[-1] if out else "."
         if w == "me" and (w,) not in index:
             j = k + 1
-            while j < len(words) and words[j] not in firsts and words[j] in _SOME_AS_VERY | {"good", "old", "new",
-                                                                                            "best", "little"}:
+            while j < len(words) and words[j] not in firsts and words[j] in _BEFORE_A_THING:
                 j += 1
             rest = words[j + 1:k + 9]
             clause = rest[:next((i for i, x in enumerate(rest) if x in PUNCT), len(rest))]

@@ -18,9 +18,10 @@ from pipflow.household.language.beside import beside_as_where
 from pipflow.household.language.colloquial import colloquial
 from pipflow.household.language.corrections import corrected
 from pipflow.household.language.dialect import (arabic_as_english, bring_in, cut_as_switch, make_as_switch,
-                                                on_off_as_verbs, open_close_as_switch, particle_before_exception,
-                                                newfoundland_as_english, patois_in_home, pidgin_in_home, put_on_as_switch, romance_words_as_english,
-                                                scots_as_english, setting_as_switch, them_as_those)
+                                                newfoundland_as_english, on_off_as_verbs, open_close_as_switch,
+                                                particle_before_exception, patois_in_home, pidgin_in_home,
+                                                put_on_as_switch, romance_words_as_english, scots_as_english,
+                                                setting_as_switch, them_as_those)
 from pipflow.household.language.headwords import named_again
 from pipflow.household.language.grammar import NOUN_DUAL
 from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
