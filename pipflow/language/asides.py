@@ -28,7 +28,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Callable, Iterable
 
-from pipflow.language.english import common_word
+from pipflow.language.english import common_word, dropped_g
 from pipflow.language.numbers import NUMBER_WORDS
 from pipflow.language.spelling import Slips
 
@@ -184,6 +184,8 @@ CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "
                      "deadly", "grma", "slainte",
                      # Cajun English ("..., cher", "chère", "sha": dear; "podna": partner)
                      "cher", "chere", "sha", "podna",
+                     # Bahamian English ("..., bey": boy, man; "ya hear")
+                     "bey",
                      # Maltese ("..., grazzi": thanks; "ċaw", "saħħa": bye; "ħabib": friend; "insomma": anyway)
                      "grazzi", "caw", "sahha", "habib", "habiba", "insomma",
                      # Brazilian Portuguese: thanks, "OK?" ("..., beleza?"), laughter
@@ -384,7 +386,8 @@ def is_greeting(words: Iterable[str]) -> bool:
     addressees (and "again" last: greeted a second time, nothing done again)."""
     ws = [w for w in words if w]
     rest = ws[1:-1] if len(ws) > 1 and ws[-1] == "again" else ws[1:]
-    return bool(ws) and ws[0] in GREETINGS and all(w in ADDRESSEES or w in GREETINGS for w in rest)
+    return bool(ws) and (ws[0] in GREETINGS or dropped_g(ws[0]) in GREETINGS) \
+        and all(w in ADDRESSEES or w in GREETINGS for w in rest)   # "mornin all"
 
 
 #: how warmly thanks are said ("thank you ever so much", "thanks very much"): no quantity of anything

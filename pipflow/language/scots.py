@@ -1,6 +1,6 @@
-"""Scots spellings of everyday English words, as typed or said in Scotland ("take 2 aff the rack",
-"bring it ben", "switch aff aw the lights", "fae the bedside table"): each read as the English
-word, by both readers, only where the word is no word of the world's names (a place called "the
+"""Scots and northern English spellings of everyday English words, as typed or said in Scotland
+and the north of England ("take 2 aff the rack", "bring it ben", "switch aff aw the lights", "fae
+the bedside table", "divvent touch it"): each read as the English word, by both readers, only where the word is no word of the world's names (a place called "the
 Ben" stays that place) and, in the household reader, no English word itself."""
 from __future__ import annotations
 
@@ -14,4 +14,10 @@ SCOTS = {"fae": "from", "frae": "from", "tae": "to", "aff": "off", "oot": "out",
          # "bring my specs ben (the room)": through (to the other room); "that yin": that one
          "ben": "through", "yin": "one", "yins": "ones", "naebody": "nobody", "naw": "no", "wid": "would",
          "dae": "do", "masel": "myself", "auld": "old", "windae": "window", "hing": "hang", "hoose": "house",
-         "anaw": "too", "aye": "yes"}
+         "anaw": "too", "aye": "yes",
+         # Geordie and other northern English ("divvent touch it", "gan and put the light on", "hoy
+         # it in the bin", "wor lass": our (my) wife, "yem": home, "nowt": nothing, "aal": all)
+         "divvent": "dont", "divvnt": "dont", "dinnet": "dont", "cannet": "cant", "gan": "go",
+         "gannin": "going", "hoy": "throw", "yem": "home", "wor": "our", "neebody": "nobody",
+         "nowt": "nothing", "owt": "anything", "summat": "something", "deein": "doing", "knaa": "know",
+         "roond": "round", "aal": "all"}

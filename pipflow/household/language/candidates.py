@@ -40,6 +40,7 @@ from typing import Callable
 from jellyfish import metaphone
 
 from pipflow.errors import PipflowError, Refusal, TranslationError
+from pipflow.household.language.dialect import AFTER_I
 from pipflow.household.language.lexicon import HUNGRY, LEAVING_REASONS, NEEDS_OFFERED, words_of
 from pipflow.household.language.names import per_world, world_phrases
 from pipflow.household.language.rewrites import without_duration
@@ -67,8 +68,10 @@ APPRAISALS = {"fine", "ok", "okay", "good", "nice", "great", "alright", "normal"
 _CLAUSE_SPLIT = re.compile(r"[,.;:!?()\[\]\u2013\u2014]|\s-\s")
 def _about_the_speaker(words: list[str]) -> bool:
     """A part that opens with the speaker as its subject ("i do not want ...", "we can not ..."),
-    with no only, except or bound in it: what it denies is the speaker's, not the robots' work."""
-    return words[:1] in (["i"], ["we"]) and not set(words) & (EXCLUSIVITY | BOUNDS)
+    with no only, except or bound in it: what it denies is the speaker's, not the robots' work
+    (northern English "ah" for I too: "ah cannot stand that fella")."""
+    said_i = words[:1] in (["i"], ["we"]) or (words[:1] == ["ah"] and words[1:2] and words[1] in AFTER_I)  # "ah cannot"
+    return said_i and not set(words) & (EXCLUSIVITY | BOUNDS)
 
 
 #: where a sentence ends (its mark kept with it) or a line breaks
@@ -236,6 +239,7 @@ def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[
     for w in droppable:
         rest = " ".join(x for x in words if x != w)
         out.append((rest, f"read without '{w}' (not understood)", rest, {}))
+    out += _without_unread_end(words, unknown, index)
     out += _place_phrases(words, unknown)
     out += _needs(error, world)
     out += _topics([p.strip() for p in _CLAUSE_SPLIT.split(command) if p.strip()], index)
@@ -265,6 +269,9 @@ def _without_unread_parts(command: str, clauses: list[str], unknown: list[str]) 
     unread = set(unknown)
     out: list[tuple[str, str, str, dict]] = []
     for parts, joiner in ((clauses, " , "), ([p.strip() for p in _SENTENCE_SPLIT.split(command) if p.strip()], " ")):
+        # a part whose words not understood all lie in a tail of what for or why keeps the rest
+        # ("boil the eggs for me tea hinny": the eggs boiled)
+        parts = [_tails_cut(p, unread) for p in parts]
         dropped = [p for p in parts if set(words_of(p)) & unread and (not set(words_of(p)) & _NARROWING
                                                                        or _about_the_speaker(words_of(p)))]
         if not dropped or len(dropped) == len(parts):
@@ -275,6 +282,26 @@ def _without_unread_parts(command: str, clauses: list[str], unknown: list[str]) 
     return out
 
 
+def _without_unread_end(words: list[str], unknown: list[str], index: dict) -> list[tuple[str, str, str, dict]]:
+    """ "slice the melon and the bread pls mums doin a picnic": a remark run on without a comma,
+    from the first word not understood to the clause's end, left out where it names nothing of
+    the home and holds no operative word (negation, only, except, a bound, a quantity)."""
+    unread = set(unknown)
+    start = next((k for k, w in enumerate(words) if w in unread), None)
+    while start and words[start - 1] in _DETERMINERS:   # "the cricket will be starting": from "the"
+        start -= 1
+    if not start or words[start - 1] in _TAIL_ENDS:   # a whole clause: left out by _without_unread_parts
+        return []
+    end = next((j for j in range(start, len(words)) if words[j] in _TAIL_ENDS - {"and", "then", "but"}), len(words))
+    tail = words[start:end]
+    # a word of a name said alone names nothing ("a picnic" of the picnic blanket); "a"
+    # quantifies only what it names, and the tail names nothing of the home
+    if any((w,) in index for w in tail) or any(near_operative(w) for w in tail if w not in ("a", "an")):
+        return []
+    rest = " ".join(words[:start] + words[end:])
+    return [(rest, f"read without '{' '.join(tail)}' (not understood)", rest, {})]
+
+
 #: words that open what a thing is for or why ("... on the table for the scones", "... so it's
 #: soft", "... before the rain comes", "... because ..."): a tail of the clause the order is in
 _TAIL_LEADS = {"for", "so", "before", "because", "cause", "cos", "coz", "since", "as"}
@@ -282,12 +309,10 @@ _TAIL_LEADS = {"for", "so", "before", "because", "cause", "cos", "coz", "since",
 _TAIL_ENDS = {",", ".", ";", ":", "!", "?", "and", "then", "but"}
 
 
-def _without_tails(words: list[str]) -> list[tuple[str, str, str, dict]]:
-    """ "put the butter out on the table so it's soft for the scones", "bring the doll in off the
-    step before the rain comes": the command without what an order is for or why, said after it
-    in words the reader does not place; all such tails at once, then each alone. A tail that says
-    no, only, except or a bound is kept (dropped, the rest would ask for more). Offered only: why
-    a thing is done may change what is meant."""
+def _tail_spans(words: list[str]) -> list[tuple[int, int]]:
+    """Where the tails of what for or why lie ((start, end) of each): from a word of
+    :data:`_TAIL_LEADS` not opening its clause to the clause's end or the next joining word; a
+    tail that says no, only, except or a bound is none (dropped, the rest would ask for more)."""
     tails: list[tuple[int, int]] = []
     k = 1
     while k < len(words):
@@ -297,6 +322,27 @@ def _without_tails(words: list[str]) -> list[tuple[str, str, str, dict]]:
                 tails.append((k, end))
             k = end
         k += 1
+    return tails
+
+
+def _tails_cut(part: str, unread: set[str]) -> str:
+    """A part without its tails of what for or why where every word of it not understood lies in
+    them; else the part as said."""
+    words = words_of(part)
+    tails = _tail_spans(words)
+    inside = {i for a, b in tails for i in range(a, b)}
+    held = [i for i, w in enumerate(words) if w in unread]
+    if not held or any(i not in inside for i in held):
+        return part
+    return " ".join(w for i, w in enumerate(words) if i not in inside)
+
+
+def _without_tails(words: list[str]) -> list[tuple[str, str, str, dict]]:
+    """ "put the butter out on the table so it's soft for the scones", "bring the doll in off the
+    step before the rain comes": the command without what an order is for or why, said after it
+    in words the reader does not place (:func:`_tail_spans`); all such tails at once, then each
+    alone. Offered only: why a thing is done may change what is meant."""
+    tails = _tail_spans(words)
     out: list[tuple[str, str, str, dict]] = []
     for chosen in ([tails] if len(tails) > 1 else []) + [[t] for t in tails]:
         cut = {i for a, b in chosen for i in range(a, b)}

@@ -11,6 +11,7 @@ from pipflow.household.language.names import first_words, home_words
 from pipflow.household.language.restated import DETERMINERS
 from pipflow.household.language.tokens import PUNCT
 from pipflow.language import pidgin
+from pipflow.language.english import dropped_g
 from pipflow.language.patois import PLURAL, english_of
 from pipflow.language.quebec import QUEBEC
 from pipflow.language.scots import SCOTS
@@ -110,11 +111,19 @@ def pidgin_in_home(words: list[str], index: dict, notes: list[str]) -> list[str]
     return out
 
 
+#: words that follow "ah" where it is "I" (Scots and northern English), never where it is a sigh
+AFTER_I = frozenset({"have", "m", "am", "will", "ll", "can", "cannot", "cant", "could", "do", "dont", "did", "had",
+                      "was", "would", "need", "want", "think", "know", "just", "never", "d", "ve"})
+#: what is left of a verb after "ah'" ("ah'm", "ah'll", "ah've", "ah'd")
+_CONTRACTED = {"m": ("am",), "ll": ("will",), "ve": ("have",), "d": ("would",)}
+
+
 def scots_as_english(words: list[str], known: Callable[[str], bool], notes: list[str]) -> list[str]:
     """The words with Scots words read as English (:data:`pipflow.language.scots.SCOTS`: "switch
     aff the telly", "bring my specs ben", "that yin as well") where the word is no word of the home
     or of the reader (``known``); "aw" is "all" before what it quantifies ("aw the lights") and
-    "too" after "an" at a clause's end ("the big sheet an aw"); "the morn" is tomorrow."""
+    "too" after "an" at a clause's end ("the big sheet an aw", "an aal"); "the morn" is tomorrow; a
+    word said with "in" for "ing" is the "ing" word (:func:`pipflow.language.english.dropped_g`)."""
     out: list[str] = []
     k = 0
     while k < len(words):
@@ -123,15 +132,22 @@ def scots_as_english(words: list[str], known: Callable[[str], bool], notes: list
             out.append("tomorrow")
             k += 2
             continue
-        if w in ("an", "and") and nxt == "aw" and (k + 2 >= len(words) or words[k + 2] in PUNCT):
-            notes.append("'an aw' read as 'too' (Scots)")
+        if w == "ah" and nxt in AFTER_I and not known(w):   # "ah have read it", "ah'm not fussy"
+            notes.append("'ah' read as 'I'")
+            out += ["i", *_CONTRACTED.get(nxt, (nxt,))]
+            k += 2
+            continue
+        if w in ("an", "and") and nxt in ("aw", "aal") and (k + 2 >= len(words) or words[k + 2] in PUNCT):
+            notes.append(f"'an {nxt}' read as 'too'")
             out.append("too")
             k += 2
             continue
         said = "all" if w == "aw" and nxt in _ALL_OF and not known(w) else \
             SCOTS.get(w) if w not in _SCOTS_ALSO_ENGLISH and not known(w) else None
+        if said is None and not known(w):
+            said = dropped_g(w)   # "washin", "gettin", "comin"
         if said is not None:
-            notes.append(f"'{w}' read as '{said}' (Scots)")
+            notes.append(f"'{w}' read as '{said}'")
             out += _WRITTEN_OUT.get(said, said).split()
         else:
             out.append(w)

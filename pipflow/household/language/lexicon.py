@@ -649,7 +649,17 @@ FILLER = {("um",), ("umm",), ("uh",), ("uhh",), ("uhm",), ("er",), ("erm",),   #
           # and their ways of asking: "can help (me) wash ...", "... or not", "... can already", "can or
           # not": the request itself
           ("can", "help", "me"), ("can", "help"), ("help", "me", "to"), ("or", "not"), ("can", "already"),
-          ("can", "or", "not")}
+          ("can", "or", "not"),
+          # Geordie: "howay" / "haway" (come on), "hinny" and "lads" said to the ones asked, "mind"
+          # closing a remark ("it's heavy, mind"), "ye knaa" (you know)
+          ("howay",), ("haway",), ("howay", "the", "lads"), ("hinny",), ("lads",), ("mind",), ("never", "mind"),
+          ("you", "know"),
+          # going to where the step is ("gan up and put the light on"), and "out of the way" after
+          # where a thing goes ("in the wardrobe oot the road"): said, nothing of how the home ends
+          ("go", "up", "and"), ("go", "down", "and"), ("go", "through", "and"), ("go", "upstairs", "and"),
+          ("go", "downstairs", "and"), ("out", "the", "road"), ("out", "of", "the", "road"), ("out", "of", "the", "way"),
+          # "don't you dare touch my leek": don't touch it
+          ("you", "dare")}
 #: endearments and praise that close or open a request ("..., there's a love", "..., there's a good
 #: girl", "good lad, ..."): said to the one asked, they carry nothing; "mind you" / "mind and"
 #: before a verb is "make sure you" (northern and Scots English: "and mind you shut the door after")

@@ -58,6 +58,8 @@ KIN = {"grandad", "granddad", "grandpa", "grandma", "granny", "gran", "nan", "na
        "pickney", "pickneys", "grandpickney", "grandpickneys",
        # Newfoundland, Irish and American ("the youngsters": the children; "young'uns"; "Nanny", "Pops")
        "youngsters", "youngster", "youngins", "younguns", "grandchild", "mother", "nanny", "pops",
+       # Geordie and Scots ("the bairn": the child; "wor lass", "the missus": the wife)
+       "bairn", "bairns", "lass", "missus",
        # the same said in the family's other language ("Maman is sleeping", "bring Jeddo his tea")
        "maman", "mamani", "madar", "pedar", "baba", "mama", "papa", "jeddo", "teta", "dadi", "dada", "nani",
        "abuela", "abuelo", "abuelita", "abuelito", "oma", "opa", "nonna", "nonno", "yaya", "babcia", "dziadek",

@@ -510,8 +510,11 @@ class Resolver:
             # said with where it comes from, to a place that heats nothing; the elided verb is a move
             # ("wash the cup on my desk": the desk says which cup)
             return {**out, "op": "put", "to": st["to"]}
-        place = self._only_a_destination(st, prev["to"], words) if prev["op"] == "change" and "to" in st \
-            and prev.get("via") else None
+        place = self._only_a_destination(st, prev["to"], words) if prev["op"] == "change" and "to" in st else None
+        if place and self._made_so_before(st, words):
+            # "wash the teapot. Teapot in the cupboard": the things were made so by the clause
+            # before, and this place makes nothing so: it says where they go
+            return {**out, "op": "put", "to": st["to"]}
         if place:
             # "heat the tortillas on the comal, and the tortillero on the mesa": the change was made
             # at a place of its own, this place makes nothing so, and the things are not there:
@@ -558,6 +561,11 @@ class Resolver:
         except TranslationError:
             return None
         return place if named and all(self.world["objects"].get(n, {}).get("in") != place for n in named) else None
+
+    def _made_so_before(self, st: dict, words: str) -> bool:
+        """Whether every thing of an elided verb's clause is one the clause before changed."""
+        named = [n for n, _ in self.objects(st["things"], words)]
+        return bool(named) and set(named) <= set(self.last)
 
     def _via_said_which(self, prev: dict, st: dict, words: str) -> bool:
         """ "wash the bowl in the sink and the mug too", the bowl in the sink already: "in the sink"

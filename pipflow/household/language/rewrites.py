@@ -614,3 +614,50 @@ def so_before_an_order(words: list[str], notes: list[str]) -> list[str]:
             out.append(w)
         k += 1
     return out
+
+
+#: what may follow "instead" closing a clause ("put the standard lamp on instead, ...", "... instead
+#: and ...")
+_AFTER_INSTEAD = frozenset(PUNCT) | {"and", "then", "please", "now"}
+
+
+def instead_closing(words: list[str], notes: list[str]) -> list[str]:
+    """ "switch the big light off and put the standard lamp on instead": the order replaces one
+    the speaker had in mind; "instead" closing a clause adds nothing to it ("instead of the desk"
+    names what is replaced and is left as said)."""
+    out: list[str] = []
+    for k, w in enumerate(words):
+        nxt = words[k + 1] if k + 1 < len(words) else "."
+        if w == "instead" and k > 0 and (nxt in _AFTER_INSTEAD or (nxt,) in FILLER):   # "... instead hinny,"
+            notes.append("'instead' closing the clause adds nothing to what it asks")
+            continue
+        out.append(w)
+    return out
+
+
+#: the whole home or the room the speaker is in, said as what to warm ("warm the place up")
+_THE_HOME = {("the", "place"), ("the", "house"), ("the", "room"), ("the", "flat"), ("in", "here")}
+_WARMING = {"warm", "heat"}
+
+
+def warm_the_place(words: list[str], notes: list[str]) -> list[str]:
+    """ "warm the place up (a bit)", "heat up the house": the cue that it is cold here, which the
+    reader reads as the heaters of the room on ("it's freezing in here"); only where what is
+    warmed is the home or the room itself, never a thing of it ("warm the soup up")."""
+    out: list[str] = []
+    k = 0
+    while k < len(words):
+        m = k + 1 if words[k] in _WARMING else None
+        if m is not None and m < len(words) and words[m] == "up":
+            m += 1
+        if m is not None and tuple(words[m:m + 2]) in _THE_HOME:
+            end = m + 2
+            end += words[end:end + 1] == ["up"]
+            end += 2 * (words[end:end + 2] == ["a", "bit"])
+            notes.append(f"'{' '.join(words[k:end])}' read as the cue 'it is cold in here'")
+            out += ["it", "is", "cold", "in", "here"]
+            k = end
+            continue
+        out.append(words[k])
+        k += 1
+    return out

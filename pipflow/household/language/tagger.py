@@ -30,9 +30,10 @@ from pipflow.household.language.names import (first_words, longest_name, named_b
 from pipflow.household.language.people import KIN, owners, owners_before_names, own_as_owned, pronouns_as_owners
 from pipflow.household.language.retag import (act_before_noun, copula_dropped, demonstratives, elided_it_is, left_lying,
                                               located, restated_order, without_hedges)
-from pipflow.household.language.rewrites import (caused, closed_again, closed_back, given, heat_purpose, measures,
-                                                 or_under_negation, particles, same_for, so_before_an_order,
-                                                 wherever_they_belong, without_manner)
+from pipflow.household.language.rewrites import (caused, closed_again, closed_back, given, heat_purpose,
+                                                 instead_closing, measures, or_under_negation, particles, same_for,
+                                                 so_before_an_order, warm_the_place, wherever_they_belong,
+                                                 without_manner)
 from pipflow.household.language.ones import one_as_kind
 from pipflow.household.language.romance import adjective_after, of_as_where
 from pipflow.household.language.roomnames import where_as_name
@@ -126,8 +127,8 @@ def owners_as_the(command: str, world: dict, notes: list[str]) -> str:
     # the word without its "s" is known
     command = re.sub(r"(?<![\w'’])([A-Za-z][a-z]+)s\s+([A-Za-z]+)",
                      lambda m: owner(m) if unknown(m.group(1).lower() + "s") else m.group(0), command)
-    # "my husband's shirt": the determiner before the owner goes with it
-    command = re.sub(r"\b(?:my|our|your|his|her|their|the)\s+" + _OWNED, _OWNED, command, flags=re.IGNORECASE)
+    # "my husband's shirt", Geordie "wor lass's mug": the determiner before the owner goes with it
+    command = re.sub(r"\b(?:my|our|wor|your|his|her|their|the)\s+" + _OWNED, _OWNED, command, flags=re.IGNORECASE)
     return command.replace(_OWNED, "the ")
 
 
@@ -152,6 +153,7 @@ def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: l
     words = so_before_an_order(same_for(colloquial(corrected(words, notes), notes), notes), notes)
     words = or_under_negation(measures(without_manner(words, notes), index, notes), notes)
     words = heat_purpose(caused(given(me_as_where_the_speaker_is(words, index, notes), notes), notes), notes)
+    words = warm_the_place(instead_closing(words, notes), notes)
     words = closed_back(closed_again(wherever_they_belong(words, notes), notes), notes)
     words = make_as_switch(cut_as_switch(words, world, index, notes), world, index, notes)
     words = on_off_as_verbs(put_on_as_switch(setting_as_switch(words, world, index, notes), world, index, notes),

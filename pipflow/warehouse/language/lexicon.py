@@ -24,7 +24,7 @@ from pipflow.language.asides import (ADDRESSEES, CLOSERS, FUNCTION_WORDS, GREETI
 from pipflow.language.asterisk import star_corrections
 from pipflow.language.characters import (accents_folded, declared_spellings, non_ascii_words, refuse_unread, turkish_i,
                                          without_expressions)
-from pipflow.language.english import common_word
+from pipflow.language.english import common_word, dropped_g
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS, is_number
 from pipflow.language.patois import PLURAL, english_of
 from pipflow.language.radio import transmission
@@ -103,7 +103,14 @@ SPELLINGS = {"shud": "should", "shld": "should", "u": "you", "r": "are", "wont":
              # Malay and Indonesian "jangan": don't ("Jangan touch anything at mezz")
              "jangan": "dont",
              # "th" said as "d" (Cajun, Caribbean, West African English): "dat", "dis", "dem", "dey", "dese"
-             "dat": "that", "dis": "this", "dem": "them", "dey": "they", "dese": "these"}
+             "dat": "that", "dis": "this", "dem": "them", "dey": "they", "dese": "these",
+             # and Caribbean English (Bahamian, Jamaican, Trinidadian): "wit" (with), "nuttin"
+             # (nothing), "dere" (there), "ting" (thing), "da" (the), "fa" (for), "gat" (got),
+             # "wha" (what), "jes" (just), "bout" (about)
+             "wit": "with", "nuttin": "nothing", "nutten": "nothing", "notting": "nothing", "ting": "thing",
+             "tings": "things", "everyting": "everything", "anyting": "anything", "someting": "something",
+             "dere": "there", "da": "the", "fa": "for", "gat": "got", "wha": "what", "jes": "just",
+             "bout": "about"}
 #: Scots spellings of the grammar's own words (shared with the household reader: "shift 5 corks fae
 #: pend tae steading", "take 2 aff vault", "dinnae touch it"), read only where the word is no word
 #: of the world's names
@@ -123,8 +130,32 @@ _ROBOT_WORD = r"(?!(?:and|then|so|but|or|to|from|on|in|into|at|of|while|because|
 #: "3 X for each of the 4 trucks": a count for each of several (:meth:`Lexicon._times_for_each`)
 _FOR_EACH_OF = re.compile(rf"\b({_NUMBER})\s+((?:[a-z][a-z0-9_-]*\s+){{1,3}}?)for\s+each\s+of\s+(?:the\s+|those\s+|these\s+)?"
                           rf"({_NUMBER})\s+([a-z]+)\b", re.IGNORECASE)
+#: the grammar words a spelling may stand for in a remark's words as said: a subject, an article,
+#: a preposition ("dey", "da", "fa", "wit"); never a pronoun of things or a demonstrative ("dem
+#: order big" is "their order", "dat" may point at a thing), nor a modal ("gonna")
+_SAID_AS = frozenset({"they", "the", "for", "with"})
+
+
+def _as_said_in_full(word: str) -> str:
+    """A word as written, or the grammar word of :data:`_SAID_AS` it spells ("dey": they), which
+    is never a slip of a name, or the word said with "in" for "ing" ("chargin"): a remark "dey
+    chargin" is talk as "they charging" is."""
+    said = SPELLINGS.get(word)
+    if said in _SAID_AS:
+        return said
+    return (None if common_word(word) else dropped_g(word)) or word
+
+
+#: a time of day said after a verb of arriving or leaving, with no count after it (:meth:`Lexicon.sentences`)
+_ARRIVING_AT = re.compile(r"\b((?:com(?:ing|in)|arriv(?:ing|in|es?)|leav(?:ing|in|es?)|land(?:ing|in|s)?|due|here|"
+                          r"reach(?:es)?|pick(?:ing|in)\s+up|comes?|clos(?:ing|in|es)|open(?:ing|in|s)?)"
+                          r"(?:\s+(?:fa|for)\s+(?:his|her|their|the|a|an)\s+[a-z]+)?\s+"
+                          r"(?:at|by|around|about|bout|before|after|until|till))\s+([01]?\d|2[0-4])"
+                          r"(?=\s*(?:[.,;:!?]|$|and\b|so\b|but\b))", re.IGNORECASE)
 #: what a second negative after a negated verb repeats (negative concord)
-_CONCORD = {"nothing": "anything", "none": "any", "nobody": "anybody", "no": "any"}
+_CONCORD = {"nothing": "anything", "none": "any", "nobody": "anybody", "no": "any",
+            # Caribbean English "nuttin" (nothing)
+            "nuttin": "anything", "nutten": "anything"}
 #: verbs "out" completes ("clear out the dock"): there "out the" is no "out of the"
 _OUT_VERBS = frozenset({"clean", "clear", "empty", "take", "get", "sort", "lay", "put", "pull", "carry", "bring", "move",
                         "send", "ship", "throw", "chuck", "pick", "check", "hand", "roll", "wheel", "cart", "haul",
@@ -271,10 +302,24 @@ IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before
           # negative concord after a verb that places or takes ("don't touch nothing in P", "don't put
           # none on P", "don't move nothing off P"): the second negative repeats the first. Never
           # after "leave", "keep", "let" or "want", where "don't leave P with no X" may mean the opposite
+          # "the night shift robots ain't touchin nothing today" (a rule said as what they are not
+          # doing): don't touch
+          (re.compile(r"\b(?:are\s*n['\u2019]?t|ai\s*n['\u2019]?t|is\s*n['\u2019]?t|are\s+not|is\s+not)\s+touch(?:ing|in)\b",
+                      re.IGNORECASE), "dont touch"),
           (re.compile(r"\b((?:do\s*n['\u2019]?t|do\s+not|never|ca\s*n['\u2019]?t|cannot|wo\s*n['\u2019]?t)\s+"
                       r"(?:touch|put|move|send|take|bring|use|load|ship|stack|store|carry|shift|drop|pull|place|"
-                      r"park|stage|give)\s+)(nothing|none|nobody|no)\b", re.IGNORECASE),
+                      r"park|stage|give)\s+)(nothing|none|nobody|no|nuttin|nutten)\b", re.IGNORECASE),
            lambda m: m.group(1) + _CONCORD[m.group(2).lower()]),
+          # "bring all the paint to the hardware side where it belongs": where it belongs is the place
+          # just named, so the clause adds nothing (without a place before it, nothing is dropped)
+          (re.compile(r"(\bto\s+(?:the\s+)?[\w-]+(?:\s+[\w-]+){0,2}?)\s*,?\s*where\s+(?:it|they|dey|dem)\s+"
+                      r"belongs?\b", re.IGNORECASE), r"\1"),
+          # "Ramp same thing.": the order before, for this place ("same for the ramp")
+          (re.compile(r"(^|[.!?;]\s*)((?:the\s+)?[\w-]+(?:\s+[\w-]+)?)\s*,?\s+(?:the\s+)?same\s+(?:thing|ting)"
+                      r"(?=\s*(?:[.!?;]|$))", re.IGNORECASE), r"\1same for \2"),
+          # "one more of each thing we carry": of each product
+          (re.compile(r"\beach\s+(?:thing|ting)(?:\s+(?:we|you)\s+(?:carry|stock|have|got|gat|sell|keep))?\b",
+                      re.IGNORECASE), "each product"),
           # Cajun English: "mais" (well) opening a sentence ("Mais, bring twelve ..."; never before a
           # count, where a Portuguese speaker's "mais 4" is "4 more": WORD_ORDER), "ah non" (oh no)
           (re.compile(rf"(^|[.;!?:]\s*)mais\b(?!\s+(?:de\s+)?{_NUMBER})\s*,?\s*", re.IGNORECASE), r"\1"),
@@ -380,6 +425,16 @@ IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before
           (re.compile(r"(^|[.;!?]\s*)(?:the\s+)?(?:boss|manager|gaffer|supervisor|office|customer|client|he|she|they)\s+"
                       r"wants?\s+(?=(?:the\s+)?[a-z][a-z0-9 _-]*?\s+to\s+(?:have|hold|be|get|end\s+up|stay|keep)\b)",
                       re.IGNORECASE), r"\1i want "),
+          # "Boss say switch round P and Q", "the manager says to bring ...": an order passed on is the
+          # order (only before a verb of the orders: "the boss says P is full" is a report, left as said)
+          (re.compile(r"(^|[.;!?]\s*)(?:the\s+)?(?:boss|manager|gaffer|supervisor|office)\s+(?:say|says|said)\s*,?\s*"
+                      r"(?:that\s+|to\s+)?(?=(?:switch|swap|move|bring|send|take|put|clear|empty|fill|double|halve|"
+                      r"give|get|keep|leave|shift|load|stack|split|spread)\b)", re.IGNORECASE), r"\1"),
+          # "switch round P and Q", "swap around P and Q": the particle said before the places, as
+          # "switch P and Q round" is read
+          (re.compile(r"\b(switch|swap)\s+(?:a?round|over)\s+(?=(?:the\s+)?[a-z])", re.IGNORECASE), r"\1 "),
+          # "only robots dat could carry 4 or more": a skill said with "could" is what they can carry
+          (re.compile(r"\b(that|dat|which|who)\s+could\s+(carry|lift|take|handle)\b", re.IGNORECASE), r"\1 can \2"),
           # Irish "go raibh (míle) maith agat / agaibh" (thank you), "mo bhuachaill" (my lad), "grand job":
           # no content anywhere; "so it is" (said for stress) and "good girl" (lad, man: praise of who is
           # addressed) only closing a clause
@@ -1660,6 +1715,11 @@ class Lexicon:
             return True
         # a common word written as itself is no slip of a grammar word ("driver" no "drive"), as it
         # is none of a number (_number_typo) or of a name (_near_name)
+        if SPELLINGS.get(word) in _SAID_AS:   # "dey" (they) is no slip of a name ("dry")
+            return False
+        full = None if common_word(word) else dropped_g(word)
+        if full is not None:   # "runnin": as "running" is
+            return self.content(full)
         repaired = SPELLINGS.get(word) or (None if common_word(word) else self._keyword_typo(word))
         if repaired is not None and repaired not in FUNCTION_WORDS:
             return repaired not in ASIDE_ONLY   # "tmr": tomorrow
@@ -1724,7 +1784,8 @@ class Lexicon:
         # the names test all the same)
         words = [str(t.value) if t.kind == "punct" and t.value in marks else
                  "s" if t.kind == "word" and t.value == POSS_MARK else   # "Today's plan": the 's is no content
-                 (re.sub(r"[^a-z0-9]", "", t.text.lower()) or str(t.value) if t.kind in ("word", "kind") else
+                 (_as_said_in_full(re.sub(r"[^a-z0-9]", "", t.text.lower())) or str(t.value)
+                  if t.kind in ("word", "kind") else
                   "oclock" if t.kind == "num" and _clock(cur, k) else "\2" if t.kind == "num" and self._label(cur, k)
                   else "one" if t.kind == "num" and _one_of_these(cur, k)
                   else "\1" if t.kind == "num" else "\0")
@@ -1818,13 +1879,17 @@ class Lexicon:
         # a count ("cut the cider by 7ish" is no cut by 7)
         text = re.sub(r"\b(by|at|around|before|after|until|till)\s+(\d{1,2})ish\b", r"\1 \2 oclock", text,
                       flags=re.IGNORECASE)
+        # "the truck is comin at 10", "contractor pickin up at 11", "comin for his order bout 9":
+        # after a verb of arriving or leaving, a bare number after "at", "by", "about" is the time
+        # of day (no count follows it)
+        text = _ARRIVING_AT.sub(r"\1 \2 oclock", text)
         toks = noun_adjuncts(unmarked_lists(numbered_siblings(recognize(text, self.index), self._numbered_places)))
         fixed = []
         for t in self._patois_read(toks):
             if t.kind == "word" and not self._known(str(t.value)) and self._group(t.text) is None:
                 word = str(t.value)
                 typo = (SPELLINGS.get(word) or LETTER_WORDS.get(t.text) or _number_typo(word)
-                        or self._keyword_typo(word))
+                        or dropped_g(word) or self._keyword_typo(word))
                 if typo is not None:
                     t = Tok("word", t.text, typo)
             if t.kind == "word" and str(t.value) in RUN_TOGETHER and not self._known(str(t.value)):

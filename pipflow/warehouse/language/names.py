@@ -30,7 +30,8 @@ WORLD_KEYS: dict[str, str] = {"shelf": "shelves", "product": "products", "robot"
 # English words for a kind, on top of the stems the world's own names share ("bin" of bin7).
 KIND_WORDS: dict[str, set[str]] = {
     "shelf": {"shelf", "shelves", "shelve", "rack", "racks", "bin", "bins", "location", "locations",
-              "spot", "spots", "area", "areas", "zone", "zones", "bay", "bays", "dock", "docks"},
+              "spot", "spots", "area", "areas", "zone", "zones", "bay", "bays", "dock", "docks", "section",
+              "sections"},
     "product": {"product", "products", "item", "items", "good", "goods"},
     "robot": {"robot", "robots", "bot", "bots", "agent", "agents"},
 }
