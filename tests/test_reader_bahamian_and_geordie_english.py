@@ -10,6 +10,10 @@ teapot. Teapot in the cupboard": put there), and Geordie ("howay", "hinny", "div
 readers; each rule with what stays as said or refused."""
 from __future__ import annotations
 
+import subprocess
+import sys
+from pathlib import Path
+
 import pytest
 
 from pipflow.errors import PipflowError, Refusal, TranslationError
@@ -144,3 +148,21 @@ def test_a_remark_run_on_without_a_comma_is_offered_left_out(flat: dict) -> None
 def _offered(error: TranslationError) -> list[dict]:
     """The goals a refusal offers, without their empty parts (as :func:`household_goal` gives them)."""
     return [{k: v for k, v in c["goal"].items() if v} for c in error.candidates]
+
+
+def test_a_command_whose_every_word_is_placed_loads_no_list_of_english_words() -> None:
+    """The list of common English words (a second's load) is read only for a word that may need
+    it: "in" for "ing" is asked of a word ending in "in" only. The main job reads one such command
+    in each domain; it must not pay for the list."""
+    code = (
+        "import sys\n"
+        "from pipflow.language.generator import offline\n"
+        "from pipflow.warehouse.world import load_world as warehouse\n"
+        "from pipflow.household.world import load_world as household\n"
+        "offline('There should be 7 product 1 in shelf 3.', warehouse(sys.argv[1]))\n"
+        "offline('Slice the lettuce, trash the mug and switch off the floor lamp.', household(sys.argv[2]))\n"
+        "print('spellchecker' in sys.modules)\n")
+    papers = Path(__file__).resolve().parent.parent / "benchmarks"
+    out = subprocess.run([sys.executable, "-c", code, str(papers / "warehouse" / "world.yaml"),
+                          str(papers / "household" / "world.yaml")], capture_output=True, text=True, check=True).stdout
+    assert out.strip() == "False"

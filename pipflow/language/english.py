@@ -51,12 +51,14 @@ def common_word(word: str) -> bool:
 #: "in'" for "ing" as it is said ("burnin'", "settin'", "nothin'"): the apostrophe marks the
 #: dropped g, and the word with it must be a common English word ("cabin'" is no "cabing")
 _DROPPED_G = re.compile(r"\b([A-Za-z]{2,}in)['\u2019](?=[\s.,;:!?]|$)")
-#: spoken forms whose apostrophe marks what is left out, read as written out in full
+
+
 def dropped_g(word: str) -> str | None:
     """ "runnin", "comin", "gettin": a word said with its "ing" as "in" and typed so, without the
     apostrophe that marks it: the word with its g where that is common English and the word as
     written is at most a hundredth as common ("raisin", "basin", "thin" stay themselves); else None.
-    Callers ask only about words that are no word of the world's names ("a singin hinny")."""
+    Callers ask only about words that are no word of the world's names ("a singin hinny"). The
+    list of words is loaded only for a word of four letters or more ending in "in"."""
     if len(word) < 4 or not word.endswith("in"):
         return None
     frequencies = _frequencies()
@@ -64,6 +66,7 @@ def dropped_g(word: str) -> str | None:
     return full if frequencies[full] >= COMMON and frequencies[word] * 100 < frequencies[full] else None
 
 
+#: spoken forms whose apostrophe marks what is left out, read as written out in full
 _SPOKEN = ((re.compile(r"(?<![A-Za-z])['\u2019]em\b", re.IGNORECASE), "them"),
            (re.compile(r"\by['\u2019]all\b", re.IGNORECASE), "you all"),
            (re.compile(r"\bain['\u2019]?t(?=\s+(?:got|been|had|done|seen)\b)", re.IGNORECASE), "has not"),

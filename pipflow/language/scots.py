@@ -1,7 +1,8 @@
 """Scots and northern English spellings of everyday English words, as typed or said in Scotland
 and the north of England ("take 2 aff the rack", "bring it ben", "switch aff aw the lights", "fae
-the bedside table", "divvent touch it"): each read as the English word, by both readers, only where the word is no word of the world's names (a place called "the
-Ben" stays that place) and, in the household reader, no English word itself."""
+the bedside table", "divvent touch it"): each read as the English word, by both readers, only
+where the word is no word of the world's names (a place called "the Ben" stays that place) and, in
+the household reader, no English word itself."""
 from __future__ import annotations
 
 #: Scots word -> the English word the grammars have

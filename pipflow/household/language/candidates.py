@@ -70,7 +70,7 @@ def _about_the_speaker(words: list[str]) -> bool:
     """A part that opens with the speaker as its subject ("i do not want ...", "we can not ..."),
     with no only, except or bound in it: what it denies is the speaker's, not the robots' work
     (northern English "ah" for I too: "ah cannot stand that fella")."""
-    said_i = words[:1] in (["i"], ["we"]) or (words[:1] == ["ah"] and words[1:2] and words[1] in AFTER_I)  # "ah cannot"
+    said_i = words[:1] in (["i"], ["we"]) or (words[:1] == ["ah"] and len(words) > 1 and words[1] in AFTER_I)
     return said_i and not set(words) & (EXCLUSIVITY | BOUNDS)
 
 

@@ -637,6 +637,7 @@ def instead_closing(words: list[str], notes: list[str]) -> list[str]:
 
 #: the whole home or the room the speaker is in, said as what to warm ("warm the place up")
 _THE_HOME = {("the", "place"), ("the", "house"), ("the", "room"), ("the", "flat"), ("in", "here")}
+#: the verbs that warm it
 _WARMING = {"warm", "heat"}
 
 

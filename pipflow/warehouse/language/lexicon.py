@@ -143,7 +143,7 @@ def _as_said_in_full(word: str) -> str:
     said = SPELLINGS.get(word)
     if said in _SAID_AS:
         return said
-    return (None if common_word(word) else dropped_g(word)) or word
+    return dropped_g(word) or word
 
 
 #: a time of day said after a verb of arriving or leaving, with no count after it (:meth:`Lexicon.sentences`)
@@ -299,13 +299,13 @@ IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before
           # negative concord: "I don't want no more than 3 X on P" is at most 3 ("no fewer than": at least)
           (re.compile(r"\b(?:i|we)\s+(?:do\s*n['\u2019]?t|do\s+not)\s+want\s+(?:no\s+)?(more|fewer|less)\s+than\b",
                       re.IGNORECASE), lambda m: "i want at " + ("most" if m.group(1).lower() == "more" else "least")),
-          # negative concord after a verb that places or takes ("don't touch nothing in P", "don't put
-          # none on P", "don't move nothing off P"): the second negative repeats the first. Never
-          # after "leave", "keep", "let" or "want", where "don't leave P with no X" may mean the opposite
           # "the night shift robots ain't touchin nothing today" (a rule said as what they are not
           # doing): don't touch
           (re.compile(r"\b(?:are\s*n['\u2019]?t|ai\s*n['\u2019]?t|is\s*n['\u2019]?t|are\s+not|is\s+not)\s+touch(?:ing|in)\b",
                       re.IGNORECASE), "dont touch"),
+          # negative concord after a verb that places or takes ("don't touch nothing in P", "don't put
+          # none on P", "don't move nothing off P"): the second negative repeats the first. Never
+          # after "leave", "keep", "let" or "want", where "don't leave P with no X" may mean the opposite
           (re.compile(r"\b((?:do\s*n['\u2019]?t|do\s+not|never|ca\s*n['\u2019]?t|cannot|wo\s*n['\u2019]?t)\s+"
                       r"(?:touch|put|move|send|take|bring|use|load|ship|stack|store|carry|shift|drop|pull|place|"
                       r"park|stage|give)\s+)(nothing|none|nobody|no|nuttin|nutten)\b", re.IGNORECASE),
@@ -315,7 +315,8 @@ IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before
           (re.compile(r"(\bto\s+(?:the\s+)?[\w-]+(?:\s+[\w-]+){0,2}?)\s*,?\s*where\s+(?:it|they|dey|dem)\s+"
                       r"belongs?\b", re.IGNORECASE), r"\1"),
           # "Ramp same thing.": the order before, for this place ("same for the ramp")
-          (re.compile(r"(^|[.!?;]\s*)((?:the\s+)?[\w-]+(?:\s+[\w-]+)?)\s*,?\s+(?:the\s+)?same\s+(?:thing|ting)"
+          (re.compile(r"(^|[.!?;]\s*)(?!(?:do|then|and|just|exactly|it|that|dat|same|the\s+same)\b)"
+                      r"((?:the\s+)?[\w-]+(?:\s+[\w-]+)?)\s*,?\s+(?:the\s+)?same\s+(?:thing|ting)"
                       r"(?=\s*(?:[.!?;]|$))", re.IGNORECASE), r"\1same for \2"),
           # "one more of each thing we carry": of each product
           (re.compile(r"\beach\s+(?:thing|ting)(?:\s+(?:we|you)\s+(?:carry|stock|have|got|gat|sell|keep))?\b",
@@ -1713,13 +1714,13 @@ class Lexicon:
             return False  # "for" is no misspelt "four", "to" none of "two" (as in names_world)
         if _number_typo(word) is not None:
             return True
-        # a common word written as itself is no slip of a grammar word ("driver" no "drive"), as it
-        # is none of a number (_number_typo) or of a name (_near_name)
         if SPELLINGS.get(word) in _SAID_AS:   # "dey" (they) is no slip of a name ("dry")
             return False
-        full = None if common_word(word) else dropped_g(word)
+        full = dropped_g(word)
         if full is not None:   # "runnin": as "running" is
             return self.content(full)
+        # a common word written as itself is no slip of a grammar word ("driver" no "drive"), as it
+        # is none of a number (_number_typo) or of a name (_near_name)
         repaired = SPELLINGS.get(word) or (None if common_word(word) else self._keyword_typo(word))
         if repaired is not None and repaired not in FUNCTION_WORDS:
             return repaired not in ASIDE_ONLY   # "tmr": tomorrow
