@@ -17,8 +17,9 @@ SCOTS = {"fae": "from", "frae": "from", "tae": "to", "aff": "off", "oot": "out",
          "dae": "do", "masel": "myself", "auld": "old", "windae": "window", "hing": "hang", "hoose": "house",
          "anaw": "too", "aye": "yes",
          # Geordie and other northern English ("divvent touch it", "gan and put the light on", "hoy
-         # it in the bin", "wor lass": our (my) wife, "yem": home, "nowt": nothing, "aal": all)
+         # it in the bin", "wor lass": our (my) wife, "yem": home, "nowt": nothing; "aal" (all) is
+         # read before what it quantifies only: pipflow.household.language.dialect.scots_as_english)
          "divvent": "dont", "divvnt": "dont", "dinnet": "dont", "cannet": "cant", "gan": "go",
          "gannin": "going", "hoy": "throw", "yem": "home", "wor": "our", "neebody": "nobody",
          "nowt": "nothing", "owt": "anything", "summat": "something", "deein": "doing", "knaa": "know",
-         "roond": "round", "aal": "all"}
+         "roond": "round"}

@@ -285,7 +285,9 @@ def _without_unread_parts(command: str, clauses: list[str], unknown: list[str]) 
 def _without_unread_end(words: list[str], unknown: list[str], index: dict) -> list[tuple[str, str, str, dict]]:
     """ "slice the melon and the bread pls mums doin a picnic": a remark run on without a comma,
     from the first word not understood to the clause's end, left out where it names nothing of
-    the home and holds no operative word (negation, only, except, a bound, a quantity)."""
+    the home and holds no operative word (negation, only, except, a bound, a quantity), no word
+    that says a thing is all right ("the kipper smells fine": left out, the rest says the opposite)
+    and no "or"."""
     unread = set(unknown)
     start = next((k for k, w in enumerate(words) if w in unread), None)
     while start and words[start - 1] in _DETERMINERS:   # "the cricket will be starting": from "the"
@@ -296,7 +298,8 @@ def _without_unread_end(words: list[str], unknown: list[str], index: dict) -> li
     tail = words[start:end]
     # a word of a name said alone names nothing ("a picnic" of the picnic blanket); "a"
     # quantifies only what it names, and the tail names nothing of the home
-    if any((w,) in index for w in tail) or any(near_operative(w) for w in tail if w not in ("a", "an")):
+    if any((w,) in index or w in APPRAISALS or w in JOINERS for w in tail) \
+            or any(near_operative(w) for w in tail if w not in ("a", "an")):
         return []
     rest = " ".join(words[:start] + words[end:])
     return [(rest, f"read without '{' '.join(tail)}' (not understood)", rest, {})]

@@ -111,6 +111,9 @@ def pidgin_in_home(words: list[str], index: dict, notes: list[str]) -> list[str]
     return out
 
 
+#: "aal ower the shop": all over (Geordie "aal" is read as "all" only before what it quantifies or
+#: "over": Arabizi spells "3al", on, the same way)
+_OVER = frozenset({"ower", "over"})
 #: words that follow "ah" where it is "I" (Scots and northern English), never where it is a sigh
 AFTER_I = frozenset({"have", "m", "am", "will", "ll", "can", "cannot", "cant", "could", "do", "dont", "did", "had",
                       "was", "would", "need", "want", "think", "know", "just", "never", "d", "ve"})
@@ -121,7 +124,7 @@ _CONTRACTED = {"m": ("am",), "ll": ("will",), "ve": ("have",), "d": ("would",)}
 def scots_as_english(words: list[str], known: Callable[[str], bool], notes: list[str]) -> list[str]:
     """The words with Scots words read as English (:data:`pipflow.language.scots.SCOTS`: "switch
     aff the telly", "bring my specs ben", "that yin as well") where the word is no word of the home
-    or of the reader (``known``); "aw" is "all" before what it quantifies ("aw the lights") and
+    or of the reader (``known``); "aw", "aal" are "all" before what they quantify ("aw the lights") and
     "too" after "an" at a clause's end ("the big sheet an aw", "an aal"); "the morn" is tomorrow; a
     word said with "in" for "ing" is the "ing" word (:func:`pipflow.language.english.dropped_g`)."""
     out: list[str] = []
@@ -142,7 +145,7 @@ def scots_as_english(words: list[str], known: Callable[[str], bool], notes: list
             out.append("too")
             k += 2
             continue
-        said = "all" if w == "aw" and nxt in _ALL_OF and not known(w) else \
+        said = "all" if (w == "aw" and nxt in _ALL_OF or w == "aal" and nxt in _ALL_OF | _OVER) and not known(w) else \
             SCOTS.get(w) if w not in _SCOTS_ALSO_ENGLISH and not known(w) else None
         if said is None and not known(w):
             said = dropped_g(w)   # "washin", "gettin", "comin"

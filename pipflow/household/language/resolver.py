@@ -515,7 +515,7 @@ class Resolver:
             # "wash the teapot. Teapot in the cupboard": the things were made so by the clause
             # before, and this place makes nothing so: it says where they go
             return {**out, "op": "put", "to": st["to"]}
-        if place:
+        if place and prev.get("via"):
             # "heat the tortillas on the comal, and the tortillero on the mesa": the change was made
             # at a place of its own, this place makes nothing so, and the things are not there:
             # heated there is impossible, moved there is likely; which is asked, never refused as
