@@ -154,7 +154,10 @@ ADDRESSEES = frozenset({"all", "everyone", "everybody", "team", "folks", "guys",
                         # Malay ("Abang, ...": brother; "bang", "kak": sister; "encik", "tuan": sir; "adik")
                         "abang", "bang", "encik", "tuan", "adik",
                         # Sinhala ("machan": mate; "malli": younger brother; "akka": older sister)
-                        "machan", "machang", "malli", "akka"})
+                        "machan", "machang", "malli", "akka",
+                        # Trinidadian ("Evening allyuh": you all; "padna": partner; "Boy move ...": man) and
+                        # Scouse ("youse": you all)
+                        "allyuh", "alyuh", "padna", "pardna", "boy", "youse", "yous"})
 
 
 #: a thanks that can close an order without a comma before it ("... to bay 2 ta")
@@ -171,6 +174,9 @@ THANKS = frozenset({"thanks", "ta", "cheers", "xiexie", "thx", "ty", "tyvm", "th
                     "tack", "tackar",
                     # Maltese ("grazzi": thanks)
                     "grazzi"})
+#: words that soften an order they close, and are a "no" anywhere else: Trinidadian "nah" ("add 4
+#: more X to P nah": do it, nah; "nah wait, make it 6" takes back)
+SOFTENERS = frozenset({"nah"})
 #: who an order is said to, or a tag that closes it, without a comma before it ("... on dispatch
 #: please mate", "... forklifts only mind", "... thanks lads"): never a word that is operative
 CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "boss", "love", "pet", "hun",
@@ -186,6 +192,10 @@ CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "
                      "cher", "chere", "sha", "podna",
                      # Bahamian English ("..., bey": boy, man; "ya hear")
                      "bey",
+                     # Trinidadian English ("..., padna", "allyuh")
+                     "padna", "allyuh",
+                     # Scouse ("..., la": lad; "..., ta la")
+                     "la", "lad",
                      # Maltese ("..., grazzi": thanks; "ċaw", "saħħa": bye; "ħabib": friend; "insomma": anyway)
                      "grazzi", "caw", "sahha", "habib", "habiba", "insomma",
                      # Brazilian Portuguese: thanks, "OK?" ("..., beleza?"), laughter
@@ -251,11 +261,12 @@ def trailing_thanks(words: list[str], content: Callable[[str], bool]) -> int:
     the whole clause (then the clause itself is talk), or when a word of it carries content in
     this domain (a name that happens to be "ta") or is operative."""
     rest, k = list(words), 0
-    while rest and (rest[-2:] == ["thank", "you"] or tuple(rest[-2:]) in REQUEST_TAGS or rest[-1] in CLOSERS):
+    while rest and (rest[-2:] == ["thank", "you"] or tuple(rest[-2:]) in REQUEST_TAGS or rest[-1] in CLOSERS
+                    or rest[-1] in SOFTENERS):
         n = 2 if rest[-2:] == ["thank", "you"] or tuple(rest[-2:]) in REQUEST_TAGS else 1
         rest, k = rest[:-n], k + n
     said = words[-k:] if k else []
-    if k == 0 or k >= len(words) or any(content(w) or (w not in THANKS and w not in _TAG_WORDS and near_operative(w)
+    if k == 0 or k >= len(words) or any(content(w) or (w not in THANKS | SOFTENERS and w not in _TAG_WORDS and near_operative(w)
                                                        and not _inside_talk(said, n)) for n, w in enumerate(said)):
         return 0
     return k
@@ -317,6 +328,8 @@ def trailing_adjunct(words: list[str], content: Callable[[str], bool],
             continue
         if any(w in ADJUNCTS and nxt in _BACK for w, nxt in zip(rest, rest[1:] + [""])):
             continue
+        if words[j] in TEMPORAL and words[j - 1] == "for":   # "for when she wakes up": what for, a time
+            j -= 1
         if not any(content(w) or near_operative(w) for w in words[:j]):
             return 0   # the clause is talk as a whole, or nothing: judged as a clause
         return len(words) - j
@@ -956,6 +969,9 @@ INTERJECTIONS = frozenset({
     # Romanian ("Hai, ...": come on; "gata": done; "bine": fine; "deci": so; "adica": that is; "doamne":
     # God; "mersi": thanks; "frate", "bre": mate)
     "hai", "haide", "gata", "bine", "deci", "adica", "doamne", "mersi", "multumesc", "frate", "bre", "pa",
+    # Trinidadian ("Boy, ...": man; "wam": what's happening; "steups": the sucked teeth of annoyance;
+    # "eh eh": surprise) and Scouse ("ey", "ar eh": aw, come on)
+    "boy", "wam", "steups", "steupes", "ey", "ar",
     # a signpost of urgency ("Attention! swap ...")
     "attention"})
 

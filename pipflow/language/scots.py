@@ -22,4 +22,7 @@ SCOTS = {"fae": "from", "frae": "from", "tae": "to", "aff": "off", "oot": "out",
          "divvent": "dont", "divvnt": "dont", "dinnet": "dont", "cannet": "cant", "gan": "go",
          "gannin": "going", "hoy": "throw", "yem": "home", "wor": "our", "neebody": "nobody",
          "nowt": "nothing", "owt": "anything", "summat": "something", "deein": "doing", "knaa": "know",
-         "roond": "round"}
+         "roond": "round",
+         # Scouse ("the arl fella": the old man, her partner; "giz": give us; "youse": you, to more
+         # than one; "bevvies": drinks)
+         "arl": "old", "giz": "give", "youse": "you", "yous": "you"}

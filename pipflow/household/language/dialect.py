@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from typing import Callable
 
-from pipflow.household.language.lexicon import PHRASES
+from pipflow.household.language.lexicon import PHRASES, ROOM_WORDS
 from pipflow.household.language.names import first_words, home_words
 from pipflow.household.language.restated import DETERMINERS
 from pipflow.household.language.tokens import PUNCT
@@ -564,8 +564,25 @@ def bring_in(words: list[str], index: dict, notes: list[str]) -> list[str]:
             if refs and all(ref["kind"] == "object" for ref in refs):
                 notes.append(f"'{out[k]} in' says indoors (the home model has no outdoors): read as '{out[k]}'")
                 del out[k + 1]
+        elif out[k] in _BRING_IN and (end := _object_after(out, k + 1, index)) and end < len(out) \
+                and out[end] == "in" and (end + 1 == len(out) or out[end + 1] in _AFTER_IN):
+            # "bring the towel in (from the line) and ...": the "in" after the thing, the same
+            notes.append(f"'{out[k]} ... in' says indoors (the home model has no outdoors): read as '{out[k]}'")
+            del out[end]
         k += 1
     return out
+
+
+#: what may follow the "in" of "bring the towel in": the clause's end, where from, the next order
+_AFTER_IN = frozenset(PUNCT) | {"from", "and", "then", "while", "please", "now", "for"}
+
+
+def _object_after(words: list[str], k: int, index: dict) -> int:
+    """The index after "[the] <object of the home>" at ``k`` (its longest name), 0 where no object
+    of the home alone is named there."""
+    j = _after_determiners(words, k)
+    end = next((e for e in range(min(len(words), j + 5), j, -1) if tuple(words[j:e]) in index), 0)
+    return end if end and all(ref["kind"] == "object" for ref in index[tuple(words[j:end])]) else 0
 
 
 #: verbs of switching whose particle may stand after the things ("turn all the lights off")
@@ -591,3 +608,72 @@ def particle_before_exception(words: list[str], notes: list[str]) -> list[str]:
             notes.append(f"'{w} ... {out[p]} except' read as '{w} {out[p]} ... except'")
             out[k + 1:p + 1] = [out[p]] + out[k + 1:p]
     return out
+
+
+def do_as_wash(words: list[str], world: dict, index: dict, notes: list[str]) -> list[str]:
+    """ "do the pots", "do the dishes": "do" opening a clause before things that are all washing
+    (objects that wash, or a category whose every member does) asks for them washed, as "wash the
+    pots" does; before anything else ("do the lights", "do the bed") it is left as said."""
+    out = list(words)
+    for k, w in enumerate(words):
+        if w != "do" or (k and words[k - 1] not in PUNCT and words[k - 1] not in _BEFORE_VERB | {"just"}):
+            continue
+        j = _after_determiners(words, k + 1)
+        if j == k + 1:   # "do it", "do both": no thing named
+            continue
+        refs = next((index[tuple(words[j:e])] for e in range(min(len(words), j + 5), j, -1)
+                     if tuple(words[j:e]) in index), [])
+        if refs and all(_all_wash(world, ref) for ref in refs):
+            notes.append(f"'do the {words[j]}' read as washing them")
+            out[k] = "wash"
+    return out
+
+
+def _all_wash(world: dict, ref: dict) -> bool:
+    """Whether what a reference names is only things that wash (a category: every member)."""
+    objects = world.get("objects") or {}
+    if ref["kind"] == "object":
+        named = [objects.get(ref["name"]) or {}]
+    elif ref["kind"] == "category":
+        named = [e for e in objects.values() if ref["name"] in (e.get("categories") or [])]
+    else:
+        return False
+    return bool(named) and all("washable" in (e.get("properties") or []) for e in named)
+
+
+#: rooms said after a thing switched ("put the standard lamp on in the front room")
+_ROOMS_SAID = sorted((tuple(r.split()) for r in ROOM_WORDS), key=len, reverse=True)
+
+
+def room_of_a_switched_thing(words: list[str], index: dict, notes: list[str]) -> list[str]:
+    """ "put the standard lamp on in the front room", "switch off the big light in the back room":
+    the room where a thing switched stands, said after it, where the words name one thing of the
+    home: the home model has no rooms, and one thing named needs none to be found, so the room
+    is left out (a note says so). After words that name several things ("the light in the
+    kitchen") it is left as said, and refused: reading it as any light would widen the order."""
+    out = list(words)
+    k = 0
+    while k < len(out):
+        room = next((r for r in _ROOMS_SAID if out[k:k + 2] == ["in", "the"] and tuple(out[k + 2:k + 2 + len(r)]) == r),
+                    None)
+        if room is not None and _one_thing_switched_before(out, k, index):
+            notes.append(f"'in the {' '.join(room)}': where {out[k - 2] if out[k - 1] in _SWITCH_PARTICLES else out[k - 1]} "
+                         "is; one thing is named, so the room adds nothing")
+            del out[k:k + 2 + len(room)]
+            continue
+        k += 1
+    return out
+
+
+def _one_thing_switched_before(words: list[str], k: int, index: dict) -> bool:
+    """Whether the words before ``k`` end with one thing of the home switched: "<thing> on|off" or
+    "<switch verb> on|off [the] <thing>"."""
+    end = k - 1 if k and words[k - 1] in _SWITCH_PARTICLES else k
+    for start in range(max(0, end - 4), end):
+        refs = index.get(tuple(words[start:end]))
+        if not refs or len(refs) != 1 or refs[0]["kind"] not in ("object", "place"):
+            continue
+        j = start - (start and words[start - 1] in _DETERMINERS)
+        if end < k or (j >= 2 and words[j - 1] in _SWITCH_PARTICLES and words[j - 2] in _SWITCH_VERBS | {"put"}):
+            return True
+    return False

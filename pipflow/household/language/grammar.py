@@ -197,6 +197,7 @@ tend: @V_TEND @OUT? things | @V_TEND things @OUT
     | @THERE @IS sthings @ALLOVER place -> mess
     | sthings @IS? @ALLOVER place -> mess
     | (place | @ROOMSAID) @IS @FULLOF things -> mess
+    | @ROOMSAID @IS? @MESS -> roommess
 
 keep: @V_LEAVE things @STAY
     | @V_LEAVE things @THERE

@@ -143,7 +143,7 @@ _add("UNIT", "pieces of,bits of,items of")
 UNIT_DETERMINERS = {"a piece of", "a bit of", "an item of"}
 _add("V_PUT", "put,place,move,bring,take,carry,set,transfer,gather,collect,stash,drop,store,stick,pop,lay,"
      "hang,deliver,fetch,get,pick,relocate,stack,grab,shift,clear,pack,lift,haul,lug,hand,drag,plonk,bung,"
-     "shove,tuck,hoist,ferry,send")
+     "shove,tuck,hoist,ferry,send,peg")
 #: "empty the fridge onto the counter": everything in a place taken, to where the command says
 _add("V_EMPTY", "empty,clear out,unload,unpack")
 #: "put the espresso cup down on the bar": a particle of the move before where it goes
@@ -197,7 +197,8 @@ _add("MESS", "all over the place,piling up,piled up,lying around,lying about,lef
 _add("MESS", ",".join(f"{article} {strength}{noun}" for noun in ("tip", "mess", "pigsty", "bombsite", "state", "shambles")
                       for article, strength in (("a", ""), ("a", "complete "), ("a", "total "), ("a", "right "),
                                                 ("a", "proper "), ("a", "real "), ("an", "absolute "),
-                                                ("a", "bit of a "), ("in", "a "))))
+                                                ("a", "bit of a "), ("in", "a "), ("like", "a "),
+                                                ("like", "an absolute "), ("like", "a complete "))))
 for _w in LIGHT_CUES:
     PHRASES[tuple(_w.split())] = ("LIGHTCUE", LIGHT_CUES[_w])
 _add("SEE", "see,read,see anything,read anything")
@@ -355,7 +356,9 @@ _add("SUBJ", "i,we,you")
 #: wishes: "I want X", and what people say for it of food and drink ("I fancy a warm bagel",
 #: "could murder a cuppa", "I'd love a tea", "I'm dying for a coffee")
 _add("WANT", "want,would like,like,wish,d like,prefer,fancy,would love,love,could murder,could kill for,"
-     "am dying for,am craving,crave,would kill for,could do with,could use,could go for,would go for,could eat,am gasping for,can i get,can i have,"
+     "am dying for,am craving,crave,would kill for,could do with,could use,could go for,would go for,could eat,am gasping for,"
+     # British "I'm gagging for a brew", "I'm desperate for a cuppa"
+     "am gagging for,am desperate for,can i get,can i have,"
      "could i get,could i have,may i have,can we get,can we have,could we have,could we get")
 #: a wish graded by a hedge inside it ("I could really go for", "I would just love"): the same wish
 for _k, (_c, _v) in list(PHRASES.items()):
@@ -397,7 +400,7 @@ _add("REASON", ",".join(sorted(LEAVING_REASONS)))
 #: asked, offering what answers it in the home (a refusal's candidates: ``NEEDS_OFFERED``); before
 #: a request it is the request's reason ("I'm shattered, turn the telly off")
 TIRED = ("tired", "shattered", "knackered", "exhausted", "worn out", "sleepy", "whacked", "pooped", "done in",
-         "dead on my feet", "ready for bed", "beat")
+         "dead on my feet", "dead on me feet", "ready for bed", "beat")
 THIRSTY = ("thirsty", "parched", "gasping", "dry", "spitting feathers")
 HUNGRY = ("hungry", "starving", "famished", "peckish", "ravenous", "starved")
 _add("REASON", ",".join(TIRED + THIRSTY + HUNGRY))
@@ -463,7 +466,7 @@ ROOM_WORDS = ("room", "lounge", "living room", "sitting room", "bedroom", "kitch
               "lobby", "cloakroom", "laundry room", "scullery", "pantry",
               # French and Levantine "salon" (the living room), and rooms said in other Englishes
               "salon", "toilet", "washroom", "lounge room", "family room", "tv room", "guest room", "kids room")
-_add("HERE", "here,in here,over here,over there," + ",".join(f"in the {h},around the {h}" for h in HOME_WORDS)
+_add("HERE", "here,in here,over here,over there,in there," + ",".join(f"in the {h},around the {h}" for h in HOME_WORDS)
      + "," + ",".join(f"{at} {whose} {h}" for h in HOME_WORDS + ("place",) for at in ("in", "around")
                       for whose in ("this", "my", "our")))
 _add("ROOMSAID", ",".join(f"the {r},my {r},our {r}" for r in ROOM_WORDS))
@@ -591,6 +594,16 @@ FILLER = {("um",), ("umm",), ("uh",), ("uhh",), ("uhm",), ("er",), ("erm",),   #
           # Newfoundland English talk ("luh": look; "b'y": boy, said to anyone; "yes b'y"; "where ye to?":
           # how are you, where are you)
           ("luh",), ("b", "y"), ("yes", "b", "y"), ("where", "you", "to"),
+          # the speaker too tired to do it themselves ("I haven't got it in me (today)", "I can't be
+          # bothered"): why the robots are asked, nothing asked of them; and Scouse talk ("ta la":
+          # thanks, lad; "ey": hey; "ar eh": aw, come on; "giz a hand": help me; "while youse are at it")
+          ("i", "have", "not", "got", "it", "in", "me"), ("i", "have", "not", "got", "it", "in", "me", "today"),
+          ("i", "can", "not", "be", "bothered"), ("i", "can", "not", "be", "arsed"),
+          ("ta", "la"), ("la",), ("ey",), ("ar", "eh"), ("give", "a", "hand"), ("give", "us", "a", "hand"),
+          ("while", "you", "are", "at", "it"), ("while", "you", "re", "at", "it"),
+          ("can", "one", "of", "you"), ("could", "one", "of", "you"), ("will", "one", "of", "you"),
+          ("while", "you", "are", "out", "there"), ("while", "you", "are", "there"), ("while", "you", "are", "up", "there"),
+          ("while", "you", "are", "in", "there"), ("but", "tough"), ("tough", "luck"),
           ("tenastelign",), ("tenastilign",), ("ameseginalehu",), ("ameseginalew",), ("ebakachihu",), ("ebakachuh",),
           ("wey", "gud"), ("gobez",), ("gobeze",), ("yikirta",), ("yiqirta",), ("tolo",), ("tolo", "tolo"),
           ("please",), ("kindly",), ("abeg",), ("biko",), ("just",), ("quickly",), ("now",), ("for", "me"), ("for", "us"), ("could", "you"),
@@ -805,6 +818,9 @@ MARKS = frozenset("+&.,;:!?'\"()[]-_\u2018\u2019\u201c\u201d\u2010\u2011\u2012\u
 _TYPED = ((r"(?<!['\u2019])\bu\b", "you"),   # never the "u" of "pa'u" (Hawaiian: a glottal stop written in the word)
           # "ur" before where or how one is ("while ur there", "when ur done") is "you are", else "your"
           (r"\bur\s+(?=(?:there|here|up|done|passing|over|in|out|back|home|at|finished)\b)", "you are "),
+          # "your" for "you're" after a word that opens a clause of time ("while your out there")
+          (r"\b(while|whilst|when|once|if|as|since)\s+your\b(?=\s+(?:out|there|here|up|done|passing|over|at|in|back|"
+           r"home|finished|going|on)\b)", r"\1 you are"),
           (r"\bur\b", "your"), (r"\br\b", "are"), (r"\bw\b(?=\s+(?:the|a|an|my|your|her|his|it|them)\b)", "with"),
           (r"\b(?:tmrw|tmr|tmrrw|2moro|2morrow)\b", "tomorrow"), (r"\b(they|you|we)re\b", r"\1 are"),
           (r"\b(it|that|there|what)ll\b", r"\1 will"), (r"\b(that|there|what)s\b", r"\1 is"), (r"\bim\b", "i am"),
@@ -837,6 +853,11 @@ def _located_said_apart(m: re.Match) -> str:
     return f"{before} , {'it is' if said.startswith('it') else 'they are'} "
 
 
+#: words that say how the room feels ("its freezing", "its gloomy"): cues of warmth, light, sound and air
+_FEEL_WORDS = sorted({w for k, (cls, _) in PHRASES.items() if cls in ("TEMPCUE", "LIGHTCUE", "SOUNDCUE", "AIRCUE")
+                      and len(k) == 1 for w in k}, key=len, reverse=True)
+
+
 def normalize(text: str) -> str:
     """Lower case, contractions spelt out ("don't" -> "do not"), hyphens and underscores as
     spaces, so that "desk-lamp", "desk_lamp" and "desk lamp" read alike."""
@@ -865,6 +886,10 @@ def normalize(text: str) -> str:
     # "the melon's too heavy", "the room's ever so stuffy": a possessive is never followed by a degree
     t = re.sub(r"'s(?=\s+(?:too|very|so|really|quite|rather|ever so|absolutely|dead|proper|awfully|far too|way too|full|"
                r"covered|like)\s)", " is", t)
+    # "its dead gloomy in there", typed without its apostrophe: "its" before a degree or a cue of
+    # how the room feels is "it is" (a possessive is followed by a thing)
+    t = re.sub(r"\bits(?=\s+(?:too|very|so|really|quite|rather|ever so|absolutely|dead|proper|awfully|far too|way too|"
+               r"a bit|bit|" + "|".join(_FEEL_WORDS) + r")\b)", "it is", t)
     # a tag question closing a sentence asks nothing: "bit dark in here, isn't it?"
     t = re.sub(r",?\s*\b(?:is|isn't|isnt|are|aren't|arent|was|wasn't)\s*(?:n't\s+)?(?:it|they|not it)\s*(?=\?)", " ", t)
     t = re.sub(r",?\s*\binnit\b", " ", t)

@@ -60,6 +60,8 @@ KIN = {"grandad", "granddad", "grandpa", "grandma", "granny", "gran", "nan", "na
        "youngsters", "youngster", "youngins", "younguns", "grandchild", "mother", "nanny", "pops",
        # Geordie and Scots ("the bairn": the child; "wor lass", "the missus": the wife)
        "bairn", "bairns", "lass", "missus",
+       # northern English, Irish and Scouse ("me mam", "me nan", "the arl fella": the old man)
+       "mam", "mammy", "fella", "fellow",
        # the same said in the family's other language ("Maman is sleeping", "bring Jeddo his tea")
        "maman", "mamani", "madar", "pedar", "baba", "mama", "papa", "jeddo", "teta", "dadi", "dada", "nani",
        "abuela", "abuelo", "abuelita", "abuelito", "oma", "opa", "nonna", "nonno", "yaya", "babcia", "dziadek",
@@ -92,6 +94,8 @@ THIRD_POSTURE = frozenset(POSTURE | {"the", "whole", "day", "always", "usually",
 
 #: what a person does with a thing where they are ("Abiye is reading the gazeta in the salon")
 DOING = frozenset({"reading", "watching", "using", "eating", "drinking", "playing"})
+#: small words inside a title ("Homes Under the Hammer", "Lord of the Rings")
+_TITLE_GLUE = frozenset({"the", "of", "and", "in", "on", "under", "a", "an", "to", "at", "for", "with", "from", "by"})
 #: what a thing's own word says is someone's ("jun hao's bag", "ah ma's bed", "the kids' aircon")
 _OWNER = re.compile(r"^(?:the\s+)?(.+?)(?:['\u2019]s|(?<=s)['\u2019])\s")
 
@@ -333,6 +337,11 @@ class _Reader:
         """How many words from ``k`` name a person (0: none); ``objective``: where "her" is one."""
         words = self.words
         w = words[k] if k < len(words) else ""
+        if w in _OWN_AFTER | {"me"} and k + 1 < len(words) and words[k + 1] not in PERSON_PRONOUNS | {"her"}:
+            # "for me mam", "our Kyle", "her nan": whose person, then the person
+            n = self.person(k + 1)
+            if n:
+                return 1 + n
         if w in PERSON_PRONOUNS or (objective and w == "her"):
             return 1
         owner = owner_at(words, k, self.owners)
@@ -340,6 +349,9 @@ class _Reader:
             return owner
         if w == "the" and k + 1 < len(words) and words[k + 1] in KIN and not self.known(words[k + 1]):
             return 2
+        if w == "the" and words[k + 1:k + 2] == ["old"] and k + 2 < len(words) and words[k + 2] in KIN | {"man"} \
+                and not self.known(words[k + 2]):   # "the old fella", "the old man"
+            return 3
         if w == "the" and owner_at(words, k + 1, self.owners):   # "the twins" of "the twins' desk"
             return 1 + owner_at(words, k + 1, self.owners)
         if w in TITLES and w not in self.home and k + 1 < len(words) and words[k + 1].isalpha() \
@@ -362,6 +374,8 @@ class _Reader:
         (of minutes or hours it says when: "she's up in 10 min"), a word taking up a thing, or one
         that may ask something (no "shift" of work: "up from night shift")."""
         w = rest[j]
+        if w in DOING and j and rest[j - 1] in BEING:   # "she is reading": what she does ("reading glasses" aside)
+            return False
         return ((w in self.home and w not in FUNCTION_WORDS) or (w.isdigit() and not duration_at(rest, j))
                 or w in THING_WORDS or (_asks(w) and not _work_shift(rest, j)))
 
@@ -414,9 +428,29 @@ class _Reader:
             return 0
         end = min(self.clause_end(i), stop if stop is not None and stop > i else len(self.words))
         rest = self.words[i + n:end]
-        if not rest or any(self._keeps(rest, j) for j in range(len(rest))):
+        title = self._title_done(rest)
+        if not rest or any(self._keeps(rest, j) for j in range(len(rest)) if j not in title):
             return 0
         return end
+
+    def _title_done(self, rest: list[str]) -> set[int]:
+        """Where in a clause about a person the title of what they read or watch stands ("she's
+        watching Homes Under the Hammer", "reading her Catherine Cookson"): capitalised words
+        after a verb of :data:`DOING` (and the small words between them), which name nothing
+        of the home however their words read ("under" is no word of where here)."""
+        out: set[int] = set()
+        for j, w in enumerate(rest):
+            if w not in DOING:
+                continue
+            k = j + 1 + (j + 1 < len(rest) and rest[j + 1] in ("her", "his", "their", "my", "the"))
+            run = [m for m in range(k, len(rest)) if rest[m] in _TITLE_GLUE
+                   or (rest[m] in self.capitalised and rest[m] not in self.home)]   # "the Telly" is the telly
+            run = run[:next((x for x, m in enumerate(run) if m != k + x), len(run))]   # contiguous from k
+            while run and rest[run[-1]] in _TITLE_GLUE:
+                run.pop()
+            if run and rest[run[0]] not in _TITLE_GLUE:
+                out |= set(run)
+        return out
 
     def whose_pronoun(self, k: int) -> tuple[str, ...] | None:
         """The person a possessive pronoun at ``k`` stands for ("his side table" where the home

@@ -138,7 +138,8 @@ class Resolver:
         self.wanting_light: set[str] = set()                   # words of a cue for light, said of no place
         self.via_placed: dict[str, str] = {}                   # objects put where an action happens -> place
         self.said: list[list[str]] = []                        # the things each statement before was about
-        self.mess: list[tuple[dict, str]] = []                 # disorder said of things: (statement, words)
+        # disorder said of things: (statement, words, what "it" / "they" stood for when it was said)
+        self.mess: list[tuple[dict, str, list[str]]] = []
         self.foul: set[str] = set()                            # words of observations of foulness
         self.gone_cold: set[str] = set()                       # words of "X has gone cold"
         # a cue of warmth decided at the end: (state, words, what to do when no request answers it)
@@ -657,7 +658,7 @@ class Resolver:
         elif op == "meal":
             self.meal(st, words)
         elif op == "tend" and st.get("said"):   # decided at the end: a later clause may answer it
-            self.mess.append((st, words))
+            self.mess.append((st, words, self.last))
             self.last = [n for n, _ in self.objects(st["things"], words)]
         elif op == "tend":
             self.tend(st, words)
@@ -1073,13 +1074,23 @@ class Resolver:
             why = (f"'{words}': which thing? this home has no room heater "
                    f"{'that is on ' if cond == 'off' else 'that is off ' if every else ''}(a heater, "
                    "radiator, fire or log burner that switches); say what to switch")
-            self.unanswered.append((cond, words, lambda: _raise(TranslationError(why))))
+            self.unanswered.append((cond, words, lambda: self._reason_or_refused(words, why, bool(every))))
             return
         self.goal.notes.append(f"'{words}': read as the room's heating {cond} ({', '.join(heaters)}; "
                                "docs/household.md, cues)")
         for n in heaters:
             self.want(n, cond, False, words)
         self.last = heaters
+
+    def _reason_or_refused(self, words: str, why: str, heated: bool) -> None:
+        """A cue of warmth no heater answers: in a home with no room heater at all, said with other
+        requests ("Me mam's freezing. Put the throw on her bed"), it is their reason (noted); alone,
+        or where the home has heaters but none as asked, it is asked (``why``)."""
+        done = list(dict.fromkeys([*self.goal.inside, *self.goal.state]))
+        if heated or not done:
+            raise TranslationError(why)
+        self.goal.notes.append(f"'{words}': this home has no room heater; read as the reason for the rest "
+                               f"({', '.join(done)})")
 
     def tend(self, st: dict, words: str) -> None:
         """What things need ("deal with the dishes", "the bedding is all over the place"), read
@@ -1247,8 +1258,14 @@ class Resolver:
         """Disorder said of things ("the clothes are everywhere") is the reason for a clause that
         acts on them ("..., put them in the basket"); said alone, it asks for what they need
         (:meth:`tend`)."""
-        acted = set(self.goal.inside) | set(self.goal.state)
-        for st, words in self.mess:
+        acted = set(self.goal.inside) | set(self.goal.state) | {c["in"] for c in self.goal.count}
+        for st, words, before in self.mess:
+            self.last = before   # "they" said in it stands for what it stood for then, not what was said after
+            if st.get("room"):   # "the front room's like a tip, get the rubbish in the bin": its reason
+                if not acted:
+                    raise TranslationError(f"'{words}': what should be done about it? say what to tidy or put away")
+                self.goal.notes.append(f"'{words}' is the reason for the rest")
+                continue
             names = [n for n, _ in self.objects(st["things"], words)]
             if names and set(names) <= acted:
                 self.goal.notes.append(f"'{words}' is the reason for what is done with {', '.join(names)}")

@@ -49,7 +49,8 @@ def _exactly(words: tuple[str, ...], index: dict, kind: str) -> list[str]:
 
 #: words of time that may close a restating clause ("... on the stove from yesterday")
 SINCE = {"from", "since", "yesterday", "last", "night", "this", "morning", "earlier", "all", "day", "today",
-         "tonight", "again", "week", "lunch", "breakfast", "dinner", "tea"}
+         "tonight", "again", "week", "lunch", "breakfast", "dinner", "tea",
+         "monday", "tuesday", "wednesday", "thursday", "friday", "saturday", "sunday", "weekend", "the"}
 
 
 def _place(words: list[str], index: dict) -> list[str]:
@@ -77,10 +78,12 @@ def leading_subject(clause: tuple[str, ...], world: dict) -> tuple[str, ...] | N
 def restates_location(clause: tuple[str, ...], before: list[tuple[str, ...]], world: dict) -> str | None:
     """What a clause restates ("curry is in fridge"), when it says where a thing is and the world
     agrees (module docstring); None otherwise. ``before``: the clauses before it, in order."""
-    be = next((k for k, w in enumerate(clause) if w in BE), None)
+    # "it is on the table", "it has been on the table since Sunday"
+    be = next((k for k, w in enumerate(clause) if w in BE or (w == "been" and k and clause[k - 1] in ("has", "have"))),
+              None)
     if not be:
         return None
-    subject, rest = clause[:be], list(clause[be + 1:])
+    subject, rest = clause[:be - (clause[be] == "been")], list(clause[be + 1:])
     while len(rest) > 1 and rest[0] in STILL and rest[1] not in DETERMINERS:
         rest = rest[1:]
     if len(rest) < 2 or rest[0] not in AT:

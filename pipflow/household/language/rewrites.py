@@ -4,6 +4,8 @@ minutes", offered only as a candidate), what for ("for later"), amounts of a thi
 cherries"), and "or" under a negation ("nobody is using X or Y"). Each rewrite leaves a note."""
 from __future__ import annotations
 
+import re
+
 from pipflow.household.language.lexicon import (DURATION_HEDGES, DURATION_UNITS, FILLER, GRADED, HOT_DRINKS, MANNER_OBJECTS,
                                                 MANNERS, MEALS, MEASURES, ORDER_WORDS, ORDINAL_DETERMINERS, PHRASES, PURPOSE_INFINITIVES,
                                                 PURPOSE_WORDS, PURPOSES, TIME_WORDS)
@@ -662,3 +664,64 @@ def warm_the_place(words: list[str], notes: list[str]) -> list[str]:
         out.append(words[k])
         k += 1
     return out
+
+
+#: what a thing does if left ("... before it goes off", "so they don't go stale"): said as the
+#: reason for the order, never a state asked for
+_SPOILING = ("off", "stale", "bad", "cold", "soggy", "mouldy", "moldy", "rotten", "hard", "warm", "flat", "manky",
+             "brown", "dry", "limp")
+_SPOILS = re.compile(r"\b(?:before|so|or\s+else|or)\s+(?:it|they|that|them)\s+(?:(?:does|do|will|would)\s+not\s+|"
+                     r"(?:will|ll|would)\s+)?(?:go|goes|get|gets|turn|turns|be)\s+(?:all\s+)?(?:"
+                     + "|".join(_SPOILING) + r")\b|\bbefore\s+(?:it|they)\s+(?:spoils?|melts?|rots?|dries\s+out|dry\s+out)\b")
+
+
+def spoiling_as_reason(words: list[str], notes: list[str]) -> list[str]:
+    """ "put the bread back in the bread bin before it goes stale", "... so it doesn't go off": what
+    the thing will do if left is why the order is given; the words are left out (a note says so),
+    and what the order asks is read as said."""
+    said = " ".join(words)
+    if not _SPOILS.search(said):
+        return words
+    notes.append("; ".join(f"'{m.group(0)}' is why, not what is asked" for m in _SPOILS.finditer(said)))
+    return _SPOILS.sub(" ", said).split()
+
+
+
+#: the copulas after which "covered in ..." says what a thing is like ("the knife is covered in jam")
+_BE = frozenset({"is", "are", "s", "was", "were", "been", "got", "gets", "get"})
+
+
+def covered_in(words: list[str], index: dict, notes: list[str]) -> list[str]:
+    """ "the knife is covered in marge", "left on the side all covered in jam": a thing covered in
+    what names nothing of the home, or an object of the home covered in anything, is dirty: after a copula the words read as "dirty" (a state a
+    later clause may answer, or the cue to wash it); after anything else ("left on the side all
+    covered in jam") they say how it was left, and are left out (a note says so). Covered in a
+    thing of the home ("the table is covered in books") stays as said."""
+    out: list[str] = []
+    k = 0
+    while k < len(words):
+        j = k + (words[k] == "all")
+        if words[j:j + 1] == ["covered"] and j + 1 < len(words) and words[j + 1] in ("in", "with"):
+            end = next((e for e in range(j + 2, len(words)) if words[e] in PUNCT or words[e] in ("and", "so", "but")),
+                       len(words))
+            what = [w for w in words[j + 2:end] if w not in ("the", "a", "some", "all", "that", "this")]
+            if 0 < len(what) <= 3 and (not any((w,) in index for w in what) or _object_covered(out, index)):
+                notes.append(f"'{' '.join(words[k:end])}': dirty")
+                if out and out[-1] in _BE:
+                    out.append("dirty")
+                k = end
+                continue
+        out.append(words[k])
+        k += 1
+    return out
+
+
+def _object_covered(before: list[str], index: dict) -> bool:
+    """Whether the first thing the clause before "covered" names is an object of the home alone
+    (a place covered in things is cluttered: "the table is covered in books")."""
+    start = max((i for i, w in enumerate(before) if w in PUNCT), default=-1) + 1
+    for a in range(start, len(before)):
+        b = next((e for e in range(min(len(before), a + 5), a, -1) if tuple(before[a:e]) in index), None)
+        if b is not None:
+            return all(ref["kind"] == "object" for ref in index[tuple(before[a:b])])
+    return False

@@ -13,7 +13,7 @@ from pipflow.household.language.names import home_words, per_index, world_phrase
 from pipflow.household.language.restated import leading_subject, restates_location
 from pipflow.household.language.typos import typo_of, vocabulary
 from pipflow.household.language.unseen import unseen
-from pipflow.language.asides import (BOUNDS, EXCLUSIVITY, FUNCTION_WORDS, NEGATION, OPERATIVE, QUANTITIES, SELECTION,
+from pipflow.language.asides import (BOUNDS, EXCLUSIVITY, FUNCTION_WORDS, NEGATION, OPERATIVE, QUANTITIES, SELECTION, TEMPORAL,
                                      PLEASANTRIES, THANKS, Clause, clauses, content_free, is_opener, near_operative,
                                      signature, trailing_adjunct, trailing_thanks, unmarked_statement)
 from pipflow.language.english import common_word
@@ -100,7 +100,7 @@ WISH_VERBS = {"need", "want", "like", "have", "take", "be", "wish", "prefer", "l
 
 #: what the speaker will have what the order makes with, or for ("I'll have it with my tea"):
 #: a wish verb with a pronoun, then one of these, is the speaker's use of it, no wish
-USE_LINKS = {"with", "for", "at", "in", "by"}
+USE_LINKS = {"with", "for", "at", "in", "by", "before", "after", "later", "when", "once", "tonight"}
 
 
 #: who else may be said to be about to do something ("she'll make the sabzi after her class", "my
@@ -146,8 +146,10 @@ def speaker_busy(words: tuple[str, ...]) -> bool:
     the robots, and nothing operative in it."""
     for opener in SPEAKER_NOW:
         rest = words[len(opener):]
+        # "I'm gagging for a brew" is a wish of the lexicon ("am gagging for"), not what the speaker is doing
+        wish = tuple(words[len(opener) - 1:len(opener) + 2]) in PHRASES
         if words[:len(opener)] == opener and rest and rest[0].endswith("ing") and len(rest[0]) > 5 \
-                and (rest[0],) not in PHRASES and not any(w in NEGATION or w in EXCLUSIVITY for w in rest):
+                and (rest[0],) not in PHRASES and not wish and not any(w in NEGATION or w in EXCLUSIVITY for w in rest):
             return True
     return False
 
@@ -192,11 +194,18 @@ def speaker_needing(words: tuple[str, ...]) -> bool:
     """Whether a clause says the speaker needs what the order is about (:data:`NEEDING`)."""
     for opener in NEEDING:
         rest = words[len(opener):]
-        if words[:len(opener)] == opener and rest and rest[0] in ("it", "them", "those", "these") and all(
-                w in PURPOSE_WORDS or w in ("later", "on", "for", "in", "the", "a", "bit", "while", "first", "thing")
-                for w in rest[1:]):
+        if not (words[:len(opener)] == opener and rest and rest[0] in ("it", "them", "those", "these")):
+            continue
+        # "I need them scrubs for tonight": a demonstrative points back at things the order names
+        n = next((j for j in range(1, min(len(rest), 4)) if rest[j] in _NEEDED_WHEN), 1) if rest[0] != "it" else 1
+        if all(w in PURPOSE_WORDS or w in _NEEDED_WHEN for w in rest[n:]):
             return True
     return False
+
+
+#: what may follow what the speaker needs, saying when ("I need them later", "for tonight")
+_NEEDED_WHEN = frozenset({"later", "on", "for", "in", "the", "a", "bit", "while", "first", "thing", "tonight",
+                          "tomorrow", "today", "morning", "now", "soon"})
 
 
 #: marks that set a part of a sentence off like commas: dashes, brackets
@@ -282,6 +291,8 @@ def run_on_talk(kept: list[Clause], content: Callable[[str], bool], names: Calla
                 or _adjunct(words, content, names)
             if not n:
                 break
+            if n < len(words) - 1 and words[-n] in TEMPORAL and words[-n - 1] == "for":
+                n += 1   # "for when she wakes up": what for, a time
             end = c.start + len(words)
             out.append(Clause(end - n, end, tuple(words[-n:])))
             words = words[:-n]
@@ -297,8 +308,12 @@ def _adjunct(words: list[str], content: Callable[[str], bool], names: Callable[[
     if not n:
         return 0
     opening, rest = words[-n], words[-n + 1:]
-    if opening == "since" or (opening == "for" and any(w.endswith("ing") and len(w) > 4 for w in rest[:2])):
+    # "since" after "been" says how long a thing has lain ("it's been on the table since Sunday")
+    if (opening == "since" and "been" not in words[:-n]) \
+            or (opening == "for" and any(w.endswith("ing") and len(w) > 4 for w in rest[:2])):
         return 0
+    if opening == "for" and any(PHRASES.get(tuple(words[-n - m:-n + 1]), ("",))[0] == "WANT" for m in (1, 2)):
+        return 0   # "I'm dying for a brew": what is wished for, no purpose
     return n
 
 

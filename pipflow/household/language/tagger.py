@@ -16,8 +16,10 @@ from pipflow.language.asides import FUNCTION_WORDS
 from pipflow.language.english import common_word
 from pipflow.household.language.beside import beside_as_where
 from pipflow.household.language.colloquial import colloquial
+from pipflow.household.language.comings import just_come_in, someone_blamed
 from pipflow.household.language.corrections import corrected
-from pipflow.household.language.dialect import (arabic_as_english, bring_in, cut_as_switch, make_as_switch,
+from pipflow.household.language.dialect import (arabic_as_english, bring_in, cut_as_switch, do_as_wash, make_as_switch,
+                                                room_of_a_switched_thing,
                                                 newfoundland_as_english, on_off_as_verbs, open_close_as_switch,
                                                 particle_before_exception, patois_in_home, pidgin_in_home,
                                                 put_on_as_switch, romance_words_as_english, scots_as_english,
@@ -31,9 +33,10 @@ from pipflow.household.language.people import KIN, owners, owners_before_names, 
 from pipflow.household.language.retag import (act_before_noun, copula_dropped, demonstratives, elided_it_is, left_lying,
                                               located, restated_order, without_hedges)
 from pipflow.household.language.rewrites import (caused, closed_again, closed_back, given, heat_purpose,
-                                                 instead_closing, measures, or_under_negation, particles, same_for,
+                                                 covered_in, instead_closing, measures, spoiling_as_reason, or_under_negation, particles, same_for,
                                                  so_before_an_order, warm_the_place, wherever_they_belong,
                                                  without_manner)
+from pipflow.household.language.narrowed import just_as_only, narrowed_by_only
 from pipflow.household.language.ones import one_as_kind
 from pipflow.household.language.romance import adjective_after, of_as_where
 from pipflow.household.language.roomnames import where_as_name
@@ -128,7 +131,9 @@ def owners_as_the(command: str, world: dict, notes: list[str]) -> str:
     command = re.sub(r"(?<![\w'’])([A-Za-z][a-z]+)s\s+([A-Za-z]+)",
                      lambda m: owner(m) if unknown(m.group(1).lower() + "s") else m.group(0), command)
     # "my husband's shirt", Geordie "wor lass's mug": the determiner before the owner goes with it
-    command = re.sub(r"\b(?:my|our|wor|your|his|her|their|the)\s+" + _OWNED, _OWNED, command, flags=re.IGNORECASE)
+    # ("the arl fella's bevvies": old, in Scouse; "me old dad's chair")
+    command = re.sub(r"\b(?:my|our|wor|your|his|her|their|the)\s+(?:(?:old|arl|auld|owd)\s+)?" + _OWNED, _OWNED, command,
+                     flags=re.IGNORECASE)
     return command.replace(_OWNED, "the ")
 
 
@@ -153,9 +158,12 @@ def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: l
     words = so_before_an_order(same_for(colloquial(corrected(words, notes), notes), notes), notes)
     words = or_under_negation(measures(without_manner(words, notes), index, notes), notes)
     words = heat_purpose(caused(given(me_as_where_the_speaker_is(words, index, notes), notes), notes), notes)
-    words = warm_the_place(instead_closing(words, notes), notes)
+    words = just_as_only(spoiling_as_reason(warm_the_place(instead_closing(words, notes), notes), notes), notes)
+    words = narrowed_by_only(covered_in(words, index, notes), world, index, notes)
+    words = someone_blamed(just_come_in(words, index, notes), index, notes)
     words = closed_back(closed_again(wherever_they_belong(words, notes), notes), notes)
-    words = make_as_switch(cut_as_switch(words, world, index, notes), world, index, notes)
+    words = room_of_a_switched_thing(words, index, notes)
+    words = make_as_switch(cut_as_switch(do_as_wash(words, world, index, notes), world, index, notes), world, index, notes)
     words = on_off_as_verbs(put_on_as_switch(setting_as_switch(words, world, index, notes), world, index, notes),
                             world, index, notes)
     words = bring_in(open_close_as_switch(particle_before_exception(words, notes), world, index, notes), index, notes)

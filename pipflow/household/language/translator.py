@@ -166,9 +166,16 @@ def _understand(command: str, world: dict, choose: dict[str, str] | None = None)
             "words": out["words"]}
 
 
+def _shut_in(world: dict, place: str) -> bool:
+    """Whether a place is a container closed now (what lies in it is taken only by opening it)."""
+    entry = world["places"].get(place) or {}
+    return "openable" in (entry.get("properties") or []) and not (entry.get("state") or {}).get("open")
+
+
 def resolve_counts(world: dict, goal: dict) -> dict:
     """Goal with every count condition replaced by concrete objects: members already there count;
-    the rest are the pickupable members nearest to the place (travel distance), then by name."""
+    the rest are the pickupable members that lie in no closed container first (a plan that need
+    not open the fridge does not), then the nearest to the place (travel distance), then by name."""
     # deferred: pulls networkx and numpy (~350 ms; only a count goal is resolved by travel)
     from pipflow.team.travel import TravelMap
 
@@ -183,7 +190,7 @@ def resolve_counts(world: dict, goal: dict) -> dict:
         cands = [o for o in members(world, cat) if o in world["objects"]]
         there = [o for o in cands if (world["objects"][o]["in"] == place and o not in placed) or o in out["in"].get(place, [])]
         free = [o for o in cands if o not in there and o not in placed and "pickupable" in world["objects"][o]["properties"]]
-        free.sort(key=lambda o: (tm.distance(world["objects"][o]["in"], place), o))
+        free.sort(key=lambda o: (_shut_in(world, world["objects"][o]["in"]), tm.distance(world["objects"][o]["in"], place), o))
         need = max(0, n - len(there))
         if need > len(free):
             raise Refusal(f"only {len(there) + len(free)} {cat} can end in {place}, not {n}")

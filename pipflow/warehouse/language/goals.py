@@ -838,7 +838,8 @@ class GoalRules:
     def g_ceiling(self, node: Tree) -> None:
         parts = self.clause_parts(node, bare=True)
         words, plist = parts.words, parts.plist
-        places = self.place_list(plist[0])
+        # "don't leave more than 5 X in P": the place said after the things
+        places = self.place_list(plist[0]) if plist else self.loc(parts.locs[0])[0]
         head = self.ihead(self.sub(node, "ihead")[0], words)
         n = int(self.toks(node, "NUM")[0].value)
         self.put(places, "each", [{"items": {"names": [head]}, "amount": {"at_most": n}, "words": words}], words)

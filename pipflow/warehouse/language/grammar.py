@@ -291,6 +291,7 @@ goal: there_be items loc                                  -> g_set
     | places bneg above NUM of? ihead                        -> g_ceiling
     | ("make" "sure" | "ensure") that? places bneg above NUM of? ihead -> g_ceiling
     | ("dont" | "do" "not" | "never") "let" places above NUM of? ihead -> g_ceiling
+    | ("dont" | "do" "not" | "never") ("leave" | "keep" | "store" | "have") ("more" "than" | "over" | "above") NUM of? ihead loc -> g_ceiling
     | items src modal? go to places                       -> g_transfer_src
     | places ("gets" | "receives" | "takes" | "should" "get" | "should" "receive") items from places -> g_receive
     | places modal? setv items from places                  -> g_receive

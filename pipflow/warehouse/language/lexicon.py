@@ -40,7 +40,7 @@ from pipflow.warehouse.language.reordered import (base_verb, by_as_among, count_
                                                 of_as_from, on_as_to, place_as_it, place_first, place_must_be,
                                                 places_then_each, said_at, source_after_verb, to_be_done,
                                                 topic_first, verb_last)
-from pipflow.warehouse.language.transcripts import places_taken_back, them_as_determiner
+from pipflow.warehouse.language.transcripts import orders_taken_back, places_taken_back, them_as_determiner
 from pipflow.warehouse.language.wordorder import left_dislocated, noun_adjuncts, numbered_siblings, unmarked_lists
 
 #: no user writes a longer command; past this the parser would only be asked to burn time
@@ -110,7 +110,9 @@ SPELLINGS = {"shud": "should", "shld": "should", "u": "you", "r": "are", "wont":
              "wit": "with", "nuttin": "nothing", "nutten": "nothing", "notting": "nothing", "ting": "thing",
              "tings": "things", "everyting": "everything", "anyting": "anything", "someting": "something",
              "dere": "there", "da": "the", "fa": "for", "gat": "got", "wha": "what", "jes": "just",
-             "bout": "about"}
+             "bout": "about",
+             # Trinidadian English "doh" (don't: "doh touch the chiller"), "jus" (just)
+             "doh": "dont", "jus": "just"}
 #: Scots spellings of the grammar's own words (shared with the household reader: "shift 5 corks fae
 #: pend tae steading", "take 2 aff vault", "dinnae touch it"), read only where the word is no word
 #: of the world's names
@@ -412,7 +414,9 @@ IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before
           # "get 3 X onto the dock from wherever": where from is left open, as it is unsaid
           (re.compile(r"[,;]?\s*\bfrom\s+wherever\b(?!\s+(?:is|it|they|there|you|we))", re.IGNORECASE), ""),
           # "..., don't ask me why": no content (an idiom: no negation of anything said)
-          (re.compile(r"[,;]?\s*\b(?:do\s*n['\u2019]?t|do\s+not)\s+ask\s+(?:me\s+)?(?:why|how\s+come)\b", re.IGNORECASE), ""),
+          (re.compile(r"[,;]?\s*\b(?:do\s*n['\u2019]?t|do\s+not|doh)\s+ask\s+(?:me\s+)?(?:why|how\s+come)\b", re.IGNORECASE), ""),
+          # "Don't ask." closing its clause: the same
+          (re.compile(r"[,;]?\s*\b(?:do\s*n['\u2019]?t|do\s+not|doh)\s+ask(?:\s+me)?(?=\s*(?:[.,;:!?]|$))", re.IGNORECASE), ""),
           # "..., no excuses": insisting, no content
           (re.compile(r"[,;]?\s*\bno\s+(?:excuses|messing(?:\s+about|\s+around)?|arguments)\b", re.IGNORECASE), ""),
           # "forklifts only on this lot (job, run)" and bare "on this": "on this one", the job
@@ -453,9 +457,32 @@ IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before
           # "one more of each in P, on top of what's in there (already)": "more" says it already
           (re.compile(r"(\bmore\b[^.;!?]*?)[,;]?\s*\bon\s+top\s+of\s+what(?:\s+is|['\u2019]?s)\s+(?:already\s+)?"
                       r"(?:(?:in|on)\s+)?(?:there|it)(?:\s+already)?\b", re.IGNORECASE), r"\1"),
-          # "bring all the X to P, every single tin": "all" says it already
-          (re.compile(r"(\ball\b[^.;!?]*?)[,;]?\s*\bevery\s+single(?:\s+(?:one|[a-z]+))?(?=\s*(?:[.,;:!?]|$))",
+          # "bring all the X to P, every single tin", "clear out P, every last thing", "swap everything on
+          # P with Q, all of it": "all", "every" or emptying says it already
+          (re.compile(r"(\b(?:all|every|everything|empty|clear|clean)\b[^.;!?]*?)[,;]?\s*\b(?:every\s+(?:single|last)"
+                      r"(?:\s+(?:one|[a-z]+))?|all\s+of\s+(?:it|them|dem))(?=\s*(?:[.,;:!?]|$))", re.IGNORECASE), r"\1"),
+          # "move every last X to P": every X; "each and every place": every place
+          (re.compile(r"\bevery\s+last\b(?=\s+[a-z])", re.IGNORECASE), "every"),
+          (re.compile(r"\beach\s+and\s+every\b", re.IGNORECASE), "every"),
+          # "at least 10 X on P, more is fine": "at least" says it already
+          (re.compile(r"(\b(?:at\s+least|minimum|or\s+more)\b[^.;!?]*?)[,;]?\s*\b(?:any(?:thing)?\s+)?more\s+(?:is|['\u2019]?s)\s+"
+                      r"(?:fine|ok|okay|good|alright|no\s+problem)\b", re.IGNORECASE), r"\1"),
+          # "don't touch P at all": "at all" stresses the "not" before it
+          (re.compile(r"(\b(?:do\s*n['\u2019]?t|doh|do\s+not|never|not)\b[^.;!?,]*?)\s+at\s+all\b(?=\s*(?:[.,;:!?]|$))",
                       re.IGNORECASE), r"\1"),
+          # Trinidadian "leave it just so": as it is; "now for now": right now
+          (re.compile(r"\b(leave|keep)\s+(it|them|dem)\s+just\s+so\b", re.IGNORECASE), r"\1 \2 as it is"),
+          (re.compile(r"\bnow\s+for\s+now\b", re.IGNORECASE), "now"),
+          # "... by the time the truck reach(es)": when, which a goal does not fix
+          (re.compile(r"[,;]?\s*\bby\s+the\s+time\s+[^.,;:!?\d]*", re.IGNORECASE), ""),
+          # Trinidadian ", is so dem want it" (that's how they want it), opening its clause: why, no order
+          (re.compile(r"[,.;]\s*is\s+so\s+(?:dem|they|dey|he|she|we|i|the\s+[a-z]+)\b[^.;:!?,\d]*", re.IGNORECASE), ""),
+          # "P, which has 11 X right now, needs to come down to 6": P should have 6 X (the count it has
+          # now is what the world says anyway)
+          (re.compile(rf"\b([a-z][a-z0-9-]*(?:\s+[a-z0-9]+)?)\s*,\s*which\s+(?:has|have|got|holds?)\s+(?:{_NUMBER}|\d+)\s+"
+                      r"([a-z][a-z0-9_-]*(?:\s+(?!right\b|now\b|at\b)[a-z][a-z0-9_-]*)?)(?:\s+(?:right\s+now|now|at\s+the\s+moment))?\s*,\s*"
+                      r"(?:needs?\s+to|has\s+to|have\s+to|should|must)\s+(?:come|go|get|be\s+brought)\s+(?:down|up)\s+to\s+"
+                      rf"({_NUMBER}|\d+)\b", re.IGNORECASE), r"\1 should have \3 \2"),
           # "move 10 X off P, wherever there's space": where to is left open, as it is unsaid
           (re.compile(r"[,;]?\s*\bwherever\s+there(?:\s+is|['\u2019]?s)\s+(?:space|room)\b", re.IGNORECASE), ""),
           # "the night shift ones stay on charge": those robots are not used
@@ -858,6 +885,8 @@ QUANTITY_PHRASES: dict[str, tuple[str, ...]] = {
     # "P shouldn't drop below 20 X all night": so too ("all" is no quantity of a span of time)
     "all night": (), "all day": (), "all shift": (), "all week": (), "all the time": (),
     "all night long": (), "all day long": (),
+    # "first thing in the morning": early, a time ("first" orders nothing there)
+    "first thing in the morning": (), "first thing in morning": (), "first thing tomorrow": (),
 }
 
 
@@ -1118,6 +1147,8 @@ def addressed_anyone(toks: list[Tok]) -> list[Tok]:
 #: the verbs that open an order: the grammar's and the verb lexicon's (never a pronoun or another
 #: grammar word: "can you ...", "someone moved ..." open none)
 _ORDER_VERBS = ORDER_VERBS | frozenset(VERB_LEXICON)
+#: verbs of a change by a factor or an amount ("cut it by a third"), which may replace an order taken back
+_CHANGE_VERBS = frozenset({"cut", "reduce", "increase", "raise", "lower", "triple", "quadruple", "trim"})
 #: words of address that may open an order without a comma ("Boss send 15 X to P", "abang move ..."):
 #: who is asked, never a word that counts or selects
 _ADDRESSED = frozenset(w for w in ADDRESSEES | CLOSERS if w.isalpha() and w not in OPERATIVE
@@ -1901,7 +1932,7 @@ class Lexicon:
         verbs = {w for w in self.keywords if " " not in w} | set(VERB_LEXICON)
         toks = self._definite_groups(them_as_determiner(read_counts(_split_hyphens(
             this_job_announced(case_endings(topic_marked(self._interjection_set_off(fixed)))), self.keywords))))
-        toks, framed = without_request_frames(places_taken_back(toks), verbs)
+        toks, framed = without_request_frames(orders_taken_back(places_taken_back(toks), _ORDER_VERBS | _CHANGE_VERBS), verbs)
         toks = places_then_each(by_as_among(toks))   # before "by" is read as "at"
         toks = source_after_verb(of_as_from(place_as_it(by_as_at(toks))))
         toks = item_as_subject(fronted_source(to_be_done(needs_doing(toks, verbs), verbs), verbs))

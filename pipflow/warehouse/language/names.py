@@ -505,7 +505,9 @@ class NameIndex:
                     and not any(word in KIND_WORDS[k] or word in self.stems[k] for k in KINDS))
         owners, self.parts, self.shared_parts, self.loose_parts = _word_parts(self.names, by_name, alone, english)
 
-        self.shortened = _Shortenings(self.names, alone, owners, _starts(self.names, by_name, alone, owners))
+        # a spelling of a grammar word shortens no name: "dat" (that) is no "dispatch"
+        self.shortened = _Shortenings(self.names, lambda w: alone(w) and w not in self.respelt, owners,
+                                      _starts(self.names, by_name, alone, owners))
         self.contents = _contents(self.names)
         self.initials = _initials(self.names, STOPWORDS | self.reserved | set(self.forms))
         self.verb_places = _verb_places(self.names, self.reserved)
