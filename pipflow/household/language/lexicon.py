@@ -466,7 +466,7 @@ ROOM_WORDS = ("room", "lounge", "living room", "sitting room", "bedroom", "kitch
               "lobby", "cloakroom", "laundry room", "scullery", "pantry",
               # French and Levantine "salon" (the living room), and rooms said in other Englishes
               "salon", "toilet", "washroom", "lounge room", "family room", "tv room", "guest room", "kids room")
-_add("HERE", "here,in here,over here,over there,in there," + ",".join(f"in the {h},around the {h}" for h in HOME_WORDS)
+_add("HERE", "here,in here,over here,over there," + ",".join(f"in the {h},around the {h}" for h in HOME_WORDS)
      + "," + ",".join(f"{at} {whose} {h}" for h in HOME_WORDS + ("place",) for at in ("in", "around")
                       for whose in ("this", "my", "our")))
 _add("ROOMSAID", ",".join(f"the {r},my {r},our {r}" for r in ROOM_WORDS))
@@ -890,6 +890,9 @@ def normalize(text: str) -> str:
     # how the room feels is "it is" (a possessive is followed by a thing)
     t = re.sub(r"\bits(?=\s+(?:too|very|so|really|quite|rather|ever so|absolutely|dead|proper|awfully|far too|way too|"
                r"a bit|bit|" + "|".join(_FEEL_WORDS) + r")\b)", "it is", t)
+    # "it's dead gloomy in there": after how the room feels, "in there" is the room spoken of, as "in
+    # here" ("put the butter in there" stays where a thing goes)
+    t = re.sub(r"\b(" + "|".join(_FEEL_WORDS) + r")\s+in\s+there\b", r"\1 in here", t)
     # a tag question closing a sentence asks nothing: "bit dark in here, isn't it?"
     t = re.sub(r",?\s*\b(?:is|isn't|isnt|are|aren't|arent|was|wasn't)\s*(?:n't\s+)?(?:it|they|not it)\s*(?=\?)", " ", t)
     t = re.sub(r",?\s*\binnit\b", " ", t)
