@@ -54,6 +54,9 @@ DISPATCH = {**YARD, "shelves": {**YARD["shelves"], "dispatch": {
     ("never keep over 5 cider on the loading dock", "no more than 5 cider on dock"),
     # an order taken back whole, the new one's "it" the old one's things
     ("halve the bikkie on grog cage, nah wait, jus cut it by a third", "cut the biscuit on cage by a third"),
+    # a remark after the new order is set aside; "nah wait" is never talk to set aside with it
+    ("halve the bikkie on grog cage, nah wait, cut it by a third, it too heavy up top",
+     "cut the biscuit on cage by a third"),
     # only the clause before the taking back is taken back
     ("move 2 cider from grog cage to the loading dock, then halve the bikkie on pick face, nah wait, cut it by a quarter",
      "move 2 cider from cage to dock, then cut the biscuit on face by a quarter"),
@@ -181,6 +184,10 @@ def terrace() -> dict:
      "put the bread in the bread bin"),
     ("Just in from a 12 hour shift at the Royal, ward was mental. I'm gagging for a brew la", "put the kettle on"),
     ("ward was mental. I'm dying for a brew", "put the kettle on"),
+    # what the speaker needs pointed back at is why; a state after it is asked for
+    ("put the towel on the settee, I need them towels for tonight", "put the towel on the settee"),
+    ("put the mug and the plate in the sink, I need them washed for tonight",
+     "put the mug and the plate in the sink and wash them"),
 ])
 def test_scouse_reads_as_its_plain_english(terrace: dict, said: str, plain: str) -> None:
     assert goal(said, terrace) == goal(plain, terrace)

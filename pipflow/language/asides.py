@@ -638,6 +638,8 @@ def _operative_at(ws: list[str], k: int) -> bool:
         return False   # "..., those are booked for the other party": the subject of a report, no selection
     if k < 2 and k < _demonstrative_subject(ws):   # the subject is at most "that one"
         return False   # "..., that one bruk", "..., those dent up": said of the things just named
+    if ws[k] in SOFTENERS and nxt in ("wait", "scratch", "sorry", "hold"):
+        return True    # "nah wait", "nah scratch that": a taking back, as "no wait" is
     return near_operative(ws[k])
 
 

@@ -686,17 +686,17 @@ def spoiling_as_reason(words: list[str], notes: list[str]) -> list[str]:
     return _SPOILS.sub(" ", said).split()
 
 
-
 #: the copulas after which "covered in ..." says what a thing is like ("the knife is covered in jam")
 _BE = frozenset({"is", "are", "s", "was", "were", "been", "got", "gets", "get"})
 
 
 def covered_in(words: list[str], index: dict, notes: list[str]) -> list[str]:
     """ "the knife is covered in marge", "left on the side all covered in jam": a thing covered in
-    what names nothing of the home, or an object of the home covered in anything, is dirty: after a copula the words read as "dirty" (a state a
-    later clause may answer, or the cue to wash it); after anything else ("left on the side all
-    covered in jam") they say how it was left, and are left out (a note says so). Covered in a
-    thing of the home ("the table is covered in books") stays as said."""
+    what names nothing of the home, or an object of the home covered in anything, is dirty: after
+    a copula the words read as "dirty" (a state a later clause may answer, or the cue to wash it);
+    after anything else ("left on the side all covered in jam") they say how it was left, and are
+    left out (a note says so). A place covered in things of the home ("the table is covered in
+    books") stays as said."""
     out: list[str] = []
     k = 0
     while k < len(words):

@@ -197,8 +197,9 @@ def speaker_needing(words: tuple[str, ...]) -> bool:
         if not (words[:len(opener)] == opener and rest and rest[0] in ("it", "them", "those", "these")):
             continue
         # "I need them scrubs for tonight": a demonstrative points back at things the order names
+        # (words of no state or verb: "I need them washed for tonight" asks for a state)
         n = next((j for j in range(1, min(len(rest), 4)) if rest[j] in _NEEDED_WHEN), 1) if rest[0] != "it" else 1
-        if all(w in PURPOSE_WORDS or w in _NEEDED_WHEN for w in rest[n:]):
+        if all((w,) not in PHRASES for w in rest[1:n]) and all(w in PURPOSE_WORDS or w in _NEEDED_WHEN for w in rest[n:]):
             return True
     return False
 

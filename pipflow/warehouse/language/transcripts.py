@@ -129,8 +129,9 @@ def orders_taken_back(toks: list[Tok], verbs: frozenset[str]) -> list[Tok]:
         end = next((i for i in range(j, len(toks)) if toks[i].kind == "punct" and toks[i].value in _SENTENCE_ENDS),
                    len(toks))
         new = toks[j:end]
+        clause = new[:next((i for i, t in enumerate(new) if t.kind == "punct"), len(new))]
         if not (said & _ORDER_TAKEN_BACK and j > k + 1 and _opens_order(toks[start:k], verbs) and _opens_order(new, verbs)
-                and not any(t.kind == "word" and t.value in _ADDING for t in new)):
+                and not any(t.kind == "word" and t.value in _ADDING for t in clause)):
             k += 1
             continue
         pronoun = next((i for i, t in enumerate(new) if t.kind == "word" and t.value in _PRONOUNS), None)
