@@ -8,8 +8,8 @@ not know, is "someone", as "someone's left the milk out" is read.
 """
 from __future__ import annotations
 
-from pipflow.household.language.lexicon import DURATION_UNITS
 from pipflow.household.language.tokens import PUNCT
+from pipflow.language.asides import duration_at
 
 #: how a sentence of the speaker's coming opens ("just in off nights", "I'm just back from work")
 _COMING = (("just", "in"), ("just", "back"), ("just", "home"), ("just", "got", "in"), ("just", "got", "back"),
@@ -48,19 +48,9 @@ def _coming_end(words: list[str], k: int, index: dict) -> int:
             end = next((e for e in range(j, len(words)) if words[e] in PUNCT or words[e] in ("and", "so", "but")),
                        len(words))
             rest = words[j + 1:end]
-            if rest and not any(_names(index, w) or (w.isdigit() and not _duration(rest, i))
-                                for i, w in enumerate(rest)):
+            if rest and not any((w,) in index or (w.isdigit() and not duration_at(rest, i)) for i, w in enumerate(rest)):
                 return end
     return 0
-
-
-def _names(index: dict, word: str) -> bool:
-    return (word,) in index
-
-
-def _duration(words: list[str], i: int) -> bool:
-    """Whether the number at ``i`` says how long ("a 12 hour shift")."""
-    return i + 1 < len(words) and (words[i + 1] in DURATION_UNITS or words[i + 1].rstrip("s") in DURATION_UNITS)
 
 
 def someone_blamed(words: list[str], index: dict, notes: list[str]) -> list[str]:

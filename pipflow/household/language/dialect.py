@@ -7,7 +7,7 @@ from __future__ import annotations
 from typing import Callable
 
 from pipflow.household.language.lexicon import PHRASES, ROOM_WORDS
-from pipflow.household.language.names import first_words, home_words
+from pipflow.household.language.names import first_words, home_words, name_end, objects_named
 from pipflow.household.language.restated import DETERMINERS
 from pipflow.household.language.tokens import PUNCT
 from pipflow.language import pidgin
@@ -564,7 +564,8 @@ def bring_in(words: list[str], index: dict, notes: list[str]) -> list[str]:
             if refs and all(ref["kind"] == "object" for ref in refs):
                 notes.append(f"'{out[k]} in' says indoors (the home model has no outdoors): read as '{out[k]}'")
                 del out[k + 1]
-        elif out[k] in _BRING_IN and (end := _object_after(out, k + 1, index)) and end < len(out) \
+        elif out[k] in _BRING_IN and (end := name_end(out, j := _after_determiners(out, k + 1), index)) \
+                and all(ref["kind"] == "object" for ref in index[tuple(out[j:end])]) and end < len(out) \
                 and out[end] == "in" and (end + 1 == len(out) or out[end + 1] in _AFTER_IN):
             # "bring the towel in (from the line) and ...": the "in" after the thing, the same
             notes.append(f"'{out[k]} ... in' says indoors (the home model has no outdoors): read as '{out[k]}'")
@@ -575,14 +576,6 @@ def bring_in(words: list[str], index: dict, notes: list[str]) -> list[str]:
 
 #: what may follow the "in" of "bring the towel in": the clause's end, where from, the next order
 _AFTER_IN = frozenset(PUNCT) | {"from", "and", "then", "while", "please", "now", "for"}
-
-
-def _object_after(words: list[str], k: int, index: dict) -> int:
-    """The index after "[the] <object of the home>" at ``k`` (its longest name), 0 where no object
-    of the home alone is named there."""
-    j = _after_determiners(words, k)
-    end = next((e for e in range(min(len(words), j + 5), j, -1) if tuple(words[j:e]) in index), 0)
-    return end if end and all(ref["kind"] == "object" for ref in index[tuple(words[j:end])]) else 0
 
 
 #: verbs of switching whose particle may stand after the things ("turn all the lights off")
@@ -621,24 +614,14 @@ def do_as_wash(words: list[str], world: dict, index: dict, notes: list[str]) -> 
         j = _after_determiners(words, k + 1)
         if j == k + 1:   # "do it", "do both": no thing named
             continue
-        refs = next((index[tuple(words[j:e])] for e in range(min(len(words), j + 5), j, -1)
-                     if tuple(words[j:e]) in index), [])
-        if refs and all(_all_wash(world, ref) for ref in refs):
+        end = name_end(words, j, index)
+        refs = index[tuple(words[j:end])] if end else []
+        named = objects_named(refs, world)
+        if named and all(ref["kind"] in ("object", "category") for ref in refs) \
+                and all("washable" in world["objects"][n]["properties"] for n in named):
             notes.append(f"'do the {words[j]}' read as washing them")
             out[k] = "wash"
     return out
-
-
-def _all_wash(world: dict, ref: dict) -> bool:
-    """Whether what a reference names is only things that wash (a category: every member)."""
-    objects = world.get("objects") or {}
-    if ref["kind"] == "object":
-        named = [objects.get(ref["name"]) or {}]
-    elif ref["kind"] == "category":
-        named = [e for e in objects.values() if ref["name"] in (e.get("categories") or [])]
-    else:
-        return False
-    return bool(named) and all("washable" in (e.get("properties") or []) for e in named)
 
 
 #: rooms said after a thing switched ("put the standard lamp on in the front room")

@@ -11,6 +11,7 @@ from typing import Callable, Iterator, TypeVar
 
 from pipflow.household.language.lexicon import (DEVICES, FILLER, FORM_HEADS, KIND_WORDS, PHRASES, WINDOWS, plurals,
                                                 words_of)
+from pipflow.household.world import members
 from pipflow.language.asides import FUNCTION_WORDS
 from pipflow.language.numbers import read_number
 
@@ -84,6 +85,24 @@ def first_words(index: dict) -> frozenset[str]:
 def longest_name(index: dict) -> int:
     """The most words a name of the home has."""
     return max((len(k) for k in index), default=1)
+
+
+#: the most words a name is looked for in, from where it may start ("the big chest of drawers")
+_NAME_WORDS = 5
+
+
+def name_end(words: list[str], k: int, index: dict, stop: int | None = None) -> int:
+    """The index after the longest name of the home that starts at ``words[k]`` (and ends by
+    ``stop``), or 0 where none starts there."""
+    stop = len(words) if stop is None else stop
+    return next((e for e in range(min(stop, k + _NAME_WORDS), k, -1) if tuple(words[k:e]) in index), 0)
+
+
+def objects_named(refs: list[dict], world: dict) -> set[str]:
+    """The objects of the home that references of the index name (a category: its member objects)."""
+    objects = world.get("objects") or {}
+    return {n for ref in refs for n in ([ref["name"]] if ref["kind"] == "object" else members(world, ref["name"])
+                                        if ref["kind"] == "category" else []) if n in objects}
 
 
 def _names_key(world: dict) -> tuple:

@@ -9,6 +9,7 @@ said, and the command is refused on "only".
 """
 from __future__ import annotations
 
+from pipflow.household.language.names import name_end, objects_named
 from pipflow.household.language.tokens import PUNCT
 
 #: what may follow a clause-opening "just" that restricts ("..., just the plate and the pan")
@@ -62,8 +63,8 @@ def _listed(words: list[str], k: int, index: dict) -> tuple[list[tuple[int, int]
         if words[k] in _DETERMINERS or (found and words[k] == "and"):
             k += 1
             continue
-        end = next((e for e in range(min(len(words), k + 5), k, -1) if tuple(words[k:e]) in index), None)
-        if end is None:
+        end = name_end(words, k, index)
+        if not end:
             return [], k
         found.append((k, end))
         k = end
@@ -76,15 +77,15 @@ def _group_of(words: list[str], start: int, stop: int, things: list[tuple[int, i
               index: dict) -> tuple[int, int] | None:
     """(start, end) of the one phrase of ``words[start:stop]`` that names a group every listed
     thing belongs to (with its determiners); None where there is no such phrase, or several."""
-    members = [_objects(index[tuple(words[x:y])], world) for x, y in things]
+    members = [objects_named(index[tuple(words[x:y])], world) for x, y in things]
     found = []
     a = start
     while a < stop:
-        b = next((e for e in range(min(stop, a + 5), a, -1) if tuple(words[a:e]) in index), None)
-        if b is None:
+        b = name_end(words, a, index, stop)
+        if not b:
             a += 1
             continue
-        group = _objects(index[tuple(words[a:b])], world)
+        group = objects_named(index[tuple(words[a:b])], world)
         if len(group) > 1 and all(m and m <= group for m in members):
             first = a
             while first > start and words[first - 1] in _DETERMINERS | {"all"}:
@@ -92,15 +93,3 @@ def _group_of(words: list[str], start: int, stop: int, things: list[tuple[int, i
             found.append((first, b))
         a = b
     return found[0] if len(found) == 1 else None
-
-
-def _objects(refs: list[dict], world: dict) -> set[str]:
-    """The objects of the home some references name (a category: its members)."""
-    objects = world.get("objects") or {}
-    out: set[str] = set()
-    for ref in refs:
-        if ref["kind"] == "object":
-            out.add(ref["name"])
-        elif ref["kind"] == "category":
-            out |= {n for n, e in objects.items() if ref["name"] in (e.get("categories") or [])}
-    return out

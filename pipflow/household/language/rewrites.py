@@ -9,6 +9,7 @@ import re
 from pipflow.household.language.lexicon import (DURATION_HEDGES, DURATION_UNITS, FILLER, GRADED, HOT_DRINKS, MANNER_OBJECTS,
                                                 MANNERS, MEALS, MEASURES, ORDER_WORDS, ORDINAL_DETERMINERS, PHRASES, PURPOSE_INFINITIVES,
                                                 PURPOSE_WORDS, PURPOSES, TIME_WORDS)
+from pipflow.household.language.names import name_end
 from pipflow.household.language.tokens import PUNCT
 from pipflow.language.asides import near_operative
 from pipflow.language.numbers import read_number
@@ -721,7 +722,7 @@ def _object_covered(before: list[str], index: dict) -> bool:
     (a place covered in things is cluttered: "the table is covered in books")."""
     start = max((i for i, w in enumerate(before) if w in PUNCT), default=-1) + 1
     for a in range(start, len(before)):
-        b = next((e for e in range(min(len(before), a + 5), a, -1) if tuple(before[a:e]) in index), None)
-        if b is not None:
+        b = name_end(before, a, index)
+        if b:
             return all(ref["kind"] == "object" for ref in index[tuple(before[a:b])])
     return False
