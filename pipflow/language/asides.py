@@ -38,7 +38,9 @@ NEGATION = {"no", "not", "never", "nothing", "none", "nobody", "noone", "neither
             # northern English and Scots "nowt" (nothing): "gaffer does nowt tonight"
             "nowt", "naught"}
 EXCLUSIVITY = {"only", "except", "excepting", "but", "besides", "apart", "unless", "instead", "alone", "solely",
-               "exclusively", "else", "just", "other", "otherwise", "rather"}
+               "exclusively", "else", "just", "other", "otherwise", "rather",
+               # Yorkshire "nobbut" (only: "it's nobbut adverts")
+               "nobbut"}
 BOUNDS = {"least", "most", "max", "maximum", "min", "minimum", "more", "fewer", "less", "above", "below",
           "under", "over", "exceed", "exceeds", "between", "beyond", "within", "limit", "cap", "capped",
           "upto", "tops", "than", "enough", "full", "empty", "capacity", "exactly", "precisely"}
@@ -109,7 +111,12 @@ GREETINGS = frozenset({"hi", "hello", "hey", "hiya", "heya", "howdy", "morning",
                        # Australian ("G'day team", "Gday all")
                        "gday", "gidday",
                        # Maltese ("Bongu", "Bonġu": good morning; "bonswa": good evening; "grazzi": thanks)
-                       "bongu", "bonswa", "grazzi"})
+                       "bongu", "bonswa", "grazzi",
+                       # Shona, said in Zimbabwean English ("Mangwanani guys": good morning; "masikati":
+                       # good afternoon; "manheru": good evening; "mhoro": hi; "ndatenda": thanks)
+                       "mangwanani", "masikati", "manheru", "mhoro", "mhoroi", "makadini", "ndatenda",
+                       # Yorkshire "ey up" (hello: :func:`is_greeting` reads its "up" with it), "eyup"
+                       "ey", "eyup"})
 #: words that open an apology or a thanks for something ("sorry for the late ask", "thanks for
 #: earlier"): what follows "for" / "about" is what one is sorry or thankful for, not an order
 PLEASANTRIES = frozenset({"sorry", "apologies", "apologise", "apologize", "pardon", "thanks", "thank", "thx",
@@ -396,8 +403,11 @@ def near_operative(word: str) -> bool:
 
 def is_greeting(words: Iterable[str]) -> bool:
     """ "Morning all", "hi team", "thanks so much", "hej again": a greeting word, then only
-    addressees (and "again" last: greeted a second time, nothing done again)."""
+    addressees (and "again" last: greeted a second time, nothing done again). Yorkshire "ey up" is
+    one greeting of two words ("Ey up lads")."""
     ws = [w for w in words if w]
+    if ws[:2] == ["ey", "up"]:
+        ws = ws[:1] + ws[2:]
     rest = ws[1:-1] if len(ws) > 1 and ws[-1] == "again" else ws[1:]
     return bool(ws) and (ws[0] in GREETINGS or dropped_g(ws[0]) in GREETINGS) \
         and all(w in ADDRESSEES or w in GREETINGS for w in rest)   # "mornin all"
@@ -933,6 +943,9 @@ INTERJECTIONS = frozenset({
     "allora", "dai", "ue", "subito", "mannaggia", "jamme", "ecco", "grazie", "prego", "basta", "va", "bene",
     # Indonesian ("Pak, ...", "kak", "bu": to whoever reads; "siap": ready; "wkwk": laughter; "oke", "sip": OK)
     "pak", "bu", "kak", "mas", "mbak", "siap", "wkwk", "wkwkwk", "oke", "sip", "makasih",
+    # Shona and Zimbabwean English ("Manje, ...": now, so; "Nhai, ...": hey, is it so; "zvakanaka": it's
+    # fine; "iwe": you there); Yorkshire "sithee" (look here)
+    "manje", "nhai", "zvakanaka", "iwe", "sithee",
     # Colombian Spanish ("Ay, ...", "parce": mate; "listo": ready, OK; "dale": go on; "uy")
     "ay", "uy", "parce", "parcero", "listo", "dale",
     # Québec French ("Bon, ...": well; "genre": like; "tsé": you know; "câline": darn; "voyons": come on)
@@ -1037,11 +1050,18 @@ def content_free(words: Iterable[str], content: Callable[[str], bool],
     subject = _demonstrative_subject(ws)
     if ws[0] in ATTACHING and not _it_is(ws) and not subject:
         return False  # it modifies the clause before ("..., on the left", "..., and the rest")
-    if ws[0] not in SUBJECTS and any(w not in FUNCTION_WORDS and w not in _SPANS and nxt in OBJECT_PRONOUNS
+    opener = next((w for w in ws if w not in _CLAUSE_JOINERS), "")   # "..., then we lock it": "we" opens it
+    if opener not in SUBJECTS and any(w not in FUNCTION_WORDS and w not in _SPANS and nxt in OBJECT_PRONOUNS
                                      and not _this_time(ws, k + 1) for k, (w, nxt) in enumerate(zip(ws, ws[1:]))):
         return False  # "..., recount them": an instruction about a thing, in a verb not read
+    # "then" before a subject joins what the speaker says of someone, and orders nothing
+    joined = next((k for k, w in enumerate(ws) if w not in _CLAUSE_JOINERS), 0) if opener in SUBJECTS else 0
     return not any(_operative_at(ws, k) or (content(w) and not _just_now(ws, k) and not _all_over(ws, k)
-                                            and k >= subject) for k, w in enumerate(ws))
+                                            and k >= subject) for k, w in enumerate(ws) if k >= joined)
+
+
+#: words that join a clause to the one before and say nothing of who does what ("then we lock it")
+_CLAUSE_JOINERS = frozenset({"then", "and", "but"})
 
 
 #: words after "its" that make it "it's" typed without its apostrophe ("its friday", "its a mess",

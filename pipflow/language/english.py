@@ -68,6 +68,12 @@ def dropped_g(word: str) -> str | None:
 
 #: spoken forms whose apostrophe marks what is left out, read as written out in full
 _SPOKEN = ((re.compile(r"(?<![A-Za-z])['\u2019]em\b", re.IGNORECASE), "them"),
+           # Yorkshire and Lancashire: "t'kettle", "th'owd chair" (the), "a sack o' spuds" (of),
+           # "wi' us tea" (with), "fish an' chips" (and); never "o'clock", "don't", "isn't"
+           (re.compile(r"(?<![A-Za-z'\u2019])th?['\u2019]\s*(?=[A-Za-z])", re.IGNORECASE), "the "),
+           (re.compile(r"(?<![A-Za-z'\u2019])o['\u2019](?=\s|$)", re.IGNORECASE), "of"),
+           (re.compile(r"(?<![A-Za-z'\u2019])wi['\u2019](?=\s|$)", re.IGNORECASE), "with"),
+           (re.compile(r"(?<![A-Za-z'\u2019])an['\u2019](?=\s|$)", re.IGNORECASE), "and"),
            (re.compile(r"\by['\u2019]all\b", re.IGNORECASE), "you all"),
            (re.compile(r"\bain['\u2019]?t(?=\s+(?:got|been|had|done|seen)\b)", re.IGNORECASE), "has not"),
            (re.compile(r"\bain['\u2019]?t\b", re.IGNORECASE), "is not"))

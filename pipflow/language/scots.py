@@ -25,4 +25,7 @@ SCOTS = {"fae": "from", "frae": "from", "tae": "to", "aff": "off", "oot": "out",
          "roond": "round",
          # Scouse ("the arl fella": the old man, her partner; "giz": give us; "youse": you, to more
          # than one; "bevvies": drinks)
-         "arl": "old", "giz": "give", "youse": "you", "yous": "you"}
+         "arl": "old", "giz": "give", "youse": "you", "yous": "you",
+         # Yorkshire ("put t'kettle on will tha", "shut it after thee": you; "it's nobbut adverts":
+         # only; "nay": no; "reyt": right)
+         "tha": "you", "thee": "you", "thy": "your", "nobbut": "only", "nay": "no", "reyt": "right"}

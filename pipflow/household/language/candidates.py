@@ -47,6 +47,7 @@ from pipflow.household.language.rewrites import without_duration
 from pipflow.household.language.tagger import tag
 from pipflow.household.language.typos import known_word, vocabulary
 from pipflow.language.asides import BOUNDS, EXCLUSIVITY, FUNCTION_WORDS, NEGATION, near_operative
+from pipflow.language.scots import SCOTS
 from pipflow.language.spelling import distance
 
 #: at most this many candidate readings are offered
@@ -72,6 +73,26 @@ def _about_the_speaker(words: list[str]) -> bool:
     (northern English "ah" for I too: "ah cannot stand that fella")."""
     said_i = words[:1] in (["i"], ["we"]) or (words[:1] == ["ah"] and len(words) > 1 and words[1] in AFTER_I)
     return said_i and not set(words) & (EXCLUSIVITY | BOUNDS)
+
+
+#: how a remark about someone, or about what there is, opens ("she says ...", "there is nowt clean",
+#: "our Kirsty says I never have it on")
+_SOMEONE = {"i", "we", "she", "he", "our", "my", "me", "there"}
+#: words that point at a thing the order is about ("not that one", "only the ones on the left"):
+#: a part with one may narrow it
+_POINTING_AT_THINGS = {"that", "this", "those", "these", "one", "ones", "them", "they", "which"}
+
+
+def _remark_of_someone(words: list[str], index: dict) -> bool:
+    """A part said of the speaker (:func:`_about_the_speaker`), or one that opens with a person or
+    "there" as its subject and names nothing of the home, no count, no only or except and no thing
+    pointed at ("our Kirsty says I never have it on", "there's nowt clean to wear"): its "no" is
+    said of people or of what there is, and narrows none of the robots' work. Left out only in a
+    reading offered, whose words say so."""
+    if _about_the_speaker(words):
+        return True
+    return bool(words) and words[0] in _SOMEONE and not any(
+        (w,) in index or w.isdigit() or w in _POINTING_AT_THINGS or w in BOUNDS or w in EXCLUSIVITY for w in words)
 
 
 #: where a sentence ends (its mark kept with it) or a line breaks
@@ -203,6 +224,10 @@ def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[
         unknown += [x for w in getattr(exc, "unread", []) if w not in words
                     for x in dict.fromkeys(words) if x not in unknown and x.isalpha() and distance(x, w) <= 2
                     and not known_word(x, index, vocab)][:1]
+    # a dialect word read as an English word the reader then could not place ("nowt" as "nothing"):
+    # the word as said
+    unread = getattr(error, "unread", None) or ()
+    unknown += [x for x in dict.fromkeys(words) if x not in unknown and SCOTS.get(x) in unread]
     # one edit with any first letter ("vowl" for bowl), two with the same first letter ("tunrpi"):
     # "kettle" is never offered as "bottle"
     near: dict[str, list[tuple[int, str]]] = {
@@ -245,7 +270,7 @@ def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[
     out += _topics([p.strip() for p in _CLAUSE_SPLIT.split(command) if p.strip()], index)
     out += _stopped_wordings(words, index, error)
     parts = [p.strip() for p in _CLAUSE_SPLIT.split(command) if p.strip()]
-    out += _without_unread_parts(command, parts, unknown)
+    out += _without_unread_parts(command, parts, unknown, index)
     if len(parts) > 1:
         for part in parts:
             ws = words_of(part)
@@ -259,13 +284,14 @@ def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[
     return out
 
 
-def _without_unread_parts(command: str, clauses: list[str], unknown: list[str]) -> list[tuple[str, str, str, dict]]:
+def _without_unread_parts(command: str, clauses: list[str], unknown: list[str],
+                          index: dict) -> list[tuple[str, str, str, dict]]:
     """ "Open the toy trunk, put the doll inside. Whole week the grandchildren's things are lying
     everywhere.": the command without every clause, then without every sentence, that holds a word
     not understood, at once (one at a time, the others' words would still be in the way). A part
     that says no, only, except or a bound is kept: dropped, the rest would ask for more; but a
-    "no" the speaker says of themselves ("I don't want to burn the place down", "I can't even
-    walk") narrows nothing the robots do."""
+    "no" said of people or of what there is (:func:`_remark_of_someone`: "I can't even walk", "our
+    Kirsty says I never have it on") narrows nothing the robots do."""
     unread = set(unknown)
     out: list[tuple[str, str, str, dict]] = []
     for parts, joiner in ((clauses, " , "), ([p.strip() for p in _SENTENCE_SPLIT.split(command) if p.strip()], " ")):
@@ -273,7 +299,7 @@ def _without_unread_parts(command: str, clauses: list[str], unknown: list[str]) 
         # ("boil the eggs for me tea hinny": the eggs boiled)
         parts = [_tails_cut(p, unread) for p in parts]
         dropped = [p for p in parts if set(words_of(p)) & unread and (not set(words_of(p)) & _NARROWING
-                                                                       or _about_the_speaker(words_of(p)))]
+                                                                       or _remark_of_someone(words_of(p), index))]
         if not dropped or len(dropped) == len(parts):
             continue
         rest = joiner.join(p for p in parts if p not in dropped)

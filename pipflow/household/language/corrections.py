@@ -8,9 +8,16 @@ after a sentence's end: :data:`ACROSS_SENTENCES`), only when the words after the
 marker open with a determiner and the clause before has one, or open with a preposition of place
 and the clause before has one (the place is taken back: "put the scrubs in the sink - no wait
 sorry, on the boot bench"); "no" alone is never a marker here (it is a negation, operative), only
-with "wait", "sorry", "hold on" or "hang on"."""
+with "wait", "sorry", "hold on" or "hang on".
+
+A whole order taken back ("turn the wireless down - nay, turn it off", "put the mug on the table,
+no, put it in the sink"): after a marker of taking back between commas (:data:`TAKING_BACK`, "no"
+alone too, as it stands there between commas before an order), a clause that opens with a verb
+replaces the clause before the marker, and its "it" / "them" is the first thing that clause
+named. Never where the new clause adds ("no, also ...", "... too"): both are then read."""
 from __future__ import annotations
 
+from pipflow.household.language.lexicon import ORDER_VERB_WORDS
 from pipflow.household.language.tokens import PUNCT
 
 #: words that take back the noun phrase just said
@@ -85,3 +92,36 @@ def _last_opened_by(words: list[str], openers: set[str]) -> int | None:
         if words[j] in openers:
             return j
     return None
+
+
+#: markers that take back a whole order when a verb follows them (module docstring)
+TAKING_BACK = (("no", "wait"), ("no", "actually"), ("scratch", "that"), ("no",), ("nay",), ("nope",), ("actually",),
+               ("wait",))
+#: words that make the new clause an addition, not a replacement
+_ADDING = {"also", "too", "and", "plus", "again"}
+
+
+def orders_taken_back(words: list[str], index: dict, notes: list[str]) -> list[str]:
+    """The words with each order taken back whole (module docstring) left out. ``index``: the
+    home's phrases (:func:`~.names.world_phrases`), for what the old order named."""
+    k = 0
+    while k < len(words):
+        marker = next((m for m in TAKING_BACK if k and words[k - 1] == "," and tuple(words[k:k + len(m)]) == m), None)
+        after = k + len(marker) + 1 if marker else 0
+        if marker is None or words[after - 1:after] != [","] or after >= len(words) or words[after] not in ORDER_VERB_WORDS:
+            k += 1
+            continue
+        end = next((j for j in range(after, len(words)) if words[j] in PUNCT), len(words))
+        start = max((j + 1 for j in range(k - 1) if words[j] in PUNCT), default=0)
+        old, new = words[start:k - 1], words[after:end]
+        if not old or old[0] not in ORDER_VERB_WORDS or set(new) & _ADDING:
+            k += 1
+            continue
+        thing = next((old[a:b] for a in range(len(old)) for b in range(len(old), a, -1) if tuple(old[a:b]) in index), None)
+        pronoun = next((j for j, w in enumerate(new) if w in ("it", "them")), None)
+        if pronoun is not None and thing is not None:
+            new = new[:pronoun] + ["the", *thing] + new[pronoun + 1:]
+        notes.append(f"'{' '.join(old)}, {' '.join(marker)}': taken back; read as '{' '.join(new)}'")
+        words = words[:start] + new + words[end:]
+        k = start + len(new)
+    return words

@@ -280,6 +280,36 @@ def cut_as_switch(words: list[str], world: dict, index: dict, notes: list[str]) 
     return out
 
 
+#: particles that say how a thing is done to it, closing the clause after it ("cut a breadcake open",
+#: "wash the bowl out"): particle -> (the verbs, the property the thing must have)
+_HOW_PARTICLES = {"open": ({"cut", "slice", "split"}, "sliceable"), "out": ({"wash", "rinse", "scrub"}, "washable")}
+#: who a thing is done for, said between the verb and the thing ("cut us a breadcake open")
+_FOR_WHOM = {"me", "us", "him", "her"}
+
+
+def how_particles(words: list[str], world: dict, index: dict, notes: list[str]) -> list[str]:
+    """The words without a particle that says how a thing is done to it (:data:`_HOW_PARTICLES`:
+    "cut us a breadcake open", "wash the dog bowl out"), said of things with the property the
+    verb needs (or of "it" / "them"), the clause ending after it. "cut the bag open" (a thing that
+    opens) is left as said: there "open" is what is asked."""
+    out = list(words)
+    for k, w in enumerate(words):
+        said = [p for p, (verbs, _) in _HOW_PARTICLES.items() if w in verbs]
+        if not said or k + 1 >= len(words):
+            continue
+        particle, (_, prop) = said[0], _HOW_PARTICLES[said[0]]
+        start = k + 1 + (words[k + 1] in _FOR_WHOM)
+        start = _after_determiners(words, start)
+        start += words[start:start + 1] == ["a"]
+        end = start + 1 if words[start:start + 1] in (["it"], ["them"]) else \
+            _phrase_of(words, start, world, index, prop, receptacles=particle != "open")
+        if end and words[end:end + 1] == [particle] and (end + 1 >= len(words) or words[end + 1] in _CLAUSE_END) \
+                and not (particle == "open" and _phrase_of(words, start, world, index, "openable")):
+            out[end] = ""
+            notes.append(f"'{w} ... {particle}' read as '{w} ...' (how it is done)")
+    return [w for w in out if w]
+
+
 def put_on_as_switch(words: list[str], world: dict, index: dict, notes: list[str]) -> list[str]:
     """The words with "put" read as "switch" where "on" or "off" and then a thing that switches
     follow it ("put on the radio", "put off the fan" as Indian and Nigerian English say it):
@@ -533,11 +563,17 @@ def on_off_as_verbs(words: list[str], world: dict, index: dict, notes: list[str]
 def _switching_phrase(words: list[str], k: int, world: dict, index: dict, receptacles: bool = True) -> int:
     """The index after a phrase at ``k`` that names only things that switch (and hold nothing,
     unless ``receptacles``), else 0."""
+    return _phrase_of(words, k, world, index, "toggleable", receptacles)
+
+
+def _phrase_of(words: list[str], k: int, world: dict, index: dict, prop: str, receptacles: bool = True) -> int:
+    """The index after a phrase at ``k`` that names only things with the property ``prop`` (and
+    that hold nothing, unless ``receptacles``), else 0."""
     for end in range(min(len(words), k + 5), k, -1):
         things = index.get(tuple(words[k:end])) or []
         entries = [(world.get("objects") or {}).get(t["name"]) or (world.get("places") or {}).get(t["name"]) or {}
                    for t in things if t["kind"] in ("object", "place")]
-        if entries and all("toggleable" in (e.get("properties") or []) and (
+        if entries and all(prop in (e.get("properties") or []) and (
                 receptacles or "receptacle" not in (e.get("properties") or [])) for e in entries):
             return end
         if things:

@@ -89,7 +89,9 @@ TEMPERATURE_CUES = {"freezing": "on", "chilly": "on", "nippy": "on", "perishing"
                     "baking": "off", "perished": "on", "frozen stiff": "on", "icy": "on", "arctic": "on",
                     "parky": "on", "cold as ice": "on", "like an oven": "off", "like a sauna": "off",
                     "sweating": "off", "shivering": "on", "like a fridge": "on", "like an icebox": "on",
-                    "like a freezer": "on", "like the arctic": "on", "like a furnace": "off"}
+                    "like a freezer": "on", "like the arctic": "on", "like a furnace": "off",
+                    # Yorkshire "I'm nithered" (chilled through), "nesh" (feeling the cold)
+                    "nithered": "on", "nesh": "on"}
 #: the adjectives that are temperature cues when said of the room or of a person
 TEMPERATURE_ADJECTIVES = {"cold": "on", "hot": "off", "warm": "off"}
 #: what warms a room (not food): a thing that switches and is named, or worded, by one of these
@@ -138,7 +140,7 @@ _add("ACT", "a scrub,a wash,a rinse,a wipe,a clean,a good scrub,a good wash,a go
      "a quick wash,a quick wipe,a wipe down,a proper clean", "clean")
 #: "a piece of fruit": a kind counted in pieces (only a category may be; "a piece of bread" is no
 #: thing of the home model and is refused)
-_add("UNIT", "pieces of,bits of,items of")
+_add("UNIT", "pieces of,bits of,items of,cans of,tins of,bottles of,packets of,jars of,cartons of")
 #: "a piece of fruit" is a determiner of one (a unit word in the determiner keeps the grammar small)
 UNIT_DETERMINERS = {"a piece of", "a bit of", "an item of"}
 _add("V_PUT", "put,place,move,bring,take,carry,set,transfer,gather,collect,stash,drop,store,stick,pop,lay,"
@@ -391,7 +393,9 @@ LEAVING_REASONS = {"bedtime", "time for bed", "off to bed", "going to bed", "hea
                    "heading out", "off to work", "going to work", "late", "night time",
                    # the working day over: "we're done for the day", "logging off"
                    "done for the day", "finished for the day", "off for the day", "done with work",
-                   "finished work", "logging off", "clocking off", "signing off"}
+                   "finished work", "logging off", "clocking off", "signing off",
+                   # northern English "we're off up" (up to bed)
+                   "off up"}
 #: "off to my bed", "away to my bed" (Scots and northern English: "away" is "off"), "off up to bed"
 LEAVING_REASONS |= {f"{go} to {whose}bed" for go in ("off", "away", "going", "heading", "off up", "away up")
                     for whose in ("", "my ", "our ")}
@@ -490,6 +494,9 @@ _add("DOOR", "door,doors,lid,lids")
 #: the part of a switching thing that switches it: "turn on the lamp switch" is the lamp
 _add("SWITCHPART", "button,power button,on button,off button")
 _add("ONES", "ones")
+#: the first words of the lexicon's verbs of an order ("put", "switch", "wash", ...), with "turn":
+#: a clause that holds one says what to do
+ORDER_VERB_WORDS = frozenset(k[0] for k, (cls, _) in PHRASES.items() if cls.startswith("V_")) | {"turn", "switch"}
 
 #: the negation of a wanted state is the other polarity of the same predicate ("don't leave the
 #: fridge open": closed); every condition has exactly one opposite, so nothing is guessed
@@ -604,6 +611,8 @@ FILLER = {("um",), ("umm",), ("uh",), ("uhh",), ("uhm",), ("er",), ("erm",),   #
           ("can", "one", "of", "you"), ("could", "one", "of", "you"), ("will", "one", "of", "you"),
           ("while", "you", "are", "out", "there"), ("while", "you", "are", "there"), ("while", "you", "are", "up", "there"),
           ("while", "you", "are", "in", "there"), ("but", "tough"), ("tough", "luck"),
+          # Yorkshire "while tha's up" (while you're on your feet), "tha knows" (you know)
+          ("while", "you", "are", "up"), ("you", "knows"), ("ey", "up"),
           ("tenastelign",), ("tenastilign",), ("ameseginalehu",), ("ameseginalew",), ("ebakachihu",), ("ebakachuh",),
           ("wey", "gud"), ("gobez",), ("gobeze",), ("yikirta",), ("yiqirta",), ("tolo",), ("tolo", "tolo"),
           ("please",), ("kindly",), ("abeg",), ("biko",), ("just",), ("quickly",), ("now",), ("for", "me"), ("for", "us"), ("could", "you"),
@@ -757,10 +766,13 @@ PURPOSES = {("later",), ("tomorrow",), ("the", "morning"), ("the", "weekend"), (
 #: breakfast", "for the little one", "for the kids"): meals, times and people who are no robot
 PURPOSE_WORDS = {"later", "tomorrow", "morning", "weekend", "tonight", "today", "tea", "dinner", "lunch", "supper",
                  "breakfast", "brunch", "guests", "visitors", "party", "kids", "children", "baby", "little", "wee",
-                 "one", "ones", "sandwich", "sandwiches"}
+                 "one", "ones", "sandwich", "sandwiches",
+                 # a packed lunch, said in the north of England ("for me snap", "for his bait")
+                 "snap", "bait"}
 
 #: "put it on the worktop to dry": what a thing is left somewhere for, which no robot does
-PURPOSE_INFINITIVES = {"dry", "cool", "air", "soak", "defrost", "thaw", "drain", "rest", "settle", "soften"}
+PURPOSE_INFINITIVES = {"dry", "cool", "air", "soak", "defrost", "thaw", "drain", "rest", "settle", "soften", "drip",
+                       "steep", "marinate", "breathe", "prove"}
 
 #: filler words a misspelling may be read as ("plese"): only these, long and close to no
 #: content word, so that a misspelt content word is never dropped as politeness
@@ -822,7 +834,11 @@ _TYPED = ((r"(?<!['\u2019])\bu\b", "you"),   # never the "u" of "pa'u" (Hawaiian
           (r"\b(while|whilst|when|once|if|as|since)\s+your\b(?=\s+(?:out|there|here|up|done|passing|over|at|in|back|"
            r"home|finished|going|on)\b)", r"\1 you are"),
           (r"\bur\b", "your"), (r"\br\b", "are"), (r"\bw\b(?=\s+(?:the|a|an|my|your|her|his|it|them)\b)", "with"),
-          (r"\b(?:tmrw|tmr|tmrrw|2moro|2morrow)\b", "tomorrow"), (r"\b(they|you|we)re\b", r"\1 are"),
+          (r"\b(?:tmrw|tmr|tmrrw|2moro|2morrow)\b", "tomorrow"), (r"\b(they|you)re\b", r"\1 are"),
+          # "were" typed for "we're" where it opens a clause ("were out of milk"), never after a subject
+          # ("it were stood open": Yorkshire, was; "the lights were on")
+          (r"(^|[.,;:!?]\s*|\b(?:and|so|then|but|because|cos|coz|if|when|while|as)\s+)were\b(?!\s+(?:you|we|they|the)\b)",
+           r"\1we are"),
           (r"\b(it|that|there|what)ll\b", r"\1 will"), (r"\b(that|there|what)s\b", r"\1 is"), (r"\bim\b", "i am"),
           (r"\bive\b", "i have"), (r"\b(is|are|was|were|does|did|has|have|could|would|should)nt\b", r"\1 not"),
           (r"\bcant\b", "can not"), (r"\bgonna\b", "going to"), (r"\bwanna\b", "want to"), (r"\bgotta\b", "have to"),
@@ -866,6 +882,18 @@ def normalize(text: str) -> str:
     # English word has one, so it is read once
     t = re.sub(r"([a-z])\1{2,}", r"\1", t)
     t = re.sub(r"\s*[+&]\s*", " and ", t)   # "noodles + curry", "salt & pepper"
+    t = re.sub(r"\breyt\b", "right", t)   # Yorkshire "reyt" (right: "Reyt, we're off up")
+    # Yorkshire "put wood in t'ole" (in the hole: shut the door)
+    t = re.sub(r"\bput\s+(?:the\s+)?wood\s+in\s+(?:the\s+)?h?ole\b", "shut the door", t)
+    # "switch the lights off, and don't forget the fire": the fire too, as a list goes on
+    t = re.sub(r"\b(?:do\s+not|don'?t)\s+forget\s+(?:about\s+)?(?=(?:the|my|our|your|that|this|those|these|me)\b)", "", t)
+    # Yorkshire "tha's" (you are: "while tha's up"; you have, before "got" or "been")
+    t = re.sub(r"\btha['\u2019]?s\b(?=\s+(?:got|been)\b)", "you have", t)
+    t = re.sub(r"\btha['\u2019]s\b", "you are", t)
+    # northern English "an" for and ("wash t'pan an the mug", "an put it away"): "an" is the article
+    # only before a vowel (or an "h" word: "an hour"), so before any other letter it joins
+    t = re.sub(r"\ban(?=\s+(?:h(?:e|is|er|im|ers)\b|[bcdfgjklmnpqrstvwz]|(?:into|in|on|onto|out|up|off|over|under|it|its|if|"
+               r"i|at|as|a|an|us|em|each|every|everything|any|anything|our|owt|after|again)\b))", "and", t)
     # a dash set off by spaces, or an en or em dash, is a pause, like a comma ("throw it away -
     # it smells off - and ..."); a hyphen inside a word joins it ("desk-lamp")
     t = re.sub(r"\s[-\u2010-\u2015]+\s|[\u2013\u2014\u2015]", " , ", t)

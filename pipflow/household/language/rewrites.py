@@ -7,8 +7,8 @@ from __future__ import annotations
 import re
 
 from pipflow.household.language.lexicon import (DURATION_HEDGES, DURATION_UNITS, FILLER, GRADED, HOT_DRINKS, MANNER_OBJECTS,
-                                                MANNERS, MEALS, MEASURES, ORDER_WORDS, ORDINAL_DETERMINERS, PHRASES, PURPOSE_INFINITIVES,
-                                                PURPOSE_WORDS, PURPOSES, TIME_WORDS)
+                                                MANNERS, MEALS, MEASURES, ORDER_VERB_WORDS, ORDER_WORDS, ORDINAL_DETERMINERS,
+                                                PHRASES, PURPOSE_INFINITIVES, PURPOSE_WORDS, PURPOSES, TIME_WORDS)
 from pipflow.household.language.names import name_end
 from pipflow.household.language.tokens import PUNCT
 from pipflow.language.asides import near_operative
@@ -667,13 +667,38 @@ def warm_the_place(words: list[str], notes: list[str]) -> list[str]:
     return out
 
 
-#: what a thing does if left ("... before it goes off", "so they don't go stale"): said as the
-#: reason for the order, never a state asked for
+#: what a thing does if left ("... before it goes off", "so they don't go stale", "before it goes like
+#: soup"): said as the reason for the order, never a state asked for
 _SPOILING = ("off", "stale", "bad", "cold", "soggy", "mouldy", "moldy", "rotten", "hard", "warm", "flat", "manky",
              "brown", "dry", "limp")
 _SPOILS = re.compile(r"\b(?:before|so|or\s+else|or)\s+(?:it|they|that|them)\s+(?:(?:does|do|will|would)\s+not\s+|"
-                     r"(?:will|ll|would)\s+)?(?:go|goes|get|gets|turn|turns|be)\s+(?:all\s+)?(?:"
-                     + "|".join(_SPOILING) + r")\b|\bbefore\s+(?:it|they)\s+(?:spoils?|melts?|rots?|dries\s+out|dry\s+out)\b")
+                     r"(?:will|ll|would)\s+)?(?:go|goes|get|gets|turn|turns|be)\s+(?:all\s+)?(?:(?:"
+                     + "|".join(_SPOILING) + r")\b|like\s+[a-z]+\b(?!\s+(?:of|in|on|at)\b))"
+                     r"|\bbefore\s+(?:it|they)\s+(?:spoils?|melts?|rots?|dries\s+out|dry\s+out)\b")
+
+
+#: words that say where a thing lies, after "still" ("the clothes still on the line")
+_STILL_WHERE = {"on", "in", "at", "inside", "under", "by", "sat", "sitting", "lying", "stood", "standing", "left"}
+#: verbs that keep a thing where it is, or say it is there: "keep them still in the fridge"
+_KEEPING_OR_BEING = {"keep", "leave", "is", "are", "was", "were", "be", "been", "s", "re"}
+
+
+def still_as_a_report(words: list[str], notes: list[str]) -> list[str]:
+    """ "the clothes still on the line", "di clothes dem still pon di line": a clause with no verb
+    that says a thing is still where it lies reports how things are (read as "are still", which
+    the reader never takes for an order, and may set aside where the world agrees); without it
+    the verbless clause read as "put the clothes on the line", a goal already met, in place of the
+    cue that was meant."""
+    out: list[str] = []
+    for k, w in enumerate(words):
+        if w == "still" and k + 1 < len(words) and words[k + 1] in _STILL_WHERE:
+            start = max((j + 1 for j, x in enumerate(out) if x in PUNCT or x in ("and", "but", "so")), default=0)
+            clause = out[start:]
+            if clause and not any(x in ORDER_VERB_WORDS or x in _KEEPING_OR_BEING for x in clause):
+                notes.append(f"'{' '.join(clause)} still ...' read as '... are still ...' (how things are)")
+                out.append("are")
+        out.append(w)
+    return out
 
 
 def spoiling_as_reason(words: list[str], notes: list[str]) -> list[str]:

@@ -11,6 +11,11 @@ A where said with whose room it is ("the water heater in our toilet", "the fan i
 is the thing the home calls by the owner and the thing ("our water heater", "ah ma's fan"), where
 that is one thing, and the room's words are in another of its names ("master toilet water heater")
 or are only "room" or "bedroom".
+
+A room said as where one thing is taken from ("fetch me Barnsley mug through from the front room,
+stick it on the side") names that thing's room, which the home model does not have: where the
+thing said names exactly one thing, and the room's words open a longer name of the home ("front
+room light"), the words are set aside (a note says so); they pick nothing out.
 """
 from __future__ import annotations
 
@@ -102,3 +107,35 @@ def _said_whole(out: list[str], a: int, e: int, name: list[str], index: dict) ->
         if one_thing(index, said) and {ref["name"] for ref in index[tuple(said)]} == meant:
             return start
     return None
+
+
+#: what may follow a room said as where a thing comes from: the clause goes on with where it goes,
+#: or ends
+_AFTER_A_ROOM = frozenset({",", ".", ";", "!", "?", "and", "then", "to", "into", "onto", "on", "in"})
+
+
+def rooms_things_come_from(words: list[str], index: dict, notes: list[str]) -> list[str]:
+    """The words without a room said as where one thing comes from (module docstring): "(through)
+    from the <room>" after words that name exactly one thing, the room's words naming nothing here
+    but opening a longer name of the home. Where the thing said may be several things, the room
+    is left as said (it may be what picks one out), and refused."""
+    out = list(words)
+    k = 1
+    while k < len(out):
+        if out[k] != "from":
+            k += 1
+            continue
+        j = k + 1 + (k + 1 < len(out) and out[k + 1] in DETERMINERS)
+        room = next((m for m in (2, 1) if j + m <= len(out) and tuple(out[j:j + m]) not in index
+                     and any(len(key) > m and key[:m] == tuple(out[j:j + m]) for key in index)
+                     and (j + m == len(out) or out[j + m] in _AFTER_A_ROOM)), 0)
+        start = k - (out[k - 1] == "through")
+        thing = next((out[a:start] for a in range(max(0, start - _LONGEST), start) if one_thing(index, out[a:start])), None)
+        if not room or thing is None:
+            k += 1
+            continue
+        notes.append(f"'{' '.join(out[start:j + room])}' set aside: the room the {' '.join(thing)} is in "
+                     "(the home model has no rooms)")
+        del out[start:j + room]
+        k = start
+    return out

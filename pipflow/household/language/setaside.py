@@ -10,6 +10,7 @@ from typing import Callable, NamedTuple
 from pipflow.household.language.lexicon import (DURATION_UNITS, FILLER, FILLER_TYPO_TARGETS, PHRASES, PURPOSE_WORDS,
                                                 words_of)
 from pipflow.household.language.names import home_words, per_index, world_phrases
+from pipflow.household.language.people import KIN
 from pipflow.household.language.restated import leading_subject, restates_location
 from pipflow.household.language.typos import typo_of, vocabulary
 from pipflow.household.language.unseen import unseen
@@ -107,8 +108,7 @@ USE_LINKS = {"with", "for", "at", "in", "by", "before", "after", "later", "when"
 #: wife will cook later", "madam will make bhurji"): what another person will do is no order for
 #: the robots. "they" is left out: it is as often the robots, or things
 OTHER_PEOPLE = {"he", "she"}
-FAMILY = {"wife", "husband", "son", "daughter", "mum", "mom", "mother", "dad", "father", "sister", "brother",
-          "maid", "madam", "grandson", "granddaughter", "neighbour", "neighbor"}
+FAMILY = KIN | {"father", "sister", "brother", "maid", "madam", "neighbour", "neighbor"}
 #: how such a clause goes on after its subject
 OTHERS_OPENERS = (("will",), ("shall",), ("is", "going", "to"), ("is", "about", "to"))
 

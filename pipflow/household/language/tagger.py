@@ -17,9 +17,9 @@ from pipflow.language.english import common_word
 from pipflow.household.language.beside import beside_as_where
 from pipflow.household.language.colloquial import colloquial
 from pipflow.household.language.comings import just_come_in, someone_blamed
-from pipflow.household.language.corrections import corrected
-from pipflow.household.language.dialect import (arabic_as_english, bring_in, cut_as_switch, do_as_wash, make_as_switch,
-                                                room_of_a_switched_thing,
+from pipflow.household.language.corrections import corrected, orders_taken_back
+from pipflow.household.language.dialect import (arabic_as_english, bring_in, cut_as_switch, do_as_wash, how_particles,
+                                                make_as_switch, room_of_a_switched_thing,
                                                 newfoundland_as_english, on_off_as_verbs, open_close_as_switch,
                                                 particle_before_exception, patois_in_home, pidgin_in_home,
                                                 put_on_as_switch, romance_words_as_english, scots_as_english,
@@ -34,12 +34,12 @@ from pipflow.household.language.retag import (act_before_noun, copula_dropped, d
                                               located, restated_order, without_hedges)
 from pipflow.household.language.rewrites import (caused, closed_again, closed_back, given, heat_purpose,
                                                  covered_in, instead_closing, measures, spoiling_as_reason, or_under_negation, particles, same_for,
-                                                 so_before_an_order, warm_the_place, wherever_they_belong,
+                                                 so_before_an_order, still_as_a_report, warm_the_place, wherever_they_belong,
                                                  without_manner)
 from pipflow.household.language.narrowed import just_as_only, narrowed_by_only
 from pipflow.household.language.ones import one_as_kind
 from pipflow.household.language.romance import adjective_after, of_as_where
-from pipflow.household.language.roomnames import where_as_name
+from pipflow.household.language.roomnames import rooms_things_come_from, where_as_name
 from pipflow.household.language.tokens import PUNCT, Tag
 from pipflow.household.language.typos import (determiner_slip, known_word, meaning_of, transposition_of, typo_of,
                                               vocabulary)
@@ -82,6 +82,8 @@ def repaired(words: list[str], index: dict, vocab: set[str], notes: list[str], w
         if len(w) < 4:
             continue
         close = typo_of(w, vocab)
+        if common_word(w) and k and words[k - 1] == "to":
+            continue   # "leave the pan in the sink to drip": an English verb as written, no slip of "drop"
         if close and common_word(w) and any(c in key and c not in (w + "s", w + "es") for c in close for key in index):
             continue   # a common English word as written ("ripe") is no slip of a thing's name ("rice"), only its plural
         if close and len({meaning_of(c, index) for c in close}) == 1:
@@ -145,7 +147,7 @@ def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: l
     """The command's words with its colloquial forms, constructions and particles read as the
     grammar's words (each rewrite notes what it read)."""
     words = pidgin_in_home(patois_in_home(words_of(command), index, notes), index, notes)
-    words = newfoundland_as_english(words, index, notes)
+    words = still_as_a_report(newfoundland_as_english(words, index, notes), notes)
 
     def known(word: str) -> bool:   # a word of the home or of the reader
         return known_word(word, index, vocab)
@@ -153,9 +155,11 @@ def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: l
     words = arabic_as_english(words, lambda w: (w,) in index, notes)   # a name alone keeps its meaning
     words = romance_words_as_english(scots_as_english(words, known, notes), known, notes)
     words = of_as_where(adjective_after(words, index, notes), world, index, notes)
-    words = where_as_name(one_as_kind(words, world, index, notes), index, notes, owners(world, words))
+    words = rooms_things_come_from(where_as_name(one_as_kind(words, world, index, notes), index, notes,
+                                                 owners(world, words)), index, notes)
     words = owners_before_names(pronouns_as_owners(own_as_owned(words, world, notes), world, notes), world, notes)
-    words = so_before_an_order(same_for(colloquial(corrected(words, notes), notes), notes), notes)
+    words = so_before_an_order(same_for(colloquial(corrected(orders_taken_back(words, index, notes), notes), notes),
+                                        notes), notes)
     words = or_under_negation(measures(without_manner(words, notes), index, notes), notes)
     words = heat_purpose(caused(given(me_as_where_the_speaker_is(words, index, notes), notes), notes), notes)
     words = just_as_only(spoiling_as_reason(warm_the_place(instead_closing(words, notes), notes), notes), notes)
@@ -164,6 +168,7 @@ def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: l
     words = closed_back(closed_again(wherever_they_belong(words, notes), notes), notes)
     words = room_of_a_switched_thing(words, index, notes)
     words = make_as_switch(cut_as_switch(do_as_wash(words, world, index, notes), world, index, notes), world, index, notes)
+    words = how_particles(words, world, index, notes)
     words = on_off_as_verbs(put_on_as_switch(setting_as_switch(words, world, index, notes), world, index, notes),
                             world, index, notes)
     words = bring_in(open_close_as_switch(particle_before_exception(words, notes), world, index, notes), index, notes)

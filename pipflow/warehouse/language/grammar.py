@@ -349,6 +349,8 @@ goal: there_be items loc                                  -> g_set
     | swapv ihead loc "with" (ihead | "ones" | "those")? loc -> g_swap_two
     | places modal? ("swap" | "trade" | "exchange") (("their" | "its") | "what" "they" ("hold" | "have"))? swapwhat -> g_swap_subj
     | swapv ("what" | "contents" "of" | "loads" "of" | "stock" "of")? places ("around" | "round" | "over") -> g_swap
+    // "I want the mezz and the counter swapped (round)"
+    | want places ("to"? "be")? ("swapped" | "switched" | "exchanged") ("around" | "round" | "over")? ("," ("everything" | "all"))? -> g_swap
     // "Swap aisle 5 and aisle 6 round, everything on them": the whole contents, said again
     | swapv ("whole" | "whole" "contents" "of")? places ("around" | "round" | "over")? ","? ("everything" | "all") ("on" | "in" | "of") ("them" | "both") -> g_swap
     // "swap P with Q (, everything on them)": the two places' contents
@@ -644,7 +646,7 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | ("let" | "have") ("only" | "just")? robots act rscope -> rule_only
     | ("keep" | "leave") robots ("away" | "clear") from ITEM (lsep ITEM)* -> rule_away_items
     | ("keep" | "leave") robots "off" ITEM (lsep ITEM)*       -> rule_away_items
-    | robots modal? ("stay" | "keep") ("off" | "away" "from" | "clear" "of") ITEM (lsep ITEM)* -> rule_away_items
+    | robots modal? ("stay" | "keep" | "stays" | "keeps") ("off" | "away" "from" | "clear" "of") ITEM (lsep ITEM)* -> rule_away_items
     // "the weakest robot must not go near rum (at all)": keeps off the product
     | robots (rmodal? rneg | ("arent" | "isnt" | ("are" | "is") "not") "to") ("go" "near" | "come" "near" | "approach") ITEM (lsep ITEM)* ("at" "all")? -> rule_away_items
     | robots ("is" | "are") state ","? ("so" | "and")? ("dont" | "do" "not") "use" ("it" | "them") -> rule_state
@@ -655,7 +657,7 @@ rule: robots rmodal? rneg rmodal? useact? rscope          -> rule_never
     | robots ("dont" | "do" "not" | "no" | "cannot" | "cant") ("use" | "used" | "to" "use") rscope -> rule_never
     | ("only" | "just") robots "to" "be" ("used" | "involved" | "employed" | "assigned") rscope -> rule_only
     | robots (("is" | "are") "not" | "isnt" | "arent") "to" act rscope -> rule_never
-    | robots modal? ("stay" | "keep") ("away" | "clear") from places -> rule_away
+    | robots modal? ("stay" | "keep" | "stays" | "keeps") ("away" | "clear") from places -> rule_away
     | robots modal? ("stay" | "keep" | "keeps" | "stays") ("off" | "out" "of") places -> rule_away
     | ("keep" | "leave") robots ("away" | "clear") from places -> rule_away
     | ("keep" | "leave") robots ("out" "of" | "off") places  -> rule_away

@@ -41,7 +41,9 @@ from pipflow.warehouse.language.reordered import (base_verb, by_as_among, count_
                                                 places_then_each, said_at, source_after_verb, to_be_done,
                                                 topic_first, verb_last)
 from pipflow.warehouse.language.transcripts import orders_taken_back, places_taken_back, them_as_determiner
-from pipflow.warehouse.language.wordorder import left_dislocated, noun_adjuncts, numbered_siblings, unmarked_lists
+from pipflow.warehouse.language.wordorder import (left_dislocated, noun_adjuncts, numbered_siblings,
+                                                  places_listed_after_sharing, unit_of_its_product, unmarked_lists,
+                                                  where_words_placed)
 
 #: no user writes a longer command; past this the parser would only be asked to burn time
 MAX_COMMAND_CHARS = 4000
@@ -112,7 +114,9 @@ SPELLINGS = {"shud": "should", "shld": "should", "u": "you", "r": "are", "wont":
              "dere": "there", "da": "the", "fa": "for", "gat": "got", "wha": "what", "jes": "just",
              "bout": "about",
              # Trinidadian English "doh" (don't: "doh touch the chiller"), "jus" (just)
-             "doh": "dont", "jus": "just"}
+             "doh": "dont", "jus": "just",
+             # Shona "aiwa" (no: "10, aiwa sorry, 8"), said in Zimbabwean English
+             "aiwa": "no"}
 #: Scots spellings of the grammar's own words (shared with the household reader: "shift 5 corks fae
 #: pend tae steading", "take 2 aff vault", "dinnae touch it"), read only where the word is no word
 #: of the world's names
@@ -165,6 +169,9 @@ _OUT_VERBS = frozenset({"clean", "clear", "empty", "take", "get", "sort", "lay",
                         "dish", "parcel", "give", "pass", "kick", "toss", "turf", "bin", "load", "unload", "fill",
                         "tip", "dump", "hang", "cut", "cross", "run", "max", "thin", "weed", "shift", "lift", "fish",
                         "dig", "hook", "drag", "tow", "ferry", "shove", "push", "slide", "wipe"})
+#: words that may stand before the subject that opens a sentence: talk, or a word that joins it
+#: ("Manje the boss wants ...", "and the customer wants ...")
+_OPENING_WORDS = "|".join(sorted(w for w in INTERJECTIONS | {"and", "so", "also", "but"} if w.isalpha()))
 #: idioms read as the plain words the grammar has: "leave it as she is" ("she" for a place or a
 #: load, as trades say), "all told" (in total), "keep it well away from P" (away from)
 IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before a word in lower case or a
@@ -477,6 +484,14 @@ IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before
           (re.compile(r"[,;]?\s*\bby\s+the\s+time\s+[^.,;:!?\d]*", re.IGNORECASE), ""),
           # Trinidadian ", is so dem want it" (that's how they want it), opening its clause: why, no order
           (re.compile(r"[,.;]\s*is\s+so\s+(?:dem|they|dey|he|she|we|i|the\s+[a-z]+)\b[^.;:!?,\d]*", re.IGNORECASE), ""),
+          # "The cement in the big shed is too much, ... Halve it": there is too much X in P (a topic
+          # that "it" takes up), as "there's too much X in P" is read
+          (re.compile(r"(^|[.;:!?]\s*)the\s+([a-z][a-z0-9 -]*?)\s+(in|on|at)\s+(the\s+)?([a-z][a-z0-9 -]*?)\s+(?:is|are)\s+"
+                      r"too\s+(much|many)\b", re.IGNORECASE), r"\1there is too \6 \2 \3 \4\5"),
+          # "the boss wants the mezz and the counter swapped", "customer wants 5 X on P": a wish the
+          # speaker passes on is the order, as "I want" is
+          (re.compile(rf"(^|[.;:!?]\s*|,\s*|\b(?:{_OPENING_WORDS})\s+)(?:the\s+|our\s+|my\s+)?(?:boss|manager|supervisor|"
+                      r"gaffer|foreman|client|customer|owner|director)\s+wants\b(?!\s+to\b)", re.IGNORECASE), r"\1i want"),
           # "P, which has 11 X right now, needs to come down to 6": P should have 6 X (the count it has
           # now is what the world says anyway)
           (re.compile(rf"\b([a-z][a-z0-9-]*(?:\s+[a-z0-9]+)?)\s*,\s*which\s+(?:has|have|got|holds?)\s+(?:{_NUMBER}|\d+)\s+"
@@ -1565,6 +1580,11 @@ def _set_off(cur: list[Tok], free: list[Clause], inner: set[int]) -> tuple[list[
     return [t for k, t in enumerate(cur) if k not in drop], aside
 
 
+#: interjections that are sounds, no word of English grammar ("Ah please add 4 ...", "Oh move ..."):
+#: set off as "Ah, ..." though English has them
+SOUNDS = frozenset({"ah", "ahh", "oh", "uh", "um", "umm", "er", "erm", "ugh", "aha", "phew", "eh"})
+
+
 class Lexicon:
     """The world's vocabulary for the grammar: names, robot kinds, tags and skills."""
 
@@ -1704,15 +1724,17 @@ class Lexicon:
     def _interjection_set_off(self, toks: list[Tok]) -> list[Tok]:
         """The tokens with a comma after an interjection that opens a sentence without one ("davai
         komplektovka 4 more smes", "yalla move 3 X ..."): as "Davai, ..." it is talk, set aside as
-        ever. Only a word of no other language's talk that is no English word ("night robots", "no
-        wait" keep their readings), no greeting (said with its addressee: "morning team"), no word of
-        the grammar, no verb and no operative word."""
+        ever. Only a word of no other language's talk that is no English word, or a sound
+        (:data:`SOUNDS`: "Ah please add ..."; "night robots", "no wait" keep their readings), no
+        greeting (said with its addressee: "morning team"), no word of the grammar, no verb and no
+        operative word."""
         out: list[Tok] = []
         for k, t in enumerate(toks):
             out.append(t)
             opens = k == 0 or (toks[k - 1].kind == "punct" and toks[k - 1].value in (".", ";", "!", "?", ":"))
             word = str(t.value)
-            if (opens and t.kind == "word" and word in INTERJECTIONS and word not in GREETINGS and not common_word(word)
+            if (opens and t.kind == "word" and word in INTERJECTIONS and word not in GREETINGS
+                    and (not common_word(word) or word in SOUNDS)
                     and word not in self.keywords and word not in VERB_LEXICON and word not in OPERATIVE
                     and k + 1 < len(toks) and toks[k + 1].kind != "punct"
                     and not (toks[k + 1].kind == "word" and toks[k + 1].value in ADDRESSEES)):
@@ -1915,7 +1937,8 @@ class Lexicon:
         # after a verb of arriving or leaving, a bare number after "at", "by", "about" is the time
         # of day (no count follows it)
         text = _ARRIVING_AT.sub(r"\1 \2 oclock", text)
-        toks = noun_adjuncts(unmarked_lists(numbered_siblings(recognize(text, self.index), self._numbered_places)))
+        toks = noun_adjuncts(unmarked_lists(places_listed_after_sharing(unit_of_its_product(where_words_placed(
+            numbered_siblings(recognize(text, self.index), self._numbered_places))))))
         fixed = []
         for t in self._patois_read(toks):
             if t.kind == "word" and not self._known(str(t.value)) and self._group(t.text) is None:

@@ -24,8 +24,8 @@ _AT = frozenset({"at", "in", "on"})
 #: words that carry nothing of the order in such a span ("wa": Japanese's topic particle)
 _FILLERS = frozenset({"please", "pls", "plz", "kindly", "the", "wa", POSS_MARK, "now", "today"})
 #: verbs of moving things from one place to another
-_MOVING = frozenset({"move", "bring", "send", "take", "carry", "transfer", "shift", "deliver", "relocate",
-                     "ferry", "haul", "shuttle", "put"})
+MOVING = frozenset({"move", "bring", "send", "take", "carry", "transfer", "shift", "deliver", "relocate",
+                    "ferry", "haul", "shuttle", "put"})
 #: words said for taking things out of a place, longest first
 _REMOVING = (("take", "out"), ("take", "away"), ("remove",), ("cut",), ("reduce",))
 #: words said for what a place lacks ("is missing 6 X on B", Portuguese "está faltando"): add it
@@ -334,7 +334,7 @@ def _phrase_at(span: list[Tok], k: int) -> tuple[str, int] | None:
     t = span[k]
     if t.kind != "word":
         return None
-    if t.value in _MOVING:
+    if t.value in MOVING:
         return "move", 1
     if t.value == "add":
         return "add", 1

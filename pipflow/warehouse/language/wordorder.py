@@ -1,13 +1,16 @@
 """Word order people use that the grammar reads in another order: a place name used as a noun
-adjunct ("the north cave truckles": north cave's truckles), and a topic said first and taken up by
-a pronoun ("The wheels on P, double them"), a numbered place's sibling said by its number
-("between dock 1 and 2"), and a list said without its commas. Each is a rewrite of a sentence's tokens; the second is
-read only where the sentence as said does not parse (``Lexed.dislocated``)."""
+adjunct ("the north cave truckles": north cave's truckles), a topic said first and taken up by a
+pronoun ("The wheels on P, double them"), a numbered place's sibling said by its number ("between
+dock 1 and 2"), a list said without its commas, a product's own word said as its unit ("6 pockets
+of cement"), a place the world calls by a word of where ("upstairs") said without a preposition,
+and places listed after "evenly" and a comma. Each is a rewrite of a sentence's tokens; the topic
+is read only where the sentence as said does not parse (``Lexed.dislocated``)."""
 from __future__ import annotations
 
 import re
 
 from pipflow.warehouse.language.names import POSS_MARK, Tok
+from pipflow.warehouse.language.roles import MOVING
 
 
 def noun_adjuncts(toks: list[Tok]) -> list[Tok]:
@@ -24,6 +27,80 @@ def noun_adjuncts(toks: list[Tok]) -> list[Tok]:
         out.append(t)
         if t.kind == "name" and t.of == "shelf" and nxt is not None and nxt.kind == "name" and nxt.of == "product":
             out.append(Tok("word", "", POSS_MARK))
+    return out
+
+
+def unit_of_its_product(toks: list[Tok]) -> list[Tok]:
+    """A product's word said as the unit of that same product ("6 pockets of cement" where the
+    world calls cement "pocket"; "2 barrows of wheelbarrow"): one name, said in all its words.
+    One product's word said as the unit of another ("3 pockets of paint") is left as said, and
+    refused."""
+    out: list[Tok] = []
+    for t in toks:
+        if (t.kind == "name" and t.of == "product" and len(out) >= 2 and out[-1].kind == "word"
+                and out[-1].value == "of" and out[-2].kind == "name" and out[-2].of == "product"
+                and out[-2].value == t.value):
+            unit = out[-2]
+            out[-2:] = [Tok("name", f"{unit.text} {out[-1].text} {t.text}", t.value, t.of)]
+            continue
+        out.append(t)
+    return out
+
+
+#: words of where that stand without a preposition ("the paint upstairs", "bring it outside"); a
+#: world may call a place by one ("mezzanine": "upstairs")
+WHERE_WORDS = frozenset({"upstairs", "downstairs", "outside", "inside", "outdoors", "indoors", "overhead", "downstair",
+                         "upstair", "offsite", "onsite"})
+#: words after which a place needs no preposition put in: it has one, or a determiner
+_BEFORE_A_PLACE = frozenset({"to", "into", "onto", "in", "on", "at", "from", "off", "of", "by", "near", "up", "down",
+                             "the", "a", "an", "this", "that", "out", "over", "under", "behind", "between", "and", "or",
+                             "than", "via", "towards", "toward", "through", "across", "inside", "outside"})
+#: what ends a sentence, or a clause with its own verb
+_CLAUSE_ENDS = frozenset({".", ";", "!", "?", ":"})
+
+
+def where_words_placed(toks: list[Tok]) -> list[Tok]:
+    """A place said by a word of where, without a preposition (:data:`WHERE_WORDS`; "upstairs" for
+    the mezzanine): where things go after a verb of moving with no "to" after it ("bring 4 barrows
+    upstairs", "send 5 to the counter and the rest upstairs"), else where they are ("double the
+    paint upstairs", "swap them with the ones upstairs", "no more than 3 barrows upstairs", "move the
+    paint upstairs to the counter"). The preposition is put in with no text, so echoes quote the
+    words as said."""
+    out: list[Tok] = []
+    for k, t in enumerate(toks):
+        before = out[-1] if out else None
+        if (t.kind == "name" and t.of == "shelf" and t.text.lower() in WHERE_WORDS and before is not None
+                and not (before.kind == "word" and before.value in _BEFORE_A_PLACE)):
+            start = max((j for j in range(k) if toks[j].kind == "punct" and toks[j].value in _CLAUSE_ENDS), default=-1)
+            moved = any(x.kind == "word" and x.value in MOVING for x in toks[start + 1:k])
+            end = next((j for j in range(k + 1, len(toks)) if toks[j].kind == "punct"), len(toks))
+            goes_on = any(x.kind == "word" and x.value in ("to", "into", "onto") for x in toks[k + 1:end])
+            out.append(Tok("word", "", "to" if moved and not goes_on else "at"))
+        out.append(t)
+    return out
+
+
+#: words of sharing out that a list of places may follow after a comma ("spread them evenly, P, Q and R")
+_SHARED = frozenset({"evenly", "equally"})
+
+
+def places_listed_after_sharing(toks: list[Tok]) -> list[Tok]:
+    """ "spread them evenly, kontena, counter and the main shed": a list of two places or more after
+    a word of sharing out and a comma, to the clause's end, is what they are shared between (the
+    comma read as "between"). Anything else in the list (a product, a count) leaves it as said."""
+    out = list(toks)
+    for k in range(len(out) - 1):
+        t, comma = out[k], out[k + 1]
+        if not (t.kind == "word" and t.value in _SHARED and comma.kind == "punct" and comma.value == ","):
+            continue
+        end = next((j for j in range(k + 2, len(out)) if out[j].kind == "punct" and out[j].value != ","), len(out))
+        listed = out[k + 2:end]
+        places = [x for x in listed if x.kind == "name" and x.of == "shelf"]
+        glue = all(x.kind == "name" and x.of == "shelf" or x.kind == "punct" or
+                   (x.kind == "word" and x.value in ("and", "the", "&")) for x in listed)
+        if len(places) >= 2 and glue:
+            out[k + 1] = Tok("word", "", "between")
+            break
     return out
 
 
