@@ -160,6 +160,11 @@ def semi() -> dict:
     ("fetch us two cans o' bitter through to me chair", "put two beers on the armchair"),
     ("cut the breadcake open for me snap", "slice the breadcake"),
     ("put t'pie in t'microwave, we'll have it wi' us tea", "put the pie in the microwave"),
+    # a person coming home is no "put back"; the whole home's disorder is the reason, as a room's
+    ("Our lass'll be back from bingo at nine. Wash t'teapot", "wash the teapot"),
+    ("this place is a tip. Wash t'teapot", "wash the teapot"),
+    # "put away" closing its clause after a thing named: the thing put away
+    ("Get t'teapot washed an put away", "wash the teapot and put it away"),
 ])
 def test_yorkshire_reads_as_its_plain_english(semi: dict, said: str, plain: str) -> None:
     assert goal(said, semi) == goal(plain, semi)
@@ -178,6 +183,10 @@ def test_yorkshire_reads_as_its_plain_english(semi: dict, said: str, plain: str)
     # (the goal, met already, was read in place of the cue)
     "the teapot still on the kitchen table",
     "the butter still sat on the table!",
+    # "put away" with nothing named before it
+    "put away",
+    # a thing that will be back somewhere is no person coming home
+    "the teapot will be back in the cupboard",
 ])
 def test_what_the_yorkshire_rules_do_not_cover_stays_refused(semi: dict, said: str) -> None:
     with pytest.raises(PipflowError):

@@ -41,8 +41,8 @@ from jellyfish import metaphone
 
 from pipflow.errors import PipflowError, Refusal, TranslationError
 from pipflow.household.language.dialect import AFTER_I
-from pipflow.household.language.lexicon import HUNGRY, LEAVING_REASONS, NEEDS_OFFERED, words_of
-from pipflow.household.language.names import per_world, world_phrases
+from pipflow.household.language.lexicon import HUNGRY, LEAVING_REASONS, NEEDS_OFFERED, ORDER_VERB_WORDS, words_of
+from pipflow.household.language.names import home_words, per_world, world_phrases
 from pipflow.household.language.rewrites import without_duration
 from pipflow.household.language.tagger import tag
 from pipflow.household.language.typos import known_word, vocabulary
@@ -75,24 +75,29 @@ def _about_the_speaker(words: list[str]) -> bool:
     return said_i and not set(words) & (EXCLUSIVITY | BOUNDS)
 
 
-#: how a remark about someone, or about what there is, opens ("she says ...", "there is nowt clean",
-#: "our Kirsty says I never have it on")
-_SOMEONE = {"i", "we", "she", "he", "our", "my", "me", "there"}
 #: words that point at a thing the order is about ("not that one", "only the ones on the left"):
 #: a part with one may narrow it
 _POINTING_AT_THINGS = {"that", "this", "those", "these", "one", "ones", "them", "they", "which"}
 
 
+#: how a remark about someone, or about what there is, opens ("she says ...", "there is nowt clean",
+#: "our Kirsty says I never have it on")
+_SOMEONE = {"i", "we", "she", "he", "our", "my", "me", "there"}
+
+
 def _remark_of_someone(words: list[str], index: dict) -> bool:
     """A part said of the speaker (:func:`_about_the_speaker`), or one that opens with a person or
-    "there" as its subject and names nothing of the home, no count, no only or except and no thing
-    pointed at ("our Kirsty says I never have it on", "there's nowt clean to wear"): its "no" is
-    said of people or of what there is, and narrows none of the robots' work. Left out only in a
-    reading offered, whose words say so."""
+    "there" as its subject and names no word of the home, no verb of the robots' work, no count,
+    no only or except and no thing pointed at ("our Kirsty says I never have it on", "she won't
+    touch her dinner"): its "no" is said of people or of what there is, and narrows none of the
+    robots' work ("the grandchildren never tidy a thing", "she never washes them" are kept). Left
+    out only in a reading offered, whose words say so."""
     if _about_the_speaker(words):
         return True
+    home = home_words(index)
     return bool(words) and words[0] in _SOMEONE and not any(
-        (w,) in index or w.isdigit() or w in _POINTING_AT_THINGS or w in BOUNDS or w in EXCLUSIVITY for w in words)
+        w in home or w in ORDER_VERB_WORDS or w.isdigit() or w in _POINTING_AT_THINGS or w in BOUNDS or w in EXCLUSIVITY
+        for w in words)
 
 
 #: where a sentence ends (its mark kept with it) or a line breaks

@@ -474,6 +474,8 @@ _add("HERE", "here,in here,over here,over there," + ",".join(f"in the {h},around
      + "," + ",".join(f"{at} {whose} {h}" for h in HOME_WORDS + ("place",) for at in ("in", "around")
                       for whose in ("this", "my", "our")))
 _add("ROOMSAID", ",".join(f"the {r},my {r},our {r}" for r in ROOM_WORDS))
+#: the whole home said so ("this place is a tip", "the house is a pigsty"): its disorder, as a room's
+_add("ROOMSAID", ",".join(f"{whose} {h}" for h in HOME_WORDS + ("place",) for whose in ("this", "the", "my", "our")))
 _add("INROOM", ",".join(f"in the {r},in {r}" for r in ROOM_WORDS) + ",at home,home")
 #: "freezing in my room": whose room it is (resolver ``_called_after``: the home's "my heater")
 _add("INROOM", ",".join(f"in {whose} {r}" for r in ("room", "bedroom") for whose in ("my", "our")))

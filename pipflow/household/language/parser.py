@@ -337,8 +337,9 @@ def _elided_note(tags: list[Tag]) -> str:
 
 def _elided_objects(tags: list[Tag]) -> list[Tag] | None:
     """The tags with "it" put back after a verb of :data:`DROPPED_OBJECT_VERBS` followed at once
-    by a destination, when a thing was named before the verb ("slice the carrot, then put in the
-    fridge"); None when there is no such verb. Tried only when the command does not parse as
+    by a destination, or by "away" closing its clause, when a thing was named before the verb
+    ("slice the carrot, then put in the fridge", "wash the teapot and put away"); None when there
+    is no such verb. Tried only when the command does not parse as
     said; "it" then means what it always means (the resolver's pronoun: the thing before)."""
     out: list[Tag] = []
     changed = False
@@ -347,8 +348,11 @@ def _elided_objects(tags: list[Tag]) -> list[Tag] | None:
         named_before = any(_is_name(x) for x in tags[:k])
         # the destination must name where: "hang on" (wait) drops no object; a name right before the
         # verb is its object said first ("and plum put back on the trestle": :mod:`~.fronted`)
-        if (t.cls in DROPPED_OBJECT_VERBS and k + 2 < len(tags) and _destination_at(tags, k + 1)
-                and tags[k + 2].cls not in ("END", "COMMA") and named_before and not _is_name(tags[k - 1])):
+        # "wash the teapot and put away": "away" closing the clause is where it goes, too
+        away = k + 1 < len(tags) and tags[k + 1].cls == "AWAY" and (k + 2 >= len(tags) or tags[k + 2].cls in ("END", "COMMA"))
+        if (t.cls in DROPPED_OBJECT_VERBS and (k + 2 < len(tags) and _destination_at(tags, k + 1)
+                                               and tags[k + 2].cls not in ("END", "COMMA") or away)
+                and named_before and not _is_name(tags[k - 1])):
             out.append(Tag("IT", None, "(it)"))
             changed = True
     return out if changed else None

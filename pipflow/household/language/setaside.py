@@ -237,6 +237,8 @@ CUE_CLASSES = {"ADJ", "AIRCUE", "CLUTTER", "DOACT", "ACTIVITY", "FOULS", "FRESHA
                "SLEEPCUE", "SOUNDCUE", "TEMPCUE", "WANT", "TAKESTWO", "FORONE", "GOING", "LYING", "LEFT", "STAY",
                "EVERYTHING", "ALLOVER", "HERE", "INROOM", "ROOMSAID", "SOMEWHERE", "AWAY", "GOES", "DONE",
                "FINISHED", "TOGGLED", "SEE", "V_USE", "NOBODY", "DONOT", "CANNOT", "EXCEPT", "EVERY", "ALL", "BOTH"}
+#: the verbs after which "back" says someone comes home ("she'll be back at nine", "gets back")
+_RETURNING = {"be", "is", "are", "s", "get", "gets", "got", "come", "comes", "coming", "was", "were", "been"}
 #: who a remark is about, opening it: the speaker, another person, something the speaker has
 REMARK_SUBJECTS = {"i", "im", "we", "he", "she", "my", "our", "his", "her"}
 #: words that point back at what an order is about, or at a place: a clause with one may say
@@ -363,6 +365,8 @@ def _remark(world: dict, content: Callable[[str], bool]) -> Callable[[tuple[str,
 
     def remark(words: tuple[str, ...]) -> bool:
         ws = [w for w in _without_times(words) if w]
+        # "our lass will be back from bingo": "back" after "be" is a person coming home, no "put back"
+        ws = [w for k, w in enumerate(ws) if not (w == "back" and k and ws[k - 1] in _RETURNING)]
         while ws and ws[0] in ("and", "cause", "because", "cos", "coz", "cuz", "as", "since"):
             ws = ws[1:]
         subject = ws[1:] if ws[:1] in (["the"], ["a"], ["an"]) else ws
