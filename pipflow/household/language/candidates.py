@@ -206,6 +206,25 @@ def _needs(error: TranslationError, world: dict) -> list[tuple[str, str, str, di
     return out
 
 
+def _tags_and_unknown(command: str, world: dict, error: TranslationError, words: list[str], index: dict,
+                      vocab: frozenset[str]) -> tuple[list, list[str]]:
+    """The command's tags (none where the tagger refuses it), and its words not understood as said:
+    those the tagger could not read (after its own repairs), a word it read as a misspelling of a
+    word that names nothing alone ("leftovers" as "leftover"), and a dialect word read as an English
+    word the reader then could not place ("nowt" as "nothing")."""
+    try:
+        tags = tag(command, world, [])
+        unknown: list[str] = []
+    except TranslationError as exc:
+        tags, unknown = [], [w for w in getattr(exc, "unread", []) if w in words]
+        unknown += [x for w in getattr(exc, "unread", []) if w not in words
+                    for x in dict.fromkeys(words) if x not in unknown and x.isalpha() and distance(x, w) <= 2
+                    and not known_word(x, index, vocab)][:1]
+    unread = getattr(error, "unread", None) or ()
+    unknown += [x for x in dict.fromkeys(words) if x not in unknown and SCOTS.get(x) in unread]
+    return tags, unknown
+
+
 def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[str, str, str, dict]]:
     """(other wording, how it differs in plain words, the words it rests on, the choice of a
     thing among several it makes), best first."""
@@ -219,20 +238,7 @@ def _wordings(command: str, world: dict, error: TranslationError) -> list[tuple[
     vocab = vocabulary(index)
     modifiers = _first_word_names(world)
     heads = {w: names for w, names in _last_word_names(world).items() if len(names) > 1}
-    try:
-        tags = tag(command, world, [])
-        unknown: list[str] = []
-    except TranslationError as exc:   # the words the tagger could not read (after its own repairs)
-        tags, unknown = [], [w for w in getattr(exc, "unread", []) if w in words]
-        # a word the tagger read as a misspelling of a word that names nothing alone ("leftovers"
-        # as "leftover"): the word as said
-        unknown += [x for w in getattr(exc, "unread", []) if w not in words
-                    for x in dict.fromkeys(words) if x not in unknown and x.isalpha() and distance(x, w) <= 2
-                    and not known_word(x, index, vocab)][:1]
-    # a dialect word read as an English word the reader then could not place ("nowt" as "nothing"):
-    # the word as said
-    unread = getattr(error, "unread", None) or ()
-    unknown += [x for x in dict.fromkeys(words) if x not in unknown and SCOTS.get(x) in unread]
+    tags, unknown = _tags_and_unknown(command, world, error, words, index, vocab)
     # one edit with any first letter ("vowl" for bowl), two with the same first letter ("tunrpi"):
     # "kettle" is never offered as "bottle"
     near: dict[str, list[tuple[int, str]]] = {
