@@ -44,6 +44,7 @@ from pipflow.household.language.dialect import AFTER_I
 from pipflow.household.language.lexicon import HUNGRY, LEAVING_REASONS, NEEDS_OFFERED, ORDER_VERB_WORDS, words_of
 from pipflow.household.language.names import home_words, per_world, world_phrases
 from pipflow.household.language.rewrites import without_duration
+from pipflow.household.language.setaside import REMARK_SUBJECTS
 from pipflow.household.language.tagger import tag
 from pipflow.household.language.typos import known_word, vocabulary
 from pipflow.language.asides import BOUNDS, EXCLUSIVITY, FUNCTION_WORDS, NEGATION, near_operative
@@ -80,9 +81,9 @@ def _about_the_speaker(words: list[str]) -> bool:
 _POINTING_AT_THINGS = {"that", "this", "those", "these", "one", "ones", "them", "they", "which"}
 
 
-#: how a remark about someone, or about what there is, opens ("she says ...", "there is nowt clean",
-#: "our Kirsty says I never have it on")
-_SOMEONE = {"i", "we", "she", "he", "our", "my", "me", "there"}
+#: how a remark about someone, or about what there is, opens: the set-aside's remark subjects, and
+#: "me" ("me knees are killing me"), "there" ("there is nowt clean")
+_SOMEONE = REMARK_SUBJECTS | {"me", "there"}
 
 
 def _remark_of_someone(words: list[str], index: dict) -> bool:
