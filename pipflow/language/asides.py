@@ -116,7 +116,9 @@ GREETINGS = frozenset({"hi", "hello", "hey", "hiya", "heya", "howdy", "morning",
                        # good afternoon; "manheru": good evening; "mhoro": hi; "ndatenda": thanks)
                        "mangwanani", "masikati", "manheru", "mhoro", "mhoroi", "makadini", "ndatenda",
                        # Yorkshire "ey up" (hello: :func:`is_greeting` reads its "up" with it), "eyup"
-                       "ey", "eyup"})
+                       "ey", "eyup",
+                       # Fijian, said in Fiji English ("Bula bro": hello; "ni sa bula"; "vinaka": thanks)
+                       "bula", "vinaka"})
 #: words that open an apology or a thanks for something ("sorry for the late ask", "thanks for
 #: earlier"): what follows "for" / "about" is what one is sorry or thankful for, not an order
 PLEASANTRIES = frozenset({"sorry", "apologies", "apologise", "apologize", "pardon", "thanks", "thank", "thx",
@@ -180,7 +182,9 @@ THANKS = frozenset({"thanks", "ta", "cheers", "xiexie", "thx", "ty", "tyvm", "th
                     # Swedish ("tack", "tack så mycket": thanks)
                     "tack", "tackar",
                     # Maltese ("grazzi": thanks)
-                    "grazzi"})
+                    "grazzi",
+                    # Fijian ("vinaka", "vinaka vakalevu": thank you very much)
+                    "vinaka", "vakalevu"})
 #: words that soften an order they close, and are a "no" anywhere else: Trinidadian "nah" ("add 4
 #: more X to P nah": do it, nah; "nah wait, make it 6" takes back)
 SOFTENERS = frozenset({"nah"})
@@ -534,9 +538,9 @@ def _past_of_a_noun(ws: list[str]) -> bool:
     if len(ws) < k + 2:
         return False
     noun, verb = ws[k], ws[k + 1]
-    if k == 0 and len(ws) >= 3 and noun.isalpha() and noun not in FUNCTION_WORDS and ws[1].isalpha() \
-            and ws[1] not in FUNCTION_WORDS and _past(ws[2]):
-        return True   # a noun of two words: "Ceat vehicle reached early"
+    if len(ws) >= k + 3 and noun.isalpha() and noun not in FUNCTION_WORDS and verb.isalpha() \
+            and verb not in FUNCTION_WORDS and _past(ws[k + 2]):
+        return True   # a noun of two words: "Ceat vehicle reached early", "the Lakeba order changed again"
     subject = noun.isalpha() and noun not in FUNCTION_WORDS and (k == 1 or (noun.endswith("s") and len(noun) > 3
                                                                          and not noun.endswith("ss")))
     return (subject and _past(verb)) or _placed_noun_past(ws, k)
@@ -646,6 +650,8 @@ def _operative_at(ws: list[str], k: int) -> bool:
         return False
     if k == 0 and ws[0] in ("those", "these") and nxt in ("are", "were", "re", "is") and len(ws) > 2:
         return False   # "..., those are booked for the other party": the subject of a report, no selection
+    if k == 0 and ws[0] == "that" and nxt in ("is", "s", "was") and len(ws) > 2:
+        return False   # "..., that's for the sandwich place": the subject of a report, no slip of "than"
     if k < 2 and k < _demonstrative_subject(ws):   # the subject is at most "that one"
         return False   # "..., that one bruk", "..., those dent up": said of the things just named
     if ws[k] in SOFTENERS and nxt in ("wait", "scratch", "sorry", "hold"):
@@ -671,10 +677,12 @@ _TAIL_WORDS = frozenset({"well", "too", "also", "aswell", "please", "pls", "plz"
 def _demonstrative_subject(ws: list[str]) -> int:
     """How many words open ``ws`` as the subject of what is said of the things just named ("...,
     that one bruk", "..., those dent up", "..., this one is cracked": a demonstrative, with "one" or
-    "ones"), with a word of their state after it and no word of an order's tail (:data:`_TAIL_WORDS`);
-    0 where none does. The words after it are judged as any clause's."""
+    "ones"; "that" before "is": "..., that's reserved for the pickup"), with a word of their state
+    after it and no word of an order's tail (:data:`_TAIL_WORDS`); 0 where none does. The words
+    after it are judged as any clause's."""
     n = 2 if len(ws) > 1 and ws[0] in ("that", "this", "those", "these") and ws[1] in _ONES else \
-        1 if ws and ws[0] in ("those", "these") else 0
+        1 if ws and ws[0] in ("those", "these") else \
+        1 if len(ws) > 2 and ws[0] == "that" and ws[1] in ("is", "s", "was") else 0   # "..., that's for P"
     rest = [w for w in ws[n:] if w not in _BE]
     said = bool(rest) and any(w.isalpha() and w not in FUNCTION_WORDS for w in rest) and not set(rest) & _TAIL_WORDS
     return n if said else 0
@@ -848,7 +856,10 @@ URGINGS = frozenset({("sort", "it", "out"), ("sort", "it"), ("sort", "that", "ou
                      ("do", "it"), ("just", "do", "it"), ("do", "it", "now"),
                      # asking to be told when it is done: a reply, nothing to do to the stock
                      ("revert", "back"), ("revert",), ("let", "me", "know"), ("update", "me"), ("keep", "me", "posted"),
-                     ("report", "back"), ("confirm", "back")})
+                     ("report", "back"), ("confirm", "back"),
+                     # asking whether it can be done (Fiji, Singapore and Malaysian English: "Can or
+                     # not?", "can anot?"), which the order already asks
+                     ("can", "or", "not"), ("can", "or", "cannot"), ("can", "anot"), ("can", "not", "can")})
 #: words that may open or close an urging without changing it ("pls do the needful", "revert back
 #: once done")
 _URGING_COURTESY = frozenset({"pls", "please", "kindly", "plz", "asap"})
@@ -868,9 +879,19 @@ def is_urging(words: Iterable[str]) -> bool:
     return tuple(ws) in URGINGS
 
 
+#: words that may lead an opener ("OK, few things", "right, two jobs")
+_OPENER_LEADS = frozenset({"ok", "okay", "alright", "right", "so", "now", "well"})
+
+
 def is_opener(words: Iterable[str]) -> bool:
-    """A whole clause that only opens a request ("Quick one", "Right then": :data:`OPENERS`)."""
-    return tuple(w for w in words if w) in OPENERS
+    """A whole clause that only opens a request ("Quick one", "Right then": :data:`OPENERS`),
+    also with words that lead it and words it is said to ("Ok bro few things": :data:`CLOSERS`)."""
+    ws = tuple(w for w in words if w)
+    if ws in OPENERS:
+        return True
+    while ws and ws[0] in _OPENER_LEADS:
+        ws = ws[1:]
+    return tuple(w for w in ws if w not in CLOSERS) in OPENERS
 
 
 def said_talk(words: Iterable[str], names: Callable[[str], bool]) -> bool:
@@ -946,6 +967,9 @@ INTERJECTIONS = frozenset({
     # Shona and Zimbabwean English ("Manje, ...": now, so; "Nhai, ...": hey, is it so; "zvakanaka": it's
     # fine; "iwe": you there); Yorkshire "sithee" (look here)
     "manje", "nhai", "zvakanaka", "iwe", "sithee",
+    # Fijian, said in Fiji English ("Isa, ...": alas, dear; "Ia, ...": well, so; "io": yes; "maleka":
+    # delicious, great; "vinaka": thanks; "bula": hello)
+    "isa", "ia", "io", "maleka", "vinaka", "bula",
     # Colombian Spanish ("Ay, ...", "parce": mate; "listo": ready, OK; "dale": go on; "uy")
     "ay", "uy", "parce", "parcero", "listo", "dale",
     # Québec French ("Bon, ...": well; "genre": like; "tsé": you know; "câline": darn; "voyons": come on)
@@ -1021,9 +1045,44 @@ def signature(before: Iterable[str], words: Iterable[str]) -> bool:
     return bool(said) and said[-1] in SIGN_OFFS and len(ws) in (1, 2) and all(addressee([w]) is not None for w in ws)
 
 
+#: what goods are like, that no order reads and no rule says ("the tins are heavy", "fragile",
+#: "the floor's wet"): said as the reason for an order or a rule. Sizes are left out: "the small
+#: ones" and "the big lads" are robots as often, and a robot's size may be a rule
+CONDITIONS = frozenset({"heavy", "hefty", "fragile", "delicate", "breakable", "awkward", "bulky", "slippery", "wet",
+                        "damp", "soaked", "icy", "frozen", "perishable", "flammable", "hazardous", "toxic",
+                        "dangerous", "expensive", "pricey", "valuable", "precious", "dusty", "sticky", "leaky",
+                        "leaking", "greasy", "oily", "wobbly", "unstable", "mucky", "muddy"})
+#: words that grade a condition ("too heavy", "proper heavy", "a bit wet", "heavy as")
+_GRADING = frozenset({"too", "very", "so", "quite", "really", "bit", "a", "proper", "real", "super", "pretty",
+                      "extra", "dead", "bloody", "damn", "plumb", "kinda", "rather", "way", "little", "well", "still",
+                      "that", "awful", "awfully", "mighty", "right", "wicked"})
+
+
+def is_condition(words: Iterable[str], content: Callable[[str], bool], names: Callable[[str], bool],
+                 thing: Callable[[str], bool]) -> bool:
+    """ "..., the tins are heavy", "..., minyak is heavy", "..., heavy", "..., formula is heavy":
+    what goods (or a place) are like (:data:`CONDITIONS`), said as the reason for an order or a
+    rule; it orders nothing, so it is set aside even where it names a thing of the world. Only its
+    subject may name one (``thing``: a place or a product, never a robot: "the forklift is
+    heavy" may be a rule), in words of no grammar ("keep them cold" is an order) with "be" and words
+    grading the condition; after the condition at most three words of talk ("heavy buggers"). An
+    operative word, a number, a word of wanting or a word for robots keeps it in."""
+    ws = [w for w in words if w]
+    k = next((i for i, w in enumerate(ws) if w in CONDITIONS and not names(w)), None)
+    if k is None or len(ws) - k > 4:
+        return False
+    if any(_operative_at(ws, i) or _asks(ws, i) or w in ROBOT_WORDS or _count_word(w) for i, w in enumerate(ws)):
+        return False
+    subject = [w for w in ws[:k] if w not in _BE and w not in _GRADING and w not in DETERMINERS
+               and w not in _DEMONSTRATIVES and w not in SUBJECTS and w not in _SUBJECT_BE]
+    return all(thing(w) or not (names(w) or content(w)) for w in subject) and \
+        not any(content(w) or names(w) for w in ws[k + 1:])
+
+
 def content_free(words: Iterable[str], content: Callable[[str], bool],
                  names: Callable[[str], bool] | None = None, reports: bool = False,
-                 robot: Callable[[str], bool] = lambda w: False) -> bool:
+                 robot: Callable[[str], bool] = lambda w: False,
+                 thing: Callable[[str], bool] | None = None) -> bool:
     """Whether a clause carries nothing an order needs (module doc). ``content(word)`` is the
     domain's test: a name of its world (or close to one), a number, a content word of its lexicon.
     ``names(word)`` (optional; without it apologies and thanks are judged by ``content``): only a
@@ -1031,13 +1090,17 @@ def content_free(words: Iterable[str], content: Callable[[str], bool],
     are what it is for. ``robot(word)``: whether a word names a robot (or team) of the world. A
     clause that addresses one by name (:func:`addressee`) is talk in a domain whose orders are for
     the team; addressed to a name the world lacks, it is never talk: a robot that is not there is
-    asked to do it, and the command must be refused, not given to the robots there are."""
+    asked to do it, and the command must be refused, not given to the robots there are.
+    ``thing(word)`` (optional): whether a word names a place or a product, which a condition may
+    be said of (:func:`is_condition`)."""
     ws = [w for w in words if w]
     ws = [w for k, w in enumerate(ws) if not duration_at(ws, k)]   # "in 20 minutes": how long, no count
     if not ws:
         return True
     if tuple(ws) in CLOSINGS and not any(content(w) for w in ws):
         return True   # "..., all grand", "... . sound": said in passing, no one addressed
+    if names is not None and thing is not None and is_condition(ws, content, names, thing):
+        return True   # "..., heavy": what the goods are like, no name said to
     name = addressee(ws)
     if name is not None:
         return robot(name)   # "Hornet, ...": set aside only when it names a robot of the world
@@ -1057,7 +1120,19 @@ def content_free(words: Iterable[str], content: Callable[[str], bool],
     # "then" before a subject joins what the speaker says of someone, and orders nothing
     joined = next((k for k, w in enumerate(ws) if w not in _CLAUSE_JOINERS), 0) if opener in SUBJECTS else 0
     return not any(_operative_at(ws, k) or (content(w) and not _just_now(ws, k) and not _all_over(ws, k)
-                                            and k >= subject) for k, w in enumerate(ws) if k >= joined)
+                                            and k >= subject and not _possessed(ws, k, names))
+                   for k, w in enumerate(ws) if k >= joined)
+
+
+#: words that say whose a thing is ("its wheel", "that one's wheel": the "s" of the apostrophe)
+_POSSESSIVES = frozenset({"his", "her", "its", "their", "my", "our", "your", "s"})
+
+
+def _possessed(ws: list[str], k: int, names: Callable[[str], bool] | None) -> bool:
+    """Whether the word at ``k`` is a noun someone or something has ("..., that one's wheel still
+    squeaking", "..., her wheel is loose"): after a possessive, a grammar word ("wheel": a verb)
+    is a noun, no order. A name of the world stays content, and without ``names`` nothing is judged so."""
+    return names is not None and k > 0 and ws[k - 1] in _POSSESSIVES and not names(ws[k])
 
 
 #: words that join a clause to the one before and say nothing of who does what ("then we lock it")
@@ -1128,21 +1203,74 @@ def said(parts: list[str]) -> str:
 BACK_REFERENCES = frozenset({"it", "its", "them", "their", "there", "those", "these", "that", "this", "em"})
 
 
-def leading_reason(parts: list[Clause], free: list[Clause], counts: Callable[[str], bool]) -> list[Clause]:
+#: words that leave things out of an order ("except the pigment", "but not the dog food")
+_LEAVING_OUT = frozenset({"except", "excepting", "excluding", "but", "apart", "besides", "not", "leave", "leaving"})
+#: verbs of staying, said of what was left out ("..., that stays", "..., that one stays put")
+_STAYING = frozenset({"stays", "stay", "remains", "remain"})
+#: what may follow them: where, or what for ("that stays for picking")
+_STAYING_TAIL = frozenset({"put", "there", "here", "where", "it", "is", "they", "are", "as", "for", "behind", "too"})
+
+
+def restates_what_stays(before: Iterable[str], words: Iterable[str], names: Callable[[str], bool]) -> bool:
+    """ "Empty the kaai except the pigment, that stays", "... except the one in pickface, that one
+    stay for picking": a demonstrative and a verb of staying right after a clause that leaves
+    something out (:data:`_LEAVING_OUT`) says again that it stays, which the clause before says;
+    set aside. After any other clause "that stays" says what stays, and is read or refused as ever.
+    Nothing of the world, no number and no operative word but its demonstrative may be in it."""
+    ws, prev = [w for w in words if w], set(before)
+    n = 2 if ws[1:2] and ws[1] in _ONES else 1
+    if not ws or ws[0] not in _DEMONSTRATIVES or not prev & _LEAVING_OUT or len(ws) <= n or ws[n] not in _STAYING:
+        return False
+    rest = ws[n + 1:]
+    return not any(near_operative(w) or names(w) for w in rest) and (not rest or rest[0] in _STAYING_TAIL)
+
+
+def leading_reason(parts: list[Clause], free: list[Clause], counts: Callable[[str], bool],
+                   content: Callable[[str], bool] | None = None) -> list[Clause]:
     """The reason that opens a sentence and is followed by "so" ("We're doing a sale on bay 9 this
     afternoon, so get 3 paperbacks ..."): a report of what is going on (a subject, "be", a
-    verb in -ing: :func:`is_report`) that may name places and products, with "so" after
-    it; both are set aside. Never with a count (``counts``: the domain's test, which lets the
-    world's names pass) or an operative word in it, nor where the order after it points back with
-    a pronoun or "there" (whatever it names is what "it" means)."""
-    if len(parts) < 2 or parts[0] in free or parts[1].words[:1] != ("so",):
+    verb in -ing: :func:`is_report`) that may name places and products, or what a party did or
+    wants (:func:`said_of_a_party`, with ``content``: "The Taveuni resort cut back their order, ia,
+    so cut ..."), with "so" after it (talk set aside between them); both are set aside. Never with
+    a count (``counts``: the domain's test, which lets the world's names pass) or an operative word
+    in it, nor where the order after it points back with a pronoun or "there" (whatever it names is
+    what "it" means)."""
+    after = [c for c in parts[1:] if c not in free]
+    if len(parts) < 2 or parts[0] in free or not after or after[0].words[:1] != ("so",):
         return []
-    if not is_report(parts[0].words, counts):
+    if not (is_report(parts[0].words, counts) or (content is not None and said_of_a_party(parts[0].words, counts,
+                                                                                           content))):
         return []
     if any(w in BACK_REFERENCES for c in parts[1:] for w in c.words):
         return []
-    so = parts[1]
+    so = after[0]
     return [parts[0], Clause(so.start, so.start + 1, ("so",))]
+
+
+#: verbs a party's report is said with besides those in -s and -ed ("customs want samples", "the
+#: resort cut back their order")
+_PARTY_VERBS = frozenset(_BARE_VERBS | ASKING | FINITE | _MODALS | PAST_FORMS | {"cut"})
+
+
+def said_of_a_party(words: Iterable[str], counts: Callable[[str], bool], content: Callable[[str], bool]) -> bool:
+    """ "The Taveuni resort cut back their order", "customs want samples", "QA says whole Tuesday":
+    what a party did, does or wants, said before "so" and the order it leads to
+    (:func:`leading_reason`). Its subject is one or two words of no grammar, no name of the world
+    (``content``) and nobody spoken of or to ("we", "you", "they": those may be the robots or the
+    speaker, whose wish is an order), its verb one in -s or -ed or of :data:`_PARTY_VERBS`; no count
+    and no operative word anywhere in it."""
+    ws = [w for w in words if w]
+    k = 1 if ws[:1] and ws[0] in DETERMINERS else 0
+    n = next((j for j in (1, 2) if len(ws) > k + j and _finite(ws[k + j])), None)
+    if n is None or any(content(w) or w in ROBOT_WORDS or w in SUBJECTS or w in _YOU or not w.isalpha()
+                        for w in ws[k:k + n]):
+        return False
+    return not any(_operative_at(ws, i) or counts(w) for i, w in enumerate(ws))
+
+
+def _finite(word: str) -> bool:
+    """A verb as a subject has it: in -s (not -ss), in -ed, or of :data:`_PARTY_VERBS`."""
+    return word in _PARTY_VERBS or _past(word) or (word.endswith("s") and len(word) > 3 and not word.endswith("ss"))
 
 
 #: words the reader knows as talk (greetings, thanks, closers, apologies, interjections): said as

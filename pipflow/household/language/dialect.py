@@ -568,11 +568,14 @@ def _switching_phrase(words: list[str], k: int, world: dict, index: dict, recept
 
 def _phrase_of(words: list[str], k: int, world: dict, index: dict, prop: str, receptacles: bool = True) -> int:
     """The index after a phrase at ``k`` that names only things with the property ``prop`` (and
-    that hold nothing, unless ``receptacles``), else 0."""
+    that hold nothing, unless ``receptacles``), else 0. A category ("all the lights") names its
+    members, objects and places."""
+    every = {**(world.get("places") or {}), **(world.get("objects") or {})}
     for end in range(min(len(words), k + 5), k, -1):
         things = index.get(tuple(words[k:end])) or []
-        entries = [(world.get("objects") or {}).get(t["name"]) or (world.get("places") or {}).get(t["name"]) or {}
-                   for t in things if t["kind"] in ("object", "place")]
+        entries = [every.get(t["name"]) or {} for t in things if t["kind"] in ("object", "place")]
+        entries += [e or {} for t in things if t["kind"] == "category"
+                    for e in every.values() if t["name"] in ((e or {}).get("categories") or [])]
         if entries and all(prop in (e.get("properties") or []) and (
                 receptacles or "receptacle" not in (e.get("properties") or [])) for e in entries):
             return end

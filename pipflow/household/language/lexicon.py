@@ -145,7 +145,9 @@ _add("UNIT", "pieces of,bits of,items of,cans of,tins of,bottles of,packets of,j
 UNIT_DETERMINERS = {"a piece of", "a bit of", "an item of"}
 _add("V_PUT", "put,place,move,bring,take,carry,set,transfer,gather,collect,stash,drop,store,stick,pop,lay,"
      "hang,deliver,fetch,get,pick,relocate,stack,grab,shift,clear,pack,lift,haul,lug,hand,drag,plonk,bung,"
-     "shove,tuck,hoist,ferry,send,peg")
+     "shove,tuck,hoist,ferry,send,peg,"
+     # Appalachian and Southern US "tote" (carry: "tote that poke of taters down to the cellar")
+     "tote")
 #: "empty the fridge onto the counter": everything in a place taken, to where the command says
 _add("V_EMPTY", "empty,clear out,unload,unpack")
 #: "put the espresso cup down on the bar": a particle of the move before where it goes
@@ -339,7 +341,10 @@ _add("UP", "up")
 _add("AWAY", "away,where it belongs,where they belong,where it goes,where they go,where it lives,where they live,"
      "away where it belongs,away where they belong,away where it goes,away where they go,in its place,in their place,in their places,back in its place,"
      "back in their place,back where it belongs,back where they belong,back where it lives,back where they live,"
-     "back where it goes,back where they go")
+     "back where it goes,back where they go,"
+     # Southern and Appalachian "put it up where it goes" (put it away); "put the radio up on the
+     # shelf" keeps "up" as a particle of the move
+     "up where it belongs,up where they belong,up where it goes,up where they go")
 _add("BACK", "back")
 _add("OF", "of")
 _add("IT", "it,them,they")
@@ -443,7 +448,9 @@ _add("INTENS", "very,so,really,quite,rather,extremely,pretty,a bit,a little,way 
 HEDGES = ("ever so", "ever such a", "absolutely", "proper", "properly", "dead", "awfully", "awful", "terribly", "bloody",
           "utterly", "totally", "a tad", "a touch", "somewhat", "fairly", "a little bit", "a wee bit", "a tiny bit",
           "incredibly", "so very", "that", "really quite", "just so", "too too", "well", "right",
-          "all", "super", "kinda", "kind of", "sorta", "sort of", "hella")
+          "all", "super", "kinda", "kind of", "sorta", "sort of", "hella",
+          # Appalachian "plumb" (completely: "plumb dark", "plumb covered in mud")
+          "plumb")
 HEDGE_WORDS = tuple(h for h in HEDGES if tuple(h.split()) not in PHRASES)
 _add("HEDGE", ",".join(HEDGE_WORDS))
 #: the token classes a hedge may grade: the hedge before one of them is read as nothing
@@ -828,6 +835,36 @@ def arrows_said_as(command: str, word: str) -> str:
 MARKS = frozenset("+&.,;:!?'\"()[]-_\u2018\u2019\u201c\u201d\u2010\u2011\u2012\u2013\u2014\u2015\u2026")
 
 
+#: Appalachian English (eastern Kentucky, West Virginia) and the American South, written out:
+#: "hit" for it ("set hit on the table", "hit's got a ring in it"), never before what a verb hits
+#: ("hit the lights", "hit that switch"); "warsh" (wash), "'fore" (before), "acrost", "agin",
+#: "ever'" (every), "het up" (heated up), "hisself", "might could" (could), "a-plenty"; "a-" before a
+#: verb in -ing ("hit's a-wiltin'", "you're a-going by"); "yonder" (over there, in the other room);
+#: "that pone of cornbread" (a loaf of it), "a mess of beans" (a helping): the thing; "fixing to"
+#: (about to); "the television set" (the television)
+_APPALACHIAN = ((r"(?<![\w'])hit(?=['\s.,;!?]|$)(?!\s+(?:the|a|an|that|this|those|these|them|my|our|your|his|her|"
+                 r"their|it|me|him|us|some|every|all\s+the)\b)", "it"),
+                (r"\bwarsh(?=(?:es|ed|ing)?\b)", "wash"),
+                (r"(?<![\w'])'?fore(?=\s+(?:they|it|he|she|i|we|you|the|supper|dinner|lunch|breakfast|church|dark|"
+                 r"bed|night|morning|noon)\b)", "before"),
+                (r"\bacrost\b", "across"), (r"\bagin\b", "again"), (r"\bever'(?=\s)", "every"),
+                (r"\bhet\s+up\b", "heated up"), (r"\bhisself\b", "himself"),
+                (r"\bmight\s+(could|would|should)\b", r"\1"), (r"\ba-plenty\b", "plenty"),
+                (r"\ba-(?=[a-z]{2,}ing\b)", ""), (r"\byonder\b", "there"),
+                (r"\b(?:a|that|this|the)\s+(?:pone|mess)\s+of\s+(?=[a-z])", "the "),
+                (r"\bfixing\s+to\b", "about to"), (r"\b(television|tv|telly)\s+set\b", r"\1"))
+
+
+#: Yorkshire, then Appalachian, as written out: "reyt" (right: "Reyt, we're off up"); "put wood in
+#: t'ole" (in the hole: shut the door); "switch the lights off, and don't forget the fire" (the fire
+#: too, as a list goes on); "tha's" (you are: "while tha's up"; you have, before "got" or "been")
+_DIALECTS = ((r"\breyt\b", "right"),
+             (r"\bput\s+(?:the\s+)?wood\s+in\s+(?:the\s+)?h?ole\b", "shut the door"),
+             (r"\b(?:do\s+not|don'?t)\s+forget\s+(?:about\s+)?(?=(?:the|my|our|your|that|this|those|these|me)\b)", ""),
+             *_APPALACHIAN,
+             (r"\btha['\u2019]?s\b(?=\s+(?:got|been)\b)", "you have"), (r"\btha['\u2019]s\b", "you are"))
+
+
 #: texting and typing without apostrophes ("can u", "theyre", "itll", "isnt", "gonna"), written out
 _TYPED = ((r"(?<!['\u2019])\bu\b", "you"),   # never the "u" of "pa'u" (Hawaiian: a glottal stop written in the word)
           # "ur" before where or how one is ("while ur there", "when ur done") is "you are", else "your"
@@ -884,14 +921,8 @@ def normalize(text: str) -> str:
     # English word has one, so it is read once
     t = re.sub(r"([a-z])\1{2,}", r"\1", t)
     t = re.sub(r"\s*[+&]\s*", " and ", t)   # "noodles + curry", "salt & pepper"
-    t = re.sub(r"\breyt\b", "right", t)   # Yorkshire "reyt" (right: "Reyt, we're off up")
-    # Yorkshire "put wood in t'ole" (in the hole: shut the door)
-    t = re.sub(r"\bput\s+(?:the\s+)?wood\s+in\s+(?:the\s+)?h?ole\b", "shut the door", t)
-    # "switch the lights off, and don't forget the fire": the fire too, as a list goes on
-    t = re.sub(r"\b(?:do\s+not|don'?t)\s+forget\s+(?:about\s+)?(?=(?:the|my|our|your|that|this|those|these|me)\b)", "", t)
-    # Yorkshire "tha's" (you are: "while tha's up"; you have, before "got" or "been")
-    t = re.sub(r"\btha['\u2019]?s\b(?=\s+(?:got|been)\b)", "you have", t)
-    t = re.sub(r"\btha['\u2019]s\b", "you are", t)
+    for said, written in _DIALECTS:
+        t = re.sub(said, written, t)
     # northern English "an" for and ("wash t'pan an the mug", "an put it away"): "an" is the article
     # only before a vowel (or an "h" word: "an hour"), so before any other letter it joins
     t = re.sub(r"\ban(?=\s+(?:h(?:e|is|er|im|ers)\b|[bcdfgjklmnpqrstvwz]|(?:into|in|on|onto|out|up|off|over|under|it|its|if|"
@@ -914,7 +945,7 @@ def normalize(text: str) -> str:
     t = re.sub(r"(?<!night)(?<!day)(?<!week)(?<!morning)(?<!evening)(?<!weekend)"
                r"'s(?=\s+(?:still\s+|not\s+|too\s+|very\s+|so\s+)?(?:" + "|".join(_STATE_WORDS) + r")\b)", " is", t)
     # "the melon's too heavy", "the room's ever so stuffy": a possessive is never followed by a degree
-    t = re.sub(r"'s(?=\s+(?:too|very|so|really|quite|rather|ever so|absolutely|dead|proper|awfully|far too|way too|full|"
+    t = re.sub(r"'s(?=\s+(?:too|very|so|really|quite|rather|ever so|absolutely|dead|proper|plumb|awfully|far too|way too|full|"
                r"covered|like)\s)", " is", t)
     # "its dead gloomy in there", typed without its apostrophe: "its" before a degree or a cue of
     # how the room feels is "it is" (a possessive is followed by a thing)

@@ -233,15 +233,20 @@ _ENABLING = {"can", "could", "will", "may"}
 #: with "get" / "have" (participle -> the verb of the lexicon that does it)
 CAUSED = {"sliced": "slice", "chopped": "chop", "diced": "dice", "washed": "wash", "cleaned": "clean",
           "scrubbed": "scrub", "rinsed": "rinse", "heated": "heat", "warmed": "warm", "cooked": "cook",
-          "toasted": "toast"}
-#: what may end the clause of such a participle
-_CLAUSE_ENDS = set(PUNCT) | {"and", "then", "please"}
+          "toasted": "toast", "put": "put"}
+#: what may end the clause of such a participle (what follows it is read as ever: "get the
+#: leftovers heated up for him", "get the garden truck put away before it wilts")
+_CLAUSE_ENDS = set(PUNCT) | {"and", "then", "please", "for", "before", "so"}
+#: particles a participle may have after it ("heated up", "put away", "washed out")
+_CAUSED_PARTICLES = {"up", "out", "away", "through", "down"}
 
 
 def caused(words: list[str], notes: list[str]) -> list[str]:
-    """ "get the avocado sliced" as "slice the avocado" (:data:`CAUSED`): "get" or "have", then at
-    most five words of no clause mark, then the participle closing the clause. A participle
-    inside the phrase ("get the sliced bread") is no such thing."""
+    """ "get the avocado sliced" as "slice the avocado", "get them leftovers heated up" as "heat
+    them leftovers up" (:data:`CAUSED`): "get" or "have", then at most five words of no clause
+    mark, then the participle (with a particle, :data:`_CAUSED_PARTICLES`) closing the clause;
+    "put" only as "put away". A participle inside the phrase ("get the sliced bread") is no such
+    thing."""
     out = list(words)
     for i, w in enumerate(words):
         if w not in ("get", "have") or (i and words[i - 1] not in _CLAUSE_ENDS | {"you", "u", "someone", "to"}):
@@ -249,9 +254,12 @@ def caused(words: list[str], notes: list[str]) -> list[str]:
         for j in range(i + 2, min(i + 7, len(words))):
             if words[j] in PUNCT:
                 break
-            if words[j] in CAUSED and (j + 1 == len(words) or words[j + 1] in _CLAUSE_ENDS):
-                notes.append(f"'{w} {' '.join(words[i + 1:j + 1])}' read as '{CAUSED[words[j]]} {' '.join(words[i + 1:j])}'")
-                return out[:i] + [CAUSED[words[j]]] + out[i + 1:j] + caused(out[j + 1:], notes)
+            end = j + 1 + (j + 1 < len(words) and words[j + 1] in _CAUSED_PARTICLES)
+            if words[j] in CAUSED and (end == len(words) or words[end] in _CLAUSE_ENDS) \
+                    and (words[j] != "put" or words[j + 1:end] == ["away"]):
+                verb, thing = CAUSED[words[j]], words[i + 1:j] + words[j + 1:end]
+                notes.append(f"'{w} {' '.join(words[i + 1:end])}' read as '{verb} {' '.join(thing)}'")
+                return out[:i] + [verb] + out[i + 1:j] + out[j + 1:end] + caused(out[end:], notes)
     return out
 
 
@@ -314,15 +322,16 @@ def heat_purpose(words: list[str], notes: list[str]) -> list[str]:
 _CLOSING_PARTICLES = {"ah", "a", "ne", "yo"}
 
 
-def particles(words: list[str], names_nothing, notes: list[str]) -> list[str]:
+def particles(words: list[str], names_nothing, notes: list[str], doers: frozenset[str] = frozenset()) -> list[str]:
     """Particles and small constructions read as the grammar's words (docs/household.md):
     "them both" / "them all" as "both of them" / "all of them"; "ah" closing a clause left out (a
     particle, as "lah"); "through to P" as "to P" and
     "through from P" as "from P" (to or from another room: the home model has none); "warm X
     through" without "through" (heated all the way: hot); "put X inside" (or "in") ending its
-    clause as "put X in it"; "so W can ..." as "and ..." when W names nothing of the home (a
-    person: who does a step is the plan's choice). ``names_nothing(word)``: the word is no name of
-    the world."""
+    clause as "put X in it"; "so W can ..." as "and ..." when W is a robot or team of the home
+    (``doers``: who does a step is the plan's choice; a person's "so Virgil can ..." is their
+    doing, set aside: :func:`pipflow.household.language.setaside.speaker_doing`).
+    ``names_nothing(word)``: the word is no name of the world."""
     out: list[str] = []
     k = 0
     while k < len(words):
@@ -369,7 +378,7 @@ def particles(words: list[str], names_nothing, notes: list[str]) -> list[str]:
             out += ["in", "it"]
             k += 1
             continue
-        if w == "so" and k + 2 < len(words) and words[k + 2] in _ENABLING and names_nothing(words[k + 1]) \
+        if w == "so" and k + 2 < len(words) and words[k + 2] in _ENABLING and words[k + 1] in doers \
                 and out and out[-1] not in PUNCT:
             notes.append(f"'so {words[k + 1]} {words[k + 2]}': who does a step is the plan's choice; read as 'and'")
             out.append("and")
@@ -615,6 +624,60 @@ def so_before_an_order(words: list[str], notes: list[str]) -> list[str]:
             continue
         else:
             out.append(w)
+        k += 1
+    return out
+
+
+#: particles said after "back" before where a thing goes ("put the jam back down in the cellar")
+_BACK_PARTICLES = {"down", "up", "over", "out", "round", "around"}
+#: prepositions of where a thing goes
+_DESTINATIONS = {"to", "into", "onto", "in", "on"}
+
+
+def back_before_a_destination(words: list[str], notes: list[str]) -> list[str]:
+    """ "put the jam back down in the cellar house" as "put the jam back in the cellar house", and
+    "bring me back a jar of apple butter to the table" as "bring me a jar of apple butter to the
+    table": "back" (and a particle after it) right after a verb of the lexicon, where the clause
+    then says where the thing goes, says it is returned there, which the place says; where no
+    place follows, "back" is where it belongs, and is left as said."""
+    out = list(words)
+    for k, w in enumerate(words):
+        if w != "back" or not k:
+            continue
+        verb = words[k - 1] in ORDER_VERB_WORDS or (words[k - 1] == "me" and k > 1 and words[k - 2] in ORDER_VERB_WORDS)
+        end = next((j for j in range(k + 1, len(words)) if words[j] in PUNCT or words[j] in ("and", "then")), len(words))
+        if words[k + 1:k + 2] and words[k + 1] in _BACK_PARTICLES and words[k + 2:k + 3] and words[k + 2] in _DESTINATIONS:
+            notes.append(f"'back {words[k + 1]}' read as 'back'")
+            return out[:k + 1] + back_before_a_destination(out[k + 2:], notes)
+        if verb and words[k - 1] != "put" and k + 1 < end and words[k + 1] not in _DESTINATIONS \
+                and any(x in _DESTINATIONS for x in words[k + 2:end]):
+            notes.append("'back' before what is brought and where it goes: where it goes says it")
+            return out[:k] + back_before_a_destination(out[k + 1:], notes)
+    return out
+
+
+#: who an order may be said to before its verb ("you all slice up the cornbread", "you two
+#: carry the table"): the robots asked, no part of what they are asked
+_YOU_ALL = {"all", "two", "both", "guys", "lot", "lads", "folks", "robots"}
+#: what an order said to someone may open after: the start, a clause mark, a joiner
+_ORDER_OPENS = set(PUNCT) | {"and", "then", "now"}
+
+
+def you_before_an_order(words: list[str], notes: list[str]) -> list[str]:
+    """ "Y'all slice up that cornbread", "you tote it to the feed bin" (Southern US and
+    Appalachian English, and anyone giving an order to a group): "you" (with "all", "two", ...)
+    opening a clause before a verb of the lexicon says who is asked, and is left out, as an
+    order to the robots is read anyway."""
+    out: list[str] = []
+    k = 0
+    while k < len(words):
+        n = 2 if words[k:k + 1] == ["you"] and k + 1 < len(words) and words[k + 1] in _YOU_ALL else 1
+        if words[k] == "you" and (not out or out[-1] in _ORDER_OPENS) and k + n < len(words) \
+                and words[k + n] in ORDER_VERB_WORDS:
+            notes.append(f"'{' '.join(words[k:k + n])}' before an order says who is asked")
+            k += n
+            continue
+        out.append(words[k])
         k += 1
     return out
 

@@ -113,23 +113,45 @@ FAMILY = KIN | {"father", "sister", "brother", "maid", "madam", "neighbour", "ne
 OTHERS_OPENERS = (("will",), ("shall",), ("is", "going", "to"), ("is", "about", "to"))
 
 
-def _other_person(words: tuple[str, ...]) -> int:
+#: what another person can or will do, said as the purpose of an order ("so he can hear himself
+#: think", "so Virgil can watch his ballgame", "so he'll take them with his dinner")
+PURPOSE_MODALS = ("can", "could", "will", "would")
+
+
+def people_named(command: str, world: dict) -> frozenset[str]:
+    """The names of people in a command ("Virgil", "Dusty"): words written with a capital inside a
+    sentence (any first word has one) that name nothing of the home, no robot or team ("so Bertie
+    can get the plate out": Bertie is asked to) and are no word of the reader."""
+    content = _content(world)
+    robots = {w for key in ("robots", "teams") for r in world.get(key) or {} for w in re.split(r"[\s_-]+", str(r).lower())}
+    said = re.findall(r"(?<=[a-z0-9,;:'\u2019]\s)[A-Z][a-z]+", command)
+    return frozenset(w for w in (x.lower() for x in said)
+                     if not content(w) and w not in _PHRASE_WORDS and w not in FUNCTION_WORDS and w not in robots)
+
+
+def _other_person(words: tuple[str, ...], people: frozenset[str] = frozenset()) -> int:
     """How many words of a clause's opening name another person (:data:`OTHER_PEOPLE`, "my
-    wife", "madam"), 0 if none."""
-    if words[:1] and (words[0] in OTHER_PEOPLE or words[0] in FAMILY):
+    wife", "madam", a name of :func:`people_named`), 0 if none."""
+    if words[:1] and (words[0] in OTHER_PEOPLE or words[0] in FAMILY or words[0] in people):
         return 1
     return 2 if len(words) > 1 and words[0] in ("my", "our", "the") and words[1] in FAMILY else 0
 
 
-def speaker_doing(words: tuple[str, ...]) -> bool:
+def speaker_doing(words: tuple[str, ...], people: frozenset[str] = frozenset()) -> bool:
     """Whether a clause says what the speaker, or another person (:data:`OTHERS_OPENERS`), will
     do ("I'll grab the milk myself", "she'll make the sabzi later"): it opens with
     :data:`SPEAKER_OPENERS`, its verb is no wish (:data:`WISH_VERBS`) and it has no negation or
     exclusivity ("I'll not ...", "I'll only ..."), which would bear on what the robots do. A wish
     verb taking a pronoun and then how or when the speaker uses it ("I'll have it with my tea",
-    "we'll have them for supper") is the speaker's doing too: "it" is what the order is about."""
-    who = _other_person(words)
+    "we'll have them for supper") is the speaker's doing too: "it" is what the order is about.
+    What another person can or will do, as the purpose of the order ("so he can hear himself
+    think": :data:`PURPOSE_MODALS`), is theirs too. ``people``: the names of :func:`people_named`."""
+    who = _other_person(words, people)
     openers = [tuple(words[:who]) + o for o in OTHERS_OPENERS] if who else []
+    if words[:1] == ("so",):
+        k = 2 if words[1:2] == ("that",) else 1
+        them = _other_person(words[k:], people)
+        openers += [tuple(words[:k + them]) + (m,) for m in PURPOSE_MODALS] if them else []
     for opener in list(SPEAKER_OPENERS + PURPOSE_OPENERS) + openers:
         if words[:len(opener)] == opener and len(words) > len(opener):
             rest = words[len(opener):]
@@ -137,7 +159,9 @@ def speaker_doing(words: tuple[str, ...]) -> bool:
                 return False
             using = len(rest) > 3 and rest[0] in ("have", "take") and rest[1] in ("it", "them") \
                 and rest[2] in USE_LINKS
-            return rest[0] not in WISH_VERBS or using
+            if rest[0] not in WISH_VERBS or using:
+                return True
+            break   # "I'll need it for supper": a wish, which may still be what the order is for
     return speaker_needing(words) or speaker_busy(words)
 
 
@@ -213,7 +237,7 @@ _NEEDED_WHEN = frozenset({"later", "on", "for", "in", "the", "a", "bit", "while"
 _PARENTHESES = re.compile(r"\s[-\u2010-\u2015]+\s|[\u2013\u2014\u2015()\[\]]")
 
 
-def _purposes_apart(words: list[str]) -> list[str]:
+def _purposes_apart(words: list[str], people: frozenset[str] = frozenset()) -> list[str]:
     """The words with a comma before a purpose that says what the speaker will do ("... so I
     can mend it": :data:`PURPOSE_OPENERS`), and before "otherwise", so that each is a clause of
     its own (what "otherwise" opens is judged there: :func:`prediction`)."""
@@ -223,7 +247,7 @@ def _purposes_apart(words: list[str]) -> list[str]:
             out.append(",")
         if w == "so" and out and out[-1] not in CLAUSE_MARKS:
             end = next((j for j in range(k, len(words)) if words[j] in CLAUSE_MARKS), len(words))
-            if speaker_doing(tuple(words[k:end])):
+            if speaker_doing(tuple(words[k:end]), people):
                 out.append(",")
         out.append(w)
     return out
@@ -430,7 +454,8 @@ def without_asides(command: str, world: dict) -> Trimmed | None:
     thing already is (:func:`pipflow.household.language.restated.restates_location`), or None
     when it has none (or nothing else). Dashes and brackets set a clause off as commas do
     ("throw the fish away - it smells off - and ..."). A first clause is never a restatement."""
-    words = _purposes_apart(words_of(_PARENTHESES.sub(" , ", command)))
+    people = people_named(command, world)
+    words = _purposes_apart(words_of(_PARENTHESES.sub(" , ", command)), people)
     content = _content(world)
     parts = clauses(words, CLAUSE_MARKS)
     words, parts, topic = _topic_restated(words, parts, world)
@@ -441,7 +466,7 @@ def without_asides(command: str, world: dict) -> Trimmed | None:
             or (c is parts[0] and is_opener(c.words))]   # "Two things: ...", "Quick one, ..."
     if len(parts) > 1 and parts[-1] not in free and signature(parts[-2].words, parts[-1].words):
         free.append(parts[-1])   # "Regards, Tom": the writer's name
-    own = [c for c in parts if c not in free and speaker_doing(c.words)]
+    own = [c for c in parts if c not in free and speaker_doing(c.words, people)]
     known = [(c, restates_location(c.words, [b.words for b in parts[:k]], world)) for k, c in enumerate(parts)
              if k and c not in free and c not in own]
     known = [(c, what) for c, what in known if what] + topic

@@ -32,10 +32,10 @@ from pipflow.household.language.names import (first_words, longest_name, named_b
 from pipflow.household.language.people import KIN, owners, owners_before_names, own_as_owned, pronouns_as_owners
 from pipflow.household.language.retag import (act_before_noun, copula_dropped, demonstratives, elided_it_is, left_lying,
                                               located, restated_order, without_hedges)
-from pipflow.household.language.rewrites import (caused, closed_again, closed_back, given, heat_purpose,
+from pipflow.household.language.rewrites import (back_before_a_destination, caused, closed_again, closed_back, given, heat_purpose,
                                                  covered_in, instead_closing, measures, spoiling_as_reason, or_under_negation, particles, same_for,
                                                  so_before_an_order, still_as_a_report, warm_the_place, wherever_they_belong,
-                                                 without_manner)
+                                                 without_manner, you_before_an_order)
 from pipflow.household.language.narrowed import just_as_only, narrowed_by_only
 from pipflow.household.language.ones import one_as_kind
 from pipflow.household.language.romance import adjective_after, of_as_where
@@ -160,6 +160,7 @@ def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: l
     words = owners_before_names(pronouns_as_owners(own_as_owned(words, world, notes), world, notes), world, notes)
     words = so_before_an_order(same_for(colloquial(corrected(orders_taken_back(words, index, notes), notes), notes),
                                         notes), notes)
+    words = back_before_a_destination(you_before_an_order(words, notes), notes)
     words = or_under_negation(measures(without_manner(words, notes), index, notes), notes)
     words = heat_purpose(caused(given(me_as_where_the_speaker_is(words, index, notes), notes), notes), notes)
     words = just_as_only(spoiling_as_reason(warm_the_place(instead_closing(words, notes), notes), notes), notes)
@@ -173,7 +174,8 @@ def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: l
                             world, index, notes)
     words = bring_in(open_close_as_switch(particle_before_exception(words, notes), world, index, notes), index, notes)
     words = beside_as_where(named_again(them_as_those(words, index, notes), index, notes), world, index, notes)
-    return particles(words, lambda x: x.isalpha() and not known_word(x, index, vocab), notes)
+    doers = frozenset(str(r).lower() for key in ("robots", "teams") for r in world.get(key) or {})
+    return particles(words, lambda x: x.isalpha() and not known_word(x, index, vocab), notes, doers)
 
 
 #: the most words a phrase and a filler of the lexicon have

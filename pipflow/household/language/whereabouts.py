@@ -17,8 +17,9 @@ POSTURE = {"sat", "sitting", "lying", "stood", "standing", "settled", "here", "t
            "over", "back", "all", "comfy", "down", "up", "curled"}
 #: prepositions of where the speaker is
 AT = {"in", "on", "at", "by", "beside", "next"}
-#: what may come between the preposition and the place
-DETERMINERS = {"my", "the", "our", "to"}
+#: what may come between the preposition and the place ("to him in his easy chair": a third
+#: person's own place)
+DETERMINERS = {"my", "the", "our", "to", "his", "her", "their"}
 #: verbs that take "me" as where the thing goes
 BRING = {"bring", "fetch", "get", "hand", "pass", "carry"}
 

@@ -9,7 +9,7 @@ from lark.exceptions import UnexpectedInput
 
 from pipflow.errors import TranslationError
 from pipflow.warehouse.language.forest import failure, keywords, said, without
-from pipflow.warehouse.language.goals import Choice, quote
+from pipflow.warehouse.language.goals import Choice, leaving_out_what_stays, quote
 from pipflow.warehouse.language.lexicon import Lexed, Lexicon
 from pipflow.warehouse.language.readings import one_meaning
 from pipflow.warehouse.language.robots import RobotSelector
@@ -234,11 +234,13 @@ def _complaints(reader: SentenceReader, observed: list[tuple[str, list[str]]]) -
 
 def _about_the_complaint(reader: SentenceReader, observed: list[tuple[str, list[str]]]) -> None:
     """After "P has too many X", a statement that does not name P ("move 2 to Q": from P, or from
-    anywhere?) is refused: the complaint suggests P, the words do not say it, nothing is guessed."""
+    anywhere?) is refused: the complaint suggests P, the words do not say it, nothing is guessed.
+    A statement that says where its units come from ("move the cement from the mezz to bay three,
+    bay one is too full") guesses nothing."""
     words, places = observed[-1]
     for st in reader.statements:
         said = set((st.get("places") or {}).get("names") or []) | set((st.get("from") or {}).get("names") or [])
-        if not said & set(places):
+        if not said & set(places) and not (st.get("from") or {}).get("names"):
             raise TranslationError(f"{quote(st['words'])} after {quote(words)}: from there, or from "
                                    f"anywhere? say where the units come from")
 
@@ -266,7 +268,9 @@ def emptied_last(statements: list[dict]) -> list[dict]:
     """ "Empty aisle 1. Everything on it goes to aisle 2.": what leaves an emptied place, said in a
     later sentence, goes first and the emptying after it (else the move would find the place
     already empty and move nothing: a misreading). The sentence reader does the same inside one
-    sentence (:meth:`RuleScope.finish`)."""
+    sentence (:meth:`RuleScope.finish`). What the emptying leaves out, the move of everything on it
+    leaves out too ("Empty the kaai except the pigment. Everything to the hoogbouw": the pigment
+    stays; it was moved with the rest, a misreading)."""
     out = list(statements)
     for st in [s for s in statements if s["op"] == "empty"]:
         emptied = set(st["places"].get("names") or [])
@@ -276,6 +280,7 @@ def emptied_last(statements: list[dict]) -> list[dict]:
         later = [t for t in out[k + 1:] if t["op"] == "transfer" and t.get("to")
                  and {"all", "all_held"} & set(t.get("amount") or {})
                  and emptied & set((t.get("from") or {}).get("names") or [])]
+        later = leaving_out_what_stays(st, later, out)
         if later:
             out.remove(st)
             out.insert(out.index(later[-1]) + 1, st)

@@ -53,6 +53,23 @@ NEEDING_VERBS = {"need", "needs"}
 FINAL_WORDS = {"total", "all", "altogether", "final", "overall"}
 
 
+def leaving_out_what_stays(empty: dict, moves: list[dict], statements: list[dict]) -> list[dict]:
+    """The moves of everything on an emptied place ("Empty the kaai except the pigment, everything
+    to the hoogbouw"), with what the emptying leaves out left out of them too, replaced in
+    ``statements`` as well: the pigment stays (it was moved with the rest, a misreading). A move of
+    named things keeps its names."""
+    kept = (empty.get("items") or {}).get("except") or []
+    out: list[dict] = []
+    for move in moves:
+        items = move.get("items") or {}
+        if kept and items.get("all"):
+            narrowed = {**move, "items": {**items, "except": list(dict.fromkeys([*(items.get("except") or []), *kept]))}}
+            statements[statements.index(move)] = narrowed
+            move = narrowed
+        out.append(move)
+    return out
+
+
 @dataclass
 class ClauseParts:
     """What a goal clause says, before its rule's method reads the rest: the rule (``kind``), the

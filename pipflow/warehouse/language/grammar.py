@@ -35,6 +35,8 @@ sep.-1: "," | "and" | "," "and" | "but" | "," "but" | "while" | "," "while" | "w
    | "," "plus" | "plus" | "," "however" ","? | "," "just" | "but" "just" | "," "but" "just" | "and" "just"
 
 ?part: goal | rule | aside | tail | addressed | scoped_goal
+     // "make sure the tuggers stay away from the cage": a rule asked to hold, as said without it
+     | ("make" "sure" | "ensure") that? rule                     -> ensured_rule
 
 aside: "instead" "of" NUM | "rather" "than" NUM
      | "now" | "right" "now" | "right" "away" | "tonight" | "at" "once" | "for" "now"
@@ -506,7 +508,10 @@ as_is: "where" ("it" | "they") ("is" | "are") | ("as" | "how") ("it" | "they") (
 except_places: ("except" | "but" "not" | "apart" "from" | "other" "than" | "excluding" | "not") except_what? ("up" | "down" | "over" | "out")? ("on" | "in" | "at" | "from") places
              | ("except" | "but" "not" | "excluding" | "not") from places
 // "P is overstocked on X", "P's getting a bit crowded", "P is looking bare": a complaint, no count
-crowded: crowdbe crowdhow? crowdstate
+crowded: crowdbe crowdhow? crowdstate "already"?
+       // "bay one getting too full", "bay one too full already": "is" left out, as said in Fiji,
+       // Singapore and Nigerian English
+       | "getting"? crowdhow crowdstate "already"?
 crowdbe: "is" | "s" | "looks" | "is" "looking" | "s" "looking" | "is" "getting" | "s" "getting"
 crowdhow: "too" | "a" "bit" | "very" | "rather" | "quite" | "really" | "way"
 crowdstate: "overstocked" | "full" | "crowded" | "cramped" | "packed" | "rammed" | "overloaded" | "bare"

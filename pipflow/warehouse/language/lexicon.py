@@ -17,10 +17,10 @@ from typing import Any, Callable, Collection
 from lark import Token
 
 from pipflow.errors import InputError, Refusal, TranslationError
-from pipflow.language.asides import (ADDRESSEES, CLOSERS, FUNCTION_WORDS, GREETINGS, INTERJECTIONS, OPERATIVE,
-                                     SUBJECTS, Clause, clauses, content_free, is_opener, leading_adjunct,
-                                     leading_reason, said_talk, signature, trailing_adjunct, trailing_thanks,
-                                     unmarked_statement)
+from pipflow.language.asides import (ADDRESSEES, BACK_REFERENCES, CLOSERS, FUNCTION_WORDS, GREETINGS, INTERJECTIONS,
+                                     OPERATIVE, SUBJECTS, TALK, Clause, clauses, content_free, is_opener, leading_adjunct,
+                                     leading_reason, restates_what_stays, said_talk, signature, trailing_adjunct,
+                                     trailing_thanks, unmarked_statement)
 from pipflow.language.asterisk import star_corrections
 from pipflow.language.characters import (accents_folded, declared_spellings, non_ascii_words, refuse_unread, turkish_i,
                                          without_expressions)
@@ -116,7 +116,9 @@ SPELLINGS = {"shud": "should", "shld": "should", "u": "you", "r": "are", "wont":
              # Trinidadian English "doh" (don't: "doh touch the chiller"), "jus" (just)
              "doh": "dont", "jus": "just",
              # Shona "aiwa" (no: "10, aiwa sorry, 8"), said in Zimbabwean English
-             "aiwa": "no"}
+             "aiwa": "no",
+             # Fijian "sega" (no: "5 more, sega, make it 7"), said in Fiji English
+             "sega": "no"}
 #: Scots spellings of the grammar's own words (shared with the household reader: "shift 5 corks fae
 #: pend tae steading", "take 2 aff vault", "dinnae touch it"), read only where the word is no word
 #: of the world's names
@@ -381,6 +383,15 @@ IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before
           # as the grammar has it; "the AMRs are not to be used" it reads as said)
           (re.compile(r"\bnone\s+of\s+((?:the\s+)?[a-z_ ]+?)\s+(?:are|is)\s+to\s+be\s+used\b", re.IGNORECASE),
            r"dont use \1"),
+          # "all the popok to bulk, except the one in pickface": "the one" left out of a move is what
+          # lies there (a pallet, a pile), as "the ones in P" is; "except one in P" counts one
+          (re.compile(r"\b(except(?:\s+for)?|but\s+not|apart\s+from|other\s+than|excluding)\s+the\s+one\s+"
+                      r"(?=(?:in|on|at|from)\b)", re.IGNORECASE), r"\1 the ones "),
+          # "All the kava up to the mezz, every bag": "every" and a unit said again after "all" in the
+          # same sentence restates it (after a count it would contradict it, and is left as said)
+          (re.compile(r"(\b(?:all|everything)\b[^.;!?\n\d]*?),\s*every\s+(?:single\s+|last\s+)?(?:one|unit|piece|"
+                      + "|".join(sorted(PACKAGING_WORDS | CONTAINERS, key=len, reverse=True))
+                      + r")\b(?=\s*(?:[.,;!?]|$))", re.IGNORECASE), r"\1"),
           # "fill P with X, as far as it goes": to the limit, which "fill" says
           (re.compile(r",?\s*\bas\s+far\s+as\s+(?:it|they)\s+(?:goes|go|will\s+go|can\s+go)\b", re.IGNORECASE), ""),
           # "fill P up with X, as many as it'll take": the limit again, said after a fill only (elsewhere
@@ -408,6 +419,10 @@ IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before
           (re.compile(r"\b(and|,)\s+(?:the\s+)?remaining\s+(?=(?:to|into|onto|in|on|at)\b)", re.IGNORECASE), r"\1 the rest "),
           # "just now", "now now" closing a clause (South African: later, soon): a time, as "now" is
           (re.compile(r"\b(?:just|now)\s+now\b(?=\s*(?:[.,;:!?]|$))", re.IGNORECASE), "now"),
+          # "one time" closing a clause, or before the one it is said to (Fiji, Nigerian and Ghanaian
+          # English: at once, "empty the wharf door one time bro"): a time, as "now" is
+          (re.compile(r"\bone\s+time\b(?=(?:\s+(?:" + "|".join(sorted(CLOSERS)) + r"))?\s*(?:[.,;:!?]|$))",
+                      re.IGNORECASE), "now"),
           # "at the minute", "at the mo" (British): now
           (re.compile(r"\bat\s+(?:the\s+)?(?:minute|mo)\b", re.IGNORECASE), "now"),
           # "at the very least 3": at least ("at the very most": at most)
@@ -642,8 +657,10 @@ SUPERLATIVES = {"strongest": "max", "biggest": "max", "largest": "max", "heavies
                 "weakest": "min", "smallest": "min", "lightest": "min"}
 #: contractions whose "'s" is "is" ("it's"), not a possessive
 IS_CONTRACTIONS = {"it", "that", "there", "what", "whatever", "here", "who", "he", "she"}
+#: words a name of the talk may follow ("the Lau guy", "for the Kadavu boat", "in Koro")
+_BEFORE_A_NAME = frozenset({"the", "a", "an", "for", "to", "in", "from", "at", "of", "on", "with", "by"})
 #: what a name, kind word ("\0") or count ("\1") stands as in the words a clause is judged on
-_HELD = ("\0", "\1")
+_HELD = ("\0", "\1", "\3", "\4")
 
 
 def _one_of_these(toks: list[Tok], k: int) -> bool:
@@ -1373,9 +1390,32 @@ def _touch_alone(toks: list[Tok], k: int) -> bool:
     return word(start, "keep", "leave")
 
 
+#: words of a bound that a count taken back may be said with again ("at least 6, no wait, at least 8")
+_BOUND_SAID_AGAIN = frozenset({"at", "least", "most", "no", "not", "more", "less", "fewer", "than", "max", "maximum",
+                               "min", "minimum", "up", "to"})
+
+
+def _bound_before(toks: list[Tok], k: int) -> list[str]:
+    """The words of a bound said right before the count at ``k`` ("no fewer than"), all of them."""
+    m = k
+    while m > 0 and toks[m - 1].kind == "word" and toks[m - 1].value in _BOUND_SAID_AGAIN:
+        m -= 1
+    return [str(x.value) for x in toks[m:k]]
+
+
+def _clause_follows(toks: list[Tok], k: int) -> bool:
+    """Whether at least two words follow ``k`` before the next mark: after a comma an interjection
+    is set off only before a clause ("..., ah no wait, 8"); "..., pls fix" stays one clause of talk."""
+    n = 0
+    while k < len(toks) and toks[k].kind != "punct":
+        n, k = n + 1, k + 1
+    return n >= 2
+
+
 def corrected_later(toks: list[Tok]) -> list[Tok]:
-    """A count taken back at the end of its sentence ("Move 2 X from P to Q, no wait, make that 3";
-    "..., sorry, I meant 3"), or in a sentence of its own that says nothing else ("8 lager to
+    """A count taken back at the end of its sentence or of a clause ("Move 2 X from P to Q, no wait,
+    make that 3"; "..., sorry, I meant 3"; "at least 6 X, no wait, at least 8, ..."), or in a
+    sentence of its own that says nothing else ("8 lager to
     dispatch.. yeah nah make it 9"): the one count of the sentence taken back becomes the new one,
     and the taking back is no part of the order. Where that sentence has several counts, which one
     is taken back is not said: the words stay, and the command is refused on them."""
@@ -1401,6 +1441,12 @@ def corrected_later(toks: list[Tok]) -> list[Tok]:
             if got == list(words):
                 restated, j = True, j + len(words)
                 break
+        # "at least 6 X, no wait, at least 8": the bound said again with the new count; it must be
+        # the old count's, word for word (checked below), and the bound stays the old one's
+        bound = j
+        while j < len(out) and out[j].kind == "word" and out[j].value in _BOUND_SAID_AGAIN:
+            j += 1
+        bound_words = [str(x.value) for x in out[bound:j]]
         if not (took_back or restated) or j >= len(out) or out[j].kind != "num":
             k += 1
             continue
@@ -1408,7 +1454,9 @@ def corrected_later(toks: list[Tok]) -> list[Tok]:
         end = j + 1
         if end < len(out) and out[end].kind == "name" and out[end].of == "product":
             end += 1
-        if end < len(out) and not (out[end].kind == "punct" and out[end].value in ends):
+        # the sentence ends there, or a clause of its own follows ("..., at least 8, the Gau order got
+        # bigger"), judged as any clause is
+        if end < len(out) and not (out[end].kind == "punct" and out[end].value in ends | {","}):
             k += 1
             continue
         start = k
@@ -1418,7 +1466,8 @@ def corrected_later(toks: list[Tok]) -> list[Tok]:
             start -= 1
         counts = [m for m in range(start, k) if out[m].kind == "num"]
         named = out[j + 1] if j + 1 < end else None
-        if len(counts) != 1 or (named is not None and not (
+        other_bound = bool(bound_words) and _bound_before(out, counts[0]) != bound_words if counts else False
+        if len(counts) != 1 or other_bound or (named is not None and not (
                 counts[0] + 1 < k and out[counts[0] + 1].kind == "name" and out[counts[0] + 1].value == named.value)):
             k += 1
             continue
@@ -1722,16 +1771,18 @@ class Lexicon:
         return toks
 
     def _interjection_set_off(self, toks: list[Tok]) -> list[Tok]:
-        """The tokens with a comma after an interjection that opens a sentence without one ("davai
-        komplektovka 4 more smes", "yalla move 3 X ..."): as "Davai, ..." it is talk, set aside as
-        ever. Only a word of no other language's talk that is no English word, or a sound
+        """The tokens with a comma after an interjection that opens a sentence or a clause of two
+        words or more without one ("davai komplektovka 4 more smes", "yalla move 3 X ...", "..., ah no
+        wait, 8", "..., isa that one's wheel still squeaking"): as "Davai, ..." it is talk, set aside
+        as ever. Only a word of no other language's talk that is no English word, or a sound
         (:data:`SOUNDS`: "Ah please add ..."; "night robots", "no wait" keep their readings), no
         greeting (said with its addressee: "morning team"), no word of the grammar, no verb and no
         operative word."""
         out: list[Tok] = []
         for k, t in enumerate(toks):
             out.append(t)
-            opens = k == 0 or (toks[k - 1].kind == "punct" and toks[k - 1].value in (".", ";", "!", "?", ":"))
+            opens = k == 0 or (toks[k - 1].kind == "punct" and toks[k - 1].value in (".", ";", "!", "?", ":")) \
+                or (toks[k - 1].kind == "punct" and toks[k - 1].value == "," and _clause_follows(toks, k + 1))
             word = str(t.value)
             if (opens and t.kind == "word" and word in INTERJECTIONS and word not in GREETINGS
                     and (not common_word(word) or word in SOUNDS)
@@ -1778,6 +1829,40 @@ class Lexicon:
         if repaired is not None and repaired not in FUNCTION_WORDS:
             return repaired not in ASIDE_ONLY   # "tmr": tomorrow
         return self._near_name(word)
+
+    def _free_clauses(self, parts: list[Clause], content: Callable[[str], bool]) -> list[Clause]:
+        """The clauses of a sentence that carry nothing an order needs (:meth:`_clauses`)."""
+        def names(w: str) -> bool:
+            return w in _HELD or self.names_world(w)
+        free = [c for c in parts if content_free(c.words, content, names, reports=True, thing=self._names_goods)]
+        # what goods are like ("Tea chests are heavy, use only ... for them") is kept where a later
+        # clause points back: what it names is what "them" means (asides.is_condition)
+        free = [c for c in free if "\0" not in c.words or not any(
+            w in BACK_REFERENCES for later in parts[parts.index(c) + 1:] for w in later.words)]
+        free += [c for k, c in enumerate(parts) if k and c not in free
+                 and restates_what_stays(parts[k - 1].words, c.words, names)]
+        free += leading_reason(parts, free, lambda w: w == "\1" or w in NUMBER_WORDS, content)
+        if len(parts) > 1 and parts[-1] not in free and signature(parts[-2].words, parts[-1].words):
+            free.append(parts[-1])   # "Regards, Ramesh": the writer's name
+        return free
+
+    def _proper_name(self, toks: list[Tok], k: int) -> bool:
+        """Whether the word at ``k`` is a name of the talk ("the Lau guy", "for the Kadavu boat", "in
+        Koro"): written with a capital after an article or a preposition, no word of English, of this
+        reader or of talk, and no name of the world (those are names). In a clause judged for
+        content it is no content: never a slip of a grammar word ("Lau" is no "lay"), a name of the
+        world or a count. A name said alone ("..., Hornet") is someone addressed, and is judged so."""
+        t, before = toks[k], toks[k - 1] if k else None
+        word = t.text.lower()   # as written: a repair may have made it a grammar word ("Lau" as "lay")
+        return before is not None and before.kind == "word" and before.text.lower() in _BEFORE_A_NAME \
+            and t.text[:1].isupper() and t.text[1:].islower() and word.isalpha() and not common_word(word) \
+            and word not in self.keywords and word not in TALK and not self.names_world(word)
+
+    @staticmethod
+    def _names_goods(word: str) -> bool:
+        """Whether a word of a clause (:meth:`_clauses`) names goods: a name held as "\0" (a robot's
+        is "\3", a place's "\4": "bay 1 is wet, move the rice to bay 2" may mean from bay 1)."""
+        return word == "\0"
 
     def _near_name(self, word: str) -> bool:
         """Whether a word is within a typo's reach of a word of the world's names and may be a slip
@@ -1831,8 +1916,9 @@ class Lexicon:
         marks = {",", ":", "(", ")"}
         # the words as written (a greeting's "lads" is no misspelt "loads"); a word that a repair
         # would make a grammar word is content (:meth:`content`)
-        # a name, kind word or count stands as "\0" (a count as "\1": a reason may name places,
-        # never hold a count: asides.leading_reason); both are content by themselves; a number that
+        # a name, kind word or count stands as "\0" (a robot's name as "\3", a place's as "\4",
+        # which what goods are like may not name: asides.is_condition; a count as "\1": a reason
+        # may name places, never hold a count: asides.leading_reason); all are content by themselves; a number that
         # labels something of the talk ("truck 14": :meth:`_label`) stands as "\2", no content
         # (a kind word keeps its text: "good" of goods opens "Good morning team"; it is content by
         # the names test all the same)
@@ -1842,14 +1928,16 @@ class Lexicon:
                   if t.kind in ("word", "kind") else
                   "oclock" if t.kind == "num" and _clock(cur, k) else "\2" if t.kind == "num" and self._label(cur, k)
                   else "one" if t.kind == "num" and _one_of_these(cur, k)
-                  else "\1" if t.kind == "num" else "\0")
+                  else "\1" if t.kind == "num" else "\3" if t.kind == "name" and t.of == "robot"
+                  else "\4" if t.kind == "name" and t.of == "shelf" else "\0")
                  for k, t in enumerate(cur)]
         parts = clauses(words, marks)
-        free = [c for c in parts if content_free(c.words, lambda w: w in _HELD or self.content(w),
-                                                 lambda w: w in _HELD or self.names_world(w), reports=True)]
-        free += leading_reason(parts, free, lambda w: w == "\1" or w in NUMBER_WORDS)
-        if len(parts) > 1 and parts[-1] not in free and signature(parts[-2].words, parts[-1].words):
-            free.append(parts[-1])   # "Regards, Ramesh": the writer's name
+        # names of the talk ("the Lau guy") are never content, whatever a repair made of them
+        talk_names = {words[k] for k in range(len(cur)) if cur[k].kind == "word" and self._proper_name(cur, k)}
+
+        def content(w: str) -> bool:
+            return w in _HELD or (w not in talk_names and self.content(w))
+        free = self._free_clauses(parts, content)
         # "... to the dray bay ta", "... over to the shed would ya, pissing down", "take 3 X out of
         # P pá, they ...": a thanks, a closing word or a request tag closing a clause that is no
         # talk, without a comma
@@ -1869,8 +1957,7 @@ class Lexicon:
             clause = list(c.words[:len(c.words) - closing.get(c, 0)])
             # "For the Auchan the cais takes ...", "For the inventory: ...": a purpose said first
             # (asides.leading_adjunct), the whole clause where it is a heading
-            lead = leading_adjunct(clause, lambda w: w in _HELD or self.content(w),
-                                   lambda w: w in _HELD or self.names_world(w))
+            lead = leading_adjunct(clause, content, lambda w: w in _HELD or self.names_world(w))
             if lead == len(clause):
                 free.append(c)
                 continue
@@ -1886,7 +1973,7 @@ class Lexicon:
                 clause = clause[:-n]
             # an adjunct of time or purpose may hold words of the grammar, never a word of a name
             # ("for the dispatch" of dispatch-dock, though "dispatch" is a verb of the grammar too)
-            n = trailing_adjunct(clause, lambda w: w in _HELD or (w not in TIMES_OF_DAY and self.content(w)),
+            n = trailing_adjunct(clause, lambda w: w not in TIMES_OF_DAY and content(w),
                                  lambda w: w in _HELD or (w not in TIMES_OF_DAY and (
                                      self.names_world(w) or (w in self._name_words and w not in FUNCTION_WORDS))))
             if n:

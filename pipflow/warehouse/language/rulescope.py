@@ -11,7 +11,7 @@ from __future__ import annotations
 from lark import Token, Tree
 
 from pipflow.errors import TranslationError
-from pipflow.warehouse.language.goals import Choice, quote
+from pipflow.warehouse.language.goals import Choice, leaving_out_what_stays, quote
 
 #: "do", "help with" or "work on" a pronoun is the task instead
 ITEM_VERBS = {"move", "moves", "carry", "carries", "touch", "touches", "take", "takes", "deliver", "delivers",
@@ -174,6 +174,7 @@ class RuleScope:
                 continue
             later = [t for t in self.statements[k + 1:] if t["op"] == "transfer"
                      and set((t.get("from") or {}).get("names") or []) & set(st["places"]["names"])]
+            later = leaving_out_what_stays(st, later, self.statements)
             if later:
                 self.statements.remove(st)
                 at = self.statements.index(later[-1]) + 1

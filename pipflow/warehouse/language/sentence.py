@@ -757,6 +757,8 @@ class SentenceReader(GoalRules, TailRules, RuleScope, Interpreter):
             self.visit(node)
         elif d.startswith("rule_"):
             self.rule(node)
+        elif d == "ensured_rule":   # "make sure the tuggers stay away from P": the rule itself
+            self.part(next(c for c in node.children if isinstance(c, Tree) and c.data.startswith("rule_")))
         elif d == "aside":
             return
         elif d == "addressed_appos":
