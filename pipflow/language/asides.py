@@ -1061,12 +1061,13 @@ _GRADING = frozenset({"too", "very", "so", "quite", "really", "bit", "a", "prope
 def is_condition(words: Iterable[str], content: Callable[[str], bool], names: Callable[[str], bool],
                  thing: Callable[[str], bool]) -> bool:
     """ "..., the tins are heavy", "..., minyak is heavy", "..., heavy", "..., formula is heavy":
-    what goods (or a place) are like (:data:`CONDITIONS`), said as the reason for an order or a
-    rule; it orders nothing, so it is set aside even where it names a thing of the world. Only its
-    subject may name one (``thing``: a place or a product, never a robot: "the forklift is
-    heavy" may be a rule), in words of no grammar ("keep them cold" is an order) with "be" and words
-    grading the condition; after the condition at most three words of talk ("heavy buggers"). An
-    operative word, a number, a word of wanting or a word for robots keeps it in."""
+    what goods are like (:data:`CONDITIONS`), said as the reason for an order or a rule; it orders
+    nothing, so it is set aside even where it names a thing of the world. Only its subject may name
+    one, and only what ``thing`` lets a condition be said of (the warehouse: goods; never a robot,
+    "the forklift is dirty" may be a rule, nor a place, "bay 1 is wet, move the rice" may say where
+    from), in words of no grammar ("keep them dry" is an order) with "be" and words grading the
+    condition; after the condition at most three words of talk ("heavy buggers"). An operative word,
+    a number, a word of wanting or a word for robots keeps it in."""
     ws = [w for w in words if w]
     k = next((i for i, w in enumerate(ws) if w in CONDITIONS and not names(w)), None)
     if k is None or len(ws) - k > 4:
@@ -1091,8 +1092,8 @@ def content_free(words: Iterable[str], content: Callable[[str], bool],
     clause that addresses one by name (:func:`addressee`) is talk in a domain whose orders are for
     the team; addressed to a name the world lacks, it is never talk: a robot that is not there is
     asked to do it, and the command must be refused, not given to the robots there are.
-    ``thing(word)`` (optional): whether a word names a place or a product, which a condition may
-    be said of (:func:`is_condition`)."""
+    ``thing(word)`` (optional): whether a word names what a condition may be said of and still be
+    set aside (:func:`is_condition`)."""
     ws = [w for w in words if w]
     ws = [w for k, w in enumerate(ws) if not duration_at(ws, k)]   # "in 20 minutes": how long, no count
     if not ws:

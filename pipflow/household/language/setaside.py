@@ -118,11 +118,11 @@ OTHERS_OPENERS = (("will",), ("shall",), ("is", "going", "to"), ("is", "about", 
 PURPOSE_MODALS = ("can", "could", "will", "would")
 
 
-def people_named(command: str, world: dict) -> frozenset[str]:
+def people_named(command: str, world: dict, content: Callable[[str], bool]) -> frozenset[str]:
     """The names of people in a command ("Virgil", "Dusty"): words written with a capital inside a
-    sentence (any first word has one) that name nothing of the home, no robot or team ("so Bertie
-    can get the plate out": Bertie is asked to) and are no word of the reader."""
-    content = _content(world)
+    sentence (any first word has one) that name nothing of the home (``content``: :func:`_content`
+    of the world), no robot or team ("so Bertie can get the plate out": Bertie is asked to) and
+    are no word of the reader."""
     robots = {w for key in ("robots", "teams") for r in world.get(key) or {} for w in re.split(r"[\s_-]+", str(r).lower())}
     said = re.findall(r"(?<=[a-z0-9,;:'\u2019]\s)[A-Z][a-z]+", command)
     return frozenset(w for w in (x.lower() for x in said)
@@ -454,9 +454,9 @@ def without_asides(command: str, world: dict) -> Trimmed | None:
     thing already is (:func:`pipflow.household.language.restated.restates_location`), or None
     when it has none (or nothing else). Dashes and brackets set a clause off as commas do
     ("throw the fish away - it smells off - and ..."). A first clause is never a restatement."""
-    people = people_named(command, world)
-    words = _purposes_apart(words_of(_PARENTHESES.sub(" , ", command)), people)
     content = _content(world)
+    people = people_named(command, world, content)
+    words = _purposes_apart(words_of(_PARENTHESES.sub(" , ", command)), people)
     parts = clauses(words, CLAUSE_MARKS)
     words, parts, topic = _topic_restated(words, parts, world)
     robots = {str(r).lower() for key in ("robots", "teams") for r in world.get(key) or {}}   # who may be addressed
