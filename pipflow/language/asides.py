@@ -138,8 +138,9 @@ ADDRESSEES = frozenset({"all", "everyone", "everybody", "team", "folks", "guys",
                         "bud", "butt", "butty", "bach",
                         # Scots and northern English ("Morning son", "ta hen"), and the young's "bro"
                         "son", "hen", "sunshine", "bro", "bruv", "dude",
-                        # Nigerian English and Pidgin ("Good morning una": you all; "oga": boss)
-                        "una", "oga", "ogas",
+                        # Nigerian English and Pidgin ("Good morning una": you all; "oga": boss), Guyanese
+                        # and Trinidadian "allyuh" (you all: "Big day today allyuh!")
+                        "una", "oga", "ogas", "allyuh",
                         # Kenyan English and Sheng ("Sawa wasee": OK guys; "mzee": elder, sir)
                         "boss", "wasee", "mzee",
                         # Mexican Spanish ("oye jefe", "gracias muchachos")
@@ -751,6 +752,31 @@ def is_report(words: Iterable[str], names: Callable[[str], bool]) -> bool:
     return not any(_operative_at(ws, k) or names(w) for k, w in enumerate(ws))
 
 
+#: verbs an "-ing" after them may complete ("start loading", "keep going"): an order, no subject
+_ASPECT_VERBS = frozenset({"start", "stop", "keep", "begin", "finish", "continue", "quit", "try", "go", "get",
+                           "avoid", "resume"})
+
+
+def is_bare_report(words: Iterable[str], content: Callable[[str], bool], names: Callable[[str], bool]) -> bool:
+    """ "Saturday rush coming", "customs officer coming to check it", "dem painting the shop floor
+    tomorrow": what is going on, said without "be" as Caribbean, Fiji and Singapore English (and
+    people typing fast) say it. The subject is a pronoun, or one to three words (after an article or
+    demonstrative) that are no content, no name, no function word and nothing operative, then a
+    verb in -ing; no word of the clause names the world or a number, or is operative. The grammar
+    words after the verb describe, as in :func:`is_report`."""
+    ws = [w for w in words if w]
+    k = 1 if ws and ws[0] in DETERMINERS else 0
+    j = next((i for i in range(k, min(len(ws), k + 4)) if ws[i].endswith("ing") and len(ws[i]) > 4), None)
+    if j is None or j == k:
+        return False
+    subject = ws[k:j]
+    pronoun = subject[0] in SUBJECTS and len(subject) == 1 and not k
+    if not pronoun and (subject[0] in _ASPECT_VERBS or any(
+            not w.isalpha() or w in FUNCTION_WORDS or content(w) or near_operative(w) for w in subject)):
+        return False
+    return not any(_operative_at(ws, i) or names(w) for i, w in enumerate(ws))
+
+
 #: words that open a statement said after an order without a comma between them ("... its
 #: starting to bow", "... hes got a flat tyre", "... his forks are playing up", "... theres
 #: customers about"): a subject pronoun (not "it", which is an object as often) or a possessive
@@ -1051,11 +1077,11 @@ def signature(before: Iterable[str], words: Iterable[str]) -> bool:
 CONDITIONS = frozenset({"heavy", "hefty", "fragile", "delicate", "breakable", "awkward", "bulky", "slippery", "wet",
                         "damp", "soaked", "icy", "frozen", "perishable", "flammable", "hazardous", "toxic",
                         "dangerous", "expensive", "pricey", "valuable", "precious", "dusty", "sticky", "leaky",
-                        "leaking", "greasy", "oily", "wobbly", "unstable", "mucky", "muddy"})
+                        "leaking", "greasy", "oily", "wobbly", "unstable", "mucky", "muddy", "dry", "dried"})
 #: words that grade a condition ("too heavy", "proper heavy", "a bit wet", "heavy as")
 _GRADING = frozenset({"too", "very", "so", "quite", "really", "bit", "a", "proper", "real", "super", "pretty",
                       "extra", "dead", "bloody", "damn", "plumb", "kinda", "rather", "way", "little", "well", "still",
-                      "that", "awful", "awfully", "mighty", "right", "wicked"})
+                      "that", "awful", "awfully", "mighty", "right", "wicked", "bone"})   # "bone dry"
 
 
 def is_condition(words: Iterable[str], content: Callable[[str], bool], names: Callable[[str], bool],
@@ -1066,9 +1092,12 @@ def is_condition(words: Iterable[str], content: Callable[[str], bool], names: Ca
     one, and only what ``thing`` lets a condition be said of (the warehouse: goods; never a robot,
     "the forklift is dirty" may be a rule, nor a place, "bay 1 is wet, move the rice" may say where
     from), in words of no grammar ("keep them dry" is an order) with "be" and words grading the
-    condition; after the condition at most three words of talk ("heavy buggers"). An operative word,
-    a number, a word of wanting or a word for robots keeps it in."""
+    condition; after the condition at most three words of talk ("heavy buggers") or where it is so
+    ("it too heavy up there"). An operative word, a number, a word of wanting or a word for robots
+    keeps it in."""
     ws = [w for w in words if w]
+    if len(ws) > 2 and ws[-1] in ("there", "here") and ws[-2] in _WHERE_BEFORE_THERE | {"up", "down", "in", "out"}:
+        ws = ws[:-2]   # "up there": where, no order
     k = next((i for i, w in enumerate(ws) if w in CONDITIONS and not names(w)), None)
     if k is None or len(ws) - k > 4:
         return False
@@ -1109,7 +1138,8 @@ def content_free(words: Iterable[str], content: Callable[[str], bool],
         return True   # its "all" or "team" is who is greeted, no quantifier or robot group
     if names is not None and is_pleasantry(ws, names):
         return True
-    if reports and names is not None and is_report(ws, names) and not _order_opening(ws, content, names):
+    if reports and names is not None and (is_report(ws, names) or is_bare_report(ws, content, names)) \
+            and not _order_opening(ws, content, names):
         return True   # "it is getting serviced": a report, whatever grammar words it uses
     subject = _demonstrative_subject(ws)
     if ws[0] in ATTACHING and not _it_is(ws) and not subject:
@@ -1217,10 +1247,18 @@ def restates_what_stays(before: Iterable[str], words: Iterable[str], names: Call
     stay for picking": a demonstrative and a verb of staying right after a clause that leaves
     something out (:data:`_LEAVING_OUT`) says again that it stays, which the clause before says;
     set aside. After any other clause "that stays" says what stays, and is read or refused as ever.
-    Nothing of the world, no number and no operative word but its demonstrative may be in it."""
+    "Let them stay", "leave those there" (Guyanese "leh dem stay") say it so too. Nothing of the
+    world, no number and no operative word but its demonstrative may be in it."""
     ws, prev = [w for w in words if w], set(before)
+    if not ws or not prev & _LEAVING_OUT:
+        return False
+    told = ws[0] in ("let", "leave") and ws[1:2] and ws[1] in _DEMONSTRATIVES | {"them", "it"}
+    if ws[0] == "leave" and told:   # "leave them (there)": no verb of staying
+        ws = [ws[1], "stay"] + ws[2:]
+    elif told:
+        ws = ws[1:]
     n = 2 if ws[1:2] and ws[1] in _ONES else 1
-    if not ws or ws[0] not in _DEMONSTRATIVES or not prev & _LEAVING_OUT or len(ws) <= n or ws[n] not in _STAYING:
+    if not (ws[0] in _DEMONSTRATIVES or told) or len(ws) <= n or ws[n] not in _STAYING:
         return False
     rest = ws[n + 1:]
     return not any(near_operative(w) or names(w) for w in rest) and (not rest or rest[0] in _STAYING_TAIL)

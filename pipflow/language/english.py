@@ -79,15 +79,26 @@ _SPOKEN = ((re.compile(r"(?<![A-Za-z])['\u2019]em\b", re.IGNORECASE), "them"),
            (re.compile(r"\bain['\u2019]?t\b", re.IGNORECASE), "is not"))
 
 
+#: "'ob", "'is", "'orse" for "hob", "his", "horse" (Cockney, and most of England's speech): the
+#: apostrophe before a vowel marks the dropped h; "'em" (them) is read first (:data:`_SPOKEN`)
+_DROPPED_H = re.compile(r"(?<![A-Za-z0-9'\u2019])['\u2019]([AEIOUaeiou][a-z]*)\b(?!['\u2019](?![A-Za-z]))")
+
+
 def spoken_forms(text: str) -> str:
     """The text with the spoken forms an apostrophe marks written out ("burnin'" -> "burning",
-    "'em" -> "them", "y'all" -> "you all", "ain't" -> "is not"). Only the apostrophe tells
-    them: "in" without one ("cabin", "basin") is never touched."""
+    "'em" -> "them", "'ob" -> "hob", "y'all" -> "you all", "ain't" -> "is not"). Only the
+    apostrophe tells them: "in" without one ("cabin", "basin") and "orse" without one are never
+    touched; the word written out must be common English ("'til" stays)."""
     def g(m: re.Match) -> str:
         word = m.group(1) + "g"
+        return word if common_word(word.lower()) else m.group(0)
+
+    def h(m: re.Match) -> str:
+        said = m.group(1)
+        word = ("H" if said[0].isupper() else "h") + said.lower()
         return word if common_word(word.lower()) else m.group(0)
     if "in'" in text or "in\u2019" in text:
         text = _DROPPED_G.sub(g, text)
     for pattern, written in _SPOKEN:
         text = pattern.sub(written, text)
-    return text
+    return _DROPPED_H.sub(h, text)

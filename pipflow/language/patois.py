@@ -16,15 +16,19 @@ PATOIS = {"di": "the", "de": "the", "pon": "on", "inna": "in", "ina": "in", "een
           # verbs and words of chores ("tun off di TV", "lef it pon di counter", "mek sure", "outta di
           # fridge", "gi mi", "mi haffi go", "soh", "waan", "smaddy"; "dutty", dirty, is the household's)
           "tun": "turn", "lef": "leave", "mek": "make", "outta": "out of", "gi": "give",
-          "haffi": "have to", "soh": "so", "waan": "want", "smaddy": "somebody", "wi": "we"}
+          "haffi": "have to", "soh": "so", "waan": "want", "smaddy": "somebody", "wi": "we",
+          # Guyanese Creole's own ("leh we move ...": let; "gotta"; "fuh" is "fi")
+          "leh": "let", "gotta": "have to"}
 #: words that show a command is in patois: two different ones and the map applies
 MARKERS = frozenset({"di", "pon", "inna", "dem", "fi", "mi", "nuh", "tek", "weh", "deh", "cyaan", "yuh", "dat",
                      "den", "outa", "tings", "ting", "unu", "tun", "lef", "mek", "outta", "dutty", "gi", "haffi",
-                     "soh", "waan", "smaddy", "an"})
+                     "soh", "waan", "smaddy", "an", "de", "fuh", "wid", "wha", "leh"})
 #: markers that are no English word: one of them alone is enough ("put it back pon him study desk",
 #: "tun off di TV", "mi want 40 X in P", "shift 6 of dem over")
 STRONG_MARKERS = frozenset({"mi", "dem", "di", "pon", "inna", "cyaan", "outa", "tek", "yuh", "nuh", "fi", "unu", "weh",
-                            "lef", "mek", "outta", "dutty", "haffi", "soh", "waan", "smaddy"})
+                            "lef", "mek", "outta", "dutty", "haffi", "soh", "waan", "smaddy", "fuh"})
+#: every word the patois read may give an English word of its own
+CREOLE_WORDS = frozenset(PATOIS) | MARKERS | {"wha", "ah", "weh", "deh", "got"}
 #: words after "fi" that make it "for" (who or what for: "fi mi", "fi di children"); before
 #: anything else "fi" is "to" ("mi need fi pack it")
 FOR_WHOM = frozenset({"mi", "di", "de", "dem", "him", "yuh", "unu", "we", "she", "he", "dat", "dis", "me", "the",
@@ -57,13 +61,16 @@ def english_of(words: list[str], known: Callable[[str], bool], noun: Callable[[s
     is a name of the world's things alone (``known``). "mi" is "my" before a word of a thing's name
     (``noun``), "me" after a verb or a preposition, else "I"; "him" is "his" before such a word;
     "dem" after a thing is its plural (:data:`PLURAL`: "di plate dem", the plates), "those" before
-    one, else "them"; "fi" is "for" before who or what for, "should" after a subject ("yuh fi take
+    one, "they" opening a clause, else "them"; "fi" is "for" before who or what for, "should" after a subject ("yuh fi take
     it", "staging fi hold 5"), else "to" ("mi need fi pack it"); "weh deh" is "that is", "weh"
     elsewhere "where"; "come" between a thing and a verb of putting ("bring mi specs come put pon di
-    chair") is "and". ``domain``: patois words of a domain's own ("dutty" of the home), read so too."""
+    chair") is "and"; "nah" alone before a pause is "no" ("nah, mek it 8"). A "de" alone between
+    a word that is no thing and a name ("to de counter", "cut de cement") is enough to read the
+    command so: the Romance "de" follows a thing or a count ("the azeite de rack 1"). ``domain``:
+    patois words of a domain's own ("dutty" of the home), read so too."""
     unknown = {w for w in words if not known(w)}
     out: list[str | None] = [None] * len(words)
-    if len(MARKERS & unknown) < 2 and not STRONG_MARKERS & unknown:
+    if len(MARKERS & unknown) < 2 and not STRONG_MARKERS & unknown and not _article_before_a_name(words, known, noun):
         return out
     for k, w in enumerate(words):
         if known(w):
@@ -75,13 +82,25 @@ def english_of(words: list[str], known: Callable[[str], bool], noun: Callable[[s
             said = "my" if noun(nxt) else "me" if k and before in _BEFORE_ME else "i"
         elif w == "him":
             said = "his" if noun(nxt) else None
-        elif w == "dem" and k and (noun(before) or before in _PLURAL_AFTER):
+        elif w == "dem" and k and before not in _BEFORE_ME and (noun(before) or before in _PLURAL_AFTER):
             said = PLURAL
-        elif w == "dem":
-            said = "those" if noun(nxt) else "them"
-        elif w == "fi":
+        elif w == "dem":   # "dem painting de floor": they (a subject, opening its clause)
+            said = "those" if noun(nxt) else "they" if not k or before in _ENDS else "them"
+        elif w in ("fi", "fuh"):   # Jamaican "fi", Guyanese "fuh"
             said = "for" if nxt in FOR_WHOM or noun(nxt) else \
                 "should" if k and (before in _SUBJECTS or noun(before)) and nxt not in _ENDS else "to"
+        elif w == "wha":   # "robots wha could carry 4": that; "wha deh deh": what is there
+            said = "that" if k and noun(before) or before in _PLURAL_AFTER or before == "robots" else "what"
+        elif w in ("we", "wi") and before == "let":   # "leh we move ...": let us
+            said = "us"
+        elif w == "nah" and nxt in _ENDS:   # "nah, mek it 8": no
+            said = "no"
+        elif w == "nah" and (not k or before in _ENDS or before in _BEFORE_AN_ORDER or before == "but"):
+            said = "do not"   # "but nah use Tanty": an order not to; "de floor nah so strong": not
+        elif w == "ah" and nxt == "dem":   # "all 14 ah dem": of them
+            said = "of"
+        elif w == "got" and _after_a_modal(out, words, k):   # "must always got at least 10": have
+            said = "have"
         elif w == "weh" and nxt == "deh":
             said = "that"
         elif w == "weh":   # "put it back weh it belong": where
@@ -100,3 +119,23 @@ def english_of(words: list[str], known: Callable[[str], bool], noun: Callable[[s
             said = PATOIS.get(w) or (domain or {}).get(w)
         out[k] = said
     return out
+
+
+def _article_before_a_name(words: list[str], known: Callable[[str], bool], noun: Callable[[str], bool]) -> bool:
+    """Whether "de" stands before a name of the world's things after a word that is no thing and
+    no count ("send 6 to de counter"): the Creole article, not the Romance "of"."""
+    return any(w == "de" and k + 1 < len(words) and known(words[k + 1])
+               and (not k or not noun(words[k - 1]) and not known(words[k - 1]) and not words[k - 1][:1].isdigit())
+               for k, w in enumerate(words))
+
+
+#: words after which "got" is "have" ("de counter must got 10 box", "fuh got"), an adverb between
+_MODALS = frozenset({"must", "should", "to", "can", "will", "would", "could"})
+
+
+def _after_a_modal(out: list[str | None], words: list[str], k: int) -> bool:
+    """Whether the word at ``k`` follows a modal as read so far (one adverb between:
+    "must always got")."""
+    said = [(o or w).split()[-1] for o, w in zip(out[:k], words[:k]) if (o or w)]
+    return bool(said) and (said[-1] in _MODALS or len(said) > 1 and said[-1] in ("always", "still", "never")
+                           and said[-2] in _MODALS)

@@ -146,8 +146,9 @@ UNIT_DETERMINERS = {"a piece of", "a bit of", "an item of"}
 _add("V_PUT", "put,place,move,bring,take,carry,set,transfer,gather,collect,stash,drop,store,stick,pop,lay,"
      "hang,deliver,fetch,get,pick,relocate,stack,grab,shift,clear,pack,lift,haul,lug,hand,drag,plonk,bung,"
      "shove,tuck,hoist,ferry,send,peg,"
-     # Appalachian and Southern US "tote" (carry: "tote that poke of taters down to the cellar")
-     "tote")
+     # Appalachian and Southern US "tote" (carry: "tote that poke of taters down to the cellar");
+     # British "sling" (put, carelessly: "sling them almonds in the washing basket")
+     "tote,sling")
 #: "empty the fridge onto the counter": everything in a place taken, to where the command says
 _add("V_EMPTY", "empty,clear out,unload,unpack")
 #: "put the espresso cup down on the bar": a particle of the move before where it goes
@@ -433,6 +434,9 @@ _add("FORONE", "for one of you,for one robot,for one person,for one,to carry alo
      "for one of them,to lift on your own,to carry on your own")
 #: exclamations that ask for nothing by themselves ("What a tip.", "Ugh, ..."): reasons
 _add("REASON", "what a mess,what a tip,what a state,what a pigsty,what a dump,what a racket,what a din,what a noise")
+#: "it's like a tip in here", "it's a pigsty in here": the same, said of the room
+_add("REASON", ",".join(f"it is {like}a {mess} in {where}" for like in ("", "like ")
+                        for mess in ("tip", "pigsty", "mess", "bomb site", "dump") for where in ("here", "there")))
 #: interjections: they open or close a sentence and say nothing ("Blimey it's cold", "Ugh, ..."): read
 #: as a pause, like a comma (a sentence of nothing else asks for nothing, and is refused)
 _add("EXCL", "ugh,urgh,ew,eww,yuck,blimey,brr,brrr,phew,oof,ooh,oh dear,oh,gosh,cor,crikey,jeez,sheesh,eek,bah")
@@ -706,6 +710,8 @@ FILLER |= {(thanks, w) for thanks in ("thanks", "cheers", "ta") for e in ENDEARM
 #: the one asked, named after a word said to them ("please son", "ta hen", "morning pal"): nothing
 #: asked; alone, such a word may be someone's ("my son's bike"), so only after one of these
 ADDRESSED = ENDEARMENTS + ("son", "hen", "mate", "pal", "sunshine", "bro", "dude", "buddy")
+#: Cockney "me old china" (china plate: mate), "me old son", "me old mucker": the one asked
+FILLER |= {(my, "old", who) for my in ("me", "my") for who in ("china", "son", "mucker", "mate", "cocker", "pal")}
 FILLER |= {(said, who) for said in ("please", "pls", "plz", "thanks", "cheers", "ta", "morning", "hiya", "hello", "hi")
            for who in ADDRESSED}
 #: who of the team is asked ("can one of you open the larder, and someone else light the fire",

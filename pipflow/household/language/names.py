@@ -111,6 +111,13 @@ def _names_key(world: dict) -> tuple:
                  for kind in ("objects", "places", "categories") for name, e in (world.get(kind) or {}).items())
 
 
+def doers(world: dict) -> frozenset[str]:
+    """The names of the home's robots and teams, lower case: who may be addressed ("robot1,
+    ..."), who may be asked to do something in a purpose ("so Bertie can get the plate out"), and
+    so never a person of the command (the set-aside and the tagger ask the same question)."""
+    return frozenset(str(r).lower() for key in ("robots", "teams") for r in world.get(key) or {})
+
+
 @contextlib.contextmanager
 def held(world: dict) -> Iterator[None]:
     """While one command is read (with its candidate readings), the world's names do not change:

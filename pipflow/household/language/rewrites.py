@@ -177,18 +177,32 @@ def _without_purpose(clause: list[str], notes: list[str]) -> list[str]:
     return clause
 
 
+#: determiners of a measure of a thing said before ("that bottle of pop", "me bag of crisps"): the thing
+_MEASURED_BEFORE = frozenset({"the", "that", "this", "those", "these", "my", "me", "her", "his", "our", "your",
+                              "their"})
+
+
 def measures(words: list[str], index: dict, notes: list[str]) -> list[str]:
-    """ "a bowl of cherries" as "some cherries" (lexicon ``MEASURES``), unless the home has a thing
-    named by the container word (then it stays, and is refused: the bowl may be meant too)."""
+    """ "a bowl of cherries" as "some cherries" (lexicon ``MEASURES``), "that bottle of pop" as
+    "that pop" (the thing in it, which the home model names), unless the home has a thing named by
+    the container word (then it stays, and is refused: the bowl may be meant too)."""
     out: list[str] = []
     k = 0
     while k < len(words):
         w = words[k]
-        if w in ("a", "an", "one") and k + 3 < len(words) and words[k + 2] == "of" and \
-                (words[k + 1] in MEASURES or words[k + 1] + "s" in MEASURES or words[k + 1].rstrip("s") in MEASURES) \
-                and (words[k + 1],) not in index and words[k + 3] not in PUNCT:
+        measured = k + 3 < len(words) and words[k + 2] == "of" and \
+            (words[k + 1] in MEASURES or words[k + 1] + "s" in MEASURES or words[k + 1].rstrip("s") in MEASURES) \
+            and (words[k + 1],) not in index and words[k + 3] not in PUNCT
+        if measured and w in ("a", "an", "one"):
             notes.append(f"'{w} {words[k + 1]} of' read as 'some' (an amount of what follows, not a thing of the home)")
             out.append("some")
+            k += 3
+            continue
+        # "the box of the pizza" (the pizza box, where the home names one): a thing of its own
+        inverted = measured and ((words[k + 3], words[k + 1]) in index or words[k + 3] in _MEASURED_BEFORE)
+        if measured and w in _MEASURED_BEFORE and not inverted:
+            notes.append(f"'{w} {words[k + 1]} of' read as '{w}' (the thing in it, not a thing of the home)")
+            out.append(w)
             k += 3
             continue
         out.append(w)

@@ -9,7 +9,7 @@ from typing import Callable, NamedTuple
 
 from pipflow.household.language.lexicon import (DURATION_UNITS, FILLER, FILLER_TYPO_TARGETS, PHRASES, PURPOSE_WORDS,
                                                 words_of)
-from pipflow.household.language.names import home_words, per_index, world_phrases
+from pipflow.household.language.names import doers, home_words, per_index, world_phrases
 from pipflow.household.language.people import KIN
 from pipflow.household.language.restated import leading_subject, restates_location
 from pipflow.household.language.typos import typo_of, vocabulary
@@ -123,7 +123,7 @@ def people_named(command: str, world: dict, content: Callable[[str], bool]) -> f
     sentence (any first word has one) that name nothing of the home (``content``: :func:`_content`
     of the world), no robot or team ("so Bertie can get the plate out": Bertie is asked to) and
     are no word of the reader."""
-    robots = {w for key in ("robots", "teams") for r in world.get(key) or {} for w in re.split(r"[\s_-]+", str(r).lower())}
+    robots = {w for name in doers(world) for w in re.split(r"[\s_-]+", name)}
     said = re.findall(r"(?<=[a-z0-9,;:'\u2019]\s)[A-Z][a-z]+", command)
     return frozenset(w for w in (x.lower() for x in said)
                      if not content(w) and w not in _PHRASE_WORDS and w not in FUNCTION_WORDS and w not in robots)
@@ -459,7 +459,7 @@ def without_asides(command: str, world: dict) -> Trimmed | None:
     words = _purposes_apart(words_of(_PARENTHESES.sub(" , ", command)), people)
     parts = clauses(words, CLAUSE_MARKS)
     words, parts, topic = _topic_restated(words, parts, world)
-    robots = {str(r).lower() for key in ("robots", "teams") for r in world.get(key) or {}}   # who may be addressed
+    robots = doers(world)   # who may be addressed
     remark = _remark(world, content)
     free = [c for c in parts if content_free(_without_talk(_without_times(c.words)), content, content, reports=True,
                                              robot=robots.__contains__) or remark(c.words)

@@ -27,7 +27,7 @@ from pipflow.household.language.dialect import (arabic_as_english, bring_in, cut
 from pipflow.household.language.headwords import named_again
 from pipflow.household.language.grammar import NOUN_DUAL
 from pipflow.household.language.lexicon import FILLER, PHRASES, words_of
-from pipflow.household.language.names import (first_words, longest_name, named_by_first_word, per_index,
+from pipflow.household.language.names import (doers, first_words, longest_name, named_by_first_word, per_index,
                                               things_of_kind, world_phrases)
 from pipflow.household.language.people import KIN, owners, owners_before_names, own_as_owned, pronouns_as_owners
 from pipflow.household.language.retag import (act_before_noun, copula_dropped, demonstratives, elided_it_is, left_lying,
@@ -174,8 +174,7 @@ def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: l
                             world, index, notes)
     words = bring_in(open_close_as_switch(particle_before_exception(words, notes), world, index, notes), index, notes)
     words = beside_as_where(named_again(them_as_those(words, index, notes), index, notes), world, index, notes)
-    doers = frozenset(str(r).lower() for key in ("robots", "teams") for r in world.get(key) or {})
-    return particles(words, lambda x: x.isalpha() and not known_word(x, index, vocab), notes, doers)
+    return particles(words, lambda x: x.isalpha() and not known_word(x, index, vocab), notes, doers(world))
 
 
 #: the most words a phrase and a filler of the lexicon have

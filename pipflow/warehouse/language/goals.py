@@ -544,8 +544,14 @@ class GoalRules:
                                   for i in others], words)
 
     def g_nothing_else(self, node: Tree) -> None:
+        """ "P should have X, nothing else": P holds nothing but what is named. After a swap or a
+        move ("swap only the paint between A and B, nothing else") it says what the operation
+        leaves alone, which it does already: nothing else at those places changes (read as
+        emptying them, the robots moved out all else)."""
         parts = self.clause_parts(node)
         words, locs = parts.words, parts.locs
+        if not locs and self.statements and self.statements[-1]["op"] in ("swap", "transfer"):
+            return
         places = self.loc(locs[0])[0] if locs else self._last_places(words)
         self.statements.append({"op": "nothing_else", "places": {"names": places}, "words": words})
 

@@ -576,7 +576,7 @@ cmp: ("at" "least" | "no" "less" "than" | "no" "fewer" "than" | "not" "less" "th
    | ("less" | "fewer" | "lower") "than" NUM                      -> cmp_below
    | ("at" "most" | "no" "more" "than" | "not" "more" "than") NUM -> cmp_max
    | NUM "or" ("less" | "fewer" | "below" | "lower")             -> cmp_max
-able: "can" | "may"
+able: "can" | "may" | "could"   // "robots that could carry 4 or more": their skill, as "can" says it
 per_trip: "at" "a" "time" | "per" "trip" | "a" "trip" | "in" "one" "go"
 skillv: SKILL | "carry" | "carries" | "lift" | "lifts" | "move" | "moves" | "handle" | "handles"
 

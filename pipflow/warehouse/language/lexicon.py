@@ -26,7 +26,7 @@ from pipflow.language.characters import (accents_folded, declared_spellings, non
                                          without_expressions)
 from pipflow.language.english import common_word, dropped_g
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS, is_number
-from pipflow.language.patois import PLURAL, english_of
+from pipflow.language.patois import CREOLE_WORDS, PLURAL, english_of
 from pipflow.language.radio import transmission
 from pipflow.language.quebec import QUEBEC
 from pipflow.language.scots import SCOTS
@@ -37,11 +37,11 @@ from pipflow.warehouse.language.names import (CONTAINERS, KIND_WORDS, PACKAGING_
 from pipflow.warehouse.language.roles import read_by_roles
 from pipflow.warehouse.language.reordered import (base_verb, by_as_among, count_after_item, destination_first,
                                                 fronted_source, item_as_subject, needs_doing, object_before_verb,
-                                                of_as_from, on_as_to, place_as_it, place_first, place_must_be,
-                                                places_then_each, said_at, source_after_verb, to_be_done,
-                                                topic_first, verb_last)
+                                                of_as_from, on_as_to, only_after_a_move, place_as_it, place_first,
+                                                place_must_be, places_then_each, said_at, source_after_verb,
+                                                to_be_done, topic_first, verb_last)
 from pipflow.warehouse.language.transcripts import orders_taken_back, places_taken_back, them_as_determiner
-from pipflow.warehouse.language.wordorder import (left_dislocated, noun_adjuncts, numbered_siblings,
+from pipflow.warehouse.language.wordorder import (WHERE_WORDS, left_dislocated, noun_adjuncts, numbered_siblings,
                                                   places_listed_after_sharing, unit_of_its_product, unmarked_lists,
                                                   where_words_placed)
 
@@ -144,10 +144,16 @@ _FOR_EACH_OF = re.compile(rf"\b({_NUMBER})\s+((?:[a-z][a-z0-9_-]*\s+){{1,3}}?)fo
 _SAID_AS = frozenset({"they", "the", "for", "with"})
 
 
-def _as_said_in_full(word: str) -> str:
+def _as_said_in_full(word: str, tok: Tok | None = None) -> str:
     """A word as written, or the grammar word of :data:`_SAID_AS` it spells ("dey": they), which
     is never a slip of a name, or the word said with "in" for "ing" ("chargin"): a remark "dey
-    chargin" is talk as "they charging" is."""
+    chargin" is talk as "they charging" is. A Creole word the patois read gave an English word of
+    its own (``tok``: "leh dem stay", let them stay) is that word ("nah" read as "not" is never the
+    interjection "nah": the negation would be lost). A repair of a slip is not: "Big day today" is
+    no "bit day"."""
+    read = str(tok.value) if tok is not None else word
+    if read != word and " " not in read and word in CREOLE_WORDS:
+        return read
     said = SPELLINGS.get(word)
     if said in _SAID_AS:
         return said
@@ -563,8 +569,9 @@ IDIOMS = (  # "15 pal. water", "min. 2": a trade abbreviation's full stop before
                       r"(?:it|she)\b(?=\s*(?:is|has|needs|should|must|shld)\b)", re.IGNORECASE), r"\1\2"),
           # "swap P and Q, the whole lot, everything (on them)", "swap P and Q, everything, the trucks
           # changed doors": a whole swap, which "swap P and Q" is
-          (re.compile(r"\b(swap\s[^.,;!?\n]*?\band\s[^.,;!?\n]*?)\s*[,.:]\s*(?:(?:the\s+)?whole\s+lot|everything|all"
-                      r"(?:\s+of\s+it)?)(?:\s*,\s*(?:(?:the\s+)?whole\s+lot|everything|all\s+of\s+it))*"
+          (re.compile(r"\b(swap\s[^.,;!?\n]*?\band?\s[^.,;!?\n]*?)\s*[,.:]\s*(?:(?:the\s+)?whole\s+lot|every(?:thing|ting)|all"
+                      r"(?:\s+of\s+it)?)(?:\s*,\s*(?:(?:the\s+)?whole\s+lot|every(?:thing|ting)|all\s+of\s+it"
+                      r"|all\s+(?:the|de|di)\s+stock))*"
                       r"(?:\s+on\s+(?:them|both|there))?(?=\s*(?:[.,;!?]|$))", re.IGNORECASE), r"\1"))
 #: the order of words of a speaker whose first language puts them so (Portuguese and Spanish
 #: "mais 4", "mais de 4", "o dobro de", "longe de"), read as English puts them: "add more 4 tubes"
@@ -914,6 +921,8 @@ QUANTITY_PHRASES: dict[str, tuple[str, ...]] = {
     "in their entirety": (), "in its entirety": (),
     # "no more than 3 at any given time": a bound holds at the end too, which is what a goal fixes
     "at any given time": (), "at any one time": (), "at all times": (),
+    # "P must always have at least 10 X" (Guyanese "must always got"): the same, said before the verb
+    "always have": ("have",), "always hold": ("hold",), "always got": ("got",), "always has": ("has",),
     # "P shouldn't drop below 20 X all night": so too ("all" is no quantity of a span of time)
     "all night": (), "all day": (), "all shift": (), "all week": (), "all the time": (),
     "all night long": (), "all day long": (),
@@ -1250,10 +1259,11 @@ _PLACE_PREPOSITIONS = {"to", "into", "onto", "from", "off", "in", "on", "at"}
 
 def without_particles(toks: list[Tok]) -> list[Tok]:
     """The tokens without a particle of direction that stands between a verb's object and
-    a preposition followed by a place (:data:`DIRECTION_PARTICLES`)."""
+    a preposition followed by a place (:data:`DIRECTION_PARTICLES`), or a word of where there
+    ("the ones upstairs in the loft": the place says where)."""
     out: list[Tok] = []
     for k, t in enumerate(toks):
-        if t.kind == "word" and t.value in DIRECTION_PARTICLES and k + 2 < len(toks):
+        if t.kind == "word" and (t.value in DIRECTION_PARTICLES or t.value in WHERE_WORDS) and k + 2 < len(toks):
             prep, nxt = toks[k + 1], toks[k + 2]
             if nxt.kind == "word" and nxt.value == "the" and k + 3 < len(toks):
                 nxt = toks[k + 3]
@@ -1924,7 +1934,7 @@ class Lexicon:
         # the names test all the same)
         words = [str(t.value) if t.kind == "punct" and t.value in marks else
                  "s" if t.kind == "word" and t.value == POSS_MARK else   # "Today's plan": the 's is no content
-                 (_as_said_in_full(re.sub(r"[^a-z0-9]", "", t.text.lower())) or str(t.value)
+                 (_as_said_in_full(re.sub(r"[^a-z0-9]", "", t.text.lower()), t) or str(t.value)
                   if t.kind in ("word", "kind") else
                   "oclock" if t.kind == "num" and _clock(cur, k) else "\2" if t.kind == "num" and self._label(cur, k)
                   else "one" if t.kind == "num" and _one_of_these(cur, k)
@@ -2044,7 +2054,7 @@ class Lexicon:
             this_job_announced(case_endings(topic_marked(self._interjection_set_off(fixed)))), self.keywords))))
         toks, framed = without_request_frames(orders_taken_back(places_taken_back(toks), _ORDER_VERBS | _CHANGE_VERBS), verbs)
         toks = places_then_each(by_as_among(toks))   # before "by" is read as "at"
-        toks = source_after_verb(of_as_from(place_as_it(by_as_at(toks))))
+        toks = only_after_a_move(source_after_verb(of_as_from(place_as_it(by_as_at(toks)))))
         toks = item_as_subject(fronted_source(to_be_done(needs_doing(toks, verbs), verbs), verbs))
         toks = on_as_to(object_before_verb(topic_first(place_first(count_after_item(destination_first(
             place_must_be(verb_last(read_by_roles(toks)))))))))

@@ -251,6 +251,22 @@ def source_after_verb(toks: list[Tok]) -> list[Tok]:
     return out
 
 
+def only_after_a_move(toks: list[Tok]) -> list[Tok]:
+    """The tokens without an "only" / "just" between a verb of moving or swapping and the goods it
+    names ("swap only the paint between A and B", "move just the rice to P"): a move or a swap
+    touches only what it names, so the word restricts nothing more. Never before a count ("move
+    only 5": a bound of its own), never after "keep" or "leave" ("keep only the rice on P" says
+    all else goes), and only where a product's name follows (after "the" at most)."""
+    out: list[Tok] = []
+    for k, t in enumerate(toks):
+        j = k + 2 if _word_in(toks, k + 1, ("the",)) else k + 1
+        if _word_in(toks, k, ("only", "just")) and _word_in(toks, k - 1, _MOVING | {"swap", "exchange"}) \
+                and _name_at(toks, j, "product"):
+            continue
+        out.append(t)
+    return out
+
+
 def _counted_things(toks: list[Tok], k: int) -> int:
     """How many "<count> (<unit>) (of) <product>" follow one another from ``k``, joined by "and" or a
     comma ("4 akü and 4 silecek")."""

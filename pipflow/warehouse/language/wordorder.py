@@ -65,10 +65,13 @@ def where_words_placed(toks: list[Tok]) -> list[Tok]:
     upstairs", "send 5 to the counter and the rest upstairs"), else where they are ("double the
     paint upstairs", "swap them with the ones upstairs", "no more than 3 barrows upstairs", "move the
     paint upstairs to the counter"). The preposition is put in with no text, so echoes quote the
-    words as said."""
+    words as said. Said just before the place it names ("the ones upstairs in the loft", the loft
+    called "upstairs"), it is that place said twice, and left out."""
     out: list[Tok] = []
     for k, t in enumerate(toks):
         before = out[-1] if out else None
+        if t.kind == "name" and t.of == "shelf" and t.text.lower() in WHERE_WORDS and _said_again(toks, k):
+            continue
         if (t.kind == "name" and t.of == "shelf" and t.text.lower() in WHERE_WORDS and before is not None
                 and not (before.kind == "word" and before.value in _BEFORE_A_PLACE)):
             start = max((j for j in range(k) if toks[j].kind == "punct" and toks[j].value in _CLAUSE_ENDS), default=-1)
@@ -78,6 +81,15 @@ def where_words_placed(toks: list[Tok]) -> list[Tok]:
             out.append(Tok("word", "", "to" if moved and not goes_on else "at"))
         out.append(t)
     return out
+
+
+def _said_again(toks: list[Tok], k: int) -> bool:
+    """Whether the place at ``k`` is named again right after it ("upstairs in the loft"; the
+    Creole article is not read yet: "upstairs in de loft")."""
+    j = k + 2 if k + 2 < len(toks) and toks[k + 2].kind == "word" and toks[k + 2].value in ("the", "de", "di") \
+        else k + 1
+    return k + 1 < len(toks) and toks[k + 1].kind == "word" and toks[k + 1].value in ("in", "on", "at") \
+        and j + 1 < len(toks) and toks[j + 1].kind == "name" and toks[j + 1].value == toks[k].value
 
 
 #: words of sharing out that a list of places may follow after a comma ("spread them evenly, P, Q and R")
