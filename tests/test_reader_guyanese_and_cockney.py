@@ -49,7 +49,8 @@ ESSEQUIBO = {
     # "got" after a modal is "have"
     ("De back bay must got between 3 and 5 zinc", "back should have between 3 and 5 zinc"),
     # "only" / "just" between a verb of moving and what it moves restricts nothing more
-    ("Swap only de paint between de front bay an de counter, nothing else, ok?", "swap the paint between front and counter"),
+    ("Swap only de paint between de front bay an de counter, nothing else, ok?",
+     "swap the paint between front and counter"),
     ("Move just the paint from the front bay to the counter", "move the paint from front to counter"),
     # a where-word the world calls a place, said before that place: the place said twice
     ("Send all de cement to de back bay except de ones upstairs in de loft, leh dem stay",

@@ -1252,7 +1252,7 @@ def restates_what_stays(before: Iterable[str], words: Iterable[str], names: Call
     ws, prev = [w for w in words if w], set(before)
     if not ws or not prev & _LEAVING_OUT:
         return False
-    told = ws[0] in ("let", "leave") and ws[1:2] and ws[1] in _DEMONSTRATIVES | {"them", "it"}
+    told = len(ws) > 1 and ws[0] in ("let", "leave") and ws[1] in _DEMONSTRATIVES | {"them", "it"}
     if ws[0] == "leave" and told:   # "leave them (there)": no verb of staying
         ws = [ws[1], "stay"] + ws[2:]
     elif told:
