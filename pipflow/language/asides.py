@@ -89,6 +89,8 @@ GREETINGS = frozenset({"hi", "hello", "hey", "hiya", "heya", "howdy", "morning",
                        "dzieki", "dziekuje", "czesc",
                        # Brazilian Portuguese ("bom dia pessoal": good morning, folks; "oi", "olá": hi)
                        "oi", "ola", "bom", "boa",
+                       # Brummie goodbyes ("Tara bab", "ta-ra-a-bit": bye for now)
+                       "tara", "tarra", "tarrar",
                        # Swedish ("hej", "hejsan", "tjena", "hallå": hi)
                        "hej", "hejsan", "tjena", "halla",
                        # Greek ("Re paidia": hey, kids; "kalimera")
@@ -167,7 +169,10 @@ ADDRESSEES = frozenset({"all", "everyone", "everybody", "team", "folks", "guys",
                         "machan", "machang", "malli", "akka",
                         # Trinidadian ("Evening allyuh": you all; "padna": partner; "Boy move ...": man) and
                         # Scouse ("youse": you all)
-                        "allyuh", "alyuh", "padna", "pardna", "boy", "youse", "yous"})
+                        "allyuh", "alyuh", "padna", "pardna", "boy", "youse", "yous",
+                        # Brummie and Midlands English ("Put the kettle on bab", "ta duck"), and
+                        # Ugandan English's Luganda "sebo" (sir) and "nnyabo" (madam)
+                        "bab", "babs", "duck", "sebo", "ssebo", "nnyabo"})
 
 
 #: a thanks that can close an order without a comma before it ("... to bay 2 ta")
@@ -193,9 +198,13 @@ SOFTENERS = frozenset({"nah"})
 #: please mate", "... forklifts only mind", "... thanks lads"): never a word that is operative
 CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "boss", "love", "pet", "hun",
                      "son", "hen", "sunshine", "buddy", "bro", "bruv", "dude",
-                     "mind", "yeah", "eh", "cheers", "ta", "thanks", "thx", "ty", "tyvm", "thankyou", "dankie",
+                     "mind", "yeah", "eh", "though", "cheers", "ta", "thanks", "thx", "ty", "tyvm", "thankyou",
+                     "dankie",
                      "man", "bru", "boet", "chale", "bud", "butt", "butty", "bach", "diolch", "merci", "svp", "stp",
                      "asante", "asanteni", "bana", "mzee", "gracias", "jefe",
+                     # Brummie and Midlands English ("..., bab", "... ta duck"); Ugandan English's
+                     # Luganda "sebo" (sir), "nnyabo" (madam) and "bambi" (please)
+                     "bab", "babs", "duck", "sebo", "ssebo", "nnyabo", "bambi",
                      # Sri Lankan English ("..., machan"; "... to P already": at once, no report)
                      "machan", "machang", "already",
                      # Irish English ("..., deadly": great; "..., grma": thanks)
@@ -257,6 +266,10 @@ CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "
                      "tack", "hejda"})
 
 
+#: words only ever said to the one asked ("..., love", "bab, ...", "Sebo, ..."): who is greeted and
+#: who an order closes on, never a word that may be operative ("all", "so", "again" are greeted too)
+VOCATIVES = frozenset(w for w in ADDRESSEES & CLOSERS if w.isalpha() and w not in OPERATIVE)
+
 #: a request tag after an order ("... over to the shed would ya", "... could you"): it asks
 #: nothing more than the order does
 REQUEST_TAGS = frozenset((modal, you) for modal in ("would", "could", "will", "can", "wont")
@@ -281,6 +294,17 @@ def trailing_thanks(words: list[str], content: Callable[[str], bool]) -> int:
     if k == 0 or k >= len(words) or any(content(w) or (w not in THANKS | SOFTENERS and w not in _TAG_WORDS and near_operative(w)
                                                        and not _inside_talk(said, n)) for n, w in enumerate(said)):
         return 0
+    return k
+
+
+def trailing_vocatives(words: list[str], names: Callable[[str], bool]) -> int:
+    """How many words closing a clause are said to the one asked (:data:`VOCATIVES`: "put the gas
+    fire on bab, and ...", "..., pass me the mail love, then ..."), where a thanks or tag may close
+    only the last clause (:func:`trailing_thanks`): a word said to someone asks nothing wherever it
+    stands. 0 when there is none, when it is the whole clause or a word names the world."""
+    k = 0
+    while k < len(words) - 1 and words[-1 - k] in VOCATIVES and not names(words[-1 - k]):
+        k += 1
     return k
 
 
@@ -1131,6 +1155,8 @@ def content_free(words: Iterable[str], content: Callable[[str], bool],
         return True   # "..., all grand", "... . sound": said in passing, no one addressed
     if names is not None and thing is not None and is_condition(ws, content, names, thing):
         return True   # "..., heavy": what the goods are like, no name said to
+    if all(w in VOCATIVES for w in ws) and not any((names or content)(w) for w in ws):
+        return True   # "..., love", "Sebo, ...": said to the one asked, who is no name of the world
     name = addressee(ws)
     if name is not None:
         return robot(name)   # "Hornet, ...": set aside only when it names a robot of the world
@@ -1247,11 +1273,17 @@ def restates_what_stays(before: Iterable[str], words: Iterable[str], names: Call
     stay for picking": a demonstrative and a verb of staying right after a clause that leaves
     something out (:data:`_LEAVING_OUT`) says again that it stays, which the clause before says;
     set aside. After any other clause "that stays" says what stays, and is read or refused as ever.
-    "Let them stay", "leave those there" (Guyanese "leh dem stay") say it so too. Nothing of the
-    world, no number and no operative word but its demonstrative may be in it."""
+    "Let them stay", "leave those there" (Guyanese "leh dem stay") and "don't touch those ones" say
+    it so too. Nothing of the world, no number and no operative word but its demonstrative may be in
+    it."""
     ws, prev = [w for w in words if w], set(before)
     if not ws or not prev & _LEAVING_OUT:
         return False
+    touched = 3 if ws[:3] == ["do", "not", "touch"] else 2 if ws[:2] == ["dont", "touch"] else 0
+    if touched:   # "..., don't touch those ones": what is left out is left alone
+        said = ws[touched:]
+        ones = said[1:] in ([], ["ones"], ["one"])
+        return len(said) in (1, 2) and said[0] in _DEMONSTRATIVES | {"them", "it"} and ones
     told = len(ws) > 1 and ws[0] in ("let", "leave") and ws[1] in _DEMONSTRATIVES | {"them", "it"}
     if ws[0] == "leave" and told:   # "leave them (there)": no verb of staying
         ws = [ws[1], "stay"] + ws[2:]

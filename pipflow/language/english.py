@@ -75,6 +75,10 @@ _SPOKEN = ((re.compile(r"(?<![A-Za-z])['\u2019]em\b", re.IGNORECASE), "them"),
            (re.compile(r"(?<![A-Za-z'\u2019])wi['\u2019](?=\s|$)", re.IGNORECASE), "with"),
            (re.compile(r"(?<![A-Za-z'\u2019])an['\u2019](?=\s|$)", re.IGNORECASE), "and"),
            (re.compile(r"\by['\u2019]all\b", re.IGNORECASE), "you all"),
+           # Brummie "ta-ra", "ta-ra-a-bit" (goodbye, bye for now): one word, its "a bit" no quantity
+           (re.compile(r"\bta-ra(?:-a-bit)?\b", re.IGNORECASE), "tara"),
+           # Brummie and Black Country "they'm", "we'm", "yow'm" (they are, we are, you are)
+           (re.compile(r"\b(they|we|you|yow)['\u2019]m\b", re.IGNORECASE), r"\1 are"),
            (re.compile(r"\bain['\u2019]?t(?=\s+(?:got|been|had|done|seen)\b)", re.IGNORECASE), "has not"),
            (re.compile(r"\bain['\u2019]?t\b", re.IGNORECASE), "is not"))
 

@@ -1,8 +1,8 @@
-"""Scots and northern English spellings of everyday English words, as typed or said in Scotland
-and the north of England ("take 2 aff the rack", "bring it ben", "switch aff aw the lights", "fae
-the bedside table", "divvent touch it"): each read as the English word, by both readers, only
-where the word is no word of the world's names (a place called "the Ben" stays that place) and, in
-the household reader, no English word itself."""
+"""Scots, northern and Midlands English spellings of everyday English words, as typed or said in
+Scotland, the north of England and the Black Country ("take 2 aff the rack", "bring it ben",
+"switch aff aw the lights", "fae the bedside table", "divvent touch it", "dow bother"): each read
+as the English word, by both readers, only where the word is no word of the world's names (a place
+called "the Ben" stays that place) and, in the household reader, no English word itself."""
 from __future__ import annotations
 
 #: Scots word -> the English word the grammars have
@@ -28,4 +28,6 @@ SCOTS = {"fae": "from", "frae": "from", "tae": "to", "aff": "off", "oot": "out",
          "arl": "old", "giz": "give", "youse": "you", "yous": "you",
          # Yorkshire ("put t'kettle on will tha", "shut it after thee": you; "it's nobbut adverts":
          # only; "nay": no; "reyt": right)
-         "tha": "you", "thee": "you", "thy": "your", "nobbut": "only", "nay": "no", "reyt": "right"}
+         "tha": "you", "thee": "you", "thy": "your", "nobbut": "only", "nay": "no", "reyt": "right",
+         # Brummie and Black Country ("can yow get it out", "dow bother with butter": don't)
+         "yow": "you", "dow": "dont"}

@@ -11,7 +11,7 @@ from pipflow.household.language.lexicon import (DURATION_HEDGES, DURATION_UNITS,
                                                 PHRASES, PURPOSE_INFINITIVES, PURPOSE_WORDS, PURPOSES, TIME_WORDS)
 from pipflow.household.language.names import name_end
 from pipflow.household.language.tokens import PUNCT
-from pipflow.language.asides import near_operative
+from pipflow.language.asides import DETERMINERS, VOCATIVES, near_operative
 from pipflow.language.numbers import read_number
 
 
@@ -677,16 +677,26 @@ _YOU_ALL = {"all", "two", "both", "guys", "lot", "lads", "folks", "robots"}
 _ORDER_OPENS = set(PUNCT) | {"and", "then", "now"}
 
 
-def you_before_an_order(words: list[str], notes: list[str]) -> list[str]:
+def you_before_an_order(words: list[str], notes: list[str], index: dict) -> list[str]:
     """ "Y'all slice up that cornbread", "you tote it to the feed bin" (Southern US and
     Appalachian English, and anyone giving an order to a group): "you" (with "all", "two", ...)
     opening a clause before a verb of the lexicon says who is asked, and is left out, as an
-    order to the robots is read anyway."""
+    order to the robots is read anyway. So is a word said to the one asked ("bab put the kettle
+    on", "love, fetch the post": :data:`~pipflow.language.asides.VOCATIVES`), with its comma, or
+    before "and" / "then" that join the next order ("warm it up bab and bring it through"), where
+    the home names nothing by it (``index``: "duck, put it in the fridge" may be the roast)."""
     out: list[str] = []
     k = 0
     while k < len(words):
         n = 2 if words[k:k + 1] == ["you"] and k + 1 < len(words) and words[k + 1] in _YOU_ALL else 1
-        if words[k] == "you" and (not out or out[-1] in _ORDER_OPENS) and k + n < len(words) \
+        vocative = words[k] in VOCATIVES and (words[k],) not in index
+        joined = words[k + 1:k + 2] in (["and"], ["then"])
+        if vocative and joined and out and out[-1] not in PUNCT and out[-1] not in DETERMINERS:
+            notes.append(f"'{words[k]}' before '{words[k + 1]}' says who is asked")
+            k += 1
+            continue
+        n += vocative and words[k + 1:k + 2] == [","]
+        if (words[k] == "you" or vocative) and (not out or out[-1] in _ORDER_OPENS) and k + n < len(words) \
                 and words[k + n] in ORDER_VERB_WORDS:
             notes.append(f"'{' '.join(words[k:k + n])}' before an order says who is asked")
             k += n

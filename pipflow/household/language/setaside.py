@@ -16,7 +16,8 @@ from pipflow.household.language.typos import typo_of, vocabulary
 from pipflow.household.language.unseen import unseen
 from pipflow.language.asides import (BOUNDS, EXCLUSIVITY, FUNCTION_WORDS, NEGATION, OPERATIVE, QUANTITIES, SELECTION, TEMPORAL,
                                      PLEASANTRIES, THANKS, Clause, clauses, content_free, is_opener, near_operative,
-                                     signature, trailing_adjunct, trailing_thanks, unmarked_statement)
+                                     signature, trailing_adjunct, trailing_thanks, trailing_vocatives,
+                                     unmarked_statement)
 from pipflow.language.english import common_word
 from pipflow.language.numbers import read_number, reads_as_count
 
@@ -314,7 +315,8 @@ def run_on_talk(kept: list[Clause], content: Callable[[str], bool], names: Calla
     for c in kept:
         words = list(c.words)
         while True:   # a thanks may close the order before a statement: "... would ya doreen had a fit"
-            n = (trailing_thanks(words, names) if c is last else 0) or unmarked_statement(words, names) \
+            n = (trailing_thanks(words, names) if c is last else trailing_vocatives(words, names)) \
+                or unmarked_statement(words, names) \
                 or _adjunct(words, content, names)
             if not n:
                 break

@@ -160,7 +160,7 @@ def _rewritten(command: str, world: dict, index: dict, vocab: set[str], notes: l
     words = owners_before_names(pronouns_as_owners(own_as_owned(words, world, notes), world, notes), world, notes)
     words = so_before_an_order(same_for(colloquial(corrected(orders_taken_back(words, index, notes), notes), notes),
                                         notes), notes)
-    words = back_before_a_destination(you_before_an_order(words, notes), notes)
+    words = back_before_a_destination(you_before_an_order(words, notes, index), notes)
     words = or_under_negation(measures(without_manner(words, notes), index, notes), notes)
     words = heat_purpose(caused(given(me_as_where_the_speaker_is(words, index, notes), notes), notes), notes)
     words = just_as_only(spoiling_as_reason(warm_the_place(instead_closing(words, notes), notes), notes), notes)

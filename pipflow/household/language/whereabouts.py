@@ -70,9 +70,29 @@ def place_said(words: list[str], j: int, index: dict, posture: frozenset[str] = 
     return end, words[k:k + n]
 
 
+def to_me_there(words: list[str], index: dict, notes: list[str]) -> list[str]:
+    """ "bring it through to me on the armchair", "fetch the mug to me in the kitchen": where the
+    speaker is, said after "to me", is where the thing goes ("to the armchair"). Only where a
+    place of the home follows the preposition and ends the clause (:func:`place_said`)."""
+    out: list[str] = []
+    k = 0
+    while k < len(words):
+        if words[k:k + 2] == ["to", "me"] and k and words[k - 1] not in PUNCT \
+                and place_said(words, k + 2, index, frozenset()) is not None:
+            notes.append(f"'to me {words[k + 2]}': to where you are")
+            out.append("to")
+            k += 3
+            continue
+        out.append(words[k])
+        k += 1
+    return out
+
+
 def me_as_where_the_speaker_is(words: list[str], index: dict, notes: list[str]) -> list[str]:
     """The words with the clause of where the speaker is set aside and each "bring me X" after it
-    read as "bring X to <there>" (module docstring); unchanged where no "bring me" follows."""
+    read as "bring X to <there>" (module docstring); unchanged where no "bring me" follows. "to
+    me on the P" is "to the P" first (:func:`to_me_there`)."""
+    words = to_me_there(words, index, notes)
     for i in range(len(words)):
         found = _speaker_place(words, i, index)
         if found is None:

@@ -38,9 +38,9 @@ from pipflow.warehouse.language.roles import read_by_roles
 from pipflow.warehouse.language.reordered import (base_verb, by_as_among, count_after_item, destination_first,
                                                 fronted_source, item_as_subject, needs_doing, object_before_verb,
                                                 of_as_from, on_as_to, only_after_a_move, place_as_it, place_first,
-                                                place_must_be, places_then_each, said_at, source_after_verb,
-                                                to_be_done, topic_first, verb_last)
-from pipflow.warehouse.language.transcripts import orders_taken_back, places_taken_back, them_as_determiner
+                                                place_must_be, place_set_off, places_then_each, said_at,
+                                                source_after_verb, to_be_done, topic_first, verb_last)
+from pipflow.warehouse.language.transcripts import HESITATIONS, orders_taken_back, places_taken_back, them_as_determiner
 from pipflow.warehouse.language.wordorder import (WHERE_WORDS, left_dislocated, noun_adjuncts, numbered_siblings,
                                                   places_listed_after_sharing, unit_of_its_product, unmarked_lists,
                                                   where_words_placed)
@@ -1570,6 +1570,8 @@ def corrected(toks: list[Tok]) -> list[Tok]:
             while True:   # "no", "no wait", "no sorry, make that"
                 comma = took_back and j < len(toks) and toks[j].kind == "punct" and toks[j].value == ","
                 at = j + comma
+                while at < len(toks) and toks[at].kind == "word" and toks[at].value in HESITATIONS:
+                    at += 1   # "12, eh sorry 15"
                 words = next((w for w in CORRECTIONS
                               if [str(x.value) for x in toks[at:at + len(w)] if x.kind == "word"] == list(w)), None)
                 if words is None:
@@ -2056,8 +2058,8 @@ class Lexicon:
         toks = places_then_each(by_as_among(toks))   # before "by" is read as "at"
         toks = only_after_a_move(source_after_verb(of_as_from(place_as_it(by_as_at(toks)))))
         toks = item_as_subject(fronted_source(to_be_done(needs_doing(toks, verbs), verbs), verbs))
-        toks = on_as_to(object_before_verb(topic_first(place_first(count_after_item(destination_first(
-            place_must_be(verb_last(read_by_roles(toks)))))))))
+        toks = on_as_to(object_before_verb(topic_first(place_first(place_set_off(count_after_item(destination_first(
+            place_must_be(verb_last(read_by_roles(toks))))))))))
         toks = addressed_anyone(stative_having(is_contracted(asked_plainly(toks))))
         toks = lexicon_verbs(whole_places(quantity_phrases(toks, self.keywords)), self.keywords)
         toks = put_back_after_its_object(counts_sent_from_a_topic(corrected(toks)))

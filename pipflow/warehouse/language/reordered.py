@@ -363,6 +363,8 @@ _CHANGING = frozenset({"double", "triple", "halve", "reduce", "cut", "increase",
 #: words after such a verb that add nothing to it: "make" / "do" said last, as Turkish closes a verb
 #: with "yap" ("rack B silecek double make"), and when ("rack A dont touch today")
 _SAID_LAST = frozenset({"make", "do", "today", "now", "tonight", "please"})
+#: verbs that leave a place as it is ("shipping keep as it is", "rack 1 leave as is")
+_LEAVING = frozenset({"keep", "leave"})
 #: a pronoun taking up what was said first ("... double it"), or all of a place ("clear everything")
 _RESUMING = frozenset({"it", "them"})
 _EVERYTHING = frozenset({"everything", "anything", "all"})
@@ -384,15 +386,38 @@ def place_first(toks: list[Tok]) -> list[Tok]:
     return each_clause(toks, _place_first, _clause_opens)
 
 
+def place_set_off(toks: list[Tok]) -> list[Tok]:
+    """The tokens without the comma that sets off a place said first, where the clause after it
+    leaves, keeps or changes that place by "it" ("But the returns cage, leave it as it is", "Rack
+    B, don't touch it"): read as said without the comma (:func:`place_first`). Anything else
+    keeps its comma."""
+    out: list[Tok] = []
+    for k, t in enumerate(toks):
+        if t.kind == "punct" and t.value == "," and k and _name_at(toks, k - 1, "shelf"):
+            the = k > 1 and _word_in(toks, k - 2, ("the",))
+            v = k + 1 + _word_in(toks, k + 1, _SAID_NOT)
+            if _clause_opens(toks, k - 1 - the) and _word_in(toks, v, _CHANGING | _KEEPING | _LEAVING) \
+                    and _word_in(toks, v + 1, ("it",)):
+                continue
+        out.append(t)
+    return out
+
+
 def _place_first(clause: list[Tok]) -> list[Tok] | None:
     """:func:`place_first` of one clause, or None."""
+    clause = clause[1:] if _word_in(clause, 0, ("the",)) and _name_at(clause, 1, "shelf") else clause
     if not _name_at(clause, 0, "shelf"):
         return None
     j = 1 + _word_in(clause, 1, (POSS_MARK,))   # "zone A dates": zone A's dates
     while _name_at(clause, j, "product") or (_word_in(clause, j, ("and",)) and _name_at(clause, j + 1, "product")):
         j += 1
+    place, things = clause[:1], [t for t in clause[1:j] if t.value != POSS_MARK]
     negated = _word_in(clause, j, _SAID_NOT)
     v = j + negated
+    # "rack A leave it as it is", "rack B dont touch it": "it" takes up the place said first
+    resumed = not things and _word_in(clause, v, _CHANGING | _KEEPING | _LEAVING) and _word_in(clause, v + 1, ("it",))
+    if resumed:
+        clause = clause[:v + 1] + clause[v + 2:]
     rest = clause[v + 1:]
     done = _word_in(clause, v, ("do", "make")) and _word_in(clause, v + 1, _CHANGING)
     if done:   # "vozvrat do empty" (Russian "сделать пустым"): empty it
@@ -400,9 +425,9 @@ def _place_first(clause: list[Tok]) -> list[Tok] | None:
         rest = clause[v + 1:]
     said_last = _word_in(clause, v, _CHANGING | _KEEPING) and bool(rest) and all(
         _word_in(rest, n, _SAID_LAST) for n in range(len(rest)))
+    said_last = said_last or (resumed and not rest)
     if said_last:   # "rack B silecek double make" (Turkish "yap"), "rack A dont touch today"
         rest = []
-    place, things = clause[:1], [t for t in clause[1:j] if t.value != POSS_MARK]
     moving = _word_in(clause, v, _MOVING)
     if things and (_word_in(clause, v, _CHANGING | _KEEPING) or moving and not any(t.kind == "num" for t in rest)):
         # a count after a verb of moving is read by the rules of a count said late ("OB connector
@@ -416,7 +441,7 @@ def _place_first(clause: list[Tok]) -> list[Tok] | None:
                                                                                    ("with", "up")):
         # "mezzanine fill with silecek", "karantin fill full with X": fill it with X
         return clause[v:v + 1] + place + rest[_word_in(rest, 0, ("full",)):]
-    if not things and not negated and _word_in(clause, v, ("keep", "leave")) and rest \
+    if not things and not negated and _word_in(clause, v, _LEAVING) and rest \
             and not any(t.kind in ("num", "name") for t in rest):
         # "shipping keep as it is", "rack 1 leave as is": keep shipping as it is
         return clause[v:v + 1] + place + rest

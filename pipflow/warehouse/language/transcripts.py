@@ -12,10 +12,13 @@ from __future__ import annotations
 
 from pipflow.warehouse.language.names import Tok
 
+#: sounds of hesitation that may come before words that take back ("to P, ah no, to Q", "12, eh
+#: sorry 15"): they take nothing back themselves
+HESITATIONS = frozenset({"ah", "oh", "eh", "er", "erm", "um", "umm", "uh", "hmm", "ehm", "aah"})
 #: words that take back what was just said; one of them must be said for a place to be taken back
 #: ("no" alone may open a rule: "to P, no robots from Q")
 _TAKING_BACK = frozenset({"wait", "sorry", "scratch", "actually", "oops", "correction"})
-_TAKE_BACK_WORDS = _TAKING_BACK | {"no", "nah", "nope", "that", "i", "mean", "meant", "hold", "on"}
+_TAKE_BACK_WORDS = _TAKING_BACK | {"no", "nah", "nope", "that", "i", "mean", "meant", "hold", "on"} | HESITATIONS
 #: prepositions of a destination, and of a source: a place is taken back by one of its own kind
 _TO = frozenset({"to", "into", "onto"})
 _FROM = frozenset({"from", "off"})
@@ -59,7 +62,10 @@ def places_taken_back(toks: list[Tok]) -> list[Tok]:
                 j += 1
             again = _place_at(toks, j)
             marked = set(words) & _TAKING_BACK
-            if again is not None and marked and not stops and (said[0] in _TO) == (again[0] in _TO):
+            # "no" alone set off by commas before the place said again with its preposition ("to P,
+            # no, to Q"); "to P, no Q" may be a rule, and is left as said
+            no_alone = bool(set(words) & _NO) and toks[j - 1].kind == "punct" and toks[said[1]].kind == "punct"
+            if again is not None and (marked or no_alone) and not stops and (said[0] in _TO) == (again[0] in _TO):
                 k = j
                 continue
             alone = _place_alone(toks, j)
