@@ -129,6 +129,7 @@ def semi() -> dict:
     ("Put the kettle on bab, and switch the telly off", "switch the kettle on and switch the telly off"),
     ("Sling the beans on the table bab, and shut the fridge, ta", "put the beans on the table and close the fridge"),
     ("Mind yow shut the fridge after", "close the fridge"),
+    ("Dow leave the fridge open", "close the fridge"),
     ("Put the beans in the fridge, they'm on the side", "put the beans in the fridge"),
     ("Put the kettle on. Ta-ra-a-bit.", "switch the kettle on"),
     # a word of address before "and" / "then" that join the next order; "though" closing a clause

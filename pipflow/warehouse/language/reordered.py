@@ -395,12 +395,16 @@ def place_set_off(toks: list[Tok]) -> list[Tok]:
     for k, t in enumerate(toks):
         if t.kind == "punct" and t.value == "," and k and _name_at(toks, k - 1, "shelf"):
             the = k > 1 and _word_in(toks, k - 2, ("the",))
-            v = k + 1 + _word_in(toks, k + 1, _SAID_NOT)
-            if _clause_opens(toks, k - 1 - the) and _word_in(toks, v, _CHANGING | _KEEPING | _LEAVING) \
-                    and _word_in(toks, v + 1, ("it",)):
+            if _clause_opens(toks, k - 1 - the) and _takes_it_up(toks, k + 1 + _word_in(toks, k + 1, _SAID_NOT)):
                 continue
         out.append(t)
     return out
+
+
+def _takes_it_up(toks: list[Tok], v: int) -> bool:
+    """Whether a verb that keeps, leaves or changes a place stands at ``v`` with "it" after it
+    ("leave it as it is", "don't touch it"): "it" then takes up the place said first."""
+    return _word_in(toks, v, _CHANGING | _KEEPING | _LEAVING) and _word_in(toks, v + 1, ("it",))
 
 
 def _place_first(clause: list[Tok]) -> list[Tok] | None:
@@ -415,7 +419,7 @@ def _place_first(clause: list[Tok]) -> list[Tok] | None:
     negated = _word_in(clause, j, _SAID_NOT)
     v = j + negated
     # "rack A leave it as it is", "rack B dont touch it": "it" takes up the place said first
-    resumed = not things and _word_in(clause, v, _CHANGING | _KEEPING | _LEAVING) and _word_in(clause, v + 1, ("it",))
+    resumed = not things and _takes_it_up(clause, v)
     if resumed:
         clause = clause[:v + 1] + clause[v + 2:]
     rest = clause[v + 1:]
