@@ -47,6 +47,8 @@ if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
 from pipflow.errors import PipflowError, Refusal, WorldError  # noqa: E402
+from pipflow.meaning import rules_difference  # noqa: E402
+from pipflow.taskdomains import task_domain  # noqa: E402
 from pipflow.warehouse.meaning import goal_difference  # noqa: E402
 from pipflow.values import states_goal  # noqa: E402
 
@@ -168,11 +170,22 @@ def judge(task: dict, got: dict | None, error: BaseException | None, domain: str
     else:
         goals = (goal_difference(world, task.get("goal"), got.get("goal")) is None if world is not None
                  else warehouse_goal(got.get("goal")) == warehouse_goal(task.get("goal")))
-        same = goals and rules(got.get("constraints")) == rules(task.get("constraints"))
+        same = goals and _same_rules(task.get("constraints"), got.get("constraints"), world)
     if same:
         return "understood", "gold"
     return "misread", (f"got goal {got.get('goal')} rules {got.get('constraints') or []}; "
                        f"gold goal {task.get('goal')} rules {task.get('constraints') or []}")
+
+
+def _same_rules(gold: list | None, got: list | None, world: dict | None) -> bool:
+    """Whether two rule sets mean the same. With the world, as the bench compares them: by the
+    (robot, move) pairs they forbid (:func:`pipflow.meaning.rules_difference`: "only the day shift
+    robots" and "never the night shift ones" where every robot is on one of them are one rule);
+    without it, as :func:`rules` writes them."""
+    if world is None:
+        return rules(gold) == rules(got)
+    fields = {f: list(names) for f, (names, _) in task_domain(world).rule_names(world).items()}
+    return rules_difference(gold, got, list(world.get("robots") or {}), fields) is None
 
 
 def _refusal_verdict(must_refuse: bool, infeasible: bool, as_impossible: bool) -> str:

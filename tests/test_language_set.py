@@ -291,6 +291,24 @@ def test_judge_with_the_world_compares_goals_by_the_stocks_they_accept_as_the_be
     assert judge(task, open_zero, None, "warehouse", world)[0] == "misread"
 
 
+def test_judge_with_the_world_compares_rules_by_what_they_forbid_as_the_bench_does():
+    """ "Only day shift robots please, night shift is off": "only [the day shift]" read with "never
+    [the night shift]" beside it forbids what "only [the day shift]" does where every robot is on
+    one shift (the bench's verdict, chinika zm1-41); a "never" that forbids one more robot does not."""
+    judge = _translator().judge
+    world = {"shelves": {"rack": {"capacity": 20}, "ramp": {"capacity": 20}}, "products": {"meal": {}},
+             "stock": {"rack": {"meal": 4}},
+             "robots": {"d1": {"tags": ["day"]}, "d2": {"tags": ["day"]}, "n1": {"tags": ["night"]}}}
+    task = {"goal": {"ramp": {"meal": 2}}, "constraints": [{"only": ["d1", "d2"]}]}
+    same = {"goal": {"ramp": {"meal": 2}}, "constraints": [{"only": ["d1", "d2"]}, {"never": ["n1"]}]}
+    assert judge(task, same, None, "warehouse", world)[0] == "understood"
+    assert judge(task, same, None)[0] == "misread"            # as written, without the world
+    more = {"goal": {"ramp": {"meal": 2}}, "constraints": [{"only": ["d1", "d2"]}, {"never": ["d2"]}]}
+    assert judge(task, more, None, "warehouse", world)[0] == "misread"
+    scoped = {"goal": {"ramp": {"meal": 2}}, "constraints": [{"only": ["d1", "d2"], "to": "ramp"}]}
+    assert judge(task, scoped, None, "warehouse", world)[0] == "misread"
+
+
 def test_judge_verdicts_for_refusals_and_crashes():
     judge = _translator().judge
     clear = {"goal": {"a": {"x": 1}}}

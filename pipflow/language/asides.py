@@ -91,6 +91,9 @@ GREETINGS = frozenset({"hi", "hello", "hey", "hiya", "heya", "howdy", "morning",
                        "oi", "ola", "bom", "boa",
                        # Brummie goodbyes ("Tara bab", "ta-ra-a-bit": bye for now)
                        "tara", "tarra", "tarrar",
+                       # Bemba and Nyanja, said in Zambian English ("Mwaiseni!": welcome; "shani": how
+                       # are you; "natotela", "twatotela", "zikomo": thank you)
+                       "mwaiseni", "shani", "natotela", "twatotela", "zikomo",
                        # Swedish ("hej", "hejsan", "tjena", "hallå": hi)
                        "hej", "hejsan", "tjena", "halla",
                        # Greek ("Re paidia": hey, kids; "kalimera")
@@ -205,6 +208,8 @@ CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "
                      # Brummie and Midlands English ("..., bab", "... ta duck"); Ugandan English's
                      # Luganda "sebo" (sir), "nnyabo" (madam) and "bambi" (please)
                      "bab", "babs", "duck", "sebo", "ssebo", "nnyabo", "bambi",
+                     # Zambian English's Bemba and Nyanja thanks ("..., natotela")
+                     "natotela", "twatotela", "zikomo",
                      # Sri Lankan English ("..., machan"; "... to P already": at once, no report)
                      "machan", "machang", "already",
                      # Irish English ("..., deadly": great; "..., grma": thanks)
@@ -976,6 +981,8 @@ INTERJECTIONS = frozenset({
     # sympathy, "lekker"; Ghanaian "chale", "ei", "abi")
     "eish", "ag", "ja", "yebo", "hayibo", "haibo", "jislaaik", "lekker", "shame", "sho", "chale", "ei", "eii",
     "abi", "ehe",
+    # Bajan sympathy ("Cuhdear, ...", "..., cuhdear": poor dear)
+    "cuhdear",
     # Mexican Spanish opening an English order ("Oye, ...", "Bueno, ...": hey, well; "porfa": please;
     # "ahorita": right now; "ya": already; "órale", "ándale": come on)
     "oye", "oiga", "bueno", "pues", "porfa", "porfavor", "ahorita", "ya", "orale", "andale", "mira",

@@ -18,17 +18,22 @@ PATOIS = {"di": "the", "de": "the", "pon": "on", "inna": "in", "ina": "in", "een
           "tun": "turn", "lef": "leave", "mek": "make", "outta": "out of", "gi": "give",
           "haffi": "have to", "soh": "so", "waan": "want", "smaddy": "somebody", "wi": "we",
           # Guyanese Creole's own ("leh we move ...": let; "gotta"; "fuh" is "fi")
-          "leh": "let", "gotta": "have to"}
+          "leh": "let", "gotta": "have to",
+          # Bajan's own ("put it pun de table", "put dem een de fridge", "doan touch it", "wunna wash
+          # dem": you all; "uh gine cook": I am going to; "ent": is not)
+          "pun": "on", "een": "in", "doan": "do not", "wunna": "you", "gine": "going to", "ent": "is not"}
 #: words that show a command is in patois: two different ones and the map applies
 MARKERS = frozenset({"di", "pon", "inna", "dem", "fi", "mi", "nuh", "tek", "weh", "deh", "cyaan", "yuh", "dat",
                      "den", "outa", "tings", "ting", "unu", "tun", "lef", "mek", "outta", "dutty", "gi", "haffi",
-                     "soh", "waan", "smaddy", "an", "de", "fuh", "wid", "wha", "leh"})
+                     "soh", "waan", "smaddy", "an", "de", "fuh", "wid", "wha", "leh", "pun", "een", "muh", "doan",
+                     "wunna", "gine", "ent", "dey"})
 #: markers that are no English word: one of them alone is enough ("put it back pon him study desk",
 #: "tun off di TV", "mi want 40 X in P", "shift 6 of dem over")
 STRONG_MARKERS = frozenset({"mi", "dem", "di", "pon", "inna", "cyaan", "outa", "tek", "yuh", "nuh", "fi", "unu", "weh",
-                            "lef", "mek", "outta", "dutty", "haffi", "soh", "waan", "smaddy", "fuh"})
+                            "lef", "mek", "outta", "dutty", "haffi", "soh", "waan", "smaddy", "fuh", "pun", "een",
+                            "muh", "doan", "wunna", "gine"})
 #: every word the patois read may give an English word of its own
-CREOLE_WORDS = frozenset(PATOIS) | MARKERS | {"wha", "ah", "weh", "deh", "got"}
+CREOLE_WORDS = frozenset(PATOIS) | MARKERS | {"wha", "ah", "weh", "deh", "got", "he", "she", "uh", "all", "out"}
 #: words after "fi" that make it "for" (who or what for: "fi mi", "fi di children"); before
 #: anything else "fi" is "to" ("mi need fi pack it")
 FOR_WHOM = frozenset({"mi", "di", "de", "dem", "him", "yuh", "unu", "we", "she", "he", "dat", "dis", "me", "the",
@@ -49,9 +54,19 @@ _PUTTING = frozenset({"put", "lay", "set", "rest", "leave", "place"})
 _SUBJECTS = frozenset({"yuh", "you", "unu", "mi", "i", "we", "wi", "him", "he", "she", "dem", "they", "it"})
 #: where a clause ends
 _ENDS = frozenset({",", ".", ";", ":", "!", "?"})
+#: words that open a clause, after which Bajan "uh" is I and "dey" they ("when uh come", "before dey spoil")
+_CLAUSE_OPENERS = frozenset({"and", "but", "so", "when", "before", "after", "till", "until", "because", "cause",
+                             "where", "while", "if", "since", "that"})
+#: particles of a verb, after which "dem" is its object ("put dem back een de fridge"), even where a
+#: thing's name holds the word ("back room light")
+PARTICLES = frozenset({"back", "up", "down", "away", "out", "in", "off", "on", "over", "round", "inside"})
+#: articles and demonstratives, after which Bajan "out" at the head of an order is "turn off"
+_ARTICLES = frozenset({"de", "di", "the", "dat", "dis", "that", "this", "all"})
 
 #: a stand-in for "dem" after a thing: its plural, no word of its own (the caller makes the thing plural)
 PLURAL = ""
+#: a stand-in for a word that is part of the English word read before it ("all two": both)
+LEFT_OUT = "\x00"
 
 
 def english_of(words: list[str], known: Callable[[str], bool], noun: Callable[[str], bool],
@@ -78,14 +93,28 @@ def english_of(words: list[str], known: Callable[[str], bool], noun: Callable[[s
         said_before = out[k - 1] if k and out[k - 1] else words[k - 1] if k else "."
         before = said_before.split()[-1]   # the word before, as read ("pon mi": on me)
         nxt = words[k + 1] if k + 1 < len(words) else "."
-        if w == "mi":
+        if w in ("mi", "muh"):   # Jamaican "mi", Bajan "muh"
             said = "my" if noun(nxt) else "me" if k and before in _BEFORE_ME else "i"
-        elif w == "him":
-            said = "his" if noun(nxt) else None
+        elif w in ("him", "he", "she"):   # "tek he school bag", "she macaroni pie", "fuh she": his, her
+            objective = {"she": "her", "he": "him"}.get(w) if k and before in _BEFORE_ME else None
+            said = objective if objective and (nxt in _ENDS or nxt in _CLAUSE_OPENERS) else \
+                {"she": "her"}.get(w, "his") if noun(nxt) else objective
+        elif w == "uh" and (not k or before in _ENDS or before in _CLAUSE_OPENERS) and nxt not in _ENDS:
+            said = "i"   # Bajan "uh gine cook", "when uh come back": I
+        elif w == "dey":   # Bajan "leave dem right dey": there; "dey is fuh Jamal", "before dey spoil": they
+            said = "they" if not k or before in _ENDS or before in _CLAUSE_OPENERS else "there"
+        elif w == "all" and nxt == "two" and (k + 2 >= len(words) or not words[k + 2][:1].isdigit()):
+            said = "both"   # Bajan "wash all two o' dem": both (the "two" is left out below)
+        elif w == "two" and before == "both":
+            said = LEFT_OUT
+        elif w == "out" and (not k or before in _ENDS or before in _BEFORE_AN_ORDER) and nxt in _ARTICLES:
+            said = "turn off"   # Bajan "out de light": switch it off
+        elif w == "nuh" and nxt in _ENDS and k and before not in _BEFORE_AN_ORDER:
+            said = "please"   # "put dem back, nuh.": a tag that urges, no negation
         elif w == "dem" and k and before not in _BEFORE_ME and (noun(before) or before in _PLURAL_AFTER):
             said = PLURAL
         elif w == "dem":   # "dem painting de floor": they (a subject, opening its clause)
-            said = "those" if noun(nxt) else "they" if not k or before in _ENDS else "them"
+            said = "those" if noun(nxt) and nxt not in PARTICLES else "they" if not k or before in _ENDS else "them"
         elif w in ("fi", "fuh"):   # Jamaican "fi", Guyanese "fuh"
             said = "for" if nxt in FOR_WHOM or noun(nxt) else \
                 "should" if k and (before in _SUBJECTS or noun(before)) and nxt not in _ENDS else "to"
@@ -122,9 +151,10 @@ def english_of(words: list[str], known: Callable[[str], bool], noun: Callable[[s
 
 
 def _article_before_a_name(words: list[str], known: Callable[[str], bool], noun: Callable[[str], bool]) -> bool:
-    """Whether "de" stands before a name of the world's things after a word that is no thing and
-    no count ("send 6 to de counter"): the Creole article, not the Romance "of"."""
-    return any(w == "de" and k + 1 < len(words) and known(words[k + 1])
+    """Whether "de" stands before a name of the world's things (or a word of one: "out de kitchen
+    light") after a word that is no thing and no count ("send 6 to de counter"): the Creole
+    article, not the Romance "of"."""
+    return any(w == "de" and k + 1 < len(words) and (known(words[k + 1]) or noun(words[k + 1]))
                and (not k or not noun(words[k - 1]) and not known(words[k - 1]) and not words[k - 1][:1].isdigit())
                for k, w in enumerate(words))
 

@@ -12,7 +12,7 @@ from pipflow.household.language.restated import DETERMINERS
 from pipflow.household.language.tokens import PUNCT
 from pipflow.language import pidgin
 from pipflow.language.english import dropped_g
-from pipflow.language.patois import PLURAL, english_of
+from pipflow.language.patois import LEFT_OUT, PARTICLES, PLURAL, english_of
 from pipflow.language.quebec import QUEBEC
 from pipflow.language.scots import SCOTS
 
@@ -43,6 +43,8 @@ def patois_as_english(words: list[str], known: Callable[[str], bool], noun: Call
                 next((out[-1] + end for end in ("s", "es") if noun(out[-1] + end)), None)   # "boots dem": boots
             notes.append(f"'{out[-1]} dem' read as '{plural or out[-1]}' (Jamaican Creole: a plural)")
             out[-1] = plural or out[-1]
+            continue
+        if said == LEFT_OUT:   # "all two": both, said already
             continue
         _said_as(out, w, said, "Jamaican Creole", notes)
     return out
@@ -236,18 +238,27 @@ TWO_OBJECT_VERBS = {"give", "bring", "get", "fetch", "hand", "pass", "make", "se
 
 def them_as_those(words: list[str], index: dict, notes: list[str]) -> list[str]:
     """The words with "them" read as "those" where a name of the home follows it at once ("wash
-    them mugs", "them tea things on the table"): as a pronoun, "them" is never followed by a noun.
+    them mugs", "them tea things on the table"): as a pronoun, "them" is never followed by a noun,
+    but it is by a particle that may also begin a name ("put them back", where a "back room light" is).
     ``index``: the world's phrases (:func:`pipflow.household.language.names.world_phrases`)."""
     firsts = first_words(index)
     out: list[str] = []
     for k, w in enumerate(words):
         nxt = words[k + 1] if k + 1 < len(words) else "."
         before = out[-1] if out else "."
-        if w == "them" and nxt not in PUNCT and nxt in firsts and before not in TWO_OBJECT_VERBS:
+        if w == "them" and nxt not in PUNCT and nxt in firsts and before not in TWO_OBJECT_VERBS \
+                and (nxt not in PARTICLES or _name_at(words, k + 1, index)):   # "put them back in the fridge"
             notes.append(f"'them {nxt}' read as 'those {nxt}' (dialect)")
             w = "those"
         out.append(w)
     return out
+
+
+def _name_at(words: list[str], at: int, index: dict) -> bool:
+    """Whether a whole name of the home (a phrase of ``index``) begins at ``at``: "back room light"
+    in "switch off them back room lights", not "back" alone in "put them back in the fridge"."""
+    spans = [words[at:at + n] for n in range(2, 5) if at + n <= len(words)]
+    return any(tuple(span) in index or tuple(span[:-1] + [span[-1].rstrip("s")]) in index for span in spans)
 
 
 #: words before the name of a thing that switches ("off all the lights")

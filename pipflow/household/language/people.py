@@ -34,8 +34,8 @@ import re
 from typing import Collection
 
 from pipflow.errors import TranslationError
-from pipflow.household.language.dialect import TWO_OBJECT_VERBS
-from pipflow.household.language.lexicon import (AIR_CUES, FILLER, LIGHT_CUES, PHRASES, PURPOSE_WORDS,
+from pipflow.household.language.dialect import TWO_OBJECT_VERBS, patois_in_home
+from pipflow.household.language.lexicon import (AIR_CUES, FILLER, LIGHT_CUES, PHRASES, PURPOSE_WORDS, ROOM_WORDS,
                                                 TEMPERATURE_ADJECTIVES, TEMPERATURE_CUES, words_of)
 from pipflow.household.language.names import home_words, per_world, world_phrases
 from pipflow.household.language.rewrites import CLOSING_PARTICLES, CONSUMED
@@ -100,27 +100,54 @@ _TITLE_GLUE = frozenset({"the", "of", "and", "in", "on", "under", "a", "an", "to
 _OWNER = re.compile(r"^(?:the\s+)?(.+?)(?:['\u2019]s|(?<=s)['\u2019])\s")
 
 
-def owners(world: dict, words: list[str]) -> dict[tuple[str, ...], list[tuple[str, ...]]]:
+def owners(world: dict, words: list[str],
+           proper: Collection[str] = frozenset()) -> dict[tuple[str, ...], list[tuple[str, ...]]]:
     """The home's people (:func:`_owner_candidates`) for a command of ``words``: a name said
     without "'s" ("minjun bed") counts only where the command says it and it is no common English
-    word ("kitchen" of "kitchen sink", "kitchen table" is none). The English word list is asked
-    only then: loading it costs a second and some 16 MB, which most commands never need."""
-    people, named = _owner_candidates(world)
-    if not named:
+    word ("kitchen" of "kitchen sink", "kitchen table" is none), or where the command writes it as
+    a name (``proper``: :func:`proper_names`; "for Michelle" where the home has a "michelle bed",
+    "Jamal coming home" where it has a "jamal desk", names an English word list holds too). Only the
+    reading of people (:class:`_Reader`) passes ``proper``: a name said before a thing ("put Elsa
+    cup in the sink" where the home has an "Elsa doll") is never taken for its owner by it, as it
+    may be the thing's make or character. The English word list is asked only then: loading it
+    costs a second and some 16 MB, which most commands never need."""
+    people, named, once = _owner_candidates(world)
+    if not named and not once:
         return people
     said = set(words)
     return {who: names for who, names in people.items()
-            if who not in named or (who[0] in said and not common_word(who[0]))}
+            if (who not in named and who not in once) or who[0] in said and (
+                who[0] in proper or who in named and not common_word(who[0]))}
+
+
+def proper_names(command: str) -> frozenset[str]:
+    """The words a command writes as names, lower-cased: capitalised, after no article or
+    possessive, and no word of a room ("heat it for Michelle", "Jamal coming home"; never "Turn off
+    the Kitchen light"). Only a word the home's own names put before a thing's name is then taken
+    for a person (:func:`owners`), and never where it and what follows are a name of the home
+    themselves ("Gallery light on")."""
+    found = set()
+    for m in re.finditer(r"(?:(\w+)\W*\s+|^\W*)([A-Z][a-z]+)\b", command):
+        before, word = (m.group(1) or "").lower(), m.group(2).lower()
+        if before not in _BEFORE_NO_NAME and word not in ROOM_WORDS:
+            found.add(word)
+    return frozenset(found)
+
+
+#: words after which a capitalised word is a thing's name, not a person's ("the Kitchen light")
+_BEFORE_NO_NAME = frozenset({"the", "de", "di", "da", "a", "an", "this", "that", "dat", "dis", "my", "our", "your",
+                             "his", "her", "their", "muh", "mi"})
 
 
 @per_world
 def _owner_candidates(world: dict) -> tuple[dict[tuple[str, ...], list[tuple[str, ...]]],
-                                           frozenset[tuple[str, ...]]]:
+                                           frozenset[tuple[str, ...]], frozenset[tuple[str, ...]]]:
     """The people of the home as its own words name them, who own its things ("papa's mug", "ah
     ma's bed", "jun hao's bag": papa, ah ma, jun hao; also without "'s": :func:`_owner_unmarked`), and
-    of those the names said without "'s", which :func:`owners` checks against English words; each with the names of the home that open
-    with their words ("ah ma bed"), where those words name a thing and no person. A thing of the
-    home is never an owner ("the fridge's door")."""
+    of those the names said without "'s" before two things' names or more, which :func:`owners`
+    checks against English words, and before one, which it takes only as written as a name; each
+    with the names of the home that open with their words ("ah ma bed"), where those words name a
+    thing and no person. A thing of the home is never an owner ("the fridge's door")."""
     index = world_phrases(world)
     found: set[tuple[str, ...]] = set()
     unmarked: dict[tuple[str, ...], set[str]] = {}
@@ -141,10 +168,14 @@ def _owner_candidates(world: dict) -> tuple[dict[tuple[str, ...], list[tuple[str
     found |= {who for who, things in unmarked.items() if who not in index and who[0] in KIN}
     # (checked as English by :func:`owners`; a name the home's words also say with "'s", "Baba's
     # glasses", is a person whatever it is in English)
-    named = frozenset(who for who, things in unmarked.items() if who not in index and who[0] not in KIN
-                      and who not in found and len(things) > 1 and (who[0],) not in PHRASES)
+    maybe = {who: things for who, things in unmarked.items() if who not in index and who[0] not in KIN
+             and who not in found and (who[0],) not in PHRASES}
+    named = frozenset(who for who, things in maybe.items() if len(things) > 1)
+    # a word before one thing's name ("michelle bed") is a person only where a command writes it
+    # as a name (:func:`owners`)
+    once = frozenset(maybe) - named
     return {who: [key for key in index if len(key) > len(who) and key[:len(who)] == who]
-            for who in found | named}, named
+            for who in found | named | once}, named, once
 
 
 def _owner_unmarked(phrase: str) -> tuple[str, ...]:
@@ -320,13 +351,15 @@ class _Reader:
     """The words of one command, with who in it is a person (module docstring)."""
 
     def __init__(self, command: str, world: dict) -> None:
-        self.words = words_of(command)
-        self.capitalised = {w.lower() for w in re.findall(r"(?<![\w'’])[A-Z][a-z]+", command)}
         self.index = world_phrases(world)
+        #: what the words were read as before the people in them ("fuh he": for him, in patois)
+        self.read_as: list[str] = []
+        self.words = patois_in_home(words_of(command), self.index, self.read_as)
+        self.capitalised = {w.lower() for w in re.findall(r"(?<![\w'’])[A-Z][a-z]+", command)}
         self.world = world
         self.home = home_words(self.index)
         self.vocab = vocabulary(self.index)
-        self.owners = owners(world, self.words)
+        self.owners = owners(world, self.words, proper_names(command))
 
     def known(self, w: str, typos: bool = True) -> bool:
         """Whether a word is a word of the home's names, of the lexicon or its fillers, a function
@@ -585,7 +618,7 @@ def about_people(command: str, world: dict, notes: list[str]) -> str | None:
         k += 1
     if not changed:
         return None
-    notes += said
+    notes += r.read_as + said
     return " ".join(_tidied(out, place if spans else None))
 
 

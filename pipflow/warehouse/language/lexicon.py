@@ -18,7 +18,8 @@ from lark import Token
 
 from pipflow.errors import InputError, Refusal, TranslationError
 from pipflow.language.asides import (ADDRESSEES, BACK_REFERENCES, CLOSERS, FUNCTION_WORDS, GREETINGS, INTERJECTIONS,
-                                     OPERATIVE, SUBJECTS, TALK, Clause, clauses, content_free, is_opener, leading_adjunct,
+                                     OPERATIVE, SUBJECTS, TALK, VOCATIVES, Clause, clauses, content_free, is_opener,
+                                     leading_adjunct,
                                      leading_reason, restates_what_stays, said_talk, signature, trailing_adjunct,
                                      trailing_thanks, unmarked_statement)
 from pipflow.language.asterisk import star_corrections
@@ -26,7 +27,7 @@ from pipflow.language.characters import (accents_folded, declared_spellings, non
                                          without_expressions)
 from pipflow.language.english import common_word, dropped_g
 from pipflow.language.numbers import NUMBER_WORDS, TENS, UNITS, is_number
-from pipflow.language.patois import CREOLE_WORDS, PLURAL, english_of
+from pipflow.language.patois import CREOLE_WORDS, LEFT_OUT, PLURAL, english_of
 from pipflow.language.radio import transmission
 from pipflow.language.quebec import QUEBEC
 from pipflow.language.scots import SCOTS
@@ -1711,7 +1712,7 @@ class Lexicon:
         for t, read in zip(toks, english):
             if read is None:
                 out.append(t)
-            elif read != PLURAL:
+            elif read not in (PLURAL, LEFT_OUT):
                 first, *rest = read.split()
                 out += [Tok("word", t.text, first)] + [Tok("word", "", x) for x in rest]
         return out
@@ -1801,6 +1802,22 @@ class Lexicon:
                     and word not in self.keywords and word not in VERB_LEXICON and word not in OPERATIVE
                     and k + 1 < len(toks) and toks[k + 1].kind != "punct"
                     and not (toks[k + 1].kind == "word" and toks[k + 1].value in ADDRESSEES)):
+                out.append(Tok("punct", ",", ","))
+        return out
+
+    def _vocative_set_off(self, toks: list[Tok]) -> list[Tok]:
+        """The tokens with a comma after a word said only to the one asked that opens a sentence
+        before its order ("boss the counter shouldn't drop below 10", "mate move 3 X to P"): as
+        "Boss, ..." it is set aside as ever. Only before an article or a verb of the reader, and
+        never a word of the grammar or a name of the world (those are tokens of their own kind)."""
+        out: list[Tok] = []
+        for k, t in enumerate(toks):
+            out.append(t)
+            opens = k == 0 or (toks[k - 1].kind == "punct" and toks[k - 1].value in (".", ";", "!", "?", ":"))
+            nxt = toks[k + 1] if k + 1 < len(toks) else None
+            if (opens and t.kind == "word" and str(t.value) in VOCATIVES and str(t.value) not in self.keywords
+                    and nxt is not None and nxt.kind == "word"
+                    and (str(nxt.value) in DEFINITE | {"a", "an"} or str(nxt.value) in VERB_LEXICON)):
                 out.append(Tok("punct", ",", ","))
         return out
 
@@ -2053,7 +2070,8 @@ class Lexicon:
             fixed.append(t)
         verbs = {w for w in self.keywords if " " not in w} | set(VERB_LEXICON)
         toks = self._definite_groups(them_as_determiner(read_counts(_split_hyphens(
-            this_job_announced(case_endings(topic_marked(self._interjection_set_off(fixed)))), self.keywords))))
+            this_job_announced(case_endings(topic_marked(self._vocative_set_off(self._interjection_set_off(fixed))))),
+            self.keywords))))
         toks, framed = without_request_frames(orders_taken_back(places_taken_back(toks), _ORDER_VERBS | _CHANGE_VERBS), verbs)
         toks = places_then_each(by_as_among(toks))   # before "by" is read as "at"
         toks = only_after_a_move(source_after_verb(of_as_from(place_as_it(by_as_at(toks)))))

@@ -144,6 +144,7 @@ def _set(st: _State, s: dict) -> None:
     for p in places:
         for i in items:
             if "count" in a:
+                _refuse_undoing_a_change(st, p, i, int(a["count"]), words)
                 st.put(p, i, int(a["count"]), f"set {a['count']}", words, True)
             elif a.get("none"):
                 st.put(p, i, 0, "set 0", words, True)
@@ -172,6 +173,19 @@ def _set(st: _State, s: dict) -> None:
                 raise TranslationError(f"'{words}': 'the rest' of what? say where it comes from")
             else:
                 raise TranslationError(f"'{words}': cannot tell the count")
+
+
+def _refuse_undoing_a_change(st: _State, place: str, item: str, value: int, words: str) -> None:
+    """Refuse a final count said after a statement that changed the same count to another one.
+
+    "Take 4 X off P (it has 7 X now)", "take 4 X off P and P should have 7": read in turn, the
+    count would silently undo the change (the robots would take nothing off). Which one is meant
+    is not guessed; a count that agrees with the change ("move 3 to P and P should have 10" where P
+    has 7) is read."""
+    key = (place, item)
+    if key not in st.fixed and key in st.changed_by and st.cur(place, item) != value:
+        raise TranslationError(f"'{st.changed_by[key]}' changes {item} on {place} to {st.cur(place, item)}, "
+                               f"but '{words}' says {value}: cannot tell which is meant")
 
 
 def _change(st: _State, s: dict) -> None:
