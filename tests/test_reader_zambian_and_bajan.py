@@ -40,7 +40,7 @@ MATERO = {
     "Take 4 mealie meal off the ramp (it has 7 bags of mealie meal now)",
     "take 4 mealie meal off the ramp, it has 7 mealie meal now",
     "Take 4 mealie meal off the ramp and the ramp should have 7 mealie meal",
-    "Double the oil on the front rack, the front rack should have 9 oil",
+    "Double the hard hats on the front rack, the front rack should have 6 hard hats",
     "Move 3 hard hats from the ramp to the back rack, the ramp should have 5 hard hats",
 ])
 def test_a_count_that_would_undo_a_change_of_it_is_refused(said: str) -> None:

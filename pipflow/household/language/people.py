@@ -22,8 +22,11 @@ Who is a person (never a word of the home's names or of the reader's lexicon, no
 Jones"); a title with a name after it ("Father Tom", "Mrs Patel", typed in lower case too:
 "father tom": after a title, a word of no name of the home and of no lexicon is the name); a
 capitalised word (or run of them) that is nobody's word ("Tom"); who the home's own words say owns
-a thing ("papa" of "papa's mug", "ah ma" of "ah ma's bed": :func:`owners`), in lower case too. Any
-other lower-case word alone is never a name: "tom" may be a typo, "for tom" is at most a purpose.
+a thing ("papa" of "papa's mug", "ah ma" of "ah ma's bed": :func:`owners`), in lower case too, and
+a word the home's words put before one thing's name ("michelle bed") where the command writes it as
+a name ("for Michelle": :func:`proper_names`). Any other lower-case word alone is never a name:
+"tom" may be a typo, "for tom" is at most a purpose. People are read after the command's Creole
+words ("fuh he": for him).
 
 The parser tries this only when a command does not read as said, so nothing that read before
 reads otherwise; the rewritten command must still read whole, every word placed.
