@@ -138,6 +138,8 @@ ADDRESSEES = frozenset({"all", "everyone", "everybody", "team", "folks", "guys",
                         "there", "you", "mate", "mates", "yall", "crew", "robots", "bots", "y", "again", "so",
                         "much", "very", "a", "lot", "in", "advance", "love", "loves", "dear", "dears", "darling",
                         "pet", "hun", "honey", "sweetie", "chaps", "pal", "pals", "buddy", "boys", "girls", "ladies",
+                        # Tok Pisin "boi", "bois" (lads: "morning boi")
+                        "boi", "bois",
                         "gents", "gentlemen", "kids", "sir", "madam", "friends", "colleagues", "staff", "squad",
                         # Welsh English ("Morning bud", "Alright butt")
                         "bud", "butt", "butty", "bach",
@@ -947,6 +949,24 @@ def is_opener(words: Iterable[str]) -> bool:
     while ws and ws[0] in _OPENER_LEADS:
         ws = ws[1:]
     return tuple(w for w in ws if w not in CLOSERS) in OPENERS
+
+
+#: what opens a command that replaces an earlier one ("Change of plan: ...", "orait change of plan.
+#: ..."): said first, it asks nothing; said after an order it takes that order back, so it is an
+#: opener only where nothing was asked before it (:func:`opens_changed_plan`)
+PLAN_CHANGES = frozenset({("change", "of", "plan"), ("change", "of", "plans"), ("change", "in", "plan"),
+                          ("change", "in", "plans"), ("plan", "change"), ("new", "plan"), ("plans", "changed"),
+                          ("plan", "changed"), ("slight", "change", "of", "plan"), ("slight", "change", "of", "plans")})
+
+
+def opens_changed_plan(words: Iterable[str]) -> bool:
+    """Whether a whole clause, said first in a command, only says the plan has changed ("Change of
+    plan", "alright, new plan", "ok change of plans guys"): with words that lead it and words it is
+    said to (:data:`CLOSERS`). Only a command's first clause may be read so."""
+    ws = tuple(w for w in words if w)
+    while ws and ws[0] in _OPENER_LEADS:
+        ws = ws[1:]
+    return tuple(w for w in ws if w not in CLOSERS) in PLAN_CHANGES
 
 
 def said_talk(words: Iterable[str], names: Callable[[str], bool]) -> bool:

@@ -15,6 +15,7 @@ from pipflow.language.english import dropped_g
 from pipflow.language.patois import LEFT_OUT, PARTICLES, PLURAL, english_of
 from pipflow.language.quebec import QUEBEC
 from pipflow.language.scots import SCOTS
+from pipflow.language.tokpisin import TOK_PISIN
 
 #: Québec French words said in English at home: the shared ones and the verbs of chores ("ferme the
 #: TV": close, so off; "réchauffe the soup": heat)
@@ -148,7 +149,7 @@ def scots_as_english(words: list[str], known: Callable[[str], bool], notes: list
             k += 2
             continue
         said = "all" if (w == "aw" and nxt in _ALL_OF or w == "aal" and nxt in _ALL_OF | _OVER) and not known(w) else \
-            SCOTS.get(w) if w not in _SCOTS_ALSO_ENGLISH and not known(w) else None
+            (SCOTS.get(w) or TOK_PISIN.get(w)) if w not in _SCOTS_ALSO_ENGLISH and not known(w) else None
         if said is None and not known(w):
             said = dropped_g(w)   # "washin", "gettin", "comin"
         if said is not None:

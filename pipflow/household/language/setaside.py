@@ -16,6 +16,7 @@ from pipflow.household.language.typos import typo_of, vocabulary
 from pipflow.household.language.unseen import unseen
 from pipflow.language.asides import (BOUNDS, EXCLUSIVITY, FUNCTION_WORDS, NEGATION, OPERATIVE, QUANTITIES, SELECTION, TEMPORAL,
                                      PLEASANTRIES, THANKS, Clause, clauses, content_free, is_opener, near_operative,
+                                     opens_changed_plan,
                                      signature, trailing_adjunct, trailing_thanks, trailing_vocatives,
                                      unmarked_statement)
 from pipflow.language.english import common_word
@@ -465,7 +466,7 @@ def without_asides(command: str, world: dict) -> Trimmed | None:
     remark = _remark(world, content)
     free = [c for c in parts if content_free(_without_talk(_without_times(c.words)), content, content, reports=True,
                                              robot=robots.__contains__) or remark(c.words)
-            or (c is parts[0] and is_opener(c.words))]   # "Two things: ...", "Quick one, ..."
+            or (c is parts[0] and (is_opener(c.words) or opens_changed_plan(c.words)))]   # "Two things: ...", "Quick one, ..."
     if len(parts) > 1 and parts[-1] not in free and signature(parts[-2].words, parts[-1].words):
         free.append(parts[-1])   # "Regards, Tom": the writer's name
     own = [c for c in parts if c not in free and speaker_doing(c.words, people)]

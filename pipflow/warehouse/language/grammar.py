@@ -388,7 +388,8 @@ goal: there_be items loc                                  -> g_set
     | places ("shouldnt" | "mustnt" | "cant" | "cannot" | "wont" | modal ("not" | "never")) setv ("more" "than" | "over" | "above") NUM of? ihead resumptive? -> g_ceiling
     | places ("shouldnt" | "mustnt" | "cant" | "cannot" | "wont" | modal ("not" | "never")) setv ("fewer" "than" | "less" "than" | "under" | "below") NUM of? ihead resumptive? -> g_floor
     | places modal? "keep" "only"? items                     -> g_keep_part
-    | places modal? ("keep" | "retain") its NUM? ihead (lsep its? NUM? ihead)* -> g_keep_its
+    // "P keeps its X as it is": said of the place, in the third person too
+    | places modal? ("keep" | "keeps" | "retain" | "retains") its NUM? ihead (lsep its? NUM? ihead)* as_is? -> g_keep_its
     | emptyv places                                        -> g_empty
     | places modal? be? emptied                            -> g_empty
     | places modal? "hold" "nothing"                        -> g_empty

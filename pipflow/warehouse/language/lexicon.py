@@ -19,9 +19,8 @@ from lark import Token
 from pipflow.errors import InputError, Refusal, TranslationError
 from pipflow.language.asides import (ADDRESSEES, BACK_REFERENCES, CLOSERS, FUNCTION_WORDS, GREETINGS, INTERJECTIONS,
                                      OPERATIVE, SUBJECTS, TALK, VOCATIVES, Clause, clauses, content_free, is_opener,
-                                     leading_adjunct,
-                                     leading_reason, restates_what_stays, said_talk, signature, trailing_adjunct,
-                                     trailing_thanks, unmarked_statement)
+                                     leading_adjunct, leading_reason, opens_changed_plan, restates_what_stays,
+                                     said_talk, signature, trailing_adjunct, trailing_thanks, unmarked_statement)
 from pipflow.language.asterisk import star_corrections
 from pipflow.language.characters import (accents_folded, declared_spellings, non_ascii_words, refuse_unread, turkish_i,
                                          without_expressions)
@@ -31,10 +30,12 @@ from pipflow.language.patois import CREOLE_WORDS, LEFT_OUT, PLURAL, english_of
 from pipflow.language.radio import transmission
 from pipflow.language.quebec import QUEBEC
 from pipflow.language.scots import SCOTS
+from pipflow.language.tokpisin import TOK_PISIN
 from pipflow.language.spelling import distance, normalize, plural_forms, slip, tolerance
 from pipflow.warehouse.language.grammar import ASIDE_ONLY, ORDER_VERBS
 from pipflow.warehouse.language.names import (CONTAINERS, KIND_WORDS, PACKAGING_WORDS, POSS_MARK, STOPWORDS,
                                               NameIndex, Tok, read_counts, recognize)
+from pipflow.warehouse.language.restatedscope import item_scope_restated
 from pipflow.warehouse.language.roles import read_by_roles
 from pipflow.warehouse.language.reordered import (base_verb, by_as_among, count_after_item, destination_first,
                                                 fronted_source, item_as_subject, needs_doing, object_before_verb,
@@ -126,6 +127,12 @@ SPELLINGS = {"shud": "should", "shld": "should", "u": "you", "r": "are", "wont":
 SPELLINGS |= SCOTS
 #: and Québec French words said in English ("move 4 X to P pis empty Q": then), as at home
 SPELLINGS |= QUEBEC
+#: and Tok Pisin words said in Papua New Guinea English ("tekim 10 X from P", "wanpela more", "plis")
+SPELLINGS |= TOK_PISIN
+#: words for people that name robots after a robot group ("the night shift boys", "the backup bois",
+#: "the strongest boi": :meth:`Lexicon._people_as_robots`)
+PEOPLE_AS_ROBOTS = frozenset({"boys", "bois", "lads", "guys", "fellas", "fellows", "blokes", "girls", "crew", "gang",
+                              "boy", "boi", "lad", "guy", "fella", "fellow", "bloke", "girl"})
 #: texting's one-letter words, as typed in lower case ("mezz n dock", "end up w a dozen"); a capital
 #: "N" or "W" is more often north or west ("N cage"), and is left alone
 LETTER_WORDS = {"n": "and", "w": "with"}
@@ -150,11 +157,13 @@ def _as_said_in_full(word: str, tok: Tok | None = None) -> str:
     is never a slip of a name, or the word said with "in" for "ing" ("chargin"): a remark "dey
     chargin" is talk as "they charging" is. A Creole word the patois read gave an English word of
     its own (``tok``: "leh dem stay", let them stay) is that word ("nah" read as "not" is never the
-    interjection "nah": the negation would be lost). A repair of a slip is not: "Big day today" is
-    no "bit day"."""
+    interjection "nah": the negation would be lost), as a Tok Pisin word is its English word. A
+    repair of a slip is not: "Big day today" is no "bit day"."""
     read = str(tok.value) if tok is not None else word
     if read != word and " " not in read and word in CREOLE_WORDS:
         return read
+    if word in TOK_PISIN:   # a word of another language, no slip: "emi too slow" is "its too slow"
+        return TOK_PISIN[word]
     said = SPELLINGS.get(word)
     if said in _SAID_AS:
         return said
@@ -1821,6 +1830,41 @@ class Lexicon:
                 out.append(Tok("punct", ",", ","))
         return out
 
+    def _people_as_robots(self, toks: list[Tok]) -> list[Tok]:
+        """The tokens with a word for people read as robots where a robot group says whose they are
+        ("the night shift boys keep out of P", "the backup bois", "the strongest boi", "only boys
+        that carry 4 or more"): after a robot kind, tag, name stem or superlative
+        (:meth:`_says_robots`), or before "that", "which" or "who" and a skill of the world's robots;
+        never before a word for robots ("the night crew robots": the crew is the tag's). Said alone
+        ("the boys counted it", "lads, ...") such a word is read as before."""
+        out: list[Tok] = []
+        for k, t in enumerate(toks):
+            word = t.text.lower()   # as written: "lads" is no slip of "loads" here
+            nxt = toks[k + 1] if k + 1 < len(toks) else None
+            robots_next = nxt is not None and (nxt.of == "robot" or self._group(nxt.text) is not None)
+            if t.kind == "word" and word in PEOPLE_AS_ROBOTS and self._group(t.text) is None and not robots_next \
+                    and ((k and self._says_robots(toks[k - 1])) or self._skill_follows(toks, k + 1)):
+                t = Tok("kind", t.text, "robot", "robot")   # as the lexer reads "robots" and "robot"
+            out.append(t)
+        return out
+
+    def _says_robots(self, tok: Tok) -> bool:
+        """Whether a token names robots as a word before a noun does: a robot kind, tag or name stem
+        as declared, not its plural ("the forklift guys"; in "use the forklifts lads" the lads are
+        the ones asked), or a superlative ("the strongest boi")."""
+        low = normalize(tok.text)
+        return tok.kind in ("word", "kind") and bool(low) and (
+            any(low == normalize(g) for g in self.kinds | self.tags | self.robot_stems) or str(tok.value) in SUPERLATIVES)
+
+    def _skill_follows(self, toks: list[Tok], k: int) -> bool:
+        """Whether "that", "which" or "who" and a skill of the world's robots (its verb) open at ``k``
+        ("... boys that carry 4 or more", "... that can carry 5")."""
+        said = [str(t.value) for t in toks[k:k + 3] if t.kind == "word"]
+        if said[:1] not in (["that"], ["which"], ["who"]):
+            return False
+        verb = said[2] if said[1:2] in (["can"], ["could"]) and len(said) > 2 else said[1] if len(said) > 1 else ""
+        return any(verb == s or verb in plural_forms(s) for s in self.skills)
+
     def _group(self, text: str) -> tuple[str, str] | None:
         """("RKIND", kind) or ("RTAG", tag) when the word names robots by kind or tag."""
         low = normalize(text)
@@ -2012,7 +2056,10 @@ class Lexicon:
             # "Quick one: ...", "Quick one before the brewers get in: ...": an opener (with its
             # adjunct), judged on the words as written (its "one" is read as a count)
             said = [re.sub(r"[^a-z0-9]", "", x.text.lower()) for x in cur[c.start:c.start + len(clause) - n]]
-            if is_opener(said):
+            # "Change of plan: ...", "orait change of plan. ...": only as the command's first clause
+            first = c.start == 0 and self.position(cur[0]) == 0 and opens_changed_plan(
+                [str(x.value) if x.kind == "word" else x.text.lower() for x in cur[:len(clause) - n]])
+            if is_opener(said) or first:
                 free[:] = [f for f in free if not (c.start <= f.start < c.end)] + [c]
                 inner.discard(c.start + len(clause) - n)
         return _set_off(cur, free, inner)
@@ -2070,8 +2117,10 @@ class Lexicon:
             fixed.append(t)
         verbs = {w for w in self.keywords if " " not in w} | set(VERB_LEXICON)
         toks = self._definite_groups(them_as_determiner(read_counts(_split_hyphens(
-            this_job_announced(case_endings(topic_marked(self._vocative_set_off(self._interjection_set_off(fixed))))),
+            this_job_announced(case_endings(topic_marked(self._vocative_set_off(self._interjection_set_off(
+                self._people_as_robots(fixed)))))),
             self.keywords))))
+        toks, restated = item_scope_restated(toks)   # "..., just the cement" where only cement was named
         toks, framed = without_request_frames(orders_taken_back(places_taken_back(toks), _ORDER_VERBS | _CHANGE_VERBS), verbs)
         toks = places_then_each(by_as_among(toks))   # before "by" is read as "at"
         toks = only_after_a_move(source_after_verb(of_as_from(place_as_it(by_as_at(toks)))))
@@ -2082,7 +2131,7 @@ class Lexicon:
         toks = lexicon_verbs(whole_places(quantity_phrases(toks, self.keywords)), self.keywords)
         toks = put_back_after_its_object(counts_sent_from_a_topic(corrected(toks)))
         toks = dropped_object(corrected_later(without_particles(toks)))
-        self._framed = (radio.aside if radio is not None else []) + feelings + framed
+        self._framed = (radio.aside if radio is not None else []) + feelings + framed + restated
         self.corrected = declared + accented + starred
         return self._split(toks, stops)
 
