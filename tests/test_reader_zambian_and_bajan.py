@@ -122,6 +122,9 @@ def chattel() -> dict:
     ("Heat up the flying fish for Michelle", "heat up the flying fish"),
     ("Jamal coming home fuh lunch. Heat up de flying fish and put it pun de kitchen table.",
      "heat up the flying fish and put it on the kitchen table"),
+    # each thing said with where it is taken off (the sixty-seventh round)
+    ("Tek de school bag off de day bed and de plate off de counter and put all two pun de centre table",
+     "put the school bag and the plate on the centre table"),
     # a capitalised word after "the" is a thing's name
     ("Turn off the Kitchen light", "switch off the kitchen light"),
     # "uh" in English is a hesitation

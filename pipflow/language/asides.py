@@ -142,7 +142,7 @@ ADDRESSEES = frozenset({"all", "everyone", "everybody", "team", "folks", "guys",
                         "boi", "bois",
                         "gents", "gentlemen", "kids", "sir", "madam", "friends", "colleagues", "staff", "squad",
                         # Welsh English ("Morning bud", "Alright butt")
-                        "bud", "butt", "butty", "bach",
+                        "bud", "butt", "butty", "bach", "cariad",
                         # Scots and northern English ("Morning son", "ta hen"), and the young's "bro"
                         "son", "hen", "sunshine", "bro", "bruv", "dude",
                         # Nigerian English and Pidgin ("Good morning una": you all; "oga": boss), Guyanese
@@ -205,7 +205,8 @@ CLOSERS = frozenset({"mate", "mates", "pal", "lads", "guys", "folks", "chaps", "
                      "son", "hen", "sunshine", "buddy", "bro", "bruv", "dude",
                      "mind", "yeah", "eh", "though", "cheers", "ta", "thanks", "thx", "ty", "tyvm", "thankyou",
                      "dankie",
-                     "man", "bru", "boet", "chale", "bud", "butt", "butty", "bach", "diolch", "merci", "svp", "stp",
+                     "man", "bru", "boet", "chale", "bud", "butt", "butty", "bach", "cariad", "mun", "diolch", "merci",
+                     "svp", "stp",
                      "asante", "asanteni", "bana", "mzee", "gracias", "jefe",
                      # Brummie and Midlands English ("..., bab", "... ta duck"); Ugandan English's
                      # Luganda "sebo" (sir), "nnyabo" (madam) and "bambi" (please)
@@ -983,6 +984,8 @@ def said_talk(words: Iterable[str], names: Callable[[str], bool]) -> bool:
 #: and of signposting ("Right, ...", "Brr, ...", "Urgent: ...", "..., cheers"). Any other word said
 #: alone is taken for someone addressed by name (:func:`addressee`)
 INTERJECTIONS = frozenset({
+    # Welsh English ("Duw, the middle room is like a tip", "duw duw"; "..., mun": man, a tag; "..., lush")
+    "duw", "mun", "lush",
     "right", "righto", "rightio", "ok", "okay", "alright", "aright", "oh", "ah", "ahh", "aha", "um", "umm", "uh",
     "er", "erm", "hmm", "hm", "ugh", "urgh", "argh", "brr", "brrr", "shh", "ach", "och", "oi", "oy", "phew",
     "whoops", "oops", "gosh", "golly", "jeez", "geez", "blimey", "crikey", "strewth", "cor", "wow", "meh", "lol",

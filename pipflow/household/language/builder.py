@@ -119,6 +119,9 @@ class Builder:
 
     def np(self, node: Tree) -> dict:
         out = self.sel(self._sub(node, "sel"))
+        if node.data == "offnp":   # "the book off the table": where it is taken from
+            out["from"] = self.place(self._sub(node, "place"))
+            out["words"] = words_under(self.tags, node)
         where = self._sub(node, "where")   # a switch's thing by where it is: "the lamp on the desk"
         if where is not None:
             out["from"] = self.place(self._sub(where, "place"))
@@ -130,7 +133,8 @@ class Builder:
         return out
 
     def things(self, node: Tree) -> list[dict]:
-        return [self.np(n) for n in self._subs(node, "np") + self._subs(node, "tnp") + self._subs(node, "snp")]
+        return [self.np(n) for n in self._subs(node, "np") + self._subs(node, "tnp") + self._subs(node, "snp")
+                + self._subs(node, "offnp")]
 
     def target(self, node: Tree) -> dict:
         p = self._sub(node, "place") or self._sub(node, "bare")
@@ -219,7 +223,7 @@ class Builder:
     def move(self, node: Tree) -> dict:
         """A move ("put the mug in the sink"), or a throw said nowhere else (a trash)."""
         # "put it in the cabinet along with the bowl": the things after the place go there too
-        subs = self._subs(node, "things") + self._subs(node, "sthings")
+        subs = self._subs(node, "things") + self._subs(node, "sthings") + self._subs(node, "offthings")
         st = {"op": "put", "things": [s for sub in subs for s in self.things(sub)]}
         src, tgt = self._sub(node, "source"), self._sub(node, "target")
         if src is None and tgt is None and self._has(node, "V_THROW") and len(self._tokens(node)) == 1:

@@ -75,6 +75,8 @@ put: _vput @UP? things source? target? exception?
    | @V_LEAVE things _particle target
    | @V_TIDY @UP? things target
    | _vput @UP? things _particle? target wherewas
+   // "take the bag off the bed and the book off the table": each thing with where it is taken off
+   | _vput @UP? offthings target?
 _vput: @V_PUT | @V_THROW
 _particle: @OUT | @DOWN | @IN | @UP
 source: @FROM place | @OUT @OF? place | @OFF @OF? place
@@ -210,6 +212,8 @@ desire: _wish @THE? adj+ noun
 things: np ((COMMA | @AND | COMMA @AND) np)*
       | @BOTH np @AND np
 np: sel exception?
+offthings: offnp ((COMMA | @AND | COMMA @AND) offnp)+
+offnp: sel @OFF @OF? place
 sthings: snp ((COMMA | @AND | COMMA @AND) snp)*
 snp: sel where? exception?
 exception: COMMA? @EXCEPT things

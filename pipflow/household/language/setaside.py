@@ -466,7 +466,8 @@ def without_asides(command: str, world: dict) -> Trimmed | None:
     remark = _remark(world, content)
     free = [c for c in parts if content_free(_without_talk(_without_times(c.words)), content, content, reports=True,
                                              robot=robots.__contains__) or remark(c.words)
-            or (c is parts[0] and (is_opener(c.words) or opens_changed_plan(c.words)))]   # "Two things: ...", "Quick one, ..."
+            # "Two things: ...", "Quick one, ...", "Change of plan: ..."
+            or (c is parts[0] and (is_opener(c.words) or opens_changed_plan(c.words)))]
     if len(parts) > 1 and parts[-1] not in free and signature(parts[-2].words, parts[-1].words):
         free.append(parts[-1])   # "Regards, Tom": the writer's name
     own = [c for c in parts if c not in free and speaker_doing(c.words, people)]

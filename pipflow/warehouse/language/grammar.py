@@ -166,6 +166,7 @@ loc: prep places                            -> loc
    | prep places "respectively"             -> loc_resp
 
 // ---------------------------------------------------------------- verbs
+_keeps: "keep" | "keeps" | "retain" | "retains"
 modal: "should" | "must" | "shall" | "will" | "would" | "ought" "to" | "oughta" | "gotta"
      // "P's gotta hold 65 X", "P has got to have 6 X": has to
      | POSS? "gotta" | (POSS | "has" | "have") "got" "to"
@@ -389,7 +390,7 @@ goal: there_be items loc                                  -> g_set
     | places ("shouldnt" | "mustnt" | "cant" | "cannot" | "wont" | modal ("not" | "never")) setv ("fewer" "than" | "less" "than" | "under" | "below") NUM of? ihead resumptive? -> g_floor
     | places modal? "keep" "only"? items                     -> g_keep_part
     // "P keeps its X as it is": said of the place, in the third person too
-    | places modal? ("keep" | "keeps" | "retain" | "retains") its NUM? ihead (lsep its? NUM? ihead)* as_is? -> g_keep_its
+    | places modal? _keeps its NUM? ihead (lsep its? NUM? ihead)* as_is? -> g_keep_its
     | emptyv places                                        -> g_empty
     | places modal? be? emptied                            -> g_empty
     | places modal? "hold" "nothing"                        -> g_empty

@@ -1853,8 +1853,9 @@ class Lexicon:
         as declared, not its plural ("the forklift guys"; in "use the forklifts lads" the lads are
         the ones asked), or a superlative ("the strongest boi")."""
         low = normalize(tok.text)
+        groups = self.kinds | self.tags | self.robot_stems
         return tok.kind in ("word", "kind") and bool(low) and (
-            any(low == normalize(g) for g in self.kinds | self.tags | self.robot_stems) or str(tok.value) in SUPERLATIVES)
+            any(low == normalize(g) for g in groups) or str(tok.value) in SUPERLATIVES)
 
     def _skill_follows(self, toks: list[Tok], k: int) -> bool:
         """Whether "that", "which" or "who" and a skill of the world's robots (its verb) open at ``k``

@@ -1,18 +1,23 @@
 """Issue 23, from the sixty-seventh sets (the storeman-supervisor of a hardware warehouse at Lae
-writing Papua New Guinea English with Tok Pisin), after their first measurements. Warehouse: a
+writing Papua New Guinea English with Tok Pisin; a grandmother in a terraced house in Treorchy
+speaking Valleys English), after their first measurements. Warehouse: a
 word for people ("boys", "boi", "lads") after a robot kind, tag or superlative, or before "that
 carry ...", names those robots ("the night shift boys keep out of P"); said alone it is no robot
 group. Tok Pisin words that are no English word ("tekim", "wanpela", "plis", "orait", "emi") read
 as their English words. "Change of plan" opening a command is set aside; after an order it is
 refused (it would take the order back). "P keeps its X as it is" keeps them; a sentence's only
-goods said again at its end ("..., just the simen") narrow nothing and are set aside. Worlds of our own,
+goods said again at its end ("..., just the simen") narrow nothing and are set aside. Household:
+Welsh words of talk ("cariad", "mun", "duw") are set aside; a list whose every thing is said with
+"off" a place is read as "from" is. Worlds of our own,
 through the real readers; each rule with what stays as said or refused."""
 from __future__ import annotations
 
 import pytest
 
 from pipflow.errors import PipflowError
-from tests.readings import assert_warehouse_alike, read_warehouse
+from pipflow.household.world import world_from_text
+from tests.readings import assert_warehouse_alike, household_goal, read_warehouse
+from tests.test_reader_zambian_and_bajan import CHATTEL
 
 #: a hardware depot whose robots have shifts, a backup tag and nicknames
 BUTIBUM = {
@@ -20,7 +25,8 @@ BUTIBUM = {
     "floor": {"width": 40, "height": 20},
     "shelves": {
         "north": {"x": 2, "y": 14, "width": 6, "depth": 2, "capacity": 60, "access": [5, 13], "words": ["north dock"]},
-        "south": {"x": 12, "y": 14, "width": 6, "depth": 2, "capacity": 60, "access": [15, 13], "words": ["south dock"]},
+        "south": {"x": 12, "y": 14, "width": 6, "depth": 2, "capacity": 60, "access": [15, 13],
+                  "words": ["south dock"]},
         "cage": {"x": 26, "y": 14, "width": 4, "depth": 2, "capacity": 30, "access": [28, 13], "words": ["lock up"]},
     },
     "products": {"cement": {"color": "grey", "words": ["simen"]}, "rice": {"color": "white", "words": ["rais"]},
@@ -90,3 +96,29 @@ def test_png_english_orders_read_as_their_plain_english(said: str, plain: str) -
 def test_what_the_png_rules_do_not_cover_stays_refused(said: str) -> None:
     with pytest.raises(PipflowError):
         read_warehouse(said, BUTIBUM)
+
+
+@pytest.fixture(scope="module")
+def home() -> dict:
+    return world_from_text(CHATTEL, "chattel.yaml")
+
+
+@pytest.mark.parametrize("said, plain", [
+    ("put the plate in the cupboard, cariad", "put the plate in the cupboard"),
+    ("Duw, wash the plate and the enamel cup, mun.", "wash the plate and the cup"),
+    ("Duw duw, switch the kitchen light off", "switch off the kitchen light"),
+    ("take the school bag off the day bed and the plate off the counter, put both on the desk",
+     "put the school bag and the plate on the desk"),
+])
+def test_valleys_english_reads_as_its_plain_english(home: dict, said: str, plain: str) -> None:
+    assert household_goal(said, home) == household_goal(plain, home)
+
+
+@pytest.mark.parametrize("said", [
+    # "off" said once after a list of things is where they all come from, as before; a list with
+    # "off" a place after only its last thing is refused, never read as the last thing alone
+    "wash the plate and the enamel cup off the counter and the school bag",
+])
+def test_what_the_valleys_rules_do_not_cover_stays_refused(home: dict, said: str) -> None:
+    with pytest.raises(PipflowError):
+        household_goal(said, home)
