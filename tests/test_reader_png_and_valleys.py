@@ -109,16 +109,10 @@ def home() -> dict:
     ("Duw duw, switch the kitchen light off", "switch off the kitchen light"),
     ("take the school bag off the day bed and the plate off the counter, put both on the desk",
      "put the school bag and the plate on the desk"),
+    # "off" said once after a list is where all of it comes from, as before
+    ("take the plate and the enamel cup off the counter and put both in the cupboard",
+     "put the plate and the cup in the cupboard"),
 ])
 def test_valleys_english_reads_as_its_plain_english(home: dict, said: str, plain: str) -> None:
     assert household_goal(said, home) == household_goal(plain, home)
 
-
-@pytest.mark.parametrize("said", [
-    # "off" said once after a list of things is where they all come from, as before; a list with
-    # "off" a place after only its last thing is refused, never read as the last thing alone
-    "wash the plate and the enamel cup off the counter and the school bag",
-])
-def test_what_the_valleys_rules_do_not_cover_stays_refused(home: dict, said: str) -> None:
-    with pytest.raises(PipflowError):
-        household_goal(said, home)

@@ -1839,14 +1839,17 @@ class Lexicon:
         ("the boys counted it", "lads, ...") such a word is read as before."""
         out: list[Tok] = []
         for k, t in enumerate(toks):
-            word = t.text.lower()   # as written: "lads" is no slip of "loads" here
-            nxt = toks[k + 1] if k + 1 < len(toks) else None
-            robots_next = nxt is not None and (nxt.of == "robot" or self._group(nxt.text) is not None)
-            if t.kind == "word" and word in PEOPLE_AS_ROBOTS and self._group(t.text) is None and not robots_next \
+            # as written: "lads" is no slip of "loads" here
+            if t.kind == "word" and t.text.lower() in PEOPLE_AS_ROBOTS and self._group(t.text) is None \
+                    and not self._robots_at(toks, k + 1) \
                     and ((k and self._says_robots(toks[k - 1])) or self._skill_follows(toks, k + 1)):
                 t = Tok("kind", t.text, "robot", "robot")   # as the lexer reads "robots" and "robot"
             out.append(t)
         return out
+
+    def _robots_at(self, toks: list[Tok], k: int) -> bool:
+        """Whether the token at ``k`` names robots: a word for robots, a kind or a tag."""
+        return k < len(toks) and (toks[k].of == "robot" or self._group(toks[k].text) is not None)
 
     def _says_robots(self, tok: Tok) -> bool:
         """Whether a token names robots as a word before a noun does: a robot kind, tag or name stem

@@ -24,7 +24,8 @@ def item_scope_restated(toks: list[Tok]) -> tuple[list[Tok], list[str]]:
     k = 0
     while k < len(toks):
         t = toks[k]
-        end = _restating_clause_end(toks, k, out[start:])
+        comma = t.kind == "punct" and t.value == ","
+        end = _restating_clause_end(toks, k, out[start:]) if comma else None
         if end is not None:
             said.append(" ".join(x.text for x in toks[k + 1:end] if x.text))
             k = end
@@ -39,8 +40,6 @@ def item_scope_restated(toks: list[Tok]) -> tuple[list[Tok], list[str]]:
 def _restating_clause_end(toks: list[Tok], k: int, before: list[Tok]) -> int | None:
     """Where a clause that opens with the comma at ``k`` and says the goods of ``before`` (the
     sentence so far) again ends (the index of the sentence's end), or None."""
-    if not (toks[k].kind == "punct" and toks[k].value == ","):
-        return None
     j = k + 1
     if j >= len(toks) or toks[j].kind != "word" or toks[j].value not in _JUST:
         return None
